@@ -1,0 +1,90 @@
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from models.readings import Column, ColumnKind
+from models.tabular_import import TableImportError, map_columns, read_table, split_pasted_text
+
+COLUMNS = [
+    Column("theta_deg", "θ", "deg", ColumnKind.ANGLE_DEG),
+    Column("azimuth_deg", "A", "deg", ColumnKind.ANGLE_DEG),
+    Column("elevation_deg", "E", "deg", ColumnKind.ANGLE_DEG),
+]
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        "theta_deg,azimuth_deg,elevation_deg\n0,0,1.5\n1,1.01,1.49\n".encode(),
+        "\ufefftheta_deg,azimuth_deg,elevation_deg\r\n0,0,1.5\r\n1,1.01,1.49\r\n".encode(),
+        "theta_deg;azimuth_deg;elevation_deg\n0;0;1,5\n1;1,01;1,49\n".encode(),
+        "theta_deg\tazimuth_deg\televation_deg\n0\t0\t1.5\n1\t1.01\t1.49\n".encode(),
+        "theta_deg,azimuth_deg,elevation_deg\n0,0,1.5\n1,1.01,1.49\n".encode("utf-16"),
+    ],
+)
+def test_csv_variants(tmp_path, data):
+    path = tmp_path / "run.csv"
+    path.write_bytes(data)
+    table = read_table(path)
+    rows = map_columns(table, COLUMNS)
+    assert rows == [["0", "0", "1.5"], ["1", "1.01", "1.49"]]
+    assert table.line_numbers == [2, 3]
+
+
+def test_gbk_with_chinese_header_titles(tmp_path):
+    path = tmp_path / "gbk.csv"
+    path.write_bytes("θ,A,E,备注\n0,0°00'00\",1.5,零位\n".encode("gb18030"))
+    rows = map_columns(read_table(path), COLUMNS)
+    assert rows == [["0", "0°00'00\"", "1.5"]]
+
+
+def test_reordered_headers_and_missing_column(tmp_path):
+    path = tmp_path / "r.csv"
+    path.write_text("elevation_deg,theta_deg,azimuth_deg\n1.5,0,0\n")
+    assert map_columns(read_table(path), COLUMNS) == [["0", "0", "1.5"]]
+    path.write_text("theta_deg,elevation_deg\n0,1.5\n")
+    with pytest.raises(TableImportError, match=r"r.csv: row 1 \(header\): no column 'azimuth_deg'"):
+        map_columns(read_table(path), COLUMNS)
+
+
+def test_headerless_file_is_positional(tmp_path):
+    path = tmp_path / "h.csv"
+    path.write_text("0,0,1.5\n1,1.01\n")
+    assert map_columns(read_table(path), COLUMNS) == [["0", "0", "1.5"], ["1", "1.01", ""]]
+
+
+def test_xlsx(tmp_path):
+    openpyxl = pytest.importorskip("openpyxl")
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["theta_deg", "azimuth_deg", "elevation_deg"])
+    sheet.append([0, 0.25, 1.5])
+    sheet.append([1, "1°00'36\"", 1.49])
+    book.save(tmp_path / "run.xlsx")
+    rows = map_columns(read_table(tmp_path / "run.xlsx"), COLUMNS)
+    assert rows == [["0", "0.25", "1.5"], ["1", "1°00'36\"", "1.49"]]
+
+
+def test_unreadable_files(tmp_path):
+    with pytest.raises(TableImportError, match="cannot read"):
+        read_table(tmp_path / "missing.csv")
+    (tmp_path / "bad.xlsx").write_bytes(b"not a zip")
+    with pytest.raises(TableImportError, match="not a readable XLSX"):
+        read_table(tmp_path / "bad.xlsx")
+    (tmp_path / "empty.csv").write_text("\n\n")
+    with pytest.raises(TableImportError, match="no rows"):
+        read_table(tmp_path / "empty.csv")
+
+
+cell = st.text(alphabet=st.characters(blacklist_characters="\t\r\n\"", blacklist_categories=("Cs",)),
+               max_size=8)
+
+
+@given(st.lists(st.lists(cell, min_size=2, max_size=4), min_size=1, max_size=10))
+def test_paste_round_trip_tab_separated(grid):
+    width = max(len(r) for r in grid)
+    grid = [r + [""] * (width - len(r)) for r in grid]
+    if all(not any(c for c in r) for r in grid[-1:]):
+        grid[-1][0] = "x"
+    text = "\n".join("\t".join(r) for r in grid)
+    assert split_pasted_text(text) == grid
