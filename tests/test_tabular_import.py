@@ -15,10 +15,10 @@ COLUMNS = [
 @pytest.mark.parametrize(
     "data",
     [
-        "theta_deg,azimuth_deg,elevation_deg\n0,0,1.5\n1,1.01,1.49\n".encode(),
+        b"theta_deg,azimuth_deg,elevation_deg\n0,0,1.5\n1,1.01,1.49\n",
         "\ufefftheta_deg,azimuth_deg,elevation_deg\r\n0,0,1.5\r\n1,1.01,1.49\r\n".encode(),
-        "theta_deg;azimuth_deg;elevation_deg\n0;0;1,5\n1;1,01;1,49\n".encode(),
-        "theta_deg\tazimuth_deg\televation_deg\n0\t0\t1.5\n1\t1.01\t1.49\n".encode(),
+        b"theta_deg;azimuth_deg;elevation_deg\n0;0;1,5\n1;1,01;1,49\n",
+        b"theta_deg\tazimuth_deg\televation_deg\n0\t0\t1.5\n1\t1.01\t1.49\n",
         "theta_deg,azimuth_deg,elevation_deg\n0,0,1.5\n1,1.01,1.49\n".encode("utf-16"),
     ],
 )

@@ -114,7 +114,7 @@ def test_noisy_fit_always_reaches_the_global_optimum():
         _, elevation = simulate_readings(theta, setup, noise_arcsec=0.3, rng=rng)
         found = identify_from_elevations(theta, elevation)
         th, e = np.radians(theta), np.radians(elevation)
-        at_truth = least_squares(lambda x: _elevation_model(x, th) - e,
+        at_truth = least_squares(lambda x, th=th, e=e: _elevation_model(x, th) - e,
                                  np.radians(setup.as_array()), method="lm", xtol=1e-15, ftol=1e-15)
         optimum = induced_error_arcsec(theta, *np.degrees(at_truth.x))
         assert np.max(np.abs(induced_error_arcsec(theta, *found.setup.as_array()) - optimum)) < 0.01

@@ -1,0 +1,1 @@
+"""AngleBench application shell: entry points, CLI and main window."""

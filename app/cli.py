@@ -1,0 +1,108 @@
+"""``anglebench analyze KIND FILE``: analyse a CSV without a window.
+
+Prints a readable summary, or JSON with ``--json``. Bad input: exit status 2
+and one line on stderr naming the file, the row and what is wrong.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from typing import Any
+
+from models.analysis_kind import SettingsError
+from models.kinds import KINDS
+from models.readings import ReadingsSheet
+from models.tabular_import import TableImportError, map_columns, read_table
+
+EXIT_BAD_INPUT = 2
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # one line, exit 2, no usage dump
+        sys.stderr.write(f"anglebench analyze: {message}\n")
+        raise SystemExit(EXIT_BAD_INPUT)
+
+
+def _parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="anglebench analyze", description="Analyse a readings file")
+    p.add_argument("kind", choices=sorted(KINDS))
+    p.add_argument("file")
+    p.add_argument("--json", action="store_true", help="print JSON instead of a summary")
+    p.add_argument("--certificate", metavar="OUT.pdf", help="also write a test certificate")
+    p.add_argument("--method", choices=["elevation", "azimuth"], help="theodolite: identify from")
+    p.add_argument("--reference-row", type=int, help="theodolite: 1-based reference row")
+    p.add_argument("--zenith", action="store_true", help="theodolite: vertical column is zenith V")
+    p.add_argument("--grade", type=int, help="polygon: encoder grade 1–7")
+    p.add_argument("--lines-per-rev", type=int, help="fringe: grating lines per revolution")
+    p.add_argument("--samples-per-period", type=int, help="fringe: samples per grating period")
+    return p
+
+
+def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
+    settings: dict[str, Any] = {}
+    if args.method:
+        settings["method"] = args.method
+    if args.reference_row is not None:
+        settings["reference_row"] = args.reference_row
+    if args.zenith:
+        settings["vertical_reading"] = "zenith"
+    if args.grade is not None:
+        settings["grade"] = args.grade
+    if args.lines_per_rev is not None:
+        settings["lines_per_rev"] = args.lines_per_rev
+    if args.samples_per_period is not None:
+        settings["samples_per_period"] = args.samples_per_period
+    return settings
+
+
+def _finite(value: Any) -> Any:
+    """JSON has no NaN: write null instead."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_finite(v) for v in value]
+    return value
+
+
+def run_analyze(argv: list[str]) -> int:
+    args = _parser().parse_args(argv)
+    kind = KINDS[args.kind]
+    try:
+        table = read_table(args.file)
+        rows = map_columns(table, kind.columns)
+    except TableImportError as exc:
+        sys.stderr.write(f"{exc}\n")
+        return EXIT_BAD_INPUT
+    parsed = ReadingsSheet(kind.columns, rows).parse()
+    if parsed.errors:
+        first = parsed.errors[0]
+        line = table.line_numbers[first.row]
+        more = f" (and {len(parsed.errors) - 1} more bad cell(s))" if len(parsed.errors) > 1 else ""
+        sys.stderr.write(
+            f"{args.file}: row {line}, column '{first.column_key}': {first.reason}{more}\n")
+        return EXIT_BAD_INPUT
+    try:
+        result = kind.analyze(parsed, kind.settings_with_defaults(_settings_from(args)))
+    except SettingsError as exc:
+        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        return EXIT_BAD_INPUT
+    except ValueError as exc:
+        sys.stderr.write(f"{args.file}: {exc}\n")
+        return EXIT_BAD_INPUT
+    if args.json:
+        sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
+                         + "\n")
+    else:
+        sys.stdout.write(f"{kind.title}: {args.file}\n{kind.summary(result)}\n")
+        for warning in getattr(result, "warnings", []):
+            sys.stdout.write(f"Warning: {warning}\n")
+    if args.certificate:
+        sys.stderr.write("anglebench analyze: certificate export is not available in this "
+                         "version; the analysis above is complete\n")
+        return 1
+    return 0

@@ -1,0 +1,57 @@
+"""Entry point of the ``anglebench`` command.
+
+    anglebench [PROJECT]            open the window (optionally on a project file)
+    anglebench --samples            open the window on the bundled samples
+    anglebench --screenshot DIR     write DIR/<workbench>.png for every workbench, then exit
+    anglebench analyze KIND FILE …  analyse a CSV without a window (see app.cli)
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if argv and argv[0] == "analyze":
+        from app.cli import run_analyze  # no Qt import on this path
+
+        return run_analyze(argv[1:])
+    parser = argparse.ArgumentParser(prog="anglebench", description="Angle metrology workbench")
+    parser.add_argument("project", nargs="?", help="project file to open")
+    parser.add_argument("--samples", action="store_true", help="load the bundled samples")
+    parser.add_argument("--screenshot", metavar="DIR",
+                        help="render every workbench with its sample to DIR/<workbench>.png")
+    args = parser.parse_args(argv)
+    if args.screenshot:
+        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+        from app.screenshot import write_screenshots
+
+        for path in write_screenshots(args.screenshot):
+            print(path)  # noqa: T201 - the command's output
+        return 0
+    return run_gui(args.project, args.samples)
+
+
+def run_gui(project: str | None, samples: bool) -> int:
+    from PySide6.QtWidgets import QApplication
+
+    from app.main_window import MainWindow
+
+    app = QApplication.instance() or QApplication(sys.argv[:1])
+    app.setOrganizationName("AngleBench")
+    app.setApplicationName("AngleBench")
+    window = MainWindow()
+    window.show()
+    if not window.offer_recovery():
+        if project:
+            window.open_project(project)
+        elif samples:
+            window.load_all_samples()
+    return app.exec()
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

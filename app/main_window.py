@@ -1,0 +1,353 @@
+"""Main window: one tab per workbench, the File/Edit/Help menus, project files,
+autosave and crash recovery, persisted window state and recent files."""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from pathlib import Path
+
+import numpy as np
+import pyqtgraph as pg
+import scipy
+from PySide6 import __version__ as pyside_version
+from PySide6.QtCore import QByteArray, QSettings, QStandardPaths, QTimer, qVersion
+from PySide6.QtGui import QAction, QCloseEvent, QKeySequence, QUndoGroup
+from PySide6.QtWidgets import QFileDialog, QMainWindow, QMessageBox, QTabWidget
+
+from models import __version__
+from models.project import (
+    Project,
+    ProjectFileError,
+    WorkbenchState,
+    load_project,
+    save_project,
+)
+from models.recovery import RecoveryStore
+from models.tabular_import import TableImportError
+from widgets.workbench_presenter import WorkbenchPresenter
+
+PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
+IMPORT_FILTER = "Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"
+AUTOSAVE_INTERVAL_MS = 60_000
+MAX_RECENT = 8
+
+
+def default_presenters() -> list[WorkbenchPresenter]:
+    from widgets.theodolite_workbench import TheodolitePresenter
+
+    presenters: list[WorkbenchPresenter] = [TheodolitePresenter()]
+    try:
+        from widgets.fringe_workbench import FringePresenter
+        from widgets.polygon_workbench import PolygonPresenter
+    except ImportError:
+        return presenters
+    return presenters + [PolygonPresenter(), FringePresenter()]
+
+
+def default_recovery_store() -> RecoveryStore:
+    folder = os.environ.get("ANGLEBENCH_DATA_DIR") or QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.AppDataLocation)
+    return RecoveryStore(Path(folder or Path.home() / ".anglebench"))
+
+
+class MainWindow(QMainWindow):
+    """Holds the workbench presenters; all dialogs go through ``ask``/``tell`` so tests can
+    answer them."""
+
+    def __init__(self, settings: QSettings | None = None, recovery: RecoveryStore | None = None,
+                 presenters: list[WorkbenchPresenter] | None = None, parent=None) -> None:
+        super().__init__(parent)
+        self.qsettings = settings or QSettings("AngleBench", "AngleBench")
+        self.recovery = recovery or default_recovery_store()
+        self.presenters = presenters or default_presenters()
+        self.project_path: Path | None = None
+        self.project_metadata: dict = {}
+        self._setup_ui()
+        self._setup_menus()
+        self._restore_window_state()
+        self.autosave_timer = QTimer(self)
+        self.autosave_timer.setInterval(AUTOSAVE_INTERVAL_MS)
+        self.autosave_timer.timeout.connect(self.autosave)
+        self.autosave_timer.start()
+        self._update_title()
+
+    # -- construction ---------------------------------------------------------
+    def _setup_ui(self) -> None:
+        self.tabs = QTabWidget()
+        self.undo_group = QUndoGroup(self)
+        for presenter in self.presenters:
+            self.tabs.addTab(presenter.view, presenter.kind.title)
+            self.undo_group.addStack(presenter.undo_stack)
+            presenter.modified_changed.connect(self._on_modified_changed)
+        self.tabs.currentChanged.connect(self._on_tab_changed)
+        self._on_tab_changed(0)
+        self.setCentralWidget(self.tabs)
+        self.statusBar().showMessage("Ready")
+        self.resize(1400, 900)
+
+    def _action(self, menu, text: str, slot, shortcut=None, tip: str = "") -> QAction:
+        action = QAction(text, self)
+        if shortcut is not None:
+            action.setShortcut(shortcut)
+        if tip:
+            action.setStatusTip(tip)
+        action.triggered.connect(slot)
+        menu.addAction(action)
+        return action
+
+    def _setup_menus(self) -> None:
+        file_menu = self.menuBar().addMenu("&File")
+        self.new_action = self._action(file_menu, "&New", self.new_project, QKeySequence.StandardKey.New)
+        self.open_action = self._action(file_menu, "&Open…", self.open_project_dialog,
+                                        QKeySequence.StandardKey.Open)
+        self.recent_menu = file_menu.addMenu("Open &recent")
+        self.save_action = self._action(file_menu, "&Save", self.save, QKeySequence.StandardKey.Save)
+        self.save_as_action = self._action(file_menu, "Save &as…", self.save_as,
+                                           QKeySequence.StandardKey.SaveAs)
+        file_menu.addSeparator()
+        self.import_action = self._action(file_menu, "&Import CSV/XLSX…", self.import_dialog,
+                                          QKeySequence("Ctrl+Shift+I"),
+                                          "Replace the current workbench's readings with a file's")
+        self.sample_action = self._action(file_menu, "Load bundled &sample", self.load_sample)
+        self.export_action = self._action(
+            file_menu, "&Export certificate…", lambda: None,
+            tip="Test certificates are not available in this version")
+        self.export_action.setEnabled(False)
+        file_menu.addSeparator()
+        self._action(file_menu, "&Quit", self.close, QKeySequence.StandardKey.Quit)
+
+        edit_menu = self.menuBar().addMenu("&Edit")
+        undo = self.undo_group.createUndoAction(self, "&Undo")
+        undo.setShortcut(QKeySequence.StandardKey.Undo)
+        redo = self.undo_group.createRedoAction(self, "&Redo")
+        redo.setShortcut(QKeySequence.StandardKey.Redo)
+        edit_menu.addAction(undo)
+        edit_menu.addAction(redo)
+        self.undo_action, self.redo_action = undo, redo
+        edit_menu.addSeparator()
+        self._action(edit_menu, "&Copy", lambda: self.current.view.table.copy_selection())
+        self._action(edit_menu, "&Paste", lambda: self.current.view.table.paste())
+        self._action(edit_menu, "&Insert row", lambda: self.current.view.table.insert_row())
+        self._action(edit_menu, "&Delete rows", lambda: self.current.view.table.delete_rows())
+
+        help_menu = self.menuBar().addMenu("&Help")
+        self._action(help_menu, "&About AngleBench", self.show_about)
+        self._refresh_recent_menu()
+
+    @property
+    def current(self) -> WorkbenchPresenter:
+        return self.presenters[self.tabs.currentIndex()]
+
+    def presenter(self, key: str) -> WorkbenchPresenter:
+        return next(p for p in self.presenters if p.kind.key == key)
+
+    def _on_tab_changed(self, index: int) -> None:
+        if 0 <= index < len(self.presenters):
+            self.undo_group.setActiveStack(self.presenters[index].undo_stack)
+
+    # -- dialogs (tests replace these) --------------------------------------------
+    def tell(self, title: str, text: str) -> None:
+        self.statusBar().showMessage(text, 15000)
+        QMessageBox.warning(self, title, text)
+
+    def ask(self, title: str, text: str, buttons, default):
+        return QMessageBox.question(self, title, text, buttons, default)
+
+    # -- project ----------------------------------------------------------------
+    @property
+    def is_modified(self) -> bool:
+        return any(p.is_modified for p in self.presenters)
+
+    def project(self) -> Project:
+        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.project_metadata))
+
+    def apply_project(self, project: Project) -> None:
+        for presenter in self.presenters:
+            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        self.project_metadata = dict(project.metadata)
+        self.project_metadata.pop("autosaved_at", None)
+
+    def _on_modified_changed(self, _modified: bool) -> None:
+        self._update_title()
+
+    def _update_title(self) -> None:
+        name = self.project_path.name if self.project_path else "untitled"
+        self.setWindowTitle(f"AngleBench {__version__} — {name}{' *' if self.is_modified else ''}")
+
+    def _confirm_discard(self) -> bool:
+        if not self.is_modified:
+            return True
+        answer = self.ask("Unsaved readings", "Save the changes to the project first?",
+                          QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+                          | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
+        if answer == QMessageBox.StandardButton.Save:
+            return self.save()
+        return answer == QMessageBox.StandardButton.Discard
+
+    def new_project(self) -> None:
+        if not self._confirm_discard():
+            return
+        self.apply_project(Project())
+        self.project_path = None
+        self._update_title()
+
+    def open_project_dialog(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, "Open project", self._last_dir(), PROJECT_FILTER)
+        if path:
+            self.open_project(path)
+
+    def open_project(self, path: str | Path) -> bool:
+        """Open a project; a damaged or newer file leaves the current work untouched."""
+        if not self._confirm_discard():
+            return False
+        try:
+            project = load_project(path)
+        except ProjectFileError as exc:
+            self.tell("Cannot open project", str(exc))
+            return False
+        self.apply_project(project)
+        self.project_path = Path(path)
+        self._add_recent(self.project_path)
+        self._update_title()
+        self.statusBar().showMessage(f"Opened {path}", 5000)
+        return True
+
+    def save(self) -> bool:
+        if self.project_path is None:
+            return self.save_as()
+        return self.save_to(self.project_path)
+
+    def save_as(self) -> bool:
+        path, _ = QFileDialog.getSaveFileName(self, "Save project", self._last_dir(), PROJECT_FILTER)
+        if not path:
+            return False
+        if not path.endswith(".json"):
+            path += ".anglebench.json"
+        return self.save_to(path)
+
+    def save_to(self, path: str | Path) -> bool:
+        try:
+            save_project(path, self.project())
+        except OSError as exc:
+            self.tell("Cannot save", f"{path}: {exc.strerror or exc}. Your readings are still here.")
+            return False
+        self.project_path = Path(path)
+        for presenter in self.presenters:
+            presenter.mark_saved()
+        self.recovery.discard()
+        self._add_recent(self.project_path)
+        self._update_title()
+        self.statusBar().showMessage(f"Saved {path}", 5000)
+        return True
+
+    def import_dialog(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self, f"Import readings into {self.current.kind.title}",
+                                              self._last_dir(), IMPORT_FILTER)
+        if path:
+            self.import_file(path)
+
+    def import_file(self, path: str | Path, key: str | None = None) -> bool:
+        presenter = self.presenter(key) if key else self.current
+        try:
+            presenter.import_file(path)
+        except TableImportError as exc:
+            self.tell("Cannot import", str(exc))
+            return False
+        self.statusBar().showMessage(f"Imported {path} (Edit > Undo restores the old readings)",
+                                     8000)
+        return True
+
+    def load_sample(self) -> None:
+        self.current.table_model.replace_all([], "Clear")  # keeps the old readings undoable
+        self.current.import_file(
+            Path(__file__).resolve().parent.parent / "resources" / "samples"
+            / self.current.kind.sample_file)
+
+    def load_all_samples(self) -> None:
+        for presenter in self.presenters:
+            presenter.load_sample()
+        self._update_title()
+
+    # -- autosave and recovery ------------------------------------------------------
+    def autosave(self) -> None:
+        if self.is_modified:
+            try:
+                self.recovery.write(self.project())
+            except OSError as exc:
+                self.statusBar().showMessage(f"Autosave failed: {exc}", 10000)
+
+    def offer_recovery(self) -> bool:
+        """If the last session ended without saving, offer its autosaved work."""
+        if not self.recovery.exists():
+            return False
+        answer = self.ask(
+            "Recover unsaved work",
+            "AngleBench did not close normally last time. Restore the readings it autosaved?",
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.Yes)
+        if answer != QMessageBox.StandardButton.Yes:
+            return False
+        try:
+            project = self.recovery.load()
+        except ProjectFileError as exc:
+            self.tell("Cannot recover", f"{exc} (the file was kept aside)")
+            return False
+        self.apply_project(project)
+        for presenter in self.presenters:  # recovered work is unsaved work
+            presenter._settings_modified = True
+        self._update_title()
+        return True
+
+    def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
+        if not self._confirm_discard():
+            event.ignore()
+            return
+        self.qsettings.setValue("window/geometry", self.saveGeometry())
+        self.qsettings.setValue("window/state", self.saveState())
+        self.qsettings.setValue("window/tab", self.tabs.currentIndex())
+        self.autosave_timer.stop()
+        self.recovery.discard()
+        event.accept()
+
+    # -- settings -----------------------------------------------------------------
+    def _restore_window_state(self) -> None:
+        geometry = self.qsettings.value("window/geometry")
+        if isinstance(geometry, QByteArray):
+            self.restoreGeometry(geometry)
+        state = self.qsettings.value("window/state")
+        if isinstance(state, QByteArray):
+            self.restoreState(state)
+        tab = self.qsettings.value("window/tab", 0)
+        with contextlib.suppress(TypeError, ValueError):
+            self.tabs.setCurrentIndex(int(tab))
+
+    def recent_files(self) -> list[str]:
+        value = self.qsettings.value("recent_files", [])
+        if isinstance(value, str):
+            value = [value]
+        return [str(v) for v in (value or [])]
+
+    def _add_recent(self, path: Path) -> None:
+        files = [str(path)] + [f for f in self.recent_files() if f != str(path)]
+        self.qsettings.setValue("recent_files", files[:MAX_RECENT])
+        self._refresh_recent_menu()
+
+    def _refresh_recent_menu(self) -> None:
+        self.recent_menu.clear()
+        for path in self.recent_files():
+            action = self.recent_menu.addAction(path)
+            action.triggered.connect(lambda _checked=False, p=path: self.open_project(p))
+        self.recent_menu.setEnabled(bool(self.recent_files()))
+
+    def _last_dir(self) -> str:
+        recent = self.recent_files()
+        return str(Path(recent[0]).parent) if recent else str(Path.home())
+
+    def show_about(self) -> None:
+        QMessageBox.about(
+            self, "About AngleBench",
+            f"<b>AngleBench {__version__}</b><br>Angle metrology workbench.<br><br>"
+            f"Qt {qVersion()}, PySide6 {pyside_version}, pyqtgraph {pg.__version__}, "
+            f"numpy {np.__version__}, scipy {scipy.__version__}")
+

@@ -1,0 +1,40 @@
+"""What every workbench provides to the GUI, the CLI and the project file.
+
+A workbench kind is its typed readings columns, its default settings, and
+three pure functions: analyse the parsed readings, turn the result into the
+CLI's JSON, and into a readable text summary.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from models.readings import Column, ParsedReadings
+
+__all__ = ["AnalysisKind", "SettingsError"]
+
+
+class SettingsError(ValueError):
+    """A workbench setting is out of range; the message names it."""
+
+
+@dataclass(frozen=True)
+class AnalysisKind:
+    key: str
+    title: str
+    columns: tuple[Column, ...]
+    default_settings: Mapping[str, Any]
+    analyze: Callable[[ParsedReadings, Mapping[str, Any]], Any]
+    to_json: Callable[[Any], dict[str, Any]]
+    summary: Callable[[Any], str]
+    sample_file: str
+    method_reference: str = ""
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    def settings_with_defaults(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
+        merged = dict(self.default_settings)
+        if settings:
+            merged.update({k: v for k, v in settings.items() if k in self.default_settings})
+        return merged

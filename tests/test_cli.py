@@ -1,0 +1,73 @@
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from app.main import main
+
+
+def run_cli(capsys, *args):
+    code = main(["analyze", *args])
+    captured = capsys.readouterr()
+    return code, captured.out, captured.err
+
+
+def test_theodolite_json_keys_and_figures(capsys, samples_dir):
+    code, out, err = run_cli(capsys, "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                             "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    for key in ("theta_deg", "raw_error_arcsec", "model_error_arcsec", "corrected_error_arcsec",
+                "psi_deg", "alpha_deg", "beta_deg", "r_squared"):
+        assert key in data
+    assert len(data["theta_deg"]) == 41
+    # the sample simulates the seed's experiment set-up
+    assert data["psi_deg"] == pytest.approx(5.8249, abs=0.01)
+    assert data["alpha_deg"] == pytest.approx(43.4965, abs=0.1)
+    raw = np.array(data["raw_error_arcsec"])
+    np.testing.assert_allclose(raw - np.array(data["model_error_arcsec"]),
+                               data["corrected_error_arcsec"], atol=1e-9)
+
+
+def test_summary_is_readable(capsys, samples_dir):
+    code, out, _ = run_cli(capsys, "theodolite", str(samples_dir / "theodolite_sample.csv"))
+    assert code == 0
+    assert "axis tilt       ψ = 5.82" in out and "Corrected error" in out
+
+
+@pytest.mark.parametrize(
+    "content, message",
+    [
+        ("theta_deg,azimuth_deg,elevation_deg\n0,0,0\n1,1°61'00\",0\n",
+         "row 3, column 'azimuth_deg': '1°61'00\"': minutes 61 out of range"),
+        ("theta_deg,elevation_deg\n0,0\n", "row 1 (header): no column 'azimuth_deg'"),
+        ("theta_deg,azimuth_deg,elevation_deg\n0,0,0\n1,1,0\n",
+         "2 usable readings; at least 4 are needed"),
+    ],
+)
+def test_bad_input_exit_2_one_line(capsys, tmp_path, content, message):
+    path = tmp_path / "bad.csv"
+    path.write_text(content, encoding="utf-8")
+    code, out, err = run_cli(capsys, "theodolite", str(path))
+    assert code == 2
+    assert err.count("\n") == 1 and str(path) in err and message in err
+    assert "Traceback" not in err
+
+
+def test_missing_file_and_bad_kind(capsys, tmp_path):
+    code, _, err = run_cli(capsys, "theodolite", str(tmp_path / "nope.csv"))
+    assert code == 2 and "nope.csv: cannot read" in err
+    with pytest.raises(SystemExit) as exc:
+        main(["analyze", "sextant", "x.csv"])
+    assert exc.value.code == 2
+
+
+def test_console_script_runs_without_traceback(tmp_path):
+    path = tmp_path / "bad.csv"
+    path.write_bytes(b"\xff\xfe\x00garbage")
+    proc = subprocess.run([sys.executable, "-m", "app", "analyze", "theodolite", str(path)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr and str(path) in proc.stderr

@@ -1,0 +1,118 @@
+"""Main window: project save/open, damaged files, autosave and recovery, recent files."""
+
+import json
+
+import pytest
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QMessageBox
+
+from app.main_window import MainWindow
+from models.recovery import RecoveryStore
+
+
+@pytest.fixture
+def make_window(qtbot, tmp_path):
+    def factory(answer=QMessageBox.StandardButton.Yes):
+        settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+        window = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
+        window.told = []
+        window.tell = lambda title, text: window.told.append(text)
+        window.ask = lambda *a: answer
+        qtbot.addWidget(window)
+        return window
+
+    return factory
+
+
+def test_tabs_and_menus(make_window):
+    window = make_window()
+    titles = [window.tabs.tabText(i) for i in range(window.tabs.count())]
+    assert titles[0] == "Theodolite run"
+    menus = [a.text() for a in window.menuBar().actions()]
+    assert menus == ["&File", "&Edit", "&Help"]
+
+
+def test_save_and_reopen_round_trip(make_window, tmp_path, samples_dir):
+    window = make_window()
+    window.load_all_samples()
+    bench = window.presenter("theodolite")
+    bench.table_model.set_cells([(0, 1, "bad°")])
+    bench.set_settings({"accuracy_arcsec": 0.7})
+    assert window.is_modified and window.windowTitle().endswith("*")
+    path = tmp_path / "run.anglebench.json"
+    assert window.save_to(path)
+    assert not window.is_modified
+    other = make_window()
+    assert other.open_project(path)
+    reopened = other.presenter("theodolite")
+    assert reopened.sheet.copy_rows() == bench.sheet.copy_rows()
+    assert reopened.settings["accuracy_arcsec"] == 0.7
+    assert other.recent_files()[0] == str(path)
+
+
+def test_damaged_or_newer_project_keeps_current_work(make_window, tmp_path):
+    window = make_window(answer=QMessageBox.StandardButton.Discard)
+    window.load_all_samples()
+    before = window.presenter("theodolite").sheet.copy_rows()
+    damaged = tmp_path / "damaged.json"
+    damaged.write_text('{"format": "anglebench-project", "schema_version": 1, "workb')
+    assert not window.open_project(damaged)
+    newer = tmp_path / "newer.json"
+    newer.write_text(json.dumps({"format": "anglebench-project", "schema_version": 7}))
+    assert not window.open_project(newer)
+    assert "damaged project file" in window.told[0] and "newer AngleBench" in window.told[1]
+    assert window.presenter("theodolite").sheet.copy_rows() == before
+
+
+def test_autosave_and_recovery_after_a_crash(make_window):
+    window = make_window()
+    window.load_all_samples()
+    window.presenter("theodolite").table_model.set_cells([(0, 0, "-20.5")])
+    window.autosave()
+    assert window.recovery.exists()
+    # the process dies here: no closeEvent, the recovery file stays
+    survivor = make_window(answer=QMessageBox.StandardButton.Yes)
+    assert survivor.offer_recovery()
+    assert survivor.presenter("theodolite").sheet.text(0, 0) == "-20.5"
+    assert survivor.is_modified
+
+
+def test_clean_close_removes_recovery_file(make_window):
+    window = make_window(answer=QMessageBox.StandardButton.Discard)
+    window.presenter("theodolite").table_model.set_cells([(0, 0, "1")])
+    window.autosave()
+    assert window.recovery.exists()
+    window.close()
+    assert not window.recovery.exists()
+
+
+def test_close_can_be_cancelled(make_window):
+    window = make_window(answer=QMessageBox.StandardButton.Cancel)
+    window.show()
+    window.presenter("theodolite").table_model.set_cells([(0, 0, "1")])
+    assert not window.close()
+    assert window.isVisible()
+
+
+def test_import_bad_file_reports_and_keeps_readings(make_window, tmp_path):
+    window = make_window()
+    window.load_all_samples()
+    before = window.presenter("theodolite").sheet.copy_rows()
+    bad = tmp_path / "bad.csv"
+    bad.write_text("foo,bar\n1,2\n")
+    assert not window.import_file(bad, "theodolite")
+    assert "no column 'theta_deg'" in window.told[0]
+    assert window.presenter("theodolite").sheet.copy_rows() == before
+
+
+def test_import_is_undoable(make_window, tmp_path):
+    window = make_window()
+    window.load_all_samples()
+    bench = window.presenter("theodolite")
+    before = bench.sheet.copy_rows()
+    good = tmp_path / "good.csv"
+    good.write_text("theta_deg,azimuth_deg,elevation_deg\n0,0,0\n1,1,0\n2,2,0\n3,3,0\n")
+    assert window.import_file(good, "theodolite")
+    assert bench.sheet.row_count == 4
+    window.undo_action.trigger()
+    assert bench.sheet.copy_rows() == before

@@ -1,0 +1,16 @@
+import subprocess
+import sys
+
+
+def test_models_import_no_qt():
+    code = (
+        "import sys, pkgutil, importlib, models\n"
+        "for m in pkgutil.iter_modules(models.__path__):\n"
+        "    importlib.import_module('models.' + m.name)\n"
+        "import app.cli\n"
+        "bad = [n for n in sys.modules if n.split('.')[0] in "
+        "('PySide6', 'shiboken6', 'pyqtgraph', 'PyQt5', 'PyQt6')]\n"
+        "print(','.join(bad))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""

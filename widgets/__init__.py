@@ -1,0 +1,1 @@
+"""Qt views and presenters of AngleBench (the numerics live in ``models``)."""

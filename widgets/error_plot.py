@@ -1,0 +1,113 @@
+"""Error-curve plot shared by the workbenches: raw error with the model over it,
+the corrected error on its own scale, a residual plot beneath; legends, arcsec
+axes and a crosshair readout."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
+
+RAW_PEN = pg.mkPen("#c0392b", width=2)
+MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
+CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
+RESIDUAL_PEN = pg.mkPen("#2e8b57", width=1.5)
+
+
+class ErrorPlot(QWidget):
+    """Three x-linked plots; the curves are created once and updated with ``setData``.
+
+    ``raw_curve``, ``model_curve``, ``corrected_curve`` and ``residual_curve``
+    are public so tests can read their data with ``getData()``.
+    """
+
+    def __init__(self, parent=None, x_label: str = "θ (deg)",
+                 residual_label: str = "residual (\")") -> None:
+        super().__init__(parent)
+        self._setup_ui(x_label, residual_label)
+        self._layout()
+
+    def _setup_ui(self, x_label: str, residual_label: str) -> None:
+        self.graphics = pg.GraphicsLayoutWidget()
+        self.graphics.setBackground("w")
+        self.main_plot = self.graphics.addPlot(row=0, col=0)
+        self.corrected_plot = self.graphics.addPlot(row=1, col=0)
+        self.residual_plot = self.graphics.addPlot(row=2, col=0)
+        for row, stretch in enumerate((3, 3, 2)):
+            self.graphics.ci.layout.setRowStretchFactor(row, stretch)
+        for plot in (self.main_plot, self.corrected_plot, self.residual_plot):
+            plot.showGrid(x=True, y=True, alpha=0.25)
+            plot.getAxis("left").setWidth(58)
+        self.corrected_plot.setXLink(self.main_plot)
+        self.residual_plot.setXLink(self.main_plot)
+        self.residual_plot.setLabel("bottom", x_label)
+        self.main_plot.setLabel("left", "raw error (\")")
+        self.corrected_plot.setLabel("left", "corrected (\")")
+        self.residual_plot.setLabel("left", residual_label)
+        self.legend = self.main_plot.addLegend(offset=(-10, 10))
+        self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
+        self.raw_curve = self.main_plot.plot(name="raw", pen=RAW_PEN, symbol="o", symbolSize=5,
+                                             symbolBrush="#c0392b", symbolPen=None)
+        self.model_curve = self.main_plot.plot(name="model", pen=MODEL_PEN)
+        self.corrected_curve = self.corrected_plot.plot(
+            name="corrected", pen=CORRECTED_PEN, symbol="s", symbolSize=5,
+            symbolBrush="#1f5fbf", symbolPen=None)
+        self.corrected_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
+        self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, symbol="o", symbolSize=4,
+                                                      symbolBrush="#2e8b57", symbolPen=None)
+        self.residual_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
+        self.vline = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#888", width=1))
+        self.main_plot.addItem(self.vline, ignoreBounds=True)
+        self.readout = QLabel(" ")
+        self.readout.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.graphics.scene().sigMouseMoved.connect(self._on_mouse_moved)
+
+    def _layout(self) -> None:
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.graphics, 1)
+        layout.addWidget(self.readout)
+
+    def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
+        for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
+                            (self.corrected_curve, corrected)):
+            curve.opts["name"] = name
+            for legend in (self.legend, self.corrected_legend):
+                label = legend.getLabel(curve)
+                if label is not None:
+                    label.setText(name)
+
+    def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
+        """Update the curves (arcsec over x); ``None`` hides a curve."""
+        x = np.asarray(x, dtype=float)
+        for curve, y in ((self.raw_curve, raw), (self.model_curve, model),
+                         (self.corrected_curve, corrected)):
+            if y is None:
+                curve.setData([], [])
+            else:
+                curve.setData(x, np.asarray(y, dtype=float))
+
+    def set_residuals(self, x, residuals) -> None:
+        if residuals is None:
+            self.residual_curve.setData([], [])
+        else:
+            self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
+
+    def clear(self) -> None:
+        self.set_curves([], None, None, None)
+        self.set_residuals([], None)
+
+    def _on_mouse_moved(self, pos) -> None:
+        if not self.main_plot.sceneBoundingRect().contains(pos):
+            return
+        point = self.main_plot.vb.mapSceneToView(pos)
+        self.vline.setPos(point.x())
+        parts = [f"x = {point.x():.4g}"]
+        for curve in (self.raw_curve, self.model_curve, self.corrected_curve):
+            xs, ys = curve.getData()
+            if xs is None or len(xs) == 0:
+                continue
+            i = int(np.argmin(np.abs(xs - point.x())))
+            parts.append(f"{curve.opts['name']} {ys[i]:+.3f}\" @ {xs[i]:.4g}")
+        self.readout.setText("   ".join(parts))

@@ -1,0 +1,172 @@
+"""Qt table model over a :class:`models.readings.ReadingsSheet`, with undo."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
+from PySide6.QtGui import QBrush, QColor, QUndoStack
+
+from models.readings import ReadingsSheet
+from widgets.table_commands import (
+    InsertRowsCommand,
+    RemoveRowsCommand,
+    ReplaceAllCommand,
+    SetCellsCommand,
+)
+
+INVALID_BRUSH = QBrush(QColor(255, 205, 205))
+MUTED_BRUSH = QBrush(QColor(235, 240, 250))
+
+_Index = QModelIndex | QPersistentModelIndex
+
+
+class ReadingsTableModel(QAbstractTableModel):
+    """Shows the sheet's raw text; unreadable cells are red with the reason as tooltip.
+
+    One extra blank row at the end takes new readings. Every edit goes through
+    the undo stack. ``sheet_changed`` fires after any change of the cells.
+    """
+
+    sheet_changed = Signal()
+
+    def __init__(self, sheet: ReadingsSheet, undo_stack: QUndoStack, parent=None) -> None:
+        super().__init__(parent)
+        self.sheet = sheet
+        self.undo_stack = undo_stack
+        self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+
+    # -- read -----------------------------------------------------------
+    def rowCount(self, parent: _Index = QModelIndex()) -> int:  # noqa: B008, N802
+        return 0 if parent.isValid() else self.sheet.row_count + 1
+
+    def columnCount(self, parent: _Index = QModelIndex()) -> int:  # noqa: B008, N802
+        return 0 if parent.isValid() else self.sheet.column_count
+
+    def data(self, index: _Index, role: int = Qt.ItemDataRole.DisplayRole):
+        if not index.isValid():
+            return None
+        r, c = index.row(), index.column()
+        inside = r < self.sheet.row_count
+        if role in (Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole):
+            return self.sheet.text(r, c) if inside else ""
+        if not inside:
+            return None
+        if role == Qt.ItemDataRole.BackgroundRole:
+            if self.sheet.cell_error(r, c) is not None:
+                return INVALID_BRUSH
+            if r in self.highlight_rows:
+                return MUTED_BRUSH
+            return None
+        if role == Qt.ItemDataRole.ToolTipRole:
+            reason = self.sheet.cell_error(r, c)
+            return f"Row {r + 1}, {self.sheet.columns[c].key}: {reason}" if reason else None
+        return None
+
+    def headerData(self, section: int, orientation: Qt.Orientation,  # noqa: N802
+                   role: int = Qt.ItemDataRole.DisplayRole):
+        if orientation == Qt.Orientation.Horizontal:
+            column = self.sheet.columns[section]
+            if role == Qt.ItemDataRole.DisplayRole:
+                return column.header
+            if role == Qt.ItemDataRole.ToolTipRole:
+                return f"{column.key}: {column.help}" if column.help else column.key
+            return None
+        if role == Qt.ItemDataRole.DisplayRole:
+            return str(section + 1) if section < self.sheet.row_count else "*"
+        return None
+
+    def flags(self, index: _Index) -> Qt.ItemFlag:
+        if not index.isValid():
+            return Qt.ItemFlag.NoItemFlags
+        return Qt.ItemFlag.ItemIsSelectable | Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsEditable
+
+    def cell_errors(self) -> list[tuple[int, int, str]]:
+        out = []
+        for r in range(self.sheet.row_count):
+            for c in range(self.sheet.column_count):
+                reason = self.sheet.cell_error(r, c)
+                if reason:
+                    out.append((r, c, reason))
+        return out
+
+    # -- undoable edits ---------------------------------------------------
+    def setData(self, index: _Index, value, role: int = Qt.ItemDataRole.EditRole) -> bool:  # noqa: N802
+        if role != Qt.ItemDataRole.EditRole or not index.isValid():
+            return False
+        text = "" if value is None else str(value)
+        r, c = index.row(), index.column()
+        if r < self.sheet.row_count and self.sheet.text(r, c) == text:
+            return False
+        if r >= self.sheet.row_count and not text:
+            return False
+        self.set_cells([(r, c, text)], f"Edit row {r + 1}")
+        return True
+
+    def set_cells(self, changes: list[tuple[int, int, str]], label: str = "Edit cells") -> None:
+        changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
+        if changes:
+            self.undo_stack.push(SetCellsCommand(self, changes, label))
+
+    def insert_rows(self, at: int, count: int = 1) -> None:
+        at = max(0, min(at, self.sheet.row_count))
+        rows = [[""] * self.sheet.column_count for _ in range(count)]
+        self.undo_stack.push(InsertRowsCommand(self, at, rows))
+
+    def remove_rows(self, rows: list[int]) -> None:
+        rows = sorted({r for r in rows if 0 <= r < self.sheet.row_count})
+        if not rows:
+            return
+        blocks: list[tuple[int, int]] = []
+        for r in rows:
+            if blocks and blocks[-1][0] + blocks[-1][1] == r:
+                blocks[-1] = (blocks[-1][0], blocks[-1][1] + 1)
+            else:
+                blocks.append((r, 1))
+        self.undo_stack.push(RemoveRowsCommand(self, blocks, f"Delete {len(rows)} row(s)"))
+
+    def replace_all(self, rows: list[list[str]], label: str = "Replace readings") -> None:
+        self.undo_stack.push(ReplaceAllCommand(self, rows, label))
+
+    # -- raw operations used by the commands ------------------------------
+    def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:
+        if not changes:
+            return
+        max_row = max(r for r, _, _ in changes)
+        if max_row >= self.sheet.row_count:
+            first = self.sheet.row_count + 1  # the trailing blank row already exists
+            self.beginInsertRows(QModelIndex(), first, max_row + 1)
+            for r, c, t in changes:
+                self.sheet.set_text(r, c, t)
+            self.endInsertRows()
+        else:
+            for r, c, t in changes:
+                self.sheet.set_text(r, c, t)
+        rows = [r for r, _, _ in changes]
+        self.dataChanged.emit(self.index(min(rows), 0),
+                              self.index(max(rows), self.sheet.column_count - 1))
+        self.headerDataChanged.emit(Qt.Orientation.Vertical, min(rows), self.sheet.row_count)
+        self.sheet_changed.emit()
+
+    def truncate_rows(self, count: int) -> None:
+        if self.sheet.row_count > count:
+            self.apply_remove(count, self.sheet.row_count - count)
+
+    def apply_insert(self, at: int, rows: list[list[str]]) -> None:
+        self.beginInsertRows(QModelIndex(), at, at + len(rows) - 1)
+        self.sheet.insert_rows(at, rows)
+        self.endInsertRows()
+        self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
+        self.sheet_changed.emit()
+
+    def apply_remove(self, at: int, count: int) -> list[list[str]]:
+        self.beginRemoveRows(QModelIndex(), at, at + count - 1)
+        removed = self.sheet.remove_rows(at, count)
+        self.endRemoveRows()
+        self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
+        self.sheet_changed.emit()
+        return removed
+
+    def apply_replace(self, rows: list[list[str]]) -> None:
+        self.beginResetModel()
+        self.sheet.replace_all(rows)
+        self.endResetModel()
+        self.sheet_changed.emit()

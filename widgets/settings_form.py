@@ -1,0 +1,87 @@
+"""A small form of typed settings fields, read and written as a dict."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QFormLayout, QSpinBox, QWidget
+
+
+class SettingsForm(QWidget):
+    """Fields keyed by setting name; ``changed`` fires when the user edits one."""
+
+    changed = Signal()
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self._fields: dict[str, QWidget] = {}
+        self._form = QFormLayout(self)
+        self._form.setContentsMargins(4, 4, 4, 4)
+
+    def add_float(self, key: str, label: str, minimum: float, maximum: float, decimals: int = 3,
+                  suffix: str = "", step: float = 1.0, tooltip: str = "") -> QDoubleSpinBox:
+        box = QDoubleSpinBox()
+        box.setRange(minimum, maximum)
+        box.setDecimals(decimals)
+        box.setSingleStep(step)
+        box.setSuffix(suffix)
+        box.setKeyboardTracking(False)
+        box.valueChanged.connect(self.changed)
+        return self._add(key, label, box, tooltip)
+
+    def add_int(self, key: str, label: str, minimum: int, maximum: int, suffix: str = "",
+                special: str = "", tooltip: str = "") -> QSpinBox:
+        box = QSpinBox()
+        box.setRange(minimum, maximum)
+        box.setSuffix(suffix)
+        box.setKeyboardTracking(False)
+        if special:
+            box.setSpecialValueText(special)
+        box.valueChanged.connect(self.changed)
+        return self._add(key, label, box, tooltip)
+
+    def add_choice(self, key: str, label: str, choices: list[tuple[Any, str]],
+                   tooltip: str = "") -> QComboBox:
+        box = QComboBox()
+        for value, text in choices:
+            box.addItem(text, value)
+        box.currentIndexChanged.connect(self.changed)
+        return self._add(key, label, box, tooltip)
+
+    def _add(self, key: str, label: str, widget, tooltip: str):
+        widget.setObjectName(key)
+        if tooltip:
+            widget.setToolTip(tooltip)
+        self._form.addRow(label, widget)
+        self._fields[key] = widget
+        return widget
+
+    def field(self, key: str) -> QWidget:
+        return self._fields[key]
+
+    def values(self) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        for key, widget in self._fields.items():
+            if isinstance(widget, QComboBox):
+                out[key] = widget.currentData()
+            elif isinstance(widget, (QSpinBox, QDoubleSpinBox)):
+                out[key] = widget.value()
+        return out
+
+    def set_values(self, values: dict[str, Any]) -> None:
+        """Show ``values`` without emitting ``changed``."""
+        self.blockSignals(True)
+        try:
+            for key, value in values.items():
+                widget = self._fields.get(key)
+                if isinstance(widget, QComboBox):
+                    index = widget.findData(value)
+                    if index >= 0:
+                        widget.setCurrentIndex(index)
+                elif isinstance(widget, QSpinBox):
+                    widget.setValue(int(value))
+                elif isinstance(widget, QDoubleSpinBox):
+                    widget.setValue(float(value))
+        finally:
+            self.blockSignals(False)

@@ -1,0 +1,71 @@
+"""Undoable edits of a readings table (QUndoCommand subclasses)."""
+
+from __future__ import annotations
+
+from PySide6.QtGui import QUndoCommand
+
+
+class SetCellsCommand(QUndoCommand):
+    """Set many cells at once (typing one cell, pasting a block, clearing a selection)."""
+
+    def __init__(self, model, changes: list[tuple[int, int, str]], label: str) -> None:
+        super().__init__(label)
+        self._model = model
+        self._changes = changes
+        self._old_rows = model.sheet.row_count
+        self._old: list[tuple[int, int, str]] = []
+
+    def redo(self) -> None:
+        self._old = [(r, c, self._model.sheet.text(r, c) if r < self._model.sheet.row_count else "")
+                     for r, c, _ in self._changes]
+        self._model.apply_cells(self._changes)
+
+    def undo(self) -> None:
+        self._model.apply_cells(self._old)
+        self._model.truncate_rows(self._old_rows)
+
+
+class InsertRowsCommand(QUndoCommand):
+    def __init__(self, model, at: int, rows: list[list[str]], label: str = "Insert rows") -> None:
+        super().__init__(label)
+        self._model, self._at, self._rows = model, at, rows
+
+    def redo(self) -> None:
+        self._model.apply_insert(self._at, self._rows)
+
+    def undo(self) -> None:
+        self._model.apply_remove(self._at, len(self._rows))
+
+
+class RemoveRowsCommand(QUndoCommand):
+    """Remove rows given as sorted, non-overlapping (start, count) blocks."""
+
+    def __init__(self, model, blocks: list[tuple[int, int]], label: str = "Delete rows") -> None:
+        super().__init__(label)
+        self._model, self._blocks = model, blocks
+        self._removed: list[tuple[int, list[list[str]]]] = []
+
+    def redo(self) -> None:
+        self._removed = []
+        for start, count in reversed(self._blocks):
+            self._removed.append((start, self._model.apply_remove(start, count)))
+
+    def undo(self) -> None:
+        for start, rows in reversed(self._removed):
+            self._model.apply_insert(start, rows)
+
+
+class ReplaceAllCommand(QUndoCommand):
+    """Replace every row (import of a file, loading a sample)."""
+
+    def __init__(self, model, rows: list[list[str]], label: str) -> None:
+        super().__init__(label)
+        self._model, self._new = model, rows
+        self._old: list[list[str]] = []
+
+    def redo(self) -> None:
+        self._old = self._model.sheet.copy_rows()
+        self._model.apply_replace(self._new)
+
+    def undo(self) -> None:
+        self._model.apply_replace(self._old)

@@ -1,0 +1,94 @@
+"""The passive view every workbench shares: readings table and set-up on the left,
+fit summary, warnings and plot tabs on the right."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QFont
+from PySide6.QtWidgets import (
+    QGroupBox,
+    QLabel,
+    QPlainTextEdit,
+    QSplitter,
+    QTabWidget,
+    QVBoxLayout,
+    QWidget,
+)
+
+from widgets.readings_table_view import ReadingsTableView
+from widgets.settings_form import SettingsForm
+
+
+class WorkbenchView(QWidget):
+    """Widgets only: the presenter fills them and reads the settings back."""
+
+    def __init__(self, title: str, parent=None) -> None:
+        super().__init__(parent)
+        self.title = title
+        self._setup_ui()
+        self._layout()
+
+    def _setup_ui(self) -> None:
+        self.table = ReadingsTableView()
+        self.settings = SettingsForm()
+        self.readings_label = QLabel("Readings")
+        self.summary = QPlainTextEdit()
+        self.summary.setReadOnly(True)
+        font = QFont("DejaVu Sans Mono")
+        font.setStyleHint(QFont.StyleHint.Monospace)
+        font.setPointSize(9)
+        self.summary.setFont(font)
+        self.summary.setMaximumHeight(135)
+        self.warnings = QLabel()
+        self.warnings.setWordWrap(True)
+        self.warnings.setTextFormat(Qt.TextFormat.PlainText)
+        self.warnings.setStyleSheet("QLabel { color: #8a4b00; background: #fff4dc; padding: 4px; }")
+        self.warnings.hide()
+        self.plot_tabs = QTabWidget()
+
+    def _layout(self) -> None:
+        left = QWidget()
+        left_layout = QVBoxLayout(left)
+        left_layout.setContentsMargins(0, 0, 0, 0)
+        left_layout.addWidget(self.readings_label)
+        left_layout.addWidget(self.table, 1)
+        setup_box = QGroupBox("Set-up")
+        setup_layout = QVBoxLayout(setup_box)
+        setup_layout.setContentsMargins(2, 2, 2, 2)
+        setup_layout.addWidget(self.settings)
+        left_layout.addWidget(setup_box)
+
+        right = QWidget()
+        right_layout = QVBoxLayout(right)
+        right_layout.setContentsMargins(0, 0, 0, 0)
+        fit_box = QGroupBox("Result")
+        fit_layout = QVBoxLayout(fit_box)
+        fit_layout.setContentsMargins(2, 2, 2, 2)
+        fit_layout.addWidget(self.summary)
+        fit_layout.addWidget(self.warnings)
+        right_layout.addWidget(fit_box)
+        right_layout.addWidget(self.plot_tabs, 1)
+
+        splitter = QSplitter(Qt.Orientation.Horizontal)
+        splitter.addWidget(left)
+        splitter.addWidget(right)
+        splitter.setStretchFactor(0, 2)
+        splitter.setStretchFactor(1, 3)
+        splitter.setSizes([520, 880])
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addWidget(splitter)
+
+    # -- setters the presenter calls ---------------------------------------
+    def add_plot_tab(self, widget: QWidget, title: str) -> None:
+        self.plot_tabs.addTab(widget, title)
+
+    def set_summary(self, text: str) -> None:
+        self.summary.setPlainText(text)
+
+    def set_warnings(self, warnings: list[str]) -> None:
+        self.warnings.setText("\n".join(f"⚠ {w}" for w in warnings))
+        self.warnings.setVisible(bool(warnings))
+
+    def set_readings_caption(self, text: str) -> None:
+        self.readings_label.setText(text)
