@@ -191,8 +191,32 @@ class ReadingsSheet:
         return [list(r) for r in self.rows]
 
     # -- parsing --------------------------------------------------------
+    def _parse_fast(self) -> ParsedReadings | None:
+        """Vectorised parse when every required column is plain numbers (large signal files)."""
+        if not self.rows or any(c.kind is ColumnKind.TEXT for c in self.columns):
+            return None
+        out: dict[str, np.ndarray] = {}
+        for c, column in enumerate(self.columns):
+            texts = [row[c] for row in self.rows]
+            if not column.required and not any(t.strip() for t in texts):
+                out[column.key] = np.full(len(texts), np.nan)
+                continue
+            try:
+                values = np.array(texts, dtype=float)
+            except ValueError:
+                return None
+            if column.kind is ColumnKind.INTEGER or not np.all(np.isfinite(values)):
+                return None
+            out[column.key] = values
+        if not any(c.required for c in self.columns):
+            return None
+        return ParsedReadings(out, np.arange(len(self.rows)), [])
+
     def parse(self) -> ParsedReadings:
         """Parse every non-blank row; rows with an unreadable cell are left out."""
+        fast = self._parse_fast()
+        if fast is not None:
+            return fast
         errors: list[CellError] = []
         kept_rows: list[int] = []
         kept: list[list[object]] = []

@@ -8,6 +8,8 @@ from pathlib import Path
 import numpy as np
 
 from models.angles import format_dms
+from models.fringe import ChannelFit, model_signal, phase_of_samples
+from models.polygon import simulate_set
 from models.theodolite import SetupParameters, simulate_readings
 
 HERE = Path(__file__).resolve().parent
@@ -28,5 +30,54 @@ def theodolite_sample() -> None:
             writer.writerow([f"{t:g}", format_dms(a, 1), format_dms(e, 1)])
 
 
+def polygon_encoder_error(theta_deg: np.ndarray) -> np.ndarray:
+    """A grade-3 encoder: eccentricity 0.35", ellipticity 0.15", a little 6th harmonic."""
+    th = np.radians(theta_deg)
+    return 0.35 * np.cos(th + 0.7) + 0.15 * np.cos(2 * th - 0.3) + 0.05 * np.sin(6 * th)
+
+
+def polygon_sample() -> None:
+    """24-face polygon, a forward and a reverse set, tilt ψ = 8' towards ω = 60°."""
+    rng = np.random.default_rng(2015)
+    faces = 24
+    theta = np.arange(faces) * 360.0 / faces
+    dev = np.round(rng.normal(0, 0.15, faces), 2)
+    with open(HERE / "polygon_sample.csv", "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["position", "encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec",
+                         "ac_y_arcsec", "set", "direction"])
+        for set_id, direction, reversal in ((1, "+", 0.1), (2, "-", -0.1)):
+            s = simulate_set(faces, polygon_encoder_error(theta) + reversal, 480.0, 60.0, dev,
+                             0.03, rng, closure_drift_arcsec=0.12)
+            for i in range(faces):
+                writer.writerow([i + 1, format_dms(s.encoder_deg[i], 2), f"{dev[i]:.2f}",
+                                 f"{s.ac_x_arcsec[i]:.2f}", f"{s.ac_y_arcsec[i]:.2f}", set_id,
+                                 direction])
+            writer.writerow([1, format_dms(s.encoder_deg[0], 2), f"{dev[0]:.2f}",
+                             f"{s.closure_ac_x_arcsec:.2f}", f"{s.ac_y_arcsec[0]:.2f}", set_id,
+                             direction])
+
+
+TABLE1_SIN = ChannelFit.from_parameters(-0.0179, {1: (3.7763, 0.026), 3: (-0.0796, 3.2261),
+                                                  5: (0.0109, 0.4688)})
+TABLE1_COS = ChannelFit.from_parameters(-0.0642, {1: (3.7346, 1.5902), 3: (0.079, 8.0719),
+                                                  5: (-0.01, 2.0662)})
+
+
+def fringe_sample() -> None:
+    """Eight periods of 64 samples with the seed's Table 1 signals and 2 mV noise."""
+    rng = np.random.default_rng(2013)
+    theta = phase_of_samples(8 * 64, 64)
+    u_sin = model_signal(theta, TABLE1_SIN) + rng.normal(0, 0.002, theta.size)
+    u_cos = model_signal(theta, TABLE1_COS) + rng.normal(0, 0.002, theta.size)
+    with open(HERE / "fringe_sample.csv", "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["u_sin", "u_cos"])
+        for s, c in zip(u_sin, u_cos, strict=True):
+            writer.writerow([f"{s:.5f}", f"{c:.5f}"])
+
+
 if __name__ == "__main__":
     theodolite_sample()
+    polygon_sample()
+    fringe_sample()
