@@ -25,7 +25,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from models.angles import ARCSEC_PER_RAD
-from models.error_stats import ErrorStats, error_stats
+from models.error_stats import ErrorStats
 
 __all__ = [
     "GRADE_ACCURACY_ARCSEC",

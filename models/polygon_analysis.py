@@ -55,7 +55,7 @@ def closure_limit_arcsec(grade: int, override: float = 0.0) -> float:
     return float(override) if override and override > 0 else GRADE_ACCURACY_ARCSEC[grade] / 2.0
 
 
-def _split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None, int]]:
+def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None, int]]:
     """(set id, row indices of positions, closure row index or None, direction) per set."""
     set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
     out = []
@@ -80,7 +80,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     if parsed.n < 3:
         raise ValueError(f"{parsed.n} usable readings; a polygon test needs at least 3 positions")
     limit = closure_limit_arcsec(grade, float(s["closure_limit_arcsec"]))
-    sets = _split_sets(parsed)
+    sets = split_sets(parsed)
     faces = int(s["faces"]) or int(sets[0][1].size)
     results: list[PolygonSetResult] = []
     for set_id, rows, closure_row, direction in sets:

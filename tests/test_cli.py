@@ -71,3 +71,44 @@ def test_console_script_runs_without_traceback(tmp_path):
                           capture_output=True, text=True)
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr and str(path) in proc.stderr
+
+
+def test_polygon_json_keys(capsys, samples_dir):
+    code, out, err = run_cli(capsys, "polygon", str(samples_dir / "polygon_sample.csv"), "--json",
+                             "--grade", "3")
+    assert code == 0, err
+    data = json.loads(out)
+    for key in ("error_arcsec", "closure_arcsec", "closure_ok", "pyramidal_tilt_arcsec",
+                "pyramidal_direction_deg", "pyramidal_error_arcsec", "corrected_error_arcsec"):
+        assert key in data
+    assert len(data["error_arcsec"]) == 48  # two sets of 24 faces, closure rows left out
+    assert data["closure_ok"] is True
+    assert data["pyramidal_tilt_arcsec"] == pytest.approx(480.0, abs=1.0)
+    assert data["pyramidal_direction_deg"] == pytest.approx(60.0, abs=0.5)
+    np.testing.assert_allclose(np.array(data["error_arcsec"]) + data["pyramidal_error_arcsec"],
+                               data["corrected_error_arcsec"], atol=1e-12)
+
+
+def test_polygon_bad_grade_is_exit_2(capsys, samples_dir):
+    code, _, err = run_cli(capsys, "polygon", str(samples_dir / "polygon_sample.csv"), "--grade", "9")
+    assert code == 2 and "grade must be 1 to 7" in err
+
+
+def test_fringe_json_keys(capsys, samples_dir):
+    code, out, err = run_cli(capsys, "fringe", str(samples_dir / "fringe_sample.csv"), "--json",
+                             "--lines-per-rev", "16384", "--samples-per-period", "64")
+    assert code == 0, err
+    data = json.loads(out)
+    assert set(data["sin_params"]) == {"A0", "A1", "c1", "A3", "c3", "A5", "c5"}
+    assert data["sin_params"]["A1"] == pytest.approx(3.7763, abs=0.001)
+    assert data["cos_params"]["A3"] == pytest.approx(0.079, abs=0.001)
+    assert len(data["raw_error_arcsec"]) == 512
+    assert data["raw_peak_to_peak_arcsec"] == pytest.approx(0.97, abs=0.05)
+    assert data["compensated_peak_to_peak_arcsec"] < 0.1
+
+
+def test_fringe_bad_cell(capsys, tmp_path):
+    path = tmp_path / "f.csv"
+    path.write_text("u_sin,u_cos\n0.1,3.7\n0.5,abc\n")
+    code, _, err = run_cli(capsys, "fringe", str(path))
+    assert code == 2 and "row 3, column 'u_cos': 'abc' is not a number" in err

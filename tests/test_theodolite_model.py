@@ -42,7 +42,8 @@ def test_check_figure_experiment_span():
 def test_rodrigues_matches_eqs_2_to_4_of_the_seed():
     psi, alpha, beta = np.radians([3.0, 45.0, 2.0])
     th = np.radians(THETA)
-    sp, cp, sa, ca, sb, cb = np.sin(psi), np.cos(psi), np.sin(alpha), np.cos(alpha), np.sin(beta), np.cos(beta)
+    sp, cp, sa, ca = np.sin(psi), np.cos(psi), np.sin(alpha), np.cos(alpha)
+    sb, cb = np.sin(beta), np.cos(beta)
     one_c = 1 - np.cos(th)
     x = (np.cos(th) + sp**2 * ca**2 * one_c) * cb + (sp * cp * ca * one_c + sp * sa * np.sin(th)) * sb
     y = (sp**2 * ca * sa * one_c + cp * np.sin(th)) * cb + (sp * sa * cp * one_c - sp * ca * np.sin(th)) * sb

@@ -39,6 +39,8 @@ class ErrorPlot(QWidget):
         for plot in (self.main_plot, self.corrected_plot, self.residual_plot):
             plot.showGrid(x=True, y=True, alpha=0.25)
             plot.getAxis("left").setWidth(58)
+            for axis in ("left", "bottom"):
+                plot.getAxis(axis).enableAutoSIPrefix(False)  # arcsec stay arcsec
         self.corrected_plot.setXLink(self.main_plot)
         self.residual_plot.setXLink(self.main_plot)
         self.residual_plot.setLabel("bottom", x_label)
@@ -75,8 +77,10 @@ class ErrorPlot(QWidget):
             curve.opts["name"] = name
             for legend in (self.legend, self.corrected_legend):
                 label = legend.getLabel(curve)
-                if label is not None:
+                if label is not None and name:
                     label.setText(name)
+                elif label is not None:
+                    legend.removeItem(curve)
 
     def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
         """Update the curves (arcsec over x); ``None`` hides a curve."""

@@ -79,6 +79,15 @@ class ReadingsTableModel(QAbstractTableModel):
             return Qt.ItemFlag.NoItemFlags
         return Qt.ItemFlag.ItemIsSelectable | Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsEditable
 
+    def set_highlight_rows(self, rows: set[int]) -> None:
+        """Draw these rows apart (e.g. closure readings); repaints only on a change."""
+        if rows != self.highlight_rows:
+            self.highlight_rows = set(rows)
+            if self.sheet.row_count:
+                self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
+                                                                   self.sheet.column_count - 1),
+                                      [Qt.ItemDataRole.BackgroundRole])
+
     def cell_errors(self) -> list[tuple[int, int, str]]:
         out = []
         for r in range(self.sheet.row_count):

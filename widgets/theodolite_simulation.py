@@ -45,6 +45,7 @@ class TheodoliteSimulation(QWidget):
         for plot in (self.zeta_plot, self.elevation_plot):
             plot.setLabel("bottom", "θ (deg)")
             plot.showGrid(x=True, y=True, alpha=0.25)
+            plot.getAxis("left").enableAutoSIPrefix(False)
             plot.addLegend(offset=(10, 10))
         self.zeta_curves: list[pg.PlotDataItem] = []
         self.elevation_curves: list[pg.PlotDataItem] = []

@@ -72,9 +72,8 @@ class WorkbenchPresenter(QObject):
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
         self.view.table.setModel(self.table_model)
         header = self.view.table.horizontalHeader()
-        for index, column in enumerate(kind.columns):
-            header.setSectionResizeMode(index, QHeaderView.ResizeMode.Stretch if column.required
-                                        else QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        header.setStretchLastSection(True)
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None

@@ -1,0 +1,127 @@
+import numpy as np
+import pytest
+
+from models.polygon import (
+    allowed_tilt_arcsec,
+    face_errors_arcsec,
+    fit_tilt,
+    harmonic_analysis,
+    pyramidal_readings_arcsec,
+    pyramidal_x_short_arcsec,
+    pyramidal_y_short_arcsec,
+    simulate_set,
+)
+from models.polygon_analysis import POLYGON
+from models.readings import ReadingsSheet
+
+THETA = np.arange(0.0, 360.0, 1.0)
+
+
+# -- check figures of SPEC.md section 2 ------------------------------------------
+def test_largest_induced_error_1_921_at_111_deg():
+    eps_x, _ = pyramidal_readings_arcsec(THETA, 600.0, 90.0)  # ψ = 10', ω = 90°
+    i = int(np.argmax(np.abs(eps_x)))
+    assert THETA[i] == 111.0
+    assert eps_x[i] == pytest.approx(1.921, abs=0.0005)
+
+
+@pytest.mark.parametrize("theta, ratio", [(111.0, 0.5337e-5), (179.0, 0.1269e-6)])
+def test_ratio_to_psi_squared(theta, ratio):
+    eps_x, _ = pyramidal_readings_arcsec([theta], 600.0, 90.0)
+    assert eps_x[0] / 600.0**2 == pytest.approx(ratio, rel=2e-4)
+    assert pyramidal_x_short_arcsec([theta], 600.0, 90.0)[0] / 600.0**2 == pytest.approx(ratio,
+                                                                                        rel=2e-4)
+
+
+@pytest.mark.parametrize("omega", [0.0, 37.0, 90.0, 200.0])
+def test_vertical_reading_peaks_at_omega_and_spans_two_psi(omega):
+    _, eps_y = pyramidal_readings_arcsec(THETA, 600.0, omega)
+    assert THETA[int(np.argmax(eps_y))] == pytest.approx(omega, abs=1.0)
+    assert np.ptp(eps_y) == pytest.approx(1200.0, rel=1e-4)
+    np.testing.assert_allclose(eps_y, pyramidal_y_short_arcsec(THETA, 600.0, omega), atol=0.05)
+
+
+def test_allowed_tilt_table_and_grade_1_discrepancy():
+    assert [round(allowed_tilt_arcsec(g)) for g in range(1, 8)] == [125, 177, 250, 353, 559, 790,
+                                                                   1369]
+    assert round(allowed_tilt_arcsec(1)) != 140  # the seed's printed value
+
+
+def test_face_errors_eq1_by_hand():
+    a = [10.0, 10.0 + 90 + 1 / 3600, 190.0 - 2 / 3600, 280.0]
+    dev = [0.0, 0.5, 0.0, -0.5]
+    c = [1.0, 1.0, 1.5, 0.0]
+    np.testing.assert_allclose(face_errors_arcsec(a, dev, c, 4), [0, 0.5, -2.5, 1.5], atol=1e-9)
+
+
+def test_face_errors_wrap_past_360():
+    a = [350.0, 80.0 + 0.5 / 3600, 170.0, 260.0]
+    np.testing.assert_allclose(face_errors_arcsec(a, [0] * 4, [0] * 4, 4), [0, 0.5, 0, 0], atol=1e-9)
+
+
+def test_harmonic_analysis_recovers_eccentricity():
+    theta = np.radians(np.arange(24) * 15.0)
+    e = 0.4 * np.cos(theta + 0.3) + 0.1 * np.cos(2 * theta - 1.0)
+    h = harmonic_analysis(e)
+    assert h.amplitude[1] == pytest.approx(0.4)
+    assert h.phase_deg[1] == pytest.approx(np.degrees(0.3))
+    assert h.amplitude[2] == pytest.approx(0.1)
+
+
+def true_error(theta_deg):
+    th = np.radians(theta_deg)
+    return 0.3 * np.cos(th + 0.5) + 0.12 * np.cos(2 * th) + 0.04 * np.sin(5 * th)
+
+
+@pytest.mark.parametrize("faces", [12, 24, 36])
+def test_recovers_encoder_error_and_tilt_from_noisy_readings(faces):
+    rng = np.random.default_rng(faces)
+    theta = np.arange(faces) * 360.0 / faces
+    dev = rng.normal(0, 0.2, faces)
+    sim = simulate_set(faces, true_error(theta), psi_arcsec=420.0, omega_deg=75.0,
+                       polygon_dev_arcsec=dev, noise_arcsec=0.02, rng=rng)
+    rows = [[str(i + 1), repr(float(sim.encoder_deg[i])),
+             repr(float(dev[i])), repr(float(sim.ac_x_arcsec[i])),
+             repr(float(sim.ac_y_arcsec[i]))] for i in range(faces)]
+    rows.append(["1", repr(float(sim.encoder_deg[0])),
+                 repr(float(dev[0])), repr(float(sim.closure_ac_x_arcsec)),
+                 repr(float(sim.ac_y_arcsec[0]))])
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {"grade": 3})
+    tilt = result.sets[0].tilt
+    assert tilt.psi_arcsec == pytest.approx(420.0, abs=3 * tilt.u_psi_arcsec + 0.1)
+    assert tilt.omega_deg == pytest.approx(75.0, abs=3 * tilt.u_omega_deg + 0.05)
+    truth = true_error(theta) - true_error(theta)[0]
+    raw_dev = np.max(np.abs(result.sets[0].error_arcsec - truth))
+    corrected_dev = np.max(np.abs(result.mean_corrected_arcsec - truth))
+    assert raw_dev > 0.3  # the pyramidal error was there …
+    assert corrected_dev < 0.1  # … and is gone down to the noise
+    assert result.valid and result.sets[0].closure_arcsec == pytest.approx(0.0)
+    assert "exceeds the 250\" allowed for grade 3" in result.tilt_verdict
+
+
+def test_failed_closure_marks_run_invalid():
+    theta = np.arange(12) * 30.0
+    sim = simulate_set(12, true_error(theta), rng=np.random.default_rng(1), closure_drift_arcsec=0.9)
+    rows = [[str(i + 1), repr(float(sim.encoder_deg[i])), "0", repr(float(sim.ac_x_arcsec[i])), ""]
+            for i in range(12)] + [["1", repr(float(sim.encoder_deg[0])), "0",
+                                    repr(float(sim.closure_ac_x_arcsec)), ""]]
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {"grade": 3})
+    assert not result.valid
+    assert result.sets[0].closure_arcsec == pytest.approx(0.9)
+    assert any("invalid" in w for w in result.warnings)
+    assert POLYGON.to_json(result)["closure_ok"] is False
+
+
+def test_tilt_fit_uncertainty_matches_monte_carlo():
+    theta = np.arange(24) * 15.0
+    _, eps_y = pyramidal_readings_arcsec(theta, 300.0, 40.0)
+    rng = np.random.default_rng(9)
+    fits = [fit_tilt(theta, eps_y + 3 + rng.normal(0, 0.1, 24)) for _ in range(300)]
+    psi = np.array([f.psi_arcsec for f in fits])
+    assert np.std(psi, ddof=1) == pytest.approx(np.mean([f.u_psi_arcsec for f in fits]), rel=0.2)
+
+
+def test_positions_must_be_complete():
+    rows = [["1", "0", "0", "0"], ["2", "30", "0", "0"], ["2", "60", "0", "0"], ["4", "90", "0", "0"]]
+    with pytest.raises(ValueError, match="expected 1…4 once each"):
+        POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {})

@@ -1,0 +1,80 @@
+"""Polygon and fringe workbenches driven through the GUI, and the screenshot command."""
+
+import numpy as np
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QGuiApplication
+
+from app.main import main
+from widgets import workbench_presenter
+from widgets.fringe_workbench import FringePresenter
+from widgets.polygon_workbench import PolygonPresenter
+from widgets.readings_table_model import MUTED_BRUSH
+
+
+@pytest.fixture
+def polygon(qtbot):
+    presenter = PolygonPresenter()
+    qtbot.addWidget(presenter.view)
+    return presenter
+
+
+@pytest.fixture
+def fringe(qtbot):
+    presenter = FringePresenter()
+    qtbot.addWidget(presenter.view)
+    return presenter
+
+
+def test_polygon_sample_plots_and_closure_row(qtbot, polygon):
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    x, corrected = polygon.error_plot.corrected_curve.getData()
+    assert len(x) == 24
+    np.testing.assert_allclose(corrected, polygon.result.mean_corrected_arcsec)
+    assert polygon.table_model.highlight_rows == {24, 49}
+    assert polygon.table_model.data(polygon.table_model.index(24, 0),
+                                    Qt.ItemDataRole.BackgroundRole) == MUTED_BRUSH
+    _, heights = polygon.harmonics.bars.opts["x"], polygon.harmonics.bars.opts["height"]
+    assert heights[0] == pytest.approx(0.35, abs=0.05)  # eccentricity of the sample encoder
+
+
+def test_polygon_failed_closure_shows_invalid(qtbot, polygon):
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    polygon.table_model.set_cells([(24, 3, "25.0")])  # closure reading far off
+    qtbot.waitUntil(lambda: not polygon.result.valid)
+    assert "RUN INVALID" in polygon.view.readings_label.text()
+    assert "RUN INVALID" in polygon.view.summary.toPlainText()
+
+
+def test_fringe_paste_and_compensation(qtbot, fringe, samples_dir):
+    lines = (samples_dir / "fringe_sample.csv").read_text().splitlines()[1:129]
+    QGuiApplication.clipboard().setText("\n".join(line.replace(",", "\t") for line in lines))
+    fringe.view.table.setCurrentIndex(fringe.table_model.index(0, 0))
+    fringe.view.table.paste_action.trigger()
+    qtbot.waitUntil(lambda: fringe.result is not None)
+    _, raw = fringe.error_plot.raw_curve.getData()
+    _, comp = fringe.error_plot.corrected_curve.getData()
+    assert len(raw) == 128
+    assert np.ptp(raw) > 0.9 and np.ptp(comp) < 0.1
+    liss_x, _ = fringe.plots.liss_raw.getData()
+    assert len(liss_x) == 128
+
+
+def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypatch):
+    monkeypatch.setattr(workbench_presenter, "THREAD_THRESHOLD_ROWS", 1000)
+    theta = np.arange(64 * 40) * 2 * np.pi / 64
+    rows = [[f"{3.7 * np.sin(t):.5f}", f"{3.7 * np.cos(t):.5f}"] for t in theta]
+    fringe.table_model.replace_all(rows)
+    fringe.refresh()
+    assert fringe.result is None and "Analysing 2560 readings" in fringe.view.summary.toPlainText()
+    qtbot.waitUntil(lambda: fringe.result is not None, timeout=10000)
+    assert fringe.result.raw_error_arcsec.size == 2560
+
+
+def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
+    assert main(["--screenshot", str(tmp_path)]) == 0
+    names = sorted(p.name for p in tmp_path.glob("*.png"))
+    assert names == ["fringe.png", "polygon.png", "theodolite.png"]
+    assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))

@@ -1,0 +1,144 @@
+"""Fringe signal analysis workbench: signals and fits, Lissajous figure, spectrum,
+interpolation error before and after compensation, per-period drift."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
+
+from models.fringe import model_signal
+from models.fringe_analysis import FRINGE, FringeResult
+from widgets.error_plot import ErrorPlot
+from widgets.workbench_presenter import WorkbenchPresenter
+from widgets.workbench_view import WorkbenchView
+
+
+def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) -> pg.PlotWidget:
+    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous)."""
+    plot = pg.PlotWidget(background="w")
+    plot.setLabel("left", left)
+    plot.setLabel("bottom", bottom)
+    plot.showGrid(x=True, y=True, alpha=0.25)
+    for axis in ("left", "bottom"):
+        plot.getAxis(axis).enableAutoSIPrefix(False)
+    if downsample:
+        plot.setClipToView(True)
+        plot.setDownsampling(auto=True, mode="peak")
+    if legend:
+        plot.addLegend(offset=(-10, 10))
+    return plot
+
+
+class FringePlots(QWidget):
+    """The fringe-specific plots; every curve is created once."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.signals = _plot("signal (V)", "electrical phase θ (periods)")
+        self.sin_points = self.signals.plot(name="u sin", pen=None, symbol="o", symbolSize=3,
+                                            symbolBrush="#c0392b", symbolPen=None)
+        self.cos_points = self.signals.plot(name="u cos", pen=None, symbol="o", symbolSize=3,
+                                            symbolBrush="#1f5fbf", symbolPen=None)
+        self.sin_fit = self.signals.plot(name="fit", pen=pg.mkPen("#7b241c", width=1.5))
+        self.cos_fit = self.signals.plot(pen=pg.mkPen("#154360", width=1.5))
+        self.lissajous = _plot("u sin (V)", "u cos (V)", downsample=False)
+        self.lissajous.setAspectLocked(True)
+        self.liss_raw = self.lissajous.plot(name="measured", pen=pg.mkPen("#c0392b", width=1.5))
+        self.liss_ideal = self.lissajous.plot(name="compensated (unit circle × A1)",
+                                              pen=pg.mkPen("#1f5fbf", width=1.5))
+        self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False)
+        self.spectrum.setLogMode(y=True)
+        self.sin_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#c0392b", name="sin")
+        self.cos_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#1f5fbf", name="cos")
+        self.spectrum.addItem(self.sin_bars)
+        self.spectrum.addItem(self.cos_bars)
+        self.drift = _plot("amplitude (V)", "period")
+        self.drift_a1 = self.drift.plot(name="A1 (sin)", pen=pg.mkPen("#c0392b", width=1.5))
+        self.drift_b1 = self.drift.plot(name="B1 (cos)", pen=pg.mkPen("#1f5fbf", width=1.5))
+        self.drift_a3 = self.drift.plot(name="A3 × 10", pen=pg.mkPen("#e67e22", width=1.5))
+        self.drift_b3 = self.drift.plot(name="B3 × 10", pen=pg.mkPen("#16a085", width=1.5))
+
+
+class FringePresenter(WorkbenchPresenter):
+    """Fits both channels, builds the correction table and shows before/after errors."""
+
+    def __init__(self, parent=None) -> None:
+        view = WorkbenchView(FRINGE.title)
+        self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
+                                    residual_label="sin fit res. (mV)")
+        self.error_plot.set_curve_names("before compensation", "", "after compensation")
+        self.error_plot.main_plot.setLabel("left", "interp. error (\")")
+        self.error_plot.corrected_plot.setLabel("left", "compensated (\")")
+        for plot in (self.error_plot.main_plot, self.error_plot.corrected_plot,
+                     self.error_plot.residual_plot):
+            plot.setClipToView(True)
+            plot.setDownsampling(auto=True, mode="peak")
+        self.plots = FringePlots()
+        self.export_button = QPushButton("Export table (CSV / C header)…")
+        error_tab = QWidget()
+        layout = QVBoxLayout(error_tab)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.error_plot, 1)
+        layout.addWidget(self.export_button)
+        view.add_plot_tab(error_tab, "Interpolation error")
+        view.add_plot_tab(self.plots.signals, "Signals and fit")
+        view.add_plot_tab(self.plots.lissajous, "Lissajous")
+        view.add_plot_tab(self.plots.spectrum, "Spectrum")
+        view.add_plot_tab(self.plots.drift, "Drift per period")
+        super().__init__(FRINGE, view, parent)
+        self.export_button.clicked.connect(self.export_table_dialog)
+
+    def build_settings(self) -> None:
+        form = self.view.settings
+        form.add_int("lines_per_rev", "lines per revolution L", 1, 10_000_000)
+        form.add_int("samples_per_period", "samples per period N", 4, 100_000)
+        form.add_int("max_order", "highest harmonic", 1, 31)
+        form.add_choice("harmonics", "harmonics", [("odd", "odd (1, 3, 5 …)"), ("all", "all")])
+        form.add_choice("method", "identification",
+                        [("lsq", "least squares (exact)"), ("pso", "particle swarm (seed)")])
+        form.add_int("lut_size", "correction table size", 8, 65536)
+
+    def show_result(self, result: FringeResult) -> None:
+        periods = result.theta_rad / (2 * np.pi)
+        self.error_plot.set_curves(periods, result.raw_error_arcsec, None,
+                                   result.compensated_error_arcsec)
+        sin_model = model_signal(result.theta_rad, result.sin_fit)
+        self.error_plot.set_residuals(periods, (result.u_sin - sin_model) * 1000.0)
+        p = self.plots
+        p.sin_points.setData(periods, result.u_sin)
+        p.cos_points.setData(periods, result.u_cos)
+        p.sin_fit.setData(periods, sin_model)
+        p.cos_fit.setData(periods, model_signal(result.theta_rad, result.cos_fit))
+        p.liss_raw.setData(result.u_cos, result.u_sin)
+        phase = result.table.compensate(np.arctan2(result.u_sin, result.u_cos))
+        radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
+        p.liss_ideal.setData(radius * np.cos(phase), radius * np.sin(phase))
+        orders = np.array(result.sin_fit.orders, dtype=float)
+        p.sin_bars.setOpts(x=orders - 0.18, height=np.log10(
+            [max(result.sin_fit.amplitude[k], 1e-9) for k in result.sin_fit.orders]), width=0.35)
+        p.cos_bars.setOpts(x=orders + 0.18, height=np.log10(
+            [max(result.cos_fit.amplitude[k], 1e-9) for k in result.cos_fit.orders]), width=0.35)
+        index = np.arange(result.sin_periods.shape[0])
+        p.drift_a1.setData(index, result.sin_periods[:, 1])
+        p.drift_b1.setData(index, result.cos_periods[:, 1])
+        if result.sin_periods.shape[1] > 3:
+            p.drift_a3.setData(index, result.sin_periods[:, 3] * 10)
+            p.drift_b3.setData(index, result.cos_periods[:, 3] * 10)
+
+    def clear_result(self) -> None:
+        self.error_plot.clear()
+        p = self.plots
+        for curve in (p.sin_points, p.cos_points, p.sin_fit, p.cos_fit, p.liss_raw, p.liss_ideal,
+                      p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3):
+            curve.setData([], [])
+
+    def export_table_dialog(self) -> None:
+        if self.result is None:
+            return
+        path, _ = QFileDialog.getSaveFileName(self.view, "Export correction table", "",
+                                              "CSV (*.csv);;C header (*.h)")
+        if path:
+            from models.fringe_export import write_correction_table
+
+            write_correction_table(path, self.result)

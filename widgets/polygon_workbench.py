@@ -1,0 +1,117 @@
+"""Polygon encoder test workbench: set-up fields, error/tilt/harmonic plots, presenter."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QVBoxLayout, QWidget
+
+from models.polygon import GRADE_ACCURACY_ARCSEC, PolygonResult, allowed_tilt_arcsec
+from models.polygon import pyramidal_readings_arcsec as pyramidal_readings
+from models.polygon_analysis import POLYGON, split_sets
+from widgets.error_plot import ErrorPlot
+from widgets.polygon_simulation import PolygonSimulation
+from widgets.workbench_presenter import WorkbenchPresenter
+from widgets.workbench_view import WorkbenchView
+
+
+class TiltPlot(QWidget):
+    """Vertical autocollimator readings with the fitted tilt model."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(background="w")
+        self.plot.setLabel("left", "AC vertical − zero (\")")
+        self.plot.setLabel("bottom", "θ (deg)")
+        self.plot.showGrid(x=True, y=True, alpha=0.25)
+        self.plot.getAxis("left").enableAutoSIPrefix(False)
+        self.plot.addLegend(offset=(-10, 10))
+        self.readings = self.plot.plot(name="readings", pen=None, symbol="o", symbolSize=7,
+                                       symbolBrush="#c0392b")
+        self.model = self.plot.plot(name="tilt model ε_y", pen=pg.mkPen("#1f5fbf", width=2))
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.plot)
+
+
+class HarmonicBars(QWidget):
+    """Amplitude of each harmonic of the corrected error over the circle."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(background="w")
+        self.plot.setLabel("left", "amplitude (\")")
+        self.plot.setLabel("bottom", "harmonic order (1 = eccentricity, 2 = ellipticity)")
+        self.plot.showGrid(y=True, alpha=0.25)
+        self.plot.getAxis("left").enableAutoSIPrefix(False)
+        self.bars = pg.BarGraphItem(x=[], height=[], width=0.6, brush="#1f5fbf")
+        self.plot.addItem(self.bars)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.plot)
+
+    def set_spectrum(self, order, amplitude) -> None:
+        self.bars.setOpts(x=np.asarray(order[1:]), height=np.asarray(amplitude[1:]), width=0.6)
+
+
+class PolygonPresenter(WorkbenchPresenter):
+    """Error per face, closure check and pyramidal correction on every edit."""
+
+    def __init__(self, parent=None) -> None:
+        view = WorkbenchView(POLYGON.title)
+        self.error_plot = ErrorPlot(x_label="θ face angle (deg)", residual_label="tilt fit res. (\")")
+        self.error_plot.set_curve_names("raw error e", "−pyramidal ε_x", "corrected e + ε_x")
+        self.tilt_plot = TiltPlot()
+        self.harmonics = HarmonicBars()
+        self.simulation = PolygonSimulation()
+        view.add_plot_tab(self.error_plot, "Error over the circle")
+        view.add_plot_tab(self.tilt_plot, "Vertical readings / tilt")
+        view.add_plot_tab(self.harmonics, "Harmonics")
+        view.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
+        super().__init__(POLYGON, view, parent)
+
+    def build_settings(self) -> None:
+        form = self.view.settings
+        form.add_int("faces", "faces n", 0, 360, special="from the readings")
+        form.add_choice("grade", "encoder grade",
+                        [(g, f"grade {g}: ±{tol:g}\", tilt ≤ {allowed_tilt_arcsec(g):.0f}\"")
+                         for g, tol in GRADE_ACCURACY_ARCSEC.items()])
+        form.add_float("closure_limit_arcsec", "closure limit", 0.0, 100.0, 2, "\"", 0.05,
+                       tooltip="0 = half the grade's accuracy")
+        form.field("closure_limit_arcsec").setSpecialValueText("grade default")
+        form.add_float("autocollimator_accuracy_arcsec", "autocollimator accuracy", 0.0, 10.0, 2,
+                       "\"", 0.05)
+
+    def show_result(self, result: PolygonResult) -> None:
+        first = result.sets[0]
+        self.table_model.set_highlight_rows(self._closure_rows())
+        x = result.theta_deg
+        self.error_plot.set_curves(x, result.mean_error_arcsec,
+                                   -np.mean([r.pyramidal_error_arcsec for r in result.sets], axis=0),
+                                   result.mean_corrected_arcsec)
+        if first.tilt is not None:
+            self.error_plot.set_residuals(x, first.tilt.residuals_arcsec)
+            dense = np.linspace(0, 360, 361)
+            _, ey = pyramidal_readings(dense, first.tilt.psi_arcsec, first.tilt.omega_deg)
+            _, ey_faces = pyramidal_readings(x, first.tilt.psi_arcsec, first.tilt.omega_deg)
+            self.tilt_plot.readings.setData(x, ey_faces + first.tilt.residuals_arcsec)
+            self.tilt_plot.model.setData(dense, ey)
+        else:
+            self.error_plot.set_residuals(x, None)
+            self.tilt_plot.readings.setData([], [])
+            self.tilt_plot.model.setData([], [])
+        self.harmonics.set_spectrum(result.harmonics.order, result.harmonics.amplitude)
+        if not result.valid:
+            self.view.set_readings_caption(self.view.readings_label.text() +
+                                           " — RUN INVALID (closure failed)")
+
+    def _closure_rows(self) -> set[int]:
+        parsed = self.parsed
+        if parsed is None or parsed.n == 0:
+            return set()
+        return {int(parsed.row_index[c]) for _, _, c, _ in split_sets(parsed) if c is not None}
+
+    def clear_result(self) -> None:
+        self.table_model.set_highlight_rows(set())
+        self.error_plot.clear()
+        self.tilt_plot.readings.setData([], [])
+        self.tilt_plot.model.setData([], [])
+        self.harmonics.set_spectrum([0], [0])
