@@ -45,14 +45,26 @@ COLUMNS = (
 DEFAULT_SETTINGS: dict[str, Any] = {
     "faces": 0,  # 0: from the readings
     "grade": 3,
-    "closure_limit_arcsec": 0.0,  # 0: the grade's default (half its accuracy)
+    # closure limit (") for grades 1–7; default half the grade's accuracy (see README)
+    "closure_limits_arcsec": "0.125, 0.25, 0.5, 1, 2.5, 5, 15",
     "autocollimator_accuracy_arcsec": 0.1,
 }
 
 
-def closure_limit_arcsec(grade: int, override: float = 0.0) -> float:
-    """Closure limit: the setting if given, else half the grade's accuracy (our default)."""
-    return float(override) if override and override > 0 else GRADE_ACCURACY_ARCSEC[grade] / 2.0
+def closure_limit_arcsec(grade: int, table: str = "") -> float:
+    """Closure limit for a grade from the comma-separated table of grades 1–7; a missing
+    entry falls back to half the grade's accuracy (our default, see README)."""
+    parts = [p.strip() for p in str(table or "").replace(";", ",").split(",") if p.strip()]
+    if grade - 1 < len(parts):
+        try:
+            value = float(parts[grade - 1])
+        except ValueError:
+            raise SettingsError(f"closure limit table: '{parts[grade - 1]}' (grade {grade}) is "
+                                "not a number") from None
+        if value <= 0:
+            raise SettingsError(f"closure limit for grade {grade} must be positive")
+        return value
+    return GRADE_ACCURACY_ARCSEC[grade] / 2.0
 
 
 def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None, int]]:
@@ -79,7 +91,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         raise SettingsError(f"grade must be 1 to 7, not {grade}")
     if parsed.n < 3:
         raise ValueError(f"{parsed.n} usable readings; a polygon test needs at least 3 positions")
-    limit = closure_limit_arcsec(grade, float(s["closure_limit_arcsec"]))
+    limit = closure_limit_arcsec(grade, str(s["closure_limits_arcsec"]))
     sets = split_sets(parsed)
     faces = int(s["faces"]) or int(sets[0][1].size)
     results: list[PolygonSetResult] = []

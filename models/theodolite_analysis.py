@@ -88,7 +88,18 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
         "warnings": result.warnings,
     }
     if result.iso230 is not None:
-        out["iso230_arcsec"] = result.iso230.figures
+        iso = result.iso230
+        out["iso230_arcsec"] = iso.figures
+        per_point: dict[str, Any] = {"theta_deg": iso.positions.tolist()}
+        for name, stats in (("forward", iso.forward), ("backward", iso.backward)):
+            if stats is not None:
+                per_point[f"{name}_mean"] = stats.mean.tolist()
+                per_point[f"{name}_std"] = stats.std.tolist()
+        if iso.reversal is not None:
+            per_point["reversal"] = iso.reversal.tolist()
+        if iso.bidirectional_repeatability is not None:
+            per_point["bidirectional_repeatability"] = iso.bidirectional_repeatability.tolist()
+        out["iso230_per_point_arcsec"] = per_point
     return out
 
 

@@ -125,3 +125,28 @@ def test_positions_must_be_complete():
     rows = [["1", "0", "0", "0"], ["2", "30", "0", "0"], ["2", "60", "0", "0"], ["4", "90", "0", "0"]]
     with pytest.raises(ValueError, match="expected 1…4 once each"):
         POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {})
+
+
+def test_closure_limit_table():
+    from models.analysis_kind import SettingsError
+    from models.polygon_analysis import closure_limit_arcsec
+
+    assert closure_limit_arcsec(3, "0.125, 0.25, 0.5, 1") == 0.5
+    assert closure_limit_arcsec(7, "0.125, 0.25") == 15.0  # missing entry: half of ±30"
+    with pytest.raises(SettingsError, match="'x' \\(grade 2\\) is not a number"):
+        closure_limit_arcsec(2, "1, x")
+
+
+def test_certificate_reader(tmp_path):
+    from models.polygon_certificate import read_polygon_certificate
+    from models.tabular_import import TableImportError
+
+    path = tmp_path / "c.csv"
+    path.write_text("position;deviation_arcsec\n1;0,12\n2;-0,30\n")
+    assert read_polygon_certificate(path) == {1: 0.12, 2: -0.30}
+    path.write_text("1,0.1\n1,0.2\n")
+    with pytest.raises(TableImportError, match="row 2: position 1 appears twice"):
+        read_polygon_certificate(path)
+    path.write_text("1,0.1\n2,abc\n")
+    with pytest.raises(TableImportError, match="row 2, column 'deviation_arcsec'"):
+        read_polygon_certificate(path)

@@ -78,3 +78,33 @@ def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     names = sorted(p.name for p in tmp_path.glob("*.png"))
     assert names == ["fringe.png", "polygon.png", "theodolite.png"]
     assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))
+
+
+def test_polygon_certificate_fills_deviations_undoably(qtbot, polygon, tmp_path):
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    cert = tmp_path / "cert.csv"
+    cert.write_text("position,deviation_arcsec\n" + "".join(f"{i},{0.01 * i:.2f}\n"
+                                                              for i in range(1, 25)))
+    before = polygon.sheet.copy_rows()
+    assert polygon.load_certificate(str(cert)) == 50
+    assert polygon.sheet.text(4, 2) == "0.05" and polygon.sheet.text(24, 2) == "0.01"
+    polygon.undo_stack.undo()
+    assert polygon.sheet.copy_rows() == before
+
+
+def test_polygon_certificate_missing_position(qtbot, polygon, tmp_path):
+    from models.tabular_import import TableImportError
+
+    polygon.load_sample()
+    cert = tmp_path / "short.csv"
+    cert.write_text("1,0.1\n2,0.2\n")
+    with pytest.raises(TableImportError, match="no deviation for position 3"):
+        polygon.load_certificate(str(cert))
+
+
+def test_closure_limit_table_setting(qtbot, polygon):
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None and polygon.result.valid)
+    polygon.set_settings({"closure_limits_arcsec": "0.1, 0.1, 0.1, 1, 2, 5, 15"})
+    qtbot.waitUntil(lambda: not polygon.result.valid)  # sample closure 0.12" > 0.1"

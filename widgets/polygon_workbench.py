@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QVBoxLayout, QWidget
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from models.polygon import GRADE_ACCURACY_ARCSEC, PolygonResult, allowed_tilt_arcsec
 from models.polygon import pyramidal_readings_arcsec as pyramidal_readings
 from models.polygon_analysis import POLYGON, split_sets
+from models.polygon_certificate import read_polygon_certificate
+from models.tabular_import import TableImportError
 from widgets.error_plot import ErrorPlot
 from widgets.polygon_simulation import PolygonSimulation
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -62,11 +64,16 @@ class PolygonPresenter(WorkbenchPresenter):
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
         self.simulation = PolygonSimulation()
+        self.certificate_button = QPushButton("Load polygon certificate…")
+        self.certificate_button.setToolTip("Fill the deviation column from a CSV/XLSX with "
+                                           "position,deviation_arcsec")
         view.add_plot_tab(self.error_plot, "Error over the circle")
         view.add_plot_tab(self.tilt_plot, "Vertical readings / tilt")
         view.add_plot_tab(self.harmonics, "Harmonics")
         view.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
         super().__init__(POLYGON, view, parent)
+        view.settings.layout().addRow(self.certificate_button)
+        self.certificate_button.clicked.connect(self.load_certificate_dialog)
 
     def build_settings(self) -> None:
         form = self.view.settings
@@ -74,9 +81,9 @@ class PolygonPresenter(WorkbenchPresenter):
         form.add_choice("grade", "encoder grade",
                         [(g, f"grade {g}: ±{tol:g}\", tilt ≤ {allowed_tilt_arcsec(g):.0f}\"")
                          for g, tol in GRADE_ACCURACY_ARCSEC.items()])
-        form.add_float("closure_limit_arcsec", "closure limit", 0.0, 100.0, 2, "\"", 0.05,
-                       tooltip="0 = half the grade's accuracy")
-        form.field("closure_limit_arcsec").setSpecialValueText("grade default")
+        form.add_text("closure_limits_arcsec", "closure limits grades 1–7 (\")",
+                      tooltip="Closure limit per grade, comma-separated; default half the "
+                              "grade's accuracy")
         form.add_float("autocollimator_accuracy_arcsec", "autocollimator accuracy", 0.0, 10.0, 2,
                        "\"", 0.05)
 
@@ -102,6 +109,38 @@ class PolygonPresenter(WorkbenchPresenter):
         if not result.valid:
             self.view.set_readings_caption(self.view.readings_label.text() +
                                            " — RUN INVALID (closure failed)")
+
+    def load_certificate_dialog(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self.view, "Polygon calibration certificate", "",
+                                              "Deviations (*.csv *.txt *.xlsx);;All files (*)")
+        if path:
+            try:
+                self.load_certificate(path)
+            except TableImportError as exc:
+                QMessageBox.warning(self.view, "Cannot read certificate", str(exc))
+
+    def load_certificate(self, path: str) -> int:
+        """Fill the deviation column by position (one undo step); returns the cells changed.
+
+        Raises TableImportError for a bad file and when a position has no deviation.
+        """
+        deviations = read_polygon_certificate(path)
+        column = self.sheet.column_index("polygon_dev_arcsec")
+        changes = []
+        for row in range(self.sheet.row_count):
+            text = self.sheet.text(row, 0).strip()
+            if not text:
+                continue
+            try:
+                position = int(float(text))
+            except ValueError:
+                continue
+            if position not in deviations:
+                raise TableImportError(f"{path}: no deviation for position {position} "
+                                       f"(row {row + 1} of the readings)")
+            changes.append((row, column, f"{deviations[position]:g}"))
+        self.table_model.set_cells(changes, "Load polygon certificate")
+        return len(changes)
 
     def _closure_rows(self) -> set[int]:
         parsed = self.parsed

@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from PySide6.QtCore import Signal
-from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QFormLayout, QSpinBox, QWidget
+from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QFormLayout, QLineEdit, QSpinBox, QWidget
 
 
 class SettingsForm(QWidget):
@@ -49,6 +49,11 @@ class SettingsForm(QWidget):
         box.currentIndexChanged.connect(self.changed)
         return self._add(key, label, box, tooltip)
 
+    def add_text(self, key: str, label: str, tooltip: str = "") -> QLineEdit:
+        edit = QLineEdit()
+        edit.editingFinished.connect(self.changed)
+        return self._add(key, label, edit, tooltip)
+
     def _add(self, key: str, label: str, widget, tooltip: str):
         widget.setObjectName(key)
         if tooltip:
@@ -67,6 +72,8 @@ class SettingsForm(QWidget):
                 out[key] = widget.currentData()
             elif isinstance(widget, (QSpinBox, QDoubleSpinBox)):
                 out[key] = widget.value()
+            elif isinstance(widget, QLineEdit):
+                out[key] = widget.text()
         return out
 
     def set_values(self, values: dict[str, Any]) -> None:
@@ -83,5 +90,7 @@ class SettingsForm(QWidget):
                     widget.setValue(int(value))
                 elif isinstance(widget, QDoubleSpinBox):
                     widget.setValue(float(value))
+                elif isinstance(widget, QLineEdit):
+                    widget.setText(str(value))
         finally:
             self.blockSignals(False)
