@@ -135,7 +135,7 @@ def test_simulation_panel_reproduces_fig3_family(qtbot, bench):
     sim = bench.simulation
     sim.sweep_values.setText("-2, 0, 2")
     sim.update_curves()
-    spans = [np.ptp(c.getData()[1]) for c in sim.zeta_curves[:3]]
+    spans = [np.ptp(c.getData()[1]) for c in sim.top_curves[:3]]
     assert spans[0] < spans[1] < spans[2]  # Fig 3: the span grows with β at α = 45°
-    x, y = sim.zeta_curves[2].getData()  # β = 2°
+    x, y = sim.top_curves[2].getData()  # β = 2°
     assert y.max() == pytest.approx(187.9, abs=0.1)

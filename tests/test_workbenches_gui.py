@@ -108,3 +108,14 @@ def test_closure_limit_table_setting(qtbot, polygon):
     qtbot.waitUntil(lambda: polygon.result is not None and polygon.result.valid)
     polygon.set_settings({"closure_limits_arcsec": "0.1, 0.1, 0.1, 1, 2, 5, 15"})
     qtbot.waitUntil(lambda: not polygon.result.valid)  # sample closure 0.12" > 0.1"
+
+
+def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
+    sim = polygon.simulation
+    sim.form.set_values({"psi_arcsec": 600.0, "sweep": "omega_deg"})
+    sim.sweep_values.setText("0, 90")
+    sim.update_curves()
+    x, at_0 = sim.top_curves[0].getData()
+    _, at_90 = sim.top_curves[1].getData()
+    assert np.max(np.abs(at_90)) == pytest.approx(1.921, abs=0.001)  # ψ = 10', ω = 90°
+    assert np.max(np.abs(at_0)) < np.max(np.abs(at_90))  # ω = 0° is the smallest (seed §3.3)

@@ -1,0 +1,91 @@
+"""A simulation panel: parameters in a form, one of them swept over a list of values,
+a family of curves in two stacked plots (the seeds' Figs 3–6)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QHBoxLayout, QLineEdit, QVBoxLayout, QWidget
+
+from widgets.settings_form import SettingsForm
+
+# (parameters) -> (x, top curve, bottom curve)
+FamilyModel = Callable[[dict], tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+
+class FamilySimulation(QWidget):
+    """``top_curves`` / ``bottom_curves`` hold one PlotDataItem per swept value (created once).
+
+    ``sweeps`` maps a parameter key to its (symbol, unit) for the legend.
+    """
+
+    def __init__(self, form: SettingsForm, sweeps: dict[str, tuple[str, str]],
+                 default_values: str, model: FamilyModel, labels: tuple[str, str, str],
+                 parent=None) -> None:
+        super().__init__(parent)
+        self.form = form
+        self.sweeps = sweeps
+        self.model = model
+        self._setup_ui(default_values, labels)
+        self._layout()
+        self.update_curves()
+
+    def _setup_ui(self, default_values: str, labels: tuple[str, str, str]) -> None:
+        self.sweep_values = QLineEdit(default_values)
+        self.sweep_values.setToolTip("Values of the swept parameter, separated by commas")
+        self.form.layout().addRow("sweep values", self.sweep_values)
+        self.form.changed.connect(self.update_curves)
+        self.sweep_values.editingFinished.connect(self.update_curves)
+        x_label, top_label, bottom_label = labels
+        self.top_plot = pg.PlotWidget(background="w")
+        self.top_plot.setLabel("left", top_label)
+        self.bottom_plot = pg.PlotWidget(background="w")
+        self.bottom_plot.setLabel("left", bottom_label)
+        for plot in (self.top_plot, self.bottom_plot):
+            plot.setLabel("bottom", x_label)
+            plot.showGrid(x=True, y=True, alpha=0.25)
+            plot.getAxis("left").enableAutoSIPrefix(False)
+            plot.addLegend(offset=(-10, 10))
+        self.top_curves: list[pg.PlotDataItem] = []
+        self.bottom_curves: list[pg.PlotDataItem] = []
+
+    def _layout(self) -> None:
+        plots = QVBoxLayout()
+        plots.addWidget(self.top_plot)
+        plots.addWidget(self.bottom_plot)
+        layout = QHBoxLayout(self)
+        layout.addWidget(self.form)
+        layout.addLayout(plots, 1)
+
+    def swept_values(self) -> list[float]:
+        out = []
+        for part in self.sweep_values.text().replace(";", ",").split(","):
+            try:
+                out.append(float(part))
+            except ValueError:
+                continue
+        return out[:12]
+
+    def update_curves(self) -> None:
+        params = self.form.values()
+        sweep = params["sweep"]
+        values = self.swept_values() or [params[sweep]]
+        while len(self.top_curves) < len(values):
+            pen = pg.mkPen(pg.intColor(len(self.top_curves), hues=9), width=2)
+            self.top_curves.append(self.top_plot.plot(pen=pen, name=" "))
+            self.bottom_curves.append(self.bottom_plot.plot(pen=pen, name=" "))
+        symbol, unit = self.sweeps[sweep]
+        for i, (top, bottom) in enumerate(zip(self.top_curves, self.bottom_curves, strict=True)):
+            if i >= len(values):
+                top.setData([], [])
+                bottom.setData([], [])
+                continue
+            x, y_top, y_bottom = self.model({**params, sweep: values[i]})
+            top.setData(x, y_top)
+            bottom.setData(x, y_bottom)
+            for plot, curve in ((self.top_plot, top), (self.bottom_plot, bottom)):
+                label = plot.getPlotItem().legend.getLabel(curve)
+                if label is not None:
+                    label.setText(f"{symbol} = {values[i]:g}{unit}")
