@@ -79,6 +79,7 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:
             self.tabs.addTab(presenter.view, presenter.kind.title)
             self.undo_group.addStack(presenter.undo_stack)
+            presenter.import_failed.connect(self._on_import_failed)
             presenter.modified_changed.connect(self._on_modified_changed)
         self.tabs.currentChanged.connect(self._on_tab_changed)
         self._on_tab_changed(0)
@@ -245,7 +246,7 @@ class MainWindow(QMainWindow):
         path, _ = QFileDialog.getOpenFileName(self, f"Import readings into {self.current.kind.title}",
                                               self._last_dir(), IMPORT_FILTER)
         if path:
-            self.import_file(path)
+            self.current.start_import(path)  # large files are read off the GUI thread
 
     def import_file(self, path: str | Path, key: str | None = None) -> bool:
         presenter = self.presenter(key) if key else self.current
@@ -257,6 +258,9 @@ class MainWindow(QMainWindow):
         self.statusBar().showMessage(f"Imported {path} (Edit > Undo restores the old readings)",
                                      8000)
         return True
+
+    def _on_import_failed(self, message: str) -> None:
+        self.tell("Cannot import", message)
 
     def load_sample(self) -> None:
         self.current.table_model.replace_all([], "Clear")  # keeps the old readings undoable

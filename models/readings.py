@@ -187,6 +187,14 @@ class ReadingsSheet:
     def replace_all(self, rows: Iterable[Sequence[str]]) -> None:
         self.rows = [self._fit_row(r) for r in rows]
 
+    def adopt_rows(self, rows: list[list[str]], checked: bool = False) -> None:
+        """Take ``rows`` as they are (no copy): each must already hold one string per column.
+        ``checked``: the caller guarantees it (rows from :func:`map_columns`), skip the scan."""
+        width = len(self.columns)
+        if not checked and rows and not all(type(r) is list and len(r) == width for r in rows):
+            raise ValueError("rows do not match the columns")
+        self.rows = rows
+
     def copy_rows(self) -> list[list[str]]:
         return [list(r) for r in self.rows]
 

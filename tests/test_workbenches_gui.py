@@ -119,3 +119,30 @@ def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     _, at_90 = sim.top_curves[1].getData()
     assert np.max(np.abs(at_90)) == pytest.approx(1.921, abs=0.001)  # ψ = 10', ω = 90°
     assert np.max(np.abs(at_0)) < np.max(np.abs(at_90))  # ω = 0° is the smallest (seed §3.3)
+
+
+def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):
+    theta = np.arange(64 * 1200) * 2 * np.pi / 64  # 76800 samples, about 1.4 MB
+    path = tmp_path / "revolution.csv"
+    np.savetxt(path, np.column_stack([3.77 * np.sin(theta + 0.03) + 0.08 * np.sin(3 * theta),
+                                      3.73 * np.cos(theta)]),
+               fmt="%.5f", delimiter=",", header="u_sin,u_cos", comments="")
+    assert path.stat().st_size > workbench_presenter.THREAD_THRESHOLD_BYTES
+    fringe.start_import(path)
+    assert fringe.busy and fringe.view.busy.isVisibleTo(fringe.view)
+    assert fringe.sheet.row_count == 0  # nothing replaced until the worker is done
+    qtbot.waitUntil(lambda: fringe.result is not None and not fringe.busy, timeout=30000)
+    assert fringe.sheet.row_count == 76800
+    assert fringe.result.sin_fit.amplitude[3] == pytest.approx(0.08, abs=1e-4)
+    assert fringe.result.sin_periods.shape == (1200, 7)
+    fringe.undo_stack.undo()  # the import is one undo step
+    qtbot.waitUntil(lambda: fringe.sheet.row_count == 0)
+
+
+def test_large_import_error_is_reported(qtbot, fringe, tmp_path):
+    path = tmp_path / "bad.csv"
+    path.write_text("foo,bar\n" + "1,2\n" * 300_000)
+    with qtbot.waitSignal(fringe.import_failed, timeout=30000) as blocker:
+        fringe.start_import(path)
+    assert "no column 'u_sin'" in blocker.args[0]
+    assert not fringe.busy

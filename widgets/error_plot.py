@@ -13,6 +13,7 @@ RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
 CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
 RESIDUAL_PEN = pg.mkPen("#2e8b57", width=1.5)
+MAX_SYMBOL_POINTS = 3000  # beyond this, points are drawn as lines only
 
 
 class ErrorPlot(QWidget):
@@ -85,12 +86,20 @@ class ErrorPlot(QWidget):
     def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
         """Update the curves (arcsec over x); ``None`` hides a curve."""
         x = np.asarray(x, dtype=float)
+        self._show_symbols(x.size <= MAX_SYMBOL_POINTS)
         for curve, y in ((self.raw_curve, raw), (self.model_curve, model),
                          (self.corrected_curve, corrected)):
             if y is None:
                 curve.setData([], [])
             else:
                 curve.setData(x, np.asarray(y, dtype=float))
+
+    def _show_symbols(self, show: bool) -> None:
+        for curve, symbol in ((self.raw_curve, "o"), (self.corrected_curve, "s"),
+                              (self.residual_curve, "o")):
+            wanted = symbol if show else None
+            if curve.opts["symbol"] != wanted:
+                curve.setSymbol(wanted)
 
     def set_residuals(self, x, residuals) -> None:
         if residuals is None:

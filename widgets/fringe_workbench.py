@@ -13,6 +13,8 @@ from widgets.error_plot import ErrorPlot
 from widgets.workbench_presenter import WorkbenchPresenter
 from widgets.workbench_view import WorkbenchView
 
+MAX_LISSAJOUS_POINTS = 20_000
+
 
 def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) -> pg.PlotWidget:
     """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous)."""
@@ -36,10 +38,8 @@ class FringePlots(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.signals = _plot("signal (V)", "electrical phase θ (periods)")
-        self.sin_points = self.signals.plot(name="u sin", pen=None, symbol="o", symbolSize=3,
-                                            symbolBrush="#c0392b", symbolPen=None)
-        self.cos_points = self.signals.plot(name="u cos", pen=None, symbol="o", symbolSize=3,
-                                            symbolBrush="#1f5fbf", symbolPen=None)
+        self.sin_points = self.signals.plot(name="u sin", pen=pg.mkPen("#e6b0aa", width=3))
+        self.cos_points = self.signals.plot(name="u cos", pen=pg.mkPen("#a9cce3", width=3))
         self.sin_fit = self.signals.plot(name="fit", pen=pg.mkPen("#7b241c", width=1.5))
         self.cos_fit = self.signals.plot(pen=pg.mkPen("#154360", width=1.5))
         self.lissajous = _plot("u sin (V)", "u cos (V)", downsample=False)
@@ -110,8 +110,11 @@ class FringePresenter(WorkbenchPresenter):
         p.cos_points.setData(periods, result.u_cos)
         p.sin_fit.setData(periods, sin_model)
         p.cos_fit.setData(periods, model_signal(result.theta_rad, result.cos_fit))
-        p.liss_raw.setData(result.u_cos, result.u_sin)
-        phase = result.table.compensate(np.arctan2(result.u_sin, result.u_cos))
+        # a parametric curve cannot be peak-downsampled; a stride keeps its shape
+        step = max(1, result.u_sin.size // MAX_LISSAJOUS_POINTS)
+        u_sin, u_cos = result.u_sin[::step], result.u_cos[::step]
+        p.liss_raw.setData(u_cos, u_sin)
+        phase = result.table.compensate(np.arctan2(u_sin, u_cos))
         radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
         p.liss_ideal.setData(radius * np.cos(phase), radius * np.sin(phase))
         orders = np.array(result.sin_fit.orders, dtype=float)

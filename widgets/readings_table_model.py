@@ -132,8 +132,10 @@ class ReadingsTableModel(QAbstractTableModel):
                 blocks.append((r, 1))
         self.undo_stack.push(RemoveRowsCommand(self, blocks, f"Delete {len(rows)} row(s)"))
 
-    def replace_all(self, rows: list[list[str]], label: str = "Replace readings") -> None:
-        self.undo_stack.push(ReplaceAllCommand(self, rows, label))
+    def replace_all(self, rows: list[list[str]], label: str = "Replace readings",
+                    checked: bool = False) -> None:
+        """Replace every row (one undo step); ``checked``: rows already fit the columns."""
+        self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked))
 
     # -- raw operations used by the commands ------------------------------
     def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:
@@ -174,8 +176,11 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet_changed.emit()
         return removed
 
-    def apply_replace(self, rows: list[list[str]]) -> None:
+    def apply_replace(self, rows: list[list[str]], checked: bool = False) -> None:
         self.beginResetModel()
-        self.sheet.replace_all(rows)
+        try:
+            self.sheet.adopt_rows(rows, checked)
+        except ValueError:
+            self.sheet.replace_all(rows)
         self.endResetModel()
         self.sheet_changed.emit()

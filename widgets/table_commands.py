@@ -58,14 +58,18 @@ class RemoveRowsCommand(QUndoCommand):
 class ReplaceAllCommand(QUndoCommand):
     """Replace every row (import of a file, loading a sample)."""
 
-    def __init__(self, model, rows: list[list[str]], label: str) -> None:
+    def __init__(self, model, rows: list[list[str]], label: str, checked: bool = False) -> None:
         super().__init__(label)
-        self._model, self._new = model, rows
+        self._model, self._new, self._checked = model, rows, checked
         self._old: list[list[str]] = []
 
     def redo(self) -> None:
-        self._old = self._model.sheet.copy_rows()
-        self._model.apply_replace(self._new)
+        # the row lists themselves change hands: edits after the import mutate them, and
+        # their own commands undo those edits first
+        self._old = self._model.sheet.rows
+        self._model.apply_replace(self._new, self._checked)
+        self._checked = True  # from now on the rows are the sheet's own
 
     def undo(self) -> None:
-        self._model.apply_replace(self._old)
+        self._new = self._model.sheet.rows
+        self._model.apply_replace(self._old, checked=True)

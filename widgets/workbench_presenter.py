@@ -3,6 +3,8 @@ every edit and pushes the result to its passive view."""
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import logging
 from pathlib import Path
 from typing import Any
@@ -14,7 +16,7 @@ from PySide6.QtWidgets import QHeaderView
 from models.analysis_kind import AnalysisKind
 from models.project import WorkbenchState
 from models.readings import ParsedReadings, ReadingsSheet
-from models.tabular_import import map_columns, read_table
+from models.tabular_import import TableImportError, map_columns, read_table
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 
@@ -22,24 +24,71 @@ log = logging.getLogger(__name__)
 
 SAMPLES_DIR = Path(__file__).resolve().parent.parent / "resources" / "samples"
 
-# Analyses of more used rows than this run on a worker thread.
+# Sheets of more rows than this are parsed and analysed on a worker thread.
 THREAD_THRESHOLD_ROWS = 20_000
+# Files larger than this are read on a worker thread.
+THREAD_THRESHOLD_BYTES = 1_000_000
 
 
 class _TaskSignals(QObject):
+    """Owned by the presenter; workers emit through it back to the GUI thread."""
+
     finished = Signal(int, object, str)
+    imported = Signal(object, str, str)
 
 
 class _AnalysisTask(QRunnable):
-    def __init__(self, kind: AnalysisKind, parsed: ParsedReadings, settings: dict[str, Any],
+    """Parse and analyse a large sheet on a worker thread."""
+
+    def __init__(self, kind: AnalysisKind, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals) -> None:
         super().__init__()
-        self._args = (kind, parsed, settings, generation, signals)
+        self._args = (kind, sheet, settings, generation, signals)
 
     def run(self) -> None:
-        kind, parsed, settings, generation, signals = self._args
+        kind, sheet, settings, generation, signals = self._args
+        parsed = sheet.parse()
         result, error = _run_analysis(kind, parsed, settings)
-        signals.finished.emit(generation, result, error)
+        _emit_if_alive(signals.finished, generation, (parsed, result), error)
+
+
+class _ImportTask(QRunnable):
+    """Read and map a large file on a worker thread."""
+
+    def __init__(self, kind: AnalysisKind, path: str, signals: _TaskSignals) -> None:
+        super().__init__()
+        self._args = (kind, path, signals)
+
+    def run(self) -> None:
+        kind, path, signals = self._args
+        # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
+        # for up to half a second each and stall the window; rows of strings hold no
+        # cycles, so the collector rests while they are built.
+        with _cyclic_gc_paused():
+            try:
+                rows = map_columns(read_table(path), kind.columns)
+            except TableImportError as exc:
+                _emit_if_alive(signals.imported, None, path, str(exc))
+                return
+            gc.freeze()  # keep the new rows out of later full passes too
+        _emit_if_alive(signals.imported, rows, path, "")
+
+
+def _emit_if_alive(signal, *args) -> None:
+    """Deliver a worker's result; if its workbench was closed meanwhile, drop it."""
+    with contextlib.suppress(RuntimeError):
+        signal.emit(*args)
+
+
+@contextlib.contextmanager
+def _cyclic_gc_paused():
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
 
 
 def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
@@ -62,6 +111,7 @@ class WorkbenchPresenter(QObject):
 
     modified_changed = Signal(bool)
     analysed = Signal()
+    import_failed = Signal(str)
 
     def __init__(self, kind: AnalysisKind, view: WorkbenchView, parent=None) -> None:
         super().__init__(parent if parent is not None else view)  # lives as long as its view
@@ -80,8 +130,10 @@ class WorkbenchPresenter(QObject):
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self._generation = 0
-        self._signals = _TaskSignals()
+        self._signals = _TaskSignals(self)
         self._signals.finished.connect(self._on_task_finished)
+        self._signals.imported.connect(self._on_import_finished)
+        self.busy = False
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -153,8 +205,48 @@ class WorkbenchPresenter(QObject):
     def import_file(self, path: str | Path) -> None:
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError."""
         rows = map_columns(read_table(path), self.kind.columns)
-        self.table_model.replace_all(rows, f"Import {Path(path).name}")
+        self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self._fit_columns()
         self.refresh()
+
+    def start_import(self, path: str | Path) -> None:
+        """Import a file, on a worker thread when it is large; errors go to ``import_failed``."""
+        path = str(path)
+        try:
+            large = Path(path).stat().st_size > THREAD_THRESHOLD_BYTES
+        except OSError:
+            large = False
+        if not large:
+            try:
+                self.import_file(path)
+            except TableImportError as exc:
+                self.import_failed.emit(str(exc))
+            return
+        self._set_busy(True, f"Reading {Path(path).name} …")
+        QThreadPool.globalInstance().start(_ImportTask(self.kind, path, self._signals))
+
+    def _on_import_finished(self, rows, path: str, error: str) -> None:
+        self._set_busy(False)
+        if rows is None:
+            self.import_failed.emit(error)
+            return
+        self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self._fit_columns()
+        self.refresh()
+
+    def _fit_columns(self) -> None:
+        """Size columns to their contents, except for huge sheets where that scan stalls."""
+        header = self.view.table.horizontalHeader()
+        mode = (QHeaderView.ResizeMode.Interactive if self.sheet.row_count > THREAD_THRESHOLD_ROWS
+                else QHeaderView.ResizeMode.ResizeToContents)
+        if header.sectionResizeMode(0) != mode:
+            header.setSectionResizeMode(mode)
+
+    def _set_busy(self, busy: bool, text: str = "") -> None:
+        self.busy = busy
+        self.view.set_busy(busy)
+        if busy and text:
+            self.view.set_summary(text)
 
     def load_sample(self) -> None:
         self.import_file(SAMPLES_DIR / self.kind.sample_file)
@@ -166,27 +258,27 @@ class WorkbenchPresenter(QObject):
         self._timer.start()
 
     def refresh(self) -> None:
-        """Parse the readings and analyse them now (or on a worker for large runs)."""
+        """Parse the readings and analyse them now (on a worker for large sheets)."""
         self._timer.stop()
         self._generation += 1
-        parsed = self.sheet.parse()
-        self.parsed = parsed
-        if parsed.n > THREAD_THRESHOLD_ROWS:
-            self.view.set_summary(f"Analysing {parsed.n} readings …")
+        if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
+            self._set_busy(True, f"Analysing {self.sheet.row_count} readings …")
             QThreadPool.globalInstance().start(
-                _AnalysisTask(self.kind, parsed, dict(self._settings), self._generation,
+                _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
                               self._signals))
             return
+        parsed = self.sheet.parse()
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))
-        self._finish(result, error)
+        self._finish(parsed, result, error)
 
-    def _on_task_finished(self, generation: int, result: Any, error: str) -> None:
+    def _on_task_finished(self, generation: int, payload: Any, error: str) -> None:
         if generation == self._generation:  # a newer edit supersedes this result
-            self._finish(result, error)
+            self._set_busy(False)
+            parsed, result = payload
+            self._finish(parsed, result, error)
 
-    def _finish(self, result: Any, error: str) -> None:
-        parsed = self.parsed
-        assert parsed is not None
+    def _finish(self, parsed: ParsedReadings, result: Any, error: str) -> None:
+        self.parsed = parsed
         self.result = result
         self.problem = error
         input_warnings = []

@@ -9,6 +9,7 @@ from PySide6.QtWidgets import (
     QGroupBox,
     QLabel,
     QPlainTextEdit,
+    QProgressBar,
     QSplitter,
     QTabWidget,
     QVBoxLayout,
@@ -45,6 +46,11 @@ class WorkbenchView(QWidget):
         self.warnings.setStyleSheet("QLabel { color: #8a4b00; background: #fff4dc; padding: 4px; }")
         self.warnings.hide()
         self.plot_tabs = QTabWidget()
+        self.busy = QProgressBar()
+        self.busy.setRange(0, 0)  # busy indicator: reading or analysing off the GUI thread
+        self.busy.setMaximumHeight(10)
+        self.busy.setTextVisible(False)
+        self.busy.hide()
 
     def _layout(self) -> None:
         left = QWidget()
@@ -64,6 +70,7 @@ class WorkbenchView(QWidget):
         fit_box = QGroupBox("Result")
         fit_layout = QVBoxLayout(fit_box)
         fit_layout.setContentsMargins(2, 2, 2, 2)
+        fit_layout.addWidget(self.busy)
         fit_layout.addWidget(self.summary)
         fit_layout.addWidget(self.warnings)
         right_layout.addWidget(fit_box)
@@ -89,6 +96,9 @@ class WorkbenchView(QWidget):
     def set_warnings(self, warnings: list[str]) -> None:
         self.warnings.setText("\n".join(f"⚠ {w}" for w in warnings))
         self.warnings.setVisible(bool(warnings))
+
+    def set_busy(self, busy: bool) -> None:
+        self.busy.setVisible(busy)
 
     def set_readings_caption(self, text: str) -> None:
         self.readings_label.setText(text)
