@@ -25,7 +25,7 @@ from models.project import (
 )
 from models.recovery import RecoveryStore
 from models.tabular_import import TableImportError
-from widgets.workbench_presenter import WorkbenchPresenter
+from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
 IMPORT_FILTER = "Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"
@@ -263,10 +263,8 @@ class MainWindow(QMainWindow):
         self.tell("Cannot import", message)
 
     def load_sample(self) -> None:
-        self.current.table_model.replace_all([], "Clear")  # keeps the old readings undoable
-        self.current.import_file(
-            Path(__file__).resolve().parent.parent / "resources" / "samples"
-            / self.current.kind.sample_file)
+        """Replace the current workbench's readings with its sample (one undo step)."""
+        self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
 
     def load_all_samples(self) -> None:
         for presenter in self.presenters:

@@ -8,7 +8,7 @@ CLI's JSON, and into a readable text summary.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from models.readings import Column, ParsedReadings
@@ -31,7 +31,6 @@ class AnalysisKind:
     summary: Callable[[Any], str]
     sample_file: str
     method_reference: str = ""
-    notes: tuple[str, ...] = field(default_factory=tuple)
 
     def settings_with_defaults(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
         merged = dict(self.default_settings)

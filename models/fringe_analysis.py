@@ -124,14 +124,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     )
 
 
-def _params(fit: ChannelFit) -> dict[str, float]:
-    return fit.as_dict()
-
-
 def to_json(result: FringeResult) -> dict[str, Any]:
     return {
-        "sin_params": _params(result.sin_fit),
-        "cos_params": _params(result.cos_fit),
+        "sin_params": result.sin_fit.as_dict(),
+        "cos_params": result.cos_fit.as_dict(),
         "raw_error_arcsec": result.raw_error_arcsec.tolist(),
         "compensated_error_arcsec": result.compensated_error_arcsec.tolist(),
         "raw_peak_to_peak_arcsec": result.raw_peak_to_peak_arcsec,

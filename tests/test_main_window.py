@@ -116,3 +116,13 @@ def test_import_is_undoable(make_window, tmp_path):
     assert bench.sheet.row_count == 4
     window.undo_action.trigger()
     assert bench.sheet.copy_rows() == before
+
+
+def test_load_sample_menu_is_one_undo_step(make_window):
+    window = make_window()
+    bench = window.presenter("theodolite")
+    bench.table_model.set_cells([(0, 0, "5")])
+    window.sample_action.trigger()
+    assert bench.sheet.row_count == 41
+    window.undo_action.trigger()
+    assert bench.sheet.text(0, 0) == "5" and bench.sheet.row_count == 1

@@ -126,9 +126,10 @@ class PolygonPresenter(WorkbenchPresenter):
         """
         deviations = read_polygon_certificate(path)
         column = self.sheet.column_index("polygon_dev_arcsec")
+        position_column = self.sheet.column_index("position")
         changes = []
         for row in range(self.sheet.row_count):
-            text = self.sheet.text(row, 0).strip()
+            text = self.sheet.text(row, position_column).strip()
             if not text:
                 continue
             try:
