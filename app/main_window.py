@@ -25,6 +25,9 @@ from models.project import (
 )
 from models.recovery import RecoveryStore
 from models.tabular_import import TableImportError
+from widgets.fringe_workbench import FringePresenter
+from widgets.polygon_workbench import PolygonPresenter
+from widgets.theodolite_workbench import TheodolitePresenter
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
@@ -34,15 +37,7 @@ MAX_RECENT = 8
 
 
 def default_presenters() -> list[WorkbenchPresenter]:
-    from widgets.theodolite_workbench import TheodolitePresenter
-
-    presenters: list[WorkbenchPresenter] = [TheodolitePresenter()]
-    try:
-        from widgets.fringe_workbench import FringePresenter
-        from widgets.polygon_workbench import PolygonPresenter
-    except ImportError:
-        return presenters
-    return presenters + [PolygonPresenter(), FringePresenter()]
+    return [TheodolitePresenter(), PolygonPresenter(), FringePresenter()]
 
 
 def default_recovery_store() -> RecoveryStore:
@@ -297,7 +292,7 @@ class MainWindow(QMainWindow):
             return False
         self.apply_project(project)
         for presenter in self.presenters:  # recovered work is unsaved work
-            presenter._settings_modified = True
+            presenter.mark_modified()
         self._update_title()
         return True
 

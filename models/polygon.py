@@ -236,6 +236,7 @@ class PolygonResult:
     accuracy_ok: bool
     tilt_verdict: str
     valid: bool
+    closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
     warnings: list[str] = field(default_factory=list)
 
 

@@ -142,6 +142,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         raw_stats=error_stats(mean_error), harmonics=harmonic_analysis(mean_corrected),
         allowed_tilt_arcsec=allowed, accuracy_ok=stats.peak_to_peak / 2.0 <= tol,
         tilt_verdict=verdict, valid=valid, warnings=warnings,
+        closure_rows={int(parsed.row_index[c]) for _, _, c, _ in sets if c is not None},
     )
 
 

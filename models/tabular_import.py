@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from models.angles import AngleParseError, parse_angle_deg
 from models.readings import Column
 
 __all__ = ["TableImportError", "RawTable", "map_columns", "read_table", "split_pasted_text"]
@@ -84,8 +85,6 @@ def _fix_decimal_comma(cell: str) -> str:
 
 
 def _looks_like_header(cells: Sequence[str]) -> bool:
-    from models.angles import AngleParseError, parse_angle_deg
-
     for cell in cells:
         if not cell.strip():
             continue

@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 
 from models.fringe import model_signal
 from models.fringe_analysis import FRINGE, FringeResult
+from models.fringe_export import write_correction_table
 from widgets.error_plot import ErrorPlot
 from widgets.workbench_presenter import WorkbenchPresenter
 from widgets.workbench_view import WorkbenchView
@@ -142,6 +143,4 @@ class FringePresenter(WorkbenchPresenter):
         path, _ = QFileDialog.getSaveFileName(self.view, "Export correction table", "",
                                               "CSV (*.csv);;C header (*.h)")
         if path:
-            from models.fringe_export import write_correction_table
-
             write_correction_table(path, self.result)

@@ -8,7 +8,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 
 from models.polygon import GRADE_ACCURACY_ARCSEC, PolygonResult, allowed_tilt_arcsec
 from models.polygon import pyramidal_readings_arcsec as pyramidal_readings
-from models.polygon_analysis import POLYGON, split_sets
+from models.polygon_analysis import POLYGON
 from models.polygon_certificate import read_polygon_certificate
 from models.tabular_import import TableImportError
 from widgets.error_plot import ErrorPlot
@@ -89,7 +89,7 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def show_result(self, result: PolygonResult) -> None:
         first = result.sets[0]
-        self.table_model.set_highlight_rows(self._closure_rows())
+        self.table_model.set_highlight_rows(result.closure_rows)
         x = result.theta_deg
         self.error_plot.set_curves(x, result.mean_error_arcsec,
                                    -np.mean([r.pyramidal_error_arcsec for r in result.sets], axis=0),
@@ -142,12 +142,6 @@ class PolygonPresenter(WorkbenchPresenter):
             changes.append((row, column, f"{deviations[position]:g}"))
         self.table_model.set_cells(changes, "Load polygon certificate")
         return len(changes)
-
-    def _closure_rows(self) -> set[int]:
-        parsed = self.parsed
-        if parsed is None or parsed.n == 0:
-            return set()
-        return {int(parsed.row_index[c]) for _, _, c, _ in split_sets(parsed) if c is not None}
 
     def clear_result(self) -> None:
         self.table_model.set_highlight_rows(set())

@@ -176,6 +176,11 @@ class WorkbenchPresenter(QObject):
     def is_modified(self) -> bool:
         return self._settings_modified or not self.undo_stack.isClean()
 
+    def mark_modified(self) -> None:
+        """Count the current state as unsaved (e.g. work recovered after a crash)."""
+        self._settings_modified = True
+        self._emit_modified()
+
     def mark_saved(self) -> None:
         self._settings_modified = False
         self.undo_stack.setClean()
