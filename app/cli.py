@@ -10,11 +10,14 @@ import argparse
 import json
 import math
 import sys
+from pathlib import Path
 from typing import Any
 
 from models.analysis_kind import SettingsError
+from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.kinds import KINDS
 from models.readings import ReadingsSheet
+from models.results_export import write_results_csv, write_results_xlsx
 from models.tabular_import import TableImportError, map_columns, read_table
 
 EXIT_BAD_INPUT = 2
@@ -32,6 +35,11 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("file")
     p.add_argument("--json", action="store_true", help="print JSON instead of a summary")
     p.add_argument("--certificate", metavar="OUT.pdf", help="also write a test certificate")
+    p.add_argument("--metadata", metavar="META.json",
+                   help="certificate metadata (lab, customer, item, standards…); without it "
+                        "the certificate is marked DRAFT")
+    p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
+                   help="also write the results per point (with U) as CSV or XLSX")
     p.add_argument("--method", choices=["elevation", "azimuth"], help="theodolite: identify from")
     p.add_argument("--reference-row", type=int, help="theodolite: 1-based reference row")
     p.add_argument("--zenith", action="store_true", help="theodolite: vertical column is zenith V")
@@ -101,8 +109,50 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(f"{kind.title}: {args.file}\n{kind.summary(result)}\n")
         for warning in getattr(result, "warnings", []):
             sys.stdout.write(f"Warning: {warning}\n")
-    if args.certificate:
-        sys.stderr.write("anglebench analyze: certificate export is not available in this "
-                         "version; the analysis above is complete\n")
+    if args.certificate or args.results:
+        return _export(args, kind, result)
+    return 0
+
+
+def _read_metadata(path: str | None) -> CertificateMetadata:
+    if not path:
+        return CertificateMetadata()
+    try:
+        with open(path, encoding="utf-8-sig") as handle:
+            data = json.load(handle)
+    except OSError as exc:
+        raise MetadataError(f"{path}: cannot read ({exc.strerror})") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise MetadataError(f"{path}: not a JSON file ({exc})") from None
+    try:
+        return CertificateMetadata.from_dict(data)
+    except MetadataError as exc:
+        raise MetadataError(f"{path}: {exc}") from None
+
+
+def _export(args: argparse.Namespace, kind, result) -> int:
+    # The PDF writer (fpdf2) is imported only when a certificate is asked for.
+    from app.certificate_pdf import write_certificate_pdf
+
+    try:
+        metadata = _read_metadata(args.metadata)
+    except MetadataError as exc:
+        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        return EXIT_BAD_INPUT
+    document = kind.certificate_document(result, metadata, Path(args.file).name)
+    try:
+        if args.certificate:
+            write_certificate_pdf(args.certificate, document)
+            draft = " (DRAFT: " + ", ".join(metadata.missing_fields()) + " missing)" \
+                if document.is_draft else ""
+            sys.stderr.write(f"Certificate written to {args.certificate}{draft}\n")
+        if args.results:
+            if args.results.lower().endswith(".xlsx"):
+                write_results_xlsx(args.results, document)
+            else:
+                write_results_csv(args.results, document)
+            sys.stderr.write(f"Results written to {args.results}\n")
+    except (OSError, ValueError) as exc:
+        sys.stderr.write(f"anglebench analyze: cannot write: {exc}\n")
         return 1
     return 0

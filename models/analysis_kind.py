@@ -31,6 +31,14 @@ class AnalysisKind:
     summary: Callable[[Any], str]
     sample_file: str
     method_reference: str = ""
+    # (result, CertificateMetadata, source name, method reference) -> CertificateDocument
+    certificate: Callable[..., Any] | None = None
+
+    def certificate_document(self, result: Any, metadata: Any, source_name: str = "") -> Any:
+        """The certificate content of ``result`` (see models.certificate_document)."""
+        if self.certificate is None:
+            raise ValueError(f"{self.title}: no certificate is defined")
+        return self.certificate(result, metadata, source_name, self.method_reference)
 
     def settings_with_defaults(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
         merged = dict(self.default_settings)

@@ -4,10 +4,22 @@ from __future__ import annotations
 
 import contextlib
 import os
+import stat
 import tempfile
 from pathlib import Path
 
 __all__ = ["write_bytes_atomic", "write_text_atomic"]
+
+
+def _mode_for(target: Path) -> int:
+    """The replaced file's mode, or what a plain ``open`` would give a new file (mkstemp
+    makes 0600, which would hide a saved project or certificate from the rest of the lab)."""
+    try:
+        return stat.S_IMODE(target.stat().st_mode)
+    except OSError:
+        umask = os.umask(0o022)
+        os.umask(umask)
+        return 0o666 & ~umask
 
 
 def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
@@ -21,6 +33,8 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
     fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
     try:
         with os.fdopen(fd, "wb") as handle:
+            if hasattr(os, "fchmod"):  # POSIX
+                os.fchmod(handle.fileno(), _mode_for(target))
             handle.write(data)
             handle.flush()
             os.fsync(handle.fileno())

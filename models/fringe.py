@@ -32,6 +32,7 @@ __all__ = [
     "fit_periods",
     "interpolation_error_arcsec",
     "model_signal",
+    "model_signal_std",
     "period_arcsec",
     "phase_of_samples",
 ]
@@ -113,6 +114,19 @@ def _design(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
     for k in orders:
         cols += [np.sin(k * theta), np.cos(k * theta)]
     return np.column_stack(cols)
+
+
+def model_signal_std(theta_fit_rad, residual_std: float, orders: tuple[int, ...],
+                     theta_rad) -> np.ndarray:
+    """Standard uncertainty (V) of a fitted channel's model at ``theta_rad``.
+
+    Linear least squares: u²(θ) = σ² x(θ)ᵀ (XᵀX)⁻¹ x(θ), with X the design of
+    the fit's samples ``theta_fit_rad`` and σ the residual standard deviation.
+    """
+    x_fit = _design(np.asarray(theta_fit_rad, dtype=float), orders)
+    inv = np.linalg.pinv(x_fit.T @ x_fit)
+    x = _design(np.asarray(theta_rad, dtype=float), orders)
+    return residual_std * np.sqrt(np.clip(np.einsum("ij,jk,ik->i", x, inv, x), 0.0, None))
 
 
 def fit_channel(theta_rad, u, orders: tuple[int, ...] = (1, 3, 5)) -> ChannelFit:

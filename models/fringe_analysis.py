@@ -21,6 +21,7 @@ from models.fringe import (
     period_arcsec,
     phase_of_samples,
 )
+from models.fringe_report import fringe_certificate
 from models.readings import Column, ColumnKind, ParsedReadings
 
 __all__ = ["FRINGE", "FringeResult"]
@@ -174,4 +175,5 @@ FRINGE = AnalysisKind(
     sample_file="fringe_sample.csv",
     method_reference="Gao X. et al., Automatic compensation of sine deviation for grating fringe "
                      "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
+    certificate=fringe_certificate,
 )

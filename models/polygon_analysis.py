@@ -20,6 +20,7 @@ from models.polygon import (
     analyze_set,
     harmonic_analysis,
 )
+from models.polygon_report import polygon_certificate
 from models.readings import Column, ColumnKind, ParsedReadings
 
 __all__ = ["POLYGON", "closure_limit_arcsec"]
@@ -230,4 +231,5 @@ POLYGON = AnalysisKind(
     method_reference="Tian L. et al., Analysis the influence of pyramidal error on the encoder "
                      "accuracy test by using coordinate transformation, Acta Optica Sinica "
                      "35(5):0512003 (2015)",
+    certificate=polygon_certificate,
 )

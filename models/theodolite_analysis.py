@@ -10,6 +10,7 @@ import numpy as np
 from models.analysis_kind import AnalysisKind, SettingsError
 from models.readings import Column, ColumnKind, ParsedReadings
 from models.theodolite import TheodoliteResult, analyze_run
+from models.theodolite_report import theodolite_certificate
 
 __all__ = ["THEODOLITE"]
 
@@ -135,4 +136,5 @@ THEODOLITE = AnalysisKind(
     sample_file="theodolite_sample.csv",
     method_reference="Tian L. et al., Test method of angle error of limited rotation axis "
                      "system, Acta Photonica Sinica 46(11):1112005 (2017)",
+    certificate=theodolite_certificate,
 )

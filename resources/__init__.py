@@ -1,1 +1,1 @@
-"""Bundled data: sample readings (``samples/``)."""
+"""Bundled data: sample readings (``samples/``) and the certificate fonts (``fonts/``)."""

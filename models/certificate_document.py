@@ -1,0 +1,177 @@
+"""The content of a test certificate, independent of how it is printed.
+
+Each workbench's report module fills one :class:`CertificateDocument` from its
+analysis result and the certificate metadata; the PDF writer and the CSV/XLSX
+export print it. Numbers are formatted here, once, so every output shows the
+same figures.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.certificate_metadata import CertificateMetadata
+from models.conformity import Conformity
+from models.uncertainty_budget import (
+    BASIS_DIVISORS,
+    BudgetComponent,
+    UncertaintyBudget,
+    divisor_for_basis,
+)
+
+__all__ = ["CertificateDocument", "PlotFigure", "PlotSeries", "Table", "budget_table",
+           "envelope", "format_uncertain", "reference_standard_components",
+           "resolution_component"]
+
+
+@dataclass(frozen=True)
+class PlotSeries:
+    label: str
+    x: np.ndarray
+    y: np.ndarray
+    color: tuple[int, int, int] = (31, 119, 180)
+    markers: bool = False
+    band: np.ndarray | None = None  # ± half-width drawn as a shaded band around y
+
+
+@dataclass(frozen=True)
+class PlotFigure:
+    title: str
+    x_label: str
+    y_label: str
+    series: tuple[PlotSeries, ...]
+
+
+@dataclass(frozen=True)
+class Table:
+    title: str
+    header: tuple[str, ...]
+    rows: list[tuple[str, ...]]
+    note: str = ""
+    numeric: list[tuple[float, ...]] = field(default_factory=list)  # same rows, unformatted
+
+
+@dataclass(frozen=True)
+class CertificateDocument:
+    kind_key: str
+    kind_title: str
+    metadata: CertificateMetadata
+    source_name: str
+    method: str
+    method_reference: str
+    parameters: Table
+    results: Table
+    statistics: Table
+    budget: UncertaintyBudget
+    budget_point: str  # where the budget table is evaluated, e.g. "θ = 30°"
+    conformity: Conformity
+    tolerance_arcsec: float | None
+    plots: tuple[PlotFigure, ...]
+    warnings: tuple[str, ...] = ()
+    # every point's figures, for the CSV/XLSX export: (column header, values)
+    point_columns: tuple[tuple[str, np.ndarray], ...] = ()
+
+    @property
+    def expanded_uncertainty_arcsec(self) -> float:
+        """The certificate's U (k = 2): the largest over the curve's points."""
+        return self.budget.max_expanded_arcsec
+
+    @property
+    def is_draft(self) -> bool:
+        return bool(self.metadata.missing_fields())
+
+
+def _fmt(value: float, digits: int = 3) -> str:
+    if not np.isfinite(value):
+        return "—"
+    return f"{value:.{digits}f}"
+
+
+def _dof_text(nu: float) -> str:
+    if not np.isfinite(nu):
+        return "∞"
+    return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
+
+
+def budget_table(budget: UncertaintyBudget, point: str) -> Table:
+    """The budget at its worst point as a printable table, with the combined line."""
+    rows, numeric = [], []
+    for r in budget.table():
+        dof = _dof_text(r["dof"])
+        rows.append((str(r["name"]), str(r["evaluation"]), str(r["distribution"]),
+                     _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
+                     f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
+                     f"{100 * r['share']:.1f}", dof))
+        numeric.append((r["value_arcsec"], r["divisor"], r["u_arcsec"], r["sensitivity"],
+                        r["contribution_arcsec"], r["share"], r["dof"]))
+    i = budget.worst_index
+    nu = budget.effective_dof()
+    nu_text = _dof_text(nu)
+    uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
+    rows.append(("Combined standard u_c", "", "", "", "", "", "", _fmt(uc), "100.0",
+                 nu_text))
+    rows.append((f"Expanded U (k = {budget.coverage_factor:g})", "", "", "", "", "",
+                 "", _fmt(budget.coverage_factor * uc), "", ""))
+    note = (f"Budget at {point}, the point with the largest U. Coverage probability of "
+            f"k = {budget.coverage_factor:g} with ν_eff = {nu_text}: "
+            f"{100 * budget.coverage_probability():.1f} % (k for 95 %: {budget.k95():.2f}).")
+    return Table("Uncertainty budget", ("Input", "Type", "Distribution", "Value (\")", "Divisor",
+                                        "u (\")", "c", "c·u (\")", "Share %", "ν"),
+                 rows, note, numeric)
+
+
+def envelope(x: np.ndarray, y: np.ndarray, bins: int = 1500) -> tuple[np.ndarray, np.ndarray]:
+    """A curve thinned for printing: in each of ``bins`` x-ranges keep the min and the max,
+    so the printed line covers every sample's excursion. Short curves are returned as is."""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    if x.size <= 2 * bins:
+        return x, y
+    n = x.size // bins * bins
+    xs, ys = x[:n].reshape(bins, -1), y[:n].reshape(bins, -1)
+    lo, hi = np.argmin(ys, axis=1), np.argmax(ys, axis=1)
+    first = np.minimum(lo, hi)
+    second = np.maximum(lo, hi)
+    rows = np.arange(bins)
+    out_x = np.column_stack([xs[rows, first], xs[rows, second]]).ravel()
+    out_y = np.column_stack([ys[rows, first], ys[rows, second]]).ravel()
+    return out_x, out_y
+
+
+def reference_standard_components(metadata: CertificateMetadata, sensitivity,
+                                  reading: str) -> list[BudgetComponent]:
+    """One Type B input per reference standard with a stated uncertainty.
+
+    ``sensitivity`` per point (√2 where the error is the difference of two
+    readings, 0 at the reference point); ``reading`` says what one reading is.
+    """
+    out = []
+    for std in metadata.standards:
+        if std.uncertainty_arcsec is None:
+            continue
+        divisor, distribution = divisor_for_basis(std.basis)
+        name = std.description or "Reference standard"
+        cert = f", certificate {std.certificate_no}" if std.certificate_no else ""
+        out.append(BudgetComponent(
+            name, "B", distribution, std.uncertainty_arcsec, divisor, sensitivity, math.inf,
+            f"{BASIS_DIVISORS[std.basis][0]} per {reading}{cert}"))
+    return out
+
+
+def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[BudgetComponent]:
+    """The item's indication resolution r: rectangular, half-width r/2, per reading."""
+    r = metadata.item_resolution_arcsec
+    if not r:
+        return []
+    return [BudgetComponent("Item resolution", "B", "rectangular", r / 2.0, math.sqrt(3.0),
+                            sensitivity, math.inf, f"resolution {r:g}\" of the item's indication")]
+
+
+def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:
+    """``value ± U`` with U rounded to two significant digits and the value to match."""
+    if not np.isfinite(expanded) or expanded <= 0:
+        return f"{value:.{digits}f}{unit}"
+    decimals = max(0, 1 - int(math.floor(math.log10(expanded))))
+    return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"

@@ -1,0 +1,141 @@
+"""Theodolite run: uncertainty budget and certificate content.
+
+The corrected error at point i is the difference of two readings (at i and
+at the reference point), minus the set-up model ζ(θ):
+``e_i = (A_i − A_0) − (θ_i − θ_0) − ζ(θ_i; ψ, α, β)``. Its inputs:
+
+* each reference standard's figure, per reading: sensitivity √2 (0 at the
+  reference point, where e is zero by definition);
+* the reading repeatability, estimated (Type A) by the identification's
+  residual RMS with n − 3 degrees of freedom: sensitivity √2;
+* the identified parameters' covariance propagated through ζ (first order);
+* the item's resolution, if stated: rectangular, sensitivity √2.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from models.certificate_document import (
+    CertificateDocument,
+    PlotFigure,
+    PlotSeries,
+    Table,
+    format_uncertain,
+    reference_standard_components,
+    resolution_component,
+)
+from models.certificate_metadata import CertificateMetadata
+from models.conformity import decide_conformity
+from models.theodolite import TheodoliteResult
+from models.uncertainty_budget import BudgetComponent, UncertaintyBudget
+
+__all__ = ["theodolite_budget", "theodolite_certificate"]
+
+METHOD = (
+    "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
+    "theodolite is set on the mirror normal and its horizontal reading A and vertical reading E "
+    "are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite's vertical, "
+    "its direction α and the elevation β of the mirror normal — makes A differ from the axis "
+    "rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings "
+    "(sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished), ζ is "
+    "evaluated at the axis' true rotation and removed: corrected error = (A − A₀) − (θ − θ₀) − "
+    "ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed."
+)
+
+
+def _pair_sensitivity(result: TheodoliteResult) -> np.ndarray:
+    """√2 at every point (two readings), 0 at the reference point(s)."""
+    theta_rel = result.theta_deg - result.reference_theta_deg
+    return np.where(np.abs(theta_rel) < 1e-9, 0.0, math.sqrt(2.0))
+
+
+def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+    n = result.theta_deg.size
+    pair = _pair_sensitivity(result)
+    dof = max(n - 3, 1)
+    components = reference_standard_components(metadata, pair, "reading (pointing)")
+    # The vertical readings' residuals measure the reading noise whatever the route: the
+    # azimuth residuals would also hold the axis' own error, which is the measurand.
+    res = result.elevation_residuals_arcsec
+    noise = float(np.sqrt(np.sum(res**2) / dof))
+    components.append(BudgetComponent(
+        "Reading repeatability", "A", "normal", noise, 1.0, pair, dof,
+        f"standard deviation of the vertical readings about the fit, {n} readings, "
+        f"{dof} degrees of freedom"))
+    components.append(BudgetComponent(
+        "Set-up model ζ (ψ, α, β)", "A", "normal", result.model_uncertainty_arcsec, 1.0, 1.0, dof,
+        "covariance of the identified parameters propagated through ζ(θ)"))
+    components += resolution_component(metadata, pair)
+    return UncertaintyBudget(tuple(components), n)
+
+
+def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
+                           source_name: str = "", method_reference: str = "") -> CertificateDocument:
+    budget = theodolite_budget(result, metadata)
+    big_u = budget.expanded_arcsec
+    ident = result.identification
+    s = ident.setup
+    u2 = 2.0 * ident.uncertainty_deg * 3600.0  # expanded, arcsec
+    parameters = Table(
+        "Set-up parameters identified (U with k = 2)", ("Parameter", "Value", "U (k = 2)"),
+        [("Axis tilt ψ", f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
+         ("Tilt direction α", f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
+         ("Mirror normal β", f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
+         ("Identified from", f"{ident.method} readings", ""),
+         ("R² of the fit", f"{ident.r_squared:.8f}", ""),
+         ("Residual RMS", f"{ident.residual_rms_arcsec:.3f}\"", ""),
+         ("Reference point θ₀", f"{result.reference_theta_deg:g}°", "")])
+    correction = -result.model_error_arcsec
+    numeric = list(zip(result.theta_deg, result.raw_error_arcsec, correction,
+                       result.corrected_error_arcsec, big_u, strict=True))
+    rows = [(f"{t:.4f}", f"{r:+.2f}", f"{c:+.2f}", f"{e:+.2f}", f"{u:.2f}")
+            for t, r, c, e, u in numeric]
+    results = Table("Results per point (corrected = raw + correction)",
+                    ("θ (°)", "Raw error (\")", "Correction (\")", "Corrected error (\")",
+                     "U (k = 2) (\")"), rows, numeric=[tuple(map(float, r)) for r in numeric])
+    r, c = result.raw_stats, result.corrected_stats
+    stat_rows = [
+        ("Points", f"{c.n}", ""),
+        ("Raw error", f"{r.min:+.2f}\" … {r.max:+.2f}\"", f"peak-to-peak {r.peak_to_peak:.2f}\""),
+        ("Corrected error", f"{c.min:+.2f}\" … {c.max:+.2f}\"",
+         f"peak-to-peak {c.peak_to_peak:.2f}\", RMS {c.rms:.2f}\""),
+        ("Accuracy (half peak-to-peak, corrected)",
+         format_uncertain(c.peak_to_peak / 2.0, budget.max_expanded_arcsec, "\""), ""),
+        ("Expanded uncertainty U (k = 2)", f"{budget.max_expanded_arcsec:.2f}\"",
+         "largest over the points"),
+    ]
+    if result.iso230 is not None:
+        for k, v in result.iso230.figures.items():
+            if math.isfinite(v):
+                stat_rows.append((f"ISO 230-2 {k}", f"{v:.2f}\"", ""))
+    statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
+    order = np.argsort(result.theta_deg, kind="stable")
+    th = result.theta_deg[order]
+    plots = (
+        PlotFigure("Raw error, set-up model and corrected error", "θ (°)", "error (\")", (
+            PlotSeries("raw ζ'", th, result.raw_error_arcsec[order], (31, 119, 180), True),
+            PlotSeries("model ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
+            PlotSeries("corrected", th, result.corrected_error_arcsec[order], (44, 160, 44), True),
+        )),
+        PlotFigure("Corrected error with its expanded uncertainty U (k = 2)", "θ (°)",
+                   "error (\")", (
+            PlotSeries("corrected ± U", th, result.corrected_error_arcsec[order], (44, 160, 44),
+                       True, band=big_u[order]),)),
+        PlotFigure("Fit residuals (vertical readings)", "θ (°)", "residual (\")", (
+            PlotSeries("residual", th, result.elevation_residuals_arcsec[order], (148, 103, 189),
+                       True),)),
+    )
+    worst = budget.worst_index
+    tol = metadata.tolerance_arcsec
+    conformity = decide_conformity(c.peak_to_peak / 2.0, budget.max_expanded_arcsec, tol,
+                                   metadata.decision_rule)
+    return CertificateDocument(
+        "theodolite", "Theodolite run", metadata, source_name, METHOD, method_reference,
+        parameters, results, statistics, budget, f"θ = {result.theta_deg[worst]:g}°", conformity,
+        tol, plots, tuple(result.warnings),
+        point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
+         ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
+         ("expanded_uncertainty_arcsec", big_u)))

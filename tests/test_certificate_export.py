@@ -1,0 +1,149 @@
+"""Certificates and results exports from each bundled sample, parsed back."""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from openpyxl import load_workbook
+from pypdf import PdfReader
+
+from app.certificate_pdf import certificate_pdf_bytes, font_files
+from models.certificate_metadata import CertificateMetadata
+from models.kinds import KINDS
+from models.readings import ReadingsSheet
+from models.results_export import neutralise, results_csv_bytes, results_xlsx_bytes
+from models.tabular_import import map_columns, read_table
+
+SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
+
+META = CertificateMetadata.from_dict({
+    "certificate_number": "AB-2026-0042", "lab_name": "精密角度计量实验室 Precision Angle Lab",
+    "customer_name": "长春光机所 CIOMP", "item_description": "Encoder RX-26", "item_serial": "SN-1",
+    "calibration_date": "2026-11-20", "issue_date": "2026-11-24", "created": "2026-11-24T10:00:00",
+    "operator": "王工", "approver": "Dr. Li", "tolerance_arcsec": 3,
+    "standards": [{"description": "Reference AC", "certificate_no": "NIM-1", "uncertainty_arcsec": 0.4}],
+    "notes": "=cmd|' /C calc'!A0 <b>x</b> 备注"})
+
+
+def _analysed(key):
+    kind = KINDS[key]
+    table = read_table(SAMPLES / kind.sample_file)
+    parsed = ReadingsSheet(kind.columns, map_columns(table, kind.columns)).parse()
+    return kind, kind.analyze(parsed, kind.settings_with_defaults({}))
+
+
+def _text(pdf: bytes) -> tuple[str, int]:
+    reader = PdfReader(io.BytesIO(pdf))
+    return "\n".join(page.extract_text() for page in reader.pages), len(reader.pages)
+
+
+@pytest.mark.parametrize("key", sorted(KINDS))
+def test_certificate_of_each_sample_carries_its_figures(key):
+    kind, result = _analysed(key)
+    document = kind.certificate_document(result, META, kind.sample_file)
+    pdf = certificate_pdf_bytes(document)
+    text, pages = _text(pdf)
+    flat = re.sub(r"\s+", " ", text)
+    assert f"Page {pages} of {pages}" in flat and "Page 1 of" in flat
+    assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
+    assert f"U = {document.expanded_uncertainty_arcsec:.2f}\"" in flat
+    assert "k = 2" in flat and "Decision rule" in flat and "DRAFT" not in flat
+    for row in document.parameters.rows[:3]:  # the identified parameters, as printed
+        assert row[1] in flat
+    for row in document.statistics.rows:
+        assert row[1] in flat
+    json_out = kind.to_json(result)
+    if key == "theodolite":
+        assert f"{json_out['psi_deg']:.5f}°" in flat
+    if key == "polygon":
+        assert f"{json_out['pyramidal_tilt_arcsec']:.1f}\"" in flat
+    if key == "fringe":
+        assert f"{json_out['compensated_peak_to_peak_arcsec']:.3f}\"" in flat
+    # U on the certificate is the budget's, and each point's U is in the table
+    assert document.expanded_uncertainty_arcsec == pytest.approx(
+        2 * float(np.max(document.budget.combined_arcsec)))
+
+
+def test_certificate_is_deterministic_and_marks_drafts():
+    kind, result = _analysed("polygon")
+    doc = kind.certificate_document(result, META, "p.csv")
+    assert certificate_pdf_bytes(doc) == certificate_pdf_bytes(doc)
+    draft = kind.certificate_document(result, CertificateMetadata(created="2026-01-01T00:00:00"))
+    text, _ = _text(certificate_pdf_bytes(draft))
+    assert "DRAFT" in text and "customer" in text
+
+
+def test_hostile_text_neither_breaks_the_page_nor_becomes_markup():
+    kind, result = _analysed("theodolite")
+    long_word = "W" * 400
+    meta = CertificateMetadata.from_dict({
+        **META.to_dict(), "customer_name": long_word, "item_description": "<b>bold</b> **x** {nb}",
+        "notes": "\n".join(["第一行 line"] * 60)})
+    text, pages = _text(certificate_pdf_bytes(kind.certificate_document(result, meta)))
+    flat = re.sub(r"\s+", "", text)
+    assert "W" * 150 in flat  # wrapped, not cut
+    assert "<b>bold</b>**x**{nb}" in flat  # printed as typed
+    assert pages >= 4
+
+
+def test_bundled_fonts_exist_and_cover_chinese():
+    from fontTools.ttLib import TTFont
+
+    files = font_files()
+    with TTFont(files["cjk"]) as cjk, TTFont(files["regular"]) as latin:
+        assert all(ord(ch) in cjk.getBestCmap() for ch in "精密角度计量实验室备注")
+        assert all(ord(ch) in latin.getBestCmap() for ch in "ψαβω±°″")
+
+
+@pytest.mark.parametrize("text, safe", [("=1+2", "'=1+2"), ("+A1", "'+A1"), ("-2", "'-2"),
+                                        ("@SUM(A1)", "'@SUM(A1)"), ("\t=x", "'\t=x"), ("ok", "ok")])
+def test_neutralise(text, safe):
+    assert neutralise(text) == safe
+
+
+def test_results_csv_and_xlsx():
+    kind, result = _analysed("theodolite")
+    doc = kind.certificate_document(result, META, "t.csv")
+    csv_text = results_csv_bytes(doc).decode("utf-8-sig").splitlines()
+    assert csv_text[0].split(",")[:3] == ["theta_deg", "raw_error_arcsec", "correction_arcsec"]
+    assert len(csv_text) == result.theta_deg.size + 1
+    first = [float(v) for v in csv_text[1].split(",")]
+    assert first[3] == pytest.approx(result.corrected_error_arcsec[0])
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(doc)))
+    assert book.sheetnames == ["Results", "Parameters", "Statistics", "Uncertainty budget",
+                               "Certificate"]
+    assert book["Results"].cell(2, 4).value == pytest.approx(result.corrected_error_arcsec[0])
+    values = [row[1] for row in book["Certificate"].iter_rows(values_only=True)]
+    notes = next(v for v in values if isinstance(v, str) and "calc" in v)
+    assert notes.startswith("'=")
+    for ws in book.worksheets:  # no cell anywhere is a formula
+        for row in ws.iter_rows():
+            for cell in row:
+                assert cell.data_type != "f"
+
+
+def test_cli_writes_certificate_and_results(tmp_path):
+    meta = tmp_path / "meta.json"
+    meta.write_text(json.dumps(META.to_dict(), ensure_ascii=False), encoding="utf-8")
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    done = subprocess.run([sys.executable, "-m", "app", "analyze", "fringe",
+                           str(SAMPLES / "fringe_sample.csv"), "--certificate", str(pdf),
+                           "--metadata", str(meta), "--results", str(xlsx)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert pdf.read_bytes().startswith(b"%PDF") and xlsx.stat().st_size > 0
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"humidity_pct": "wet"}', encoding="utf-8")
+    done = subprocess.run([sys.executable, "-m", "app", "analyze", "fringe",
+                           str(SAMPLES / "fringe_sample.csv"), "--certificate", str(pdf),
+                           "--metadata", str(bad)], capture_output=True, text=True, check=False)
+    assert done.returncode == 2
+    assert "bad.json" in done.stderr and "humidity_pct" in done.stderr
+    assert "Traceback" not in done.stderr
