@@ -4,6 +4,7 @@ autosave and crash recovery, persisted window state and recent files."""
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 from pathlib import Path
 
@@ -11,11 +12,19 @@ import numpy as np
 import pyqtgraph as pg
 import scipy
 from PySide6 import __version__ as pyside_version
-from PySide6.QtCore import QByteArray, QSettings, QStandardPaths, QTimer, qVersion
+from PySide6.QtCore import QByteArray, QSettings, QStandardPaths, Qt, QTimer, qVersion
 from PySide6.QtGui import QAction, QCloseEvent, QKeySequence, QUndoGroup
-from PySide6.QtWidgets import QFileDialog, QMainWindow, QMessageBox, QTabWidget
+from PySide6.QtWidgets import (
+    QApplication,
+    QDialog,
+    QFileDialog,
+    QMainWindow,
+    QMessageBox,
+    QTabWidget,
+)
 
 from models import __version__
+from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.project import (
     Project,
     ProjectFileError,
@@ -24,7 +33,9 @@ from models.project import (
     save_project,
 )
 from models.recovery import RecoveryStore
+from models.results_export import write_results_csv, write_results_xlsx
 from models.tabular_import import TableImportError
+from widgets.certificate_dialog import CertificateDialog
 from widgets.fringe_workbench import FringePresenter
 from widgets.polygon_workbench import PolygonPresenter
 from widgets.theodolite_workbench import TheodolitePresenter
@@ -107,9 +118,11 @@ class MainWindow(QMainWindow):
                                           "Replace the current workbench's readings with a file's")
         self.sample_action = self._action(file_menu, "Load bundled &sample", self.load_sample)
         self.export_action = self._action(
-            file_menu, "&Export certificate…", lambda: None,
-            tip="Test certificates are not available in this version")
-        self.export_action.setEnabled(False)
+            file_menu, "&Export certificate…", self.export_certificate, QKeySequence("Ctrl+E"),
+            "Write the current workbench's test certificate (PDF)")
+        self.export_results_action = self._action(
+            file_menu, "Export &results (CSV/XLSX)…", self.export_results,
+            tip="Write every point's raw, correction, corrected error and U")
         file_menu.addSeparator()
         self._action(file_menu, "&Quit", self.close, QKeySequence.StandardKey.Quit)
 
@@ -265,6 +278,119 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:
             presenter.load_sample()
         self._update_title()
+
+    # -- certificates -----------------------------------------------------------------
+    def lab_defaults(self) -> dict:
+        text = self.qsettings.value("certificate/lab_defaults", "")
+        try:
+            data = json.loads(text) if text else {}
+        except (TypeError, ValueError):
+            data = {}
+        return data if isinstance(data, dict) else {}
+
+    def save_lab_defaults(self, defaults: dict) -> None:
+        self.qsettings.setValue("certificate/lab_defaults", json.dumps(defaults, ensure_ascii=False))
+
+    def certificate_metadata(self, key: str | None = None) -> CertificateMetadata:
+        """The workbench's certificate metadata from the project, lab defaults filled in."""
+        key = key or self.current.kind.key
+        stored = self.project_metadata.get("certificates", {}).get(key)
+        try:
+            meta = CertificateMetadata.from_dict(stored)
+        except MetadataError:
+            meta = CertificateMetadata()
+        try:
+            return meta.with_lab_defaults(self.lab_defaults())
+        except MetadataError:
+            return meta
+
+    def store_certificate_metadata(self, meta: CertificateMetadata, key: str | None = None) -> None:
+        key = key or self.current.kind.key
+        certificates = dict(self.project_metadata.get("certificates", {}))
+        if certificates.get(key) != meta.to_dict():
+            certificates[key] = meta.to_dict()
+            self.project_metadata["certificates"] = certificates
+            self.current.mark_modified()  # the details are saved with the project
+
+    def edit_certificate_metadata(self, meta: CertificateMetadata) -> CertificateMetadata | None:
+        """Show the certificate dialog; the metadata entered, or None if cancelled."""
+        sequence = int(self.qsettings.value("certificate/next_sequence", 1) or 1)
+        dialog = CertificateDialog(meta, sequence, self)
+        dialog.lab_defaults_saved.connect(self.save_lab_defaults)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return None
+        if dialog.sequence_used:
+            self.qsettings.setValue("certificate/next_sequence", sequence + 1)
+        return dialog.metadata()
+
+    def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
+        path, _ = QFileDialog.getSaveFileName(self, title, str(Path(self._last_dir()) / suggested),
+                                              file_filter)
+        return path
+
+    def _current_result(self):
+        presenter = self.current
+        if presenter.result is None:
+            self.tell("Nothing to export", f"{presenter.kind.title}: "
+                      f"{presenter.problem or 'no readings have been analysed yet'}.")
+            return None
+        return presenter.result
+
+    def _source_name(self) -> str:
+        return self.project_path.name if self.project_path else "readings typed in AngleBench"
+
+    def export_certificate(self) -> bool:
+        result = self._current_result()
+        if result is None:
+            return False
+        kind = self.current.kind
+        meta = self.edit_certificate_metadata(self.certificate_metadata())
+        if meta is None:
+            return False
+        self.store_certificate_metadata(meta)
+        suggested = (meta.certificate_number or f"{kind.key}-certificate").replace("/", "-")
+        path = self.choose_save_path("Export certificate", f"{suggested}.pdf", "PDF (*.pdf)")
+        if not path:
+            return False
+        if not path.lower().endswith(".pdf"):
+            path += ".pdf"
+        from app.certificate_pdf import write_certificate_pdf  # fpdf2 loads on first export
+
+        QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        try:
+            document = kind.certificate_document(result, meta, self._source_name())
+            write_certificate_pdf(path, document)
+        except (OSError, ValueError) as exc:
+            self.tell("Cannot export", f"{path}: {exc}. Nothing else was changed.")
+            return False
+        finally:
+            QApplication.restoreOverrideCursor()
+        draft = (" — DRAFT: " + ", ".join(meta.missing_fields()) + " missing"
+                 if document.is_draft else "")
+        self.statusBar().showMessage(f"Certificate written to {path}{draft}", 10000)
+        return True
+
+    def export_results(self) -> bool:
+        result = self._current_result()
+        if result is None:
+            return False
+        kind = self.current.kind
+        path = self.choose_save_path("Export results", f"{kind.key}-results.csv",
+                                     "CSV (*.csv);;Excel workbook (*.xlsx)")
+        if not path:
+            return False
+        document = kind.certificate_document(result, self.certificate_metadata(),
+                                             self._source_name())
+        try:
+            if path.lower().endswith(".xlsx"):
+                write_results_xlsx(path, document)
+            else:
+                write_results_csv(path, document)
+        except (OSError, ValueError) as exc:
+            self.tell("Cannot export", f"{path}: {exc}")
+            return False
+        self.statusBar().showMessage(f"Results written to {path}", 8000)
+        return True
 
     # -- autosave and recovery ------------------------------------------------------
     def autosave(self) -> None:

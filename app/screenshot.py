@@ -9,7 +9,18 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
 from app.main_window import MainWindow
+from models.certificate_metadata import CertificateMetadata
 from models.recovery import RecoveryStore
+from widgets.certificate_dialog import CertificateDialog
+
+
+def _example_metadata() -> CertificateMetadata:
+    return CertificateMetadata.from_dict({
+        "certificate_number": "AB-2026-0042", "lab_name": "精密角度计量实验室 Precision Angle Lab",
+        "customer_name": "Changchun Optics Ltd.", "item_description": "Limited-rotation axis",
+        "item_serial": "LRA-0815", "calibration_date": "2026-11-20", "operator": "Wang",
+        "standards": [{"description": "Autocollimating theodolite", "certificate_no": "NIM-1187",
+                       "uncertainty_arcsec": 0.5, "basis": "U95"}]})
 
 
 def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900)) -> list[Path]:
@@ -30,6 +41,14 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900)) -
             path = out_dir / f"{presenter.kind.key}.png"
             window.grab().save(str(path))
             paths.append(path)
+        dialog = CertificateDialog(_example_metadata(), 1, window)
+        dialog.resize(1100, 760)
+        dialog.show()
+        app.processEvents()
+        path = out_dir / "certificate_dialog.png"
+        dialog.grab().save(str(path))
+        paths.append(path)
+        dialog.close()
         window.recovery.discard()
         window.close()
     return paths

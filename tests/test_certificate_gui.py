@@ -1,0 +1,115 @@
+"""Export a certificate through the File menu, typing the details into the real dialog."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+from pypdf import PdfReader
+from PySide6.QtCore import QSettings, Qt
+from PySide6.QtWidgets import QDialog, QMessageBox
+
+from app.main_window import MainWindow
+from models.certificate_metadata import CertificateMetadata
+from models.recovery import RecoveryStore
+from widgets.certificate_dialog import CertificateDialog
+
+
+@pytest.fixture
+def window(qtbot, tmp_path):
+    settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+    w = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
+    w.told = []
+    w.tell = lambda title, text: w.told.append(text)
+    w.ask = lambda *a: QMessageBox.StandardButton.Discard
+    qtbot.addWidget(w)
+    return w
+
+
+def _type_details(qtbot, dialog: CertificateDialog) -> None:
+    fields = dialog.fields
+    fields["lab_name"].insert("角度实验室")  # as an input method commits it (QTest types Latin-1)
+    qtbot.keyClicks(fields["lab_name"], " Angle Lab")
+    qtbot.keyClicks(fields["customer_name"], "=Customer & Co")
+    qtbot.keyClicks(fields["item_description"], "Rotary table RT-400")
+    qtbot.keyClicks(fields["item_serial"], "RT-9")
+    qtbot.keyClicks(fields["calibration_date"], "2026-11-20")
+    assert fields["issue_date"].text()  # today, prefilled
+    fields["issue_date"].clear()
+    qtbot.keyClicks(fields["issue_date"], "2026-11-24")
+    qtbot.keyClicks(fields["operator"], "Wang")
+    qtbot.keyClicks(fields["tolerance_arcsec"], "5")
+    qtbot.mouseClick(dialog.next_number_button, Qt.MouseButton.LeftButton)
+    dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
+                         "uncertainty_arcsec": 0.5})
+
+
+def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatch):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+    seen = {}
+
+    def fill_and_accept(dialog):
+        _type_details(qtbot, dialog)
+        # a bad value is marked and keeps the dialog open, with everything typed kept
+        qtbot.keyClicks(dialog.fields["humidity_pct"], "wet")
+        dialog.accept()
+        seen["error"] = dialog.error_label.text()
+        seen["style"] = dialog.fields["humidity_pct"].styleSheet()
+        dialog.fields["humidity_pct"].setText("45")
+        dialog.accept()
+        return dialog.result()
+
+    monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
+    out = tmp_path / "cert.pdf"
+    window.choose_save_path = lambda *a: str(out)
+    window.export_action.trigger()
+    assert "humidity_pct" in seen["error"] and "background" in seen["style"]
+    assert window.told == []
+    text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
+    assert "角度实验室" in text and "=Customer & Co" in text and "NIM-7" in text
+    assert "DRAFT" not in text
+    number = window.certificate_metadata().certificate_number
+    assert number and number in text
+    # the details are kept with the project and the sequence moved on
+    assert window.project().metadata["certificates"]["theodolite"]["operator"] == "Wang"
+    assert int(window.qsettings.value("certificate/next_sequence")) == 2
+    assert window.is_modified
+
+
+def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
+    window.load_all_samples()
+    monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
+    called = []
+    window.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
+    assert not window.export_certificate()
+    assert not called and not (tmp_path / "x.pdf").exists()
+
+
+def test_no_result_is_told_not_crashed(window):
+    assert not window.export_certificate()
+    assert "Nothing" in window.told[0] or "no readings" in window.told[0]
+
+
+def test_lab_defaults_fill_a_new_certificate(window, qtbot):
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.lab_defaults_saved.connect(window.save_lab_defaults)
+    qtbot.keyClicks(dialog.fields["lab_name"], "Angle Lab")
+    qtbot.keyClicks(dialog.fields["operator"], "Li")
+    qtbot.mouseClick(dialog.save_defaults_button, Qt.MouseButton.LeftButton)
+    meta = window.certificate_metadata("polygon")
+    assert meta.lab_name == "Angle Lab" and meta.operator == "Li"
+    assert meta.customer_name == ""
+
+
+def test_export_results_csv(window, tmp_path):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(1)
+    out = tmp_path / "r.csv"
+    window.choose_save_path = lambda *a: str(out)
+    window.export_results_action.trigger()
+    lines = out.read_text(encoding="utf-8-sig").splitlines()
+    result = window.current.result
+    assert lines[0].startswith("position,nominal_deg")
+    assert len(lines) == result.faces + 1

@@ -1,0 +1,253 @@
+"""Dialog for a certificate's metadata: lab, customer, item, reference standards,
+environment, people, dates and the decision rule.
+
+The dialog only edits fields; :meth:`CertificateDialog.metadata` turns them
+into a :class:`CertificateMetadata` (which checks them), and a field that
+cannot be used is marked red with the reason, the rest of the entry kept.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import re
+from typing import Any
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QPlainTextEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from models.certificate_metadata import (
+    DECISION_RULES,
+    CertificateMetadata,
+    MetadataError,
+    format_certificate_number,
+)
+
+__all__ = ["CertificateDialog"]
+
+_TEXT_FIELDS = {
+    "certificate_number": "Certificate number", "issue_date": "Date of issue (YYYY-MM-DD)",
+    "calibration_date": "Date of calibration", "tolerance_arcsec": "Tolerance ± (\")",
+    "lab_name": "Laboratory", "lab_address": "Address", "lab_accreditation": "Accreditation",
+    "number_scheme": "Number scheme", "customer_name": "Customer", "customer_address": "Address",
+    "item_description": "Item under test", "item_manufacturer": "Manufacturer",
+    "item_serial": "Serial number", "item_grade": "Grade / specification",
+    "item_resolution_arcsec": "Resolution (\")", "temperature_c": "Temperature (°C)",
+    "humidity_pct": "Relative humidity (%)", "operator": "Operator", "approver": "Approved by",
+}
+_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis")
+_STANDARD_HEADERS = ("Standard", "Serial no.", "Certificate no.", "Uncertainty (\")",
+                     "Stated as (U95, MPE, u)")
+_ERROR_STYLE = "background: #ffd7d7;"
+
+
+class CertificateDialog(QDialog):
+    """Edit certificate metadata; ``lab_defaults_saved`` carries the lab-wide fields."""
+
+    lab_defaults_saved = Signal(dict)
+
+    def __init__(self, metadata: CertificateMetadata, next_sequence: int = 1,
+                 parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle("Certificate details")
+        self.next_sequence = next_sequence
+        self.sequence_used = False
+        self.fields: dict[str, QLineEdit] = {}
+        self._setup_ui()
+        self.set_metadata(metadata)
+
+    # -- layout -------------------------------------------------------------
+    def _line(self, key: str) -> QLineEdit:
+        edit = QLineEdit()
+        edit.setObjectName(key)
+        edit.textEdited.connect(lambda _t, e=edit: e.setStyleSheet(""))
+        self.fields[key] = edit
+        return edit
+
+    def _group(self, title: str, keys: tuple[str, ...]) -> QGroupBox:
+        box = QGroupBox(title)
+        form = QFormLayout(box)
+        for key in keys:
+            if key == "certificate_number":
+                row = QHBoxLayout()
+                row.addWidget(self._line(key))
+                self.next_number_button = QPushButton("Next number")
+                self.next_number_button.setToolTip("Number from the lab's scheme and sequence")
+                self.next_number_button.clicked.connect(self._fill_next_number)
+                row.addWidget(self.next_number_button)
+                form.addRow(_TEXT_FIELDS[key], row)
+            else:
+                form.addRow(_TEXT_FIELDS[key], self._line(key))
+        return box
+
+    def _setup_ui(self) -> None:
+        grid = QGridLayout()
+        cert = self._group("Certificate", ("certificate_number", "issue_date", "calibration_date",
+                                           "tolerance_arcsec"))
+        self.decision_rule = QComboBox()
+        labels = {"guarded": "Guarded acceptance, guard band w = U", "simple": "Simple acceptance"}
+        for key, text in DECISION_RULES.items():
+            self.decision_rule.addItem(labels.get(key, key), key)
+            self.decision_rule.setItemData(self.decision_rule.count() - 1, text,
+                                           Qt.ItemDataRole.ToolTipRole)
+        cert.layout().addRow("Decision rule", self.decision_rule)
+        grid.addWidget(cert, 0, 0)
+        grid.addWidget(self._group("Laboratory", ("lab_name", "lab_address", "lab_accreditation",
+                                                  "number_scheme")), 0, 1)
+        grid.addWidget(self._group("Customer", ("customer_name", "customer_address")), 1, 0)
+        grid.addWidget(self._group("Item under test", (
+            "item_description", "item_manufacturer", "item_serial", "item_grade",
+            "item_resolution_arcsec")), 1, 1)
+        grid.addWidget(self._group("Environment and people", (
+            "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
+        notes_box = QGroupBox("Remarks printed on the certificate")
+        self.notes = QPlainTextEdit()
+        self.notes.setObjectName("notes")
+        QVBoxLayout(notes_box).addWidget(self.notes)
+        grid.addWidget(notes_box, 2, 1)
+
+        standards_box = QGroupBox("Reference standards (their uncertainty enters the budget per "
+                                  "reading)")
+        self.standards = QTableWidget(0, len(_STANDARD_COLUMNS))
+        self.standards.setHorizontalHeaderLabels(_STANDARD_HEADERS)
+        self.standards.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        self.standards.itemChanged.connect(lambda item: item.setBackground(Qt.GlobalColor.white))
+        buttons = QHBoxLayout()
+        add, remove = QPushButton("Add standard"), QPushButton("Remove standard")
+        add.clicked.connect(lambda: self.add_standard({}))
+        remove.clicked.connect(self._remove_standard)
+        buttons.addWidget(add)
+        buttons.addWidget(remove)
+        buttons.addStretch(1)
+        box_layout = QVBoxLayout(standards_box)
+        box_layout.addWidget(self.standards)
+        box_layout.addLayout(buttons)
+        grid.addWidget(standards_box, 3, 0, 1, 2)
+
+        self.error_label = QLabel()
+        self.error_label.setStyleSheet("color: #b00020;")
+        self.error_label.setWordWrap(True)
+        self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
+                                        | QDialogButtonBox.StandardButton.Cancel)
+        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setText("Export…")
+        self.save_defaults_button = self.buttons.addButton(
+            "Save as lab defaults", QDialogButtonBox.ButtonRole.ActionRole)
+        self.save_defaults_button.setToolTip("Lab, number scheme, standards, people and decision "
+                                             "rule become the start of every new certificate")
+        self.save_defaults_button.clicked.connect(self._save_lab_defaults)
+        self.buttons.accepted.connect(self.accept)
+        self.buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addWidget(self.error_label)
+        layout.addWidget(self.buttons)
+
+    # -- values -------------------------------------------------------------
+    def set_metadata(self, meta: CertificateMetadata) -> None:
+        data = meta.to_dict()
+        for key, edit in self.fields.items():
+            value = data.get(key)
+            edit.setText("" if value is None else f"{value:g}" if isinstance(value, float)
+                         else str(value))
+        index = self.decision_rule.findData(meta.decision_rule)
+        self.decision_rule.setCurrentIndex(max(index, 0))
+        self.notes.setPlainText(meta.notes)
+        if not meta.issue_date:
+            self.fields["issue_date"].setText(dt.date.today().isoformat())
+        self.standards.setRowCount(0)
+        for standard in data["standards"]:
+            self.add_standard(standard)
+
+    def add_standard(self, standard: dict[str, Any]) -> None:
+        row = self.standards.rowCount()
+        self.standards.insertRow(row)
+        for col, key in enumerate(_STANDARD_COLUMNS):
+            value = standard.get(key)
+            text = "" if value is None else f"{value:g}" if isinstance(value, float) else str(value)
+            if key == "basis" and not text:
+                text = "U95"
+            self.standards.setItem(row, col, QTableWidgetItem(text))
+
+    def _remove_standard(self) -> None:
+        rows = sorted({i.row() for i in self.standards.selectedIndexes()}, reverse=True)
+        for row in rows or [self.standards.rowCount() - 1]:
+            if row >= 0:
+                self.standards.removeRow(row)
+
+    def raw_values(self) -> dict[str, Any]:
+        data: dict[str, Any] = {key: edit.text() for key, edit in self.fields.items()}
+        data["decision_rule"] = self.decision_rule.currentData()
+        data["notes"] = self.notes.toPlainText()
+        standards = []
+        for row in range(self.standards.rowCount()):
+            entry = {key: (self.standards.item(row, col).text()
+                           if self.standards.item(row, col) else "")
+                     for col, key in enumerate(_STANDARD_COLUMNS)}
+            if any(v.strip() for k, v in entry.items() if k != "basis"):
+                standards.append(entry)
+        data["standards"] = standards
+        return data
+
+    def metadata(self) -> CertificateMetadata:
+        """The entered metadata. Raises MetadataError (and marks the field) if unusable."""
+        try:
+            return CertificateMetadata.from_dict(self.raw_values())
+        except MetadataError as exc:
+            self._mark(str(exc))
+            raise
+
+    def _mark(self, message: str) -> None:
+        self.error_label.setStyleSheet("color: #b00020;")
+        self.error_label.setText(message)
+        match = re.search(r"'(\w+)(?:\[(\d+)\]\.(\w+))?'", message)
+        if not match:
+            return
+        if match.group(2):
+            row, key = int(match.group(2)) - 1, match.group(3)
+            if key in _STANDARD_COLUMNS and row < self.standards.rowCount():
+                item = self.standards.item(row, _STANDARD_COLUMNS.index(key))
+                if item is not None:
+                    item.setBackground(Qt.GlobalColor.red)
+            return
+        edit = self.fields.get(match.group(1))
+        if edit is not None:
+            edit.setStyleSheet(_ERROR_STYLE)
+            edit.setFocus()
+
+    def accept(self) -> None:  # the dialog stays open on a bad field
+        try:
+            self.metadata()
+        except MetadataError:
+            return
+        super().accept()
+
+    def _fill_next_number(self) -> None:
+        scheme = self.fields["number_scheme"].text() or "{year}-{seq:04d}"
+        self.fields["certificate_number"].setText(
+            format_certificate_number(scheme, self.next_sequence, dt.date.today()))
+        self.sequence_used = True
+
+    def _save_lab_defaults(self) -> None:
+        try:
+            meta = self.metadata()
+        except MetadataError:
+            return
+        self.lab_defaults_saved.emit(meta.lab_defaults())
+        self.error_label.setStyleSheet("color: #1b5e20;")
+        self.error_label.setText("Saved as the lab's defaults.")
