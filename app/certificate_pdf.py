@@ -29,6 +29,7 @@ from fpdf.fonts import FontFace
 from models import __version__
 from models.atomic_write import write_bytes_atomic
 from models.certificate_document import CertificateDocument, PlotFigure, Table, budget_table
+from models.conformity import uncertainty_decimals
 from models.uncertainty_budget import BASIS_DIVISORS
 
 __all__ = ["certificate_pdf_bytes", "font_files", "write_certificate_pdf"]
@@ -146,8 +147,9 @@ class _CertificatePdf(FPDF):
         return super().output(*args, **kwargs)
 
     # -- building blocks -----------------------------------------------------
-    def heading(self, text: str) -> None:
-        if self.will_page_break(18):
+    def heading(self, text: str, keep_with: float = 18.0) -> None:
+        """A section heading, moved to the next page unless ``keep_with`` mm follow it."""
+        if self.will_page_break(keep_with):
             self.add_page()
         self.ln(2)
         self.set_font(FONT, "B", 11)
@@ -296,6 +298,8 @@ def _nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
 
 def _tick(value: float, ticks: list[float]) -> str:
     step = ticks[1] - ticks[0]
+    if abs(value) < 1e-9 * step:
+        value = 0.0  # no "-0.0"
     decimals = max(0, -int(math.floor(math.log10(step))) + (1 if step / 10 ** math.floor(
         math.log10(step)) == 2.5 else 0))
     return f"{value:.{decimals}f}"
@@ -357,15 +361,16 @@ def _render(document: CertificateDocument) -> FPDF:
         pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
     pdf.heading(document.parameters.title)
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
-    pdf.heading("Error curves")
+    pdf.heading("Error curves", keep_with=75.0)
     for figure in document.plots:
         pdf.plot(figure)
     pdf.heading(document.statistics.title)
     pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
     pdf.heading("Measurement uncertainty")
+    big_u = document.expanded_uncertainty_arcsec
     pdf.paragraph(
         "The expanded uncertainty of the corrected error is "
-        f"U = {document.expanded_uncertainty_arcsec:.2f}\" "
+        f"U = {big_u:.{uncertainty_decimals(big_u)}f}\" "
         "(the largest over the points; each point's U is in the results table). It is the "
         "combined standard uncertainty multiplied by the coverage factor k = 2, which for a "
         "normal distribution corresponds to a coverage probability of about 95 %. The "

@@ -12,7 +12,14 @@ from dataclasses import dataclass
 
 from models.certificate_metadata import DECISION_RULES
 
-__all__ = ["Conformity", "decide_conformity"]
+__all__ = ["Conformity", "decide_conformity", "uncertainty_decimals"]
+
+
+def uncertainty_decimals(expanded: float) -> int:
+    """Decimals that show U with two significant digits (GUM 7.2.6), at least two."""
+    if not math.isfinite(expanded) or expanded <= 0:
+        return 2
+    return max(2, 1 - int(math.floor(math.log10(expanded))))
 
 
 @dataclass(frozen=True)
@@ -34,7 +41,8 @@ def decide_conformity(half_range_arcsec: float, expanded_arcsec: float,
         return Conformity("not assessed", "No statement of conformity: no tolerance was given.",
                           rule_text)
     x, u, t = half_range_arcsec, expanded_arcsec, tolerance_arcsec
-    quantity = f"half the peak-to-peak corrected error, {x:.2f}\" (U = {u:.2f}\")"
+    d = uncertainty_decimals(u)
+    quantity = f"half the peak-to-peak corrected error, {x:.{d}f}\" (U = {u:.{d}f}\")"
     if rule == "simple":
         ok = x <= t
         verdict = "conforms" if ok else "does not conform"

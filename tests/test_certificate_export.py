@@ -16,6 +16,7 @@ from pypdf import PdfReader
 
 from app.certificate_pdf import certificate_pdf_bytes, font_files
 from models.certificate_metadata import CertificateMetadata
+from models.conformity import uncertainty_decimals
 from models.kinds import KINDS
 from models.readings import ReadingsSheet
 from models.results_export import neutralise, results_csv_bytes, results_xlsx_bytes
@@ -53,7 +54,8 @@ def test_certificate_of_each_sample_carries_its_figures(key):
     flat = re.sub(r"\s+", " ", text)
     assert f"Page {pages} of {pages}" in flat and "Page 1 of" in flat
     assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
-    assert f"U = {document.expanded_uncertainty_arcsec:.2f}\"" in flat
+    big_u = document.expanded_uncertainty_arcsec
+    assert f"U = {big_u:.{uncertainty_decimals(big_u)}f}\"" in flat
     assert "k = 2" in flat and "Decision rule" in flat and "DRAFT" not in flat
     for row in document.parameters.rows[:3]:  # the identified parameters, as printed
         assert row[1] in flat
