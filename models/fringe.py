@@ -15,6 +15,7 @@ the *measured* phase, subtracted from the measured phase.
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from dataclasses import dataclass, field
@@ -28,6 +29,7 @@ __all__ = [
     "build_correction_table",
     "channel_cost",
     "fit_channel",
+    "fit_channels",
     "fit_channel_pso",
     "fit_periods",
     "interpolation_error_arcsec",
@@ -80,7 +82,7 @@ class ChannelFit:
         for k, (a, c) in terms.items():
             if a < 0:
                 a, c = -a, c + math.pi
-            c = float(_wrap(c))
+            c = math.remainder(float(c), 2.0 * math.pi)  # into [−π, π]
             if c == -math.pi:
                 c = math.pi
             amplitude[k], phase[k] = float(a), c
@@ -110,10 +112,23 @@ def channel_cost(theta_rad, u, fit: ChannelFit) -> float:
 
 
 def _design(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
-    cols = [np.ones_like(theta)]
-    for k in orders:
-        cols += [np.sin(k * theta), np.cos(k * theta)]
-    return np.column_stack(cols)
+    """Columns 1, sin kθ, cos kθ for k in ``orders``. Ascending orders come from powers
+    of e^{iθ} (one complex exponential for all orders instead of two per order)."""
+    x = np.empty((theta.size, 1 + 2 * len(orders)))
+    x[:, 0] = 1.0
+    z = np.exp(1j * theta)
+    zk, power = 1.0, 0
+    for i, k in enumerate(orders):
+        if power <= k <= power + 8:
+            while power < k:
+                zk = zk * z
+                power += 1
+            column = zk
+        else:
+            column = np.exp(1j * k * theta)
+        x[:, 1 + 2 * i] = column.imag
+        x[:, 2 + 2 * i] = column.real
+    return x
 
 
 def model_signal_std(theta_fit_rad, residual_std: float, orders: tuple[int, ...],
@@ -134,38 +149,88 @@ def fit_channel(theta_rad, u, orders: tuple[int, ...] = (1, 3, 5)) -> ChannelFit
 
     Raises ValueError when there are fewer samples than parameters.
     """
+    return fit_channels(theta_rad, [u], orders)[0]
+
+
+def fit_channels(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)) -> list[ChannelFit]:
+    """:func:`fit_channel` for several channels sampled at the same phases: one design
+    matrix and one factorisation of the normal equations serve them all.
+
+    The normal equations are well conditioned here (sines and cosines of distinct
+    orders are near-orthogonal over whole periods); a rank-deficient design
+    (e.g. too few distinct phases) falls back to the pseudo-inverse.
+    """
     theta = np.asarray(theta_rad, dtype=float)
-    y = np.asarray(u, dtype=float)
     n_par = 1 + 2 * len(orders)
     if theta.size < n_par + 1:
         raise ValueError(f"{theta.size} samples; at least {n_par + 1} are needed for orders "
                          f"{', '.join(map(str, orders))}")
-    x = _design(theta, orders)
-    coef, *_ = np.linalg.lstsq(x, y, rcond=None)
-    resid = y - x @ coef
+    if theta.size <= _CACHED_DESIGN_MAX:  # a period's phases recur: reuse its factorisation
+        x, inv = _small_solver(theta.tobytes(), orders)
+    else:
+        x, inv = _solver(theta, orders)
+    ys = np.asarray(channels, dtype=float).T  # (samples, channels)
+    coefs = inv @ (x.T @ ys)  # (n_par, channels)
+    resid = ys - x @ coefs
     dof = max(theta.size - n_par, 1)
-    sigma2 = float(resid @ resid) / dof
-    cov = np.linalg.pinv(x.T @ x) * sigma2
+    fits = []
+    for j in range(ys.shape[1]):
+        fits.append(_channel_fit(coefs[:, j], resid[:, j], ys[:, j], inv, dof, orders))
+    return fits
+
+
+_CACHED_DESIGN_MAX = 4096
+
+
+def _solver(theta: np.ndarray, orders: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray]:
+    """Design matrix and (XᵀX)⁻¹ (the pseudo-inverse if X is rank-deficient)."""
+    x = _design(theta, orders)
+    n_par = x.shape[1]
+    gram = x.T @ x
+    try:
+        inv = np.linalg.inv(gram)
+        check = gram @ inv
+        check.flat[:: n_par + 1] -= 1.0
+        if not np.abs(check).max() < 1e-6:  # near-singular: a poor inverse
+            raise np.linalg.LinAlgError
+    except np.linalg.LinAlgError:
+        inv = np.linalg.pinv(gram)
+    return x, inv
+
+
+@functools.lru_cache(maxsize=16)
+def _small_solver(theta_bytes: bytes, orders: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray]:
+    x, inv = _solver(np.frombuffer(theta_bytes, dtype=float), orders)
+    x.flags.writeable = False
+    inv.flags.writeable = False
+    return x, inv
+
+
+def _channel_fit(coef, resid, y, inv, dof: int, orders: tuple[int, ...]) -> ChannelFit:
+    cost = float(resid @ resid)
+    cov = inv * (cost / dof)
     terms, u_amp, u_ph = {}, {}, {}
     for i, k in enumerate(orders):
-        s, c = coef[1 + 2 * i], coef[2 + 2 * i]
+        s, c = float(coef[1 + 2 * i]), float(coef[2 + 2 * i])
         amp = math.hypot(s, c)
         terms[k] = (amp, math.atan2(c, s))
-        block = cov[1 + 2 * i: 3 + 2 * i, 1 + 2 * i: 3 + 2 * i]
+        v_ss, v_sc, v_cc = cov[1 + 2 * i, 1 + 2 * i], cov[1 + 2 * i, 2 + 2 * i], cov[2 + 2 * i,
+                                                                                    2 + 2 * i]
         if amp > 0:
-            g_a = np.array([s, c]) / amp
-            g_p = np.array([-c, s]) / amp**2
-            u_amp[k] = float(math.sqrt(max(g_a @ block @ g_a, 0.0)))
-            u_ph[k] = float(math.sqrt(max(g_p @ block @ g_p, 0.0)))
+            # gradients of the amplitude (s, c)/A and of the phase (−c, s)/A²
+            var_a = (s * s * v_ss + 2 * s * c * v_sc + c * c * v_cc) / amp**2
+            var_p = (c * c * v_ss - 2 * s * c * v_sc + s * s * v_cc) / amp**4
+            u_amp[k], u_ph[k] = math.sqrt(max(var_a, 0.0)), math.sqrt(max(var_p, 0.0))
         else:
-            u_amp[k], u_ph[k] = math.sqrt(block[0, 0]), math.inf
-    fit = ChannelFit.from_parameters(coef[0], terms)
-    fit.u_offset = float(math.sqrt(cov[0, 0]))
+            u_amp[k], u_ph[k] = math.sqrt(max(v_ss, 0.0)), math.inf
+    fit = ChannelFit.from_parameters(float(coef[0]), terms)
+    fit.u_offset = float(math.sqrt(max(cov[0, 0], 0.0)))
     fit.u_amplitude, fit.u_phase = u_amp, u_ph
-    ss_tot = float(np.sum((y - y.mean()) ** 2))
-    fit.cost = float(resid @ resid)
-    fit.r_squared = 1.0 - fit.cost / ss_tot if ss_tot > 0 else float("nan")
-    fit.residual_rms = float(np.sqrt(np.mean(resid**2)))
+    total = float(y.sum())
+    ss_tot = float(y @ y) - total * total / y.size
+    fit.cost = cost
+    fit.r_squared = 1.0 - cost / ss_tot if ss_tot > 0 else float("nan")
+    fit.residual_rms = math.sqrt(cost / y.size)
     return fit
 
 
@@ -196,6 +261,10 @@ def interpolation_error_arcsec(u_sin, u_cos, theta_rad, lines_per_rev: int) -> n
 
 
 def _circular_mean(angle_rad: np.ndarray) -> float:
+    """The mean of wrapped angles: their arithmetic mean when they span less than π (they
+    cannot straddle the ±π cut), otherwise the circular mean."""
+    if angle_rad.size and float(np.ptp(angle_rad)) < math.pi:
+        return float(np.mean(angle_rad))
     return float(np.angle(np.mean(np.exp(1j * angle_rad))))
 
 

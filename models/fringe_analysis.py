@@ -16,6 +16,7 @@ from models.fringe import (
     build_correction_table,
     fit_channel,
     fit_channel_pso,
+    fit_channels,
     fit_periods,
     interpolation_error_arcsec,
     period_arcsec,
@@ -106,7 +107,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         warnings.append(f"Particle swarm on the first period: cost {ps.cost + pc.cost:.3g} V² "
                         f"against {lsq_cost:.3g} V² for least squares, {pso_seconds:.2f} s.")
     elif s["method"] == "lsq":
-        sin_fit, cos_fit = fit_channel(theta, u_sin, orders), fit_channel(theta, u_cos, orders)
+        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
     else:
         raise SettingsError(f"method must be 'lsq' or 'pso', not '{s['method']}'")
     table = build_correction_table(sin_fit, cos_fit, int(s["lut_size"]))
