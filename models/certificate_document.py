@@ -23,7 +23,7 @@ from models.uncertainty_budget import (
 )
 
 __all__ = ["CertificateDocument", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "envelope", "format_uncertain", "reference_standard_components",
+           "format_uncertain", "reference_standard_components",
            "resolution_component"]
 
 
@@ -121,23 +121,6 @@ def budget_table(budget: UncertaintyBudget, point: str) -> Table:
     return Table("Uncertainty budget", ("Input", "Type", "Distribution", "Value (\")", "Divisor",
                                         "u (\")", "c", "c·u (\")", "Share %", "ν"),
                  rows, note, numeric)
-
-
-def envelope(x: np.ndarray, y: np.ndarray, bins: int = 1500) -> tuple[np.ndarray, np.ndarray]:
-    """A curve thinned for printing: in each of ``bins`` x-ranges keep the min and the max,
-    so the printed line covers every sample's excursion. Short curves are returned as is."""
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    if x.size <= 2 * bins:
-        return x, y
-    n = x.size // bins * bins
-    xs, ys = x[:n].reshape(bins, -1), y[:n].reshape(bins, -1)
-    lo, hi = np.argmin(ys, axis=1), np.argmax(ys, axis=1)
-    first = np.minimum(lo, hi)
-    second = np.maximum(lo, hi)
-    rows = np.arange(bins)
-    out_x = np.column_stack([xs[rows, first], xs[rows, second]]).ravel()
-    out_y = np.column_stack([ys[rows, first], ys[rows, second]]).ravel()
-    return out_x, out_y
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,

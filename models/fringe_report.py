@@ -25,12 +25,12 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    envelope,
     format_uncertain,
     reference_standard_components,
 )
 from models.certificate_metadata import CertificateMetadata
 from models.conformity import decide_conformity
+from models.decimation import envelope
 from models.fringe import model_signal, model_signal_std, period_arcsec
 from models.uncertainty_budget import BudgetComponent, UncertaintyBudget
 

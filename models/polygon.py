@@ -22,10 +22,10 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from models.angles import ARCSEC_PER_RAD
 from models.error_stats import ErrorStats
+from models.lazy_optimize import least_squares
 
 __all__ = [
     "GRADE_ACCURACY_ARCSEC",
@@ -46,6 +46,7 @@ GRADE_ACCURACY_ARCSEC = {1: 0.25, 2: 0.5, 3: 1.0, 4: 2.0, 5: 5.0, 6: 10.0, 7: 30
 
 #: Largest ε_x/ψ² over θ and ω (at ω = 90°, θ ≈ 111°), in 1/arcsec.
 SHORT_FORM_COEFFICIENT = 0.5337e-5
+
 
 
 def allowed_tilt_arcsec(grade: int) -> float:

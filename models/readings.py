@@ -126,6 +126,20 @@ class ParsedReadings:
         return self.values[key]
 
 
+_FLOAT_CHUNK = 32_768
+
+
+def _floats(texts: list[str]) -> np.ndarray:
+    """``np.array(texts, dtype=float)`` in chunks: one call on a million strings holds the
+    GIL for ~0.3 s, which freezes the window while a worker thread parses."""
+    if len(texts) <= _FLOAT_CHUNK:
+        return np.array(texts, dtype=float)
+    out = np.empty(len(texts))
+    for start in range(0, len(texts), _FLOAT_CHUNK):
+        out[start:start + _FLOAT_CHUNK] = np.array(texts[start:start + _FLOAT_CHUNK], dtype=float)
+    return out
+
+
 class ReadingsSheet:
     """Rows of raw cell text under a fixed list of typed columns."""
 
@@ -200,20 +214,27 @@ class ReadingsSheet:
 
     # -- parsing --------------------------------------------------------
     def _parse_fast(self) -> ParsedReadings | None:
-        """Vectorised parse when every required column is plain numbers (large signal files)."""
-        if not self.rows or any(c.kind is ColumnKind.TEXT for c in self.columns):
+        """Vectorised parse when every filled column is plain numbers (large signal files,
+        long runs); anything else — a unit, DMS, a blank cell, text — takes the cell-by-cell
+        path, which gives the same values and says what is wrong where."""
+        if not self.rows:
             return None
         out: dict[str, np.ndarray] = {}
         for c, column in enumerate(self.columns):
             texts = [row[c] for row in self.rows]
             if not column.required and not any(t.strip() for t in texts):
-                out[column.key] = np.full(len(texts), np.nan)
+                out[column.key] = (np.full(len(texts), None, dtype=object)
+                                   if column.kind is ColumnKind.TEXT else np.full(len(texts), np.nan))
                 continue
+            if column.kind is ColumnKind.TEXT:
+                return None
             try:
-                values = np.array(texts, dtype=float)
+                values = _floats(texts)
             except ValueError:
                 return None
-            if column.kind is ColumnKind.INTEGER or not np.all(np.isfinite(values)):
+            if not np.all(np.isfinite(values)):
+                return None
+            if column.kind is ColumnKind.INTEGER and not np.all(values == np.round(values)):
                 return None
             out[column.key] = values
         if not any(c.required for c in self.columns):

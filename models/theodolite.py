@@ -23,11 +23,11 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from models.angles import ARCSEC_PER_RAD
 from models.error_stats import ErrorStats, error_stats
 from models.iso230 import Iso230Result, iso230_evaluate
+from models.lazy_optimize import least_squares
 
 __all__ = [
     "Identification",
@@ -45,6 +45,7 @@ __all__ = [
 ]
 
 D2R = math.pi / 180.0
+
 
 
 @dataclass(frozen=True)

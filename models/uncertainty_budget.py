@@ -19,7 +19,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import t as student_t
 
 __all__ = [
     "BASIS_DIVISORS",
@@ -126,12 +125,18 @@ class UncertaintyBudget:
         k = self.coverage_factor
         if not math.isfinite(nu):
             return float(math.erf(k / math.sqrt(2.0)))
-        return float(2.0 * student_t.cdf(k, nu) - 1.0)
+        from scipy.special import stdtr  # Student's t CDF; imported late, as start-up pays it
+
+        return float(2.0 * stdtr(nu, k) - 1.0)
 
     def k95(self, index: int | None = None) -> float:
         """Coverage factor for 95 % from ν_eff (GUM Annex G), for comparison with k."""
         nu = self.effective_dof(index)
-        return 1.959964 if not math.isfinite(nu) else float(student_t.ppf(0.975, nu))
+        if not math.isfinite(nu):
+            return 1.959964
+        from scipy.special import stdtrit  # inverse of Student's t CDF
+
+        return float(stdtrit(nu, 0.975))
 
     def table(self, index: int | None = None) -> list[dict[str, object]]:
         """Rows of the budget at one point (default the worst): name, type, distribution,

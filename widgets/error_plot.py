@@ -13,7 +13,8 @@ RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
 CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
 RESIDUAL_PEN = pg.mkPen("#2e8b57", width=1.5)
-MAX_SYMBOL_POINTS = 3000  # beyond this, points are drawn as lines only
+MAX_SYMBOL_POINTS = 500  # beyond this, points are drawn as lines only (they would overlap,
+#                            and 1000 symbols cost ~10 ms per redraw)
 
 
 class ErrorPlot(QWidget):

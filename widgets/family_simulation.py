@@ -30,7 +30,12 @@ class FamilySimulation(QWidget):
         self.model = model
         self._setup_ui(default_values, labels)
         self._layout()
-        self.update_curves()
+        self._drawn = False  # the family is computed when the tab is first shown (start-up)
+
+    def showEvent(self, event) -> None:  # noqa: N802
+        if not self._drawn:
+            self.update_curves()
+        super().showEvent(event)
 
     def _setup_ui(self, default_values: str, labels: tuple[str, str, str]) -> None:
         self.sweep_values = QLineEdit(default_values)
@@ -69,6 +74,7 @@ class FamilySimulation(QWidget):
         return out[:12]
 
     def update_curves(self) -> None:
+        self._drawn = True
         params = self.form.values()
         sweep = params["sweep"]
         values = self.swept_values() or [params[sweep]]

@@ -6,6 +6,8 @@ from __future__ import annotations
 import contextlib
 import gc
 import logging
+import sys
+import threading
 from pathlib import Path
 from typing import Any
 
@@ -26,6 +28,7 @@ SAMPLES_DIR = Path(__file__).resolve().parent.parent / "resources" / "samples"
 
 # Sheets of more rows than this are parsed and analysed on a worker thread.
 THREAD_THRESHOLD_ROWS = 20_000
+LIVE_COLUMN_FIT_ROWS = 200  # up to this many rows the columns resize with every edit
 # Files larger than this are read on a worker thread.
 THREAD_THRESHOLD_BYTES = 1_000_000
 
@@ -41,15 +44,28 @@ class _AnalysisTask(QRunnable):
     """Parse and analyse a large sheet on a worker thread."""
 
     def __init__(self, kind: AnalysisKind, sheet: ReadingsSheet, settings: dict[str, Any],
-                 generation: int, signals: _TaskSignals) -> None:
+                 generation: int, signals: _TaskSignals, prepare) -> None:
         super().__init__()
-        self._args = (kind, sheet, settings, generation, signals)
+        self._args = (kind, sheet, settings, generation, signals, prepare)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals = self._args
-        parsed = sheet.parse()
-        result, error = _run_analysis(kind, parsed, settings)
-        _emit_if_alive(signals.finished, generation, (parsed, result), error)
+        kind, sheet, settings, generation, signals, prepare = self._args
+        with _gui_thread_first():
+            parsed = sheet.parse()
+            result, error = _run_analysis(kind, parsed, settings)
+            display = _prepare_display(prepare, result)
+        _emit_if_alive(signals.finished, generation, (parsed, result, display), error)
+
+
+def _prepare_display(prepare, result: Any) -> Any:
+    """The presenter's plot arrays for ``result`` (numpy only, safe on a worker thread)."""
+    if result is None:
+        return None
+    try:
+        return prepare(result)
+    except Exception:  # noqa: BLE001 - the plots then compute what they need themselves
+        log.exception("preparing the plots failed")
+        return None
 
 
 class _ImportTask(QRunnable):
@@ -64,7 +80,7 @@ class _ImportTask(QRunnable):
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
-        with _cyclic_gc_paused():
+        with _cyclic_gc_paused(), _gui_thread_first():
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except TableImportError as exc:
@@ -78,6 +94,32 @@ def _emit_if_alive(signal, *args) -> None:
     """Deliver a worker's result; if its workbench was closed meanwhile, drop it."""
     with contextlib.suppress(RuntimeError):
         signal.emit(*args)
+
+
+_WORKERS_RUNNING = 0
+_WORKERS_LOCK = threading.Lock()
+_SWITCH_INTERVAL_WORKING = 0.0001  # s
+_switch_interval_default = sys.getswitchinterval()
+
+
+@contextlib.contextmanager
+def _gui_thread_first():
+    """While a worker runs Python code, hand the GIL back to the GUI thread every 0.5 ms
+    instead of 5 ms. Painting calls Python (pyqtgraph) hundreds of times per frame and
+    waits for the GIL at each call: with the default interval a frame took seconds."""
+    global _WORKERS_RUNNING, _switch_interval_default
+    with _WORKERS_LOCK:
+        if _WORKERS_RUNNING == 0:
+            _switch_interval_default = sys.getswitchinterval()
+            sys.setswitchinterval(_SWITCH_INTERVAL_WORKING)
+        _WORKERS_RUNNING += 1
+    try:
+        yield
+    finally:
+        with _WORKERS_LOCK:
+            _WORKERS_RUNNING -= 1
+            if _WORKERS_RUNNING == 0:
+                sys.setswitchinterval(_switch_interval_default)
 
 
 @contextlib.contextmanager
@@ -102,6 +144,20 @@ def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
         return None, f"internal error while analysing ({type(exc).__name__}: {exc})"
 
 
+_WORKER_POOL: QThreadPool | None = None
+
+
+def worker_pool() -> QThreadPool:
+    """Our own thread pool for imports and analyses. Not Qt's global pool: Qt's painting
+    uses that one for parallel image work, and waits for it on the GUI thread, so a
+    long import queued there froze the window for up to a second."""
+    global _WORKER_POOL
+    if _WORKER_POOL is None:
+        _WORKER_POOL = QThreadPool()
+        _WORKER_POOL.setMaxThreadCount(2)
+    return _WORKER_POOL
+
+
 class WorkbenchPresenter(QObject):
     """Base presenter. Subclasses build their view's fields and draw results.
 
@@ -123,10 +179,14 @@ class WorkbenchPresenter(QObject):
         self.view.table.setModel(self.table_model)
         header = self.view.table.horizontalHeader()
         header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        # Qt measures the first 1000 rows for every change: 64 give the same widths for
+        # readings (one number format per column) and keep an edit cheap on long runs.
+        header.setResizeContentsPrecision(64)
         header.setStretchLastSection(True)
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
+        self.display: Any = None  # prepare_display(result)
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self._generation = 0
@@ -147,6 +207,11 @@ class WorkbenchPresenter(QObject):
     # -- subclass hooks ---------------------------------------------------
     def build_settings(self) -> None:
         """Add the set-up fields to ``self.view.settings``."""
+
+    def prepare_display(self, result: Any) -> Any:
+        """Heavy plot arrays for ``result`` (decimation, model curves): pure numpy, run on
+        the worker thread with a large analysis; ``self.display`` holds it in show_result."""
+        return None
 
     def show_result(self, result: Any) -> None:
         """Draw a fresh result in the view."""
@@ -228,7 +293,7 @@ class WorkbenchPresenter(QObject):
                 self.import_failed.emit(str(exc))
             return
         self._set_busy(True, f"Reading {Path(path).name} …")
-        QThreadPool.globalInstance().start(_ImportTask(self.kind, path, self._signals))
+        worker_pool().start(_ImportTask(self.kind, path, self._signals))
 
     def _on_import_finished(self, rows, path: str, error: str) -> None:
         self._set_busy(False)
@@ -237,15 +302,24 @@ class WorkbenchPresenter(QObject):
             return
         self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
         self._fit_columns()
-        self.refresh()
+        # queued behind the table's own relayout: started now, the analysis worker would
+        # compete with it for the GIL and the relayout of a million rows would stall
+        self.schedule_refresh()
 
     def _fit_columns(self) -> None:
-        """Size columns to their contents, except for huge sheets where that scan stalls."""
+        """Columns follow their contents on short sheets. On long ones Qt's re-measuring
+        after every edit costs ~10 ms, so they are sized once and then left to the user
+        (and for huge sheets not measured at all: that scan stalls)."""
         header = self.view.table.horizontalHeader()
-        mode = (QHeaderView.ResizeMode.Interactive if self.sheet.row_count > THREAD_THRESHOLD_ROWS
-                else QHeaderView.ResizeMode.ResizeToContents)
-        if header.sectionResizeMode(0) != mode:
-            header.setSectionResizeMode(mode)
+        rows = self.sheet.row_count
+        if rows <= LIVE_COLUMN_FIT_ROWS:
+            if header.sectionResizeMode(0) != QHeaderView.ResizeMode.ResizeToContents:
+                header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+            return
+        if header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
+            header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
+            if rows <= THREAD_THRESHOLD_ROWS:
+                self.view.table.resizeColumnsToContents()
 
     def _set_busy(self, busy: bool, text: str = "") -> None:
         self.busy = busy
@@ -265,25 +339,27 @@ class WorkbenchPresenter(QObject):
     def refresh(self) -> None:
         """Parse the readings and analyse them now (on a worker for large sheets)."""
         self._timer.stop()
+        self._fit_columns()
         self._generation += 1
         if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
             self._set_busy(True, f"Analysing {self.sheet.row_count} readings …")
-            QThreadPool.globalInstance().start(
+            worker_pool().start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
-                              self._signals))
+                              self._signals, self.prepare_display))
             return
         parsed = self.sheet.parse()
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))
-        self._finish(parsed, result, error)
+        self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
 
     def _on_task_finished(self, generation: int, payload: Any, error: str) -> None:
         if generation == self._generation:  # a newer edit supersedes this result
             self._set_busy(False)
-            parsed, result = payload
-            self._finish(parsed, result, error)
+            parsed, result, display = payload
+            self._finish(parsed, result, error, display)
 
-    def _finish(self, parsed: ParsedReadings, result: Any, error: str) -> None:
+    def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None) -> None:
         self.parsed = parsed
+        self.display = display
         self.result = result
         self.problem = error
         input_warnings = []
