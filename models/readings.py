@@ -126,7 +126,7 @@ class ParsedReadings:
         return self.values[key]
 
 
-_FLOAT_CHUNK = 32_768
+_FLOAT_CHUNK = 4_096
 
 
 def _floats(texts: list[str]) -> np.ndarray:
