@@ -29,6 +29,15 @@ class ErrorPlot(QWidget):
         super().__init__(parent)
         self._setup_ui(x_label, residual_label)
         self._layout()
+        # y ranges follow the data, but only when it leaves the view or shrinks well
+        # inside it: an edit that moves the curve a little leaves the axes (and their
+        # tick labels, ~2 ms each to re-render) alone, and the plot does not jitter
+        self._sticky_y: dict[pg.ViewBox, bool] = {}
+        for plot in (self.main_plot, self.corrected_plot, self.residual_plot):
+            vb = plot.getViewBox()
+            self._sticky_y[vb] = True
+            vb.sigRangeChangedManually.connect(lambda _mask, vb=vb: self._sticky_y.__setitem__(
+                vb, False))
 
     def _setup_ui(self, x_label: str, residual_label: str) -> None:
         self.graphics = pg.GraphicsLayoutWidget()
@@ -94,6 +103,29 @@ class ErrorPlot(QWidget):
                 curve.setData([], [])
             else:
                 curve.setData(x, np.asarray(y, dtype=float))
+        self._follow_y(self.main_plot, (raw, model))
+        self._follow_y(self.corrected_plot, (corrected, [0.0]))
+
+    def _follow_y(self, plot, arrays) -> None:
+        """Move the y range only if the data left it or fill less than 60 % of it. A user's
+        zoom is left alone until the plot's auto-range button ("A") is pressed."""
+        vb = plot.getViewBox()
+        if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
+            vb.enableAutoRange(y=False)
+            self._sticky_y[vb] = True
+        if not self._sticky_y.get(vb, False):
+            return
+        values = [np.asarray(a, dtype=float).ravel() for a in arrays if a is not None]
+        values = np.concatenate(values) if values else np.empty(0)
+        values = values[np.isfinite(values)]
+        if values.size == 0:
+            return
+        lo, hi = float(values.min()), float(values.max())
+        span = hi - lo if hi > lo else max(abs(hi), 1e-3)
+        view_lo, view_hi = vb.viewRange()[1]
+        if lo < view_lo or hi > view_hi or span < 0.6 * (view_hi - view_lo):
+            pad = 0.08 * span
+            vb.setYRange(lo - pad, hi + pad, padding=0.0)
 
     def _show_symbols(self, show: bool) -> None:
         for curve, symbol in ((self.raw_curve, "o"), (self.corrected_curve, "s"),
@@ -107,6 +139,7 @@ class ErrorPlot(QWidget):
             self.residual_curve.setData([], [])
         else:
             self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
+            self._follow_y(self.residual_plot, (residuals, [0.0]))
 
     def clear(self) -> None:
         self.set_curves([], None, None, None)

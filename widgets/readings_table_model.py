@@ -142,6 +142,7 @@ class ReadingsTableModel(QAbstractTableModel):
         if not changes:
             return
         max_row = max(r for r, _, _ in changes)
+        first_blank = self.sheet.row_count
         if max_row >= self.sheet.row_count:
             first = self.sheet.row_count + 1  # the trailing blank row already exists
             self.beginInsertRows(QModelIndex(), first, max_row + 1)
@@ -154,7 +155,8 @@ class ReadingsTableModel(QAbstractTableModel):
         rows = [r for r, _, _ in changes]
         self.dataChanged.emit(self.index(min(rows), 0),
                               self.index(max(rows), self.sheet.column_count - 1))
-        self.headerDataChanged.emit(Qt.Orientation.Vertical, min(rows), self.sheet.row_count)
+        if max_row >= first_blank:  # rows were added: their numbers (and the "*") move
+            self.headerDataChanged.emit(Qt.Orientation.Vertical, min(rows), self.sheet.row_count)
         self.sheet_changed.emit()
 
     def truncate_rows(self, count: int) -> None:

@@ -98,7 +98,12 @@ class WorkbenchView(QWidget):
         self.warnings.setVisible(bool(warnings))
 
     def set_busy(self, busy: bool) -> None:
+        """Show the busy bar. While a worker reads or analyses, the table and the plots
+        (about to be replaced) are not repainted: their painting calls Python, which would
+        wait for the worker's GIL and stall the window; menus and the bar stay live."""
         self.busy.setVisible(busy)
+        self.table.setUpdatesEnabled(not busy)
+        self.plot_tabs.setUpdatesEnabled(not busy)
 
     def set_readings_caption(self, text: str) -> None:
         self.readings_label.setText(text)

@@ -1,0 +1,30 @@
+"""The error plot's y ranges follow the data without jittering on small changes."""
+
+import numpy as np
+
+from widgets.error_plot import ErrorPlot
+
+
+def test_y_range_moves_only_when_needed_and_respects_a_zoom(qtbot):
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    x = np.linspace(-20, 20, 41)
+    y = np.sin(x / 5)
+    plot.set_curves(x, y, y * 0.9, y * 0.1)
+    vb = plot.main_plot.getViewBox()
+    first = vb.viewRange()[1]
+    assert first[0] < -1.0 + 1e-9 and first[1] > 1.0 - 1e-9
+    plot.set_curves(x, y * 1.02, y * 0.9, y * 0.1)  # a small edit: the axes stay
+    assert vb.viewRange()[1] == first
+    plot.set_curves(x, y * 3, y * 0.9, y * 0.1)  # the data leave the view: it follows
+    grown = vb.viewRange()[1]
+    assert grown[1] >= 3.0 and grown[0] <= -3.0
+    plot.set_curves(x, y * 0.2, y * 0.2, y * 0.1)  # shrinks well inside: it follows
+    assert vb.viewRange()[1][1] < 1.0
+    vb.setYRange(-10, 10, padding=0)
+    vb.sigRangeChangedManually.emit([False, True])  # as a mouse zoom does
+    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
+    assert vb.viewRange()[1] == [-10.0, 10.0]  # the user's zoom is kept
+    vb.enableAutoRange(y=True)  # the "A" button
+    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
+    assert vb.viewRange()[1][1] < 1.0
