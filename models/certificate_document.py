@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from models.certificate_metadata import CertificateMetadata
-from models.conformity import Conformity
+from models.conformity import Conformity, uncertainty_decimals
 from models.uncertainty_budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -22,7 +22,7 @@ from models.uncertainty_budget import (
     divisor_for_basis,
 )
 
-__all__ = ["CertificateDocument", "PlotFigure", "PlotSeries", "Table", "budget_table",
+__all__ = ["CertificateDocument", "accuracy_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "reference_standard_components",
            "resolution_component"]
 
@@ -150,6 +150,17 @@ def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[Bud
         return []
     return [BudgetComponent("Item resolution", "B", "rectangular", r / 2.0, math.sqrt(3.0),
                             sensitivity, math.inf, f"resolution {r:g}\" of the item's indication")]
+
+
+def accuracy_rows(peak_to_peak_arcsec: float, budget: UncertaintyBudget, curve: str,
+                  points: str) -> list[tuple[str, str, str]]:
+    """The statistics rows every certificate has: the accuracy figure judged for
+    conformity (half the peak-to-peak of the ``curve`` error) with U, and U itself."""
+    big_u = budget.max_expanded_arcsec
+    digits = uncertainty_decimals(big_u)
+    return [(f"Accuracy (half peak-to-peak, {curve})",
+             format_uncertain(peak_to_peak_arcsec / 2.0, big_u, "\""), ""),
+            ("Expanded uncertainty U (k = 2)", f"{big_u:.{digits}f}\"", f"largest over the {points}")]
 
 
 def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:

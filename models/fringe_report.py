@@ -25,7 +25,7 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    format_uncertain,
+    accuracy_rows,
     reference_standard_components,
 )
 from models.certificate_metadata import CertificateMetadata
@@ -121,10 +121,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
          f"peak-to-peak {pp_raw:.3f}\" ({pp_raw / period * 100:.2f} % of a period)"),
         ("After compensation", f"{comp.min():+.3f}\" … {comp.max():+.3f}\"",
          f"peak-to-peak {pp_comp:.3f}\" ({pp_comp / period * 100:.2f} % of a period)"),
-        ("Accuracy (half peak-to-peak, compensated)",
-         format_uncertain(pp_comp / 2.0, budget.max_expanded_arcsec, "\""), ""),
-        ("Expanded uncertainty U (k = 2)", f"{budget.max_expanded_arcsec:.3f}\"",
-         "largest over the samples"),
+        *accuracy_rows(pp_comp, budget, "compensated", "samples"),
         ("Correction table", f"{result.table.size} entries", ""),
     ]
     if result.sin_periods.shape[0] > 1:

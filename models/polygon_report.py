@@ -27,7 +27,7 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    format_uncertain,
+    accuracy_rows,
     reference_standard_components,
     resolution_component,
 )
@@ -132,10 +132,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),
         ("Corrected error", f"{st.min:+.2f}\" … {st.max:+.2f}\"",
          f"peak-to-peak {st.peak_to_peak:.2f}\""),
-        ("Accuracy (half peak-to-peak, corrected)",
-         format_uncertain(st.peak_to_peak / 2.0, budget.max_expanded_arcsec, "\""), ""),
-        ("Expanded uncertainty U (k = 2)", f"{budget.max_expanded_arcsec:.2f}\"",
-         "largest over the positions"),
+        *accuracy_rows(st.peak_to_peak, budget, "corrected", "positions"),
     ]
     h = result.harmonics
     if h.amplitude.size > 2:

@@ -23,7 +23,7 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    format_uncertain,
+    accuracy_rows,
     reference_standard_components,
     resolution_component,
 )
@@ -102,10 +102,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         ("Raw error", f"{r.min:+.2f}\" … {r.max:+.2f}\"", f"peak-to-peak {r.peak_to_peak:.2f}\""),
         ("Corrected error", f"{c.min:+.2f}\" … {c.max:+.2f}\"",
          f"peak-to-peak {c.peak_to_peak:.2f}\", RMS {c.rms:.2f}\""),
-        ("Accuracy (half peak-to-peak, corrected)",
-         format_uncertain(c.peak_to_peak / 2.0, budget.max_expanded_arcsec, "\""), ""),
-        ("Expanded uncertainty U (k = 2)", f"{budget.max_expanded_arcsec:.2f}\"",
-         "largest over the points"),
+        *accuracy_rows(c.peak_to_peak, budget, "corrected", "points"),
     ]
     if result.iso230 is not None:
         for k, v in result.iso230.figures.items():

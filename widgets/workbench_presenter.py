@@ -296,7 +296,9 @@ class WorkbenchPresenter(QObject):
         worker_pool().start(_ImportTask(self.kind, path, self._signals))
 
     def _on_import_finished(self, rows, path: str, error: str) -> None:
-        self._set_busy(False)
+        if rows is None or len(rows) <= THREAD_THRESHOLD_ROWS:
+            self._set_busy(False)  # a large sheet stays "busy" into its analysis: no
+            #                        repaint of the old plots in between
         if rows is None:
             self.import_failed.emit(error)
             return

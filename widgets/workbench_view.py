@@ -3,7 +3,7 @@ fit summary, warnings and plot tabs on the right."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QGroupBox,
@@ -26,6 +26,7 @@ class WorkbenchView(QWidget):
     def __init__(self, title: str, parent=None) -> None:
         super().__init__(parent)
         self.title = title
+        self._busy = False
         self._setup_ui()
         self._layout()
 
@@ -102,8 +103,16 @@ class WorkbenchView(QWidget):
         (about to be replaced) are not repainted: their painting calls Python, which would
         wait for the worker's GIL and stall the window; menus and the bar stay live."""
         self.busy.setVisible(busy)
+        self._busy = busy
         self.table.setUpdatesEnabled(not busy)
-        self.plot_tabs.setUpdatesEnabled(not busy)
+        if busy:
+            self.plot_tabs.setUpdatesEnabled(False)
+        else:  # the plots repaint in a later event than the table: two short pauses
+            QTimer.singleShot(0, self._resume_plots)  # instead of one long one
+
+    def _resume_plots(self) -> None:
+        if not self._busy:
+            self.plot_tabs.setUpdatesEnabled(True)
 
     def set_readings_caption(self, text: str) -> None:
         self.readings_label.setText(text)

@@ -166,12 +166,14 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         f"| … longest event-loop stall meanwhile (5 ms heartbeat, median gap "
         f"{beat * 1e3:.1f} ms) | {stall * 1e3:.0f} ms | < 100 ms | {mark(stall < 0.1)} |",
         "",
-        "What limits the two missed targets (see the README, *Performance*): an edit re-fits "
-        "the set-up (~12 ms) and redraws three plots whose auto-ranged axes re-render their "
-        "tick labels (~25 ms of the paint); during a 1M-sample import the readings are a "
-        "million Python row lists, built and parsed by a worker thread that competes with "
-        "the window's Python callbacks (pyqtgraph painting, the table model) for the GIL.",
+        "What limits the stall: a million readings are a million Python row lists. Two "
+        "pauses remain, each ~0.1–0.2 s on this machine: when Qt first lays out the "
+        "million-row table (its model calls run in Python while the analysis worker also "
+        "wants the GIL), and the first paint of the new plots after the result. Fixed on "
+        "the way (1.1 s before): our own thread pool (Qt's painting waits on the global "
+        "one), the GIL handed back every 0.1 ms while a worker runs, chunked parsing, plots "
+        "thinned on the worker, no repaint of table and plots while busy.",
     ])
     assert np.median(cold) < 2.0
-    assert np.median(edit) < 0.2  # regression guard: it was 264 ms before this work
-    assert stall < 2.0  # regression guard: it was 1.1 s
+    assert np.median(edit) < 0.05
+    assert stall < 1.0  # regression guard: it was 1.1 s; the target (0.1 s) is reported
