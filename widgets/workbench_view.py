@@ -99,16 +99,16 @@ class WorkbenchView(QWidget):
         self.warnings.setVisible(bool(warnings))
 
     def set_busy(self, busy: bool) -> None:
-        """Show the busy bar. While a worker reads or analyses, the table and the plots
-        (about to be replaced) are not repainted: their painting calls Python, which would
-        wait for the worker's GIL and stall the window; menus and the bar stay live."""
+        """Show the busy bar. While a worker reads or analyses, the plots (about to be
+        replaced) are not repainted: pyqtgraph paints in Python, which would wait for the
+        worker's GIL and stall the window. The table stays live (it is what the user
+        looks at, and holding back a million-row table's layout only moves it later)."""
         self.busy.setVisible(busy)
         self._busy = busy
-        self.table.setUpdatesEnabled(not busy)
         if busy:
             self.plot_tabs.setUpdatesEnabled(False)
         else:  # the plots repaint in a later event than the table: two short pauses
-            QTimer.singleShot(0, self._resume_plots)  # instead of one long one
+            QTimer.singleShot(20, self._resume_plots)  # instead of one long one
 
     def _resume_plots(self) -> None:
         if not self._busy:
