@@ -9,12 +9,12 @@ same figures.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from models.certificate_metadata import CertificateMetadata
-from models.conformity import Conformity, uncertainty_decimals
+from models.conformity import Conformity, significant_decimals, uncertainty_decimals
 from models.uncertainty_budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -51,7 +51,6 @@ class Table:
     header: tuple[str, ...]
     rows: list[tuple[str, ...]]
     note: str = ""
-    numeric: list[tuple[float, ...]] = field(default_factory=list)  # same rows, unformatted
 
 
 @dataclass(frozen=True)
@@ -98,15 +97,13 @@ def _dof_text(nu: float) -> str:
 
 def budget_table(budget: UncertaintyBudget, point: str) -> Table:
     """The budget at its worst point as a printable table, with the combined line."""
-    rows, numeric = [], []
+    rows = []
     for r in budget.table():
         dof = _dof_text(r["dof"])
         rows.append((str(r["name"]), str(r["evaluation"]), str(r["distribution"]),
                      _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
                      f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
                      f"{100 * r['share']:.1f}", dof))
-        numeric.append((r["value_arcsec"], r["divisor"], r["u_arcsec"], r["sensitivity"],
-                        r["contribution_arcsec"], r["share"], r["dof"]))
     i = budget.worst_index
     nu = budget.effective_dof()
     nu_text = _dof_text(nu)
@@ -120,7 +117,7 @@ def budget_table(budget: UncertaintyBudget, point: str) -> Table:
             f"{100 * budget.coverage_probability():.1f} % (k for 95 %: {budget.k95():.2f}).")
     return Table("Uncertainty budget", ("Input", "Type", "Distribution", "Value (\")", "Divisor",
                                         "u (\")", "c", "c·u (\")", "Share %", "ν"),
-                 rows, note, numeric)
+                 rows, note)
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
@@ -165,7 +162,7 @@ def accuracy_rows(peak_to_peak_arcsec: float, budget: UncertaintyBudget, curve: 
 
 def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:
     """``value ± U`` with U rounded to two significant digits and the value to match."""
-    if not np.isfinite(expanded) or expanded <= 0:
+    decimals = significant_decimals(expanded)
+    if decimals is None:
         return f"{value:.{digits}f}{unit}"
-    decimals = max(0, 1 - int(math.floor(math.log10(expanded))))
     return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"

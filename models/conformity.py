@@ -12,14 +12,21 @@ from dataclasses import dataclass
 
 from models.certificate_metadata import DECISION_RULES
 
-__all__ = ["Conformity", "decide_conformity", "uncertainty_decimals"]
+__all__ = ["Conformity", "decide_conformity", "significant_decimals", "uncertainty_decimals"]
+
+
+def significant_decimals(expanded: float) -> int | None:
+    """Decimals that show U with two significant digits (GUM 7.2.6); None if U is not
+    a positive number."""
+    if not math.isfinite(expanded) or expanded <= 0:
+        return None
+    return max(0, 1 - int(math.floor(math.log10(expanded))))
 
 
 def uncertainty_decimals(expanded: float) -> int:
-    """Decimals that show U with two significant digits (GUM 7.2.6), at least two."""
-    if not math.isfinite(expanded) or expanded <= 0:
-        return 2
-    return max(2, 1 - int(math.floor(math.log10(expanded))))
+    """:func:`significant_decimals`, but never fewer than two (arcsec are printed to 0.01")."""
+    decimals = significant_decimals(expanded)
+    return 2 if decimals is None else max(2, decimals)
 
 
 @dataclass(frozen=True)

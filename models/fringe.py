@@ -138,8 +138,7 @@ def model_signal_std(theta_fit_rad, residual_std: float, orders: tuple[int, ...]
     Linear least squares: u²(θ) = σ² x(θ)ᵀ (XᵀX)⁻¹ x(θ), with X the design of
     the fit's samples ``theta_fit_rad`` and σ the residual standard deviation.
     """
-    x_fit = _design(np.asarray(theta_fit_rad, dtype=float), orders)
-    inv = np.linalg.pinv(x_fit.T @ x_fit)
+    _, inv = _solver(np.asarray(theta_fit_rad, dtype=float), orders)
     x = _design(np.asarray(theta_rad, dtype=float), orders)
     return residual_std * np.sqrt(np.clip(np.einsum("ij,jk,ik->i", x, inv, x), 0.0, None))
 

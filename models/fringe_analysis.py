@@ -14,7 +14,6 @@ from models.fringe import (
     ChannelFit,
     CorrectionTable,
     build_correction_table,
-    fit_channel,
     fit_channel_pso,
     fit_channels,
     fit_periods,
@@ -102,8 +101,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
         sin_fit, cos_fit = ps.fit, pc.fit
         pso_seconds = ps.seconds + pc.seconds
-        lsq_cost = fit_channel(theta[span], u_sin[span]).cost + fit_channel(theta[span],
-                                                                            u_cos[span]).cost
+        lsq_cost = sum(f.cost for f in fit_channels(theta[span], [u_sin[span], u_cos[span]]))
         warnings.append(f"Particle swarm on the first period: cost {ps.cost + pc.cost:.3g} V² "
                         f"against {lsq_cost:.3g} V² for least squares, {pso_seconds:.2f} s.")
     elif s["method"] == "lsq":

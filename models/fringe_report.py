@@ -111,8 +111,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
             f"all {raw.size} samples are in the CSV/XLSX results export.")
     results = Table("Results per sample (first period; compensated = raw + correction)",
                     ("Sample", "Phase θ (°)", "Raw error (\")", "Correction (\")",
-                     "Compensated (\")", "U (k = 2) (\")"), rows, note,
-                    [tuple(map(float, r)) for r in numeric])
+                     "Compensated (\")", "U (k = 2) (\")"), rows, note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
     stat_rows = [
         ("Samples", f"{raw.size}", f"{result.samples_per_period} per period, L = "

@@ -125,8 +125,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     results = Table(f"Results per position (mean of {m} set{'s' if m > 1 else ''}; corrected = "
                     "raw + pyramidal correction)",
                     ("Position", "Nominal (°)", "Raw error (\")", "Correction (\")",
-                     "Corrected error (\")", "U (k = 2) (\")"), rows,
-                    numeric=[tuple(map(float, r)) for r in numeric])
+                     "Corrected error (\")", "U (k = 2) (\")"), rows)
     st, raw = result.stats, result.raw_stats
     stat_rows = [
         ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),

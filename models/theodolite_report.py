@@ -95,7 +95,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
             for t, r, c, e, u in numeric]
     results = Table("Results per point (corrected = raw + correction)",
                     ("θ (°)", "Raw error (\")", "Correction (\")", "Corrected error (\")",
-                     "U (k = 2) (\")"), rows, numeric=[tuple(map(float, r)) for r in numeric])
+                     "U (k = 2) (\")"), rows)
     r, c = result.raw_stats, result.corrected_stats
     stat_rows = [
         ("Points", f"{c.n}", ""),

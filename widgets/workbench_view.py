@@ -26,7 +26,6 @@ class WorkbenchView(QWidget):
     def __init__(self, title: str, parent=None) -> None:
         super().__init__(parent)
         self.title = title
-        self._busy = False
         self._setup_ui()
         self._layout()
 
@@ -104,14 +103,13 @@ class WorkbenchView(QWidget):
         worker's GIL and stall the window. The table stays live (it is what the user
         looks at, and holding back a million-row table's layout only moves it later)."""
         self.busy.setVisible(busy)
-        self._busy = busy
         if busy:
             self.plot_tabs.setUpdatesEnabled(False)
         else:  # the plots repaint in a later event than the table: two short pauses
             QTimer.singleShot(20, self._resume_plots)  # instead of one long one
 
     def _resume_plots(self) -> None:
-        if not self._busy:
+        if self.busy.isHidden():  # not busy again meanwhile
             self.plot_tabs.setUpdatesEnabled(True)
 
     def set_readings_caption(self, text: str) -> None:
