@@ -139,7 +139,11 @@ def _export(args: argparse.Namespace, kind, result) -> int:
     except MetadataError as exc:
         sys.stderr.write(f"anglebench analyze: {exc}\n")
         return EXIT_BAD_INPUT
-    document = kind.certificate_document(result, metadata, Path(args.file).name)
+    try:
+        document = kind.certificate_document(result, metadata, Path(args.file).name)
+    except MetadataError as exc:
+        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        return EXIT_BAD_INPUT
     try:
         if args.certificate:
             write_certificate_pdf(args.certificate, document)

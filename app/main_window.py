@@ -379,9 +379,9 @@ class MainWindow(QMainWindow):
                                      "CSV (*.csv);;Excel workbook (*.xlsx)")
         if not path:
             return False
-        document = kind.certificate_document(result, self.certificate_metadata(),
-                                             self._source_name())
         try:
+            document = kind.certificate_document(result, self.certificate_metadata(),
+                                                 self._source_name())
             if path.lower().endswith(".xlsx"):
                 write_results_xlsx(path, document)
             else:

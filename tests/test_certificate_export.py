@@ -7,6 +7,7 @@ import json
 import re
 import subprocess
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -15,7 +16,7 @@ from openpyxl import load_workbook
 from pypdf import PdfReader
 
 from app.certificate_pdf import certificate_pdf_bytes, font_files
-from models.certificate_metadata import CertificateMetadata
+from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.conformity import uncertainty_decimals
 from models.kinds import KINDS
 from models.readings import ReadingsSheet
@@ -33,6 +34,11 @@ META = CertificateMetadata.from_dict({
     "notes": "=cmd|' /C calc'!A0 <b>x</b> 备注"})
 
 
+def _meta(key):
+    """The example details; the polygon takes its tolerance from its grade alone."""
+    return replace(META, tolerance_arcsec=None) if key == "polygon" else META
+
+
 def _analysed(key):
     kind = KINDS[key]
     table = read_table(SAMPLES / kind.sample_file)
@@ -48,7 +54,7 @@ def _text(pdf: bytes) -> tuple[str, int]:
 @pytest.mark.parametrize("key", sorted(KINDS))
 def test_certificate_of_each_sample_carries_its_figures(key):
     kind, result = _analysed(key)
-    document = kind.certificate_document(result, META, kind.sample_file)
+    document = kind.certificate_document(result, _meta(key), kind.sample_file)
     pdf = certificate_pdf_bytes(document)
     text, pages = _text(pdf)
     flat = re.sub(r"\s+", " ", text)
@@ -75,11 +81,34 @@ def test_certificate_of_each_sample_carries_its_figures(key):
 
 def test_certificate_is_deterministic_and_marks_drafts():
     kind, result = _analysed("polygon")
-    doc = kind.certificate_document(result, META, "p.csv")
+    doc = kind.certificate_document(result, _meta("polygon"), "p.csv")
     assert certificate_pdf_bytes(doc) == certificate_pdf_bytes(doc)
     draft = kind.certificate_document(result, CertificateMetadata(created="2026-01-01T00:00:00"))
     text, _ = _text(certificate_pdf_bytes(draft))
     assert "DRAFT" in text and "customer" in text
+
+
+def test_polygon_certificate_prints_every_warning_of_the_window():
+    kind, result = _analysed("polygon")
+    text, _ = _text(certificate_pdf_bytes(kind.certificate_document(result, _meta("polygon"))))
+    flat = re.sub(r"\s+", " ", text)
+    assert "exceeds the 239\" allowed for grade 3" in flat  # the sample's 480" tilt
+    assert "ω = 90° figure: 250\"" in flat
+    assert "Common zero face 1 of set 1" in flat
+    for w in result.warnings:
+        assert re.sub(r"\s+", " ", w)[:60] in flat
+
+
+@pytest.mark.parametrize("details, message", [
+    ({"tolerance_arcsec": 5}, "tolerance of ±5\" but the workbench is set to grade 3"),
+    ({"item_grade": "grade 5 (±5\")"}, "say 'grade 5 \\(±5\"\\)' but the workbench is set to grade 3"),
+])
+def test_polygon_grade_has_one_source(details, message):
+    kind, result = _analysed("polygon")
+    with pytest.raises(MetadataError, match=message):
+        kind.certificate_document(result, replace(_meta("polygon"), **details))
+    same = replace(_meta("polygon"), tolerance_arcsec=1.0, item_grade="grade 3")
+    assert kind.certificate_document(result, same).tolerance_arcsec == 1.0
 
 
 def test_hostile_text_neither_breaks_the_page_nor_becomes_markup():

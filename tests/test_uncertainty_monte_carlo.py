@@ -12,15 +12,15 @@ import math
 
 import numpy as np
 import pytest
+from rigs.polygon_rig import PolygonRig
 
 from models.certificate_metadata import CertificateMetadata, ReferenceStandard
 from models.fringe import phase_of_samples
 from models.fringe_analysis import FRINGE
 from models.fringe_report import fringe_budget
-from models.polygon import simulate_set
 from models.polygon_analysis import POLYGON
 from models.polygon_report import polygon_budget
-from models.readings import ParsedReadings
+from models.readings import ParsedReadings, ReadingsSheet
 from models.theodolite import SetupParameters, analyze_run, simulate_readings
 from models.theodolite_report import theodolite_budget
 
@@ -59,48 +59,31 @@ def test_theodolite_budget_matches_monte_carlo():
     assert np.max(np.abs(np.array(deviations)[:, ~keep])) < 1e-9
 
 
-def _polygon_parsed(sets: list) -> ParsedReadings:
-    cols: dict[str, list] = {k: [] for k in ("position", "encoder_deg", "polygon_dev_arcsec",
-                                              "ac_x_arcsec", "ac_y_arcsec", "set", "direction")}
-    for set_id, s in enumerate(sets, 1):
-        n = s.encoder_deg.size
-        for i in list(range(n)) + [0]:
-            cols["position"].append(i + 1)
-            cols["encoder_deg"].append(s.encoder_deg[i])
-            cols["polygon_dev_arcsec"].append(s.polygon_dev_arcsec[i])
-            cols["ac_x_arcsec"].append(s.closure_ac_x_arcsec if len(cols["set"]) % (n + 1) == n
-                                       else s.ac_x_arcsec[i])
-            cols["ac_y_arcsec"].append(s.ac_y_arcsec[i])
-            cols["set"].append(set_id)
-            cols["direction"].append("")
-    values = {k: np.array(v, dtype=object if k == "direction" else float) for k, v in cols.items()}
-    return ParsedReadings(values, np.arange(len(cols["set"])))
-
-
-@pytest.mark.parametrize("sets", [1, 3])
-def test_polygon_budget_matches_monte_carlo(sets):
-    rng = np.random.default_rng(5 + sets)
+@pytest.mark.parametrize("directions", [(1,), (1, 1, 1), (1, -1, 1, -1)])
+def test_polygon_budget_matches_monte_carlo(directions):
+    """Exact 3-D rig (tests/rigs): noise, the polygon's true deviations drawn about its
+    certificate; every set shares one zero, so its reading's noise is in every error."""
+    rng = np.random.default_rng(5 + len(directions))
     faces = 24
     theta = np.arange(faces) * 360.0 / faces
     truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
-    truth = truth - truth[0]
     certificate_dev = rng.normal(0.0, 0.2, faces)
     u_polygon = 0.10  # standard uncertainty of each face's certified deviation
     noise = 0.08
     meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
                                                             basis="U95"),))
+    settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
     deviations, budgets = [], []
     for _ in range(TRIALS // 2):
         true_dev = certificate_dev + rng.normal(0.0, u_polygon, faces)
-        runs = []
-        for _ in range(sets):
-            s = simulate_set(faces, truth, psi_arcsec=60.0, omega_deg=70.0,
-                             polygon_dev_arcsec=true_dev, noise_arcsec=noise, rng=rng)
-            s.polygon_dev_arcsec = certificate_dev.copy()  # the analysis knows the certificate
-            runs.append(s)
-        result = POLYGON.analyze(_polygon_parsed(runs), POLYGON.settings_with_defaults(
-            {"grade": 5}))
-        deviations.append(result.mean_corrected_arcsec - truth)
+        rig = PolygonRig(faces, truth, psi_arcsec=60.0, omega_deg=70.0, face_dev_arcsec=true_dev,
+                         certificate_error_arcsec=certificate_dev - true_dev, noise_arcsec=noise,
+                         rng=rng)
+        rows = []
+        for k, d in enumerate(directions):
+            rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
+        result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
+        deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
         budgets.append(polygon_budget(result, meta).combined_arcsec)
     spread = np.std(deviations, axis=0, ddof=1)[1:]
     budget_u = np.sqrt(np.mean(np.square(budgets), axis=0))[1:]

@@ -60,7 +60,8 @@ class PolygonPresenter(WorkbenchPresenter):
     def __init__(self, parent=None) -> None:
         view = WorkbenchView(POLYGON.title)
         self.error_plot = ErrorPlot(x_label="θ face angle (deg)", residual_label="tilt fit res. (\")")
-        self.error_plot.set_curve_names("raw error e", "−pyramidal ε_x", "corrected e + ε_x")
+        self.error_plot.set_curve_names("raw error e", "correction −(ε_x − ε_x,zero)",
+                                        "corrected e − (ε_x − ε_x,zero)")
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
         self.simulation = PolygonSimulation()
@@ -84,8 +85,23 @@ class PolygonPresenter(WorkbenchPresenter):
         form.add_text("closure_limits_arcsec", "closure limits grades 1–7 (\")",
                       tooltip="Closure limit per grade, comma-separated; default half the "
                               "grade's accuracy")
-        form.add_float("autocollimator_accuracy_arcsec", "autocollimator accuracy", 0.0, 10.0, 2,
-                       "\"", 0.05)
+        form.add_choice("counting", "encoder counts",
+                        [("auto", "auto (from the readings)"), ("with", "with the face numbers"),
+                         ("against", "against the face numbers")],
+                        tooltip="Whether the encoder counts up or down as the face numbers rise; "
+                                "auto finds it from the readings and says so")
+        form.add_int("zero_face", "common zero at face", 0, 360,
+                     special="first reading of set 1",
+                     tooltip="Every set's errors are taken from this one reading of set 1, so "
+                             "reversal and repeatability between sets are kept")
+        form.add_choice("closure_drift", "closure drift",
+                        [("report", "report it (uncertainty)"), ("spread", "spread linearly, remove")],
+                        tooltip="The drift a set shows on returning to its first face: report it "
+                                "and carry it in the budget, or spread it linearly over the set "
+                                "and remove it (stated on the certificate)")
+        form.add_float("ac_roll_arcmin", "AC reticle roll ≤", 0.0, 60.0, 1, "′", 0.5,
+                       tooltip="Largest roll of the autocollimator's reticle: it turns part of "
+                               "the vertical reading into the horizontal one (budget input)")
 
     def show_result(self, result: PolygonResult) -> None:
         first = result.sets[0]
@@ -96,9 +112,11 @@ class PolygonPresenter(WorkbenchPresenter):
                                    result.mean_corrected_arcsec)
         if first.tilt is not None:
             self.error_plot.set_residuals(x, first.tilt.residuals_arcsec)
-            dense = np.linspace(0, 360, 361)
-            _, ey = pyramidal_readings(dense, first.tilt.psi_arcsec, first.tilt.omega_deg)
-            _, ey_faces = pyramidal_readings(x, first.tilt.psi_arcsec, first.tilt.omega_deg)
+            dense = np.linspace(0, 360, 361)  # face angle; the model runs in the counting sense
+            _, ey = pyramidal_readings(result.counting * dense, first.tilt.psi_arcsec,
+                                       first.tilt.omega_deg)
+            _, ey_faces = pyramidal_readings(first.theta_deg, first.tilt.psi_arcsec,
+                                             first.tilt.omega_deg)
             self.tilt_plot.readings.setData(x, ey_faces + first.tilt.residuals_arcsec)
             self.tilt_plot.model.setData(dense, ey)
         else:

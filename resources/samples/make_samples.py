@@ -1,4 +1,7 @@
-"""Regenerate the bundled sample files (deterministic): python -m resources.samples.make_samples"""
+"""Regenerate the bundled sample files (deterministic): python -m resources.samples.make_samples
+
+Run from the repository root (the polygon sample is made by the tests' 3-D rig).
+"""
 
 from __future__ import annotations
 
@@ -9,8 +12,8 @@ import numpy as np
 
 from models.angles import format_dms
 from models.fringe import ChannelFit, model_signal, phase_of_samples
-from models.polygon import simulate_set
 from models.theodolite import SetupParameters, simulate_readings
+from tests.rigs.polygon_rig import PolygonRig
 
 HERE = Path(__file__).resolve().parent
 
@@ -37,25 +40,25 @@ def polygon_encoder_error(theta_deg: np.ndarray) -> np.ndarray:
 
 
 def polygon_sample() -> None:
-    """24-face polygon, a forward and a reverse set, tilt ψ = 8' towards ω = 60°."""
+    """24-face polygon, a forward set and a reverse set written in the order measured,
+    tilt ψ = 8' towards ω = 60°, 0.2" backlash, 0.12" autocollimator drift a set, 0.03"
+    noise. Made by the exact 3-D rig of the tests (rotations only, no model code)."""
     rng = np.random.default_rng(2015)
     faces = 24
     theta = np.arange(faces) * 360.0 / faces
     dev = np.round(rng.normal(0, 0.15, faces), 2)
+    rig = PolygonRig(faces, polygon_encoder_error(theta), psi_arcsec=480.0, omega_deg=60.0,
+                     face_dev_arcsec=dev, noise_arcsec=0.03, backlash_arcsec=0.2,
+                     encoder_zero_deg=123.4, ac_zero_x_arcsec=5.0, rng=rng)
+    rows = (rig.set_rows(1, closure_drift_arcsec=0.12)
+            + rig.set_rows(2, reverse=True, closure_drift_arcsec=0.12))
     with open(HERE / "polygon_sample.csv", "w", newline="", encoding="utf-8") as handle:
         writer = csv.writer(handle)
         writer.writerow(["position", "encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec",
                          "ac_y_arcsec", "set", "direction"])
-        for set_id, direction, reversal in ((1, "+", 0.1), (2, "-", -0.1)):
-            s = simulate_set(faces, polygon_encoder_error(theta) + reversal, 480.0, 60.0, dev,
-                             0.03, rng, closure_drift_arcsec=0.12)
-            for i in range(faces):
-                writer.writerow([i + 1, format_dms(s.encoder_deg[i], 2), f"{dev[i]:.2f}",
-                                 f"{s.ac_x_arcsec[i]:.2f}", f"{s.ac_y_arcsec[i]:.2f}", set_id,
-                                 direction])
-            writer.writerow([1, format_dms(s.encoder_deg[0], 2), f"{dev[0]:.2f}",
-                             f"{s.closure_ac_x_arcsec:.2f}", f"{s.ac_y_arcsec[0]:.2f}", set_id,
-                             direction])
+        for position, encoder, cert, ac_x, ac_y, set_id, direction in rows:
+            writer.writerow([position, format_dms(float(encoder), 2), f"{float(cert):.2f}",
+                             f"{float(ac_x):.2f}", f"{float(ac_y):.2f}", set_id, direction])
 
 
 TABLE1_SIN = ChannelFit.from_parameters(-0.0179, {1: (3.7763, 0.026), 3: (-0.0796, 3.2261),
