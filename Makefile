@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: run test bench lint clean
+.PHONY: run test bench lint pictures clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -24,6 +24,11 @@ $(VENV)/.bench-installed: pyproject.toml $(STAMP)
 
 bench: $(STAMP) $(VENV)/.bench-installed
 	QT_QPA_PLATFORM=offscreen $(PY) -m pytest -q -p no:cacheprovider tests/benchmarks -o addopts="" -s
+
+# README pictures: workbench screenshots and sample certificates (needs Debian's poppler-utils)
+pictures: $(STAMP)
+	$(PY) -m resources.samples.make_samples
+	QT_QPA_PLATFORM=offscreen $(PY) -m resources.screenshots.make_pictures
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests

@@ -44,6 +44,14 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--reference-row", type=int, help="theodolite: 1-based reference row")
     p.add_argument("--zenith", action="store_true", help="theodolite: vertical column is zenith V")
     p.add_argument("--grade", type=int, help="polygon: encoder grade 1–7")
+    p.add_argument("--counting", choices=["auto", "with", "against"],
+                   help="polygon: the encoder counts with or against the face numbering")
+    p.add_argument("--zero-face", type=int,
+                   help="polygon: the common zero (0: the first reading of set 1)")
+    p.add_argument("--closure-drift", choices=["report", "spread"],
+                   help="polygon: report the closure drift, or spread it linearly and remove it")
+    p.add_argument("--ac-roll", type=float, metavar="ARCMIN",
+                   help="polygon: the autocollimator reticle's roll limit (budget input)")
     p.add_argument("--lines-per-rev", type=int, help="fringe: grating lines per revolution")
     p.add_argument("--samples-per-period", type=int, help="fringe: samples per grating period")
     return p
@@ -59,6 +67,14 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
         settings["vertical_reading"] = "zenith"
     if args.grade is not None:
         settings["grade"] = args.grade
+    if args.counting:
+        settings["counting"] = args.counting
+    if args.zero_face is not None:
+        settings["zero_face"] = args.zero_face
+    if args.closure_drift:
+        settings["closure_drift"] = args.closure_drift
+    if args.ac_roll is not None:
+        settings["ac_roll_arcmin"] = args.ac_roll
     if args.lines_per_rev is not None:
         settings["lines_per_rev"] = args.lines_per_rev
     if args.samples_per_period is not None:

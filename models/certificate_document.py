@@ -121,11 +121,13 @@ def budget_table(budget: UncertaintyBudget, point: str) -> Table:
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
-                                  reading: str) -> list[BudgetComponent]:
+                                  reading: str, sensitivity_from_first=None) -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
     ``sensitivity`` per point (√2 where the error is the difference of two
     readings, 0 at the reference point); ``reading`` says what one reading is.
+    ``sensitivity_from_first`` is used for a standard whose figure applies to
+    each face's deviation from face 1 (polygon), where the workbench has one.
     """
     out = []
     for std in metadata.standards:
@@ -134,9 +136,12 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or "Reference standard"
         cert = f", certificate {std.certificate_no}" if std.certificate_no else ""
+        per, c = reading, sensitivity
+        if std.applies_to == "from face 1" and sensitivity_from_first is not None:
+            per, c = "face, stated from face 1", sensitivity_from_first
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_arcsec, divisor, sensitivity, math.inf,
-            f"{BASIS_DIVISORS[std.basis][0]} per {reading}{cert}"))
+            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf,
+            f"{BASIS_DIVISORS[std.basis][0]} per {per}{cert}"))
     return out
 
 

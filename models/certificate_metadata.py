@@ -46,6 +46,10 @@ LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_sc
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
 
+#: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
+APPLIES_TO = ("reading", "from face 1")
+
+
 class MetadataError(ValueError):
     """A metadata field cannot be used; the message names the field."""
 
@@ -93,7 +97,10 @@ class ReferenceStandard:
 
     ``uncertainty_arcsec`` stated as ``basis`` (see BASIS_DIVISORS) enters the
     budget as a Type B component for each reading made with it; leave it empty
-    for a standard whose uncertainty does not enter the result.
+    for a standard whose uncertainty does not enter the result. ``applies_to``
+    says what the figure is the uncertainty of: each ``reading`` (the default),
+    or each face's deviation ``from face 1`` (a polygon certificate that states
+    its deviations from face 1, whose face 1 is then exact).
     """
 
     description: str = ""
@@ -101,6 +108,7 @@ class ReferenceStandard:
     certificate_no: str = ""
     uncertainty_arcsec: float | None = None
     basis: str = "U95"
+    applies_to: str = "reading"
 
     @classmethod
     def from_dict(cls, data: Any, index: int) -> ReferenceStandard:
@@ -115,9 +123,14 @@ class ReferenceStandard:
         if u is not None and u < 0:
             raise MetadataError(f"certificate field '{name}.uncertainty_arcsec' must not be "
                                 "negative")
+        applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
+        if applies_to not in APPLIES_TO:
+            raise MetadataError(f"certificate field '{name}.applies_to' must be one of "
+                                f"{', '.join(APPLIES_TO)}, not '{applies_to}'")
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
-                   clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis)
+                   clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
+                   applies_to)
 
 
 @dataclass(frozen=True)

@@ -170,7 +170,11 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     zero = _zero_index(result)
     pair = np.full(n, math.sqrt(2.0))
     pair[zero] = 0.0
-    components = reference_standard_components(metadata, pair, "face or reading")
+    # a deviation stated from face 1: dev_i − dev_z has face 1's term exact
+    not_first = (np.arange(n) != 0).astype(float)
+    from_first = np.sqrt(not_first + not_first[zero])
+    from_first[zero] = 0.0
+    components = reference_standard_components(metadata, pair, "face or reading", from_first)
     noise_components, noise = _noise_components(result, n, zero)
     components += noise_components
     u_pyr = _pyramidal_uncertainty(result)
@@ -240,10 +244,12 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
             for p, t, r, c, e, u in numeric]
     mean = "mean of the two directions' means" if result.reversal_arcsec is not None else \
         f"mean of {m} set{'s' if m > 1 else ''}"
-    results = Table(f"Results per position ({mean}; error = indicated − reference; corrected = "
-                    "raw + correction, the correction removing the pyramidal error)",
+    results = Table(f"Results per position ({mean})",
                     ("Position", "Nominal (°)", "Raw error (\")", "Correction (\")",
-                     "Corrected error (\")", "U (k = 2) (\")"), rows)
+                     "Corrected error (\")", "U (k = 2) (\")"), rows,
+                    f"Error = indicated − reference, from face {result.zero_face} of set 1. "
+                    "Corrected = raw + correction; the correction removes the error the "
+                    "pyramidal tilt induces.")
     st, raw = result.stats, result.raw_stats
     stat_rows = [
         ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),
@@ -269,7 +275,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     plots = [PlotFigure("Raw and corrected error", "position angle (°)", "error (\")", (
         PlotSeries("raw (mean)", th, result.mean_error_arcsec, (31, 119, 180), True),
         PlotSeries("corrected (mean)", th, result.mean_corrected_arcsec, (44, 160, 44), True),
-        PlotSeries("pyramidal correction", th, correction, (255, 127, 14)),
+        PlotSeries("correction (pyramidal)", th, correction, (255, 127, 14)),
     ))]
     plots.append(PlotFigure("Corrected error with its expanded uncertainty U (k = 2)",
                             "position angle (°)", "error (\")", (

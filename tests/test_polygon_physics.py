@@ -273,3 +273,56 @@ def test_tilt_advice_names_the_faces_the_technician_sees(counting, sense):
     result = analyze(rows, grade=3)
     assert f"highest at face {high} and lowest at face {low}" in result.tilt_verdict
     assert any("exceeds the 239\" allowed" in w for w in result.warnings)
+
+
+# -- the budget's polygon and roll inputs ------------------------------------------------
+def test_polygon_stated_from_face_1_has_sensitivity_one():
+    from models.certificate_metadata import CertificateMetadata
+    from models.polygon_report import polygon_budget
+
+    rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0)
+    for zero, expected in ((1, [0.0] + [1.0] * 11), (4, None)):
+        result = analyze(rig.set_rows(), zero_face=zero)
+
+        def contribution(applies_to, result=result):
+            meta = CertificateMetadata.from_dict({"standards": [
+                {"description": "polygon", "uncertainty_arcsec": 0.2, "basis": "u",
+                 "applies_to": applies_to}]})
+            return polygon_budget(result, meta).components[0].contribution(12)
+
+        per_reading = contribution("reading")
+        assert per_reading[zero - 1] == 0.0
+        np.testing.assert_allclose(np.delete(per_reading, zero - 1), 0.2 * np.sqrt(2))
+        from_first = contribution("from face 1")
+        if expected is not None:
+            np.testing.assert_allclose(from_first, 0.2 * np.array(expected))
+        else:  # dev_i − dev_4: face 1's own term is exact
+            assert from_first[0] == pytest.approx(0.2) and from_first[3] == 0.0
+            assert from_first[5] == pytest.approx(0.2 * np.sqrt(2))
+
+
+def test_reticle_roll_enters_as_the_issue_figures_it():
+    """A 1′ roll over 960″ of vertical span (ψ = 480″) moves a horizontal reading by 0.28″."""
+    from models.certificate_metadata import CertificateMetadata
+    from models.polygon_report import polygon_budget
+
+    rig = PolygonRig(24, encoder_error(24), psi_arcsec=480.0, omega_deg=0.0)
+    result = analyze(rig.set_rows(), ac_roll_arcmin=1.0)
+    roll = next(c for c in polygon_budget(result, CertificateMetadata()).components
+                if "roll" in c.name)
+    assert np.max(roll.value_arcsec) == pytest.approx(960.0 / 3437.75, rel=1e-3)  # 0.28″ limit
+    assert np.max(roll.contribution(24)) == pytest.approx(0.279 / np.sqrt(3), rel=1e-2)
+
+
+def test_cli_takes_the_polygon_settings(tmp_path, capsys):
+    rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0, counting=-1)
+    path = tmp_path / "run.csv"
+    write_csv(path, rig.set_rows(closure_drift_arcsec=0.3))
+    assert main(["analyze", "polygon", str(path), "--json", "--counting", "against", "--zero-face",
+                 "3", "--closure-drift", "spread", "--ac-roll", "2"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["counting"] == "against" and data["zero_face"] == 3
+    assert data["closure_drift_spread"] is True
+    np.testing.assert_allclose(data["mean_corrected_error_arcsec"], rig.truth_arcsec(3), atol=1e-3)
+    assert main(["analyze", "polygon", str(path), "--counting", "with"]) == 2
+    assert "counting with the face numbering" in capsys.readouterr().err

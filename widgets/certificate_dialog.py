@@ -51,9 +51,10 @@ _TEXT_FIELDS = {
     "item_resolution_arcsec": "Resolution (\")", "temperature_c": "Temperature (°C)",
     "humidity_pct": "Relative humidity (%)", "operator": "Operator", "approver": "Approved by",
 }
-_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis")
+_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
+                     "applies_to")
 _STANDARD_HEADERS = ("Standard", "Serial no.", "Certificate no.", "Uncertainty (\")",
-                     "Stated as (U95, MPE, u)")
+                     "Stated as (U95, MPE, u)", "Per (reading, from face 1)")
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -182,6 +183,8 @@ class CertificateDialog(QDialog):
             text = "" if value is None else f"{value:g}" if isinstance(value, float) else str(value)
             if key == "basis" and not text:
                 text = "U95"
+            if key == "applies_to" and not text:
+                text = "reading"
             self.standards.setItem(row, col, QTableWidgetItem(text))
 
     def _remove_standard(self) -> None:
@@ -199,7 +202,7 @@ class CertificateDialog(QDialog):
             entry = {key: (self.standards.item(row, col).text()
                            if self.standards.item(row, col) else "")
                      for col, key in enumerate(_STANDARD_COLUMNS)}
-            if any(v.strip() for k, v in entry.items() if k != "basis"):
+            if any(v.strip() for k, v in entry.items() if k not in ("basis", "applies_to")):
                 standards.append(entry)
         data["standards"] = standards
         return data
