@@ -39,6 +39,29 @@ def test_polygon_sample_plots_and_closure_row(qtbot, polygon):
     assert heights[0] == pytest.approx(0.35, abs=0.05)  # eccentricity of the sample encoder
 
 
+def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    result = polygon.result
+    _, raw = polygon.error_plot.raw_curve.getData()
+    _, correction = polygon.error_plot.model_curve.getData()
+    _, corrected = polygon.error_plot.corrected_curve.getData()
+    np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)  # corrected = raw + correction
+    mean_pyramidal = np.mean([s.pyramidal_error_arcsec for s in result.sets], axis=0)
+    np.testing.assert_allclose(correction, -mean_pyramidal, atol=1e-9)
+    assert "exceeds the 239\" allowed" in polygon.view.warnings.text()
+    zero = polygon.view.settings.field("zero_face")
+    zero.setValue(5)
+    qtbot.waitUntil(lambda: polygon.result.zero_face == 5)
+    assert polygon.result.mean_corrected_arcsec[4] == pytest.approx(
+        0.5 * (0.0 + polygon.result.sets[1].corrected_error_arcsec[4]))
+    counting = polygon.view.settings.field("counting")
+    counting.setCurrentIndex(counting.findData("against"))
+    qtbot.waitUntil(lambda: polygon.result is None)  # the sample counts with the numbering
+    assert polygon.view.summary.toPlainText().startswith("No result: row 2: encoder reading")
+    assert "(counting against the face numbering" in polygon.view.summary.toPlainText()
+
+
 def test_polygon_failed_closure_shows_invalid(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
