@@ -13,7 +13,12 @@ from typing import Any
 
 from models.readings import Column, ParsedReadings
 
-__all__ = ["AnalysisKind", "SettingsError"]
+__all__ = ["SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AnalysisKind", "SettingsError"]
+
+#: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
+#: correction is the negative of an error.
+SIGN_CONVENTION = "indicated_minus_reference"
+SIGN_CONVENTION_TEXT = "error = indicated − reference (VIM); correction = −error"
 
 
 class SettingsError(ValueError):

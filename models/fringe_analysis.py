@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
 from models.fringe import (
     ChannelFit,
     CorrectionTable,
@@ -134,6 +134,7 @@ def to_json(result: FringeResult) -> dict[str, Any]:
         "compensated_peak_to_peak_arcsec": result.compensated_peak_to_peak_arcsec,
         "period_arcsec": period_arcsec(result.lines_per_rev),
         "method": result.method,
+        "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
 

@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
 from models.error_stats import error_stats
 from models.iso230 import iso230_evaluate
 from models.polygon import (
@@ -335,6 +335,7 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "mean_reversal_arcsec": result.mean_reversal_arcsec,
         "repeatability_arcsec": None if result.repeatability_arcsec is None
         else float(np.max(result.repeatability_arcsec)),
+        "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
     if len(result.sets) > 1:

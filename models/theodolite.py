@@ -392,7 +392,12 @@ def _separation_warnings(ident: Identification, limit: float = 0.999) -> list[st
 
 @dataclass
 class TheodoliteResult:
-    """Everything the workbench, the CLI and the certificate show (arrays over used rows)."""
+    """Everything the workbench, the CLI and the certificate show (arrays over used rows).
+
+    Errors are errors of indication, indicated − reference: the raw error is
+    (θ − θ₀) − (A − A₀), the negative of the seed's ζ' = A − θ (which is the
+    correction); ``model_error_arcsec`` = −ζ(θ) is the set-up's share of it.
+    """
 
     theta_deg: np.ndarray
     raw_error_arcsec: np.ndarray
@@ -501,8 +506,12 @@ def analyze_run(
         elev_res = (elev - e_model) * 3600.0
     else:
         raise ValueError(f"unknown identification method '{method}'")
-    model = induced_error_arcsec(rotation, *ident.setup.as_array())
-    corrected = raw_arcsec - model
+    zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
+    # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
+    # is its negative, and the set-up's share of it is −ζ.
+    raw_error = -raw_arcsec
+    model = -zeta
+    corrected = raw_error - model
     warnings = list(ident.warnings)
     if accuracy_arcsec and ident.residual_rms_arcsec > 3.0 * accuracy_arcsec:
         warnings.append(
@@ -514,13 +523,13 @@ def analyze_run(
         iso = iso230_evaluate(theta, corrected, directions)
     return TheodoliteResult(
         theta_deg=theta,
-        raw_error_arcsec=raw_arcsec,
+        raw_error_arcsec=raw_error,
         model_error_arcsec=model,
         model_uncertainty_arcsec=_model_uncertainty(rotation, ident),
         corrected_error_arcsec=corrected,
         identification=ident,
         elevation_residuals_arcsec=elev_res,
-        raw_stats=error_stats(raw_arcsec),
+        raw_stats=error_stats(raw_error),
         corrected_stats=error_stats(corrected),
         reference_theta_deg=float(theta[reference_index]),
         iso230=iso,
@@ -537,11 +546,12 @@ def simulate_readings(
 ):
     """Readings (A, E in degrees) of a run with the given set-up.
 
-    The axis indicates θ_i but truly turns θ_i + e_i (``true_error_arcsec``);
-    the theodolite sees that true rotation, plus Gaussian reading noise.
+    The axis indicates θ_i with the error of indication e_i (``true_error_arcsec``,
+    indicated − true): it truly turns θ_i − e_i. The theodolite sees that true
+    rotation, plus Gaussian reading noise.
     """
     theta = np.asarray(theta_deg, dtype=float)
-    true_rot = theta + (0.0 if true_error_arcsec is None else np.asarray(true_error_arcsec) / 3600)
+    true_rot = theta - (0.0 if true_error_arcsec is None else np.asarray(true_error_arcsec) / 3600)
     az, el = forward_readings(true_rot, *setup.as_array())
     if noise_arcsec:
         rng = rng or np.random.default_rng()

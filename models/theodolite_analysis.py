@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
 from models.readings import Column, ColumnKind, ParsedReadings
 from models.theodolite import TheodoliteResult, analyze_run
 from models.theodolite_report import theodolite_certificate
@@ -86,6 +86,7 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
         "method": ident.method,
         "corrected_stats_arcsec": result.corrected_stats.as_dict(),
         "raw_stats_arcsec": result.raw_stats.as_dict(),
+        "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
     if result.iso230 is not None:

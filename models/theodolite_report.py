@@ -40,9 +40,11 @@ METHOD = (
     "are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite's vertical, "
     "its direction α and the elevation β of the mirror normal — makes A differ from the axis "
     "rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings "
-    "(sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished), ζ is "
-    "evaluated at the axis' true rotation and removed: corrected error = (A − A₀) − (θ − θ₀) − "
-    "ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed."
+    "(sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error "
+    "of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed's "
+    "A − θ; the set-up's share of it, −ζ evaluated at the axis' true rotation, is removed: "
+    "corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, "
+    "where the theodolite was zeroed."
 )
 
 
@@ -113,8 +115,8 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     th = result.theta_deg[order]
     plots = (
         PlotFigure("Raw error, set-up model and corrected error", "θ (°)", "error (\")", (
-            PlotSeries("raw ζ'", th, result.raw_error_arcsec[order], (31, 119, 180), True),
-            PlotSeries("model ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
+            PlotSeries("raw error", th, result.raw_error_arcsec[order], (31, 119, 180), True),
+            PlotSeries("set-up share −ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
             PlotSeries("corrected", th, result.corrected_error_arcsec[order], (44, 160, 44), True),
         )),
         PlotFigure("Corrected error with its expanded uncertainty U (k = 2)", "θ (°)",

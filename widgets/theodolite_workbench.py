@@ -18,7 +18,8 @@ class TheodolitePresenter(WorkbenchPresenter):
     def __init__(self, parent=None) -> None:
         view = WorkbenchView(THEODOLITE.title)
         self.error_plot = ErrorPlot(residual_label="E residual (\")")
-        self.error_plot.set_curve_names("raw ζ' = A − θ", "model ζ(θ)", "corrected e = ζ' − ζ")
+        self.error_plot.set_curve_names("raw error θ − A", "set-up share −ζ(θ)",
+                                        "corrected = raw + ζ")
         self.simulation = TheodoliteSimulation()
         view.add_plot_tab(self.error_plot, "Error curves")
         view.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
