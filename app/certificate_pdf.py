@@ -27,6 +27,7 @@ from fpdf.enums import TableCellFillMode, XPos, YPos
 from fpdf.fonts import FontFace
 
 from models import __version__
+from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.atomic_write import write_bytes_atomic
 from models.certificate_document import CertificateDocument, PlotFigure, Table, budget_table
 from models.conformity import uncertainty_decimals
@@ -320,7 +321,7 @@ def _standards_table(document: CertificateDocument) -> Table:
 def _render(document: CertificateDocument) -> FPDF:
     meta = document.metadata
     pdf = _CertificatePdf(document)
-    pdf.set_title(f"Test certificate {meta.certificate_number}".strip())
+    pdf.set_title(f"{document.title} {meta.certificate_number}".strip())
     pdf.set_author(meta.lab_name)
     pdf.set_subject(document.kind_title)
     pdf.set_creator(f"AngleBench {__version__}")
@@ -330,7 +331,7 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.add_page()
 
     pdf.set_font(FONT, "B", 17)
-    pdf.cell(0, 9, "Test certificate", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.cell(0, 9, document.title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     pdf.set_font(FONT, "", 11)
     pdf.cell(0, 6, f"{document.kind_title}", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     if document.is_draft:
@@ -353,12 +354,19 @@ def _render(document: CertificateDocument) -> FPDF:
         ("Environment", _environment(meta)),
         ("Readings", document.source_name),
     ])
-    pdf.heading("Reference standards")
+    pdf.heading("Reference standards and traceability")
     pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
+    pdf.paragraph(_traceability(document), 8.5)
     pdf.heading("Method")
     pdf.paragraph(document.method)
     if document.method_reference:
         pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
+    pdf.paragraph(
+        "This is a non-standard method, published in the reference above and implemented in "
+        f"AngleBench {__version__}. Its validation record (ISO/IEC 17025 7.2.2) is the "
+        "validation report of that version (anglebench validate): the reference figures of the "
+        "publication and exact simulations with known truth, each with its result.", 8, GREY)
+    pdf.paragraph(f"Sign convention: {SIGN_CONVENTION_TEXT}.", 8.5)
     pdf.heading(document.parameters.title)
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
     pdf.heading("Error curves", keep_with=75.0)
@@ -368,14 +376,16 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
     pdf.heading("Measurement uncertainty")
     big_u = document.expanded_uncertainty_arcsec
+    budget_ = document.budget
     pdf.paragraph(
-        "The expanded uncertainty of the corrected error is "
+        "The expanded uncertainty of the error is "
         f"U = {big_u:.{uncertainty_decimals(big_u)}f}\" "
-        "(the largest over the points; each point's U is in the results table). It is the "
-        "combined standard uncertainty multiplied by the coverage factor k = 2, which for a "
-        "normal distribution corresponds to a coverage probability of about 95 %. The "
-        "uncertainty was evaluated according to the GUM (JCGM 100:2008); the budget was "
-        "cross-checked by a Monte Carlo simulation (JCGM 101:2008).")
+        "(the largest over the points; each point's U is in the results table). At each point "
+        "it is the combined standard uncertainty multiplied by the coverage factor k of "
+        "Student's t for that point's effective degrees of freedom (Welch–Satterthwaite) and a "
+        f"coverage probability of {100 * budget_.probability:.2f} %; at the largest, "
+        f"k = {budget_.coverage_factor:.2f}. The uncertainty was evaluated according to the GUM "
+        "(JCGM 100:2008).")
     budget = budget_table(document.budget, document.budget_point)
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
                    ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
@@ -384,8 +394,18 @@ def _render(document: CertificateDocument) -> FPDF:
     for note in notes:
         pdf.paragraph(note, 7.5, GREY)
     pdf.heading("Statement of conformity")
-    pdf.paragraph(document.conformity.statement)
-    pdf.paragraph(f"Decision rule: {document.conformity.rule}.", 8, GREY)
+    conformity = document.conformity
+    pdf.paragraph(conformity.statement)
+    if conformity.quantity:
+        pdf.paragraph(f"Decided quantity: {conformity.quantity}.", 8, GREY)
+    pdf.paragraph(f"Decision rule: {conformity.rule}.", 8, GREY)
+    if conformity.zones:
+        pdf.paragraph(f"Zones: {conformity.zones}.", 8, GREY)
+    pdf.heading("Statements")
+    for statement in (*document.statements,
+                      "The results relate only to the item calibrated, as received, under the "
+                      "conditions stated."):
+        pdf.paragraph(f"• {statement}")
     if document.warnings or meta.notes:
         pdf.heading("Remarks")
         for w in document.warnings:
@@ -399,6 +419,18 @@ def _render(document: CertificateDocument) -> FPDF:
     digest = hashlib.md5(_identity(document, created).encode(), usedforsecurity=False).hexdigest()
     pdf.file_id = lambda *_: f"<{digest}><{digest}>"
     return pdf
+
+
+def _traceability(document: CertificateDocument) -> str:
+    listed = [s for s in document.metadata.standards if s.certificate_no]
+    if not listed:
+        return ("Metrological traceability: not established on this document — no reference "
+                "standard with a calibration certificate is listed.")
+    names = "; ".join(f"{s.description or 'standard'} (certificate {s.certificate_no})"
+                      for s in listed)
+    return ("Metrological traceability: the results are traceable to the SI unit of plane angle "
+            f"through the reference standards listed, calibrated as stated in their "
+            f"certificates: {names}.")
 
 
 def _identity(document: CertificateDocument, created: dt.datetime) -> str:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.certificate_metadata import CertificateMetadata
+from models.certificate_metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.conformity import Conformity, significant_decimals, uncertainty_decimals
 from models.uncertainty_budget import (
     BASIS_DIVISORS,
@@ -22,7 +22,7 @@ from models.uncertainty_budget import (
     divisor_for_basis,
 )
 
-__all__ = ["CertificateDocument", "accuracy_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
+__all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "reference_standard_components",
            "resolution_component"]
 
@@ -72,11 +72,18 @@ class CertificateDocument:
     warnings: tuple[str, ...] = ()
     # every point's figures, for the CSV/XLSX export: (column header, values)
     point_columns: tuple[tuple[str, np.ndarray], ...] = ()
+    # statements of this workbench's own (why U is zero somewhere, a specification's
+    # source, as found / as left …), printed with the shared ones
+    statements: tuple[str, ...] = ()
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:
-        """The certificate's U (k = 2): the largest over the curve's points."""
+        """The certificate's U: the largest over the curve's points."""
         return self.budget.max_expanded_arcsec
+
+    @property
+    def title(self) -> str:
+        return DOCUMENT_TYPES[self.metadata.document_type]
 
     @property
     def is_draft(self) -> bool:
@@ -110,11 +117,12 @@ def budget_table(budget: UncertaintyBudget, point: str) -> Table:
     uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
     rows.append(("Combined standard u_c", "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
-    rows.append((f"Expanded U (k = {budget.coverage_factor:g})", "", "", "", "", "",
-                 "", _fmt(budget.coverage_factor * uc), "", ""))
-    note = (f"Budget at {point}, the point with the largest U. Coverage probability of "
-            f"k = {budget.coverage_factor:g} with ν_eff = {nu_text}: "
-            f"{100 * budget.coverage_probability():.1f} % (k for 95 %: {budget.k95():.2f}).")
+    k = budget.coverage_factor
+    rows.append((f"Expanded U (k = {k:.2f})", "", "", "", "", "",
+                 "", _fmt(k * uc), "", ""))
+    note = (f"Budget at {point}, the point with the largest U. k = {k:.2f} is Student's t for "
+            f"ν_eff = {nu_text} (Welch–Satterthwaite) and a coverage probability of "
+            f"{100 * budget.probability:.2f} %; each point's U uses its own ν_eff.")
     return Table("Uncertainty budget", ("Input", "Type", "Distribution", "Value (\")", "Divisor",
                                         "u (\")", "c", "c·u (\")", "Share %", "ν"),
                  rows, note)
@@ -154,15 +162,21 @@ def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[Bud
                             sensitivity, math.inf, f"resolution {r:g}\" of the item's indication")]
 
 
-def accuracy_rows(peak_to_peak_arcsec: float, budget: UncertaintyBudget, curve: str,
+def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                   points: str) -> list[tuple[str, str, str]]:
-    """The statistics rows every certificate has: the accuracy figure judged for
-    conformity (half the peak-to-peak of the ``curve`` error) with U, and U itself."""
+    """The statistics rows every certificate has: the decided quantity with its own U,
+    and the curve's largest U with its coverage factor."""
     big_u = budget.max_expanded_arcsec
     digits = uncertainty_decimals(big_u)
-    return [(f"Accuracy (half peak-to-peak, {curve})",
-             format_uncertain(peak_to_peak_arcsec / 2.0, big_u, "\""), ""),
-            ("Expanded uncertainty U (k = 2)", f"{big_u:.{digits}f}\"", f"largest over the {points}")]
+    rows = []
+    if math.isfinite(conformity.value_arcsec):
+        rows.append(("Decided quantity", format_uncertain(conformity.value_arcsec,
+                                                           conformity.expanded_arcsec, "\""),
+                     conformity.quantity))
+    rows.append((f"Expanded uncertainty U (p = {100 * budget.probability:.2f} %)",
+                 f"{big_u:.{digits}f}\"",
+                 f"largest over the {points}; k = {budget.coverage_factor:.2f} there"))
+    return rows
 
 
 def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:

@@ -14,10 +14,13 @@ import re
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
-from models.uncertainty_budget import BASIS_DIVISORS
+from models.conformity import DECISION_QUANTITIES, DECISION_RULES
+from models.uncertainty_budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 
 __all__ = [
+    "DECISION_QUANTITIES",
     "DECISION_RULES",
+    "DOCUMENT_TYPES",
     "LAB_DEFAULT_FIELDS",
     "CertificateMetadata",
     "MetadataError",
@@ -29,19 +32,14 @@ __all__ = [
 MAX_FIELD_CHARS = 200
 MAX_NOTES_CHARS = 2000
 
-DECISION_RULES = {
-    "guarded": "guarded acceptance, guard band w = U (ILAC-G8:09/2019, 4.2.3): conforms when "
-               "the result lies within the tolerance reduced by U; does not conform when it "
-               "lies outside the tolerance widened by U; otherwise no statement of conformity "
-               "is made",
-    "simple": "simple acceptance (ILAC-G8:09/2019, 4.2.1): conforms when the result lies "
-              "within the tolerance; the risk of a false acceptance reaches 50 % at the limit",
-}
-
 # Fields that are the same for every certificate a lab issues: the dialog can save them
 # as the lab's defaults, and a new certificate starts from them.
 LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_scheme",
-                      "standards", "operator", "approver", "decision_rule")
+                      "standards", "operator", "approver", "decision_rule", "decision_quantity",
+                      "coverage_probability_pct", "document_type")
+
+#: What the document is: a calibration certificate, or a test report.
+DOCUMENT_TYPES = {"calibration": "Calibration certificate", "test": "Test report"}
 
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
@@ -120,9 +118,9 @@ class ReferenceStandard:
             raise MetadataError(f"certificate field '{name}.basis' must be one of "
                                 f"{', '.join(BASIS_DIVISORS)}, not '{basis}'")
         u = _optional_number(data.get("uncertainty_arcsec"), f"{name}.uncertainty_arcsec")
-        if u is not None and u < 0:
-            raise MetadataError(f"certificate field '{name}.uncertainty_arcsec' must not be "
-                                "negative")
+        if u is not None and not 0 <= u <= 3600:
+            raise MetadataError(f"certificate field '{name}.uncertainty_arcsec' must be 0 to "
+                                "3600\" (an angle standard's uncertainty)")
         applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
         if applies_to not in APPLIES_TO:
             raise MetadataError(f"certificate field '{name}.applies_to' must be one of "
@@ -157,9 +155,15 @@ class CertificateMetadata:
     operator: str = ""
     approver: str = ""
     decision_rule: str = "guarded"
+    decision_quantity: str = "half_range"
+    coverage_probability_pct: float = 100.0 * DEFAULT_COVERAGE_PROBABILITY
+    document_type: str = "calibration"
+    # fringe: the checksum of the correction table the lab states it loaded into the encoder
+    as_left_table_sha256: str = ""
     notes: str = ""
 
-    _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct")
+    _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
+                "coverage_probability_pct")
     _DATES = ("calibration_date", "issue_date")
 
     @classmethod
@@ -192,7 +196,23 @@ class CertificateMetadata:
             raise MetadataError("certificate field 'tolerance_arcsec' must be positive")
         if meta.humidity_pct is not None and not 0 <= meta.humidity_pct <= 100:
             raise MetadataError("certificate field 'humidity_pct' must be 0 to 100 %")
+        if meta.item_resolution_arcsec is not None and not 0 <= meta.item_resolution_arcsec <= 3600:
+            raise MetadataError("certificate field 'item_resolution_arcsec' must be 0 to 3600\"")
+        if meta.coverage_probability_pct is None:
+            meta = replace(meta, coverage_probability_pct=100.0 * DEFAULT_COVERAGE_PROBABILITY)
+        if not 50.0 <= meta.coverage_probability_pct <= 99.9:
+            raise MetadataError("certificate field 'coverage_probability_pct' must be 50 to 99.9 %")
+        if meta.decision_quantity not in DECISION_QUANTITIES:
+            raise MetadataError(f"certificate field 'decision_quantity' must be one of "
+                                f"{', '.join(DECISION_QUANTITIES)}, not '{meta.decision_quantity}'")
+        if meta.document_type not in DOCUMENT_TYPES:
+            raise MetadataError(f"certificate field 'document_type' must be one of "
+                                f"{', '.join(DOCUMENT_TYPES)}, not '{meta.document_type}'")
         return meta
+
+    @property
+    def coverage_probability(self) -> float:
+        return self.coverage_probability_pct / 100.0
 
     def to_dict(self) -> dict[str, Any]:
         out = asdict(self)

@@ -281,6 +281,15 @@ class CorrectionTable:
     def size(self) -> int:
         return int(self.correction_rad.size)
 
+    @property
+    def sha256(self) -> str:
+        """Checksum of the table (its values as little-endian float64): the certificate
+        names the table the lab states it loaded into the encoder by it."""
+        import hashlib
+
+        data = np.ascontiguousarray(self.correction_rad, dtype="<f8").tobytes()
+        return hashlib.sha256(data).hexdigest()
+
     def correction_at(self, measured_phase_rad) -> np.ndarray:
         phi = np.mod(np.asarray(measured_phase_rad, dtype=float), TWO_PI)
         pos = phi / TWO_PI * self.size

@@ -16,6 +16,7 @@ __all__ = ["correction_table_c_header", "correction_table_csv", "write_correctio
 def correction_table_csv(result: FringeResult) -> str:
     out = io.StringIO()
     out.write("# AngleBench fringe correction table: corrected phase = measured - correction\n")
+    out.write(f"# table sha256: {result.table.sha256}\n")
     for name, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         params = ",".join(f"{k}={v:.9g}" for k, v in fit.as_dict().items())
         out.write(f"# {name}: {params}\n")
@@ -32,7 +33,8 @@ def correction_table_c_header(result: FringeResult, name: str = "anglebench_frin
     lines = [
         "/* AngleBench fringe correction table (generated).",
         " * corrected_phase = measured_phase - lut[j] with j = measured_phase / (2*pi) * SIZE,",
-        " * linear interpolation between entries; values in radians of electrical phase. */",
+        " * linear interpolation between entries; values in radians of electrical phase.",
+        f" * table sha256: {result.table.sha256} */",
         f"#ifndef {name.upper()}_H",
         f"#define {name.upper()}_H",
         f"#define {name.upper()}_SIZE {size}",

@@ -11,6 +11,12 @@ inputs, per sample, with ``S, C`` the modelled signals:
 * each reference standard's figure, sensitivity 1 (for example the phase
   reference when θ comes from a reference encoder).
 
+The as-found interpolation error (before compensation) is the measured phase
+minus θ: its budget is the signal noise and the reference standards. The
+certificate judges conformity on the as-found error; the compensated error is
+printed as "as left" only when the lab states that the correction table,
+named by its checksum, was loaded into the encoder.
+
 Phases are converted to shaft angle by the grating period 1296000"/L.
 """
 
@@ -25,10 +31,10 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    accuracy_rows,
+    decision_rows,
     reference_standard_components,
 )
-from models.certificate_metadata import CertificateMetadata
+from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.conformity import decide_conformity
 from models.decimation import envelope
 from models.fringe import model_signal, model_signal_std, period_arcsec
@@ -53,7 +59,8 @@ def _phase_sensitivities(result) -> tuple[np.ndarray, np.ndarray]:
     return c / r2, s / r2  # |∂φ/∂u_s|, |∂φ/∂u_c| (rad/V)
 
 
-def fringe_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
+def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False) -> UncertaintyBudget:
+    """The budget of the compensated error, or of the as-found error (no model input)."""
     n = result.theta_rad.size
     to_arcsec = period_arcsec(result.lines_per_rev) / (2.0 * math.pi)
     ds, dc = _phase_sensitivities(result)
@@ -70,10 +77,11 @@ def fringe_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
         "Signal noise", "A", "normal", noise, 1.0, 1.0, dof,
         f"σ = {sig_s * 1e3:.3g} mV (sin), {sig_c * 1e3:.3g} mV (cos) from the fit residuals, "
         "converted to phase"))
-    components.append(BudgetComponent(
-        "Fitted model (correction table)", "A", "normal", model, 1.0, 1.0, dof,
-        "covariance of the fitted parameters propagated to the modelled phase error"))
-    return UncertaintyBudget(tuple(components), n)
+    if not as_found:
+        components.append(BudgetComponent(
+            "Fitted model (correction table)", "A", "normal", model, 1.0, 1.0, dof,
+            "covariance of the fitted parameters propagated to the modelled phase error"))
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
 def _parameter_rows(result) -> list[tuple[str, str, str]]:
@@ -92,12 +100,21 @@ def _parameter_rows(result) -> list[tuple[str, str, str]]:
 
 def fringe_certificate(result, metadata: CertificateMetadata, source_name: str = "",
                        method_reference: str = "") -> CertificateDocument:
-    budget = fringe_budget(result, metadata)
+    as_left = bool(metadata.as_left_table_sha256) and \
+        metadata.as_left_table_sha256.strip().lower() == result.table.sha256
+    if metadata.as_left_table_sha256 and not as_left:
+        raise MetadataError(
+            f"the certificate details say a correction table with checksum "
+            f"{metadata.as_left_table_sha256[:16]}… was loaded into the encoder, but this "
+            f"analysis's table is {result.table.sha256[:16]}…: export and load this table, or "
+            "clear the checksum")
+    budget = fringe_budget(result, metadata, as_found=not as_left)
+    found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
     big_u = budget.expanded_arcsec
     raw, comp = result.raw_error_arcsec, result.compensated_error_arcsec
     correction = comp - raw
     period = period_arcsec(result.lines_per_rev)
-    parameters = Table("Signal parameters identified (U with k = 2)",
+    parameters = Table("Signal parameters identified",
                        ("Parameter", "Value", "U (k = 2)"), _parameter_rows(result))
     per = min(result.samples_per_period, raw.size)
     step = max(1, per // 64)
@@ -110,19 +127,25 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     note = (f"The first period is shown{f' (every {step}-th sample)' if step > 1 else ''}; "
             f"all {raw.size} samples are in the CSV/XLSX results export.")
     results = Table("Results per sample (first period; compensated = raw + correction)",
-                    ("Sample", "Phase θ (°)", "Raw error (\")", "Correction (\")",
-                     "Compensated (\")", "U (k = 2) (\")"), rows, note)
+                    ("Sample", "Phase θ (°)", "As found (\")", "Correction (\")",
+                     "Compensated (\")", f"U {'as left' if as_left else 'as found'} (\")"), rows,
+                    note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
     stat_rows = [
         ("Samples", f"{raw.size}", f"{result.samples_per_period} per period, L = "
                                    f"{result.lines_per_rev} (period {period:.3f}\")"),
-        ("Interpolation error before", f"{raw.min():+.3f}\" … {raw.max():+.3f}\"",
+        ("Interpolation error as found", f"{raw.min():+.3f}\" … {raw.max():+.3f}\"",
          f"peak-to-peak {pp_raw:.3f}\" ({pp_raw / period * 100:.2f} % of a period)"),
-        ("After compensation", f"{comp.min():+.3f}\" … {comp.max():+.3f}\"",
+        ("After compensation" + (" (as left)" if as_left else " (not applied to the item)"),
+         f"{comp.min():+.3f}\" … {comp.max():+.3f}\"",
          f"peak-to-peak {pp_comp:.3f}\" ({pp_comp / period * 100:.2f} % of a period)"),
-        *accuracy_rows(pp_comp, budget, "compensated", "samples"),
-        ("Correction table", f"{result.table.size} entries", ""),
     ]
+    tol = metadata.tolerance_arcsec
+    conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
+                                   metadata.decision_quantity, what="as-found interpolation error")
+    stat_rows += decision_rows(conformity, found_budget, "samples")
+    stat_rows.append(("Correction table", f"{result.table.size} entries",
+                      f"sha256 {result.table.sha256[:16]}…"))
     if result.sin_periods.shape[0] > 1:
         amp = result.sin_periods[:, 1]
         stat_rows.append(("Drift of sin A1 over the periods", f"{np.ptp(amp) * 1e3:.3g} mV",
@@ -139,7 +162,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         PlotFigure("Interpolation error before and after compensation", "period", "error (\")", (
             PlotSeries("raw", xr, yr, (31, 119, 180)),
             PlotSeries("compensated", xc, yc, (44, 160, 44)))),
-        PlotFigure("Compensated error in the first period, with U (k = 2)", "phase θ (°)",
+        PlotFigure("Compensated error in the first period, with U", "phase θ (°)",
                    "error (\")", (
             PlotSeries("compensated ± U", np.degrees(result.theta_rad[:per]), comp[:per],
                        (44, 160, 44), per <= 256, band=big_u[:per]),)),
@@ -147,14 +170,18 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
             PlotSeries("sin", xs, ys, (148, 103, 189)),
             PlotSeries("cos", xk, yk, (214, 39, 40)))),
     )
-    tol = metadata.tolerance_arcsec
-    conformity = decide_conformity(pp_comp / 2.0, budget.max_expanded_arcsec, tol,
-                                   metadata.decision_rule)
     worst = budget.worst_index
+    table_statement = (
+        f"As left: the lab states that the correction table with sha256 {result.table.sha256} "
+        "was loaded into the encoder; the compensated error and its U are the item as left."
+        if as_left else
+        "Conformity is judged on the interpolation error as found. The compensated error is the "
+        "error the correction table would leave; it is not the item's unless the table is "
+        f"loaded into it (table sha256 {result.table.sha256}).")
     return CertificateDocument(
         "fringe", "Fringe signal analysis", metadata, source_name, METHOD, method_reference,
         parameters, results, statistics, budget, f"sample {worst + 1}", conformity, tol, plots,
-        tuple(result.warnings),
+        tuple(result.warnings), statements=(table_statement,),
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), ("raw_error_arcsec", raw),
          ("correction_arcsec", correction), ("compensated_error_arcsec", comp),

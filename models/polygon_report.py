@@ -36,7 +36,7 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    accuracy_rows,
+    decision_rows,
     reference_standard_components,
     resolution_component,
 )
@@ -128,7 +128,8 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
                         evaluation, "normal", noise / math.sqrt(m_eff), 1.0, mean_sensitivity, dof,
                         note + f", divided by √{m_eff:g}"),
         BudgetComponent(f"Zero reading (face {result.zero_face}, set 1)", evaluation, "normal", noise,
-                        1.0, not_zero, dof, "one reading shared by every set: not reduced"),
+                        1.0, not_zero, dof, "one reading shared by every set: not reduced",
+                        common=True),
     ], noise
 
 
@@ -185,7 +186,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
@@ -235,8 +236,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                            f"{2 * s.tilt.u_psi_arcsec:.2f}\""))
             rows_p.append((f"Set {i} tilt direction ω", f"{s.tilt.omega_deg:.1f}°",
                            f"{2 * s.tilt.u_omega_deg:.2f}°"))
-    parameters = Table("Set-up parameters identified (U with k = 2)",
-                       ("Parameter", "Value", "U (k = 2)"), rows_p)
+    parameters = Table("Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"), rows_p)
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
     numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
                        correction, result.mean_corrected_arcsec, big_u, strict=True))
@@ -246,7 +246,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         f"mean of {m} set{'s' if m > 1 else ''}"
     results = Table(f"Results per position ({mean})",
                     ("Position", "Nominal (°)", "Raw error (\")", "Correction (\")",
-                     "Corrected error (\")", "U (k = 2) (\")"), rows,
+                     "Corrected error (\")", "U (\")"), rows,
                     f"Error = indicated − reference, from face {result.zero_face} of set 1. "
                     "Corrected = raw + correction; the correction removes the error the "
                     "pyramidal tilt induces.")
@@ -255,7 +255,6 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),
         ("Corrected error", f"{st.min:+.2f}\" … {st.max:+.2f}\"",
          f"peak-to-peak {st.peak_to_peak:.2f}\""),
-        *accuracy_rows(st.peak_to_peak, budget, "corrected", "positions"),
     ]
     h = result.harmonics
     if h.amplitude.size > 2:
@@ -270,6 +269,10 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         stat_rows.append(("Reversal B (largest |x̄↑ − x̄↓|)",
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
                           f"mean reversal {result.mean_reversal_arcsec:+.2f}\""))
+    conformity = decide_conformity(
+        result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
+        metadata.decision_quantity, "" if result.valid else "the run is invalid (closure failed)")
+    stat_rows[2:2] = decision_rows(conformity, budget, "positions")
     statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
     th = result.theta_deg
     plots = [PlotFigure("Raw and corrected error", "position angle (°)", "error (\")", (
@@ -277,7 +280,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         PlotSeries("corrected (mean)", th, result.mean_corrected_arcsec, (44, 160, 44), True),
         PlotSeries("correction (pyramidal)", th, correction, (255, 127, 14)),
     ))]
-    plots.append(PlotFigure("Corrected error with its expanded uncertainty U (k = 2)",
+    plots.append(PlotFigure("Corrected error with its expanded uncertainty U",
                             "position angle (°)", "error (\")", (
         PlotSeries("corrected ± U", th, result.mean_corrected_arcsec, (44, 160, 44), True,
                    band=big_u),)))
@@ -286,8 +289,6 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         plots.append(PlotFigure("Tilt fit residuals (vertical readings, set 1)",
                                 "position angle (°)", "residual (\")", (
             PlotSeries("residual", th, tilt.residuals_arcsec, (148, 103, 189), True),)))
-    conformity = decide_conformity(st.peak_to_peak / 2.0, budget.max_expanded_arcsec, tol,
-                                   metadata.decision_rule, valid=result.valid)
     warnings = list(result.warnings)
     if m == 1 and tilt is None:
         warnings.append("Repeatability was not evaluated: one set and no vertical readings.")
@@ -296,6 +297,12 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         "polygon", "Polygon encoder test", metadata, source_name, METHOD, method_reference,
         parameters, results, statistics, budget, f"position {worst + 1}", conformity, tol,
         tuple(plots), tuple(warnings),
+        statements=(
+            f"U is zero at face {result.zero_face} of set 1: every error is taken from that "
+            "reading, so its own error is zero by definition.",
+            "Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method's "
+            "reference; the allowed pyramidal tilt is derived from them (a third of the "
+            "accuracy, worst case over the tilt direction)."),
         point_columns=(("position", np.arange(1, result.faces + 1, dtype=float)),
          ("nominal_deg", result.theta_deg), ("raw_error_arcsec", result.mean_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.mean_corrected_arcsec),

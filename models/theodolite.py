@@ -409,6 +409,7 @@ class TheodoliteResult:
     raw_stats: ErrorStats
     corrected_stats: ErrorStats
     reference_theta_deg: float
+    reference_index: int = 0  # the row where the theodolite was zeroed (its error is 0)
     iso230: Iso230Result | None = None
     warnings: list[str] = field(default_factory=list)
 
@@ -532,6 +533,7 @@ def analyze_run(
         raw_stats=error_stats(raw_error),
         corrected_stats=error_stats(corrected),
         reference_theta_deg=float(theta[reference_index]),
+        reference_index=int(reference_index),
         iso230=iso,
         warnings=warnings,
     )

@@ -5,9 +5,17 @@ at the reference point), minus the set-up model ζ(θ):
 ``e_i = (A_i − A_0) − (θ_i − θ_0) − ζ(θ_i; ψ, α, β)``. Its inputs:
 
 * each reference standard's figure, per reading: sensitivity √2 (0 at the
-  reference point, where e is zero by definition);
+  reference reading, whose error is zero by definition; a repeat of the
+  reference angle later in the run is a reading like any other);
 * the reading repeatability, estimated (Type A) by the identification's
-  residual RMS with n − 3 degrees of freedom: sensitivity √2;
+  residual RMS with n − 3 degrees of freedom, once for the reading itself and
+  once for the reference reading that every point shares. The vertical
+  residuals are the only measure of it (the azimuth residuals hold the axis'
+  own error, the measurand); an autocollimating theodolite sets on the mirror
+  as repeatably in azimuth as in elevation. It measures this set-up's pointing
+  repeatability (mirror, air, axis wobble), which the theodolite's calibration
+  U does not cover; the theodolite's own reading repeatability is in both,
+  counted twice on the safe side;
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
 """
@@ -23,7 +31,7 @@ from models.certificate_document import (
     PlotFigure,
     PlotSeries,
     Table,
-    accuracy_rows,
+    decision_rows,
     reference_standard_components,
     resolution_component,
 )
@@ -48,30 +56,33 @@ METHOD = (
 )
 
 
-def _pair_sensitivity(result: TheodoliteResult) -> np.ndarray:
-    """√2 at every point (two readings), 0 at the reference point(s)."""
-    theta_rel = result.theta_deg - result.reference_theta_deg
-    return np.where(np.abs(theta_rel) < 1e-9, 0.0, math.sqrt(2.0))
+def _not_reference(result: TheodoliteResult) -> np.ndarray:
+    """1 at every reading, 0 at the reference reading (the zeroing one only)."""
+    out = np.ones(result.theta_deg.size)
+    out[result.reference_index] = 0.0
+    return out
 
 
 def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -> UncertaintyBudget:
     n = result.theta_deg.size
-    pair = _pair_sensitivity(result)
+    single = _not_reference(result)
+    pair = math.sqrt(2.0) * single
     dof = max(n - 3, 1)
     components = reference_standard_components(metadata, pair, "reading (pointing)")
-    # The vertical readings' residuals measure the reading noise whatever the route: the
-    # azimuth residuals would also hold the axis' own error, which is the measurand.
     res = result.elevation_residuals_arcsec
     noise = float(np.sqrt(np.sum(res**2) / dof))
     components.append(BudgetComponent(
-        "Reading repeatability", "A", "normal", noise, 1.0, pair, dof,
+        "Reading repeatability", "A", "normal", noise, 1.0, single, dof,
         f"standard deviation of the vertical readings about the fit, {n} readings, "
-        f"{dof} degrees of freedom"))
+        f"{dof} degrees of freedom; taken for the azimuth too"))
+    components.append(BudgetComponent(
+        "Reference reading (θ₀)", "A", "normal", noise, 1.0, single, dof,
+        "the zeroing reading, shared by every point", common=True))
     components.append(BudgetComponent(
         "Set-up model ζ (ψ, α, β)", "A", "normal", result.model_uncertainty_arcsec, 1.0, 1.0, dof,
         "covariance of the identified parameters propagated through ζ(θ)"))
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
@@ -82,7 +93,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     s = ident.setup
     u2 = 2.0 * ident.uncertainty_deg * 3600.0  # expanded, arcsec
     parameters = Table(
-        "Set-up parameters identified (U with k = 2)", ("Parameter", "Value", "U (k = 2)"),
+        "Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"),
         [("Axis tilt ψ", f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
          ("Tilt direction α", f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
          ("Mirror normal β", f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
@@ -97,15 +108,18 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
             for t, r, c, e, u in numeric]
     results = Table("Results per point (corrected = raw + correction)",
                     ("θ (°)", "Raw error (\")", "Correction (\")", "Corrected error (\")",
-                     "U (k = 2) (\")"), rows)
+                     "U (\")"), rows)
     r, c = result.raw_stats, result.corrected_stats
     stat_rows = [
         ("Points", f"{c.n}", ""),
         ("Raw error", f"{r.min:+.2f}\" … {r.max:+.2f}\"", f"peak-to-peak {r.peak_to_peak:.2f}\""),
         ("Corrected error", f"{c.min:+.2f}\" … {c.max:+.2f}\"",
          f"peak-to-peak {c.peak_to_peak:.2f}\", RMS {c.rms:.2f}\""),
-        *accuracy_rows(c.peak_to_peak, budget, "corrected", "points"),
     ]
+    tol = metadata.tolerance_arcsec
+    conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
+                                   metadata.decision_rule, metadata.decision_quantity)
+    stat_rows += decision_rows(conformity, budget, "points")
     if result.iso230 is not None:
         for k, v in result.iso230.figures.items():
             if math.isfinite(v):
@@ -119,7 +133,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
             PlotSeries("set-up share −ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
             PlotSeries("corrected", th, result.corrected_error_arcsec[order], (44, 160, 44), True),
         )),
-        PlotFigure("Corrected error with its expanded uncertainty U (k = 2)", "θ (°)",
+        PlotFigure("Corrected error with its expanded uncertainty U", "θ (°)",
                    "error (\")", (
             PlotSeries("corrected ± U", th, result.corrected_error_arcsec[order], (44, 160, 44),
                        True, band=big_u[order]),)),
@@ -128,13 +142,13 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                        True),)),
     )
     worst = budget.worst_index
-    tol = metadata.tolerance_arcsec
-    conformity = decide_conformity(c.peak_to_peak / 2.0, budget.max_expanded_arcsec, tol,
-                                   metadata.decision_rule)
     return CertificateDocument(
         "theodolite", "Theodolite run", metadata, source_name, METHOD, method_reference,
         parameters, results, statistics, budget, f"θ = {result.theta_deg[worst]:g}°", conformity,
         tol, plots, tuple(result.warnings),
+        statements=(f"U is zero at the reference reading (row {result.reference_index + 1}, "
+                    f"θ₀ = {result.reference_theta_deg:g}°): the theodolite was zeroed there, so "
+                    "its error is zero by definition.",),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
          ("expanded_uncertainty_arcsec", big_u)))

@@ -8,13 +8,17 @@ the curve (for example √2 where an error is the difference of two readings,
 0 at the reference point). The inputs are taken as uncorrelated; the combined
 standard uncertainty is the root sum of squares of the contributions, its
 effective degrees of freedom follow Welch–Satterthwaite (GUM G.4.1), and the
-expanded uncertainty uses k = 2 unless told otherwise.
+expanded uncertainty uses, at each point, the coverage factor of Student's t
+with those degrees of freedom for the stated coverage probability (GUM G.3,
+G.6.4): 95.45 % by default, so k = 2.00 when ν_eff is large and 2.65 when it
+is 5.
 
 All values are in arcseconds.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -22,10 +26,26 @@ import numpy as np
 
 __all__ = [
     "BASIS_DIVISORS",
+    "DEFAULT_COVERAGE_PROBABILITY",
     "BudgetComponent",
     "UncertaintyBudget",
+    "coverage_factor",
     "divisor_for_basis",
 ]
+
+#: The coverage probability of k = 2 for a normal distribution (95.45 %).
+DEFAULT_COVERAGE_PROBABILITY = math.erf(math.sqrt(2.0))
+
+
+def coverage_factor(dof: float, probability: float = DEFAULT_COVERAGE_PROBABILITY) -> float:
+    """k such that ±k·u_c covers ``probability`` of a t-distribution with ``dof`` degrees
+    of freedom (GUM G.3.4); the normal distribution's k for infinite ``dof``."""
+    from scipy.special import ndtri, stdtrit  # imported late, as start-up pays it
+
+    tail = 0.5 * (1.0 + probability)
+    if not math.isfinite(dof):
+        return float(ndtri(tail))
+    return float(stdtrit(max(dof, 1.0), tail))
 
 # How a reference standard's figure is stated, and the divisor to its standard uncertainty.
 BASIS_DIVISORS: dict[str, tuple[str, float, str]] = {
@@ -63,6 +83,13 @@ class BudgetComponent:
     sensitivity: float | np.ndarray
     dof: float
     note: str = ""
+    common: bool = False
+
+    def __post_init__(self) -> None:
+        values = np.asarray(self.value_arcsec, dtype=float)
+        if not np.all(np.isfinite(values)) or np.any(values < 0) or not self.divisor > 0:
+            raise ValueError(f"uncertainty input '{self.name}': its value must be a finite, "
+                             "non-negative number of arcseconds")
 
     def standard_uncertainty(self, points: int) -> np.ndarray:
         """Standard uncertainty of the input, per point (before the sensitivity)."""
@@ -81,62 +108,68 @@ class UncertaintyBudget:
 
     components: tuple[BudgetComponent, ...]
     points: int
-    coverage_factor: float = 2.0
+    probability: float = DEFAULT_COVERAGE_PROBABILITY  # stated coverage probability
 
     def contributions(self) -> np.ndarray:
         """Array (components, points) of |c_i| · u(x_i)."""
+        return self._contributions
+
+    @functools.cached_property
+    def _contributions(self) -> np.ndarray:
         if not self.components:
             return np.zeros((0, self.points))
         return np.array([c.contribution(self.points) for c in self.components])
 
-    @property
+    @functools.cached_property
     def combined_arcsec(self) -> np.ndarray:
         """Combined standard uncertainty u_c per point."""
         return np.sqrt(np.sum(self.contributions() ** 2, axis=0))
 
-    @property
+    @functools.cached_property
+    def effective_dofs(self) -> np.ndarray:
+        """Welch–Satterthwaite ν_eff = u_c⁴ / Σ (u_i⁴ / ν_i) at every point (∞ where every
+        input is exactly known)."""
+        contrib = self.contributions()
+        uc4 = np.sum(contrib**2, axis=0) ** 2
+        dofs = np.array([c.dof for c in self.components], dtype=float).reshape(-1, 1)
+        finite = np.isfinite(dofs) & (dofs > 0)
+        denom = np.sum(np.where(finite, contrib**4 / np.where(finite, dofs, 1.0), 0.0), axis=0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nu = np.where((denom > 0) & (uc4 > 0), uc4 / np.where(denom > 0, denom, 1.0), np.inf)
+        return nu
+
+    @functools.cached_property
+    def coverage_factors(self) -> np.ndarray:
+        """k at every point for the stated coverage probability."""
+        nu = np.where(np.isfinite(self.effective_dofs), np.round(self.effective_dofs, 6), np.inf)
+        unique, inverse = np.unique(nu, return_inverse=True)
+        ks = np.array([coverage_factor(float(v), self.probability) for v in unique])
+        return ks[inverse].reshape(-1) if self.points else np.zeros(0)
+
+    @functools.cached_property
     def expanded_arcsec(self) -> np.ndarray:
-        """Expanded uncertainty U = k · u_c per point."""
-        return self.coverage_factor * self.combined_arcsec
+        """Expanded uncertainty U = k · u_c per point, k from each point's ν_eff."""
+        return self.coverage_factors * self.combined_arcsec
 
     @property
     def worst_index(self) -> int:
         """The point with the largest U: the budget table is printed for it."""
-        return int(np.argmax(self.combined_arcsec)) if self.points else 0
+        return int(np.argmax(self.expanded_arcsec)) if self.points else 0
+
+    @property
+    def coverage_factor(self) -> float:
+        """k at the worst point (the one the budget table shows)."""
+        return float(self.coverage_factors[self.worst_index]) if self.points else float("nan")
 
     @property
     def max_expanded_arcsec(self) -> float:
         return float(np.max(self.expanded_arcsec)) if self.points else float("nan")
 
     def effective_dof(self, index: int | None = None) -> float:
-        """Welch–Satterthwaite ν_eff = u_c⁴ / Σ (u_i⁴ / ν_i) at one point (default the worst)."""
-        i = self.worst_index if index is None else index
-        contrib = self.contributions()[:, i] if self.components else np.zeros(0)
-        uc4 = float(np.sum(contrib**2)) ** 2
-        denom = sum(u**4 / c.dof for u, c in zip(contrib, self.components, strict=True)
-                    if math.isfinite(c.dof) and c.dof > 0)
-        if uc4 == 0.0:
+        """ν_eff at one point (default the worst)."""
+        if not self.points:
             return float("inf")
-        return float("inf") if denom == 0.0 else uc4 / denom
-
-    def coverage_probability(self, index: int | None = None) -> float:
-        """Coverage probability of U = k · u_c for a t-distribution with ν_eff (GUM G.6.4)."""
-        nu = self.effective_dof(index)
-        k = self.coverage_factor
-        if not math.isfinite(nu):
-            return float(math.erf(k / math.sqrt(2.0)))
-        from scipy.special import stdtr  # Student's t CDF; imported late, as start-up pays it
-
-        return float(2.0 * stdtr(nu, k) - 1.0)
-
-    def k95(self, index: int | None = None) -> float:
-        """Coverage factor for 95 % from ν_eff (GUM Annex G), for comparison with k."""
-        nu = self.effective_dof(index)
-        if not math.isfinite(nu):
-            return 1.959964
-        from scipy.special import stdtrit  # inverse of Student's t CDF
-
-        return float(stdtrit(nu, 0.975))
+        return float(self.effective_dofs[self.worst_index if index is None else index])
 
     def table(self, index: int | None = None) -> list[dict[str, object]]:
         """Rows of the budget at one point (default the worst): name, type, distribution,

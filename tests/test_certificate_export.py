@@ -62,7 +62,7 @@ def test_certificate_of_each_sample_carries_its_figures(key):
     assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
     big_u = document.expanded_uncertainty_arcsec
     assert f"U = {big_u:.{uncertainty_decimals(big_u)}f}\"" in flat
-    assert "k = 2" in flat and "Decision rule" in flat and "DRAFT" not in flat
+    assert "Decision rule" in flat and "DRAFT" not in flat
     for row in document.parameters.rows[:3]:  # the identified parameters, as printed
         assert row[1] in flat
     for row in document.statistics.rows:
@@ -74,9 +74,11 @@ def test_certificate_of_each_sample_carries_its_figures(key):
         assert f"{json_out['pyramidal_tilt_arcsec']:.1f}\"" in flat
     if key == "fringe":
         assert f"{json_out['compensated_peak_to_peak_arcsec']:.3f}\"" in flat
-    # U on the certificate is the budget's, and each point's U is in the table
+    # U on the certificate is the budget's: k from each point's ν_eff
+    budget = document.budget
     assert document.expanded_uncertainty_arcsec == pytest.approx(
-        2 * float(np.max(document.budget.combined_arcsec)))
+        float(np.max(budget.coverage_factors * budget.combined_arcsec)))
+    assert f"k = {budget.coverage_factor:.2f}" in flat
 
 
 def test_certificate_is_deterministic_and_marks_drafts():

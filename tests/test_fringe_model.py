@@ -111,7 +111,9 @@ def test_sheet_analysis_and_exports():
     assert set(data["sin_params"]) == {"A0", "A1", "c1", "A3", "c3", "A5", "c5"}
     assert data["raw_peak_to_peak_arcsec"] == pytest.approx(0.97, abs=0.01)
     assert data["compensated_peak_to_peak_arcsec"] < 0.01
-    assert correction_table_csv(result).count("\n") == 1024 + 4
+    csv_text = correction_table_csv(result)
+    assert csv_text.count("\n") == 1024 + 5
+    assert f"# table sha256: {result.table.sha256}" in csv_text
     header = correction_table_c_header(result)
     assert "static const float anglebench_fringe_lut[1024]" in header and header.count("f,") == 1024
 

@@ -17,8 +17,14 @@ from models.certificate_metadata import (
     clean_text,
     format_certificate_number,
 )
-from models.conformity import decide_conformity
-from models.uncertainty_budget import BudgetComponent, UncertaintyBudget, divisor_for_basis
+from models.conformity import decide_conformity, half_range_monte_carlo
+from models.uncertainty_budget import (
+    DEFAULT_COVERAGE_PROBABILITY,
+    BudgetComponent,
+    UncertaintyBudget,
+    coverage_factor,
+    divisor_for_basis,
+)
 
 GTC = pytest.importorskip("GTC")
 
@@ -31,14 +37,30 @@ def test_budget_hand_figures():
     ), points=2)
     # point 1: (0.3·√2)² + 0.3² = 0.27; point 2: + 0.16
     assert budget.combined_arcsec == pytest.approx([math.sqrt(0.27), math.sqrt(0.43)])
-    assert budget.expanded_arcsec[1] == pytest.approx(2 * math.sqrt(0.43))
     assert budget.worst_index == 1
-    # Welch–Satterthwaite: 0.43² / (0.4⁴ / 9)
-    assert budget.effective_dof() == pytest.approx(0.43**2 / (0.4**4 / 9))
+    # Welch–Satterthwaite: 0.43² / (0.4⁴ / 9) = 65.0; k from Student's t for 95.45 %
+    nu = 0.43**2 / (0.4**4 / 9)
+    assert budget.effective_dof() == pytest.approx(nu)
+    assert budget.coverage_factor == pytest.approx(2.039, abs=1e-3)  # scipy.stats.t.ppf
+    assert budget.expanded_arcsec[1] == pytest.approx(budget.coverage_factor * math.sqrt(0.43))
+    assert budget.coverage_factors[0] == pytest.approx(2.0, abs=1e-9)  # ν_eff = ∞: k = 2
     rows = budget.table()
     assert [r["name"] for r in rows] == ["std", "mpe", "noise"]
     assert sum(r["share"] for r in rows) == pytest.approx(1.0)
-    assert budget.coverage_probability(0) == pytest.approx(0.9545, abs=1e-4)
+
+
+@pytest.mark.parametrize("dof, probability, k", [
+    (5, 0.9545, 2.65), (5, 0.95, 2.57), (math.inf, DEFAULT_COVERAGE_PROBABILITY, 2.00),
+    (math.inf, 0.95, 1.96), (20, 0.9545, 2.13)])
+def test_coverage_factor_from_student_t(dof, probability, k):
+    """GUM Table G.2: ν = 5 gives k = 2.65 for 95.45 % (2.57 for 95 %)."""
+    assert coverage_factor(dof, probability) == pytest.approx(k, abs=0.005)
+
+
+@pytest.mark.parametrize("value", [float("inf"), float("nan"), -0.1])
+def test_budget_refuses_an_absurd_input(value):
+    with pytest.raises(ValueError, match="finite, non-negative"):
+        BudgetComponent("x", "B", "normal", value, 1.0, 1.0, math.inf)
 
 
 def test_divisors():
@@ -102,20 +124,83 @@ def test_certificate_number_scheme():
     assert format_certificate_number("X-{other}", 1, day) == "X-{other}"
 
 
-@pytest.mark.parametrize("x, u, rule, verdict", [
-    (0.5, 0.3, "guarded", "conforms"),
-    (0.8, 0.3, "guarded", "no statement"),
-    (1.2, 0.3, "guarded", "no statement"),
-    (1.4, 0.3, "guarded", "does not conform"),
-    (0.8, 0.3, "simple", "conforms"),
-    (1.2, 0.3, "simple", "does not conform"),
+def _flat_budget(points: int, expanded: float) -> UncertaintyBudget:
+    """A budget whose every point has U = ``expanded`` (k = 2, ν = ∞)."""
+    return UncertaintyBudget((BudgetComponent("u", "B", "normal", expanded, 2.0, 1.0, math.inf),),
+                             points)
+
+
+@pytest.mark.parametrize("x, rule, verdict", [
+    (0.5, "guarded", "pass"),
+    (0.8, "guarded", "conditional pass"),
+    (1.2, "guarded", "conditional fail"),
+    (1.4, "guarded", "fail"),
+    (0.6, "guarded_binary", "pass"),
+    (0.8, "guarded_binary", "fail"),
+    (0.8, "simple", "pass"),
+    (1.2, "simple", "fail"),
 ])
-def test_decision_rules(x, u, rule, verdict):
-    c = decide_conformity(x, u, 1.0, rule)
+def test_decision_rules_on_every_point(x, rule, verdict):
+    """ILAC-G8:09/2019 4.2.1–4.2.3 with w = U = 0.3", the worst point deciding."""
+    errors = np.array([0.0, -x, 0.2])
+    c = decide_conformity(errors, _flat_budget(3, 0.3), 1.0, rule, "points")
     assert c.verdict == verdict
-    assert "ILAC-G8" in c.rule
+    assert "ILAC-G8:09/2019, 4.2." in c.rule
+    assert c.value_arcsec == pytest.approx(x) and c.expanded_arcsec == pytest.approx(0.3)
+    assert "number 2" in c.statement
+
+
+def test_guarded_rule_prints_the_four_zones_of_4_2_3():
+    c = decide_conformity(np.array([0.0, 0.5]), _flat_budget(2, 0.3), 1.0, "guarded", "points")
+    assert c.zones.endswith("pass ≤ 0.70\" (T − w) < conditional pass ≤ 1\" (T) < conditional "
+                            "fail ≤ 1.30\" (T + w) < fail")
+    assert "4.2.3" in c.rule
+
+
+def test_half_range_is_debiased_by_monte_carlo():
+    """A perfect axis measured with 0.5" noise: the range of noisy points runs high.
+
+    41 points of pure noise have a half range near 1.1" whatever the truth; the
+    simulation finds that bias, so the decided value comes down towards the truth
+    and its U covers it.
+    """
+    rng = np.random.default_rng(1)
+    truth = np.zeros(41)
+    noisy = truth + rng.normal(0.0, 0.5, 41)
+    budget = UncertaintyBudget((BudgetComponent("noise", "A", "normal", 0.5, 1.0, 1.0, math.inf),),
+                               41)
+    c = decide_conformity(noisy, budget, 2.0, "guarded", "half_range")
+    mc = c.monte_carlo
+    assert mc.measured == pytest.approx(0.5 * np.ptp(noisy))
+    assert mc.measured > 0.9  # what the old certificate judged
+    assert c.value_arcsec < 0.3  # noise explains nearly all of it
+    assert c.expanded_arcsec < 1.8  # wide: near zero the noise hides how small the curve is
+    assert c.verdict == "pass"  # a perfect axis against ±2" is no longer "no statement"
+    again = decide_conformity(noisy, budget, 2.0, "guarded", "half_range")
+    assert again.value_arcsec == c.value_arcsec  # seeded: the same certificate every time
+
+
+def test_half_range_estimate_is_unbiased_over_repeats():
+    """The seed's theodolite experiment, 41 points, 0.5" noise, a curve of true half
+    range 0.991": the measured half range averages 1.67" (biased); ours ≈ the truth."""
+    theta = np.arange(-20.0, 21.0, 1.0)
+    truth = 0.991 * np.sin(np.radians(theta) * 9)
+    budget = UncertaintyBudget((BudgetComponent("noise", "A", "normal", 0.5, 1.0, 1.0, math.inf),),
+                               theta.size)
+    rng = np.random.default_rng(7)
+    measured, ours, covered = [], [], 0
+    for _ in range(60):
+        mc = half_range_monte_carlo(truth + rng.normal(0, 0.5, theta.size), budget, trials=2000)
+        measured.append(mc.measured)
+        ours.append(mc.value)
+        covered += mc.value - mc.u_lower <= 0.5 * np.ptp(truth) <= mc.value + mc.u_upper
+    assert np.mean(measured) == pytest.approx(1.67, abs=0.12)
+    assert np.mean(ours) == pytest.approx(0.5 * np.ptp(truth), abs=0.15)
+    assert covered >= 50  # of 60: the interval covers the truth about 95 % of the time
 
 
 def test_no_tolerance_or_invalid_run_gives_no_statement():
-    assert decide_conformity(0.1, 0.1, None).verdict == "not assessed"
-    assert "closure" in decide_conformity(0.1, 0.1, 1.0, valid=False).statement
+    budget = _flat_budget(2, 0.1)
+    assert decide_conformity([0.0, 0.1], budget, None).verdict == "not assessed"
+    c = decide_conformity([0.0, 0.1], budget, 1.0, invalid_reason="the closure failed")
+    assert c.verdict == "not assessed" and "closure" in c.statement

@@ -50,6 +50,19 @@ _TEXT_FIELDS = {
     "item_serial": "Serial number", "item_grade": "Grade / specification",
     "item_resolution_arcsec": "Resolution (\")", "temperature_c": "Temperature (°C)",
     "humidity_pct": "Relative humidity (%)", "operator": "Operator", "approver": "Approved by",
+    "coverage_probability_pct": "Coverage probability (%)",
+    "as_left_table_sha256": "Table loaded (sha256)",
+}
+# choice fields: key -> (label, {value: text})
+_CHOICES = {
+    "document_type": ("Document", {"calibration": "Calibration certificate", "test": "Test report"}),
+    "decision_rule": ("Decision rule", {
+        "guarded": "Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)",
+        "guarded_binary": "Guard band w = U: pass / fail (ILAC-G8 4.2.2)",
+        "simple": "Simple acceptance (ILAC-G8 4.2.1)"}),
+    "decision_quantity": ("Decided quantity", {
+        "half_range": "Half the peak-to-peak (Monte Carlo U)",
+        "points": "Every point with its own U"}),
 }
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
                      "applies_to")
@@ -100,14 +113,23 @@ class CertificateDialog(QDialog):
     def _setup_ui(self) -> None:
         grid = QGridLayout()
         cert = self._group("Certificate", ("certificate_number", "issue_date", "calibration_date",
-                                           "tolerance_arcsec"))
-        self.decision_rule = QComboBox()
-        labels = {"guarded": "Guarded acceptance, guard band w = U", "simple": "Simple acceptance"}
-        for key, text in DECISION_RULES.items():
-            self.decision_rule.addItem(labels.get(key, key), key)
-            self.decision_rule.setItemData(self.decision_rule.count() - 1, text,
-                                           Qt.ItemDataRole.ToolTipRole)
-        cert.layout().addRow("Decision rule", self.decision_rule)
+                                           "tolerance_arcsec", "coverage_probability_pct",
+                                           "as_left_table_sha256"))
+        self.fields["as_left_table_sha256"].setToolTip(
+            "Fringe: the checksum of the correction table loaded into the encoder (printed in "
+            "the exported table); the compensated error is then stated as left")
+        self.choices: dict[str, QComboBox] = {}
+        for key, (label, options) in _CHOICES.items():
+            box = QComboBox()
+            box.setObjectName(key)
+            for value, text in options.items():
+                box.addItem(text, value)
+                if key == "decision_rule":
+                    box.setItemData(box.count() - 1, DECISION_RULES[value],
+                                    Qt.ItemDataRole.ToolTipRole)
+            self.choices[key] = box
+            cert.layout().addRow(label, box)
+        self.decision_rule = self.choices["decision_rule"]
         grid.addWidget(cert, 0, 0)
         grid.addWidget(self._group("Laboratory", ("lab_name", "lab_address", "lab_accreditation",
                                                   "number_scheme")), 0, 1)
@@ -166,8 +188,8 @@ class CertificateDialog(QDialog):
             value = data.get(key)
             edit.setText("" if value is None else f"{value:g}" if isinstance(value, float)
                          else str(value))
-        index = self.decision_rule.findData(meta.decision_rule)
-        self.decision_rule.setCurrentIndex(max(index, 0))
+        for key, box in self.choices.items():
+            box.setCurrentIndex(max(box.findData(data.get(key)), 0))
         self.notes.setPlainText(meta.notes)
         if not meta.issue_date:
             self.fields["issue_date"].setText(dt.date.today().isoformat())
@@ -195,7 +217,8 @@ class CertificateDialog(QDialog):
 
     def raw_values(self) -> dict[str, Any]:
         data: dict[str, Any] = {key: edit.text() for key, edit in self.fields.items()}
-        data["decision_rule"] = self.decision_rule.currentData()
+        for key, box in self.choices.items():
+            data[key] = box.currentData()
         data["notes"] = self.notes.toPlainText()
         standards = []
         for row in range(self.standards.rowCount()):
