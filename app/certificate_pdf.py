@@ -33,7 +33,8 @@ from models.certificate_document import CertificateDocument, PlotFigure, Table, 
 from models.conformity import uncertainty_decimals
 from models.uncertainty_budget import BASIS_DIVISORS
 
-__all__ = ["certificate_pdf_bytes", "font_files", "write_certificate_pdf"]
+__all__ = ["ReportPdf", "certificate_pdf_bytes", "close_fonts", "font_files",
+           "write_certificate_pdf"]
 
 FONT = "dejavu"
 CJK_FONT = "droid"
@@ -82,14 +83,21 @@ def _created(document: CertificateDocument) -> dt.datetime:
     return dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
 
 
-class _CertificatePdf(FPDF):
-    def __init__(self, document: CertificateDocument) -> None:
+class ReportPdf(FPDF):
+    """An A4 page with the bundled fonts, a running head and foot, headings, paragraphs,
+    tables and vector plots: the certificate and the validation report are made of it.
+
+    ``head`` is (left, right) text at the top of every page, ``foot`` the lines at the
+    bottom (the first gets "Page x of y" beside it).
+    """
+
+    def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False) -> None:
         super().__init__(orientation="portrait", unit="mm", format="A4")
-        self.document = document
+        self.head, self.foot = head, foot
         fonts = font_files()
         self.add_font(FONT, "", str(fonts["regular"]))
         self.add_font(FONT, "B", str(fonts["bold"]))
-        if _needs_fallback(document):  # the CJK font costs ~0.3 s to load and subset
+        if cjk:  # the CJK font costs ~0.3 s to load and subset
             self.add_font(CJK_FONT, "", str(fonts["cjk"]))
             self.set_fallback_fonts([CJK_FONT], exact_match=False)
         self.set_margins(18, 16, 18)
@@ -99,48 +107,33 @@ class _CertificatePdf(FPDF):
 
     # -- page furniture ------------------------------------------------------
     def header(self) -> None:
-        meta = self.document.metadata
         self.set_font(FONT, "", 8)
         self.set_text_color(*GREY)
-        left = meta.lab_name or "Laboratory not stated"
-        number = meta.certificate_number or "no number"
+        left, right = self.head
         # The right-hand cell first: a CJK lab name switches to the fallback font, and
         # fpdf2 then omits the font selection of the next cell on a fresh page.
         y = self.get_y()
         self.set_x(self.l_margin + self.epw / 2)
-        self.cell(self.epw / 2, 5, f"Certificate {number}", align="R")
+        self.cell(self.epw / 2, 5, right, align="R")
         self.set_xy(self.l_margin, y)
         self.cell(self.epw / 2, 5, left, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.set_draw_color(*RULE)
         self.line(self.l_margin, self.get_y(), self.w - self.r_margin, self.get_y())
         self.ln(3)
         self.set_text_color(*INK)
-        if self.document.is_draft:
-            self._watermark()
-
-    def _watermark(self) -> None:
-        x, y = self.get_x(), self.get_y()
-        with self.local_context(text_color=(235, 200, 200)):
-            self.set_font(FONT, "B", 90)
-            with self.rotation(45, self.w / 2, self.h / 2):
-                self.text(self.w / 2 - 60, self.h / 2 + 12, "DRAFT")
-        self.set_xy(x, y)
 
     def footer(self) -> None:
         self.set_y(-14)
         self.set_font(FONT, "", 7.5)
         self.set_text_color(*GREY)
-        meta = self.document.metadata
-        self.cell(self.epw * 0.75, 4, "This certificate shall not be reproduced except in full "
-                  "without the laboratory's written approval.", new_x=XPos.RIGHT, new_y=YPos.TOP)
+        self.cell(self.epw * 0.75, 4, self.foot[0], new_x=XPos.RIGHT, new_y=YPos.TOP)
         # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
         # would be replaced by the number of pages.
         previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
         self.cell(self.epw * 0.25, 4, f"Page {self.page_no()} of {PAGE_TOTAL_ALIAS}", align="R",
                   new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.str_alias_nb_pages = previous
-        self.cell(self.epw, 4, f"Certificate {meta.certificate_number or '—'} · AngleBench "
-                  f"{__version__}")
+        self.cell(self.epw, 4, self.foot[1])
         self.set_text_color(*INK)
 
     def output(self, *args, **kwargs):
@@ -269,6 +262,32 @@ class _CertificatePdf(FPDF):
         self.set_line_width(0.2)
         self.set_draw_color(*INK)
         self.set_y(y0 + h + 9)
+
+
+class _CertificatePdf(ReportPdf):
+    def __init__(self, document: CertificateDocument) -> None:
+        meta = document.metadata
+        super().__init__(
+            (meta.lab_name or "Laboratory not stated",
+             f"Certificate {meta.certificate_number or 'no number'}"),
+            ("This certificate shall not be reproduced except in full without the laboratory's "
+             "written approval.",
+             f"Certificate {meta.certificate_number or '—'} · AngleBench {__version__}"),
+            cjk=_needs_fallback(document))
+        self.document = document
+
+    def header(self) -> None:
+        super().header()
+        if self.document.is_draft:
+            self._watermark()
+
+    def _watermark(self) -> None:
+        x, y = self.get_x(), self.get_y()
+        with self.local_context(text_color=(235, 200, 200)):
+            self.set_font(FONT, "B", 90)
+            with self.rotation(45, self.w / 2, self.h / 2):
+                self.text(self.w / 2 - 60, self.h / 2 + 12, "DRAFT")
+        self.set_xy(x, y)
 
 
 def _long_word(text: str) -> bool:
@@ -468,7 +487,7 @@ def _signatures(pdf: _CertificatePdf) -> None:
     pdf.set_y(y + 24)
 
 
-def _close_fonts(pdf: FPDF) -> None:
+def close_fonts(pdf: FPDF) -> None:
     """fpdf2 opens the TrueType files lazily and leaves them open: close them."""
     for font in pdf.fonts.values():
         ttfont = getattr(font, "ttfont", None)
@@ -481,7 +500,7 @@ def certificate_pdf_bytes(document: CertificateDocument) -> bytes:
     try:
         return bytes(final.output())
     finally:
-        _close_fonts(final)
+        close_fonts(final)
 
 
 def write_certificate_pdf(path: str | Path, document: CertificateDocument) -> None:

@@ -4,6 +4,7 @@
     anglebench --samples            open the window on the bundled samples
     anglebench --screenshot DIR     write DIR/<workbench>.png for every workbench, then exit
     anglebench analyze KIND FILE …  analyse a CSV without a window (see app.cli)
+    anglebench validate [--pdf OUT] run the method validation cases (see app.validation_report)
 """
 
 from __future__ import annotations
@@ -19,6 +20,10 @@ def main(argv: list[str] | None = None) -> int:
         from app.cli import run_analyze  # no Qt import on this path
 
         return run_analyze(argv[1:])
+    if argv and argv[0] == "validate":
+        from app.validation_report import run_validate  # no Qt import on this path
+
+        return run_validate(argv[1:])
     parser = argparse.ArgumentParser(prog="anglebench", description="Angle metrology workbench")
     parser.add_argument("project", nargs="?", help="project file to open")
     parser.add_argument("--samples", action="store_true", help="load the bundled samples")

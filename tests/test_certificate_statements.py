@@ -12,8 +12,6 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from pypdf import PdfReader
-from rigs.polygon_rig import PolygonRig
-from rigs.theodolite_rig import theodolite_readings
 
 from app.certificate_pdf import certificate_pdf_bytes
 from models.certificate_metadata import CertificateMetadata, MetadataError
@@ -24,6 +22,8 @@ from models.tabular_import import map_columns, read_table
 from models.theodolite import analyze_run
 from models.theodolite_report import theodolite_budget
 from models.uncertainty_budget import coverage_factor
+from models.validation.polygon_rig import PolygonRig
+from models.validation.theodolite_rig import theodolite_readings
 
 META = CertificateMetadata.from_dict({
     "certificate_number": "AB-2026-0100", "lab_name": "Angle Lab", "customer_name": "Customer",

@@ -1,6 +1,5 @@
 import numpy as np
 import pytest
-from rigs.polygon_rig import PolygonRig
 
 from models.polygon import (
     SHORT_FORM_COEFFICIENT,
@@ -14,6 +13,7 @@ from models.polygon import (
 )
 from models.polygon_analysis import POLYGON
 from models.readings import ReadingsSheet
+from models.validation.polygon_rig import PolygonRig
 
 THETA = np.arange(0.0, 360.0, 1.0)
 

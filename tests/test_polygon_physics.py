@@ -10,12 +10,12 @@ import json
 
 import numpy as np
 import pytest
-from rigs.polygon_rig import PolygonRig, write_csv
 
 from app.main import main
 from models.polygon import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
 from models.polygon_analysis import POLYGON
 from models.readings import ReadingsSheet
+from models.validation.polygon_rig import PolygonRig, write_csv
 
 SIGMA = 0.03  # autocollimator noise, arcsec
 

@@ -9,8 +9,6 @@ import json
 
 import numpy as np
 import pytest
-from rigs.polygon_rig import PolygonRig
-from rigs.theodolite_rig import theodolite_readings
 
 from app.main import main
 from models.analysis_kind import SIGN_CONVENTION
@@ -18,6 +16,8 @@ from models.kinds import KINDS
 from models.polygon_analysis import POLYGON
 from models.readings import ReadingsSheet
 from models.theodolite import analyze_run
+from models.validation.polygon_rig import PolygonRig
+from models.validation.theodolite_rig import theodolite_readings
 
 SCALE = 1e-5
 

@@ -13,7 +13,7 @@ import numpy as np
 from models.angles import format_dms
 from models.fringe import ChannelFit, model_signal, phase_of_samples
 from models.theodolite import SetupParameters, simulate_readings
-from tests.rigs.polygon_rig import PolygonRig
+from models.validation.polygon_rig import PolygonRig
 
 HERE = Path(__file__).resolve().parent
 

@@ -23,7 +23,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from rigs.rotation import ARCSEC, rotate
+
+from models.validation.rotation import ARCSEC, rotate
 
 
 @dataclass

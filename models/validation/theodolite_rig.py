@@ -10,7 +10,8 @@ atan2(y, x) and elevation asin(z). Nothing here comes from ``models``.
 from __future__ import annotations
 
 import numpy as np
-from rigs.rotation import rotate
+
+from models.validation.rotation import rotate
 
 
 def theodolite_readings(true_rotation_deg, psi_deg: float, alpha_deg: float,

@@ -1,0 +1,286 @@
+"""The reference cases of the method validation report (``anglebench validate``).
+
+Three kinds of case for each workbench:
+
+* the seeds' check figures (SPEC.md), from the model's equations;
+* exact simulations with known truth, made by the first-principles rigs of
+  this package, run through the whole analysis;
+* the GUM budget against a Monte Carlo simulation of repeated measurements
+  (JCGM 101): the spread of (result − truth) against the budget's u.
+
+The Monte Carlo comparisons are functions of their own so that the test suite
+runs them with more trials.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.certificate_metadata import CertificateMetadata, ReferenceStandard
+from models.fringe_analysis import FRINGE
+from models.fringe_report import fringe_budget
+from models.polygon import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
+from models.polygon_analysis import POLYGON
+from models.polygon_report import polygon_budget
+from models.readings import ParsedReadings, ReadingsSheet
+from models.theodolite import analyze_run, induced_error_arcsec
+from models.theodolite_report import theodolite_budget
+from models.validation.fringe_rig import FringeHead, equal_steps
+from models.validation.polygon_rig import PolygonRig
+from models.validation.theodolite_rig import theodolite_readings
+
+__all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
+           "polygon_budget_trials", "run_validation", "theodolite_budget_trials"]
+
+
+@dataclass(frozen=True)
+class ValidationCase:
+    workbench: str
+    name: str
+    source: str  # "check figure", "exact simulation" or "budget vs Monte Carlo"
+    expected: str
+    obtained: str
+    passed: bool
+
+
+def budget_agreement(deviations: np.ndarray, budgets: np.ndarray) -> tuple[float, float]:
+    """(RMS spread / RMS budget u, worst single-point |spread/u − 1|) over the points
+    whose budget is not zero."""
+    spread = np.std(deviations, axis=0, ddof=1)
+    budget_u = np.sqrt(np.mean(np.square(budgets), axis=0))
+    keep = budget_u > 0
+    spread, budget_u = spread[keep], budget_u[keep]
+    ratio = float(np.sqrt(np.mean(spread**2) / np.mean(budget_u**2)))
+    return ratio, float(np.max(np.abs(spread / budget_u - 1.0)))
+
+
+# -- Monte Carlo runs ------------------------------------------------------------------------
+THEODOLITE_SETUP = (2.0, 40.0, 3.0)  # ψ, α, β in degrees
+
+
+def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+    """Corrected error − truth and the budget's u, per trial and point (arcsec)."""
+    theta = np.arange(-60.0, 60.1, 5.0)
+    truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
+    noise, u_standard = 0.5, 0.3
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty_arcsec=0.6,
+                                                            basis="U95"),))
+    clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
+    deviations, budgets = [], []
+    for _ in range(trials):
+        az = clean_az + (rng.normal(0.0, noise, theta.size)
+                         + rng.normal(0.0, u_standard, theta.size)) / 3600.0
+        el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
+        result = analyze_run(theta, az, el)
+        deviations.append(result.corrected_error_arcsec - truth)
+        budgets.append(theodolite_budget(result, meta).combined_arcsec)
+    return np.array(deviations), np.array(budgets)
+
+
+def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, -1, 1, -1)
+                          ) -> tuple[np.ndarray, np.ndarray]:
+    """Mean corrected error − truth and the budget's u for sets run in ``directions``;
+    the polygon's true deviations are drawn about its certificate."""
+    faces = 24
+    theta = np.arange(faces) * 360.0 / faces
+    truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
+    certificate_dev = np.random.default_rng(5).normal(0.0, 0.2, faces)
+    u_polygon, noise = 0.10, 0.08
+    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
+                                                            basis="U95"),))
+    settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
+    deviations, budgets = [], []
+    for _ in range(trials):
+        true_dev = certificate_dev + rng.normal(0.0, u_polygon, faces)
+        rig = PolygonRig(faces, truth, psi_arcsec=60.0, omega_deg=70.0, face_dev_arcsec=true_dev,
+                         certificate_error_arcsec=certificate_dev - true_dev, noise_arcsec=noise,
+                         rng=rng)
+        rows = []
+        for k, d in enumerate(directions):
+            rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
+        result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
+        deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
+        budgets.append(polygon_budget(result, meta).combined_arcsec)
+    # face 1 is the zero: its error is zero by definition in set 1, and the budget's
+    # simple pattern there is not compared
+    return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
+
+
+def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+    """Compensated error (the truth after compensation is 0) and the budget's u."""
+    per, periods = 64, 4
+    theta = equal_steps(per * periods, per)
+    head = FringeHead(offsets_v=(0.02, -0.015), amplitudes_v=(1.0, 0.97),
+                      sin_harmonics={3: (0.012, 0.4), 5: (0.004, 0.0)},
+                      cos_harmonics={3: (0.009, 2.0)}, noise_v=0.004)
+    settings = FRINGE.settings_with_defaults({"samples_per_period": per, "lines_per_rev": 16384})
+    meta = CertificateMetadata()
+    deviations, budgets = [], []
+    for _ in range(trials):
+        u_sin, u_cos = head.channels(theta, rng)
+        values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
+        result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
+        deviations.append(result.compensated_error_arcsec)
+        budgets.append(fringe_budget(result, meta).combined_arcsec)
+    return np.array(deviations), np.array(budgets)
+
+
+# -- the cases ----------------------------------------------------------------------------
+def _close(workbench: str, name: str, source: str, expected: float, obtained: float,
+           tolerance: float, unit: str = "\"", digits: int = 3) -> ValidationCase:
+    return ValidationCase(workbench, name, source, f"{expected:.{digits}f}{unit} ± {tolerance:g}{unit}",
+                          f"{obtained:.{digits}f}{unit}", abs(obtained - expected) <= tolerance)
+
+
+def _at_most(workbench: str, name: str, source: str, limit: float, obtained: float,
+             unit: str = "\"", digits: int = 4) -> ValidationCase:
+    return ValidationCase(workbench, name, source, f"≤ {limit:g}{unit}",
+                          f"{obtained:.{digits}g}{unit}", obtained <= limit)
+
+
+def _agreement_case(workbench: str, run: Callable, trials: int, seed: int) -> ValidationCase:
+    """The spread of N runs estimates u to about 1/√(2N): the ratio may be off by three
+    times that (at least 10 %), one point by four times (at least 25 %)."""
+    ratio, worst = budget_agreement(*run(trials, np.random.default_rng(seed)))
+    ratio_tol = max(0.10, 3.0 / math.sqrt(2.0 * trials))
+    point_tol = max(0.25, 4.0 / math.sqrt(2.0 * trials))
+    return ValidationCase(workbench, f"GUM budget u against the spread of {trials} simulated runs",
+                          "budget vs Monte Carlo",
+                          f"ratio 1 ± {ratio_tol:.2f}, worst point within {100 * point_tol:.0f} %",
+                          f"ratio {ratio:.3f}, worst point {100 * worst:.0f} %",
+                          abs(ratio - 1.0) <= ratio_tol and worst <= point_tol)
+
+
+def theodolite_cases(trials: int) -> list[ValidationCase]:
+    w = "Theodolite run"
+    theta = np.arange(-20.0, 21.0, 1.0)
+    zeta = induced_error_arcsec(theta, 3.0, 45.0, 2.0)
+    alphas = np.arange(0.0, 360.0, 1.0)
+    spread = max(float(np.ptp([induced_error_arcsec(np.array([t]), 3.0, a, 2.0)[0]
+                               for a in alphas])) for t in theta)
+    experiment = induced_error_arcsec(theta, 5.8249, 43.4965, -0.0395)
+    cases = [
+        _close(w, "ζ spans ±187.9\" (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)", "check figure",
+               187.9, float(np.max(zeta)), 0.05, digits=2),
+        _close(w, "largest spread of ζ over α at one θ", "check figure", 270.1, spread, 0.05,
+               digits=2),
+        _close(w, "the seed's experiment: ζ from −301\"", "check figure", -301.1,
+               float(np.min(experiment)), 0.5, digits=1),
+        _close(w, "the seed's experiment: ζ to +423\"", "check figure", 422.6,
+               float(np.max(experiment)), 0.5, digits=1),
+    ]
+    truth = 0.05 * theta + 0.8 * np.sin(np.radians(theta) * 9)  # error of indication
+    az, el = theodolite_readings(theta - truth / 3600.0, 5.8249, 43.4965, -0.0395)
+    result = analyze_run(theta, az, el)
+    s = result.identification.setup
+    cases += [
+        _at_most(w, "3-D simulation, no noise: |corrected − true error|", "exact simulation",
+                 1e-4, float(np.max(np.abs(result.corrected_error_arcsec - truth)))),
+        _at_most(w, "3-D simulation, no noise: |ψ, α, β − set-up| (°)", "exact simulation", 1e-6,
+                 float(max(abs(s.psi_deg - 5.8249), abs(s.alpha_deg - 43.4965),
+                           abs(s.beta_deg + 0.0395))), unit="°"),
+    ]
+    scale = theodolite_readings(theta / (1 + 1e-5), 3.0, 45.0, 2.0)
+    scaled = analyze_run(theta, *scale)
+    cases.append(_close(w, "sign: an axis indicating 1e-5 too much reads + at +20°",
+                        "exact simulation", 0.72, float(scaled.corrected_error_arcsec[-1]), 0.005))
+    cases.append(_agreement_case(w, theodolite_budget_trials, trials, 11))
+    return cases
+
+
+def polygon_cases(trials: int) -> list[ValidationCase]:
+    w = "Polygon encoder test"
+    theta = np.arange(0.0, 360.0, 1.0)
+    eps_x, eps_y = pyramidal_readings_arcsec(theta, 600.0, 90.0)
+    fine = np.arange(0.0, 360.0, 0.5)
+    worst = max(float(np.max(np.abs(pyramidal_readings_arcsec(fine, 600.0, om)[0])))
+                for om in np.arange(0.0, 360.0, 0.5)) / 600.0**2
+    cases = [
+        _close(w, "largest |ε_x| at ψ = 10′, ω = 90°", "check figure", 1.921,
+               float(np.max(np.abs(eps_x))), 0.0005),
+        _close(w, "ε_x/ψ² at θ = 111° (×1e-5)", "check figure", 0.5337,
+               float(eps_x[111] / 600.0**2 * 1e5), 0.0002, unit="", digits=4),
+        _close(w, "ε_x/ψ² at θ = 179° (×1e-6)", "check figure", 0.1269,
+               float(eps_x[179] / 600.0**2 * 1e6), 0.0002, unit="", digits=4),
+        _close(w, "ε_y spans 2ψ", "check figure", 1200.0, float(np.ptp(eps_y)), 0.1, digits=1),
+        _close(w, "largest ε_x/ψ² over every direction (×1e-6)", "check figure",
+               WORST_CASE_COEFFICIENT * 1e6, worst * 1e6, 0.002, unit="", digits=3),
+    ]
+    faces = 24
+    nominal = np.arange(faces) * 360.0 / faces
+    truth = 0.35 * np.cos(np.radians(nominal) + 0.7) + 0.15 * np.cos(2 * np.radians(nominal))
+    rig = PolygonRig(faces, truth, psi_arcsec=480.0, omega_deg=60.0, backlash_arcsec=2.0,
+                     encoder_zero_deg=359.99, counting=-1, vertical_sense=-1)
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows(1) + rig.set_rows(
+        2, reverse=True, start_face=7)).parse(), {"grade": 7})
+    forward = result.sets[0].corrected_error_arcsec
+    cases += [
+        _at_most(w, "3-D simulation (ψ = 480″, counting against the faces, zero through 360°): "
+                 "|corrected − true error|", "exact simulation", 1e-3,
+                 float(np.max(np.abs(forward - rig.truth_arcsec())))),
+        _close(w, "3-D simulation: a constant 2″ backlash is the reversal B", "exact simulation",
+               2.0, float(np.max(np.abs(result.reversal_arcsec))), 0.002),
+    ]
+    residuals = []
+    for i in range(16):
+        n = (12, 24, 36, 72)[i % 4]
+        nom = np.arange(n) * 360.0 / n
+        noisy = PolygonRig(n, 0.3 * np.cos(np.radians(nom)), psi_arcsec=300.0 + 60 * i,
+                           omega_deg=37.0 * i, noise_arcsec=0.03, rng=np.random.default_rng(i))
+        rows = noisy.set_rows(1) + noisy.set_rows(2, reverse=True, start_face=1 + i % n)
+        r = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {"grade": 7})
+        residuals += [s.corrected_error_arcsec - noisy.truth_arcsec() for s in r.sets]
+    rms = float(np.sqrt(np.mean(np.concatenate(residuals) ** 2)))
+    cases.append(_at_most(w, "3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = "
+                          "0.03″: RMS of corrected − true error (2σ)", "exact simulation", 0.06,
+                          rms))
+    cases.append(_agreement_case(w, polygon_budget_trials, trials, 6))
+    return cases
+
+
+def fringe_cases(trials: int) -> list[ValidationCase]:
+    w = "Fringe signal analysis"
+    per = 64
+    theta = equal_steps(8 * per, per)
+    # Table 1, the cos channel's B1 read as +3.7346 (SPEC §3)
+    table1 = FringeHead(offsets_v=(-0.0179, -0.0642), amplitudes_v=(3.7763, 3.7346),
+                        phase_rad=0.026, quadrature_deg=np.degrees(1.5902 - 0.026) - 90.0,
+                        sin_harmonics={3: (-0.0796, 3.2261), 5: (0.0109, 0.4688)},
+                        cos_harmonics={3: (0.079, 8.0719), 5: (-0.01, 2.0662)})
+    u_sin, u_cos = table1.channels(theta)
+    values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
+    settings = FRINGE.settings_with_defaults({"samples_per_period": per})
+    result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
+    raw = result.raw_error_arcsec
+    cases = [
+        _close(w, "Table 1's signals: peak-to-peak interpolation error", "check figure", 0.973,
+               float(np.ptp(raw)), 0.005),
+        _at_most(w, "Table 1's signals: error left after compensation (peak-to-peak)",
+                 "exact simulation", 0.01, float(np.ptp(result.compensated_error_arcsec))),
+    ]
+    head = FringeHead(offsets_v=(0.03, -0.02), amplitudes_v=(1.0, 0.95), quadrature_deg=2.0,
+                      sin_harmonics={3: (0.01, 0.5)}, cos_harmonics={3: (0.008, 1.0)})
+    u_sin, u_cos = head.channels(theta)
+    values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
+    fitted = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
+    measured = np.arctan2(u_sin, u_cos)
+    truth = (np.angle(np.exp(1j * (measured - theta))) * 1_296_000 / 16384 / (2 * math.pi))
+    truth = truth - truth.mean()
+    cases.append(_at_most(w, "sampled signals with a true phase: |raw error − true error|",
+                          "exact simulation", 1e-6,
+                          float(np.max(np.abs(fitted.raw_error_arcsec - truth)))))
+    cases.append(_at_most(w, "sampled signals with a true phase: |offsets − truth| (V)",
+                          "exact simulation", 1e-9,
+                          max(abs(fitted.sin_fit.offset - 0.03), abs(fitted.cos_fit.offset + 0.02)),
+                          unit=" V"))
+    cases.append(_agreement_case(w, fringe_budget_trials, trials, 3))
+    return cases
+
+
+def run_validation(trials: int = 200) -> list[ValidationCase]:
+    """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
+    return theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
