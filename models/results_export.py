@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.atomic_write import write_bytes_atomic
 from models.certificate_document import CertificateDocument, budget_table
 
@@ -64,10 +65,19 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Date of calibration", meta.calibration_date), ("Date of issue", meta.issue_date),
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
-        ("Expanded uncertainty U, k = 2 (\")", document.expanded_uncertainty_arcsec),
+        ("Sign convention", SIGN_CONVENTION_TEXT),
+        ("Expanded uncertainty U, largest (\")", document.expanded_uncertainty_arcsec),
+        ("Coverage factor k there", document.budget.coverage_factor),
+        ("Coverage probability (%)", 100.0 * document.budget.probability),
         ("Tolerance ± (\")", document.tolerance_arcsec),
+        ("Decided quantity", document.conformity.quantity),
+        ("Decided value (\")", document.conformity.value_arcsec),
+        ("U of the decided value (\")", document.conformity.expanded_arcsec),
+        ("Verdict", document.conformity.verdict),
         ("Conformity", document.conformity.statement),
-        ("Decision rule", document.conformity.rule), ("Notes", meta.notes),
+        ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
+        *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),
+        ("Notes", meta.notes),
     ]
     for i, s in enumerate(meta.standards, 1):
         rows.append((f"Standard {i}", f"{s.description}; serial {s.serial}; certificate "

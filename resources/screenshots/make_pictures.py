@@ -1,6 +1,7 @@
 """Regenerate the README pictures: python -m resources.screenshots.make_pictures
 
-The workbench screenshots come from ``anglebench --screenshot``; each sample
+The workbench screenshots come from ``anglebench --screenshot``; the first page
+of the validation report from ``anglebench validate --pdf``; each sample
 certificate is written by the CLI with its example details
 (``resources/samples/certificate_*.json``), its first three pages rendered by
 poppler's ``pdftoppm`` (Debian: poppler-utils) and laid side by side with Qt.
@@ -45,6 +46,15 @@ def certificate_picture(kind: str, scratch: Path) -> Path:
     return out
 
 
+def validation_picture(scratch: Path) -> Path:
+    pdf = scratch / "validation.pdf"
+    subprocess.run([sys.executable, "-m", "app.main", "validate", "--pdf", str(pdf)], check=True,
+                   stdout=subprocess.DEVNULL)
+    subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "1", "-singlefile", str(pdf),
+                    str(HERE / "validation_report")], check=True)
+    return HERE / "validation_report.png"
+
+
 def main() -> None:
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     from PySide6.QtWidgets import QApplication
@@ -58,6 +68,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         for kind in ("theodolite", "polygon", "fringe"):
             certificate_picture(kind, Path(scratch))
+        validation_picture(Path(scratch))
 
 
 if __name__ == "__main__":
