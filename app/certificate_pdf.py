@@ -367,7 +367,7 @@ def _render(document: CertificateDocument) -> FPDF:
         ("Manufacturer", meta.item_manufacturer),
         ("Serial number", meta.item_serial),
         ("Grade / specification", "; ".join(p for p in (
-            meta.item_grade, f"tolerance ±{document.tolerance_arcsec:g}\""
+            meta.item_grade, f"tolerance ±{document.tolerance_arcsec:g}{document.unit}"
             if document.tolerance_arcsec else "") if p)),
         ("Date of calibration", meta.calibration_date),
         ("Environment", _environment(meta)),
@@ -398,14 +398,14 @@ def _render(document: CertificateDocument) -> FPDF:
     budget_ = document.budget
     pdf.paragraph(
         "The expanded uncertainty of the error is "
-        f"U = {big_u:.{uncertainty_decimals(big_u)}f}\" "
+        f"U = {big_u:.{uncertainty_decimals(big_u)}f}{document.unit} "
         "(the largest over the points; each point's U is in the results table). At each point "
         "it is the combined standard uncertainty multiplied by the coverage factor k of "
         "Student's t for that point's effective degrees of freedom (Welch–Satterthwaite) and a "
         f"coverage probability of {100 * budget_.probability:.2f} %; at the largest, "
         f"k = {budget_.coverage_factor:.2f}. The uncertainty was evaluated according to the GUM "
         "(JCGM 100:2008).")
-    budget = budget_table(document.budget, document.budget_point)
+    budget = budget_table(document.budget, document.budget_point, document.unit)
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
                    ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
     notes = [f"{row[0]}: {c.note}" for row, c in zip(budget.rows, document.budget.components,

@@ -53,7 +53,11 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--ac-roll", type=float, metavar="ARCMIN",
                    help="polygon: the autocollimator reticle's roll limit (budget input)")
     p.add_argument("--lines-per-rev", type=int, help="fringe: grating lines per revolution")
-    p.add_argument("--samples-per-period", type=int, help="fringe: samples per grating period")
+    p.add_argument("--samples-per-period", type=int,
+                   help="fringe: equal steps, N samples a period (leave it out to take the phase "
+                        "from the theta_deg column, or to estimate it from the signals)")
+    p.add_argument("--period-nm", type=float,
+                   help="fringe: an interferometer, this many nm a fringe period (errors in nm)")
     return p
 
 
@@ -79,6 +83,8 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
         settings["lines_per_rev"] = args.lines_per_rev
     if args.samples_per_period is not None:
         settings["samples_per_period"] = args.samples_per_period
+    if args.period_nm is not None:
+        settings["period_nm"] = args.period_nm
     return settings
 
 

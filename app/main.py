@@ -58,5 +58,15 @@ def run_gui(project: str | None, samples: bool) -> int:
     return app.exec()
 
 
+def entry() -> int:
+    """The console script: a closed pipe (``anglebench analyze … | head``) ends quietly."""
+    try:
+        return main()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())  # Python's own flush at exit must not fail
+        return 0
+
+
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(entry())

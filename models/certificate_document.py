@@ -75,6 +75,7 @@ class CertificateDocument:
     # statements of this workbench's own (why U is zero somewhere, a specification's
     # source, as found / as left …), printed with the shared ones
     statements: tuple[str, ...] = ()
+    unit: str = "\""  # the errors' unit symbol: arcsec, or " nm" for an interferometer
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:
@@ -102,7 +103,7 @@ def _dof_text(nu: float) -> str:
     return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
 
 
-def budget_table(budget: UncertaintyBudget, point: str) -> Table:
+def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Table:
     """The budget at its worst point as a printable table, with the combined line."""
     rows = []
     for r in budget.table():
@@ -123,8 +124,9 @@ def budget_table(budget: UncertaintyBudget, point: str) -> Table:
     note = (f"Budget at {point}, the point with the largest U. k = {k:.2f} is Student's t for "
             f"ν_eff = {nu_text} (Welch–Satterthwaite) and a coverage probability of "
             f"{100 * budget.probability:.2f} %; each point's U uses its own ν_eff.")
-    return Table("Uncertainty budget", ("Input", "Type", "Distribution", "Value (\")", "Divisor",
-                                        "u (\")", "c", "c·u (\")", "Share %", "ν"),
+    u = unit.strip()
+    return Table("Uncertainty budget", ("Input", "Type", "Distribution", f"Value ({u})", "Divisor",
+                                        f"u ({u})", "c", f"c·u ({u})", "Share %", "ν"),
                  rows, note)
 
 
@@ -163,7 +165,7 @@ def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[Bud
 
 
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
-                  points: str) -> list[tuple[str, str, str]]:
+                  points: str, unit: str = "\"") -> list[tuple[str, str, str]]:
     """The statistics rows every certificate has: the decided quantity with its own U,
     and the curve's largest U with its coverage factor."""
     big_u = budget.max_expanded_arcsec
@@ -171,10 +173,10 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     rows = []
     if math.isfinite(conformity.value_arcsec):
         rows.append(("Decided quantity", format_uncertain(conformity.value_arcsec,
-                                                           conformity.expanded_arcsec, "\""),
+                                                           conformity.expanded_arcsec, unit),
                      conformity.quantity))
     rows.append((f"Expanded uncertainty U (p = {100 * budget.probability:.2f} %)",
-                 f"{big_u:.{digits}f}\"",
+                 f"{big_u:.{digits}f}{unit}",
                  f"largest over the {points}; k = {budget.coverage_factor:.2f} there"))
     return rows
 

@@ -218,13 +218,13 @@ class Conformity:
         return self.verdict in ("pass", "conditional pass")
 
 
-def _zones(t: float, w: float, rule: str, d: int) -> str:
+def _zones(t: float, w: float, rule: str, d: int, q: str = "\"") -> str:
     if rule == "simple":
-        return f"pass ≤ {t:g}\" < fail"
+        return f"pass ≤ {t:g}{q} < fail"
     if rule == "guarded_binary":
-        return f"pass ≤ {t - w:.{d}f}\" (T − w) < fail"
-    return (f"pass ≤ {t - w:.{d}f}\" (T − w) < conditional pass ≤ {t:g}\" (T) < conditional fail "
-            f"≤ {t + w:.{d}f}\" (T + w) < fail")
+        return f"pass ≤ {t - w:.{d}f}{q} (T − w) < fail"
+    return (f"pass ≤ {t - w:.{d}f}{q} (T − w) < conditional pass ≤ {t:g}{q} (T) < conditional fail "
+            f"≤ {t + w:.{d}f}{q} (T + w) < fail")
 
 
 def _verdict(x: float, t: float, w: float, rule: str) -> str:
@@ -244,24 +244,27 @@ def _verdict(x: float, t: float, w: float, rule: str) -> str:
 _ORDER = ("pass", "conditional pass", "conditional fail", "fail")
 
 _SENTENCE = {
-    "pass": "The item conforms to the specification ±{t:g}\" (pass).",
-    "conditional pass": "Conditional pass: the result lies within ±{t:g}\" but closer to the limit "
+    "pass": "The item conforms to the specification ±{t:g}{q} (pass).",
+    "conditional pass": "Conditional pass: the result lies within ±{t:g}{q} but closer to the limit "
                         "than the guard band, so conformity is not proven at the stated "
                         "coverage probability.",
-    "conditional fail": "Conditional fail: the result lies beyond ±{t:g}\" by less than the guard "
+    "conditional fail": "Conditional fail: the result lies beyond ±{t:g}{q} by less than the guard "
                         "band, so non-conformity is not proven at the stated coverage "
                         "probability.",
-    "fail": "The item does not conform to the specification ±{t:g}\" (fail).",
+    "fail": "The item does not conform to the specification ±{t:g}{q} (fail).",
 }
 
 
 def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec: float | None,
                       rule: str = "guarded", quantity: str = "half_range",
-                      invalid_reason: str = "", what: str = "corrected error") -> Conformity:
-    """The verdict on an error curve against ±``tolerance_arcsec``.
+                      invalid_reason: str = "", what: str = "corrected error",
+                      unit: str = "\"") -> Conformity:
+    """The verdict on an error curve against ±``tolerance_arcsec`` (in ``unit``, the
+    errors' own: arcsec, or nm for an interferometer).
 
     ``invalid_reason`` (for example a failed closure) withholds the statement.
     """
+    q = unit
     rule_text = DECISION_RULES[rule]
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
@@ -281,17 +284,18 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
         x, w = abs(float(e[worst])), float(u[worst])
         d = uncertainty_decimals(w)
         verdict = verdicts[worst]
-        text = (f"Every point's {what} was judged against ±{t:g}\" with its own U; the deciding "
-                f"point is number {worst + 1}: |e| = {x:.{d}f}\", U = {w:.{d}f}\". "
-                + _SENTENCE[verdict].format(t=t))
-        zones = "per point, with w = U of that point: " + _zones(t, w, rule, d)
+        text = (f"Every point's {what} was judged against ±{t:g}{q} with its own U; the deciding "
+                f"point is number {worst + 1}: |e| = {x:.{d}f}{q}, U = {w:.{d}f}{q}. "
+                + _SENTENCE[verdict].format(t=t, q=q))
+        zones = "per point, with w = U of that point: " + _zones(t, w, rule, d, q)
         return Conformity(verdict, text, rule_text, DECISION_QUANTITIES["points"], x, w, zones)
     mc = half_range_monte_carlo(e, budget)
     x, w = mc.value, mc.u_upper
     d = uncertainty_decimals(w)
     verdict = _verdict(x, t, 0.0 if rule == "simple" else w, rule)
-    text = (f"Half the peak-to-peak {what}: {x:.{d}f}\" (measured {mc.measured:.{d}f}\", less "
-            f"{mc.bias:.{d}f}\" that the noise adds to a range), U = {w:.{d}f}\" "
-            f"(coverage probability {100 * mc.probability:.2f} %). " + _SENTENCE[verdict].format(t=t))
+    text = (f"Half the peak-to-peak {what}: {x:.{d}f}{q} (measured {mc.measured:.{d}f}{q}, less "
+            f"{mc.bias:.{d}f}{q} that the noise adds to a range), U = {w:.{d}f}{q} "
+            f"(coverage probability {100 * mc.probability:.2f} %). "
+            + _SENTENCE[verdict].format(t=t, q=q))
     quantity_text = (f"{DECISION_QUANTITIES['half_range']}: {mc.trials} trials, seed {mc.seed}")
-    return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d), mc)
+    return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d, q), mc)

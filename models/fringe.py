@@ -32,8 +32,11 @@ __all__ = [
     "fit_channels",
     "fit_channel_pso",
     "fit_periods",
+    "fit_periods_along",
     "interpolation_error_arcsec",
+    "interpolation_error_rad",
     "model_signal",
+    "model_slope",
     "model_signal_std",
     "period_arcsec",
     "phase_of_samples",
@@ -103,6 +106,15 @@ def model_signal(theta_rad, fit: ChannelFit) -> np.ndarray:
     for k in fit.orders:
         u += fit.amplitude[k] * np.sin(k * theta + fit.phase[k])
     return u
+
+
+def model_slope(theta_rad, fit: ChannelFit) -> np.ndarray:
+    """dU/dθ of the model (V/rad)."""
+    theta = np.asarray(theta_rad, dtype=float)
+    du = np.zeros_like(theta)
+    for k in fit.orders:
+        du += k * fit.amplitude[k] * np.cos(k * theta + fit.phase[k])
+    return du
 
 
 def channel_cost(theta_rad, u, fit: ChannelFit) -> float:
@@ -252,11 +264,46 @@ def fit_periods(u, samples_per_period: int, orders: tuple[int, ...] = (1, 3, 5))
     return out
 
 
+def interpolation_error_rad(measured_phase_rad, theta_rad) -> np.ndarray:
+    """Eq (5): measured phase − θ, wrapped, mean removed (rad of electrical phase)."""
+    delta = _wrap(np.asarray(measured_phase_rad, dtype=float) - np.asarray(theta_rad, dtype=float))
+    return delta - _circular_mean(delta)
+
+
 def interpolation_error_arcsec(u_sin, u_cos, theta_rad, lines_per_rev: int) -> np.ndarray:
     """Eq (5): ``atan2(u_sin, u_cos) − θ``, wrapped, mean removed, in arcsec of shaft angle."""
-    delta = _wrap(np.arctan2(u_sin, u_cos) - np.asarray(theta_rad, dtype=float))
-    delta = delta - _circular_mean(delta)
-    return delta / TWO_PI * period_arcsec(lines_per_rev)
+    return (interpolation_error_rad(np.arctan2(u_sin, u_cos), theta_rad) / TWO_PI
+            * period_arcsec(lines_per_rev))
+
+
+def fit_periods_along(theta_rad, u, orders: tuple[int, ...] = (1, 3, 5),
+                      max_segments: int = 4000) -> np.ndarray:
+    """:func:`fit_periods` along the actual phase: a segment per period of travel (forward
+    or back), or per block of periods when there are more than ``max_segments``; a segment
+    that does not cover three quarters of a period is left out."""
+    theta = np.asarray(theta_rad, dtype=float)
+    y = np.asarray(u, dtype=float)
+    travel = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(theta)))])
+    periods = int(travel[-1] // TWO_PI)
+    width = TWO_PI * max(1, -(-periods // max_segments))
+    segment = np.floor(travel / width).astype(int)
+    n_par = 1 + 2 * len(orders)
+    rows = []
+    bounds = np.flatnonzero(np.diff(segment)) + 1
+    for part in np.split(np.arange(theta.size), bounds):
+        t = theta[part]
+        if part.size < 2 * n_par:
+            continue
+        bins = np.unique(np.floor(np.mod(t, TWO_PI) / TWO_PI * 8).astype(int))
+        if bins.size < 6:
+            continue
+        coef, *_ = np.linalg.lstsq(_design(t, orders), y[part], rcond=None)
+        row = [coef[0]]
+        for i in range(len(orders)):
+            s_, c_ = coef[1 + 2 * i], coef[2 + 2 * i]
+            row += [math.hypot(s_, c_), math.atan2(c_, s_)]
+        rows.append(row)
+    return np.array(rows) if rows else np.empty((0, n_par))
 
 
 def _circular_mean(angle_rad: np.ndarray) -> float:
@@ -276,6 +323,7 @@ class CorrectionTable:
     """
 
     correction_rad: np.ndarray
+    zero: str = "mean"  # "mean": the table's mean is zero; "phase0": its first entry is
 
     @property
     def size(self) -> int:
@@ -303,12 +351,15 @@ class CorrectionTable:
 
 
 def build_correction_table(sin_fit: ChannelFit, cos_fit: ChannelFit,
-                           size: int = 1024) -> CorrectionTable:
+                           size: int = 1024, zero: str = "mean") -> CorrectionTable:
     """Tabulate the modelled error over the measured phase (eq 6).
 
     The model is evaluated on a dense grid of true phase θ; the measured phase
     φ(θ) = atan2(u_sin, u_cos) is monotonic for realistic distortion, so the
-    error Δ(θ) = φ − θ is re-sampled onto an even grid of φ.
+    error Δ(θ) = φ − θ is re-sampled onto an even grid of φ. The phase's origin
+    is arbitrary, so a constant in the table would only shift the fine track:
+    ``zero`` = "mean" removes the table's mean, "phase0" makes its first entry
+    (measured phase 0) zero.
     """
     if size < 8:
         raise ValueError("the correction table needs at least 8 entries")
@@ -320,7 +371,8 @@ def build_correction_table(sin_fit: ChannelFit, cos_fit: ChannelFit,
     phi, error = phi[order], error[order]
     grid = np.arange(size) * (TWO_PI / size)
     table = np.interp(grid, phi, error, period=TWO_PI)
-    return CorrectionTable(table)
+    table = table - (table[0] if zero == "phase0" else float(np.mean(table)))
+    return CorrectionTable(table, zero)
 
 
 @dataclass

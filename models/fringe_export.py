@@ -13,18 +13,23 @@ from models.fringe_analysis import FringeResult
 __all__ = ["correction_table_c_header", "correction_table_csv", "write_correction_table"]
 
 
+_ZERO_TEXT = {"mean": "the table's mean is zero (the phase origin is arbitrary)",
+              "phase0": "the entry at measured phase 0 is zero"}
+
+
 def correction_table_csv(result: FringeResult) -> str:
     out = io.StringIO()
     out.write("# AngleBench fringe correction table: corrected phase = measured - correction\n")
+    out.write(f"# zero: {_ZERO_TEXT[result.table.zero]}\n")
+    out.write(f"# phase from: {result.phase_source}\n")
     out.write(f"# table sha256: {result.table.sha256}\n")
     for name, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         params = ",".join(f"{k}={v:.9g}" for k, v in fit.as_dict().items())
         out.write(f"# {name}: {params}\n")
-    out.write("index,measured_phase_rad,correction_rad,correction_arcsec\n")
-    period = 1_296_000.0 / result.lines_per_rev
+    out.write(f"index,measured_phase_rad,correction_rad,correction_{result.unit}\n")
     for j, value in enumerate(result.table.correction_rad):
         phase = 2 * math.pi * j / result.table.size
-        out.write(f"{j},{phase:.9f},{value:.9e},{value / (2 * math.pi) * period:.6f}\n")
+        out.write(f"{j},{phase:.9f},{value:.9e},{value / (2 * math.pi) * result.period_length:.6f}\n")
     return out.getvalue()
 
 
@@ -34,6 +39,7 @@ def correction_table_c_header(result: FringeResult, name: str = "anglebench_frin
         "/* AngleBench fringe correction table (generated).",
         " * corrected_phase = measured_phase - lut[j] with j = measured_phase / (2*pi) * SIZE,",
         " * linear interpolation between entries; values in radians of electrical phase.",
+        f" * zero: {_ZERO_TEXT[result.table.zero]}.",
         f" * table sha256: {result.table.sha256} */",
         f"#ifndef {name.upper()}_H",
         f"#define {name.upper()}_H",

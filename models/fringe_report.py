@@ -37,7 +37,7 @@ from models.certificate_document import (
 from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.conformity import decide_conformity
 from models.decimation import envelope
-from models.fringe import model_signal, model_signal_std, period_arcsec
+from models.fringe import model_signal, model_signal_std
 from models.uncertainty_budget import BudgetComponent, UncertaintyBudget
 
 __all__ = ["fringe_budget", "fringe_certificate"]
@@ -52,6 +52,12 @@ METHOD = (
 )
 
 
+OBSERVABILITY_STATEMENT = (
+    "The phase was estimated from the signals, with no phase reference: offsets, amplitude "
+    "ratio and quadrature error are identified; a pure phase distortion of the grating is not "
+    "observable this way and is not in the error stated.")
+
+
 def _phase_sensitivities(result) -> tuple[np.ndarray, np.ndarray]:
     s = model_signal(result.theta_rad, result.sin_fit)
     c = model_signal(result.theta_rad, result.cos_fit)
@@ -62,16 +68,16 @@ def _phase_sensitivities(result) -> tuple[np.ndarray, np.ndarray]:
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False) -> UncertaintyBudget:
     """The budget of the compensated error, or of the as-found error (no model input)."""
     n = result.theta_rad.size
-    to_arcsec = period_arcsec(result.lines_per_rev) / (2.0 * math.pi)
+    to_unit = result.period_length / (2.0 * math.pi)
     ds, dc = _phase_sensitivities(result)
     p = 1 + 2 * len(result.sin_fit.orders)
     dof = max(n - p, 1)
     sig_s = result.sin_fit.residual_rms * math.sqrt(n / dof)
     sig_c = result.cos_fit.residual_rms * math.sqrt(n / dof)
-    noise = np.hypot(ds * sig_s, dc * sig_c) * to_arcsec
+    noise = np.hypot(ds * sig_s, dc * sig_c) * to_unit
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
-    model = np.hypot(ds * us, dc * uc) * to_arcsec
+    model = np.hypot(ds * us, dc * uc) * to_unit
     components = reference_standard_components(metadata, 1.0, "sample")
     components.append(BudgetComponent(
         "Signal noise", "A", "normal", noise, 1.0, 1.0, dof,
@@ -111,12 +117,12 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     budget = fringe_budget(result, metadata, as_found=not as_left)
     found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
     big_u = budget.expanded_arcsec
-    raw, comp = result.raw_error_arcsec, result.compensated_error_arcsec
+    raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
-    period = period_arcsec(result.lines_per_rev)
+    period, sym, unit = result.period_length, result.unit_symbol, result.unit
     parameters = Table("Signal parameters identified",
                        ("Parameter", "Value", "U (k = 2)"), _parameter_rows(result))
-    per = min(result.samples_per_period, raw.size)
+    per = min(result.samples_per_period or 64, raw.size)
     step = max(1, per // 64)
     idx = np.arange(0, per, step)
     phase_deg = np.degrees(result.theta_rad[idx])
@@ -124,26 +130,33 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                        strict=True))
     rows = [(f"{int(i)}", f"{p:.2f}", f"{r:+.3f}", f"{c:+.3f}", f"{e:+.3f}", f"{u:.3f}")
             for i, p, r, c, e, u in numeric]
-    note = (f"The first period is shown{f' (every {step}-th sample)' if step > 1 else ''}; "
+    note = (f"The first {per} samples are shown{f' (every {step}-th)' if step > 1 else ''}; "
             f"all {raw.size} samples are in the CSV/XLSX results export.")
     results = Table("Results per sample (first period; compensated = raw + correction)",
-                    ("Sample", "Phase θ (°)", "As found (\")", "Correction (\")",
-                     "Compensated (\")", f"U {'as left' if as_left else 'as found'} (\")"), rows,
-                    note)
+                    ("Sample", "Phase θ (°)", f"As found ({sym.strip()})",
+                     f"Correction ({sym.strip()})", f"Compensated ({sym.strip()})",
+                     f"U {'as left' if as_left else 'as found'} ({sym.strip()})"), rows, note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
+    scale = (f"L = {result.lines_per_rev} (period {period:.3f}\")" if unit == "arcsec"
+             else f"period {period:g} nm")
+    source = {"samples_per_period": f"{result.samples_per_period} equal steps a period",
+              "theta_column": "the θ column", "estimated": "estimated from the signals"}
     stat_rows = [
-        ("Samples", f"{raw.size}", f"{result.samples_per_period} per period, L = "
-                                   f"{result.lines_per_rev} (period {period:.3f}\")"),
-        ("Interpolation error as found", f"{raw.min():+.3f}\" … {raw.max():+.3f}\"",
-         f"peak-to-peak {pp_raw:.3f}\" ({pp_raw / period * 100:.2f} % of a period)"),
+        ("Samples", f"{raw.size}", f"phase from {source[result.phase_source]}; {scale}"),
+        ("Interpolation error as found", f"{raw.min():+.3f}{sym} … {raw.max():+.3f}{sym}",
+         f"peak-to-peak {pp_raw:.3f}{sym} ({pp_raw / period * 100:.2f} % of a period)"),
         ("After compensation" + (" (as left)" if as_left else " (not applied to the item)"),
-         f"{comp.min():+.3f}\" … {comp.max():+.3f}\"",
-         f"peak-to-peak {pp_comp:.3f}\" ({pp_comp / period * 100:.2f} % of a period)"),
+         f"{comp.min():+.3f}{sym} … {comp.max():+.3f}{sym}",
+         f"peak-to-peak {pp_comp:.3f}{sym} ({pp_comp / period * 100:.2f} % of a period)"),
+        ("Offsets, amplitude ratio, quadrature error",
+         f"{1e3 * result.sin_fit.offset:+.2f} / {1e3 * result.cos_fit.offset:+.2f} mV",
+         f"ratio {result.amplitude_ratio:.4f}, quadrature {result.quadrature_error_deg:+.3f}°"),
     ]
     tol = metadata.tolerance_arcsec
     conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
-                                   metadata.decision_quantity, what="as-found interpolation error")
-    stat_rows += decision_rows(conformity, found_budget, "samples")
+                                   metadata.decision_quantity, what="as-found interpolation error",
+                                   unit=sym)
+    stat_rows += decision_rows(conformity, found_budget, "samples", sym)
     stat_rows.append(("Correction table", f"{result.table.size} entries",
                       f"sha256 {result.table.sha256[:16]}…"))
     if result.sin_periods.shape[0] > 1:
@@ -151,7 +164,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         stat_rows.append(("Drift of sin A1 over the periods", f"{np.ptp(amp) * 1e3:.3g} mV",
                           f"{result.sin_periods.shape[0]} periods fitted one by one"))
     statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
-    x = np.arange(raw.size, dtype=float) / result.samples_per_period
+    x = np.arange(raw.size, dtype=float) / (result.samples_per_period or 64)
     xr, yr = envelope(x, raw)
     xc, yc = envelope(x, comp)
     res_s = result.u_sin - model_signal(result.theta_rad, result.sin_fit)
@@ -159,14 +172,16 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     xs, ys = envelope(x, res_s * 1e3)
     xk, yk = envelope(x, res_c * 1e3)
     plots = (
-        PlotFigure("Interpolation error before and after compensation", "period", "error (\")", (
+        PlotFigure("Interpolation error before and after compensation", "sample / 64" if not
+                   result.samples_per_period else "period", f"error ({sym.strip()})", (
             PlotSeries("raw", xr, yr, (31, 119, 180)),
             PlotSeries("compensated", xc, yc, (44, 160, 44)))),
         PlotFigure("Compensated error in the first period, with U", "phase θ (°)",
-                   "error (\")", (
+                   f"error ({sym.strip()})", (
             PlotSeries("compensated ± U", np.degrees(result.theta_rad[:per]), comp[:per],
                        (44, 160, 44), per <= 256, band=big_u[:per]),)),
-        PlotFigure("Fit residuals", "period", "residual (mV)", (
+        PlotFigure("Fit residuals", "sample / 64" if not result.samples_per_period else "period",
+                   "residual (mV)", (
             PlotSeries("sin", xs, ys, (148, 103, 189)),
             PlotSeries("cos", xk, yk, (214, 39, 40)))),
     )
@@ -181,8 +196,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     return CertificateDocument(
         "fringe", "Fringe signal analysis", metadata, source_name, METHOD, method_reference,
         parameters, results, statistics, budget, f"sample {worst + 1}", conformity, tol, plots,
-        tuple(result.warnings), statements=(table_statement,),
+        tuple(result.warnings), unit=sym, statements=(table_statement,) + (
+            (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
-         ("phase_deg", np.degrees(result.theta_rad)), ("raw_error_arcsec", raw),
-         ("correction_arcsec", correction), ("compensated_error_arcsec", comp),
-         ("expanded_uncertainty_arcsec", big_u)))
+         ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),
+         (f"correction_{unit}", correction), (f"compensated_error_{unit}", comp),
+         (f"expanded_uncertainty_{unit}", big_u)))

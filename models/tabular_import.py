@@ -111,13 +111,18 @@ def read_table(path: str | Path) -> RawTable:
         grid = [list(r) for r in csv.reader(io.StringIO(text), delimiter=delim)]
         if delim == ";":
             grid = [[_fix_decimal_comma(c) for c in r] for r in grid]
-    numbered = [(i + 1, row) for i, row in enumerate(grid) if any(c.strip() for c in row)]
-    if not numbered:
+    filled = [i for i, row in enumerate(grid) if any(c.strip() for c in row)]
+    if not filled:
         raise TableImportError(f"{source}: the file holds no rows")
+    # blank rows inside the data stay (a gap keeps its place: a sample's phase can depend
+    # on its row); the sheet leaves them out of every analysis that does not need them
+    numbered = [(i + 1, grid[i]) for i in range(filled[0], filled[-1] + 1)]
     header = None
     if _looks_like_header(numbered[0][1]):
         header = [c.strip() for c in numbered[0][1]]
         numbered = numbered[1:]
+        while numbered and not any(c.strip() for c in numbered[0][1]):
+            numbered = numbered[1:]
     return RawTable(source, header, [r for _, r in numbered], [n for n, _ in numbered])
 
 

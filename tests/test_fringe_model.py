@@ -106,13 +106,13 @@ def test_sheet_analysis_and_exports():
     theta = phase_of_samples(256, 64)
     rows = [[f"{s:.6f}", f"{c:.6f}"] for s, c in zip(model_signal(theta, SIN),
                                                      model_signal(theta, COS), strict=True)]
-    result = FRINGE.analyze(ReadingsSheet(FRINGE.columns, rows).parse(), {})
+    result = FRINGE.analyze(ReadingsSheet(FRINGE.columns, rows).parse(), {"samples_per_period": 64})
     data = FRINGE.to_json(result)
     assert set(data["sin_params"]) == {"A0", "A1", "c1", "A3", "c3", "A5", "c5"}
     assert data["raw_peak_to_peak_arcsec"] == pytest.approx(0.97, abs=0.01)
     assert data["compensated_peak_to_peak_arcsec"] < 0.01
     csv_text = correction_table_csv(result)
-    assert csv_text.count("\n") == 1024 + 5
+    assert csv_text.count("\n") == 1024 + 7  # six comment lines and the header
     assert f"# table sha256: {result.table.sha256}" in csv_text
     header = correction_table_c_header(result)
     assert "static const float anglebench_fringe_lut[1024]" in header and header.count("f,") == 1024

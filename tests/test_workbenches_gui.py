@@ -85,6 +85,22 @@ def test_fringe_paste_and_compensation(qtbot, fringe, samples_dir):
     assert len(liss_x) == 128
 
 
+def test_interferometer_record_without_phase_reference(qtbot, fringe, samples_dir):
+    lines = (samples_dir / "fringe_interferometer_sample.csv").read_text().splitlines()[1:3001]
+    fringe.set_settings({"period_nm": 316.4})
+    fringe.table_model.replace_all([line.split(",") for line in lines])
+    fringe.refresh()
+    qtbot.waitUntil(lambda: fringe.result is not None, timeout=10000)
+    result = fringe.result
+    assert result.phase_source == "estimated" and result.unit == "nm"
+    assert "error, est. phase (nm)" in fringe.error_plot.main_plot.getAxis("left").labelText
+    x, y = fringe.plots.liss_ellipse.getData()
+    e = result.ellipse
+    assert len(x) == 361 and np.max(y) == pytest.approx(e.offset_sin + e.amplitude_sin, rel=1e-3)
+    assert "not observable without a phase reference" in fringe.view.warnings.text()
+    assert "phase estimated from the signals" in fringe.view.summary.toPlainText()
+
+
 def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypatch):
     monkeypatch.setattr(workbench_presenter, "THREAD_THRESHOLD_ROWS", 1000)
     theta = np.arange(64 * 40) * 2 * np.pi / 64
@@ -93,7 +109,7 @@ def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypa
     fringe.refresh()
     assert fringe.result is None and "Analysing 2560 readings" in fringe.view.summary.toPlainText()
     qtbot.waitUntil(lambda: fringe.result is not None, timeout=10000)
-    assert fringe.result.raw_error_arcsec.size == 2560
+    assert fringe.result.raw_error.size == 2560
 
 
 def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
@@ -151,6 +167,7 @@ def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):
                                       3.73 * np.cos(theta)]),
                fmt="%.5f", delimiter=",", header="u_sin,u_cos", comments="")
     assert path.stat().st_size > workbench_presenter.THREAD_THRESHOLD_BYTES
+    fringe.set_settings({"samples_per_period": 64})
     fringe.start_import(path)
     assert fringe.busy and fringe.view.busy.isVisibleTo(fringe.view)
     assert fringe.sheet.row_count == 0  # nothing replaced until the worker is done

@@ -47,7 +47,11 @@ class FringePlots(QWidget):
         self.cos_fit = self.signals.plot(pen=pg.mkPen("#154360", width=1.5))
         self.lissajous = _plot("u sin (V)", "u cos (V)", downsample=False)
         self.lissajous.setAspectLocked(True)
-        self.liss_raw = self.lissajous.plot(name="measured", pen=pg.mkPen("#c0392b", width=1.5))
+        self.liss_raw = self.lissajous.plot(name="measured", pen=None, symbol="o", symbolSize=2,
+                                            symbolPen=None, symbolBrush="#c0392b")
+        self.liss_ellipse = self.lissajous.plot(name="fitted ellipse (Heydemann)",
+                                                pen=pg.mkPen("#27ae60", width=2,
+                                                             style=pg.QtCore.Qt.PenStyle.DashLine))
         self.liss_ideal = self.lissajous.plot(name="compensated (unit circle × A1)",
                                               pen=pg.mkPen("#1f5fbf", width=1.5))
         self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False)
@@ -94,33 +98,55 @@ class FringePresenter(WorkbenchPresenter):
 
     def build_settings(self) -> None:
         form = self.view.settings
-        form.add_int("lines_per_rev", "lines per revolution L", 1, 10_000_000)
-        form.add_int("samples_per_period", "samples per period N", 4, 100_000)
+        form.add_int("lines_per_rev", "lines per revolution L", 1, 10_000_000,
+                     tooltip="Encoder: grating lines per revolution; errors in arcsec of shaft "
+                             "angle (one period = 1296000\"/L)")
+        form.add_float("period_nm", "interferometer period", 0.0, 1_000_000.0, 3, " nm", 1.0,
+                       tooltip="Interferometer: displacement per fringe (316.4 nm for λ/2 of a "
+                               "HeNe laser); errors then in nm. 0: an encoder")
+        form.field("period_nm").setSpecialValueText("encoder (use L)")
+        form.add_int("samples_per_period", "samples per period N", 0, 100_000,
+                     special="phase from θ or the signals",
+                     tooltip="Equal steps, N samples a period. Leave at 0 to take the phase from "
+                             "the θ column, or, without one, to estimate it from the signals "
+                             "(Heydemann); a record that does not follow N is refused")
         form.add_int("max_order", "highest harmonic", 1, 31)
         form.add_choice("harmonics", "harmonics", [("odd", "odd (1, 3, 5 …)"), ("all", "all")])
         form.add_choice("method", "identification",
                         [("lsq", "least squares (exact)"), ("pso", "particle swarm (seed)")])
         form.add_int("lut_size", "correction table size", 8, 65536)
+        form.add_choice("table_zero", "table zero", [("mean", "its mean is zero"),
+                                                     ("phase0", "zero at phase 0")],
+                        tooltip="The phase origin is arbitrary: the table is stated with its mean "
+                                "removed, or with its first entry zero (said in the exported file)")
 
     def prepare_display(self, result: FringeResult) -> dict[str, tuple[np.ndarray, np.ndarray]]:
         """The curves thinned for drawing (worker thread for a large run). A revolution has
         a million samples: each curve keeps its envelope (every excursion, ~4000 points),
-        which Qt draws in a few ms instead of ~100."""
-        periods = result.theta_rad / (2 * np.pi)
-        step = max(1, periods.size // (2 * PLOT_BINS))
-        theta = result.theta_rad[::step]
-        residual = result.u_sin - model_signal(result.theta_rad, result.sin_fit)
-        raw_x, _ = envelope(periods, result.raw_error_arcsec, PLOT_BINS)
-        comp_x, _ = envelope(periods, result.compensated_error_arcsec, PLOT_BINS)
+        which Qt draws in a few ms instead of ~100. When the motion stood or turned back
+        the curves run over the phase within a period instead, in phase order."""
+        x = result.theta_rad / (2 * np.pi)
+        order = np.arange(x.size)
+        if x.size > 1 and not np.all(np.diff(x) > 0):
+            x = np.degrees(np.mod(result.theta_rad, 2 * np.pi))
+            order = np.argsort(x, kind="stable")
+            x = x[order]
+        step = max(1, x.size // (2 * PLOT_BINS))
+        theta = result.theta_rad[order][::step]
+        raw, comp = result.raw_error[order], result.compensated_error[order]
+        residual = (result.u_sin - model_signal(result.theta_rad, result.sin_fit))[order]
+        raw_x, _ = envelope(x, raw, PLOT_BINS)
+        comp_x, _ = envelope(x, comp, PLOT_BINS)
         # raw and compensated on one sampling that keeps the extremes of both
-        pick = np.union1d(np.searchsorted(periods, raw_x), np.searchsorted(periods, comp_x))
+        pick = np.union1d(np.searchsorted(x, raw_x), np.searchsorted(x, comp_x))
+        pick = np.clip(pick, 0, x.size - 1)
         return {
-            "errors": (periods[pick], pick),
-            "residual": envelope(periods, residual * 1000.0, PLOT_BINS),
-            "sin": envelope(periods, result.u_sin, PLOT_BINS),
-            "cos": envelope(periods, result.u_cos, PLOT_BINS),
-            "sin_fit": (periods[::step], model_signal(theta, result.sin_fit)),
-            "cos_fit": (periods[::step], model_signal(theta, result.cos_fit)),
+            "errors": (x[pick], order[pick]),
+            "residual": envelope(x, residual * 1000.0, PLOT_BINS),
+            "sin": envelope(x, result.u_sin[order], PLOT_BINS),
+            "cos": envelope(x, result.u_cos[order], PLOT_BINS),
+            "sin_fit": (x[::step], model_signal(theta, result.sin_fit)),
+            "cos_fit": (x[::step], model_signal(theta, result.cos_fit)),
             "drift": [envelope(np.arange(result.sin_periods.shape[0]), values, PLOT_BINS // 2)
                       for values in (result.sin_periods[:, 1], result.cos_periods[:, 1],
                                      result.sin_periods[:, min(3, result.sin_periods.shape[1] - 1)]
@@ -131,8 +157,16 @@ class FringePresenter(WorkbenchPresenter):
     def show_result(self, result: FringeResult) -> None:
         d = self.display if isinstance(self.display, dict) else self.prepare_display(result)
         x, pick = d["errors"]
-        self.error_plot.set_curves(x, result.raw_error_arcsec[pick], None,
-                                   result.compensated_error_arcsec[pick])
+        unit = result.unit_symbol.strip()
+        along = ("electrical phase θ (periods)" if np.all(np.diff(result.theta_rad) > 0)
+                 else "phase within the period (°); the motion stood or turned back")
+        self.error_plot.residual_plot.setLabel("bottom", along)
+        self.error_plot.main_plot.setLabel(
+            "left", ("error, est. phase" if result.phase_source == "estimated"
+                     else "interp. error") + f" ({unit})")
+        self.error_plot.corrected_plot.setLabel("left", f"compensated ({unit})")
+        self.error_plot.set_curves(x, result.raw_error[pick], None,
+                                   result.compensated_error[pick])
         self.error_plot.set_residuals(*d["residual"])
         p = self.plots
         p.sin_points.setData(*d["sin"])
@@ -143,9 +177,14 @@ class FringePresenter(WorkbenchPresenter):
         step = max(1, result.u_sin.size // MAX_LISSAJOUS_POINTS)
         u_sin, u_cos = result.u_sin[::step], result.u_cos[::step]
         p.liss_raw.setData(u_cos, u_sin)
-        phase = result.table.compensate(np.arctan2(u_sin, u_cos))
+        if result.ellipse is not None:
+            e = result.ellipse
+            t = np.linspace(0.0, 2 * np.pi, 361)
+            p.liss_ellipse.setData(e.offset_cos + e.amplitude_cos * np.cos(t + e.quadrature_rad),
+                                   e.offset_sin + e.amplitude_sin * np.sin(t))
+        circle = np.linspace(0.0, 2 * np.pi, 361)
         radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
-        p.liss_ideal.setData(radius * np.cos(phase), radius * np.sin(phase))
+        p.liss_ideal.setData(radius * np.cos(circle), radius * np.sin(circle))
         orders = np.array(result.sin_fit.orders, dtype=float)
         p.sin_bars.setOpts(x=orders - 0.18, height=np.log10(
             [max(result.sin_fit.amplitude[k], 1e-9) for k in result.sin_fit.orders]), width=0.35)
@@ -161,7 +200,8 @@ class FringePresenter(WorkbenchPresenter):
     def clear_result(self) -> None:
         self.error_plot.clear()
         p = self.plots
-        for curve in (p.sin_points, p.cos_points, p.sin_fit, p.cos_fit, p.liss_raw, p.liss_ideal,
+        for curve in (p.sin_points, p.cos_points, p.sin_fit, p.cos_fit, p.liss_raw, p.liss_ellipse,
+                      p.liss_ideal,
                       p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3):
             curve.setData([], [])
 

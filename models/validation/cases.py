@@ -124,7 +124,7 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         u_sin, u_cos = head.channels(theta, rng)
         values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
-        deviations.append(result.compensated_error_arcsec)
+        deviations.append(result.compensated_error)
         budgets.append(fringe_budget(result, meta).combined_arcsec)
     return np.array(deviations), np.array(budgets)
 
@@ -255,12 +255,12 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
     settings = FRINGE.settings_with_defaults({"samples_per_period": per})
     result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
-    raw = result.raw_error_arcsec
+    raw = result.raw_error
     cases = [
         _close(w, "Table 1's signals: peak-to-peak interpolation error", "check figure", 0.973,
                float(np.ptp(raw)), 0.005),
         _at_most(w, "Table 1's signals: error left after compensation (peak-to-peak)",
-                 "exact simulation", 0.01, float(np.ptp(result.compensated_error_arcsec))),
+                 "exact simulation", 0.01, float(np.ptp(result.compensated_error))),
     ]
     head = FringeHead(offsets_v=(0.03, -0.02), amplitudes_v=(1.0, 0.95), quadrature_deg=2.0,
                       sin_harmonics={3: (0.01, 0.5)}, cos_harmonics={3: (0.008, 1.0)})
@@ -272,7 +272,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     truth = truth - truth.mean()
     cases.append(_at_most(w, "sampled signals with a true phase: |raw error − true error|",
                           "exact simulation", 1e-6,
-                          float(np.max(np.abs(fitted.raw_error_arcsec - truth)))))
+                          float(np.max(np.abs(fitted.raw_error - truth)))))
     cases.append(_at_most(w, "sampled signals with a true phase: |offsets − truth| (V)",
                           "exact simulation", 1e-9,
                           max(abs(fitted.sin_fit.offset - 0.03), abs(fitted.cos_fit.offset + 0.02)),

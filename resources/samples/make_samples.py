@@ -11,8 +11,8 @@ from pathlib import Path
 import numpy as np
 
 from models.angles import format_dms
-from models.fringe import ChannelFit, model_signal, phase_of_samples
 from models.theodolite import SetupParameters, simulate_readings
+from models.validation.fringe_rig import FringeHead, equal_steps, wandering_motion
 from models.validation.polygon_rig import PolygonRig
 
 HERE = Path(__file__).resolve().parent
@@ -61,19 +61,37 @@ def polygon_sample() -> None:
                              f"{float(ac_x):.2f}", f"{float(ac_y):.2f}", set_id, direction])
 
 
-TABLE1_SIN = ChannelFit.from_parameters(-0.0179, {1: (3.7763, 0.026), 3: (-0.0796, 3.2261),
-                                                  5: (0.0109, 0.4688)})
-TABLE1_COS = ChannelFit.from_parameters(-0.0642, {1: (3.7346, 1.5902), 3: (0.079, 8.0719),
-                                                  5: (-0.01, 2.0662)})
+# Table 1 of the seed, the cos channel's B1 read as +3.7346 (SPEC §3)
+TABLE1 = FringeHead(offsets_v=(-0.0179, -0.0642), amplitudes_v=(3.7763, 3.7346), phase_rad=0.026,
+                    quadrature_deg=float(np.degrees(1.5902 - 0.026)) - 90.0,
+                    sin_harmonics={3: (-0.0796, 3.2261), 5: (0.0109, 0.4688)},
+                    cos_harmonics={3: (0.079, 8.0719), 5: (-0.01, 2.0662)}, noise_v=0.002)
 
 
 def fringe_sample() -> None:
-    """Eight periods of 64 samples with the seed's Table 1 signals and 2 mV noise."""
+    """Eight periods of 64 samples with the seed's Table 1 signals and 2 mV noise, with the
+    phase of each sample from the reference (theta_deg)."""
     rng = np.random.default_rng(2013)
-    theta = phase_of_samples(8 * 64, 64)
-    u_sin = model_signal(theta, TABLE1_SIN) + rng.normal(0, 0.002, theta.size)
-    u_cos = model_signal(theta, TABLE1_COS) + rng.normal(0, 0.002, theta.size)
+    theta = equal_steps(8 * 64, 64)
+    u_sin, u_cos = TABLE1.channels(theta, rng)
     with open(HERE / "fringe_sample.csv", "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["u_sin", "u_cos", "theta_deg"])
+        for s, c, t in zip(u_sin, u_cos, np.degrees(theta), strict=True):
+            writer.writerow([f"{s:.5f}", f"{c:.5f}", f"{t:.4f}"])
+
+
+def interferometer_sample() -> None:
+    """A homodyne interferometer's two channels, no phase reference: a hand-driven motion
+    (3 to 90 samples a fringe, two stops, one reversal), 8-bit ADC, offsets, unequal
+    amplitudes, 2.5° quadrature error. Analyse with --period-nm 316.4 (λ/2 of a HeNe laser)."""
+    rng = np.random.default_rng(1981)
+    theta = wandering_motion(12_000, rng, min_samples=3.0, max_samples=90.0)
+    head = FringeHead(offsets_v=(0.041, -0.027), amplitudes_v=(1.09, 1.03), quadrature_deg=2.5,
+                      noise_v=0.003, adc_bits=8, full_scale_v=1.5)
+    u_sin, u_cos = head.channels(theta, rng)
+    with open(HERE / "fringe_interferometer_sample.csv", "w", newline="",
+              encoding="utf-8") as handle:
         writer = csv.writer(handle)
         writer.writerow(["u_sin", "u_cos"])
         for s, c in zip(u_sin, u_cos, strict=True):
@@ -84,3 +102,4 @@ if __name__ == "__main__":
     theodolite_sample()
     polygon_sample()
     fringe_sample()
+    interferometer_sample()
