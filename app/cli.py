@@ -16,16 +16,21 @@ from typing import Any
 from models.analysis_kind import SettingsError
 from models.certificate_metadata import CertificateMetadata, MetadataError
 from models.kinds import KINDS
-from models.readings import ReadingsSheet
+from models.readings import ReadingsSheet, one_line
 from models.results_export import write_results_csv, write_results_xlsx
 from models.tabular_import import TableImportError, map_columns, read_table
 
 EXIT_BAD_INPUT = 2
 
 
+def _say(message: str) -> None:
+    """One line on stderr, whatever the message holds."""
+    sys.stderr.write(one_line(message, 1000) + "\n")
+
+
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str):  # one line, exit 2, no usage dump
-        sys.stderr.write(f"anglebench analyze: {message}\n")
+        _say(f"anglebench analyze: {message}")
         raise SystemExit(EXIT_BAD_INPUT)
 
 
@@ -61,31 +66,43 @@ def _parser() -> argparse.ArgumentParser:
     return p
 
 
+# option -> (setting key, the workbenches it applies to, value transform)
+_OPTIONS: dict[str, tuple[str, tuple[str, ...], Any]] = {
+    "method": ("method", ("theodolite",), None),
+    "reference_row": ("reference_row", ("theodolite",), None),
+    "zenith": ("vertical_reading", ("theodolite",), lambda v: "zenith" if v else None),
+    "grade": ("grade", ("polygon",), None),
+    "counting": ("counting", ("polygon",), None),
+    "zero_face": ("zero_face", ("polygon",), None),
+    "closure_drift": ("closure_drift", ("polygon",), None),
+    "ac_roll": ("ac_roll_arcmin", ("polygon",), None),
+    "lines_per_rev": ("lines_per_rev", ("fringe",), None),
+    "samples_per_period": ("samples_per_period", ("fringe",), None),
+    "period_nm": ("period_nm", ("fringe",), None),
+}
+
+
 def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
+    """The settings the options give; an option for another workbench is refused."""
     settings: dict[str, Any] = {}
-    if args.method:
-        settings["method"] = args.method
-    if args.reference_row is not None:
-        settings["reference_row"] = args.reference_row
-    if args.zenith:
-        settings["vertical_reading"] = "zenith"
-    if args.grade is not None:
-        settings["grade"] = args.grade
-    if args.counting:
-        settings["counting"] = args.counting
-    if args.zero_face is not None:
-        settings["zero_face"] = args.zero_face
-    if args.closure_drift:
-        settings["closure_drift"] = args.closure_drift
-    if args.ac_roll is not None:
-        settings["ac_roll_arcmin"] = args.ac_roll
-    if args.lines_per_rev is not None:
-        settings["lines_per_rev"] = args.lines_per_rev
-    if args.samples_per_period is not None:
-        settings["samples_per_period"] = args.samples_per_period
-    if args.period_nm is not None:
-        settings["period_nm"] = args.period_nm
+    for option, (key, kinds, transform) in _OPTIONS.items():
+        value = getattr(args, option)
+        if transform is not None:
+            value = transform(value)
+        if value is None or value is False:
+            continue
+        if args.kind not in kinds:
+            flag = "--" + option.replace("_", "-")
+            raise SettingsError(f"{flag} applies to {' and '.join(kinds)}, not {args.kind}")
+        settings[key] = value
     return settings
+
+
+def _same_file(a: str, b: str) -> bool:
+    try:
+        return Path(a).resolve() == Path(b).resolve()
+    except (OSError, RuntimeError):
+        return False
 
 
 def _finite(value: Any) -> Any:
@@ -103,26 +120,40 @@ def run_analyze(argv: list[str]) -> int:
     args = _parser().parse_args(argv)
     kind = KINDS[args.kind]
     try:
+        settings = _settings_from(args)
+    except SettingsError as exc:
+        _say(f"anglebench analyze: {exc}")
+        return EXIT_BAD_INPUT
+    inputs = [args.file] + ([args.metadata] if args.metadata else [])
+    for flag, out in (("--certificate", args.certificate), ("--results", args.results)):
+        clash = next((i for i in inputs if out and _same_file(out, i)), None)
+        if clash:
+            _say(f"anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: "
+                 "choose another name")
+            return EXIT_BAD_INPUT
+    if args.certificate and args.results and _same_file(args.certificate, args.results):
+        _say("anglebench analyze: --certificate and --results name the same file")
+        return EXIT_BAD_INPUT
+    try:
         table = read_table(args.file)
         rows = map_columns(table, kind.columns)
     except TableImportError as exc:
-        sys.stderr.write(f"{exc}\n")
+        _say(f"{exc}")
         return EXIT_BAD_INPUT
     parsed = ReadingsSheet(kind.columns, rows).parse()
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]
         more = f" (and {len(parsed.errors) - 1} more bad cell(s))" if len(parsed.errors) > 1 else ""
-        sys.stderr.write(
-            f"{args.file}: row {line}, column '{first.column_key}': {first.reason}{more}\n")
+        _say(f"{args.file}: row {line}, column '{first.column_key}': {first.reason}{more}")
         return EXIT_BAD_INPUT
     try:
-        result = kind.analyze(parsed, kind.settings_with_defaults(_settings_from(args)))
+        result = kind.analyze(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
-        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     except ValueError as exc:
-        sys.stderr.write(f"{args.file}: {exc}\n")
+        _say(f"{args.file}: {exc}")
         return EXIT_BAD_INPUT
     if args.json:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
@@ -146,6 +177,9 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         raise MetadataError(f"{path}: cannot read ({exc.strerror})") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise MetadataError(f"{path}: not a JSON file ({exc})") from None
+    except (RecursionError, ValueError):  # nesting thousands deep; a number too long to read
+        raise MetadataError(f"{path}: not a certificate's details (nested too deep or a "
+                            "number too long)") from None
     try:
         return CertificateMetadata.from_dict(data)
     except MetadataError as exc:
@@ -159,26 +193,26 @@ def _export(args: argparse.Namespace, kind, result) -> int:
     try:
         metadata = _read_metadata(args.metadata)
     except MetadataError as exc:
-        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     try:
         document = kind.certificate_document(result, metadata, Path(args.file).name)
     except MetadataError as exc:
-        sys.stderr.write(f"anglebench analyze: {exc}\n")
+        _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     try:
         if args.certificate:
             write_certificate_pdf(args.certificate, document)
             draft = " (DRAFT: " + ", ".join(metadata.missing_fields()) + " missing)" \
                 if document.is_draft else ""
-            sys.stderr.write(f"Certificate written to {args.certificate}{draft}\n")
+            _say(f"Certificate written to {args.certificate}{draft}")
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document)
             else:
                 write_results_csv(args.results, document)
-            sys.stderr.write(f"Results written to {args.results}\n")
+            _say(f"Results written to {args.results}")
     except (OSError, ValueError) as exc:
-        sys.stderr.write(f"anglebench analyze: cannot write: {exc}\n")
+        _say(f"anglebench analyze: cannot write: {exc}")
         return 1
     return 0

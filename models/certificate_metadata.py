@@ -56,9 +56,12 @@ def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
     """A field's text without control characters or bidi overrides, capped in length."""
     if value is None:
         return ""
-    if not isinstance(value, str | int | float):
+    if not isinstance(value, str | int | float) or isinstance(value, bool):
         raise MetadataError(f"certificate field '{field_name}' must be text")
-    text = str(value)
+    try:
+        text = str(value)
+    except ValueError:  # an integer of thousands of digits
+        raise MetadataError(f"certificate field '{field_name}' must be text") from None
     if multiline:
         text = text.replace("\r\n", "\n").replace("\r", "\n")
         text = "\n".join(_CONTROL.sub("", line.replace("\t", " ")) for line in text.split("\n"))
@@ -69,10 +72,14 @@ def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
 def _optional_number(value: Any, field_name: str) -> float | None:
     if value is None or (isinstance(value, str) and not value.strip()):
         return None
+    if isinstance(value, bool) or not isinstance(value, str | int | float):
+        raise MetadataError(f"certificate field '{field_name}' must be a number")
     try:
         number = float(str(value).replace(",", ".")) if isinstance(value, str) else float(value)
-    except (TypeError, ValueError):
-        raise MetadataError(f"certificate field '{field_name}': '{value}' is not a number") from None
+    except (TypeError, ValueError, OverflowError):
+        shown = value if isinstance(value, str) and len(value) < 40 else "the value"
+        raise MetadataError(f"certificate field '{field_name}': '{shown}' is not a number") \
+            from None
     if not math.isfinite(number):
         raise MetadataError(f"certificate field '{field_name}' must be a finite number")
     return number

@@ -69,17 +69,26 @@ READING_LIMIT_ARCSEC = 3600.0
 
 def closure_limit_arcsec(grade: int, table: str = "") -> float:
     """Closure limit for a grade from the comma-separated table of grades 1–7; a missing
-    entry falls back to half the grade's accuracy (our default, see README)."""
-    parts = [p.strip() for p in str(table or "").replace(";", ",").split(",") if p.strip()]
-    if grade - 1 < len(parts):
+    entry falls back to half the grade's accuracy (our default, see README). Every entry
+    is checked, not only the grade's."""
+    if not isinstance(table, str):
+        raise SettingsError(f"closure limit table must be text like '0.125, 0.25, …', not "
+                            f"{type(table).__name__}")
+    parts = [p.strip() for p in table.replace(";", ",").split(",") if p.strip()]
+    if len(parts) > 7:
+        raise SettingsError(f"closure limit table: {len(parts)} entries for 7 grades")
+    values = []
+    for g, part in enumerate(parts, 1):
         try:
-            value = float(parts[grade - 1])
+            value = float(part)
         except ValueError:
-            raise SettingsError(f"closure limit table: '{parts[grade - 1]}' (grade {grade}) is "
-                                "not a number") from None
+            raise SettingsError(f"closure limit table: '{part}' (grade {g}) is not a number") \
+                from None
         if not value > 0 or not math.isfinite(value):
-            raise SettingsError(f"closure limit for grade {grade} must be a positive number")
-        return value
+            raise SettingsError(f"closure limit for grade {g} must be a positive number")
+        values.append(value)
+    if grade - 1 < len(values):
+        return values[grade - 1]
     return GRADE_ACCURACY_ARCSEC[grade] / 2.0
 
 
@@ -240,7 +249,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     grade = s["grade"]
     if parsed.n < 3:
         raise ValueError(f"{parsed.n} usable readings; a polygon test needs at least 3 positions")
-    limit = closure_limit_arcsec(grade, str(s["closure_limits_arcsec"]))
+    limit = closure_limit_arcsec(grade, s["closure_limits_arcsec"])
     warnings: list[str] = []
     sets, faces, counting, closure_rows = _read_sets(
         parsed, s["faces"], COUNTING_CHOICES[str(s["counting"])], warnings)

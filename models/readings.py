@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import enum
 import math
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
@@ -16,7 +17,13 @@ import numpy as np
 
 from models.angles import AngleParseError, parse_angle_deg
 
-__all__ = ["CellError", "Column", "ColumnKind", "ParsedReadings", "ReadingsSheet"]
+__all__ = ["CellError", "Column", "ColumnKind", "ParsedReadings", "ReadingsSheet", "one_line"]
+
+
+def one_line(text: str, limit: int = 400) -> str:
+    """A message fit for one line: line breaks shown as ⏎, cut at ``limit`` characters."""
+    flat = str(text).replace("\r\n", "⏎").replace("\n", "⏎").replace("\r", "⏎")
+    return flat if len(flat) <= limit else flat[: limit - 1] + "…"
 
 
 class ColumnKind(enum.Enum):
@@ -39,7 +46,8 @@ class CellError:
     def describe(self, source: str = "", row_offset: int = 1) -> str:
         """One line: ``file: row N, column 'key': reason`` (rows counted from ``row_offset``)."""
         where = f"{source}: " if source else ""
-        return f"{where}row {self.row + row_offset}, column '{self.column_key}': {self.reason}"
+        return one_line(f"{where}row {self.row + row_offset}, column '{self.column_key}': "
+                        f"{self.reason}")
 
 
 @dataclass(frozen=True)
@@ -83,6 +91,8 @@ class Column:
             value = _parse_number(stripped)
             if not float(value).is_integer():
                 raise ValueError(f"'{stripped}' is not a whole number")
+            if abs(value) > MAX_INTEGER:
+                raise ValueError(f"'{stripped}' is out of range for a whole number here")
             return int(value)
         if self.choices:
             lowered = {c.lower(): c for c in self.choices}
@@ -92,14 +102,24 @@ class Column:
         return stripped
 
 
+#: The largest whole number an INTEGER column takes (positions, set numbers …).
+MAX_INTEGER = 1_000_000_000
+
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
+
+
 def _parse_number(text: str) -> float:
+    """A plain decimal number: digits, one point (or one decimal comma), an exponent.
+
+    Python's ``float`` also takes "1_0", "nan" and other scripts' digits; a
+    reading is none of these, so they are refused here as in the fast path.
+    """
     candidate = text.replace("\u2212", "-").replace(" ", "")
     if candidate.count(",") == 1 and "." not in candidate:
         candidate = candidate.replace(",", ".")
-    try:
-        value = float(candidate)
-    except ValueError:
-        raise ValueError(f"'{text}' is not a number") from None
+    if not _PLAIN_NUMBER.fullmatch(candidate):
+        raise ValueError(f"'{one_line(text, 40)}' is not a number")
+    value = float(candidate)
     if not math.isfinite(value):
         raise ValueError(f"'{text}' is not a finite number")
     return value
@@ -228,13 +248,17 @@ class ReadingsSheet:
                 continue
             if column.kind is ColumnKind.TEXT:
                 return None
+            joined = "\x1f".join(texts)
+            if "_" in joined or not joined.isascii():  # numpy reads "1_0" as 10: not a reading
+                return None
             try:
                 values = _floats(texts)
             except ValueError:
                 return None
             if not np.all(np.isfinite(values)):
                 return None
-            if column.kind is ColumnKind.INTEGER and not np.all(values == np.round(values)):
+            if column.kind is ColumnKind.INTEGER and not (
+                    np.all(values == np.round(values)) and np.all(np.abs(values) <= MAX_INTEGER)):
                 return None
             out[column.key] = values
         if not any(c.required for c in self.columns):

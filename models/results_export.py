@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import csv
 import io
+import re
 from pathlib import Path
 
 import numpy as np
@@ -28,14 +29,14 @@ XLSX_MAX_ROWS = 1_048_576
 _FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
 
+_XML_ILLEGAL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f]")
+
+
 def neutralise(text: object) -> str:
-    """Text a spreadsheet will show, never evaluate."""
-    s = "" if text is None else str(text)
+    """Text a spreadsheet will show, never evaluate; control characters (which no XLSX
+    cell may hold, as in a file name typed with one) become U+FFFD."""
+    s = _XML_ILLEGAL.sub("\ufffd", "" if text is None else str(text))
     return "'" + s if s.startswith(_FORMULA_STARTS) else s
-
-
-def _number(value: float) -> str:
-    return "" if not np.isfinite(value) else format(float(value), ".10g")
 
 
 def results_csv_bytes(document: CertificateDocument) -> bytes:

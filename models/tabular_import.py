@@ -25,6 +25,16 @@ class TableImportError(ValueError):
     """A file could not be read as a table; the message names the file and what is wrong."""
 
 
+#: Limits of a readings file: no readings file comes near them, a hostile one does.
+MAX_ROWS = 5_000_000
+MAX_COLUMNS = 64
+MAX_CELL_CHARS = 1_000
+#: A run of empty sheet rows longer than this ends the reading with an error.
+MAX_EMPTY_XLSX_ROWS = 10_000
+#: An XLSX workbook whose parts expand beyond this (a "zip bomb") is refused unread.
+MAX_XLSX_EXPANDED_BYTES = 768 * 1024 * 1024
+
+
 @dataclass
 class RawTable:
     """Text cells of a file. ``line_numbers[i]`` is the 1-based file row of ``rows[i]``."""
@@ -107,8 +117,10 @@ def read_table(path: str | Path) -> RawTable:
         grid = _read_xlsx(data, source)
     else:
         text = _decode(data, source)
+        # universal newlines: CR-only files (old Mac, some instruments) read like the others
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
         delim = _sniff_delimiter(text)
-        grid = [list(r) for r in csv.reader(io.StringIO(text), delimiter=delim)]
+        grid = _read_csv(text, delim, source)
         if delim == ";":
             grid = [[_fix_decimal_comma(c) for c in r] for r in grid]
     filled = [i for i, row in enumerate(grid) if any(c.strip() for c in row)]
@@ -126,22 +138,85 @@ def read_table(path: str | Path) -> RawTable:
     return RawTable(source, header, [r for _, r in numbered], [n for n, _ in numbered])
 
 
+def _check_row(row: list[str], line: int, source: str) -> None:
+    if len(row) > MAX_COLUMNS and any(c.strip() for c in row[MAX_COLUMNS:]):
+        raise TableImportError(f"{source}: row {line}: {len(row)} columns; a readings file has "
+                               f"at most {MAX_COLUMNS}")
+    for col, cell in enumerate(row, 1):
+        if len(cell) > MAX_CELL_CHARS:
+            raise TableImportError(f"{source}: row {line}, column {col}: a cell of {len(cell)} "
+                                   f"characters is not a reading (at most {MAX_CELL_CHARS})")
+
+
+def _read_csv(text: str, delim: str, source: str) -> list[list[str]]:
+    reader = csv.reader(io.StringIO(text), delimiter=delim, strict=True)
+    grid: list[list[str]] = []
+    try:
+        for row in reader:
+            _check_row(row, reader.line_num, source)
+            grid.append(row[:MAX_COLUMNS])
+            if len(grid) > MAX_ROWS:
+                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
+    except csv.Error as exc:
+        what = ("a quote is not closed" if any(w in str(exc) for w in ("field larger", "EOF",
+                                                                        "end of data"))
+                else str(exc))
+        raise TableImportError(f"{source}: row {reader.line_num}: cannot read the CSV ({what})") \
+            from None
+    return grid
+
+
+def _xlsx_expanded_size(data: bytes, source: str) -> int:
+    import zipfile
+
+    try:
+        with zipfile.ZipFile(io.BytesIO(data)) as archive:
+            return sum(info.file_size for info in archive.infolist())
+    except (zipfile.BadZipFile, OSError, ValueError) as exc:
+        raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
+
+
 def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
     try:
         import openpyxl
     except ImportError:  # pragma: no cover - openpyxl is a dependency
         raise TableImportError(f"{source}: reading XLSX needs openpyxl") from None
+    expanded = _xlsx_expanded_size(data, source)
+    if expanded > MAX_XLSX_EXPANDED_BYTES:
+        raise TableImportError(f"{source}: the workbook expands to {expanded / 2**20:.0f} MB, more "
+                               f"than the {MAX_XLSX_EXPANDED_BYTES / 2**20:.0f} MB a readings "
+                               "file needs: save the sheet as CSV")
     try:
         book = openpyxl.load_workbook(io.BytesIO(data), read_only=True, data_only=True)
     except Exception as exc:  # noqa: BLE001 - openpyxl raises many types for damaged files
         raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
     try:
         sheet = book.worksheets[0]
-        grid = []
-        for row in sheet.iter_rows(values_only=True):
-            grid.append(["" if v is None else (repr(v) if isinstance(v, float) else str(v))
-                         for v in row])
+        # the stored dimension can claim a million rows by 16384 columns: read what is there
+        sheet.reset_dimensions()
+        grid: list[list[str]] = []
+        empty_run = 0
+        for line, row in enumerate(sheet.iter_rows(max_col=MAX_COLUMNS + 1, values_only=True), 1):
+            if all(v is None for v in row):
+                empty_run += 1
+                if empty_run > MAX_EMPTY_XLSX_ROWS:
+                    raise TableImportError(
+                        f"{source}: more than {MAX_EMPTY_XLSX_ROWS} empty rows after row "
+                        f"{line - empty_run}: keep the readings in one block (a stray far cell?)")
+                grid.append([])
+                continue
+            empty_run = 0
+            cells = ["" if v is None else (repr(v) if isinstance(v, float) else str(v))
+                     for v in row]
+            _check_row(cells, line, source)
+            grid.append(cells[:MAX_COLUMNS])
+            if line > MAX_ROWS:
+                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
         return grid
+    except TableImportError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - a damaged sheet fails in many ways while read
+        raise TableImportError(f"{source}: the workbook's sheet cannot be read ({exc})") from None
     finally:
         book.close()
 

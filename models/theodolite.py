@@ -270,8 +270,8 @@ def identify_from_elevations(
     if not starts:
         starts = candidates[-1:] if candidates else []
     if not starts:
-        # degenerate data (e.g. all θ equal): fall back to a level start
-        starts = [SetupParameters(0.0, 0.0, math.degrees(math.asin(np.clip(-(a + b), -1, 1))))]
+        raise ValueError("the elevations fit no set-up (sin E is not of the form a + b cos θ + "
+                         "c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column")
 
     best = None
     for start in starts:
@@ -446,6 +446,35 @@ def true_rotation_deg(azimuth_deg, setup: SetupParameters, iterations: int = 4) 
     return rotation
 
 
+def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None = None) -> None:
+    """Refuse readings that cannot identify a set-up, before any fit (ValueError, one line).
+
+    Angles must be finite and physically possible (|E| ≤ 90°, |θ| and |A| within two
+    turns); at least 4 distinct θ; the design (1, cos θ, sin θ) well conditioned.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    for name, values, limit in (("theta_deg", theta, 720.0), ("azimuth_deg", azimuth_deg, 720.0),
+                                ("elevation_deg", elevation_deg, 90.0)):
+        values = np.asarray(values, dtype=float)
+        bad = np.nonzero(~np.isfinite(values) | (np.abs(values) > limit))[0]
+        if bad.size:
+            i = int(bad[0])
+            raise ValueError(f"reading {i + 1}, column '{name}': {values[i]:g}° is beyond ±{limit:g}° "
+                             "and cannot be a reading of this test")
+    distinct = np.unique(np.round(theta, 6))
+    if distinct.size == 1:
+        raise ValueError(f"all θ are equal ({theta[0]:g}°): the set-up cannot be identified; the "
+                         "axis must turn between readings")
+    if distinct.size < 4:
+        raise ValueError(f"{distinct.size} distinct θ; at least 4 are needed to identify ψ, α, β")
+    th = np.radians(distinct)
+    design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
+    singular = np.linalg.svd(design / np.linalg.norm(design, axis=0), compute_uv=False)
+    if not singular[-1] > 1e-8:
+        raise ValueError(f"θ spans only {np.ptp(distinct):.3g}°: too little rotation to identify "
+                         "the set-up")
+
+
 def analyze_run(
     theta_deg,
     azimuth_deg,
@@ -476,6 +505,7 @@ def analyze_run(
     theta = np.asarray(theta_deg, dtype=float)
     az = np.asarray(azimuth_deg, dtype=float)
     elev = np.asarray(elevation_deg, dtype=float)
+    check_run(theta, az, elev)
     if reference_index is None:
         reference_index = int(np.argmin(np.abs(theta)))
     if not 0 <= reference_index < theta.size:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -38,16 +39,30 @@ DEFAULT_SETTINGS: dict[str, Any] = {
 }
 
 
-def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
+def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
     s = THEODOLITE.settings_with_defaults(settings)
+    for key, low, high in (("reference_row", 0, 10_000_000), ("psi_max_deg", 0.001, 89.0),
+                           ("beta_max_deg", 0.001, 89.0), ("accuracy_arcsec", 0.0, 3600.0)):
+        value = s[key]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or \
+                not math.isfinite(value) or not low <= value <= high:
+            raise SettingsError(f"{key} must be a number from {low:g} to {high:g}, not {value!r}")
+    if s["reference_row"] != int(s["reference_row"]):
+        raise SettingsError(f"reference_row must be a whole number, not {s['reference_row']}")
+    for key, choices in (("vertical_reading", ("elevation", "zenith")),
+                         ("method", ("elevation", "azimuth"))):
+        if s[key] not in choices:
+            raise SettingsError(f"{key} must be one of {', '.join(choices)}, not {s[key]!r}")
+    return s
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
+    s = _settings(settings)
     if parsed.n < 4:
         raise ValueError(f"{parsed.n} usable readings; at least 4 are needed")
     elevation = parsed["elevation_deg"]
     if s["vertical_reading"] == "zenith":
         elevation = elevation - 90.0
-    elif s["vertical_reading"] != "elevation":
-        raise SettingsError(f"vertical_reading must be 'elevation' or 'zenith', not "
-                            f"'{s['vertical_reading']}'")
     reference = int(s["reference_row"])
     reference_index = None
     if reference > 0:
