@@ -5,7 +5,9 @@ from __future__ import annotations
 
 import contextlib
 import json
+import logging
 import os
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -29,6 +31,7 @@ from models.project import (
     Project,
     ProjectFileError,
     WorkbenchState,
+    check_project,
     load_project,
     save_project,
 )
@@ -41,9 +44,12 @@ from widgets.polygon_workbench import PolygonPresenter
 from widgets.theodolite_workbench import TheodolitePresenter
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
+log = logging.getLogger(__name__)
+
 PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
 IMPORT_FILTER = "Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"
-AUTOSAVE_INTERVAL_MS = 60_000
+AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s while typing)
+AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread
 MAX_RECENT = 8
 
 
@@ -69,13 +75,23 @@ class MainWindow(QMainWindow):
         self.presenters = presenters or default_presenters()
         self.project_path: Path | None = None
         self.project_metadata: dict = {}
+        self._stored_problems: dict[str, str] = {}  # certificate details that no longer read
+        self._stored_raw: dict = {}
         self._setup_ui()
         self._setup_menus()
         self._restore_window_state()
         self.autosave_timer = QTimer(self)
-        self.autosave_timer.setInterval(AUTOSAVE_INTERVAL_MS)
+        self.autosave_timer.setSingleShot(True)
+        self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
         self.autosave_timer.timeout.connect(self.autosave)
-        self.autosave_timer.start()
+        self._autosave_thread: threading.Thread | None = None
+        for presenter in self.presenters:
+            presenter.undo_stack.indexChanged.connect(self._schedule_autosave)
+            presenter.modified_changed.connect(self._schedule_autosave)
+        try:
+            self.recovery.claim()
+        except OSError as exc:
+            self.statusBar().showMessage(f"Autosave is off: {exc}", 15000)
         self._update_title()
 
     # -- construction ---------------------------------------------------------
@@ -176,6 +192,7 @@ class MainWindow(QMainWindow):
             presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
         self.project_metadata = dict(project.metadata)
         self.project_metadata.pop("autosaved_at", None)
+        self.project_metadata.pop("project_path", None)
 
     def _on_modified_changed(self, _modified: bool) -> None:
         self._update_title()
@@ -212,8 +229,9 @@ class MainWindow(QMainWindow):
             return False
         try:
             project = load_project(path)
+            check_project(project, {p.kind.key: p.kind for p in self.presenters}, str(path))
         except ProjectFileError as exc:
-            self.tell("Cannot open project", str(exc))
+            self.tell("Cannot open project", f"{exc}. Your current work is as it was.")
             return False
         self.apply_project(project)
         self.project_path = Path(path)
@@ -295,10 +313,8 @@ class MainWindow(QMainWindow):
         """The workbench's certificate metadata from the project, lab defaults filled in."""
         key = key or self.current.kind.key
         stored = self.project_metadata.get("certificates", {}).get(key)
-        try:
-            meta = CertificateMetadata.from_dict(stored)
-        except MetadataError:
-            meta = CertificateMetadata()
+        meta, self._stored_problems = CertificateMetadata.from_dict_lenient(stored)
+        self._stored_raw = stored if isinstance(stored, dict) else {}
         try:
             return meta.with_lab_defaults(self.lab_defaults())
         except MetadataError:
@@ -317,6 +333,8 @@ class MainWindow(QMainWindow):
         sequence = int(self.qsettings.value("certificate/next_sequence", 1) or 1)
         dialog = CertificateDialog(meta, sequence, self)
         dialog.lab_defaults_saved.connect(self.save_lab_defaults)
+        if self._stored_problems:  # a stored detail that no longer reads: shown as stored, marked
+            dialog.show_problems(self._stored_problems, self._stored_raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return None
         if dialog.sequence_used:
@@ -393,32 +411,63 @@ class MainWindow(QMainWindow):
         return True
 
     # -- autosave and recovery ------------------------------------------------------
+    def _schedule_autosave(self, *_args) -> None:
+        """An edit: autosave a few seconds from now (not later while typing goes on)."""
+        if not self.autosave_timer.isActive():
+            self.autosave_timer.start()
+
     def autosave(self) -> None:
-        if self.is_modified:
-            try:
-                self.recovery.write(self.project())
-            except OSError as exc:
-                self.statusBar().showMessage(f"Autosave failed: {exc}", 10000)
+        if not self.is_modified:
+            return
+        project = self.project()
+        rows = sum(len(state.rows) for state in project.workbenches.values())
+        if rows > AUTOSAVE_THREAD_ROWS:
+            if self._autosave_thread is not None and self._autosave_thread.is_alive():
+                self.autosave_timer.start()  # the last one is still writing: try again soon
+                return
+            self._autosave_thread = threading.Thread(
+                target=self._write_recovery, args=(project,), daemon=True)
+            self._autosave_thread.start()
+        else:
+            self._write_recovery(project)
+
+    def _write_recovery(self, project: Project) -> None:
+        try:
+            self.recovery.write(project, self.project_path)
+        except OSError as exc:
+            log.warning("autosave failed: %s", exc)
 
     def offer_recovery(self) -> bool:
-        """If the last session ended without saving, offer its autosaved work."""
-        if not self.recovery.exists():
+        """If a window ended without saving, offer its autosaved work (newest first);
+        another running window's autosave is never offered."""
+        orphans = self.recovery.orphans()
+        if not orphans:
             return False
+        path = orphans[0]
+        try:
+            project = self.recovery.load(path)
+        except ProjectFileError as exc:
+            self.tell("Cannot recover", f"{exc} (the file was kept aside as damaged)")
+            return False
+        when = project.metadata.get("autosaved_at") or "an unknown time"
+        source = project.metadata.get("project_path") or ""
+        name = Path(source).name if source else "an untitled project"
         answer = self.ask(
             "Recover unsaved work",
-            "AngleBench did not close normally last time. Restore the readings it autosaved?",
+            f"AngleBench did not close normally. Restore the unsaved readings of {name}, "
+            f"autosaved {when}?",
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.Yes)
         if answer != QMessageBox.StandardButton.Yes:
-            return False
-        try:
-            project = self.recovery.load()
-        except ProjectFileError as exc:
-            self.tell("Cannot recover", f"{exc} (the file was kept aside)")
+            kept = self.recovery.set_aside(path, "declined")
+            self.statusBar().showMessage(f"The autosave was kept aside: {kept}", 15000)
             return False
         self.apply_project(project)
+        self.project_path = Path(source) if source else None
         for presenter in self.presenters:  # recovered work is unsaved work
             presenter.mark_modified()
+        self.recovery.adopt(path)
+        self.autosave()  # now this window's own autosave
         self._update_title()
         return True
 
@@ -430,7 +479,9 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue("window/state", self.saveState())
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
         self.autosave_timer.stop()
-        self.recovery.discard()
+        if self._autosave_thread is not None:
+            self._autosave_thread.join(timeout=30)
+        self.recovery.release()
         event.accept()
 
     # -- settings -----------------------------------------------------------------

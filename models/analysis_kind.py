@@ -38,6 +38,15 @@ class AnalysisKind:
     method_reference: str = ""
     # (result, CertificateMetadata, source name, method reference) -> CertificateDocument
     certificate: Callable[..., Any] | None = None
+    # settings -> the settings checked and completed; raises SettingsError naming the key
+    check_settings: Callable[[Mapping[str, Any]], dict[str, Any]] | None = None
+
+    def checked_settings(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
+        """The settings with defaults, each checked (types and ranges): for a project file,
+        the form and the command line alike."""
+        if self.check_settings is None:
+            return self.settings_with_defaults(settings)
+        return self.check_settings(settings or {})
 
     def certificate_document(self, result: Any, metadata: Any, source_name: str = "") -> Any:
         """The certificate content of ``result`` (see models.certificate_document)."""

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import contextlib
+import glob
 import os
 import stat
 import tempfile
+import time
 from pathlib import Path
 
 __all__ = ["write_bytes_atomic", "write_text_atomic"]
@@ -22,6 +24,19 @@ def _mode_for(target: Path) -> int:
         return 0o666 & ~umask
 
 
+STALE_TEMP_SECONDS = 600
+
+
+def _remove_stale_temps(target: Path) -> None:
+    """Temp files of an earlier save of ``target`` that was killed half-way."""
+    now = time.time()
+    with contextlib.suppress(OSError):
+        for temp in target.parent.glob(f".{glob.escape(target.name)}.*.tmp"):
+            with contextlib.suppress(OSError):
+                if now - temp.stat().st_mtime > STALE_TEMP_SECONDS:
+                    temp.unlink()
+
+
 def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
     """Replace ``path`` with ``data`` so that readers see the old or the new file, never half.
 
@@ -30,6 +45,9 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
     the temporary file is removed and the old file is left untouched.
     """
     target = Path(path)
+    if target.is_symlink():  # write through the link: the link stays a link
+        target = target.resolve()
+    _remove_stale_temps(target)
     fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
     try:
         with os.fdopen(fd, "wb") as handle:

@@ -221,6 +221,29 @@ class CertificateMetadata:
     def coverage_probability(self) -> float:
         return self.coverage_probability_pct / 100.0
 
+    @classmethod
+    def from_dict_lenient(cls, data: Any) -> tuple[CertificateMetadata, dict[str, str]]:
+        """Every field that reads, and a message for each that does not (by key): a stored
+        detail gone bad must not blank all the others."""
+        if not isinstance(data, dict):
+            try:
+                return cls.from_dict(data), {}
+            except MetadataError as exc:
+                return cls(), {"": str(exc)}
+        good: dict[str, Any] = {}
+        problems: dict[str, str] = {}
+        for key, value in data.items():
+            try:
+                cls.from_dict({key: value})
+            except MetadataError as exc:
+                problems[str(key)] = str(exc)
+            else:
+                good[key] = value
+        try:
+            return cls.from_dict(good), problems
+        except MetadataError as exc:  # a check across fields
+            return cls(), {**problems, "": str(exc)}
+
     def to_dict(self) -> dict[str, Any]:
         out = asdict(self)
         out["standards"] = [asdict(s) for s in self.standards]

@@ -401,4 +401,5 @@ FRINGE = AnalysisKind(
     method_reference="Gao X. et al., Automatic compensation of sine deviation for grating fringe "
                      "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
     certificate=fringe_certificate,
+    check_settings=_settings,
 )

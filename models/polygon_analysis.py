@@ -406,4 +406,5 @@ POLYGON = AnalysisKind(
                      "accuracy test by using coordinate transformation, Acta Optica Sinica "
                      "35(5):0512003 (2015)",
     certificate=polygon_certificate,
+    check_settings=_settings,
 )

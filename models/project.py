@@ -14,6 +14,7 @@ as it was saved, bad cells included.
 from __future__ import annotations
 
 import json
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -27,6 +28,7 @@ __all__ = [
     "Project",
     "ProjectFileError",
     "WorkbenchState",
+    "check_project",
     "load_project",
     "project_from_json",
     "project_to_json",
@@ -82,6 +84,9 @@ def project_from_json(text: str, source: str = "project") -> Project:
             f"{source}: damaged project file (line {exc.lineno}, column {exc.colno}: {exc.msg}); "
             "nothing was changed"
         ) from None
+    except (RecursionError, ValueError):
+        raise ProjectFileError(f"{source}: damaged project file (nested too deep, or a number "
+                               "too long); nothing was changed") from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
         raise ProjectFileError(f"{source}: not an AngleBench project file")
     version = document.get("schema_version")
@@ -95,19 +100,51 @@ def project_from_json(text: str, source: str = "project") -> Project:
     benches = document.get("workbenches", {})
     if not isinstance(benches, dict):
         raise ProjectFileError(f"{source}: 'workbenches' must be an object")
-    project = Project(metadata=dict(document.get("metadata") or {}))
+    metadata = document.get("metadata") or {}
+    if not isinstance(metadata, dict):
+        raise ProjectFileError(f"{source}: 'metadata' must be an object; nothing was changed")
+    certificates = metadata.get("certificates", {})
+    if not isinstance(certificates, dict) or not all(isinstance(c, dict)
+                                                     for c in certificates.values()):
+        raise ProjectFileError(f"{source}: 'metadata.certificates' must map workbenches to "
+                               "objects; nothing was changed")
+    project = Project(metadata=dict(metadata))
     for key, state in benches.items():
         if not isinstance(state, dict):
             raise ProjectFileError(f"{source}: workbench '{key}' must be an object")
         rows = state.get("rows", [])
         if not isinstance(rows, list) or not all(isinstance(r, list) for r in rows):
             raise ProjectFileError(f"{source}: workbench '{key}': 'rows' must be a list of lists")
+        if not all(isinstance(c, str | int | float | type(None)) and not isinstance(c, bool)
+                   for r in rows for c in r):
+            raise ProjectFileError(f"{source}: workbench '{key}': every cell must be text")
         clean_rows = [["" if c is None else str(c) for c in r] for r in rows]
         settings = state.get("settings", {})
         if not isinstance(settings, dict):
             raise ProjectFileError(f"{source}: workbench '{key}': 'settings' must be an object")
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
     return project
+
+
+def check_project(project: Project, kinds: Mapping[str, Any], source: str = "project") -> None:
+    """Check every workbench of an opened project against its kind before anything is
+    replaced: a known workbench, rows that fit its columns, settings of the right type
+    and range. Raises :class:`ProjectFileError` naming the workbench and what is wrong."""
+    for key, state in project.workbenches.items():
+        kind = kinds.get(key)
+        if kind is None:
+            raise ProjectFileError(f"{source}: workbench '{key}' is not one this version knows; "
+                                   "nothing was changed")
+        width = len(kind.columns)
+        for i, row in enumerate(state.rows, 1):
+            if len(row) > width and any(c.strip() for c in row[width:]):
+                raise ProjectFileError(f"{source}: workbench '{key}', row {i}: {len(row)} cells "
+                                       f"for {width} columns; nothing was changed")
+        try:
+            kind.checked_settings(state.settings)
+        except ValueError as exc:
+            raise ProjectFileError(f"{source}: workbench '{key}': {exc}; nothing was changed") \
+                from None
 
 
 def save_project(path: str | Path, project: Project) -> None:

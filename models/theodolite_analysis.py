@@ -153,4 +153,5 @@ THEODOLITE = AnalysisKind(
     method_reference="Tian L. et al., Test method of angle error of limited rotation axis "
                      "system, Acta Photonica Sinica 46(11):1112005 (2017)",
     certificate=theodolite_certificate,
+    check_settings=_settings,
 )

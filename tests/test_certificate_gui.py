@@ -113,3 +113,27 @@ def test_export_results_csv(window, tmp_path):
     result = window.current.result
     assert lines[0].startswith("position,nominal_deg")
     assert len(lines) == result.faces + 1
+
+
+def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
+    """humidity stored as "45 %" (an older version, or a hand-edited project): the other
+    details stay in the dialog, the bad one shows as stored and is marked; all bad fields
+    are marked at once."""
+    window.project_metadata["certificates"] = {"theodolite": {
+        "lab_name": "Angle Lab", "customer_name": "Customer", "humidity_pct": "45 %",
+        "temperature_c": "warm"}}
+    window.tabs.setCurrentIndex(0)
+    seen = {}
+
+    def look(dialog):
+        seen["lab"] = dialog.fields["lab_name"].text()
+        seen["humidity"] = dialog.fields["humidity_pct"].text()
+        seen["styles"] = [dialog.fields[k].styleSheet() for k in ("humidity_pct", "temperature_c")]
+        seen["error"] = dialog.error_label.text()
+        return QDialog.DialogCode.Rejected
+
+    monkeypatch.setattr(CertificateDialog, "exec", look)
+    assert window.edit_certificate_metadata(window.certificate_metadata()) is None
+    assert seen["lab"] == "Angle Lab" and seen["humidity"] == "45 %"
+    assert all(style for style in seen["styles"])
+    assert "humidity_pct" in seen["error"] and "temperature_c" in seen["error"]

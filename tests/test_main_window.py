@@ -1,6 +1,7 @@
 """Main window: project save/open, damaged files, autosave and recovery, recent files."""
 
 import json
+import os
 
 import pytest
 from PySide6.QtCore import QSettings
@@ -64,17 +65,105 @@ def test_damaged_or_newer_project_keeps_current_work(make_window, tmp_path):
     assert window.presenter("theodolite").sheet.copy_rows() == before
 
 
-def test_autosave_and_recovery_after_a_crash(make_window):
+def crash(window) -> None:
+    """The window's process dies: no closeEvent, the kernel drops its lock, the file stays."""
+    os.close(window.recovery._lock_fd)
+    window.recovery._lock_fd = None
+    window.autosave_timer.stop()
+
+
+def test_autosave_and_recovery_after_a_crash(make_window, tmp_path):
     window = make_window()
     window.load_all_samples()
+    assert window.save_to(tmp_path / "run.anglebench.json")
     window.presenter("theodolite").table_model.set_cells([(0, 0, "-20.5")])
     window.autosave()
     assert window.recovery.exists()
-    # the process dies here: no closeEvent, the recovery file stays
+    crash(window)
     survivor = make_window(answer=QMessageBox.StandardButton.Yes)
+    asked = []
+    survivor.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
     assert survivor.offer_recovery()
+    assert "run.anglebench.json" in asked[0] and "autosaved 20" in asked[0]
     assert survivor.presenter("theodolite").sheet.text(0, 0) == "-20.5"
     assert survivor.is_modified
+    assert survivor.project_path == tmp_path / "run.anglebench.json"  # Ctrl+S saves it there
+    assert survivor.windowTitle().endswith("run.anglebench.json *")
+
+
+def test_an_edit_is_autosaved_within_seconds(make_window, qtbot):
+    window = make_window()
+    window.presenter("theodolite").table_model.set_cells([(0, 0, "1")])
+    qtbot.waitUntil(window.recovery.exists, timeout=6000)
+
+
+def test_two_windows_never_take_each_others_work(make_window):
+    a = make_window()
+    a.presenter("theodolite").table_model.set_cells([(0, 0, "111")])
+    a.autosave()
+    b = make_window()
+    assert not b.offer_recovery()  # A is alive: its autosave is not a crash
+    b.presenter("theodolite").table_model.set_cells([(0, 0, "222")])
+    b.autosave()
+    assert a.recovery.path != b.recovery.path
+    b.ask = lambda *args: QMessageBox.StandardButton.Discard
+    b.close()
+    assert a.recovery.exists() and not b.recovery.exists()
+    crash(a)
+    c = make_window(answer=QMessageBox.StandardButton.Yes)
+    assert c.offer_recovery()
+    assert c.presenter("theodolite").sheet.text(0, 0) == "111"
+
+
+def test_damaged_autosaves_are_kept_aside_each_under_its_own_name(make_window, tmp_path):
+    folder = tmp_path / "recovery"
+    folder.mkdir(exist_ok=True)
+    for i in range(2):
+        (folder / f"recovery-dead{i}.anglebench.json").write_text("{damaged")
+        window = make_window()
+        assert not window.offer_recovery()
+        assert "kept aside" in window.told[0]
+    assert len(list(folder.glob("*.damaged-*.json"))) == 2
+
+
+def test_stale_temp_files_of_killed_saves_are_swept(make_window, tmp_path):
+    folder = tmp_path / "recovery"
+    folder.mkdir(exist_ok=True)
+    stale = folder / ".recovery-x.anglebench.json.abc.tmp"
+    stale.write_bytes(b"x" * 100)
+    os.utime(stale, (1, 1))
+    fresh = folder / ".recovery-y.anglebench.json.def.tmp"
+    fresh.write_bytes(b"y")
+    make_window()
+    assert not stale.exists() and fresh.exists()
+
+
+@pytest.mark.parametrize("change", [
+    lambda d: d["workbenches"]["polygon"]["settings"].update(faces="x"),
+    lambda d: d["workbenches"]["fringe"]["settings"].update(lut_size=100_000_000),
+    lambda d: d.update(metadata=["a", "list"]),
+    lambda d: d.update(metadata={"certificates": {"polygon": "x"}}),
+    lambda d: d["workbenches"].update(mystery={"rows": [], "settings": {}}),
+    lambda d: d["workbenches"]["theodolite"].update(rows=[["1", "2", "3", "4", "5", "6", "7", "8"]]),
+])
+def test_opening_a_damaged_project_changes_nothing(make_window, tmp_path, change):
+    source = make_window()
+    source.load_all_samples()
+    path = tmp_path / "good.anglebench.json"
+    assert source.save_to(path)
+    document = json.loads(path.read_text())
+    change(document)
+    bad = tmp_path / "bad.anglebench.json"
+    bad.write_text(json.dumps(document))
+    window = make_window(answer=QMessageBox.StandardButton.Discard)
+    theodolite = window.presenter("theodolite")
+    theodolite.table_model.set_cells([(0, 0, "7"), (1, 0, "8")])
+    rows, title = theodolite.sheet.copy_rows(), window.windowTitle()
+    undo = theodolite.undo_stack.count()
+    assert not window.open_project(bad)
+    assert "nothing was changed" in window.told[-1]
+    assert theodolite.sheet.copy_rows() == rows and window.windowTitle() == title
+    assert theodolite.undo_stack.count() == undo and window.project_path is None
 
 
 def test_clean_close_removes_recovery_file(make_window):

@@ -63,17 +63,26 @@ def test_atomic_write_leaves_old_file_on_failure(tmp_path, monkeypatch):
 
 def test_recovery_store(tmp_path):
     store = RecoveryStore(tmp_path / "rec")
+    store.claim()
     assert not store.exists()
-    store.write(make_project())
+    store.write(make_project(), "/labs/run.anglebench.json")
     assert store.exists()
-    back = store.load()
+    other = RecoveryStore(tmp_path / "rec")
+    assert other.orphans() == []  # the writer is alive: nothing to recover
+    store._lock_fd, fd = None, store._lock_fd
+    import os
+
+    os.close(fd)  # the writer dies
+    assert other.orphans() == [store.path]
+    back = other.load(store.path)
     assert back.workbenches == make_project().workbenches
     assert "autosaved_at" in back.metadata
-    store.discard()
-    assert not store.exists()
-    store.folder.mkdir(exist_ok=True)
-    store.path.write_text("{broken")
+    assert back.metadata["project_path"] == "/labs/run.anglebench.json"
+    other.adopt(store.path)
+    assert not store.exists() and other.orphans() == []
+    broken = tmp_path / "rec" / "recovery-old.anglebench.json"
+    broken.write_text("{broken")
     with pytest.raises(ProjectFileError):
-        store.load()
-    assert not store.exists()
-    assert (store.folder / "recovery.anglebench.damaged.json").exists()
+        other.load(broken)
+    assert not broken.exists()
+    assert len(list((tmp_path / "rec").glob("recovery-old.anglebench.json.damaged-*.json"))) == 1

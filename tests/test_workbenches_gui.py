@@ -186,3 +186,29 @@ def test_large_import_error_is_reported(qtbot, fringe, tmp_path):
         fringe.start_import(path)
     assert "no column 'u_sin'" in blocker.args[0]
     assert not fringe.busy
+
+
+def _large_signal_file(tmp_path) -> object:
+    theta = np.arange(64 * 1200) * 2 * np.pi / 64
+    path = tmp_path / "revolution.csv"
+    np.savetxt(path, np.column_stack([np.sin(theta), np.cos(theta)]), fmt="%.5f", delimiter=",",
+               header="u_sin,u_cos", comments="")
+    return path
+
+
+def test_the_last_import_asked_for_is_the_one_shown(qtbot, fringe, tmp_path, samples_dir):
+    fringe.start_import(_large_signal_file(tmp_path))  # read on a worker …
+    fringe.start_import(samples_dir / "fringe_sample.csv")  # … then a small one at once
+    assert fringe.sheet.row_count == 512 and not fringe.busy
+    qtbot.wait(3000)  # the large one lands meanwhile and is dropped
+    assert fringe.sheet.row_count == 512
+
+
+def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp_path):
+    from models.project import WorkbenchState
+
+    fringe.start_import(_large_signal_file(tmp_path))
+    fringe.load_state(WorkbenchState([["0.1", "1.0"], ["0.9", "0.2"]], {}))
+    qtbot.wait(3000)
+    assert fringe.sheet.copy_rows()[:2] == [["0.1", "1.0", ""], ["0.9", "0.2", ""]]
+    assert fringe.sheet.row_count == 2 and not fringe.busy

@@ -231,12 +231,24 @@ class CertificateDialog(QDialog):
         return data
 
     def metadata(self) -> CertificateMetadata:
-        """The entered metadata. Raises MetadataError (and marks the field) if unusable."""
-        try:
-            return CertificateMetadata.from_dict(self.raw_values())
-        except MetadataError as exc:
-            self._mark(str(exc))
-            raise
+        """The entered metadata. Raises MetadataError, with every bad field marked at once."""
+        meta, problems = CertificateMetadata.from_dict_lenient(self.raw_values())
+        if problems:
+            self.show_problems(problems)
+            first = next(iter(problems.values()))
+            more = f" (and {len(problems) - 1} more, marked red)" if len(problems) > 1 else ""
+            raise MetadataError(first + more)
+        return meta
+
+    def show_problems(self, problems: dict[str, str], raw: dict | None = None) -> None:
+        """Mark every field in ``problems``; ``raw`` puts back the stored text of fields
+        that could not be read, so what was typed is not lost."""
+        for key, value in (raw or {}).items():
+            if key in self.fields and key in problems and isinstance(value, str | int | float):
+                self.fields[key].setText(str(value))
+        for message in problems.values():
+            self._mark(message)
+        self.error_label.setText("\n".join(problems.values()))
 
     def _mark(self, message: str) -> None:
         self.error_label.setStyleSheet("color: #b00020;")

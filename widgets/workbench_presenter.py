@@ -37,19 +37,21 @@ class _TaskSignals(QObject):
     """Owned by the presenter; workers emit through it back to the GUI thread."""
 
     finished = Signal(int, object, str)
-    imported = Signal(object, str, str)
+    imported = Signal(object, str, str, int)
 
 
 class _AnalysisTask(QRunnable):
     """Parse and analyse a large sheet on a worker thread."""
 
     def __init__(self, kind: AnalysisKind, sheet: ReadingsSheet, settings: dict[str, Any],
-                 generation: int, signals: _TaskSignals, prepare) -> None:
+                 generation: int, signals: _TaskSignals, prepare, current) -> None:
         super().__init__()
-        self._args = (kind, sheet, settings, generation, signals, prepare)
+        self._args = (kind, sheet, settings, generation, signals, prepare, current)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals, prepare = self._args
+        kind, sheet, settings, generation, signals, prepare, current = self._args
+        if generation != current():
+            return  # a newer edit came while this waited in the queue: its analysis will run
         with _gui_thread_first():
             parsed = sheet.parse()
             result, error = _run_analysis(kind, parsed, settings)
@@ -71,12 +73,13 @@ def _prepare_display(prepare, result: Any) -> Any:
 class _ImportTask(QRunnable):
     """Read and map a large file on a worker thread."""
 
-    def __init__(self, kind: AnalysisKind, path: str, signals: _TaskSignals) -> None:
+    def __init__(self, kind: AnalysisKind, path: str, signals: _TaskSignals,
+                 generation: int) -> None:
         super().__init__()
-        self._args = (kind, path, signals)
+        self._args = (kind, path, signals, generation)
 
     def run(self) -> None:
-        kind, path, signals = self._args
+        kind, path, signals, generation = self._args
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
@@ -84,10 +87,10 @@ class _ImportTask(QRunnable):
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except TableImportError as exc:
-                _emit_if_alive(signals.imported, None, path, str(exc))
+                _emit_if_alive(signals.imported, None, path, str(exc), generation)
                 return
             gc.freeze()  # keep the new rows out of later full passes too
-        _emit_if_alive(signals.imported, rows, path, "")
+        _emit_if_alive(signals.imported, rows, path, "", generation)
 
 
 def _emit_if_alive(signal, *args) -> None:
@@ -190,6 +193,8 @@ class WorkbenchPresenter(QObject):
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self._generation = 0
+        self._import_generation = 0  # a newer import, or an opened project, drops older imports
+        self._import_pending = False
         self._signals = _TaskSignals(self)
         self._signals.finished.connect(self._on_task_finished)
         self._signals.imported.connect(self._on_import_finished)
@@ -265,6 +270,7 @@ class WorkbenchPresenter(QObject):
 
     def load_state(self, state: WorkbenchState) -> None:
         """Replace readings and settings (a project was opened); clears the undo history."""
+        self._supersede_imports()
         self._settings = self.kind.settings_with_defaults(state.settings)
         self.view.settings.set_values(self._settings)
         self.table_model.apply_replace(state.rows)
@@ -283,19 +289,33 @@ class WorkbenchPresenter(QObject):
         """Import a file, on a worker thread when it is large; errors go to ``import_failed``."""
         path = str(path)
         try:
-            large = Path(path).stat().st_size > THREAD_THRESHOLD_BYTES
+            # a workbook can expand far beyond its size on disk: always off the GUI thread
+            large = (Path(path).stat().st_size > THREAD_THRESHOLD_BYTES
+                     or Path(path).suffix.lower() in (".xlsx", ".xlsm"))
         except OSError:
             large = False
+        self._supersede_imports()
         if not large:
             try:
                 self.import_file(path)
             except TableImportError as exc:
                 self.import_failed.emit(str(exc))
             return
+        self._import_pending = True
         self._set_busy(True, f"Reading {Path(path).name} …")
-        worker_pool().start(_ImportTask(self.kind, path, self._signals))
+        worker_pool().start(_ImportTask(self.kind, path, self._signals, self._import_generation))
 
-    def _on_import_finished(self, rows, path: str, error: str) -> None:
+    def _supersede_imports(self) -> None:
+        """Whatever import is still reading will be dropped when it lands."""
+        self._import_generation += 1
+        if self._import_pending:
+            self._import_pending = False
+            self._set_busy(False)
+
+    def _on_import_finished(self, rows, path: str, error: str, generation: int) -> None:
+        if generation != self._import_generation:
+            return  # superseded: a newer import or an opened project is what the user wants
+        self._import_pending = False
         if rows is None or len(rows) <= THREAD_THRESHOLD_ROWS:
             self._set_busy(False)  # a large sheet stays "busy" into its analysis: no
             #                        repaint of the old plots in between
@@ -347,7 +367,7 @@ class WorkbenchPresenter(QObject):
             self._set_busy(True, f"Analysing {self.sheet.row_count} readings …")
             worker_pool().start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
-                              self._signals, self.prepare_display))
+                              self._signals, self.prepare_display, lambda: self._generation))
             return
         parsed = self.sheet.parse()
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))
