@@ -28,10 +28,10 @@ bench: $(STAMP) $(VENV)/.bench-installed
 # README pictures: workbench screenshots and sample certificates (needs Debian's poppler-utils)
 pictures: $(STAMP)
 	$(PY) -m resources.samples.make_samples
-	QT_QPA_PLATFORM=offscreen $(PY) -m resources.screenshots.make_pictures
+	QT_QPA_PLATFORM=offscreen $(PY) -m app.readme_pictures
 
 lint: $(STAMP)
-	$(VENV)/bin/ruff check app models widgets tests
+	$(VENV)/bin/ruff check app models widgets tests resources
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

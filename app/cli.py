@@ -13,12 +13,12 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
-from models.certificate_metadata import CertificateMetadata, MetadataError
-from models.kinds import KINDS
-from models.readings import ReadingsSheet, one_line
-from models.results_export import write_results_csv, write_results_xlsx
-from models.tabular_import import TableImportError, map_columns, read_table
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.readings.sheet import ReadingsSheet, one_line
+from models.readings.tabular_import import TableImportError, map_columns, read_table
+from models.registry import KINDS
 
 EXIT_BAD_INPUT = 2
 
@@ -188,7 +188,7 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
 
 def _export(args: argparse.Namespace, kind, result) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
-    from app.certificate_pdf import write_certificate_pdf
+    from app.writers.certificate_pdf import write_certificate_pdf
 
     try:
         metadata = _read_metadata(args.metadata)

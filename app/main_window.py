@@ -25,9 +25,10 @@ from PySide6.QtWidgets import (
     QTabWidget,
 )
 
+from app.writers.results_export import write_results_csv, write_results_xlsx
 from models import __version__
-from models.certificate_metadata import CertificateMetadata, MetadataError
-from models.project import (
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.project.file import (
     Project,
     ProjectFileError,
     WorkbenchState,
@@ -35,13 +36,10 @@ from models.project import (
     load_project,
     save_project,
 )
-from models.recovery import RecoveryStore
-from models.results_export import write_results_csv, write_results_xlsx
-from models.tabular_import import TableImportError
+from models.project.recovery import RecoveryStore
+from models.readings.tabular_import import TableImportError
+from models.registry import KINDS, presenter_class
 from widgets.certificate_dialog import CertificateDialog
-from widgets.fringe_workbench import FringePresenter
-from widgets.polygon_workbench import PolygonPresenter
-from widgets.theodolite_workbench import TheodolitePresenter
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 log = logging.getLogger(__name__)
@@ -54,7 +52,8 @@ MAX_RECENT = 8
 
 
 def default_presenters() -> list[WorkbenchPresenter]:
-    return [TheodolitePresenter(), PolygonPresenter(), FringePresenter()]
+    """One presenter per registered workbench, in the registry's order."""
+    return [presenter_class(kind)() for kind in KINDS.values()]
 
 
 def default_recovery_store() -> RecoveryStore:
@@ -372,7 +371,7 @@ class MainWindow(QMainWindow):
             return False
         if not path.lower().endswith(".pdf"):
             path += ".pdf"
-        from app.certificate_pdf import write_certificate_pdf  # fpdf2 loads on first export
+        from app.writers.certificate_pdf import write_certificate_pdf  # fpdf2 loads on first export
 
         QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
         try:

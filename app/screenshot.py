@@ -9,8 +9,8 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
 from app.main_window import MainWindow
-from models.certificate_metadata import CertificateMetadata
-from models.recovery import RecoveryStore
+from models.certificate.metadata import CertificateMetadata
+from models.project.recovery import RecoveryStore
 from widgets.certificate_dialog import CertificateDialog
 
 

@@ -16,8 +16,8 @@ import sys
 from pathlib import Path
 
 from models import __version__
-from models.atomic_write import write_bytes_atomic
-from models.certificate_document import Table
+from models.certificate.document import Table
+from models.project.atomic_write import write_bytes_atomic
 from models.validation.cases import ValidationCase, run_validation
 
 __all__ = ["run_validate", "validation_pdf_bytes"]
@@ -33,7 +33,7 @@ def _versions() -> list[tuple[str, str]]:
 
 
 def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trials: int) -> bytes:
-    from app.certificate_pdf import ReportPdf, close_fonts  # fpdf2 only when a PDF is asked for
+    from app.writers.certificate_pdf import ReportPdf, close_fonts  # fpdf2 only when a PDF is asked for
 
     passed = sum(c.passed for c in cases)
     pdf = ReportPdf(("AngleBench method validation", run_at.strftime("%Y-%m-%d %H:%M UTC")),

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from models.readings import Column, ParsedReadings
+from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AnalysisKind", "SettingsError"]
 
@@ -40,6 +40,8 @@ class AnalysisKind:
     certificate: Callable[..., Any] | None = None
     # settings -> the settings checked and completed; raises SettingsError naming the key
     check_settings: Callable[[Mapping[str, Any]], dict[str, Any]] | None = None
+    # "package.module:Class" of the workbench's presenter, imported only by the window
+    presenter: str = ""
 
     def checked_settings(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
         """The settings with defaults, each checked (types and ranges): for a project file,
@@ -49,7 +51,7 @@ class AnalysisKind:
         return self.check_settings(settings or {})
 
     def certificate_document(self, result: Any, metadata: Any, source_name: str = "") -> Any:
-        """The certificate content of ``result`` (see models.certificate_document)."""
+        """The certificate content of ``result`` (see models.certificate.document)."""
         if self.certificate is None:
             raise ValueError(f"{self.title}: no certificate is defined")
         return self.certificate(result, metadata, source_name, self.method_reference)

@@ -3,7 +3,6 @@
 import os
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-os.environ.setdefault("ANGLEBENCH_NO_DIALOGS", "1")
 
 from pathlib import Path  # noqa: E402
 

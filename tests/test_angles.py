@@ -4,7 +4,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from models.angles import AngleParseError, format_dms, parse_angle_deg
+from models.readings.angles import AngleParseError, format_dms, parse_angle_deg
 
 
 @pytest.mark.parametrize(

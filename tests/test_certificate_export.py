@@ -15,13 +15,13 @@ import pytest
 from openpyxl import load_workbook
 from pypdf import PdfReader
 
-from app.certificate_pdf import certificate_pdf_bytes, font_files
-from models.certificate_metadata import CertificateMetadata, MetadataError
-from models.conformity import uncertainty_decimals
-from models.kinds import KINDS
-from models.readings import ReadingsSheet
-from models.results_export import neutralise, results_csv_bytes, results_xlsx_bytes
-from models.tabular_import import map_columns, read_table
+from app.writers.certificate_pdf import certificate_pdf_bytes, font_files
+from app.writers.results_export import neutralise, results_csv_bytes, results_xlsx_bytes
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+from models.uncertainty.conformity import uncertainty_decimals
 
 SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
 

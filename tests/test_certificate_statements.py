@@ -13,15 +13,15 @@ import numpy as np
 import pytest
 from pypdf import PdfReader
 
-from app.certificate_pdf import certificate_pdf_bytes
-from models.certificate_metadata import CertificateMetadata, MetadataError
-from models.kinds import KINDS
-from models.polygon_analysis import POLYGON
-from models.readings import ReadingsSheet
-from models.tabular_import import map_columns, read_table
-from models.theodolite import analyze_run
-from models.theodolite_report import theodolite_budget
-from models.uncertainty_budget import coverage_factor
+from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.polygon.analysis import POLYGON
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+from models.theodolite.model import analyze_run
+from models.theodolite.report import theodolite_budget
+from models.uncertainty.budget import coverage_factor
 from models.validation.polygon_rig import PolygonRig
 from models.validation.theodolite_rig import theodolite_readings
 

@@ -3,7 +3,9 @@ import math
 import numpy as np
 import pytest
 
-from models.fringe import (
+from models.fringe.analysis import FRINGE
+from models.fringe.export import correction_table_c_header, correction_table_csv
+from models.fringe.model import (
     ChannelFit,
     build_correction_table,
     channel_cost,
@@ -15,9 +17,7 @@ from models.fringe import (
     period_arcsec,
     phase_of_samples,
 )
-from models.fringe_analysis import FRINGE
-from models.fringe_export import correction_table_c_header, correction_table_csv
-from models.readings import ReadingsSheet
+from models.readings.sheet import ReadingsSheet
 
 # Table 1 of the seed, cosine B1 read as +3.7346 (SPEC.md erratum)
 SIN = ChannelFit.from_parameters(-0.0179, {1: (3.7763, 0.026), 3: (-0.0796, 3.2261),

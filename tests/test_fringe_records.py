@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 
 from app.main import main
-from models.fringe_analysis import FRINGE
-from models.readings import ParsedReadings, ReadingsSheet
+from models.fringe.analysis import FRINGE
+from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.validation.fringe_rig import FringeHead, equal_steps, wandering_motion
 
 
@@ -163,7 +163,7 @@ def test_correction_table_has_a_stated_zero_whatever_the_start_phase():
     at_zero = FRINGE.analyze(parsed(u_sin, u_cos), {"samples_per_period": 64,
                                                     "table_zero": "phase0"})
     assert at_zero.table.correction_rad[0] == 0.0
-    from models.fringe_export import correction_table_c_header, correction_table_csv
+    from models.fringe.export import correction_table_c_header, correction_table_csv
     assert "# zero: the entry at measured phase 0 is zero" in correction_table_csv(at_zero)
     assert "zero: the table's mean is zero" in correction_table_c_header(
         FRINGE.analyze(parsed(u_sin, u_cos), {"samples_per_period": 64}))

@@ -10,9 +10,9 @@ import time
 import pytest
 
 from app.main import main
-from models.readings import ReadingsSheet
-from models.tabular_import import TableImportError, read_table
-from models.theodolite_analysis import THEODOLITE
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import TableImportError, read_table
+from models.theodolite.analysis import THEODOLITE
 
 THEODOLITE_ROWS = "\n".join(f"{t},{t + 0.001 * t},{0.1 + 0.001 * t}" for t in range(-20, 21, 2))
 
@@ -79,7 +79,7 @@ def test_xlsx_declaring_a_million_rows_is_read_in_moments(tmp_path):
 def test_xlsx_that_expands_beyond_any_readings_file_is_refused_unread(tmp_path, monkeypatch):
     import openpyxl
 
-    from models import tabular_import
+    from models.readings import tabular_import
 
     book = openpyxl.Workbook()
     for i in range(200):
@@ -143,7 +143,7 @@ def test_theodolite_readings_that_identify_nothing_are_refused(tmp_path, capsys,
     ("fringe", ["--lines-per-rev", "0"], "lines_per_rev must be"),
 ])
 def test_inapplicable_or_out_of_range_options_are_refused(capsys, samples_dir, kind, args, message):
-    from models.kinds import KINDS
+    from models.registry import KINDS
 
     err = refused(capsys, kind, str(samples_dir / KINDS[kind].sample_file), *args)
     assert message in err
@@ -155,7 +155,7 @@ def test_inapplicable_or_out_of_range_options_are_refused(capsys, samples_dir, k
 ])
 def test_fringe_settings_from_a_project_file_are_checked(settings, message):
     from models.analysis_kind import SettingsError
-    from models.fringe_analysis import FRINGE
+    from models.fringe.analysis import FRINGE
 
     with pytest.raises(SettingsError, match=message):
         FRINGE.analyze(ReadingsSheet(FRINGE.columns, [["0", "1"]] * 40).parse(), settings)
@@ -168,8 +168,8 @@ def test_fringe_settings_from_a_project_file_are_checked(settings, message):
 ])
 def test_polygon_settings_from_a_project_file_are_checked(samples_dir, settings, message):
     from models.analysis_kind import SettingsError
-    from models.polygon_analysis import POLYGON
-    from models.tabular_import import map_columns
+    from models.polygon.analysis import POLYGON
+    from models.readings.tabular_import import map_columns
 
     rows = map_columns(read_table(samples_dir / POLYGON.sample_file), POLYGON.columns)
     with pytest.raises(SettingsError, match=message):

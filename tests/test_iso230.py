@@ -1,7 +1,7 @@
 import numpy as np
 import pytest
 
-from models.iso230 import iso230_evaluate
+from models.uncertainty.iso230 import iso230_evaluate
 
 
 def test_hand_computed_example():

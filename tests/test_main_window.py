@@ -8,7 +8,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QMessageBox
 
 from app.main_window import MainWindow
-from models.recovery import RecoveryStore
+from models.project.recovery import RecoveryStore
 
 
 @pytest.fixture

@@ -5,8 +5,8 @@ import sys
 def test_models_import_no_qt():
     code = (
         "import sys, pkgutil, importlib, models\n"
-        "for m in pkgutil.iter_modules(models.__path__):\n"
-        "    importlib.import_module('models.' + m.name)\n"
+        "for m in pkgutil.walk_packages(models.__path__, 'models.'):\n"
+        "    importlib.import_module(m.name)\n"
         "import app.cli\n"
         "bad = [n for n in sys.modules if n.split('.')[0] in "
         "('PySide6', 'shiboken6', 'pyqtgraph', 'PyQt5', 'PyQt6')]\n"

@@ -1,7 +1,8 @@
 import numpy as np
 import pytest
 
-from models.polygon import (
+from models.polygon.analysis import POLYGON
+from models.polygon.model import (
     SHORT_FORM_COEFFICIENT,
     allowed_tilt_arcsec,
     face_errors_arcsec,
@@ -11,8 +12,7 @@ from models.polygon import (
     pyramidal_x_short_arcsec,
     pyramidal_y_short_arcsec,
 )
-from models.polygon_analysis import POLYGON
-from models.readings import ReadingsSheet
+from models.readings.sheet import ReadingsSheet
 from models.validation.polygon_rig import PolygonRig
 
 THETA = np.arange(0.0, 360.0, 1.0)
@@ -138,7 +138,7 @@ def test_positions_must_be_complete():
 
 def test_closure_limit_table():
     from models.analysis_kind import SettingsError
-    from models.polygon_analysis import closure_limit_arcsec
+    from models.polygon.analysis import closure_limit_arcsec
 
     assert closure_limit_arcsec(3, "0.125, 0.25, 0.5, 1") == 0.5
     assert closure_limit_arcsec(7, "0.125, 0.25") == 15.0  # missing entry: half of ±30"
@@ -147,8 +147,8 @@ def test_closure_limit_table():
 
 
 def test_certificate_reader(tmp_path):
-    from models.polygon_certificate import read_polygon_certificate
-    from models.tabular_import import TableImportError
+    from models.polygon.certificate_reader import read_polygon_certificate
+    from models.readings.tabular_import import TableImportError
 
     path = tmp_path / "c.csv"
     path.write_text("position;deviation_arcsec\n1;0,12\n2;-0,30\n")

@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from app.main import main
-from models.polygon import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
-from models.polygon_analysis import POLYGON
-from models.readings import ReadingsSheet
+from models.polygon.analysis import POLYGON
+from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
+from models.readings.sheet import ReadingsSheet
 from models.validation.polygon_rig import PolygonRig, write_csv
 
 SIGMA = 0.03  # autocollimator noise, arcsec
@@ -277,8 +277,8 @@ def test_tilt_advice_names_the_faces_the_technician_sees(counting, sense):
 
 # -- the budget's polygon and roll inputs ------------------------------------------------
 def test_polygon_stated_from_face_1_has_sensitivity_one():
-    from models.certificate_metadata import CertificateMetadata
-    from models.polygon_report import polygon_budget
+    from models.certificate.metadata import CertificateMetadata
+    from models.polygon.report import polygon_budget
 
     rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0)
     for zero, expected in ((1, [0.0] + [1.0] * 11), (4, None)):
@@ -303,8 +303,8 @@ def test_polygon_stated_from_face_1_has_sensitivity_one():
 
 def test_reticle_roll_enters_as_the_issue_figures_it():
     """A 1′ roll over 960″ of vertical span (ψ = 480″) moves a horizontal reading by 0.28″."""
-    from models.certificate_metadata import CertificateMetadata
-    from models.polygon_report import polygon_budget
+    from models.certificate.metadata import CertificateMetadata
+    from models.polygon.report import polygon_budget
 
     rig = PolygonRig(24, encoder_error(24), psi_arcsec=480.0, omega_deg=0.0)
     result = analyze(rig.set_rows(), ac_roll_arcmin=1.0)

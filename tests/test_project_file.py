@@ -2,8 +2,8 @@ import json
 
 import pytest
 
-from models.atomic_write import write_text_atomic
-from models.project import (
+from models.project.atomic_write import write_text_atomic
+from models.project.file import (
     Project,
     ProjectFileError,
     WorkbenchState,
@@ -11,7 +11,7 @@ from models.project import (
     project_from_json,
     save_project,
 )
-from models.recovery import RecoveryStore
+from models.project.recovery import RecoveryStore
 
 
 def make_project():

@@ -2,7 +2,7 @@ import numpy as np
 from hypothesis import given
 from hypothesis import strategies as st
 
-from models.readings import Column, ColumnKind, ReadingsSheet
+from models.readings.sheet import Column, ColumnKind, ReadingsSheet
 
 COLUMNS = [
     Column("theta_deg", "θ", "deg", ColumnKind.ANGLE_DEG),

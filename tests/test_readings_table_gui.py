@@ -6,9 +6,9 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication
 from PySide6.QtWidgets import QLineEdit
 
-from models.theodolite import SetupParameters, simulate_readings
+from models.theodolite.model import SetupParameters, simulate_readings
 from widgets.readings_table_model import INVALID_BRUSH
-from widgets.theodolite_workbench import TheodolitePresenter
+from widgets.theodolite.presenter import TheodolitePresenter
 
 
 @pytest.fixture

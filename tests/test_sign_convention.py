@@ -12,10 +12,10 @@ import pytest
 
 from app.main import main
 from models.analysis_kind import SIGN_CONVENTION
-from models.kinds import KINDS
-from models.polygon_analysis import POLYGON
-from models.readings import ReadingsSheet
-from models.theodolite import analyze_run
+from models.polygon.analysis import POLYGON
+from models.readings.sheet import ReadingsSheet
+from models.registry import KINDS
+from models.theodolite.model import analyze_run
 from models.validation.polygon_rig import PolygonRig
 from models.validation.theodolite_rig import theodolite_readings
 

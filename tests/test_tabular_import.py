@@ -2,8 +2,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from models.readings import Column, ColumnKind
-from models.tabular_import import TableImportError, map_columns, read_table, split_pasted_text
+from models.readings.sheet import Column, ColumnKind
+from models.readings.tabular_import import TableImportError, map_columns, read_table, split_pasted_text
 
 COLUMNS = [
     Column("theta_deg", "θ", "deg", ColumnKind.ANGLE_DEG),

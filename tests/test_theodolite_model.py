@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 from scipy.optimize import least_squares
 
-from models.theodolite import (
+from models.theodolite.model import (
     SetupParameters,
     _elevation_jacobian,
     _elevation_model,

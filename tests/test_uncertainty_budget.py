@@ -10,21 +10,21 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from models.certificate_metadata import (
+from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
     ReferenceStandard,
     clean_text,
     format_certificate_number,
 )
-from models.conformity import decide_conformity, half_range_monte_carlo
-from models.uncertainty_budget import (
+from models.uncertainty.budget import (
     DEFAULT_COVERAGE_PROBABILITY,
     BudgetComponent,
     UncertaintyBudget,
     coverage_factor,
     divisor_for_basis,
 )
+from models.uncertainty.conformity import decide_conformity, half_range_monte_carlo
 
 GTC = pytest.importorskip("GTC")
 

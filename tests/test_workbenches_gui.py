@@ -7,8 +7,8 @@ from PySide6.QtGui import QGuiApplication
 
 from app.main import main
 from widgets import workbench_presenter
-from widgets.fringe_workbench import FringePresenter
-from widgets.polygon_workbench import PolygonPresenter
+from widgets.fringe.presenter import FringePresenter
+from widgets.polygon.presenter import PolygonPresenter
 from widgets.readings_table_model import MUTED_BRUSH
 
 
@@ -133,7 +133,7 @@ def test_polygon_certificate_fills_deviations_undoably(qtbot, polygon, tmp_path)
 
 
 def test_polygon_certificate_missing_position(qtbot, polygon, tmp_path):
-    from models.tabular_import import TableImportError
+    from models.readings.tabular_import import TableImportError
 
     polygon.load_sample()
     cert = tmp_path / "short.csv"
@@ -205,7 +205,7 @@ def test_the_last_import_asked_for_is_the_one_shown(qtbot, fringe, tmp_path, sam
 
 
 def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp_path):
-    from models.project import WorkbenchState
+    from models.project.file import WorkbenchState
 
     fringe.start_import(_large_signal_file(tmp_path))
     fringe.load_state(WorkbenchState([["0.1", "1.0"], ["0.9", "0.2"]], {}))

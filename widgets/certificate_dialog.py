@@ -32,7 +32,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from models.certificate_metadata import (
+from models.certificate.metadata import (
     DECISION_RULES,
     CertificateMetadata,
     MetadataError,

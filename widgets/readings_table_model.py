@@ -1,11 +1,11 @@
-"""Qt table model over a :class:`models.readings.ReadingsSheet`, with undo."""
+"""Qt table model over a :class:`models.readings.sheet.ReadingsSheet`, with undo."""
 
 from __future__ import annotations
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QUndoStack
 
-from models.readings import ReadingsSheet
+from models.readings.sheet import ReadingsSheet
 from widgets.table_commands import (
     InsertRowsCommand,
     RemoveRowsCommand,
@@ -87,15 +87,6 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
-
-    def cell_errors(self) -> list[tuple[int, int, str]]:
-        out = []
-        for r in range(self.sheet.row_count):
-            for c in range(self.sheet.column_count):
-                reason = self.sheet.cell_error(r, c)
-                if reason:
-                    out.append((r, c, reason))
-        return out
 
     # -- undoable edits ---------------------------------------------------
     def setData(self, index: _Index, value, role: int = Qt.ItemDataRole.EditRole) -> bool:  # noqa: N802

@@ -6,7 +6,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QGuiApplication, QKeySequence
 from PySide6.QtWidgets import QAbstractItemView, QHeaderView, QMenu, QTableView
 
-from models.tabular_import import split_pasted_text
+from models.readings.tabular_import import split_pasted_text
 from widgets.readings_table_model import ReadingsTableModel
 
 

@@ -16,9 +16,9 @@ from PySide6.QtGui import QUndoStack
 from PySide6.QtWidgets import QHeaderView
 
 from models.analysis_kind import AnalysisKind
-from models.project import WorkbenchState
-from models.readings import ParsedReadings, ReadingsSheet
-from models.tabular_import import TableImportError, map_columns, read_table
+from models.project.file import WorkbenchState
+from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.readings.tabular_import import TableImportError, map_columns, read_table
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 

@@ -20,15 +20,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.certificate_metadata import CertificateMetadata, ReferenceStandard
-from models.fringe_analysis import FRINGE
-from models.fringe_report import fringe_budget
-from models.polygon import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
-from models.polygon_analysis import POLYGON
-from models.polygon_report import polygon_budget
-from models.readings import ParsedReadings, ReadingsSheet
-from models.theodolite import analyze_run, induced_error_arcsec
-from models.theodolite_report import theodolite_budget
+from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.fringe.analysis import FRINGE
+from models.fringe.report import fringe_budget
+from models.polygon.analysis import POLYGON
+from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
+from models.polygon.report import polygon_budget
+from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.theodolite.model import analyze_run, induced_error_arcsec
+from models.theodolite.report import theodolite_budget
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
 from models.validation.theodolite_rig import theodolite_readings

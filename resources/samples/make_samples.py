@@ -10,8 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from models.angles import format_dms
-from models.theodolite import SetupParameters, simulate_readings
+from models.readings.angles import format_dms
+from models.theodolite.model import SetupParameters, simulate_readings
 from models.validation.fringe_rig import FringeHead, equal_steps, wandering_motion
 from models.validation.polygon_rig import PolygonRig
 

@@ -15,8 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from models.fringe import fit_channels, model_signal, phase_of_samples
-from models.theodolite import SetupParameters, analyze_run, forward_readings, simulate_readings
+from models.fringe.model import fit_channels, model_signal, phase_of_samples
+from models.theodolite.model import SetupParameters, analyze_run, forward_readings, simulate_readings
 
 TRIALS = 400
 # every corrected point shares the reference reading's noise, so the spread converges

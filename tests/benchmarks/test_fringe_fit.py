@@ -13,7 +13,8 @@ import warnings
 import numpy as np
 from bench_util import fmt_time, timings
 
-from models.fringe import (
+from models.fringe.analysis import FRINGE
+from models.fringe.model import (
     _small_solver,
     channel_cost,
     fit_channel,
@@ -21,8 +22,7 @@ from models.fringe import (
     fit_periods,
     phase_of_samples,
 )
-from models.fringe_analysis import FRINGE
-from models.readings import ParsedReadings
+from models.readings.sheet import ParsedReadings
 
 PERIOD = 64
 PERIODS_TRIED = 12

@@ -17,9 +17,9 @@ from PySide6.QtCore import QSettings, QTimer
 from PySide6.QtWidgets import QApplication
 
 from app.main_window import MainWindow
-from models.fringe import phase_of_samples
-from models.recovery import RecoveryStore
-from models.theodolite import SetupParameters, simulate_readings
+from models.fringe.model import phase_of_samples
+from models.project.recovery import RecoveryStore
+from models.theodolite.model import SetupParameters, simulate_readings
 
 ROOT = Path(__file__).resolve().parents[2]
 LOADS = 3

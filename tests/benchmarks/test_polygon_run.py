@@ -9,9 +9,9 @@ import math
 import numpy as np
 from bench_util import fmt_time, timings
 
-from models.polygon import pyramidal_readings_arcsec
-from models.polygon_analysis import POLYGON
-from models.readings import ParsedReadings, ReadingsSheet
+from models.polygon.analysis import POLYGON
+from models.polygon.model import pyramidal_readings_arcsec
+from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.validation.polygon_rig import PolygonRig
 
 FACES, SETS = 72, 10

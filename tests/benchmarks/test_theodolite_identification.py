@@ -20,7 +20,7 @@ import numpy as np
 from bench_util import fmt_time
 from scipy.optimize import least_squares
 
-from models.theodolite import (
+from models.theodolite.model import (
     SetupParameters,
     _elevation_model,
     identify_from_elevations,

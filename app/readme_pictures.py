@@ -1,0 +1,75 @@
+"""Regenerate the README pictures: python -m app.readme_pictures
+
+The workbench screenshots come from ``anglebench --screenshot``; the first page
+of the validation report from ``anglebench validate --pdf``; each sample
+certificate is written by the CLI with its example details
+(``resources/samples/certificate_*.json``), its first three pages rendered by
+poppler's ``pdftoppm`` (Debian: poppler-utils) and laid side by side with Qt.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parents[1] / "resources" / "screenshots"
+SAMPLES = HERE.parent / "samples"
+EXTRA = {"fringe": ["--lines-per-rev", "16384", "--samples-per-period", "64"]}
+
+
+def certificate_picture(kind: str, scratch: Path) -> Path:
+    from PySide6.QtGui import QColor, QImage, QPainter
+
+    pdf = scratch / f"{kind}.pdf"
+    subprocess.run([sys.executable, "-m", "app.main", "analyze", kind,
+                    str(SAMPLES / f"{kind}_sample.csv"), "--certificate", str(pdf), "--metadata",
+                    str(SAMPLES / f"certificate_{kind}.json"), *EXTRA.get(kind, [])],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "3", str(pdf),
+                    str(scratch / kind)], check=True)
+    pages = [QImage(str(p)) for p in sorted(scratch.glob(f"{kind}-*.png"))]
+    gap = 12
+    sheet = QImage(sum(p.width() for p in pages) + gap * (len(pages) - 1),
+                   max(p.height() for p in pages), QImage.Format.Format_RGB32)
+    sheet.fill(QColor("#d0d0d0"))
+    painter = QPainter(sheet)
+    x = 0
+    for page in pages:
+        painter.drawImage(x, 0, page)
+        x += page.width() + gap
+    painter.end()
+    out = HERE / f"certificate_{kind}.png"
+    sheet.save(str(out))
+    return out
+
+
+def validation_picture(scratch: Path) -> Path:
+    pdf = scratch / "validation.pdf"
+    subprocess.run([sys.executable, "-m", "app.main", "validate", "--pdf", str(pdf)], check=True,
+                   stdout=subprocess.DEVNULL)
+    subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "1", "-singlefile", str(pdf),
+                    str(HERE / "validation_report")], check=True)
+    return HERE / "validation_report.png"
+
+
+def main() -> None:
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from PySide6.QtWidgets import QApplication
+
+    from app.screenshot import write_screenshots
+
+    QApplication.instance() or QApplication(["readme_pictures"])
+    for path in write_screenshots(HERE):
+        if path.name == "certificate_dialog.png":
+            path.unlink()  # shown by the tests, not in the README
+    with tempfile.TemporaryDirectory() as scratch:
+        for kind in ("theodolite", "polygon", "fringe"):
+            certificate_picture(kind, Path(scratch))
+        validation_picture(Path(scratch))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,508 @@
+"""Print a :class:`~models.certificate.document.CertificateDocument` as a PDF.
+
+fpdf2 writes the page: text stays selectable (embedded, subset TrueType
+fonts), the plots are drawn as vector paths, and the same inputs give the
+same bytes (fixed creation date and document ID). User text is printed as
+plain text — fpdf2 interprets no markup unless asked — and wraps inside its
+cell, so a long name or a CJK note cannot break the layout.
+
+Fonts (resources/fonts): DejaVu Sans for Latin, Greek and symbols (Bitstream
+Vera / DejaVu licence), Droid Sans Fallback for Chinese, Japanese and Korean
+(Apache License 2.0), used for any glyph DejaVu lacks.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import functools
+import hashlib
+import json
+import math
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+from fpdf import FPDF
+from fpdf.enums import TableCellFillMode, XPos, YPos
+from fpdf.fonts import FontFace
+
+from models import __version__
+from models.analysis_kind import SIGN_CONVENTION_TEXT
+from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
+from models.project.atomic_write import write_bytes_atomic
+from models.uncertainty.budget import BASIS_DIVISORS
+from models.uncertainty.conformity import uncertainty_decimals
+
+__all__ = ["ReportPdf", "certificate_pdf_bytes", "close_fonts", "font_files",
+           "write_certificate_pdf"]
+
+FONT = "dejavu"
+CJK_FONT = "droid"
+PAGE_TOTAL_ALIAS = "{nb}"
+INK = (20, 20, 20)
+GREY = (110, 110, 110)
+RULE = (170, 170, 170)
+HEADER_FILL = (228, 233, 240)
+
+
+def font_files() -> dict[str, Path]:
+    """The bundled font files by role: regular, bold, cjk."""
+    base = resources.files("resources") / "fonts"
+    return {"regular": Path(str(base / "DejaVuSans.ttf")),
+            "bold": Path(str(base / "DejaVuSans-Bold.ttf")),
+            "cjk": Path(str(base / "DroidSansFallbackFull.ttf"))}
+
+
+@functools.cache
+def _latin_coverage() -> frozenset[int]:
+    from fontTools.ttLib import TTFont
+
+    with TTFont(font_files()["regular"], lazy=True) as font:
+        return frozenset(font.getBestCmap())
+
+
+def _needs_fallback(document: CertificateDocument) -> bool:
+    """Whether any text of the document has a character DejaVu Sans lacks."""
+    texts = [document.source_name, document.method, document.method_reference,
+             *document.warnings, json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
+    covered = _latin_coverage()
+    return any(ord(ch) not in covered for text in texts for ch in text if ord(ch) > 0x7F)
+
+
+def _created(document: CertificateDocument) -> dt.datetime:
+    meta = document.metadata
+    if meta.created:
+        try:
+            stamp = dt.datetime.fromisoformat(meta.created)
+        except ValueError:
+            stamp = None
+        if stamp is not None:
+            return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
+    if meta.issue_date:
+        return dt.datetime.fromisoformat(meta.issue_date).replace(tzinfo=dt.timezone.utc)
+    return dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
+
+
+class ReportPdf(FPDF):
+    """An A4 page with the bundled fonts, a running head and foot, headings, paragraphs,
+    tables and vector plots: the certificate and the validation report are made of it.
+
+    ``head`` is (left, right) text at the top of every page, ``foot`` the lines at the
+    bottom (the first gets "Page x of y" beside it).
+    """
+
+    def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False) -> None:
+        super().__init__(orientation="portrait", unit="mm", format="A4")
+        self.head, self.foot = head, foot
+        fonts = font_files()
+        self.add_font(FONT, "", str(fonts["regular"]))
+        self.add_font(FONT, "B", str(fonts["bold"]))
+        if cjk:  # the CJK font costs ~0.3 s to load and subset
+            self.add_font(CJK_FONT, "", str(fonts["cjk"]))
+            self.set_fallback_fonts([CJK_FONT], exact_match=False)
+        self.set_margins(18, 16, 18)
+        self.set_auto_page_break(True, margin=20)
+        self.alias_nb_pages("")  # see footer()
+        self.set_text_color(*INK)
+
+    # -- page furniture ------------------------------------------------------
+    def header(self) -> None:
+        self.set_font(FONT, "", 8)
+        self.set_text_color(*GREY)
+        left, right = self.head
+        # The right-hand cell first: a CJK lab name switches to the fallback font, and
+        # fpdf2 then omits the font selection of the next cell on a fresh page.
+        y = self.get_y()
+        self.set_x(self.l_margin + self.epw / 2)
+        self.cell(self.epw / 2, 5, right, align="R")
+        self.set_xy(self.l_margin, y)
+        self.cell(self.epw / 2, 5, left, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.set_draw_color(*RULE)
+        self.line(self.l_margin, self.get_y(), self.w - self.r_margin, self.get_y())
+        self.ln(3)
+        self.set_text_color(*INK)
+
+    def footer(self) -> None:
+        self.set_y(-14)
+        self.set_font(FONT, "", 7.5)
+        self.set_text_color(*GREY)
+        self.cell(self.epw * 0.75, 4, self.foot[0], new_x=XPos.RIGHT, new_y=YPos.TOP)
+        # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
+        # would be replaced by the number of pages.
+        previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
+        self.cell(self.epw * 0.25, 4, f"Page {self.page_no()} of {PAGE_TOTAL_ALIAS}", align="R",
+                  new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.str_alias_nb_pages = previous
+        self.cell(self.epw, 4, self.foot[1])
+        self.set_text_color(*INK)
+
+    def output(self, *args, **kwargs):
+        self.str_alias_nb_pages = PAGE_TOTAL_ALIAS  # fill in the footer's placeholders
+        return super().output(*args, **kwargs)
+
+    # -- building blocks -----------------------------------------------------
+    def heading(self, text: str, keep_with: float = 18.0) -> None:
+        """A section heading, moved to the next page unless ``keep_with`` mm follow it."""
+        if self.will_page_break(keep_with):
+            self.add_page()
+        self.ln(2)
+        self.set_font(FONT, "B", 11)
+        self.cell(0, 7, text, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.set_font(FONT, "", 9)
+
+    def paragraph(self, text: str, size: float = 9, color=INK) -> None:
+        self.set_font(FONT, "", size)
+        with self.local_context(text_color=color):
+            self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
+                            new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+
+    def key_values(self, rows: list[tuple[str, str]]) -> None:
+        self.set_font(FONT, "", 9)
+        with self.table(col_widths=(45, 129), first_row_as_headings=False, borders_layout="NONE",
+                        line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
+                        wrapmode="CHAR") as table:
+            for key, value in rows:
+                row = table.row()
+                row.cell(key, style=FontFace(emphasis="BOLD"))
+                row.cell(value or "—")
+
+    def data_table(self, t: Table, widths: tuple[float, ...], align: tuple[str, ...],
+                   size: float = 8) -> None:
+        self.set_font(FONT, "", size)
+        self.set_fill_color(246, 247, 249)
+        heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
+        with self.table(col_widths=widths, text_align=align, line_height=size * 0.5,
+                        headings_style=heading, borders_layout="HORIZONTAL_LINES",
+                        cell_fill_color=(246, 247, 249), cell_fill_mode=TableCellFillMode.ROWS,
+                        repeat_headings=1, padding=(0.5, 1.0), wrapmode="CHAR") as table:
+            table.row(t.header)
+            for r in t.rows:
+                table.row(r)
+        if t.note:
+            self.paragraph(t.note, 7.5, GREY)
+
+    # -- vector plot ---------------------------------------------------------
+    def plot(self, figure: PlotFigure, height: float = 62.0) -> None:
+        if self.will_page_break(height + 12):
+            self.add_page()
+        self.set_font(FONT, "B", 9)
+        self.cell(0, 5, figure.title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        x0, y0 = self.l_margin + 14, self.get_y() + 2
+        w, h = self.epw - 16, height - 14
+        xs = np.concatenate([s.x for s in figure.series if s.x.size])
+        ys = np.concatenate([s.y for s in figure.series if s.y.size]
+                            + [s.y + sign * s.band for s in figure.series if s.band is not None
+                               for sign in (-1.0, 1.0)])
+        xs = np.concatenate([xs] + [s.x for s in figure.series if s.band is not None
+                                    for _ in (0, 1)])
+        finite = np.isfinite(xs) & np.isfinite(ys)
+        if not finite.any():
+            self.paragraph("(no data)")
+            return
+        x_ticks = _nice_ticks(float(xs[finite].min()), float(xs[finite].max()))
+        y_ticks = _nice_ticks(float(ys[finite].min()), float(ys[finite].max()))
+        xlo, xhi, ylo, yhi = x_ticks[0], x_ticks[-1], y_ticks[0], y_ticks[-1]
+
+        def px(v):
+            return x0 + (np.asarray(v) - xlo) / (xhi - xlo) * w
+
+        def py(v):
+            return y0 + h - (np.asarray(v) - ylo) / (yhi - ylo) * h
+
+        self.set_line_width(0.1)
+        self.set_draw_color(220, 220, 220)
+        self.set_font(FONT, "", 6.5)
+        for t in y_ticks:
+            self.line(x0, float(py(t)), x0 + w, float(py(t)))
+            self.text(x0 - 1.2 - self.get_string_width(_tick(t, y_ticks)), float(py(t)) + 1.0,
+                      _tick(t, y_ticks))
+        for t in x_ticks:
+            self.line(float(px(t)), y0, float(px(t)), y0 + h)
+            label = _tick(t, x_ticks)
+            self.text(float(px(t)) - self.get_string_width(label) / 2, y0 + h + 3.2, label)
+        self.set_draw_color(*GREY)
+        self.set_line_width(0.25)
+        self.rect(x0, y0, w, h)
+        if ylo < 0 < yhi:
+            self.set_draw_color(120, 120, 120)
+            self.line(x0, float(py(0.0)), x0 + w, float(py(0.0)))
+        for s in figure.series:
+            if s.band is None:
+                continue
+            ok = np.isfinite(s.x) & np.isfinite(s.y) & np.isfinite(s.band)
+            upper = list(zip(px(s.x[ok]).tolist(), py((s.y + s.band)[ok]).tolist(), strict=True))
+            lower = list(zip(px(s.x[ok]).tolist(), py((s.y - s.band)[ok]).tolist(), strict=True))
+            if len(upper) >= 2:
+                self.set_fill_color(*[int(255 - (255 - c) * 0.25) for c in s.color])
+                self.polygon(upper + lower[::-1], style="F")
+        for s in figure.series:
+            ok = np.isfinite(s.x) & np.isfinite(s.y)
+            pts = list(zip(px(s.x[ok]).tolist(), py(s.y[ok]).tolist(), strict=True))
+            self.set_draw_color(*s.color)
+            self.set_line_width(0.3)
+            if len(pts) >= 2:
+                self.polyline(pts)
+            if s.markers and len(pts) <= 400:
+                self.set_fill_color(*s.color)
+                for x, y in pts:
+                    self.circle(x, y, 0.45, style="F")
+        self.set_font(FONT, "", 7)
+        self.text(x0 + w / 2 - self.get_string_width(figure.x_label) / 2, y0 + h + 7,
+                  figure.x_label)
+        with self.rotation(90, self.l_margin + 1.5, y0 + h / 2):
+            self.text(self.l_margin + 1.5 - self.get_string_width(figure.y_label) / 2,
+                      y0 + h / 2, figure.y_label)
+        lx = x0 + 2
+        for s in figure.series:
+            self.set_draw_color(*s.color)
+            self.set_line_width(0.6)
+            self.line(lx, y0 + 3, lx + 5, y0 + 3)
+            self.text(lx + 6, y0 + 4, s.label)
+            lx += 9 + self.get_string_width(s.label)
+        self.set_line_width(0.2)
+        self.set_draw_color(*INK)
+        self.set_y(y0 + h + 9)
+
+
+class _CertificatePdf(ReportPdf):
+    def __init__(self, document: CertificateDocument) -> None:
+        meta = document.metadata
+        super().__init__(
+            (meta.lab_name or "Laboratory not stated",
+             f"Certificate {meta.certificate_number or 'no number'}"),
+            ("This certificate shall not be reproduced except in full without the laboratory's "
+             "written approval.",
+             f"Certificate {meta.certificate_number or '—'} · AngleBench {__version__}"),
+            cjk=_needs_fallback(document))
+        self.document = document
+
+    def header(self) -> None:
+        super().header()
+        if self.document.is_draft:
+            self._watermark()
+
+    def _watermark(self) -> None:
+        x, y = self.get_x(), self.get_y()
+        with self.local_context(text_color=(235, 200, 200)):
+            self.set_font(FONT, "B", 90)
+            with self.rotation(45, self.w / 2, self.h / 2):
+                self.text(self.w / 2 - 60, self.h / 2 + 12, "DRAFT")
+        self.set_xy(x, y)
+
+
+def _long_word(text: str) -> bool:
+    return any(len(word) > 40 for word in text.split())
+
+
+def _nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
+    if not math.isfinite(lo) or not math.isfinite(hi):
+        return [0.0, 1.0]
+    if hi - lo < 1e-12:
+        pad = max(abs(lo) * 0.1, 1e-3)
+        lo, hi = lo - pad, hi + pad
+    raw = (hi - lo) / count
+    mag = 10 ** math.floor(math.log10(raw))
+    step = next(m * mag for m in (1, 2, 2.5, 5, 10) if m * mag >= raw)
+    start = math.floor(lo / step) * step
+    ticks = []
+    v = start
+    while not ticks or ticks[-1] < hi - 1e-9 * step:
+        ticks.append(round(v, 12))
+        v += step
+        if len(ticks) > 50:
+            break
+    if len(ticks) < 2:
+        ticks.append(ticks[-1] + step)
+    return ticks
+
+
+def _tick(value: float, ticks: list[float]) -> str:
+    step = ticks[1] - ticks[0]
+    if abs(value) < 1e-9 * step:
+        value = 0.0  # no "-0.0"
+    decimals = max(0, -int(math.floor(math.log10(step))) + (1 if step / 10 ** math.floor(
+        math.log10(step)) == 2.5 else 0))
+    return f"{value:.{decimals}f}"
+
+
+def _standards_table(document: CertificateDocument) -> Table:
+    rows = []
+    for s in document.metadata.standards:
+        u = "—" if s.uncertainty_arcsec is None else (
+            f"{s.uncertainty_arcsec:g}\" ({BASIS_DIVISORS[s.basis][0]})")
+        rows.append((s.description or "—", s.serial or "—", s.certificate_no or "—", u))
+    if not rows:
+        rows.append(("not stated", "", "", ""))
+    return Table("Reference standards", ("Standard", "Serial no.", "Certificate no.",
+                                         "Uncertainty"), rows)
+
+
+def _render(document: CertificateDocument) -> FPDF:
+    meta = document.metadata
+    pdf = _CertificatePdf(document)
+    pdf.set_title(f"{document.title} {meta.certificate_number}".strip())
+    pdf.set_author(meta.lab_name)
+    pdf.set_subject(document.kind_title)
+    pdf.set_creator(f"AngleBench {__version__}")
+    pdf.set_producer("AngleBench (fpdf2)")
+    created = _created(document)
+    pdf.set_creation_date(created)
+    pdf.add_page()
+
+    pdf.set_font(FONT, "B", 17)
+    pdf.cell(0, 9, document.title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.set_font(FONT, "", 11)
+    pdf.cell(0, 6, f"{document.kind_title}", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    if document.is_draft:
+        pdf.paragraph("DRAFT — not valid as a certificate. Missing: "
+                      + ", ".join(meta.missing_fields()) + ".", 9, (170, 30, 30))
+    pdf.ln(1)
+    pdf.key_values([
+        ("Certificate number", meta.certificate_number),
+        ("Date of issue", meta.issue_date or created.date().isoformat()),
+        ("Laboratory", ", ".join(p for p in (meta.lab_name, meta.lab_address) if p)),
+        ("Accreditation", meta.lab_accreditation),
+        ("Customer", ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
+        ("Item under test", meta.item_description),
+        ("Manufacturer", meta.item_manufacturer),
+        ("Serial number", meta.item_serial),
+        ("Grade / specification", "; ".join(p for p in (
+            meta.item_grade, f"tolerance ±{document.tolerance_arcsec:g}{document.unit}"
+            if document.tolerance_arcsec else "") if p)),
+        ("Date of calibration", meta.calibration_date),
+        ("Environment", _environment(meta)),
+        ("Readings", document.source_name),
+    ])
+    pdf.heading("Reference standards and traceability")
+    pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
+    pdf.paragraph(_traceability(document), 8.5)
+    pdf.heading("Method")
+    pdf.paragraph(document.method)
+    if document.method_reference:
+        pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
+    pdf.paragraph(
+        "This is a non-standard method, published in the reference above and implemented in "
+        f"AngleBench {__version__}. Its validation record (ISO/IEC 17025 7.2.2) is the "
+        "validation report of that version (anglebench validate): the reference figures of the "
+        "publication and exact simulations with known truth, each with its result.", 8, GREY)
+    pdf.paragraph(f"Sign convention: {SIGN_CONVENTION_TEXT}.", 8.5)
+    pdf.heading(document.parameters.title)
+    pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
+    pdf.heading("Error curves", keep_with=75.0)
+    for figure in document.plots:
+        pdf.plot(figure)
+    pdf.heading(document.statistics.title)
+    pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
+    pdf.heading("Measurement uncertainty")
+    big_u = document.expanded_uncertainty_arcsec
+    budget_ = document.budget
+    pdf.paragraph(
+        "The expanded uncertainty of the error is "
+        f"U = {big_u:.{uncertainty_decimals(big_u)}f}{document.unit} "
+        "(the largest over the points; each point's U is in the results table). At each point "
+        "it is the combined standard uncertainty multiplied by the coverage factor k of "
+        "Student's t for that point's effective degrees of freedom (Welch–Satterthwaite) and a "
+        f"coverage probability of {100 * budget_.probability:.2f} %; at the largest, "
+        f"k = {budget_.coverage_factor:.2f}. The uncertainty was evaluated according to the GUM "
+        "(JCGM 100:2008).")
+    budget = budget_table(document.budget, document.budget_point, document.unit)
+    pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
+                   ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
+    notes = [f"{row[0]}: {c.note}" for row, c in zip(budget.rows, document.budget.components,
+                                                       strict=False) if c.note]
+    for note in notes:
+        pdf.paragraph(note, 7.5, GREY)
+    pdf.heading("Statement of conformity")
+    conformity = document.conformity
+    pdf.paragraph(conformity.statement)
+    if conformity.quantity:
+        pdf.paragraph(f"Decided quantity: {conformity.quantity}.", 8, GREY)
+    pdf.paragraph(f"Decision rule: {conformity.rule}.", 8, GREY)
+    if conformity.zones:
+        pdf.paragraph(f"Zones: {conformity.zones}.", 8, GREY)
+    pdf.heading("Statements")
+    for statement in (*document.statements,
+                      "The results relate only to the item calibrated, as received, under the "
+                      "conditions stated."):
+        pdf.paragraph(f"• {statement}")
+    if document.warnings or meta.notes:
+        pdf.heading("Remarks")
+        for w in document.warnings:
+            pdf.paragraph(f"• {w}")
+        if meta.notes:
+            pdf.paragraph(meta.notes)
+    pdf.heading(document.results.title)
+    n_cols = len(document.results.header)
+    pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)
+    _signatures(pdf)
+    digest = hashlib.md5(_identity(document, created).encode(), usedforsecurity=False).hexdigest()
+    pdf.file_id = lambda *_: f"<{digest}><{digest}>"
+    return pdf
+
+
+def _traceability(document: CertificateDocument) -> str:
+    listed = [s for s in document.metadata.standards if s.certificate_no]
+    if not listed:
+        return ("Metrological traceability: not established on this document — no reference "
+                "standard with a calibration certificate is listed.")
+    names = "; ".join(f"{s.description or 'standard'} (certificate {s.certificate_no})"
+                      for s in listed)
+    return ("Metrological traceability: the results are traceable to the SI unit of plane angle "
+            f"through the reference standards listed, calibrated as stated in their "
+            f"certificates: {names}.")
+
+
+def _identity(document: CertificateDocument, created: dt.datetime) -> str:
+    """What makes two certificates the same document: for the PDF's /ID."""
+    parts = [document.kind_key, repr(document.metadata.to_dict()), created.isoformat(),
+             document.source_name, repr(document.results.rows), repr(document.parameters.rows)]
+    return "\x1f".join(parts)
+
+
+def _environment(meta) -> str:
+    parts = []
+    if meta.temperature_c is not None:
+        parts.append(f"temperature {meta.temperature_c:.1f} °C")
+    if meta.humidity_pct is not None:
+        parts.append(f"relative humidity {meta.humidity_pct:.0f} %")
+    return ", ".join(parts)
+
+
+def _signatures(pdf: _CertificatePdf) -> None:
+    meta = pdf.document.metadata
+    if pdf.will_page_break(34):
+        pdf.add_page()
+    pdf.ln(8)
+    y = pdf.get_y()
+    half = pdf.epw / 2
+    for i, (role, name) in enumerate((("Operator", meta.operator), ("Approved by", meta.approver))):
+        x = pdf.l_margin + i * half
+        pdf.set_xy(x, y + 12)
+        pdf.set_draw_color(*INK)
+        pdf.line(x, y + 12, x + half - 12, y + 12)
+        pdf.set_font(FONT, "", 8)
+        pdf.cell(half - 12, 4.5, f"{role}: {name or '—'}", new_x=XPos.LEFT, new_y=YPos.NEXT)
+        pdf.set_x(x)
+        pdf.cell(half - 12, 4.5, "Signature and date", new_x=XPos.LEFT, new_y=YPos.NEXT)
+    pdf.set_y(y + 24)
+
+
+def close_fonts(pdf: FPDF) -> None:
+    """fpdf2 opens the TrueType files lazily and leaves them open: close them."""
+    for font in pdf.fonts.values():
+        ttfont = getattr(font, "ttfont", None)
+        if ttfont is not None:
+            ttfont.close()
+
+
+def certificate_pdf_bytes(document: CertificateDocument) -> bytes:
+    final = _render(document)
+    try:
+        return bytes(final.output())
+    finally:
+        close_fonts(final)
+
+
+def write_certificate_pdf(path: str | Path, document: CertificateDocument) -> None:
+    """Write the certificate atomically (temp file + rename)."""
+    write_bytes_atomic(path, certificate_pdf_bytes(document))

@@ -1,0 +1,134 @@
+"""The certificate's results as CSV or XLSX, safe to open in a spreadsheet.
+
+CSV: every point's figures (UTF-8 with BOM so spreadsheets read Chinese text,
+one header row with units in the names). XLSX: the same on a *Results* sheet,
+plus *Parameters*, *Uncertainty budget* and *Certificate* sheets.
+
+Numbers are written as numbers. Any text cell that starts with ``=``, ``+``,
+``-``, ``@``, a tab or a carriage return is prefixed with an apostrophe so a
+spreadsheet shows it as text instead of running it as a formula (CSV/formula
+injection, OWASP). Files are written atomically.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+from pathlib import Path
+
+import numpy as np
+
+from models.analysis_kind import SIGN_CONVENTION_TEXT
+from models.certificate.document import CertificateDocument, budget_table
+from models.project.atomic_write import write_bytes_atomic
+
+__all__ = ["XLSX_MAX_ROWS", "neutralise", "write_results_csv", "write_results_xlsx"]
+
+XLSX_MAX_ROWS = 1_048_576
+_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+
+
+_XML_ILLEGAL = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f]")
+
+
+def neutralise(text: object) -> str:
+    """Text a spreadsheet will show, never evaluate; control characters (which no XLSX
+    cell may hold, as in a file name typed with one) become U+FFFD."""
+    s = _XML_ILLEGAL.sub("\ufffd", "" if text is None else str(text))
+    return "'" + s if s.startswith(_FORMULA_STARTS) else s
+
+
+def results_csv_bytes(document: CertificateDocument) -> bytes:
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\r\n")
+    headers = [name for name, _ in document.point_columns]
+    writer.writerow([neutralise(h) for h in headers])
+    columns = [np.asarray(values, dtype=float) for _, values in document.point_columns]
+    if columns:
+        text = np.char.mod("%.10g", np.column_stack(columns))
+        text[~np.isfinite(np.column_stack(columns))] = ""
+        writer.writerows(text.tolist())
+    return ("\ufeff" + out.getvalue()).encode("utf-8")
+
+
+def write_results_csv(path: str | Path, document: CertificateDocument) -> None:
+    write_bytes_atomic(path, results_csv_bytes(document))
+
+
+def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
+    meta = document.metadata
+    rows: list[tuple[str, object]] = [
+        ("Certificate number", meta.certificate_number), ("Test", document.kind_title),
+        ("Readings", document.source_name), ("Laboratory", meta.lab_name),
+        ("Customer", meta.customer_name), ("Item under test", meta.item_description),
+        ("Serial number", meta.item_serial), ("Grade", meta.item_grade),
+        ("Date of calibration", meta.calibration_date), ("Date of issue", meta.issue_date),
+        ("Operator", meta.operator), ("Approver", meta.approver),
+        ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
+        ("Sign convention", SIGN_CONVENTION_TEXT),
+        ("Expanded uncertainty U, largest (\")", document.expanded_uncertainty_arcsec),
+        ("Coverage factor k there", document.budget.coverage_factor),
+        ("Coverage probability (%)", 100.0 * document.budget.probability),
+        ("Tolerance ± (\")", document.tolerance_arcsec),
+        ("Decided quantity", document.conformity.quantity),
+        ("Decided value (\")", document.conformity.value_arcsec),
+        ("U of the decided value (\")", document.conformity.expanded_arcsec),
+        ("Verdict", document.conformity.verdict),
+        ("Conformity", document.conformity.statement),
+        ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
+        *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),
+        ("Notes", meta.notes),
+    ]
+    for i, s in enumerate(meta.standards, 1):
+        rows.append((f"Standard {i}", f"{s.description}; serial {s.serial}; certificate "
+                                      f"{s.certificate_no}"))
+        rows.append((f"Standard {i} uncertainty (\")", s.uncertainty_arcsec))
+    return rows
+
+
+def _cell(value: object) -> object:
+    if value is None:
+        return None
+    if isinstance(value, bool):
+        return str(value)
+    if isinstance(value, int | float | np.floating | np.integer):
+        v = float(value)
+        return v if np.isfinite(v) else None
+    return neutralise(value)
+
+
+def results_xlsx_bytes(document: CertificateDocument) -> bytes:
+    from openpyxl import Workbook  # imported here: only the export needs it
+
+    points = len(document.point_columns[0][1]) if document.point_columns else 0
+    if points + 1 > XLSX_MAX_ROWS:
+        raise ValueError(f"{points} points do not fit on a spreadsheet ({XLSX_MAX_ROWS - 1} rows "
+                         "at most): export CSV instead")
+    book = Workbook(write_only=True)
+    sheet = book.create_sheet("Results")
+    sheet.append([neutralise(name) for name, _ in document.point_columns])
+    columns = [np.asarray(values, dtype=float) for _, values in document.point_columns]
+    if columns:
+        block = np.column_stack(columns)
+        for row in block.tolist():
+            sheet.append([v if np.isfinite(v) else None for v in row])
+    for title, table in (("Parameters", document.parameters), ("Statistics", document.statistics),
+                         ("Uncertainty budget", budget_table(document.budget,
+                                                             document.budget_point))):
+        ws = book.create_sheet(title)
+        ws.append([neutralise(h) for h in table.header])
+        for row in table.rows:
+            ws.append([_cell(v) for v in row])
+        if table.note:
+            ws.append([neutralise(table.note)])
+    ws = book.create_sheet("Certificate")
+    for key, value in _metadata_rows(document):
+        ws.append([neutralise(key), _cell(value)])
+    out = io.BytesIO()
+    book.save(out)
+    return out.getvalue()
+
+
+def write_results_xlsx(path: str | Path, document: CertificateDocument) -> None:
+    write_bytes_atomic(path, results_xlsx_bytes(document))

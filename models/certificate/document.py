@@ -1,0 +1,189 @@
+"""The content of a test certificate, independent of how it is printed.
+
+Each workbench's report module fills one :class:`CertificateDocument` from its
+analysis result and the certificate metadata; the PDF writer and the CSV/XLSX
+export print it. Numbers are formatted here, once, so every output shows the
+same figures.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
+from models.uncertainty.budget import (
+    BASIS_DIVISORS,
+    BudgetComponent,
+    UncertaintyBudget,
+    divisor_for_basis,
+)
+from models.uncertainty.conformity import Conformity, significant_decimals, uncertainty_decimals
+
+__all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
+           "format_uncertain", "reference_standard_components",
+           "resolution_component"]
+
+
+@dataclass(frozen=True)
+class PlotSeries:
+    label: str
+    x: np.ndarray
+    y: np.ndarray
+    color: tuple[int, int, int] = (31, 119, 180)
+    markers: bool = False
+    band: np.ndarray | None = None  # ± half-width drawn as a shaded band around y
+
+
+@dataclass(frozen=True)
+class PlotFigure:
+    title: str
+    x_label: str
+    y_label: str
+    series: tuple[PlotSeries, ...]
+
+
+@dataclass(frozen=True)
+class Table:
+    title: str
+    header: tuple[str, ...]
+    rows: list[tuple[str, ...]]
+    note: str = ""
+
+
+@dataclass(frozen=True)
+class CertificateDocument:
+    kind_key: str
+    kind_title: str
+    metadata: CertificateMetadata
+    source_name: str
+    method: str
+    method_reference: str
+    parameters: Table
+    results: Table
+    statistics: Table
+    budget: UncertaintyBudget
+    budget_point: str  # where the budget table is evaluated, e.g. "θ = 30°"
+    conformity: Conformity
+    tolerance_arcsec: float | None
+    plots: tuple[PlotFigure, ...]
+    warnings: tuple[str, ...] = ()
+    # every point's figures, for the CSV/XLSX export: (column header, values)
+    point_columns: tuple[tuple[str, np.ndarray], ...] = ()
+    # statements of this workbench's own (why U is zero somewhere, a specification's
+    # source, as found / as left …), printed with the shared ones
+    statements: tuple[str, ...] = ()
+    unit: str = "\""  # the errors' unit symbol: arcsec, or " nm" for an interferometer
+
+    @property
+    def expanded_uncertainty_arcsec(self) -> float:
+        """The certificate's U: the largest over the curve's points."""
+        return self.budget.max_expanded_arcsec
+
+    @property
+    def title(self) -> str:
+        return DOCUMENT_TYPES[self.metadata.document_type]
+
+    @property
+    def is_draft(self) -> bool:
+        return bool(self.metadata.missing_fields())
+
+
+def _fmt(value: float, digits: int = 3) -> str:
+    if not np.isfinite(value):
+        return "—"
+    return f"{value:.{digits}f}"
+
+
+def _dof_text(nu: float) -> str:
+    if not np.isfinite(nu):
+        return "∞"
+    return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
+
+
+def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Table:
+    """The budget at its worst point as a printable table, with the combined line."""
+    rows = []
+    for r in budget.table():
+        dof = _dof_text(r["dof"])
+        rows.append((str(r["name"]), str(r["evaluation"]), str(r["distribution"]),
+                     _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
+                     f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
+                     f"{100 * r['share']:.1f}", dof))
+    i = budget.worst_index
+    nu = budget.effective_dof()
+    nu_text = _dof_text(nu)
+    uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
+    rows.append(("Combined standard u_c", "", "", "", "", "", "", _fmt(uc), "100.0",
+                 nu_text))
+    k = budget.coverage_factor
+    rows.append((f"Expanded U (k = {k:.2f})", "", "", "", "", "",
+                 "", _fmt(k * uc), "", ""))
+    note = (f"Budget at {point}, the point with the largest U. k = {k:.2f} is Student's t for "
+            f"ν_eff = {nu_text} (Welch–Satterthwaite) and a coverage probability of "
+            f"{100 * budget.probability:.2f} %; each point's U uses its own ν_eff.")
+    u = unit.strip()
+    return Table("Uncertainty budget", ("Input", "Type", "Distribution", f"Value ({u})", "Divisor",
+                                        f"u ({u})", "c", f"c·u ({u})", "Share %", "ν"),
+                 rows, note)
+
+
+def reference_standard_components(metadata: CertificateMetadata, sensitivity,
+                                  reading: str, sensitivity_from_first=None) -> list[BudgetComponent]:
+    """One Type B input per reference standard with a stated uncertainty.
+
+    ``sensitivity`` per point (√2 where the error is the difference of two
+    readings, 0 at the reference point); ``reading`` says what one reading is.
+    ``sensitivity_from_first`` is used for a standard whose figure applies to
+    each face's deviation from face 1 (polygon), where the workbench has one.
+    """
+    out = []
+    for std in metadata.standards:
+        if std.uncertainty_arcsec is None:
+            continue
+        divisor, distribution = divisor_for_basis(std.basis)
+        name = std.description or "Reference standard"
+        cert = f", certificate {std.certificate_no}" if std.certificate_no else ""
+        per, c = reading, sensitivity
+        if std.applies_to == "from face 1" and sensitivity_from_first is not None:
+            per, c = "face, stated from face 1", sensitivity_from_first
+        out.append(BudgetComponent(
+            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf,
+            f"{BASIS_DIVISORS[std.basis][0]} per {per}{cert}"))
+    return out
+
+
+def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[BudgetComponent]:
+    """The item's indication resolution r: rectangular, half-width r/2, per reading."""
+    r = metadata.item_resolution_arcsec
+    if not r:
+        return []
+    return [BudgetComponent("Item resolution", "B", "rectangular", r / 2.0, math.sqrt(3.0),
+                            sensitivity, math.inf, f"resolution {r:g}\" of the item's indication")]
+
+
+def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
+                  points: str, unit: str = "\"") -> list[tuple[str, str, str]]:
+    """The statistics rows every certificate has: the decided quantity with its own U,
+    and the curve's largest U with its coverage factor."""
+    big_u = budget.max_expanded_arcsec
+    digits = uncertainty_decimals(big_u)
+    rows = []
+    if math.isfinite(conformity.value_arcsec):
+        rows.append(("Decided quantity", format_uncertain(conformity.value_arcsec,
+                                                           conformity.expanded_arcsec, unit),
+                     conformity.quantity))
+    rows.append((f"Expanded uncertainty U (p = {100 * budget.probability:.2f} %)",
+                 f"{big_u:.{digits}f}{unit}",
+                 f"largest over the {points}; k = {budget.coverage_factor:.2f} there"))
+    return rows
+
+
+def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) -> str:
+    """``value ± U`` with U rounded to two significant digits and the value to match."""
+    decimals = significant_decimals(expanded)
+    if decimals is None:
+        return f"{value:.{digits}f}{unit}"
+    return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"

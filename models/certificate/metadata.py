@@ -1,0 +1,294 @@
+"""What a test certificate says besides the numbers: lab, customer, item, reference
+standards, environment, people and dates (ISO/IEC 17025 clause 7.8).
+
+Entered in the metadata dialog, stored in the project file (per workbench),
+with lab-wide defaults kept in the settings. Text is stored as typed; control
+characters are removed and lengths are capped so no field can break the page.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import math
+import re
+from dataclasses import asdict, dataclass, fields, replace
+from typing import Any
+
+from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
+from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
+
+__all__ = [
+    "DECISION_QUANTITIES",
+    "DECISION_RULES",
+    "DOCUMENT_TYPES",
+    "LAB_DEFAULT_FIELDS",
+    "CertificateMetadata",
+    "MetadataError",
+    "ReferenceStandard",
+    "clean_text",
+    "format_certificate_number",
+]
+
+MAX_FIELD_CHARS = 200
+MAX_NOTES_CHARS = 2000
+
+# Fields that are the same for every certificate a lab issues: the dialog can save them
+# as the lab's defaults, and a new certificate starts from them.
+LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_scheme",
+                      "standards", "operator", "approver", "decision_rule", "decision_quantity",
+                      "coverage_probability_pct", "document_type")
+
+#: What the document is: a calibration certificate, or a test report.
+DOCUMENT_TYPES = {"calibration": "Calibration certificate", "test": "Test report"}
+
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+
+
+#: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
+APPLIES_TO = ("reading", "from face 1")
+
+
+class MetadataError(ValueError):
+    """A metadata field cannot be used; the message names the field."""
+
+
+def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
+    """A field's text without control characters or bidi overrides, capped in length."""
+    if value is None:
+        return ""
+    if not isinstance(value, str | int | float) or isinstance(value, bool):
+        raise MetadataError(f"certificate field '{field_name}' must be text")
+    try:
+        text = str(value)
+    except ValueError:  # an integer of thousands of digits
+        raise MetadataError(f"certificate field '{field_name}' must be text") from None
+    if multiline:
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+        text = "\n".join(_CONTROL.sub("", line.replace("\t", " ")) for line in text.split("\n"))
+        return text.strip()[:MAX_NOTES_CHARS]
+    return _CONTROL.sub("", text.replace("\t", " ").replace("\n", " ")).strip()[:MAX_FIELD_CHARS]
+
+
+def _optional_number(value: Any, field_name: str) -> float | None:
+    if value is None or (isinstance(value, str) and not value.strip()):
+        return None
+    if isinstance(value, bool) or not isinstance(value, str | int | float):
+        raise MetadataError(f"certificate field '{field_name}' must be a number")
+    try:
+        number = float(str(value).replace(",", ".")) if isinstance(value, str) else float(value)
+    except (TypeError, ValueError, OverflowError):
+        shown = value if isinstance(value, str) and len(value) < 40 else "the value"
+        raise MetadataError(f"certificate field '{field_name}': '{shown}' is not a number") \
+            from None
+    if not math.isfinite(number):
+        raise MetadataError(f"certificate field '{field_name}' must be a finite number")
+    return number
+
+
+def _date(value: Any, field_name: str) -> str:
+    text = clean_text(value, field_name)
+    if not text:
+        return ""
+    try:
+        return dt.date.fromisoformat(text).isoformat()
+    except ValueError:
+        raise MetadataError(f"certificate field '{field_name}': '{text}' is not a date "
+                            "(YYYY-MM-DD)") from None
+
+
+@dataclass(frozen=True)
+class ReferenceStandard:
+    """A reference standard used in the test, with its calibration certificate.
+
+    ``uncertainty_arcsec`` stated as ``basis`` (see BASIS_DIVISORS) enters the
+    budget as a Type B component for each reading made with it; leave it empty
+    for a standard whose uncertainty does not enter the result. ``applies_to``
+    says what the figure is the uncertainty of: each ``reading`` (the default),
+    or each face's deviation ``from face 1`` (a polygon certificate that states
+    its deviations from face 1, whose face 1 is then exact).
+    """
+
+    description: str = ""
+    serial: str = ""
+    certificate_no: str = ""
+    uncertainty_arcsec: float | None = None
+    basis: str = "U95"
+    applies_to: str = "reading"
+
+    @classmethod
+    def from_dict(cls, data: Any, index: int) -> ReferenceStandard:
+        name = f"standards[{index + 1}]"
+        if not isinstance(data, dict):
+            raise MetadataError(f"certificate field '{name}' must be an object")
+        basis = clean_text(data.get("basis", "U95"), f"{name}.basis") or "U95"
+        if basis not in BASIS_DIVISORS:
+            raise MetadataError(f"certificate field '{name}.basis' must be one of "
+                                f"{', '.join(BASIS_DIVISORS)}, not '{basis}'")
+        u = _optional_number(data.get("uncertainty_arcsec"), f"{name}.uncertainty_arcsec")
+        if u is not None and not 0 <= u <= 3600:
+            raise MetadataError(f"certificate field '{name}.uncertainty_arcsec' must be 0 to "
+                                "3600\" (an angle standard's uncertainty)")
+        applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
+        if applies_to not in APPLIES_TO:
+            raise MetadataError(f"certificate field '{name}.applies_to' must be one of "
+                                f"{', '.join(APPLIES_TO)}, not '{applies_to}'")
+        return cls(clean_text(data.get("description"), f"{name}.description"),
+                   clean_text(data.get("serial"), f"{name}.serial"),
+                   clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
+                   applies_to)
+
+
+@dataclass(frozen=True)
+class CertificateMetadata:
+    certificate_number: str = ""
+    number_scheme: str = "AB-{year}-{seq:04d}"
+    lab_name: str = ""
+    lab_address: str = ""
+    lab_accreditation: str = ""
+    customer_name: str = ""
+    customer_address: str = ""
+    item_description: str = ""
+    item_manufacturer: str = ""
+    item_serial: str = ""
+    item_grade: str = ""
+    tolerance_arcsec: float | None = None  # ± limit for the conformity statement
+    item_resolution_arcsec: float | None = None
+    standards: tuple[ReferenceStandard, ...] = ()
+    temperature_c: float | None = None
+    humidity_pct: float | None = None
+    calibration_date: str = ""
+    issue_date: str = ""
+    created: str = ""  # ISO date-time written into the PDF; empty: the time of export
+    operator: str = ""
+    approver: str = ""
+    decision_rule: str = "guarded"
+    decision_quantity: str = "half_range"
+    coverage_probability_pct: float = 100.0 * DEFAULT_COVERAGE_PROBABILITY
+    document_type: str = "calibration"
+    # fringe: the checksum of the correction table the lab states it loaded into the encoder
+    as_left_table_sha256: str = ""
+    notes: str = ""
+
+    _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
+                "coverage_probability_pct")
+    _DATES = ("calibration_date", "issue_date")
+
+    @classmethod
+    def from_dict(cls, data: Any) -> CertificateMetadata:
+        """Metadata from a project file or a JSON file; unknown keys are ignored."""
+        if data is None:
+            return cls()
+        if not isinstance(data, dict):
+            raise MetadataError("certificate metadata must be a JSON object")
+        values: dict[str, Any] = {}
+        for f in fields(cls):
+            if f.name.startswith("_") or f.name not in data:
+                continue
+            raw = data[f.name]
+            if f.name == "standards":
+                if not isinstance(raw, list):
+                    raise MetadataError("certificate field 'standards' must be a list")
+                values[f.name] = tuple(ReferenceStandard.from_dict(s, i) for i, s in enumerate(raw))
+            elif f.name in cls._NUMBERS:
+                values[f.name] = _optional_number(raw, f.name)
+            elif f.name in cls._DATES:
+                values[f.name] = _date(raw, f.name)
+            else:
+                values[f.name] = clean_text(raw, f.name, multiline=f.name == "notes")
+        meta = cls(**values)
+        if meta.decision_rule not in DECISION_RULES:
+            raise MetadataError(f"certificate field 'decision_rule' must be one of "
+                                f"{', '.join(DECISION_RULES)}, not '{meta.decision_rule}'")
+        if meta.tolerance_arcsec is not None and meta.tolerance_arcsec <= 0:
+            raise MetadataError("certificate field 'tolerance_arcsec' must be positive")
+        if meta.humidity_pct is not None and not 0 <= meta.humidity_pct <= 100:
+            raise MetadataError("certificate field 'humidity_pct' must be 0 to 100 %")
+        if meta.item_resolution_arcsec is not None and not 0 <= meta.item_resolution_arcsec <= 3600:
+            raise MetadataError("certificate field 'item_resolution_arcsec' must be 0 to 3600\"")
+        if meta.coverage_probability_pct is None:
+            meta = replace(meta, coverage_probability_pct=100.0 * DEFAULT_COVERAGE_PROBABILITY)
+        if not 50.0 <= meta.coverage_probability_pct <= 99.9:
+            raise MetadataError("certificate field 'coverage_probability_pct' must be 50 to 99.9 %")
+        if meta.decision_quantity not in DECISION_QUANTITIES:
+            raise MetadataError(f"certificate field 'decision_quantity' must be one of "
+                                f"{', '.join(DECISION_QUANTITIES)}, not '{meta.decision_quantity}'")
+        if meta.document_type not in DOCUMENT_TYPES:
+            raise MetadataError(f"certificate field 'document_type' must be one of "
+                                f"{', '.join(DOCUMENT_TYPES)}, not '{meta.document_type}'")
+        return meta
+
+    @property
+    def coverage_probability(self) -> float:
+        return self.coverage_probability_pct / 100.0
+
+    @classmethod
+    def from_dict_lenient(cls, data: Any) -> tuple[CertificateMetadata, dict[str, str]]:
+        """Every field that reads, and a message for each that does not (by key): a stored
+        detail gone bad must not blank all the others."""
+        if not isinstance(data, dict):
+            try:
+                return cls.from_dict(data), {}
+            except MetadataError as exc:
+                return cls(), {"": str(exc)}
+        good: dict[str, Any] = {}
+        problems: dict[str, str] = {}
+        for key, value in data.items():
+            try:
+                cls.from_dict({key: value})
+            except MetadataError as exc:
+                problems[str(key)] = str(exc)
+            else:
+                good[key] = value
+        try:
+            return cls.from_dict(good), problems
+        except MetadataError as exc:  # a check across fields
+            return cls(), {**problems, "": str(exc)}
+
+    def to_dict(self) -> dict[str, Any]:
+        out = asdict(self)
+        out["standards"] = [asdict(s) for s in self.standards]
+        return out
+
+    def lab_defaults(self) -> dict[str, Any]:
+        data = self.to_dict()
+        return {k: data[k] for k in LAB_DEFAULT_FIELDS}
+
+    def with_lab_defaults(self, defaults: dict[str, Any]) -> CertificateMetadata:
+        """This metadata with the lab's defaults filled into the fields left empty."""
+        lab = CertificateMetadata.from_dict({k: v for k, v in (defaults or {}).items()
+                                             if k in LAB_DEFAULT_FIELDS})
+        updates = {k: getattr(lab, k) for k in LAB_DEFAULT_FIELDS
+                   if not getattr(self, k) and getattr(lab, k)}
+        return replace(self, **updates)
+
+    def missing_fields(self) -> list[str]:
+        """What a signed certificate must state and this one does not (it is then a draft)."""
+        required = {
+            "certificate number": self.certificate_number, "laboratory": self.lab_name,
+            "customer": self.customer_name, "item under test": self.item_description,
+            "item serial number": self.item_serial, "date of calibration": self.calibration_date,
+            "operator": self.operator,
+        }
+        missing = [name for name, value in required.items() if not value]
+        if not self.standards:
+            missing.append("reference standards")
+        return missing
+
+
+_SCHEME_FIELD = re.compile(r"\{(year|month|day|seq)(?::0?(\d)d)?\}")
+
+
+def format_certificate_number(scheme: str, sequence: int, date: dt.date) -> str:
+    """Certificate number from a scheme such as ``AB-{year}-{seq:04d}``.
+
+    Known fields: {year}, {month}, {day}, {seq} with an optional zero-padded
+    width (``{seq:04d}``). Other braces are kept as typed.
+    """
+    values = {"year": date.year, "month": date.month, "day": date.day, "seq": int(sequence)}
+
+    def sub(match: re.Match) -> str:
+        width = int(match.group(2) or (2 if match.group(1) in ("month", "day") else 0))
+        return f"{values[match.group(1)]:0{width}d}" if width else str(values[match.group(1)])
+
+    return clean_text(_SCHEME_FIELD.sub(sub, scheme or ""), "certificate_number")
+

@@ -1,0 +1,406 @@
+"""Fringe signal analysis as a workbench: columns, settings, result, JSON and summary."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.fringe.model import (
+    TWO_PI,
+    ChannelFit,
+    CorrectionTable,
+    build_correction_table,
+    fit_channel_pso,
+    fit_channels,
+    fit_periods,
+    fit_periods_along,
+    interpolation_error_rad,
+    model_signal,
+    model_slope,
+    period_arcsec,
+)
+from models.fringe.phase import EllipseFit, fit_ellipse
+from models.fringe.report import fringe_certificate
+from models.readings.sheet import Column, ColumnKind, ParsedReadings
+
+__all__ = ["FRINGE", "FringeResult"]
+
+COLUMNS = (
+    Column("u_sin", "u sin", "V", ColumnKind.NUMBER, help="Sine channel voltage"),
+    Column("u_cos", "u cos", "V", ColumnKind.NUMBER, help="Cosine channel voltage"),
+    Column("theta_deg", "θ phase", "deg", ColumnKind.ANGLE_DEG, required=False,
+           help="Electrical (fringe) phase of the sample from a reference, optional: without "
+                "it the phase is estimated from the signals, or taken as N equal steps a period "
+                "when N is given"),
+)
+
+DEFAULT_SETTINGS: dict[str, Any] = {
+    "lines_per_rev": 16384,  # an encoder: errors in arcsec of shaft angle, 1296000"/L a period
+    "period_nm": 0.0,  # > 0: an interferometer, errors in nm, this many nm a period
+    "samples_per_period": 0,  # 0: phase from the θ column, else estimated from the signals
+    "max_order": 5,
+    "harmonics": "odd",  # or "all"
+    "method": "lsq",  # or "pso" (the seed's particle swarm, one period at most)
+    "lut_size": 1024,
+    "table_zero": "mean",  # the correction table's zero: its mean, or its value at phase 0
+}
+
+PHASE_SOURCES = ("samples_per_period", "theta_column", "estimated")
+#: Channel voltages beyond this are not a read head's signals.
+SIGNAL_LIMIT_V = 1000.0
+#: A fit of the channels against the phase below this R² means the phase is wrong.
+MIN_R_SQUARED = 0.9
+OBSERVABILITY = (
+    "Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio "
+    "and the quadrature error are identified from the Lissajous ellipse (Heydemann); the "
+    "harmonics are fitted against the estimated phase, so only the part of their distortion that "
+    "bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure "
+    "round and is not observable without a phase reference."
+)
+
+
+@dataclass
+class FringeResult:
+    theta_rad: np.ndarray  # the phase each sample was analysed at
+    u_sin: np.ndarray
+    u_cos: np.ndarray
+    sin_fit: ChannelFit
+    cos_fit: ChannelFit
+    raw_error: np.ndarray  # as found, in ``unit``
+    compensated_error: np.ndarray
+    table: CorrectionTable
+    lines_per_rev: int
+    samples_per_period: int  # 0 when the phase came from θ or was estimated
+    method: str
+    sin_periods: np.ndarray
+    cos_periods: np.ndarray
+    phase_source: str = "samples_per_period"
+    unit: str = "arcsec"  # or "nm"
+    period_length: float = 79.1015625  # one period in ``unit``
+    ellipse: EllipseFit | None = None
+    table_zero: str = "mean"
+    reversals: int = 0
+    pso_seconds: float | None = None
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def unit_symbol(self) -> str:
+        return "\"" if self.unit == "arcsec" else " nm"
+
+    @property
+    def raw_peak_to_peak(self) -> float:
+        return float(np.ptp(self.raw_error))
+
+    @property
+    def compensated_peak_to_peak(self) -> float:
+        return float(np.ptp(self.compensated_error))
+
+    @property
+    def quadrature_error_deg(self) -> float:
+        """(phase of the cos channel's fundamental − the sin channel's) − 90°."""
+        d = self.cos_fit.phase[1] - self.sin_fit.phase[1]
+        return math.degrees((d - math.pi / 2 + math.pi) % (2 * math.pi) - math.pi)
+
+    @property
+    def amplitude_ratio(self) -> float:
+        """The cos channel's fundamental over the sin channel's."""
+        return self.cos_fit.amplitude[1] / self.sin_fit.amplitude[1]
+
+
+def _number(s: Mapping[str, Any], key: str, low: float, high: float, integer: bool = False,
+            zero_allowed: bool = False) -> float:
+    value = s[key]
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SettingsError(f"{key} must be a number, not {value!r}")
+    if zero_allowed and value == 0:
+        return 0
+    if integer and value != int(value):
+        raise SettingsError(f"{key} must be a whole number, not {value}")
+    if not low <= value <= high:
+        raise SettingsError(f"{key} must be {'0 or ' if zero_allowed else ''}{low:g} to {high:g}, "
+                            f"not {value:g}")
+    return int(value) if integer else float(value)
+
+
+def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
+    s = FRINGE.settings_with_defaults(settings)
+    out = dict(s)
+    out["lines_per_rev"] = _number(s, "lines_per_rev", 1, 1e9, integer=True)
+    out["period_nm"] = _number(s, "period_nm", 1e-3, 1e6, zero_allowed=True)
+    out["samples_per_period"] = _number(s, "samples_per_period", 2, 1e6, integer=True,
+                                        zero_allowed=True)
+    out["max_order"] = _number(s, "max_order", 1, 31, integer=True)
+    out["lut_size"] = _number(s, "lut_size", 8, 65536, integer=True)
+    for key, choices in (("harmonics", ("odd", "all")), ("method", ("lsq", "pso")),
+                         ("table_zero", ("mean", "phase0"))):
+        if s[key] not in choices:
+            raise SettingsError(f"{key} must be one of {', '.join(choices)}, not {s[key]!r}")
+    return out
+
+
+def _row(parsed: ParsedReadings, i: int) -> int:
+    return int(parsed.row_index[i]) + 1
+
+
+def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> None:
+    """Refuse what is not a fringe signal, with the reason, before any fit."""
+    for key, u in (("u_sin", u_sin), ("u_cos", u_cos)):
+        bad = np.nonzero(~np.isfinite(u) | (np.abs(u) > SIGNAL_LIMIT_V))[0]
+        if bad.size:
+            i = int(bad[0])
+            raise ValueError(f"row {_row(parsed, i)}, column '{key}': {u[i]:g} V is not a read "
+                             f"head's signal (beyond ±{SIGNAL_LIMIT_V:g} V)")
+    for key, u in (("u_sin", u_sin), ("u_cos", u_cos)):
+        if not np.std(u) > 1e-9 * max(1.0, float(np.max(np.abs(u)))):
+            raise ValueError(f"channel {key} is constant ({u[0]:g} V): not a fringe signal")
+    corr = float(np.corrcoef(u_sin, u_cos)[0, 1])
+    if abs(corr) > 0.98:
+        raise ValueError(f"the two channels are the same signal (correlation {corr:+.3f}): they "
+                         "must be in quadrature (sine and cosine)")
+
+
+def _ellipse(u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
+    try:
+        ellipse = fit_ellipse(u_sin, u_cos)
+    except ValueError as exc:
+        raise ValueError(f"not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)") \
+            from None
+    if abs(math.degrees(ellipse.quadrature_rad)) > 30.0:
+        raise ValueError(f"the channels are not in quadrature: their phases differ by "
+                         f"{90 + math.degrees(ellipse.quadrature_rad):.1f}°, not about 90°")
+    radius = ellipse.radius(u_sin, u_cos)
+    scatter = float(np.std(radius) / np.mean(radius))
+    if scatter > 0.25:
+        raise ValueError(f"not a fringe signal: the Lissajous figure is not a ring (its radius "
+                         f"scatters by {100 * scatter:.0f} %); noise, or two unrelated channels")
+    return ellipse
+
+
+def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
+                  ) -> tuple[str, np.ndarray | None]:
+    """The mode and, for a fixed sampling or a θ column, each sample's phase (rad)."""
+    theta_col = parsed["theta_deg"]
+    has_theta = bool(np.any(np.isfinite(theta_col)))
+    if per_period:
+        if has_theta:
+            warnings.append("The θ column was not used: samples per period N was given.")
+        # a sample keeps its place: a blank or unreadable row is a gap at its phase
+        place = parsed.row_index - parsed.row_index[0]
+        return "samples_per_period", place * (TWO_PI / per_period)
+    if has_theta:
+        blank = np.nonzero(~np.isfinite(theta_col))[0]
+        if blank.size:
+            raise ValueError(f"row {_row(parsed, int(blank[0]))}, column 'theta_deg': blank while "
+                             "other rows have a phase; fill it, or clear the column to estimate "
+                             "the phase from the signals")
+        if np.ptp(theta_col) == 0:
+            raise ValueError(f"every θ is {theta_col[0]:g}°: the phase did not change")
+        return "theta_column", np.radians(theta_col)
+    return "estimated", None
+
+
+def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
+    """How often the motion turned back: a turn counts once the phase has gone
+    ``hysteresis_rad`` the other way, so noise while standing still does not."""
+    theta = np.asarray(theta_rad, dtype=float)
+    if theta.size < 2:
+        return 0
+    turns, direction = 0, 0
+    start = extreme = float(theta[0])
+    for value in theta[1:: max(1, theta.size // 200_000)].tolist():
+        if direction == 0:
+            if abs(value - start) > hysteresis_rad:
+                direction, extreme = (1 if value > start else -1), value
+        elif direction * (value - extreme) > 0:
+            extreme = value
+        elif direction * (extreme - value) > hysteresis_rad:
+            turns += 1
+            direction, extreme = -direction, value
+    return turns
+
+
+def _refine_phase(u_sin, u_cos, theta, orders, iterations: int = 3):
+    """Harmonics fitted against the estimated phase, then each sample's phase moved to the
+    nearest point of the fitted curve (one Gauss–Newton step), repeated."""
+    for _ in range(iterations):
+        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
+        rs = model_signal(theta, sin_fit) - u_sin
+        rc = model_signal(theta, cos_fit) - u_cos
+        ds, dc = model_slope(theta, sin_fit), model_slope(theta, cos_fit)
+        theta = theta - (rs * ds + rc * dc) / np.maximum(ds * ds + dc * dc, 1e-30)
+    return theta, fit_channels(theta, [u_sin, u_cos], orders)
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult:
+    s = _settings(settings)
+    lines, per_period = int(s["lines_per_rev"]), int(s["samples_per_period"])
+    orders = harmonic_orders(int(s["max_order"]), str(s["harmonics"]))
+    u_sin, u_cos = parsed["u_sin"], parsed["u_cos"]
+    if u_sin.size < 4 * (1 + 2 * len(orders)):
+        raise ValueError(f"{u_sin.size} samples; at least {4 * (1 + 2 * len(orders))} are needed")
+    warnings: list[str] = []
+    _check_signals(parsed, u_sin, u_cos)
+    ellipse = _ellipse(u_sin, u_cos)
+    source, theta = _phase_source(parsed, per_period, warnings)
+    if source == "estimated":
+        phase = ellipse.phase(u_sin, u_cos)
+        bins = np.unique(np.floor((phase + math.pi) / TWO_PI * 36).astype(int))
+        if bins.size < 27:
+            raise ValueError(f"the signals cover {100 * bins.size / 36:.0f} % of a period: the "
+                             "phase cannot be estimated from less than three quarters of one")
+        theta = np.unwrap(phase)
+        warnings.append(OBSERVABILITY)
+    pso_seconds = None
+    if s["method"] == "pso":
+        if orders != (1, 3, 5):
+            raise SettingsError("the particle swarm (the seed's method) fits orders 1, 3, 5 only")
+        span = slice(0, min(u_sin.size, per_period or 64))
+        ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
+        sin_fit, cos_fit = ps.fit, pc.fit
+        pso_seconds = ps.seconds + pc.seconds
+        lsq_cost = sum(f.cost for f in fit_channels(theta[span], [u_sin[span], u_cos[span]]))
+        warnings.append(f"Particle swarm on the first period: cost {ps.cost + pc.cost:.3g} V² "
+                        f"against {lsq_cost:.3g} V² for least squares, {pso_seconds:.2f} s.")
+    elif source == "estimated":
+        theta, (sin_fit, cos_fit) = _refine_phase(u_sin, u_cos, theta, orders)
+    else:
+        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
+    if source != "estimated" and s["method"] == "lsq":
+        worst = min(sin_fit.r_squared, cos_fit.r_squared)
+        if not worst >= MIN_R_SQUARED:
+            given = (f"N = {per_period} samples per period" if source == "samples_per_period"
+                     else "the θ column")
+            raise ValueError(f"the signals do not follow {given} (R² {sin_fit.r_squared:.4f} sin, "
+                             f"{cos_fit.r_squared:.4f} cos): leave the samples per period and the "
+                             "θ column out to estimate the phase from the signals")
+    if source != "estimated":
+        lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
+        if abs(lead - 90.0) > 30.0:
+            raise ValueError(f"against this phase the cos channel leads the sin channel by "
+                             f"{lead:.0f}°, not about 90°: the channels are in the wrong order or "
+                             "one is inverted (check the columns, or the sense of θ)")
+    if s["period_nm"]:
+        unit, period = "nm", float(s["period_nm"])
+    else:
+        unit, period = "arcsec", period_arcsec(lines)
+    table = build_correction_table(sin_fit, cos_fit, int(s["lut_size"]), zero=str(s["table_zero"]))
+    measured = np.arctan2(u_sin, u_cos)
+    to_unit = period / TWO_PI
+    raw = interpolation_error_rad(measured, theta) * to_unit
+    comp = interpolation_error_rad(table.compensate(measured), theta) * to_unit
+    reversals = count_reversals(theta)
+    if source == "samples_per_period":
+        sin_periods = fit_periods(u_sin, per_period, orders)
+        cos_periods = fit_periods(u_cos, per_period, orders)
+    else:
+        sin_periods = fit_periods_along(theta, u_sin, orders)
+        cos_periods = fit_periods_along(theta, u_cos, orders)
+    return FringeResult(
+        theta_rad=theta, u_sin=u_sin, u_cos=u_cos, sin_fit=sin_fit, cos_fit=cos_fit,
+        raw_error=raw, compensated_error=comp, table=table, lines_per_rev=lines,
+        samples_per_period=per_period, method=str(s["method"]), sin_periods=sin_periods,
+        cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
+        ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
+        pso_seconds=pso_seconds, warnings=warnings,
+    )
+
+
+def harmonic_orders(max_order: int, harmonics: str) -> tuple[int, ...]:
+    if max_order < 1:
+        raise SettingsError("max_order must be at least 1")
+    step = 2 if harmonics == "odd" else 1
+    return tuple(range(1, max_order + 1, step))
+
+
+def to_json(result: FringeResult) -> dict[str, Any]:
+    u = result.unit
+    out: dict[str, Any] = {
+        "phase_source": result.phase_source,
+        "sin_params": result.sin_fit.as_dict(),
+        "cos_params": result.cos_fit.as_dict(),
+        "r_squared": {"sin": result.sin_fit.r_squared, "cos": result.cos_fit.r_squared},
+        "offsets_v": [result.sin_fit.offset, result.cos_fit.offset],
+        "amplitude_ratio": result.amplitude_ratio,
+        "quadrature_error_deg": result.quadrature_error_deg,
+        "error_unit": u,
+        f"raw_error_{u}": result.raw_error.tolist(),
+        f"compensated_error_{u}": result.compensated_error.tolist(),
+        f"raw_peak_to_peak_{u}": result.raw_peak_to_peak,
+        f"compensated_peak_to_peak_{u}": result.compensated_peak_to_peak,
+        f"period_{u}": result.period_length,
+        "samples": int(result.raw_error.size),
+        "reversals": result.reversals,
+        "correction_table": {"size": result.table.size, "zero": result.table_zero,
+                             "sha256": result.table.sha256},
+        "method": result.method,
+        "sign_convention": SIGN_CONVENTION,
+        "warnings": result.warnings,
+    }
+    if result.ellipse is not None:
+        e = result.ellipse
+        out["heydemann"] = {"offsets_v": [e.offset_sin, e.offset_cos],
+                            "amplitudes_v": [e.amplitude_sin, e.amplitude_cos],
+                            "amplitude_ratio": e.amplitude_ratio,
+                            "quadrature_error_deg": math.degrees(e.quadrature_rad)}
+    return out
+
+
+def _fit_line(name: str, fit: ChannelFit) -> str:
+    parts = [f"{name}0 = {fit.offset:+.4f} V"]
+    for k in fit.orders:
+        ua = fit.u_amplitude.get(k)
+        unc = f" ± {ua:.4f}" if ua is not None and math.isfinite(ua) else ""
+        parts.append(f"{name}{k} = {fit.amplitude[k]:.4f}{unc} V ∠ {fit.phase[k]:+.4f} rad")
+    return "  " + ", ".join(parts)
+
+
+_SOURCE_TEXT = {"samples_per_period": "phase from equal steps, {n} samples per period",
+                "theta_column": "phase from the θ column",
+                "estimated": "phase estimated from the signals"}
+
+
+def summary(result: FringeResult) -> str:
+    period, sym = result.period_length, result.unit_symbol
+    raw, comp = result.raw_error, result.compensated_error
+    scale = (f"L = {result.lines_per_rev} (period {period:.2f}{sym})" if result.unit == "arcsec"
+             else f"period {period:g} nm")
+    source = _SOURCE_TEXT[result.phase_source].format(n=result.samples_per_period)
+    lines = [
+        f"{raw.size} samples, {source}, {scale}, fitted by "
+        f"{'least squares' if result.method == 'lsq' else 'PSO'}"
+        + (f"; the motion reversed {result.reversals} time(s)" if result.reversals else ""),
+        _fit_line("A", result.sin_fit) + f"; R² = {result.sin_fit.r_squared:.8f}",
+        _fit_line("B", result.cos_fit) + f"; R² = {result.cos_fit.r_squared:.8f}",
+        f"Offsets {1e3 * result.sin_fit.offset:+.2f} / {1e3 * result.cos_fit.offset:+.2f} mV, "
+        f"amplitude ratio {result.amplitude_ratio:.4f}, quadrature error "
+        f"{result.quadrature_error_deg:+.3f}°",
+        f"Interpolation error as found: {raw.min():+.3f}{sym} … {raw.max():+.3f}{sym} "
+        f"(peak-to-peak {np.ptp(raw):.3f}{sym}, {np.ptp(raw) / period * 100:.2f} % of a period)",
+        f"After compensation ({result.table.size}-entry table, zero at its "
+        f"{'mean' if result.table_zero == 'mean' else 'phase 0'}): {comp.min():+.3f}{sym} … "
+        f"{comp.max():+.3f}{sym} (peak-to-peak {np.ptp(comp):.3f}{sym}, "
+        f"{np.ptp(comp) / period * 100:.2f} %)",
+    ]
+    return "\n".join(lines)
+
+
+FRINGE = AnalysisKind(
+    key="fringe",
+    title="Fringe signal analysis",
+    columns=COLUMNS,
+    default_settings=DEFAULT_SETTINGS,
+    analyze=analyze,
+    to_json=to_json,
+    summary=summary,
+    sample_file="fringe_sample.csv",
+    method_reference="Gao X. et al., Automatic compensation of sine deviation for grating fringe "
+                     "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
+    certificate=fringe_certificate,
+    check_settings=_settings,
+    presenter="widgets.fringe.presenter:FringePresenter",
+)

@@ -1,0 +1,411 @@
+"""Polygon encoder test as a workbench: readings columns, sets and closure rows,
+statistics, verdicts, JSON and summary."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.polygon.model import (
+    GRADE_ACCURACY_ARCSEC,
+    SHORT_FORM_COEFFICIENT,
+    PolygonResult,
+    PolygonSetReadings,
+    allowed_tilt_arcsec,
+    counting_residuals_deg,
+    direction_means,
+    evaluate_sets,
+    harmonic_analysis,
+    pooled_repeatability,
+    tilt_advice,
+    wrap_deg,
+)
+from models.polygon.report import polygon_certificate
+from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.error_stats import error_stats
+from models.uncertainty.iso230 import iso230_evaluate
+
+__all__ = ["POLYGON", "closure_limit_arcsec"]
+
+COLUMNS = (
+    Column("position", "pos", "", ColumnKind.INTEGER,
+           help="Polygon face 1…n, in the order measured (any start face, either way round); "
+                "the row that repeats the set's first face at its end is the closure reading"),
+    Column("encoder_deg", "encoder a", "deg", ColumnKind.ANGLE_DEG,
+           help="Encoder reading (decimal or D°M'S\")"),
+    Column("polygon_dev_arcsec", "polygon dev", "\"", ColumnKind.NUMBER,
+           help="Face deviation from nominal, from the polygon's calibration certificate"),
+    Column("ac_x_arcsec", "AC x", "\"", ColumnKind.NUMBER,
+           help="Autocollimator horizontal reading"),
+    Column("ac_y_arcsec", "AC y", "\"", ColumnKind.NUMBER, required=False,
+           help="Autocollimator vertical reading (gives the pyramidal tilt)"),
+    Column("set", "set", "", ColumnKind.INTEGER, required=False,
+           help="Set (round) number when the test was repeated (optional)"),
+    Column("direction", "dir", "+/−", ColumnKind.TEXT, required=False, choices=("+", "-"),
+           help="Turning direction of the set: + forward (encoder counting up), − reverse; "
+                "when blank, taken from the encoder's steps"),
+)
+
+DEFAULT_SETTINGS: dict[str, Any] = {
+    "faces": 0,  # 0: from the readings
+    "grade": 3,
+    # closure limit (") for grades 1–7; default half the grade's accuracy (see README)
+    "closure_limits_arcsec": "0.125, 0.25, 0.5, 1, 2.5, 5, 15",
+    "counting": "auto",  # the encoder counts "with" or "against" the face numbering
+    "zero_face": 0,  # the common zero: 0 = the first reading of the first set, else a face
+    "closure_drift": "report",  # "report" it (and its uncertainty) or "spread" it linearly
+    "ac_roll_arcmin": 1.0,  # the autocollimator reticle's roll, a stated limit (budget)
+}
+
+COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
+DRIFT_CHOICES = ("report", "spread")
+#: Autocollimator readings and face deviations beyond this are not readings of a polygon test.
+READING_LIMIT_ARCSEC = 3600.0
+
+
+def closure_limit_arcsec(grade: int, table: str = "") -> float:
+    """Closure limit for a grade from the comma-separated table of grades 1–7; a missing
+    entry falls back to half the grade's accuracy (our default, see README). Every entry
+    is checked, not only the grade's."""
+    if not isinstance(table, str):
+        raise SettingsError(f"closure limit table must be text like '0.125, 0.25, …', not "
+                            f"{type(table).__name__}")
+    parts = [p.strip() for p in table.replace(";", ",").split(",") if p.strip()]
+    if len(parts) > 7:
+        raise SettingsError(f"closure limit table: {len(parts)} entries for 7 grades")
+    values = []
+    for g, part in enumerate(parts, 1):
+        try:
+            value = float(part)
+        except ValueError:
+            raise SettingsError(f"closure limit table: '{part}' (grade {g}) is not a number") \
+                from None
+        if not value > 0 or not math.isfinite(value):
+            raise SettingsError(f"closure limit for grade {g} must be a positive number")
+        values.append(value)
+    if grade - 1 < len(values):
+        return values[grade - 1]
+    return GRADE_ACCURACY_ARCSEC[grade] / 2.0
+
+
+def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None]]:
+    """(set id, row indices in approach order, closure row index or None) per set.
+
+    A set's closure is its last row when that row repeats the set's first face.
+    """
+    set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
+    out = []
+    for set_id in dict.fromkeys(set_ids.tolist()):
+        rows = np.nonzero(set_ids == set_id)[0]
+        positions = parsed["position"][rows]
+        closure = None
+        if rows.size > 1 and positions[-1] == positions[0]:
+            closure = int(rows[-1])
+            rows = rows[:-1]
+        out.append((set_id, rows, closure))
+    return out
+
+
+def _row(parsed: ParsedReadings, index: int) -> int:
+    """The 1-based sheet row of parsed reading ``index``."""
+    return int(parsed.row_index[index]) + 1
+
+
+def _check_values(parsed: ParsedReadings) -> None:
+    for key in ("polygon_dev_arcsec", "ac_x_arcsec", "ac_y_arcsec"):
+        values = parsed[key]
+        bad = np.nonzero(np.isfinite(values) & (np.abs(values) > READING_LIMIT_ARCSEC))[0]
+        if bad.size:
+            i = int(bad[0])
+            raise ValueError(f"row {_row(parsed, i)}, column '{key}': {values[i]:g}\" is beyond "
+                             f"±{READING_LIMIT_ARCSEC:g}\" and cannot be a reading of a polygon test")
+
+
+def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, tolerance: float,
+                    setting: int) -> tuple[int, bool]:
+    """The encoder's counting sense (+1 with the face numbering, −1 against) and whether it
+    was detected; refuses readings that fit neither."""
+    a = parsed["encoder_deg"][rows]
+    nominal = (parsed["position"][rows] - 1) * step
+    if np.ptp(a) == 0:
+        raise ValueError(f"rows {_row(parsed, int(rows[0]))}–{_row(parsed, int(rows[-1]))}: all "
+                         f"encoder readings are {a[0]:g}°: the encoder did not turn")
+    senses = [setting] if setting else [1, -1]
+    misfits = {c: np.nonzero(np.abs(counting_residuals_deg(a, nominal, c)) > tolerance)[0]
+               for c in senses}
+    for c in senses:
+        if misfits[c].size == 0:
+            return c, not setting
+    c = min(senses, key=lambda sense: misfits[sense].size)
+    i = int(rows[misfits[c][0]])
+    off = float(counting_residuals_deg(a, nominal, c)[misfits[c][0]])
+    sense = "with" if c > 0 else "against"
+    raise ValueError(
+        f"row {_row(parsed, i)}: encoder reading {parsed['encoder_deg'][i]:.4f}° is {off:+.3f}° "
+        f"from face {int(parsed['position'][i])} (counting {sense} the face numbering, relative to "
+        f"the set's first reading); a polygon test needs every reading within {tolerance:g}° of "
+        "its face")
+
+
+def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
+               warnings: list[str]) -> int:
+    """A set's direction: from the direction column, else from the encoder's steps."""
+    stated = [d for d in parsed["direction"][rows] if d]
+    if stated:
+        return -1 if stated[0] == "-" else 1
+    steps = wrap_deg(np.diff(parsed["encoder_deg"][rows]))
+    if steps.size and np.all(steps > 0):
+        return 1
+    if steps.size and np.all(steps < 0):
+        return -1
+    warnings.append(f"{label.capitalize()}: direction not stated and the encoder steps go both "
+                    "ways: taken as forward.")
+    return 1
+
+
+def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int,
+               warnings: list[str]) -> tuple[list[PolygonSetReadings], int, int, set[int]]:
+    """The sets as read, validated; (sets, faces, counting sense, closure sheet rows)."""
+    _check_values(parsed)
+    split = split_sets(parsed)
+    faces = faces_setting or int(split[0][1].size)
+    if faces < 3:
+        raise ValueError(f"{faces} positions; a polygon test needs at least 3 faces")
+    step = 360.0 / faces
+    tolerance = min(3.0, step / 4.0)
+    expected = np.arange(1, faces + 1)
+    for set_id, rows, _ in split:
+        positions = parsed["position"][rows].astype(int)
+        if positions.size != faces or not np.array_equal(np.sort(positions), expected):
+            raise ValueError(
+                f"set {set_id} (from row {_row(parsed, int(rows[0]))}) has positions "
+                f"{positions.tolist()}; expected 1…{faces} once each, in any order, then the "
+                "first position again for the closure")
+    first_rows = split[0][1]
+    counting, detected = _counting_sense(parsed, first_rows, step, tolerance, counting_setting)
+    if counting < 0:
+        warnings.append("The encoder counts against the face numbering"
+                        + (" (detected from the readings)" if detected else "") +
+                        ": face angles and deviations are taken in the encoder's counting sense.")
+    a_first = parsed["encoder_deg"][first_rows[0]]
+    p_first = parsed["position"][first_rows[0]]
+    sets = []
+    for k, (_, rows, closure) in enumerate(split):
+        label = f"set {k + 1}"
+        _counting_sense(parsed, rows, step, tolerance, counting)
+        off = float(wrap_deg(parsed["encoder_deg"][rows[0]] - a_first
+                             - counting * (parsed["position"][rows[0]] - p_first) * step))
+        if abs(off) > tolerance:
+            raise ValueError(f"row {_row(parsed, int(rows[0]))}: {label} starts {off:+.3f}° away from "
+                             "the first set's encoder zero; all sets must share one zero")
+        closure_a = closure_x = None
+        if closure is not None:
+            closure_a = float(parsed["encoder_deg"][closure])
+            closure_x = float(parsed["ac_x_arcsec"][closure])
+            back = float(wrap_deg(closure_a - parsed["encoder_deg"][rows[0]]))
+            if abs(back) > tolerance:
+                raise ValueError(f"row {_row(parsed, closure)}: the closure reading is {back:+.3f}° "
+                                 f"from the set's first reading on face "
+                                 f"{int(parsed['position'][rows[0]])}")
+        sets.append(PolygonSetReadings(
+            parsed["position"][rows].astype(int), parsed["encoder_deg"][rows],
+            parsed["polygon_dev_arcsec"][rows], parsed["ac_x_arcsec"][rows],
+            parsed["ac_y_arcsec"][rows], _direction(parsed, rows, label, warnings),
+            closure_a, closure_x, label))
+    closure_rows = {int(parsed.row_index[c]) for _, _, c in split if c is not None}
+    return sets, faces, counting, closure_rows
+
+
+def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
+    s = POLYGON.settings_with_defaults(settings)
+    grade = s["grade"]
+    if isinstance(grade, bool) or not isinstance(grade, (int, float)) or grade not in GRADE_ACCURACY_ARCSEC:
+        raise SettingsError(f"grade must be 1 to 7, not {grade}")
+    s["grade"] = int(grade)
+    if str(s["counting"]) not in COUNTING_CHOICES:
+        raise SettingsError(f"counting must be one of {', '.join(COUNTING_CHOICES)}, not "
+                            f"'{s['counting']}'")
+    if str(s["closure_drift"]) not in DRIFT_CHOICES:
+        raise SettingsError(f"closure_drift must be one of {', '.join(DRIFT_CHOICES)}, not "
+                            f"'{s['closure_drift']}'")
+    for key, low, high in (("faces", 0, 360), ("zero_face", 0, 360)):
+        value = s[key]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or value != int(value) \
+                or not low <= value <= high:
+            raise SettingsError(f"{key} must be a whole number from {low} to {high}, not {value}")
+        s[key] = int(value)
+    roll = s["ac_roll_arcmin"]
+    if isinstance(roll, bool) or not isinstance(roll, (int, float)) or not 0 <= roll <= 60:
+        raise SettingsError(f"ac_roll_arcmin must be 0 to 60 (arcminutes), not {roll}")
+    return s
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
+    s = _settings(settings)
+    grade = s["grade"]
+    if parsed.n < 3:
+        raise ValueError(f"{parsed.n} usable readings; a polygon test needs at least 3 positions")
+    limit = closure_limit_arcsec(grade, s["closure_limits_arcsec"])
+    warnings: list[str] = []
+    sets, faces, counting, closure_rows = _read_sets(
+        parsed, s["faces"], COUNTING_CHOICES[str(s["counting"])], warnings)
+    if s["zero_face"] > faces:
+        raise SettingsError(f"zero_face must be 0 (the first reading) or a face 1…{faces}, "
+                            f"not {s['zero_face']}")
+    spread = s["closure_drift"] == "spread"
+    results = evaluate_sets(sets, faces, counting, s["zero_face"], limit, spread)
+    zero_face = s["zero_face"] or int(sets[0].positions[0])
+    theta = np.arange(faces) * 360.0 / faces
+    directions = np.array([r.direction for r in results])
+    errors = np.array([r.error_arcsec for r in results])
+    corrected = np.array([r.corrected_error_arcsec for r in results])
+    mean_error, _ = direction_means(errors, directions)
+    mean_corrected, reversal = direction_means(corrected, directions)
+    repeat = pooled_repeatability(corrected, directions)
+    stats = error_stats(mean_corrected)
+    tol = GRADE_ACCURACY_ARCSEC[grade]
+    allowed = allowed_tilt_arcsec(grade)
+    allowed_seed = allowed_tilt_arcsec(grade, SHORT_FORM_COEFFICIENT)
+    for r in results:
+        warnings.extend(r.warnings)
+    valid = all(r.closure_ok is not False for r in results)
+    tilt = results[0].tilt
+    if tilt is None:
+        verdict = "Tilt not identified (no vertical readings)."
+    elif tilt.psi_arcsec <= allowed:
+        verdict = (f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" is within the {allowed:.0f}\" "
+                   f"allowed for grade {grade} (worst case over the tilt direction; the seed's "
+                   f"ω = 90° figure is {allowed_seed:.0f}\"): the fixture is fine.")
+    else:
+        verdict = (f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" exceeds the {allowed:.0f}\" allowed "
+                   f"for grade {grade} (worst case over the tilt direction; the seed's ω = 90° "
+                   f"figure is {allowed_seed:.0f}\"): {tilt_advice(tilt, faces, counting)}; then "
+                   "re-zero and measure again.")
+        warnings.append(f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" exceeds the {allowed:.0f}\" "
+                        f"allowed for grade {grade} (worst case over the tilt direction); the error "
+                        "it induces was identified and removed.")
+    if spread:
+        warnings.append("Closure drift spread linearly over each set and removed from the "
+                        "autocollimator readings.")
+    return PolygonResult(
+        sets=results, faces=faces, grade=grade, theta_deg=theta,
+        mean_error_arcsec=mean_error, mean_corrected_arcsec=mean_corrected,
+        repeatability_arcsec=None if repeat is None else repeat[0], reversal_arcsec=reversal,
+        stats=stats, raw_stats=error_stats(mean_error), harmonics=harmonic_analysis(mean_corrected),
+        allowed_tilt_arcsec=allowed, allowed_tilt_seed_arcsec=allowed_seed,
+        accuracy_ok=stats.peak_to_peak / 2.0 <= tol, tilt_verdict=verdict, valid=valid,
+        counting=counting, zero_face=zero_face, spread_drift=spread,
+        ac_roll_arcmin=float(s["ac_roll_arcmin"]), closure_rows=closure_rows,
+        warnings=warnings,
+    )
+
+
+def iso230_figures(result: PolygonResult) -> dict[str, float]:
+    theta = np.concatenate([result.theta_deg for _ in result.sets])
+    dev = np.concatenate([r.corrected_error_arcsec for r in result.sets])
+    dirs = np.concatenate([np.full(result.faces, r.direction) for r in result.sets])
+    return iso230_evaluate(theta, dev, dirs).figures
+
+
+def to_json(result: PolygonResult) -> dict[str, Any]:
+    first = result.sets[0]
+    closures = [r.closure_arcsec for r in result.sets]
+    out: dict[str, Any] = {
+        "error_arcsec": np.concatenate([r.error_arcsec for r in result.sets]).tolist(),
+        "closure_arcsec": closures[0] if len(closures) == 1 else closures,
+        "closure_drift_arcsec": [r.closure_drift_arcsec for r in result.sets],
+        "closure_ok": result.valid,
+        "closure_drift_spread": result.spread_drift,
+        "pyramidal_tilt_arcsec": first.tilt.psi_arcsec if first.tilt else None,
+        "pyramidal_direction_deg": first.tilt.omega_deg if first.tilt else None,
+        "pyramidal_error_arcsec": np.concatenate(
+            [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
+        "corrected_error_arcsec": np.concatenate(
+            [r.corrected_error_arcsec for r in result.sets]).tolist(),
+        "mean_corrected_error_arcsec": result.mean_corrected_arcsec.tolist(),
+        "faces": result.faces,
+        "counting": "with" if result.counting > 0 else "against",
+        "zero_face": result.zero_face,
+        "set_directions": [r.direction for r in result.sets],
+        "grade": result.grade,
+        "accuracy_arcsec": GRADE_ACCURACY_ARCSEC[result.grade],
+        "accuracy_ok": result.accuracy_ok,
+        "allowed_tilt_arcsec": result.allowed_tilt_arcsec,
+        "allowed_tilt_seed_arcsec": result.allowed_tilt_seed_arcsec,
+        "stats_arcsec": result.stats.as_dict(),
+        "harmonics": {"order": result.harmonics.order.tolist(),
+                      "amplitude_arcsec": result.harmonics.amplitude.tolist(),
+                      "phase_deg": result.harmonics.phase_deg.tolist()},
+        "reversal_arcsec": None if result.reversal_arcsec is None else result.reversal_arcsec.tolist(),
+        "mean_reversal_arcsec": result.mean_reversal_arcsec,
+        "repeatability_arcsec": None if result.repeatability_arcsec is None
+        else float(np.max(result.repeatability_arcsec)),
+        "sign_convention": SIGN_CONVENTION,
+        "warnings": result.warnings,
+    }
+    if len(result.sets) > 1:
+        out["iso230_arcsec"] = iso230_figures(result)
+        if result.reversal_arcsec is not None:
+            out["reversal_error_arcsec"] = float(np.max(np.abs(result.reversal_arcsec)))
+    return out
+
+
+def summary(result: PolygonResult) -> str:
+    s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
+    counting = "" if result.counting > 0 else ", encoder counting against the face numbering"
+    lines = [f"{result.faces}-face polygon, {len(result.sets)} set(s), grade {result.grade} "
+             f"(±{tol:g}\"){counting}; zero: face {result.zero_face} of set 1"
+             + ("" if result.valid else "   *** RUN INVALID: closure failed ***")]
+    for i, r in enumerate(result.sets, 1):
+        closure = "not measured" if r.closure_drift_arcsec is None else (
+            f"drift {r.closure_drift_arcsec:+.2f}\" {'ok' if r.closure_ok else 'FAILED'}")
+        tilt = (f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
+                f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°") if r.tilt else "no tilt"
+        lines.append(f"  set {i} ({'+' if r.direction > 0 else '−'}, from face {r.start_face}): "
+                     f"closure {closure}; {tilt}; pyramidal correction up to "
+                     f"{np.max(np.abs(r.pyramidal_error_arcsec)):.3f}\"")
+    lines.append(f"Corrected error {s.min:+.2f}\" … {s.max:+.2f}\" (peak-to-peak "
+                 f"{s.peak_to_peak:.2f}\"): accuracy ±{tol:g}\" "
+                 f"{'met' if result.accuracy_ok else 'NOT met'} (rule: half the peak-to-peak ≤ "
+                 "accuracy)")
+    h = result.harmonics
+    if h.amplitude.size > 2:
+        lines.append(f"Harmonics: 1st (eccentricity) {h.amplitude[1]:.3f}\", "
+                     f"2nd (ellipticity) {h.amplitude[2]:.3f}\"")
+    if len(result.sets) > 1:
+        jjf = f"JJF 1115: division error {np.ptp(result.mean_corrected_arcsec):.2f}\""
+        if result.repeatability_arcsec is not None:
+            jjf += f", repeatability {np.max(result.repeatability_arcsec):.2f}\""
+        else:
+            jjf += ", repeatability not evaluated (no direction was measured twice)"
+        if result.reversal_arcsec is not None:
+            jjf += (f", reversal error {np.max(np.abs(result.reversal_arcsec)):.2f}\" "
+                    f"(mean {result.mean_reversal_arcsec:+.2f}\")")
+        lines.append(jjf)
+        figs = iso230_figures(result)
+        lines.append("ISO 230-2: " + ", ".join(
+            f"{k} = {v:.2f}\"" for k, v in figs.items() if math.isfinite(v)))
+    lines.append(result.tilt_verdict)
+    return "\n".join(lines)
+
+
+POLYGON = AnalysisKind(
+    key="polygon",
+    title="Polygon encoder test",
+    columns=COLUMNS,
+    default_settings=DEFAULT_SETTINGS,
+    analyze=analyze,
+    to_json=to_json,
+    summary=summary,
+    sample_file="polygon_sample.csv",
+    method_reference="Tian L. et al., Analysis the influence of pyramidal error on the encoder "
+                     "accuracy test by using coordinate transformation, Acta Optica Sinica "
+                     "35(5):0512003 (2015)",
+    certificate=polygon_certificate,
+    check_settings=_settings,
+    presenter="widgets.polygon.presenter:PolygonPresenter",
+)

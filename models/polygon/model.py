@@ -1,0 +1,414 @@
+"""Polygon encoder test: encoder error per face, closure, pyramidal error.
+
+Seed 001 (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015). An n-face
+polygon sits on the encoder shaft; an autocollimator looks at face i after the
+encoder has turned by (i − 1)·360°/n.
+
+* Error per position (eq 1), against one common zero for every set (face z of
+  the first set): ``e_i = (a_i − a_z) − (b_i − b_z) − (c_i − c_z)`` with
+  ``b_i = (i − 1)·360°/n + dev_i`` (dev from the polygon's certificate), every
+  angle taken in the encoder's counting sense.
+* Closure drift of a set that returns to its start face s:
+  ``H = (c'_s − c_s) − (a'_s − a_s)``, so a shaft that overshoots on return
+  with nothing drifting gives 0.
+* Pyramidal error: the encoder axis ``[sinψ cosω, sinψ sinω, cosψ]`` is tilted
+  by ψ towards ω in the polygon frame. Face normal ``[cosθ, sinθ, 0]`` rotated
+  about it by −θ (eqs 3–5) gives ``ε_x = atan(y'/x')`` and
+  ``ε_y = atan(z'/x')`` (eqs 6–7). Eqs 3–7 turn the faces by −θ, so the
+  horizontal readings, taken in eq (1)'s sense, contain −ε_x: the corrected
+  error is ``e_i − (ε_x,i − ε_x,z)`` (SPEC §2, corrected 2026-11-27). The fitted
+  ω is in the seed's frame; :func:`tilt_advice` says where the tilt is in
+  terms of faces and readings.
+
+Angles in degrees, errors and tilts in arcseconds unless the name says otherwise.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.lazy_optimize import least_squares
+from models.readings.angles import ARCSEC_PER_RAD
+from models.uncertainty.error_stats import ErrorStats
+
+__all__ = [
+    "GRADE_ACCURACY_ARCSEC",
+    "SHORT_FORM_COEFFICIENT",
+    "WORST_CASE_COEFFICIENT",
+    "HarmonicAnalysis",
+    "PolygonResult",
+    "PolygonSetResult",
+    "TiltFit",
+    "allowed_tilt_arcsec",
+    "closure_drift_arcsec",
+    "counting_residuals_deg",
+    "face_errors_arcsec",
+    "fit_tilt",
+    "harmonic_analysis",
+    "pyramidal_correction_arcsec",
+    "pyramidal_readings_arcsec",
+    "pyramidal_x_short_arcsec",
+    "pyramidal_y_short_arcsec",
+    "PolygonSetReadings",
+    "direction_means",
+    "evaluate_sets",
+    "pooled_repeatability",
+    "tilt_advice",
+    "wrap_deg",
+]
+
+#: Table 1 of the seed: accuracy (±") of encoder grades 1–7.
+GRADE_ACCURACY_ARCSEC = {1: 0.25, 2: 0.5, 3: 1.0, 4: 2.0, 5: 5.0, 6: 10.0, 7: 30.0}
+
+#: The seed's ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°).
+SHORT_FORM_COEFFICIENT = 0.5337e-5
+
+#: The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6,
+#: at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the
+#: allowed tilt is judged with this one.
+WORST_CASE_COEFFICIENT = (1.0 + math.sqrt(2.0)) / 2.0 / ARCSEC_PER_RAD
+
+
+def allowed_tilt_arcsec(grade: int, coefficient: float = WORST_CASE_COEFFICIENT) -> float:
+    """Largest pyramidal tilt ψ (") keeping the induced error under a third of the accuracy.
+
+    ``ψ_max = sqrt((tol/3)/coefficient)``. With the seed's coefficient (ω = 90°):
+    125, 177, 250, 353, 559, 790, 1369" for grades 1–7 (the seed prints 140" for
+    grade 1, which its formula does not give); with the worst case over ω
+    (the default): 119, 169, 239, 338, 534, 755, 1307".
+    """
+    tol = GRADE_ACCURACY_ARCSEC[int(grade)]
+    return math.sqrt((tol / 3.0) / coefficient)
+
+
+def wrap_deg(angle_deg):
+    """Angle(s) wrapped into [−180°, 180°)."""
+    return (np.asarray(angle_deg, dtype=float) + 180.0) % 360.0 - 180.0
+
+
+def counting_residuals_deg(encoder_deg, position_deg, counting: int) -> np.ndarray:
+    """How far each encoder reading is from its face, relative to the first reading (deg).
+
+    ``position_deg`` is each reading's nominal face angle (i − 1)·360°/n in the
+    face numbering; ``counting`` = +1 when the encoder counts up with the face
+    numbers, −1 when against them. Near zero for readings of a polygon test.
+    """
+    a = np.asarray(encoder_deg, dtype=float)
+    nominal = np.asarray(position_deg, dtype=float)
+    return wrap_deg((a - a[0]) - counting * (nominal - nominal[0]))
+
+
+def face_errors_arcsec(encoder_deg, polygon_dev_arcsec, ac_x_arcsec, position_deg,
+                       zero: tuple[float, float, float, float], counting: int = 1) -> np.ndarray:
+    """Encoder error at each reading against a common zero (eq 1), arcsec.
+
+    ``zero`` is (encoder_deg, position_deg, polygon_dev_arcsec, ac_x_arcsec) of
+    the zero reading. Face angles b = nominal + dev are taken in the counting
+    sense; the encoder difference is wrapped, so readings may pass 360°.
+    """
+    a0, p0, dev0, c0 = zero
+    a = np.asarray(encoder_deg, dtype=float)
+    nominal = np.asarray(position_deg, dtype=float)
+    dev = np.asarray(polygon_dev_arcsec, dtype=float)
+    c = np.asarray(ac_x_arcsec, dtype=float)
+    da = wrap_deg((a - a0) - counting * (nominal - p0))
+    return da * 3600.0 - counting * (dev - dev0) - (c - c0)
+
+
+def closure_drift_arcsec(start_encoder_deg: float, start_ac_x_arcsec: float,
+                         closure_encoder_deg: float, closure_ac_x_arcsec: float) -> float:
+    """Drift over a set: ``(c' − c) − (a' − a)`` on its start face, arcsec.
+
+    An autocollimator that drifted by d gives d; an encoder whose zero moved by
+    d gives −d; a shaft that stops a little further on return gives 0.
+    """
+    da = float(wrap_deg(closure_encoder_deg - start_encoder_deg)) * 3600.0
+    return (closure_ac_x_arcsec - start_ac_x_arcsec) - da
+
+
+def pyramidal_readings_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
+    """Exact autocollimator readings (ε_x, ε_y) in arcsec at face angles θ (eqs 3–7)."""
+    th = np.radians(np.asarray(theta_deg, dtype=float))
+    psi = psi_arcsec / ARCSEC_PER_RAD
+    om = math.radians(omega_deg)
+    axis = np.array([math.sin(psi) * math.cos(om), math.sin(psi) * math.sin(om), math.cos(psi)])
+    normal = np.array([np.cos(th), np.sin(th), np.zeros_like(th)])
+    phi = -th
+    cos_p, sin_p = np.cos(phi), np.sin(phi)
+    cross = np.cross(axis[:, None], normal, axis=0)
+    dot = axis @ normal
+    rotated = normal * cos_p + cross * sin_p + axis[:, None] * dot * (1.0 - cos_p)
+    x, y, z = rotated
+    return np.arctan(y / x) * ARCSEC_PER_RAD, np.arctan(z / x) * ARCSEC_PER_RAD
+
+
+def pyramidal_x_short_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
+    """Short form (12): ε_x ≈ 0.4848e-5 ψ²[sinω(1 − cosθ)cos(ω − θ) + ½ sinθ cosθ]."""
+    th = np.radians(np.asarray(theta_deg, dtype=float))
+    om = math.radians(omega_deg)
+    bracket = math.sin(om) * (1 - np.cos(th)) * np.cos(om - th) + 0.5 * np.sin(th) * np.cos(th)
+    return psi_arcsec**2 / ARCSEC_PER_RAD * bracket
+
+
+def pyramidal_y_short_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
+    """Short form (13): ε_y ≈ ψ[cos(ω − θ) − cosω]."""
+    th = np.radians(np.asarray(theta_deg, dtype=float))
+    om = math.radians(omega_deg)
+    return psi_arcsec * (np.cos(om - th) - math.cos(om))
+
+
+@dataclass
+class TiltFit:
+    """Pyramidal tilt identified from the vertical readings.
+
+    ``offset_arcsec`` is the vertical zero of the autocollimator; uncertainties
+    are standard (k = 1) from the fit's Jacobian.
+    """
+
+    psi_arcsec: float
+    omega_deg: float
+    offset_arcsec: float
+    u_psi_arcsec: float
+    u_omega_deg: float
+    residuals_arcsec: np.ndarray
+    residual_rms_arcsec: float
+
+
+def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
+    """Identify ψ, ω from vertical readings: linear fit on (1, cosθ − 1, sinθ), exact polish."""
+    theta = np.asarray(theta_deg, dtype=float)
+    v = np.asarray(ac_y_arcsec, dtype=float)
+    if theta.size < 4:
+        raise ValueError("at least 4 vertical readings are needed to identify the tilt")
+    th = np.radians(theta)
+    design = np.column_stack([np.ones_like(th), np.cos(th) - 1.0, np.sin(th)])
+    (k, p, q), *_ = np.linalg.lstsq(design, v, rcond=None)
+    start = np.array([k, math.hypot(p, q), math.degrees(math.atan2(q, p))])
+
+    def residuals(x):
+        return x[0] + pyramidal_readings_arcsec(theta, x[1], x[2])[1] - v
+
+    fit = least_squares(residuals, start, method="lm", x_scale=np.array([1.0, 1.0, 1.0]))
+    k, psi, omega = fit.x
+    if psi < 0:
+        psi, omega = -psi, omega + 180.0
+        fit.jac[:, 1] *= -1
+    dof = max(theta.size - 3, 1)
+    sigma2 = float(fit.fun @ fit.fun) / dof
+    cov = np.linalg.pinv(fit.jac.T @ fit.jac) * sigma2
+    u = np.sqrt(np.clip(np.diag(cov), 0, None))
+    return TiltFit(float(psi), float(omega % 360.0), float(k), float(u[1]), float(u[2]),
+                   -fit.fun, float(np.sqrt(np.mean(fit.fun**2))))
+
+
+@dataclass
+class HarmonicAnalysis:
+    """Fourier analysis of an error over the full circle, arcsec.
+
+    ``amplitude[k]`` and ``phase_deg[k]`` describe ``A_k cos(kθ + φ_k)``
+    for k = 0…n/2 (k = 1 eccentricity, k = 2 ellipticity, …).
+    """
+
+    order: np.ndarray
+    amplitude: np.ndarray
+    phase_deg: np.ndarray
+
+
+def harmonic_analysis(error_arcsec) -> HarmonicAnalysis:
+    """DFT of an error sampled at n equally spaced positions over 360°."""
+    e = np.asarray(error_arcsec, dtype=float)
+    n = e.size
+    spectrum = np.fft.rfft(e) / n
+    amplitude = np.abs(spectrum) * 2.0
+    amplitude[0] /= 2.0
+    if n % 2 == 0:
+        amplitude[-1] /= 2.0
+    return HarmonicAnalysis(np.arange(spectrum.size), amplitude, np.degrees(np.angle(spectrum)))
+
+
+def pyramidal_correction_arcsec(theta_deg, psi_arcsec: float, omega_deg: float,
+                                zero_theta_deg: float) -> np.ndarray:
+    """``ε_x(θ) − ε_x(θ_z)``: what the tilt adds to each error against the zero face.
+
+    θ is the position angle in the counting sense (the one the tilt was fitted
+    on). The corrected error is the error minus this.
+    """
+    theta = np.append(np.asarray(theta_deg, dtype=float), zero_theta_deg)
+    eps_x = pyramidal_readings_arcsec(theta, psi_arcsec, omega_deg)[0]
+    return eps_x[:-1] - eps_x[-1]
+
+
+def tilt_advice(tilt: TiltFit, faces: int, counting: int) -> str:
+    """Where the tilt is, in what the technician sees: the faces where the vertical
+    reading is highest and lowest, and how far the readings must come together.
+
+    The fitted vertical curve ``k + ψ[cos(ω − θ) − cos ω]`` peaks at θ = ω, so the
+    answer holds whichever sense the autocollimator's vertical reading has.
+    """
+    step = 360.0 / faces
+    nominal = (counting * tilt.omega_deg) % 360.0
+    high = int(round(nominal / step)) % faces + 1
+    low = int(round(((nominal + 180.0) % 360.0) / step)) % faces + 1
+    return (f"the vertical reading is highest at face {high} and lowest at face {low} "
+            f"(spread 2ψ = {2 * tilt.psi_arcsec:.0f}\"): tilt the polygon on its seat so that "
+            f"face {high} comes down and face {low} up by about {tilt.psi_arcsec:.0f}\" each")
+
+
+@dataclass
+class PolygonSetReadings:
+    """One set (a turn round the polygon) as read, in approach order."""
+
+    positions: np.ndarray  # face numbers 1…n
+    encoder_deg: np.ndarray
+    polygon_dev_arcsec: np.ndarray
+    ac_x_arcsec: np.ndarray
+    ac_y_arcsec: np.ndarray  # NaN where not read
+    direction: int = 1  # +1 forward (encoder counting up), −1 reverse
+    closure_encoder_deg: float | None = None  # the reading back on the start face
+    closure_ac_x_arcsec: float | None = None
+    label: str = "set 1"
+
+
+@dataclass
+class PolygonSetResult:
+    """One set's figures over positions 1…n (arcsec), against the test's common zero."""
+
+    theta_deg: np.ndarray  # position angle in the counting sense
+    error_arcsec: np.ndarray
+    closure_drift_arcsec: float | None
+    closure_ok: bool | None
+    tilt: TiltFit | None
+    pyramidal_error_arcsec: np.ndarray  # ε_x − ε_x(zero face): subtracted from the error
+    corrected_error_arcsec: np.ndarray
+    direction: int = 1
+    start_face: int = 1
+    ac_y_arcsec: np.ndarray | None = None  # position order, for the budget
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def closure_arcsec(self) -> float | None:
+        """|closure drift|, the figure judged against the closure limit."""
+        return None if self.closure_drift_arcsec is None else abs(self.closure_drift_arcsec)
+
+
+def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
+                  zero_face: int = 0, closure_limit_arcsec: float = math.inf,
+                  spread_drift: bool = False) -> list[PolygonSetResult]:
+    """Error, closure drift and pyramidal correction of every set against one zero.
+
+    The zero is ``zero_face`` of the first set (0: the first set's first
+    reading). With ``spread_drift`` each set's closure drift is taken as
+    growing linearly from its first reading to its closure and removed from
+    the autocollimator's readings.
+    """
+    n = faces
+    step = 360.0 / n
+    first = sets[0]
+    zero_face = zero_face or int(first.positions[0])
+    prepared = []
+    for s in sets:
+        ac_x = np.asarray(s.ac_x_arcsec, dtype=float)
+        drift = None
+        if s.closure_ac_x_arcsec is not None and s.closure_encoder_deg is not None:
+            drift = closure_drift_arcsec(s.encoder_deg[0], ac_x[0], s.closure_encoder_deg,
+                                         s.closure_ac_x_arcsec)
+            if spread_drift:
+                ac_x = ac_x - drift * np.arange(ac_x.size) / n
+        order = np.argsort(s.positions)
+        prepared.append((s, ac_x, drift, order))
+    s0, ac_x0, _, _ = prepared[0]
+    z = int(np.nonzero(s0.positions == zero_face)[0][0])
+    nominal_z = (zero_face - 1) * step
+    zero = (float(s0.encoder_deg[z]), nominal_z, float(s0.polygon_dev_arcsec[z]), float(ac_x0[z]))
+    theta_z = counting * nominal_z
+    results = []
+    for s, ac_x, drift, order in prepared:
+        nominal = (s.positions[order] - 1) * step
+        theta = counting * nominal
+        error = face_errors_arcsec(s.encoder_deg[order], s.polygon_dev_arcsec[order], ac_x[order],
+                                   nominal, zero, counting)
+        warnings: list[str] = []
+        ok = None
+        if drift is not None:
+            ok = bool(abs(drift) <= closure_limit_arcsec)
+            drift = float(drift)
+            if not ok:
+                warnings.append(f"{s.label.capitalize()}: closure drift {drift:+.2f}\" exceeds the "
+                                f"limit ±{closure_limit_arcsec:g}\": the set is invalid; repeat it.")
+        else:
+            warnings.append(f"{s.label.capitalize()}: no closure reading (the row back on its "
+                            "start face): drift not checked.")
+        ac_y = np.asarray(s.ac_y_arcsec, dtype=float)[order]
+        tilt = None
+        pyramidal = np.zeros(n)
+        if ac_y.size >= 4 and np.all(np.isfinite(ac_y)):
+            tilt = fit_tilt(theta, ac_y)
+            pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z)
+        else:
+            warnings.append(f"{s.label.capitalize()}: vertical readings missing: pyramidal error "
+                            "not identified or removed.")
+        results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,
+                                        s.direction, int(s.positions[0]),
+                                        ac_y if tilt is not None else None, warnings))
+    return results
+
+
+@dataclass
+class PolygonResult:
+    """A whole polygon test (one or several sets) against one common zero."""
+
+    sets: list[PolygonSetResult]
+    faces: int
+    grade: int
+    theta_deg: np.ndarray  # nominal face angle of positions 1…n (face numbering)
+    mean_error_arcsec: np.ndarray  # bidirectional mean when both directions were run
+    mean_corrected_arcsec: np.ndarray
+    repeatability_arcsec: np.ndarray | None  # pooled s within each direction, per position
+    reversal_arcsec: np.ndarray | None  # x̄↑ − x̄↓ per position
+    stats: ErrorStats
+    raw_stats: ErrorStats
+    harmonics: HarmonicAnalysis
+    allowed_tilt_arcsec: float  # worst case over ω
+    allowed_tilt_seed_arcsec: float  # the seed's (ω = 90°)
+    accuracy_ok: bool
+    tilt_verdict: str
+    valid: bool
+    counting: int = 1
+    zero_face: int = 1
+    spread_drift: bool = False
+    ac_roll_arcmin: float = 1.0  # stated limit of the autocollimator reticle's roll (budget)
+    closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def mean_reversal_arcsec(self) -> float | None:
+        """B̄, the mean of the reversal over the positions (ISO 230-2)."""
+        return None if self.reversal_arcsec is None else float(np.mean(self.reversal_arcsec))
+
+
+def direction_means(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
+    """Mean over the sets of each direction (rows of ``values``): the bidirectional mean
+    and the reversal x̄↑ − x̄↓ (None unless both directions were run)."""
+    fwd, rev = values[directions > 0], values[directions < 0]
+    if fwd.size and rev.size:
+        up, down = fwd.mean(axis=0), rev.mean(axis=0)
+        return 0.5 * (up + down), up - down
+    return values.mean(axis=0), None
+
+
+def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, int] | None:
+    """Standard deviation per position pooled over the sets of each direction, about that
+    direction's mean, with its degrees of freedom; None when no direction was repeated."""
+    squares = np.zeros(values.shape[1])
+    dof = 0
+    for d in (1, -1):
+        group = values[directions == d]
+        if group.shape[0] >= 2:
+            squares += np.sum((group - group.mean(axis=0)) ** 2, axis=0)
+            dof += group.shape[0] - 1
+    if dof == 0:
+        return None
+    return np.sqrt(squares / dof), dof

@@ -1,0 +1,309 @@
+"""Polygon encoder test: uncertainty budget and certificate content.
+
+The error at position i (eq 1) is taken against one common zero, face z of
+the first set: ``e_i = (a_i − a_z) − nominal_i − (dev_i − dev_z) − (x_i − x_z)``,
+minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the sets
+(the mean of the two directions' means when both were run). Its inputs:
+
+* each reference standard's figure, per face or reading: sensitivity √2 (a
+  difference of two), 0 at the zero face; a polygon whose certificate states
+  its deviations from face 1 has sensitivity 1 where one of the two faces is
+  face 1. These are systematic and are not reduced by repeating sets;
+* the reading noise: with a direction run twice or more, the standard
+  deviation of the sets about their direction's mean pooled over positions
+  and directions (Type A), divided by √m for the mean of m sets; otherwise the
+  autocollimator's reading noise from the tilt fits' residuals. The zero
+  reading is one reading shared by every set and enters once more, not reduced;
+* the pyramidal correction: u(ψ) and u(ω) of each set's tilt fit propagated
+  through ε_x (first order), for the mean of the sets;
+* the autocollimator reticle's roll ρ (a stated limit): it turns part of the
+  vertical reading into the horizontal one, ρ·(y_i − y_z), rectangular;
+* the closure drift: the drift that the closures show beyond their reading
+  noise, d² = mean(H²) − 2u², rectangular with half-width d (d/2 when the
+  drift was spread linearly over the set);
+* the item's resolution, if stated.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from models.certificate.document import (
+    CertificateDocument,
+    PlotFigure,
+    PlotSeries,
+    Table,
+    decision_rows,
+    reference_standard_components,
+    resolution_component,
+)
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.polygon.model import (
+    GRADE_ACCURACY_ARCSEC,
+    PolygonResult,
+    pooled_repeatability,
+    pyramidal_correction_arcsec,
+)
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec"]
+
+METHOD = (
+    "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
+    "its faces. The shaft is turned to each face in turn; the encoder's reading a, the polygon's "
+    "calibrated face deviation and the autocollimator's horizontal reading x give the encoder "
+    "error at each position against one common zero (face z of the first set), e = (a − a_z) − "
+    "nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to "
+    "a set's first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y "
+    "identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least "
+    "squares, and the horizontal error ε_x it induces is subtracted from e (coordinate "
+    "transformation; the seed's eqs 3–7 turn the faces by −θ, so the readings carry −ε_x)."
+)
+
+
+def _zero_index(result: PolygonResult) -> int:
+    return result.zero_face - 1
+
+
+def _pyramidal_uncertainty(result: PolygonResult) -> np.ndarray | None:
+    """u of the pyramidal correction per position, from u(ψ), u(ω) of each set, for the mean
+    of the sets."""
+    variances = []
+    for s in result.sets:
+        t = s.tilt
+        if t is None:
+            return None
+        theta_z = s.theta_deg[_zero_index(result)]
+
+        def eps(psi: float, omega: float, theta=s.theta_deg, theta_z=theta_z) -> np.ndarray:
+            return pyramidal_correction_arcsec(theta, psi, omega, theta_z)
+
+        d_psi = (eps(t.psi_arcsec + 0.01, t.omega_deg) - eps(t.psi_arcsec - 0.01, t.omega_deg)) / 0.02
+        d_om = (eps(t.psi_arcsec, t.omega_deg + 1e-3) - eps(t.psi_arcsec, t.omega_deg - 1e-3)) / 2e-3
+        variances.append((d_psi * t.u_psi_arcsec) ** 2 + (d_om * t.u_omega_deg) ** 2)
+    return np.sqrt(np.sum(variances, axis=0)) / len(result.sets)
+
+
+def _effective_sets(directions: np.ndarray) -> float:
+    """m for which s/√m is the standard deviation of the (bidirectional) mean."""
+    up, down = int(np.sum(directions > 0)), int(np.sum(directions < 0))
+    if up and down:
+        return 4.0 / (1.0 / up + 1.0 / down)
+    return float(up + down)
+
+
+def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[BudgetComponent], float]:
+    """The reading noise of the mean and of the shared zero reading; also the noise figure."""
+    directions = np.array([s.direction for s in result.sets])
+    m_eff = _effective_sets(directions)
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    repeat = pooled_repeatability(corrected, directions)
+    ones = np.ones(n)
+    not_zero = ones.copy()
+    not_zero[zero] = 0.0
+    if repeat is not None:
+        s_i, sets_dof = repeat
+        noise = float(np.sqrt(np.mean(s_i**2)))
+        dof = sets_dof * n
+        name, note = "Repeatability", (f"pooled standard deviation {noise:.3f}\" of the sets about "
+                                       f"their direction's mean, {dof} degrees of freedom")
+        evaluation = "A"
+    else:
+        fits = [s.tilt for s in result.sets if s.tilt is not None]
+        if not fits:
+            return [], 0.0
+        dof = sum(max(n - 3, 1) for _ in fits)
+        noise = float(np.sqrt(sum(np.sum(t.residuals_arcsec**2) for t in fits) / dof))
+        name, note = "Autocollimator reading noise", (
+            f"scatter of the vertical readings about the tilt fits, {dof} degrees of freedom "
+            "(no direction was measured twice)")
+        evaluation = "A"
+    mean_sensitivity = ones if len(result.sets) > 1 else not_zero
+    return [
+        BudgetComponent(f"{name} (mean of {len(result.sets)} set{'s' if len(result.sets) > 1 else ''})",
+                        evaluation, "normal", noise / math.sqrt(m_eff), 1.0, mean_sensitivity, dof,
+                        note + f", divided by √{m_eff:g}"),
+        BudgetComponent(f"Zero reading (face {result.zero_face}, set 1)", evaluation, "normal", noise,
+                        1.0, not_zero, dof, "one reading shared by every set: not reduced",
+                        common=True),
+    ], noise
+
+
+def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[BudgetComponent]:
+    if roll_arcmin <= 0:
+        return []
+    spans = [np.abs(s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)])
+             for s in result.sets if s.ac_y_arcsec is not None]
+    if not spans:
+        return []
+    rho = roll_arcmin / 60.0 * math.pi / 180.0
+    return [BudgetComponent(
+        "Autocollimator reticle roll", "B", "rectangular", rho * np.mean(spans, axis=0),
+        math.sqrt(3.0), 1.0, math.inf,
+        f"roll up to ±{roll_arcmin:g}′ (stated) times the vertical reading's change from the "
+        "zero face")]
+
+
+def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
+    drifts = np.array([s.closure_drift_arcsec for s in result.sets
+                       if s.closure_drift_arcsec is not None])
+    if drifts.size == 0:
+        return []
+    excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
+    half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
+    sensitivity = np.ones(n)
+    if len(result.sets) == 1:
+        sensitivity[zero] = 0.0
+    how = "spread linearly and removed, half the drift left" if result.spread_drift else \
+        "not removed, up to the whole drift"
+    return [BudgetComponent(
+        "Closure drift", "B", "rectangular", half_width / math.sqrt(len(result.sets)),
+        math.sqrt(3.0), sensitivity, math.inf,
+        f"closures {', '.join(f'{d:+.2f}' for d in drifts)}\" beyond their reading noise; {how}")]
+
+
+def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+    n = result.faces
+    zero = _zero_index(result)
+    pair = np.full(n, math.sqrt(2.0))
+    pair[zero] = 0.0
+    # a deviation stated from face 1: dev_i − dev_z has face 1's term exact
+    not_first = (np.arange(n) != 0).astype(float)
+    from_first = np.sqrt(not_first + not_first[zero])
+    from_first[zero] = 0.0
+    components = reference_standard_components(metadata, pair, "face or reading", from_first)
+    noise_components, noise = _noise_components(result, n, zero)
+    components += noise_components
+    u_pyr = _pyramidal_uncertainty(result)
+    if u_pyr is not None:
+        components.append(BudgetComponent(
+            "Pyramidal correction (ψ, ω)", "A", "normal", u_pyr, 1.0, 1.0, max(n - 3, 1),
+            "u(ψ), u(ω) of the tilt fits propagated through ε_x"))
+    components += _roll_component(result, result.ac_roll_arcmin, n)
+    components += _drift_component(result, noise, n, zero)
+    components += resolution_component(metadata, pair)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+_GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
+
+
+def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadata) -> float:
+    """The tolerance from the one source, the workbench's grade; metadata that states
+    another grade or tolerance is refused rather than silently overruled."""
+    tol = GRADE_ACCURACY_ARCSEC[result.grade]
+    if metadata.tolerance_arcsec is not None and not math.isclose(metadata.tolerance_arcsec, tol):
+        raise MetadataError(
+            f"the certificate details give a tolerance of ±{metadata.tolerance_arcsec:g}\" but the "
+            f"workbench is set to grade {result.grade} (±{tol:g}\"): change the grade or clear the "
+            "tolerance in the details")
+    match = _GRADE_IN_TEXT.search(metadata.item_grade or "")
+    if match and int(match.group(1)) != result.grade:
+        raise MetadataError(
+            f"the certificate details say '{metadata.item_grade}' but the workbench is set to grade "
+            f"{result.grade}: make them agree")
+    return tol
+
+
+def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
+                        source_name: str = "", method_reference: str = "") -> CertificateDocument:
+    tol = polygon_tolerance_arcsec(result, metadata)
+    budget = polygon_budget(result, metadata)
+    big_u = budget.expanded_arcsec
+    m = len(result.sets)
+    counting = "with the face numbering" if result.counting > 0 else "against the face numbering"
+    rows_p = [("Faces", f"{result.faces}", ""), ("Sets", f"{m}", ""),
+              ("Encoder grade", f"{result.grade} (±{tol:g}\")", ""),
+              ("Encoder counts", counting, ""),
+              ("Common zero", f"face {result.zero_face} of set 1", ""),
+              ("Closure drift", "spread linearly over each set and removed" if result.spread_drift
+               else "reported, not removed", ""),
+              ("Allowed pyramidal tilt", f"{result.allowed_tilt_arcsec:.0f}\" (worst case over the "
+               f"tilt direction; the seed's ω = 90° figure: {result.allowed_tilt_seed_arcsec:.0f}\")",
+               "")]
+    for i, s in enumerate(result.sets, 1):
+        closure = "not measured" if s.closure_drift_arcsec is None else (
+            f"drift {s.closure_drift_arcsec:+.2f}\" ({'within' if s.closure_ok else 'OUTSIDE'} the "
+            "limit)")
+        rows_p.append((f"Set {i} ({'forward' if s.direction > 0 else 'reverse'}, from face "
+                       f"{s.start_face}) closure", closure, ""))
+        if s.tilt is not None:
+            rows_p.append((f"Set {i} pyramidal tilt ψ", f"{s.tilt.psi_arcsec:.1f}\"",
+                           f"{2 * s.tilt.u_psi_arcsec:.2f}\""))
+            rows_p.append((f"Set {i} tilt direction ω", f"{s.tilt.omega_deg:.1f}°",
+                           f"{2 * s.tilt.u_omega_deg:.2f}°"))
+    parameters = Table("Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"), rows_p)
+    correction = result.mean_corrected_arcsec - result.mean_error_arcsec
+    numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
+                       correction, result.mean_corrected_arcsec, big_u, strict=True))
+    rows = [(f"{int(p)}", f"{t:.3f}", f"{r:+.2f}", f"{c:+.3f}", f"{e:+.2f}", f"{u:.2f}")
+            for p, t, r, c, e, u in numeric]
+    mean = "mean of the two directions' means" if result.reversal_arcsec is not None else \
+        f"mean of {m} set{'s' if m > 1 else ''}"
+    results = Table(f"Results per position ({mean})",
+                    ("Position", "Nominal (°)", "Raw error (\")", "Correction (\")",
+                     "Corrected error (\")", "U (\")"), rows,
+                    f"Error = indicated − reference, from face {result.zero_face} of set 1. "
+                    "Corrected = raw + correction; the correction removes the error the "
+                    "pyramidal tilt induces.")
+    st, raw = result.stats, result.raw_stats
+    stat_rows = [
+        ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),
+        ("Corrected error", f"{st.min:+.2f}\" … {st.max:+.2f}\"",
+         f"peak-to-peak {st.peak_to_peak:.2f}\""),
+    ]
+    h = result.harmonics
+    if h.amplitude.size > 2:
+        stat_rows.append(("Harmonics 1st / 2nd", f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
+                          "eccentricity / ellipticity"))
+    if result.repeatability_arcsec is not None:
+        stat_rows.append(("Repeatability (largest s over positions)",
+                          f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
+    elif m > 1:
+        stat_rows.append(("Repeatability", "not evaluated", "no direction was measured twice"))
+    if result.reversal_arcsec is not None:
+        stat_rows.append(("Reversal B (largest |x̄↑ − x̄↓|)",
+                          f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
+                          f"mean reversal {result.mean_reversal_arcsec:+.2f}\""))
+    conformity = decide_conformity(
+        result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
+        metadata.decision_quantity, "" if result.valid else "the run is invalid (closure failed)")
+    stat_rows[2:2] = decision_rows(conformity, budget, "positions")
+    statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
+    th = result.theta_deg
+    plots = [PlotFigure("Raw and corrected error", "position angle (°)", "error (\")", (
+        PlotSeries("raw (mean)", th, result.mean_error_arcsec, (31, 119, 180), True),
+        PlotSeries("corrected (mean)", th, result.mean_corrected_arcsec, (44, 160, 44), True),
+        PlotSeries("correction (pyramidal)", th, correction, (255, 127, 14)),
+    ))]
+    plots.append(PlotFigure("Corrected error with its expanded uncertainty U",
+                            "position angle (°)", "error (\")", (
+        PlotSeries("corrected ± U", th, result.mean_corrected_arcsec, (44, 160, 44), True,
+                   band=big_u),)))
+    tilt = result.sets[0].tilt
+    if tilt is not None:
+        plots.append(PlotFigure("Tilt fit residuals (vertical readings, set 1)",
+                                "position angle (°)", "residual (\")", (
+            PlotSeries("residual", th, tilt.residuals_arcsec, (148, 103, 189), True),)))
+    warnings = list(result.warnings)
+    if m == 1 and tilt is None:
+        warnings.append("Repeatability was not evaluated: one set and no vertical readings.")
+    worst = budget.worst_index
+    return CertificateDocument(
+        "polygon", "Polygon encoder test", metadata, source_name, METHOD, method_reference,
+        parameters, results, statistics, budget, f"position {worst + 1}", conformity, tol,
+        tuple(plots), tuple(warnings),
+        statements=(
+            f"U is zero at face {result.zero_face} of set 1: every error is taken from that "
+            "reading, so its own error is zero by definition.",
+            "Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method's "
+            "reference; the allowed pyramidal tilt is derived from them (a third of the "
+            "accuracy, worst case over the tilt direction)."),
+        point_columns=(("position", np.arange(1, result.faces + 1, dtype=float)),
+         ("nominal_deg", result.theta_deg), ("raw_error_arcsec", result.mean_error_arcsec),
+         ("correction_arcsec", correction), ("corrected_error_arcsec", result.mean_corrected_arcsec),
+         ("expanded_uncertainty_arcsec", big_u)))

@@ -1,0 +1,162 @@
+"""Crash recovery: each running window autosaves its unsaved work to a file of its own.
+
+Every window holds a lock on a file beside its autosave for as long as it runs.
+At start-up, an autosave whose lock nobody holds belongs to a window that did not
+close normally (a crash, a power cut, kill -9): that one is offered back. Another
+running window's autosave is never offered, overwritten or deleted.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import threading
+import time
+import uuid
+from pathlib import Path
+
+from models.project.file import Project, ProjectFileError, load_project, save_project
+
+try:  # POSIX: a lock the kernel drops when the process dies
+    import fcntl
+except ImportError:  # pragma: no cover - Windows
+    fcntl = None  # type: ignore[assignment]
+
+__all__ = ["RecoveryStore"]
+
+STALE_TEMP_SECONDS = 600
+
+
+def _lock_is_held(lock_path: Path) -> bool:
+    """Whether a live window holds ``lock_path``."""
+    if not lock_path.exists():
+        return False
+    if fcntl is None:  # pragma: no cover - Windows: the PID written in the file
+        try:
+            pid = int(lock_path.read_text().split()[0])
+            os.kill(pid, 0)
+        except (OSError, ValueError, IndexError):
+            return False
+        return True
+    try:
+        fd = os.open(lock_path, os.O_RDWR)
+    except OSError:
+        return False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        return True  # someone holds it
+    else:
+        fcntl.flock(fd, fcntl.LOCK_UN)
+        return False
+    finally:
+        os.close(fd)
+
+
+class RecoveryStore:
+    """The autosaves in ``folder``: this window's own, and those of windows that died."""
+
+    PREFIX = "recovery-"
+    SUFFIX = ".anglebench.json"
+    LEGACY_NAME = "recovery.anglebench.json"  # written by 0.1.0 before windows had their own
+
+    def __init__(self, folder: str | Path) -> None:
+        self.folder = Path(folder)
+        token = f"{os.getpid()}-{uuid.uuid4().hex[:8]}"
+        self.path = self.folder / f"{self.PREFIX}{token}{self.SUFFIX}"
+        self.lock_path = self.folder / f"{self.PREFIX}{token}.lock"
+        self._lock_fd: int | None = None
+        self._write_lock = threading.Lock()
+
+    # -- this window's own -------------------------------------------------------
+    def claim(self) -> None:
+        """Take this window's lock (held until :meth:`release`) and sweep temp files that
+        a save killed half-way left behind."""
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self._clean_stale_temps()
+        if self._lock_fd is not None:
+            return
+        fd = os.open(self.lock_path, os.O_RDWR | os.O_CREAT, 0o644)
+        if fcntl is not None:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        os.write(fd, f"{os.getpid()}\n".encode())
+        self._lock_fd = fd
+
+    def release(self) -> None:
+        """A clean exit: this window's autosave and lock go."""
+        self.discard()
+        if self._lock_fd is not None:
+            with contextlib.suppress(OSError):
+                os.close(self._lock_fd)
+            self._lock_fd = None
+        with contextlib.suppress(FileNotFoundError):
+            self.lock_path.unlink()
+
+    def write(self, project: Project, project_path: str | Path | None = None) -> None:
+        """Autosave ``project`` (safe from a worker thread: one write at a time)."""
+        self.folder.mkdir(parents=True, exist_ok=True)
+        project.metadata = dict(project.metadata)
+        project.metadata["autosaved_at"] = time.strftime("%Y-%m-%d %H:%M:%S")
+        project.metadata["project_path"] = str(project_path) if project_path else ""
+        with self._write_lock:
+            save_project(self.path, project)
+
+    def exists(self) -> bool:
+        return self.path.is_file()
+
+    def discard(self) -> None:
+        with contextlib.suppress(FileNotFoundError):
+            self.path.unlink()
+
+    # -- windows that died ----------------------------------------------------------
+    def orphans(self) -> list[Path]:
+        """Autosaves of windows that did not close normally, newest first."""
+        if not self.folder.is_dir():
+            return []
+        found = []
+        for path in self.folder.glob(f"{self.PREFIX}*{self.SUFFIX}"):
+            if path == self.path:
+                continue
+            lock = path.with_name(path.name[: -len(self.SUFFIX)] + ".lock")
+            if not _lock_is_held(lock):
+                found.append(path)
+        legacy = self.folder / self.LEGACY_NAME
+        if legacy.is_file():
+            found.append(legacy)
+        return sorted(found, key=lambda p: p.stat().st_mtime, reverse=True)
+
+    def load(self, path: Path) -> Project:
+        """Read an orphaned autosave. A damaged one is kept aside under a name of its own
+        (never over an earlier damaged one), not deleted."""
+        try:
+            return load_project(path)
+        except ProjectFileError:
+            self.set_aside(path, "damaged")
+            raise
+
+    def set_aside(self, path: Path, why: str) -> Path:
+        """Rename an orphan so it is not offered again, keeping it on disk."""
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        target = path.with_name(f"{path.name}.{why}-{stamp}-{uuid.uuid4().hex[:6]}.json")
+        with contextlib.suppress(OSError):
+            path.replace(target)
+        self._drop_lock_of(path)
+        return target
+
+    def adopt(self, path: Path) -> None:
+        """An orphan's work now lives in this window: its file and lock go."""
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()
+        self._drop_lock_of(path)
+
+    def _drop_lock_of(self, path: Path) -> None:
+        if path.name.endswith(self.SUFFIX) and path.name.startswith(self.PREFIX):
+            with contextlib.suppress(FileNotFoundError):
+                path.with_name(path.name[: -len(self.SUFFIX)] + ".lock").unlink()
+
+    def _clean_stale_temps(self) -> None:
+        now = time.time()
+        for temp in self.folder.glob(".*.tmp"):
+            with contextlib.suppress(OSError):
+                if now - temp.stat().st_mtime > STALE_TEMP_SECONDS:
+                    temp.unlink()

@@ -1,0 +1,299 @@
+"""A sheet of readings: typed columns over the raw text the technician typed.
+
+The sheet keeps every cell as the text that was entered, so nothing is lost
+when a cell is wrong; parsing happens on demand and reports each bad cell by
+row and column. Rows that are entirely blank are ignored.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+import re
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.readings.angles import AngleParseError, parse_angle_deg
+
+__all__ = ["CellError", "Column", "ColumnKind", "ParsedReadings", "ReadingsSheet", "one_line"]
+
+
+def one_line(text: str, limit: int = 400) -> str:
+    """A message fit for one line: line breaks shown as ⏎, cut at ``limit`` characters."""
+    flat = str(text).replace("\r\n", "⏎").replace("\n", "⏎").replace("\r", "⏎")
+    return flat if len(flat) <= limit else flat[: limit - 1] + "…"
+
+
+class ColumnKind(enum.Enum):
+    ANGLE_DEG = "angle"  # decimal degrees or D°M'S"
+    NUMBER = "number"  # a float in the column's unit
+    INTEGER = "integer"
+    TEXT = "text"
+
+
+@dataclass(frozen=True)
+class CellError:
+    """A cell that could not be read. ``row`` and ``column`` are 0-based indices."""
+
+    row: int
+    column: int
+    column_key: str
+    text: str
+    reason: str
+
+    def describe(self, source: str = "", row_offset: int = 1) -> str:
+        """One line: ``file: row N, column 'key': reason`` (rows counted from ``row_offset``)."""
+        where = f"{source}: " if source else ""
+        return one_line(f"{where}row {self.row + row_offset}, column '{self.column_key}': "
+                        f"{self.reason}")
+
+
+@dataclass(frozen=True)
+class Column:
+    """One typed column of a readings sheet.
+
+    ``key`` is the CSV header; ``unit`` is shown in the table header.
+    ``choices`` restricts a TEXT column to the listed values (case-insensitive).
+    """
+
+    key: str
+    title: str
+    unit: str
+    kind: ColumnKind
+    required: bool = True
+    help: str = ""
+    choices: tuple[str, ...] = ()
+
+    @property
+    def header(self) -> str:
+        return f"{self.title} [{self.unit}]" if self.unit else self.title
+
+    def parse(self, text: str) -> float | int | str | None:
+        """Value of one cell; ``None`` for a blank optional cell.
+
+        Raises ``ValueError`` with a readable reason.
+        """
+        stripped = text.strip()
+        if not stripped:
+            if self.required:
+                raise ValueError("empty; a value is needed here")
+            return None
+        if self.kind is ColumnKind.ANGLE_DEG:
+            try:
+                return parse_angle_deg(stripped)
+            except AngleParseError as exc:
+                raise ValueError(str(exc)) from None
+        if self.kind is ColumnKind.NUMBER:
+            return _parse_number(stripped)
+        if self.kind is ColumnKind.INTEGER:
+            value = _parse_number(stripped)
+            if not float(value).is_integer():
+                raise ValueError(f"'{stripped}' is not a whole number")
+            if abs(value) > MAX_INTEGER:
+                raise ValueError(f"'{stripped}' is out of range for a whole number here")
+            return int(value)
+        if self.choices:
+            lowered = {c.lower(): c for c in self.choices}
+            if stripped.lower() not in lowered:
+                raise ValueError(f"'{stripped}' is not one of {', '.join(self.choices)}")
+            return lowered[stripped.lower()]
+        return stripped
+
+
+#: The largest whole number an INTEGER column takes (positions, set numbers …).
+MAX_INTEGER = 1_000_000_000
+
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?", re.ASCII)
+
+
+def _parse_number(text: str) -> float:
+    """A plain decimal number: digits, one point (or one decimal comma), an exponent.
+
+    Python's ``float`` also takes "1_0", "nan" and other scripts' digits; a
+    reading is none of these, so they are refused here as in the fast path.
+    """
+    candidate = text.replace("\u2212", "-").replace(" ", "")
+    if candidate.count(",") == 1 and "." not in candidate:
+        candidate = candidate.replace(",", ".")
+    if not _PLAIN_NUMBER.fullmatch(candidate):
+        raise ValueError(f"'{one_line(text, 40)}' is not a number")
+    value = float(candidate)
+    if not math.isfinite(value):
+        raise ValueError(f"'{text}' is not a finite number")
+    return value
+
+
+@dataclass
+class ParsedReadings:
+    """The readable rows of a sheet.
+
+    ``values[key]`` is a float array over the *used* rows (NaN for a blank
+    optional cell, text columns as object arrays); ``row_index`` maps each used
+    row back to its sheet row; ``errors`` lists every unreadable cell.
+    """
+
+    values: dict[str, np.ndarray]
+    row_index: np.ndarray
+    errors: list[CellError] = field(default_factory=list)
+
+    @property
+    def n(self) -> int:
+        return int(self.row_index.size)
+
+    def __getitem__(self, key: str) -> np.ndarray:
+        return self.values[key]
+
+
+_FLOAT_CHUNK = 4_096
+
+
+def _floats(texts: list[str]) -> np.ndarray:
+    """``np.array(texts, dtype=float)`` in chunks: one call on a million strings holds the
+    GIL for ~0.3 s, which freezes the window while a worker thread parses."""
+    if len(texts) <= _FLOAT_CHUNK:
+        return np.array(texts, dtype=float)
+    out = np.empty(len(texts))
+    for start in range(0, len(texts), _FLOAT_CHUNK):
+        out[start:start + _FLOAT_CHUNK] = np.array(texts[start:start + _FLOAT_CHUNK], dtype=float)
+    return out
+
+
+class ReadingsSheet:
+    """Rows of raw cell text under a fixed list of typed columns."""
+
+    def __init__(self, columns: Sequence[Column], rows: Iterable[Sequence[str]] = ()) -> None:
+        self.columns: tuple[Column, ...] = tuple(columns)
+        self.rows: list[list[str]] = []
+        for row in rows:
+            self.rows.append(self._fit_row(row))
+
+    def _fit_row(self, row: Sequence[str]) -> list[str]:
+        cells = ["" if c is None else str(c) for c in row][: len(self.columns)]
+        return cells + [""] * (len(self.columns) - len(cells))
+
+    # -- access ---------------------------------------------------------
+    @property
+    def row_count(self) -> int:
+        return len(self.rows)
+
+    @property
+    def column_count(self) -> int:
+        return len(self.columns)
+
+    def column_index(self, key: str) -> int:
+        for i, column in enumerate(self.columns):
+            if column.key == key:
+                return i
+        raise KeyError(key)
+
+    def text(self, row: int, column: int) -> str:
+        return self.rows[row][column]
+
+    def is_blank_row(self, row: int) -> bool:
+        return all(not c.strip() for c in self.rows[row])
+
+    def cell_error(self, row: int, column: int) -> str | None:
+        """Why a cell cannot be read, or ``None`` if it is fine (blank rows are fine)."""
+        if self.is_blank_row(row):
+            return None
+        try:
+            self.columns[column].parse(self.rows[row][column])
+        except ValueError as exc:
+            return str(exc)
+        return None
+
+    # -- edits ----------------------------------------------------------
+    def set_text(self, row: int, column: int, text: str) -> None:
+        while row >= len(self.rows):
+            self.rows.append([""] * len(self.columns))
+        self.rows[row][column] = text
+
+    def insert_rows(self, at: int, rows: Sequence[Sequence[str]]) -> None:
+        self.rows[at:at] = [self._fit_row(r) for r in rows]
+
+    def remove_rows(self, at: int, count: int) -> list[list[str]]:
+        removed = self.rows[at : at + count]
+        del self.rows[at : at + count]
+        return removed
+
+    def replace_all(self, rows: Iterable[Sequence[str]]) -> None:
+        self.rows = [self._fit_row(r) for r in rows]
+
+    def adopt_rows(self, rows: list[list[str]], checked: bool = False) -> None:
+        """Take ``rows`` as they are (no copy): each must already hold one string per column.
+        ``checked``: the caller guarantees it (rows from :func:`map_columns`), skip the scan."""
+        width = len(self.columns)
+        if not checked and rows and not all(type(r) is list and len(r) == width for r in rows):
+            raise ValueError("rows do not match the columns")
+        self.rows = rows
+
+    def copy_rows(self) -> list[list[str]]:
+        return [list(r) for r in self.rows]
+
+    # -- parsing --------------------------------------------------------
+    def _parse_fast(self) -> ParsedReadings | None:
+        """Vectorised parse when every filled column is plain numbers (large signal files,
+        long runs); anything else — a unit, DMS, a blank cell, text — takes the cell-by-cell
+        path, which gives the same values and says what is wrong where."""
+        if not self.rows:
+            return None
+        out: dict[str, np.ndarray] = {}
+        for c, column in enumerate(self.columns):
+            texts = [row[c] for row in self.rows]
+            if not column.required and not any(t.strip() for t in texts):
+                out[column.key] = (np.full(len(texts), None, dtype=object)
+                                   if column.kind is ColumnKind.TEXT else np.full(len(texts), np.nan))
+                continue
+            if column.kind is ColumnKind.TEXT:
+                return None
+            joined = "\x1f".join(texts)
+            if "_" in joined or not joined.isascii():  # numpy reads "1_0" as 10: not a reading
+                return None
+            try:
+                values = _floats(texts)
+            except ValueError:
+                return None
+            if not np.all(np.isfinite(values)):
+                return None
+            if column.kind is ColumnKind.INTEGER and not (
+                    np.all(values == np.round(values)) and np.all(np.abs(values) <= MAX_INTEGER)):
+                return None
+            out[column.key] = values
+        if not any(c.required for c in self.columns):
+            return None
+        return ParsedReadings(out, np.arange(len(self.rows)), [])
+
+    def parse(self) -> ParsedReadings:
+        """Parse every non-blank row; rows with an unreadable cell are left out."""
+        fast = self._parse_fast()
+        if fast is not None:
+            return fast
+        errors: list[CellError] = []
+        kept_rows: list[int] = []
+        kept: list[list[object]] = []
+        for r, row in enumerate(self.rows):
+            if all(not c.strip() for c in row):
+                continue
+            values: list[object] = []
+            ok = True
+            for c, column in enumerate(self.columns):
+                try:
+                    values.append(column.parse(row[c]))
+                except ValueError as exc:
+                    errors.append(CellError(r, c, column.key, row[c], str(exc)))
+                    ok = False
+            if ok:
+                kept_rows.append(r)
+                kept.append(values)
+        out: dict[str, np.ndarray] = {}
+        for c, column in enumerate(self.columns):
+            cells = [v[c] for v in kept]
+            if column.kind is ColumnKind.TEXT:
+                out[column.key] = np.array(cells, dtype=object)
+            else:
+                out[column.key] = np.array(
+                    [np.nan if v is None else float(v) for v in cells], dtype=float
+                )
+        return ParsedReadings(out, np.array(kept_rows, dtype=int), errors)

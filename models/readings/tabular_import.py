@@ -1,0 +1,247 @@
+"""Read tables of readings from CSV (any usual encoding and delimiter) and XLSX files.
+
+CSV: UTF-8 with or without BOM, GBK (Chinese Windows), comma, semicolon or tab
+delimited; with semicolons, a decimal comma (``12,5``) is turned into a point.
+XLSX: the first worksheet, read with openpyxl. Every cell comes back as text
+so the readings sheet keeps exactly what the file holds.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from models.readings.angles import AngleParseError, parse_angle_deg
+from models.readings.sheet import Column
+
+__all__ = ["TableImportError", "RawTable", "map_columns", "read_table", "split_pasted_text"]
+
+
+class TableImportError(ValueError):
+    """A file could not be read as a table; the message names the file and what is wrong."""
+
+
+#: Limits of a readings file: no readings file comes near them, a hostile one does.
+MAX_ROWS = 5_000_000
+MAX_COLUMNS = 64
+MAX_CELL_CHARS = 1_000
+#: A run of empty sheet rows longer than this ends the reading with an error.
+MAX_EMPTY_XLSX_ROWS = 10_000
+#: An XLSX workbook whose parts expand beyond this (a "zip bomb") is refused unread.
+MAX_XLSX_EXPANDED_BYTES = 768 * 1024 * 1024
+
+
+@dataclass
+class RawTable:
+    """Text cells of a file. ``line_numbers[i]`` is the 1-based file row of ``rows[i]``."""
+
+    source: str
+    header: list[str] | None
+    rows: list[list[str]]
+    line_numbers: list[int]
+
+
+_DECIMAL_COMMA = re.compile(r"^[+\-\u2212]?\d+,\d+$")
+
+
+def _decode(data: bytes, source: str) -> str:
+    if data.startswith(b"\xef\xbb\xbf"):
+        return data[3:].decode("utf-8")
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        return data.decode("utf-16")
+    for encoding in ("utf-8", "gb18030"):
+        try:
+            return data.decode(encoding)
+        except UnicodeDecodeError:
+            continue
+    raise TableImportError(f"{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again")
+
+
+def _sniff_delimiter(text: str) -> str:
+    lines = [ln for ln in text[:65536].splitlines() if ln.strip()][:20]  # not all 1M lines
+    best, best_score = ",", -1
+    for delim in ("\t", ";", ","):
+        counts = [ln.count(delim) for ln in lines]
+        if not counts or min(counts) == 0:
+            continue
+        # the delimiter appears the same number of times on most lines
+        score = sum(1 for c in counts if c == counts[0]) * 10 + min(counts)
+        if score > best_score:
+            best, best_score = delim, score
+    return best
+
+
+def split_pasted_text(text: str) -> list[list[str]]:
+    """Cells of a block pasted from a spreadsheet (tab-separated) or typed as CSV."""
+    text = text.replace("\r\n", "\n").replace("\r", "\n").rstrip("\n")
+    if not text:
+        return []
+    delim = "\t" if "\t" in text else _sniff_delimiter(text)
+    if delim not in text:
+        return [[line] for line in text.split("\n")]
+    rows = [list(r) for r in csv.reader(io.StringIO(text), delimiter=delim)]
+    if delim == ";":
+        rows = [[_fix_decimal_comma(c) for c in r] for r in rows]
+    return rows
+
+
+def _fix_decimal_comma(cell: str) -> str:
+    stripped = cell.strip()
+    return stripped.replace(",", ".") if _DECIMAL_COMMA.match(stripped) else cell
+
+
+def _looks_like_header(cells: Sequence[str]) -> bool:
+    for cell in cells:
+        if not cell.strip():
+            continue
+        try:
+            parse_angle_deg(cell)
+        except AngleParseError:
+            return True
+    return False
+
+
+def read_table(path: str | Path) -> RawTable:
+    """Read a CSV or XLSX file into text cells, detecting a header row."""
+    path = Path(path)
+    source = str(path)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise TableImportError(f"{source}: cannot read ({exc.strerror or exc})") from None
+    if path.suffix.lower() in (".xlsx", ".xlsm"):
+        grid = _read_xlsx(data, source)
+    else:
+        text = _decode(data, source)
+        # universal newlines: CR-only files (old Mac, some instruments) read like the others
+        text = text.replace("\r\n", "\n").replace("\r", "\n")
+        delim = _sniff_delimiter(text)
+        grid = _read_csv(text, delim, source)
+        if delim == ";":
+            grid = [[_fix_decimal_comma(c) for c in r] for r in grid]
+    filled = [i for i, row in enumerate(grid) if any(c.strip() for c in row)]
+    if not filled:
+        raise TableImportError(f"{source}: the file holds no rows")
+    # blank rows inside the data stay (a gap keeps its place: a sample's phase can depend
+    # on its row); the sheet leaves them out of every analysis that does not need them
+    numbered = [(i + 1, grid[i]) for i in range(filled[0], filled[-1] + 1)]
+    header = None
+    if _looks_like_header(numbered[0][1]):
+        header = [c.strip() for c in numbered[0][1]]
+        numbered = numbered[1:]
+        while numbered and not any(c.strip() for c in numbered[0][1]):
+            numbered = numbered[1:]
+    return RawTable(source, header, [r for _, r in numbered], [n for n, _ in numbered])
+
+
+def _check_row(row: list[str], line: int, source: str) -> None:
+    if len(row) > MAX_COLUMNS and any(c.strip() for c in row[MAX_COLUMNS:]):
+        raise TableImportError(f"{source}: row {line}: {len(row)} columns; a readings file has "
+                               f"at most {MAX_COLUMNS}")
+    for col, cell in enumerate(row, 1):
+        if len(cell) > MAX_CELL_CHARS:
+            raise TableImportError(f"{source}: row {line}, column {col}: a cell of {len(cell)} "
+                                   f"characters is not a reading (at most {MAX_CELL_CHARS})")
+
+
+def _read_csv(text: str, delim: str, source: str) -> list[list[str]]:
+    reader = csv.reader(io.StringIO(text), delimiter=delim, strict=True)
+    grid: list[list[str]] = []
+    try:
+        for row in reader:
+            _check_row(row, reader.line_num, source)
+            grid.append(row[:MAX_COLUMNS])
+            if len(grid) > MAX_ROWS:
+                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
+    except csv.Error as exc:
+        what = ("a quote is not closed" if any(w in str(exc) for w in ("field larger", "EOF",
+                                                                        "end of data"))
+                else str(exc))
+        raise TableImportError(f"{source}: row {reader.line_num}: cannot read the CSV ({what})") \
+            from None
+    return grid
+
+
+def _xlsx_expanded_size(data: bytes, source: str) -> int:
+    import zipfile
+
+    try:
+        with zipfile.ZipFile(io.BytesIO(data)) as archive:
+            return sum(info.file_size for info in archive.infolist())
+    except (zipfile.BadZipFile, OSError, ValueError) as exc:
+        raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
+
+
+def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
+    try:
+        import openpyxl
+    except ImportError:  # pragma: no cover - openpyxl is a dependency
+        raise TableImportError(f"{source}: reading XLSX needs openpyxl") from None
+    expanded = _xlsx_expanded_size(data, source)
+    if expanded > MAX_XLSX_EXPANDED_BYTES:
+        raise TableImportError(f"{source}: the workbook expands to {expanded / 2**20:.0f} MB, more "
+                               f"than the {MAX_XLSX_EXPANDED_BYTES / 2**20:.0f} MB a readings "
+                               "file needs: save the sheet as CSV")
+    try:
+        book = openpyxl.load_workbook(io.BytesIO(data), read_only=True, data_only=True)
+    except Exception as exc:  # noqa: BLE001 - openpyxl raises many types for damaged files
+        raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
+    try:
+        sheet = book.worksheets[0]
+        # the stored dimension can claim a million rows by 16384 columns: read what is there
+        sheet.reset_dimensions()
+        grid: list[list[str]] = []
+        empty_run = 0
+        for line, row in enumerate(sheet.iter_rows(max_col=MAX_COLUMNS + 1, values_only=True), 1):
+            if all(v is None for v in row):
+                empty_run += 1
+                if empty_run > MAX_EMPTY_XLSX_ROWS:
+                    raise TableImportError(
+                        f"{source}: more than {MAX_EMPTY_XLSX_ROWS} empty rows after row "
+                        f"{line - empty_run}: keep the readings in one block (a stray far cell?)")
+                grid.append([])
+                continue
+            empty_run = 0
+            cells = ["" if v is None else (repr(v) if isinstance(v, float) else str(v))
+                     for v in row]
+            _check_row(cells, line, source)
+            grid.append(cells[:MAX_COLUMNS])
+            if line > MAX_ROWS:
+                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
+        return grid
+    except TableImportError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - a damaged sheet fails in many ways while read
+        raise TableImportError(f"{source}: the workbook's sheet cannot be read ({exc})") from None
+    finally:
+        book.close()
+
+
+def map_columns(table: RawTable, columns: Sequence[Column]) -> list[list[str]]:
+    """Reorder a table's cells into ``columns`` order, by header name or by position.
+
+    Header names match a column's key or title, case-insensitively. A missing
+    required column is an error naming the file and the column.
+    """
+    if table.header is None:
+        width = len(columns)
+        return [(list(r) + [""] * width)[:width] for r in table.rows]
+    names = [h.strip().lower() for h in table.header]
+    positions: list[int | None] = []
+    for column in columns:
+        wanted = {column.key.lower(), column.title.lower(), column.header.lower()}
+        found = next((i for i, n in enumerate(names) if n in wanted), None)
+        if found is None and column.required:
+            raise TableImportError(
+                f"{table.source}: row 1 (header): no column '{column.key}'; "
+                f"expected headers {','.join(c.key for c in columns)}"
+            )
+        positions.append(found)
+    out = []
+    for row in table.rows:
+        out.append([row[p].strip() if p is not None and p < len(row) else "" for p in positions])
+    return out

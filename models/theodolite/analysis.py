@@ -1,0 +1,158 @@
+"""Theodolite run as a workbench: readings columns, settings, JSON and summary."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.theodolite.model import TheodoliteResult, analyze_run
+from models.theodolite.report import theodolite_certificate
+
+__all__ = ["THEODOLITE"]
+
+COLUMNS = (
+    Column("theta_deg", "θ", "deg", ColumnKind.ANGLE_DEG,
+           help="Indicated angle of the axis under test (decimal or D°M'S\")"),
+    Column("azimuth_deg", "A", "deg", ColumnKind.ANGLE_DEG,
+           help="Theodolite horizontal reading after autocollimating on the mirror"),
+    Column("elevation_deg", "E / V", "deg", ColumnKind.ANGLE_DEG,
+           help="Theodolite vertical reading: elevation (OZ down), or zenith angle V "
+                "if chosen in the set-up (E = V − 90°)"),
+    Column("run", "run", "", ColumnKind.INTEGER, required=False,
+           help="Pass number when the run was repeated (optional)"),
+    Column("direction", "dir", "+/−", ColumnKind.TEXT, required=False, choices=("+", "-"),
+           help="Approach direction of the pass: + forward, − backward (optional)"),
+)
+
+DEFAULT_SETTINGS: dict[str, Any] = {
+    "reference_row": 0,  # 0: the row with θ closest to 0; otherwise a 1-based row number
+    "vertical_reading": "elevation",  # or "zenith"
+    "method": "elevation",  # or "azimuth"
+    "psi_max_deg": 45.0,
+    "beta_max_deg": 45.0,
+    "accuracy_arcsec": 0.5,
+}
+
+
+def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
+    s = THEODOLITE.settings_with_defaults(settings)
+    for key, low, high in (("reference_row", 0, 10_000_000), ("psi_max_deg", 0.001, 89.0),
+                           ("beta_max_deg", 0.001, 89.0), ("accuracy_arcsec", 0.0, 3600.0)):
+        value = s[key]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or \
+                not math.isfinite(value) or not low <= value <= high:
+            raise SettingsError(f"{key} must be a number from {low:g} to {high:g}, not {value!r}")
+    if s["reference_row"] != int(s["reference_row"]):
+        raise SettingsError(f"reference_row must be a whole number, not {s['reference_row']}")
+    for key, choices in (("vertical_reading", ("elevation", "zenith")),
+                         ("method", ("elevation", "azimuth"))):
+        if s[key] not in choices:
+            raise SettingsError(f"{key} must be one of {', '.join(choices)}, not {s[key]!r}")
+    return s
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
+    s = _settings(settings)
+    if parsed.n < 4:
+        raise ValueError(f"{parsed.n} usable readings; at least 4 are needed")
+    elevation = parsed["elevation_deg"]
+    if s["vertical_reading"] == "zenith":
+        elevation = elevation - 90.0
+    reference = int(s["reference_row"])
+    reference_index = None
+    if reference > 0:
+        matches = np.nonzero(parsed.row_index == reference - 1)[0]
+        if matches.size == 0:
+            raise SettingsError(f"reference row {reference} is blank, unreadable or missing")
+        reference_index = int(matches[0])
+    directions = None
+    dir_col = parsed["direction"]
+    if any(d for d in dir_col):
+        directions = np.array([-1.0 if d == "-" else 1.0 for d in dir_col])
+    return analyze_run(
+        parsed["theta_deg"], parsed["azimuth_deg"], elevation,
+        reference_index=reference_index, method=str(s["method"]),
+        psi_max_deg=float(s["psi_max_deg"]), beta_max_deg=float(s["beta_max_deg"]),
+        accuracy_arcsec=float(s["accuracy_arcsec"]) or None, directions=directions,
+    )
+
+
+def to_json(result: TheodoliteResult) -> dict[str, Any]:
+    ident = result.identification
+    u = ident.uncertainty_deg
+    out: dict[str, Any] = {
+        "theta_deg": result.theta_deg.tolist(),
+        "raw_error_arcsec": result.raw_error_arcsec.tolist(),
+        "model_error_arcsec": result.model_error_arcsec.tolist(),
+        "corrected_error_arcsec": result.corrected_error_arcsec.tolist(),
+        "psi_deg": ident.setup.psi_deg,
+        "alpha_deg": ident.setup.alpha_deg,
+        "beta_deg": ident.setup.beta_deg,
+        "r_squared": ident.r_squared,
+        "psi_u_deg": float(u[0]),
+        "alpha_u_deg": float(u[1]),
+        "beta_u_deg": float(u[2]),
+        "residual_rms_arcsec": ident.residual_rms_arcsec,
+        "method": ident.method,
+        "corrected_stats_arcsec": result.corrected_stats.as_dict(),
+        "raw_stats_arcsec": result.raw_stats.as_dict(),
+        "sign_convention": SIGN_CONVENTION,
+        "warnings": result.warnings,
+    }
+    if result.iso230 is not None:
+        iso = result.iso230
+        out["iso230_arcsec"] = iso.figures
+        per_point: dict[str, Any] = {"theta_deg": iso.positions.tolist()}
+        for name, stats in (("forward", iso.forward), ("backward", iso.backward)):
+            if stats is not None:
+                per_point[f"{name}_mean"] = stats.mean.tolist()
+                per_point[f"{name}_std"] = stats.std.tolist()
+        if iso.reversal is not None:
+            per_point["reversal"] = iso.reversal.tolist()
+        if iso.bidirectional_repeatability is not None:
+            per_point["bidirectional_repeatability"] = iso.bidirectional_repeatability.tolist()
+        out["iso230_per_point_arcsec"] = per_point
+    return out
+
+
+def summary(result: TheodoliteResult) -> str:
+    ident = result.identification
+    u = ident.uncertainty_deg * 3600.0
+    s, c, r = ident.setup, result.corrected_stats, result.raw_stats
+    lines = [
+        f"Set-up identified from the {ident.method} readings ({r.n} points, "
+        f"reference θ = {result.reference_theta_deg:g}°):",
+        f"  axis tilt       ψ = {s.psi_deg:.4f}° ± {u[0]:.2f}\"",
+        f"  tilt direction  α = {s.alpha_deg:.4f}° ± {u[1]:.2f}\"",
+        f"  mirror normal   β = {s.beta_deg:.4f}° ± {u[2]:.2f}\"",
+        f"  R² = {ident.r_squared:.8f}, residual RMS = {ident.residual_rms_arcsec:.3f}\"",
+        f"Raw error        {r.min:+.2f}\" … {r.max:+.2f}\" (peak-to-peak {r.peak_to_peak:.2f}\")",
+        f"Corrected error  {c.min:+.2f}\" … {c.max:+.2f}\" (peak-to-peak {c.peak_to_peak:.2f}\", "
+        f"RMS {c.rms:.2f}\")",
+    ]
+    if result.iso230 is not None:
+        figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
+        lines.append(f"ISO 230-2: {figs}")
+    return "\n".join(lines)
+
+
+THEODOLITE = AnalysisKind(
+    key="theodolite",
+    title="Theodolite run",
+    columns=COLUMNS,
+    default_settings=DEFAULT_SETTINGS,
+    analyze=analyze,
+    to_json=to_json,
+    summary=summary,
+    sample_file="theodolite_sample.csv",
+    method_reference="Tian L. et al., Test method of angle error of limited rotation axis "
+                     "system, Acta Photonica Sinica 46(11):1112005 (2017)",
+    certificate=theodolite_certificate,
+    check_settings=_settings,
+    presenter="widgets.theodolite.presenter:TheodolitePresenter",
+)

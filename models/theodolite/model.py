@@ -1,0 +1,592 @@
+"""Theodolite run: limited-rotation axis measured with an autocollimating theodolite.
+
+Seed 000 (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017). Frame O-XYZ
+of the theodolite, OZ plumb down, OX the azimuth zero. Axis under test
+``P = [-sinψ cosα, -sinψ sinα, cosψ]``, mirror normal at the reference pose
+``n = [cosβ, 0, -sinβ]``. Rotating ``n`` about ``P`` by θ (right-handed
+Rodrigues formula; the seed's eq (1) prints the (1,3) element with the wrong
+sign, eqs (2)–(4) use the standard one) gives ``n'``; the theodolite reads
+``A = atan2(y', x')`` and ``E = asin(z')``. The set-up induced error is
+``ζ(θ) = A(θ) − θ``.
+
+Identification from the elevations: ``z'(θ) = a + b cosθ + c sinθ`` exactly,
+so ``sin E`` is linear in (1, cosθ, sinθ). Linear least squares gives a, b, c
+without a starting guess; (ψ, α, β) follow in closed form (two roots, one near
+ψ = 90°); the admissible one is polished by nonlinear least squares on E.
+
+Angles are in degrees at the interface, errors in arcseconds.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.lazy_optimize import least_squares
+from models.readings.angles import ARCSEC_PER_RAD
+from models.uncertainty.error_stats import ErrorStats, error_stats
+from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
+
+__all__ = [
+    "Identification",
+    "SetupParameters",
+    "TheodoliteResult",
+    "analyze_run",
+    "elevation_coefficients",
+    "forward_readings",
+    "identify_from_azimuth",
+    "identify_from_elevations",
+    "induced_error_arcsec",
+    "rotated_normal",
+    "setups_from_coefficients",
+    "simulate_readings",
+]
+
+D2R = math.pi / 180.0
+
+
+
+@dataclass(frozen=True)
+class SetupParameters:
+    """Set-up misalignment: axis tilt ψ, tilt direction α, mirror normal β (degrees).
+
+    (ψ, α) and (−ψ, α + 180°) describe the same axis; :meth:`canonical` gives
+    ψ ≥ 0 and α in [0°, 360°).
+    """
+
+    psi_deg: float
+    alpha_deg: float
+    beta_deg: float
+
+    def canonical(self) -> SetupParameters:
+        psi, alpha = self.psi_deg, self.alpha_deg
+        if psi < 0:
+            psi, alpha = -psi, alpha + 180.0
+        return SetupParameters(float(psi), float(alpha % 360.0), float(self.beta_deg))
+
+    def as_array(self) -> np.ndarray:
+        return np.array([self.psi_deg, self.alpha_deg, self.beta_deg])
+
+
+def rotated_normal(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float) -> np.ndarray:
+    """Mirror normal after rotating the axis by θ: array of shape (3, len(θ)) = (x', y', z')."""
+    th = np.asarray(theta_deg, dtype=float) * D2R
+    psi, alpha, beta = psi_deg * D2R, alpha_deg * D2R, beta_deg * D2R
+    p = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha), math.cos(psi)])
+    n = np.array([math.cos(beta), 0.0, -math.sin(beta)])
+    cross = np.cross(p, n)
+    dot = float(p @ n)
+    c, s = np.cos(th), np.sin(th)
+    return n[:, None] * c + cross[:, None] * s + (p * dot)[:, None] * (1.0 - c)
+
+
+def forward_readings(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float):
+    """Theodolite azimuth A and elevation E (degrees) at axis angles θ (eqs 2–6).
+
+    A is unwrapped to lie within ±180° of θ.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    x, y, z = rotated_normal(theta, psi_deg, alpha_deg, beta_deg)
+    azimuth = np.degrees(np.arctan2(y, x))
+    azimuth = theta + (azimuth - theta + 180.0) % 360.0 - 180.0
+    elevation = np.degrees(np.arcsin(np.clip(z, -1.0, 1.0)))
+    return azimuth, elevation
+
+
+def induced_error_arcsec(theta_deg, psi_deg: float, alpha_deg: float, beta_deg: float):
+    """Set-up induced error ζ(θ) = A(θ) − θ in arcsec (eq 7)."""
+    theta = np.asarray(theta_deg, dtype=float)
+    x, y, _ = rotated_normal(theta, psi_deg, alpha_deg, beta_deg)
+    th = theta * D2R
+    # atan2 of the normal rotated back by θ: A − θ without cancellation
+    diff = np.arctan2(y * np.cos(th) - x * np.sin(th), x * np.cos(th) + y * np.sin(th))
+    return diff * ARCSEC_PER_RAD
+
+
+def elevation_coefficients(psi_deg: float, alpha_deg: float, beta_deg: float):
+    """(a, b, c) with z'(θ) = a + b cosθ + c sinθ = sin E(θ)."""
+    psi, alpha, beta = psi_deg * D2R, alpha_deg * D2R, beta_deg * D2R
+    a = -math.cos(psi) * math.sin(psi) * math.cos(alpha) * math.cos(beta) - math.cos(
+        psi
+    ) ** 2 * math.sin(beta)
+    b = -math.sin(beta) - a
+    c = math.sin(psi) * math.sin(alpha) * math.cos(beta)
+    return a, b, c
+
+
+def setups_from_coefficients(a: float, b: float, c: float) -> list[SetupParameters]:
+    """Every set-up (ψ ≥ 0, |ψ| < 90°) whose elevation curve has coefficients (a, b, c).
+
+    sinβ = −(a + b); sinψ sinα = c / cosβ; with u = cos²ψ the remaining
+    equation becomes u² + u(2a sinβ − (1 − q²)cos²β) + a² = 0. Each admissible
+    root u gives one set-up. With noisy coefficients whose roots turn complex,
+    the double root (the closest real solution) is returned.
+    """
+    sin_beta = float(np.clip(-(a + b), -1.0, 1.0))
+    beta = math.asin(sin_beta)
+    cos_beta = math.cos(beta)
+    if cos_beta < 1e-12:
+        return []
+    q = float(np.clip(c / cos_beta, -1.0, 1.0))
+    lin = 2.0 * a * sin_beta - (1.0 - q * q) * cos_beta**2
+    disc = lin * lin - 4.0 * a * a
+    if disc < 0:
+        roots = [-lin / 2.0]
+    else:
+        r = math.sqrt(disc)
+        roots = [(-lin + r) / 2.0, (-lin - r) / 2.0]
+    out: list[SetupParameters] = []
+    for u in roots:
+        if not 0.0 < u <= 1.0 + 1e-12:
+            continue
+        u = min(u, 1.0)
+        cpsi = math.sqrt(u)
+        s = -(a + u * sin_beta) / (cpsi * cos_beta)  # sinψ cosα
+        spsi = math.hypot(s, q)
+        psi = math.atan2(spsi, cpsi)
+        alpha = math.atan2(q, s) if spsi > 0 else 0.0
+        out.append(SetupParameters(math.degrees(psi), math.degrees(alpha), math.degrees(beta)))
+    return [p.canonical() for p in out]
+
+
+def _elevation_model(params_rad: np.ndarray, theta_rad: np.ndarray) -> np.ndarray:
+    psi, alpha, beta = params_rad
+    cp, sp, ca, sa, cb, sb = (
+        math.cos(psi), math.sin(psi), math.cos(alpha), math.sin(alpha),
+        math.cos(beta), math.sin(beta),
+    )
+    a = -cp * sp * ca * cb - cp * cp * sb
+    z = a + (-sb - a) * np.cos(theta_rad) + sp * sa * cb * np.sin(theta_rad)
+    return np.arcsin(np.clip(z, -1.0, 1.0))
+
+
+def _elevation_jacobian(params_rad: np.ndarray, theta_rad: np.ndarray) -> np.ndarray:
+    psi, alpha, beta = params_rad
+    cp, sp, ca, sa, cb, sb = (
+        math.cos(psi), math.sin(psi), math.cos(alpha), math.sin(alpha),
+        math.cos(beta), math.sin(beta),
+    )
+    da = np.array([
+        -math.cos(2 * psi) * ca * cb + math.sin(2 * psi) * sb,
+        cp * sp * sa * cb,
+        cp * sp * ca * sb - cp * cp * cb,
+    ])
+    db = -da + np.array([0.0, 0.0, -cb])
+    dc = np.array([cp * sa * cb, sp * ca * cb, -sp * sa * sb])
+    ct, st = np.cos(theta_rad), np.sin(theta_rad)
+    a = -cp * sp * ca * cb - cp * cp * sb
+    z = a + (-sb - a) * ct + sp * sa * cb * st
+    cos_e = np.sqrt(np.clip(1.0 - z * z, 1e-300, None))
+    dz = da[None, :] + ct[:, None] * db[None, :] + st[:, None] * dc[None, :]
+    return dz / cos_e[:, None]
+
+
+@dataclass
+class Identification:
+    """Identified set-up with its standard uncertainties and fit quality.
+
+    ``covariance_deg2`` is the 3×3 covariance of (ψ, α, β) in deg².
+    ``residuals_arcsec`` are observed minus fitted values of the fitted
+    quantity (elevation, or azimuth error for that route).
+    """
+
+    setup: SetupParameters
+    covariance_deg2: np.ndarray
+    residuals_arcsec: np.ndarray
+    r_squared: float
+    residual_rms_arcsec: float
+    method: str
+    candidates: list[SetupParameters] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def uncertainty_deg(self) -> np.ndarray:
+        return np.sqrt(np.clip(np.diag(self.covariance_deg2), 0.0, None))
+
+    @property
+    def correlation(self) -> np.ndarray:
+        u = self.uncertainty_deg
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return self.covariance_deg2 / np.outer(u, u)
+
+
+PARAMETER_NAMES = ("ψ", "α", "β")
+
+
+def _covariance(jac_rad: np.ndarray, residuals_rad: np.ndarray) -> np.ndarray:
+    n, p = jac_rad.shape
+    dof = max(n - p, 1)
+    sigma2 = float(residuals_rad @ residuals_rad) / dof
+    try:
+        cov = np.linalg.pinv(jac_rad.T @ jac_rad) * sigma2
+    except np.linalg.LinAlgError:
+        cov = np.full((p, p), np.inf)
+    return cov * (180.0 / math.pi) ** 2
+
+
+def _r_squared(observed: np.ndarray, residuals: np.ndarray) -> float:
+    ss_tot = float(np.sum((observed - observed.mean()) ** 2))
+    ss_res = float(residuals @ residuals)
+    return 1.0 - ss_res / ss_tot if ss_tot > 0 else float("nan")
+
+
+def _within(p: SetupParameters, psi_max_deg: float, beta_max_deg: float) -> bool:
+    return p.psi_deg <= psi_max_deg + 1e-9 and abs(p.beta_deg) <= beta_max_deg + 1e-9
+
+
+def identify_from_elevations(
+    theta_deg,
+    elevation_deg,
+    psi_max_deg: float = 45.0,
+    beta_max_deg: float = 45.0,
+) -> Identification:
+    """Identify (ψ, α, β) from the elevation readings, with no starting guess.
+
+    Parameters
+    ----------
+    theta_deg, elevation_deg : array
+        Axis angle relative to the reference pose and theodolite elevation
+        (degrees, OZ down), at least 3 points.
+    psi_max_deg, beta_max_deg : float
+        Admissible bounds: the root with |ψ| near 90° is rejected by them.
+
+    Raises
+    ------
+    ValueError
+        If there are fewer than 4 points or no admissible set-up exists.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    elev = np.asarray(elevation_deg, dtype=float)
+    if theta.size < 4:
+        raise ValueError("at least 4 readings are needed to identify ψ, α, β")
+    th = theta * D2R
+    e_rad = elev * D2R
+    design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
+    (a, b, c), *_ = np.linalg.lstsq(design, np.sin(e_rad), rcond=None)
+    candidates = setups_from_coefficients(a, b, c)
+    starts = [p for p in candidates if _within(p, psi_max_deg, beta_max_deg)]
+    if not starts:
+        starts = candidates[-1:] if candidates else []
+    if not starts:
+        raise ValueError("the elevations fit no set-up (sin E is not of the form a + b cos θ + "
+                         "c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column")
+
+    best = None
+    for start in starts:
+        fit = least_squares(
+            lambda x: _elevation_model(x, th) - e_rad,
+            np.radians(start.as_array()),
+            jac=lambda x: _elevation_jacobian(x, th),
+            method="lm",
+            xtol=1e-15,
+            ftol=1e-15,
+            gtol=1e-15,
+        )
+        polished = SetupParameters(*np.degrees(fit.x)).canonical()
+        cost = float(fit.fun @ fit.fun)
+        if not _within(polished, psi_max_deg, beta_max_deg):
+            continue
+        if best is None or cost < best[0] * (1 - 1e-9) - 1e-30:
+            best = (cost, polished, fit)
+    if best is None:
+        raise ValueError(
+            f"no set-up with ψ ≤ {psi_max_deg:g}° and |β| ≤ {beta_max_deg:g}° fits the elevations"
+        )
+    _, setup, fit = best
+    jac = _elevation_jacobian(np.radians(setup.as_array()), th)
+    residuals = _elevation_model(np.radians(setup.as_array()), th) - e_rad
+    cov = _covariance(jac, residuals)
+    ident = Identification(
+        setup=setup,
+        covariance_deg2=cov,
+        residuals_arcsec=-residuals * ARCSEC_PER_RAD,
+        r_squared=_r_squared(e_rad, residuals),
+        residual_rms_arcsec=float(np.sqrt(np.mean(residuals**2))) * ARCSEC_PER_RAD,
+        method="elevation",
+        candidates=candidates,
+    )
+    ident.warnings.extend(_separation_warnings(ident))
+    return ident
+
+
+def _azimuth_residuals(x_rad: np.ndarray, theta_deg: np.ndarray, zeta_arcsec: np.ndarray):
+    psi, alpha, beta = np.degrees(x_rad)
+    return (induced_error_arcsec(theta_deg, psi, alpha, beta) - zeta_arcsec) / ARCSEC_PER_RAD
+
+
+def identify_from_azimuth(
+    theta_deg,
+    raw_error_arcsec,
+    psi_max_deg: float = 45.0,
+    beta_max_deg: float = 45.0,
+    start: SetupParameters | None = None,
+) -> Identification:
+    """Identify (ψ, α, β) from the azimuth errors ζ'_i = A_i − θ_i (the seed's second route).
+
+    This route absorbs any part of the axis' own error that looks like the
+    model (a scale error, say); the result carries that warning. Without a
+    ``start`` a coarse grid over (ψ, α, β) seeds the nonlinear fit.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    zeta = np.asarray(raw_error_arcsec, dtype=float)
+    if theta.size < 4:
+        raise ValueError("at least 4 readings are needed to identify ψ, α, β")
+    grid_starts: list[np.ndarray] = []
+    if start is not None:
+        grid_starts.append(np.radians(start.as_array()))
+    psis = np.linspace(0.5, min(psi_max_deg, 15.0), 6)
+    for psi in psis:
+        for alpha in np.arange(0.0, 360.0, 30.0):
+            for beta in (-5.0, 0.0, 5.0):
+                grid_starts.append(np.radians([psi, alpha, beta]))
+    costs = [float(np.sum(_azimuth_residuals(x, theta, zeta) ** 2)) for x in grid_starts]
+    order = np.argsort(costs)[:8]
+    best = None
+    for idx in order:
+        fit = least_squares(_azimuth_residuals, grid_starts[idx], args=(theta, zeta), method="lm",
+                            x_scale=np.array([0.05, 1.0, 0.05]))
+        polished = SetupParameters(*np.degrees(fit.x)).canonical()
+        if not _within(polished, psi_max_deg, beta_max_deg):
+            continue
+        cost = float(fit.fun @ fit.fun)
+        if best is None or cost < best[0]:
+            best = (cost, polished, fit)
+    if best is None:
+        raise ValueError("no admissible set-up fits the azimuth errors")
+    _, setup, fit = best
+    residuals = fit.fun
+    cov = _covariance(fit.jac, residuals)
+    ident = Identification(
+        setup=setup,
+        covariance_deg2=cov,
+        residuals_arcsec=-residuals * ARCSEC_PER_RAD,
+        r_squared=_r_squared(zeta / ARCSEC_PER_RAD, residuals),
+        residual_rms_arcsec=float(np.sqrt(np.mean(residuals**2))) * ARCSEC_PER_RAD,
+        method="azimuth",
+    )
+    ident.warnings.append(
+        "Identified from the azimuth errors: any part of the axis' own error that looks like "
+        "the set-up model (a scale error, say) is absorbed and removed from the result."
+    )
+    ident.warnings.extend(_separation_warnings(ident))
+    return ident
+
+
+def _separation_warnings(ident: Identification, limit: float = 0.999) -> list[str]:
+    corr = ident.correlation
+    out = []
+    for i in range(3):
+        for j in range(i + 1, 3):
+            r = corr[i, j]
+            if np.isfinite(r) and abs(r) > limit:
+                out.append(
+                    f"{PARAMETER_NAMES[i]} and {PARAMETER_NAMES[j]} cannot be separated on this "
+                    f"range (correlation {r:+.4f}); widen the range of θ."
+                )
+    if not np.all(np.isfinite(ident.uncertainty_deg)):
+        out.append("Some parameters are not determined by these readings (singular fit).")
+    return out
+
+
+@dataclass
+class TheodoliteResult:
+    """Everything the workbench, the CLI and the certificate show (arrays over used rows).
+
+    Errors are errors of indication, indicated − reference: the raw error is
+    (θ − θ₀) − (A − A₀), the negative of the seed's ζ' = A − θ (which is the
+    correction); ``model_error_arcsec`` = −ζ(θ) is the set-up's share of it.
+    """
+
+    theta_deg: np.ndarray
+    raw_error_arcsec: np.ndarray
+    model_error_arcsec: np.ndarray
+    model_uncertainty_arcsec: np.ndarray
+    corrected_error_arcsec: np.ndarray
+    identification: Identification
+    elevation_residuals_arcsec: np.ndarray
+    raw_stats: ErrorStats
+    corrected_stats: ErrorStats
+    reference_theta_deg: float
+    reference_index: int = 0  # the row where the theodolite was zeroed (its error is 0)
+    iso230: Iso230Result | None = None
+    warnings: list[str] = field(default_factory=list)
+
+
+def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:
+    """Standard uncertainty of ζ(θ) from the parameters' covariance (first order)."""
+    p = ident.setup.as_array()
+    steps = np.array([1e-6, 1e-5, 1e-6])
+    grads = []
+    for k in range(3):
+        hi, lo = p.copy(), p.copy()
+        hi[k] += steps[k]
+        lo[k] -= steps[k]
+        grads.append((induced_error_arcsec(theta_deg, *hi) - induced_error_arcsec(theta_deg, *lo))
+                     / (2 * steps[k]))
+    g = np.array(grads).T  # (n, 3) in arcsec/deg
+    cov = np.where(np.isfinite(ident.covariance_deg2), ident.covariance_deg2, 0.0)
+    return np.sqrt(np.clip(np.einsum("ij,jk,ik->i", g, cov, g), 0.0, None))
+
+
+_TRUE_ROTATION_MAX_ITERATIONS = 8
+
+
+def true_rotation_deg(azimuth_deg, setup: SetupParameters, iterations: int = 4) -> np.ndarray:
+    """Axis rotation that makes the theodolite read ``azimuth_deg``: solves A(t) = A_i.
+
+    Fixed-point iteration t ← A_i − ζ(t); |dζ/dθ| is of order ψ², so it
+    converges to 1e-12" in a few steps for any admissible set-up.
+    """
+    az = np.asarray(azimuth_deg, dtype=float)
+    rotation = az.copy()
+    for _ in range(iterations):
+        rotation = az - induced_error_arcsec(rotation, *setup.as_array()) / 3600.0
+    return rotation
+
+
+def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None = None) -> None:
+    """Refuse readings that cannot identify a set-up, before any fit (ValueError, one line).
+
+    Angles must be finite and physically possible (|E| ≤ 90°, |θ| and |A| within two
+    turns); at least 4 distinct θ; the design (1, cos θ, sin θ) well conditioned.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    for name, values, limit in (("theta_deg", theta, 720.0), ("azimuth_deg", azimuth_deg, 720.0),
+                                ("elevation_deg", elevation_deg, 90.0)):
+        values = np.asarray(values, dtype=float)
+        bad = np.nonzero(~np.isfinite(values) | (np.abs(values) > limit))[0]
+        if bad.size:
+            i = int(bad[0])
+            raise ValueError(f"reading {i + 1}, column '{name}': {values[i]:g}° is beyond ±{limit:g}° "
+                             "and cannot be a reading of this test")
+    distinct = np.unique(np.round(theta, 6))
+    if distinct.size == 1:
+        raise ValueError(f"all θ are equal ({theta[0]:g}°): the set-up cannot be identified; the "
+                         "axis must turn between readings")
+    if distinct.size < 4:
+        raise ValueError(f"{distinct.size} distinct θ; at least 4 are needed to identify ψ, α, β")
+    th = np.radians(distinct)
+    design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
+    singular = np.linalg.svd(design / np.linalg.norm(design, axis=0), compute_uv=False)
+    if not singular[-1] > 1e-8:
+        raise ValueError(f"θ spans only {np.ptp(distinct):.3g}°: too little rotation to identify "
+                         "the set-up")
+
+
+def analyze_run(
+    theta_deg,
+    azimuth_deg,
+    elevation_deg,
+    reference_index: int | None = None,
+    method: str = "elevation",
+    psi_max_deg: float = 45.0,
+    beta_max_deg: float = 45.0,
+    accuracy_arcsec: float | None = None,
+    directions=None,
+) -> TheodoliteResult:
+    """Analyse one theodolite run.
+
+    Parameters
+    ----------
+    theta_deg, azimuth_deg, elevation_deg : array
+        Indicated axis angle, theodolite azimuth and elevation (degrees).
+    reference_index : int, optional
+        Row where the theodolite was zeroed on the mirror; θ and A are taken
+        relative to it. Default: the row with θ closest to 0.
+    method : {"elevation", "azimuth"}
+        Identification route.
+    accuracy_arcsec : float, optional
+        Theodolite accuracy (1σ); residuals far above it raise a warning.
+    directions : array of ±1, optional
+        Approach direction per row; with repeated θ gives the ISO 230-2 figures.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    az = np.asarray(azimuth_deg, dtype=float)
+    elev = np.asarray(elevation_deg, dtype=float)
+    check_run(theta, az, elev)
+    if reference_index is None:
+        reference_index = int(np.argmin(np.abs(theta)))
+    if not 0 <= reference_index < theta.size:
+        raise ValueError(f"reference row {reference_index + 1} is outside the {theta.size} readings")
+    theta_rel = theta - theta[reference_index]
+    az_rel = az - az[reference_index]
+    raw = (az_rel - theta_rel + 180.0) % 360.0 - 180.0
+    raw_arcsec = raw * 3600.0
+    if method == "elevation":
+        # The elevations were read where the axis truly was, θ_true = θ + e, not at the
+        # indicated θ; fitting them against θ lets the axis' own error leak into the
+        # set-up. Iterate: identify, recover θ_true from the azimuths, identify again.
+        rotation = theta_rel
+        for _ in range(_TRUE_ROTATION_MAX_ITERATIONS):
+            ident = identify_from_elevations(rotation, elev, psi_max_deg, beta_max_deg)
+            previous, rotation = rotation, true_rotation_deg(az_rel, ident.setup)
+            if np.max(np.abs(rotation - previous)) < 1e-10:  # deg, i.e. 4e-7"
+                break
+        elev_res = ident.residuals_arcsec
+    elif method == "azimuth":
+        start = None
+        try:
+            start = identify_from_elevations(theta_rel, elev, psi_max_deg, beta_max_deg).setup
+        except ValueError:
+            start = None
+        ident = identify_from_azimuth(theta_rel, raw_arcsec, psi_max_deg, beta_max_deg, start)
+        rotation = true_rotation_deg(az_rel, ident.setup)
+        _, e_model = forward_readings(rotation, *ident.setup.as_array())
+        elev_res = (elev - e_model) * 3600.0
+    else:
+        raise ValueError(f"unknown identification method '{method}'")
+    zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
+    # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
+    # is its negative, and the set-up's share of it is −ζ.
+    raw_error = -raw_arcsec
+    model = -zeta
+    corrected = raw_error - model
+    warnings = list(ident.warnings)
+    if accuracy_arcsec and ident.residual_rms_arcsec > 3.0 * accuracy_arcsec:
+        warnings.append(
+            f"Residual RMS {ident.residual_rms_arcsec:.2f}\" is more than three times the "
+            f"theodolite accuracy {accuracy_arcsec:g}\": check the readings and the set-up."
+        )
+    iso = None
+    if directions is not None or np.unique(np.round(theta, 6)).size < theta.size:
+        iso = iso230_evaluate(theta, corrected, directions)
+    return TheodoliteResult(
+        theta_deg=theta,
+        raw_error_arcsec=raw_error,
+        model_error_arcsec=model,
+        model_uncertainty_arcsec=_model_uncertainty(rotation, ident),
+        corrected_error_arcsec=corrected,
+        identification=ident,
+        elevation_residuals_arcsec=elev_res,
+        raw_stats=error_stats(raw_error),
+        corrected_stats=error_stats(corrected),
+        reference_theta_deg=float(theta[reference_index]),
+        reference_index=int(reference_index),
+        iso230=iso,
+        warnings=warnings,
+    )
+
+
+def simulate_readings(
+    theta_deg,
+    setup: SetupParameters,
+    true_error_arcsec=None,
+    noise_arcsec: float = 0.0,
+    rng: np.random.Generator | None = None,
+):
+    """Readings (A, E in degrees) of a run with the given set-up.
+
+    The axis indicates θ_i with the error of indication e_i (``true_error_arcsec``,
+    indicated − true): it truly turns θ_i − e_i. The theodolite sees that true
+    rotation, plus Gaussian reading noise.
+    """
+    theta = np.asarray(theta_deg, dtype=float)
+    true_rot = theta - (0.0 if true_error_arcsec is None else np.asarray(true_error_arcsec) / 3600)
+    az, el = forward_readings(true_rot, *setup.as_array())
+    if noise_arcsec:
+        rng = rng or np.random.default_rng()
+        az = az + rng.normal(0.0, noise_arcsec, theta.shape) / 3600.0
+        el = el + rng.normal(0.0, noise_arcsec, theta.shape) / 3600.0
+    return az, el

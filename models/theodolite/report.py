@@ -1,0 +1,154 @@
+"""Theodolite run: uncertainty budget and certificate content.
+
+The corrected error at point i is the difference of two readings (at i and
+at the reference point), minus the set-up model ζ(θ):
+``e_i = (A_i − A_0) − (θ_i − θ_0) − ζ(θ_i; ψ, α, β)``. Its inputs:
+
+* each reference standard's figure, per reading: sensitivity √2 (0 at the
+  reference reading, whose error is zero by definition; a repeat of the
+  reference angle later in the run is a reading like any other);
+* the reading repeatability, estimated (Type A) by the identification's
+  residual RMS with n − 3 degrees of freedom, once for the reading itself and
+  once for the reference reading that every point shares. The vertical
+  residuals are the only measure of it (the azimuth residuals hold the axis'
+  own error, the measurand); an autocollimating theodolite sets on the mirror
+  as repeatably in azimuth as in elevation. It measures this set-up's pointing
+  repeatability (mirror, air, axis wobble), which the theodolite's calibration
+  U does not cover; the theodolite's own reading repeatability is in both,
+  counted twice on the safe side;
+* the identified parameters' covariance propagated through ζ (first order);
+* the item's resolution, if stated: rectangular, sensitivity √2.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from models.certificate.document import (
+    CertificateDocument,
+    PlotFigure,
+    PlotSeries,
+    Table,
+    decision_rows,
+    reference_standard_components,
+    resolution_component,
+)
+from models.certificate.metadata import CertificateMetadata
+from models.theodolite.model import TheodoliteResult
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+__all__ = ["theodolite_budget", "theodolite_certificate"]
+
+METHOD = (
+    "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
+    "theodolite is set on the mirror normal and its horizontal reading A and vertical reading E "
+    "are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite's vertical, "
+    "its direction α and the elevation β of the mirror normal — makes A differ from the axis "
+    "rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings "
+    "(sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error "
+    "of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed's "
+    "A − θ; the set-up's share of it, −ζ evaluated at the axis' true rotation, is removed: "
+    "corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, "
+    "where the theodolite was zeroed."
+)
+
+
+def _not_reference(result: TheodoliteResult) -> np.ndarray:
+    """1 at every reading, 0 at the reference reading (the zeroing one only)."""
+    out = np.ones(result.theta_deg.size)
+    out[result.reference_index] = 0.0
+    return out
+
+
+def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+    n = result.theta_deg.size
+    single = _not_reference(result)
+    pair = math.sqrt(2.0) * single
+    dof = max(n - 3, 1)
+    components = reference_standard_components(metadata, pair, "reading (pointing)")
+    res = result.elevation_residuals_arcsec
+    noise = float(np.sqrt(np.sum(res**2) / dof))
+    components.append(BudgetComponent(
+        "Reading repeatability", "A", "normal", noise, 1.0, single, dof,
+        f"standard deviation of the vertical readings about the fit, {n} readings, "
+        f"{dof} degrees of freedom; taken for the azimuth too"))
+    components.append(BudgetComponent(
+        "Reference reading (θ₀)", "A", "normal", noise, 1.0, single, dof,
+        "the zeroing reading, shared by every point", common=True))
+    components.append(BudgetComponent(
+        "Set-up model ζ (ψ, α, β)", "A", "normal", result.model_uncertainty_arcsec, 1.0, 1.0, dof,
+        "covariance of the identified parameters propagated through ζ(θ)"))
+    components += resolution_component(metadata, pair)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
+                           source_name: str = "", method_reference: str = "") -> CertificateDocument:
+    budget = theodolite_budget(result, metadata)
+    big_u = budget.expanded_arcsec
+    ident = result.identification
+    s = ident.setup
+    u2 = 2.0 * ident.uncertainty_deg * 3600.0  # expanded, arcsec
+    parameters = Table(
+        "Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"),
+        [("Axis tilt ψ", f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
+         ("Tilt direction α", f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
+         ("Mirror normal β", f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
+         ("Identified from", f"{ident.method} readings", ""),
+         ("R² of the fit", f"{ident.r_squared:.8f}", ""),
+         ("Residual RMS", f"{ident.residual_rms_arcsec:.3f}\"", ""),
+         ("Reference point θ₀", f"{result.reference_theta_deg:g}°", "")])
+    correction = -result.model_error_arcsec
+    numeric = list(zip(result.theta_deg, result.raw_error_arcsec, correction,
+                       result.corrected_error_arcsec, big_u, strict=True))
+    rows = [(f"{t:.4f}", f"{r:+.2f}", f"{c:+.2f}", f"{e:+.2f}", f"{u:.2f}")
+            for t, r, c, e, u in numeric]
+    results = Table("Results per point (corrected = raw + correction)",
+                    ("θ (°)", "Raw error (\")", "Correction (\")", "Corrected error (\")",
+                     "U (\")"), rows)
+    r, c = result.raw_stats, result.corrected_stats
+    stat_rows = [
+        ("Points", f"{c.n}", ""),
+        ("Raw error", f"{r.min:+.2f}\" … {r.max:+.2f}\"", f"peak-to-peak {r.peak_to_peak:.2f}\""),
+        ("Corrected error", f"{c.min:+.2f}\" … {c.max:+.2f}\"",
+         f"peak-to-peak {c.peak_to_peak:.2f}\", RMS {c.rms:.2f}\""),
+    ]
+    tol = metadata.tolerance_arcsec
+    conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
+                                   metadata.decision_rule, metadata.decision_quantity)
+    stat_rows += decision_rows(conformity, budget, "points")
+    if result.iso230 is not None:
+        for k, v in result.iso230.figures.items():
+            if math.isfinite(v):
+                stat_rows.append((f"ISO 230-2 {k}", f"{v:.2f}\"", ""))
+    statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
+    order = np.argsort(result.theta_deg, kind="stable")
+    th = result.theta_deg[order]
+    plots = (
+        PlotFigure("Raw error, set-up model and corrected error", "θ (°)", "error (\")", (
+            PlotSeries("raw error", th, result.raw_error_arcsec[order], (31, 119, 180), True),
+            PlotSeries("set-up share −ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
+            PlotSeries("corrected", th, result.corrected_error_arcsec[order], (44, 160, 44), True),
+        )),
+        PlotFigure("Corrected error with its expanded uncertainty U", "θ (°)",
+                   "error (\")", (
+            PlotSeries("corrected ± U", th, result.corrected_error_arcsec[order], (44, 160, 44),
+                       True, band=big_u[order]),)),
+        PlotFigure("Fit residuals (vertical readings)", "θ (°)", "residual (\")", (
+            PlotSeries("residual", th, result.elevation_residuals_arcsec[order], (148, 103, 189),
+                       True),)),
+    )
+    worst = budget.worst_index
+    return CertificateDocument(
+        "theodolite", "Theodolite run", metadata, source_name, METHOD, method_reference,
+        parameters, results, statistics, budget, f"θ = {result.theta_deg[worst]:g}°", conformity,
+        tol, plots, tuple(result.warnings),
+        statements=(f"U is zero at the reference reading (row {result.reference_index + 1}, "
+                    f"θ₀ = {result.reference_theta_deg:g}°): the theodolite was zeroed there, so "
+                    "its error is zero by definition.",),
+        point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
+         ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
+         ("expanded_uncertainty_arcsec", big_u)))

@@ -1,0 +1,301 @@
+"""Statements of conformity with ±T under a stated decision rule (ILAC-G8:09/2019).
+
+The decided quantity is explicit and chosen (metadata ``decision_quantity``):
+
+* ``half_range`` — half the peak-to-peak of the error curve, the ± band the
+  curve fits in after the best zero. The range of noisy points is biased
+  upward, and its uncertainty is not one point's U, so both come from a
+  Monte Carlo simulation of this statistic for this measurement (JCGM 101):
+  a curve plus draws of every input of its budget (independent from point to
+  point, or shared where the input is one reading common to all points),
+  seeded so that the certificate is reproducible (see
+  :func:`half_range_monte_carlo`).
+* ``points`` — every point's error against ±T with that point's own U (the
+  ISO 14253-1 way): the worst point decides.
+
+Decision rules, as ILAC-G8:09/2019 defines them (section 4.2):
+
+* ``simple`` — 4.2.1, binary statement for simple acceptance (w = 0):
+  pass when the result is within the tolerance, fail otherwise.
+* ``guarded_binary`` — 4.2.2, binary statement with a guard band w = U:
+  pass when the result is within the tolerance reduced by w, fail otherwise.
+* ``guarded`` — 4.2.3, non-binary statement with a guard band w = U: pass
+  (within T − w), conditional pass (within T), conditional fail (within T + w),
+  fail (beyond T + w).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.uncertainty.budget import UncertaintyBudget
+
+__all__ = [
+    "DECISION_QUANTITIES",
+    "DECISION_RULES",
+    "Conformity",
+    "HalfRangeEstimate",
+    "decide_conformity",
+    "half_range_monte_carlo",
+    "significant_decimals",
+    "uncertainty_decimals",
+]
+
+DECISION_RULES = {
+    "guarded": "non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass "
+               "when the result lies within T − w; conditional pass within T; conditional fail "
+               "within T + w; fail beyond T + w",
+    "guarded_binary": "binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.2): pass "
+                      "when the result lies within T − w, fail otherwise",
+    "simple": "binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, 4.2.1): pass "
+              "when the result lies within T, fail otherwise; the risk of a false acceptance "
+              "reaches 50 % at the limit",
+}
+
+DECISION_QUANTITIES = {
+    "half_range": "half the peak-to-peak error after the best zero, with its own U and bias "
+                  "from a Monte Carlo simulation of this measurement (JCGM 101)",
+    "points": "every point's error against ±T with that point's own U (ISO 14253-1)",
+}
+
+MONTE_CARLO_SEED = 20261127
+MONTE_CARLO_TRIALS = 10_000
+_MONTE_CARLO_DRAWS = 50_000_000  # trials × points at the most
+
+
+def significant_decimals(expanded: float) -> int | None:
+    """Decimals that show U with two significant digits (GUM 7.2.6); None if U is not
+    a positive number."""
+    if not math.isfinite(expanded) or expanded <= 0:
+        return None
+    return max(0, 1 - int(math.floor(math.log10(expanded))))
+
+
+def uncertainty_decimals(expanded: float) -> int:
+    """:func:`significant_decimals`, but never fewer than two (arcsec are printed to 0.01")."""
+    decimals = significant_decimals(expanded)
+    return 2 if decimals is None else max(2, decimals)
+
+
+@dataclass(frozen=True)
+class HalfRangeEstimate:
+    """Half the peak-to-peak of an error curve, from a Monte Carlo simulation (arcsec)."""
+
+    measured: float  # half the peak-to-peak of the measured curve
+    bias: float  # measured − value: what the noise added to the range
+    value: float  # the estimate stated
+    u_upper: float  # upper half-width of the coverage interval about the simulated mean
+    u_lower: float
+    probability: float
+    trials: int
+    seed: int
+
+
+def _standard_draws(rng: np.random.Generator, distribution: str, shape) -> np.ndarray:
+    if distribution == "rectangular":
+        return rng.uniform(-math.sqrt(3.0), math.sqrt(3.0), shape)
+    return rng.standard_normal(shape)
+
+
+def _noise_draws(budget: UncertaintyBudget, n: int, trials: int,
+                 rng: np.random.Generator) -> np.ndarray:
+    """(trials, n) draws of the curve's error: every budget input, ``common`` inputs one
+    draw per trial, the others one per point."""
+    draws = np.zeros((trials, n))
+    for comp, c_u in zip(budget.components, budget.contributions(), strict=True):
+        shape = (trials, 1) if comp.common else (trials, n)
+        draws += _standard_draws(rng, comp.distribution, shape) * c_u
+    return draws
+
+
+def _denoised_half_range(curves: np.ndarray, noise_power: float) -> np.ndarray:
+    """Half the peak-to-peak of each row of ``curves`` after Fourier shrinkage: every
+    coefficient is scaled by max(0, 1 − P/|X_k|²), P the expected power of the
+    point-to-point noise in one coefficient (positive-part James–Stein)."""
+    spectrum = np.fft.rfft(curves - curves.mean(axis=1, keepdims=True), axis=1)
+    power = np.abs(spectrum) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gain = np.where(power > noise_power, 1.0 - noise_power / power, 0.0)
+    smooth = np.fft.irfft(spectrum * gain, n=curves.shape[1], axis=1)
+    return 0.5 * (smooth.max(axis=1) - smooth.min(axis=1))
+
+
+def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
+                           trials: int = MONTE_CARLO_TRIALS,
+                           seed: int = MONTE_CARLO_SEED) -> HalfRangeEstimate:
+    """JCGM 101 for half the peak-to-peak of ``errors_arcsec`` (points in their natural
+    order: by angle, position or sample).
+
+    The measured half range of a noisy curve runs high: noise widens any range.
+    The estimator S takes the half range after Fourier shrinkage of the
+    point-to-point noise that the budget states. Its mean over simulated
+    measurements — a candidate true curve (the shrunk curve scaled by λ) plus
+    draws of every budget input (``common`` inputs one draw per trial, the
+    others one per point) — is matched to S of the measurement by choosing λ
+    (the same draws for every λ); the estimate is the candidate's half range.
+    U is the simulated spread of S at that λ divided by the slope of mean S
+    against the true half range (so it widens where noise hides the curve),
+    combined with the size of the bias removed (rectangular). ``trials`` is
+    lowered on long curves (5·10⁷ draws at the most).
+    """
+    e = np.asarray(errors_arcsec, dtype=float)
+    n = e.size
+    trials = int(max(200, min(trials, _MONTE_CARLO_DRAWS // max(n, 1))))
+    independent = [c_u for comp, c_u in zip(budget.components, budget.contributions(),
+                                            strict=True) if not comp.common]
+    noise_power = float(np.sum(np.square(independent))) if independent else 0.0
+    spectrum = np.fft.rfft(e - e.mean())
+    power = np.abs(spectrum) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gain = np.where(power > noise_power, 1.0 - noise_power / power, 0.0)
+    shrunk = np.fft.irfft(spectrum * gain, n=n)
+    observed = 0.5 * float(np.ptp(shrunk))
+    draws = _noise_draws(budget, n, trials, np.random.default_rng(seed))
+
+    def estimates(scale: float, count: int = trials) -> np.ndarray:
+        out = np.empty(count)
+        chunk = max(1, min(count, 2_000_000 // max(n, 1)))
+        for start in range(0, count, chunk):
+            stop = min(start + chunk, count)
+            out[start:stop] = _denoised_half_range(scale * shrunk + draws[start:stop],
+                                                   noise_power)
+        return out
+
+    def mean_estimate(scale: float) -> float:
+        # λ is searched on the first 2000 trials (the same for every λ), then all are run
+        return float(np.mean(estimates(scale, min(trials, 2000))))
+
+    scale = 0.0
+    if observed > 0 and mean_estimate(0.0) < observed:
+        lo, hi = 0.0, 1.0
+        while mean_estimate(hi) < observed and hi < 8.0:
+            lo, hi = hi, 2.0 * hi
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if mean_estimate(mid) < observed else (lo, mid)
+            if hi - lo < 1e-4:
+                break
+        scale = 0.5 * (lo + hi)
+    value = scale * observed
+    at_value = estimates(scale)
+    mean = float(np.mean(at_value))
+    step = 0.05
+    slope = 1.0
+    if observed > 0:
+        slope = (mean_estimate(scale + step) - mean_estimate(max(scale - step, 0.0))) / (
+            (scale + step - max(scale - step, 0.0)) * observed)
+    slope = max(slope, 0.2)  # a flat response would make U unbounded: cap its growth
+    tail = 0.5 * (1.0 - budget.probability)
+    q_lo, q_hi = np.quantile(at_value, [tail, 1.0 - tail])
+    spread = float(np.std(at_value))
+    k = (float(q_hi) - float(q_lo)) / (2.0 * spread) if spread > 0 else 2.0
+    measured = 0.5 * float(np.ptp(e))
+    u_bias = k * abs(observed - value) / math.sqrt(3.0)
+    return HalfRangeEstimate(measured, measured - value, value,
+                             math.hypot((float(q_hi) - mean) / slope, u_bias),
+                             math.hypot((mean - float(q_lo)) / slope, u_bias),
+                             budget.probability, trials, seed)
+
+
+@dataclass(frozen=True)
+class Conformity:
+    verdict: str  # "pass", "conditional pass", "conditional fail", "fail", "not assessed"
+    statement: str
+    rule: str
+    quantity: str = ""  # the decided quantity and how it was evaluated
+    value_arcsec: float = float("nan")
+    expanded_arcsec: float = float("nan")
+    zones: str = ""
+    monte_carlo: HalfRangeEstimate | None = None
+
+    @property
+    def conforms(self) -> bool | None:
+        if self.verdict == "not assessed":
+            return None
+        return self.verdict in ("pass", "conditional pass")
+
+
+def _zones(t: float, w: float, rule: str, d: int, q: str = "\"") -> str:
+    if rule == "simple":
+        return f"pass ≤ {t:g}{q} < fail"
+    if rule == "guarded_binary":
+        return f"pass ≤ {t - w:.{d}f}{q} (T − w) < fail"
+    return (f"pass ≤ {t - w:.{d}f}{q} (T − w) < conditional pass ≤ {t:g}{q} (T) < conditional fail "
+            f"≤ {t + w:.{d}f}{q} (T + w) < fail")
+
+
+def _verdict(x: float, t: float, w: float, rule: str) -> str:
+    if rule == "simple":
+        return "pass" if x <= t else "fail"
+    if rule == "guarded_binary":
+        return "pass" if x <= t - w else "fail"
+    if x <= t - w:
+        return "pass"
+    if x <= t:
+        return "conditional pass"
+    if x <= t + w:
+        return "conditional fail"
+    return "fail"
+
+
+_ORDER = ("pass", "conditional pass", "conditional fail", "fail")
+
+_SENTENCE = {
+    "pass": "The item conforms to the specification ±{t:g}{q} (pass).",
+    "conditional pass": "Conditional pass: the result lies within ±{t:g}{q} but closer to the limit "
+                        "than the guard band, so conformity is not proven at the stated "
+                        "coverage probability.",
+    "conditional fail": "Conditional fail: the result lies beyond ±{t:g}{q} by less than the guard "
+                        "band, so non-conformity is not proven at the stated coverage "
+                        "probability.",
+    "fail": "The item does not conform to the specification ±{t:g}{q} (fail).",
+}
+
+
+def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec: float | None,
+                      rule: str = "guarded", quantity: str = "half_range",
+                      invalid_reason: str = "", what: str = "corrected error",
+                      unit: str = "\"") -> Conformity:
+    """The verdict on an error curve against ±``tolerance_arcsec`` (in ``unit``, the
+    errors' own: arcsec, or nm for an interferometer).
+
+    ``invalid_reason`` (for example a failed closure) withholds the statement.
+    """
+    q = unit
+    rule_text = DECISION_RULES[rule]
+    if quantity not in DECISION_QUANTITIES:
+        raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
+    if invalid_reason:
+        return Conformity("not assessed", f"No statement of conformity: {invalid_reason}.",
+                          rule_text)
+    if tolerance_arcsec is None:
+        return Conformity("not assessed", "No statement of conformity: no specification "
+                          "(tolerance) was given.", rule_text)
+    e = np.asarray(errors_arcsec, dtype=float)
+    t = float(tolerance_arcsec)
+    if quantity == "points":
+        u = budget.expanded_arcsec
+        verdicts = [_verdict(abs(x), t, w if rule != "simple" else 0.0, rule) for x, w in zip(e, u,
+                                                                                              strict=True)]
+        worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
+        x, w = abs(float(e[worst])), float(u[worst])
+        d = uncertainty_decimals(w)
+        verdict = verdicts[worst]
+        text = (f"Every point's {what} was judged against ±{t:g}{q} with its own U; the deciding "
+                f"point is number {worst + 1}: |e| = {x:.{d}f}{q}, U = {w:.{d}f}{q}. "
+                + _SENTENCE[verdict].format(t=t, q=q))
+        zones = "per point, with w = U of that point: " + _zones(t, w, rule, d, q)
+        return Conformity(verdict, text, rule_text, DECISION_QUANTITIES["points"], x, w, zones)
+    mc = half_range_monte_carlo(e, budget)
+    x, w = mc.value, mc.u_upper
+    d = uncertainty_decimals(w)
+    verdict = _verdict(x, t, 0.0 if rule == "simple" else w, rule)
+    text = (f"Half the peak-to-peak {what}: {x:.{d}f}{q} (measured {mc.measured:.{d}f}{q}, less "
+            f"{mc.bias:.{d}f}{q} that the noise adds to a range), U = {w:.{d}f}{q} "
+            f"(coverage probability {100 * mc.probability:.2f} %). "
+            + _SENTENCE[verdict].format(t=t, q=q))
+    quantity_text = (f"{DECISION_QUANTITIES['half_range']}: {mc.trials} trials, seed {mc.seed}")
+    return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d, q), mc)

@@ -1,0 +1,33 @@
+"""Simulation panel of the theodolite workbench (the seed's Figs 3–6): ζ(θ) and E(θ)
+for ψ, α, β with one of them swept."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from models.theodolite.model import forward_readings, induced_error_arcsec
+from widgets.family_simulation import FamilySimulation
+from widgets.settings_form import SettingsForm
+
+
+def _family(p: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    theta = np.linspace(-p["half_range_deg"], p["half_range_deg"], 241)
+    args = (p["psi_deg"], p["alpha_deg"], p["beta_deg"])
+    return theta, induced_error_arcsec(theta, *args), forward_readings(theta, *args)[1]
+
+
+class TheodoliteSimulation(FamilySimulation):
+    """``top_curves``: ζ (") per swept value; ``bottom_curves``: E (deg)."""
+
+    def __init__(self, parent=None) -> None:
+        form = SettingsForm()
+        form.add_float("psi_deg", "axis tilt ψ", -10, 10, 4, "°", 0.5)
+        form.add_float("alpha_deg", "tilt direction α", 0, 360, 3, "°", 15)
+        form.add_float("beta_deg", "mirror normal β", -10, 10, 4, "°", 0.5)
+        form.add_float("half_range_deg", "θ range ±", 1, 180, 1, "°", 5)
+        form.add_choice("sweep", "sweep", [("beta_deg", "β (Figs 3, 4)"), ("alpha_deg", "α (Fig 5)"),
+                                           ("psi_deg", "ψ (Fig 6)")])
+        form.set_values({"psi_deg": 3, "alpha_deg": 45, "beta_deg": 2, "half_range_deg": 20})
+        super().__init__(form, {"beta_deg": ("β", "°"), "alpha_deg": ("α", "°"),
+                                "psi_deg": ("ψ", "°")},
+                         "-2, -1, 0, 1, 2", _family, ("θ (deg)", "ζ (\")", "E (deg)"), parent)
