@@ -45,56 +45,51 @@ def _parser() -> argparse.ArgumentParser:
                         "the certificate is marked DRAFT")
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help="also write the results per point (with U) as CSV or XLSX")
-    p.add_argument("--method", choices=["elevation", "azimuth"], help="theodolite: identify from")
-    p.add_argument("--reference-row", type=int, help="theodolite: 1-based reference row")
-    p.add_argument("--zenith", action="store_true", help="theodolite: vertical column is zenith V")
-    p.add_argument("--grade", type=int, help="polygon: encoder grade 1–7")
-    p.add_argument("--counting", choices=["auto", "with", "against"],
-                   help="polygon: the encoder counts with or against the face numbering")
-    p.add_argument("--zero-face", type=int,
-                   help="polygon: the common zero (0: the first reading of set 1)")
-    p.add_argument("--closure-drift", choices=["report", "spread"],
-                   help="polygon: report the closure drift, or spread it linearly and remove it")
-    p.add_argument("--ac-roll", type=float, metavar="ARCMIN",
-                   help="polygon: the autocollimator reticle's roll limit (budget input)")
-    p.add_argument("--lines-per-rev", type=int, help="fringe: grating lines per revolution")
-    p.add_argument("--samples-per-period", type=int,
-                   help="fringe: equal steps, N samples a period (leave it out to take the phase "
-                        "from the theta_deg column, or to estimate it from the signals)")
-    p.add_argument("--period-nm", type=float,
-                   help="fringe: an interferometer, this many nm a fringe period (errors in nm)")
+    p.add_argument("--zenith", action="store_true",
+                   help="theodolite: the vertical column is the zenith angle V (same as "
+                        "--vertical-reading zenith)")
+    for flag, owners in _flags().items():
+        parts = []
+        for kind, parameter in owners:
+            choices = (f" ({'|'.join(str(v) for v, _ in parameter.choices)})"
+                       if parameter.choices else "")
+            parts.append(f"{kind}: {parameter.label}{choices}. {parameter.help}")
+        p.add_argument(flag, dest=_dest(flag), metavar=owners[0][1].kind.upper(),
+                       help=" — ".join(parts))
     return p
 
 
-# option -> (setting key, the workbenches it applies to, value transform)
-_OPTIONS: dict[str, tuple[str, tuple[str, ...], Any]] = {
-    "method": ("method", ("theodolite",), None),
-    "reference_row": ("reference_row", ("theodolite",), None),
-    "zenith": ("vertical_reading", ("theodolite",), lambda v: "zenith" if v else None),
-    "grade": ("grade", ("polygon",), None),
-    "counting": ("counting", ("polygon",), None),
-    "zero_face": ("zero_face", ("polygon",), None),
-    "closure_drift": ("closure_drift", ("polygon",), None),
-    "ac_roll": ("ac_roll_arcmin", ("polygon",), None),
-    "lines_per_rev": ("lines_per_rev", ("fringe",), None),
-    "samples_per_period": ("samples_per_period", ("fringe",), None),
-    "period_nm": ("period_nm", ("fringe",), None),
-}
+def _dest(flag: str) -> str:
+    return "setting_" + flag[2:].replace("-", "_")
+
+
+def _flags() -> dict[str, list[tuple[str, Any]]]:
+    """Each command-line flag, with the workbenches that declare it and their parameter."""
+    flags: dict[str, list[tuple[str, Any]]] = {}
+    for key, kind in KINDS.items():
+        for parameter in kind.parameters:
+            if parameter.cli:
+                flags.setdefault(parameter.flag, []).append((key, parameter))
+    return flags
 
 
 def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
-    """The settings the options give; an option for another workbench is refused."""
+    """The settings the options give, each checked against the chosen workbench's own
+    declaration; an option of another workbench is refused."""
     settings: dict[str, Any] = {}
-    for option, (key, kinds, transform) in _OPTIONS.items():
-        value = getattr(args, option)
-        if transform is not None:
-            value = transform(value)
-        if value is None or value is False:
+    for flag, owners in _flags().items():
+        text = getattr(args, _dest(flag))
+        if text is None:
             continue
-        if args.kind not in kinds:
-            flag = "--" + option.replace("_", "-")
-            raise SettingsError(f"{flag} applies to {' and '.join(kinds)}, not {args.kind}")
-        settings[key] = value
+        parameter = next((p for k, p in owners if k == args.kind), None)
+        if parameter is None:
+            raise SettingsError(f"{flag} applies to {' and '.join(k for k, _ in owners)}, not "
+                                f"{args.kind}")
+        settings[parameter.key] = parameter.from_text(text)
+    if args.zenith:
+        if args.kind != "theodolite":
+            raise SettingsError(f"--zenith applies to theodolite, not {args.kind}")
+        settings["vertical_reading"] = "zenith"
     return settings
 
 
@@ -163,7 +158,7 @@ def run_analyze(argv: list[str]) -> int:
         for warning in getattr(result, "warnings", []):
             sys.stdout.write(f"Warning: {warning}\n")
     if args.certificate or args.results:
-        return _export(args, kind, result)
+        return _export(args, kind, result, settings)
     return 0
 
 
@@ -186,7 +181,7 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         raise MetadataError(f"{path}: {exc}") from None
 
 
-def _export(args: argparse.Namespace, kind, result) -> int:
+def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any]) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.writers.certificate_pdf import write_certificate_pdf
 
@@ -196,7 +191,7 @@ def _export(args: argparse.Namespace, kind, result) -> int:
         _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     try:
-        document = kind.certificate_document(result, metadata, Path(args.file).name)
+        document = kind.certificate_document(result, metadata, Path(args.file).name, settings)
     except MetadataError as exc:
         _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT

@@ -375,7 +375,8 @@ class MainWindow(QMainWindow):
 
         QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
         try:
-            document = kind.certificate_document(result, meta, self._source_name())
+            document = kind.certificate_document(result, meta, self._source_name(),
+                                                 self.current.settings)
             write_certificate_pdf(path, document)
         except (OSError, ValueError) as exc:
             self.tell("Cannot export", f"{path}: {exc}. Nothing else was changed.")
@@ -398,7 +399,7 @@ class MainWindow(QMainWindow):
             return False
         try:
             document = kind.certificate_document(result, self.certificate_metadata(),
-                                                 self._source_name())
+                                                 self._source_name(), self.current.settings)
             if path.lower().endswith(".xlsx"):
                 write_results_xlsx(path, document)
             else:

@@ -1,16 +1,19 @@
 """What every workbench provides to the GUI, the CLI and the project file.
 
-A workbench kind is its typed readings columns, its default settings, and
-three pure functions: analyse the parsed readings, turn the result into the
-CLI's JSON, and into a readable text summary.
+A workbench kind is its typed readings columns, its settings (declared once as
+:class:`~models.parameters.Parameter`), and pure functions: analyse the parsed
+readings, turn the result into the CLI's JSON, into a readable summary and into
+certificate content.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from models.parameters import Parameter, SettingsError, check_parameters
 from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AnalysisKind", "SettingsError"]
@@ -21,16 +24,12 @@ SIGN_CONVENTION = "indicated_minus_reference"
 SIGN_CONVENTION_TEXT = "error = indicated − reference (VIM); correction = −error"
 
 
-class SettingsError(ValueError):
-    """A workbench setting is out of range; the message names it."""
-
-
 @dataclass(frozen=True)
 class AnalysisKind:
     key: str
     title: str
     columns: tuple[Column, ...]
-    default_settings: Mapping[str, Any]
+    parameters: tuple[Parameter, ...]
     analyze: Callable[[ParsedReadings, Mapping[str, Any]], Any]
     to_json: Callable[[Any], dict[str, Any]]
     summary: Callable[[Any], str]
@@ -38,23 +37,38 @@ class AnalysisKind:
     method_reference: str = ""
     # (result, CertificateMetadata, source name, method reference) -> CertificateDocument
     certificate: Callable[..., Any] | None = None
-    # settings -> the settings checked and completed; raises SettingsError naming the key
-    check_settings: Callable[[Mapping[str, Any]], dict[str, Any]] | None = None
+    # checked settings -> None; the checks across settings (SettingsError naming the key)
+    check_settings: Callable[[dict[str, Any]], None] | None = None
     # "package.module:Class" of the workbench's presenter, imported only by the window
     presenter: str = ""
 
-    def checked_settings(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
-        """The settings with defaults, each checked (types and ranges): for a project file,
-        the form and the command line alike."""
-        if self.check_settings is None:
-            return self.settings_with_defaults(settings)
-        return self.check_settings(settings or {})
+    @property
+    def default_settings(self) -> dict[str, Any]:
+        return {p.key: p.default for p in self.parameters}
 
-    def certificate_document(self, result: Any, metadata: Any, source_name: str = "") -> Any:
-        """The certificate content of ``result`` (see models.certificate.document)."""
+    def parameter(self, key: str) -> Parameter:
+        return next(p for p in self.parameters if p.key == key)
+
+    def checked_settings(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
+        """The settings with defaults, each checked (types and ranges, then across
+        settings): for a project file, the form and the command line alike."""
+        checked = check_parameters(self.parameters, settings)
+        if self.check_settings is not None:
+            self.check_settings(checked)
+        return checked
+
+    def certificate_document(self, result: Any, metadata: Any, source_name: str = "",
+                             settings: Mapping[str, Any] | None = None) -> Any:
+        """The certificate content of ``result`` (see models.certificate.document), listing
+        the ``settings`` it was analysed with as their declarations word them."""
         if self.certificate is None:
             raise ValueError(f"{self.title}: no certificate is defined")
-        return self.certificate(result, metadata, source_name, self.method_reference)
+        document = self.certificate(result, metadata, source_name, self.method_reference)
+        if settings is not None:
+            checked = self.checked_settings(settings)
+            listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters)
+            document = dataclasses.replace(document, settings=listing)
+        return document
 
     def settings_with_defaults(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
         merged = dict(self.default_settings)

@@ -82,9 +82,11 @@ def test_every_registered_workbench_is_complete(key):
     from widgets.workbench_presenter import WorkbenchPresenter
 
     kind = KINDS[key]
-    assert kind.key == key and kind.title and kind.columns and kind.default_settings
-    for part in ("analyze", "to_json", "summary", "certificate", "check_settings"):
+    assert kind.key == key and kind.title and kind.columns and kind.parameters
+    for part in ("analyze", "to_json", "summary", "certificate"):
         assert callable(getattr(kind, part)), part
+    for p in kind.parameters:  # every setting declared whole, its default passing its check
+        assert p.label and p.help and p.check(p.default) == p.default, p.key
     assert (ROOT / "resources" / "samples" / kind.sample_file).is_file()
     assert kind.method_reference
     cls = presenter_class(kind)

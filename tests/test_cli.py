@@ -93,7 +93,7 @@ def test_polygon_json_keys(capsys, samples_dir):
 
 def test_polygon_bad_grade_is_exit_2(capsys, samples_dir):
     code, _, err = run_cli(capsys, "polygon", str(samples_dir / "polygon_sample.csv"), "--grade", "9")
-    assert code == 2 and "grade must be 1 to 7" in err
+    assert code == 2 and "grade must be one of 1, 2, 3, 4, 5, 6, 7, not 9" in err
 
 
 def test_fringe_json_keys(capsys, samples_dir):

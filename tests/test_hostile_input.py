@@ -138,7 +138,7 @@ def test_theodolite_readings_that_identify_nothing_are_refused(tmp_path, capsys,
 
 @pytest.mark.parametrize("kind, args, message", [
     ("theodolite", ["--grade", "3"], "--grade applies to polygon, not theodolite"),
-    ("theodolite", ["--reference-row", "-5"], "reference_row must be a number from 0"),
+    ("theodolite", ["--reference-row", "-5"], "reference_row must be 0 or 1 to 1e+07, not -5"),
     ("polygon", ["--samples-per-period", "64"], "--samples-per-period applies to fringe"),
     ("fringe", ["--lines-per-rev", "0"], "lines_per_rev must be"),
 ])
@@ -162,9 +162,9 @@ def test_fringe_settings_from_a_project_file_are_checked(settings, message):
 
 
 @pytest.mark.parametrize("settings, message", [
-    ({"faces": 1_000_000_000}, "faces must be a whole number from 0 to 360"),
+    ({"faces": 1_000_000_000}, r"faces must be 0 or 3 to 360, not 1e\+09"),
     ({"closure_limits_arcsec": [0.1, 0.2]}, "must be text"),
-    ({"grade": "3"}, "grade must be 1 to 7"),
+    ({"grade": "3"}, "grade must be one of 1, 2, 3"),
 ])
 def test_polygon_settings_from_a_project_file_are_checked(samples_dir, settings, message):
     from models.analysis_kind import SettingsError

@@ -7,6 +7,8 @@ from typing import Any
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QFormLayout, QLineEdit, QSpinBox, QWidget
 
+from models.parameters import Parameter
+
 
 class SettingsForm(QWidget):
     """Fields keyed by setting name; ``changed`` fires when the user edits one."""
@@ -53,6 +55,25 @@ class SettingsForm(QWidget):
         edit = QLineEdit()
         edit.editingFinished.connect(self.changed)
         return self._add(key, label, edit, tooltip)
+
+    def add_parameter(self, p: Parameter) -> QWidget:
+        """The field a declared setting asks for: its type, range, unit and help."""
+        tip = p.help
+        if p.kind == "choice":
+            return self.add_choice(p.key, p.label, list(p.choices), tip)
+        if p.kind == "text":
+            return self.add_text(p.key, p.label, tip)
+        low = 0 if p.zero else (p.minimum if p.minimum is not None else -1e12)
+        high = p.maximum if p.maximum is not None else 1e12
+        suffix = f" {p.unit}" if p.unit and p.unit not in ("°", "\"", "′") else p.unit
+        if p.kind == "int":
+            box = self.add_int(p.key, p.label, int(low), int(min(high, 2**31 - 1)), suffix,
+                               p.zero, tip)
+        else:
+            box = self.add_float(p.key, p.label, low, high, p.decimals, suffix, p.step, tip)
+            if p.zero:
+                box.setSpecialValueText(p.zero)
+        return box
 
     def _add(self, key: str, label: str, widget, tooltip: str):
         widget.setObjectName(key)

@@ -211,7 +211,9 @@ class WorkbenchPresenter(QObject):
 
     # -- subclass hooks ---------------------------------------------------
     def build_settings(self) -> None:
-        """Add the set-up fields to ``self.view.settings``."""
+        """The set-up fields, one per declared setting of the kind."""
+        for parameter in self.kind.parameters:
+            self.view.settings.add_parameter(parameter)
 
     def prepare_display(self, result: Any) -> Any:
         """Heavy plot arrays for ``result`` (decimation, model curves): pure numpy, run on

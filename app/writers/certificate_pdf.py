@@ -386,6 +386,9 @@ def _render(document: CertificateDocument) -> FPDF:
         "validation report of that version (anglebench validate): the reference figures of the "
         "publication and exact simulations with known truth, each with its result.", 8, GREY)
     pdf.paragraph(f"Sign convention: {SIGN_CONVENTION_TEXT}.", 8.5)
+    if document.settings:
+        pdf.heading("Analysis settings", keep_with=30)
+        pdf.key_values(list(document.settings))
     pdf.heading(document.parameters.title)
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
     pdf.heading("Error curves", keep_with=75.0)

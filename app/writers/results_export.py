@@ -78,6 +78,7 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
         *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),
+        *((f"Setting: {label}", value) for label, value in document.settings),
         ("Notes", meta.notes),
     ]
     for i, s in enumerate(meta.standards, 1):

@@ -76,6 +76,7 @@ class CertificateDocument:
     # source, as found / as left …), printed with the shared ones
     statements: tuple[str, ...] = ()
     unit: str = "\""  # the errors' unit symbol: arcsec, or " nm" for an interferometer
+    settings: tuple[tuple[str, str], ...] = ()  # (label, value) of the analysis' settings
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:

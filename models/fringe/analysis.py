@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.fringe.model import (
     TWO_PI,
     ChannelFit,
@@ -26,6 +26,7 @@ from models.fringe.model import (
 )
 from models.fringe.phase import EllipseFit, fit_ellipse
 from models.fringe.report import fringe_certificate
+from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 
 __all__ = ["FRINGE", "FringeResult"]
@@ -39,16 +40,36 @@ COLUMNS = (
                 "when N is given"),
 )
 
-DEFAULT_SETTINGS: dict[str, Any] = {
-    "lines_per_rev": 16384,  # an encoder: errors in arcsec of shaft angle, 1296000"/L a period
-    "period_nm": 0.0,  # > 0: an interferometer, errors in nm, this many nm a period
-    "samples_per_period": 0,  # 0: phase from the θ column, else estimated from the signals
-    "max_order": 5,
-    "harmonics": "odd",  # or "all"
-    "method": "lsq",  # or "pso" (the seed's particle swarm, one period at most)
-    "lut_size": 1024,
-    "table_zero": "mean",  # the correction table's zero: its mean, or its value at phase 0
-}
+PARAMETERS = (
+    Parameter("lines_per_rev", "lines per revolution L", "int", 16384, minimum=1,
+              maximum=1_000_000_000,
+              help="Encoder: grating lines per revolution; errors in arcsec of shaft angle (one "
+                   "period = 1296000\"/L)"),
+    Parameter("period_nm", "interferometer period", "float", 0.0, "nm", 0.001, 1_000_000.0,
+              zero="encoder (use L)",
+              help="Interferometer: displacement per fringe (316.4 nm for λ/2 of a HeNe laser); "
+                   "errors then in nm. 0: an encoder"),
+    Parameter("samples_per_period", "samples per period N", "int", 0, minimum=2,
+              maximum=1_000_000, zero="phase from θ or the signals",
+              help="Equal steps, N samples a period. 0: the phase from the θ column or, without "
+                   "one, estimated from the signals (Heydemann); a record that does not follow N "
+                   "is refused"),
+    Parameter("max_order", "highest harmonic", "int", 5, minimum=1, maximum=31,
+              help="The highest harmonic fitted to each channel"),
+    Parameter("harmonics", "harmonics", "choice", "odd",
+              choices=(("odd", "odd (1, 3, 5 …)"), ("all", "all")),
+              help="Odd harmonics only (the seed's model), or every order up to the highest"),
+    Parameter("method", "identification", "choice", "lsq",
+              choices=(("lsq", "least squares (exact)"), ("pso", "particle swarm (seed)")),
+              help="Exact linear least squares, or the seed's particle swarm (first period only, "
+                   "for comparison)"),
+    Parameter("lut_size", "correction table size", "int", 1024, minimum=8, maximum=65536,
+              help="Entries of the correction table over the measured phase"),
+    Parameter("table_zero", "table zero", "choice", "mean",
+              choices=(("mean", "its mean is zero"), ("phase0", "zero at phase 0")),
+              help="The phase origin is arbitrary: the table is stated with its mean removed, or "
+                   "with its first entry zero (said in the exported file)"),
+)
 
 PHASE_SOURCES = ("samples_per_period", "theta_column", "estimated")
 #: Channel voltages beyond this are not a read head's signals.
@@ -112,35 +133,8 @@ class FringeResult:
         return self.cos_fit.amplitude[1] / self.sin_fit.amplitude[1]
 
 
-def _number(s: Mapping[str, Any], key: str, low: float, high: float, integer: bool = False,
-            zero_allowed: bool = False) -> float:
-    value = s[key]
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-        raise SettingsError(f"{key} must be a number, not {value!r}")
-    if zero_allowed and value == 0:
-        return 0
-    if integer and value != int(value):
-        raise SettingsError(f"{key} must be a whole number, not {value}")
-    if not low <= value <= high:
-        raise SettingsError(f"{key} must be {'0 or ' if zero_allowed else ''}{low:g} to {high:g}, "
-                            f"not {value:g}")
-    return int(value) if integer else float(value)
-
-
 def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
-    s = FRINGE.settings_with_defaults(settings)
-    out = dict(s)
-    out["lines_per_rev"] = _number(s, "lines_per_rev", 1, 1e9, integer=True)
-    out["period_nm"] = _number(s, "period_nm", 1e-3, 1e6, zero_allowed=True)
-    out["samples_per_period"] = _number(s, "samples_per_period", 2, 1e6, integer=True,
-                                        zero_allowed=True)
-    out["max_order"] = _number(s, "max_order", 1, 31, integer=True)
-    out["lut_size"] = _number(s, "lut_size", 8, 65536, integer=True)
-    for key, choices in (("harmonics", ("odd", "all")), ("method", ("lsq", "pso")),
-                         ("table_zero", ("mean", "phase0"))):
-        if s[key] not in choices:
-            raise SettingsError(f"{key} must be one of {', '.join(choices)}, not {s[key]!r}")
-    return out
+    return FRINGE.checked_settings(settings)
 
 
 def _row(parsed: ParsedReadings, i: int) -> int:
@@ -393,7 +387,7 @@ FRINGE = AnalysisKind(
     key="fringe",
     title="Fringe signal analysis",
     columns=COLUMNS,
-    default_settings=DEFAULT_SETTINGS,
+    parameters=PARAMETERS,
     analyze=analyze,
     to_json=to_json,
     summary=summary,
@@ -401,6 +395,5 @@ FRINGE = AnalysisKind(
     method_reference="Gao X. et al., Automatic compensation of sine deviation for grating fringe "
                      "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
     certificate=fringe_certificate,
-    check_settings=_settings,
     presenter="widgets.fringe.presenter:FringePresenter",
 )

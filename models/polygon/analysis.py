@@ -9,7 +9,8 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.parameters import Parameter, SettingsError
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
@@ -50,19 +51,38 @@ COLUMNS = (
                 "when blank, taken from the encoder's steps"),
 )
 
-DEFAULT_SETTINGS: dict[str, Any] = {
-    "faces": 0,  # 0: from the readings
-    "grade": 3,
-    # closure limit (") for grades 1–7; default half the grade's accuracy (see README)
-    "closure_limits_arcsec": "0.125, 0.25, 0.5, 1, 2.5, 5, 15",
-    "counting": "auto",  # the encoder counts "with" or "against" the face numbering
-    "zero_face": 0,  # the common zero: 0 = the first reading of the first set, else a face
-    "closure_drift": "report",  # "report" it (and its uncertainty) or "spread" it linearly
-    "ac_roll_arcmin": 1.0,  # the autocollimator reticle's roll, a stated limit (budget)
-}
+PARAMETERS = (
+    Parameter("faces", "faces n", "int", 0, minimum=3, maximum=360, zero="from the readings",
+              help="Faces of the polygon; 0: as many as the first set has positions"),
+    Parameter("grade", "encoder grade", "choice", 3,
+              choices=tuple((g, f"grade {g}: ±{tol:g}\", tilt ≤ {allowed_tilt_arcsec(g):.0f}\"")
+                            for g, tol in GRADE_ACCURACY_ARCSEC.items()),
+              help="Table 1 of the seed: the accuracy judged, and the tilt it allows"),
+    Parameter("closure_limits_arcsec", "closure limits grades 1–7 (\")", "text",
+              "0.125, 0.25, 0.5, 1, 2.5, 5, 15", cli=False,
+              help="Closure limit per grade, comma-separated; default half the grade's accuracy"),
+    Parameter("counting", "encoder counts", "choice", "auto",
+              choices=(("auto", "auto (from the readings)"), ("with", "with the face numbers"),
+                       ("against", "against the face numbers")),
+              help="Whether the encoder counts up or down as the face numbers rise; auto finds "
+                   "it from the readings and says so"),
+    Parameter("zero_face", "common zero at face", "int", 0, minimum=1, maximum=360,
+              zero="first reading of set 1",
+              help="Every set's errors are taken from this one reading of set 1, so reversal "
+                   "and repeatability between sets are kept"),
+    Parameter("closure_drift", "closure drift", "choice", "report",
+              choices=(("report", "report it (uncertainty)"),
+                       ("spread", "spread linearly, remove")),
+              help="The drift a set shows on returning to its first face: report it and carry it "
+                   "in the budget, or spread it linearly over the set and remove it (stated on "
+                   "the certificate)"),
+    Parameter("ac_roll_arcmin", "AC reticle roll ≤", "float", 1.0, "′", 0.0, 60.0, decimals=1,
+              step=0.5, cli_name="ac-roll",
+              help="Largest roll of the autocollimator's reticle: it turns part of the vertical "
+                   "reading into the horizontal one (budget input)"),
+)
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
-DRIFT_CHOICES = ("report", "spread")
 #: Autocollimator readings and face deviations beyond this are not readings of a polygon test.
 READING_LIMIT_ARCSEC = 3600.0
 
@@ -220,28 +240,12 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
     return sets, faces, counting, closure_rows
 
 
+def _check_across(s: dict[str, Any]) -> None:
+    closure_limit_arcsec(s["grade"], s["closure_limits_arcsec"])  # every entry, not only one
+
+
 def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
-    s = POLYGON.settings_with_defaults(settings)
-    grade = s["grade"]
-    if isinstance(grade, bool) or not isinstance(grade, (int, float)) or grade not in GRADE_ACCURACY_ARCSEC:
-        raise SettingsError(f"grade must be 1 to 7, not {grade}")
-    s["grade"] = int(grade)
-    if str(s["counting"]) not in COUNTING_CHOICES:
-        raise SettingsError(f"counting must be one of {', '.join(COUNTING_CHOICES)}, not "
-                            f"'{s['counting']}'")
-    if str(s["closure_drift"]) not in DRIFT_CHOICES:
-        raise SettingsError(f"closure_drift must be one of {', '.join(DRIFT_CHOICES)}, not "
-                            f"'{s['closure_drift']}'")
-    for key, low, high in (("faces", 0, 360), ("zero_face", 0, 360)):
-        value = s[key]
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or value != int(value) \
-                or not low <= value <= high:
-            raise SettingsError(f"{key} must be a whole number from {low} to {high}, not {value}")
-        s[key] = int(value)
-    roll = s["ac_roll_arcmin"]
-    if isinstance(roll, bool) or not isinstance(roll, (int, float)) or not 0 <= roll <= 60:
-        raise SettingsError(f"ac_roll_arcmin must be 0 to 60 (arcminutes), not {roll}")
-    return s
+    return POLYGON.checked_settings(settings)
 
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
@@ -397,7 +401,7 @@ POLYGON = AnalysisKind(
     key="polygon",
     title="Polygon encoder test",
     columns=COLUMNS,
-    default_settings=DEFAULT_SETTINGS,
+    parameters=PARAMETERS,
     analyze=analyze,
     to_json=to_json,
     summary=summary,
@@ -406,6 +410,6 @@ POLYGON = AnalysisKind(
                      "accuracy test by using coordinate transformation, Acta Optica Sinica "
                      "35(5):0512003 (2015)",
     certificate=polygon_certificate,
-    check_settings=_settings,
+    check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
 )

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind, SettingsError
+from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.report import theodolite_certificate
@@ -29,31 +29,30 @@ COLUMNS = (
            help="Approach direction of the pass: + forward, − backward (optional)"),
 )
 
-DEFAULT_SETTINGS: dict[str, Any] = {
-    "reference_row": 0,  # 0: the row with θ closest to 0; otherwise a 1-based row number
-    "vertical_reading": "elevation",  # or "zenith"
-    "method": "elevation",  # or "azimuth"
-    "psi_max_deg": 45.0,
-    "beta_max_deg": 45.0,
-    "accuracy_arcsec": 0.5,
-}
+PARAMETERS = (
+    Parameter("reference_row", "reference row", "int", 0, minimum=1, maximum=10_000_000,
+              zero="auto (θ nearest 0)",
+              help="Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0"),
+    Parameter("vertical_reading", "vertical reading", "choice", "elevation",
+              choices=(("elevation", "elevation E"), ("zenith", "zenith angle V (E = V − 90°)")),
+              help="What the theodolite's vertical circle reads"),
+    Parameter("method", "identify from", "choice", "elevation",
+              choices=(("elevation", "elevations (recommended)"),
+                       ("azimuth", "azimuth errors (absorbs axis error!)")),
+              help="The elevations identify the set-up without touching the axis' own error; "
+                   "the azimuth route absorbs any part of it that looks like the model"),
+    Parameter("psi_max_deg", "bound |ψ| ≤", "float", 45.0, "°", 0.001, 89.0, decimals=1, step=5.0,
+              help="Admissible axis tilt: the inversion's other root (ψ near 90°) is rejected"),
+    Parameter("beta_max_deg", "bound |β| ≤", "float", 45.0, "°", 0.001, 89.0, decimals=1,
+              step=5.0, help="Admissible elevation of the mirror normal"),
+    Parameter("accuracy_arcsec", "theodolite accuracy (1σ)", "float", 0.5, "\"", 0.0, 3600.0,
+              decimals=2, step=0.1,
+              help="Residuals far above it (3×) raise a warning; 0: no check"),
+)
 
 
 def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
-    s = THEODOLITE.settings_with_defaults(settings)
-    for key, low, high in (("reference_row", 0, 10_000_000), ("psi_max_deg", 0.001, 89.0),
-                           ("beta_max_deg", 0.001, 89.0), ("accuracy_arcsec", 0.0, 3600.0)):
-        value = s[key]
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or \
-                not math.isfinite(value) or not low <= value <= high:
-            raise SettingsError(f"{key} must be a number from {low:g} to {high:g}, not {value!r}")
-    if s["reference_row"] != int(s["reference_row"]):
-        raise SettingsError(f"reference_row must be a whole number, not {s['reference_row']}")
-    for key, choices in (("vertical_reading", ("elevation", "zenith")),
-                         ("method", ("elevation", "azimuth"))):
-        if s[key] not in choices:
-            raise SettingsError(f"{key} must be one of {', '.join(choices)}, not {s[key]!r}")
-    return s
+    return THEODOLITE.checked_settings(settings)
 
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
@@ -145,7 +144,7 @@ THEODOLITE = AnalysisKind(
     key="theodolite",
     title="Theodolite run",
     columns=COLUMNS,
-    default_settings=DEFAULT_SETTINGS,
+    parameters=PARAMETERS,
     analyze=analyze,
     to_json=to_json,
     summary=summary,
@@ -153,6 +152,5 @@ THEODOLITE = AnalysisKind(
     method_reference="Tian L. et al., Test method of angle error of limited rotation axis "
                      "system, Acta Photonica Sinica 46(11):1112005 (2017)",
     certificate=theodolite_certificate,
-    check_settings=_settings,
     presenter="widgets.theodolite.presenter:TheodolitePresenter",
 )

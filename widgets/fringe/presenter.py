@@ -96,30 +96,6 @@ class FringePresenter(WorkbenchPresenter):
         super().__init__(FRINGE, view, parent)
         self.export_button.clicked.connect(self.export_table_dialog)
 
-    def build_settings(self) -> None:
-        form = self.view.settings
-        form.add_int("lines_per_rev", "lines per revolution L", 1, 10_000_000,
-                     tooltip="Encoder: grating lines per revolution; errors in arcsec of shaft "
-                             "angle (one period = 1296000\"/L)")
-        form.add_float("period_nm", "interferometer period", 0.0, 1_000_000.0, 3, " nm", 1.0,
-                       tooltip="Interferometer: displacement per fringe (316.4 nm for λ/2 of a "
-                               "HeNe laser); errors then in nm. 0: an encoder")
-        form.field("period_nm").setSpecialValueText("encoder (use L)")
-        form.add_int("samples_per_period", "samples per period N", 0, 100_000,
-                     special="phase from θ or the signals",
-                     tooltip="Equal steps, N samples a period. Leave at 0 to take the phase from "
-                             "the θ column, or, without one, to estimate it from the signals "
-                             "(Heydemann); a record that does not follow N is refused")
-        form.add_int("max_order", "highest harmonic", 1, 31)
-        form.add_choice("harmonics", "harmonics", [("odd", "odd (1, 3, 5 …)"), ("all", "all")])
-        form.add_choice("method", "identification",
-                        [("lsq", "least squares (exact)"), ("pso", "particle swarm (seed)")])
-        form.add_int("lut_size", "correction table size", 8, 65536)
-        form.add_choice("table_zero", "table zero", [("mean", "its mean is zero"),
-                                                     ("phase0", "zero at phase 0")],
-                        tooltip="The phase origin is arbitrary: the table is stated with its mean "
-                                "removed, or with its first entry zero (said in the exported file)")
-
     def prepare_display(self, result: FringeResult) -> dict[str, tuple[np.ndarray, np.ndarray]]:
         """The curves thinned for drawing (worker thread for a large run). A revolution has
         a million samples: each curve keeps its envelope (every excursion, ~4000 points),

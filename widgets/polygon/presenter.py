@@ -8,7 +8,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
-from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult, allowed_tilt_arcsec
+from models.polygon.model import PolygonResult
 from models.polygon.model import pyramidal_readings_arcsec as pyramidal_readings
 from models.readings.tabular_import import TableImportError
 from widgets.error_plot import ErrorPlot
@@ -75,33 +75,6 @@ class PolygonPresenter(WorkbenchPresenter):
         super().__init__(POLYGON, view, parent)
         view.settings.layout().addRow(self.certificate_button)
         self.certificate_button.clicked.connect(self.load_certificate_dialog)
-
-    def build_settings(self) -> None:
-        form = self.view.settings
-        form.add_int("faces", "faces n", 0, 360, special="from the readings")
-        form.add_choice("grade", "encoder grade",
-                        [(g, f"grade {g}: ±{tol:g}\", tilt ≤ {allowed_tilt_arcsec(g):.0f}\"")
-                         for g, tol in GRADE_ACCURACY_ARCSEC.items()])
-        form.add_text("closure_limits_arcsec", "closure limits grades 1–7 (\")",
-                      tooltip="Closure limit per grade, comma-separated; default half the "
-                              "grade's accuracy")
-        form.add_choice("counting", "encoder counts",
-                        [("auto", "auto (from the readings)"), ("with", "with the face numbers"),
-                         ("against", "against the face numbers")],
-                        tooltip="Whether the encoder counts up or down as the face numbers rise; "
-                                "auto finds it from the readings and says so")
-        form.add_int("zero_face", "common zero at face", 0, 360,
-                     special="first reading of set 1",
-                     tooltip="Every set's errors are taken from this one reading of set 1, so "
-                             "reversal and repeatability between sets are kept")
-        form.add_choice("closure_drift", "closure drift",
-                        [("report", "report it (uncertainty)"), ("spread", "spread linearly, remove")],
-                        tooltip="The drift a set shows on returning to its first face: report it "
-                                "and carry it in the budget, or spread it linearly over the set "
-                                "and remove it (stated on the certificate)")
-        form.add_float("ac_roll_arcmin", "AC reticle roll ≤", 0.0, 60.0, 1, "′", 0.5,
-                       tooltip="Largest roll of the autocollimator's reticle: it turns part of "
-                               "the vertical reading into the horizontal one (budget input)")
 
     def show_result(self, result: PolygonResult) -> None:
         first = result.sets[0]

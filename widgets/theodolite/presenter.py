@@ -25,19 +25,6 @@ class TheodolitePresenter(WorkbenchPresenter):
         view.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
         super().__init__(THEODOLITE, view, parent)
 
-    def build_settings(self) -> None:
-        form = self.view.settings
-        form.add_int("reference_row", "reference row", 0, 100000, special="auto (θ nearest 0)",
-                     tooltip="Row where the theodolite was zeroed on the mirror")
-        form.add_choice("vertical_reading", "vertical reading",
-                        [("elevation", "elevation E"), ("zenith", "zenith angle V (E = V − 90°)")])
-        form.add_choice("method", "identify from",
-                        [("elevation", "elevations (recommended)"),
-                         ("azimuth", "azimuth errors (absorbs axis error!)")])
-        form.add_float("psi_max_deg", "bound |ψ| ≤", 0.1, 89.0, 1, "°", 5.0)
-        form.add_float("beta_max_deg", "bound |β| ≤", 0.1, 89.0, 1, "°", 5.0)
-        form.add_float("accuracy_arcsec", "theodolite accuracy (1σ)", 0.0, 100.0, 2, "\"", 0.1)
-
     def show_result(self, result: TheodoliteResult) -> None:
         order = np.argsort(result.theta_deg, kind="stable")
         x = result.theta_deg[order]

@@ -1,0 +1,110 @@
+"""Workbench settings declared once (PyMeasure's ``Parameter`` is the model).
+
+A :class:`Parameter` holds a setting's key, label, unit, type, range, default,
+help text and command-line flag. The settings form, the command line's
+options, the check of a project file's settings and the listing on a
+certificate are all made from the same declaration.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+__all__ = ["Parameter", "SettingsError", "check_parameters"]
+
+
+class SettingsError(ValueError):
+    """A workbench setting is out of range; the message names it."""
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One setting of a workbench.
+
+    ``kind`` is "int", "float", "choice" or "text". For numbers, ``minimum`` …
+    ``maximum`` is the range; ``zero`` (its text, e.g. "from the readings")
+    admits 0 as well, meaning "automatic". ``choices`` are (value, text) pairs.
+    """
+
+    key: str
+    label: str
+    kind: str
+    default: Any
+    unit: str = ""
+    minimum: float | None = None
+    maximum: float | None = None
+    choices: tuple[tuple[Any, str], ...] = ()
+    help: str = ""
+    cli: bool = True  # offered on the command line as --key-with-dashes (or --cli_name)
+    cli_name: str = ""
+    zero: str = ""
+    decimals: int = 3
+    step: float = 1.0
+
+    @property
+    def flag(self) -> str:
+        return "--" + (self.cli_name or self.key.replace("_", "-"))
+
+    def from_text(self, text: str) -> Any:
+        """A command-line value, checked (SettingsError naming the flag)."""
+        if self.kind == "choice":
+            value = next((v for v, _ in self.choices if str(v) == text), None)
+            if value is None:
+                shown = ", ".join(str(v) for v, _ in self.choices)
+                raise SettingsError(f"{self.key} must be one of {shown}, not {text}")
+            return value
+        if self.kind == "text":
+            return self.check(text)
+        try:
+            number: Any = int(text) if self.kind == "int" else float(text)
+        except ValueError:
+            raise SettingsError(f"{self.flag}: '{text}' is not a "
+                                f"{'whole number' if self.kind == 'int' else 'number'}") from None
+        return self.check(number)
+
+    def check(self, value: Any) -> Any:
+        """The value, of the declared type and in range; SettingsError naming the key."""
+        if self.kind == "choice":
+            values = [v for v, _ in self.choices]
+            if isinstance(value, bool) or not isinstance(value, str | int | float) or \
+                    value not in values:
+                shown = ", ".join(str(v) for v in values)
+                raise SettingsError(f"{self.key} must be one of {shown}, not {value!r}")
+            return values[values.index(value)]
+        if self.kind == "text":
+            if not isinstance(value, str):
+                raise SettingsError(f"{self.key} must be text, not {type(value).__name__}")
+            return value
+        if isinstance(value, bool) or not isinstance(value, int | float) or \
+                not math.isfinite(value):
+            raise SettingsError(f"{self.key} must be a number, not {value!r}")
+        if self.zero and value == 0:
+            return 0
+        if self.kind == "int" and value != int(value):
+            raise SettingsError(f"{self.key} must be a whole number, not {value}")
+        low = -math.inf if self.minimum is None else self.minimum
+        high = math.inf if self.maximum is None else self.maximum
+        if not low <= value <= high:
+            zero = "0 or " if self.zero else ""
+            raise SettingsError(f"{self.key} must be {zero}{low:g} to {high:g}"
+                                f"{' ' + self.unit if self.unit else ''}, not {value:g}")
+        return int(value) if self.kind == "int" else float(value)
+
+    def text(self, value: Any) -> str:
+        """The value as a certificate lists it."""
+        if self.kind == "choice":
+            return next((t for v, t in self.choices if v == value), str(value))
+        if self.zero and value == 0:
+            return self.zero
+        return f"{value:g}{' ' + self.unit if self.unit else ''}" if isinstance(
+            value, int | float) else str(value)
+
+
+def check_parameters(parameters: Sequence[Parameter],
+                     settings: Mapping[str, Any] | None) -> dict[str, Any]:
+    """Defaults filled in, unknown keys dropped, every value checked."""
+    given = dict(settings or {})
+    return {p.key: p.check(given.get(p.key, p.default)) for p in parameters}

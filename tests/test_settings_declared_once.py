@@ -1,0 +1,43 @@
+"""Each setting is declared once (models/parameters.py); the form, the command line, the
+project-file check and the certificate's listing all come from that declaration."""
+
+from __future__ import annotations
+
+import io
+import re
+
+import pytest
+from pypdf import PdfReader
+
+from app.main import main
+from models.parameters import SettingsError
+from models.registry import KINDS, presenter_class
+
+PAIRS = [(key, p) for key, kind in KINDS.items() for p in kind.parameters]
+
+
+@pytest.mark.parametrize("key, parameter", PAIRS, ids=[f"{k}.{p.key}" for k, p in PAIRS])
+def test_each_setting_reaches_form_cli_and_check(qtbot, capsys, key, parameter):
+    presenter = presenter_class(KINDS[key])()
+    qtbot.addWidget(presenter.view)
+    field = presenter.view.settings.field(parameter.key)
+    assert field.toolTip() == parameter.help  # the form: one field, with the declared help
+    if parameter.cli:
+        with pytest.raises(SystemExit):
+            main(["analyze", "--help"])
+        assert parameter.flag in capsys.readouterr().out
+    if parameter.kind in ("int", "float") and parameter.maximum is not None:
+        with pytest.raises(SettingsError, match=parameter.key):
+            KINDS[key].checked_settings({parameter.key: parameter.maximum * 10 + 1})
+
+
+def test_the_certificate_lists_the_settings_in_their_declared_words(tmp_path, capsys, samples_dir):
+    out = tmp_path / "c.pdf"
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
+                 str(out), "--closure-drift", "spread", "--zero-face", "2"]) == 0
+    capsys.readouterr()
+    text = re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in PdfReader(
+        io.BytesIO(out.read_bytes())).pages))
+    assert "Analysis settings" in text
+    assert "closure drift spread linearly, remove" in text
+    assert "common zero at face 2" in text and "encoder counts auto (from the readings)" in text
