@@ -3,15 +3,12 @@ every edit and pushes the result to its passive view."""
 
 from __future__ import annotations
 
-import contextlib
 import gc
 import logging
-import sys
-import threading
 from pathlib import Path
 from typing import Any
 
-from PySide6.QtCore import QObject, QRunnable, QThreadPool, QTimer, Signal
+from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 from PySide6.QtWidgets import QHeaderView
 
@@ -21,6 +18,7 @@ from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
+from widgets.workers import cyclic_gc_paused, emit_if_alive, gui_thread_first, worker_pool
 
 log = logging.getLogger(__name__)
 
@@ -52,11 +50,11 @@ class _AnalysisTask(QRunnable):
         kind, sheet, settings, generation, signals, prepare, current = self._args
         if generation != current():
             return  # a newer edit came while this waited in the queue: its analysis will run
-        with _gui_thread_first():
+        with gui_thread_first():
             parsed = sheet.parse()
             result, error = _run_analysis(kind, parsed, settings)
             display = _prepare_display(prepare, result)
-        _emit_if_alive(signals.finished, generation, (parsed, result, display), error)
+        emit_if_alive(signals.finished, generation, (parsed, result, display), error)
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -83,57 +81,14 @@ class _ImportTask(QRunnable):
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
-        with _cyclic_gc_paused(), _gui_thread_first():
+        with cyclic_gc_paused(), gui_thread_first():
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except TableImportError as exc:
-                _emit_if_alive(signals.imported, None, path, str(exc), generation)
+                emit_if_alive(signals.imported, None, path, str(exc), generation)
                 return
             gc.freeze()  # keep the new rows out of later full passes too
-        _emit_if_alive(signals.imported, rows, path, "", generation)
-
-
-def _emit_if_alive(signal, *args) -> None:
-    """Deliver a worker's result; if its workbench was closed meanwhile, drop it."""
-    with contextlib.suppress(RuntimeError):
-        signal.emit(*args)
-
-
-_WORKERS_RUNNING = 0
-_WORKERS_LOCK = threading.Lock()
-_SWITCH_INTERVAL_WORKING = 0.0001  # s
-_switch_interval_default = sys.getswitchinterval()
-
-
-@contextlib.contextmanager
-def _gui_thread_first():
-    """While a worker runs Python code, hand the GIL back to the GUI thread every 0.5 ms
-    instead of 5 ms. Painting calls Python (pyqtgraph) hundreds of times per frame and
-    waits for the GIL at each call: with the default interval a frame took seconds."""
-    global _WORKERS_RUNNING, _switch_interval_default
-    with _WORKERS_LOCK:
-        if _WORKERS_RUNNING == 0:
-            _switch_interval_default = sys.getswitchinterval()
-            sys.setswitchinterval(_SWITCH_INTERVAL_WORKING)
-        _WORKERS_RUNNING += 1
-    try:
-        yield
-    finally:
-        with _WORKERS_LOCK:
-            _WORKERS_RUNNING -= 1
-            if _WORKERS_RUNNING == 0:
-                sys.setswitchinterval(_switch_interval_default)
-
-
-@contextlib.contextmanager
-def _cyclic_gc_paused():
-    was_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was_enabled:
-            gc.enable()
+        emit_if_alive(signals.imported, rows, path, "", generation)
 
 
 def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
@@ -145,20 +100,6 @@ def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
     except Exception as exc:  # noqa: BLE001 - a bug must not take the typed readings with it
         log.exception("analysis failed")
         return None, f"internal error while analysing ({type(exc).__name__}: {exc})"
-
-
-_WORKER_POOL: QThreadPool | None = None
-
-
-def worker_pool() -> QThreadPool:
-    """Our own thread pool for imports and analyses. Not Qt's global pool: Qt's painting
-    uses that one for parallel image work, and waits for it on the GUI thread, so a
-    long import queued there froze the window for up to a second."""
-    global _WORKER_POOL
-    if _WORKER_POOL is None:
-        _WORKER_POOL = QThreadPool()
-        _WORKER_POOL.setMaxThreadCount(2)
-    return _WORKER_POOL
 
 
 class WorkbenchPresenter(QObject):
