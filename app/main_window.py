@@ -4,7 +4,6 @@ autosave and crash recovery, persisted window state and recent files."""
 from __future__ import annotations
 
 import contextlib
-import json
 import logging
 import os
 import threading
@@ -25,9 +24,9 @@ from PySide6.QtWidgets import (
     QTabWidget,
 )
 
-from app.writers.results_export import write_results_csv, write_results_xlsx
+from app.certificate_presenter import CertificatePresenter
 from models import __version__
-from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.metadata import CertificateMetadata
 from models.project.file import (
     Project,
     ProjectFileError,
@@ -74,8 +73,8 @@ class MainWindow(QMainWindow):
         self.presenters = presenters or default_presenters()
         self.project_path: Path | None = None
         self.project_metadata: dict = {}
-        self._stored_problems: dict[str, str] = {}  # certificate details that no longer read
-        self._stored_raw: dict = {}
+        self.certificates = CertificatePresenter(self, self.qsettings, lambda: self.project_metadata,
+                                                 lambda: self.current.mark_modified())
         self._setup_ui()
         self._setup_menus()
         self._restore_window_state()
@@ -297,53 +296,47 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     # -- certificates -----------------------------------------------------------------
+    # -- certificates: the CertificatePresenter decides, the window shows ----------------
     def lab_defaults(self) -> dict:
-        text = self.qsettings.value("certificate/lab_defaults", "")
-        try:
-            data = json.loads(text) if text else {}
-        except (TypeError, ValueError):
-            data = {}
-        return data if isinstance(data, dict) else {}
+        return self.certificates.lab_defaults()
 
     def save_lab_defaults(self, defaults: dict) -> None:
-        self.qsettings.setValue("certificate/lab_defaults", json.dumps(defaults, ensure_ascii=False))
+        self.certificates.save_lab_defaults(defaults)
 
     def certificate_metadata(self, key: str | None = None) -> CertificateMetadata:
-        """The workbench's certificate metadata from the project, lab defaults filled in."""
-        key = key or self.current.kind.key
-        stored = self.project_metadata.get("certificates", {}).get(key)
-        meta, self._stored_problems = CertificateMetadata.from_dict_lenient(stored)
-        self._stored_raw = stored if isinstance(stored, dict) else {}
-        try:
-            return meta.with_lab_defaults(self.lab_defaults())
-        except MetadataError:
-            return meta
+        return self.certificates.details(key or self.current.kind.key)
 
     def store_certificate_metadata(self, meta: CertificateMetadata, key: str | None = None) -> None:
-        key = key or self.current.kind.key
-        certificates = dict(self.project_metadata.get("certificates", {}))
-        if certificates.get(key) != meta.to_dict():
-            certificates[key] = meta.to_dict()
-            self.project_metadata["certificates"] = certificates
-            self.current.mark_modified()  # the details are saved with the project
+        self.certificates.store_details(key or self.current.kind.key, meta)
 
     def edit_certificate_metadata(self, meta: CertificateMetadata) -> CertificateMetadata | None:
-        """Show the certificate dialog; the metadata entered, or None if cancelled."""
-        sequence = int(self.qsettings.value("certificate/next_sequence", 1) or 1)
+        return self.certificates.edit_details(meta)
+
+    def edit_certificate_details(self, meta: CertificateMetadata, sequence: int,
+                                 problems: dict[str, str], raw: dict
+                                 ) -> tuple[CertificateMetadata | None, bool]:
+        """The certificate dialog (the presenter's view call)."""
         dialog = CertificateDialog(meta, sequence, self)
         dialog.lab_defaults_saved.connect(self.save_lab_defaults)
-        if self._stored_problems:  # a stored detail that no longer reads: shown as stored, marked
-            dialog.show_problems(self._stored_problems, self._stored_raw)
+        if problems:  # a stored detail that no longer reads: shown as stored, marked
+            dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
-            return None
-        if dialog.sequence_used:
-            self.qsettings.setValue("certificate/next_sequence", sequence + 1)
-        return dialog.metadata()
+            return None, False
+        return dialog.metadata(), dialog.sequence_used
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
         path, _ = QFileDialog.getSaveFileName(self, title, str(Path(self._last_dir()) / suggested),
                                               file_filter)
         return path
+
+    def show_status(self, text: str, milliseconds: int) -> None:
+        self.statusBar().showMessage(text, milliseconds)
+
+    def wait_cursor(self, on: bool) -> None:
+        if on:
+            QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        else:
+            QApplication.restoreOverrideCursor()
 
     def _current_result(self):
         presenter = self.current
@@ -358,57 +351,13 @@ class MainWindow(QMainWindow):
 
     def export_certificate(self) -> bool:
         result = self._current_result()
-        if result is None:
-            return False
-        kind = self.current.kind
-        meta = self.edit_certificate_metadata(self.certificate_metadata())
-        if meta is None:
-            return False
-        self.store_certificate_metadata(meta)
-        suggested = (meta.certificate_number or f"{kind.key}-certificate").replace("/", "-")
-        path = self.choose_save_path("Export certificate", f"{suggested}.pdf", "PDF (*.pdf)")
-        if not path:
-            return False
-        if not path.lower().endswith(".pdf"):
-            path += ".pdf"
-        from app.writers.certificate_pdf import write_certificate_pdf  # fpdf2 loads on first export
-
-        QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
-        try:
-            document = kind.certificate_document(result, meta, self._source_name(),
-                                                 self.current.settings)
-            write_certificate_pdf(path, document)
-        except (OSError, ValueError) as exc:
-            self.tell("Cannot export", f"{path}: {exc}. Nothing else was changed.")
-            return False
-        finally:
-            QApplication.restoreOverrideCursor()
-        draft = (" — DRAFT: " + ", ".join(meta.missing_fields()) + " missing"
-                 if document.is_draft else "")
-        self.statusBar().showMessage(f"Certificate written to {path}{draft}", 10000)
-        return True
+        return result is not None and self.certificates.export_certificate(
+            self.current.kind, result, self.current.settings, self._source_name())
 
     def export_results(self) -> bool:
         result = self._current_result()
-        if result is None:
-            return False
-        kind = self.current.kind
-        path = self.choose_save_path("Export results", f"{kind.key}-results.csv",
-                                     "CSV (*.csv);;Excel workbook (*.xlsx)")
-        if not path:
-            return False
-        try:
-            document = kind.certificate_document(result, self.certificate_metadata(),
-                                                 self._source_name(), self.current.settings)
-            if path.lower().endswith(".xlsx"):
-                write_results_xlsx(path, document)
-            else:
-                write_results_csv(path, document)
-        except (OSError, ValueError) as exc:
-            self.tell("Cannot export", f"{path}: {exc}")
-            return False
-        self.statusBar().showMessage(f"Results written to {path}", 8000)
-        return True
+        return result is not None and self.certificates.export_results(
+            self.current.kind, result, self.current.settings, self._source_name())
 
     # -- autosave and recovery ------------------------------------------------------
     def _schedule_autosave(self, *_args) -> None:
