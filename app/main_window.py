@@ -40,13 +40,15 @@ from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
 from widgets.certificate_dialog import CertificateDialog
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
+from widgets.workers import gui_thread_first
 
 log = logging.getLogger(__name__)
 
 PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
 IMPORT_FILTER = "Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"
 AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s while typing)
-AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread
+AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
+AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
 MAX_RECENT = 8
 
 
@@ -360,24 +362,32 @@ class MainWindow(QMainWindow):
             self.current.kind, result, self.current.settings, self._source_name())
 
     # -- autosave and recovery ------------------------------------------------------
+    def _rows(self) -> int:
+        return sum(p.sheet.row_count for p in self.presenters)
+
     def _schedule_autosave(self, *_args) -> None:
         """An edit: autosave a few seconds from now (not later while typing goes on)."""
         if not self.autosave_timer.isActive():
-            self.autosave_timer.start()
+            large = self._rows() > AUTOSAVE_THREAD_ROWS
+            self.autosave_timer.start(AUTOSAVE_DELAY_LARGE_MS if large else AUTOSAVE_DELAY_MS)
 
     def autosave(self) -> None:
         if not self.is_modified:
             return
-        project = self.project()
-        rows = sum(len(state.rows) for state in project.workbenches.values())
-        if rows > AUTOSAVE_THREAD_ROWS:
+        if self._rows() > AUTOSAVE_THREAD_ROWS:
+            project = Project({p.kind.key: p.state(deep=False) for p in self.presenters},
+                              dict(self.project_metadata))
             if self._autosave_thread is not None and self._autosave_thread.is_alive():
                 self.autosave_timer.start()  # the last one is still writing: try again soon
                 return
             self._autosave_thread = threading.Thread(
-                target=self._write_recovery, args=(project,), daemon=True)
+                target=self._write_recovery_in_background, args=(project,), daemon=True)
             self._autosave_thread.start()
         else:
+            self._write_recovery(self.project())
+
+    def _write_recovery_in_background(self, project: Project) -> None:
+        with gui_thread_first():  # the window keeps the interpreter every 0.1 ms
             self._write_recovery(project)
 
     def _write_recovery(self, project: Project) -> None:

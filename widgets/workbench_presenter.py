@@ -205,8 +205,11 @@ class WorkbenchPresenter(QObject):
     def _emit_modified(self) -> None:
         self.modified_changed.emit(self.is_modified)
 
-    def state(self) -> WorkbenchState:
-        rows = self.sheet.copy_rows()
+    def state(self, deep: bool = True) -> WorkbenchState:
+        """The readings and settings. ``deep=False`` copies only the list of rows (a
+        million rows' copies would stall the window): an autosave may then see a cell
+        edited a moment later, never a half-made structure."""
+        rows = self.sheet.copy_rows() if deep else list(self.sheet.rows)
         while rows and not any(c.strip() for c in rows[-1]):
             rows.pop()
         return WorkbenchState(rows, dict(self._settings))
