@@ -47,7 +47,7 @@ def test_typing_readings_updates_corrected_curve(qtbot, bench):
         for c, text in enumerate(row):
             type_cell(qtbot, table, r, c, text)
     qtbot.waitUntil(lambda: bench.result is not None and bench.result.theta_deg.size == 11)
-    x, y = bench.error_plot.corrected_curve.getData()
+    x, y = bench.view.error_plot.corrected_curve.getData()
     np.testing.assert_allclose(x, theta)
     np.testing.assert_allclose(y, truth, atol=1e-4)
     assert bench.sheet.row_count == 11
@@ -64,7 +64,7 @@ def test_paste_block_then_undo_redo(qtbot, bench):
     bench.undo_stack.undo()
     qtbot.waitUntil(lambda: bench.result is None)
     assert bench.sheet.row_count == 0
-    x, _ = bench.error_plot.corrected_curve.getData()
+    x, _ = bench.view.error_plot.corrected_curve.getData()
     assert x is None or len(x) == 0
     bench.undo_stack.redo()
     qtbot.waitUntil(lambda: bench.result is not None)
@@ -132,7 +132,7 @@ def test_settings_change_reanalyses(qtbot, bench):
 
 
 def test_simulation_panel_reproduces_fig3_family(qtbot, bench):
-    sim = bench.simulation
+    sim = bench.view.simulation
     sim.sweep_values.setText("-2, 0, 2")
     sim.update_curves()
     spans = [np.ptp(c.getData()[1]) for c in sim.top_curves[:3]]

@@ -29,13 +29,13 @@ def fringe(qtbot):
 def test_polygon_sample_plots_and_closure_row(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
-    x, corrected = polygon.error_plot.corrected_curve.getData()
+    x, corrected = polygon.view.error_plot.corrected_curve.getData()
     assert len(x) == 24
     np.testing.assert_allclose(corrected, polygon.result.mean_corrected_arcsec)
     assert polygon.table_model.highlight_rows == {24, 49}
     assert polygon.table_model.data(polygon.table_model.index(24, 0),
                                     Qt.ItemDataRole.BackgroundRole) == MUTED_BRUSH
-    _, heights = polygon.harmonics.bars.opts["x"], polygon.harmonics.bars.opts["height"]
+    _, heights = polygon.view.harmonics.bars.opts["x"], polygon.view.harmonics.bars.opts["height"]
     assert heights[0] == pytest.approx(0.35, abs=0.05)  # eccentricity of the sample encoder
 
 
@@ -43,9 +43,9 @@ def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
     result = polygon.result
-    _, raw = polygon.error_plot.raw_curve.getData()
-    _, correction = polygon.error_plot.model_curve.getData()
-    _, corrected = polygon.error_plot.corrected_curve.getData()
+    _, raw = polygon.view.error_plot.raw_curve.getData()
+    _, correction = polygon.view.error_plot.model_curve.getData()
+    _, corrected = polygon.view.error_plot.corrected_curve.getData()
     np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)  # corrected = raw + correction
     mean_pyramidal = np.mean([s.pyramidal_error_arcsec for s in result.sets], axis=0)
     np.testing.assert_allclose(correction, -mean_pyramidal, atol=1e-9)
@@ -77,11 +77,11 @@ def test_fringe_paste_and_compensation(qtbot, fringe, samples_dir):
     fringe.view.table.setCurrentIndex(fringe.table_model.index(0, 0))
     fringe.view.table.paste_action.trigger()
     qtbot.waitUntil(lambda: fringe.result is not None)
-    _, raw = fringe.error_plot.raw_curve.getData()
-    _, comp = fringe.error_plot.corrected_curve.getData()
+    _, raw = fringe.view.error_plot.raw_curve.getData()
+    _, comp = fringe.view.error_plot.corrected_curve.getData()
     assert len(raw) == 128
     assert np.ptp(raw) > 0.9 and np.ptp(comp) < 0.1
-    liss_x, _ = fringe.plots.liss_raw.getData()
+    liss_x, _ = fringe.view.plots.liss_raw.getData()
     assert len(liss_x) == 128
 
 
@@ -93,8 +93,8 @@ def test_interferometer_record_without_phase_reference(qtbot, fringe, samples_di
     qtbot.waitUntil(lambda: fringe.result is not None, timeout=10000)
     result = fringe.result
     assert result.phase_source == "estimated" and result.unit == "nm"
-    assert "error, est. phase (nm)" in fringe.error_plot.main_plot.getAxis("left").labelText
-    x, y = fringe.plots.liss_ellipse.getData()
+    assert "error, est. phase (nm)" in fringe.view.error_plot.main_plot.getAxis("left").labelText
+    x, y = fringe.view.plots.liss_ellipse.getData()
     e = result.ellipse
     assert len(x) == 361 and np.max(y) == pytest.approx(e.offset_sin + e.amplitude_sin, rel=1e-3)
     assert "not observable without a phase reference" in fringe.view.warnings.text()
@@ -150,7 +150,7 @@ def test_closure_limit_table_setting(qtbot, polygon):
 
 
 def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
-    sim = polygon.simulation
+    sim = polygon.view.simulation
     sim.form.set_values({"psi_arcsec": 600.0, "sweep": "omega_deg"})
     sim.sweep_values.setText("0, 90")
     sim.update_curves()

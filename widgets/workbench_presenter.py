@@ -10,7 +10,6 @@ from typing import Any
 
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
-from PySide6.QtWidgets import QHeaderView
 
 from models.analysis_kind import AnalysisKind
 from models.project.file import WorkbenchState
@@ -113,20 +112,21 @@ class WorkbenchPresenter(QObject):
     analysed = Signal()
     import_failed = Signal(str)
 
-    def __init__(self, kind: AnalysisKind, view: WorkbenchView, parent=None) -> None:
-        super().__init__(parent if parent is not None else view)  # lives as long as its view
+    #: the view a presenter makes when none is given (a test gives a mock)
+    view_class: type[WorkbenchView] | None = None
+
+    def __init__(self, kind: AnalysisKind, view: WorkbenchView | None = None, parent=None) -> None:
+        if view is None:
+            view = self.view_class()
+        # lives as long as its view (a mock view in a test is no QObject)
+        super().__init__(parent if parent is not None else
+                         (view if issubclass(type(view), QObject) else None))
         self.kind = kind
         self.view = view
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
-        self.view.table.setModel(self.table_model)
-        header = self.view.table.horizontalHeader()
-        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        # Qt measures the first 1000 rows for every change: 64 give the same widths for
-        # readings (one number format per column) and keep an edit cheap on long runs.
-        header.setResizeContentsPrecision(64)
-        header.setStretchLastSection(True)
+        self.view.attach_table_model(self.table_model)
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
@@ -145,16 +145,16 @@ class WorkbenchPresenter(QObject):
         self._timer.setInterval(0)
         self._timer.timeout.connect(self.refresh)
         self.build_settings()
-        self.view.settings.set_values(self._settings)
+        self.view.set_settings(self._settings)
         self.table_model.sheet_changed.connect(self.schedule_refresh)
-        self.view.settings.changed.connect(self._on_settings_edited)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
+        self.view.subscribe(self)
 
     # -- subclass hooks ---------------------------------------------------
     def build_settings(self) -> None:
         """The set-up fields, one per declared setting of the kind."""
         for parameter in self.kind.parameters:
-            self.view.settings.add_parameter(parameter)
+            self.view.add_setting(parameter)
 
     def prepare_display(self, result: Any) -> Any:
         """Heavy plot arrays for ``result`` (decimation, model curves): pure numpy, run on
@@ -174,13 +174,14 @@ class WorkbenchPresenter(QObject):
 
     def set_settings(self, settings: dict[str, Any]) -> None:
         self._settings = self.kind.settings_with_defaults(settings)
-        self.view.settings.set_values(self._settings)
+        self.view.set_settings(self._settings)
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
 
-    def _on_settings_edited(self) -> None:
-        self._settings.update(self.view.settings.values())
+    def settings_edited(self) -> None:
+        """The user changed a set-up field."""
+        self._settings.update(self.view.settings_values())
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
@@ -218,7 +219,7 @@ class WorkbenchPresenter(QObject):
         """Replace readings and settings (a project was opened); clears the undo history."""
         self._supersede_imports()
         self._settings = self.kind.settings_with_defaults(state.settings)
-        self.view.settings.set_values(self._settings)
+        self.view.set_settings(self._settings)
         self.table_model.apply_replace(state.rows)
         self.undo_stack.clear()
         self.mark_saved()
@@ -275,19 +276,7 @@ class WorkbenchPresenter(QObject):
         self.schedule_refresh()
 
     def _fit_columns(self) -> None:
-        """Columns follow their contents on short sheets. On long ones Qt's re-measuring
-        after every edit costs ~10 ms, so they are sized once and then left to the user
-        (and for huge sheets not measured at all: that scan stalls)."""
-        header = self.view.table.horizontalHeader()
-        rows = self.sheet.row_count
-        if rows <= LIVE_COLUMN_FIT_ROWS:
-            if header.sectionResizeMode(0) != QHeaderView.ResizeMode.ResizeToContents:
-                header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-            return
-        if header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
-            header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
-            if rows <= THREAD_THRESHOLD_ROWS:
-                self.view.table.resizeColumnsToContents()
+        self.view.fit_columns(self.sheet.row_count, LIVE_COLUMN_FIT_ROWS, THREAD_THRESHOLD_ROWS)
 
     def _set_busy(self, busy: bool, text: str = "") -> None:
         self.busy = busy

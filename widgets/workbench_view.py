@@ -7,6 +7,7 @@ from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QGroupBox,
+    QHeaderView,
     QLabel,
     QPlainTextEdit,
     QProgressBar,
@@ -86,7 +87,43 @@ class WorkbenchView(QWidget):
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(splitter)
 
-    # -- setters the presenter calls ---------------------------------------
+    # -- the calls the presenter makes (all it knows of the view) ----------------
+    def subscribe(self, presenter) -> None:
+        """Wire the user's actions to the presenter (a workbench's view adds its own)."""
+        self.settings.changed.connect(presenter.settings_edited)
+
+    def attach_table_model(self, model) -> None:
+        self.table.setModel(model)
+        header = self.table.horizontalHeader()
+        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        # Qt measures the first 1000 rows for every change: 64 give the same widths for
+        # readings (one number format per column) and keep an edit cheap on long runs.
+        header.setResizeContentsPrecision(64)
+        header.setStretchLastSection(True)
+
+    def fit_columns(self, rows: int, live_rows: int, measure_rows: int) -> None:
+        """Columns follow their contents up to ``live_rows`` rows. On long sheets Qt's
+        re-measuring after every edit costs ~10 ms, so they are sized once (up to
+        ``measure_rows`` rows; beyond, not measured at all: that scan stalls)."""
+        header = self.table.horizontalHeader()
+        if rows <= live_rows:
+            if header.sectionResizeMode(0) != QHeaderView.ResizeMode.ResizeToContents:
+                header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+            return
+        if header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
+            header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
+            if rows <= measure_rows:
+                self.table.resizeColumnsToContents()
+
+    def add_setting(self, parameter) -> None:
+        self.settings.add_parameter(parameter)
+
+    def set_settings(self, values: dict) -> None:
+        self.settings.set_values(values)
+
+    def settings_values(self) -> dict:
+        return self.settings.values()
+
     def add_plot_tab(self, widget: QWidget, title: str) -> None:
         self.plot_tabs.addTab(widget, title)
 
@@ -114,3 +151,6 @@ class WorkbenchView(QWidget):
 
     def set_readings_caption(self, text: str) -> None:
         self.readings_label.setText(text)
+
+    def append_to_readings_caption(self, text: str) -> None:
+        self.readings_label.setText(self.readings_label.text() + text)

@@ -87,7 +87,7 @@ def _edit_to_plot(qtbot, window, edits: int = 40) -> np.ndarray:
     presenter.table_model.replace_all(rows, "bench")
     presenter.refresh()
     QApplication.processEvents()
-    curve = presenter.error_plot.corrected_curve
+    curve = presenter.view.error_plot.corrected_curve
     done = []
     presenter.analysed.connect(lambda: done.append(time.perf_counter()))
     out = np.empty(edits)

@@ -1,0 +1,94 @@
+"""Each workbench's presenter with an autospec'd mock of its view: no window, no widget,
+no dialog (Mantid workbench's MVP tests are the model). The presenter decides; the
+tests read what it asked the view to show."""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import numpy as np
+import pytest
+
+from models.readings.tabular_import import map_columns, read_table
+from widgets.fringe.presenter import FringePresenter
+from widgets.fringe.view import FringeView
+from widgets.polygon.presenter import PolygonPresenter
+from widgets.polygon.view import PolygonView
+from widgets.theodolite.presenter import TheodolitePresenter
+from widgets.theodolite.view import TheodoliteView
+
+
+def make(presenter_class, view_class, qapp):
+    view = mock.create_autospec(view_class, instance=True)
+    view.settings_values.return_value = {}
+    return presenter_class(view), view
+
+
+def load(presenter, samples_dir) -> None:
+    rows = map_columns(read_table(samples_dir / presenter.kind.sample_file), presenter.kind.columns)
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+
+
+def test_theodolite_presenter_asks_for_curves_in_theta_order(qapp, samples_dir):
+    presenter, view = make(TheodolitePresenter, TheodoliteView, qapp)
+    assert view.add_setting.call_count == len(presenter.kind.parameters)
+    view.subscribe.assert_called_once_with(presenter)
+    load(presenter, samples_dir)
+    theta, raw, model, corrected, residual = view.show_curves.call_args.args
+    assert np.all(np.diff(theta) >= 0)
+    np.testing.assert_allclose(raw - model, corrected)
+    assert "Set-up identified" in view.set_summary.call_args.args[0]
+    view.settings_values.return_value = {"method": "azimuth"}
+    presenter.settings_edited()
+    presenter.refresh()
+    assert presenter.result.identification.method == "azimuth"
+    assert any("absorb" in w for w in view.set_warnings.call_args.args[0])
+
+
+def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qapp, samples_dir,
+                                                                               tmp_path):
+    presenter, view = make(PolygonPresenter, PolygonView, qapp)
+    load(presenter, samples_dir)
+    theta, raw, correction, corrected, residual = view.show_errors.call_args.args
+    np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)
+    assert len(theta) == 24 and residual is not None
+    view.show_harmonics.assert_called()
+    presenter.table_model.set_cells([(24, 3, "25.0")])  # the closure reading far off
+    presenter.refresh()
+    view.append_to_readings_caption.assert_called_with(" — RUN INVALID (closure failed)")
+    bad = tmp_path / "cert.csv"
+    bad.write_text("1,0.1\n1,0.2\n")
+    view.ask_certificate_file.return_value = str(bad)
+    presenter.load_certificate_dialog()
+    title, text = view.tell.call_args.args
+    assert title == "Cannot read certificate" and "position 1 appears twice" in text
+    view.ask_certificate_file.return_value = ""  # cancelled: nothing asked, nothing changed
+    view.tell.reset_mock()
+    presenter.load_certificate_dialog()
+    view.tell.assert_not_called()
+
+
+def test_fringe_presenter_hands_the_view_every_curve_and_exports(qapp, samples_dir, tmp_path):
+    presenter, view = make(FringePresenter, FringeView, qapp)
+    load(presenter, samples_dir)
+    drawing = view.show_drawing.call_args.args[0]
+    x, raw, comp = drawing["errors"]
+    assert len(x) == len(raw) == len(comp) > 0
+    assert drawing["error_label"] == "interp. error (\")"
+    assert len(drawing["ellipse"][0]) == 361 and len(drawing["lissajous"][0]) == 512
+    out = tmp_path / "table.csv"
+    view.ask_table_path.return_value = str(out)
+    presenter.export_table_dialog()
+    assert out.read_text().startswith("# AngleBench fringe correction table")
+
+
+@pytest.mark.parametrize("presenter_class, view_class", [
+    (TheodolitePresenter, TheodoliteView), (PolygonPresenter, PolygonView),
+    (FringePresenter, FringeView)])
+def test_unreadable_readings_clear_the_view(qapp, presenter_class, view_class):
+    presenter, view = make(presenter_class, view_class, qapp)
+    presenter.table_model.replace_all([["x"] * len(presenter.kind.columns)] * 3)
+    presenter.refresh()
+    view.clear_result.assert_called()
+    assert view.set_summary.call_args.args[0].startswith("No result")

@@ -1,0 +1,125 @@
+"""The fringe signal analysis' view: the shared readings and set-up, the interpolation
+error before and after compensation with the table export button, the signals and
+fits, the Lissajous figure with the fitted ellipse, the spectrum and the drift per
+period. Widgets only: the presenter hands it arrays to draw."""
+
+from __future__ import annotations
+
+import pyqtgraph as pg
+from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
+
+from widgets.error_plot import ErrorPlot
+from widgets.workbench_view import WorkbenchView
+
+
+def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) -> pg.PlotWidget:
+    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous)."""
+    plot = pg.PlotWidget(background="w")
+    plot.setLabel("left", left)
+    plot.setLabel("bottom", bottom)
+    plot.showGrid(x=True, y=True, alpha=0.25)
+    for axis in ("left", "bottom"):
+        plot.getAxis(axis).enableAutoSIPrefix(False)
+    if downsample:
+        plot.setClipToView(True)
+        plot.setDownsampling(auto=True, mode="peak")
+    if legend:
+        plot.addLegend(offset=(-10, 10))
+    return plot
+
+
+class FringePlots(QWidget):
+    """The fringe-specific plots; every curve is created once."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.signals = _plot("signal (V)", "electrical phase θ (periods)")
+        self.sin_points = self.signals.plot(name="u sin", pen=pg.mkPen("#e6b0aa", width=3))
+        self.cos_points = self.signals.plot(name="u cos", pen=pg.mkPen("#a9cce3", width=3))
+        self.sin_fit = self.signals.plot(name="fit", pen=pg.mkPen("#7b241c", width=1.5))
+        self.cos_fit = self.signals.plot(pen=pg.mkPen("#154360", width=1.5))
+        self.lissajous = _plot("u sin (V)", "u cos (V)", downsample=False)
+        self.lissajous.setAspectLocked(True)
+        self.liss_raw = self.lissajous.plot(name="measured", pen=None, symbol="o", symbolSize=2,
+                                            symbolPen=None, symbolBrush="#c0392b")
+        self.liss_ellipse = self.lissajous.plot(name="fitted ellipse (Heydemann)",
+                                                pen=pg.mkPen("#27ae60", width=2,
+                                                             style=pg.QtCore.Qt.PenStyle.DashLine))
+        self.liss_ideal = self.lissajous.plot(name="compensated (unit circle × A1)",
+                                              pen=pg.mkPen("#1f5fbf", width=1.5))
+        self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False)
+        self.spectrum.setLogMode(y=True)
+        self.sin_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#c0392b", name="sin")
+        self.cos_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#1f5fbf", name="cos")
+        self.spectrum.addItem(self.sin_bars)
+        self.spectrum.addItem(self.cos_bars)
+        self.drift = _plot("amplitude (V)", "period")
+        self.drift_a1 = self.drift.plot(name="A1 (sin)", pen=pg.mkPen("#c0392b", width=1.5))
+        self.drift_b1 = self.drift.plot(name="B1 (cos)", pen=pg.mkPen("#1f5fbf", width=1.5))
+        self.drift_a3 = self.drift.plot(name="A3 × 10", pen=pg.mkPen("#e67e22", width=1.5))
+        self.drift_b3 = self.drift.plot(name="B3 × 10", pen=pg.mkPen("#16a085", width=1.5))
+
+
+class FringeView(WorkbenchView):
+    def __init__(self, parent=None) -> None:
+        super().__init__("Fringe signal analysis", parent)
+        self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
+                                    residual_label="sin fit res. (mV)")
+        self.error_plot.set_curve_names("before compensation", "", "after compensation")
+        self.error_plot.main_plot.setLabel("left", "interp. error (\")")
+        self.error_plot.corrected_plot.setLabel("left", "compensated (\")")
+        for plot in (self.error_plot.main_plot, self.error_plot.corrected_plot,
+                     self.error_plot.residual_plot):
+            plot.setClipToView(True)
+            plot.setDownsampling(auto=True, mode="peak")
+        self.plots = FringePlots()
+        self.export_button = QPushButton("Export table (CSV / C header)…")
+        error_tab = QWidget()
+        layout = QVBoxLayout(error_tab)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.error_plot, 1)
+        layout.addWidget(self.export_button)
+        self.add_plot_tab(error_tab, "Interpolation error")
+        self.add_plot_tab(self.plots.signals, "Signals and fit")
+        self.add_plot_tab(self.plots.lissajous, "Lissajous")
+        self.add_plot_tab(self.plots.spectrum, "Spectrum")
+        self.add_plot_tab(self.plots.drift, "Drift per period")
+
+    def subscribe(self, presenter) -> None:
+        super().subscribe(presenter)
+        self.export_button.clicked.connect(presenter.export_table_dialog)
+
+    def show_drawing(self, d: dict) -> None:
+        """Every curve of a result, as the presenter prepared them."""
+        self.error_plot.residual_plot.setLabel("bottom", d["along"])
+        self.error_plot.main_plot.setLabel("left", d["error_label"])
+        self.error_plot.corrected_plot.setLabel("left", d["compensated_label"])
+        x, raw, comp = d["errors"]
+        self.error_plot.set_curves(x, raw, None, comp)
+        self.error_plot.set_residuals(*d["residual"])
+        p = self.plots
+        p.sin_points.setData(*d["sin"])
+        p.cos_points.setData(*d["cos"])
+        p.sin_fit.setData(*d["sin_fit"])
+        p.cos_fit.setData(*d["cos_fit"])
+        p.liss_raw.setData(*d["lissajous"])
+        p.liss_ellipse.setData(*d["ellipse"])
+        p.liss_ideal.setData(*d["circle"])
+        (sx, sh), (cx, ch) = d["bars"]
+        p.sin_bars.setOpts(x=sx, height=sh, width=0.35)
+        p.cos_bars.setOpts(x=cx, height=ch, width=0.35)
+        for curve, data in zip((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3), d["drift"],
+                               strict=True):
+            curve.setData(*data)
+
+    def clear_result(self) -> None:
+        self.error_plot.clear()
+        p = self.plots
+        for curve in (p.sin_points, p.cos_points, p.sin_fit, p.cos_fit, p.liss_raw, p.liss_ellipse,
+                      p.liss_ideal, p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3):
+            curve.setData([], [])
+
+    def ask_table_path(self) -> str:
+        path, _ = QFileDialog.getSaveFileName(self, "Export correction table", "",
+                                              "CSV (*.csv);;C header (*.h)")
+        return path

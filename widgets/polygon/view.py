@@ -1,0 +1,97 @@
+"""The polygon encoder test's view: the shared readings and set-up, the error over the
+circle, the vertical readings with the tilt model, the harmonics, the simulation
+panel and the button that loads the polygon's certificate. Widgets only."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
+
+from widgets.error_plot import ErrorPlot
+from widgets.polygon.simulation import PolygonSimulation
+from widgets.workbench_view import WorkbenchView
+
+
+class TiltPlot(QWidget):
+    """Vertical autocollimator readings with the fitted tilt model."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(background="w")
+        self.plot.setLabel("left", "AC vertical − zero (\")")
+        self.plot.setLabel("bottom", "θ (deg)")
+        self.plot.showGrid(x=True, y=True, alpha=0.25)
+        self.plot.getAxis("left").enableAutoSIPrefix(False)
+        self.plot.addLegend(offset=(-10, 10))
+        self.readings = self.plot.plot(name="readings", pen=None, symbol="o", symbolSize=7,
+                                       symbolBrush="#c0392b")
+        self.model = self.plot.plot(name="tilt model ε_y", pen=pg.mkPen("#1f5fbf", width=2))
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.plot)
+
+
+class HarmonicBars(QWidget):
+    """Amplitude of each harmonic of the corrected error over the circle."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(background="w")
+        self.plot.setLabel("left", "amplitude (\")")
+        self.plot.setLabel("bottom", "harmonic order (1 = eccentricity, 2 = ellipticity)")
+        self.plot.showGrid(y=True, alpha=0.25)
+        self.plot.getAxis("left").enableAutoSIPrefix(False)
+        self.bars = pg.BarGraphItem(x=[], height=[], width=0.6, brush="#1f5fbf")
+        self.plot.addItem(self.bars)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.plot)
+
+    def set_spectrum(self, order, amplitude) -> None:
+        self.bars.setOpts(x=np.asarray(order[1:]), height=np.asarray(amplitude[1:]), width=0.6)
+
+
+class PolygonView(WorkbenchView):
+    def __init__(self, parent=None) -> None:
+        super().__init__("Polygon encoder test", parent)
+        self.error_plot = ErrorPlot(x_label="θ face angle (deg)", residual_label="tilt fit res. (\")")
+        self.error_plot.set_curve_names("raw error e", "correction −(ε_x − ε_x,zero)",
+                                        "corrected e − (ε_x − ε_x,zero)")
+        self.tilt_plot = TiltPlot()
+        self.harmonics = HarmonicBars()
+        self.simulation = PolygonSimulation()
+        self.certificate_button = QPushButton("Load polygon certificate…")
+        self.certificate_button.setToolTip("Fill the deviation column from a CSV/XLSX with "
+                                           "position,deviation_arcsec")
+        self.add_plot_tab(self.error_plot, "Error over the circle")
+        self.add_plot_tab(self.tilt_plot, "Vertical readings / tilt")
+        self.add_plot_tab(self.harmonics, "Harmonics")
+        self.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
+
+    def subscribe(self, presenter) -> None:
+        super().subscribe(presenter)
+        self.settings.layout().addRow(self.certificate_button)
+        self.certificate_button.clicked.connect(presenter.load_certificate_dialog)
+
+    def show_errors(self, theta, raw, correction, corrected, residual) -> None:
+        self.error_plot.set_curves(theta, raw, correction, corrected)
+        self.error_plot.set_residuals(theta, residual)
+
+    def show_tilt(self, theta, readings, dense_theta, model) -> None:
+        self.tilt_plot.readings.setData(theta, readings)
+        self.tilt_plot.model.setData(dense_theta, model)
+
+    def show_harmonics(self, order, amplitude) -> None:
+        self.harmonics.set_spectrum(order, amplitude)
+
+    def clear_result(self) -> None:
+        self.error_plot.clear()
+        self.show_tilt([], [], [], [])
+        self.harmonics.set_spectrum([0], [0])
+
+    def ask_certificate_file(self) -> str:
+        path, _ = QFileDialog.getOpenFileName(self, "Polygon calibration certificate", "",
+                                              "Deviations (*.csv *.txt *.xlsx);;All files (*)")
+        return path
+
+    def tell(self, title: str, text: str) -> None:
+        QMessageBox.warning(self, title, text)
