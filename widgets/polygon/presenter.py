@@ -25,7 +25,7 @@ class PolygonPresenter(WorkbenchPresenter):
         first = result.sets[0]
         self.table_model.set_highlight_rows(result.closure_rows)
         x = result.theta_deg
-        correction = -np.mean([r.pyramidal_error_arcsec for r in result.sets], axis=0)
+        correction = result.mean_corrected_arcsec - result.mean_error_arcsec  # as the certificate
         residual = first.tilt.residuals_arcsec if first.tilt is not None else None
         self.view.show_errors(x, result.mean_error_arcsec, correction, result.mean_corrected_arcsec,
                               residual)
