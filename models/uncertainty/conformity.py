@@ -63,7 +63,10 @@ DECISION_QUANTITIES = {
 
 MONTE_CARLO_SEED = 20261127
 MONTE_CARLO_TRIALS = 10_000
-_MONTE_CARLO_DRAWS = 50_000_000  # trials × points at the most
+_MONTE_CARLO_DRAWS = 5_000_000  # trials × points at the most (40 MB of draws)
+#: A longer curve is judged on every k-th point (its range over 16 384 points of a long,
+#: repetitive record — a fringe revolution — is all but the same), and says so.
+MAX_MONTE_CARLO_POINTS = 16_384
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -92,6 +95,7 @@ class HalfRangeEstimate:
     probability: float
     trials: int
     seed: int
+    stride: int = 1  # judged on every stride-th point of a long curve
 
 
 def _standard_draws(rng: np.random.Generator, distribution: str, shape) -> np.ndarray:
@@ -100,14 +104,15 @@ def _standard_draws(rng: np.random.Generator, distribution: str, shape) -> np.nd
     return rng.standard_normal(shape)
 
 
-def _noise_draws(budget: UncertaintyBudget, n: int, trials: int,
+def _noise_draws(budget: UncertaintyBudget, points: np.ndarray, trials: int,
                  rng: np.random.Generator) -> np.ndarray:
-    """(trials, n) draws of the curve's error: every budget input, ``common`` inputs one
-    draw per trial, the others one per point."""
+    """(trials, len(points)) draws of the curve's error at ``points``: every budget input,
+    ``common`` inputs one draw per trial, the others one per point."""
+    n = points.size
     draws = np.zeros((trials, n))
     for comp, c_u in zip(budget.components, budget.contributions(), strict=True):
         shape = (trials, 1) if comp.common else (trials, n)
-        draws += _standard_draws(rng, comp.distribution, shape) * c_u
+        draws += _standard_draws(rng, comp.distribution, shape) * c_u[points]
     return draws
 
 
@@ -139,13 +144,17 @@ def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
     U is the simulated spread of S at that λ divided by the slope of mean S
     against the true half range (so it widens where noise hides the curve),
     combined with the size of the bias removed (rectangular). ``trials`` is
-    lowered on long curves (5·10⁷ draws at the most).
+    lowered on long curves (5·10⁶ draws at the most), and a curve of more than
+    16 384 points is judged on every k-th point.
     """
-    e = np.asarray(errors_arcsec, dtype=float)
+    full = np.asarray(errors_arcsec, dtype=float)
+    stride = max(1, -(-full.size // MAX_MONTE_CARLO_POINTS))
+    points = np.arange(0, full.size, stride)
+    e = full[points]
     n = e.size
     trials = int(max(200, min(trials, _MONTE_CARLO_DRAWS // max(n, 1))))
-    independent = [c_u for comp, c_u in zip(budget.components, budget.contributions(),
-                                            strict=True) if not comp.common]
+    independent = [c_u[points] for comp, c_u in zip(budget.components, budget.contributions(),
+                                                    strict=True) if not comp.common]
     noise_power = float(np.sum(np.square(independent))) if independent else 0.0
     spectrum = np.fft.rfft(e - e.mean())
     power = np.abs(spectrum) ** 2
@@ -153,7 +162,7 @@ def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
         gain = np.where(power > noise_power, 1.0 - noise_power / power, 0.0)
     shrunk = np.fft.irfft(spectrum * gain, n=n)
     observed = 0.5 * float(np.ptp(shrunk))
-    draws = _noise_draws(budget, n, trials, np.random.default_rng(seed))
+    draws = _noise_draws(budget, points, trials, np.random.default_rng(seed))
 
     def estimates(scale: float, count: int = trials) -> np.ndarray:
         out = np.empty(count)
@@ -197,7 +206,7 @@ def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
     return HalfRangeEstimate(measured, measured - value, value,
                              math.hypot((float(q_hi) - mean) / slope, u_bias),
                              math.hypot((mean - float(q_lo)) / slope, u_bias),
-                             budget.probability, trials, seed)
+                             budget.probability, trials, seed, stride)
 
 
 @dataclass(frozen=True)
@@ -297,5 +306,7 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
             f"{mc.bias:.{d}f}{q} that the noise adds to a range), U = {w:.{d}f}{q} "
             f"(coverage probability {100 * mc.probability:.2f} %). "
             + _SENTENCE[verdict].format(t=t, q=q))
-    quantity_text = (f"{DECISION_QUANTITIES['half_range']}: {mc.trials} trials, seed {mc.seed}")
+    quantity_text = (f"{DECISION_QUANTITIES['half_range']}: {mc.trials} trials, seed {mc.seed}"
+                     + (f", on every {mc.stride}-th of the {e.size} points" if mc.stride > 1
+                        else ""))
     return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d, q), mc)
