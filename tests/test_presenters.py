@@ -8,6 +8,8 @@ from unittest import mock
 
 import numpy as np
 import pytest
+import shiboken6
+from PySide6.QtWidgets import QWidget
 
 from models.readings.tabular_import import map_columns, read_table
 from widgets.fringe.presenter import FringePresenter
@@ -17,11 +19,26 @@ from widgets.polygon.view import PolygonView
 from widgets.theodolite.presenter import TheodolitePresenter
 from widgets.theodolite.view import TheodoliteView
 
+_OWNERS: list[QWidget] = []
 
-def make(presenter_class, view_class, qapp):
+
+@pytest.fixture(autouse=True)
+def _delete_presenters_at_teardown():
+    """Each presenter is owned by a widget deleted here, at once: left to Python's cyclic
+    collector (the mock holds the presenter it was subscribed with), it could be freed in
+    the middle of a later test's event loop."""
+    yield
+    while _OWNERS:
+        shiboken6.delete(_OWNERS.pop())
+
+
+def make(presenter_class, view_class, qtbot):
+    """A presenter on an autospec'd mock of its view."""
     view = mock.create_autospec(view_class, instance=True)
     view.settings_values.return_value = {}
-    return presenter_class(view), view
+    owner = QWidget()
+    _OWNERS.append(owner)
+    return presenter_class(view, parent=owner), view
 
 
 def load(presenter, samples_dir) -> None:
@@ -30,14 +47,16 @@ def load(presenter, samples_dir) -> None:
     presenter.refresh()
 
 
-def test_theodolite_presenter_asks_for_curves_in_theta_order(qapp, samples_dir):
-    presenter, view = make(TheodolitePresenter, TheodoliteView, qapp)
+def test_theodolite_presenter_asks_for_curves_in_theta_order(qtbot, samples_dir):
+    presenter, view = make(TheodolitePresenter, TheodoliteView, qtbot)
     assert view.add_setting.call_count == len(presenter.kind.parameters)
     view.subscribe.assert_called_once_with(presenter)
     load(presenter, samples_dir)
-    theta, raw, model, corrected, residual = view.show_curves.call_args.args
-    assert np.all(np.diff(theta) >= 0)
-    np.testing.assert_allclose(raw - model, corrected)
+    errors, residuals = view.show_figures.call_args.args
+    raw, model, corrected = (errors.by_role(r) for r in ("raw", "model", "corrected"))
+    assert np.all(np.diff(raw.x) >= 0)
+    np.testing.assert_allclose(raw.y - model.y, corrected.y)
+    assert residuals.by_role("residual").y.size == raw.y.size
     assert "Set-up identified" in view.set_summary.call_args.args[0]
     view.settings_values.return_value = {"method": "azimuth"}
     presenter.settings_edited()
@@ -46,9 +65,9 @@ def test_theodolite_presenter_asks_for_curves_in_theta_order(qapp, samples_dir):
     assert any("absorb" in w for w in view.set_warnings.call_args.args[0])
 
 
-def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qapp, samples_dir,
+def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qtbot, samples_dir,
                                                                                tmp_path):
-    presenter, view = make(PolygonPresenter, PolygonView, qapp)
+    presenter, view = make(PolygonPresenter, PolygonView, qtbot)
     load(presenter, samples_dir)
     theta, raw, correction, corrected, residual = view.show_errors.call_args.args
     np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)
@@ -69,8 +88,8 @@ def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qa
     view.tell.assert_not_called()
 
 
-def test_fringe_presenter_hands_the_view_every_curve_and_exports(qapp, samples_dir, tmp_path):
-    presenter, view = make(FringePresenter, FringeView, qapp)
+def test_fringe_presenter_hands_the_view_every_curve_and_exports(qtbot, samples_dir, tmp_path):
+    presenter, view = make(FringePresenter, FringeView, qtbot)
     load(presenter, samples_dir)
     drawing = view.show_drawing.call_args.args[0]
     x, raw, comp = drawing["errors"]
@@ -86,8 +105,8 @@ def test_fringe_presenter_hands_the_view_every_curve_and_exports(qapp, samples_d
 @pytest.mark.parametrize("presenter_class, view_class", [
     (TheodolitePresenter, TheodoliteView), (PolygonPresenter, PolygonView),
     (FringePresenter, FringeView)])
-def test_unreadable_readings_clear_the_view(qapp, presenter_class, view_class):
-    presenter, view = make(presenter_class, view_class, qapp)
+def test_unreadable_readings_clear_the_view(qtbot, presenter_class, view_class):
+    presenter, view = make(presenter_class, view_class, qtbot)
     presenter.table_model.replace_all([["x"] * len(presenter.kind.columns)] * 3)
     presenter.refresh()
     view.clear_result.assert_called()

@@ -106,6 +106,17 @@ class ErrorPlot(QWidget):
         self._follow_y(self.main_plot, (raw, model))
         self._follow_y(self.corrected_plot, (corrected, [0.0]))
 
+    def show_figure(self, figure, residuals=None) -> None:
+        """Draw a declared figure (models/plots.py): its ``raw`` and ``model`` series on the
+        upper panel, ``corrected`` on its own, the residual figure on the lowest."""
+        parts = {role: figure.by_role(role) for role in ("raw", "model", "corrected")}
+        self.set_curve_names(*(s.label if s is not None else "" for s in parts.values()))
+        x = next(s.x for s in parts.values() if s is not None)
+        self.set_curves(x, *(s.y if s is not None else None for s in parts.values()))
+        series = residuals.by_role("residual") if residuals is not None else None
+        self.set_residuals(series.x if series is not None else [],
+                           series.y if series is not None else None)
+
     def _follow_y(self, plot, arrays) -> None:
         """Move the y range only if the data left it or fill less than 60 % of it. A user's
         zoom is left alone until the plot's auto-range button ("A") is pressed."""

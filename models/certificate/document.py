@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
+from models.plots import PlotFigure, PlotSeries
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -25,24 +26,6 @@ from models.uncertainty.conformity import Conformity, significant_decimals, unce
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "reference_standard_components",
            "resolution_component"]
-
-
-@dataclass(frozen=True)
-class PlotSeries:
-    label: str
-    x: np.ndarray
-    y: np.ndarray
-    color: tuple[int, int, int] = (31, 119, 180)
-    markers: bool = False
-    band: np.ndarray | None = None  # ± half-width drawn as a shaded band around y
-
-
-@dataclass(frozen=True)
-class PlotFigure:
-    title: str
-    x_label: str
-    y_label: str
-    series: tuple[PlotSeries, ...]
 
 
 @dataclass(frozen=True)

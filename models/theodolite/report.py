@@ -28,8 +28,6 @@ import numpy as np
 
 from models.certificate.document import (
     CertificateDocument,
-    PlotFigure,
-    PlotSeries,
     Table,
     decision_rows,
     reference_standard_components,
@@ -37,6 +35,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.theodolite.model import TheodoliteResult
+from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
@@ -125,22 +124,8 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
             if math.isfinite(v):
                 stat_rows.append((f"ISO 230-2 {k}", f"{v:.2f}\"", ""))
     statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
-    order = np.argsort(result.theta_deg, kind="stable")
-    th = result.theta_deg[order]
-    plots = (
-        PlotFigure("Raw error, set-up model and corrected error", "θ (°)", "error (\")", (
-            PlotSeries("raw error", th, result.raw_error_arcsec[order], (31, 119, 180), True),
-            PlotSeries("set-up share −ζ", th, result.model_error_arcsec[order], (255, 127, 14)),
-            PlotSeries("corrected", th, result.corrected_error_arcsec[order], (44, 160, 44), True),
-        )),
-        PlotFigure("Corrected error with its expanded uncertainty U", "θ (°)",
-                   "error (\")", (
-            PlotSeries("corrected ± U", th, result.corrected_error_arcsec[order], (44, 160, 44),
-                       True, band=big_u[order]),)),
-        PlotFigure("Fit residuals (vertical readings)", "θ (°)", "residual (\")", (
-            PlotSeries("residual", th, result.elevation_residuals_arcsec[order], (148, 103, 189),
-                       True),)),
-    )
+    plots = (error_figure(result), corrected_with_uncertainty(result, big_u),
+             residual_figure(result))
     worst = budget.worst_index
     return CertificateDocument(
         "theodolite", "Theodolite run", metadata, source_name, METHOD, method_reference,

@@ -2,8 +2,7 @@
 
 from __future__ import annotations
 
-import numpy as np
-
+from models.theodolite import plots
 from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import TheodoliteResult
 from widgets.theodolite.view import TheodoliteView
@@ -11,8 +10,7 @@ from widgets.workbench_presenter import WorkbenchPresenter
 
 
 class TheodolitePresenter(WorkbenchPresenter):
-    """Runs the set-up identification on every edit and has the raw, model and corrected
-    error drawn in θ order."""
+    """Runs the set-up identification on every edit and has its declared figures drawn."""
 
     view_class = TheodoliteView
 
@@ -20,11 +18,7 @@ class TheodolitePresenter(WorkbenchPresenter):
         super().__init__(THEODOLITE, view, parent)
 
     def show_result(self, result: TheodoliteResult) -> None:
-        order = np.argsort(result.theta_deg, kind="stable")
-        self.view.show_curves(result.theta_deg[order], result.raw_error_arcsec[order],
-                              result.model_error_arcsec[order],
-                              result.corrected_error_arcsec[order],
-                              result.elevation_residuals_arcsec[order])
+        self.view.show_figures(plots.error_figure(result), plots.residual_figure(result))
 
     def clear_result(self) -> None:
         self.view.clear_result()
