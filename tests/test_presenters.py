@@ -69,10 +69,11 @@ def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qt
                                                                                tmp_path):
     presenter, view = make(PolygonPresenter, PolygonView, qtbot)
     load(presenter, samples_dir)
-    theta, raw, correction, corrected, residual = view.show_errors.call_args.args
-    np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)
-    assert len(theta) == 24 and residual is not None
-    view.show_harmonics.assert_called()
+    errors, residuals, tilt, harmonics = view.show_figures.call_args.args
+    raw, correction, corrected = (errors.by_role(r) for r in ("raw", "model", "corrected"))
+    np.testing.assert_allclose(raw.y + correction.y, corrected.y, atol=1e-9)
+    assert len(raw.x) == 24 and residuals is not None and tilt is not None
+    assert harmonics.series[0].y.size == 12
     presenter.table_model.set_cells([(24, 3, "25.0")])  # the closure reading far off
     presenter.refresh()
     view.append_to_readings_caption.assert_called_with(" — RUN INVALID (closure failed)")

@@ -33,8 +33,6 @@ import numpy as np
 
 from models.certificate.document import (
     CertificateDocument,
-    PlotFigure,
-    PlotSeries,
     Table,
     decision_rows,
     reference_standard_components,
@@ -47,6 +45,7 @@ from models.polygon.model import (
     pooled_repeatability,
     pyramidal_correction_arcsec,
 )
+from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
@@ -274,21 +273,11 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         metadata.decision_quantity, "" if result.valid else "the run is invalid (closure failed)")
     stat_rows[2:2] = decision_rows(conformity, budget, "positions")
     statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
-    th = result.theta_deg
-    plots = [PlotFigure("Raw and corrected error", "position angle (°)", "error (\")", (
-        PlotSeries("raw (mean)", th, result.mean_error_arcsec, (31, 119, 180), True),
-        PlotSeries("corrected (mean)", th, result.mean_corrected_arcsec, (44, 160, 44), True),
-        PlotSeries("correction (pyramidal)", th, correction, (255, 127, 14)),
-    ))]
-    plots.append(PlotFigure("Corrected error with its expanded uncertainty U",
-                            "position angle (°)", "error (\")", (
-        PlotSeries("corrected ± U", th, result.mean_corrected_arcsec, (44, 160, 44), True,
-                   band=big_u),)))
+    residuals = residual_figure(result)
+    plots = [error_figure(result), corrected_with_uncertainty(result, big_u)]
+    if residuals is not None:
+        plots.append(residuals)
     tilt = result.sets[0].tilt
-    if tilt is not None:
-        plots.append(PlotFigure("Tilt fit residuals (vertical readings, set 1)",
-                                "position angle (°)", "residual (\")", (
-            PlotSeries("residual", th, tilt.residuals_arcsec, (148, 103, 189), True),)))
     warnings = list(result.warnings)
     if m == 1 and tilt is None:
         warnings.append("Repeatability was not evaluated: one set and no vertical readings.")

@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-import numpy as np
-
+from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import PolygonResult
-from models.polygon.model import pyramidal_readings_arcsec as pyramidal_readings
 from models.readings.tabular_import import TableImportError
 from widgets.polygon.view import PolygonView
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -22,23 +20,9 @@ class PolygonPresenter(WorkbenchPresenter):
         super().__init__(POLYGON, view, parent)
 
     def show_result(self, result: PolygonResult) -> None:
-        first = result.sets[0]
         self.table_model.set_highlight_rows(result.closure_rows)
-        x = result.theta_deg
-        correction = result.mean_corrected_arcsec - result.mean_error_arcsec  # as the certificate
-        residual = first.tilt.residuals_arcsec if first.tilt is not None else None
-        self.view.show_errors(x, result.mean_error_arcsec, correction, result.mean_corrected_arcsec,
-                              residual)
-        if first.tilt is not None:
-            dense = np.linspace(0, 360, 361)  # face angle; the model runs in the counting sense
-            _, ey = pyramidal_readings(result.counting * dense, first.tilt.psi_arcsec,
-                                       first.tilt.omega_deg)
-            _, ey_faces = pyramidal_readings(first.theta_deg, first.tilt.psi_arcsec,
-                                             first.tilt.omega_deg)
-            self.view.show_tilt(x, ey_faces + first.tilt.residuals_arcsec, dense, ey)
-        else:
-            self.view.show_tilt([], [], [], [])
-        self.view.show_harmonics(result.harmonics.order, result.harmonics.amplitude)
+        self.view.show_figures(plots.error_figure(result), plots.residual_figure(result),
+                               plots.tilt_figure(result), plots.harmonics_figure(result))
         if not result.valid:
             self.view.append_to_readings_caption(" — RUN INVALID (closure failed)")
 

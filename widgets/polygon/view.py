@@ -54,8 +54,6 @@ class PolygonView(WorkbenchView):
     def __init__(self, parent=None) -> None:
         super().__init__("Polygon encoder test", parent)
         self.error_plot = ErrorPlot(x_label="θ face angle (deg)", residual_label="tilt fit res. (\")")
-        self.error_plot.set_curve_names("raw error e", "correction −(ε_x − ε_x,zero)",
-                                        "corrected e − (ε_x − ε_x,zero)")
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
         self.simulation = PolygonSimulation()
@@ -72,20 +70,19 @@ class PolygonView(WorkbenchView):
         self.settings.layout().addRow(self.certificate_button)
         self.certificate_button.clicked.connect(presenter.load_certificate_dialog)
 
-    def show_errors(self, theta, raw, correction, corrected, residual) -> None:
-        self.error_plot.set_curves(theta, raw, correction, corrected)
-        self.error_plot.set_residuals(theta, residual)
-
-    def show_tilt(self, theta, readings, dense_theta, model) -> None:
-        self.tilt_plot.readings.setData(theta, readings)
-        self.tilt_plot.model.setData(dense_theta, model)
-
-    def show_harmonics(self, order, amplitude) -> None:
-        self.harmonics.set_spectrum(order, amplitude)
+    def show_figures(self, errors, residuals, tilt, harmonics) -> None:
+        """The declared figures (models/polygon/plots.py); ``None`` leaves a plot empty."""
+        self.error_plot.show_figure(errors, residuals)
+        readings, model = tilt.series if tilt is not None else (None, None)
+        self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
+        self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
+        bars = harmonics.series[0]
+        self.harmonics.bars.setOpts(x=bars.x, height=bars.y, width=0.6)
 
     def clear_result(self) -> None:
         self.error_plot.clear()
-        self.show_tilt([], [], [], [])
+        self.tilt_plot.readings.setData([], [])
+        self.tilt_plot.model.setData([], [])
         self.harmonics.set_spectrum([0], [0])
 
     def ask_certificate_file(self) -> str:

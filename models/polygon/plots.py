@@ -1,0 +1,63 @@
+"""The polygon test's plots, declared once for the window and the certificate."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from models.plots import PlotFigure, PlotSeries
+from models.polygon.model import PolygonResult, pyramidal_readings_arcsec
+
+__all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "residual_figure",
+           "tilt_figure"]
+
+BLUE, ORANGE, GREEN, PURPLE, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
+                                    (148, 103, 189), (192, 57, 43))
+ANGLE = "position angle (°)"
+
+
+def error_figure(result: PolygonResult) -> PlotFigure:
+    th = result.theta_deg
+    correction = result.mean_corrected_arcsec - result.mean_error_arcsec
+    return PlotFigure("Raw and corrected error", ANGLE, "error (\")", (
+        PlotSeries("raw error e (mean)", th, result.mean_error_arcsec, BLUE, True, role="raw"),
+        PlotSeries("correction −(ε_x − ε_x,zero)", th, correction, ORANGE, role="model"),
+        PlotSeries("corrected e − (ε_x − ε_x,zero)", th, result.mean_corrected_arcsec, GREEN, True,
+                   role="corrected"),
+    ))
+
+
+def corrected_with_uncertainty(result: PolygonResult, expanded) -> PlotFigure:
+    return PlotFigure("Corrected error with its expanded uncertainty U", ANGLE, "error (\")", (
+        PlotSeries("corrected ± U", result.theta_deg, result.mean_corrected_arcsec, GREEN, True,
+                   band=np.asarray(expanded), role="corrected"),))
+
+
+def residual_figure(result: PolygonResult) -> PlotFigure | None:
+    tilt = result.sets[0].tilt
+    if tilt is None:
+        return None
+    return PlotFigure("Tilt fit residuals (vertical readings, set 1)", ANGLE, "residual (\")", (
+        PlotSeries("residual", result.theta_deg, tilt.residuals_arcsec, PURPLE, True,
+                   role="residual"),))
+
+
+def tilt_figure(result: PolygonResult) -> PlotFigure | None:
+    """The vertical readings (less their zero) with the fitted tilt model, set 1."""
+    first = result.sets[0]
+    tilt = first.tilt
+    if tilt is None:
+        return None
+    dense = np.linspace(0.0, 360.0, 361)  # face angle; the model runs in the counting sense
+    _, model = pyramidal_readings_arcsec(result.counting * dense, tilt.psi_arcsec, tilt.omega_deg)
+    _, at_faces = pyramidal_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg)
+    return PlotFigure("Vertical readings and the tilt model (set 1)", "θ (deg)",
+                      "AC vertical − zero (\")", (
+        PlotSeries("readings", result.theta_deg, at_faces + tilt.residuals_arcsec, RED, True),
+        PlotSeries("tilt model ε_y", dense, model, BLUE),
+    ))
+
+
+def harmonics_figure(result: PolygonResult) -> PlotFigure:
+    h = result.harmonics
+    return PlotFigure("Harmonics of the corrected error", "harmonic order", "amplitude (\")", (
+        PlotSeries("amplitude", h.order[1:].astype(float), h.amplitude[1:], BLUE),))
