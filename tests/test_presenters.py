@@ -92,11 +92,12 @@ def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qt
 def test_fringe_presenter_hands_the_view_every_curve_and_exports(qtbot, samples_dir, tmp_path):
     presenter, view = make(FringePresenter, FringeView, qtbot)
     load(presenter, samples_dir)
-    drawing = view.show_drawing.call_args.args[0]
-    x, raw, comp = drawing["errors"]
-    assert len(x) == len(raw) == len(comp) > 0
-    assert drawing["error_label"] == "interp. error (\")"
-    assert len(drawing["ellipse"][0]) == 361 and len(drawing["lissajous"][0]) == 512
+    drawn = view.show_figures.call_args.args[0]
+    raw, comp = drawn["errors"].by_role("raw"), drawn["errors"].by_role("corrected")
+    assert len(raw.x) == len(raw.y) == len(comp.y) > 0
+    assert drawn["errors"].y_label == "interp. error (\")"
+    measured, ellipse, _ = drawn["lissajous"].series
+    assert len(ellipse.x) == 361 and len(measured.x) == 512
     out = tmp_path / "table.csv"
     view.ask_table_path.return_value = str(out)
     presenter.export_table_dialog()

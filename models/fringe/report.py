@@ -28,14 +28,12 @@ import numpy as np
 
 from models.certificate.document import (
     CertificateDocument,
-    PlotFigure,
-    PlotSeries,
     Table,
     decision_rows,
     reference_standard_components,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.decimation import envelope
+from models.fringe import plots as fringe_plots
 from models.fringe.model import model_signal, model_signal_std
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -164,27 +162,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         stat_rows.append(("Drift of sin A1 over the periods", f"{np.ptp(amp) * 1e3:.3g} mV",
                           f"{result.sin_periods.shape[0]} periods fitted one by one"))
     statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
-    x = np.arange(raw.size, dtype=float) / (result.samples_per_period or 64)
-    xr, yr = envelope(x, raw)
-    xc, yc = envelope(x, comp)
-    res_s = result.u_sin - model_signal(result.theta_rad, result.sin_fit)
-    res_c = result.u_cos - model_signal(result.theta_rad, result.cos_fit)
-    xs, ys = envelope(x, res_s * 1e3)
-    xk, yk = envelope(x, res_c * 1e3)
-    plots = (
-        PlotFigure("Interpolation error before and after compensation", "sample / 64" if not
-                   result.samples_per_period else "period", f"error ({sym.strip()})", (
-            PlotSeries("raw", xr, yr, (31, 119, 180)),
-            PlotSeries("compensated", xc, yc, (44, 160, 44)))),
-        PlotFigure("Compensated error in the first period, with U", "phase θ (°)",
-                   f"error ({sym.strip()})", (
-            PlotSeries("compensated ± U", np.degrees(result.theta_rad[:per]), comp[:per],
-                       (44, 160, 44), per <= 256, band=big_u[:per]),)),
-        PlotFigure("Fit residuals", "sample / 64" if not result.samples_per_period else "period",
-                   "residual (mV)", (
-            PlotSeries("sin", xs, ys, (148, 103, 189)),
-            PlotSeries("cos", xk, yk, (214, 39, 40)))),
-    )
+    drawn = fringe_plots.figures(result)
+    plots = (drawn["errors"], fringe_plots.first_period_with_uncertainty(result, big_u, per),
+             drawn["residuals"])
     worst = budget.worst_index
     table_statement = (
         f"As left: the lab states that the correction table with sha256 {result.table.sha256} "

@@ -65,7 +65,6 @@ class FringeView(WorkbenchView):
         super().__init__("Fringe signal analysis", parent)
         self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
                                     residual_label="sin fit res. (mV)")
-        self.error_plot.set_curve_names("before compensation", "", "after compensation")
         self.error_plot.main_plot.setLabel("left", "interp. error (\")")
         self.error_plot.corrected_plot.setLabel("left", "compensated (\")")
         for plot in (self.error_plot.main_plot, self.error_plot.corrected_plot,
@@ -89,28 +88,27 @@ class FringeView(WorkbenchView):
         super().subscribe(presenter)
         self.export_button.clicked.connect(presenter.export_table_dialog)
 
-    def show_drawing(self, d: dict) -> None:
-        """Every curve of a result, as the presenter prepared them."""
-        self.error_plot.residual_plot.setLabel("bottom", d["along"])
-        self.error_plot.main_plot.setLabel("left", d["error_label"])
-        self.error_plot.corrected_plot.setLabel("left", d["compensated_label"])
-        x, raw, comp = d["errors"]
-        self.error_plot.set_curves(x, raw, None, comp)
-        self.error_plot.set_residuals(*d["residual"])
+    def show_figures(self, figures: dict) -> None:
+        """The declared figures (models/fringe/plots.py)."""
+        errors = figures["errors"]
+        self.error_plot.residual_plot.setLabel("bottom", errors.x_label)
+        self.error_plot.main_plot.setLabel("left", errors.y_label)
+        unit = errors.y_label[errors.y_label.rfind("("):]
+        self.error_plot.corrected_plot.setLabel("left", f"compensated {unit}")
+        self.error_plot.show_figure(errors, figures["residuals"])
         p = self.plots
-        p.sin_points.setData(*d["sin"])
-        p.cos_points.setData(*d["cos"])
-        p.sin_fit.setData(*d["sin_fit"])
-        p.cos_fit.setData(*d["cos_fit"])
-        p.liss_raw.setData(*d["lissajous"])
-        p.liss_ellipse.setData(*d["ellipse"])
-        p.liss_ideal.setData(*d["circle"])
-        (sx, sh), (cx, ch) = d["bars"]
-        p.sin_bars.setOpts(x=sx, height=sh, width=0.35)
-        p.cos_bars.setOpts(x=cx, height=ch, width=0.35)
-        for curve, data in zip((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3), d["drift"],
-                               strict=True):
-            curve.setData(*data)
+        for curve, series in zip((p.sin_points, p.cos_points, p.sin_fit, p.cos_fit),
+                                 figures["signals"].series, strict=True):
+            curve.setData(series.x, series.y)
+        for curve, series in zip((p.liss_raw, p.liss_ellipse, p.liss_ideal),
+                                 figures["lissajous"].series, strict=True):
+            curve.setData(series.x, series.y)
+        sin_bars, cos_bars = figures["spectrum"].series
+        p.sin_bars.setOpts(x=sin_bars.x, height=sin_bars.y, width=0.35)
+        p.cos_bars.setOpts(x=cos_bars.x, height=cos_bars.y, width=0.35)
+        drift = figures["drift"].series
+        for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
+            curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))
 
     def clear_result(self) -> None:
         self.error_plot.clear()

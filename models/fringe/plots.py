@@ -1,0 +1,103 @@
+"""The fringe signal analysis' plots, declared once for the window and the certificate.
+
+A revolution has a million samples: every curve is thinned to its envelope (the
+lowest and highest point of each run of samples), which keeps every excursion.
+When the motion stood or turned back, the curves run over the phase within a
+period, in phase order, instead of along the record.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from models.decimation import envelope
+from models.fringe.model import model_signal
+from models.plots import PlotFigure, PlotSeries
+
+if TYPE_CHECKING:  # the analysis imports the report, which draws with this module
+    from models.fringe.analysis import FringeResult
+
+__all__ = ["figures", "first_period_with_uncertainty"]
+
+BINS = 2000  # runs per curve
+MAX_LISSAJOUS_POINTS = 5_000
+BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 103, 189),
+                                          (214, 39, 40), (230, 126, 34), (22, 160, 133))
+
+
+def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray, str]:
+    """(x of every sample in drawing order, the order, the axis title)."""
+    periods = result.theta_rad / (2 * np.pi)
+    if periods.size < 2 or np.all(np.diff(periods) > 0):
+        return periods, np.arange(periods.size), "electrical phase θ (periods)"
+    x = np.degrees(np.mod(result.theta_rad, 2 * np.pi))
+    order = np.argsort(x, kind="stable")
+    return x[order], order, "phase within the period (°); the motion stood or turned back"
+
+
+def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
+    """Every figure of a result: errors, residuals, signals, Lissajous, spectrum, drift."""
+    x, order, along = _axis(result)
+    unit = result.unit_symbol.strip()
+    raw, comp = result.raw_error[order], result.compensated_error[order]
+    # raw and compensated on one sampling that keeps the extremes of both
+    raw_x, _ = envelope(x, raw, bins)
+    comp_x, _ = envelope(x, comp, bins)
+    pick = np.clip(np.union1d(np.searchsorted(x, raw_x), np.searchsorted(x, comp_x)), 0,
+                   max(x.size - 1, 0))
+    label = ("error, est. phase" if result.phase_source == "estimated" else "interp. error")
+    out = {"errors": PlotFigure("Interpolation error before and after compensation", along,
+                                f"{label} ({unit})", (
+        PlotSeries("before compensation", x[pick], raw[pick], BLUE, role="raw"),
+        PlotSeries("after compensation", x[pick], comp[pick], GREEN, role="corrected")))}
+    res_s = (result.u_sin - model_signal(result.theta_rad, result.sin_fit))[order] * 1e3
+    res_c = (result.u_cos - model_signal(result.theta_rad, result.cos_fit))[order] * 1e3
+    out["residuals"] = PlotFigure("Fit residuals", along, "residual (mV)", (
+        PlotSeries("sin", *envelope(x, res_s, bins), PURPLE, role="residual"),
+        PlotSeries("cos", *envelope(x, res_c, bins), RED)))
+    step = max(1, x.size // (2 * bins))
+    theta = result.theta_rad[order][::step]
+    out["signals"] = PlotFigure("Signals and their fit", along, "signal (V)", (
+        PlotSeries("u sin", *envelope(x, result.u_sin[order], bins), (230, 176, 170)),
+        PlotSeries("u cos", *envelope(x, result.u_cos[order], bins), (169, 204, 227)),
+        PlotSeries("sin fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28)),
+        PlotSeries("cos fit", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96))))
+    stride = max(1, result.u_sin.size // MAX_LISSAJOUS_POINTS)  # a parametric curve: a stride
+    t = np.linspace(0.0, 2 * np.pi, 361)
+    e = result.ellipse
+    ellipse = ((e.offset_cos + e.amplitude_cos * np.cos(t + e.quadrature_rad),
+                e.offset_sin + e.amplitude_sin * np.sin(t)) if e is not None
+               else (np.empty(0), np.empty(0)))
+    radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
+    out["lissajous"] = PlotFigure("Lissajous figure", "u cos (V)", "u sin (V)", (
+        PlotSeries("measured", result.u_cos[::stride], result.u_sin[::stride], RED, True),
+        PlotSeries("fitted ellipse (Heydemann)", *ellipse, GREEN),
+        PlotSeries("compensated (circle × A1)", radius * np.cos(t), radius * np.sin(t), BLUE)))
+    orders = np.array(result.sin_fit.orders, dtype=float)
+    out["spectrum"] = PlotFigure("Harmonics of the two channels", "harmonic order",
+                                 "amplitude (V, log10)", tuple(
+        PlotSeries(name, orders + shift, np.log10([max(fit.amplitude[k], 1e-9)
+                                                   for k in fit.orders]), color)
+        for name, shift, fit, color in (("sin", -0.18, result.sin_fit, RED),
+                                        ("cos", 0.18, result.cos_fit, BLUE))))
+    periods = np.arange(result.sin_periods.shape[0], dtype=float)
+    drift = [("A1 (sin)", result.sin_periods[:, 1], RED), ("B1 (cos)", result.cos_periods[:, 1],
+                                                           BLUE)]
+    if result.sin_periods.shape[1] > 3:
+        drift += [("A3 × 10", result.sin_periods[:, 3] * 10, ORANGE),
+                  ("B3 × 10", result.cos_periods[:, 3] * 10, TEAL)]
+    out["drift"] = PlotFigure("Drift per period", "period", "amplitude (V)", tuple(
+        PlotSeries(name, *envelope(periods, values, bins // 2), color)
+        for name, values, color in drift))
+    return out
+
+
+def first_period_with_uncertainty(result: FringeResult, expanded, samples: int) -> PlotFigure:
+    unit = result.unit_symbol.strip()
+    return PlotFigure("Compensated error in the first period, with U", "phase θ (°)",
+                      f"error ({unit})", (
+        PlotSeries("compensated ± U", np.degrees(result.theta_rad[:samples]),
+                   result.compensated_error[:samples], GREEN, samples <= 256,
+                   band=np.asarray(expanded)[:samples], role="corrected"),))
