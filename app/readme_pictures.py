@@ -17,7 +17,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parents[1] / "resources" / "screenshots"
 SAMPLES = HERE.parent / "samples"
-EXTRA = {"fringe": ["--lines-per-rev", "16384", "--samples-per-period", "64"]}
+EXTRA = {"fringe": ["--lines-per-rev", "16384"]}  # the phase from the sample's θ column
 
 
 def certificate_picture(kind: str, scratch: Path) -> Path:
