@@ -40,7 +40,38 @@ def main(argv: list[str] | None = None) -> int:
     return run_gui(args.project, args.samples)
 
 
+# Qt's X11 platform needs these system libraries (Debian/Ubuntu package names); without
+# them Qt aborts with "could not load the Qt platform plugin xcb".
+X11_LIBRARIES = {"libxcb-cursor.so.0": "libxcb-cursor0", "libxcb-icccm.so.4": "libxcb-icccm4",
+                 "libxcb-keysyms.so.1": "libxcb-keysyms1", "libxcb-image.so.0": "libxcb-image0",
+                 "libxcb-render-util.so.0": "libxcb-render-util0",
+                 "libxkbcommon-x11.so.0": "libxkbcommon-x11-0", "libEGL.so.1": "libegl1",
+                 "libfontconfig.so.1": "libfontconfig1"}
+
+
+def missing_x11_packages() -> list[str]:
+    """The Debian packages Qt's X11 platform needs and this machine lacks (Linux with a
+    display only; empty elsewhere)."""
+    import ctypes
+
+    if not sys.platform.startswith("linux") or not os.environ.get("DISPLAY") or \
+            os.environ.get("QT_QPA_PLATFORM", "xcb") != "xcb":
+        return []
+    missing = []
+    for soname, package in X11_LIBRARIES.items():
+        try:
+            ctypes.CDLL(soname)
+        except OSError:
+            missing.append(package)
+    return missing
+
+
 def run_gui(project: str | None, samples: bool) -> int:
+    missing = missing_x11_packages()
+    if missing:
+        sys.stderr.write("anglebench: the window needs Qt's X11 libraries; install them with\n"
+                         f"  sudo apt-get install {' '.join(missing)}\n")
+        return 1
     from PySide6.QtWidgets import QApplication
 
     from app.main_window import MainWindow

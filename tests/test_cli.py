@@ -114,3 +114,25 @@ def test_fringe_bad_cell(capsys, tmp_path):
     path.write_text("u_sin,u_cos\n0.1,3.7\n0.5,abc\n")
     code, _, err = run_cli(capsys, "fringe", str(path))
     assert code == 2 and "row 3, column 'u_cos': 'abc' is not a number" in err
+
+
+def test_missing_x11_libraries_are_named_before_qt_aborts(monkeypatch, capsys):
+    import ctypes
+
+    from app import main as entry
+
+    monkeypatch.setenv("DISPLAY", ":0")
+    monkeypatch.delenv("QT_QPA_PLATFORM", raising=False)
+    real = ctypes.CDLL
+
+    def cdll(name, *args, **kwargs):
+        if name == "libxcb-cursor.so.0":
+            raise OSError("not found")
+        return real(name, *args, **kwargs)
+
+    monkeypatch.setattr(ctypes, "CDLL", cdll)
+    assert "libxcb-cursor0" in entry.missing_x11_packages()
+    assert entry.run_gui(None, False) == 1
+    assert "sudo apt-get install" in capsys.readouterr().err
+    monkeypatch.setenv("QT_QPA_PLATFORM", "offscreen")
+    assert entry.missing_x11_packages() == []
