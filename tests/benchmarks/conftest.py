@@ -4,6 +4,11 @@ Each benchmark adds a section through the ``report`` fixture; the file is
 written once at the end of the session, headed by the machine and versions.
 Timings are given as the median and the interquartile range (p25–p75) of
 repeated runs, and compared as ratios of medians.
+
+A benchmark may also give a one-line ``headline``: the headlines open
+BENCHMARKS.md and replace the block between the README's ``bench:headlines``
+markers, so the README's figures are those of the last run, never copied by
+hand (tests/test_readme_benchmarks.py checks that the two agree).
 """
 
 from __future__ import annotations
@@ -16,8 +21,12 @@ from pathlib import Path
 
 import pytest
 
-REPORT = Path(__file__).resolve().parents[2] / "BENCHMARKS.md"
+ROOT = Path(__file__).resolve().parents[2]
+REPORT = ROOT / "BENCHMARKS.md"
+README = ROOT / "README.md"
+BEGIN, END = "<!-- bench:headlines begin -->", "<!-- bench:headlines end -->"
 _SECTIONS: dict[str, list[str]] = {}
+_HEADLINES: dict[str, str] = {}
 
 
 def _cpu() -> str:
@@ -55,10 +64,13 @@ def _header() -> list[str]:
 
 @pytest.fixture(scope="session")
 def report():
-    """``report(key, lines)``: a section of the report (sections are sorted by key)."""
+    """``report(key, lines, headline=None)``: a section of the report (sections are
+    sorted by key) and, optionally, its one-line headline."""
 
-    def add(key: str, lines: list[str]) -> None:
+    def add(key: str, lines: list[str], headline: str | None = None) -> None:
         _SECTIONS[key] = lines
+        if headline:
+            _HEADLINES[key] = headline
         print("\n" + "\n".join(lines))  # noqa: T201 - the benchmark's own output
 
     return add
@@ -67,6 +79,27 @@ def report():
 def pytest_sessionfinish(session, exitstatus):
     if not _SECTIONS:
         return
-    text = "\n".join(_header() + [line for key in sorted(_SECTIONS) for line in
-                                  _SECTIONS[key] + [""]])
-    REPORT.write_text(text, encoding="utf-8")
+    headlines = [f"* {_HEADLINES[key]}" for key in sorted(_HEADLINES)]
+    head = ["## Headlines", "", *headlines, ""] if headlines else []
+    text = "\n".join(_header() + head + [line for key in sorted(_SECTIONS) for line in
+                                         _SECTIONS[key] + [""]])
+    _write_atomic(REPORT, text)
+    if headlines:
+        _update_readme(headlines)
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
+def _update_readme(headlines: list[str]) -> None:
+    """Put the headlines between the README's markers (left alone if they are missing)."""
+    text = README.read_text(encoding="utf-8")
+    start, end = text.find(BEGIN), text.find(END)
+    if start < 0 or end < start:
+        print(f"\nREADME.md has no {BEGIN} … {END} block; headlines not copied")  # noqa: T201
+        return
+    block = "\n".join([BEGIN, *headlines, END])
+    _write_atomic(README, text[:start] + block + text[end + len(END):])
