@@ -1,5 +1,7 @@
-"""Fringe: our linear least squares against particle swarms — the seed's (our code of
-eqs 12–15) and pyswarms' global-best PSO — on one 64-sample period; then a whole
+"""Fringe: our linear least squares against what a user would otherwise reach for —
+numpy.linalg.lstsq on the 7-column design, scipy.optimize.least_squares — and
+against particle swarms — the seed's (our code of eqs 12–15) and pyswarms'
+global-best PSO with the standard constriction settings — on one 64-sample period; then a whole
 1M-sample revolution analysed by our method (per-period drift included).
 
 Cost is the seed's (11): the sum of squared residuals of one channel (V²).
@@ -39,6 +41,29 @@ def _signals(theta, rng, noise=0.002):
     return u_s, u_c
 
 
+def _design(theta):
+    cols = [np.ones_like(theta)]
+    for k in (1, 3, 5):
+        cols += [np.sin(k * theta), np.cos(k * theta)]
+    return np.column_stack(cols)
+
+
+def _numpy_lstsq_fit(theta, u) -> float:
+    """numpy.linalg.lstsq on the design built for the call; the cost Σ r²."""
+    coef = np.linalg.lstsq(_design(theta), u, rcond=None)[0]
+    r = u - _design(theta) @ coef
+    return float(r @ r)
+
+
+def _scipy_least_squares_fit(theta, u) -> float:
+    """scipy.optimize.least_squares (trf, default tolerances) from zero; the cost Σ r²."""
+    from scipy.optimize import least_squares
+
+    design = _design(theta)
+    fit = least_squares(lambda x: design @ x - u, np.zeros(design.shape[1]), method="trf")
+    return float(fit.fun @ fit.fun)
+
+
 def _pyswarms_fit(theta, u, iterations=2000, particles=40, seed=0):
     try:
         import pyswarms as ps
@@ -60,7 +85,7 @@ def _pyswarms_fit(theta, u, iterations=2000, particles=40, seed=0):
 
     np.random.seed(seed)  # pyswarms draws from numpy's global generator
     optimizer = ps.single.GlobalBestPSO(n_particles=particles, dimensions=7,
-                                        options={"c1": 2.0, "c2": 2.0, "w": 0.7},
+                                        options={"c1": 1.49618, "c2": 1.49618, "w": 0.7298},
                                         bounds=(lo, hi))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -71,12 +96,16 @@ def _pyswarms_fit(theta, u, iterations=2000, particles=40, seed=0):
 def test_fringe_fit_against_particle_swarms(report):
     rng = np.random.default_rng(13)
     theta = phase_of_samples(PERIOD, PERIOD)
-    rows = {"lsq": ([], []), "pso": ([], []), "pyswarms": ([], [])}
+    rows = {"lsq": ([], []), "numpy": ([], []), "scipy": ([], []), "pso": ([], []),
+            "pyswarms": ([], [])}
     for trial in range(PERIODS_TRIED):
         u, _ = _signals(theta + rng.uniform(0, 2 * np.pi), rng)
         lsq_cost = fit_channel(theta, u).cost
         rows["lsq"][0].append(lsq_cost)
         rows["lsq"][1].append(np.median(timings(lambda u=u: fit_channel(theta, u), 50)))
+        for key, fit in (("numpy", _numpy_lstsq_fit), ("scipy", _scipy_least_squares_fit)):
+            rows[key][0].append(fit(theta, u))
+            rows[key][1].append(np.median(timings(lambda u=u, fit=fit: fit(theta, u), 20)))
         pso = fit_channel_pso(theta, u, seed=trial)
         rows["pso"][0].append(channel_cost(theta, u, pso.fit))
         rows["pso"][1].append(pso.seconds)
@@ -107,14 +136,18 @@ def test_fringe_fit_against_particle_swarms(report):
     ]
     lsq_time = float(np.median(rows["lsq"][1]))
     for key, label in (("lsq", "ours: linear least squares"),
+                       ("numpy", "numpy.linalg.lstsq, design built per call"),
+                       ("scipy", "scipy.optimize.least_squares (trf) from zero"),
                        ("pso", "seed's PSO, eqs 12–15 (40 particles, ≤ 2000 iterations)"),
-                       ("pyswarms", "pyswarms GlobalBestPSO (40 particles, 2000 iterations)")):
+                       ("pyswarms", "pyswarms GlobalBestPSO (40 particles, 2000 iterations, "
+                                    "c1 = c2 = 1.49618, w = 0.7298)")):
         costs, times = np.array(rows[key][0]), np.array(rows[key][1])
         if costs.size == 0:
             lines.append(f"| {label} | not installed | | |")
             continue
         rel = costs / lsq_costs
-        ratio = "1×" if key == "lsq" else f"{np.median(times) / lsq_time:,.0f}×"
+        slower = np.median(times) / lsq_time
+        ratio = "1×" if key == "lsq" else f"{slower:,.{0 if slower >= 10 else 1}f}×"
         lines.append(f"| {label} | {np.median(rel):.3g}, {rel.max():.3g} | {fmt_time(times)} | "
                      f"{ratio} |")
     pso_ratio = float(np.median(rows["pso"][1]) / lsq_time)
@@ -157,13 +190,17 @@ def test_fringe_fit_against_particle_swarms(report):
     pyswarms_note = ("" if ps is None else
                      f"; pyswarms' PSO reaches that cost (within 0.1 %) in {int(np.sum(ps <= 1.001))} "
                      f"of {ps.size} periods")
+    numpy_ratio = float(np.median(rows["numpy"][1]) / lsq_time)
+    scipy_ratio = float(np.median(rows["scipy"][1]) / lsq_time)
     report("2-fringe", lines, headline=(
         f"Fringe: linear least squares gives a period's exact minimum cost in "
-        f"{fmt_time(rows['lsq'][1]).split(' (')[0]}, {pso_ratio:,.0f}× faster than the seed's "
-        f"PSO{pyswarms_note}. A whole revolution ({n:,} samples, drift included) takes "
+        f"{fmt_time(rows['lsq'][1]).split(' (')[0]}; numpy.linalg.lstsq takes "
+        f"{numpy_ratio:.1f}× as long, scipy.optimize.least_squares {scipy_ratio:.0f}×, the seed's "
+        f"PSO {pso_ratio:,.0f}×{pyswarms_note}. A whole revolution ({n:,} samples, drift included) takes "
         f"{fmt_time(revolution).split(' (')[0]} of compute once the readings are in memory "
         "(reading the file is not included)."))
     assert np.all(np.array(rows["pso"][0]) >= lsq_costs * (1 - 1e-9))
+    assert np.allclose(rows["numpy"][0], lsq_costs, rtol=1e-9)  # the same exact minimum
     if rows["pyswarms"][0]:
         assert np.all(np.array(rows["pyswarms"][0]) >= lsq_costs * (1 - 1e-9))
     assert pso_ratio >= 1000
