@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from models.damped_least_squares import difference_jacobian, polish
 from models.lazy_optimize import least_squares
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats
@@ -191,7 +192,11 @@ def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
     def residuals(x):
         return x[0] + pyramidal_readings_arcsec(theta, x[1], x[2])[1] - v
 
-    fit = least_squares(residuals, start, method="lm", x_scale=np.array([1.0, 1.0, 1.0]))
+    # k, ψ in arcsec and ω in degrees: 1e-10 of them is far below any reading
+    fit = polish(residuals, lambda x: difference_jacobian(residuals, x, central=True), start,
+                 xtol=1e-10)
+    if not fit.converged:  # MINPACK's LM from the same start (imports scipy.optimize)
+        fit = least_squares(residuals, start, method="lm", x_scale=np.array([1.0, 1.0, 1.0]))
     k, psi, omega = fit.x
     if psi < 0:
         psi, omega = -psi, omega + 180.0

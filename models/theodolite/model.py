@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from models.damped_least_squares import polish
 from models.lazy_optimize import least_squares
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats, error_stats
@@ -275,15 +276,18 @@ def identify_from_elevations(
 
     best = None
     for start in starts:
-        fit = least_squares(
-            lambda x: _elevation_model(x, th) - e_rad,
-            np.radians(start.as_array()),
-            jac=lambda x: _elevation_jacobian(x, th),
-            method="lm",
-            xtol=1e-15,
-            ftol=1e-15,
-            gtol=1e-15,
-        )
+        fit = polish(lambda x: _elevation_model(x, th) - e_rad,
+                     lambda x: _elevation_jacobian(x, th), np.radians(start.as_array()))
+        if not fit.converged:  # MINPACK's LM from the same start (imports scipy.optimize)
+            fit = least_squares(
+                lambda x: _elevation_model(x, th) - e_rad,
+                np.radians(start.as_array()),
+                jac=lambda x: _elevation_jacobian(x, th),
+                method="lm",
+                xtol=1e-15,
+                ftol=1e-15,
+                gtol=1e-15,
+            )
         polished = SetupParameters(*np.degrees(fit.x)).canonical()
         cost = float(fit.fun @ fit.fun)
         if not _within(polished, psi_max_deg, beta_max_deg):
