@@ -21,6 +21,8 @@ from pathlib import Path
 
 import pytest
 
+from models.project.atomic_write import write_text_atomic
+
 ROOT = Path(__file__).resolve().parents[2]
 REPORT = ROOT / "BENCHMARKS.md"
 README = ROOT / "README.md"
@@ -83,15 +85,9 @@ def pytest_sessionfinish(session, exitstatus):
     head = ["## Headlines", "", *headlines, ""] if headlines else []
     text = "\n".join(_header() + head + [line for key in sorted(_SECTIONS) for line in
                                          _SECTIONS[key] + [""]])
-    _write_atomic(REPORT, text)
+    write_text_atomic(REPORT, text)
     if headlines:
         _update_readme(headlines)
-
-
-def _write_atomic(path: Path, text: str) -> None:
-    tmp = path.with_name(f".{path.name}.tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
 
 
 def _update_readme(headlines: list[str]) -> None:
@@ -102,4 +98,4 @@ def _update_readme(headlines: list[str]) -> None:
         print(f"\nREADME.md has no {BEGIN} … {END} block; headlines not copied")  # noqa: T201
         return
     block = "\n".join([BEGIN, *headlines, END])
-    _write_atomic(README, text[:start] + block + text[end + len(END):])
+    write_text_atomic(README, text[:start] + block + text[end + len(END):])
