@@ -45,6 +45,10 @@ def _parser() -> argparse.ArgumentParser:
                         "the certificate is marked DRAFT")
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help="also write the results per point (with U) as CSV or XLSX")
+    p.add_argument("--table", metavar="OUT",
+                   help="also write the workbench's correction table: fringe (CSV, or a C "
+                        "header for OUT.h), positioning (compensation table; "
+                        "--compensation-format, --compensation-step, --compensation-tables)")
     p.add_argument("--zenith", action="store_true",
                    help="theodolite: the vertical column is the zenith angle V (same as "
                         "--vertical-reading zenith)")
@@ -120,15 +124,23 @@ def run_analyze(argv: list[str]) -> int:
         _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else [])
-    for flag, out in (("--certificate", args.certificate), ("--results", args.results)):
+    if args.table and kind.correction_table is None:
+        _say(f"anglebench analyze: --table: {kind.title} has no correction table")
+        return EXIT_BAD_INPUT
+    outputs = (("--certificate", args.certificate), ("--results", args.results),
+               ("--table", args.table))
+    for flag, out in outputs:
         clash = next((i for i in inputs if out and _same_file(out, i)), None)
         if clash:
             _say(f"anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: "
                  "choose another name")
             return EXIT_BAD_INPUT
-    if args.certificate and args.results and _same_file(args.certificate, args.results):
-        _say("anglebench analyze: --certificate and --results name the same file")
-        return EXIT_BAD_INPUT
+    named = [(flag, out) for flag, out in outputs if out]
+    for i, (flag, out) in enumerate(named):
+        twin = next((f for f, o in named[i + 1:] if _same_file(out, o)), None)
+        if twin:
+            _say(f"anglebench analyze: {flag} and {twin} name the same file")
+            return EXIT_BAD_INPUT
     try:
         table = read_table(args.file)
         rows = map_columns(table, kind.columns)
@@ -157,6 +169,16 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(f"{kind.title}: {args.file}\n{kind.summary(result)}\n")
         for warning in getattr(result, "warnings", []):
             sys.stdout.write(f"Warning: {warning}\n")
+    if args.table:
+        try:
+            what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table)
+        except ValueError as exc:
+            _say(f"anglebench analyze: --table: {exc}")
+            return EXIT_BAD_INPUT
+        except OSError as exc:
+            _say(f"anglebench analyze: cannot write {args.table}: {exc}")
+            return 1
+        _say(f"{what[0].upper() + what[1:]} written to {args.table}")
     if args.certificate or args.results:
         return _export(args, kind, result, settings)
     return 0

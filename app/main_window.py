@@ -79,6 +79,8 @@ class MainWindow(QMainWindow):
                                                  lambda: self.current.mark_modified())
         self._setup_ui()
         self._setup_menus()
+        self.tabs.currentChanged.connect(self._on_tab_changed_send)
+        self._on_tab_changed_send(self.tabs.currentIndex())
         self._restore_window_state()
         self.autosave_timer = QTimer(self)
         self.autosave_timer.setSingleShot(True)
@@ -139,6 +141,10 @@ class MainWindow(QMainWindow):
         self.export_results_action = self._action(
             file_menu, "Export &results (CSV/XLSX)…", self.export_results,
             tip="Write every point's raw, correction, corrected error and U")
+        self.send_action = self._action(
+            file_menu, "Send to &positioning", self.send_to_positioning,
+            tip="Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
+                "readings are replaced; Edit > Undo there restores them)")
         file_menu.addSeparator()
         self._action(file_menu, "&Quit", self.close, QKeySequence.StandardKey.Quit)
 
@@ -291,6 +297,33 @@ class MainWindow(QMainWindow):
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
         self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
+
+    def send_to_positioning(self) -> bool:
+        """The current run, as readings of the positioning workbench (one undo step there)."""
+        source = self.current
+        target = next((p for p in self.presenters if p.kind.key == "positioning"), None)
+        if target is None or source is target or source.kind.positioning_rows is None:
+            self.tell("Cannot send", f"{source.kind.title} has nothing to send to the "
+                      "positioning workbench.")
+            return False
+        if source.result is None:
+            self.tell("Nothing to send", f"{source.kind.title}: "
+                      f"{source.problem or 'no readings have been analysed yet'}.")
+            return False
+        rows = source.kind.positioning_rows(source.result)
+        target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True)
+        target.set_settings({**target.settings, "target_unit": "deg", "deviation_unit": "arcsec"})
+        target.refresh()
+        self.tabs.setCurrentIndex(self.presenters.index(target))
+        self.statusBar().showMessage(
+            f"{source.kind.title}: {len(rows)} readings sent (deviation = −corrected error); "
+            "Edit > Undo restores the positioning readings", 8000)
+        return True
+
+    def _on_tab_changed_send(self, index: int) -> None:
+        presenter = self.presenters[index] if 0 <= index < len(self.presenters) else None
+        self.send_action.setEnabled(presenter is not None
+                                    and presenter.kind.positioning_rows is not None)
 
     def load_all_samples(self) -> None:
         for presenter in self.presenters:

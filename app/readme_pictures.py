@@ -66,7 +66,7 @@ def main() -> None:
         if path.name == "certificate_dialog.png":
             path.unlink()  # shown by the tests, not in the README
     with tempfile.TemporaryDirectory() as scratch:
-        for kind in ("theodolite", "polygon", "fringe"):
+        for kind in ("theodolite", "polygon", "fringe", "positioning"):
             certificate_picture(kind, Path(scratch))
         validation_picture(Path(scratch))
 

@@ -41,6 +41,12 @@ class AnalysisKind:
     check_settings: Callable[[dict[str, Any]], None] | None = None
     # "package.module:Class" of the workbench's presenter, imported only by the window
     presenter: str = ""
+    # (result, settings, path) -> what was written: the workbench's correction or
+    # compensation table (``anglebench analyze … --table``, the window's export button)
+    correction_table: Callable[[Any, Mapping[str, Any], str], str] | None = None
+    # result -> readings rows (target, run, direction, deviation in arcsec) that the
+    # positioning workbench takes: a run sent there to be judged to ISO 230-2 / VDI 3441
+    positioning_rows: Callable[[Any], list[list[str]]] | None = None
 
     @property
     def default_settings(self) -> dict[str, Any]:

@@ -16,12 +16,14 @@ from typing import Any
 from models.analysis_kind import AnalysisKind
 from models.fringe.analysis import FRINGE
 from models.polygon.analysis import POLYGON
+from models.positioning.analysis import POSITIONING
 from models.theodolite.analysis import THEODOLITE
 
 __all__ = ["KINDS", "presenter_class"]
 
 
-KINDS: dict[str, AnalysisKind] = {k.key: k for k in (THEODOLITE, POLYGON, FRINGE)}
+KINDS: dict[str, AnalysisKind] = {k.key: k for k in (THEODOLITE, POLYGON, FRINGE,
+                                                           POSITIONING)}
 
 
 def presenter_class(kind: AnalysisKind) -> Any:

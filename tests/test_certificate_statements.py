@@ -94,11 +94,16 @@ def test_17025_statements_on_every_certificate(key):
     assert flat.count("Calibration certificate") >= 1 and "Test certificate" not in flat
     assert "traceable to the SI unit of plane angle" in flat and "NIM-2026-0212" in flat
     assert "The results relate only to the item calibrated" in flat
-    assert "non-standard method" in flat and "anglebench validate" in flat
-    assert "error = indicated − reference" in flat
+    if key == "positioning":  # a standard method, named as such
+        assert "follows ISO 230-2:2014" in flat and "non-standard method" not in flat
+    else:
+        assert "non-standard method" in flat
+    assert "anglebench validate" in flat
+    assert ("x = actual position − target (ISO 230-2), i.e. reference − indicated" if
+            key == "positioning" else "error = indicated − reference") in flat
     assert "cross-checked by a Monte Carlo" not in flat
     assert "4.2.3" in flat and "conditional pass" in flat  # the rule's own zones
-    assert "U is zero at" in flat or key == "fringe"
+    assert "U is zero at" in flat or key in ("fringe", "positioning")
     if key == "polygon":
         assert "Table 1 of Tian et al. (2015)" in flat
     report = kind.certificate_document(result, replace(meta, document_type="test"))

@@ -47,7 +47,17 @@ def _fringe(rng: np.random.Generator, n: int) -> list[list[str]]:
     return [["u_sin", "u_cos"]] + [[f"{math.sin(t):.5f}", f"{math.cos(t):.5f}"] for t in theta]
 
 
-BASES = {"polygon": _polygon, "theodolite": _theodolite, "fringe": _fringe}
+def _positioning(rng: np.random.Generator, n: int) -> list[list[str]]:
+    targets = np.arange(0, 30 * max(2, n // 8), 30.0)
+    rows = []
+    for run in (1, 2, 3):
+        for sign, order in (("+", targets), ("-", targets[::-1])):
+            rows += [[f"{t:g}", str(run), sign, f"{rng.normal(0, 3):.2f}"] for t in order]
+    return [["target", "run", "direction", "deviation"]] + rows
+
+
+BASES = {"polygon": _polygon, "theodolite": _theodolite, "fringe": _fringe,
+         "positioning": _positioning}
 
 
 @st.composite
@@ -128,3 +138,9 @@ def test_theodolite_cli_never_crashes(text, tmp_path, capsys):
 @given(text=damaged_record("fringe"))
 def test_fringe_cli_never_crashes(text, tmp_path, capsys):
     _run("fringe", text, tmp_path, capsys)
+
+
+@FUZZ
+@given(text=damaged_record("positioning"))
+def test_positioning_cli_never_crashes(text, tmp_path, capsys):
+    _run("positioning", text, tmp_path, capsys)

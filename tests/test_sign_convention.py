@@ -47,5 +47,20 @@ def test_every_json_states_the_convention(key, capsys, samples_dir):
     kind = KINDS[key]
     extra = ["--samples-per-period", "64"] if key == "fringe" else []
     assert main(["analyze", key, str(samples_dir / kind.sample_file), "--json", *extra]) == 0
-    assert json.loads(capsys.readouterr().out)["sign_convention"] == SIGN_CONVENTION == \
-        "indicated_minus_reference"
+    expected = "actual_minus_target" if key == "positioning" else SIGN_CONVENTION
+    assert json.loads(capsys.readouterr().out)["sign_convention"] == expected
+    assert SIGN_CONVENTION == "indicated_minus_reference"
+
+
+def test_positioning_takes_the_encoder_error_with_iso_sign():
+    """ISO 230-2's deviation is actual − target = reference − indicated: an encoder that
+    indicates 1e-5 too much (+1.08" at 30°) stops 1.08" short of its target."""
+    faces = 12
+    nominal = np.arange(faces) * 30.0
+    rig = PolygonRig(faces, SCALE * nominal * 3600, psi_arcsec=200.0, omega_deg=30.0)
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(), {"grade": 7})
+    rows = POLYGON.positioning_rows(result)
+    positioning = KINDS["positioning"]
+    sent = positioning.analyze(ReadingsSheet(positioning.columns, rows).parse(), {})
+    assert sent.iso.forward.mean[1] == pytest.approx(-1.08, abs=1e-3)
+    assert positioning.to_json(sent)["sign_convention"] == "actual_minus_target"

@@ -115,7 +115,8 @@ def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypa
 def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     assert main(["--screenshot", str(tmp_path)]) == 0
     names = sorted(p.name for p in tmp_path.glob("*.png"))
-    assert names == ["certificate_dialog.png", "fringe.png", "polygon.png", "theodolite.png"]
+    assert names == ["certificate_dialog.png", "fringe.png", "polygon.png", "positioning.png",
+                     "theodolite.png"]
     assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))
 
 

@@ -27,7 +27,6 @@ from fpdf.enums import TableCellFillMode, XPos, YPos
 from fpdf.fonts import FontFace
 
 from models import __version__
-from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
 from models.project.atomic_write import write_bytes_atomic
 from models.uncertainty.budget import BASIS_DIVISORS
@@ -63,8 +62,12 @@ def _latin_coverage() -> frozenset[int]:
 
 def _needs_fallback(document: CertificateDocument) -> bool:
     """Whether any text of the document has a character DejaVu Sans lacks."""
+    tables = (document.parameters, document.results, document.statistics)
     texts = [document.source_name, document.method, document.method_reference,
-             *document.warnings, json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
+             *document.warnings, *document.statements, document.standard,
+             *(cell for t in tables for row in (t.header, *t.rows) for cell in row),
+             *(f"{k} {v}" for k, v in document.settings),
+             json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
     covered = _latin_coverage()
     return any(ord(ch) not in covered for text in texts for ch in text if ord(ch) > 0x7F)
 
@@ -254,6 +257,8 @@ class ReportPdf(FPDF):
                       y0 + h / 2, figure.y_label)
         lx = x0 + 2
         for s in figure.series:
+            if not s.label:  # a second line of a labelled pair (an envelope's lower edge)
+                continue
             self.set_draw_color(*s.color)
             self.set_line_width(0.6)
             self.line(lx, y0 + 3, lx + 5, y0 + 3)
@@ -380,12 +385,20 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.paragraph(document.method)
     if document.method_reference:
         pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
-    pdf.paragraph(
-        "This is a non-standard method, published in the reference above and implemented in "
-        f"AngleBench {__version__}. Its validation record (ISO/IEC 17025 7.2.2) is the "
-        "validation report of that version (anglebench validate): the reference figures of the "
-        "publication and exact simulations with known truth, each with its result.", 8, GREY)
-    pdf.paragraph(f"Sign convention: {SIGN_CONVENTION_TEXT}.", 8.5)
+    if document.standard:
+        pdf.paragraph(
+            f"The evaluation follows {document.standard}, implemented in AngleBench "
+            f"{__version__}; its verification is the validation report of that version "
+            "(anglebench validate): simulations with known truth and hand-computed examples, "
+            "each with its result.", 8, GREY)
+    else:
+        pdf.paragraph(
+            "This is a non-standard method, published in the reference above and implemented in "
+            f"AngleBench {__version__}. Its validation record (ISO/IEC 17025 7.2.2) is the "
+            "validation report of that version (anglebench validate): the reference figures of "
+            "the publication and exact simulations with known truth, each with its result.", 8,
+            GREY)
+    pdf.paragraph(f"Sign convention: {document.sign_convention}.", 8.5)
     if document.settings:
         pdf.heading("Analysis settings", keep_with=30)
         pdf.key_values(list(document.settings))

@@ -19,7 +19,6 @@ from pathlib import Path
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.document import CertificateDocument, budget_table
 from models.project.atomic_write import write_bytes_atomic
 
@@ -66,7 +65,7 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Date of calibration", meta.calibration_date), ("Date of issue", meta.issue_date),
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
-        ("Sign convention", SIGN_CONVENTION_TEXT),
+        ("Sign convention", document.sign_convention),
         ("Expanded uncertainty U, largest (\")", document.expanded_uncertainty_arcsec),
         ("Coverage factor k there", document.budget.coverage_factor),
         ("Coverage probability (%)", 100.0 * document.budget.probability),

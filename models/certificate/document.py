@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.plots import PlotFigure, PlotSeries
 from models.uncertainty.budget import (
@@ -60,6 +61,8 @@ class CertificateDocument:
     statements: tuple[str, ...] = ()
     unit: str = "\""  # the errors' unit symbol: arcsec, or " nm" for an interferometer
     settings: tuple[tuple[str, str], ...] = ()  # (label, value) of the analysis' settings
+    standard: str = ""  # the standard the evaluation follows (empty: a published method)
+    sign_convention: str = SIGN_CONVENTION_TEXT  # how the certificate's deviations are signed
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:

@@ -383,6 +383,14 @@ def summary(result: FringeResult) -> str:
     return "\n".join(lines)
 
 
+def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
+    from models.fringe.export import write_correction_table  # it imports this module
+
+    write_correction_table(path, result)
+    return (f"correction table, {result.table.size} entries "
+            f"({'C header' if str(path).endswith('.h') else 'CSV'})")
+
+
 FRINGE = AnalysisKind(
     key="fringe",
     title="Fringe signal analysis",
@@ -396,4 +404,5 @@ FRINGE = AnalysisKind(
                      "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
     certificate=fringe_certificate,
     presenter="widgets.fringe.presenter:FringePresenter",
+    correction_table=_correction_table,
 )

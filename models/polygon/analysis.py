@@ -397,6 +397,18 @@ def summary(result: PolygonResult) -> str:
     return "\n".join(lines)
 
 
+def positioning_rows(result: PolygonResult) -> list[list[str]]:
+    """Each set as a run of the positioning workbench: target = the face's nominal angle,
+    deviation = −corrected error (actual − target is reference − indicated)."""
+    rows, runs = [], {1: 0, -1: 0}
+    for s in result.sets:
+        runs[s.direction] += 1
+        for theta, error in zip(result.theta_deg, s.corrected_error_arcsec, strict=True):
+            rows.append([f"{theta:.6f}", str(runs[s.direction]), "+" if s.direction > 0 else "-",
+                         f"{-error:.4f}", ""])
+    return rows
+
+
 POLYGON = AnalysisKind(
     key="polygon",
     title="Polygon encoder test",
@@ -412,4 +424,5 @@ POLYGON = AnalysisKind(
     certificate=polygon_certificate,
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
+    positioning_rows=positioning_rows,
 )

@@ -73,12 +73,30 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     dir_col = parsed["direction"]
     if any(d for d in dir_col):
         directions = np.array([-1.0 if d == "-" else 1.0 for d in dir_col])
-    return analyze_run(
+    result = analyze_run(
         parsed["theta_deg"], parsed["azimuth_deg"], elevation,
         reference_index=reference_index, method=str(s["method"]),
         psi_max_deg=float(s["psi_max_deg"]), beta_max_deg=float(s["beta_max_deg"]),
         accuracy_arcsec=float(s["accuracy_arcsec"]) or None, directions=directions,
     )
+    runs = parsed["run"]
+    result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
+    result.directions = directions
+    return result
+
+
+def positioning_rows(result: TheodoliteResult) -> list[list[str]]:
+    """The run as readings of the positioning workbench: target = θ, deviation = −corrected
+    error (actual − target is reference − indicated); run and direction as read, else blank
+    (the positioning workbench then takes them from the order of θ)."""
+    rows = []
+    for k, (theta, error) in enumerate(zip(result.theta_deg, result.corrected_error_arcsec,
+                                           strict=True)):
+        run = "" if result.runs is None else str(result.runs[k])
+        direction = "" if result.directions is None else ("+" if result.directions[k] > 0
+                                                          else "-")
+        rows.append([f"{theta:.6f}", run, direction, f"{-error:.4f}", ""])
+    return rows
 
 
 def to_json(result: TheodoliteResult) -> dict[str, Any]:
@@ -153,4 +171,5 @@ THEODOLITE = AnalysisKind(
                      "system, Acta Photonica Sinica 46(11):1112005 (2017)",
     certificate=theodolite_certificate,
     presenter="widgets.theodolite.presenter:TheodolitePresenter",
+    positioning_rows=positioning_rows,
 )

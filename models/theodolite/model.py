@@ -416,6 +416,8 @@ class TheodoliteResult:
     reference_index: int = 0  # the row where the theodolite was zeroed (its error is 0)
     iso230: Iso230Result | None = None
     warnings: list[str] = field(default_factory=list)
+    runs: np.ndarray | None = None  # per used row, when the readings name their runs
+    directions: np.ndarray | None = None  # ±1 per used row, when stated
 
 
 def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:

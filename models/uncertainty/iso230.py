@@ -5,7 +5,7 @@ with j = 1…n runs: mean deviation x̄, standard uncertainty s (n − 1),
 reversal value B_i = x̄↑ − x̄↓, repeatability R↑ = 4 s↑,
 R_i = max(2s↑ + 2s↓ + |B_i|, R↑, R↓), bidirectional mean M_i = (x̄↑ + x̄↓)/2.
 Axis figures: E↑/E↓/E (systematic deviation), M (mean bidirectional),
-R, B and A (accuracy, x̄ ± 2s envelope). All values in the input's unit.
+R, B, B̄ (mean reversal, ISO 230-2:2014) and A (accuracy, x̄ ± 2s envelope). All values in the input's unit.
 """
 
 from __future__ import annotations
@@ -96,15 +96,18 @@ def iso230_evaluate(
         result.bidirectional_mean = 0.5 * (fwd.mean + bwd.mean)
         both = np.concatenate([fwd.mean, bwd.mean])
         figures["E"] = float(np.nanmax(both) - np.nanmin(both))
+        if not np.any(np.isfinite(reversal)):  # no target approached both ways
+            result.figures = figures
+            return result
         figures["M"] = float(
             np.nanmax(result.bidirectional_mean) - np.nanmin(result.bidirectional_mean)
         )
         figures["B"] = float(np.nanmax(np.abs(reversal)))
-        if np.any(np.isfinite(fwd.std)) and np.any(np.isfinite(bwd.std)):
-            rbi = np.fmax(
-                np.fmax(2 * fwd.std + 2 * bwd.std + np.abs(reversal), fwd.repeatability),
-                bwd.repeatability,
-            )
+        figures["B_mean"] = float(np.nanmean(reversal))
+        # R_i needs both directions' s: a target with one of them unknown gives none
+        rbi = np.maximum(np.maximum(2 * fwd.std + 2 * bwd.std + np.abs(reversal),
+                                    fwd.repeatability), bwd.repeatability)
+        if np.any(np.isfinite(rbi)):
             result.bidirectional_repeatability = rbi
             figures["R"] = float(np.nanmax(rbi))
             upper = np.concatenate([fwd.mean + 2 * fwd.std, bwd.mean + 2 * bwd.std])

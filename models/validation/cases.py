@@ -26,15 +26,19 @@ from models.fringe.report import fringe_budget
 from models.polygon.analysis import POLYGON
 from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
 from models.polygon.report import polygon_budget
+from models.positioning.analysis import POSITIONING
+from models.positioning.compensation import compensation_table
+from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
+from models.validation.positioning_rig import AxisRig
 from models.validation.theodolite_rig import theodolite_readings
 
 __all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
-           "polygon_budget_trials", "run_validation", "theodolite_budget_trials"]
+           "polygon_budget_trials", "positioning_budget_trials", "run_validation", "theodolite_budget_trials"]
 
 
 @dataclass(frozen=True)
@@ -126,6 +130,38 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
         deviations.append(result.compensated_error)
         budgets.append(fringe_budget(result, meta).combined_arcsec)
+    return np.array(deviations), np.array(budgets)
+
+
+POSITIONING_TARGETS = np.arange(0.0, 361.0, 45.0)
+
+
+def _axis_error_deg(theta_deg: np.ndarray) -> np.ndarray:
+    th = np.radians(theta_deg)
+    return (5.0 * np.sin(th + 0.4) + 1.5 * np.sin(2 * th)) / 3600.0
+
+
+def positioning_readings(rig: AxisRig, runs: int = 5) -> ParsedReadings:
+    """The rig's standard test cycle as the workbench reads it (deviations in arcsec)."""
+    rows = [[f"{t:.6f}", str(run), "+" if d > 0 else "-", f"{(reading - t) * 3600:.6f}", ""]
+            for t, run, d, reading in rig.standard_cycle(POSITIONING_TARGETS, runs)]
+    return ReadingsSheet(POSITIONING.columns, rows).parse()
+
+
+def positioning_budget_trials(trials: int, rng: np.random.Generator
+                              ) -> tuple[np.ndarray, np.ndarray]:
+    """Mean deviation − truth per target and direction, and the budget's u (arcsec)."""
+    meta = CertificateMetadata()
+    deviations, budgets = [], []
+    for _ in range(trials):
+        rig = AxisRig(_axis_error_deg, lost_motion=4.0 / 3600, noise=0.7 / 3600,
+                      reference_noise=0.3 / 3600, rng=rng)
+        result = POSITIONING.analyze(positioning_readings(rig), {})
+        truth = np.concatenate([[rig.true_mean_deviation(t, d, 5) * 3600
+                                 for t in result.positions] for d in (1, -1)])
+        mean = np.concatenate([result.iso.forward.mean, result.iso.backward.mean])
+        deviations.append(mean - truth)
+        budgets.append(positioning_budget(result, meta).combined_arcsec)
     return np.array(deviations), np.array(budgets)
 
 
@@ -281,6 +317,43 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     return cases
 
 
+def positioning_cases(trials: int) -> list[ValidationCase]:
+    w = "Positioning (axis)"
+    lost = 4.0  # arcsec
+    rig = AxisRig(_axis_error_deg, lost_motion=lost / 3600)  # no scatter: every figure known
+    result = POSITIONING.analyze(positioning_readings(rig), {})
+    f, v = result.iso.figures, result.vdi
+    e = _axis_error_deg(POSITIONING_TARGETS) * 3600
+    cases = [
+        _close(w, "axis without scatter: reversal B = lost motion", "exact simulation", lost,
+               f["B"], 1e-4),
+        _close(w, "axis without scatter: mean reversal B̄ = −lost motion (axis lags)",
+               "exact simulation", -lost, f["B_mean"], 1e-4),
+        _close(w, "axis without scatter: E↑ = range of the axis error", "exact simulation",
+               float(np.ptp(e)), f["E_up"], 1e-4),
+        _close(w, "axis without scatter: A = range of the axis error + lost motion",
+               "exact simulation", float(np.ptp(e)) + lost, f["A"], 1e-4),
+        _close(w, "axis without scatter: VDI 3441 P = Pa + U", "exact simulation",
+               float(np.ptp(e)) + lost, float(v.P), 1e-4),
+    ]
+    table = compensation_table(result)
+    forward = dict(zip(table.positions.tolist(), table.forward.tolist(), strict=True))
+    backward = dict(zip(table.positions.tolist(), table.backward.tolist(), strict=True))
+
+    def controller(target: float, direction: int) -> float:
+        return target + (forward if direction > 0 else backward)[target] / 3600.0
+
+    compensated = AxisRig(_axis_error_deg, lost_motion=lost / 3600, controller=controller)
+    left = POSITIONING.analyze(positioning_readings(compensated), {})
+    cases.append(_at_most(w, "compensation table loaded into the rig's controller: largest "
+                          "|mean deviation| left", "exact simulation", 0.01,
+                          float(np.nanmax(np.abs(np.concatenate(
+                              [left.iso.forward.mean, left.iso.backward.mean]))))))
+    cases.append(_agreement_case(w, positioning_budget_trials, trials, 4))
+    return cases
+
+
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
-    return theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
+    return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
+            + positioning_cases(trials))

@@ -14,6 +14,7 @@ from models.readings.angles import format_dms
 from models.theodolite.model import SetupParameters, simulate_readings
 from models.validation.fringe_rig import FringeHead, equal_steps, wandering_motion
 from models.validation.polygon_rig import PolygonRig
+from models.validation.positioning_rig import AxisRig
 
 HERE = Path(__file__).resolve().parent
 
@@ -98,8 +99,30 @@ def interferometer_sample() -> None:
             writer.writerow([f"{s:.5f}", f"{c:.5f}"])
 
 
+def rotary_table_error_deg(theta_deg: np.ndarray) -> np.ndarray:
+    """A worm-driven rotary table: its encoder's eccentricity 6" and ellipticity 2"."""
+    th = np.radians(theta_deg)
+    return (6.0 * np.sin(th + 0.5) + 2.0 * np.sin(2 * th - 1.1)) / 3600.0
+
+
+def positioning_sample() -> None:
+    """A rotary table to 13 targets 0…360° every 30°, five bidirectional runs (ISO 230-2's
+    standard cycle), lost motion 5", 0.3" drift a run, 0.8" scatter, read by a laser rotary
+    calibrator with 0.2" noise; deviations in arcseconds, in the order measured."""
+    rng = np.random.default_rng(2302)
+    rig = AxisRig(rotary_table_error_deg, lost_motion=5.0 / 3600, drift_per_run=0.3 / 3600,
+                  noise=0.8 / 3600, reference_noise=0.2 / 3600, rng=rng)
+    with open(HERE / "positioning_sample.csv", "w", newline="", encoding="utf-8") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(["target", "run", "direction", "deviation"])
+        for target, run, direction, reading in rig.standard_cycle(np.arange(0, 361, 30)):
+            writer.writerow([f"{target:g}", run, "+" if direction > 0 else "-",
+                             f"{(reading - target) * 3600:.2f}"])
+
+
 if __name__ == "__main__":
     theodolite_sample()
     polygon_sample()
     fringe_sample()
     interferometer_sample()
+    positioning_sample()

@@ -1,0 +1,309 @@
+"""Positioning of an axis as a workbench: readings columns, settings, the checks a log
+must pass, JSON and summary."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from models.analysis_kind import AnalysisKind
+from models.parameters import Parameter, SettingsError
+from models.positioning.compensation import write_compensation
+from models.positioning.model import (
+    DEVIATION_UNITS,
+    MIN_RUNS,
+    SIGN_CONVENTION,
+    STANDARDS,
+    PositioningResult,
+    evaluate,
+    infer_directions,
+)
+from models.positioning.report import positioning_certificate
+from models.readings.sheet import Column, ColumnKind, ParsedReadings
+
+__all__ = ["POSITIONING"]
+
+UP, DOWN = ("+", "↑", "up"), ("-", "−", "↓", "down")
+
+COLUMNS = (
+    Column("target", "target", "", ColumnKind.ANGLE_DEG,
+           help="Target position P_j the axis was sent to, in the target unit of the set-up "
+                "(degrees, decimal or D°M'S\"; or mm)"),
+    Column("run", "run", "", ColumnKind.INTEGER, required=False,
+           help="Run number j (optional; without it the k-th approach to a target in a "
+                "direction is run k)"),
+    Column("direction", "dir", "+/−", ColumnKind.TEXT, required=False, choices=UP + DOWN,
+           help="Approach direction: + (also ↑, up) or − (also ↓, down); when blank, taken "
+                "from the order of the targets"),
+    Column("deviation", "deviation", "", ColumnKind.NUMBER, required=False,
+           help="Positional deviation x = actual position reached − target, in the deviation "
+                "unit of the set-up (ISO 230-2 sense)"),
+    Column("measured", "measured", "", ColumnKind.ANGLE_DEG, required=False,
+           help="Actual position reached, as the reference read it, in the target unit "
+                "(instead of the deviation)"),
+)
+
+PARAMETERS = (
+    Parameter("target_unit", "target unit", "choice", "deg",
+              choices=(("deg", "degrees (rotary axis)"), ("mm", "millimetres (linear axis)")),
+              help="Unit of the target (and measured) positions"),
+    Parameter("deviation_unit", "deviation unit", "choice", "arcsec",
+              choices=(("arcsec", "arcseconds (\")"), ("urad", "microradians (µrad)"),
+                       ("um", "micrometres (µm)"), ("nm", "nanometres (nm)")),
+              help="Unit of the deviations and of every figure; arcsec or µrad for a rotary "
+                   "axis, µm or nm for a linear one"),
+    Parameter("standard", "standard applied", "choice", "iso230-2",
+              choices=tuple(STANDARDS.items()),
+              help="The standard the certificate states and judges by; the JSON always has "
+                   "ISO 230-2 and VDI/DGQ 3441 both"),
+    Parameter("compensation_step", "compensation step", "float", 0.0, "",
+              1e-6, 1e6, zero="at the targets", decimals=4, step=1.0,
+              help="Spacing of the compensation table in the target unit; 0: one entry at "
+                   "each target"),
+    Parameter("compensation_tables", "compensation tables", "choice", "separate",
+              choices=(("separate", "forward and backward"),
+                       ("bidirectional", "one, from the bidirectional mean")),
+              help="Separate tables for the two approach directions, or one table from the "
+                   "mean of the two (compensation = −mean deviation)"),
+    Parameter("compensation_format", "compensation format", "choice", "csv",
+              choices=(("csv", "CSV (position, compensation)"),
+                       ("linuxcnc", "LinuxCNC COMP_FILE type 0")),
+              help="CSV always works; LinuxCNC's joint compensation file (COMP_FILE_TYPE = 0, "
+                   "documented in the LinuxCNC INI configuration manual) lists nominal, "
+                   "actual forward and actual reverse positions"),
+)
+
+#: A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit
+#: or a measured position typed as a deviation.
+DEVIATION_LIMIT = {"deg": 1.0, "mm": 10.0}
+#: Targets beyond this are no axis positions (100 turns; 100 m).
+TARGET_LIMIT = {"deg": 36_000.0, "mm": 100_000.0}
+
+
+def _check_units(s: dict[str, Any]) -> None:
+    belongs = DEVIATION_UNITS[s["deviation_unit"]][0]
+    if belongs != s["target_unit"]:
+        raise SettingsError(
+            f"deviation_unit {s['deviation_unit']} is for an axis in {belongs}, but target_unit "
+            f"is {s['target_unit']}: choose arcsec or urad for deg, um or nm for mm")
+
+
+def _row(parsed: ParsedReadings, index: int) -> int:
+    return int(parsed.row_index[index]) + 1
+
+
+def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
+    """Each reading's deviation in the deviation unit, from either column; refuses a row with
+    neither, or with both disagreeing, naming it."""
+    scale = DEVIATION_UNITS[s["deviation_unit"]][1]
+    deviation = parsed["deviation"].astype(float)
+    measured = parsed["measured"].astype(float)
+    from_measured = (measured - parsed["target"]) * scale
+    neither = np.nonzero(~np.isfinite(deviation) & ~np.isfinite(measured))[0]
+    if neither.size:
+        raise ValueError(f"row {_row(parsed, int(neither[0]))}: neither a deviation nor a "
+                         "measured position; one of the two is needed")
+    both = np.isfinite(deviation) & np.isfinite(measured)
+    disagree = np.nonzero(both & (np.abs(deviation - from_measured) > 1e-3))[0]
+    if disagree.size:
+        i = int(disagree[0])
+        raise ValueError(
+            f"row {_row(parsed, i)}: deviation {deviation[i]:g} but measured − target = "
+            f"{from_measured[i]:.4f} ({s['deviation_unit']}): give one of the two, or make "
+            "them agree")
+    out = np.where(np.isfinite(deviation), deviation, from_measured)
+    limit = DEVIATION_LIMIT[s["target_unit"]] * scale
+    beyond = np.nonzero(np.abs(out) > limit)[0]
+    if beyond.size:
+        i = int(beyond[0])
+        raise ValueError(
+            f"row {_row(parsed, i)}: a deviation of {out[i]:g} {s['deviation_unit']} is beyond "
+            f"{limit:g} {s['deviation_unit']} ({DEVIATION_LIMIT[s['target_unit']]:g} "
+            f"{s['target_unit']}): check the deviation unit, or whether a position was typed "
+            "as a deviation")
+    return out
+
+
+def _directions(parsed: ParsedReadings, warnings: list[str]) -> np.ndarray:
+    stated = parsed["direction"]
+    given = np.array([bool(d) for d in stated], dtype=bool)
+    directions = infer_directions(parsed["target"])
+    for i in np.nonzero(given)[0]:
+        directions[i] = 1.0 if stated[i] in UP else -1.0
+    if not given.all():
+        count = int(np.sum(~given))
+        warnings.append(f"Approach direction not stated for {count} reading(s): taken from the "
+                        "order of the targets (a repeated target is the turn of a run).")
+    return directions
+
+
+def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -> np.ndarray:
+    """The run of each reading; with the run column, a (target, run, direction) seen twice is
+    refused naming both rows."""
+    runs = parsed["run"]
+    key_target = np.round(targets, 9)
+    if np.all(np.isfinite(runs)):
+        seen: dict[tuple[float, int, float], int] = {}
+        for i, key in enumerate(zip(key_target.tolist(), runs.astype(int).tolist(),
+                                    directions.tolist(), strict=True)):
+            if key in seen:
+                raise ValueError(
+                    f"rows {_row(parsed, seen[key])} and {_row(parsed, i)}: target {key[0]:g}, "
+                    f"run {key[1]}, direction {'+' if key[2] > 0 else '−'} twice")
+            seen[key] = i
+        return runs.astype(int)
+    if np.any(np.isfinite(runs)):
+        i = int(np.nonzero(~np.isfinite(runs))[0][0])
+        raise ValueError(f"row {_row(parsed, i)}: no run number, though other rows have one; "
+                         "give every row its run, or none")
+    counts: dict[tuple[float, float], int] = {}
+    out = np.empty(targets.size, dtype=int)
+    for i, key in enumerate(zip(key_target.tolist(), directions.tolist(), strict=True)):
+        counts[key] = counts.get(key, 0) + 1
+        out[i] = counts[key]
+    return out
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
+    s = POSITIONING.checked_settings(settings)
+    if parsed.n < 2:
+        raise ValueError(f"{parsed.n} usable readings; a positioning test needs at least two "
+                         "targets")
+    targets = parsed["target"].astype(float)
+    limit = TARGET_LIMIT[s["target_unit"]]
+    beyond = np.nonzero(np.abs(targets) > limit)[0]
+    if beyond.size:
+        i = int(beyond[0])
+        raise ValueError(f"row {_row(parsed, i)}: target {targets[i]:g} {s['target_unit']} is "
+                         f"beyond ±{limit:g} {s['target_unit']}: not a position of an axis")
+    if np.unique(np.round(targets, 9)).size < 2:
+        raise ValueError(f"every reading is at target {targets[0]:g}: a positioning test needs "
+                         "at least two targets")
+    warnings: list[str] = []
+    deviations = _deviations(parsed, s)
+    directions = _directions(parsed, warnings)
+    runs = _runs(parsed, targets, directions)
+    result = evaluate(targets, runs, directions, deviations, parsed.row_index.copy(),
+                      s["target_unit"], s["deviation_unit"], s["standard"], warnings)
+    for name, stats in (("forward", result.iso.forward), ("backward", result.iso.backward)):
+        if stats is None:
+            continue
+        missing = result.positions[stats.runs == 0]
+        if missing.size:
+            warnings.append(f"No {name} reading at target(s) {', '.join(f'{t:g}' for t in missing)}"
+                            f": the {name} figures leave them out.")
+    short = {k: n for k, n in result.least_runs.items() if n < MIN_RUNS}
+    if short:
+        words = {"up": "forward", "down": "backward"}
+        warnings.append(
+            "Fewer runs than ISO 230-2 asks (5 in each direction at every target): "
+            + ", ".join(f"{words[k]} {n}" for k, n in short.items())
+            + " at the least measured target. Evaluated, and flagged as the standard requires.")
+    if not result.bidirectional:
+        warnings.append("One approach direction only: the unidirectional figures are given; B, "
+                        "M, the bidirectional R and A, and VDI/DGQ 3441 U and P need both "
+                        "directions and are not evaluated.")
+    if result.iso.forward is not None and not np.any(np.isfinite(result.iso.forward.std)) or \
+            result.iso.backward is not None and not np.any(np.isfinite(result.iso.backward.std)):
+        warnings.append("No target was approached twice in the same direction: repeatability "
+                        "(R), accuracy (A) and the position scatter Ps are not evaluated.")
+    return result
+
+
+ISO_KEYS = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
+            "B_mean")
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def _array(values: np.ndarray | None) -> list[float | None] | None:
+    if values is None:
+        return None
+    return [_finite(float(v)) for v in values]
+
+
+def to_json(result: PositioningResult) -> dict[str, Any]:
+    iso = result.iso
+    per_target: dict[str, Any] = {"target": result.positions.tolist()}
+    for name, _, stats in result.directions_present():
+        per_target[f"mean_{name}"] = _array(stats.mean)
+        per_target[f"s_{name}"] = _array(stats.std)
+        per_target[f"band_2s_{name}"] = _array(2.0 * stats.std)
+        per_target[f"runs_{name}"] = stats.runs.tolist()
+    per_target["B_i"] = _array(iso.reversal)
+    per_target["M_i"] = _array(iso.bidirectional_mean)
+    per_target["R_i"] = _array(iso.bidirectional_repeatability)
+    return {
+        "target_unit": result.target_unit,
+        "deviation_unit": result.deviation_unit,
+        "standard": result.standard,
+        "standard_title": STANDARDS[result.standard],
+        "iso230_2": {k: _finite(iso.figures.get(k, float("nan"))) for k in ISO_KEYS},
+        "vdi3441": result.vdi.as_dict(),
+        "per_target": per_target,
+        "readings": int(result.deviations.size),
+        "least_runs": result.least_runs,
+        "minimum_runs_met": result.minimum_runs_met,
+        "sign_convention": SIGN_CONVENTION,
+        "warnings": result.warnings,
+    }
+
+
+def _figure(value: float | None, symbol: str) -> str:
+    if value is None or not math.isfinite(value):
+        return "not evaluated"
+    return f"{value:.3f}{symbol}"
+
+
+def summary(result: PositioningResult) -> str:
+    sym = result.symbol
+    f = result.iso.figures
+    present = [name for name, _, _ in result.directions_present()]
+    dirs = " and ".join("forward" if n == "up" else "backward" for n in present)
+    runs = ", ".join(f"{'forward' if k == 'up' else 'backward'} ≥ {n}"
+                     for k, n in result.least_runs.items())
+    lines = [f"{result.positions.size} targets {result.positions.min():g}…"
+             f"{result.positions.max():g}{result.target_symbol}, {result.deviations.size} "
+             f"readings, {dirs} (runs per target: {runs})"
+             + ("" if result.minimum_runs_met else "   *** fewer than 5 runs: flagged ***")]
+    keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
+        f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
+    lines.append("ISO 230-2: " + ", ".join(f"{k} = {_figure(f.get(k), sym)}" for k in keys))
+    v = result.vdi
+    lines.append("VDI/DGQ 3441: " + ", ".join(
+        f"{k} = {_figure(val, sym)}" for k, val in v.as_dict().items()))
+    lines.append(f"Standard applied: {STANDARDS[result.standard]}. "
+                 "Compensation = −mean deviation (Export compensation table… below the set-up).")
+    return "\n".join(lines)
+
+
+def _correction_table(result: PositioningResult, settings: Mapping[str, Any], path: str) -> str:
+    s = POSITIONING.checked_settings(settings)
+    return write_compensation(path, result, s["compensation_step"], s["compensation_tables"],
+                              s["compensation_format"])
+
+
+POSITIONING = AnalysisKind(
+    key="positioning",
+    title="Positioning (axis)",
+    columns=COLUMNS,
+    parameters=PARAMETERS,
+    analyze=analyze,
+    to_json=to_json,
+    summary=summary,
+    sample_file="positioning_sample.csv",
+    method_reference="ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
+                     "accuracy and repeatability of positioning of numerically controlled axes; "
+                     "VDI/DGQ 3441:1977; GB/T 17421.2-2016",
+    certificate=positioning_certificate,
+    check_settings=_check_units,
+    presenter="widgets.positioning.presenter:PositioningPresenter",
+    correction_table=_correction_table,
+)

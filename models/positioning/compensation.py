@@ -1,0 +1,151 @@
+"""Compensation tables for the axis controller, from a positioning result.
+
+The compensation at a position is the negative of the mean positional deviation
+there (compensation = −x̄; the controller adds it to the commanded position so that
+the axis reaches the target). Tables are given at the targets, or at a uniform
+spacing by linear interpolation between targets (never beyond the first and last
+target: no extrapolation). Two forms:
+
+* separate forward and backward tables (−x̄↑, −x̄↓): the reversal is compensated too;
+* one bidirectional table, −(x̄↑ + x̄↓)/2 (the reversal is left to the controller's
+  backlash setting).
+
+Formats: CSV always. LinuxCNC's joint compensation file, ``COMP_FILE_TYPE = 0``, as
+documented in the LinuxCNC manual (INI configuration, section [JOINT_n], COMP_FILE
+and COMP_FILE_TYPE): one line per point, "nominal actual-forward actual-reverse" in
+machine units (mm, or degrees for an angular joint), nominal ascending, at most 256
+lines; the controller reads the actual positions and compensates itself, so the
+file holds measured positions, not corrections. No other controller's format is
+written: those we could not cite are not guessed.
+"""
+
+from __future__ import annotations
+
+import io
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.positioning.model import DEVIATION_UNITS, PositioningResult
+from models.project.atomic_write import write_text_atomic
+
+__all__ = ["LINUXCNC_MAX_POINTS", "CompensationTable", "compensation_table",
+           "compensation_csv", "linuxcnc_comp_file", "write_compensation"]
+
+LINUXCNC_MAX_POINTS = 256
+FORMS = {"separate": "separate tables for the forward and the backward approach",
+         "bidirectional": "one table from the bidirectional mean (x_up + x_down)/2",
+         "forward only": "forward approach only (the backward was not measured)",
+         "backward only": "backward approach only (the forward was not measured)"}
+MAX_POINTS = 100_000
+
+
+@dataclass(frozen=True)
+class CompensationTable:
+    """Positions (target unit) and compensations (deviation unit); ``backward`` is None for
+    one bidirectional table."""
+
+    positions: np.ndarray
+    forward: np.ndarray
+    backward: np.ndarray | None
+    target_unit: str
+    deviation_unit: str
+    spacing: str  # "at the targets" or "uniform step …"
+    form: str  # "separate", "bidirectional", "forward only" or "backward only"
+
+
+def _resample(positions: np.ndarray, values: np.ndarray, grid: np.ndarray, name: str) -> np.ndarray:
+    ok = np.isfinite(values)
+    if not ok.all():
+        missing = ", ".join(f"{p:g}" for p in positions[~ok])
+        raise ValueError(f"no {name} mean deviation at target(s) {missing}: a compensation table "
+                         "needs every target")
+    return np.interp(grid, positions, values)
+
+
+def compensation_table(result: PositioningResult, step: float = 0.0,
+                       tables: str = "separate") -> CompensationTable:
+    """The table: at the targets (``step`` 0) or every ``step`` from the first target."""
+    positions = result.positions
+    if step > 0:
+        span = float(positions[-1] - positions[0])
+        count = int(np.floor(span / step + 1e-9)) + 1
+        if count < 2:
+            raise ValueError(f"a step of {step:g} leaves fewer than two points over the targets "
+                             f"{positions[0]:g}…{positions[-1]:g}")
+        if count > MAX_POINTS:
+            raise ValueError(f"a step of {step:g} gives {count} points; at most {MAX_POINTS}")
+        grid = positions[0] + step * np.arange(count)
+        spacing = f"uniform step {step:g}"
+    else:
+        grid, spacing = positions.copy(), "at the targets"
+    iso = result.iso
+    if tables == "bidirectional":
+        if not result.bidirectional:
+            raise ValueError("a bidirectional table needs both approach directions; this run "
+                             "has one: export separate tables")
+        forward = -_resample(positions, iso.bidirectional_mean, grid, "bidirectional")
+        backward, form = None, "bidirectional"
+    else:
+        form = "separate"
+        forward = backward = None
+        if iso.forward is not None:
+            forward = -_resample(positions, iso.forward.mean, grid, "forward")
+        if iso.backward is not None:
+            backward = -_resample(positions, iso.backward.mean, grid, "backward")
+        if forward is None:  # backward only: it is the table
+            forward, backward, form = backward, None, "backward only"
+        elif backward is None:
+            form = "forward only"
+    return CompensationTable(grid, forward, backward, result.target_unit, result.deviation_unit,
+                             spacing, form)
+
+
+def compensation_csv(table: CompensationTable) -> str:
+    unit, tu = table.deviation_unit, table.target_unit
+    out = io.StringIO()
+    out.write("# AngleBench compensation table: compensation = -mean positional deviation "
+              "(deviation = actual - target, ISO 230-2); commanded = target + compensation\n")
+    out.write(f"# spacing: {table.spacing}\n")
+    out.write(f"# {FORMS[table.form]}\n")
+    if table.backward is None:
+        out.write(f"position_{tu},compensation_{unit}\n")
+        for p, c in zip(table.positions, table.forward, strict=True):
+            out.write(f"{p:.9g},{c:.6f}\n")
+    else:
+        out.write(f"position_{tu},forward_compensation_{unit},backward_compensation_{unit}\n")
+        for p, f, b in zip(table.positions, table.forward, table.backward, strict=True):
+            out.write(f"{p:.9g},{f:.6f},{b:.6f}\n")
+    return out.getvalue()
+
+
+def linuxcnc_comp_file(table: CompensationTable) -> str:
+    """LinuxCNC COMP_FILE_TYPE 0: "nominal actual_forward actual_reverse" in machine units."""
+    if table.backward is None:
+        raise ValueError("LinuxCNC's compensation file lists the forward and the reverse "
+                         "positions: export separate tables (both directions measured)")
+    if table.positions.size > LINUXCNC_MAX_POINTS:
+        raise ValueError(f"{table.positions.size} points; LinuxCNC takes at most "
+                         f"{LINUXCNC_MAX_POINTS} per joint: choose a larger step")
+    scale = DEVIATION_UNITS[table.deviation_unit][1]
+    lines = []
+    for p, f, b in zip(table.positions, table.forward, table.backward, strict=True):
+        # actual position = nominal + mean deviation = nominal − compensation
+        lines.append(f"{p:.9f} {p - f / scale:.9f} {p - b / scale:.9f}")
+    return "\n".join(lines) + "\n"
+
+
+def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
+                       tables: str = "separate", fmt: str = "csv") -> str:
+    """Write the table (atomically); returns a line saying what was written."""
+    table = compensation_table(result, step, tables)
+    if fmt == "linuxcnc":
+        text = linuxcnc_comp_file(table)
+        what = (f"LinuxCNC compensation file (COMP_FILE_TYPE = 0), {table.positions.size} "
+                f"points in {table.target_unit}")
+    else:
+        text = compensation_csv(table)
+        what = (f"compensation table, {table.positions.size} points "
+                f"({FORMS[table.form]}, {table.spacing})")
+    write_text_atomic(path, text)
+    return what

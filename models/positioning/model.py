@@ -1,0 +1,190 @@
+"""Positioning of an axis (rotary or linear) against a reference: the readings as logged,
+ISO 230-2:2014 and VDI/DGQ 3441 figures.
+
+A reading is one approach of the axis to a target: the target position P_j, the run,
+the approach direction and the positional deviation x_ij = P_ij − P_j (actual
+position reached minus target, the ISO 230-2 sense: indicated − reference when the
+axis's own scale is what positioned it). The ISO 230-2 figures come from
+models.uncertainty.iso230; VDI/DGQ 3441 (1977) is evaluated here from the same
+per-target statistics:
+
+* mean position deviation  x̄_j = (x̄_j↑ + x̄_j↓) / 2,
+* reversal span            U_j = |x̄_j↑ − x̄_j↓|,              U_max = max U_j,
+* position scatter         Ps_j = 6 s̄_j, s̄_j = (s_j↑ + s_j↓) / 2,  Ps_max = max Ps_j,
+* position deviation       Pa = max x̄_j − min x̄_j,
+* position uncertainty     P = max (x̄_j + (U_j + Ps_j)/2) − min (x̄_j − (U_j + Ps_j)/2).
+
+VDI/DGQ 3441 is a bidirectional test: with one direction only U and P cannot be
+determined and are not given (x̄_j and s̄_j are then that direction's own).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
+
+__all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
+           "TARGET_UNITS", "PositioningResult", "Vdi3441Result", "evaluate", "infer_directions",
+           "vdi3441_evaluate"]
+
+#: ISO 230-2's sign: x = actual − target. The axis's own scale indicates the target when it
+#: stops and the reference reads the actual position, so x = reference − indicated: the
+#: negative of an error of indication (the other workbenches' sign).
+SIGN_CONVENTION = "actual_minus_target"
+SIGN_CONVENTION_TEXT = ("positional deviation x = actual position − target (ISO 230-2), i.e. "
+                        "reference − indicated: the negative of an error of indication; "
+                        "compensation = −x")
+
+#: ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target.
+MIN_RUNS = 5
+
+#: target unit → (symbol, quantity)
+TARGET_UNITS: dict[str, tuple[str, str]] = {"deg": ("°", "angle"), "mm": (" mm", "length")}
+
+#: deviation unit → (target unit it belongs to, deviation units per target unit, symbol)
+DEVIATION_UNITS: dict[str, tuple[str, float, str]] = {
+    "arcsec": ("deg", 3600.0, "\""),
+    "urad": ("deg", math.pi / 180.0 * 1e6, " µrad"),
+    "um": ("mm", 1e3, " µm"),
+    "nm": ("mm", 1e6, " nm"),
+}
+
+#: the standard applied → its title on the certificate
+STANDARDS: dict[str, str] = {
+    "iso230-2": "ISO 230-2:2014",
+    "vdi3441": "VDI/DGQ 3441:1977",
+    "gb17421.2": "GB/T 17421.2-2016 (identical to ISO 230-2:2014)",
+}
+
+
+def infer_directions(targets: np.ndarray) -> np.ndarray:
+    """The approach direction of each reading from the order of the targets alone.
+
+    A reading approached a target from below (+1) when its target is above the
+    previous one, from above (−1) when below; a target repeated at once is the turn
+    of a bidirectional run (the axis overtravels and comes back), so the direction
+    flips. The first reading takes the direction of the first step.
+    """
+    t = np.asarray(targets, dtype=float)
+    out = np.ones(t.size)
+    if t.size < 2:
+        return out
+    steps = np.sign(np.diff(t))
+    nonzero = steps[steps != 0]
+    out[0] = nonzero[0] if nonzero.size else 1.0
+    for k in range(1, t.size):
+        out[k] = steps[k - 1] if steps[k - 1] != 0 else -out[k - 1]
+    return out
+
+
+@dataclass(frozen=True)
+class Vdi3441Result:
+    """VDI/DGQ 3441 per target (x̄_j, U_j, Ps_j) and for the axis; ``None`` where the
+    readings cannot determine a figure (U and P need both directions, Ps two runs)."""
+
+    mean: np.ndarray
+    reversal: np.ndarray | None
+    scatter: np.ndarray | None
+    P: float | None
+    Ps_max: float | None
+    Pa: float
+    U_max: float | None
+
+    def as_dict(self) -> dict[str, float | None]:
+        return {"P": self.P, "Ps_max": self.Ps_max, "Pa": self.Pa, "U_max": self.U_max}
+
+
+def _finite_or_none(value: float) -> float | None:
+    return float(value) if math.isfinite(value) else None
+
+
+def vdi3441_evaluate(iso: Iso230Result) -> Vdi3441Result:
+    """VDI/DGQ 3441 from the per-target statistics of an ISO 230-2 evaluation."""
+    both = iso.forward is not None and iso.backward is not None
+    if both:
+        up, down = iso.forward, iso.backward
+        mean = 0.5 * (up.mean + down.mean)
+        reversal = np.abs(up.mean - down.mean)
+        s_bar = 0.5 * (up.std + down.std)
+    else:
+        one = iso.forward if iso.forward is not None else iso.backward
+        mean, reversal, s_bar = one.mean, None, one.std
+    scatter = 6.0 * s_bar if np.any(np.isfinite(s_bar)) else None
+    if not np.any(np.isfinite(mean)):  # no target approached both ways
+        return Vdi3441Result(mean, None, None, None, None, float("nan"), None)
+    pa = float(np.nanmax(mean) - np.nanmin(mean))
+    p = None
+    if reversal is not None and scatter is not None:
+        half = 0.5 * (reversal + scatter)
+        p = _finite_or_none(float(np.nanmax(mean + half) - np.nanmin(mean - half)))
+    return Vdi3441Result(
+        mean, reversal, scatter, p,
+        None if scatter is None else _finite_or_none(float(np.nanmax(scatter))), pa,
+        None if reversal is None else _finite_or_none(float(np.nanmax(reversal))))
+
+
+@dataclass
+class PositioningResult:
+    """Readings in approach order and their evaluation; deviations in ``deviation_unit``,
+    targets in ``target_unit``."""
+
+    targets: np.ndarray  # per reading
+    runs: np.ndarray
+    directions: np.ndarray  # ±1 per reading
+    deviations: np.ndarray
+    rows: np.ndarray  # the sheet row (0-based) of each reading
+    iso: Iso230Result
+    vdi: Vdi3441Result
+    target_unit: str
+    deviation_unit: str
+    standard: str
+    least_runs: dict[str, int]  # direction ("up"/"down") → fewest runs at any target
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def positions(self) -> np.ndarray:
+        return self.iso.positions
+
+    @property
+    def symbol(self) -> str:
+        return DEVIATION_UNITS[self.deviation_unit][2]
+
+    @property
+    def target_symbol(self) -> str:
+        return TARGET_UNITS[self.target_unit][0]
+
+    @property
+    def bidirectional(self) -> bool:
+        return self.iso.forward is not None and self.iso.backward is not None
+
+    @property
+    def minimum_runs_met(self) -> bool:
+        return all(n >= MIN_RUNS for n in self.least_runs.values())
+
+    def directions_present(self) -> list[tuple[str, int, object]]:
+        """("up", +1, stats) and/or ("down", −1, stats) for the directions measured."""
+        out = []
+        if self.iso.forward is not None:
+            out.append(("up", 1, self.iso.forward))
+        if self.iso.backward is not None:
+            out.append(("down", -1, self.iso.backward))
+        return out
+
+
+def evaluate(targets: np.ndarray, runs: np.ndarray, directions: np.ndarray,
+             deviations: np.ndarray, rows: np.ndarray, target_unit: str, deviation_unit: str,
+             standard: str, warnings: list[str]) -> PositioningResult:
+    """ISO 230-2 and VDI/DGQ 3441 of checked readings (see analysis.py for the checks)."""
+    iso = iso230_evaluate(targets, deviations, directions, decimals=9)
+    least = {}
+    for name, stats in (("up", iso.forward), ("down", iso.backward)):
+        if stats is None:
+            continue
+        least[name] = int(np.min(stats.runs))
+    return PositioningResult(targets, runs, directions, deviations, rows, iso,
+                             vdi3441_evaluate(iso), target_unit, deviation_unit, standard,
+                             least, warnings)

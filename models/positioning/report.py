@@ -1,0 +1,193 @@
+"""Positioning test: uncertainty budget and certificate content.
+
+The certified quantity is the mean positional deviation x̄ at each target in each
+approach direction measured. Its inputs (GUM):
+
+* each reference standard's stated figure (laser rotary calibrator, interferometer,
+  polygon and autocollimator …), per reading, sensitivity 1, in the deviation unit;
+* the repeatability of the mean: s/√n of that target and direction (Type A), with
+  the fewest runs' n − 1 degrees of freedom (conservative: one ν for every point);
+* the resolution of the indication, if stated (rectangular, half-width r/2).
+
+A target approached only once in a direction has no repeatability: no certificate
+is issued for it (the budget would leave out the scatter) — the figures are still
+shown in the window and the JSON.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from models.certificate.document import (
+    CertificateDocument,
+    Table,
+    decision_rows,
+    reference_standard_components,
+    resolution_component,
+)
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.positioning.model import MIN_RUNS, SIGN_CONVENTION_TEXT, STANDARDS, PositioningResult
+from models.positioning.plots import deviation_figure, reversal_figure
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+__all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate"]
+
+METHOD = (
+    "The axis is sent to each target position in turn, in runs that approach every target "
+    "from one direction and then from the other, as logged; the reference instrument reads "
+    "the actual position reached. The positional deviation is x = actual position − target "
+    "(ISO 230-2). Per target and direction: the mean x̄, the standard deviation s (n − 1) and "
+    "the reversal value B_i = x̄↑ − x̄↓; for the axis the figures of the standard applied "
+    "below, the others beside them. A compensation table for the axis controller is the "
+    "negative of the mean deviation."
+)
+
+#: ISO 230-2 figure → (English name, GB/T 17421.2 name)
+FIGURE_NAMES: dict[str, tuple[str, str]] = {
+    "A": ("bidirectional accuracy of positioning", "双向定位精度"),
+    "A_up": ("unidirectional accuracy of positioning ↑", "单向定位精度 ↑"),
+    "A_down": ("unidirectional accuracy of positioning ↓", "单向定位精度 ↓"),
+    "R": ("bidirectional repeatability of positioning", "双向重复定位精度"),
+    "R_up": ("unidirectional repeatability of positioning ↑", "单向重复定位精度 ↑"),
+    "R_down": ("unidirectional repeatability of positioning ↓", "单向重复定位精度 ↓"),
+    "E": ("bidirectional systematic positional deviation", "双向定位系统偏差"),
+    "E_up": ("unidirectional systematic positional deviation ↑", "单向定位系统偏差 ↑"),
+    "E_down": ("unidirectional systematic positional deviation ↓", "单向定位系统偏差 ↓"),
+    "M": ("range of the mean bidirectional positional deviation", "平均双向位置偏差范围"),
+    "B": ("reversal value of the axis", "反向差值"),
+    "B_mean": ("mean reversal value of the axis", "平均反向差值"),
+}
+VDI_NAMES = {"P": "position uncertainty", "Ps_max": "largest position scatter",
+             "Pa": "position deviation", "U_max": "largest reversal span"}
+
+
+def _points(result: PositioningResult) -> list[tuple[str, np.ndarray, np.ndarray, np.ndarray]]:
+    """(direction, mean, s, n) for each direction measured, over the targets."""
+    return [(name, stats.mean, stats.std, stats.runs)
+            for name, _, stats in result.directions_present()]
+
+
+def positioning_budget(result: PositioningResult,
+                       metadata: CertificateMetadata) -> UncertaintyBudget:
+    points = _points(result)
+    for name, _, s, n in points:
+        once = result.positions[(n < 2) | ~np.isfinite(s)]
+        if once.size:
+            raise MetadataError(
+                f"target(s) {', '.join(f'{t:g}' for t in once)} "
+                f"{'forward' if name == 'up' else 'backward'} were approached fewer than twice: "
+                "their repeatability, part of U, is unknown; no certificate is issued")
+    s = np.concatenate([p[2] for p in points])
+    n = np.concatenate([p[3] for p in points]).astype(float)
+    components = reference_standard_components(metadata, 1.0, "reading")
+    components.append(BudgetComponent(
+        "Repeatability of the mean (s/√n)", "A", "normal", s / np.sqrt(n), 1.0, 1.0,
+        float(np.min(n) - 1),
+        "s of the runs at each target and direction, n = "
+        + (f"{int(np.min(n))}" if np.min(n) == np.max(n) else f"{int(np.min(n))}…{int(np.max(n))}")
+        + "; ν of the fewest runs"))
+    components += resolution_component(metadata, 1.0)
+    return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
+
+
+def _fmt(value: float | None, sym: str, digits: int = 3) -> str:
+    if value is None or not math.isfinite(value):
+        return "not evaluated"
+    return f"{value:.{digits}f}{sym}"
+
+
+def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
+    sym, f = result.symbol, result.iso.figures
+    gb = result.standard == "gb17421.2"
+    present = {name for name, _, _ in result.directions_present()}
+    iso_rows = []
+    for key, (english, chinese) in FIGURE_NAMES.items():
+        direction = key.rsplit("_", 1)[1] if key.endswith(("_up", "_down")) else None
+        if direction not in present if direction else not result.bidirectional:
+            continue
+        name = f"{chinese} {key}" if gb else f"{key}: {english}"
+        iso_rows.append((name, _fmt(f.get(key), sym), "GB/T 17421.2" if gb else "ISO 230-2"))
+    vdi_rows = [(f"{k}: {VDI_NAMES[k]}", _fmt(v, sym), "VDI/DGQ 3441")
+                for k, v in result.vdi.as_dict().items()]
+    return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
+
+
+def positioning_certificate(result: PositioningResult, metadata: CertificateMetadata,
+                            source_name: str = "", method_reference: str = "") -> CertificateDocument:
+    budget = positioning_budget(result, metadata)
+    big_u = budget.expanded_arcsec
+    sym = result.symbol
+    points = _points(result)
+    m = result.positions.size
+    u_by_dir = {name: big_u[k * m:(k + 1) * m] for k, (name, *_) in enumerate(points)}
+    standard = STANDARDS[result.standard]
+    runs = ", ".join(f"{'forward' if k == 'up' else 'backward'} {n}"
+                     for k, n in result.least_runs.items())
+    rows_p = [("Standard applied", standard, ""),
+              ("Targets", f"{m}: {result.positions.min():g} … {result.positions.max():g}"
+                          f"{result.target_symbol}", ""),
+              ("Readings", f"{result.deviations.size}", ""),
+              ("Fewest runs at a target", runs,
+               "" if result.minimum_runs_met else f"fewer than {MIN_RUNS}: flagged")]
+    parameters = Table("Test", ("Item", "Value", "Note"), rows_p)
+    header = ["Target"]
+    for name, *_ in points:
+        arrow = "↑" if name == "up" else "↓"
+        header += [f"x̄{arrow}", f"s{arrow}", f"U{arrow}"]
+    if result.bidirectional:
+        header += ["B_i", "M_i"]
+    rows = []
+    for i, target in enumerate(result.positions):
+        row = [f"{target:g}"]
+        for name, mean, s, _ in points:
+            row += [f"{mean[i]:+.3f}", f"{s[i]:.3f}", f"{u_by_dir[name][i]:.3f}"]
+        if result.bidirectional:
+            row += [f"{result.iso.reversal[i]:+.3f}", f"{result.iso.bidirectional_mean[i]:+.3f}"]
+        rows.append(tuple(row))
+    results = Table(f"Results per target ({sym.strip()}; target in {result.target_symbol.strip()})",
+                    tuple(header), rows,
+                    "x = actual position − target. U is the expanded uncertainty of the mean x̄.")
+    curve = np.concatenate([p[1] for p in points])
+    conformity = decide_conformity(curve, budget, metadata.tolerance_arcsec,
+                                   metadata.decision_rule, metadata.decision_quantity,
+                                   what="mean positional deviation", unit=sym)
+    stat_rows = _figure_rows(result)
+    stat_rows += decision_rows(conformity, budget, "targets and directions", sym)
+    statistics = Table("Figures of the axis", ("Quantity", "Value", "Standard"), stat_rows)
+    plots = [deviation_figure(result)]
+    reversal = reversal_figure(result)
+    if reversal is not None:
+        plots.append(reversal)
+    worst = budget.worst_index
+    worst_name = points[worst // m][0]
+    statements = [
+        f"Evaluated to {standard}; the figures of the other standard are given beside them "
+        "from the same readings.",
+        "Conformity, when a tolerance is stated, is judged on the mean positional deviations "
+        "(each with its own U, or half their range); a specification of A, R or P is read "
+        "against the figures above.",
+        "Compensation = −mean deviation: a controller adding it to the commanded position "
+        "reaches the target.",
+    ]
+    if not result.minimum_runs_met:
+        statements.append(f"ISO 230-2 asks for at least {MIN_RUNS} runs in each direction at "
+                          f"every target; this test has fewer ({runs}). The figures are "
+                          "evaluated and flagged.")
+    directions = np.concatenate([np.full(m, 1.0 if name == "up" else -1.0)
+                                 for name, *_ in points])
+    return CertificateDocument(
+        "positioning", "Positioning test of an axis", metadata, source_name, METHOD,
+        method_reference, parameters, results, statistics, budget,
+        f"target {result.positions[worst % m]:g}{result.target_symbol} "
+        f"({'↑' if worst_name == 'up' else '↓'})", conformity, metadata.tolerance_arcsec,
+        tuple(plots), tuple(result.warnings), unit=sym, statements=tuple(statements),
+        standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
+        point_columns=(
+            ("target", np.tile(result.positions, len(points))), ("direction", directions),
+            (f"mean_deviation_{result.deviation_unit}", curve),
+            (f"s_{result.deviation_unit}", np.concatenate([p[2] for p in points])),
+            ("runs", np.concatenate([p[3] for p in points]).astype(float)),
+            (f"expanded_uncertainty_{result.deviation_unit}", big_u)))

@@ -1,0 +1,178 @@
+"""Positioning workbench end to end: the command line, the certificate (its U per target
+checked by hand, the standard it names), the presenter on a mock view, and the window:
+a polygon run sent to the positioning workbench, a table exported from it."""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+import re
+from unittest import mock
+
+import numpy as np
+import pytest
+import shiboken6
+from pypdf import PdfReader
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QMessageBox, QWidget
+from scipy import stats
+
+from app.main import main
+from app.main_window import MainWindow
+from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.certificate.metadata import CertificateMetadata, MetadataError, ReferenceStandard
+from models.project.recovery import RecoveryStore
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+from widgets.positioning.presenter import PositioningPresenter
+from widgets.positioning.view import PositioningView
+
+KIND = KINDS["positioning"]
+
+
+def sample(samples_dir, **settings):
+    rows = map_columns(read_table(samples_dir / KIND.sample_file), KIND.columns)
+    return KIND.analyze(ReadingsSheet(KIND.columns, rows).parse(),
+                        KIND.settings_with_defaults(settings))
+
+
+def flat(document) -> str:
+    reader = PdfReader(io.BytesIO(certificate_pdf_bytes(document)))
+    return re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in reader.pages))
+
+
+# -- command line -----------------------------------------------------------------------------
+def test_json_has_both_standards_and_every_figure(samples_dir, capsys):
+    assert main(["analyze", "positioning", str(samples_dir / KIND.sample_file), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert set(data["iso230_2"]) == {"A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R",
+                                     "R_up", "R_down", "B", "B_mean"}
+    assert set(data["vdi3441"]) == {"P", "Ps_max", "Pa", "U_max"}
+    assert all(v is not None for v in data["iso230_2"].values())
+    per = data["per_target"]
+    assert len(per["target"]) == 13 and len(per["band_2s_up"]) == 13
+    np.testing.assert_allclose(per["B_i"], np.array(per["mean_up"]) - per["mean_down"])
+    # the sample's table lags by 5": the mean reversal says so
+    assert data["iso230_2"]["B_mean"] == pytest.approx(-5.0, abs=0.5)
+    assert data["sign_convention"] == "actual_minus_target"
+
+
+def test_cli_writes_a_table_and_refuses_what_it_cannot_write(samples_dir, tmp_path, capsys):
+    src = str(samples_dir / KIND.sample_file)
+    out = tmp_path / "axis.comp"
+    assert main(["analyze", "positioning", src, "--table", str(out), "--compensation-format",
+                 "linuxcnc", "--compensation-step", "10"]) == 0
+    assert "COMP_FILE_TYPE = 0" in capsys.readouterr().err
+    assert np.loadtxt(out).shape == (37, 3)
+    bad = tmp_path / "bad.comp"
+    assert main(["analyze", "positioning", src, "--table", str(bad), "--compensation-format",
+                 "linuxcnc", "--compensation-tables", "bidirectional"]) == 2
+    assert "export separate tables" in capsys.readouterr().err and not bad.exists()
+    assert main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                 "--table", str(tmp_path / "t.csv")]) == 2
+    assert "has no correction table" in capsys.readouterr().err
+    assert main(["analyze", "positioning", src, "--target-unit", "mm"]) == 2
+    assert "deviation_unit arcsec is for an axis in deg" in capsys.readouterr().err
+    assert main(["analyze", "positioning", src, "--table", src]) == 2  # never over the input
+    assert "is an input" in capsys.readouterr().err
+
+
+def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
+    pdf = tmp_path / "p.pdf"
+    assert main(["analyze", "positioning", str(samples_dir / KIND.sample_file), "--standard",
+                 "gb17421.2", "--certificate", str(pdf)]) == 0
+    text = re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in PdfReader(pdf).pages))
+    assert "follows GB/T 17421.2-2016" in text and "双向定位精度" in text
+    assert "Position uncertainty".lower() in text.lower()  # VDI beside it
+
+
+# -- certificate ------------------------------------------------------------------------------
+def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samples_dir):
+    meta = CertificateMetadata(standards=(ReferenceStandard("laser rotary calibrator",
+                                                            uncertainty_arcsec=0.6,
+                                                            basis="U95"),))
+    result = sample(samples_dir)
+    document = KIND.certificate_document(result, meta)
+    for point, (stats_, i) in enumerate([(result.iso.forward, 3), (result.iso.backward, 7)]):
+        index = i + point * result.positions.size
+        n = stats_.runs[i]
+        u_rep = stats_.std[i] / math.sqrt(n)
+        uc = math.hypot(0.3, u_rep)
+        nu = uc**4 / (u_rep**4 / (n - 1))  # Welch–Satterthwaite, the reference exact
+        k = stats.t.ppf(0.5 + math.erf(math.sqrt(2)) / 2, nu)
+        assert document.budget.expanded_arcsec[index] == pytest.approx(k * uc, rel=1e-6)
+    text = flat(document)
+    assert "follows ISO 230-2:2014" in text and "VDI/DGQ 3441" in text
+    assert "x = actual position − target" in text
+
+
+def test_no_certificate_when_a_target_was_approached_once(samples_dir):
+    rows = [["0", "1", "+", "1", ""], ["10", "1", "+", "2", ""], ["0", "2", "+", "1.2", ""]]
+    result = KIND.analyze(ReadingsSheet(KIND.columns, rows).parse(), {})
+    with pytest.raises(MetadataError, match="target\\(s\\) 10 forward were approached fewer"):
+        KIND.certificate_document(result, CertificateMetadata())
+
+
+# -- presenter and window ---------------------------------------------------------------------
+@pytest.fixture
+def presenter_and_view(qtbot):
+    view = mock.create_autospec(PositioningView, instance=True)
+    view.settings_values.return_value = {}
+    owner = QWidget()
+    presenter = PositioningPresenter(view, parent=owner)
+    yield presenter, view
+    shiboken6.delete(owner)
+
+
+def test_presenter_draws_the_declared_figures_and_exports(presenter_and_view, samples_dir,
+                                                          tmp_path):
+    presenter, view = presenter_and_view
+    rows = map_columns(read_table(samples_dir / KIND.sample_file), KIND.columns)
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    deviation, reversal, readings = view.show_figures.call_args.args
+    up = deviation.series[0]
+    np.testing.assert_allclose(up.y, presenter.result.iso.forward.mean)
+    np.testing.assert_allclose(up.band, 2 * presenter.result.iso.forward.std)
+    np.testing.assert_allclose(reversal.series[0].y, presenter.result.iso.reversal)
+    assert len(readings.series) == 10  # five runs each way
+    view.ask_compensation_path.return_value = str(tmp_path / "c.csv")
+    presenter.export_compensation_dialog()
+    assert (tmp_path / "c.csv").is_file()
+    view.show_status.assert_called_once()
+    presenter.set_settings({**presenter.settings, "compensation_format": "linuxcnc",
+                            "compensation_tables": "bidirectional"})
+    presenter.refresh()
+    view.ask_compensation_path.return_value = str(tmp_path / "c.comp")
+    presenter.export_compensation_dialog()
+    assert "export separate tables" in view.tell.call_args.args[1]
+    assert not (tmp_path / "c.comp").exists()
+
+
+def test_a_polygon_run_is_sent_to_the_positioning_workbench(qtbot, tmp_path):
+    window = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
+                        recovery=RecoveryStore(tmp_path / "recovery"))
+    window.told = []
+    window.tell = lambda title, text: window.told.append(text)
+    window.ask = lambda *a: QMessageBox.StandardButton.Discard  # closing: keep nothing
+    qtbot.addWidget(window)
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(1)  # polygon
+    polygon = window.presenter("polygon")
+    assert window.send_action.isEnabled()
+    assert window.send_to_positioning()
+    positioning = window.presenter("positioning")
+    assert window.current is positioning
+    result = positioning.result
+    assert result.bidirectional and result.positions.size == polygon.result.faces
+    np.testing.assert_allclose(result.iso.forward.mean,
+                               -polygon.result.sets[0].corrected_error_arcsec, atol=1e-4)
+    x, y = positioning.view.deviation_plot.curves[0].getData()
+    np.testing.assert_allclose(y, result.iso.forward.mean)
+    positioning.undo_stack.undo()  # the sample's readings come back
+    positioning.refresh()
+    assert positioning.result.positions.size == 13
+    window.tabs.setCurrentIndex(2)  # fringe: nothing to send
+    assert not window.send_action.isEnabled()

@@ -1,0 +1,54 @@
+"""A plot that draws any declared figure (models/plots.py): each series as a line, with
+markers where asked and its ±band shaded; the legend names every labelled series."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtWidgets import QVBoxLayout, QWidget
+
+
+class FigurePlot(QWidget):
+    """``curves`` holds the drawn series (PlotDataItems) in the figure's order, for tests
+    (``getData()``)."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.plot = pg.PlotWidget(background="w")
+        self.plot.showGrid(x=True, y=True, alpha=0.25)
+        for axis in ("left", "bottom"):
+            self.plot.getAxis(axis).enableAutoSIPrefix(False)
+        self.legend = self.plot.addLegend(offset=(-10, 10))
+        self.curves: list[pg.PlotDataItem] = []
+        self._bands: list[pg.FillBetweenItem] = []
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.plot)
+
+    def clear(self) -> None:
+        self.legend.clear()
+        for item in self.curves + self._bands:
+            self.plot.removeItem(item)
+        self.curves, self._bands = [], []
+
+    def show_figure(self, figure) -> None:
+        self.clear()
+        if figure is None:
+            return
+        self.plot.setTitle(figure.title, size="9pt")
+        self.plot.setLabel("bottom", figure.x_label)
+        self.plot.setLabel("left", figure.y_label)
+        for s in figure.series:
+            colour = pg.mkColor(*s.color)
+            if s.band is not None:
+                ok = np.isfinite(s.y) & np.isfinite(s.band)
+                upper = pg.PlotCurveItem(s.x[ok], (s.y + s.band)[ok])
+                lower = pg.PlotCurveItem(s.x[ok], (s.y - s.band)[ok])
+                fill = pg.FillBetweenItem(upper, lower, brush=pg.mkBrush(*s.color, 50))
+                self.plot.addItem(fill)
+                self._bands.append(fill)
+            symbol = {"symbol": "o", "symbolSize": 6, "symbolBrush": colour,
+                      "symbolPen": None} if s.markers else {}
+            curve = self.plot.plot(s.x, s.y, pen=pg.mkPen(colour, width=2), connect="finite",
+                                   name=s.label or None, **symbol)
+            self.curves.append(curve)

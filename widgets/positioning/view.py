@@ -1,0 +1,56 @@
+"""The positioning workbench's view: the shared readings and set-up, the mean deviation
+per direction with its ±2s bands and the envelope of A, the reversal per target, every
+run's readings, and the compensation table export. Widgets only."""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton
+
+from widgets.figure_plot import FigurePlot
+from widgets.workbench_view import WorkbenchView
+
+
+class PositioningView(WorkbenchView):
+    def __init__(self, parent=None) -> None:
+        super().__init__("Positioning (axis)", parent)
+        self.deviation_plot = FigurePlot()
+        self.reversal_plot = FigurePlot()
+        self.readings_plot = FigurePlot()
+        self.compensation_button = QPushButton("Export compensation table…")
+        self.compensation_button.setToolTip(
+            "Compensation = −mean deviation, at the targets or a uniform step, as set above: "
+            "CSV, or LinuxCNC's COMP_FILE (type 0)")
+        self.compensation_button.setEnabled(False)
+        self.add_plot_tab(self.deviation_plot, "Deviation per target")
+        self.add_plot_tab(self.reversal_plot, "Reversal per target")
+        self.add_plot_tab(self.readings_plot, "Runs")
+
+    def subscribe(self, presenter) -> None:
+        super().subscribe(presenter)
+        self.settings.layout().addRow(self.compensation_button)
+        self.compensation_button.clicked.connect(presenter.export_compensation_dialog)
+
+    def show_figures(self, deviation, reversal, readings) -> None:
+        """The declared figures (models/positioning/plots.py); ``None`` leaves a plot empty."""
+        self.deviation_plot.show_figure(deviation)
+        self.reversal_plot.show_figure(reversal)
+        self.readings_plot.show_figure(readings)
+        self.compensation_button.setEnabled(True)
+
+    def clear_result(self) -> None:
+        for plot in (self.deviation_plot, self.reversal_plot, self.readings_plot):
+            plot.clear()
+        self.compensation_button.setEnabled(False)
+
+    def ask_compensation_path(self, suggested: str, linuxcnc: bool) -> str:
+        filters = ("LinuxCNC compensation file (*.txt *.comp);;All files (*)" if linuxcnc
+                   else "CSV (*.csv);;All files (*)")
+        path, _ = QFileDialog.getSaveFileName(self, "Export compensation table", suggested,
+                                              filters)
+        return path
+
+    def tell(self, title: str, text: str) -> None:
+        QMessageBox.warning(self, title, text)
+
+    def show_status(self, text: str) -> None:
+        self.append_to_readings_caption(f" — {text}")
