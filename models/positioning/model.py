@@ -165,6 +165,32 @@ class PositioningResult:
     def minimum_runs_met(self) -> bool:
         return all(n >= MIN_RUNS for n in self.least_runs.values())
 
+    def per_target_table(self) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
+        """(header, rows) of the per-target statistics as the window lists them."""
+        sym = self.symbol.strip()
+        header = ["target (" + self.target_symbol.strip() + ")"]
+        present = self.directions_present()
+        for name, _, _ in present:
+            arrow = "↑" if name == "up" else "↓"
+            header += [f"x̄{arrow} ({sym})", f"s{arrow} ({sym})", f"n{arrow}"]
+        if self.bidirectional:
+            header += [f"B_i ({sym})", f"M_i ({sym})", f"R_i ({sym})"]
+
+        def cell(value: float, signed: bool = True) -> str:
+            return "—" if not np.isfinite(value) else (f"{value:+.3f}" if signed
+                                                       else f"{value:.3f}")
+        rows = []
+        for i, target in enumerate(self.positions):
+            row = [f"{target:g}"]
+            for _, _, stats in present:
+                row += [cell(stats.mean[i]), cell(stats.std[i], False), str(stats.runs[i])]
+            if self.bidirectional:
+                rbi = self.iso.bidirectional_repeatability
+                row += [cell(self.iso.reversal[i]), cell(self.iso.bidirectional_mean[i]),
+                        "—" if rbi is None else cell(rbi[i], False)]
+            rows.append(tuple(row))
+        return tuple(header), rows
+
     def directions_present(self) -> list[tuple[str, int, object]]:
         """("up", +1, stats) and/or ("down", −1, stats) for the directions measured."""
         out = []

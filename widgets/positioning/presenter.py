@@ -20,6 +20,7 @@ class PositioningPresenter(WorkbenchPresenter):
     def show_result(self, result: PositioningResult) -> None:
         self.view.show_figures(plots.deviation_figure(result), plots.reversal_figure(result),
                                plots.readings_figure(result))
+        self.view.show_per_target(*result.per_target_table())
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(" — fewer than 5 runs: flagged")
 

@@ -4,7 +4,16 @@ run's readings, and the compensation table export. Widgets only."""
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QFileDialog,
+    QHeaderView,
+    QMessageBox,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+)
 
 from widgets.figure_plot import FigurePlot
 from widgets.workbench_view import WorkbenchView
@@ -24,6 +33,12 @@ class PositioningView(WorkbenchView):
         self.add_plot_tab(self.deviation_plot, "Deviation per target")
         self.add_plot_tab(self.reversal_plot, "Reversal per target")
         self.add_plot_tab(self.readings_plot, "Runs")
+        self.per_target = QTableWidget()
+        self.per_target.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.per_target.verticalHeader().hide()
+        self.per_target.horizontalHeader().setSectionResizeMode(
+            QHeaderView.ResizeMode.ResizeToContents)
+        self.add_plot_tab(self.per_target, "Per target")
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
@@ -37,9 +52,21 @@ class PositioningView(WorkbenchView):
         self.readings_plot.show_figure(readings)
         self.compensation_button.setEnabled(True)
 
+    def show_per_target(self, header, rows) -> None:
+        self.per_target.clear()
+        self.per_target.setColumnCount(len(header))
+        self.per_target.setHorizontalHeaderLabels(list(header))
+        self.per_target.setRowCount(len(rows))
+        for r, row in enumerate(rows):
+            for c, text in enumerate(row):
+                item = QTableWidgetItem(text)
+                item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+                self.per_target.setItem(r, c, item)
+
     def clear_result(self) -> None:
         for plot in (self.deviation_plot, self.reversal_plot, self.readings_plot):
             plot.clear()
+        self.per_target.setRowCount(0)
         self.compensation_button.setEnabled(False)
 
     def ask_compensation_path(self, suggested: str, linuxcnc: bool) -> str:
