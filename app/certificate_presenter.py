@@ -1,5 +1,6 @@
 """Certificate control: each workbench's certificate details, the lab's defaults, the
-certificate numbers, and the export of the certificate and of the results.
+export of the certificate through the register (which allocates its number and keeps
+the record), amendments and replacements, and the export of the results.
 
 A presenter with no widgets: it asks its view (the main window, through the calls
 of :class:`CertificateView`) for the details, for a file name, and to tell the user
@@ -9,26 +10,39 @@ in the settings store. Tested with a mock view, no window.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from collections.abc import Callable, MutableMapping
+from dataclasses import dataclass
 from typing import Any, Protocol
 
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 
-__all__ = ["CertificatePresenter", "CertificateView"]
+__all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
-SEQUENCE_KEY = "certificate/next_sequence"
+REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folder
+
+
+@dataclass(frozen=True)
+class PendingRevision:
+    """The next certificate of ``workbench`` amends (or replaces) ``number``."""
+
+    workbench: str
+    number: str
+    replacement: bool = False
 
 
 class CertificateView(Protocol):
     """What the certificate presenter asks of the window."""
 
-    def edit_certificate_details(self, meta: CertificateMetadata, sequence: int,
-                                 problems: dict[str, str], raw: dict
-                                 ) -> tuple[CertificateMetadata | None, bool]:
-        """The details entered (None if cancelled), and whether the sequence was used."""
+    def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
+                                 raw: dict) -> CertificateMetadata | None:
+        """The details entered (None if cancelled)."""
+
+    def ask_change_note(self, revision: PendingRevision) -> str:
+        """What changed and why (empty: cancel the amendment's export)."""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str: ...
 
@@ -58,6 +72,7 @@ class CertificatePresenter:
         self._mark_modified = mark_modified
         self.problems: dict[str, str] = {}  # stored details that no longer read
         self.raw: dict = {}
+        self.pending: PendingRevision | None = None
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self) -> dict:
@@ -92,38 +107,97 @@ class CertificatePresenter:
             self._mark_modified()  # the details are saved with the project
 
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
-        sequence = int(self.store.value(SEQUENCE_KEY, 1) or 1)
-        entered, used = self.view.edit_certificate_details(meta, sequence, self.problems, self.raw)
-        if entered is not None and used:
-            self.store.setValue(SEQUENCE_KEY, sequence + 1)
-        return entered
+        return self.view.edit_certificate_details(meta, self.problems, self.raw)
+
+    # -- the register ----------------------------------------------------------------
+    def register_url(self) -> str:
+        from models.register.location import register_url
+
+        return register_url(str(self.store.value(REGISTER_KEY, "") or ""))
+
+    def set_register_url(self, url: str) -> None:
+        self.store.setValue(REGISTER_KEY, url.strip())
+
+    def open_register(self):
+        """The register (RegisterError when it cannot be opened)."""
+        from models.register.store import Register
+
+        return Register(self.register_url())
+
+    def start_revision(self, revision: PendingRevision) -> None:
+        """The next certificate of that workbench amends or replaces ``revision.number``."""
+        self.pending = revision
 
     # -- exports ------------------------------------------------------------------
-    def export_certificate(self, kind, result, settings: dict, source_name: str) -> bool:
+    def export_certificate(self, kind, result, settings: dict, source_name: str,
+                           rows: list[list[str]] | None = None) -> bool:
+        """Ask for the details and a file; a complete certificate is issued through the
+        register (number allocated there, record kept), a draft is written and nothing
+        recorded."""
+        from app.certificate_issue import draft_reasons
+
         entered = self.edit_details(self.details(kind.key))
         if entered is None:
             return False
-        self.store_details(kind.key, entered)
-        suggested = (entered.certificate_number or f"{kind.key}-certificate").replace("/", "-")
-        path = self.view.choose_save_path("Export certificate", f"{suggested}.pdf", "PDF (*.pdf)")
+        self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
+        draft = draft_reasons(entered)
+        revision = self.pending if self.pending and self.pending.workbench == kind.key else None
+        note = ""
+        if revision is not None and not draft:
+            note = self.view.ask_change_note(revision).strip()
+            if not note:
+                return False
+        suggested = (entered.certificate_number or
+                     (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
+        path = self.view.choose_save_path("Export certificate", f"{suggested.replace('/', '-')}"
+                                          ".pdf", "PDF (*.pdf)")
         if not path:
             return False
         if not path.lower().endswith(".pdf"):
             path += ".pdf"
-        from app.writers.certificate_pdf import write_certificate_pdf  # fpdf2 on first export
-
         self.view.wait_cursor(True)
         try:
-            document = kind.certificate_document(result, entered, source_name, settings)
-            write_certificate_pdf(path, document)
+            if draft:
+                from app.writers.certificate_pdf import write_certificate_pdf
+
+                write_certificate_pdf(path, kind.certificate_document(result, entered, source_name,
+                                                                      settings))
+                self.view.show_status(f"Draft written to {path} — DRAFT: {', '.join(draft)} "
+                                      "missing; nothing was recorded in the register", 10000)
+                return True
+            return self._issue(kind, result, entered, settings, rows or [], source_name, path,
+                               revision, note)
         except (OSError, ValueError) as exc:
             self.view.tell("Cannot export", f"{path}: {exc}. Nothing else was changed.")
             return False
         finally:
             self.view.wait_cursor(False)
-        draft = (" — DRAFT: " + ", ".join(entered.missing_fields()) + " missing"
-                 if document.is_draft else "")
-        self.view.show_status(f"Certificate written to {path}{draft}", 10000)
+
+    def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
+               note) -> bool:
+        from app.certificate_issue import IssuedNotWritten, issue_certificate
+        from models.register.store import RegisterError
+
+        try:
+            with self.open_register() as register:
+                record = issue_certificate(
+                    register, kind, result, entered, settings, rows, source_name, path,
+                    supersedes=revision.number if revision else "", change_note=note,
+                    replacement=bool(revision and revision.replacement))
+        except RegisterError as exc:
+            self.view.tell("Not issued", f"{exc}. No certificate was written or recorded.")
+            return False
+        except IssuedNotWritten as exc:  # committed: the record and its PDF are in the register
+            self.view.tell("Issued, but the file was not written",
+                           f"Certificate {exc.record.number} is issued and recorded in the "
+                           f"register, but {exc}: save its PDF from File › Certificate "
+                           "register.")
+            return False
+        if revision is not None:
+            self.pending = None
+        what = f" ({record.revision} of {record.supersedes})" if record.supersedes else ""
+        self.view.show_status(f"Certificate {record.number}{what} issued: written to {path} and "
+                              "recorded in the register", 10000)
         return True
 
     def export_results(self, kind, result, settings: dict, source_name: str) -> bool:

@@ -180,7 +180,7 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(f"{what[0].upper() + what[1:]} written to {args.table}")
     if args.certificate or args.results:
-        return _export(args, kind, result, settings)
+        return _export(args, kind, result, settings, rows)
     return 0
 
 
@@ -203,8 +203,34 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         raise MetadataError(f"{path}: {exc}") from None
 
 
-def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any]) -> int:
+def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
+    """Issue through the register (the number allocated there unless the details give one);
+    None after saying why it was refused."""
+    from app.certificate_issue import IssuedNotWritten, issue_certificate
+    from models.register.location import register_url
+    from models.register.store import Register, RegisterError
+
+    try:
+        with Register(register_url()) as register:
+            record = issue_certificate(register, kind, result, metadata,
+                                       kind.settings_with_defaults(settings), rows,
+                                       Path(args.file).name, args.certificate)
+    except RegisterError as exc:
+        _say(f"anglebench analyze: {exc}; no certificate was written")
+        return None
+    except IssuedNotWritten as exc:
+        _say(f"anglebench analyze: certificate {exc.record.number} is issued and recorded, but "
+             f"{exc}: save it with 'anglebench register show {exc.record.number} --pdf OUT.pdf'")
+        return None
+    _say(f"Certificate {record.number} issued: written to {args.certificate} and recorded in "
+         f"the register (sha256 {record.pdf_sha256[:16]}…)")
+    return record
+
+
+def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
+            rows: list[list[str]]) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
+    from app.certificate_issue import draft_reasons
     from app.writers.certificate_pdf import write_certificate_pdf
 
     try:
@@ -218,11 +244,15 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any]) ->
         _say(f"anglebench analyze: {exc}")
         return EXIT_BAD_INPUT
     try:
-        if args.certificate:
+        if args.certificate and not draft_reasons(metadata):
+            record = _issue(args, kind, result, metadata, settings, rows)
+            if record is None:
+                return EXIT_BAD_INPUT
+        elif args.certificate:
             write_certificate_pdf(args.certificate, document)
-            draft = " (DRAFT: " + ", ".join(metadata.missing_fields()) + " missing)" \
-                if document.is_draft else ""
-            _say(f"Certificate written to {args.certificate}{draft}")
+            _say(f"Certificate written to {args.certificate} (DRAFT: "
+                 + ", ".join(metadata.missing_fields()) + " missing; nothing was recorded in "
+                 "the register)")
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document)

@@ -5,6 +5,7 @@
     anglebench --screenshot DIR     write DIR/<workbench>.png for every workbench, then exit
     anglebench analyze KIND FILE …  analyse a CSV without a window (see app.cli)
     anglebench validate [--pdf OUT] run the method validation cases (see app.validation_report)
+    anglebench register list|show|verify|export …  the certificate register (app.register_cli)
 """
 
 from __future__ import annotations
@@ -20,6 +21,10 @@ def main(argv: list[str] | None = None) -> int:
         from app.cli import run_analyze  # no Qt import on this path
 
         return run_analyze(argv[1:])
+    if argv and argv[0] == "register":
+        from app.register_cli import run_register  # no Qt import on this path
+
+        return run_register(argv[1:])
     if argv and argv[0] == "validate":
         from app.validation_report import run_validate  # no Qt import on this path
 

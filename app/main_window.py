@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QFileDialog,
+    QInputDialog,
     QMainWindow,
     QMessageBox,
     QTabWidget,
@@ -347,17 +348,24 @@ class MainWindow(QMainWindow):
     def edit_certificate_metadata(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.certificates.edit_details(meta)
 
-    def edit_certificate_details(self, meta: CertificateMetadata, sequence: int,
-                                 problems: dict[str, str], raw: dict
-                                 ) -> tuple[CertificateMetadata | None, bool]:
+    def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
+                                 raw: dict) -> CertificateMetadata | None:
         """The certificate dialog (the presenter's view call)."""
-        dialog = CertificateDialog(meta, sequence, self)
+        dialog = CertificateDialog(meta, self)
         dialog.lab_defaults_saved.connect(self.save_lab_defaults)
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
-            return None, False
-        return dialog.metadata(), dialog.sequence_used
+            return None
+        return dialog.metadata()
+
+    def ask_change_note(self, revision) -> str:
+        what = "replaces" if revision.replacement else "amends"
+        text, ok = QInputDialog.getMultiLineText(
+            self, "What changed",
+            f"This certificate {what} {revision.number}. What changed, and why? (printed on "
+            "the certificate; ISO/IEC 17025 7.8.8)")
+        return text if ok else ""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
         path, _ = QFileDialog.getSaveFileName(self, title, str(Path(self._last_dir()) / suggested),
@@ -387,7 +395,8 @@ class MainWindow(QMainWindow):
     def export_certificate(self) -> bool:
         result = self._current_result()
         return result is not None and self.certificates.export_certificate(
-            self.current.kind, result, self.current.settings, self._source_name())
+            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.state().rows)
 
     def export_results(self) -> bool:
         result = self._current_result()

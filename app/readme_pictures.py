@@ -66,6 +66,8 @@ def main() -> None:
         if path.name == "certificate_dialog.png":
             path.unlink()  # shown by the tests, not in the README
     with tempfile.TemporaryDirectory() as scratch:
+        # the example certificates are issued into a scratch register, not the user's
+        os.environ["ANGLEBENCH_REGISTER"] = str(Path(scratch) / "register.sqlite")
         for kind in ("theodolite", "polygon", "fringe", "positioning"):
             certificate_picture(kind, Path(scratch))
         validation_picture(Path(scratch))

@@ -41,7 +41,7 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900)) -
             path = out_dir / f"{presenter.kind.key}.png"
             window.grab().save(str(path))
             paths.append(path)
-        dialog = CertificateDialog(_example_metadata(), 1, window)
+        dialog = CertificateDialog(_example_metadata(), window)
         dialog.resize(1100, 760)
         dialog.show()
         app.processEvents()

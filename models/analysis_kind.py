@@ -47,6 +47,9 @@ class AnalysisKind:
     # result -> readings rows (target, run, direction, deviation in arcsec) that the
     # positioning workbench takes: a run sent there to be judged to ISO 230-2 / VDI 3441
     positioning_rows: Callable[[Any], list[list[str]]] | None = None
+    # result -> the figures the register keeps to show an instrument's drift over its
+    # calibrations ({"name (unit)": value})
+    headline: Callable[[Any], dict[str, float]] | None = None
 
     @property
     def default_settings(self) -> dict[str, Any]:

@@ -14,3 +14,34 @@ SAMPLES = Path(__file__).resolve().parent.parent / "resources" / "samples"
 @pytest.fixture
 def samples_dir() -> Path:
     return SAMPLES
+
+
+@pytest.fixture(autouse=True)
+def _register_in_tmp(tmp_path, monkeypatch):
+    """Every test issues into a register of its own (never the user's)."""
+    monkeypatch.setenv("ANGLEBENCH_REGISTER", str(tmp_path / "register.sqlite"))
+
+
+@pytest.fixture(scope="session")
+def postgres_server():
+    """A throw-away PostgreSQL cluster on a Unix socket for the session (see
+    tests/postgres_cluster.py); skipped with the reason when none can be started, and a
+    failure instead where ANGLEBENCH_REQUIRE_POSTGRES=1 (CI)."""
+    from postgres_cluster import PostgresUnavailable, start_cluster
+
+    try:
+        server = start_cluster()
+    except PostgresUnavailable as exc:
+        if os.environ.get("ANGLEBENCH_REQUIRE_POSTGRES") == "1":
+            pytest.fail(f"PostgreSQL is required here and could not be started: {exc}")
+        pytest.skip(f"no PostgreSQL server could be started: {exc}")
+    yield server
+    server.stop()
+
+
+@pytest.fixture(params=["sqlite", "postgresql"])
+def register_url(request, tmp_path):
+    """A fresh, empty register on each back end."""
+    if request.param == "sqlite":
+        return f"sqlite:///{tmp_path / 'register.sqlite'}"
+    return request.getfixturevalue("postgres_server").new_database()

@@ -39,7 +39,7 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
     qtbot.keyClicks(fields["issue_date"], "2026-11-24")
     qtbot.keyClicks(fields["operator"], "Wang")
     qtbot.keyClicks(fields["tolerance_arcsec"], "5")
-    qtbot.mouseClick(dialog.next_number_button, Qt.MouseButton.LeftButton)
+    assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
     dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
                          "uncertainty_arcsec": 0.5})
 
@@ -69,11 +69,14 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
     text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
     assert "角度实验室" in text and "=Customer & Co" in text and "NIM-7" in text
     assert "DRAFT" not in text
-    number = window.certificate_metadata().certificate_number
-    assert number and number in text
-    # the details are kept with the project and the sequence moved on
-    assert window.project().metadata["certificates"]["theodolite"]["operator"] == "Wang"
-    assert int(window.qsettings.value("certificate/next_sequence")) == 2
+    with window.certificates.open_register() as register:  # the number came from the register
+        (record,) = register.list()
+    assert record.number == "AB-2026-0001" and record.number in text
+    assert register.verify(out.read_bytes()).number == record.number
+    assert record.workbench == "theodolite" and record.item_serial == "RT-9"
+    # the details are kept with the project, without the number (the next one is new)
+    stored = window.project().metadata["certificates"]["theodolite"]
+    assert stored["operator"] == "Wang" and stored["certificate_number"] == ""
     assert window.is_modified
 
 

@@ -3,12 +3,15 @@ are the model)."""
 
 from __future__ import annotations
 
+import re
 from unittest import mock
 
 import pytest
+from pypdf import PdfReader
 
-from app.certificate_presenter import CertificatePresenter, CertificateView
+from app.certificate_presenter import CertificatePresenter, CertificateView, PendingRevision
 from models.certificate.metadata import CertificateMetadata
+from models.project.file import project_from_json
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
@@ -37,27 +40,77 @@ def _theodolite(samples_dir):
     return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
 
 
-def test_export_asks_the_view_and_keeps_the_details(parts, samples_dir, tmp_path):
+def test_a_draft_is_written_and_nothing_recorded(parts, samples_dir, tmp_path):
     presenter, view, metadata, modified = parts
     entered = CertificateMetadata(certificate_number="AB/7", lab_name="Lab")
-    view.edit_certificate_details.return_value = (entered, True)
+    view.edit_certificate_details.return_value = entered
     view.choose_save_path.return_value = str(tmp_path / "out")
     kind, result = _theodolite(samples_dir)
     assert presenter.export_certificate(kind, result, {}, "run.csv")
-    args = view.edit_certificate_details.call_args.args
-    assert args[1] == 1  # the first number of the lab's sequence …
-    assert presenter.store.value("certificate/next_sequence") == 2  # … counted on
     assert view.choose_save_path.call_args.args[1] == "AB-7.pdf"
     assert (tmp_path / "out.pdf").read_bytes().startswith(b"%PDF")
-    assert metadata["certificates"]["theodolite"]["certificate_number"] == "AB/7"
+    assert metadata["certificates"]["theodolite"]["lab_name"] == "Lab"
     modified.assert_called_once()
-    assert "DRAFT" in view.show_status.call_args.args[0]
+    assert "nothing was recorded in the register" in view.show_status.call_args.args[0]
     view.wait_cursor.assert_has_calls([mock.call(True), mock.call(False)])
+    with presenter.open_register() as register:
+        assert register.list() == []  # a draft allocates nothing
+
+
+COMPLETE = CertificateMetadata.from_dict({
+    "lab_name": "Lab", "customer_name": "Customer", "item_description": "Turntable",
+    "item_serial": "T-1", "calibration_date": "2026-11-20", "issue_date": "2026-11-24",
+    "operator": "Wang", "standards": [{"description": "Theodolite", "certificate_no": "N-1",
+                                       "uncertainty_arcsec": 0.5}]})
+
+
+def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts, samples_dir,
+                                                                         tmp_path):
+    presenter, view, metadata, _ = parts
+    kind, result = _theodolite(samples_dir)
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "first.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", rows)
+    assert "Certificate AB-2026-0001 issued" in view.show_status.call_args.args[0]
+    with presenter.open_register() as register:
+        record = register.get("AB-2026-0001")
+        stored = project_from_json(record.project_json).workbenches["theodolite"]
+        assert stored.rows[3][:3] == rows[3][:3]  # the readings as typed
+    # an amendment: the next export of this workbench asks what changed
+    presenter.start_revision(PendingRevision("theodolite", "AB-2026-0001"))
+    view.ask_change_note.return_value = "customer address corrected"
+    view.choose_save_path.return_value = str(tmp_path / "second.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", rows)
+    assert "AB-2026-0001-A1 (amendment 1 of AB-2026-0001) issued" in \
+        view.show_status.call_args.args[0]
+    text = re.sub(r"\s+", " ", "".join(p.extract_text()
+                                        for p in PdfReader(tmp_path / "second.pdf").pages))
+    assert "Amendment 1 to certificate AB-2026-0001" in text
+    assert "customer address corrected" in text
+    assert presenter.pending is None
+    with presenter.open_register() as register:
+        assert register.get("AB-2026-0001").status == "superseded"
+
+
+def test_a_refusal_of_the_register_writes_nothing(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "a.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    typed = CertificateMetadata.from_dict({**COMPLETE.to_dict(),
+                                           "certificate_number": "AB-2026-0001"})
+    view.edit_certificate_details.return_value = typed
+    view.choose_save_path.return_value = str(tmp_path / "b.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert "AB-2026-0001 was issued on" in view.tell.call_args.args[1]
+    assert not (tmp_path / "b.pdf").exists()
 
 
 def test_cancelled_details_write_nothing(parts, samples_dir):
     presenter, view, metadata, modified = parts
-    view.edit_certificate_details.return_value = (None, False)
+    view.edit_certificate_details.return_value = None
     kind, result = _theodolite(samples_dir)
     assert not presenter.export_certificate(kind, result, {}, "run.csv")
     view.choose_save_path.assert_not_called()
@@ -70,9 +123,9 @@ def test_a_stored_detail_gone_bad_reaches_the_view_marked(parts):
     presenter.save_lab_defaults({"operator": "Wang"})
     meta = presenter.details("polygon")
     assert meta.lab_name == "Lab" and meta.operator == "Wang"
-    view.edit_certificate_details.return_value = (None, False)
+    view.edit_certificate_details.return_value = None
     presenter.edit_details(meta)
-    _, _, problems, raw = view.edit_certificate_details.call_args.args
+    _, problems, raw = view.edit_certificate_details.call_args.args
     assert "humidity_pct" in problems and raw["humidity_pct"] == "45 %"
 
 

@@ -36,7 +36,6 @@ from models.certificate.metadata import (
     DECISION_RULES,
     CertificateMetadata,
     MetadataError,
-    format_certificate_number,
 )
 
 __all__ = ["CertificateDialog"]
@@ -76,12 +75,9 @@ class CertificateDialog(QDialog):
 
     lab_defaults_saved = Signal(dict)
 
-    def __init__(self, metadata: CertificateMetadata, next_sequence: int = 1,
-                 parent: QWidget | None = None) -> None:
+    def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setWindowTitle("Certificate details")
-        self.next_sequence = next_sequence
-        self.sequence_used = False
         self.fields: dict[str, QLineEdit] = {}
         self._setup_ui()
         self.set_metadata(metadata)
@@ -99,13 +95,12 @@ class CertificateDialog(QDialog):
         form = QFormLayout(box)
         for key in keys:
             if key == "certificate_number":
-                row = QHBoxLayout()
-                row.addWidget(self._line(key))
-                self.next_number_button = QPushButton("Next number")
-                self.next_number_button.setToolTip("Number from the lab's scheme and sequence")
-                self.next_number_button.clicked.connect(self._fill_next_number)
-                row.addWidget(self.next_number_button)
-                form.addRow(_TEXT_FIELDS[key], row)
+                edit = self._line(key)
+                edit.setPlaceholderText("allocated by the register on export")
+                edit.setToolTip("Leave empty: the register allocates the next number of the "
+                                "scheme, unique across every workstation sharing it. A number "
+                                "typed here is refused if it was issued before.")
+                form.addRow(_TEXT_FIELDS[key], edit)
             else:
                 form.addRow(_TEXT_FIELDS[key], self._line(key))
         return box
@@ -274,12 +269,6 @@ class CertificateDialog(QDialog):
         except MetadataError:
             return
         super().accept()
-
-    def _fill_next_number(self) -> None:
-        scheme = self.fields["number_scheme"].text() or "{year}-{seq:04d}"
-        self.fields["certificate_number"].setText(
-            format_certificate_number(scheme, self.next_sequence, dt.date.today()))
-        self.sequence_used = True
 
     def _save_lab_defaults(self) -> None:
         try:

@@ -72,6 +72,16 @@ def _needs_fallback(document: CertificateDocument) -> bool:
     return any(ord(ch) not in covered for text in texts for ch in text if ord(ch) > 0x7F)
 
 
+def revision_statement(meta) -> str:
+    """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
+    replacement identifies the one it replaces."""
+    what = (f"{meta.revision.capitalize()} to certificate {meta.supersedes}"
+            if meta.revision.startswith("amendment")
+            else f"This certificate replaces certificate {meta.supersedes}")
+    change = f" Changed: {meta.change_note}" if meta.change_note else ""
+    return (f"{what}, which it supersedes; the original stays on record unchanged.{change}")
+
+
 def _created(document: CertificateDocument) -> dt.datetime:
     meta = document.metadata
     if meta.created:
@@ -361,6 +371,8 @@ def _render(document: CertificateDocument) -> FPDF:
     if document.is_draft:
         pdf.paragraph("DRAFT — not valid as a certificate. Missing: "
                       + ", ".join(meta.missing_fields()) + ".", 9, (170, 30, 30))
+    if meta.supersedes:
+        pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
     pdf.key_values([
         ("Certificate number", meta.certificate_number),

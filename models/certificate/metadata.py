@@ -168,6 +168,10 @@ class CertificateMetadata:
     # fringe: the checksum of the correction table the lab states it loaded into the encoder
     as_left_table_sha256: str = ""
     notes: str = ""
+    # set by the register on an amendment or a replacement (ISO/IEC 17025 7.8.8)
+    supersedes: str = ""  # the number of the certificate this one amends or replaces
+    revision: str = ""  # "amendment N" or "replacement"; empty for an original
+    change_note: str = ""  # what changed, and why
 
     _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
                 "coverage_probability_pct")
@@ -194,7 +198,7 @@ class CertificateMetadata:
             elif f.name in cls._DATES:
                 values[f.name] = _date(raw, f.name)
             else:
-                values[f.name] = clean_text(raw, f.name, multiline=f.name == "notes")
+                values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note"))
         meta = cls(**values)
         if meta.decision_rule not in DECISION_RULES:
             raise MetadataError(f"certificate field 'decision_rule' must be one of "

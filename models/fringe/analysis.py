@@ -405,4 +405,7 @@ FRINGE = AnalysisKind(
     certificate=fringe_certificate,
     presenter="widgets.fringe.presenter:FringePresenter",
     correction_table=_correction_table,
+    headline=lambda r: {f"as-found peak-to-peak ({r.unit})": float(np.ptp(r.raw_error)),
+                        f"compensated peak-to-peak ({r.unit})":
+                            float(np.ptp(r.compensated_error))},
 )

@@ -425,4 +425,7 @@ POLYGON = AnalysisKind(
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
     positioning_rows=positioning_rows,
+    headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
+                        "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
+                        if r.sets[0].tilt else float("nan")},
 )

@@ -306,4 +306,7 @@ POSITIONING = AnalysisKind(
     check_settings=_check_units,
     presenter="widgets.positioning.presenter:PositioningPresenter",
     correction_table=_correction_table,
+    headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
+                        for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
+                        if k in r.iso.figures},
 )

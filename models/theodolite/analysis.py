@@ -172,4 +172,6 @@ THEODOLITE = AnalysisKind(
     certificate=theodolite_certificate,
     presenter="widgets.theodolite.presenter:TheodolitePresenter",
     positioning_rows=positioning_rows,
+    headline=lambda r: {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
+                        "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
 )

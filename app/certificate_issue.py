@@ -1,0 +1,66 @@
+"""Issuing a certificate through the register: the number allocated, the PDF rendered with
+it and recorded with the project state behind it, in one transaction; the file written
+after the commit (a failed write leaves the record, and its PDF, in the register).
+
+Shared by the window's certificate presenter and ``anglebench analyze --certificate``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.certificate.metadata import CertificateMetadata
+from models.project.atomic_write import write_bytes_atomic
+from models.project.file import Project, WorkbenchState, project_to_json
+from models.register.store import CertificateRecord, IssueRequest, Register
+
+__all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate"]
+
+
+class IssuedNotWritten(OSError):
+    """The certificate was issued and recorded, but its file could not be written."""
+
+    def __init__(self, record: CertificateRecord, path: str, cause: OSError) -> None:
+        super().__init__(f"{path}: {cause.strerror or cause}")
+        self.record = record
+
+
+def draft_reasons(metadata: CertificateMetadata) -> list[str]:
+    """What keeps the certificate a draft; the number is not among them (the register
+    allocates it)."""
+    return [m for m in metadata.missing_fields() if m != "certificate number"]
+
+
+def _headline(kind, result: Any) -> dict[str, float]:
+    if kind.headline is None:
+        return {}
+    return {k: float(v) for k, v in kind.headline(result).items()
+            if isinstance(v, int | float) and math.isfinite(v)}
+
+
+def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
+                      settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
+                      path: str, *, supersedes: str = "", change_note: str = "",
+                      replacement: bool = False) -> CertificateRecord:
+    """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
+    ValueError (the content, e.g. details that contradict the settings), OSError before
+    the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
+    PDF can be saved from the register)."""
+    project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
+                      {"certificates": {kind.key: metadata.to_dict()}})
+    request = IssueRequest(kind.key, metadata, project_to_json(project), _headline(kind, result))
+
+    def render(final: CertificateMetadata) -> bytes:
+        return certificate_pdf_bytes(
+            kind.certificate_document(result, final, source_name, settings))
+
+    record, pdf = register.issue(request, render, supersedes=supersedes,
+                                 change_note=change_note, replacement=replacement)
+    try:
+        write_bytes_atomic(path, pdf)
+    except OSError as exc:
+        raise IssuedNotWritten(record, path, exc) from exc
+    return record

@@ -1,0 +1,75 @@
+"""The register's tables and their numbered migrations.
+
+``schema_version`` holds the version a register is at; opening it applies every later
+migration in one transaction, so an old register opens in a newer AngleBench. A register
+made by a newer AngleBench than this one is refused, not guessed at.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import sqlalchemy as sa
+
+__all__ = ["CERTIFICATES", "COUNTERS", "INSTRUMENTS", "LATEST", "METADATA", "MIGRATIONS",
+           "SCHEMA_VERSION"]
+
+METADATA = sa.MetaData()
+
+SCHEMA_VERSION = sa.Table("schema_version", METADATA, sa.Column("version", sa.Integer,
+                                                                nullable=False))
+
+#: the last number allocated per scheme (the scheme with its date fields filled in)
+COUNTERS = sa.Table(
+    "counters", METADATA,
+    sa.Column("name", sa.String(200), primary_key=True),
+    sa.Column("last_value", sa.Integer, nullable=False),
+)
+
+CERTIFICATES = sa.Table(
+    "certificates", METADATA,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("number", sa.String(200), nullable=False, unique=True),
+    sa.Column("issued_at", sa.String(40), nullable=False),  # UTC, ISO 8601
+    sa.Column("issue_date", sa.String(10), nullable=False),
+    sa.Column("calibration_date", sa.String(10), nullable=False),
+    sa.Column("workbench", sa.String(40), nullable=False),
+    sa.Column("item_description", sa.Text, nullable=False),
+    sa.Column("item_manufacturer", sa.Text, nullable=False),
+    sa.Column("item_serial", sa.String(200), nullable=False),
+    sa.Column("customer", sa.Text, nullable=False),
+    sa.Column("operator", sa.Text, nullable=False),
+    sa.Column("workstation", sa.Text, nullable=False),
+    sa.Column("status", sa.String(20), nullable=False),  # issued | superseded
+    sa.Column("supersedes", sa.String(200), nullable=True),  # the original's number
+    sa.Column("superseded_by", sa.String(200), nullable=True),
+    sa.Column("revision", sa.String(20), nullable=False),  # original | amendment N | replacement
+    sa.Column("change_note", sa.Text, nullable=False),
+    sa.Column("project_json", sa.Text, nullable=False),  # readings as typed, settings, metadata
+    sa.Column("software_json", sa.Text, nullable=False),  # software and library versions
+    sa.Column("headline_json", sa.Text, nullable=False),  # figures for the trend
+    sa.Column("pdf_sha256", sa.String(64), nullable=False),
+    sa.Column("pdf", sa.LargeBinary, nullable=False),
+)
+
+#: per instrument serial: the calibration interval (migration 2)
+INSTRUMENTS = sa.Table(
+    "instruments", METADATA,
+    sa.Column("serial", sa.String(200), primary_key=True),
+    sa.Column("interval_days", sa.Integer, nullable=False),
+)
+
+
+def _v1(conn: sa.Connection) -> None:
+    for table in (COUNTERS, CERTIFICATES):
+        table.create(conn)
+
+
+def _v2(conn: sa.Connection) -> None:
+    INSTRUMENTS.create(conn)
+    conn.execute(sa.text("CREATE INDEX certificates_item_serial ON certificates (item_serial)"))
+
+
+#: version → the migration that brings a register to it from the version before
+MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2}
+LATEST = max(MIGRATIONS)

@@ -1,0 +1,411 @@
+"""The certificate register behind one small interface, on SQLite or PostgreSQL.
+
+Why SQLAlchemy Core (with psycopg 3 for PostgreSQL): one set of tables and queries for
+both back ends, transactions and parameter styles handled the same way, and the
+dialect's own DDL for the few types that differ (BLOB / BYTEA, autoincrement); the
+ORM is not used. It is imported only when a register is opened.
+
+Issuing is one transaction: the number is allocated (``INSERT … ON CONFLICT DO UPDATE …
+RETURNING`` on a counter row, which both databases run atomically and serialise across
+processes), the PDF is rendered with that number, and the record — number, dates, item,
+customer, the full project state, software versions, headline figures, the PDF and its
+SHA-256 — is inserted. Anything that fails before the commit (the PDF, the disk, the
+process killed) leaves no record and no number used. SQLite transactions begin
+IMMEDIATE (the write lock at once, so two writers queue instead of failing); on
+PostgreSQL the counter row's lock does the same.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import datetime as dt
+import hashlib
+import importlib.metadata
+import json
+import platform
+import re
+import socket
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from models import __version__
+from models.certificate.metadata import CertificateMetadata, format_certificate_number
+
+__all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "software_versions"]
+
+LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
+             "psycopg")
+_SEQ = re.compile(r"\{seq(?::0?\d+d)?\}")
+_ADVISORY_LOCK = 0x414E4742  # "ANGB": serialises migrations on PostgreSQL
+
+
+class RegisterError(ValueError):
+    """The register refused (a number issued before, an unknown certificate, a register of a
+    newer version) or cannot be reached; the message says which."""
+
+
+def software_versions() -> dict[str, str]:
+    out = {"anglebench": __version__, "python": platform.python_version()}
+    for name in LIBRARIES:
+        try:
+            out[name] = importlib.metadata.version(name)
+        except importlib.metadata.PackageNotFoundError:
+            continue
+    return out
+
+
+@dataclass(frozen=True)
+class IssueRequest:
+    """What an export hands the register: the details (number empty: allocate one), the
+    project state behind the certificate as project-file JSON, and headline figures."""
+
+    workbench: str
+    metadata: CertificateMetadata
+    project_json: str
+    headline: dict[str, float] = dataclasses.field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class CertificateRecord:
+    number: str
+    issued_at: str
+    issue_date: str
+    calibration_date: str
+    workbench: str
+    item_description: str
+    item_manufacturer: str
+    item_serial: str
+    customer: str
+    operator: str
+    workstation: str
+    status: str
+    supersedes: str | None
+    superseded_by: str | None
+    revision: str
+    change_note: str
+    project_json: str
+    software_json: str
+    headline_json: str
+    pdf_sha256: str
+
+    @property
+    def headline(self) -> dict[str, float]:
+        return json.loads(self.headline_json)
+
+    @property
+    def software(self) -> dict[str, str]:
+        return json.loads(self.software_json)
+
+
+_RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
+
+
+def _normalise_url(url: str) -> str:
+    if url.startswith(("postgresql://", "postgres://")):
+        return "postgresql+psycopg://" + url.split("://", 1)[1]
+    return url
+
+
+def _counter_name(scheme: str, date: dt.date) -> str:
+    """The scheme with its date fields filled and the sequence left as '#': numbers of one
+    year (or month, day) share a counter."""
+    if not _SEQ.search(scheme):
+        raise RegisterError(f"the number scheme '{scheme}' has no {{seq}}: the register cannot "
+                            "number certificates with it")
+    return format_certificate_number(_SEQ.sub("#", scheme), 0, date)
+
+
+class Register:
+    """Open (creating or migrating) the register at ``url``: ``sqlite:///path`` or
+    ``postgresql://user@host/db``."""
+
+    def __init__(self, url: str) -> None:
+        import sqlalchemy as sa
+
+        from models.register import schema
+
+        self._sa, self._schema = sa, schema
+        self.url = _normalise_url(url)
+        self.is_sqlite = self.url.startswith("sqlite")
+        try:
+            if self.is_sqlite:
+                path = self.url.split("///", 1)[1] if "///" in self.url else ""
+                if path and path != ":memory:":
+                    Path(path).parent.mkdir(parents=True, exist_ok=True)
+                self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
+                sa.event.listen(self.engine, "connect", _sqlite_connect)
+                sa.event.listen(self.engine, "begin", _sqlite_begin)
+            else:
+                self.engine = sa.create_engine(self.url, pool_pre_ping=True)
+            try:
+                self._migrate()
+            except BaseException:
+                self.engine.dispose()
+                raise
+        except sa.exc.SQLAlchemyError as exc:
+            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+        except OSError as exc:
+            raise RegisterError(f"register {self.display_url}: {exc}") from None
+
+    @property
+    def display_url(self) -> str:
+        """The URL without a password."""
+        return re.sub(r"://([^:/@]+):[^@]*@", r"://\1:***@", self.url)
+
+    def close(self) -> None:
+        self.engine.dispose()
+
+    def __enter__(self) -> Register:
+        return self
+
+    def __exit__(self, *_exc) -> None:
+        self.close()
+
+    # -- schema ---------------------------------------------------------------------------
+    def _migrate(self) -> None:
+        sa, schema = self._sa, self._schema
+        with self.engine.begin() as conn:
+            if not self.is_sqlite:
+                conn.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": _ADVISORY_LOCK})
+            if not sa.inspect(conn).has_table("schema_version"):
+                schema.SCHEMA_VERSION.create(conn)
+                conn.execute(schema.SCHEMA_VERSION.insert().values(version=0))
+            version = conn.execute(sa.select(schema.SCHEMA_VERSION.c.version)).scalar_one()
+            if version > schema.LATEST:
+                raise RegisterError(f"register {self.display_url} is at schema version {version}, "
+                                    f"made by a newer AngleBench than {__version__} (knows "
+                                    f"{schema.LATEST}): open it with that version")
+            for step in range(version + 1, schema.LATEST + 1):
+                schema.MIGRATIONS[step](conn)
+            if version < schema.LATEST:
+                conn.execute(schema.SCHEMA_VERSION.update().values(version=schema.LATEST))
+
+    @property
+    def version(self) -> int:
+        with self._read() as conn:
+            return conn.execute(self._sa.select(self._schema.SCHEMA_VERSION.c.version)).scalar_one()
+
+    @contextmanager
+    def _read(self) -> Iterator[Any]:
+        try:
+            with self.engine.connect() as conn:
+                yield conn
+        except self._sa.exc.SQLAlchemyError as exc:
+            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+
+    @contextmanager
+    def _write(self) -> Iterator[Any]:
+        """One transaction: committed when the block ends, rolled back on any exception."""
+        try:
+            with self.engine.begin() as conn:
+                yield conn
+        except self._sa.exc.IntegrityError as exc:
+            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+        except self._sa.exc.SQLAlchemyError as exc:
+            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+
+    # -- issuing --------------------------------------------------------------------------
+    def _allocate(self, conn, scheme: str, date: dt.date) -> str:
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        name = _counter_name(scheme, date)
+        statement = sa.text(
+            "INSERT INTO counters (name, last_value) VALUES (:name, 1) "
+            "ON CONFLICT (name) DO UPDATE SET last_value = counters.last_value + 1 "
+            "RETURNING last_value")
+        for _ in range(10_000):  # skip numbers typed by hand before the register numbered
+            seq = conn.execute(statement, {"name": name}).scalar_one()
+            number = format_certificate_number(scheme, seq, date)
+            taken = conn.execute(sa.select(certificates.c.id).where(
+                certificates.c.number == number)).first()
+            if taken is None:
+                return number
+        raise RegisterError(f"no free number in scheme '{scheme}'")
+
+    def _check_free(self, conn, number: str) -> None:
+        row = conn.execute(self._sa.select(
+            self._schema.CERTIFICATES.c.issued_at, self._schema.CERTIFICATES.c.workbench,
+            self._schema.CERTIFICATES.c.item_serial).where(
+            self._schema.CERTIFICATES.c.number == number)).first()
+        if row is not None:
+            raise RegisterError(
+                f"certificate number {number} was issued on {row.issued_at[:10]} ({row.workbench}, "
+                f"serial {row.item_serial or '—'}): a number is issued once; leave the number "
+                "empty and the register allocates the next")
+
+    def issue(self, request: IssueRequest, render: Callable[[CertificateMetadata], bytes],
+              *, supersedes: str = "", change_note: str = "", replacement: bool = False
+              ) -> tuple[CertificateRecord, bytes]:
+        """Allocate the number (or check the one given), render the PDF with it, record it:
+        one transaction. ``supersedes`` issues an amendment (number ``<original>-A<n>``) or,
+        with ``replacement``, a new certificate replacing the original; the original is
+        kept unchanged and marked superseded. Returns the record and the PDF."""
+        meta = request.metadata
+        issue_date = (dt.date.fromisoformat(meta.issue_date) if meta.issue_date
+                      else dt.datetime.now(dt.timezone.utc).date())
+        certificates = self._schema.CERTIFICATES
+        with self._write() as conn:
+            revision, original = "original", None
+            if supersedes:
+                original = self._current(conn, supersedes)
+                if replacement:
+                    revision = "replacement"
+                    number = self._allocate(conn, meta.number_scheme, issue_date)
+                else:
+                    n = _amendment_count(conn, self, original) + 1
+                    revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
+                    self._check_free(conn, number)
+            elif meta.certificate_number:
+                number = meta.certificate_number
+                self._check_free(conn, number)
+            else:
+                number = self._allocate(conn, meta.number_scheme, issue_date)
+            final = dataclasses.replace(
+                meta, certificate_number=number, issue_date=issue_date.isoformat(),
+                supersedes=original.number if original else "",
+                revision="" if revision == "original" else revision, change_note=change_note)
+            pdf = render(final)
+            record = CertificateRecord(
+                number=number,
+                issued_at=dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat(),
+                issue_date=issue_date.isoformat(), calibration_date=meta.calibration_date,
+                workbench=request.workbench, item_description=meta.item_description,
+                item_manufacturer=meta.item_manufacturer, item_serial=meta.item_serial,
+                customer=meta.customer_name, operator=meta.operator,
+                workstation=socket.gethostname(), status="issued",
+                supersedes=original.number if original else None, superseded_by=None,
+                revision=revision, change_note=change_note,
+                project_json=_with_metadata(request.project_json, request.workbench, final),
+                software_json=json.dumps(software_versions(), sort_keys=True),
+                headline_json=json.dumps(request.headline, sort_keys=True),
+                pdf_sha256=hashlib.sha256(pdf).hexdigest())
+            conn.execute(certificates.insert().values(**dataclasses.asdict(record), pdf=pdf))
+            if original is not None:
+                conn.execute(certificates.update().where(
+                    certificates.c.number == original.number).values(
+                    status="superseded", superseded_by=number))
+        return record, pdf
+
+    def _current(self, conn, number: str) -> CertificateRecord:
+        record = self._get(conn, number)
+        if record.status != "issued":
+            raise RegisterError(f"{number} was superseded by {record.superseded_by}: amend or "
+                                "replace that one")
+        return record
+
+    # -- reading --------------------------------------------------------------------------
+    def _get(self, conn, number: str) -> CertificateRecord:
+        certificates = self._schema.CERTIFICATES
+        row = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
+            certificates.c.number == number)).first()
+        if row is None:
+            raise RegisterError(f"no certificate {number} in the register")
+        return CertificateRecord(**row._asdict())
+
+    def get(self, number: str) -> CertificateRecord:
+        with self._read() as conn:
+            return self._get(conn, number)
+
+    def pdf(self, number: str) -> bytes:
+        certificates = self._schema.CERTIFICATES
+        with self._read() as conn:
+            data = conn.execute(self._sa.select(certificates.c.pdf).where(
+                certificates.c.number == number)).scalar_one_or_none()
+        if data is None:
+            raise RegisterError(f"no certificate {number} in the register")
+        return bytes(data)
+
+    def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
+        """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        query = sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
+        if search.strip():
+            pattern = f"%{search.strip().lower()}%"
+            query = query.where(sa.or_(*(sa.func.lower(certificates.c[c]).like(pattern)
+                                         for c in ("number", "item_serial", "customer"))))
+        query = query.order_by(certificates.c.id.desc()).limit(limit)
+        with self._read() as conn:
+            return [CertificateRecord(**row._asdict()) for row in conn.execute(query)]
+
+    def verify(self, pdf: bytes) -> CertificateRecord | None:
+        """The record whose PDF is byte for byte this one (by SHA-256), or None."""
+        certificates = self._schema.CERTIFICATES
+        digest = hashlib.sha256(pdf).hexdigest()
+        with self._read() as conn:
+            number = conn.execute(self._sa.select(certificates.c.number).where(
+                certificates.c.pdf_sha256 == digest)).scalar_one_or_none()
+            return None if number is None else self._get(conn, number)
+
+    def history(self, serial: str) -> list[CertificateRecord]:
+        """Every certificate of an instrument, oldest calibration first."""
+        certificates = self._schema.CERTIFICATES
+        with self._read() as conn:
+            rows = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
+                                .where(certificates.c.item_serial == serial)
+                                .order_by(certificates.c.calibration_date, certificates.c.id))
+            return [CertificateRecord(**row._asdict()) for row in rows]
+
+    # -- calibration intervals -------------------------------------------------------------
+    def set_interval(self, serial: str, days: int | None) -> None:
+        instruments = self._schema.INSTRUMENTS
+        with self._write() as conn:
+            conn.execute(instruments.delete().where(instruments.c.serial == serial))
+            if days:
+                if days < 1:
+                    raise RegisterError("a calibration interval is a positive number of days")
+                conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
+
+    def interval(self, serial: str) -> int | None:
+        instruments = self._schema.INSTRUMENTS
+        with self._read() as conn:
+            return conn.execute(self._sa.select(instruments.c.interval_days).where(
+                instruments.c.serial == serial)).scalar_one_or_none()
+
+    def due_date(self, serial: str) -> dt.date | None:
+        """The last calibration of the serial plus its interval (None without either)."""
+        days = self.interval(serial)
+        dates = [r.calibration_date for r in self.history(serial) if r.calibration_date]
+        if not days or not dates:
+            return None
+        return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+def _root(record: CertificateRecord) -> str:
+    """The number amendments count from: the original's, not an amendment's."""
+    return re.sub(r"-A\d+$", "", record.number) if record.revision.startswith("amendment") \
+        else record.number
+
+
+def _amendment_count(conn, register: Register, record: CertificateRecord) -> int:
+    certificates = register._schema.CERTIFICATES
+    root = _root(record)
+    return conn.execute(register._sa.select(register._sa.func.count()).where(
+        certificates.c.number.like(f"{root}-A%"))).scalar_one()
+
+
+def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata) -> str:
+    """The project state with the certificate's final details (its number) in it."""
+    data = json.loads(project_json)
+    certificates = dict(data.get("metadata", {}).get("certificates", {}))
+    certificates[workbench] = meta.to_dict()
+    data.setdefault("metadata", {})["certificates"] = certificates
+    return json.dumps(data, ensure_ascii=False)
+
+
+def _reason(exc: Exception) -> str:
+    text = str(getattr(exc, "orig", None) or exc).strip().splitlines()
+    return text[0] if text else type(exc).__name__
+
+
+def _sqlite_connect(dbapi_connection, _record) -> None:
+    dbapi_connection.isolation_level = None  # the driver's own transactions off: ours below
+    cursor = dbapi_connection.cursor()
+    cursor.execute("PRAGMA journal_mode=WAL")
+    cursor.execute("PRAGMA busy_timeout=60000")
+    cursor.close()
+
+
+def _sqlite_begin(conn) -> None:
+    conn.exec_driver_sql("BEGIN IMMEDIATE")

@@ -1,0 +1,170 @@
+"""The certificate register on both back ends (SQLite always; PostgreSQL when a throw-away
+server can be started, see tests/postgres_cluster.py): numbers unique across processes,
+a crash leaves a whole record or none, amendments keep the original, verification by hash,
+an instrument's history and due date, migrations of an old register."""
+
+from __future__ import annotations
+
+import datetime as dt
+import multiprocessing
+import os
+
+import pytest
+import sqlalchemy as sa
+
+from models.certificate.metadata import CertificateMetadata
+from models.register import schema
+from models.register.store import IssueRequest, Register, RegisterError
+
+META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
+                           customer_name="Acme Optics", calibration_date="2026-11-20",
+                           issue_date="2026-11-24", number_scheme="AB-{year}-{seq:04d}")
+PROJECT = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
+
+
+def request(meta=META, headline=None):
+    return IssueRequest("polygon", meta, PROJECT, headline or {})
+
+
+def render(meta: CertificateMetadata) -> bytes:
+    return f"%PDF {meta.certificate_number} {meta.revision} {meta.supersedes}".encode()
+
+
+@pytest.fixture
+def register(register_url):
+    with Register(register_url) as reg:
+        yield reg
+
+
+def test_numbers_follow_the_scheme_and_are_never_issued_twice(register):
+    first, pdf = register.issue(request(), render)
+    second, _ = register.issue(request(), render)
+    assert (first.number, second.number) == ("AB-2026-0001", "AB-2026-0002")
+    assert pdf == b"%PDF AB-2026-0001  " and register.pdf(first.number) == pdf
+    assert first.pdf_sha256 == __import__("hashlib").sha256(pdf).hexdigest()
+    with pytest.raises(RegisterError, match="AB-2026-0001 was issued on"):
+        register.issue(request(META.__class__(**{**META.to_dict(), "standards": (),
+                                                "certificate_number": "AB-2026-0001"})), render)
+    typed, _ = register.issue(request(CertificateMetadata(certificate_number="AB-2026-0003",
+                                                          issue_date="2026-11-24")), render)
+    third, _ = register.issue(request(), render)  # the typed number is skipped
+    assert typed.number == "AB-2026-0003" and third.number == "AB-2026-0004"
+    next_year = CertificateMetadata(issue_date="2027-01-02")
+    assert register.issue(request(next_year), render)[0].number == "AB-2027-0001"
+
+
+def test_the_record_holds_the_project_versions_and_headline(register):
+    record, _ = register.issue(request(headline={"corrected peak-to-peak (\")": 0.8}), render)
+    got = register.get(record.number)
+    assert got.headline == {"corrected peak-to-peak (\")": 0.8}
+    assert got.software["anglebench"] and "numpy" in got.software
+    assert '"certificate_number": "AB-2026-0001"' in got.project_json  # the final details
+    assert got.item_serial == "RX-1" and got.customer == "Acme Optics" and got.workstation
+
+
+def test_a_failure_before_the_commit_leaves_no_record_and_uses_no_number(register):
+    def broken(meta):
+        raise ValueError("the PDF could not be made")
+
+    with pytest.raises(ValueError, match="could not be made"):
+        register.issue(request(), broken)
+    assert register.list() == []
+    assert register.issue(request(), render)[0].number == "AB-2026-0001"
+
+
+def _killed_mid_export(url: str) -> None:
+    def die(meta):
+        os._exit(3)  # the process dies with the transaction open
+
+    Register(url).issue(request(), die)
+
+
+def test_a_process_killed_during_export_leaves_no_record(register_url):
+    process = multiprocessing.get_context("spawn").Process(target=_killed_mid_export,
+                                                           args=(register_url,))
+    process.start()
+    process.join(60)
+    assert process.exitcode == 3
+    with Register(register_url) as reg:
+        assert reg.list() == []
+        assert reg.issue(request(), render)[0].number == "AB-2026-0001"
+
+
+def _issue_many(url: str, count: int, queue) -> None:
+    with Register(url) as reg:
+        queue.put([reg.issue(request(), render)[0].number for _ in range(count)])
+
+
+def test_processes_allocating_at_once_never_share_a_number(register_url):
+    Register(register_url).close()  # created once; the workers only open it
+    context = multiprocessing.get_context("spawn")
+    queue = context.Queue()
+    workers = [context.Process(target=_issue_many, args=(register_url, 8, queue))
+               for _ in range(4)]
+    for w in workers:
+        w.start()
+    numbers = [n for _ in workers for n in queue.get(timeout=120)]
+    for w in workers:
+        w.join(60)
+        assert w.exitcode == 0
+    assert sorted(numbers) == [f"AB-2026-{i:04d}" for i in range(1, 33)]
+
+
+def test_an_amendment_references_the_original_which_stays_unchanged(register):
+    original, original_pdf = register.issue(request(), render)
+    amended, pdf = register.issue(request(), render, supersedes=original.number,
+                                  change_note="serial number corrected")
+    assert amended.number == "AB-2026-0001-A1" and amended.revision == "amendment 1"
+    assert pdf == b"%PDF AB-2026-0001-A1 amendment 1 AB-2026-0001"
+    old = register.get(original.number)
+    assert old.status == "superseded" and old.superseded_by == amended.number
+    assert register.pdf(original.number) == original_pdf  # unchanged
+    with pytest.raises(RegisterError, match="superseded by AB-2026-0001-A1"):
+        register.issue(request(), render, supersedes=original.number)
+    second, _ = register.issue(request(), render, supersedes=amended.number)
+    assert second.number == "AB-2026-0001-A2"
+    replacement, _ = register.issue(request(), render, supersedes=second.number,
+                                    replacement=True, change_note="re-issued")
+    assert replacement.number == "AB-2026-0002" and replacement.revision == "replacement"
+    with pytest.raises(RegisterError, match="no certificate XX-1"):
+        register.issue(request(), render, supersedes="XX-1")
+
+
+def test_search_verify_history_and_due_date(register):
+    a, pdf_a = register.issue(request(headline={"p": 1.0}), render)
+    other = CertificateMetadata(item_serial="ZZ-9", customer_name="Other Lab",
+                                calibration_date="2026-10-01", issue_date="2026-11-24")
+    register.issue(request(other), render)
+    later = CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                   "calibration_date": "2027-05-01", "issue_date": "2027-05-02"})
+    b, _ = register.issue(request(later, {"p": 1.4}), render)
+    assert [r.number for r in register.list("acme")] == [b.number, a.number]
+    assert [r.number for r in register.list("zz-9")] == ["AB-2026-0002"]
+    assert register.verify(pdf_a).number == a.number
+    assert register.verify(pdf_a + b" ") is None
+    assert [r.headline["p"] for r in register.history("RX-1")] == [1.0, 1.4]
+    assert register.due_date("RX-1") is None
+    register.set_interval("RX-1", 365)
+    assert register.due_date("RX-1") == dt.date(2028, 4, 30)
+
+
+def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.begin() as conn:  # a register made by the version that knew migration 1 only
+        schema.SCHEMA_VERSION.create(conn)
+        conn.execute(schema.SCHEMA_VERSION.insert().values(version=1))
+        schema.MIGRATIONS[1](conn)
+    with Register(register_url) as reg:
+        assert reg.version == schema.LATEST == 2
+        reg.issue(request(), render)
+        reg.set_interval("RX-1", 180)  # the table migration 2 added
+    with engine.begin() as conn:
+        conn.execute(schema.SCHEMA_VERSION.update().values(version=99))
+    engine.dispose()
+    with pytest.raises(RegisterError, match="schema version 99, made by a newer AngleBench"):
+        Register(register_url)
+
+
+def test_an_unreachable_register_says_so(tmp_path):
+    with pytest.raises(RegisterError, match="register postgresql\\+psycopg://u:\\*\\*\\*@"):
+        Register("postgresql://u:secret@/none?host=/nonexistent-socket-dir")
