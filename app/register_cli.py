@@ -95,7 +95,7 @@ def run_register(argv: list[str]) -> int:
     from models.register.store import Register, RegisterError
 
     try:
-        with Register(register_url(args.register)) as register:
+        with Register(register_url(explicit=args.register)) as register:
             if args.command == "list":
                 for r in register.list(args.search):
                     sys.stdout.write(f"{r.number}\t{r.status}\t{r.issue_date}\t{r.workbench}\t"

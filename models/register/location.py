@@ -30,10 +30,11 @@ def default_register_url() -> str:
     return url_for_path(_data_dir() / "register.sqlite")
 
 
-def register_url(configured: str = "") -> str:
-    """The environment's register, else the one configured (the window's setting), else the
-    default file. A value without ``://`` is a SQLite file's path."""
-    value = os.environ.get(ENV_VAR, "").strip() or configured.strip()
+def register_url(configured: str = "", explicit: str = "") -> str:
+    """``explicit`` (a command-line option) first, then the environment's register, then the
+    one configured (the window's setting), else the default file. A value without ``://``
+    is a SQLite file's path."""
+    value = explicit.strip() or os.environ.get(ENV_VAR, "").strip() or configured.strip()
     if not value:
         return default_register_url()
     return value if "://" in value else url_for_path(value)

@@ -1,0 +1,64 @@
+"""``anglebench analyze --certificate`` issues through the register; ``anglebench register``
+lists, shows, verifies and exports what was issued (the register of each test is its own,
+see conftest.py)."""
+
+from __future__ import annotations
+
+import json
+import zipfile
+
+from app.main import main
+
+
+def issue(samples_dir, tmp_path, name, capsys, **changes):
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update(changes)
+    meta_path = tmp_path / f"{name}.json"
+    meta_path.write_text(json.dumps(meta), encoding="utf-8")
+    code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
+                 str(tmp_path / f"{name}.pdf"), "--metadata", str(meta_path)])
+    return code, capsys.readouterr().err
+
+
+def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
+    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
+    assert code == 0 and "Certificate AB-2026-0001 issued" in err
+    code, err = issue(samples_dir, tmp_path, "b", capsys)  # the sample's own number
+    assert code == 0 and "AB-2026-0042" in err
+    code, err = issue(samples_dir, tmp_path, "c", capsys)  # … once only
+    assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
+    assert main(["register", "list", "RX-26"]) == 0
+    listed = capsys.readouterr().out.splitlines()
+    assert [line.split("\t")[0] for line in listed] == ["AB-2026-0042", "AB-2026-0001"]
+    assert main(["register", "show", "AB-2026-0001", "--pdf", str(tmp_path / "copy.pdf"),
+                 "--project", str(tmp_path / "p.json")]) == 0
+    shown = capsys.readouterr().out
+    assert "workbench: polygon" in shown and "headline corrected peak-to-peak" in shown
+    assert (tmp_path / "copy.pdf").read_bytes() == (tmp_path / "a.pdf").read_bytes()
+    project = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))
+    assert project["workbenches"]["polygon"]["rows"][0][0] == "1"
+    assert main(["register", "verify", str(tmp_path / "a.pdf")]) == 0
+    assert "certificate AB-2026-0001" in capsys.readouterr().out
+    tampered = tmp_path / "t.pdf"
+    tampered.write_bytes((tmp_path / "a.pdf").read_bytes() + b"%\n")  # one byte changed is enough
+    assert main(["register", "verify", str(tampered)]) == 1
+    assert "NOT in the register" in capsys.readouterr().out
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
+    with zipfile.ZipFile(tmp_path / "all.zip") as archive:
+        names = set(archive.namelist())
+        index = archive.read("index.csv").decode()
+    assert {"pdf/AB-2026-0001.pdf", "project/AB-2026-0042.anglebench.json"} <= names
+    assert index.count("\n") == 3 and "RX-26-0815" in index
+
+
+def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, capsys):
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--certificate", str(tmp_path / "d.pdf")]) == 0
+    assert "nothing was recorded in the register" in capsys.readouterr().err
+    assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+    assert main(["register", "show", "NOPE"]) == 2
+    assert "no certificate NOPE" in capsys.readouterr().err
+    assert main(["register", "interval", "RX-1", "-5"]) == 2
+    assert "positive number of days" in capsys.readouterr().err
+    assert main(["register", "--register", "postgresql://x@/db?host=/nonexistent", "list"]) == 2
+    assert "register postgresql+psycopg://x@/db" in capsys.readouterr().err
