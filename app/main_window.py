@@ -34,12 +34,14 @@ from models.project.file import (
     WorkbenchState,
     check_project,
     load_project,
+    project_from_json,
     save_project,
 )
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
 from widgets.certificate_dialog import CertificateDialog
+from widgets.fonts import ensure_cjk_font
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import gui_thread_first
 
@@ -78,6 +80,7 @@ class MainWindow(QMainWindow):
         self.project_metadata: dict = {}
         self.certificates = CertificatePresenter(self, self.qsettings, lambda: self.project_metadata,
                                                  lambda: self.current.mark_modified())
+        ensure_cjk_font()  # Chinese names and readings are never boxes
         self._setup_ui()
         self._setup_menus()
         self.tabs.currentChanged.connect(self._on_tab_changed_send)
@@ -142,6 +145,9 @@ class MainWindow(QMainWindow):
         self.export_results_action = self._action(
             file_menu, "Export &results (CSV/XLSX)…", self.export_results,
             tip="Write every point's raw, correction, corrected error and U")
+        self.register_action = self._action(
+            file_menu, "Certificate re&gister…", self.show_register,
+            tip="Every issued certificate: search, verify a PDF, amend, an instrument's history")
         self.send_action = self._action(
             file_menu, "Send to &positioning", self.send_to_positioning,
             tip="Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
@@ -298,6 +304,39 @@ class MainWindow(QMainWindow):
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
         self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
+
+    def show_register(self) -> None:
+        from app.register_presenter import RegisterPresenter
+        from widgets.register_window import RegisterWindow
+
+        if getattr(self, "register_window", None) is None:
+            self.register_window = RegisterWindow(self)
+            self.register_presenter = RegisterPresenter(self.register_window, self.certificates,
+                                                        self.open_project_state)
+            self.register_window.subscribe(self.register_presenter)
+        self.register_presenter.refresh()
+        self.register_window.show()
+        if QApplication.platformName() != "offscreen":  # nothing to raise on no screen
+            self.register_window.raise_()
+
+    def open_project_state(self, project_json: str, workbench: str) -> bool:
+        """Load the project behind a certificate (asking about unsaved work first) and show its
+        workbench; the project is untitled (saving it asks for a name)."""
+        if not self._confirm_discard():
+            return False
+        try:
+            project = project_from_json(project_json, "the register's record")
+            check_project(project, {p.kind.key: p.kind for p in self.presenters},
+                          "the register's record")
+        except ProjectFileError as exc:
+            self.tell("Cannot open", str(exc))
+            return False
+        self.apply_project(project)
+        self.project_path = None
+        self.tabs.setCurrentIndex(next(i for i, p in enumerate(self.presenters)
+                                       if p.kind.key == workbench))
+        self._update_title()
+        return True
 
     def send_to_positioning(self) -> bool:
         """The current run, as readings of the positioning workbench (one undo step there)."""

@@ -55,6 +55,28 @@ def validation_picture(scratch: Path) -> Path:
     return HERE / "validation_report.png"
 
 
+def register_picture(scratch: Path) -> Path:
+    """The register window on the scratch register the sample certificates went into."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QApplication
+
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    window = MainWindow(settings=QSettings(str(scratch / "s.ini"), QSettings.Format.IniFormat),
+                        recovery=RecoveryStore(scratch / "recovery"))
+    window.show_register()
+    dialog = window.register_window
+    dialog.resize(1100, 560)
+    dialog.table.selectRow(dialog.table.rowCount() - 1)
+    window.register_presenter.show_history()
+    QApplication.processEvents()
+    out = HERE / "register.png"
+    dialog.grab().save(str(out))
+    window.recovery.release()
+    return out
+
+
 def main() -> None:
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     from PySide6.QtWidgets import QApplication
@@ -71,6 +93,7 @@ def main() -> None:
         for kind in ("theodolite", "polygon", "fringe", "positioning"):
             certificate_picture(kind, Path(scratch))
         validation_picture(Path(scratch))
+        register_picture(Path(scratch))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,173 @@
+"""The register window's presenter: the list and its search, the project behind a
+certificate, re-verifying a PDF, saving a PDF from the register, starting an amendment or
+a replacement, and an instrument's history with its due date. No widgets: it asks its
+view (widgets/register_window.py) and the main window (``open_project_state``)."""
+
+from __future__ import annotations
+
+import datetime as dt
+from collections.abc import Callable
+from typing import Protocol
+
+from app.certificate_presenter import CertificatePresenter, PendingRevision
+from models.register.store import CertificateRecord, RegisterError
+
+__all__ = ["RegisterPresenter", "RegisterView"]
+
+COLUMNS = ("Number", "Status", "Revision", "Issued", "Calibrated", "Workbench", "Serial",
+           "Customer")
+
+
+class RegisterView(Protocol):
+    def show_location(self, url: str) -> None: ...
+
+    def show_records(self, header: tuple[str, ...], rows: list[tuple[str, ...]]) -> None: ...
+
+    def selected_row(self) -> int: ...  # −1 when none
+
+    def show_history(self, serial: str, series: dict[str, tuple[list[float], list[float]]],
+                     dates: list[str], due: str, interval_days: int) -> None: ...
+
+    def ask_pdf_to_verify(self) -> str: ...
+
+    def ask_pdf_path(self, suggested: str) -> str: ...
+
+    def tell(self, title: str, text: str) -> None: ...
+
+
+def _days(date: str) -> float:
+    return float(dt.date.fromisoformat(date).toordinal()) if date else float("nan")
+
+
+class RegisterPresenter:
+    """``open_project_state(project_json, workbench)`` loads a project into the window (it
+    asks about unsaved work; False when the user kept it)."""
+
+    def __init__(self, view: RegisterView, certificates: CertificatePresenter,
+                 open_project_state: Callable[[str, str], bool]) -> None:
+        self.view = view
+        self.certificates = certificates
+        self.open_project_state = open_project_state
+        self.records: list[CertificateRecord] = []
+        self.search = ""
+
+    def _register(self):
+        return self.certificates.open_register()
+
+    def refresh(self, search: str | None = None) -> None:
+        if search is not None:
+            self.search = search
+        self.view.show_location(self.certificates.register_url())
+        try:
+            with self._register() as register:
+                self.records = register.list(self.search)
+        except RegisterError as exc:
+            self.records = []
+            self.view.tell("Register", str(exc))
+        self.view.show_records(COLUMNS, [
+            (r.number, r.status, r.revision, r.issue_date, r.calibration_date, r.workbench,
+             r.item_serial, r.customer) for r in self.records])
+
+    def set_location(self, url: str) -> None:
+        self.certificates.set_register_url(url)
+        self.refresh()
+
+    def selected(self) -> CertificateRecord | None:
+        row = self.view.selected_row()
+        if 0 <= row < len(self.records):
+            return self.records[row]
+        self.view.tell("Register", "Select a certificate first.")
+        return None
+
+    # -- actions ---------------------------------------------------------------------
+    def open_project(self) -> bool:
+        record = self.selected()
+        return record is not None and self.open_project_state(record.project_json,
+                                                              record.workbench)
+
+    def revise(self, replacement: bool = False) -> bool:
+        """Open the project behind the selected certificate; its workbench's next certificate
+        then amends (or replaces) it."""
+        record = self.selected()
+        if record is None:
+            return False
+        if record.status != "issued":
+            self.view.tell("Register", f"{record.number} was superseded by "
+                           f"{record.superseded_by}: amend or replace that one.")
+            return False
+        if not self.open_project_state(record.project_json, record.workbench):
+            return False
+        self.certificates.start_revision(PendingRevision(record.workbench, record.number,
+                                                         replacement))
+        what = "a replacement of" if replacement else "an amendment to"
+        self.view.tell("Register", f"The readings and details of {record.number} are open. "
+                       f"Change what is needed; File › Export certificate then issues {what} "
+                       f"{record.number} and asks what changed.")
+        return True
+
+    def save_pdf(self) -> bool:
+        record = self.selected()
+        if record is None:
+            return False
+        path = self.view.ask_pdf_path(f"{record.number.replace('/', '-')}.pdf")
+        if not path:
+            return False
+        from models.project.atomic_write import write_bytes_atomic
+
+        try:
+            with self._register() as register:
+                write_bytes_atomic(path, register.pdf(record.number))
+        except (RegisterError, OSError) as exc:
+            self.view.tell("Cannot save", str(exc))
+            return False
+        return True
+
+    def verify_pdf(self) -> CertificateRecord | None:
+        path = self.view.ask_pdf_to_verify()
+        if not path:
+            return None
+        try:
+            with open(path, "rb") as handle:
+                data = handle.read()
+            with self._register() as register:
+                record = register.verify(data)
+        except (OSError, RegisterError) as exc:
+            self.view.tell("Cannot verify", str(exc))
+            return None
+        if record is None:
+            self.view.tell("Not in the register", f"{path}: no certificate issued from this "
+                           "register has this PDF (SHA-256): it was altered, is a draft, or "
+                           "comes from another register.")
+        else:
+            self.view.tell("Verified", f"{path} is certificate {record.number} as issued on "
+                           f"{record.issued_at} ({record.status}), byte for byte.")
+        return record
+
+    def show_history(self) -> None:
+        record = self.selected()
+        if record is None or not record.item_serial:
+            return
+        self._history(record.item_serial)
+
+    def _history(self, serial: str) -> None:
+        with self._register() as register:
+            records = register.history(serial)
+            due = register.due_date(serial)
+            interval = register.interval(serial) or 0
+        series: dict[str, tuple[list[float], list[float]]] = {}
+        for r in records:
+            for name, value in r.headline.items():
+                xs, ys = series.setdefault(name, ([], []))
+                xs.append(_days(r.calibration_date or r.issue_date))
+                ys.append(value)
+        self.view.show_history(serial, series, [r.calibration_date for r in records],
+                               due.isoformat() if due else "", interval)
+
+    def set_interval(self, serial: str, days: int) -> None:
+        try:
+            with self._register() as register:
+                register.set_interval(serial, days or None)
+        except RegisterError as exc:
+            self.view.tell("Register", str(exc))
+            return
+        self._history(serial)

@@ -1,0 +1,110 @@
+"""The register window: its presenter with a mock view, and the real window driven by
+qtbot (list, search, verify, amend through the main window, history with a due date)."""
+
+from __future__ import annotations
+
+import json
+from unittest import mock
+
+import pytest
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QMessageBox
+
+from app.certificate_issue import issue_certificate
+from app.main_window import MainWindow
+from app.register_presenter import RegisterPresenter, RegisterView
+from models.certificate.metadata import CertificateMetadata
+from models.project.recovery import RecoveryStore
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+
+
+def issue_polygon(register, samples_dir, tmp_path, name, **changes):
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": "", **changes})
+    return issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                             kind.checked_settings({}), rows, "polygon_sample.csv",
+                             str(tmp_path / f"{name}.pdf"))
+
+
+@pytest.fixture
+def window(qtbot, tmp_path):
+    w = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
+                   recovery=RecoveryStore(tmp_path / "recovery"))
+    w.told = []
+    w.tell = lambda title, text: w.told.append(text)
+    w.ask = lambda *a: QMessageBox.StandardButton.Discard
+    qtbot.addWidget(w)
+    return w
+
+
+def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, samples_dir,
+                                                                    tmp_path):
+    with window.certificates.open_register() as register:
+        first = issue_polygon(register, samples_dir, tmp_path, "a")
+        issue_polygon(register, samples_dir, tmp_path, "b", item_serial="OTHER-1",
+                      customer_name="Other customer")
+    view = mock.create_autospec(RegisterView, instance=True)
+    opened = mock.Mock(return_value=True)
+    presenter = RegisterPresenter(view, window.certificates, opened)
+    presenter.refresh()
+    header, rows = view.show_records.call_args.args
+    assert header[0] == "Number" and [r[0] for r in rows] == ["AB-2026-0002", "AB-2026-0001"]
+    presenter.refresh("other")
+    assert [r[0] for r in view.show_records.call_args.args[1]] == ["AB-2026-0002"]
+    presenter.refresh("")
+    view.selected_row.return_value = 1
+    assert presenter.revise()
+    opened.assert_called_once_with(first.project_json, "polygon")
+    assert window.certificates.pending.number == "AB-2026-0001"
+    view.ask_pdf_to_verify.return_value = str(tmp_path / "a.pdf")
+    assert presenter.verify_pdf().number == "AB-2026-0001"
+    view.ask_pdf_path.return_value = str(tmp_path / "copy.pdf")
+    assert presenter.save_pdf()
+    assert (tmp_path / "copy.pdf").read_bytes() == (tmp_path / "a.pdf").read_bytes()
+
+
+def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_path, qtbot):
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+        register.set_interval("RX-26-0815", 365)
+    window.show_register()
+    dialog = window.register_window
+    assert dialog.table.rowCount() == 1 and dialog.table.item(0, 0).text() == "AB-2026-0001"
+    dialog.buttons["history"].click()
+    assert "next due 2027-11-20" in dialog.history_title.text()
+    assert dialog.figure.count() == 2 and dialog.due_line.isVisible()
+    x, y = dialog.history_curves[0].getData()
+    assert len(y) == 1 and y[0] == pytest.approx(0.9817, abs=1e-3)  # corrected peak-to-peak
+    dialog.figure.setCurrentIndex(1)
+    assert dialog.history_curves[0].getData()[1][0] == pytest.approx(480.0, abs=0.5)  # ψ
+    dialog.tell = lambda *a: None
+    dialog.buttons["amend"].click()
+    assert window.current.kind.key == "polygon" and window.current.result is not None
+    # the technician exports: the details come back from the record, the change is asked
+    window.edit_certificate_details = lambda meta, problems, raw: meta
+    window.ask_change_note = lambda revision: "reference standard's certificate number"
+    window.choose_save_path = lambda *a: str(tmp_path / "amended.pdf")
+    assert window.export_certificate()
+    with window.certificates.open_register() as register:
+        assert register.get("AB-2026-0001-A1").supersedes == "AB-2026-0001"
+        assert register.get("AB-2026-0001").status == "superseded"
+    dialog.search.setText("A1")
+    assert dialog.table.rowCount() == 1
+
+
+def test_chinese_in_the_window_is_drawn_not_boxed(window):
+    """Without a system CJK font the window registers the bundled one, which has the glyphs
+    of a Chinese customer's name."""
+    from PySide6.QtGui import QFont, QFontMetrics
+
+    from widgets.fonts import ensure_cjk_font
+
+    family = ensure_cjk_font()
+    assert family
+    metrics = QFontMetrics(QFont(family))
+    assert all(metrics.inFontUcs4(ord(ch)) for ch in "长春光电有限公司转角方位")

@@ -1,0 +1,210 @@
+"""The certificate register window: where the register is, the issued certificates with a
+search, the actions on one (open its project, amend, replace, save its PDF), verifying a
+PDF, and an instrument's history of headline figures with its due date. Widgets only;
+the presenter is app/register_presenter.py."""
+
+from __future__ import annotations
+
+import datetime as dt
+
+import pyqtgraph as pg
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QComboBox,
+    QDialog,
+    QFileDialog,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QMessageBox,
+    QPushButton,
+    QSpinBox,
+    QSplitter,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+EPOCH = dt.date(1970, 1, 1).toordinal()
+COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7f8c8d")
+
+
+class RegisterWindow(QDialog):
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle("Certificate register")
+        self.resize(1100, 720)
+        self.location = QLabel()
+        self.location.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.location_edit = QLineEdit()
+        self.location_edit.setPlaceholderText("empty: the file in your data folder; or "
+                                              "postgresql://user@host/database")
+        self.location_button = QPushButton("Use")
+        self.search = QLineEdit()
+        self.search.setPlaceholderText("Search number, serial or customer")
+        self.table = QTableWidget()
+        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.table.verticalHeader().hide()
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        self.table.horizontalHeader().setStretchLastSection(True)
+        self.buttons = {name: QPushButton(text) for name, text in (
+            ("open", "Open project"), ("amend", "Amend…"), ("replace", "Replace…"),
+            ("save", "Save PDF…"), ("verify", "Verify a PDF…"), ("history", "History"))}
+        self.buttons["amend"].setToolTip("Open the certificate's readings and details; the next "
+                                         "export issues Amendment n to it, saying what changed")
+        self.buttons["replace"].setToolTip("As Amend, but the new certificate gets a new number "
+                                           "and replaces the original")
+        self.buttons["verify"].setToolTip("Is a PDF, byte for byte, one this register issued?")
+        self.history_title = QLabel("Select a certificate and press History")
+        self.history_plot = pg.PlotWidget(background="w", axisItems={
+            "bottom": pg.DateAxisItem(orientation="bottom")})
+        self.history_plot.showGrid(x=True, y=True, alpha=0.25)
+        self.history_plot.getAxis("left").enableAutoSIPrefix(False)
+        self.history_legend = self.history_plot.addLegend(offset=(10, 10))
+        self.history_curves: list[pg.PlotDataItem] = []
+        self.due_line = pg.InfiniteLine(angle=90, pen=pg.mkPen("#c0392b", width=1.5,
+                                                               style=Qt.PenStyle.DashLine),
+                                        label="due", labelOpts={"position": 0.9})
+        self.due_line.hide()
+        self.history_plot.addItem(self.due_line)
+        self.figure = QComboBox()  # which headline figure the history plots
+        self.figure.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
+        self.figure.setToolTip("The figure of the certificates to follow over time")
+        self.figure.currentTextChanged.connect(self._draw_history)
+        self._series: dict = {}
+        self.interval = QSpinBox()
+        self.interval.setRange(0, 3650)
+        self.interval.setSuffix(" days")
+        self.interval.setSpecialValueText("no interval set")
+        self.interval_button = QPushButton("Set interval")
+        self.serial = ""
+        self._layout()
+
+    def _layout(self) -> None:
+        top = QHBoxLayout()
+        top.addWidget(QLabel("Register:"))
+        top.addWidget(self.location, 1)
+        top.addWidget(self.location_edit, 1)
+        top.addWidget(self.location_button)
+        actions = QHBoxLayout()
+        for button in self.buttons.values():
+            actions.addWidget(button)
+        upper = QWidget()
+        upper_layout = QVBoxLayout(upper)
+        upper_layout.setContentsMargins(0, 0, 0, 0)
+        upper_layout.addWidget(self.search)
+        upper_layout.addWidget(self.table, 1)
+        upper_layout.addLayout(actions)
+        lower = QWidget()
+        lower_layout = QVBoxLayout(lower)
+        lower_layout.setContentsMargins(0, 0, 0, 0)
+        row = QHBoxLayout()
+        row.addWidget(self.history_title, 1)
+        row.addWidget(self.figure)
+        row.addWidget(QLabel("calibration interval"))
+        row.addWidget(self.interval)
+        row.addWidget(self.interval_button)
+        lower_layout.addLayout(row)
+        lower_layout.addWidget(self.history_plot, 1)
+        splitter = QSplitter(Qt.Orientation.Vertical)
+        splitter.addWidget(upper)
+        splitter.addWidget(lower)
+        splitter.setSizes([420, 300])
+        layout = QVBoxLayout(self)
+        layout.addLayout(top)
+        layout.addWidget(splitter, 1)
+
+    # -- wiring ------------------------------------------------------------------------
+    def subscribe(self, presenter) -> None:
+        self.search.textChanged.connect(lambda text: presenter.refresh(text))
+        self.location_button.clicked.connect(
+            lambda: presenter.set_location(self.location_edit.text()))
+        self.buttons["open"].clicked.connect(presenter.open_project)
+        self.buttons["amend"].clicked.connect(lambda: presenter.revise(False))
+        self.buttons["replace"].clicked.connect(lambda: presenter.revise(True))
+        self.buttons["save"].clicked.connect(presenter.save_pdf)
+        self.buttons["verify"].clicked.connect(presenter.verify_pdf)
+        self.buttons["history"].clicked.connect(presenter.show_history)
+        self.table.doubleClicked.connect(lambda _index: presenter.show_history())
+        self.interval_button.clicked.connect(
+            lambda: self.serial and presenter.set_interval(self.serial, self.interval.value()))
+
+    # -- the presenter's calls ---------------------------------------------------------------
+    def show_location(self, url: str) -> None:
+        self.location.setText(url)
+
+    def show_records(self, header, rows) -> None:
+        self.table.clear()
+        self.table.setColumnCount(len(header))
+        self.table.setHorizontalHeaderLabels(list(header))
+        self.table.setRowCount(len(rows))
+        for r, row in enumerate(rows):
+            for c, text in enumerate(row):
+                self.table.setItem(r, c, QTableWidgetItem(text))
+        if rows:
+            self.table.selectRow(0)
+
+    def selected_row(self) -> int:
+        rows = self.table.selectionModel().selectedRows()
+        return rows[0].row() if rows else -1
+
+    def show_history(self, serial, series, dates, due, interval_days) -> None:
+        self.serial = serial
+        self._series = dict(series)
+        chosen = self.figure.currentText()
+        self.figure.blockSignals(True)
+        self.figure.clear()
+        self.figure.addItems(list(series))
+        if chosen in series:
+            self.figure.setCurrentText(chosen)
+        self.figure.blockSignals(False)
+        self._draw_history(self.figure.currentText())
+        ends = [x for xs, _ in series.values() for x in xs]
+        if due:
+            self.due_line.setValue((dt.date.fromisoformat(due).toordinal() - EPOCH) * 86400.0)
+            self.due_line.show()
+            ends.append(dt.date.fromisoformat(due).toordinal())
+        else:
+            self.due_line.hide()
+        if ends:  # whole days at least a year wide: one calibration is a point in time
+            lo, hi = min(ends), max(ends)
+            pad = max(30.0, (365.0 - (hi - lo)) / 2)
+            self.history_plot.setXRange((lo - pad - EPOCH) * 86400.0,
+                                        (hi + pad - EPOCH) * 86400.0, padding=0)
+        self.interval.setValue(interval_days)
+        self.history_title.setText(
+            f"Instrument {serial}: {len(dates)} calibration(s)"
+            + (f", next due {due}" if due else ", no due date (set an interval)"))
+
+    def _draw_history(self, name: str) -> None:
+        """One figure at a time: the figures of a certificate differ by orders of magnitude."""
+        self.history_legend.clear()
+        for curve in self.history_curves:
+            self.history_plot.removeItem(curve)
+        self.history_curves = []
+        if name not in self._series:
+            return
+        xs, ys = self._series[name]
+        seconds = [(x - EPOCH) * 86400.0 for x in xs]
+        self.history_curves.append(self.history_plot.plot(
+            seconds, ys, name=name, pen=pg.mkPen(COLOURS[0], width=2), symbol="o",
+            symbolBrush=COLOURS[0], symbolPen=None))
+        self.history_plot.setLabel("left", name)
+
+    def ask_pdf_to_verify(self) -> str:
+        path, _ = QFileDialog.getOpenFileName(self, "Verify a certificate PDF", "",
+                                              "PDF (*.pdf)")
+        return path
+
+    def ask_pdf_path(self, suggested: str) -> str:
+        path, _ = QFileDialog.getSaveFileName(self, "Save the certificate's PDF", suggested,
+                                              "PDF (*.pdf)")
+        return path
+
+    def tell(self, title: str, text: str) -> None:
+        QMessageBox.information(self, title, text)
