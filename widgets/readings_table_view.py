@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QGuiApplication, QKeySequence
-from PySide6.QtWidgets import QAbstractItemView, QHeaderView, QMenu, QTableView
+from PySide6.QtWidgets import QAbstractItemView, QHeaderView, QMenu, QMessageBox, QTableView
 
+from models.readings.paste import plan_paste
 from models.readings.tabular_import import split_pasted_text
 from widgets.readings_table_model import ReadingsTableModel
 
@@ -72,20 +73,53 @@ class ReadingsTableView(QTableView):
     def paste(self) -> None:
         self.paste_text(QGuiApplication.clipboard().text())
 
-    def paste_text(self, text: str) -> None:
+    def paste_text(self, text: str) -> str:
+        """Paste a block (see models/readings/paste.py); returns what was done: "replace",
+        "overwrite", "cells" or "" (nothing)."""
         grid = split_pasted_text(text)
         if not grid:
-            return
+            return ""
+        model = self.readings_model()
+        sheet = model.sheet
+        filled = sum(1 for r in range(sheet.row_count) if any(
+            sheet.text(r, c).strip() for c in range(sheet.column_count)))
         current = self.currentIndex()
         top = current.row() if current.isValid() else 0
         left = current.column() if current.isValid() else 0
-        changes = [
-            (top + i, left + j, cell.strip())
-            for i, row in enumerate(grid)
-            for j, cell in enumerate(row)
-            if left + j < self.readings_model().columnCount()
-        ]
-        self.readings_model().set_cells(changes, f"Paste {len(grid)} row(s)")
+        selected_rows = {i.row() for i in self.selectedIndexes()}
+        whole = filled > 1 and set(range(filled)) <= selected_rows
+        plan = plan_paste(grid, sheet.columns, filled, top, left, whole)
+        width = sheet.column_count
+        full = [(([""] * plan.left) + r + [""] * width)[:width] for r in plan.rows]
+        label = f"Paste {len(plan.rows)} row(s)" + (" (header row left out)" if plan.header
+                                                    else "")
+        choice = "replace" if plan.replace_sheet else "cells"
+        if plan.leaves_rows:
+            choice = self.ask_paste(len(plan.rows), plan.leaves_rows)
+            if not choice:
+                return ""
+        if choice == "replace":
+            model.replace_all(full, label + ", replacing the sheet", checked=True)
+            return "replace"
+        changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
+                   for j, cell in enumerate(row) if plan.left + j < width]
+        model.set_cells(changes, label)
+        return "overwrite" if plan.leaves_rows else "cells"
+
+    def ask_paste(self, block_rows: int, left_behind: int) -> str:
+        """A shorter block over a longer run: "replace", "overwrite" or "" (cancel)."""
+        box = QMessageBox(QMessageBox.Icon.Question, "Paste readings",
+                          f"The {block_rows} pasted rows land on a run of "
+                          f"{block_rows + left_behind}; {left_behind} row(s) of the old run "
+                          "would stay below them and be analysed with them.", parent=self)
+        replace = box.addButton("Replace the sheet", QMessageBox.ButtonRole.AcceptRole)
+        overwrite = box.addButton(f"Overwrite rows 1–{block_rows} only",
+                                  QMessageBox.ButtonRole.DestructiveRole)
+        box.addButton(QMessageBox.StandardButton.Cancel)
+        box.setDefaultButton(replace)
+        box.exec()
+        clicked = box.clickedButton()
+        return "replace" if clicked is replace else "overwrite" if clicked is overwrite else ""
 
     def clear_selection(self) -> None:
         model = self.readings_model()

@@ -32,12 +32,15 @@ from models.readings.sheet import Column, ColumnKind, ParsedReadings
 __all__ = ["FRINGE", "FringeResult"]
 
 COLUMNS = (
-    Column("u_sin", "u sin", "V", ColumnKind.NUMBER, help="Sine channel voltage"),
-    Column("u_cos", "u cos", "V", ColumnKind.NUMBER, help="Cosine channel voltage"),
+    Column("u_sin", "u sin", "V", ColumnKind.NUMBER, help="Sine channel voltage",
+           aliases=("sin", "正弦", "正弦信号", "A+")),
+    Column("u_cos", "u cos", "V", ColumnKind.NUMBER, help="Cosine channel voltage",
+           aliases=("cos", "余弦", "余弦信号", "B+")),
     Column("theta_deg", "θ phase", "deg", ColumnKind.ANGLE_DEG, required=False,
            help="Electrical (fringe) phase of the sample from a reference, optional: without "
                 "it the phase is estimated from the signals, or taken as N equal steps a period "
-                "when N is given"),
+                "when N is given",
+           aliases=("phase", "θ", "相位", "电相位")),
 )
 
 PARAMETERS = (

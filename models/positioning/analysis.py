@@ -31,19 +31,24 @@ UP, DOWN = ("+", "↑", "up"), ("-", "−", "↓", "down")
 COLUMNS = (
     Column("target", "target", "", ColumnKind.ANGLE_DEG,
            help="Target position P_j the axis was sent to, in the target unit of the set-up "
-                "(degrees, decimal or D°M'S\"; or mm)"),
+                "(degrees, decimal or D°M'S\"; or mm)",
+           aliases=("target position", "目标位置", "目标", "指令位置", "P")),
     Column("run", "run", "", ColumnKind.INTEGER, required=False,
            help="Run number j (optional; without it the k-th approach to a target in a "
-                "direction is run k)"),
+                "direction is run k)",
+           aliases=("次数", "测量次数", "循环")),
     Column("direction", "dir", "+/−", ColumnKind.TEXT, required=False, choices=UP + DOWN,
            help="Approach direction: + (also ↑, up) or − (also ↓, down); when blank, taken "
-                "from the order of the targets"),
+                "from the order of the targets",
+           aliases=("方向", "dir")),
     Column("deviation", "deviation", "", ColumnKind.NUMBER, required=False,
            help="Positional deviation x = actual position reached − target, in the deviation "
-                "unit of the set-up (ISO 230-2 sense)"),
+                "unit of the set-up (ISO 230-2 sense)",
+           aliases=("位置偏差", "定位偏差", "偏差", "x")),
     Column("measured", "measured", "", ColumnKind.ANGLE_DEG, required=False,
            help="Actual position reached, as the reference read it, in the target unit "
-                "(instead of the deviation)"),
+                "(instead of the deviation)",
+           aliases=("actual", "actual position", "实际位置", "测量值")),
 )
 
 PARAMETERS = (

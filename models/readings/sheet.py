@@ -65,6 +65,7 @@ class Column:
     required: bool = True
     help: str = ""
     choices: tuple[str, ...] = ()
+    aliases: tuple[str, ...] = ()  # other headers labs use for it (see readings/headers.py)
 
     @property
     def header(self) -> str:

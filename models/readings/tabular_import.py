@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from models.readings.angles import AngleParseError, parse_angle_deg
+from models.readings.headers import match_header
 from models.readings.sheet import Column
 
 __all__ = ["TableImportError", "RawTable", "map_columns", "read_table", "split_pasted_text"]
@@ -221,26 +222,43 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
         book.close()
 
 
+#: How far below the top a header is looked for (title, lab and date rows above it).
+HEADER_SEARCH_ROWS = 12
+
+
+def _complete(positions: list[int | None], columns: Sequence[Column]) -> bool:
+    return all(p is not None for p, c in zip(positions, columns, strict=True) if c.required)
+
+
 def map_columns(table: RawTable, columns: Sequence[Column]) -> list[list[str]]:
     """Reorder a table's cells into ``columns`` order, by header name or by position.
 
-    Header names match a column's key or title, case-insensitively. A missing
-    required column is an error naming the file and the column.
+    Header names are matched as labs write them (models/readings/headers.py: keys,
+    titles, units in the header, Chinese names). When the first row does not name every
+    required column, the header is looked for in the rows below it (a title block above
+    the table); when found, ``table`` is updated in place (its header, rows and line
+    numbers), so that messages keep naming the file's rows. A missing required column is
+    an error naming the file, the header row and the column.
     """
     if table.header is None:
         width = len(columns)
         return [(list(r) + [""] * width)[:width] for r in table.rows]
-    names = [h.strip().lower() for h in table.header]
-    positions: list[int | None] = []
-    for column in columns:
-        wanted = {column.key.lower(), column.title.lower(), column.header.lower()}
-        found = next((i for i, n in enumerate(names) if n in wanted), None)
+    positions = match_header(table.header, columns)
+    if not _complete(positions, columns):
+        for k, row in enumerate(table.rows[:HEADER_SEARCH_ROWS]):
+            below = match_header(row, columns)
+            if _complete(below, columns):
+                table.header, positions = [c.strip() for c in row], below
+                table.rows, table.line_numbers = table.rows[k + 1:], table.line_numbers[k + 1:]
+                break
+    for column, found in zip(columns, positions, strict=True):
         if found is None and column.required:
             raise TableImportError(
-                f"{table.source}: row 1 (header): no column '{column.key}'; "
-                f"expected headers {','.join(c.key for c in columns)}"
+                f"{table.source}: row 1 (header): no column '{column.key}'; expected headers "
+                f"{','.join(c.key for c in columns)} (or their names, e.g. "
+                f"{column.title!r}{', ' + repr(column.aliases[0]) if column.aliases else ''}); "
+                f"the file's header is {','.join(table.header)[:200]}"
             )
-        positions.append(found)
     out = []
     for row in table.rows:
         out.append([row[p].strip() if p is not None and p < len(row) else "" for p in positions])

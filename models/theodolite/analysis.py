@@ -17,12 +17,15 @@ __all__ = ["THEODOLITE"]
 
 COLUMNS = (
     Column("theta_deg", "θ", "deg", ColumnKind.ANGLE_DEG,
-           help="Indicated angle of the axis under test (decimal or D°M'S\")"),
+           help="Indicated angle of the axis under test (decimal or D°M'S\")",
+           aliases=("theta", "转角", "转台转角", "指示角", "angle")),
     Column("azimuth_deg", "A", "deg", ColumnKind.ANGLE_DEG,
-           help="Theodolite horizontal reading after autocollimating on the mirror"),
+           help="Theodolite horizontal reading after autocollimating on the mirror",
+           aliases=("azimuth", "方位角", "水平角", "水平度盘读数", "Hz")),
     Column("elevation_deg", "E / V", "deg", ColumnKind.ANGLE_DEG,
            help="Theodolite vertical reading: elevation (OZ down), or zenith angle V "
-                "if chosen in the set-up (E = V − 90°)"),
+                "if chosen in the set-up (E = V − 90°)",
+           aliases=("elevation", "E", "V", "俯仰角", "高低角", "竖直角", "天顶距", "zenith")),
     Column("run", "run", "", ColumnKind.INTEGER, required=False,
            help="Pass number when the run was repeated (optional)"),
     Column("direction", "dir", "+/−", ColumnKind.TEXT, required=False, choices=("+", "-"),

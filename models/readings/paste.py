@@ -1,0 +1,67 @@
+"""What a paste into the readings does, decided before anything changes.
+
+* A first row that reads as no value of the columns it lands on, while a later row does,
+  is a header: it is taken off, and when it names the columns (models/readings/headers.py)
+  the cells go to the columns it names, whatever their order.
+* A paste over the whole sheet (every row selected) replaces the sheet.
+* A block of readings (two rows and two columns or more) landing on the first row of a
+  longer run would leave that run's later rows behind it — a silent mix of two runs.
+  That case is not decided here: the window asks whether to replace the sheet or
+  overwrite those rows only.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from models.readings.headers import match_header
+from models.readings.sheet import Column
+
+__all__ = ["PastePlan", "plan_paste"]
+
+
+@dataclass(frozen=True)
+class PastePlan:
+    rows: list[list[str]]  # the block, header taken off; full rows when ``left`` is 0 and mapped
+    left: int  # the sheet column the block's first column goes to
+    header: list[str] | None  # the header row taken off, if any
+    mapped: bool  # the cells were placed by the header's names
+    replace_sheet: bool  # the block replaces every row
+    leaves_rows: int  # filled rows of the run after the block: ask before a silent mix
+
+
+def _parses(column: Column, text: str) -> bool:
+    if not text.strip():
+        return False
+    try:
+        return column.parse(text) is not None
+    except ValueError:
+        return False
+
+
+def _reads_as_values(row: Sequence[str], columns: Sequence[Column], left: int) -> bool:
+    return any(_parses(columns[left + j], cell) for j, cell in enumerate(row)
+               if left + j < len(columns))
+
+
+def plan_paste(grid: Sequence[Sequence[str]], columns: Sequence[Column], filled_rows: int,
+               top: int, left: int, whole_sheet: bool) -> PastePlan:
+    rows = [[c.strip() for c in r] for r in grid]
+    header = None
+    mapped = False
+    if len(rows) >= 2 and any(c for c in rows[0]) \
+            and not _reads_as_values(rows[0], columns, left) \
+            and any(_reads_as_values(r, columns, left) for r in rows[1:]):
+        header, rows = rows[0], rows[1:]
+        positions = match_header(header, columns)
+        if any(p is not None for p in positions):
+            mapped, left = True, 0
+            rows = [[r[p] if p is not None and p < len(r) else "" for p in positions]
+                    for r in rows]
+    if whole_sheet:
+        return PastePlan(rows, left, header, mapped, True, 0)
+    width = max((len(r) for r in rows), default=0)
+    block = len(rows) >= 2 and width >= 2
+    leaves = filled_rows - (top + len(rows)) if block and top == 0 else 0
+    return PastePlan(rows, left, header, mapped, False, max(0, leaves))
