@@ -6,6 +6,7 @@ from __future__ import annotations
 import contextlib
 import logging
 import os
+import re
 import threading
 from pathlib import Path
 
@@ -53,6 +54,15 @@ AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s w
 AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
 AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
 MAX_RECENT = 8
+
+
+def with_chosen_suffix(path: str, chosen_filter: str) -> str:
+    """A name typed without an extension gets the one of the file type chosen in the dialog
+    ("Excel workbook (*.xlsx)" writes out.xlsx, not a CSV named "out")."""
+    if not path or Path(path).suffix:
+        return path
+    match = re.search(r"\*(\.[A-Za-z0-9]+)", chosen_filter or "")
+    return path + match.group(1) if match else path
 
 
 def default_presenters() -> list[WorkbenchPresenter]:
@@ -108,8 +118,10 @@ class MainWindow(QMainWindow):
             self.tabs.addTab(presenter.view, presenter.kind.title)
             self.undo_group.addStack(presenter.undo_stack)
             presenter.import_failed.connect(self._on_import_failed)
+            presenter.imported.connect(self._on_imported)
             presenter.modified_changed.connect(self._on_modified_changed)
         self.tabs.currentChanged.connect(self._on_tab_changed)
+        self.setAcceptDrops(True)
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
         self.statusBar().showMessage("Ready")
@@ -159,7 +171,8 @@ class MainWindow(QMainWindow):
         undo = self.undo_group.createUndoAction(self, "&Undo")
         undo.setShortcut(QKeySequence.StandardKey.Undo)
         redo = self.undo_group.createRedoAction(self, "&Redo")
-        redo.setShortcut(QKeySequence.StandardKey.Redo)
+        redo.setShortcuts([QKeySequence(QKeySequence.StandardKey.Redo),
+                           QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
         edit_menu.addAction(undo)
         edit_menu.addAction(redo)
         self.undo_action, self.redo_action = undo, redo
@@ -169,9 +182,19 @@ class MainWindow(QMainWindow):
         self._action(edit_menu, "&Insert row", lambda: self.current.view.table.insert_row())
         self._action(edit_menu, "&Delete rows", lambda: self.current.view.table.delete_rows())
 
+        view_menu = self.menuBar().addMenu("&View")
+        for text, keys, step in (("&Next workbench", ("Ctrl+PgDown", "Ctrl+Tab"), 1),
+                                 ("&Previous workbench", ("Ctrl+PgUp", "Ctrl+Shift+Tab"), -1)):
+            action = self._action(view_menu, text, lambda _=False, s=step: self.switch_tab(s))
+            action.setShortcuts([QKeySequence(k) for k in keys])
+            action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
+
         help_menu = self.menuBar().addMenu("&Help")
         self._action(help_menu, "&About AngleBench", self.show_about)
         self._refresh_recent_menu()
+
+    def switch_tab(self, step: int) -> None:
+        self.tabs.setCurrentIndex((self.tabs.currentIndex() + step) % self.tabs.count())
 
     @property
     def current(self) -> WorkbenchPresenter:
@@ -301,6 +324,35 @@ class MainWindow(QMainWindow):
     def _on_import_failed(self, message: str) -> None:
         self.tell("Cannot import", message)
 
+    def _on_imported(self, path: str, rows: int) -> None:
+        """Say that it worked (and replace an earlier error at once)."""
+        self.statusBar().showMessage(f"Imported {Path(path).name}: {rows} row(s) "
+                                     "(Edit › Undo restores the previous readings)", 8000)
+
+    # -- dropping files on the window -------------------------------------------------
+    DROPPABLE = (".csv", ".txt", ".tsv", ".xlsx", ".xlsm", ".json")
+
+    def _dropped_paths(self, mime) -> list[str]:
+        return [u.toLocalFile() for u in mime.urls()
+                if u.isLocalFile() and u.toLocalFile().lower().endswith(self.DROPPABLE)]
+
+    def dragEnterEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        if event.mimeData().hasUrls() and self._dropped_paths(event.mimeData()):
+            event.acceptProposedAction()
+
+    def dropEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        """A readings file goes into the current workbench (one undo step); a project file
+        opens (asking about unsaved work)."""
+        paths = self._dropped_paths(event.mimeData())
+        if not paths:
+            return
+        event.acceptProposedAction()
+        path = paths[0]
+        if path.lower().endswith(".json"):
+            self.open_project(path)
+        else:
+            self.current.start_import(path)
+
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
         self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
@@ -407,9 +459,10 @@ class MainWindow(QMainWindow):
         return text if ok else ""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, title, str(Path(self._last_dir()) / suggested),
-                                              file_filter)
-        return path
+        path, chosen = QFileDialog.getSaveFileName(self, title,
+                                                   str(Path(self._last_dir()) / suggested),
+                                                   file_filter)
+        return with_chosen_suffix(path, chosen)
 
     def show_status(self, text: str, milliseconds: int) -> None:
         self.statusBar().showMessage(text, milliseconds)

@@ -58,7 +58,9 @@ class ReadingsTableModel(QAbstractTableModel):
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
             reason = self.sheet.cell_error(r, c)
-            return f"Row {r + 1}, {self.sheet.columns[c].key}: {reason}" if reason else None
+            column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
+            return (f"Row {r + 1}, {column.header} ({column.key}): {reason}" if reason
+                    else None)
         return None
 
     def headerData(self, section: int, orientation: Qt.Orientation,  # noqa: N802

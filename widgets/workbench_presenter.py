@@ -111,6 +111,7 @@ class WorkbenchPresenter(QObject):
     modified_changed = Signal(bool)
     analysed = Signal()
     import_failed = Signal(str)
+    imported = Signal(str, int)  # file, rows read
 
     #: the view a presenter makes when none is given (a test gives a mock)
     view_class: type[WorkbenchView] | None = None
@@ -229,6 +230,7 @@ class WorkbenchPresenter(QObject):
         """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError."""
         rows = map_columns(read_table(path), self.kind.columns)
         self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self.imported.emit(str(path), len(rows))
         self._fit_columns()
         self.refresh()
 
@@ -270,6 +272,7 @@ class WorkbenchPresenter(QObject):
             self.import_failed.emit(error)
             return
         self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self.imported.emit(str(path), len(rows))
         self._fit_columns()
         # queued behind the table's own relayout: started now, the analysis worker would
         # compete with it for the GIL and the relayout of a million rows would stall

@@ -5,6 +5,7 @@ period. Widgets only: the presenter hands it arrays to draw."""
 
 from __future__ import annotations
 
+import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 
@@ -104,8 +105,12 @@ class FringeView(WorkbenchView):
                                  figures["lissajous"].series, strict=True):
             curve.setData(series.x, series.y)
         sin_bars, cos_bars = figures["spectrum"].series
-        p.sin_bars.setOpts(x=sin_bars.x, height=sin_bars.y, width=0.35)
-        p.cos_bars.setOpts(x=cos_bars.x, height=cos_bars.y, width=0.35)
+        # log10 amplitudes: bars rise from a decade below the smallest, so the tallest bar
+        # is the largest harmonic (from 0, i.e. 1 V, the smallest would hang longest)
+        logs = np.concatenate([sin_bars.y, cos_bars.y])
+        floor = float(np.floor(np.min(logs[np.isfinite(logs)], initial=0.0))) - 1.0
+        p.sin_bars.setOpts(x=sin_bars.x, y0=floor, height=sin_bars.y - floor, width=0.35)
+        p.cos_bars.setOpts(x=cos_bars.x, y0=floor, height=cos_bars.y - floor, width=0.35)
         drift = figures["drift"].series
         for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
             curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))

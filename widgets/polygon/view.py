@@ -63,7 +63,7 @@ class PolygonView(WorkbenchView):
         self.add_plot_tab(self.error_plot, "Error over the circle")
         self.add_plot_tab(self.tilt_plot, "Vertical readings / tilt")
         self.add_plot_tab(self.harmonics, "Harmonics")
-        self.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
+        self.add_plot_tab(self.simulation, "What-if: set-up errors")
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)

@@ -14,7 +14,7 @@ class TheodoliteView(WorkbenchView):
         self.error_plot = ErrorPlot(residual_label="E residual (\")")
         self.simulation = TheodoliteSimulation()
         self.add_plot_tab(self.error_plot, "Error curves")
-        self.add_plot_tab(self.simulation, "Simulation (Figs 3–6)")
+        self.add_plot_tab(self.simulation, "What-if: set-up errors")
 
     def show_figures(self, errors, residuals) -> None:
         """The declared figures (models/theodolite/plots.py)."""
