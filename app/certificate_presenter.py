@@ -22,6 +22,10 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
+#: details typed for one workbench that the next workbench's certificate is offered
+SHARED_DETAILS = ("lab_name", "lab_address", "lab_accreditation", "customer_name",
+                  "customer_address", "operator", "approver", "calibration_date",
+                  "temperature_c", "humidity_pct")
 REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folder
 
 
@@ -43,6 +47,9 @@ class CertificateView(Protocol):
 
     def ask_change_note(self, revision: PendingRevision) -> str:
         """What changed and why (empty: cancel the amendment's export)."""
+
+    def confirm_draft(self, missing: list[str]) -> bool:
+        """Export a DRAFT although these details are missing?"""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str: ...
 
@@ -90,7 +97,11 @@ class CertificatePresenter:
     def details(self, key: str) -> CertificateMetadata:
         """The workbench's details from the project, the lab's defaults filled in; a stored
         detail that no longer reads is kept aside (``problems``), not the others blanked."""
-        stored = self._metadata().get("certificates", {}).get(key)
+        certificates = self._metadata().get("certificates", {})
+        stored = certificates.get(key)
+        last = certificates.get(self._metadata().get("certificates_last", ""))
+        if stored is None and isinstance(last, dict):  # offered what was typed for another
+            stored = {k: last[k] for k in SHARED_DETAILS if k in last}
         meta, self.problems = CertificateMetadata.from_dict_lenient(stored)
         self.raw = stored if isinstance(stored, dict) else {}
         try:
@@ -104,6 +115,7 @@ class CertificatePresenter:
         if certificates.get(key) != meta.to_dict():
             certificates[key] = meta.to_dict()
             metadata["certificates"] = certificates
+            metadata["certificates_last"] = key
             self._mark_modified()  # the details are saved with the project
 
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
@@ -143,6 +155,8 @@ class CertificatePresenter:
         draft = draft_reasons(entered)
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
+        if draft and not self.view.confirm_draft(draft):
+            return False
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:

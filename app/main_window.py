@@ -421,6 +421,7 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:
             presenter.load_sample()
         self._update_title()
+        self.statusBar().showMessage("Bundled samples loaded in every workbench", 8000)
 
     # -- certificates -----------------------------------------------------------------
     # -- certificates: the CertificatePresenter decides, the window shows ----------------
@@ -449,6 +450,16 @@ class MainWindow(QMainWindow):
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return None
         return dialog.metadata()
+
+    def confirm_draft(self, missing: list[str]) -> bool:
+        answer = self.ask(
+            "Export a draft?",
+            "These details are missing: " + ", ".join(missing) + ". The PDF will be marked "
+            "DRAFT, is not a certificate, and nothing is recorded in the register. Export the "
+            "draft anyway?",
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
 
     def ask_change_note(self, revision) -> str:
         what = "replaces" if revision.replacement else "amends"

@@ -50,6 +50,8 @@ class AnalysisKind:
     # result -> the figures the register keeps to show an instrument's drift over its
     # calibrations ({"name (unit)": value})
     headline: Callable[[Any], dict[str, float]] | None = None
+    # result -> the result in one line, shown above everything else in the window
+    verdict: Callable[[Any], str] | None = None
 
     @property
     def default_settings(self) -> dict[str, Any]:

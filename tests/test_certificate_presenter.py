@@ -135,3 +135,19 @@ def test_export_errors_are_told_not_raised(parts, samples_dir, tmp_path):
     kind, result = _theodolite(samples_dir)
     assert not presenter.export_results(kind, result, {}, "run.csv")
     assert "Cannot export" in view.tell.call_args.args[0]
+
+
+def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(parts, samples_dir,
+                                                                           tmp_path):
+    presenter, view, metadata, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = CertificateMetadata(
+        lab_name="Angle Lab", customer_name="Acme", operator="Li")
+    view.confirm_draft.return_value = False
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    assert "reference standards" in view.confirm_draft.call_args.args[0]
+    view.choose_save_path.assert_not_called()
+    offered = presenter.details("polygon")  # nothing typed for the polygon yet
+    assert (offered.lab_name, offered.customer_name, offered.operator) == \
+        ("Angle Lab", "Acme", "Li")
+    assert offered.item_serial == ""  # the item is the next workbench's own

@@ -97,3 +97,47 @@ def test_spectrum_bars_rise_with_the_harmonic(window):
     assert np.all(heights > 0)
     assert list(np.argsort(heights)) == list(np.argsort(amplitudes))
     np.testing.assert_allclose(bars["y0"] + heights, np.log10(amplitudes))
+
+
+def test_results_read_at_a_glance(window):
+    """The verdict in one line on top, every warning in its strip, the figures in a table,
+    and the result box resizable against the plots."""
+    window.load_all_samples()
+    polygon = window.presenter("polygon")
+    view = polygon.view
+    assert view.verdict.text().startswith("Grade 3 (±1\") met")
+    assert "exceeds" in view.verdict.text()
+    assert view.warnings.text().count("⚠") == len(polygon.result.warnings)
+    names = [view.figures.item(r, 0).text() for r in range(view.figures.rowCount())]
+    assert names == ["corrected peak-to-peak (\")", "pyramidal tilt ψ (\")"]
+    assert float(view.figures.item(0, 1).text()) == pytest.approx(
+        polygon.result.stats.peak_to_peak, rel=1e-3)
+    before, plots = view.result_splitter.sizes()
+    view.result_splitter.setSizes([before + 150, plots - 150])
+    assert view.result_splitter.sizes()[0] > before  # the technician gave it more room
+    positioning = window.presenter("positioning").view
+    assert positioning.verdict.text().startswith("ISO 230-2:2014: A = 22.447\"")
+    window.presenter("theodolite").table_model.set_cells([(r, 0, "") for r in range(41)])
+    window.presenter("theodolite").refresh()
+    assert window.presenter("theodolite").view.verdict.text().startswith("No result")
+    assert window.presenter("theodolite").view.figures.rowCount() == 0
+
+
+def test_every_plot_copies_and_saves_its_image_by_name(window, qtbot):
+    import pyqtgraph as pg
+    from PySide6.QtWidgets import QApplication
+
+    from widgets.plot_image import image_file_name
+
+    window.load_all_samples()
+    view = window.presenter("polygon").view
+    error_plot = view.plot_tabs.widget(0)
+    menu = next(i for i in error_plot.graphics.scene().items() if isinstance(i, pg.ViewBox)).menu
+    actions = {a.text(): a for a in menu.actions()}
+    assert "Copy image" in actions and "Save image…" in actions
+    QApplication.clipboard().clear()
+    actions["Copy image"].trigger()
+    image = QApplication.clipboard().image()
+    assert image.width() > 200 and image.height() > 200
+    assert image_file_name("Polygon encoder test Error over the circle") == \
+        "polygon-encoder-test-error-over-the-circle.png"

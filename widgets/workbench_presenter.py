@@ -335,9 +335,15 @@ class WorkbenchPresenter(QObject):
         if result is None:
             self.clear_result()
             self.view.set_summary(f"No result: {error}" if error else "No readings yet.")
+            self.view.set_verdict(f"No result: {error}" if error else "")
+            self.view.set_figures({})
             self.view.set_warnings(input_warnings)
         else:
             self.view.set_summary(self.kind.summary(result))
+            self.view.set_verdict(self.kind.verdict(result) if self.kind.verdict else "")
+            self.view.set_figures({k: v for k, v in (self.kind.headline(result).items()
+                                                     if self.kind.headline else ())
+                                   if isinstance(v, int | float) and v == v})
             self.view.set_warnings(input_warnings + list(getattr(result, "warnings", [])))
             self.show_result(result)
         self.analysed.emit()

@@ -6,17 +6,22 @@ from __future__ import annotations
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
+    QAbstractItemView,
     QGroupBox,
+    QHBoxLayout,
     QHeaderView,
     QLabel,
     QPlainTextEdit,
     QProgressBar,
     QSplitter,
+    QTableWidget,
+    QTableWidgetItem,
     QTabWidget,
     QVBoxLayout,
     QWidget,
 )
 
+from widgets.plot_image import add_image_actions
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
 
@@ -40,7 +45,19 @@ class WorkbenchView(QWidget):
         font.setStyleHint(QFont.StyleHint.Monospace)
         font.setPointSize(9)
         self.summary.setFont(font)
-        self.summary.setMaximumHeight(135)
+        self.verdict = QLabel()
+        self.verdict.setWordWrap(True)
+        self.verdict.setTextFormat(Qt.TextFormat.PlainText)
+        self.verdict.setStyleSheet("QLabel { font-weight: bold; padding: 2px; }")
+        self.figures = QTableWidget(0, 2)
+        self.figures.setHorizontalHeaderLabels(["figure", "value"])
+        self.figures.verticalHeader().hide()
+        self.figures.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        header = self.figures.horizontalHeader()
+        header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
+        header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
+        self.figures.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.figures.setFixedWidth(320)
         self.warnings = QLabel()
         self.warnings.setWordWrap(True)
         self.warnings.setTextFormat(Qt.TextFormat.PlainText)
@@ -72,10 +89,19 @@ class WorkbenchView(QWidget):
         fit_layout = QVBoxLayout(fit_box)
         fit_layout.setContentsMargins(2, 2, 2, 2)
         fit_layout.addWidget(self.busy)
-        fit_layout.addWidget(self.summary)
-        fit_layout.addWidget(self.warnings)
-        right_layout.addWidget(fit_box)
-        right_layout.addWidget(self.plot_tabs, 1)
+        fit_layout.addWidget(self.verdict)
+        fit_layout.addWidget(self.warnings)  # every warning, above the text, never scrolled
+        details = QHBoxLayout()
+        details.addWidget(self.summary, 1)
+        details.addWidget(self.figures)
+        fit_layout.addLayout(details, 1)
+        # the result and the plots share the height; the technician drags the line between
+        self.result_splitter = QSplitter(Qt.Orientation.Vertical)
+        self.result_splitter.addWidget(fit_box)
+        self.result_splitter.addWidget(self.plot_tabs)
+        self.result_splitter.setStretchFactor(1, 1)
+        self.result_splitter.setSizes([220, 640])
+        right_layout.addWidget(self.result_splitter, 1)
 
         splitter = QSplitter(Qt.Orientation.Horizontal)
         splitter.addWidget(left)
@@ -126,9 +152,24 @@ class WorkbenchView(QWidget):
 
     def add_plot_tab(self, widget: QWidget, title: str) -> None:
         self.plot_tabs.addTab(widget, title)
+        add_image_actions(widget, f"{self.title} {title}")
 
     def set_summary(self, text: str) -> None:
         self.summary.setPlainText(text)
+
+    def set_verdict(self, text: str) -> None:
+        self.verdict.setText(text)
+        self.verdict.setVisible(bool(text))
+
+    def set_figures(self, figures: dict[str, float]) -> None:
+        """The headline figures, each with its unit in its name."""
+        self.figures.setRowCount(len(figures))
+        for row, (name, value) in enumerate(figures.items()):
+            self.figures.setItem(row, 0, QTableWidgetItem(name))
+            item = QTableWidgetItem(f"{value:.4g}")
+            item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+            self.figures.setItem(row, 1, item)
+        self.figures.setVisible(bool(figures))
 
     def set_warnings(self, warnings: list[str]) -> None:
         self.warnings.setText("\n".join(f"⚠ {w}" for w in warnings))

@@ -408,6 +408,9 @@ FRINGE = AnalysisKind(
     certificate=fringe_certificate,
     presenter="widgets.fringe.presenter:FringePresenter",
     correction_table=_correction_table,
+    verdict=lambda r: (f"Interpolation error {np.ptp(r.raw_error):.3f}{r.unit_symbol} peak-to-peak "
+                       f"({np.ptp(r.raw_error) / r.period_length * 100:.2f} % of a period); "
+                       f"{np.ptp(r.compensated_error):.3f}{r.unit_symbol} after compensation"),
     headline=lambda r: {f"as-found peak-to-peak ({r.unit})": float(np.ptp(r.raw_error)),
                         f"compensated peak-to-peak ({r.unit})":
                             float(np.ptp(r.compensated_error))},

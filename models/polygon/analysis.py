@@ -431,6 +431,13 @@ POLYGON = AnalysisKind(
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
     positioning_rows=positioning_rows,
+    verdict=lambda r: ("RUN INVALID: closure failed. " if not r.valid else "")
+    + (f"Grade {r.grade} (±{GRADE_ACCURACY_ARCSEC[r.grade]:g}\") "
+       f"{'met' if r.accuracy_ok else 'NOT met'}: corrected error peak-to-peak "
+       f"{r.stats.peak_to_peak:.2f}\"; "
+       + ("tilt within the allowed" if r.sets[0].tilt is None
+          or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec
+          else f"tilt ψ = {r.sets[0].tilt.psi_arcsec:.0f}\" exceeds {r.allowed_tilt_arcsec:.0f}\"")),
     headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
                         "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
                         if r.sets[0].tilt else float("nan")},

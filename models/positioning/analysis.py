@@ -311,6 +311,12 @@ POSITIONING = AnalysisKind(
     check_settings=_check_units,
     presenter="widgets.positioning.presenter:PositioningPresenter",
     correction_table=_correction_table,
+    verdict=lambda r: (f"{STANDARDS[r.standard].split(' (')[0]}: "
+                       + ", ".join(f"{k} = {_figure(r.iso.figures.get(k), r.symbol)}"
+                                   for k in (("A", "R", "B") if r.bidirectional else
+                                             tuple(f"{f}_{n}" for n, _, _ in
+                                                   r.directions_present() for f in ("A", "R"))))
+                       + ("" if r.minimum_runs_met else " — fewer than 5 runs: flagged")),
     headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
                         for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
                         if k in r.iso.figures},

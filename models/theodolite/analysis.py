@@ -175,6 +175,11 @@ THEODOLITE = AnalysisKind(
     certificate=theodolite_certificate,
     presenter="widgets.theodolite.presenter:TheodolitePresenter",
     positioning_rows=positioning_rows,
+    verdict=lambda r: (f"Corrected error {r.corrected_stats.min:+.2f}\" … "
+                       f"{r.corrected_stats.max:+.2f}\" (peak-to-peak "
+                       f"{r.corrected_stats.peak_to_peak:.2f}\"); the set-up contributed "
+                       f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\" "
+                       "to the raw peak-to-peak"),
     headline=lambda r: {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
                         "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
 )

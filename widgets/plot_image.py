@@ -1,0 +1,45 @@
+"""Right-click on any plot: "Copy image" and "Save image…", named after the plot's tab
+(pyqtgraph's own export dialog lists its items as "Plot", "Plot", "Plot")."""
+
+from __future__ import annotations
+
+import re
+
+import pyqtgraph as pg
+from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
+
+__all__ = ["add_image_actions", "copy_image", "image_file_name"]
+
+
+def image_file_name(title: str) -> str:
+    return (re.sub(r"[^\w\-]+", "-", title, flags=re.UNICODE).strip("-").lower() or "plot") \
+        + ".png"
+
+
+def copy_image(widget: QWidget) -> None:
+    QApplication.clipboard().setImage(widget.grab().toImage())
+
+
+def _save_image(widget: QWidget, title: str) -> None:
+    path, _ = QFileDialog.getSaveFileName(widget, "Save image", image_file_name(title),
+                                          "PNG image (*.png)")
+    if path:
+        if not path.lower().endswith(".png"):
+            path += ".png"
+        widget.grab().save(path)
+
+
+def add_image_actions(widget: QWidget, title: str) -> int:
+    """Add the two actions to the right-click menu of every plot inside ``widget``; the
+    image is the whole widget (all its panels). Returns how many menus got them."""
+    count = 0
+    for view in widget.findChildren(pg.GraphicsView):
+        for item in view.scene().items():
+            if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
+                item.menu.addSeparator()
+                item.menu.addAction("Copy image").triggered.connect(
+                    lambda _=False, w=widget: copy_image(w))
+                item.menu.addAction("Save image…").triggered.connect(
+                    lambda _=False, w=widget, t=title: _save_image(w, t))
+                count += 1
+    return count
