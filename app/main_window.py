@@ -24,6 +24,7 @@ from PySide6.QtWidgets import (
     QMainWindow,
     QMessageBox,
     QTabWidget,
+    QWidget,
 )
 
 from app.certificate_presenter import CertificatePresenter
@@ -188,10 +189,43 @@ class MainWindow(QMainWindow):
             action = self._action(view_menu, text, lambda _=False, s=step: self.switch_tab(s))
             action.setShortcuts([QKeySequence(k) for k in keys])
             action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
+        focus = self._action(view_menu, "Next &pane (table, set-up, result, plots)",
+                             self.focus_next_pane, QKeySequence("F6"))
+        focus.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
 
         help_menu = self.menuBar().addMenu("&Help")
+        self._action(help_menu, "&Quick guide", self.show_guide,
+                     QKeySequence(QKeySequence.StandardKey.HelpContents))
         self._action(help_menu, "&About AngleBench", self.show_about)
         self._refresh_recent_menu()
+
+    def focus_next_pane(self) -> None:
+        """F6: the readings table, the set-up, the result, the plots, and round again."""
+        view = self.current.view
+        panes = [view.table, view.settings, view.summary, view.plot_tabs]
+        here = QApplication.focusWidget()
+        index = next((i for i, pane in enumerate(panes)
+                      if here is not None and (here is pane or pane.isAncestorOf(here))), -1)
+        target = panes[(index + 1) % len(panes)]
+        first = target.focusWidget() if target is view.settings else None
+        fields = [w for w in target.findChildren(QWidget)
+                  if w.focusPolicy() != Qt.FocusPolicy.NoFocus] if target is view.settings else []
+        (first or (fields[0] if fields else target)).setFocus(Qt.FocusReason.ShortcutFocusReason)
+
+    GUIDE = (
+        "Type or paste the readings on the left (Return goes to the next row's first reading; "
+        "a nominal step fills θ, face or target). The result, its warnings and the plots "
+        "follow every edit.\n\n"
+        "Keys: Ctrl+PgDn / Ctrl+PgUp or Ctrl+Tab switch workbenches; F6 moves between table, "
+        "set-up, result and plots; Ctrl+Z / Ctrl+Shift+Z undo and redo; Ctrl+E exports the "
+        "certificate; right-click a plot to copy or save its image.\n\n"
+        "Errors are errors of indication (indicated − reference); the positioning workbench "
+        "keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the "
+        "register (File › Certificate register). Drop a CSV or XLSX on the window to import "
+        "it. The README next to the program explains every method and figure.")
+
+    def show_guide(self) -> None:
+        QMessageBox.information(self, "AngleBench — quick guide", self.GUIDE)
 
     def switch_tab(self, step: int) -> None:
         self.tabs.setCurrentIndex((self.tabs.currentIndex() + step) % self.tabs.count())

@@ -52,6 +52,10 @@ class AnalysisKind:
     headline: Callable[[Any], dict[str, float]] | None = None
     # result -> the result in one line, shown above everything else in the window
     verdict: Callable[[Any], str] | None = None
+    # instrument-style entry: the column a nominal step fills as rows are added, and the
+    # column where a row's readings begin (Return after an edit goes there, one row down)
+    nominal_column: str = ""
+    entry_column: str = ""
 
     @property
     def default_settings(self) -> dict[str, Any]:

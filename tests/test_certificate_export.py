@@ -180,3 +180,22 @@ def test_cli_writes_certificate_and_results(tmp_path):
     assert done.returncode == 2
     assert "bad.json" in done.stderr and "humidity_pct" in done.stderr
     assert "Traceback" not in done.stderr
+
+
+def test_text_no_bundled_font_can_print_is_refused_not_dropped(samples_dir):
+    import pytest as _pytest
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    korean = kind.certificate_document(result, CertificateMetadata(customer_name="한국광학 Ltd"))
+    with _pytest.raises(ValueError, match="no bundled font can print: '한국광학'"):
+        certificate_pdf_bytes(korean)
+    chinese = kind.certificate_document(result, CertificateMetadata(customer_name="长春光电"))
+    assert certificate_pdf_bytes(chinese).startswith(b"%PDF")

@@ -141,3 +141,54 @@ def test_every_plot_copies_and_saves_its_image_by_name(window, qtbot):
     assert image.width() > 200 and image.height() > 200
     assert image_file_name("Polygon encoder test Error over the circle") == \
         "polygon-encoder-test-error-over-the-circle.png"
+
+
+def test_instrument_style_entry_fills_theta_and_moves_to_the_next_reading(window, qtbot):
+    presenter = window.presenter("theodolite")
+    view, table = presenter.view, presenter.view.table
+    assert (table.nominal_column, table.entry_column) == (0, 1)
+    view.step.setValue(2.0)
+    for r, (theta, az, el) in enumerate([("-4", "-4.0001", "0.1"), ("", "-1.9999", "0.2")]):
+        if theta:
+            table.setCurrentIndex(presenter.table_model.index(r, 0))
+            qtbot.keyClick(table, Qt.Key.Key_F2)
+            qtbot.keyClicks(table.focusWidget(), theta)
+            qtbot.keyClick(table.focusWidget(), Qt.Key.Key_Tab)
+        for text in (az, el):
+            qtbot.keyClick(table, Qt.Key.Key_F2)
+            qtbot.keyClicks(table.focusWidget(), text)
+            qtbot.keyClick(table.focusWidget(),
+                           Qt.Key.Key_Tab if text == az else Qt.Key.Key_Return)
+        # Return (Qt commits it queued): one row down, at the first reading; θ from the step
+        qtbot.waitUntil(lambda r=r: table.currentIndex().row() == r + 1, timeout=2000)
+        assert table.currentIndex().column() == 1
+    assert [presenter.sheet.text(r, 0) for r in range(3)] == ["-4", "-2", "0"]
+    assert presenter.sheet.text(1, 1) == "-1.9999"
+    presenter.refresh()
+    assert view.next_label.text() == f"next: row {presenter.sheet.row_count + 1}"
+    assert not window.presenter("fringe").view.step.isVisibleTo(window.presenter("fringe").view)
+
+
+def test_f6_walks_the_panes_and_f1_has_a_guide(window, qtbot, monkeypatch):
+    from PySide6.QtWidgets import QApplication
+
+    view = window.current.view
+    view.table.setFocus()
+    qtbot.waitUntil(lambda: QApplication.focusWidget() is view.table)
+    visited = []
+    for _ in range(4):
+        window.focus_next_pane()
+        here = QApplication.focusWidget()
+        visited.append(next(name for name, pane in (("table", view.table),
+                                                     ("set-up", view.settings),
+                                                     ("result", view.summary),
+                                                     ("plots", view.plot_tabs))
+                            if here is pane or pane.isAncestorOf(here)))
+    assert visited == ["set-up", "result", "plots", "table"]
+    shown = []
+    monkeypatch.setattr(QMessageBox, "information", lambda *a: shown.append(a[2]))
+    help_action = next(a for a in window.menuBar().actions() if a.text() == "&Help").menu()
+    guide = next(a for a in help_action.actions() if a.text() == "&Quick guide")
+    assert guide.shortcut().toString() == "F1"
+    guide.trigger()
+    assert "Ctrl+PgDn" in shown[0]

@@ -4,7 +4,14 @@ from __future__ import annotations
 
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QGuiApplication, QKeySequence
-from PySide6.QtWidgets import QAbstractItemView, QHeaderView, QMenu, QMessageBox, QTableView
+from PySide6.QtWidgets import (
+    QAbstractItemDelegate,
+    QAbstractItemView,
+    QHeaderView,
+    QMenu,
+    QMessageBox,
+    QTableView,
+)
 
 from models.readings.paste import plan_paste
 from models.readings.tabular_import import split_pasted_text
@@ -22,7 +29,12 @@ class ReadingsTableView(QTableView):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
+        self.nominal_column: int | None = None  # filled from the step as rows are added
+        self.entry_column = 0  # where a row's readings begin
+        self.nominal_step = 0.0  # 0: off
         self._setup_ui()
+        # after the view's own handling: the edit is committed and the editor closed
+        self.itemDelegate().closeEditor.connect(self._editor_closed)
 
     def _setup_ui(self) -> None:
         self.setSelectionMode(QAbstractItemView.SelectionMode.ExtendedSelection)
@@ -46,6 +58,32 @@ class ReadingsTableView(QTableView):
         action.triggered.connect(slot)
         self.addAction(action)
         return action
+
+    # -- instrument-style entry ----------------------------------------------
+    def _editor_closed(self, _editor, hint) -> None:
+        """Return after typing a reading goes to the next row's first reading cell (not the
+        same cell), filling that row's nominal value from the step when it is empty."""
+        row = self.currentIndex().row()
+        if hint == QAbstractItemDelegate.EndEditHint.SubmitModelCache and row >= 0:
+            self.next_row(row)
+
+    def next_row(self, row: int) -> None:
+        model = self.readings_model()
+        sheet = model.sheet
+        nominal = self.nominal_column
+        if self.nominal_step and nominal is not None and row < sheet.row_count:
+            text = sheet.text(row, nominal).strip()
+            below = sheet.text(row + 1, nominal).strip() if row + 1 < sheet.row_count else ""
+            try:
+                value = float(text.replace(",", "."))
+            except ValueError:
+                value = None
+            if value is not None and not below:
+                model.set_cells([(row + 1, nominal, f"{value + self.nominal_step:.10g}")],
+                                "Next nominal")
+        target = model.index(row + 1, self.entry_column)
+        self.setCurrentIndex(target)
+        self.scrollTo(target)
 
     def readings_model(self) -> ReadingsTableModel:
         model = self.model()

@@ -147,6 +147,11 @@ class WorkbenchPresenter(QObject):
         self._timer.timeout.connect(self.refresh)
         self.build_settings()
         self.view.set_settings(self._settings)
+        keys = [c.key for c in kind.columns]
+        nominal = keys.index(kind.nominal_column) if kind.nominal_column in keys else None
+        self.view.set_entry_columns(nominal, keys.index(kind.entry_column)
+                                    if kind.entry_column in keys else 0,
+                                    kind.columns[nominal].title if nominal is not None else "")
         self.table_model.sheet_changed.connect(self.schedule_refresh)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self.view.subscribe(self)
@@ -332,6 +337,7 @@ class WorkbenchPresenter(QObject):
         self.view.set_readings_caption(
             f"Readings — {parsed.n} used" + (f", {len(parsed.errors)} bad cell(s)"
                                              if parsed.errors else ""))
+        self.view.set_next_row(f"next: row {self.sheet.row_count + 1}")
         if result is None:
             self.clear_result()
             self.view.set_summary(f"No result: {error}" if error else "No readings yet.")

@@ -7,6 +7,7 @@ from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QDoubleSpinBox,
     QGroupBox,
     QHBoxLayout,
     QHeaderView,
@@ -39,6 +40,15 @@ class WorkbenchView(QWidget):
         self.table = ReadingsTableView()
         self.settings = SettingsForm()
         self.readings_label = QLabel("Readings")
+        self.step_label = QLabel("nominal step")
+        self.step = QDoubleSpinBox()
+        self.step.setRange(0.0, 1e6)
+        self.step.setDecimals(4)
+        self.step.setSpecialValueText("off")
+        self.step.setToolTip("Typing a row and pressing Return fills the next row's nominal "
+                             "value with this step (0: off) and moves to its first reading")
+        self.step.valueChanged.connect(lambda v: setattr(self.table, "nominal_step", v))
+        self.next_label = QLabel()
         self.summary = QPlainTextEdit()
         self.summary.setReadOnly(True)
         font = QFont("DejaVu Sans Mono")
@@ -74,7 +84,12 @@ class WorkbenchView(QWidget):
         left = QWidget()
         left_layout = QVBoxLayout(left)
         left_layout.setContentsMargins(0, 0, 0, 0)
-        left_layout.addWidget(self.readings_label)
+        entry = QHBoxLayout()
+        entry.addWidget(self.readings_label, 1)
+        entry.addWidget(self.next_label)
+        entry.addWidget(self.step_label)
+        entry.addWidget(self.step)
+        left_layout.addLayout(entry)
         left_layout.addWidget(self.table, 1)
         setup_box = QGroupBox("Set-up")
         setup_layout = QVBoxLayout(setup_box)
@@ -140,6 +155,15 @@ class WorkbenchView(QWidget):
             header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
             if rows <= measure_rows:
                 self.table.resizeColumnsToContents()
+
+    def set_entry_columns(self, nominal: int | None, entry: int, nominal_title: str) -> None:
+        self.table.nominal_column, self.table.entry_column = nominal, entry
+        self.step_label.setText(f"next {nominal_title} +" if nominal is not None else "")
+        self.step_label.setVisible(nominal is not None)
+        self.step.setVisible(nominal is not None)
+
+    def set_next_row(self, text: str) -> None:
+        self.next_label.setText(text)
 
     def add_setting(self, parameter) -> None:
         self.settings.add_parameter(parameter)

@@ -60,14 +60,35 @@ def _latin_coverage() -> frozenset[int]:
         return frozenset(font.getBestCmap())
 
 
+@functools.cache
+def _cjk_coverage() -> frozenset[int]:
+    from fontTools.ttLib import TTFont
+
+    with TTFont(font_files()["cjk"], lazy=True) as font:
+        return frozenset(font.getBestCmap())
+
+
+def _document_texts(document: CertificateDocument) -> list[str]:
+    tables = (document.parameters, document.results, document.statistics)
+    return [document.source_name, document.method, document.method_reference,
+            *document.warnings, *document.statements, document.standard,
+            *(cell for t in tables for row in (t.header, *t.rows) for cell in row),
+            *(f"{k} {v}" for k, v in document.settings),
+            json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
+
+
+def unprintable(document: CertificateDocument) -> str:
+    """The characters of the document that no bundled font has (they would be dropped
+    from the PDF without a word)."""
+    covered = _latin_coverage() | _cjk_coverage()
+    seen = dict.fromkeys(ch for text in _document_texts(document) for ch in text
+                         if ord(ch) > 0x7F and ord(ch) not in covered and ch.isprintable())
+    return "".join(seen)
+
+
 def _needs_fallback(document: CertificateDocument) -> bool:
     """Whether any text of the document has a character DejaVu Sans lacks."""
-    tables = (document.parameters, document.results, document.statistics)
-    texts = [document.source_name, document.method, document.method_reference,
-             *document.warnings, *document.statements, document.standard,
-             *(cell for t in tables for row in (t.header, *t.rows) for cell in row),
-             *(f"{k} {v}" for k, v in document.settings),
-             json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
+    texts = _document_texts(document)
     covered = _latin_coverage()
     return any(ord(ch) not in covered for text in texts for ch in text if ord(ch) > 0x7F)
 
@@ -524,6 +545,12 @@ def close_fonts(pdf: FPDF) -> None:
 
 
 def certificate_pdf_bytes(document: CertificateDocument) -> bytes:
+    """The PDF; ValueError when some text has characters no bundled font can print (Hangul,
+    for one): refused rather than printed with those characters silently missing."""
+    missing = unprintable(document)
+    if missing:
+        raise ValueError(f"the certificate's text has characters no bundled font can print: "
+                         f"'{missing[:20]}'; write those details in Latin or Chinese script")
     final = _render(document)
     try:
         return bytes(final.output())

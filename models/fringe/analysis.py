@@ -414,4 +414,6 @@ FRINGE = AnalysisKind(
     headline=lambda r: {f"as-found peak-to-peak ({r.unit})": float(np.ptp(r.raw_error)),
                         f"compensated peak-to-peak ({r.unit})":
                             float(np.ptp(r.compensated_error))},
+    nominal_column="",
+    entry_column="u_sin",
 )

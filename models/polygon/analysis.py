@@ -441,4 +441,6 @@ POLYGON = AnalysisKind(
     headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
                         "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
                         if r.sets[0].tilt else float("nan")},
+    nominal_column="position",
+    entry_column="encoder_deg",
 )

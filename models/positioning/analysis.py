@@ -320,4 +320,6 @@ POSITIONING = AnalysisKind(
     headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
                         for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
                         if k in r.iso.figures},
+    nominal_column="target",
+    entry_column="deviation",
 )

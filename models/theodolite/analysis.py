@@ -182,4 +182,6 @@ THEODOLITE = AnalysisKind(
                        "to the raw peak-to-peak"),
     headline=lambda r: {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
                         "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
+    nominal_column="theta_deg",
+    entry_column="azimuth_deg",
 )
