@@ -28,3 +28,21 @@ def test_y_range_moves_only_when_needed_and_respects_a_zoom(qtbot):
     vb.enableAutoRange(y=True)  # the "A" button
     plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
     assert vb.viewRange()[1][1] < 1.0
+
+
+def test_the_legend_goes_where_the_data_is_not(qtbot):
+    """A curve rising to the top right: the legend leaves that corner; a falling one: it
+    stays top right (the default when it is empty)."""
+    from widgets.error_plot import ErrorPlot
+
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(800, 600)
+    plot.show()
+    x = np.linspace(0, 100, 200)
+    plot.set_curves(x, raw=x ** 2 / 100, model=x ** 2 / 100, corrected=-x)
+    assert plot.main_plot.legend_corner != "top-right"
+    assert plot.corrected_plot.legend_corner == "top-right"  # −x leaves the top right empty
+    plot.set_curves(x, raw=-x, model=-x, corrected=x)
+    assert plot.main_plot.legend_corner == "top-right"
+    assert plot.corrected_plot.legend_corner != "top-right"

@@ -9,6 +9,8 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
+from widgets.legend_placement import place_legend
+
 RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
 CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
@@ -105,6 +107,8 @@ class ErrorPlot(QWidget):
                 curve.setData(x, np.asarray(y, dtype=float))
         self._follow_y(self.main_plot, (raw, model))
         self._follow_y(self.corrected_plot, (corrected, [0.0]))
+        place_legend(self.main_plot, self.legend)
+        place_legend(self.corrected_plot, self.corrected_legend)
 
     def show_figure(self, figure, residuals=None) -> None:
         """Draw a declared figure (models/plots.py): its ``raw`` and ``model`` series on the

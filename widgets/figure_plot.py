@@ -7,6 +7,8 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from widgets.legend_placement import place_legend
+
 
 class FigurePlot(QWidget):
     """``curves`` holds the drawn series (PlotDataItems) in the figure's order, for tests
@@ -52,3 +54,4 @@ class FigurePlot(QWidget):
             curve = self.plot.plot(s.x, s.y, pen=pg.mkPen(colour, width=2), connect="finite",
                                    name=s.label or None, **symbol)
             self.curves.append(curve)
+        place_legend(self.plot.getPlotItem(), self.legend)

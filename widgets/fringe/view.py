@@ -10,6 +10,7 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
+from widgets.legend_placement import place_legend
 from widgets.workbench_view import WorkbenchView
 
 
@@ -114,6 +115,9 @@ class FringeView(WorkbenchView):
         drift = figures["drift"].series
         for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
             curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))
+        for plot in (p.signals, p.lissajous, p.drift):
+            item = plot.getPlotItem()
+            place_legend(item, item.legend)
 
     def clear_result(self) -> None:
         self.error_plot.clear()

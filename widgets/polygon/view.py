@@ -9,6 +9,7 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
+from widgets.legend_placement import place_legend
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
 
@@ -76,6 +77,8 @@ class PolygonView(WorkbenchView):
         readings, model = tilt.series if tilt is not None else (None, None)
         self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
         self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
+        item = self.tilt_plot.plot.getPlotItem()
+        place_legend(item, item.legend)
         bars = harmonics.series[0]
         self.harmonics.bars.setOpts(x=bars.x, height=bars.y, width=0.6)
 
