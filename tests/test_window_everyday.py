@@ -131,7 +131,7 @@ def test_every_plot_copies_and_saves_its_image_by_name(window, qtbot):
 
     window.load_all_samples()
     view = window.presenter("polygon").view
-    error_plot = view.plot_tabs.widget(0)
+    error_plot = view.plot_widget(0)
     menu = next(i for i in error_plot.graphics.scene().items() if isinstance(i, pg.ViewBox)).menu
     actions = {a.text(): a for a in menu.actions()}
     assert "Copy image" in actions and "Save image…" in actions
@@ -192,3 +192,16 @@ def test_f6_walks_the_panes_and_f1_has_a_guide(window, qtbot, monkeypatch):
     assert guide.shortcut().toString() == "F1"
     guide.trigger()
     assert "Ctrl+PgDn" in shown[0]
+
+
+def test_plots_keep_their_height_and_scroll_when_the_window_is_small(window, qtbot):
+    from PySide6.QtWidgets import QScrollArea
+
+    window.load_all_samples()
+    view = window.presenter("theodolite").view
+    assert isinstance(view.plot_tabs.widget(0), QScrollArea)
+    error_plot = view.plot_widget(0)
+    assert error_plot.minimumHeight() == 3 * view.PANEL_MIN_HEIGHT  # three panels
+    window.resize(900, 420)  # as small as 200 % scale makes a laptop screen
+    qtbot.wait(50)
+    assert error_plot.height() >= 3 * view.PANEL_MIN_HEIGHT

@@ -8,7 +8,13 @@ import re
 import pyqtgraph as pg
 from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
 
-__all__ = ["add_image_actions", "copy_image", "image_file_name"]
+__all__ = ["add_image_actions", "copy_image", "image_file_name", "plot_panels"]
+
+
+def plot_panels(widget: QWidget) -> int:
+    """How many plot panels (view boxes with axes) a widget holds."""
+    return sum(1 for view in widget.findChildren(pg.GraphicsView) for item in view.scene().items()
+               if isinstance(item, pg.PlotItem))
 
 
 def image_file_name(title: str) -> str:

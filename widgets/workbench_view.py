@@ -8,12 +8,14 @@ from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDoubleSpinBox,
+    QFrame,
     QGroupBox,
     QHBoxLayout,
     QHeaderView,
     QLabel,
     QPlainTextEdit,
     QProgressBar,
+    QScrollArea,
     QSplitter,
     QTableWidget,
     QTableWidgetItem,
@@ -23,6 +25,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.plot_image import add_image_actions
+from widgets.plot_image import plot_panels as _panels
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
 
@@ -174,9 +177,24 @@ class WorkbenchView(QWidget):
     def settings_values(self) -> dict:
         return self.settings.values()
 
+    #: the least height a plot panel keeps: below it the tab scrolls instead of squeezing
+    #: the plots flat and overprinting their axis titles (high-DPI scale, small windows)
+    PANEL_MIN_HEIGHT = 150
+
     def add_plot_tab(self, widget: QWidget, title: str) -> None:
-        self.plot_tabs.addTab(widget, title)
+        panels = max(1, _panels(widget))
+        widget.setMinimumHeight(self.PANEL_MIN_HEIGHT * panels)
+        scroll = QScrollArea()
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.Shape.NoFrame)
+        scroll.setWidget(widget)
+        self.plot_tabs.addTab(scroll, title)
         add_image_actions(widget, f"{self.title} {title}")
+
+    def plot_widget(self, index: int) -> QWidget:
+        """The plot of tab ``index`` (inside its scroll area)."""
+        tab = self.plot_tabs.widget(index)
+        return tab.widget() if isinstance(tab, QScrollArea) else tab
 
     def set_summary(self, text: str) -> None:
         self.summary.setPlainText(text)
