@@ -7,7 +7,7 @@ import io
 import math
 from pathlib import Path
 
-from models.fringe.analysis import FringeResult
+from models.fringe.result import FringeResult
 from models.project.atomic_write import write_text_atomic
 
 __all__ = ["correction_table_c_header", "correction_table_csv", "write_correction_table"]

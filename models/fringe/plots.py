@@ -17,7 +17,7 @@ from models.fringe.model import model_signal
 from models.plots import PlotFigure, PlotSeries
 
 if TYPE_CHECKING:  # the analysis imports the report, which draws with this module
-    from models.fringe.analysis import FringeResult
+    from models.fringe.result import FringeResult
 
 __all__ = ["figures", "first_period_with_uncertainty"]
 

@@ -1,0 +1,63 @@
+"""The result of a fringe signal analysis: what the window, the command line, the
+certificate and the table export read (its own module, so that none of them needs the
+analysis to know its shape)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from models.fringe.model import ChannelFit, CorrectionTable
+from models.fringe.phase import EllipseFit
+
+__all__ = ["FringeResult"]
+
+
+@dataclass
+class FringeResult:
+    theta_rad: np.ndarray  # the phase each sample was analysed at
+    u_sin: np.ndarray
+    u_cos: np.ndarray
+    sin_fit: ChannelFit
+    cos_fit: ChannelFit
+    raw_error: np.ndarray  # as found, in ``unit``
+    compensated_error: np.ndarray
+    table: CorrectionTable
+    lines_per_rev: int
+    samples_per_period: int  # 0 when the phase came from θ or was estimated
+    method: str
+    sin_periods: np.ndarray
+    cos_periods: np.ndarray
+    phase_source: str = "samples_per_period"
+    unit: str = "arcsec"  # or "nm"
+    period_length: float = 79.1015625  # one period in ``unit``
+    ellipse: EllipseFit | None = None
+    table_zero: str = "mean"
+    reversals: int = 0
+    pso_seconds: float | None = None
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def unit_symbol(self) -> str:
+        return "\"" if self.unit == "arcsec" else " nm"
+
+    @property
+    def raw_peak_to_peak(self) -> float:
+        return float(np.ptp(self.raw_error))
+
+    @property
+    def compensated_peak_to_peak(self) -> float:
+        return float(np.ptp(self.compensated_error))
+
+    @property
+    def quadrature_error_deg(self) -> float:
+        """(phase of the cos channel's fundamental − the sin channel's) − 90°."""
+        d = self.cos_fit.phase[1] - self.sin_fit.phase[1]
+        return math.degrees((d - math.pi / 2 + math.pi) % (2 * math.pi) - math.pi)
+
+    @property
+    def amplitude_ratio(self) -> float:
+        """The cos channel's fundamental over the sin channel's."""
+        return self.cos_fit.amplitude[1] / self.sin_fit.amplitude[1]
