@@ -45,6 +45,9 @@ def _parser() -> argparse.ArgumentParser:
                         "the certificate is marked DRAFT")
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help="also write the results per point (with U) as CSV or XLSX")
+    p.add_argument("--columns", metavar="KEY=HEADER,…",
+                   help="which of the file's headers holds which column, when the headers are "
+                        "not recognised, e.g. theta_deg=转角,azimuth_deg=方位角")
     p.add_argument("--table", metavar="OUT",
                    help="also write the workbench's correction table: fringe (CSV, or a C "
                         "header for OUT.h), positioning (compensation table; "
@@ -97,6 +100,18 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
     return settings
 
 
+def _column_mapping(text: str | None) -> dict[str, str] | None:
+    if not text:
+        return None
+    mapping = {}
+    for part in text.split(","):
+        key, sep, header = part.partition("=")
+        if not sep or not key.strip():
+            raise TableImportError(f"anglebench analyze: --columns: '{part}' is not KEY=HEADER")
+        mapping[key.strip()] = header.strip()
+    return mapping
+
+
 def _same_file(a: str, b: str) -> bool:
     try:
         return Path(a).resolve() == Path(b).resolve()
@@ -142,8 +157,9 @@ def run_analyze(argv: list[str]) -> int:
             _say(f"anglebench analyze: {flag} and {twin} name the same file")
             return EXIT_BAD_INPUT
     try:
+        mapping = _column_mapping(args.columns)
         table = read_table(args.file)
-        rows = map_columns(table, kind.columns)
+        rows = map_columns(table, kind.columns, mapping)
     except TableImportError as exc:
         _say(f"{exc}")
         return EXIT_BAD_INPUT

@@ -45,3 +45,18 @@ def register_url(request, tmp_path):
     if request.param == "sqlite":
         return f"sqlite:///{tmp_path / 'register.sqlite'}"
     return request.getfixturevalue("postgres_server").new_database()
+
+
+@pytest.fixture(autouse=True)
+def _no_modal_mapping_dialog(monkeypatch, tmp_path):
+    """A file whose headers are not recognised would ask the user with a modal dialog: in a
+    test it is cancelled unless the test answers it, and remembered mappings go to a
+    settings file of the test's own."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QDialog
+
+    from widgets.column_mapping_dialog import ColumnMappingDialog
+
+    QSettings.setDefaultFormat(QSettings.Format.IniFormat)
+    QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope, str(tmp_path))
+    monkeypatch.setattr(ColumnMappingDialog, "exec", lambda _d: QDialog.DialogCode.Rejected)

@@ -118,3 +118,55 @@ def test_a_pasted_header_row_is_left_out_not_red(presenter):
     assert table.paste_text(text) == "cells"
     presenter.refresh()
     assert presenter.parsed.errors == [] and presenter.parsed.n == 44
+
+
+def test_cli_columns_maps_headers_it_does_not_know(tmp_path, samples_dir, capsys):
+    from app.main import main
+
+    lines = (samples_dir / "theodolite_sample.csv").read_text(encoding="utf-8").splitlines()
+    path = tmp_path / "de.csv"
+    path.write_text("\n".join(["Winkel,Hz,Vert", *lines[1:]]) + "\n", encoding="utf-8")
+    assert main(["analyze", "theodolite", str(path)]) == 2
+    assert "no column 'theta_deg'" in capsys.readouterr().err
+    assert main(["analyze", "theodolite", str(path), "--columns",
+                 "theta_deg=Winkel,azimuth_deg=Hz,elevation_deg=Vert"]) == 0
+    assert main(["analyze", "theodolite", str(path), "--columns", "theta_deg=Wnkl"]) == 2
+    assert "the file has no header 'Wnkl'" in capsys.readouterr().err
+
+
+def test_the_window_asks_for_a_mapping_once_and_remembers_it(qtbot, tmp_path, samples_dir,
+                                                            monkeypatch):
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QDialog
+
+    from widgets.column_mapping_dialog import ColumnMappingDialog
+
+    QSettings.setDefaultFormat(QSettings.Format.IniFormat)
+    QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope, str(tmp_path))
+    lines = (samples_dir / "theodolite_sample.csv").read_text(encoding="utf-8").splitlines()
+    path = tmp_path / "de.csv"
+    path.write_text("\n".join(["Winkel,Hz,Vert", *lines[1:]]) + "\n", encoding="utf-8")
+    asked = []
+
+    def choose(dialog):
+        asked.append(dialog)
+        assert not dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()
+        dialog.choices["theta_deg"].setCurrentIndex(1)  # Winkel
+        dialog.choices["elevation_deg"].setCurrentIndex(3)  # Vert
+        assert dialog.preview.item(0, 0).text() == "-20"
+        assert dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(ColumnMappingDialog, "exec", choose)
+    p = TheodolitePresenter()
+    qtbot.addWidget(p.view)
+    p.import_file(path)
+    assert p.sheet.row_count == 41 and len(asked) == 1
+    p.import_file(path)  # the same headers again: the remembered mapping, no question
+    assert len(asked) == 1 and p.sheet.text(0, 1) == "-19°52'57.0\""
+    monkeypatch.setattr(ColumnMappingDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
+    other = tmp_path / "other.csv"
+    other.write_text("a1,b1,c1\n1,2,3\n", encoding="utf-8")
+    with pytest.raises(TableImportError, match="no column 'theta_deg'"):
+        p.import_file(other)  # cancelled: the error stands, the readings stay
+    assert p.sheet.row_count == 41

@@ -14,7 +14,12 @@ from PySide6.QtGui import QUndoStack
 from models.analysis_kind import AnalysisKind
 from models.project.file import WorkbenchState
 from models.readings.sheet import ParsedReadings, ReadingsSheet
-from models.readings.tabular_import import TableImportError, map_columns, read_table
+from models.readings.tabular_import import (
+    MissingColumnError,
+    TableImportError,
+    map_columns,
+    read_table,
+)
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import cyclic_gc_paused, emit_if_alive, gui_thread_first, worker_pool
@@ -83,6 +88,9 @@ class _ImportTask(QRunnable):
         with cyclic_gc_paused(), gui_thread_first():
             try:
                 rows = map_columns(read_table(path), kind.columns)
+            except MissingColumnError as exc:  # mapped on the GUI thread, with the user
+                emit_if_alive(signals.imported, exc, path, str(exc), generation)
+                return
             except TableImportError as exc:
                 emit_if_alive(signals.imported, None, path, str(exc), generation)
                 return
@@ -232,8 +240,15 @@ class WorkbenchPresenter(QObject):
         self.refresh()
 
     def import_file(self, path: str | Path) -> None:
-        """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError."""
-        rows = map_columns(read_table(path), self.kind.columns)
+        """Replace the readings with a CSV/XLSX file's (undoable). Raises TableImportError.
+        Headers that name no column are mapped by the user (the view asks)."""
+        table = read_table(path)
+        try:
+            rows = map_columns(table, self.kind.columns)
+        except MissingColumnError as exc:
+            rows = self._rows_by_mapping(exc)
+            if rows is None:
+                raise
         self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
         self.imported.emit(str(path), len(rows))
         self._fit_columns()
@@ -259,6 +274,16 @@ class WorkbenchPresenter(QObject):
         self._set_busy(True, f"Reading {Path(path).name} …")
         worker_pool().start(_ImportTask(self.kind, path, self._signals, self._import_generation))
 
+    def _rows_by_mapping(self, exc: MissingColumnError) -> list[list[str]] | None:
+        """The rows with the column mapping the view gives (remembered or asked); None when
+        the user gives none. Raises TableImportError for a mapping the file cannot take."""
+        table = exc.table
+        mapping = self.view.ask_column_mapping(self.kind.columns, list(table.header or []),
+                                               table.rows[:8], str(exc))
+        if not mapping:
+            return None
+        return map_columns(table, self.kind.columns, mapping)
+
     def _supersede_imports(self) -> None:
         """Whatever import is still reading will be dropped when it lands."""
         self._import_generation += 1
@@ -270,6 +295,11 @@ class WorkbenchPresenter(QObject):
         if generation != self._import_generation:
             return  # superseded: a newer import or an opened project is what the user wants
         self._import_pending = False
+        if isinstance(rows, MissingColumnError):  # the headers need the user's mapping
+            try:
+                rows = self._rows_by_mapping(rows)
+            except TableImportError as exc:
+                rows, error = None, str(exc)
         if rows is None or len(rows) <= THREAD_THRESHOLD_ROWS:
             self._set_busy(False)  # a large sheet stays "busy" into its analysis: no
             #                        repaint of the old plots in between

@@ -3,10 +3,13 @@ fit summary, warnings and plot tabs on the right."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt, QTimer
+import json
+
+from PySide6.QtCore import QSettings, Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QDialog,
     QDoubleSpinBox,
     QFrame,
     QGroupBox,
@@ -24,6 +27,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from models.readings.tabular_import import header_signature
+from widgets.column_mapping_dialog import ColumnMappingDialog
 from widgets.plot_image import add_image_actions
 from widgets.plot_image import plot_panels as _panels
 from widgets.readings_table_view import ReadingsTableView
@@ -198,6 +203,29 @@ class WorkbenchView(QWidget):
 
     def set_summary(self, text: str) -> None:
         self.summary.setPlainText(text)
+
+    MAPPINGS_KEY = "import/column_mappings"
+
+    def ask_column_mapping(self, columns, header: list[str], preview: list[list[str]],
+                           reason: str) -> dict[str, str] | None:
+        """The mapping remembered for these headers, else the user's (None: cancelled)."""
+        store = QSettings()
+        signature = header_signature(header)
+        try:
+            remembered = json.loads(store.value(self.MAPPINGS_KEY, "{}") or "{}")
+        except (TypeError, ValueError):
+            remembered = {}
+        if isinstance(remembered, dict) and isinstance(remembered.get(signature), dict):
+            return remembered[signature]
+        dialog = ColumnMappingDialog(columns, header, preview, reason, self)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return None
+        mapping = dialog.mapping()
+        if dialog.remember.isChecked():
+            remembered = remembered if isinstance(remembered, dict) else {}
+            remembered[signature] = mapping
+            store.setValue(self.MAPPINGS_KEY, json.dumps(remembered, ensure_ascii=False))
+        return mapping
 
     def set_verdict(self, text: str) -> None:
         self.verdict.setText(text)

@@ -26,6 +26,20 @@ class TableImportError(ValueError):
     """A file could not be read as a table; the message names the file and what is wrong."""
 
 
+class MissingColumnError(TableImportError):
+    """The file's header does not name a required column; ``table`` is the file as read, for
+    a mapping chosen by the user (``map_columns(table, columns, mapping)``)."""
+
+    def __init__(self, message: str, table: RawTable) -> None:
+        super().__init__(message)
+        self.table = table
+
+
+def header_signature(header: Sequence[str]) -> str:
+    """A file layout's identity: its header cells, as a mapping is remembered for it."""
+    return "\x1f".join(h.strip().lower() for h in header)
+
+
 #: Limits of a readings file: no readings file comes near them, a hostile one does.
 MAX_ROWS = 5_000_000
 MAX_COLUMNS = 64
@@ -222,6 +236,28 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
         book.close()
 
 
+def _apply_mapping(table: RawTable, columns: Sequence[Column], positions: list[int | None],
+                   mapping: dict[str, str]) -> list[int | None]:
+    names = [h.strip().lower() for h in table.header or []]
+    out = list(positions)
+    for wanted, header in mapping.items():
+        index = next((k for k, c in enumerate(columns)
+                      if wanted.strip().lower() in (c.key.lower(), c.title.lower())), None)
+        if index is None:
+            raise TableImportError(f"{table.source}: column mapping names '{wanted}', which is not "
+                                   f"a column here ({', '.join(c.key for c in columns)})")
+        if not header.strip():
+            out[index] = None
+            continue
+        found = next((i for i, n in enumerate(names) if n == header.strip().lower()), None)
+        if found is None:
+            raise TableImportError(f"{table.source}: column mapping {wanted}={header}: the file has "
+                                   f"no header '{header}' (its headers: "
+                                   f"{', '.join(table.header or [])[:200]})")
+        out[index] = found
+    return out
+
+
 #: How far below the top a header is looked for (title, lab and date rows above it).
 HEADER_SEARCH_ROWS = 12
 
@@ -230,7 +266,8 @@ def _complete(positions: list[int | None], columns: Sequence[Column]) -> bool:
     return all(p is not None for p, c in zip(positions, columns, strict=True) if c.required)
 
 
-def map_columns(table: RawTable, columns: Sequence[Column]) -> list[list[str]]:
+def map_columns(table: RawTable, columns: Sequence[Column],
+                mapping: dict[str, str] | None = None) -> list[list[str]]:
     """Reorder a table's cells into ``columns`` order, by header name or by position.
 
     Header names are matched as labs write them (models/readings/headers.py: keys,
@@ -244,6 +281,8 @@ def map_columns(table: RawTable, columns: Sequence[Column]) -> list[list[str]]:
         width = len(columns)
         return [(list(r) + [""] * width)[:width] for r in table.rows]
     positions = match_header(table.header, columns)
+    if mapping:  # the user's choice: column key (or title) -> the file's header text
+        positions = _apply_mapping(table, columns, positions, mapping)
     if not _complete(positions, columns):
         for k, row in enumerate(table.rows[:HEADER_SEARCH_ROWS]):
             below = match_header(row, columns)
@@ -253,12 +292,11 @@ def map_columns(table: RawTable, columns: Sequence[Column]) -> list[list[str]]:
                 break
     for column, found in zip(columns, positions, strict=True):
         if found is None and column.required:
-            raise TableImportError(
+            raise MissingColumnError(
                 f"{table.source}: row 1 (header): no column '{column.key}'; expected headers "
                 f"{','.join(c.key for c in columns)} (or their names, e.g. "
                 f"{column.title!r}{', ' + repr(column.aliases[0]) if column.aliases else ''}); "
-                f"the file's header is {','.join(table.header)[:200]}"
-            )
+                f"the file's header is {','.join(table.header)[:200]}", table)
     out = []
     for row in table.rows:
         out.append([row[p].strip() if p is not None and p < len(row) else "" for p in positions])
