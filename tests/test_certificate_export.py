@@ -199,3 +199,34 @@ def test_text_no_bundled_font_can_print_is_refused_not_dropped(samples_dir):
         certificate_pdf_bytes(korean)
     chinese = kind.certificate_document(result, CertificateMetadata(customer_name="长春光电"))
     assert certificate_pdf_bytes(chinese).startswith(b"%PDF")
+
+
+def test_a_bilingual_certificate_has_chinese_headings_beside_the_english(samples_dir):
+    import io
+    import re
+
+    from pypdf import PdfReader
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata, MetadataError
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+
+    def text(language):
+        document = kind.certificate_document(result, CertificateMetadata(
+            language=language, certificate_number="AB-1", customer_name="长春光电"))
+        pages = PdfReader(io.BytesIO(certificate_pdf_bytes(document))).pages
+        return re.sub(r"\s+", " ", " ".join(p.extract_text() for p in pages))
+
+    both, english = text("zh+en"), text("en")
+    for words in ("校准证书 Calibration certificate", "证书编号 Certificate number",
+                  "测量不确定度 Measurement uncertainty", "符合性声明 Statement of conformity"):
+        assert words in both
+    assert "校准证书" not in english and "Calibration certificate" in english
+    with pytest.raises(MetadataError, match="'language' must be one of en, zh\\+en"):
+        CertificateMetadata.from_dict({"language": "fr"})

@@ -151,3 +151,17 @@ def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(part
     assert (offered.lab_name, offered.customer_name, offered.operator) == \
         ("Angle Lab", "Acme", "Li")
     assert offered.item_serial == ""  # the item is the next workbench's own
+
+
+def test_an_unreachable_register_issues_nothing_and_says_so(parts, samples_dir, tmp_path,
+                                                            monkeypatch):
+    presenter, view, _, _ = parts
+    monkeypatch.delenv("ANGLEBENCH_REGISTER")
+    presenter.set_register_url("postgresql://lab@/register?host=/nonexistent-socket")
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "c.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    title, text = view.tell.call_args.args
+    assert title == "Not issued" and "postgresql+psycopg://lab@/register" in text
+    assert not (tmp_path / "c.pdf").exists()

@@ -34,6 +34,7 @@ from PySide6.QtWidgets import (
 
 from models.certificate.metadata import (
     DECISION_RULES,
+    LANGUAGES,
     CertificateMetadata,
     MetadataError,
 )
@@ -55,6 +56,7 @@ _TEXT_FIELDS = {
 # choice fields: key -> (label, {value: text})
 _CHOICES = {
     "document_type": ("Document", {"calibration": "Calibration certificate", "test": "Test report"}),
+    "language": ("Language", LANGUAGES),
     "decision_rule": ("Decision rule", {
         "guarded": "Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)",
         "guarded_binary": "Guard band w = U: pass / fail (ILAC-G8 4.2.2)",

@@ -93,6 +93,29 @@ def _needs_fallback(document: CertificateDocument) -> bool:
     return any(ord(ch) not in covered for text in texts for ch in text if ord(ch) > 0x7F)
 
 
+#: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them
+CHINESE = {
+    "Calibration certificate": "校准证书", "Test report": "检测报告",
+    "Certificate number": "证书编号", "Date of issue": "签发日期", "Laboratory": "校准机构",
+    "Accreditation": "认可", "Customer": "委托方", "Item under test": "被校准对象",
+    "Manufacturer": "制造单位", "Serial number": "出厂编号",
+    "Grade / specification": "准确度等级/技术指标", "Date of calibration": "校准日期",
+    "Environment": "环境条件", "Readings": "原始记录",
+    "Reference standards and traceability": "计量标准及计量溯源性", "Method": "校准方法",
+    "Analysis settings": "分析设置", "Error curves": "误差曲线", "Statistics": "统计结果",
+    "Measurement uncertainty": "测量不确定度", "Statement of conformity": "符合性声明",
+    "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
+    "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
+}
+
+
+def label(document: CertificateDocument, english: str, separator: str = " ") -> str:
+    """``english``, with its Chinese in front on a bilingual certificate."""
+    if document.metadata.language == "zh+en" and english in CHINESE:
+        return f"{CHINESE[english]}{separator}{english}"
+    return english
+
+
 def revision_statement(meta) -> str:
     """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
     replacement identifies the one it replaces."""
@@ -197,7 +220,9 @@ class ReportPdf(FPDF):
                         wrapmode="CHAR") as table:
             for key, value in rows:
                 row = table.row()
-                row.cell(key, style=FontFace(emphasis="BOLD"))
+                # a two-line bilingual label is set plain: fpdf2 drops the English line of a
+                # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
+                row.cell(key, style=None if "\n" in key else FontFace(emphasis="BOLD"))
                 row.cell(value or "—")
 
     def data_table(self, t: Table, widths: tuple[float, ...], align: tuple[str, ...],
@@ -309,7 +334,7 @@ class _CertificatePdf(ReportPdf):
             ("This certificate shall not be reproduced except in full without the laboratory's "
              "written approval.",
              f"Certificate {meta.certificate_number or '—'} · AngleBench {__version__}"),
-            cjk=_needs_fallback(document))
+            cjk=_needs_fallback(document) or document.metadata.language != "en")
         self.document = document
 
     def header(self) -> None:
@@ -386,7 +411,7 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.add_page()
 
     pdf.set_font(FONT, "B", 17)
-    pdf.cell(0, 9, document.title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.cell(0, 9, label(document, document.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     pdf.set_font(FONT, "", 11)
     pdf.cell(0, 6, f"{document.kind_title}", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     if document.is_draft:
@@ -396,25 +421,27 @@ def _render(document: CertificateDocument) -> FPDF:
         pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
     pdf.key_values([
-        ("Certificate number", meta.certificate_number),
-        ("Date of issue", meta.issue_date or created.date().isoformat()),
-        ("Laboratory", ", ".join(p for p in (meta.lab_name, meta.lab_address) if p)),
-        ("Accreditation", meta.lab_accreditation),
-        ("Customer", ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
-        ("Item under test", meta.item_description),
-        ("Manufacturer", meta.item_manufacturer),
-        ("Serial number", meta.item_serial),
-        ("Grade / specification", "; ".join(p for p in (
+        (label(document, "Certificate number", "\n"), meta.certificate_number),
+        (label(document, "Date of issue", "\n"), meta.issue_date or created.date().isoformat()),
+        (label(document, "Laboratory", "\n"),
+         ", ".join(p for p in (meta.lab_name, meta.lab_address) if p)),
+        (label(document, "Accreditation", "\n"), meta.lab_accreditation),
+        (label(document, "Customer", "\n"),
+         ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
+        (label(document, "Item under test", "\n"), meta.item_description),
+        (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
+        (label(document, "Serial number", "\n"), meta.item_serial),
+        (label(document, "Grade / specification", "\n"), "; ".join(p for p in (
             meta.item_grade, f"tolerance ±{document.tolerance_arcsec:g}{document.unit}"
             if document.tolerance_arcsec else "") if p)),
-        ("Date of calibration", meta.calibration_date),
-        ("Environment", _environment(meta)),
-        ("Readings", document.source_name),
+        (label(document, "Date of calibration", "\n"), meta.calibration_date),
+        (label(document, "Environment", "\n"), _environment(meta)),
+        (label(document, "Readings", "\n"), document.source_name),
     ])
-    pdf.heading("Reference standards and traceability")
+    pdf.heading(label(document, "Reference standards and traceability"))
     pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
     pdf.paragraph(_traceability(document), 8.5)
-    pdf.heading("Method")
+    pdf.heading(label(document, "Method"))
     pdf.paragraph(document.method)
     if document.method_reference:
         pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
@@ -431,18 +458,18 @@ def _render(document: CertificateDocument) -> FPDF:
             "validation report of that version (anglebench validate): the reference figures of "
             "the publication and exact simulations with known truth, each with its result.", 8,
             GREY)
-    pdf.paragraph(f"Sign convention: {document.sign_convention}.", 8.5)
+    pdf.paragraph(f"{label(document, 'Sign convention')}: {document.sign_convention}.", 8.5)
     if document.settings:
-        pdf.heading("Analysis settings", keep_with=30)
+        pdf.heading(label(document, "Analysis settings", "\n"), keep_with=30)
         pdf.key_values(list(document.settings))
-    pdf.heading(document.parameters.title)
+    pdf.heading(label(document, document.parameters.title))
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
-    pdf.heading("Error curves", keep_with=75.0)
+    pdf.heading(label(document, "Error curves", "\n"), keep_with=75.0)
     for figure in document.plots:
         pdf.plot(figure)
-    pdf.heading(document.statistics.title)
+    pdf.heading(label(document, document.statistics.title))
     pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
-    pdf.heading("Measurement uncertainty")
+    pdf.heading(label(document, "Measurement uncertainty"))
     big_u = document.expanded_uncertainty_arcsec
     budget_ = document.budget
     pdf.paragraph(
@@ -461,7 +488,7 @@ def _render(document: CertificateDocument) -> FPDF:
                                                        strict=False) if c.note]
     for note in notes:
         pdf.paragraph(note, 7.5, GREY)
-    pdf.heading("Statement of conformity")
+    pdf.heading(label(document, "Statement of conformity"))
     conformity = document.conformity
     pdf.paragraph(conformity.statement)
     if conformity.quantity:
@@ -469,13 +496,13 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.paragraph(f"Decision rule: {conformity.rule}.", 8, GREY)
     if conformity.zones:
         pdf.paragraph(f"Zones: {conformity.zones}.", 8, GREY)
-    pdf.heading("Statements")
+    pdf.heading(label(document, "Statements"))
     for statement in (*document.statements,
                       "The results relate only to the item calibrated, as received, under the "
                       "conditions stated."):
         pdf.paragraph(f"• {statement}")
     if document.warnings or meta.notes:
-        pdf.heading("Remarks")
+        pdf.heading(label(document, "Remarks"))
         for w in document.warnings:
             pdf.paragraph(f"• {w}")
         if meta.notes:

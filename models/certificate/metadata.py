@@ -21,6 +21,7 @@ __all__ = [
     "DECISION_QUANTITIES",
     "DECISION_RULES",
     "DOCUMENT_TYPES",
+    "LANGUAGES",
     "LAB_DEFAULT_FIELDS",
     "CertificateMetadata",
     "MetadataError",
@@ -40,6 +41,9 @@ LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_sc
 
 #: What the document is: a calibration certificate, or a test report.
 DOCUMENT_TYPES = {"calibration": "Calibration certificate", "test": "Test report"}
+#: the certificate's language: English, or its headings and labels in Chinese (JJF 1001
+#: terms) beside the English ("校准证书 Calibration certificate")
+LANGUAGES = {"en": "English", "zh+en": "中文 + English (headings and labels)"}
 
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
@@ -165,6 +169,7 @@ class CertificateMetadata:
     decision_quantity: str = "half_range"
     coverage_probability_pct: float = 100.0 * DEFAULT_COVERAGE_PROBABILITY
     document_type: str = "calibration"
+    language: str = "en"  # see LANGUAGES
     # fringe: the checksum of the correction table the lab states it loaded into the encoder
     as_left_table_sha256: str = ""
     notes: str = ""
@@ -200,6 +205,9 @@ class CertificateMetadata:
             else:
                 values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note"))
         meta = cls(**values)
+        if meta.language not in LANGUAGES:
+            raise MetadataError(f"certificate field 'language' must be one of "
+                                f"{', '.join(LANGUAGES)}, not '{meta.language}'")
         if meta.decision_rule not in DECISION_RULES:
             raise MetadataError(f"certificate field 'decision_rule' must be one of "
                                 f"{', '.join(DECISION_RULES)}, not '{meta.decision_rule}'")
