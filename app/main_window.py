@@ -166,6 +166,10 @@ class MainWindow(QMainWindow):
             tip="Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
                 "readings are replaced; Edit > Undo there restores them)")
         file_menu.addSeparator()
+        self.print_action = self._action(
+            file_menu, "&Print…", self.print_dialog, QKeySequence.StandardKey.Print,
+            "Print the current workbench's result and plot (the certificate is the PDF)")
+        file_menu.addSeparator()
         self._action(file_menu, "&Quit", self.close, QKeySequence.StandardKey.Quit)
 
         edit_menu = self.menuBar().addMenu("&Edit")
@@ -390,6 +394,23 @@ class MainWindow(QMainWindow):
     def load_sample(self) -> None:
         """Replace the current workbench's readings with its sample (one undo step)."""
         self.current.import_file(SAMPLES_DIR / self.current.kind.sample_file)
+
+    def print_dialog(self) -> bool:
+        from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
+        printer = QPrinter(QPrinter.PrinterMode.HighResolution)
+        dialog = QPrintDialog(printer, self)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return False
+        self.print_to(printer)
+        return True
+
+    def print_to(self, printer) -> None:
+        from widgets.print_view import print_workbench
+
+        print_workbench(self.current.view, printer,
+                        f"{self.current.kind.title} — {self._source_name() or 'readings'}")
+        self.statusBar().showMessage("Printed", 5000)
 
     def show_register(self) -> None:
         from app.register_presenter import RegisterPresenter

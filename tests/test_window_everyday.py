@@ -205,3 +205,20 @@ def test_plots_keep_their_height_and_scroll_when_the_window_is_small(window, qtb
     window.resize(900, 420)  # as small as 200 % scale makes a laptop screen
     qtbot.wait(50)
     assert error_plot.height() >= 3 * view.PANEL_MIN_HEIGHT
+
+
+def test_print_puts_the_result_and_plot_on_a_page(window, tmp_path):
+    from pypdf import PdfReader
+    from PySide6.QtPrintSupport import QPrinter
+
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(1)
+    printer = QPrinter(QPrinter.PrinterMode.HighResolution)
+    printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+    printer.setOutputFileName(str(tmp_path / "print.pdf"))
+    window.print_to(printer)
+    reader = PdfReader(tmp_path / "print.pdf")
+    text = " ".join(reader.pages[0].extract_text().split())
+    assert len(reader.pages) == 1 and "Grade 3" in text and "Polygon encoder test" in text
+    assert reader.pages[0].images  # the plot
+    assert window.print_action.shortcut().toString() == "Ctrl+P"
