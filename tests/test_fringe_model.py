@@ -2,6 +2,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from models.fringe.analysis import FRINGE
 from models.fringe.export import correction_table_c_header, correction_table_csv
@@ -124,3 +126,28 @@ def test_explicit_theta_column():
             for s, c, t in zip(model_signal(theta, SIN), model_signal(theta, COS), theta, strict=True)]
     result = FRINGE.analyze(ReadingsSheet(FRINGE.columns, rows).parse(), {})
     assert result.sin_fit.amplitude[1] == pytest.approx(3.7763, abs=1e-6)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(8, 96), st.integers(2, 20), st.integers(0, 2**32 - 1),
+       st.sampled_from([(1,), (1, 3, 5), (1, 2, 3, 4, 5)]))
+def test_per_phase_sums_give_the_fit_of_the_whole_design(per, periods, seed, orders):
+    """Samples at N equal steps with gaps: the fit from N per-phase sums is the general
+    least-squares fit (parameters, uncertainties, cost, R²)."""
+    from models.fringe.model import TWO_PI, fit_channels, fit_channels_by_phase
+
+    rng = np.random.default_rng(seed)
+    place = np.arange(per * periods)
+    keep = rng.random(place.size) > 0.1
+    keep[: 2 * len(orders) + 3] = True
+    place = place[keep]
+    theta = place * (TWO_PI / per)
+    u = 1.3 * np.sin(theta + 0.3) + 0.05 * np.sin(3 * theta) + rng.normal(0, 0.01, theta.size)
+    (a,) = fit_channels(theta, [u], orders)
+    (b,) = fit_channels_by_phase(place % per, per, [u], orders)
+    assert b.offset == pytest.approx(a.offset, abs=1e-10)
+    for k in orders:
+        assert b.amplitude[k] == pytest.approx(a.amplitude[k], abs=1e-10)
+        assert b.u_amplitude[k] == pytest.approx(a.u_amplitude[k], rel=1e-6, abs=1e-12)
+    assert b.cost == pytest.approx(a.cost, rel=1e-8, abs=1e-14)
+    assert b.r_squared == pytest.approx(a.r_squared, abs=1e-10)

@@ -15,6 +15,7 @@ from models.fringe.model import (
     build_correction_table,
     fit_channel_pso,
     fit_channels,
+    fit_channels_by_phase,
     fit_periods,
     fit_periods_along,
     interpolation_error_rad,
@@ -216,6 +217,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                         f"against {lsq_cost:.3g} V² for least squares, {pso_seconds:.2f} s.")
     elif source == "estimated":
         theta, (sin_fit, cos_fit) = _refine_phase(u_sin, u_cos, theta, orders)
+    elif source == "samples_per_period":  # N equal steps: the fit from N per-phase sums
+        index = np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
+        sin_fit, cos_fit = fit_channels_by_phase(index, per_period, [u_sin, u_cos], orders)
     else:
         sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
     if source != "estimated" and s["method"] == "lsq":

@@ -190,6 +190,40 @@ def fit_channels(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)) -> li
     return fits
 
 
+def fit_channels_by_phase(phase_index, samples_per_period: int, channels,
+                          orders: tuple[int, ...] = (1, 3, 5)) -> list[ChannelFit]:
+    """:func:`fit_channels` for samples at N equal steps a period (sample i at phase
+    ``phase_index[i]`` · 2π/N): the same fit from N per-phase sums. The normal equations
+    are Xₙᵀ W Xₙ (Xₙ the design at the N phases, W the samples per phase) and Xₙᵀ S (S the
+    per-phase sums), so a million samples cost N-sized sums and a 7×7 solve instead of a
+    million-row design; the residuals are then one gather of the N model values."""
+    index = np.asarray(phase_index, dtype=np.intp)
+    n = int(samples_per_period)
+    n_par = 1 + 2 * len(orders)
+    if index.size < n_par + 1:
+        raise ValueError(f"{index.size} samples; at least {n_par + 1} are needed for orders "
+                         f"{', '.join(map(str, orders))}")
+    counts = np.bincount(index, minlength=n).astype(float)
+    x = _design(np.arange(n) * (TWO_PI / n), orders)
+    gram = x.T @ (x * counts[:, None])
+    try:
+        inv = np.linalg.inv(gram)
+        check = gram @ inv
+        check.flat[:: n_par + 1] -= 1.0
+        if not np.abs(check).max() < 1e-6:
+            raise np.linalg.LinAlgError
+    except np.linalg.LinAlgError:
+        inv = np.linalg.pinv(gram)
+    dof = max(index.size - n_par, 1)
+    fits = []
+    for u in channels:
+        y = np.asarray(u, dtype=float)
+        coef = inv @ (x.T @ np.bincount(index, weights=y, minlength=n))
+        resid = y - (x @ coef)[index]
+        fits.append(_channel_fit(coef, resid, y, inv, dof, orders))
+    return fits
+
+
 _CACHED_DESIGN_MAX = 4096
 
 
