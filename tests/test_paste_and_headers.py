@@ -170,3 +170,13 @@ def test_the_window_asks_for_a_mapping_once_and_remembers_it(qtbot, tmp_path, sa
     with pytest.raises(TableImportError, match="no column 'theta_deg'"):
         p.import_file(other)  # cancelled: the error stands, the readings stay
     assert p.sheet.row_count == 41
+
+
+def test_a_first_row_of_mistyped_readings_is_kept_not_taken_for_a_header():
+    grid = [["1.5.5", "2°61'", "x1"], ["1.0", "1", "0.1"], ["2.0", "2", "0.2"]]
+    plan = plan_paste(grid, THEODOLITE, filled_rows=0, top=0, left=0, whole_sheet=False)
+    assert plan.header is None and plan.rows[0] == ["1.5.5", "2°61'", "x1"]
+    words = [["Winkel", "Hz", "Vert"], ["1.0", "1", "0.1"]]
+    plan = plan_paste(words, THEODOLITE, 0, 0, 0, False)
+    assert plan.header == ["Winkel", "Hz", "Vert"] and not plan.mapped  # only Hz is known:
+    assert plan.rows == [["1.0", "1", "0.1"]]  # pasted where it lands, Winkel's cells kept

@@ -1,8 +1,9 @@
 """What a paste into the readings does, decided before anything changes.
 
 * A first row that reads as no value of the columns it lands on, while a later row does,
-  is a header: it is taken off, and when it names the columns (models/readings/headers.py)
-  the cells go to the columns it names, whatever their order.
+  and that names a column or holds words only (no digits), is a header: it is taken off,
+  and when it names the columns (models/readings/headers.py) the cells go to the columns
+  it names, whatever their order. A first row of mistyped readings is pasted as typed.
 * A paste over the whole sheet (every row selected) replaces the sheet.
 * A block of readings (two rows and two columns or more) landing on the first row of a
   longer run would leave that run's later rows behind it — a silent mix of two runs.
@@ -50,12 +51,19 @@ def plan_paste(grid: Sequence[Sequence[str]], columns: Sequence[Column], filled_
     rows = [[c.strip() for c in r] for r in grid]
     header = None
     mapped = False
-    if len(rows) >= 2 and any(c for c in rows[0]) \
+    positions = match_header(rows[0], columns) if rows else []
+    # a header names a column, or holds words only: a first row of mistyped readings (digits
+    # in it) is pasted as it is and shows red, never dropped as if it were a header
+    names = any(p is not None for p in positions) or all(
+        not any(ch.isdigit() for ch in c) for c in rows[0] if c) if rows else False
+    if len(rows) >= 2 and any(c for c in rows[0]) and names \
             and not _reads_as_values(rows[0], columns, left) \
             and any(_reads_as_values(r, columns, left) for r in rows[1:]):
         header, rows = rows[0], rows[1:]
-        positions = match_header(header, columns)
-        if any(p is not None for p in positions):
+        named = {p for p in positions if p is not None}
+        # by name only when every header cell names a column: a header that names some
+        # would drop the others' cells; it then lands where the cursor is, as typed
+        if named and named == {j for j, c in enumerate(header) if c}:
             mapped, left = True, 0
             rows = [[r[p] if p is not None and p < len(r) else "" for p in positions]
                     for r in rows]
