@@ -5,6 +5,7 @@
     anglebench register verify FILE.pdf        is this PDF, byte for byte, one we issued?
     anglebench register export OUT.zip         every record: index.csv, PDFs, projects
     anglebench register interval SERIAL DAYS  set an instrument's calibration interval
+    anglebench register continue SCHEME NEXT   continue numbering after hand-issued numbers
 
 ``--register URL`` (or ANGLEBENCH_REGISTER) chooses the register; the default is the
 SQLite file in the user's data folder. Exit 2 with one line for a refusal; ``verify``
@@ -50,6 +51,11 @@ def _parser() -> argparse.ArgumentParser:
     verify.add_argument("pdf")
     export = sub.add_parser("export")
     export.add_argument("out", metavar="OUT.zip")
+    counter = sub.add_parser("continue", help="continue numbering from hand-issued numbers")
+    counter.add_argument("scheme", help="e.g. AB-{year}-{seq:04d}")
+    counter.add_argument("next", type=int, help="the next sequence number to issue")
+    counter.add_argument("--date", default="", help="YYYY-MM-DD for the scheme's date fields "
+                                                    "(default today)")
     interval = sub.add_parser("interval")
     interval.add_argument("serial")
     interval.add_argument("days", type=int, help="0 clears it")
@@ -123,6 +129,16 @@ def run_register(argv: list[str]) -> int:
                 sys.stdout.write(f"{args.pdf}: certificate {record.number}, issued "
                                  f"{record.issued_at}, {record.status}; identical to the "
                                  "record (SHA-256)\n")
+                return 0
+            if args.command == "continue":
+                import datetime as dt
+
+                try:
+                    date = dt.date.fromisoformat(args.date) if args.date else dt.date.today()
+                except ValueError:
+                    raise RegisterError(f"--date {args.date}: not YYYY-MM-DD") from None
+                number = register.continue_numbering(args.scheme, date, args.next)
+                sys.stdout.write(f"the next certificate of {args.scheme} will be {number}\n")
                 return 0
             if args.command == "interval":
                 register.set_interval(args.serial, args.days or None)

@@ -168,3 +168,13 @@ def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
 def test_an_unreachable_register_says_so(tmp_path):
     with pytest.raises(RegisterError, match="register postgresql\\+psycopg://u:\\*\\*\\*@"):
         Register("postgresql://u:secret@/none?host=/nonexistent-socket-dir")
+
+
+def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(register):
+    scheme, day = "AB-{year}-{seq:04d}", dt.date(2026, 11, 24)
+    assert register.continue_numbering(scheme, day, 43) == "AB-2026-0043"
+    assert register.issue(request(), render)[0].number == "AB-2026-0043"
+    with pytest.raises(RegisterError, match="already allocated up to AB-2026-0043"):
+        register.continue_numbering(scheme, day, 10)
+    assert register.continue_numbering(scheme, day, 100) == "AB-2026-0100"
+    assert register.issue(request(), render)[0].number == "AB-2026-0100"

@@ -62,3 +62,12 @@ def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, 
     assert "positive number of days" in capsys.readouterr().err
     assert main(["register", "--register", "postgresql://x@/db?host=/nonexistent", "list"]) == 2
     assert "register postgresql+psycopg://x@/db" in capsys.readouterr().err
+
+
+def test_continue_numbering_from_the_command_line(capsys):
+    assert main(["register", "continue", "AB-{year}-{seq:04d}", "43", "--date",
+                 "2026-11-24"]) == 0
+    assert "will be AB-2026-0043" in capsys.readouterr().out
+    assert main(["register", "continue", "AB-{year}-{seq:04d}", "5", "--date",
+                 "2026-11-24"]) == 2
+    assert "never numbers back" in capsys.readouterr().err

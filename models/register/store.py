@@ -224,6 +224,28 @@ class Register:
                 return number
         raise RegisterError(f"no free number in scheme '{scheme}'")
 
+    def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
+        """A lab moving to the register from numbers issued by hand: the next number the
+        scheme allocates (for ``date``'s year, month …) is ``next_sequence``. Never moves the
+        counter back. Returns that next number."""
+        if next_sequence < 1:
+            raise RegisterError("the next sequence number must be 1 or more")
+        name = _counter_name(scheme, date)
+        counters = self._schema.COUNTERS
+        with self._write() as conn:
+            current = conn.execute(self._sa.select(counters.c.last_value).where(
+                counters.c.name == name)).scalar_one_or_none()
+            if current is not None and current >= next_sequence:
+                raise RegisterError(
+                    f"the register has already allocated up to "
+                    f"{format_certificate_number(scheme, current, date)}: it never numbers back")
+            if current is None:
+                conn.execute(counters.insert().values(name=name, last_value=next_sequence - 1))
+            else:
+                conn.execute(counters.update().where(counters.c.name == name).values(
+                    last_value=next_sequence - 1))
+        return format_certificate_number(scheme, next_sequence, date)
+
     def _check_free(self, conn, number: str) -> None:
         row = conn.execute(self._sa.select(
             self._schema.CERTIFICATES.c.issued_at, self._schema.CERTIFICATES.c.workbench,
