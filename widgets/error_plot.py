@@ -84,6 +84,12 @@ class ErrorPlot(QWidget):
         layout.addWidget(self.graphics, 1)
         layout.addWidget(self.readout)
 
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        """The legend's share of the plot changes with its size (and the screen's scale)."""
+        super().resizeEvent(event)
+        place_legend(self.main_plot, self.legend)
+        place_legend(self.corrected_plot, self.corrected_legend)
+
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
         for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
                             (self.corrected_curve, corrected)):

@@ -27,6 +27,10 @@ class FigurePlot(QWidget):
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.plot)
 
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        place_legend(self.plot.getPlotItem(), self.legend)
+
     def clear(self) -> None:
         self.legend.clear()
         for item in self.curves + self._bands:

@@ -1,5 +1,7 @@
-"""Legends that never sit on the data: the legend goes to the corner of the plot where the
-fewest data points fall under it (top right first when several are empty)."""
+"""Legends that never sit on the data: the legend goes to a corner of the plot where no
+data point falls under it (top right first when several are free); when every corner has
+data, the plot's top is raised to make room for it above the curves (unless the legend
+would take over a third of a cramped plot: then the corner with the fewest points)."""
 
 from __future__ import annotations
 
@@ -55,6 +57,10 @@ def place_legend(plot_item, legend) -> str:
         "bottom-left": int(np.sum((u <= fx) & (v >= 1 - fy))),
     }
     corner = min(CORNERS, key=lambda c: counts[c])  # dict order breaks ties: top right first
+    if counts[corner] and y1 > y0 and fy < 0.35:
+        # no corner is free: make room above the data (the legend then sits over nothing)
+        corner = "top-right"
+        vb.setYRange(y0, y0 + (y1 - y0) / (1.0 - fy), padding=0.02)
     anchor, offset = CORNERS[corner]
     legend.anchor(itemPos=anchor, parentPos=anchor, offset=offset)
     plot_item.legend_corner = corner
