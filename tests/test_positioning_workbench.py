@@ -179,3 +179,42 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(qtbot, tmp_path):
     assert positioning.result.positions.size == 13
     window.tabs.setCurrentIndex(2)  # fringe: nothing to send
     assert not window.send_action.isEnabled()
+
+
+def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir, capsys):
+    """A laser calibrator's export as labs keep it: a title row, Chinese headers, XLSX."""
+    import openpyxl
+
+    rows = map_columns(read_table(samples_dir / KIND.sample_file), KIND.columns)
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["转台C轴定位精度检测 2026-11-20"])
+    sheet.append(["目标位置", "次数", "方向", "位置偏差"])
+    for target, run, direction, deviation, _ in rows:
+        sheet.append([float(target), int(run), direction, float(deviation)])
+    path = tmp_path / "log.xlsx"
+    book.save(path)
+    assert main(["analyze", "positioning", str(path), "--json"]) == 0
+    from_xlsx = json.loads(capsys.readouterr().out)
+    assert main(["analyze", "positioning", str(samples_dir / KIND.sample_file), "--json"]) == 0
+    from_csv = json.loads(capsys.readouterr().out)
+    assert from_xlsx["iso230_2"] == pytest.approx(from_csv["iso230_2"])
+
+
+def test_a_theodolite_run_is_sent_with_the_iso_sign(qtbot, tmp_path):
+    window = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
+                        recovery=RecoveryStore(tmp_path / "recovery"))
+    window.told = []
+    window.tell = lambda title, text: window.told.append(text)
+    window.ask = lambda *a: QMessageBox.StandardButton.Discard
+    qtbot.addWidget(window)
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+    theodolite = window.presenter("theodolite").result
+    assert window.send_to_positioning()
+    sent = window.presenter("positioning").result
+    # one sweep, no run or direction columns: forward only, one run per target
+    assert not sent.bidirectional and sent.least_runs == {"up": 1}
+    np.testing.assert_allclose(sent.iso.forward.mean, -theodolite.corrected_error_arcsec,
+                               atol=1e-4)
+    assert "One approach direction only" in " ".join(sent.warnings)
