@@ -7,7 +7,6 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -34,13 +33,6 @@ def draft_reasons(metadata: CertificateMetadata) -> list[str]:
     return [m for m in metadata.missing_fields() if m != "certificate number"]
 
 
-def _headline(kind, result: Any) -> dict[str, float]:
-    if kind.headline is None:
-        return {}
-    return {k: float(v) for k, v in kind.headline(result).items()
-            if isinstance(v, int | float) and math.isfinite(v)}
-
-
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
@@ -51,7 +43,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     PDF can be saved from the register)."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}})
-    request = IssueRequest(kind.key, metadata, project_to_json(project), _headline(kind, result))
+    request = IssueRequest(kind.key, metadata, project_to_json(project),
+                           kind.headline_figures(result))
 
     def render(final: CertificateMetadata) -> bytes:
         return certificate_pdf_bytes(

@@ -423,8 +423,7 @@ class MainWindow(QMainWindow):
             self.register_window.subscribe(self.register_presenter)
         self.register_presenter.refresh()
         self.register_window.show()
-        if QApplication.platformName() != "offscreen":  # nothing to raise on no screen
-            self.register_window.raise_()
+        self.register_window.raise_()
 
     def open_project_state(self, project_json: str, workbench: str) -> bool:
         """Load the project behind a certificate (asking about unsaved work first) and show its

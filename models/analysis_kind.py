@@ -9,6 +9,7 @@ certificate content.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -56,6 +57,13 @@ class AnalysisKind:
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: str = ""
     entry_column: str = ""
+
+    def headline_figures(self, result: Any) -> dict[str, float]:
+        """The headline figures that are numbers (the window's table, the register's trend)."""
+        if self.headline is None:
+            return {}
+        return {k: float(v) for k, v in self.headline(result).items()
+                if isinstance(v, int | float) and math.isfinite(v)}
 
     @property
     def default_settings(self) -> dict[str, Any]:

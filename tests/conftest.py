@@ -60,3 +60,22 @@ def _no_modal_mapping_dialog(monkeypatch, tmp_path):
     QSettings.setDefaultFormat(QSettings.Format.IniFormat)
     QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope, str(tmp_path))
     monkeypatch.setattr(ColumnMappingDialog, "exec", lambda _d: QDialog.DialogCode.Rejected)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path):
+    """The main window with settings and autosaves of the test's own; what it would tell or
+    ask the user is recorded (``told``) or answered (discard unsaved work)."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QMessageBox
+
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    w = MainWindow(settings=QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat),
+                   recovery=RecoveryStore(tmp_path / "recovery"))
+    w.told = []
+    w.tell = lambda title, text: w.told.append(text)
+    w.ask = lambda *a: QMessageBox.StandardButton.Discard
+    qtbot.addWidget(w)
+    return w

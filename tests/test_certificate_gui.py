@@ -4,26 +4,12 @@ from __future__ import annotations
 
 import io
 
-import pytest
 from pypdf import PdfReader
-from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QDialog, QMessageBox
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDialog
 
-from app.main_window import MainWindow
 from models.certificate.metadata import CertificateMetadata
-from models.project.recovery import RecoveryStore
 from widgets.certificate_dialog import CertificateDialog
-
-
-@pytest.fixture
-def window(qtbot, tmp_path):
-    settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
-    w = MainWindow(settings=settings, recovery=RecoveryStore(tmp_path / "recovery"))
-    w.told = []
-    w.tell = lambda title, text: w.told.append(text)
-    w.ask = lambda *a: QMessageBox.StandardButton.Discard
-    qtbot.addWidget(w)
-    return w
 
 
 def _type_details(qtbot, dialog: CertificateDialog) -> None:

@@ -14,15 +14,12 @@ import numpy as np
 import pytest
 import shiboken6
 from pypdf import PdfReader
-from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QMessageBox, QWidget
+from PySide6.QtWidgets import QWidget
 from scipy import stats
 
 from app.main import main
-from app.main_window import MainWindow
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.metadata import CertificateMetadata, MetadataError, ReferenceStandard
-from models.project.recovery import RecoveryStore
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
@@ -154,13 +151,7 @@ def test_presenter_draws_the_declared_figures_and_exports(presenter_and_view, sa
     assert not (tmp_path / "c.comp").exists()
 
 
-def test_a_polygon_run_is_sent_to_the_positioning_workbench(qtbot, tmp_path):
-    window = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
-                        recovery=RecoveryStore(tmp_path / "recovery"))
-    window.told = []
-    window.tell = lambda title, text: window.told.append(text)
-    window.ask = lambda *a: QMessageBox.StandardButton.Discard  # closing: keep nothing
-    qtbot.addWidget(window)
+def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)  # polygon
     polygon = window.presenter("polygon")
@@ -201,13 +192,7 @@ def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir,
     assert from_xlsx["iso230_2"] == pytest.approx(from_csv["iso230_2"])
 
 
-def test_a_theodolite_run_is_sent_with_the_iso_sign(qtbot, tmp_path):
-    window = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
-                        recovery=RecoveryStore(tmp_path / "recovery"))
-    window.told = []
-    window.tell = lambda title, text: window.told.append(text)
-    window.ask = lambda *a: QMessageBox.StandardButton.Discard
-    qtbot.addWidget(window)
+def test_a_theodolite_run_is_sent_with_the_iso_sign(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(0)
     theodolite = window.presenter("theodolite").result

@@ -7,14 +7,10 @@ import json
 from unittest import mock
 
 import pytest
-from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QMessageBox
 
 from app.certificate_issue import issue_certificate
-from app.main_window import MainWindow
 from app.register_presenter import RegisterPresenter, RegisterView
 from models.certificate.metadata import CertificateMetadata
-from models.project.recovery import RecoveryStore
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
@@ -29,17 +25,6 @@ def issue_polygon(register, samples_dir, tmp_path, name, **changes):
     return issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
                              kind.checked_settings({}), rows, "polygon_sample.csv",
                              str(tmp_path / f"{name}.pdf"))
-
-
-@pytest.fixture
-def window(qtbot, tmp_path):
-    w = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
-                   recovery=RecoveryStore(tmp_path / "recovery"))
-    w.told = []
-    w.tell = lambda title, text: w.told.append(text)
-    w.ask = lambda *a: QMessageBox.StandardButton.Discard
-    qtbot.addWidget(w)
-    return w
 
 
 def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, samples_dir,

@@ -7,24 +7,18 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QMimeData, QPointF, QSettings, Qt, QUrl
+from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from app.main_window import MainWindow, with_chosen_suffix
-from models.project.recovery import RecoveryStore
+from app.main_window import with_chosen_suffix
 
 
 @pytest.fixture
-def window(qtbot, tmp_path):
-    w = MainWindow(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
-                   recovery=RecoveryStore(tmp_path / "recovery"))
-    w.told = []
-    w.tell = lambda title, text: w.told.append(text)
-    w.ask = lambda *a: QMessageBox.StandardButton.Discard
-    qtbot.addWidget(w)
-    w.show()
-    return w
+def window(window):
+    """Shown: focus and key presses need a visible window."""
+    window.show()
+    return window
 
 
 def test_ctrl_pgdown_and_ctrl_tab_switch_workbenches_even_from_the_table(window, qtbot):

@@ -377,9 +377,7 @@ class WorkbenchPresenter(QObject):
         else:
             self.view.set_summary(self.kind.summary(result))
             self.view.set_verdict(self.kind.verdict(result) if self.kind.verdict else "")
-            self.view.set_figures({k: v for k, v in (self.kind.headline(result).items()
-                                                     if self.kind.headline else ())
-                                   if isinstance(v, int | float) and v == v})
+            self.view.set_figures(self.kind.headline_figures(result))
             self.view.set_warnings(input_warnings + list(getattr(result, "warnings", [])))
             self.show_result(result)
         self.analysed.emit()

@@ -29,8 +29,7 @@ from PySide6.QtWidgets import (
 
 from models.readings.tabular_import import header_signature
 from widgets.column_mapping_dialog import ColumnMappingDialog
-from widgets.plot_image import add_image_actions
-from widgets.plot_image import plot_panels as _panels
+from widgets.plot_image import add_image_actions, plot_panels
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
 
@@ -187,7 +186,7 @@ class WorkbenchView(QWidget):
     PANEL_MIN_HEIGHT = 150
 
     def add_plot_tab(self, widget: QWidget, title: str) -> None:
-        panels = max(1, _panels(widget))
+        panels = max(1, plot_panels(widget))
         widget.setMinimumHeight(self.PANEL_MIN_HEIGHT * panels)
         scroll = QScrollArea()
         scroll.setWidgetResizable(True)

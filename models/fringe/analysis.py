@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.fringe.export import write_correction_table
 from models.fringe.model import (
     TWO_PI,
     ChannelFit,
@@ -342,8 +343,6 @@ def summary(result: FringeResult) -> str:
 
 
 def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
-    from models.fringe.export import write_correction_table  # it imports this module
-
     write_correction_table(path, result)
     return (f"correction table, {result.table.size} entries "
             f"({'C header' if str(path).endswith('.h') else 'CSV'})")

@@ -19,6 +19,7 @@ from models.positioning.model import (
     STANDARDS,
     PositioningResult,
     evaluate,
+    figure_text,
     infer_directions,
 )
 from models.positioning.report import positioning_certificate
@@ -261,12 +262,6 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
     }
 
 
-def _figure(value: float | None, symbol: str) -> str:
-    if value is None or not math.isfinite(value):
-        return "not evaluated"
-    return f"{value:.3f}{symbol}"
-
-
 def summary(result: PositioningResult) -> str:
     sym = result.symbol
     f = result.iso.figures
@@ -280,10 +275,10 @@ def summary(result: PositioningResult) -> str:
              + ("" if result.minimum_runs_met else "   *** fewer than 5 runs: flagged ***")]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
-    lines.append("ISO 230-2: " + ", ".join(f"{k} = {_figure(f.get(k), sym)}" for k in keys))
+    lines.append("ISO 230-2: " + ", ".join(f"{k} = {figure_text(f.get(k), sym)}" for k in keys))
     v = result.vdi
     lines.append("VDI/DGQ 3441: " + ", ".join(
-        f"{k} = {_figure(val, sym)}" for k, val in v.as_dict().items()))
+        f"{k} = {figure_text(val, sym)}" for k, val in v.as_dict().items()))
     lines.append(f"Standard applied: {STANDARDS[result.standard]}. "
                  "Compensation = −mean deviation (Export compensation table… below the set-up).")
     return "\n".join(lines)
@@ -312,7 +307,7 @@ POSITIONING = AnalysisKind(
     presenter="widgets.positioning.presenter:PositioningPresenter",
     correction_table=_correction_table,
     verdict=lambda r: (f"{STANDARDS[r.standard].split(' (')[0]}: "
-                       + ", ".join(f"{k} = {_figure(r.iso.figures.get(k), r.symbol)}"
+                       + ", ".join(f"{k} = {figure_text(r.iso.figures.get(k), r.symbol)}"
                                    for k in (("A", "R", "B") if r.bidirectional else
                                              tuple(f"{f}_{n}" for n, _, _ in
                                                    r.directions_present() for f in ("A", "R"))))

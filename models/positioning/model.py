@@ -28,7 +28,8 @@ import numpy as np
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
 
 __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
-           "TARGET_UNITS", "PositioningResult", "Vdi3441Result", "evaluate", "infer_directions",
+           "TARGET_UNITS", "PositioningResult", "Vdi3441Result", "evaluate", "figure_text",
+           "infer_directions",
            "vdi3441_evaluate"]
 
 #: ISO 230-2's sign: x = actual − target. The axis's own scale indicates the target when it
@@ -42,8 +43,8 @@ SIGN_CONVENTION_TEXT = ("positional deviation x = actual position − target (IS
 #: ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target.
 MIN_RUNS = 5
 
-#: target unit → (symbol, quantity)
-TARGET_UNITS: dict[str, tuple[str, str]] = {"deg": ("°", "angle"), "mm": (" mm", "length")}
+#: target unit → its symbol
+TARGET_UNITS: dict[str, str] = {"deg": "°", "mm": " mm"}
 
 #: deviation unit → (target unit it belongs to, deviation units per target unit, symbol)
 DEVIATION_UNITS: dict[str, tuple[str, float, str]] = {
@@ -59,6 +60,14 @@ STANDARDS: dict[str, str] = {
     "vdi3441": "VDI/DGQ 3441:1977",
     "gb17421.2": "GB/T 17421.2-2016 (identical to ISO 230-2:2014)",
 }
+
+
+def figure_text(value: float | None, symbol: str) -> str:
+    """A figure as the summary and the certificate print it; "not evaluated" when the
+    readings could not determine it."""
+    if value is None or not math.isfinite(value):
+        return "not evaluated"
+    return f"{value:.3f}{symbol}"
 
 
 def infer_directions(targets: np.ndarray) -> np.ndarray:
@@ -155,7 +164,7 @@ class PositioningResult:
 
     @property
     def target_symbol(self) -> str:
-        return TARGET_UNITS[self.target_unit][0]
+        return TARGET_UNITS[self.target_unit]
 
     @property
     def bidirectional(self) -> bool:

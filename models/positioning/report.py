@@ -16,8 +16,6 @@ shown in the window and the JSON.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from models.certificate.document import (
@@ -28,7 +26,13 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.positioning.model import MIN_RUNS, SIGN_CONVENTION_TEXT, STANDARDS, PositioningResult
+from models.positioning.model import (
+    MIN_RUNS,
+    SIGN_CONVENTION_TEXT,
+    STANDARDS,
+    PositioningResult,
+    figure_text,
+)
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -93,12 +97,6 @@ def positioning_budget(result: PositioningResult,
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
 
 
-def _fmt(value: float | None, sym: str, digits: int = 3) -> str:
-    if value is None or not math.isfinite(value):
-        return "not evaluated"
-    return f"{value:.{digits}f}{sym}"
-
-
 def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
     sym, f = result.symbol, result.iso.figures
     gb = result.standard == "gb17421.2"
@@ -109,8 +107,8 @@ def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
         if direction not in present if direction else not result.bidirectional:
             continue
         name = f"{chinese} {key}" if gb else f"{key}: {english}"
-        iso_rows.append((name, _fmt(f.get(key), sym), "GB/T 17421.2" if gb else "ISO 230-2"))
-    vdi_rows = [(f"{k}: {VDI_NAMES[k]}", _fmt(v, sym), "VDI/DGQ 3441")
+        iso_rows.append((name, figure_text(f.get(key), sym), "GB/T 17421.2" if gb else "ISO 230-2"))
+    vdi_rows = [(f"{k}: {VDI_NAMES[k]}", figure_text(v, sym), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 

@@ -202,9 +202,7 @@ class Register:
         try:
             with self.engine.begin() as conn:
                 yield conn
-        except self._sa.exc.IntegrityError as exc:
-            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
-        except self._sa.exc.SQLAlchemyError as exc:
+        except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
             raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
 
     # -- issuing --------------------------------------------------------------------------
