@@ -22,8 +22,8 @@ def _data(plot_item) -> tuple[np.ndarray, np.ndarray]:
     xs, ys = [], []
     for item in plot_item.listDataItems():
         x, y = item.getData()
-        if x is None or y is None or len(x) == 0:
-            continue
+        if x is None or y is None or len(x) < 3:  # a two-point reference line (an envelope,
+            continue                               # a mean) may run under the legend
         xs.append(np.asarray(x, float))
         ys.append(np.asarray(y, float))
     if not xs:
