@@ -18,6 +18,7 @@ from typing import Any, Protocol
 
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.display_units import ANGLE_UNITS, AngleUnit
 
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
@@ -214,7 +215,8 @@ class CertificatePresenter:
                               "recorded in the register", 10000)
         return True
 
-    def export_results(self, kind, result, settings: dict, source_name: str) -> bool:
+    def export_results(self, kind, result, settings: dict, source_name: str,
+                       unit: AngleUnit = ANGLE_UNITS["arcsec"]) -> bool:
         path = self.view.choose_save_path("Export results", f"{kind.key}-results.csv",
                                           "CSV (*.csv);;Excel workbook (*.xlsx)")
         if not path:
@@ -223,9 +225,9 @@ class CertificatePresenter:
             document = kind.certificate_document(result, self.details(kind.key), source_name,
                                                  settings)
             if path.lower().endswith(".xlsx"):
-                write_results_xlsx(path, document)
+                write_results_xlsx(path, document, unit)
             else:
-                write_results_csv(path, document)
+                write_results_csv(path, document, unit)
         except (OSError, ValueError) as exc:
             self.view.tell("Cannot export", f"{path}: {exc}")
             return False

@@ -16,6 +16,7 @@ from typing import Any
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.display_units import ANGLE_UNITS, text_in_unit
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 from models.registry import KINDS
@@ -52,6 +53,9 @@ def _parser() -> argparse.ArgumentParser:
                    help="also write the workbench's correction table: fringe (CSV, or a C "
                         "header for OUT.h), positioning (compensation table; "
                         "--compensation-format, --compensation-step, --compensation-tables)")
+    p.add_argument("--unit", choices=sorted(ANGLE_UNITS), default="arcsec",
+                   help="angle unit of the printed summary and of --results (arcsec, urad or "
+                        "mdeg); JSON and certificates keep the unit of the evaluation")
     p.add_argument("--zenith", action="store_true",
                    help="theodolite: the vertical column is the zenith angle V (same as "
                         "--vertical-reading zenith)")
@@ -182,7 +186,8 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
                          + "\n")
     else:
-        sys.stdout.write(f"{kind.title}: {args.file}\n{kind.summary(result)}\n")
+        summary = text_in_unit(kind.summary(result), ANGLE_UNITS[args.unit])
+        sys.stdout.write(f"{kind.title}: {args.file}\n{summary}\n")
         for warning in getattr(result, "warnings", []):
             sys.stdout.write(f"Warning: {warning}\n")
     if args.table:
@@ -271,9 +276,9 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                  "the register)")
         if args.results:
             if args.results.lower().endswith(".xlsx"):
-                write_results_xlsx(args.results, document)
+                write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])
             else:
-                write_results_csv(args.results, document)
+                write_results_csv(args.results, document, ANGLE_UNITS[args.unit])
             _say(f"Results written to {args.results}")
     except (OSError, ValueError) as exc:
         _say(f"anglebench analyze: cannot write: {exc}")

@@ -15,7 +15,7 @@ import pyqtgraph as pg
 import scipy
 from PySide6 import __version__ as pyside_version
 from PySide6.QtCore import QByteArray, QSettings, QStandardPaths, Qt, QTimer, qVersion
-from PySide6.QtGui import QAction, QCloseEvent, QKeySequence, QUndoGroup
+from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QUndoGroup
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
@@ -30,6 +30,7 @@ from PySide6.QtWidgets import (
 from app.certificate_presenter import CertificatePresenter
 from models import __version__
 from models.certificate.metadata import CertificateMetadata
+from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.file import (
     Project,
     ProjectFileError,
@@ -55,6 +56,7 @@ AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s w
 AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
 AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
 MAX_RECENT = 8
+ANGLE_UNIT_SETTING = "display/angle_unit"  # the unit results are read in, for every workbench
 
 
 def with_chosen_suffix(path: str, chosen_filter: str) -> str:
@@ -196,12 +198,32 @@ class MainWindow(QMainWindow):
         focus = self._action(view_menu, "Next &pane (table, set-up, result, plots)",
                              self.focus_next_pane, QKeySequence("F6"))
         focus.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
+        units_menu = view_menu.addMenu("Angle &unit of results")
+        self.angle_unit_actions = QActionGroup(self)
+        for unit in ANGLE_UNITS.values():
+            action = self._action(units_menu, unit.name,
+                                  lambda _=False, u=unit: self.set_angle_unit(u),
+                                  tip="Plots, figures, texts and exported results in this unit "
+                                      "(certificates keep the unit of the evaluation)")
+            action.setCheckable(True)
+            action.setData(unit.key)
+            self.angle_unit_actions.addAction(action)
+        saved = str(self.qsettings.value(ANGLE_UNIT_SETTING, "arcsec"))
+        self.set_angle_unit(ANGLE_UNITS.get(saved, ANGLE_UNITS["arcsec"]))
 
         help_menu = self.menuBar().addMenu("&Help")
         self._action(help_menu, "&Quick guide", self.show_guide,
                      QKeySequence(QKeySequence.StandardKey.HelpContents))
         self._action(help_menu, "&About AngleBench", self.show_about)
         self._refresh_recent_menu()
+
+    def set_angle_unit(self, unit: AngleUnit) -> None:
+        """Results in ``unit`` on every workbench (redrawn, not re-analysed); remembered."""
+        for action in self.angle_unit_actions.actions():
+            action.setChecked(action.data() == unit.key)
+        for presenter in self.presenters:
+            presenter.set_angle_unit(unit)
+        self.qsettings.setValue(ANGLE_UNIT_SETTING, unit.key)
 
     def focus_next_pane(self) -> None:
         """F6: the readings table, the set-up, the result, the plots, and round again."""
@@ -558,7 +580,8 @@ class MainWindow(QMainWindow):
     def export_results(self) -> bool:
         result = self._current_result()
         return result is not None and self.certificates.export_results(
-            self.current.kind, result, self.current.settings, self._source_name())
+            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.angle_unit)
 
     # -- autosave and recovery ------------------------------------------------------
     def _rows(self) -> int:

@@ -136,3 +136,35 @@ def test_missing_x11_libraries_are_named_before_qt_aborts(monkeypatch, capsys):
     assert "sudo apt-get install" in capsys.readouterr().err
     monkeypatch.setenv("QT_QPA_PLATFORM", "offscreen")
     assert entry.missing_x11_packages() == []
+
+
+def test_unit_option_converts_the_summary_and_the_results(capsys, samples_dir, tmp_path):
+    """--unit mdeg: the summary's angles and every angle column of --results in mdeg (3.6"
+    is 1 mdeg); JSON keeps the evaluation's arcseconds."""
+    from openpyxl import load_workbook
+
+    sample = str(samples_dir / "theodolite_sample.csv")
+    code, arcsec, _ = run_cli(capsys, "theodolite", sample, "--results",
+                              str(tmp_path / "a.xlsx"))
+    assert code == 0
+    code, mdeg, _ = run_cli(capsys, "theodolite", sample, "--unit", "mdeg", "--results",
+                            str(tmp_path / "m.xlsx"))
+    assert code == 0
+    line = next(x for x in mdeg.splitlines() if x.startswith("Corrected error"))
+    low = float(line.split()[2])
+    arcsec_line = next(x for x in arcsec.splitlines() if x.startswith("Corrected error"))
+    assert low == pytest.approx(float(arcsec_line.split()[2].rstrip('"')) / 3.6, abs=6e-4)
+    assert line.split()[3] == "mdeg"
+    a, m = load_workbook(tmp_path / "a.xlsx"), load_workbook(tmp_path / "m.xlsx")
+    header = [c.value for c in next(m["Results"].iter_rows(max_row=1))]
+    assert "corrected_error_mdeg" in header
+    column = header.index("corrected_error_mdeg") + 1
+    for r in range(2, 6):
+        assert m["Results"].cell(r, column).value == pytest.approx(
+            a["Results"].cell(r, column).value / 3.6, rel=1e-9)
+    meta_a = {row[0].value: row[1].value for row in a["Certificate"].iter_rows()}
+    meta_m = {row[0].value: row[1].value for row in m["Certificate"].iter_rows()}
+    assert meta_m["Expanded uncertainty U, largest (mdeg)"] == pytest.approx(
+        meta_a["Expanded uncertainty U, largest (\")"] / 3.6)
+    code, out, _ = run_cli(capsys, "theodolite", sample, "--unit", "mdeg", "--json")
+    assert "corrected_error_arcsec" in json.loads(out)

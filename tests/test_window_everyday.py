@@ -216,3 +216,50 @@ def test_print_puts_the_result_and_plot_on_a_page(window, tmp_path):
     assert len(reader.pages) == 1 and "Grade 3" in text and "Polygon encoder test" in text
     assert reader.pages[0].images  # the plot
     assert window.print_action.shortcut().toString() == "Ctrl+P"
+
+
+def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path):
+    """View › Angle unit: every workbench's plots, figures, verdict and exported results
+    change unit together, with the unit in every title, and the choice is remembered."""
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    window.load_all_samples()
+    theodolite, polygon = window.presenter("theodolite"), window.presenter("polygon")
+    plot = theodolite.view.error_plot
+    before = plot.corrected_curve.getData()[1].copy()
+    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+                        lambda *a, **k: (str(tmp_path / "arcsec.csv"), "CSV (*.csv)"))
+    assert window.export_results()
+    urad = next(a for a in window.angle_unit_actions.actions() if a.data() == "urad")
+    urad.trigger()
+    assert urad.isChecked()
+    np.testing.assert_allclose(plot.corrected_curve.getData()[1], before * 4.8481368, rtol=1e-7)
+    assert plot.main_plot.getAxis("left").labelText == "raw error (µrad)"
+    assert plot.corrected_plot.getAxis("left").labelText == "corrected (µrad)"
+    assert plot.residual_plot.getAxis("left").labelText == "E residual (µrad)"
+    assert "µrad" in theodolite.view.verdict.text() and "\"" not in theodolite.view.verdict.text()
+    names = [polygon.view.figures.item(r, 0).text() for r in range(polygon.view.figures.rowCount())]
+    assert names == ["corrected peak-to-peak (µrad)", "pyramidal tilt ψ (µrad)"]
+    assert float(polygon.view.figures.item(0, 1).text()) == pytest.approx(
+        polygon.result.stats.peak_to_peak * 4.8481368, rel=1e-3)
+    assert polygon.view.tilt_plot.plot.getAxis("left").labelText.endswith("(µrad)")
+    per_target = window.presenter("positioning").view.per_target
+    assert per_target.horizontalHeaderItem(1).text() == "x̄↑ (µrad)"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName",
+                        lambda *a, **k: (str(tmp_path / "urad.csv"), "CSV (*.csv)"))
+    assert window.export_results()
+    arcsec_rows = (tmp_path / "arcsec.csv").read_text("utf-8-sig").splitlines()
+    urad_rows = (tmp_path / "urad.csv").read_text("utf-8-sig").splitlines()
+    assert "corrected_error_urad" in urad_rows[0] and "urad" not in arcsec_rows[0]
+    for head, a, u in zip(arcsec_rows[0].split(","), arcsec_rows[1].split(","),
+                          urad_rows[1].split(","), strict=True):
+        factor = 4.8481368 if head.endswith("_arcsec") else 1.0
+        assert float(u or "nan") == pytest.approx(float(a or "nan") * factor, rel=1e-7,
+                                                  nan_ok=True)
+    again = MainWindow(settings=window.qsettings, recovery=RecoveryStore(tmp_path / "r2"))
+    try:
+        assert all(p.angle_unit.key == "urad" for p in again.presenters)
+    finally:
+        again.close()
+        again.deleteLater()

@@ -19,6 +19,17 @@ MAX_SYMBOL_POINTS = 500  # beyond this, points are drawn as lines only (they wou
 #                            and 1000 symbols cost ~10 ms per redraw)
 
 
+def _unit_of(label: str) -> str:
+    """The unit a title states in its last parentheses: ``error (µrad)`` → ``µrad``."""
+    start, end = label.rfind("("), label.rfind(")")
+    return label[start + 1:end] if 0 <= start < end else ""
+
+
+def _with_unit(label: str, unit: str) -> str:
+    start = label.rfind("(")
+    return f"{label[:start].rstrip()} ({unit})" if start >= 0 else f"{label} ({unit})"
+
+
 class ErrorPlot(QWidget):
     """Three x-linked plots; the curves are created once and updated with ``setData``.
 
@@ -29,6 +40,7 @@ class ErrorPlot(QWidget):
     def __init__(self, parent=None, x_label: str = "θ (deg)",
                  residual_label: str = "residual (\")") -> None:
         super().__init__(parent)
+        self.unit = "\""  # of the errors drawn, for the readout under the cursor
         self._setup_ui(x_label, residual_label)
         self._layout()
         # y ranges follow the data, but only when it leaves the view or shrinks well
@@ -119,6 +131,7 @@ class ErrorPlot(QWidget):
     def show_figure(self, figure, residuals=None) -> None:
         """Draw a declared figure (models/plots.py): its ``raw`` and ``model`` series on the
         upper panel, ``corrected`` on its own, the residual figure on the lowest."""
+        self._state_units(figure.y_label, residuals.y_label if residuals is not None else "")
         parts = {role: figure.by_role(role) for role in ("raw", "model", "corrected")}
         self.set_curve_names(*(s.label if s is not None else "" for s in parts.values()))
         x = next(s.x for s in parts.values() if s is not None)
@@ -126,6 +139,18 @@ class ErrorPlot(QWidget):
         series = residuals.by_role("residual") if residuals is not None else None
         self.set_residuals(series.x if series is not None else [],
                            series.y if series is not None else None)
+
+    def _state_units(self, errors_label: str, residuals_label: str) -> None:
+        """Each panel's title names the unit of the figure it draws (the unit results are
+        read in: ″, µrad, mdeg or nm)."""
+        unit = _unit_of(errors_label)
+        if unit:
+            self.unit = unit
+            for plot in (self.main_plot, self.corrected_plot):
+                plot.setLabel("left", _with_unit(plot.getAxis("left").labelText, unit))
+        if _unit_of(residuals_label):
+            self.residual_plot.setLabel("left", _with_unit(
+                self.residual_plot.getAxis("left").labelText, _unit_of(residuals_label)))
 
     def _follow_y(self, plot, arrays) -> None:
         """Move the y range only if the data left it or fill less than 60 % of it. A user's
@@ -177,5 +202,6 @@ class ErrorPlot(QWidget):
             if xs is None or len(xs) == 0:
                 continue
             i = int(np.argmin(np.abs(xs - point.x())))
-            parts.append(f"{curve.opts['name']} {ys[i]:+.3f}\" @ {xs[i]:.4g}")
+            gap = "" if self.unit == "\"" else " "
+            parts.append(f"{curve.opts['name']} {ys[i]:+.3f}{gap}{self.unit} @ {xs[i]:.4g}")
         self.readout.setText("   ".join(parts))

@@ -12,6 +12,13 @@ from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
 from models.analysis_kind import AnalysisKind
+from models.display_units import (
+    ANGLE_UNITS,
+    AngleUnit,
+    figure_in_unit,
+    figures_in_unit,
+    text_in_unit,
+)
 from models.project.file import WorkbenchState
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
@@ -142,6 +149,7 @@ class WorkbenchPresenter(QObject):
         self.display: Any = None  # prepare_display(result)
         self.parsed: ParsedReadings | None = None
         self.problem = ""
+        self.angle_unit: AngleUnit = ANGLE_UNITS["arcsec"]  # what results are shown in
         self._generation = 0
         self._import_generation = 0  # a newer import, or an opened project, drops older imports
         self._import_pending = False
@@ -180,6 +188,24 @@ class WorkbenchPresenter(QObject):
 
     def clear_result(self) -> None:
         """Empty the plots (the readings cannot be analysed)."""
+
+    # -- the unit results are shown in -----------------------------------
+    def set_angle_unit(self, unit: AngleUnit) -> None:
+        """Show the result in ``unit`` (redrawn, not re-analysed)."""
+        if unit == self.angle_unit:
+            return
+        self.angle_unit = unit
+        if self.parsed is not None:
+            self._finish(self.parsed, self.result, self.problem, self.display)
+
+    def in_unit(self, *figures):
+        """The declared plots with their angles in the chosen unit (``None``, a plot with
+        nothing to draw, stays ``None``)."""
+        return tuple(None if f is None else figure_in_unit(f, self.angle_unit)
+                     for f in figures)
+
+    def in_unit_text(self, text: str) -> str:
+        return text_in_unit(text, self.angle_unit)
 
     # -- state ------------------------------------------------------------
     @property
@@ -370,14 +396,19 @@ class WorkbenchPresenter(QObject):
         self.view.set_next_row(f"next: row {self.sheet.row_count + 1}")
         if result is None:
             self.clear_result()
+            error = self.in_unit_text(error)
             self.view.set_summary(f"No result: {error}" if error else "No readings yet.")
             self.view.set_verdict(f"No result: {error}" if error else "")
             self.view.set_figures({})
             self.view.set_warnings(input_warnings)
         else:
-            self.view.set_summary(self.kind.summary(result))
-            self.view.set_verdict(self.kind.verdict(result) if self.kind.verdict else "")
-            self.view.set_figures(self.kind.headline_figures(result))
-            self.view.set_warnings(input_warnings + list(getattr(result, "warnings", [])))
+            unit_text = self.in_unit_text
+            self.view.set_summary(unit_text(self.kind.summary(result)))
+            self.view.set_verdict(unit_text(self.kind.verdict(result)) if self.kind.verdict
+                                  else "")
+            self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
+                                                  self.angle_unit))
+            self.view.set_warnings(input_warnings + [unit_text(w) for w in
+                                                     getattr(result, "warnings", [])])
             self.show_result(result)
         self.analysed.emit()

@@ -2,7 +2,9 @@
 
 CSV: every point's figures (UTF-8 with BOM so spreadsheets read Chinese text,
 one header row with units in the names). XLSX: the same on a *Results* sheet,
-plus *Parameters*, *Uncertainty budget* and *Certificate* sheets.
+plus *Parameters*, *Uncertainty budget* and *Certificate* sheets. Angles are
+written in the unit the user chose to read them in (arcseconds unless told),
+each header naming it.
 
 Numbers are written as numbers. Any text cell that starts with ``=``, ``+``,
 ``-``, ``@``, a tab or a carriage return is prefixed with an apostrophe so a
@@ -20,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from models.certificate.document import CertificateDocument, budget_table
+from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
 from models.project.atomic_write import write_bytes_atomic
 
 __all__ = ["XLSX_MAX_ROWS", "neutralise", "write_results_csv", "write_results_xlsx"]
@@ -38,12 +41,24 @@ def neutralise(text: object) -> str:
     return "'" + s if s.startswith(_FORMULA_STARTS) else s
 
 
-def results_csv_bytes(document: CertificateDocument) -> bytes:
+ARCSEC = ANGLE_UNITS["arcsec"]
+
+
+def _point_columns(document: CertificateDocument,
+                   unit: AngleUnit) -> list[tuple[str, np.ndarray]]:
+    out = []
+    for name, values in document.point_columns:
+        header, factor = header_in_unit(name, unit)
+        out.append((header, np.asarray(values, dtype=float) * factor))
+    return out
+
+
+def results_csv_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) -> bytes:
     out = io.StringIO()
     writer = csv.writer(out, lineterminator="\r\n")
-    headers = [name for name, _ in document.point_columns]
-    writer.writerow([neutralise(h) for h in headers])
-    columns = [np.asarray(values, dtype=float) for _, values in document.point_columns]
+    point_columns = _point_columns(document, unit)
+    writer.writerow([neutralise(h) for h, _ in point_columns])
+    columns = [values for _, values in point_columns]
     if columns:
         text = np.char.mod("%.10g", np.column_stack(columns))
         text[~np.isfinite(np.column_stack(columns))] = ""
@@ -51,8 +66,9 @@ def results_csv_bytes(document: CertificateDocument) -> bytes:
     return ("\ufeff" + out.getvalue()).encode("utf-8")
 
 
-def write_results_csv(path: str | Path, document: CertificateDocument) -> None:
-    write_bytes_atomic(path, results_csv_bytes(document))
+def write_results_csv(path: str | Path, document: CertificateDocument,
+                      unit: AngleUnit = ARCSEC) -> None:
+    write_bytes_atomic(path, results_csv_bytes(document, unit))
 
 
 def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
@@ -98,7 +114,20 @@ def _cell(value: object) -> object:
     return neutralise(value)
 
 
-def results_xlsx_bytes(document: CertificateDocument) -> bytes:
+def _metadata_in_unit(rows: list[tuple[str, object]],
+                      unit: AngleUnit) -> list[tuple[str, object]]:
+    out: list[tuple[str, object]] = []
+    for key, value in rows:
+        header, factor = header_in_unit(key, unit)
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            value = value * factor
+        elif isinstance(value, str):
+            value = text_in_unit(value, unit)
+        out.append((header, value))
+    return out
+
+
+def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) -> bytes:
     from openpyxl import Workbook  # imported here: only the export needs it
 
     points = len(document.point_columns[0][1]) if document.point_columns else 0
@@ -107,8 +136,9 @@ def results_xlsx_bytes(document: CertificateDocument) -> bytes:
                          "at most): export CSV instead")
     book = Workbook(write_only=True)
     sheet = book.create_sheet("Results")
-    sheet.append([neutralise(name) for name, _ in document.point_columns])
-    columns = [np.asarray(values, dtype=float) for _, values in document.point_columns]
+    point_columns = _point_columns(document, unit)
+    sheet.append([neutralise(name) for name, _ in point_columns])
+    columns = [values for _, values in point_columns]
     if columns:
         block = np.column_stack(columns)
         for row in block.tolist():
@@ -117,18 +147,20 @@ def results_xlsx_bytes(document: CertificateDocument) -> bytes:
                          ("Uncertainty budget", budget_table(document.budget,
                                                              document.budget_point))):
         ws = book.create_sheet(title)
-        ws.append([neutralise(h) for h in table.header])
-        for row in table.rows:
+        header, rows = table_in_unit(table.header, table.rows, unit)
+        ws.append([neutralise(h) for h in header])
+        for row in rows:
             ws.append([_cell(v) for v in row])
         if table.note:
-            ws.append([neutralise(table.note)])
+            ws.append([neutralise(text_in_unit(table.note, unit))])
     ws = book.create_sheet("Certificate")
-    for key, value in _metadata_rows(document):
+    for key, value in _metadata_in_unit(_metadata_rows(document), unit):
         ws.append([neutralise(key), _cell(value)])
     out = io.BytesIO()
     book.save(out)
     return out.getvalue()
 
 
-def write_results_xlsx(path: str | Path, document: CertificateDocument) -> None:
-    write_bytes_atomic(path, results_xlsx_bytes(document))
+def write_results_xlsx(path: str | Path, document: CertificateDocument,
+                       unit: AngleUnit = ARCSEC) -> None:
+    write_bytes_atomic(path, results_xlsx_bytes(document, unit))

@@ -25,7 +25,7 @@ class FringePresenter(WorkbenchPresenter):
 
     def show_result(self, result: FringeResult) -> None:
         figures = self.display if isinstance(self.display, dict) else self.prepare_display(result)
-        self.view.show_figures(figures)
+        self.view.show_figures(dict(zip(figures, self.in_unit(*figures.values()), strict=True)))
 
     def clear_result(self) -> None:
         self.view.clear_result()

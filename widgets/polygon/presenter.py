@@ -21,8 +21,9 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
-        self.view.show_figures(plots.error_figure(result), plots.residual_figure(result),
-                               plots.tilt_figure(result), plots.harmonics_figure(result))
+        self.view.show_figures(*self.in_unit(
+            plots.error_figure(result), plots.residual_figure(result),
+            plots.tilt_figure(result), plots.harmonics_figure(result)))
         if not result.valid:
             self.view.append_to_readings_caption(" — RUN INVALID (closure failed)")
 

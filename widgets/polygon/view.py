@@ -75,6 +75,9 @@ class PolygonView(WorkbenchView):
         """The declared figures (models/polygon/plots.py); ``None`` leaves a plot empty."""
         self.error_plot.show_figure(errors, residuals)
         readings, model = tilt.series if tilt is not None else (None, None)
+        if tilt is not None:
+            self.tilt_plot.plot.setLabel("left", tilt.y_label)
+        self.harmonics.plot.setLabel("left", harmonics.y_label)
         self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
         self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
         item = self.tilt_plot.plot.getPlotItem()

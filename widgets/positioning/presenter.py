@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
 from models.positioning.model import PositioningResult
@@ -18,9 +19,10 @@ class PositioningPresenter(WorkbenchPresenter):
         super().__init__(POSITIONING, view, parent)
 
     def show_result(self, result: PositioningResult) -> None:
-        self.view.show_figures(plots.deviation_figure(result), plots.reversal_figure(result),
-                               plots.readings_figure(result))
-        self.view.show_per_target(*result.per_target_table())
+        self.view.show_figures(*self.in_unit(plots.deviation_figure(result),
+                                             plots.reversal_figure(result),
+                                             plots.readings_figure(result)))
+        self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(" — fewer than 5 runs: flagged")
 

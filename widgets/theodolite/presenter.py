@@ -18,7 +18,8 @@ class TheodolitePresenter(WorkbenchPresenter):
         super().__init__(THEODOLITE, view, parent)
 
     def show_result(self, result: TheodoliteResult) -> None:
-        self.view.show_figures(plots.error_figure(result), plots.residual_figure(result))
+        self.view.show_figures(*self.in_unit(plots.error_figure(result),
+                                             plots.residual_figure(result)))
 
     def clear_result(self) -> None:
         self.view.clear_result()

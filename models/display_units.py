@@ -1,0 +1,172 @@
+"""The angle unit a user reads results in: arcseconds, microradians or millidegrees.
+
+Every figure is computed and kept in one unit (arcseconds; a positioning log in
+the unit it was typed in). What is shown and exported is converted here, at the
+last step, and only where its header or its text states an angle unit: a header
+``error (")`` becomes ``error (µrad)`` and its values are scaled; in a line of
+text, a number written with its unit (``0.45"``, ``+1.2 µrad``) is rewritten with
+the new one. A quantity whose unit is not an angle (nm, mV, V, °C) is left as it
+is, so an interferometer's nm stay nm.
+
+The rewriting of text is the reason this lives in one module: the summaries,
+verdicts and warnings are written once, in arcseconds, by each workbench, and the
+window and the command line show them in the chosen unit without each workbench
+formatting every figure twice.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from models.plots import PlotFigure
+
+__all__ = [
+    "ANGLE_UNITS",
+    "AngleUnit",
+    "angle_unit",
+    "figure_in_unit",
+    "figures_in_unit",
+    "header_in_unit",
+    "table_in_unit",
+    "text_in_unit",
+]
+
+
+@dataclass(frozen=True)
+class AngleUnit:
+    key: str
+    symbol: str  # as it is written after a number and in a header
+    name: str
+    per_arcsec: float  # how many of this unit make one arcsecond
+
+
+ANGLE_UNITS: dict[str, AngleUnit] = {u.key: u for u in (
+    AngleUnit("arcsec", "\"", "arcseconds (\")", 1.0),
+    AngleUnit("urad", "µrad", "microradians (µrad)", math.pi / (180.0 * 3600.0) * 1e6),
+    AngleUnit("mdeg", "mdeg", "millidegrees (mdeg)", 1000.0 / 3600.0),
+)}
+
+# how a unit is spelt where it is read: in a header "(…)" and after a number
+_SPELLINGS: dict[str, str] = {"\"": "arcsec", "″": "arcsec", "arcsec": "arcsec",
+                              "µrad": "urad", "μrad": "urad", "urad": "urad", "mdeg": "mdeg"}
+_HEADER_UNIT = re.compile(r"\((\"|″|arcsec|µrad|μrad|urad|mdeg)\)")
+_KEY_SUFFIX = re.compile(r"_(arcsec|urad|mdeg)(?![A-Za-z])")  # a column key: error_arcsec
+# a number with its unit: not inside a quotation ("1.5" quoted is a cell's text), not
+# the tail of a longer word or number
+_NUMBER_WITH_UNIT = re.compile(
+    r"(?<![\"\w.])([+\-−±]?)(\d+(?:\.(\d+))?(?:[eE][+\-]?\d+)?)(\"|″| ?µrad| ?μrad| ?mdeg)(?!\w)")
+
+
+def angle_unit(key: str) -> AngleUnit:
+    """The unit called ``key`` (arcsec, urad, mdeg); ValueError naming the choices."""
+    try:
+        return ANGLE_UNITS[key]
+    except KeyError:
+        raise ValueError(f"unknown angle unit {key!r}; choose one of "
+                         f"{', '.join(ANGLE_UNITS)}") from None
+
+
+def _places(value: float, decimals: int, factor: float) -> int:
+    """Decimals of a converted figure: the original's resolution carried over, and never
+    fewer than three significant digits (1" is 0.278 mdeg, not 0.3)."""
+    places = decimals + max(0, math.ceil(-math.log10(factor)))
+    if value != 0.0 and math.isfinite(value):
+        places = max(places, 2 - math.floor(math.log10(abs(value))))
+    return max(0, places)
+
+
+def _factor(spelt: str, unit: AngleUnit) -> float:
+    return unit.per_arcsec / ANGLE_UNITS[_SPELLINGS[spelt.strip()]].per_arcsec
+
+
+def header_in_unit(header: str, unit: AngleUnit) -> tuple[str, float]:
+    """(the header with its angle unit rewritten, the factor its values are multiplied
+    by): ``error (")`` or a column key ``error_arcsec``; a header without an angle unit
+    comes back as it is, with factor 1."""
+    found = _HEADER_UNIT.search(header)
+    if found is not None:
+        return (header[:found.start()] + f"({unit.symbol})" + header[found.end():],
+                _factor(found.group(1), unit))
+    found = _KEY_SUFFIX.search(header)
+    if found is not None:
+        return (header[:found.start()] + f"_{unit.key}" + header[found.end():],
+                _factor(found.group(1), unit))
+    return header, 1.0
+
+
+def text_in_unit(text: str, unit: AngleUnit) -> str:
+    """``text`` with every number written with an angle unit converted to ``unit``,
+    keeping the figure's resolution and its sign."""
+    def rewrite(match: re.Match[str]) -> str:
+        sign, number, decimals, spelt = match.groups()
+        factor = _factor(spelt, unit)
+        if factor == 1.0:
+            return match.group(0)
+        value = float(number) * factor
+        if "e" in number.lower():
+            digits = f"{value:.3g}"
+        else:
+            digits = f"{value:.{_places(value, len(decimals or ''), factor)}f}"
+        gap = "" if unit.symbol == "\"" else " "
+        return f"{sign}{digits}{gap}{unit.symbol}"
+    return _NUMBER_WITH_UNIT.sub(rewrite, text)
+
+
+def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, Any]:
+    """Named figures ``{"name (unit)": value}`` with the angles converted."""
+    out: dict[str, Any] = {}
+    for name, value in figures.items():
+        header, factor = header_in_unit(name, unit)
+        out[header] = (value * factor if isinstance(value, int | float) and
+                       not isinstance(value, bool) else value)
+    return out
+
+
+def figure_in_unit(figure: PlotFigure, unit: AngleUnit) -> PlotFigure:
+    """The plot with its y values (and their bands) in ``unit`` when its y title states
+    an angle unit; log-scaled and other figures come back unchanged."""
+    y_label, factor = header_in_unit(figure.y_label, unit)
+    if factor == 1.0 or "log" in figure.y_label:
+        return figure
+    series = tuple(replace(s, y=np.asarray(s.y) * factor,
+                           band=None if s.band is None else np.asarray(s.band) * factor)
+                   for s in figure.series)
+    return replace(figure, y_label=y_label, series=series)
+
+
+def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:
+    if isinstance(cell, bool) or cell is None:
+        return cell
+    if isinstance(cell, int | float | np.floating | np.integer):
+        return float(cell) * factor
+    text = str(cell)
+    try:
+        value = float(text.replace("−", "-"))
+    except ValueError:
+        return text_in_unit(text, unit)
+    decimals = len(text.split(".")[1]) if "." in text and "e" not in text.lower() else None
+    if decimals is None:
+        return f"{value * factor:.6g}"
+    sign = "+" if text.startswith("+") else ""
+    return f"{value * factor:{sign}.{_places(value * factor, decimals, factor)}f}"
+
+
+def table_in_unit(header: Sequence[str], rows: Sequence[Sequence[Any]],
+                  unit: AngleUnit) -> tuple[tuple[str, ...], list[tuple[Any, ...]]]:
+    """A table with each column whose header states an angle unit converted: numbers
+    scaled, numeric text rewritten at its resolution, other text converted as text."""
+    converted = [header_in_unit(h, unit) for h in header]
+    new_rows = []
+    for row in rows:
+        new_rows.append(tuple(
+            _cell_in_unit(cell, converted[i][1], unit) if i < len(converted) and
+            converted[i][1] != 1.0 else (text_in_unit(cell, unit) if isinstance(cell, str)
+                                         else cell)
+            for i, cell in enumerate(row)))
+    return tuple(h for h, _ in converted), new_rows

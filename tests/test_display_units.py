@@ -1,0 +1,90 @@
+"""Results read in arcseconds, microradians or millidegrees (#19): the conversions are
+checked against figures worked by hand, text keeps each figure's resolution, and what is
+not an angle (nm, V, a quoted cell) is left alone."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from models.display_units import (
+    ANGLE_UNITS,
+    angle_unit,
+    figure_in_unit,
+    figures_in_unit,
+    header_in_unit,
+    table_in_unit,
+    text_in_unit,
+)
+from models.plots import PlotFigure, PlotSeries
+
+URAD, MDEG, ARCSEC = ANGLE_UNITS["urad"], ANGLE_UNITS["mdeg"], ANGLE_UNITS["arcsec"]
+
+
+def test_one_arcsecond_in_each_unit():
+    # 1" = π / (180·3600) rad = 4.8481368 µrad; 3.6" = 1 mdeg
+    assert URAD.per_arcsec == pytest.approx(4.8481368, rel=1e-8)
+    assert MDEG.per_arcsec * 3.6 == pytest.approx(1.0)
+    assert header_in_unit("error (\")", URAD) == ("error (µrad)", pytest.approx(4.8481368))
+    header, factor = header_in_unit("A (urad)", MDEG)
+    assert header == "A (mdeg)" and factor == pytest.approx(180 / math.pi * 1e-3)
+    assert header_in_unit("signal (V)", URAD) == ("signal (V)", 1.0)
+    assert header_in_unit("corrected_error_arcsec", MDEG) == ("corrected_error_mdeg",
+                                                              pytest.approx(1 / 3.6))
+    assert header_in_unit("arcsecond_count", MDEG)[1] == 1.0
+    with pytest.raises(ValueError, match="urad"):
+        angle_unit("gon")
+
+
+def test_text_is_rewritten_with_its_resolution():
+    line = 'Raw error -423.00" … +300.20" (peak-to-peak 723.20"), grade 3 (±1")'
+    assert text_in_unit(line, MDEG) == ("Raw error -117.500 mdeg … +83.389 mdeg "
+                                        "(peak-to-peak 200.889 mdeg), grade 3 (±0.278 mdeg)")
+    assert text_in_unit("B = 6.062\"", URAD) == "B = 29.389 µrad"
+    assert text_in_unit(line, ARCSEC) == line
+    back = text_in_unit(text_in_unit("ψ = 480.0\" ± 0.01\"", URAD), ARCSEC)
+    assert back == "ψ = 480.00\" ± 0.01000\""  # a digit more each way, never one less
+
+
+def test_what_is_not_an_angle_is_left_alone():
+    for text in ('cell "1.5" cannot be read', "drift 0.45 nm", "u = 1.2 V", "θ = 30°",
+                 "column A(″)", "A5\" is a name", "L = 16384"):
+        assert text_in_unit(text, URAD) == text
+
+
+@given(st.floats(-1e5, 1e5, allow_nan=False), st.integers(0, 4),
+       st.sampled_from(["urad", "mdeg"]))
+def test_text_round_trip_keeps_the_figure_within_its_resolution(value, decimals, key):
+    written = f"{value:+.{decimals}f}\""
+    shown = text_in_unit(f"E = {written}", ANGLE_UNITS[key])
+    number = re.search(r"[+\-]\d+(\.\d+)?", shown)
+    assert number is not None and shown.endswith(ANGLE_UNITS[key].symbol)
+    recovered = float(number.group(0)) / ANGLE_UNITS[key].per_arcsec
+    assert abs(recovered - float(written[:-1])) <= 0.5 * 10.0 ** -decimals + 1e-9
+
+
+def test_plots_scale_their_angles_and_nothing_else():
+    band = np.array([0.1, 0.2])
+    figure = PlotFigure("Errors", "θ (°)", "error (\")", (
+        PlotSeries("raw", np.array([0.0, 1.0]), np.array([1.0, -2.0]), band=band),))
+    shown = figure_in_unit(figure, URAD)
+    assert shown.y_label == "error (µrad)"
+    np.testing.assert_allclose(shown.series[0].y, np.array([1.0, -2.0]) * 4.8481368, rtol=1e-8)
+    np.testing.assert_allclose(shown.series[0].band, band * 4.8481368, rtol=1e-8)
+    np.testing.assert_array_equal(shown.series[0].x, [0.0, 1.0])
+    volts = PlotFigure("Signals", "θ", "signal (V)", figure.series)
+    assert figure_in_unit(volts, URAD) is volts
+
+
+def test_tables_and_named_figures():
+    header, rows = table_in_unit(("target (deg)", "x̄↑ (\")", "n↑"),
+                                 [("10", "+3.600", "5"), ("20", "—", "5")], MDEG)
+    assert header == ("target (deg)", "x̄↑ (mdeg)", "n↑")
+    assert rows == [("10", "+1.0000", "5"), ("20", "—", "5")]
+    assert figures_in_unit({"A (\")": 3.6, "runs": 5}, MDEG) == {"A (mdeg)": pytest.approx(1.0),
+                                                                  "runs": 5}
