@@ -34,15 +34,28 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--samples", action="store_true", help="load the bundled samples")
     parser.add_argument("--screenshot", metavar="DIR",
                         help="render every workbench with its sample to DIR/<workbench>.png")
+    parser.add_argument("--size", metavar="WxH", default="1400x900", type=_size,
+                        help="the window's size for --screenshot, in logical pixels (with "
+                             "QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)")
     args = parser.parse_args(argv)
     if args.screenshot:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         from app.screenshot import write_screenshots
 
-        for path in write_screenshots(args.screenshot):
+        for path in write_screenshots(args.screenshot, args.size):
             print(path)  # noqa: T201 - the command's output
         return 0
     return run_gui(args.project, args.samples)
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        width, height = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: give the size as WxH, e.g. 1280x720") from None
+    if not (320 <= width <= 8000 and 240 <= height <= 8000):
+        raise argparse.ArgumentTypeError(f"{text!r}: 320x240 to 8000x8000")
+    return width, height
 
 
 # Qt's X11 platform needs these system libraries (Debian/Ubuntu package names); without

@@ -77,6 +77,22 @@ def register_picture(scratch: Path) -> Path:
     return out
 
 
+def scaled_pictures(scratch: Path) -> list[Path]:
+    """The polygon workbench as a technician sees it on a 1280×720 screen and on a
+    1920×1080 screen at 200 % (960×540 logical pixels): each its own process, since Qt
+    reads the scale factor once, when the application starts."""
+    out = []
+    for name, size, scale in (("polygon_1280x720.png", "1280x720", "1"),
+                              ("polygon_200pct.png", "960x540", "2")):
+        folder = scratch / name
+        subprocess.run([sys.executable, "-m", "app.main", "--screenshot", str(folder), "--size",
+                        size], check=True, stdout=subprocess.DEVNULL,
+                       env={**os.environ, "QT_SCALE_FACTOR": scale})
+        (folder / "polygon.png").replace(HERE / name)
+        out.append(HERE / name)
+    return out
+
+
 def main() -> None:
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
     from PySide6.QtWidgets import QApplication
@@ -93,6 +109,7 @@ def main() -> None:
         for kind in ("theodolite", "polygon", "fringe", "positioning"):
             certificate_picture(kind, Path(scratch))
         validation_picture(Path(scratch))
+        scaled_pictures(Path(scratch))
         register_picture(Path(scratch))
 
 

@@ -46,3 +46,24 @@ def test_the_legend_goes_where_the_data_is_not(qtbot):
     plot.set_curves(x, raw=-x, model=-x, corrected=x)
     assert plot.main_plot.legend_corner == "top-right"
     assert plot.corrected_plot.legend_corner != "top-right"
+
+
+def test_a_cramped_plot_puts_its_legend_above_the_data_and_back_when_there_is_room(qtbot):
+    """Data in every corner of a plot too small for a legend inside it (a small window at
+    200 %): the entries go to the title line above the data area, with their colours;
+    given room again, the legend returns inside, in a corner."""
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(420, 330)
+    plot.show()
+    x = np.linspace(0, 100, 400)
+    wave = np.sin(x / 3.0)  # fills every corner
+    plot.set_curve_names("raw error", "set-up model", "corrected")
+    plot.set_curves(x, raw=wave, model=0.9 * wave, corrected=wave)
+    qtbot.waitUntil(lambda: plot.main_plot.legend_corner == "above")
+    title = plot.main_plot.titleLabel.text
+    assert "raw error" in title and "set-up model" in title and "#c0392b" in title.lower()
+    assert not plot.legend.isVisible()
+    plot.resize(1400, 1400)
+    qtbot.waitUntil(lambda: plot.main_plot.legend_corner != "above")
+    assert plot.legend.isVisible() and not plot.main_plot.titleLabel.isVisible()

@@ -1,11 +1,16 @@
 """Legends that never sit on the data: the legend goes to a corner of the plot where no
 data point falls under it (top right first when several are free); when every corner has
-data, the plot's top is raised to make room for it above the curves (unless the legend
-would take over a third of a cramped plot: then the corner with the fewest points)."""
+data, the plot's top is raised to make room for it above the curves; and when the legend
+would take over a third of a cramped plot (a small window, 200 % scale), its entries go
+above the plot, in its title line, outside the data area. Placed again whenever the
+plot's view changes size (after the layout has settled, not before)."""
 
 from __future__ import annotations
 
+import html
+
 import numpy as np
+import pyqtgraph as pg
 
 __all__ = ["CORNERS", "place_legend"]
 
@@ -33,11 +38,48 @@ def _data(plot_item) -> tuple[np.ndarray, np.ndarray]:
     return x[ok], y[ok]
 
 
+def _entry_html(sample, label) -> str:
+    opts = sample.item.opts
+    if opts.get("pen") is not None:
+        pen = pg.mkPen(opts["pen"])
+        mark = "━━" if pen.style() == pg.QtCore.Qt.PenStyle.SolidLine else "╌╌"
+        color = pen.color().name()
+    else:
+        mark, color = "●", pg.mkBrush(opts.get("symbolBrush")).color().name()
+    return (f'<span style="color:{color}">{mark}</span>&nbsp;'
+            f"{html.escape(label.text)}")
+
+
+def _legend_above(plot_item, legend) -> None:
+    """The legend's entries in the plot's title line (the figure's title kept above them)."""
+    if not hasattr(plot_item, "title_before_legend"):
+        title = plot_item.titleLabel
+        plot_item.title_before_legend = title.text if title.isVisible() else None
+    legend.setVisible(False)
+    entries = "&nbsp;&nbsp; ".join(_entry_html(s, label) for s, label in legend.items
+                                   if label.text)
+    base = plot_item.title_before_legend
+    plot_item.setTitle(f"{base}<br>{entries}" if base else entries, size="8pt")
+
+
+def _legend_inside(plot_item, legend) -> None:
+    if hasattr(plot_item, "title_before_legend"):
+        base = plot_item.__dict__.pop("title_before_legend")
+        plot_item.setTitle(base, size="9pt") if base else plot_item.setTitle(None)
+    legend.setVisible(True)
+
+
 def place_legend(plot_item, legend) -> str:
-    """Move ``legend`` to the emptiest corner of ``plot_item``; returns the corner."""
-    x, y = _data(plot_item)
+    """Move ``legend`` to the emptiest corner of ``plot_item`` (or above it); returns the
+    corner, or ``"above"``."""
+    if legend is None:
+        return ""
     vb = plot_item.getViewBox()
-    if x.size == 0 or legend is None:
+    if not getattr(plot_item, "legend_follows_size", False):
+        plot_item.legend_follows_size = True
+        vb.sigResized.connect(lambda *_: place_legend(plot_item, legend))
+    x, y = _data(plot_item)
+    if x.size == 0:
         return ""
     (x0, x1), (y0, y1) = vb.viewRange()
     if vb.state["autoRange"][0] or not (x0 <= x.min() and x.max() <= x1):
@@ -57,7 +99,12 @@ def place_legend(plot_item, legend) -> str:
         "bottom-left": int(np.sum((u <= fx) & (v >= 1 - fy))),
     }
     corner = min(CORNERS, key=lambda c: counts[c])  # dict order breaks ties: top right first
-    if counts[corner] and y1 > y0 and fy < 0.35:
+    if counts[corner] and (fy >= 0.35 or y1 <= y0):
+        _legend_above(plot_item, legend)  # a cramped plot: the legend would hide the data
+        plot_item.legend_corner = "above"
+        return "above"
+    _legend_inside(plot_item, legend)
+    if counts[corner]:
         # no corner is free: make room above the data (the legend then sits over nothing)
         corner = "top-right"
         vb.setYRange(y0, y0 + (y1 - y0) / (1.0 - fy), padding=0.02)
