@@ -91,6 +91,7 @@ class MainWindow(QMainWindow):
         self.presenters = presenters or default_presenters()
         self.project_path: Path | None = None
         self.project_metadata: dict = {}
+        self.manual = None  # the manual's window, made when first asked for (F1)
         self.certificates = CertificatePresenter(self, self.qsettings, lambda: self.project_metadata,
                                                  lambda: self.current.mark_modified())
         ensure_cjk_font()  # Chinese names and readings are never boxes
@@ -212,8 +213,10 @@ class MainWindow(QMainWindow):
         self.set_angle_unit(ANGLE_UNITS.get(saved, ANGLE_UNITS["arcsec"]))
 
         help_menu = self.menuBar().addMenu("&Help")
-        self._action(help_menu, "&Quick guide", self.show_guide,
-                     QKeySequence(QKeySequence.StandardKey.HelpContents))
+        self._action(help_menu, "&Manual (this workbench)", self.show_manual,
+                     QKeySequence(QKeySequence.StandardKey.HelpContents),
+                     tip="What to measure, how to set up, every setting and plot")
+        self._action(help_menu, "&Quick guide", self.show_guide)
         self._action(help_menu, "&About AngleBench", self.show_about)
         self._refresh_recent_menu()
 
@@ -249,6 +252,14 @@ class MainWindow(QMainWindow):
         "keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the "
         "register (File › Certificate register). Drop a CSV or XLSX on the window to import "
         "it. The README next to the program explains every method and figure.")
+
+    def show_manual(self) -> None:
+        """F1: the bundled manual at the page of the workbench in front."""
+        if self.manual is None:
+            from widgets.manual_window import ManualWindow
+
+            self.manual = ManualWindow(self)  # a window of its own, closed with this one
+        self.manual.show_page(self.current.kind.key)
 
     def show_guide(self) -> None:
         QMessageBox.information(self, "AngleBench — quick guide", self.GUIDE)

@@ -163,7 +163,7 @@ def test_instrument_style_entry_fills_theta_and_moves_to_the_next_reading(window
     assert not window.presenter("fringe").view.step.isVisibleTo(window.presenter("fringe").view)
 
 
-def test_f6_walks_the_panes_and_f1_has_a_guide(window, qtbot, monkeypatch):
+def test_f6_walks_the_panes_and_f1_opens_the_manual(window, qtbot, monkeypatch):
     from PySide6.QtWidgets import QApplication
 
     view = window.current.view
@@ -183,9 +183,36 @@ def test_f6_walks_the_panes_and_f1_has_a_guide(window, qtbot, monkeypatch):
     monkeypatch.setattr(QMessageBox, "information", lambda *a: shown.append(a[2]))
     help_action = next(a for a in window.menuBar().actions() if a.text() == "&Help").menu()
     guide = next(a for a in help_action.actions() if a.text() == "&Quick guide")
-    assert guide.shortcut().toString() == "F1"
     guide.trigger()
     assert "Ctrl+PgDn" in shown[0]
+    manual = next(a for a in help_action.actions() if a.text().startswith("&Manual"))
+    assert manual.shortcut().toString() == "F1"
+    window.tabs.setCurrentIndex(1)
+    qtbot.keyClick(window.current.view.table, Qt.Key.Key_F1)
+    qtbot.waitUntil(lambda: window.manual is not None and window.manual.isVisible())
+    assert window.manual.browser.source().fileName() == "polygon.html"
+    assert "Vertical readings / tilt" in window.manual.browser.toPlainText()
+    window.tabs.setCurrentIndex(2)
+    manual.trigger()
+    assert window.manual.browser.source().fileName() == "fringe.html"
+
+
+def test_the_manual_explains_every_setting_and_every_plot_of_each_workbench(window):
+    """A page per workbench naming each of its settings and plot tabs as the window shows
+    them, so a setting or plot added without its explanation fails here."""
+    import html
+    import re
+
+    from widgets.manual_window import manual_page
+
+    for presenter in window.presenters:
+        page = manual_page(presenter.kind.key)
+        assert page.name == f"{presenter.kind.key}.html"
+        text = html.unescape(re.sub(r"<[^>]+>", "", page.read_text("utf-8")))
+        tabs = presenter.view.plot_tabs
+        for name in [tabs.tabText(i) for i in range(tabs.count())] + \
+                [p.label for p in presenter.kind.parameters]:
+            assert name in text, f"{page.name} does not explain {name!r}"
 
 
 def test_plots_keep_their_height_and_scroll_when_the_window_is_small(window, qtbot):

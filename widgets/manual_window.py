@@ -1,0 +1,39 @@
+"""Help › Manual (F1): the bundled HTML manual, opened at the current workbench's page
+(what to measure, how to set up, every setting, what each plot shows)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import Qt, QUrl
+from PySide6.QtWidgets import QTextBrowser, QVBoxLayout, QWidget
+
+MANUAL_DIR = Path(__file__).resolve().parent.parent / "resources" / "manual"
+
+
+def manual_page(kind_key: str) -> Path:
+    """The page of a workbench, or the manual's index when it has none."""
+    page = MANUAL_DIR / f"{kind_key}.html"
+    return page if page.is_file() else MANUAL_DIR / "index.html"
+
+
+class ManualWindow(QWidget):
+    """One window, reused: F1 again shows the page of the workbench now in front."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.setWindowFlag(Qt.WindowType.Window)
+        self.setWindowTitle("AngleBench — manual")
+        self.browser = QTextBrowser()
+        self.browser.setOpenExternalLinks(True)
+        self.browser.setSearchPaths([str(MANUAL_DIR)])
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.browser)
+        self.resize(720, 760)
+
+    def show_page(self, kind_key: str) -> None:
+        self.browser.setSource(QUrl.fromLocalFile(str(manual_page(kind_key))))
+        self.show()
+        self.raise_()
+        self.activateWindow()
