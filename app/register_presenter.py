@@ -34,6 +34,8 @@ class RegisterView(Protocol):
 
     def tell(self, title: str, text: str) -> None: ...
 
+    def print_certificate(self, pdf: bytes, number: str) -> int: ...  # pages; 0: cancelled
+
 
 def _days(date: str) -> float:
     return float(dt.date.fromisoformat(date).toordinal()) if date else float("nan")
@@ -121,6 +123,19 @@ class RegisterPresenter:
             self.view.tell("Cannot save", str(exc))
             return False
         return True
+
+    def print_pdf(self) -> int:
+        """Print the selected certificate as it was issued (its PDF from the register)."""
+        record = self.selected()
+        if record is None:
+            return 0
+        try:
+            with self._register() as register:
+                pdf = register.pdf(record.number)
+            return self.view.print_certificate(pdf, record.number)
+        except (RegisterError, OSError) as exc:
+            self.view.tell("Cannot print", str(exc))
+            return 0
 
     def verify_pdf(self) -> CertificateRecord | None:
         path = self.view.ask_pdf_to_verify()

@@ -93,3 +93,42 @@ def test_chinese_in_the_window_is_drawn_not_boxed(window):
     assert family
     metrics = QFontMetrics(QFont(family))
     assert all(metrics.inFontUcs4(ord(ch)) for ch in "长春光电有限公司转角方位")
+
+
+def test_an_issued_certificate_prints_page_for_page(window, samples_dir, tmp_path, monkeypatch):
+    """Print… in the register: the print dialog, then every page of the PDF as issued,
+    full size (to a PDF printer here, read back page by page)."""
+    from pypdf import PdfReader
+    from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
+    from widgets.print_view import pdf_page_images
+
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+    issued = (tmp_path / "a.pdf").read_bytes()
+    printed = tmp_path / "printed.pdf"
+
+    def accept(dialog):
+        dialog.printer().setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+        dialog.printer().setOutputFileName(str(printed))
+        return 1
+
+    monkeypatch.setattr(QPrintDialog, "exec", accept)
+    window.show_register()
+    dialog = window.register_window
+    dialog.table.selectRow(0)
+    told = []
+    dialog.tell = lambda *a: told.append(a)
+    dialog.buttons["print"].click()
+    assert told == []
+    pages = len(PdfReader(str(tmp_path / "a.pdf")).pages)
+    assert pages >= 2 and len(PdfReader(str(printed)).pages) == pages
+    first = next(pdf_page_images(issued, 50))
+    assert abs(first.width() - 210 / 25.4 * 50) <= 1  # A4 at 50 dpi
+    gray = [first.pixelColor(x, y).lightness() for x in range(0, first.width(), 3)
+            for y in range(0, first.height(), 3)]
+    assert min(gray) < 80 and sum(g > 240 for g in gray) > len(gray) / 2  # text on paper
+    monkeypatch.setattr(QPrintDialog, "exec", lambda dialog: 0)
+    printed.unlink()
+    dialog.buttons["print"].click()  # cancelled: nothing printed, nothing said
+    assert not printed.exists() and told == []

@@ -54,7 +54,8 @@ class RegisterWindow(QDialog):
         self.table.horizontalHeader().setStretchLastSection(True)
         self.buttons = {name: QPushButton(text) for name, text in (
             ("open", "Open project"), ("amend", "Amend…"), ("replace", "Replace…"),
-            ("save", "Save PDF…"), ("verify", "Verify a PDF…"), ("history", "History"))}
+            ("save", "Save PDF…"), ("print", "Print…"), ("verify", "Verify a PDF…"),
+            ("history", "History"))}
         self.buttons["amend"].setToolTip("Open the certificate's readings and details; the next "
                                          "export issues Amendment n to it, saying what changed")
         self.buttons["replace"].setToolTip("As Amend, but the new certificate gets a new number "
@@ -128,6 +129,7 @@ class RegisterWindow(QDialog):
         self.buttons["amend"].clicked.connect(lambda: presenter.revise(False))
         self.buttons["replace"].clicked.connect(lambda: presenter.revise(True))
         self.buttons["save"].clicked.connect(presenter.save_pdf)
+        self.buttons["print"].clicked.connect(presenter.print_pdf)
         self.buttons["verify"].clicked.connect(presenter.verify_pdf)
         self.buttons["history"].clicked.connect(presenter.show_history)
         self.table.doubleClicked.connect(lambda _index: presenter.show_history())
@@ -208,3 +210,15 @@ class RegisterWindow(QDialog):
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.information(self, title, text)
+
+    def print_certificate(self, pdf: bytes, number: str) -> int:
+        """The print dialog, then the certificate's pages as issued; 0 when cancelled."""
+        from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
+        from widgets.print_view import print_pdf
+
+        printer = QPrinter(QPrinter.PrinterMode.HighResolution)
+        printer.setDocName(f"Certificate {number}")
+        if QPrintDialog(printer, self).exec() != QDialog.DialogCode.Accepted:
+            return 0
+        return print_pdf(pdf, printer)
