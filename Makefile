@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: run test bench lint pictures clean
+.PHONY: run test bench lint pictures translations clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -29,6 +29,10 @@ bench: $(STAMP) $(VENV)/.bench-installed
 pictures: $(STAMP)
 	$(PY) -m resources.samples.make_samples
 	QT_QPA_PLATFORM=offscreen $(PY) -m app.readme_pictures
+
+# Qt translations: texts gathered (lupdate), the .ts kept, the .qm compiled (lrelease)
+translations: $(STAMP)
+	QT_QPA_PLATFORM=offscreen $(PY) -m app.translations
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources

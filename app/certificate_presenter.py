@@ -19,6 +19,7 @@ from typing import Any, Protocol
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, AngleUnit
+from widgets.i18n import tr
 
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
@@ -164,8 +165,8 @@ class CertificatePresenter:
                 return False
         suggested = (entered.certificate_number or
                      (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
-        path = self.view.choose_save_path("Export certificate", f"{suggested.replace('/', '-')}"
-                                          ".pdf", "PDF (*.pdf)")
+        path = self.view.choose_save_path(tr("Export certificate"),
+                                          f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
         if not path:
             return False
         if not path.lower().endswith(".pdf"):
@@ -177,13 +178,15 @@ class CertificatePresenter:
 
                 write_certificate_pdf(path, kind.certificate_document(result, entered, source_name,
                                                                       settings))
-                self.view.show_status(f"Draft written to {path} — DRAFT: {', '.join(draft)} "
-                                      "missing; nothing was recorded in the register", 10000)
+                self.view.show_status(tr("Draft written to {path} — DRAFT: {missing} missing; "
+                                         "nothing was recorded in the register").format(
+                    path=path, missing=", ".join(draft)), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note)
         except (OSError, ValueError) as exc:
-            self.view.tell("Cannot export", f"{path}: {exc}. Nothing else was changed.")
+            self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
+                           .format(path=path, reason=exc))
             return False
         finally:
             self.view.wait_cursor(False)
@@ -200,25 +203,27 @@ class CertificatePresenter:
                     supersedes=revision.number if revision else "", change_note=note,
                     replacement=bool(revision and revision.replacement))
         except RegisterError as exc:
-            self.view.tell("Not issued", f"{exc}. No certificate was written or recorded.")
+            self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
+                                                "recorded.").format(reason=exc))
             return False
         except IssuedNotWritten as exc:  # committed: the record and its PDF are in the register
-            self.view.tell("Issued, but the file was not written",
-                           f"Certificate {exc.record.number} is issued and recorded in the "
-                           f"register, but {exc}: save its PDF from File › Certificate "
-                           "register.")
+            self.view.tell(tr("Issued, but the file was not written"), tr(
+                "Certificate {number} is issued and recorded in the register, but {reason}: "
+                "save its PDF from File › Certificate register.").format(
+                    number=exc.record.number, reason=exc))
             return False
         if revision is not None:
             self.pending = None
         what = f" ({record.revision} of {record.supersedes})" if record.supersedes else ""
-        self.view.show_status(f"Certificate {record.number}{what} issued: written to {path} and "
-                              "recorded in the register", 10000)
+        self.view.show_status(tr("Certificate {number} issued: written to {path} and recorded "
+                                 "in the register").format(number=record.number + what,
+                                                           path=path), 10000)
         return True
 
     def export_results(self, kind, result, settings: dict, source_name: str,
                        unit: AngleUnit = ANGLE_UNITS["arcsec"]) -> bool:
-        path = self.view.choose_save_path("Export results", f"{kind.key}-results.csv",
-                                          "CSV (*.csv);;Excel workbook (*.xlsx)")
+        path = self.view.choose_save_path(tr("Export results"), f"{kind.key}-results.csv",
+                                          tr("CSV (*.csv);;Excel workbook (*.xlsx)"))
         if not path:
             return False
         try:
@@ -229,7 +234,7 @@ class CertificatePresenter:
             else:
                 write_results_csv(path, document, unit)
         except (OSError, ValueError) as exc:
-            self.view.tell("Cannot export", f"{path}: {exc}")
+            self.view.tell(tr("Cannot export"), f"{path}: {exc}")
             return False
-        self.view.show_status(f"Results written to {path}", 8000)
+        self.view.show_status(tr("Results written to {path}").format(path=path), 8000)
         return True

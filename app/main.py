@@ -37,12 +37,15 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--size", metavar="WxH", default="1400x900", type=_size,
                         help="the window's size for --screenshot, in logical pixels (with "
                              "QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)")
+    parser.add_argument("--language", choices=("system", "en", "zh_CN"), default="en",
+                        help="the language of --screenshot's window (the window itself follows "
+                             "View › Language)")
     args = parser.parse_args(argv)
     if args.screenshot:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         from app.screenshot import write_screenshots
 
-        for path in write_screenshots(args.screenshot, args.size):
+        for path in write_screenshots(args.screenshot, args.size, args.language):
             print(path)  # noqa: T201 - the command's output
         return 0
     return run_gui(args.project, args.samples)

@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (
     QFileDialog,
     QInputDialog,
     QMainWindow,
+    QMenu,
     QMessageBox,
     QTabWidget,
     QWidget,
@@ -45,13 +46,13 @@ from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
 from widgets.certificate_dialog import CertificateDialog
 from widgets.fonts import ensure_cjk_font
+from widgets.i18n import LANGUAGES, Tr, declared, install_language, live, on_language_change, tr
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import gui_thread_first
 
 log = logging.getLogger(__name__)
 
-PROJECT_FILTER = "AngleBench project (*.anglebench.json *.json)"
-IMPORT_FILTER = "Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"
+LANGUAGE_SETTING = "ui/language"  # "system", "en" or "zh_CN" (widgets/i18n.py)
 AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s while typing)
 AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
 AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
@@ -95,8 +96,10 @@ class MainWindow(QMainWindow):
         self.certificates = CertificatePresenter(self, self.qsettings, lambda: self.project_metadata,
                                                  lambda: self.current.mark_modified())
         ensure_cjk_font()  # Chinese names and readings are never boxes
+        self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self._setup_ui()
         self._setup_menus()
+        on_language_change(self, self._retranslate)
         self.tabs.currentChanged.connect(self._on_tab_changed_send)
         self._on_tab_changed_send(self.tabs.currentIndex())
         self._restore_window_state()
@@ -111,7 +114,7 @@ class MainWindow(QMainWindow):
         try:
             self.recovery.claim()
         except OSError as exc:
-            self.statusBar().showMessage(f"Autosave is off: {exc}", 15000)
+            self.statusBar().showMessage(tr("Autosave is off: {reason}").format(reason=exc), 15000)
         self._update_title()
 
     # -- construction ---------------------------------------------------------
@@ -119,7 +122,7 @@ class MainWindow(QMainWindow):
         self.tabs = QTabWidget()
         self.undo_group = QUndoGroup(self)
         for presenter in self.presenters:
-            self.tabs.addTab(presenter.view, presenter.kind.title)
+            self.tabs.addTab(presenter.view, declared(presenter.kind.title))
             self.undo_group.addStack(presenter.undo_stack)
             presenter.import_failed.connect(self._on_import_failed)
             presenter.imported.connect(self._on_imported)
@@ -128,97 +131,130 @@ class MainWindow(QMainWindow):
         self.setAcceptDrops(True)
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
-        self.statusBar().showMessage("Ready")
+        self.statusBar().showMessage(tr("Ready"))
         self.resize(1400, 900)
 
-    def _action(self, menu, text: str, slot, shortcut=None, tip: str = "") -> QAction:
+    def _menu(self, parent, title: Tr) -> QMenu:
+        menu = parent.addMenu(title)
+        live(menu.setTitle, title)
+        return menu
+
+    def _action(self, menu, text: Tr, slot, shortcut=None, tip: Tr | str = "") -> QAction:
         action = QAction(text, self)
+        live(action.setText, text)
         if shortcut is not None:
             action.setShortcut(shortcut)
-        if tip:
-            action.setStatusTip(tip)
+        if isinstance(tip, Tr):
+            live(action.setStatusTip, tip)
         action.triggered.connect(slot)
         menu.addAction(action)
         return action
 
     def _setup_menus(self) -> None:
-        file_menu = self.menuBar().addMenu("&File")
-        self.new_action = self._action(file_menu, "&New", self.new_project, QKeySequence.StandardKey.New)
-        self.open_action = self._action(file_menu, "&Open…", self.open_project_dialog,
+        file_menu = self._menu(self.menuBar(), tr("&File"))
+        self.new_action = self._action(file_menu, tr("&New"), self.new_project, QKeySequence.StandardKey.New)
+        self.open_action = self._action(file_menu, tr("&Open…"), self.open_project_dialog,
                                         QKeySequence.StandardKey.Open)
-        self.recent_menu = file_menu.addMenu("Open &recent")
-        self.save_action = self._action(file_menu, "&Save", self.save, QKeySequence.StandardKey.Save)
-        self.save_as_action = self._action(file_menu, "Save &as…", self.save_as,
+        self.recent_menu = self._menu(file_menu, tr("Open &recent"))
+        self.save_action = self._action(file_menu, tr("&Save"), self.save, QKeySequence.StandardKey.Save)
+        self.save_as_action = self._action(file_menu, tr("Save &as…"), self.save_as,
                                            QKeySequence.StandardKey.SaveAs)
         file_menu.addSeparator()
-        self.import_action = self._action(file_menu, "&Import CSV/XLSX…", self.import_dialog,
+        self.import_action = self._action(file_menu, tr("&Import CSV/XLSX…"), self.import_dialog,
                                           QKeySequence("Ctrl+Shift+I"),
-                                          "Replace the current workbench's readings with a file's")
-        self.sample_action = self._action(file_menu, "Load bundled &sample", self.load_sample)
+                                          tr("Replace the current workbench's readings with a "
+                                             "file's"))
+        self.sample_action = self._action(file_menu, tr("Load bundled &sample"), self.load_sample)
         self.export_action = self._action(
-            file_menu, "&Export certificate…", self.export_certificate, QKeySequence("Ctrl+E"),
-            "Write the current workbench's test certificate (PDF)")
+            file_menu, tr("&Export certificate…"), self.export_certificate, QKeySequence("Ctrl+E"),
+            tr("Write the current workbench's test certificate (PDF)"))
         self.export_results_action = self._action(
-            file_menu, "Export &results (CSV/XLSX)…", self.export_results,
-            tip="Write every point's raw, correction, corrected error and U")
+            file_menu, tr("Export &results (CSV/XLSX)…"), self.export_results,
+            tip=tr("Write every point's raw, correction, corrected error and U"))
         self.register_action = self._action(
-            file_menu, "Certificate re&gister…", self.show_register,
-            tip="Every issued certificate: search, verify a PDF, amend, an instrument's history")
+            file_menu, tr("Certificate re&gister…"), self.show_register,
+            tip=tr("Every issued certificate: search, verify a PDF, amend, an instrument's "
+                   "history"))
         self.send_action = self._action(
-            file_menu, "Send to &positioning", self.send_to_positioning,
-            tip="Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
-                "readings are replaced; Edit > Undo there restores them)")
+            file_menu, tr("Send to &positioning"), self.send_to_positioning,
+            tip=tr("Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
+                   "readings are replaced; Edit > Undo there restores them)"))
         file_menu.addSeparator()
         self.print_action = self._action(
-            file_menu, "&Print…", self.print_dialog, QKeySequence.StandardKey.Print,
-            "Print the current workbench's result and plot (the certificate is the PDF)")
+            file_menu, tr("&Print…"), self.print_dialog, QKeySequence.StandardKey.Print,
+            tr("Print the current workbench's result and plot (the certificate is the PDF)"))
         file_menu.addSeparator()
-        self._action(file_menu, "&Quit", self.close, QKeySequence.StandardKey.Quit)
+        self._action(file_menu, tr("&Quit"), self.close, QKeySequence.StandardKey.Quit)
 
-        edit_menu = self.menuBar().addMenu("&Edit")
-        undo = self.undo_group.createUndoAction(self, "&Undo")
+        edit_menu = self._menu(self.menuBar(), tr("&Edit"))
+        undo = self.undo_group.createUndoAction(self, tr("&Undo"))
         undo.setShortcut(QKeySequence.StandardKey.Undo)
-        redo = self.undo_group.createRedoAction(self, "&Redo")
+        redo = self.undo_group.createRedoAction(self, tr("&Redo"))
         redo.setShortcuts([QKeySequence(QKeySequence.StandardKey.Redo),
                            QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
         edit_menu.addAction(undo)
         edit_menu.addAction(redo)
         self.undo_action, self.redo_action = undo, redo
         edit_menu.addSeparator()
-        self._action(edit_menu, "&Copy", lambda: self.current.view.table.copy_selection())
-        self._action(edit_menu, "&Paste", lambda: self.current.view.table.paste())
-        self._action(edit_menu, "&Insert row", lambda: self.current.view.table.insert_row())
-        self._action(edit_menu, "&Delete rows", lambda: self.current.view.table.delete_rows())
+        self._action(edit_menu, tr("&Copy"), lambda: self.current.view.table.copy_selection())
+        self._action(edit_menu, tr("&Paste"), lambda: self.current.view.table.paste())
+        self._action(edit_menu, tr("&Insert row"), lambda: self.current.view.table.insert_row())
+        self._action(edit_menu, tr("&Delete rows"), lambda: self.current.view.table.delete_rows())
 
-        view_menu = self.menuBar().addMenu("&View")
-        for text, keys, step in (("&Next workbench", ("Ctrl+PgDown", "Ctrl+Tab"), 1),
-                                 ("&Previous workbench", ("Ctrl+PgUp", "Ctrl+Shift+Tab"), -1)):
+        view_menu = self._menu(self.menuBar(), tr("&View"))
+        for text, keys, step in ((tr("&Next workbench"), ("Ctrl+PgDown", "Ctrl+Tab"), 1),
+                                 (tr("&Previous workbench"), ("Ctrl+PgUp", "Ctrl+Shift+Tab"),
+                                  -1)):
             action = self._action(view_menu, text, lambda _=False, s=step: self.switch_tab(s))
             action.setShortcuts([QKeySequence(k) for k in keys])
             action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
-        focus = self._action(view_menu, "Next &pane (table, set-up, result, plots)",
+        focus = self._action(view_menu, tr("Next &pane (table, set-up, result, plots)"),
                              self.focus_next_pane, QKeySequence("F6"))
         focus.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
-        units_menu = view_menu.addMenu("Angle &unit of results")
+        units_menu = self._menu(view_menu, tr("Angle &unit of results"))
         self.angle_unit_actions = QActionGroup(self)
         for unit in ANGLE_UNITS.values():
-            action = self._action(units_menu, unit.name,
+            action = self._action(units_menu, declared(unit.name),
                                   lambda _=False, u=unit: self.set_angle_unit(u),
-                                  tip="Plots, figures, texts and exported results in this unit "
-                                      "(certificates keep the unit of the evaluation)")
+                                  tip=tr("Plots, figures, texts and exported results in this "
+                                         "unit (certificates keep the unit of the evaluation)"))
             action.setCheckable(True)
             action.setData(unit.key)
             self.angle_unit_actions.addAction(action)
         saved = str(self.qsettings.value(ANGLE_UNIT_SETTING, "arcsec"))
         self.set_angle_unit(ANGLE_UNITS.get(saved, ANGLE_UNITS["arcsec"]))
 
-        help_menu = self.menuBar().addMenu("&Help")
-        self._action(help_menu, "&Manual (this workbench)", self.show_manual,
+        language_menu = self._menu(view_menu, tr("&Language"))
+        self.language_actions = QActionGroup(self)
+        chosen = str(self.qsettings.value(LANGUAGE_SETTING, "system"))
+        for key, name in LANGUAGES.items():
+            action = self._action(language_menu, tr(name) if key == "system" else Tr(name, name),
+                                  lambda _=False, k=key: self.set_language(k))
+            action.setCheckable(True)
+            action.setChecked(key == chosen)
+            action.setData(key)
+            self.language_actions.addAction(action)
+
+        help_menu = self._menu(self.menuBar(), tr("&Help"))
+        self._action(help_menu, tr("&Manual (this workbench)"), self.show_manual,
                      QKeySequence(QKeySequence.StandardKey.HelpContents),
-                     tip="What to measure, how to set up, every setting and plot")
-        self._action(help_menu, "&Quick guide", self.show_guide)
-        self._action(help_menu, "&About AngleBench", self.show_about)
+                     tip=tr("What to measure, how to set up, every setting and plot"))
+        self._action(help_menu, tr("&Quick guide"), self.show_guide)
+        self._action(help_menu, tr("&About AngleBench"), self.show_about)
         self._refresh_recent_menu()
+
+    def set_language(self, choice: str) -> None:
+        """The window in English or Chinese (or the system's language), at once: every text
+        is set again and each result redrawn; readings, undo history and plots stay."""
+        for action in self.language_actions.actions():
+            action.setChecked(action.data() == choice)
+        self.qsettings.setValue(LANGUAGE_SETTING, choice)
+        self.language = install_language(choice)
+
+    def _retranslate(self) -> None:
+        for index, presenter in enumerate(self.presenters):
+            self.tabs.setTabText(index, declared(presenter.kind.title))
+        self._update_title()
 
     def set_angle_unit(self, unit: AngleUnit) -> None:
         """Results in ``unit`` on every workbench (redrawn, not re-analysed); remembered."""
@@ -241,18 +277,6 @@ class MainWindow(QMainWindow):
                   if w.focusPolicy() != Qt.FocusPolicy.NoFocus] if target is view.settings else []
         (first or (fields[0] if fields else target)).setFocus(Qt.FocusReason.ShortcutFocusReason)
 
-    GUIDE = (
-        "Type or paste the readings on the left (Return goes to the next row's first reading; "
-        "a nominal step fills θ, face or target). The result, its warnings and the plots "
-        "follow every edit.\n\n"
-        "Keys: Ctrl+PgDn / Ctrl+PgUp or Ctrl+Tab switch workbenches; F6 moves between table, "
-        "set-up, result and plots; Ctrl+Z / Ctrl+Shift+Z undo and redo; Ctrl+E exports the "
-        "certificate; right-click a plot to copy or save its image.\n\n"
-        "Errors are errors of indication (indicated − reference); the positioning workbench "
-        "keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the "
-        "register (File › Certificate register). Drop a CSV or XLSX on the window to import "
-        "it. The README next to the program explains every method and figure.")
-
     def show_manual(self) -> None:
         """F1: the bundled manual at the page of the workbench in front."""
         if self.manual is None:
@@ -262,7 +286,18 @@ class MainWindow(QMainWindow):
         self.manual.show_page(self.current.kind.key)
 
     def show_guide(self) -> None:
-        QMessageBox.information(self, "AngleBench — quick guide", self.GUIDE)
+        QMessageBox.information(self, tr("AngleBench — quick guide"), tr(
+            "Type or paste the readings on the left (Return goes to the next row's first "
+            "reading; a nominal step fills θ, face or target). The result, its warnings and the "
+            "plots follow every edit.\n\n"
+            "Keys: Ctrl+PgDn / Ctrl+PgUp or Ctrl+Tab switch workbenches; F6 moves between "
+            "table, set-up, result and plots; Ctrl+Z / Ctrl+Shift+Z undo and redo; Ctrl+E "
+            "exports the certificate; F1 opens the manual; right-click a plot to copy or save "
+            "its image.\n\n"
+            "Errors are errors of indication (indicated − reference); the positioning workbench "
+            "keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the "
+            "register (File › Certificate register). Drop a CSV or XLSX on the window to "
+            "import it."))
 
     def switch_tab(self, step: int) -> None:
         self.tabs.setCurrentIndex((self.tabs.currentIndex() + step) % self.tabs.count())
@@ -305,13 +340,13 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     def _update_title(self) -> None:
-        name = self.project_path.name if self.project_path else "untitled"
+        name = self.project_path.name if self.project_path else tr("untitled")
         self.setWindowTitle(f"AngleBench {__version__} — {name}{' *' if self.is_modified else ''}")
 
     def _confirm_discard(self) -> bool:
         if not self.is_modified:
             return True
-        answer = self.ask("Unsaved readings", "Save the changes to the project first?",
+        answer = self.ask(tr("Unsaved readings"), tr("Save the changes to the project first?"),
                           QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
                           | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
         if answer == QMessageBox.StandardButton.Save:
@@ -326,7 +361,8 @@ class MainWindow(QMainWindow):
         self._update_title()
 
     def open_project_dialog(self) -> None:
-        path, _ = QFileDialog.getOpenFileName(self, "Open project", self._last_dir(), PROJECT_FILTER)
+        path, _ = QFileDialog.getOpenFileName(self, tr("Open project"), self._last_dir(),
+                                              tr("AngleBench project (*.anglebench.json *.json)"))
         if path:
             self.open_project(path)
 
@@ -338,13 +374,14 @@ class MainWindow(QMainWindow):
             project = load_project(path)
             check_project(project, {p.kind.key: p.kind for p in self.presenters}, str(path))
         except ProjectFileError as exc:
-            self.tell("Cannot open project", f"{exc}. Your current work is as it was.")
+            self.tell(tr("Cannot open project"),
+                      tr("{reason}. Your current work is as it was.").format(reason=exc))
             return False
         self.apply_project(project)
         self.project_path = Path(path)
         self._add_recent(self.project_path)
         self._update_title()
-        self.statusBar().showMessage(f"Opened {path}", 5000)
+        self.statusBar().showMessage(tr("Opened {path}").format(path=path), 5000)
         return True
 
     def save(self) -> bool:
@@ -353,7 +390,8 @@ class MainWindow(QMainWindow):
         return self.save_to(self.project_path)
 
     def save_as(self) -> bool:
-        path, _ = QFileDialog.getSaveFileName(self, "Save project", self._last_dir(), PROJECT_FILTER)
+        path, _ = QFileDialog.getSaveFileName(self, tr("Save project"), self._last_dir(),
+                                              tr("AngleBench project (*.anglebench.json *.json)"))
         if not path:
             return False
         if not path.endswith(".json"):
@@ -364,7 +402,8 @@ class MainWindow(QMainWindow):
         try:
             save_project(path, self.project())
         except OSError as exc:
-            self.tell("Cannot save", f"{path}: {exc.strerror or exc}. Your readings are still here.")
+            self.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
+                      .format(path=path, reason=exc.strerror or exc))
             return False
         self.project_path = Path(path)
         for presenter in self.presenters:
@@ -372,12 +411,14 @@ class MainWindow(QMainWindow):
         self.recovery.discard()
         self._add_recent(self.project_path)
         self._update_title()
-        self.statusBar().showMessage(f"Saved {path}", 5000)
+        self.statusBar().showMessage(tr("Saved {path}").format(path=path), 5000)
         return True
 
     def import_dialog(self) -> None:
-        path, _ = QFileDialog.getOpenFileName(self, f"Import readings into {self.current.kind.title}",
-                                              self._last_dir(), IMPORT_FILTER)
+        path, _ = QFileDialog.getOpenFileName(
+            self, tr("Import readings into {workbench}").format(
+                workbench=declared(self.current.kind.title)), self._last_dir(),
+            tr("Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)"))
         if path:
             self.current.start_import(path)  # large files are read off the GUI thread
 
@@ -386,19 +427,20 @@ class MainWindow(QMainWindow):
         try:
             presenter.import_file(path)
         except TableImportError as exc:
-            self.tell("Cannot import", str(exc))
+            self.tell(tr("Cannot import"), str(exc))
             return False
-        self.statusBar().showMessage(f"Imported {path} (Edit > Undo restores the old readings)",
-                                     8000)
+        self.statusBar().showMessage(
+            tr("Imported {path} (Edit › Undo restores the old readings)").format(path=path), 8000)
         return True
 
     def _on_import_failed(self, message: str) -> None:
-        self.tell("Cannot import", message)
+        self.tell(tr("Cannot import"), message)
 
     def _on_imported(self, path: str, rows: int) -> None:
         """Say that it worked (and replace an earlier error at once)."""
-        self.statusBar().showMessage(f"Imported {Path(path).name}: {rows} row(s) "
-                                     "(Edit › Undo restores the previous readings)", 8000)
+        self.statusBar().showMessage(
+            tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
+            .format(name=Path(path).name, rows=rows), 8000)
 
     # -- dropping files on the window -------------------------------------------------
     DROPPABLE = (".csv", ".txt", ".tsv", ".xlsx", ".xlsm", ".json")
@@ -442,8 +484,9 @@ class MainWindow(QMainWindow):
         from widgets.print_view import print_workbench
 
         print_workbench(self.current.view, printer,
-                        f"{self.current.kind.title} — {self._source_name() or 'readings'}")
-        self.statusBar().showMessage("Printed", 5000)
+                        f"{declared(self.current.kind.title)} — "
+                        + (self._source_name() or tr("readings")))
+        self.statusBar().showMessage(tr("Printed"), 5000)
 
     def show_register(self) -> None:
         from app.register_presenter import RegisterPresenter
@@ -468,7 +511,7 @@ class MainWindow(QMainWindow):
             check_project(project, {p.kind.key: p.kind for p in self.presenters},
                           "the register's record")
         except ProjectFileError as exc:
-            self.tell("Cannot open", str(exc))
+            self.tell(tr("Cannot open"), str(exc))
             return False
         self.apply_project(project)
         self.project_path = None
@@ -482,12 +525,13 @@ class MainWindow(QMainWindow):
         source = self.current
         target = next((p for p in self.presenters if p.kind.key == "positioning"), None)
         if target is None or source is target or source.kind.positioning_rows is None:
-            self.tell("Cannot send", f"{source.kind.title} has nothing to send to the "
-                      "positioning workbench.")
+            self.tell(tr("Cannot send"), tr("{workbench} has nothing to send to the "
+                                            "positioning workbench.").format(
+                workbench=declared(source.kind.title)))
             return False
         if source.result is None:
-            self.tell("Nothing to send", f"{source.kind.title}: "
-                      f"{source.problem or 'no readings have been analysed yet'}.")
+            problem = source.problem or tr("no readings have been analysed yet")
+            self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
             return False
         rows = source.kind.positioning_rows(source.result)
         target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True)
@@ -495,8 +539,9 @@ class MainWindow(QMainWindow):
         target.refresh()
         self.tabs.setCurrentIndex(self.presenters.index(target))
         self.statusBar().showMessage(
-            f"{source.kind.title}: {len(rows)} readings sent (deviation = −corrected error); "
-            "Edit > Undo restores the positioning readings", 8000)
+            tr("{workbench}: {rows} readings sent (deviation = −corrected error); Edit › Undo "
+               "restores the positioning readings").format(workbench=declared(source.kind.title),
+                                                           rows=len(rows)), 8000)
         return True
 
     def _on_tab_changed_send(self, index: int) -> None:
@@ -508,7 +553,7 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:
             presenter.load_sample()
         self._update_title()
-        self.statusBar().showMessage("Bundled samples loaded in every workbench", 8000)
+        self.statusBar().showMessage(tr("Bundled samples loaded in every workbench"), 8000)
 
     # -- certificates -----------------------------------------------------------------
     # -- certificates: the CertificatePresenter decides, the window shows ----------------
@@ -540,20 +585,21 @@ class MainWindow(QMainWindow):
 
     def confirm_draft(self, missing: list[str]) -> bool:
         answer = self.ask(
-            "Export a draft?",
-            "These details are missing: " + ", ".join(missing) + ". The PDF will be marked "
-            "DRAFT, is not a certificate, and nothing is recorded in the register. Export the "
-            "draft anyway?",
+            tr("Export a draft?"),
+            tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not a "
+               "certificate, and nothing is recorded in the register. Export the draft anyway?")
+            .format(missing=", ".join(missing)),
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
     def ask_change_note(self, revision) -> str:
-        what = "replaces" if revision.replacement else "amends"
-        text, ok = QInputDialog.getMultiLineText(
-            self, "What changed",
-            f"This certificate {what} {revision.number}. What changed, and why? (printed on "
-            "the certificate; ISO/IEC 17025 7.8.8)")
+        question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
+                       "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else
+                    tr("This certificate amends {number}. What changed, and why? (printed on "
+                       "the certificate; ISO/IEC 17025 7.8.8)"))
+        text, ok = QInputDialog.getMultiLineText(self, tr("What changed"),
+                                                 question.format(number=revision.number))
         return text if ok else ""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
@@ -574,8 +620,8 @@ class MainWindow(QMainWindow):
     def _current_result(self):
         presenter = self.current
         if presenter.result is None:
-            self.tell("Nothing to export", f"{presenter.kind.title}: "
-                      f"{presenter.problem or 'no readings have been analysed yet'}.")
+            problem = presenter.problem or tr("no readings have been analysed yet")
+            self.tell(tr("Nothing to export"), f"{declared(presenter.kind.title)}: {problem}.")
             return None
         return presenter.result
 
@@ -639,20 +685,22 @@ class MainWindow(QMainWindow):
         try:
             project = self.recovery.load(path)
         except ProjectFileError as exc:
-            self.tell("Cannot recover", f"{exc} (the file was kept aside as damaged)")
+            self.tell(tr("Cannot recover"),
+                      tr("{reason} (the file was kept aside as damaged)").format(reason=exc))
             return False
-        when = project.metadata.get("autosaved_at") or "an unknown time"
+        when = project.metadata.get("autosaved_at") or tr("an unknown time")
         source = project.metadata.get("project_path") or ""
-        name = Path(source).name if source else "an untitled project"
+        name = Path(source).name if source else tr("an untitled project")
         answer = self.ask(
-            "Recover unsaved work",
-            f"AngleBench did not close normally. Restore the unsaved readings of {name}, "
-            f"autosaved {when}?",
+            tr("Recover unsaved work"),
+            tr("AngleBench did not close normally. Restore the unsaved readings of {name}, "
+               "autosaved {when}?").format(name=name, when=when),
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.Yes)
         if answer != QMessageBox.StandardButton.Yes:
             kept = self.recovery.set_aside(path, "declined")
-            self.statusBar().showMessage(f"The autosave was kept aside: {kept}", 15000)
+            self.statusBar().showMessage(tr("The autosave was kept aside: {path}").format(
+                path=kept), 15000)
             return False
         self.apply_project(project)
         self.project_path = Path(source) if source else None
@@ -712,8 +760,8 @@ class MainWindow(QMainWindow):
 
     def show_about(self) -> None:
         QMessageBox.about(
-            self, "About AngleBench",
-            f"<b>AngleBench {__version__}</b><br>Angle metrology workbench.<br><br>"
+            self, tr("About AngleBench"),
+            f"<b>AngleBench {__version__}</b><br>" + tr("Angle metrology workbench.") + "<br><br>"
             f"Qt {qVersion()}, PySide6 {pyside_version}, pyqtgraph {pg.__version__}, "
             f"numpy {np.__version__}, scipy {scipy.__version__}")
 

@@ -9,13 +9,17 @@ import datetime as dt
 from collections.abc import Callable
 from typing import Protocol
 
+from PySide6.QtCore import QT_TR_NOOP
+
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from models.register.store import CertificateRecord, RegisterError
+from widgets.i18n import tr
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
-COLUMNS = ("Number", "Status", "Revision", "Issued", "Calibrated", "Workbench", "Serial",
-           "Customer")
+COLUMNS = (QT_TR_NOOP("Number"), QT_TR_NOOP("Status"), QT_TR_NOOP("Revision"),
+           QT_TR_NOOP("Issued"), QT_TR_NOOP("Calibrated"), QT_TR_NOOP("Workbench"),
+           QT_TR_NOOP("Serial"), QT_TR_NOOP("Customer"))
 
 
 class RegisterView(Protocol):
@@ -65,7 +69,7 @@ class RegisterPresenter:
                 self.records = register.list(self.search)
         except RegisterError as exc:
             self.records = []
-            self.view.tell("Register", str(exc))
+            self.view.tell(tr("Register"), str(exc))
         self.view.show_records(COLUMNS, [
             (r.number, r.status, r.revision, r.issue_date, r.calibration_date, r.workbench,
              r.item_serial, r.customer) for r in self.records])
@@ -78,7 +82,7 @@ class RegisterPresenter:
         row = self.view.selected_row()
         if 0 <= row < len(self.records):
             return self.records[row]
-        self.view.tell("Register", "Select a certificate first.")
+        self.view.tell(tr("Register"), tr("Select a certificate first."))
         return None
 
     # -- actions ---------------------------------------------------------------------
@@ -94,17 +98,21 @@ class RegisterPresenter:
         if record is None:
             return False
         if record.status != "issued":
-            self.view.tell("Register", f"{record.number} was superseded by "
-                           f"{record.superseded_by}: amend or replace that one.")
+            self.view.tell(tr("Register"), tr("{number} was superseded by {newer}: amend or "
+                                              "replace that one.").format(
+                number=record.number, newer=record.superseded_by))
             return False
         if not self.open_project_state(record.project_json, record.workbench):
             return False
         self.certificates.start_revision(PendingRevision(record.workbench, record.number,
                                                          replacement))
-        what = "a replacement of" if replacement else "an amendment to"
-        self.view.tell("Register", f"The readings and details of {record.number} are open. "
-                       f"Change what is needed; File › Export certificate then issues {what} "
-                       f"{record.number} and asks what changed.")
+        text = (tr("The readings and details of {number} are open. Change what is needed; File › "
+                   "Export certificate then issues a replacement of {number} and asks what "
+                   "changed.") if replacement else
+                tr("The readings and details of {number} are open. Change what is needed; File › "
+                   "Export certificate then issues an amendment to {number} and asks what "
+                   "changed."))
+        self.view.tell(tr("Register"), text.format(number=record.number))
         return True
 
     def save_pdf(self) -> bool:
@@ -120,7 +128,7 @@ class RegisterPresenter:
             with self._register() as register:
                 write_bytes_atomic(path, register.pdf(record.number))
         except (RegisterError, OSError) as exc:
-            self.view.tell("Cannot save", str(exc))
+            self.view.tell(tr("Cannot save"), str(exc))
             return False
         return True
 
@@ -134,7 +142,7 @@ class RegisterPresenter:
                 pdf = register.pdf(record.number)
             return self.view.print_certificate(pdf, record.number)
         except (RegisterError, OSError) as exc:
-            self.view.tell("Cannot print", str(exc))
+            self.view.tell(tr("Cannot print"), str(exc))
             return 0
 
     def verify_pdf(self) -> CertificateRecord | None:
@@ -147,15 +155,17 @@ class RegisterPresenter:
             with self._register() as register:
                 record = register.verify(data)
         except (OSError, RegisterError) as exc:
-            self.view.tell("Cannot verify", str(exc))
+            self.view.tell(tr("Cannot verify"), str(exc))
             return None
         if record is None:
-            self.view.tell("Not in the register", f"{path}: no certificate issued from this "
-                           "register has this PDF (SHA-256): it was altered, is a draft, or "
-                           "comes from another register.")
+            self.view.tell(tr("Not in the register"), tr(
+                "{path}: no certificate issued from this register has this PDF (SHA-256): it "
+                "was altered, is a draft, or comes from another register.").format(path=path))
         else:
-            self.view.tell("Verified", f"{path} is certificate {record.number} as issued on "
-                           f"{record.issued_at} ({record.status}), byte for byte.")
+            self.view.tell(tr("Verified"), tr(
+                "{path} is certificate {number} as issued on {date} ({status}), byte for byte.")
+                .format(path=path, number=record.number, date=record.issued_at,
+                        status=record.status))
         return record
 
     def show_history(self) -> None:
@@ -183,6 +193,6 @@ class RegisterPresenter:
             with self._register() as register:
                 register.set_interval(serial, days or None)
         except RegisterError as exc:
-            self.view.tell("Register", str(exc))
+            self.view.tell(tr("Register"), str(exc))
             return
         self._history(serial)

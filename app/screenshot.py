@@ -23,12 +23,14 @@ def _example_metadata() -> CertificateMetadata:
                        "uncertainty_arcsec": 0.5, "basis": "U95"}]})
 
 
-def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900)) -> list[Path]:
+def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
+                      language: str = "en") -> list[Path]:
     out_dir = Path(folder)
     out_dir.mkdir(parents=True, exist_ok=True)
     app = QApplication.instance() or QApplication(["anglebench"])
     with tempfile.TemporaryDirectory() as scratch:
         settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+        settings.setValue("ui/language", language)
         window = MainWindow(settings=settings, recovery=RecoveryStore(scratch))
         window.load_all_samples()
         window.resize(*size)

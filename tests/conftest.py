@@ -78,4 +78,10 @@ def window(qtbot, tmp_path):
     w.tell = lambda title, text: w.told.append(text)
     w.ask = lambda *a: QMessageBox.StandardButton.Discard
     qtbot.addWidget(w)
-    return w
+    yield w
+    # deleted, not only closed: a closed window's application-wide shortcuts (Ctrl+PgDn)
+    # would otherwise still compete with the next test's window
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    w.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)

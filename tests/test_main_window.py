@@ -20,9 +20,16 @@ def make_window(qtbot, tmp_path):
         window.tell = lambda title, text: window.told.append(text)
         window.ask = lambda *a: answer
         qtbot.addWidget(window)
+        made.append(window)
         return window
 
-    return factory
+    made = []
+    yield factory
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    for window in made:  # deleted: a closed window's shortcuts would meet the next test's
+        window.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
 def test_tabs_and_menus(make_window):

@@ -12,7 +12,7 @@ import datetime as dt
 import re
 from typing import Any
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QT_TR_NOOP, Qt, Signal
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
@@ -38,37 +38,47 @@ from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
 )
+from widgets.i18n import tr
 
 __all__ = ["CertificateDialog"]
 
+
+# QT_TR_NOOP marks a text for lupdate; tr() translates it where it is shown
 _TEXT_FIELDS = {
-    "certificate_number": "Certificate number", "issue_date": "Date of issue (YYYY-MM-DD)",
-    "calibration_date": "Date of calibration", "tolerance_arcsec": "Tolerance ± (\")",
-    "lab_name": "Laboratory", "lab_address": "Address", "lab_accreditation": "Accreditation",
-    "number_scheme": "Number scheme", "customer_name": "Customer", "customer_address": "Address",
-    "item_description": "Item under test", "item_manufacturer": "Manufacturer",
-    "item_serial": "Serial number", "item_grade": "Grade / specification",
-    "item_resolution_arcsec": "Resolution (\")", "temperature_c": "Temperature (°C)",
-    "humidity_pct": "Relative humidity (%)", "operator": "Operator", "approver": "Approved by",
-    "coverage_probability_pct": "Coverage probability (%)",
-    "as_left_table_sha256": "Table loaded (sha256)",
+    "certificate_number": QT_TR_NOOP("Certificate number"),
+    "issue_date": QT_TR_NOOP("Date of issue (YYYY-MM-DD)"),
+    "calibration_date": QT_TR_NOOP("Date of calibration"),
+    "tolerance_arcsec": QT_TR_NOOP("Tolerance ± (\")"),
+    "lab_name": QT_TR_NOOP("Laboratory"), "lab_address": QT_TR_NOOP("Address"),
+    "lab_accreditation": QT_TR_NOOP("Accreditation"), "number_scheme": QT_TR_NOOP("Number scheme"),
+    "customer_name": QT_TR_NOOP("Customer"), "customer_address": QT_TR_NOOP("Address"),
+    "item_description": QT_TR_NOOP("Item under test"), "item_manufacturer": QT_TR_NOOP("Manufacturer"),
+    "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
+    "item_resolution_arcsec": QT_TR_NOOP("Resolution (\")"),
+    "temperature_c": QT_TR_NOOP("Temperature (°C)"),
+    "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
+    "approver": QT_TR_NOOP("Approved by"),
+    "coverage_probability_pct": QT_TR_NOOP("Coverage probability (%)"),
+    "as_left_table_sha256": QT_TR_NOOP("Table loaded (sha256)"),
 }
 # choice fields: key -> (label, {value: text})
 _CHOICES = {
-    "document_type": ("Document", {"calibration": "Calibration certificate", "test": "Test report"}),
-    "language": ("Language", LANGUAGES),
-    "decision_rule": ("Decision rule", {
-        "guarded": "Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)",
-        "guarded_binary": "Guard band w = U: pass / fail (ILAC-G8 4.2.2)",
-        "simple": "Simple acceptance (ILAC-G8 4.2.1)"}),
-    "decision_quantity": ("Decided quantity", {
-        "half_range": "Half the peak-to-peak (Monte Carlo U)",
-        "points": "Every point with its own U"}),
+    "document_type": (QT_TR_NOOP("Document"), {"calibration": QT_TR_NOOP("Calibration certificate"),
+                                           "test": QT_TR_NOOP("Test report")}),
+    "language": (QT_TR_NOOP("Language"), LANGUAGES),
+    "decision_rule": (QT_TR_NOOP("Decision rule"), {
+        "guarded": QT_TR_NOOP("Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"),
+        "guarded_binary": QT_TR_NOOP("Guard band w = U: pass / fail (ILAC-G8 4.2.2)"),
+        "simple": QT_TR_NOOP("Simple acceptance (ILAC-G8 4.2.1)")}),
+    "decision_quantity": (QT_TR_NOOP("Decided quantity"), {
+        "half_range": QT_TR_NOOP("Half the peak-to-peak (Monte Carlo U)"),
+        "points": QT_TR_NOOP("Every point with its own U")}),
 }
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
                      "applies_to")
-_STANDARD_HEADERS = ("Standard", "Serial no.", "Certificate no.", "Uncertainty (\")",
-                     "Stated as (U95, MPE, u)", "Per (reading, from face 1)")
+_STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
+                     QT_TR_NOOP("Uncertainty (\")"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
+                     QT_TR_NOOP("Per (reading, from face 1)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -79,7 +89,7 @@ class CertificateDialog(QDialog):
 
     def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None) -> None:
         super().__init__(parent)
-        self.setWindowTitle("Certificate details")
+        self.setWindowTitle(tr("Certificate details"))
         self.fields: dict[str, QLineEdit] = {}
         self._setup_ui()
         self.set_metadata(metadata)
@@ -93,63 +103,63 @@ class CertificateDialog(QDialog):
         return edit
 
     def _group(self, title: str, keys: tuple[str, ...]) -> QGroupBox:
-        box = QGroupBox(title)
+        box = QGroupBox(tr(title))
         form = QFormLayout(box)
         for key in keys:
             if key == "certificate_number":
                 edit = self._line(key)
-                edit.setPlaceholderText("allocated by the register on export")
-                edit.setToolTip("Leave empty: the register allocates the next number of the "
-                                "scheme, unique across every workstation sharing it. A number "
-                                "typed here is refused if it was issued before.")
-                form.addRow(_TEXT_FIELDS[key], edit)
+                edit.setPlaceholderText(tr("allocated by the register on export"))
+                edit.setToolTip(tr("Leave empty: the register allocates the next number of the "
+                                   "scheme, unique across every workstation sharing it. A number "
+                                   "typed here is refused if it was issued before."))
+                form.addRow(tr(_TEXT_FIELDS[key]), edit)
             else:
-                form.addRow(_TEXT_FIELDS[key], self._line(key))
+                form.addRow(tr(_TEXT_FIELDS[key]), self._line(key))
         return box
 
     def _setup_ui(self) -> None:
         grid = QGridLayout()
-        cert = self._group("Certificate", ("certificate_number", "issue_date", "calibration_date",
+        cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
                                            "tolerance_arcsec", "coverage_probability_pct",
                                            "as_left_table_sha256"))
-        self.fields["as_left_table_sha256"].setToolTip(
+        self.fields["as_left_table_sha256"].setToolTip(tr(
             "Fringe: the checksum of the correction table loaded into the encoder (printed in "
-            "the exported table); the compensated error is then stated as left")
+            "the exported table); the compensated error is then stated as left"))
         self.choices: dict[str, QComboBox] = {}
         for key, (label, options) in _CHOICES.items():
             box = QComboBox()
             box.setObjectName(key)
             for value, text in options.items():
-                box.addItem(text, value)
+                box.addItem(text if key == "language" else tr(text), value)
                 if key == "decision_rule":
                     box.setItemData(box.count() - 1, DECISION_RULES[value],
                                     Qt.ItemDataRole.ToolTipRole)
             self.choices[key] = box
-            cert.layout().addRow(label, box)
+            cert.layout().addRow(tr(label), box)
         self.decision_rule = self.choices["decision_rule"]
         grid.addWidget(cert, 0, 0)
-        grid.addWidget(self._group("Laboratory", ("lab_name", "lab_address", "lab_accreditation",
+        grid.addWidget(self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
                                                   "number_scheme")), 0, 1)
-        grid.addWidget(self._group("Customer", ("customer_name", "customer_address")), 1, 0)
-        grid.addWidget(self._group("Item under test", (
+        grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
+        grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
             "item_description", "item_manufacturer", "item_serial", "item_grade",
             "item_resolution_arcsec")), 1, 1)
-        grid.addWidget(self._group("Environment and people", (
+        grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
             "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
-        notes_box = QGroupBox("Remarks printed on the certificate")
+        notes_box = QGroupBox(tr("Remarks printed on the certificate"))
         self.notes = QPlainTextEdit()
         self.notes.setObjectName("notes")
         QVBoxLayout(notes_box).addWidget(self.notes)
         grid.addWidget(notes_box, 2, 1)
 
-        standards_box = QGroupBox("Reference standards (their uncertainty enters the budget per "
-                                  "reading)")
+        standards_box = QGroupBox(tr("Reference standards (their uncertainty enters the budget "
+                                     "per reading)"))
         self.standards = QTableWidget(0, len(_STANDARD_COLUMNS))
-        self.standards.setHorizontalHeaderLabels(_STANDARD_HEADERS)
+        self.standards.setHorizontalHeaderLabels([tr(h) for h in _STANDARD_HEADERS])
         self.standards.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
         self.standards.itemChanged.connect(lambda item: item.setBackground(Qt.GlobalColor.white))
         buttons = QHBoxLayout()
-        add, remove = QPushButton("Add standard"), QPushButton("Remove standard")
+        add, remove = QPushButton(tr("Add standard")), QPushButton(tr("Remove standard"))
         add.clicked.connect(lambda: self.add_standard({}))
         remove.clicked.connect(self._remove_standard)
         buttons.addWidget(add)
@@ -165,11 +175,12 @@ class CertificateDialog(QDialog):
         self.error_label.setWordWrap(True)
         self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
                                         | QDialogButtonBox.StandardButton.Cancel)
-        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setText("Export…")
+        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setText(tr("Export…"))
         self.save_defaults_button = self.buttons.addButton(
-            "Save as lab defaults", QDialogButtonBox.ButtonRole.ActionRole)
-        self.save_defaults_button.setToolTip("Lab, number scheme, standards, people and decision "
-                                             "rule become the start of every new certificate")
+            tr("Save as lab defaults"), QDialogButtonBox.ButtonRole.ActionRole)
+        self.save_defaults_button.setToolTip(tr("Lab, number scheme, standards, people and "
+                                                "decision rule become the start of every new "
+                                                "certificate"))
         self.save_defaults_button.clicked.connect(self._save_lab_defaults)
         self.buttons.accepted.connect(self.accept)
         self.buttons.rejected.connect(self.reject)
@@ -233,7 +244,8 @@ class CertificateDialog(QDialog):
         if problems:
             self.show_problems(problems)
             first = next(iter(problems.values()))
-            more = f" (and {len(problems) - 1} more, marked red)" if len(problems) > 1 else ""
+            more = (tr(" (and {count} more, marked red)").format(count=len(problems) - 1)
+                    if len(problems) > 1 else "")
             raise MetadataError(first + more)
         return meta
 
@@ -279,4 +291,4 @@ class CertificateDialog(QDialog):
             return
         self.lab_defaults_saved.emit(meta.lab_defaults())
         self.error_label.setStyleSheet("color: #1b5e20;")
-        self.error_label.setText("Saved as the lab's defaults.")
+        self.error_label.setText(tr("Saved as the lab's defaults."))

@@ -9,6 +9,7 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
+from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 
 RAW_PEN = pg.mkPen("#c0392b", width=2)
@@ -68,10 +69,12 @@ class ErrorPlot(QWidget):
                 plot.getAxis(axis).enableAutoSIPrefix(False)  # arcsec stay arcsec
         self.corrected_plot.setXLink(self.main_plot)
         self.residual_plot.setXLink(self.main_plot)
-        self.residual_plot.setLabel("bottom", x_label)
-        self.main_plot.setLabel("left", "raw error (\")")
-        self.corrected_plot.setLabel("left", "corrected (\")")
-        self.residual_plot.setLabel("left", residual_label)
+        self._labels: dict[tuple[object, str], str] = {}  # (panel, axis) -> English title
+        self.set_axis_label(self.residual_plot, "bottom", x_label)
+        self.set_axis_label(self.main_plot, "left", "raw error (\")")
+        self.set_axis_label(self.corrected_plot, "left", "corrected (\")")
+        self.set_axis_label(self.residual_plot, "left", residual_label)
+        on_language_change(self, self._relabel)
         self.legend = self.main_plot.addLegend(offset=(-10, 10))
         self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
         self.raw_curve = self.main_plot.plot(name="raw", pen=RAW_PEN, symbol="o", symbolSize=5,
@@ -105,6 +108,7 @@ class ErrorPlot(QWidget):
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
         for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
                             (self.corrected_curve, corrected)):
+            name = declared(name) if name else name
             curve.opts["name"] = name
             for legend in (self.legend, self.corrected_legend):
                 label = legend.getLabel(curve)
@@ -140,6 +144,19 @@ class ErrorPlot(QWidget):
         self.set_residuals(series.x if series is not None else [],
                            series.y if series is not None else None)
 
+    def set_axis_label(self, plot, axis: str, english: str) -> None:
+        """A panel's axis title, shown in the window's language (kept in English to be
+        translated again and to have its unit rewritten)."""
+        self._labels[(plot, axis)] = english
+        plot.setLabel(axis, declared(english))
+
+    def axis_label(self, plot, axis: str = "left") -> str:
+        return self._labels.get((plot, axis), "")
+
+    def _relabel(self) -> None:
+        for (plot, axis), english in self._labels.items():
+            plot.setLabel(axis, declared(english))
+
     def _state_units(self, errors_label: str, residuals_label: str) -> None:
         """Each panel's title names the unit of the figure it draws (the unit results are
         read in: ″, µrad, mdeg or nm)."""
@@ -147,10 +164,10 @@ class ErrorPlot(QWidget):
         if unit:
             self.unit = unit
             for plot in (self.main_plot, self.corrected_plot):
-                plot.setLabel("left", _with_unit(plot.getAxis("left").labelText, unit))
+                self.set_axis_label(plot, "left", _with_unit(self.axis_label(plot), unit))
         if _unit_of(residuals_label):
-            self.residual_plot.setLabel("left", _with_unit(
-                self.residual_plot.getAxis("left").labelText, _unit_of(residuals_label)))
+            self.set_axis_label(self.residual_plot, "left", _with_unit(
+                self.axis_label(self.residual_plot), _unit_of(residuals_label)))
 
     def _follow_y(self, plot, arrays) -> None:
         """Move the y range only if the data left it or fill less than 60 % of it. A user's

@@ -7,8 +7,9 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QHBoxLayout, QLineEdit, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QVBoxLayout, QWidget
 
+from widgets.i18n import live, on_language_change, tr
 from widgets.settings_form import SettingsForm
 
 # (parameters) -> (x, top curve, bottom curve)
@@ -39,22 +40,31 @@ class FamilySimulation(QWidget):
 
     def _setup_ui(self, default_values: str, labels: tuple[str, str, str]) -> None:
         self.sweep_values = QLineEdit(default_values)
-        self.sweep_values.setToolTip("Values of the swept parameter, separated by commas")
-        self.form.layout().addRow("sweep values", self.sweep_values)
+        live(self.sweep_values.setToolTip, tr("Values of the swept parameter, separated by "
+                                              "commas"))
+        caption = QLabel()
+        live(caption.setText, tr("sweep values"))
+        self.form.layout().addRow(caption, self.sweep_values)
         self.form.changed.connect(self.update_curves)
         self.sweep_values.editingFinished.connect(self.update_curves)
-        x_label, top_label, bottom_label = labels
+        self._labels = labels
         self.top_plot = pg.PlotWidget(background="w")
-        self.top_plot.setLabel("left", top_label)
         self.bottom_plot = pg.PlotWidget(background="w")
-        self.bottom_plot.setLabel("left", bottom_label)
+        self._relabel()
+        on_language_change(self, self._relabel)
         for plot in (self.top_plot, self.bottom_plot):
-            plot.setLabel("bottom", x_label)
             plot.showGrid(x=True, y=True, alpha=0.25)
             plot.getAxis("left").enableAutoSIPrefix(False)
             plot.addLegend(offset=(-10, 10))
         self.top_curves: list[pg.PlotDataItem] = []
         self.bottom_curves: list[pg.PlotDataItem] = []
+
+    def _relabel(self) -> None:
+        x_label, top_label, bottom_label = (tr(label.source) for label in self._labels)
+        self.top_plot.setLabel("left", top_label)
+        self.bottom_plot.setLabel("left", bottom_label)
+        for plot in (self.top_plot, self.bottom_plot):
+            plot.setLabel("bottom", x_label)
 
     def _layout(self) -> None:
         plots = QVBoxLayout()

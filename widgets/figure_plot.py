@@ -7,6 +7,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
+from widgets.i18n import declared
 from widgets.legend_placement import place_legend
 
 
@@ -41,9 +42,9 @@ class FigurePlot(QWidget):
         self.clear()
         if figure is None:
             return
-        self.plot.setTitle(figure.title, size="9pt")
-        self.plot.setLabel("bottom", figure.x_label)
-        self.plot.setLabel("left", figure.y_label)
+        self.plot.setTitle(declared(figure.title), size="9pt")
+        self.plot.setLabel("bottom", declared(figure.x_label))
+        self.plot.setLabel("left", declared(figure.y_label))
         for s in figure.series:
             colour = pg.mkColor(*s.color)
             if s.band is not None:
@@ -56,6 +57,6 @@ class FigurePlot(QWidget):
             symbol = {"symbol": "o", "symbolSize": 6, "symbolBrush": colour,
                       "symbolPen": None} if s.markers else {}
             curve = self.plot.plot(s.x, s.y, pen=pg.mkPen(colour, width=2), connect="finite",
-                                   name=s.label or None, **symbol)
+                                   name=declared(s.label) or None, **symbol)
             self.curves.append(curve)
         place_legend(self.plot.getPlotItem(), self.legend)

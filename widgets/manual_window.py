@@ -8,6 +8,8 @@ from pathlib import Path
 from PySide6.QtCore import Qt, QUrl
 from PySide6.QtWidgets import QTextBrowser, QVBoxLayout, QWidget
 
+from widgets.i18n import live, tr
+
 MANUAL_DIR = Path(__file__).resolve().parent.parent / "resources" / "manual"
 
 
@@ -23,7 +25,7 @@ class ManualWindow(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.setWindowFlag(Qt.WindowType.Window)
-        self.setWindowTitle("AngleBench — manual")
+        live(self.setWindowTitle, tr("AngleBench — manual"))
         self.browser = QTextBrowser()
         self.browser.setOpenExternalLinks(True)
         self.browser.setSearchPaths([str(MANUAL_DIR)])

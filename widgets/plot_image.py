@@ -8,6 +8,8 @@ import re
 import pyqtgraph as pg
 from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
 
+from widgets.i18n import live, tr
+
 __all__ = ["add_image_actions", "copy_image", "image_file_name", "plot_panels"]
 
 
@@ -27,8 +29,8 @@ def copy_image(widget: QWidget) -> None:
 
 
 def _save_image(widget: QWidget, title: str) -> None:
-    path, _ = QFileDialog.getSaveFileName(widget, "Save image", image_file_name(title),
-                                          "PNG image (*.png)")
+    path, _ = QFileDialog.getSaveFileName(widget, tr("Save image"), image_file_name(title),
+                                          tr("PNG image (*.png)"))
     if path:
         if not path.lower().endswith(".png"):
             path += ".png"
@@ -43,9 +45,11 @@ def add_image_actions(widget: QWidget, title: str) -> int:
         for item in view.scene().items():
             if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
                 item.menu.addSeparator()
-                item.menu.addAction("Copy image").triggered.connect(
-                    lambda _=False, w=widget: copy_image(w))
-                item.menu.addAction("Save image…").triggered.connect(
-                    lambda _=False, w=widget, t=title: _save_image(w, t))
+                copy = item.menu.addAction(tr("Copy image"))
+                live(copy.setText, tr("Copy image"))
+                copy.triggered.connect(lambda _=False, w=widget: copy_image(w))
+                save = item.menu.addAction(tr("Save image…"))
+                live(save.setText, tr("Save image…"))
+                save.triggered.connect(lambda _=False, w=widget, t=title: _save_image(w, t))
                 count += 1
     return count

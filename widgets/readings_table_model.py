@@ -6,6 +6,7 @@ from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelInd
 from PySide6.QtGui import QBrush, QColor, QUndoStack
 
 from models.readings.sheet import ReadingsSheet
+from widgets.i18n import declared, on_language_change, tr
 from widgets.table_commands import (
     InsertRowsCommand,
     RemoveRowsCommand,
@@ -33,6 +34,10 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet = sheet
         self.undo_stack = undo_stack
         self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+        on_language_change(self, self._on_language_changed)
+
+    def _on_language_changed(self) -> None:
+        self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, self.sheet.column_count - 1)
 
     # -- read -----------------------------------------------------------
     def rowCount(self, parent: _Index = QModelIndex()) -> int:  # noqa: B008, N802
@@ -59,8 +64,9 @@ class ReadingsTableModel(QAbstractTableModel):
         if role == Qt.ItemDataRole.ToolTipRole:
             reason = self.sheet.cell_error(r, c)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
-            return (f"Row {r + 1}, {column.header} ({column.key}): {reason}" if reason
-                    else None)
+            return (tr("Row {row}, {header} ({key}): {reason}").format(
+                row=r + 1, header=declared(column.header), key=column.key, reason=reason)
+                if reason else None)
         return None
 
     def headerData(self, section: int, orientation: Qt.Orientation,  # noqa: N802
@@ -68,9 +74,9 @@ class ReadingsTableModel(QAbstractTableModel):
         if orientation == Qt.Orientation.Horizontal:
             column = self.sheet.columns[section]
             if role == Qt.ItemDataRole.DisplayRole:
-                return column.header
+                return declared(column.header)
             if role == Qt.ItemDataRole.ToolTipRole:
-                return f"{column.key}: {column.help}" if column.help else column.key
+                return f"{column.key}: {declared(column.help)}" if column.help else column.key
             return None
         if role == Qt.ItemDataRole.DisplayRole:
             return str(section + 1) if section < self.sheet.row_count else "*"
@@ -100,13 +106,13 @@ class ReadingsTableModel(QAbstractTableModel):
             return False
         if r >= self.sheet.row_count and not text:
             return False
-        self.set_cells([(r, c, text)], f"Edit row {r + 1}")
+        self.set_cells([(r, c, text)], tr("Edit row {row}").format(row=r + 1))
         return True
 
-    def set_cells(self, changes: list[tuple[int, int, str]], label: str = "Edit cells") -> None:
+    def set_cells(self, changes: list[tuple[int, int, str]], label: str = "") -> None:
         changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
         if changes:
-            self.undo_stack.push(SetCellsCommand(self, changes, label))
+            self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells")))
 
     def insert_rows(self, at: int, count: int = 1) -> None:
         at = max(0, min(at, self.sheet.row_count))
@@ -123,12 +129,14 @@ class ReadingsTableModel(QAbstractTableModel):
                 blocks[-1] = (blocks[-1][0], blocks[-1][1] + 1)
             else:
                 blocks.append((r, 1))
-        self.undo_stack.push(RemoveRowsCommand(self, blocks, f"Delete {len(rows)} row(s)"))
+        self.undo_stack.push(RemoveRowsCommand(self, blocks, tr("Delete {rows} row(s)").format(
+            rows=len(rows))))
 
-    def replace_all(self, rows: list[list[str]], label: str = "Replace readings",
+    def replace_all(self, rows: list[list[str]], label: str = "",
                     checked: bool = False) -> None:
         """Replace every row (one undo step); ``checked``: rows already fit the columns."""
-        self.undo_stack.push(ReplaceAllCommand(self, rows, label, checked))
+        self.undo_stack.push(ReplaceAllCommand(self, rows, label or tr("Replace readings"),
+                                               checked))
 
     # -- raw operations used by the commands ------------------------------
     def apply_cells(self, changes: list[tuple[int, int, str]]) -> None:

@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (
 
 from models.readings.paste import plan_paste
 from models.readings.tabular_import import split_pasted_text
+from widgets.i18n import live, tr
 from widgets.readings_table_model import ReadingsTableModel
 
 
@@ -42,17 +43,19 @@ class ReadingsTableView(QTableView):
         self.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
         self.verticalHeader().setDefaultSectionSize(22)
         self.setContextMenuPolicy(Qt.ContextMenuPolicy.ActionsContextMenu)
-        self.copy_action = self._action("Copy", QKeySequence.StandardKey.Copy, self.copy_selection)
-        self.paste_action = self._action("Paste", QKeySequence.StandardKey.Paste, self.paste)
-        self.clear_action = self._action("Clear cells", QKeySequence.StandardKey.Delete,
+        self.copy_action = self._action(tr("Copy"), QKeySequence.StandardKey.Copy,
+                                        self.copy_selection)
+        self.paste_action = self._action(tr("Paste"), QKeySequence.StandardKey.Paste, self.paste)
+        self.clear_action = self._action(tr("Clear cells"), QKeySequence.StandardKey.Delete,
                                          self.clear_selection)
-        self.insert_action = self._action("Insert row above", QKeySequence("Ctrl+I"),
+        self.insert_action = self._action(tr("Insert row above"), QKeySequence("Ctrl+I"),
                                           self.insert_row)
-        self.delete_rows_action = self._action("Delete rows", QKeySequence("Ctrl+-"),
+        self.delete_rows_action = self._action(tr("Delete rows"), QKeySequence("Ctrl+-"),
                                                self.delete_rows)
 
     def _action(self, text: str, shortcut, slot) -> QAction:
         action = QAction(text, self)
+        live(action.setText, text)
         action.setShortcut(shortcut)
         action.setShortcutContext(Qt.ShortcutContext.WidgetWithChildrenShortcut)
         action.triggered.connect(slot)
@@ -80,7 +83,7 @@ class ReadingsTableView(QTableView):
                 value = None
             if value is not None and not below:
                 model.set_cells([(row + 1, nominal, f"{value + self.nominal_step:.10g}")],
-                                "Next nominal")
+                                tr("Next nominal"))
         target = model.index(row + 1, self.entry_column)
         self.setCurrentIndex(target)
         self.scrollTo(target)
@@ -129,15 +132,16 @@ class ReadingsTableView(QTableView):
         plan = plan_paste(grid, sheet.columns, filled, top, left, whole)
         width = sheet.column_count
         full = [(([""] * plan.left) + r + [""] * width)[:width] for r in plan.rows]
-        label = f"Paste {len(plan.rows)} row(s)" + (" (header row left out)" if plan.header
-                                                    else "")
+        label = (tr("Paste {rows} row(s) (header row left out)") if plan.header
+                 else tr("Paste {rows} row(s)")).format(rows=len(plan.rows))
         choice = "replace" if plan.replace_sheet else "cells"
         if plan.leaves_rows:
             choice = self.ask_paste(len(plan.rows), plan.leaves_rows)
             if not choice:
                 return ""
         if choice == "replace":
-            model.replace_all(full, label + ", replacing the sheet", checked=True)
+            model.replace_all(full, tr("{paste}, replacing the sheet").format(paste=label),
+                              checked=True)
             return "replace"
         changes = [(top + i, plan.left + j, cell) for i, row in enumerate(plan.rows)
                    for j, cell in enumerate(row) if plan.left + j < width]
@@ -146,12 +150,13 @@ class ReadingsTableView(QTableView):
 
     def ask_paste(self, block_rows: int, left_behind: int) -> str:
         """A shorter block over a longer run: "replace", "overwrite" or "" (cancel)."""
-        box = QMessageBox(QMessageBox.Icon.Question, "Paste readings",
-                          f"The {block_rows} pasted rows land on a run of "
-                          f"{block_rows + left_behind}; {left_behind} row(s) of the old run "
-                          "would stay below them and be analysed with them.", parent=self)
-        replace = box.addButton("Replace the sheet", QMessageBox.ButtonRole.AcceptRole)
-        overwrite = box.addButton(f"Overwrite rows 1–{block_rows} only",
+        box = QMessageBox(QMessageBox.Icon.Question, tr("Paste readings"),
+                          tr("The {pasted} pasted rows land on a run of {run}; {left} row(s) of "
+                             "the old run would stay below them and be analysed with them.")
+                          .format(pasted=block_rows, run=block_rows + left_behind,
+                                  left=left_behind), parent=self)
+        replace = box.addButton(tr("Replace the sheet"), QMessageBox.ButtonRole.AcceptRole)
+        overwrite = box.addButton(tr("Overwrite rows 1–{rows} only").format(rows=block_rows),
                                   QMessageBox.ButtonRole.DestructiveRole)
         box.addButton(QMessageBox.StandardButton.Cancel)
         box.setDefaultButton(replace)
@@ -163,7 +168,7 @@ class ReadingsTableView(QTableView):
         model = self.readings_model()
         changes = [(i.row(), i.column(), "") for i in self.selectedIndexes()
                    if i.row() < model.sheet.row_count and model.sheet.text(i.row(), i.column())]
-        model.set_cells(changes, "Clear cells")
+        model.set_cells(changes, tr("Clear cells"))
 
     # -- rows -----------------------------------------------------------
     def insert_row(self) -> None:

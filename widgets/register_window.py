@@ -28,6 +28,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets.i18n import declared, live, tr
+
 EPOCH = dt.date(1970, 1, 1).toordinal()
 COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7f8c8d")
 
@@ -35,16 +37,17 @@ COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7
 class RegisterWindow(QDialog):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.setWindowTitle("Certificate register")
+        live(self.setWindowTitle, tr("Certificate register"))
         self.resize(1100, 720)
         self.location = QLabel()
         self.location.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.location_edit = QLineEdit()
-        self.location_edit.setPlaceholderText("empty: the file in your data folder; or "
-                                              "postgresql://user@host/database")
-        self.location_button = QPushButton("Use")
+        live(self.location_edit.setPlaceholderText, tr("empty: the file in your data folder; "
+                                                       "or postgresql://user@host/database"))
+        self.location_button = QPushButton()
+        live(self.location_button.setText, tr("Use"))
         self.search = QLineEdit()
-        self.search.setPlaceholderText("Search number, serial or customer")
+        live(self.search.setPlaceholderText, tr("Search number, serial or customer"))
         self.table = QTableWidget()
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
@@ -52,16 +55,22 @@ class RegisterWindow(QDialog):
         self.table.verticalHeader().hide()
         self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         self.table.horizontalHeader().setStretchLastSection(True)
-        self.buttons = {name: QPushButton(text) for name, text in (
-            ("open", "Open project"), ("amend", "Amend…"), ("replace", "Replace…"),
-            ("save", "Save PDF…"), ("print", "Print…"), ("verify", "Verify a PDF…"),
-            ("history", "History"))}
-        self.buttons["amend"].setToolTip("Open the certificate's readings and details; the next "
-                                         "export issues Amendment n to it, saying what changed")
-        self.buttons["replace"].setToolTip("As Amend, but the new certificate gets a new number "
-                                           "and replaces the original")
-        self.buttons["verify"].setToolTip("Is a PDF, byte for byte, one this register issued?")
-        self.history_title = QLabel("Select a certificate and press History")
+        self.buttons = {}
+        for name, text in (("open", tr("Open project")), ("amend", tr("Amend…")),
+                           ("replace", tr("Replace…")), ("save", tr("Save PDF…")),
+                           ("print", tr("Print…")), ("verify", tr("Verify a PDF…")),
+                           ("history", tr("History"))):
+            self.buttons[name] = QPushButton()
+            live(self.buttons[name].setText, text)
+        live(self.buttons["amend"].setToolTip, tr(
+            "Open the certificate's readings and details; the next export issues Amendment n "
+            "to it, saying what changed"))
+        live(self.buttons["replace"].setToolTip, tr(
+            "As Amend, but the new certificate gets a new number and replaces the original"))
+        live(self.buttons["verify"].setToolTip, tr(
+            "Is a PDF, byte for byte, one this register issued?"))
+        self.history_title = QLabel()
+        live(self.history_title.setText, tr("Select a certificate and press History"))
         self.history_plot = pg.PlotWidget(background="w", axisItems={
             "bottom": pg.DateAxisItem(orientation="bottom")})
         self.history_plot.showGrid(x=True, y=True, alpha=0.25)
@@ -75,20 +84,24 @@ class RegisterWindow(QDialog):
         self.history_plot.addItem(self.due_line)
         self.figure = QComboBox()  # which headline figure the history plots
         self.figure.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
-        self.figure.setToolTip("The figure of the certificates to follow over time")
-        self.figure.currentTextChanged.connect(self._draw_history)
+        live(self.figure.setToolTip, tr("The figure of the certificates to follow over time"))
+        self.figure.currentIndexChanged.connect(
+            lambda _i: self._draw_history(self.figure.currentData() or ""))
         self._series: dict = {}
         self.interval = QSpinBox()
         self.interval.setRange(0, 3650)
-        self.interval.setSuffix(" days")
-        self.interval.setSpecialValueText("no interval set")
-        self.interval_button = QPushButton("Set interval")
+        live(self.interval.setSuffix, tr(" days"))
+        live(self.interval.setSpecialValueText, tr("no interval set"))
+        self.interval_button = QPushButton()
+        live(self.interval_button.setText, tr("Set interval"))
         self.serial = ""
         self._layout()
 
     def _layout(self) -> None:
         top = QHBoxLayout()
-        top.addWidget(QLabel("Register:"))
+        caption = QLabel()
+        live(caption.setText, tr("Register:"))
+        top.addWidget(caption)
         top.addWidget(self.location, 1)
         top.addWidget(self.location_edit, 1)
         top.addWidget(self.location_button)
@@ -107,7 +120,9 @@ class RegisterWindow(QDialog):
         row = QHBoxLayout()
         row.addWidget(self.history_title, 1)
         row.addWidget(self.figure)
-        row.addWidget(QLabel("calibration interval"))
+        interval_caption = QLabel()
+        live(interval_caption.setText, tr("calibration interval"))
+        row.addWidget(interval_caption)
         row.addWidget(self.interval)
         row.addWidget(self.interval_button)
         lower_layout.addLayout(row)
@@ -143,7 +158,7 @@ class RegisterWindow(QDialog):
     def show_records(self, header, rows) -> None:
         self.table.clear()
         self.table.setColumnCount(len(header))
-        self.table.setHorizontalHeaderLabels(list(header))
+        self.table.setHorizontalHeaderLabels([tr(h) for h in header])
         self.table.setRowCount(len(rows))
         for r, row in enumerate(rows):
             for c, text in enumerate(row):
@@ -158,14 +173,15 @@ class RegisterWindow(QDialog):
     def show_history(self, serial, series, dates, due, interval_days) -> None:
         self.serial = serial
         self._series = dict(series)
-        chosen = self.figure.currentText()
+        chosen = self.figure.currentData()
         self.figure.blockSignals(True)
         self.figure.clear()
-        self.figure.addItems(list(series))
+        for name in series:
+            self.figure.addItem(declared(name), name)
         if chosen in series:
-            self.figure.setCurrentText(chosen)
+            self.figure.setCurrentIndex(self.figure.findData(chosen))
         self.figure.blockSignals(False)
-        self._draw_history(self.figure.currentText())
+        self._draw_history(self.figure.currentData() or "")
         ends = [x for xs, _ in series.values() for x in xs]
         if due:
             self.due_line.setValue((dt.date.fromisoformat(due).toordinal() - EPOCH) * 86400.0)
@@ -180,8 +196,10 @@ class RegisterWindow(QDialog):
                                         (hi + pad - EPOCH) * 86400.0, padding=0)
         self.interval.setValue(interval_days)
         self.history_title.setText(
-            f"Instrument {serial}: {len(dates)} calibration(s)"
-            + (f", next due {due}" if due else ", no due date (set an interval)"))
+            tr("Instrument {serial}: {count} calibration(s)").format(serial=serial,
+                                                                    count=len(dates))
+            + (tr(", next due {date}").format(date=due) if due
+               else tr(", no due date (set an interval)")))
 
     def _draw_history(self, name: str) -> None:
         """One figure at a time: the figures of a certificate differ by orders of magnitude."""
@@ -194,17 +212,17 @@ class RegisterWindow(QDialog):
         xs, ys = self._series[name]
         seconds = [(x - EPOCH) * 86400.0 for x in xs]
         self.history_curves.append(self.history_plot.plot(
-            seconds, ys, name=name, pen=pg.mkPen(COLOURS[0], width=2), symbol="o",
+            seconds, ys, name=declared(name), pen=pg.mkPen(COLOURS[0], width=2), symbol="o",
             symbolBrush=COLOURS[0], symbolPen=None))
-        self.history_plot.setLabel("left", name)
+        self.history_plot.setLabel("left", declared(name))
 
     def ask_pdf_to_verify(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(self, "Verify a certificate PDF", "",
+        path, _ = QFileDialog.getOpenFileName(self, tr("Verify a certificate PDF"), "",
                                               "PDF (*.pdf)")
         return path
 
     def ask_pdf_path(self, suggested: str) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, "Save the certificate's PDF", suggested,
+        path, _ = QFileDialog.getSaveFileName(self, tr("Save the certificate's PDF"), suggested,
                                               "PDF (*.pdf)")
         return path
 
@@ -218,7 +236,7 @@ class RegisterWindow(QDialog):
         from widgets.print_view import print_pdf
 
         printer = QPrinter(QPrinter.PrinterMode.HighResolution)
-        printer.setDocName(f"Certificate {number}")
+        printer.setDocName(tr("Certificate {number}").format(number=number))
         if QPrintDialog(printer, self).exec() != QDialog.DialogCode.Accepted:
             return 0
         return print_pdf(pdf, printer)

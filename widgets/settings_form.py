@@ -5,9 +5,23 @@ from __future__ import annotations
 from typing import Any
 
 from PySide6.QtCore import Signal
-from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QFormLayout, QLineEdit, QSpinBox, QWidget
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDoubleSpinBox,
+    QFormLayout,
+    QLabel,
+    QLineEdit,
+    QSpinBox,
+    QWidget,
+)
 
 from models.parameters import Parameter
+from widgets.i18n import Tr, declared, live, on_language_change, tr
+
+
+def _shown(text: str) -> Tr:
+    """A text of the window (``tr``) as it is; a text the models declare, translated."""
+    return text if isinstance(text, Tr) else declared(text)
 
 
 class SettingsForm(QWidget):
@@ -20,6 +34,8 @@ class SettingsForm(QWidget):
         self._fields: dict[str, QWidget] = {}
         self._form = QFormLayout(self)
         self._form.setContentsMargins(4, 4, 4, 4)
+        self._choices: list[tuple[QComboBox, list[Tr]]] = []
+        on_language_change(self, self._retranslate_choices)
 
     def add_float(self, key: str, label: str, minimum: float, maximum: float, decimals: int = 3,
                   suffix: str = "", step: float = 1.0, tooltip: str = "") -> QDoubleSpinBox:
@@ -39,15 +55,17 @@ class SettingsForm(QWidget):
         box.setSuffix(suffix)
         box.setKeyboardTracking(False)
         if special:
-            box.setSpecialValueText(special)
+            live(box.setSpecialValueText, _shown(special))
         box.valueChanged.connect(self.changed)
         return self._add(key, label, box, tooltip)
 
     def add_choice(self, key: str, label: str, choices: list[tuple[Any, str]],
                    tooltip: str = "") -> QComboBox:
         box = QComboBox()
-        for value, text in choices:
+        texts = [_shown(text) for _, text in choices]
+        for (value, _), text in zip(choices, texts, strict=True):
             box.addItem(text, value)
+        self._choices.append((box, texts))
         box.currentIndexChanged.connect(self.changed)
         return self._add(key, label, box, tooltip)
 
@@ -72,14 +90,23 @@ class SettingsForm(QWidget):
         else:
             box = self.add_float(p.key, p.label, low, high, p.decimals, suffix, p.step, tip)
             if p.zero:
-                box.setSpecialValueText(p.zero)
+                live(box.setSpecialValueText, _shown(p.zero))
         return box
+
+    def _retranslate_choices(self) -> None:
+        for box, texts in self._choices:
+            for index, text in enumerate(texts):
+                box.setItemText(index, declared(text.source) if text.is_declared
+                                else tr(text.source))
 
     def _add(self, key: str, label: str, widget, tooltip: str):
         widget.setObjectName(key)
         if tooltip:
-            widget.setToolTip(tooltip)
-        self._form.addRow(label, widget)
+            live(widget.setToolTip, _shown(tooltip))
+        caption = QLabel()
+        live(caption.setText, _shown(label))
+        caption.setBuddy(widget)
+        self._form.addRow(caption, widget)
         self._fields[key] = widget
         return widget
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from PySide6.QtGui import QUndoCommand
 
+from widgets.i18n import tr
+
 
 class SetCellsCommand(QUndoCommand):
     """Set many cells at once (typing one cell, pasting a block, clearing a selection)."""
@@ -26,8 +28,8 @@ class SetCellsCommand(QUndoCommand):
 
 
 class InsertRowsCommand(QUndoCommand):
-    def __init__(self, model, at: int, rows: list[list[str]], label: str = "Insert rows") -> None:
-        super().__init__(label)
+    def __init__(self, model, at: int, rows: list[list[str]], label: str = "") -> None:
+        super().__init__(label or tr("Insert rows"))
         self._model, self._at, self._rows = model, at, rows
 
     def redo(self) -> None:
@@ -40,8 +42,8 @@ class InsertRowsCommand(QUndoCommand):
 class RemoveRowsCommand(QUndoCommand):
     """Remove rows given as sorted, non-overlapping (start, count) blocks."""
 
-    def __init__(self, model, blocks: list[tuple[int, int]], label: str = "Delete rows") -> None:
-        super().__init__(label)
+    def __init__(self, model, blocks: list[tuple[int, int]], label: str = "") -> None:
+        super().__init__(label or tr("Delete rows"))
         self._model, self._blocks = model, blocks
         self._removed: list[tuple[int, list[list[str]]]] = []
 

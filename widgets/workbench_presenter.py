@@ -27,6 +27,7 @@ from models.readings.tabular_import import (
     map_columns,
     read_table,
 )
+from widgets.i18n import on_language_change, tr
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import cyclic_gc_paused, emit_if_alive, gui_thread_first, worker_pool
@@ -171,6 +172,7 @@ class WorkbenchPresenter(QObject):
         self.table_model.sheet_changed.connect(self.schedule_refresh)
         self.undo_stack.cleanChanged.connect(self._on_clean_changed)
         self.view.subscribe(self)
+        on_language_change(self, self._redraw)
 
     # -- subclass hooks ---------------------------------------------------
     def build_settings(self) -> None:
@@ -195,6 +197,10 @@ class WorkbenchPresenter(QObject):
         if unit == self.angle_unit:
             return
         self.angle_unit = unit
+        self._redraw()
+
+    def _redraw(self) -> None:
+        """The result shown again (a new language or unit), not analysed again."""
         if self.parsed is not None:
             self._finish(self.parsed, self.result, self.problem, self.display)
 
@@ -275,7 +281,8 @@ class WorkbenchPresenter(QObject):
             rows = self._rows_by_mapping(exc)
             if rows is None:
                 raise
-        self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self.table_model.replace_all(rows, tr("Import {name}").format(name=Path(path).name),
+                                     checked=True)
         self.imported.emit(str(path), len(rows))
         self._fit_columns()
         self.refresh()
@@ -297,7 +304,7 @@ class WorkbenchPresenter(QObject):
                 self.import_failed.emit(str(exc))
             return
         self._import_pending = True
-        self._set_busy(True, f"Reading {Path(path).name} …")
+        self._set_busy(True, tr("Reading {name} …").format(name=Path(path).name))
         worker_pool().start(_ImportTask(self.kind, path, self._signals, self._import_generation))
 
     def _rows_by_mapping(self, exc: MissingColumnError) -> list[list[str]] | None:
@@ -332,7 +339,8 @@ class WorkbenchPresenter(QObject):
         if rows is None:
             self.import_failed.emit(error)
             return
-        self.table_model.replace_all(rows, f"Import {Path(path).name}", checked=True)
+        self.table_model.replace_all(rows, tr("Import {name}").format(name=Path(path).name),
+                                     checked=True)
         self.imported.emit(str(path), len(rows))
         self._fit_columns()
         # queued behind the table's own relayout: started now, the analysis worker would
@@ -363,7 +371,8 @@ class WorkbenchPresenter(QObject):
         self._fit_columns()
         self._generation += 1
         if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
-            self._set_busy(True, f"Analysing {self.sheet.row_count} readings …")
+            self._set_busy(True, tr("Analysing {rows} readings …").format(
+                rows=self.sheet.row_count))
             worker_pool().start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation))
@@ -388,17 +397,19 @@ class WorkbenchPresenter(QObject):
             rows = sorted({e.row + 1 for e in parsed.errors})
             shown = ", ".join(map(str, rows[:8])) + (" …" if len(rows) > 8 else "")
             input_warnings.append(
-                f"{len(parsed.errors)} cell(s) cannot be read (row {shown}); those rows are "
-                "left out. Point at a red cell to see why.")
+                tr("{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point "
+                   "at a red cell to see why.").format(cells=len(parsed.errors), rows=shown))
         self.view.set_readings_caption(
-            f"Readings — {parsed.n} used" + (f", {len(parsed.errors)} bad cell(s)"
+            tr("Readings — {used} used").format(used=parsed.n) + (
+                tr(", {cells} bad cell(s)").format(cells=len(parsed.errors))
                                              if parsed.errors else ""))
-        self.view.set_next_row(f"next: row {self.sheet.row_count + 1}")
+        self.view.set_next_row(tr("next: row {row}").format(row=self.sheet.row_count + 1))
         if result is None:
             self.clear_result()
             error = self.in_unit_text(error)
-            self.view.set_summary(f"No result: {error}" if error else "No readings yet.")
-            self.view.set_verdict(f"No result: {error}" if error else "")
+            no_result = tr("No result: {reason}").format(reason=error) if error else ""
+            self.view.set_summary(no_result or tr("No readings yet."))
+            self.view.set_verdict(no_result)
             self.view.set_figures({})
             self.view.set_warnings(input_warnings)
         else:

@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 
 from models.readings.tabular_import import header_signature
 from widgets.column_mapping_dialog import ColumnMappingDialog
+from widgets.i18n import Tr, declared, live, on_language_change, tr
 from widgets.plot_image import add_image_actions, plot_panels
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
@@ -42,18 +43,22 @@ class WorkbenchView(QWidget):
         self.title = title
         self._setup_ui()
         self._layout()
+        self._retranslate()
 
     def _setup_ui(self) -> None:
         self.table = ReadingsTableView()
         self.settings = SettingsForm()
-        self.readings_label = QLabel("Readings")
-        self.step_label = QLabel("nominal step")
+        self.readings_label = QLabel()
+        live(self.readings_label.setText, tr("Readings"))
+        self.step_label = QLabel()
+        self._nominal_title = ""
         self.step = QDoubleSpinBox()
         self.step.setRange(0.0, 1e6)
         self.step.setDecimals(4)
-        self.step.setSpecialValueText("off")
-        self.step.setToolTip("Typing a row and pressing Return fills the next row's nominal "
-                             "value with this step (0: off) and moves to its first reading")
+        live(self.step.setSpecialValueText, tr("off"))
+        live(self.step.setToolTip, tr("Typing a row and pressing Return fills the next row's "
+                                      "nominal value with this step (0: off) and moves to its "
+                                      "first reading"))
         self.step.valueChanged.connect(lambda v: setattr(self.table, "nominal_step", v))
         self.next_label = QLabel()
         self.summary = QPlainTextEdit()
@@ -67,7 +72,8 @@ class WorkbenchView(QWidget):
         self.verdict.setTextFormat(Qt.TextFormat.PlainText)
         self.verdict.setStyleSheet("QLabel { font-weight: bold; padding: 2px; }")
         self.figures = QTableWidget(0, 2)
-        self.figures.setHorizontalHeaderLabels(["figure", "value"])
+        self._plot_titles: list[Tr] = []
+        on_language_change(self, self._retranslate)
         self.figures.verticalHeader().hide()
         self.figures.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         header = self.figures.horizontalHeader()
@@ -98,7 +104,8 @@ class WorkbenchView(QWidget):
         entry.addWidget(self.step)
         left_layout.addLayout(entry)
         left_layout.addWidget(self.table, 1)
-        setup_box = QGroupBox("Set-up")
+        setup_box = QGroupBox()
+        live(setup_box.setTitle, tr("Set-up"))
         setup_layout = QVBoxLayout(setup_box)
         setup_layout.setContentsMargins(2, 2, 2, 2)
         setup_layout.addWidget(self.settings)
@@ -107,7 +114,8 @@ class WorkbenchView(QWidget):
         right = QWidget()
         right_layout = QVBoxLayout(right)
         right_layout.setContentsMargins(0, 0, 0, 0)
-        fit_box = QGroupBox("Result")
+        fit_box = QGroupBox()
+        live(fit_box.setTitle, tr("Result"))
         fit_layout = QVBoxLayout(fit_box)
         fit_layout.setContentsMargins(2, 2, 2, 2)
         fit_layout.addWidget(self.busy)
@@ -163,9 +171,19 @@ class WorkbenchView(QWidget):
             if rows <= measure_rows:
                 self.table.resizeColumnsToContents()
 
+    def _retranslate(self) -> None:
+        """Texts made here from parts (the plot tabs, the step's label) set anew in the
+        language now chosen."""
+        self.figures.setHorizontalHeaderLabels([tr("figure"), tr("value")])
+        for index, title in enumerate(self._plot_titles):
+            self.plot_tabs.setTabText(index, tr(title.source))
+        self.step_label.setText(tr("next {column} +").format(column=declared(
+            self._nominal_title)) if self._nominal_title else "")
+
     def set_entry_columns(self, nominal: int | None, entry: int, nominal_title: str) -> None:
         self.table.nominal_column, self.table.entry_column = nominal, entry
-        self.step_label.setText(f"next {nominal_title} +" if nominal is not None else "")
+        self._nominal_title = nominal_title if nominal is not None else ""
+        self._retranslate()
         self.step_label.setVisible(nominal is not None)
         self.step.setVisible(nominal is not None)
 
@@ -185,7 +203,7 @@ class WorkbenchView(QWidget):
     #: the plots flat and overprinting their axis titles (high-DPI scale, small windows)
     PANEL_MIN_HEIGHT = 150
 
-    def add_plot_tab(self, widget: QWidget, title: str) -> None:
+    def add_plot_tab(self, widget: QWidget, title: Tr) -> None:
         panels = max(1, plot_panels(widget))
         widget.setMinimumHeight(self.PANEL_MIN_HEIGHT * panels)
         scroll = QScrollArea()
@@ -193,7 +211,8 @@ class WorkbenchView(QWidget):
         scroll.setFrameShape(QFrame.Shape.NoFrame)
         scroll.setWidget(widget)
         self.plot_tabs.addTab(scroll, title)
-        add_image_actions(widget, f"{self.title} {title}")
+        self._plot_titles.append(title)
+        add_image_actions(widget, f"{self.title} {title.source}")
 
     def plot_widget(self, index: int) -> QWidget:
         """The plot of tab ``index`` (inside its scroll area)."""
@@ -234,7 +253,7 @@ class WorkbenchView(QWidget):
         """The headline figures, each with its unit in its name."""
         self.figures.setRowCount(len(figures))
         for row, (name, value) in enumerate(figures.items()):
-            self.figures.setItem(row, 0, QTableWidgetItem(name))
+            self.figures.setItem(row, 0, QTableWidgetItem(declared(name)))
             item = QTableWidgetItem(f"{value:.4g}")
             item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
             self.figures.setItem(row, 1, item)

@@ -10,15 +10,18 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
+from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
 from widgets.workbench_view import WorkbenchView
 
 
 def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) -> pg.PlotWidget:
-    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous)."""
+    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous).
+    Its titles and legend are in the window's language (``_relabel``)."""
     plot = pg.PlotWidget(background="w")
-    plot.setLabel("left", left)
-    plot.setLabel("bottom", bottom)
+    plot.english_labels = {"left": left, "bottom": bottom}
+    plot.setLabel("left", declared(left))
+    plot.setLabel("bottom", declared(bottom))
     plot.showGrid(x=True, y=True, alpha=0.25)
     for axis in ("left", "bottom"):
         plot.getAxis(axis).enableAutoSIPrefix(False)
@@ -60,6 +63,19 @@ class FringePlots(QWidget):
         self.drift_b1 = self.drift.plot(name="B1 (cos)", pen=pg.mkPen("#1f5fbf", width=1.5))
         self.drift_a3 = self.drift.plot(name="A3 × 10", pen=pg.mkPen("#e67e22", width=1.5))
         self.drift_b3 = self.drift.plot(name="B3 × 10", pen=pg.mkPen("#16a085", width=1.5))
+        self._names = {}  # legend label -> English name
+        for plot in (self.signals, self.lissajous, self.drift):
+            for _sample, label in plot.getPlotItem().legend.items:
+                self._names[label] = label.text
+        self._relabel()
+        on_language_change(self, self._relabel)
+
+    def _relabel(self) -> None:
+        for plot in (self.signals, self.lissajous, self.spectrum, self.drift):
+            for axis, english in plot.english_labels.items():
+                plot.setLabel(axis, declared(english))
+        for label, english in self._names.items():
+            label.setText(declared(english))
 
 
 class FringeView(WorkbenchView):
@@ -67,24 +83,26 @@ class FringeView(WorkbenchView):
         super().__init__("Fringe signal analysis", parent)
         self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
                                     residual_label="sin fit res. (mV)")
-        self.error_plot.main_plot.setLabel("left", "interp. error (\")")
-        self.error_plot.corrected_plot.setLabel("left", "compensated (\")")
+        self.error_plot.set_axis_label(self.error_plot.main_plot, "left", "interp. error (\")")
+        self.error_plot.set_axis_label(self.error_plot.corrected_plot, "left",
+                                       "compensated (\")")
         for plot in (self.error_plot.main_plot, self.error_plot.corrected_plot,
                      self.error_plot.residual_plot):
             plot.setClipToView(True)
             plot.setDownsampling(auto=True, mode="peak")
         self.plots = FringePlots()
-        self.export_button = QPushButton("Export table (CSV / C header)…")
+        self.export_button = QPushButton()
+        live(self.export_button.setText, tr("Export table (CSV / C header)…"))
         error_tab = QWidget()
         layout = QVBoxLayout(error_tab)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.error_plot, 1)
         layout.addWidget(self.export_button)
-        self.add_plot_tab(error_tab, "Interpolation error")
-        self.add_plot_tab(self.plots.signals, "Signals and fit")
-        self.add_plot_tab(self.plots.lissajous, "Lissajous")
-        self.add_plot_tab(self.plots.spectrum, "Spectrum")
-        self.add_plot_tab(self.plots.drift, "Drift per period")
+        self.add_plot_tab(error_tab, tr("Interpolation error"))
+        self.add_plot_tab(self.plots.signals, tr("Signals and fit"))
+        self.add_plot_tab(self.plots.lissajous, tr("Lissajous"))
+        self.add_plot_tab(self.plots.spectrum, tr("Spectrum"))
+        self.add_plot_tab(self.plots.drift, tr("Drift per period"))
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
@@ -93,10 +111,11 @@ class FringeView(WorkbenchView):
     def show_figures(self, figures: dict) -> None:
         """The declared figures (models/fringe/plots.py)."""
         errors = figures["errors"]
-        self.error_plot.residual_plot.setLabel("bottom", errors.x_label)
-        self.error_plot.main_plot.setLabel("left", errors.y_label)
+        plot = self.error_plot
+        plot.set_axis_label(plot.residual_plot, "bottom", errors.x_label)
+        plot.set_axis_label(plot.main_plot, "left", errors.y_label)
         unit = errors.y_label[errors.y_label.rfind("("):]
-        self.error_plot.corrected_plot.setLabel("left", f"compensated {unit}")
+        plot.set_axis_label(plot.corrected_plot, "left", f"compensated {unit}")
         self.error_plot.show_figure(errors, figures["residuals"])
         p = self.plots
         for curve, series in zip((p.sin_points, p.cos_points, p.sin_fit, p.cos_fit),
@@ -127,6 +146,6 @@ class FringeView(WorkbenchView):
             curve.setData([], [])
 
     def ask_table_path(self) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, "Export correction table", "",
-                                              "CSV (*.csv);;C header (*.h)")
+        path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",
+                                              tr("CSV (*.csv);;C header (*.h)"))
         return path

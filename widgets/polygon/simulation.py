@@ -8,6 +8,7 @@ import numpy as np
 
 from models.polygon.model import pyramidal_readings_arcsec
 from widgets.family_simulation import FamilySimulation
+from widgets.i18n import tr
 from widgets.settings_form import SettingsForm
 
 
@@ -22,11 +23,11 @@ class PolygonSimulation(FamilySimulation):
 
     def __init__(self, parent=None) -> None:
         form = SettingsForm()
-        form.add_float("psi_arcsec", "tilt ψ", 0, 7200, 1, "\"", 30)
-        form.add_float("omega_deg", "direction ω", 0, 360, 1, "°", 15)
-        form.add_choice("sweep", "sweep", [("omega_deg", "direction ω (Fig 3)"),
-                                           ("psi_arcsec", "tilt ψ (Fig 4)")])
+        form.add_float("psi_arcsec", tr("tilt ψ"), 0, 7200, 1, "\"", 30)
+        form.add_float("omega_deg", tr("direction ω"), 0, 360, 1, "°", 15)
+        form.add_choice("sweep", tr("sweep"), [("omega_deg", tr("direction ω (Fig 3)")),
+                                               ("psi_arcsec", tr("tilt ψ (Fig 4)"))])
         form.set_values({"psi_arcsec": 300, "omega_deg": 90})
         super().__init__(form, {"omega_deg": ("ω", "°"), "psi_arcsec": ("ψ", "\"")},
                          "0, 45, 90, 135, 180", _family,
-                         ("θ (deg)", "ε_x induced error (\")", "ε_y vertical (\")"), parent)
+                         (tr("θ (deg)"), tr("ε_x induced error (\")"), tr("ε_y vertical (\")")), parent)

@@ -9,6 +9,7 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
+from widgets.i18n import declared, live, tr
 from widgets.legend_placement import place_legend
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
@@ -20,14 +21,16 @@ class TiltPlot(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.plot = pg.PlotWidget(background="w")
-        self.plot.setLabel("left", "AC vertical − zero (\")")
+        self.plot.setLabel("left", declared("AC vertical − zero (\")"))
         self.plot.setLabel("bottom", "θ (deg)")
         self.plot.showGrid(x=True, y=True, alpha=0.25)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.plot.addLegend(offset=(-10, 10))
-        self.readings = self.plot.plot(name="readings", pen=None, symbol="o", symbolSize=7,
+        self.readings = self.plot.plot(name=declared("readings"), pen=None, symbol="o",
+                                       symbolSize=7,
                                        symbolBrush="#c0392b")
-        self.model = self.plot.plot(name="tilt model ε_y", pen=pg.mkPen("#1f5fbf", width=2))
+        self.model = self.plot.plot(name=declared("tilt model ε_y"),
+                                    pen=pg.mkPen("#1f5fbf", width=2))
         layout = QVBoxLayout(self)
         layout.addWidget(self.plot)
 
@@ -38,8 +41,8 @@ class HarmonicBars(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.plot = pg.PlotWidget(background="w")
-        self.plot.setLabel("left", "amplitude (\")")
-        self.plot.setLabel("bottom", "harmonic order (1 = eccentricity, 2 = ellipticity)")
+        self.plot.setLabel("left", declared("amplitude (\")"))
+        self.plot.setLabel("bottom", tr("harmonic order (1 = eccentricity, 2 = ellipticity)"))
         self.plot.showGrid(y=True, alpha=0.25)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.bars = pg.BarGraphItem(x=[], height=[], width=0.6, brush="#1f5fbf")
@@ -54,17 +57,19 @@ class HarmonicBars(QWidget):
 class PolygonView(WorkbenchView):
     def __init__(self, parent=None) -> None:
         super().__init__("Polygon encoder test", parent)
-        self.error_plot = ErrorPlot(x_label="θ face angle (deg)", residual_label="tilt fit res. (\")")
+        self.error_plot = ErrorPlot(x_label="θ face angle (deg)",
+                                    residual_label="tilt fit res. (\")")
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
         self.simulation = PolygonSimulation()
-        self.certificate_button = QPushButton("Load polygon certificate…")
-        self.certificate_button.setToolTip("Fill the deviation column from a CSV/XLSX with "
-                                           "position,deviation_arcsec")
-        self.add_plot_tab(self.error_plot, "Error over the circle")
-        self.add_plot_tab(self.tilt_plot, "Vertical readings / tilt")
-        self.add_plot_tab(self.harmonics, "Harmonics")
-        self.add_plot_tab(self.simulation, "What-if: set-up errors")
+        self.certificate_button = QPushButton()
+        live(self.certificate_button.setText, tr("Load polygon certificate…"))
+        live(self.certificate_button.setToolTip, tr("Fill the deviation column from a CSV/XLSX "
+                                                    "with position,deviation_arcsec"))
+        self.add_plot_tab(self.error_plot, tr("Error over the circle"))
+        self.add_plot_tab(self.tilt_plot, tr("Vertical readings / tilt"))
+        self.add_plot_tab(self.harmonics, tr("Harmonics"))
+        self.add_plot_tab(self.simulation, tr("What-if: set-up errors"))
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
@@ -76,11 +81,15 @@ class PolygonView(WorkbenchView):
         self.error_plot.show_figure(errors, residuals)
         readings, model = tilt.series if tilt is not None else (None, None)
         if tilt is not None:
-            self.tilt_plot.plot.setLabel("left", tilt.y_label)
-        self.harmonics.plot.setLabel("left", harmonics.y_label)
+            self.tilt_plot.plot.setLabel("left", declared(tilt.y_label))
+        self.harmonics.plot.setLabel("left", declared(harmonics.y_label))
+        item = self.tilt_plot.plot.getPlotItem()
+        for curve, series in ((self.tilt_plot.readings, readings), (self.tilt_plot.model, model)):
+            label = item.legend.getLabel(curve)  # named anew: the language may have changed
+            if label is not None and series is not None:
+                label.setText(declared(series.label))
         self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
         self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
-        item = self.tilt_plot.plot.getPlotItem()
         place_legend(item, item.legend)
         bars = harmonics.series[0]
         self.harmonics.bars.setOpts(x=bars.x, height=bars.y, width=0.6)
@@ -92,8 +101,8 @@ class PolygonView(WorkbenchView):
         self.harmonics.set_spectrum([0], [0])
 
     def ask_certificate_file(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(self, "Polygon calibration certificate", "",
-                                              "Deviations (*.csv *.txt *.xlsx);;All files (*)")
+        path, _ = QFileDialog.getOpenFileName(self, tr("Polygon calibration certificate"), "",
+                                              tr("Deviations (*.csv *.txt *.xlsx);;All files (*)"))
         return path
 
     def tell(self, title: str, text: str) -> None:

@@ -16,6 +16,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.figure_plot import FigurePlot
+from widgets.i18n import declared, live, tr
 from widgets.workbench_view import WorkbenchView
 
 
@@ -25,20 +26,21 @@ class PositioningView(WorkbenchView):
         self.deviation_plot = FigurePlot()
         self.reversal_plot = FigurePlot()
         self.readings_plot = FigurePlot()
-        self.compensation_button = QPushButton("Export compensation table…")
-        self.compensation_button.setToolTip(
+        self.compensation_button = QPushButton()
+        live(self.compensation_button.setText, tr("Export compensation table…"))
+        live(self.compensation_button.setToolTip, tr(
             "Compensation = −mean deviation, at the targets or a uniform step, as set above: "
-            "CSV, or LinuxCNC's COMP_FILE (type 0)")
+            "CSV, or LinuxCNC's COMP_FILE (type 0)"))
         self.compensation_button.setEnabled(False)
-        self.add_plot_tab(self.deviation_plot, "Deviation per target")
-        self.add_plot_tab(self.reversal_plot, "Reversal per target")
-        self.add_plot_tab(self.readings_plot, "Runs")
+        self.add_plot_tab(self.deviation_plot, tr("Deviation per target"))
+        self.add_plot_tab(self.reversal_plot, tr("Reversal per target"))
+        self.add_plot_tab(self.readings_plot, tr("Runs"))
         self.per_target = QTableWidget()
         self.per_target.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.per_target.verticalHeader().hide()
         self.per_target.horizontalHeader().setSectionResizeMode(
             QHeaderView.ResizeMode.ResizeToContents)
-        self.add_plot_tab(self.per_target, "Per target")
+        self.add_plot_tab(self.per_target, tr("Per target"))
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
@@ -55,7 +57,7 @@ class PositioningView(WorkbenchView):
     def show_per_target(self, header, rows) -> None:
         self.per_target.clear()
         self.per_target.setColumnCount(len(header))
-        self.per_target.setHorizontalHeaderLabels(list(header))
+        self.per_target.setHorizontalHeaderLabels([declared(h) for h in header])
         self.per_target.setRowCount(len(rows))
         for r, row in enumerate(rows):
             for c, text in enumerate(row):
@@ -70,9 +72,9 @@ class PositioningView(WorkbenchView):
         self.compensation_button.setEnabled(False)
 
     def ask_compensation_path(self, suggested: str, linuxcnc: bool) -> str:
-        filters = ("LinuxCNC compensation file (*.txt *.comp);;All files (*)" if linuxcnc
-                   else "CSV (*.csv);;All files (*)")
-        path, _ = QFileDialog.getSaveFileName(self, "Export compensation table", suggested,
+        filters = (tr("LinuxCNC compensation file (*.txt *.comp);;All files (*)") if linuxcnc
+                   else tr("CSV (*.csv);;All files (*)"))
+        path, _ = QFileDialog.getSaveFileName(self, tr("Export compensation table"), suggested,
                                               filters)
         return path
 

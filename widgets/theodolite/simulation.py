@@ -7,6 +7,7 @@ import numpy as np
 
 from models.theodolite.model import forward_readings, induced_error_arcsec
 from widgets.family_simulation import FamilySimulation
+from widgets.i18n import tr
 from widgets.settings_form import SettingsForm
 
 
@@ -21,13 +22,14 @@ class TheodoliteSimulation(FamilySimulation):
 
     def __init__(self, parent=None) -> None:
         form = SettingsForm()
-        form.add_float("psi_deg", "axis tilt ψ", -10, 10, 4, "°", 0.5)
-        form.add_float("alpha_deg", "tilt direction α", 0, 360, 3, "°", 15)
-        form.add_float("beta_deg", "mirror normal β", -10, 10, 4, "°", 0.5)
-        form.add_float("half_range_deg", "θ range ±", 1, 180, 1, "°", 5)
-        form.add_choice("sweep", "sweep", [("beta_deg", "β (Figs 3, 4)"), ("alpha_deg", "α (Fig 5)"),
-                                           ("psi_deg", "ψ (Fig 6)")])
+        form.add_float("psi_deg", tr("axis tilt ψ"), -10, 10, 4, "°", 0.5)
+        form.add_float("alpha_deg", tr("tilt direction α"), 0, 360, 3, "°", 15)
+        form.add_float("beta_deg", tr("mirror normal β"), -10, 10, 4, "°", 0.5)
+        form.add_float("half_range_deg", tr("θ range ±"), 1, 180, 1, "°", 5)
+        form.add_choice("sweep", tr("sweep"), [("beta_deg", tr("β (Figs 3, 4)")),
+                                               ("alpha_deg", tr("α (Fig 5)")),
+                                               ("psi_deg", tr("ψ (Fig 6)"))])
         form.set_values({"psi_deg": 3, "alpha_deg": 45, "beta_deg": 2, "half_range_deg": 20})
         super().__init__(form, {"beta_deg": ("β", "°"), "alpha_deg": ("α", "°"),
                                 "psi_deg": ("ψ", "°")},
-                         "-2, -1, 0, 1, 2", _family, ("θ (deg)", "ζ (\")", "E (deg)"), parent)
+                         "-2, -1, 0, 1, 2", _family, (tr("θ (deg)"), tr("ζ (\")"), tr("E (deg)")), parent)

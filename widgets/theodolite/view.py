@@ -4,6 +4,7 @@ simulation panel. Widgets only; the presenter calls ``show_curves`` and ``clear_
 from __future__ import annotations
 
 from widgets.error_plot import ErrorPlot
+from widgets.i18n import tr
 from widgets.theodolite.simulation import TheodoliteSimulation
 from widgets.workbench_view import WorkbenchView
 
@@ -13,8 +14,8 @@ class TheodoliteView(WorkbenchView):
         super().__init__("Theodolite run", parent)
         self.error_plot = ErrorPlot(residual_label="E residual (\")")
         self.simulation = TheodoliteSimulation()
-        self.add_plot_tab(self.error_plot, "Error curves")
-        self.add_plot_tab(self.simulation, "What-if: set-up errors")
+        self.add_plot_tab(self.error_plot, tr("Error curves"))
+        self.add_plot_tab(self.simulation, tr("What-if: set-up errors"))
 
     def show_figures(self, errors, residuals) -> None:
         """The declared figures (models/theodolite/plots.py)."""

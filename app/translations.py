@@ -1,0 +1,113 @@
+"""``python -m app.translations`` (``make translations``): the translation sources
+brought up to date with Qt's own tools.
+
+1. The window is built offscreen on the bundled samples, every plot tab shown, in each
+   angle unit, and every text it asks ``widgets.i18n.declared`` for (the models' setting
+   labels, column titles, plot titles and legends; the models have no Qt) is written to
+   ``resources/translations/declared_strings.py`` as ``QT_TR_NOOP`` lines. A title with a
+   unit is written without it (``error (")`` → ``error``): the unit is never translated.
+2. ``pyside6-lupdate`` reads that file with ``app/`` and ``widgets/`` (their ``tr("…")``
+   calls) into ``anglebench_zh_CN.ts``, keeping every translation already made and
+   dropping texts no longer used.
+3. ``pyside6-lrelease`` compiles it to ``anglebench_zh_CN.qm``, which the window loads.
+
+The ``.ts`` is the source a translator edits (Qt Linguist, or any text editor); the
+``.qm`` is committed beside it so the program runs without Qt's tools.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+TRANSLATIONS = ROOT / "resources" / "translations"
+DECLARED_FILE = TRANSLATIONS / "declared_strings.py"
+TS_FILE = TRANSLATIONS / "anglebench_zh_CN.ts"
+QM_FILE = TRANSLATIONS / "anglebench_zh_CN.qm"
+# a unit in a title's last parentheses: kept as it is, the words before it translated
+UNIT = re.compile(r"^(.*?)\s*\((\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|periods|"
+                  r"V, log10|V, log)\)$")
+
+
+def _tool(name: str) -> str:
+    here = Path(sys.executable).parent / name
+    return str(here) if here.exists() else name
+
+
+def declared_texts() -> list[str]:
+    """Every text the window asks to be translated as a declared one, units left off."""
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QApplication
+
+    from app.main_window import MainWindow
+    from models.display_units import ANGLE_UNITS
+    from models.project.recovery import RecoveryStore
+    from widgets.i18n import SEEN_DECLARED
+
+    app = QApplication.instance() or QApplication(["translations"])
+    with tempfile.TemporaryDirectory() as scratch:
+        os.environ["ANGLEBENCH_REGISTER"] = str(Path(scratch) / "register.sqlite")
+        settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+        window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "r"))
+        window.load_all_samples()
+        window.show()
+        for unit in ANGLE_UNITS.values():
+            window.set_angle_unit(unit)
+            for index, presenter in enumerate(window.presenters):
+                window.tabs.setCurrentIndex(index)
+                presenter.refresh()
+                for tab in range(presenter.view.plot_tabs.count()):
+                    presenter.view.plot_tabs.setCurrentIndex(tab)
+                    app.processEvents()
+        window.show_register()
+        app.processEvents()
+        window.recovery.discard()
+        window.close()
+    texts = set()
+    for text in SEEN_DECLARED:
+        found = UNIT.match(text)
+        texts.add(found.group(1) if found else text)
+    return sorted(t for t in texts if re.search(r"[A-Za-z]{2}", t))
+
+
+def write_declared(texts: list[str]) -> None:
+    from models.project.atomic_write import write_bytes_atomic
+
+    lines = ["# ruff: noqa: E501 - one text a line, as lupdate reads it",
+             '"""Texts the models declare, for lupdate (written by python -m app.translations;',
+             'do not edit: run it again). Never imported: no Qt here, as in every resource."""',
+             "", "", "def QT_TR_NOOP(text: str) -> str:  # noqa: N802 - the name lupdate reads",
+             "    return text", "", "", "DECLARED = ("]
+    lines += [f"    QT_TR_NOOP({text!r})," for text in texts]
+    lines += [")", ""]
+    write_bytes_atomic(DECLARED_FILE, "\n".join(lines).encode("utf-8"))
+
+
+def update_ts() -> None:
+    sources = sorted(str(p) for folder in ("app", "widgets") for p in (ROOT / folder).rglob("*.py"))
+    subprocess.run([_tool("pyside6-lupdate"), *sources, str(DECLARED_FILE), "-locations",
+                    "none", "-no-obsolete", "-source-language", "en", "-target-language",
+                    "zh_CN", "-ts", str(TS_FILE)], check=True, stdout=subprocess.DEVNULL)
+
+
+def release_qm() -> None:
+    subprocess.run([_tool("pyside6-lrelease"), str(TS_FILE), "-qm", str(QM_FILE)], check=True,
+                   stdout=subprocess.DEVNULL)
+
+
+def main() -> int:
+    write_declared(declared_texts())
+    update_ts()
+    release_qm()
+    print(f"{TS_FILE.relative_to(ROOT)} and {QM_FILE.name} brought up to date")  # noqa: T201
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

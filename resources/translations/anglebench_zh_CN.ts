@@ -1,0 +1,1825 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN" sourcelanguage="en">
+<context>
+    <name></name>
+    <message>
+        <source>A [deg]</source>
+        <translation>A [°]</translation>
+    </message>
+    <message>
+        <source>A1 (sin)</source>
+        <translation>A1 (sin)</translation>
+    </message>
+    <message>
+        <source>AC reticle roll ≤</source>
+        <translation>自准直仪分划板滚转 ≤</translation>
+    </message>
+    <message>
+        <source>AC vertical − zero</source>
+        <translation>自准直仪垂直读数 − 零位</translation>
+    </message>
+    <message>
+        <source>AC x [&quot;]</source>
+        <translation>自准直仪 x [&quot;]</translation>
+    </message>
+    <message>
+        <source>AC y [&quot;]</source>
+        <translation>自准直仪 y [&quot;]</translation>
+    </message>
+    <message>
+        <source>A_down</source>
+        <translation>A↓</translation>
+    </message>
+    <message>
+        <source>A_up</source>
+        <translation>A↑</translation>
+    </message>
+    <message>
+        <source>Admissible axis tilt: the inversion&apos;s other root (ψ near 90°) is rejected</source>
+        <translation>允许的轴系倾斜：反解的另一个根（ψ 接近 90°）被舍弃</translation>
+    </message>
+    <message>
+        <source>Admissible elevation of the mirror normal</source>
+        <translation>反射镜法线允许的俯仰角</translation>
+    </message>
+    <message>
+        <source>B1 (cos)</source>
+        <translation>B1 (cos)</translation>
+    </message>
+    <message>
+        <source>CSV (position, compensation)</source>
+        <translation>CSV（位置，补偿值）</translation>
+    </message>
+    <message>
+        <source>CSV always works; LinuxCNC&apos;s joint compensation file (COMP_FILE_TYPE = 0, documented in the LinuxCNC INI configuration manual) lists nominal, actual forward and actual reverse positions</source>
+        <translation>CSV 总是可用；LinuxCNC 关节补偿文件（COMP_FILE_TYPE = 0，见 LinuxCNC INI 配置手册）列出名义位置、正向实际位置和反向实际位置</translation>
+    </message>
+    <message>
+        <source>Closure limit per grade, comma-separated; default half the grade&apos;s accuracy</source>
+        <translation>各等级的闭合差限值，以逗号分隔；默认为该等级准确度的一半</translation>
+    </message>
+    <message>
+        <source>E / V [deg]</source>
+        <translation>E / V [°]</translation>
+    </message>
+    <message>
+        <source>E residual</source>
+        <translation>E 残差</translation>
+    </message>
+    <message>
+        <source>Encoder: grating lines per revolution; errors in arcsec of shaft angle (one period = 1296000&quot;/L)</source>
+        <translation>编码器：每转光栅线数；误差以轴角的角秒表示（一个周期 = 1296000&quot;/L）</translation>
+    </message>
+    <message>
+        <source>Entries of the correction table over the measured phase</source>
+        <translation>修正表在所测相位上的条目数</translation>
+    </message>
+    <message>
+        <source>Equal steps, N samples a period. 0: the phase from the θ column or, without one, estimated from the signals (Heydemann); a record that does not follow N is refused</source>
+        <translation>等间隔，每周期 N 个采样。0：相位取自 θ 列，若无该列则由信号估计（Heydemann）；不符合 N 的记录被拒绝</translation>
+    </message>
+    <message>
+        <source>Every set&apos;s errors are taken from this one reading of set 1, so reversal and repeatability between sets are kept</source>
+        <translation>各组的误差都以第 1 组的这一读数为零位，从而保留组间的反向差和重复性</translation>
+    </message>
+    <message>
+        <source>Exact linear least squares, or the seed&apos;s particle swarm (first period only, for comparison)</source>
+        <translation>精确线性最小二乘，或论文中的粒子群算法（仅第一个周期，用于比较）</translation>
+    </message>
+    <message>
+        <source>Faces of the polygon; 0: as many as the first set has positions</source>
+        <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
+    </message>
+    <message>
+        <source>Fringe signal analysis</source>
+        <translation>莫尔条纹信号分析</translation>
+    </message>
+    <message>
+        <source>GB/T 17421.2-2016 (identical to ISO 230-2:2014)</source>
+        <translation>GB/T 17421.2-2016（等同 ISO 230-2:2014）</translation>
+    </message>
+    <message>
+        <source>ISO 230-2:2014</source>
+        <translation>ISO 230-2:2014</translation>
+    </message>
+    <message>
+        <source>Interferometer: displacement per fringe (316.4 nm for λ/2 of a HeNe laser); errors then in nm. 0: an encoder</source>
+        <translation>干涉仪：每个条纹的位移（HeNe 激光 λ/2 为 316.4 nm）；误差以 nm 表示。0：编码器</translation>
+    </message>
+    <message>
+        <source>Largest roll of the autocollimator&apos;s reticle: it turns part of the vertical reading into the horizontal one (budget input)</source>
+        <translation>自准直仪分划板的最大滚转：它使部分垂直读数进入水平读数（不确定度分量）</translation>
+    </message>
+    <message>
+        <source>LinuxCNC COMP_FILE type 0</source>
+        <translation>LinuxCNC COMP_FILE 类型 0</translation>
+    </message>
+    <message>
+        <source>Mean positional deviation with ±2s</source>
+        <translation>平均位置偏差及 ±2s</translation>
+    </message>
+    <message>
+        <source>Odd harmonics only (the seed&apos;s model), or every order up to the highest</source>
+        <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
+    </message>
+    <message>
+        <source>Polygon encoder test</source>
+        <translation>多面棱体编码器检测</translation>
+    </message>
+    <message>
+        <source>Positioning (axis)</source>
+        <translation>定位（轴线）</translation>
+    </message>
+    <message>
+        <source>R_down</source>
+        <translation>R↓</translation>
+    </message>
+    <message>
+        <source>R_up</source>
+        <translation>R↑</translation>
+    </message>
+    <message>
+        <source>Readings, run by run</source>
+        <translation>逐次测量的读数</translation>
+    </message>
+    <message>
+        <source>Residuals far above it (3×) raise a warning; 0: no check</source>
+        <translation>残差远大于此值（3 倍）时给出警告；0：不检查</translation>
+    </message>
+    <message>
+        <source>Reversal value B_i = x̄↑ − x̄↓</source>
+        <translation>反向差值 B_i = x̄↑ − x̄↓</translation>
+    </message>
+    <message>
+        <source>Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0</source>
+        <translation>经纬仪对反射镜置零的行；0：θ 最接近 0 的行</translation>
+    </message>
+    <message>
+        <source>Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)</source>
+        <translation>两个趋近方向各一张表，或由两者平均值得到一张表（补偿值 = −平均偏差）</translation>
+    </message>
+    <message>
+        <source>Spacing of the compensation table in the target unit; 0: one entry at each target</source>
+        <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
+    </message>
+    <message>
+        <source>Table 1 of the seed: the accuracy judged, and the tilt it allows</source>
+        <translation>论文表 1：所判定的准确度及其允许的倾斜</translation>
+    </message>
+    <message>
+        <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
+        <translation>一组测量回到第一面时显示的漂移：报告并计入不确定度，或在该组内线性分配并扣除（在证书上说明）</translation>
+    </message>
+    <message>
+        <source>The elevations identify the set-up without touching the axis&apos; own error; the azimuth route absorbs any part of it that looks like the model</source>
+        <translation>俯仰角可在不影响轴系自身误差的情况下辨识安装误差；方位角途径会吸收轴系误差中与模型相似的部分</translation>
+    </message>
+    <message>
+        <source>The highest harmonic fitted to each channel</source>
+        <translation>每个通道拟合的最高次谐波</translation>
+    </message>
+    <message>
+        <source>The phase origin is arbitrary: the table is stated with its mean removed, or with its first entry zero (said in the exported file)</source>
+        <translation>相位原点是任意的：修正表去除其平均值，或使第一个条目为零（在导出文件中说明）</translation>
+    </message>
+    <message>
+        <source>The standard the certificate states and judges by; the JSON always has ISO 230-2 and VDI/DGQ 3441 both</source>
+        <translation>证书所依据并据以判定的标准；JSON 中总是同时给出 ISO 230-2 和 VDI/DGQ 3441</translation>
+    </message>
+    <message>
+        <source>Theodolite run</source>
+        <translation>经纬仪测量</translation>
+    </message>
+    <message>
+        <source>Unit of the deviations and of every figure; arcsec or µrad for a rotary axis, µm or nm for a linear one</source>
+        <translation>偏差及各项结果的单位；回转轴用角秒或 µrad，直线轴用 µm 或 nm</translation>
+    </message>
+    <message>
+        <source>Unit of the target (and measured) positions</source>
+        <translation>目标（及实测）位置的单位</translation>
+    </message>
+    <message>
+        <source>VDI/DGQ 3441:1977</source>
+        <translation>VDI/DGQ 3441:1977</translation>
+    </message>
+    <message>
+        <source>What the theodolite&apos;s vertical circle reads</source>
+        <translation>经纬仪竖盘的读数类型</translation>
+    </message>
+    <message>
+        <source>Whether the encoder counts up or down as the face numbers rise; auto finds it from the readings and says so</source>
+        <translation>面号增加时编码器是增计数还是减计数；自动模式由读数判断并给出说明</translation>
+    </message>
+    <message>
+        <source>after compensation</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>against the face numbers</source>
+        <translation>与面号相反</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <source>amplitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <source>arcseconds</source>
+        <translation>角秒</translation>
+    </message>
+    <message>
+        <source>as-found peak-to-peak</source>
+        <translation>补偿前峰峰值</translation>
+    </message>
+    <message>
+        <source>at the targets</source>
+        <translation>在目标位置</translation>
+    </message>
+    <message>
+        <source>auto (from the readings)</source>
+        <translation>自动（由读数判断）</translation>
+    </message>
+    <message>
+        <source>auto (θ nearest 0)</source>
+        <translation>自动（θ 最接近 0）</translation>
+    </message>
+    <message>
+        <source>azimuth errors (absorbs axis error!)</source>
+        <translation>方位角误差（会吸收轴系误差！）</translation>
+    </message>
+    <message>
+        <source>before compensation</source>
+        <translation>补偿前</translation>
+    </message>
+    <message>
+        <source>bidirectional mean M_i</source>
+        <translation>双向平均 M_i</translation>
+    </message>
+    <message>
+        <source>bound |β| ≤</source>
+        <translation>界限 |β| ≤</translation>
+    </message>
+    <message>
+        <source>bound |ψ| ≤</source>
+        <translation>界限 |ψ| ≤</translation>
+    </message>
+    <message>
+        <source>closure drift</source>
+        <translation>闭合漂移</translation>
+    </message>
+    <message>
+        <source>closure limits grades 1–7</source>
+        <translation>1–7 级闭合差限值</translation>
+    </message>
+    <message>
+        <source>common zero at face</source>
+        <translation>公共零位所在面</translation>
+    </message>
+    <message>
+        <source>compensated</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>compensated (unit circle × A1)</source>
+        <translation>补偿后（单位圆 × A1）</translation>
+    </message>
+    <message>
+        <source>compensated peak-to-peak</source>
+        <translation>补偿后峰峰值</translation>
+    </message>
+    <message>
+        <source>compensation format</source>
+        <translation>补偿文件格式</translation>
+    </message>
+    <message>
+        <source>compensation step</source>
+        <translation>补偿间隔</translation>
+    </message>
+    <message>
+        <source>compensation tables</source>
+        <translation>补偿表</translation>
+    </message>
+    <message>
+        <source>corrected</source>
+        <translation>修正后</translation>
+    </message>
+    <message>
+        <source>corrected = raw + ζ</source>
+        <translation>修正后 = 原始 + ζ</translation>
+    </message>
+    <message>
+        <source>corrected e − (ε_x − ε_x,zero)</source>
+        <translation>修正后 e − (ε_x − ε_x,zero)</translation>
+    </message>
+    <message>
+        <source>corrected peak-to-peak</source>
+        <translation>修正后峰峰值</translation>
+    </message>
+    <message>
+        <source>correction table size</source>
+        <translation>修正表大小</translation>
+    </message>
+    <message>
+        <source>correction −(ε_x − ε_x,zero)</source>
+        <translation>修正值 −(ε_x − ε_x,zero)</translation>
+    </message>
+    <message>
+        <source>degrees (rotary axis)</source>
+        <translation>度（回转轴）</translation>
+    </message>
+    <message>
+        <source>deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>deviation unit</source>
+        <translation>偏差单位</translation>
+    </message>
+    <message>
+        <source>dir [+/−]</source>
+        <translation>方向 [+/−]</translation>
+    </message>
+    <message>
+        <source>electrical phase θ</source>
+        <translation>电相位 θ</translation>
+    </message>
+    <message>
+        <source>elevation E</source>
+        <translation>俯仰角 E</translation>
+    </message>
+    <message>
+        <source>elevations (recommended)</source>
+        <translation>俯仰角（推荐）</translation>
+    </message>
+    <message>
+        <source>encoder (use L)</source>
+        <translation>编码器（使用 L）</translation>
+    </message>
+    <message>
+        <source>encoder a [deg]</source>
+        <translation>编码器读数 a [°]</translation>
+    </message>
+    <message>
+        <source>encoder counts</source>
+        <translation>编码器计数方向</translation>
+    </message>
+    <message>
+        <source>encoder grade</source>
+        <translation>编码器等级</translation>
+    </message>
+    <message>
+        <source>envelope of A</source>
+        <translation>A 的包络</translation>
+    </message>
+    <message>
+        <source>faces n</source>
+        <translation>面数 n</translation>
+    </message>
+    <message>
+        <source>first reading of set 1</source>
+        <translation>第 1 组的第一个读数</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>fitted ellipse (Heydemann)</source>
+        <translation>拟合椭圆（Heydemann）</translation>
+    </message>
+    <message>
+        <source>forward and backward</source>
+        <translation>正向和反向</translation>
+    </message>
+    <message>
+        <source>from the readings</source>
+        <translation>由读数确定</translation>
+    </message>
+    <message>
+        <source>grade 1: ±0.25&quot;, tilt ≤ 119&quot;</source>
+        <translation>1 级：±0.25&quot;，倾斜 ≤ 119&quot;</translation>
+    </message>
+    <message>
+        <source>grade 2: ±0.5&quot;, tilt ≤ 169&quot;</source>
+        <translation>2 级：±0.5&quot;，倾斜 ≤ 169&quot;</translation>
+    </message>
+    <message>
+        <source>grade 3: ±1&quot;, tilt ≤ 239&quot;</source>
+        <translation>3 级：±1&quot;，倾斜 ≤ 239&quot;</translation>
+    </message>
+    <message>
+        <source>grade 4: ±2&quot;, tilt ≤ 338&quot;</source>
+        <translation>4 级：±2&quot;，倾斜 ≤ 338&quot;</translation>
+    </message>
+    <message>
+        <source>grade 5: ±5&quot;, tilt ≤ 534&quot;</source>
+        <translation>5 级：±5&quot;，倾斜 ≤ 534&quot;</translation>
+    </message>
+    <message>
+        <source>grade 6: ±10&quot;, tilt ≤ 755&quot;</source>
+        <translation>6 级：±10&quot;，倾斜 ≤ 755&quot;</translation>
+    </message>
+    <message>
+        <source>grade 7: ±30&quot;, tilt ≤ 1307&quot;</source>
+        <translation>7 级：±30&quot;，倾斜 ≤ 1307&quot;</translation>
+    </message>
+    <message>
+        <source>harmonic order</source>
+        <translation>谐波次数</translation>
+    </message>
+    <message>
+        <source>harmonics</source>
+        <translation>谐波</translation>
+    </message>
+    <message>
+        <source>highest harmonic</source>
+        <translation>最高次谐波</translation>
+    </message>
+    <message>
+        <source>identification</source>
+        <translation>辨识方法</translation>
+    </message>
+    <message>
+        <source>identify from</source>
+        <translation>辨识依据</translation>
+    </message>
+    <message>
+        <source>interferometer period</source>
+        <translation>干涉仪周期</translation>
+    </message>
+    <message>
+        <source>interp. error</source>
+        <translation>细分误差</translation>
+    </message>
+    <message>
+        <source>its mean is zero</source>
+        <translation>平均值为零</translation>
+    </message>
+    <message>
+        <source>least squares (exact)</source>
+        <translation>最小二乘（精确）</translation>
+    </message>
+    <message>
+        <source>lines per revolution L</source>
+        <translation>每转线数 L</translation>
+    </message>
+    <message>
+        <source>mean reversal B̄</source>
+        <translation>平均反向差 B̄</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>micrometres</source>
+        <translation>微米</translation>
+    </message>
+    <message>
+        <source>microradians</source>
+        <translation>微弧度</translation>
+    </message>
+    <message>
+        <source>millidegrees</source>
+        <translation>毫度</translation>
+    </message>
+    <message>
+        <source>millimetres (linear axis)</source>
+        <translation>毫米（直线轴）</translation>
+    </message>
+    <message>
+        <source>nanometres</source>
+        <translation>纳米</translation>
+    </message>
+    <message>
+        <source>odd (1, 3, 5 …)</source>
+        <translation>奇次（1, 3, 5 …）</translation>
+    </message>
+    <message>
+        <source>one, from the bidirectional mean</source>
+        <translation>一张，由双向平均得到</translation>
+    </message>
+    <message>
+        <source>particle swarm (seed)</source>
+        <translation>粒子群（论文）</translation>
+    </message>
+    <message>
+        <source>period</source>
+        <translation>周期</translation>
+    </message>
+    <message>
+        <source>phase from θ or the signals</source>
+        <translation>相位取自 θ 或信号</translation>
+    </message>
+    <message>
+        <source>polygon dev [&quot;]</source>
+        <translation>棱体偏差 [&quot;]</translation>
+    </message>
+    <message>
+        <source>pos</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>pyramidal tilt ψ</source>
+        <translation>棱锥倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>raw error</source>
+        <translation>原始误差</translation>
+    </message>
+    <message>
+        <source>raw error e (mean)</source>
+        <translation>原始误差 e（平均）</translation>
+    </message>
+    <message>
+        <source>raw error θ − A</source>
+        <translation>原始误差 θ − A</translation>
+    </message>
+    <message>
+        <source>raw peak-to-peak</source>
+        <translation>原始峰峰值</translation>
+    </message>
+    <message>
+        <source>readings</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>reference row</source>
+        <translation>参考行</translation>
+    </message>
+    <message>
+        <source>report it (uncertainty)</source>
+        <translation>报告（计入不确定度）</translation>
+    </message>
+    <message>
+        <source>reversal</source>
+        <translation>反向差</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>测次</translation>
+    </message>
+    <message>
+        <source>runs ↑ (one line each)</source>
+        <translation>正向各测次（每次一条线）</translation>
+    </message>
+    <message>
+        <source>runs ↓ (one line each)</source>
+        <translation>反向各测次（每次一条线）</translation>
+    </message>
+    <message>
+        <source>samples per period N</source>
+        <translation>每周期采样数 N</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>set-up share −ζ(θ)</source>
+        <translation>安装误差分量 −ζ(θ)</translation>
+    </message>
+    <message>
+        <source>signal</source>
+        <translation>信号</translation>
+    </message>
+    <message>
+        <source>sin fit res.</source>
+        <translation>sin 拟合残差</translation>
+    </message>
+    <message>
+        <source>spread linearly, remove</source>
+        <translation>线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>standard applied</source>
+        <translation>采用的标准</translation>
+    </message>
+    <message>
+        <source>table zero</source>
+        <translation>修正表零点</translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>target position</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>target unit</source>
+        <translation>目标位置单位</translation>
+    </message>
+    <message>
+        <source>theodolite accuracy (1σ)</source>
+        <translation>经纬仪准确度（1σ）</translation>
+    </message>
+    <message>
+        <source>tilt fit res.</source>
+        <translation>倾斜拟合残差</translation>
+    </message>
+    <message>
+        <source>tilt model ε_y</source>
+        <translation>倾斜模型 ε_y</translation>
+    </message>
+    <message>
+        <source>u cos</source>
+        <translation>u cos</translation>
+    </message>
+    <message>
+        <source>u cos [V]</source>
+        <translation>u cos [V]</translation>
+    </message>
+    <message>
+        <source>u sin</source>
+        <translation>u sin</translation>
+    </message>
+    <message>
+        <source>u sin [V]</source>
+        <translation>u sin [V]</translation>
+    </message>
+    <message>
+        <source>vertical reading</source>
+        <translation>竖直读数</translation>
+    </message>
+    <message>
+        <source>with the face numbers</source>
+        <translation>与面号一致</translation>
+    </message>
+    <message>
+        <source>zenith angle V (E = V − 90°)</source>
+        <translation>天顶距 V（E = V − 90°）</translation>
+    </message>
+    <message>
+        <source>zero at phase 0</source>
+        <translation>相位 0 处为零</translation>
+    </message>
+    <message>
+        <source>θ [deg]</source>
+        <translation>θ [°]</translation>
+    </message>
+    <message>
+        <source>θ face angle</source>
+        <translation>θ 面角</translation>
+    </message>
+    <message>
+        <source>θ phase [deg]</source>
+        <translation>θ 相位 [°]</translation>
+    </message>
+    <message>
+        <source>Export certificate</source>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered</extracomment>
+        <translation>导出证书</translation>
+    </message>
+    <message>
+        <source>Draft written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
+        <translation>草稿已写入 {path} — 草稿：缺少 {missing}；未在证书登记册中记录</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>{path}: {reason}. Nothing else was changed.</source>
+        <translation>{path}：{reason}。其他内容均未改变。</translation>
+    </message>
+    <message>
+        <source>Not issued</source>
+        <translation>未签发</translation>
+    </message>
+    <message>
+        <source>{reason}. No certificate was written or recorded.</source>
+        <translation>{reason}。未写入也未记录任何证书。</translation>
+    </message>
+    <message>
+        <source>Issued, but the file was not written</source>
+        <translation>已签发，但文件未写入</translation>
+    </message>
+    <message>
+        <source>Certificate {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
+        <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
+    </message>
+    <message>
+        <source>Certificate {number} issued: written to {path} and recorded in the register</source>
+        <translation>证书 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
+    </message>
+    <message>
+        <source>Export results</source>
+        <translation>导出结果</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;Excel workbook (*.xlsx)</source>
+        <translation>CSV (*.csv);;Excel 工作簿 (*.xlsx)</translation>
+    </message>
+    <message>
+        <source>Results written to {path}</source>
+        <translation>结果已写入 {path}</translation>
+    </message>
+    <message>
+        <source>Autosave is off: {reason}</source>
+        <translation>自动保存已关闭：{reason}</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Import CSV/XLSX…</source>
+        <translation>导入 CSV/XLSX(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Replace the current workbench&apos;s readings with a file&apos;s</source>
+        <translation>用文件中的读数替换当前工作台的读数</translation>
+    </message>
+    <message>
+        <source>Load bundled &amp;sample</source>
+        <translation>载入自带示例(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Export certificate…</source>
+        <translation>导出证书(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Write the current workbench&apos;s test certificate (PDF)</source>
+        <translation>写出当前工作台的检测证书（PDF）</translation>
+    </message>
+    <message>
+        <source>Export &amp;results (CSV/XLSX)…</source>
+        <translation>导出结果(&amp;R)（CSV/XLSX）…</translation>
+    </message>
+    <message>
+        <source>Write every point&apos;s raw, correction, corrected error and U</source>
+        <translation>写出每个点的原始误差、修正值、修正后误差和 U</translation>
+    </message>
+    <message>
+        <source>Certificate re&amp;gister…</source>
+        <translation>证书登记册(&amp;G)…</translation>
+    </message>
+    <message>
+        <source>Every issued certificate: search, verify a PDF, amend, an instrument&apos;s history</source>
+        <translation>所有已签发的证书：检索、验证 PDF、修订、仪器历史</translation>
+    </message>
+    <message>
+        <source>Send to &amp;positioning</source>
+        <translation>发送到定位工作台(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its readings are replaced; Edit &gt; Undo there restores them)</source>
+        <translation>在定位工作台按 ISO 230-2 / VDI 3441 评定本次测量（其读数将被替换；在该工作台 编辑 &gt; 撤销 可恢复）</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>打印(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Print the current workbench&apos;s result and plot (the certificate is the PDF)</source>
+        <translation>打印当前工作台的结果和图（证书为 PDF）</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>粘贴(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Insert row</source>
+        <translation>插入行(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete rows</source>
+        <translation>删除行(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Next workbench</source>
+        <translation>下一个工作台(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous workbench</source>
+        <translation>上一个工作台(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Next &amp;pane (table, set-up, result, plots)</source>
+        <translation>下一个窗格(&amp;P)（表格、设置、结果、图）</translation>
+    </message>
+    <message>
+        <source>Angle &amp;unit of results</source>
+        <translation>结果的角度单位(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Plots, figures, texts and exported results in this unit (certificates keep the unit of the evaluation)</source>
+        <translation>图、数值、文本和导出结果使用此单位（证书保持评定时的单位）</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Manual (this workbench)</source>
+        <translation>手册（本工作台）(&amp;M)</translation>
+    </message>
+    <message>
+        <source>What to measure, how to set up, every setting and plot</source>
+        <translation>测量什么、如何安装、每项设置和每个图</translation>
+    </message>
+    <message>
+        <source>&amp;Quick guide</source>
+        <translation>快速指南(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;About AngleBench</source>
+        <translation>关于 AngleBench(&amp;A)</translation>
+    </message>
+    <message>
+        <source>AngleBench — quick guide</source>
+        <translation>AngleBench — 快速指南</translation>
+    </message>
+    <message>
+        <source>Type or paste the readings on the left (Return goes to the next row&apos;s first reading; a nominal step fills θ, face or target). The result, its warnings and the plots follow every edit.
+
+Keys: Ctrl+PgDn / Ctrl+PgUp or Ctrl+Tab switch workbenches; F6 moves between table, set-up, result and plots; Ctrl+Z / Ctrl+Shift+Z undo and redo; Ctrl+E exports the certificate; F1 opens the manual; right-click a plot to copy or save its image.
+
+Errors are errors of indication (indicated − reference); the positioning workbench keeps ISO 230-2&apos;s actual − target. Certificates are numbered and recorded by the register (File › Certificate register). Drop a CSV or XLSX on the window to import it.</source>
+        <translation>在左侧输入或粘贴读数（回车转到下一行的第一个读数；名义步距会自动填写 θ、面号或目标位置）。结果、警告和图随每次编辑更新。
+
+按键：Ctrl+PgDn / Ctrl+PgUp 或 Ctrl+Tab 切换工作台；F6 在表格、设置、结果和图之间移动；Ctrl+Z / Ctrl+Shift+Z 撤销和重做；Ctrl+E 导出证书；F1 打开手册；右键单击图可复制或保存图像。
+
+误差为示值误差（示值 − 参考值）；定位工作台沿用 ISO 230-2 的实际位置 − 目标位置。证书由登记册编号并记录（文件 › 证书登记册）。将 CSV 或 XLSX 拖到窗口上即可导入。</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Unsaved readings</source>
+        <translation>未保存的读数</translation>
+    </message>
+    <message>
+        <source>Save the changes to the project first?</source>
+        <translation>先保存对项目的更改吗？</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <source>AngleBench project (*.anglebench.json *.json)</source>
+        <translation>AngleBench 项目 (*.anglebench.json *.json)</translation>
+    </message>
+    <message>
+        <source>Cannot open project</source>
+        <translation>无法打开项目</translation>
+    </message>
+    <message>
+        <source>{reason}. Your current work is as it was.</source>
+        <translation>{reason}。当前工作保持不变。</translation>
+    </message>
+    <message>
+        <source>Opened {path}</source>
+        <translation>已打开 {path}</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>Cannot save</source>
+        <translation>无法保存</translation>
+    </message>
+    <message>
+        <source>{path}: {reason}. Your readings are still here.</source>
+        <translation>{path}：{reason}。您的读数仍在。</translation>
+    </message>
+    <message>
+        <source>Saved {path}</source>
+        <translation>已保存 {path}</translation>
+    </message>
+    <message>
+        <source>Import readings into {workbench}</source>
+        <translation>将读数导入{workbench}</translation>
+    </message>
+    <message>
+        <source>Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)</source>
+        <translation>读数 (*.csv *.txt *.xlsx *.xlsm);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>无法导入</translation>
+    </message>
+    <message>
+        <source>Imported {path} (Edit › Undo restores the old readings)</source>
+        <translation>已导入 {path}（编辑 › 撤销 可恢复原读数）</translation>
+    </message>
+    <message>
+        <source>Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)</source>
+        <translation>已导入 {name}：{rows} 行（编辑 › 撤销 可恢复之前的读数）</translation>
+    </message>
+    <message>
+        <source>Printed</source>
+        <translation>已打印</translation>
+    </message>
+    <message>
+        <source>Cannot open</source>
+        <translation>无法打开</translation>
+    </message>
+    <message>
+        <source>Cannot send</source>
+        <translation>无法发送</translation>
+    </message>
+    <message>
+        <source>{workbench} has nothing to send to the positioning workbench.</source>
+        <translation>{workbench}没有可发送到定位工作台的内容。</translation>
+    </message>
+    <message>
+        <source>no readings have been analysed yet</source>
+        <translation>尚未分析任何读数</translation>
+    </message>
+    <message>
+        <source>Nothing to send</source>
+        <translation>没有可发送的内容</translation>
+    </message>
+    <message>
+        <source>{workbench}: {rows} readings sent (deviation = −corrected error); Edit › Undo restores the positioning readings</source>
+        <translation>{workbench}：已发送 {rows} 个读数（偏差 = −修正后误差）；编辑 › 撤销 可恢复定位工作台的读数</translation>
+    </message>
+    <message>
+        <source>Bundled samples loaded in every workbench</source>
+        <translation>已在每个工作台载入自带示例</translation>
+    </message>
+    <message>
+        <source>Export a draft?</source>
+        <translation>导出草稿？</translation>
+    </message>
+    <message>
+        <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
+        <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>This certificate replaces {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
+        <translation>本证书替代 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
+    </message>
+    <message>
+        <source>This certificate amends {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
+        <translation>本证书修订 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
+    </message>
+    <message>
+        <source>What changed</source>
+        <translation>改变的内容</translation>
+    </message>
+    <message>
+        <source>Nothing to export</source>
+        <translation>没有可导出的内容</translation>
+    </message>
+    <message>
+        <source>Cannot recover</source>
+        <translation>无法恢复</translation>
+    </message>
+    <message>
+        <source>{reason} (the file was kept aside as damaged)</source>
+        <translation>{reason}（该文件已作为损坏文件另存）</translation>
+    </message>
+    <message>
+        <source>an unknown time</source>
+        <translation>未知时间</translation>
+    </message>
+    <message>
+        <source>an untitled project</source>
+        <translation>未命名项目</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <source>AngleBench did not close normally. Restore the unsaved readings of {name}, autosaved {when}?</source>
+        <translation>AngleBench 上次未正常关闭。恢复 {name} 于 {when} 自动保存的未保存读数吗？</translation>
+    </message>
+    <message>
+        <source>The autosave was kept aside: {path}</source>
+        <translation>自动保存文件已另存：{path}</translation>
+    </message>
+    <message>
+        <source>About AngleBench</source>
+        <translation>关于 AngleBench</translation>
+    </message>
+    <message>
+        <source>Angle metrology workbench.</source>
+        <translation>角度计量工作台。</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>修订</translation>
+    </message>
+    <message>
+        <source>Issued</source>
+        <translation>签发日期</translation>
+    </message>
+    <message>
+        <source>Calibrated</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>Workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>Serial</source>
+        <translation>编号（出厂）</translation>
+    </message>
+    <message>
+        <source>Customer</source>
+        <translation>委托方</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>登记册</translation>
+    </message>
+    <message>
+        <source>Select a certificate first.</source>
+        <translation>请先选择一份证书。</translation>
+    </message>
+    <message>
+        <source>{number} was superseded by {newer}: amend or replace that one.</source>
+        <translation>{number} 已被 {newer} 取代：请修订或替代后者。</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues a replacement of {number} and asks what changed.</source>
+        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的替代证书并询问改变的内容。</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues an amendment to {number} and asks what changed.</source>
+        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的修订证书并询问改变的内容。</translation>
+    </message>
+    <message>
+        <source>Cannot print</source>
+        <translation>无法打印</translation>
+    </message>
+    <message>
+        <source>Cannot verify</source>
+        <translation>无法验证</translation>
+    </message>
+    <message>
+        <source>Not in the register</source>
+        <translation>不在登记册中</translation>
+    </message>
+    <message>
+        <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
+        <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
+    </message>
+    <message>
+        <source>Verified</source>
+        <translation>已验证</translation>
+    </message>
+    <message>
+        <source>{path} is certificate {number} as issued on {date} ({status}), byte for byte.</source>
+        <translation>{path} 逐字节与 {date} 签发的证书 {number}（{status}）一致。</translation>
+    </message>
+    <message>
+        <source>Certificate number</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>Date of issue (YYYY-MM-DD)</source>
+        <translation>签发日期（YYYY-MM-DD）</translation>
+    </message>
+    <message>
+        <source>Date of calibration</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>Tolerance ± (&quot;)</source>
+        <translation>允差 ± (&quot;)</translation>
+    </message>
+    <message>
+        <source>Laboratory</source>
+        <translation>实验室</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Accreditation</source>
+        <translation>认可</translation>
+    </message>
+    <message>
+        <source>Number scheme</source>
+        <translation>编号规则</translation>
+    </message>
+    <message>
+        <source>Item under test</source>
+        <translation>被测件</translation>
+    </message>
+    <message>
+        <source>Manufacturer</source>
+        <translation>制造商</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>Grade / specification</source>
+        <translation>等级 / 规格</translation>
+    </message>
+    <message>
+        <source>Resolution (&quot;)</source>
+        <translation>分辨力 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Temperature (°C)</source>
+        <translation>温度 (°C)</translation>
+    </message>
+    <message>
+        <source>Relative humidity (%)</source>
+        <translation>相对湿度 (%)</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>Approved by</source>
+        <translation>批准人</translation>
+    </message>
+    <message>
+        <source>Coverage probability (%)</source>
+        <translation>包含概率 (%)</translation>
+    </message>
+    <message>
+        <source>Table loaded (sha256)</source>
+        <translation>已载入的修正表（sha256）</translation>
+    </message>
+    <message>
+        <source>Document</source>
+        <translation>文件类型</translation>
+    </message>
+    <message>
+        <source>Calibration certificate</source>
+        <translation>校准证书</translation>
+    </message>
+    <message>
+        <source>Test report</source>
+        <translation>检测报告</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>Decision rule</source>
+        <translation>判定规则</translation>
+    </message>
+    <message>
+        <source>Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)</source>
+        <translation>保护带 w = U：合格 / 有条件 / 不合格（ILAC-G8 4.2.3）</translation>
+    </message>
+    <message>
+        <source>Guard band w = U: pass / fail (ILAC-G8 4.2.2)</source>
+        <translation>保护带 w = U：合格 / 不合格（ILAC-G8 4.2.2）</translation>
+    </message>
+    <message>
+        <source>Simple acceptance (ILAC-G8 4.2.1)</source>
+        <translation>简单接受（ILAC-G8 4.2.1）</translation>
+    </message>
+    <message>
+        <source>Decided quantity</source>
+        <translation>判定的量</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak (Monte Carlo U)</source>
+        <translation>峰峰值的一半（蒙特卡洛 U）</translation>
+    </message>
+    <message>
+        <source>Every point with its own U</source>
+        <translation>每个点及其各自的 U</translation>
+    </message>
+    <message>
+        <source>Standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Serial no.</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>Certificate no.</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>Uncertainty (&quot;)</source>
+        <translation>不确定度 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Stated as (U95, MPE, u)</source>
+        <translation>表示为（U95、MPE、u）</translation>
+    </message>
+    <message>
+        <source>Per (reading, from face 1)</source>
+        <translation>适用于（每个读数、相对第 1 面）</translation>
+    </message>
+    <message>
+        <source>Certificate details</source>
+        <translation>证书信息</translation>
+    </message>
+    <message>
+        <source>allocated by the register on export</source>
+        <translation>导出时由登记册分配</translation>
+    </message>
+    <message>
+        <source>Leave empty: the register allocates the next number of the scheme, unique across every workstation sharing it. A number typed here is refused if it was issued before.</source>
+        <translation>留空：由登记册按编号规则分配下一个编号，在共享登记册的所有工作站中唯一。此处输入的编号若已签发过将被拒绝。</translation>
+    </message>
+    <message>
+        <source>Certificate</source>
+        <translation>证书</translation>
+    </message>
+    <message>
+        <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
+        <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
+    </message>
+    <message>
+        <source>Environment and people</source>
+        <translation>环境和人员</translation>
+    </message>
+    <message>
+        <source>Remarks printed on the certificate</source>
+        <translation>印在证书上的备注</translation>
+    </message>
+    <message>
+        <source>Reference standards (their uncertainty enters the budget per reading)</source>
+        <translation>计量标准（其不确定度按每个读数计入评定）</translation>
+    </message>
+    <message>
+        <source>Add standard</source>
+        <translation>添加标准</translation>
+    </message>
+    <message>
+        <source>Remove standard</source>
+        <translation>删除标准</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Save as lab defaults</source>
+        <translation>保存为实验室默认值</translation>
+    </message>
+    <message>
+        <source>Lab, number scheme, standards, people and decision rule become the start of every new certificate</source>
+        <translation>实验室、编号规则、计量标准、人员和判定规则将作为每份新证书的起始内容</translation>
+    </message>
+    <message>
+        <source> (and {count} more, marked red)</source>
+        <translation>（另有 {count} 处，已标红）</translation>
+    </message>
+    <message>
+        <source>Saved as the lab&apos;s defaults.</source>
+        <translation>已保存为实验室默认值。</translation>
+    </message>
+    <message>
+        <source>(not in the file)</source>
+        <translation>（文件中没有）</translation>
+    </message>
+    <message>
+        <source>Which column is which?</source>
+        <translation>各列分别是什么？</translation>
+    </message>
+    <message>
+        <source> (optional)</source>
+        <translation>（可选）</translation>
+    </message>
+    <message>
+        <source>Remember for files with these headers</source>
+        <translation>对具有这些表头的文件记住此对应</translation>
+    </message>
+    <message>
+        <source>The first rows as they would be read:</source>
+        <translation>前几行的读取结果：</translation>
+    </message>
+    <message>
+        <source>Still needed: {columns}</source>
+        <translation>仍需要：{columns}</translation>
+    </message>
+    <message>
+        <source>Values of the swept parameter, separated by commas</source>
+        <translation>扫描参数的取值，以逗号分隔</translation>
+    </message>
+    <message>
+        <source>sweep values</source>
+        <translation>扫描取值</translation>
+    </message>
+    <message>
+        <source>Export table (CSV / C header)…</source>
+        <translation>导出修正表（CSV / C 头文件）…</translation>
+    </message>
+    <message>
+        <source>Interpolation error</source>
+        <translation>细分误差</translation>
+    </message>
+    <message>
+        <source>Signals and fit</source>
+        <translation>信号及拟合</translation>
+    </message>
+    <message>
+        <source>Lissajous</source>
+        <translation>李萨如图</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>频谱</translation>
+    </message>
+    <message>
+        <source>Drift per period</source>
+        <translation>逐周期漂移</translation>
+    </message>
+    <message>
+        <source>Export correction table</source>
+        <translation>导出修正表</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;C header (*.h)</source>
+        <translation>CSV (*.csv);;C 头文件 (*.h)</translation>
+    </message>
+    <message>
+        <source>AngleBench — manual</source>
+        <translation>AngleBench — 手册</translation>
+    </message>
+    <message>
+        <source>Save image</source>
+        <translation>保存图像</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Copy image</source>
+        <translation>复制图像</translation>
+    </message>
+    <message>
+        <source>Save image…</source>
+        <translation>保存图像…</translation>
+    </message>
+    <message>
+        <source>tilt ψ</source>
+        <translation>倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>direction ω</source>
+        <translation>方向 ω</translation>
+    </message>
+    <message>
+        <source>sweep</source>
+        <translation>扫描参数</translation>
+    </message>
+    <message>
+        <source>direction ω (Fig 3)</source>
+        <translation>方向 ω（图 3）</translation>
+    </message>
+    <message>
+        <source>tilt ψ (Fig 4)</source>
+        <translation>倾斜 ψ（图 4）</translation>
+    </message>
+    <message>
+        <source>θ (deg)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>ε_x induced error (&quot;)</source>
+        <translation>ε_x 引起的误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>ε_y vertical (&quot;)</source>
+        <translation>ε_y 垂直 (&quot;)</translation>
+    </message>
+    <message>
+        <source>harmonic order (1 = eccentricity, 2 = ellipticity)</source>
+        <translation>谐波次数（1 = 偏心，2 = 椭圆度）</translation>
+    </message>
+    <message>
+        <source>Load polygon certificate…</source>
+        <translation>载入多面棱体证书…</translation>
+    </message>
+    <message>
+        <source>Fill the deviation column from a CSV/XLSX with position,deviation_arcsec</source>
+        <translation>从含 position,deviation_arcsec 的 CSV/XLSX 填写偏差列</translation>
+    </message>
+    <message>
+        <source>Error over the circle</source>
+        <translation>全圆误差</translation>
+    </message>
+    <message>
+        <source>Vertical readings / tilt</source>
+        <translation>垂直读数 / 倾斜</translation>
+    </message>
+    <message>
+        <source>Harmonics</source>
+        <translation>谐波</translation>
+    </message>
+    <message>
+        <source>What-if: set-up errors</source>
+        <translation>假设分析：安装误差</translation>
+    </message>
+    <message>
+        <source>Polygon calibration certificate</source>
+        <translation>多面棱体校准证书</translation>
+    </message>
+    <message>
+        <source>Deviations (*.csv *.txt *.xlsx);;All files (*)</source>
+        <translation>偏差 (*.csv *.txt *.xlsx);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export compensation table…</source>
+        <translation>导出补偿表…</translation>
+    </message>
+    <message>
+        <source>Compensation = −mean deviation, at the targets or a uniform step, as set above: CSV, or LinuxCNC&apos;s COMP_FILE (type 0)</source>
+        <translation>补偿值 = −平均偏差，按上方设置在目标位置或均匀间隔处给出：CSV 或 LinuxCNC 的 COMP_FILE（类型 0）</translation>
+    </message>
+    <message>
+        <source>Deviation per target</source>
+        <translation>各目标位置的偏差</translation>
+    </message>
+    <message>
+        <source>Reversal per target</source>
+        <translation>各目标位置的反向差</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>各测次</translation>
+    </message>
+    <message>
+        <source>Per target</source>
+        <translation>逐目标位置</translation>
+    </message>
+    <message>
+        <source>LinuxCNC compensation file (*.txt *.comp);;All files (*)</source>
+        <translation>LinuxCNC 补偿文件 (*.txt *.comp);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export compensation table</source>
+        <translation>导出补偿表</translation>
+    </message>
+    <message>
+        <source>Row {row}, {header} ({key}): {reason}</source>
+        <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
+    </message>
+    <message>
+        <source>Edit row {row}</source>
+        <translation>编辑第 {row} 行</translation>
+    </message>
+    <message>
+        <source>Edit cells</source>
+        <translation>编辑单元格</translation>
+    </message>
+    <message>
+        <source>Delete {rows} row(s)</source>
+        <translation>删除 {rows} 行</translation>
+    </message>
+    <message>
+        <source>Replace readings</source>
+        <translation>替换读数</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>粘贴</translation>
+    </message>
+    <message>
+        <source>Clear cells</source>
+        <translation>清除单元格</translation>
+    </message>
+    <message>
+        <source>Insert row above</source>
+        <translation>在上方插入行</translation>
+    </message>
+    <message>
+        <source>Delete rows</source>
+        <translation>删除行</translation>
+    </message>
+    <message>
+        <source>Next nominal</source>
+        <translation>下一个名义值</translation>
+    </message>
+    <message>
+        <source>Paste {rows} row(s) (header row left out)</source>
+        <translation>粘贴 {rows} 行（已略去表头行）</translation>
+    </message>
+    <message>
+        <source>Paste {rows} row(s)</source>
+        <translation>粘贴 {rows} 行</translation>
+    </message>
+    <message>
+        <source>{paste}, replacing the sheet</source>
+        <translation>{paste}，替换整张表</translation>
+    </message>
+    <message>
+        <source>Paste readings</source>
+        <translation>粘贴读数</translation>
+    </message>
+    <message>
+        <source>The {pasted} pasted rows land on a run of {run}; {left} row(s) of the old run would stay below them and be analysed with them.</source>
+        <translation>粘贴的 {pasted} 行落在一次 {run} 行的测量上；原测量中有 {left} 行会留在其下方并一起被分析。</translation>
+    </message>
+    <message>
+        <source>Replace the sheet</source>
+        <translation>替换整张表</translation>
+    </message>
+    <message>
+        <source>Overwrite rows 1–{rows} only</source>
+        <translation>仅覆盖第 1–{rows} 行</translation>
+    </message>
+    <message>
+        <source>Certificate register</source>
+        <translation>证书登记册</translation>
+    </message>
+    <message>
+        <source>empty: the file in your data folder; or postgresql://user@host/database</source>
+        <translation>留空：使用数据文件夹中的文件；或 postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <source>Use</source>
+        <translation>使用</translation>
+    </message>
+    <message>
+        <source>Search number, serial or customer</source>
+        <translation>检索编号、出厂编号或委托方</translation>
+    </message>
+    <message>
+        <source>Amend…</source>
+        <translation>修订…</translation>
+    </message>
+    <message>
+        <source>Replace…</source>
+        <translation>替代…</translation>
+    </message>
+    <message>
+        <source>Save PDF…</source>
+        <translation>保存 PDF…</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>打印…</translation>
+    </message>
+    <message>
+        <source>Verify a PDF…</source>
+        <translation>验证 PDF…</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史</translation>
+    </message>
+    <message>
+        <source>Open the certificate&apos;s readings and details; the next export issues Amendment n to it, saying what changed</source>
+        <translation>打开该证书的读数和信息；下次导出将签发其第 n 号修订，并说明改变的内容</translation>
+    </message>
+    <message>
+        <source>As Amend, but the new certificate gets a new number and replaces the original</source>
+        <translation>与修订相同，但新证书使用新编号并替代原证书</translation>
+    </message>
+    <message>
+        <source>Is a PDF, byte for byte, one this register issued?</source>
+        <translation>某个 PDF 是否逐字节与本登记册签发的一致？</translation>
+    </message>
+    <message>
+        <source>Select a certificate and press History</source>
+        <translation>选择一份证书并按“历史”</translation>
+    </message>
+    <message>
+        <source>The figure of the certificates to follow over time</source>
+        <translation>随时间跟踪的证书结果</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> 天</translation>
+    </message>
+    <message>
+        <source>no interval set</source>
+        <translation>未设置周期</translation>
+    </message>
+    <message>
+        <source>Set interval</source>
+        <translation>设置周期</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>登记册：</translation>
+    </message>
+    <message>
+        <source>calibration interval</source>
+        <translation>校准周期</translation>
+    </message>
+    <message>
+        <source>Instrument {serial}: {count} calibration(s)</source>
+        <translation>仪器 {serial}：{count} 次校准</translation>
+    </message>
+    <message>
+        <source>, next due {date}</source>
+        <translation>，下次到期 {date}</translation>
+    </message>
+    <message>
+        <source>, no due date (set an interval)</source>
+        <translation>，无到期日（请设置周期）</translation>
+    </message>
+    <message>
+        <source>Verify a certificate PDF</source>
+        <translation>验证证书 PDF</translation>
+    </message>
+    <message>
+        <source>Save the certificate&apos;s PDF</source>
+        <translation>保存证书 PDF</translation>
+    </message>
+    <message>
+        <source>Certificate {number}</source>
+        <translation>证书 {number}</translation>
+    </message>
+    <message>
+        <source>Insert rows</source>
+        <translation>插入行</translation>
+    </message>
+    <message>
+        <source>axis tilt ψ</source>
+        <translation>轴系倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>tilt direction α</source>
+        <translation>倾斜方向 α</translation>
+    </message>
+    <message>
+        <source>mirror normal β</source>
+        <translation>反射镜法线 β</translation>
+    </message>
+    <message>
+        <source>θ range ±</source>
+        <translation>θ 范围 ±</translation>
+    </message>
+    <message>
+        <source>β (Figs 3, 4)</source>
+        <translation>β（图 3、4）</translation>
+    </message>
+    <message>
+        <source>α (Fig 5)</source>
+        <translation>α（图 5）</translation>
+    </message>
+    <message>
+        <source>ψ (Fig 6)</source>
+        <translation>ψ（图 6）</translation>
+    </message>
+    <message>
+        <source>ζ (&quot;)</source>
+        <translation>ζ (&quot;)</translation>
+    </message>
+    <message>
+        <source>E (deg)</source>
+        <translation>E (°)</translation>
+    </message>
+    <message>
+        <source>Error curves</source>
+        <translation>误差曲线</translation>
+    </message>
+    <message>
+        <source>Import {name}</source>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
+        <translation>导入 {name}</translation>
+    </message>
+    <message>
+        <source>Reading {name} …</source>
+        <translation>正在读取 {name} …</translation>
+    </message>
+    <message>
+        <source>Analysing {rows} readings …</source>
+        <translation>正在分析 {rows} 个读数 …</translation>
+    </message>
+    <message>
+        <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
+        <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
+    </message>
+    <message>
+        <source>Readings — {used} used</source>
+        <translation>读数 — 已用 {used} 个</translation>
+    </message>
+    <message>
+        <source>, {cells} bad cell(s)</source>
+        <translation>，{cells} 个错误单元格</translation>
+    </message>
+    <message>
+        <source>next: row {row}</source>
+        <translation>下一个：第 {row} 行</translation>
+    </message>
+    <message>
+        <source>No result: {reason}</source>
+        <translation>无结果：{reason}</translation>
+    </message>
+    <message>
+        <source>No readings yet.</source>
+        <translation>尚无读数。</translation>
+    </message>
+    <message>
+        <source>Readings</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>Typing a row and pressing Return fills the next row&apos;s nominal value with this step (0: off) and moves to its first reading</source>
+        <translation>输入一行并按回车后，按此步距填写下一行的名义值（0：关闭），并移到该行的第一个读数</translation>
+    </message>
+    <message>
+        <source>Set-up</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>figure</source>
+        <translation>结果项</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>next {column} +</source>
+        <translation>下一个 {column} +</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>系统语言</translation>
+    </message>
+</context>
+</TS>
