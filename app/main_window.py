@@ -187,14 +187,23 @@ class MainWindow(QMainWindow):
         self._action(file_menu, tr("&Quit"), self.close, QKeySequence.StandardKey.Quit)
 
         edit_menu = self._menu(self.menuBar(), tr("&Edit"))
-        undo = self.undo_group.createUndoAction(self, tr("&Undo"))
+        # our own actions, not QUndoGroup's: theirs keep the prefix of the language they
+        # were made in ("Undo Paste 3 rows" stays English in a Chinese window)
+        undo = QAction(self)
+        undo.triggered.connect(self.undo_group.undo)
         undo.setShortcut(QKeySequence.StandardKey.Undo)
-        redo = self.undo_group.createRedoAction(self, tr("&Redo"))
+        redo = QAction(self)
+        redo.triggered.connect(self.undo_group.redo)
         redo.setShortcuts([QKeySequence(QKeySequence.StandardKey.Redo),
                            QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
         edit_menu.addAction(undo)
         edit_menu.addAction(redo)
         self.undo_action, self.redo_action = undo, redo
+        for signal in (self.undo_group.undoTextChanged, self.undo_group.redoTextChanged,
+                       self.undo_group.canUndoChanged, self.undo_group.canRedoChanged,
+                       self.undo_group.activeStackChanged):
+            signal.connect(self._update_undo_actions)
+        self._update_undo_actions()
         edit_menu.addSeparator()
         self._action(edit_menu, tr("&Copy"), lambda: self.current.view.table.copy_selection())
         self._action(edit_menu, tr("&Paste"), lambda: self.current.view.table.paste())
@@ -251,7 +260,17 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue(LANGUAGE_SETTING, choice)
         self.language = install_language(choice)
 
+    def _update_undo_actions(self, *_args) -> None:
+        group = self.undo_group
+        what = group.undoText()
+        self.undo_action.setText(tr("&Undo {what}").format(what=what) if what else tr("&Undo"))
+        self.undo_action.setEnabled(group.canUndo())
+        what = group.redoText()
+        self.redo_action.setText(tr("&Redo {what}").format(what=what) if what else tr("&Redo"))
+        self.redo_action.setEnabled(group.canRedo())
+
     def _retranslate(self) -> None:
+        self._update_undo_actions()
         for index, presenter in enumerate(self.presenters):
             self.tabs.setTabText(index, declared(presenter.kind.title))
         self._update_title()

@@ -29,14 +29,22 @@ TRANSLATIONS = ROOT / "resources" / "translations"
 DECLARED_FILE = TRANSLATIONS / "declared_strings.py"
 TS_FILE = TRANSLATIONS / "anglebench_zh_CN.ts"
 QM_FILE = TRANSLATIONS / "anglebench_zh_CN.qm"
-# a unit in a title's last parentheses: kept as it is, the words before it translated
-UNIT = re.compile(r"^(.*?)\s*\((\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|periods|"
-                  r"V, log10|V, log)\)$")
 
 
 def _tool(name: str) -> str:
     here = Path(sys.executable).parent / name
     return str(here) if here.exists() else name
+
+
+def _visit_every_tab(app, window, units) -> None:
+    for unit in units:
+        window.set_angle_unit(unit)
+        for index, presenter in enumerate(window.presenters):
+            window.tabs.setCurrentIndex(index)
+            presenter.refresh()
+            for tab in range(presenter.view.plot_tabs.count()):
+                presenter.view.plot_tabs.setCurrentIndex(tab)
+                app.processEvents()
 
 
 def declared_texts() -> list[str]:
@@ -48,31 +56,39 @@ def declared_texts() -> list[str]:
     from app.main_window import MainWindow
     from models.display_units import ANGLE_UNITS
     from models.project.recovery import RecoveryStore
-    from widgets.i18n import SEEN_DECLARED
+    from widgets.i18n import SEEN_DECLARED, unit_tail
 
     app = QApplication.instance() or QApplication(["translations"])
+    SEEN_DECLARED.clear()  # this run's texts only
+    register = os.environ.get("ANGLEBENCH_REGISTER")
     with tempfile.TemporaryDirectory() as scratch:
         os.environ["ANGLEBENCH_REGISTER"] = str(Path(scratch) / "register.sqlite")
         settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
         window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "r"))
-        window.load_all_samples()
         window.show()
-        for unit in ANGLE_UNITS.values():
-            window.set_angle_unit(unit)
-            for index, presenter in enumerate(window.presenters):
-                window.tabs.setCurrentIndex(index)
-                presenter.refresh()
-                for tab in range(presenter.view.plot_tabs.count()):
-                    presenter.view.plot_tabs.setCurrentIndex(tab)
-                    app.processEvents()
+        samples = ROOT / "resources" / "samples"
+        runs = [None, ("fringe", samples / "fringe_interferometer_sample.csv")]  # est. phase
+        for run in runs:
+            if run is None:
+                window.load_all_samples()
+            else:
+                window.presenter(run[0]).import_file(run[1])
+            _visit_every_tab(app, window, ANGLE_UNITS.values())
         window.show_register()
+        from widgets.certificate_dialog import CertificateDialog
+
+        CertificateDialog(window.certificate_metadata("polygon"), window).deleteLater()
         app.processEvents()
+        for presenter in window.presenters:
+            presenter.mark_saved()  # nothing to ask about on closing
         window.recovery.discard()
         window.close()
-    texts = set()
-    for text in SEEN_DECLARED:
-        found = UNIT.match(text)
-        texts.add(found.group(1) if found else text)
+        window.deleteLater()
+    if register is None:
+        os.environ.pop("ANGLEBENCH_REGISTER", None)
+    else:
+        os.environ["ANGLEBENCH_REGISTER"] = register
+    texts = {unit_tail(text)[0] for text in SEEN_DECLARED}  # the unit is never translated
     return sorted(t for t in texts if re.search(r"[A-Za-z]{2}", t))
 
 

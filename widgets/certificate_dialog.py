@@ -38,7 +38,7 @@ from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
 )
-from widgets.i18n import tr
+from widgets.i18n import declared, tr
 
 __all__ = ["CertificateDialog"]
 
@@ -130,7 +130,7 @@ class CertificateDialog(QDialog):
             box = QComboBox()
             box.setObjectName(key)
             for value, text in options.items():
-                box.addItem(text if key == "language" else tr(text), value)
+                box.addItem(declared(text) if key == "language" else tr(text), value)
                 if key == "decision_rule":
                     box.setItemData(box.count() - 1, DECISION_RULES[value],
                                     Qt.ItemDataRole.ToolTipRole)

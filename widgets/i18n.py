@@ -35,7 +35,8 @@ __all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "
 TRANSLATIONS_DIR = Path(__file__).resolve().parent.parent / "resources" / "translations"
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
-_UNIT_TAIL = re.compile(r"^(.*?)(\s*\([^()]*\))$")
+_UNIT_TAIL = re.compile(r"^(.*?)(\s*\((?:\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|V, log10|"
+                        r"V, log)\))$")
 
 
 class Tr(str):
@@ -142,6 +143,7 @@ def retranslate() -> None:
 
 # -- the language -----------------------------------------------------------------
 _installed: list[QTranslator] = []
+_current = ["en"]  # the language installed (English: no translator)
 
 
 def resolve_language(choice: str) -> str:
@@ -156,6 +158,9 @@ def install_language(choice: str) -> str:
     retranslate every live text; returns the language installed."""
     app = QCoreApplication.instance()
     language = resolve_language(choice)
+    if language == _current[0]:
+        return language  # nothing to set again (a second window, the same choice)
+    _current[0] = language
     for translator in _installed:
         app.removeTranslator(translator)
     _installed.clear()

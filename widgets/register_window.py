@@ -40,6 +40,7 @@ class RegisterWindow(QDialog):
         live(self.setWindowTitle, tr("Certificate register"))
         self.resize(1100, 720)
         self.location = QLabel()
+        self.location.setObjectName("location")  # where the register is: a path or URL
         self.location.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.location_edit = QLineEdit()
         live(self.location_edit.setPlaceholderText, tr("empty: the file in your data folder; "

@@ -72,6 +72,10 @@
         <translation>编码器：每转光栅线数；误差以轴角的角秒表示（一个周期 = 1296000&quot;/L）</translation>
     </message>
     <message>
+        <source>English</source>
+        <translation>English（英文）</translation>
+    </message>
+    <message>
         <source>Entries of the correction table over the measured phase</source>
         <translation>修正表在所测相位上的条目数</translation>
     </message>
@@ -344,8 +348,20 @@
         <translation>方向 [+/−]</translation>
     </message>
     <message>
-        <source>electrical phase θ</source>
-        <translation>电相位 θ</translation>
+        <source>electrical phase θ (periods)</source>
+        <translation>电相位 θ（周期）</translation>
+    </message>
+    <message>
+        <source>error, est. phase</source>
+        <translation>误差（估计相位）</translation>
+    </message>
+    <message>
+        <source>phase within the period (°); the motion stood or turned back</source>
+        <translation>周期内相位 (°)；运动曾停止或反向</translation>
+    </message>
+    <message>
+        <source>中文 + English (headings and labels)</source>
+        <translation>中文 + English（标题和标签双语）</translation>
     </message>
     <message>
         <source>elevation E</source>
@@ -883,6 +899,14 @@
     <message>
         <source>&amp;About AngleBench</source>
         <translation>关于 AngleBench(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo {what}</source>
+        <translation>撤销(&amp;U) {what}</translation>
+    </message>
+    <message>
+        <source>&amp;Redo {what}</source>
+        <translation>重做(&amp;R) {what}</translation>
     </message>
     <message>
         <source>AngleBench — quick guide</source>

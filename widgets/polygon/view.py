@@ -9,7 +9,7 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
-from widgets.i18n import declared, live, tr
+from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
@@ -42,13 +42,17 @@ class HarmonicBars(QWidget):
         super().__init__(parent)
         self.plot = pg.PlotWidget(background="w")
         self.plot.setLabel("left", declared("amplitude (\")"))
-        self.plot.setLabel("bottom", tr("harmonic order (1 = eccentricity, 2 = ellipticity)"))
+        self._relabel()
+        on_language_change(self, self._relabel)
         self.plot.showGrid(y=True, alpha=0.25)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.bars = pg.BarGraphItem(x=[], height=[], width=0.6, brush="#1f5fbf")
         self.plot.addItem(self.bars)
         layout = QVBoxLayout(self)
         layout.addWidget(self.plot)
+
+    def _relabel(self) -> None:
+        self.plot.setLabel("bottom", tr("harmonic order (1 = eccentricity, 2 = ellipticity)"))
 
     def set_spectrum(self, order, amplitude) -> None:
         self.bars.setOpts(x=np.asarray(order[1:]), height=np.asarray(amplitude[1:]), width=0.6)

@@ -1,0 +1,218 @@
+"""The window in Simplified Chinese (#18): every text of the window is translated (a text
+added without its translation fails here), the translation files are those Qt's tools
+make from the sources, and the language changes at once without losing work."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pyqtgraph as pg
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import (
+    QAbstractButton,
+    QApplication,
+    QComboBox,
+    QGroupBox,
+    QLabel,
+    QLineEdit,
+    QTabWidget,
+    QWidget,
+)
+
+from app import translations
+
+# words that stay as they are in a Chinese window: names, standards, file types, keys,
+# units and the symbols of the papers
+KEPT = {
+    "AngleBench", "CSV", "XLSX", "xlsx", "xlsm", "csv", "txt", "PDF", "pdf", "PNG", "png",
+    "JSON", "json", "anglebench", "ISO", "IEC", "VDI", "DGQ", "GB", "JJF", "ILAC", "LinuxCNC",
+    "COMP_FILE", "comp", "Heydemann", "HeNe", "Excel", "sin", "cos", "deg", "mdeg", "rad",
+    "urad", "arcsec", "sha", "SHA", "MPE", "Ctrl", "Shift", "Tab", "PgDn", "PgUp", "postgresql",
+    "user", "host", "database", "YYYY", "English", "Chinese", "position", "deviation_arcsec",
+    "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
+}
+# widgets whose text is the user's or the result's (readings, names typed, the models'
+# narrative of the result), not the window's
+SKIPPED_NAMES = {"summary", "verdict", "warnings", "figures", "per_target"}
+
+
+def english_words(text: str) -> set[str]:
+    words = set(re.findall(r"[A-Za-z][A-Za-z_]{2,}", text))
+    return {w for w in words if w not in KEPT and "_" not in w}  # B_i, ε_x,zero: symbols
+
+
+def _skipped(widget: QWidget, window) -> bool:
+    while widget is not None:
+        if widget.objectName() == "location":  # the register's path or URL
+            return True
+        for name in SKIPPED_NAMES:
+            for presenter in window.presenters:
+                if getattr(presenter.view, name, None) is widget:
+                    return True
+        if any(widget is p.view.table for p in window.presenters):
+            return True
+        widget = widget.parentWidget()
+    return False
+
+
+def window_texts(window, extra: list[QWidget] = ()) -> dict[str, str]:
+    """Every text the window shows of its own: {text: where}."""
+    out: dict[str, str] = {}
+
+    def add(text, where):
+        text = (text or "").replace("&", "")
+        if text.strip():
+            out.setdefault(text, where)
+
+    def walk_menu(menu, where):
+        add(menu.title(), where)
+        for action in menu.actions():
+            add(action.text(), where)
+            add(action.statusTip(), where)
+            if action.menu() is not None:
+                walk_menu(action.menu(), where + " › " + action.text())
+
+    for action in window.menuBar().actions():
+        walk_menu(action.menu(), "menu")
+    for root in [window, *extra]:
+        for widget in root.findChildren(QWidget):
+            if _skipped(widget, window):
+                continue
+            add(widget.toolTip(), type(widget).__name__ + " tooltip")
+            if isinstance(widget, QLabel):
+                add(widget.text(), "label")
+            elif isinstance(widget, QAbstractButton):
+                add(widget.text(), "button")
+            elif isinstance(widget, QGroupBox):
+                add(widget.title(), "group")
+            elif isinstance(widget, QLineEdit):
+                add(widget.placeholderText(), "placeholder")
+            elif isinstance(widget, QComboBox):
+                for i in range(widget.count()):
+                    add(widget.itemText(i), "choice")
+            elif isinstance(widget, QTabWidget):
+                for i in range(widget.count()):
+                    add(widget.tabText(i), "tab")
+            if isinstance(widget, pg.GraphicsView):
+                for item in widget.scene().items():
+                    if isinstance(item, pg.AxisItem):
+                        add(item.labelText, "axis title")
+                    elif isinstance(item, pg.LegendItem):
+                        for _sample, label in item.items:
+                            add(label.text, "legend")
+                    elif isinstance(item, pg.ViewBox) and getattr(item, "menu", None):
+                        for action in item.menu.actions():
+                            if action.text() in ("Copy image", "Save image…") or \
+                                    "image" in action.text():
+                                add(action.text(), "plot menu")
+    for presenter in window.presenters:
+        model = presenter.table_model
+        for c in range(model.columnCount()):
+            add(model.headerData(c, Qt.Orientation.Horizontal), "readings header")
+    return out
+
+
+@pytest.fixture
+def chinese(window, qtbot):
+    window.set_language("zh_CN")
+    window.load_all_samples()
+    window.show()
+    yield window
+    window.set_language("en")
+
+
+def test_every_text_of_the_window_is_translated(chinese, qtbot):
+    """The whole window in Chinese, every workbench and plot tab shown, the register and
+    the certificate dialog open: no English word left in a text of the window's own."""
+    from widgets.certificate_dialog import CertificateDialog
+    from widgets.column_mapping_dialog import ColumnMappingDialog
+
+    window = chinese
+    for index, presenter in enumerate(window.presenters):
+        window.tabs.setCurrentIndex(index)
+        for tab in range(presenter.view.plot_tabs.count()):
+            presenter.view.plot_tabs.setCurrentIndex(tab)
+    window.show_register()
+    dialog = CertificateDialog(window.certificate_metadata("polygon"), window)
+    mapping = ColumnMappingDialog(window.presenter("theodolite").kind.columns,
+                                  ["a", "b", "c"], [["1", "2", "3"]], "", window)
+    texts = window_texts(window, [window.register_window, dialog, mapping])
+    assert len(texts) > 300
+    left = {text: where for text, where in texts.items() if english_words(text)}
+    assert not left, "untranslated: " + "; ".join(f"{w}: {t!r}" for t, w in list(left.items())[:15])
+    dialog.deleteLater()
+    mapping.deleteLater()
+
+
+def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
+    window.load_all_samples()
+    theodolite = window.presenter("theodolite")
+    theodolite.table_model.set_cells([(0, 1, "-19°52'58.0\"")])
+    rows, undo = theodolite.state().rows, theodolite.undo_stack.count()
+    before = theodolite.view.error_plot.corrected_curve.getData()[1].copy()
+    chinese = next(a for a in window.language_actions.actions() if a.data() == "zh_CN")
+    chinese.trigger()
+    assert window.qsettings.value("ui/language") == "zh_CN" and chinese.isChecked()
+    assert window.menuBar().actions()[0].text() == "文件(&F)"
+    assert window.tabs.tabText(0) == "经纬仪测量"
+    assert theodolite.view.error_plot.main_plot.getAxis("left").labelText == "原始误差 (\")"
+    assert theodolite.table_model.headerData(0, Qt.Orientation.Horizontal) == "θ [°]"
+    assert theodolite.view.settings.findChild(QLabel).text() == "参考行"
+    assert theodolite.state().rows == rows and theodolite.undo_stack.count() == undo
+    assert (theodolite.view.error_plot.corrected_curve.getData()[1] == before).all()
+    theodolite.undo_stack.undo()  # the history survived the change of language
+    assert theodolite.state().rows != rows
+    next(a for a in window.language_actions.actions() if a.data() == "en").trigger()
+    assert window.menuBar().actions()[0].text() == "&File"
+    assert theodolite.view.error_plot.main_plot.getAxis("left").labelText == "raw error (\")"
+
+
+def _sources(ts: Path) -> set[str]:
+    return {m.findtext("source") for m in ET.parse(ts).iter("message")}
+
+
+def test_the_translation_files_are_made_from_the_sources(tmp_path, qapp):
+    """declared_strings.py holds what the window asks the models' texts for; the .ts
+    holds every text of the sources, each translated; the .qm is lrelease's of it."""
+    assert translations.declared_texts() == [
+        eval(line.strip()[len("QT_TR_NOOP("):-2])  # noqa: S307 - our own generated file
+        for line in translations.DECLARED_FILE.read_text("utf-8").splitlines()
+        if line.strip().startswith("QT_TR_NOOP(")]
+    copy = tmp_path / "copy.ts"
+    shutil.copy(translations.TS_FILE, copy)
+    sources = sorted(str(p) for folder in ("app", "widgets")
+                     for p in (translations.ROOT / folder).rglob("*.py"))
+    tools = Path(sys.executable).parent
+    subprocess.run([str(tools / "pyside6-lupdate"), *sources, str(translations.DECLARED_FILE),
+                    "-locations", "none", "-no-obsolete", "-ts", str(copy)], check=True,
+                   capture_output=True)
+    assert _sources(copy) == _sources(translations.TS_FILE), "run make translations"
+    unfinished = [m.findtext("source") for m in ET.parse(translations.TS_FILE).iter("message")
+                  if m.find("translation").get("type") == "unfinished"
+                  or not (m.findtext("translation") or "").strip()]
+    assert unfinished == []
+    qm = tmp_path / "copy.qm"
+    subprocess.run([str(tools / "pyside6-lrelease"), str(translations.TS_FILE), "-qm", str(qm)],
+                   check=True, capture_output=True)
+    assert qm.read_bytes() == translations.QM_FILE.read_bytes(), "run make translations"
+
+
+def test_the_language_follows_the_system_unless_chosen(monkeypatch):
+    from PySide6.QtCore import QLocale
+
+    from widgets.i18n import resolve_language
+
+    monkeypatch.setattr(QLocale, "system", lambda: QLocale(QLocale.Language.Chinese,
+                                                          QLocale.Country.China))
+    assert resolve_language("system") == "zh_CN"
+    assert resolve_language("en") == "en"
+    monkeypatch.setattr(QLocale, "system", lambda: QLocale(QLocale.Language.German,
+                                                          QLocale.Country.Germany))
+    assert resolve_language("system") == "en"
+    assert QApplication.instance() is not None
