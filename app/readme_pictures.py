@@ -79,16 +79,19 @@ def register_picture(scratch: Path) -> Path:
 
 def scaled_pictures(scratch: Path) -> list[Path]:
     """The polygon workbench as a technician sees it on a 1280×720 screen and on a
-    1920×1080 screen at 200 % (960×540 logical pixels): each its own process, since Qt
-    reads the scale factor once, when the application starts."""
+    1920×1080 screen at 200 % (960×540 logical pixels), and two workbenches in Chinese:
+    each its own process, since Qt reads the scale factor once, when it starts."""
     out = []
-    for name, size, scale in (("polygon_1280x720.png", "1280x720", "1"),
-                              ("polygon_200pct.png", "960x540", "2")):
+    for name, size, scale, language, kind in (
+            ("polygon_1280x720.png", "1280x720", "1", "en", "polygon"),
+            ("polygon_200pct.png", "960x540", "2", "en", "polygon"),
+            ("polygon_zh_CN.png", "1400x900", "1", "zh_CN", "polygon"),
+            ("theodolite_zh_CN.png", "1400x900", "1", "zh_CN", "theodolite")):
         folder = scratch / name
         subprocess.run([sys.executable, "-m", "app.main", "--screenshot", str(folder), "--size",
-                        size], check=True, stdout=subprocess.DEVNULL,
+                        size, "--language", language], check=True, stdout=subprocess.DEVNULL,
                        env={**os.environ, "QT_SCALE_FACTOR": scale})
-        (folder / "polygon.png").replace(HERE / name)
+        (folder / f"{kind}.png").replace(HERE / name)
         out.append(HERE / name)
     return out
 

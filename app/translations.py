@@ -105,11 +105,17 @@ def write_declared(texts: list[str]) -> None:
     write_bytes_atomic(DECLARED_FILE, "\n".join(lines).encode("utf-8"))
 
 
-def update_ts() -> None:
-    sources = sorted(str(p) for folder in ("app", "widgets") for p in (ROOT / folder).rglob("*.py"))
-    subprocess.run([_tool("pyside6-lupdate"), *sources, str(DECLARED_FILE), "-locations",
+def lupdate_sources() -> list[str]:
+    """The files whose texts are translated: the window's (tr), the models' result texts
+    (QT_TR_NOOP in models.messages' templates) and the declared texts gathered."""
+    return sorted(str(p) for folder in ("app", "widgets", "models")
+                  for p in (ROOT / folder).rglob("*.py")) + [str(DECLARED_FILE)]
+
+
+def update_ts(ts: Path = TS_FILE) -> None:
+    subprocess.run([_tool("pyside6-lupdate"), *lupdate_sources(), "-locations",
                     "none", "-no-obsolete", "-source-language", "en", "-target-language",
-                    "zh_CN", "-ts", str(TS_FILE)], check=True, stdout=subprocess.DEVNULL)
+                    "zh_CN", "-ts", str(ts)], check=True, stdout=subprocess.DEVNULL)
 
 
 def release_qm() -> None:

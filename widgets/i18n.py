@@ -30,7 +30,7 @@ from pathlib import Path
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
 __all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "live", "on_language_change",
-           "resolve_language", "tr", "unit_tail"]
+           "resolve_language", "tr", "translated", "unit_tail"]
 
 TRANSLATIONS_DIR = Path(__file__).resolve().parent.parent / "resources" / "translations"
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
@@ -76,6 +76,21 @@ def _translate_declared(source: str) -> str:
         if translated != head:
             return translated + unit
     return source
+
+
+def translated(text: str) -> str:
+    """A result text of the models (models.messages.Message) in the window's language:
+    its template translated and filled with the same figures; plain text as it is."""
+    parts = getattr(text, "parts", ())
+    if parts:
+        return "".join(translated(part) for part in parts)
+    template = getattr(text, "template", None)
+    if template is None:
+        return text
+    figures = {key: translated(value) if isinstance(value, str) else value
+               for key, value in text.figures.items()}
+    words = QCoreApplication.translate("", template)
+    return words.format(**figures) if figures else words
 
 
 def declared(source: str) -> Tr:

@@ -27,7 +27,7 @@ from models.readings.tabular_import import (
     map_columns,
     read_table,
 )
-from widgets.i18n import on_language_change, tr
+from widgets.i18n import on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import cyclic_gc_paused, emit_if_alive, gui_thread_first, worker_pool
@@ -413,7 +413,9 @@ class WorkbenchPresenter(QObject):
             self.view.set_figures({})
             self.view.set_warnings(input_warnings)
         else:
-            unit_text = self.in_unit_text
+            def unit_text(text: str) -> str:  # in the window's language, then its unit
+                return self.in_unit_text(translated(text))
+
             self.view.set_summary(unit_text(self.kind.summary(result)))
             self.view.set_verdict(unit_text(self.kind.verdict(result)) if self.kind.verdict
                                   else "")

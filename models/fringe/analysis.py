@@ -27,6 +27,7 @@ from models.fringe.model import (
 from models.fringe.phase import EllipseFit, fit_ellipse
 from models.fringe.report import fringe_certificate
 from models.fringe.result import FringeResult
+from models.messages import QT_TR_NOOP, message
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 
@@ -80,13 +81,12 @@ PHASE_SOURCES = ("samples_per_period", "theta_column", "estimated")
 SIGNAL_LIMIT_V = 1000.0
 #: A fit of the channels against the phase below this R² means the phase is wrong.
 MIN_R_SQUARED = 0.9
-OBSERVABILITY = (
+OBSERVABILITY = message(QT_TR_NOOP(
     "Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio "
     "and the quadrature error are identified from the Lissajous ellipse (Heydemann); the "
     "harmonics are fitted against the estimated phase, so only the part of their distortion that "
     "bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure "
-    "round and is not observable without a phase reference."
-)
+    "round and is not observable without a phase reference."))
 
 
 def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
@@ -138,7 +138,8 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
     has_theta = bool(np.any(np.isfinite(theta_col)))
     if per_period:
         if has_theta:
-            warnings.append("The θ column was not used: samples per period N was given.")
+            warnings.append(message(QT_TR_NOOP("The θ column was not used: samples per period N "
+                                               "was given.")))
         # a sample keeps its place: a blank or unreadable row is a gap at its phase
         place = parsed.row_index - parsed.row_index[0]
         return "samples_per_period", place * (TWO_PI / per_period)
@@ -214,8 +215,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         sin_fit, cos_fit = ps.fit, pc.fit
         pso_seconds = ps.seconds + pc.seconds
         lsq_cost = sum(f.cost for f in fit_channels(theta[span], [u_sin[span], u_cos[span]]))
-        warnings.append(f"Particle swarm on the first period: cost {ps.cost + pc.cost:.3g} V² "
-                        f"against {lsq_cost:.3g} V² for least squares, {pso_seconds:.2f} s.")
+        warnings.append(message(
+            QT_TR_NOOP("Particle swarm on the first period: cost {cost} V² against {lsq} V² for "
+                       "least squares, {seconds} s."),
+            cost=f"{ps.cost + pc.cost:.3g}", lsq=f"{lsq_cost:.3g}", seconds=f"{pso_seconds:.2f}"))
     elif source == "estimated":
         theta, (sin_fit, cos_fit) = _refine_phase(u_sin, u_cos, theta, orders)
     elif source == "samples_per_period":  # N equal steps: the fit from N per-phase sums
@@ -362,9 +365,12 @@ FRINGE = AnalysisKind(
     certificate=fringe_certificate,
     presenter="widgets.fringe.presenter:FringePresenter",
     correction_table=_correction_table,
-    verdict=lambda r: (f"Interpolation error {np.ptp(r.raw_error):.3f}{r.unit_symbol} peak-to-peak "
-                       f"({np.ptp(r.raw_error) / r.period_length * 100:.2f} % of a period); "
-                       f"{np.ptp(r.compensated_error):.3f}{r.unit_symbol} after compensation"),
+    verdict=lambda r: message(
+        QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
+                   "after compensation"),
+        ptp=f"{np.ptp(r.raw_error):.3f}{r.unit_symbol}",
+        share=f"{np.ptp(r.raw_error) / r.period_length * 100:.2f}",
+        after=f"{np.ptp(r.compensated_error):.3f}{r.unit_symbol}"),
     headline=lambda r: {f"as-found peak-to-peak ({r.unit})": float(np.ptp(r.raw_error)),
                         f"compensated peak-to-peak ({r.unit})":
                             float(np.ptp(r.compensated_error))},

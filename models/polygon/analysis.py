@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.messages import QT_TR_NOOP, joined, message
 from models.parameters import Parameter, SettingsError
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
@@ -22,6 +23,7 @@ from models.polygon.model import (
     evaluate_sets,
     harmonic_analysis,
     pooled_repeatability,
+    set_name,
     tilt_advice,
     wrap_deg,
 )
@@ -188,8 +190,8 @@ def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
         return 1
     if steps.size and np.all(steps < 0):
         return -1
-    warnings.append(f"{label.capitalize()}: direction not stated and the encoder steps go both "
-                    "ways: taken as forward.")
+    warnings.append(message(QT_TR_NOOP("{set}: direction not stated and the encoder steps go "
+                                       "both ways: taken as forward."), set=set_name(label)))
     return 1
 
 
@@ -214,9 +216,12 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
     first_rows = split[0][1]
     counting, detected = _counting_sense(parsed, first_rows, step, tolerance, counting_setting)
     if counting < 0:
-        warnings.append("The encoder counts against the face numbering"
-                        + (" (detected from the readings)" if detected else "") +
-                        ": face angles and deviations are taken in the encoder's counting sense.")
+        warnings.append(message(
+            QT_TR_NOOP("The encoder counts against the face numbering (detected from the "
+                       "readings): face angles and deviations are taken in the encoder's "
+                       "counting sense.") if detected else
+            QT_TR_NOOP("The encoder counts against the face numbering: face angles and "
+                       "deviations are taken in the encoder's counting sense.")))
     a_first = parsed["encoder_deg"][first_rows[0]]
     p_first = parsed["position"][first_rows[0]]
     sets = []
@@ -295,12 +300,14 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
                    f"for grade {grade} (worst case over the tilt direction; the seed's ω = 90° "
                    f"figure is {allowed_seed:.0f}\"): {tilt_advice(tilt, faces, counting)}; then "
                    "re-zero and measure again.")
-        warnings.append(f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" exceeds the {allowed:.0f}\" "
-                        f"allowed for grade {grade} (worst case over the tilt direction); the error "
-                        "it induces was identified and removed.")
+        warnings.append(message(
+            QT_TR_NOOP("Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} "
+                       "(worst case over the tilt direction); the error it induces was "
+                       "identified and removed."),
+            psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade))
     if spread:
-        warnings.append("Closure drift spread linearly over each set and removed from the "
-                        "autocollimator readings.")
+        warnings.append(message(QT_TR_NOOP("Closure drift spread linearly over each set and "
+                                           "removed from the autocollimator readings.")))
     return PolygonResult(
         sets=results, faces=faces, grade=grade, theta_deg=theta,
         mean_error_arcsec=mean_error, mean_corrected_arcsec=mean_corrected,
@@ -431,13 +438,19 @@ POLYGON = AnalysisKind(
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
     positioning_rows=positioning_rows,
-    verdict=lambda r: ("RUN INVALID: closure failed. " if not r.valid else "")
-    + (f"Grade {r.grade} (±{GRADE_ACCURACY_ARCSEC[r.grade]:g}\") "
-       f"{'met' if r.accuracy_ok else 'NOT met'}: corrected error peak-to-peak "
-       f"{r.stats.peak_to_peak:.2f}\"; "
-       + ("tilt within the allowed" if r.sets[0].tilt is None
-          or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec
-          else f"tilt ψ = {r.sets[0].tilt.psi_arcsec:.0f}\" exceeds {r.allowed_tilt_arcsec:.0f}\"")),
+    verdict=lambda r: joined((
+        "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
+        message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
+                           "{ptp}; ") if r.accuracy_ok else
+                QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "
+                           "peak-to-peak {ptp}; "),
+                grade=r.grade, accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"",
+                ptp=f"{r.stats.peak_to_peak:.2f}\""),
+        message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
+        or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
+        message(QT_TR_NOOP("tilt ψ = {psi} exceeds {allowed}"),
+                psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
+                allowed=f"{r.allowed_tilt_arcsec:.0f}\""))),
     headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
                         "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
                         if r.sets[0].tilt else float("nan")},

@@ -32,6 +32,7 @@ import numpy as np
 
 from models.damped_least_squares import difference_jacobian, polish
 from models.lazy_optimize import least_squares
+from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats
 
@@ -176,6 +177,11 @@ class TiltFit:
     u_omega_deg: float
     residuals_arcsec: np.ndarray
     residual_rms_arcsec: float
+
+
+def set_name(label: str) -> Message:
+    """ "Set 2" for the set labelled "set 2", as a warning begins with it."""
+    return message(QT_TR_NOOP("Set {number}"), number=label.split()[-1])
 
 
 def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
@@ -341,11 +347,14 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
             ok = bool(abs(drift) <= closure_limit_arcsec)
             drift = float(drift)
             if not ok:
-                warnings.append(f"{s.label.capitalize()}: closure drift {drift:+.2f}\" exceeds the "
-                                f"limit ±{closure_limit_arcsec:g}\": the set is invalid; repeat it.")
+                warnings.append(message(
+                    QT_TR_NOOP("{set}: closure drift {drift} exceeds the limit ±{limit}: the set "
+                               "is invalid; repeat it."), set=set_name(s.label),
+                    drift=f"{drift:+.2f}\"", limit=f"{closure_limit_arcsec:g}\""))
         else:
-            warnings.append(f"{s.label.capitalize()}: no closure reading (the row back on its "
-                            "start face): drift not checked.")
+            warnings.append(message(QT_TR_NOOP("{set}: no closure reading (the row back on its "
+                                               "start face): drift not checked."),
+                                    set=set_name(s.label)))
         ac_y = np.asarray(s.ac_y_arcsec, dtype=float)[order]
         tilt = None
         pyramidal = np.zeros(n)
@@ -353,8 +362,9 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
             tilt = fit_tilt(theta, ac_y)
             pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z)
         else:
-            warnings.append(f"{s.label.capitalize()}: vertical readings missing: pyramidal error "
-                            "not identified or removed.")
+            warnings.append(message(QT_TR_NOOP("{set}: vertical readings missing: pyramidal "
+                                               "error not identified or removed."),
+                                    set=set_name(s.label)))
         results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,
                                         s.direction, int(s.positions[0]),
                                         ac_y if tilt is not None else None, warnings))

@@ -39,6 +39,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.messages import QT_TR_NOOP, message
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     PolygonResult,
@@ -280,7 +281,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     tilt = result.sets[0].tilt
     warnings = list(result.warnings)
     if m == 1 and tilt is None:
-        warnings.append("Repeatability was not evaluated: one set and no vertical readings.")
+        warnings.append(message(QT_TR_NOOP("Repeatability was not evaluated: one set and no "
+                                           "vertical readings.")))
     worst = budget.worst_index
     return CertificateDocument(
         "polygon", "Polygon encoder test", metadata, source_name, METHOD, method_reference,

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import AnalysisKind
+from models.messages import QT_TR_NOOP, joined, message
 from models.parameters import Parameter, SettingsError
 from models.positioning.compensation import write_compensation
 from models.positioning.model import (
@@ -141,8 +142,10 @@ def _directions(parsed: ParsedReadings, warnings: list[str]) -> np.ndarray:
         directions[i] = 1.0 if stated[i] in UP else -1.0
     if not given.all():
         count = int(np.sum(~given))
-        warnings.append(f"Approach direction not stated for {count} reading(s): taken from the "
-                        "order of the targets (a repeated target is the turn of a run).")
+        warnings.append(message(QT_TR_NOOP("Approach direction not stated for {count} "
+                                           "reading(s): taken from the order of the targets (a "
+                                           "repeated target is the turn of a run)."),
+                                count=count))
     return directions
 
 
@@ -194,28 +197,37 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
     runs = _runs(parsed, targets, directions)
     result = evaluate(targets, runs, directions, deviations, parsed.row_index.copy(),
                       s["target_unit"], s["deviation_unit"], s["standard"], warnings)
-    for name, stats in (("forward", result.iso.forward), ("backward", result.iso.backward)):
+    for template, stats in (
+            (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
+                        "them out."), result.iso.forward),
+            (QT_TR_NOOP("No backward reading at target(s) {targets}: the backward figures leave "
+                        "them out."), result.iso.backward)):
         if stats is None:
             continue
         missing = result.positions[stats.runs == 0]
         if missing.size:
-            warnings.append(f"No {name} reading at target(s) {', '.join(f'{t:g}' for t in missing)}"
-                            f": the {name} figures leave them out.")
+            warnings.append(message(template, targets=", ".join(f"{t:g}" for t in missing)))
     short = {k: n for k, n in result.least_runs.items() if n < MIN_RUNS}
     if short:
-        words = {"up": "forward", "down": "backward"}
-        warnings.append(
-            "Fewer runs than ISO 230-2 asks (5 in each direction at every target): "
-            + ", ".join(f"{words[k]} {n}" for k, n in short.items())
-            + " at the least measured target. Evaluated, and flagged as the standard requires.")
+        words = {"up": QT_TR_NOOP("forward {runs}"), "down": QT_TR_NOOP("backward {runs}")}
+        parts: list = []
+        for key, n in short.items():
+            parts += ([", "] if parts else []) + [message(words[key], runs=n)]
+        warnings.append(message(
+            QT_TR_NOOP("Fewer runs than ISO 230-2 asks (5 in each direction at every target): "
+                       "{runs} at the least measured target. Evaluated, and flagged as the "
+                       "standard requires."),
+            runs=joined(parts)))
     if not result.bidirectional:
-        warnings.append("One approach direction only: the unidirectional figures are given; B, "
-                        "M, the bidirectional R and A, and VDI/DGQ 3441 U and P need both "
-                        "directions and are not evaluated.")
+        warnings.append(message(QT_TR_NOOP(
+            "One approach direction only: the unidirectional figures are given; B, M, the "
+            "bidirectional R and A, and VDI/DGQ 3441 U and P need both directions and are not "
+            "evaluated.")))
     if result.iso.forward is not None and not np.any(np.isfinite(result.iso.forward.std)) or \
             result.iso.backward is not None and not np.any(np.isfinite(result.iso.backward.std)):
-        warnings.append("No target was approached twice in the same direction: repeatability "
-                        "(R), accuracy (A) and the position scatter Ps are not evaluated.")
+        warnings.append(message(QT_TR_NOOP(
+            "No target was approached twice in the same direction: repeatability (R), accuracy "
+            "(A) and the position scatter Ps are not evaluated.")))
     return result
 
 
@@ -306,12 +318,13 @@ POSITIONING = AnalysisKind(
     check_settings=_check_units,
     presenter="widgets.positioning.presenter:PositioningPresenter",
     correction_table=_correction_table,
-    verdict=lambda r: (f"{STANDARDS[r.standard].split(' (')[0]}: "
-                       + ", ".join(f"{k} = {figure_text(r.iso.figures.get(k), r.symbol)}"
-                                   for k in (("A", "R", "B") if r.bidirectional else
-                                             tuple(f"{f}_{n}" for n, _, _ in
-                                                   r.directions_present() for f in ("A", "R"))))
-                       + ("" if r.minimum_runs_met else " — fewer than 5 runs: flagged")),
+    verdict=lambda r: joined((
+        f"{STANDARDS[r.standard].split(' (')[0]}: "
+        + ", ".join(f"{k} = {figure_text(r.iso.figures.get(k), r.symbol)}"
+                    for k in (("A", "R", "B") if r.bidirectional else
+                              tuple(f"{f}_{n}" for n, _, _ in
+                                    r.directions_present() for f in ("A", "R")))),
+        "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged")))),
     headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
                         for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
                         if k in r.iso.figures},

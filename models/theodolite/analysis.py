@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.messages import QT_TR_NOOP, message
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite.model import TheodoliteResult, analyze_run
@@ -175,11 +176,12 @@ THEODOLITE = AnalysisKind(
     certificate=theodolite_certificate,
     presenter="widgets.theodolite.presenter:TheodolitePresenter",
     positioning_rows=positioning_rows,
-    verdict=lambda r: (f"Corrected error {r.corrected_stats.min:+.2f}\" … "
-                       f"{r.corrected_stats.max:+.2f}\" (peak-to-peak "
-                       f"{r.corrected_stats.peak_to_peak:.2f}\"); the set-up contributed "
-                       f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\" "
-                       "to the raw peak-to-peak"),
+    verdict=lambda r: message(
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
+                   "contributed {share} to the raw peak-to-peak"),
+        low=f"{r.corrected_stats.min:+.2f}\"", high=f"{r.corrected_stats.max:+.2f}\"",
+        ptp=f"{r.corrected_stats.peak_to_peak:.2f}\"",
+        share=f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\""),
     headline=lambda r: {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
                         "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
     nominal_column="theta_deg",

@@ -26,6 +26,7 @@ import numpy as np
 
 from models.damped_least_squares import polish
 from models.lazy_optimize import least_squares
+from models.messages import QT_TR_NOOP, message
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats, error_stats
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
@@ -370,10 +371,9 @@ def identify_from_azimuth(
         residual_rms_arcsec=float(np.sqrt(np.mean(residuals**2))) * ARCSEC_PER_RAD,
         method="azimuth",
     )
-    ident.warnings.append(
+    ident.warnings.append(message(QT_TR_NOOP(
         "Identified from the azimuth errors: any part of the axis' own error that looks like "
-        "the set-up model (a scale error, say) is absorbed and removed from the result."
-    )
+        "the set-up model (a scale error, say) is absorbed and removed from the result.")))
     ident.warnings.extend(_separation_warnings(ident))
     return ident
 
@@ -385,12 +385,14 @@ def _separation_warnings(ident: Identification, limit: float = 0.999) -> list[st
         for j in range(i + 1, 3):
             r = corr[i, j]
             if np.isfinite(r) and abs(r) > limit:
-                out.append(
-                    f"{PARAMETER_NAMES[i]} and {PARAMETER_NAMES[j]} cannot be separated on this "
-                    f"range (correlation {r:+.4f}); widen the range of θ."
+                out.append(message(
+                    QT_TR_NOOP("{first} and {second} cannot be separated on this range "
+                               "(correlation {r}); widen the range of θ."),
+                    first=PARAMETER_NAMES[i], second=PARAMETER_NAMES[j], r=f"{r:+.4f}")
                 )
     if not np.all(np.isfinite(ident.uncertainty_deg)):
-        out.append("Some parameters are not determined by these readings (singular fit).")
+        out.append(message(QT_TR_NOOP("Some parameters are not determined by these readings "
+                                      "(singular fit).")))
     return out
 
 
@@ -551,10 +553,10 @@ def analyze_run(
     corrected = raw_error - model
     warnings = list(ident.warnings)
     if accuracy_arcsec and ident.residual_rms_arcsec > 3.0 * accuracy_arcsec:
-        warnings.append(
-            f"Residual RMS {ident.residual_rms_arcsec:.2f}\" is more than three times the "
-            f"theodolite accuracy {accuracy_arcsec:g}\": check the readings and the set-up."
-        )
+        warnings.append(message(
+            QT_TR_NOOP("Residual RMS {rms} is more than three times the theodolite accuracy "
+                       "{accuracy}: check the readings and the set-up."),
+            rms=f"{ident.residual_rms_arcsec:.2f}\"", accuracy=f"{accuracy_arcsec:g}\""))
     iso = None
     if directions is not None or np.unique(np.round(theta, 6)).size < theta.size:
         iso = iso230_evaluate(theta, corrected, directions)

@@ -1845,5 +1845,141 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>System language</source>
         <translation>系统语言</translation>
     </message>
+    <message>
+        <source>Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio and the quadrature error are identified from the Lissajous ellipse (Heydemann); the harmonics are fitted against the estimated phase, so only the part of their distortion that bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure round and is not observable without a phase reference.</source>
+        <extracomment>Channel voltages beyond this are not a read head&apos;s signals. A fit of the channels against the phase below this R² means the phase is wrong.</extracomment>
+        <translation>相位由信号估计（无相位基准）：直流偏置、幅值比和正交误差由李萨如椭圆辨识（Heydemann）；谐波按估计的相位拟合，因此只能看到其畸变中使李萨如图形弯曲的部分——光栅的纯相位畸变使图形仍为圆形，没有相位基准时无法观测。</translation>
+    </message>
+    <message>
+        <source>The θ column was not used: samples per period N was given.</source>
+        <translation>未使用 θ 列：已给出每周期采样数 N。</translation>
+    </message>
+    <message>
+        <source>Particle swarm on the first period: cost {cost} V² against {lsq} V² for least squares, {seconds} s.</source>
+        <translation>第一个周期上的粒子群算法：代价 {cost} V²，最小二乘为 {lsq} V²，耗时 {seconds} s。</translation>
+    </message>
+    <message>
+        <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
+        <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
+    </message>
+    <message>
+        <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
+        <extracomment>Autocollimator readings and face deviations beyond this are not readings of a polygon test.</extracomment>
+        <translation>{set}：未注明方向且编码器步进有正有反：按正向处理。</translation>
+    </message>
+    <message>
+        <source>The encoder counts against the face numbering (detected from the readings): face angles and deviations are taken in the encoder&apos;s counting sense.</source>
+        <translation>编码器计数方向与面号相反（由读数判断）：面角和偏差按编码器的计数方向取值。</translation>
+    </message>
+    <message>
+        <source>The encoder counts against the face numbering: face angles and deviations are taken in the encoder&apos;s counting sense.</source>
+        <translation>编码器计数方向与面号相反：面角和偏差按编码器的计数方向取值。</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} (worst case over the tilt direction); the error it induces was identified and removed.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（倾斜方向的最不利情况）；其引起的误差已辨识并扣除。</translation>
+    </message>
+    <message>
+        <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
+        <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
+    </message>
+    <message>
+        <source>RUN INVALID: closure failed. </source>
+        <translation>测量无效：闭合不合格。</translation>
+    </message>
+    <message>
+        <source>Grade {grade} (±{accuracy}) met: corrected error peak-to-peak {ptp}; </source>
+        <translation>符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
+    </message>
+    <message>
+        <source>Grade {grade} (±{accuracy}) NOT met: corrected error peak-to-peak {ptp}; </source>
+        <translation>不符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
+    </message>
+    <message>
+        <source>tilt within the allowed</source>
+        <translation>倾斜在允许范围内</translation>
+    </message>
+    <message>
+        <source>tilt ψ = {psi} exceeds {allowed}</source>
+        <translation>倾斜 ψ = {psi}，超过 {allowed}</translation>
+    </message>
+    <message>
+        <source>Set {number}</source>
+        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one.</extracomment>
+        <translation>第 {number} 组</translation>
+    </message>
+    <message>
+        <source>{set}: closure drift {drift} exceeds the limit ±{limit}: the set is invalid; repeat it.</source>
+        <translation>{set}：闭合漂移 {drift} 超过限值 ±{limit}：该组无效，请重测。</translation>
+    </message>
+    <message>
+        <source>{set}: no closure reading (the row back on its start face): drift not checked.</source>
+        <translation>{set}：没有闭合读数（回到起始面的那一行）：未检查漂移。</translation>
+    </message>
+    <message>
+        <source>{set}: vertical readings missing: pyramidal error not identified or removed.</source>
+        <translation>{set}：缺少垂直读数：未辨识也未扣除棱锥误差。</translation>
+    </message>
+    <message>
+        <source>Repeatability was not evaluated: one set and no vertical readings.</source>
+        <translation>未评定重复性：只有一组测量且没有垂直读数。</translation>
+    </message>
+    <message>
+        <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
+        <extracomment>A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
+        <translation>{count} 个读数未注明趋近方向：按目标位置的顺序确定（重复的目标位置即为一次测量的折返点）。</translation>
+    </message>
+    <message>
+        <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
+        <translation>目标位置 {targets} 没有正向读数：正向结果不包括这些位置。</translation>
+    </message>
+    <message>
+        <source>No backward reading at target(s) {targets}: the backward figures leave them out.</source>
+        <translation>目标位置 {targets} 没有反向读数：反向结果不包括这些位置。</translation>
+    </message>
+    <message>
+        <source>forward {runs}</source>
+        <translation>正向 {runs} 次</translation>
+    </message>
+    <message>
+        <source>backward {runs}</source>
+        <translation>反向 {runs} 次</translation>
+    </message>
+    <message>
+        <source>Fewer runs than ISO 230-2 asks (5 in each direction at every target): {runs} at the least measured target. Evaluated, and flagged as the standard requires.</source>
+        <translation>测量次数少于 ISO 230-2 的要求（每个目标位置每个方向 5 次）：测量最少的目标位置为 {runs}。已评定，并按标准要求加以标注。</translation>
+    </message>
+    <message>
+        <source>One approach direction only: the unidirectional figures are given; B, M, the bidirectional R and A, and VDI/DGQ 3441 U and P need both directions and are not evaluated.</source>
+        <translation>只有一个趋近方向：给出单向结果；B、M、双向 R 和 A 以及 VDI/DGQ 3441 的 U 和 P 需要两个方向，未评定。</translation>
+    </message>
+    <message>
+        <source>No target was approached twice in the same direction: repeatability (R), accuracy (A) and the position scatter Ps are not evaluated.</source>
+        <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
+    </message>
+    <message>
+        <source> — fewer than 5 runs: flagged</source>
+        <translation> — 少于 5 次测量：已标注</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）；安装误差对原始峰峰值的贡献为 {share}</translation>
+    </message>
+    <message>
+        <source>Identified from the azimuth errors: any part of the axis&apos; own error that looks like the set-up model (a scale error, say) is absorbed and removed from the result.</source>
+        <translation>由方位角误差辨识：轴系自身误差中与安装误差模型相似的部分（例如比例误差）会被吸收并从结果中扣除。</translation>
+    </message>
+    <message>
+        <source>{first} and {second} cannot be separated on this range (correlation {r}); widen the range of θ.</source>
+        <translation>在此范围内 {first} 与 {second} 无法分离（相关系数 {r}）；请扩大 θ 的范围。</translation>
+    </message>
+    <message>
+        <source>Some parameters are not determined by these readings (singular fit).</source>
+        <translation>这些读数无法确定部分参数（拟合奇异）。</translation>
+    </message>
+    <message>
+        <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
+        <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
+    </message>
 </context>
 </TS>
