@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "Message", "joined", "message"]
+__all__ = ["QT_TR_NOOP", "Message", "joined", "lines", "message"]
 
 
 def QT_TR_NOOP(text: str) -> str:  # noqa: N802 - the name lupdate looks for
@@ -52,3 +52,11 @@ def message(template: str, **figures: Any) -> Message:
 def joined(parts: Iterable[Any]) -> Message:
     """Parts (messages or plain text) one after another, each translated on its own."""
     return Message("", None, tuple(p for p in parts if p))
+
+
+def lines(parts: Iterable[Any]) -> Message:
+    """Parts one to a line (a summary)."""
+    out: list[Any] = []
+    for part in parts:
+        out += (["\n"] if out else []) + [part]
+    return joined(out)

@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
     QGroupBox,
     QLabel,
     QLineEdit,
+    QPlainTextEdit,
     QTabWidget,
     QWidget,
 )
@@ -39,7 +40,7 @@ KEPT = {
 }
 # widgets whose text is the user's or the result's (readings, names typed, the models'
 # narrative of the result), not the window's
-SKIPPED_NAMES = {"summary", "figures", "per_target"}  # the full text: English still
+SKIPPED_NAMES = {"figures", "per_target"}  # numbers and the figures named by the models
 
 
 def english_words(text: str) -> set[str]:
@@ -93,6 +94,8 @@ def window_texts(window, extra: list[QWidget] = ()) -> dict[str, str]:
                 add(widget.title(), "group")
             elif isinstance(widget, QLineEdit):
                 add(widget.placeholderText(), "placeholder")
+            elif isinstance(widget, QPlainTextEdit) and widget.isReadOnly():
+                add(widget.toPlainText(), "result text")
             elif isinstance(widget, QComboBox):
                 for i in range(widget.count()):
                     add(widget.itemText(i), "choice")

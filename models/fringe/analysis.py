@@ -27,7 +27,7 @@ from models.fringe.model import (
 from models.fringe.phase import EllipseFit, fit_ellipse
 from models.fringe.report import fringe_certificate
 from models.fringe.result import FringeResult
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 
@@ -315,34 +315,46 @@ def _fit_line(name: str, fit: ChannelFit) -> str:
     return "  " + ", ".join(parts)
 
 
-_SOURCE_TEXT = {"samples_per_period": "phase from equal steps, {n} samples per period",
-                "theta_column": "phase from the θ column",
-                "estimated": "phase estimated from the signals"}
+_SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} samples per period"),
+                "theta_column": QT_TR_NOOP("phase from the θ column"),
+                "estimated": QT_TR_NOOP("phase estimated from the signals")}
 
 
 def summary(result: FringeResult) -> str:
     period, sym = result.period_length, result.unit_symbol
     raw, comp = result.raw_error, result.compensated_error
-    scale = (f"L = {result.lines_per_rev} (period {period:.2f}{sym})" if result.unit == "arcsec"
-             else f"period {period:g} nm")
-    source = _SOURCE_TEXT[result.phase_source].format(n=result.samples_per_period)
-    lines = [
-        f"{raw.size} samples, {source}, {scale}, fitted by "
-        f"{'least squares' if result.method == 'lsq' else 'PSO'}"
-        + (f"; the motion reversed {result.reversals} time(s)" if result.reversals else ""),
+    scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
+                     period=f"{period:.2f}{sym}") if result.unit == "arcsec"
+             else message(QT_TR_NOOP("period {period} nm"), period=f"{period:g}"))
+    source = message(_SOURCE_TEXT[result.phase_source], n=result.samples_per_period)
+    out = [
+        joined((message(QT_TR_NOOP("{n} samples, {source}, {scale}, fitted by least squares")
+                        if result.method == "lsq" else
+                        QT_TR_NOOP("{n} samples, {source}, {scale}, fitted by PSO"),
+                        n=raw.size, source=source, scale=scale),
+                message(QT_TR_NOOP("; the motion reversed {count} time(s)"),
+                        count=result.reversals) if result.reversals else "")),
         _fit_line("A", result.sin_fit) + f"; R² = {result.sin_fit.r_squared:.8f}",
         _fit_line("B", result.cos_fit) + f"; R² = {result.cos_fit.r_squared:.8f}",
-        f"Offsets {1e3 * result.sin_fit.offset:+.2f} / {1e3 * result.cos_fit.offset:+.2f} mV, "
-        f"amplitude ratio {result.amplitude_ratio:.4f}, quadrature error "
-        f"{result.quadrature_error_deg:+.3f}°",
-        f"Interpolation error as found: {raw.min():+.3f}{sym} … {raw.max():+.3f}{sym} "
-        f"(peak-to-peak {np.ptp(raw):.3f}{sym}, {np.ptp(raw) / period * 100:.2f} % of a period)",
-        f"After compensation ({result.table.size}-entry table, zero at its "
-        f"{'mean' if result.table_zero == 'mean' else 'phase 0'}): {comp.min():+.3f}{sym} … "
-        f"{comp.max():+.3f}{sym} (peak-to-peak {np.ptp(comp):.3f}{sym}, "
-        f"{np.ptp(comp) / period * 100:.2f} %)",
+        message(QT_TR_NOOP("Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error "
+                           "{quadrature}°"),
+                sin=f"{1e3 * result.sin_fit.offset:+.2f}", cos=f"{1e3 * result.cos_fit.offset:+.2f}",
+                ratio=f"{result.amplitude_ratio:.4f}",
+                quadrature=f"{result.quadrature_error_deg:+.3f}"),
+        message(QT_TR_NOOP("Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, "
+                           "{share} % of a period)"),
+                low=f"{raw.min():+.3f}{sym}", high=f"{raw.max():+.3f}{sym}",
+                ptp=f"{np.ptp(raw):.3f}{sym}", share=f"{np.ptp(raw) / period * 100:.2f}"),
+        message(QT_TR_NOOP("After compensation ({entries}-entry table, zero at its mean): {low} … "
+                           "{high} (peak-to-peak {ptp}, {share} %)")
+                if result.table_zero == "mean" else
+                QT_TR_NOOP("After compensation ({entries}-entry table, zero at its phase 0): "
+                           "{low} … {high} (peak-to-peak {ptp}, {share} %)"),
+                entries=result.table.size, low=f"{comp.min():+.3f}{sym}",
+                high=f"{comp.max():+.3f}{sym}", ptp=f"{np.ptp(comp):.3f}{sym}",
+                share=f"{np.ptp(comp) / period * 100:.2f}"),
     ]
-    return "\n".join(lines)
+    return lines(out)
 
 
 def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
@@ -290,16 +290,21 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     if tilt is None:
-        verdict = "Tilt not identified (no vertical readings)."
+        verdict = message(QT_TR_NOOP("Tilt not identified (no vertical readings)."))
     elif tilt.psi_arcsec <= allowed:
-        verdict = (f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" is within the {allowed:.0f}\" "
-                   f"allowed for grade {grade} (worst case over the tilt direction; the seed's "
-                   f"ω = 90° figure is {allowed_seed:.0f}\"): the fixture is fine.")
+        verdict = message(
+            QT_TR_NOOP("Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade "
+                       "{grade} (worst case over the tilt direction; the seed's ω = 90° figure "
+                       "is {seed}): the fixture is fine."),
+            psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
+            seed=f"{allowed_seed:.0f}\"")
     else:
-        verdict = (f"Pyramidal tilt ψ = {tilt.psi_arcsec:.1f}\" exceeds the {allowed:.0f}\" allowed "
-                   f"for grade {grade} (worst case over the tilt direction; the seed's ω = 90° "
-                   f"figure is {allowed_seed:.0f}\"): {tilt_advice(tilt, faces, counting)}; then "
-                   "re-zero and measure again.")
+        verdict = message(
+            QT_TR_NOOP("Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} "
+                       "(worst case over the tilt direction; the seed's ω = 90° figure is "
+                       "{seed}): {advice}; then re-zero and measure again."),
+            psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
+            seed=f"{allowed_seed:.0f}\"", advice=tilt_advice(tilt, faces, counting))
         warnings.append(message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} "
                        "(worst case over the tilt direction); the error it induces was "
@@ -373,41 +378,57 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
 
 def summary(result: PolygonResult) -> str:
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
-    counting = "" if result.counting > 0 else ", encoder counting against the face numbering"
-    lines = [f"{result.faces}-face polygon, {len(result.sets)} set(s), grade {result.grade} "
-             f"(±{tol:g}\"){counting}; zero: face {result.zero_face} of set 1"
-             + ("" if result.valid else "   *** RUN INVALID: closure failed ***")]
+    out = [joined((
+        message(QT_TR_NOOP("{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})"),
+                faces=result.faces, sets=len(result.sets), grade=result.grade,
+                accuracy=f"±{tol:g}\""),
+        "" if result.counting > 0 else
+        message(QT_TR_NOOP(", encoder counting against the face numbering")),
+        message(QT_TR_NOOP("; zero: face {face} of set 1"), face=result.zero_face),
+        "" if result.valid else message(QT_TR_NOOP("   *** RUN INVALID: closure failed ***"))))]
     for i, r in enumerate(result.sets, 1):
-        closure = "not measured" if r.closure_drift_arcsec is None else (
-            f"drift {r.closure_drift_arcsec:+.2f}\" {'ok' if r.closure_ok else 'FAILED'}")
+        closure = message(QT_TR_NOOP("not measured")) if r.closure_drift_arcsec is None else (
+            message(QT_TR_NOOP("drift {drift} ok") if r.closure_ok else
+                    QT_TR_NOOP("drift {drift} FAILED"), drift=f"{r.closure_drift_arcsec:+.2f}\""))
         tilt = (f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
-                f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°") if r.tilt else "no tilt"
-        lines.append(f"  set {i} ({'+' if r.direction > 0 else '−'}, from face {r.start_face}): "
-                     f"closure {closure}; {tilt}; pyramidal correction up to "
-                     f"{np.max(np.abs(r.pyramidal_error_arcsec)):.3f}\"")
-    lines.append(f"Corrected error {s.min:+.2f}\" … {s.max:+.2f}\" (peak-to-peak "
-                 f"{s.peak_to_peak:.2f}\"): accuracy ±{tol:g}\" "
-                 f"{'met' if result.accuracy_ok else 'NOT met'} (rule: half the peak-to-peak ≤ "
-                 "accuracy)")
+                f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°") if r.tilt else \
+            message(QT_TR_NOOP("no tilt"))
+        out.append(message(
+            QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; "
+                       "pyramidal correction up to {largest}"),
+            set=i, sense="+" if r.direction > 0 else "−", face=r.start_face, closure=closure,
+            tilt=tilt, largest=f"{np.max(np.abs(r.pyramidal_error_arcsec)):.3f}\""))
+    out.append(message(
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
+                   "met (rule: half the peak-to-peak ≤ accuracy)") if result.accuracy_ok else
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
+                   "NOT met (rule: half the peak-to-peak ≤ accuracy)"),
+        low=f"{s.min:+.2f}\"", high=f"{s.max:+.2f}\"", ptp=f"{s.peak_to_peak:.2f}\"",
+        accuracy=f"{tol:g}\""))
     h = result.harmonics
     if h.amplitude.size > 2:
-        lines.append(f"Harmonics: 1st (eccentricity) {h.amplitude[1]:.3f}\", "
-                     f"2nd (ellipticity) {h.amplitude[2]:.3f}\"")
+        out.append(message(QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) "
+                                      "{second}"),
+                           first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""))
     if len(result.sets) > 1:
-        jjf = f"JJF 1115: division error {np.ptp(result.mean_corrected_arcsec):.2f}\""
+        jjf = [message(QT_TR_NOOP("JJF 1115: division error {value}"),
+                       value=f"{np.ptp(result.mean_corrected_arcsec):.2f}\"")]
         if result.repeatability_arcsec is not None:
-            jjf += f", repeatability {np.max(result.repeatability_arcsec):.2f}\""
+            jjf.append(message(QT_TR_NOOP(", repeatability {value}"),
+                               value=f"{np.max(result.repeatability_arcsec):.2f}\""))
         else:
-            jjf += ", repeatability not evaluated (no direction was measured twice)"
+            jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
+                                          "measured twice)")))
         if result.reversal_arcsec is not None:
-            jjf += (f", reversal error {np.max(np.abs(result.reversal_arcsec)):.2f}\" "
-                    f"(mean {result.mean_reversal_arcsec:+.2f}\")")
-        lines.append(jjf)
+            jjf.append(message(QT_TR_NOOP(", reversal error {value} (mean {mean})"),
+                               value=f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
+                               mean=f"{result.mean_reversal_arcsec:+.2f}\""))
+        out.append(joined(jjf))
         figs = iso230_figures(result)
-        lines.append("ISO 230-2: " + ", ".join(
+        out.append("ISO 230-2: " + ", ".join(
             f"{k} = {v:.2f}\"" for k, v in figs.items() if math.isfinite(v)))
-    lines.append(result.tilt_verdict)
-    return "\n".join(lines)
+    out.append(result.tilt_verdict)
+    return lines(out)
 
 
 def positioning_rows(result: PolygonResult) -> list[list[str]]:

@@ -263,9 +263,12 @@ def tilt_advice(tilt: TiltFit, faces: int, counting: int) -> str:
     nominal = (counting * tilt.omega_deg) % 360.0
     high = int(round(nominal / step)) % faces + 1
     low = int(round(((nominal + 180.0) % 360.0) / step)) % faces + 1
-    return (f"the vertical reading is highest at face {high} and lowest at face {low} "
-            f"(spread 2ψ = {2 * tilt.psi_arcsec:.0f}\"): tilt the polygon on its seat so that "
-            f"face {high} comes down and face {low} up by about {tilt.psi_arcsec:.0f}\" each")
+    return message(QT_TR_NOOP("the vertical reading is highest at face {high} and lowest at "
+                              "face {low} (spread 2ψ = {spread}): tilt the polygon on its seat "
+                              "so that face {high} comes down and face {low} up by about {psi} "
+                              "each"),
+                   high=high, low=low, spread=f"{2 * tilt.psi_arcsec:.0f}\"",
+                   psi=f"{tilt.psi_arcsec:.0f}\"")
 
 
 @dataclass

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import AnalysisKind
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
 from models.positioning.compensation import write_compensation
 from models.positioning.model import (
@@ -278,22 +278,32 @@ def summary(result: PositioningResult) -> str:
     sym = result.symbol
     f = result.iso.figures
     present = [name for name, _, _ in result.directions_present()]
-    dirs = " and ".join("forward" if n == "up" else "backward" for n in present)
-    runs = ", ".join(f"{'forward' if k == 'up' else 'backward'} ≥ {n}"
-                     for k, n in result.least_runs.items())
-    lines = [f"{result.positions.size} targets {result.positions.min():g}…"
-             f"{result.positions.max():g}{result.target_symbol}, {result.deviations.size} "
-             f"readings, {dirs} (runs per target: {runs})"
-             + ("" if result.minimum_runs_met else "   *** fewer than 5 runs: flagged ***")]
+    dirs = (message(QT_TR_NOOP("forward and backward")) if present == ["up", "down"] else
+            message(QT_TR_NOOP("forward")) if present == ["up"] else
+            message(QT_TR_NOOP("backward")))
+    runs: list = []
+    for key, n in result.least_runs.items():
+        runs += ([", "] if runs else []) + [message(
+            QT_TR_NOOP("forward ≥ {runs}") if key == "up" else QT_TR_NOOP("backward ≥ {runs}"),
+            runs=n)]
+    out = [joined((
+        message(QT_TR_NOOP("{targets} targets {first}…{last}, {readings} readings, {directions} "
+                           "(runs per target: {runs})"),
+                targets=result.positions.size, first=f"{result.positions.min():g}",
+                last=f"{result.positions.max():g}{result.target_symbol}",
+                readings=result.deviations.size, directions=dirs, runs=joined(runs)),
+        "" if result.minimum_runs_met else
+        message(QT_TR_NOOP("   *** fewer than 5 runs: flagged ***"))))]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
-    lines.append("ISO 230-2: " + ", ".join(f"{k} = {figure_text(f.get(k), sym)}" for k in keys))
+    out.append("ISO 230-2: " + ", ".join(f"{k} = {figure_text(f.get(k), sym)}" for k in keys))
     v = result.vdi
-    lines.append("VDI/DGQ 3441: " + ", ".join(
+    out.append("VDI/DGQ 3441: " + ", ".join(
         f"{k} = {figure_text(val, sym)}" for k, val in v.as_dict().items()))
-    lines.append(f"Standard applied: {STANDARDS[result.standard]}. "
-                 "Compensation = −mean deviation (Export compensation table… below the set-up).")
-    return "\n".join(lines)
+    out.append(message(QT_TR_NOOP("Standard applied: {standard}. Compensation = −mean deviation "
+                                  "(Export compensation table… below the set-up)."),
+                       standard=STANDARDS[result.standard]))
+    return lines(out)
 
 
 def _correction_table(result: PositioningResult, settings: Mapping[str, Any], path: str) -> str:

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite.model import TheodoliteResult, analyze_run
@@ -145,21 +145,30 @@ def summary(result: TheodoliteResult) -> str:
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
     s, c, r = ident.setup, result.corrected_stats, result.raw_stats
-    lines = [
-        f"Set-up identified from the {ident.method} readings ({r.n} points, "
-        f"reference θ = {result.reference_theta_deg:g}°):",
-        f"  axis tilt       ψ = {s.psi_deg:.4f}° ± {u[0]:.2f}\"",
-        f"  tilt direction  α = {s.alpha_deg:.4f}° ± {u[1]:.2f}\"",
-        f"  mirror normal   β = {s.beta_deg:.4f}° ± {u[2]:.2f}\"",
-        f"  R² = {ident.r_squared:.8f}, residual RMS = {ident.residual_rms_arcsec:.3f}\"",
-        f"Raw error        {r.min:+.2f}\" … {r.max:+.2f}\" (peak-to-peak {r.peak_to_peak:.2f}\")",
-        f"Corrected error  {c.min:+.2f}\" … {c.max:+.2f}\" (peak-to-peak {c.peak_to_peak:.2f}\", "
-        f"RMS {c.rms:.2f}\")",
+    out = [
+        message(QT_TR_NOOP("Set-up identified from the elevation readings ({n} points, "
+                           "reference θ = {theta}°):") if ident.method == "elevation" else
+                QT_TR_NOOP("Set-up identified from the azimuth readings ({n} points, "
+                           "reference θ = {theta}°):"),
+                n=r.n, theta=f"{result.reference_theta_deg:g}"),
+        message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"), value=f"{s.psi_deg:.4f}",
+                u=f"{u[0]:.2f}\""),
+        message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"), value=f"{s.alpha_deg:.4f}",
+                u=f"{u[1]:.2f}\""),
+        message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"), value=f"{s.beta_deg:.4f}",
+                u=f"{u[2]:.2f}\""),
+        message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
+                rms=f"{ident.residual_rms_arcsec:.3f}\""),
+        message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),
+                low=f"{r.min:+.2f}\"", high=f"{r.max:+.2f}\"", ptp=f"{r.peak_to_peak:.2f}\""),
+        message(QT_TR_NOOP("Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})"),
+                low=f"{c.min:+.2f}\"", high=f"{c.max:+.2f}\"", ptp=f"{c.peak_to_peak:.2f}\"",
+                rms=f"{c.rms:.2f}\""),
     ]
     if result.iso230 is not None:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
-        lines.append(f"ISO 230-2: {figs}")
-    return "\n".join(lines)
+        out.append(f"ISO 230-2: {figs}")
+    return lines(out)
 
 
 THEODOLITE = AnalysisKind(

@@ -1859,6 +1859,54 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>第一个周期上的粒子群算法：代价 {cost} V²，最小二乘为 {lsq} V²，耗时 {seconds} s。</translation>
     </message>
     <message>
+        <source>phase from equal steps, {n} samples per period</source>
+        <translation>相位取自等间隔采样，每周期 {n} 个</translation>
+    </message>
+    <message>
+        <source>phase from the θ column</source>
+        <translation>相位取自 θ 列</translation>
+    </message>
+    <message>
+        <source>phase estimated from the signals</source>
+        <translation>相位由信号估计</translation>
+    </message>
+    <message>
+        <source>L = {lines} (period {period})</source>
+        <translation>L = {lines}（周期 {period}）</translation>
+    </message>
+    <message>
+        <source>period {period} nm</source>
+        <translation>周期 {period} nm</translation>
+    </message>
+    <message>
+        <source>{n} samples, {source}, {scale}, fitted by least squares</source>
+        <translation>{n} 个采样，{source}，{scale}，最小二乘拟合</translation>
+    </message>
+    <message>
+        <source>{n} samples, {source}, {scale}, fitted by PSO</source>
+        <translation>{n} 个采样，{source}，{scale}，粒子群拟合</translation>
+    </message>
+    <message>
+        <source>; the motion reversed {count} time(s)</source>
+        <translation>；运动反向 {count} 次</translation>
+    </message>
+    <message>
+        <source>Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error {quadrature}°</source>
+        <translation>直流偏置 {sin} / {cos} mV，幅值比 {ratio}，正交误差 {quadrature}°</translation>
+    </message>
+    <message>
+        <source>Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, {share} % of a period)</source>
+        <translation>补偿前细分误差：{low} … {high}（峰峰值 {ptp}，一个周期的 {share} %）</translation>
+    </message>
+    <message>
+        <source>After compensation ({entries}-entry table, zero at its mean): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
+        <translation>补偿后（{entries} 项修正表，以平均值为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
+    </message>
+    <message>
+        <source>After compensation ({entries}-entry table, zero at its phase 0): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
+        <translation>补偿后（{entries} 项修正表，以相位 0 处为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
+    </message>
+    <message>
         <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
         <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
     </message>
@@ -1876,12 +1924,88 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>编码器计数方向与面号相反：面角和偏差按编码器的计数方向取值。</translation>
     </message>
     <message>
+        <source>Tilt not identified (no vertical readings).</source>
+        <translation>未辨识倾斜（没有垂直读数）。</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} (worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}): the fixture is fine.</source>
+        <translation>棱锥倾斜 ψ = {psi}，在 {grade} 级允许的 {allowed} 以内（倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}）：安装良好。</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} (worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}): {advice}; then re-zero and measure again.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}）：{advice}；然后重新置零并重测。</translation>
+    </message>
+    <message>
         <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} (worst case over the tilt direction); the error it induces was identified and removed.</source>
         <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（倾斜方向的最不利情况）；其引起的误差已辨识并扣除。</translation>
     </message>
     <message>
         <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
         <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
+    </message>
+    <message>
+        <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
+        <translation>{faces} 面棱体，{sets} 组，{grade} 级（{accuracy}）</translation>
+    </message>
+    <message>
+        <source>, encoder counting against the face numbering</source>
+        <translation>，编码器计数方向与面号相反</translation>
+    </message>
+    <message>
+        <source>; zero: face {face} of set 1</source>
+        <translation>；零位：第 1 组第 {face} 面</translation>
+    </message>
+    <message>
+        <source>   *** RUN INVALID: closure failed ***</source>
+        <translation>   *** 测量无效：闭合不合格 ***</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>drift {drift} ok</source>
+        <translation>漂移 {drift}，合格</translation>
+    </message>
+    <message>
+        <source>drift {drift} FAILED</source>
+        <translation>漂移 {drift}，不合格</translation>
+    </message>
+    <message>
+        <source>no tilt</source>
+        <translation>无倾斜数据</translation>
+    </message>
+    <message>
+        <source>  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; pyramidal correction up to {largest}</source>
+        <translation>  第 {set} 组（{sense}，自第 {face} 面）：闭合 {closure}；{tilt}；棱锥误差修正最大 {largest}</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} met (rule: half the peak-to-peak ≤ accuracy)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} NOT met (rule: half the peak-to-peak ≤ accuracy)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：不符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
+    </message>
+    <message>
+        <source>Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}</source>
+        <translation>谐波：1 次（偏心）{first}，2 次（椭圆度）{second}</translation>
+    </message>
+    <message>
+        <source>JJF 1115: division error {value}</source>
+        <translation>JJF 1115：分度误差 {value}</translation>
+    </message>
+    <message>
+        <source>, repeatability {value}</source>
+        <translation>，重复性 {value}</translation>
+    </message>
+    <message>
+        <source>, repeatability not evaluated (no direction was measured twice)</source>
+        <translation>，未评定重复性（没有任何方向测量两次）</translation>
+    </message>
+    <message>
+        <source>, reversal error {value} (mean {mean})</source>
+        <translation>，反向差 {value}（平均 {mean}）</translation>
     </message>
     <message>
         <source>RUN INVALID: closure failed. </source>
@@ -1907,6 +2031,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>Set {number}</source>
         <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one.</extracomment>
         <translation>第 {number} 组</translation>
+    </message>
+    <message>
+        <source>the vertical reading is highest at face {high} and lowest at face {low} (spread 2ψ = {spread}): tilt the polygon on its seat so that face {high} comes down and face {low} up by about {psi} each</source>
+        <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
     </message>
     <message>
         <source>{set}: closure drift {drift} exceeds the limit ±{limit}: the set is invalid; repeat it.</source>
@@ -1958,8 +2086,68 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
     </message>
     <message>
+        <source>forward</source>
+        <translation>正向</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <source>forward ≥ {runs}</source>
+        <translation>正向 ≥ {runs}</translation>
+    </message>
+    <message>
+        <source>backward ≥ {runs}</source>
+        <translation>反向 ≥ {runs}</translation>
+    </message>
+    <message>
+        <source>{targets} targets {first}…{last}, {readings} readings, {directions} (runs per target: {runs})</source>
+        <translation>{targets} 个目标位置 {first}…{last}，{readings} 个读数，{directions}（每个目标位置的测量次数：{runs}）</translation>
+    </message>
+    <message>
+        <source>   *** fewer than 5 runs: flagged ***</source>
+        <translation>   *** 少于 5 次测量：已标注 ***</translation>
+    </message>
+    <message>
+        <source>Standard applied: {standard}. Compensation = −mean deviation (Export compensation table… below the set-up).</source>
+        <translation>采用的标准：{standard}。补偿值 = −平均偏差（设置下方的“导出补偿表…”）。</translation>
+    </message>
+    <message>
         <source> — fewer than 5 runs: flagged</source>
         <translation> — 少于 5 次测量：已标注</translation>
+    </message>
+    <message>
+        <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
+        <translation>由俯仰角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
+    </message>
+    <message>
+        <source>Set-up identified from the azimuth readings ({n} points, reference θ = {theta}°):</source>
+        <translation>由方位角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
+    </message>
+    <message>
+        <source>  axis tilt       ψ = {value}° ± {u}</source>
+        <translation>  轴系倾斜       ψ = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  tilt direction  α = {value}° ± {u}</source>
+        <translation>  倾斜方向       α = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  mirror normal   β = {value}° ± {u}</source>
+        <translation>  反射镜法线     β = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  R² = {r2}, residual RMS = {rms}</source>
+        <translation>  R² = {r2}，残差均方根 = {rms}</translation>
+    </message>
+    <message>
+        <source>Raw error        {low} … {high} (peak-to-peak {ptp})</source>
+        <translation>原始误差         {low} … {high}（峰峰值 {ptp}）</translation>
+    </message>
+    <message>
+        <source>Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})</source>
+        <translation>修正后误差       {low} … {high}（峰峰值 {ptp}，均方根 {rms}）</translation>
     </message>
     <message>
         <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
