@@ -10,6 +10,7 @@ import argparse
 import json
 import math
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -17,6 +18,7 @@ from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
+from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 from models.registry import KINDS
@@ -162,12 +164,20 @@ def run_analyze(argv: list[str]) -> int:
             return EXIT_BAD_INPUT
     try:
         mapping = _column_mapping(args.columns)
-        table = read_table(args.file)
-        rows = map_columns(table, kind.columns, mapping)
     except TableImportError as exc:
         _say(f"{exc}")
         return EXIT_BAD_INPUT
-    parsed = ReadingsSheet(kind.columns, rows).parse()
+    # a file of plain numbers is read by numpy in one pass; anything else (or a file that
+    # is not what it claims) by the tolerant reader, which names the row and the cell
+    parsed = read_numeric(args.file, kind.columns, mapping)
+    table = None
+    if parsed is None:
+        try:
+            table, rows = _read_rows(args.file, kind, mapping)
+        except TableImportError as exc:
+            _say(f"{exc}")
+            return EXIT_BAD_INPUT
+        parsed = ReadingsSheet(kind.columns, rows).parse()
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]
@@ -201,8 +211,16 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(f"{what[0].upper() + what[1:]} written to {args.table}")
     if args.certificate or args.results:
-        return _export(args, kind, result, settings, rows)
+        # the register keeps the readings as written: read as text when one is issued
+        return _export(args, kind, result, settings,
+                       (lambda: rows) if table is not None else
+                       (lambda: _read_rows(args.file, kind, mapping)[1]))
     return 0
+
+
+def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
+    table = read_table(path)
+    return table, map_columns(table, kind.columns, mapping)
 
 
 def _read_metadata(path: str | None) -> CertificateMetadata:
@@ -249,7 +267,7 @@ def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
 
 
 def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
-            rows: list[list[str]]) -> int:
+            rows: Callable[[], list[list[str]]]) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.certificate_issue import draft_reasons
     from app.writers.certificate_pdf import write_certificate_pdf
@@ -266,7 +284,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         return EXIT_BAD_INPUT
     try:
         if args.certificate and not draft_reasons(metadata):
-            record = _issue(args, kind, result, metadata, settings, rows)
+            record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT
         elif args.certificate:

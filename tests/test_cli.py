@@ -168,3 +168,20 @@ def test_unit_option_converts_the_summary_and_the_results(capsys, samples_dir, t
         meta_a["Expanded uncertainty U, largest (\")"] / 3.6)
     code, out, _ = run_cli(capsys, "theodolite", sample, "--unit", "mdeg", "--json")
     assert "corrected_error_arcsec" in json.loads(out)
+
+
+@pytest.mark.parametrize("name", ["fringe_sample.csv", "fringe_interferometer_sample.csv"])
+def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, name):
+    """A record of plain numbers through the numeric fast reader and through the tolerant
+    reader: the same JSON, figure for figure."""
+    import app.cli
+    from models.readings.numeric_csv import read_numeric
+    from models.registry import KINDS
+
+    sample = str(samples_dir / name)
+    assert read_numeric(sample, KINDS["fringe"].columns) is not None  # the fast path is taken
+    code, fast, _ = run_cli(capsys, "fringe", sample, "--json")
+    assert code == 0
+    monkeypatch.setattr(app.cli, "read_numeric", lambda *a, **k: None)
+    code, slow, _ = run_cli(capsys, "fringe", sample, "--json")
+    assert code == 0 and json.loads(fast) == json.loads(slow)

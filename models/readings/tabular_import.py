@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import io
 import re
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -80,11 +81,13 @@ def _sniff_delimiter(text: str) -> str:
     lines = [ln for ln in text[:65536].splitlines() if ln.strip()][:20]  # not all 1M lines
     best, best_score = ",", -1
     for delim in ("\t", ";", ","):
-        counts = [ln.count(delim) for ln in lines]
-        if not counts or min(counts) == 0:
+        counts = [c for c in (ln.count(delim) for ln in lines) if c]
+        if not counts:
             continue
-        # the delimiter appears the same number of times on most lines
-        score = sum(1 for c in counts if c == counts[0]) * 10 + min(counts)
+        # the delimiter appears the same number of times on most lines (a title line above
+        # the table may have none: it does not count against the table's delimiter)
+        usual = Counter(counts).most_common(1)[0][0]
+        score = sum(1 for c in counts if c == usual) * 10 + usual
         if score > best_score:
             best, best_score = delim, score
     return best
@@ -138,6 +141,11 @@ def read_table(path: str | Path) -> RawTable:
         grid = _read_csv(text, delim, source)
         if delim == ";":
             grid = [[_fix_decimal_comma(c) for c in r] for r in grid]
+    return table_from_grid(grid, source)
+
+
+def table_from_grid(grid: list[list[str]], source: str) -> RawTable:
+    """The cells of a file with its header row found (if it has one) and each row's line."""
     filled = [i for i, row in enumerate(grid) if any(c.strip() for c in row)]
     if not filled:
         raise TableImportError(f"{source}: the file holds no rows")
@@ -280,6 +288,17 @@ def map_columns(table: RawTable, columns: Sequence[Column],
     if table.header is None:
         width = len(columns)
         return [(list(r) + [""] * width)[:width] for r in table.rows]
+    positions = column_positions(table, columns, mapping)
+    out = []
+    for row in table.rows:
+        out.append([row[p].strip() if p is not None and p < len(row) else "" for p in positions])
+    return out
+
+
+def column_positions(table: RawTable, columns: Sequence[Column],
+                     mapping: dict[str, str] | None = None) -> list[int | None]:
+    """Where each of ``columns`` is in ``table`` (which has a header), found as
+    :func:`map_columns` finds it; raises MissingColumnError naming a missing column."""
     positions = match_header(table.header, columns)
     if mapping:  # the user's choice: column key (or title) -> the file's header text
         positions = _apply_mapping(table, columns, positions, mapping)
@@ -297,7 +316,4 @@ def map_columns(table: RawTable, columns: Sequence[Column],
                 f"{','.join(c.key for c in columns)} (or their names, e.g. "
                 f"{column.title!r}{', ' + repr(column.aliases[0]) if column.aliases else ''}); "
                 f"the file's header is {','.join(table.header)[:200]}", table)
-    out = []
-    for row in table.rows:
-        out.append([row[p].strip() if p is not None and p < len(row) else "" for p in positions])
-    return out
+    return positions
