@@ -18,6 +18,7 @@ from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
+from models.messages import QT_TR_NOOP, catalogue, rendered
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -58,6 +59,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--unit", choices=sorted(ANGLE_UNITS), default="arcsec",
                    help="angle unit of the printed summary and of --results (arcsec, urad or "
                         "mdeg); JSON and certificates keep the unit of the evaluation")
+    p.add_argument("--language", choices=("en", "zh_CN"), default="en",
+                   help="language of the printed summary and warnings (zh_CN: Simplified "
+                        "Chinese); messages about bad input, JSON and files stay as they are")
     p.add_argument("--zenith", action="store_true",
                    help="theodolite: the vertical column is the zenith angle V (same as "
                         "--vertical-reading zenith)")
@@ -196,10 +200,13 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
                          + "\n")
     else:
-        summary = text_in_unit(kind.summary(result), ANGLE_UNITS[args.unit])
-        sys.stdout.write(f"{kind.title}: {args.file}\n{summary}\n")
+        say = _translation(args.language)
+        summary = text_in_unit(rendered(kind.summary(result), say), ANGLE_UNITS[args.unit])
+        sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
         for warning in getattr(result, "warnings", []):
-            sys.stdout.write(f"Warning: {warning}\n")
+            warning = text_in_unit(rendered(warning, say), ANGLE_UNITS[args.unit])
+            sys.stdout.write(say(QT_TR_NOOP("Warning: {warning}")).format(warning=warning)
+                             + "\n")
     if args.table:
         try:
             what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table)
@@ -216,6 +223,17 @@ def run_analyze(argv: list[str]) -> int:
                        (lambda: rows) if table is not None else
                        (lambda: _read_rows(args.file, kind, mapping)[1]))
     return 0
+
+
+TRANSLATIONS = Path(__file__).resolve().parents[1] / "resources" / "translations"
+
+
+def _translation(language: str) -> Callable[[str], str]:
+    """English → ``language`` from the window's own catalogue (read without Qt)."""
+    if language == "en":
+        return lambda text: text
+    words = catalogue(TRANSLATIONS / f"anglebench_{language}.ts")
+    return lambda text: words.get(text, text)
 
 
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:

@@ -14,10 +14,11 @@ translated text keeps their resolution and can still be shown in another angle u
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
+from pathlib import Path
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "Message", "joined", "lines", "message"]
+__all__ = ["QT_TR_NOOP", "Message", "catalogue", "joined", "lines", "message", "rendered"]
 
 
 def QT_TR_NOOP(text: str) -> str:  # noqa: N802 - the name lupdate looks for
@@ -60,3 +61,32 @@ def lines(parts: Iterable[Any]) -> Message:
     for part in parts:
         out += (["\n"] if out else []) + [part]
     return joined(out)
+
+
+def rendered(text: str, translate: Callable[[str], str]) -> str:
+    """``text`` with each template translated by ``translate`` and filled with the same
+    figures (a plain ``str`` comes back as it is)."""
+    parts = getattr(text, "parts", ())
+    if parts:
+        return "".join(rendered(part, translate) for part in parts)
+    template = getattr(text, "template", None)
+    if template is None:
+        return text
+    figures = {key: rendered(value, translate) if isinstance(value, str) else value
+               for key, value in text.figures.items()}
+    words = translate(template)
+    return words.format(**figures) if figures else words
+
+
+def catalogue(ts_file: str | Path) -> dict[str, str]:
+    """The finished translations of a Qt ``.ts`` file, read without Qt (the command line
+    prints in Chinese without loading Qt)."""
+    import xml.etree.ElementTree as ET
+
+    out: dict[str, str] = {}
+    for element in ET.parse(ts_file).iter("message"):
+        source, translation = element.find("source"), element.find("translation")
+        if (source is not None and translation is not None and translation.text
+                and translation.get("type") not in ("unfinished", "obsolete", "vanished")):
+            out[source.text or ""] = translation.text
+    return out

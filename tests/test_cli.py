@@ -185,3 +185,21 @@ def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, nam
     monkeypatch.setattr(app.cli, "read_numeric", lambda *a, **k: None)
     code, slow, _ = run_cli(capsys, "fringe", sample, "--json")
     assert code == 0 and json.loads(fast) == json.loads(slow)
+
+
+@pytest.mark.parametrize("kind", ["theodolite", "polygon", "fringe", "positioning"])
+def test_the_summary_in_chinese_carries_the_same_figures(capsys, samples_dir, kind):
+    """--language zh_CN: the summary and warnings in Chinese (from the window's own .ts,
+    read without Qt), every figure of each line as in English (the word order may differ)."""
+    import re
+
+    sample = str(samples_dir / f"{kind}_sample.csv")
+    code, english, _ = run_cli(capsys, kind, sample)
+    assert code == 0
+    code, chinese, _ = run_cli(capsys, kind, sample, "--language", "zh_CN")
+    assert code == 0
+    numbers = re.compile(r"[+\-−]?\d+(?:\.\d+)?")
+    for en, zh in zip(english.splitlines()[1:], chinese.splitlines()[1:], strict=True):
+        assert sorted(numbers.findall(zh)) == sorted(numbers.findall(en)), (en, zh)
+    assert re.search(r"[\u4e00-\u9fff]", chinese)
+    assert len(re.findall(r"\b(?:the|of|and|is)\b", chinese)) == 0, chinese

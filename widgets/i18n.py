@@ -29,6 +29,8 @@ from pathlib import Path
 
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
+from models.messages import rendered
+
 __all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "live", "on_language_change",
            "resolve_language", "tr", "translated", "unit_tail"]
 
@@ -81,16 +83,7 @@ def _translate_declared(source: str) -> str:
 def translated(text: str) -> str:
     """A result text of the models (models.messages.Message) in the window's language:
     its template translated and filled with the same figures; plain text as it is."""
-    parts = getattr(text, "parts", ())
-    if parts:
-        return "".join(translated(part) for part in parts)
-    template = getattr(text, "template", None)
-    if template is None:
-        return text
-    figures = {key: translated(value) if isinstance(value, str) else value
-               for key, value in text.figures.items()}
-    words = QCoreApplication.translate("", template)
-    return words.format(**figures) if figures else words
+    return rendered(text, lambda template: QCoreApplication.translate("", template))
 
 
 def declared(source: str) -> Tr:

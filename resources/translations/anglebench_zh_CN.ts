@@ -2169,5 +2169,9 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
+    <message>
+        <source>Warning: {warning}</source>
+        <translation>警告：{warning}</translation>
+    </message>
 </context>
 </TS>
