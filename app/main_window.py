@@ -46,7 +46,16 @@ from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
 from widgets.certificate_dialog import CertificateDialog
 from widgets.fonts import ensure_cjk_font
-from widgets.i18n import LANGUAGES, Tr, declared, install_language, live, on_language_change, tr
+from widgets.i18n import (
+    LANGUAGES,
+    Tr,
+    declared,
+    install_language,
+    live,
+    on_language_change,
+    resolve_language,
+    tr,
+)
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import gui_thread_first
 
@@ -258,7 +267,8 @@ class MainWindow(QMainWindow):
         for action in self.language_actions.actions():
             action.setChecked(action.data() == choice)
         self.qsettings.setValue(LANGUAGE_SETTING, choice)
-        self.language = install_language(choice)
+        self.language = resolve_language(choice)  # before the texts are set again in it
+        install_language(choice)
 
     def _update_undo_actions(self, *_args) -> None:
         group = self.undo_group
@@ -271,6 +281,8 @@ class MainWindow(QMainWindow):
 
     def _retranslate(self) -> None:
         self._update_undo_actions()
+        if self.manual is not None and self.manual.isVisible():  # the page in the new language
+            self.manual.show_page(self.current.kind.key, self.language)
         for index, presenter in enumerate(self.presenters):
             self.tabs.setTabText(index, declared(presenter.kind.title))
         self._update_title()
@@ -302,7 +314,7 @@ class MainWindow(QMainWindow):
             from widgets.manual_window import ManualWindow
 
             self.manual = ManualWindow(self)  # a window of its own, closed with this one
-        self.manual.show_page(self.current.kind.key)
+        self.manual.show_page(self.current.kind.key, self.language)
 
     def show_guide(self) -> None:
         QMessageBox.information(self, tr("AngleBench — quick guide"), tr(

@@ -215,6 +215,37 @@ def test_the_manual_explains_every_setting_and_every_plot_of_each_workbench(wind
             assert name in text, f"{page.name} does not explain {name!r}"
 
 
+def test_the_chinese_manual_explains_every_setting_and_plot_as_the_window_names_them(window):
+    """In Chinese, F1 opens the Chinese page, which names each setting and plot tab as the
+    Chinese window shows them."""
+    import html
+    import re
+
+    from PySide6.QtWidgets import QLabel
+
+    from widgets.manual_window import manual_page
+
+    window.set_language("zh_CN")
+    try:
+        for presenter in window.presenters:
+            page = manual_page(presenter.kind.key, "zh_CN")
+            assert page.name == f"{presenter.kind.key}.zh_CN.html"
+            text = html.unescape(re.sub(r"<[^>]+>", "", page.read_text("utf-8")))
+            tabs = presenter.view.plot_tabs
+            labels = [label.text() for label in presenter.view.settings.findChildren(QLabel)
+                      if label.buddy() is not None]
+            assert len(labels) == len(presenter.kind.parameters)
+            for name in [tabs.tabText(i) for i in range(tabs.count())] + labels:
+                assert name in text, f"{page.name} does not explain {name!r}"
+        window.show_manual()
+        assert window.manual.browser.source().fileName() == \
+            f"{window.current.kind.key}.zh_CN.html"
+        window.set_language("en")  # the open manual follows
+        assert window.manual.browser.source().fileName() == f"{window.current.kind.key}.html"
+    finally:
+        window.set_language("en")
+
+
 def test_plots_keep_their_height_and_scroll_when_the_window_is_small(window, qtbot):
     from PySide6.QtWidgets import QScrollArea
 

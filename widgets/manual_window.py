@@ -13,10 +13,14 @@ from widgets.i18n import live, tr
 MANUAL_DIR = Path(__file__).resolve().parent.parent / "resources" / "manual"
 
 
-def manual_page(kind_key: str) -> Path:
-    """The page of a workbench, or the manual's index when it has none."""
-    page = MANUAL_DIR / f"{kind_key}.html"
-    return page if page.is_file() else MANUAL_DIR / "index.html"
+def manual_page(kind_key: str, language: str = "en") -> Path:
+    """The page of a workbench in ``language`` (English when it has none there), or the
+    manual's index when the workbench has no page."""
+    for name in ((f"{kind_key}.{language}.html",) if language != "en" else ()) + (
+            f"{kind_key}.html", f"index.{language}.html", "index.html"):
+        if (MANUAL_DIR / name).is_file():
+            return MANUAL_DIR / name
+    return MANUAL_DIR / "index.html"
 
 
 class ManualWindow(QWidget):
@@ -34,8 +38,8 @@ class ManualWindow(QWidget):
         layout.addWidget(self.browser)
         self.resize(720, 760)
 
-    def show_page(self, kind_key: str) -> None:
-        self.browser.setSource(QUrl.fromLocalFile(str(manual_page(kind_key))))
+    def show_page(self, kind_key: str, language: str = "en") -> None:
+        self.browser.setSource(QUrl.fromLocalFile(str(manual_page(kind_key, language))))
         self.show()
         self.raise_()
         self.activateWindow()
