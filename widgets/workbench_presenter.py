@@ -20,7 +20,8 @@ from models.display_units import (
     text_in_unit,
 )
 from models.project.file import WorkbenchState
-from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.readings.numeric_csv import read_numeric
+from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
     MissingColumnError,
     TableImportError,
@@ -94,6 +95,13 @@ class _ImportTask(QRunnable):
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
         with cyclic_gc_paused(), gui_thread_first():
+            # a record of plain numbers stays numbers (a column store): a million readings
+            # are read in a fraction of a second and never become a million text rows
+            parsed = read_numeric(path, kind.columns)
+            if parsed is not None:
+                emit_if_alive(signals.imported, NumericRows(kind.columns, parsed.values,
+                                                            parsed.n), path, "", generation)
+                return
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except MissingColumnError as exc:  # mapped on the GUI thread, with the user
@@ -256,6 +264,9 @@ class WorkbenchPresenter(QObject):
         """The readings and settings. ``deep=False`` copies only the list of rows (a
         million rows' copies would stall the window): an autosave may then see a cell
         edited a moment later, never a half-made structure."""
+        if isinstance(self.sheet.rows, NumericRows):  # a record of numbers: read as text
+            return WorkbenchState(self.sheet.copy_rows() if deep else  # when written
+                                  self.sheet.rows.snapshot(), dict(self._settings))
         rows = self.sheet.copy_rows() if deep else list(self.sheet.rows)
         while rows and not any(c.strip() for c in rows[-1]):
             rows.pop()

@@ -50,6 +50,23 @@ def _line_offset(text: str, line: int) -> int:
     return offset
 
 
+CHUNK_CHARS = 1 << 19  # ~25 000 lines a call: numpy's parser keeps the interpreter meanwhile
+
+
+def _parse(body: str, delimiter: str, used: list[int]) -> np.ndarray:
+    """The body's numbers, parsed a chunk of lines at a time: ``numpy.loadtxt`` holds the
+    interpreter while it parses, and a window reading on a worker thread must get it back
+    every few milliseconds (a million lines in one call froze it for half a second)."""
+    blocks, start = [], 0
+    while start < len(body):
+        end = body.find("\n", start + CHUNK_CHARS)
+        end = len(body) if end < 0 else end + 1
+        blocks.append(np.loadtxt(io.StringIO(body[start:end]), delimiter=delimiter,
+                                 comments=None, ndmin=2, usecols=used, dtype=float))
+        start = end
+    return blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
+
+
 def read_numeric(path: str | Path, columns: Sequence[Column],
                  mapping: dict[str, str] | None = None) -> ParsedReadings | None:
     """The readings of an all-numeric CSV file, or None to let the tolerant reader read it
@@ -86,8 +103,7 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
     if width > MAX_COLUMNS or any(p >= width for p in used):
         return None
     try:
-        block = np.loadtxt(io.StringIO(body), delimiter=delimiter, comments=None, ndmin=2,
-                           usecols=used, dtype=float)
+        block = _parse(body, delimiter, used)
     except ValueError:
         return None
     if block.shape[0] > MAX_ROWS or not np.all(np.isfinite(block)):

@@ -10,7 +10,7 @@ from __future__ import annotations
 import enum
 import math
 import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -161,12 +161,120 @@ def _floats(texts: list[str]) -> np.ndarray:
     return out
 
 
+class NumericRows:
+    """The rows of a sheet read from a file of plain numbers, held as one float array per
+    column: a row becomes text only when it is edited, a cell only when it is shown. A
+    million readings are then 16 MB of numbers instead of half a gigabyte of strings, and
+    the analysis reads the arrays as they are.
+
+    A cell reads as the shortest text that gives its number back (``3.70`` in the file
+    shows as ``3.7``); an edited row is kept as typed. Inserting or removing rows turns
+    the whole sheet into text rows first (rare on a recorded signal, and then undoable
+    as every edit is).
+    """
+
+    def __init__(self, columns: Sequence[Column], values: Mapping[str, np.ndarray],
+                 count: int) -> None:
+        self.columns = tuple(columns)
+        self.values = [None if values[c.key].dtype == object or not np.any(
+            np.isfinite(values[c.key])) else np.asarray(values[c.key], dtype=float)
+            for c in self.columns]  # None: the column is blank throughout
+        self.count = count
+        self.edited: dict[int, list[str]] = {}
+
+    def __len__(self) -> int:
+        return self.count
+
+    def _text(self, r: int, c: int) -> str:
+        data = self.values[c]
+        if data is None:
+            return ""
+        value = float(data[r])
+        if self.columns[c].kind is ColumnKind.INTEGER:
+            return str(int(value))
+        return repr(value)
+
+    def cell(self, r: int, c: int) -> str:
+        row = self.edited.get(r)
+        return row[c] if row is not None else self._text(r, c)
+
+    def row(self, r: int) -> list[str]:
+        """Row ``r`` as text the sheet may change in place (it is kept as edited)."""
+        if r not in self.edited:
+            self.edited[r] = [self._text(r, c) for c in range(len(self.columns))]
+        return self.edited[r]
+
+    def __getitem__(self, index):
+        """Row ``index`` (or a slice of rows) as new text lists; edits go through ``row``."""
+        if isinstance(index, slice):
+            return [self[r] for r in range(*index.indices(self.count))]
+        r = index + self.count if index < 0 else index
+        if not 0 <= r < self.count:
+            raise IndexError(index)
+        row = self.edited.get(r)
+        return list(row) if row is not None else [self._text(r, c)
+                                                  for c in range(len(self.columns))]
+
+    def snapshot(self) -> NumericRows:
+        """A copy that later edits do not reach (the numbers are shared: they never change)."""
+        copy = NumericRows.__new__(NumericRows)
+        copy.columns, copy.values, copy.count = self.columns, self.values, self.count
+        copy.edited = {r: list(row) for r, row in self.edited.items()}
+        return copy
+
+    def __iter__(self):
+        for r in range(self.count):
+            yield self[r]
+
+    def parse(self) -> ParsedReadings:
+        """The readings, as the text rows would parse: edited rows read cell by cell."""
+        out: dict[str, np.ndarray] = {}
+        for column, data in zip(self.columns, self.values, strict=True):
+            if data is not None:
+                out[column.key] = data.copy()
+            else:
+                out[column.key] = (np.full(self.count, None, dtype=object)
+                                   if column.kind is ColumnKind.TEXT
+                                   else np.full(self.count, np.nan))
+        keep = np.ones(self.count, dtype=bool)
+        errors: list[CellError] = []
+        for r in sorted(self.edited):
+            row = self.edited[r]
+            if all(not t.strip() for t in row):
+                keep[r] = False
+                continue
+            parsed = []
+            for c, column in enumerate(self.columns):
+                try:
+                    parsed.append(column.parse(row[c]))
+                except ValueError as exc:
+                    errors.append(CellError(r, c, column.key, row[c], str(exc)))
+                    parsed.append(_BAD)
+            if any(v is _BAD for v in parsed):
+                keep[r] = False
+                continue
+            for column, value in zip(self.columns, parsed, strict=True):
+                if column.kind is ColumnKind.TEXT:
+                    if out[column.key].dtype != object:
+                        out[column.key] = out[column.key].astype(object)
+                    out[column.key][r] = value
+                else:
+                    out[column.key][r] = np.nan if value is None else float(value)
+        if keep.all():
+            return ParsedReadings(out, np.arange(self.count), errors)
+        return ParsedReadings({k: v[keep] for k, v in out.items()}, np.nonzero(keep)[0], errors)
+
+
+_BAD = object()  # a cell that cannot be read, in NumericRows.parse
+
+
 class ReadingsSheet:
-    """Rows of raw cell text under a fixed list of typed columns."""
+    """Rows of raw cell text under a fixed list of typed columns (or, for a file of plain
+    numbers, :class:`NumericRows`, which reads as the same rows)."""
 
     def __init__(self, columns: Sequence[Column], rows: Iterable[Sequence[str]] = ()) -> None:
         self.columns: tuple[Column, ...] = tuple(columns)
-        self.rows: list[list[str]] = []
+        self.rows: list[list[str]] | NumericRows = []
         for row in rows:
             self.rows.append(self._fit_row(row))
 
@@ -190,41 +298,61 @@ class ReadingsSheet:
         raise KeyError(key)
 
     def text(self, row: int, column: int) -> str:
-        return self.rows[row][column]
+        rows = self.rows
+        return rows.cell(row, column) if isinstance(rows, NumericRows) else rows[row][column]
 
     def is_blank_row(self, row: int) -> bool:
-        return all(not c.strip() for c in self.rows[row])
+        rows = self.rows
+        if isinstance(rows, NumericRows) and row not in rows.edited:
+            return False  # a row of numbers
+        return all(not c.strip() for c in rows[row])
 
     def cell_error(self, row: int, column: int) -> str | None:
         """Why a cell cannot be read, or ``None`` if it is fine (blank rows are fine)."""
         if self.is_blank_row(row):
             return None
         try:
-            self.columns[column].parse(self.rows[row][column])
+            self.columns[column].parse(self.text(row, column))
         except ValueError as exc:
             return str(exc)
         return None
 
     # -- edits ----------------------------------------------------------
+    def _as_text_rows(self) -> list[list[str]]:
+        """The rows as text lists (a numeric block is turned into text: rows move)."""
+        if isinstance(self.rows, NumericRows):
+            self.rows = list(self.rows)
+        return self.rows
+
     def set_text(self, row: int, column: int, text: str) -> None:
+        if isinstance(self.rows, NumericRows) and row < len(self.rows):
+            self.rows.row(row)[column] = text
+            return
+        self._as_text_rows()
         while row >= len(self.rows):
             self.rows.append([""] * len(self.columns))
         self.rows[row][column] = text
 
     def insert_rows(self, at: int, rows: Sequence[Sequence[str]]) -> None:
-        self.rows[at:at] = [self._fit_row(r) for r in rows]
+        self._as_text_rows()[at:at] = [self._fit_row(r) for r in rows]
 
     def remove_rows(self, at: int, count: int) -> list[list[str]]:
-        removed = self.rows[at : at + count]
+        removed = self._as_text_rows()[at : at + count]
         del self.rows[at : at + count]
         return removed
 
     def replace_all(self, rows: Iterable[Sequence[str]]) -> None:
         self.rows = [self._fit_row(r) for r in rows]
 
-    def adopt_rows(self, rows: list[list[str]], checked: bool = False) -> None:
+    def adopt_rows(self, rows: list[list[str]] | NumericRows, checked: bool = False) -> None:
         """Take ``rows`` as they are (no copy): each must already hold one string per column.
-        ``checked``: the caller guarantees it (rows from :func:`map_columns`), skip the scan."""
+        ``checked``: the caller guarantees it (rows from :func:`map_columns`), skip the scan.
+        A :class:`NumericRows` of these columns is taken as it is."""
+        if isinstance(rows, NumericRows):
+            if rows.columns != self.columns:
+                raise ValueError("rows do not match the columns")
+            self.rows = rows
+            return
         width = len(self.columns)
         if not checked and rows and not all(type(r) is list and len(r) == width for r in rows):
             raise ValueError("rows do not match the columns")
@@ -268,6 +396,8 @@ class ReadingsSheet:
 
     def parse(self) -> ParsedReadings:
         """Parse every non-blank row; rows with an unreadable cell are left out."""
+        if isinstance(self.rows, NumericRows):
+            return self.rows.parse()
         fast = self._parse_fast()
         if fast is not None:
             return fast
