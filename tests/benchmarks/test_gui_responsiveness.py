@@ -107,6 +107,23 @@ def _edit_to_plot(qtbot, window, edits: int = 40) -> np.ndarray:
     return out
 
 
+def _edit_large(qtbot, window, edits: int = 3) -> np.ndarray:
+    """Seconds from a typed cell to the new result on the 1M-sample sheet just loaded (its
+    phase estimated from the signals, as a record without a phase reference is)."""
+    presenter = window.presenter("fringe")
+    model = presenter.table_model
+    out = np.empty(edits)
+    for i in range(edits):
+        before = presenter.result
+        t0 = time.perf_counter()
+        model.setData(model.index(10 + i, 0), f"{1.0 + 0.1 * i}")
+        qtbot.waitUntil(lambda b=before: presenter.result is not b and not presenter.busy,
+                        timeout=120_000)
+        QApplication.processEvents()
+        out[i] = time.perf_counter() - t0
+    return out
+
+
 def _fringe_file(path: Path, samples: int = 16384 * 64) -> Path:
     rng = np.random.default_rng(9)
     theta = phase_of_samples(samples, 64)
@@ -149,6 +166,7 @@ def test_window_responsiveness(qtbot, tmp_path, report):
     edit = _edit_to_plot(qtbot, window)
     path = _fringe_file(tmp_path / "revolution.csv")
     loads = [_load_large(qtbot, window, path) for _ in range(LOADS)]
+    big_edit = _edit_large(qtbot, window)
     total = np.median([t for t, _, _ in loads])
     stalls = np.array([s for _, s, _ in loads])
     stall = float(np.median(stalls))
@@ -172,6 +190,8 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         f"{beat * 1e3:.1f} ms): median (min–max) of the loads | {stall * 1e3:.0f} ms "
         f"({stalls.min() * 1e3:.0f}–{stalls.max() * 1e3:.0f}) | < 100 ms | "
         f"{mark(stall < 0.1)} |",
+        f"| a cell edited on that 1M-sample sheet to the new result ({big_edit.size} edits) | "
+        f"{fmt_time(big_edit)} | < 200 ms | {mark(np.median(big_edit) < 0.2)} |",
         "",
         "A file of plain numbers is read into columns of numbers (models/readings/sheet.py "
         "NumericRows; a cell becomes text only when shown or edited), parsed by numpy a "
@@ -181,7 +201,9 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         "(~0.1–0.2 s each on this machine). Fixed on the way before (1.1 s at first): our "
         "own thread pool (Qt's painting waits on the global one), the GIL handed back every "
         "0.1 ms while a worker runs, plots thinned on the worker, no repaint of the plots "
-        "while busy.",
+        "while busy. An edit on a million samples analyses the whole record again (the phase "
+        "estimated from the signals, then the fit): seconds, not the 200 ms asked; an "
+        "analysis of only what an edit changes is not built.",
     ], headline=(
         f"Window (offscreen): cold start to the first paint {fmt_time(cold).split(' (')[0]} "
         f"(target 2 s, {mark(np.median(cold) < 2.0)}); a cell edit on a 1000-point theodolite "
