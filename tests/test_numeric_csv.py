@@ -85,6 +85,13 @@ def test_anything_but_plain_numbers_goes_to_the_tolerant_reader(tmp_path, body, 
     assert read_numeric(path, FRINGE) is None, why
 
 
+def test_a_header_on_the_last_line_is_left_to_the_tolerant_reader(tmp_path):
+    """Found by the CLI fuzz test: rows of numbers, then the header as the file's last line."""
+    path = tmp_path / "upside_down.csv"
+    path.write_text("a,b\n0.1,0.2\nu_sin,u_cos\n", encoding="utf-8")  # "a,b" reads as a header
+    assert read_numeric(path, FRINGE) is None
+
+
 def test_what_is_not_a_readings_file_is_left_to_the_tolerant_reader(tmp_path):
     assert read_numeric(tmp_path / "missing.csv", FRINGE) is None
     (tmp_path / "x.xlsx").write_bytes(b"PK")

@@ -26,7 +26,8 @@ CORNERS = {
 def _data(plot_item) -> tuple[np.ndarray, np.ndarray]:
     xs, ys = [], []
     for item in plot_item.listDataItems():
-        x, y = item.getData()
+        # the data as given (getData would first thin it for display: tens of ms a curve)
+        x, y = (item.xData, item.yData) if hasattr(item, "xData") else item.getData()
         if x is None or y is None or len(x) < 3:  # a two-point reference line (an envelope,
             continue                               # a mean) may run under the legend
         xs.append(np.asarray(x, float))

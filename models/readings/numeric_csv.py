@@ -93,6 +93,8 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
         positions = column_positions(table, columns, mapping)
     except TableImportError:
         return None
+    if not table.line_numbers:  # the header found was the last line: no readings under it
+        return None
     body = text[_line_offset(text, table.line_numbers[0]):].rstrip()
     del text
     if (not body.isascii() or "_" in body or _BLANK_LINE.search(body)
