@@ -18,7 +18,7 @@ from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
-from models.messages import QT_TR_NOOP, catalogue, rendered
+from models.messages import QT_TR_NOOP, rendered, translator
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -200,7 +200,7 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
                          + "\n")
     else:
-        say = _translation(args.language)
+        say = translator(args.language)
         summary = text_in_unit(rendered(kind.summary(result), say), ANGLE_UNITS[args.unit])
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
         for warning in getattr(result, "warnings", []):
@@ -223,17 +223,6 @@ def run_analyze(argv: list[str]) -> int:
                        (lambda: rows) if table is not None else
                        (lambda: _read_rows(args.file, kind, mapping)[1]))
     return 0
-
-
-TRANSLATIONS = Path(__file__).resolve().parents[1] / "resources" / "translations"
-
-
-def _translation(language: str) -> Callable[[str], str]:
-    """English → ``language`` from the window's own catalogue (read without Qt)."""
-    if language == "en":
-        return lambda text: text
-    words = catalogue(TRANSLATIONS / f"anglebench_{language}.ts")
-    return lambda text: words.get(text, text)
 
 
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:

@@ -8,7 +8,7 @@ from pathlib import Path
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QApplication
 
-from app.main_window import MainWindow
+from app.main_window import LANGUAGE_SETTING, MainWindow
 from models.certificate.metadata import CertificateMetadata
 from models.project.recovery import RecoveryStore
 from widgets.certificate_dialog import CertificateDialog
@@ -30,7 +30,7 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
     app = QApplication.instance() or QApplication(["anglebench"])
     with tempfile.TemporaryDirectory() as scratch:
         settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
-        settings.setValue("ui/language", language)
+        settings.setValue(LANGUAGE_SETTING, language)
         window = MainWindow(settings=settings, recovery=RecoveryStore(scratch))
         window.load_all_samples()
         window.resize(*size)

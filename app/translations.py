@@ -24,11 +24,12 @@ import sys
 import tempfile
 from pathlib import Path
 
+from models.messages import TRANSLATIONS_DIR
+
 ROOT = Path(__file__).resolve().parents[1]
-TRANSLATIONS = ROOT / "resources" / "translations"
-DECLARED_FILE = TRANSLATIONS / "declared_strings.py"
-TS_FILE = TRANSLATIONS / "anglebench_zh_CN.ts"
-QM_FILE = TRANSLATIONS / "anglebench_zh_CN.qm"
+DECLARED_FILE = TRANSLATIONS_DIR / "declared_strings.py"
+TS_FILE = TRANSLATIONS_DIR / "anglebench_zh_CN.ts"
+QM_FILE = TRANSLATIONS_DIR / "anglebench_zh_CN.qm"
 
 
 def _tool(name: str) -> str:
@@ -57,6 +58,7 @@ def declared_texts() -> list[str]:
     from models.display_units import ANGLE_UNITS
     from models.project.recovery import RecoveryStore
     from widgets.i18n import SEEN_DECLARED, unit_tail
+    from widgets.workbench_presenter import SAMPLES_DIR
 
     app = QApplication.instance() or QApplication(["translations"])
     SEEN_DECLARED.clear()  # this run's texts only
@@ -66,8 +68,7 @@ def declared_texts() -> list[str]:
         settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
         window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "r"))
         window.show()
-        samples = ROOT / "resources" / "samples"
-        runs = [None, ("fringe", samples / "fringe_interferometer_sample.csv")]  # est. phase
+        runs = [None, ("fringe", SAMPLES_DIR / "fringe_interferometer_sample.csv")]  # est. phase
         for run in runs:
             if run is None:
                 window.load_all_samples()
@@ -118,8 +119,8 @@ def update_ts(ts: Path = TS_FILE) -> None:
                     "zh_CN", "-ts", str(ts)], check=True, stdout=subprocess.DEVNULL)
 
 
-def release_qm() -> None:
-    subprocess.run([_tool("pyside6-lrelease"), str(TS_FILE), "-qm", str(QM_FILE)], check=True,
+def release_qm(qm: Path = QM_FILE) -> None:
+    subprocess.run([_tool("pyside6-lrelease"), str(TS_FILE), "-qm", str(qm)], check=True,
                    stdout=subprocess.DEVNULL)
 
 

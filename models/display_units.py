@@ -130,9 +130,9 @@ def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, An
 
 def figure_in_unit(figure: PlotFigure, unit: AngleUnit) -> PlotFigure:
     """The plot with its y values (and their bands) in ``unit`` when its y title states
-    an angle unit; log-scaled and other figures come back unchanged."""
+    an angle unit; other figures come back unchanged."""
     y_label, factor = header_in_unit(figure.y_label, unit)
-    if factor == 1.0 or "log" in figure.y_label:
+    if factor == 1.0:
         return figure
     series = tuple(replace(s, y=np.asarray(s.y) * factor,
                            band=None if s.band is None else np.asarray(s.band) * factor)

@@ -18,7 +18,12 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "Message", "catalogue", "joined", "lines", "message", "rendered"]
+__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "joined", "lines", "message",
+           "rendered", "translator"]
+
+#: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
+#: the .ts, without Qt)
+TRANSLATIONS_DIR = Path(__file__).resolve().parents[1] / "resources" / "translations"
 
 
 def QT_TR_NOOP(text: str) -> str:  # noqa: N802 - the name lupdate looks for
@@ -76,6 +81,14 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
                for key, value in text.figures.items()}
     words = translate(template)
     return words.format(**figures) if figures else words
+
+
+def translator(language: str) -> Callable[[str], str]:
+    """English → ``language`` ("en": as it is) from the window's own catalogue."""
+    if language == "en":
+        return lambda text: text
+    words = catalogue(TRANSLATIONS_DIR / f"anglebench_{language}.ts")
+    return lambda text: words.get(text, text)
 
 
 def catalogue(ts_file: str | Path) -> dict[str, str]:

@@ -25,16 +25,14 @@ from __future__ import annotations
 import re
 import weakref
 from collections.abc import Callable
-from pathlib import Path
 
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
-from models.messages import rendered
+from models.messages import TRANSLATIONS_DIR, rendered
 
 __all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "live", "on_language_change",
            "resolve_language", "tr", "translated", "unit_tail"]
 
-TRANSLATIONS_DIR = Path(__file__).resolve().parent.parent / "resources" / "translations"
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
 _UNIT_TAIL = re.compile(r"^(.*?)(\s*\((?:\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|V, log10|"

@@ -23,12 +23,12 @@ from PySide6.QtWidgets import (
     QSpinBox,
     QSplitter,
     QTableWidget,
-    QTableWidgetItem,
     QVBoxLayout,
     QWidget,
 )
 
 from widgets.i18n import declared, live, tr
+from widgets.text_table import show_text_table
 
 EPOCH = dt.date(1970, 1, 1).toordinal()
 COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7f8c8d")
@@ -157,13 +157,7 @@ class RegisterWindow(QDialog):
         self.location.setText(url)
 
     def show_records(self, header, rows) -> None:
-        self.table.clear()
-        self.table.setColumnCount(len(header))
-        self.table.setHorizontalHeaderLabels([tr(h) for h in header])
-        self.table.setRowCount(len(rows))
-        for r, row in enumerate(rows):
-            for c, text in enumerate(row):
-                self.table.setItem(r, c, QTableWidgetItem(text))
+        show_text_table(self.table, [tr(h) for h in header], rows)
         if rows:
             self.table.selectRow(0)
 

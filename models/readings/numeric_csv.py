@@ -43,10 +43,12 @@ _BLANK_LINE = re.compile(r"\n[ \t]*\n")
 
 
 def _line_offset(text: str, line: int) -> int:
-    """Where 1-based ``line`` starts in ``text``."""
+    """Where 1-based ``line`` starts in ``text`` (its end when it has fewer lines)."""
     offset = 0
     for _ in range(line - 1):
-        offset = text.index("\n", offset) + 1
+        offset = text.find("\n", offset) + 1
+        if offset == 0:
+            return len(text)
     return offset
 
 
@@ -64,6 +66,8 @@ def _parse(body: str, delimiter: str, used: list[int]) -> np.ndarray:
         blocks.append(np.loadtxt(io.StringIO(body[start:end]), delimiter=delimiter,
                                  comments=None, ndmin=2, usecols=used, dtype=float))
         start = end
+    if not blocks:
+        raise ValueError("no lines of numbers")
     return blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
 
 
@@ -84,8 +88,7 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
     delimiter = _sniff_delimiter(text)
     if delimiter not in (",", "\t", ";") or '"' in text or "#" in text:
         return None
-    head = text[:_line_offset(text, HEAD_LINES) if text.count("\n", 0, 1 << 16) >= HEAD_LINES
-                else len(text)]
+    head = text[:_line_offset(text, HEAD_LINES)]
     try:
         table = table_from_grid(_read_csv(head, delimiter, source), source)
         if table.header is None or not table.rows:

@@ -4,7 +4,6 @@ run's readings, and the compensation table export. Widgets only."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QFileDialog,
@@ -12,11 +11,11 @@ from PySide6.QtWidgets import (
     QMessageBox,
     QPushButton,
     QTableWidget,
-    QTableWidgetItem,
 )
 
 from widgets.figure_plot import FigurePlot
 from widgets.i18n import declared, live, tr
+from widgets.text_table import show_text_table
 from widgets.workbench_view import WorkbenchView
 
 
@@ -55,15 +54,7 @@ class PositioningView(WorkbenchView):
         self.compensation_button.setEnabled(True)
 
     def show_per_target(self, header, rows) -> None:
-        self.per_target.clear()
-        self.per_target.setColumnCount(len(header))
-        self.per_target.setHorizontalHeaderLabels([declared(h) for h in header])
-        self.per_target.setRowCount(len(rows))
-        for r, row in enumerate(rows):
-            for c, text in enumerate(row):
-                item = QTableWidgetItem(text)
-                item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-                self.per_target.setItem(r, c, item)
+        show_text_table(self.per_target, [declared(h) for h in header], rows, align_right=True)
 
     def clear_result(self) -> None:
         for plot in (self.deviation_plot, self.reversal_plot, self.readings_plot):
