@@ -112,6 +112,25 @@ def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypa
     assert fringe.result.raw_error.size == 2560
 
 
+def test_edits_cancel_the_analysis_they_supersede(qtbot, fringe, monkeypatch):
+    """Edits typed while a large record is analysed: the running analysis stops at its
+    next checkpoint instead of finishing for nothing, and the result shown is the last
+    edit's."""
+    monkeypatch.setattr(workbench_presenter, "THREAD_THRESHOLD_ROWS", 1000)
+    theta = np.arange(64 * 400) * 2 * np.pi / 64  # the phase estimated: seconds of work
+    rows = [[f"{3.7 * np.sin(t):.5f}", f"{3.7 * np.cos(t) + 0.01:.5f}"] for t in theta]
+    fringe.table_model.replace_all(rows)
+    fringe.refresh()
+    model = fringe.table_model
+    for i in range(4):  # typed faster than the analysis runs
+        model.setData(model.index(3, 0), f"{0.5 + 0.1 * i:.1f}")
+        fringe.refresh()
+    qtbot.waitUntil(lambda: fringe.result is not None and not fringe.busy, timeout=30000)
+    assert fringe.result.u_sin[3] == pytest.approx(0.8)
+    assert fringe.cancelled_analyses >= 3  # none of the superseded ones ran to its end
+    assert fringe.cancelled_analyses <= 4
+
+
 def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     assert main(["--screenshot", str(tmp_path)]) == 0
     names = sorted(p.name for p in tmp_path.glob("*.png"))

@@ -12,6 +12,7 @@ from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
 from models.analysis_kind import AnalysisKind
+from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -48,6 +49,7 @@ class _TaskSignals(QObject):
     """Owned by the presenter; workers emit through it back to the GUI thread."""
 
     finished = Signal(int, object, str)
+    cancelled = Signal(int)  # an analysis superseded by newer readings stopped early
     imported = Signal(object, str, str, int)
 
 
@@ -61,12 +63,18 @@ class _AnalysisTask(QRunnable):
 
     def run(self) -> None:
         kind, sheet, settings, generation, signals, prepare, current = self._args
-        if generation != current():
-            return  # a newer edit came while this waited in the queue: its analysis will run
-        with gui_thread_first():
-            parsed = sheet.parse()
-            result, error = _run_analysis(kind, parsed, settings)
-            display = _prepare_display(prepare, result)
+        # a newer edit (come while this waited in the queue or ran) cancels this analysis at
+        # its next checkpoint: the newer one has its thread and the interpreter to itself
+        try:
+            with gui_thread_first(), cancellable(lambda: generation != current()):
+                checkpoint()
+                parsed = sheet.parse()
+                result, error = _run_analysis(kind, parsed, settings)
+                checkpoint()
+                display = _prepare_display(prepare, result)
+        except AnalysisCancelled:
+            emit_if_alive(signals.cancelled, generation)
+            return
         emit_if_alive(signals.finished, generation, (parsed, result, display), error)
 
 
@@ -118,6 +126,8 @@ def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
                   settings: dict[str, Any]) -> tuple[Any, str]:
     try:
         return kind.analyze(parsed, settings), ""
+    except AnalysisCancelled:
+        raise
     except ValueError as exc:  # bad input: a message for the technician
         return None, str(exc)
     except Exception as exc:  # noqa: BLE001 - a bug must not take the typed readings with it
@@ -164,6 +174,8 @@ class WorkbenchPresenter(QObject):
         self._import_pending = False
         self._signals = _TaskSignals(self)
         self._signals.finished.connect(self._on_task_finished)
+        self.cancelled_analyses = 0  # superseded while running, stopped at a checkpoint
+        self._signals.cancelled.connect(self._on_task_cancelled)
         self._signals.imported.connect(self._on_import_finished)
         self.busy = False
         self._timer = QTimer(self)
@@ -391,6 +403,9 @@ class WorkbenchPresenter(QObject):
         parsed = self.sheet.parse()
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
+
+    def _on_task_cancelled(self, _generation: int) -> None:
+        self.cancelled_analyses += 1
 
     def _on_task_finished(self, generation: int, payload: Any, error: str) -> None:
         if generation == self._generation:  # a newer edit supersedes this result

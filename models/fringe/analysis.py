@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.cancellation import checkpoint
 from models.fringe.export import write_correction_table
 from models.fringe.model import (
     TWO_PI,
@@ -17,12 +18,12 @@ from models.fringe.model import (
     fit_channel_pso,
     fit_channels,
     fit_channels_by_phase,
+    fit_channels_with_design,
     fit_periods,
     fit_periods_along,
     interpolation_error_rad,
-    model_signal,
-    model_slope,
     period_arcsec,
+    refine_phase,
 )
 from models.fringe.phase import EllipseFit, fit_ellipse
 from models.fringe.report import fringe_certificate
@@ -161,9 +162,14 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     theta = np.asarray(theta_rad, dtype=float)
     if theta.size < 2:
         return 0
+    theta = theta[:: max(1, theta.size // 200_000)]
+    # only where the motion changes direction can a turn begin or an extreme be reached:
+    # between two such samples the phase runs one way, and its end decides as all of it would
+    step = np.sign(np.diff(theta))
+    keep = np.concatenate([[True], step[1:] != step[:-1], [True]])
     turns, direction = 0, 0
     start = extreme = float(theta[0])
-    for value in theta[1:: max(1, theta.size // 200_000)].tolist():
+    for value in theta[keep][1:].tolist():
         if direction == 0:
             if abs(value - start) > hysteresis_rad:
                 direction, extreme = (1 if value > start else -1), value
@@ -175,18 +181,6 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     return turns
 
 
-def _refine_phase(u_sin, u_cos, theta, orders, iterations: int = 3):
-    """Harmonics fitted against the estimated phase, then each sample's phase moved to the
-    nearest point of the fitted curve (one Gauss–Newton step), repeated."""
-    for _ in range(iterations):
-        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
-        rs = model_signal(theta, sin_fit) - u_sin
-        rc = model_signal(theta, cos_fit) - u_cos
-        ds, dc = model_slope(theta, sin_fit), model_slope(theta, cos_fit)
-        theta = theta - (rs * ds + rc * dc) / np.maximum(ds * ds + dc * dc, 1e-30)
-    return theta, fit_channels(theta, [u_sin, u_cos], orders)
-
-
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult:
     s = _settings(settings)
     lines, per_period = int(s["lines_per_rev"]), int(s["samples_per_period"])
@@ -196,7 +190,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         raise ValueError(f"{u_sin.size} samples; at least {4 * (1 + 2 * len(orders))} are needed")
     warnings: list[str] = []
     _check_signals(parsed, u_sin, u_cos)
+    checkpoint()
     ellipse = _ellipse(u_sin, u_cos)
+    checkpoint()
     source, theta = _phase_source(parsed, per_period, warnings)
     if source == "estimated":
         phase = ellipse.phase(u_sin, u_cos)
@@ -206,7 +202,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                              "phase cannot be estimated from less than three quarters of one")
         theta = np.unwrap(phase)
         warnings.append(OBSERVABILITY)
-    pso_seconds = None
+    pso_seconds, design = None, None
     if s["method"] == "pso":
         if orders != (1, 3, 5):
             raise SettingsError("the particle swarm (the seed's method) fits orders 1, 3, 5 only")
@@ -220,12 +216,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                        "least squares, {seconds} s."),
             cost=f"{ps.cost + pc.cost:.3g}", lsq=f"{lsq_cost:.3g}", seconds=f"{pso_seconds:.2f}"))
     elif source == "estimated":
-        theta, (sin_fit, cos_fit) = _refine_phase(u_sin, u_cos, theta, orders)
+        theta, (sin_fit, cos_fit), design = refine_phase(theta, u_sin, u_cos, orders)
     elif source == "samples_per_period":  # N equal steps: the fit from N per-phase sums
         index = np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
         sin_fit, cos_fit = fit_channels_by_phase(index, per_period, [u_sin, u_cos], orders)
     else:
-        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
+        (sin_fit, cos_fit), design = fit_channels_with_design(theta, [u_sin, u_cos], orders)
     if source != "estimated" and s["method"] == "lsq":
         worst = min(sin_fit.r_squared, cos_fit.r_squared)
         if not worst >= MIN_R_SQUARED:
@@ -240,6 +236,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
             raise ValueError(f"against this phase the cos channel leads the sin channel by "
                              f"{lead:.0f}°, not about 90°: the channels are in the wrong order or "
                              "one is inverted (check the columns, or the sense of θ)")
+    checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])
     else:
@@ -250,12 +247,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     raw = interpolation_error_rad(measured, theta) * to_unit
     comp = interpolation_error_rad(table.compensate(measured), theta) * to_unit
     reversals = count_reversals(theta)
+    checkpoint()
     if source == "samples_per_period":
         sin_periods = fit_periods(u_sin, per_period, orders)
         cos_periods = fit_periods(u_cos, per_period, orders)
     else:
-        sin_periods = fit_periods_along(theta, u_sin, orders)
-        cos_periods = fit_periods_along(theta, u_cos, orders)
+        sin_periods, cos_periods = fit_periods_along(theta, [u_sin, u_cos], orders,
+                                                     design=design)
     return FringeResult(
         theta_rad=theta, u_sin=u_sin, u_cos=u_cos, sin_fit=sin_fit, cos_fit=cos_fit,
         raw_error=raw, compensated_error=comp, table=table, lines_per_rev=lines,

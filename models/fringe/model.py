@@ -22,6 +22,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from models.cancellation import checkpoint
+
 __all__ = [
     "ChannelFit",
     "CorrectionTable",
@@ -33,6 +35,8 @@ __all__ = [
     "fit_channel_pso",
     "fit_periods",
     "fit_periods_along",
+    "fit_channels_with_design",
+    "refine_phase",
     "interpolation_error_arcsec",
     "interpolation_error_rad",
     "model_signal",
@@ -77,6 +81,8 @@ class ChannelFit:
     r_squared: float = float("nan")
     residual_rms: float = float("nan")
     cost: float = float("nan")
+    #: each sample's residual (V) when the fit was made from samples (the plots read it)
+    residuals: np.ndarray | None = field(default=None, repr=False, compare=False)
 
     @classmethod
     def from_parameters(cls, offset: float, terms: dict[int, tuple[float, float]]) -> ChannelFit:
@@ -180,14 +186,55 @@ def fit_channels(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)) -> li
         x, inv = _small_solver(theta.tobytes(), orders)
     else:
         x, inv = _solver(theta, orders)
-    ys = np.asarray(channels, dtype=float).T  # (samples, channels)
+    return _fits(x, inv, np.asarray(channels, dtype=float).T, orders)
+
+
+def _fits(x: np.ndarray, inv: np.ndarray, ys: np.ndarray, orders: tuple[int, ...]
+          ) -> list[ChannelFit]:
+    """The channels ``ys`` (samples, channels) fitted on the design ``x`` with (XᵀX)⁻¹."""
     coefs = inv @ (x.T @ ys)  # (n_par, channels)
     resid = ys - x @ coefs
-    dof = max(theta.size - n_par, 1)
-    fits = []
-    for j in range(ys.shape[1]):
-        fits.append(_channel_fit(coefs[:, j], resid[:, j], ys[:, j], inv, dof, orders))
-    return fits
+    dof = max(x.shape[0] - x.shape[1], 1)
+    return [_channel_fit(coefs[:, j], resid[:, j], ys[:, j], inv, dof, orders)
+            for j in range(ys.shape[1])]
+
+
+def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
+                 iterations: int = 3) -> tuple[np.ndarray, list[ChannelFit], np.ndarray]:
+    """An estimated phase refined against the channels' own harmonics: both channels are
+    fitted at the phase, then each sample's phase moves to the nearest point of the fitted
+    curve (one Gauss–Newton step), repeated ``iterations`` times; then the final fit.
+
+    Returns (phase, [sin fit, cos fit], the design matrix at that phase). One design per
+    pass serves the fit, the model values and their slopes (dU/dθ has the coefficients
+    of U mapped by the derivative), which is where a million samples' time goes.
+    """
+    theta = np.asarray(theta_rad, dtype=float)
+    ys = np.column_stack([np.asarray(u_sin, dtype=float), np.asarray(u_cos, dtype=float)])
+    derivative = np.zeros((1 + 2 * len(orders),) * 2)
+    for i, k in enumerate(orders):  # d/dθ (s sin kθ + c cos kθ) = −k c sin kθ + k s cos kθ
+        derivative[1 + 2 * i, 2 + 2 * i] = -k
+        derivative[2 + 2 * i, 1 + 2 * i] = k
+    for _ in range(iterations):
+        checkpoint()
+        x, inv = _solver(theta, orders)
+        coefs = inv @ (x.T @ ys)
+        values = x @ np.hstack([coefs, derivative @ coefs])  # U_sin, U_cos, their slopes
+        rs, rc = values[:, 0] - ys[:, 0], values[:, 1] - ys[:, 1]
+        ds, dc = values[:, 2], values[:, 3]
+        theta = theta - (rs * ds + rc * dc) / np.maximum(ds * ds + dc * dc, 1e-30)
+    checkpoint()
+    fits, x = fit_channels_with_design(theta, ys.T, orders)
+    return theta, fits, x
+
+
+def fit_channels_with_design(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)
+                             ) -> tuple[list[ChannelFit], np.ndarray]:
+    """:func:`fit_channels` on a long record, with its design matrix for the per-period
+    fits (:func:`fit_periods_along`) to use again."""
+    theta = np.asarray(theta_rad, dtype=float)
+    x, inv = _solver(theta, orders)
+    return _fits(x, inv, np.asarray(channels, dtype=float).T, orders), x
 
 
 def fit_channels_by_phase(phase_index, samples_per_period: int, channels,
@@ -276,6 +323,7 @@ def _channel_fit(coef, resid, y, inv, dof: int, orders: tuple[int, ...]) -> Chan
     fit.cost = cost
     fit.r_squared = 1.0 - cost / ss_tot if ss_tot > 0 else float("nan")
     fit.residual_rms = math.sqrt(cost / y.size)
+    fit.residuals = resid
     return fit
 
 
@@ -310,34 +358,64 @@ def interpolation_error_arcsec(u_sin, u_cos, theta_rad, lines_per_rev: int) -> n
             * period_arcsec(lines_per_rev))
 
 
-def fit_periods_along(theta_rad, u, orders: tuple[int, ...] = (1, 3, 5),
-                      max_segments: int = 4000) -> np.ndarray:
-    """:func:`fit_periods` along the actual phase: a segment per period of travel (forward
-    or back), or per block of periods when there are more than ``max_segments``; a segment
-    that does not cover three quarters of a period is left out."""
+def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
+                      max_segments: int = 4000, design: np.ndarray | None = None
+                      ) -> list[np.ndarray]:
+    """:func:`fit_periods` along the actual phase, for each of ``channels``: a segment per
+    period of travel (forward or back), or per block of periods when there are more than
+    ``max_segments``; a segment that does not cover three quarters of a period (6 of its
+    8 octants) is left out. ``design``: the design matrix at ``theta_rad`` if at hand.
+
+    Each segment is a least-squares fit of its own; they are solved together from their
+    normal equations (a 7×7 system a segment), a segment whose equations are near
+    singular by the SVD of its samples."""
     theta = np.asarray(theta_rad, dtype=float)
-    y = np.asarray(u, dtype=float)
+    ys = np.atleast_2d(np.asarray(channels, dtype=float))  # (channels, samples)
+    n_par = 1 + 2 * len(orders)
+    empty = [np.empty((0, n_par)) for _ in range(ys.shape[0])]
+    if theta.size < 2 * n_par:
+        return empty
     travel = np.concatenate([[0.0], np.cumsum(np.abs(np.diff(theta)))])
     periods = int(travel[-1] // TWO_PI)
     width = TWO_PI * max(1, -(-periods // max_segments))
-    segment = np.floor(travel / width).astype(int)
-    n_par = 1 + 2 * len(orders)
-    rows = []
-    bounds = np.flatnonzero(np.diff(segment)) + 1
-    for part in np.split(np.arange(theta.size), bounds):
-        t = theta[part]
-        if part.size < 2 * n_par:
-            continue
-        bins = np.unique(np.floor(np.mod(t, TWO_PI) / TWO_PI * 8).astype(int))
-        if bins.size < 6:
-            continue
-        coef, *_ = np.linalg.lstsq(_design(t, orders), y[part], rcond=None)
-        row = [coef[0]]
-        for i in range(len(orders)):
-            s_, c_ = coef[1 + 2 * i], coef[2 + 2 * i]
-            row += [math.hypot(s_, c_), math.atan2(c_, s_)]
-        rows.append(row)
-    return np.array(rows) if rows else np.empty((0, n_par))
+    segment = np.floor(travel / width).astype(np.intp)
+    starts = np.flatnonzero(np.diff(segment, prepend=segment[0] - 1))
+    ends = np.append(starts[1:], theta.size)
+    octant = np.floor(np.mod(theta, TWO_PI) / TWO_PI * 8).astype(np.intp)  # 0…8
+    owner = np.repeat(np.arange(starts.size), ends - starts)
+    seen = np.bincount(owner * 9 + octant, minlength=starts.size * 9).reshape(-1, 9)
+    keep = np.flatnonzero((ends - starts >= 2 * n_par) & (np.count_nonzero(seen, axis=1) >= 6))
+    if keep.size == 0:
+        return empty
+    x = _design(theta, orders) if design is None else design
+    gram = np.empty((keep.size, n_par, n_par))
+    rhs = np.empty((keep.size, n_par, ys.shape[0]))
+    for j, (a, b) in enumerate(zip(starts[keep].tolist(), ends[keep].tolist(), strict=True)):
+        if j % 1024 == 0:
+            checkpoint()
+        part = x[a:b]
+        gram[j] = part.T @ part
+        rhs[j] = part.T @ ys[:, a:b].T
+    coef = np.empty_like(rhs)
+    scale = np.sqrt(np.einsum("sii->si", gram))  # equilibrated, the condition is the design's
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scaled = gram / (scale[:, :, None] * scale[:, None, :])
+        good = np.all(scale > 0, axis=1)
+        good[good] = np.linalg.cond(scaled[good]) < 1e10
+    if np.any(good):
+        coef[good] = np.linalg.solve(scaled[good], rhs[good] / scale[good][:, :, None]
+                                     ) / scale[good][:, :, None]
+    for j in np.flatnonzero(~good).tolist():  # rank-deficient: the minimum-norm solution
+        a, b = int(starts[keep[j]]), int(ends[keep[j]])
+        coef[j] = np.linalg.lstsq(x[a:b], ys[:, a:b].T, rcond=None)[0]
+    out = []
+    for c in range(ys.shape[0]):
+        rows = np.empty((keep.size, n_par))
+        rows[:, 0] = coef[:, 0, c]
+        s_, c_ = coef[:, 1::2, c], coef[:, 2::2, c]
+        rows[:, 1::2], rows[:, 2::2] = np.hypot(s_, c_), np.arctan2(c_, s_)
+        out.append(rows)
+    return out
 
 
 def _circular_mean(angle_rad: np.ndarray) -> float:

@@ -37,6 +37,13 @@ def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray, str]:
     return x[order], order, "phase within the period (°); the motion stood or turned back"
 
 
+def _residuals(u: np.ndarray, theta_rad: np.ndarray, fit) -> np.ndarray:
+    """Each sample's residual (V): kept by the fit when it was made from these samples."""
+    if fit.residuals is not None and fit.residuals.shape == u.shape:
+        return fit.residuals
+    return u - model_signal(theta_rad, fit)
+
+
 def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     """Every figure of a result: errors, residuals, signals, Lissajous, spectrum, drift."""
     x, order, along = _axis(result)
@@ -52,8 +59,8 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                                 f"{label} ({unit})", (
         PlotSeries("before compensation", x[pick], raw[pick], BLUE, role="raw"),
         PlotSeries("after compensation", x[pick], comp[pick], GREEN, role="corrected")))}
-    res_s = (result.u_sin - model_signal(result.theta_rad, result.sin_fit))[order] * 1e3
-    res_c = (result.u_cos - model_signal(result.theta_rad, result.cos_fit))[order] * 1e3
+    res_s = _residuals(result.u_sin, result.theta_rad, result.sin_fit)[order] * 1e3
+    res_c = _residuals(result.u_cos, result.theta_rad, result.cos_fit)[order] * 1e3
     out["residuals"] = PlotFigure("Fit residuals", along, "residual (mV)", (
         PlotSeries("sin", *envelope(x, res_s, bins), PURPLE, role="residual"),
         PlotSeries("cos", *envelope(x, res_c, bins), RED)))
