@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
+from widgets.plot_grid import show_grid
 
 RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
@@ -63,7 +64,7 @@ class ErrorPlot(QWidget):
         for row, stretch in enumerate((3, 3, 2)):
             self.graphics.ci.layout.setRowStretchFactor(row, stretch)
         for plot in (self.main_plot, self.corrected_plot, self.residual_plot):
-            plot.showGrid(x=True, y=True, alpha=0.25)
+            show_grid(plot)
             plot.getAxis("left").setWidth(58)
             for axis in ("left", "bottom"):
                 plot.getAxis(axis).enableAutoSIPrefix(False)  # arcsec stay arcsec

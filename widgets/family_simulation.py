@@ -10,6 +10,7 @@ import pyqtgraph as pg
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QVBoxLayout, QWidget
 
 from widgets.i18n import live, on_language_change, tr
+from widgets.plot_grid import show_grid
 from widgets.settings_form import SettingsForm
 
 # (parameters) -> (x, top curve, bottom curve)
@@ -53,7 +54,7 @@ class FamilySimulation(QWidget):
         self._relabel()
         on_language_change(self, self._relabel)
         for plot in (self.top_plot, self.bottom_plot):
-            plot.showGrid(x=True, y=True, alpha=0.25)
+            show_grid(plot)
             plot.getAxis("left").enableAutoSIPrefix(False)
             plot.addLegend(offset=(-10, 10))
         self.top_curves: list[pg.PlotDataItem] = []

@@ -9,6 +9,7 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from widgets.i18n import declared
 from widgets.legend_placement import place_legend
+from widgets.plot_grid import show_grid
 
 
 class FigurePlot(QWidget):
@@ -18,7 +19,7 @@ class FigurePlot(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.plot = pg.PlotWidget(background="w")
-        self.plot.showGrid(x=True, y=True, alpha=0.25)
+        show_grid(self.plot)
         for axis in ("left", "bottom"):
             self.plot.getAxis(axis).enableAutoSIPrefix(False)
         self.legend = self.plot.addLegend(offset=(-10, 10))

@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.i18n import declared, live, tr
+from widgets.plot_grid import show_grid
 from widgets.text_table import show_text_table
 
 EPOCH = dt.date(1970, 1, 1).toordinal()
@@ -74,7 +75,7 @@ class RegisterWindow(QDialog):
         live(self.history_title.setText, tr("Select a certificate and press History"))
         self.history_plot = pg.PlotWidget(background="w", axisItems={
             "bottom": pg.DateAxisItem(orientation="bottom")})
-        self.history_plot.showGrid(x=True, y=True, alpha=0.25)
+        show_grid(self.history_plot)
         self.history_plot.getAxis("left").enableAutoSIPrefix(False)
         self.history_legend = self.history_plot.addLegend(offset=(10, 10))
         self.history_curves: list[pg.PlotDataItem] = []

@@ -158,11 +158,16 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
 
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     """How often the motion turned back: a turn counts once the phase has gone
-    ``hysteresis_rad`` the other way, so noise while standing still does not."""
+    ``hysteresis_rad`` the other way, so noise while standing still does not, nor a single
+    sample off the path (the median of each three is followed)."""
     theta = np.asarray(theta_rad, dtype=float)
     if theta.size < 2:
         return 0
     theta = theta[:: max(1, theta.size // 200_000)]
+    if theta.size >= 3:  # a lone sample off the path (a spike typed over it) is no turn
+        a, b, c = theta[:-2], theta[1:-1], theta[2:]
+        middle = np.maximum(np.minimum(a, b), np.minimum(np.maximum(a, b), c))
+        theta = np.concatenate([theta[:1], middle, theta[-1:]])
     # only where the motion changes direction can a turn begin or an extreme be reached:
     # between two such samples the phase runs one way, and its end decides as all of it would
     step = np.sign(np.diff(theta))
@@ -320,7 +325,7 @@ _SOURCE_TEXT = {"samples_per_period": QT_TR_NOOP("phase from equal steps, {n} sa
 
 def summary(result: FringeResult) -> str:
     period, sym = result.period_length, result.unit_symbol
-    raw, comp = result.raw_error, result.compensated_error
+    raw = result.raw_error
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
                      period=f"{period:.2f}{sym}") if result.unit == "arcsec"
              else message(QT_TR_NOOP("period {period} nm"), period=f"{period:g}"))
@@ -341,16 +346,18 @@ def summary(result: FringeResult) -> str:
                 quadrature=f"{result.quadrature_error_deg:+.3f}"),
         message(QT_TR_NOOP("Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, "
                            "{share} % of a period)"),
-                low=f"{raw.min():+.3f}{sym}", high=f"{raw.max():+.3f}{sym}",
-                ptp=f"{np.ptp(raw):.3f}{sym}", share=f"{np.ptp(raw) / period * 100:.2f}"),
+                low=f"{result.raw_range[0]:+.3f}{sym}", high=f"{result.raw_range[1]:+.3f}{sym}",
+                ptp=f"{result.raw_peak_to_peak:.3f}{sym}",
+                share=f"{result.raw_peak_to_peak / period * 100:.2f}"),
         message(QT_TR_NOOP("After compensation ({entries}-entry table, zero at its mean): {low} … "
                            "{high} (peak-to-peak {ptp}, {share} %)")
                 if result.table_zero == "mean" else
                 QT_TR_NOOP("After compensation ({entries}-entry table, zero at its phase 0): "
                            "{low} … {high} (peak-to-peak {ptp}, {share} %)"),
-                entries=result.table.size, low=f"{comp.min():+.3f}{sym}",
-                high=f"{comp.max():+.3f}{sym}", ptp=f"{np.ptp(comp):.3f}{sym}",
-                share=f"{np.ptp(comp) / period * 100:.2f}"),
+                entries=result.table.size, low=f"{result.compensated_range[0]:+.3f}{sym}",
+                high=f"{result.compensated_range[1]:+.3f}{sym}",
+                ptp=f"{result.compensated_peak_to_peak:.3f}{sym}",
+                share=f"{result.compensated_peak_to_peak / period * 100:.2f}"),
     ]
     return lines(out)
 
@@ -378,12 +385,11 @@ FRINGE = AnalysisKind(
     verdict=lambda r: message(
         QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
                    "after compensation"),
-        ptp=f"{np.ptp(r.raw_error):.3f}{r.unit_symbol}",
-        share=f"{np.ptp(r.raw_error) / r.period_length * 100:.2f}",
-        after=f"{np.ptp(r.compensated_error):.3f}{r.unit_symbol}"),
-    headline=lambda r: {f"as-found peak-to-peak ({r.unit})": float(np.ptp(r.raw_error)),
-                        f"compensated peak-to-peak ({r.unit})":
-                            float(np.ptp(r.compensated_error))},
+        ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
+        share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
+        after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}"),
+    headline=lambda r: {f"as-found peak-to-peak ({r.unit})": r.raw_peak_to_peak,
+                        f"compensated peak-to-peak ({r.unit})": r.compensated_peak_to_peak},
     nominal_column="",
     entry_column="u_sin",
 )

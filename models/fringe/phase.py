@@ -71,10 +71,20 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     scale = float(max(np.std(x), np.std(y)))
     if not scale > 0:
         raise ValueError("the signals do not move")
-    xs, ys = (x - cx) / scale, (y - cy) / scale
-    d1 = np.column_stack([xs * xs, xs * ys, ys * ys])
-    d2 = np.column_stack([xs, ys, np.ones_like(xs)])
-    s1, s2, s3 = d1.T @ d1, d1.T @ d2, d2.T @ d2
+    # the scatter matrix of the monomials (x², xy, y², x, y, 1): one product of the
+    # samples' columns, cut into Halír & Flusser's blocks S1, S2, S3
+    monomials = np.empty((6, x.size))
+    xs, ys = monomials[3], monomials[4]
+    np.subtract(x, cx, out=xs)
+    xs /= scale
+    np.subtract(y, cy, out=ys)
+    ys /= scale
+    np.multiply(xs, xs, out=monomials[0])
+    np.multiply(xs, ys, out=monomials[1])
+    np.multiply(ys, ys, out=monomials[2])
+    monomials[5] = 1.0
+    scatter = monomials @ monomials.T
+    s1, s2, s3 = scatter[:3, :3], scatter[:3, 3:], scatter[3:, 3:]
     try:
         t = -np.linalg.solve(s3, s2.T)
     except np.linalg.LinAlgError:

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from models.decimation import envelope
+from models.decimation import envelope, one_per_cell
 from models.fringe.model import model_signal
 from models.plots import PlotFigure, PlotSeries
 
@@ -22,7 +22,6 @@ if TYPE_CHECKING:  # the analysis imports the report, which draws with this modu
 __all__ = ["figures", "first_period_with_uncertainty"]
 
 BINS = 2000  # runs per curve
-MAX_LISSAJOUS_POINTS = 5_000
 BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 103, 189),
                                           (214, 39, 40), (230, 126, 34), (22, 160, 133))
 
@@ -30,8 +29,11 @@ BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 1
 def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray, str]:
     """(x of every sample in drawing order, the order, the axis title)."""
     periods = result.theta_rad / (2 * np.pi)
-    if periods.size < 2 or np.all(np.diff(periods) > 0):
-        return periods, np.arange(periods.size), "electrical phase θ (periods)"
+    if periods.size < 2 or (result.reversals == 0 and periods[-1] > periods[0]):
+        # one way along the record: a sample whose phase stepped back less than a turn
+        # (a spike typed over it, noise while standing) is drawn where the record had got to
+        return np.maximum.accumulate(periods), np.arange(periods.size), \
+            "electrical phase θ (periods)"
     x = np.degrees(np.mod(result.theta_rad, 2 * np.pi))
     order = np.argsort(x, kind="stable")
     return x[order], order, "phase within the period (°); the motion stood or turned back"
@@ -71,7 +73,7 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
         PlotSeries("u cos", *envelope(x, result.u_cos[order], bins), (169, 204, 227)),
         PlotSeries("sin fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28)),
         PlotSeries("cos fit", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96))))
-    stride = max(1, result.u_sin.size // MAX_LISSAJOUS_POINTS)  # a parametric curve: a stride
+    shown = one_per_cell(result.u_cos, result.u_sin)  # every excursion, ~1000 points a ring
     t = np.linspace(0.0, 2 * np.pi, 361)
     e = result.ellipse
     ellipse = ((e.offset_cos + e.amplitude_cos * np.cos(t + e.quadrature_rad),
@@ -79,7 +81,7 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                else (np.empty(0), np.empty(0)))
     radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
     out["lissajous"] = PlotFigure("Lissajous figure", "u cos (V)", "u sin (V)", (
-        PlotSeries("measured", result.u_cos[::stride], result.u_sin[::stride], RED, True),
+        PlotSeries("measured", result.u_cos[shown], result.u_sin[shown], RED, True),
         PlotSeries("fitted ellipse (Heydemann)", *ellipse, GREEN),
         PlotSeries("compensated (circle × A1)", radius * np.cos(t), radius * np.sin(t), BLUE)))
     orders = np.array(result.sin_fit.orders, dtype=float)

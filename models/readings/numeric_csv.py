@@ -39,35 +39,47 @@ from models.readings.tabular_import import (
 __all__ = ["read_numeric"]
 
 HEAD_LINES = 40  # the header is looked for in these (a title block above it)
-_BLANK_LINE = re.compile(r"\n[ \t]*\n")
+_BLANK_LINE = re.compile(rb"(?:\A|\n)[ \t]*\n")
+_TRAILING_SPACE = b" \t\r\n\x0b\x0c"
 
 
-def _line_offset(text: str, line: int) -> int:
-    """Where 1-based ``line`` starts in ``text`` (its end when it has fewer lines)."""
+def _line_offset(data: bytes, line: int) -> int:
+    """Where 1-based ``line`` starts in ``data`` (its end when it has fewer lines)."""
     offset = 0
     for _ in range(line - 1):
-        offset = text.find("\n", offset) + 1
+        offset = data.find(b"\n", offset) + 1
         if offset == 0:
-            return len(text)
+            return len(data)
     return offset
 
 
-CHUNK_CHARS = 1 << 19  # ~25 000 lines a call: numpy's parser keeps the interpreter meanwhile
+# ~6 000 lines a call. Every step on the body holds the interpreter while it runs — numpy's
+# parser, the checks, the decoding — so each works on a chunk: a window reading on a
+# worker thread gets the interpreter back every few milliseconds (a million lines in
+# one call froze it for half a second; whole-file checks for 30–60 ms each).
+CHUNK_BYTES = 1 << 17
 
 
-def _parse(body: str, delimiter: str, used: list[int]) -> np.ndarray:
-    """The body's numbers, parsed a chunk of lines at a time: ``numpy.loadtxt`` holds the
-    interpreter while it parses, and a window reading on a worker thread must get it back
-    every few milliseconds (a million lines in one call froze it for half a second)."""
-    blocks, start = [], 0
-    while start < len(body):
-        end = body.find("\n", start + CHUNK_CHARS)
-        end = len(body) if end < 0 else end + 1
-        blocks.append(np.loadtxt(io.StringIO(body[start:end]), delimiter=delimiter,
+class _NotPlain(Exception):
+    """The body is not plain numbers: the tolerant reader reads the file."""
+
+
+def _parse(data: bytes, start: int, end: int, delimiter: str, used: list[int]) -> np.ndarray:
+    """The numbers of ``data[start:end]``, a chunk of lines at a time; raises _NotPlain."""
+    blocks = []
+    while start < end:
+        stop = data.find(b"\n", min(start + CHUNK_BYTES, end), end)
+        stop = end if stop < 0 else stop + 1
+        chunk = data[start:stop].replace(b"\r\n", b"\n")
+        if (not chunk.isascii() or b"_" in chunk or b'"' in chunk or b"#" in chunk
+                or b"\r" in chunk or _BLANK_LINE.search(chunk)
+                or (delimiter == ";" and b"," in chunk)):
+            raise _NotPlain
+        blocks.append(np.loadtxt(io.StringIO(chunk.decode("ascii")), delimiter=delimiter,
                                  comments=None, ndmin=2, usecols=used, dtype=float))
-        start = end
+        start = stop
     if not blocks:
-        raise ValueError("no lines of numbers")
+        raise _NotPlain
     return blocks[0] if len(blocks) == 1 else np.concatenate(blocks)
 
 
@@ -80,15 +92,23 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
         return None
     source = str(path)
     try:
-        text = _decode(path.read_bytes(), source)
-    except (OSError, TableImportError):
+        data = path.read_bytes()
+    except OSError:
         return None
-    if "\r" in text:
-        text = text.replace("\r\n", "\n").replace("\r", "\n")
-    delimiter = _sniff_delimiter(text)
-    if delimiter not in (",", "\t", ";") or '"' in text or "#" in text:
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # UTF-16: not a plain body
         return None
-    head = text[:_line_offset(text, HEAD_LINES)]
+    # the header and any title above it may be Chinese (UTF-8 or GBK): decoded as the
+    # tolerant reader decodes; the body below must be ASCII (checked a chunk at a time)
+    head_end = _line_offset(data, HEAD_LINES)
+    try:
+        head = _decode(data[:head_end], source)
+    except (TableImportError, UnicodeDecodeError):
+        return None
+    if "\r" in head:  # lines end in CR LF (a lone CR is left to the tolerant reader)
+        head = head.replace("\r\n", "\n")
+    delimiter = _sniff_delimiter(head)
+    if delimiter not in (",", "\t", ";") or '"' in head or "#" in head or "\r" in head:
+        return None
     try:
         table = table_from_grid(_read_csv(head, delimiter, source), source)
         if table.header is None or not table.rows:
@@ -98,18 +118,17 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
         return None
     if not table.line_numbers:  # the header found was the last line: no readings under it
         return None
-    body = text[_line_offset(text, table.line_numbers[0]):].rstrip()
-    del text
-    if (not body.isascii() or "_" in body or _BLANK_LINE.search(body)
-            or (delimiter == ";" and "," in body)):
-        return None
-    width = body[:body.find("\n") if "\n" in body else len(body)].count(delimiter) + 1
+    start, end = _line_offset(data, table.line_numbers[0]), len(data)
+    while end > start and data[end - 1] in _TRAILING_SPACE:
+        end -= 1
+    first = data.find(b"\n", start, end)
+    width = data[start:end if first < 0 else first].count(delimiter.encode()) + 1
     used = sorted({p for p in positions if p is not None})
     if width > MAX_COLUMNS or any(p >= width for p in used):
         return None
     try:
-        block = _parse(body, delimiter, used)
-    except ValueError:
+        block = _parse(data, start, end, delimiter, used)
+    except (ValueError, _NotPlain):
         return None
     if block.shape[0] > MAX_ROWS or not np.all(np.isfinite(block)):
         return None

@@ -10,8 +10,9 @@ from __future__ import annotations
 import enum
 import math
 import re
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -181,6 +182,9 @@ class NumericRows:
             for c in self.columns]  # None: the column is blank throughout
         self.count = count
         self.edited: dict[int, list[str]] = {}
+        # JSON text of blocks of rows no edit touched: the numbers never change, so a
+        # block is encoded once for every later save (shared with the snapshots)
+        self._json_blocks: dict[tuple[int, int], str] = {}
 
     def __len__(self) -> int:
         return self.count
@@ -220,7 +224,22 @@ class NumericRows:
         copy = NumericRows.__new__(NumericRows)
         copy.columns, copy.values, copy.count = self.columns, self.values, self.count
         copy.edited = {r: list(row) for r, row in self.edited.items()}
+        copy._json_blocks = self._json_blocks
         return copy
+
+    def json_blocks(self, size: int, dumps: Callable[[Any], str]) -> Iterator[str]:
+        """The rows as the elements of a JSON array (``dumps`` of lists of text), ``size``
+        rows a block: a block that holds no edited row is encoded once and kept, so an
+        autosave after an edit encodes the edited blocks only."""
+        touched = {r // size for r in self.edited}
+        for start in range(0, self.count, size):
+            if start // size in touched:
+                yield dumps(self[start:start + size])[1:-1]
+                continue
+            text = self._json_blocks.get((size, start))
+            if text is None:
+                text = self._json_blocks[(size, start)] = dumps(self[start:start + size])[1:-1]
+            yield text
 
     def __iter__(self):
         for r in range(self.count):

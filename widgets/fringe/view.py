@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
+from widgets.plot_grid import show_grid
 from widgets.workbench_view import WorkbenchView
 
 
@@ -22,7 +23,7 @@ def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) 
     plot.english_labels = {"left": left, "bottom": bottom}
     plot.setLabel("left", declared(left))
     plot.setLabel("bottom", declared(bottom))
-    plot.showGrid(x=True, y=True, alpha=0.25)
+    show_grid(plot)
     for axis in ("left", "bottom"):
         plot.getAxis(axis).enableAutoSIPrefix(False)
     if downsample:

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
+from widgets.plot_grid import show_grid
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
 
@@ -23,7 +24,7 @@ class TiltPlot(QWidget):
         self.plot = pg.PlotWidget(background="w")
         self.plot.setLabel("left", declared("AC vertical − zero (\")"))
         self.plot.setLabel("bottom", "θ (deg)")
-        self.plot.showGrid(x=True, y=True, alpha=0.25)
+        show_grid(self.plot)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.plot.addLegend(offset=(-10, 10))
         self.readings = self.plot.plot(name=declared("readings"), pen=None, symbol="o",
@@ -44,7 +45,7 @@ class HarmonicBars(QWidget):
         self.plot.setLabel("left", declared("amplitude (\")"))
         self._relabel()
         on_language_change(self, self._relabel)
-        self.plot.showGrid(y=True, alpha=0.25)
+        show_grid(self.plot, x=False)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.bars = pg.BarGraphItem(x=[], height=[], width=0.6, brush="#1f5fbf")
         self.plot.addItem(self.bars)
