@@ -19,6 +19,8 @@ CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
 RESIDUAL_PEN = pg.mkPen("#2e8b57", width=1.5)
 MAX_SYMBOL_POINTS = 500  # beyond this, points are drawn as lines only (they would overlap,
 #                            and 1000 symbols cost ~10 ms per redraw)
+DENSE_POINTS = 2000  # beyond this a curve is a band of envelope points: drawn with 1-px pens
+#                      (a 2-px pen adds nothing to a band and a third to the panel's paint)
 
 
 def _unit_of(label: str) -> str:
@@ -121,7 +123,7 @@ class ErrorPlot(QWidget):
     def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
         """Update the curves (arcsec over x); ``None`` hides a curve."""
         x = np.asarray(x, dtype=float)
-        self._show_symbols(x.size <= MAX_SYMBOL_POINTS)
+        self._style_for(x.size)
         for curve, y in ((self.raw_curve, raw), (self.model_curve, model),
                          (self.corrected_curve, corrected)):
             if y is None:
@@ -191,12 +193,19 @@ class ErrorPlot(QWidget):
             pad = 0.08 * span
             vb.setYRange(lo - pad, hi + pad, padding=0.0)
 
-    def _show_symbols(self, show: bool) -> None:
-        for curve, symbol in ((self.raw_curve, "o"), (self.corrected_curve, "s"),
-                              (self.residual_curve, "o")):
-            wanted = symbol if show else None
+    def _style_for(self, points: int) -> None:
+        """Symbols on a short curve; thin pens on a dense one."""
+        for curve, symbol, pen in ((self.raw_curve, "o", RAW_PEN),
+                                   (self.corrected_curve, "s", CORRECTED_PEN),
+                                   (self.residual_curve, "o", RESIDUAL_PEN)):
+            wanted = symbol if points <= MAX_SYMBOL_POINTS else None
             if curve.opts["symbol"] != wanted:
                 curve.setSymbol(wanted)
+            width = 1.0 if points > DENSE_POINTS else pen.widthF()
+            if curve.opts["pen"].widthF() != width:
+                thin = pg.mkPen(pen)
+                thin.setWidthF(width)
+                curve.setPen(thin)
 
     def set_residuals(self, x, residuals) -> None:
         if residuals is None:

@@ -409,7 +409,8 @@ class WorkbenchPresenter(QObject):
 
     def _on_task_finished(self, generation: int, payload: Any, error: str) -> None:
         if generation == self._generation:  # a newer edit supersedes this result
-            self._set_busy(False)
+            if not self._import_pending:  # a file being read keeps the window busy
+                self._set_busy(False)
             parsed, result, display = payload
             self._finish(parsed, result, error, display)
 

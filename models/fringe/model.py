@@ -206,6 +206,55 @@ def _fits(x: np.ndarray, inv: np.ndarray, ys: np.ndarray, orders: tuple[int, ...
             for j in range(ys.shape[1])]
 
 
+class _Basis:
+    """The rows 1, sin kθ, cos kθ (k in ``orders``) of a long record's design, written
+    into buffers made once: a pass of the phase refinement then allocates nothing of the
+    record's size (a fresh 56 MB design and its temporaries every pass cost as much in
+    page faults as the arithmetic). Orders by the Chebyshev recurrence
+    sin (k+1)θ = 2 cos θ · sin kθ − sin (k−1)θ from one sine and one cosine."""
+
+    def __init__(self, size: int, orders: tuple[int, ...]) -> None:
+        self.orders = orders
+        self.rows = np.empty((1 + 2 * len(orders), size))  # .T is the design matrix
+        self._scratch = np.empty((7, size))
+
+    def at(self, theta: np.ndarray) -> np.ndarray:
+        rows, (two_cos, s0, s1, s2, c0, c1, c2) = self.rows, self._scratch
+        rows[0] = 1.0
+        np.sin(theta, out=s1)
+        np.cos(theta, out=c1)
+        np.multiply(c1, 2.0, out=two_cos)
+        s0.fill(0.0)
+        c0.fill(1.0)
+        k = 1
+        for i, order in enumerate(self.orders):
+            while k < order:  # (s0, s1) ← (s1, 2 cos θ · s1 − s0), likewise the cosines
+                np.multiply(two_cos, s1, out=s2)
+                s2 -= s0
+                s0, s1, s2 = s1, s2, s0
+                np.multiply(two_cos, c1, out=c2)
+                c2 -= c0
+                c0, c1, c2 = c1, c2, c0
+                k += 1
+            rows[1 + 2 * i] = s1
+            rows[2 + 2 * i] = c1
+        return rows.T
+
+
+def _inverse(gram: np.ndarray) -> np.ndarray:
+    """(XᵀX)⁻¹, the pseudo-inverse when X is rank-deficient."""
+    n_par = gram.shape[0]
+    try:
+        inv = np.linalg.inv(gram)
+        check = gram @ inv
+        check.flat[:: n_par + 1] -= 1.0
+        if not np.abs(check).max() < 1e-6:  # near-singular: a poor inverse
+            raise np.linalg.LinAlgError
+    except np.linalg.LinAlgError:
+        inv = np.linalg.pinv(gram)
+    return inv
+
+
 def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
                  iterations: int = 3) -> tuple[np.ndarray, list[ChannelFit], np.ndarray]:
     """An estimated phase refined against the channels' own harmonics: both channels are
@@ -216,23 +265,40 @@ def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
     pass serves the fit, the model values and their slopes (dU/dθ has the coefficients
     of U mapped by the derivative), which is where a million samples' time goes.
     """
-    theta = np.asarray(theta_rad, dtype=float)
+    theta = np.array(theta_rad, dtype=float)  # refined in place: a copy
     ys = np.column_stack([np.asarray(u_sin, dtype=float), np.asarray(u_cos, dtype=float)])
-    derivative = np.zeros((1 + 2 * len(orders),) * 2)
+    n_par = 1 + 2 * len(orders)
+    if theta.size < n_par + 1:
+        raise ValueError(f"{theta.size} samples; at least {n_par + 1} are needed for orders "
+                         f"{', '.join(map(str, orders))}")
+    derivative = np.zeros((n_par, n_par))
     for i, k in enumerate(orders):  # d/dθ (s sin kθ + c cos kθ) = −k c sin kθ + k s cos kθ
         derivative[1 + 2 * i, 2 + 2 * i] = -k
         derivative[2 + 2 * i, 1 + 2 * i] = k
+    basis = _Basis(theta.size, orders)
+    values = np.empty((theta.size, 4))  # U_sin, U_cos, their slopes
+    rs, rc, step = np.empty((3, theta.size))
     for _ in range(iterations):
         checkpoint()
-        x, inv = _solver(theta, orders)
-        coefs = inv @ (x.T @ ys)
-        values = x @ np.hstack([coefs, derivative @ coefs])  # U_sin, U_cos, their slopes
-        rs, rc = values[:, 0] - ys[:, 0], values[:, 1] - ys[:, 1]
+        x = basis.at(theta)
+        coefs = _inverse(basis.rows @ x) @ (basis.rows @ ys)
+        np.matmul(x, np.hstack([coefs, derivative @ coefs]), out=values)
+        np.subtract(values[:, 0], ys[:, 0], out=rs)
+        np.subtract(values[:, 1], ys[:, 1], out=rc)
         ds, dc = values[:, 2], values[:, 3]
-        theta = theta - (rs * ds + rc * dc) / np.maximum(ds * ds + dc * dc, 1e-30)
+        rs *= ds
+        rc *= dc
+        rs += rc  # the residual along the curve's tangent …
+        np.multiply(ds, ds, out=step)
+        np.multiply(dc, dc, out=rc)
+        step += rc
+        np.maximum(step, 1e-30, out=step)  # … over the tangent's squared length
+        np.divide(rs, step, out=step)
+        theta -= step
+    del values, rs, rc, step
     checkpoint()
-    fits, x = fit_channels_with_design(theta, ys.T, orders)
-    return theta, fits, x
+    x = basis.at(theta)
+    return theta, _fits(x, _inverse(basis.rows @ x), ys, orders), x
 
 
 def fit_channels_with_design(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)
@@ -284,17 +350,7 @@ _CACHED_DESIGN_MAX = 4096
 def _solver(theta: np.ndarray, orders: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray]:
     """Design matrix and (XᵀX)⁻¹ (the pseudo-inverse if X is rank-deficient)."""
     x = _design(theta, orders)
-    n_par = x.shape[1]
-    gram = x.T @ x
-    try:
-        inv = np.linalg.inv(gram)
-        check = gram @ inv
-        check.flat[:: n_par + 1] -= 1.0
-        if not np.abs(check).max() < 1e-6:  # near-singular: a poor inverse
-            raise np.linalg.LinAlgError
-    except np.linalg.LinAlgError:
-        inv = np.linalg.pinv(gram)
-    return x, inv
+    return x, _inverse(x.T @ x)
 
 
 @functools.lru_cache(maxsize=16)

@@ -28,6 +28,8 @@ import numpy as np
 
 __all__ = ["EllipseFit", "fit_ellipse"]
 
+_BLOCK = 1 << 16  # samples a block when the scatter matrix is summed
+
 
 @dataclass(frozen=True)
 class EllipseFit:
@@ -71,19 +73,23 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     scale = float(max(np.std(x), np.std(y)))
     if not scale > 0:
         raise ValueError("the signals do not move")
-    # the scatter matrix of the monomials (x², xy, y², x, y, 1): one product of the
-    # samples' columns, cut into Halír & Flusser's blocks S1, S2, S3
-    monomials = np.empty((6, x.size))
-    xs, ys = monomials[3], monomials[4]
-    np.subtract(x, cx, out=xs)
-    xs /= scale
-    np.subtract(y, cy, out=ys)
-    ys /= scale
-    np.multiply(xs, xs, out=monomials[0])
-    np.multiply(xs, ys, out=monomials[1])
-    np.multiply(ys, ys, out=monomials[2])
+    # the scatter matrix of the monomials (x², xy, y², x, y, 1), a block of samples at a
+    # time in one small buffer, cut into Halír & Flusser's blocks S1, S2, S3
+    block = min(x.size, _BLOCK)
+    monomials = np.empty((6, block))
     monomials[5] = 1.0
-    scatter = monomials @ monomials.T
+    scatter = np.zeros((6, 6))
+    for start in range(0, x.size, block):
+        m = monomials[:, :min(block, x.size - start)]
+        xs, ys = m[3], m[4]
+        np.subtract(x[start:start + block], cx, out=xs)
+        xs /= scale
+        np.subtract(y[start:start + block], cy, out=ys)
+        ys /= scale
+        np.multiply(xs, xs, out=m[0])
+        np.multiply(xs, ys, out=m[1])
+        np.multiply(ys, ys, out=m[2])
+        scatter += m @ m.T
     s1, s2, s3 = scatter[:3, :3], scatter[:3, 3:], scatter[3:, 3:]
     try:
         t = -np.linalg.solve(s3, s2.T)

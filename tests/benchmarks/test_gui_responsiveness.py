@@ -107,9 +107,8 @@ def _edit_to_plot(qtbot, window, edits: int = 40) -> np.ndarray:
     return out
 
 
-def _edit_large(qtbot, window, edits: int = 3) -> np.ndarray:
-    """Seconds from a typed cell to the new result on the 1M-sample sheet just loaded (its
-    phase estimated from the signals, as a record without a phase reference is)."""
+def _edit_large(qtbot, window, edits: int = 5) -> np.ndarray:
+    """Seconds from a typed cell to the new result on the 1M-sample sheet just loaded."""
     presenter = window.presenter("fringe")
     model = presenter.table_model
     out = np.empty(edits)
@@ -124,6 +123,22 @@ def _edit_large(qtbot, window, edits: int = 3) -> np.ndarray:
     return out
 
 
+def _edit_burst(qtbot, window, edits: int = 4) -> tuple[float, int]:
+    """Cells typed one after another faster than a 1M-sample analysis runs: seconds from
+    the first to the result of the last, and how many superseded analyses were cancelled."""
+    presenter = window.presenter("fringe")
+    model = presenter.table_model
+    cancelled = presenter.cancelled_analyses
+    t0 = time.perf_counter()
+    for i in range(edits):
+        model.setData(model.index(40 + i, 0), f"{0.5 + 0.1 * i}")
+        qtbot.wait(30)  # typing: a cell every 30 ms
+    qtbot.waitUntil(lambda: not presenter.busy and presenter.result is not None
+                    and presenter.result.u_sin[40 + edits - 1] == 0.5 + 0.1 * (edits - 1),
+                    timeout=120_000)
+    return time.perf_counter() - t0, presenter.cancelled_analyses - cancelled
+
+
 def _fringe_file(path: Path, samples: int = 16384 * 64) -> Path:
     rng = np.random.default_rng(9)
     theta = phase_of_samples(samples, 64)
@@ -136,27 +151,35 @@ def _fringe_file(path: Path, samples: int = 16384 * 64) -> Path:
     return path
 
 
-def _load_large(qtbot, window, path: Path) -> tuple[float, float, float]:
-    """(seconds to the result, longest event-loop stall, median heartbeat gap)."""
+def _load_large(qtbot, window, path: Path) -> tuple[float, float, float, float]:
+    """(seconds to the result, seconds from the file read to the result, longest event-loop
+    stall, median heartbeat gap)."""
     presenter = window.presenter("fringe")
     window.tabs.setCurrentIndex(2)
     QApplication.processEvents()
     beats: list[float] = []
+    read: list[float] = []
     heart = QTimer()
     heart.setInterval(5)
     heart.timeout.connect(lambda: beats.append(time.perf_counter()))
+
+    def on_read(*_args) -> None:
+        read.append(time.perf_counter())
+
+    presenter.imported.connect(on_read)
     heart.start()
     qtbot.wait(50)
     t0 = time.perf_counter()
     beats.append(t0)
     presenter.start_import(path)
-    qtbot.waitUntil(lambda: presenter.sheet.row_count > 1_000_000 and not presenter.busy
-                    and presenter.result is not None, timeout=120_000)
+    qtbot.waitUntil(lambda: bool(read) and presenter.sheet.row_count > 1_000_000
+                    and not presenter.busy and presenter.result is not None, timeout=120_000)
     t1 = time.perf_counter()
-    qtbot.wait(100)
+    qtbot.wait(300)  # the paints of the new result belong to the load
     heart.stop()
+    presenter.imported.disconnect(on_read)
     gaps = np.diff(np.array([b for b in beats if b >= t0]))
-    return t1 - t0, float(gaps.max()), float(np.median(gaps))
+    return t1 - t0, t1 - read[-1], float(gaps.max()), float(np.median(gaps))
 
 
 def test_window_responsiveness(qtbot, tmp_path, report):
@@ -165,16 +188,18 @@ def test_window_responsiveness(qtbot, tmp_path, report):
     window = _window(qtbot, tmp_path)
     edit = _edit_to_plot(qtbot, window)
     path = _fringe_file(tmp_path / "revolution.csv")
-    loads = [_load_large(qtbot, window, path) for _ in range(LOADS)]
-    big_edit = _edit_large(qtbot, window)
-    total = np.median([t for t, _, _ in loads])
-    stalls = np.array([s for _, s, _ in loads])
-    stall = float(np.median(stalls))
-    beat = float(np.median([b for _, _, b in loads]))
+    fringe = window.presenter("fringe")
+    rows = {}
+    for label, per_period in (("phase estimated from the signals", 0),
+                              ("N = 64 samples per period given", 64)):
+        fringe.set_settings({**fringe.settings, "samples_per_period": per_period})
+        loads = [_load_large(qtbot, window, path) for _ in range(LOADS)]
+        rows[label] = (loads, _edit_large(qtbot, window), _edit_burst(qtbot, window))
+
     def mark(ok: bool) -> str:
         return "met" if ok else "**missed**"
 
-    report("4-gui", [
+    lines = [
         "## The window (offscreen platform)",
         "",
         "| measure | result | target | |",
@@ -184,34 +209,55 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         f"| … with the three samples loaded and analysed | {fmt_time(cold_samples)} | | |",
         f"| cell edit to updated plots, 1000-point theodolite run ({edit.size} edits) | "
         f"{fmt_time(edit)} | < 50 ms | {mark(np.median(edit) < 0.05)} |",
-        f"| load and analyse a 1M-sample fringe file ({path.stat().st_size / 1e6:.0f} MB, "
-        f"median of {LOADS} loads) | {total:.2f} s | | |",
-        f"| … longest event-loop stall meanwhile (5 ms heartbeat, median gap "
-        f"{beat * 1e3:.1f} ms): median (min–max) of the loads | {stall * 1e3:.0f} ms "
-        f"({stalls.min() * 1e3:.0f}–{stalls.max() * 1e3:.0f}) | < 100 ms | "
-        f"{mark(stall < 0.1)} |",
-        f"| a cell edited on that 1M-sample sheet to the new result ({big_edit.size} edits) | "
-        f"{fmt_time(big_edit)} | < 200 ms | {mark(np.median(big_edit) < 0.2)} |",
+    ]
+    headline = []
+    for label, (loads, big_edit, (burst, cancelled)) in rows.items():
+        total = np.median([t for t, _, _, _ in loads])
+        after_read = np.array([a for _, a, _, _ in loads])
+        stalls = np.array([s for _, _, s, _ in loads])
+        stall = float(np.median(stalls))
+        beat = float(np.median([b for *_, b in loads]))
+        lines += [
+            f"| **1M-sample fringe file ({path.stat().st_size / 1e6:.0f} MB), {label}**: "
+            f"import to result (median of {LOADS} loads) | {total:.2f} s | | |",
+            f"| … from the file read to the result | {fmt_time(after_read)} | ≤ 1 s | "
+            f"{mark(np.median(after_read) <= 1.0)} |",
+            f"| … longest event-loop stall meanwhile (5 ms heartbeat, median gap "
+            f"{beat * 1e3:.1f} ms), the result's first paints included | {stall * 1e3:.0f} ms "
+            f"({stalls.min() * 1e3:.0f}–{stalls.max() * 1e3:.0f}) | ≤ 50 ms | "
+            f"{mark(stall <= 0.05)} |",
+            f"| … a cell edited to the new result ({big_edit.size} edits) | "
+            f"{fmt_time(big_edit)} | ≤ 200 ms | {mark(np.median(big_edit) <= 0.2)} |",
+            f"| … 4 cells typed 30 ms apart, to the last one's result | {burst:.2f} s; "
+            f"{cancelled} superseded analyses cancelled | | |",
+        ]
+        headline.append(f"{label}: {total:.1f} s from import to result, longest pause "
+                        f"{stall * 1e3:.0f} ms (target 50 ms, {mark(stall <= 0.05)}), an edit "
+                        f"{fmt_time(big_edit).split(' (')[0]} to its result (target 200 ms, "
+                        f"{mark(np.median(big_edit) <= 0.2)})")
+    lines += [
         "",
         "A file of plain numbers is read into columns of numbers (models/readings/sheet.py "
-        "NumericRows; a cell becomes text only when shown or edited), parsed by numpy a "
-        "chunk of lines at a time so the window gets the interpreter back: import to result "
-        "went from ~5 s to under 3 s. What limits the stall now: the first paint of the "
-        "new plots after the result, and passes of the analysis that hold the interpreter "
-        "(~0.1–0.2 s each on this machine). Fixed on the way before (1.1 s at first): our "
-        "own thread pool (Qt's painting waits on the global one), the GIL handed back every "
-        "0.1 ms while a worker runs, plots thinned on the worker, no repaint of the plots "
-        "while busy. An edit on a million samples analyses the whole record again (the phase "
-        "estimated from the signals, then the fit): seconds, not the 200 ms asked; an "
-        "analysis of only what an edit changes is not built.",
-    ], headline=(
+        "NumericRows; a cell becomes text only when shown or edited), its bytes checked and "
+        "parsed a chunk of ~6000 lines at a time so the window gets the interpreter back "
+        "every few ms. A superseded analysis stops at its next checkpoint "
+        "(models/cancellation.py). With N given the fit is 64 per-phase sums and an edit "
+        "meets its target; with the phase estimated from the signals every edit refines "
+        "the phase of all million samples again (three passes, each a 1M × 7 design) and "
+        "fits 16384 periods: most of a second on this machine. The pauses left are the "
+        "paints of the new result: pyqtgraph draws the three error panels in ~30–45 ms "
+        "each, and a first result changes the panels' layout (legends, titles), which "
+        "paints them two or three times.",
+    ]
+    report("4-gui", lines, headline=(
         f"Window (offscreen): cold start to the first paint {fmt_time(cold).split(' (')[0]} "
         f"(target 2 s, {mark(np.median(cold) < 2.0)}); a cell edit on a 1000-point theodolite "
         f"run updates the plots in {fmt_time(edit).split(' (')[0]} (target 50 ms, "
-        f"{mark(np.median(edit) < 0.05)}); a 1M-sample fringe file takes {total:.1f} s from "
-        f"import to result, and the longest event-loop pause meanwhile is {stall * 1e3:.0f} ms "
-        f"(target 100 ms, {mark(stall < 0.1)}: the first paint of the new plots)."))
+        f"{mark(np.median(edit) < 0.05)}). A 1M-sample fringe file, "
+        + "; ".join(headline) + "."))
     assert np.median(cold) < 2.0
     assert np.median(edit) < 0.1  # regression guard (264 ms before); the 50 ms target is
     #                               reported above: this VM gives 34–58 ms from run to run
-    assert stall < 1.0  # regression guard: it was 1.1 s; the target (0.1 s) is reported
+    for loads, _, (_, cancelled) in rows.values():
+        assert np.median([s for _, _, s, _ in loads]) < 1.0  # regression guard: it was 1.1 s
+        assert cancelled >= 1  # typed over a running analysis: it stopped
