@@ -56,8 +56,9 @@ def declared_texts() -> list[str]:
 
     from app.main_window import MainWindow
     from models.display_units import ANGLE_UNITS
+    from models.messages import unit_tail
     from models.project.recovery import RecoveryStore
-    from widgets.i18n import SEEN_DECLARED, unit_tail
+    from widgets.i18n import SEEN_DECLARED
     from widgets.workbench_presenter import SAMPLES_DIR
 
     app = QApplication.instance() or QApplication(["translations"])

@@ -14,6 +14,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from models.messages import QT_TR_NOOP
 from models.parameters import Parameter, SettingsError, check_parameters
 from models.readings.sheet import Column, ParsedReadings
 
@@ -22,7 +23,7 @@ __all__ = ["SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AnalysisKind", "SettingsE
 #: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
 #: correction is the negative of an error.
 SIGN_CONVENTION = "indicated_minus_reference"
-SIGN_CONVENTION_TEXT = "error = indicated − reference (VIM); correction = −error"
+SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
 
 
 @dataclass(frozen=True)

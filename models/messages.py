@@ -14,12 +14,13 @@ translated text keeps their resolution and can still be shown in another angle u
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "joined", "lines", "message",
-           "rendered", "translator"]
+__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "joined",
+           "lines", "message", "rendered", "translator", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -81,6 +82,32 @@ def rendered(text: str, translate: Callable[[str], str]) -> str:
                for key, value in text.figures.items()}
     words = translate(template)
     return words.format(**figures) if figures else words
+
+
+_UNIT_TAIL = re.compile(r"^(.*?)(\s*\((?:\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|V, log10|"
+                        r"V, log)\))$")
+
+
+def unit_tail(source: str) -> tuple[str, str]:
+    """("error", " (µrad)") for "error (µrad)"; (source, "") when it has no unit."""
+    found = _UNIT_TAIL.match(source)
+    return (found.group(1), found.group(2)) if found else (source, "")
+
+
+def declared_text(source: str, translate: Callable[[str], str]) -> str:
+    """A text the models declare (a column, a setting, a plot's title) in another language:
+    looked up whole, or, when it ends in a unit, its words looked up and the unit kept
+    ("error (µrad)" is "error" translated, then " (µrad)"); unchanged when it has no
+    translation."""
+    text = translate(source)
+    if text != source or not source:
+        return text
+    head, unit = unit_tail(source)
+    if unit:
+        words = translate(head)
+        if words != head:
+            return words + unit
+    return source
 
 
 def translator(language: str) -> Callable[[str], str]:

@@ -228,5 +228,5 @@ def test_a_bilingual_certificate_has_chinese_headings_beside_the_english(samples
                   "测量不确定度 Measurement uncertainty", "符合性声明 Statement of conformity"):
         assert words in both
     assert "校准证书" not in english and "Calibration certificate" in english
-    with pytest.raises(MetadataError, match="'language' must be one of en, zh\\+en"):
+    with pytest.raises(MetadataError, match="'language' must be one of en, zh, zh\\+en"):
         CertificateMetadata.from_dict({"language": "fr"})

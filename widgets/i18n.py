@@ -22,21 +22,18 @@ in the settings under ``ui/language``.
 
 from __future__ import annotations
 
-import re
 import weakref
 from collections.abc import Callable
 
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
-from models.messages import TRANSLATIONS_DIR, rendered
+from models.messages import TRANSLATIONS_DIR, declared_text, rendered
 
 __all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "live", "on_language_change",
-           "resolve_language", "tr", "translated", "unit_tail"]
+           "resolve_language", "tr", "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
-_UNIT_TAIL = re.compile(r"^(.*?)(\s*\((?:\"|″|µrad|mdeg|arcsec|deg|°|V|mV|nm|µm|mm|%|°C|V, log10|"
-                        r"V, log)\))$")
 
 
 class Tr(str):
@@ -60,22 +57,8 @@ def tr(source: str) -> Tr:
 SEEN_DECLARED: set[str] = set()
 
 
-def unit_tail(source: str) -> tuple[str, str]:
-    """("error", " (µrad)") for "error (µrad)"; (source, "") when it has no unit."""
-    found = _UNIT_TAIL.match(source)
-    return (found.group(1), found.group(2)) if found else (source, "")
-
-
 def _translate_declared(source: str) -> str:
-    text = QCoreApplication.translate("", source)
-    if text != source or not source:
-        return text
-    head, unit = unit_tail(source)  # "error (µrad)": the words translated, the unit kept
-    if unit:
-        translated = QCoreApplication.translate("", head)
-        if translated != head:
-            return translated + unit
-    return source
+    return declared_text(source, lambda text: QCoreApplication.translate("", text))
 
 
 def translated(text: str) -> str:

@@ -28,6 +28,7 @@ from fpdf.fonts import FontFace
 
 from models import __version__
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
+from models.messages import QT_TR_NOOP, declared_text, joined, message, rendered, translator
 from models.project.atomic_write import write_bytes_atomic
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.conformity import uncertainty_decimals
@@ -110,20 +111,54 @@ CHINESE = {
 
 
 def label(document: CertificateDocument, english: str, separator: str = " ") -> str:
-    """``english``, with its Chinese in front on a bilingual certificate."""
-    if document.metadata.language == "zh+en" and english in CHINESE:
+    """``english``, with its Chinese in front on a bilingual certificate, or in Chinese
+    alone on a Chinese one."""
+    language = document.metadata.language
+    if language == "zh+en" and english in CHINESE:
         return f"{CHINESE[english]}{separator}{english}"
+    if language == "zh":
+        return CHINESE.get(english) or _say("zh")(english)
     return english
+
+
+@functools.cache
+def _say(language: str):
+    """How the certificate's texts are printed in ``language``: a :class:`Message` in the
+    translated template with its own figures, another text looked up whole (a column's
+    name, a setting's label), anything else — user input, numbers — as it is. Only a
+    Chinese certificate is translated: the bilingual one keeps the English body under
+    its two-language headings."""
+    if language != "zh":
+        return str
+    words = translator("zh_CN")
+
+    def say(text: str) -> str:
+        if hasattr(text, "template") or getattr(text, "parts", ()):
+            return rendered(text, words)
+        return declared_text(text, words)
+
+    return say
 
 
 def revision_statement(meta) -> str:
     """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
     replacement identifies the one it replaces."""
-    what = (f"{meta.revision.capitalize()} to certificate {meta.supersedes}"
-            if meta.revision.startswith("amendment")
-            else f"This certificate replaces certificate {meta.supersedes}")
-    change = f" Changed: {meta.change_note}" if meta.change_note else ""
-    return (f"{what}, which it supersedes; the original stays on record unchanged.{change}")
+    number = meta.revision.removeprefix("amendment").strip()
+    if meta.revision.startswith("amendment") and number:
+        what = message(QT_TR_NOOP("Amendment {number} to certificate {certificate}"),
+                       number=number, certificate=meta.supersedes)
+    elif meta.revision.startswith("amendment"):
+        what = message(QT_TR_NOOP("Amendment to certificate {certificate}"),
+                       certificate=meta.supersedes)
+    else:
+        what = message(QT_TR_NOOP("This certificate replaces certificate {certificate}"),
+                       certificate=meta.supersedes)
+    if meta.change_note:
+        return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                                  "unchanged. Changed: {change}"), what=what,
+                       change=meta.change_note)
+    return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                              "unchanged."), what=what)
 
 
 def _created(document: CertificateDocument) -> dt.datetime:
@@ -151,6 +186,7 @@ class ReportPdf(FPDF):
     def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False) -> None:
         super().__init__(orientation="portrait", unit="mm", format="A4")
         self.head, self.foot = head, foot
+        self.say = str  # how a text is printed (a certificate in Chinese translates it)
         fonts = font_files()
         self.add_font(FONT, "", str(fonts["regular"]))
         self.add_font(FONT, "B", str(fonts["bold"]))
@@ -187,8 +223,10 @@ class ReportPdf(FPDF):
         # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
         # would be replaced by the number of pages.
         previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
-        self.cell(self.epw * 0.25, 4, f"Page {self.page_no()} of {PAGE_TOTAL_ALIAS}", align="R",
-                  new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.cell(self.epw * 0.25, 4, self.say(message(QT_TR_NOOP("Page {page} of {pages}"),
+                                                       page=self.page_no(),
+                                                       pages=PAGE_TOTAL_ALIAS)),
+                  align="R", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.str_alias_nb_pages = previous
         self.cell(self.epw, 4, self.foot[1])
         self.set_text_color(*INK)
@@ -204,14 +242,21 @@ class ReportPdf(FPDF):
             self.add_page()
         self.ln(2)
         self.set_font(FONT, "B", 11)
-        self.cell(0, 7, text, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.cell(0, 7, self.say(text), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.set_font(FONT, "", 9)
 
     def paragraph(self, text: str, size: float = 9, color=INK) -> None:
+        text = self.say(text)
         self.set_font(FONT, "", size)
         with self.local_context(text_color=color):
-            self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
-                            new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            if _mostly_cjk(text):  # Chinese prose: broken between characters, not justified
+                # (fpdf2's WORD wrap dropped a word with the fallback font at a line's end:
+                # "随机种子 20261127" printed without its number)
+                self.multi_cell(0, 4.6, text, wrapmode="CHAR", align="L",
+                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            else:
+                self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
+                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
     def key_values(self, rows: list[tuple[str, str]]) -> None:
         self.set_font(FONT, "", 9)
@@ -219,6 +264,7 @@ class ReportPdf(FPDF):
                         line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
                         wrapmode="CHAR") as table:
             for key, value in rows:
+                key, value = self.say(key), self.say(value)
                 row = table.row()
                 # a two-line bilingual label is set plain: fpdf2 drops the English line of a
                 # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
@@ -234,18 +280,50 @@ class ReportPdf(FPDF):
                         headings_style=heading, borders_layout="HORIZONTAL_LINES",
                         cell_fill_color=(246, 247, 249), cell_fill_mode=TableCellFillMode.ROWS,
                         repeat_headings=1, padding=(0.5, 1.0), wrapmode="CHAR") as table:
-            table.row(t.header)
+            table.row([self.say(cell) for cell in t.header])
             for r in t.rows:
-                table.row(r)
+                table.row([self.say(cell) for cell in r])
         if t.note:
             self.paragraph(t.note, 7.5, GREY)
+
+    def _runs(self, text: str) -> list[tuple[str, str]]:
+        """``text`` cut into runs of one font each: DejaVu Sans, or the CJK font for the
+        characters DejaVu lacks (``text()`` has no fallback font of its own, and the CJK
+        font has no Latin letters)."""
+        latin = _latin_coverage()
+        cjk = CJK_FONT in self.fonts
+        runs: list[tuple[str, str]] = []
+        for ch in text:
+            font = CJK_FONT if cjk and ord(ch) > 0x7F and ord(ch) not in latin else FONT
+            if runs and runs[-1][0] == font:
+                runs[-1] = (font, runs[-1][1] + ch)
+            else:
+                runs.append((font, ch))
+        return runs
+
+    def _use(self, font: str, size: float, style: str) -> None:
+        self.set_font(font, style if font == FONT else "", size)
+
+    def text_width(self, text: str, size: float, style: str = "") -> float:
+        width = 0.0
+        for font, run in self._runs(text):
+            self._use(font, size, style)
+            width += self.get_string_width(run)
+        return width
+
+    def mixed_text(self, x: float, y: float, text: str, size: float, style: str = "") -> None:
+        """``text()`` of ``text`` in as many fonts as its characters need."""
+        for font, run in self._runs(text):
+            self._use(font, size, style)
+            self.text(x, y, run)
+            x += self.get_string_width(run)
 
     # -- vector plot ---------------------------------------------------------
     def plot(self, figure: PlotFigure, height: float = 62.0) -> None:
         if self.will_page_break(height + 12):
             self.add_page()
         self.set_font(FONT, "B", 9)
-        self.cell(0, 5, figure.title, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.cell(0, 5, self.say(figure.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         x0, y0 = self.l_margin + 14, self.get_y() + 2
         w, h = self.epw - 16, height - 14
         xs = np.concatenate([s.x for s in figure.series if s.x.size])
@@ -256,7 +334,7 @@ class ReportPdf(FPDF):
                                     for _ in (0, 1)])
         finite = np.isfinite(xs) & np.isfinite(ys)
         if not finite.any():
-            self.paragraph("(no data)")
+            self.paragraph(QT_TR_NOOP("(no data)"))
             return
         x_ticks = _nice_ticks(float(xs[finite].min()), float(xs[finite].max()))
         y_ticks = _nice_ticks(float(ys[finite].min()), float(ys[finite].max()))
@@ -305,12 +383,11 @@ class ReportPdf(FPDF):
                 self.set_fill_color(*s.color)
                 for x, y in pts:
                     self.circle(x, y, 0.45, style="F")
-        self.set_font(FONT, "", 7)
-        self.text(x0 + w / 2 - self.get_string_width(figure.x_label) / 2, y0 + h + 7,
-                  figure.x_label)
+        x_label, y_label = self.say(figure.x_label), self.say(figure.y_label)
+        self.mixed_text(x0 + w / 2 - self.text_width(x_label, 7) / 2, y0 + h + 7, x_label, 7)
         with self.rotation(90, self.l_margin + 1.5, y0 + h / 2):
-            self.text(self.l_margin + 1.5 - self.get_string_width(figure.y_label) / 2,
-                      y0 + h / 2, figure.y_label)
+            self.mixed_text(self.l_margin + 1.5 - self.text_width(y_label, 7) / 2,
+                            y0 + h / 2, y_label, 7)
         lx = x0 + 2
         for s in figure.series:
             if not s.label:  # a second line of a labelled pair (an envelope's lower edge)
@@ -318,8 +395,9 @@ class ReportPdf(FPDF):
             self.set_draw_color(*s.color)
             self.set_line_width(0.6)
             self.line(lx, y0 + 3, lx + 5, y0 + 3)
-            self.text(lx + 6, y0 + 4, s.label)
-            lx += 9 + self.get_string_width(s.label)
+            name = self.say(s.label)
+            self.mixed_text(lx + 6, y0 + 4, name, 7)
+            lx += 9 + self.text_width(name, 7)
         self.set_line_width(0.2)
         self.set_draw_color(*INK)
         self.set_y(y0 + h + 9)
@@ -328,13 +406,17 @@ class ReportPdf(FPDF):
 class _CertificatePdf(ReportPdf):
     def __init__(self, document: CertificateDocument) -> None:
         meta = document.metadata
+        say = _say(meta.language)
         super().__init__(
-            (meta.lab_name or "Laboratory not stated",
-             f"Certificate {meta.certificate_number or 'no number'}"),
-            ("This certificate shall not be reproduced except in full without the laboratory's "
-             "written approval.",
-             f"Certificate {meta.certificate_number or '—'} · AngleBench {__version__}"),
+            (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
+             say(message(QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
+                 if meta.certificate_number else message(QT_TR_NOOP("Certificate no number")))),
+            (say(QT_TR_NOOP("This certificate shall not be reproduced except in full without "
+                            "the laboratory's written approval.")),
+             say(message(QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
+                         number=meta.certificate_number or "—", version=__version__))),
             cjk=_needs_fallback(document) or document.metadata.language != "en")
+        self.say = say
         self.document = document
 
     def header(self) -> None:
@@ -344,11 +426,17 @@ class _CertificatePdf(ReportPdf):
 
     def _watermark(self) -> None:
         x, y = self.get_x(), self.get_y()
-        with self.local_context(text_color=(235, 200, 200)):
-            self.set_font(FONT, "B", 90)
-            with self.rotation(45, self.w / 2, self.h / 2):
-                self.text(self.w / 2 - 60, self.h / 2 + 12, "DRAFT")
+        with (self.local_context(text_color=(235, 200, 200)),
+              self.rotation(45, self.w / 2, self.h / 2)):
+            self.mixed_text(self.w / 2 - 60, self.h / 2 + 12, self.say(QT_TR_NOOP("DRAFT")), 90,
+                            "B")
         self.set_xy(x, y)
+
+
+def _mostly_cjk(text: str) -> bool:
+    """Chinese prose (a Chinese certificate's paragraphs): more CJK characters than spaces."""
+    cjk = sum(1 for ch in text if "\u3000" <= ch <= "\u9fff" or "\uff00" <= ch <= "\uffef")
+    return cjk > text.count(" ")
 
 
 def _long_word(text: str) -> bool:
@@ -389,13 +477,15 @@ def _tick(value: float, ticks: list[float]) -> str:
 def _standards_table(document: CertificateDocument) -> Table:
     rows = []
     for s in document.metadata.standards:
-        u = "—" if s.uncertainty_arcsec is None else (
-            f"{s.uncertainty_arcsec:g}\" ({BASIS_DIVISORS[s.basis][0]})")
+        u = "—" if s.uncertainty_arcsec is None else message(
+            "{u} ({basis})", u=f"{s.uncertainty_arcsec:g}\"",
+            basis=message(BASIS_DIVISORS[s.basis][0]))
         rows.append((s.description or "—", s.serial or "—", s.certificate_no or "—", u))
     if not rows:
-        rows.append(("not stated", "", "", ""))
-    return Table("Reference standards", ("Standard", "Serial no.", "Certificate no.",
-                                         "Uncertainty"), rows)
+        rows.append((QT_TR_NOOP("not stated"), "", "", ""))
+    return Table(QT_TR_NOOP("Reference standards"), (
+        QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
+        QT_TR_NOOP("Uncertainty")), rows)
 
 
 def _render(document: CertificateDocument) -> FPDF:
@@ -413,10 +503,11 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.set_font(FONT, "B", 17)
     pdf.cell(0, 9, label(document, document.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     pdf.set_font(FONT, "", 11)
-    pdf.cell(0, 6, f"{document.kind_title}", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.cell(0, 6, pdf.say(document.kind_title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     if document.is_draft:
-        pdf.paragraph("DRAFT — not valid as a certificate. Missing: "
-                      + ", ".join(meta.missing_fields()) + ".", 9, (170, 30, 30))
+        pdf.paragraph(message(QT_TR_NOOP("DRAFT — not valid as a certificate. Missing: "
+                                         "{fields}."), fields=_listed(meta.missing_fields())),
+                      9, (170, 30, 30))
     if meta.supersedes:
         pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
@@ -431,9 +522,10 @@ def _render(document: CertificateDocument) -> FPDF:
         (label(document, "Item under test", "\n"), meta.item_description),
         (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
         (label(document, "Serial number", "\n"), meta.item_serial),
-        (label(document, "Grade / specification", "\n"), "; ".join(p for p in (
-            meta.item_grade, f"tolerance ±{document.tolerance_arcsec:g}{document.unit}"
-            if document.tolerance_arcsec else "") if p)),
+        (label(document, "Grade / specification", "\n"), joined(_between("; ", [
+            meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
+                                     tolerance=f"{document.tolerance_arcsec:g}{document.unit}")
+            if document.tolerance_arcsec else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
         (label(document, "Environment", "\n"), _environment(meta)),
         (label(document, "Readings", "\n"), document.source_name),
@@ -444,21 +536,23 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.heading(label(document, "Method"))
     pdf.paragraph(document.method)
     if document.method_reference:
-        pdf.paragraph(f"Reference: {document.method_reference}.", 8, GREY)
+        pdf.paragraph(message(QT_TR_NOOP("Reference: {reference}."),
+                              reference=document.method_reference), 8, GREY)
     if document.standard:
-        pdf.paragraph(
-            f"The evaluation follows {document.standard}, implemented in AngleBench "
-            f"{__version__}; its verification is the validation report of that version "
-            "(anglebench validate): simulations with known truth and hand-computed examples, "
-            "each with its result.", 8, GREY)
+        pdf.paragraph(message(QT_TR_NOOP(
+            "The evaluation follows {standard}, implemented in AngleBench {version}; its "
+            "verification is the validation report of that version (anglebench validate): "
+            "simulations with known truth and hand-computed examples, each with its result."),
+            standard=document.standard, version=__version__), 8, GREY)
     else:
-        pdf.paragraph(
-            "This is a non-standard method, published in the reference above and implemented in "
-            f"AngleBench {__version__}. Its validation record (ISO/IEC 17025 7.2.2) is the "
+        pdf.paragraph(message(QT_TR_NOOP(
+            "This is a non-standard method, published in the reference above and implemented "
+            "in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the "
             "validation report of that version (anglebench validate): the reference figures of "
-            "the publication and exact simulations with known truth, each with its result.", 8,
-            GREY)
-    pdf.paragraph(f"{label(document, 'Sign convention')}: {document.sign_convention}.", 8.5)
+            "the publication and exact simulations with known truth, each with its result."),
+            version=__version__), 8, GREY)
+    pdf.paragraph(joined([label(document, "Sign convention"), _colon(document),
+                          _translatable(document.sign_convention), _stop(document)]), 8.5)
     if document.settings:
         pdf.heading(label(document, "Analysis settings", "\n"), keep_with=30)
         pdf.key_values(list(document.settings))
@@ -472,42 +566,44 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.heading(label(document, "Measurement uncertainty"))
     big_u = document.expanded_uncertainty_arcsec
     budget_ = document.budget
-    pdf.paragraph(
-        "The expanded uncertainty of the error is "
-        f"U = {big_u:.{uncertainty_decimals(big_u)}f}{document.unit} "
-        "(the largest over the points; each point's U is in the results table). At each point "
-        "it is the combined standard uncertainty multiplied by the coverage factor k of "
-        "Student's t for that point's effective degrees of freedom (Welch–Satterthwaite) and a "
-        f"coverage probability of {100 * budget_.probability:.2f} %; at the largest, "
-        f"k = {budget_.coverage_factor:.2f}. The uncertainty was evaluated according to the GUM "
-        "(JCGM 100:2008).")
+    pdf.paragraph(message(QT_TR_NOOP(
+        "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
+        "point's U is in the results table). At each point it is the combined standard "
+        "uncertainty multiplied by the coverage factor k of Student's t for that point's "
+        "effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of "
+        "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
+        "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
+        p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
     budget = budget_table(document.budget, document.budget_point, document.unit)
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
                    ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
-    notes = [f"{row[0]}: {c.note}" for row, c in zip(budget.rows, document.budget.components,
-                                                       strict=False) if c.note]
+    notes = [joined([_translatable(row[0]), _colon(document), _translatable(c.note)])
+             for row, c in zip(budget.rows, document.budget.components, strict=False) if c.note]
     for note in notes:
         pdf.paragraph(note, 7.5, GREY)
     pdf.heading(label(document, "Statement of conformity"))
     conformity = document.conformity
     pdf.paragraph(conformity.statement)
     if conformity.quantity:
-        pdf.paragraph(f"Decided quantity: {conformity.quantity}.", 8, GREY)
-    pdf.paragraph(f"Decision rule: {conformity.rule}.", 8, GREY)
+        pdf.paragraph(message(QT_TR_NOOP("Decided quantity: {quantity}."),
+                              quantity=_translatable(conformity.quantity)), 8, GREY)
+    pdf.paragraph(message(QT_TR_NOOP("Decision rule: {rule}."),
+                          rule=_translatable(conformity.rule)), 8, GREY)
     if conformity.zones:
-        pdf.paragraph(f"Zones: {conformity.zones}.", 8, GREY)
+        pdf.paragraph(message(QT_TR_NOOP("Zones: {zones}."),
+                              zones=_translatable(conformity.zones)), 8, GREY)
     pdf.heading(label(document, "Statements"))
     for statement in (*document.statements,
-                      "The results relate only to the item calibrated, as received, under the "
-                      "conditions stated."):
-        pdf.paragraph(f"• {statement}")
+                      QT_TR_NOOP("The results relate only to the item calibrated, as received, "
+                                 "under the conditions stated.")):
+        pdf.paragraph(joined(["• ", _translatable(statement)]))
     if document.warnings or meta.notes:
         pdf.heading(label(document, "Remarks"))
         for w in document.warnings:
-            pdf.paragraph(f"• {w}")
+            pdf.paragraph(joined(["• ", _translatable(w)]))
         if meta.notes:
             pdf.paragraph(meta.notes)
-    pdf.heading(document.results.title)
+    pdf.heading(label(document, document.results.title))
     n_cols = len(document.results.header)
     pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)
     _signatures(pdf)
@@ -516,16 +612,49 @@ def _render(document: CertificateDocument) -> FPDF:
     return pdf
 
 
+def _colon(document: CertificateDocument) -> str:
+    return "：" if document.metadata.language == "zh" else ": "
+
+
+def _stop(document: CertificateDocument) -> str:
+    return "。" if document.metadata.language == "zh" else "."
+
+
+def _translatable(text: str) -> str:
+    """``text`` as a part of a composed text that a Chinese certificate translates: a
+    :class:`Message` as it is, any other text looked up whole."""
+    if hasattr(text, "template") or getattr(text, "parts", ()):
+        return text
+    return message(text) if text else text
+
+
+def _between(separator: str, parts) -> list:
+    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`)."""
+    out: list = []
+    for part in parts:
+        if part:
+            out += ([separator] if out else []) + [_translatable(part)]
+    return out
+
+
+def _listed(names) -> str:
+    return joined(_between(", ", names))
+
+
 def _traceability(document: CertificateDocument) -> str:
     listed = [s for s in document.metadata.standards if s.certificate_no]
     if not listed:
-        return ("Metrological traceability: not established on this document — no reference "
-                "standard with a calibration certificate is listed.")
-    names = "; ".join(f"{s.description or 'standard'} (certificate {s.certificate_no})"
-                      for s in listed)
-    return ("Metrological traceability: the results are traceable to the SI unit of plane angle "
-            f"through the reference standards listed, calibrated as stated in their "
-            f"certificates: {names}.")
+        return message(QT_TR_NOOP("Metrological traceability: not established on this document "
+                                  "— no reference standard with a calibration certificate is "
+                                  "listed."))
+    names = joined(_between("; ", (
+        message(QT_TR_NOOP("{standard} (certificate {certificate})"),
+                standard=s.description or message(QT_TR_NOOP("standard")),
+                certificate=s.certificate_no) for s in listed)))
+    return message(QT_TR_NOOP("Metrological traceability: the results are traceable to the SI "
+                              "unit of plane angle through the reference standards listed, "
+                              "calibrated as stated in their certificates: {names}."),
+                   names=names)
 
 
 def _identity(document: CertificateDocument, created: dt.datetime) -> str:
@@ -538,10 +667,11 @@ def _identity(document: CertificateDocument, created: dt.datetime) -> str:
 def _environment(meta) -> str:
     parts = []
     if meta.temperature_c is not None:
-        parts.append(f"temperature {meta.temperature_c:.1f} °C")
+        parts.append(message(QT_TR_NOOP("temperature {t} °C"), t=f"{meta.temperature_c:.1f}"))
     if meta.humidity_pct is not None:
-        parts.append(f"relative humidity {meta.humidity_pct:.0f} %")
-    return ", ".join(parts)
+        parts.append(message(QT_TR_NOOP("relative humidity {h} %"),
+                             h=f"{meta.humidity_pct:.0f}"))
+    return joined(_between(", ", parts))
 
 
 def _signatures(pdf: _CertificatePdf) -> None:
@@ -551,15 +681,18 @@ def _signatures(pdf: _CertificatePdf) -> None:
     pdf.ln(8)
     y = pdf.get_y()
     half = pdf.epw / 2
-    for i, (role, name) in enumerate((("Operator", meta.operator), ("Approved by", meta.approver))):
+    for i, (role, name) in enumerate(((QT_TR_NOOP("Operator"), meta.operator),
+                                      (QT_TR_NOOP("Approved by"), meta.approver))):
         x = pdf.l_margin + i * half
         pdf.set_xy(x, y + 12)
         pdf.set_draw_color(*INK)
         pdf.line(x, y + 12, x + half - 12, y + 12)
         pdf.set_font(FONT, "", 8)
-        pdf.cell(half - 12, 4.5, f"{role}: {name or '—'}", new_x=XPos.LEFT, new_y=YPos.NEXT)
+        pdf.cell(half - 12, 4.5, f"{pdf.say(role)}{_colon(pdf.document)}{name or '—'}",
+                 new_x=XPos.LEFT, new_y=YPos.NEXT)
         pdf.set_x(x)
-        pdf.cell(half - 12, 4.5, "Signature and date", new_x=XPos.LEFT, new_y=YPos.NEXT)
+        pdf.cell(half - 12, 4.5, pdf.say(QT_TR_NOOP("Signature and date")), new_x=XPos.LEFT,
+                 new_y=YPos.NEXT)
     pdf.set_y(y + 24)
 
 

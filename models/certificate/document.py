@@ -15,6 +15,7 @@ import numpy as np
 
 from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
+from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure, PlotSeries
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
@@ -95,7 +96,7 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     rows = []
     for r in budget.table():
         dof = _dof_text(r["dof"])
-        rows.append((str(r["name"]), str(r["evaluation"]), str(r["distribution"]),
+        rows.append((r["name"], str(r["evaluation"]), r["distribution"],
                      _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
                      f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
                      f"{100 * r['share']:.1f}", dof))
@@ -103,18 +104,20 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     nu = budget.effective_dof()
     nu_text = _dof_text(nu)
     uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
-    rows.append(("Combined standard u_c", "", "", "", "", "", "", _fmt(uc), "100.0",
+    rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
     k = budget.coverage_factor
-    rows.append((f"Expanded U (k = {k:.2f})", "", "", "", "", "",
+    rows.append((message(QT_TR_NOOP("Expanded U (k = {k})"), k=f"{k:.2f}"), "", "", "", "", "",
                  "", _fmt(k * uc), "", ""))
-    note = (f"Budget at {point}, the point with the largest U. k = {k:.2f} is Student's t for "
-            f"ν_eff = {nu_text} (Welch–Satterthwaite) and a coverage probability of "
-            f"{100 * budget.probability:.2f} %; each point's U uses its own ν_eff.")
+    note = message(QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
+                              "Student's t for ν_eff = {nu} (Welch–Satterthwaite) and a coverage "
+                              "probability of {p} %; each point's U uses its own ν_eff."),
+                   point=point, k=f"{k:.2f}", nu=nu_text, p=f"{100 * budget.probability:.2f}")
     u = unit.strip()
-    return Table("Uncertainty budget", ("Input", "Type", "Distribution", f"Value ({u})", "Divisor",
-                                        f"u ({u})", "c", f"c·u ({u})", "Share %", "ν"),
-                 rows, note)
+    return Table(QT_TR_NOOP("Uncertainty budget"), (
+        QT_TR_NOOP("Input"), QT_TR_NOOP("Type"), QT_TR_NOOP("Distribution"),
+        message(QT_TR_NOOP("Value ({unit})"), unit=u), QT_TR_NOOP("Divisor"),
+        f"u ({u})", "c", f"c·u ({u})", QT_TR_NOOP("Share %"), "ν"), rows, note)
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
@@ -131,14 +134,17 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
         if std.uncertainty_arcsec is None:
             continue
         divisor, distribution = divisor_for_basis(std.basis)
-        name = std.description or "Reference standard"
-        cert = f", certificate {std.certificate_no}" if std.certificate_no else ""
+        name = std.description or QT_TR_NOOP("Reference standard")
         per, c = reading, sensitivity
         if std.applies_to == "from face 1" and sensitivity_from_first is not None:
-            per, c = "face, stated from face 1", sensitivity_from_first
+            per, c = QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first
+        basis = message(BASIS_DIVISORS[std.basis][0])
+        note = (message(QT_TR_NOOP("{basis} per {per}, certificate {certificate}"), basis=basis,
+                        per=message(per), certificate=std.certificate_no)
+                if std.certificate_no else
+                message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf,
-            f"{BASIS_DIVISORS[std.basis][0]} per {per}{cert}"))
+            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf, note))
     return out
 
 
@@ -147,8 +153,10 @@ def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[Bud
     r = metadata.item_resolution_arcsec
     if not r:
         return []
-    return [BudgetComponent("Item resolution", "B", "rectangular", r / 2.0, math.sqrt(3.0),
-                            sensitivity, math.inf, f"resolution {r:g}\" of the item's indication")]
+    return [BudgetComponent(QT_TR_NOOP("Item resolution"), "B", "rectangular", r / 2.0,
+                            math.sqrt(3.0), sensitivity, math.inf,
+                            message(QT_TR_NOOP("resolution {r} of the item's indication"),
+                                    r=f"{r:g}\""))]
 
 
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
@@ -159,12 +167,13 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     digits = uncertainty_decimals(big_u)
     rows = []
     if math.isfinite(conformity.value_arcsec):
-        rows.append(("Decided quantity", format_uncertain(conformity.value_arcsec,
-                                                           conformity.expanded_arcsec, unit),
-                     conformity.quantity))
-    rows.append((f"Expanded uncertainty U (p = {100 * budget.probability:.2f} %)",
+        rows.append((QT_TR_NOOP("Decided quantity"), format_uncertain(
+            conformity.value_arcsec, conformity.expanded_arcsec, unit), conformity.quantity))
+    rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
+                         p=f"{100 * budget.probability:.2f}"),
                  f"{big_u:.{digits}f}{unit}",
-                 f"largest over the {points}; k = {budget.coverage_factor:.2f} there"))
+                 message(QT_TR_NOOP("largest over the {points}; k = {k} there"),
+                         points=message(points), k=f"{budget.coverage_factor:.2f}")))
     return rows
 
 

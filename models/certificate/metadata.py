@@ -14,6 +14,7 @@ import re
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
+from models.messages import QT_TR_NOOP
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
@@ -40,10 +41,11 @@ LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_sc
                       "coverage_probability_pct", "document_type")
 
 #: What the document is: a calibration certificate, or a test report.
-DOCUMENT_TYPES = {"calibration": "Calibration certificate", "test": "Test report"}
-#: the certificate's language: English, or its headings and labels in Chinese (JJF 1001
-#: terms) beside the English ("校准证书 Calibration certificate")
-LANGUAGES = {"en": "English", "zh+en": "中文 + English (headings and labels)"}
+DOCUMENT_TYPES = {"calibration": QT_TR_NOOP("Calibration certificate"),
+                  "test": QT_TR_NOOP("Test report")}
+#: the certificate's language: English; Chinese throughout (JJF 1001 terms); or its headings
+#: and labels in Chinese beside the English ("校准证书 Calibration certificate")
+LANGUAGES = {"en": "English", "zh": "中文", "zh+en": "中文 + English (headings and labels)"}
 
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
 
@@ -276,14 +278,16 @@ class CertificateMetadata:
     def missing_fields(self) -> list[str]:
         """What a signed certificate must state and this one does not (it is then a draft)."""
         required = {
-            "certificate number": self.certificate_number, "laboratory": self.lab_name,
-            "customer": self.customer_name, "item under test": self.item_description,
-            "item serial number": self.item_serial, "date of calibration": self.calibration_date,
-            "operator": self.operator,
+            QT_TR_NOOP("certificate number"): self.certificate_number,
+            QT_TR_NOOP("laboratory"): self.lab_name, QT_TR_NOOP("customer"): self.customer_name,
+            QT_TR_NOOP("item under test"): self.item_description,
+            QT_TR_NOOP("item serial number"): self.item_serial,
+            QT_TR_NOOP("date of calibration"): self.calibration_date,
+            QT_TR_NOOP("operator"): self.operator,
         }
         missing = [name for name, value in required.items() if not value]
         if not self.standards:
-            missing.append("reference standards")
+            missing.append(QT_TR_NOOP("reference standards"))
         return missing
 
 

@@ -14,6 +14,7 @@ import numpy as np
 
 from models.decimation import envelope, one_per_cell
 from models.fringe.model import model_signal
+from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
 
 if TYPE_CHECKING:  # the analysis imports the report, which draws with this module
@@ -22,6 +23,7 @@ if TYPE_CHECKING:  # the analysis imports the report, which draws with this modu
 __all__ = ["figures", "first_period_with_uncertainty"]
 
 BINS = 2000  # runs per curve
+ERROR = QT_TR_NOOP("error")  # an axis title, its unit after it
 BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 103, 189),
                                           (214, 39, 40), (230, 126, 34), (22, 160, 133))
 
@@ -33,10 +35,10 @@ def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray, str]:
         # one way along the record: a sample whose phase stepped back less than a turn
         # (a spike typed over it, noise while standing) is drawn where the record had got to
         return np.maximum.accumulate(periods), np.arange(periods.size), \
-            "electrical phase θ (periods)"
+            QT_TR_NOOP("electrical phase θ (periods)")
     x = np.degrees(np.mod(result.theta_rad, 2 * np.pi))
     order = np.argsort(x, kind="stable")
-    return x[order], order, "phase within the period (°); the motion stood or turned back"
+    return x[order], order, QT_TR_NOOP("phase within the period (°); the motion stood or turned back")
 
 
 def _residuals(u: np.ndarray, theta_rad: np.ndarray, fit) -> np.ndarray:
@@ -56,19 +58,20 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     comp_x, _ = envelope(x, comp, bins)
     pick = np.clip(np.union1d(np.searchsorted(x, raw_x), np.searchsorted(x, comp_x)), 0,
                    max(x.size - 1, 0))
-    label = ("error, est. phase" if result.phase_source == "estimated" else "interp. error")
-    out = {"errors": PlotFigure("Interpolation error before and after compensation", along,
+    label = (QT_TR_NOOP("error, est. phase") if result.phase_source == "estimated"
+             else QT_TR_NOOP("interp. error"))
+    out = {"errors": PlotFigure(QT_TR_NOOP("Interpolation error before and after compensation"), along,
                                 f"{label} ({unit})", (
-        PlotSeries("before compensation", x[pick], raw[pick], BLUE, role="raw"),
-        PlotSeries("after compensation", x[pick], comp[pick], GREEN, role="corrected")))}
+        PlotSeries(QT_TR_NOOP("before compensation"), x[pick], raw[pick], BLUE, role="raw"),
+        PlotSeries(QT_TR_NOOP("after compensation"), x[pick], comp[pick], GREEN, role="corrected")))}
     res_s = _residuals(result.u_sin, result.theta_rad, result.sin_fit)[order] * 1e3
     res_c = _residuals(result.u_cos, result.theta_rad, result.cos_fit)[order] * 1e3
-    out["residuals"] = PlotFigure("Fit residuals", along, "residual (mV)", (
+    out["residuals"] = PlotFigure(QT_TR_NOOP("Fit residuals"), along, QT_TR_NOOP("residual (mV)"), (
         PlotSeries("sin", *envelope(x, res_s, bins), PURPLE, role="residual"),
         PlotSeries("cos", *envelope(x, res_c, bins), RED)))
     step = max(1, x.size // (2 * bins))
     theta = result.theta_rad[order][::step]
-    out["signals"] = PlotFigure("Signals and their fit", along, "signal (V)", (
+    out["signals"] = PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
         PlotSeries("u sin", *envelope(x, result.u_sin[order], bins), (230, 176, 170)),
         PlotSeries("u cos", *envelope(x, result.u_cos[order], bins), (169, 204, 227)),
         PlotSeries("sin fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28)),
@@ -80,12 +83,12 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                 e.offset_sin + e.amplitude_sin * np.sin(t)) if e is not None
                else (np.empty(0), np.empty(0)))
     radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
-    out["lissajous"] = PlotFigure("Lissajous figure", "u cos (V)", "u sin (V)", (
+    out["lissajous"] = PlotFigure(QT_TR_NOOP("Lissajous figure"), "u cos (V)", "u sin (V)", (
         PlotSeries("measured", result.u_cos[shown], result.u_sin[shown], RED, True),
         PlotSeries("fitted ellipse (Heydemann)", *ellipse, GREEN),
         PlotSeries("compensated (circle × A1)", radius * np.cos(t), radius * np.sin(t), BLUE)))
     orders = np.array(result.sin_fit.orders, dtype=float)
-    out["spectrum"] = PlotFigure("Harmonics of the two channels", "harmonic order",
+    out["spectrum"] = PlotFigure(QT_TR_NOOP("Harmonics of the two channels"), "harmonic order",
                                  "amplitude (V, log10)", tuple(
         PlotSeries(name, orders + shift, np.log10([max(fit.amplitude[k], 1e-9)
                                                    for k in fit.orders]), color)
@@ -97,7 +100,7 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     if result.sin_periods.shape[1] > 3:
         drift += [("A3 × 10", result.sin_periods[:, 3] * 10, ORANGE),
                   ("B3 × 10", result.cos_periods[:, 3] * 10, TEAL)]
-    out["drift"] = PlotFigure("Drift per period", "period", "amplitude (V)", tuple(
+    out["drift"] = PlotFigure(QT_TR_NOOP("Drift per period"), "period", "amplitude (V)", tuple(
         PlotSeries(name, *envelope(periods, values, bins // 2), color)
         for name, values, color in drift))
     return out
@@ -105,8 +108,9 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
 
 def first_period_with_uncertainty(result: FringeResult, expanded, samples: int) -> PlotFigure:
     unit = result.unit_symbol.strip()
-    return PlotFigure("Compensated error in the first period, with U", "phase θ (°)",
-                      f"error ({unit})", (
-        PlotSeries("compensated ± U", np.degrees(result.theta_rad[:samples]),
+    return PlotFigure(QT_TR_NOOP("Compensated error in the first period, with U"),
+                      QT_TR_NOOP("phase θ (°)"),
+                      f"{ERROR} ({unit})", (
+        PlotSeries(QT_TR_NOOP("compensated ± U"), np.degrees(result.theta_rad[:samples]),
                    result.compensated_error[:samples], GREEN, samples <= 256,
                    band=np.asarray(expanded)[:samples], role="corrected"),))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
 from models.polygon.model import PolygonResult, pyramidal_readings_arcsec
 
@@ -12,14 +13,14 @@ __all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "re
 
 BLUE, ORANGE, GREEN, PURPLE, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
                                     (148, 103, 189), (192, 57, 43))
-ANGLE = "position angle (°)"
+ANGLE = QT_TR_NOOP("position angle (°)")
 
 
 def error_figure(result: PolygonResult) -> PlotFigure:
     th = result.theta_deg
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
-    return PlotFigure("Raw and corrected error", ANGLE, "error (\")", (
-        PlotSeries("raw error e (mean)", th, result.mean_error_arcsec, BLUE, True, role="raw"),
+    return PlotFigure(QT_TR_NOOP("Raw and corrected error"), ANGLE, QT_TR_NOOP("error (\")"), (
+        PlotSeries(QT_TR_NOOP("raw error e (mean)"), th, result.mean_error_arcsec, BLUE, True, role="raw"),
         PlotSeries("correction −(ε_x − ε_x,zero)", th, correction, ORANGE, role="model"),
         PlotSeries("corrected e − (ε_x − ε_x,zero)", th, result.mean_corrected_arcsec, GREEN, True,
                    role="corrected"),
@@ -27,8 +28,9 @@ def error_figure(result: PolygonResult) -> PlotFigure:
 
 
 def corrected_with_uncertainty(result: PolygonResult, expanded) -> PlotFigure:
-    return PlotFigure("Corrected error with its expanded uncertainty U", ANGLE, "error (\")", (
-        PlotSeries("corrected ± U", result.theta_deg, result.mean_corrected_arcsec, GREEN, True,
+    return PlotFigure(QT_TR_NOOP("Corrected error with its expanded uncertainty U"), ANGLE,
+                      QT_TR_NOOP("error (\")"), (
+        PlotSeries(QT_TR_NOOP("corrected ± U"), result.theta_deg, result.mean_corrected_arcsec, GREEN, True,
                    band=np.asarray(expanded), role="corrected"),))
 
 
@@ -36,9 +38,10 @@ def residual_figure(result: PolygonResult) -> PlotFigure | None:
     tilt = result.sets[0].tilt
     if tilt is None:
         return None
-    return PlotFigure("Tilt fit residuals (vertical readings, set 1)", ANGLE, "residual (\")", (
-        PlotSeries("residual", result.theta_deg, tilt.residuals_arcsec, PURPLE, True,
-                   role="residual"),))
+    return PlotFigure(QT_TR_NOOP("Tilt fit residuals (vertical readings, set 1)"), ANGLE,
+                      QT_TR_NOOP("residual (\")"), (
+        PlotSeries(QT_TR_NOOP("residual"), result.theta_deg, tilt.residuals_arcsec, PURPLE, True,
+                   role=QT_TR_NOOP("residual")),))
 
 
 def tilt_figure(result: PolygonResult) -> PlotFigure | None:
@@ -50,7 +53,7 @@ def tilt_figure(result: PolygonResult) -> PlotFigure | None:
     dense = np.linspace(0.0, 360.0, 361)  # face angle; the model runs in the counting sense
     _, model = pyramidal_readings_arcsec(result.counting * dense, tilt.psi_arcsec, tilt.omega_deg)
     _, at_faces = pyramidal_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg)
-    return PlotFigure("Vertical readings and the tilt model (set 1)", "θ (deg)",
+    return PlotFigure(QT_TR_NOOP("Vertical readings and the tilt model (set 1)"), "θ (deg)",
                       "AC vertical − zero (\")", (
         PlotSeries("readings", result.theta_deg, at_faces + tilt.residuals_arcsec, RED, True),
         PlotSeries("tilt model ε_y", dense, model, BLUE),
@@ -59,5 +62,5 @@ def tilt_figure(result: PolygonResult) -> PlotFigure | None:
 
 def harmonics_figure(result: PolygonResult) -> PlotFigure:
     h = result.harmonics
-    return PlotFigure("Harmonics of the corrected error", "harmonic order", "amplitude (\")", (
+    return PlotFigure(QT_TR_NOOP("Harmonics of the corrected error"), "harmonic order", "amplitude (\")", (
         PlotSeries("amplitude", h.order[1:].astype(float), h.amplitude[1:], BLUE),))

@@ -52,7 +52,7 @@ from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec"]
 
-METHOD = (
+METHOD = QT_TR_NOOP(
     "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
     "its faces. The shaft is turned to each face in turn; the encoder's reading a, the polygon's "
     "calibrated face deviation and the autocollimator's horizontal reading x give the encoder "
@@ -109,8 +109,11 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
         s_i, sets_dof = repeat
         noise = float(np.sqrt(np.mean(s_i**2)))
         dof = sets_dof * n
-        name, note = "Repeatability", (f"pooled standard deviation {noise:.3f}\" of the sets about "
-                                       f"their direction's mean, {dof} degrees of freedom")
+        name = (QT_TR_NOOP("Repeatability (mean of {sets} sets)") if len(result.sets) > 1
+                else QT_TR_NOOP("Repeatability (mean of 1 set)"))
+        note = message(QT_TR_NOOP("pooled standard deviation {s} of the sets about their "
+                                  "direction's mean, {dof} degrees of freedom"),
+                       s=f"{noise:.3f}\"", dof=dof)
         evaluation = "A"
     else:
         fits = [s.tilt for s in result.sets if s.tilt is not None]
@@ -118,18 +121,21 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
             return [], 0.0
         dof = sum(max(n - 3, 1) for _ in fits)
         noise = float(np.sqrt(sum(np.sum(t.residuals_arcsec**2) for t in fits) / dof))
-        name, note = "Autocollimator reading noise", (
-            f"scatter of the vertical readings about the tilt fits, {dof} degrees of freedom "
-            "(no direction was measured twice)")
+        name = (QT_TR_NOOP("Autocollimator reading noise (mean of {sets} sets)")
+                if len(result.sets) > 1 else
+                QT_TR_NOOP("Autocollimator reading noise (mean of 1 set)"))
+        note = message(QT_TR_NOOP("scatter of the vertical readings about the tilt fits, {dof} "
+                                  "degrees of freedom (no direction was measured twice)"), dof=dof)
         evaluation = "A"
     mean_sensitivity = ones if len(result.sets) > 1 else not_zero
     return [
-        BudgetComponent(f"{name} (mean of {len(result.sets)} set{'s' if len(result.sets) > 1 else ''})",
+        BudgetComponent(message(name, sets=len(result.sets)),
                         evaluation, "normal", noise / math.sqrt(m_eff), 1.0, mean_sensitivity, dof,
-                        note + f", divided by √{m_eff:g}"),
-        BudgetComponent(f"Zero reading (face {result.zero_face}, set 1)", evaluation, "normal", noise,
-                        1.0, not_zero, dof, "one reading shared by every set: not reduced",
-                        common=True),
+                        message(QT_TR_NOOP("{note}, divided by √{m}"), note=note, m=f"{m_eff:g}")),
+        BudgetComponent(message(QT_TR_NOOP("Zero reading (face {face}, set 1)"),
+                                face=result.zero_face), evaluation, "normal", noise,
+                        1.0, not_zero, dof, QT_TR_NOOP("one reading shared by every set: not "
+                                                       "reduced"), common=True),
     ], noise
 
 
@@ -142,10 +148,10 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
         return []
     rho = roll_arcmin / 60.0 * math.pi / 180.0
     return [BudgetComponent(
-        "Autocollimator reticle roll", "B", "rectangular", rho * np.mean(spans, axis=0),
+        QT_TR_NOOP("Autocollimator reticle roll"), "B", "rectangular", rho * np.mean(spans, axis=0),
         math.sqrt(3.0), 1.0, math.inf,
-        f"roll up to ±{roll_arcmin:g}′ (stated) times the vertical reading's change from the "
-        "zero face")]
+        message(QT_TR_NOOP("roll up to ±{roll} (stated) times the vertical reading's change "
+                           "from the zero face"), roll=f"{roll_arcmin:g}′"))]
 
 
 def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
@@ -158,12 +164,13 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> 
     sensitivity = np.ones(n)
     if len(result.sets) == 1:
         sensitivity[zero] = 0.0
-    how = "spread linearly and removed, half the drift left" if result.spread_drift else \
-        "not removed, up to the whole drift"
+    how = (QT_TR_NOOP("spread linearly and removed, half the drift left") if result.spread_drift
+           else QT_TR_NOOP("not removed, up to the whole drift"))
     return [BudgetComponent(
-        "Closure drift", "B", "rectangular", half_width / math.sqrt(len(result.sets)),
+        QT_TR_NOOP("Closure drift"), "B", "rectangular", half_width / math.sqrt(len(result.sets)),
         math.sqrt(3.0), sensitivity, math.inf,
-        f"closures {', '.join(f'{d:+.2f}' for d in drifts)}\" beyond their reading noise; {how}")]
+        message(QT_TR_NOOP("closures {closures} beyond their reading noise; {how}"),
+                closures=", ".join(f"{d:+.2f}" for d in drifts) + "\"", how=message(how)))]
 
 
 def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
@@ -175,14 +182,15 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     not_first = (np.arange(n) != 0).astype(float)
     from_first = np.sqrt(not_first + not_first[zero])
     from_first[zero] = 0.0
-    components = reference_standard_components(metadata, pair, "face or reading", from_first)
+    components = reference_standard_components(metadata, pair, QT_TR_NOOP("face or reading"),
+                                               from_first)
     noise_components, noise = _noise_components(result, n, zero)
     components += noise_components
     u_pyr = _pyramidal_uncertainty(result)
     if u_pyr is not None:
         components.append(BudgetComponent(
-            "Pyramidal correction (ψ, ω)", "A", "normal", u_pyr, 1.0, 1.0, max(n - 3, 1),
-            "u(ψ), u(ω) of the tilt fits propagated through ε_x"))
+            QT_TR_NOOP("Pyramidal correction (ψ, ω)"), "A", "normal", u_pyr, 1.0, 1.0,
+            max(n - 3, 1), QT_TR_NOOP("u(ψ), u(ω) of the tilt fits propagated through ε_x")))
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
@@ -215,65 +223,83 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     budget = polygon_budget(result, metadata)
     big_u = budget.expanded_arcsec
     m = len(result.sets)
-    counting = "with the face numbering" if result.counting > 0 else "against the face numbering"
-    rows_p = [("Faces", f"{result.faces}", ""), ("Sets", f"{m}", ""),
-              ("Encoder grade", f"{result.grade} (±{tol:g}\")", ""),
-              ("Encoder counts", counting, ""),
-              ("Common zero", f"face {result.zero_face} of set 1", ""),
-              ("Closure drift", "spread linearly over each set and removed" if result.spread_drift
-               else "reported, not removed", ""),
-              ("Allowed pyramidal tilt", f"{result.allowed_tilt_arcsec:.0f}\" (worst case over the "
-               f"tilt direction; the seed's ω = 90° figure: {result.allowed_tilt_seed_arcsec:.0f}\")",
-               "")]
+    counting = (QT_TR_NOOP("with the face numbering") if result.counting > 0
+                else QT_TR_NOOP("against the face numbering"))
+    rows_p = [(QT_TR_NOOP("Faces"), f"{result.faces}", ""), (QT_TR_NOOP("Sets"), f"{m}", ""),
+              (QT_TR_NOOP("Encoder grade"), f"{result.grade} (±{tol:g}\")", ""),
+              (QT_TR_NOOP("Encoder counts"), counting, ""),
+              (QT_TR_NOOP("Common zero"), message(QT_TR_NOOP("face {face} of set 1"),
+                                                  face=result.zero_face), ""),
+              (QT_TR_NOOP("Closure drift"),
+               QT_TR_NOOP("spread linearly over each set and removed") if result.spread_drift
+               else QT_TR_NOOP("reported, not removed"), ""),
+              (QT_TR_NOOP("Allowed pyramidal tilt"), message(QT_TR_NOOP(
+                  "{tilt} (worst case over the tilt direction; the seed's ω = 90° figure: "
+                  "{seed})"), tilt=f"{result.allowed_tilt_arcsec:.0f}\"",
+                  seed=f"{result.allowed_tilt_seed_arcsec:.0f}\""), "")]
     for i, s in enumerate(result.sets, 1):
-        closure = "not measured" if s.closure_drift_arcsec is None else (
-            f"drift {s.closure_drift_arcsec:+.2f}\" ({'within' if s.closure_ok else 'OUTSIDE'} the "
-            "limit)")
-        rows_p.append((f"Set {i} ({'forward' if s.direction > 0 else 'reverse'}, from face "
-                       f"{s.start_face}) closure", closure, ""))
+        closure = QT_TR_NOOP("not measured") if s.closure_drift_arcsec is None else message(
+            QT_TR_NOOP("drift {drift} (within the limit)") if s.closure_ok else
+            QT_TR_NOOP("drift {drift} (OUTSIDE the limit)"),
+            drift=f"{s.closure_drift_arcsec:+.2f}\"")
+        rows_p.append((message(QT_TR_NOOP("Set {set} (forward, from face {face}) closure")
+                               if s.direction > 0 else
+                               QT_TR_NOOP("Set {set} (reverse, from face {face}) closure"),
+                               set=i, face=s.start_face), closure, ""))
         if s.tilt is not None:
-            rows_p.append((f"Set {i} pyramidal tilt ψ", f"{s.tilt.psi_arcsec:.1f}\"",
-                           f"{2 * s.tilt.u_psi_arcsec:.2f}\""))
-            rows_p.append((f"Set {i} tilt direction ω", f"{s.tilt.omega_deg:.1f}°",
-                           f"{2 * s.tilt.u_omega_deg:.2f}°"))
-    parameters = Table("Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"), rows_p)
+            rows_p.append((message(QT_TR_NOOP("Set {set} pyramidal tilt ψ"), set=i),
+                           f"{s.tilt.psi_arcsec:.1f}\"", f"{2 * s.tilt.u_psi_arcsec:.2f}\""))
+            rows_p.append((message(QT_TR_NOOP("Set {set} tilt direction ω"), set=i),
+                           f"{s.tilt.omega_deg:.1f}°", f"{2 * s.tilt.u_omega_deg:.2f}°"))
+    parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
+                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), "U (k = 2)"), rows_p)
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
     numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
                        correction, result.mean_corrected_arcsec, big_u, strict=True))
     rows = [(f"{int(p)}", f"{t:.3f}", f"{r:+.2f}", f"{c:+.3f}", f"{e:+.2f}", f"{u:.2f}")
             for p, t, r, c, e, u in numeric]
-    mean = "mean of the two directions' means" if result.reversal_arcsec is not None else \
-        f"mean of {m} set{'s' if m > 1 else ''}"
-    results = Table(f"Results per position ({mean})",
-                    ("Position", "Nominal (°)", "Raw error (\")", "Correction (\")",
-                     "Corrected error (\")", "U (\")"), rows,
-                    f"Error = indicated − reference, from face {result.zero_face} of set 1. "
-                    "Corrected = raw + correction; the correction removes the error the "
-                    "pyramidal tilt induces.")
+    title = (message(QT_TR_NOOP("Results per position (mean of the two directions' means)"))
+             if result.reversal_arcsec is not None else
+             message(QT_TR_NOOP("Results per position (mean of {sets} sets)"), sets=m) if m > 1
+             else message(QT_TR_NOOP("Results per position (mean of 1 set)")))
+    results = Table(title,
+                    (QT_TR_NOOP("Position"), QT_TR_NOOP("Nominal (°)"), QT_TR_NOOP("Raw error (\")"),
+                     QT_TR_NOOP("Correction (\")"), QT_TR_NOOP("Corrected error (\")"), "U (\")"),
+                    rows,
+                    message(QT_TR_NOOP("Error = indicated − reference, from face {face} of set 1. "
+                                       "Corrected = raw + correction; the correction removes the "
+                                       "error the pyramidal tilt induces."),
+                            face=result.zero_face))
     st, raw = result.stats, result.raw_stats
     stat_rows = [
-        ("Raw error", f"{raw.min:+.2f}\" … {raw.max:+.2f}\"", f"peak-to-peak {raw.peak_to_peak:.2f}\""),
-        ("Corrected error", f"{st.min:+.2f}\" … {st.max:+.2f}\"",
-         f"peak-to-peak {st.peak_to_peak:.2f}\""),
+        (QT_TR_NOOP("Raw error"), f"{raw.min:+.2f}\" … {raw.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{raw.peak_to_peak:.2f}\"")),
+        (QT_TR_NOOP("Corrected error"), f"{st.min:+.2f}\" … {st.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{st.peak_to_peak:.2f}\"")),
     ]
     h = result.harmonics
     if h.amplitude.size > 2:
-        stat_rows.append(("Harmonics 1st / 2nd", f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
-                          "eccentricity / ellipticity"))
+        stat_rows.append((QT_TR_NOOP("Harmonics 1st / 2nd"),
+                          f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
+                          QT_TR_NOOP("eccentricity / ellipticity")))
     if result.repeatability_arcsec is not None:
-        stat_rows.append(("Repeatability (largest s over positions)",
+        stat_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     elif m > 1:
-        stat_rows.append(("Repeatability", "not evaluated", "no direction was measured twice"))
+        stat_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
+                          QT_TR_NOOP("no direction was measured twice")))
     if result.reversal_arcsec is not None:
-        stat_rows.append(("Reversal B (largest |x̄↑ − x̄↓|)",
+        stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|)"),
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
-                          f"mean reversal {result.mean_reversal_arcsec:+.2f}\""))
+                          message(QT_TR_NOOP("mean reversal {b}"),
+                                  b=f"{result.mean_reversal_arcsec:+.2f}\"")))
     conformity = decide_conformity(
         result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
-        metadata.decision_quantity, "" if result.valid else "the run is invalid (closure failed)")
-    stat_rows[2:2] = decision_rows(conformity, budget, "positions")
-    statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
+        metadata.decision_quantity,
+        "" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")))
+    stat_rows[2:2] = decision_rows(conformity, budget, QT_TR_NOOP("positions"))
+    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
+                       stat_rows)
     residuals = residual_figure(result)
     plots = [error_figure(result), corrected_with_uncertainty(result, big_u)]
     if residuals is not None:
@@ -285,15 +311,17 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                                            "vertical readings.")))
     worst = budget.worst_index
     return CertificateDocument(
-        "polygon", "Polygon encoder test", metadata, source_name, METHOD, method_reference,
-        parameters, results, statistics, budget, f"position {worst + 1}", conformity, tol,
+        "polygon", QT_TR_NOOP("Polygon encoder test"), metadata, source_name, METHOD,
+        method_reference, parameters, results, statistics, budget,
+        message(QT_TR_NOOP("position {position}"), position=worst + 1), conformity, tol,
         tuple(plots), tuple(warnings),
         statements=(
-            f"U is zero at face {result.zero_face} of set 1: every error is taken from that "
-            "reading, so its own error is zero by definition.",
-            "Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method's "
-            "reference; the allowed pyramidal tilt is derived from them (a third of the "
-            "accuracy, worst case over the tilt direction)."),
+            message(QT_TR_NOOP("U is zero at face {face} of set 1: every error is taken from "
+                               "that reading, so its own error is zero by definition."),
+                    face=result.zero_face),
+            QT_TR_NOOP("Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the "
+                       "method's reference; the allowed pyramidal tilt is derived from them (a "
+                       "third of the accuracy, worst case over the tilt direction).")),
         point_columns=(("position", np.arange(1, result.faces + 1, dtype=float)),
          ("nominal_deg", result.theta_deg), ("raw_error_arcsec", result.mean_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.mean_corrected_arcsec),

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
 
 __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
@@ -36,9 +37,9 @@ __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TE
 #: stops and the reference reads the actual position, so x = reference − indicated: the
 #: negative of an error of indication (the other workbenches' sign).
 SIGN_CONVENTION = "actual_minus_target"
-SIGN_CONVENTION_TEXT = ("positional deviation x = actual position − target (ISO 230-2), i.e. "
-                        "reference − indicated: the negative of an error of indication; "
-                        "compensation = −x")
+SIGN_CONVENTION_TEXT = QT_TR_NOOP("positional deviation x = actual position − target (ISO "
+                                  "230-2), i.e. reference − indicated: the negative of an "
+                                  "error of indication; compensation = −x")
 
 #: ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target.
 MIN_RUNS = 5
@@ -58,7 +59,7 @@ DEVIATION_UNITS: dict[str, tuple[str, float, str]] = {
 STANDARDS: dict[str, str] = {
     "iso230-2": "ISO 230-2:2014",
     "vdi3441": "VDI/DGQ 3441:1977",
-    "gb17421.2": "GB/T 17421.2-2016 (identical to ISO 230-2:2014)",
+    "gb17421.2": QT_TR_NOOP("GB/T 17421.2-2016 (identical to ISO 230-2:2014)"),
 }
 
 
@@ -66,7 +67,7 @@ def figure_text(value: float | None, symbol: str) -> str:
     """A figure as the summary and the certificate print it; "not evaluated" when the
     readings could not determine it."""
     if value is None or not math.isfinite(value):
-        return "not evaluated"
+        return QT_TR_NOOP("not evaluated")
     return f"{value:.3f}{symbol}"
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
 from models.positioning.model import PositioningResult
 
@@ -38,13 +39,13 @@ def deviation_figure(result: PositioningResult) -> PlotFigure:
             upper.append(np.nanmax(stats.mean + band))
             lower.append(np.nanmin(stats.mean - band))
     if result.iso.bidirectional_mean is not None:
-        series.append(PlotSeries("bidirectional mean M_i", x, result.iso.bidirectional_mean, MEAN,
+        series.append(PlotSeries(QT_TR_NOOP("bidirectional mean M_i"), x, result.iso.bidirectional_mean, MEAN,
                                  role="model"))
     if upper:
         ends = np.array([x[0], x[-1]], dtype=float)
-        series.append(PlotSeries("envelope of A", ends, np.full(2, max(upper)), ENVELOPE))
+        series.append(PlotSeries(QT_TR_NOOP("envelope of A"), ends, np.full(2, max(upper)), ENVELOPE))
         series.append(PlotSeries("", ends, np.full(2, min(lower)), ENVELOPE))
-    return PlotFigure("Mean positional deviation with ±2s", _x_label(result), _y_label(result),
+    return PlotFigure(QT_TR_NOOP("Mean positional deviation with ±2s"), _x_label(result), _y_label(result),
                       tuple(series))
 
 
@@ -56,7 +57,7 @@ def reversal_figure(result: PositioningResult) -> PlotFigure | None:
     return PlotFigure("Reversal value B_i = x̄↑ − x̄↓", _x_label(result),
                       _y_label(result, "reversal"),
                       (PlotSeries("B_i", x, result.iso.reversal, MEAN, True, role="residual"),
-                       PlotSeries("mean reversal B̄", np.array([x[0], x[-1]], dtype=float),
+                       PlotSeries(QT_TR_NOOP("mean reversal B̄"), np.array([x[0], x[-1]], dtype=float),
                                   np.full(2, mean), ENVELOPE)))
 
 
@@ -73,4 +74,4 @@ def readings_figure(result: PositioningResult) -> PlotFigure:
             series.append(PlotSeries(label, result.targets[rows][order],
                                      result.deviations[rows][order],
                                      FORWARD if direction > 0 else BACKWARD, True))
-    return PlotFigure("Readings, run by run", _x_label(result), _y_label(result), tuple(series))
+    return PlotFigure(QT_TR_NOOP("Readings, run by run"), _x_label(result), _y_label(result), tuple(series))

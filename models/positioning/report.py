@@ -26,6 +26,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.messages import QT_TR_NOOP, joined, message
 from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION_TEXT,
@@ -39,7 +40,7 @@ from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate"]
 
-METHOD = (
+METHOD = QT_TR_NOOP(
     "The axis is sent to each target position in turn, in runs that approach every target "
     "from one direction and then from the other, as logged; the reference instrument reads "
     "the actual position reached. The positional deviation is x = actual position − target "
@@ -51,21 +52,22 @@ METHOD = (
 
 #: ISO 230-2 figure → (English name, GB/T 17421.2 name)
 FIGURE_NAMES: dict[str, tuple[str, str]] = {
-    "A": ("bidirectional accuracy of positioning", "双向定位精度"),
-    "A_up": ("unidirectional accuracy of positioning ↑", "单向定位精度 ↑"),
-    "A_down": ("unidirectional accuracy of positioning ↓", "单向定位精度 ↓"),
-    "R": ("bidirectional repeatability of positioning", "双向重复定位精度"),
-    "R_up": ("unidirectional repeatability of positioning ↑", "单向重复定位精度 ↑"),
-    "R_down": ("unidirectional repeatability of positioning ↓", "单向重复定位精度 ↓"),
-    "E": ("bidirectional systematic positional deviation", "双向定位系统偏差"),
-    "E_up": ("unidirectional systematic positional deviation ↑", "单向定位系统偏差 ↑"),
-    "E_down": ("unidirectional systematic positional deviation ↓", "单向定位系统偏差 ↓"),
-    "M": ("range of the mean bidirectional positional deviation", "平均双向位置偏差范围"),
-    "B": ("reversal value of the axis", "反向差值"),
-    "B_mean": ("mean reversal value of the axis", "平均反向差值"),
+    "A": (QT_TR_NOOP("bidirectional accuracy of positioning"), "双向定位精度"),
+    "A_up": (QT_TR_NOOP("unidirectional accuracy of positioning ↑"), "单向定位精度 ↑"),
+    "A_down": (QT_TR_NOOP("unidirectional accuracy of positioning ↓"), "单向定位精度 ↓"),
+    "R": (QT_TR_NOOP("bidirectional repeatability of positioning"), "双向重复定位精度"),
+    "R_up": (QT_TR_NOOP("unidirectional repeatability of positioning ↑"), "单向重复定位精度 ↑"),
+    "R_down": (QT_TR_NOOP("unidirectional repeatability of positioning ↓"), "单向重复定位精度 ↓"),
+    "E": (QT_TR_NOOP("bidirectional systematic positional deviation"), "双向定位系统偏差"),
+    "E_up": (QT_TR_NOOP("unidirectional systematic positional deviation ↑"), "单向定位系统偏差 ↑"),
+    "E_down": (QT_TR_NOOP("unidirectional systematic positional deviation ↓"), "单向定位系统偏差 ↓"),
+    "M": (QT_TR_NOOP("range of the mean bidirectional positional deviation"), "平均双向位置偏差范围"),
+    "B": (QT_TR_NOOP("reversal value of the axis"), "反向差值"),
+    "B_mean": (QT_TR_NOOP("mean reversal value of the axis"), "平均反向差值"),
 }
-VDI_NAMES = {"P": "position uncertainty", "Ps_max": "largest position scatter",
-             "Pa": "position deviation", "U_max": "largest reversal span"}
+VDI_NAMES = {"P": QT_TR_NOOP("position uncertainty"),
+             "Ps_max": QT_TR_NOOP("largest position scatter"),
+             "Pa": QT_TR_NOOP("position deviation"), "U_max": QT_TR_NOOP("largest reversal span")}
 
 
 def _points(result: PositioningResult) -> list[tuple[str, np.ndarray, np.ndarray, np.ndarray]]:
@@ -86,13 +88,14 @@ def positioning_budget(result: PositioningResult,
                 "their repeatability, part of U, is unknown; no certificate is issued")
     s = np.concatenate([p[2] for p in points])
     n = np.concatenate([p[3] for p in points]).astype(float)
-    components = reference_standard_components(metadata, 1.0, "reading")
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"))
     components.append(BudgetComponent(
-        "Repeatability of the mean (s/√n)", "A", "normal", s / np.sqrt(n), 1.0, 1.0,
+        QT_TR_NOOP("Repeatability of the mean (s/√n)"), "A", "normal", s / np.sqrt(n), 1.0, 1.0,
         float(np.min(n) - 1),
-        "s of the runs at each target and direction, n = "
-        + (f"{int(np.min(n))}" if np.min(n) == np.max(n) else f"{int(np.min(n))}…{int(np.max(n))}")
-        + "; ν of the fewest runs"))
+        message(QT_TR_NOOP("s of the runs at each target and direction, n = {n}; ν of the "
+                           "fewest runs"),
+                n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
+                else f"{int(np.min(n))}…{int(np.max(n))}")))
     components += resolution_component(metadata, 1.0)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
 
@@ -106,9 +109,11 @@ def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
         direction = key.rsplit("_", 1)[1] if key.endswith(("_up", "_down")) else None
         if direction not in present if direction else not result.bidirectional:
             continue
-        name = f"{chinese} {key}" if gb else f"{key}: {english}"
+        name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
+                                                     name=message(english))
         iso_rows.append((name, figure_text(f.get(key), sym), "GB/T 17421.2" if gb else "ISO 230-2"))
-    vdi_rows = [(f"{k}: {VDI_NAMES[k]}", figure_text(v, sym), "VDI/DGQ 3441")
+    vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
+                 figure_text(v, sym), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
@@ -122,16 +127,19 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     m = result.positions.size
     u_by_dir = {name: big_u[k * m:(k + 1) * m] for k, (name, *_) in enumerate(points)}
     standard = STANDARDS[result.standard]
-    runs = ", ".join(f"{'forward' if k == 'up' else 'backward'} {n}"
-                     for k, n in result.least_runs.items())
-    rows_p = [("Standard applied", standard, ""),
-              ("Targets", f"{m}: {result.positions.min():g} … {result.positions.max():g}"
-                          f"{result.target_symbol}", ""),
-              ("Readings", f"{result.deviations.size}", ""),
-              ("Fewest runs at a target", runs,
-               "" if result.minimum_runs_met else f"fewer than {MIN_RUNS}: flagged")]
-    parameters = Table("Test", ("Item", "Value", "Note"), rows_p)
-    header = ["Target"]
+    runs = joined(part for i, (k, n) in enumerate(result.least_runs.items()) for part in (
+        ", " if i else "",
+        message(QT_TR_NOOP("forward {n}") if k == "up" else QT_TR_NOOP("backward {n}"), n=n)))
+    rows_p = [(QT_TR_NOOP("Standard applied"), standard, ""),
+              (QT_TR_NOOP("Targets"), f"{m}: {result.positions.min():g} … "
+                                      f"{result.positions.max():g}{result.target_symbol}", ""),
+              (QT_TR_NOOP("Readings"), f"{result.deviations.size}", ""),
+              (QT_TR_NOOP("Fewest runs at a target"), runs,
+               "" if result.minimum_runs_met else
+               message(QT_TR_NOOP("fewer than {n}: flagged"), n=MIN_RUNS))]
+    parameters = Table(QT_TR_NOOP("Test"), (QT_TR_NOOP("Item"), QT_TR_NOOP("Value"),
+                                            QT_TR_NOOP("Note")), rows_p)
+    header = [QT_TR_NOOP("Target")]
     for name, *_ in points:
         arrow = "↑" if name == "up" else "↓"
         header += [f"x̄{arrow}", f"s{arrow}", f"U{arrow}"]
@@ -145,16 +153,20 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         if result.bidirectional:
             row += [f"{result.iso.reversal[i]:+.3f}", f"{result.iso.bidirectional_mean[i]:+.3f}"]
         rows.append(tuple(row))
-    results = Table(f"Results per target ({sym.strip()}; target in {result.target_symbol.strip()})",
+    results = Table(message(QT_TR_NOOP("Results per target ({unit}; target in {target})"),
+                            unit=sym.strip(), target=result.target_symbol.strip()),
                     tuple(header), rows,
-                    "x = actual position − target. U is the expanded uncertainty of the mean x̄.")
+                    QT_TR_NOOP("x = actual position − target. U is the expanded uncertainty of "
+                               "the mean x̄."))
     curve = np.concatenate([p[1] for p in points])
     conformity = decide_conformity(curve, budget, metadata.tolerance_arcsec,
                                    metadata.decision_rule, metadata.decision_quantity,
-                                   what="mean positional deviation", unit=sym)
+                                   what=QT_TR_NOOP("mean positional deviation"), unit=sym)
     stat_rows = _figure_rows(result)
-    stat_rows += decision_rows(conformity, budget, "targets and directions", sym)
-    statistics = Table("Figures of the axis", ("Quantity", "Value", "Standard"), stat_rows)
+    stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
+    statistics = Table(QT_TR_NOOP("Figures of the axis"),
+                       (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), QT_TR_NOOP("Standard")),
+                       stat_rows)
     plots = [deviation_figure(result)]
     reversal = reversal_figure(result)
     if reversal is not None:
@@ -162,25 +174,27 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     worst = budget.worst_index
     worst_name = points[worst // m][0]
     statements = [
-        f"Evaluated to {standard}; the figures of the other standard are given beside them "
-        "from the same readings.",
-        "Conformity, when a tolerance is stated, is judged on the mean positional deviations "
-        "(each with its own U, or half their range); a specification of A, R or P is read "
-        "against the figures above.",
-        "Compensation = −mean deviation: a controller adding it to the commanded position "
-        "reaches the target.",
+        message(QT_TR_NOOP("Evaluated to {standard}; the figures of the other standard are given "
+                           "beside them from the same readings."), standard=message(standard)),
+        QT_TR_NOOP("Conformity, when a tolerance is stated, is judged on the mean positional "
+                   "deviations (each with its own U, or half their range); a specification of "
+                   "A, R or P is read against the figures above."),
+        QT_TR_NOOP("Compensation = −mean deviation: a controller adding it to the commanded "
+                   "position reaches the target."),
     ]
     if not result.minimum_runs_met:
-        statements.append(f"ISO 230-2 asks for at least {MIN_RUNS} runs in each direction at "
-                          f"every target; this test has fewer ({runs}). The figures are "
-                          "evaluated and flagged.")
+        statements.append(message(QT_TR_NOOP("ISO 230-2 asks for at least {n} runs in each "
+                                             "direction at every target; this test has fewer "
+                                             "({runs}). The figures are evaluated and "
+                                             "flagged."), n=MIN_RUNS, runs=runs))
     directions = np.concatenate([np.full(m, 1.0 if name == "up" else -1.0)
                                  for name, *_ in points])
     return CertificateDocument(
-        "positioning", "Positioning test of an axis", metadata, source_name, METHOD,
+        "positioning", QT_TR_NOOP("Positioning test of an axis"), metadata, source_name, METHOD,
         method_reference, parameters, results, statistics, budget,
-        f"target {result.positions[worst % m]:g}{result.target_symbol} "
-        f"({'↑' if worst_name == 'up' else '↓'})", conformity, metadata.tolerance_arcsec,
+        message(QT_TR_NOOP("target {target} ({arrow})"),
+                target=f"{result.positions[worst % m]:g}{result.target_symbol}",
+                arrow="↑" if worst_name == "up" else "↓"), conformity, metadata.tolerance_arcsec,
         tuple(plots), tuple(result.warnings), unit=sym, statements=tuple(statements),
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(

@@ -34,6 +34,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
+from models.messages import QT_TR_NOOP, message
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
@@ -41,7 +42,7 @@ from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["theodolite_budget", "theodolite_certificate"]
 
-METHOD = (
+METHOD = QT_TR_NOOP(
     "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
     "theodolite is set on the mirror normal and its horizontal reading A and vertical reading E "
     "are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite's vertical, "
@@ -53,6 +54,11 @@ METHOD = (
     "corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, "
     "where the theodolite was zeroed."
 )
+
+
+#: how the table names what the set-up was identified from (ident.method)
+_IDENTIFIED_FROM = {"elevation": QT_TR_NOOP("elevation readings"),
+                    "azimuth": QT_TR_NOOP("azimuth readings")}
 
 
 def _not_reference(result: TheodoliteResult) -> np.ndarray:
@@ -67,19 +73,21 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
     single = _not_reference(result)
     pair = math.sqrt(2.0) * single
     dof = max(n - 3, 1)
-    components = reference_standard_components(metadata, pair, "reading (pointing)")
+    components = reference_standard_components(metadata, pair, QT_TR_NOOP("reading (pointing)"))
     res = result.elevation_residuals_arcsec
     noise = float(np.sqrt(np.sum(res**2) / dof))
     components.append(BudgetComponent(
-        "Reading repeatability", "A", "normal", noise, 1.0, single, dof,
-        f"standard deviation of the vertical readings about the fit, {n} readings, "
-        f"{dof} degrees of freedom; taken for the azimuth too"))
+        QT_TR_NOOP("Reading repeatability"), "A", "normal", noise, 1.0, single, dof,
+        message(QT_TR_NOOP("standard deviation of the vertical readings about the fit, {n} "
+                           "readings, {dof} degrees of freedom; taken for the azimuth too"),
+                n=n, dof=dof)))
     components.append(BudgetComponent(
-        "Reference reading (θ₀)", "A", "normal", noise, 1.0, single, dof,
-        "the zeroing reading, shared by every point", common=True))
+        QT_TR_NOOP("Reference reading (θ₀)"), "A", "normal", noise, 1.0, single, dof,
+        QT_TR_NOOP("the zeroing reading, shared by every point"), common=True))
     components.append(BudgetComponent(
-        "Set-up model ζ (ψ, α, β)", "A", "normal", result.model_uncertainty_arcsec, 1.0, 1.0, dof,
-        "covariance of the identified parameters propagated through ζ(θ)"))
+        QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", result.model_uncertainty_arcsec,
+        1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
+                                  "ζ(θ)")))
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
@@ -92,48 +100,56 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     s = ident.setup
     u2 = 2.0 * ident.uncertainty_deg * 3600.0  # expanded, arcsec
     parameters = Table(
-        "Set-up parameters identified", ("Parameter", "Value", "U (k = 2)"),
-        [("Axis tilt ψ", f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
-         ("Tilt direction α", f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
-         ("Mirror normal β", f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
-         ("Identified from", f"{ident.method} readings", ""),
-         ("R² of the fit", f"{ident.r_squared:.8f}", ""),
-         ("Residual RMS", f"{ident.residual_rms_arcsec:.3f}\"", ""),
-         ("Reference point θ₀", f"{result.reference_theta_deg:g}°", "")])
+        QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+                                                     "U (k = 2)"),
+        [(QT_TR_NOOP("Axis tilt ψ"), f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
+         (QT_TR_NOOP("Tilt direction α"), f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
+         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
+         (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(
+             ident.method, QT_TR_NOOP("{method} readings")), method=ident.method), ""),
+         (QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),
+         (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""),
+         (QT_TR_NOOP("Reference point θ₀"), f"{result.reference_theta_deg:g}°", "")])
     correction = -result.model_error_arcsec
     numeric = list(zip(result.theta_deg, result.raw_error_arcsec, correction,
                        result.corrected_error_arcsec, big_u, strict=True))
     rows = [(f"{t:.4f}", f"{r:+.2f}", f"{c:+.2f}", f"{e:+.2f}", f"{u:.2f}")
             for t, r, c, e, u in numeric]
-    results = Table("Results per point (corrected = raw + correction)",
-                    ("θ (°)", "Raw error (\")", "Correction (\")", "Corrected error (\")",
-                     "U (\")"), rows)
+    results = Table(QT_TR_NOOP("Results per point (corrected = raw + correction)"),
+                    ("θ (°)", QT_TR_NOOP("Raw error (\")"), QT_TR_NOOP("Correction (\")"),
+                     QT_TR_NOOP("Corrected error (\")"), "U (\")"), rows)
     r, c = result.raw_stats, result.corrected_stats
     stat_rows = [
-        ("Points", f"{c.n}", ""),
-        ("Raw error", f"{r.min:+.2f}\" … {r.max:+.2f}\"", f"peak-to-peak {r.peak_to_peak:.2f}\""),
-        ("Corrected error", f"{c.min:+.2f}\" … {c.max:+.2f}\"",
-         f"peak-to-peak {c.peak_to_peak:.2f}\", RMS {c.rms:.2f}\""),
+        (QT_TR_NOOP("Points"), f"{c.n}", ""),
+        (QT_TR_NOOP("Raw error"), f"{r.min:+.2f}\" … {r.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{r.peak_to_peak:.2f}\"")),
+        (QT_TR_NOOP("Corrected error"), f"{c.min:+.2f}\" … {c.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
+                 rms=f"{c.rms:.2f}\"")),
     ]
     tol = metadata.tolerance_arcsec
     conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity)
-    stat_rows += decision_rows(conformity, budget, "points")
+    stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("points"))
     if result.iso230 is not None:
         for k, v in result.iso230.figures.items():
             if math.isfinite(v):
                 stat_rows.append((f"ISO 230-2 {k}", f"{v:.2f}\"", ""))
-    statistics = Table("Statistics", ("Quantity", "Value", ""), stat_rows)
+    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
+                       stat_rows)
     plots = (error_figure(result), corrected_with_uncertainty(result, big_u),
              residual_figure(result))
     worst = budget.worst_index
     return CertificateDocument(
-        "theodolite", "Theodolite run", metadata, source_name, METHOD, method_reference,
+        "theodolite", QT_TR_NOOP("Theodolite run"), metadata, source_name, METHOD,
+        method_reference,
         parameters, results, statistics, budget, f"θ = {result.theta_deg[worst]:g}°", conformity,
         tol, plots, tuple(result.warnings),
-        statements=(f"U is zero at the reference reading (row {result.reference_index + 1}, "
-                    f"θ₀ = {result.reference_theta_deg:g}°): the theodolite was zeroed there, so "
-                    "its error is zero by definition.",),
+        statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
+                                       "{theta}): the theodolite was zeroed there, so its error "
+                                       "is zero by definition."),
+                            row=result.reference_index + 1,
+                            theta=f"{result.reference_theta_deg:g}°"),),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
          ("expanded_uncertainty_arcsec", big_u)))

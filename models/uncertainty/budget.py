@@ -24,6 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP
+
 __all__ = [
     "BASIS_DIVISORS",
     "DEFAULT_COVERAGE_PROBABILITY",
@@ -49,10 +51,14 @@ def coverage_factor(dof: float, probability: float = DEFAULT_COVERAGE_PROBABILIT
 
 # How a reference standard's figure is stated, and the divisor to its standard uncertainty.
 BASIS_DIVISORS: dict[str, tuple[str, float, str]] = {
-    "U95": ("expanded uncertainty U (k = 2)", 2.0, "normal"),
-    "MPE": ("maximum permissible error ±a", math.sqrt(3.0), "rectangular"),
-    "u": ("standard uncertainty u", 1.0, "normal"),
+    "U95": (QT_TR_NOOP("expanded uncertainty U (k = 2)"), 2.0, "normal"),
+    "MPE": (QT_TR_NOOP("maximum permissible error ±a"), math.sqrt(3.0), "rectangular"),
+    "u": (QT_TR_NOOP("standard uncertainty u"), 1.0, "normal"),
 }
+
+
+#: the distributions a budget's inputs are given (the names its table prints)
+DISTRIBUTIONS = (QT_TR_NOOP("normal"), QT_TR_NOOP("rectangular"))
 
 
 def divisor_for_basis(basis: str) -> tuple[float, str]:

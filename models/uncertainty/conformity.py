@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, message
 from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = [
@@ -45,20 +46,23 @@ __all__ = [
 ]
 
 DECISION_RULES = {
-    "guarded": "non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass "
-               "when the result lies within T − w; conditional pass within T; conditional fail "
-               "within T + w; fail beyond T + w",
-    "guarded_binary": "binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.2): pass "
-                      "when the result lies within T − w, fail otherwise",
-    "simple": "binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, 4.2.1): pass "
-              "when the result lies within T, fail otherwise; the risk of a false acceptance "
-              "reaches 50 % at the limit",
+    "guarded": QT_TR_NOOP("non-binary statement with a guard band w = U (ILAC-G8:09/2019, "
+                          "4.2.3): pass when the result lies within T − w; conditional pass "
+                          "within T; conditional fail within T + w; fail beyond T + w"),
+    "guarded_binary": QT_TR_NOOP("binary statement with a guard band w = U (ILAC-G8:09/2019, "
+                                 "4.2.2): pass when the result lies within T − w, fail "
+                                 "otherwise"),
+    "simple": QT_TR_NOOP("binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, "
+                         "4.2.1): pass when the result lies within T, fail otherwise; the risk "
+                         "of a false acceptance reaches 50 % at the limit"),
 }
 
 DECISION_QUANTITIES = {
-    "half_range": "half the peak-to-peak error after the best zero, with its own U and bias "
-                  "from a Monte Carlo simulation of this measurement (JCGM 101)",
-    "points": "every point's error against ±T with that point's own U (ISO 14253-1)",
+    "half_range": QT_TR_NOOP("half the peak-to-peak error after the best zero, with its own U "
+                             "and bias from a Monte Carlo simulation of this measurement "
+                             "(JCGM 101)"),
+    "points": QT_TR_NOOP("every point's error against ±T with that point's own U "
+                         "(ISO 14253-1)"),
 }
 
 MONTE_CARLO_SEED = 20261127
@@ -229,11 +233,12 @@ class Conformity:
 
 def _zones(t: float, w: float, rule: str, d: int, q: str = "\"") -> str:
     if rule == "simple":
-        return f"pass ≤ {t:g}{q} < fail"
+        return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=f"{t:g}{q}")
     if rule == "guarded_binary":
-        return f"pass ≤ {t - w:.{d}f}{q} (T − w) < fail"
-    return (f"pass ≤ {t - w:.{d}f}{q} (T − w) < conditional pass ≤ {t:g}{q} (T) < conditional fail "
-            f"≤ {t + w:.{d}f}{q} (T + w) < fail")
+        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=f"{t - w:.{d}f}{q}")
+    return message(QT_TR_NOOP("pass ≤ {low} (T − w) < conditional pass ≤ {t} (T) < conditional "
+                              "fail ≤ {high} (T + w) < fail"),
+                   low=f"{t - w:.{d}f}{q}", t=f"{t:g}{q}", high=f"{t + w:.{d}f}{q}")
 
 
 def _verdict(x: float, t: float, w: float, rule: str) -> str:
@@ -253,20 +258,20 @@ def _verdict(x: float, t: float, w: float, rule: str) -> str:
 _ORDER = ("pass", "conditional pass", "conditional fail", "fail")
 
 _SENTENCE = {
-    "pass": "The item conforms to the specification ±{t:g}{q} (pass).",
-    "conditional pass": "Conditional pass: the result lies within ±{t:g}{q} but closer to the limit "
-                        "than the guard band, so conformity is not proven at the stated "
-                        "coverage probability.",
-    "conditional fail": "Conditional fail: the result lies beyond ±{t:g}{q} by less than the guard "
-                        "band, so non-conformity is not proven at the stated coverage "
-                        "probability.",
-    "fail": "The item does not conform to the specification ±{t:g}{q} (fail).",
+    "pass": QT_TR_NOOP("The item conforms to the specification ±{t} (pass)."),
+    "conditional pass": QT_TR_NOOP("Conditional pass: the result lies within ±{t} but closer "
+                                   "to the limit than the guard band, so conformity is not "
+                                   "proven at the stated coverage probability."),
+    "conditional fail": QT_TR_NOOP("Conditional fail: the result lies beyond ±{t} by less "
+                                   "than the guard band, so non-conformity is not proven at "
+                                   "the stated coverage probability."),
+    "fail": QT_TR_NOOP("The item does not conform to the specification ±{t} (fail)."),
 }
 
 
 def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec: float | None,
                       rule: str = "guarded", quantity: str = "half_range",
-                      invalid_reason: str = "", what: str = "corrected error",
+                      invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
                       unit: str = "\"") -> Conformity:
     """The verdict on an error curve against ±``tolerance_arcsec`` (in ``unit``, the
     errors' own: arcsec, or nm for an interferometer).
@@ -274,15 +279,19 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
     ``invalid_reason`` (for example a failed closure) withholds the statement.
     """
     q = unit
-    rule_text = DECISION_RULES[rule]
+    what = message(what) if not hasattr(what, "template") else what
+    rule_text = message(DECISION_RULES[rule])
+    sentence = {v: message(template, t=f"{float(tolerance_arcsec or 0):g}{q}")
+                for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
     if invalid_reason:
-        return Conformity("not assessed", f"No statement of conformity: {invalid_reason}.",
-                          rule_text)
+        return Conformity("not assessed", message(
+            QT_TR_NOOP("No statement of conformity: {reason}."), reason=invalid_reason),
+            rule_text)
     if tolerance_arcsec is None:
-        return Conformity("not assessed", "No statement of conformity: no specification "
-                          "(tolerance) was given.", rule_text)
+        return Conformity("not assessed", message(QT_TR_NOOP(
+            "No statement of conformity: no specification (tolerance) was given.")), rule_text)
     e = np.asarray(errors_arcsec, dtype=float)
     t = float(tolerance_arcsec)
     if quantity == "points":
@@ -293,20 +302,31 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
         x, w = abs(float(e[worst])), float(u[worst])
         d = uncertainty_decimals(w)
         verdict = verdicts[worst]
-        text = (f"Every point's {what} was judged against ±{t:g}{q} with its own U; the deciding "
-                f"point is number {worst + 1}: |e| = {x:.{d}f}{q}, U = {w:.{d}f}{q}. "
-                + _SENTENCE[verdict].format(t=t, q=q))
-        zones = "per point, with w = U of that point: " + _zones(t, w, rule, d, q)
-        return Conformity(verdict, text, rule_text, DECISION_QUANTITIES["points"], x, w, zones)
+        text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
+                                  "the deciding point is number {point}: |e| = {e}, U = {u}. "
+                                  "{sentence}"),
+                       what=what, t=f"{t:g}{q}", point=worst + 1, e=f"{x:.{d}f}{q}",
+                       u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
+        zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
+                        zones=_zones(t, w, rule, d, q))
+        return Conformity(verdict, text, rule_text, message(DECISION_QUANTITIES["points"]), x, w,
+                          zones)
     mc = half_range_monte_carlo(e, budget)
     x, w = mc.value, mc.u_upper
     d = uncertainty_decimals(w)
     verdict = _verdict(x, t, 0.0 if rule == "simple" else w, rule)
-    text = (f"Half the peak-to-peak {what}: {x:.{d}f}{q} (measured {mc.measured:.{d}f}{q}, less "
-            f"{mc.bias:.{d}f}{q} that the noise adds to a range), U = {w:.{d}f}{q} "
-            f"(coverage probability {100 * mc.probability:.2f} %). "
-            + _SENTENCE[verdict].format(t=t, q=q))
-    quantity_text = (f"{DECISION_QUANTITIES['half_range']}: {mc.trials} trials, seed {mc.seed}"
-                     + (f", on every {mc.stride}-th of the {e.size} points" if mc.stride > 1
-                        else ""))
+    text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} (measured {measured}, less "
+                              "{bias} that the noise adds to a range), U = {u} (coverage "
+                              "probability {p} %). {sentence}"),
+                   what=what, value=f"{x:.{d}f}{q}", measured=f"{mc.measured:.{d}f}{q}",
+                   bias=f"{mc.bias:.{d}f}{q}", u=f"{w:.{d}f}{q}",
+                   p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
+    quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
+                                        "{stride}-th of the {points} points"),
+                             quantity=message(DECISION_QUANTITIES["half_range"]),
+                             trials=mc.trials, seed=mc.seed, stride=mc.stride, points=e.size)
+                     if mc.stride > 1 else
+                     message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}"),
+                             quantity=message(DECISION_QUANTITIES["half_range"]),
+                             trials=mc.trials, seed=mc.seed))
     return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d, q), mc)

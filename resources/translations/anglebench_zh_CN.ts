@@ -96,11 +96,181 @@
         <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
     </message>
     <message>
+        <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
+        <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
+    </message>
+    <message>
+        <source>The phase was estimated from the signals, with no phase reference: offsets, amplitude ratio and quadrature error are identified; a pure phase distortion of the grating is not observable this way and is not in the error stated.</source>
+        <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
+    </message>
+    <message>
+        <source>sample</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Signal noise</source>
+        <translation>信号噪声</translation>
+    </message>
+    <message>
+        <source>σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, converted to phase</source>
+        <translation>由拟合残差得 σ = {sin} mV（sin）、{cos} mV（cos），换算为相位</translation>
+    </message>
+    <message>
+        <source>Fitted model (correction table)</source>
+        <translation>拟合模型（修正表）</translation>
+    </message>
+    <message>
+        <source>covariance of the fitted parameters propagated to the modelled phase error</source>
+        <translation>拟合参数的协方差传播至模型相位误差</translation>
+    </message>
+    <message>
+        <source>{channel}: offset A₀</source>
+        <translation>{channel}：直流偏置 A₀</translation>
+    </message>
+    <message>
+        <source>{channel}: R², residual RMS</source>
+        <translation>{channel}：R²、残差均方根</translation>
+    </message>
+    <message>
+        <source>Signal parameters identified</source>
+        <translation>信号参数辨识结果</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>量值</translation>
+    </message>
+    <message>
+        <source>The first {per} samples are shown (every {step}-th); all {n} samples are in the CSV/XLSX results export.</source>
+        <translation>列出前 {per} 个采样点（每 {step} 个取一个）；全部 {n} 个采样点见 CSV/XLSX 结果导出文件。</translation>
+    </message>
+    <message>
+        <source>The first {per} samples are shown; all {n} samples are in the CSV/XLSX results export.</source>
+        <translation>列出前 {per} 个采样点；全部 {n} 个采样点见 CSV/XLSX 结果导出文件。</translation>
+    </message>
+    <message>
+        <source>Results per sample (first period; compensated = raw + correction)</source>
+        <translation>各采样点结果（第一个周期；补偿后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>Sample</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Phase θ (°)</source>
+        <translation>相位 θ (°)</translation>
+    </message>
+    <message>
+        <source>As found ({unit})</source>
+        <translation>校准前 ({unit})</translation>
+    </message>
+    <message>
+        <source>Correction ({unit})</source>
+        <translation>修正值 ({unit})</translation>
+    </message>
+    <message>
+        <source>Compensated ({unit})</source>
+        <translation>补偿后 ({unit})</translation>
+    </message>
+    <message>
+        <source>U as left ({unit})</source>
+        <translation>U 交付状态 ({unit})</translation>
+    </message>
+    <message>
+        <source>U as found ({unit})</source>
+        <translation>U 校准前 ({unit})</translation>
+    </message>
+    <message>
+        <source>phase from {n} equal steps a period</source>
+        <translation>相位取自每周期 {n} 等分步长</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp} ({share} % of a period)</source>
+        <translation>峰峰值 {ptp}（为一个周期的 {share} %）</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>采样点数</translation>
+    </message>
+    <message>
+        <source>Interpolation error as found</source>
+        <translation>校准前细分误差</translation>
+    </message>
+    <message>
+        <source>After compensation (as left)</source>
+        <translation>补偿后（交付状态）</translation>
+    </message>
+    <message>
+        <source>After compensation (not applied to the item)</source>
+        <translation>补偿后（未施加于被校对象）</translation>
+    </message>
+    <message>
+        <source>Offsets, amplitude ratio, quadrature error</source>
+        <translation>直流偏置、幅值比、正交误差</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, quadrature {quadrature}</source>
+        <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
+    </message>
+    <message>
+        <source>as-found interpolation error</source>
+        <translation>校准前细分误差</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Correction table</source>
+        <translation>修正表</translation>
+    </message>
+    <message>
+        <source>{n} entries</source>
+        <translation>{n} 项</translation>
+    </message>
+    <message>
+        <source>Drift of sin A1 over the periods</source>
+        <translation>各周期 sin 通道 A1 的漂移</translation>
+    </message>
+    <message>
+        <source>{n} periods fitted one by one</source>
+        <translation>逐个拟合 {n} 个周期</translation>
+    </message>
+    <message>
+        <source>Statistics</source>
+        <translation>统计结果</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left.</source>
+        <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态。</translation>
+    </message>
+    <message>
+        <source>Conformity is judged on the interpolation error as found. The compensated error is the error the correction table would leave; it is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
+        <translation>符合性按校准前细分误差判定。补偿后误差是施加修正表后将剩余的误差；除非该修正表已载入被校对象（修正表 sha256 {sha}），否则它不是被校对象自身的误差。</translation>
+    </message>
+    <message>
         <source>Fringe signal analysis</source>
         <translation>莫尔条纹信号分析</translation>
     </message>
     <message>
+        <source>sample {sample}</source>
+        <translation>第 {sample} 个采样点</translation>
+    </message>
+    <message>
+        <source>positional deviation x = actual position − target (ISO 230-2), i.e. reference − indicated: the negative of an error of indication; compensation = −x</source>
+        <extracomment>ISO 230-2&apos;s sign: x = actual − target. The axis&apos;s own scale indicates the target when it stops and the reference reads the actual position, so x = reference − indicated: the negative of an error of indication (the other workbenches&apos; sign).</extracomment>
+        <translation>位置偏差 x = 实际位置 − 目标位置（ISO 230-2），即 参考值 − 示值：为示值误差的负值；补偿值 = −x</translation>
+    </message>
+    <message>
         <source>GB/T 17421.2-2016 (identical to ISO 230-2:2014)</source>
+        <extracomment>ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target. target unit → its symbol deviation unit → (target unit it belongs to, deviation units per target unit, symbol) the standard applied → its title on the certificate</extracomment>
         <translation>GB/T 17421.2-2016（等同 ISO 230-2:2014）</translation>
     </message>
     <message>
@@ -128,8 +298,260 @@
         <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
     </message>
     <message>
+        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x).</source>
+        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。</translation>
+    </message>
+    <message>
+        <source>Repeatability (mean of {sets} sets)</source>
+        <translation>重复性（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Repeatability (mean of 1 set)</source>
+        <translation>重复性（1 个测回）</translation>
+    </message>
+    <message>
+        <source>pooled standard deviation {s} of the sets about their direction&apos;s mean, {dof} degrees of freedom</source>
+        <translation>各测回相对于同方向平均值的合并标准偏差 {s}，自由度 {dof}</translation>
+    </message>
+    <message>
+        <source>Autocollimator reading noise (mean of {sets} sets)</source>
+        <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Autocollimator reading noise (mean of 1 set)</source>
+        <translation>自准直仪读数噪声（1 个测回）</translation>
+    </message>
+    <message>
+        <source>scatter of the vertical readings about the tilt fits, {dof} degrees of freedom (no direction was measured twice)</source>
+        <translation>竖直读数相对于塔差拟合的分散性，自由度 {dof}（没有方向被测量两次）</translation>
+    </message>
+    <message>
+        <source>{note}, divided by √{m}</source>
+        <translation>{note}，除以 √{m}</translation>
+    </message>
+    <message>
+        <source>Zero reading (face {face}, set 1)</source>
+        <translation>零位读数（第 {face} 面，第 1 测回）</translation>
+    </message>
+    <message>
+        <source>one reading shared by every set: not reduced</source>
+        <translation>各测回共用的一个读数：不因平均而减小</translation>
+    </message>
+    <message>
+        <source>Autocollimator reticle roll</source>
+        <translation>自准直仪分划板滚转</translation>
+    </message>
+    <message>
+        <source>roll up to ±{roll} (stated) times the vertical reading&apos;s change from the zero face</source>
+        <translation>滚转最大 ±{roll}（给定值）乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>spread linearly and removed, half the drift left</source>
+        <translation>线性分配并扣除，余下一半漂移</translation>
+    </message>
+    <message>
+        <source>not removed, up to the whole drift</source>
+        <translation>未扣除，最大为全部漂移</translation>
+    </message>
+    <message>
+        <source>Closure drift</source>
+        <translation>闭合漂移</translation>
+    </message>
+    <message>
+        <source>closures {closures} beyond their reading noise; {how}</source>
+        <translation>闭合差 {closures} 超出其读数噪声；{how}</translation>
+    </message>
+    <message>
+        <source>face or reading</source>
+        <translation>面或读数</translation>
+    </message>
+    <message>
+        <source>Pyramidal correction (ψ, ω)</source>
+        <translation>塔差修正（ψ, ω）</translation>
+    </message>
+    <message>
+        <source>u(ψ), u(ω) of the tilt fits propagated through ε_x</source>
+        <translation>塔差拟合的 u(ψ)、u(ω) 经 ε_x 传播</translation>
+    </message>
+    <message>
+        <source>with the face numbering</source>
+        <translation>与面序号同向</translation>
+    </message>
+    <message>
+        <source>against the face numbering</source>
+        <translation>与面序号反向</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>面数</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>测回数</translation>
+    </message>
+    <message>
+        <source>Encoder grade</source>
+        <translation>编码器准确度等级</translation>
+    </message>
+    <message>
+        <source>Encoder counts</source>
+        <translation>编码器计数方向</translation>
+    </message>
+    <message>
+        <source>Common zero</source>
+        <translation>公共零位</translation>
+    </message>
+    <message>
+        <source>face {face} of set 1</source>
+        <translation>第 1 测回第 {face} 面</translation>
+    </message>
+    <message>
+        <source>spread linearly over each set and removed</source>
+        <translation>在各测回内线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>reported, not removed</source>
+        <translation>给出，未扣除</translation>
+    </message>
+    <message>
+        <source>Allowed pyramidal tilt</source>
+        <translation>允许塔差</translation>
+    </message>
+    <message>
+        <source>{tilt} (worst case over the tilt direction; the seed&apos;s ω = 90° figure: {seed})</source>
+        <translation>{tilt}（按塔差方向的最不利情况；原文 ω = 90° 时的数值：{seed}）</translation>
+    </message>
+    <message>
+        <source>drift {drift} (within the limit)</source>
+        <translation>漂移 {drift}（在限值内）</translation>
+    </message>
+    <message>
+        <source>drift {drift} (OUTSIDE the limit)</source>
+        <translation>漂移 {drift}（超出限值）</translation>
+    </message>
+    <message>
+        <source>Set {set} (forward, from face {face}) closure</source>
+        <translation>第 {set} 测回（正向，自第 {face} 面起）闭合</translation>
+    </message>
+    <message>
+        <source>Set {set} (reverse, from face {face}) closure</source>
+        <translation>第 {set} 测回（反向，自第 {face} 面起）闭合</translation>
+    </message>
+    <message>
+        <source>Set {set} pyramidal tilt ψ</source>
+        <translation>第 {set} 测回塔差 ψ</translation>
+    </message>
+    <message>
+        <source>Set {set} tilt direction ω</source>
+        <translation>第 {set} 测回塔差方向 ω</translation>
+    </message>
+    <message>
+        <source>Set-up parameters identified</source>
+        <translation>安装参数辨识结果</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of the two directions&apos; means)</source>
+        <translation>各位置结果（正反两个方向平均值的平均）</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of {sets} sets)</source>
+        <translation>各位置结果（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of 1 set)</source>
+        <translation>各位置结果（1 个测回）</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Nominal (°)</source>
+        <translation>标称值 (°)</translation>
+    </message>
+    <message>
+        <source>Raw error (&quot;)</source>
+        <translation>原始误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Correction (&quot;)</source>
+        <translation>修正值 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Corrected error (&quot;)</source>
+        <translation>修正后误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Error = indicated − reference, from face {face} of set 1. Corrected = raw + correction; the correction removes the error the pyramidal tilt induces.</source>
+        <translation>误差 = 示值 − 参考值，以第 1 测回第 {face} 面为零位。修正后 = 原始 + 修正值；修正值消除塔差引起的误差。</translation>
+    </message>
+    <message>
+        <source>Raw error</source>
+        <translation>原始误差</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp}</source>
+        <translation>峰峰值 {ptp}</translation>
+    </message>
+    <message>
+        <source>Corrected error</source>
+        <translation>修正后误差</translation>
+    </message>
+    <message>
+        <source>Harmonics 1st / 2nd</source>
+        <translation>1 次 / 2 次谐波</translation>
+    </message>
+    <message>
+        <source>eccentricity / ellipticity</source>
+        <translation>偏心 / 椭圆度</translation>
+    </message>
+    <message>
+        <source>Repeatability (largest s over positions)</source>
+        <translation>重复性（各位置中最大的 s）</translation>
+    </message>
+    <message>
+        <source>Repeatability</source>
+        <translation>重复性</translation>
+    </message>
+    <message>
+        <source>not evaluated</source>
+        <translation>未评定</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice</source>
+        <translation>没有方向被测量两次</translation>
+    </message>
+    <message>
+        <source>Reversal B (largest |x̄↑ − x̄↓|)</source>
+        <translation>反向差 B（最大 |x̄↑ − x̄↓|）</translation>
+    </message>
+    <message>
+        <source>mean reversal {b}</source>
+        <translation>平均反向差 {b}</translation>
+    </message>
+    <message>
+        <source>the run is invalid (closure failed)</source>
+        <translation>本次测量无效（闭合不合格）</translation>
+    </message>
+    <message>
+        <source>positions</source>
+        <translation>各位置</translation>
+    </message>
+    <message>
         <source>Polygon encoder test</source>
         <translation>多面棱体编码器检测</translation>
+    </message>
+    <message>
+        <source>position {position}</source>
+        <translation>第 {position} 位置</translation>
+    </message>
+    <message>
+        <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
+        <translation>第 1 测回第 {face} 面处 U 为零：所有误差均以该读数为起点，按定义其自身误差为零。</translation>
+    </message>
+    <message>
+        <source>Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method&apos;s reference; the allowed pyramidal tilt is derived from them (a third of the accuracy, worst case over the tilt direction).</source>
+        <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
     </message>
     <message>
         <source>Positioning (axis)</source>
@@ -192,8 +614,101 @@
         <translation>证书所依据并据以判定的标准；JSON 中总是同时给出 ISO 230-2 和 VDI/DGQ 3441</translation>
     </message>
     <message>
+        <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed&apos;s A − θ; the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
+        <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即原文 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
+    </message>
+    <message>
+        <source>elevation readings</source>
+        <extracomment>how the table names what the set-up was identified from (ident.method)</extracomment>
+        <translation>竖直读数</translation>
+    </message>
+    <message>
+        <source>azimuth readings</source>
+        <translation>水平读数</translation>
+    </message>
+    <message>
+        <source>reading (pointing)</source>
+        <translation>读数（瞄准）</translation>
+    </message>
+    <message>
+        <source>Reading repeatability</source>
+        <translation>读数重复性</translation>
+    </message>
+    <message>
+        <source>standard deviation of the vertical readings about the fit, {n} readings, {dof} degrees of freedom; taken for the azimuth too</source>
+        <translation>竖直读数相对于拟合的标准偏差，{n} 个读数，自由度 {dof}；水平读数亦取此值</translation>
+    </message>
+    <message>
+        <source>Reference reading (θ₀)</source>
+        <translation>参考读数（θ₀）</translation>
+    </message>
+    <message>
+        <source>the zeroing reading, shared by every point</source>
+        <translation>置零读数，各点共用</translation>
+    </message>
+    <message>
+        <source>Set-up model ζ (ψ, α, β)</source>
+        <translation>安装模型 ζ（ψ, α, β）</translation>
+    </message>
+    <message>
+        <source>covariance of the identified parameters propagated through ζ(θ)</source>
+        <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
+    </message>
+    <message>
+        <source>Axis tilt ψ</source>
+        <translation>轴倾角 ψ</translation>
+    </message>
+    <message>
+        <source>Tilt direction α</source>
+        <translation>倾斜方向 α</translation>
+    </message>
+    <message>
+        <source>Mirror normal β</source>
+        <translation>反射镜法线 β</translation>
+    </message>
+    <message>
+        <source>Identified from</source>
+        <translation>辨识依据</translation>
+    </message>
+    <message>
+        <source>{method} readings</source>
+        <translation>{method} 读数</translation>
+    </message>
+    <message>
+        <source>R² of the fit</source>
+        <translation>拟合 R²</translation>
+    </message>
+    <message>
+        <source>Residual RMS</source>
+        <translation>残差均方根</translation>
+    </message>
+    <message>
+        <source>Reference point θ₀</source>
+        <translation>参考点 θ₀</translation>
+    </message>
+    <message>
+        <source>Results per point (corrected = raw + correction)</source>
+        <translation>各测点结果（修正后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>测点数</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp}, RMS {rms}</source>
+        <translation>峰峰值 {ptp}，均方根 {rms}</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>各测点</translation>
+    </message>
+    <message>
         <source>Theodolite run</source>
         <translation>经纬仪测量</translation>
+    </message>
+    <message>
+        <source>U is zero at the reference reading (row {row}, θ₀ = {theta}): the theodolite was zeroed there, so its error is zero by definition.</source>
+        <translation>参考读数处 U 为零（第 {row} 行，θ₀ = {theta}）：经纬仪在该点置零，按定义其误差为零。</translation>
     </message>
     <message>
         <source>Unit of the deviations and of every figure; arcsec or µrad for a rotary axis, µm or nm for a linear one</source>
@@ -312,8 +827,20 @@
         <translation>修正后</translation>
     </message>
     <message>
+        <source>Raw error, set-up model and corrected error</source>
+        <translation>原始误差、安装模型和修正后误差</translation>
+    </message>
+    <message>
         <source>corrected = raw + ζ</source>
         <translation>修正后 = 原始 + ζ</translation>
+    </message>
+    <message>
+        <source>Fit residuals (vertical readings)</source>
+        <translation>拟合残差（竖直读数）</translation>
+    </message>
+    <message>
+        <source>E residual (&quot;)</source>
+        <translation>E 残差 (&quot;)</translation>
     </message>
     <message>
         <source>corrected e − (ε_x − ε_x,zero)</source>
@@ -348,12 +875,52 @@
         <translation>方向 [+/−]</translation>
     </message>
     <message>
+        <source>error</source>
+        <translation>误差</translation>
+    </message>
+    <message>
         <source>electrical phase θ (periods)</source>
         <translation>电相位 θ（周期）</translation>
     </message>
     <message>
         <source>error, est. phase</source>
         <translation>误差（估计相位）</translation>
+    </message>
+    <message>
+        <source>Interpolation error before and after compensation</source>
+        <translation>补偿前后的细分误差</translation>
+    </message>
+    <message>
+        <source>Fit residuals</source>
+        <translation>拟合残差</translation>
+    </message>
+    <message>
+        <source>residual (mV)</source>
+        <translation>残差 (mV)</translation>
+    </message>
+    <message>
+        <source>Signals and their fit</source>
+        <translation>信号及其拟合</translation>
+    </message>
+    <message>
+        <source>Lissajous figure</source>
+        <translation>李萨如图</translation>
+    </message>
+    <message>
+        <source>Harmonics of the two channels</source>
+        <translation>两路信号的谐波</translation>
+    </message>
+    <message>
+        <source>Compensated error in the first period, with U</source>
+        <translation>第一个周期内补偿后误差及其 U</translation>
+    </message>
+    <message>
+        <source>phase θ (°)</source>
+        <translation>相位 θ (°)</translation>
+    </message>
+    <message>
+        <source>compensated ± U</source>
+        <translation>补偿后 ± U</translation>
     </message>
     <message>
         <source>phase within the period (°); the motion stood or turned back</source>
@@ -548,8 +1115,48 @@
         <translation>原始误差</translation>
     </message>
     <message>
+        <source>position angle (°)</source>
+        <translation>位置角 (°)</translation>
+    </message>
+    <message>
+        <source>Raw and corrected error</source>
+        <translation>原始误差和修正后误差</translation>
+    </message>
+    <message>
+        <source>error (&quot;)</source>
+        <translation>误差 (&quot;)</translation>
+    </message>
+    <message>
         <source>raw error e (mean)</source>
         <translation>原始误差 e（平均）</translation>
+    </message>
+    <message>
+        <source>Corrected error with its expanded uncertainty U</source>
+        <translation>修正后误差及其扩展不确定度 U</translation>
+    </message>
+    <message>
+        <source>corrected ± U</source>
+        <translation>修正后 ± U</translation>
+    </message>
+    <message>
+        <source>Tilt fit residuals (vertical readings, set 1)</source>
+        <translation>塔差拟合残差（竖直读数，第 1 测回）</translation>
+    </message>
+    <message>
+        <source>residual (&quot;)</source>
+        <translation>残差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>residual</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <source>Vertical readings and the tilt model (set 1)</source>
+        <translation>竖直读数及塔差模型（第 1 测回）</translation>
+    </message>
+    <message>
+        <source>Harmonics of the corrected error</source>
+        <translation>修正后误差的谐波</translation>
     </message>
     <message>
         <source>raw error θ − A</source>
@@ -1242,11 +1849,45 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Calibration certificate</source>
+        <extracomment>What the document is: a calibration certificate, or a test report.</extracomment>
         <translation>校准证书</translation>
     </message>
     <message>
         <source>Test report</source>
         <translation>检测报告</translation>
+    </message>
+    <message>
+        <source>certificate number</source>
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>laboratory</source>
+        <translation>校准机构</translation>
+    </message>
+    <message>
+        <source>customer</source>
+        <translation>委托方</translation>
+    </message>
+    <message>
+        <source>item under test</source>
+        <translation>被校准对象</translation>
+    </message>
+    <message>
+        <source>item serial number</source>
+        <translation>被校对象出厂编号</translation>
+    </message>
+    <message>
+        <source>date of calibration</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>reference standards</source>
+        <translation>计量标准</translation>
     </message>
     <message>
         <source>Language</source>
@@ -1269,8 +1910,80 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>简单接受（ILAC-G8 4.2.1）</translation>
     </message>
     <message>
+        <source>Combined standard u_c</source>
+        <translation>合成标准不确定度 u_c</translation>
+    </message>
+    <message>
+        <source>Expanded U (k = {k})</source>
+        <translation>扩展不确定度 U（k = {k}）</translation>
+    </message>
+    <message>
+        <source>Budget at {point}, the point with the largest U. k = {k} is Student&apos;s t for ν_eff = {nu} (Welch–Satterthwaite) and a coverage probability of {p} %; each point&apos;s U uses its own ν_eff.</source>
+        <translation>分量表取自{point}，即 U 最大的点。k = {k} 为 ν_eff = {nu}（Welch–Satterthwaite 公式）、包含概率 {p} % 时的 t 分布值；各点的 U 采用其自身的 ν_eff。</translation>
+    </message>
+    <message>
+        <source>Uncertainty budget</source>
+        <translation>不确定度分量一览表</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>输入量</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>评定类别</translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation>分布</translation>
+    </message>
+    <message>
+        <source>Value ({unit})</source>
+        <translation>量值 ({unit})</translation>
+    </message>
+    <message>
+        <source>Divisor</source>
+        <translation>除数</translation>
+    </message>
+    <message>
+        <source>Share %</source>
+        <translation>占比 %</translation>
+    </message>
+    <message>
+        <source>Reference standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>face, stated from face 1</source>
+        <translation>面，以第 1 面为基准给出</translation>
+    </message>
+    <message>
+        <source>{basis} per {per}, certificate {certificate}</source>
+        <translation>每个{per}的{basis}，证书 {certificate}</translation>
+    </message>
+    <message>
+        <source>{basis} per {per}</source>
+        <translation>每个{per}的{basis}</translation>
+    </message>
+    <message>
+        <source>Item resolution</source>
+        <translation>被校对象分辨力</translation>
+    </message>
+    <message>
+        <source>resolution {r} of the item&apos;s indication</source>
+        <translation>被校对象示值的分辨力 {r}</translation>
+    </message>
+    <message>
         <source>Decided quantity</source>
         <translation>判定的量</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty U (p = {p} %)</source>
+        <translation>扩展不确定度 U（p = {p} %）</translation>
+    </message>
+    <message>
+        <source>largest over the {points}; k = {k} there</source>
+        <translation>{points}中的最大值；该处 k = {k}</translation>
     </message>
     <message>
         <source>Half the peak-to-peak (Monte Carlo U)</source>
@@ -1279,6 +1992,63 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Every point with its own U</source>
         <translation>每个点及其各自的 U</translation>
+    </message>
+    <message>
+        <source>Amendment {number} to certificate {certificate}</source>
+        <extracomment>the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
+        <translation>证书 {certificate} 的第 {number} 号修改</translation>
+    </message>
+    <message>
+        <source>Amendment to certificate {certificate}</source>
+        <translation>证书 {certificate} 的修改</translation>
+    </message>
+    <message>
+        <source>This certificate replaces certificate {certificate}</source>
+        <translation>本证书替代证书 {certificate}</translation>
+    </message>
+    <message>
+        <source>{what}, which it supersedes; the original stays on record unchanged. Changed: {change}</source>
+        <translation>{what}，原证书作废；原证书存档，内容不变。修改内容：{change}</translation>
+    </message>
+    <message>
+        <source>{what}, which it supersedes; the original stays on record unchanged.</source>
+        <translation>{what}，原证书作废；原证书存档，内容不变。</translation>
+    </message>
+    <message>
+        <source>Page {page} of {pages}</source>
+        <translation>第 {page} 页 共 {pages} 页</translation>
+    </message>
+    <message>
+        <source>(no data)</source>
+        <translation>（无数据）</translation>
+    </message>
+    <message>
+        <source>Laboratory not stated</source>
+        <translation>未注明校准机构</translation>
+    </message>
+    <message>
+        <source>Certificate no number</source>
+        <translation>证书 无编号</translation>
+    </message>
+    <message>
+        <source>This certificate shall not be reproduced except in full without the laboratory&apos;s written approval.</source>
+        <translation>未经本实验室书面批准，不得部分复制本证书。</translation>
+    </message>
+    <message>
+        <source>Certificate {number} · AngleBench {version}</source>
+        <translation>证书 {number} · AngleBench {version}</translation>
+    </message>
+    <message>
+        <source>DRAFT</source>
+        <translation>草稿</translation>
+    </message>
+    <message>
+        <source>not stated</source>
+        <translation>未注明</translation>
+    </message>
+    <message>
+        <source>Reference standards</source>
+        <translation>计量标准</translation>
     </message>
     <message>
         <source>Standard</source>
@@ -1291,6 +2061,78 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Certificate no.</source>
         <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>DRAFT — not valid as a certificate. Missing: {fields}.</source>
+        <translation>草稿——不能作为证书使用。缺少：{fields}。</translation>
+    </message>
+    <message>
+        <source>tolerance ±{tolerance}</source>
+        <translation>允差 ±{tolerance}</translation>
+    </message>
+    <message>
+        <source>Reference: {reference}.</source>
+        <translation>参考文献：{reference}。</translation>
+    </message>
+    <message>
+        <source>The evaluation follows {standard}, implemented in AngleBench {version}; its verification is the validation report of that version (anglebench validate): simulations with known truth and hand-computed examples, each with its result.</source>
+        <translation>评定依据 {standard}，由 AngleBench {version} 实现；其验证记录为该版本的确认报告（anglebench validate）：已知真值的仿真和手工计算示例，各附结果。</translation>
+    </message>
+    <message>
+        <source>This is a non-standard method, published in the reference above and implemented in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the validation report of that version (anglebench validate): the reference figures of the publication and exact simulations with known truth, each with its result.</source>
+        <translation>本方法为非标准方法，发表于上述参考文献，由 AngleBench {version} 实现。其确认记录（ISO/IEC 17025 7.2.2）为该版本的确认报告（anglebench validate）：原文的参考数据和已知真值的精确仿真，各附结果。</translation>
+    </message>
+    <message>
+        <source>The expanded uncertainty of the error is U = {u} (the largest over the points; each point&apos;s U is in the results table). At each point it is the combined standard uncertainty multiplied by the coverage factor k of Student&apos;s t for that point&apos;s effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of {p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM (JCGM 100:2008).</source>
+        <translation>误差的扩展不确定度 U = {u}（各点中的最大值；各点的 U 见结果表）。各点的扩展不确定度为合成标准不确定度乘以包含因子 k，k 为该点有效自由度（Welch–Satterthwaite 公式）和包含概率 {p} % 下的 t 分布值；最大处 k = {k}。不确定度按 GUM（JCGM 100:2008）评定。</translation>
+    </message>
+    <message>
+        <source>Decided quantity: {quantity}.</source>
+        <translation>判定的量：{quantity}。</translation>
+    </message>
+    <message>
+        <source>Decision rule: {rule}.</source>
+        <translation>判定规则：{rule}。</translation>
+    </message>
+    <message>
+        <source>Zones: {zones}.</source>
+        <translation>区间：{zones}。</translation>
+    </message>
+    <message>
+        <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
+        <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate is listed.</source>
+        <translation>计量溯源性：本文件未建立——未列出具有校准证书的计量标准。</translation>
+    </message>
+    <message>
+        <source>{standard} (certificate {certificate})</source>
+        <translation>{standard}（证书 {certificate}）</translation>
+    </message>
+    <message>
+        <source>standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the reference standards listed, calibrated as stated in their certificates: {names}.</source>
+        <translation>计量溯源性：通过所列计量标准，校准结果可溯源至国际单位制（SI）平面角单位，各标准的校准见其证书：{names}。</translation>
+    </message>
+    <message>
+        <source>temperature {t} °C</source>
+        <translation>温度 {t} °C</translation>
+    </message>
+    <message>
+        <source>relative humidity {h} %</source>
+        <translation>相对湿度 {h} %</translation>
+    </message>
+    <message>
+        <source>Signature and date</source>
+        <translation>签名及日期</translation>
     </message>
     <message>
         <source>Uncertainty (&quot;)</source>
@@ -1810,8 +2652,173 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>尚无读数。</translation>
     </message>
     <message>
+        <source>The axis is sent to each target position in turn, in runs that approach every target from one direction and then from the other, as logged; the reference instrument reads the actual position reached. The positional deviation is x = actual position − target (ISO 230-2). Per target and direction: the mean x̄, the standard deviation s (n − 1) and the reversal value B_i = x̄↑ − x̄↓; for the axis the figures of the standard applied below, the others beside them. A compensation table for the axis controller is the negative of the mean deviation.</source>
+        <translation>按记录，轴依次运行至各目标位置，各测量循环先从一个方向、再从另一方向趋近每个目标；参考仪器读取实际到达的位置。位置偏差为 x = 实际位置 − 目标位置（ISO 230-2）。对每个目标和方向给出平均值 x̄、标准偏差 s（n − 1）和反向差值 B_i = x̄↑ − x̄↓；对整轴给出下述所采用标准的指标，并列出其他标准的指标。轴控制器的补偿表为平均偏差的负值。</translation>
+    </message>
+    <message>
+        <source>bidirectional accuracy of positioning</source>
+        <extracomment>ISO 230-2 figure → (English name, GB/T 17421.2 name)</extracomment>
+        <translation>双向定位精度</translation>
+    </message>
+    <message>
+        <source>unidirectional accuracy of positioning ↑</source>
+        <translation>单向定位精度 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional accuracy of positioning ↓</source>
+        <translation>单向定位精度 ↓</translation>
+    </message>
+    <message>
+        <source>bidirectional repeatability of positioning</source>
+        <translation>双向重复定位精度</translation>
+    </message>
+    <message>
+        <source>unidirectional repeatability of positioning ↑</source>
+        <translation>单向重复定位精度 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional repeatability of positioning ↓</source>
+        <translation>单向重复定位精度 ↓</translation>
+    </message>
+    <message>
+        <source>bidirectional systematic positional deviation</source>
+        <translation>双向定位系统偏差</translation>
+    </message>
+    <message>
+        <source>unidirectional systematic positional deviation ↑</source>
+        <translation>单向定位系统偏差 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional systematic positional deviation ↓</source>
+        <translation>单向定位系统偏差 ↓</translation>
+    </message>
+    <message>
+        <source>range of the mean bidirectional positional deviation</source>
+        <translation>平均双向位置偏差范围</translation>
+    </message>
+    <message>
+        <source>reversal value of the axis</source>
+        <translation>反向差值</translation>
+    </message>
+    <message>
+        <source>mean reversal value of the axis</source>
+        <translation>平均反向差值</translation>
+    </message>
+    <message>
+        <source>position uncertainty</source>
+        <translation>位置不确定度</translation>
+    </message>
+    <message>
+        <source>largest position scatter</source>
+        <translation>最大位置分散</translation>
+    </message>
+    <message>
+        <source>position deviation</source>
+        <translation>位置偏差</translation>
+    </message>
+    <message>
+        <source>largest reversal span</source>
+        <translation>最大反向差</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>Repeatability of the mean (s/√n)</source>
+        <translation>平均值的重复性（s/√n）</translation>
+    </message>
+    <message>
+        <source>s of the runs at each target and direction, n = {n}; ν of the fewest runs</source>
+        <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
+    </message>
+    <message>
+        <source>forward {n}</source>
+        <translation>正向 {n}</translation>
+    </message>
+    <message>
+        <source>backward {n}</source>
+        <translation>反向 {n}</translation>
+    </message>
+    <message>
+        <source>Standard applied</source>
+        <translation>采用标准</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
         <source>Readings</source>
         <translation>读数</translation>
+    </message>
+    <message>
+        <source>Fewest runs at a target</source>
+        <translation>目标位置上的最少测量次数</translation>
+    </message>
+    <message>
+        <source>fewer than {n}: flagged</source>
+        <translation>少于 {n}：已标注</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>检测</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>说明</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>Results per target ({unit}; target in {target})</source>
+        <translation>各目标位置结果（{unit}；目标位置单位 {target}）</translation>
+    </message>
+    <message>
+        <source>x = actual position − target. U is the expanded uncertainty of the mean x̄.</source>
+        <translation>x = 实际位置 − 目标位置。U 为平均值 x̄ 的扩展不确定度。</translation>
+    </message>
+    <message>
+        <source>mean positional deviation</source>
+        <translation>平均位置偏差</translation>
+    </message>
+    <message>
+        <source>targets and directions</source>
+        <translation>各目标位置和方向</translation>
+    </message>
+    <message>
+        <source>Figures of the axis</source>
+        <translation>轴线定位指标</translation>
+    </message>
+    <message>
+        <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
+        <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
+    </message>
+    <message>
+        <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range); a specification of A, R or P is read against the figures above.</source>
+        <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
+    </message>
+    <message>
+        <source>Compensation = −mean deviation: a controller adding it to the commanded position reaches the target.</source>
+        <translation>补偿值 = −平均偏差：控制器将其加到指令位置上即可到达目标位置。</translation>
+    </message>
+    <message>
+        <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
+        <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
+    </message>
+    <message>
+        <source>Positioning test of an axis</source>
+        <translation>轴线定位检测</translation>
+    </message>
+    <message>
+        <source>target {target} ({arrow})</source>
+        <translation>目标位置 {target}（{arrow}）</translation>
     </message>
     <message>
         <source>off</source>
@@ -2172,6 +3179,114 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Warning: {warning}</source>
         <translation>警告：{warning}</translation>
+    </message>
+    <message>
+        <source>error = indicated − reference (VIM); correction = −error</source>
+        <extracomment>Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction is the negative of an error.</extracomment>
+        <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
+    </message>
+    <message>
+        <source>expanded uncertainty U (k = 2)</source>
+        <extracomment>The coverage probability of k = 2 for a normal distribution (95.45 %).</extracomment>
+        <translation>扩展不确定度 U（k = 2）</translation>
+    </message>
+    <message>
+        <source>maximum permissible error ±a</source>
+        <translation>最大允许误差 ±a</translation>
+    </message>
+    <message>
+        <source>standard uncertainty u</source>
+        <translation>标准不确定度 u</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <extracomment>the distributions a budget&apos;s inputs are given (the names its table prints)</extracomment>
+        <translation>正态</translation>
+    </message>
+    <message>
+        <source>rectangular</source>
+        <translation>矩形</translation>
+    </message>
+    <message>
+        <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
+        <translation>带保护带 w = U 的非二元声明（ILAC-G8:09/2019，4.2.3）：结果在 T − w 以内为合格；在 T 以内为有条件合格；在 T + w 以内为有条件不合格；超出 T + w 为不合格</translation>
+    </message>
+    <message>
+        <source>binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.2): pass when the result lies within T − w, fail otherwise</source>
+        <translation>带保护带 w = U 的二元声明（ILAC-G8:09/2019，4.2.2）：结果在 T − w 以内为合格，否则为不合格</translation>
+    </message>
+    <message>
+        <source>binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, 4.2.1): pass when the result lies within T, fail otherwise; the risk of a false acceptance reaches 50 % at the limit</source>
+        <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
+    </message>
+    <message>
+        <source>half the peak-to-peak error after the best zero, with its own U and bias from a Monte Carlo simulation of this measurement (JCGM 101)</source>
+        <translation>最佳零位下误差峰峰值的一半，其 U 和偏倚由本次测量的蒙特卡洛模拟得出（JCGM 101）</translation>
+    </message>
+    <message>
+        <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
+        <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
+    </message>
+    <message>
+        <source>pass ≤ {t} &lt; fail</source>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so.</extracomment>
+        <translation>合格 ≤ {t} &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − w) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − w) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − w) &lt; conditional pass ≤ {t} (T) &lt; conditional fail ≤ {high} (T + w) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − w) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + w) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>The item conforms to the specification ±{t} (pass).</source>
+        <translation>被校对象符合技术要求 ±{t}（合格）。</translation>
+    </message>
+    <message>
+        <source>Conditional pass: the result lies within ±{t} but closer to the limit than the guard band, so conformity is not proven at the stated coverage probability.</source>
+        <translation>有条件合格：结果在 ±{t} 以内，但距限值小于保护带，在所述包含概率下不能证明其符合。</translation>
+    </message>
+    <message>
+        <source>Conditional fail: the result lies beyond ±{t} by less than the guard band, so non-conformity is not proven at the stated coverage probability.</source>
+        <translation>有条件不合格：结果超出 ±{t}，但超出量小于保护带，在所述包含概率下不能证明其不符合。</translation>
+    </message>
+    <message>
+        <source>The item does not conform to the specification ±{t} (fail).</source>
+        <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
+    </message>
+    <message>
+        <source>corrected error</source>
+        <translation>修正后误差</translation>
+    </message>
+    <message>
+        <source>No statement of conformity: {reason}.</source>
+        <translation>不作符合性声明：{reason}。</translation>
+    </message>
+    <message>
+        <source>No statement of conformity: no specification (tolerance) was given.</source>
+        <translation>不作符合性声明：未给出技术要求（允差）。</translation>
+    </message>
+    <message>
+        <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is number {point}: |e| = {e}, U = {u}. {sentence}</source>
+        <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的是第 {point} 点：|e| = {e}，U = {u}。{sentence}</translation>
+    </message>
+    <message>
+        <source>per point, with w = U of that point: {zones}</source>
+        <translation>逐点判定，w 取该点的 U：{zones}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），U = {u}（包含概率 {p} %）。{sentence}</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
+        <translation>{quantity}：{trials} 次试验，随机种子 {seed}，在 {points} 个点中每 {stride} 个取一个</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}</source>
+        <translation>{quantity}：{trials} 次试验，随机种子 {seed}</translation>
     </message>
 </context>
 </TS>
