@@ -29,10 +29,10 @@ def envelope(x, y, bins: int = 1500) -> tuple[np.ndarray, np.ndarray]:
 
 
 def one_per_cell(x, y, cells: int = 256) -> np.ndarray:
-    """The indices of a scatter thinned for drawing: the first sample in each occupied
-    cell of a ``cells`` × ``cells`` grid over the points' range, in their order. Every
-    point lands in a drawn cell, so an outlier (a spike typed over one sample) is always
-    drawn, and a million samples on a ring become about a thousand points."""
+    """The indices of a scatter thinned for drawing: one sample of each occupied cell of a
+    ``cells`` × ``cells`` grid over the points' range, in their order. Every point lands
+    in a drawn cell, so an outlier (a spike typed over one sample) is always drawn, and a
+    million samples on a ring become about a thousand points."""
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     if x.size <= 2 * cells:
         return np.arange(x.size)
@@ -43,6 +43,6 @@ def one_per_cell(x, y, cells: int = 256) -> np.ndarray:
             return np.zeros(v.size, dtype=np.intp)
         return np.minimum(((v - low) * (cells / span)).astype(np.intp), cells - 1)
     index = cell(x) * cells + cell(y)
-    first = np.full(cells * cells, x.size, dtype=np.intp)
-    np.minimum.at(first, index, np.arange(x.size))  # the earliest sample of each cell
-    return np.sort(first[first < x.size])
+    chosen = np.full(cells * cells, x.size, dtype=np.intp)
+    chosen[index] = np.arange(x.size)  # one of each cell's samples (which one is numpy's)
+    return np.sort(chosen[chosen < x.size])

@@ -201,9 +201,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     source, theta = _phase_source(parsed, per_period, warnings)
     if source == "estimated":
         phase = ellipse.phase(u_sin, u_cos)
-        bins = np.unique(np.floor((phase + math.pi) / TWO_PI * 36).astype(int))
-        if bins.size < 27:
-            raise ValueError(f"the signals cover {100 * bins.size / 36:.0f} % of a period: the "
+        bins = np.count_nonzero(np.bincount(np.floor((phase + math.pi) / TWO_PI * 36)
+                                            .astype(np.intp)))
+        if bins < 27:
+            raise ValueError(f"the signals cover {100 * bins / 36:.0f} % of a period: the "
                              "phase cannot be estimated from less than three quarters of one")
         theta = np.unwrap(phase)
         warnings.append(OBSERVABILITY)

@@ -296,14 +296,21 @@ def summary(result: PositioningResult) -> str:
         message(QT_TR_NOOP("   *** fewer than 5 runs: flagged ***"))))]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
-    out.append("ISO 230-2: " + ", ".join(f"{k} = {figure_text(f.get(k), sym)}" for k in keys))
-    v = result.vdi
-    out.append("VDI/DGQ 3441: " + ", ".join(
-        f"{k} = {figure_text(val, sym)}" for k, val in v.as_dict().items()))
+    out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym))
+    out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym))
     out.append(message(QT_TR_NOOP("Standard applied: {standard}. Compensation = −mean deviation "
                                   "(Export compensation table… below the set-up)."),
-                       standard=STANDARDS[result.standard]))
+                       standard=message(STANDARDS[result.standard])))
     return lines(out)
+
+
+def _figures_line(prefix: str, figures, symbol: str):
+    """``prefix`` then "A = 3.20", R = …": a figure the readings could not determine says
+    so in the reader's language."""
+    parts: list = [prefix]
+    for i, (key, value) in enumerate(figures):
+        parts += [", " if i else "", f"{key} = ", figure_text(value, symbol)]
+    return joined(parts)
 
 
 def _correction_table(result: PositioningResult, settings: Mapping[str, Any], path: str) -> str:
@@ -329,11 +336,11 @@ POSITIONING = AnalysisKind(
     presenter="widgets.positioning.presenter:PositioningPresenter",
     correction_table=_correction_table,
     verdict=lambda r: joined((
-        f"{STANDARDS[r.standard].split(' (')[0]}: "
-        + ", ".join(f"{k} = {figure_text(r.iso.figures.get(k), r.symbol)}"
-                    for k in (("A", "R", "B") if r.bidirectional else
-                              tuple(f"{f}_{n}" for n, _, _ in
-                                    r.directions_present() for f in ("A", "R")))),
+        _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
+                      ((k, r.iso.figures.get(k)) for k in (
+                          ("A", "R", "B") if r.bidirectional else
+                          tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
+                                for f in ("A", "R")))), r.symbol),
         "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged")))),
     headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
                         for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")

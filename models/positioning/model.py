@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, message
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
 
 __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
@@ -67,7 +67,7 @@ def figure_text(value: float | None, symbol: str) -> str:
     """A figure as the summary and the certificate print it; "not evaluated" when the
     readings could not determine it."""
     if value is None or not math.isfinite(value):
-        return QT_TR_NOOP("not evaluated")
+        return message(QT_TR_NOOP("not evaluated"))
     return f"{value:.3f}{symbol}"
 
 
