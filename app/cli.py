@@ -18,7 +18,7 @@ from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
-from models.messages import QT_TR_NOOP, rendered, translator
+from models.messages import QT_TR_NOOP, joined, message, rendered, translator
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -185,8 +185,11 @@ def run_analyze(argv: list[str]) -> int:
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]
-        more = f" (and {len(parsed.errors) - 1} more bad cell(s))" if len(parsed.errors) > 1 else ""
-        _say(f"{args.file}: row {line}, column '{first.column_key}': {first.reason}{more}")
+        more = (message(QT_TR_NOOP(" (and {n} more bad cell(s))"), n=len(parsed.errors) - 1)
+                if len(parsed.errors) > 1 else "")
+        _say(rendered(joined((message(QT_TR_NOOP("{file}: row {row}, column '{column}': {reason}"),
+                                      file=args.file, row=line, column=first.column_key,
+                                      reason=first.reason), more)), translator(args.language)))
         return EXIT_BAD_INPUT
     try:
         result = kind.analyze(parsed, kind.settings_with_defaults(settings))

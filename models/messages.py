@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 __all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "joined",
-           "lines", "message", "rendered", "translator", "unit_tail"]
+           "lines", "message", "reason_of", "rendered", "translator", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -67,6 +67,14 @@ def lines(parts: Iterable[Any]) -> Message:
     for part in parts:
         out += (["\n"] if out else []) + [part]
     return joined(out)
+
+
+def reason_of(exc: BaseException) -> str:
+    """What an exception says, as the :class:`Message` it was raised with when it was one
+    (``str(exc)`` would keep the English only)."""
+    if len(exc.args) == 1 and isinstance(exc.args[0], Message):
+        return exc.args[0]
+    return str(exc)
 
 
 def rendered(text: str, translate: Callable[[str], str]) -> str:

@@ -211,3 +211,41 @@ def test_the_language_follows_the_system_unless_chosen(monkeypatch):
                                                           QLocale.Country.Germany))
     assert resolve_language("system") == "en"
     assert QApplication.instance() is not None
+
+
+@pytest.mark.parametrize("typed", ["12°75'", "abc", "12.5°30'", ""])
+def test_a_cell_that_cannot_be_read_says_why_in_the_windows_language(chinese, typed):
+    """The red cell's tooltip in the Chinese window: no English of ours, the text typed and
+    the column's key as they are."""
+    theodolite = chinese.presenter("theodolite")
+    model = theodolite.table_model
+    model.setData(model.index(2, 1), typed)
+    tip = model.data(model.index(2, 1), Qt.ItemDataRole.ToolTipRole)
+    assert tip and re.search("[\u4e00-\u9fff]", tip)
+    assert english_words(tip.replace(typed, "").replace("azimuth_deg", "")) == set(), tip
+    theodolite.undo_stack.undo()
+
+
+def test_the_command_line_says_which_cell_is_bad_in_chinese(tmp_path, capsys):
+    from app.main import main
+
+    path = tmp_path / "run.csv"
+    path.write_text("theta_deg,azimuth_deg,elevation_deg\n0,0,0.01\n5,5°70',0.02\n10,10,0.03\n"
+                    "15,x,0.04\n", encoding="utf-8")
+    assert main(["analyze", "theodolite", str(path), "--language", "zh_CN"]) == 2
+    said = capsys.readouterr().err.strip()
+    assert said == (f"{path}：第 3 行，列 'azimuth_deg'：'5°70'\'：分 70 超出范围（0 至 59）"
+                    "（另有 1 个无法读取的单元格）")
+    assert main(["analyze", "theodolite", str(path)]) == 2  # English as before
+    assert capsys.readouterr().err.strip() == (
+        f"{path}: row 3, column 'azimuth_deg': '5°70'': minutes 70 out of range (0 to 59) "
+        "(and 1 more bad cell(s))")
+
+
+def test_every_translation_keeps_its_figures():
+    """A translated template names the same figures as the English one: a figure left out
+    would vanish from a certificate or a message."""
+    for element in ET.parse(translations.TS_FILE).iter("message"):
+        source, translation = element.findtext("source"), element.findtext("translation") or ""
+        assert sorted(re.findall(r"\{[^}]*\}", source)) == sorted(
+            re.findall(r"\{[^}]*\}", translation)), source

@@ -6,7 +6,7 @@ from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelInd
 from PySide6.QtGui import QBrush, QColor, QUndoStack
 
 from models.readings.sheet import ReadingsSheet
-from widgets.i18n import declared, on_language_change, tr
+from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
     InsertRowsCommand,
     RemoveRowsCommand,
@@ -65,7 +65,8 @@ class ReadingsTableModel(QAbstractTableModel):
             reason = self.sheet.cell_error(r, c)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
             return (tr("Row {row}, {header} ({key}): {reason}").format(
-                row=r + 1, header=declared(column.header), key=column.key, reason=reason)
+                row=r + 1, header=declared(column.header), key=column.key,
+                reason=translated(reason))
                 if reason else None)
         return None
 

@@ -17,6 +17,8 @@ import math
 import re
 import unicodedata
 
+from models.messages import QT_TR_NOOP, message
+
 ARCSEC_PER_DEG = 3600.0
 ARCSEC_PER_RAD = 180.0 * 3600.0 / math.pi
 
@@ -98,7 +100,7 @@ def parse_angle_deg(text: str) -> float:
         raise AngleParseError(f"expected text, got {type(text).__name__}")
     s = _normalise(text)
     if not s:
-        raise AngleParseError("empty")
+        raise AngleParseError(message(QT_TR_NOOP("empty")))
     sign = 1.0
     if s[0] in "+-":
         sign = -1.0 if s[0] == "-" else 1.0
@@ -108,26 +110,31 @@ def parse_angle_deg(text: str) -> float:
     if _DECIMAL.match(s):
         value = float(s)
         if not math.isfinite(value):
-            raise AngleParseError(f"'{text.strip()}' is not a finite angle")
+            raise AngleParseError(message(QT_TR_NOOP("'{text}' is not a finite angle"),
+                                          text=text.strip()))
         return sign * value
     match = _DMS.match(s)
     if match is None:
-        raise AngleParseError(
-            f"'{text.strip()}' is not an angle; write decimal degrees (12.5) "
-            "or D°M'S\" (12°34'56.7\", 12 34 56.7, 12:34:56.7)"
-        )
+        raise AngleParseError(message(QT_TR_NOOP(
+            "'{text}' is not an angle; write decimal degrees (12.5) or D°M'S\" (12°34'56.7\", "
+            "12 34 56.7, 12:34:56.7)"), text=text.strip()))
     deg_s, min_s, sec_s = match.groups()
     degrees = float(deg_s)
     minutes = float(min_s) if min_s is not None else 0.0
     seconds = float(sec_s) if sec_s is not None else 0.0
     if min_s is not None and not degrees.is_integer():
-        raise AngleParseError(f"'{text.strip()}': degrees must be whole when minutes follow")
+        raise AngleParseError(message(QT_TR_NOOP("'{text}': degrees must be whole when minutes "
+                                                 "follow"), text=text.strip()))
     if sec_s is not None and not minutes.is_integer():
-        raise AngleParseError(f"'{text.strip()}': minutes must be whole when seconds follow")
+        raise AngleParseError(message(QT_TR_NOOP("'{text}': minutes must be whole when seconds "
+                                                 "follow"), text=text.strip()))
     if minutes >= 60:
-        raise AngleParseError(f"'{text.strip()}': minutes {min_s} out of range (0 to 59)")
+        raise AngleParseError(message(QT_TR_NOOP("'{text}': minutes {minutes} out of range (0 "
+                                                 "to 59)"), text=text.strip(), minutes=min_s))
     if seconds >= 60:
-        raise AngleParseError(f"'{text.strip()}': seconds {sec_s} out of range (0 to below 60)")
+        raise AngleParseError(message(QT_TR_NOOP("'{text}': seconds {seconds} out of range (0 "
+                                                 "to below 60)"), text=text.strip(),
+                                      seconds=sec_s))
     return sign * (degrees + minutes / 60.0 + seconds / 3600.0)
 
 

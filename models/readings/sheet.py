@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.readings.angles import AngleParseError, parse_angle_deg
 
 __all__ = ["CellError", "Column", "ColumnKind", "ParsedReadings", "ReadingsSheet", "one_line"]
@@ -46,9 +47,12 @@ class CellError:
 
     def describe(self, source: str = "", row_offset: int = 1) -> str:
         """One line: ``file: row N, column 'key': reason`` (rows counted from ``row_offset``)."""
-        where = f"{source}: " if source else ""
-        return one_line(f"{where}row {self.row + row_offset}, column '{self.column_key}': "
-                        f"{self.reason}")
+        where = message(QT_TR_NOOP("{source}: row {row}, column '{column}': {reason}")
+                        if source else
+                        QT_TR_NOOP("row {row}, column '{column}': {reason}"),
+                        source=source, row=self.row + row_offset, column=self.column_key,
+                        reason=self.reason)
+        return where if "\n" not in where and len(where) <= 400 else one_line(where)
 
 
 @dataclass(frozen=True)
@@ -80,26 +84,29 @@ class Column:
         stripped = text.strip()
         if not stripped:
             if self.required:
-                raise ValueError("empty; a value is needed here")
+                raise ValueError(message(QT_TR_NOOP("empty; a value is needed here")))
             return None
         if self.kind is ColumnKind.ANGLE_DEG:
             try:
                 return parse_angle_deg(stripped)
             except AngleParseError as exc:
-                raise ValueError(str(exc)) from None
+                raise ValueError(reason_of(exc)) from None
         if self.kind is ColumnKind.NUMBER:
             return _parse_number(stripped)
         if self.kind is ColumnKind.INTEGER:
             value = _parse_number(stripped)
             if not float(value).is_integer():
-                raise ValueError(f"'{stripped}' is not a whole number")
+                raise ValueError(message(QT_TR_NOOP("'{text}' is not a whole number"),
+                                         text=stripped))
             if abs(value) > MAX_INTEGER:
-                raise ValueError(f"'{stripped}' is out of range for a whole number here")
+                raise ValueError(message(QT_TR_NOOP("'{text}' is out of range for a whole number "
+                                                    "here"), text=stripped))
             return int(value)
         if self.choices:
             lowered = {c.lower(): c for c in self.choices}
             if stripped.lower() not in lowered:
-                raise ValueError(f"'{stripped}' is not one of {', '.join(self.choices)}")
+                raise ValueError(message(QT_TR_NOOP("'{text}' is not one of {choices}"),
+                                         text=stripped, choices=", ".join(self.choices)))
             return lowered[stripped.lower()]
         return stripped
 
@@ -120,10 +127,10 @@ def _parse_number(text: str) -> float:
     if candidate.count(",") == 1 and "." not in candidate:
         candidate = candidate.replace(",", ".")
     if not _PLAIN_NUMBER.fullmatch(candidate):
-        raise ValueError(f"'{one_line(text, 40)}' is not a number")
+        raise ValueError(message(QT_TR_NOOP("'{text}' is not a number"), text=one_line(text, 40)))
     value = float(candidate)
     if not math.isfinite(value):
-        raise ValueError(f"'{text}' is not a finite number")
+        raise ValueError(message(QT_TR_NOOP("'{text}' is not a finite number"), text=text))
     return value
 
 
@@ -267,7 +274,7 @@ class NumericRows:
                 try:
                     parsed.append(column.parse(row[c]))
                 except ValueError as exc:
-                    errors.append(CellError(r, c, column.key, row[c], str(exc)))
+                    errors.append(CellError(r, c, column.key, row[c], reason_of(exc)))
                     parsed.append(_BAD)
             if any(v is _BAD for v in parsed):
                 keep[r] = False
@@ -333,7 +340,7 @@ class ReadingsSheet:
         try:
             self.columns[column].parse(self.text(row, column))
         except ValueError as exc:
-            return str(exc)
+            return reason_of(exc)
         return None
 
     # -- edits ----------------------------------------------------------
@@ -432,7 +439,7 @@ class ReadingsSheet:
                 try:
                     values.append(column.parse(row[c]))
                 except ValueError as exc:
-                    errors.append(CellError(r, c, column.key, row[c], str(exc)))
+                    errors.append(CellError(r, c, column.key, row[c], reason_of(exc)))
                     ok = False
             if ok:
                 kept_rows.append(r)

@@ -3177,6 +3177,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
     <message>
+        <source> (and {n} more bad cell(s))</source>
+        <translation>（另有 {n} 个无法读取的单元格）</translation>
+    </message>
+    <message>
+        <source>{file}: row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>{file}：第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
         <source>Warning: {warning}</source>
         <translation>警告：{warning}</translation>
     </message>
@@ -3287,6 +3295,67 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{quantity}: {trials} trials, seed {seed}</source>
         <translation>{quantity}：{trials} 次试验，随机种子 {seed}</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>为空</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a finite angle</source>
+        <translation>&apos;{text}&apos; 不是有限的角度值</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not an angle; write decimal degrees (12.5) or D°M&apos;S&quot; (12°34&apos;56.7&quot;, 12 34 56.7, 12:34:56.7)</source>
+        <translation>&apos;{text}&apos; 不是角度；请写成十进制度（12.5）或 度°分′秒″（12°34&apos;56.7&quot;、12 34 56.7、12:34:56.7）</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: degrees must be whole when minutes follow</source>
+        <translation>&apos;{text}&apos;：后面有分时，度必须为整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: minutes must be whole when seconds follow</source>
+        <translation>&apos;{text}&apos;：后面有秒时，分必须为整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: minutes {minutes} out of range (0 to 59)</source>
+        <translation>&apos;{text}&apos;：分 {minutes} 超出范围（0 至 59）</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: seconds {seconds} out of range (0 to below 60)</source>
+        <translation>&apos;{text}&apos;：秒 {seconds} 超出范围（0 至小于 60）</translation>
+    </message>
+    <message>
+        <source>{source}: row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>{source}：第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>empty; a value is needed here</source>
+        <translation>为空；此处需要一个值</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a whole number</source>
+        <translation>&apos;{text}&apos; 不是整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is out of range for a whole number here</source>
+        <translation>&apos;{text}&apos; 超出此处整数的范围</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not one of {choices}</source>
+        <translation>&apos;{text}&apos; 不是 {choices} 之一</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a number</source>
+        <extracomment>The largest whole number an INTEGER column takes (positions, set numbers …).</extracomment>
+        <translation>&apos;{text}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a finite number</source>
+        <translation>&apos;{text}&apos; 不是有限的数</translation>
     </message>
 </context>
 </TS>
