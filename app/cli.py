@@ -18,7 +18,7 @@ from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
-from models.messages import QT_TR_NOOP, joined, message, rendered, translator
+from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered, translator
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet, one_line
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -143,10 +143,15 @@ def _finite(value: Any) -> Any:
 def run_analyze(argv: list[str]) -> int:
     args = _parser().parse_args(argv)
     kind = KINDS[args.kind]
+    words = translator(args.language)
+
+    def why(exc: Exception) -> str:  # what went wrong, in the language asked for
+        return rendered(reason_of(exc), words)
+
     try:
         settings = _settings_from(args)
     except SettingsError as exc:
-        _say(f"anglebench analyze: {exc}")
+        _say(f"anglebench analyze: {why(exc)}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else [])
     if args.table and kind.correction_table is None:
@@ -169,7 +174,7 @@ def run_analyze(argv: list[str]) -> int:
     try:
         mapping = _column_mapping(args.columns)
     except TableImportError as exc:
-        _say(f"{exc}")
+        _say(why(exc))
         return EXIT_BAD_INPUT
     # a file of plain numbers is read by numpy in one pass; anything else (or a file that
     # is not what it claims) by the tolerant reader, which names the row and the cell
@@ -179,7 +184,7 @@ def run_analyze(argv: list[str]) -> int:
         try:
             table, rows = _read_rows(args.file, kind, mapping)
         except TableImportError as exc:
-            _say(f"{exc}")
+            _say(why(exc))
             return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
     if parsed.errors:
@@ -189,21 +194,21 @@ def run_analyze(argv: list[str]) -> int:
                 if len(parsed.errors) > 1 else "")
         _say(rendered(joined((message(QT_TR_NOOP("{file}: row {row}, column '{column}': {reason}"),
                                       file=args.file, row=line, column=first.column_key,
-                                      reason=first.reason), more)), translator(args.language)))
+                                      reason=first.reason), more)), words))
         return EXIT_BAD_INPUT
     try:
         result = kind.analyze(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
-        _say(f"anglebench analyze: {exc}")
+        _say(f"anglebench analyze: {why(exc)}")
         return EXIT_BAD_INPUT
     except ValueError as exc:
-        _say(f"{args.file}: {exc}")
+        _say(f"{args.file}: {why(exc)}")
         return EXIT_BAD_INPUT
     if args.json:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
                          + "\n")
     else:
-        say = translator(args.language)
+        say = words
         summary = text_in_unit(rendered(kind.summary(result), say), ANGLE_UNITS[args.unit])
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
         for warning in getattr(result, "warnings", []):

@@ -32,6 +32,7 @@ from app.certificate_presenter import CertificatePresenter
 from models import __version__
 from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS, AngleUnit
+from models.messages import reason_of
 from models.project.file import (
     Project,
     ProjectFileError,
@@ -55,6 +56,7 @@ from widgets.i18n import (
     on_language_change,
     resolve_language,
     tr,
+    translated,
 )
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import gui_thread_first
@@ -458,7 +460,7 @@ class MainWindow(QMainWindow):
         try:
             presenter.import_file(path)
         except TableImportError as exc:
-            self.tell(tr("Cannot import"), str(exc))
+            self.tell(tr("Cannot import"), translated(reason_of(exc)))
             return False
         self.statusBar().showMessage(
             tr("Imported {path} (Edit › Undo restores the old readings)").format(path=path), 8000)

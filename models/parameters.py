@@ -13,6 +13,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from models.messages import QT_TR_NOOP, message
+
 __all__ = ["Parameter", "SettingsError", "check_parameters"]
 
 
@@ -54,15 +56,18 @@ class Parameter:
             value = next((v for v, _ in self.choices if str(v) == text), None)
             if value is None:
                 shown = ", ".join(str(v) for v, _ in self.choices)
-                raise SettingsError(f"{self.key} must be one of {shown}, not {text}")
+                raise SettingsError(message(
+                    QT_TR_NOOP("{key} must be one of {shown}, not {text}"),
+                    key=self.key, shown=shown, text=text))
             return value
         if self.kind == "text":
             return self.check(text)
         try:
             number: Any = int(text) if self.kind == "int" else float(text)
         except ValueError:
-            raise SettingsError(f"{self.flag}: '{text}' is not a "
-                                f"{'whole number' if self.kind == 'int' else 'number'}") from None
+            raise SettingsError(message(
+                QT_TR_NOOP("{flag}: '{text}' is not a whole number") if self.kind == "int" else
+                QT_TR_NOOP("{flag}: '{text}' is not a number"), flag=self.flag, text=text)) from None
         return self.check(number)
 
     def check(self, value: Any) -> Any:
@@ -72,25 +77,35 @@ class Parameter:
             if isinstance(value, bool) or not isinstance(value, str | int | float) or \
                     value not in values:
                 shown = ", ".join(str(v) for v in values)
-                raise SettingsError(f"{self.key} must be one of {shown}, not {value!r}")
+                raise SettingsError(message(
+                    QT_TR_NOOP("{key} must be one of {shown}, not {value}"),
+                    key=self.key, shown=shown, value=f"{value!r}"))
             return values[values.index(value)]
         if self.kind == "text":
             if not isinstance(value, str):
-                raise SettingsError(f"{self.key} must be text, not {type(value).__name__}")
+                raise SettingsError(message(
+                    QT_TR_NOOP("{key} must be text, not {name__}"),
+                    key=self.key, name__=type(value).__name__))
             return value
         if isinstance(value, bool) or not isinstance(value, int | float) or \
                 not math.isfinite(value):
-            raise SettingsError(f"{self.key} must be a number, not {value!r}")
+            raise SettingsError(message(
+                QT_TR_NOOP("{key} must be a number, not {value}"),
+                key=self.key, value=f"{value!r}"))
         if self.zero and value == 0:
             return 0
         if self.kind == "int" and value != int(value):
-            raise SettingsError(f"{self.key} must be a whole number, not {value}")
+            raise SettingsError(message(
+                QT_TR_NOOP("{key} must be a whole number, not {value}"),
+                key=self.key, value=value))
         low = -math.inf if self.minimum is None else self.minimum
         high = math.inf if self.maximum is None else self.maximum
         if not low <= value <= high:
             zero = "0 or " if self.zero else ""
-            raise SettingsError(f"{self.key} must be {zero}{low:g} to {high:g}"
-                                f"{' ' + self.unit if self.unit else ''}, not {value:g}")
+            raise SettingsError(message(
+                QT_TR_NOOP("{key} must be {zero}{low} to {high}{value}, not {value2}"),
+                key=self.key, zero=zero, low=f"{low:g}", high=f"{high:g}",
+                value=' ' + self.unit if self.unit else '', value2=f"{value:g}"))
         return int(value) if self.kind == "int" else float(value)
 
     def text(self, value: Any) -> str:

@@ -4,6 +4,7 @@ make from the sources, and the language changes at once without losing work."""
 
 from __future__ import annotations
 
+import math
 import re
 import shutil
 import xml.etree.ElementTree as ET
@@ -249,3 +250,43 @@ def test_every_translation_keeps_its_figures():
         source, translation = element.findtext("source"), element.findtext("translation") or ""
         assert sorted(re.findall(r"\{[^}]*\}", source)) == sorted(
             re.findall(r"\{[^}]*\}", translation)), source
+
+
+REFUSED = [  # (workbench, file's bytes, names it holds or asks for): input that is refused
+    ("fringe", b"u_sin,u_cos\n" + b"1.0,2.0\n" * 40, set()),
+    ("fringe", b"u_sin,u_cos\n" + "".join(
+        f"{3.7 * math.sin(i / 9):.4f},{3.7 * math.sin(i / 9):.4f}\n" for i in range(200)).encode(),
+     set()),
+    ("theodolite", b"theta_deg,azimuth_deg,elevation_deg\n\xff\xfe\xfd,1,2\n", {"UTF", "GBK"}),
+    ("theodolite", b"theta_deg,azimuth_deg,elevation_deg\n" + b"5,5,0.1\n" * 6, set()),
+    ("polygon", b"position,encoder_deg,polygon_dev_arcsec,ac_x_arcsec\n1,0,0,0\n2,180,0,0\n",
+     set()),
+    ("theodolite", b"angle,az\n1,2\n", {"angle", "run", "direction", "azimuth"}),
+]
+
+
+@pytest.mark.parametrize("kind, content, names", REFUSED)
+def test_refused_input_is_explained_in_chinese(tmp_path, capsys, kind, content, names):
+    """Bad input on the command line with --language zh_CN: the reason in Chinese, with the
+    file's name and what it holds as they are; in English exactly as without the option."""
+    from app.main import main
+
+    path = tmp_path / "input.csv"
+    path.write_bytes(content)
+    assert main(["analyze", kind, str(path)]) == 2
+    english = capsys.readouterr().err.strip()
+    assert main(["analyze", kind, str(path), "--language", "zh_CN"]) == 2
+    chinese = capsys.readouterr().err.strip()
+    assert re.search("[\u4e00-\u9fff]", chinese), chinese
+    assert english_words(chinese.replace(str(path), "")) - names == set(), chinese
+    assert english_words(english.replace(str(path), "")), english  # it was English before
+
+
+def test_a_refused_analysis_says_why_in_the_chinese_window(chinese):
+    fringe = chinese.presenter("fringe")
+    fringe.table_model.replace_all([["1.0", "2.0", ""]] * 40)
+    fringe.refresh()
+    summary = fringe.view.summary.toPlainText()
+    assert "u_sin" in summary and re.search("[\u4e00-\u9fff]", summary)
+    assert english_words(summary) == set(), summary
+    fringe.undo_stack.undo()

@@ -20,6 +20,7 @@ from models.display_units import (
     figures_in_unit,
     text_in_unit,
 )
+from models.messages import reason_of
 from models.project.file import WorkbenchState
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
@@ -113,10 +114,11 @@ class _ImportTask(QRunnable):
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except MissingColumnError as exc:  # mapped on the GUI thread, with the user
-                emit_if_alive(signals.imported, exc, path, str(exc), generation)
+                emit_if_alive(signals.imported, exc, path, translated(reason_of(exc)), generation)
                 return
             except TableImportError as exc:
-                emit_if_alive(signals.imported, None, path, str(exc), generation)
+                emit_if_alive(signals.imported, None, path, translated(reason_of(exc)),
+                              generation)
                 return
             gc.freeze()  # keep the new rows out of later full passes too
         emit_if_alive(signals.imported, rows, path, "", generation)
@@ -129,7 +131,7 @@ def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
     except AnalysisCancelled:
         raise
     except ValueError as exc:  # bad input: a message for the technician
-        return None, str(exc)
+        return None, reason_of(exc)
     except Exception as exc:  # noqa: BLE001 - a bug must not take the typed readings with it
         log.exception("analysis failed")
         return None, f"internal error while analysing ({type(exc).__name__}: {exc})"
@@ -324,7 +326,7 @@ class WorkbenchPresenter(QObject):
             try:
                 self.import_file(path)
             except TableImportError as exc:
-                self.import_failed.emit(str(exc))
+                self.import_failed.emit(translated(reason_of(exc)))
             return
         self._import_pending = True
         self._set_busy(True, tr("Reading {name} …").format(name=Path(path).name))
@@ -335,7 +337,7 @@ class WorkbenchPresenter(QObject):
         the user gives none. Raises TableImportError for a mapping the file cannot take."""
         table = exc.table
         mapping = self.view.ask_column_mapping(self.kind.columns, list(table.header or []),
-                                               table.rows[:8], str(exc))
+                                               table.rows[:8], translated(reason_of(exc)))
         if not mapping:
             return None
         return map_columns(table, self.kind.columns, mapping)
@@ -355,7 +357,7 @@ class WorkbenchPresenter(QObject):
             try:
                 rows = self._rows_by_mapping(rows)
             except TableImportError as exc:
-                rows, error = None, str(exc)
+                rows, error = None, translated(reason_of(exc))
         if rows is None or len(rows) <= THREAD_THRESHOLD_ROWS:
             self._set_busy(False)  # a large sheet stays "busy" into its analysis: no
             #                        repaint of the old plots in between
@@ -433,7 +435,7 @@ class WorkbenchPresenter(QObject):
         self.view.set_next_row(tr("next: row {row}").format(row=self.sheet.row_count + 1))
         if result is None:
             self.clear_result()
-            error = self.in_unit_text(error)
+            error = self.in_unit_text(translated(error))
             no_result = tr("No result: {reason}").format(reason=error) if error else ""
             self.view.set_summary(no_result or tr("No readings yet."))
             self.view.set_verdict(no_result)

@@ -28,7 +28,7 @@ from models.fringe.model import (
 from models.fringe.phase import EllipseFit, fit_ellipse
 from models.fringe.report import fringe_certificate
 from models.fringe.result import FringeResult
-from models.messages import QT_TR_NOOP, joined, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 
@@ -104,31 +104,43 @@ def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray)
         bad = np.nonzero(~np.isfinite(u) | (np.abs(u) > SIGNAL_LIMIT_V))[0]
         if bad.size:
             i = int(bad[0])
-            raise ValueError(f"row {_row(parsed, i)}, column '{key}': {u[i]:g} V is not a read "
-                             f"head's signal (beyond ±{SIGNAL_LIMIT_V:g} V)")
+            raise ValueError(message(
+                QT_TR_NOOP("row {row}, column '{key}': {u} V is not a read head's signal (beyond "
+                           "±{signal_limit_v} V)"),
+                row=_row(parsed, i), key=key, u=f"{u[i]:g}", signal_limit_v=f"{SIGNAL_LIMIT_V:g}"))
     for key, u in (("u_sin", u_sin), ("u_cos", u_cos)):
         if not np.std(u) > 1e-9 * max(1.0, float(np.max(np.abs(u)))):
-            raise ValueError(f"channel {key} is constant ({u[0]:g} V): not a fringe signal")
+            raise ValueError(message(
+                QT_TR_NOOP("channel {key} is constant ({u} V): not a fringe signal"),
+                key=key, u=f"{u[0]:g}"))
     corr = float(np.corrcoef(u_sin, u_cos)[0, 1])
     if abs(corr) > 0.98:
-        raise ValueError(f"the two channels are the same signal (correlation {corr:+.3f}): they "
-                         "must be in quadrature (sine and cosine)")
+        raise ValueError(message(
+            QT_TR_NOOP("the two channels are the same signal (correlation {corr}): they must be in "
+                       "quadrature (sine and cosine)"),
+            corr=f"{corr:+.3f}"))
 
 
 def _ellipse(u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
     try:
         ellipse = fit_ellipse(u_sin, u_cos)
     except ValueError as exc:
-        raise ValueError(f"not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)") \
+        raise ValueError(message(
+            QT_TR_NOOP("not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)"),
+            exc=reason_of(exc))) \
             from None
     if abs(math.degrees(ellipse.quadrature_rad)) > 30.0:
-        raise ValueError(f"the channels are not in quadrature: their phases differ by "
-                         f"{90 + math.degrees(ellipse.quadrature_rad):.1f}°, not about 90°")
+        raise ValueError(message(
+            QT_TR_NOOP("the channels are not in quadrature: their phases differ by {value}°, not about "
+                       "90°"),
+            value=f"{90 + math.degrees(ellipse.quadrature_rad):.1f}"))
     radius = ellipse.radius(u_sin, u_cos)
     scatter = float(np.std(radius) / np.mean(radius))
     if scatter > 0.25:
-        raise ValueError(f"not a fringe signal: the Lissajous figure is not a ring (its radius "
-                         f"scatters by {100 * scatter:.0f} %); noise, or two unrelated channels")
+        raise ValueError(message(
+            QT_TR_NOOP("not a fringe signal: the Lissajous figure is not a ring (its radius scatters by "
+                       "{value} %); noise, or two unrelated channels"),
+            value=f"{100 * scatter:.0f}"))
     return ellipse
 
 
@@ -147,11 +159,14 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
     if has_theta:
         blank = np.nonzero(~np.isfinite(theta_col))[0]
         if blank.size:
-            raise ValueError(f"row {_row(parsed, int(blank[0]))}, column 'theta_deg': blank while "
-                             "other rows have a phase; fill it, or clear the column to estimate "
-                             "the phase from the signals")
+            raise ValueError(message(
+                QT_TR_NOOP("row {row}, column 'theta_deg': blank while other rows have a phase; fill it, "
+                           "or clear the column to estimate the phase from the signals"),
+                row=_row(parsed, int(blank[0]))))
         if np.ptp(theta_col) == 0:
-            raise ValueError(f"every θ is {theta_col[0]:g}°: the phase did not change")
+            raise ValueError(message(
+                QT_TR_NOOP("every θ is {theta_col}°: the phase did not change"),
+                theta_col=f"{theta_col[0]:g}"))
         return "theta_column", np.radians(theta_col)
     return "estimated", None
 
@@ -192,7 +207,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     orders = harmonic_orders(int(s["max_order"]), str(s["harmonics"]))
     u_sin, u_cos = parsed["u_sin"], parsed["u_cos"]
     if u_sin.size < 4 * (1 + 2 * len(orders)):
-        raise ValueError(f"{u_sin.size} samples; at least {4 * (1 + 2 * len(orders))} are needed")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} samples; at least {value} are needed"),
+            size=u_sin.size, value=4 * (1 + 2 * len(orders))))
     warnings: list[str] = []
     _check_signals(parsed, u_sin, u_cos)
     checkpoint()
@@ -204,14 +221,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         bins = np.count_nonzero(np.bincount(np.floor((phase + math.pi) / TWO_PI * 36)
                                             .astype(np.intp)))
         if bins < 27:
-            raise ValueError(f"the signals cover {100 * bins / 36:.0f} % of a period: the "
-                             "phase cannot be estimated from less than three quarters of one")
+            raise ValueError(message(
+                QT_TR_NOOP("the signals cover {value} % of a period: the phase cannot be estimated from "
+                           "less than three quarters of one"),
+                value=f"{100 * bins / 36:.0f}"))
         theta = np.unwrap(phase)
         warnings.append(OBSERVABILITY)
     pso_seconds, design = None, None
     if s["method"] == "pso":
         if orders != (1, 3, 5):
-            raise SettingsError("the particle swarm (the seed's method) fits orders 1, 3, 5 only")
+            raise SettingsError(message(
+                QT_TR_NOOP("the particle swarm (the seed's method) fits orders 1, 3, 5 only")))
         span = slice(0, min(u_sin.size, per_period or 64))
         ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
         sin_fit, cos_fit = ps.fit, pc.fit
@@ -231,17 +251,21 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     if source != "estimated" and s["method"] == "lsq":
         worst = min(sin_fit.r_squared, cos_fit.r_squared)
         if not worst >= MIN_R_SQUARED:
-            given = (f"N = {per_period} samples per period" if source == "samples_per_period"
-                     else "the θ column")
-            raise ValueError(f"the signals do not follow {given} (R² {sin_fit.r_squared:.4f} sin, "
-                             f"{cos_fit.r_squared:.4f} cos): leave the samples per period and the "
-                             "θ column out to estimate the phase from the signals")
+            given = (message(QT_TR_NOOP("N = {n} samples per period"), n=per_period)
+                     if source == "samples_per_period" else message(QT_TR_NOOP("the θ column")))
+            raise ValueError(message(
+                QT_TR_NOOP("the signals do not follow {given} (R² {r_squared} sin, {r_squared2} cos): "
+                           "leave the samples per period and the θ column out to estimate the phase from "
+                           "the signals"),
+                given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
     if source != "estimated":
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
         if abs(lead - 90.0) > 30.0:
-            raise ValueError(f"against this phase the cos channel leads the sin channel by "
-                             f"{lead:.0f}°, not about 90°: the channels are in the wrong order or "
-                             "one is inverted (check the columns, or the sense of θ)")
+            raise ValueError(message(
+                QT_TR_NOOP("against this phase the cos channel leads the sin channel by {lead}°, not "
+                           "about 90°: the channels are in the wrong order or one is inverted (check the "
+                           "columns, or the sense of θ)"),
+                lead=f"{lead:.0f}"))
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])
@@ -272,7 +296,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
 
 def harmonic_orders(max_order: int, harmonics: str) -> tuple[int, ...]:
     if max_order < 1:
-        raise SettingsError("max_order must be at least 1")
+        raise SettingsError(message(
+            QT_TR_NOOP("max_order must be at least 1")))
     step = 2 if harmonics == "odd" else 1
     return tuple(range(1, max_order + 1, step))
 

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from models.cancellation import checkpoint
+from models.messages import QT_TR_NOOP, message
 
 __all__ = [
     "ChannelFit",
@@ -187,8 +188,9 @@ def fit_channels(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)) -> li
     theta = np.asarray(theta_rad, dtype=float)
     n_par = 1 + 2 * len(orders)
     if theta.size < n_par + 1:
-        raise ValueError(f"{theta.size} samples; at least {n_par + 1} are needed for orders "
-                         f"{', '.join(map(str, orders))}")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} samples; at least {value} are needed for orders {join}"),
+            size=theta.size, value=n_par + 1, join=', '.join(map(str, orders))))
     if theta.size <= _CACHED_DESIGN_MAX:  # a period's phases recur: reuse its factorisation
         x, inv = _small_solver(theta.tobytes(), orders)
     else:
@@ -269,8 +271,9 @@ def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
     ys = np.column_stack([np.asarray(u_sin, dtype=float), np.asarray(u_cos, dtype=float)])
     n_par = 1 + 2 * len(orders)
     if theta.size < n_par + 1:
-        raise ValueError(f"{theta.size} samples; at least {n_par + 1} are needed for orders "
-                         f"{', '.join(map(str, orders))}")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} samples; at least {value} are needed for orders {join}"),
+            size=theta.size, value=n_par + 1, join=', '.join(map(str, orders))))
     derivative = np.zeros((n_par, n_par))
     for i, k in enumerate(orders):  # d/dθ (s sin kθ + c cos kθ) = −k c sin kθ + k s cos kθ
         derivative[1 + 2 * i, 2 + 2 * i] = -k
@@ -321,8 +324,9 @@ def fit_channels_by_phase(phase_index, samples_per_period: int, channels,
     n = int(samples_per_period)
     n_par = 1 + 2 * len(orders)
     if index.size < n_par + 1:
-        raise ValueError(f"{index.size} samples; at least {n_par + 1} are needed for orders "
-                         f"{', '.join(map(str, orders))}")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} samples; at least {value} are needed for orders {join}"),
+            size=index.size, value=n_par + 1, join=', '.join(map(str, orders))))
     counts = np.bincount(index, minlength=n).astype(float)
     x = _design(np.arange(n) * (TWO_PI / n), orders)
     gram = x.T @ (x * counts[:, None])
@@ -539,7 +543,8 @@ def build_correction_table(sin_fit: ChannelFit, cos_fit: ChannelFit,
     (measured phase 0) zero.
     """
     if size < 8:
-        raise ValueError("the correction table needs at least 8 entries")
+        raise ValueError(message(
+            QT_TR_NOOP("the correction table needs at least 8 entries")))
     dense = np.linspace(0.0, TWO_PI, 16 * size, endpoint=False)
     measured = np.arctan2(model_signal(dense, sin_fit), model_signal(dense, cos_fit))
     error = _wrap(measured - dense)

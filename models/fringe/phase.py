@@ -26,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, message
+
 __all__ = ["EllipseFit", "fit_ellipse"]
 
 _BLOCK = 1 << 16  # samples a block when the scatter matrix is summed
@@ -72,7 +74,8 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     cx, cy = float(np.mean(x)), float(np.mean(y))
     scale = float(max(np.std(x), np.std(y)))
     if not scale > 0:
-        raise ValueError("the signals do not move")
+        raise ValueError(message(
+            QT_TR_NOOP("the signals do not move")))
     # the scatter matrix of the monomials (x², xy, y², x, y, 1), a block of samples at a
     # time in one small buffer, cut into Halír & Flusser's blocks S1, S2, S3
     block = min(x.size, _BLOCK)
@@ -94,7 +97,8 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     try:
         t = -np.linalg.solve(s3, s2.T)
     except np.linalg.LinAlgError:
-        raise ValueError("the samples do not make an ellipse (degenerate)") from None
+        raise ValueError(message(
+            QT_TR_NOOP("the samples do not make an ellipse (degenerate)"))) from None
     m = s1 + s2 @ t
     m = np.array([m[2] / 2.0, -m[1], m[0] / 2.0])  # C1⁻¹·M with C1 the ellipse constraint
     values, vectors = np.linalg.eig(m)
@@ -102,7 +106,8 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     condition = 4.0 * vectors[0] * vectors[2] - vectors[1] ** 2
     candidates = np.nonzero(condition > 0)[0]
     if candidates.size == 0:
-        raise ValueError("the samples do not make an ellipse")
+        raise ValueError(message(
+            QT_TR_NOOP("the samples do not make an ellipse")))
     a1 = vectors[:, candidates[0]]
     a2 = t @ a1
     big_a, big_b, big_c = a1
@@ -113,14 +118,17 @@ def fit_ellipse(u_sin, u_cos) -> EllipseFit:
     qy = (big_b * big_d - 2.0 * big_a * big_e) / det
     f0 = big_a * px**2 + big_b * px * qy + big_c * qy**2 + big_d * px + big_e * qy + big_f
     if not f0 < 0 and not f0 > 0:
-        raise ValueError("the samples do not make an ellipse")
+        raise ValueError(message(
+            QT_TR_NOOP("the samples do not make an ellipse")))
     # A X² + B XY + C Y² = 1 after moving to the centre
     aa, bb, cc = -big_a / f0, -big_b / f0, -big_c / f0
     if not (aa > 0 and cc > 0):
-        raise ValueError("the samples do not make an ellipse")
+        raise ValueError(message(
+            QT_TR_NOOP("the samples do not make an ellipse")))
     sin_q = bb / (2.0 * math.sqrt(aa * cc))
     if not abs(sin_q) < 1.0:
-        raise ValueError("the samples do not make an ellipse")
+        raise ValueError(message(
+            QT_TR_NOOP("the samples do not make an ellipse")))
     cos_q = math.sqrt(1.0 - sin_q * sin_q)
     a = 1.0 / (math.sqrt(aa) * cos_q)
     b = 1.0 / (math.sqrt(cc) * cos_q)

@@ -100,20 +100,27 @@ def closure_limit_arcsec(grade: int, table: str = "") -> float:
     entry falls back to half the grade's accuracy (our default, see README). Every entry
     is checked, not only the grade's."""
     if not isinstance(table, str):
-        raise SettingsError(f"closure limit table must be text like '0.125, 0.25, …', not "
-                            f"{type(table).__name__}")
+        raise SettingsError(message(
+            QT_TR_NOOP("closure limit table must be text like '0.125, 0.25, …', not {name__}"),
+            name__=type(table).__name__))
     parts = [p.strip() for p in table.replace(";", ",").split(",") if p.strip()]
     if len(parts) > 7:
-        raise SettingsError(f"closure limit table: {len(parts)} entries for 7 grades")
+        raise SettingsError(message(
+            QT_TR_NOOP("closure limit table: {len} entries for 7 grades"),
+            len=len(parts)))
     values = []
     for g, part in enumerate(parts, 1):
         try:
             value = float(part)
         except ValueError:
-            raise SettingsError(f"closure limit table: '{part}' (grade {g}) is not a number") \
+            raise SettingsError(message(
+                QT_TR_NOOP("closure limit table: '{part}' (grade {g}) is not a number"),
+                part=part, g=g)) \
                 from None
         if not value > 0 or not math.isfinite(value):
-            raise SettingsError(f"closure limit for grade {g} must be a positive number")
+            raise SettingsError(message(
+                QT_TR_NOOP("closure limit for grade {g} must be a positive number"),
+                g=g))
         values.append(value)
     if grade - 1 < len(values):
         return values[grade - 1]
@@ -149,8 +156,11 @@ def _check_values(parsed: ParsedReadings) -> None:
         bad = np.nonzero(np.isfinite(values) & (np.abs(values) > READING_LIMIT_ARCSEC))[0]
         if bad.size:
             i = int(bad[0])
-            raise ValueError(f"row {_row(parsed, i)}, column '{key}': {values[i]:g}\" is beyond "
-                             f"±{READING_LIMIT_ARCSEC:g}\" and cannot be a reading of a polygon test")
+            raise ValueError(message(
+                QT_TR_NOOP("row {row}, column '{key}': {values}\" is beyond ±{reading_limit_arcsec}\" and "
+                           "cannot be a reading of a polygon test"),
+                row=_row(parsed, i), key=key, values=f"{values[i]:g}",
+                reading_limit_arcsec=f"{READING_LIMIT_ARCSEC:g}"))
 
 
 def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, tolerance: float,
@@ -160,8 +170,9 @@ def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, toler
     a = parsed["encoder_deg"][rows]
     nominal = (parsed["position"][rows] - 1) * step
     if np.ptp(a) == 0:
-        raise ValueError(f"rows {_row(parsed, int(rows[0]))}–{_row(parsed, int(rows[-1]))}: all "
-                         f"encoder readings are {a[0]:g}°: the encoder did not turn")
+        raise ValueError(message(
+            QT_TR_NOOP("rows {row}–{row2}: all encoder readings are {a}°: the encoder did not turn"),
+            row=_row(parsed, int(rows[0])), row2=_row(parsed, int(rows[-1])), a=f"{a[0]:g}"))
     senses = [setting] if setting else [1, -1]
     misfits = {c: np.nonzero(np.abs(counting_residuals_deg(a, nominal, c)) > tolerance)[0]
                for c in senses}
@@ -171,12 +182,14 @@ def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, toler
     c = min(senses, key=lambda sense: misfits[sense].size)
     i = int(rows[misfits[c][0]])
     off = float(counting_residuals_deg(a, nominal, c)[misfits[c][0]])
-    sense = "with" if c > 0 else "against"
-    raise ValueError(
-        f"row {_row(parsed, i)}: encoder reading {parsed['encoder_deg'][i]:.4f}° is {off:+.3f}° "
-        f"from face {int(parsed['position'][i])} (counting {sense} the face numbering, relative to "
-        f"the set's first reading); a polygon test needs every reading within {tolerance:g}° of "
-        "its face")
+    sense = message(QT_TR_NOOP("counting with the face numbering") if c > 0 else
+                    QT_TR_NOOP("counting against the face numbering"))
+    raise ValueError(message(
+        QT_TR_NOOP("row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, "
+                   "relative to the set's first reading); a polygon test needs every reading "
+                   "within {tolerance}° of its face"),
+        row=_row(parsed, i), reading=f"{parsed['encoder_deg'][i]:.4f}", off=f"{off:+.3f}",
+        face=int(parsed['position'][i]), sense=sense, tolerance=f"{tolerance:g}"))
 
 
 def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
@@ -202,7 +215,9 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
     split = split_sets(parsed)
     faces = faces_setting or int(split[0][1].size)
     if faces < 3:
-        raise ValueError(f"{faces} positions; a polygon test needs at least 3 faces")
+        raise ValueError(message(
+            QT_TR_NOOP("{faces} positions; a polygon test needs at least 3 faces"),
+            faces=faces))
     step = 360.0 / faces
     tolerance = min(3.0, step / 4.0)
     expected = np.arange(1, faces + 1)
@@ -210,9 +225,10 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
         positions = parsed["position"][rows].astype(int)
         if positions.size != faces or not np.array_equal(np.sort(positions), expected):
             raise ValueError(
-                f"set {set_id} (from row {_row(parsed, int(rows[0]))}) has positions "
-                f"{positions.tolist()}; expected 1…{faces} once each, in any order, then the "
-                "first position again for the closure")
+                message(
+                QT_TR_NOOP("set {set_id} (from row {row}) has positions {tolist}; expected 1…{faces} "
+                           "once each, in any order, then the first position again for the closure"),
+                set_id=set_id, row=_row(parsed, int(rows[0])), tolist=positions.tolist(), faces=faces))
     first_rows = split[0][1]
     counting, detected = _counting_sense(parsed, first_rows, step, tolerance, counting_setting)
     if counting < 0:
@@ -226,22 +242,25 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
     p_first = parsed["position"][first_rows[0]]
     sets = []
     for k, (_, rows, closure) in enumerate(split):
-        label = f"set {k + 1}"
+        label = message(QT_TR_NOOP("set {set}"), set=k + 1)
         _counting_sense(parsed, rows, step, tolerance, counting)
         off = float(wrap_deg(parsed["encoder_deg"][rows[0]] - a_first
                              - counting * (parsed["position"][rows[0]] - p_first) * step))
         if abs(off) > tolerance:
-            raise ValueError(f"row {_row(parsed, int(rows[0]))}: {label} starts {off:+.3f}° away from "
-                             "the first set's encoder zero; all sets must share one zero")
+            raise ValueError(message(
+                QT_TR_NOOP("row {row}: {label} starts {off}° away from the first set's encoder zero; all "
+                           "sets must share one zero"),
+                row=_row(parsed, int(rows[0])), label=label, off=f"{off:+.3f}"))
         closure_a = closure_x = None
         if closure is not None:
             closure_a = float(parsed["encoder_deg"][closure])
             closure_x = float(parsed["ac_x_arcsec"][closure])
             back = float(wrap_deg(closure_a - parsed["encoder_deg"][rows[0]]))
             if abs(back) > tolerance:
-                raise ValueError(f"row {_row(parsed, closure)}: the closure reading is {back:+.3f}° "
-                                 f"from the set's first reading on face "
-                                 f"{int(parsed['position'][rows[0]])}")
+                raise ValueError(message(
+                    QT_TR_NOOP("row {row}: the closure reading is {back}° from the set's first reading "
+                               "on face {int}"),
+                    row=_row(parsed, closure), back=f"{back:+.3f}", int=int(parsed['position'][rows[0]])))
         sets.append(PolygonSetReadings(
             parsed["position"][rows].astype(int), parsed["encoder_deg"][rows],
             parsed["polygon_dev_arcsec"][rows], parsed["ac_x_arcsec"][rows],
@@ -263,14 +282,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     s = _settings(settings)
     grade = s["grade"]
     if parsed.n < 3:
-        raise ValueError(f"{parsed.n} usable readings; a polygon test needs at least 3 positions")
+        raise ValueError(message(
+            QT_TR_NOOP("{n} usable readings; a polygon test needs at least 3 positions"),
+            n=parsed.n))
     limit = closure_limit_arcsec(grade, s["closure_limits_arcsec"])
     warnings: list[str] = []
     sets, faces, counting, closure_rows = _read_sets(
         parsed, s["faces"], COUNTING_CHOICES[str(s["counting"])], warnings)
     if s["zero_face"] > faces:
-        raise SettingsError(f"zero_face must be 0 (the first reading) or a face 1…{faces}, "
-                            f"not {s['zero_face']}")
+        raise SettingsError(message(
+            QT_TR_NOOP("zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}"),
+            faces=faces, s=s['zero_face']))
     spread = s["closure_drift"] == "spread"
     results = evaluate_sets(sets, faces, counting, s["zero_face"], limit, spread)
     zero_face = s["zero_face"] or int(sets[0].positions[0])

@@ -189,7 +189,8 @@ def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
     theta = np.asarray(theta_deg, dtype=float)
     v = np.asarray(ac_y_arcsec, dtype=float)
     if theta.size < 4:
-        raise ValueError("at least 4 vertical readings are needed to identify the tilt")
+        raise ValueError(message(
+            QT_TR_NOOP("at least 4 vertical readings are needed to identify the tilt")))
     th = np.radians(theta)
     design = np.column_stack([np.ones_like(th), np.cos(th) - 1.0, np.sin(th)])
     (k, p, q), *_ = np.linalg.lstsq(design, v, rcond=None)

@@ -94,8 +94,10 @@ def _check_units(s: dict[str, Any]) -> None:
     belongs = DEVIATION_UNITS[s["deviation_unit"]][0]
     if belongs != s["target_unit"]:
         raise SettingsError(
-            f"deviation_unit {s['deviation_unit']} is for an axis in {belongs}, but target_unit "
-            f"is {s['target_unit']}: choose arcsec or urad for deg, um or nm for mm")
+            message(
+            QT_TR_NOOP("deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose "
+                       "arcsec or urad for deg, um or nm for mm"),
+            s=s['deviation_unit'], belongs=belongs, s2=s['target_unit']))
 
 
 def _row(parsed: ParsedReadings, index: int) -> int:
@@ -111,26 +113,30 @@ def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
     from_measured = (measured - parsed["target"]) * scale
     neither = np.nonzero(~np.isfinite(deviation) & ~np.isfinite(measured))[0]
     if neither.size:
-        raise ValueError(f"row {_row(parsed, int(neither[0]))}: neither a deviation nor a "
-                         "measured position; one of the two is needed")
+        raise ValueError(message(
+            QT_TR_NOOP("row {row}: neither a deviation nor a measured position; one of the two is needed"),
+            row=_row(parsed, int(neither[0]))))
     both = np.isfinite(deviation) & np.isfinite(measured)
     disagree = np.nonzero(both & (np.abs(deviation - from_measured) > 1e-3))[0]
     if disagree.size:
         i = int(disagree[0])
         raise ValueError(
-            f"row {_row(parsed, i)}: deviation {deviation[i]:g} but measured − target = "
-            f"{from_measured[i]:.4f} ({s['deviation_unit']}): give one of the two, or make "
-            "them agree")
+            message(
+            QT_TR_NOOP("row {row}: deviation {deviation} but measured − target = {from_measured} ({s}): "
+                       "give one of the two, or make them agree"),
+            row=_row(parsed, i), deviation=f"{deviation[i]:g}", from_measured=f"{from_measured[i]:.4f}",
+            s=s['deviation_unit']))
     out = np.where(np.isfinite(deviation), deviation, from_measured)
     limit = DEVIATION_LIMIT[s["target_unit"]] * scale
     beyond = np.nonzero(np.abs(out) > limit)[0]
     if beyond.size:
         i = int(beyond[0])
         raise ValueError(
-            f"row {_row(parsed, i)}: a deviation of {out[i]:g} {s['deviation_unit']} is beyond "
-            f"{limit:g} {s['deviation_unit']} ({DEVIATION_LIMIT[s['target_unit']]:g} "
-            f"{s['target_unit']}): check the deviation unit, or whether a position was typed "
-            "as a deviation")
+            message(
+            QT_TR_NOOP("row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} "
+                       "{s2}): check the deviation unit, or whether a position was typed as a deviation"),
+            row=_row(parsed, i), out=f"{out[i]:g}", s=s['deviation_unit'], limit=f"{limit:g}",
+            deviation_limit=f"{DEVIATION_LIMIT[s['target_unit']]:g}", s2=s['target_unit']))
     return out
 
 
@@ -160,14 +166,18 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
                                     directions.tolist(), strict=True)):
             if key in seen:
                 raise ValueError(
-                    f"rows {_row(parsed, seen[key])} and {_row(parsed, i)}: target {key[0]:g}, "
-                    f"run {key[1]}, direction {'+' if key[2] > 0 else '−'} twice")
+                    message(
+                    QT_TR_NOOP("rows {row} and {row2}: target {key}, run {key2}, direction {value} twice"),
+                    row=_row(parsed, seen[key]), row2=_row(parsed, i), key=f"{key[0]:g}", key2=key[1],
+                    value='+' if key[2] > 0 else '−'))
             seen[key] = i
         return runs.astype(int)
     if np.any(np.isfinite(runs)):
         i = int(np.nonzero(~np.isfinite(runs))[0][0])
-        raise ValueError(f"row {_row(parsed, i)}: no run number, though other rows have one; "
-                         "give every row its run, or none")
+        raise ValueError(message(
+            QT_TR_NOOP("row {row}: no run number, though other rows have one; give every row its run, or "
+                       "none"),
+            row=_row(parsed, i)))
     counts: dict[tuple[float, float], int] = {}
     out = np.empty(targets.size, dtype=int)
     for i, key in enumerate(zip(key_target.tolist(), directions.tolist(), strict=True)):
@@ -179,18 +189,22 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
     s = POSITIONING.checked_settings(settings)
     if parsed.n < 2:
-        raise ValueError(f"{parsed.n} usable readings; a positioning test needs at least two "
-                         "targets")
+        raise ValueError(message(
+            QT_TR_NOOP("{n} usable readings; a positioning test needs at least two targets"),
+            n=parsed.n))
     targets = parsed["target"].astype(float)
     limit = TARGET_LIMIT[s["target_unit"]]
     beyond = np.nonzero(np.abs(targets) > limit)[0]
     if beyond.size:
         i = int(beyond[0])
-        raise ValueError(f"row {_row(parsed, i)}: target {targets[i]:g} {s['target_unit']} is "
-                         f"beyond ±{limit:g} {s['target_unit']}: not a position of an axis")
+        raise ValueError(message(
+            QT_TR_NOOP("row {row}: target {targets} {s} is beyond ±{limit} {s}: not a position of an axis"),
+            row=_row(parsed, i), targets=f"{targets[i]:g}", s=s['target_unit'], limit=f"{limit:g}"))
     if np.unique(np.round(targets, 9)).size < 2:
-        raise ValueError(f"every reading is at target {targets[0]:g}: a positioning test needs "
-                         "at least two targets")
+        raise ValueError(message(
+            QT_TR_NOOP("every reading is at target {targets}: a positioning test needs at least two "
+                       "targets"),
+            targets=f"{targets[0]:g}"))
     warnings: list[str] = []
     deviations = _deviations(parsed, s)
     directions = _directions(parsed, warnings)

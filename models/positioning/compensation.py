@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, message
 from models.positioning.model import DEVIATION_UNITS, PositioningResult
 from models.project.atomic_write import write_text_atomic
 
@@ -54,12 +55,13 @@ class CompensationTable:
     form: str  # "separate", "bidirectional", "forward only" or "backward only"
 
 
-def _resample(positions: np.ndarray, values: np.ndarray, grid: np.ndarray, name: str) -> np.ndarray:
+def _resample(positions: np.ndarray, values: np.ndarray, grid: np.ndarray,
+              refusal: str) -> np.ndarray:
+    """``values`` on ``grid``; ``refusal`` (a template naming the missing targets) when a
+    target has none."""
     ok = np.isfinite(values)
     if not ok.all():
-        missing = ", ".join(f"{p:g}" for p in positions[~ok])
-        raise ValueError(f"no {name} mean deviation at target(s) {missing}: a compensation table "
-                         "needs every target")
+        raise ValueError(message(refusal, missing=", ".join(f"{p:g}" for p in positions[~ok])))
     return np.interp(grid, positions, values)
 
 
@@ -71,10 +73,14 @@ def compensation_table(result: PositioningResult, step: float = 0.0,
         span = float(positions[-1] - positions[0])
         count = int(np.floor(span / step + 1e-9)) + 1
         if count < 2:
-            raise ValueError(f"a step of {step:g} leaves fewer than two points over the targets "
-                             f"{positions[0]:g}…{positions[-1]:g}")
+            raise ValueError(message(
+                QT_TR_NOOP("a step of {step} leaves fewer than two points over the targets "
+                           "{positions}…{positions2}"),
+                step=f"{step:g}", positions=f"{positions[0]:g}", positions2=f"{positions[-1]:g}"))
         if count > MAX_POINTS:
-            raise ValueError(f"a step of {step:g} gives {count} points; at most {MAX_POINTS}")
+            raise ValueError(message(
+                QT_TR_NOOP("a step of {step} gives {count} points; at most {max_points}"),
+                step=f"{step:g}", count=count, max_points=MAX_POINTS))
         grid = positions[0] + step * np.arange(count)
         spacing = f"uniform step {step:g}"
     else:
@@ -82,17 +88,24 @@ def compensation_table(result: PositioningResult, step: float = 0.0,
     iso = result.iso
     if tables == "bidirectional":
         if not result.bidirectional:
-            raise ValueError("a bidirectional table needs both approach directions; this run "
-                             "has one: export separate tables")
-        forward = -_resample(positions, iso.bidirectional_mean, grid, "bidirectional")
+            raise ValueError(message(
+                QT_TR_NOOP("a bidirectional table needs both approach directions; this run has one: "
+                           "export separate tables")))
+        forward = -_resample(positions, iso.bidirectional_mean, grid,
+                              QT_TR_NOOP("no bidirectional mean deviation at target(s) {missing}: a "
+                                         "compensation table needs every target"))
         backward, form = None, "bidirectional"
     else:
         form = "separate"
         forward = backward = None
         if iso.forward is not None:
-            forward = -_resample(positions, iso.forward.mean, grid, "forward")
+            forward = -_resample(positions, iso.forward.mean, grid,
+                                  QT_TR_NOOP("no forward mean deviation at target(s) {missing}: a "
+                                             "compensation table needs every target"))
         if iso.backward is not None:
-            backward = -_resample(positions, iso.backward.mean, grid, "backward")
+            backward = -_resample(positions, iso.backward.mean, grid,
+                                   QT_TR_NOOP("no backward mean deviation at target(s) {missing}: a "
+                                              "compensation table needs every target"))
         if forward is None:  # backward only: it is the table
             forward, backward, form = backward, None, "backward only"
         elif backward is None:
@@ -122,11 +135,14 @@ def compensation_csv(table: CompensationTable) -> str:
 def linuxcnc_comp_file(table: CompensationTable) -> str:
     """LinuxCNC COMP_FILE_TYPE 0: "nominal actual_forward actual_reverse" in machine units."""
     if table.backward is None:
-        raise ValueError("LinuxCNC's compensation file lists the forward and the reverse "
-                         "positions: export separate tables (both directions measured)")
+        raise ValueError(message(
+            QT_TR_NOOP("LinuxCNC's compensation file lists the forward and the reverse positions: export "
+                       "separate tables (both directions measured)")))
     if table.positions.size > LINUXCNC_MAX_POINTS:
-        raise ValueError(f"{table.positions.size} points; LinuxCNC takes at most "
-                         f"{LINUXCNC_MAX_POINTS} per joint: choose a larger step")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a "
+                       "larger step"),
+            size=table.positions.size, linuxcnc_max_points=LINUXCNC_MAX_POINTS))
     scale = DEVIATION_UNITS[table.deviation_unit][1]
     lines = []
     for p, f, b in zip(table.positions, table.forward, table.backward, strict=True):

@@ -16,6 +16,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.readings.angles import AngleParseError, parse_angle_deg
 from models.readings.headers import match_header
 from models.readings.sheet import Column
@@ -74,7 +75,9 @@ def _decode(data: bytes, source: str) -> str:
             return data.decode(encoding)
         except UnicodeDecodeError:
             continue
-    raise TableImportError(f"{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again")
+    raise TableImportError(message(
+        QT_TR_NOOP("{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again"),
+        source=source))
 
 
 def _sniff_delimiter(text: str) -> str:
@@ -130,7 +133,9 @@ def read_table(path: str | Path) -> RawTable:
     try:
         data = path.read_bytes()
     except OSError as exc:
-        raise TableImportError(f"{source}: cannot read ({exc.strerror or exc})") from None
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: cannot read ({value})"),
+            source=source, value=exc.strerror or exc)) from None
     if path.suffix.lower() in (".xlsx", ".xlsm"):
         grid = _read_xlsx(data, source)
     else:
@@ -148,7 +153,9 @@ def table_from_grid(grid: list[list[str]], source: str) -> RawTable:
     """The cells of a file with its header row found (if it has one) and each row's line."""
     filled = [i for i, row in enumerate(grid) if any(c.strip() for c in row)]
     if not filled:
-        raise TableImportError(f"{source}: the file holds no rows")
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: the file holds no rows"),
+            source=source))
     # blank rows inside the data stay (a gap keeps its place: a sample's phase can depend
     # on its row); the sheet leaves them out of every analysis that does not need them
     numbered = [(i + 1, grid[i]) for i in range(filled[0], filled[-1] + 1)]
@@ -163,12 +170,15 @@ def table_from_grid(grid: list[list[str]], source: str) -> RawTable:
 
 def _check_row(row: list[str], line: int, source: str) -> None:
     if len(row) > MAX_COLUMNS and any(c.strip() for c in row[MAX_COLUMNS:]):
-        raise TableImportError(f"{source}: row {line}: {len(row)} columns; a readings file has "
-                               f"at most {MAX_COLUMNS}")
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: row {line}: {len} columns; a readings file has at most {max_columns}"),
+            source=source, line=line, len=len(row), max_columns=MAX_COLUMNS))
     for col, cell in enumerate(row, 1):
         if len(cell) > MAX_CELL_CHARS:
-            raise TableImportError(f"{source}: row {line}, column {col}: a cell of {len(cell)} "
-                                   f"characters is not a reading (at most {MAX_CELL_CHARS})")
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: row {line}, column {col}: a cell of {len} characters is not a "
+                           "reading (at most {max_cell_chars})"),
+                source=source, line=line, col=col, len=len(cell), max_cell_chars=MAX_CELL_CHARS))
 
 
 def _read_csv(text: str, delim: str, source: str) -> list[list[str]]:
@@ -179,12 +189,16 @@ def _read_csv(text: str, delim: str, source: str) -> list[list[str]]:
             _check_row(row, reader.line_num, source)
             grid.append(row[:MAX_COLUMNS])
             if len(grid) > MAX_ROWS:
-                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
+                raise TableImportError(message(
+                    QT_TR_NOOP("{source}: more than {max_rows} rows"),
+                    source=source, max_rows=MAX_ROWS))
     except csv.Error as exc:
         what = ("a quote is not closed" if any(w in str(exc) for w in ("field larger", "EOF",
                                                                         "end of data"))
                 else str(exc))
-        raise TableImportError(f"{source}: row {reader.line_num}: cannot read the CSV ({what})") \
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: row {line_num}: cannot read the CSV ({what})"),
+            source=source, line_num=reader.line_num, what=what)) \
             from None
     return grid
 
@@ -196,23 +210,31 @@ def _xlsx_expanded_size(data: bytes, source: str) -> int:
         with zipfile.ZipFile(io.BytesIO(data)) as archive:
             return sum(info.file_size for info in archive.infolist())
     except (zipfile.BadZipFile, OSError, ValueError) as exc:
-        raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: not a readable XLSX workbook ({exc})"),
+            source=source, exc=reason_of(exc))) from None
 
 
 def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
     try:
         import openpyxl
     except ImportError:  # pragma: no cover - openpyxl is a dependency
-        raise TableImportError(f"{source}: reading XLSX needs openpyxl") from None
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: reading XLSX needs openpyxl"),
+            source=source)) from None
     expanded = _xlsx_expanded_size(data, source)
     if expanded > MAX_XLSX_EXPANDED_BYTES:
-        raise TableImportError(f"{source}: the workbook expands to {expanded / 2**20:.0f} MB, more "
-                               f"than the {MAX_XLSX_EXPANDED_BYTES / 2**20:.0f} MB a readings "
-                               "file needs: save the sheet as CSV")
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: the workbook expands to {value} MB, more than the {value2} MB a "
+                       "readings file needs: save the sheet as CSV"),
+            source=source, value=f"{expanded / 2**20:.0f}",
+            value2=f"{MAX_XLSX_EXPANDED_BYTES / 2**20:.0f}"))
     try:
         book = openpyxl.load_workbook(io.BytesIO(data), read_only=True, data_only=True)
     except Exception as exc:  # noqa: BLE001 - openpyxl raises many types for damaged files
-        raise TableImportError(f"{source}: not a readable XLSX workbook ({exc})") from None
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: not a readable XLSX workbook ({exc})"),
+            source=source, exc=reason_of(exc))) from None
     try:
         sheet = book.worksheets[0]
         # the stored dimension can claim a million rows by 16384 columns: read what is there
@@ -224,8 +246,10 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
                 empty_run += 1
                 if empty_run > MAX_EMPTY_XLSX_ROWS:
                     raise TableImportError(
-                        f"{source}: more than {MAX_EMPTY_XLSX_ROWS} empty rows after row "
-                        f"{line - empty_run}: keep the readings in one block (a stray far cell?)")
+                        message(
+                        QT_TR_NOOP("{source}: more than {max_empty_xlsx_rows} empty rows after row "
+                                   "{value}: keep the readings in one block (a stray far cell?)"),
+                        source=source, max_empty_xlsx_rows=MAX_EMPTY_XLSX_ROWS, value=line - empty_run))
                 grid.append([])
                 continue
             empty_run = 0
@@ -234,12 +258,16 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
             _check_row(cells, line, source)
             grid.append(cells[:MAX_COLUMNS])
             if line > MAX_ROWS:
-                raise TableImportError(f"{source}: more than {MAX_ROWS} rows")
+                raise TableImportError(message(
+                    QT_TR_NOOP("{source}: more than {max_rows} rows"),
+                    source=source, max_rows=MAX_ROWS))
         return grid
     except TableImportError:
         raise
     except Exception as exc:  # noqa: BLE001 - a damaged sheet fails in many ways while read
-        raise TableImportError(f"{source}: the workbook's sheet cannot be read ({exc})") from None
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: the workbook's sheet cannot be read ({exc})"),
+            source=source, exc=reason_of(exc))) from None
     finally:
         book.close()
 
@@ -252,16 +280,20 @@ def _apply_mapping(table: RawTable, columns: Sequence[Column], positions: list[i
         index = next((k for k, c in enumerate(columns)
                       if wanted.strip().lower() in (c.key.lower(), c.title.lower())), None)
         if index is None:
-            raise TableImportError(f"{table.source}: column mapping names '{wanted}', which is not "
-                                   f"a column here ({', '.join(c.key for c in columns)})")
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: column mapping names '{wanted}', which is not a column here "
+                           "({join})"),
+                source=table.source, wanted=wanted, join=', '.join(c.key for c in columns)))
         if not header.strip():
             out[index] = None
             continue
         found = next((i for i, n in enumerate(names) if n == header.strip().lower()), None)
         if found is None:
-            raise TableImportError(f"{table.source}: column mapping {wanted}={header}: the file has "
-                                   f"no header '{header}' (its headers: "
-                                   f"{', '.join(table.header or [])[:200]})")
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: column mapping {wanted}={header}: the file has no header "
+                           "'{header}' (its headers: {join})"),
+                source=table.source, wanted=wanted, header=header,
+                join=', '.join(table.header or [])[:200]))
         out[index] = found
     return out
 
@@ -312,8 +344,10 @@ def column_positions(table: RawTable, columns: Sequence[Column],
     for column, found in zip(columns, positions, strict=True):
         if found is None and column.required:
             raise MissingColumnError(
-                f"{table.source}: row 1 (header): no column '{column.key}'; expected headers "
-                f"{','.join(c.key for c in columns)} (or their names, e.g. "
-                f"{column.title!r}{', ' + repr(column.aliases[0]) if column.aliases else ''}); "
-                f"the file's header is {','.join(table.header)[:200]}", table)
+                message(
+                QT_TR_NOOP("{source}: row 1 (header): no column '{key}'; expected headers {join} (or "
+                           "their names, e.g. {title}{value}); the file's header is {join2}"),
+                source=table.source, key=column.key, join=','.join(c.key for c in columns),
+                title=f"{column.title!r}", value=', ' + repr(column.aliases[0]) if column.aliases else '',
+                join2=','.join(table.header)[:200]), table)
     return positions

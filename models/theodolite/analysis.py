@@ -62,7 +62,9 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
     if parsed.n < 4:
-        raise ValueError(f"{parsed.n} usable readings; at least 4 are needed")
+        raise ValueError(message(
+            QT_TR_NOOP("{n} usable readings; at least 4 are needed"),
+            n=parsed.n))
     elevation = parsed["elevation_deg"]
     if s["vertical_reading"] == "zenith":
         elevation = elevation - 90.0
@@ -71,7 +73,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     if reference > 0:
         matches = np.nonzero(parsed.row_index == reference - 1)[0]
         if matches.size == 0:
-            raise SettingsError(f"reference row {reference} is blank, unreadable or missing")
+            raise SettingsError(message(
+                QT_TR_NOOP("reference row {reference} is blank, unreadable or missing"),
+                reference=reference))
         reference_index = int(matches[0])
     directions = None
     dir_col = parsed["direction"]

@@ -262,7 +262,8 @@ def identify_from_elevations(
     theta = np.asarray(theta_deg, dtype=float)
     elev = np.asarray(elevation_deg, dtype=float)
     if theta.size < 4:
-        raise ValueError("at least 4 readings are needed to identify ψ, α, β")
+        raise ValueError(message(
+            QT_TR_NOOP("at least 4 readings are needed to identify ψ, α, β")))
     th = theta * D2R
     e_rad = elev * D2R
     design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
@@ -272,8 +273,9 @@ def identify_from_elevations(
     if not starts:
         starts = candidates[-1:] if candidates else []
     if not starts:
-        raise ValueError("the elevations fit no set-up (sin E is not of the form a + b cos θ + "
-                         "c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column")
+        raise ValueError(message(
+            QT_TR_NOOP("the elevations fit no set-up (sin E is not of the form a + b cos θ + c sin θ "
+                       "with |a|, |b|, |c| ≤ 1): check the elevation column")))
 
     best = None
     for start in starts:
@@ -297,7 +299,9 @@ def identify_from_elevations(
             best = (cost, polished, fit)
     if best is None:
         raise ValueError(
-            f"no set-up with ψ ≤ {psi_max_deg:g}° and |β| ≤ {beta_max_deg:g}° fits the elevations"
+            message(
+            QT_TR_NOOP("no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations"),
+            psi_max_deg=f"{psi_max_deg:g}", beta_max_deg=f"{beta_max_deg:g}")
         )
     _, setup, fit = best
     jac = _elevation_jacobian(np.radians(setup.as_array()), th)
@@ -337,7 +341,8 @@ def identify_from_azimuth(
     theta = np.asarray(theta_deg, dtype=float)
     zeta = np.asarray(raw_error_arcsec, dtype=float)
     if theta.size < 4:
-        raise ValueError("at least 4 readings are needed to identify ψ, α, β")
+        raise ValueError(message(
+            QT_TR_NOOP("at least 4 readings are needed to identify ψ, α, β")))
     grid_starts: list[np.ndarray] = []
     if start is not None:
         grid_starts.append(np.radians(start.as_array()))
@@ -359,7 +364,8 @@ def identify_from_azimuth(
         if best is None or cost < best[0]:
             best = (cost, polished, fit)
     if best is None:
-        raise ValueError("no admissible set-up fits the azimuth errors")
+        raise ValueError(message(
+            QT_TR_NOOP("no admissible set-up fits the azimuth errors")))
     _, setup, fit = best
     residuals = fit.fun
     cov = _covariance(fit.jac, residuals)
@@ -467,20 +473,27 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
         bad = np.nonzero(~np.isfinite(values) | (np.abs(values) > limit))[0]
         if bad.size:
             i = int(bad[0])
-            raise ValueError(f"reading {i + 1}, column '{name}': {values[i]:g}° is beyond ±{limit:g}° "
-                             "and cannot be a reading of this test")
+            raise ValueError(message(
+                QT_TR_NOOP("reading {value}, column '{name}': {values}° is beyond ±{limit}° and cannot "
+                           "be a reading of this test"),
+                value=i + 1, name=name, values=f"{values[i]:g}", limit=f"{limit:g}"))
     distinct = np.unique(np.round(theta, 6))
     if distinct.size == 1:
-        raise ValueError(f"all θ are equal ({theta[0]:g}°): the set-up cannot be identified; the "
-                         "axis must turn between readings")
+        raise ValueError(message(
+            QT_TR_NOOP("all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn "
+                       "between readings"),
+            theta=f"{theta[0]:g}"))
     if distinct.size < 4:
-        raise ValueError(f"{distinct.size} distinct θ; at least 4 are needed to identify ψ, α, β")
+        raise ValueError(message(
+            QT_TR_NOOP("{size} distinct θ; at least 4 are needed to identify ψ, α, β"),
+            size=distinct.size))
     th = np.radians(distinct)
     design = np.column_stack([np.ones_like(th), np.cos(th), np.sin(th)])
     singular = np.linalg.svd(design / np.linalg.norm(design, axis=0), compute_uv=False)
     if not singular[-1] > 1e-8:
-        raise ValueError(f"θ spans only {np.ptp(distinct):.3g}°: too little rotation to identify "
-                         "the set-up")
+        raise ValueError(message(
+            QT_TR_NOOP("θ spans only {ptp}°: too little rotation to identify the set-up"),
+            ptp=f"{np.ptp(distinct):.3g}"))
 
 
 def analyze_run(
@@ -517,7 +530,9 @@ def analyze_run(
     if reference_index is None:
         reference_index = int(np.argmin(np.abs(theta)))
     if not 0 <= reference_index < theta.size:
-        raise ValueError(f"reference row {reference_index + 1} is outside the {theta.size} readings")
+        raise ValueError(message(
+            QT_TR_NOOP("reference row {value} is outside the {size} readings"),
+            value=reference_index + 1, size=theta.size))
     theta_rel = theta - theta[reference_index]
     az_rel = az - az[reference_index]
     raw = (az_rel - theta_rel + 180.0) % 360.0 - 180.0
@@ -544,7 +559,9 @@ def analyze_run(
         _, e_model = forward_readings(rotation, *ident.setup.as_array())
         elev_res = (elev - e_model) * 3600.0
     else:
-        raise ValueError(f"unknown identification method '{method}'")
+        raise ValueError(message(
+            QT_TR_NOOP("unknown identification method '{method}'"),
+            method=method))
     zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
     # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
     # is its negative, and the set-up's share of it is −ζ.

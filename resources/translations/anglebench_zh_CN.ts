@@ -2858,12 +2858,76 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>相位由信号估计（无相位基准）：直流偏置、幅值比和正交误差由李萨如椭圆辨识（Heydemann）；谐波按估计的相位拟合，因此只能看到其畸变中使李萨如图形弯曲的部分——光栅的纯相位畸变使图形仍为圆形，没有相位基准时无法观测。</translation>
     </message>
     <message>
+        <source>row {row}, column &apos;{key}&apos;: {u} V is not a read head&apos;s signal (beyond ±{signal_limit_v} V)</source>
+        <translation>第 {row} 行，列 &apos;{key}&apos;：{u} V 不是读数头的信号（超出 ±{signal_limit_v} V）</translation>
+    </message>
+    <message>
+        <source>channel {key} is constant ({u} V): not a fringe signal</source>
+        <translation>通道 {key} 为常数（{u} V）：不是莫尔条纹信号</translation>
+    </message>
+    <message>
+        <source>the two channels are the same signal (correlation {corr}): they must be in quadrature (sine and cosine)</source>
+        <translation>两个通道是同一信号（相关系数 {corr}）：它们必须正交（正弦和余弦）</translation>
+    </message>
+    <message>
+        <source>not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)</source>
+        <translation>不是莫尔条纹信号：李萨如图（u_sin, u_cos）中{exc}</translation>
+    </message>
+    <message>
+        <source>the channels are not in quadrature: their phases differ by {value}°, not about 90°</source>
+        <translation>两通道不正交：相位差为 {value}°，而不是约 90°</translation>
+    </message>
+    <message>
+        <source>not a fringe signal: the Lissajous figure is not a ring (its radius scatters by {value} %); noise, or two unrelated channels</source>
+        <translation>不是莫尔条纹信号：李萨如图不是圆环（半径分散 {value} %）；可能是噪声，或两个不相关的通道</translation>
+    </message>
+    <message>
         <source>The θ column was not used: samples per period N was given.</source>
         <translation>未使用 θ 列：已给出每周期采样数 N。</translation>
     </message>
     <message>
+        <source>row {row}, column &apos;theta_deg&apos;: blank while other rows have a phase; fill it, or clear the column to estimate the phase from the signals</source>
+        <translation>第 {row} 行，列 &apos;theta_deg&apos;：为空，而其他行有相位；请填写，或清空该列以由信号估计相位</translation>
+    </message>
+    <message>
+        <source>every θ is {theta_col}°: the phase did not change</source>
+        <translation>所有 θ 均为 {theta_col}°：相位没有变化</translation>
+    </message>
+    <message>
+        <source>{size} samples; at least {value} are needed</source>
+        <translation>{size} 个采样点；至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>
+        <translation>信号仅覆盖一个周期的 {value} %：少于四分之三个周期无法估计相位</translation>
+    </message>
+    <message>
+        <source>the particle swarm (the seed&apos;s method) fits orders 1, 3, 5 only</source>
+        <translation>粒子群法（原文方法）只拟合 1、3、5 次</translation>
+    </message>
+    <message>
         <source>Particle swarm on the first period: cost {cost} V² against {lsq} V² for least squares, {seconds} s.</source>
         <translation>第一个周期上的粒子群算法：代价 {cost} V²，最小二乘为 {lsq} V²，耗时 {seconds} s。</translation>
+    </message>
+    <message>
+        <source>N = {n} samples per period</source>
+        <translation>每周期 N = {n} 个采样点</translation>
+    </message>
+    <message>
+        <source>the θ column</source>
+        <translation>θ 列</translation>
+    </message>
+    <message>
+        <source>the signals do not follow {given} (R² {r_squared} sin, {r_squared2} cos): leave the samples per period and the θ column out to estimate the phase from the signals</source>
+        <translation>信号与{given}不符（R²：sin {r_squared}，cos {r_squared2}）：不填每周期采样点数和 θ 列，即可由信号估计相位</translation>
+    </message>
+    <message>
+        <source>against this phase the cos channel leads the sin channel by {lead}°, not about 90°: the channels are in the wrong order or one is inverted (check the columns, or the sense of θ)</source>
+        <translation>按此相位，cos 通道超前 sin 通道 {lead}°，而不是约 90°：通道顺序错误或其中一路反相（请检查各列或 θ 的方向）</translation>
+    </message>
+    <message>
+        <source>max_order must be at least 1</source>
+        <translation>max_order 至少为 1</translation>
     </message>
     <message>
         <source>phase from equal steps, {n} samples per period</source>
@@ -2918,9 +2982,53 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
     </message>
     <message>
-        <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
+        <source>closure limit table must be text like &apos;0.125, 0.25, …&apos;, not {name__}</source>
         <extracomment>Autocollimator readings and face deviations beyond this are not readings of a polygon test.</extracomment>
+        <translation>闭合差限值表必须是形如 &apos;0.125, 0.25, …&apos; 的文本，而不是 {name__}</translation>
+    </message>
+    <message>
+        <source>closure limit table: {len} entries for 7 grades</source>
+        <translation>闭合差限值表：7 个等级却有 {len} 项</translation>
+    </message>
+    <message>
+        <source>closure limit table: &apos;{part}&apos; (grade {g}) is not a number</source>
+        <translation>闭合差限值表：&apos;{part}&apos;（{g} 级）不是数字</translation>
+    </message>
+    <message>
+        <source>closure limit for grade {g} must be a positive number</source>
+        <translation>{g} 级的闭合差限值必须为正数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{key}&apos;: {values}&quot; is beyond ±{reading_limit_arcsec}&quot; and cannot be a reading of a polygon test</source>
+        <translation>第 {row} 行，列 &apos;{key}&apos;：{values}&quot; 超出 ±{reading_limit_arcsec}&quot;，不可能是多面棱体检测的读数</translation>
+    </message>
+    <message>
+        <source>rows {row}–{row2}: all encoder readings are {a}°: the encoder did not turn</source>
+        <translation>第 {row}–{row2} 行：编码器读数均为 {a}°：编码器没有转动</translation>
+    </message>
+    <message>
+        <source>counting with the face numbering</source>
+        <translation>与面序号同向计数</translation>
+    </message>
+    <message>
+        <source>counting against the face numbering</source>
+        <translation>与面序号反向计数</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, relative to the set&apos;s first reading); a polygon test needs every reading within {tolerance}° of its face</source>
+        <translation>第 {row} 行：编码器读数 {reading}° 与第 {face} 面相差 {off}°（{sense}，相对于该测回的第一个读数）；多面棱体检测要求每个读数与其面相差不超过 {tolerance}°</translation>
+    </message>
+    <message>
+        <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
         <translation>{set}：未注明方向且编码器步进有正有反：按正向处理。</translation>
+    </message>
+    <message>
+        <source>{faces} positions; a polygon test needs at least 3 faces</source>
+        <translation>{faces} 个位置；多面棱体检测至少需要 3 个面</translation>
+    </message>
+    <message>
+        <source>set {set_id} (from row {row}) has positions {tolist}; expected 1…{faces} once each, in any order, then the first position again for the closure</source>
+        <translation>第 {set_id} 测回（自第 {row} 行起）的位置为 {tolist}；应为 1…{faces} 各一次（顺序不限），再回到第一个位置以检查闭合</translation>
     </message>
     <message>
         <source>The encoder counts against the face numbering (detected from the readings): face angles and deviations are taken in the encoder&apos;s counting sense.</source>
@@ -2929,6 +3037,26 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The encoder counts against the face numbering: face angles and deviations are taken in the encoder&apos;s counting sense.</source>
         <translation>编码器计数方向与面号相反：面角和偏差按编码器的计数方向取值。</translation>
+    </message>
+    <message>
+        <source>set {set}</source>
+        <translation>第 {set} 测回</translation>
+    </message>
+    <message>
+        <source>row {row}: {label} starts {off}° away from the first set&apos;s encoder zero; all sets must share one zero</source>
+        <translation>第 {row} 行：{label} 的起点与第一测回的编码器零位相差 {off}°；所有测回必须共用一个零位</translation>
+    </message>
+    <message>
+        <source>row {row}: the closure reading is {back}° from the set&apos;s first reading on face {int}</source>
+        <translation>第 {row} 行：闭合读数与该测回在第 {int} 面上的第一个读数相差 {back}°</translation>
+    </message>
+    <message>
+        <source>{n} usable readings; a polygon test needs at least 3 positions</source>
+        <translation>{n} 个可用读数；多面棱体检测至少需要 3 个位置</translation>
+    </message>
+    <message>
+        <source>zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}</source>
+        <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
     </message>
     <message>
         <source>Tilt not identified (no vertical readings).</source>
@@ -3040,6 +3168,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>第 {number} 组</translation>
     </message>
     <message>
+        <source>at least 4 vertical readings are needed to identify the tilt</source>
+        <translation>辨识塔差至少需要 4 个竖直读数</translation>
+    </message>
+    <message>
         <source>the vertical reading is highest at face {high} and lowest at face {low} (spread 2ψ = {spread}): tilt the polygon on its seat so that face {high} comes down and face {low} up by about {psi} each</source>
         <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
     </message>
@@ -3060,9 +3192,45 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>未评定重复性：只有一组测量且没有垂直读数。</translation>
     </message>
     <message>
-        <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
+        <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
         <extracomment>A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
+        <translation>deviation_unit {s} 适用于以 {belongs} 为单位的轴，但 target_unit 为 {s2}：deg 请选 arcsec 或 urad，mm 请选 um 或 nm</translation>
+    </message>
+    <message>
+        <source>row {row}: neither a deviation nor a measured position; one of the two is needed</source>
+        <translation>第 {row} 行：既无偏差也无实测位置；两者至少需要一个</translation>
+    </message>
+    <message>
+        <source>row {row}: deviation {deviation} but measured − target = {from_measured} ({s}): give one of the two, or make them agree</source>
+        <translation>第 {row} 行：偏差为 {deviation}，但 实测 − 目标 = {from_measured}（{s}）：请只给出其一，或使两者一致</translation>
+    </message>
+    <message>
+        <source>row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} {s2}): check the deviation unit, or whether a position was typed as a deviation</source>
+        <translation>第 {row} 行：偏差 {out} {s} 超出 {limit} {s}（{deviation_limit} {s2}）：请检查偏差单位，或是否把位置填成了偏差</translation>
+    </message>
+    <message>
+        <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
         <translation>{count} 个读数未注明趋近方向：按目标位置的顺序确定（重复的目标位置即为一次测量的折返点）。</translation>
+    </message>
+    <message>
+        <source>rows {row} and {row2}: target {key}, run {key2}, direction {value} twice</source>
+        <translation>第 {row} 行和第 {row2} 行：目标 {key}、第 {key2} 次测量、方向 {value} 重复出现</translation>
+    </message>
+    <message>
+        <source>row {row}: no run number, though other rows have one; give every row its run, or none</source>
+        <translation>第 {row} 行：没有测量序号，而其他行有；请为每一行给出序号，或全都不给</translation>
+    </message>
+    <message>
+        <source>{n} usable readings; a positioning test needs at least two targets</source>
+        <translation>{n} 个可用读数；定位检测至少需要两个目标位置</translation>
+    </message>
+    <message>
+        <source>row {row}: target {targets} {s} is beyond ±{limit} {s}: not a position of an axis</source>
+        <translation>第 {row} 行：目标 {targets} {s} 超出 ±{limit} {s}：不是轴的位置</translation>
+    </message>
+    <message>
+        <source>every reading is at target {targets}: a positioning test needs at least two targets</source>
+        <translation>所有读数都在目标 {targets}：定位检测至少需要两个目标位置</translation>
     </message>
     <message>
         <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
@@ -3125,6 +3293,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation> — 少于 5 次测量：已标注</translation>
     </message>
     <message>
+        <source>{n} usable readings; at least 4 are needed</source>
+        <translation>{n} 个可用读数；至少需要 4 个</translation>
+    </message>
+    <message>
+        <source>reference row {reference} is blank, unreadable or missing</source>
+        <translation>参考行 {reference} 为空、无法读取或不存在</translation>
+    </message>
+    <message>
         <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
         <translation>由俯仰角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
     </message>
@@ -3161,6 +3337,22 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）；安装误差对原始峰峰值的贡献为 {share}</translation>
     </message>
     <message>
+        <source>at least 4 readings are needed to identify ψ, α, β</source>
+        <translation>辨识 ψ、α、β 至少需要 4 个读数</translation>
+    </message>
+    <message>
+        <source>the elevations fit no set-up (sin E is not of the form a + b cos θ + c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column</source>
+        <translation>仰角读数与任何安装状态都不符（sin E 不具有 a + b cos θ + c sin θ 且 |a|、|b|、|c| ≤ 1 的形式）：请检查仰角列</translation>
+    </message>
+    <message>
+        <source>no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations</source>
+        <translation>没有 ψ ≤ {psi_max_deg}° 且 |β| ≤ {beta_max_deg}° 的安装状态与仰角读数相符</translation>
+    </message>
+    <message>
+        <source>no admissible set-up fits the azimuth errors</source>
+        <translation>没有可接受的安装状态与方位误差相符</translation>
+    </message>
+    <message>
         <source>Identified from the azimuth errors: any part of the axis&apos; own error that looks like the set-up model (a scale error, say) is absorbed and removed from the result.</source>
         <translation>由方位角误差辨识：轴系自身误差中与安装误差模型相似的部分（例如比例误差）会被吸收并从结果中扣除。</translation>
     </message>
@@ -3171,6 +3363,30 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Some parameters are not determined by these readings (singular fit).</source>
         <translation>这些读数无法确定部分参数（拟合奇异）。</translation>
+    </message>
+    <message>
+        <source>reading {value}, column &apos;{name}&apos;: {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
+        <translation>读数 {value}，列 &apos;{name}&apos;：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
+    </message>
+    <message>
+        <source>all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn between readings</source>
+        <translation>所有 θ 相等（{theta}°）：无法辨识安装状态；读数之间轴必须转动</translation>
+    </message>
+    <message>
+        <source>{size} distinct θ; at least 4 are needed to identify ψ, α, β</source>
+        <translation>只有 {size} 个不同的 θ；辨识 ψ、α、β 至少需要 4 个</translation>
+    </message>
+    <message>
+        <source>θ spans only {ptp}°: too little rotation to identify the set-up</source>
+        <translation>θ 仅跨 {ptp}°：转角过小，无法辨识安装状态</translation>
+    </message>
+    <message>
+        <source>reference row {value} is outside the {size} readings</source>
+        <translation>参考行 {value} 不在 {size} 个读数之内</translation>
+    </message>
+    <message>
+        <source>unknown identification method &apos;{method}&apos;</source>
+        <translation>未知的辨识方法 &apos;{method}&apos;</translation>
     </message>
     <message>
         <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
@@ -3356,6 +3572,153 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>&apos;{text}&apos; is not a finite number</source>
         <translation>&apos;{text}&apos; 不是有限的数</translation>
+    </message>
+    <message>
+        <source>{size} samples; at least {value} are needed for orders {join}</source>
+        <extracomment>each sample&apos;s residual (V) when the fit was made from samples (the plots read it)</extracomment>
+        <translation>{size} 个采样点；拟合 {join} 次谐波至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>the correction table needs at least 8 entries</source>
+        <translation>修正表至少需要 8 项</translation>
+    </message>
+    <message>
+        <source>the signals do not move</source>
+        <translation>信号没有变化</translation>
+    </message>
+    <message>
+        <source>the samples do not make an ellipse (degenerate)</source>
+        <translation>采样点不构成椭圆（退化）</translation>
+    </message>
+    <message>
+        <source>the samples do not make an ellipse</source>
+        <translation>采样点不构成椭圆</translation>
+    </message>
+    <message>
+        <source>{key} must be one of {shown}, not {text}</source>
+        <translation>{key} 必须是 {shown} 之一，而不是 {text}</translation>
+    </message>
+    <message>
+        <source>{flag}: &apos;{text}&apos; is not a whole number</source>
+        <translation>{flag}：&apos;{text}&apos; 不是整数</translation>
+    </message>
+    <message>
+        <source>{flag}: &apos;{text}&apos; is not a number</source>
+        <translation>{flag}：&apos;{text}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>{key} must be one of {shown}, not {value}</source>
+        <translation>{key} 必须是 {shown} 之一，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be text, not {name__}</source>
+        <translation>{key} 必须是文本，而不是 {name__}</translation>
+    </message>
+    <message>
+        <source>{key} must be a number, not {value}</source>
+        <translation>{key} 必须是数字，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be a whole number, not {value}</source>
+        <translation>{key} 必须是整数，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be {zero}{low} to {high}{value}, not {value2}</source>
+        <translation>{key} 必须在 {zero}{low} 至 {high}{value} 之间，而不是 {value2}</translation>
+    </message>
+    <message>
+        <source>a step of {step} leaves fewer than two points over the targets {positions}…{positions2}</source>
+        <translation>步距 {step} 在目标 {positions}…{positions2} 范围内不足两个点</translation>
+    </message>
+    <message>
+        <source>a step of {step} gives {count} points; at most {max_points}</source>
+        <translation>步距 {step} 得到 {count} 个点；最多 {max_points} 个</translation>
+    </message>
+    <message>
+        <source>a bidirectional table needs both approach directions; this run has one: export separate tables</source>
+        <translation>双向补偿表需要两个趋近方向；本次测量只有一个：请分别导出</translation>
+    </message>
+    <message>
+        <source>no bidirectional mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有双向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>no forward mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有正向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>no backward mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有反向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s compensation file lists the forward and the reverse positions: export separate tables (both directions measured)</source>
+        <translation>LinuxCNC 的补偿文件分列正向和反向位置：请分别导出补偿表（两个方向均已测量）</translation>
+    </message>
+    <message>
+        <source>{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a larger step</source>
+        <translation>{size} 个点；LinuxCNC 每个关节最多 {linuxcnc_max_points} 个：请选择更大的步距</translation>
+    </message>
+    <message>
+        <source>{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again</source>
+        <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a &quot;zip bomb&quot;) is refused unread.</extracomment>
+        <translation>{source}：不是 UTF-8 或 GBK 文本；请另存为 CSV UTF-8 后重试</translation>
+    </message>
+    <message>
+        <source>{source}: cannot read ({value})</source>
+        <translation>{source}：无法读取（{value}）</translation>
+    </message>
+    <message>
+        <source>{source}: the file holds no rows</source>
+        <translation>{source}：文件中没有数据行</translation>
+    </message>
+    <message>
+        <source>{source}: row {line}: {len} columns; a readings file has at most {max_columns}</source>
+        <translation>{source}：第 {line} 行：{len} 列；读数文件最多 {max_columns} 列</translation>
+    </message>
+    <message>
+        <source>{source}: row {line}, column {col}: a cell of {len} characters is not a reading (at most {max_cell_chars})</source>
+        <translation>{source}：第 {line} 行，第 {col} 列：长 {len} 个字符的单元格不是读数（最多 {max_cell_chars} 个）</translation>
+    </message>
+    <message>
+        <source>{source}: more than {max_rows} rows</source>
+        <translation>{source}：超过 {max_rows} 行</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_num}: cannot read the CSV ({what})</source>
+        <translation>{source}：第 {line_num} 行：无法读取 CSV（{what}）</translation>
+    </message>
+    <message>
+        <source>{source}: not a readable XLSX workbook ({exc})</source>
+        <translation>{source}：不是可读取的 XLSX 工作簿（{exc}）</translation>
+    </message>
+    <message>
+        <source>{source}: reading XLSX needs openpyxl</source>
+        <translation>{source}：读取 XLSX 需要 openpyxl</translation>
+    </message>
+    <message>
+        <source>{source}: the workbook expands to {value} MB, more than the {value2} MB a readings file needs: save the sheet as CSV</source>
+        <translation>{source}：工作簿展开后为 {value} MB，超过读数文件所需的 {value2} MB：请将工作表另存为 CSV</translation>
+    </message>
+    <message>
+        <source>{source}: more than {max_empty_xlsx_rows} empty rows after row {value}: keep the readings in one block (a stray far cell?)</source>
+        <translation>{source}：第 {value} 行之后有超过 {max_empty_xlsx_rows} 个空行：请将读数放在一个连续区域内（远处是否有零散单元格？）</translation>
+    </message>
+    <message>
+        <source>{source}: the workbook&apos;s sheet cannot be read ({exc})</source>
+        <translation>{source}：无法读取工作簿中的工作表（{exc}）</translation>
+    </message>
+    <message>
+        <source>{source}: column mapping names &apos;{wanted}&apos;, which is not a column here ({join})</source>
+        <translation>{source}：列映射中的 &apos;{wanted}&apos; 不是此处的列（{join}）</translation>
+    </message>
+    <message>
+        <source>{source}: column mapping {wanted}={header}: the file has no header &apos;{header}&apos; (its headers: {join})</source>
+        <translation>{source}：列映射 {wanted}={header}：文件中没有表头 &apos;{header}&apos;（其表头为：{join}）</translation>
+    </message>
+    <message>
+        <source>{source}: row 1 (header): no column &apos;{key}&apos;; expected headers {join} (or their names, e.g. {title}{value}); the file&apos;s header is {join2}</source>
+        <extracomment>How far below the top a header is looked for (title, lab and date rows above it).</extracomment>
+        <translation>{source}：第 1 行（表头）：没有列 &apos;{key}&apos;；应有表头 {join}（或其名称，例如 {title}{value}）；文件的表头为 {join2}</translation>
     </message>
 </context>
 </TS>
