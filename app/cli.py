@@ -254,7 +254,7 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
     try:
         return CertificateMetadata.from_dict(data)
     except MetadataError as exc:
-        raise MetadataError(f"{path}: {exc}") from None
+        raise MetadataError(message("{path}: {reason}", path=path, reason=reason_of(exc))) from None
 
 
 def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
@@ -287,15 +287,16 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     from app.certificate_issue import draft_reasons
     from app.writers.certificate_pdf import write_certificate_pdf
 
+    words = translator(args.language)
     try:
         metadata = _read_metadata(args.metadata)
     except MetadataError as exc:
-        _say(f"anglebench analyze: {exc}")
+        _say(f"anglebench analyze: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     try:
         document = kind.certificate_document(result, metadata, Path(args.file).name, settings)
     except MetadataError as exc:
-        _say(f"anglebench analyze: {exc}")
+        _say(f"anglebench analyze: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     try:
         if args.certificate and not draft_reasons(metadata):

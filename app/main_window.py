@@ -544,7 +544,7 @@ class MainWindow(QMainWindow):
             check_project(project, {p.kind.key: p.kind for p in self.presenters},
                           "the register's record")
         except ProjectFileError as exc:
-            self.tell(tr("Cannot open"), str(exc))
+            self.tell(tr("Cannot open"), translated(reason_of(exc)))
             return False
         self.apply_project(project)
         self.project_path = None

@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure
 
 __all__ = [
@@ -68,8 +69,9 @@ def angle_unit(key: str) -> AngleUnit:
     try:
         return ANGLE_UNITS[key]
     except KeyError:
-        raise ValueError(f"unknown angle unit {key!r}; choose one of "
-                         f"{', '.join(ANGLE_UNITS)}") from None
+        raise ValueError(message(
+            QT_TR_NOOP("unknown angle unit {key}; choose one of {join}"),
+            key=f"{key!r}", join=', '.join(ANGLE_UNITS))) from None
 
 
 def _places(value: float, decimals: int, factor: float) -> int:

@@ -14,7 +14,7 @@ import re
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, message
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
@@ -63,11 +63,15 @@ def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
     if value is None:
         return ""
     if not isinstance(value, str | int | float) or isinstance(value, bool):
-        raise MetadataError(f"certificate field '{field_name}' must be text")
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}' must be text"),
+            field_name=field_name))
     try:
         text = str(value)
     except ValueError:  # an integer of thousands of digits
-        raise MetadataError(f"certificate field '{field_name}' must be text") from None
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}' must be text"),
+            field_name=field_name)) from None
     if multiline:
         text = text.replace("\r\n", "\n").replace("\r", "\n")
         text = "\n".join(_CONTROL.sub("", line.replace("\t", " ")) for line in text.split("\n"))
@@ -79,15 +83,21 @@ def _optional_number(value: Any, field_name: str) -> float | None:
     if value is None or (isinstance(value, str) and not value.strip()):
         return None
     if isinstance(value, bool) or not isinstance(value, str | int | float):
-        raise MetadataError(f"certificate field '{field_name}' must be a number")
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}' must be a number"),
+            field_name=field_name))
     try:
         number = float(str(value).replace(",", ".")) if isinstance(value, str) else float(value)
     except (TypeError, ValueError, OverflowError):
         shown = value if isinstance(value, str) and len(value) < 40 else "the value"
-        raise MetadataError(f"certificate field '{field_name}': '{shown}' is not a number") \
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}': '{shown}' is not a number"),
+            field_name=field_name, shown=shown)) \
             from None
     if not math.isfinite(number):
-        raise MetadataError(f"certificate field '{field_name}' must be a finite number")
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}' must be a finite number"),
+            field_name=field_name))
     return number
 
 
@@ -98,8 +108,9 @@ def _date(value: Any, field_name: str) -> str:
     try:
         return dt.date.fromisoformat(text).isoformat()
     except ValueError:
-        raise MetadataError(f"certificate field '{field_name}': '{text}' is not a date "
-                            "(YYYY-MM-DD)") from None
+        raise MetadataError(message(
+            QT_TR_NOOP("certificate field '{field_name}': '{text}' is not a date (YYYY-MM-DD)"),
+            field_name=field_name, text=text)) from None
 
 
 @dataclass(frozen=True)
@@ -125,19 +136,26 @@ class ReferenceStandard:
     def from_dict(cls, data: Any, index: int) -> ReferenceStandard:
         name = f"standards[{index + 1}]"
         if not isinstance(data, dict):
-            raise MetadataError(f"certificate field '{name}' must be an object")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}' must be an object"),
+                name=name))
         basis = clean_text(data.get("basis", "U95"), f"{name}.basis") or "U95"
         if basis not in BASIS_DIVISORS:
-            raise MetadataError(f"certificate field '{name}.basis' must be one of "
-                                f"{', '.join(BASIS_DIVISORS)}, not '{basis}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}.basis' must be one of {join}, not '{basis}'"),
+                name=name, join=', '.join(BASIS_DIVISORS), basis=basis))
         u = _optional_number(data.get("uncertainty_arcsec"), f"{name}.uncertainty_arcsec")
         if u is not None and not 0 <= u <= 3600:
-            raise MetadataError(f"certificate field '{name}.uncertainty_arcsec' must be 0 to "
-                                "3600\" (an angle standard's uncertainty)")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}.uncertainty_arcsec' must be 0 to 3600\" (an angle "
+                           "standard's uncertainty)"),
+                name=name))
         applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
         if applies_to not in APPLIES_TO:
-            raise MetadataError(f"certificate field '{name}.applies_to' must be one of "
-                                f"{', '.join(APPLIES_TO)}, not '{applies_to}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}.applies_to' must be one of {join}, not "
+                           "'{applies_to}'"),
+                name=name, join=', '.join(APPLIES_TO), applies_to=applies_to))
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
                    clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
@@ -190,7 +208,8 @@ class CertificateMetadata:
         if data is None:
             return cls()
         if not isinstance(data, dict):
-            raise MetadataError("certificate metadata must be a JSON object")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate metadata must be a JSON object")))
         values: dict[str, Any] = {}
         for f in fields(cls):
             if f.name.startswith("_") or f.name not in data:
@@ -198,7 +217,8 @@ class CertificateMetadata:
             raw = data[f.name]
             if f.name == "standards":
                 if not isinstance(raw, list):
-                    raise MetadataError("certificate field 'standards' must be a list")
+                    raise MetadataError(message(
+                        QT_TR_NOOP("certificate field 'standards' must be a list")))
                 values[f.name] = tuple(ReferenceStandard.from_dict(s, i) for i, s in enumerate(raw))
             elif f.name in cls._NUMBERS:
                 values[f.name] = _optional_number(raw, f.name)
@@ -208,27 +228,38 @@ class CertificateMetadata:
                 values[f.name] = clean_text(raw, f.name, multiline=f.name in ("notes", "change_note"))
         meta = cls(**values)
         if meta.language not in LANGUAGES:
-            raise MetadataError(f"certificate field 'language' must be one of "
-                                f"{', '.join(LANGUAGES)}, not '{meta.language}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'language' must be one of {join}, not '{language}'"),
+                join=', '.join(LANGUAGES), language=meta.language))
         if meta.decision_rule not in DECISION_RULES:
-            raise MetadataError(f"certificate field 'decision_rule' must be one of "
-                                f"{', '.join(DECISION_RULES)}, not '{meta.decision_rule}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'decision_rule' must be one of {join}, not "
+                           "'{decision_rule}'"),
+                join=', '.join(DECISION_RULES), decision_rule=meta.decision_rule))
         if meta.tolerance_arcsec is not None and meta.tolerance_arcsec <= 0:
-            raise MetadataError("certificate field 'tolerance_arcsec' must be positive")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'tolerance_arcsec' must be positive")))
         if meta.humidity_pct is not None and not 0 <= meta.humidity_pct <= 100:
-            raise MetadataError("certificate field 'humidity_pct' must be 0 to 100 %")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'humidity_pct' must be 0 to 100 %")))
         if meta.item_resolution_arcsec is not None and not 0 <= meta.item_resolution_arcsec <= 3600:
-            raise MetadataError("certificate field 'item_resolution_arcsec' must be 0 to 3600\"")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'item_resolution_arcsec' must be 0 to 3600\"")))
         if meta.coverage_probability_pct is None:
             meta = replace(meta, coverage_probability_pct=100.0 * DEFAULT_COVERAGE_PROBABILITY)
         if not 50.0 <= meta.coverage_probability_pct <= 99.9:
-            raise MetadataError("certificate field 'coverage_probability_pct' must be 50 to 99.9 %")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'coverage_probability_pct' must be 50 to 99.9 %")))
         if meta.decision_quantity not in DECISION_QUANTITIES:
-            raise MetadataError(f"certificate field 'decision_quantity' must be one of "
-                                f"{', '.join(DECISION_QUANTITIES)}, not '{meta.decision_quantity}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'decision_quantity' must be one of {join}, not "
+                           "'{decision_quantity}'"),
+                join=', '.join(DECISION_QUANTITIES), decision_quantity=meta.decision_quantity))
         if meta.document_type not in DOCUMENT_TYPES:
-            raise MetadataError(f"certificate field 'document_type' must be one of "
-                                f"{', '.join(DOCUMENT_TYPES)}, not '{meta.document_type}'")
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'document_type' must be one of {join}, not "
+                           "'{document_type}'"),
+                join=', '.join(DOCUMENT_TYPES), document_type=meta.document_type))
         return meta
 
     @property

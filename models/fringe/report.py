@@ -112,10 +112,11 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         metadata.as_left_table_sha256.strip().lower() == result.table.sha256
     if metadata.as_left_table_sha256 and not as_left:
         raise MetadataError(
-            f"the certificate details say a correction table with checksum "
-            f"{metadata.as_left_table_sha256[:16]}… was loaded into the encoder, but this "
-            f"analysis's table is {result.table.sha256[:16]}…: export and load this table, or "
-            "clear the checksum")
+            message(
+            QT_TR_NOOP("the certificate details say a correction table with checksum "
+                       "{as_left_table_sha256}… was loaded into the encoder, but this analysis's table "
+                       "is {sha256}…: export and load this table, or clear the checksum"),
+            as_left_table_sha256=metadata.as_left_table_sha256[:16], sha256=result.table.sha256[:16]))
     budget = fringe_budget(result, metadata, as_found=not as_left)
     found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
     big_u = budget.expanded_arcsec

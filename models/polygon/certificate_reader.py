@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from models.messages import QT_TR_NOOP, message
 from models.readings.sheet import Column, ColumnKind, ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 
@@ -23,15 +24,20 @@ def read_polygon_certificate(path: str | Path) -> dict[int, float]:
     parsed = ReadingsSheet(CERTIFICATE_COLUMNS, rows).parse()
     if parsed.errors:
         e = parsed.errors[0]
-        raise TableImportError(f"{table.source}: row {table.line_numbers[e.row]}, column "
-                               f"'{e.column_key}': {e.reason}")
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: row {line_numbers}, column '{column_key}': {reason}"),
+            source=table.source, line_numbers=table.line_numbers[e.row], column_key=e.column_key,
+            reason=e.reason))
     out: dict[int, float] = {}
     for i, (pos, dev) in enumerate(zip(parsed["position"], parsed["deviation_arcsec"],
                                        strict=True)):
         if int(pos) in out:
-            raise TableImportError(f"{table.source}: row {table.line_numbers[i]}: position "
-                                   f"{int(pos)} appears twice")
+            raise TableImportError(message(
+                QT_TR_NOOP("{source}: row {line_numbers}: position {int} appears twice"),
+                source=table.source, line_numbers=table.line_numbers[i], int=int(pos)))
         out[int(pos)] = float(dev)
     if not out:
-        raise TableImportError(f"{table.source}: no deviations found")
+        raise TableImportError(message(
+            QT_TR_NOOP("{source}: no deviations found"),
+            source=table.source))
     return out

@@ -206,14 +206,18 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
     tol = GRADE_ACCURACY_ARCSEC[result.grade]
     if metadata.tolerance_arcsec is not None and not math.isclose(metadata.tolerance_arcsec, tol):
         raise MetadataError(
-            f"the certificate details give a tolerance of ±{metadata.tolerance_arcsec:g}\" but the "
-            f"workbench is set to grade {result.grade} (±{tol:g}\"): change the grade or clear the "
-            "tolerance in the details")
+            message(
+            QT_TR_NOOP("the certificate details give a tolerance of ±{tolerance_arcsec}\" but the "
+                       "workbench is set to grade {grade} (±{tol}\"): change the grade or clear the "
+                       "tolerance in the details"),
+            tolerance_arcsec=f"{metadata.tolerance_arcsec:g}", grade=result.grade, tol=f"{tol:g}"))
     match = _GRADE_IN_TEXT.search(metadata.item_grade or "")
     if match and int(match.group(1)) != result.grade:
         raise MetadataError(
-            f"the certificate details say '{metadata.item_grade}' but the workbench is set to grade "
-            f"{result.grade}: make them agree")
+            message(
+            QT_TR_NOOP("the certificate details say '{item_grade}' but the workbench is set to grade "
+                       "{grade}: make them agree"),
+            item_grade=metadata.item_grade, grade=result.grade))
     return tol
 
 

@@ -82,10 +82,13 @@ def positioning_budget(result: PositioningResult,
     for name, _, s, n in points:
         once = result.positions[(n < 2) | ~np.isfinite(s)]
         if once.size:
-            raise MetadataError(
-                f"target(s) {', '.join(f'{t:g}' for t in once)} "
-                f"{'forward' if name == 'up' else 'backward'} were approached fewer than twice: "
-                "their repeatability, part of U, is unknown; no certificate is issued")
+            raise MetadataError(message(
+                QT_TR_NOOP("target(s) {targets} forward were approached fewer than twice: their "
+                           "repeatability, part of U, is unknown; no certificate is issued")
+                if name == "up" else
+                QT_TR_NOOP("target(s) {targets} backward were approached fewer than twice: their "
+                           "repeatability, part of U, is unknown; no certificate is issued"),
+                targets=", ".join(f"{t:g}" for t in once)))
     s = np.concatenate([p[2] for p in points])
     n = np.concatenate([p[3] for p in points]).astype(float)
     components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"))

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from models import __version__ as APP_VERSION
+from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.atomic_write import write_text_atomic
 
 __all__ = [
@@ -94,47 +95,71 @@ def project_from_json(text: str, source: str = "project") -> Project:
         document = json.loads(text)
     except json.JSONDecodeError as exc:
         raise ProjectFileError(
-            f"{source}: damaged project file (line {exc.lineno}, column {exc.colno}: {exc.msg}); "
-            "nothing was changed"
+            message(
+            QT_TR_NOOP("{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing "
+                       "was changed"),
+            source=source, lineno=exc.lineno, colno=exc.colno, msg=exc.msg)
         ) from None
     except (RecursionError, ValueError):
-        raise ProjectFileError(f"{source}: damaged project file (nested too deep, or a number "
-                               "too long); nothing was changed") from None
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: damaged project file (nested too deep, or a number too long); nothing "
+                       "was changed"),
+            source=source)) from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
-        raise ProjectFileError(f"{source}: not an AngleBench project file")
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: not an AngleBench project file"),
+            source=source))
     version = document.get("schema_version")
     if not isinstance(version, int) or version < 1:
-        raise ProjectFileError(f"{source}: schema_version is missing or invalid")
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: schema_version is missing or invalid"),
+            source=source))
     if version > SCHEMA_VERSION:
         raise ProjectFileError(
-            f"{source}: written by a newer AngleBench (schema {version}; this version reads "
-            f"up to {SCHEMA_VERSION}). Nothing was changed; update AngleBench to open it."
+            message(
+            QT_TR_NOOP("{source}: written by a newer AngleBench (schema {version}; this version reads up "
+                       "to {schema_version}). Nothing was changed; update AngleBench to open it."),
+            source=source, version=version, schema_version=SCHEMA_VERSION)
         )
     benches = document.get("workbenches", {})
     if not isinstance(benches, dict):
-        raise ProjectFileError(f"{source}: 'workbenches' must be an object")
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: 'workbenches' must be an object"),
+            source=source))
     metadata = document.get("metadata") or {}
     if not isinstance(metadata, dict):
-        raise ProjectFileError(f"{source}: 'metadata' must be an object; nothing was changed")
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: 'metadata' must be an object; nothing was changed"),
+            source=source))
     certificates = metadata.get("certificates", {})
     if not isinstance(certificates, dict) or not all(isinstance(c, dict)
                                                      for c in certificates.values()):
-        raise ProjectFileError(f"{source}: 'metadata.certificates' must map workbenches to "
-                               "objects; nothing was changed")
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: 'metadata.certificates' must map workbenches to objects; nothing was "
+                       "changed"),
+            source=source))
     project = Project(metadata=dict(metadata))
     for key, state in benches.items():
         if not isinstance(state, dict):
-            raise ProjectFileError(f"{source}: workbench '{key}' must be an object")
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}' must be an object"),
+                source=source, key=key))
         rows = state.get("rows", [])
         if not isinstance(rows, list) or not all(isinstance(r, list) for r in rows):
-            raise ProjectFileError(f"{source}: workbench '{key}': 'rows' must be a list of lists")
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}': 'rows' must be a list of lists"),
+                source=source, key=key))
         if not all(isinstance(c, str | int | float | type(None)) and not isinstance(c, bool)
                    for r in rows for c in r):
-            raise ProjectFileError(f"{source}: workbench '{key}': every cell must be text")
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}': every cell must be text"),
+                source=source, key=key))
         clean_rows = [["" if c is None else str(c) for c in r] for r in rows]
         settings = state.get("settings", {})
         if not isinstance(settings, dict):
-            raise ProjectFileError(f"{source}: workbench '{key}': 'settings' must be an object")
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}': 'settings' must be an object"),
+                source=source, key=key))
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
     return project
 
@@ -146,17 +171,23 @@ def check_project(project: Project, kinds: Mapping[str, Any], source: str = "pro
     for key, state in project.workbenches.items():
         kind = kinds.get(key)
         if kind is None:
-            raise ProjectFileError(f"{source}: workbench '{key}' is not one this version knows; "
-                                   "nothing was changed")
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}' is not one this version knows; nothing was "
+                           "changed"),
+                source=source, key=key))
         width = len(kind.columns)
         for i, row in enumerate(state.rows, 1):
             if len(row) > width and any(c.strip() for c in row[width:]):
-                raise ProjectFileError(f"{source}: workbench '{key}', row {i}: {len(row)} cells "
-                                       f"for {width} columns; nothing was changed")
+                raise ProjectFileError(message(
+                    QT_TR_NOOP("{source}: workbench '{key}', row {i}: {len} cells for {width} columns; "
+                               "nothing was changed"),
+                    source=source, key=key, i=i, len=len(row), width=width))
         try:
             kind.checked_settings(state.settings)
         except ValueError as exc:
-            raise ProjectFileError(f"{source}: workbench '{key}': {exc}; nothing was changed") \
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: workbench '{key}': {exc}; nothing was changed"),
+                source=source, key=key, exc=reason_of(exc))) \
                 from None
 
 
@@ -170,9 +201,13 @@ def load_project(path: str | Path) -> Project:
     try:
         data = path.read_bytes()
     except OSError as exc:
-        raise ProjectFileError(f"{path}: cannot read ({exc.strerror or exc})") from None
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{path}: cannot read ({value})"),
+            path=path, value=exc.strerror or exc)) from None
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise ProjectFileError(f"{path}: damaged project file (not UTF-8 text)") from None
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{path}: damaged project file (not UTF-8 text)"),
+            path=path)) from None
     return project_from_json(text, str(path))

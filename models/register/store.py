@@ -33,6 +33,7 @@ from typing import Any
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
+from models.messages import QT_TR_NOOP, message, reason_of
 
 __all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "software_versions"]
 
@@ -113,8 +114,10 @@ def _counter_name(scheme: str, date: dt.date) -> str:
     """The scheme with its date fields filled and the sequence left as '#': numbers of one
     year (or month, day) share a counter."""
     if not _SEQ.search(scheme):
-        raise RegisterError(f"the number scheme '{scheme}' has no {{seq}}: the register cannot "
-                            "number certificates with it")
+        raise RegisterError(message(
+            QT_TR_NOOP("the number scheme '{scheme}' has no {{seq}}: the register cannot number "
+                       "certificates with it"),
+            scheme=scheme))
     return format_certificate_number(_SEQ.sub("#", scheme), 0, date)
 
 
@@ -146,9 +149,13 @@ class Register:
                 self.engine.dispose()
                 raise
         except sa.exc.SQLAlchemyError as exc:
-            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+            raise RegisterError(message(
+                QT_TR_NOOP("register {display_url}: {reason}"),
+                display_url=self.display_url, reason=_reason(exc))) from None
         except OSError as exc:
-            raise RegisterError(f"register {self.display_url}: {exc}") from None
+            raise RegisterError(message(
+                QT_TR_NOOP("register {display_url}: {exc}"),
+                display_url=self.display_url, exc=reason_of(exc))) from None
 
     @property
     def display_url(self) -> str:
@@ -175,9 +182,11 @@ class Register:
                 conn.execute(schema.SCHEMA_VERSION.insert().values(version=0))
             version = conn.execute(sa.select(schema.SCHEMA_VERSION.c.version)).scalar_one()
             if version > schema.LATEST:
-                raise RegisterError(f"register {self.display_url} is at schema version {version}, "
-                                    f"made by a newer AngleBench than {__version__} (knows "
-                                    f"{schema.LATEST}): open it with that version")
+                raise RegisterError(message(
+                    QT_TR_NOOP("register {display_url} is at schema version {version}, made by a newer "
+                               "AngleBench than {version__} (knows {latest}): open it with that version"),
+                    display_url=self.display_url, version=version, version__=__version__,
+                    latest=schema.LATEST))
             for step in range(version + 1, schema.LATEST + 1):
                 schema.MIGRATIONS[step](conn)
             if version < schema.LATEST:
@@ -194,7 +203,9 @@ class Register:
             with self.engine.connect() as conn:
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
-            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+            raise RegisterError(message(
+                QT_TR_NOOP("register {display_url}: {reason}"),
+                display_url=self.display_url, reason=_reason(exc))) from None
 
     @contextmanager
     def _write(self) -> Iterator[Any]:
@@ -203,7 +214,9 @@ class Register:
             with self.engine.begin() as conn:
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
-            raise RegisterError(f"register {self.display_url}: {_reason(exc)}") from None
+            raise RegisterError(message(
+                QT_TR_NOOP("register {display_url}: {reason}"),
+                display_url=self.display_url, reason=_reason(exc))) from None
 
     # -- issuing --------------------------------------------------------------------------
     def _allocate(self, conn, scheme: str, date: dt.date) -> str:
@@ -220,14 +233,17 @@ class Register:
                 certificates.c.number == number)).first()
             if taken is None:
                 return number
-        raise RegisterError(f"no free number in scheme '{scheme}'")
+        raise RegisterError(message(
+            QT_TR_NOOP("no free number in scheme '{scheme}'"),
+            scheme=scheme))
 
     def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
         """A lab moving to the register from numbers issued by hand: the next number the
         scheme allocates (for ``date``'s year, month …) is ``next_sequence``. Never moves the
         counter back. Returns that next number."""
         if next_sequence < 1:
-            raise RegisterError("the next sequence number must be 1 or more")
+            raise RegisterError(message(
+                QT_TR_NOOP("the next sequence number must be 1 or more")))
         name = _counter_name(scheme, date)
         counters = self._schema.COUNTERS
         with self._write() as conn:
@@ -235,8 +251,10 @@ class Register:
                 counters.c.name == name)).scalar_one_or_none()
             if current is not None and current >= next_sequence:
                 raise RegisterError(
-                    f"the register has already allocated up to "
-                    f"{format_certificate_number(scheme, current, date)}: it never numbers back")
+                    message(
+                    QT_TR_NOOP("the register has already allocated up to {format_certificate_number}: it "
+                               "never numbers back"),
+                    format_certificate_number=format_certificate_number(scheme, current, date)))
             if current is None:
                 conn.execute(counters.insert().values(name=name, last_value=next_sequence - 1))
             else:
@@ -251,9 +269,12 @@ class Register:
             self._schema.CERTIFICATES.c.number == number)).first()
         if row is not None:
             raise RegisterError(
-                f"certificate number {number} was issued on {row.issued_at[:10]} ({row.workbench}, "
-                f"serial {row.item_serial or '—'}): a number is issued once; leave the number "
-                "empty and the register allocates the next")
+                message(
+                QT_TR_NOOP("certificate number {number} was issued on {issued_at} ({workbench}, serial "
+                           "{value}): a number is issued once; leave the number empty and the register "
+                           "allocates the next"),
+                number=number, issued_at=row.issued_at[:10], workbench=row.workbench,
+                value=row.item_serial or '—'))
 
     def issue(self, request: IssueRequest, render: Callable[[CertificateMetadata], bytes],
               *, supersedes: str = "", change_note: str = "", replacement: bool = False
@@ -311,8 +332,9 @@ class Register:
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
         if record.status != "issued":
-            raise RegisterError(f"{number} was superseded by {record.superseded_by}: amend or "
-                                "replace that one")
+            raise RegisterError(message(
+                QT_TR_NOOP("{number} was superseded by {superseded_by}: amend or replace that one"),
+                number=number, superseded_by=record.superseded_by))
         return record
 
     # -- reading --------------------------------------------------------------------------
@@ -321,7 +343,9 @@ class Register:
         row = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS)).where(
             certificates.c.number == number)).first()
         if row is None:
-            raise RegisterError(f"no certificate {number} in the register")
+            raise RegisterError(message(
+                QT_TR_NOOP("no certificate {number} in the register"),
+                number=number))
         return CertificateRecord(**row._asdict())
 
     def get(self, number: str) -> CertificateRecord:
@@ -334,7 +358,9 @@ class Register:
             data = conn.execute(self._sa.select(certificates.c.pdf).where(
                 certificates.c.number == number)).scalar_one_or_none()
         if data is None:
-            raise RegisterError(f"no certificate {number} in the register")
+            raise RegisterError(message(
+                QT_TR_NOOP("no certificate {number} in the register"),
+                number=number))
         return bytes(data)
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
@@ -374,7 +400,8 @@ class Register:
             conn.execute(instruments.delete().where(instruments.c.serial == serial))
             if days:
                 if days < 1:
-                    raise RegisterError("a calibration interval is a positive number of days")
+                    raise RegisterError(message(
+                        QT_TR_NOOP("a calibration interval is a positive number of days")))
                 conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
 
     def interval(self, serial: str) -> int | None:

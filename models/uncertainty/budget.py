@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, message
 
 __all__ = [
     "BASIS_DIVISORS",
@@ -66,8 +66,9 @@ def divisor_for_basis(basis: str) -> tuple[float, str]:
     try:
         _, divisor, distribution = BASIS_DIVISORS[basis]
     except KeyError:
-        raise ValueError(f"uncertainty basis must be one of {', '.join(BASIS_DIVISORS)}, "
-                         f"not '{basis}'") from None
+        raise ValueError(message(
+            QT_TR_NOOP("uncertainty basis must be one of {join}, not '{basis}'"),
+            join=', '.join(BASIS_DIVISORS), basis=basis)) from None
     return divisor, distribution
 
 
@@ -94,8 +95,10 @@ class BudgetComponent:
     def __post_init__(self) -> None:
         values = np.asarray(self.value_arcsec, dtype=float)
         if not np.all(np.isfinite(values)) or np.any(values < 0) or not self.divisor > 0:
-            raise ValueError(f"uncertainty input '{self.name}': its value must be a finite, "
-                             "non-negative number of arcseconds")
+            raise ValueError(message(
+                QT_TR_NOOP("uncertainty input '{name}': its value must be a finite, non-negative number "
+                           "of arcseconds"),
+                name=self.name))
 
     def standard_uncertainty(self, points: int) -> np.ndarray:
         """Standard uncertainty of the input, per point (before the sensitivity)."""

@@ -132,6 +132,10 @@
         <translation>{channel}：R²、残差均方根</translation>
     </message>
     <message>
+        <source>the certificate details say a correction table with checksum {as_left_table_sha256}… was loaded into the encoder, but this analysis&apos;s table is {sha256}…: export and load this table, or clear the checksum</source>
+        <translation>证书信息称已将校验和为 {as_left_table_sha256}… 的修正表载入编码器，但本次分析的修正表为 {sha256}…：请导出并载入本修正表，或清除该校验和</translation>
+    </message>
+    <message>
         <source>Signal parameters identified</source>
         <translation>信号参数辨识结果</translation>
     </message>
@@ -372,6 +376,14 @@
     <message>
         <source>u(ψ), u(ω) of the tilt fits propagated through ε_x</source>
         <translation>塔差拟合的 u(ψ)、u(ω) 经 ε_x 传播</translation>
+    </message>
+    <message>
+        <source>the certificate details give a tolerance of ±{tolerance_arcsec}&quot; but the workbench is set to grade {grade} (±{tol}&quot;): change the grade or clear the tolerance in the details</source>
+        <translation>证书信息给出的允差为 ±{tolerance_arcsec}&quot;，但工作台设为 {grade} 级（±{tol}&quot;）：请修改等级，或清除证书信息中的允差</translation>
+    </message>
+    <message>
+        <source>the certificate details say &apos;{item_grade}&apos; but the workbench is set to grade {grade}: make them agree</source>
+        <translation>证书信息为 &apos;{item_grade}&apos;，但工作台设为 {grade} 级：请使两者一致</translation>
     </message>
     <message>
         <source>with the face numbering</source>
@@ -1857,8 +1869,84 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>检测报告</translation>
     </message>
     <message>
-        <source>certificate number</source>
+        <source>certificate field &apos;{field_name}&apos; must be text</source>
         <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是文本</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be a number</source>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是数字</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos;: &apos;{shown}&apos; is not a number</source>
+        <translation>证书字段 &apos;{field_name}&apos;：&apos;{shown}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be a finite number</source>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是有限的数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos;: &apos;{text}&apos; is not a date (YYYY-MM-DD)</source>
+        <translation>证书字段 &apos;{field_name}&apos;：&apos;{text}&apos; 不是日期（YYYY-MM-DD）</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}&apos; must be an object</source>
+        <translation>证书字段 &apos;{name}&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.basis&apos; must be one of {join}, not &apos;{basis}&apos;</source>
+        <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.uncertainty_arcsec&apos; must be 0 to 3600&quot; (an angle standard&apos;s uncertainty)</source>
+        <translation>证书字段 &apos;{name}.uncertainty_arcsec&apos; 必须在 0 至 3600&quot; 之间（角度标准的不确定度）</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
+        <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate metadata must be a JSON object</source>
+        <translation>证书信息必须是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;standards&apos; must be a list</source>
+        <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;language&apos; must be one of {join}, not &apos;{language}&apos;</source>
+        <translation>证书字段 &apos;language&apos; 必须是 {join} 之一，而不是 &apos;{language}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;decision_rule&apos; must be one of {join}, not &apos;{decision_rule}&apos;</source>
+        <translation>证书字段 &apos;decision_rule&apos; 必须是 {join} 之一，而不是 &apos;{decision_rule}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance_arcsec&apos; must be positive</source>
+        <translation>证书字段 &apos;tolerance_arcsec&apos; 必须为正数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
+        <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution_arcsec&apos; must be 0 to 3600&quot;</source>
+        <translation>证书字段 &apos;item_resolution_arcsec&apos; 必须在 0 至 3600&quot; 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;coverage_probability_pct&apos; must be 50 to 99.9 %</source>
+        <translation>证书字段 &apos;coverage_probability_pct&apos; 必须在 50 至 99.9 % 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;decision_quantity&apos; must be one of {join}, not &apos;{decision_quantity}&apos;</source>
+        <translation>证书字段 &apos;decision_quantity&apos; 必须是 {join} 之一，而不是 &apos;{decision_quantity}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;document_type&apos; must be one of {join}, not &apos;{document_type}&apos;</source>
+        <translation>证书字段 &apos;document_type&apos; 必须是 {join} 之一，而不是 &apos;{document_type}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate number</source>
         <translation>证书编号</translation>
     </message>
     <message>
@@ -2721,6 +2809,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>最大反向差</translation>
     </message>
     <message>
+        <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
+        <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
+    </message>
+    <message>
+        <source>target(s) {targets} backward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
+        <translation>目标 {targets} 反向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
+    </message>
+    <message>
         <source>reading</source>
         <translation>读数</translation>
     </message>
@@ -3432,6 +3528,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>矩形</translation>
     </message>
     <message>
+        <source>uncertainty basis must be one of {join}, not &apos;{basis}&apos;</source>
+        <translation>不确定度给出方式必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
+    </message>
+    <message>
+        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number of arcseconds</source>
+        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负角秒数</translation>
+    </message>
+    <message>
         <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
         <translation>带保护带 w = U 的非二元声明（ILAC-G8:09/2019，4.2.3）：结果在 T − w 以内为合格；在 T 以内为有条件合格；在 T + w 以内为有条件不合格；超出 T + w 为不合格</translation>
     </message>
@@ -3719,6 +3823,134 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>{source}: row 1 (header): no column &apos;{key}&apos;; expected headers {join} (or their names, e.g. {title}{value}); the file&apos;s header is {join2}</source>
         <extracomment>How far below the top a header is looked for (title, lab and date rows above it).</extracomment>
         <translation>{source}：第 1 行（表头）：没有列 &apos;{key}&apos;；应有表头 {join}（或其名称，例如 {title}{value}）；文件的表头为 {join2}</translation>
+    </message>
+    <message>
+        <source>unknown angle unit {key}; choose one of {join}</source>
+        <translation>未知的角度单位 {key}；请选择 {join} 之一</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_numbers}, column &apos;{column_key}&apos;: {reason}</source>
+        <translation>{source}：第 {line_numbers} 行，列 &apos;{column_key}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_numbers}: position {int} appears twice</source>
+        <translation>{source}：第 {line_numbers} 行：位置 {int} 出现两次</translation>
+    </message>
+    <message>
+        <source>{source}: no deviations found</source>
+        <translation>{source}：未找到偏差值</translation>
+    </message>
+    <message>
+        <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
+        <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: damaged project file (nested too deep, or a number too long); nothing was changed</source>
+        <translation>{source}：项目文件已损坏（嵌套过深或数字过长）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: not an AngleBench project file</source>
+        <translation>{source}：不是 AngleBench 项目文件</translation>
+    </message>
+    <message>
+        <source>{source}: schema_version is missing or invalid</source>
+        <translation>{source}：schema_version 缺失或无效</translation>
+    </message>
+    <message>
+        <source>{source}: written by a newer AngleBench (schema {version}; this version reads up to {schema_version}). Nothing was changed; update AngleBench to open it.</source>
+        <translation>{source}：由较新版本的 AngleBench 写入（schema {version}；本版本最多读取 {schema_version}）。未作任何更改；请更新 AngleBench 后打开。</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;workbenches&apos; must be an object</source>
+        <translation>{source}：&apos;workbenches&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;metadata&apos; must be an object; nothing was changed</source>
+        <translation>{source}：&apos;metadata&apos; 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;metadata.certificates&apos; must map workbenches to objects; nothing was changed</source>
+        <translation>{source}：&apos;metadata.certificates&apos; 必须将工作台映射为对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos; must be an object</source>
+        <translation>{source}：工作台 &apos;{key}&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: &apos;rows&apos; must be a list of lists</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：&apos;rows&apos; 必须是列表的列表</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: every cell must be text</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：每个单元格都必须是文本</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: &apos;settings&apos; must be an object</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：&apos;settings&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos; is not one this version knows; nothing was changed</source>
+        <translation>{source}：本版本不认识工作台 &apos;{key}&apos;；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;, row {i}: {len} cells for {width} columns; nothing was changed</source>
+        <translation>{source}：工作台 &apos;{key}&apos;，第 {i} 行：{width} 列却有 {len} 个单元格；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: {exc}; nothing was changed</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：{exc}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{path}: cannot read ({value})</source>
+        <translation>{path}：无法读取（{value}）</translation>
+    </message>
+    <message>
+        <source>{path}: damaged project file (not UTF-8 text)</source>
+        <translation>{path}：项目文件已损坏（不是 UTF-8 文本）</translation>
+    </message>
+    <message>
+        <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
+        <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
+    </message>
+    <message>
+        <source>register {display_url}: {reason}</source>
+        <translation>登记册 {display_url}：{reason}</translation>
+    </message>
+    <message>
+        <source>register {display_url}: {exc}</source>
+        <translation>登记册 {display_url}：{exc}</translation>
+    </message>
+    <message>
+        <source>register {display_url} is at schema version {version}, made by a newer AngleBench than {version__} (knows {latest}): open it with that version</source>
+        <translation>登记册 {display_url} 的 schema 版本为 {version}，由比 {version__} 更新的 AngleBench 建立（本版本支持到 {latest}）：请用该版本打开</translation>
+    </message>
+    <message>
+        <source>no free number in scheme &apos;{scheme}&apos;</source>
+        <translation>编号方案 &apos;{scheme}&apos; 中已无可用编号</translation>
+    </message>
+    <message>
+        <source>the next sequence number must be 1 or more</source>
+        <translation>下一个序号必须不小于 1</translation>
+    </message>
+    <message>
+        <source>the register has already allocated up to {format_certificate_number}: it never numbers back</source>
+        <translation>登记册已分配到 {format_certificate_number}：不会回退编号</translation>
+    </message>
+    <message>
+        <source>certificate number {number} was issued on {issued_at} ({workbench}, serial {value}): a number is issued once; leave the number empty and the register allocates the next</source>
+        <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请将编号留空，由登记册分配下一个</translation>
+    </message>
+    <message>
+        <source>{number} was superseded by {superseded_by}: amend or replace that one</source>
+        <translation>{number} 已被 {superseded_by} 取代：请修改或替代后者</translation>
+    </message>
+    <message>
+        <source>no certificate {number} in the register</source>
+        <translation>登记册中没有证书 {number}</translation>
+    </message>
+    <message>
+        <source>a calibration interval is a positive number of days</source>
+        <translation>校准间隔必须是正的天数</translation>
     </message>
 </context>
 </TS>
