@@ -20,17 +20,28 @@ SAMPLES = HERE.parent / "samples"
 EXTRA = {"fringe": ["--lines-per-rev", "16384"]}  # the phase from the sample's θ column
 
 
-def certificate_picture(kind: str, scratch: Path) -> Path:
+def certificate_picture(kind: str, scratch: Path, chinese_number: str = "") -> Path:
+    """The sample certificate's first three pages; with ``chinese_number``, the same
+    certificate in Chinese under that number (a number is issued once)."""
+    import json
+
     from PySide6.QtGui import QColor, QImage, QPainter
 
-    pdf = scratch / f"{kind}.pdf"
+    name = f"{kind}_zh" if chinese_number else kind
+    details = SAMPLES / f"certificate_{kind}.json"
+    if chinese_number:
+        data = json.loads(details.read_text("utf-8"))
+        details = scratch / f"{name}.json"
+        details.write_text(json.dumps({**data, "language": "zh",
+                                       "certificate_number": chinese_number}), "utf-8")
+    pdf = scratch / f"{name}.pdf"
     subprocess.run([sys.executable, "-m", "app.main", "analyze", kind,
                     str(SAMPLES / f"{kind}_sample.csv"), "--certificate", str(pdf), "--metadata",
-                    str(SAMPLES / f"certificate_{kind}.json"), *EXTRA.get(kind, [])],
+                    str(details), *EXTRA.get(kind, [])],
                    check=True, stdout=subprocess.DEVNULL)
     subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "3", str(pdf),
-                    str(scratch / kind)], check=True)
-    pages = [QImage(str(p)) for p in sorted(scratch.glob(f"{kind}-*.png"))]
+                    str(scratch / name)], check=True)
+    pages = [QImage(str(p)) for p in sorted(scratch.glob(f"{name}-*.png"))]
     gap = 12
     sheet = QImage(sum(p.width() for p in pages) + gap * (len(pages) - 1),
                    max(p.height() for p in pages), QImage.Format.Format_RGB32)
@@ -41,7 +52,7 @@ def certificate_picture(kind: str, scratch: Path) -> Path:
         painter.drawImage(x, 0, page)
         x += page.width() + gap
     painter.end()
-    out = HERE / f"certificate_{kind}.png"
+    out = HERE / f"certificate_{name}.png"
     sheet.save(str(out))
     return out
 
@@ -111,6 +122,7 @@ def main() -> None:
         os.environ["ANGLEBENCH_REGISTER"] = str(Path(scratch) / "register.sqlite")
         for kind in ("theodolite", "polygon", "fringe", "positioning"):
             certificate_picture(kind, Path(scratch))
+        certificate_picture("theodolite", Path(scratch), chinese_number="AB-2026-0050")
         validation_picture(Path(scratch))
         scaled_pictures(Path(scratch))
         register_picture(Path(scratch))
