@@ -59,7 +59,7 @@ from widgets.i18n import (
     translated,
 )
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
-from widgets.workers import gui_thread_first
+from widgets.workers import gui_thread_first, wait_while_analysing
 
 log = logging.getLogger(__name__)
 
@@ -700,11 +700,11 @@ class MainWindow(QMainWindow):
 
     def _write_recovery_in_background(self, project: Project) -> None:
         with gui_thread_first():  # the window keeps the interpreter every 0.1 ms
-            self._write_recovery(project)
+            self._write_recovery(project, wait_while_analysing)
 
-    def _write_recovery(self, project: Project) -> None:
+    def _write_recovery(self, project: Project, between_blocks=None) -> None:
         try:
-            self.recovery.write(project, self.project_path)
+            self.recovery.write(project, self.project_path, between_blocks)
         except OSError as exc:
             log.warning("autosave failed: %s", exc)
 

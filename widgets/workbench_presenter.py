@@ -33,7 +33,13 @@ from models.readings.tabular_import import (
 from widgets.i18n import on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
-from widgets.workers import cyclic_gc_paused, emit_if_alive, gui_thread_first, worker_pool
+from widgets.workers import (
+    analysis_running,
+    cyclic_gc_paused,
+    emit_if_alive,
+    gui_thread_first,
+    worker_pool,
+)
 
 log = logging.getLogger(__name__)
 
@@ -67,7 +73,8 @@ class _AnalysisTask(QRunnable):
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
-            with gui_thread_first(), cancellable(lambda: generation != current()):
+            with (gui_thread_first(), analysis_running(),
+                  cancellable(lambda: generation != current())):
                 checkpoint()
                 parsed = sheet.parse()
                 result, error = _run_analysis(kind, parsed, settings)

@@ -16,7 +16,8 @@ import threading
 
 from PySide6.QtCore import QThreadPool
 
-__all__ = ["cyclic_gc_paused", "emit_if_alive", "gui_thread_first", "worker_pool"]
+__all__ = ["analysis_running", "cyclic_gc_paused", "emit_if_alive", "gui_thread_first",
+           "wait_while_analysing", "worker_pool"]
 
 
 def emit_if_alive(signal, *args) -> None:
@@ -76,3 +77,30 @@ def worker_pool() -> QThreadPool:
     return _WORKER_POOL
 
 
+
+
+_ANALYSES = 0
+_ANALYSES_CHANGED = threading.Condition()
+
+
+@contextlib.contextmanager
+def analysis_running():
+    """Mark an analysis as running (see :func:`wait_while_analysing`)."""
+    global _ANALYSES
+    with _ANALYSES_CHANGED:
+        _ANALYSES += 1
+    try:
+        yield
+    finally:
+        with _ANALYSES_CHANGED:
+            _ANALYSES -= 1
+            _ANALYSES_CHANGED.notify_all()
+
+
+def wait_while_analysing(limit_s: float = 5.0) -> None:
+    """Background work that can wait (an autosave) steps aside while an analysis runs:
+    the analysis and the window share one interpreter, and a million-row autosave beside
+    an analysis made an edit's result 0.1 s later and the window pause 0.26 s. Waits at
+    most ``limit_s`` (typing that never stops still gets autosaved)."""
+    with _ANALYSES_CHANGED:
+        _ANALYSES_CHANGED.wait_for(lambda: _ANALYSES == 0, timeout=limit_s)

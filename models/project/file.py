@@ -14,7 +14,7 @@ as it was saved, bad cells included.
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -59,10 +59,11 @@ class Project:
 _ROWS_CHUNK = 20_000
 
 
-def project_to_json(project: Project) -> str:
+def project_to_json(project: Project, between_blocks: Callable[[], None] | None = None) -> str:
     """The project as JSON text. Rows are encoded a block at a time: one call of json's C
     encoder on a million rows would hold the interpreter for a second, and an autosave
-    thread doing so would freeze the window; between blocks the GUI thread gets its turn."""
+    thread doing so would freeze the window; between blocks the GUI thread gets its turn,
+    and ``between_blocks()`` is called (an autosave waits there while an analysis runs)."""
     def dumps(value) -> str:
         # compact separators keep json's C encoder (an indent would switch to the
         # pure-Python one, 30x slower on a million-row signal file)
@@ -79,7 +80,13 @@ def project_to_json(project: Project) -> str:
         else:
             blocks = (dumps(rows[start:start + _ROWS_CHUNK])[1:-1]
                       for start in range(0, len(rows), _ROWS_CHUNK))
-        parts.append(",".join(block for block in blocks if block))
+        encoded = []
+        for block in blocks:
+            if block:
+                encoded.append(block)
+            if between_blocks is not None:
+                between_blocks()
+        parts.append(",".join(encoded))
         parts.append(f'],"settings":{dumps(state.settings)}}}')
     parts.append("}}")
     return "".join(parts)
@@ -191,9 +198,10 @@ def check_project(project: Project, kinds: Mapping[str, Any], source: str = "pro
                 from None
 
 
-def save_project(path: str | Path, project: Project) -> None:
+def save_project(path: str | Path, project: Project,
+                 between_blocks: Callable[[], None] | None = None) -> None:
     """Write the project atomically (temp file + rename)."""
-    write_text_atomic(path, project_to_json(project))
+    write_text_atomic(path, project_to_json(project, between_blocks))
 
 
 def load_project(path: str | Path) -> Project:

@@ -13,6 +13,7 @@ import os
 import threading
 import time
 import uuid
+from collections.abc import Callable
 from pathlib import Path
 
 from models.project.file import Project, ProjectFileError, load_project, save_project
@@ -92,14 +93,16 @@ class RecoveryStore:
         with contextlib.suppress(FileNotFoundError):
             self.lock_path.unlink()
 
-    def write(self, project: Project, project_path: str | Path | None = None) -> None:
-        """Autosave ``project`` (safe from a worker thread: one write at a time)."""
+    def write(self, project: Project, project_path: str | Path | None = None,
+              between_blocks: Callable[[], None] | None = None) -> None:
+        """Autosave ``project`` (safe from a worker thread: one write at a time);
+        ``between_blocks`` is called between blocks of rows (see ``project_to_json``)."""
         self.folder.mkdir(parents=True, exist_ok=True)
         project.metadata = dict(project.metadata)
         project.metadata["autosaved_at"] = time.strftime("%Y-%m-%d %H:%M:%S")
         project.metadata["project_path"] = str(project_path) if project_path else ""
         with self._write_lock:
-            save_project(self.path, project)
+            save_project(self.path, project, between_blocks)
 
     def exists(self) -> bool:
         return self.path.is_file()

@@ -245,8 +245,24 @@ class NumericRows:
                 continue
             text = self._json_blocks.get((size, start))
             if text is None:
-                text = self._json_blocks[(size, start)] = dumps(self[start:start + size])[1:-1]
+                text = self._json_blocks[(size, start)] = self._block_json(
+                    start, min(start + size, self.count))
             yield text
+
+    def _block_json(self, start: int, stop: int) -> str:
+        """Rows ``start:stop`` as the elements of a JSON array of text lists, each cell the
+        text it shows (``_text``), made a column at a time by C loops: a million rows in
+        about a third of the time of building the text rows and encoding them."""
+        columns = []
+        for column, data in zip(self.columns, self.values, strict=True):
+            if data is None:
+                columns.append([""] * (stop - start))
+            elif column.kind is ColumnKind.INTEGER:
+                columns.append(list(map(str, map(int, data[start:stop].tolist()))))
+            else:
+                columns.append(list(map(repr, data[start:stop].tolist())))
+        row = "[" + ",".join(['"{}"'] * len(self.columns)) + "]"
+        return ",".join(map(row.format, *columns))
 
     def __iter__(self):
         for r in range(self.count):
