@@ -59,7 +59,7 @@ from widgets.i18n import (
     translated,
 )
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
-from widgets.workers import gui_thread_first, wait_while_analysing
+from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
 
 log = logging.getLogger(__name__)
 
@@ -699,7 +699,9 @@ class MainWindow(QMainWindow):
             self._write_recovery(self.project())
 
     def _write_recovery_in_background(self, project: Project) -> None:
-        with gui_thread_first():  # the window keeps the interpreter every 0.1 ms
+        # the window keeps the interpreter every 0.1 ms; a million new strings would start
+        # full cyclic-GC passes that hold it for a few hundred ms (strings hold no cycles)
+        with gui_thread_first(), cyclic_gc_paused():
             self._write_recovery(project, wait_while_analysing)
 
     def _write_recovery(self, project: Project, between_blocks=None) -> None:

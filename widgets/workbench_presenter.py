@@ -110,7 +110,7 @@ class _ImportTask(QRunnable):
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
-        with cyclic_gc_paused(), gui_thread_first():
+        with cyclic_gc_paused(), gui_thread_first(), analysis_running():
             # a record of plain numbers stays numbers (a column store): a million readings
             # are read in a fraction of a second and never become a million text rows
             parsed = read_numeric(path, kind.columns)

@@ -54,13 +54,26 @@ def gui_thread_first():
 
 @contextlib.contextmanager
 def cyclic_gc_paused():
-    was_enabled = gc.isenabled()
-    gc.disable()
+    """No full cyclic-GC passes while the block runs (an import or an autosave building a
+    million strings, which hold no cycles); counted, so that two such threads at once
+    leave the collector as it was only when the last one ends."""
+    global _GC_PAUSES, _gc_was_enabled
+    with _WORKERS_LOCK:
+        if _GC_PAUSES == 0:
+            _gc_was_enabled = gc.isenabled()
+            gc.disable()
+        _GC_PAUSES += 1
     try:
         yield
     finally:
-        if was_enabled:
-            gc.enable()
+        with _WORKERS_LOCK:
+            _GC_PAUSES -= 1
+            if _GC_PAUSES == 0 and _gc_was_enabled:
+                gc.enable()
+
+
+_GC_PAUSES = 0
+_gc_was_enabled = True
 
 
 _WORKER_POOL: QThreadPool | None = None

@@ -8,6 +8,7 @@ import os
 import stat
 import tempfile
 import time
+from collections.abc import Iterable
 from pathlib import Path
 
 __all__ = ["write_bytes_atomic", "write_text_atomic"]
@@ -37,8 +38,9 @@ def _remove_stale_temps(target: Path) -> None:
                     temp.unlink()
 
 
-def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
-    """Replace ``path`` with ``data`` so that readers see the old or the new file, never half.
+def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[bytes]) -> None:
+    """Replace ``path`` with ``data`` (bytes, or pieces of it written one after another)
+    so that readers see the old or the new file, never half.
 
     The temporary file is created in the target's folder (so the rename stays on
     one file system), flushed and fsync'ed before ``os.replace``. On any error
@@ -53,7 +55,8 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
         with os.fdopen(fd, "wb") as handle:
             if hasattr(os, "fchmod"):  # POSIX
                 os.fchmod(handle.fileno(), _mode_for(target))
-            handle.write(data)
+            for piece in ([data] if isinstance(data, bytes | bytearray) else data):
+                handle.write(piece)
             handle.flush()
             os.fsync(handle.fileno())
         os.replace(tmp_name, target)
@@ -63,6 +66,12 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
         raise
 
 
-def write_text_atomic(path: str | os.PathLike[str], text: str, encoding: str = "utf-8") -> None:
-    """Text version of :func:`write_bytes_atomic`."""
-    write_bytes_atomic(path, text.encode(encoding))
+def write_text_atomic(path: str | os.PathLike[str], text: str | Iterable[str],
+                      encoding: str = "utf-8") -> None:
+    """Text version of :func:`write_bytes_atomic`; pieces of text are encoded and written
+    one by one (a 45 MB project is never one string in memory, nor one long encode that
+    holds the interpreter while a window waits)."""
+    if isinstance(text, str):
+        write_bytes_atomic(path, text.encode(encoding))
+    else:
+        write_bytes_atomic(path, (piece.encode(encoding) for piece in text))

@@ -14,7 +14,7 @@ as it was saved, bad cells included.
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -32,6 +32,7 @@ __all__ = [
     "check_project",
     "load_project",
     "project_from_json",
+    "project_json_parts",
     "project_to_json",
     "save_project",
 ]
@@ -59,37 +60,43 @@ class Project:
 _ROWS_CHUNK = 20_000
 
 
-def project_to_json(project: Project, between_blocks: Callable[[], None] | None = None) -> str:
-    """The project as JSON text. Rows are encoded a block at a time: one call of json's C
-    encoder on a million rows would hold the interpreter for a second, and an autosave
-    thread doing so would freeze the window; between blocks the GUI thread gets its turn,
-    and ``between_blocks()`` is called (an autosave waits there while an analysis runs)."""
+def project_to_json(project: Project) -> str:
+    """The project as JSON text."""
+    return "".join(project_json_parts(project))
+
+
+def project_json_parts(project: Project, between_blocks: Callable[[], None] | None = None
+                       ) -> Iterator[str]:
+    """The project as JSON text, in pieces. Rows are encoded a block at a time: one call
+    of json's C encoder on a million rows would hold the interpreter for a second, and an
+    autosave thread doing so would freeze the window; between blocks the GUI thread gets
+    its turn, and ``between_blocks()`` is called (an autosave waits there while an analysis
+    runs)."""
     def dumps(value) -> str:
         # compact separators keep json's C encoder (an indent would switch to the
         # pure-Python one, 30x slower on a million-row signal file)
         return json.dumps(value, ensure_ascii=False, separators=(",", ":"))
 
-    parts = [f'{{"format":{dumps(FORMAT_NAME)},"schema_version":{SCHEMA_VERSION},'
-             f'"app_version":{dumps(APP_VERSION)},"metadata":{dumps(project.metadata)},'
-             '"workbenches":{']
+    yield (f'{{"format":{dumps(FORMAT_NAME)},"schema_version":{SCHEMA_VERSION},'
+           f'"app_version":{dumps(APP_VERSION)},"metadata":{dumps(project.metadata)},'
+           '"workbenches":{')
     for i, (key, state) in enumerate(project.workbenches.items()):
-        parts.append(("," if i else "") + f'{dumps(str(key))}:{{"rows":[')
+        yield ("," if i else "") + f'{dumps(str(key))}:{{"rows":['
         rows = state.rows
         if hasattr(rows, "json_blocks"):  # a column store: unedited blocks encoded once
             blocks = rows.json_blocks(_ROWS_CHUNK, dumps)
         else:
             blocks = (dumps(rows[start:start + _ROWS_CHUNK])[1:-1]
                       for start in range(0, len(rows), _ROWS_CHUNK))
-        encoded = []
+        first = True
         for block in blocks:
             if block:
-                encoded.append(block)
+                yield block if first else "," + block
+                first = False
             if between_blocks is not None:
                 between_blocks()
-        parts.append(",".join(encoded))
-        parts.append(f'],"settings":{dumps(state.settings)}}}')
-    parts.append("}}")
-    return "".join(parts)
+        yield f'],"settings":{dumps(state.settings)}}}'
+    yield "}}"
 
 
 def project_from_json(text: str, source: str = "project") -> Project:
@@ -201,7 +208,7 @@ def check_project(project: Project, kinds: Mapping[str, Any], source: str = "pro
 def save_project(path: str | Path, project: Project,
                  between_blocks: Callable[[], None] | None = None) -> None:
     """Write the project atomically (temp file + rename)."""
-    write_text_atomic(path, project_to_json(project, between_blocks))
+    write_text_atomic(path, project_json_parts(project, between_blocks))
 
 
 def load_project(path: str | Path) -> Project:
