@@ -246,10 +246,12 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         "the phase of all million samples again (three passes, each a 1M × 7 design) and "
         "fits 16384 periods: most of a second on this machine. The pauses left are the "
         "paints of a new result (pyqtgraph draws the three error panels in ~20–40 ms; a "
-        "first result changes their layout, which paints them two or three times). One load "
-        "in three may show a longer pause (the max column, ~0.27 s); its cause is not "
-        "found yet (a suspect: the first autosave of the new record, encoding a million "
-        "rows in the background).",
+        "first result changes their layout, which paints them two or three times). An "
+        "autosave of a new million-row record runs in the background and steps aside while "
+        "an analysis or an import runs (with it off, an edit with N given took 154 ms and "
+        "the worst pause was 84 ms; beside it, 220 ms and 0.26–0.44 s before it stepped "
+        "aside). One load in three still shows a longer pause (the max column, ~0.3 s) "
+        "whose cause is not found.",
     ]
     report("4-gui", lines, headline=(
         f"Window (offscreen): cold start to the first paint {fmt_time(cold).split(' (')[0]} "
