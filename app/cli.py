@@ -155,21 +155,25 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else [])
     if args.table and kind.correction_table is None:
-        _say(f"anglebench analyze: --table: {kind.title} has no correction table")
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: --table: {workbench} has no "
+                                         "correction table"), workbench=message(kind.title)),
+                      words))
         return EXIT_BAD_INPUT
     outputs = (("--certificate", args.certificate), ("--results", args.results),
                ("--table", args.table))
     for flag, out in outputs:
         clash = next((i for i in inputs if out and _same_file(out, i)), None)
         if clash:
-            _say(f"anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: "
-                 "choose another name")
+            _say(rendered(message(QT_TR_NOOP("anglebench analyze: {flag} {out} is an input "
+                                             "({clash}); nothing was written: choose another "
+                                             "name"), flag=flag, out=out, clash=clash), words))
             return EXIT_BAD_INPUT
     named = [(flag, out) for flag, out in outputs if out]
     for i, (flag, out) in enumerate(named):
         twin = next((f for f, o in named[i + 1:] if _same_file(out, o)), None)
         if twin:
-            _say(f"anglebench analyze: {flag} and {twin} name the same file")
+            _say(rendered(message(QT_TR_NOOP("anglebench analyze: {flag} and {twin} name the same "
+                                             "file"), flag=flag, twin=twin), words))
             return EXIT_BAD_INPUT
     try:
         mapping = _column_mapping(args.columns)
@@ -219,12 +223,14 @@ def run_analyze(argv: list[str]) -> int:
         try:
             what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table)
         except ValueError as exc:
-            _say(f"anglebench analyze: --table: {exc}")
+            _say(f"anglebench analyze: --table: {why(exc)}")
             return EXIT_BAD_INPUT
         except OSError as exc:
-            _say(f"anglebench analyze: cannot write {args.table}: {exc}")
+            _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
+                                  path=args.table, reason=str(exc)), words))
             return 1
-        _say(f"{what[0].upper() + what[1:]} written to {args.table}")
+        _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
+                              path=args.table), words))
     if args.certificate or args.results:
         # the register keeps the readings as written: read as text when one is issued
         return _export(args, kind, result, settings,

@@ -390,8 +390,8 @@ def summary(result: FringeResult) -> str:
 
 def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
     write_correction_table(path, result)
-    return (f"correction table, {result.table.size} entries "
-            f"({'C header' if str(path).endswith('.h') else 'CSV'})")
+    return message(QT_TR_NOOP("Correction table, {n} entries (C header)") if str(path).endswith(".h")
+                   else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
 
 
 FRINGE = AnalysisKind(

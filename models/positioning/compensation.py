@@ -34,10 +34,10 @@ __all__ = ["LINUXCNC_MAX_POINTS", "CompensationTable", "compensation_table",
            "compensation_csv", "linuxcnc_comp_file", "write_compensation"]
 
 LINUXCNC_MAX_POINTS = 256
-FORMS = {"separate": "separate tables for the forward and the backward approach",
-         "bidirectional": "one table from the bidirectional mean (x_up + x_down)/2",
-         "forward only": "forward approach only (the backward was not measured)",
-         "backward only": "backward approach only (the forward was not measured)"}
+FORMS = {"separate": QT_TR_NOOP("separate tables for the forward and the backward approach"),
+         "bidirectional": QT_TR_NOOP("one table from the bidirectional mean (x_up + x_down)/2"),
+         "forward only": QT_TR_NOOP("forward approach only (the backward was not measured)"),
+         "backward only": QT_TR_NOOP("backward approach only (the forward was not measured)")}
 MAX_POINTS = 100_000
 
 
@@ -82,9 +82,9 @@ def compensation_table(result: PositioningResult, step: float = 0.0,
                 QT_TR_NOOP("a step of {step} gives {count} points; at most {max_points}"),
                 step=f"{step:g}", count=count, max_points=MAX_POINTS))
         grid = positions[0] + step * np.arange(count)
-        spacing = f"uniform step {step:g}"
+        spacing = message(QT_TR_NOOP("uniform step {step}"), step=f"{step:g}")
     else:
-        grid, spacing = positions.copy(), "at the targets"
+        grid, spacing = positions.copy(), message(QT_TR_NOOP("at the targets"))
     iso = result.iso
     if tables == "bidirectional":
         if not result.bidirectional:
@@ -157,11 +157,12 @@ def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
     table = compensation_table(result, step, tables)
     if fmt == "linuxcnc":
         text = linuxcnc_comp_file(table)
-        what = (f"LinuxCNC compensation file (COMP_FILE_TYPE = 0), {table.positions.size} "
-                f"points in {table.target_unit}")
+        what = message(QT_TR_NOOP("LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points "
+                                  "in {unit}"), n=table.positions.size, unit=table.target_unit)
     else:
         text = compensation_csv(table)
-        what = (f"compensation table, {table.positions.size} points "
-                f"({FORMS[table.form]}, {table.spacing})")
+        what = message(QT_TR_NOOP("Compensation table, {n} points ({form}, {spacing})"),
+                       n=table.positions.size, form=message(FORMS[table.form]),
+                       spacing=table.spacing)
     write_text_atomic(path, text)
     return what

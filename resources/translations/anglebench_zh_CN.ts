@@ -3074,6 +3074,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>补偿后（{entries} 项修正表，以相位 0 处为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
     </message>
     <message>
+        <source>Correction table, {n} entries (C header)</source>
+        <translation>修正表，{n} 项（C 头文件）</translation>
+    </message>
+    <message>
+        <source>Correction table, {n} entries (CSV)</source>
+        <translation>修正表，{n} 项（CSV）</translation>
+    </message>
+    <message>
         <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
         <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
     </message>
@@ -3489,6 +3497,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
     <message>
+        <source>anglebench analyze: --table: {workbench} has no correction table</source>
+        <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: choose another name</source>
+        <translation>anglebench analyze：{flag} {out} 是输入文件（{clash}）；未写入任何文件：请另选文件名</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {flag} and {twin} name the same file</source>
+        <translation>anglebench analyze：{flag} 和 {twin} 指向同一个文件</translation>
+    </message>
+    <message>
         <source> (and {n} more bad cell(s))</source>
         <translation>（另有 {n} 个无法读取的单元格）</translation>
     </message>
@@ -3499,6 +3519,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Warning: {warning}</source>
         <translation>警告：{warning}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: cannot write {path}: {reason}</source>
+        <translation>anglebench analyze：无法写入 {path}：{reason}</translation>
+    </message>
+    <message>
+        <source>{what} written to {path}</source>
+        <translation>{what}已写入 {path}</translation>
     </message>
     <message>
         <source>error = indicated − reference (VIM); correction = −error</source>
@@ -3731,12 +3759,32 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{key} 必须在 {zero}{low} 至 {high}{value} 之间，而不是 {value2}</translation>
     </message>
     <message>
+        <source>separate tables for the forward and the backward approach</source>
+        <translation>正向和反向趋近各一张表</translation>
+    </message>
+    <message>
+        <source>one table from the bidirectional mean (x_up + x_down)/2</source>
+        <translation>由双向平均值 (x_up + x_down)/2 得出的一张表</translation>
+    </message>
+    <message>
+        <source>forward approach only (the backward was not measured)</source>
+        <translation>仅正向趋近（未测反向）</translation>
+    </message>
+    <message>
+        <source>backward approach only (the forward was not measured)</source>
+        <translation>仅反向趋近（未测正向）</translation>
+    </message>
+    <message>
         <source>a step of {step} leaves fewer than two points over the targets {positions}…{positions2}</source>
         <translation>步距 {step} 在目标 {positions}…{positions2} 范围内不足两个点</translation>
     </message>
     <message>
         <source>a step of {step} gives {count} points; at most {max_points}</source>
         <translation>步距 {step} 得到 {count} 个点；最多 {max_points} 个</translation>
+    </message>
+    <message>
+        <source>uniform step {step}</source>
+        <translation>等步距 {step}</translation>
     </message>
     <message>
         <source>a bidirectional table needs both approach directions; this run has one: export separate tables</source>
@@ -3761,6 +3809,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a larger step</source>
         <translation>{size} 个点；LinuxCNC 每个关节最多 {linuxcnc_max_points} 个：请选择更大的步距</translation>
+    </message>
+    <message>
+        <source>LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points in {unit}</source>
+        <translation>LinuxCNC 补偿文件（COMP_FILE_TYPE = 0），{n} 个点，单位 {unit}</translation>
+    </message>
+    <message>
+        <source>Compensation table, {n} points ({form}, {spacing})</source>
+        <translation>补偿表，{n} 个点（{form}，{spacing}）</translation>
     </message>
     <message>
         <source>{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again</source>
@@ -3951,6 +4007,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>a calibration interval is a positive number of days</source>
         <translation>校准间隔必须是正的天数</translation>
+    </message>
+    <message>
+        <source>Cannot export the compensation table</source>
+        <translation>无法导出补偿表</translation>
+    </message>
+    <message>
+        <source>{what} written</source>
+        <translation>{what}已写入</translation>
     </message>
 </context>
 </TS>
