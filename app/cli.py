@@ -7,6 +7,7 @@ and one line on stderr naming the file, the row and what is wrong.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import sys
@@ -30,6 +31,42 @@ EXIT_BAD_INPUT = 2
 def _say(message: str) -> None:
     """One line on stderr, whatever the message holds."""
     sys.stderr.write(one_line(message, 1000) + "\n")
+
+
+#: argparse's own words when it refuses a command line, for the translators (argparse looks
+#: them up through gettext; ``_argparse_speaking`` hands them to our catalogue instead)
+_ARGPARSE_WORDS = (
+    QT_TR_NOOP("the following arguments are required: %s"),
+    QT_TR_NOOP("unrecognized arguments: %s"),
+    QT_TR_NOOP("argument %(argument_name)s: %(message)s"),
+    QT_TR_NOOP("invalid choice: %(value)r (choose from %(choices)s)"),
+    QT_TR_NOOP("invalid %(type)s value: %(value)r"),
+    QT_TR_NOOP("expected one argument"),
+    QT_TR_NOOP("expected at most one argument"),
+    QT_TR_NOOP("expected at least one argument"),
+    QT_TR_NOOP("ambiguous option: %(option)s could match %(matches)s"),
+    QT_TR_NOOP("ignored explicit argument %r"),
+    QT_TR_NOOP("not allowed with argument %s"),
+)
+
+
+@contextlib.contextmanager
+def _argparse_speaking(argv: list[str]):
+    """argparse's refusals in the language the command line asks for (``--language``)."""
+    language = next((argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--language"),
+                    next((a.split("=", 1)[1] for a in argv if a.startswith("--language=")),
+                         "en"))
+    if language != "zh_CN":
+        yield
+        return
+    words = translator(language)
+    saved = argparse._, argparse.ngettext
+    argparse._ = words
+    argparse.ngettext = lambda one, many, n: words(one if n == 1 else many)
+    try:
+        yield
+    finally:
+        argparse._, argparse.ngettext = saved
 
 
 class _Parser(argparse.ArgumentParser):
@@ -100,12 +137,14 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
             continue
         parameter = next((p for k, p in owners if k == args.kind), None)
         if parameter is None:
-            raise SettingsError(f"{flag} applies to {' and '.join(k for k, _ in owners)}, not "
-                                f"{args.kind}")
+            raise SettingsError(message(QT_TR_NOOP("{flag} applies to {kinds}, not {kind}"),
+                                        flag=flag, kinds=" and ".join(k for k, _ in owners),
+                                        kind=args.kind))
         settings[parameter.key] = parameter.from_text(text)
     if args.zenith:
         if args.kind != "theodolite":
-            raise SettingsError(f"--zenith applies to theodolite, not {args.kind}")
+            raise SettingsError(message(QT_TR_NOOP("--zenith applies to theodolite, not {kind}"),
+                                        kind=args.kind))
         settings["vertical_reading"] = "zenith"
     return settings
 
@@ -141,7 +180,8 @@ def _finite(value: Any) -> Any:
 
 
 def run_analyze(argv: list[str]) -> int:
-    args = _parser().parse_args(argv)
+    with _argparse_speaking(argv):
+        args = _parser().parse_args(argv)
     kind = KINDS[args.kind]
     words = translator(args.language)
 
@@ -270,20 +310,26 @@ def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     from models.register.location import register_url
     from models.register.store import Register, RegisterError
 
+    words = translator(args.language)
     try:
         with Register(register_url()) as register:
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
                                        Path(args.file).name, args.certificate)
     except RegisterError as exc:
-        _say(f"anglebench analyze: {exc}; no certificate was written")
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
+                                         "written"), reason=reason_of(exc)), words))
         return None
     except IssuedNotWritten as exc:
-        _say(f"anglebench analyze: certificate {exc.record.number} is issued and recorded, but "
-             f"{exc}: save it with 'anglebench register show {exc.record.number} --pdf OUT.pdf'")
+        _say(rendered(message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued and recorded, but {reason}: save "
+            "it with 'anglebench register show {number} --pdf OUT.pdf'"),
+            number=exc.record.number, reason=str(exc)), words))
         return None
-    _say(f"Certificate {record.number} issued: written to {args.certificate} and recorded in "
-         f"the register (sha256 {record.pdf_sha256[:16]}…)")
+    _say(rendered(message(QT_TR_NOOP("Certificate {number} issued: written to {path} and "
+                                     "recorded in the register (sha256 {sha}…)"),
+                          number=record.number, path=args.certificate,
+                          sha=record.pdf_sha256[:16]), words))
     return record
 
 
@@ -311,16 +357,20 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                 return EXIT_BAD_INPUT
         elif args.certificate:
             write_certificate_pdf(args.certificate, document)
-            _say(f"Certificate written to {args.certificate} (DRAFT: "
-                 + ", ".join(metadata.missing_fields()) + " missing; nothing was recorded in "
-                 "the register)")
+            _say(rendered(message(QT_TR_NOOP(
+                "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
+                "in the register)"), path=args.certificate, fields=joined(
+                    part for i, name in enumerate(metadata.missing_fields())
+                    for part in ((", " if i else ""), message(name)))), words))
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])
             else:
                 write_results_csv(args.results, document, ANGLE_UNITS[args.unit])
-            _say(f"Results written to {args.results}")
+            _say(rendered(message(QT_TR_NOOP("Results written to {path}"), path=args.results),
+                          words))
     except (OSError, ValueError) as exc:
-        _say(f"anglebench analyze: cannot write: {exc}")
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write: {reason}"),
+                              reason=reason_of(exc)), words))
         return 1
     return 0

@@ -248,8 +248,9 @@ def test_every_translation_keeps_its_figures():
     would vanish from a certificate or a message."""
     for element in ET.parse(translations.TS_FILE).iter("message"):
         source, translation = element.findtext("source"), element.findtext("translation") or ""
-        assert sorted(re.findall(r"\{[^}]*\}", source)) == sorted(
-            re.findall(r"\{[^}]*\}", translation)), source
+        for figure in (r"\{[^}]*\}", r"%\([a-z_]+\)[sr]|%[sr]"):  # ours, and argparse's
+            assert sorted(re.findall(figure, source)) == sorted(
+                re.findall(figure, translation)), source
 
 
 REFUSED = [  # (workbench, file's bytes, names it holds or asks for): input that is refused
@@ -290,3 +291,22 @@ def test_a_refused_analysis_says_why_in_the_chinese_window(chinese):
     assert "u_sin" in summary and re.search("[\u4e00-\u9fff]", summary)
     assert english_words(summary) == set(), summary
     fringe.undo_stack.undo()
+
+
+def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
+    """argparse's refusal and the line after a draft certificate is written, in Chinese."""
+    from app.main import main
+
+    with pytest.raises(SystemExit) as refused:
+        main(["analyze", "sextant", "x.csv", "--language", "zh_CN"])
+    said = capsys.readouterr().err.strip()
+    assert refused.value.code == 2 and "无效的选项" in said and "'sextant'" in said
+    with pytest.raises(SystemExit):
+        main(["analyze", "sextant", "x.csv"])
+    assert "invalid choice: 'sextant'" in capsys.readouterr().err  # English as before
+    out = tmp_path / "draft.pdf"
+    assert main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                 "--certificate", str(out), "--language", "zh_CN"]) == 0
+    said = capsys.readouterr().err.strip()
+    assert said.startswith(f"证书已写入 {out}（草稿：缺少证书编号, 校准机构")
+    assert english_words(said.replace(str(out), "")) == set(), said

@@ -3497,6 +3497,59 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
     <message>
+        <source>the following arguments are required: %s</source>
+        <extracomment>argparse&apos;s own words when it refuses a command line, for the translators (argparse looks them up through gettext; ``_argparse_speaking`` hands them to our catalogue instead)</extracomment>
+        <translation>缺少以下参数：%s</translation>
+    </message>
+    <message>
+        <source>unrecognized arguments: %s</source>
+        <translation>无法识别的参数：%s</translation>
+    </message>
+    <message>
+        <source>argument %(argument_name)s: %(message)s</source>
+        <translation>参数 %(argument_name)s：%(message)s</translation>
+    </message>
+    <message>
+        <source>invalid choice: %(value)r (choose from %(choices)s)</source>
+        <translation>无效的选项：%(value)r（可选 %(choices)s）</translation>
+    </message>
+    <message>
+        <source>invalid %(type)s value: %(value)r</source>
+        <translation>无效的 %(type)s 值：%(value)r</translation>
+    </message>
+    <message>
+        <source>expected one argument</source>
+        <translation>需要一个参数值</translation>
+    </message>
+    <message>
+        <source>expected at most one argument</source>
+        <translation>最多需要一个参数值</translation>
+    </message>
+    <message>
+        <source>expected at least one argument</source>
+        <translation>至少需要一个参数值</translation>
+    </message>
+    <message>
+        <source>ambiguous option: %(option)s could match %(matches)s</source>
+        <translation>有歧义的选项：%(option)s 可匹配 %(matches)s</translation>
+    </message>
+    <message>
+        <source>ignored explicit argument %r</source>
+        <translation>忽略了明确给出的参数值 %r</translation>
+    </message>
+    <message>
+        <source>not allowed with argument %s</source>
+        <translation>不能与参数 %s 同时使用</translation>
+    </message>
+    <message>
+        <source>{flag} applies to {kinds}, not {kind}</source>
+        <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
+    </message>
+    <message>
+        <source>--zenith applies to theodolite, not {kind}</source>
+        <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
+    </message>
+    <message>
         <source>anglebench analyze: --table: {workbench} has no correction table</source>
         <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
     </message>
@@ -3527,6 +3580,26 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{what} written to {path}</source>
         <translation>{what}已写入 {path}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {reason}; no certificate was written</source>
+        <translation>anglebench analyze：{reason}；未写入证书</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
+        <translation>anglebench analyze：证书 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
+    </message>
+    <message>
+        <source>Certificate {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
+        <translation>证书 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
+    </message>
+    <message>
+        <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
+        <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: cannot write: {reason}</source>
+        <translation>anglebench analyze：无法写入：{reason}</translation>
     </message>
     <message>
         <source>error = indicated − reference (VIM); correction = −error</source>
