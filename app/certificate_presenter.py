@@ -19,8 +19,7 @@ from typing import Any, Protocol
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, AngleUnit
-from models.messages import reason_of
-from widgets.i18n import tr, translated
+from widgets.i18n import explained, tr
 
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
@@ -187,7 +186,7 @@ class CertificatePresenter:
                                revision, note)
         except (OSError, ValueError) as exc:
             self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
-                           .format(path=path, reason=translated(reason_of(exc))))
+                           .format(path=path, reason=explained(exc)))
             return False
         finally:
             self.view.wait_cursor(False)
@@ -206,7 +205,7 @@ class CertificatePresenter:
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(
-                    reason=translated(reason_of(exc))))
+                    reason=explained(exc)))
             return False
         except IssuedNotWritten as exc:  # committed: the record and its PDF are in the register
             self.view.tell(tr("Issued, but the file was not written"), tr(
@@ -236,7 +235,7 @@ class CertificatePresenter:
             else:
                 write_results_csv(path, document, unit)
         except (OSError, ValueError) as exc:
-            self.view.tell(tr("Cannot export"), f"{path}: {translated(reason_of(exc))}")
+            self.view.tell(tr("Cannot export"), f"{path}: {explained(exc)}")
             return False
         self.view.show_status(tr("Results written to {path}").format(path=path), 8000)
         return True

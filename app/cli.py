@@ -75,6 +75,11 @@ class _Parser(argparse.ArgumentParser):
         raise SystemExit(EXIT_BAD_INPUT)
 
 
+def _why(exc: BaseException, words) -> str:
+    """What went wrong, in the language of ``words`` (a translator)."""
+    return rendered(reason_of(exc), words)
+
+
 def _parser() -> argparse.ArgumentParser:
     p = _Parser(prog="anglebench analyze", description="Analyse a readings file")
     p.add_argument("kind", choices=sorted(KINDS))
@@ -185,13 +190,10 @@ def run_analyze(argv: list[str]) -> int:
     kind = KINDS[args.kind]
     words = translator(args.language)
 
-    def why(exc: Exception) -> str:  # what went wrong, in the language asked for
-        return rendered(reason_of(exc), words)
-
     try:
         settings = _settings_from(args)
     except SettingsError as exc:
-        _say(f"anglebench analyze: {why(exc)}")
+        _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else [])
     if args.table and kind.correction_table is None:
@@ -218,7 +220,7 @@ def run_analyze(argv: list[str]) -> int:
     try:
         mapping = _column_mapping(args.columns)
     except TableImportError as exc:
-        _say(why(exc))
+        _say(_why(exc, words))
         return EXIT_BAD_INPUT
     # a file of plain numbers is read by numpy in one pass; anything else (or a file that
     # is not what it claims) by the tolerant reader, which names the row and the cell
@@ -228,7 +230,7 @@ def run_analyze(argv: list[str]) -> int:
         try:
             table, rows = _read_rows(args.file, kind, mapping)
         except TableImportError as exc:
-            _say(why(exc))
+            _say(_why(exc, words))
             return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
     if parsed.errors:
@@ -243,10 +245,10 @@ def run_analyze(argv: list[str]) -> int:
     try:
         result = kind.analyze(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
-        _say(f"anglebench analyze: {why(exc)}")
+        _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     except ValueError as exc:
-        _say(f"{args.file}: {why(exc)}")
+        _say(f"{args.file}: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     if args.json:
         sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
@@ -263,7 +265,7 @@ def run_analyze(argv: list[str]) -> int:
         try:
             what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table)
         except ValueError as exc:
-            _say(f"anglebench analyze: --table: {why(exc)}")
+            _say(f"anglebench analyze: --table: {_why(exc, words)}")
             return EXIT_BAD_INPUT
         except OSError as exc:
             _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
@@ -343,12 +345,12 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     try:
         metadata = _read_metadata(args.metadata)
     except MetadataError as exc:
-        _say(f"anglebench analyze: {rendered(reason_of(exc), words)}")
+        _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     try:
         document = kind.certificate_document(result, metadata, Path(args.file).name, settings)
     except MetadataError as exc:
-        _say(f"anglebench analyze: {rendered(reason_of(exc), words)}")
+        _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     try:
         if args.certificate and not draft_reasons(metadata):

@@ -32,7 +32,6 @@ from app.certificate_presenter import CertificatePresenter
 from models import __version__
 from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS, AngleUnit
-from models.messages import reason_of
 from models.project.file import (
     Project,
     ProjectFileError,
@@ -51,12 +50,12 @@ from widgets.i18n import (
     LANGUAGES,
     Tr,
     declared,
+    explained,
     install_language,
     live,
     on_language_change,
     resolve_language,
     tr,
-    translated,
 )
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
@@ -460,7 +459,7 @@ class MainWindow(QMainWindow):
         try:
             presenter.import_file(path)
         except TableImportError as exc:
-            self.tell(tr("Cannot import"), translated(reason_of(exc)))
+            self.tell(tr("Cannot import"), explained(exc))
             return False
         self.statusBar().showMessage(
             tr("Imported {path} (Edit › Undo restores the old readings)").format(path=path), 8000)
@@ -544,7 +543,7 @@ class MainWindow(QMainWindow):
             check_project(project, {p.kind.key: p.kind for p in self.presenters},
                           "the register's record")
         except ProjectFileError as exc:
-            self.tell(tr("Cannot open"), translated(reason_of(exc)))
+            self.tell(tr("Cannot open"), explained(exc))
             return False
         self.apply_project(project)
         self.project_path = None

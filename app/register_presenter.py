@@ -12,9 +12,8 @@ from typing import Protocol
 from PySide6.QtCore import QT_TR_NOOP
 
 from app.certificate_presenter import CertificatePresenter, PendingRevision
-from models.messages import reason_of
 from models.register.store import CertificateRecord, RegisterError
-from widgets.i18n import tr, translated
+from widgets.i18n import explained, tr
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
@@ -70,7 +69,7 @@ class RegisterPresenter:
                 self.records = register.list(self.search)
         except RegisterError as exc:
             self.records = []
-            self.view.tell(tr("Register"), translated(reason_of(exc)))
+            self.view.tell(tr("Register"), explained(exc))
         self.view.show_records(COLUMNS, [
             (r.number, r.status, r.revision, r.issue_date, r.calibration_date, r.workbench,
              r.item_serial, r.customer) for r in self.records])
@@ -129,7 +128,7 @@ class RegisterPresenter:
             with self._register() as register:
                 write_bytes_atomic(path, register.pdf(record.number))
         except (RegisterError, OSError) as exc:
-            self.view.tell(tr("Cannot save"), translated(reason_of(exc)))
+            self.view.tell(tr("Cannot save"), explained(exc))
             return False
         return True
 
@@ -143,7 +142,7 @@ class RegisterPresenter:
                 pdf = register.pdf(record.number)
             return self.view.print_certificate(pdf, record.number)
         except (RegisterError, OSError) as exc:
-            self.view.tell(tr("Cannot print"), translated(reason_of(exc)))
+            self.view.tell(tr("Cannot print"), explained(exc))
             return 0
 
     def verify_pdf(self) -> CertificateRecord | None:
@@ -156,7 +155,7 @@ class RegisterPresenter:
             with self._register() as register:
                 record = register.verify(data)
         except (OSError, RegisterError) as exc:
-            self.view.tell(tr("Cannot verify"), translated(reason_of(exc)))
+            self.view.tell(tr("Cannot verify"), explained(exc))
             return None
         if record is None:
             self.view.tell(tr("Not in the register"), tr(
@@ -194,6 +193,6 @@ class RegisterPresenter:
             with self._register() as register:
                 register.set_interval(serial, days or None)
         except RegisterError as exc:
-            self.view.tell(tr("Register"), translated(reason_of(exc)))
+            self.view.tell(tr("Register"), explained(exc))
             return
         self._history(serial)

@@ -27,10 +27,10 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
-from models.messages import TRANSLATIONS_DIR, declared_text, rendered
+from models.messages import TRANSLATIONS_DIR, declared_text, reason_of, rendered
 
-__all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "install_language", "live", "on_language_change",
-           "resolve_language", "tr", "translated"]
+__all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "explained", "install_language", "live",
+           "on_language_change", "resolve_language", "tr", "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
@@ -65,6 +65,11 @@ def translated(text: str) -> str:
     """A result text of the models (models.messages.Message) in the window's language:
     its template translated and filled with the same figures; plain text as it is."""
     return rendered(text, lambda template: QCoreApplication.translate("", template))
+
+
+def explained(exc: BaseException) -> str:
+    """Why ``exc`` was raised, in the window's language (its Message template translated)."""
+    return translated(reason_of(exc))
 
 
 def declared(source: str) -> Tr:

@@ -30,7 +30,7 @@ from models.readings.tabular_import import (
     map_columns,
     read_table,
 )
-from widgets.i18n import on_language_change, tr, translated
+from widgets.i18n import explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import (
@@ -121,10 +121,10 @@ class _ImportTask(QRunnable):
             try:
                 rows = map_columns(read_table(path), kind.columns)
             except MissingColumnError as exc:  # mapped on the GUI thread, with the user
-                emit_if_alive(signals.imported, exc, path, translated(reason_of(exc)), generation)
+                emit_if_alive(signals.imported, exc, path, explained(exc), generation)
                 return
             except TableImportError as exc:
-                emit_if_alive(signals.imported, None, path, translated(reason_of(exc)),
+                emit_if_alive(signals.imported, None, path, explained(exc),
                               generation)
                 return
             gc.freeze()  # keep the new rows out of later full passes too
@@ -333,7 +333,7 @@ class WorkbenchPresenter(QObject):
             try:
                 self.import_file(path)
             except TableImportError as exc:
-                self.import_failed.emit(translated(reason_of(exc)))
+                self.import_failed.emit(explained(exc))
             return
         self._import_pending = True
         self._set_busy(True, tr("Reading {name} …").format(name=Path(path).name))
@@ -344,7 +344,7 @@ class WorkbenchPresenter(QObject):
         the user gives none. Raises TableImportError for a mapping the file cannot take."""
         table = exc.table
         mapping = self.view.ask_column_mapping(self.kind.columns, list(table.header or []),
-                                               table.rows[:8], translated(reason_of(exc)))
+                                               table.rows[:8], explained(exc))
         if not mapping:
             return None
         return map_columns(table, self.kind.columns, mapping)
@@ -364,7 +364,7 @@ class WorkbenchPresenter(QObject):
             try:
                 rows = self._rows_by_mapping(rows)
             except TableImportError as exc:
-                rows, error = None, translated(reason_of(exc))
+                rows, error = None, explained(exc)
         if rows is None or len(rows) <= THREAD_THRESHOLD_ROWS:
             self._set_busy(False)  # a large sheet stays "busy" into its analysis: no
             #                        repaint of the old plots in between

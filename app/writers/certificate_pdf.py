@@ -28,7 +28,15 @@ from fpdf.fonts import FontFace
 
 from models import __version__
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
-from models.messages import QT_TR_NOOP, declared_text, joined, message, rendered, translator
+from models.messages import (
+    QT_TR_NOOP,
+    Message,
+    declared_text,
+    joined,
+    message,
+    rendered,
+    translator,
+)
 from models.project.atomic_write import write_bytes_atomic
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.conformity import uncertainty_decimals
@@ -133,9 +141,7 @@ def _say(language: str):
     words = translator("zh_CN")
 
     def say(text: str) -> str:
-        if hasattr(text, "template") or getattr(text, "parts", ()):
-            return rendered(text, words)
-        return declared_text(text, words)
+        return rendered(text, words) if isinstance(text, Message) else declared_text(text, words)
 
     return say
 
@@ -623,9 +629,7 @@ def _stop(document: CertificateDocument) -> str:
 def _translatable(text: str) -> str:
     """``text`` as a part of a composed text that a Chinese certificate translates: a
     :class:`Message` as it is, any other text looked up whole."""
-    if hasattr(text, "template") or getattr(text, "parts", ()):
-        return text
-    return message(text) if text else text
+    return text if isinstance(text, Message) or not text else message(text)
 
 
 def _between(separator: str, parts) -> list:

@@ -196,14 +196,19 @@ class NumericRows:
     def __len__(self) -> int:
         return self.count
 
-    def _text(self, r: int, c: int) -> str:
+    def _texts(self, c: int, start: int, stop: int) -> list[str]:
+        """Column ``c``'s cells ``start:stop`` as the text they show: a blank column's
+        empty, a whole number's digits, any other number's shortest text that gives it back
+        (one C loop a column: a million cells in a fraction of a second)."""
         data = self.values[c]
         if data is None:
-            return ""
-        value = float(data[r])
+            return [""] * (stop - start)
         if self.columns[c].kind is ColumnKind.INTEGER:
-            return str(int(value))
-        return repr(value)
+            return list(map(str, map(int, data[start:stop].tolist())))
+        return list(map(repr, data[start:stop].tolist()))
+
+    def _text(self, r: int, c: int) -> str:
+        return self._texts(c, r, r + 1)[0]
 
     def cell(self, r: int, c: int) -> str:
         row = self.edited.get(r)
@@ -251,16 +256,9 @@ class NumericRows:
 
     def _block_json(self, start: int, stop: int) -> str:
         """Rows ``start:stop`` as the elements of a JSON array of text lists, each cell the
-        text it shows (``_text``), made a column at a time by C loops: a million rows in
-        about a third of the time of building the text rows and encoding them."""
-        columns = []
-        for column, data in zip(self.columns, self.values, strict=True):
-            if data is None:
-                columns.append([""] * (stop - start))
-            elif column.kind is ColumnKind.INTEGER:
-                columns.append(list(map(str, map(int, data[start:stop].tolist()))))
-            else:
-                columns.append(list(map(repr, data[start:stop].tolist())))
+        text it shows, made a column at a time: a million rows in about a third of the time
+        of building the text rows and encoding them."""
+        columns = [self._texts(c, start, stop) for c in range(len(self.columns))]
         row = "[" + ",".join(['"{}"'] * len(self.columns)) + "]"
         return ",".join(map(row.format, *columns))
 

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 from models.display_units import table_in_unit
-from models.messages import reason_of
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
 from models.positioning.model import PositioningResult
-from widgets.i18n import tr, translated
+from widgets.i18n import explained, tr, translated
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
 
@@ -46,7 +45,7 @@ class PositioningPresenter(WorkbenchPresenter):
             what = self.kind.correction_table(self.result, self._settings, path)
         except (ValueError, OSError) as exc:
             self.view.tell(tr("Cannot export the compensation table"),
-                           translated(reason_of(exc)))
+                           explained(exc))
             return ""
         self.view.show_status(tr("{what} written").format(what=translated(what)))
         return what
