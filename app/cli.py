@@ -1,13 +1,13 @@
 """``anglebench analyze KIND FILE``: analyse a CSV without a window.
 
 Prints a readable summary, or JSON with ``--json``. Bad input: exit status 2
-and one line on stderr naming the file, the row and what is wrong.
+and one line on stderr naming the file, the row and what is wrong. Everything it says,
+its help included, is in the language of ``--language`` (default: the system's).
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
 import json
 import math
 import sys
@@ -15,64 +15,17 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
+from app.command_line import say as _say
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
-from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered, translator
+from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.readings.numeric_csv import read_numeric
-from models.readings.sheet import ReadingsSheet, one_line
+from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 from models.registry import KINDS
-
-EXIT_BAD_INPUT = 2
-
-
-def _say(message: str) -> None:
-    """One line on stderr, whatever the message holds."""
-    sys.stderr.write(one_line(message, 1000) + "\n")
-
-
-#: argparse's own words when it refuses a command line, for the translators (argparse looks
-#: them up through gettext; ``_argparse_speaking`` hands them to our catalogue instead)
-_ARGPARSE_WORDS = (
-    QT_TR_NOOP("the following arguments are required: %s"),
-    QT_TR_NOOP("unrecognized arguments: %s"),
-    QT_TR_NOOP("argument %(argument_name)s: %(message)s"),
-    QT_TR_NOOP("invalid choice: %(value)r (choose from %(choices)s)"),
-    QT_TR_NOOP("invalid %(type)s value: %(value)r"),
-    QT_TR_NOOP("expected one argument"),
-    QT_TR_NOOP("expected at most one argument"),
-    QT_TR_NOOP("expected at least one argument"),
-    QT_TR_NOOP("ambiguous option: %(option)s could match %(matches)s"),
-    QT_TR_NOOP("ignored explicit argument %r"),
-    QT_TR_NOOP("not allowed with argument %s"),
-)
-
-
-@contextlib.contextmanager
-def _argparse_speaking(argv: list[str]):
-    """argparse's refusals in the language the command line asks for (``--language``)."""
-    language = next((argv[i + 1] for i, a in enumerate(argv[:-1]) if a == "--language"),
-                    next((a.split("=", 1)[1] for a in argv if a.startswith("--language=")),
-                         "en"))
-    if language != "zh_CN":
-        yield
-        return
-    words = translator(language)
-    saved = argparse._, argparse.ngettext
-    argparse._ = words
-    argparse.ngettext = lambda one, many, n: words(one if n == 1 else many)
-    try:
-        yield
-    finally:
-        argparse._, argparse.ngettext = saved
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str):  # one line, exit 2, no usage dump
-        _say(f"anglebench analyze: {message}")
-        raise SystemExit(EXIT_BAD_INPUT)
 
 
 def _why(exc: BaseException, words) -> str:
@@ -80,41 +33,51 @@ def _why(exc: BaseException, words) -> str:
     return rendered(reason_of(exc), words)
 
 
-def _parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="anglebench analyze", description="Analyse a readings file")
-    p.add_argument("kind", choices=sorted(KINDS))
-    p.add_argument("file")
-    p.add_argument("--json", action="store_true", help="print JSON instead of a summary")
-    p.add_argument("--certificate", metavar="OUT.pdf", help="also write a test certificate")
+def _parser(words) -> argparse.ArgumentParser:
+    """The command line, its help in the language of ``words`` (a translator)."""
+    p = Parser(prog="anglebench analyze", description=words(QT_TR_NOOP("Analyse a readings file")))
+    p.add_argument("kind", choices=sorted(KINDS), help=words(QT_TR_NOOP("the workbench")))
+    p.add_argument("file", help=words(QT_TR_NOOP("the readings (CSV, TSV, XLSX)")))
+    p.add_argument("--json", action="store_true",
+                   help=words(QT_TR_NOOP("print JSON instead of a summary")))
+    p.add_argument("--certificate", metavar="OUT.pdf",
+                   help=words(QT_TR_NOOP("also write a test certificate")))
     p.add_argument("--metadata", metavar="META.json",
-                   help="certificate metadata (lab, customer, item, standards…); without it "
-                        "the certificate is marked DRAFT")
+                   help=words(QT_TR_NOOP("certificate metadata (lab, customer, item, "
+                                         "standards…); without it the certificate is marked "
+                                         "DRAFT")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
-                   help="also write the results per point (with U) as CSV or XLSX")
+                   help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
+                                         "XLSX")))
     p.add_argument("--columns", metavar="KEY=HEADER,…",
-                   help="which of the file's headers holds which column, when the headers are "
-                        "not recognised, e.g. theta_deg=转角,azimuth_deg=方位角")
+                   help=words(QT_TR_NOOP("which of the file's headers holds which column, when "
+                                         "the headers are not recognised, e.g. "
+                                         "theta_deg=转角,azimuth_deg=方位角")))
     p.add_argument("--table", metavar="OUT",
-                   help="also write the workbench's correction table: fringe (CSV, or a C "
-                        "header for OUT.h), positioning (compensation table; "
-                        "--compensation-format, --compensation-step, --compensation-tables)")
+                   help=words(QT_TR_NOOP("also write the workbench's correction table: fringe "
+                                         "(CSV, or a C header for OUT.h), positioning "
+                                         "(compensation table; --compensation-format, "
+                                         "--compensation-step, --compensation-tables)")))
     p.add_argument("--unit", choices=sorted(ANGLE_UNITS), default="arcsec",
-                   help="angle unit of the printed summary and of --results (arcsec, urad or "
-                        "mdeg); JSON and certificates keep the unit of the evaluation")
-    p.add_argument("--language", choices=("en", "zh_CN"), default="en",
-                   help="language of the printed summary and warnings (zh_CN: Simplified "
-                        "Chinese); messages about bad input, JSON and files stay as they are")
+                   help=words(QT_TR_NOOP("angle unit of the printed summary and of --results "
+                                         "(arcsec, urad or mdeg); JSON and certificates keep "
+                                         "the unit of the evaluation")))
+    add_language_option(p, words)
     p.add_argument("--zenith", action="store_true",
-                   help="theodolite: the vertical column is the zenith angle V (same as "
-                        "--vertical-reading zenith)")
+                   help=words(QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
+                                         "(same as --vertical-reading zenith)")))
     for flag, owners in _flags().items():
         parts = []
         for kind, parameter in owners:
             choices = (f" ({'|'.join(str(v) for v, _ in parameter.choices)})"
                        if parameter.choices else "")
-            parts.append(f"{kind}: {parameter.label}{choices}. {parameter.help}")
+            label = declared_text(parameter.label, words)
+            explanation = declared_text(parameter.help, words)
+            parts.append(rendered(message(QT_TR_NOOP("{kind}: {label}{choices}. {help}"),
+                                          kind=kind, label=label, choices=choices,
+                                          help=explanation), words))
         p.add_argument(flag, dest=_dest(flag), metavar=owners[0][1].kind.upper(),
-                       help=" — ".join(parts))
+                       help=" — ".join(parts).replace("%", "%%"))
     return p
 
 
@@ -161,7 +124,8 @@ def _column_mapping(text: str | None) -> dict[str, str] | None:
     for part in text.split(","):
         key, sep, header = part.partition("=")
         if not sep or not key.strip():
-            raise TableImportError(f"anglebench analyze: --columns: '{part}' is not KEY=HEADER")
+            raise TableImportError(message(QT_TR_NOOP(
+                "anglebench analyze: --columns: '{part}' is not KEY=HEADER"), part=part))
         mapping[key.strip()] = header.strip()
     return mapping
 
@@ -185,8 +149,10 @@ def _finite(value: Any) -> Any:
 
 
 def run_analyze(argv: list[str]) -> int:
-    with _argparse_speaking(argv):
-        args = _parser().parse_args(argv)
+    language = language_asked(argv)
+    with speaking(language) as words:
+        args = _parser(words).parse_args(argv)
+    args.language = language  # "system" resolved
     kind = KINDS[args.kind]
     words = translator(args.language)
 
@@ -293,12 +259,14 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         with open(path, encoding="utf-8-sig") as handle:
             data = json.load(handle)
     except OSError as exc:
-        raise MetadataError(f"{path}: cannot read ({exc.strerror})") from None
+        raise MetadataError(message(QT_TR_NOOP("{path}: cannot read ({reason})"), path=path,
+                                    reason=exc.strerror)) from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise MetadataError(f"{path}: not a JSON file ({exc})") from None
+        raise MetadataError(message(QT_TR_NOOP("{path}: not a JSON file ({reason})"), path=path,
+                                    reason=str(exc))) from None
     except (RecursionError, ValueError):  # nesting thousands deep; a number too long to read
-        raise MetadataError(f"{path}: not a certificate's details (nested too deep or a "
-                            "number too long)") from None
+        raise MetadataError(message(QT_TR_NOOP("{path}: not a certificate's details (nested too "
+                                               "deep or a number too long)"), path=path)) from None
     try:
         return CertificateMetadata.from_dict(data)
     except MetadataError as exc:

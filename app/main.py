@@ -29,18 +29,28 @@ def main(argv: list[str] | None = None) -> int:
         from app.validation_report import run_validate  # no Qt import on this path
 
         return run_validate(argv[1:])
-    parser = argparse.ArgumentParser(prog="anglebench", description="Angle metrology workbench")
-    parser.add_argument("project", nargs="?", help="project file to open")
-    parser.add_argument("--samples", action="store_true", help="load the bundled samples")
-    parser.add_argument("--screenshot", metavar="DIR",
-                        help="render every workbench with its sample to DIR/<workbench>.png")
-    parser.add_argument("--size", metavar="WxH", default="1400x900", type=_size,
-                        help="the window's size for --screenshot, in logical pixels (with "
-                             "QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)")
-    parser.add_argument("--language", choices=("system", "en", "zh_CN"), default="en",
-                        help="the language of --screenshot's window (the window itself follows "
-                             "View › Language)")
-    args = parser.parse_args(argv)
+    from app.command_line import Parser, language_asked, speaking
+    from models.messages import QT_TR_NOOP
+
+    with speaking(language_asked(argv)) as words:
+        parser = Parser(
+            prog="anglebench", description=words(QT_TR_NOOP("Angle metrology workbench")),
+            epilog=words(QT_TR_NOOP("Commands without a window: anglebench analyze KIND FILE, "
+                                    "anglebench validate, anglebench register; each has --help.")))
+        parser.add_argument("project", nargs="?", help=words(QT_TR_NOOP("project file to open")))
+        parser.add_argument("--samples", action="store_true",
+                            help=words(QT_TR_NOOP("load the bundled samples")))
+        parser.add_argument("--screenshot", metavar="DIR", help=words(QT_TR_NOOP(
+            "render every workbench with its sample to DIR/<workbench>.png")))
+        parser.add_argument("--size", metavar="WxH", default="1400x900", type=_size_reader(words),
+                            help=words(QT_TR_NOOP(
+                                "the window's size for --screenshot, in logical pixels (with "
+                                "QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)")))
+        parser.add_argument("--language", choices=("system", "en", "zh_CN"), default="en",
+                            help=words(QT_TR_NOOP(
+                                "the language of --screenshot's window and of this help (the "
+                                "window itself follows View › Language)")))
+        args = parser.parse_args(argv)
     if args.screenshot:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         from app.screenshot import write_screenshots
@@ -51,14 +61,22 @@ def main(argv: list[str] | None = None) -> int:
     return run_gui(args.project, args.samples)
 
 
-def _size(text: str) -> tuple[int, int]:
-    try:
-        width, height = (int(v) for v in text.lower().split("x"))
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r}: give the size as WxH, e.g. 1280x720") from None
-    if not (320 <= width <= 8000 and 240 <= height <= 8000):
-        raise argparse.ArgumentTypeError(f"{text!r}: 320x240 to 8000x8000")
-    return width, height
+def _size_reader(words):
+    """``--size``'s reader, refusing in the language of ``words``."""
+    from models.messages import QT_TR_NOOP, message, rendered
+
+    def size(text: str) -> tuple[int, int]:
+        try:
+            width, height = (int(v) for v in text.lower().split("x"))
+        except ValueError:
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: give the size as WxH, e.g. 1280x720"), text=repr(text)), words)) from None
+        if not (320 <= width <= 8000 and 240 <= height <= 8000):
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: 320x240 to 8000x8000"), text=repr(text)), words))
+        return width, height
+
+    return size
 
 
 # Qt's X11 platform needs these system libraries (Debian/Ubuntu package names); without

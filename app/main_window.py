@@ -529,6 +529,8 @@ class MainWindow(QMainWindow):
             self.register_presenter = RegisterPresenter(self.register_window, self.certificates,
                                                         self.open_project_state)
             self.register_window.subscribe(self.register_presenter)
+            # the statuses, revisions and headings in the language chosen later too
+            on_language_change(self.register_window, self.register_presenter.refresh)
         self.register_presenter.refresh()
         self.register_window.show()
         self.register_window.raise_()

@@ -9,7 +9,9 @@
 
 ``--register URL`` (or ANGLEBENCH_REGISTER) chooses the register; the default is the
 SQLite file in the user's data folder. Exit 2 with one line for a refusal; ``verify``
-exits 1 for a PDF the register does not know.
+exits 1 for a PDF the register does not know. What it prints, its help included, is in
+the language of ``--language`` (default: the system's); the listing's workbench keys and
+the export's ``index.csv`` keep the register's own English words.
 """
 
 from __future__ import annotations
@@ -20,65 +22,94 @@ import io
 import sys
 import zipfile
 
+from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
+from app.command_line import say as _say
+from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.project.atomic_write import write_bytes_atomic
-from models.readings.sheet import one_line
 from models.register.location import register_url
+from models.register.wording import revision_words, status_words
 
-EXIT_BAD_INPUT = 2
 COLUMNS = ("number", "status", "revision", "supersedes", "superseded_by", "issue_date",
            "calibration_date", "workbench", "item_description", "item_manufacturer",
            "item_serial", "customer", "operator", "workstation", "issued_at", "pdf_sha256")
+#: how ``show`` names a record's fields (in English, the register's own column names)
+FIELD_NAMES = {"supersedes": QT_TR_NOOP("supersedes"),
+               "superseded_by": QT_TR_NOOP("superseded_by"),
+               "issue_date": QT_TR_NOOP("issue_date"),
+               "calibration_date": QT_TR_NOOP("calibration_date"),
+               "workbench": QT_TR_NOOP("workbench"),
+               "item_description": QT_TR_NOOP("item_description"),
+               "item_manufacturer": QT_TR_NOOP("item_manufacturer"),
+               "item_serial": QT_TR_NOOP("item_serial"),
+               "customer": QT_TR_NOOP("customer"), "operator": QT_TR_NOOP("operator"),
+               "workstation": QT_TR_NOOP("workstation"), "issued_at": QT_TR_NOOP("issued_at"),
+               "pdf_sha256": QT_TR_NOOP("pdf_sha256")}
 
 
-class _Parser(argparse.ArgumentParser):
-    def error(self, message: str):
-        sys.stderr.write(one_line(f"anglebench register: {message}") + "\n")
-        raise SystemExit(EXIT_BAD_INPUT)
-
-
-def _parser() -> argparse.ArgumentParser:
-    p = _Parser(prog="anglebench register", description="The certificate register")
+def _parser(words) -> argparse.ArgumentParser:
+    """The command line, its help in the language of ``words`` (a translator)."""
+    p = Parser(prog="anglebench register",
+               description=words(QT_TR_NOOP("The certificate register")))
     p.add_argument("--register", metavar="URL", default="",
-                   help="sqlite:///path, a file path or postgresql://user@host/db")
+                   help=words(QT_TR_NOOP("sqlite:///path, a file path or "
+                                         "postgresql://user@host/db")))
+    add_language_option(p, words)
     sub = p.add_subparsers(dest="command", required=True)
-    listing = sub.add_parser("list")
-    listing.add_argument("search", nargs="?", default="")
-    show = sub.add_parser("show")
-    show.add_argument("number")
-    show.add_argument("--pdf", metavar="OUT.pdf")
-    show.add_argument("--project", metavar="OUT.anglebench.json")
-    verify = sub.add_parser("verify")
-    verify.add_argument("pdf")
-    export = sub.add_parser("export")
-    export.add_argument("out", metavar="OUT.zip")
-    counter = sub.add_parser("continue", help="continue numbering from hand-issued numbers")
-    counter.add_argument("scheme", help="e.g. AB-{year}-{seq:04d}")
-    counter.add_argument("next", type=int, help="the next sequence number to issue")
-    counter.add_argument("--date", default="", help="YYYY-MM-DD for the scheme's date fields "
-                                                    "(default today)")
-    interval = sub.add_parser("interval")
-    interval.add_argument("serial")
-    interval.add_argument("days", type=int, help="0 clears it")
+    listing = sub.add_parser("list", help=words(QT_TR_NOOP("the certificates, newest first")))
+    listing.add_argument("search", nargs="?", default="",
+                         help=words(QT_TR_NOOP("text to find in the number, the serial or the "
+                                               "customer")))
+    show = sub.add_parser("show", help=words(QT_TR_NOOP("one certificate's record")))
+    show.add_argument("number", help=words(QT_TR_NOOP("the certificate number")))
+    show.add_argument("--pdf", metavar="OUT.pdf",
+                      help=words(QT_TR_NOOP("also write the PDF as issued")))
+    show.add_argument("--project", metavar="OUT.anglebench.json",
+                      help=words(QT_TR_NOOP("also write the project behind it")))
+    verify = sub.add_parser("verify", help=words(QT_TR_NOOP(
+        "is this PDF, byte for byte, one the register issued?")))
+    verify.add_argument("pdf", help=words(QT_TR_NOOP("the PDF to check")))
+    export = sub.add_parser("export", help=words(QT_TR_NOOP(
+        "every record: index.csv, the PDFs and the projects")))
+    export.add_argument("out", metavar="OUT.zip", help=words(QT_TR_NOOP("the archive to write")))
+    counter = sub.add_parser("continue", help=words(QT_TR_NOOP(
+        "continue numbering from hand-issued numbers")))
+    counter.add_argument("scheme", help=words(QT_TR_NOOP("e.g. AB-{year}-{seq:04d}")))
+    counter.add_argument("next", type=int,
+                         help=words(QT_TR_NOOP("the next sequence number to issue")))
+    counter.add_argument("--date", default="", help=words(QT_TR_NOOP(
+        "YYYY-MM-DD for the scheme's date fields (default today)")))
+    interval = sub.add_parser("interval", help=words(QT_TR_NOOP(
+        "set an instrument's calibration interval")))
+    interval.add_argument("serial", help=words(QT_TR_NOOP("the instrument's serial number")))
+    interval.add_argument("days", type=int, help=words(QT_TR_NOOP("0 clears it")))
+    for command in (listing, show, verify, export, counter, interval):
+        add_language_option(command, words, subcommand=True)
     return p
 
 
-def _print_record(record, register) -> None:
-    revision = "" if record.revision == "original" else f", {record.revision}"
-    lines = [f"{record.number}  ({record.status}{revision})"]
+def _print_record(record, register, words) -> None:
+    revision = ("" if record.revision == "original"
+                else joined((", ", revision_words(record.revision))))
+    lines = [message(QT_TR_NOOP("{number}  ({status}{revision})"), number=record.number,
+                     status=status_words(record.status), revision=revision)]
     for key in COLUMNS[3:]:
         value = getattr(record, key)
         if value:
-            lines.append(f"  {key}: {value}")
-    for name, value in record.headline.items():
-        lines.append(f"  headline {name}: {value:.6g}")
-    lines.append("  software: " + ", ".join(f"{k} {v}" for k, v in record.software.items()))
+            lines.append(message(QT_TR_NOOP("  {field}: {value}"),
+                                 field=message(FIELD_NAMES[key]), value=value))
+    for name, value in record.headline.items():  # a figure's name as the certificate has it
+        lines.append(message(QT_TR_NOOP("  headline {name}: {value}"),
+                             name=declared_text(name, words), value=f"{value:.6g}"))
+    lines.append(message(QT_TR_NOOP("  software: {versions}"), versions=", ".join(
+        f"{k} {v}" for k, v in record.software.items())))
     due = register.due_date(record.item_serial) if record.item_serial else None
     if due:
-        lines.append(f"  next calibration of {record.item_serial} due: {due.isoformat()}")
-    sys.stdout.write("\n".join(lines) + "\n")
+        lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
+                             serial=record.item_serial, date=due.isoformat()))
+    sys.stdout.write("\n".join(rendered(line, words) for line in lines) + "\n")
 
 
-def _export(register, out: str) -> int:
+def _export(register, out: str, words) -> int:
     records = register.list()
     index = io.StringIO()
     writer = csv.writer(index)
@@ -92,24 +123,29 @@ def _export(register, out: str) -> int:
             archive.writestr(f"project/{safe}.anglebench.json", record.project_json)
         archive.writestr("index.csv", index.getvalue())
     write_bytes_atomic(out, buffer.getvalue())
-    sys.stderr.write(f"{len(records)} certificate(s) exported to {out}\n")
+    _say(rendered(message(QT_TR_NOOP("{n} certificate(s) exported to {out}"), n=len(records),
+                          out=out), words))
     return 0
 
 
 def run_register(argv: list[str]) -> int:
-    args = _parser().parse_args(argv)
+    language = language_asked(argv)
+    with speaking(language) as words:
+        args = _parser(words).parse_args(argv)
+    words = translator(language)
     from models.register.store import Register, RegisterError
 
     try:
         with Register(register_url(explicit=args.register)) as register:
             if args.command == "list":
                 for r in register.list(args.search):
-                    sys.stdout.write(f"{r.number}\t{r.status}\t{r.issue_date}\t{r.workbench}\t"
+                    status = rendered(status_words(r.status), words)
+                    sys.stdout.write(f"{r.number}\t{status}\t{r.issue_date}\t{r.workbench}\t"
                                      f"{r.item_serial}\t{r.customer}\n")
                 return 0
             if args.command == "show":
                 record = register.get(args.number)
-                _print_record(record, register)
+                _print_record(record, register, words)
                 if args.pdf:
                     write_bytes_atomic(args.pdf, register.pdf(record.number))
                 if args.project:
@@ -120,15 +156,19 @@ def run_register(argv: list[str]) -> int:
                     with open(args.pdf, "rb") as handle:
                         data = handle.read()
                 except OSError as exc:
-                    raise RegisterError(f"{args.pdf}: cannot read ({exc.strerror})") from None
+                    raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({reason})"),
+                                                path=args.pdf, reason=exc.strerror)) from None
                 record = register.verify(data)
                 if record is None:
-                    sys.stdout.write(f"{args.pdf}: NOT in the register (no issued PDF has its "
-                                     "SHA-256: altered, a draft, or from another register)\n")
+                    sys.stdout.write(rendered(message(QT_TR_NOOP(
+                        "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
+                        "draft, or from another register)"), path=args.pdf), words) + "\n")
                     return 1
-                sys.stdout.write(f"{args.pdf}: certificate {record.number}, issued "
-                                 f"{record.issued_at}, {record.status}; identical to the "
-                                 "record (SHA-256)\n")
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
+                    "the record (SHA-256)"), path=args.pdf, number=record.number,
+                    issued_at=record.issued_at, status=status_words(record.status)), words)
+                    + "\n")
                 return 0
             if args.command == "continue":
                 import datetime as dt
@@ -136,17 +176,21 @@ def run_register(argv: list[str]) -> int:
                 try:
                     date = dt.date.fromisoformat(args.date) if args.date else dt.date.today()
                 except ValueError:
-                    raise RegisterError(f"--date {args.date}: not YYYY-MM-DD") from None
+                    raise RegisterError(message(QT_TR_NOOP("--date {date}: not YYYY-MM-DD"),
+                                                date=args.date)) from None
                 number = register.continue_numbering(args.scheme, date, args.next)
-                sys.stdout.write(f"the next certificate of {args.scheme} will be {number}\n")
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "the next certificate of {scheme} will be {number}"), scheme=args.scheme,
+                    number=number), words) + "\n")
                 return 0
             if args.command == "interval":
                 register.set_interval(args.serial, args.days or None)
                 return 0
-            return _export(register, args.out)
+            return _export(register, args.out, words)
     except RegisterError as exc:
-        sys.stderr.write(one_line(f"anglebench register: {exc}") + "\n")
+        _say(f"anglebench register: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     except OSError as exc:
-        sys.stderr.write(one_line(f"anglebench register: cannot write: {exc}") + "\n")
+        _say(rendered(message(QT_TR_NOOP("anglebench register: cannot write: {reason}"),
+                              reason=str(exc)), words))
         return 1

@@ -13,7 +13,8 @@ from PySide6.QtCore import QT_TR_NOOP
 
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from models.register.store import CertificateRecord, RegisterError
-from widgets.i18n import explained, tr
+from models.register.wording import revision_words, status_words
+from widgets.i18n import explained, tr, translated
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
@@ -71,7 +72,8 @@ class RegisterPresenter:
             self.records = []
             self.view.tell(tr("Register"), explained(exc))
         self.view.show_records(COLUMNS, [
-            (r.number, r.status, r.revision, r.issue_date, r.calibration_date, r.workbench,
+            (r.number, translated(status_words(r.status)),
+             translated(revision_words(r.revision)), r.issue_date, r.calibration_date, r.workbench,
              r.item_serial, r.customer) for r in self.records])
 
     def set_location(self, url: str) -> None:
@@ -165,7 +167,7 @@ class RegisterPresenter:
             self.view.tell(tr("Verified"), tr(
                 "{path} is certificate {number} as issued on {date} ({status}), byte for byte.")
                 .format(path=path, number=record.number, date=record.issued_at,
-                        status=record.status))
+                        status=translated(status_words(record.status))))
         return record
 
     def show_history(self) -> None:

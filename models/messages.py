@@ -14,6 +14,7 @@ translated text keeps their resolution and can still be shown in another angle u
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterable
 from pathlib import Path
@@ -118,6 +119,7 @@ def declared_text(source: str, translate: Callable[[str], str]) -> str:
     return source
 
 
+@functools.cache
 def translator(language: str) -> Callable[[str], str]:
     """English → ``language`` ("en": as it is) from the window's own catalogue."""
     if language == "en":

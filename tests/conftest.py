@@ -3,6 +3,11 @@
 import os
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+# The commands and the window follow the system's language: the suite runs in English
+# whatever the machine's locale (a test that wants Chinese asks for it).
+for _name in ("LANGUAGE", "LC_ALL", "LC_MESSAGES"):
+    os.environ.pop(_name, None)
+os.environ["LANG"] = "C.UTF-8"
 
 from pathlib import Path  # noqa: E402
 

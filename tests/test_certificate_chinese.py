@@ -103,3 +103,23 @@ def test_the_english_certificate_is_not_touched_by_the_chinese_one(analysed):
     english = _printed(_document(analysed, "theodolite", {}), "en")
     assert not re.search("[\u4e00-\u9fff]", english.replace("精密角度计量实验室", "").replace(
         "长春光电有限公司", "").replace("王工", ""))
+
+
+@pytest.mark.parametrize("language", ["en", "zh+en", "zh"])
+def test_every_glyph_printed_and_no_word_broken_between_letters(analysed, language, caplog):
+    """fpdf2 warns of a character no font has (a two-line heading printed its line break as
+    a missing glyph, glued "分析设置Analysis settings" together); a Latin table cell is
+    wrapped between words (a character wrap printed "t he seed's")."""
+    for key in sorted(KINDS):
+        document = _document(analysed, key, {})
+        with caplog.at_level("WARNING", logger="fpdf"):
+            printed = _printed(document, language)
+        assert not [r for r in caplog.records if "missing" in r.getMessage()], key
+        if language == "en":
+            tables = (document.parameters, document.results, document.statistics)
+            cells = [cell for t in tables for row in (t.header, *t.rows) for cell in row]
+            words = {w for text in cells + [v for _, v in document.settings]
+                     for w in re.findall(r"(?<![\w'])[A-Za-z]{5,}(?![\w'])", str(text))}
+            broken = sorted(w for w in words if not re.search(rf"(?<![A-Za-z]){w}(?![A-Za-z])",
+                                                               printed))
+            assert broken == [], (key, broken)

@@ -310,3 +310,24 @@ def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
     said = capsys.readouterr().err.strip()
     assert said.startswith(f"证书已写入 {out}（草稿：缺少证书编号, 校准机构")
     assert english_words(said.replace(str(out), "")) == set(), said
+
+
+def test_the_register_window_follows_the_language(window, samples_dir, tmp_path, capsys):
+    """A record's status and revision are the register's English words as data, shown in
+    the window's language; the open register follows a change of language at once."""
+    from app.main import main
+
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(samples_dir / "certificate_polygon.json"), "--certificate",
+                 str(tmp_path / "issued.pdf")]) == 0
+    capsys.readouterr()
+    window.show_register()
+    table = window.register_window.table
+    assert (table.item(0, 1).text(), table.item(0, 2).text()) == ("issued", "original")
+    window.set_language("zh_CN")
+    try:
+        assert (table.item(0, 1).text(), table.item(0, 2).text()) == ("已签发", "原始")
+        assert table.horizontalHeaderItem(1).text() == "状态"
+    finally:
+        window.set_language("en")
+    assert table.item(0, 1).text() == "issued"

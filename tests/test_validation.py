@@ -35,7 +35,10 @@ def test_validate_command_writes_a_dated_report(tmp_path, capsys):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100"]) == 0
     printed = capsys.readouterr().out
-    assert re.search(r"^2\d passed, 0 failed$", printed, re.MULTILINE), printed
+    counted = re.search(r"^(2\d) passed, 0 failed$", printed, re.MULTILINE)
+    assert counted, printed
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text("utf-8")
+    assert f"runs {counted.group(1)} reference cases" in readme  # the README says how many
     assert printed.count("pass  Theodolite run") >= 7 and printed.count("pass  Fringe") >= 5
     text = re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in PdfReader(
         io.BytesIO(out.read_bytes())).pages))

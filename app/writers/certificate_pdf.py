@@ -18,6 +18,7 @@ import functools
 import hashlib
 import json
 import math
+import re
 from importlib import resources
 from pathlib import Path
 
@@ -189,14 +190,15 @@ class ReportPdf(FPDF):
     bottom (the first gets "Page x of y" beside it).
     """
 
-    def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False) -> None:
+    def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False,
+                 language: str = "en") -> None:
         super().__init__(orientation="portrait", unit="mm", format="A4")
         self.head, self.foot = head, foot
-        self.say = str  # how a text is printed (a certificate in Chinese translates it)
+        self.say = _say(language)  # how a text is printed ("zh": translated)
         fonts = font_files()
         self.add_font(FONT, "", str(fonts["regular"]))
         self.add_font(FONT, "B", str(fonts["bold"]))
-        if cjk:  # the CJK font costs ~0.3 s to load and subset
+        if cjk or language == "zh":  # the CJK font costs ~0.3 s to load and subset
             self.add_font(CJK_FONT, "", str(fonts["cjk"]))
             self.set_fallback_fonts([CJK_FONT], exact_match=False)
         self.set_margins(18, 16, 18)
@@ -266,11 +268,11 @@ class ReportPdf(FPDF):
 
     def key_values(self, rows: list[tuple[str, str]]) -> None:
         self.set_font(FONT, "", 9)
+        rows = [(self.say(key), self.say(value)) for key, value in rows]
         with self.table(col_widths=(45, 129), first_row_as_headings=False, borders_layout="NONE",
                         line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
-                        wrapmode="CHAR") as table:
+                        wrapmode=_wrapmode(cell for row in rows for cell in row)) as table:
             for key, value in rows:
-                key, value = self.say(key), self.say(value)
                 row = table.row()
                 # a two-line bilingual label is set plain: fpdf2 drops the English line of a
                 # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
@@ -282,13 +284,14 @@ class ReportPdf(FPDF):
         self.set_font(FONT, "", size)
         self.set_fill_color(246, 247, 249)
         heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
+        cells = [[self.say(cell) for cell in row] for row in (t.header, *t.rows)]
         with self.table(col_widths=widths, text_align=align, line_height=size * 0.5,
                         headings_style=heading, borders_layout="HORIZONTAL_LINES",
                         cell_fill_color=(246, 247, 249), cell_fill_mode=TableCellFillMode.ROWS,
-                        repeat_headings=1, padding=(0.5, 1.0), wrapmode="CHAR") as table:
-            table.row([self.say(cell) for cell in t.header])
-            for r in t.rows:
-                table.row([self.say(cell) for cell in r])
+                        repeat_headings=1, padding=(0.5, 1.0),
+                        wrapmode=_wrapmode(cell for row in cells for cell in row)) as table:
+            for row in cells:
+                table.row(row)
         if t.note:
             self.paragraph(t.note, 7.5, GREY)
 
@@ -421,8 +424,8 @@ class _CertificatePdf(ReportPdf):
                             "the laboratory's written approval.")),
              say(message(QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
                          number=meta.certificate_number or "—", version=__version__))),
-            cjk=_needs_fallback(document) or document.metadata.language != "en")
-        self.say = say
+            cjk=_needs_fallback(document) or document.metadata.language != "en",
+            language=meta.language)
         self.document = document
 
     def header(self) -> None:
@@ -437,6 +440,16 @@ class _CertificatePdf(ReportPdf):
             self.mixed_text(self.w / 2 - 60, self.h / 2 + 12, self.say(QT_TR_NOOP("DRAFT")), 90,
                             "B")
         self.set_xy(x, y)
+
+
+def _wrapmode(cells) -> str:
+    """How a table's cells are wrapped: between words when every cell is Latin; between
+    characters when one holds CJK text (fpdf2's word wrap dropped a word at a line's end
+    with the fallback font, and Chinese breaks anywhere)."""
+    return "CHAR" if any(_CJK.search(str(cell or "")) for cell in cells) else "WORD"
+
+
+_CJK = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef\uac00-\ud7af]")
 
 
 def _mostly_cjk(text: str) -> bool:
@@ -560,11 +573,11 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.paragraph(joined([label(document, "Sign convention"), _colon(document),
                           _translatable(document.sign_convention), _stop(document)]), 8.5)
     if document.settings:
-        pdf.heading(label(document, "Analysis settings", "\n"), keep_with=30)
+        pdf.heading(label(document, "Analysis settings"), keep_with=30)
         pdf.key_values(list(document.settings))
     pdf.heading(label(document, document.parameters.title))
     pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
-    pdf.heading(label(document, "Error curves", "\n"), keep_with=75.0)
+    pdf.heading(label(document, "Error curves"), keep_with=75.0)
     for figure in document.plots:
         pdf.plot(figure)
     pdf.heading(label(document, document.statistics.title))

@@ -23,6 +23,7 @@ import numpy as np
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
 from models.fringe.analysis import FRINGE
 from models.fringe.report import fringe_budget
+from models.messages import QT_TR_NOOP, message
 from models.polygon.analysis import POLYGON
 from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcsec
 from models.polygon.report import polygon_budget
@@ -41,11 +42,21 @@ __all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
            "polygon_budget_trials", "positioning_budget_trials", "run_validation", "theodolite_budget_trials"]
 
 
+#: where a case's expected value comes from
+CHECK_FIGURE = QT_TR_NOOP("check figure")
+EXACT_SIMULATION = QT_TR_NOOP("exact simulation")
+BUDGET_VS_MONTE_CARLO = QT_TR_NOOP("budget vs Monte Carlo")
+
+
 @dataclass(frozen=True)
 class ValidationCase:
+    """One reference case. Its texts are English; ``workbench``, ``name`` and ``source`` are
+    translatable (a :class:`models.messages.Message` when it holds figures, else a text
+    looked up whole), ``expected`` and ``obtained`` are figures or messages."""
+
     workbench: str
     name: str
-    source: str  # "check figure", "exact simulation" or "budget vs Monte Carlo"
+    source: str  # CHECK_FIGURE, EXACT_SIMULATION or BUDGET_VS_MONTE_CARLO (English)
     expected: str
     obtained: str
     passed: bool
@@ -184,15 +195,20 @@ def _agreement_case(workbench: str, run: Callable, trials: int, seed: int) -> Va
     ratio, worst = budget_agreement(*run(trials, np.random.default_rng(seed)))
     ratio_tol = max(0.10, 3.0 / math.sqrt(2.0 * trials))
     point_tol = max(0.25, 4.0 / math.sqrt(2.0 * trials))
-    return ValidationCase(workbench, f"GUM budget u against the spread of {trials} simulated runs",
-                          "budget vs Monte Carlo",
-                          f"ratio 1 ± {ratio_tol:.2f}, worst point within {100 * point_tol:.0f} %",
-                          f"ratio {ratio:.3f}, worst point {100 * worst:.0f} %",
+    return ValidationCase(workbench,
+                          message(QT_TR_NOOP("GUM budget u against the spread of {trials} "
+                                             "simulated runs"), trials=trials),
+                          BUDGET_VS_MONTE_CARLO,
+                          message(QT_TR_NOOP("ratio 1 ± {tolerance}, worst point within "
+                                             "{point} %"), tolerance=f"{ratio_tol:.2f}",
+                                  point=f"{100 * point_tol:.0f}"),
+                          message(QT_TR_NOOP("ratio {ratio}, worst point {worst} %"),
+                                  ratio=f"{ratio:.3f}", worst=f"{100 * worst:.0f}"),
                           abs(ratio - 1.0) <= ratio_tol and worst <= point_tol)
 
 
 def theodolite_cases(trials: int) -> list[ValidationCase]:
-    w = "Theodolite run"
+    w = QT_TR_NOOP("Theodolite run")
     theta = np.arange(-20.0, 21.0, 1.0)
     zeta = induced_error_arcsec(theta, 3.0, 45.0, 2.0)
     alphas = np.arange(0.0, 360.0, 1.0)
@@ -200,13 +216,13 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
                                for a in alphas])) for t in theta)
     experiment = induced_error_arcsec(theta, 5.8249, 43.4965, -0.0395)
     cases = [
-        _close(w, "ζ spans ±187.9\" (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)", "check figure",
+        _close(w, QT_TR_NOOP("ζ spans ±187.9\" (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)"), CHECK_FIGURE,
                187.9, float(np.max(zeta)), 0.05, digits=2),
-        _close(w, "largest spread of ζ over α at one θ", "check figure", 270.1, spread, 0.05,
+        _close(w, QT_TR_NOOP("largest spread of ζ over α at one θ"), CHECK_FIGURE, 270.1, spread, 0.05,
                digits=2),
-        _close(w, "the seed's experiment: ζ from −301\"", "check figure", -301.1,
+        _close(w, QT_TR_NOOP("the seed's experiment: ζ from −301\""), CHECK_FIGURE, -301.1,
                float(np.min(experiment)), 0.5, digits=1),
-        _close(w, "the seed's experiment: ζ to +423\"", "check figure", 422.6,
+        _close(w, QT_TR_NOOP("the seed's experiment: ζ to +423\""), CHECK_FIGURE, 422.6,
                float(np.max(experiment)), 0.5, digits=1),
     ]
     truth = 0.05 * theta + 0.8 * np.sin(np.radians(theta) * 9)  # error of indication
@@ -214,36 +230,36 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
     result = analyze_run(theta, az, el)
     s = result.identification.setup
     cases += [
-        _at_most(w, "3-D simulation, no noise: |corrected − true error|", "exact simulation",
+        _at_most(w, QT_TR_NOOP("3-D simulation, no noise: |corrected − true error|"), EXACT_SIMULATION,
                  1e-4, float(np.max(np.abs(result.corrected_error_arcsec - truth)))),
-        _at_most(w, "3-D simulation, no noise: |ψ, α, β − set-up| (°)", "exact simulation", 1e-6,
+        _at_most(w, QT_TR_NOOP("3-D simulation, no noise: |ψ, α, β − set-up| (°)"), EXACT_SIMULATION, 1e-6,
                  float(max(abs(s.psi_deg - 5.8249), abs(s.alpha_deg - 43.4965),
                            abs(s.beta_deg + 0.0395))), unit="°"),
     ]
     scale = theodolite_readings(theta / (1 + 1e-5), 3.0, 45.0, 2.0)
     scaled = analyze_run(theta, *scale)
-    cases.append(_close(w, "sign: an axis indicating 1e-5 too much reads + at +20°",
-                        "exact simulation", 0.72, float(scaled.corrected_error_arcsec[-1]), 0.005))
+    cases.append(_close(w, QT_TR_NOOP("sign: an axis indicating 1e-5 too much reads + at +20°"),
+                        EXACT_SIMULATION, 0.72, float(scaled.corrected_error_arcsec[-1]), 0.005))
     cases.append(_agreement_case(w, theodolite_budget_trials, trials, 11))
     return cases
 
 
 def polygon_cases(trials: int) -> list[ValidationCase]:
-    w = "Polygon encoder test"
+    w = QT_TR_NOOP("Polygon encoder test")
     theta = np.arange(0.0, 360.0, 1.0)
     eps_x, eps_y = pyramidal_readings_arcsec(theta, 600.0, 90.0)
     fine = np.arange(0.0, 360.0, 0.5)
     worst = max(float(np.max(np.abs(pyramidal_readings_arcsec(fine, 600.0, om)[0])))
                 for om in np.arange(0.0, 360.0, 0.5)) / 600.0**2
     cases = [
-        _close(w, "largest |ε_x| at ψ = 10′, ω = 90°", "check figure", 1.921,
+        _close(w, QT_TR_NOOP("largest |ε_x| at ψ = 10′, ω = 90°"), CHECK_FIGURE, 1.921,
                float(np.max(np.abs(eps_x))), 0.0005),
-        _close(w, "ε_x/ψ² at θ = 111° (×1e-5)", "check figure", 0.5337,
+        _close(w, QT_TR_NOOP("ε_x/ψ² at θ = 111° (×1e-5)"), CHECK_FIGURE, 0.5337,
                float(eps_x[111] / 600.0**2 * 1e5), 0.0002, unit="", digits=4),
-        _close(w, "ε_x/ψ² at θ = 179° (×1e-6)", "check figure", 0.1269,
+        _close(w, QT_TR_NOOP("ε_x/ψ² at θ = 179° (×1e-6)"), CHECK_FIGURE, 0.1269,
                float(eps_x[179] / 600.0**2 * 1e6), 0.0002, unit="", digits=4),
-        _close(w, "ε_y spans 2ψ", "check figure", 1200.0, float(np.ptp(eps_y)), 0.1, digits=1),
-        _close(w, "largest ε_x/ψ² over every direction (×1e-6)", "check figure",
+        _close(w, QT_TR_NOOP("ε_y spans 2ψ"), CHECK_FIGURE, 1200.0, float(np.ptp(eps_y)), 0.1, digits=1),
+        _close(w, QT_TR_NOOP("largest ε_x/ψ² over every direction (×1e-6)"), CHECK_FIGURE,
                WORST_CASE_COEFFICIENT * 1e6, worst * 1e6, 0.002, unit="", digits=3),
     ]
     faces = 24
@@ -255,10 +271,10 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
         2, reverse=True, start_face=7)).parse(), {"grade": 7})
     forward = result.sets[0].corrected_error_arcsec
     cases += [
-        _at_most(w, "3-D simulation (ψ = 480″, counting against the faces, zero through 360°): "
-                 "|corrected − true error|", "exact simulation", 1e-3,
+        _at_most(w, QT_TR_NOOP("3-D simulation (ψ = 480″, counting against the faces, zero through 360°): "
+                 "|corrected − true error|"), EXACT_SIMULATION, 1e-3,
                  float(np.max(np.abs(forward - rig.truth_arcsec())))),
-        _close(w, "3-D simulation: a constant 2″ backlash is the reversal B", "exact simulation",
+        _close(w, QT_TR_NOOP("3-D simulation: a constant 2″ backlash is the reversal B"), EXACT_SIMULATION,
                2.0, float(np.max(np.abs(result.reversal_arcsec))), 0.002),
     ]
     residuals = []
@@ -271,15 +287,15 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
         r = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), {"grade": 7})
         residuals += [s.corrected_error_arcsec - noisy.truth_arcsec() for s in r.sets]
     rms = float(np.sqrt(np.mean(np.concatenate(residuals) ** 2)))
-    cases.append(_at_most(w, "3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = "
-                          "0.03″: RMS of corrected − true error (2σ)", "exact simulation", 0.06,
+    cases.append(_at_most(w, QT_TR_NOOP("3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = "
+                          "0.03″: RMS of corrected − true error (2σ)"), EXACT_SIMULATION, 0.06,
                           rms))
     cases.append(_agreement_case(w, polygon_budget_trials, trials, 6))
     return cases
 
 
 def fringe_cases(trials: int) -> list[ValidationCase]:
-    w = "Fringe signal analysis"
+    w = QT_TR_NOOP("Fringe signal analysis")
     per = 64
     theta = equal_steps(8 * per, per)
     # Table 1, the cos channel's B1 read as +3.7346 (SPEC §3)
@@ -293,10 +309,10 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
     raw = result.raw_error
     cases = [
-        _close(w, "Table 1's signals: peak-to-peak interpolation error", "check figure", 0.973,
+        _close(w, QT_TR_NOOP("Table 1's signals: peak-to-peak interpolation error"), CHECK_FIGURE, 0.973,
                float(np.ptp(raw)), 0.005),
-        _at_most(w, "Table 1's signals: error left after compensation (peak-to-peak)",
-                 "exact simulation", 0.01, float(np.ptp(result.compensated_error))),
+        _at_most(w, QT_TR_NOOP("Table 1's signals: error left after compensation (peak-to-peak)"),
+                 EXACT_SIMULATION, 0.01, float(np.ptp(result.compensated_error))),
     ]
     head = FringeHead(offsets_v=(0.03, -0.02), amplitudes_v=(1.0, 0.95), quadrature_deg=2.0,
                       sin_harmonics={3: (0.01, 0.5)}, cos_harmonics={3: (0.008, 1.0)})
@@ -306,11 +322,11 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     measured = np.arctan2(u_sin, u_cos)
     truth = (np.angle(np.exp(1j * (measured - theta))) * 1_296_000 / 16384 / (2 * math.pi))
     truth = truth - truth.mean()
-    cases.append(_at_most(w, "sampled signals with a true phase: |raw error − true error|",
-                          "exact simulation", 1e-6,
+    cases.append(_at_most(w, QT_TR_NOOP("sampled signals with a true phase: |raw error − true error|"),
+                          EXACT_SIMULATION, 1e-6,
                           float(np.max(np.abs(fitted.raw_error - truth)))))
-    cases.append(_at_most(w, "sampled signals with a true phase: |offsets − truth| (V)",
-                          "exact simulation", 1e-9,
+    cases.append(_at_most(w, QT_TR_NOOP("sampled signals with a true phase: |offsets − truth| (V)"),
+                          EXACT_SIMULATION, 1e-9,
                           max(abs(fitted.sin_fit.offset - 0.03), abs(fitted.cos_fit.offset + 0.02)),
                           unit=" V"))
     cases.append(_agreement_case(w, fringe_budget_trials, trials, 3))
@@ -318,22 +334,22 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
 
 
 def positioning_cases(trials: int) -> list[ValidationCase]:
-    w = "Positioning (axis)"
+    w = QT_TR_NOOP("Positioning (axis)")
     lost = 4.0  # arcsec
     rig = AxisRig(_axis_error_deg, lost_motion=lost / 3600)  # no scatter: every figure known
     result = POSITIONING.analyze(positioning_readings(rig), {})
     f, v = result.iso.figures, result.vdi
     e = _axis_error_deg(POSITIONING_TARGETS) * 3600
     cases = [
-        _close(w, "axis without scatter: reversal B = lost motion", "exact simulation", lost,
+        _close(w, QT_TR_NOOP("axis without scatter: reversal B = lost motion"), EXACT_SIMULATION, lost,
                f["B"], 1e-4),
-        _close(w, "axis without scatter: mean reversal B̄ = −lost motion (axis lags)",
-               "exact simulation", -lost, f["B_mean"], 1e-4),
-        _close(w, "axis without scatter: E↑ = range of the axis error", "exact simulation",
+        _close(w, QT_TR_NOOP("axis without scatter: mean reversal B̄ = −lost motion (axis lags)"),
+               EXACT_SIMULATION, -lost, f["B_mean"], 1e-4),
+        _close(w, QT_TR_NOOP("axis without scatter: E↑ = range of the axis error"), EXACT_SIMULATION,
                float(np.ptp(e)), f["E_up"], 1e-4),
-        _close(w, "axis without scatter: A = range of the axis error + lost motion",
-               "exact simulation", float(np.ptp(e)) + lost, f["A"], 1e-4),
-        _close(w, "axis without scatter: VDI 3441 P = Pa + U", "exact simulation",
+        _close(w, QT_TR_NOOP("axis without scatter: A = range of the axis error + lost motion"),
+               EXACT_SIMULATION, float(np.ptp(e)) + lost, f["A"], 1e-4),
+        _close(w, QT_TR_NOOP("axis without scatter: VDI 3441 P = Pa + U"), EXACT_SIMULATION,
                float(np.ptp(e)) + lost, float(v.P), 1e-4),
     ]
     table = compensation_table(result)
@@ -345,8 +361,8 @@ def positioning_cases(trials: int) -> list[ValidationCase]:
 
     compensated = AxisRig(_axis_error_deg, lost_motion=lost / 3600, controller=controller)
     left = POSITIONING.analyze(positioning_readings(compensated), {})
-    cases.append(_at_most(w, "compensation table loaded into the rig's controller: largest "
-                          "|mean deviation| left", "exact simulation", 0.01,
+    cases.append(_at_most(w, QT_TR_NOOP("compensation table loaded into the rig's controller: largest "
+                          "|mean deviation| left"), EXACT_SIMULATION, 0.01,
                           float(np.nanmax(np.abs(np.concatenate(
                               [left.iso.forward.mean, left.iso.backward.mean]))))))
     cases.append(_agreement_case(w, positioning_budget_trials, trials, 4))

@@ -566,8 +566,133 @@
         <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
     </message>
     <message>
+        <source>check figure</source>
+        <extracomment>where a case&apos;s expected value comes from</extracomment>
+        <translation>校核数值</translation>
+    </message>
+    <message>
+        <source>exact simulation</source>
+        <translation>精确仿真</translation>
+    </message>
+    <message>
+        <source>budget vs Monte Carlo</source>
+        <translation>不确定度评定与蒙特卡洛比较</translation>
+    </message>
+    <message>
+        <source>GUM budget u against the spread of {trials} simulated runs</source>
+        <translation>GUM 不确定度评定的 u 与 {trials} 次仿真测量的分散性比较</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}, worst point within {point} %</source>
+        <translation>比值 1 ± {tolerance}，最差点在 {point} % 以内</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, worst point {worst} %</source>
+        <translation>比值 {ratio}，最差点 {worst} %</translation>
+    </message>
+    <message>
+        <source>ζ spans ±187.9&quot; (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)</source>
+        <translation>ζ 的范围为 ±187.9&quot;（ψ = 3°，α = 45°，β = 2°，θ = −20…20°）</translation>
+    </message>
+    <message>
+        <source>largest spread of ζ over α at one θ</source>
+        <translation>同一 θ 下 ζ 随 α 的最大变化范围</translation>
+    </message>
+    <message>
+        <source>the seed&apos;s experiment: ζ from −301&quot;</source>
+        <translation>原文实验：ζ 自 −301&quot;</translation>
+    </message>
+    <message>
+        <source>the seed&apos;s experiment: ζ to +423&quot;</source>
+        <translation>原文实验：ζ 至 +423&quot;</translation>
+    </message>
+    <message>
+        <source>3-D simulation, no noise: |corrected − true error|</source>
+        <translation>三维仿真，无噪声：|修正后误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, no noise: |ψ, α, β − set-up| (°)</source>
+        <translation>三维仿真，无噪声：|ψ、α、β − 设定值|（°）</translation>
+    </message>
+    <message>
+        <source>sign: an axis indicating 1e-5 too much reads + at +20°</source>
+        <translation>符号：示值偏大 1e-5 的轴系在 +20° 处读数为正</translation>
+    </message>
+    <message>
+        <source>largest |ε_x| at ψ = 10′, ω = 90°</source>
+        <translation>ψ = 10′、ω = 90° 时 |ε_x| 的最大值</translation>
+    </message>
+    <message>
+        <source>ε_x/ψ² at θ = 111° (×1e-5)</source>
+        <translation>θ = 111° 处的 ε_x/ψ²（×1e-5）</translation>
+    </message>
+    <message>
+        <source>ε_x/ψ² at θ = 179° (×1e-6)</source>
+        <translation>θ = 179° 处的 ε_x/ψ²（×1e-6）</translation>
+    </message>
+    <message>
+        <source>ε_y spans 2ψ</source>
+        <translation>ε_y 的范围为 2ψ</translation>
+    </message>
+    <message>
+        <source>largest ε_x/ψ² over every direction (×1e-6)</source>
+        <translation>所有方向上 ε_x/ψ² 的最大值（×1e-6）</translation>
+    </message>
+    <message>
+        <source>3-D simulation (ψ = 480″, counting against the faces, zero through 360°): |corrected − true error|</source>
+        <translation>三维仿真（ψ = 480″，计数方向与面序相反，零位跨越 360°）：|修正后误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation: a constant 2″ backlash is the reversal B</source>
+        <translation>三维仿真：恒定 2″ 的回程间隙即反向差 B</translation>
+    </message>
+    <message>
+        <source>3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = 0.03″: RMS of corrected − true error (2σ)</source>
+        <translation>三维仿真，16 种设置，12–72 面，ψ 300–1200″，σ = 0.03″：修正后误差 − 真实误差的均方根（2σ）</translation>
+    </message>
+    <message>
+        <source>Table 1&apos;s signals: peak-to-peak interpolation error</source>
+        <translation>表 1 的信号：细分误差峰峰值</translation>
+    </message>
+    <message>
+        <source>Table 1&apos;s signals: error left after compensation (peak-to-peak)</source>
+        <translation>表 1 的信号：补偿后剩余误差（峰峰值）</translation>
+    </message>
+    <message>
+        <source>sampled signals with a true phase: |raw error − true error|</source>
+        <translation>带真实相位的采样信号：|原始误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>sampled signals with a true phase: |offsets − truth| (V)</source>
+        <translation>带真实相位的采样信号：|直流偏置 − 真值|（V）</translation>
+    </message>
+    <message>
         <source>Positioning (axis)</source>
         <translation>定位（轴线）</translation>
+    </message>
+    <message>
+        <source>axis without scatter: reversal B = lost motion</source>
+        <translation>无分散的轴系：反向差 B = 失动量</translation>
+    </message>
+    <message>
+        <source>axis without scatter: mean reversal B̄ = −lost motion (axis lags)</source>
+        <translation>无分散的轴系：平均反向差 B̄ = −失动量（轴系滞后）</translation>
+    </message>
+    <message>
+        <source>axis without scatter: E↑ = range of the axis error</source>
+        <translation>无分散的轴系：E↑ = 轴系误差的范围</translation>
+    </message>
+    <message>
+        <source>axis without scatter: A = range of the axis error + lost motion</source>
+        <translation>无分散的轴系：A = 轴系误差的范围 + 失动量</translation>
+    </message>
+    <message>
+        <source>axis without scatter: VDI 3441 P = Pa + U</source>
+        <translation>无分散的轴系：VDI 3441 P = Pa + U</translation>
+    </message>
+    <message>
+        <source>compensation table loaded into the rig&apos;s controller: largest |mean deviation| left</source>
+        <translation>补偿表载入仿真装置的控制器后：剩余 |平均偏差| 的最大值</translation>
     </message>
     <message>
         <source>R_down</source>
@@ -1954,8 +2079,173 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>校准机构</translation>
     </message>
     <message>
+        <source>supersedes</source>
+        <extracomment>how ``show`` names a record&apos;s fields (in English, the register&apos;s own column names)</extracomment>
+        <translation>取代</translation>
+    </message>
+    <message>
+        <source>superseded_by</source>
+        <translation>被取代于</translation>
+    </message>
+    <message>
+        <source>issue_date</source>
+        <translation>签发日期</translation>
+    </message>
+    <message>
+        <source>calibration_date</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>item_description</source>
+        <translation>被校对象</translation>
+    </message>
+    <message>
+        <source>item_manufacturer</source>
+        <translation>制造厂</translation>
+    </message>
+    <message>
+        <source>item_serial</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
         <source>customer</source>
         <translation>委托方</translation>
+    </message>
+    <message>
+        <source>workstation</source>
+        <translation>工作站</translation>
+    </message>
+    <message>
+        <source>issued_at</source>
+        <translation>签发时间</translation>
+    </message>
+    <message>
+        <source>pdf_sha256</source>
+        <translation>PDF 的 sha256</translation>
+    </message>
+    <message>
+        <source>The certificate register</source>
+        <translation>证书登记册</translation>
+    </message>
+    <message>
+        <source>sqlite:///path, a file path or postgresql://user@host/db</source>
+        <translation>sqlite:///路径、文件路径或 postgresql://user@host/db</translation>
+    </message>
+    <message>
+        <source>the certificates, newest first</source>
+        <translation>列出证书，最新的在前</translation>
+    </message>
+    <message>
+        <source>text to find in the number, the serial or the customer</source>
+        <translation>在证书编号、出厂编号或委托方中查找的文字</translation>
+    </message>
+    <message>
+        <source>one certificate&apos;s record</source>
+        <translation>一份证书的记录</translation>
+    </message>
+    <message>
+        <source>the certificate number</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>also write the PDF as issued</source>
+        <translation>同时写出签发时的 PDF</translation>
+    </message>
+    <message>
+        <source>also write the project behind it</source>
+        <translation>同时写出其所依据的项目</translation>
+    </message>
+    <message>
+        <source>is this PDF, byte for byte, one the register issued?</source>
+        <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
+    </message>
+    <message>
+        <source>the PDF to check</source>
+        <translation>要检查的 PDF</translation>
+    </message>
+    <message>
+        <source>every record: index.csv, the PDFs and the projects</source>
+        <translation>导出全部记录：index.csv、PDF 和项目</translation>
+    </message>
+    <message>
+        <source>the archive to write</source>
+        <translation>要写出的压缩包</translation>
+    </message>
+    <message>
+        <source>continue numbering from hand-issued numbers</source>
+        <translation>在手工签发的编号之后继续编号</translation>
+    </message>
+    <message>
+        <source>e.g. AB-{year}-{seq:04d}</source>
+        <translation>例如 AB-{year}-{seq:04d}</translation>
+    </message>
+    <message>
+        <source>the next sequence number to issue</source>
+        <translation>下一个要签发的序号</translation>
+    </message>
+    <message>
+        <source>YYYY-MM-DD for the scheme&apos;s date fields (default today)</source>
+        <translation>编号规则中日期字段所用的 YYYY-MM-DD（默认为今天）</translation>
+    </message>
+    <message>
+        <source>set an instrument&apos;s calibration interval</source>
+        <translation>设置仪器的校准周期</translation>
+    </message>
+    <message>
+        <source>the instrument&apos;s serial number</source>
+        <translation>仪器的出厂编号</translation>
+    </message>
+    <message>
+        <source>0 clears it</source>
+        <translation>0 表示清除</translation>
+    </message>
+    <message>
+        <source>{number}  ({status}{revision})</source>
+        <translation>{number}（{status}{revision}）</translation>
+    </message>
+    <message>
+        <source>  {field}: {value}</source>
+        <translation>  {field}：{value}</translation>
+    </message>
+    <message>
+        <source>  headline {name}: {value}</source>
+        <translation>  主要结果 {name}：{value}</translation>
+    </message>
+    <message>
+        <source>  software: {versions}</source>
+        <translation>  软件：{versions}</translation>
+    </message>
+    <message>
+        <source>  next calibration of {serial} due: {date}</source>
+        <translation>  {serial} 的下次校准日期：{date}</translation>
+    </message>
+    <message>
+        <source>{n} certificate(s) exported to {out}</source>
+        <translation>已将 {n} 份证书导出到 {out}</translation>
+    </message>
+    <message>
+        <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
+        <translation>{path}：不在登记册中（没有已签发的 PDF 具有此 SHA-256：已被改动、是草稿，或来自另一登记册）</translation>
+    </message>
+    <message>
+        <source>{path}: certificate {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：证书 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>--date {date}: not YYYY-MM-DD</source>
+        <translation>--date {date}：不是 YYYY-MM-DD 格式</translation>
+    </message>
+    <message>
+        <source>the next certificate of {scheme} will be {number}</source>
+        <translation>{scheme} 的下一份证书编号将为 {number}</translation>
+    </message>
+    <message>
+        <source>anglebench register: cannot write: {reason}</source>
+        <translation>anglebench register：无法写入：{reason}</translation>
     </message>
     <message>
         <source>item under test</source>
@@ -3497,8 +3787,24 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
     </message>
     <message>
+        <source>usage: </source>
+        <extracomment>``system`` follows the environment&apos;s locale argparse&apos;s own words (its help&apos;s headings and its refusals of a command line), for the translators: argparse looks them up through gettext; ``speaking`` hands them to our catalogue instead</extracomment>
+        <translation>用法：</translation>
+    </message>
+    <message>
+        <source>positional arguments</source>
+        <translation>位置参数</translation>
+    </message>
+    <message>
+        <source>options</source>
+        <translation>选项</translation>
+    </message>
+    <message>
+        <source>show this help message and exit</source>
+        <translation>显示此帮助信息并退出</translation>
+    </message>
+    <message>
         <source>the following arguments are required: %s</source>
-        <extracomment>argparse&apos;s own words when it refuses a command line, for the translators (argparse looks them up through gettext; ``_argparse_speaking`` hands them to our catalogue instead)</extracomment>
         <translation>缺少以下参数：%s</translation>
     </message>
     <message>
@@ -3542,12 +3848,76 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不能与参数 %s 同时使用</translation>
     </message>
     <message>
+        <source>one of the arguments %s is required</source>
+        <translation>必须给出参数 %s 之一</translation>
+    </message>
+    <message>
+        <source>unknown parser %(parser_name)r (choices: %(choices)s)</source>
+        <translation>未知的子命令 %(parser_name)r（可选：%(choices)s）</translation>
+    </message>
+    <message>
+        <source>language of what the command prints (zh_CN: Simplified Chinese; system, the default: the system&apos;s locale); JSON, CSV and the files written keep their English keys</source>
+        <translation>命令输出所用的语言（zh_CN：简体中文；system，默认：跟随系统区域设置）；JSON、CSV 及写出的文件保留其英文键名</translation>
+    </message>
+    <message>
+        <source>Analyse a readings file</source>
+        <translation>分析读数文件</translation>
+    </message>
+    <message>
+        <source>the workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>the readings (CSV, TSV, XLSX)</source>
+        <translation>读数文件（CSV、TSV、XLSX）</translation>
+    </message>
+    <message>
+        <source>print JSON instead of a summary</source>
+        <translation>输出 JSON 而不是摘要</translation>
+    </message>
+    <message>
+        <source>also write a test certificate</source>
+        <translation>同时写出校准证书</translation>
+    </message>
+    <message>
+        <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
+        <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
+    </message>
+    <message>
+        <source>also write the results per point (with U) as CSV or XLSX</source>
+        <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
+    </message>
+    <message>
+        <source>which of the file&apos;s headers holds which column, when the headers are not recognised, e.g. theta_deg=转角,azimuth_deg=方位角</source>
+        <translation>表头无法识别时，指定文件中哪个表头对应哪一列，例如 theta_deg=转角,azimuth_deg=方位角</translation>
+    </message>
+    <message>
+        <source>also write the workbench&apos;s correction table: fringe (CSV, or a C header for OUT.h), positioning (compensation table; --compensation-format, --compensation-step, --compensation-tables)</source>
+        <translation>同时写出工作台的修正表：fringe（CSV；OUT.h 时为 C 头文件），positioning（补偿表；见 --compensation-format、--compensation-step、--compensation-tables）</translation>
+    </message>
+    <message>
+        <source>angle unit of the printed summary and of --results (arcsec, urad or mdeg); JSON and certificates keep the unit of the evaluation</source>
+        <translation>输出摘要及 --results 所用的角度单位（arcsec、urad 或 mdeg）；JSON 和证书保持评定所用的单位</translation>
+    </message>
+    <message>
+        <source>theodolite: the vertical column is the zenith angle V (same as --vertical-reading zenith)</source>
+        <translation>theodolite：竖直列为天顶距 V（同 --vertical-reading zenith）</translation>
+    </message>
+    <message>
+        <source>{kind}: {label}{choices}. {help}</source>
+        <translation>{kind}：{label}{choices}。{help}</translation>
+    </message>
+    <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
     </message>
     <message>
         <source>--zenith applies to theodolite, not {kind}</source>
         <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
+        <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
     </message>
     <message>
         <source>anglebench analyze: --table: {workbench} has no correction table</source>
@@ -3580,6 +3950,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{what} written to {path}</source>
         <translation>{what}已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{path}: cannot read ({reason})</source>
+        <translation>{path}：无法读取（{reason}）</translation>
+    </message>
+    <message>
+        <source>{path}: not a JSON file ({reason})</source>
+        <translation>{path}：不是 JSON 文件（{reason}）</translation>
+    </message>
+    <message>
+        <source>{path}: not a certificate&apos;s details (nested too deep or a number too long)</source>
+        <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
     </message>
     <message>
         <source>anglebench analyze: {reason}; no certificate was written</source>
@@ -4088,6 +4470,162 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{what} written</source>
         <translation>{what}已写入</translation>
+    </message>
+    <message>
+        <source>Angle metrology workbench</source>
+        <translation>角度计量工作台</translation>
+    </message>
+    <message>
+        <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register; each has --help.</source>
+        <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register；各有 --help。</translation>
+    </message>
+    <message>
+        <source>project file to open</source>
+        <translation>要打开的项目文件</translation>
+    </message>
+    <message>
+        <source>load the bundled samples</source>
+        <translation>载入随附的示例</translation>
+    </message>
+    <message>
+        <source>render every workbench with its sample to DIR/&lt;workbench&gt;.png</source>
+        <translation>将每个工作台连同其示例绘制为 DIR/&lt;workbench&gt;.png</translation>
+    </message>
+    <message>
+        <source>the window&apos;s size for --screenshot, in logical pixels (with QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)</source>
+        <translation>--screenshot 的窗口尺寸，单位为逻辑像素（QT_SCALE_FACTOR=2 时，960x540 即 200 %% 缩放的 1920x1080 屏幕）</translation>
+    </message>
+    <message>
+        <source>the language of --screenshot&apos;s window and of this help (the window itself follows View › Language)</source>
+        <translation>--screenshot 窗口及本帮助所用的语言（窗口本身跟随“视图 › 语言”）</translation>
+    </message>
+    <message>
+        <source>{text}: give the size as WxH, e.g. 1280x720</source>
+        <translation>{text}：请以 WxH 给出尺寸，例如 1280x720</translation>
+    </message>
+    <message>
+        <source>{text}: 320x240 to 8000x8000</source>
+        <translation>{text}：应在 320x240 到 8000x8000 之间</translation>
+    </message>
+    <message>
+        <source>Platform</source>
+        <translation>平台</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>未通过</translation>
+    </message>
+    <message>
+        <source>AngleBench method validation</source>
+        <translation>AngleBench 方法确认</translation>
+    </message>
+    <message>
+        <source>Validation record of the software named below; file it with the method&apos;s validation (ISO/IEC 17025 7.2.2).</source>
+        <translation>下列软件的确认记录；请与方法确认一并归档（ISO/IEC 17025 7.2.2）。</translation>
+    </message>
+    <message>
+        <source>Method validation report</source>
+        <translation>方法确认报告</translation>
+    </message>
+    <message>
+        <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed.</source>
+        <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过。</translation>
+    </message>
+    <message>
+        <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed — NOT VALIDATED.</source>
+        <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过 — 未通过确认。</translation>
+    </message>
+    <message>
+        <source>What was checked</source>
+        <translation>检查内容</translation>
+    </message>
+    <message>
+        <source>Three non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). For each: the publication&apos;s check figures; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101).</source>
+        <translation>三种非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。对每种方法：论文的校核数值；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。</translation>
+    </message>
+    <message>
+        <source>Case</source>
+        <translation>案例</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>预期值</translation>
+    </message>
+    <message>
+        <source>Obtained</source>
+        <translation>所得值</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>Reviewed by</source>
+        <translation>审核</translation>
+    </message>
+    <message>
+        <source>Name, signature and date: {blank}</source>
+        <translation>姓名、签字及日期：{blank}</translation>
+    </message>
+    <message>
+        <source>Run the method validation cases</source>
+        <translation>运行方法确认案例</translation>
+    </message>
+    <message>
+        <source>also write the validation report</source>
+        <translation>同时写出确认报告</translation>
+    </message>
+    <message>
+        <source>simulated runs for each budget comparison (default 200)</source>
+        <translation>每项不确定度评定比较的仿真次数（默认 200）</translation>
+    </message>
+    <message>
+        <source>anglebench validate: --trials must be 100 to 100000</source>
+        <translation>anglebench validate：--trials 应在 100 到 100000 之间</translation>
+    </message>
+    <message>
+        <source>{verdict}  {workbench}: {name} — expected {expected}, obtained {obtained}</source>
+        <translation>{verdict}  {workbench}：{name} — 预期 {expected}，所得 {obtained}</translation>
+    </message>
+    <message>
+        <source>{passed} passed, {failed} failed</source>
+        <translation>{passed} 个通过，{failed} 个未通过</translation>
+    </message>
+    <message>
+        <source>anglebench validate: cannot write {path}: {reason}</source>
+        <translation>anglebench validate：无法写入 {path}：{reason}</translation>
+    </message>
+    <message>
+        <source>Validation report written to {path}</source>
+        <translation>确认报告已写入 {path}</translation>
+    </message>
+    <message>
+        <source>issued</source>
+        <translation>已签发</translation>
+    </message>
+    <message>
+        <source>superseded</source>
+        <translation>已被取代</translation>
+    </message>
+    <message>
+        <source>original</source>
+        <translation>原始</translation>
+    </message>
+    <message>
+        <source>replacement</source>
+        <translation>替代</translation>
+    </message>
+    <message>
+        <source>amendment {n}</source>
+        <translation>第 {n} 次修订</translation>
     </message>
 </context>
 </TS>
