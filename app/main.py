@@ -58,7 +58,7 @@ def main(argv: list[str] | None = None) -> int:
         for path in write_screenshots(args.screenshot, args.size, args.language):
             print(path)  # noqa: T201 - the command's output
         return 0
-    return run_gui(args.project, args.samples)
+    return run_gui(args.project, args.samples, words)
 
 
 def _size_reader(words):
@@ -105,11 +105,14 @@ def missing_x11_packages() -> list[str]:
     return missing
 
 
-def run_gui(project: str | None, samples: bool) -> int:
+def run_gui(project: str | None, samples: bool, words=str) -> int:
     missing = missing_x11_packages()
     if missing:
-        sys.stderr.write("anglebench: the window needs Qt's X11 libraries; install them with\n"
-                         f"  sudo apt-get install {' '.join(missing)}\n")
+        from models.messages import QT_TR_NOOP, message, rendered
+
+        sys.stderr.write(rendered(message(QT_TR_NOOP(
+            "anglebench: the window needs Qt's X11 libraries; install them with\n"
+            "  sudo apt-get install {packages}"), packages=" ".join(missing)), words) + "\n")
         return 1
     from PySide6.QtWidgets import QApplication
 

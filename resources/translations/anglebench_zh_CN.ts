@@ -4508,6 +4508,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{text}：应在 320x240 到 8000x8000 之间</translation>
     </message>
     <message>
+        <source>anglebench: the window needs Qt&apos;s X11 libraries; install them with
+  sudo apt-get install {packages}</source>
+        <translation>anglebench：窗口需要 Qt 的 X11 库；请用以下命令安装
+  sudo apt-get install {packages}</translation>
+    </message>
+    <message>
         <source>Platform</source>
         <translation>平台</translation>
     </message>
