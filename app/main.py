@@ -14,6 +14,10 @@ import argparse
 import os
 import sys
 
+from app.process_setup import tune_process
+
+tune_process()  # before numpy is imported: one BLAS thread, freed arrays kept for reuse
+
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -11,6 +11,11 @@ os.environ["LANG"] = "C.UTF-8"
 
 from pathlib import Path  # noqa: E402
 
+from app.process_setup import tune_process  # noqa: E402
+
+# the process as the app runs it (one BLAS thread: set before numpy is first imported)
+assert tune_process(), "numpy was imported before tests/conftest.py"
+
 import pytest  # noqa: E402
 
 SAMPLES = Path(__file__).resolve().parent.parent / "resources" / "samples"

@@ -222,3 +222,27 @@ def test_load_sample_menu_is_one_undo_step(make_window):
     assert bench.sheet.row_count == 41
     window.undo_action.trigger()
     assert bench.sheet.text(0, 0) == "5" and bench.sheet.row_count == 1
+
+
+def test_a_sheet_grown_large_waits_the_large_autosave_delay(make_window, monkeypatch):
+    """The timer started on a small edit (a setting) and a million rows arrived before it
+    ran out: it does not write them then, beside the user's first edits, but waits the
+    large sheets' delay from the same first edit; then it writes."""
+    import app.main_window as main_window
+
+    window = make_window()
+    fringe = window.presenter("fringe")
+    fringe.set_settings({**fringe.settings, "samples_per_period": 64})
+    assert window.autosave_timer.isActive()
+    assert window.autosave_timer.interval() == main_window.AUTOSAVE_DELAY_MS
+    written = []
+    monkeypatch.setattr(window, "autosave", lambda: written.append(True))
+    monkeypatch.setattr(main_window, "AUTOSAVE_THREAD_ROWS", -1)  # every sheet counts as large
+    window._autosave_when_due()  # the short delay ran out
+    assert written == [] and window.autosave_timer.isActive()
+    left_ms = window.autosave_timer.interval()
+    assert main_window.AUTOSAVE_DELAY_LARGE_MS - 500 < left_ms <= main_window.AUTOSAVE_DELAY_LARGE_MS
+    window._unsaved_since -= main_window.AUTOSAVE_DELAY_LARGE_MS / 1000.0  # its time came
+    window._autosave_when_due()
+    assert written == [True]
+    window.autosave_timer.stop()

@@ -100,7 +100,11 @@ def _row(parsed: ParsedReadings, i: int) -> int:
 
 def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> None:
     """Refuse what is not a fringe signal, with the reason, before any fit."""
+    largest = {}
     for key, u in (("u_sin", u_sin), ("u_cos", u_cos)):
+        largest[key] = float(np.max(np.abs(u)))
+        if largest[key] <= SIGNAL_LIMIT_V:  # (a NaN anywhere makes it NaN: not ≤)
+            continue
         bad = np.nonzero(~np.isfinite(u) | (np.abs(u) > SIGNAL_LIMIT_V))[0]
         if bad.size:
             i = int(bad[0])
@@ -108,12 +112,16 @@ def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray)
                 QT_TR_NOOP("row {row}, column '{key}': {u} V is not a read head's signal (beyond "
                            "±{signal_limit_v} V)"),
                 row=_row(parsed, i), key=key, u=f"{u[i]:g}", signal_limit_v=f"{SIGNAL_LIMIT_V:g}"))
+    # deviations from the mean, once for the spread and the correlation of both channels
+    deviation = {key: u - np.mean(u) for key, u in (("u_sin", u_sin), ("u_cos", u_cos))}
+    squares = {key: float(d @ d) for key, d in deviation.items()}
     for key, u in (("u_sin", u_sin), ("u_cos", u_cos)):
-        if not np.std(u) > 1e-9 * max(1.0, float(np.max(np.abs(u)))):
+        if not math.sqrt(squares[key] / u.size) > 1e-9 * max(1.0, largest[key]):
             raise ValueError(message(
                 QT_TR_NOOP("channel {key} is constant ({u} V): not a fringe signal"),
                 key=key, u=f"{u[0]:g}"))
-    corr = float(np.corrcoef(u_sin, u_cos)[0, 1])
+    corr = float(deviation["u_sin"] @ deviation["u_cos"]) / math.sqrt(squares["u_sin"]
+                                                                     * squares["u_cos"])
     if abs(corr) > 0.98:
         raise ValueError(message(
             QT_TR_NOOP("the two channels are the same signal (correlation {corr}): they must be in "

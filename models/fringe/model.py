@@ -518,17 +518,28 @@ class CorrectionTable:
         return hashlib.sha256(data).hexdigest()
 
     def correction_at(self, measured_phase_rad) -> np.ndarray:
+        # the same operations as low + (table[j + 1] − low)·fraction, in two buffers (a
+        # million samples' temporaries cost as much as their arithmetic)
         pos = np.asarray(measured_phase_rad, dtype=float) * (self.size / TWO_PI)
-        pos -= self.size * np.floor(pos * (1.0 / self.size))  # one turn: [0, size]
+        work = pos * (1.0 / self.size)
+        np.floor(work, out=work)
+        work *= self.size
+        pos -= work  # one turn: [0, size]
         j = pos.astype(np.intp)  # pos ≥ 0: the integer part is the floor
         np.minimum(j, self.size - 1, out=j)  # a phase a rounding below 2π
         pos -= j  # the fraction of the way to the next entry
         table = np.append(self.correction_rad, self.correction_rad[0])  # periodic
         low = table[j]
-        return low + (table[j + 1] - low) * pos
+        j += 1
+        np.take(table, j, out=work)
+        work -= low
+        work *= pos
+        work += low
+        return work
 
     def compensate(self, measured_phase_rad) -> np.ndarray:
-        return np.asarray(measured_phase_rad) - self.correction_at(measured_phase_rad)
+        correction = self.correction_at(measured_phase_rad)
+        return np.subtract(np.asarray(measured_phase_rad), correction, out=correction)
 
 
 def build_correction_table(sin_fit: ChannelFit, cos_fit: ChannelFit,

@@ -28,13 +28,14 @@ BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 1
                                           (214, 39, 40), (230, 126, 34), (22, 160, 133))
 
 
-def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray, str]:
-    """(x of every sample in drawing order, the order, the axis title)."""
+def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray | None, str]:
+    """(x of every sample in drawing order, the order (None: as recorded), the axis
+    title)."""
     periods = result.theta_rad / (2 * np.pi)
     if periods.size < 2 or (result.reversals == 0 and periods[-1] > periods[0]):
         # one way along the record: a sample whose phase stepped back less than a turn
         # (a spike typed over it, noise while standing) is drawn where the record had got to
-        return np.maximum.accumulate(periods), np.arange(periods.size), \
+        return np.maximum.accumulate(periods, out=periods), None, \
             QT_TR_NOOP("electrical phase θ (periods)")
     x = np.degrees(np.mod(result.theta_rad, 2 * np.pi))
     order = np.argsort(x, kind="stable")
@@ -51,8 +52,12 @@ def _residuals(u: np.ndarray, theta_rad: np.ndarray, fit) -> np.ndarray:
 def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     """Every figure of a result: errors, residuals, signals, Lissajous, spectrum, drift."""
     x, order, along = _axis(result)
+
+    def drawn(values: np.ndarray) -> np.ndarray:  # in drawing order (a record's own: no copy)
+        return values if order is None else values[order]
+
     unit = result.unit_symbol.strip()
-    raw, comp = result.raw_error[order], result.compensated_error[order]
+    raw, comp = drawn(result.raw_error), drawn(result.compensated_error)
     # raw and compensated on one sampling that keeps the extremes of both
     raw_x, _ = envelope(x, raw, bins)
     comp_x, _ = envelope(x, comp, bins)
@@ -64,16 +69,16 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                                 f"{label} ({unit})", (
         PlotSeries(QT_TR_NOOP("before compensation"), x[pick], raw[pick], BLUE, role="raw"),
         PlotSeries(QT_TR_NOOP("after compensation"), x[pick], comp[pick], GREEN, role="corrected")))}
-    res_s = _residuals(result.u_sin, result.theta_rad, result.sin_fit)[order] * 1e3
-    res_c = _residuals(result.u_cos, result.theta_rad, result.cos_fit)[order] * 1e3
+    res_s = drawn(_residuals(result.u_sin, result.theta_rad, result.sin_fit)) * 1e3
+    res_c = drawn(_residuals(result.u_cos, result.theta_rad, result.cos_fit)) * 1e3
     out["residuals"] = PlotFigure(QT_TR_NOOP("Fit residuals"), along, QT_TR_NOOP("residual (mV)"), (
         PlotSeries("sin", *envelope(x, res_s, bins), PURPLE, role="residual"),
         PlotSeries("cos", *envelope(x, res_c, bins), RED)))
     step = max(1, x.size // (2 * bins))
-    theta = result.theta_rad[order][::step]
+    theta = drawn(result.theta_rad)[::step]
     out["signals"] = PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
-        PlotSeries("u sin", *envelope(x, result.u_sin[order], bins), (230, 176, 170)),
-        PlotSeries("u cos", *envelope(x, result.u_cos[order], bins), (169, 204, 227)),
+        PlotSeries("u sin", *envelope(x, drawn(result.u_sin), bins), (230, 176, 170)),
+        PlotSeries("u cos", *envelope(x, drawn(result.u_cos), bins), (169, 204, 227)),
         PlotSeries("sin fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28)),
         PlotSeries("cos fit", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96))))
     shown = one_per_cell(result.u_cos, result.u_sin)  # every excursion, ~1000 points a ring
