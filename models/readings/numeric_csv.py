@@ -53,11 +53,14 @@ def _line_offset(data: bytes, line: int) -> int:
     return offset
 
 
-# ~6 000 lines a call. Every step on the body holds the interpreter while it runs — numpy's
+# ~400 lines a call. Every step on the body holds the interpreter while it runs — numpy's
 # parser, the checks, the decoding — so each works on a chunk: a window reading on a
-# worker thread gets the interpreter back every few milliseconds (a million lines in
-# one call froze it for half a second; whole-file checks for 30–60 ms each).
-CHUNK_BYTES = 1 << 17
+# worker thread gets the interpreter back within half a millisecond (a million lines in
+# one call froze it for half a second; whole-file checks for 30–60 ms each). A paint of
+# the window calls Python hundreds of times and waits that long at each call: with
+# chunks of 6 000 lines a paint during an import took 0.2–0.7 s; the parse as a whole
+# takes no longer for the smaller chunks.
+CHUNK_BYTES = 8 * 1024
 
 
 class _NotPlain(Exception):

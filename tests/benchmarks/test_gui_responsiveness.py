@@ -239,19 +239,20 @@ def test_window_responsiveness(qtbot, tmp_path, report):
         "",
         "A file of plain numbers is read into columns of numbers (models/readings/sheet.py "
         "NumericRows; a cell becomes text only when shown or edited), its bytes checked and "
-        "parsed a chunk of ~6000 lines at a time so the window gets the interpreter back "
-        "every few ms. A superseded analysis stops at its next checkpoint "
-        "(models/cancellation.py). With N given the fit is 64 per-phase sums and an edit "
-        "meets its target; with the phase estimated from the signals every edit refines "
-        "the phase of all million samples again (three passes, each a 1M × 7 design) and "
-        "fits 16384 periods: most of a second on this machine. The pauses left are the "
-        "paints of a new result (pyqtgraph draws the three error panels in ~20–40 ms; a "
-        "first result changes their layout, which paints them two or three times). An "
-        "autosave of a new million-row record runs in the background and steps aside while "
-        "an analysis or an import runs (with it off, an edit with N given took 154 ms and "
-        "the worst pause was 84 ms; beside it, 220 ms and 0.26–0.44 s before it stepped "
-        "aside). One load in three still shows a longer pause (the max column, ~0.3 s) "
-        "whose cause is not found.",
+        "parsed ~400 lines at a time so the window gets the interpreter back within half a "
+        "millisecond: a paint calls Python hundreds of times and waits that long at each "
+        "call (with chunks of 6000 lines, the paint of a result arriving during an import "
+        "took 0.2–0.7 s: the longer pause seen in one load of three before). A superseded "
+        "analysis stops at its next checkpoint (models/cancellation.py). The process runs "
+        "BLAS on one thread and keeps freed arrays for reuse (app/process_setup.py). With N "
+        "given the fit is 64 per-phase sums and an edit meets its target; with the phase "
+        "estimated from the signals every edit refines the phase of all million samples "
+        "again (three passes, each a 1M × 7 design) and fits 16384 periods: about half a "
+        "second on this machine, and no incremental form gives the same result as a fresh "
+        "analysis. The pauses left are the paints of a new result (pyqtgraph draws the three "
+        "error panels in ~20–40 ms). An autosave of a new million-row record runs in the "
+        "background 20 s after the first unsaved change and steps aside while an analysis "
+        "or an import runs.",
     ]
     report("4-gui", lines, headline=(
         f"Window (offscreen): cold start to the first paint {fmt_time(cold).split(' (')[0]} "
