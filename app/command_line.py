@@ -128,6 +128,14 @@ class HelpFormatter(argparse.HelpFormatter):
     def _split_lines(self, text: str, width: int) -> list[str]:
         return wrapped(text, width)
 
+    def _format_usage(self, usage, actions, groups, prefix) -> str:
+        # argparse indents the usage's next lines by len(prefix): "用法：" is 3 characters
+        # but 6 columns. Laid out under a stand-in of the prefix's width, then swapped.
+        prefix = argparse._("usage: ") if prefix is None else prefix
+        stand_in = "u" * display_width(prefix)
+        text = super()._format_usage(usage, actions, groups, stand_in)
+        return prefix + text[len(stand_in):]
+
     def _fill_text(self, text: str, width: int, indent: str) -> str:
         return "\n".join(indent + line for line in wrapped(text, width - len(indent)))
 

@@ -85,6 +85,9 @@ def test_every_help_text_is_in_chinese_and_fits_the_terminal(command, monkeypatc
     assert "show this help" not in printed and "usage:" not in printed
     wide = [line for line in printed.splitlines() if display_width(line) > 80]
     assert wide == [], wide  # a Chinese character takes two columns
+    first, second = printed.splitlines()[:2]
+    if second.startswith(" "):  # the usage goes on under its first argument, by columns
+        assert len(second) - len(second.lstrip()) == display_width(first.split(" [")[0]) + 1
     with pytest.raises(SystemExit):
         main([*command, "--help", "--language", "en"])
     english = capsys.readouterr().out
