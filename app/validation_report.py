@@ -36,7 +36,7 @@ def _versions() -> list[tuple[str, str]]:
             (QT_TR_NOOP("Platform"), platform.platform())]
 
 
-def verdict(case: ValidationCase) -> str:
+def _verdict(case: ValidationCase) -> str:
     return QT_TR_NOOP("pass") if case.passed else QT_TR_NOOP("FAIL")
 
 
@@ -47,8 +47,8 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
     from app.writers.certificate_pdf import ReportPdf, close_fonts  # fpdf2 only when a PDF is asked for
 
     passed = sum(c.passed for c in cases)
-    when = run_at.strftime("%Y-%m-%d %H:%M UTC")
-    pdf = ReportPdf((QT_TR_NOOP("AngleBench method validation"), when),
+    pdf = ReportPdf((QT_TR_NOOP("AngleBench method validation"),
+                     run_at.strftime("%Y-%m-%d %H:%M UTC")),
                     (QT_TR_NOOP("Validation record of the software named below; file it with "
                                 "the method's validation (ISO/IEC 17025 7.2.2)."),
                      f"AngleBench {__version__}"), language=language)
@@ -61,14 +61,13 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
     pdf.add_page()
     pdf.set_font("dejavu", "B", 17)
     pdf.cell(0, 9, say(QT_TR_NOOP("Method validation report")), new_x="LMARGIN", new_y="NEXT")
-    outcome = (message(QT_TR_NOOP("Run on {date} at {time} UTC: {passed} of {cases} reference "
-                                  "cases passed."), date=run_at.strftime("%Y-%m-%d"),
-                       time=run_at.strftime("%H:%M"), passed=passed, cases=len(cases))
-               if passed == len(cases) else
-               message(QT_TR_NOOP("Run on {date} at {time} UTC: {passed} of {cases} reference "
-                                  "cases passed — NOT VALIDATED."),
-                       date=run_at.strftime("%Y-%m-%d"), time=run_at.strftime("%H:%M"),
-                       passed=passed, cases=len(cases)))
+    outcome = message(
+        QT_TR_NOOP("Run on {date} at {time} UTC: {passed} of {cases} reference cases passed.")
+        if passed == len(cases) else
+        QT_TR_NOOP("Run on {date} at {time} UTC: {passed} of {cases} reference cases passed — "
+                   "NOT VALIDATED."),
+        date=run_at.strftime("%Y-%m-%d"), time=run_at.strftime("%H:%M"), passed=passed,
+        cases=len(cases))
     pdf.paragraph(outcome, 11)
     pdf.key_values(_versions())
     pdf.heading(QT_TR_NOOP("What was checked"))
@@ -86,7 +85,7 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
               QT_TR_NOOP("Obtained"), QT_TR_NOOP("Verdict"))
     for workbench in dict.fromkeys(c.workbench for c in cases):
         pdf.heading(workbench, keep_with=30)
-        rows = [(c.name, c.source, c.expected, c.obtained, verdict(c))
+        rows = [(c.name, c.source, c.expected, c.obtained, _verdict(c))
                 for c in cases if c.workbench == workbench]
         pdf.data_table(Table(workbench, header, rows), (62, 24, 38, 36, 14),
                        ("LEFT", "LEFT", "RIGHT", "RIGHT", "CENTER"), size=7.5)
@@ -128,7 +127,7 @@ def run_validate(argv: list[str]) -> int:
     for c in cases:
         sys.stdout.write(say(message(QT_TR_NOOP("{verdict}  {workbench}: {name} — expected "
                                                 "{expected}, obtained {obtained}"),
-                                     verdict=message(verdict(c)), workbench=message(c.workbench),
+                                     verdict=message(_verdict(c)), workbench=message(c.workbench),
                                      name=_as_message(c.name), expected=c.expected,
                                      obtained=c.obtained)) + "\n")
     passed = sum(c.passed for c in cases)
