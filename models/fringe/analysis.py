@@ -284,7 +284,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     to_unit = period / TWO_PI
     raw = interpolation_error_rad(measured, theta) * to_unit
     comp = interpolation_error_rad(table.compensate(measured), theta) * to_unit
-    reversals = count_reversals(theta)
+    # N equal steps: the phase rises with the row by construction, and never turns back
+    reversals = 0 if source == "samples_per_period" else count_reversals(theta)
     checkpoint()
     if source == "samples_per_period":
         sin_periods = fit_periods(u_sin, per_period, orders)
