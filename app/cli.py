@@ -154,7 +154,6 @@ def run_analyze(argv: list[str]) -> int:
         args = _parser(words).parse_args(argv)
     args.language = language  # "system" resolved
     kind = KINDS[args.kind]
-    words = translator(args.language)
 
     try:
         settings = _settings_from(args)
@@ -259,8 +258,8 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         with open(path, encoding="utf-8-sig") as handle:
             data = json.load(handle)
     except OSError as exc:
-        raise MetadataError(message(QT_TR_NOOP("{path}: cannot read ({reason})"), path=path,
-                                    reason=exc.strerror)) from None
+        raise MetadataError(message(QT_TR_NOOP("{path}: cannot read ({value})"), path=path,
+                                    value=exc.strerror)) from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise MetadataError(message(QT_TR_NOOP("{path}: not a JSON file ({reason})"), path=path,
                                     reason=str(exc))) from None

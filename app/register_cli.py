@@ -24,26 +24,18 @@ import zipfile
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
+from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
 from models.project.atomic_write import write_bytes_atomic
 from models.register.location import register_url
 from models.register.wording import revision_words, status_words
 
-COLUMNS = ("number", "status", "revision", "supersedes", "superseded_by", "issue_date",
-           "calibration_date", "workbench", "item_description", "item_manufacturer",
-           "item_serial", "customer", "operator", "workstation", "issued_at", "pdf_sha256")
-#: how ``show`` names a record's fields (in English, the register's own column names)
-FIELD_NAMES = {"supersedes": QT_TR_NOOP("supersedes"),
-               "superseded_by": QT_TR_NOOP("superseded_by"),
-               "issue_date": QT_TR_NOOP("issue_date"),
-               "calibration_date": QT_TR_NOOP("calibration_date"),
-               "workbench": QT_TR_NOOP("workbench"),
-               "item_description": QT_TR_NOOP("item_description"),
-               "item_manufacturer": QT_TR_NOOP("item_manufacturer"),
-               "item_serial": QT_TR_NOOP("item_serial"),
-               "customer": QT_TR_NOOP("customer"), "operator": QT_TR_NOOP("operator"),
-               "workstation": QT_TR_NOOP("workstation"), "issued_at": QT_TR_NOOP("issued_at"),
-               "pdf_sha256": QT_TR_NOOP("pdf_sha256")}
+#: what ``show`` lists of a record, named as the register's columns (translated as names)
+SHOWN = (QT_TR_NOOP("supersedes"), QT_TR_NOOP("superseded_by"), QT_TR_NOOP("issue_date"),
+         QT_TR_NOOP("calibration_date"), QT_TR_NOOP("workbench"),
+         QT_TR_NOOP("item_description"), QT_TR_NOOP("item_manufacturer"),
+         QT_TR_NOOP("item_serial"), QT_TR_NOOP("customer"), QT_TR_NOOP("operator"),
+         QT_TR_NOOP("workstation"), QT_TR_NOOP("issued_at"), QT_TR_NOOP("pdf_sha256"))
+COLUMNS = ("number", "status", "revision", *SHOWN)
 
 
 def _parser(words) -> argparse.ArgumentParser:
@@ -92,11 +84,11 @@ def _print_record(record, register, words) -> None:
                 else joined((", ", revision_words(record.revision))))
     lines = [message(QT_TR_NOOP("{number}  ({status}{revision})"), number=record.number,
                      status=status_words(record.status), revision=revision)]
-    for key in COLUMNS[3:]:
+    for key in SHOWN:
         value = getattr(record, key)
         if value:
-            lines.append(message(QT_TR_NOOP("  {field}: {value}"),
-                                 field=message(FIELD_NAMES[key]), value=value))
+            lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
+                                 value=value))
     for name, value in record.headline.items():  # a figure's name as the certificate has it
         lines.append(message(QT_TR_NOOP("  headline {name}: {value}"),
                              name=declared_text(name, words), value=f"{value:.6g}"))
@@ -132,7 +124,6 @@ def run_register(argv: list[str]) -> int:
     language = language_asked(argv)
     with speaking(language) as words:
         args = _parser(words).parse_args(argv)
-    words = translator(language)
     from models.register.store import Register, RegisterError
 
     try:
@@ -156,8 +147,8 @@ def run_register(argv: list[str]) -> int:
                     with open(args.pdf, "rb") as handle:
                         data = handle.read()
                 except OSError as exc:
-                    raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({reason})"),
-                                                path=args.pdf, reason=exc.strerror)) from None
+                    raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
+                                                path=args.pdf, value=exc.strerror)) from None
                 record = register.verify(data)
                 if record is None:
                     sys.stdout.write(rendered(message(QT_TR_NOOP(

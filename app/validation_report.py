@@ -20,7 +20,7 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models import __version__
 from models.certificate.document import Table
-from models.messages import QT_TR_NOOP, Message, message, rendered, translator
+from models.messages import QT_TR_NOOP, in_language, message
 from models.project.atomic_write import write_bytes_atomic
 from models.validation.cases import ValidationCase, run_validation
 
@@ -114,10 +114,9 @@ def run_validate(argv: list[str]) -> int:
     language = language_asked(argv)
     with speaking(language) as words:
         args = _parser(words).parse_args(argv)
-    words = translator(language)
 
     def say(text: str) -> str:
-        return rendered(text, words) if isinstance(text, Message) else words(text)
+        return in_language(text, words)
 
     if not 100 <= args.trials <= 100_000:
         _say(say(QT_TR_NOOP("anglebench validate: --trials must be 100 to 100000")))
@@ -127,9 +126,9 @@ def run_validate(argv: list[str]) -> int:
     for c in cases:
         sys.stdout.write(say(message(QT_TR_NOOP("{verdict}  {workbench}: {name} — expected "
                                                 "{expected}, obtained {obtained}"),
-                                     verdict=message(_verdict(c)), workbench=message(c.workbench),
-                                     name=_as_message(c.name), expected=c.expected,
-                                     obtained=c.obtained)) + "\n")
+                                     verdict=say(_verdict(c)), workbench=say(c.workbench),
+                                     name=say(c.name), expected=say(c.expected),
+                                     obtained=say(c.obtained))) + "\n")
     passed = sum(c.passed for c in cases)
     sys.stdout.write(say(message(QT_TR_NOOP("{passed} passed, {failed} failed"), passed=passed,
                                  failed=len(cases) - passed)) + "\n")
@@ -145,7 +144,3 @@ def run_validate(argv: list[str]) -> int:
         _say(say(message(QT_TR_NOOP("Validation report written to {path}"), path=str(path))))
     return 0 if passed == len(cases) else 1
 
-
-def _as_message(text: str) -> Message:
-    """A case's name as a message (a plain name is translated whole)."""
-    return text if isinstance(text, Message) else message(text)

@@ -20,7 +20,7 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "joined",
+__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "in_language", "joined",
            "lines", "message", "reason_of", "rendered", "translator", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
@@ -117,6 +117,15 @@ def declared_text(source: str, translate: Callable[[str], str]) -> str:
         if words != head:
             return words + unit
     return source
+
+
+def in_language(text: str, translate: Callable[[str], str]) -> str:
+    """Any text of ours in another language: a :class:`Message` in its translated template
+    with its own figures, another text looked up whole (:func:`declared_text`); a text
+    with no translation (user input, figures) as it is."""
+    if isinstance(text, Message):
+        return rendered(text, translate)
+    return declared_text(text, translate)
 
 
 @functools.cache

@@ -29,15 +29,7 @@ from fpdf.fonts import FontFace
 
 from models import __version__
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
-from models.messages import (
-    QT_TR_NOOP,
-    Message,
-    declared_text,
-    joined,
-    message,
-    rendered,
-    translator,
-)
+from models.messages import QT_TR_NOOP, Message, in_language, joined, message, translator
 from models.project.atomic_write import write_bytes_atomic
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.conformity import uncertainty_decimals
@@ -140,11 +132,7 @@ def _say(language: str):
     if language != "zh":
         return str
     words = translator("zh_CN")
-
-    def say(text: str) -> str:
-        return rendered(text, words) if isinstance(text, Message) else declared_text(text, words)
-
-    return say
+    return lambda text: in_language(text, words)
 
 
 def revision_statement(meta) -> str:

@@ -2080,7 +2080,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>supersedes</source>
-        <extracomment>how ``show`` names a record&apos;s fields (in English, the register&apos;s own column names)</extracomment>
+        <extracomment>what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
         <translation>取代</translation>
     </message>
     <message>
@@ -3950,10 +3950,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{what} written to {path}</source>
         <translation>{what}已写入 {path}</translation>
-    </message>
-    <message>
-        <source>{path}: cannot read ({reason})</source>
-        <translation>{path}：无法读取（{reason}）</translation>
     </message>
     <message>
         <source>{path}: not a JSON file ({reason})</source>
