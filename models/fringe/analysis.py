@@ -18,14 +18,13 @@ from models.fringe.model import (
     fit_channel_pso,
     fit_channels,
     fit_channels_by_phase,
-    fit_channels_with_design,
     fit_periods,
     fit_periods_along,
     interpolation_error_rad,
     period_arcsec,
     refine_phase,
 )
-from models.fringe.phase import EllipseFit, fit_ellipse
+from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.report import fringe_certificate
 from models.fringe.result import FringeResult
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
@@ -224,8 +223,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     ellipse = _ellipse(u_sin, u_cos)
     checkpoint()
     source, theta = _phase_source(parsed, per_period, warnings)
+    phasor = None
     if source == "estimated":
-        phase = ellipse.phase(u_sin, u_cos)
+        phase, *phasor = ellipse.phase_and_phasor(u_sin, u_cos)
         bins = np.count_nonzero(np.bincount(np.floor((phase + math.pi) / TWO_PI * 36)
                                             .astype(np.intp)))
         if bins < 27:
@@ -233,7 +233,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                 QT_TR_NOOP("the signals cover {value} % of a period: the phase cannot be estimated from "
                            "less than three quarters of one"),
                 value=f"{100 * bins / 36:.0f}"))
-        theta = np.unwrap(phase)
+        theta = unwrapped(phase)
         warnings.append(OBSERVABILITY)
     pso_seconds, design = None, None
     if s["method"] == "pso":
@@ -250,12 +250,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                        "least squares, {seconds} s."),
             cost=f"{ps.cost + pc.cost:.3g}", lsq=f"{lsq_cost:.3g}", seconds=f"{pso_seconds:.2f}"))
     elif source == "estimated":
-        theta, (sin_fit, cos_fit), design = refine_phase(theta, u_sin, u_cos, orders)
+        theta, (sin_fit, cos_fit), design = refine_phase(theta, u_sin, u_cos, orders,
+                                                          phasor=phasor)
     elif source == "samples_per_period":  # N equal steps: the fit from N per-phase sums
         index = np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
         sin_fit, cos_fit = fit_channels_by_phase(index, per_period, [u_sin, u_cos], orders)
     else:
-        (sin_fit, cos_fit), design = fit_channels_with_design(theta, [u_sin, u_cos], orders)
+        sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
     if source != "estimated" and s["method"] == "lsq":
         worst = min(sin_fit.r_squared, cos_fit.r_squared)
         if not worst >= MIN_R_SQUARED:
@@ -292,7 +293,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         cos_periods = fit_periods(u_cos, per_period, orders)
     else:
         sin_periods, cos_periods = fit_periods_along(theta, [u_sin, u_cos], orders,
-                                                     design=design)
+                                                     stacked=design)
     return FringeResult(
         theta_rad=theta, u_sin=u_sin, u_cos=u_cos, sin_fit=sin_fit, cos_fit=cos_fit,
         raw_error=raw, compensated_error=comp, table=table, lines_per_rev=lines,

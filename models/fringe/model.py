@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from models.cancellation import checkpoint
+from models.fringe.harmonic_basis import BLOCK, BasisBlocks, blocks, phasor_of
 from models.messages import QT_TR_NOOP, message
 
 __all__ = [
@@ -36,7 +37,6 @@ __all__ = [
     "fit_channel_pso",
     "fit_periods",
     "fit_periods_along",
-    "fit_channels_with_design",
     "refine_phase",
     "interpolation_error_arcsec",
     "interpolation_error_rad",
@@ -208,41 +208,6 @@ def _fits(x: np.ndarray, inv: np.ndarray, ys: np.ndarray, orders: tuple[int, ...
             for j in range(ys.shape[1])]
 
 
-class _Basis:
-    """The rows 1, sin kθ, cos kθ (k in ``orders``) of a long record's design, written
-    into buffers made once: a pass of the phase refinement then allocates nothing of the
-    record's size (a fresh 56 MB design and its temporaries every pass cost as much in
-    page faults as the arithmetic). Orders by the Chebyshev recurrence
-    sin (k+1)θ = 2 cos θ · sin kθ − sin (k−1)θ from one sine and one cosine."""
-
-    def __init__(self, size: int, orders: tuple[int, ...]) -> None:
-        self.orders = orders
-        self.rows = np.empty((1 + 2 * len(orders), size))  # .T is the design matrix
-        self._scratch = np.empty((7, size))
-
-    def at(self, theta: np.ndarray) -> np.ndarray:
-        rows, (two_cos, s0, s1, s2, c0, c1, c2) = self.rows, self._scratch
-        rows[0] = 1.0
-        np.sin(theta, out=s1)
-        np.cos(theta, out=c1)
-        np.multiply(c1, 2.0, out=two_cos)
-        s0.fill(0.0)
-        c0.fill(1.0)
-        k = 1
-        for i, order in enumerate(self.orders):
-            while k < order:  # (s0, s1) ← (s1, 2 cos θ · s1 − s0), likewise the cosines
-                np.multiply(two_cos, s1, out=s2)
-                s2 -= s0
-                s0, s1, s2 = s1, s2, s0
-                np.multiply(two_cos, c1, out=c2)
-                c2 -= c0
-                c0, c1, c2 = c1, c2, c0
-                k += 1
-            rows[1 + 2 * i] = s1
-            rows[2 + 2 * i] = c1
-        return rows.T
-
-
 def _inverse(gram: np.ndarray) -> np.ndarray:
     """(XᵀX)⁻¹, the pseudo-inverse when X is rank-deficient."""
     n_par = gram.shape[0]
@@ -258,59 +223,76 @@ def _inverse(gram: np.ndarray) -> np.ndarray:
 
 
 def refine_phase(theta_rad, u_sin, u_cos, orders: tuple[int, ...] = (1, 3, 5),
-                 iterations: int = 3) -> tuple[np.ndarray, list[ChannelFit], np.ndarray]:
+                 iterations: int = 3, phasor: tuple[np.ndarray, np.ndarray] | None = None
+                 ) -> tuple[np.ndarray, list[ChannelFit], np.ndarray]:
     """An estimated phase refined against the channels' own harmonics: both channels are
     fitted at the phase, then each sample's phase moves to the nearest point of the fitted
     curve (one Gauss–Newton step), repeated ``iterations`` times; then the final fit.
 
-    Returns (phase, [sin fit, cos fit], the design matrix at that phase). One design per
-    pass serves the fit, the model values and their slopes (dU/dθ has the coefficients
-    of U mapped by the derivative), which is where a million samples' time goes.
+    ``phasor``: (sin θ, cos θ) of the phase given, if at hand (the corrected signals over
+    their norm, for a phase that is their atan2). Returns (phase, [sin fit, cos fit], the
+    rows of the design at that phase with the two channels below them: what
+    :func:`fit_periods_along` needs). A pass is one sweep over the record a block at a time
+    (:mod:`models.fringe.harmonic_basis`): each block steps its phase with the last fit
+    (the values and slopes from the block's rows: dU/dθ has the coefficients of U mapped
+    by the derivative), rotates its phasor, and adds its rows at the new phase to the
+    normal equations of the next fit.
     """
     theta = np.array(theta_rad, dtype=float)  # refined in place: a copy
-    ys = np.column_stack([np.asarray(u_sin, dtype=float), np.asarray(u_cos, dtype=float)])
+    ys = np.vstack([np.asarray(u_sin, dtype=float), np.asarray(u_cos, dtype=float)])
     n_par = 1 + 2 * len(orders)
     if theta.size < n_par + 1:
         raise ValueError(message(
             QT_TR_NOOP("{size} samples; at least {value} are needed for orders {join}"),
             size=theta.size, value=n_par + 1, join=', '.join(map(str, orders))))
+    sin, cos = phasor_of(theta) if phasor is None else (
+        np.array(phasor[0], dtype=float), np.array(phasor[1], dtype=float))
     derivative = np.zeros((n_par, n_par))
     for i, k in enumerate(orders):  # d/dθ (s sin kθ + c cos kθ) = −k c sin kθ + k s cos kθ
         derivative[1 + 2 * i, 2 + 2 * i] = -k
         derivative[2 + 2 * i, 1 + 2 * i] = k
-    basis = _Basis(theta.size, orders)
-    values = np.empty((theta.size, 4))  # U_sin, U_cos, their slopes
-    rs, rc, step = np.empty((3, theta.size))
-    for _ in range(iterations):
+    basis = BasisBlocks(orders)
+    curve = np.empty((4, BLOCK))  # U_sin, U_cos and their slopes at a block's samples
+    curve_of = None  # (4, n_par): the last fit's U_sin, U_cos and slopes by basis row
+    for _ in range(iterations + 1):
         checkpoint()
-        x = basis.at(theta)
-        coefs = _inverse(basis.rows @ x) @ (basis.rows @ ys)
-        np.matmul(x, np.hstack([coefs, derivative @ coefs]), out=values)
-        np.subtract(values[:, 0], ys[:, 0], out=rs)
-        np.subtract(values[:, 1], ys[:, 1], out=rc)
-        ds, dc = values[:, 2], values[:, 3]
-        rs *= ds
-        rc *= dc
-        rs += rc  # the residual along the curve's tangent …
-        np.multiply(ds, ds, out=step)
-        np.multiply(dc, dc, out=rc)
-        step += rc
-        np.maximum(step, 1e-30, out=step)  # … over the tangent's squared length
-        np.divide(rs, step, out=step)
-        theta -= step
-    del values, rs, rc, step
+        gram, rhs = np.zeros((n_par, n_par)), np.zeros((n_par, 2))
+        for start, stop in blocks(theta.size):
+            s, c, y = sin[start:stop], cos[start:stop], ys[:, start:stop]
+            if curve_of is not None:
+                values = curve[:, :stop - start]
+                np.matmul(curve_of, basis.rows(s, c), out=values)
+                rs, rc, ds, dc = values
+                rs -= y[0]
+                rc -= y[1]
+                rs *= ds
+                rc *= dc
+                rs += rc  # the residual along the curve's tangent …
+                np.multiply(ds, ds, out=ds)
+                np.multiply(dc, dc, out=dc)
+                ds += dc
+                np.maximum(ds, 1e-30, out=ds)  # … over the tangent's squared length
+                np.divide(rs, ds, out=ds)
+                theta[start:stop] -= ds
+                basis.rotate(s, c, ds)
+            block_gram, block_rhs = basis.normal_sums(s, c, y)
+            gram += block_gram
+            rhs += block_rhs
+        gram = np.triu(gram) + np.triu(gram, 1).T  # symmetric to the bit
+        inv = _inverse(gram)
+        coefs = inv @ rhs
+        curve_of = np.vstack([coefs.T, (derivative @ coefs).T])
     checkpoint()
-    x = basis.at(theta)
-    return theta, _fits(x, _inverse(basis.rows @ x), ys, orders), x
-
-
-def fit_channels_with_design(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5)
-                             ) -> tuple[list[ChannelFit], np.ndarray]:
-    """:func:`fit_channels` on a long record, with its design matrix for the per-period
-    fits (:func:`fit_periods_along`) to use again."""
-    theta = np.asarray(theta_rad, dtype=float)
-    x, inv = _solver(theta, orders)
-    return _fits(x, inv, np.asarray(channels, dtype=float).T, orders), x
+    stacked = np.empty((n_par + 2, theta.size))  # the design's rows, the channels below
+    stacked[n_par:] = ys
+    resid = ys  # the channels' copy becomes their residuals
+    for start, stop in blocks(theta.size):
+        rows = basis.rows(sin[start:stop], cos[start:stop], out=stacked[:n_par, start:stop])
+        resid[:, start:stop] -= coefs.T @ rows
+    dof = max(theta.size - n_par, 1)
+    fits = [_channel_fit(coefs[:, j], resid[j], stacked[n_par + j], inv, dof, orders)
+            for j in range(2)]
+    return theta, fits, stacked
 
 
 def fit_channels_by_phase(phase_index, samples_per_period: int, channels,
@@ -426,12 +408,13 @@ def interpolation_error_arcsec(u_sin, u_cos, theta_rad, lines_per_rev: int) -> n
 
 
 def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
-                      max_segments: int = 4000, design: np.ndarray | None = None
+                      max_segments: int = 4000, stacked: np.ndarray | None = None
                       ) -> list[np.ndarray]:
     """:func:`fit_periods` along the actual phase, for each of ``channels``: a segment per
     period of travel (forward or back), or per block of periods when there are more than
     ``max_segments``; a segment that does not cover three quarters of a period (6 of its
-    8 octants) is left out. ``design``: the design matrix at ``theta_rad`` if at hand.
+    8 octants) is left out. ``stacked``: the rows of the design at ``theta_rad`` with
+    the channels below them, if at hand (:func:`refine_phase` returns them).
 
     Each segment is a least-squares fit of its own; they are solved together from their
     normal equations (a 7×7 system a segment), a segment whose equations are near
@@ -448,27 +431,37 @@ def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
     segment = np.floor(travel / width).astype(np.intp)
     starts = np.flatnonzero(np.diff(segment, prepend=segment[0] - 1))
     ends = np.append(starts[1:], theta.size)
-    octant = np.floor(np.mod(theta, TWO_PI) / TWO_PI * 8).astype(np.intp)  # 0…8
+    turns = theta * (1.0 / TWO_PI)
+    octant = ((turns - np.floor(turns)) * 8.0).astype(np.intp)  # 0…8
     owner = np.repeat(np.arange(starts.size), ends - starts)
     seen = np.bincount(owner * 9 + octant, minlength=starts.size * 9).reshape(-1, 9)
     keep = np.flatnonzero((ends - starts >= 2 * n_par) & (np.count_nonzero(seen, axis=1) >= 6))
     if keep.size == 0:
         return empty
-    x = _design(theta, orders) if design is None else design
+    if stacked is None:  # a segment's normal equations are then one product of its columns
+        stacked = np.empty((n_par + ys.shape[0], theta.size))
+        stacked[n_par:] = ys
+        sin, cos = phasor_of(theta)
+        basis = BasisBlocks(orders)
+        for a, b in blocks(theta.size):
+            basis.rows(sin[a:b], cos[a:b], out=stacked[:n_par, a:b])
+    x = stacked[:n_par].T
     gram = np.empty((keep.size, n_par, n_par))
     rhs = np.empty((keep.size, n_par, ys.shape[0]))
     for j, (a, b) in enumerate(zip(starts[keep].tolist(), ends[keep].tolist(), strict=True)):
         if j % 1024 == 0:
             checkpoint()
-        part = x[a:b]
-        gram[j] = part.T @ part
-        rhs[j] = part.T @ ys[:, a:b].T
+        part = stacked[:, a:b]
+        sums = part @ part.T
+        gram[j] = sums[:n_par, :n_par]
+        rhs[j] = sums[:n_par, n_par:]
     coef = np.empty_like(rhs)
     scale = np.sqrt(np.einsum("sii->si", gram))  # equilibrated, the condition is the design's
     with np.errstate(divide="ignore", invalid="ignore"):
         scaled = gram / (scale[:, :, None] * scale[:, None, :])
         good = np.all(scale > 0, axis=1)
-        good[good] = np.linalg.cond(scaled[good]) < 1e10
+        eigen = np.linalg.eigvalsh(scaled[good])  # ascending: the condition is the ratio
+        good[good] = (eigen[:, 0] > 0) & (eigen[:, -1] < 1e10 * eigen[:, 0])
     if np.any(good):
         coef[good] = np.linalg.solve(scaled[good], rhs[good] / scale[good][:, :, None]
                                      ) / scale[good][:, :, None]

@@ -28,7 +28,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["EllipseFit", "fit_ellipse"]
+__all__ = ["EllipseFit", "fit_ellipse", "unwrapped"]
 
 _BLOCK = 1 << 16  # samples a block when the scatter matrix is summed
 
@@ -55,6 +55,24 @@ class EllipseFit:
         c = (y + s * math.sin(self.quadrature_rad)) / math.cos(self.quadrature_rad)
         return np.arctan2(s, c)
 
+    def phase_and_phasor(self, u_sin, u_cos) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`phase` and its (sin φ, cos φ): the corrected signals over their norm
+        (a sample at the centre has phase 0)."""
+        s = (np.asarray(u_sin, dtype=float) - self.offset_sin) / self.amplitude_sin
+        c = (np.asarray(u_cos, dtype=float) - self.offset_cos) / self.amplitude_cos
+        c += s * math.sin(self.quadrature_rad)
+        c /= math.cos(self.quadrature_rad)
+        phase = np.arctan2(s, c)
+        norm = np.multiply(s, s)
+        norm += c * c
+        np.sqrt(norm, out=norm)
+        centre = norm == 0.0
+        if np.any(centre):
+            s[centre], c[centre], norm[centre] = 0.0, 1.0, 1.0
+        s /= norm
+        c /= norm
+        return phase, s, c
+
     def radius(self, u_sin, u_cos) -> np.ndarray:
         """The corrected samples' distance from the centre: 1 on the ellipse (√(s² + c²),
         in two buffers: a million samples' temporaries cost as much as their arithmetic)."""
@@ -68,6 +86,22 @@ class EllipseFit:
         np.multiply(c, c, out=c)
         s += c
         return np.sqrt(s, out=s)
+
+
+def unwrapped(phase_rad) -> np.ndarray:
+    """A phase in (−π, π] made continuous: a step of more than π between two samples is
+    a wrap, and whole turns (an exact multiple of 2π each) are added from there on."""
+    phase = np.asarray(phase_rad, dtype=float)
+    if phase.size < 2:
+        return phase.copy()
+    step = np.diff(phase)
+    turns = np.cumsum((step < -math.pi).view(np.int8), dtype=np.int64)
+    turns -= np.cumsum((step > math.pi).view(np.int8), dtype=np.int64)
+    out = np.empty_like(phase)
+    out[0] = phase[0]
+    np.multiply(turns, 2.0 * math.pi, out=out[1:])
+    out[1:] += phase[1:]
+    return out
 
 
 def fit_ellipse(u_sin, u_cos) -> EllipseFit:
