@@ -31,8 +31,11 @@ import numpy as np
 
 __all__ = ["BLOCK", "BasisBlocks", "blocks", "phasor_of"]
 
-#: samples a block: the block's rows and scratch (~30 arrays) stay in a 2 MB cache
-BLOCK = 8192
+#: samples a block: few enough for its rows and scratch to stay in the cache, enough for few calls
+BLOCK = 16384
+#: samples a product of the normal sums (OpenBLAS runs a 7 × m by m × 9 product at a third
+#: of its speed from m = 16384 on)
+_PRODUCT = 8192
 
 _SIN = [(-1) ** j / math.factorial(2 * j + 1) for j in range(12)]
 _COS = [(-1) ** j / math.factorial(2 * j) for j in range(12)]
@@ -137,7 +140,9 @@ class BasisBlocks:
         rows = self.rows(sin, cos)
         stacked = self._stacked[:self.n_par + channels.shape[0], :m]
         stacked[self.n_par:] = channels
-        sums = rows @ stacked.T
+        sums = rows[:, :_PRODUCT] @ stacked[:, :_PRODUCT].T
+        for start in range(_PRODUCT, m, _PRODUCT):
+            sums += rows[:, start:start + _PRODUCT] @ stacked[:, start:start + _PRODUCT].T
         return sums[:, :self.n_par], sums[:, self.n_par:]
 
     def rotate(self, sin: np.ndarray, cos: np.ndarray, delta: np.ndarray) -> None:

@@ -433,8 +433,10 @@ def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
     ends = np.append(starts[1:], theta.size)
     turns = theta * (1.0 / TWO_PI)
     octant = ((turns - np.floor(turns)) * 8.0).astype(np.intp)  # 0…8
-    owner = np.repeat(np.arange(starts.size), ends - starts)
-    seen = np.bincount(owner * 9 + octant, minlength=starts.size * 9).reshape(-1, 9)
+    # the octants seen under each segment number (a number a jump of travel skipped is empty)
+    octant += segment * 9
+    seen = np.bincount(octant, minlength=(int(segment[-1]) + 1) * 9).reshape(-1, 9)
+    seen = seen[segment[starts]]
     keep = np.flatnonzero((ends - starts >= 2 * n_par) & (np.count_nonzero(seen, axis=1) >= 6))
     if keep.size == 0:
         return empty
@@ -446,15 +448,13 @@ def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
         for a, b in blocks(theta.size):
             basis.rows(sin[a:b], cos[a:b], out=stacked[:n_par, a:b])
     x = stacked[:n_par].T
-    gram = np.empty((keep.size, n_par, n_par))
-    rhs = np.empty((keep.size, n_par, ys.shape[0]))
+    sums = np.empty((keep.size, stacked.shape[0], stacked.shape[0]))
     for j, (a, b) in enumerate(zip(starts[keep].tolist(), ends[keep].tolist(), strict=True)):
         if j % 1024 == 0:
             checkpoint()
         part = stacked[:, a:b]
-        sums = part @ part.T
-        gram[j] = sums[:n_par, :n_par]
-        rhs[j] = sums[:n_par, n_par:]
+        np.matmul(part, part.T, out=sums[j])
+    gram, rhs = sums[:, :n_par, :n_par], sums[:, :n_par, n_par:]
     coef = np.empty_like(rhs)
     scale = np.sqrt(np.einsum("sii->si", gram))  # equilibrated, the condition is the design's
     with np.errstate(divide="ignore", invalid="ignore"):
