@@ -447,6 +447,9 @@ def fit_periods_along(theta_rad, channels, orders: tuple[int, ...] = (1, 3, 5),
         basis = BasisBlocks(orders)
         for a, b in blocks(theta.size):
             basis.rows(sin[a:b], cos[a:b], out=stacked[:n_par, a:b])
+    elif stacked.shape != (n_par + ys.shape[0], theta.size):
+        raise ValueError(f"a design of {stacked.shape} for {ys.shape[0]} channels of "
+                         f"{theta.size} samples and {n_par} parameters")
     x = stacked[:n_par].T
     sums = np.empty((keep.size, stacked.shape[0], stacked.shape[0]))
     for j, (a, b) in enumerate(zip(starts[keep].tolist(), ends[keep].tolist(), strict=True)):
