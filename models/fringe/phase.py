@@ -48,20 +48,22 @@ class EllipseFit:
         """b/a: the cos channel's fundamental over the sin channel's."""
         return self.amplitude_cos / self.amplitude_sin
 
-    def phase(self, u_sin, u_cos) -> np.ndarray:
-        """Each sample's phase φ (rad, in (−π, π]) from the corrected signals."""
-        s = (np.asarray(u_sin, dtype=float) - self.offset_sin) / self.amplitude_sin
-        y = (np.asarray(u_cos, dtype=float) - self.offset_cos) / self.amplitude_cos
-        c = (y + s * math.sin(self.quadrature_rad)) / math.cos(self.quadrature_rad)
-        return np.arctan2(s, c)
-
-    def phase_and_phasor(self, u_sin, u_cos) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """:meth:`phase` and its (sin φ, cos φ): the corrected signals over their norm
-        (a sample at the centre has phase 0)."""
-        s = (np.asarray(u_sin, dtype=float) - self.offset_sin) / self.amplitude_sin
-        c = (np.asarray(u_cos, dtype=float) - self.offset_cos) / self.amplitude_cos
+    def _corrected(self, u_sin, u_cos) -> tuple[np.ndarray, np.ndarray]:
+        """The signals with the offsets, amplitudes and quadrature error taken out: (sin φ,
+        cos φ) times the sample's radius. In two new buffers: a million samples'
+        temporaries cost as much as their arithmetic."""
+        s = np.subtract(u_sin, self.offset_sin, dtype=float)
+        s /= self.amplitude_sin
+        c = np.subtract(u_cos, self.offset_cos, dtype=float)
+        c /= self.amplitude_cos
         c += s * math.sin(self.quadrature_rad)
         c /= math.cos(self.quadrature_rad)
+        return s, c
+
+    def phase_and_phasor(self, u_sin, u_cos) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Each sample's phase φ (rad, in (−π, π]) and its (sin φ, cos φ): the corrected
+        signals over their norm (a sample at the centre has phase 0)."""
+        s, c = self._corrected(u_sin, u_cos)
         phase = np.arctan2(s, c)
         norm = np.multiply(s, s)
         norm += c * c
@@ -74,14 +76,8 @@ class EllipseFit:
         return phase, s, c
 
     def radius(self, u_sin, u_cos) -> np.ndarray:
-        """The corrected samples' distance from the centre: 1 on the ellipse (√(s² + c²),
-        in two buffers: a million samples' temporaries cost as much as their arithmetic)."""
-        s = np.subtract(u_sin, self.offset_sin, dtype=float)
-        s /= self.amplitude_sin
-        c = np.subtract(u_cos, self.offset_cos, dtype=float)
-        c /= self.amplitude_cos
-        c += s * math.sin(self.quadrature_rad)
-        c /= math.cos(self.quadrature_rad)
+        """The corrected samples' distance from the centre: 1 on the ellipse."""
+        s, c = self._corrected(u_sin, u_cos)
         np.multiply(s, s, out=s)
         np.multiply(c, c, out=c)
         s += c
