@@ -15,13 +15,15 @@ documented in the LinuxCNC manual (INI configuration, section [JOINT_n], COMP_FI
 and COMP_FILE_TYPE): one line per point, "nominal actual-forward actual-reverse" in
 machine units (mm, or degrees for an angular joint), nominal ascending, at most 256
 lines; the controller reads the actual positions and compensates itself, so the
-file holds measured positions, not corrections. No other controller's format is
-written: those we could not cite are not guessed.
+file holds measured positions, not corrections. The other controllers' formats
+(SINUMERIK 840D, FANUC, HEIDENHAIN TNC, TwinCAT, ISG, Mach4) are in
+models/positioning/controllers/, one module each, every rule citing its manual.
 """
 
 from __future__ import annotations
 
 import io
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -152,9 +154,23 @@ def linuxcnc_comp_file(table: CompensationTable) -> str:
 
 
 def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
-                       tables: str = "separate", fmt: str = "csv") -> str:
-    """Write the table (atomically); returns a line saying what was written."""
+                       tables: str = "separate", fmt: str = "csv", options: str = "") -> str:
+    """Write the table (atomically); returns a line saying what was written. ``options``
+    (``key=value, …``) are the controller's (models/positioning/controllers); a table the
+    controller would reject or misapply is refused naming the rule, and nothing is written."""
+    from models.positioning.controllers import CONTROLLERS
+
     table = compensation_table(result, step, tables)
+    if fmt in CONTROLLERS:
+        module = CONTROLLERS[fmt]
+        if fmt == "heidenhain":
+            files, what = module.write(table, options, name=os.path.basename(path))
+        else:
+            files, what = module.write(table, options)
+        stem = os.path.splitext(path)[0]
+        for suffix, text in files:  # every file made before any is written
+            write_text_atomic(stem + suffix if suffix else path, text)
+        return what
     if fmt == "linuxcnc":
         text = linuxcnc_comp_file(table)
         what = message(QT_TR_NOOP("LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points "

@@ -1,0 +1,119 @@
+"""HEIDENHAIN TNC: nonlinear axis error compensation (a .COM table and its .CMA assignment).
+
+Rules, from the HEIDENHAIN technical manuals (TNC 407/415/425 Technical Manual, 1 "Machine
+axes", nonlinear axis error compensation, and module 9095; MANUALplus 620 Technical
+Manual, "Entering compensation values" and "Assigning the compensation value tables to
+the axes"):
+
+* H/COM: the compensation points go in column AXISPOS, with respect to the machine datum;
+  the compensation values in the column named after the compensated axis; the values
+  measured in the negative direction of traverse, if wanted, in column BACKLASH.
+* H/256: a .COM table has at most 256 entries (module 9095, error 3).
+* H/CMA: a .CMA table assigns .COM tables to axes, a column per axis; several lines may be
+  entered, only one is active (ACTIVE = *).
+* H/rotary: on a rotary axis only the entries 0…360 are recognised.
+
+Not verified (see README), hence options without a default or stated in the file: the
+sign of a value (the option ``values`` must say whether the machine's manual wants the
+error — actual − target — or the correction), the table file's header and end lines
+(BEGIN …/[END], as TNC tables are written), and what is applied beyond the last entry.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.messages import QT_TR_NOOP, message
+from models.positioning.controllers.common import (
+    ControllerRuleError,
+    Option,
+    close_turn,
+    equidistant_step,
+    in_target_unit,
+    parse_options,
+    refuse,
+)
+
+NAME = "HEIDENHAIN TNC"
+SOURCE = "HEIDENHAIN Technical Manual, nonlinear axis error compensation"
+MAX_ENTRIES = 256
+OPTIONS = (
+    Option("axis", "text", "X", QT_TR_NOOP("axis key (column name), e.g. X or C")),
+    Option("values", "text", None, QT_TR_NOOP("error (actual − target) or correction (−error): "
+                                              "as the machine's manual states")),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, 360 (0: linear)")),
+)
+
+
+@dataclass(frozen=True)
+class Plan:
+    axis: str
+    sense: str
+    positions: np.ndarray
+    forward: np.ndarray
+    backward: np.ndarray | None
+    rotary: bool
+    unit: str
+
+
+def build(table, options) -> Plan:
+    o = parse_options(NAME, OPTIONS, options)
+    if o["values"] not in ("error", "correction"):
+        raise ControllerRuleError(message(QT_TR_NOOP(
+            "{controller} options: values=error or values=correction must be given (the sign "
+            "of a .COM value could not be verified: take it from the machine's manual)"),
+            controller=NAME))
+    sign = -1.0 if o["values"] == "error" else 1.0
+    positions = np.asarray(table.positions, dtype=float)
+    columns = [sign * in_target_unit(table.forward, table.deviation_unit)]
+    if table.backward is not None:
+        columns.append(sign * in_target_unit(table.backward, table.deviation_unit))
+    rotary = o["modulo"] > 0
+    if rotary:
+        equidistant_step(NAME, positions, SOURCE)
+        positions, columns, _ = close_turn(NAME, positions, columns, o["modulo"], SOURCE)
+    return Plan(o["axis"].upper(), o["values"], positions, columns[0],
+                columns[1] if len(columns) > 1 else None, rotary, table.target_unit)
+
+
+def lint(plan: Plan) -> Plan:
+    if plan.positions.size > MAX_ENTRIES:
+        raise refuse(NAME, message(QT_TR_NOOP("at most {n} entries per .COM table ({source})"),
+                                   n=MAX_ENTRIES, source=SOURCE),
+                     message(QT_TR_NOOP("{n} points: choose a larger step"), n=plan.positions.size))
+    if np.any(np.diff(plan.positions) <= 0):
+        raise refuse(NAME, "AXISPOS", message(QT_TR_NOOP("the positions must ascend")))
+    if plan.rotary and (plan.positions[0] < 0 or plan.positions[-1] > 360 + 1e-9):
+        raise refuse(NAME, message(QT_TR_NOOP("rotary axis: entries 0…360 only ({source})"),
+                                   source=SOURCE),
+                     message(QT_TR_NOOP("the table runs {first}…{last}"),
+                             first=f"{plan.positions[0]:g}", last=f"{plan.positions[-1]:g}"))
+    return plan
+
+
+def render(plan: Plan, name: str) -> tuple[str, str]:
+    unit = " MM" if plan.unit == "mm" else ""
+    head = f"{'NR':<6}{'AXISPOS':>14}{plan.axis:>14}" + (
+        f"{'BACKLASH':>14}" if plan.backward is not None else "")
+    com = [f"BEGIN {name}{unit}", head]
+    for i, p in enumerate(plan.positions):
+        row = f"{i:<6}{p:>+14.5f}{plan.forward[i]:>+14.6f}"
+        if plan.backward is not None:
+            row += f"{plan.backward[i]:>+14.6f}"
+        com.append(row)
+    com.append("[END]")
+    cma = [f"BEGIN {name.rsplit('.', 1)[0]}.CMA", f"{'NR':<6}{'ACTIVE':<8}{plan.axis}",
+           f"{0:<6}{'*':<8}{name}", "[END]"]
+    return "\n".join(com) + "\n", "\n".join(cma) + "\n"
+
+
+def write(table, options, name: str = "") -> tuple[list[tuple[str, str]], str]:
+    plan = lint(build(table, options))
+    name = (name or f"{plan.axis}.COM").upper()
+    com, cma = render(plan, name)
+    what = message(QT_TR_NOOP("HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and "
+                              "its .CMA assignment"),
+                   axis=plan.axis, n=plan.positions.size, sense=plan.sense)
+    return [("", com), (".CMA", cma)], what

@@ -1,0 +1,136 @@
+"""SINUMERIK 840D: measuring system error compensation (the "EEC" table file).
+
+Rules, from SINUMERIK 840D sl Function Manual Extended Functions, K3 "Compensations",
+section "Interpolatory compensation — measuring system error compensation (MSEC)", with
+the system variables and machine data it names:
+
+* K3/MSEC-table: one table per machine axis and measuring system, in the file
+  ``%_N_AX_EEC_INI`` as assignments ``$AA_ENC_COMP[n,N,AXi]`` (n = measuring system,
+  0 for the first and 1 for the second; N = interpolation point 0…k), with
+  ``$AA_ENC_COMP_STEP[n,AXi]`` (distance between points), ``$AA_ENC_COMP_MIN[n,AXi]`` and
+  ``$AA_ENC_COMP_MAX[n,AXi]`` (first and last point) and ``$AA_ENC_COMP_IS_MODULO[n,AXi]``;
+  the file ends with ``M17``.
+* K3/MSEC-points: the number of points is (MAX − MIN)/STEP + 1 and must not exceed
+  MD38000 MM_ENC_COMP_MAX_POINTS[n] of the axis (the step must divide the range).
+* K3/MSEC-load: the table is loaded only while MD32700 ENC_COMP_ENABLE[n] = 0 (stated in
+  the file's comment; the controller, not the file, holds that setting).
+* K3/MSEC-sign: the value is the measured error; a positive value moves the axis in the
+  negative direction. So $AA_ENC_COMP = mean deviation x̄ = −compensation.
+* K3/MSEC-range: beyond MIN and MAX the first and last values hold.
+* K3/MSEC-modulo: with IS_MODULO = 1 the table covers one turn (MIN 0°, MAX 360°) and the
+  values at both ends must both be entered and agree.
+* K3/MSEC-system: n selects the measuring system; a table for a measuring system the axis
+  does not have (MD30200 NUM_ENCS) is never applied.
+* One table per measuring system: the reversal is MD32450 BACKLASH's, not the table's
+  (so separate forward/backward tables are refused; the mean reversal is stated).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.messages import QT_TR_NOOP, joined, message
+from models.positioning.controllers.common import (
+    Option,
+    close_turn,
+    equidistant_step,
+    in_target_unit,
+    parse_options,
+    refuse,
+)
+
+NAME = "SINUMERIK 840D"
+SOURCE = "SINUMERIK 840D sl Function Manual Extended Functions, K3, measuring system error compensation"
+OPTIONS = (
+    Option("axis", "text", "AX1", QT_TR_NOOP("machine axis name, e.g. AX1 or X1")),
+    Option("system", "int", 1, QT_TR_NOOP("measuring system the table is for: 1 or 2")),
+    Option("encoders", "int", 1, QT_TR_NOOP("measuring systems the axis has (MD30200 NUM_ENCS)")),
+    Option("max_points", "int", 0, QT_TR_NOOP("MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: "
+                                              "not checked, the file states what it needs)")),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, e.g. 360 (0: not modulo)")),
+)
+
+
+@dataclass(frozen=True)
+class Plan:
+    axis: str
+    system: int
+    encoders: int
+    max_points: int
+    step: float
+    minimum: float
+    maximum: float
+    modulo: bool
+    values: np.ndarray  # measured error (axis unit), one per point
+    note: str = ""
+
+
+def build(table, options) -> Plan:
+    o = parse_options(NAME, OPTIONS, options)
+    if table.backward is not None:
+        raise refuse(NAME, message(QT_TR_NOOP("one table per measuring system ({source})"),
+                                   source=SOURCE),
+                     message(QT_TR_NOOP("export one table from the bidirectional mean; the "
+                                        "reversal belongs in MD32450 BACKLASH")))
+    positions = np.asarray(table.positions, dtype=float)
+    error = -in_target_unit(table.forward, table.deviation_unit)  # K3/MSEC-sign
+    step = equidistant_step(NAME, positions, SOURCE)
+    note = ""
+    if o["modulo"] > 0:
+        positions, (error,), note = close_turn(NAME, positions, [error], o["modulo"], SOURCE)
+    return Plan(o["axis"], o["system"], o["encoders"], o["max_points"], step,
+                float(positions[0]), float(positions[-1]), o["modulo"] > 0, error, note)
+
+
+def lint(plan: Plan) -> Plan:
+    """Refuses what the controller would reject or misapply, naming the rule."""
+    if plan.system not in (1, 2) or plan.system > plan.encoders:
+        raise refuse(NAME, message(QT_TR_NOOP("measuring system (K3; MD30200 NUM_ENCS = {encoders})"),
+                                   encoders=plan.encoders),
+                     message(QT_TR_NOOP("a table for measuring system {system} is never applied "
+                                        "on an axis with {encoders}"),
+                             system=plan.system, encoders=plan.encoders))
+    intervals = (plan.maximum - plan.minimum) / plan.step
+    if plan.step <= 0 or abs(intervals - round(intervals)) > 1e-9 * max(1.0, intervals) or \
+            int(round(intervals)) + 1 != plan.values.size:
+        raise refuse(NAME, message(QT_TR_NOOP("STEP divides MAX − MIN ({source})"), source=SOURCE),
+                     message(QT_TR_NOOP("step {step} over {minimum}…{maximum} with {n} values"),
+                             step=f"{plan.step:g}", minimum=f"{plan.minimum:g}",
+                             maximum=f"{plan.maximum:g}", n=plan.values.size))
+    if plan.max_points and plan.values.size > plan.max_points:
+        raise refuse(NAME, message(QT_TR_NOOP("MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}"),
+                                   max_points=plan.max_points),
+                     message(QT_TR_NOOP("{n} points: choose a larger step"), n=plan.values.size))
+    if plan.modulo and abs(plan.values[0] - plan.values[-1]) > 1e-12:
+        raise refuse(NAME, message(QT_TR_NOOP("modulo table closed ({source})"), source=SOURCE),
+                     message(QT_TR_NOOP("the values at {minimum} and {maximum} differ by {gap}"),
+                             minimum=f"{plan.minimum:g}", maximum=f"{plan.maximum:g}",
+                             gap=f"{plan.values[-1] - plan.values[0]:.6g}"))
+    return plan
+
+
+def render(plan: Plan) -> str:
+    n, ax = plan.system - 1, plan.axis
+    out = ["%_N_AX_EEC_INI",
+           "; AngleBench: measuring system error compensation (K3); value = measured error "
+           "(actual - target), a positive value moves the axis negative",
+           f"; load with MD32700 ENC_COMP_ENABLE[{n}]=0 and MD38000 MM_ENC_COMP_MAX_POINTS[{n}]"
+           f" >= {plan.values.size}; then set MD32700 to 1",
+           "CHANDATA(1)"]
+    out += [f"$AA_ENC_COMP[{n},{i},{ax}]={v:.7f}" for i, v in enumerate(plan.values)]
+    out += [f"$AA_ENC_COMP_STEP[{n},{ax}]={plan.step:.7g}",
+            f"$AA_ENC_COMP_MIN[{n},{ax}]={plan.minimum:.7g}",
+            f"$AA_ENC_COMP_MAX[{n},{ax}]={plan.maximum:.7g}",
+            f"$AA_ENC_COMP_IS_MODULO[{n},{ax}]={int(plan.modulo)}",
+            "M17"]
+    return "\n".join(out) + "\n"
+
+
+def write(table, options) -> tuple[list[tuple[str, str]], str]:
+    plan = lint(build(table, options))
+    what = message(QT_TR_NOOP("SINUMERIK 840D measuring system error compensation, axis {axis}, "
+                              "measuring system {system}, {n} points"),
+                   axis=plan.axis, system=plan.system, n=plan.values.size)
+    return [("", render(plan))], joined((what, "; " if plan.note else "", plan.note))
