@@ -203,3 +203,52 @@ def test_a_theodolite_run_is_sent_with_the_iso_sign(window):
     np.testing.assert_allclose(sent.iso.forward.mean, -theodolite.corrected_error_arcsec,
                                atol=1e-4)
     assert "One approach direction only" in " ".join(sent.warnings)
+
+
+def test_cli_writes_a_controller_table_and_refuses_naming_the_rule(samples_dir, tmp_path, capsys):
+    src = str(samples_dir / KIND.sample_file)
+    out = tmp_path / "AX_EEC.INI"
+    assert main(["analyze", "positioning", src, "--table", str(out), "--compensation-format",
+                 "sinumerik", "--compensation-tables", "bidirectional",
+                 "--compensation-controller-options", "axis=AX4, modulo=360"]) == 0
+    assert "SINUMERIK 840D measuring system error compensation, axis AX4" in capsys.readouterr().err
+    text = out.read_text()
+    assert text.startswith("%_N_AX_EEC_INI") and text.rstrip().endswith("M17")
+    assert "$AA_ENC_COMP_IS_MODULO[0,AX4]=1" in text
+    bad = tmp_path / "bad.ini"
+    assert main(["analyze", "positioning", src, "--table", str(bad), "--compensation-format",
+                 "sinumerik", "--compensation-tables", "bidirectional",
+                 "--compensation-controller-options", "system=2"]) == 2
+    assert "MD30200 NUM_ENCS" in capsys.readouterr().err and not bad.exists()
+    assert main(["analyze", "positioning", src, "--table", str(bad), "--compensation-format",
+                 "fanuc", "--compensation-controller-options", "axis=4"]) == 2
+    assert "one table" in capsys.readouterr().err and not bad.exists()
+
+
+def test_presenter_asks_the_controllers_options_and_tells_the_lints_refusal(presenter_and_view,
+                                                                            samples_dir, tmp_path):
+    presenter, view = presenter_and_view
+    presenter.table_model.replace_all(map_columns(read_table(samples_dir / KIND.sample_file),
+                                                  KIND.columns))
+    presenter.set_settings({**presenter.settings, "compensation_format": "sinumerik",
+                            "compensation_tables": "bidirectional",
+                            "compensation_controller_options": "axis=AX4"})
+    presenter.refresh()
+    view.ask_controller_options.return_value = {"axis": "AX4", "system": "1", "encoders": "1",
+                                                "max_points": "5", "modulo": "360"}
+    view.ask_compensation_path.return_value = str(tmp_path / "AX_EEC.INI")
+    presenter.export_compensation_dialog()
+    name, fields = view.ask_controller_options.call_args.args
+    assert name == "SINUMERIK 840D" and fields[0][0] == "axis" and fields[0][2] == "AX4"
+    assert view.ask_compensation_path.call_args.args == ("AX_EEC.INI", "sinumerik")
+    assert "MD38000 MM_ENC_COMP_MAX_POINTS = 5" in view.tell.call_args.args[1]
+    assert not (tmp_path / "AX_EEC.INI").exists()
+    assert presenter.settings["compensation_controller_options"] == (
+        "axis=AX4, system=1, encoders=1, max_points=5, modulo=360")
+    view.ask_controller_options.return_value = {"axis": "AX4", "max_points": "0", "modulo": "360"}
+    presenter.export_compensation_dialog()
+    assert "$AA_ENC_COMP_IS_MODULO[0,AX4]=1" in (tmp_path / "AX_EEC.INI").read_text()
+    view.ask_controller_options.return_value = None  # cancelled: nothing asked, nothing written
+    view.ask_compensation_path.reset_mock()
+    presenter.export_compensation_dialog()
+    view.ask_compensation_path.assert_not_called()

@@ -77,10 +77,24 @@ PARAMETERS = (
                    "mean of the two (compensation = −mean deviation)"),
     Parameter("compensation_format", "compensation format", "choice", "csv",
               choices=(("csv", "CSV (position, compensation)"),
-                       ("linuxcnc", "LinuxCNC COMP_FILE type 0")),
+                       ("linuxcnc", "LinuxCNC COMP_FILE type 0"),
+                       ("sinumerik", "SINUMERIK 840D measuring system error compensation"),
+                       ("fanuc", "FANUC pitch error compensation (parameters 3620–3625)"),
+                       ("heidenhain", "HEIDENHAIN TNC .COM table (and .CMA)"),
+                       ("twincat", "Beckhoff TwinCAT Tc2_MC2 position compensation table"),
+                       ("isg", "ISG kernel leadscrew error compensation list"),
+                       ("mach4", "Mach4 screw map")),
               help="CSV always works; LinuxCNC's joint compensation file (COMP_FILE_TYPE = 0, "
                    "documented in the LinuxCNC INI configuration manual) lists nominal, "
-                   "actual forward and actual reverse positions"),
+                   "actual forward and actual reverse positions; the controllers' formats "
+                   "follow their manuals, and a table the controller would reject or misapply "
+                   "is refused naming the rule"),
+    Parameter("compensation_controller_options", "controller options", "text", "",
+              help="The controller's settings as KEY=VALUE, comma-separated, e.g. "
+                   "axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, "
+                   "magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, "
+                   "modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, "
+                   "max_points=1500 (ISG); axis=X (Mach4)"),
 )
 
 #: A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit
@@ -330,7 +344,7 @@ def _figures_line(prefix: str, figures, symbol: str):
 def _correction_table(result: PositioningResult, settings: Mapping[str, Any], path: str) -> str:
     s = POSITIONING.checked_settings(settings)
     return write_compensation(path, result, s["compensation_step"], s["compensation_tables"],
-                              s["compensation_format"])
+                              s["compensation_format"], s["compensation_controller_options"])
 
 
 POSITIONING = AnalysisKind(

@@ -5,10 +5,19 @@ from __future__ import annotations
 from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
+from models.positioning.controllers import CONTROLLERS
+from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
 from widgets.i18n import explained, tr, translated
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
+
+
+#: the file name offered for each format (the controller's own naming where it has one)
+SUGGESTED_NAMES = {"csv": "compensation.csv", "linuxcnc": "compensation.txt",
+                   "sinumerik": "AX_EEC.INI", "fanuc": "PITCH.TXT", "heidenhain": "AXIS.COM",
+                   "twincat": "compensation_table.st", "isg": "achskw.lis",
+                   "mach4": "screwmap.txt"}
 
 
 class PositioningPresenter(WorkbenchPresenter):
@@ -33,11 +42,33 @@ class PositioningPresenter(WorkbenchPresenter):
     def export_compensation_dialog(self) -> None:
         if self.result is None:
             return
-        linuxcnc = self._settings["compensation_format"] == "linuxcnc"
-        path = self.view.ask_compensation_path(
-            "compensation.txt" if linuxcnc else "compensation.csv", linuxcnc)
+        fmt = self._settings["compensation_format"]
+        if fmt in CONTROLLERS and not self.ask_controller_options(fmt):
+            return
+        path = self.view.ask_compensation_path(SUGGESTED_NAMES.get(fmt, "compensation.csv"), fmt)
         if path:
             self.export_compensation(path)
+
+    def ask_controller_options(self, fmt: str) -> bool:
+        """The controller's options in a small form (filled from the set-up's text); the
+        answer is kept in the set-up. False when cancelled or the text cannot be read."""
+        module = CONTROLLERS[fmt]
+        try:
+            current = parse_options(module.NAME, module.OPTIONS,
+                                    self._settings["compensation_controller_options"])
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export the compensation table"), explained(exc))
+            return False
+        fields = [(o.key, o.help, "" if current[o.key] is None else f"{current[o.key]:g}"
+                   if isinstance(current[o.key], float) else str(current[o.key]))
+                  for o in module.OPTIONS]
+        answer = self.view.ask_controller_options(module.NAME, fields)
+        if answer is None:
+            return False
+        text = ", ".join(f"{k}={v.strip()}" for k, v in answer.items() if v.strip())
+        if text != self._settings["compensation_controller_options"]:
+            self.set_settings({**self._settings, "compensation_controller_options": text})
+        return True
 
     def export_compensation(self, path: str) -> str:
         """Write the table as set up; a table that cannot be made is told, not written."""

@@ -6,8 +6,12 @@ from __future__ import annotations
 
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QDialog,
+    QDialogButtonBox,
     QFileDialog,
+    QFormLayout,
     QHeaderView,
+    QLineEdit,
     QMessageBox,
     QPushButton,
     QTableWidget,
@@ -29,7 +33,8 @@ class PositioningView(WorkbenchView):
         live(self.compensation_button.setText, tr("Export compensation table…"))
         live(self.compensation_button.setToolTip, tr(
             "Compensation = −mean deviation, at the targets or a uniform step, as set above: "
-            "CSV, or LinuxCNC's COMP_FILE (type 0)"))
+            "CSV, LinuxCNC's COMP_FILE (type 0), or a controller's table (SINUMERIK, FANUC, "
+            "HEIDENHAIN, TwinCAT, ISG, Mach4)"))
         self.compensation_button.setEnabled(False)
         self.add_plot_tab(self.deviation_plot, tr("Deviation per target"))
         self.add_plot_tab(self.reversal_plot, tr("Reversal per target"))
@@ -62,12 +67,37 @@ class PositioningView(WorkbenchView):
         self.per_target.setRowCount(0)
         self.compensation_button.setEnabled(False)
 
-    def ask_compensation_path(self, suggested: str, linuxcnc: bool) -> str:
-        filters = (tr("LinuxCNC compensation file (*.txt *.comp);;All files (*)") if linuxcnc
-                   else tr("CSV (*.csv);;All files (*)"))
+    def ask_compensation_path(self, suggested: str, fmt: str) -> str:
+        filters = (tr("LinuxCNC compensation file (*.txt *.comp);;All files (*)") if fmt == "linuxcnc"
+                   else tr("CSV (*.csv);;All files (*)") if fmt == "csv" else
+                   tr("Controller compensation file (*.{ext});;All files (*)").format(
+                       ext=suggested.rsplit(".", 1)[-1]))
         path, _ = QFileDialog.getSaveFileName(self, tr("Export compensation table"), suggested,
                                               filters)
         return path
+
+    def ask_controller_options(self, controller: str, fields: list[tuple[str, str, str]]
+                               ) -> dict[str, str] | None:
+        """A small form: one line per option (key, its help as tooltip, current value);
+        the values typed, or None when cancelled."""
+        dialog = QDialog(self)
+        dialog.setWindowTitle(tr("{controller}: controller options").format(controller=controller))
+        form = QFormLayout(dialog)
+        edits = {}
+        for key, help_text, value in fields:
+            edit = QLineEdit(value)
+            edit.setToolTip(declared(help_text))
+            edit.setPlaceholderText(declared(help_text))
+            form.addRow(key, edit)
+            edits[key] = edit
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
+                                   | QDialogButtonBox.StandardButton.Cancel)
+        buttons.accepted.connect(dialog.accept)
+        buttons.rejected.connect(dialog.reject)
+        form.addRow(buttons)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return None
+        return {key: edit.text() for key, edit in edits.items()}
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)
