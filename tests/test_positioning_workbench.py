@@ -252,3 +252,28 @@ def test_presenter_asks_the_controllers_options_and_tells_the_lints_refusal(pres
     view.ask_compensation_path.reset_mock()
     presenter.export_compensation_dialog()
     view.ask_compensation_path.assert_not_called()
+
+
+def test_the_controller_options_form_returns_what_is_typed(qtbot):
+    from PySide6.QtCore import QTimer
+    from PySide6.QtWidgets import QApplication, QDialog, QLineEdit
+
+    view = PositioningView()
+    qtbot.addWidget(view)
+    seen = {}
+
+    def answer():
+        dialog = next(w for w in QApplication.topLevelWidgets()
+                      if isinstance(w, QDialog) and w.isVisible())
+        edits = dialog.findChildren(QLineEdit)
+        seen["title"], seen["tip"] = dialog.windowTitle(), edits[0].toolTip()
+        edits[0].setText("AX7")
+        dialog.accept()
+
+    QTimer.singleShot(0, answer)
+    got = view.ask_controller_options("SINUMERIK 840D", [
+        ("axis", "machine axis name, e.g. AX1 or X1", "AX1"),
+        ("system", "measuring system the table is for: 1 or 2", "1")])
+    assert got == {"axis": "AX7", "system": "1"}
+    assert seen == {"title": "SINUMERIK 840D: controller options",
+                    "tip": "machine axis name, e.g. AX1 or X1"}

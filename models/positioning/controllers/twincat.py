@@ -73,7 +73,8 @@ def lint(plan: Plan) -> Plan:
     if plan.positions.size < 2 or np.any(steps <= 0) or \
             np.max(np.abs(steps - steps.mean())) > 1e-9 * max(1.0, abs(steps.mean())):
         raise refuse(NAME, message(QT_TR_NOOP("equidistant, monotonically increasing table ({source})"),
-                                   source=SOURCE), message(QT_TR_NOOP("the positions are not")))
+                                   source=SOURCE),
+                     message(QT_TR_NOOP("the positions are not equally spaced and ascending")))
     if plan.modulo:
         for values in plan.tables.values():
             if values[0] != values[-1]:
