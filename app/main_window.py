@@ -58,6 +58,7 @@ from widgets.i18n import (
     resolve_language,
     tr,
 )
+from widgets.screen_fit import fit_to_screen
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
 
@@ -144,7 +145,7 @@ class MainWindow(QMainWindow):
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
         self.statusBar().showMessage(tr("Ready"))
-        self.resize(1400, 900)
+        fit_to_screen(self, 1400, 900)
 
     def _menu(self, parent, title: Tr) -> QMenu:
         menu = parent.addMenu(title)
