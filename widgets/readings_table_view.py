@@ -17,6 +17,7 @@ from models.readings.paste import plan_paste
 from models.readings.tabular_import import split_pasted_text
 from widgets.i18n import live, tr
 from widgets.readings_table_model import ReadingsTableModel
+from widgets.shortcuts import key_sequences
 
 
 class ReadingsTableView(QTableView):
@@ -56,7 +57,7 @@ class ReadingsTableView(QTableView):
     def _action(self, text: str, shortcut, slot) -> QAction:
         action = QAction(text, self)
         live(action.setText, text)
-        action.setShortcut(shortcut)
+        action.setShortcuts(key_sequences(shortcut))
         action.setShortcutContext(Qt.ShortcutContext.WidgetWithChildrenShortcut)
         action.triggered.connect(slot)
         self.addAction(action)
