@@ -58,6 +58,8 @@ from widgets.i18n import (
     resolve_language,
     tr,
 )
+from widgets.screen_fit import fit_to_screen
+from widgets.shortcuts import key_sequences
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
 
@@ -144,7 +146,7 @@ class MainWindow(QMainWindow):
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
         self.statusBar().showMessage(tr("Ready"))
-        self.resize(1400, 900)
+        fit_to_screen(self, 1400, 900)
 
     def _menu(self, parent, title: Tr) -> QMenu:
         menu = parent.addMenu(title)
@@ -155,7 +157,7 @@ class MainWindow(QMainWindow):
         action = QAction(text, self)
         live(action.setText, text)
         if shortcut is not None:
-            action.setShortcut(shortcut)
+            action.setShortcuts(key_sequences(shortcut))
         if isinstance(tip, Tr):
             live(action.setStatusTip, tip)
         action.triggered.connect(slot)
@@ -203,11 +205,10 @@ class MainWindow(QMainWindow):
         # were made in ("Undo Paste 3 rows" stays English in a Chinese window)
         undo = QAction(self)
         undo.triggered.connect(self.undo_group.undo)
-        undo.setShortcut(QKeySequence.StandardKey.Undo)
+        undo.setShortcuts(key_sequences(QKeySequence.StandardKey.Undo))
         redo = QAction(self)
         redo.triggered.connect(self.undo_group.redo)
-        redo.setShortcuts([QKeySequence(QKeySequence.StandardKey.Redo),
-                           QKeySequence("Ctrl+Shift+Z"), QKeySequence("Ctrl+Y")])
+        redo.setShortcuts(key_sequences(QKeySequence.StandardKey.Redo, "Ctrl+Shift+Z", "Ctrl+Y"))
         edit_menu.addAction(undo)
         edit_menu.addAction(redo)
         self.undo_action, self.redo_action = undo, redo
@@ -227,7 +228,7 @@ class MainWindow(QMainWindow):
                                  (tr("&Previous workbench"), ("Ctrl+PgUp", "Ctrl+Shift+Tab"),
                                   -1)):
             action = self._action(view_menu, text, lambda _=False, s=step: self.switch_tab(s))
-            action.setShortcuts([QKeySequence(k) for k in keys])
+            action.setShortcuts(key_sequences(*keys))
             action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
         focus = self._action(view_menu, tr("Next &pane (table, set-up, result, plots)"),
                              self.focus_next_pane, QKeySequence("F6"))
@@ -258,7 +259,7 @@ class MainWindow(QMainWindow):
 
         help_menu = self._menu(self.menuBar(), tr("&Help"))
         self._action(help_menu, tr("&Manual (this workbench)"), self.show_manual,
-                     QKeySequence(QKeySequence.StandardKey.HelpContents),
+                     QKeySequence.StandardKey.HelpContents,
                      tip=tr("What to measure, how to set up, every setting and plot"))
         self._action(help_menu, tr("&Quick guide"), self.show_guide)
         self._action(help_menu, tr("&About AngleBench"), self.show_about)

@@ -163,6 +163,24 @@ def test_instrument_style_entry_fills_theta_and_moves_to_the_next_reading(window
     assert not window.presenter("fringe").view.step.isVisibleTo(window.presenter("fringe").view)
 
 
+@pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning"])
+def test_return_without_a_step_goes_to_the_next_rows_first_column(window, qtbot, key):
+    """No nominal step: the technician types θ, the face or the target too, so Return
+    lands on it (#31: it landed on A, the encoder or the deviation, and a typed run
+    shifted every row by one column)."""
+    presenter = window.presenter(key)
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    table = presenter.view.table
+    assert presenter.view.step.value() == 0
+    table.setCurrentIndex(presenter.table_model.index(0, 0))
+    for column in range(2):
+        qtbot.keyClick(table, Qt.Key.Key_F2)
+        qtbot.keyClicks(table.focusWidget(), "1")
+        qtbot.keyClick(table.focusWidget(), Qt.Key.Key_Tab if column == 0 else Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: table.currentIndex().row() == 1, timeout=2000)
+    assert table.currentIndex().column() == 0
+
+
 def test_f6_walks_the_panes_and_f1_opens_the_manual(window, qtbot, monkeypatch):
     from PySide6.QtWidgets import QApplication
 

@@ -26,6 +26,7 @@ from PySide6.QtWidgets import (
     QLineEdit,
     QPlainTextEdit,
     QPushButton,
+    QScrollArea,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
@@ -39,6 +40,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from widgets.i18n import declared, tr
+from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
 
@@ -184,10 +186,21 @@ class CertificateDialog(QDialog):
         self.save_defaults_button.clicked.connect(self._save_lab_defaults)
         self.buttons.accepted.connect(self.accept)
         self.buttons.rejected.connect(self.reject)
+        # the details scroll, the message and the buttons stay in sight: the dialog fits a
+        # 1280×720 screen and 200 % scale (it is ~870 px tall unscrolled)
+        details = QWidget()
+        details.setLayout(grid)
+        self.details_area = QScrollArea()
+        self.details_area.setWidgetResizable(True)
+        self.details_area.setWidget(details)
         layout = QVBoxLayout(self)
-        layout.addLayout(grid)
+        layout.addWidget(self.details_area, 1)
         layout.addWidget(self.error_label)
         layout.addWidget(self.buttons)
+        wanted = details.sizeHint()
+        bar = self.details_area.verticalScrollBar().sizeHint().width()
+        fit_to_screen(self, wanted.width() + bar + 40,
+                      wanted.height() + self.buttons.sizeHint().height() + 60)
 
     # -- values -------------------------------------------------------------
     def set_metadata(self, meta: CertificateMetadata) -> None:
@@ -271,11 +284,13 @@ class CertificateDialog(QDialog):
                 item = self.standards.item(row, _STANDARD_COLUMNS.index(key))
                 if item is not None:
                     item.setBackground(Qt.GlobalColor.red)
+                    self.details_area.ensureWidgetVisible(self.standards)
             return
         edit = self.fields.get(match.group(1))
         if edit is not None:
             edit.setStyleSheet(_ERROR_STYLE)
             edit.setFocus()
+            self.details_area.ensureWidgetVisible(edit)
 
     def accept(self) -> None:  # the dialog stays open on a bad field
         try:

@@ -9,6 +9,7 @@ from PySide6.QtCore import Qt, QUrl
 from PySide6.QtWidgets import QTextBrowser, QVBoxLayout, QWidget
 
 from widgets.i18n import live, tr
+from widgets.screen_fit import fit_to_screen
 
 MANUAL_DIR = Path(__file__).resolve().parent.parent / "resources" / "manual"
 
@@ -36,7 +37,7 @@ class ManualWindow(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.browser)
-        self.resize(720, 760)
+        fit_to_screen(self, 720, 760)
 
     def show_page(self, kind_key: str, language: str = "en") -> None:
         self.browser.setSource(QUrl.fromLocalFile(str(manual_page(kind_key, language))))

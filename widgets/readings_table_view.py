@@ -17,6 +17,7 @@ from models.readings.paste import plan_paste
 from models.readings.tabular_import import split_pasted_text
 from widgets.i18n import live, tr
 from widgets.readings_table_model import ReadingsTableModel
+from widgets.shortcuts import key_sequences
 
 
 class ReadingsTableView(QTableView):
@@ -56,7 +57,7 @@ class ReadingsTableView(QTableView):
     def _action(self, text: str, shortcut, slot) -> QAction:
         action = QAction(text, self)
         live(action.setText, text)
-        action.setShortcut(shortcut)
+        action.setShortcuts(key_sequences(shortcut))
         action.setShortcutContext(Qt.ShortcutContext.WidgetWithChildrenShortcut)
         action.triggered.connect(slot)
         self.addAction(action)
@@ -64,8 +65,9 @@ class ReadingsTableView(QTableView):
 
     # -- instrument-style entry ----------------------------------------------
     def _editor_closed(self, _editor, hint) -> None:
-        """Return after typing a reading goes to the next row's first reading cell (not the
-        same cell), filling that row's nominal value from the step when it is empty."""
+        """Return after typing a reading goes to the next row's first cell to type (not the
+        same cell): its nominal value when there is no step, else the reading after the
+        nominal, filled from the step when it is empty."""
         row = self.currentIndex().row()
         if hint == QAbstractItemDelegate.EndEditHint.SubmitModelCache and row >= 0:
             self.next_row(row)
@@ -84,7 +86,11 @@ class ReadingsTableView(QTableView):
             if value is not None and not below:
                 model.set_cells([(row + 1, nominal, f"{value + self.nominal_step:.10g}")],
                                 tr("Next nominal"))
-        target = model.index(row + 1, self.entry_column)
+        # with a step the nominal is filled in: its first reading; without one the
+        # technician types the nominal too: the row's first column
+        stepped = self.nominal_step and nominal is not None
+        column = self.entry_column if stepped or nominal is None else nominal
+        target = model.index(row + 1, column)
         self.setCurrentIndex(target)
         self.scrollTo(target)
 

@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 
 from widgets.i18n import declared, live, tr
 from widgets.plot_grid import show_grid
+from widgets.screen_fit import fit_to_screen
 from widgets.text_table import show_text_table
 
 EPOCH = dt.date(1970, 1, 1).toordinal()
@@ -39,7 +40,7 @@ class RegisterWindow(QDialog):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         live(self.setWindowTitle, tr("Certificate register"))
-        self.resize(1100, 720)
+        fit_to_screen(self, 1100, 720)
         self.location = QLabel()
         self.location.setObjectName("location")  # where the register is: a path or URL
         self.location.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)

@@ -1,0 +1,119 @@
+"""Opens every dialog of the window on the screen Qt was started with and prints, as JSON,
+each one's frame and the screen's available geometry (tests/test_dialogs_fit.py runs it
+in a process of its own per screen: an offscreen screen of a given size and scale).
+
+Each dialog is opened the way the user opens it (its menu action, its button), answered
+from a timer that records the modal window in front and closes it."""
+
+from __future__ import annotations
+
+import json
+import sys
+import tempfile
+from pathlib import Path
+
+from PySide6.QtCore import QSettings, QTimer
+from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
+
+found: dict[str, dict] = {}
+
+
+def record(name: str, widget: QWidget) -> None:
+    QApplication.processEvents()
+    frame = widget.frameGeometry()
+    screen = (widget.screen() or QApplication.primaryScreen()).availableGeometry()
+    found[name] = {"frame": [frame.x(), frame.y(), frame.width(), frame.height()],
+                   "available": [screen.x(), screen.y(), screen.width(), screen.height()],
+                   "minimum": [widget.minimumSizeHint().width(), widget.minimumSizeHint().height()]}
+
+
+def answer_modal(name: str, then=None) -> None:
+    """Record the modal window that the next call opens, then close it."""
+
+    def look() -> None:
+        modal = QApplication.activeModalWidget()
+        if modal is None:
+            QTimer.singleShot(20, look)
+            return
+        record(name, modal)
+        if then is not None:
+            then(modal)
+        modal.reject() if hasattr(modal, "reject") else modal.close()
+
+    QTimer.singleShot(0, look)
+
+
+def main() -> None:
+    app = QApplication.instance() or QApplication(["anglebench"])
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+    from widgets.certificate_dialog import CertificateDialog
+    from widgets.column_mapping_dialog import ColumnMappingDialog
+
+    scratch = tempfile.mkdtemp(prefix="anglebench-fit-")
+    language = sys.argv[1] if len(sys.argv) > 1 else "en"
+    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+    settings.setValue("ui/language", language)
+    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
+    window.load_all_samples()
+    window.show()
+    app.processEvents()
+    record("main window", window)
+
+    # the certificate dialog as File › Export certificate opens it, with three standards
+    meta = window.certificate_metadata("polygon")
+    dialog = CertificateDialog(meta, window)
+    for _ in range(3):
+        dialog.add_standard({"description": "Autocollimator", "uncertainty_arcsec": 0.3})
+    dialog.show()
+    record("certificate details", dialog)
+    dialog.close()
+    window.tabs.setCurrentIndex(1)
+    answer_modal("certificate details (Export certificate…)")
+    window.export_certificate()
+
+    kind = max((p.kind for p in window.presenters), key=lambda k: len(k.columns))
+    header = [f"column {i}" for i in range(len(kind.columns) + 2)]
+    mapping = ColumnMappingDialog(kind.columns, header, [[str(i) for i in range(len(header))]] * 5,
+                                  "The headers of readings.csv were not recognised. " * 3, window)
+    mapping.show()
+    record("which column is which", mapping)
+    mapping.close()
+
+    window.show_register()
+    record("certificate register", window.register_window)
+    window.register_window.close()
+    window.show_manual()
+    record("manual", window.manual)
+    window.manual.close()
+
+    answer_modal("quick guide")
+    window.show_guide()
+    answer_modal("about")
+    window.show_about()
+    long_reason = "row 12, column 'A': '12°34' is not an angle. " * 6
+    answer_modal("a message (tell)")
+    QMessageBox.warning(window, "Cannot import", long_reason)
+    answer_modal("a question (ask)")
+    QMessageBox.question(window, "Unsaved readings", long_reason)
+    answer_modal("paste question")
+    window.current.view.table.ask_paste(5, 20)
+    answer_modal("draft question")
+    window.confirm_draft(["reference standards", "approver", "customer"])
+    from app.certificate_presenter import PendingRevision
+
+    answer_modal("what changed")
+    window.ask_change_note(PendingRevision("polygon", "AB-2026-0042"))
+    answer_modal("print")
+    window.print_dialog()
+    answer_modal("open project")
+    window.open_project_dialog()
+    answer_modal("import readings")
+    window.import_dialog()
+    window.recovery.discard()
+    window.close()
+    sys.stdout.write(json.dumps(found) + "\n")
+
+
+if __name__ == "__main__":
+    main()
