@@ -318,6 +318,11 @@ def _fitted_figure(sin_fit: ChannelFit, cos_fit: ChannelFit, samples: int = 4096
     return dense, model_signal(dense, sin_fit), model_signal(dense, cos_fit)
 
 
+def _volts(value: float, sign: str = "") -> str:
+    text = f"{value:{sign}.3f}"
+    return text.replace("-0.000", "+0.000") if sign else text
+
+
 def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit) -> None:
     """Refuse a compensation over the measured phase atan2(u_sin, u_cos) where that phase
     does not turn once, forward, a period: the fitted Lissajous figure must circle 0 V (an
@@ -327,8 +332,8 @@ def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit) -> None:
     steps = np.diff(np.concatenate([measured, measured[:1]]))
     steps = (steps + math.pi) % TWO_PI - math.pi
     turns = float(np.sum(steps)) / TWO_PI
-    figures = dict(a0=f"{sin_fit.offset:+.4f}", b0=f"{cos_fit.offset:+.4f}",
-                   a1=f"{sin_fit.amplitude[1]:.4f}", b1=f"{cos_fit.amplitude[1]:.4f}")
+    figures = dict(a0=_volts(sin_fit.offset, "+"), b0=_volts(cos_fit.offset, "+"),
+                   a1=_volts(sin_fit.amplitude[1]), b1=_volts(cos_fit.amplitude[1]))
     if round(turns) != 1:
         raise ValueError(message(QT_TR_NOOP(
             "no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, "
