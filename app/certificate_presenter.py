@@ -19,7 +19,7 @@ from typing import Any, Protocol
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, AngleUnit
-from widgets.i18n import explained, tr
+from widgets.i18n import explained, tr, translated
 
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
@@ -52,6 +52,9 @@ class CertificateView(Protocol):
 
     def confirm_draft(self, missing: list[str]) -> bool:
         """Export a DRAFT although these details are missing?"""
+
+    def confirm_implausible(self, reason: str) -> bool:
+        """Certify a result that shows figures no instrument of the kind has (``reason``)?"""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str: ...
 
@@ -150,6 +153,9 @@ class CertificatePresenter:
         recorded."""
         from app.certificate_issue import draft_reasons
 
+        doubt = kind.certificate_doubt(result) if kind.certificate_doubt else ""
+        if doubt and not self.view.confirm_implausible(translated(doubt)):
+            return False
         entered = self.edit_details(self.details(kind.key))
         if entered is None:
             return False

@@ -53,6 +53,10 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("which of the file's headers holds which column, when "
                                          "the headers are not recognised, e.g. "
                                          "theta_deg=转角,azimuth_deg=方位角")))
+    p.add_argument("--confirm-implausible", action="store_true",
+                   help=words(QT_TR_NOOP("issue the certificate although the result shows "
+                                         "figures no instrument of the kind has (polygon: "
+                                         "errors of degrees); you have checked the readings")))
     p.add_argument("--table", metavar="OUT",
                    help=words(QT_TR_NOOP("also write the workbench's correction table: fringe "
                                          "(CSV, or a C header for OUT.h), positioning "
@@ -238,6 +242,13 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
                               path=args.table), words))
+    doubt = kind.certificate_doubt(result) if kind.certificate_doubt and args.certificate else ""
+    if doubt and not args.confirm_implausible:
+        _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {reason} If the "
+                                         "readings are right, run again with "
+                                         "--confirm-implausible"), file=args.file, reason=doubt),
+                      words))
+        return EXIT_BAD_INPUT
     if args.certificate or args.results:
         # the register keeps the readings as written: read as text when one is issued
         return _export(args, kind, result, settings,

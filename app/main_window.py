@@ -630,6 +630,15 @@ class MainWindow(QMainWindow):
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
+    def confirm_implausible(self, reason: str) -> bool:
+        answer = self.ask(
+            tr("Certify these figures?"),
+            tr("{reason}\n\nIssue a certificate on this result anyway? Only if you have "
+               "checked the readings and the figures are right.").format(reason=reason),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def ask_change_note(self, revision) -> str:
         question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
                        "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else

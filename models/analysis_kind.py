@@ -54,6 +54,10 @@ class AnalysisKind:
     headline: Callable[[Any], dict[str, float]] | None = None
     # result -> the result in one line, shown above everything else in the window
     verdict: Callable[[Any], str] | None = None
+    # result -> why a certificate of it needs the user's confirmation first ("" when it does
+    # not): figures no instrument of the kind shows (the window asks; the command line
+    # refuses without --confirm-implausible)
+    certificate_doubt: Callable[[Any], str] | None = None
     # instrument-style entry: the column a nominal step fills as rows are added, and the
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: str = ""

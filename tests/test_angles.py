@@ -27,6 +27,14 @@ from models.readings.angles import AngleParseError, format_dms, parse_angle_deg
         ("359°59'59.9\"", 360 - 0.1 / 3600),
         ("  45 ", 45.0),
         ("12°34'56.7''", 12 + 34 / 60 + 56.7 / 3600),
+        ("138°24'05,15\"", 138 + 24 / 60 + 5.15 / 3600),
+        ("-138°24′05,15″", -(138 + 24 / 60 + 5.15 / 3600)),
+        ("１３８°２４′０５，１５″", 138 + 24 / 60 + 5.15 / 3600),
+        ("138 24 05,15", 138 + 24 / 60 + 5.15 / 3600),
+        ("138:24:05,15", 138 + 24 / 60 + 5.15 / 3600),
+        ("138度24分05,15秒", 138 + 24 / 60 + 5.15 / 3600),
+        ("12°30,5'", 12 + 30.5 / 60),
+        ("12,5°", 12.5),
     ],
 )
 def test_parses_usual_spellings(text, expected):
@@ -44,6 +52,10 @@ def test_parses_usual_spellings(text, expected):
         ("abc", "is not an angle"),
         ("12°34'56.7\"x", "is not an angle"),
         ("inf", "is not an angle"),
+        ("12,34,56", "is not an angle"),
+        ("12°34'5,6.7\"", "is not an angle"),
+        ("12°30,5'10\"", "minutes must be whole"),
+        ("1°00'60,0\"", "seconds 60.0 out of range"),
     ],
 )
 def test_rejects_with_reason(text, reason):
@@ -82,3 +94,55 @@ def test_never_raises_anything_but_parse_error(text):
     except AngleParseError:
         return
     assert math.isfinite(value)
+
+
+def _full_width(text: str) -> str:
+    """Digits, sign, point and comma as a Chinese or Japanese input method types them."""
+    return "".join(chr(ord(c) + 0xFEE0) if c.isdigit() or c in ".,-" else c for c in text)
+
+
+SPELLINGS = {
+    "symbols": "{sign}{d}°{m:02d}'{s}\"",
+    "primes": "{sign}{d}°{m:02d}′{s}″",
+    "two apostrophes": "{sign}{d}°{m:02d}'{s}''",
+    "spaces": "{sign}{d} {m:02d} {s}",
+    "colons": "{sign}{d}:{m:02d}:{s}",
+    "letters": "{sign}{d}d{m:02d}m{s}s",
+    "Chinese": "{sign}{d}度{m:02d}分{s}秒",
+    "minus sign": "{minus}{d}°{m:02d}′{s}″",
+}
+
+
+@given(st.floats(-720, 720, allow_nan=False), st.integers(0, 4), st.sampled_from(sorted(SPELLINGS)),
+       st.booleans(), st.booleans())
+def test_format_parse_round_trip_in_every_spelling(value, places, spelling, comma, full_width):
+    """format_dms → each accepted spelling (decimal point or comma, ASCII or full-width) →
+    parse_angle_deg gives the angle back to the seconds' last place."""
+    text = format_dms(value, places)
+    sign = "-" if text.startswith("-") else ""
+    d, rest = text.lstrip("-").split("°")
+    m, s = rest.rstrip('"').split("'")
+    if comma:
+        s = s.replace(".", ",")
+    text = SPELLINGS[spelling].format(sign=sign, minus="\u2212" if sign else "", d=int(d),
+                                      m=int(m), s=s)
+    if full_width:
+        text = _full_width(text)
+    back = parse_angle_deg(text)
+    assert abs(back - value) * 3600 <= 0.5 * 10**-places + 1e-9, text
+
+
+@given(st.floats(-720, 720, allow_nan=False), st.integers(1, 8), st.booleans())
+def test_decimal_degrees_with_a_comma_round_trip(value, places, full_width):
+    text = f"{value:.{places}f}".replace(".", ",")
+    if full_width:
+        text = _full_width(text)
+    assert math.isclose(parse_angle_deg(text), float(f"{value:.{places}f}"), abs_tol=1e-12)
+
+
+@given(st.integers(0, 359), st.integers(0, 59), st.integers(0, 59), st.integers(0, 99),
+       st.integers(0, 99))
+def test_two_commas_or_a_comma_with_a_point_are_never_read(d, m, s, f1, f2):
+    for text in (f"{d}°{m}'{s},{f1},{f2}\"", f"{d},{m}'{s}.{f1}\"", f"{d},{m},{s}"):
+        with pytest.raises(AngleParseError):
+            parse_angle_deg(text)

@@ -126,3 +126,30 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
     assert seen["lab"] == "Angle Lab" and seen["humidity"] == "45 %"
     assert all(style for style in seen["styles"])
     assert "humidity_pct" in seen["error"] and "temperature_c" in seen["error"]
+
+
+def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(window, qtbot,
+                                                                          tmp_path, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    from models.readings.angles import format_dms, parse_angle_deg
+
+    window.load_all_samples()
+    polygon = next(p for p in window.presenters if p.kind.key == "polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    cell = polygon.table_model.index(2, 1)
+    wrong = format_dms(parse_angle_deg(polygon.table_model.data(cell)) + 2.0, 2)
+    polygon.table_model.set_cells([(2, 1, wrong)])  # face 3 typed two degrees off
+    qtbot.waitUntil(lambda: polygon.result is not None and "ERRORS OF" in
+                    polygon.view.warnings.text())
+    assert polygon.view.verdict.text().startswith("*** ERRORS OF 2.00°")  # bold, on top
+    asked = []
+    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.No
+    opened = []
+    monkeypatch.setattr(CertificateDialog, "exec", lambda d: opened.append(d) or 0)
+    assert not window.export_certificate()
+    assert "ERRORS OF 2.00°" in asked[0] and not opened  # refused before any detail is asked
+    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
+    window.export_certificate()
+    assert opened  # confirmed: on to the details

@@ -165,3 +165,38 @@ def test_an_unreachable_register_issues_nothing_and_says_so(parts, samples_dir, 
     title, text = view.tell.call_args.args
     assert title == "Not issued" and "postgresql+psycopg://lab@/register" in text
     assert not (tmp_path / "c.pdf").exists()
+
+
+def _polygon_with_errors_of_degrees(samples_dir):
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    from models.readings.angles import format_dms, parse_angle_deg
+
+    rows[2][1] = format_dms(parse_angle_deg(rows[2][1]) + 2.0, 2)  # face 3 two degrees off
+    return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+
+
+def test_errors_no_encoder_has_are_certified_only_when_confirmed(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _polygon_with_errors_of_degrees(samples_dir)
+    view.confirm_implausible.return_value = False
+    assert not presenter.export_certificate(kind, result, {}, "poly.csv")
+    assert "ERRORS OF 2.00°" in view.confirm_implausible.call_args.args[0]
+    view.edit_certificate_details.assert_not_called()
+    view.choose_save_path.assert_not_called()
+    view.confirm_implausible.return_value = True
+    view.edit_certificate_details.return_value = CertificateMetadata(lab_name="Lab")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(tmp_path / "out.pdf")
+    assert presenter.export_certificate(kind, result, {}, "poly.csv")
+    assert (tmp_path / "out.pdf").exists()
+
+
+def test_a_plausible_result_asks_nothing_more(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view.edit_certificate_details.return_value = None
+    assert not presenter.export_certificate(kind, result, {}, "poly.csv")
+    view.confirm_implausible.assert_not_called()

@@ -88,3 +88,58 @@ def test_paste_round_trip_tab_separated(grid):
         grid[-1][0] = "x"
     text = "\n".join("\t".join(r) for r in grid)
     assert split_pasted_text(text) == grid
+
+
+def test_european_semicolon_file_with_dms_decimal_commas_reads_fully(tmp_path):
+    """Issue 31 item 5: a semicolon file from a European spreadsheet, D°M'S" with a decimal
+    comma in the seconds, decimal commas elsewhere: every cell read, none red."""
+    from models.polygon.analysis import POLYGON
+    from models.readings.sheet import ReadingsSheet
+
+    lines = ["position;encoder_deg;polygon_dev_arcsec;ac_x_arcsec;ac_y_arcsec"]
+    for face in range(1, 13):
+        angle = 123.4 + 30 * (face - 1) + 0.5 / 3600 * face
+        d, rest = divmod(angle * 3600, 3600)
+        m, s = divmod(rest, 60)
+        lines.append(f"{face};{int(d) % 360}°{int(m):02d}'{s:05.2f}\"".replace(".", ",")
+                     + f";0,{face:02d};{face},5;-1,25")
+    path = tmp_path / "eu.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    rows = map_columns(read_table(path), POLYGON.columns)
+    parsed = ReadingsSheet(POLYGON.columns, rows).parse()
+    assert parsed.errors == [] and parsed.n == 12
+    assert parsed["encoder_deg"][1] == pytest.approx(153.4 + 1 / 3600, abs=0.006 / 3600)
+    assert parsed["ac_x_arcsec"][0] == 1.5 and parsed["polygon_dev_arcsec"][11] == 0.12
+
+
+def test_typed_and_pasted_dms_with_a_decimal_comma():
+    from models.readings.sheet import ReadingsSheet
+
+    pasted = split_pasted_text("138°24'05,15\"\n139°24'05,15\"\n")
+    assert pasted == [["138°24'05,15\""], ["139°24'05,15\""]]
+    tabbed = split_pasted_text("0\t138°24'05,15\"\t0°00'12,5\"\n")
+    parsed = ReadingsSheet(COLUMNS, tabbed).parse()
+    assert parsed.errors == []
+    assert parsed["azimuth_deg"][0] == pytest.approx(138 + 24 / 60 + 5.15 / 3600, abs=1e-12)
+    assert parsed["elevation_deg"][0] == pytest.approx(12.5 / 3600, abs=1e-12)
+
+
+def test_xlsx_angles_stored_as_times_read_as_the_sheet_shows_them(tmp_path):
+    import datetime
+
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["theta_deg", "azimuth_deg", "elevation_deg"])
+    sheet.append([1, datetime.time(6, 12, 30), datetime.timedelta(hours=138, minutes=24,
+                                                                   seconds=5.15)])
+    sheet["B2"].number_format = "h:mm:ss"
+    sheet["C2"].number_format = "[h]:mm:ss.00"
+    path = tmp_path / "times.xlsx"
+    book.save(path)
+    rows = map_columns(read_table(path), COLUMNS)
+    from models.readings.angles import parse_angle_deg
+
+    assert parse_angle_deg(rows[0][1]) == pytest.approx(6 + 12 / 60 + 30 / 3600, abs=1e-9)
+    assert parse_angle_deg(rows[0][2]) == pytest.approx(138 + 24 / 60 + 5.15 / 3600, abs=1e-6)

@@ -21,6 +21,7 @@ from models.fringe.model import (
     fit_periods,
     fit_periods_along,
     interpolation_error_rad,
+    model_signal,
     period_arcsec,
     refine_phase,
 )
@@ -280,7 +281,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         unit, period = "nm", float(s["period_nm"])
     else:
         unit, period = "arcsec", period_arcsec(lines)
+    _check_compensable(sin_fit, cos_fit)
     table = build_correction_table(sin_fit, cos_fit, int(s["lut_size"]), zero=str(s["table_zero"]))
+    _check_compensates(sin_fit, cos_fit, table)
     measured = np.arctan2(u_sin, u_cos)
     to_unit = period / TWO_PI
     raw = interpolation_error_rad(measured, theta) * to_unit
@@ -302,6 +305,63 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings,
     )
+
+
+#: The table, applied to the fitted signals themselves, must leave at most this share of
+#: their error (and of a period): else it does not compensate them, and is refused.
+MAX_MODEL_RESIDUAL_SHARE = 0.5
+MAX_MODEL_RESIDUAL_PERIOD = 0.01
+
+
+def _fitted_figure(sin_fit: ChannelFit, cos_fit: ChannelFit, samples: int = 4096):
+    dense = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    return dense, model_signal(dense, sin_fit), model_signal(dense, cos_fit)
+
+
+def _volts(value: float, sign: str = "") -> str:
+    text = f"{value:{sign}.3f}"
+    return text.replace("-0.000", "+0.000") if sign else text
+
+
+def _check_compensable(sin_fit: ChannelFit, cos_fit: ChannelFit) -> None:
+    """Refuse a compensation over the measured phase atan2(u_sin, u_cos) where that phase
+    does not turn once, forward, a period: the fitted Lissajous figure must circle 0 V (an
+    offset larger than the amplitude leaves the origin outside) without looping back."""
+    _, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit)
+    measured = np.arctan2(model_sin, model_cos)
+    steps = np.diff(np.concatenate([measured, measured[:1]]))
+    steps = (steps + math.pi) % TWO_PI - math.pi
+    turns = float(np.sum(steps)) / TWO_PI
+    figures = dict(a0=_volts(sin_fit.offset, "+"), b0=_volts(cos_fit.offset, "+"),
+                   a1=_volts(sin_fit.amplitude[1]), b1=_volts(cos_fit.amplitude[1]))
+    if round(turns) != 1:
+        raise ValueError(message(QT_TR_NOOP(
+            "no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, "
+            "B0 = {b0} V against amplitudes A1 = {a1} V, B1 = {b1} V; the measured phase "
+            "atan2(u_sin, u_cos) turns {turns} times a period, not once), so no table over it "
+            "can compensate: remove the offsets (differential signals A+ − A−, or the reference "
+            "voltage) and analyse again"), turns=int(round(turns)), **figures))
+    if not np.all(steps > 0):
+        raise ValueError(message(QT_TR_NOOP(
+            "no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals "
+            "turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} "
+            "V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot "
+            "compensate"), **figures))
+
+
+def _check_compensates(sin_fit: ChannelFit, cos_fit: ChannelFit, table) -> None:
+    """The proof: the table applied to the fitted signals removes their error (else refused,
+    with the figures)."""
+    dense, model_sin, model_cos = _fitted_figure(sin_fit, cos_fit)
+    measured = np.arctan2(model_sin, model_cos)
+    before = float(np.ptp(interpolation_error_rad(measured, dense)))
+    after = float(np.ptp(interpolation_error_rad(table.compensate(measured), dense)))
+    if after > MAX_MODEL_RESIDUAL_SHARE * before and after > MAX_MODEL_RESIDUAL_PERIOD * TWO_PI:
+        raise ValueError(message(QT_TR_NOOP(
+            "no compensation: the correction table, applied to the fitted signals themselves, "
+            "leaves {after} % of a period of their {before} % (peak-to-peak): it does not "
+            "compensate these signals"),
+            after=f"{100 * after / TWO_PI:.2f}", before=f"{100 * before / TWO_PI:.2f}"))
 
 
 def harmonic_orders(max_order: int, harmonics: str) -> tuple[int, ...]:

@@ -91,6 +91,10 @@ PARAMETERS = (
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
+#: An error beyond this (20× the widest grade's ±30") is no encoder's error: a wrong unit,
+#: a wrong face count or a mis-numbered face. Said first, and a certificate needs the
+#: user's confirmation.
+IMPLAUSIBLE_ERROR_ARCSEC = 600.0
 #: Autocollimator readings and face deviations beyond this are not readings of a polygon test.
 READING_LIMIT_ARCSEC = 3600.0
 
@@ -335,6 +339,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     if spread:
         warnings.append(message(QT_TR_NOOP("Closure drift spread linearly over each set and "
                                            "removed from the autocollimator readings.")))
+    doubt = _implausible(errors, corrected, faces)
+    if doubt:
+        warnings.insert(0, doubt)
     return PolygonResult(
         sets=results, faces=faces, grade=grade, theta_deg=theta,
         mean_error_arcsec=mean_error, mean_corrected_arcsec=mean_corrected,
@@ -346,6 +353,26 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), closure_rows=closure_rows,
         warnings=warnings,
     )
+
+
+def _implausible(errors: np.ndarray, corrected: np.ndarray, faces: int) -> str:
+    """The warning for errors no encoder has ("" when there are none)."""
+    worst = float(np.max(np.abs(np.concatenate([errors.ravel(), corrected.ravel()]))))
+    if not worst > IMPLAUSIBLE_ERROR_ARCSEC:
+        return ""
+    return message(QT_TR_NOOP(
+        "*** ERRORS OF {degrees}° ({worst}): no encoder of grade 1–7 errs by more than "
+        "arcseconds. Check the unit of the encoder column (degrees), the number of faces "
+        "({faces}) and the face numbering before trusting any figure; a certificate needs "
+        "your confirmation. ***"),
+        degrees=f"{worst / 3600:.2f}", worst=f"{worst:.0f}\"", faces=faces)
+
+
+def certificate_doubt(result: PolygonResult) -> str:
+    """Why a certificate of this result needs the user's confirmation ("" when it does not)."""
+    errors = np.concatenate([r.error_arcsec for r in result.sets])
+    corrected = np.concatenate([r.corrected_error_arcsec for r in result.sets])
+    return _implausible(errors, corrected, result.faces)
 
 
 def iso230_figures(result: PolygonResult) -> dict[str, float]:
@@ -400,7 +427,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
 
 def summary(result: PolygonResult) -> str:
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
-    out = [joined((
+    doubt = certificate_doubt(result)
+    out = ([doubt] if doubt else []) + [joined((
         message(QT_TR_NOOP("{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})"),
                 faces=result.faces, sets=len(result.sets), grade=result.grade,
                 accuracy=f"±{tol:g}\""),
@@ -481,7 +509,9 @@ POLYGON = AnalysisKind(
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
     positioning_rows=positioning_rows,
+    certificate_doubt=certificate_doubt,
     verdict=lambda r: joined((
+        certificate_doubt(r), " " if certificate_doubt(r) else "",
         "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
         message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
                            "{ptp}; ") if r.accuracy_ok else

@@ -6,9 +6,11 @@ Accepted spellings (a leading sign applies to the whole angle)::
     12°34'56.7"    12 34 56.7   12:34:56.7  12d34m56.7s
     -0°00'12.5"    12°30.5'     12°         12度34分56.7秒
     １２°３４′５６．７″  (full-width digits and primes)
+    138°24'05,15"  138 24 05,15  (a decimal comma in the last part, as Europe writes it)
 
 Minutes and seconds must be below 60; degrees must be whole when minutes
-follow, and minutes whole when seconds follow.
+follow, and minutes whole when seconds follow. A decimal comma is read in one
+number only (never with a point): ``12,34,56`` is not an angle.
 """
 
 from __future__ import annotations
@@ -47,7 +49,7 @@ def arcsec_to_deg(value_arcsec):
     return value_arcsec / ARCSEC_PER_DEG
 
 
-_NUMBER = r"(\d+(?:\.\d*)?|\.\d+)"
+_NUMBER = r"(\d+(?:\.\d*)?|\.\d+|\d+,\d+)"  # 05,15: a decimal comma
 _SEP_DEG = r"(?:°|d|度|\s+|:)"
 _SEP_MIN = r"(?:'|m|分|\s+|:)"
 _SEP_SEC = r"(?:\"|s|秒)"
@@ -113,12 +115,12 @@ def parse_angle_deg(text: str) -> float:
             raise AngleParseError(message(QT_TR_NOOP("'{text}' is not a finite angle"),
                                           text=text.strip()))
         return sign * value
-    match = _DMS.match(s)
+    match = _DMS.match(s) if s.count(",") <= 1 and not ("," in s and "." in s) else None
     if match is None:
         raise AngleParseError(message(QT_TR_NOOP(
             "'{text}' is not an angle; write decimal degrees (12.5) or D°M'S\" (12°34'56.7\", "
             "12 34 56.7, 12:34:56.7)"), text=text.strip()))
-    deg_s, min_s, sec_s = match.groups()
+    deg_s, min_s, sec_s = (None if g is None else g.replace(",", ".") for g in match.groups())
     degrees = float(deg_s)
     minutes = float(min_s) if min_s is not None else 0.0
     seconds = float(sec_s) if sec_s is not None else 0.0

@@ -10,6 +10,7 @@ from __future__ import annotations
 import enum
 import math
 import re
+import unicodedata
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -22,9 +23,23 @@ from models.readings.angles import AngleParseError, parse_angle_deg
 __all__ = ["CellError", "Column", "ColumnKind", "ParsedReadings", "ReadingsSheet", "one_line"]
 
 
+def _escaped(ch: str) -> str:
+    code = ord(ch)
+    if ch == "\t":
+        return "\\t"
+    return f"\\x{code:02x}" if code < 0x100 else (f"\\u{code:04x}" if code < 0x10000
+                                                  else f"\\U{code:08x}")
+
+
 def one_line(text: str, limit: int = 400) -> str:
-    """A message fit for one line: line breaks shown as ⏎, cut at ``limit`` characters."""
+    """A message fit for one line: line breaks shown as ⏎, every other character a terminal
+    would not print as itself (control characters, the line and paragraph separators that
+    split a line, bidirectional overrides, lone surrogates of undecodable bytes) escaped as
+    ``\\xNN`` / ``\\uNNNN``; cut at ``limit`` characters."""
     flat = str(text).replace("\r\n", "⏎").replace("\n", "⏎").replace("\r", "⏎")
+    if not flat.isprintable():
+        flat = "".join(ch if ch.isprintable() or unicodedata.category(ch) == "Zs" else _escaped(ch)
+                       for ch in flat)
     return flat if len(flat) <= limit else flat[: limit - 1] + "…"
 
 
@@ -52,7 +67,7 @@ class CellError:
                         QT_TR_NOOP("row {row}, column '{column}': {reason}"),
                         source=source, row=self.row + row_offset, column=self.column_key,
                         reason=self.reason)
-        return where if "\n" not in where and len(where) <= 400 else one_line(where)
+        return where if where.isprintable() and len(where) <= 400 else one_line(where)
 
 
 @dataclass(frozen=True)

@@ -102,12 +102,29 @@ def split_pasted_text(text: str) -> list[list[str]]:
     if not text:
         return []
     delim = "\t" if "\t" in text else _sniff_delimiter(text)
-    if delim not in text:
+    if delim not in text or (delim == "," and _dms_with_decimal_comma(text.split("\n"))):
         return [[line] for line in text.split("\n")]
     rows = [list(r) for r in csv.reader(io.StringIO(text), delimiter=delim)]
     if delim == ";":
         rows = [[_fix_decimal_comma(c) for c in r] for r in rows]
     return rows
+
+
+_DMS_MARK = re.compile("[°'\"′″度分秒]")
+
+
+def _dms_with_decimal_comma(lines: list[str]) -> bool:
+    """A pasted column of D°M'S" with decimal commas (138°24'05,15"): its commas are not
+    between cells."""
+    filled = [ln.strip() for ln in lines if ln.strip()]
+    if not filled or not all(_DMS_MARK.search(ln) for ln in filled):
+        return False
+    try:
+        for ln in filled:
+            parse_angle_deg(ln)
+    except AngleParseError:
+        return False
+    return True
 
 
 def _fix_decimal_comma(cell: str) -> str:
@@ -215,6 +232,29 @@ def _xlsx_expanded_size(data: bytes, source: str) -> int:
             source=source, exc=reason_of(exc))) from None
 
 
+def _xlsx_text(value) -> str:
+    """A cell's value as the text a CSV saved from the sheet would hold. An angle typed as
+    138:24:05 is stored as a time of day (below 24 h) or a duration ([h]:mm:ss): written
+    back as D:M:S with its seconds, so both paths read the same angle."""
+    import datetime
+
+    if value is None:
+        return ""
+    if isinstance(value, float):
+        return repr(value)
+    if isinstance(value, datetime.time):
+        seconds = value.second + value.microsecond / 1e6
+        return f"{value.hour}:{value.minute:02d}:{seconds:09.6f}"
+    if isinstance(value, datetime.timedelta):
+        sign = "-" if value < datetime.timedelta(0) else ""
+        micro = abs(value) // datetime.timedelta(microseconds=1)
+        whole, micro = divmod(micro, 1_000_000)
+        hours, rest = divmod(whole, 3600)
+        minutes, seconds = divmod(rest, 60)
+        return f"{sign}{hours}:{minutes:02d}:{seconds + micro / 1e6:09.6f}"
+    return str(value)
+
+
 def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
     try:
         import openpyxl
@@ -253,8 +293,7 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
                 grid.append([])
                 continue
             empty_run = 0
-            cells = ["" if v is None else (repr(v) if isinstance(v, float) else str(v))
-                     for v in row]
+            cells = [_xlsx_text(v) for v in row]
             _check_row(cells, line, source)
             grid.append(cells[:MAX_COLUMNS])
             if line > MAX_ROWS:

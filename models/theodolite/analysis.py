@@ -51,7 +51,9 @@ PARAMETERS = (
               step=5.0, help="Admissible elevation of the mirror normal"),
     Parameter("accuracy_arcsec", "theodolite accuracy (1σ)", "float", 0.5, "\"", 0.0, 3600.0,
               decimals=2, step=0.1,
-              help="Residuals far above it (3×) raise a warning; 0: no check"),
+              help="Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when "
+                   "the set-up model explains less than 99 % (R²), the result is refused; "
+                   "0: no check"),
 )
 
 
@@ -86,6 +88,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
         reference_index=reference_index, method=str(s["method"]),
         psi_max_deg=float(s["psi_max_deg"]), beta_max_deg=float(s["beta_max_deg"]),
         accuracy_arcsec=float(s["accuracy_arcsec"]) or None, directions=directions,
+        row_numbers=parsed.row_index + 1,
     )
     runs = parsed["run"]
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None

@@ -36,6 +36,8 @@ __all__ = [
     "SetupParameters",
     "TheodoliteResult",
     "analyze_run",
+    "check_corrected",
+    "check_fit",
     "elevation_coefficients",
     "forward_readings",
     "identify_from_azimuth",
@@ -496,6 +498,78 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
             ptp=f"{np.ptp(distinct):.3g}"))
 
 
+#: The identification gates the result. The fitted quantity's residuals are the reading
+#: noise when the set-up model holds (RMS ≈ the theodolite's accuracy σ; an axis' wobble
+#: adds a few σ, hence the warning at 3σ). Refused: an RMS beyond ``RESIDUAL_REFUSED`` σ
+#: whatever the R² (no reading error of the instrument makes that), and an RMS beyond
+#: ``RESIDUAL_UNEXPLAINED`` σ when the model explains less than ``MIN_R_SQUARED`` of the
+#: readings' variation (a small set-up leaves the elevations flat: a low R² with residuals
+#: at σ is noise, not a failure). σ = 0 turns the check off, as it does the warning.
+RESIDUAL_WARNED = 3.0
+RESIDUAL_REFUSED = 100.0
+RESIDUAL_UNEXPLAINED = 10.0
+MIN_R_SQUARED = 0.99
+#: A corrected error (the axis' own error of indication) beyond this is not an axis' error
+#: but θ and A of one row that disagree: a typed or shifted cell, another unit.
+MAX_AXIS_ERROR_ARCSEC = 3600.0
+
+
+def _row_of(index: int, row_numbers) -> int:
+    return int(row_numbers[index]) if row_numbers is not None else index + 1
+
+
+def check_fit(ident: Identification, accuracy_arcsec: float | None, row_numbers=None) -> None:
+    """Refuse an identification whose fit the set-up model does not explain (ValueError,
+    one line with the figures and the row of the largest residual)."""
+    if not accuracy_arcsec:
+        return
+    rms, r2 = ident.residual_rms_arcsec, ident.r_squared
+    ratio = rms / accuracy_arcsec
+    unexplained = not (r2 >= MIN_R_SQUARED)  # a NaN R² (flat readings) is not an explanation
+    if not (ratio > RESIDUAL_REFUSED or (ratio > RESIDUAL_UNEXPLAINED and unexplained)):
+        return
+    worst = int(np.argmax(np.abs(ident.residuals_arcsec)))
+    column = "elevation_deg" if ident.method == "elevation" else "azimuth_deg"
+    raise ValueError(message(
+        QT_TR_NOOP("no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the "
+                   "theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with "
+                   "R² below {min_r2}), R² = {r2}; the largest residual, {largest}, is at row "
+                   "{row}: check that row's readings, the columns and the accuracy setting"),
+        column=column, rms=f"{rms:.3g}\"", ratio=f"{ratio:.0f}",
+        accuracy=f"{accuracy_arcsec:g}\"", far=f"{RESIDUAL_REFUSED:g}",
+        near=f"{RESIDUAL_UNEXPLAINED:g}", min_r2=f"{MIN_R_SQUARED:g}", r2=f"{r2:.4f}",
+        largest=f"{ident.residuals_arcsec[worst]:+.4g}\"", row=_row_of(worst, row_numbers)))
+
+
+def check_corrected(corrected_arcsec, theta_deg, azimuth_deg, reference_index: int,
+                    row_numbers=None) -> None:
+    """Refuse a corrected error no axis has (beyond ±MAX_AXIS_ERROR_ARCSEC), naming the row
+    (ValueError, one line)."""
+    corrected = np.asarray(corrected_arcsec, dtype=float)
+    worst = int(np.argmax(np.abs(corrected)))
+    if not abs(corrected[worst]) > MAX_AXIS_ERROR_ARCSEC:
+        return
+    bad = int(np.count_nonzero(np.abs(corrected) > MAX_AXIS_ERROR_ARCSEC))
+    if bad > corrected.size // 2:  # every row off by as much: the zero row is the odd one
+        zero = int(reference_index)
+        raise ValueError(message(
+            QT_TR_NOOP("row {row}, where the theodolite was zeroed (θ = {theta}°, A = {azimuth}°), "
+                       "disagrees with {bad} of the other {n} rows by more than ±{limit}: check "
+                       "columns 'theta_deg' and 'azimuth_deg' of that row, or the reference row"),
+            row=_row_of(zero, row_numbers), theta=f"{theta_deg[zero]:.6g}",
+            azimuth=f"{azimuth_deg[zero]:.6g}", bad=bad, n=corrected.size - 1,
+            limit=f"{MAX_AXIS_ERROR_ARCSEC:g}\""))
+    raise ValueError(message(
+        QT_TR_NOOP("row {row}: θ = {theta}° and A = {azimuth}° disagree by {error} after the "
+                   "set-up's share is removed ({bad} of {n} rows beyond ±{limit}; the zero is at "
+                   "row {zero}): no axis errs by that much: check columns 'theta_deg' and "
+                   "'azimuth_deg' of that row"),
+        row=_row_of(worst, row_numbers), theta=f"{theta_deg[worst]:.6g}",
+        azimuth=f"{azimuth_deg[worst]:.6g}", error=f"{corrected[worst]:+.0f}\"", bad=bad,
+        n=corrected.size, limit=f"{MAX_AXIS_ERROR_ARCSEC:g}\"",
+        zero=_row_of(int(reference_index), row_numbers)))
+
+
 def analyze_run(
     theta_deg,
     azimuth_deg,
@@ -506,6 +580,7 @@ def analyze_run(
     beta_max_deg: float = 45.0,
     accuracy_arcsec: float | None = None,
     directions=None,
+    row_numbers=None,
 ) -> TheodoliteResult:
     """Analyse one theodolite run.
 
@@ -522,6 +597,14 @@ def analyze_run(
         Theodolite accuracy (1σ); residuals far above it raise a warning.
     directions : array of ±1, optional
         Approach direction per row; with repeated θ gives the ISO 230-2 figures.
+    row_numbers : array of int, optional
+        The sheet row of each reading, for the messages of a refusal (default 1, 2, …).
+
+    Raises
+    ------
+    ValueError
+        Readings that identify no set-up, a fit the set-up model does not explain
+        (:func:`check_fit`), or a corrected error no axis has (:func:`check_corrected`).
     """
     theta = np.asarray(theta_deg, dtype=float)
     az = np.asarray(azimuth_deg, dtype=float)
@@ -562,14 +645,16 @@ def analyze_run(
         raise ValueError(message(
             QT_TR_NOOP("unknown identification method '{method}'"),
             method=method))
+    check_fit(ident, accuracy_arcsec, row_numbers)
     zeta = induced_error_arcsec(rotation, *ident.setup.as_array())
     # The seed's ζ' = A − θ is reference − indicated (a correction); the error of indication
     # is its negative, and the set-up's share of it is −ζ.
     raw_error = -raw_arcsec
     model = -zeta
     corrected = raw_error - model
+    check_corrected(corrected, theta, az, reference_index, row_numbers)
     warnings = list(ident.warnings)
-    if accuracy_arcsec and ident.residual_rms_arcsec > 3.0 * accuracy_arcsec:
+    if accuracy_arcsec and ident.residual_rms_arcsec > RESIDUAL_WARNED * accuracy_arcsec:
         warnings.append(message(
             QT_TR_NOOP("Residual RMS {rms} is more than three times the theodolite accuracy "
                        "{accuracy}: check the readings and the set-up."),
