@@ -36,7 +36,7 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import plots as fringe_plots
 from models.fringe.model import model_signal, model_signal_std
 from models.messages import QT_TR_NOOP, message
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["fringe_budget", "fringe_certificate"]
@@ -91,16 +91,30 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
-def _parameter_rows(result) -> list[tuple[str, str, str]]:
+class _SampleNames:
+    """"sample i" for every sample, as the results table numbers them (made on demand: a
+    record may have millions)."""
+
+    def __getitem__(self, i: int) -> str:
+        return message(QT_TR_NOOP("sample {sample}"), sample=int(i) + 1)
+
+
+def parameter_coverage(result, probability: float) -> tuple[float, int]:
+    """(k, ν) of the fitted signal parameters: Student's t for the fit's n − p."""
+    nu = max(result.theta_rad.size - (1 + 2 * len(result.sin_fit.orders)), 1)
+    return coverage_factor(nu, probability), nu
+
+
+def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         rows.append((message(QT_TR_NOOP("{channel}: offset A₀"), channel=label),
-                     f"{fit.offset:+.5f} V", f"{2 * fit.u_offset:.5f} V"))
-        for k in fit.orders:
-            ua = fit.u_amplitude.get(k, float("nan"))
-            up = fit.u_phase.get(k, float("nan"))
-            rows.append((f"{label}: A{k}", f"{fit.amplitude[k]:.5f} V", f"{2 * ua:.5f} V"))
-            rows.append((f"{label}: c{k}", f"{fit.phase[k]:+.5f} rad", f"{2 * up:.5f} rad"))
+                     f"{fit.offset:+.5f} V", f"{k * fit.u_offset:.5f} V"))
+        for h in fit.orders:
+            ua = fit.u_amplitude.get(h, float("nan"))
+            up = fit.u_phase.get(h, float("nan"))
+            rows.append((f"{label}: A{h}", f"{fit.amplitude[h]:.5f} V", f"{k * ua:.5f} V"))
+            rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
         rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
                      f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
     return rows
@@ -123,9 +137,11 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
     period, sym, unit = result.period_length, result.unit_symbol, result.unit
+    k_fit, nu_fit = parameter_coverage(result, budget.probability)
     parameters = Table(QT_TR_NOOP("Signal parameters identified"),
-                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), "U (k = 2)"),
-                       _parameter_rows(result))
+                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+                        f"U (k = {k_fit:.2f}, ν = {nu_fit})"),
+                       _parameter_rows(result, k_fit))
     per = min(result.samples_per_period or 64, raw.size)
     step = max(1, per // 64)
     idx = np.arange(0, per, step)
@@ -176,7 +192,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     tol = metadata.tolerance_arcsec
     conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
                                    metadata.decision_quantity,
-                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym)
+                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym,
+                                   point_names=_SampleNames())
     stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
     stat_rows.append((QT_TR_NOOP("Correction table"),
                       message(QT_TR_NOOP("{n} entries"), n=result.table.size),
