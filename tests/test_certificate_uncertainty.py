@@ -5,12 +5,16 @@ asymmetric interval, and the theodolite set-up parameters defined against indepe
 
 from __future__ import annotations
 
+import io
 import math
+import re
 from dataclasses import replace
 
 import numpy as np
 import pytest
+from pypdf import PdfReader
 
+from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.document import budget_table, decision_rows
 from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
@@ -30,6 +34,16 @@ META = CertificateMetadata.from_dict({
     "operator": "Wang",
     "standards": [{"description": "Theodolite", "certificate_no": "NIM-1",
                    "uncertainty_arcsec": 0.5, "basis": "u"}]})
+
+
+#: the fringe inputs the signals cannot show (a 16-bit ADC over ±10 V, its calibration)
+FRINGE_INPUTS = {"phase_reference_u": 0.01, "adc_lsb_mv": 0.3, "adc_offset_u_mv": 0.5,
+                 "adc_gain_u_pct": 0.02, "adc_linearity_mv": 0.6}
+
+
+def _flat(document) -> str:
+    reader = PdfReader(io.BytesIO(certificate_pdf_bytes(document)))
+    return re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in reader.pages))
 
 
 def _sample(key, settings=None):
@@ -113,7 +127,7 @@ def test_theodolite_setup_parameters_take_k_from_their_own_dof():
 # 13. the deciding point named as the results table names it ----------------------------------
 @pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning", "fringe"])
 def test_deciding_point_is_named_as_in_the_results_table(key):
-    settings = {"samples_per_period": 64} if key == "fringe" else None
+    settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else None
     kind, result = _sample(key, settings)
     tolerance = 1000.0 if key != "polygon" else None
     meta = replace(META, decision_quantity="points", tolerance_arcsec=tolerance)
@@ -208,3 +222,62 @@ def test_the_certificate_defines_alpha_and_beta():
                   "elevation of the mirror normal above the horizontal",
                   "positive below the horizontal", "α + 180° and −β"):
         assert words in statements
+
+
+# 1. the fringe certificate's traceability ----------------------------------------------------
+def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
+    kind, result = _sample("fringe", {"samples_per_period": 64})
+    meta = replace(META, tolerance_arcsec=0.5, standards=(
+        replace(META.standards[0], description="Data acquisition (16-bit ADC)",
+                uncertainty_arcsec=None),))
+    document = kind.certificate_document(result, meta)
+    assert document.conformity.verdict == "not assessed"
+    assert "not traceable" in document.conformity.statement
+    flat = _flat(document)
+    assert "traceable to the SI unit" not in flat
+    assert "Metrological traceability: not established for these results" in flat
+    assert "the phase reference (the sampling's uniformity (the timing of the samples)) has no " \
+           "stated uncertainty" in flat
+    assert "the ADC's quantisation, offset, gain, linearity have no stated uncertainty" in flat
+    assert "Data acquisition (16-bit ADC): no uncertainty stated" in flat
+
+
+def test_fringe_stated_inputs_enter_the_budget_by_hand():
+    """Per sample: the phase reference u·P/360; an offset u_o of either channel moves the
+    phase by u_o/R (rad), a gain ratio u_g by |S C|/R² u_g, the LSB q by q/√12/R, a
+    linearity limit a by a/√3/R; R from the measured signals about their mean."""
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    document = kind.certificate_document(result, replace(META, tolerance_arcsec=0.5, standards=(
+        replace(META.standards[0], description="Data acquisition (16-bit ADC)",
+                uncertainty_arcsec=0.005, basis="U95"),)))
+    assert not document.untraceable and document.conformity.verdict != "not assessed"
+    budget = document.budget
+    names = [c.name for c in budget.components]
+    u = {name: budget.components[names.index(name)].standard_uncertainty(budget.points)
+         for name in ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
+                      "ADC linearity")}
+    period = 1296000.0 / 16384  # "
+    to_unit = period / (2 * math.pi)
+    s = result.u_sin - result.u_sin.mean()
+    c = result.u_cos - result.u_cos.mean()
+    r = np.hypot(s, c)
+    assert u["Phase reference"] == pytest.approx(0.01 / 360 * period)  # 0.0022"
+    np.testing.assert_allclose(u["ADC offset"], 0.5e-3 / r * to_unit, rtol=0.02)
+    np.testing.assert_allclose(u["ADC quantisation"], 0.3e-3 / math.sqrt(12) / r * to_unit,
+                               rtol=0.02)
+    np.testing.assert_allclose(u["ADC linearity"], 0.6e-3 / math.sqrt(3) / r * to_unit,
+                               rtol=0.02)
+    gain = np.abs(s * c) / r**2 * 2e-4 * to_unit  # peak 2e-4/2 · to_unit = 1.26e-3"
+    assert float(np.max(gain)) == pytest.approx(1e-4 * to_unit, rel=0.03)
+    np.testing.assert_allclose(u["ADC gain ratio"], gain, atol=0.05 * float(np.max(gain)))
+    flat = _flat(document)
+    assert "traceable to the SI unit of plane angle" in flat
+
+
+def test_fringe_prints_every_sample_and_its_extreme():
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    document = kind.certificate_document(result, META)
+    rows = document.results.rows
+    assert len(rows) == result.raw_error.size == 512
+    lowest = int(np.argmin(result.raw_error))
+    assert rows[lowest][0] == f"{lowest + 1}" and rows[lowest][2] == f"{result.raw_error[lowest]:+.3f}"

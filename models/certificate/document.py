@@ -69,6 +69,8 @@ class CertificateDocument:
     settings: tuple[tuple[str, str], ...] = ()  # (label, value) of the analysis' settings
     standard: str = ""  # the standard the evaluation follows (empty: a published method)
     sign_convention: str = SIGN_CONVENTION_TEXT  # how the certificate's deviations are signed
+    # inputs of the result with no stated uncertainty: not traceable through them (said so)
+    untraceable: tuple[str, ...] = ()
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:
