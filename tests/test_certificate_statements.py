@@ -33,6 +33,11 @@ META = CertificateMetadata.from_dict({
                    "uncertainty_arcsec": 0.1}]})
 
 
+#: the fringe inputs the signals cannot show (a 16-bit ADC over ±10 V, its calibration)
+FRINGE_INPUTS = {"phase_reference_u": 0.01, "adc_lsb_mv": 0.3, "adc_offset_u_mv": 0.5,
+                 "adc_gain_u_pct": 0.02, "adc_linearity_mv": 0.6}
+
+
 def _flat(document) -> str:
     reader = PdfReader(io.BytesIO(certificate_pdf_bytes(document)))
     return re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in reader.pages))
@@ -66,7 +71,7 @@ def test_coverage_factor_follows_the_effective_degrees_of_freedom():
 
 # 4. fringe conformity on the as-found error -----------------------------------------------
 def test_fringe_conformity_is_on_the_error_as_found():
-    kind, result = _sample("fringe", {"samples_per_period": 64})
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
     meta = replace(META, tolerance_arcsec=0.5, decision_quantity="points")
     document = kind.certificate_document(result, meta)
     assert document.conformity.value_arcsec > 0.4  # the as-found error, not the compensated 0.02"
@@ -87,7 +92,7 @@ def test_fringe_as_left_only_with_the_loaded_tables_checksum():
 # 5. the statements ------------------------------------------------------------------------
 @pytest.mark.parametrize("key", sorted(KINDS))
 def test_17025_statements_on_every_certificate(key):
-    settings = {"samples_per_period": 64} if key == "fringe" else {}
+    settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else {}
     kind, result = _sample(key, settings)
     meta = replace(META, tolerance_arcsec=None if key == "polygon" else 2.0)
     flat = _flat(kind.certificate_document(result, meta))

@@ -147,7 +147,7 @@ def test_decision_rules_on_every_point(x, rule, verdict):
     assert c.verdict == verdict
     assert "ILAC-G8:09/2019, 4.2." in c.rule
     assert c.value_arcsec == pytest.approx(x) and c.expanded_arcsec == pytest.approx(0.3)
-    assert "number 2" in c.statement
+    assert "the deciding point is point 2:" in c.statement
 
 
 def test_guarded_rule_prints_the_four_zones_of_4_2_3():

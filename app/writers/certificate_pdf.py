@@ -647,19 +647,39 @@ def _listed(names) -> str:
 
 
 def _traceability(document: CertificateDocument) -> str:
-    listed = [s for s in document.metadata.standards if s.certificate_no]
-    if not listed:
-        return message(QT_TR_NOOP("Metrological traceability: not established on this document "
-                                  "— no reference standard with a calibration certificate is "
-                                  "listed."))
+    """What the results are traceable through, and plainly what they are not: a standard
+    with no stated uncertainty is no input of the budget, and an input of the result with
+    none (document.untraceable) leaves the result untraceable, with no conformity on it."""
+    standards = document.metadata.standards
+    listed = [s for s in standards if s.certificate_no and s.uncertainty_arcsec is not None]
     names = joined(_between("; ", (
         message(QT_TR_NOOP("{standard} (certificate {certificate})"),
                 standard=s.description or message(QT_TR_NOOP("standard")),
                 certificate=s.certificate_no) for s in listed)))
-    return message(QT_TR_NOOP("Metrological traceability: the results are traceable to the SI "
-                              "unit of plane angle through the reference standards listed, "
-                              "calibrated as stated in their certificates: {names}."),
-                   names=names)
+    if document.untraceable:
+        parts = [message(QT_TR_NOOP("Metrological traceability: not established for these "
+                                    "results — {what}; no statement of conformity rests on "
+                                    "them."),
+                         what=joined(_between("; ", document.untraceable)))]
+        if listed:
+            parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
+                                              "stated uncertainty: {names}."), names=names)]
+    elif not listed:
+        parts = [message(QT_TR_NOOP("Metrological traceability: not established on this "
+                                    "document — no reference standard with a calibration "
+                                    "certificate and a stated uncertainty is listed."))]
+    else:
+        parts = [message(QT_TR_NOOP("Metrological traceability: the results are traceable to "
+                                    "the SI unit of plane angle through the reference standards "
+                                    "listed, calibrated as stated in their certificates: "
+                                    "{names}."), names=names)]
+    for s in standards:
+        if s.uncertainty_arcsec is None:
+            parts += [" ", message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
+                                              "input of the budget and the results are not "
+                                              "traceable through it."),
+                                   standard=s.description or message(QT_TR_NOOP("standard")))]
+    return joined(parts)
 
 
 def _identity(document: CertificateDocument, created: dt.datetime) -> str:

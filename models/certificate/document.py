@@ -23,7 +23,12 @@ from models.uncertainty.budget import (
     UncertaintyBudget,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import Conformity, significant_decimals, uncertainty_decimals
+from models.uncertainty.conformity import (
+    Conformity,
+    asymmetric_text,
+    significant_decimals,
+    uncertainty_decimals,
+)
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "reference_standard_components",
@@ -64,6 +69,8 @@ class CertificateDocument:
     settings: tuple[tuple[str, str], ...] = ()  # (label, value) of the analysis' settings
     standard: str = ""  # the standard the evaluation follows (empty: a published method)
     sign_convention: str = SIGN_CONVENTION_TEXT  # how the certificate's deviations are signed
+    # inputs of the result with no stated uncertainty: not traceable through them (said so)
+    untraceable: tuple[str, ...] = ()
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:
@@ -101,8 +108,8 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
                      f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
                      f"{100 * r['share']:.1f}", dof))
     i = budget.worst_index
-    nu = budget.effective_dof()
-    nu_text = _dof_text(nu)
+    nu_text = _dof_text(budget.truncated_dof())
+    raw = budget.effective_dof()
     uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
     rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
@@ -110,9 +117,13 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     rows.append((message(QT_TR_NOOP("Expanded U (k = {k})"), k=f"{k:.2f}"), "", "", "", "", "",
                  "", _fmt(k * uc), "", ""))
     note = message(QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
-                              "Student's t for ν_eff = {nu} (Welch–Satterthwaite) and a coverage "
-                              "probability of {p} %; each point's U uses its own ν_eff."),
-                   point=point, k=f"{k:.2f}", nu=nu_text, p=f"{100 * budget.probability:.2f}")
+                              "Student's t for ν = {nu}, the effective degrees of freedom "
+                              "(Welch–Satterthwaite: {raw}) truncated to the lower integer "
+                              "(GUM G.6.4), and a coverage probability of {p} %; each point's U "
+                              "uses its own ν."),
+                   point=point, k=f"{k:.2f}", nu=nu_text,
+                   raw=f"{raw:.2f}" if math.isfinite(raw) and raw < 1e4 else _dof_text(raw),
+                   p=f"{100 * budget.probability:.2f}")
     u = unit.strip()
     return Table(QT_TR_NOOP("Uncertainty budget"), (
         QT_TR_NOOP("Input"), QT_TR_NOOP("Type"), QT_TR_NOOP("Distribution"),
@@ -167,8 +178,14 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     digits = uncertainty_decimals(big_u)
     rows = []
     if math.isfinite(conformity.value_arcsec):
-        rows.append((QT_TR_NOOP("Decided quantity"), format_uncertain(
-            conformity.value_arcsec, conformity.expanded_arcsec, unit), conformity.quantity))
+        lower = conformity.expanded_lower
+        if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
+            d = significant_decimals(min(lower, conformity.expanded_arcsec)) or digits
+            value = (f"{conformity.value_arcsec:.{d}f}{unit} "
+                     f"{asymmetric_text(lower, conformity.expanded_arcsec, unit, d)}")
+        else:
+            value = format_uncertain(conformity.value_arcsec, conformity.expanded_arcsec, unit)
+        rows.append((QT_TR_NOOP("Decided quantity"), value, conformity.quantity))
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
                  f"{big_u:.{digits}f}{unit}",

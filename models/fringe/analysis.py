@@ -75,7 +75,34 @@ PARAMETERS = (
               choices=(("mean", "its mean is zero"), ("phase0", "zero at phase 0")),
               help="The phase origin is arbitrary: the table is stated with its mean removed, or "
                    "with its first entry zero (said in the exported file)"),
+    # the inputs of the certificate's budget that the signals cannot show (0: not stated, and
+    # the certificate then says what is not traceable)
+    Parameter("phase_reference_u", "phase reference u", "float", 0.0, "°", 0.0, 90.0,
+              zero="not stated", decimals=4, step=0.01,
+              help="Standard uncertainty of each sample's phase, in degrees of a signal period: "
+                   "with N equal steps the sampling's uniformity (the timing of the samples), "
+                   "with a θ column its reference's stated U / k, with an estimated phase the "
+                   "method's validated limit. 0: not stated"),
+    Parameter("adc_lsb_mv", "ADC LSB", "float", 0.0, "mV", 0.0, 10_000.0, zero="not stated",
+              decimals=4, step=0.01,
+              help="The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),
+    Parameter("adc_offset_u_mv", "ADC offset u", "float", 0.0, "mV", 0.0, 10_000.0,
+              zero="not stated", decimals=4, step=0.01,
+              help="Standard uncertainty of each channel's ADC offset, from its calibration. "
+                   "0: not stated"),
+    Parameter("adc_gain_u_pct", "ADC gain ratio u", "float", 0.0, "%", 0.0, 100.0,
+              zero="not stated", decimals=4, step=0.01,
+              help="Standard uncertainty of the ratio of the two channels' ADC gains (a gain "
+                   "common to both does not move the phase). 0: not stated"),
+    Parameter("adc_linearity_mv", "ADC linearity ±", "float", 0.0, "mV", 0.0, 10_000.0,
+              zero="not stated", decimals=4, step=0.01,
+              help="The ADC's integral nonlinearity limit ±a per channel (rectangular). "
+                   "0: not stated"),
 )
+
+#: the settings that are inputs of the certificate's budget (FringeResult.inputs)
+BUDGET_INPUTS = ("phase_reference_u", "adc_lsb_mv", "adc_offset_u_mv", "adc_gain_u_pct",
+                 "adc_linearity_mv")
 
 PHASE_SOURCES = ("samples_per_period", "theta_column", "estimated")
 #: Channel voltages beyond this are not a read head's signals.
@@ -304,6 +331,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings,
+        inputs={key: float(s[key]) for key in BUDGET_INPUTS},
     )
 
 

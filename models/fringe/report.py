@@ -35,8 +35,8 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import plots as fringe_plots
 from models.fringe.model import model_signal, model_signal_std
-from models.messages import QT_TR_NOOP, message
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.messages import QT_TR_NOOP, joined, message
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["fringe_budget", "fringe_certificate"]
@@ -64,6 +64,83 @@ def _phase_sensitivities(result) -> tuple[np.ndarray, np.ndarray]:
     return c / r2, s / r2  # |∂φ/∂u_s|, |∂φ/∂u_c| (rad/V)
 
 
+#: what the phase reference is, by where the phase came from
+PHASE_REFERENCE = {
+    "samples_per_period": QT_TR_NOOP("the sampling's uniformity (the timing of the samples)"),
+    "theta_column": QT_TR_NOOP("the θ reference's stated U"),
+    "estimated": QT_TR_NOOP("the phase estimation's validated limit"),
+}
+
+
+def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> list[BudgetComponent]:
+    """The phase reference and the ADC, as the settings state them (0: not stated, not here).
+
+    Per sample, with S, C the modelled signals and R² = S² + C²: a phase error δθ of the
+    reference enters with sensitivity 1; a voltage error δ of one channel moves the phase by
+    C δ / R² (sin) or S δ / R² (cos); a gain ratio g of the channels by S C g / R².
+    """
+    inputs = result.inputs or {}
+    out = []
+    u_phase = inputs.get("phase_reference_u", 0.0)
+    if u_phase:
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Phase reference"), "B", "normal", u_phase / 360.0 * result.period_length,
+            1.0, 1.0, math.inf,
+            message(QT_TR_NOOP("{what}: u = {u}° of a period (stated)"),
+                    what=message(PHASE_REFERENCE[result.phase_source]), u=f"{u_phase:g}")))
+    both = np.hypot(ds, dc) * to_unit  # the phase per volt of an error in either channel
+    lsb = inputs.get("adc_lsb_mv", 0.0)
+    if lsb:
+        out.append(BudgetComponent(
+            QT_TR_NOOP("ADC quantisation"), "B", "rectangular", both * lsb * 1e-3 / 2.0,
+            math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("LSB {lsb} mV: LSB/√12 in each channel (also in the residuals' "
+                               "scatter: counted twice, on the safe side)"), lsb=f"{lsb:g}")))
+    offset = inputs.get("adc_offset_u_mv", 0.0)
+    if offset:
+        out.append(BudgetComponent(
+            QT_TR_NOOP("ADC offset"), "B", "normal", both * offset * 1e-3, 1.0, 1.0, math.inf,
+            message(QT_TR_NOOP("u = {u} mV in each channel (stated); taken as the ADC's, not "
+                               "the read head's"), u=f"{offset:g}")))
+    gain = inputs.get("adc_gain_u_pct", 0.0)
+    if gain:
+        s = model_signal(result.theta_rad, result.sin_fit)
+        c = model_signal(result.theta_rad, result.cos_fit)
+        out.append(BudgetComponent(
+            QT_TR_NOOP("ADC gain ratio"), "B", "normal",
+            np.abs(s * c) / (s**2 + c**2) * gain / 100.0 * to_unit, 1.0, 1.0, math.inf,
+            message(QT_TR_NOOP("u = {u} % of the ratio of the channels' gains (stated)"),
+                    u=f"{gain:g}")))
+    linearity = inputs.get("adc_linearity_mv", 0.0)
+    if linearity:
+        out.append(BudgetComponent(
+            QT_TR_NOOP("ADC linearity"), "B", "rectangular", both * linearity * 1e-3,
+            math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("integral nonlinearity ±{a} mV in each channel (stated)"),
+                    a=f"{linearity:g}")))
+    return out
+
+
+def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
+    """The inputs of the error that have no stated uncertainty: the result is not traceable
+    through them, and no statement of conformity rests on it."""
+    inputs = result.inputs or {}
+    out = []
+    theta_standard = result.phase_source == "theta_column" and any(
+        s.uncertainty_arcsec is not None for s in metadata.standards)
+    if not inputs.get("phase_reference_u") and not theta_standard:
+        out.append(message(QT_TR_NOOP("the phase reference ({what}) has no stated uncertainty"),
+                           what=message(PHASE_REFERENCE[result.phase_source])))
+    adc = {"adc_lsb_mv": QT_TR_NOOP("quantisation"), "adc_offset_u_mv": QT_TR_NOOP("offset"),
+           "adc_gain_u_pct": QT_TR_NOOP("gain"), "adc_linearity_mv": QT_TR_NOOP("linearity")}
+    missing = [name for key, name in adc.items() if not inputs.get(key)]
+    if missing:
+        out.append(message(QT_TR_NOOP("the ADC's {figures} have no stated uncertainty"),
+                           figures=joined(part for i, name in enumerate(missing)
+                                          for part in ((", " if i else ""), message(name)))))
+    return out
+
+
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False) -> UncertaintyBudget:
     """The budget of the compensated error, or of the as-found error (no model input)."""
     n = result.theta_rad.size
@@ -78,6 +155,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
     components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"))
+    components += _stated_inputs(result, ds, dc, to_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
         message(QT_TR_NOOP("σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, "
@@ -91,19 +169,48 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
 
 
-def _parameter_rows(result) -> list[tuple[str, str, str]]:
+class _SampleNames:
+    """"sample i" for every sample, as the results table numbers them (made on demand: a
+    record may have millions)."""
+
+    def __getitem__(self, i: int) -> str:
+        return message(QT_TR_NOOP("sample {sample}"), sample=int(i) + 1)
+
+
+def parameter_coverage(result, probability: float) -> tuple[float, int]:
+    """(k, ν) of the fitted signal parameters: Student's t for the fit's n − p."""
+    nu = max(result.theta_rad.size - (1 + 2 * len(result.sin_fit.orders)), 1)
+    return coverage_factor(nu, probability), nu
+
+
+def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         rows.append((message(QT_TR_NOOP("{channel}: offset A₀"), channel=label),
-                     f"{fit.offset:+.5f} V", f"{2 * fit.u_offset:.5f} V"))
-        for k in fit.orders:
-            ua = fit.u_amplitude.get(k, float("nan"))
-            up = fit.u_phase.get(k, float("nan"))
-            rows.append((f"{label}: A{k}", f"{fit.amplitude[k]:.5f} V", f"{2 * ua:.5f} V"))
-            rows.append((f"{label}: c{k}", f"{fit.phase[k]:+.5f} rad", f"{2 * up:.5f} rad"))
+                     f"{fit.offset:+.5f} V", f"{k * fit.u_offset:.5f} V"))
+        for h in fit.orders:
+            ua = fit.u_amplitude.get(h, float("nan"))
+            up = fit.u_phase.get(h, float("nan"))
+            rows.append((f"{label}: A{h}", f"{fit.amplitude[h]:.5f} V", f"{k * ua:.5f} V"))
+            rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
         rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
                      f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
     return rows
+
+
+#: a record of up to this many samples is printed whole on the certificate
+MAX_PRINTED_SAMPLES = 1024
+
+
+def printed_samples(raw: np.ndarray, comp: np.ndarray, big_u: np.ndarray, per: int) -> np.ndarray:
+    """The samples the certificate's table prints (indices): every one of a record of up to
+    MAX_PRINTED_SAMPLES; of a longer one the first period (at most 64 of it) and the samples
+    where each error has its extremes and U its largest value."""
+    if raw.size <= MAX_PRINTED_SAMPLES:
+        return np.arange(raw.size)
+    extremes = [int(np.argmin(raw)), int(np.argmax(raw)), int(np.argmin(comp)),
+                int(np.argmax(comp)), int(np.argmax(big_u))]
+    return np.unique(np.concatenate([np.arange(0, per, max(1, per // 64)), extremes]))
 
 
 def fringe_certificate(result, metadata: CertificateMetadata, source_name: str = "",
@@ -123,24 +230,28 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
     period, sym, unit = result.period_length, result.unit_symbol, result.unit
+    k_fit, nu_fit = parameter_coverage(result, budget.probability)
     parameters = Table(QT_TR_NOOP("Signal parameters identified"),
-                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), "U (k = 2)"),
-                       _parameter_rows(result))
+                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+                        f"U (k = {k_fit:.2f}, ν = {nu_fit})"),
+                       _parameter_rows(result, k_fit))
     per = min(result.samples_per_period or 64, raw.size)
-    step = max(1, per // 64)
-    idx = np.arange(0, per, step)
+    idx = printed_samples(raw, comp, big_u, per)
     phase_deg = np.degrees(result.theta_rad[idx])
     numeric = list(zip(idx + 1, phase_deg, raw[idx], correction[idx], comp[idx], big_u[idx],
                        strict=True))
     rows = [(f"{int(i)}", f"{p:.2f}", f"{r:+.3f}", f"{c:+.3f}", f"{e:+.3f}", f"{u:.3f}")
             for i, p, r, c, e, u in numeric]
-    note = message(QT_TR_NOOP("The first {per} samples are shown (every {step}-th); all {n} "
-                              "samples are in the CSV/XLSX results export.") if step > 1 else
-                   QT_TR_NOOP("The first {per} samples are shown; all {n} samples are in the "
-                              "CSV/XLSX results export."), per=per, step=step, n=raw.size)
+    if idx.size == raw.size:
+        note = message(QT_TR_NOOP("All {n} samples are shown; they are also in the CSV/XLSX "
+                                  "results export."), n=raw.size)
+    else:
+        note = message(QT_TR_NOOP("The first {per} samples are shown (every {step}-th), and "
+                                  "the samples with the extremes of each error and the largest "
+                                  "U; all {n} samples are in the CSV/XLSX results export."),
+                       per=per, step=max(1, per // 64), n=raw.size)
     u_unit = sym.strip()
-    results = Table(QT_TR_NOOP("Results per sample (first period; compensated = raw + "
-                               "correction)"),
+    results = Table(QT_TR_NOOP("Results per sample (compensated = raw + correction)"),
                     (QT_TR_NOOP("Sample"), QT_TR_NOOP("Phase θ (°)"),
                      message(QT_TR_NOOP("As found ({unit})"), unit=u_unit),
                      message(QT_TR_NOOP("Correction ({unit})"), unit=u_unit),
@@ -174,9 +285,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                  quadrature=f"{result.quadrature_error_deg:+.3f}°")),
     ]
     tol = metadata.tolerance_arcsec
+    untraceable = untraceable_inputs(result, metadata)
+    withheld = "" if not untraceable or tol is None else message(
+        QT_TR_NOOP("the error is not traceable: {what}"),
+        what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
     conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
-                                   metadata.decision_quantity,
-                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym)
+                                   metadata.decision_quantity, withheld,
+                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym,
+                                   point_names=_SampleNames())
     stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
     stat_rows.append((QT_TR_NOOP("Correction table"),
                       message(QT_TR_NOOP("{n} entries"), n=result.table.size),
@@ -205,7 +321,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         "fringe", QT_TR_NOOP("Fringe signal analysis"), metadata, source_name, METHOD,
         method_reference, parameters, results, statistics, budget,
         message(QT_TR_NOOP("sample {sample}"), sample=worst + 1), conformity, tol, plots,
-        tuple(result.warnings), unit=sym, statements=(table_statement,) + (
+        tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
+        statements=(table_statement,) + (
             (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),

@@ -39,6 +39,8 @@ class FringeResult:
     reversals: int = 0
     pso_seconds: float | None = None
     warnings: list[str] = field(default_factory=list)
+    # the budget's inputs the signals cannot show, as set (analysis.BUDGET_INPUTS; 0: not stated)
+    inputs: dict[str, float] = field(default_factory=dict)
 
     @property
     def unit_symbol(self) -> str:

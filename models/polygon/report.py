@@ -47,7 +47,7 @@ from models.polygon.model import (
     pyramidal_correction_arcsec,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec"]
@@ -131,11 +131,13 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
     return [
         BudgetComponent(message(name, sets=len(result.sets)),
                         evaluation, "normal", noise / math.sqrt(m_eff), 1.0, mean_sensitivity, dof,
-                        message(QT_TR_NOOP("{note}, divided by √{m}"), note=note, m=f"{m_eff:g}")),
+                        message(QT_TR_NOOP("{note}, divided by √{m}"), note=note, m=f"{m_eff:g}"),
+                        dof_group="repeatability"),
         BudgetComponent(message(QT_TR_NOOP("Zero reading (face {face}, set 1)"),
                                 face=result.zero_face), evaluation, "normal", noise,
                         1.0, not_zero, dof, QT_TR_NOOP("one reading shared by every set: not "
-                                                       "reduced"), common=True),
+                                                       "reduced"), common=True,
+                        dof_group="repeatability"),
     ], noise
 
 
@@ -241,6 +243,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                   "{tilt} (worst case over the tilt direction; the seed's ω = 90° figure: "
                   "{seed})"), tilt=f"{result.allowed_tilt_arcsec:.0f}\"",
                   seed=f"{result.allowed_tilt_seed_arcsec:.0f}\""), "")]
+    nu_tilt = max(result.faces - 3, 1)  # each set's tilt fit: n faces, three parameters
+    k_tilt = coverage_factor(nu_tilt, budget.probability)
     for i, s in enumerate(result.sets, 1):
         closure = QT_TR_NOOP("not measured") if s.closure_drift_arcsec is None else message(
             QT_TR_NOOP("drift {drift} (within the limit)") if s.closure_ok else
@@ -252,11 +256,13 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                                set=i, face=s.start_face), closure, ""))
         if s.tilt is not None:
             rows_p.append((message(QT_TR_NOOP("Set {set} pyramidal tilt ψ"), set=i),
-                           f"{s.tilt.psi_arcsec:.1f}\"", f"{2 * s.tilt.u_psi_arcsec:.2f}\""))
+                           f"{s.tilt.psi_arcsec:.1f}\"", f"{k_tilt * s.tilt.u_psi_arcsec:.2f}\""))
             rows_p.append((message(QT_TR_NOOP("Set {set} tilt direction ω"), set=i),
-                           f"{s.tilt.omega_deg:.1f}°", f"{2 * s.tilt.u_omega_deg:.2f}°"))
+                           f"{s.tilt.omega_deg:.1f}°", f"{k_tilt * s.tilt.u_omega_deg:.2f}°"))
     parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
-                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), "U (k = 2)"), rows_p)
+                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
+                        f"U (k = {k_tilt:.2f}, ν = {nu_tilt})" if any(
+                            s.tilt is not None for s in result.sets) else "U"), rows_p)
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
     numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
                        correction, result.mean_corrected_arcsec, big_u, strict=True))
@@ -300,7 +306,9 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     conformity = decide_conformity(
         result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
         metadata.decision_quantity,
-        "" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")))
+        "" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
+        point_names=[message(QT_TR_NOOP("position {position}"), position=i)
+                     for i in range(1, result.faces + 1)])
     stat_rows[2:2] = decision_rows(conformity, budget, QT_TR_NOOP("positions"))
     statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
                        stat_rows)

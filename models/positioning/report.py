@@ -162,9 +162,14 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                     QT_TR_NOOP("x = actual position − target. U is the expanded uncertainty of "
                                "the mean x̄."))
     curve = np.concatenate([p[1] for p in points])
+    names = [message(QT_TR_NOOP("target {target} ({arrow})"),
+                     target=f"{target:g}{result.target_symbol}",
+                     arrow="↑" if name == "up" else "↓")
+             for name, *_ in points for target in result.positions]
     conformity = decide_conformity(curve, budget, metadata.tolerance_arcsec,
                                    metadata.decision_rule, metadata.decision_quantity,
-                                   what=QT_TR_NOOP("mean positional deviation"), unit=sym)
+                                   what=QT_TR_NOOP("mean positional deviation"), unit=sym,
+                                   point_names=names)
     stat_rows = _figure_rows(result)
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
     statistics = Table(QT_TR_NOOP("Figures of the axis"),
@@ -175,7 +180,6 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     if reversal is not None:
         plots.append(reversal)
     worst = budget.worst_index
-    worst_name = points[worst // m][0]
     statements = [
         message(QT_TR_NOOP("Evaluated to {standard}; the figures of the other standard are given "
                            "beside them from the same readings."), standard=message(standard)),
@@ -195,9 +199,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     return CertificateDocument(
         "positioning", QT_TR_NOOP("Positioning test of an axis"), metadata, source_name, METHOD,
         method_reference, parameters, results, statistics, budget,
-        message(QT_TR_NOOP("target {target} ({arrow})"),
-                target=f"{result.positions[worst % m]:g}{result.target_symbol}",
-                arrow="↑" if worst_name == "up" else "↓"), conformity, metadata.tolerance_arcsec,
+        names[worst], conformity, metadata.tolerance_arcsec,
         tuple(plots), tuple(result.warnings), unit=sym, statements=tuple(statements),
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(

@@ -39,7 +39,9 @@ PARAMETERS = (
               help="Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0"),
     Parameter("vertical_reading", "vertical reading", "choice", "elevation",
               choices=(("elevation", "elevation E"), ("zenith", "zenith angle V (E = V − 90°)")),
-              help="What the theodolite's vertical circle reads"),
+              help="What the theodolite's vertical circle reads; E is the seed's, positive below "
+                   "the horizontal (OZ down): elevations read positive upward give α + 180° and "
+                   "−β, with the same corrected errors"),
     Parameter("method", "identify from", "choice", "elevation",
               choices=(("elevation", "elevations (recommended)"),
                        ("azimuth", "azimuth errors (absorbs axis error!)")),
@@ -51,9 +53,10 @@ PARAMETERS = (
               step=5.0, help="Admissible elevation of the mirror normal"),
     Parameter("accuracy_arcsec", "theodolite accuracy (1σ)", "float", 0.5, "\"", 0.0, 3600.0,
               decimals=2, step=0.1,
-              help="Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when "
-                   "the set-up model explains less than 99 % (R²), the result is refused; "
-                   "0: no check"),
+              help="The theodolite's standard uncertainty of a reading, as its reference standard "
+                   "states it (basis u, the same figure); residuals above 3× it raise a warning; "
+                   "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
+                   "(R²), the result is refused; 0: no check"),
 )
 
 

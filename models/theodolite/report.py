@@ -9,7 +9,13 @@ at the reference point), minus the set-up model ζ(θ):
   reference angle later in the run is a reading like any other);
 * the reading repeatability, estimated (Type A) by the identification's
   residual RMS with n − 3 degrees of freedom, once for the reading itself and
-  once for the reference reading that every point shares. The vertical
+  once for the reference reading that every point shares. These are two
+  readings, so two independent errors (the point's own, and the zeroing one
+  that every point shares: it moves the whole curve), and they stay two
+  inputs so that the Monte Carlo of the decided quantity draws them so; but
+  their s is one estimate, so Welch–Satterthwaite counts them as one input
+  with n − 3 degrees of freedom (``dof_group``), not as two that would double
+  ν. The vertical
   residuals are the only measure of it (the azimuth residuals hold the axis'
   own error, the measurand); an autocollimating theodolite sets on the mirror
   as repeatably in azimuth as in elevation. It measures this set-up's pointing
@@ -37,7 +43,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["theodolite_budget", "theodolite_certificate"]
@@ -56,6 +62,19 @@ METHOD = QT_TR_NOOP(
 )
 
 
+#: what ψ, α and β are (the frame of SPEC §1, the seed's), checked against an independent rig
+#: built in a frame with OZ up (tests/test_certificate_uncertainty.py)
+SETUP_DEFINITIONS = QT_TR_NOOP(
+    "Set-up parameters: azimuths are counted from the theodolite's azimuth zero in the sense its "
+    "horizontal circle reads (clockwise seen from above), and the axis under test turns that way "
+    "for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so "
+    "counted, toward which the axis' upper end leans (its lower end leans toward α + 180°); β is "
+    "the elevation of the mirror normal above the horizontal at the reference reading θ₀, "
+    "positive upward. The vertical readings are taken as the seed's E (OZ plumb down, E = "
+    "asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered "
+    "positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in "
+    "the horizontal plane shows the same azimuths.")
+
 #: how the table names what the set-up was identified from (ident.method)
 _IDENTIFIED_FROM = {"elevation": QT_TR_NOOP("elevation readings"),
                     "azimuth": QT_TR_NOOP("azimuth readings")}
@@ -66,6 +85,14 @@ def _not_reference(result: TheodoliteResult) -> np.ndarray:
     out = np.ones(result.theta_deg.size)
     out[result.reference_index] = 0.0
     return out
+
+
+def _point_names(theta_deg: np.ndarray) -> list[str]:
+    """Each point as the results table shows it: its θ, and its row where θ repeats."""
+    shown = [f"{t:.4f}" for t in theta_deg]
+    return [f"θ = {t}°" if shown.count(t) == 1 else
+            message(QT_TR_NOOP("θ = {theta}° (row {row} of the results)"), theta=t, row=i + 1)
+            for i, t in enumerate(shown)]
 
 
 def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -> UncertaintyBudget:
@@ -80,10 +107,13 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
         QT_TR_NOOP("Reading repeatability"), "A", "normal", noise, 1.0, single, dof,
         message(QT_TR_NOOP("standard deviation of the vertical readings about the fit, {n} "
                            "readings, {dof} degrees of freedom; taken for the azimuth too"),
-                n=n, dof=dof)))
+                n=n, dof=dof), dof_group="repeatability"))
     components.append(BudgetComponent(
         QT_TR_NOOP("Reference reading (θ₀)"), "A", "normal", noise, 1.0, single, dof,
-        QT_TR_NOOP("the zeroing reading, shared by every point"), common=True))
+        QT_TR_NOOP("the zeroing reading, shared by every point: a second reading, independent "
+                   "of the point's own, but the same estimate s, so for ν_eff one input with "
+                   "the repeatability (ν counted once)"), common=True,
+        dof_group="repeatability"))
     components.append(BudgetComponent(
         QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
@@ -98,10 +128,13 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     big_u = budget.expanded_arcsec
     ident = result.identification
     s = ident.setup
-    u2 = 2.0 * ident.uncertainty_deg * 3600.0  # expanded, arcsec
+    # their own ν: the fit's n − 3 (three parameters from n elevations)
+    nu = max(result.theta_deg.size - 3, 1)
+    k = coverage_factor(nu, budget.probability)
+    u2 = k * ident.uncertainty_deg * 3600.0  # expanded, arcsec
     parameters = Table(
         QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
-                                                     "U (k = 2)"),
+                                                     f"U (k = {k:.2f}, ν = {nu})"),
         [(QT_TR_NOOP("Axis tilt ψ"), f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
          (QT_TR_NOOP("Tilt direction α"), f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
          (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
@@ -129,7 +162,8 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     ]
     tol = metadata.tolerance_arcsec
     conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
-                                   metadata.decision_rule, metadata.decision_quantity)
+                                   metadata.decision_rule, metadata.decision_quantity,
+                                   point_names=_point_names(result.theta_deg))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("points"))
     if result.iso230 is not None:
         for k, v in result.iso230.figures.items():
@@ -149,7 +183,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),
                             row=result.reference_index + 1,
-                            theta=f"{result.reference_theta_deg:g}°"),),
+                            theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
          ("expanded_uncertainty_arcsec", big_u)))

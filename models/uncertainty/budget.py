@@ -9,9 +9,17 @@ the curve (for example √2 where an error is the difference of two readings,
 standard uncertainty is the root sum of squares of the contributions, its
 effective degrees of freedom follow Welch–Satterthwaite (GUM G.4.1), and the
 expanded uncertainty uses, at each point, the coverage factor of Student's t
-with those degrees of freedom for the stated coverage probability (GUM G.3,
-G.6.4): 95.45 % by default, so k = 2.00 when ν_eff is large and 2.65 when it
-is 5.
+with those degrees of freedom, truncated to the next lower integer (GUM
+G.4.1 note, G.6.4), for the stated coverage probability (GUM G.3): 95.45 % by
+default, so k = 2.00 when ν_eff is large and 2.65 when it is 5.
+
+Inputs whose standard uncertainties come from one and the same Type A
+estimate (one s, for example the reading repeatability used for the reading
+at a point and again for the shared reference reading) carry the same
+``dof_group``: the readings are independent, so their contributions add in
+quadrature as usual, but their estimates are one estimate, so for
+Welch–Satterthwaite they enter as one input, u² = Σ c_i² u_i², with its ν
+(counting them as independent estimates would double their ν).
 
 All values are in arcseconds.
 """
@@ -91,6 +99,7 @@ class BudgetComponent:
     dof: float
     note: str = ""
     common: bool = False
+    dof_group: str = ""  # inputs evaluated from one estimate: one input for ν_eff
 
     def __post_init__(self) -> None:
         values = np.asarray(self.value_arcsec, dtype=float)
@@ -137,20 +146,36 @@ class UncertaintyBudget:
     @functools.cached_property
     def effective_dofs(self) -> np.ndarray:
         """Welch–Satterthwaite ν_eff = u_c⁴ / Σ (u_i⁴ / ν_i) at every point (∞ where every
-        input is exactly known)."""
+        input is exactly known), inputs of one ``dof_group`` as one input; not truncated."""
         contrib = self.contributions()
         uc4 = np.sum(contrib**2, axis=0) ** 2
-        dofs = np.array([c.dof for c in self.components], dtype=float).reshape(-1, 1)
-        finite = np.isfinite(dofs) & (dofs > 0)
-        denom = np.sum(np.where(finite, contrib**4 / np.where(finite, dofs, 1.0), 0.0), axis=0)
+        variances: dict[object, np.ndarray] = {}
+        dofs: dict[object, float] = {}
+        for i, (comp, c) in enumerate(zip(self.components, contrib, strict=True)):
+            key = comp.dof_group or i
+            variances[key] = variances.get(key, 0.0) + c**2
+            dofs[key] = min(dofs.get(key, math.inf), comp.dof)
+        denom = np.zeros(self.points)
+        for key, var in variances.items():
+            nu = dofs[key]
+            if math.isfinite(nu) and nu > 0:
+                denom = denom + var**2 / nu
         with np.errstate(divide="ignore", invalid="ignore"):
             nu = np.where((denom > 0) & (uc4 > 0), uc4 / np.where(denom > 0, denom, 1.0), np.inf)
         return nu
 
     @functools.cached_property
+    def truncated_dofs(self) -> np.ndarray:
+        """ν_eff truncated to the next lower integer (GUM G.6.4): what k is taken for."""
+        nu = self.effective_dofs
+        finite = np.isfinite(nu)
+        # a ν_eff that is an integer but for rounding (8.9999999) is that integer
+        return np.where(finite, np.floor(np.where(finite, nu, 0.0) + 1e-9), np.inf)
+
+    @functools.cached_property
     def coverage_factors(self) -> np.ndarray:
-        """k at every point for the stated coverage probability."""
-        nu = np.where(np.isfinite(self.effective_dofs), np.round(self.effective_dofs, 6), np.inf)
+        """k at every point for the stated coverage probability, from the truncated ν_eff."""
+        nu = self.truncated_dofs
         unique, inverse = np.unique(nu, return_inverse=True)
         ks = np.array([coverage_factor(float(v), self.probability) for v in unique])
         return ks[inverse].reshape(-1) if self.points else np.zeros(0)
@@ -175,10 +200,16 @@ class UncertaintyBudget:
         return float(np.max(self.expanded_arcsec)) if self.points else float("nan")
 
     def effective_dof(self, index: int | None = None) -> float:
-        """ν_eff at one point (default the worst)."""
+        """ν_eff at one point (default the worst), before truncation."""
         if not self.points:
             return float("inf")
         return float(self.effective_dofs[self.worst_index if index is None else index])
+
+    def truncated_dof(self, index: int | None = None) -> float:
+        """The integer ν that k is taken for at one point (default the worst)."""
+        if not self.points:
+            return float("inf")
+        return float(self.truncated_dofs[self.worst_index if index is None else index])
 
     def table(self, index: int | None = None) -> list[dict[str, object]]:
         """Rows of the budget at one point (default the worst): name, type, distribution,

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = [
@@ -39,6 +39,7 @@ __all__ = [
     "DECISION_RULES",
     "Conformity",
     "HalfRangeEstimate",
+    "asymmetric_text",
     "decide_conformity",
     "half_range_monte_carlo",
     "significant_decimals",
@@ -223,6 +224,7 @@ class Conformity:
     expanded_arcsec: float = float("nan")
     zones: str = ""
     monte_carlo: HalfRangeEstimate | None = None
+    expanded_lower: float = float("nan")  # an asymmetric interval's lower half-width (else U)
 
     @property
     def conforms(self) -> bool | None:
@@ -269,14 +271,24 @@ _SENTENCE = {
 }
 
 
+def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
+    """The statement when U ≥ T: no result could be shown to conform (ILAC-G8)."""
+    return message(QT_TR_NOOP("No statement of conformity is possible: the expanded uncertainty "
+                              "U = {u} is not smaller than the tolerance T = {t}, so no result "
+                              "could be shown to lie within it."), u=f"{w:.{d}f}{q}",
+                   t=f"{t:g}{q}")
+
+
 def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec: float | None,
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
-                      unit: str = "\"") -> Conformity:
+                      unit: str = "\"", point_names=None) -> Conformity:
     """The verdict on an error curve against ±``tolerance_arcsec`` (in ``unit``, the
     errors' own: arcsec, or nm for an interferometer).
 
-    ``invalid_reason`` (for example a failed closure) withholds the statement.
+    ``invalid_reason`` (for example a failed closure) withholds the statement, and so
+    does U ≥ T. ``point_names`` name the points as the results table does (the deciding
+    point is named so).
     """
     q = unit
     what = message(what) if not hasattr(what, "template") else what
@@ -302,24 +314,40 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
         x, w = abs(float(e[worst])), float(u[worst])
         d = uncertainty_decimals(w)
         verdict = verdicts[worst]
+        point = (point_names[worst] if point_names is not None else
+                 message(QT_TR_NOOP("point {n}"), n=worst + 1))
+        quantity_text = message(DECISION_QUANTITIES["points"])
+        largest = int(np.argmax(u))
+        if float(u[largest]) >= t:
+            w_max = float(u[largest])
+            d = uncertainty_decimals(w_max)
+            name = (point_names[largest] if point_names is not None else
+                    message(QT_TR_NOOP("point {n}"), n=largest + 1))
+            return Conformity("not assessed", joined([_too_uncertain(w_max, t, q, d), " ",
+                                                      message(QT_TR_NOOP("(at {point})"),
+                                                              point=name)]),
+                              rule_text, quantity_text, x, w)
         text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
-                                  "the deciding point is number {point}: |e| = {e}, U = {u}. "
+                                  "the deciding point is {point}: |e| = {e}, U = {u}. "
                                   "{sentence}"),
-                       what=what, t=f"{t:g}{q}", point=worst + 1, e=f"{x:.{d}f}{q}",
+                       what=what, t=f"{t:g}{q}", point=point, e=f"{x:.{d}f}{q}",
                        u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
         zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                         zones=_zones(t, w, rule, d, q))
-        return Conformity(verdict, text, rule_text, message(DECISION_QUANTITIES["points"]), x, w,
-                          zones)
+        return Conformity(verdict, text, rule_text, quantity_text, x, w, zones)
     mc = half_range_monte_carlo(e, budget)
     x, w = mc.value, mc.u_upper
-    d = uncertainty_decimals(w)
+    d = uncertainty_decimals(min(mc.u_upper, mc.u_lower))
     verdict = _verdict(x, t, 0.0 if rule == "simple" else w, rule)
+    interval = asymmetric_text(mc.u_lower, mc.u_upper, q, d)
+    if max(mc.u_upper, mc.u_lower) >= t:
+        verdict = "not assessed"
+        sentence[verdict] = _too_uncertain(max(mc.u_upper, mc.u_lower), t, q, d)
     text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} (measured {measured}, less "
                               "{bias} that the noise adds to a range), U = {u} (coverage "
                               "probability {p} %). {sentence}"),
                    what=what, value=f"{x:.{d}f}{q}", measured=f"{mc.measured:.{d}f}{q}",
-                   bias=f"{mc.bias:.{d}f}{q}", u=f"{w:.{d}f}{q}",
+                   bias=f"{mc.bias:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
                                         "{stride}-th of the {points} points"),
@@ -329,4 +357,13 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
                      message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}"),
                              quantity=message(DECISION_QUANTITIES["half_range"]),
                              trials=mc.trials, seed=mc.seed))
-    return Conformity(verdict, text, rule_text, quantity_text, x, w, _zones(t, w, rule, d, q), mc)
+    return Conformity(verdict, text, rule_text, quantity_text, x, w,
+                      "" if verdict == "not assessed" else _zones(t, w, rule, d, q), mc,
+                      mc.u_lower)
+
+
+def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:
+    """An interval's half-widths: "±U" when they agree to the digits shown, else "−a/+b"."""
+    if f"{lower:.{d}f}" == f"{upper:.{d}f}":
+        return f"±{upper:.{d}f}{q}"
+    return f"−{lower:.{d}f}{q}/+{upper:.{d}f}{q}"
