@@ -285,14 +285,30 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
 
 def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     """Issue through the register (the number allocated there unless the details give one);
-    None after saying why it was refused."""
-    from app.certificate_issue import IssuedNotWritten, issue_certificate
-    from models.register.location import register_url
-    from models.register.store import Register, RegisterError
+    None after saying why it was refused. The bundled example details (``"example": true``)
+    are issued into a register of their own, deleted afterwards: never the user's."""
+    from models.register.location import register_url, url_for_path
 
     words = translator(args.language)
+    if not metadata.example:
+        return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
+    import tempfile
+
+    _say(rendered(message(QT_TR_NOOP(
+        "anglebench analyze: these are the bundled example details (\"example\": true): the "
+        "certificate is issued in a register of its own, deleted afterwards; your register is "
+        "not touched")), words))
+    with tempfile.TemporaryDirectory(prefix="anglebench-example-") as own:
+        return _issue_into(url_for_path(Path(own) / "example-register.sqlite"), args, kind,
+                           result, metadata, settings, rows, words)
+
+
+def _issue_into(url, args, kind, result, metadata, settings, rows, words):
+    from app.certificate_issue import IssuedNotWritten, issue_certificate
+    from models.register.store import Register, RegisterError
+
     try:
-        with Register(register_url()) as register:
+        with Register(url) as register:
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
                                        Path(args.file).name, args.certificate)

@@ -1,6 +1,7 @@
 """Entry point of the ``anglebench`` command.
 
     anglebench [PROJECT]            open the window (optionally on a project file)
+    anglebench --version            the version and the source's commit (or digest)
     anglebench --samples            open the window on the bundled samples
     anglebench --screenshot DIR     write DIR/<workbench>.png for every workbench, then exit
     anglebench analyze KIND FILE …  analyse a CSV without a window (see app.cli)
@@ -21,6 +22,11 @@ tune_process()  # before numpy is imported: one BLAS thread, freed arrays kept f
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
+    if argv[:1] == ["--version"]:
+        from models.software import software_identity
+
+        print(software_identity().line())  # noqa: T201 - the command's output
+        return 0
     if argv and argv[0] == "analyze":
         from app.cli import run_analyze  # no Qt import on this path
 
@@ -42,6 +48,9 @@ def main(argv: list[str] | None = None) -> int:
             epilog=words(QT_TR_NOOP("Commands without a window: anglebench analyze KIND FILE, "
                                     "anglebench validate, anglebench register; each has --help.")))
         parser.add_argument("project", nargs="?", help=words(QT_TR_NOOP("project file to open")))
+        parser.add_argument("--version", action="store_true", help=words(QT_TR_NOOP(
+            "print the version and the source's commit (or, installed without git, the "
+            "digest of its source files), then exit")))
         parser.add_argument("--samples", action="store_true",
                             help=words(QT_TR_NOOP("load the bundled samples")))
         parser.add_argument("--screenshot", metavar="DIR", help=words(QT_TR_NOOP(
@@ -55,6 +64,11 @@ def main(argv: list[str] | None = None) -> int:
                                 "the language of --screenshot's window and of this help (the "
                                 "window itself follows View › Language)")))
         args = parser.parse_args(argv)
+    if args.version:
+        from models.software import software_identity
+
+        print(software_identity().line())  # noqa: T201 - the command's output
+        return 0
     if args.screenshot:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         from app.screenshot import write_screenshots

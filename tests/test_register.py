@@ -18,7 +18,14 @@ from models.register.store import IssueRequest, Register, RegisterError
 
 META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
                            customer_name="Acme Optics", calibration_date="2026-11-20",
-                           issue_date="2026-11-24", number_scheme="AB-{year}-{seq:04d}")
+                           issue_date="2026-11-24", number_scheme="AB-{year}-{seq:04d}",
+                           approver="Dr. Li")
+ISSUED = dt.datetime(2026, 11, 24, 10, 0, tzinfo=dt.timezone.utc)
+
+
+def on(day: dt.datetime):
+    """The register's clock, stopped at ``day``."""
+    return lambda: day
 PROJECT = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
 
 
@@ -33,6 +40,7 @@ def render(meta: CertificateMetadata) -> bytes:
 @pytest.fixture
 def register(register_url):
     with Register(register_url) as reg:
+        reg.clock = on(ISSUED)
         yield reg
 
 
@@ -46,10 +54,11 @@ def test_numbers_follow_the_scheme_and_are_never_issued_twice(register):
         register.issue(request(META.__class__(**{**META.to_dict(), "standards": (),
                                                 "certificate_number": "AB-2026-0001"})), render)
     typed, _ = register.issue(request(CertificateMetadata(certificate_number="AB-2026-0003",
-                                                          issue_date="2026-11-24")), render)
+                                                          approver="Dr. Li")), render)
     third, _ = register.issue(request(), render)  # the typed number is skipped
     assert typed.number == "AB-2026-0003" and third.number == "AB-2026-0004"
-    next_year = CertificateMetadata(issue_date="2027-01-02")
+    next_year = CertificateMetadata(approver="Dr. Li")
+    register.clock = on(dt.datetime(2027, 1, 2, 8, tzinfo=dt.timezone.utc))
     assert register.issue(request(next_year), render)[0].number == "AB-2027-0001"
 
 
@@ -76,7 +85,9 @@ def _killed_mid_export(url: str) -> None:
     def die(meta):
         os._exit(3)  # the process dies with the transaction open
 
-    Register(url).issue(request(), die)
+    register = Register(url)
+    register.clock = on(ISSUED)
+    register.issue(request(), die)
 
 
 def test_a_process_killed_during_export_leaves_no_record(register_url):
@@ -87,11 +98,13 @@ def test_a_process_killed_during_export_leaves_no_record(register_url):
     assert process.exitcode == 3
     with Register(register_url) as reg:
         assert reg.list() == []
+        reg.clock = on(ISSUED)
         assert reg.issue(request(), render)[0].number == "AB-2026-0001"
 
 
 def _issue_many(url: str, count: int, queue) -> None:
     with Register(url) as reg:
+        reg.clock = on(ISSUED)
         queue.put([reg.issue(request(), render)[0].number for _ in range(count)])
 
 
@@ -133,10 +146,11 @@ def test_an_amendment_references_the_original_which_stays_unchanged(register):
 def test_search_verify_history_and_due_date(register):
     a, pdf_a = register.issue(request(headline={"p": 1.0}), render)
     other = CertificateMetadata(item_serial="ZZ-9", customer_name="Other Lab",
-                                calibration_date="2026-10-01", issue_date="2026-11-24")
+                                calibration_date="2026-10-01", approver="Dr. Li")
     register.issue(request(other), render)
     later = CertificateMetadata(**{**META.to_dict(), "standards": (),
-                                   "calibration_date": "2027-05-01", "issue_date": "2027-05-02"})
+                                   "calibration_date": "2027-05-01", "issue_date": ""})
+    register.clock = on(dt.datetime(2027, 5, 2, 9, tzinfo=dt.timezone.utc))
     b, _ = register.issue(request(later, {"p": 1.4}), render)
     assert [r.number for r in register.list("acme")] == [b.number, a.number]
     assert [r.number for r in register.list("zz-9")] == ["AB-2026-0002"]
@@ -156,6 +170,7 @@ def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
         schema.MIGRATIONS[1](conn)
     with Register(register_url) as reg:
         assert reg.version == schema.LATEST == 2
+        reg.clock = on(ISSUED)
         reg.issue(request(), render)
         reg.set_interval("RX-1", 180)  # the table migration 2 added
     with engine.begin() as conn:
@@ -178,3 +193,44 @@ def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(regis
         register.continue_numbering(scheme, day, 10)
     assert register.continue_numbering(scheme, day, 100) == "AB-2026-0100"
     assert register.issue(request(), render)[0].number == "AB-2026-0100"
+
+
+def test_an_issued_certificate_needs_an_approver(register):
+    with pytest.raises(RegisterError, match="approves it"):
+        register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                      "approver": " "})), render)
+    assert register.list() == []
+    assert "approver" in CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                "approver": ""}).missing_fields()
+
+
+def test_the_date_of_issue_is_the_day_the_register_issues_it(register):
+    typed = CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                   "issue_date": "2026-11-01", "calibration_date": "2026-10-20",
+                                   "created": "2026-11-01T08:00:00"})
+    register.clock = on(dt.datetime(2026, 11, 30, 23, 59, 30, tzinfo=dt.timezone.utc))
+    seen = []
+    record, _ = register.issue(request(typed), lambda meta: seen.append(meta) or b"%PDF")
+    assert record.issue_date == seen[0].issue_date == "2026-11-30"  # not the typed 11-01
+    assert record.issued_at == seen[0].created == "2026-11-30T23:59:30+00:00"
+    assert record.number == "AB-2026-0001"
+
+
+def test_a_calibration_after_the_day_of_issue_or_in_the_future_is_refused(register):
+    register.clock = on(dt.datetime(2026, 11, 1, 9, tzinfo=dt.timezone.utc))
+    with pytest.raises(RegisterError, match="2026-11-20 is after the date of issue 2026-11-01"):
+        register.issue(request(), render)  # calibrated 2026-11-20: in the future
+    assert register.list() == []
+    with pytest.raises(Exception, match="cannot be issued before the calibration"):
+        CertificateMetadata.from_dict({"calibration_date": "2026-11-20",
+                                       "issue_date": "2026-11-01"})
+
+
+def test_an_amendment_is_not_dated_before_its_original(register):
+    original, _ = register.issue(request(), render)
+    register.clock = on(ISSUED - dt.timedelta(days=3))  # the computer's clock set back
+    with pytest.raises(RegisterError, match="cannot be dated 2026-11-21, before it"):
+        register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                      "calibration_date": "2026-11-01"})),
+                       render, supersedes=original.number, change_note="typo")
+    assert register.get(original.number).status == "issued"

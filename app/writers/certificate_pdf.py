@@ -27,10 +27,11 @@ from fpdf import FPDF
 from fpdf.enums import TableCellFillMode, XPos, YPos
 from fpdf.fonts import FontFace
 
-from models import __version__
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
+from models.certificate.metadata import PLACES
 from models.messages import QT_TR_NOOP, Message, in_language, joined, message, translator
 from models.project.atomic_write import write_bytes_atomic
+from models.software import software_identity
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.conformity import uncertainty_decimals
 
@@ -108,6 +109,7 @@ CHINESE = {
     "Measurement uncertainty": "测量不确定度", "Statement of conformity": "符合性声明",
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
+    "Model": "型号", "Place of calibration": "校准地点",
 }
 
 
@@ -193,6 +195,20 @@ class ReportPdf(FPDF):
         self.set_auto_page_break(True, margin=20)
         self.alias_nb_pages("")  # see footer()
         self.set_text_color(*INK)
+
+    # -- every run with its font ---------------------------------------------
+    # fpdf2 remembers that it has set the font on the page, but sets it inside the "q … Q"
+    # that wraps a cell (or a rotation) and so is undone at the "Q": the next text was
+    # written with no font at all ("No font in show": a Latin-only lab name in the head of
+    # every page after the first, figures between Chinese words). Each text object here
+    # selects its font again.
+    def _render_styled_text_line(self, *args, **kwargs):
+        self.current_font_is_set_on_page = False
+        return super()._render_styled_text_line(*args, **kwargs)
+
+    def text(self, *args, **kwargs):
+        self.current_font_is_set_on_page = False
+        return super().text(*args, **kwargs)
 
     # -- page furniture ------------------------------------------------------
     def header(self) -> None:
@@ -411,7 +427,8 @@ class _CertificatePdf(ReportPdf):
             (say(QT_TR_NOOP("This certificate shall not be reproduced except in full without "
                             "the laboratory's written approval.")),
              say(message(QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
-                         number=meta.certificate_number or "—", version=__version__))),
+                         number=meta.certificate_number or "—",
+                         version=software_identity().short))),
             cjk=_needs_fallback(document) or document.metadata.language != "en",
             language=meta.language)
         self.document = document
@@ -501,7 +518,7 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.set_title(f"{document.title} {meta.certificate_number}".strip())
     pdf.set_author(meta.lab_name)
     pdf.set_subject(document.kind_title)
-    pdf.set_creator(f"AngleBench {__version__}")
+    pdf.set_creator(f"AngleBench {software_identity().printed}")
     pdf.set_producer("AngleBench (fpdf2)")
     created = _created(document)
     pdf.set_creation_date(created)
@@ -528,12 +545,14 @@ def _render(document: CertificateDocument) -> FPDF:
          ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
         (label(document, "Item under test", "\n"), meta.item_description),
         (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
+        (label(document, "Model", "\n"), meta.item_model),
         (label(document, "Serial number", "\n"), meta.item_serial),
         (label(document, "Grade / specification", "\n"), joined(_between("; ", [
             meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
                                      tolerance=f"{document.tolerance_arcsec:g}{document.unit}")
             if document.tolerance_arcsec else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
+        (label(document, "Place of calibration", "\n"), _place(meta)),
         (label(document, "Environment", "\n"), _environment(meta)),
         (label(document, "Readings", "\n"), document.source_name),
     ])
@@ -550,14 +569,14 @@ def _render(document: CertificateDocument) -> FPDF:
             "The evaluation follows {standard}, implemented in AngleBench {version}; its "
             "verification is the validation report of that version (anglebench validate): "
             "simulations with known truth and hand-computed examples, each with its result."),
-            standard=document.standard, version=__version__), 8, GREY)
+            standard=document.standard, version=software_identity().printed), 8, GREY)
     else:
         pdf.paragraph(message(QT_TR_NOOP(
             "This is a non-standard method, published in the reference above and implemented "
             "in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the "
             "validation report of that version (anglebench validate): the reference figures of "
             "the publication and exact simulations with known truth, each with its result."),
-            version=__version__), 8, GREY)
+            version=software_identity().printed), 8, GREY)
     pdf.paragraph(joined([label(document, "Sign convention"), _colon(document),
                           _translatable(document.sign_convention), _stop(document)]), 8.5)
     if document.settings:
@@ -687,6 +706,12 @@ def _identity(document: CertificateDocument, created: dt.datetime) -> str:
     parts = [document.kind_key, repr(document.metadata.to_dict()), created.isoformat(),
              document.source_name, repr(document.results.rows), repr(document.parameters.rows)]
     return "\x1f".join(parts)
+
+
+def _place(meta) -> str:
+    """Where it was calibrated: at the laboratory, or at the customer's site (and where)."""
+    place = message(PLACES.get(meta.calibration_place, PLACES["laboratory"]))
+    return joined([place, ": ", meta.calibration_site]) if meta.calibration_site else place
 
 
 def _environment(meta) -> str:

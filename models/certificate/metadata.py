@@ -26,6 +26,7 @@ __all__ = [
     "LAB_DEFAULT_FIELDS",
     "CertificateMetadata",
     "MetadataError",
+    "PLACES",
     "ReferenceStandard",
     "clean_text",
     "format_certificate_number",
@@ -43,6 +44,10 @@ LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_sc
 #: What the document is: a calibration certificate, or a test report.
 DOCUMENT_TYPES = {"calibration": QT_TR_NOOP("Calibration certificate"),
                   "test": QT_TR_NOOP("Test report")}
+#: where the calibration was made (ISO/IEC 17025 7.8.2.1 c): the laboratory's own premises, or
+#: the customer's site (its address in ``calibration_site``)
+PLACES = {"laboratory": QT_TR_NOOP("at the laboratory"),
+          "customer_site": QT_TR_NOOP("at the customer's site")}
 #: the certificate's language: English; Chinese throughout (JJF 1001 terms); or its headings
 #: and labels in Chinese beside the English ("校准证书 Calibration certificate")
 LANGUAGES = {"en": "English", "zh": "中文", "zh+en": "中文 + English (headings and labels)"}
@@ -174,10 +179,13 @@ class CertificateMetadata:
     item_description: str = ""
     item_manufacturer: str = ""
     item_serial: str = ""
+    item_model: str = ""  # the item's model / type designation
     item_grade: str = ""
     tolerance_arcsec: float | None = None  # ± limit for the conformity statement
     item_resolution_arcsec: float | None = None
     standards: tuple[ReferenceStandard, ...] = ()
+    calibration_place: str = "laboratory"  # see PLACES
+    calibration_site: str = ""  # the customer's site: where
     temperature_c: float | None = None
     humidity_pct: float | None = None
     calibration_date: str = ""
@@ -197,6 +205,9 @@ class CertificateMetadata:
     supersedes: str = ""  # the number of the certificate this one amends or replaces
     revision: str = ""  # "amendment N" or "replacement"; empty for an original
     change_note: str = ""  # what changed, and why
+    # the bundled example details (resources/samples/certificate_*.json): never recorded in
+    # the user's register (the command line issues them into a register of their own)
+    example: bool = False
 
     _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
                 "coverage_probability_pct")
@@ -222,6 +233,11 @@ class CertificateMetadata:
                 values[f.name] = tuple(ReferenceStandard.from_dict(s, i) for i, s in enumerate(raw))
             elif f.name in cls._NUMBERS:
                 values[f.name] = _optional_number(raw, f.name)
+            elif f.name == "example":
+                if not isinstance(raw, bool):
+                    raise MetadataError(message(QT_TR_NOOP(
+                        "certificate field 'example' must be true or false")))
+                values[f.name] = raw
             elif f.name in cls._DATES:
                 values[f.name] = _date(raw, f.name)
             else:
@@ -231,6 +247,17 @@ class CertificateMetadata:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'language' must be one of {join}, not '{language}'"),
                 join=', '.join(LANGUAGES), language=meta.language))
+        if not meta.calibration_place:
+            meta = replace(meta, calibration_place="laboratory")
+        if meta.calibration_place not in PLACES:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'calibration_place' must be one of {join}, not "
+                           "'{place}'"), join=', '.join(PLACES), place=meta.calibration_place))
+        if meta.calibration_date and meta.issue_date and meta.calibration_date > meta.issue_date:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate fields 'calibration_date' {calibration} and 'issue_date' "
+                           "{issue}: a certificate cannot be issued before the calibration it "
+                           "reports"), calibration=meta.calibration_date, issue=meta.issue_date))
         if meta.decision_rule not in DECISION_RULES:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'decision_rule' must be one of {join}, not "
@@ -315,10 +342,13 @@ class CertificateMetadata:
             QT_TR_NOOP("item serial number"): self.item_serial,
             QT_TR_NOOP("date of calibration"): self.calibration_date,
             QT_TR_NOOP("operator"): self.operator,
+            QT_TR_NOOP("approver"): self.approver,
         }
         missing = [name for name, value in required.items() if not value]
         if not self.standards:
             missing.append(QT_TR_NOOP("reference standards"))
+        if self.calibration_place == "customer_site" and not self.calibration_site:
+            missing.append(QT_TR_NOOP("the customer's site where it was calibrated"))
         return missing
 
 

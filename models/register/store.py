@@ -49,7 +49,16 @@ class RegisterError(ValueError):
 
 
 def software_versions() -> dict[str, str]:
+    """AngleBench (its version and source: the commit, or the source's digest), Python and
+    every library that takes part in a result or its record."""
+    from models.software import software_identity
+
+    identity = software_identity()
     out = {"anglebench": __version__, "python": platform.python_version()}
+    if identity.commit:
+        out["anglebench_commit"] = identity.commit + ("+" if identity.modified else "")
+    else:
+        out["anglebench_source_sha256"] = identity.source_sha256
     for name in LIBRARIES:
         try:
             out[name] = importlib.metadata.version(name)
@@ -284,13 +293,20 @@ class Register:
         with ``replacement``, a new certificate replacing the original; the original is
         kept unchanged and marked superseded. Returns the record and the PDF."""
         meta = request.metadata
-        issue_date = (dt.date.fromisoformat(meta.issue_date) if meta.issue_date
-                      else dt.datetime.now(dt.timezone.utc).date())
+        now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
+        issue_date = now.date()  # the date of issue is the day the register issues it
+        _check_issuable(meta, issue_date)
         certificates = self._schema.CERTIFICATES
         with self._write() as conn:
             revision, original = "original", None
             if supersedes:
                 original = self._current(conn, supersedes)
+                if original.issue_date > issue_date.isoformat():
+                    raise RegisterError(message(QT_TR_NOOP(
+                        "{number} was issued on {original}: an amendment or replacement cannot "
+                        "be dated {today}, before it (check the computer's clock)"),
+                        number=original.number, original=original.issue_date,
+                        today=issue_date.isoformat()))
                 if replacement:
                     revision = "replacement"
                     number = self._allocate(conn, meta.number_scheme, issue_date)
@@ -305,12 +321,13 @@ class Register:
                 number = self._allocate(conn, meta.number_scheme, issue_date)
             final = dataclasses.replace(
                 meta, certificate_number=number, issue_date=issue_date.isoformat(),
+                created=now.isoformat(),
                 supersedes=original.number if original else "",
                 revision="" if revision == "original" else revision, change_note=change_note)
             pdf = render(final)
             record = CertificateRecord(
                 number=number,
-                issued_at=dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat(),
+                issued_at=now.isoformat(),
                 issue_date=issue_date.isoformat(), calibration_date=meta.calibration_date,
                 workbench=request.workbench, item_description=meta.item_description,
                 item_manufacturer=meta.item_manufacturer, item_serial=meta.item_serial,
@@ -328,6 +345,11 @@ class Register:
                     certificates.c.number == original.number).values(
                     status="superseded", superseded_by=number))
         return record, pdf
+
+    @staticmethod
+    def clock() -> dt.datetime:
+        """The time of issue (a test sets its own)."""
+        return dt.datetime.now(dt.timezone.utc)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
@@ -417,6 +439,20 @@ class Register:
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+def _check_issuable(meta: CertificateMetadata, issue_date: dt.date) -> None:
+    """An issued certificate is approved, and reports a calibration already made: refused
+    otherwise (a draft, which the register never records, needs neither)."""
+    if not meta.approver.strip():
+        raise RegisterError(message(QT_TR_NOOP(
+            "an issued certificate needs the name of the person who approves it ("
+            "\"Approved by\"); without one it can only be written as a draft")))
+    if meta.calibration_date and meta.calibration_date > issue_date.isoformat():
+        raise RegisterError(message(QT_TR_NOOP(
+            "the date of calibration {calibration} is after the date of issue {today} (the day "
+            "the register issues it): a certificate reports a calibration already made"),
+            calibration=meta.calibration_date, today=issue_date.isoformat()))
 
 
 def _root(record: CertificateRecord) -> str:
