@@ -18,6 +18,7 @@ from models.polygon.model import (
     PolygonResult,
     PolygonSetReadings,
     allowed_tilt_arcsec,
+    allowed_tilt_levelled_arcsec,
     counting_residuals_deg,
     direction_means,
     evaluate_sets,
@@ -27,7 +28,7 @@ from models.polygon.model import (
     tilt_advice,
     wrap_deg,
 )
-from models.polygon.report import polygon_certificate
+from models.polygon.report import polygon_certificate, setup_statement
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
@@ -63,9 +64,9 @@ PARAMETERS = (
     Parameter("faces", "faces n", "int", 0, minimum=3, maximum=360, zero="from the readings",
               help="Faces of the polygon; 0: as many as the first set has positions"),
     Parameter("grade", "encoder grade", "choice", 3,
-              choices=tuple((g, f"grade {g}: ±{tol:g}\", tilt ≤ {allowed_tilt_arcsec(g):.0f}\"")
-                            for g, tol in GRADE_ACCURACY_ARCSEC.items()),
-              help="Table 1 of the seed: the accuracy judged, and the tilt it allows"),
+              choices=tuple((g, f"grade {g}: ±{tol:g}\"") for g, tol in GRADE_ACCURACY_ARCSEC.items()),
+              help="Table 1 of the seed: the accuracy judged, and the tilt it allows (shown "
+                   "with the results, for the set-up chosen below)"),
     Parameter("closure_limits_arcsec", "closure limits grades 1–7 (\")", "text",
               "0.125, 0.25, 0.5, 1, 2.5, 5, 15", cli=False,
               help="Closure limit per grade, comma-separated; default half the grade's accuracy"),
@@ -84,10 +85,29 @@ PARAMETERS = (
               help="The drift a set shows on returning to its first face: report it and carry it "
                    "in the budget, or spread it linearly over the set and remove it (stated on "
                    "the certificate)"),
-    Parameter("ac_roll_arcmin", "AC reticle roll ≤", "float", 1.0, "′", 0.0, 60.0, decimals=1,
+    Parameter("ac_alignment", "autocollimator set-up", "choice", "levelled",
+              choices=(("levelled", "levelled (AC and rotary axis levelled)"),
+                       ("polygon", "polygon's axis (seed 001's frame)")),
+              help="How the autocollimator was set: levelled with the rotary axis (the usual "
+                   "lab set-up: its vertical along the shaft), or with its vertical along the "
+                   "polygon's axis (seed 001's frame). The pyramidal correction is that "
+                   "frame's; the certificate states it. Tell them apart with a tilt test: "
+                   "tilt the polygon on its seat and watch the horizontal reading"),
+    Parameter("ac_roll_arcmin", "AC roll ≤", "float", 1.0, "′", 0.0, 60.0, decimals=1,
               step=0.5, cli_name="ac-roll",
-              help="Largest roll of the autocollimator's reticle: it turns part of the vertical "
+              help="Largest roll of the autocollimator about its line of sight, relative to "
+                   "the set-up's vertical, when not measured: it turns part of the vertical "
                    "reading into the horizontal one (budget input)"),
+    Parameter("ac_roll_measured_arcmin", "AC roll measured", "float", 0.0, "′", -60.0, 60.0,
+              decimals=2, step=0.1, cli_name="ac-roll-measured",
+              help="Measured roll ρ of the autocollimator about its line of sight: the "
+                   "horizontal reading's change per unit change of the vertical one (tilt a "
+                   "face and watch both readings), + when both rise together; corrected when "
+                   "its uncertainty is given"),
+    Parameter("u_ac_roll_arcmin", "u(AC roll measured)", "float", 0.0, "′", 0.0, 60.0,
+              decimals=2, step=0.1, cli_name="ac-roll-u", zero="not measured",
+              help="Standard uncertainty of the measured roll; 0: the roll was not measured "
+                   "(the bound above enters the budget, nothing is corrected)"),
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
@@ -276,6 +296,11 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
 
 def _check_across(s: dict[str, Any]) -> None:
     closure_limit_arcsec(s["grade"], s["closure_limits_arcsec"])  # every entry, not only one
+    if s["ac_roll_measured_arcmin"] != 0 and s["u_ac_roll_arcmin"] == 0:
+        raise SettingsError(message(QT_TR_NOOP(
+            "a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, "
+            "or set the measured roll to 0 (not measured)"),
+            roll=f"{s['ac_roll_measured_arcmin']:g}′"))
 
 
 def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
@@ -298,7 +323,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             QT_TR_NOOP("zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}"),
             faces=faces, s=s['zero_face']))
     spread = s["closure_drift"] == "spread"
-    results = evaluate_sets(sets, faces, counting, s["zero_face"], limit, spread)
+    frame = str(s["ac_alignment"])
+    roll_measured = s["u_ac_roll_arcmin"] > 0
+    roll_rad = math.radians(s["ac_roll_measured_arcmin"] / 60.0) if roll_measured else 0.0
+    results = evaluate_sets(sets, faces, counting, s["zero_face"], limit, spread, frame, roll_rad)
     zero_face = s["zero_face"] or int(sets[0].positions[0])
     theta = np.arange(faces) * 360.0 / faces
     directions = np.array([r.direction for r in results])
@@ -309,8 +337,19 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     repeat = pooled_repeatability(corrected, directions)
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
-    allowed = allowed_tilt_arcsec(grade)
+    # the roll left uncorrected: the bound, or 2u of a measured roll
+    roll_left = 2.0 * s["u_ac_roll_arcmin"] if roll_measured else s["ac_roll_arcmin"]
+    allowed = (allowed_tilt_levelled_arcsec(grade, roll_left) if frame == "levelled"
+               else allowed_tilt_arcsec(grade))
     allowed_seed = allowed_tilt_arcsec(grade, SHORT_FORM_COEFFICIENT)
+    allowed_how = message(
+        QT_TR_NOOP("levelled set-up: the polygon's own term plus a roll of {roll} over the "
+                   "vertical span 2ψ; in seed 001's frame {worst} worst case over the tilt "
+                   "direction, {seed} at ω = 90°"),
+        roll=f"{roll_left:g}′", worst=f"{allowed_tilt_arcsec(grade):.0f}\"",
+        seed=f"{allowed_seed:.0f}\"") if frame == "levelled" else message(
+        QT_TR_NOOP("worst case over the tilt direction; the seed's ω = 90° figure is {seed}"),
+        seed=f"{allowed_seed:.0f}\"")
     for r in results:
         warnings.extend(r.warnings)
     valid = all(r.closure_ok is not False for r in results)
@@ -320,22 +359,21 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     elif tilt.psi_arcsec <= allowed:
         verdict = message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade "
-                       "{grade} (worst case over the tilt direction; the seed's ω = 90° figure "
-                       "is {seed}): the fixture is fine."),
+                       "{grade} ({how}): the fixture is fine."),
             psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
-            seed=f"{allowed_seed:.0f}\"")
+            how=allowed_how)
     else:
         verdict = message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} "
-                       "(worst case over the tilt direction; the seed's ω = 90° figure is "
-                       "{seed}): {advice}; then re-zero and measure again."),
+                       "({how}): {advice}; then re-zero and measure again."),
             psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
-            seed=f"{allowed_seed:.0f}\"", advice=tilt_advice(tilt, faces, counting))
+            how=allowed_how, advice=tilt_advice(tilt, faces, counting))
         warnings.append(message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} "
-                       "(worst case over the tilt direction); the error it induces was "
-                       "identified and removed."),
-            psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade))
+                       "({how}); the error it induces was identified and removed."),
+            psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
+            how=message(QT_TR_NOOP("levelled set-up")) if frame == "levelled" else
+            message(QT_TR_NOOP("seed 001's frame, worst case over the tilt direction"))))
     if spread:
         warnings.append(message(QT_TR_NOOP("Closure drift spread linearly over each set and "
                                            "removed from the autocollimator readings.")))
@@ -350,7 +388,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         allowed_tilt_arcsec=allowed, allowed_tilt_seed_arcsec=allowed_seed,
         accuracy_ok=stats.peak_to_peak / 2.0 <= tol, tilt_verdict=verdict, valid=valid,
         counting=counting, zero_face=zero_face, spread_drift=spread,
-        ac_roll_arcmin=float(s["ac_roll_arcmin"]), closure_rows=closure_rows,
+        ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
+        ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
+        u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
         warnings=warnings,
     )
 
@@ -377,7 +417,8 @@ def certificate_doubt(result: PolygonResult) -> str:
 
 def iso230_figures(result: PolygonResult) -> dict[str, float]:
     theta = np.concatenate([result.theta_deg for _ in result.sets])
-    dev = np.concatenate([r.corrected_error_arcsec for r in result.sets])
+    # ISO 230-2's deviation is reference − indicated: the error's negative (B = x̄↑ − x̄↓)
+    dev = -np.concatenate([r.corrected_error_arcsec for r in result.sets])
     dirs = np.concatenate([np.full(result.faces, r.direction) for r in result.sets])
     return iso230_evaluate(theta, dev, dirs).figures
 
@@ -407,6 +448,10 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "accuracy_ok": result.accuracy_ok,
         "allowed_tilt_arcsec": result.allowed_tilt_arcsec,
         "allowed_tilt_seed_arcsec": result.allowed_tilt_seed_arcsec,
+        "ac_alignment": result.ac_alignment,
+        "ac_roll_measured_arcmin": result.ac_roll_measured_arcmin,
+        "u_ac_roll_arcmin": result.u_ac_roll_arcmin if result.roll_corrected else None,
+        "ac_roll_bound_arcmin": None if result.roll_corrected else result.ac_roll_arcmin,
         "stats_arcsec": result.stats.as_dict(),
         "harmonics": {"order": result.harmonics.order.tolist(),
                       "amplitude_arcsec": result.harmonics.amplitude.tolist(),
@@ -470,7 +515,8 @@ def summary(result: PolygonResult) -> str:
             jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
                                           "measured twice)")))
         if result.reversal_arcsec is not None:
-            jjf.append(message(QT_TR_NOOP(", reversal error {value} (mean {mean})"),
+            jjf.append(message(QT_TR_NOOP(", reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ "
+                                          "{mean}: forward sets' error minus reverse sets')"),
                                value=f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
                                mean=f"{result.mean_reversal_arcsec:+.2f}\""))
         out.append(joined(jjf))
@@ -478,6 +524,7 @@ def summary(result: PolygonResult) -> str:
         out.append("ISO 230-2: " + ", ".join(
             f"{k} = {v:.2f}\"" for k, v in figs.items() if math.isfinite(v)))
     out.append(result.tilt_verdict)
+    out.append(setup_statement(result))
     return lines(out)
 
 

@@ -19,6 +19,16 @@ encoder has turned by (i − 1)·360°/n.
   error is ``e_i − (ε_x,i − ε_x,z)`` (SPEC §2, corrected 2026-11-27). The fitted
   ω is in the seed's frame; :func:`tilt_advice` says where the tilt is in
   terms of faces and readings.
+* Which frame the autocollimator reads in (SPEC §2, 2026-12-01): eqs 3–7 put the
+  autocollimator's vertical along the *polygon's* axis (``ac_alignment`` =
+  ``"polygon"``). In a lab the autocollimator and the rotary axis are levelled
+  (``"levelled"``): its vertical is along the shaft. Same coordinates, same turned
+  normals, read in a basis turned from the polygon's to the shaft's by the least
+  rotation; the vertical readings agree (to O(ψ³)), the horizontal ones differ by the
+  cross-talk of a roll ψ·sinω (in the seed's ω) between the two bases. A measured roll
+  ρ of the autocollimator (the horizontal reading's change per unit change of the
+  vertical one, as a tilt test shows it) is a further turn of the reading basis about
+  the line of sight. :func:`frame_readings_arcsec` does it all by 3-D rotation.
 
 Angles in degrees, errors and tilts in arcseconds unless the name says otherwise.
 """
@@ -37,7 +47,9 @@ from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats
 
 __all__ = [
+    "AC_ALIGNMENTS",
     "GRADE_ACCURACY_ARCSEC",
+    "LEVELLED_OWN_COEFFICIENT",
     "SHORT_FORM_COEFFICIENT",
     "WORST_CASE_COEFFICIENT",
     "HarmonicAnalysis",
@@ -45,10 +57,12 @@ __all__ = [
     "PolygonSetResult",
     "TiltFit",
     "allowed_tilt_arcsec",
+    "allowed_tilt_levelled_arcsec",
     "closure_drift_arcsec",
     "counting_residuals_deg",
     "face_errors_arcsec",
     "fit_tilt",
+    "frame_readings_arcsec",
     "harmonic_analysis",
     "pyramidal_correction_arcsec",
     "pyramidal_readings_arcsec",
@@ -73,6 +87,15 @@ SHORT_FORM_COEFFICIENT = 0.5337e-5
 #: allowed tilt is judged with this one.
 WORST_CASE_COEFFICIENT = (1.0 + math.sqrt(2.0)) / 2.0 / ARCSEC_PER_RAD
 
+#: The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and
+#: rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001's frame: the
+#: autocollimator's vertical along the polygon's axis).
+AC_ALIGNMENTS = ("levelled", "polygon")
+
+#: Levelled frame: the polygon's own term is a 2θ pattern of amplitude ψ²/4 (rad), so two
+#: faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).
+LEVELLED_OWN_COEFFICIENT = 0.5 / ARCSEC_PER_RAD
+
 
 def allowed_tilt_arcsec(grade: int, coefficient: float = WORST_CASE_COEFFICIENT) -> float:
     """Largest pyramidal tilt ψ (") keeping the induced error under a third of the accuracy.
@@ -84,6 +107,16 @@ def allowed_tilt_arcsec(grade: int, coefficient: float = WORST_CASE_COEFFICIENT)
     """
     tol = GRADE_ACCURACY_ARCSEC[int(grade)]
     return math.sqrt((tol / 3.0) / coefficient)
+
+
+def allowed_tilt_levelled_arcsec(grade: int, roll_arcmin: float) -> float:
+    """Largest tilt ψ (") of a levelled set-up keeping the induced error under a third of the
+    accuracy: the polygon's own term ψ²/2 (rad) plus the unknown roll ρ times the vertical
+    span 2ψ, ``ψ²/(2 rad) + 2ρψ = tol/3``. 370, 524, 741, … with no roll; 270″ for grade 3
+    at a 1′ roll."""
+    third = GRADE_ACCURACY_ARCSEC[int(grade)] / 3.0
+    a, b = LEVELLED_OWN_COEFFICIENT, 2.0 * abs(roll_arcmin) * 60.0 / ARCSEC_PER_RAD
+    return (-b + math.sqrt(b * b + 4.0 * a * third)) / (2.0 * a)
 
 
 def wrap_deg(angle_deg):
@@ -147,6 +180,56 @@ def pyramidal_readings_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
     return np.arctan(y / x) * ARCSEC_PER_RAD, np.arctan(z / x) * ARCSEC_PER_RAD
 
 
+def _turned_normals(theta_deg, psi_arcsec: float, omega_deg: float):
+    """Face normals [cosθ, sinθ, 0] turned by −θ about the tilted axis (eqs 3–5), and
+    the axis: (3, m) and (3,), in the seed's polygon coordinates."""
+    th = np.radians(np.asarray(theta_deg, dtype=float))
+    psi = psi_arcsec / ARCSEC_PER_RAD
+    om = math.radians(omega_deg)
+    axis = np.array([math.sin(psi) * math.cos(om), math.sin(psi) * math.sin(om), math.cos(psi)])
+    normal = np.array([np.cos(th), np.sin(th), np.zeros_like(th)])
+    cos_p, sin_p = np.cos(-th), np.sin(-th)
+    cross = np.cross(axis[:, None], normal, axis=0)
+    dot = axis @ normal
+    return normal * cos_p + cross * sin_p + axis[:, None] * dot * (1.0 - cos_p), axis
+
+
+def _rotation(axis, angle_rad: float) -> np.ndarray:
+    """Rotation matrix about a unit axis (Rodrigues)."""
+    kx, ky, kz = axis
+    cross = np.array([[0.0, -kz, ky], [kz, 0.0, -kx], [-ky, kx, 0.0]])
+    return np.eye(3) + math.sin(angle_rad) * cross + (1.0 - math.cos(angle_rad)) * (cross @ cross)
+
+
+def frame_readings_arcsec(theta_deg, psi_arcsec: float, omega_deg: float,
+                          ac_alignment: str = "polygon", roll_rad: float = 0.0):
+    """Exact readings (ε_x, ε_y) in arcsec of an autocollimator in the chosen frame.
+
+    The normals are turned as in eqs 3–5 (seed's coordinates, ψ, ω as fitted). The
+    reading basis (line of sight, horizontal, vertical) is the polygon's (X, Y, Z) for
+    ``"polygon"`` (eqs 6–7) and, for ``"levelled"``, that basis turned by the least
+    rotation taking Z to the shaft's axis (vertical along the shaft, line of sight square
+    to it). ``roll_rad`` is the autocollimator's measured roll ρ: the horizontal reading
+    as read (eq 1's sense, which carries −ε_x) changes by ρ per unit change of the
+    vertical reading; the basis is turned about the line of sight by −ρ.
+    """
+    if ac_alignment not in AC_ALIGNMENTS:
+        raise ValueError(f"ac_alignment must be one of {AC_ALIGNMENTS}, not {ac_alignment!r}")
+    rotated, axis = _turned_normals(theta_deg, psi_arcsec, omega_deg)
+    basis = np.eye(3)  # rows: line of sight, horizontal, vertical
+    if ac_alignment == "levelled":
+        hinge = np.array([-axis[1], axis[0], 0.0])  # Z × axis
+        size = float(np.hypot(hinge[0], hinge[1]))
+        if size > 0.0:
+            turn = _rotation(hinge / size, math.atan2(size, axis[2]))
+            basis = (turn @ basis.T).T
+    if roll_rad:
+        basis = (_rotation(basis[0], -roll_rad) @ basis.T).T
+    along, across, up = basis @ rotated
+    return (np.arctan2(across, along) * ARCSEC_PER_RAD,
+            np.arctan2(up, along) * ARCSEC_PER_RAD)
+
+
 def pyramidal_x_short_arcsec(theta_deg, psi_arcsec: float, omega_deg: float):
     """Short form (12): ε_x ≈ 0.4848e-5 ψ²[sinω(1 − cosθ)cos(ω − θ) + ½ sinθ cosθ]."""
     th = np.radians(np.asarray(theta_deg, dtype=float))
@@ -177,6 +260,7 @@ class TiltFit:
     u_omega_deg: float
     residuals_arcsec: np.ndarray
     residual_rms_arcsec: float
+    cov_psi_omega: np.ndarray | None = None  # covariance of (ψ ″, ω °) from the fit
 
 
 def set_name(label: str) -> Message:
@@ -184,8 +268,10 @@ def set_name(label: str) -> Message:
     return message(QT_TR_NOOP("Set {number}"), number=label.split()[-1])
 
 
-def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
-    """Identify ψ, ω from vertical readings: linear fit on (1, cosθ − 1, sinθ), exact polish."""
+def fit_tilt(theta_deg, ac_y_arcsec, ac_alignment: str = "polygon",
+             roll_rad: float = 0.0) -> TiltFit:
+    """Identify ψ, ω from vertical readings: linear fit on (1, cosθ − 1, sinθ), then an exact
+    polish with the chosen frame's vertical readings (:func:`frame_readings_arcsec`)."""
     theta = np.asarray(theta_deg, dtype=float)
     v = np.asarray(ac_y_arcsec, dtype=float)
     if theta.size < 4:
@@ -197,7 +283,9 @@ def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
     start = np.array([k, math.hypot(p, q), math.degrees(math.atan2(q, p))])
 
     def residuals(x):
-        return x[0] + pyramidal_readings_arcsec(theta, x[1], x[2])[1] - v
+        if ac_alignment == "polygon" and not roll_rad:
+            return x[0] + pyramidal_readings_arcsec(theta, x[1], x[2])[1] - v
+        return x[0] + frame_readings_arcsec(theta, x[1], x[2], ac_alignment, roll_rad)[1] - v
 
     # k, ψ in arcsec and ω in degrees: 1e-10 of them is far below any reading
     fit = polish(residuals, lambda x: difference_jacobian(residuals, x, central=True), start,
@@ -213,7 +301,7 @@ def fit_tilt(theta_deg, ac_y_arcsec) -> TiltFit:
     cov = np.linalg.pinv(fit.jac.T @ fit.jac) * sigma2
     u = np.sqrt(np.clip(np.diag(cov), 0, None))
     return TiltFit(float(psi), float(omega % 360.0), float(k), float(u[1]), float(u[2]),
-                   -fit.fun, float(np.sqrt(np.mean(fit.fun**2))))
+                   -fit.fun, float(np.sqrt(np.mean(fit.fun**2))), cov[1:, 1:])
 
 
 @dataclass
@@ -242,14 +330,16 @@ def harmonic_analysis(error_arcsec) -> HarmonicAnalysis:
 
 
 def pyramidal_correction_arcsec(theta_deg, psi_arcsec: float, omega_deg: float,
-                                zero_theta_deg: float) -> np.ndarray:
-    """``ε_x(θ) − ε_x(θ_z)``: what the tilt adds to each error against the zero face.
+                                zero_theta_deg: float, ac_alignment: str = "polygon",
+                                roll_rad: float = 0.0) -> np.ndarray:
+    """``ε_x(θ) − ε_x(θ_z)``: what the tilt adds to each error against the zero face, in the
+    chosen frame (and with a measured roll ρ, see :func:`frame_readings_arcsec`).
 
     θ is the position angle in the counting sense (the one the tilt was fitted
     on). The corrected error is the error minus this.
     """
     theta = np.append(np.asarray(theta_deg, dtype=float), zero_theta_deg)
-    eps_x = pyramidal_readings_arcsec(theta, psi_arcsec, omega_deg)[0]
+    eps_x = frame_readings_arcsec(theta, psi_arcsec, omega_deg, ac_alignment, roll_rad)[0]
     return eps_x[:-1] - eps_x[-1]
 
 
@@ -311,8 +401,12 @@ class PolygonSetResult:
 
 def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
                   zero_face: int = 0, closure_limit_arcsec: float = math.inf,
-                  spread_drift: bool = False) -> list[PolygonSetResult]:
+                  spread_drift: bool = False, ac_alignment: str = "levelled",
+                  roll_rad: float = 0.0) -> list[PolygonSetResult]:
     """Error, closure drift and pyramidal correction of every set against one zero.
+
+    The correction is the frame's (``ac_alignment``, with a measured roll ``roll_rad``;
+    see :func:`frame_readings_arcsec`).
 
     The zero is ``zero_face`` of the first set (0: the first set's first
     reading). With ``spread_drift`` each set's closure drift is taken as
@@ -363,8 +457,9 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         tilt = None
         pyramidal = np.zeros(n)
         if ac_y.size >= 4 and np.all(np.isfinite(ac_y)):
-            tilt = fit_tilt(theta, ac_y)
-            pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z)
+            tilt = fit_tilt(theta, ac_y, ac_alignment, roll_rad)
+            pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z,
+                                                    ac_alignment, roll_rad)
         else:
             warnings.append(message(QT_TR_NOOP("{set}: vertical readings missing: pyramidal "
                                                "error not identified or removed."),
@@ -386,7 +481,7 @@ class PolygonResult:
     mean_error_arcsec: np.ndarray  # bidirectional mean when both directions were run
     mean_corrected_arcsec: np.ndarray
     repeatability_arcsec: np.ndarray | None  # pooled s within each direction, per position
-    reversal_arcsec: np.ndarray | None  # x̄↑ − x̄↓ per position
+    reversal_arcsec: np.ndarray | None  # ē↑ − ē↓ per position: forward sets' mean error minus reverse's
     stats: ErrorStats
     raw_stats: ErrorStats
     harmonics: HarmonicAnalysis
@@ -398,19 +493,29 @@ class PolygonResult:
     counting: int = 1
     zero_face: int = 1
     spread_drift: bool = False
-    ac_roll_arcmin: float = 1.0  # stated limit of the autocollimator reticle's roll (budget)
+    ac_roll_arcmin: float = 1.0  # stated bound of the autocollimator's roll ρ (budget)
+    ac_alignment: str = "levelled"  # the frame the horizontal readings are corrected in
+    ac_roll_measured_arcmin: float | None = None  # measured roll ρ, corrected (None: not measured)
+    u_ac_roll_arcmin: float = 0.0  # its standard uncertainty
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
     warnings: list[str] = field(default_factory=list)
 
     @property
     def mean_reversal_arcsec(self) -> float | None:
-        """B̄, the mean of the reversal over the positions (ISO 230-2)."""
+        """The mean of ē↑ − ē↓ over the positions (error sense: −B̄ of ISO 230-2, whose
+        deviation is reference − indicated)."""
         return None if self.reversal_arcsec is None else float(np.mean(self.reversal_arcsec))
+
+    @property
+    def roll_corrected(self) -> bool:
+        """Whether a measured roll ρ was corrected (else its bound is only in the budget)."""
+        return self.ac_roll_measured_arcmin is not None
 
 
 def direction_means(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
     """Mean over the sets of each direction (rows of ``values``): the bidirectional mean
-    and the reversal x̄↑ − x̄↓ (None unless both directions were run)."""
+    and the reversal mean(forward) − mean(reverse) in the values' own sense (None unless
+    both directions were run)."""
     fwd, rev = values[directions > 0], values[directions < 0]
     if fwd.size and rev.size:
         up, down = fwd.mean(axis=0), rev.mean(axis=0)

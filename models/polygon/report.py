@@ -14,10 +14,14 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   and directions (Type A), divided by √m for the mean of m sets; otherwise the
   autocollimator's reading noise from the tilt fits' residuals. The zero
   reading is one reading shared by every set and enters once more, not reduced;
-* the pyramidal correction: u(ψ) and u(ω) of each set's tilt fit propagated
-  through ε_x (first order), for the mean of the sets;
-* the autocollimator reticle's roll ρ (a stated limit): it turns part of the
-  vertical reading into the horizontal one, ρ·(y_i − y_z), rectangular;
+* the pyramidal correction: the covariance of ψ, ω from each set's tilt fit
+  propagated through the chosen frame's exact correction (first order), for the
+  mean of the sets;
+* the autocollimator's roll ρ about its line of sight, relative to the set-up's
+  vertical (one input, it is the only "reticle roll"): it turns part of the
+  vertical reading into the horizontal one, ρ·(y_i − y_z). Not measured: the
+  stated bound, rectangular, nothing corrected; measured (and corrected): its
+  standard uncertainty, normal;
 * the closure drift: the drift that the closures show beyond their reading
   noise, d² = mean(H²) − 2u², rectangular with half-width d (d/2 when the
   drift was spread linearly over the set);
@@ -43,6 +47,7 @@ from models.messages import QT_TR_NOOP, message
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     PolygonResult,
+    allowed_tilt_arcsec,
     pooled_repeatability,
     pyramidal_correction_arcsec,
 )
@@ -50,7 +55,7 @@ from models.polygon.plots import corrected_with_uncertainty, error_figure, resid
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec"]
+__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec", "setup_statement"]
 
 METHOD = QT_TR_NOOP(
     "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
@@ -61,12 +66,48 @@ METHOD = QT_TR_NOOP(
     "a set's first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y "
     "identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least "
     "squares, and the horizontal error ε_x it induces is subtracted from e (coordinate "
-    "transformation; the seed's eqs 3–7 turn the faces by −θ, so the readings carry −ε_x)."
+    "transformation; the seed's eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). "
+    "The error induced depends on how the autocollimator was set: it is computed by exact "
+    "3-D rotation in the frame stated under the set-up parameters."
 )
+
+
+def setup_statement(result: PolygonResult) -> str:
+    """Which set-up the correction assumed, and how a technician tells which one the bench
+    is, in words (certificate, summary, window)."""
+    if result.ac_alignment == "levelled":
+        frame = message(QT_TR_NOOP(
+            "Set-up assumed: autocollimator and rotary axis levelled (the autocollimator's "
+            "vertical along the shaft); the pyramidal correction is that set-up's, by exact 3-D "
+            "rotation: the polygon's own term plus the autocollimator's roll times the vertical "
+            "reading's change."))
+    else:
+        frame = message(QT_TR_NOOP(
+            "Set-up assumed: seed 001's frame (the autocollimator's vertical along the "
+            "polygon's axis, not the shaft's); the pyramidal correction is the seed's eqs 3–7."))
+    if result.roll_corrected:
+        roll = message(QT_TR_NOOP("Autocollimator roll measured {roll} (u = {u}) and corrected."),
+                       roll=f"{result.ac_roll_measured_arcmin:+g}′",
+                       u=f"{result.u_ac_roll_arcmin:g}′")
+    else:
+        roll = message(QT_TR_NOOP("Autocollimator roll not measured: up to ±{roll}, not "
+                                  "corrected, in the uncertainty."),
+                       roll=f"{result.ac_roll_arcmin:g}′")
+    tell = message(QT_TR_NOOP(
+        "To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the "
+        "vertical reading changes by Δy and watch the horizontal reading: on a levelled bench "
+        "it moves by less than the roll bound times Δy; if it moves more, measure that ratio "
+        "(the roll) and enter it."))
+    return " ".join((frame, roll, tell))
 
 
 def _zero_index(result: PolygonResult) -> int:
     return result.zero_face - 1
+
+
+def _roll_rad(result: PolygonResult) -> float:
+    """The measured roll that was corrected (rad), 0 when not measured."""
+    return math.radians(result.ac_roll_measured_arcmin / 60.0) if result.roll_corrected else 0.0
 
 
 def _pyramidal_uncertainty(result: PolygonResult) -> np.ndarray | None:
@@ -80,11 +121,15 @@ def _pyramidal_uncertainty(result: PolygonResult) -> np.ndarray | None:
         theta_z = s.theta_deg[_zero_index(result)]
 
         def eps(psi: float, omega: float, theta=s.theta_deg, theta_z=theta_z) -> np.ndarray:
-            return pyramidal_correction_arcsec(theta, psi, omega, theta_z)
+            return pyramidal_correction_arcsec(theta, psi, omega, theta_z, result.ac_alignment,
+                                               _roll_rad(result))
 
         d_psi = (eps(t.psi_arcsec + 0.01, t.omega_deg) - eps(t.psi_arcsec - 0.01, t.omega_deg)) / 0.02
         d_om = (eps(t.psi_arcsec, t.omega_deg + 1e-3) - eps(t.psi_arcsec, t.omega_deg - 1e-3)) / 2e-3
-        variances.append((d_psi * t.u_psi_arcsec) ** 2 + (d_om * t.u_omega_deg) ** 2)
+        cov = t.cov_psi_omega if t.cov_psi_omega is not None else np.diag(
+            [t.u_psi_arcsec**2, t.u_omega_deg**2])
+        grad = np.column_stack([d_psi, d_om])
+        variances.append(np.clip(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0, None))
     return np.sqrt(np.sum(variances, axis=0)) / len(result.sets)
 
 
@@ -142,18 +187,33 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
 
 
 def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[BudgetComponent]:
-    if roll_arcmin <= 0:
+    """The autocollimator's roll about its line of sight: one input, ρ·|y_i − y_z|."""
+    measured = result.roll_corrected
+    limit = result.u_ac_roll_arcmin if measured else roll_arcmin
+    if limit <= 0:
         return []
     spans = [np.abs(s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)])
              for s in result.sets if s.ac_y_arcsec is not None]
     if not spans:
         return []
-    rho = roll_arcmin / 60.0 * math.pi / 180.0
+    rho = limit / 60.0 * math.pi / 180.0
+    vertical = (QT_TR_NOOP("the shaft") if result.ac_alignment == "levelled"
+                else QT_TR_NOOP("the polygon's axis"))
+    if measured:
+        return [BudgetComponent(
+            QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "normal",
+            rho * np.mean(spans, axis=0), 1.0, 1.0, math.inf,
+            message(QT_TR_NOOP("measured roll {roll} relative to {vertical}, corrected; its "
+                               "standard uncertainty {u} times the vertical reading's change "
+                               "from the zero face"),
+                    roll=f"{result.ac_roll_measured_arcmin:+g}′", vertical=message(vertical),
+                    u=f"{limit:g}′"))]
     return [BudgetComponent(
-        QT_TR_NOOP("Autocollimator reticle roll"), "B", "rectangular", rho * np.mean(spans, axis=0),
-        math.sqrt(3.0), 1.0, math.inf,
-        message(QT_TR_NOOP("roll up to ±{roll} (stated) times the vertical reading's change "
-                           "from the zero face"), roll=f"{roll_arcmin:g}′"))]
+        QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "rectangular",
+        rho * np.mean(spans, axis=0), math.sqrt(3.0), 1.0, math.inf,
+        message(QT_TR_NOOP("roll relative to {vertical} up to ±{roll} (stated, not measured, "
+                           "not corrected) times the vertical reading's change from the zero "
+                           "face"), vertical=message(vertical), roll=f"{roll_arcmin:g}′"))]
 
 
 def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
@@ -192,7 +252,8 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     if u_pyr is not None:
         components.append(BudgetComponent(
             QT_TR_NOOP("Pyramidal correction (ψ, ω)"), "A", "normal", u_pyr, 1.0, 1.0,
-            max(n - 3, 1), QT_TR_NOOP("u(ψ), u(ω) of the tilt fits propagated through ε_x")))
+            max(n - 3, 1), QT_TR_NOOP("covariance of ψ, ω from the tilt fits propagated through "
+                                      "the set-up's exact correction")))
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
@@ -239,9 +300,23 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
               (QT_TR_NOOP("Closure drift"),
                QT_TR_NOOP("spread linearly over each set and removed") if result.spread_drift
                else QT_TR_NOOP("reported, not removed"), ""),
+              (QT_TR_NOOP("Autocollimator set-up"),
+               QT_TR_NOOP("levelled with the rotary axis (vertical along the shaft)")
+               if result.ac_alignment == "levelled" else
+               QT_TR_NOOP("vertical along the polygon's axis (seed 001's frame)"), ""),
+              (QT_TR_NOOP("Autocollimator roll"),
+               message(QT_TR_NOOP("measured {roll}, corrected"),
+                       roll=f"{result.ac_roll_measured_arcmin:+g}′")
+               if result.roll_corrected else
+               message(QT_TR_NOOP("not measured, up to ±{roll}"), roll=f"{result.ac_roll_arcmin:g}′"),
+               f"{2 * result.u_ac_roll_arcmin:g}′" if result.roll_corrected else ""),
               (QT_TR_NOOP("Allowed pyramidal tilt"), message(QT_TR_NOOP(
-                  "{tilt} (worst case over the tilt direction; the seed's ω = 90° figure: "
-                  "{seed})"), tilt=f"{result.allowed_tilt_arcsec:.0f}\"",
+                  "{tilt} (levelled set-up, roll included; seed 001's frame: {worst} worst case "
+                  "over the tilt direction, {seed} at ω = 90°)") if result.ac_alignment == "levelled"
+                  else QT_TR_NOOP("{tilt} (worst case over the tilt direction; the seed's ω = 90° "
+                                  "figure: {seed})"),
+                  tilt=f"{result.allowed_tilt_arcsec:.0f}\"",
+                  worst=f"{allowed_tilt_arcsec(result.grade):.0f}\"",
                   seed=f"{result.allowed_tilt_seed_arcsec:.0f}\""), "")]
     nu_tilt = max(result.faces - 3, 1)  # each set's tilt fit: n faces, three parameters
     k_tilt = coverage_factor(nu_tilt, budget.probability)
@@ -299,10 +374,12 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         stat_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
                           QT_TR_NOOP("no direction was measured twice")))
     if result.reversal_arcsec is not None:
-        stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|)"),
+        stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
-                          message(QT_TR_NOOP("mean reversal {b}"),
-                                  b=f"{result.mean_reversal_arcsec:+.2f}\"")))
+                          message(QT_TR_NOOP("mean B̄ = {b} (ISO 230-2: deviation x = reference "
+                                             "− indicated, forward minus reverse; = mean of "
+                                             "ē↓ − ē↑ of the errors)"),
+                                  b=f"{-result.mean_reversal_arcsec:+.2f}\"")))
     conformity = decide_conformity(
         result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
         metadata.decision_quantity,
@@ -333,7 +410,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                     face=result.zero_face),
             QT_TR_NOOP("Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the "
                        "method's reference; the allowed pyramidal tilt is derived from them (a "
-                       "third of the accuracy, worst case over the tilt direction).")),
+                       "third of the accuracy, worst case over the tilt direction)."),
+            setup_statement(result)),
         point_columns=(("position", np.arange(1, result.faces + 1, dtype=float)),
          ("nominal_deg", result.theta_deg), ("raw_error_arcsec", result.mean_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.mean_corrected_arcsec),

@@ -5,12 +5,19 @@ autocollimator and an encoder read, nothing of the seed's equations or of our
 correction. Frames and senses:
 
 * Lab frame: the autocollimator (AC) looks along −x at the face whose normal
-  points to +x; z is up. The AC's horizontal reading is the azimuth of the
-  face normal, its vertical reading the normal's elevation.
-* The shaft turns about ``k = [sinψ cosω, sinψ sinω, cosψ]``: the polygon's
-  own axis (z when the shaft is at its zero) is tilted against the rotation
-  axis by ψ. ``handedness`` = +1 when the encoder counts up for a right-handed
-  turn about +k, −1 for a left-handed one.
+  points to +x; z is up. The AC reads a face normal n in its own basis (line of
+  sight d, horizontal h, vertical u): horizontal ``atan2(n·h, n·d)``, vertical
+  ``atan2(n·u, n·d)``. With no pitch and roll (d, h, u) = (x, y, z); a pitch
+  turns the basis about y, then a roll turns it about its line of sight.
+* ``frame = "levelled"`` (the lab's set-up): the shaft turns about z (levelled,
+  like the AC); the polygon sits on it with its own axis tilted from z by ψ
+  towards the azimuth ω (with the shaft at count 0): its face normals, square to
+  its own axis, are the ideal ones tipped by ψ about ``[−sinω, cosω, 0]``.
+* ``frame = "polygon"`` (seed 001's set-up): the polygon's own axis is z at
+  count 0 and the shaft turns about ``k = [sinψ cosω, sinψ sinω, cosψ]``, so
+  the AC's vertical is along the polygon's axis, not the shaft's.
+* ``handedness`` = +1 when the encoder counts up for a right-handed turn about
+  the shaft's axis (z or k), −1 for a left-handed one.
 * ``counting`` = +1 when the encoder counts up as the face numbers rise, −1
   when it counts against the numbering.
 * The AC's horizontal reading is taken in the encoder's counting sense (a
@@ -44,6 +51,9 @@ class PolygonRig:
     noise_arcsec: float = 0.0
     positioning_arcsec: float = 20.0  # the operator stops within ± this of each face
     backlash_arcsec: float | np.ndarray = 0.0  # reverse approach reads this much lower (per face)
+    frame: str = "levelled"  # "levelled" or "polygon" (seed 001's), see the module's text
+    ac_pitch_deg: float = 0.0  # the AC's line of sight raised by this (about y)
+    ac_roll_arcsec: float = 0.0  # the AC turned about its line of sight (right-handed)
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
@@ -53,15 +63,45 @@ class PolygonRig:
                                 else np.asarray(self.face_dev_arcsec, dtype=float))
         self.certificate_error_arcsec = (np.zeros(n) if self.certificate_error_arcsec is None
                                          else np.asarray(self.certificate_error_arcsec, float))
+        if self.frame not in ("levelled", "polygon"):
+            raise ValueError(f"frame: {self.frame!r}")
         psi = self.psi_arcsec * ARCSEC
         om = np.radians(self.omega_deg)
-        self.axis = np.array([np.sin(psi) * np.cos(om), np.sin(psi) * np.sin(om), np.cos(psi)])
+        tilted = np.array([np.sin(psi) * np.cos(om), np.sin(psi) * np.sin(om), np.cos(psi)])
         # count (deg, in the counting sense) at which face j stands square to the AC
         step = 360.0 / n
         self.face_count_deg = self.counting * (np.arange(n) * step + self.face_dev_arcsec / 3600.0)
         # face normals with the shaft at count 0: turning by the face's count brings it to +x
         beta = -self.handedness * np.radians(self.face_count_deg)
         self.normals = np.vstack([np.cos(beta), np.sin(beta), np.zeros(n)])
+        if self.frame == "polygon":
+            self.axis = tilted
+        else:
+            self.axis = np.array([0.0, 0.0, 1.0])
+            self.normals = rotate(self.normals, np.array([-np.sin(om), np.cos(om), 0.0]), psi)
+            assert np.allclose(self.normals.T @ tilted, 0.0, atol=1e-12)  # square to its axis
+        basis = np.eye(3)  # columns: line of sight d, horizontal h, vertical u
+        basis = rotate(basis, np.array([0.0, 1.0, 0.0]), -np.radians(self.ac_pitch_deg))
+        self.ac_basis = rotate(basis, basis[:, 0], self.ac_roll_arcsec * ARCSEC)
+
+    def ac_reading_arcsec(self, normal: np.ndarray) -> tuple[float, float]:
+        """What the AC reads (horizontal, vertical) for a face normal, before its zero and
+        senses: the normal's direction in the AC's own basis."""
+        d, h, u = (normal @ self.ac_basis[:, i] for i in range(3))
+        return float(np.arctan2(h, d) / ARCSEC), float(np.arctan2(u, d) / ARCSEC)
+
+    def tilt_test_roll_arcmin(self, tilt_arcsec: float = 300.0) -> float:
+        """The AC's roll as a technician measures it: tip a mirror square to the line of
+        sight about the lab's horizontal axis y and watch both readings; the horizontal
+        reading's change per unit change of the vertical one, as an angle (′), in the
+        readings' own senses."""
+        mirror = self.ac_basis[:, [0]]
+        before = self.ac_reading_arcsec(mirror[:, 0])
+        after = self.ac_reading_arcsec(rotate(mirror, np.array([0.0, 1.0, 0.0]),
+                                              -tilt_arcsec * ARCSEC)[:, 0])
+        dx = self.handedness * (after[0] - before[0])
+        dy = self.vertical_sense * (after[1] - before[1])
+        return float(np.arctan(dx / dy) / ARCSEC / 60.0)
 
     def truth_arcsec(self, zero_face: int = 1) -> np.ndarray:
         """The true encoder error at faces 1…n relative to ``zero_face`` (forward)."""
@@ -74,8 +114,7 @@ class PolygonRig:
         stop = self.rng.uniform(-self.positioning_arcsec, self.positioning_arcsec)
         count = self.face_count_deg[j] + stop / 3600.0  # the shaft's true turn, counting sense
         normal = rotate(self.normals[:, [j]], self.axis, self.handedness * np.radians(count))[:, 0]
-        azimuth = np.arctan2(normal[1], normal[0]) / ARCSEC
-        elevation = np.arctan2(normal[2], np.hypot(normal[0], normal[1])) / ARCSEC
+        azimuth, elevation = self.ac_reading_arcsec(normal)
         noise = self.rng.normal(0.0, self.noise_arcsec, 2) if self.noise_arcsec else np.zeros(2)
         ac_x = self.handedness * azimuth + self.ac_zero_x_arcsec + drift_x_arcsec + noise[0]
         ac_y = self.vertical_sense * elevation + self.ac_zero_y_arcsec + noise[1]
