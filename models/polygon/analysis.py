@@ -28,6 +28,7 @@ from models.polygon.model import (
     wrap_deg,
 )
 from models.polygon.report import polygon_certificate
+from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
@@ -88,6 +89,7 @@ PARAMETERS = (
               step=0.5, cli_name="ac-roll",
               help="Largest roll of the autocollimator's reticle: it turns part of the vertical "
                    "reading into the horizontal one (budget input)"),
+    REPEATS_PARAMETER,
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
@@ -281,6 +283,9 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
     s = _settings(settings)
     grade = s["grade"]
+    parsed, repeats = average_repeats(
+        parsed, s["readings_per_point"], ("position", "set", "direction"),
+        ("encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec", "ac_y_arcsec"), angles=("encoder_deg",))
     if parsed.n < 3:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; a polygon test needs at least 3 positions"),
@@ -344,8 +349,22 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         accuracy_ok=stats.peak_to_peak / 2.0 <= tol, tilt_verdict=verdict, valid=valid,
         counting=counting, zero_face=zero_face, spread_drift=spread,
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), closure_rows=closure_rows,
-        warnings=warnings,
+        warnings=warnings, repeats=repeats,
+        repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
+
+
+def _repeat_s_mean(parsed: ParsedReadings, repeats: Any, faces: int) -> np.ndarray:
+    """(sets, faces): the s/√n of each averaged reading's encoder and autocollimator x
+    readings together, √(s_a² + s_x²) in arcseconds, at its face."""
+    s_a = 3600.0 * repeats.s_mean["encoder_deg"]
+    s_x = repeats.s_mean["ac_x_arcsec"]
+    split = split_sets(parsed)
+    out = np.zeros((len(split), faces))
+    for k, (_, rows, _) in enumerate(split):
+        faces_read = parsed["position"][rows].astype(int) - 1
+        out[k, faces_read] = np.hypot(s_a[rows], s_x[rows])
+    return out
 
 
 def iso230_figures(result: PolygonResult) -> dict[str, float]:

@@ -401,6 +401,10 @@ class PolygonResult:
     ac_roll_arcmin: float = 1.0  # stated limit of the autocollimator reticle's roll (budget)
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
     warnings: list[str] = field(default_factory=list)
+    # with n readings per point (setting readings per point): RepeatedReadings, and each
+    # set's s/√n per position (sets, faces) of its encoder and autocollimator readings
+    repeats: object = None
+    repeat_s_mean_arcsec: np.ndarray | None = None
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

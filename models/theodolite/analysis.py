@@ -10,6 +10,7 @@ import numpy as np
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError
+from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.report import theodolite_certificate
@@ -52,6 +53,7 @@ PARAMETERS = (
     Parameter("accuracy_arcsec", "theodolite accuracy (1σ)", "float", 0.5, "\"", 0.0, 3600.0,
               decimals=2, step=0.1,
               help="Residuals far above it (3×) raise a warning; 0: no check"),
+    REPEATS_PARAMETER,
 )
 
 
@@ -61,6 +63,10 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
+    parsed, repeats = average_repeats(parsed, s["readings_per_point"],
+                                      ("theta_deg", "run", "direction"),
+                                      ("azimuth_deg", "elevation_deg"),
+                                      angles=("azimuth_deg", "elevation_deg"))
     if parsed.n < 4:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; at least 4 are needed"),
@@ -71,7 +77,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     reference = int(s["reference_row"])
     reference_index = None
     if reference > 0:
-        matches = np.nonzero(parsed.row_index == reference - 1)[0]
+        matches = (np.nonzero(parsed.row_index == reference - 1)[0] if repeats is None else
+                   np.nonzero(np.any(repeats.rows == reference - 1, axis=1))[0])
         if matches.size == 0:
             raise SettingsError(message(
                 QT_TR_NOOP("reference row {reference} is blank, unreadable or missing"),
@@ -90,6 +97,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     runs = parsed["run"]
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
+    result.repeats = repeats
     return result
 
 
