@@ -6,7 +6,11 @@ plus *Parameters*, *Uncertainty budget* and *Certificate* sheets. Angles are
 written in the unit the user chose to read them in (arcseconds unless told),
 each header naming it.
 
-Numbers are written as numbers. Any text cell that starts with ``=``, ``+``,
+Numbers are written as numbers. The *Parameters*, *Statistics* and *Uncertainty
+budget* tables are printed text on the certificate ("+3.77627 V", "-0.12\" … +0.34\"");
+on the sheets each figure becomes a number cell, its unit goes to the column's header
+(or, where the rows' units differ, to a unit column next to it), and a range, a pair
+or a value ± U is split into columns (see :func:`split_figures`). Any text cell that starts with ``=``, ``+``,
 ``-``, ``@``, a tab or a carriage return is prefixed with an apostrophe so a
 spreadsheet shows it as text instead of running it as a formula (CSV/formula
 injection, OWASP). Files are written atomically.
@@ -16,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import re
 from pathlib import Path
 
@@ -25,7 +30,7 @@ from models.certificate.document import CertificateDocument, budget_table
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
 from models.project.atomic_write import write_bytes_atomic
 
-__all__ = ["XLSX_MAX_ROWS", "neutralise", "write_results_csv", "write_results_xlsx"]
+__all__ = ["XLSX_MAX_ROWS", "neutralise", "split_figures", "write_results_csv", "write_results_xlsx"]
 
 XLSX_MAX_ROWS = 1_048_576
 _FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
@@ -42,6 +47,72 @@ def neutralise(text: object) -> str:
 
 
 ARCSEC = ANGLE_UNITS["arcsec"]
+
+# a figure as the certificate prints it: a number, perhaps signed, perhaps with its unit
+_UNIT = r"(?:\"|″|°|%|µrad|μrad|urad|mdeg|arcsec|deg|rad|mV|V|nm|µm|μm|um|mm)"
+_FIGURE = re.compile(r"\s*([+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?)\s?(" + _UNIT + r")?\s*")
+# what joins two figures in one cell, and what the two columns it becomes are called
+_JOINS = {" … ": ("from", "to"), " ± ": ("value", "U"), " / ": ("first", "second")}
+
+
+def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
+    """The figures a certificate's cell states, as (numbers, their unit, how they are
+    joined): ``"+3.77627 V"`` → ((3.77627,), "V", ""); ``"-0.12\" … +0.34\""`` →
+    ((-0.12, 0.34), "\"", " … "); ``None`` for a cell that is not figures alone (a word,
+    a sentence, a checksum), which then stays text."""
+    join = next((j for j in _JOINS if j in text), "")
+    parts = text.split(join) if join else [text]
+    values, units = [], set()
+    for part in parts:
+        found = _FIGURE.fullmatch(part)
+        if found is None:
+            return None
+        values.append(float(found.group(1).replace("−", "-")))
+        if found.group(2):
+            units.add(found.group(2))
+    if len(units) > 1 or not all(math.isfinite(v) for v in values):
+        return None
+    return tuple(values), units.pop() if units else "", join
+
+
+def _figure_columns(header: tuple[str, ...],
+                    rows: list[tuple[object, ...]]) -> tuple[list[str], list[list[object]]]:
+    """A printed table made calculable: each column whose cells are figures becomes number
+    columns (one per figure of a range or a pair) with the unit in its header, or in a unit
+    column of its own where the rows' units differ; other cells stay as they are."""
+    width = max([len(header), *map(len, rows)])
+    out_header: list[str] = []
+    out_rows: list[list[object]] = [[] for _ in rows]
+    for j in range(width):
+        name = header[j] if j < len(header) else ""
+        cells = [row[j] if j < len(row) else None for row in rows]
+        figures = [split_figures(c) if isinstance(c, str) else None for c in cells]
+        found = [f for f in figures if f is not None]
+        if not found:
+            out_header.append(name)
+            for out, cell in zip(out_rows, cells, strict=True):
+                out.append(cell)
+            continue
+        count = max(len(f[0]) for f in found)
+        joins = {f[2] for f in found if f[2]}
+        units = {f[1] for f in found}
+        labels = (_JOINS[joins.pop()] if len(joins) == 1 else
+                  tuple(f"{i + 1}" for i in range(count)))
+        unit = units.pop() if len(units) == 1 else None
+        base = name or "Value"
+        for i in range(count):
+            title = base if count == 1 else f"{base} ({labels[i]})"
+            out_header.append(f"{title} ({unit})" if unit else title)
+        if unit is None:
+            out_header.append(f"{base}: unit")
+        for out, cell, figure in zip(out_rows, cells, figures, strict=True):
+            if figure is None:
+                out += [None if cell == "" else cell] + [None] * (count - 1)
+            else:
+                out += list(figure[0]) + [None] * (count - len(figure[0]))
+            if unit is None:
+                out.append(figure[1] if figure is not None else None)
+    return out_header, out_rows
 
 
 def _point_columns(document: CertificateDocument,
@@ -147,7 +218,7 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) 
                          ("Uncertainty budget", budget_table(document.budget,
                                                              document.budget_point))):
         ws = book.create_sheet(title)
-        header, rows = table_in_unit(table.header, table.rows, unit)
+        header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit))
         ws.append([neutralise(h) for h in header])
         for row in rows:
             ws.append([_cell(v) for v in row])

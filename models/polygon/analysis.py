@@ -29,6 +29,7 @@ from models.polygon.model import (
     wrap_deg,
 )
 from models.polygon.report import polygon_certificate, setup_statement
+from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
@@ -108,6 +109,7 @@ PARAMETERS = (
               decimals=2, step=0.1, cli_name="ac-roll-u", zero="not measured",
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
+    REPEATS_PARAMETER,
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
@@ -310,6 +312,9 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
     s = _settings(settings)
     grade = s["grade"]
+    parsed, repeats = average_repeats(
+        parsed, s["readings_per_point"], ("position", "set", "direction"),
+        ("encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec", "ac_y_arcsec"), angles=("encoder_deg",))
     if parsed.n < 3:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; a polygon test needs at least 3 positions"),
@@ -391,7 +396,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
-        warnings=warnings,
+        warnings=warnings, repeats=repeats,
+        repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
 
 
@@ -413,6 +419,19 @@ def certificate_doubt(result: PolygonResult) -> str:
     errors = np.concatenate([r.error_arcsec for r in result.sets])
     corrected = np.concatenate([r.corrected_error_arcsec for r in result.sets])
     return _implausible(errors, corrected, result.faces)
+
+
+def _repeat_s_mean(parsed: ParsedReadings, repeats: Any, faces: int) -> np.ndarray:
+    """(sets, faces): the s/√n of each averaged reading's encoder and autocollimator x
+    readings together, √(s_a² + s_x²) in arcseconds, at its face."""
+    s_a = 3600.0 * repeats.s_mean["encoder_deg"]
+    s_x = repeats.s_mean["ac_x_arcsec"]
+    split = split_sets(parsed)
+    out = np.zeros((len(split), faces))
+    for k, (_, rows, _) in enumerate(split):
+        faces_read = parsed["position"][rows].astype(int) - 1
+        out[k, faces_read] = np.hypot(s_a[rows], s_x[rows])
+    return out
 
 
 def iso230_figures(result: PolygonResult) -> dict[str, float]:

@@ -499,6 +499,10 @@ class PolygonResult:
     u_ac_roll_arcmin: float = 0.0  # its standard uncertainty
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
     warnings: list[str] = field(default_factory=list)
+    # with n readings per point (setting readings per point): RepeatedReadings, and each
+    # set's s/√n per position (sets, faces) of its encoder and autocollimator readings
+    repeats: object = None
+    repeat_s_mean_arcsec: np.ndarray | None = None
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

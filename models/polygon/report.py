@@ -55,7 +55,8 @@ from models.polygon.plots import corrected_with_uncertainty, error_figure, resid
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec", "setup_statement"]
+__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec",
+           "repeated_readings_components", "setup_statement"]
 
 METHOD = QT_TR_NOOP(
     "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
@@ -139,6 +140,31 @@ def _effective_sets(directions: np.ndarray) -> float:
     if up and down:
         return 4.0 / (1.0 / up + 1.0 / down)
     return float(up + down)
+
+
+def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]:
+    """With n readings at each face (setting *readings per point*): the standard deviation of
+    the mean s/√n of each face's encoder and autocollimator readings, carried to the mean
+    over the sets (√(Σ u²)/m), and at the zero reading that every error shares; Type A with
+    ν = n − 1, separate from the sets' repeatability."""
+    u = result.repeat_s_mean_arcsec
+    if result.repeats is None or u is None:
+        return []
+    n = result.repeats.n
+    zero = _zero_index(result)
+    not_zero = np.ones(result.faces)
+    not_zero[zero] = 0.0
+    return [
+        BudgetComponent(QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal",
+                        np.sqrt(np.sum(u**2, axis=0)) / u.shape[0], 1.0, 1.0, float(n - 1),
+                        message(QT_TR_NOOP("s/√n of the {n} encoder and autocollimator readings "
+                                           "at each face, over the sets; ν = {dof}"),
+                                n=n, dof=n - 1)),
+        BudgetComponent(QT_TR_NOOP("Repeated readings at the zero face (s/√n)"), "A", "normal",
+                        float(u[0, zero]), 1.0, not_zero, float(n - 1),
+                        message(QT_TR_NOOP("s/√n of the {n} readings at face {face} of set 1, "
+                                           "shared by every set"), n=n, face=result.zero_face),
+                        common=True)]
 
 
 def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[BudgetComponent], float]:
@@ -248,6 +274,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
                                                from_first)
     noise_components, noise = _noise_components(result, n, zero)
     components += noise_components
+    components += repeated_readings_components(result)
     u_pyr = _pyramidal_uncertainty(result)
     if u_pyr is not None:
         components.append(BudgetComponent(

@@ -24,6 +24,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import positioning_certificate
+from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 
 __all__ = ["POSITIONING"]
@@ -95,6 +96,7 @@ PARAMETERS = (
                    "magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, "
                    "modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, "
                    "max_points=1500 (ISG); axis=X (Mach4)"),
+    REPEATS_PARAMETER,
 )
 
 #: A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit
@@ -202,6 +204,8 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
     s = POSITIONING.checked_settings(settings)
+    parsed, repeats = average_repeats(parsed, s["readings_per_point"],
+                                      ("target", "run", "direction"), ("deviation", "measured"))
     if parsed.n < 2:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; a positioning test needs at least two targets"),
@@ -225,6 +229,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
     runs = _runs(parsed, targets, directions)
     result = evaluate(targets, runs, directions, deviations, parsed.row_index.copy(),
                       s["target_unit"], s["deviation_unit"], s["standard"], warnings)
+    if repeats is not None:
+        scale = DEVIATION_UNITS[s["deviation_unit"]][1]
+        result.repeats = repeats
+        result.repeat_s_mean = np.where(np.isfinite(parsed["deviation"].astype(float)),
+                                        repeats.s_mean["deviation"],
+                                        repeats.s_mean["measured"] * scale)
     for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),

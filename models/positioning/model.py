@@ -154,6 +154,10 @@ class PositioningResult:
     standard: str
     least_runs: dict[str, int]  # direction ("up"/"down") → fewest runs at any target
     warnings: list[str] = field(default_factory=list)
+    # RepeatedReadings when each reading is the mean of n (setting readings per point), with
+    # each averaged reading's s/√n in the deviation unit as repeat_s_mean
+    repeats: object = None
+    repeat_s_mean: np.ndarray | None = None
 
     @property
     def positions(self) -> np.ndarray:

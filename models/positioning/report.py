@@ -38,7 +38,8 @@ from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate"]
+__all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate",
+           "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
     "The axis is sent to each target position in turn, in runs that approach every target "
@@ -99,8 +100,31 @@ def positioning_budget(result: PositioningResult,
                            "fewest runs"),
                 n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
                 else f"{int(np.min(n))}…{int(np.max(n))}")))
+    components += repeated_readings_components(result)
     components += resolution_component(metadata, 1.0)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
+
+
+def repeated_readings_components(result: PositioningResult) -> list[BudgetComponent]:
+    """With n readings at each approach (setting *readings per point*): the standard deviation
+    of the mean of those readings, s/√n, carried to each target and direction's x̄ over its
+    runs (√(Σ u²)/runs), Type A with ν = n − 1. The runs' scatter, a separate input, already
+    holds what of it varies from run to run: counted again here, on the safe side."""
+    if result.repeats is None or result.repeat_s_mean is None:
+        return []
+    key = np.round(result.targets, 9)
+    positions = np.round(result.positions, 9)
+    values = []
+    for _, sign, _ in result.directions_present():
+        for target in positions:
+            here = (key == target) & (np.sign(result.directions) == sign)
+            u = result.repeat_s_mean[here]
+            values.append(float(np.sqrt(np.sum(u**2)) / u.size) if u.size else 0.0)
+    n = result.repeats.n
+    return [BudgetComponent(
+        QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal", np.array(values), 1.0, 1.0,
+        float(n - 1), message(QT_TR_NOOP("s/√n of the {n} readings at each approach, over the "
+                                         "runs of the target; ν = {dof}"), n=n, dof=n - 1))]
 
 
 def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:

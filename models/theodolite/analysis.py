@@ -10,6 +10,7 @@ import numpy as np
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError
+from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.report import theodolite_certificate
@@ -57,6 +58,7 @@ PARAMETERS = (
                    "states it (basis u, the same figure); residuals above 3× it raise a warning; "
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
+    REPEATS_PARAMETER,
 )
 
 
@@ -66,6 +68,10 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteResult:
     s = _settings(settings)
+    parsed, repeats = average_repeats(parsed, s["readings_per_point"],
+                                      ("theta_deg", "run", "direction"),
+                                      ("azimuth_deg", "elevation_deg"),
+                                      angles=("azimuth_deg", "elevation_deg"))
     if parsed.n < 4:
         raise ValueError(message(
             QT_TR_NOOP("{n} usable readings; at least 4 are needed"),
@@ -76,7 +82,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     reference = int(s["reference_row"])
     reference_index = None
     if reference > 0:
-        matches = np.nonzero(parsed.row_index == reference - 1)[0]
+        matches = (np.nonzero(parsed.row_index == reference - 1)[0] if repeats is None else
+                   np.nonzero(np.any(repeats.rows == reference - 1, axis=1))[0])
         if matches.size == 0:
             raise SettingsError(message(
                 QT_TR_NOOP("reference row {reference} is blank, unreadable or missing"),
@@ -96,6 +103,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     runs = parsed["run"]
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
+    result.repeats = repeats
     return result
 
 

@@ -428,6 +428,7 @@ class TheodoliteResult:
     warnings: list[str] = field(default_factory=list)
     runs: np.ndarray | None = None  # per used row, when the readings name their runs
     directions: np.ndarray | None = None  # ±1 per used row, when stated
+    repeats: object = None  # RepeatedReadings when each point is the mean of n readings
 
 
 def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:

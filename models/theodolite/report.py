@@ -46,7 +46,7 @@ from models.theodolite.plots import corrected_with_uncertainty, error_figure, re
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["theodolite_budget", "theodolite_certificate"]
+__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate"]
 
 METHOD = QT_TR_NOOP(
     "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
@@ -118,8 +118,31 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
         QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
                                   "ζ(θ)")))
+    components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+def repeated_readings_components(result: TheodoliteResult) -> list[BudgetComponent]:
+    """With n readings at each θ point (setting *readings per point*): the standard deviation
+    of the mean azimuth s/√n at each point, and at the reference point that every error
+    shares, Type A with ν = n − 1 (the elevations' scatter reaches the errors only through
+    the identified set-up, whose own input covers it)."""
+    repeats = result.repeats
+    if repeats is None:
+        return []
+    s_mean = 3600.0 * repeats.s_mean["azimuth_deg"]
+    single = _not_reference(result)
+    note = message(QT_TR_NOOP("s/√n of the {n} azimuth readings at each point, ν = {dof}"),
+                   n=repeats.n, dof=repeats.dof)
+    return [
+        BudgetComponent(QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal", s_mean * single,
+                        1.0, single, float(repeats.dof), note),
+        BudgetComponent(QT_TR_NOOP("Repeated readings at θ₀ (s/√n)"), "A", "normal",
+                        float(s_mean[result.reference_index]), 1.0, single, float(repeats.dof),
+                        message(QT_TR_NOOP("s/√n of the {n} readings at the reference point, "
+                                           "shared by every point"), n=repeats.n),
+                        common=True)]
 
 
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
