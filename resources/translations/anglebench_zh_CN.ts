@@ -4818,8 +4818,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>其和为 {turn}（3620 = {ref}，3621 = {first}）</translation>
     </message>
     <message>
-        <source>FANUC pitch error compensation, axis {axis}, points {first}…{last}, reference point {ref}; the compensation at the reference position ({offset} in the axis unit) is not pitch error and is not written</source>
-        <translation>FANUC 螺距误差补偿，轴 {axis}，补偿点 {first}…{last}，参考点 {ref}；参考点位置处的补偿量（{offset}，轴单位）不属于螺距误差，未写入</translation>
+        <source>FANUC pitch error compensation, axis {axis}, points {first}…{last}, reference point {ref}; the compensation at the reference position ({offset}) is not pitch error: it is left out of the table</source>
+        <translation>FANUC 螺距误差补偿，轴 {axis}，补偿点 {first}…{last}，参考点 {ref}；参考点位置处的补偿量（{offset}）不属于螺距误差，不计入表中</translation>
     </message>
     <message>
         <source>axis key (column name), e.g. X or C</source>

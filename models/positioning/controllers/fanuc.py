@@ -44,6 +44,7 @@ from models.positioning.controllers.common import (
     parse_options,
     refuse,
 )
+from models.positioning.model import DEVIATION_UNITS
 
 NAME = "FANUC"
 SOURCE = "FANUC Parameter Manual, pitch error compensation 3620-3625"
@@ -75,7 +76,7 @@ class Plan:
     values: dict[int, int]  # point number → stored value
     value_limit: int
     max_points: int
-    reference_deviation: float = 0.0  # the compensation at the reference, not written
+    reference_deviation: str = ""  # the compensation at the reference (text), not written
 
 
 def build(table, options) -> Plan:
@@ -119,7 +120,8 @@ def build(table, options) -> Plan:
         values = {first + i: int(increments[i]) for i in range(k)}
     return Plan(o["axis"], o["detection_unit"], o["magnification"], ref_no, first, last,
                 step / o["detection_unit"], o["modulo"] / o["detection_unit"] if rotary else 0.0,
-                values, o["value_limit"], o["max_points"], float(comp[r]))
+                values, o["value_limit"], o["max_points"],
+                f"{comp[r] * DEVIATION_UNITS[table.deviation_unit][1]:.3g} {table.deviation_unit}")
 
 
 def lint(plan: Plan) -> Plan:
@@ -171,7 +173,7 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     plan = lint(build(table, options))
     what = message(QT_TR_NOOP("FANUC pitch error compensation, axis {axis}, points {first}…{last}, "
                               "reference point {ref}; the compensation at the reference position "
-                              "({offset} in the axis unit) is not pitch error and is not written"),
+                              "({offset}) is not pitch error: it is left out of the table"),
                    axis=plan.axis, first=plan.most_negative, last=plan.most_positive,
-                   ref=plan.reference_number, offset=f"{plan.reference_deviation:.6g}")
+                   ref=plan.reference_number, offset=plan.reference_deviation)
     return [("", render(plan))], joined((what,))
