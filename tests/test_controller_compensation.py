@@ -232,6 +232,10 @@ def test_lints_refuse_naming_the_rule(tmp_path):
         CONTROLLERS["heidenhain"].write(rotary, "")
     with pytest.raises(ControllerRuleError, match="P-COMP-00059 = 20"):
         CONTROLLERS["isg"].write(rotary, "max_points=20")
+    with pytest.raises(ControllerRuleError, match="modulo=-360 is below 0"):
+        sinumerik.write(rotary, "modulo=-360")
+    with pytest.raises(ControllerRuleError, match="magnification=0 is below 1"):
+        fanuc.write(rotary, "magnification=0")
     with pytest.raises(ControllerRuleError, match="unknown option 'axle'"):
         CONTROLLERS["mach4"].write(rotary, "axle=X")
     uneven = compensation_table(measure("linear", targets=np.array([0, 50, 120, 200.0])),

@@ -4686,6 +4686,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{controller} 选项：{key}={value} 不是数字</translation>
     </message>
     <message>
+        <source>{controller} options: {key}={value} is below {minimum}</source>
+        <translation>{controller} 选项：{key}={value} 小于 {minimum}</translation>
+    </message>
+    <message>
         <source>equidistant points ({source})</source>
         <translation>等间距补偿点（{source}）</translation>
     </message>

@@ -49,17 +49,21 @@ from models.positioning.model import DEVIATION_UNITS
 NAME = "FANUC"
 SOURCE = "FANUC Parameter Manual, pitch error compensation 3620-3625"
 OPTIONS = (
-    Option("axis", "int", 1, QT_TR_NOOP("controlled axis number of the parameter tape (A1, A2 …)")),
-    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001")),
-    Option("magnification", "int", 1, QT_TR_NOOP("parameter 3623, pitch error compensation magnification")),
+    Option("axis", "int", 1, QT_TR_NOOP("controlled axis number of the parameter tape (A1, A2 …)"),
+           minimum=1),
+    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001"),
+           minimum=1e-09),
+    Option("magnification", "int", 1, QT_TR_NOOP("parameter 3623, pitch error compensation magnification"),
+           minimum=1),
     Option("reference", "float", 0.0, QT_TR_NOOP("reference position (machine coordinate); it must be a "
                                                  "point of the table")),
     Option("reference_number", "int", -1, QT_TR_NOOP("parameter 3620 (−1: chosen so that the "
-                                                      "numbers start at 0 or 1)")),
-    Option("value_limit", "int", 7, QT_TR_NOOP("largest stored value of one point, in detection units")),
-    Option("max_points", "int", 128, QT_TR_NOOP("most compensation points of one axis")),
+                                                      "numbers start at 0 or 1)"), minimum=-1),
+    Option("value_limit", "int", 7, QT_TR_NOOP("largest stored value of one point, in detection units"),
+           minimum=1),
+    Option("max_points", "int", 128, QT_TR_NOOP("most compensation points of one axis"), minimum=2),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's travel per revolution, e.g. 360 "
-                                              "(parameter 3625; 0: linear)")),
+                                              "(parameter 3625; 0: linear)"), minimum=0),
 )
 
 
