@@ -17,11 +17,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table, write_compensation
 from models.positioning.controllers import CONTROLLERS, fanuc, sinumerik
-from models.positioning.controllers.common import ControllerRuleError
+from models.positioning.controllers.common import ControllerRuleError, parse_options
 from models.readings.sheet import ReadingsSheet
 from models.validation.positioning_rig import AxisRig
 from tests import controller_emulators as emu
@@ -230,6 +232,10 @@ def test_lints_refuse_naming_the_rule(tmp_path):
         CONTROLLERS["heidenhain"].write(rotary, "")
     with pytest.raises(ControllerRuleError, match="P-COMP-00059 = 20"):
         CONTROLLERS["isg"].write(rotary, "max_points=20")
+    with pytest.raises(ControllerRuleError, match="modulo=-360 is below 0"):
+        sinumerik.write(rotary, "modulo=-360")
+    with pytest.raises(ControllerRuleError, match="magnification=0 is below 1"):
+        fanuc.write(rotary, "magnification=0")
     with pytest.raises(ControllerRuleError, match="unknown option 'axle'"):
         CONTROLLERS["mach4"].write(rotary, "axle=X")
     uneven = compensation_table(measure("linear", targets=np.array([0, 50, 120, 200.0])),
@@ -281,3 +287,52 @@ def test_the_turn_is_closed_from_a_log_without_its_end_and_the_table_starts_at_z
     assert c.offset(359.999999, 1) == pytest.approx(c.offset(0.0, 1), abs=1e-9)
     assert c.offset(370.0, 1) == pytest.approx(c.offset(10.0, 1), abs=1e-12)
     assert math.isclose(c.offset(0.0, 1), -before.iso.bidirectional_mean[0] / 3600, abs_tol=1e-7)
+
+
+def test_what_a_lint_refuses_the_emulated_controller_refuses_too():
+    """The lints' limits are the controllers': the same table rendered past the lint is
+    refused (or would be misapplied) by the emulated controller."""
+    rotary = _table()
+    plan = sinumerik.build(rotary, "modulo=360,max_points=20")
+    with pytest.raises(ControllerRuleError):
+        sinumerik.lint(plan)
+    with pytest.raises(emu.ControllerAlarm):
+        emu.load_sinumerik(sinumerik.render(plan), md38000=20)
+    heidenhain = CONTROLLERS["heidenhain"]
+    plan = heidenhain.build(_table("linear", step=2.0), "values=error")
+    with pytest.raises(ControllerRuleError):
+        heidenhain.lint(plan)
+    com, cma = heidenhain.render(plan, "X.COM")
+    with pytest.raises(emu.ControllerAlarm, match="256"):
+        emu.load_heidenhain(com, cma, "X", "error")
+    isg = CONTROLLERS["isg"]
+    plan = isg.build(rotary, "modulo=360,max_points=25")
+    with pytest.raises(ControllerRuleError):
+        isg.lint(plan)
+    with pytest.raises(emu.ControllerAlarm):
+        emu.load_isg(isg.render(plan), max_points=25)
+    plan = fanuc.build(rotary, "modulo=360,detection_unit=0.00001,value_limit=7")
+    with pytest.raises(ControllerRuleError):
+        fanuc.lint(plan)
+    with pytest.raises(emu.ControllerAlarm):
+        emu.load_fanuc(fanuc.render(plan), 0.0, 1e-5, value_limit=7)
+    # a table for the measuring system the axis lacks: refused by the lint, and the
+    # controller would never apply it
+    plan = sinumerik.build(rotary, "modulo=360,system=2")
+    with pytest.raises(ControllerRuleError):
+        sinumerik.lint(plan)
+    assert emu.load_sinumerik(sinumerik.render(plan)).offset(90.0, 1) == 0.0
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.text(max_size=60))
+def test_options_text_never_crashes(text):
+    """Whatever is typed as options is read or refused with a message naming the
+    controller, never a crash."""
+    for module in CONTROLLERS.values():
+        try:
+            got = parse_options(module.NAME, module.OPTIONS, text)
+        except ControllerRuleError as exc:
+            assert str(exc).startswith(module.NAME)
+        else:
+            assert set(got) == {o.key for o in module.OPTIONS}

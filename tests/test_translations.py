@@ -36,6 +36,7 @@ KEPT = {
     "urad", "arcsec", "sha", "SHA", "MPE", "Ctrl", "Shift", "Tab", "PgDn", "PgUp", "postgresql",
     "user", "host", "database", "YYYY", "English", "Chinese", "position", "deviation_arcsec",
     "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
+    "SINUMERIK", "FANUC", "HEIDENHAIN", "TNC", "COM", "CMA", "Beckhoff", "TwinCAT", "ISG", "Mach",
 }
 # widgets whose text is the user's or the result's (readings, names typed, the models'
 # narrative of the result), not the window's

@@ -48,12 +48,12 @@
         <translation>B1 (cos)</translation>
     </message>
     <message>
-        <source>CSV (position, compensation)</source>
-        <translation>CSV（位置，补偿值）</translation>
+        <source>Beckhoff TwinCAT Tc2_MC2 position compensation table</source>
+        <translation>Beckhoff TwinCAT Tc2_MC2 位置补偿表</translation>
     </message>
     <message>
-        <source>CSV always works; LinuxCNC&apos;s joint compensation file (COMP_FILE_TYPE = 0, documented in the LinuxCNC INI configuration manual) lists nominal, actual forward and actual reverse positions</source>
-        <translation>CSV 总是可用；LinuxCNC 关节补偿文件（COMP_FILE_TYPE = 0，见 LinuxCNC INI 配置手册）列出名义位置、正向实际位置和反向实际位置</translation>
+        <source>CSV (position, compensation)</source>
+        <translation>CSV（位置，补偿值）</translation>
     </message>
     <message>
         <source>Closure limit per grade, comma-separated; default half the grade&apos;s accuracy</source>
@@ -90,6 +90,10 @@
     <message>
         <source>Exact linear least squares, or the seed&apos;s particle swarm (first period only, for comparison)</source>
         <translation>精确线性最小二乘，或论文中的粒子群算法（仅第一个周期，用于比较）</translation>
+    </message>
+    <message>
+        <source>FANUC pitch error compensation (parameters 3620–3625)</source>
+        <translation>FANUC 螺距误差补偿（参数 3620–3625）</translation>
     </message>
     <message>
         <source>Faces of the polygon; 0: as many as the first set has positions</source>
@@ -719,6 +723,10 @@
         <translation>经纬仪对反射镜置零的行；0：θ 最接近 0 的行</translation>
     </message>
     <message>
+        <source>SINUMERIK 840D measuring system error compensation</source>
+        <translation>SINUMERIK 840D 测量系统误差补偿</translation>
+    </message>
+    <message>
         <source>Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)</source>
         <translation>两个趋近方向各一张表，或由两者平均值得到一张表（补偿值 = −平均偏差）</translation>
     </message>
@@ -729,6 +737,10 @@
     <message>
         <source>Table 1 of the seed: the accuracy judged, and the tilt it allows</source>
         <translation>论文表 1：所判定的准确度及其允许的倾斜</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500 (ISG); axis=X (Mach4)</source>
+        <translation>控制器设置，以逗号分隔的“键=值”；各控制器可用的选项及其说明见导出时弹出的选项表</translation>
     </message>
     <message>
         <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
@@ -960,6 +972,10 @@
         <translation>补偿表</translation>
     </message>
     <message>
+        <source>controller options</source>
+        <translation>控制器选项</translation>
+    </message>
+    <message>
         <source>corrected</source>
         <translation>修正后</translation>
     </message>
@@ -1070,6 +1086,22 @@
     <message>
         <source>elevation E</source>
         <translation>俯仰角 E</translation>
+    </message>
+    <message>
+        <source>CSV always works; LinuxCNC&apos;s joint compensation file (COMP_FILE_TYPE = 0, documented in the LinuxCNC INI configuration manual) lists nominal, actual forward and actual reverse positions; the controllers&apos; formats follow their manuals, and a table the controller would reject or misapply is refused naming the rule</source>
+        <translation>CSV 始终可用；LinuxCNC 关节补偿文件（COMP_FILE_TYPE = 0，见 LinuxCNC INI 配置手册）列出名义位置、正向实际位置和反向实际位置；各控制器格式遵循其手册，控制器会拒绝或误用的表将被拒绝并指明所违反的规则</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN TNC .COM table (and .CMA)</source>
+        <translation>HEIDENHAIN TNC .COM 补偿表（及 .CMA）</translation>
+    </message>
+    <message>
+        <source>ISG kernel leadscrew error compensation list</source>
+        <translation>ISG 内核丝杠误差补偿列表</translation>
+    </message>
+    <message>
+        <source>Mach4 screw map</source>
+        <translation>Mach4 丝杠映射</translation>
     </message>
     <message>
         <source>elevations (recommended)</source>
@@ -2741,8 +2773,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>导出补偿表…</translation>
     </message>
     <message>
-        <source>Compensation = −mean deviation, at the targets or a uniform step, as set above: CSV, or LinuxCNC&apos;s COMP_FILE (type 0)</source>
-        <translation>补偿值 = −平均偏差，按上方设置在目标位置或均匀间隔处给出：CSV 或 LinuxCNC 的 COMP_FILE（类型 0）</translation>
+        <source>Compensation = −mean deviation, at the targets or a uniform step, as set above: CSV, LinuxCNC&apos;s COMP_FILE (type 0), or a controller&apos;s table (SINUMERIK, FANUC, HEIDENHAIN, TwinCAT, ISG, Mach4)</source>
+        <translation>补偿量 = −平均偏差，取于目标点或按上方设定的等步距：CSV、LinuxCNC 的 COMP_FILE（类型 0），或控制器补偿表（SINUMERIK、FANUC、HEIDENHAIN、TwinCAT、ISG、Mach4）</translation>
     </message>
     <message>
         <source>Deviation per target</source>
@@ -2769,8 +2801,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>CSV (*.csv);;所有文件 (*)</translation>
     </message>
     <message>
+        <source>Controller compensation file (*.{ext});;All files (*)</source>
+        <translation>控制器补偿文件 (*.{ext});;所有文件 (*)</translation>
+    </message>
+    <message>
         <source>Export compensation table</source>
         <translation>导出补偿表</translation>
+    </message>
+    <message>
+        <source>{controller}: controller options</source>
+        <translation>{controller}：控制器选项</translation>
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
@@ -4628,6 +4668,338 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>amendment {n}</source>
         <translation>第 {n} 次修订</translation>
+    </message>
+    <message>
+        <source>{controller}: {rule} — {detail}</source>
+        <translation>{controller}：{rule} — {detail}</translation>
+    </message>
+    <message>
+        <source>{controller} options: &apos;{part}&apos; is not KEY=VALUE</source>
+        <translation>{controller} 选项：“{part}”不是 KEY=VALUE 形式</translation>
+    </message>
+    <message>
+        <source>{controller} options: unknown option &apos;{key}&apos;; it takes {known}</source>
+        <translation>{controller} 选项：未知选项“{key}”；可用选项为 {known}</translation>
+    </message>
+    <message>
+        <source>{controller} options: {key}={value} is not a number</source>
+        <translation>{controller} 选项：{key}={value} 不是数字</translation>
+    </message>
+    <message>
+        <source>{controller} options: {key}={value} is below {minimum}</source>
+        <translation>{controller} 选项：{key}={value} 小于 {minimum}</translation>
+    </message>
+    <message>
+        <source>equidistant points ({source})</source>
+        <translation>等间距补偿点（{source}）</translation>
+    </message>
+    <message>
+        <source>the points are not equally spaced: choose a compensation step</source>
+        <translation>补偿点间距不相等：请选择补偿步距</translation>
+    </message>
+    <message>
+        <source>the step divides the turn ({source})</source>
+        <translation>步距须整除一整圈（{source}）</translation>
+    </message>
+    <message>
+        <source>a step of {step} does not divide {period}</source>
+        <translation>步距 {step} 不能整除 {period}</translation>
+    </message>
+    <message>
+        <source>one turn ({source})</source>
+        <translation>一整圈（{source}）</translation>
+    </message>
+    <message>
+        <source>the points {first}…{last} run past one turn of {period}</source>
+        <translation>补偿点 {first}…{last} 超出一整圈 {period}</translation>
+    </message>
+    <message>
+        <source>the two ends of the turn differed by {gap} (axis unit): both set to their mean</source>
+        <translation>整圈两端相差 {gap}（轴单位）：两端均取其平均值</translation>
+    </message>
+    <message>
+        <source>the points {first}…{last} do not reach one turn less one step</source>
+        <translation>补偿点 {first}…{last} 未达到一整圈减一个步距</translation>
+    </message>
+    <message>
+        <source>the end of the turn, {end}, takes the value at its start</source>
+        <translation>整圈终点 {end} 取其起点的值</translation>
+    </message>
+    <message>
+        <source>controlled axis number of the parameter tape (A1, A2 …)</source>
+        <translation>参数带中的控制轴号（A1、A2 …）</translation>
+    </message>
+    <message>
+        <source>detection unit in mm or degrees, e.g. 0.001</source>
+        <translation>检测单位，mm 或度，例如 0.001</translation>
+    </message>
+    <message>
+        <source>parameter 3623, pitch error compensation magnification</source>
+        <translation>参数 3623，螺距误差补偿倍率</translation>
+    </message>
+    <message>
+        <source>reference position (machine coordinate); it must be a point of the table</source>
+        <translation>参考点位置（机床坐标）；必须是表中的一个补偿点</translation>
+    </message>
+    <message>
+        <source>parameter 3620 (−1: chosen so that the numbers start at 0 or 1)</source>
+        <translation>参数 3620（−1：自动选取，使编号从 0 或 1 开始）</translation>
+    </message>
+    <message>
+        <source>largest stored value of one point, in detection units</source>
+        <translation>单个补偿点可存储的最大值，以检测单位计</translation>
+    </message>
+    <message>
+        <source>most compensation points of one axis</source>
+        <translation>单轴最多补偿点数</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s travel per revolution, e.g. 360 (parameter 3625; 0: linear)</source>
+        <translation>旋转轴每转移动量，例如 360（参数 3625；0：直线轴）</translation>
+    </message>
+    <message>
+        <source>one table ({source})</source>
+        <translation>仅一张表（{source}）</translation>
+    </message>
+    <message>
+        <source>export one table from the bidirectional mean; the reversal belongs in parameter 1851 (bidirectional pitch error compensation, 3605#0, is not written)</source>
+        <translation>请由双向平均值导出一张表；反向差值应设于参数 1851（不写入双向螺距误差补偿 3605#0）</translation>
+    </message>
+    <message>
+        <source>detection unit and magnification must be positive</source>
+        <translation>检测单位和倍率必须为正</translation>
+    </message>
+    <message>
+        <source>3620, the reference position is a compensation point ({source})</source>
+        <translation>3620，参考点位置须为补偿点（{source}）</translation>
+    </message>
+    <message>
+        <source>the reference {reference} is not a point of {first}…{last} step {step}{rotary}</source>
+        <translation>参考点 {reference} 不是 {first}…{last}（步距 {step}）中的补偿点{rotary}</translation>
+    </message>
+    <message>
+        <source>; on a rotary axis it is the first point</source>
+        <translation>；旋转轴上参考点须为第一个补偿点</translation>
+    </message>
+    <message>
+        <source>{key} in whole detection units ({source})</source>
+        <translation>{key} 须为检测单位的整数倍（{source}）</translation>
+    </message>
+    <message>
+        <source>{value} detection units</source>
+        <translation>{value} 个检测单位</translation>
+    </message>
+    <message>
+        <source>3621 ≥ 0 ({source})</source>
+        <translation>3621 ≥ 0（{source}）</translation>
+    </message>
+    <message>
+        <source>point numbers would start at {first}: raise reference_number</source>
+        <translation>补偿点编号将从 {first} 开始：请增大 reference_number</translation>
+    </message>
+    <message>
+        <source>at most {max_points} points per axis</source>
+        <translation>每轴最多 {max_points} 个补偿点</translation>
+    </message>
+    <message>
+        <source>{n} points: choose a larger step</source>
+        <translation>{n} 个补偿点：请选择更大的步距</translation>
+    </message>
+    <message>
+        <source>a stored value is at most ±{limit} × 3623 magnification</source>
+        <translation>单个存储值最多为 ±{limit} × 3623 倍率</translation>
+    </message>
+    <message>
+        <source>an increment of {worst} units of {quantum}: raise the magnification or choose a smaller step</source>
+        <translation>增量为 {worst} 个 {quantum} 单位：请增大倍率或选择更小的步距</translation>
+    </message>
+    <message>
+        <source>rotary axis: the values of one revolution sum to zero ({source})</source>
+        <translation>旋转轴：一转内各补偿值之和须为零（{source}）</translation>
+    </message>
+    <message>
+        <source>they sum to {turn} (3620 = {ref}, 3621 = {first})</source>
+        <translation>其和为 {turn}（3620 = {ref}，3621 = {first}）</translation>
+    </message>
+    <message>
+        <source>FANUC pitch error compensation, axis {axis}, points {first}…{last}, reference point {ref}; the compensation at the reference position ({offset}) is not pitch error: it is left out of the table</source>
+        <translation>FANUC 螺距误差补偿，轴 {axis}，补偿点 {first}…{last}，参考点 {ref}；参考点位置处的补偿量（{offset}）不属于螺距误差，不计入表中</translation>
+    </message>
+    <message>
+        <source>axis key (column name), e.g. X or C</source>
+        <translation>轴名（列名），例如 X 或 C</translation>
+    </message>
+    <message>
+        <source>error (actual − target) or correction (−error): as the machine&apos;s manual states</source>
+        <translation>error（实际 − 目标）或 correction（−误差）：按机床手册规定</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s turn, 360 (0: linear)</source>
+        <translation>旋转轴一整圈，360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>{controller} options: values=error or values=correction must be given (the sign of a .COM value could not be verified: take it from the machine&apos;s manual)</source>
+        <translation>{controller} 选项：必须给出 values=error 或 values=correction（.COM 值的符号未能核实：请依机床手册确定）</translation>
+    </message>
+    <message>
+        <source>at most {n} entries per .COM table ({source})</source>
+        <translation>每张 .COM 表最多 {n} 行（{source}）</translation>
+    </message>
+    <message>
+        <source>the positions must ascend</source>
+        <translation>位置必须递增</translation>
+    </message>
+    <message>
+        <source>rotary axis: entries 0…360 only ({source})</source>
+        <translation>旋转轴：仅限 0…360 的条目（{source}）</translation>
+    </message>
+    <message>
+        <source>the table runs {first}…{last}</source>
+        <translation>该表范围为 {first}…{last}</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and its .CMA assignment</source>
+        <translation>HEIDENHAIN .COM 补偿表，轴 {axis}，{n} 行（{sense}），及其 .CMA 分配表</translation>
+    </message>
+    <message>
+        <source>logical axis number (kopf.log_achs_nr)</source>
+        <translation>逻辑轴号（kopf.log_achs_nr）</translation>
+    </message>
+    <message>
+        <source>axis name (kopf.log_achs_name)</source>
+        <translation>轴名（kopf.log_achs_name）</translation>
+    </message>
+    <message>
+        <source>P-COMP-00059 of the axis (default 1500)</source>
+        <translation>该轴的 P-COMP-00059（默认 1500）</translation>
+    </message>
+    <message>
+        <source>a modulo axis&apos;s turn, 360 (0: linear)</source>
+        <translation>模态轴一整圈，360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>{key} in whole units of 0.1 µm / 0.0001° ({source})</source>
+        <translation>{key} 须为 0.1 µm / 0.0001° 的整数倍（{source}）</translation>
+    </message>
+    <message>
+        <source>{value} units</source>
+        <translation>{value} 个单位</translation>
+    </message>
+    <message>
+        <source>kw_nr_max &lt; P-COMP-00059 = {max_points}</source>
+        <translation>kw_nr_max &lt; P-COMP-00059 = {max_points}</translation>
+    </message>
+    <message>
+        <source>modulo table closed ({source})</source>
+        <translation>模态表须闭合（{source}）</translation>
+    </message>
+    <message>
+        <source>the first and last values differ by {gap}</source>
+        <translation>首尾两值相差 {gap}</translation>
+    </message>
+    <message>
+        <source>ISG leadscrew error compensation list, axis {axis}, {n} points{sides}</source>
+        <translation>ISG 丝杠误差补偿列表，轴 {axis}，{n} 个补偿点{sides}</translation>
+    </message>
+    <message>
+        <source>, bilateral</source>
+        <translation>，双向</translation>
+    </message>
+    <message>
+        <source>axis or motor name</source>
+        <translation>轴名或电机名</translation>
+    </message>
+    <message>
+        <source>points = intervals + 1, evenly spaced over the length ({source})</source>
+        <translation>点数 = 区间数 + 1，在长度上等距分布（{source}）</translation>
+    </message>
+    <message>
+        <source>{n} values for {points} points over {length}</source>
+        <translation>{n} 个值对应 {length} 上的 {points} 个点</translation>
+    </message>
+    <message>
+        <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points</source>
+        <translation>Mach4 丝杠映射 {axis}：起点 {start}，长度 {length}，{n} 个点</translation>
+    </message>
+    <message>
+        <source>machine axis name, e.g. AX1 or X1</source>
+        <translation>机床轴名，例如 AX1 或 X1</translation>
+    </message>
+    <message>
+        <source>measuring system the table is for: 1 or 2</source>
+        <translation>该表所属测量系统：1 或 2</translation>
+    </message>
+    <message>
+        <source>measuring systems the axis has (MD30200 NUM_ENCS)</source>
+        <translation>该轴的测量系统数（MD30200 NUM_ENCS）</translation>
+    </message>
+    <message>
+        <source>MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: not checked, the file states what it needs)</source>
+        <translation>该轴的 MD38000 MM_ENC_COMP_MAX_POINTS（0：不检查，文件中注明所需值）</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s turn, e.g. 360 (0: not modulo)</source>
+        <translation>旋转轴一整圈，例如 360（0：非模态）</translation>
+    </message>
+    <message>
+        <source>one table per measuring system ({source})</source>
+        <translation>每个测量系统仅一张表（{source}）</translation>
+    </message>
+    <message>
+        <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH</source>
+        <translation>请由双向平均值导出一张表；反向差值应设于 MD32450 BACKLASH</translation>
+    </message>
+    <message>
+        <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
+        <translation>测量系统（K3；MD30200 NUM_ENCS = {encoders}）</translation>
+    </message>
+    <message>
+        <source>a table for measuring system {system} is never applied on an axis with {encoders}</source>
+        <translation>测量系统 {system} 的表在只有 {encoders} 个测量系统的轴上永远不会生效</translation>
+    </message>
+    <message>
+        <source>STEP divides MAX − MIN ({source})</source>
+        <translation>STEP 须整除 MAX − MIN（{source}）</translation>
+    </message>
+    <message>
+        <source>step {step} over {minimum}…{maximum} with {n} values</source>
+        <translation>步距 {step}，范围 {minimum}…{maximum}，共 {n} 个值</translation>
+    </message>
+    <message>
+        <source>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</source>
+        <translation>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</translation>
+    </message>
+    <message>
+        <source>the values at {minimum} and {maximum} differ by {gap}</source>
+        <translation>{minimum} 与 {maximum} 处的值相差 {gap}</translation>
+    </message>
+    <message>
+        <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
+        <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
+    </message>
+    <message>
+        <source>prefix of the PLC variables, e.g. Axis1</source>
+        <translation>PLC 变量名前缀，例如 Axis1</translation>
+    </message>
+    <message>
+        <source>a modulo axis&apos;s period, e.g. 360 (0: linear)</source>
+        <translation>模态轴周期，例如 360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>&apos;{name}&apos; is not a PLC identifier</source>
+        <translation>“{name}”不是合法的 PLC 标识符</translation>
+    </message>
+    <message>
+        <source>equidistant, monotonically increasing table ({source})</source>
+        <translation>等间距、单调递增的表（{source}）</translation>
+    </message>
+    <message>
+        <source>the positions are not equally spaced and ascending</source>
+        <translation>位置不等间距或不递增</translation>
+    </message>
+    <message>
+        <source>TwinCAT Tc2_MC2 position compensation table(s) {name}, {n} elements</source>
+        <translation>TwinCAT Tc2_MC2 位置补偿表 {name}，{n} 个元素</translation>
     </message>
 </context>
 </TS>

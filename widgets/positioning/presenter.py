@@ -12,7 +12,7 @@ from widgets.i18n import explained, tr, translated
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
 
-#: the file name offered for each format (the controller's own naming where it has one)
+# the file name offered for each format (the controller's own naming where it has one)
 SUGGESTED_NAMES = {"csv": "compensation.csv", "linuxcnc": "compensation.txt",
                    "sinumerik": "AX_EEC.INI", "fanuc": "PITCH.TXT", "heidenhain": "AXIS.COM",
                    "twincat": "compensation_table.st", "isg": "achskw.lis",

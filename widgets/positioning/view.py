@@ -10,7 +10,9 @@ from PySide6.QtWidgets import (
     QDialogButtonBox,
     QFileDialog,
     QFormLayout,
+    QHBoxLayout,
     QHeaderView,
+    QLabel,
     QLineEdit,
     QMessageBox,
     QPushButton,
@@ -88,8 +90,16 @@ class PositioningView(WorkbenchView):
             edit = QLineEdit(value)
             edit.setToolTip(declared(help_text))
             edit.setPlaceholderText(declared(help_text))
-            form.addRow(key, edit)
+            edit.setMinimumWidth(140)
+            note = QLabel(declared(help_text))
+            note.setWordWrap(True)
+            note.setEnabled(False)  # the help, greyed beside the value
+            row = QHBoxLayout()
+            row.addWidget(edit)
+            row.addWidget(note, 1)
+            form.addRow(key, row)
             edits[key] = edit
+        dialog.setMinimumWidth(560)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
                                    | QDialogButtonBox.StandardButton.Cancel)
         buttons.accepted.connect(dialog.accept)

@@ -41,6 +41,7 @@ class Option:
     kind: str
     default: Any
     help: str = ""
+    minimum: float | None = None  # numbers only: the least value the controller takes
 
 
 def parse_options(controller: str, declared: tuple[Option, ...],
@@ -83,6 +84,11 @@ def parse_options(controller: str, declared: tuple[Option, ...],
             raise ControllerRuleError(message(
                 QT_TR_NOOP("{controller} options: {key}={value} is not a number"),
                 controller=controller, key=option.key, value=value))
+        if option.minimum is not None and out[option.key] < option.minimum:
+            raise ControllerRuleError(message(
+                QT_TR_NOOP("{controller} options: {key}={value} is below {minimum}"),
+                controller=controller, key=option.key, value=value,
+                minimum=f"{option.minimum:g}"))
     return out
 
 

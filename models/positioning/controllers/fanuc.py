@@ -44,21 +44,26 @@ from models.positioning.controllers.common import (
     parse_options,
     refuse,
 )
+from models.positioning.model import DEVIATION_UNITS
 
 NAME = "FANUC"
 SOURCE = "FANUC Parameter Manual, pitch error compensation 3620-3625"
 OPTIONS = (
-    Option("axis", "int", 1, QT_TR_NOOP("controlled axis number of the parameter tape (A1, A2 …)")),
-    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001")),
-    Option("magnification", "int", 1, QT_TR_NOOP("parameter 3623, pitch error compensation magnification")),
+    Option("axis", "int", 1, QT_TR_NOOP("controlled axis number of the parameter tape (A1, A2 …)"),
+           minimum=1),
+    Option("detection_unit", "float", 0.001, QT_TR_NOOP("detection unit in mm or degrees, e.g. 0.001"),
+           minimum=1e-09),
+    Option("magnification", "int", 1, QT_TR_NOOP("parameter 3623, pitch error compensation magnification"),
+           minimum=1),
     Option("reference", "float", 0.0, QT_TR_NOOP("reference position (machine coordinate); it must be a "
                                                  "point of the table")),
     Option("reference_number", "int", -1, QT_TR_NOOP("parameter 3620 (−1: chosen so that the "
-                                                      "numbers start at 0 or 1)")),
-    Option("value_limit", "int", 7, QT_TR_NOOP("largest stored value of one point, in detection units")),
-    Option("max_points", "int", 128, QT_TR_NOOP("most compensation points of one axis")),
+                                                      "numbers start at 0 or 1)"), minimum=-1),
+    Option("value_limit", "int", 7, QT_TR_NOOP("largest stored value of one point, in detection units"),
+           minimum=1),
+    Option("max_points", "int", 128, QT_TR_NOOP("most compensation points of one axis"), minimum=2),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's travel per revolution, e.g. 360 "
-                                              "(parameter 3625; 0: linear)")),
+                                              "(parameter 3625; 0: linear)"), minimum=0),
 )
 
 
@@ -75,7 +80,7 @@ class Plan:
     values: dict[int, int]  # point number → stored value
     value_limit: int
     max_points: int
-    reference_deviation: float = 0.0  # the compensation at the reference, not written
+    reference_deviation: str = ""  # the compensation at the reference (text), not written
 
 
 def build(table, options) -> Plan:
@@ -119,7 +124,8 @@ def build(table, options) -> Plan:
         values = {first + i: int(increments[i]) for i in range(k)}
     return Plan(o["axis"], o["detection_unit"], o["magnification"], ref_no, first, last,
                 step / o["detection_unit"], o["modulo"] / o["detection_unit"] if rotary else 0.0,
-                values, o["value_limit"], o["max_points"], float(comp[r]))
+                values, o["value_limit"], o["max_points"],
+                f"{comp[r] * DEVIATION_UNITS[table.deviation_unit][1]:.3g} {table.deviation_unit}")
 
 
 def lint(plan: Plan) -> Plan:
@@ -171,7 +177,7 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     plan = lint(build(table, options))
     what = message(QT_TR_NOOP("FANUC pitch error compensation, axis {axis}, points {first}…{last}, "
                               "reference point {ref}; the compensation at the reference position "
-                              "({offset} in the axis unit) is not pitch error and is not written"),
+                              "({offset}) is not pitch error: it is left out of the table"),
                    axis=plan.axis, first=plan.most_negative, last=plan.most_positive,
-                   ref=plan.reference_number, offset=f"{plan.reference_deviation:.6g}")
+                   ref=plan.reference_number, offset=plan.reference_deviation)
     return [("", render(plan))], joined((what,))

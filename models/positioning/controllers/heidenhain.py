@@ -43,7 +43,7 @@ OPTIONS = (
     Option("axis", "text", "X", QT_TR_NOOP("axis key (column name), e.g. X or C")),
     Option("values", "text", None, QT_TR_NOOP("error (actual − target) or correction (−error): "
                                               "as the machine's manual states")),
-    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, 360 (0: linear)")),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, 360 (0: linear)"), minimum=0),
 )
 
 

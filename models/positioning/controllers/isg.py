@@ -41,10 +41,10 @@ NAME = "ISG kernel"
 SOURCE = "ISG/TwinCAT CNC axis compensation, leadscrew error compensation (P-COMP-00017…00025)"
 UNIT = 1e-4  # 0.1 µm in mm, 0.0001° in degrees (kw.ssfk.unit = 1)
 OPTIONS = (
-    Option("axis_number", "int", 1, QT_TR_NOOP("logical axis number (kopf.log_achs_nr)")),
+    Option("axis_number", "int", 1, QT_TR_NOOP("logical axis number (kopf.log_achs_nr)"), minimum=1),
     Option("axis_name", "text", "X", QT_TR_NOOP("axis name (kopf.log_achs_name)")),
-    Option("max_points", "int", 1500, QT_TR_NOOP("P-COMP-00059 of the axis (default 1500)")),
-    Option("modulo", "float", 0.0, QT_TR_NOOP("a modulo axis's turn, 360 (0: linear)")),
+    Option("max_points", "int", 1500, QT_TR_NOOP("P-COMP-00059 of the axis (default 1500)"), minimum=2),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a modulo axis's turn, 360 (0: linear)"), minimum=0),
 )
 
 

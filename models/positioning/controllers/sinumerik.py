@@ -45,11 +45,11 @@ NAME = "SINUMERIK 840D"
 SOURCE = "SINUMERIK 840D sl Function Manual Extended Functions, K3, measuring system error compensation"
 OPTIONS = (
     Option("axis", "text", "AX1", QT_TR_NOOP("machine axis name, e.g. AX1 or X1")),
-    Option("system", "int", 1, QT_TR_NOOP("measuring system the table is for: 1 or 2")),
-    Option("encoders", "int", 1, QT_TR_NOOP("measuring systems the axis has (MD30200 NUM_ENCS)")),
+    Option("system", "int", 1, QT_TR_NOOP("measuring system the table is for: 1 or 2"), minimum=1),
+    Option("encoders", "int", 1, QT_TR_NOOP("measuring systems the axis has (MD30200 NUM_ENCS)"), minimum=1),
     Option("max_points", "int", 0, QT_TR_NOOP("MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: "
-                                              "not checked, the file states what it needs)")),
-    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, e.g. 360 (0: not modulo)")),
+                                              "not checked, the file states what it needs)"), minimum=0),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, e.g. 360 (0: not modulo)"), minimum=0),
 )
 
 

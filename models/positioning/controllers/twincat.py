@@ -39,7 +39,7 @@ NAME = "TwinCAT (Tc2_MC2)"
 SOURCE = "Beckhoff Tc2_MC2 MC_TableBasedPositionCompensation"
 OPTIONS = (
     Option("name", "text", "Axis1", QT_TR_NOOP("prefix of the PLC variables, e.g. Axis1")),
-    Option("modulo", "float", 0.0, QT_TR_NOOP("a modulo axis's period, e.g. 360 (0: linear)")),
+    Option("modulo", "float", 0.0, QT_TR_NOOP("a modulo axis's period, e.g. 360 (0: linear)"), minimum=0),
 )
 
 
