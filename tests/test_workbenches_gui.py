@@ -178,6 +178,10 @@ def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     _, at_90 = sim.top_curves[1].getData()
     assert np.max(np.abs(at_90)) == pytest.approx(1.921, abs=0.001)  # ψ = 10', ω = 90°
     assert np.max(np.abs(at_0)) < np.max(np.abs(at_90))  # ω = 0° is the smallest (seed §3.3)
+    sim.form.set_values({"ac_alignment": "levelled"})  # the polygon's own term only
+    sim.update_curves()
+    _, levelled = sim.top_curves[1].getData()
+    assert np.ptp(levelled) == pytest.approx(600.0**2 / 206264.8 / 2, rel=1e-3)  # ψ²/2 rad
 
 
 def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):
