@@ -49,7 +49,13 @@ def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)  # corrected = raw + correction
     mean_pyramidal = np.mean([s.pyramidal_error_arcsec for s in result.sets], axis=0)
     np.testing.assert_allclose(correction, -mean_pyramidal, atol=1e-9)
+    assert "exceeds the 270\" allowed" in polygon.view.warnings.text()  # levelled, 1′ roll
+    assert "autocollimator and rotary axis levelled" in polygon.view.summary.toPlainText()
+    alignment = polygon.view.settings.field("ac_alignment")
+    alignment.setCurrentIndex(alignment.findData("polygon"))  # seed 001's frame
+    qtbot.waitUntil(lambda: polygon.result.ac_alignment == "polygon")
     assert "exceeds the 239\" allowed" in polygon.view.warnings.text()
+    assert "seed 001's frame" in polygon.view.summary.toPlainText()
     zero = polygon.view.settings.field("zero_face")
     zero.setValue(5)
     qtbot.waitUntil(lambda: polygon.result.zero_face == 5)

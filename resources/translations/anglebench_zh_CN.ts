@@ -12,10 +12,6 @@
         <translation>A1 (sin)</translation>
     </message>
     <message>
-        <source>AC reticle roll ≤</source>
-        <translation>自准直仪分划板滚转 ≤</translation>
-    </message>
-    <message>
         <source>AC vertical − zero</source>
         <translation>自准直仪垂直读数 − 零位</translation>
     </message>
@@ -286,10 +282,6 @@
         <translation>干涉仪：每个条纹的位移（HeNe 激光 λ/2 为 316.4 nm）；误差以 nm 表示。0：编码器</translation>
     </message>
     <message>
-        <source>Largest roll of the autocollimator&apos;s reticle: it turns part of the vertical reading into the horizontal one (budget input)</source>
-        <translation>自准直仪分划板的最大滚转：它使部分垂直读数进入水平读数（不确定度分量）</translation>
-    </message>
-    <message>
         <source>LinuxCNC COMP_FILE type 0</source>
         <translation>LinuxCNC COMP_FILE 类型 0</translation>
     </message>
@@ -300,10 +292,6 @@
     <message>
         <source>Odd harmonics only (the seed&apos;s model), or every order up to the highest</source>
         <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
-    </message>
-    <message>
-        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x).</source>
-        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。</translation>
     </message>
     <message>
         <source>Repeatability (mean of {sets} sets)</source>
@@ -342,14 +330,6 @@
         <translation>各测回共用的一个读数：不因平均而减小</translation>
     </message>
     <message>
-        <source>Autocollimator reticle roll</source>
-        <translation>自准直仪分划板滚转</translation>
-    </message>
-    <message>
-        <source>roll up to ±{roll} (stated) times the vertical reading&apos;s change from the zero face</source>
-        <translation>滚转最大 ±{roll}（给定值）乘以竖直读数相对于零位面的变化量</translation>
-    </message>
-    <message>
         <source>spread linearly and removed, half the drift left</source>
         <translation>线性分配并扣除，余下一半漂移</translation>
     </message>
@@ -374,8 +354,52 @@
         <translation>塔差修正（ψ, ω）</translation>
     </message>
     <message>
-        <source>u(ψ), u(ω) of the tilt fits propagated through ε_x</source>
-        <translation>塔差拟合的 u(ψ)、u(ω) 经 ε_x 传播</translation>
+        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
+        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确三维旋转计算。</translation>
+    </message>
+    <message>
+        <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator&apos;s vertical along the shaft); the pyramidal correction is that set-up&apos;s, by exact 3-D rotation: the polygon&apos;s own term plus the autocollimator&apos;s roll times the vertical reading&apos;s change.</source>
+        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确三维旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
+    </message>
+    <message>
+        <source>Set-up assumed: seed 001&apos;s frame (the autocollimator&apos;s vertical along the polygon&apos;s axis, not the shaft&apos;s); the pyramidal correction is the seed&apos;s eqs 3–7.</source>
+        <translation>所假定的安置：种子 001 的坐标系（自准直仪的竖直方向沿多面棱体轴线，而非转轴）；塔差修正按原文式 3–7。</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll measured {roll} (u = {u}) and corrected.</source>
+        <translation>自准直仪滚转实测为 {roll}（u = {u}），已修正。</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll not measured: up to ±{roll}, not corrected, in the uncertainty.</source>
+        <translation>自准直仪滚转未实测：最大 ±{roll}，未修正，计入不确定度。</translation>
+    </message>
+    <message>
+        <source>To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the vertical reading changes by Δy and watch the horizontal reading: on a levelled bench it moves by less than the roll bound times Δy; if it moves more, measure that ratio (the roll) and enter it.</source>
+        <translation>判断装置属于哪种安置：使某一面（或轴上的反射镜）俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
+    </message>
+    <message>
+        <source>the shaft</source>
+        <translation>转轴</translation>
+    </message>
+    <message>
+        <source>the polygon&apos;s axis</source>
+        <translation>多面棱体轴线</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll ρ (cross-talk ρ·(y − y_z))</source>
+        <translation>自准直仪滚转 ρ（串扰 ρ·(y − y_z)）</translation>
+    </message>
+    <message>
+        <source>measured roll {roll} relative to {vertical}, corrected; its standard uncertainty {u} times the vertical reading&apos;s change from the zero face</source>
+        <translation>相对于{vertical}的实测滚转 {roll}，已修正；其标准不确定度 {u} 乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>roll relative to {vertical} up to ±{roll} (stated, not measured, not corrected) times the vertical reading&apos;s change from the zero face</source>
+        <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
+        <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
         <source>the certificate details give a tolerance of ±{tolerance_arcsec}&quot; but the workbench is set to grade {grade} (±{tol}&quot;): change the grade or clear the tolerance in the details</source>
@@ -426,8 +450,36 @@
         <translation>给出，未扣除</translation>
     </message>
     <message>
+        <source>Autocollimator set-up</source>
+        <translation>自准直仪安置</translation>
+    </message>
+    <message>
+        <source>levelled with the rotary axis (vertical along the shaft)</source>
+        <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
+    </message>
+    <message>
+        <source>vertical along the polygon&apos;s axis (seed 001&apos;s frame)</source>
+        <translation>竖直方向沿多面棱体轴线（种子 001 的坐标系）</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll</source>
+        <translation>自准直仪滚转</translation>
+    </message>
+    <message>
+        <source>measured {roll}, corrected</source>
+        <translation>实测 {roll}，已修正</translation>
+    </message>
+    <message>
+        <source>not measured, up to ±{roll}</source>
+        <translation>未实测，最大 ±{roll}</translation>
+    </message>
+    <message>
         <source>Allowed pyramidal tilt</source>
         <translation>允许塔差</translation>
+    </message>
+    <message>
+        <source>{tilt} (levelled set-up, roll included; seed 001&apos;s frame: {worst} worst case over the tilt direction, {seed} at ω = 90°)</source>
+        <translation>{tilt}（调平安置，含滚转；种子 001 的坐标系：按塔差方向的最不利情况 {worst}，ω = 90° 时 {seed}）</translation>
     </message>
     <message>
         <source>{tilt} (worst case over the tilt direction; the seed&apos;s ω = 90° figure: {seed})</source>
@@ -534,12 +586,12 @@
         <translation>没有方向被测量两次</translation>
     </message>
     <message>
-        <source>Reversal B (largest |x̄↑ − x̄↓|)</source>
-        <translation>反向差 B（最大 |x̄↑ − x̄↓|）</translation>
+        <source>Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)</source>
+        <translation>反向差 B（最大 |x̄↑ − x̄↓|，ISO 230-2）</translation>
     </message>
     <message>
-        <source>mean reversal {b}</source>
-        <translation>平均反向差 {b}</translation>
+        <source>mean B̄ = {b} (ISO 230-2: deviation x = reference − indicated, forward minus reverse; = mean of ē↓ − ē↑ of the errors)</source>
+        <translation>平均 B̄ = {b}（ISO 230-2：偏差 x = 参考值 − 示值，正向减反向；即误差 ē↓ − ē↑ 的平均）</translation>
     </message>
     <message>
         <source>the run is invalid (closure failed)</source>
@@ -647,6 +699,14 @@
         <translation>三维仿真：恒定 2″ 的回程间隙即反向差 B</translation>
     </message>
     <message>
+        <source>3-D simulation in seed 001&apos;s frame (ψ = 900″), set as such: |corrected − true error|</source>
+        <translation>种子 001 坐标系下的三维仿真（ψ = 900″），按此设置：|修正后 − 真误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, levelled, autocollimator pitched 0.5° and rolled 2′ (measured by a tilt test): |corrected − true error|</source>
+        <translation>三维仿真，调平安置，自准直仪俯仰 0.5°、滚转 2′（由俯仰试验测得）：|修正后 − 真误差|</translation>
+    </message>
+    <message>
         <source>3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = 0.03″: RMS of corrected − true error (2σ)</source>
         <translation>三维仿真，16 种设置，12–72 面，ψ 300–1200″，σ = 0.03″：修正后误差 − 真实误差的均方根（2σ）</translation>
     </message>
@@ -725,10 +785,6 @@
     <message>
         <source>Spacing of the compensation table in the target unit; 0: one entry at each target</source>
         <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
-    </message>
-    <message>
-        <source>Table 1 of the seed: the accuracy judged, and the tilt it allows</source>
-        <translation>论文表 1：所判定的准确度及其允许的倾斜</translation>
     </message>
     <message>
         <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
@@ -1072,6 +1128,34 @@
         <translation>俯仰角 E</translation>
     </message>
     <message>
+        <source>AC roll measured</source>
+        <translation>自准直仪滚转实测值</translation>
+    </message>
+    <message>
+        <source>AC roll ≤</source>
+        <translation>自准直仪滚转 ≤</translation>
+    </message>
+    <message>
+        <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s axis (seed 001&apos;s frame). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
+        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体轴线（种子 001 的坐标系）。塔差修正按该坐标系计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
+    </message>
+    <message>
+        <source>Largest roll of the autocollimator about its line of sight, relative to the set-up&apos;s vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)</source>
+        <translation>未实测时，自准直仪绕其视轴相对于安置竖直方向的最大滚转：它使部分竖直读数进入水平读数（不确定度分量）</translation>
+    </message>
+    <message>
+        <source>Measured roll ρ of the autocollimator about its line of sight: the horizontal reading&apos;s change per unit change of the vertical one (tilt a face and watch both readings), + when both rise together; corrected when its uncertainty is given</source>
+        <translation>自准直仪绕其视轴的实测滚转 ρ：水平读数随竖直读数单位变化的变化量（使某一面俯仰并观察两个读数），二者同增为 +；给出其不确定度时予以修正</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
+        <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
+    </message>
+    <message>
+        <source>Table 1 of the seed: the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
+        <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
+    </message>
+    <message>
         <source>elevations (recommended)</source>
         <translation>俯仰角（推荐）</translation>
     </message>
@@ -1118,34 +1202,6 @@
     <message>
         <source>from the readings</source>
         <translation>由读数确定</translation>
-    </message>
-    <message>
-        <source>grade 1: ±0.25&quot;, tilt ≤ 119&quot;</source>
-        <translation>1 级：±0.25&quot;，倾斜 ≤ 119&quot;</translation>
-    </message>
-    <message>
-        <source>grade 2: ±0.5&quot;, tilt ≤ 169&quot;</source>
-        <translation>2 级：±0.5&quot;，倾斜 ≤ 169&quot;</translation>
-    </message>
-    <message>
-        <source>grade 3: ±1&quot;, tilt ≤ 239&quot;</source>
-        <translation>3 级：±1&quot;，倾斜 ≤ 239&quot;</translation>
-    </message>
-    <message>
-        <source>grade 4: ±2&quot;, tilt ≤ 338&quot;</source>
-        <translation>4 级：±2&quot;，倾斜 ≤ 338&quot;</translation>
-    </message>
-    <message>
-        <source>grade 5: ±5&quot;, tilt ≤ 534&quot;</source>
-        <translation>5 级：±5&quot;，倾斜 ≤ 534&quot;</translation>
-    </message>
-    <message>
-        <source>grade 6: ±10&quot;, tilt ≤ 755&quot;</source>
-        <translation>6 级：±10&quot;，倾斜 ≤ 755&quot;</translation>
-    </message>
-    <message>
-        <source>grade 7: ±30&quot;, tilt ≤ 1307&quot;</source>
-        <translation>7 级：±30&quot;，倾斜 ≤ 1307&quot;</translation>
     </message>
     <message>
         <source>harmonic order</source>
@@ -1344,6 +1400,34 @@
         <translation>安装误差分量 −ζ(θ)</translation>
     </message>
     <message>
+        <source>grade 1: ±0.25&quot;</source>
+        <translation>1 级：±0.25&quot;</translation>
+    </message>
+    <message>
+        <source>grade 2: ±0.5&quot;</source>
+        <translation>2 级：±0.5&quot;</translation>
+    </message>
+    <message>
+        <source>grade 3: ±1&quot;</source>
+        <translation>3 级：±1&quot;</translation>
+    </message>
+    <message>
+        <source>grade 4: ±2&quot;</source>
+        <translation>4 级：±2&quot;</translation>
+    </message>
+    <message>
+        <source>grade 5: ±5&quot;</source>
+        <translation>5 级：±5&quot;</translation>
+    </message>
+    <message>
+        <source>grade 6: ±10&quot;</source>
+        <translation>6 级：±10&quot;</translation>
+    </message>
+    <message>
+        <source>grade 7: ±30&quot;</source>
+        <translation>7 级：±30&quot;</translation>
+    </message>
+    <message>
         <source>signal</source>
         <translation>信号</translation>
     </message>
@@ -1402,6 +1486,10 @@
     <message>
         <source>u sin [V]</source>
         <translation>u sin [V]</translation>
+    </message>
+    <message>
+        <source>u(AC roll measured)</source>
+        <translation>u(自准直仪滚转实测值)</translation>
     </message>
     <message>
         <source>vertical reading</source>
@@ -2689,6 +2777,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>倾斜 ψ（图 4）</translation>
     </message>
     <message>
+        <source>autocollimator set-up</source>
+        <translation>自准直仪安置</translation>
+    </message>
+    <message>
+        <source>polygon&apos;s axis (seed 001&apos;s frame)</source>
+        <translation>沿多面棱体轴线（种子 001 的坐标系）</translation>
+    </message>
+    <message>
+        <source>levelled (AC and rotary axis levelled)</source>
+        <translation>调平（自准直仪与回转轴均调平）</translation>
+    </message>
+    <message>
         <source>θ (deg)</source>
         <translation>θ (°)</translation>
     </message>
@@ -3445,6 +3545,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>第 {row} 行：闭合读数与该测回在第 {int} 面上的第一个读数相差 {back}°</translation>
     </message>
     <message>
+        <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
+        <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
+    </message>
+    <message>
         <source>{n} usable readings; a polygon test needs at least 3 positions</source>
         <translation>{n} 个可用读数；多面棱体检测至少需要 3 个位置</translation>
     </message>
@@ -3453,20 +3557,40 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
     </message>
     <message>
+        <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; in seed 001&apos;s frame {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
+        <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；种子 001 的坐标系中按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
+    </message>
+    <message>
+        <source>worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}</source>
+        <translation>倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}</translation>
+    </message>
+    <message>
         <source>Tilt not identified (no vertical readings).</source>
         <translation>未辨识倾斜（没有垂直读数）。</translation>
     </message>
     <message>
-        <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} (worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}): the fixture is fine.</source>
-        <translation>棱锥倾斜 ψ = {psi}，在 {grade} 级允许的 {allowed} 以内（倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}）：安装良好。</translation>
+        <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} ({how}): the fixture is fine.</source>
+        <translation>棱锥倾斜 ψ = {psi}，在 {grade} 级允许的 {allowed} 以内（{how}）：安装良好。</translation>
     </message>
     <message>
-        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} (worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}): {advice}; then re-zero and measure again.</source>
-        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}）：{advice}；然后重新置零并重测。</translation>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}): {advice}; then re-zero and measure again.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）：{advice}；然后重新置零并重测。</translation>
     </message>
     <message>
-        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} (worst case over the tilt direction); the error it induces was identified and removed.</source>
-        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（倾斜方向的最不利情况）；其引起的误差已辨识并扣除。</translation>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}); the error it induces was identified and removed.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）；其引起的误差已辨识并扣除。</translation>
+    </message>
+    <message>
+        <source>levelled set-up</source>
+        <translation>调平安置</translation>
+    </message>
+    <message>
+        <source>seed 001&apos;s frame, worst case over the tilt direction</source>
+        <translation>种子 001 的坐标系，倾斜方向的最不利情况</translation>
+    </message>
+    <message>
+        <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets&apos; error minus reverse sets&apos;)</source>
+        <translation>，反向差 |ē↑ − ē↓| 最大 {value}（ē↑ − ē↓ 平均 {mean}：正向测回误差减反向测回误差）</translation>
     </message>
     <message>
         <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
@@ -3533,10 +3657,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>，未评定重复性（没有任何方向测量两次）</translation>
     </message>
     <message>
-        <source>, reversal error {value} (mean {mean})</source>
-        <translation>，反向差 {value}（平均 {mean}）</translation>
-    </message>
-    <message>
         <source>RUN INVALID: closure failed. </source>
         <translation>测量无效：闭合不合格。</translation>
     </message>
@@ -3558,7 +3678,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Set {number}</source>
-        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one.</extracomment>
+        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis). Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
         <translation>第 {number} 组</translation>
     </message>
     <message>
