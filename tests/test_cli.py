@@ -84,8 +84,10 @@ def test_polygon_json_keys(capsys, samples_dir):
     assert len(data["error_arcsec"]) == 48  # two sets of 24 faces, closure rows left out
     assert data["closure_ok"] is True
     assert data["pyramidal_tilt_arcsec"] == pytest.approx(480.0, abs=1.0)
-    # the sample's rig turns right-handed with the count; the seed's frame turns by −θ
-    assert data["pyramidal_direction_deg"] == pytest.approx(360.0 - 60.0, abs=0.5)
+    # the sample's rig turns right-handed with the count; the seed's frame turns by −θ, and
+    # the levelled rig tilts the polygon against the shaft: 180° − ω
+    assert data["pyramidal_direction_deg"] == pytest.approx(180.0 - 60.0, abs=0.5)
+    assert data["ac_alignment"] == "levelled"
     # corrected = error − (ε_x − ε_x at the zero face): SPEC §2, corrected 2026-11-27
     np.testing.assert_allclose(np.array(data["error_arcsec"]) - data["pyramidal_error_arcsec"],
                                data["corrected_error_arcsec"], atol=1e-12)

@@ -232,3 +232,18 @@ def test_reversal_is_labelled_in_its_own_sense_and_iso_in_isos():
     doc = polygon_certificate(result, CertificateMetadata())
     row = next(r for r in doc.statistics.rows if "Reversal" in str(r[0]))
     assert "B̄ = -2.00\"" in str(row[2]) and "reference − indicated" in str(row[2])
+
+
+def test_project_file_keeps_the_set_up(tmp_path):
+    from models.project.file import Project, WorkbenchState, load_project, save_project
+
+    rig = PolygonRig(12, encoder_error(12), psi_arcsec=600.0, omega_deg=30.0, frame="polygon")
+    settings = {"grade": 7, "ac_alignment": "polygon", "ac_roll_measured_arcmin": -0.4,
+                "u_ac_roll_arcmin": 0.1}
+    project = Project()
+    project.workbenches["polygon"] = WorkbenchState([r[:5] for r in rig.set_rows()], settings)
+    save_project(tmp_path / "p.anglebench.json", project)
+    loaded = load_project(tmp_path / "p.anglebench.json").workbenches["polygon"]
+    assert POLYGON.checked_settings(loaded.settings)["ac_alignment"] == "polygon"
+    result = analyze([list(r) for r in loaded.rows], **loaded.settings)
+    assert result.ac_alignment == "polygon" and result.ac_roll_measured_arcmin == -0.4

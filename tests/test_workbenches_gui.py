@@ -49,7 +49,13 @@ def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     np.testing.assert_allclose(raw + correction, corrected, atol=1e-9)  # corrected = raw + correction
     mean_pyramidal = np.mean([s.pyramidal_error_arcsec for s in result.sets], axis=0)
     np.testing.assert_allclose(correction, -mean_pyramidal, atol=1e-9)
+    assert "exceeds the 270\" allowed" in polygon.view.warnings.text()  # levelled, 1′ roll
+    assert "autocollimator and rotary axis levelled" in polygon.view.summary.toPlainText()
+    alignment = polygon.view.settings.field("ac_alignment")
+    alignment.setCurrentIndex(alignment.findData("polygon"))  # seed 001's frame
+    qtbot.waitUntil(lambda: polygon.result.ac_alignment == "polygon")
     assert "exceeds the 239\" allowed" in polygon.view.warnings.text()
+    assert "seed 001's frame" in polygon.view.summary.toPlainText()
     zero = polygon.view.settings.field("zero_face")
     zero.setValue(5)
     qtbot.waitUntil(lambda: polygon.result.zero_face == 5)
@@ -178,6 +184,10 @@ def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     _, at_90 = sim.top_curves[1].getData()
     assert np.max(np.abs(at_90)) == pytest.approx(1.921, abs=0.001)  # ψ = 10', ω = 90°
     assert np.max(np.abs(at_0)) < np.max(np.abs(at_90))  # ω = 0° is the smallest (seed §3.3)
+    sim.form.set_values({"ac_alignment": "levelled"})  # the polygon's own term only
+    sim.update_curves()
+    _, levelled = sim.top_curves[1].getData()
+    assert np.ptp(levelled) == pytest.approx(600.0**2 / 206264.8 / 2, rel=1e-3)  # ψ²/2 rad
 
 
 def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):

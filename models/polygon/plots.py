@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
-from models.polygon.model import PolygonResult, pyramidal_readings_arcsec
+from models.polygon.model import PolygonResult, frame_readings_arcsec
 
 __all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "residual_figure",
            "tilt_figure"]
@@ -51,8 +53,10 @@ def tilt_figure(result: PolygonResult) -> PlotFigure | None:
     if tilt is None:
         return None
     dense = np.linspace(0.0, 360.0, 361)  # face angle; the model runs in the counting sense
-    _, model = pyramidal_readings_arcsec(result.counting * dense, tilt.psi_arcsec, tilt.omega_deg)
-    _, at_faces = pyramidal_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg)
+    frame = (result.ac_alignment, math.radians(result.ac_roll_measured_arcmin / 60.0)
+             if result.roll_corrected else 0.0)  # the readings the tilt was fitted with
+    _, model = frame_readings_arcsec(result.counting * dense, tilt.psi_arcsec, tilt.omega_deg, *frame)
+    _, at_faces = frame_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg, *frame)
     return PlotFigure(QT_TR_NOOP("Vertical readings and the tilt model (set 1)"), "θ (deg)",
                       "AC vertical − zero (\")", (
         PlotSeries("readings", result.theta_deg, at_faces + tilt.residuals_arcsec, RED, True),

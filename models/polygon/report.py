@@ -43,7 +43,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     PolygonResult,
@@ -99,7 +99,7 @@ def setup_statement(result: PolygonResult) -> str:
         "vertical reading changes by Δy and watch the horizontal reading: on a levelled bench "
         "it moves by less than the roll bound times Δy; if it moves more, measure that ratio "
         "(the roll) and enter it."))
-    return " ".join((frame, roll, tell))
+    return joined((frame, " ", roll, " ", tell))
 
 
 def _zero_index(result: PolygonResult) -> int:

@@ -277,6 +277,25 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
         _close(w, QT_TR_NOOP("3-D simulation: a constant 2″ backlash is the reversal B"), EXACT_SIMULATION,
                2.0, float(np.max(np.abs(result.reversal_arcsec))), 0.002),
     ]
+    seed_rig = PolygonRig(faces, truth, psi_arcsec=900.0, omega_deg=75.0, frame="polygon")
+    seed_run = POLYGON.analyze(ReadingsSheet(POLYGON.columns, seed_rig.set_rows()).parse(),
+                               {"grade": 7, "ac_alignment": "polygon"})
+    rolled = PolygonRig(faces, truth, psi_arcsec=900.0, omega_deg=75.0, ac_pitch_deg=0.5,
+                        ac_roll_arcsec=120.0, ac_zero_y_arcsec=1800.0)
+    rolled_run = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rolled.set_rows()).parse(), {
+        "grade": 7, "ac_roll_measured_arcmin": rolled.tilt_test_roll_arcmin(),
+        "u_ac_roll_arcmin": 0.05})
+    cases += [
+        _at_most(w, QT_TR_NOOP("3-D simulation in seed 001's frame (ψ = 900″), set as such: "
+                               "|corrected − true error|"), EXACT_SIMULATION, 1e-3,
+                 float(np.max(np.abs(seed_run.sets[0].corrected_error_arcsec
+                                     - seed_rig.truth_arcsec())))),
+        _at_most(w, QT_TR_NOOP("3-D simulation, levelled, autocollimator pitched 0.5° and rolled "
+                               "2′ (measured by a tilt test): |corrected − true error|"),
+                 EXACT_SIMULATION, 5e-3,  # the pitch acts at second order with the ±20″ stops
+                 float(np.max(np.abs(rolled_run.sets[0].corrected_error_arcsec
+                                     - rolled.truth_arcsec())))),
+    ]
     residuals = []
     for i in range(16):
         n = (12, 24, 36, 72)[i % 4]

@@ -42,7 +42,8 @@ def polygon_encoder_error(theta_deg: np.ndarray) -> np.ndarray:
 
 def polygon_sample() -> None:
     """24-face polygon, a forward set and a reverse set written in the order measured,
-    tilt ψ = 8' towards ω = 60°, 0.2" backlash, 0.12" autocollimator drift a set, 0.03"
+    on a levelled bench (autocollimator and rotary axis levelled, the polygon seated with a
+    tilt ψ = 8' towards ω = 60°), 0.2" backlash, 0.12" autocollimator drift a set, 0.03"
     noise. Made by the exact 3-D rig of the tests (rotations only, no model code)."""
     rng = np.random.default_rng(2015)
     faces = 24
@@ -50,7 +51,7 @@ def polygon_sample() -> None:
     dev = np.round(rng.normal(0, 0.15, faces), 2)
     rig = PolygonRig(faces, polygon_encoder_error(theta), psi_arcsec=480.0, omega_deg=60.0,
                      face_dev_arcsec=dev, noise_arcsec=0.03, backlash_arcsec=0.2,
-                     encoder_zero_deg=123.4, ac_zero_x_arcsec=5.0, rng=rng)
+                     encoder_zero_deg=123.4, ac_zero_x_arcsec=5.0, rng=rng, frame="levelled")
     rows = (rig.set_rows(1, closure_drift_arcsec=0.12)
             + rig.set_rows(2, reverse=True, closure_drift_arcsec=0.12))
     with open(HERE / "polygon_sample.csv", "w", newline="", encoding="utf-8") as handle:
