@@ -100,7 +100,11 @@ def _parameter_rows(result) -> list[tuple[str, str, str]]:
             ua = fit.u_amplitude.get(k, float("nan"))
             up = fit.u_phase.get(k, float("nan"))
             rows.append((f"{label}: A{k}", f"{fit.amplitude[k]:.5f} V", f"{2 * ua:.5f} V"))
-            rows.append((f"{label}: c{k}", f"{fit.phase[k]:+.5f} rad", f"{2 * up:.5f} rad"))
+            if abs(fit.amplitude[k]) > 2 * ua and np.isfinite(up) and 2 * up < np.pi:
+                rows.append((f"{label}: c{k}", f"{fit.phase[k]:+.5f} rad", f"{2 * up:.5f} rad"))
+            else:  # the phase of a harmonic indistinguishable from zero means nothing
+                rows.append((f"{label}: c{k}", message(QT_TR_NOOP("undefined")),
+                             message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=k)))
         rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
                      f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
     return rows
