@@ -1990,6 +1990,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>等级 / 规格</translation>
     </message>
     <message>
+        <source>Model / type</source>
+        <translation>型号/规格</translation>
+    </message>
+    <message>
+        <source>Customer&apos;s site (where)</source>
+        <translation>委托方现场（地点）</translation>
+    </message>
+    <message>
         <source>Resolution (&quot;)</source>
         <translation>分辨力 (&quot;)</translation>
     </message>
@@ -2354,6 +2362,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>语言</translation>
     </message>
     <message>
+        <source>Place of calibration</source>
+        <translation>校准地点</translation>
+    </message>
+    <message>
         <source>Decision rule</source>
         <translation>判定规则</translation>
     </message>
@@ -2625,6 +2637,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Certificate</source>
         <translation>证书</translation>
+    </message>
+    <message>
+        <source>A draft prints this date; an issued certificate is dated the day the register issues it</source>
+        <translation>草稿打印此日期；签发的证书以登记册签发之日为签发日期</translation>
     </message>
     <message>
         <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
