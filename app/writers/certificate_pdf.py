@@ -401,6 +401,10 @@ class ReportPdf(FPDF):
         if xs[finite].min() >= 0 and 270 < xs[finite].max() <= 360:  # a turn: 0…360°, not 400°
             x_ticks = [float(v) for v in range(0, 361, 45)]
         y_ticks = _nice_ticks(float(ys[finite].min()), float(ys[finite].max()))
+        if (float(ys[finite].max()) - y_ticks[0]) > 0.85 * (y_ticks[-1] - y_ticks[0]):
+            # headroom for the legend, which is drawn inside the top of the frame: a band or
+            # curve reaching the top would be hidden under it
+            y_ticks.append(round(y_ticks[-1] + y_ticks[-1] - y_ticks[-2], 12))
         xlo, xhi, ylo, yhi = x_ticks[0], x_ticks[-1], y_ticks[0], y_ticks[-1]
 
         def px(v):
