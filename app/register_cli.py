@@ -2,14 +2,16 @@
 
     anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --project OUT to extract)
-    anglebench register verify FILE.pdf        is this PDF, byte for byte, one we issued?
+    anglebench register verify [FILE.pdf]      the hash chain and every stored PDF; is this PDF,
+                                               byte for byte, one we issued?
     anglebench register export OUT.zip         every record: index.csv, PDFs, projects
     anglebench register interval SERIAL DAYS  set an instrument's calibration interval
     anglebench register continue SCHEME NEXT   continue numbering after hand-issued numbers
 
 ``--register URL`` (or ANGLEBENCH_REGISTER) chooses the register; the default is the
 SQLite file in the user's data folder. Exit 2 with one line for a refusal; ``verify``
-exits 1 for a PDF the register does not know. What it prints, its help included, is in
+exits 1 for a PDF the register does not know or a register whose records were changed after
+issue (the hash chain, checked on every opening: each command warns). What it prints, its help included, is in
 the language of ``--language`` (default: the system's); the listing's workbench keys and
 the export's ``index.csv`` keep the register's own English words.
 """
@@ -18,6 +20,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import hashlib
 import io
 import sys
 import zipfile
@@ -59,7 +62,8 @@ def _parser(words) -> argparse.ArgumentParser:
                       help=words(QT_TR_NOOP("also write the project behind it")))
     verify = sub.add_parser("verify", help=words(QT_TR_NOOP(
         "is this PDF, byte for byte, one the register issued?")))
-    verify.add_argument("pdf", help=words(QT_TR_NOOP("the PDF to check")))
+    verify.add_argument("pdf", nargs="?", default="", help=words(QT_TR_NOOP(
+        "the PDF to check (without it: the register's hash chain and stored PDFs only)")))
     export = sub.add_parser("export", help=words(QT_TR_NOOP(
         "every record: index.csv, the PDFs and the projects")))
     export.add_argument("out", metavar="OUT.zip", help=words(QT_TR_NOOP("the archive to write")))
@@ -111,13 +115,54 @@ def _export(register, out: str, words) -> int:
         for record in records:
             writer.writerow([getattr(record, c) or "" for c in COLUMNS] + [record.headline_json])
             safe = record.number.replace("/", "_")
-            archive.writestr(f"pdf/{safe}.pdf", register.pdf(record.number))
+            pdf = register.pdf(record.number, checked=False)  # the audit's copy: all of it
+            changed = hashlib.sha256(pdf).hexdigest() != record.pdf_sha256
+            archive.writestr(f"pdf/{safe}{'.CHANGED-AFTER-ISSUE' if changed else ''}.pdf", pdf)
             archive.writestr(f"project/{safe}.anglebench.json", record.project_json)
         archive.writestr("index.csv", index.getvalue())
     write_bytes_atomic(out, buffer.getvalue())
     _say(rendered(message(QT_TR_NOOP("{n} certificate(s) exported to {out}"), n=len(records),
                           out=out), words))
     return 0
+
+
+def _verify(register, path: str, words) -> int:
+    """The register's hash chain and stored PDFs; then, if given, the PDF at ``path``."""
+    from models.register.store import RegisterError
+
+    def out(text) -> None:
+        sys.stdout.write(rendered(text, words) + "\n")
+
+    problems = register.audit(pdfs=True)
+    for problem in problems:
+        out(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"), problem=problem))
+    if not problems:
+        out(message(QT_TR_NOOP("register: hash chain intact over {n} record(s), every stored PDF "
+                               "matches its SHA-256; chain head {head}"),
+                    n=len(register.list()), head=register.chain_head()))
+    if not path:
+        return 1 if problems else 0
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError as exc:
+        raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
+                                    path=path, value=exc.strerror)) from None
+    record = register.verify(data)
+    if record is None:
+        out(message(QT_TR_NOOP(
+            "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
+            "draft, or from another register)"), path=path))
+        return 1
+    out(message(QT_TR_NOOP(
+        "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
+        "the record (SHA-256)"), path=path, number=record.number,
+        issued_at=record.issued_at, status=status_words(record.status)))
+    if record.superseded_by:
+        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
+                               "see 'anglebench register show {by}')"), path=path,
+                    number=record.number, by=record.superseded_by))
+    return 1 if problems else 0
 
 
 def run_register(argv: list[str]) -> int:
@@ -128,6 +173,10 @@ def run_register(argv: list[str]) -> int:
 
     try:
         with Register(register_url(explicit=args.register)) as register:
+            if args.command != "verify":
+                for problem in register.problems:
+                    _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
+                                          problem=problem), words))
             if args.command == "list":
                 for r in register.list(args.search):
                     status = rendered(status_words(r.status), words)
@@ -143,24 +192,7 @@ def run_register(argv: list[str]) -> int:
                     write_bytes_atomic(args.project, record.project_json.encode("utf-8"))
                 return 0
             if args.command == "verify":
-                try:
-                    with open(args.pdf, "rb") as handle:
-                        data = handle.read()
-                except OSError as exc:
-                    raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
-                                                path=args.pdf, value=exc.strerror)) from None
-                record = register.verify(data)
-                if record is None:
-                    sys.stdout.write(rendered(message(QT_TR_NOOP(
-                        "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
-                        "draft, or from another register)"), path=args.pdf), words) + "\n")
-                    return 1
-                sys.stdout.write(rendered(message(QT_TR_NOOP(
-                    "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
-                    "the record (SHA-256)"), path=args.pdf, number=record.number,
-                    issued_at=record.issued_at, status=status_words(record.status)), words)
-                    + "\n")
-                return 0
+                return _verify(register, args.pdf, words)
             if args.command == "continue":
                 import datetime as dt
 

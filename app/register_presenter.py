@@ -68,9 +68,13 @@ class RegisterPresenter:
         try:
             with self._register() as register:
                 self.records = register.list(self.search)
+                problems = register.problems
         except RegisterError as exc:
-            self.records = []
+            self.records, problems = [], []
             self.view.tell(tr("Register"), explained(exc))
+        if problems and search is None:  # checked on opening: said once, not per keystroke
+            self.view.tell(tr("Register changed after issue"), "\n".join(
+                translated(p) for p in problems[:20]))
         self.view.show_records(COLUMNS, [
             (r.number, translated(status_words(r.status)),
              translated(revision_words(r.revision)), r.issue_date, r.calibration_date, r.workbench,

@@ -12,28 +12,199 @@ from __future__ import annotations
 
 import argparse
 import datetime as dt
+import math
 import platform
 import sys
 from pathlib import Path
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models import __version__
 from models.certificate.document import Table
-from models.messages import QT_TR_NOOP, in_language, message
+from models.messages import QT_TR_NOOP, in_language, joined, message
 from models.project.atomic_write import write_bytes_atomic
 from models.validation.cases import ValidationCase, run_validation
 
 __all__ = ["run_validate", "validation_pdf_bytes"]
 
 
-def _versions() -> list[tuple[str, str]]:
-    import numpy
-    import scipy
+#: libraries named besides the register's (models.register.store.LIBRARIES)
+MORE_LIBRARIES = ("pypdfium2", "openpyxl", "fonttools", "GTC")
 
-    return [("AngleBench", __version__), ("Python", platform.python_version()),
-            ("numpy", numpy.__version__), ("scipy", scipy.__version__),
-            (QT_TR_NOOP("Platform"), platform.platform())]
+
+def _versions() -> list[tuple[str, str]]:
+    """AngleBench with its commit, Python and every library a result or a record depends on."""
+    import importlib.metadata
+
+    from models.register.store import software_versions
+    from models.software import software_identity
+
+    versions = software_versions()
+    rows = [("AngleBench", software_identity().printed),
+            ("Python", versions.pop("python"))]
+    for key in ("anglebench", "anglebench_commit", "anglebench_source_sha256"):
+        versions.pop(key, None)
+    for name in MORE_LIBRARIES:
+        try:
+            versions[name] = importlib.metadata.version(name)
+        except importlib.metadata.PackageNotFoundError:
+            continue
+    rows += sorted(versions.items(), key=lambda kv: kv[0].lower())
+    return rows + [(QT_TR_NOOP("Platform"), platform.platform())]
+
+
+def document_id(run_at: dt.datetime) -> str:
+    """The report's ID: the software's commit (or source digest) and the minute it ran."""
+    from models.software import software_identity
+
+    identity = software_identity()
+    source = identity.commit[:12] if identity.commit else identity.source_sha256[:12]
+    return f"AB-VAL-{identity.version}-{source}-{run_at:%Y%m%d%H%M}"
+
+
+#: each kind of case's acceptance criterion, and why it is that
+ACCEPTANCE = (
+    QT_TR_NOOP("Check figures: the published figure to the digits it is printed with (the "
+               "tolerance is half its last digit); a published table likewise."),
+    QT_TR_NOOP("Exact simulations and examples worked by hand: agreement to 0.0001\" or "
+               "better, far below any uncertainty a certificate states (its U is 0.01\" or "
+               "more): what remains is rounding, not method."),
+    QT_TR_NOOP("Budget against Monte Carlo: the spread of N simulated runs estimates a standard "
+               "uncertainty to about 1/√(2N) (relative); the budget's u must agree within "
+               "three times that, at least 10 %, over all points, and within four times that, "
+               "at least 25 %, at the worst point of a curve (with N = 200: 15 % and 25 %; a "
+               "worst point of 24 % passes by that margin, not by chance: over some 40 points "
+               "the largest of their sampling errors reaches about 3 × 5 %, and a budget off by "
+               "a quarter at one point would still be caught)."),
+    QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
+               "register finds what it issued and reports what was changed; a file reads to "
+               "the same numbers as numpy.loadtxt)."),
+)
+
+
+def software_cases() -> list[ValidationCase]:
+    """What every workbench shares, checked end to end: a certificate's text as a reader
+    extracts it, the register, and file import."""
+    return [_pdf_text_case(), _register_case(), *_import_cases()]
+
+
+SOFTWARE = QT_TR_NOOP("Software (all workbenches)")
+END_TO_END = QT_TR_NOOP("exact, end to end")
+
+
+def _pdf_text_case() -> ValidationCase:
+    """The theodolite sample's certificate in Chinese with a Latin-only laboratory name,
+    read back with PDFium: the name on every page and every figure of the results."""
+    import json
+    import re
+    from dataclasses import replace
+
+    import pypdfium2 as pdfium
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    samples = Path(__file__).resolve().parent.parent / "resources" / "samples"
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(samples / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), {})
+    details = json.loads((samples / "certificate_theodolite.json").read_text("utf-8"))
+    lab = "Shenzhen Angle Metrology Lab"
+    document = kind.certificate_document(result, CertificateMetadata.from_dict(details),
+                                         kind.sample_file, {})
+    document = replace(document, metadata=replace(document.metadata, lab_name=lab,
+                                                  language="zh"))
+    pdf = pdfium.PdfDocument(certificate_pdf_bytes(document))
+    try:
+        pages = [pdf[i].get_textpage().get_text_range() for i in range(len(pdf))]
+    finally:
+        pdf.close()
+    flat = re.sub(r"\s+", "", "".join(pages))
+    figures = {f for row in document.results.rows for cell in row
+               for f in re.findall(r"[+\-−]?\d+\.\d+", str(cell))}
+    found = sum(f in flat for f in figures)
+    named = sum(lab in page for page in pages)
+    return ValidationCase(
+        SOFTWARE, QT_TR_NOOP("certificate text as extracted from the PDF (zh, Latin-only lab "
+                             "name)"), END_TO_END,
+        message(QT_TR_NOOP("lab name on {pages} of {pages} pages, {n} of {n} figures"),
+                pages=len(pages), n=len(figures)),
+        message(QT_TR_NOOP("lab name on {named} of {pages} pages, {found} of {n} figures"),
+                named=named, pages=len(pages), found=found, n=len(figures)),
+        named == len(pages) and found == len(figures) and len(figures) > 20)
+
+
+def _register_case() -> ValidationCase:
+    """A register of its own: two certificates issued and verified; a PDF and its hash then
+    rewritten together inside the database must be reported."""
+    import hashlib
+    import tempfile
+
+    from models.certificate.metadata import CertificateMetadata
+    from models.register.location import url_for_path
+    from models.register.schema import CERTIFICATES
+    from models.register.store import IssueRequest, Register
+
+    meta = CertificateMetadata(approver="validation", calibration_date="")
+    project = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
+    with tempfile.TemporaryDirectory(prefix="anglebench-validation-") as folder, \
+            Register(url_for_path(Path(folder) / "register.sqlite")) as register:
+        first, pdf = register.issue(IssueRequest("polygon", meta, project),
+                                    lambda m: f"%PDF {m.certificate_number}".encode())
+        register.issue(IssueRequest("polygon", meta, project), lambda m: b"%PDF second")
+        verified = register.verify(pdf) is not None and register.audit(pdfs=True) == []
+        forged = b"%PDF forged"
+        with register.engine.begin() as conn:
+            conn.execute(CERTIFICATES.update().where(CERTIFICATES.c.number == first.number)
+                         .values(pdf=forged, pdf_sha256=hashlib.sha256(forged).hexdigest()))
+        caught = len(register.audit(pdfs=True))
+    return ValidationCase(
+        SOFTWARE, QT_TR_NOOP("register: issue, verify, a PDF and its hash rewritten in the "
+                             "database"), END_TO_END,
+        QT_TR_NOOP("verified; the change reported"),
+        message(QT_TR_NOOP("verified: {verified}; changes reported: {caught}"),
+                verified="yes" if verified else "no", caught=caught),
+        verified and caught >= 1)
+
+
+def _import_cases() -> list[ValidationCase]:
+    """Each sample read by the tolerant reader gives numpy.loadtxt's numbers; so does the
+    same file written with semicolons and decimal commas."""
+    import tempfile
+
+    import numpy as np
+
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    samples = Path(__file__).resolve().parent.parent / "resources" / "samples"
+    cases = []
+    for key, usecols in (("fringe", (0, 1, 2)), ("positioning", (0, 1, 3))):
+        kind = KINDS[key]
+        path = samples / kind.sample_file
+        text = path.read_text("utf-8")
+        header = text.splitlines()[0].split(",")
+        reference = np.loadtxt(path, delimiter=",", skiprows=1, usecols=usecols, ndmin=2)
+        worst = 0.0
+        with tempfile.TemporaryDirectory(prefix="anglebench-validation-") as folder:
+            comma = Path(folder) / "decimal-comma.csv"
+            comma.write_text(text.replace(",", ";").replace(".", ","), "utf-8")
+            for source in (path, comma):
+                rows = map_columns(read_table(source), kind.columns)
+                parsed = ReadingsSheet(kind.columns, rows).parse()
+                read = np.column_stack([parsed.values[header[i]].astype(float)
+                                        for i in usecols])
+                worst = max(worst, float(np.max(np.abs(read - reference)))
+                            if read.shape == reference.shape else math.inf)
+        cases.append(ValidationCase(
+            SOFTWARE, message(QT_TR_NOOP("file import of {file}, as written and with decimal "
+                                         "commas, against numpy.loadtxt"),
+                              file=kind.sample_file), END_TO_END, "0",
+            f"{worst:g}", worst == 0.0))
+    return cases
 
 
 def _verdict(case: ValidationCase) -> str:
@@ -47,16 +218,20 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
     from app.writers.certificate_pdf import ReportPdf, close_fonts  # fpdf2 only when a PDF is asked for
 
     passed = sum(c.passed for c in cases)
+    from models.software import software_identity
+
+    identity = software_identity()
+    ident = document_id(run_at)
     pdf = ReportPdf((QT_TR_NOOP("AngleBench method validation"),
-                     run_at.strftime("%Y-%m-%d %H:%M UTC")),
+                     f"{ident} · {run_at:%Y-%m-%d %H:%M} UTC"),
                     (QT_TR_NOOP("Validation record of the software named below; file it with "
                                 "the method's validation (ISO/IEC 17025 7.2.2)."),
-                     f"AngleBench {__version__}"), language=language)
+                     f"{ident} · AngleBench {identity.short}"), language=language)
     say = pdf.say
     pdf.head = tuple(say(text) for text in pdf.head)
     pdf.foot = tuple(say(text) for text in pdf.foot)
-    pdf.set_title(f"AngleBench {__version__} validation report")
-    pdf.set_creator(f"AngleBench {__version__}")
+    pdf.set_title(f"{ident}: AngleBench {identity.printed} validation report")
+    pdf.set_creator(f"AngleBench {identity.printed}")
     pdf.set_creation_date(run_at)
     pdf.add_page()
     pdf.set_font("dejavu", "B", 17)
@@ -69,18 +244,26 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
         date=run_at.strftime("%Y-%m-%d"), time=run_at.strftime("%H:%M"), passed=passed,
         cases=len(cases))
     pdf.paragraph(outcome, 11)
-    pdf.key_values(_versions())
+    pdf.key_values([(QT_TR_NOOP("Document ID"), ident), *_versions()])
     pdf.heading(QT_TR_NOOP("What was checked"))
     pdf.paragraph(message(QT_TR_NOOP(
-        "Three non-standard methods, each from a published paper: the theodolite run (Tian et "
-        "al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et "
-        "al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et "
-        "al., Acta Optica Sinica 33(7) 0712001, 2013). For each: the publication's check "
-        "figures; exact simulations with known truth made by first-principles simulators (3-D "
-        "rotations of mirror and face normals, sampled signals with a true phase) that share no "
-        "code with the analysis, run through the whole analysis; and the GUM uncertainty budget "
-        "against the spread of {trials} simulated repeated measurements (JCGM 101)."),
+        "Four workbenches. Three use non-standard methods, each from a published paper: the "
+        "theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon "
+        "encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe "
+        "signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the "
+        "positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T "
+        "17421.2). For each: the publication's check figures or, for the standard method, "
+        "examples worked by hand; exact simulations with known truth made by first-principles "
+        "simulators (3-D rotations of mirror and face normals, sampled signals with a true "
+        "phase, an axis with a known error and lost motion) that share no code with the "
+        "analysis, run through the whole analysis; and the GUM uncertainty budget against the "
+        "spread of {trials} simulated repeated measurements (JCGM 101). Then what every "
+        "workbench shares: the coverage factor k from ν, the decision rules, the certificate's "
+        "text as a reader extracts it from the PDF, the register, and file import."),
         trials=trials))
+    pdf.heading(QT_TR_NOOP("Acceptance criteria"))
+    for criterion in ACCEPTANCE:
+        pdf.paragraph(joined(["• ", message(criterion)]), 8.5)
     header = (QT_TR_NOOP("Case"), QT_TR_NOOP("Source"), QT_TR_NOOP("Expected"),
               QT_TR_NOOP("Obtained"), QT_TR_NOOP("Verdict"))
     for workbench in dict.fromkeys(c.workbench for c in cases):
@@ -122,7 +305,7 @@ def run_validate(argv: list[str]) -> int:
         _say(say(QT_TR_NOOP("anglebench validate: --trials must be 100 to 100000")))
         return EXIT_BAD_INPUT
     run_at = dt.datetime.now(dt.timezone.utc).replace(second=0, microsecond=0)
-    cases = run_validation(args.trials)
+    cases = run_validation(args.trials) + software_cases()
     for c in cases:
         sys.stdout.write(say(message(QT_TR_NOOP("{verdict}  {workbench}: {name} — expected "
                                                 "{expected}, obtained {obtained}"),

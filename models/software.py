@@ -75,8 +75,9 @@ class SoftwareIdentity:
 
 
 def _git(*args: str) -> str:
-    run = subprocess.run(["git", "-C", str(ROOT), *args], capture_output=True, text=True,
-                         timeout=10, check=True)
+    # safe.directory: a checkout owned by another user (a CI container) is still named
+    run = subprocess.run(["git", "-c", "safe.directory=*", "-C", str(ROOT), *args],
+                         capture_output=True, text=True, timeout=10, check=True)
     return run.stdout.strip()
 
 

@@ -68,13 +68,32 @@ def test_every_run_has_a_font_and_every_page_the_lab(analysed, key, language, la
     flat = re.sub(r"\s+", "", text)  # a cell may wrap a long name or figure
     meta = metadata
     names = [meta.lab_name, meta.customer_name, meta.item_description, meta.item_manufacturer,
-             meta.item_serial, meta.operator, meta.approver, document.source_name,
+             meta.item_serial, meta.item_model, meta.operator, meta.approver,
+             document.source_name,
              *(s.certificate_no for s in meta.standards), *(s.serial for s in meta.standards)]
     missing = [n for n in names if n and re.sub(r"\s+", "", n) not in flat]
     assert missing == []
     tables = (document.parameters, document.results, document.statistics)
-    figures = {f for t in tables for row in t.rows for cell in row
+    figures = {f.lstrip("+-−") if float(f.replace("−", "-")) == 0 else f  # "0.00", not "−0.00"
+               for t in tables for row in t.rows for cell in row
                for f in FIGURE.findall(str(cell))}
     assert len(figures) > 50
     lost = sorted(f for f in figures if f not in flat)
     assert lost == []
+    starts = [line for line in text.splitlines() if line.strip()[:1] in set("。，、；：）")]
+    assert starts == []  # a line never starts with a closing mark
+    end = f"—证书{metadata.certificate_number}结束—" if language == "zh" else \
+        f"—Endofcertificate{metadata.certificate_number}—"
+    assert end in re.sub(r"\s+", "", pages[-1])  # the end-of-certificate marker
+
+
+def test_figures_and_formulas_are_never_broken_across_lines(analysed, tmp_path):
+    """Chinese prose broke between any two characters: "随机种子 2026 / 1127", "T + / w"."""
+    kind, result, settings, details = analysed["polygon"]
+    metadata = CertificateMetadata.from_dict({**details, "language": "zh"})
+    document = kind.certificate_document(result, metadata, kind.sample_file, settings)
+    text, _ = _pdftotext(certificate_pdf_bytes(document), tmp_path)
+    lines = [line.strip() for line in text.splitlines()]
+    assert any("20261127" in line for line in lines)  # the seed whole on its line
+    assert not [line for line in lines if line.endswith(("T +", "T −", "="))]
+    assert "在实验室内" in text  # the place of calibration

@@ -3,6 +3,7 @@ are the model)."""
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from unittest import mock
 
@@ -60,8 +61,22 @@ def test_a_draft_is_written_and_nothing_recorded(parts, samples_dir, tmp_path):
 COMPLETE = CertificateMetadata.from_dict({
     "lab_name": "Lab", "customer_name": "Customer", "item_description": "Turntable",
     "item_serial": "T-1", "calibration_date": "2026-11-20", "issue_date": "2026-11-24",
-    "operator": "Wang", "standards": [{"description": "Theodolite", "certificate_no": "N-1",
-                                       "uncertainty_arcsec": 0.5}]})
+    "operator": "Wang", "approver": "Dr. Li",
+    "standards": [{"description": "Theodolite", "certificate_no": "N-1",
+                   "uncertainty_arcsec": 0.5}]})
+
+
+def test_without_an_approver_the_window_writes_a_draft_and_records_nothing(parts, samples_dir,
+                                                                          tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = dataclasses.replace(COMPLETE, approver="")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(tmp_path / "d.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert view.confirm_draft.call_args.args[0] == ["approver"]
+    with presenter.open_register() as register:
+        assert register.list() == []
 
 
 def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts, samples_dir,

@@ -169,7 +169,7 @@ def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
         conn.execute(schema.SCHEMA_VERSION.insert().values(version=1))
         schema.MIGRATIONS[1](conn)
     with Register(register_url) as reg:
-        assert reg.version == schema.LATEST == 2
+        assert reg.version == schema.LATEST == 3
         reg.clock = on(ISSUED)
         reg.issue(request(), render)
         reg.set_interval("RX-1", 180)  # the table migration 2 added
@@ -234,3 +234,70 @@ def test_an_amendment_is_not_dated_before_its_original(register):
                                                       "calibration_date": "2026-11-01"})),
                        render, supersedes=original.number, change_note="typo")
     assert register.get(original.number).status == "issued"
+
+
+def _tamper(register, number: str, **values) -> None:
+    """What someone with the database's password could do behind AngleBench's back."""
+    certificates = schema.CERTIFICATES
+    with register.engine.begin() as conn:
+        conn.execute(certificates.update().where(certificates.c.number == number)
+                     .values(**values))
+
+
+def test_the_hash_chain_shows_changes_made_inside_the_database(register):
+    first, pdf = register.issue(request(), render)
+    second, _ = register.issue(request(), render)
+    assert register.audit(pdfs=True) == [] and register.chain_head() != "0" * 64
+    forged = b"%PDF forged"
+    _tamper(register, first.number, pdf=forged,
+            pdf_sha256=__import__("hashlib").sha256(forged).hexdigest())
+    problems = [str(p) for p in register.audit(pdfs=True)]
+    assert problems == [f"record {first.number}: the hash chain is broken here (this record, "
+                        "or one before it, was changed, inserted or deleted after issue)"]
+    with Register(register.url) as reopened:  # checked on opening too
+        assert [str(p) for p in reopened.problems] == problems
+    _tamper(register, second.number, pdf=b"%PDF changed alone")
+    assert any("stored PDF does not match" in str(p) for p in register.audit(pdfs=True))
+    with pytest.raises(RegisterError, match="no longer matches the SHA-256"):
+        register.pdf(second.number)
+    _tamper(register, second.number, customer="Someone Else")
+    assert sum("hash chain is broken" in str(p) for p in register.audit()) == 2
+
+
+def test_a_superseded_record_set_back_to_issued_is_seen(register):
+    original, _ = register.issue(request(), render)
+    amended, _ = register.issue(request(), render, supersedes=original.number, change_note="x")
+    assert register.audit() == []
+    _tamper(register, original.number, status="issued", superseded_by=None)
+    problems = [str(p) for p in register.audit()]
+    assert problems == [f"record {original.number}: marked \"issued\" (superseded by —), but "
+                        f"the register's records say superseded by {amended.number}"]
+    with pytest.raises(RegisterError, match="superseded by"):  # and no amendment of it
+        _tamper(register, original.number, status="superseded", superseded_by=amended.number)
+        register.issue(request(), render, supersedes=original.number)
+
+
+def test_an_old_register_gets_its_chain_when_migrated(register_url):
+    with Register(register_url) as reg:
+        reg.clock = on(ISSUED)
+        numbers = [reg.issue(request(), render)[0].number for _ in range(3)]
+        head = reg.chain_head()
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.begin() as conn:  # as version 2 left it: no chain
+        conn.execute(schema.CERTIFICATES.update().values(chain_sha256=None))
+        conn.execute(schema.SCHEMA_VERSION.update().values(version=2))
+    engine.dispose()
+    with Register(register_url) as reg:
+        assert reg.version == 3 and reg.problems == [] and reg.chain_head() == head
+        assert [r.number for r in reg.list()] == numbers[::-1]
+
+
+def test_tests_never_reach_the_users_own_register(monkeypatch):
+    from pathlib import Path
+
+    from models.register.location import default_register_url, register_url
+
+    monkeypatch.delenv("ANGLEBENCH_REGISTER")
+    for url in (default_register_url(), register_url()):
+        assert not url.startswith(f"sqlite:///{Path.home().resolve()}/"), url
+        assert "anglebench-tests-" in url

@@ -36,6 +36,7 @@ from PySide6.QtWidgets import (
 from models.certificate.metadata import (
     DECISION_RULES,
     LANGUAGES,
+    PLACES,
     CertificateMetadata,
     MetadataError,
 )
@@ -56,6 +57,8 @@ _TEXT_FIELDS = {
     "customer_name": QT_TR_NOOP("Customer"), "customer_address": QT_TR_NOOP("Address"),
     "item_description": QT_TR_NOOP("Item under test"), "item_manufacturer": QT_TR_NOOP("Manufacturer"),
     "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
+    "item_model": QT_TR_NOOP("Model / type"),
+    "calibration_site": QT_TR_NOOP("Customer's site (where)"),
     "item_resolution_arcsec": QT_TR_NOOP("Resolution (\")"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
     "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
@@ -68,6 +71,7 @@ _CHOICES = {
     "document_type": (QT_TR_NOOP("Document"), {"calibration": QT_TR_NOOP("Calibration certificate"),
                                            "test": QT_TR_NOOP("Test report")}),
     "language": (QT_TR_NOOP("Language"), LANGUAGES),
+    "calibration_place": (QT_TR_NOOP("Place of calibration"), PLACES),
     "decision_rule": (QT_TR_NOOP("Decision rule"), {
         "guarded": QT_TR_NOOP("Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)"),
         "guarded_binary": QT_TR_NOOP("Guard band w = U: pass / fail (ILAC-G8 4.2.2)"),
@@ -123,7 +127,10 @@ class CertificateDialog(QDialog):
         grid = QGridLayout()
         cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
                                            "tolerance_arcsec", "coverage_probability_pct",
-                                           "as_left_table_sha256"))
+                                           "as_left_table_sha256", "calibration_site"))
+        self.fields["issue_date"].setToolTip(tr(
+            "A draft prints this date; an issued certificate is dated the day the register "
+            "issues it"))
         self.fields["as_left_table_sha256"].setToolTip(tr(
             "Fringe: the checksum of the correction table loaded into the encoder (printed in "
             "the exported table); the compensated error is then stated as left"))
@@ -144,7 +151,7 @@ class CertificateDialog(QDialog):
                                                   "number_scheme")), 0, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
-            "item_description", "item_manufacturer", "item_serial", "item_grade",
+            "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
             "item_resolution_arcsec")), 1, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
             "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)

@@ -45,6 +45,9 @@ INK = (20, 20, 20)
 GREY = (110, 110, 110)
 RULE = (170, 170, 170)
 HEADER_FILL = (228, 233, 240)
+#: a curve's colour by its role, as the window's error plot draws it (widgets/error_plot.py)
+WINDOW_COLOURS = {"raw": (0xC0, 0x39, 0x2B), "model": (0x7F, 0x8C, 0x8D),
+                  "corrected": (0x1F, 0x5F, 0xBF), "residual": (0x2E, 0x8B, 0x57)}
 
 
 def font_files() -> dict[str, Path]:
@@ -137,6 +140,14 @@ def _say(language: str):
     return lambda text: in_language(text, words)
 
 
+def _both(text):
+    """A column's name in Chinese above the English (a bilingual certificate's headers)."""
+    if not text:
+        return text
+    chinese, english = _say("zh")(text), str(text)
+    return english if chinese == english else f"{chinese}\n{english}"
+
+
 def revision_statement(meta) -> str:
     """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
     replacement identifies the one it replaces."""
@@ -185,6 +196,7 @@ class ReportPdf(FPDF):
         super().__init__(orientation="portrait", unit="mm", format="A4")
         self.head, self.foot = head, foot
         self.say = _say(language)  # how a text is printed ("zh": translated)
+        self.language = language
         fonts = font_files()
         self.add_font(FONT, "", str(fonts["regular"]))
         self.add_font(FONT, "B", str(fonts["bold"]))
@@ -261,21 +273,54 @@ class ReportPdf(FPDF):
         text = self.say(text)
         self.set_font(FONT, "", size)
         with self.local_context(text_color=color):
-            if _mostly_cjk(text):  # Chinese prose: broken between characters, not justified
-                # (fpdf2's WORD wrap dropped a word with the fallback font at a line's end:
-                # "随机种子 20261127" printed without its number)
-                self.multi_cell(0, 4.6, text, wrapmode="CHAR", align="L",
-                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            if _mostly_cjk(text):  # Chinese prose: not justified; broken where
+                # _breakable allows (between Chinese characters, at spaces), never inside
+                # a figure or a word, never before a closing mark such as "。"
+                width = self.epw - 2 * self.c_margin - 0.6
+                self.multi_cell(0, 4.6, self._wrapped(text, width, size), wrapmode="CHAR",
+                                align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
             else:
                 self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
+    def _cells_wrapped(self, rows, widths, size: float, bold_first: bool) -> list[list[str]]:
+        """A table's cells pre-wrapped as :meth:`_wrapped` does (for a table fpdf2 wraps by
+        character: one holding Chinese), so that no word or figure is cut in two."""
+        scale = self.epw / sum(widths)
+        out = []
+        for r, row in enumerate(rows):
+            style = "B" if bold_first and r == 0 else ""
+            out.append([self._wrapped(str(cell or ""), w * scale - 2.6, size, style)
+                        if cell else cell for cell, w in zip(row, widths, strict=False)])
+        self.set_font(FONT, "", size)
+        return out
+
+    def _wrapped(self, text: str, width: float, size: float, style: str = "") -> str:
+        """``text`` broken into lines of at most ``width`` mm where :func:`_units` allows
+        (a unit wider than a line is left to fpdf2's character wrap)."""
+        lines = []
+        for paragraph in text.split("\n"):
+            line = ""
+            for unit in _units(paragraph):
+                if line.strip() and self.text_width((line + unit).rstrip(), size, style) > width:
+                    lines.append(line.rstrip())
+                    line = unit.lstrip()
+                else:
+                    line += unit
+            lines.append(line.rstrip())
+        self.set_font(FONT, "", size)  # text_width() leaves the last run's font selected
+        return "\n".join(lines)
+
     def key_values(self, rows: list[tuple[str, str]]) -> None:
         self.set_font(FONT, "", 9)
         rows = [(self.say(key), self.say(value)) for key, value in rows]
+        wrapmode = _wrapmode(cell for row in rows for cell in row)
+        if wrapmode == "CHAR":
+            rows = [(key, self._cells_wrapped([["", value]], (45, 129), 9, False)[0][1])
+                    for key, value in rows]
         with self.table(col_widths=(45, 129), first_row_as_headings=False, borders_layout="NONE",
                         line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
-                        wrapmode=_wrapmode(cell for row in rows for cell in row)) as table:
+                        wrapmode=wrapmode) as table:
             for key, value in rows:
                 row = table.row()
                 # a two-line bilingual label is set plain: fpdf2 drops the English line of a
@@ -288,12 +333,15 @@ class ReportPdf(FPDF):
         self.set_font(FONT, "", size)
         self.set_fill_color(246, 247, 249)
         heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
-        cells = [[self.say(cell) for cell in row] for row in (t.header, *t.rows)]
+        header = [_both(cell) if self.language == "zh+en" else cell for cell in t.header]
+        cells = [[_no_negative_zero(self.say(cell)) for cell in row] for row in (header, *t.rows)]
+        wrapmode = _wrapmode(cell for row in cells for cell in row)
+        if wrapmode == "CHAR":
+            cells = self._cells_wrapped(cells, widths, size, True)
         with self.table(col_widths=widths, text_align=align, line_height=size * 0.5,
                         headings_style=heading, borders_layout="HORIZONTAL_LINES",
                         cell_fill_color=(246, 247, 249), cell_fill_mode=TableCellFillMode.ROWS,
-                        repeat_headings=1, padding=(0.5, 1.0),
-                        wrapmode=_wrapmode(cell for row in cells for cell in row)) as table:
+                        repeat_headings=1, padding=(0.5, 1.0), wrapmode=wrapmode) as table:
             for row in cells:
                 table.row(row)
         if t.note:
@@ -350,7 +398,13 @@ class ReportPdf(FPDF):
             self.paragraph(QT_TR_NOOP("(no data)"))
             return
         x_ticks = _nice_ticks(float(xs[finite].min()), float(xs[finite].max()))
+        if xs[finite].min() >= 0 and 270 < xs[finite].max() <= 360:  # a turn: 0…360°, not 400°
+            x_ticks = [float(v) for v in range(0, 361, 45)]
         y_ticks = _nice_ticks(float(ys[finite].min()), float(ys[finite].max()))
+        if (float(ys[finite].max()) - y_ticks[0]) > 0.85 * (y_ticks[-1] - y_ticks[0]):
+            # headroom for the legend, which is drawn inside the top of the frame: a band or
+            # curve reaching the top would be hidden under it
+            y_ticks.append(round(y_ticks[-1] + y_ticks[-1] - y_ticks[-2], 12))
         xlo, xhi, ylo, yhi = x_ticks[0], x_ticks[-1], y_ticks[0], y_ticks[-1]
 
         def px(v):
@@ -383,17 +437,23 @@ class ReportPdf(FPDF):
             upper = list(zip(px(s.x[ok]).tolist(), py((s.y + s.band)[ok]).tolist(), strict=True))
             lower = list(zip(px(s.x[ok]).tolist(), py((s.y - s.band)[ok]).tolist(), strict=True))
             if len(upper) >= 2:
-                self.set_fill_color(*[int(255 - (255 - c) * 0.25) for c in s.color])
+                colour = WINDOW_COLOURS.get(s.role, s.color)
+                self.set_fill_color(*[int(255 - (255 - c) * 0.25) for c in colour])
                 self.polygon(upper + lower[::-1], style="F")
-        for s in figure.series:
+        # the set-up model (dashed, as in the window) under the raw error it explains
+        for s in sorted(figure.series, key=lambda s: s.role != "model"):
             ok = np.isfinite(s.x) & np.isfinite(s.y)
             pts = list(zip(px(s.x[ok]).tolist(), py(s.y[ok]).tolist(), strict=True))
-            self.set_draw_color(*s.color)
+            colour = WINDOW_COLOURS.get(s.role, s.color)
+            self.set_draw_color(*colour)
             self.set_line_width(0.3)
             if len(pts) >= 2:
-                self.polyline(pts)
+                with self.local_context():
+                    if s.role == "model":
+                        self.set_dash_pattern(dash=1.2, gap=0.8)
+                    self.polyline(pts)
             if s.markers and len(pts) <= 400:
-                self.set_fill_color(*s.color)
+                self.set_fill_color(*colour)
                 for x, y in pts:
                     self.circle(x, y, 0.45, style="F")
         x_label, y_label = self.say(figure.x_label), self.say(figure.y_label)
@@ -405,7 +465,7 @@ class ReportPdf(FPDF):
         for s in figure.series:
             if not s.label:  # a second line of a labelled pair (an envelope's lower edge)
                 continue
-            self.set_draw_color(*s.color)
+            self.set_draw_color(*WINDOW_COLOURS.get(s.role, s.color))
             self.set_line_width(0.6)
             self.line(lx, y0 + 3, lx + 5, y0 + 3)
             name = self.say(s.label)
@@ -447,6 +507,14 @@ class _CertificatePdf(ReportPdf):
         self.set_xy(x, y)
 
 
+_NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](0(?:\.0+)?)(?![\d.])")
+
+
+def _no_negative_zero(text):
+    """"−0.00" printed "0.00": a figure that rounds to zero has no sign."""
+    return _NEGATIVE_ZERO.sub(r"\1", text) if isinstance(text, str) else text
+
+
 def _wrapmode(cells) -> str:
     """How a table's cells are wrapped: between words when every cell is Latin; between
     characters when one holds CJK text (fpdf2's word wrap dropped a word at a line's end
@@ -464,7 +532,31 @@ def _mostly_cjk(text: str) -> bool:
 
 
 def _long_word(text: str) -> bool:
-    return any(len(word) > 40 for word in text.split())
+    """A word no line can hold (a sha256 of 64 digits still fits whole on a line)."""
+    return any(len(word) > 90 for word in text.split())
+
+
+_CLOSING = set("。，、；：？！）》」』】”’…%\"″′°")
+_OPENING = set("（《「『【“‘")
+_OPERATORS = set("+−-=≤≥<>±×≈")
+
+
+def _units(text: str) -> list[str]:
+    """``text`` cut where a line may break: after a space, and between two characters of
+    which one is Chinese — but never before a closing mark ("。", "）") or after an opening
+    one, and never inside a Latin word or a figure."""
+    units, current, previous = [], "", ""
+    for ch, nxt in zip(text, text[1:] + " ", strict=True):
+        current += ch
+        if ch.isspace() and previous not in _OPERATORS and nxt not in _OPERATORS:
+            units.append(current)  # "T + w", "k = 2" are kept on one line
+            current = ""
+        elif (not ch.isspace() and not nxt.isspace() and nxt not in _CLOSING
+              and ch not in _OPENING and (_CJK.match(ch) or _CJK.match(nxt))):
+            units.append(current)
+            current = ""
+        previous = ch if not ch.isspace() else previous
+    return [*units, current] if current else units
 
 
 def _nice_ticks(lo: float, hi: float, count: int = 6) -> list[float]:
@@ -633,6 +725,11 @@ def _render(document: CertificateDocument) -> FPDF:
     n_cols = len(document.results.header)
     pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)
     _signatures(pdf)
+    pdf.set_font(FONT, "", 8)
+    with pdf.local_context(text_color=GREY):
+        pdf.multi_cell(0, 5, pdf.say(message(QT_TR_NOOP("— End of certificate {number} —"),
+                                             number=meta.certificate_number or "—")),
+                       align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     digest = hashlib.md5(_identity(document, created).encode(), usedforsecurity=False).hexdigest()
     pdf.file_id = lambda *_: f"<{digest}><{digest}>"
     return pdf

@@ -98,6 +98,17 @@ def _dof_text(nu: float) -> str:
     return f"{nu:.0f}" if nu < 1e4 else "≥ 10⁴"
 
 
+def _dof_figure(nu: float) -> str:
+    """ν as a figure after "ν_eff =": "∞", "12", or "2.3×10⁵" (not "= ≥ 10⁴")."""
+    if not np.isfinite(nu):
+        return "∞"
+    if nu < 1e4:
+        return f"{nu:.0f}"
+    exponent = int(np.floor(np.log10(nu)))
+    superscript = str(exponent).translate(str.maketrans("0123456789", "⁰¹²³⁴⁵⁶⁷⁸⁹"))
+    return f"{nu / 10 ** exponent:.1f}×10{superscript}"
+
+
 def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Table:
     """The budget at its worst point as a printable table, with the combined line."""
     rows = []
@@ -121,8 +132,8 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
                               "(Welch–Satterthwaite: {raw}) truncated to the lower integer "
                               "(GUM G.6.4), and a coverage probability of {p} %; each point's U "
                               "uses its own ν."),
-                   point=point, k=f"{k:.2f}", nu=nu_text,
-                   raw=f"{raw:.2f}" if math.isfinite(raw) and raw < 1e4 else _dof_text(raw),
+                   point=point, k=f"{k:.2f}", nu=_dof_figure(budget.truncated_dof()),
+                   raw=f"{raw:.2f}" if math.isfinite(raw) and raw < 1e4 else _dof_figure(raw),
                    p=f"{100 * budget.probability:.2f}")
     u = unit.strip()
     return Table(QT_TR_NOOP("Uncertainty budget"), (

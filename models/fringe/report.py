@@ -192,7 +192,11 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
             ua = fit.u_amplitude.get(h, float("nan"))
             up = fit.u_phase.get(h, float("nan"))
             rows.append((f"{label}: A{h}", f"{fit.amplitude[h]:.5f} V", f"{k * ua:.5f} V"))
-            rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
+            if abs(fit.amplitude[h]) > k * ua and np.isfinite(up) and k * up < np.pi:
+                rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
+            else:  # the phase of a harmonic indistinguishable from zero means nothing
+                rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
+                             message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
         rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
                      f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
     return rows

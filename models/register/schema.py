@@ -50,6 +50,8 @@ CERTIFICATES = sa.Table(
     sa.Column("headline_json", sa.Text, nullable=False),  # figures for the trend
     sa.Column("pdf_sha256", sa.String(64), nullable=False),
     sa.Column("pdf", sa.LargeBinary, nullable=False),
+    # the hash chain over the records in the order of issue (migration 3; models/register/chain)
+    sa.Column("chain_sha256", sa.String(64), nullable=True),
 )
 
 #: per instrument serial: the calibration interval (migration 2)
@@ -70,6 +72,24 @@ def _v2(conn: sa.Connection) -> None:
     conn.execute(sa.text("CREATE INDEX certificates_item_serial ON certificates (item_serial)"))
 
 
+def _v3(conn: sa.Connection) -> None:
+    """The hash chain: the column (unless version 1 made the table with it), then the chain
+    over the records already issued, in the order of issue. It vouches for them as they
+    are now: changes made before this migration cannot be seen."""
+    from models.register.chain import CHAINED, GENESIS, link
+
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
+    if "chain_sha256" not in columns:
+        conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN chain_sha256 VARCHAR(64)"))
+    previous = GENESIS
+    rows = conn.execute(sa.select(CERTIFICATES.c.id, *(CERTIFICATES.c[k] for k in CHAINED))
+                        .order_by(CERTIFICATES.c.id)).all()
+    for row in rows:
+        previous = link(previous, row._asdict())
+        conn.execute(CERTIFICATES.update().where(CERTIFICATES.c.id == row.id).values(
+            chain_sha256=previous))
+
+
 #: version → the migration that brings a register to it from the version before
-MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2}
+MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3}
 LATEST = max(MIGRATIONS)

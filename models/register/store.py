@@ -34,6 +34,7 @@ from typing import Any
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
+from models.register.chain import CHAINED, GENESIS, link
 
 __all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "software_versions"]
 
@@ -41,6 +42,7 @@ LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLA
              "psycopg")
 _SEQ = re.compile(r"\{seq(?::0?\d+d)?\}")
 _ADVISORY_LOCK = 0x414E4742  # "ANGB": serialises migrations on PostgreSQL
+_CHAIN_LOCK = 0x414E4743  # serialises the hash chain's growth on PostgreSQL
 
 
 class RegisterError(ValueError):
@@ -154,6 +156,8 @@ class Register:
                 self.engine = sa.create_engine(self.url, pool_pre_ping=True)
             try:
                 self._migrate()
+                #: what the hash chain found changed since issue (checked on opening)
+                self.problems = self.audit()
             except BaseException:
                 self.engine.dispose()
                 raise
@@ -339,7 +343,14 @@ class Register:
                 software_json=json.dumps(software_versions(), sort_keys=True),
                 headline_json=json.dumps(request.headline, sort_keys=True),
                 pdf_sha256=hashlib.sha256(pdf).hexdigest())
-            conn.execute(certificates.insert().values(**dataclasses.asdict(record), pdf=pdf))
+            if not self.is_sqlite:  # SQLite's BEGIN IMMEDIATE already serialises writers
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            previous = conn.execute(self._sa.select(certificates.c.chain_sha256).order_by(
+                certificates.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
+            conn.execute(certificates.insert().values(
+                **dataclasses.asdict(record), pdf=pdf,
+                chain_sha256=link(previous, dataclasses.asdict(record))))
             if original is not None:
                 conn.execute(certificates.update().where(
                     certificates.c.number == original.number).values(
@@ -374,16 +385,71 @@ class Register:
         with self._read() as conn:
             return self._get(conn, number)
 
-    def pdf(self, number: str) -> bytes:
+    def pdf(self, number: str, checked: bool = True) -> bytes:
+        """The PDF as issued; ``checked``: RegisterError unless it still matches the SHA-256
+        recorded at issue (a PDF changed in the database is never handed out as issued)."""
         certificates = self._schema.CERTIFICATES
         with self._read() as conn:
-            data = conn.execute(self._sa.select(certificates.c.pdf).where(
-                certificates.c.number == number)).scalar_one_or_none()
-        if data is None:
+            row = conn.execute(self._sa.select(certificates.c.pdf, certificates.c.pdf_sha256)
+                               .where(certificates.c.number == number)).first()
+        if row is None:
             raise RegisterError(message(
                 QT_TR_NOOP("no certificate {number} in the register"),
                 number=number))
-        return bytes(data)
+        data = bytes(row.pdf)
+        if checked and hashlib.sha256(data).hexdigest() != row.pdf_sha256:
+            raise RegisterError(message(QT_TR_NOOP(
+                "the stored PDF of {number} no longer matches the SHA-256 recorded when it was "
+                "issued: it was changed in the database; it is not exported"), number=number))
+        return data
+
+    def audit(self, pdfs: bool = False) -> list:
+        """What was changed in the database after issue, one message each (empty: nothing
+        seen): the hash chain recomputed over every record, each status checked against the
+        record that supersedes it, and with ``pdfs`` each stored PDF against its SHA-256."""
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        columns = ("id", *CHAINED, "status", "superseded_by", "chain_sha256")
+        problems: list = []
+        previous = GENESIS
+        superseders: dict[str, str] = {}
+        with self._read() as conn:
+            rows = conn.execute(sa.select(*(certificates.c[c] for c in columns))
+                                .order_by(certificates.c.id)).all()
+            for row in rows:
+                previous = link(previous, row._asdict())
+                if row.chain_sha256 != previous:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: the hash chain is broken here (this record, or one "
+                        "before it, was changed, inserted or deleted after issue)"),
+                        number=row.number))
+                    previous = row.chain_sha256 or previous  # report each break once
+                if row.supersedes:
+                    superseders[row.supersedes] = row.number
+                if pdfs:
+                    data = conn.execute(sa.select(certificates.c.pdf).where(
+                        certificates.c.id == row.id)).scalar_one()
+                    if hashlib.sha256(bytes(data)).hexdigest() != row.pdf_sha256:
+                        problems.append(message(QT_TR_NOOP(
+                            "record {number}: the stored PDF does not match the SHA-256 "
+                            "recorded at issue"), number=row.number))
+        for row in rows:
+            by = superseders.get(row.number)
+            if (row.status, row.superseded_by) != (("superseded", by) if by else ("issued", None)):
+                problems.append(message(QT_TR_NOOP(
+                    "record {number}: marked \"{status}\" (superseded by {marked}), but the "
+                    "register's records say {by}"), number=row.number, status=row.status,
+                    marked=row.superseded_by or "—",
+                    by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
+                    or message(QT_TR_NOOP("issued, superseded by none"))))
+        return problems
+
+    def chain_head(self) -> str:
+        """The chain after the last record (GENESIS for an empty register): noted outside the
+        database, it anchors every record issued before."""
+        certificates = self._schema.CERTIFICATES
+        with self._read() as conn:
+            return conn.execute(self._sa.select(certificates.c.chain_sha256).order_by(
+                certificates.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
         """Newest first; ``search`` matches the number, the serial or the customer (any case)."""

@@ -46,6 +46,8 @@ __all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
 CHECK_FIGURE = QT_TR_NOOP("check figure")
 EXACT_SIMULATION = QT_TR_NOOP("exact simulation")
 BUDGET_VS_MONTE_CARLO = QT_TR_NOOP("budget vs Monte Carlo")
+HAND_COMPUTED = QT_TR_NOOP("hand-computed example")
+TABLE = QT_TR_NOOP("published table")
 
 
 @dataclass(frozen=True)
@@ -385,10 +387,59 @@ def positioning_cases(trials: int) -> list[ValidationCase]:
                           float(np.nanmax(np.abs(np.concatenate(
                               [left.iso.forward.mean, left.iso.backward.mean]))))))
     cases.append(_agreement_case(w, positioning_budget_trials, trials, 4))
+    return cases + positioning_hand_cases()
+
+
+#: ISO 230-2 by hand: two targets, three runs each way, s = 1" everywhere. Forward means 2"
+#: and 4", backward 0" and 1": E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3,
+#: B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7,
+#: A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.
+HAND_EXAMPLE = {"positions": [0.0] * 6 + [10.0] * 6,
+                "deviations": [1, 2, 3, -1, 0, 1, 3, 4, 5, 0, 1, 2],
+                "directions": [1, 1, 1, -1, -1, -1] * 2}
+HAND_FIGURES = {"A": 8.0, "R": 7.0, "E": 4.0, "E_up": 2.0, "M": 1.5, "B": 3.0, "B_mean": 2.5}
+
+
+def positioning_hand_cases() -> list[ValidationCase]:
+    """The hand-computed examples the positioning certificate cites: ISO 230-2's figures of
+    a run small enough to work out on paper (see HAND_EXAMPLE)."""
+    from models.uncertainty.iso230 import iso230_evaluate
+
+    w = QT_TR_NOOP("Positioning (axis)")
+    figures = iso230_evaluate(np.array(HAND_EXAMPLE["positions"]),
+                              np.array(HAND_EXAMPLE["deviations"], float),
+                              np.array(HAND_EXAMPLE["directions"])).figures
+    return [_close(w, message(QT_TR_NOOP("ISO 230-2 worked by hand (2 targets, 3 runs each "
+                                         "way): {figure}"), figure=name.replace("_mean", "̄")
+                              .replace("_up", "↑")), HAND_COMPUTED, value, figures[name], 1e-9,
+                   digits=2)
+            for name, value in HAND_FIGURES.items()]
+
+
+def uncertainty_cases() -> list[ValidationCase]:
+    """k from ν (GUM table G.2, p = 95.45 %, to its two decimals) and the decision rules'
+    verdicts either side of each zone's limit (ILAC-G8:09/2019, T = 1", w = 0.2")."""
+    from models.uncertainty.budget import coverage_factor
+    from models.uncertainty.conformity import _verdict
+
+    w = QT_TR_NOOP("Uncertainty and decision (all workbenches)")
+    cases = [_close(w, message(QT_TR_NOOP("coverage factor k for ν = {nu}"),
+                           nu="∞" if math.isinf(nu) else nu), TABLE,
+                    k, coverage_factor(nu, 0.9545), 0.005, unit="", digits=2)
+             for nu, k in ((3, 3.31), (8, 2.37), (20, 2.13), (math.inf, 2.00))]
+    for rule, x, expected in (("guarded", 0.79, "pass"), ("guarded", 0.81, "conditional pass"),
+                              ("guarded", 1.01, "conditional fail"), ("guarded", 1.21, "fail"),
+                              ("simple", 0.99, "pass"), ("simple", 1.01, "fail"),
+                              ("guarded_binary", 0.81, "fail"), ("guarded_binary", 0.79, "pass")):
+        got = _verdict(x, 1.0, 0.2, rule)
+        cases.append(ValidationCase(w, message(QT_TR_NOOP("decision rule {rule}: {x}\" against "
+                                                          "T = 1\", w = 0.2\""), rule=rule,
+                                               x=f"{x:.2f}"),
+                                    HAND_COMPUTED, expected, got, got == expected))
     return cases
 
 
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
-            + positioning_cases(trials))
+            + positioning_cases(trials) + uncertainty_cases())

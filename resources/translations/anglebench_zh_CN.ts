@@ -5209,5 +5209,219 @@ Errors are errors of indication (indicated − reference); the positioning workb
             <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets' error minus reverse sets')</source>
             <translation>，反向差 |ē↑ − ē↓| 最大 {value}（ē↑ − ē↓ 平均 {mean}：正向测回误差减反向测回误差）</translation>
         </message>
+        <message>
+            <source>undefined</source>
+            <translation>无定义</translation>
+        </message>
+        <message>
+            <source>amplitude not significant (A{k} ≤ U)</source>
+            <translation>幅值不显著（A{k} ≤ U）</translation>
+        </message>
+        <message>
+            <source>hand-computed example</source>
+            <translation>手算示例</translation>
+        </message>
+        <message>
+            <source>published table</source>
+            <translation>公开发表的表</translation>
+        </message>
+        <message>
+            <source>ISO 230-2 worked by hand (2 targets, 3 runs each way): {figure}</source>
+            <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
+        </message>
+        <message>
+            <source>Uncertainty and decision (all workbenches)</source>
+            <translation>不确定度与判定（所有工作台）</translation>
+        </message>
+        <message>
+            <source>coverage factor k for ν = {nu}</source>
+            <translation>ν = {nu} 时的包含因子 k</translation>
+        </message>
+        <message>
+            <source>decision rule {rule}: {x}" against T = 1", w = 0.2"</source>
+            <translation>判定规则 {rule}：{x}"，T = 1"，w = 0.2"</translation>
+        </message>
+        <message>
+            <source>Register changed after issue</source>
+            <translation>登记册在签发后被改动</translation>
+        </message>
+        <message>
+            <source>Model / type</source>
+            <translation>型号/规格</translation>
+        </message>
+        <message>
+            <source>Customer's site (where)</source>
+            <translation>委托方现场（地点）</translation>
+        </message>
+        <message>
+            <source>at the laboratory</source>
+            <extracomment>where the calibration was made (ISO/IEC 17025 7.8.2.1 c): the laboratory's own premises, or the customer's site (its address in ``calibration_site``)</extracomment>
+            <translation>在实验室内</translation>
+        </message>
+        <message>
+            <source>at the customer's site</source>
+            <translation>在委托方现场</translation>
+        </message>
+        <message>
+            <source>certificate field 'example' must be true or false</source>
+            <translation>证书字段“example”必须为 true 或 false</translation>
+        </message>
+        <message>
+            <source>certificate field 'calibration_place' must be one of {join}, not '{place}'</source>
+            <translation>证书字段“calibration_place”必须是 {join} 之一，而不是“{place}”</translation>
+        </message>
+        <message>
+            <source>certificate fields 'calibration_date' {calibration} and 'issue_date' {issue}: a certificate cannot be issued before the calibration it reports</source>
+            <translation>证书字段“calibration_date”{calibration} 与“issue_date”{issue}：证书不能在其报告的校准之前签发</translation>
+        </message>
+        <message>
+            <source>approver</source>
+            <translation>批准人</translation>
+        </message>
+        <message>
+            <source>the customer's site where it was calibrated</source>
+            <translation>校准所在的委托方现场</translation>
+        </message>
+        <message>
+            <source>the PDF to check (without it: the register's hash chain and stored PDFs only)</source>
+            <translation>要核验的 PDF（不给出时：只核验登记册的哈希链和所存 PDF）</translation>
+        </message>
+        <message>
+            <source>CHANGED AFTER ISSUE: {problem}</source>
+            <translation>签发后被改动：{problem}</translation>
+        </message>
+        <message>
+            <source>register: hash chain intact over {n} record(s), every stored PDF matches its SHA-256; chain head {head}</source>
+            <translation>登记册：{n} 条记录的哈希链完整，所存每个 PDF 与其 SHA-256 相符；链头 {head}</translation>
+        </message>
+        <message>
+            <source>{path}: {number} is no longer valid: superseded by {by} (see 'anglebench register show {by}')</source>
+            <translation>{path}：{number} 已不再有效：已被 {by} 取代（见“anglebench register show {by}”）</translation>
+        </message>
+        <message>
+            <source>anglebench register: WARNING: {problem}</source>
+            <translation>anglebench register：警告：{problem}</translation>
+        </message>
+        <message>
+            <source>Place of calibration</source>
+            <translation>校准地点</translation>
+        </message>
+        <message>
+            <source>— End of certificate {number} —</source>
+            <translation>— 证书 {number} 结束 —</translation>
+        </message>
+        <message>
+            <source>A draft prints this date; an issued certificate is dated the day the register issues it</source>
+            <translation>草稿打印此日期；签发的证书以登记册签发之日为签发日期</translation>
+        </message>
+        <message>
+            <source>anglebench analyze: these are the bundled example details ("example": true): the certificate is issued in a register of its own, deleted afterwards; your register is not touched</source>
+            <translation>anglebench analyze：这是随附的示例信息（"example": true）：证书签发到其专用的登记册中，之后即删除；您的登记册不受影响</translation>
+        </message>
+        <message>
+            <source>{number} was issued on {original}: an amendment or replacement cannot be dated {today}, before it (check the computer's clock)</source>
+            <translation>{number} 签发于 {original}：其修订或替换证书不能早于它，日期不能为 {today}（请检查计算机时钟）</translation>
+        </message>
+        <message>
+            <source>the stored PDF of {number} no longer matches the SHA-256 recorded when it was issued: it was changed in the database; it is not exported</source>
+            <translation>{number} 所存的 PDF 与签发时记录的 SHA-256 不再相符：它在数据库中被改动过；不予导出</translation>
+        </message>
+        <message>
+            <source>record {number}: the hash chain is broken here (this record, or one before it, was changed, inserted or deleted after issue)</source>
+            <translation>记录 {number}：哈希链在此断开（此记录或其前面的记录在签发后被改动、插入或删除）</translation>
+        </message>
+        <message>
+            <source>record {number}: the stored PDF does not match the SHA-256 recorded at issue</source>
+            <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
+        </message>
+        <message>
+            <source>record {number}: marked "{status}" (superseded by {marked}), but the register's records say {by}</source>
+            <translation>记录 {number}：标为“{status}”（被 {marked} 取代），但登记册的记录表明{by}</translation>
+        </message>
+        <message>
+            <source>superseded by {number}</source>
+            <translation>已被 {number} 取代</translation>
+        </message>
+        <message>
+            <source>issued, superseded by none</source>
+            <translation>已签发，未被取代</translation>
+        </message>
+        <message>
+            <source>an issued certificate needs the name of the person who approves it ("Approved by"); without one it can only be written as a draft</source>
+            <translation>签发的证书需要批准人的姓名（“批准人”）；没有批准人只能写成草稿</translation>
+        </message>
+        <message>
+            <source>the date of calibration {calibration} is after the date of issue {today} (the day the register issues it): a certificate reports a calibration already made</source>
+            <translation>校准日期 {calibration} 晚于签发日期 {today}（登记册签发之日）：证书只能报告已完成的校准</translation>
+        </message>
+        <message>
+            <source>print the version and the source's commit (or, installed without git, the digest of its source files), then exit</source>
+            <translation>显示版本和源代码的提交号（未用 git 安装时为源文件的摘要），然后退出</translation>
+        </message>
+        <message>
+            <source>Check figures: the published figure to the digits it is printed with (the tolerance is half its last digit); a published table likewise.</source>
+            <extracomment>each kind of case's acceptance criterion, and why it is that</extracomment>
+            <translation>校核数值：与发表值在其印出的位数上一致（容差为末位的一半）；公开发表的表同样如此。</translation>
+        </message>
+        <message>
+            <source>Exact simulations and examples worked by hand: agreement to 0.0001" or better, far below any uncertainty a certificate states (its U is 0.01" or more): what remains is rounding, not method.</source>
+            <translation>精确仿真和手算示例：一致到 0.0001" 或更好，远小于证书给出的任何不确定度（其 U 为 0.01" 或更大）：剩下的是舍入误差，而非方法误差。</translation>
+        </message>
+        <message>
+            <source>Budget against Monte Carlo: the spread of N simulated runs estimates a standard uncertainty to about 1/√(2N) (relative); the budget's u must agree within three times that, at least 10 %, over all points, and within four times that, at least 25 %, at the worst point of a curve (with N = 200: 15 % and 25 %; a worst point of 24 % passes by that margin, not by chance: over some 40 points the largest of their sampling errors reaches about 3 × 5 %, and a budget off by a quarter at one point would still be caught).</source>
+            <translation>不确定度评定对蒙特卡洛：N 次仿真的分散性估计标准不确定度的相对误差约为 1/√(2N)；评定的 u 在全部点上须一致到其三倍以内（至少 10 %），在曲线最差点上须一致到其四倍以内（至少 25 %）（N = 200 时为 15 % 和 25 %；最差点 24 % 是按此余量通过，而非偶然：约 40 个点中抽样误差的最大值可达约 3 × 5 %，而某一点偏差四分之一的评定仍会被发现）。</translation>
+        </message>
+        <message>
+            <source>Software cases: exact (every name and figure found in the PDF's text; the register finds what it issued and reports what was changed; a file reads to the same numbers as numpy.loadtxt).</source>
+            <translation>软件用例：精确（PDF 文本中找到每个名称和数值；登记册找到其签发的证书并报告被改动之处；文件读出的数值与 numpy.loadtxt 相同）。</translation>
+        </message>
+        <message>
+            <source>Software (all workbenches)</source>
+            <translation>软件（所有工作台）</translation>
+        </message>
+        <message>
+            <source>exact, end to end</source>
+            <translation>精确，端到端</translation>
+        </message>
+        <message>
+            <source>certificate text as extracted from the PDF (zh, Latin-only lab name)</source>
+            <translation>从 PDF 提取的证书文本（中文，实验室名称仅含拉丁字母）</translation>
+        </message>
+        <message>
+            <source>lab name on {pages} of {pages} pages, {n} of {n} figures</source>
+            <translation>{pages} 页中 {pages} 页有实验室名称，{n} 个数值中 {n} 个</translation>
+        </message>
+        <message>
+            <source>lab name on {named} of {pages} pages, {found} of {n} figures</source>
+            <translation>{pages} 页中 {named} 页有实验室名称，{n} 个数值中 {found} 个</translation>
+        </message>
+        <message>
+            <source>register: issue, verify, a PDF and its hash rewritten in the database</source>
+            <translation>登记册：签发、核验、在数据库中改写 PDF 及其哈希值</translation>
+        </message>
+        <message>
+            <source>verified; the change reported</source>
+            <translation>核验通过；改动被报告</translation>
+        </message>
+        <message>
+            <source>verified: {verified}; changes reported: {caught}</source>
+            <translation>核验：{verified}；报告的改动：{caught}</translation>
+        </message>
+        <message>
+            <source>file import of {file}, as written and with decimal commas, against numpy.loadtxt</source>
+            <translation>导入文件 {file}（原样及小数逗号形式），与 numpy.loadtxt 比较</translation>
+        </message>
+        <message>
+            <source>Document ID</source>
+            <translation>文件编号</translation>
+        </message>
+        <message>
+            <source>Four workbenches. Three use non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T 17421.2). For each: the publication's check figures or, for the standard method, examples worked by hand; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase, an axis with a known error and lost motion) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101). Then what every workbench shares: the coverage factor k from ν, the decision rules, the certificate's text as a reader extracts it from the PDF, the register, and file import.</source>
+            <translation>四个工作台。其中三个采用非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。第四个，轴线定位，采用标准方法（ISO 230-2、VDI/DGQ 3441、GB/T 17421.2）。对每个工作台：论文的校核数值，或对标准方法为手算示例；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号、误差和反向间隙已知的轴线）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。然后是各工作台共用的部分：由 ν 求包含因子 k、判定规则、从 PDF 提取的证书文本、登记册和文件导入。</translation>
+        </message>
+        <message>
+            <source>Acceptance criteria</source>
+            <translation>验收准则</translation>
+        </message>
     </context>
 </TS>
