@@ -154,6 +154,8 @@ class PositioningResult:
     standard: str
     least_runs: dict[str, int]  # direction ("up"/"down") → fewest runs at any target
     warnings: list[str] = field(default_factory=list)
+    # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
+    inputs: dict[str, float] = field(default_factory=dict)
 
     @property
     def positions(self) -> np.ndarray:
