@@ -28,6 +28,22 @@
         <translation>自准直仪 y [&quot;]</translation>
     </message>
     <message>
+        <source>ADC LSB</source>
+        <translation>ADC 最低有效位</translation>
+    </message>
+    <message>
+        <source>ADC gain ratio u</source>
+        <translation>ADC 增益比 u</translation>
+    </message>
+    <message>
+        <source>ADC linearity ±</source>
+        <translation>ADC 线性度 ±</translation>
+    </message>
+    <message>
+        <source>ADC offset u</source>
+        <translation>ADC 偏置 u</translation>
+    </message>
+    <message>
         <source>A_down</source>
         <translation>A↓</translation>
     </message>
@@ -96,12 +112,97 @@
         <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
     </message>
     <message>
+        <source>expansion coefficient</source>
+        <translation>线膨胀系数</translation>
+    </message>
+    <message>
+        <source>reference resolution</source>
+        <translation>参考仪器分辨力</translation>
+    </message>
+    <message>
         <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
         <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
     </message>
     <message>
         <source>The phase was estimated from the signals, with no phase reference: offsets, amplitude ratio and quadrature error are identified; a pure phase distortion of the grating is not observable this way and is not in the error stated.</source>
         <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
+    </message>
+    <message>
+        <source>the sampling&apos;s uniformity (the timing of the samples)</source>
+        <extracomment>what the phase reference is, by where the phase came from</extracomment>
+        <translation>采样的均匀性（各采样点的时刻）</translation>
+    </message>
+    <message>
+        <source>the θ reference&apos;s stated U</source>
+        <translation>θ 参考给出的 U</translation>
+    </message>
+    <message>
+        <source>the phase estimation&apos;s validated limit</source>
+        <translation>相位估计经确认的限值</translation>
+    </message>
+    <message>
+        <source>Phase reference</source>
+        <translation>相位参考</translation>
+    </message>
+    <message>
+        <source>{what}: u = {u}° of a period (stated)</source>
+        <translation>{what}：u = 一个周期的 {u}°（给定值）</translation>
+    </message>
+    <message>
+        <source>ADC quantisation</source>
+        <translation>ADC 量化</translation>
+    </message>
+    <message>
+        <source>LSB {lsb} mV: LSB/√12 in each channel (also in the residuals&apos; scatter: counted twice, on the safe side)</source>
+        <translation>最低有效位 {lsb} mV：每通道 LSB/√12（也包含在残差的分散性中：重复计入，偏于安全）</translation>
+    </message>
+    <message>
+        <source>ADC offset</source>
+        <translation>ADC 偏置</translation>
+    </message>
+    <message>
+        <source>u = {u} mV in each channel (stated); taken as the ADC&apos;s, not the read head&apos;s</source>
+        <translation>每通道 u = {u} mV（给定值）；视为 ADC 的偏置，而非读数头的</translation>
+    </message>
+    <message>
+        <source>ADC gain ratio</source>
+        <translation>ADC 增益比</translation>
+    </message>
+    <message>
+        <source>u = {u} % of the ratio of the channels&apos; gains (stated)</source>
+        <translation>两通道增益之比的 u = {u} %（给定值）</translation>
+    </message>
+    <message>
+        <source>ADC linearity</source>
+        <translation>ADC 线性度</translation>
+    </message>
+    <message>
+        <source>integral nonlinearity ±{a} mV in each channel (stated)</source>
+        <translation>每通道积分非线性 ±{a} mV（给定值）</translation>
+    </message>
+    <message>
+        <source>the phase reference ({what}) has no stated uncertainty</source>
+        <translation>相位参考（{what}）未给出不确定度</translation>
+    </message>
+    <message>
+        <source>quantisation</source>
+        <translation>量化</translation>
+    </message>
+    <message>
+        <source>offset</source>
+        <translation>偏置</translation>
+    </message>
+    <message>
+        <source>gain</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <source>linearity</source>
+        <translation>线性度</translation>
+    </message>
+    <message>
+        <source>the ADC&apos;s {figures} have no stated uncertainty</source>
+        <translation>ADC 的{figures}未给出不确定度</translation>
     </message>
     <message>
         <source>sample</source>
@@ -133,6 +234,7 @@
     </message>
     <message>
         <source>the certificate details say a correction table with checksum {as_left_table_sha256}… was loaded into the encoder, but this analysis&apos;s table is {sha256}…: export and load this table, or clear the checksum</source>
+        <extracomment>a record of up to this many samples is printed whole on the certificate</extracomment>
         <translation>证书信息称已将校验和为 {as_left_table_sha256}… 的修正表载入编码器，但本次分析的修正表为 {sha256}…：请导出并载入本修正表，或清除该校验和</translation>
     </message>
     <message>
@@ -148,16 +250,24 @@
         <translation>量值</translation>
     </message>
     <message>
-        <source>The first {per} samples are shown (every {step}-th); all {n} samples are in the CSV/XLSX results export.</source>
-        <translation>列出前 {per} 个采样点（每 {step} 个取一个）；全部 {n} 个采样点见 CSV/XLSX 结果导出文件。</translation>
+        <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
+        <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
     </message>
     <message>
-        <source>The first {per} samples are shown; all {n} samples are in the CSV/XLSX results export.</source>
-        <translation>列出前 {per} 个采样点；全部 {n} 个采样点见 CSV/XLSX 结果导出文件。</translation>
+        <source>The first {per} samples are shown (every {step}-th), and the samples with the extremes of each error and the largest U; all {n} samples are in the CSV/XLSX results export.</source>
+        <translation>列出前 {per} 个采样点（每 {step} 个取一个），以及各误差取极值和 U 最大的采样点；全部 {n} 个采样点在 CSV/XLSX 结果导出文件中。</translation>
     </message>
     <message>
-        <source>Results per sample (first period; compensated = raw + correction)</source>
-        <translation>各采样点结果（第一个周期；补偿后 = 原始 + 修正值）</translation>
+        <source>Results per sample (compensated = raw + correction)</source>
+        <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
+        <translation>符合性按校准前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
+    </message>
+    <message>
+        <source>The compensated error is the error the correction table is expected to leave, if the signals stay as they were measured.</source>
+        <translation>补偿后误差是在信号保持测量时状态的前提下，预计修正表施加后剩余的误差。</translation>
     </message>
     <message>
         <source>Sample</source>
@@ -220,6 +330,10 @@
         <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
     </message>
     <message>
+        <source>the error is not traceable: {what}</source>
+        <translation>误差不具有溯源性：{what}</translation>
+    </message>
+    <message>
         <source>as-found interpolation error</source>
         <translation>校准前细分误差</translation>
     </message>
@@ -254,10 +368,6 @@
     <message>
         <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left.</source>
         <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态。</translation>
-    </message>
-    <message>
-        <source>Conformity is judged on the interpolation error as found. The compensated error is the error the correction table would leave; it is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
-        <translation>符合性按校准前细分误差判定。补偿后误差是施加修正表后将剩余的误差；除非该修正表已载入被校对象（修正表 sha256 {sha}），否则它不是被校对象自身的误差。</translation>
     </message>
     <message>
         <source>Fringe signal analysis</source>
@@ -530,10 +640,6 @@
         <translation>未评定</translation>
     </message>
     <message>
-        <source>no direction was measured twice</source>
-        <translation>没有方向被测量两次</translation>
-    </message>
-    <message>
         <source>Reversal B (largest |x̄↑ − x̄↓|)</source>
         <translation>反向差 B（最大 |x̄↑ − x̄↓|）</translation>
     </message>
@@ -550,12 +656,24 @@
         <translation>各位置</translation>
     </message>
     <message>
+        <source>Repeatability was not evaluated: one set and no vertical readings, so nothing in U covers the scatter of the readings; U understates the uncertainty by it.</source>
+        <translation>未评定重复性：仅一个测回且无竖直读数，因此 U 中没有分量覆盖读数的分散性；U 因此低估了不确定度。</translation>
+    </message>
+    <message>
         <source>Polygon encoder test</source>
         <translation>多面棱体编码器检测</translation>
     </message>
     <message>
         <source>position {position}</source>
         <translation>第 {position} 位置</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice; in U the autocollimator&apos;s reading noise from the tilt fits stands for it</source>
+        <translation>没有方向被测量两次；U 中以塔差拟合得到的自准直仪读数噪声代替</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice and there are no vertical readings: nothing in U covers it</source>
+        <translation>没有方向被测量两次，且无竖直读数：U 中没有分量覆盖它</translation>
     </message>
     <message>
         <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
@@ -707,10 +825,6 @@
         <translation>逐次测量的读数</translation>
     </message>
     <message>
-        <source>Residuals far above it (3×) raise a warning; 0: no check</source>
-        <translation>残差远大于此值（3 倍）时给出警告；0：不检查</translation>
-    </message>
-    <message>
         <source>Reversal value B_i = x̄↑ − x̄↓</source>
         <translation>反向差值 B_i = x̄↑ − x̄↓</translation>
     </message>
@@ -727,8 +841,44 @@
         <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
     </message>
     <message>
+        <source>Standard uncertainty at a target from the reference&apos;s alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated</source>
+        <translation>参考仪器相对于轴线的对准（余弦误差、偏心）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty at a target from the temperatures (the axis&apos; expansion and its compensation, the reference&apos;s environment), in the deviation unit. 0: not stated</source>
+        <translation>温度（轴的热膨胀及其补偿、参考仪器的环境）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of each channel&apos;s ADC offset, from its calibration. 0: not stated</source>
+        <translation>各通道 ADC 偏置的标准不确定度，取自其校准。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k, with an estimated phase the method&apos;s validated limit. 0: not stated</source>
+        <translation>各采样点相位的标准不确定度，以信号周期的度数表示：N 等分步长时为采样的均匀性（各采样点的时刻），有 θ 列时为其参考给出的 U / k，相位由估计得出时为该方法经确认的限值。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of the ratio of the two channels&apos; ADC gains (a gain common to both does not move the phase). 0: not stated</source>
+        <translation>两通道 ADC 增益之比的标准不确定度（两通道共同的增益不改变相位）。0：未给出</translation>
+    </message>
+    <message>
         <source>Table 1 of the seed: the accuracy judged, and the tilt it allows</source>
         <translation>论文表 1：所判定的准确度及其允许的倾斜</translation>
+    </message>
+    <message>
+        <source>Temperature of the axis (its scale or encoder) during the test (ISO 230-2, clause 8). 0: not stated</source>
+        <translation>检测期间轴（其标尺或编码器）的温度（ISO 230-2 第 8 章）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The ADC&apos;s integral nonlinearity limit ±a per channel (rectangular). 0: not stated</source>
+        <translation>每通道 ADC 积分非线性限值 ±a（矩形分布）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The ADC&apos;s step (quantisation LSB/√12 per channel). 0: not stated</source>
+        <translation>ADC 的量化步长（每通道量化 LSB/√12）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The axis&apos; set-up (ISO 230-2, clause 8): position of the reference, load, feed, dwell at each target, other axes&apos; positions</source>
+        <translation>轴的安装状态（ISO 230-2 第 8 章）：参考仪器的位置、负载、进给速度、各目标位置的停留时间、其他轴的位置</translation>
     </message>
     <message>
         <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
@@ -743,6 +893,10 @@
         <translation>每个通道拟合的最高次谐波</translation>
     </message>
     <message>
+        <source>The nominal expansion coefficient the compensation used (linear axes; ISO 230-2, clause 8). 0: not stated</source>
+        <translation>补偿所用的名义线膨胀系数（直线轴；ISO 230-2 第 8 章）。0：未给出</translation>
+    </message>
+    <message>
         <source>The phase origin is arbitrary: the table is stated with its mean removed, or with its first entry zero (said in the exported file)</source>
         <translation>相位原点是任意的：修正表去除其平均值，或使第一个条目为零（在导出文件中说明）</translation>
     </message>
@@ -755,6 +909,11 @@
         <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即原文 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
     </message>
     <message>
+        <source>Set-up parameters: azimuths are counted from the theodolite&apos;s azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis&apos; upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed&apos;s E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
+        <extracomment>what ψ, α and β are (the frame of SPEC §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/test_certificate_uncertainty.py)</extracomment>
+        <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
+    </message>
+    <message>
         <source>elevation readings</source>
         <extracomment>how the table names what the set-up was identified from (ident.method)</extracomment>
         <translation>竖直读数</translation>
@@ -762,6 +921,10 @@
     <message>
         <source>azimuth readings</source>
         <translation>水平读数</translation>
+    </message>
+    <message>
+        <source>θ = {theta}° (row {row} of the results)</source>
+        <translation>θ = {theta}°（结果表第 {row} 行）</translation>
     </message>
     <message>
         <source>reading (pointing)</source>
@@ -780,8 +943,8 @@
         <translation>参考读数（θ₀）</translation>
     </message>
     <message>
-        <source>the zeroing reading, shared by every point</source>
-        <translation>置零读数，各点共用</translation>
+        <source>the zeroing reading, shared by every point: a second reading, independent of the point&apos;s own, but the same estimate s, so for ν_eff one input with the repeatability (ν counted once)</source>
+        <translation>置零读数，为各点共用：是与该点自身读数相互独立的另一个读数，但来自同一个估计值 s，因此计算 ν_eff 时与重复性合为一个输入量（ν 只计一次）</translation>
     </message>
     <message>
         <source>Set-up model ζ (ψ, α, β)</source>
@@ -858,10 +1021,6 @@
     <message>
         <source>VDI/DGQ 3441:1977</source>
         <translation>VDI/DGQ 3441:1977</translation>
-    </message>
-    <message>
-        <source>What the theodolite&apos;s vertical circle reads</source>
-        <translation>经纬仪竖盘的读数类型</translation>
     </message>
     <message>
         <source>Whether the encoder counts up or down as the face numbers rise; auto finds it from the readings and says so</source>
@@ -1072,6 +1231,26 @@
         <translation>俯仰角 E</translation>
     </message>
     <message>
+        <source>Resolution of the reference&apos;s reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>
+        <translation>参考仪器读数的分辨力，以偏差单位表示（矩形分布，半宽 r/2）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals far above it (3×) raise a warning; 0: no check</source>
+        <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差远大于它（3 倍）时给出警告；0：不检查</translation>
+    </message>
+    <message>
+        <source>What the theodolite&apos;s vertical circle reads; E is the seed&apos;s, positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
+        <translation>经纬仪竖直度盘的读数；E 按原文定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
+    </message>
+    <message>
+        <source>axis set-up</source>
+        <translation>轴的安装状态</translation>
+    </message>
+    <message>
+        <source>axis temperature</source>
+        <translation>轴的温度</translation>
+    </message>
+    <message>
         <source>elevations (recommended)</source>
         <translation>俯仰角（推荐）</translation>
     </message>
@@ -1212,6 +1391,10 @@
         <translation>毫米（直线轴）</translation>
     </message>
     <message>
+        <source>misalignment u</source>
+        <translation>对准误差 u</translation>
+    </message>
+    <message>
         <source>nanometres</source>
         <translation>纳米</translation>
     </message>
@@ -1234,6 +1417,10 @@
     <message>
         <source>phase from θ or the signals</source>
         <translation>相位取自 θ 或信号</translation>
+    </message>
+    <message>
+        <source>phase reference u</source>
+        <translation>相位参考 u</translation>
     </message>
     <message>
         <source>polygon dev [&quot;]</source>
@@ -1374,6 +1561,10 @@
     <message>
         <source>target unit</source>
         <translation>目标位置单位</translation>
+    </message>
+    <message>
+        <source>temperature u</source>
+        <translation>温度 u</translation>
     </message>
     <message>
         <source>theodolite accuracy (1σ)</source>
@@ -2296,8 +2487,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>扩展不确定度 U（k = {k}）</translation>
     </message>
     <message>
-        <source>Budget at {point}, the point with the largest U. k = {k} is Student&apos;s t for ν_eff = {nu} (Welch–Satterthwaite) and a coverage probability of {p} %; each point&apos;s U uses its own ν_eff.</source>
-        <translation>分量表取自{point}，即 U 最大的点。k = {k} 为 ν_eff = {nu}（Welch–Satterthwaite 公式）、包含概率 {p} % 时的 t 分布值；各点的 U 采用其自身的 ν_eff。</translation>
+        <source>Budget at {point}, the point with the largest U. k = {k} is Student&apos;s t for ν = {nu}, the effective degrees of freedom (Welch–Satterthwaite: {raw}) truncated to the lower integer (GUM G.6.4), and a coverage probability of {p} %; each point&apos;s U uses its own ν.</source>
+        <translation>分量一览表取自 {point}，即 U 最大的点。k = {k} 为 t 分布在 ν = {nu} 和包含概率 {p} % 时的值，ν 为有效自由度（韦尔奇–萨特思韦特公式：{raw}）向下取整（GUM G.6.4）；各点的 U 采用其自身的 ν。</translation>
     </message>
     <message>
         <source>Uncertainty budget</source>
@@ -2326,6 +2517,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Share %</source>
         <translation>占比 %</translation>
+    </message>
+    <message>
+        <source>Opinion and interpretation (ISO/IEC 17025 7.8.7), not a measured result: {text}</source>
+        <translation>意见和解释（ISO/IEC 17025 7.8.7），并非测量结果：{text}</translation>
     </message>
     <message>
         <source>Reference standard</source>
@@ -2485,10 +2680,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
     </message>
     <message>
-        <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate is listed.</source>
-        <translation>计量溯源性：本文件未建立——未列出具有校准证书的计量标准。</translation>
-    </message>
-    <message>
         <source>{standard} (certificate {certificate})</source>
         <translation>{standard}（证书 {certificate}）</translation>
     </message>
@@ -2497,8 +2688,24 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>计量标准</translation>
     </message>
     <message>
+        <source>Metrological traceability: not established for these results — {what}; no statement of conformity rests on them.</source>
+        <translation>计量溯源性：本结果未建立溯源性——{what}；不依据本结果作符合性声明。</translation>
+    </message>
+    <message>
+        <source>The standards listed with a certificate and a stated uncertainty: {names}.</source>
+        <translation>所列具有证书并给出不确定度的计量标准：{names}。</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate and a stated uncertainty is listed.</source>
+        <translation>计量溯源性：本文件未建立——未列出具有校准证书并给出不确定度的计量标准。</translation>
+    </message>
+    <message>
         <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the reference standards listed, calibrated as stated in their certificates: {names}.</source>
         <translation>计量溯源性：通过所列计量标准，校准结果可溯源至国际单位制（SI）平面角单位，各标准的校准见其证书：{names}。</translation>
+    </message>
+    <message>
+        <source>{standard}: no uncertainty stated, so it is no input of the budget and the results are not traceable through it.</source>
+        <translation>{standard}：未给出不确定度，因此不是不确定度分量，结果也不能通过它溯源。</translation>
     </message>
     <message>
         <source>temperature {t} °C</source>
@@ -3119,6 +3326,31 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
+        <source>Misalignment of the reference</source>
+        <extracomment>the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)</extracomment>
+        <translation>参考仪器的对准误差</translation>
+    </message>
+    <message>
+        <source>Resolution of the reference</source>
+        <translation>参考仪器的分辨力</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>resolution {r}: rectangular, half-width r/2</source>
+        <translation>分辨力 {r}：矩形分布，半宽 r/2</translation>
+    </message>
+    <message>
+        <source>u = {r} at every target (stated)</source>
+        <translation>各目标位置 u = {r}（给定值）</translation>
+    </message>
+    <message>
+        <source>{figure}, U = {u}</source>
+        <translation>{figure}，U = {u}</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
         <translation>正向 {n}</translation>
     </message>
@@ -3191,8 +3423,20 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
     </message>
     <message>
-        <source>Compensation = −mean deviation: a controller adding it to the commanded position reaches the target.</source>
-        <translation>补偿值 = −平均偏差：控制器将其加到指令位置上即可到达目标位置。</translation>
+        <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
+        <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
+    </message>
+    <message>
+        <source>U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM 101, seed {seed}) from the inputs of the per-target U — each reading drawn about its target&apos;s mean with its s, each Type B input once per target and direction — and the figures evaluated as above; the central interval of {p} % about the median, printed −/+ where it is not symmetric.</source>
+        <translation>轴线各项指标的 U：以蒙特卡洛法（JCGM 101，随机种子 {seed}）由各目标位置 U 的输入量将检测重复 {trials} 次——各读数按其目标位置的平均值和 s 抽样，各 B 类输入量按每个目标位置和方向抽样一次——并按上述方法计算各项指标；取中位数附近包含概率 {p} % 的中心区间，不对称时以 −/+ 给出。</translation>
+    </message>
+    <message>
+        <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
+        <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
+    </message>
+    <message>
+        <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
+        <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
     </message>
     <message>
         <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
@@ -3240,7 +3484,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio and the quadrature error are identified from the Lissajous ellipse (Heydemann); the harmonics are fitted against the estimated phase, so only the part of their distortion that bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure round and is not observable without a phase reference.</source>
-        <extracomment>Channel voltages beyond this are not a read head&apos;s signals. A fit of the channels against the phase below this R² means the phase is wrong.</extracomment>
+        <extracomment>the settings that are inputs of the certificate&apos;s budget (FringeResult.inputs) Channel voltages beyond this are not a read head&apos;s signals. A fit of the channels against the phase below this R² means the phase is wrong.</extracomment>
         <translation>相位由信号估计（无相位基准）：直流偏置、幅值比和正交误差由李萨如椭圆辨识（Heydemann）；谐波按估计的相位拟合，因此只能看到其畸变中使李萨如图形弯曲的部分——光栅的纯相位畸变使图形仍为圆形，没有相位基准时无法观测。</translation>
     </message>
     <message>
@@ -3582,12 +3826,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{set}：缺少垂直读数：未辨识也未扣除棱锥误差。</translation>
     </message>
     <message>
-        <source>Repeatability was not evaluated: one set and no vertical readings.</source>
-        <translation>未评定重复性：只有一组测量且没有垂直读数。</translation>
-    </message>
-    <message>
         <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
-        <extracomment>A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
+        <extracomment>the settings that are inputs of the certificate&apos;s budget (PositioningResult.inputs) A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
         <translation>deviation_unit {s} 适用于以 {belongs} 为单位的轴，但 target_unit 为 {s2}：deg 请选 arcsec 或 urad，mm 请选 um 或 nm</translation>
     </message>
     <message>
@@ -4036,7 +4276,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>pass ≤ {t} &lt; fail</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so.</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/test_half_range_coverage.py: true half range 3σ, 36 points, 300 measurements each).</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -4064,6 +4304,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
     </message>
     <message>
+        <source>No statement of conformity is possible: the expanded uncertainty U = {u} is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
+        <translation>无法作符合性声明：扩展不确定度 U = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
+    </message>
+    <message>
         <source>corrected error</source>
         <translation>修正后误差</translation>
     </message>
@@ -4076,8 +4320,20 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
     </message>
     <message>
-        <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is number {point}: |e| = {e}, U = {u}. {sentence}</source>
-        <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的是第 {point} 点：|e| = {e}，U = {u}。{sentence}</translation>
+        <source>point {n}</source>
+        <translation>第 {n} 点</translation>
+    </message>
+    <message>
+        <source>(at {point})</source>
+        <translation>（在 {point}）</translation>
+    </message>
+    <message>
+        <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
+        <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
+    </message>
+    <message>
+        <source>the interval&apos;s coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis&apos; curve, against the {p} % stated</source>
+        <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
     </message>
     <message>
         <source>per point, with w = U of that point: {zones}</source>
