@@ -75,8 +75,10 @@ MAX_MONTE_CARLO_POINTS = 16_384
 
 
 #: The coverage the half-range interval achieved in its validation, by curve shape
-#: (tests/test_half_range_coverage.py: true half range 3σ, 36 points, 300 measurements each).
-HALF_RANGE_COVERAGE = {"smooth": 0.87, "rough": 0.87, "spike": 0.96, "sample": 0.9}
+#: (tests/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real
+#: sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the
+#: certificate prints it.
+HALF_RANGE_COVERAGE = {"smooth": 0.883, "rough": 0.917, "spike": 0.900, "sample": 0.893}
 
 
 def significant_decimals(expanded: float) -> int | None:
