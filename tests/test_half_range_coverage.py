@@ -9,7 +9,7 @@ not. The study behind the printed figures ran 300 measurements of each shape (se
 20261201, binomial standard error ≈ 1.7 %): smooth 88.3 %, rough 91.7 %, spike 90.0 %,
 the real sample 89.3 %; it
 falls short of the stated 95.45 %, and the certificate prints what it achieved. This test
-runs 60 of each on its own seed and checks the printed figures within 3.5 standard errors.
+runs 40 of each on its own seed and checks the printed figures within 3.5 standard errors.
 """
 
 from __future__ import annotations
@@ -74,7 +74,7 @@ def coverage(name: str, repeats: int, seed: int, snr: float = 3.0) -> tuple[int,
 
 @pytest.mark.parametrize("name", SHAPES)
 def test_printed_coverage_is_what_the_interval_achieves(name):
-    repeats = 60
+    repeats = 40
     hits, n = coverage(name, repeats, seed=7)
     stated = HALF_RANGE_COVERAGE[name]
     se = math.sqrt(stated * (1 - stated) / n) if 0 < stated < 1 else 1 / n

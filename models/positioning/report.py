@@ -230,9 +230,8 @@ def _with_u(text: str, value, interval: tuple[float, float] | None, sym: str) ->
     if interval is None or value is None or not math.isfinite(value):
         return text
     lower, upper = interval
-    d = max(2, uncertainty_decimals(max(min(lower, upper), 1e-12)))
-    d = min(d, 4)
-    return message(QT_TR_NOOP("{figure}, U = {u}"), figure=text,
+    d = min(max(2, uncertainty_decimals(max(min(lower, upper), 1e-12))), 4)
+    return message(QT_TR_NOOP("{figure}, U = {u}"), figure=f"{value:.{d}f}{sym}",
                    u=asymmetric_text(lower, upper, sym, d))
 
 
