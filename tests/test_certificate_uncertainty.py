@@ -369,3 +369,19 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
     assert rows and "the autocollimator's reading noise from the tilt fits stands for it" in rows[0][2]
     assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
+
+
+def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    meta = replace(META, tolerance_arcsec=0.5, standards=(
+        replace(META.standards[0], description="Data acquisition (16-bit ADC)",
+                certificate_no="CAL-2026-33", uncertainty_arcsec=None),))
+    document = kind.certificate_document(result, meta)
+    assert document.stated_inputs == ("Phase reference", "ADC quantisation", "ADC offset",
+                                      "ADC gain ratio", "ADC linearity")
+    flat = _flat(document)
+    assert ("traceable to the SI unit of plane angle through the reference standards listed, "
+            "calibrated as stated in their certificates: Data acquisition (16-bit ADC) "
+            "(certificate CAL-2026-33; its figures enter as the inputs stated in the settings: "
+            "Phase reference, ADC quantisation, ADC offset, ADC gain ratio, ADC linearity)") in flat
+    assert "no uncertainty stated" not in flat

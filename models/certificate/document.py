@@ -71,6 +71,9 @@ class CertificateDocument:
     sign_convention: str = SIGN_CONVENTION_TEXT  # how the certificate's deviations are signed
     # inputs of the result with no stated uncertainty: not traceable through them (said so)
     untraceable: tuple[str, ...] = ()
+    # inputs of the budget stated in the analysis settings (a standard listed with its
+    # certificate and no U in the table stands behind them: the ADC's figures, say)
+    stated_inputs: tuple[str, ...] = ()
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:

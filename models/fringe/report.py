@@ -122,6 +122,10 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
     return out
 
 
+_STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
+                 "ADC linearity")
+
+
 def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     """The inputs of the error that have no stated uncertainty: the result is not traceable
     through them, and no statement of conformity rests on it."""
@@ -326,6 +330,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         method_reference, parameters, results, statistics, budget,
         message(QT_TR_NOOP("sample {sample}"), sample=worst + 1), conformity, tol, plots,
         tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
+        stated_inputs=tuple(c.name for c in budget.components
+                            if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (
             (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),

@@ -2684,6 +2684,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{standard}（证书 {certificate}）</translation>
     </message>
     <message>
+        <source>{standard} (certificate {certificate}; its figures enter as the inputs stated in the settings: {inputs})</source>
+        <translation>{standard}（证书 {certificate}；其数据作为分析设置中给出的输入量计入：{inputs}）</translation>
+    </message>
+    <message>
         <source>standard</source>
         <translation>计量标准</translation>
     </message>
