@@ -281,3 +281,107 @@ def test_fringe_prints_every_sample_and_its_extreme():
     assert len(rows) == result.raw_error.size == 512
     lowest = int(np.argmin(result.raw_error))
     assert rows[lowest][0] == f"{lowest + 1}" and rows[lowest][2] == f"{result.raw_error[lowest]:+.3f}"
+
+
+# 6. the positioning figures with their U ---------------------------------------------------
+def test_axis_figures_of_the_measured_statistics_are_the_evaluated_ones():
+    """The vectorised figures of the Monte Carlo, fed the measured means and s, give the
+    ISO 230-2 and VDI/DGQ 3441 figures of the evaluation."""
+    from models.positioning.report import axis_figures
+
+    _, result = _sample("positioning")
+    stats = {name: (st.mean[None, :], st.std[None, :])
+             for name, _, st in result.directions_present()}
+    figures = axis_figures(stats)
+    for key, value in result.iso.figures.items():
+        assert figures[key][0] == pytest.approx(value, abs=1e-12), key
+    for key, value in result.vdi.as_dict().items():
+        assert figures[key][0] == pytest.approx(value, abs=1e-12), key
+
+
+def test_positioning_figures_carry_their_u():
+    """B̄ = mean of the reversals x̄↑ − x̄↓ over m targets, each mean with its own u_c (the
+    per-target budget): by hand U(B̄) = 2 √(Σ u↑² + u↓²) / m, every input independent from
+    target to target; the Monte Carlo's interval agrees within 5 %."""
+    from models.positioning.report import figure_uncertainties, positioning_budget
+
+    _, result = _sample("positioning")
+    budget = positioning_budget(result, META)
+    intervals = figure_uncertainties(result, budget)
+    m = result.positions.size
+    hand = 2.0 * math.sqrt(float(np.sum(budget.combined_arcsec**2))) / m
+    lower, upper = intervals["B_mean"]
+    assert lower == pytest.approx(hand, rel=0.05) and upper == pytest.approx(hand, rel=0.05)
+    for key in ("A", "R", "E", "M", "B", "B_mean", "P"):
+        assert key in intervals and min(intervals[key]) > 0
+    # E is a range of means: at least one mean's U, at most that of a difference of two
+    u_mean = 2.0 * float(np.max(budget.combined_arcsec))
+    assert 0.5 * u_mean < intervals["E"][1] < math.sqrt(2) * u_mean * 1.1
+    kind, _ = _sample("positioning")
+    document = kind.certificate_document(result, META)
+    rows = {row[0].split(":")[0]: row[1] for row in document.statistics.rows}
+    assert f"U = ±{hand:.2f}\"" in str(rows["B_mean"]) or "U = −" in str(rows["B_mean"])
+    for key in ("A", "R", "E", "M", "B", "P"):
+        assert ", U = " in str(rows[key]), key
+
+
+def test_positioning_states_its_inputs_and_the_test_conditions():
+    kind, result = _sample("positioning", {"misalignment_u": 0.3, "reference_resolution": 0.1,
+                                          "temperature_u": 0.2, "axis_temperature_c": 20.3,
+                                          "axis_setup": "calibrator on the table centre"})
+    settings = {"misalignment_u": 0.3, "reference_resolution": 0.1, "temperature_u": 0.2,
+                "axis_temperature_c": 20.3, "axis_setup": "calibrator on the table centre"}
+    document = kind.certificate_document(result, META, settings=settings)
+    rows = {r["name"]: r for r in document.budget.table()}
+    assert rows["Misalignment of the reference"]["u_arcsec"] == pytest.approx(0.3)
+    assert rows["Resolution of the reference"]["u_arcsec"] == pytest.approx(0.1 / math.sqrt(12))
+    assert rows["Temperature"]["u_arcsec"] == pytest.approx(0.2)
+    listed = dict(document.settings)
+    assert "calibrator on the table centre" in listed.values()
+    assert any("20.3" in v for v in listed.values())
+    statements = " ".join(str(s) for s in document.statements)
+    assert "Inputs not stated" not in statements and "sensitivity 1" in statements
+    bare = kind.certificate_document(_sample("positioning")[1], META)
+    assert "Inputs not stated, so not in U: Misalignment of the reference, Resolution of the " \
+           "reference, Temperature" in " ".join(str(s) for s in bare.statements)
+
+
+# 20. advice marked as opinion ---------------------------------------------------------------
+def test_advice_is_marked_as_opinion():
+    kind, result = _sample("positioning")
+    statements = [str(s) for s in kind.certificate_document(result, META).statements]
+    advice = [s for s in statements if "controller" in s]
+    assert advice and all(s.startswith("Opinion and interpretation (ISO/IEC 17025 7.8.7)")
+                          for s in advice)
+
+
+# 19. polygon: what covers the repeatability when it is not evaluated -------------------------
+def test_polygon_says_what_covers_an_unevaluated_repeatability():
+    from models.polygon.analysis import POLYGON
+    from models.validation.polygon_rig import PolygonRig
+
+    rig = PolygonRig(8, 0.3 * np.sin(np.radians(np.arange(8) * 45.0)), psi_arcsec=200.0,
+                     omega_deg=40.0, noise_arcsec=0.1, rng=np.random.default_rng(8))
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
+                             {"grade": 4, "ac_roll_arcmin": 0.0})
+    assert result.repeatability_arcsec is None  # one set
+    document = POLYGON.certificate_document(result, replace(META, tolerance_arcsec=None))
+    rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
+    assert rows and "the autocollimator's reading noise from the tilt fits stands for it" in rows[0][2]
+    assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
+
+
+def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
+    kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    meta = replace(META, tolerance_arcsec=0.5, standards=(
+        replace(META.standards[0], description="Data acquisition (16-bit ADC)",
+                certificate_no="CAL-2026-33", uncertainty_arcsec=None),))
+    document = kind.certificate_document(result, meta)
+    assert document.stated_inputs == ("Phase reference", "ADC quantisation", "ADC offset",
+                                      "ADC gain ratio", "ADC linearity")
+    flat = _flat(document)
+    assert ("traceable to the SI unit of plane angle through the reference standards listed, "
+            "calibrated as stated in their certificates: Data acquisition (16-bit ADC) "
+            "(certificate CAL-2026-33; its figures enter as the inputs stated in the settings: "
+            "Phase reference, ADC quantisation, ADC offset, ADC gain ratio, ADC linearity)") in flat
+    assert "no uncertainty stated" not in flat

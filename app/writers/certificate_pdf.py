@@ -767,11 +767,18 @@ def _traceability(document: CertificateDocument) -> str:
     with no stated uncertainty is no input of the budget, and an input of the result with
     none (document.untraceable) leaves the result untraceable, with no conformity on it."""
     standards = document.metadata.standards
-    listed = [s for s in standards if s.certificate_no and s.uncertainty_arcsec is not None]
+    stated = document.stated_inputs
+    listed = [s for s in standards if s.certificate_no and (s.uncertainty_arcsec is not None
+                                                             or stated)]
     names = joined(_between("; ", (
         message(QT_TR_NOOP("{standard} (certificate {certificate})"),
                 standard=s.description or message(QT_TR_NOOP("standard")),
-                certificate=s.certificate_no) for s in listed)))
+                certificate=s.certificate_no) if s.uncertainty_arcsec is not None else
+        message(QT_TR_NOOP("{standard} (certificate {certificate}; its figures enter as the "
+                           "inputs stated in the settings: {inputs})"),
+                standard=s.description or message(QT_TR_NOOP("standard")),
+                certificate=s.certificate_no, inputs=joined(_between(", ", stated)))
+        for s in listed)))
     if document.untraceable:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established for these "
                                     "results — {what}; no statement of conformity rests on "
@@ -790,7 +797,7 @@ def _traceability(document: CertificateDocument) -> str:
                                     "listed, calibrated as stated in their certificates: "
                                     "{names}."), names=names)]
     for s in standards:
-        if s.uncertainty_arcsec is None:
+        if s.uncertainty_arcsec is None and not (stated and s.certificate_no):
             parts += [" ", message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
                                               "input of the budget and the results are not "
                                               "traceable through it."),

@@ -31,7 +31,7 @@ from models.uncertainty.conformity import (
 )
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "format_uncertain", "reference_standard_components",
+           "format_uncertain", "opinion", "reference_standard_components",
            "resolution_component"]
 
 
@@ -71,6 +71,9 @@ class CertificateDocument:
     sign_convention: str = SIGN_CONVENTION_TEXT  # how the certificate's deviations are signed
     # inputs of the result with no stated uncertainty: not traceable through them (said so)
     untraceable: tuple[str, ...] = ()
+    # inputs of the budget stated in the analysis settings (a standard listed with its
+    # certificate and no U in the table stands behind them: the ADC's figures, say)
+    stated_inputs: tuple[str, ...] = ()
 
     @property
     def expanded_uncertainty_arcsec(self) -> float:
@@ -140,6 +143,13 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
         QT_TR_NOOP("Input"), QT_TR_NOOP("Type"), QT_TR_NOOP("Distribution"),
         message(QT_TR_NOOP("Value ({unit})"), unit=u), QT_TR_NOOP("Divisor"),
         f"u ({u})", "c", f"c·u ({u})", QT_TR_NOOP("Share %"), "ν"), rows, note)
+
+
+def opinion(text) -> str:
+    """Advice on a certificate, marked as an opinion and interpretation (ISO/IEC 17025
+    7.8.7): what the results suggest, not what was measured."""
+    return message(QT_TR_NOOP("Opinion and interpretation (ISO/IEC 17025 7.8.7), not a "
+                              "measured result: {text}"), text=message(text))
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,

@@ -30,6 +30,7 @@ from models.certificate.document import (
     CertificateDocument,
     Table,
     decision_rows,
+    opinion,
     reference_standard_components,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
@@ -119,6 +120,10 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
             message(QT_TR_NOOP("integral nonlinearity ±{a} mV in each channel (stated)"),
                     a=f"{linearity:g}")))
     return out
+
+
+_STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
+                 "ADC linearity")
 
 
 def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
@@ -318,15 +323,20 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                    "loaded into the encoder; the compensated error and its U are the item as "
                    "left.") if as_left else
         QT_TR_NOOP("Conformity is judged on the interpolation error as found. The compensated "
-                   "error is the error the correction table would leave; it is not the item's "
-                   "unless the table is loaded into it (table sha256 {sha})."),
+                   "error is not the item's unless the table is loaded into it (table sha256 "
+                   "{sha})."),
         sha=result.table.sha256)
+    advice = () if as_left else (opinion(QT_TR_NOOP(
+        "The compensated error is the error the correction table is expected to leave, if the "
+        "signals stay as they were measured.")),)
     return CertificateDocument(
         "fringe", QT_TR_NOOP("Fringe signal analysis"), metadata, source_name, METHOD,
         method_reference, parameters, results, statistics, budget,
         message(QT_TR_NOOP("sample {sample}"), sample=worst + 1), conformity, tol, plots,
         tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
-        statements=(table_statement,) + (
+        stated_inputs=tuple(c.name for c in budget.components
+                            if c.name in _STATED_NAMES),
+        statements=(table_statement, *advice) + (
             (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),

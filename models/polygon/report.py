@@ -397,9 +397,13 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     if result.repeatability_arcsec is not None:
         stat_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
-    elif m > 1:
+    else:
         stat_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
-                          QT_TR_NOOP("no direction was measured twice")))
+                          QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
+                                     "reading noise from the tilt fits stands for it")
+                          if any(s.tilt is not None for s in result.sets) else
+                          QT_TR_NOOP("no direction was measured twice and there are no vertical "
+                                     "readings: nothing in U covers it")))
     if result.reversal_arcsec is not None:
         stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
@@ -424,7 +428,9 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     warnings = list(result.warnings)
     if m == 1 and tilt is None:
         warnings.append(message(QT_TR_NOOP("Repeatability was not evaluated: one set and no "
-                                           "vertical readings.")))
+                                           "vertical readings, so nothing in U covers the "
+                                           "scatter of the readings; U understates the "
+                                           "uncertainty by it.")))
     worst = budget.worst_index
     return CertificateDocument(
         "polygon", QT_TR_NOOP("Polygon encoder test"), metadata, source_name, METHOD,

@@ -96,8 +96,38 @@ PARAMETERS = (
                    "magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, "
                    "modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, "
                    "max_points=1500 (ISG); axis=X (Mach4)"),
+    # inputs of the budget the readings cannot show, in the deviation unit (0: not stated, and
+    # the certificate says it is not in U)
+    Parameter("misalignment_u", "misalignment u", "float", 0.0, "", 0.0, 1e6, zero="not stated",
+              decimals=4, step=0.1,
+              help="Standard uncertainty at a target from the reference's alignment to the axis "
+                   "(cosine error, eccentricity), in the deviation unit. 0: not stated"),
+    Parameter("reference_resolution", "reference resolution", "float", 0.0, "", 0.0, 1e6,
+              zero="not stated", decimals=4, step=0.1,
+              help="Resolution of the reference's reading, in the deviation unit (rectangular, "
+                   "half-width r/2). 0: not stated"),
+    Parameter("temperature_u", "temperature u", "float", 0.0, "", 0.0, 1e6, zero="not stated",
+              decimals=4, step=0.1,
+              help="Standard uncertainty at a target from the temperatures (the axis' expansion "
+                   "and its compensation, the reference's environment), in the deviation unit. "
+                   "0: not stated"),
+    # ISO 230-2 clause 8: the test conditions, printed as details
+    Parameter("axis_temperature_c", "axis temperature", "float", 0.0, "°C", -50.0, 100.0,
+              zero="not stated", decimals=1, step=0.1,
+              help="Temperature of the axis (its scale or encoder) during the test (ISO 230-2, "
+                   "clause 8). 0: not stated"),
+    Parameter("expansion_ppm_k", "expansion coefficient", "float", 0.0, "µm/(m·K)", 0.0, 100.0,
+              zero="not stated", decimals=2, step=0.1,
+              help="The nominal expansion coefficient the compensation used (linear axes; ISO "
+                   "230-2, clause 8). 0: not stated"),
+    Parameter("axis_setup", "axis set-up", "text", "",
+              help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
+                   "feed, dwell at each target, other axes' positions"),
     REPEATS_PARAMETER,
 )
+
+#: the settings that are inputs of the certificate's budget (PositioningResult.inputs)
+BUDGET_INPUTS = ("misalignment_u", "reference_resolution", "temperature_u")
 
 #: A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit
 #: or a measured position typed as a deviation.
@@ -235,6 +265,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
         result.repeat_s_mean = np.where(np.isfinite(parsed["deviation"].astype(float)),
                                         repeats.s_mean["deviation"],
                                         repeats.s_mean["measured"] * scale)
+    result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
     for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),

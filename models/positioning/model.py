@@ -158,6 +158,8 @@ class PositioningResult:
     # each averaged reading's s/√n in the deviation unit as repeat_s_mean
     repeats: object = None
     repeat_s_mean: np.ndarray | None = None
+    # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
+    inputs: dict[str, float] = field(default_factory=dict)
 
     @property
     def positions(self) -> np.ndarray:

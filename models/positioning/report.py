@@ -16,12 +16,15 @@ shown in the window and the JSON.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from models.certificate.document import (
     CertificateDocument,
     Table,
     decision_rows,
+    opinion,
     reference_standard_components,
     resolution_component,
 )
@@ -36,7 +39,7 @@ from models.positioning.model import (
 )
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.conformity import asymmetric_text, decide_conformity, uncertainty_decimals
 
 __all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate",
            "repeated_readings_components"]
@@ -102,6 +105,7 @@ def positioning_budget(result: PositioningResult,
                 else f"{int(np.min(n))}…{int(np.max(n))}")))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, 1.0)
+    components += _stated_inputs(result)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
 
 
@@ -127,7 +131,138 @@ def repeated_readings_components(result: PositioningResult) -> list[BudgetCompon
                                          "runs of the target; ν = {dof}"), n=n, dof=n - 1))]
 
 
-def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
+#: the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)
+_STATED = (("misalignment_u", QT_TR_NOOP("Misalignment of the reference"), "normal", 1.0),
+           ("reference_resolution", QT_TR_NOOP("Resolution of the reference"), "rectangular",
+            2.0 * math.sqrt(3.0)),
+           ("temperature_u", QT_TR_NOOP("Temperature"), "normal", 1.0))
+
+
+def _stated_inputs(result: PositioningResult) -> list[BudgetComponent]:
+    """Misalignment, the reference's resolution and the temperature, as the settings state
+    them (Type B, per target and direction, c = 1)."""
+    inputs = result.inputs or {}
+    out = []
+    for key, name, distribution, divisor in _STATED:
+        value = inputs.get(key, 0.0)
+        if value:
+            out.append(BudgetComponent(
+                name, "B", distribution, value, divisor, 1.0, math.inf,
+                message(QT_TR_NOOP("resolution {r}: rectangular, half-width r/2")
+                        if key == "reference_resolution" else
+                        QT_TR_NOOP("u = {r} at every target (stated)"),
+                        r=f"{value:g}{result.symbol}")))
+    return out
+
+
+def not_stated(result: PositioningResult) -> list[str]:
+    """The budget inputs the settings leave unstated (so not in U)."""
+    inputs = result.inputs or {}
+    return [name for key, name, _, _ in _STATED if not inputs.get(key)]
+
+
+FIGURE_TRIALS = 2000
+FIGURE_SEED = 20261127
+
+
+def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget,
+                         trials: int = FIGURE_TRIALS, seed: int = FIGURE_SEED
+                         ) -> dict[str, tuple[float, float]]:
+    """(lower, upper) half-widths of the coverage interval of every ISO 230-2 and VDI/DGQ
+    3441 figure, from the same inputs as the per-target U (JCGM 101, seeded).
+
+    Each trial repeats the test: every reading is drawn about its target's mean with its
+    target's s (so s, and the figures built on it, scatter as a repeat would), and every
+    Type B input of the budget is drawn once per target and direction (the reference's error
+    at a target is the same in each of its runs). The figures are evaluated from the drawn
+    readings as from the measured ones; the interval is the central one of the stated
+    coverage probability about the median of the trials.
+    """
+    points = [(name, stats.mean, stats.std, stats.runs)
+              for name, _, stats in result.directions_present()]
+    m = result.positions.size
+    b_components = [(c, u) for c, u in zip(budget.components, budget.contributions(),
+                                            strict=True) if c.evaluation == "B"]
+    rng = np.random.default_rng(seed)
+    systematic = np.zeros((trials, len(points) * m))
+    for comp, u in b_components:
+        if comp.distribution == "rectangular":
+            systematic += rng.uniform(-math.sqrt(3.0), math.sqrt(3.0), systematic.shape) * u
+        else:
+            systematic += rng.standard_normal(systematic.shape) * u
+    stats = {}
+    for k, (name, mean, s, n) in enumerate(points):
+        means, stds = np.empty((trials, m)), np.empty((trials, m))
+        for i in range(m):
+            z = rng.standard_normal((trials, int(n[i])))
+            means[:, i] = mean[i] + s[i] * z.mean(axis=1) + systematic[:, k * m + i]
+            stds[:, i] = s[i] * z.std(axis=1, ddof=1)
+        stats[name] = (means, stds)
+    drawn = axis_figures(stats)
+    keys = {k for k, v in result.iso.figures.items() if math.isfinite(v)} | {
+        k for k, v in result.vdi.as_dict().items() if v is not None}
+    drawn = {k: v for k, v in drawn.items() if k in keys}
+    tail = 0.5 * (1.0 - budget.probability)
+    out = {}
+    for key, v in drawn.items():
+        lo, mid, hi = np.quantile(v, [tail, 0.5, 1.0 - tail])
+        out[key] = (float(mid - lo), float(hi - mid))
+    return out
+
+
+def _range(a: np.ndarray) -> np.ndarray:
+    return np.max(a, axis=1) - np.min(a, axis=1)
+
+
+def axis_figures(stats: dict[str, tuple[np.ndarray, np.ndarray]]) -> dict[str, np.ndarray]:
+    """The ISO 230-2 and VDI/DGQ 3441 figures of many tests at once: ``stats`` maps a
+    direction ("up", "down") to (mean, s), arrays (tests, targets) with every target
+    approached at least twice. The formulas of models.uncertainty.iso230 and
+    models.positioning.model, row by row (a test checks they agree)."""
+    out: dict[str, np.ndarray] = {}
+    for name, (mean, s) in stats.items():
+        out[f"E_{name}"] = _range(mean)
+        out[f"R_{name}"] = np.max(4.0 * s, axis=1)
+        out[f"A_{name}"] = np.max(mean + 2 * s, axis=1) - np.min(mean - 2 * s, axis=1)
+    if "up" in stats and "down" in stats:
+        (up, s_up), (down, s_down) = stats["up"], stats["down"]
+        reversal = up - down
+        middle = 0.5 * (up + down)
+        out["E"] = _range(np.concatenate([up, down], axis=1))
+        out["M"] = _range(middle)
+        out["B"] = np.max(np.abs(reversal), axis=1)
+        out["B_mean"] = np.mean(reversal, axis=1)
+        out["R"] = np.max(np.maximum(np.maximum(2 * s_up + 2 * s_down + np.abs(reversal),
+                                                4 * s_up), 4 * s_down), axis=1)
+        out["A"] = (np.max(np.concatenate([up + 2 * s_up, down + 2 * s_down], axis=1), axis=1)
+                    - np.min(np.concatenate([up - 2 * s_up, down - 2 * s_down], axis=1), axis=1))
+        scatter = 6.0 * 0.5 * (s_up + s_down)
+        half = 0.5 * (np.abs(reversal) + scatter)
+        out["Pa"] = _range(middle)
+        out["P"] = np.max(middle + half, axis=1) - np.min(middle - half, axis=1)
+        out["Ps_max"] = np.max(scatter, axis=1)
+        out["U_max"] = np.max(np.abs(reversal), axis=1)
+    else:
+        mean, s = next(iter(stats.values()))
+        out["Pa"] = _range(mean)
+        out["Ps_max"] = np.max(6.0 * s, axis=1)
+    return out
+
+
+def _with_u(text: str, value, interval: tuple[float, float] | None, sym: str) -> str:
+    """A figure and its U: "12.345″, U = 0.81″", or "−0.62″/+0.81″" when asymmetric."""
+    if interval is None or value is None or not math.isfinite(value):
+        return text
+    lower, upper = interval
+    d = min(max(2, uncertainty_decimals(max(min(lower, upper), 1e-12))), 4)
+    return message(QT_TR_NOOP("{figure}, U = {u}"), figure=f"{value:.{d}f}{sym}",
+                   u=asymmetric_text(lower, upper, sym, d))
+
+
+def _figure_rows(result: PositioningResult,
+                 uncertainty: dict[str, tuple[float, float]] | None = None
+                 ) -> list[tuple[str, str, str]]:
+    uncertainty = uncertainty or {}
     sym, f = result.symbol, result.iso.figures
     gb = result.standard == "gb17421.2"
     present = {name for name, _, _ in result.directions_present()}
@@ -138,9 +273,11 @@ def _figure_rows(result: PositioningResult) -> list[tuple[str, str, str]]:
             continue
         name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
                                                      name=message(english))
-        iso_rows.append((name, figure_text(f.get(key), sym), "GB/T 17421.2" if gb else "ISO 230-2"))
+        iso_rows.append((name, _with_u(figure_text(f.get(key), sym), f.get(key),
+                                       uncertainty.get(key), sym),
+                         "GB/T 17421.2" if gb else "ISO 230-2"))
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
-                 figure_text(v, sym), "VDI/DGQ 3441")
+                 _with_u(figure_text(v, sym), v, uncertainty.get(k), sym), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
@@ -194,7 +331,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=QT_TR_NOOP("mean positional deviation"), unit=sym,
                                    point_names=names)
-    stat_rows = _figure_rows(result)
+    stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
     statistics = Table(QT_TR_NOOP("Figures of the axis"),
                        (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), QT_TR_NOOP("Standard")),
@@ -210,9 +347,30 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         QT_TR_NOOP("Conformity, when a tolerance is stated, is judged on the mean positional "
                    "deviations (each with its own U, or half their range); a specification of "
                    "A, R or P is read against the figures above."),
-        QT_TR_NOOP("Compensation = −mean deviation: a controller adding it to the commanded "
-                   "position reaches the target."),
+        opinion(QT_TR_NOOP("Compensation = −mean deviation: a controller adding it to the "
+                           "commanded position is expected to reach the target, within the "
+                           "repeatability and the U stated, if the axis behaves as in this "
+                           "test.")),
     ]
+    statements.append(message(QT_TR_NOOP(
+        "U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM "
+        "101, seed {seed}) from the inputs of the per-target U — each reading drawn about its "
+        "target's mean with its s, each Type B input once per target and direction — and the "
+        "figures evaluated as above; the central interval of {p} % about the median, printed "
+        "−/+ where it is not symmetric."), trials=FIGURE_TRIALS, seed=FIGURE_SEED,
+        p=f"{100 * budget.probability:.2f}"))
+    statements.append(QT_TR_NOOP(
+        "The reference standard's U enters each mean deviation with sensitivity 1: a rotary "
+        "calibrator's or an interferometer's certificate states it for a position measured from "
+        "the reference's datum, that is for the deviation itself; the theodolite and the "
+        "autocollimator state theirs per reading, so their errors, differences of two readings, "
+        "take √2."))
+    missing = not_stated(result)
+    if missing:
+        statements.append(message(QT_TR_NOOP(
+            "Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget."),
+            inputs=joined(part for i, name in enumerate(missing)
+                          for part in ((", " if i else ""), message(name)))))
     if not result.minimum_runs_met:
         statements.append(message(QT_TR_NOOP("ISO 230-2 asks for at least {n} runs in each "
                                              "direction at every target; this test has fewer "

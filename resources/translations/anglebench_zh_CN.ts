@@ -5423,5 +5423,316 @@ Errors are errors of indication (indicated − reference); the positioning workb
             <source>Acceptance criteria</source>
             <translation>验收准则</translation>
         </message>
+        <message>
+            <source>ADC LSB</source>
+            <translation>ADC 最低有效位</translation>
+        </message>
+        <message>
+            <source>ADC gain ratio u</source>
+            <translation>ADC 增益比 u</translation>
+        </message>
+        <message>
+            <source>ADC linearity ±</source>
+            <translation>ADC 线性度 ±</translation>
+        </message>
+        <message>
+            <source>ADC offset u</source>
+            <translation>ADC 偏置 u</translation>
+        </message>
+        <message>
+            <source>expansion coefficient</source>
+            <translation>线膨胀系数</translation>
+        </message>
+        <message>
+            <source>reference resolution</source>
+            <translation>参考仪器分辨力</translation>
+        </message>
+        <message>
+            <source>the sampling's uniformity (the timing of the samples)</source>
+            <extracomment>what the phase reference is, by where the phase came from</extracomment>
+            <translation>采样的均匀性（各采样点的时刻）</translation>
+        </message>
+        <message>
+            <source>the θ reference's stated U</source>
+            <translation>θ 参考给出的 U</translation>
+        </message>
+        <message>
+            <source>the phase estimation's validated limit</source>
+            <translation>相位估计经确认的限值</translation>
+        </message>
+        <message>
+            <source>Phase reference</source>
+            <translation>相位参考</translation>
+        </message>
+        <message>
+            <source>{what}: u = {u}° of a period (stated)</source>
+            <translation>{what}：u = 一个周期的 {u}°（给定值）</translation>
+        </message>
+        <message>
+            <source>ADC quantisation</source>
+            <translation>ADC 量化</translation>
+        </message>
+        <message>
+            <source>LSB {lsb} mV: LSB/√12 in each channel (also in the residuals' scatter: counted twice, on the safe side)</source>
+            <translation>最低有效位 {lsb} mV：每通道 LSB/√12（也包含在残差的分散性中：重复计入，偏于安全）</translation>
+        </message>
+        <message>
+            <source>ADC offset</source>
+            <translation>ADC 偏置</translation>
+        </message>
+        <message>
+            <source>u = {u} mV in each channel (stated); taken as the ADC's, not the read head's</source>
+            <translation>每通道 u = {u} mV（给定值）；视为 ADC 的偏置，而非读数头的</translation>
+        </message>
+        <message>
+            <source>ADC gain ratio</source>
+            <translation>ADC 增益比</translation>
+        </message>
+        <message>
+            <source>u = {u} % of the ratio of the channels' gains (stated)</source>
+            <translation>两通道增益之比的 u = {u} %（给定值）</translation>
+        </message>
+        <message>
+            <source>ADC linearity</source>
+            <translation>ADC 线性度</translation>
+        </message>
+        <message>
+            <source>integral nonlinearity ±{a} mV in each channel (stated)</source>
+            <translation>每通道积分非线性 ±{a} mV（给定值）</translation>
+        </message>
+        <message>
+            <source>the phase reference ({what}) has no stated uncertainty</source>
+            <translation>相位参考（{what}）未给出不确定度</translation>
+        </message>
+        <message>
+            <source>quantisation</source>
+            <translation>量化</translation>
+        </message>
+        <message>
+            <source>offset</source>
+            <translation>偏置</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>增益</translation>
+        </message>
+        <message>
+            <source>linearity</source>
+            <translation>线性度</translation>
+        </message>
+        <message>
+            <source>the ADC's {figures} have no stated uncertainty</source>
+            <translation>ADC 的{figures}未给出不确定度</translation>
+        </message>
+        <message>
+            <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
+            <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
+        </message>
+        <message>
+            <source>The first {per} samples are shown (every {step}-th), and the samples with the extremes of each error and the largest U; all {n} samples are in the CSV/XLSX results export.</source>
+            <translation>列出前 {per} 个采样点（每 {step} 个取一个），以及各误差取极值和 U 最大的采样点；全部 {n} 个采样点在 CSV/XLSX 结果导出文件中。</translation>
+        </message>
+        <message>
+            <source>Results per sample (compensated = raw + correction)</source>
+            <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
+        </message>
+        <message>
+            <source>Conformity is judged on the interpolation error as found. The compensated error is not the item's unless the table is loaded into it (table sha256 {sha}).</source>
+            <translation>符合性按校准前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
+        </message>
+        <message>
+            <source>The compensated error is the error the correction table is expected to leave, if the signals stay as they were measured.</source>
+            <translation>补偿后误差是在信号保持测量时状态的前提下，预计修正表施加后剩余的误差。</translation>
+        </message>
+        <message>
+            <source>the error is not traceable: {what}</source>
+            <translation>误差不具有溯源性：{what}</translation>
+        </message>
+        <message>
+            <source>Repeatability was not evaluated: one set and no vertical readings, so nothing in U covers the scatter of the readings; U understates the uncertainty by it.</source>
+            <translation>未评定重复性：仅一个测回且无竖直读数，因此 U 中没有分量覆盖读数的分散性；U 因此低估了不确定度。</translation>
+        </message>
+        <message>
+            <source>no direction was measured twice; in U the autocollimator's reading noise from the tilt fits stands for it</source>
+            <translation>没有方向被测量两次；U 中以塔差拟合得到的自准直仪读数噪声代替</translation>
+        </message>
+        <message>
+            <source>no direction was measured twice and there are no vertical readings: nothing in U covers it</source>
+            <translation>没有方向被测量两次，且无竖直读数：U 中没有分量覆盖它</translation>
+        </message>
+        <message>
+            <source>Standard uncertainty at a target from the reference's alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated</source>
+            <translation>参考仪器相对于轴线的对准（余弦误差、偏心）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+        </message>
+        <message>
+            <source>Standard uncertainty at a target from the temperatures (the axis' expansion and its compensation, the reference's environment), in the deviation unit. 0: not stated</source>
+            <translation>温度（轴的热膨胀及其补偿、参考仪器的环境）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+        </message>
+        <message>
+            <source>Standard uncertainty of each channel's ADC offset, from its calibration. 0: not stated</source>
+            <translation>各通道 ADC 偏置的标准不确定度，取自其校准。0：未给出</translation>
+        </message>
+        <message>
+            <source>Standard uncertainty of each sample's phase, in degrees of a signal period: with N equal steps the sampling's uniformity (the timing of the samples), with a θ column its reference's stated U / k, with an estimated phase the method's validated limit. 0: not stated</source>
+            <translation>各采样点相位的标准不确定度，以信号周期的度数表示：N 等分步长时为采样的均匀性（各采样点的时刻），有 θ 列时为其参考给出的 U / k，相位由估计得出时为该方法经确认的限值。0：未给出</translation>
+        </message>
+        <message>
+            <source>Standard uncertainty of the ratio of the two channels' ADC gains (a gain common to both does not move the phase). 0: not stated</source>
+            <translation>两通道 ADC 增益之比的标准不确定度（两通道共同的增益不改变相位）。0：未给出</translation>
+        </message>
+        <message>
+            <source>Temperature of the axis (its scale or encoder) during the test (ISO 230-2, clause 8). 0: not stated</source>
+            <translation>检测期间轴（其标尺或编码器）的温度（ISO 230-2 第 8 章）。0：未给出</translation>
+        </message>
+        <message>
+            <source>The ADC's integral nonlinearity limit ±a per channel (rectangular). 0: not stated</source>
+            <translation>每通道 ADC 积分非线性限值 ±a（矩形分布）。0：未给出</translation>
+        </message>
+        <message>
+            <source>The ADC's step (quantisation LSB/√12 per channel). 0: not stated</source>
+            <translation>ADC 的量化步长（每通道量化 LSB/√12）。0：未给出</translation>
+        </message>
+        <message>
+            <source>The axis' set-up (ISO 230-2, clause 8): position of the reference, load, feed, dwell at each target, other axes' positions</source>
+            <translation>轴的安装状态（ISO 230-2 第 8 章）：参考仪器的位置、负载、进给速度、各目标位置的停留时间、其他轴的位置</translation>
+        </message>
+        <message>
+            <source>The nominal expansion coefficient the compensation used (linear axes; ISO 230-2, clause 8). 0: not stated</source>
+            <translation>补偿所用的名义线膨胀系数（直线轴；ISO 230-2 第 8 章）。0：未给出</translation>
+        </message>
+        <message>
+            <source>Set-up parameters: azimuths are counted from the theodolite's azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis' upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed's E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
+            <extracomment>what ψ, α and β are (the frame of SPEC §1, the seed's), checked against an independent rig built in a frame with OZ up (tests/test_certificate_uncertainty.py)</extracomment>
+            <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
+        </message>
+        <message>
+            <source>θ = {theta}° (row {row} of the results)</source>
+            <translation>θ = {theta}°（结果表第 {row} 行）</translation>
+        </message>
+        <message>
+            <source>the zeroing reading, shared by every point: a second reading, independent of the point's own, but the same estimate s, so for ν_eff one input with the repeatability (ν counted once)</source>
+            <translation>置零读数，为各点共用：是与该点自身读数相互独立的另一个读数，但来自同一个估计值 s，因此计算 ν_eff 时与重复性合为一个输入量（ν 只计一次）</translation>
+        </message>
+        <message>
+            <source>Resolution of the reference's reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>
+            <translation>参考仪器读数的分辨力，以偏差单位表示（矩形分布，半宽 r/2）。0：未给出</translation>
+        </message>
+        <message>
+            <source>The theodolite's standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals far above it (3×) raise a warning; 0: no check</source>
+            <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差远大于它（3 倍）时给出警告；0：不检查</translation>
+        </message>
+        <message>
+            <source>What the theodolite's vertical circle reads; E is the seed's, positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
+            <translation>经纬仪竖直度盘的读数；E 按原文定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
+        </message>
+        <message>
+            <source>axis set-up</source>
+            <translation>轴的安装状态</translation>
+        </message>
+        <message>
+            <source>axis temperature</source>
+            <translation>轴的温度</translation>
+        </message>
+        <message>
+            <source>misalignment u</source>
+            <translation>对准误差 u</translation>
+        </message>
+        <message>
+            <source>phase reference u</source>
+            <translation>相位参考 u</translation>
+        </message>
+        <message>
+            <source>temperature u</source>
+            <translation>温度 u</translation>
+        </message>
+        <message>
+            <source>Budget at {point}, the point with the largest U. k = {k} is Student's t for ν = {nu}, the effective degrees of freedom (Welch–Satterthwaite: {raw}) truncated to the lower integer (GUM G.6.4), and a coverage probability of {p} %; each point's U uses its own ν.</source>
+            <translation>分量一览表取自 {point}，即 U 最大的点。k = {k} 为 t 分布在 ν = {nu} 和包含概率 {p} % 时的值，ν 为有效自由度（韦尔奇–萨特思韦特公式：{raw}）向下取整（GUM G.6.4）；各点的 U 采用其自身的 ν。</translation>
+        </message>
+        <message>
+            <source>Opinion and interpretation (ISO/IEC 17025 7.8.7), not a measured result: {text}</source>
+            <translation>意见和解释（ISO/IEC 17025 7.8.7），并非测量结果：{text}</translation>
+        </message>
+        <message>
+            <source>{standard} (certificate {certificate}; its figures enter as the inputs stated in the settings: {inputs})</source>
+            <translation>{standard}（证书 {certificate}；其数据作为分析设置中给出的输入量计入：{inputs}）</translation>
+        </message>
+        <message>
+            <source>Metrological traceability: not established for these results — {what}; no statement of conformity rests on them.</source>
+            <translation>计量溯源性：本结果未建立溯源性——{what}；不依据本结果作符合性声明。</translation>
+        </message>
+        <message>
+            <source>The standards listed with a certificate and a stated uncertainty: {names}.</source>
+            <translation>所列具有证书并给出不确定度的计量标准：{names}。</translation>
+        </message>
+        <message>
+            <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate and a stated uncertainty is listed.</source>
+            <translation>计量溯源性：本文件未建立——未列出具有校准证书并给出不确定度的计量标准。</translation>
+        </message>
+        <message>
+            <source>{standard}: no uncertainty stated, so it is no input of the budget and the results are not traceable through it.</source>
+            <translation>{standard}：未给出不确定度，因此不是不确定度分量，结果也不能通过它溯源。</translation>
+        </message>
+        <message>
+            <source>Misalignment of the reference</source>
+            <extracomment>the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)</extracomment>
+            <translation>参考仪器的对准误差</translation>
+        </message>
+        <message>
+            <source>Resolution of the reference</source>
+            <translation>参考仪器的分辨力</translation>
+        </message>
+        <message>
+            <source>Temperature</source>
+            <translation>温度</translation>
+        </message>
+        <message>
+            <source>resolution {r}: rectangular, half-width r/2</source>
+            <translation>分辨力 {r}：矩形分布，半宽 r/2</translation>
+        </message>
+        <message>
+            <source>u = {r} at every target (stated)</source>
+            <translation>各目标位置 u = {r}（给定值）</translation>
+        </message>
+        <message>
+            <source>{figure}, U = {u}</source>
+            <translation>{figure}，U = {u}</translation>
+        </message>
+        <message>
+            <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
+            <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
+        </message>
+        <message>
+            <source>U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM 101, seed {seed}) from the inputs of the per-target U — each reading drawn about its target's mean with its s, each Type B input once per target and direction — and the figures evaluated as above; the central interval of {p} % about the median, printed −/+ where it is not symmetric.</source>
+            <translation>轴线各项指标的 U：以蒙特卡洛法（JCGM 101，随机种子 {seed}）由各目标位置 U 的输入量将检测重复 {trials} 次——各读数按其目标位置的平均值和 s 抽样，各 B 类输入量按每个目标位置和方向抽样一次——并按上述方法计算各项指标；取中位数附近包含概率 {p} % 的中心区间，不对称时以 −/+ 给出。</translation>
+        </message>
+        <message>
+            <source>The reference standard's U enters each mean deviation with sensitivity 1: a rotary calibrator's or an interferometer's certificate states it for a position measured from the reference's datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
+            <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
+        </message>
+        <message>
+            <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
+            <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
+        </message>
+        <message>
+            <source>No statement of conformity is possible: the expanded uncertainty U = {u} is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
+            <translation>无法作符合性声明：扩展不确定度 U = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
+        </message>
+        <message>
+            <source>point {n}</source>
+            <translation>第 {n} 点</translation>
+        </message>
+        <message>
+            <source>(at {point})</source>
+            <translation>（在 {point}）</translation>
+        </message>
+        <message>
+            <source>Every point's {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
+            <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
+        </message>
+        <message>
+            <source>the interval's coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis' curve, against the {p} % stated</source>
+            <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
+        </message>
     </context>
 </TS>
