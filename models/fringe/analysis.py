@@ -307,8 +307,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     )
 
 
-#: The table, applied to the fitted signals themselves, must leave at most this share of
-#: their error (and of a period): else it does not compensate them, and is refused.
+# The table, applied to the fitted signals themselves, must leave at most this share of
+# their error (and of a period): else it does not compensate them, and is refused.
 MAX_MODEL_RESIDUAL_SHARE = 0.5
 MAX_MODEL_RESIDUAL_PERIOD = 0.01
 

@@ -707,10 +707,6 @@
         <translation>逐次测量的读数</translation>
     </message>
     <message>
-        <source>Residuals far above it (3×) raise a warning; 0: no check</source>
-        <translation>残差远大于此值（3 倍）时给出警告；0：不检查</translation>
-    </message>
-    <message>
         <source>Reversal value B_i = x̄↑ − x̄↓</source>
         <translation>反向差值 B_i = x̄↑ − x̄↓</translation>
     </message>
@@ -1070,6 +1066,10 @@
     <message>
         <source>elevation E</source>
         <translation>俯仰角 E</translation>
+    </message>
+    <message>
+        <source>Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
+        <translation>残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
     </message>
     <message>
         <source>elevations (recommended)</source>
@@ -1775,6 +1775,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>Certify these figures?</source>
+        <translation>为这些数值出具证书？</translation>
+    </message>
+    <message>
+        <source>{reason}
+
+Issue a certificate on this result anyway? Only if you have checked the readings and the figures are right.</source>
+        <translation>{reason}
+
+仍要根据此结果出具证书吗？仅当您已核对读数且这些数值无误时才这样做。</translation>
     </message>
     <message>
         <source>This certificate replaces {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
@@ -3312,6 +3324,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>按此相位，cos 通道超前 sin 通道 {lead}°，而不是约 90°：通道顺序错误或其中一路反相（请检查各列或 θ 的方向）</translation>
     </message>
     <message>
+        <source>no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, B0 = {b0} V against amplitudes A1 = {a1} V, B1 = {b1} V; the measured phase atan2(u_sin, u_cos) turns {turns} times a period, not once), so no table over it can compensate: remove the offsets (differential signals A+ − A−, or the reference voltage) and analyse again</source>
+        <translation>不进行补偿：李萨如图形未环绕 0 V（偏置 A0 = {a0} V、B0 = {b0} V，而幅值 A1 = {a1} V、B1 = {b1} V；测得相位 atan2(u_sin, u_cos) 每周期转 {turns} 圈，而不是 1 圈），因此任何基于该相位的表都无法补偿：请去除偏置（差分信号 A+ − A−，或参考电压）后重新分析</translation>
+    </message>
+    <message>
+        <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>
+        <translation>不进行补偿：拟合信号的测得相位 atan2(u_sin, u_cos) 在一个周期内回转（李萨如图形在 0 V 附近打圈：偏置 A0 = {a0} V、B0 = {b0} V，幅值 A1 = {a1} V、B1 = {b1} V），因此基于该相位的表无法补偿</translation>
+    </message>
+    <message>
+        <source>no compensation: the correction table, applied to the fitted signals themselves, leaves {after} % of a period of their {before} % (peak-to-peak): it does not compensate these signals</source>
+        <translation>不进行补偿：修正表作用于拟合信号本身后，仍剩余一个周期的 {after} %（原为 {before} %，峰峰值）：它不能补偿这些信号</translation>
+    </message>
+    <message>
         <source>max_order must be at least 1</source>
         <translation>max_order 至少为 1</translation>
     </message>
@@ -3471,6 +3495,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
         <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
+    </message>
+    <message>
+        <source>*** ERRORS OF {degrees}° ({worst}): no encoder of grade 1–7 errs by more than arcseconds. Check the unit of the encoder column (degrees), the number of faces ({faces}) and the face numbering before trusting any figure; a certificate needs your confirmation. ***</source>
+        <translation>*** 误差达 {degrees}°（{worst}）：1–7 级编码器的误差不会超过角秒量级。采信任何数值之前，请检查编码器列的单位（度）、面数（{faces}）和面编号；出具证书需要您确认。***</translation>
     </message>
     <message>
         <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
@@ -3775,6 +3803,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>θ 仅跨 {ptp}°：转角过小，无法辨识安装状态</translation>
     </message>
     <message>
+        <source>no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with R² below {min_r2}), R² = {r2}; the largest residual, {largest}, is at row {row}: check that row&apos;s readings, the columns and the accuracy setting</source>
+        <translation>没有任何安装状态能解释 {column} 读数：残差 RMS {rms} 是经纬仪精度 {accuracy} 的 {ratio} 倍（超过 {far} 倍，或 R² 低于 {min_r2} 时超过 {near} 倍，即拒绝），R² = {r2}；最大残差 {largest} 位于第 {row} 行：请检查该行读数、各列和精度设置</translation>
+    </message>
+    <message>
+        <source>row {row}, where the theodolite was zeroed (θ = {theta}°, A = {azimuth}°), disagrees with {bad} of the other {n} rows by more than ±{limit}: check columns &apos;theta_deg&apos; and &apos;azimuth_deg&apos; of that row, or the reference row</source>
+        <translation>第 {row} 行（经纬仪在此置零，θ = {theta}°，A = {azimuth}°）与其余 {n} 行中的 {bad} 行相差超过 ±{limit}：请检查该行的 &apos;theta_deg&apos; 和 &apos;azimuth_deg&apos; 列，或参考行</translation>
+    </message>
+    <message>
+        <source>row {row}: θ = {theta}° and A = {azimuth}° disagree by {error} after the set-up&apos;s share is removed ({bad} of {n} rows beyond ±{limit}; the zero is at row {zero}): no axis errs by that much: check columns &apos;theta_deg&apos; and &apos;azimuth_deg&apos; of that row</source>
+        <translation>第 {row} 行：扣除安装误差后，θ = {theta}° 与 A = {azimuth}° 相差 {error}（{n} 行中有 {bad} 行超过 ±{limit}；零位在第 {zero} 行）：没有任何轴系误差会这么大：请检查该行的 &apos;theta_deg&apos; 和 &apos;azimuth_deg&apos; 列</translation>
+    </message>
+    <message>
         <source>reference row {value} is outside the {size} readings</source>
         <translation>参考行 {value} 不在 {size} 个读数之内</translation>
     </message>
@@ -3892,6 +3932,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>表头无法识别时，指定文件中哪个表头对应哪一列，例如 theta_deg=转角,azimuth_deg=方位角</translation>
     </message>
     <message>
+        <source>issue the certificate although the result shows figures no instrument of the kind has (polygon: errors of degrees); you have checked the readings</source>
+        <translation>即使结果显示该类仪器不可能有的数值（polygon：误差达数度）也出具证书；表示您已核对读数</translation>
+    </message>
+    <message>
         <source>also write the workbench&apos;s correction table: fringe (CSV, or a C header for OUT.h), positioning (compensation table; --compensation-format, --compensation-step, --compensation-tables)</source>
         <translation>同时写出工作台的修正表：fringe（CSV；OUT.h 时为 C 头文件），positioning（补偿表；见 --compensation-format、--compensation-step、--compensation-tables）</translation>
     </message>
@@ -3950,6 +3994,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{what} written to {path}</source>
         <translation>{what}已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
+        <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
     </message>
     <message>
         <source>{path}: not a JSON file ({reason})</source>

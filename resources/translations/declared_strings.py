@@ -44,7 +44,7 @@ DECLARED = (
     QT_TR_NOOP('R_down'),
     QT_TR_NOOP('R_up'),
     QT_TR_NOOP('Readings, run by run'),
-    QT_TR_NOOP('Residuals far above it (3×) raise a warning; 0: no check'),
+    QT_TR_NOOP('Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check'),
     QT_TR_NOOP('Reversal value B_i = x̄↑ − x̄↓'),
     QT_TR_NOOP('Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0'),
     QT_TR_NOOP('Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)'),
