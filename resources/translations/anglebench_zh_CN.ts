@@ -3328,6 +3328,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>不进行补偿：李萨如图形未环绕 0 V（偏置 A0 = {a0} V、B0 = {b0} V，而幅值 A1 = {a1} V、B1 = {b1} V；测得相位 atan2(u_sin, u_cos) 每周期转 {turns} 圈，而不是 1 圈），因此任何基于该相位的表都无法补偿：请去除偏置（差分信号 A+ − A−，或参考电压）后重新分析</translation>
     </message>
     <message>
+        <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
+        <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
+    </message>
+    <message>
         <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>
         <translation>不进行补偿：拟合信号的测得相位 atan2(u_sin, u_cos) 在一个周期内回转（李萨如图形在 0 V 附近打圈：偏置 A0 = {a0} V、B0 = {b0} V，幅值 A1 = {a1} V、B1 = {b1} V），因此基于该相位的表无法补偿</translation>
     </message>
