@@ -144,3 +144,66 @@ def test_fringe_cli_never_crashes(text, tmp_path, capsys):
 @given(text=damaged_record("positioning"))
 def test_positioning_cli_never_crashes(text, tmp_path, capsys):
     _run("positioning", text, tmp_path, capsys)
+
+
+# -- the families of the last fuzz round (issue 30): off-centre signals, elevations of no
+# set-up, full-width and European spellings, XLSX, binary headers; judged as the full round
+# judges them (tests/hostile_records.py; `python tests/hostile_records.py --cases 2500` runs
+# the full round of 10,000 cases, seeded, and counts every finding)
+
+ROUND = settings(max_examples=25, deadline=None,
+                 suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                        HealthCheck.too_slow])
+
+
+@st.composite
+def round_case(draw, kind: str, family: str):
+    from hostile_records import Picks, case
+
+    return case(Picks(draw=draw), kind, family)
+
+
+def _judged(kind: str, made, tmp_path) -> None:
+    from hostile_records import judge
+
+    suffix, data, extra = made
+    path = tmp_path / f"{kind}{suffix}"
+    path.write_bytes(data)
+    outcome, problems, text = judge(kind, str(path), extra)
+    assert outcome != "traceback" and problems == [], (outcome, problems, text)
+
+
+@ROUND
+@given(made=round_case("fringe", "off-centre"))
+def test_fringe_off_centre_signals_are_compensated_or_refused(made, tmp_path):
+    _judged("fringe", made, tmp_path)
+
+
+@ROUND
+@given(made=round_case("theodolite", "no set-up"))
+def test_theodolite_elevations_of_no_setup_are_refused(made, tmp_path):
+    _judged("theodolite", made, tmp_path)
+
+
+@ROUND
+@given(kind=st.sampled_from(["theodolite", "polygon"]), data=st.data())
+def test_full_width_and_decimal_comma_spellings(kind, data, tmp_path):
+    _judged(kind, data.draw(round_case(kind, "spelling")), tmp_path)
+
+
+@ROUND
+@given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
+def test_damaged_xlsx(kind, data, tmp_path):
+    _judged(kind, data.draw(round_case(kind, "xlsx")), tmp_path)
+
+
+@ROUND
+@given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
+def test_binary_headers_are_refused_in_one_clean_line(kind, data, tmp_path):
+    _judged(kind, data.draw(round_case(kind, "binary header")), tmp_path)
+
+
+@ROUND
+@given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
+def test_damaged_records_judged_as_the_round_judges_them(kind, data, tmp_path):
+    _judged(kind, data.draw(round_case(kind, "damaged")), tmp_path)

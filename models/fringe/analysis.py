@@ -107,6 +107,9 @@ BUDGET_INPUTS = ("phase_reference_u", "adc_lsb_mv", "adc_offset_u_mv", "adc_gain
 PHASE_SOURCES = ("samples_per_period", "theta_column", "estimated")
 #: Channel voltages beyond this are not a read head's signals.
 SIGNAL_LIMIT_V = 1000.0
+# A sample whose radius on the corrected Lissajous figure is off the mean by more than
+# this share is no sample of the signal (a spike, a typed value, another unit).
+MAX_OFF_RING = 0.5
 #: A fit of the channels against the phase below this R² means the phase is wrong.
 MIN_R_SQUARED = 0.9
 OBSERVABILITY = message(QT_TR_NOOP(
@@ -156,7 +159,7 @@ def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray)
             corr=f"{corr:+.3f}"))
 
 
-def _ellipse(u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
+def _ellipse(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
     try:
         ellipse = fit_ellipse(u_sin, u_cos)
     except ValueError as exc:
@@ -176,6 +179,17 @@ def _ellipse(u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
             QT_TR_NOOP("not a fringe signal: the Lissajous figure is not a ring (its radius scatters by "
                        "{value} %); noise, or two unrelated channels"),
             value=f"{100 * scatter:.0f}"))
+    # one sample far off the ring (a spike, a typed value, another unit) bends every fit
+    # that follows: its row is named instead
+    off = np.abs(radius / np.mean(radius) - 1.0)
+    worst = int(np.argmax(off))
+    if off[worst] > MAX_OFF_RING:
+        raise ValueError(message(
+            QT_TR_NOOP("row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off "
+                       "the Lissajous ring the other samples draw: not a sample of this signal; "
+                       "check that row"),
+            row=_row(parsed, worst), u_sin=f"{u_sin[worst]:g}", u_cos=f"{u_cos[worst]:g}",
+            value=f"{100 * off[worst]:.0f}"))
     return ellipse
 
 
@@ -248,7 +262,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     warnings: list[str] = []
     _check_signals(parsed, u_sin, u_cos)
     checkpoint()
-    ellipse = _ellipse(u_sin, u_cos)
+    ellipse = _ellipse(parsed, u_sin, u_cos)
     checkpoint()
     source, theta = _phase_source(parsed, per_period, warnings)
     phasor = None
@@ -335,8 +349,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     )
 
 
-#: The table, applied to the fitted signals themselves, must leave at most this share of
-#: their error (and of a period): else it does not compensate them, and is refused.
+# The table, applied to the fitted signals themselves, must leave at most this share of
+# their error (and of a period): else it does not compensate them, and is refused.
 MAX_MODEL_RESIDUAL_SHARE = 0.5
 MAX_MODEL_RESIDUAL_PERIOD = 0.01
 

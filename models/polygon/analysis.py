@@ -113,9 +113,9 @@ PARAMETERS = (
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
-#: An error beyond this (20× the widest grade's ±30") is no encoder's error: a wrong unit,
-#: a wrong face count or a mis-numbered face. Said first, and a certificate needs the
-#: user's confirmation.
+# An error beyond this (20× the widest grade's ±30") is no encoder's error: a wrong unit,
+# a wrong face count or a mis-numbered face. Said first, and a certificate needs the
+# user's confirmation.
 IMPLAUSIBLE_ERROR_ARCSEC = 600.0
 #: Autocollimator readings and face deviations beyond this are not readings of a polygon test.
 READING_LIMIT_ARCSEC = 3600.0

@@ -499,19 +499,19 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
             ptp=f"{np.ptp(distinct):.3g}"))
 
 
-#: The identification gates the result. The fitted quantity's residuals are the reading
-#: noise when the set-up model holds (RMS ≈ the theodolite's accuracy σ; an axis' wobble
-#: adds a few σ, hence the warning at 3σ). Refused: an RMS beyond ``RESIDUAL_REFUSED`` σ
-#: whatever the R² (no reading error of the instrument makes that), and an RMS beyond
-#: ``RESIDUAL_UNEXPLAINED`` σ when the model explains less than ``MIN_R_SQUARED`` of the
-#: readings' variation (a small set-up leaves the elevations flat: a low R² with residuals
-#: at σ is noise, not a failure). σ = 0 turns the check off, as it does the warning.
+# The identification gates the result. The fitted quantity's residuals are the reading
+# noise when the set-up model holds (RMS ≈ the theodolite's accuracy σ; an axis' wobble
+# adds a few σ, hence the warning at 3σ). Refused: an RMS beyond ``RESIDUAL_REFUSED`` σ
+# whatever the R² (no reading error of the instrument makes that), and an RMS beyond
+# ``RESIDUAL_UNEXPLAINED`` σ when the model explains less than ``MIN_R_SQUARED`` of the
+# readings' variation (a small set-up leaves the elevations flat: a low R² with residuals
+# at σ is noise, not a failure). σ = 0 turns the check off, as it does the warning.
 RESIDUAL_WARNED = 3.0
 RESIDUAL_REFUSED = 100.0
 RESIDUAL_UNEXPLAINED = 10.0
 MIN_R_SQUARED = 0.99
-#: A corrected error (the axis' own error of indication) beyond this is not an axis' error
-#: but θ and A of one row that disagree: a typed or shifted cell, another unit.
+# A corrected error (the axis' own error of indication) beyond this is not an axis' error
+# but θ and A of one row that disagree: a typed or shifted cell, another unit.
 MAX_AXIS_ERROR_ARCSEC = 3600.0
 
 

@@ -5734,5 +5734,61 @@ Errors are errors of indication (indicated − reference); the positioning workb
             <source>the interval's coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis' curve, against the {p} % stated</source>
             <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
         </message>
+        <message>
+            <source>Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
+            <translation>残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+        </message>
+        <message>
+            <source>Certify these figures?</source>
+            <translation>为这些数值出具证书？</translation>
+        </message>
+        <message>
+            <source>{reason}
+
+Issue a certificate on this result anyway? Only if you have checked the readings and the figures are right.</source>
+            <translation>{reason}
+
+仍要根据此结果出具证书吗？仅当您已核对读数且这些数值无误时才这样做。</translation>
+        </message>
+        <message>
+            <source>no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, B0 = {b0} V against amplitudes A1 = {a1} V, B1 = {b1} V; the measured phase atan2(u_sin, u_cos) turns {turns} times a period, not once), so no table over it can compensate: remove the offsets (differential signals A+ − A−, or the reference voltage) and analyse again</source>
+            <translation>不进行补偿：李萨如图形未环绕 0 V（偏置 A0 = {a0} V、B0 = {b0} V，而幅值 A1 = {a1} V、B1 = {b1} V；测得相位 atan2(u_sin, u_cos) 每周期转 {turns} 圈，而不是 1 圈），因此任何基于该相位的表都无法补偿：请去除偏置（差分信号 A+ − A−，或参考电压）后重新分析</translation>
+        </message>
+        <message>
+            <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
+            <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
+        </message>
+        <message>
+            <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>
+            <translation>不进行补偿：拟合信号的测得相位 atan2(u_sin, u_cos) 在一个周期内回转（李萨如图形在 0 V 附近打圈：偏置 A0 = {a0} V、B0 = {b0} V，幅值 A1 = {a1} V、B1 = {b1} V），因此基于该相位的表无法补偿</translation>
+        </message>
+        <message>
+            <source>no compensation: the correction table, applied to the fitted signals themselves, leaves {after} % of a period of their {before} % (peak-to-peak): it does not compensate these signals</source>
+            <translation>不进行补偿：修正表作用于拟合信号本身后，仍剩余一个周期的 {after} %（原为 {before} %，峰峰值）：它不能补偿这些信号</translation>
+        </message>
+        <message>
+            <source>*** ERRORS OF {degrees}° ({worst}): no encoder of grade 1–7 errs by more than arcseconds. Check the unit of the encoder column (degrees), the number of faces ({faces}) and the face numbering before trusting any figure; a certificate needs your confirmation. ***</source>
+            <translation>*** 误差达 {degrees}°（{worst}）：1–7 级编码器的误差不会超过角秒量级。采信任何数值之前，请检查编码器列的单位（度）、面数（{faces}）和面编号；出具证书需要您确认。***</translation>
+        </message>
+        <message>
+            <source>no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with R² below {min_r2}), R² = {r2}; the largest residual, {largest}, is at row {row}: check that row's readings, the columns and the accuracy setting</source>
+            <translation>没有任何安装状态能解释 {column} 读数：残差 RMS {rms} 是经纬仪精度 {accuracy} 的 {ratio} 倍（超过 {far} 倍，或 R² 低于 {min_r2} 时超过 {near} 倍，即拒绝），R² = {r2}；最大残差 {largest} 位于第 {row} 行：请检查该行读数、各列和精度设置</translation>
+        </message>
+        <message>
+            <source>row {row}, where the theodolite was zeroed (θ = {theta}°, A = {azimuth}°), disagrees with {bad} of the other {n} rows by more than ±{limit}: check columns 'theta_deg' and 'azimuth_deg' of that row, or the reference row</source>
+            <translation>第 {row} 行（经纬仪在此置零，θ = {theta}°，A = {azimuth}°）与其余 {n} 行中的 {bad} 行相差超过 ±{limit}：请检查该行的 'theta_deg' 和 'azimuth_deg' 列，或参考行</translation>
+        </message>
+        <message>
+            <source>row {row}: θ = {theta}° and A = {azimuth}° disagree by {error} after the set-up's share is removed ({bad} of {n} rows beyond ±{limit}; the zero is at row {zero}): no axis errs by that much: check columns 'theta_deg' and 'azimuth_deg' of that row</source>
+            <translation>第 {row} 行：扣除安装误差后，θ = {theta}° 与 A = {azimuth}° 相差 {error}（{n} 行中有 {bad} 行超过 ±{limit}；零位在第 {zero} 行）：没有任何轴系误差会这么大：请检查该行的 'theta_deg' 和 'azimuth_deg' 列</translation>
+        </message>
+        <message>
+            <source>issue the certificate although the result shows figures no instrument of the kind has (polygon: errors of degrees); you have checked the readings</source>
+            <translation>即使结果显示该类仪器不可能有的数值（polygon：误差达数度）也出具证书；表示您已核对读数</translation>
+        </message>
+        <message>
+            <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
+            <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
+        </message>
     </context>
 </TS>

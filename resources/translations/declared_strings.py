@@ -57,6 +57,7 @@ DECLARED = (
     QT_TR_NOOP('R_up'),
     QT_TR_NOOP('Readings, run by run'),
     QT_TR_NOOP("Resolution of the reference's reading, in the deviation unit (rectangular, half-width r/2). 0: not stated"),
+    QT_TR_NOOP('Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check'),
     QT_TR_NOOP('Reversal value B_i = x̄↑ − x̄↓'),
     QT_TR_NOOP('Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0'),
     QT_TR_NOOP('SINUMERIK 840D measuring system error compensation'),
