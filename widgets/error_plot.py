@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 
 RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
@@ -130,6 +131,9 @@ class ErrorPlot(QWidget):
                 curve.setData([], [])
             else:
                 curve.setData(x, np.asarray(y, dtype=float))
+        for plot in (self.main_plot, self.corrected_plot):
+            if follow_new_data(plot):  # new data: a user's zoom of the old is given up
+                self._sticky_y[plot.getViewBox()] = True
         self._follow_y(self.main_plot, (raw, model))
         self._follow_y(self.corrected_plot, (corrected, [0.0]))
         place_legend(self.main_plot, self.legend)
@@ -174,7 +178,8 @@ class ErrorPlot(QWidget):
 
     def _follow_y(self, plot, arrays) -> None:
         """Move the y range only if the data left it or fill less than 60 % of it. A user's
-        zoom is left alone until the plot's auto-range button ("A") is pressed."""
+        zoom is left alone until the plot's auto-range button ("A") is pressed or the data
+        change (``follow_new_data``)."""
         vb = plot.getViewBox()
         if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
             vb.enableAutoRange(y=False)
@@ -212,6 +217,8 @@ class ErrorPlot(QWidget):
             self.residual_curve.setData([], [])
         else:
             self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
+            if follow_new_data(self.residual_plot):
+                self._sticky_y[self.residual_plot.getViewBox()] = True
             self._follow_y(self.residual_plot, (residuals, [0.0]))
 
     def clear(self) -> None:

@@ -10,6 +10,7 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from widgets.i18n import declared
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 
 
 class FigurePlot(QWidget):
@@ -60,4 +61,5 @@ class FigurePlot(QWidget):
             curve = self.plot.plot(s.x, s.y, pen=pg.mkPen(colour, width=2), connect="finite",
                                    name=declared(s.label) or None, **symbol)
             self.curves.append(curve)
+        follow_new_data(self.plot.getPlotItem())
         place_legend(self.plot.getPlotItem(), self.legend)

@@ -13,6 +13,7 @@ from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 from widgets.workbench_view import WorkbenchView
 
 
@@ -135,6 +136,8 @@ class FringeView(WorkbenchView):
         drift = figures["drift"].series
         for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
             curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))
+        for plot in (p.signals, p.lissajous, p.spectrum, p.drift):
+            follow_new_data(plot.getPlotItem())  # new data: shown whole again
         for plot in (p.signals, p.lissajous, p.drift):
             item = plot.getPlotItem()
             place_legend(item, item.legend)

@@ -12,6 +12,7 @@ from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
 
@@ -95,9 +96,11 @@ class PolygonView(WorkbenchView):
                 label.setText(declared(series.label))
         self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
         self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
+        follow_new_data(item)
         place_legend(item, item.legend)
         bars = harmonics.series[0]
         self.harmonics.bars.setOpts(x=bars.x, height=bars.y, width=0.6)
+        follow_new_data(self.harmonics.plot.getPlotItem())
 
     def clear_result(self) -> None:
         self.error_plot.clear()
