@@ -132,7 +132,7 @@ class ErrorPlot(QWidget):
             else:
                 curve.setData(x, np.asarray(y, dtype=float))
         for plot in (self.main_plot, self.corrected_plot):
-            if follow_new_data(plot):  # new data: a user's zoom of the old is given up
+            if follow_new_data(plot, y=False):  # new data: a user's zoom of the old is given up
                 self._sticky_y[plot.getViewBox()] = True
         self._follow_y(self.main_plot, (raw, model))
         self._follow_y(self.corrected_plot, (corrected, [0.0]))
@@ -217,7 +217,7 @@ class ErrorPlot(QWidget):
             self.residual_curve.setData([], [])
         else:
             self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
-            if follow_new_data(self.residual_plot):
+            if follow_new_data(self.residual_plot, y=False):
                 self._sticky_y[self.residual_plot.getViewBox()] = True
             self._follow_y(self.residual_plot, (residuals, [0.0]))
 

@@ -43,16 +43,17 @@ def _items(plot_item) -> list:
             if isinstance(i, pg.PlotDataItem | pg.BarGraphItem)]
 
 
-def follow_new_data(plot_item) -> bool:
+def follow_new_data(plot_item, y: bool = True) -> bool:
     """Call after giving ``plot_item``'s curves their data: when they differ from the data
     it last showed, the view is ranged on them again (pyqtgraph's auto-range on both
-    axes); the same data keep the view as the user left it. Returns whether re-ranged."""
+    axes; on x only with ``y=False``, for a plot that ranges y itself); the same data
+    keep the view as the user left it. Returns whether the data were new."""
     vb = plot_item.getViewBox()
     now = _fingerprint(_items(plot_item))
     if getattr(vb, "data_fingerprint", None) == now:
         return False
     vb.data_fingerprint = now
-    vb.enableAutoRange(x=True, y=True)
+    vb.enableAutoRange(x=True, y=True) if y else vb.enableAutoRange(x=True)
     return True
 
 
