@@ -81,16 +81,20 @@ class ErrorPlot(QWidget):
         on_language_change(self, self._relabel)
         self.legend = self.main_plot.addLegend(offset=(-10, 10))
         self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
-        self.raw_curve = self.main_plot.plot(name="raw", pen=RAW_PEN, symbol="o", symbolSize=5,
+        self.raw_curve = self.main_plot.plot(name=declared("raw"), pen=RAW_PEN, symbol="o", symbolSize=5,
                                              symbolBrush="#c0392b", symbolPen=None)
-        self.model_curve = self.main_plot.plot(name="model", pen=MODEL_PEN)
+        self.model_curve = self.main_plot.plot(name=declared("model"), pen=MODEL_PEN)
         self.corrected_curve = self.corrected_plot.plot(
-            name="corrected", pen=CORRECTED_PEN, symbol="s", symbolSize=5,
+            name=declared("corrected"), pen=CORRECTED_PEN, symbol="s", symbolSize=5,
             symbolBrush="#1f5fbf", symbolPen=None)
         self.corrected_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
         self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, symbol="o", symbolSize=4,
                                                       symbolBrush="#2e8b57", symbolPen=None)
         self.residual_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
+        # the legend's names in English, to be shown again in the window's language (an
+        # empty plot's legend too: it stayed "raw / model / corrected" in Chinese)
+        self._curve_names = {self.raw_curve: "raw", self.model_curve: "model",
+                             self.corrected_curve: "corrected"}
         self.vline = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#888", width=1))
         self.main_plot.addItem(self.vline, ignoreBounds=True)
         self.readout = QLabel(" ")
@@ -112,6 +116,7 @@ class ErrorPlot(QWidget):
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
         for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
                             (self.corrected_curve, corrected)):
+            self._curve_names[curve] = name
             name = declared(name) if name else name
             curve.opts["name"] = name
             for legend in (self.legend, self.corrected_legend):
@@ -163,6 +168,11 @@ class ErrorPlot(QWidget):
     def _relabel(self) -> None:
         for (plot, axis), english in self._labels.items():
             plot.setLabel(axis, declared(english))
+        for curve, english in getattr(self, "_curve_names", {}).items():
+            for legend in (self.legend, self.corrected_legend):
+                label = legend.getLabel(curve)
+                if label is not None and english:
+                    label.setText(declared(english))
 
     def _state_units(self, errors_label: str, residuals_label: str) -> None:
         """Each panel's title names the unit of the figure it draws (the unit results are

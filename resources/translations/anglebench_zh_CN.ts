@@ -1212,6 +1212,10 @@
         <translation>毫米（直线轴）</translation>
     </message>
     <message>
+        <source>model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
         <source>nanometres</source>
         <translation>纳米</translation>
     </message>
@@ -1246,6 +1250,10 @@
     <message>
         <source>pyramidal tilt ψ</source>
         <translation>棱锥倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>raw</source>
+        <translation>原始</translation>
     </message>
     <message>
         <source>raw error</source>
@@ -1735,6 +1743,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)</source>
         <translation>已导入 {name}：{rows} 行（编辑 › 撤销 可恢复之前的读数）</translation>
+    </message>
+    <message>
+        <source>readings typed in AngleBench</source>
+        <translation>在 AngleBench 中录入的读数</translation>
     </message>
     <message>
         <source>Printed</source>
@@ -2659,6 +2671,50 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>PNG image (*.png)</source>
         <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>View All</source>
+        <translation>显示全部</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>图</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>X 轴</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Y 轴</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>手动</translation>
+    </message>
+    <message>
+        <source>Invert axis</source>
+        <translation>坐标轴反向</translation>
+    </message>
+    <message>
+        <source>Mouse enabled</source>
+        <translation>允许鼠标缩放平移</translation>
+    </message>
+    <message>
+        <source>Visible data only</source>
+        <translation>仅按可见数据</translation>
+    </message>
+    <message>
+        <source>Auto pan only</source>
+        <translation>仅自动平移</translation>
+    </message>
+    <message>
+        <source>Link axis:</source>
+        <translation>联动坐标轴：</translation>
     </message>
     <message>
         <source>Copy image</source>
