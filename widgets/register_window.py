@@ -86,6 +86,8 @@ class RegisterWindow(QDialog):
                                         label="due", labelOpts={"position": 0.9})
         self.due_line.hide()
         self.history_plot.addItem(self.due_line)
+        today = dt.date.today().toordinal() - EPOCH  # empty: the year up to today, in dates
+        self.history_plot.setXRange((today - 365) * 86400.0, (today + 30) * 86400.0, padding=0)
         localise_plot_menus(self.history_plot)
         self.figure = QComboBox()  # which headline figure the history plots
         self.figure.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)

@@ -298,6 +298,10 @@
         <translation>平均位置偏差及 ±2s</translation>
     </message>
     <message>
+        <source>Readings, run by run (colour: run; ↑ solid, ↓ dashed)</source>
+        <translation>逐次测量的读数（颜色：测次；↑ 实线，↓ 虚线）</translation>
+    </message>
+    <message>
         <source>Odd harmonics only (the seed&apos;s model), or every order up to the highest</source>
         <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
     </message>
@@ -701,10 +705,6 @@
     <message>
         <source>R_up</source>
         <translation>R↑</translation>
-    </message>
-    <message>
-        <source>Readings, run by run</source>
-        <translation>逐次测量的读数</translation>
     </message>
     <message>
         <source>Residuals far above it (3×) raise a warning; 0: no check</source>
@@ -1330,14 +1330,6 @@
     <message>
         <source>run</source>
         <translation>测次</translation>
-    </message>
-    <message>
-        <source>runs ↑ (one line each)</source>
-        <translation>正向各测次（每次一条线）</translation>
-    </message>
-    <message>
-        <source>runs ↓ (one line each)</source>
-        <translation>反向各测次（每次一条线）</translation>
     </message>
     <message>
         <source>samples per period N</source>

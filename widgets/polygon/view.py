@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
-from widgets.plot_grid import show_grid
+from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.plot_range import follow_new_data
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
@@ -54,7 +54,7 @@ class HarmonicBars(QWidget):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.plot = pg.PlotWidget(background="w")
+        self.plot = pg.PlotWidget(background="w", axisItems={"bottom": IntegerAxis("bottom")})
         self.left_label = "amplitude (\")"  # English: shown in the window's language
         self._relabel()
         on_language_change(self, self._relabel)
