@@ -85,6 +85,9 @@ class CertificatePresenter:
         self.problems: dict[str, str] = {}  # stored details that no longer read
         self.raw: dict = {}
         self.pending: PendingRevision | None = None
+        # the language of a certificate whose details do not name one: the window's
+        # ("zh" in a Chinese window; the main window sets it)
+        self.default_language = "en"
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self) -> dict:
@@ -109,6 +112,8 @@ class CertificatePresenter:
             stored = {k: last[k] for k in SHARED_DETAILS if k in last}
         meta, self.problems = CertificateMetadata.from_dict_lenient(stored)
         self.raw = stored if isinstance(stored, dict) else {}
+        if "language" not in self.raw:
+            meta = dataclasses.replace(meta, language=self.default_language)
         try:
             return meta.with_lab_defaults(self.lab_defaults())
         except MetadataError:
@@ -186,7 +191,7 @@ class CertificatePresenter:
                                                                       settings))
                 self.view.show_status(tr("Draft written to {path} — DRAFT: {missing} missing; "
                                          "nothing was recorded in the register").format(
-                    path=path, missing=", ".join(draft)), 10000)
+                    path=path, missing=", ".join(tr(m) for m in draft)), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note)

@@ -110,6 +110,7 @@ class MainWindow(QMainWindow):
                                                  lambda: self.current.mark_modified())
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
+        self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
         self._setup_ui()
         self._setup_menus()
         on_language_change(self, self._retranslate)
@@ -272,6 +273,7 @@ class MainWindow(QMainWindow):
             action.setChecked(action.data() == choice)
         self.qsettings.setValue(LANGUAGE_SETTING, choice)
         self.language = resolve_language(choice)  # before the texts are set again in it
+        self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
         install_language(choice)
 
     def _update_undo_actions(self, *_args) -> None:
@@ -520,7 +522,8 @@ class MainWindow(QMainWindow):
 
         print_workbench(self.current.view, printer,
                         f"{declared(self.current.kind.title)} — "
-                        + (self._source_name() or tr("readings")))
+                        + (self.project_path.name if self.project_path
+                           else tr("readings typed in AngleBench")))
         self.statusBar().showMessage(tr("Printed"), 5000)
 
     def show_register(self) -> None:
@@ -625,7 +628,7 @@ class MainWindow(QMainWindow):
             tr("Export a draft?"),
             tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not a "
                "certificate, and nothing is recorded in the register. Export the draft anyway?")
-            .format(missing=", ".join(missing)),
+            .format(missing=", ".join(tr(m) for m in missing)),
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes

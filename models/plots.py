@@ -25,6 +25,7 @@ class PlotSeries:
     markers: bool = False
     band: np.ndarray | None = None  # ± half-width drawn as a shaded band around y
     role: str = ""  # "raw", "model", "corrected", "residual" for the window's error plot
+    dashed: bool = False  # drawn with a dashed line (the positioning runs: the down direction)
 
 
 @dataclass(frozen=True)

@@ -1,6 +1,7 @@
 """Test set-up: Qt runs offscreen; set before any Qt import."""
 
 import os
+import sys
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 # The commands and the window follow the system's language: the suite runs in English
@@ -20,7 +21,35 @@ atexit.register(shutil.rmtree, _SESSION_HOME, True)
 os.environ["XDG_DATA_HOME"] = os.path.join(_SESSION_HOME, "data")
 os.environ["XDG_CONFIG_HOME"] = os.path.join(_SESSION_HOME, "config")
 
+import tempfile  # noqa: E402
 from pathlib import Path  # noqa: E402
+
+# The app keeps files outside the project: its settings (~/.config/AngleBench), its register
+# and autosaves (~/.local/share/AngleBench). The suite, and every program it starts, gets a
+# home of its own: the user's own files are never read or written by a test (#31).
+USER_HOME = Path.home()
+_USER_FILES = [USER_HOME / ".config" / "AngleBench", USER_HOME / ".local" / "share" / "AngleBench"]
+TEST_HOME = Path(tempfile.mkdtemp(prefix="anglebench-tests-home-"))
+os.environ["HOME"] = str(TEST_HOME)
+for _name, _folder in (("XDG_CONFIG_HOME", ".config"), ("XDG_DATA_HOME", ".local/share"),
+                       ("XDG_CACHE_HOME", ".cache"), ("XDG_STATE_HOME", ".local/state")):
+    os.environ[_name] = str(TEST_HOME / _folder)
+os.environ.pop("ANGLEBENCH_DATA_DIR", None)
+os.environ.pop("ANGLEBENCH_REGISTER", None)
+
+
+def _user_files_state() -> dict[str, tuple]:
+    """Every file under the user's AngleBench folders with its size and time."""
+    state = {}
+    for folder in _USER_FILES:
+        if folder.exists():
+            for path in [folder, *folder.rglob("*")]:
+                info = path.stat()
+                state[str(path)] = (info.st_size, info.st_mtime_ns)
+    return state
+
+
+USER_FILES_BEFORE = _user_files_state()
 
 from app.process_setup import tune_process  # noqa: E402
 
@@ -106,3 +135,10 @@ def window(qtbot, tmp_path):
 
     w.deleteLater()
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """The user's own AngleBench files are as they were before the suite ran."""
+    if _user_files_state() != USER_FILES_BEFORE:
+        session.exitstatus = 1
+        sys.stderr.write(f"\nthe tests changed the user's own files under {_USER_FILES}\n")

@@ -23,8 +23,12 @@ def test_y_range_moves_only_when_needed_and_respects_a_zoom(qtbot):
     assert vb.viewRange()[1][1] < 1.0
     vb.setYRange(-10, 10, padding=0)
     vb.sigRangeChangedManually.emit([False, True])  # as a mouse zoom does
-    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
+    plot.set_curves(x, y * 0.2, y * 0.2, y * 0.1)  # the same data drawn again
     assert vb.viewRange()[1] == [-10.0, 10.0]  # the user's zoom is kept
+    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)  # new data: the zoom is given up (#31)
+    assert vb.viewRange()[1][1] < 1.0
+    vb.setYRange(-10, 10, padding=0)
+    vb.sigRangeChangedManually.emit([False, True])
     vb.enableAutoRange(y=True)  # the "A" button
     plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
     assert vb.viewRange()[1][1] < 1.0

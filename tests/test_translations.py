@@ -62,6 +62,35 @@ def _skipped(widget: QWidget, window) -> bool:
     return False
 
 
+def walk_plot_menu(vb, add) -> None:
+    """Every text of a plot's right-click menu as pyqtgraph builds it when clicked: the
+    view's menu, its submenus and their forms, and what the plot and the scene add."""
+    from PySide6.QtWidgets import QWidgetAction
+
+    def walk(menu):
+        add(menu.title(), "plot menu")
+        for action in menu.actions():
+            add(action.text(), "plot menu")
+            if action.menu() is not None:
+                walk(action.menu())
+            if isinstance(action, QWidgetAction) and action.defaultWidget() is not None:
+                for widget in action.defaultWidget().findChildren(QWidget):
+                    add(widget.toolTip(), "plot menu tooltip")
+                    if isinstance(widget, QLabel | QAbstractButton):
+                        add(widget.text(), "plot menu")
+
+    walk(vb.menu)
+    parent = vb.parentItem()
+    while parent is not None:
+        if hasattr(parent, "getContextMenus"):
+            found = parent.getContextMenus(None) or []
+            for extra in found if isinstance(found, list) else [found]:
+                walk(extra) if hasattr(extra, "actions") else add(extra.text(), "plot menu")
+        parent = parent.parentItem()
+    for action in vb.scene().contextMenu:
+        add(action.text(), "plot menu")
+
+
 def window_texts(window, extra: list[QWidget] = ()) -> dict[str, str]:
     """Every text the window shows of its own: {text: where}."""
     out: dict[str, str] = {}
@@ -110,10 +139,7 @@ def window_texts(window, extra: list[QWidget] = ()) -> dict[str, str]:
                         for _sample, label in item.items:
                             add(label.text, "legend")
                     elif isinstance(item, pg.ViewBox) and getattr(item, "menu", None):
-                        for action in item.menu.actions():
-                            if action.text() in ("Copy image", "Save image…") or \
-                                    "image" in action.text():
-                                add(action.text(), "plot menu")
+                        walk_plot_menu(item, add)
     for presenter in window.presenters:
         model = presenter.table_model
         for c in range(model.columnCount()):
@@ -332,3 +358,57 @@ def test_the_register_window_follows_the_language(window, samples_dir, tmp_path,
     finally:
         window.set_language("en")
     assert table.item(0, 1).text() == "issued"
+
+
+def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, samples_dir,
+                                                     monkeypatch):
+    """#31's leftovers: the empty plots' legends (before any readings), a positioning run
+    of fewer than 5 runs, the draft question's missing details, the printout's title, the
+    plots' right-click menus, the polygon's x axes; and the certificate of a Chinese window
+    is Chinese, its PDF's title too."""
+    import pypdfium2
+
+    import widgets.print_view
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+
+    window.set_language("zh_CN")
+    try:
+        window.show()
+        texts = window_texts(window)  # empty plots, nothing analysed yet
+        left = {t: w for t, w in texts.items() if english_words(t)}
+        assert not left, left
+        positioning = window.presenter("positioning")
+        rows = [line.split(",") for line in
+                (samples_dir / "positioning_sample.csv").read_text().splitlines()[1:]]
+        positioning.table_model.replace_all([r for r in rows if int(r[1]) <= 3])
+        positioning.refresh()
+        assert positioning.result is not None and not positioning.result.minimum_runs_met
+        caption = positioning.view.readings_label.text()
+        assert english_words(caption) == set(), caption
+        asked = []
+        window.ask = lambda title, text, *a: asked.append(text)
+        window.confirm_draft(window.certificate_metadata("polygon").missing_fields())
+        assert "计量标准" in asked[0] and english_words(asked[0]) == set(), asked[0]
+        printed = []
+        monkeypatch.setattr(widgets.print_view, "print_workbench",
+                            lambda view, printer, title: printed.append(title))
+        window.print_to(None)
+        assert english_words(printed[0]) == set(), printed[0]
+        window.load_all_samples()
+        polygon = window.presenter("polygon").view
+        for axis in (polygon.error_plot.residual_plot.getAxis("bottom"),
+                     polygon.tilt_plot.plot.getAxis("bottom")):
+            assert "(°)" in axis.labelText and "deg" not in axis.labelText, axis.labelText
+        meta = window.certificate_metadata("polygon")
+        assert meta.language == "zh"
+        window.tabs.setCurrentIndex(1)
+        presenter = window.current
+        document = presenter.kind.certificate_document(presenter.result, meta, "polygon.csv",
+                                                       presenter.settings)
+        pdf = pypdfium2.PdfDocument(certificate_pdf_bytes(document))
+        title = pdf.get_metadata_dict()["Title"]
+        pdf.close()
+        assert re.search("[\u4e00-\u9fff]", title) and english_words(title) == set(), title
+    finally:
+        window.set_language("en")
+    assert window.certificate_metadata("theodolite").language == "en"

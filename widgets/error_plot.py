@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 
 RAW_PEN = pg.mkPen("#c0392b", width=2)
 MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
@@ -80,16 +81,20 @@ class ErrorPlot(QWidget):
         on_language_change(self, self._relabel)
         self.legend = self.main_plot.addLegend(offset=(-10, 10))
         self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
-        self.raw_curve = self.main_plot.plot(name="raw", pen=RAW_PEN, symbol="o", symbolSize=5,
+        self.raw_curve = self.main_plot.plot(name=declared("raw"), pen=RAW_PEN, symbol="o", symbolSize=5,
                                              symbolBrush="#c0392b", symbolPen=None)
-        self.model_curve = self.main_plot.plot(name="model", pen=MODEL_PEN)
+        self.model_curve = self.main_plot.plot(name=declared("model"), pen=MODEL_PEN)
         self.corrected_curve = self.corrected_plot.plot(
-            name="corrected", pen=CORRECTED_PEN, symbol="s", symbolSize=5,
+            name=declared("corrected"), pen=CORRECTED_PEN, symbol="s", symbolSize=5,
             symbolBrush="#1f5fbf", symbolPen=None)
         self.corrected_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
         self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, symbol="o", symbolSize=4,
                                                       symbolBrush="#2e8b57", symbolPen=None)
         self.residual_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
+        # the legend's names in English, to be shown again in the window's language (an
+        # empty plot's legend too: it stayed "raw / model / corrected" in Chinese)
+        self._curve_names = {self.raw_curve: "raw", self.model_curve: "model",
+                             self.corrected_curve: "corrected"}
         self.vline = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#888", width=1))
         self.main_plot.addItem(self.vline, ignoreBounds=True)
         self.readout = QLabel(" ")
@@ -111,6 +116,7 @@ class ErrorPlot(QWidget):
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
         for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
                             (self.corrected_curve, corrected)):
+            self._curve_names[curve] = name
             name = declared(name) if name else name
             curve.opts["name"] = name
             for legend in (self.legend, self.corrected_legend):
@@ -130,6 +136,9 @@ class ErrorPlot(QWidget):
                 curve.setData([], [])
             else:
                 curve.setData(x, np.asarray(y, dtype=float))
+        for plot in (self.main_plot, self.corrected_plot):
+            if follow_new_data(plot, y=False):  # new data: a user's zoom of the old is given up
+                self._sticky_y[plot.getViewBox()] = True
         self._follow_y(self.main_plot, (raw, model))
         self._follow_y(self.corrected_plot, (corrected, [0.0]))
         place_legend(self.main_plot, self.legend)
@@ -159,6 +168,11 @@ class ErrorPlot(QWidget):
     def _relabel(self) -> None:
         for (plot, axis), english in self._labels.items():
             plot.setLabel(axis, declared(english))
+        for curve, english in getattr(self, "_curve_names", {}).items():
+            for legend in (self.legend, self.corrected_legend):
+                label = legend.getLabel(curve)
+                if label is not None and english:
+                    label.setText(declared(english))
 
     def _state_units(self, errors_label: str, residuals_label: str) -> None:
         """Each panel's title names the unit of the figure it draws (the unit results are
@@ -174,7 +188,8 @@ class ErrorPlot(QWidget):
 
     def _follow_y(self, plot, arrays) -> None:
         """Move the y range only if the data left it or fill less than 60 % of it. A user's
-        zoom is left alone until the plot's auto-range button ("A") is pressed."""
+        zoom is left alone until the plot's auto-range button ("A") is pressed or the data
+        change (``follow_new_data``)."""
         vb = plot.getViewBox()
         if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
             vb.enableAutoRange(y=False)
@@ -212,6 +227,8 @@ class ErrorPlot(QWidget):
             self.residual_curve.setData([], [])
         else:
             self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
+            if follow_new_data(self.residual_plot, y=False):
+                self._sticky_y[self.residual_plot.getViewBox()] = True
             self._follow_y(self.residual_plot, (residuals, [0.0]))
 
     def clear(self) -> None:

@@ -5,11 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
 from widgets.i18n import declared
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
+from widgets.plot_range import follow_new_data
 
 
 class FigurePlot(QWidget):
@@ -39,6 +41,13 @@ class FigurePlot(QWidget):
             self.plot.removeItem(item)
         self.curves, self._bands = [], []
 
+    @staticmethod
+    def _name(label: str) -> str | None:
+        """A series' legend entry in the window's language (a run's number as it is)."""
+        if not label:
+            return None
+        return label if label.isdigit() else declared(label)
+
     def show_figure(self, figure) -> None:
         self.clear()
         if figure is None:
@@ -57,7 +66,10 @@ class FigurePlot(QWidget):
                 self._bands.append(fill)
             symbol = {"symbol": "o", "symbolSize": 6, "symbolBrush": colour,
                       "symbolPen": None} if s.markers else {}
-            curve = self.plot.plot(s.x, s.y, pen=pg.mkPen(colour, width=2), connect="finite",
-                                   name=declared(s.label) or None, **symbol)
+            pen = pg.mkPen(colour, width=2, style=Qt.PenStyle.DashLine if s.dashed
+                           else Qt.PenStyle.SolidLine)
+            curve = self.plot.plot(s.x, s.y, pen=pen, connect="finite",
+                                   name=self._name(s.label), **symbol)
             self.curves.append(curve)
+        follow_new_data(self.plot.getPlotItem())
         place_legend(self.plot.getPlotItem(), self.legend)

@@ -1,8 +1,9 @@
 """Legends that never sit on the data: the legend goes to a corner of the plot where no
 data point falls under it (top right first when several are free); when every corner has
 data, the plot's top is raised to make room for it above the curves; and when the legend
-would take over a third of a cramped plot (a small window, 200 % scale), its entries go
-above the plot, in its title line, outside the data area. Placed again whenever the
+would take over a third of a cramped plot (a small window, 200 % scale), or the plot's
+aspect is locked (a Lissajous figure: raising its top pushed the figure out sideways),
+its entries go above the plot, in its title line, outside the data area. Placed again whenever the
 plot's view changes size (after the layout has settled, not before)."""
 
 from __future__ import annotations
@@ -88,6 +89,13 @@ def place_legend(plot_item, legend) -> str:
     if vb.state["autoRange"][1] or not (y0 <= y.min() and y.max() <= y1):
         y0, y1 = float(y.min()), float(y.max())
     width, height = max(vb.width(), 1.0), max(vb.height(), 1.0)
+    locked = bool(vb.state.get("aspectLocked"))
+    if locked:  # 1:1 (a Lissajous figure): the data's box widened to the plot's shape
+        ratio = float(vb.state["aspectLocked"])
+        per_pixel = max((x1 - x0) / width, (y1 - y0) * ratio / height, 1e-300)
+        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
+        x0, x1 = cx - per_pixel * width / 2, cx + per_pixel * width / 2
+        y0, y1 = cy - per_pixel * height / ratio / 2, cy + per_pixel * height / ratio / 2
     box = legend.boundingRect()
     fx = min(0.9, (box.width() + 20) / width)  # the legend's share of the plot, with margin
     fy = min(0.9, (box.height() + 20) / height)
@@ -100,7 +108,9 @@ def place_legend(plot_item, legend) -> str:
         "bottom-left": int(np.sum((u <= fx) & (v >= 1 - fy))),
     }
     corner = min(CORNERS, key=lambda c: counts[c])  # dict order breaks ties: top right first
-    if counts[corner] and (fy >= 0.35 or y1 <= y0):
+    # a cramped plot, or one whose aspect is locked (raising its top would shrink the
+    # figure sideways out of the view): the legend goes above instead of hiding data
+    if counts[corner] and (locked or fy >= 0.35 or y1 <= y0):
         _legend_above(plot_item, legend)  # a cramped plot: the legend would hide the data
         plot_item.legend_corner = "above"
         return "above"

@@ -2,7 +2,28 @@
 
 from __future__ import annotations
 
-__all__ = ["show_grid"]
+import pyqtgraph as pg
+
+__all__ = ["IntegerAxis", "TEXT_COLOUR", "show_grid"]
+
+#: the plots' text (axis titles, tick labels, legends, titles): 10:1 on white. pyqtgraph's
+#: own grey (150, 150, 150) is 3:1, under WCAG's 4.5:1 for text (#31)
+TEXT_COLOUR = "#404040"
+pg.setConfigOptions(foreground=TEXT_COLOUR)
+
+
+class IntegerAxis(pg.AxisItem):
+    """An axis of whole numbers (a harmonic's order): ticks at integers only, never at
+    1.5 or 2.5."""
+
+    def tickSpacing(self, minVal, maxVal, size):  # noqa: N802, N803 - pyqtgraph's names
+        levels = super().tickSpacing(minVal, maxVal, size)
+        out = []
+        for spacing, _offset in levels:
+            whole = max(1.0, float(round(spacing)))
+            if all(whole != s for s, _o in out):
+                out.append((whole, 0.0))
+        return out
 
 GRID_ALPHA = 0.25
 # Major and minor grid lines only: pyqtgraph's third level of ticks drew as many faint

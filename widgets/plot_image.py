@@ -10,12 +10,13 @@ from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
 
 from widgets.i18n import live, tr
 
-__all__ = ["add_image_actions", "copy_image", "image_file_name", "plot_panels"]
+__all__ = ["add_image_actions", "copy_image", "image_file_name", "localise_plot_menu",
+           "localise_plot_menus", "plot_panels"]
 
 
 def plot_panels(widget: QWidget) -> int:
     """How many plot panels (view boxes with axes) a widget holds."""
-    return sum(1 for view in widget.findChildren(pg.GraphicsView) for item in view.scene().items()
+    return sum(1 for view in _graphics_views(widget) for item in view.scene().items()
                if isinstance(item, pg.PlotItem))
 
 
@@ -37,11 +38,63 @@ def _save_image(widget: QWidget, title: str) -> None:
         widget.grab().save(path)
 
 
+def _graphics_views(widget: QWidget) -> list[pg.GraphicsView]:
+    """The plot views inside ``widget``, and ``widget`` itself when it is one."""
+    return ([widget] if isinstance(widget, pg.GraphicsView) else []) + \
+        widget.findChildren(pg.GraphicsView)
+
+
+def localise_plot_menu(vb: pg.ViewBox) -> None:
+    """pyqtgraph's right-click menu in the window's language: "View All" and the axis
+    submenus translated; its English-only "Mouse Mode", "Plot Options" and "Export…"
+    (a dialog of its own, in English) left out: Copy image / Save image… do the export."""
+    menu = vb.menu
+    live(menu.viewAll.setText, tr("View All"))
+    live(menu.setTitle, tr("Plot"))
+    submenus = [a.menu() for a in menu.actions() if a.menu() is not None]
+    for sub in submenus:
+        if sub.actions() and sub.actions()[0] in menu.mouseModes:  # "Mouse Mode"
+            menu.removeAction(sub.menuAction())
+    axis_menus = [m for m in submenus if m.actions() and m.actions()[0] not in menu.mouseModes]
+    for sub, title in zip(axis_menus, (tr("X axis"), tr("Y axis")), strict=False):
+        live(sub.setTitle, title)
+    for ui in menu.ctrl:
+        for widget, text in ((ui.autoRadio, tr("Auto")), (ui.manualRadio, tr("Manual")),
+                             (ui.invertCheck, tr("Invert axis")),
+                             (ui.mouseCheck, tr("Mouse enabled")),
+                             (ui.visibleOnlyCheck, tr("Visible data only")),
+                             (ui.autoPanCheck, tr("Auto pan only")),
+                             (ui.label, tr("Link axis:"))):
+            live(widget.setText, text)
+        for widget in (ui.autoRadio, ui.manualRadio, ui.invertCheck, ui.mouseCheck,
+                       ui.visibleOnlyCheck, ui.autoPanCheck, ui.linkCombo, ui.autoPercentSpin,
+                       ui.minText, ui.maxText):
+            widget.setToolTip("")  # pyqtgraph's English help texts
+    parent = vb.parentItem()
+    while parent is not None and not isinstance(parent, pg.PlotItem):
+        parent = parent.parentItem()
+    if parent is not None:
+        parent.setMenuEnabled(False, None)  # "Plot Options"; the view's own menu stays
+    if vb.scene() is not None:
+        vb.scene().contextMenu = []  # "Export…"
+
+
+def localise_plot_menus(widget: QWidget) -> int:
+    """``localise_plot_menu`` for every plot inside ``widget``; returns how many."""
+    count = 0
+    for view in _graphics_views(widget):
+        for item in view.scene().items():
+            if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
+                localise_plot_menu(item)
+                count += 1
+    return count
+
+
 def add_image_actions(widget: QWidget, title: str) -> int:
     """Add the two actions to the right-click menu of every plot inside ``widget``; the
     image is the whole widget (all its panels). Returns how many menus got them."""
     count = 0
-    for view in widget.findChildren(pg.GraphicsView):
+    for view in _graphics_views(widget):  # the fringe's plots are tabs of their own
         for item in view.scene().items():
             if isinstance(item, pg.ViewBox) and getattr(item, "menu", None) is not None:
                 item.menu.addSeparator()
@@ -51,5 +104,6 @@ def add_image_actions(widget: QWidget, title: str) -> int:
                 save = item.menu.addAction(tr("Save image…"))
                 live(save.setText, tr("Save image…"))
                 save.triggered.connect(lambda _=False, w=widget, t=title: _save_image(w, t))
+                localise_plot_menu(item)
                 count += 1
     return count

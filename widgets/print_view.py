@@ -79,6 +79,9 @@ def print_workbench(view, printer, title: str) -> None:
         painter.restore()
         top = text.size().height() * scale + 20
         plot = view.plot_widget(view.plot_tabs.currentIndex())
+        from widgets.plot_range import show_data_if_hidden
+
+        show_data_if_hidden(plot)  # a printout never shows an empty frame
         image = plot.grab()
         room = QRectF(0, top, width, max(page.height() - top, 10))
         target = image.size().scaled(int(room.width()), int(room.height()),

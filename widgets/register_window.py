@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 
 from widgets.i18n import declared, live, tr
 from widgets.plot_grid import show_grid
+from widgets.plot_image import localise_plot_menus
 from widgets.screen_fit import fit_to_screen
 from widgets.text_table import show_text_table
 
@@ -85,6 +86,9 @@ class RegisterWindow(QDialog):
                                         label="due", labelOpts={"position": 0.9})
         self.due_line.hide()
         self.history_plot.addItem(self.due_line)
+        today = dt.date.today().toordinal() - EPOCH  # empty: the year up to today, in dates
+        self.history_plot.setXRange((today - 365) * 86400.0, (today + 30) * 86400.0, padding=0)
+        localise_plot_menus(self.history_plot)
         self.figure = QComboBox()  # which headline figure the history plots
         self.figure.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
         live(self.figure.setToolTip, tr("The figure of the certificates to follow over time"))

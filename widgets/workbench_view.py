@@ -5,10 +5,11 @@ from __future__ import annotations
 
 import json
 
-from PySide6.QtCore import QSettings, Qt, QTimer
+from PySide6.QtCore import QEventLoop, QSettings, Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QApplication,
     QDialog,
     QDoubleSpinBox,
     QFrame,
@@ -19,6 +20,7 @@ from PySide6.QtWidgets import (
     QPlainTextEdit,
     QProgressBar,
     QScrollArea,
+    QSizePolicy,
     QSplitter,
     QTableWidget,
     QTableWidgetItem,
@@ -50,6 +52,11 @@ class WorkbenchView(QWidget):
         self.settings = SettingsForm()
         self.readings_label = QLabel()
         live(self.readings_label.setText, tr("Readings"))
+        # the caption wraps instead of widening the left pane as it grows ("— 130 used, 3
+        # bad cell(s) — fewer than 5 runs: flagged" pushed it from 540 to 663 px)
+        self.readings_label.setWordWrap(True)
+        self.readings_label.setSizePolicy(QSizePolicy.Policy.Ignored,
+                                          QSizePolicy.Policy.Preferred)
         self.step_label = QLabel()
         self._nominal_title = ""
         self.step = QDoubleSpinBox()
@@ -273,6 +280,25 @@ class WorkbenchView(QWidget):
             self.plot_tabs.setUpdatesEnabled(False)
         else:  # the plots repaint in a later event than the table: two short pauses
             QTimer.singleShot(20, self._resume_plots)  # instead of one long one
+
+    def show_reading(self, text: str) -> bool:
+        """A file read on the GUI thread: the busy bar, a wait cursor and ``text`` painted
+        before the read holds the thread; "" ends it (the result text set by then, or the
+        one before put back when the file was refused). Returns whether it was shown."""
+        if not text:
+            self.busy.hide()
+            QApplication.restoreOverrideCursor()
+            if self.summary.toPlainText() == self._reading_text:
+                self.summary.setPlainText(self._summary_before)
+            return False
+        if not self.isVisible():
+            return False
+        self._summary_before, self._reading_text = self.summary.toPlainText(), text
+        self.busy.show()
+        self.summary.setPlainText(text)
+        QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        QApplication.processEvents(QEventLoop.ProcessEventsFlag.ExcludeUserInputEvents)
+        return True
 
     def _resume_plots(self) -> None:
         if self.busy.isHidden():  # not busy again meanwhile

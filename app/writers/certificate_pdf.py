@@ -607,9 +607,9 @@ def _standards_table(document: CertificateDocument) -> Table:
 def _render(document: CertificateDocument) -> FPDF:
     meta = document.metadata
     pdf = _CertificatePdf(document)
-    pdf.set_title(f"{document.title} {meta.certificate_number}".strip())
+    pdf.set_title(f"{label(document, document.title)} {meta.certificate_number}".strip())
     pdf.set_author(meta.lab_name)
-    pdf.set_subject(document.kind_title)
+    pdf.set_subject(pdf.say(document.kind_title))
     pdf.set_creator(f"AngleBench {software_identity().printed}")
     pdf.set_producer("AngleBench (fpdf2)")
     created = _created(document)

@@ -61,17 +61,28 @@ def reversal_figure(result: PositioningResult) -> PlotFigure | None:
                                   np.full(2, mean), ENVELOPE)))
 
 
+# one colour per run in the runs plot (dark enough to read on white), repeated past ten
+RUN_COLOURS = ((31, 95, 191), (192, 57, 43), (39, 174, 96), (142, 68, 173), (211, 84, 0),
+               (22, 160, 133), (52, 73, 94), (183, 149, 11), (199, 21, 133), (127, 140, 141))
+
+
 def readings_figure(result: PositioningResult) -> PlotFigure:
-    """Every reading, one series per run and direction (markers; the window draws them as
-    points)."""
+    """Every reading, one series per run and direction: each run its own colour, named by
+    its number once; ↑ solid, ↓ dashed (markers on both)."""
     series = []
-    for direction, name in ((1, "up"), (-1, "down")):
+    runs = [int(r) if float(r).is_integer() else r for r in np.unique(result.runs)]
+    named = set()
+    for direction in (1, -1):
         pick = result.directions == direction
-        for k, run in enumerate(np.unique(result.runs[pick])):
+        for run in np.unique(result.runs[pick]):
             rows = pick & (result.runs == run)
             order = np.argsort(result.targets[rows], kind="stable")
-            label = f"runs {ARROWS[name]} (one line each)" if k == 0 else ""
+            number = int(run) if float(run).is_integer() else run
+            colour = RUN_COLOURS[runs.index(number) % len(RUN_COLOURS)]
+            label = "" if number in named else str(number)
+            named.add(number)
             series.append(PlotSeries(label, result.targets[rows][order],
-                                     result.deviations[rows][order],
-                                     FORWARD if direction > 0 else BACKWARD, True))
-    return PlotFigure(QT_TR_NOOP("Readings, run by run"), _x_label(result), _y_label(result), tuple(series))
+                                     result.deviations[rows][order], colour, True,
+                                     dashed=direction < 0))
+    return PlotFigure(QT_TR_NOOP("Readings, run by run (colour: run; ↑ solid, ↓ dashed)"),
+                      _x_label(result), _y_label(result), tuple(series))

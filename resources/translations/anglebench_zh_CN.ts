@@ -5790,5 +5790,65 @@ Issue a certificate on this result anyway? Only if you have checked the readings
             <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
             <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
         </message>
+        <message>
+            <source>Readings, run by run (colour: run; ↑ solid, ↓ dashed)</source>
+            <translation>逐次测量的读数（颜色：测次；↑ 实线，↓ 虚线）</translation>
+        </message>
+        <message>
+            <source>model</source>
+            <translation>模型</translation>
+        </message>
+        <message>
+            <source>raw</source>
+            <translation>原始</translation>
+        </message>
+        <message>
+            <source>readings typed in AngleBench</source>
+            <translation>在 AngleBench 中录入的读数</translation>
+        </message>
+        <message>
+            <source>View All</source>
+            <translation>显示全部</translation>
+        </message>
+        <message>
+            <source>Plot</source>
+            <translation>图</translation>
+        </message>
+        <message>
+            <source>X axis</source>
+            <translation>X 轴</translation>
+        </message>
+        <message>
+            <source>Y axis</source>
+            <translation>Y 轴</translation>
+        </message>
+        <message>
+            <source>Auto</source>
+            <translation>自动</translation>
+        </message>
+        <message>
+            <source>Manual</source>
+            <translation>手动</translation>
+        </message>
+        <message>
+            <source>Invert axis</source>
+            <translation>坐标轴反向</translation>
+        </message>
+        <message>
+            <source>Mouse enabled</source>
+            <translation>允许鼠标缩放平移</translation>
+        </message>
+        <message>
+            <source>Visible data only</source>
+            <translation>仅按可见数据</translation>
+        </message>
+        <message>
+            <source>Auto pan only</source>
+            <translation>仅自动平移</translation>
+        </message>
+        <message>
+            <source>Link axis:</source>
+            <translation>联动坐标轴：</translation>
+        </message>
     </context>
 </TS>

@@ -12,14 +12,18 @@ from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
-from widgets.plot_grid import show_grid
+from widgets.plot_grid import IntegerAxis, show_grid
+from widgets.plot_range import follow_new_data
 from widgets.workbench_view import WorkbenchView
 
 
-def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True) -> pg.PlotWidget:
-    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous).
-    Its titles and legend are in the window's language (``_relabel``)."""
-    plot = pg.PlotWidget(background="w")
+def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True,
+          whole_x: bool = False) -> pg.PlotWidget:
+    """A plot; ``downsample`` only for curves that are functions of x (never a Lissajous);
+    ``whole_x``: x ticks at whole numbers only (a harmonic's order). Its titles and legend
+    are in the window's language (``_relabel``)."""
+    plot = pg.PlotWidget(background="w", axisItems={"bottom": IntegerAxis("bottom")}
+                         if whole_x else None)
     plot.english_labels = {"left": left, "bottom": bottom}
     plot.setLabel("left", declared(left))
     plot.setLabel("bottom", declared(bottom))
@@ -53,7 +57,8 @@ class FringePlots(QWidget):
                                                              style=pg.QtCore.Qt.PenStyle.DashLine))
         self.liss_ideal = self.lissajous.plot(name="compensated (unit circle × A1)",
                                               pen=pg.mkPen("#1f5fbf", width=1.5))
-        self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False)
+        self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False,
+                              whole_x=True)
         self.spectrum.setLogMode(y=True)
         self.sin_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#c0392b", name="sin")
         self.cos_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#1f5fbf", name="cos")
@@ -135,6 +140,8 @@ class FringeView(WorkbenchView):
         drift = figures["drift"].series
         for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
             curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))
+        for plot in (p.signals, p.lissajous, p.spectrum, p.drift):
+            follow_new_data(plot.getPlotItem())  # new data: shown whole again
         for plot in (p.signals, p.lissajous, p.drift):
             item = plot.getPlotItem()
             place_legend(item, item.legend)

@@ -11,7 +11,8 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
-from widgets.plot_grid import show_grid
+from widgets.plot_grid import IntegerAxis, show_grid
+from widgets.plot_range import follow_new_data
 from widgets.polygon.simulation import PolygonSimulation
 from widgets.workbench_view import WorkbenchView
 
@@ -22,8 +23,9 @@ class TiltPlot(QWidget):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.plot = pg.PlotWidget(background="w")
-        self.plot.setLabel("left", declared("AC vertical − zero (\")"))
-        self.plot.setLabel("bottom", "θ (deg)")
+        self.left_label = "AC vertical − zero (\")"  # English: shown in the window's language
+        self.plot.setLabel("left", declared(self.left_label))
+        self.plot.setLabel("bottom", declared("θ (deg)"))
         show_grid(self.plot)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
         self.plot.addLegend(offset=(-10, 10))
@@ -32,8 +34,19 @@ class TiltPlot(QWidget):
                                        symbolBrush="#c0392b")
         self.model = self.plot.plot(name=declared("tilt model ε_y"),
                                     pen=pg.mkPen("#1f5fbf", width=2))
+        on_language_change(self, self._relabel)
         layout = QVBoxLayout(self)
         layout.addWidget(self.plot)
+
+    def _relabel(self) -> None:
+        self.plot.setLabel("left", declared(self.left_label))
+        self.plot.setLabel("bottom", declared("θ (deg)"))
+        legend = self.plot.getPlotItem().legend
+        for curve, english in ((self.readings, "readings"), (self.model, "tilt model ε_y")):
+            label = legend.getLabel(curve)
+            x = curve.getData()[0]
+            if label is not None and (x is None or len(x) == 0):  # drawn: named by its figure
+                label.setText(declared(english))
 
 
 class HarmonicBars(QWidget):
@@ -41,8 +54,8 @@ class HarmonicBars(QWidget):
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
-        self.plot = pg.PlotWidget(background="w")
-        self.plot.setLabel("left", declared("amplitude (\")"))
+        self.plot = pg.PlotWidget(background="w", axisItems={"bottom": IntegerAxis("bottom")})
+        self.left_label = "amplitude (\")"  # English: shown in the window's language
         self._relabel()
         on_language_change(self, self._relabel)
         show_grid(self.plot, x=False)
@@ -53,6 +66,7 @@ class HarmonicBars(QWidget):
         layout.addWidget(self.plot)
 
     def _relabel(self) -> None:
+        self.plot.setLabel("left", declared(self.left_label))
         self.plot.setLabel("bottom", tr("harmonic order (1 = eccentricity, 2 = ellipticity)"))
 
     def set_spectrum(self, order, amplitude) -> None:
@@ -62,7 +76,7 @@ class HarmonicBars(QWidget):
 class PolygonView(WorkbenchView):
     def __init__(self, parent=None) -> None:
         super().__init__("Polygon encoder test", parent)
-        self.error_plot = ErrorPlot(x_label="θ face angle (deg)",
+        self.error_plot = ErrorPlot(x_label="θ face angle (°)",
                                     residual_label="tilt fit res. (\")")
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
@@ -86,7 +100,9 @@ class PolygonView(WorkbenchView):
         self.error_plot.show_figure(errors, residuals)
         readings, model = tilt.series if tilt is not None else (None, None)
         if tilt is not None:
+            self.tilt_plot.left_label = tilt.y_label
             self.tilt_plot.plot.setLabel("left", declared(tilt.y_label))
+        self.harmonics.left_label = harmonics.y_label
         self.harmonics.plot.setLabel("left", declared(harmonics.y_label))
         item = self.tilt_plot.plot.getPlotItem()
         for curve, series in ((self.tilt_plot.readings, readings), (self.tilt_plot.model, model)):
@@ -95,9 +111,11 @@ class PolygonView(WorkbenchView):
                 label.setText(declared(series.label))
         self.tilt_plot.readings.setData(*((readings.x, readings.y) if readings else ([], [])))
         self.tilt_plot.model.setData(*((model.x, model.y) if model else ([], [])))
+        follow_new_data(item)
         place_legend(item, item.legend)
         bars = harmonics.series[0]
         self.harmonics.bars.setOpts(x=bars.x, height=bars.y, width=0.6)
+        follow_new_data(self.harmonics.plot.getPlotItem())
 
     def clear_result(self) -> None:
         self.error_plot.clear()

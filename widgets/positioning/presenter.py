@@ -33,7 +33,7 @@ class PositioningPresenter(WorkbenchPresenter):
                                              plots.readings_figure(result)))
         self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
         if not result.minimum_runs_met:
-            self.view.append_to_readings_caption(" — fewer than 5 runs: flagged")
+            self.view.append_to_readings_caption(tr(" — fewer than 5 runs: flagged"))
 
     def clear_result(self) -> None:
         self.view.clear_result()

@@ -1,0 +1,145 @@
+"""Plots show their data (#31): the Lissajous figure whole at every window size, on both
+fringe samples (its 1:1 aspect and the legend's room fought: only 1.7–5.3 V of a ±3.7 V
+figure was in view); new data re-range a plot, a user's zoom or drag kept only while the
+data stay the same; a printout shows its data."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PySide6.QtWidgets import QApplication
+
+# the sizes the window was tried at: 1600×1000, 1280×720, and 200 % on 2560×1600 (1280×800
+# logical: Qt lays the window out in logical pixels, the fonts' sizes in them the same)
+SIZES = [(1600, 1000), (1280, 720), (1280, 800)]
+
+
+def _settle(widget) -> None:
+    for _ in range(3):
+        QApplication.processEvents()
+    widget.grab()  # a paint: pyqtgraph applies its auto-range when it paints
+
+
+def _inside(plot_item, curves) -> list[str]:
+    """The curves with a point outside the view (empty: every point is in view)."""
+    (x0, x1), (y0, y1) = plot_item.getViewBox().viewRange()
+    out = []
+    for curve in curves:
+        x, y = curve.getData()
+        if x is None or len(x) == 0:
+            continue
+        ok = np.isfinite(x) & np.isfinite(y)
+        x, y = x[ok], y[ok]
+        if x.min() < x0 or x.max() > x1 or y.min() < y0 or y.max() > y1:
+            out.append(f"{curve.opts['name']}: x {x.min():.3g}…{x.max():.3g}, y {y.min():.3g}…"
+                       f"{y.max():.3g} in view x {x0:.3g}…{x1:.3g}, y {y0:.3g}…{y1:.3g}")
+    return out
+
+
+@pytest.mark.parametrize("size", SIZES, ids=lambda s: f"{s[0]}x{s[1]}")
+def test_the_lissajous_figure_is_shown_whole(window, samples_dir, size):
+    presenter = window.presenter("fringe")
+    plots = presenter.view.plots
+    window.resize(*size)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    presenter.view.plot_tabs.setCurrentIndex(2)
+    for sample in ("fringe_sample.csv", "fringe_interferometer_sample.csv"):
+        presenter.import_file(samples_dir / sample)
+        _settle(plots.lissajous)
+        curves = (plots.liss_raw, plots.liss_ellipse, plots.liss_ideal)
+        assert all(len(c.getData()[0]) for c in curves)
+        assert not _inside(plots.lissajous.getPlotItem(), curves), (sample, _inside(
+            plots.lissajous.getPlotItem(), curves))
+
+
+def _drag(plot_item, dx: float, dy: float) -> None:
+    """What a mouse drag does to a ViewBox (pyqtgraph's mouseDragEvent)."""
+    vb = plot_item.getViewBox()
+    (x0, x1), (y0, y1) = vb.viewRange()
+    vb.translateBy(x=dx * (x1 - x0), y=dy * (y1 - y0))
+    vb.sigRangeChangedManually.emit(vb.state["mouseEnabled"])
+
+
+def test_new_readings_after_file_new_are_in_view(window):
+    """File › New, then a run typed with 1/10 of the sample's amplitude: the drift per
+    period (whose top the legend had raised, turning its auto-range off) shows it."""
+    window.load_all_samples()
+    presenter = window.presenter("fringe")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    presenter.view.plot_tabs.setCurrentIndex(4)
+    plots = presenter.view.plots
+    window.show()
+    _settle(plots.drift)
+    window.new_project()
+    phase = np.arange(640) * 2 * np.pi / 64
+    cells = [(r, c, f"{v:.5f}") for r, p in enumerate(phase)
+             for c, v in enumerate((0.37 * np.sin(p) + 0.01, 0.36 * np.cos(p) - 0.02))]
+    presenter.table_model.set_cells(cells, "typed")
+    presenter.refresh()
+    _settle(plots.drift)
+    drift = (plots.drift_a1, plots.drift_b1, plots.drift_a3, plots.drift_b3)
+    assert len(plots.drift_a1.getData()[0]) >= 5
+    assert not _inside(plots.drift.getPlotItem(), drift)
+    for plot, curves in ((plots.signals, (plots.sin_points, plots.cos_points)),
+                         (plots.lissajous, (plots.liss_raw,))):
+        _settle(plot)
+        assert not _inside(plot.getPlotItem(), curves)
+
+
+def test_a_drag_is_kept_for_the_same_data_and_given_up_for_new_data(window, samples_dir,
+                                                                    tmp_path):
+    window.load_all_samples()
+    theodolite = window.presenter("theodolite")
+    window.show()
+    plot = theodolite.view.error_plot
+    _settle(plot)
+    main = plot.main_plot
+    _drag(main, 3.0, 2.0)  # the curves dragged out of sight
+    _settle(plot)
+    dragged = main.getViewBox().viewRange()
+    assert _inside(main, [plot.raw_curve])
+    theodolite._redraw()  # the same readings drawn again (a language or unit change)
+    _settle(plot)
+    assert np.allclose(main.getViewBox().viewRange(), dragged)
+    # a dropped file with other readings: in view
+    lines = (samples_dir / "theodolite_sample.csv").read_text().splitlines()
+    shifted = [lines[0]] + [f"{float(line.split(',')[0]) + 100:g}," + line.split(",", 1)[1]
+                            for line in lines[1:]]
+    other = tmp_path / "run2.csv"
+    other.write_text("\n".join(shifted) + "\n")
+    theodolite.start_import(other)
+    _settle(plot)
+    for panel, curves in ((plot.main_plot, [plot.raw_curve, plot.model_curve]),
+                          (plot.corrected_plot, [plot.corrected_curve]),
+                          (plot.residual_plot, [plot.residual_curve])):
+        assert not _inside(panel, curves)
+    # Send to positioning after a drag there: the positioning plots show the run
+    positioning = window.presenter("positioning")
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    deviation = positioning.view.deviation_plot
+    _settle(deviation)
+    _drag(deviation.plot.getPlotItem(), -4.0, 3.0)
+    window.tabs.setCurrentIndex(0)
+    assert window.send_to_positioning()
+    _settle(deviation)
+    assert not _inside(deviation.plot.getPlotItem(), deviation.curves)
+
+
+def test_print_shows_the_plots_data(window, tmp_path):
+    from PySide6.QtPrintSupport import QPrinter
+
+    window.load_all_samples()
+    window.show()
+    view = window.current.view
+    plot = view.error_plot
+    _settle(plot)
+    _drag(plot.main_plot, 5.0, 5.0)  # dragged off, same data: the screen keeps the drag …
+    _settle(plot)
+    assert _inside(plot.main_plot, [plot.raw_curve])
+    printer = QPrinter(QPrinter.PrinterMode.ScreenResolution)
+    printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+    printer.setOutputFileName(str(tmp_path / "print.pdf"))
+    window.print_to(printer)  # … the printout does not print an empty frame
+    assert not _inside(plot.main_plot, [plot.raw_curve, plot.model_curve])
+    assert (tmp_path / "print.pdf").stat().st_size > 10_000
