@@ -96,6 +96,10 @@
         <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
     </message>
     <message>
+        <source>readings per point n</source>
+        <translation>每点读数次数 n</translation>
+    </message>
+    <message>
         <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
         <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
     </message>
@@ -304,6 +308,22 @@
     <message>
         <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x).</source>
         <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。</translation>
+    </message>
+    <message>
+        <source>Repeated readings (s/√n)</source>
+        <translation>重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} encoder and autocollimator readings at each face, over the sets; ν = {dof}</source>
+        <translation>各面 {n} 次编码器与自准直仪读数的 s/√n，按测回合成；ν = {dof}</translation>
+    </message>
+    <message>
+        <source>Repeated readings at the zero face (s/√n)</source>
+        <translation>零位面的重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} readings at face {face} of set 1, shared by every set</source>
+        <translation>第 1 测回第 {face} 面 {n} 次读数的 s/√n，各测回共用</translation>
     </message>
     <message>
         <source>Repeatability (mean of {sets} sets)</source>
@@ -792,6 +812,18 @@
         <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
     </message>
     <message>
+        <source>s/√n of the {n} azimuth readings at each point, ν = {dof}</source>
+        <translation>各点 {n} 次方位角读数的 s/√n，ν = {dof}</translation>
+    </message>
+    <message>
+        <source>Repeated readings at θ₀ (s/√n)</source>
+        <translation>θ₀ 处的重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} readings at the reference point, shared by every point</source>
+        <translation>参考点 {n} 次读数的 s/√n，各点共用</translation>
+    </message>
+    <message>
         <source>Axis tilt ψ</source>
         <translation>轴倾角 ψ</translation>
     </message>
@@ -1212,6 +1244,10 @@
         <translation>毫米（直线轴）</translation>
     </message>
     <message>
+        <source>n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input &apos;Repeated readings&apos;. 1: every row is a point</source>
+        <translation>每个点（面、目标位置或 θ）连续读取 n 次：每 n 行为一个点，取平均；其 s/√n（ν = n − 1）作为 A 类分量“重复读数”计入不确定度评定。1：每行为一个点</translation>
+    </message>
+    <message>
         <source>nanometres</source>
         <translation>纳米</translation>
     </message>
@@ -1583,6 +1619,26 @@
     <message>
         <source>&amp;Copy</source>
         <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>O&amp;verlay a run…</source>
+        <translation>叠加另一次测量(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>Draw another run of this workbench against today&apos;s: a readings or project file (before/after compensation …)</source>
+        <translation>将本工作台的另一次测量与本次画在同一坐标上：读数文件或项目文件（补偿前/后 …）</translation>
+    </message>
+    <message>
+        <source>Overlay a certificate from the register…</source>
+        <translation>叠加登记册中的证书…</translation>
+    </message>
+    <message>
+        <source>Draw this instrument&apos;s earlier certificate against today&apos;s run</source>
+        <translation>将该仪器以前的证书与本次测量画在同一坐标上</translation>
+    </message>
+    <message>
+        <source>Remove the overlaid run</source>
+        <translation>移除叠加的测量</translation>
     </message>
     <message>
         <source>&amp;Paste</source>
@@ -3119,6 +3175,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
+        <source>s/√n of the {n} readings at each approach, over the runs of the target; ν = {dof}</source>
+        <translation>每次趋近 {n} 次读数的 s/√n，按该目标位置的各次循环合成；ν = {dof}</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
         <translation>正向 {n}</translation>
     </message>
@@ -4628,6 +4688,68 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>amendment {n}</source>
         <translation>第 {n} 次修订</translation>
+    </message>
+    <message>
+        <source>Overlay a run on {workbench}</source>
+        <translation>在{workbench}上叠加另一次测量</translation>
+    </message>
+    <message>
+        <source>Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)</source>
+        <translation>读数或项目 (*.csv *.txt *.xlsx *.xlsm *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Overlay a certificate</source>
+        <translation>叠加证书</translation>
+    </message>
+    <message>
+        <source>Certificate of this workbench:</source>
+        <translation>本工作台的证书：</translation>
+    </message>
+    <message>
+        <source>Cannot overlay</source>
+        <translation>无法叠加</translation>
+    </message>
+    <message>
+        <source>{workbench} has no error curve to overlay a run on.</source>
+        <translation>{workbench}没有可叠加的误差曲线。</translation>
+    </message>
+    <message>
+        <source>The register holds no certificate of {workbench}.</source>
+        <translation>登记册中没有{workbench}的证书。</translation>
+    </message>
+    <message>
+        <source>{n} readings per point, but the last point has {count} (row {row} on): add its missing readings or remove the extra ones</source>
+        <extracomment>the setting every workbench with repeated readings declares</extracomment>
+        <translation>每点 {n} 次读数，但最后一个点只有 {count} 次（自第 {row} 行起）：补齐缺少的读数或删去多余的读数</translation>
+    </message>
+    <message>
+        <source>rows {row} and {row2} are readings {j} and 1 of one point ({n} readings per point), but their &apos;{column}&apos; differs: check for a missing or extra reading</source>
+        <translation>第 {row} 行和第 {row2} 行是同一点的第 {j} 次和第 1 次读数（每点 {n} 次），但其“{column}”不同：请检查是否缺少或多出读数</translation>
+    </message>
+    <message>
+        <source>row {row}: &apos;{column}&apos; is blank, but the other readings of its point have it: give every reading of a point the same columns</source>
+        <translation>第 {row} 行：“{column}”为空，但该点的其他读数有此项：同一点的每次读数应填写相同的列</translation>
+    </message>
+    <message>
+        <source>the other run has no corrected curve to draw</source>
+        <extracomment>workbench → &quot;module:function&quot; giving the figure whose &quot;corrected&quot; series is overlaid</extracomment>
+        <translation>另一次测量没有可绘制的修正后曲线</translation>
+    </message>
+    <message>
+        <source>the {workbench} workbench has no error curve to overlay</source>
+        <translation>{workbench}工作台没有可叠加的误差曲线</translation>
+    </message>
+    <message>
+        <source>{label}: the run cannot be analysed: {reason}</source>
+        <translation>{label}：无法分析该次测量：{reason}</translation>
+    </message>
+    <message>
+        <source>{label} holds no readings of the {workbench} workbench</source>
+        <translation>{label} 中没有{workbench}工作台的读数</translation>
+    </message>
+    <message>
+        <source>other run: {name}</source>
+        <translation>另一次测量：{name}</translation>
     </message>
 </context>
 </TS>
