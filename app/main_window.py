@@ -30,6 +30,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.certificate_presenter import CertificatePresenter
+from app.run_overlay_actions import RunOverlayActions
 from models import __version__
 from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS, AngleUnit
@@ -194,6 +195,17 @@ class MainWindow(QMainWindow):
             file_menu, tr("Send to &positioning"), self.send_to_positioning,
             tip=tr("Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
                    "readings are replaced; Edit > Undo there restores them)"))
+        self.run_overlays = RunOverlayActions(self)
+        self.overlay_action = self._action(
+            file_menu, tr("O&verlay a run…"), lambda: self.run_overlays.overlay_file(),
+            tip=tr("Draw another run of this workbench against today's: a readings or project "
+                   "file (before/after compensation …)"))
+        self.overlay_record_action = self._action(
+            file_menu, tr("Overlay a certificate from the register…"),
+            lambda: self.run_overlays.overlay_record(),
+            tip=tr("Draw this instrument's earlier certificate against today's run"))
+        self.remove_overlay_action = self._action(
+            file_menu, tr("Remove the overlaid run"), lambda: self.run_overlays.remove())
         file_menu.addSeparator()
         self.print_action = self._action(
             file_menu, tr("&Print…"), self.print_dialog, QKeySequence.StandardKey.Print,

@@ -12,11 +12,19 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from openpyxl import load_workbook
 from pypdf import PdfReader
 
 from app.writers.certificate_pdf import certificate_pdf_bytes, font_files
-from app.writers.results_export import neutralise, results_csv_bytes, results_xlsx_bytes
+from app.writers.results_export import (
+    neutralise,
+    results_csv_bytes,
+    results_xlsx_bytes,
+    split_figures,
+)
+from models.certificate.document import Table
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
@@ -230,3 +238,113 @@ def test_a_bilingual_certificate_has_chinese_headings_beside_the_english(samples
     assert "校准证书" not in english and "Calibration certificate" in english
     with pytest.raises(MetadataError, match="'language' must be one of en, zh, zh\\+en"):
         CertificateMetadata.from_dict({"language": "fr"})
+
+
+# -- XLSX a spreadsheet can calculate with (issue 31, item 8) ---------------------------------
+
+def _sheet_rows(book, title):
+    return [list(r) for r in book[title].iter_rows(values_only=True)]
+
+
+def _row_named(rows, name):
+    return next(r for r in rows if r[0] == name)
+
+
+def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
+    """The theodolite's set-up figures and statistics come out as numbers equal to the
+    result (to the certificate's printed resolution), units in the headers, negatives
+    without an apostrophe."""
+    kind, result = _analysed("theodolite")
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(kind.certificate_document(result, META))))
+    params = _sheet_rows(book, "Parameters")
+    header = params[0]
+    assert header[:2] == ["Parameter", "Value"] and "Value: unit" in header
+    psi = _row_named(params, "Axis tilt ψ")
+    assert isinstance(psi[1], float) and psi[1] == pytest.approx(
+        result.identification.setup.psi_deg, abs=5e-6)
+    assert psi[header.index("Value: unit")] == "°"
+    beta = _row_named(params, "Mirror normal β")
+    assert beta[1] < 0 and beta[1] == pytest.approx(result.identification.setup.beta_deg, abs=5e-6)
+    rms = _row_named(params, "Residual RMS")
+    assert rms[1] == pytest.approx(result.identification.residual_rms_arcsec, abs=5e-4)
+    stats = _sheet_rows(book, "Statistics")
+    assert stats[0][:4] == ["Quantity", "Value", "Value (to | U)", "Value: unit"]
+    corrected = _row_named(stats, "Corrected error")
+    assert corrected[1] == pytest.approx(result.corrected_stats.min, abs=5e-3) and corrected[1] < 0
+    assert corrected[2] == pytest.approx(result.corrected_stats.max, abs=5e-3)
+    assert _row_named(stats, "Points")[1] == result.theta_deg.size
+    budget = _sheet_rows(book, "Uncertainty budget")
+    combined = _row_named(budget, "Combined standard u_c")
+    column = budget[0].index("c·u (\")")
+    doc = kind.certificate_document(result, META)
+    assert combined[column] == pytest.approx(
+        doc.budget.combined_arcsec[doc.budget.worst_index], abs=5e-4)
+
+
+@pytest.mark.parametrize("key", sorted(KINDS))
+def test_no_figure_is_left_as_text_and_no_number_has_an_apostrophe(key):
+    kind, result = _analysed(key)
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(
+        kind.certificate_document(result, _meta(key)))))
+    numbers = 0
+    for title in ("Parameters", "Statistics", "Uncertainty budget"):
+        for row in _sheet_rows(book, title)[1:]:
+            for cell in row:
+                if isinstance(cell, str):
+                    assert split_figures(cell) is None, (title, cell)
+                    assert not re.match(r"'[+\-]?[\d.]", cell), (title, cell)
+                numbers += isinstance(cell, int | float)
+    assert numbers > 10
+
+
+def test_text_cells_that_look_like_formulas_stay_neutralised_in_every_sheet():
+    kind, result = _analysed("theodolite")
+    doc = kind.certificate_document(result, META)
+    hostile = ("=HYPERLINK(\"http://x\")", "+1+2", "-2+3", "@SUM(A1)", "-cmd|' /C calc'!A0")
+    table = Table("Parameters", ("Parameter", "Value", "U"),
+                  [(h, h, "-1.5 V") for h in hostile] + [("ok", "-0.01782 V", "")])
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(replace(doc, parameters=table,
+                                                               statistics=table))))
+    for title in ("Parameters", "Statistics"):
+        rows = _sheet_rows(book, title)
+        for h, row in zip(hostile, rows[1:], strict=False):
+            assert row[0] == "'" + h and row[1] == "'" + h
+            assert row[2] == -1.5
+        assert rows[0] == ["Parameter", "Value (V)", "U (V)"]
+        assert rows[-1][:2] == ["ok", -0.01782]
+    for ws in book.worksheets:
+        assert all(cell.data_type != "f" for row in ws.iter_rows() for cell in row)
+
+
+_UNITS_PRINTED = ("", " V", " mV", "\"", "°", " nm", " rad", "%")  # angles stay in "
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(-1e6, 1e6, allow_nan=False), st.integers(0, 6),
+                          st.sampled_from(_UNITS_PRINTED), st.text(max_size=20)),
+                min_size=1, max_size=8))
+def test_xlsx_figures_round_trip_and_text_stays_safe(cells):
+    """Any printed figure comes back as the number it prints; any other text is either
+    harmless as it is or carries the apostrophe, and no cell is a formula."""
+    kind, result = _THEODOLITE
+    doc = kind.certificate_document(result, META)
+    rows = [(f"p{i}", f"{x:+.{d}f}{unit}", text) for i, (x, d, unit, text) in enumerate(cells)]
+    table = Table("Parameters", ("Parameter", "Value", "Note"), rows)
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(replace(doc, parameters=table))))
+    sheet = _sheet_rows(book, "Parameters")
+    header = sheet[0]
+    for (x, d, unit, _text), row in zip(cells, sheet[1:], strict=True):
+        assert row[1] == float(f"{x:+.{d}f}")
+        if "Value: unit" in header:
+            assert (row[header.index("Value: unit")] or "") == unit.strip()
+        else:
+            assert header[1] == ("Value" if not unit.strip() else f"Value ({unit.strip()})")
+    for row in sheet:
+        for cell in row:
+            if isinstance(cell, str):
+                assert not cell.startswith(("=", "+", "-", "@", "\t", "\r")), cell
+    for ws in book.worksheets:
+        assert all(cell.data_type != "f" for row in ws.iter_rows() for cell in row)
+
+
+_THEODOLITE = _analysed("theodolite")

@@ -34,6 +34,7 @@ class ReadingsTableView(QTableView):
         self.nominal_column: int | None = None  # filled from the step as rows are added
         self.entry_column = 0  # where a row's readings begin
         self.nominal_step = 0.0  # 0: off
+        self.readings_per_point = 1  # n readings of a point: the nominal advances every n rows
         self._setup_ui()
         # after the view's own handling: the edit is committed and the editor closed
         self.itemDelegate().closeEditor.connect(self._editor_closed)
@@ -84,7 +85,8 @@ class ReadingsTableView(QTableView):
             except ValueError:
                 value = None
             if value is not None and not below:
-                model.set_cells([(row + 1, nominal, f"{value + self.nominal_step:.10g}")],
+                step = self.nominal_step if self._point_complete(row, text) else 0.0
+                model.set_cells([(row + 1, nominal, f"{value + step:.10g}")],
                                 tr("Next nominal"))
         # with a step the nominal is filled in: its first reading; without one the
         # technician types the nominal too: the row's first column
@@ -93,6 +95,16 @@ class ReadingsTableView(QTableView):
         target = model.index(row + 1, column)
         self.setCurrentIndex(target)
         self.scrollTo(target)
+
+    def _point_complete(self, row: int, text: str) -> bool:
+        """Whether ``row`` is the last of its point's ``readings_per_point`` readings (the rows
+        above it with the same nominal text, counted back to the first that differs)."""
+        sheet = self.readings_model().sheet
+        count = 1
+        while count < self.readings_per_point and row - count >= 0 and \
+                sheet.text(row - count, self.nominal_column).strip() == text:
+            count += 1
+        return count >= self.readings_per_point
 
     def readings_model(self) -> ReadingsTableModel:
         model = self.model()

@@ -253,6 +253,7 @@ class WorkbenchPresenter(QObject):
     def set_settings(self, settings: dict[str, Any]) -> None:
         self._settings = self.kind.settings_with_defaults(settings)
         self.view.set_settings(self._settings)
+        self._readings_per_point()
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
@@ -260,9 +261,15 @@ class WorkbenchPresenter(QObject):
     def settings_edited(self) -> None:
         """The user changed a set-up field."""
         self._settings.update(self.view.settings_values())
+        self._readings_per_point()
         self._settings_modified = True
         self._emit_modified()
         self.schedule_refresh()
+
+    def _readings_per_point(self) -> None:
+        """Typed entry fills a point's nominal n times when n readings make a point."""
+        self.view.table.readings_per_point = max(1, int(self._settings.get("readings_per_point",
+                                                                           1) or 1))
 
     @property
     def is_modified(self) -> bool:

@@ -52,7 +52,7 @@ ARCSEC = ANGLE_UNITS["arcsec"]
 _UNIT = r"(?:\"|″|°|%|µrad|μrad|urad|mdeg|arcsec|deg|rad|mV|V|nm|µm|μm|um|mm)"
 _FIGURE = re.compile(r"\s*([+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?)\s?(" + _UNIT + r")?\s*")
 # what joins two figures in one cell, and what the two columns it becomes are called
-_JOINS = {" … ": ("from", "to"), " ± ": ("value", "U"), " / ": ("first", "second")}
+_JOINS = {" … ": ("from", "to"), " ± ": ("", "U"), " / ": ("first", "second")}
 
 
 def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
@@ -96,12 +96,14 @@ def _figure_columns(header: tuple[str, ...],
         count = max(len(f[0]) for f in found)
         joins = {f[2] for f in found if f[2]}
         units = {f[1] for f in found}
+        # one kind of join: its two names; several (ranges and value ± U in one column):
+        # the first column is the value or the range's start, the second says what it holds
         labels = (_JOINS[joins.pop()] if len(joins) == 1 else
-                  tuple(f"{i + 1}" for i in range(count)))
+                  ("", " | ".join(_JOINS[j][1] for j in _JOINS if j in joins)))
         unit = units.pop() if len(units) == 1 else None
         base = name or "Value"
         for i in range(count):
-            title = base if count == 1 else f"{base} ({labels[i]})"
+            title = base if count == 1 or not labels[i] else f"{base} ({labels[i]})"
             out_header.append(f"{title} ({unit})" if unit else title)
         if unit is None:
             out_header.append(f"{base}: unit")

@@ -5850,5 +5850,127 @@ Issue a certificate on this result anyway? Only if you have checked the readings
             <source>Link axis:</source>
             <translation>联动坐标轴：</translation>
         </message>
+        <message>
+            <source>readings per point n</source>
+            <translation>每点读数次数 n</translation>
+        </message>
+        <message>
+            <source>Repeated readings (s/√n)</source>
+            <translation>重复读数（s/√n）</translation>
+        </message>
+        <message>
+            <source>s/√n of the {n} encoder and autocollimator readings at each face, over the sets; ν = {dof}</source>
+            <translation>各面 {n} 次编码器与自准直仪读数的 s/√n，按测回合成；ν = {dof}</translation>
+        </message>
+        <message>
+            <source>Repeated readings at the zero face (s/√n)</source>
+            <translation>零位面的重复读数（s/√n）</translation>
+        </message>
+        <message>
+            <source>s/√n of the {n} readings at face {face} of set 1, shared by every set</source>
+            <translation>第 1 测回第 {face} 面 {n} 次读数的 s/√n，各测回共用</translation>
+        </message>
+        <message>
+            <source>s/√n of the {n} azimuth readings at each point, ν = {dof}</source>
+            <translation>各点 {n} 次方位角读数的 s/√n，ν = {dof}</translation>
+        </message>
+        <message>
+            <source>Repeated readings at θ₀ (s/√n)</source>
+            <translation>θ₀ 处的重复读数（s/√n）</translation>
+        </message>
+        <message>
+            <source>s/√n of the {n} readings at the reference point, shared by every point</source>
+            <translation>参考点 {n} 次读数的 s/√n，各点共用</translation>
+        </message>
+        <message>
+            <source>n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input 'Repeated readings'. 1: every row is a point</source>
+            <translation>每个点（面、目标位置或 θ）连续读取 n 次：每 n 行为一个点，取平均；其 s/√n（ν = n − 1）作为 A 类分量“重复读数”计入不确定度评定。1：每行为一个点</translation>
+        </message>
+        <message>
+            <source>O&amp;verlay a run…</source>
+            <translation>叠加另一次测量(&amp;V)…</translation>
+        </message>
+        <message>
+            <source>Draw another run of this workbench against today's: a readings or project file (before/after compensation …)</source>
+            <translation>将本工作台的另一次测量与本次画在同一坐标上：读数文件或项目文件（补偿前/后 …）</translation>
+        </message>
+        <message>
+            <source>Overlay a certificate from the register…</source>
+            <translation>叠加登记册中的证书…</translation>
+        </message>
+        <message>
+            <source>Draw this instrument's earlier certificate against today's run</source>
+            <translation>将该仪器以前的证书与本次测量画在同一坐标上</translation>
+        </message>
+        <message>
+            <source>Remove the overlaid run</source>
+            <translation>移除叠加的测量</translation>
+        </message>
+        <message>
+            <source>s/√n of the {n} readings at each approach, over the runs of the target; ν = {dof}</source>
+            <translation>每次趋近 {n} 次读数的 s/√n，按该目标位置的各次循环合成；ν = {dof}</translation>
+        </message>
+        <message>
+            <source>Overlay a run on {workbench}</source>
+            <translation>在{workbench}上叠加另一次测量</translation>
+        </message>
+        <message>
+            <source>Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)</source>
+            <translation>读数或项目 (*.csv *.txt *.xlsx *.xlsm *.json);;所有文件 (*)</translation>
+        </message>
+        <message>
+            <source>Overlay a certificate</source>
+            <translation>叠加证书</translation>
+        </message>
+        <message>
+            <source>Certificate of this workbench:</source>
+            <translation>本工作台的证书：</translation>
+        </message>
+        <message>
+            <source>Cannot overlay</source>
+            <translation>无法叠加</translation>
+        </message>
+        <message>
+            <source>{workbench} has no error curve to overlay a run on.</source>
+            <translation>{workbench}没有可叠加的误差曲线。</translation>
+        </message>
+        <message>
+            <source>The register holds no certificate of {workbench}.</source>
+            <translation>登记册中没有{workbench}的证书。</translation>
+        </message>
+        <message>
+            <source>{n} readings per point, but the last point has {count} (row {row} on): add its missing readings or remove the extra ones</source>
+            <extracomment>the setting every workbench with repeated readings declares</extracomment>
+            <translation>每点 {n} 次读数，但最后一个点只有 {count} 次（自第 {row} 行起）：补齐缺少的读数或删去多余的读数</translation>
+        </message>
+        <message>
+            <source>rows {row} and {row2} are readings {j} and 1 of one point ({n} readings per point), but their '{column}' differs: check for a missing or extra reading</source>
+            <translation>第 {row} 行和第 {row2} 行是同一点的第 {j} 次和第 1 次读数（每点 {n} 次），但其“{column}”不同：请检查是否缺少或多出读数</translation>
+        </message>
+        <message>
+            <source>row {row}: '{column}' is blank, but the other readings of its point have it: give every reading of a point the same columns</source>
+            <translation>第 {row} 行：“{column}”为空，但该点的其他读数有此项：同一点的每次读数应填写相同的列</translation>
+        </message>
+        <message>
+            <source>the other run has no corrected curve to draw</source>
+            <extracomment>workbench → "module:function" giving the figure whose "corrected" series is overlaid</extracomment>
+            <translation>另一次测量没有可绘制的修正后曲线</translation>
+        </message>
+        <message>
+            <source>the {workbench} workbench has no error curve to overlay</source>
+            <translation>{workbench}工作台没有可叠加的误差曲线</translation>
+        </message>
+        <message>
+            <source>{label}: the run cannot be analysed: {reason}</source>
+            <translation>{label}：无法分析该次测量：{reason}</translation>
+        </message>
+        <message>
+            <source>{label} holds no readings of the {workbench} workbench</source>
+            <translation>{label} 中没有{workbench}工作台的读数</translation>
+        </message>
+        <message>
+            <source>other run: {name}</source>
+            <translation>另一次测量：{name}</translation>
+        </message>
     </context>
 </TS>
