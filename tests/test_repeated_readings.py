@@ -210,6 +210,8 @@ def test_polygon_noisy_repeats_per_face(samples_dir):
     np.testing.assert_allclose(component.value_arcsec,
                                np.sqrt(np.sum(per_set**2, axis=0)) / len(per_set), atol=2e-5)
     assert component.dof == n - 1
+    single = _analyse(kind, rows)
+    assert result.closure_rows == {r for c in single.closure_rows for r in (2 * c, 2 * c + 1)}
     zero = _component(budget, "Repeated readings at the zero face (s/√n)")
     assert zero.value_arcsec == pytest.approx(per_set[0, result.zero_face - 1], abs=2e-5)
 

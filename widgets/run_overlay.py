@@ -16,6 +16,7 @@ from PySide6.QtCore import Qt
 from models.display_units import figure_in_unit
 from models.run_overlay import OverlayRun
 from widgets.i18n import on_language_change, tr
+from widgets.legend_placement import place_legend
 
 __all__ = ["OVERLAY_PEN", "RunOverlay"]
 
@@ -30,6 +31,7 @@ class RunOverlay:
         self.run: OverlayRun | None = None
         self.curve = pg.PlotDataItem(pen=OVERLAY_PEN, symbol="t", symbolSize=6,
                                      symbolBrush="#e67e22", symbolPen=None)
+        self.curve.setZValue(-1)  # today's run is drawn over the other
         presenter.analysed.connect(self.redraw)  # a new unit or language redraws the result
         on_language_change(presenter.view, self.redraw)
 
@@ -63,6 +65,7 @@ class RunOverlay:
         self.plot.removeItem(self.curve)
         self.curve.setData([], [])
         self.run = None
+        place_legend(self.plot, self.legend)
 
     def redraw(self) -> None:
         if self.run is None:
@@ -74,6 +77,7 @@ class RunOverlay:
         if label is not None:
             label.setText(self.name())
         self._fit_y()
+        place_legend(self.plot, self.legend)
 
     def _fit_y(self) -> None:
         """Both curves in view: the y range widened (never narrowed) to hold the overlay."""

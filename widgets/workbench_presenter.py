@@ -268,8 +268,8 @@ class WorkbenchPresenter(QObject):
 
     def _readings_per_point(self) -> None:
         """Typed entry fills a point's nominal n times when n readings make a point."""
-        self.view.table.readings_per_point = max(1, int(self._settings.get("readings_per_point",
-                                                                           1) or 1))
+        self.view.set_readings_per_point(max(1, int(self._settings.get("readings_per_point", 1)
+                                                    or 1)))
 
     @property
     def is_modified(self) -> bool:

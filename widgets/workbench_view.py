@@ -194,6 +194,10 @@ class WorkbenchView(QWidget):
         self.step_label.setVisible(nominal is not None)
         self.step.setVisible(nominal is not None)
 
+    def set_readings_per_point(self, n: int) -> None:
+        """Typed entry fills a point's nominal value n times (n readings make a point)."""
+        self.table.readings_per_point = n
+
     def set_next_row(self, text: str) -> None:
         self.next_label.setText(text)
 

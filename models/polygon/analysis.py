@@ -323,6 +323,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     warnings: list[str] = []
     sets, faces, counting, closure_rows = _read_sets(
         parsed, s["faces"], COUNTING_CHOICES[str(s["counting"])], warnings)
+    if repeats is not None:  # every reading of a closure point is a closure row
+        groups = {int(g[0]): g for g in repeats.rows}
+        closure_rows = {int(r) for c in closure_rows for r in groups[c]}
     if s["zero_face"] > faces:
         raise SettingsError(message(
             QT_TR_NOOP("zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}"),
