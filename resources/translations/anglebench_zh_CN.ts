@@ -359,7 +359,7 @@
     </message>
     <message>
         <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator&apos;s vertical along the shaft); the pyramidal correction is that set-up&apos;s, by exact 3-D rotation: the polygon&apos;s own term plus the autocollimator&apos;s roll times the vertical reading&apos;s change.</source>
-        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确三维旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
+        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
     </message>
     <message>
         <source>Set-up assumed: seed 001&apos;s frame (the autocollimator&apos;s vertical along the polygon&apos;s axis, not the shaft&apos;s); the pyramidal correction is the seed&apos;s eqs 3–7.</source>
