@@ -167,7 +167,7 @@ def test_the_method_validation_in_chinese(tmp_path, capsys):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100", "--language", "zh_CN"]) == 0
     lines = capsys.readouterr().out.splitlines()
-    assert re.fullmatch(r"2\d 个通过，0 个未通过", lines[-1]), lines[-1]
+    assert re.fullmatch(r"[2-9]\d 个通过，0 个未通过", lines[-1]), lines[-1]
     for line in lines[:-1]:  # every case: verdict, workbench and name in Chinese
         assert line.startswith("通过  ") and CJK.search(line.split("：", 1)[1]), line
     document = pdfium.PdfDocument(io.BytesIO(out.read_bytes()))

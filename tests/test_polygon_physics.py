@@ -1,4 +1,5 @@
-"""The polygon workbench against an exact 3-D simulation of the test (tests/rigs).
+"""The polygon workbench against an exact 3-D simulation of the test
+(models/validation/polygon_rig.py: a levelled bench unless frame="polygon").
 
 The rig rotates face normals about a tilted axis and reads them as an
 autocollimator and an encoder would; it imports nothing from ``models``. A
