@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import serial
 
+from models.messages import QT_TR_NOOP, message
+
 __all__ = ["CaptureError", "open_link", "serial_url"]
 
 #: a read returns after this long without bytes, so the worker can look up and stop
@@ -28,7 +30,8 @@ def open_link(port: str, baud: int) -> serial.SerialBase:
         return serial.serial_for_url(serial_url(port), baudrate=baud, timeout=READ_TIMEOUT_S,
                                      write_timeout=1.0)
     except (serial.SerialException, OSError, ValueError) as exc:
-        raise CaptureError(f"{port}: cannot open ({_reason(exc)})") from None
+        raise CaptureError(message(QT_TR_NOOP("{port}: cannot open ({reason})"), port=port,
+                                   reason=_reason(exc))) from None
 
 
 def _reason(exc: BaseException) -> str:

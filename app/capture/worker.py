@@ -24,6 +24,7 @@ from app.capture.instruments import Instrument
 from app.capture.link import CaptureError, open_link
 from models.capture.errors import FrameError
 from models.capture.framing import LineFramer
+from models.messages import QT_TR_NOOP, message
 
 __all__ = ["CaptureWorker", "Fault", "Reading"]
 
@@ -40,6 +41,7 @@ class Reading:
 
 @dataclass(frozen=True)
 class Fault:
+    #: a :class:`models.messages.Message`: English as a ``str``, translatable
     message: str
     final: bool
 
@@ -86,7 +88,7 @@ class CaptureWorker:
             except CaptureError as exc:
                 failures += 1
                 final = failures > self.retries
-                self.events.put(Fault(str(exc), final))
+                self.events.put(Fault(exc.args[0], final))
                 if final:
                     return
                 self._stop.wait(self.retry_pause_s * failures)
@@ -159,15 +161,21 @@ class CaptureWorker:
                     last_good = now
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line))
                 if now - last_good > self.silence_s:
+                    seconds = f"{self.silence_s:g}"
                     if not heard_bytes:
-                        what = f"no answer for {self.silence_s:g} s"
+                        what = message(QT_TR_NOOP("{port}: no answer for {seconds} s"),
+                                       port=self.port, seconds=seconds)
                     elif not last_refusal or last_refusal.startswith("not text"):
-                        what = (f"only unreadable bytes for {self.silence_s:g} s (a wrong baud "
-                                f"rate? {self.baud} was used)")
+                        what = message(QT_TR_NOOP("{port}: only unreadable bytes for {seconds} s "
+                                                  "(a wrong baud rate? {baud} was used)"),
+                                       port=self.port, seconds=seconds, baud=self.baud)
                     else:
-                        what = f"no valid reading for {self.silence_s:g} s (last: {last_refusal})"
-                    raise _LinkLost(f"{self.port}: {what}", got)
+                        what = message(QT_TR_NOOP("{port}: no valid reading for {seconds} s "
+                                                  "(last: {reason})"), port=self.port,
+                                       seconds=seconds, reason=last_refusal)
+                    raise _LinkLost(what, got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]
-            raise _LinkLost(f"{self.port}: the link dropped ({reason})", got) from None
+            raise _LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
+                                    port=self.port, reason=reason), got) from None
         return got
