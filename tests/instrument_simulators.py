@@ -220,6 +220,7 @@ class TheodoliteSimulator(_Simulator):
         # sigma in arcseconds on each angle
         hz, v = (math.radians(d + (self.rng.gauss(0.0, self.sigma) / 3600.0 if self.sigma else 0.0))
                  for d in self.position())
+        hz %= 2 * math.pi  # the horizontal circle reads 0 to 2π
         bad = self.invalid_now()
         self._frames += 1
         rc = 1284 if bad else 0

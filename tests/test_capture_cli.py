@@ -134,3 +134,34 @@ def test_the_console_command_in_chinese(tmp_path):
     assert done.returncode == 0, done.stderr
     assert len(rows_of(tmp_path / "r.csv")) == 4
     assert done.stderr.strip() == f"3 个读数已写入 {tmp_path / 'r.csv'}"
+
+
+def test_a_theodolite_settled_across_zero_azimuth_reads_where_it_is(tmp_path):
+    """Hz noise of 2" around 0°: the frames read 359.999…° and 0.000…°; the gated reading
+    is their mean near 0° (or just under 360°), never 180°."""
+    out = tmp_path / "zero.csv"
+    with TheodoliteSimulator("pty", positions=[(0.0, 90.0)], sigma=2.0) as sim:
+        assert main(["capture", "theodolite", sim.port, "--readings", "1", "--stable", "20",
+                     "--dwell", "0.1", "--timeout", "5", "--out", str(out), *FAST]) == 0
+    hz, v = (float(x) for x in rows_of(out)[1][1:])
+    assert min(hz, 360.0 - hz) * 3600 < 3.0 and abs(v - 90.0) * 3600 < 3.0
+    assert sim.sent and any(h > 180 for h, _ in sim.sent if h) and any(h < 180 for h, _ in sim.sent)
+
+
+def test_the_raw_record_traces_every_reading_to_the_instruments_line(tmp_path):
+    out, raw = tmp_path / "ac.csv", tmp_path / "ac.raw.csv"
+    with AutocollimatorSimulator("pty", faults=("invalid_axes",), positions=[(4.0, -2.5)],
+                                 sigma=0.3) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "20", "--out", str(out),
+                     "--raw", str(raw), *FAST]) == 0
+    readings = rows_of(out)[1:]
+    lines = rows_of(raw)
+    assert lines[0] == ["time_s", "reading", "line"]
+    used = [r for r in lines[1:] if r[1] == "1"]
+    assert [r[0] for r in used][:20] == [r[0] for r in readings]
+    for (_, x, y), (_, _, line) in zip(readings, used, strict=False):
+        assert line.split()[2:] == [f"{float(x):.3f}", f"{float(y):.3f}"]
+    refused = [r[2] for r in lines[1:] if r[1] == "0"]
+    assert refused and all(r.split()[1] in ("001", "002", "000") for r in refused)
+    # the record holds the frames the simulator sent, in order, none left out
+    assert [r[1] == "1" for r in lines[1:]] == [None not in f for f in sim.sent[:len(lines) - 1]]

@@ -79,8 +79,25 @@ def _parser(words) -> argparse.ArgumentParser:
         "reconnections in a row without a reading before giving up (default 3)")))
     p.add_argument("--timeout", type=_positive(words), metavar="SECONDS",
                    help=words(QT_TR_NOOP("give up after this long (default: never)")))
+    p.add_argument("--raw", metavar="RAW.csv", help=words(QT_TR_NOOP(
+        "also write every line the instrument sent, time-stamped, and whether it became a "
+        "reading (the readings' trace to the instrument's own output)")))
     add_language_option(p, words)
     return p
+
+
+def _raw_text(lines: list[tuple[float, bytes, bool]]) -> str:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(("time_s", "reading", "line"))
+    writer.writerows((repr(round(t, 6)), int(used), line.decode("ascii", "backslashreplace"))
+                     for t, line, used in lines)
+    return buffer.getvalue()
+
+
+def _wrapped(difference: float, scale: float) -> float:
+    """An angle's difference (degrees) to ±180° when ``scale`` says the values are angles."""
+    return (difference + 180.0) % 360.0 - 180.0 if scale != 1.0 else difference
 
 
 def _partial_path(out: str) -> Path:
@@ -117,8 +134,11 @@ def run_capture(argv: list[str]) -> int:
         instrument = INSTRUMENTS[args.instrument]()
     columns = instrument.columns
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
-    # the gate's window is in arcseconds for angles in degrees
+    # the gate's window is in arcseconds for angles in degrees; a theodolite's angles go to
+    # the gate as their difference from the first frame's, wrapped to ±180°, so a position
+    # at 0°/360° settles (and averages) where it is
     scale = 3600.0 if args.instrument == "theodolite" else 1.0
+    origin: tuple[float, ...] | None = None
     rows: list[list[object]] = []
     worker = CaptureWorker(args.port, instrument, args.baud, silence_s=args.silence,
                            retries=max(args.retries, 0)).start()
@@ -146,10 +166,14 @@ def run_capture(argv: list[str]) -> int:
             if gate is None:
                 rows.append([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
                 continue
-            taken = gate.feed(event.time_s, [v * scale for v in event.values])
+            origin = origin or (event.values if scale != 1.0 else (0.0,) * len(event.values))
+            taken = gate.feed(event.time_s, [_wrapped(v - o, scale) * scale
+                                             for v, o in zip(event.values, origin, strict=True)])
             if taken is not None:
-                rows.append([repr(round(taken.time_s, 6)),
-                             *(repr(float(v) / scale) for v in taken.mean), *unit])
+                means = [o + float(v) / scale for v, o in zip(taken.mean, origin, strict=True)]
+                if scale != 1.0:
+                    means = [m % 360.0 for m in means]
+                rows.append([repr(round(taken.time_s, 6)), *map(repr, means), *unit])
     except KeyboardInterrupt:
         failure = message(QT_TR_NOOP("{port}: interrupted"), port=args.port)
     finally:
@@ -159,12 +183,17 @@ def run_capture(argv: list[str]) -> int:
         say(message(QT_TR_NOOP("anglebench capture: {reason}; no reading was taken"),
                     reason=failure))
         return EXIT_BAD_INPUT
-    try:
-        write_text_atomic(target, _csv_text(columns, rows))
-    except OSError as exc:
-        say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}"),
-                    path=str(target), reason=exc.strerror or str(exc)))
-        return 1
+    writes = [(target, _csv_text(columns, rows))]
+    if args.raw:
+        raw_target = Path(args.raw) if failure is None else _partial_path(args.raw)
+        writes.append((raw_target, _raw_text(worker.raw)))
+    for path, text in writes:
+        try:
+            write_text_atomic(path, text)
+        except OSError as exc:
+            say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}"),
+                        path=str(path), reason=exc.strerror or str(exc)))
+            return 1
     if failure is not None:
         say(message(QT_TR_NOOP("anglebench capture: {reason}; the {n} readings taken are in "
                                "{path}"), reason=failure, n=len(rows), path=str(target)))

@@ -62,6 +62,9 @@ class CaptureWorker:
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
         self.refused = 0
         self.refusals: list[str] = []
+        #: every line the instrument sent, as sent: (seconds since the start, the line,
+        #: whether it became a reading); appended by the worker thread only
+        self.raw: list[tuple[float, bytes, bool]] = []
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"capture {port}", daemon=True)
         self._t0 = time.monotonic()
@@ -148,6 +151,7 @@ class CaptureWorker:
                     try:
                         parsed = instrument.values(line)
                     except FrameError as exc:
+                        self.raw.append((now - self._t0, line, False))
                         self.refused += 1
                         last_refusal = str(exc)
                         if len(self.refusals) < 20:
@@ -155,6 +159,7 @@ class CaptureWorker:
                         asked_at = None
                         continue
                     asked_at = None
+                    self.raw.append((now - self._t0, line, parsed is not None))
                     if parsed is None:
                         continue
                     got += 1

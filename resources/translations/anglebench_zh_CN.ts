@@ -4568,6 +4568,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>超过此时长即放弃（默认：不限）</translation>
     </message>
     <message>
+        <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings&apos; trace to the instrument&apos;s own output)</source>
+        <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
+    </message>
+    <message>
         <source>anglebench capture: --stable and --dwell go together</source>
         <translation>anglebench capture：--stable 与 --dwell 须同时给出</translation>
     </message>
