@@ -4568,6 +4568,86 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>超过此时长即放弃（默认：不限）</translation>
     </message>
     <message>
+        <source>&amp;Instrument</source>
+        <translation>仪器(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Connect…</source>
+        <translation>连接(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Allan deviation (first axis): {figures}</source>
+        <translation>阿伦偏差（第一轴）：{figures}</translation>
+    </message>
+    <message>
+        <source>Autocollimator (ELCOMAT kind)</source>
+        <translation>自准直仪（ELCOMAT 类）</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Connect to an instrument</source>
+        <translation>连接仪器</translation>
+    </message>
+    <message>
+        <source>Connected: {port}</source>
+        <translation>已连接：{port}</translation>
+    </message>
+    <message>
+        <source>Connecting to {port}…</source>
+        <translation>正在连接 {port}…</translation>
+    </message>
+    <message>
+        <source>Connect…</source>
+        <translation>连接…</translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation>仪器</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <source>Readout (one line per reading)</source>
+        <translation>数显表（每个读数一行）</translation>
+    </message>
+    <message>
+        <source>Spread over the last second: {spread}{unit}</source>
+        <translation>最近一秒内的离散：{spread}{unit}</translation>
+    </message>
+    <message>
+        <source>Take reading (F9)</source>
+        <translation>取读数 (F9)</translation>
+    </message>
+    <message>
+        <source>Take reading (row {row})</source>
+        <translation>取读数（第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>Theodolite (Leica GeoCOM)</source>
+        <translation>经纬仪（徕卡 GeoCOM）</translation>
+    </message>
+    <message>
+        <source>factory setting</source>
+        <translation>出厂设置</translation>
+    </message>
+    <message>
+        <source>{reason} (reconnecting)</source>
+        <translation>{reason}（正在重新连接）</translation>
+    </message>
+    <message>
+        <source>This workbench has no column for this instrument&apos;s reading: choose a cell first (readout) or another workbench</source>
+        <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
+    </message>
+    <message>
         <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings&apos; trace to the instrument&apos;s own output)</source>
         <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
     </message>
