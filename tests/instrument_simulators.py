@@ -39,7 +39,7 @@ class _Simulator:
 
     def __init__(self, transport: str = "pty", faults: tuple[str, ...] = (),
                  positions=((0.0, 0.0),), hold_s: float = 1e9, sigma: float = 0.0,
-                 disconnect_after: int = 5, gap_s: float = 0.4, rate_hz: float = 250.0,
+                 disconnect_after: int = 5, gap_s: float = 0.3, rate_hz: float = 250.0,
                  seed: int = 34) -> None:
         self.transport, self.faults = transport, set(faults)
         self.positions, self.hold_s, self.sigma = list(positions), hold_s, sigma

@@ -13,7 +13,7 @@ import pytest
 from app.main import main
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator, TheodoliteSimulator
 
-FAST = ["--silence", "0.3", "--retries", "1"]
+FAST = ["--silence", "0.2", "--retries", "1"]
 
 
 def rows_of(path):
@@ -35,14 +35,14 @@ def test_autocollimator_readings_to_csv(tmp_path, capsys):
 
 
 def test_stability_gated_readings_of_a_set_of_positions(tmp_path):
-    """Four positions held 0.4 s each with 0.05" noise: one reading per position, the mean
-    of a 0.15 s dwell, within 0.05" of where the instrument really was; the frames while
+    """Four positions held 0.3 s each with 0.05" noise: one reading per position, the mean
+    of a 0.1 s dwell, within 0.05" of where the instrument really was; the frames while
     it moves never give a reading."""
     positions = [(100.0, 5.0), (200.0, 5.0), (300.0, -5.0), (400.0, 0.0)]
     out = tmp_path / "set.csv"
-    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.4, sigma=0.05) as sim:
+    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.3, sigma=0.05) as sim:
         assert main(["capture", "autocollimator", sim.port, "--readings", "4", "--stable", "0.5",
-                     "--dwell", "0.15", "--out", str(out), *FAST]) == 0
+                     "--dwell", "0.1", "--out", str(out), *FAST]) == 0
     got = [tuple(map(float, r[1:])) for r in rows_of(out)[1:]]
     assert len(got) == 4
     for (x, y), (tx, ty) in zip(got, positions, strict=True):
@@ -76,7 +76,7 @@ def test_a_readout_with_noise_and_error_lines(tmp_path):
     assert [r[1:] for r in rows[1:]] == [["105.00012", "deg"]] * 8
 
 
-@pytest.mark.parametrize(("fault", "says"), [("silence", "no answer for 0.3 s"),
+@pytest.mark.parametrize(("fault", "says"), [("silence", "no answer for 0.2 s"),
                                              ("wrong_baud", "a wrong baud rate? 115200 was used")])
 def test_a_dead_instrument_exits_2_with_one_line_naming_the_port(tmp_path, capsys, fault, says):
     out = tmp_path / "x.csv"

@@ -14,7 +14,7 @@ from app.capture.link import serial_url
 from app.capture.worker import CaptureWorker, Fault, Reading
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator, TheodoliteSimulator
 
-FAST = {"silence_s": 0.3, "retries": 1, "retry_pause_s": 0.05}
+FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
 
 
 def collect(worker: CaptureWorker, n: int, timeout_s: float = 5.0):
@@ -83,7 +83,7 @@ def test_silence_is_a_final_fault_naming_the_port():
         readings, faults = collect(worker, 1)
         worker.stop()
     assert readings == []
-    assert faults[-1].final and faults[-1].message == f"{sim.port}: no answer for 0.3 s"
+    assert faults[-1].final and faults[-1].message == f"{sim.port}: no answer for 0.2 s"
 
 
 def test_a_wrong_baud_rate_is_named():

@@ -41,7 +41,7 @@ def test_an_endless_line_of_noise_is_dropped_and_the_next_line_read():
     assert framer.feed(b"\xfe\xfe\r4 003 1 2\r") == [b"4 003 1 2"]
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(st.lists(st.binary(max_size=40), max_size=20), st.integers(1, 7))
 def test_any_split_of_the_bytes_gives_the_same_lines(chunks, step):
     data = b"".join(chunks)
@@ -96,7 +96,7 @@ def test_anything_else_is_refused(line):
 axis_value = st.floats(-2000, 2000, allow_nan=False).map(lambda v: round(v, 3))
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(st.sampled_from("1234"), st.sampled_from("0123"), axis_value, axis_value,
        st.lists(st.binary(max_size=30), max_size=4))
 def test_a_frame_in_line_noise_is_read_exactly_and_an_invalid_axis_never(code, axes, x, y, noise):
@@ -115,7 +115,7 @@ def test_a_frame_in_line_noise_is_read_exactly_and_an_invalid_axis_never(code, a
     assert expected in mine, stream
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(st.binary(max_size=80))
 def test_garbage_is_refused_or_read_never_crashes(data):
     for line in LineFramer().feed(data + b"\r"):
@@ -167,7 +167,7 @@ def test_a_reply_that_is_not_an_angle_is_refused_naming_why(line, why):
         angles_of(parse_geocom_reply(line), GET_ANGLE5)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(st.binary(max_size=80))
 def test_garbage_is_never_a_geocom_reply(data):
     for line in LineFramer().feed(data + b"\r\n"):
