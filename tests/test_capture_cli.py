@@ -77,7 +77,7 @@ def test_a_readout_with_noise_and_error_lines(tmp_path):
 
 
 @pytest.mark.parametrize(("fault", "says"), [("silence", "no answer for 0.2 s"),
-                                             ("wrong_baud", "a wrong baud rate? 115200 was used")])
+                                             ("wrong_baud", "a wrong baud rate? 9600 was used")])
 def test_a_dead_instrument_exits_2_with_one_line_naming_the_port(tmp_path, capsys, fault, says):
     out = tmp_path / "x.csv"
     with AutocollimatorSimulator("pty", faults=(fault,)) as sim:

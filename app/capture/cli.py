@@ -61,8 +61,7 @@ def _parser(words) -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="FILE.csv",
                    help=words(QT_TR_NOOP("the CSV to write")))
     p.add_argument("--baud", type=_positive(words, int), help=words(QT_TR_NOOP(
-        "baud rate (default: the instrument's factory setting: autocollimator 115200, "
-        "theodolite 19200, readout 9600)")))
+        "baud rate, as set on the instrument (default 9600)")))
     p.add_argument("--readings", type=_positive(words, int), default=1, metavar="N",
                    help=words(QT_TR_NOOP("how many readings (default 1)")))
     p.add_argument("--stable", type=_positive(words), metavar="WINDOW", help=words(QT_TR_NOOP(

@@ -27,7 +27,7 @@ class Instrument:
     stop: bytes = b""
     #: sent for every reading of an instrument that answers requests
     request: bytes | None = None
-    #: the baud rate of the instrument's factory setting
+    #: the baud rate when none is given (the usual serial default; set the instrument's own)
     default_baud: int = 9600
 
     def values(self, line: bytes) -> tuple[tuple[float, ...], str] | None:
@@ -39,7 +39,7 @@ class Instrument:
 class Autocollimator(Instrument):
     def __init__(self) -> None:
         super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
-                         stop=command("stop"), default_baud=115200)
+                         stop=command("stop"))
 
     def values(self, line: bytes):
         frame = parse_autocollimator_line(line)
@@ -55,7 +55,7 @@ class Autocollimator(Instrument):
 class Theodolite(Instrument):
     def __init__(self) -> None:
         super().__init__(("azimuth_deg", "zenith_deg"),
-                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC), default_baud=19200)
+                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC))
 
     def values(self, line: bytes):
         hz, v = angles_of(parse_geocom_reply(line), GET_ANGLE5)
@@ -64,7 +64,7 @@ class Theodolite(Instrument):
 
 class LineReadoutInstrument(Instrument):
     def __init__(self, pattern: str = DEFAULT_PATTERN, ask: bytes | None = DEFAULT_REQUEST) -> None:
-        super().__init__(("value", "unit"), request=ask, default_baud=9600)
+        super().__init__(("value", "unit"), request=ask)
         self.readout = LineReadout(pattern)
 
     def values(self, line: bytes):

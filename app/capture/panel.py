@@ -60,7 +60,7 @@ class ConnectDialog(QDialog):
         self.port.setPlaceholderText("/dev/ttyUSB0, COM3, tcp://host:port")
         self.baud = QSpinBox()
         self.baud.setRange(0, 4_000_000)
-        self.baud.setSpecialValueText(tr("factory setting"))
+        self.baud.setSpecialValueText("9600")
         form.addRow(tr("Instrument"), self.instrument)
         form.addRow(tr("Port"), self.port)
         form.addRow(tr("Baud rate"), self.baud)

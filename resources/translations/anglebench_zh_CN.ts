@@ -4536,8 +4536,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>要写入的 CSV</translation>
     </message>
     <message>
-        <source>baud rate (default: the instrument&apos;s factory setting: autocollimator 115200, theodolite 19200, readout 9600)</source>
-        <translation>波特率（默认：仪器出厂设置：自准直仪 115200，经纬仪 19200，数显表 9600）</translation>
+        <source>baud rate, as set on the instrument (default 9600)</source>
+        <translation>波特率，与仪器上的设置一致（默认 9600）</translation>
     </message>
     <message>
         <source>how many readings (default 1)</source>
@@ -4634,10 +4634,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Theodolite (Leica GeoCOM)</source>
         <translation>经纬仪（徕卡 GeoCOM）</translation>
-    </message>
-    <message>
-        <source>factory setting</source>
-        <translation>出厂设置</translation>
     </message>
     <message>
         <source>{reason} (reconnecting)</source>
