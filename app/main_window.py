@@ -270,6 +270,16 @@ class MainWindow(QMainWindow):
             action.setData(key)
             self.language_actions.addAction(action)
 
+        # readings from the instruments (#34): the panel, hidden until Connect…
+        from app.capture.panel import CapturePanel
+
+        self.capture_panel = CapturePanel(self)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.capture_panel)
+        self.capture_panel.hide()
+        instrument_menu = self._menu(self.menuBar(), tr("&Instrument"))
+        self.connect_instrument_action = self._action(
+            instrument_menu, tr("&Connect…"),
+            lambda: (self.capture_panel.show(), self.capture_panel.connect_dialog()))
         help_menu = self._menu(self.menuBar(), tr("&Help"))
         self._action(help_menu, tr("&Manual (this workbench)"), self.show_manual,
                      QKeySequence.StandardKey.HelpContents,
@@ -797,6 +807,7 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue("window/state", self.saveState())
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
         self.autosave_timer.stop()
+        self.capture_panel.disconnect_instrument()
         if self._autosave_thread is not None:
             self._autosave_thread.join(timeout=30)
         self.recovery.release()

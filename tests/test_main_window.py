@@ -37,7 +37,7 @@ def test_tabs_and_menus(make_window):
     titles = [window.tabs.tabText(i) for i in range(window.tabs.count())]
     assert titles[0] == "Theodolite run"
     menus = [a.text() for a in window.menuBar().actions()]
-    assert menus == ["&File", "&Edit", "&View", "&Help"]
+    assert menus == ["&File", "&Edit", "&View", "&Instrument", "&Help"]
 
 
 def test_save_and_reopen_round_trip(make_window, tmp_path, samples_dir):

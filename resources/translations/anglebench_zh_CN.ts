@@ -5972,5 +5972,201 @@ Issue a certificate on this result anyway? Only if you have checked the readings
             <source>other run: {name}</source>
             <translation>另一次测量：{name}</translation>
         </message>
+        <message>
+            <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register, anglebench capture; each has --help.</source>
+            <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register、anglebench capture；各有 --help。</translation>
+        </message>
+        <message>
+            <source>{text}: give a number greater than 0</source>
+            <translation>{text}：请给出大于 0 的数</translation>
+        </message>
+        <message>
+            <source>Capture readings from an instrument into a CSV</source>
+            <translation>从仪器采集读数，写入 CSV</translation>
+        </message>
+        <message>
+            <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM) or readout (one line per reading)</source>
+            <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（徕卡 GeoCOM 经纬仪）或 readout（每个读数一行的数显表）</translation>
+        </message>
+        <message>
+            <source>a serial port (/dev/ttyUSB0, COM3) or tcp://host:port</source>
+            <translation>串口（/dev/ttyUSB0、COM3）或 tcp://host:port</translation>
+        </message>
+        <message>
+            <source>the CSV to write</source>
+            <translation>要写入的 CSV</translation>
+        </message>
+        <message>
+            <source>baud rate, as set on the instrument (default 9600)</source>
+            <translation>波特率，与仪器上的设置一致（默认 9600）</translation>
+        </message>
+        <message>
+            <source>how many readings (default 1)</source>
+            <translation>读数个数（默认 1）</translation>
+        </message>
+        <message>
+            <source>take a reading when the spread of the frames stays within WINDOW (arcsec; a readout's own unit) for --dwell seconds</source>
+            <translation>各帧的离散在 --dwell 秒内保持在 WINDOW 之内时取一个读数（角秒；数显表用其自身单位）</translation>
+        </message>
+        <message>
+            <source>the dwell time of --stable</source>
+            <translation>--stable 的驻留时间</translation>
+        </message>
+        <message>
+            <source>readout: regular expression of a line, with a group named value (and unit)</source>
+            <translation>数显表：一行的正则表达式，含名为 value 的组（及 unit）</translation>
+        </message>
+        <message>
+            <source>seconds without a valid frame before the link is reconnected (default 2)</source>
+            <translation>无有效帧多少秒后重新连接（默认 2）</translation>
+        </message>
+        <message>
+            <source>reconnections in a row without a reading before giving up (default 3)</source>
+            <translation>连续多少次重连仍无读数即放弃（默认 3）</translation>
+        </message>
+        <message>
+            <source>give up after this long (default: never)</source>
+            <translation>超过此时长即放弃（默认：不限）</translation>
+        </message>
+        <message>
+            <source>&amp;Instrument</source>
+            <translation>仪器(&amp;I)</translation>
+        </message>
+        <message>
+            <source>&amp;Connect…</source>
+            <translation>连接(&amp;C)…</translation>
+        </message>
+        <message>
+            <source>Allan deviation (first axis): {figures}</source>
+            <translation>阿伦偏差（第一轴）：{figures}</translation>
+        </message>
+        <message>
+            <source>Autocollimator (ELCOMAT kind)</source>
+            <translation>自准直仪（ELCOMAT 类）</translation>
+        </message>
+        <message>
+            <source>Baud rate</source>
+            <translation>波特率</translation>
+        </message>
+        <message>
+            <source>Connect to an instrument</source>
+            <translation>连接仪器</translation>
+        </message>
+        <message>
+            <source>Connected: {port}</source>
+            <translation>已连接：{port}</translation>
+        </message>
+        <message>
+            <source>Connecting to {port}…</source>
+            <translation>正在连接 {port}…</translation>
+        </message>
+        <message>
+            <source>Connect…</source>
+            <translation>连接…</translation>
+        </message>
+        <message>
+            <source>Instrument</source>
+            <translation>仪器</translation>
+        </message>
+        <message>
+            <source>Not connected</source>
+            <translation>未连接</translation>
+        </message>
+        <message>
+            <source>Port</source>
+            <translation>端口</translation>
+        </message>
+        <message>
+            <source>Readout (one line per reading)</source>
+            <translation>数显表（每个读数一行）</translation>
+        </message>
+        <message>
+            <source>Spread over the last second: {spread}{unit}</source>
+            <translation>最近一秒内的离散：{spread}{unit}</translation>
+        </message>
+        <message>
+            <source>Take reading (F9)</source>
+            <translation>取读数 (F9)</translation>
+        </message>
+        <message>
+            <source>Take reading (row {row})</source>
+            <translation>取读数（第 {row} 行）</translation>
+        </message>
+        <message>
+            <source>Theodolite (Leica GeoCOM)</source>
+            <translation>经纬仪（徕卡 GeoCOM）</translation>
+        </message>
+        <message>
+            <source>{reason} (reconnecting)</source>
+            <translation>{reason}（正在重新连接）</translation>
+        </message>
+        <message>
+            <source>This workbench has no column for this instrument's reading: choose a cell first (readout) or another workbench</source>
+            <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
+        </message>
+        <message>
+            <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings' trace to the instrument's own output)</source>
+            <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
+        </message>
+        <message>
+            <source>anglebench capture: --stable and --dwell go together</source>
+            <translation>anglebench capture：--stable 与 --dwell 须同时给出</translation>
+        </message>
+        <message>
+            <source>anglebench capture: --pattern: {reason}</source>
+            <translation>anglebench capture：--pattern：{reason}</translation>
+        </message>
+        <message>
+            <source>{port}: {n} of {total} readings in {seconds} s</source>
+            <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
+        </message>
+        <message>
+            <source>anglebench capture: {reason}; reconnecting</source>
+            <translation>anglebench capture：{reason}；正在重新连接</translation>
+        </message>
+        <message>
+            <source>{port}: interrupted</source>
+            <translation>{port}：已中断</translation>
+        </message>
+        <message>
+            <source>anglebench capture: {reason}; no reading was taken</source>
+            <translation>anglebench capture：{reason}；未取得任何读数</translation>
+        </message>
+        <message>
+            <source>anglebench capture: cannot write {path}: {reason}</source>
+            <translation>anglebench capture：无法写入 {path}：{reason}</translation>
+        </message>
+        <message>
+            <source>anglebench capture: {reason}; the {n} readings taken are in {path}</source>
+            <translation>anglebench capture：{reason}；已取得的 {n} 个读数在 {path} 中</translation>
+        </message>
+        <message>
+            <source>{n} readings written to {path} ({refused} frames refused: noise, an invalid axis or an error reply)</source>
+            <translation>{n} 个读数已写入 {path}（拒收 {refused} 帧：噪声、无效轴或错误应答）</translation>
+        </message>
+        <message>
+            <source>{n} readings written to {path}</source>
+            <translation>{n} 个读数已写入 {path}</translation>
+        </message>
+        <message>
+            <source>{port}: cannot open ({reason})</source>
+            <translation>{port}：无法打开（{reason}）</translation>
+        </message>
+        <message>
+            <source>{port}: no answer for {seconds} s</source>
+            <translation>{port}：{seconds} 秒无应答</translation>
+        </message>
+        <message>
+            <source>{port}: only unreadable bytes for {seconds} s (a wrong baud rate? {baud} was used)</source>
+            <translation>{port}：{seconds} 秒内只收到无法识读的字节（波特率错误？所用为 {baud}）</translation>
+        </message>
+        <message>
+            <source>{port}: no valid reading for {seconds} s (last: {reason})</source>
+            <translation>{port}：{seconds} 秒无有效读数（最后一行：{reason}）</translation>
+        </message>
+        <message>
+            <source>{port}: the link dropped ({reason})</source>
+            <translation>{port}：连接中断（{reason}）</translation>
+        </message>
     </context>
 </TS>

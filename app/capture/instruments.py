@@ -1,0 +1,76 @@
+"""What each instrument is sent and how its lines become readings.
+
+An instrument either streams once started (the autocollimator after ``A``) or answers
+one request at a time (GeoCOM's TMC_GetAngle5, a readout's STX), asked again as soon
+as it has answered.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from models.capture.autocollimator import AutocollimatorFrame, command, parse_autocollimator_line
+from models.capture.errors import FrameError
+from models.capture.geocom import GET_ANGLE5, INCLINE_AUTOMATIC, angles_of, parse_geocom_reply, request
+from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineReadout
+
+__all__ = ["INSTRUMENTS", "Autocollimator", "Instrument", "LineReadoutInstrument", "Theodolite"]
+
+
+@dataclass
+class Instrument:
+    #: the CSV's columns of one reading (``time_s`` comes first, ``unit`` last for a readout)
+    columns: tuple[str, ...] = ()
+    #: sent once after connecting (a stream's start), and when stopping
+    start: bytes = b""
+    stop: bytes = b""
+    #: sent for every reading of an instrument that answers requests
+    request: bytes | None = None
+    #: the baud rate when none is given (the usual serial default; set the instrument's own)
+    default_baud: int = 9600
+
+    def values(self, line: bytes) -> tuple[tuple[float, ...], str] | None:
+        """The reading's values and unit; None for a line that is not a measurement (device
+        information); :class:`FrameError` for a line that cannot be one."""
+        raise NotImplementedError
+
+
+class Autocollimator(Instrument):
+    def __init__(self) -> None:
+        super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
+                         stop=command("stop"))
+
+    def values(self, line: bytes):
+        frame = parse_autocollimator_line(line)
+        if not isinstance(frame, AutocollimatorFrame):
+            return None
+        if not frame.complete:
+            missing = " and ".join(a for a, v in (("x", frame.x_arcsec), ("y", frame.y_arcsec))
+                                   if v is None)
+            raise FrameError(f"status {frame.status}: {missing} not valid")
+        return (frame.x_arcsec, frame.y_arcsec), "arcsec"
+
+
+class Theodolite(Instrument):
+    def __init__(self) -> None:
+        super().__init__(("azimuth_deg", "zenith_deg"),
+                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC))
+
+    def values(self, line: bytes):
+        hz, v = angles_of(parse_geocom_reply(line), GET_ANGLE5)
+        return (math.degrees(hz), math.degrees(v)), "deg"
+
+
+class LineReadoutInstrument(Instrument):
+    def __init__(self, pattern: str = DEFAULT_PATTERN, ask: bytes | None = DEFAULT_REQUEST) -> None:
+        super().__init__(("value", "unit"), request=ask)
+        self.readout = LineReadout(pattern)
+
+    def values(self, line: bytes):
+        got = self.readout.parse(line)
+        return (got.value,), got.unit
+
+
+INSTRUMENTS = {"autocollimator": Autocollimator, "theodolite": Theodolite,
+               "readout": LineReadoutInstrument}

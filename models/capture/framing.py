@@ -1,0 +1,48 @@
+"""Bytes from a serial line or a socket, cut into lines.
+
+An instrument ends its replies with CR (the ELCOMAT kind), CR LF (GeoCOM) or LF; a
+line ends at either CR or LF and empty lines are dropped, so CR LF is one end. Line
+noise and a wrong baud rate give bytes that are not text, or no end at all: a line
+longer than ``max_line`` bytes is thrown away (counted in :attr:`LineFramer.dropped`)
+instead of growing without bound, and whatever follows its end is read afresh.
+"""
+
+from __future__ import annotations
+
+__all__ = ["LineFramer"]
+
+
+class LineFramer:
+    """Feed it bytes as they arrive; it returns the complete lines (without their end)."""
+
+    def __init__(self, max_line: int = 256) -> None:
+        self.max_line = max_line
+        self._buffer = bytearray()
+        self._overlong = False
+        #: lines thrown away for being longer than ``max_line``
+        self.dropped = 0
+
+    def feed(self, data: bytes) -> list[bytes]:
+        lines: list[bytes] = []
+        for byte in data:
+            if byte in (0x0A, 0x0D):
+                if self._overlong:
+                    self._overlong = False
+                elif self._buffer:
+                    lines.append(bytes(self._buffer))
+                self._buffer.clear()
+                continue
+            if self._overlong:
+                continue
+            if len(self._buffer) >= self.max_line:
+                self._buffer.clear()
+                self._overlong = True
+                self.dropped += 1
+                continue
+            self._buffer.append(byte)
+        return lines
+
+    def reset(self) -> None:
+        """Forget a partial line (after a reconnection: its start came from the old link)."""
+        self._buffer.clear()
+        self._overlong = False

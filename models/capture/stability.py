@@ -1,0 +1,79 @@
+"""The stability gate: a reading is taken when the instrument's output has stayed
+inside a window for a dwell time (the way Keysight's laser software triggers).
+
+``window`` is the spread allowed (largest minus smallest, per axis) of every frame of
+the last ``dwell`` seconds; the frames must cover the whole dwell (the oldest one of
+them at least ``dwell`` seconds old), so a single quiet frame after a gap is not
+"stable". The reading taken is the mean of those frames, with their standard
+deviation.
+
+After a take the gate waits for the output to leave the window around the value it
+took (the operator turns to the next position) before it can take again: a set of n
+positions gives n readings, not n copies of the first. ``retake=True`` takes again at
+once (n readings of one position, each from fresh frames).
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["StabilityGate", "StableReading"]
+
+#: times are sums of floats: a dwell of 0.3 s from 2.0 s ends at 2.3 s, not 2.2999999…
+_EPS = 1e-9
+
+
+@dataclass(frozen=True)
+class StableReading:
+    time_s: float
+    mean: tuple[float, ...]
+    std: tuple[float, ...]
+    frames: int
+
+
+class StabilityGate:
+    def __init__(self, window: float, dwell_s: float, retake: bool = False) -> None:
+        if not (window > 0 and dwell_s > 0):
+            raise ValueError("the window and the dwell time must be greater than 0")
+        self.window, self.dwell_s, self.retake = window, dwell_s, retake
+        self._frames: deque[tuple[float, np.ndarray]] = deque()
+        self._taken: np.ndarray | None = None
+
+    def spread(self) -> np.ndarray | None:
+        """Largest minus smallest per axis over the frames kept (None before any)."""
+        if not self._frames:
+            return None
+        values = np.array([v for _, v in self._frames])
+        return values.max(axis=0) - values.min(axis=0)
+
+    def feed(self, time_s: float, values) -> StableReading | None:
+        """One frame; the reading when this frame completes a stable dwell."""
+        value = np.atleast_1d(np.asarray(values, dtype=float))
+        if self._taken is not None:
+            if np.all(np.abs(value - self._taken) <= self.window):
+                return None  # still at the position just taken
+            self._taken = None
+            self._frames.clear()
+        self._frames.append((time_s, value))
+        # keep the newest frames within the window of one another; older ones reset the dwell
+        values = np.array([v for _, v in self._frames])
+        while len(self._frames) > 1 and np.any(values.max(axis=0) - values.min(axis=0)
+                                               > self.window):
+            self._frames.popleft()
+            values = values[1:]
+        # frames older than the dwell are not needed beyond the oldest one covering it
+        while len(self._frames) > 1 and self._frames[1][0] <= time_s - self.dwell_s + _EPS:
+            self._frames.popleft()
+            values = values[1:]
+        if time_s - self._frames[0][0] < self.dwell_s - _EPS:
+            return None
+        reading = StableReading(time_s, tuple(values.mean(axis=0)),
+                                tuple(values.std(axis=0, ddof=1) if len(values) > 1
+                                      else np.zeros(values.shape[1])), len(values))
+        self._frames.clear()
+        if not self.retake:
+            self._taken = values.mean(axis=0)
+        return reading
