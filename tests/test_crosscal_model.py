@@ -67,6 +67,19 @@ def test_round_trip_noise_free(mountings, tol, stops):
     assert np.ptp(true_e) > 4.0 and np.ptp(true_d) > 3.0  # the check is not trivial
 
 
+def test_drift_is_reported_as_the_autocollimators():
+    """An autocollimator whose zero drifted by D over a mounting gives drift D, the polygon
+    workbench's (c′ − c) − (a′ − a); a mounting without its closure reading has none."""
+    rig = _rig(12, 7, drift_arcsec=2.0)
+    rows = rig.rows([0, 1, 5])
+    result = _solve(rows, 12, noise_arcsec=0.01)
+    np.testing.assert_allclose(result.drift_arcsec, rig.drifts_arcsec, atol=0.003)
+    assert np.abs(rig.drifts_arcsec).min() > 0.5  # drift of either sign would show
+    no_closure = [r for q, r in enumerate(rows) if q != 12]  # mounting 0 ends without one
+    result = _solve(no_closure, 12, noise_arcsec=0.01)
+    assert np.isnan(result.drift_arcsec[0]) and np.all(np.isfinite(result.drift_arcsec[1:]))
+
+
 def test_round_trip_with_noise_within_its_uncertainty():
     rig = _rig(12, 2, drift_arcsec=0.5, noise_arcsec=0.05)
     result = _solve(rig.rows([0, 1, 5]), 12)
@@ -189,3 +202,22 @@ def test_no_redundancy_is_refused_without_a_stated_sigma():
     assert "none left over" in str(err)
     result = _solve(rig.rows([0, 1], closure=False), 6, noise_arcsec=0.02)
     assert result.separable
+
+
+def test_signs_agree_with_the_polygon_workbench():
+    """Mounting 0 analysed by the polygon workbench's equation with the deviations found
+    here as its certificate gives the encoder errors found here, about face 1: the two
+    workbenches state the same errors of indication and the same face deviations."""
+    from models.polygon.model import face_errors_arcsec
+
+    n = 12
+    rig = _rig(n, 8, noise_arcsec=0.0)
+    rows = rig.rows([0, 1, 5], closure=False)
+    result = _solve(rows, n, noise_arcsec=0.01)
+    _, face, a, c = (np.array(col) for col in zip(*rows[:n], strict=True))
+    dev = result.polygon_deviation_arcsec[face - 1]
+    nominal = (face - 1) * 360.0 / n
+    errors = face_errors_arcsec(a, dev, c, nominal, zero=(a[0], nominal[0], dev[0], c[0]))
+    expected = result.encoder_error_arcsec - result.encoder_error_arcsec[0]
+    np.testing.assert_allclose(errors, expected, atol=0.003)
+    assert np.ptp(expected) > 4.0

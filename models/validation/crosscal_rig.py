@@ -91,10 +91,12 @@ class CrossCalRig:
         n = self.faces
         step = 360.0 / n
         out = []
+        self.drifts_arcsec = []  # each mounting's AC drift over its n steps (to its closure)
         for q, j in enumerate(mountings):
             mount = j * step + self.rng.uniform(-1, 1) * self.mounting_error_arcsec / 3600.0
             tilt = (self.rng.uniform(0, self.tilt_arcsec), self.rng.uniform(0, 2 * np.pi))
             drift = self.rng.uniform(-1, 1) * self.drift_arcsec
+            self.drifts_arcsec.append(drift)
             faces = np.array([(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else []))
             t = np.arange(faces.size)
             v = self._normals(tilt)[:, faces - 1]
