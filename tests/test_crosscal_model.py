@@ -93,14 +93,15 @@ def test_round_trip_with_noise_within_its_uncertainty():
     assert np.abs(result.correlation[:12, 12:]).max() > 0.1
 
 
-@pytest.mark.parametrize(("mountings", "unseen"), [([0, 4, 8], (3, 6)), ([0, 6], (2, 4, 6)),
-                                                  ([2, 5, 8, 11], (4,))])
-def test_design_that_cannot_separate_names_the_harmonics_and_reports_none(mountings, unseen):
+@pytest.mark.parametrize(("n", "mountings", "unseen"), [
+    (12, [0, 4, 8], (3, 6)), (12, [0, 6], (2, 4, 6)), (12, [2, 5, 8, 11], (4,)), (9, [0, 3, 6], (3,)),
+    (24, [0, 8, 16], (3, 6, 9, 12))])
+def test_design_that_cannot_separate_names_the_harmonics_and_reports_none(n, mountings, unseen):
     """Mountings all a multiple of g faces apart (g | n) leave the harmonics h with
     h·g ≡ 0 (mod n) unseen: 0,4,8 of 12 -> 3 and 6. The values are withheld; the part made
     of the seen harmonics is recovered."""
-    rig = _rig(12, 3, drift_arcsec=0.3)
-    result = _solve(rig.rows(mountings), 12, noise_arcsec=0.01)
+    rig = _rig(n, 3, drift_arcsec=0.3)
+    result = _solve(rig.rows(mountings), n, noise_arcsec=0.01)
     assert result.undetermined_encoder_harmonics == unseen
     assert result.undetermined_polygon_harmonics == unseen
     assert result.encoder_error_arcsec is None and result.polygon_deviation_arcsec is None

@@ -301,7 +301,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     elif dof <= 0:
         raise CrossCalibrationInputError(
             f"{rows_n} readings determine {rank} unknowns with none left over: the scatter of a reading "
-            "cannot be evaluated — add a mounting or a closure reading, or state the autocollimator's σ")
+            "cannot be evaluated — add a mounting, or state the autocollimator's σ")
     else:
         sigma = float(math.sqrt(residuals @ residuals / dof))
     cov_x = sigma**2 * (z @ pinv_normal @ z.T)
