@@ -4,10 +4,13 @@ rosette's closed form, Monte Carlo coverage of U, and bad input refused naming t
 from __future__ import annotations
 
 import ast
+import math
 from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from models.crosscal.solve import CrossCalibrationInputError, solve_crosscal
 from models.validation.crosscal_rig import CrossCalRig
@@ -110,6 +113,31 @@ def test_design_that_cannot_separate_names_the_harmonics_and_reports_none(n, mou
     assert np.abs(result.encoder_error_determined_arcsec - _without(true_e, unseen)).max() < 0.002
     assert np.abs(result.polygon_deviation_determined_arcsec - _without(true_d, unseen)).max() < 0.002
     assert np.all(np.isfinite(result.encoder_error_u_arcsec))
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(4, 16).flatmap(lambda n: st.tuples(
+    st.just(n), st.lists(st.integers(0, n - 1), min_size=2, max_size=4, unique=True),
+    st.booleans(), st.integers(0, 10_000))))
+def test_unseen_harmonics_follow_the_mountings_spacing(case):
+    """Whatever the mountings (in any order, with or without closure readings), the
+    harmonics withheld are exactly those with h·g ≡ 0 (mod n), g = gcd(n, the mountings'
+    differences): E_k = f(k), d_i = −f(i − 1 − j) fits every mounting iff f has period g."""
+    n, mountings, closure, seed = case
+    g = math.gcd(n, *(j - mountings[0] for j in mountings[1:]))
+    expected = tuple(h for h in range(1, n // 2 + 1) if h * g % n == 0)
+    # without its closure reading a mounting's drift is not modelled (it would pass into E)
+    rig = _rig(n, seed, drift_arcsec=0.3 if closure else 0.0, noise_arcsec=0.01)
+    result = _solve(rig.rows(mountings, closure=closure), n, noise_arcsec=0.01)
+    assert result.undetermined_encoder_harmonics == expected
+    assert result.undetermined_polygon_harmonics == expected
+    assert (result.encoder_error_arcsec is None) == bool(expected)
+    true_e, true_d = rig.truth()
+    miss_e = np.abs(result.encoder_error_determined_arcsec - _without(true_e, expected))
+    miss_d = np.abs(result.polygon_deviation_determined_arcsec - _without(true_d, expected))
+    # within 5 u, plus the encoder's error between step and stop amplified by a thin design
+    assert np.all(miss_e < 5 * result.encoder_error_u_arcsec + 0.02)
+    assert np.all(miss_d < 5 * result.polygon_deviation_u_arcsec + 0.02)
 
 
 def test_full_rosette_closed_form():
