@@ -115,7 +115,7 @@ def test_design_that_cannot_separate_names_the_harmonics_and_reports_none(n, mou
     assert np.all(np.isfinite(result.encoder_error_u_arcsec))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=25, deadline=None)
 @given(st.integers(4, 16).flatmap(lambda n: st.tuples(
     st.just(n), st.lists(st.integers(0, n - 1), min_size=2, max_size=4, unique=True),
     st.booleans(), st.integers(0, 10_000))))
