@@ -27,8 +27,8 @@ def test_rigs_import_nothing_from_the_code_they_check():
                 module = node.names[0].name
             else:
                 continue
-            allowed = module in ("__future__", "collections.abc", "dataclasses", "numpy") or module.startswith(
-                "models.validation.") and module.rsplit(".", 1)[1] in RIGS
+            allowed = module in ("__future__", "collections.abc", "dataclasses", "numpy") or (
+                module.startswith("models.validation.") and module.rsplit(".", 1)[1] in RIGS)
             assert allowed, f"{name}.py imports {module}"
 
 
