@@ -1942,6 +1942,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{path} 逐字节与 {date} 签发的证书 {number}（{status}）一致。</translation>
     </message>
     <message>
+        <source>It is no longer valid: superseded by {by}.</source>
+        <translation>它已不再有效：已被 {by} 取代。</translation>
+    </message>
+    <message>
         <source>Certificate number</source>
         <translation>证书编号</translation>
     </message>
