@@ -122,7 +122,8 @@ def _pdf_text_case() -> ValidationCase:
     finally:
         pdf.close()
     flat = re.sub(r"\s+", "", "".join(pages))
-    figures = {f for row in document.results.rows for cell in row
+    figures = {f.lstrip("+-−") if float(f.replace("−", "-")) == 0 else f  # no "−0.00"
+               for row in document.results.rows for cell in row
                for f in re.findall(r"[+\-−]?\d+\.\d+", str(cell))}
     found = sum(f in flat for f in figures)
     named = sum(lab in page for page in pages)
