@@ -166,7 +166,8 @@ def _register_case() -> ValidationCase:
                              "database"), END_TO_END,
         QT_TR_NOOP("verified; the change reported"),
         message(QT_TR_NOOP("verified: {verified}; changes reported: {caught}"),
-                verified="yes" if verified else "no", caught=caught),
+                verified=message(QT_TR_NOOP("yes") if verified else QT_TR_NOOP("no")),
+                caught=caught),
         verified and caught >= 1)
 
 

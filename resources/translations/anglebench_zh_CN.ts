@@ -716,6 +716,30 @@
         <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
     </message>
     <message>
+        <source>conditional pass</source>
+        <translation>有条件合格</translation>
+    </message>
+    <message>
+        <source>conditional fail</source>
+        <translation>有条件不合格</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <source>guard band, non-binary</source>
+        <translation>带保护带，非二元</translation>
+    </message>
+    <message>
+        <source>guard band, binary</source>
+        <translation>带保护带，二元</translation>
+    </message>
+    <message>
+        <source>simple acceptance</source>
+        <translation>简单接受</translation>
+    </message>
+    <message>
         <source>Uncertainty and decision (all workbenches)</source>
         <translation>不确定度与判定（所有工作台）</translation>
     </message>
@@ -4715,11 +4739,20 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>核验：{verified}；报告的改动：{caught}</translation>
     </message>
     <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
         <source>file import of {file}, as written and with decimal commas, against numpy.loadtxt</source>
         <translation>导入文件 {file}（原样及小数逗号形式），与 numpy.loadtxt 比较</translation>
     </message>
     <message>
         <source>pass</source>
+        <extracomment>a decision&apos;s verdict and a rule&apos;s name, as the report prints them</extracomment>
         <translation>通过</translation>
     </message>
     <message>
