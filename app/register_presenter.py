@@ -171,7 +171,9 @@ class RegisterPresenter:
             self.view.tell(tr("Verified"), tr(
                 "{path} is certificate {number} as issued on {date} ({status}), byte for byte.")
                 .format(path=path, number=record.number, date=record.issued_at,
-                        status=translated(status_words(record.status))))
+                        status=translated(status_words(record.status)))
+                + ("" if not record.superseded_by else "\n" + tr(
+                    "It is no longer valid: superseded by {by}.").format(by=record.superseded_by)))
         return record
 
     def show_history(self) -> None:

@@ -122,7 +122,8 @@ def _pdf_text_case() -> ValidationCase:
     finally:
         pdf.close()
     flat = re.sub(r"\s+", "", "".join(pages))
-    figures = {f for row in document.results.rows for cell in row
+    figures = {f.lstrip("+-−") if float(f.replace("−", "-")) == 0 else f  # no "−0.00"
+               for row in document.results.rows for cell in row
                for f in re.findall(r"[+\-−]?\d+\.\d+", str(cell))}
     found = sum(f in flat for f in figures)
     named = sum(lab in page for page in pages)
@@ -165,7 +166,8 @@ def _register_case() -> ValidationCase:
                              "database"), END_TO_END,
         QT_TR_NOOP("verified; the change reported"),
         message(QT_TR_NOOP("verified: {verified}; changes reported: {caught}"),
-                verified="yes" if verified else "no", caught=caught),
+                verified=message(QT_TR_NOOP("yes") if verified else QT_TR_NOOP("no")),
+                caught=caught),
         verified and caught >= 1)
 
 

@@ -24,6 +24,8 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
     fields["issue_date"].clear()
     qtbot.keyClicks(fields["issue_date"], "2026-11-24")
     qtbot.keyClicks(fields["operator"], "Wang")
+    qtbot.keyClicks(fields["approver"], "Dr. Li")  # an issued certificate is approved
+    qtbot.keyClicks(fields["item_model"], "RT-400")
     qtbot.keyClicks(fields["tolerance_arcsec"], "5")
     assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
     dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",

@@ -4,6 +4,7 @@ make from the sources, and the language changes at once without losing work."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import shutil
@@ -344,9 +345,11 @@ def test_the_register_window_follows_the_language(window, samples_dir, tmp_path,
     the window's language; the open register follows a change of language at once."""
     from app.main import main
 
+    details = json.loads((samples_dir / "certificate_polygon.json").read_text("utf-8"))
+    own = tmp_path / "details.json"  # the lab's own, made from the example (which never
+    own.write_text(json.dumps({**details, "example": False}), "utf-8")  # enters a register)
     assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
-                 str(samples_dir / "certificate_polygon.json"), "--certificate",
-                 str(tmp_path / "issued.pdf")]) == 0
+                 str(own), "--certificate", str(tmp_path / "issued.pdf")]) == 0
     capsys.readouterr()
     window.show_register()
     table = window.register_window.table

@@ -46,7 +46,7 @@ def test_validate_command_writes_a_dated_report(tmp_path, capsys):
     assert "Method validation report" in text and "reference cases passed" in text
     for name in ("numpy", "scipy", "Python", "AngleBench", "fpdf2", "SQLAlchemy", "PySide6",
                  "Document ID AB-VAL-", "Acceptance criteria", "hand-computed example",
-                 "coverage factor k for ν = 8", "decision rule guarded", "register: issue",
+                 "coverage factor k for ν = 8", "decision rule guard band", "register: issue",
                  "file import of", "certificate text as extracted"):
         assert name in text, name
     from models.software import software_identity

@@ -274,7 +274,7 @@ class ReportPdf(FPDF):
         self.set_font(FONT, "", size)
         with self.local_context(text_color=color):
             if _mostly_cjk(text):  # Chinese prose: not justified; broken where
-                # _breakable allows (between Chinese characters, at spaces), never inside
+                # _units allows (between Chinese characters, at spaces), never inside
                 # a figure or a word, never before a closing mark such as "。"
                 width = self.epw - 2 * self.c_margin - 0.6
                 self.multi_cell(0, 4.6, self._wrapped(text, width, size), wrapmode="CHAR",

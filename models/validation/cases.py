@@ -416,6 +416,14 @@ def positioning_hand_cases() -> list[ValidationCase]:
             for name, value in HAND_FIGURES.items()]
 
 
+#: a decision's verdict and a rule's name, as the report prints them
+VERDICT_WORDS = {"pass": QT_TR_NOOP("pass"), "conditional pass": QT_TR_NOOP("conditional pass"),
+                 "conditional fail": QT_TR_NOOP("conditional fail"), "fail": QT_TR_NOOP("fail")}
+RULE_NAMES = {"guarded": QT_TR_NOOP("guard band, non-binary"),
+              "guarded_binary": QT_TR_NOOP("guard band, binary"),
+              "simple": QT_TR_NOOP("simple acceptance")}
+
+
 def uncertainty_cases() -> list[ValidationCase]:
     """k from ν (GUM table G.2, p = 95.45 %, to its two decimals) and the decision rules'
     verdicts either side of each zone's limit (ILAC-G8:09/2019, T = 1", w = 0.2")."""
@@ -433,9 +441,10 @@ def uncertainty_cases() -> list[ValidationCase]:
                               ("guarded_binary", 0.81, "fail"), ("guarded_binary", 0.79, "pass")):
         got = _verdict(x, 1.0, 0.2, rule)
         cases.append(ValidationCase(w, message(QT_TR_NOOP("decision rule {rule}: {x}\" against "
-                                                          "T = 1\", w = 0.2\""), rule=rule,
-                                               x=f"{x:.2f}"),
-                                    HAND_COMPUTED, expected, got, got == expected))
+                                                          "T = 1\", w = 0.2\""),
+                                               rule=message(RULE_NAMES[rule]), x=f"{x:.2f}"),
+                                    HAND_COMPUTED, VERDICT_WORDS[expected],
+                                    VERDICT_WORDS.get(got, got), got == expected))
     return cases
 
 
