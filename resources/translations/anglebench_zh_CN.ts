@@ -3791,8 +3791,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>这些读数无法确定部分参数（拟合奇异）。</translation>
     </message>
     <message>
-        <source>reading {value}, column &apos;{name}&apos;: {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
-        <translation>读数 {value}，列 &apos;{name}&apos;：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
+        <source>row {value}, column &apos;{name}&apos;: {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
+        <translation>第 {value} 行，列 &apos;{name}&apos;：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
     </message>
     <message>
         <source>all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn between readings</source>
@@ -4322,9 +4322,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>补偿表，{n} 个点（{form}，{spacing}）</translation>
     </message>
     <message>
-        <source>{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again</source>
+        <source>{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); save it as CSV UTF-8 and try again</source>
         <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a &quot;zip bomb&quot;) is refused unread.</extracomment>
-        <translation>{source}：不是 UTF-8 或 GBK 文本；请另存为 CSV UTF-8 后重试</translation>
+        <translation>{source}：第 {row} 行：不是 UTF-8 或 GBK 文本（第 {column} 个位置的十六进制字节 {byte}）；请另存为 CSV UTF-8 后重试</translation>
     </message>
     <message>
         <source>{source}: cannot read ({value})</source>
