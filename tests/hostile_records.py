@@ -134,6 +134,49 @@ def _full_width(text: str) -> str:
                    {"'": "′", '"': "″"}.get(c, c) for c in text)
 
 
+def twins(picks: Picks, kind: str) -> tuple[bytes, bytes]:
+    """The same D°M'S" record (full-width, primes, Chinese or European spellings, a hostile
+    cell or two) as a CSV and as an XLSX: both paths must read it alike."""
+    seed = picks.integer(0, 2**31 - 1)
+    rng = np.random.default_rng(seed)
+    rows = {"polygon": polygon, "theodolite": theodolite}[kind](rng, picks.integer(4, 30))
+    wide, comma = picks.integer(0, 1) == 1, picks.integer(0, 1) == 1
+    chinese = picks.integer(0, 3) == 0
+    for r in rows[1:]:
+        for c in ANGLE_COLUMNS[kind]:
+            text = _dms(float(r[c]), comma)
+            text = text.replace("°", "度").replace("'", "分").replace('"', "秒") if chinese else text
+            r[c] = _full_width(text) if wide else text
+    for _ in range(picks.integer(0, 2)):
+        r = picks.integer(1, len(rows) - 1)
+        rows[r][picks.choice(ANGLE_COLUMNS[kind])] = picks.choice(HOSTILE[:50])
+    text = "\n".join(";".join(_quoted(c, ";") for c in cells) for cells in rows) + "\n"
+    return text.encode("utf-8"), _xlsx(rows)
+
+
+def judge_twins(kind: str, csv_path: str, xlsx_path: str) -> list[str]:
+    """What differs between the two paths' answers to the same record."""
+    from app.main import main
+
+    answers = []
+    for path in (csv_path, xlsx_path):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main(["analyze", kind, path, "--json"])
+        answers.append((code, json.loads(out.getvalue()) if code == 0 else
+                        err.getvalue().replace(path, "FILE").strip()))
+    (code_csv, csv_answer), (code_xlsx, xlsx_answer) = answers
+    if code_csv != code_xlsx:
+        return [f"CSV exit {code_csv}, XLSX exit {code_xlsx}: {str(csv_answer)[:150]} | "
+                f"{str(xlsx_answer)[:150]}"]
+    if code_csv == 0:
+        key = "corrected_error_arcsec"
+        a, b = np.array(csv_answer[key]), np.array(xlsx_answer[key])
+        if a.shape != b.shape or not np.allclose(a, b, atol=1e-6):
+            return [f"CSV and XLSX differ: {a[:4]} | {b[:4]}"]
+    return []
+
+
 def case(picks: Picks, kind: str, family: str = "") -> tuple[str, bytes, list[str]]:
     """(file suffix, content, extra command-line arguments) of one hostile case."""
     seed = picks.integer(0, 2**31 - 1)
@@ -210,7 +253,7 @@ def _xlsx(rows: list[list[str]]) -> bytes:
             try:
                 number = float(cell)
                 values.append(number if math.isfinite(number) and cell.strip() == cell
-                              and "_" not in cell else cell)
+                              and "_" not in cell and cell.isascii() else cell)
             except ValueError:
                 values.append(cell)
         sheet.append(values)
@@ -333,14 +376,28 @@ def main(argv: list[str] | None = None) -> int:
                     if len(examples[key]) < args.show:
                         examples[key].append(f"{path.name}: {problem} | {text[:300]}")
                 path.unlink()
+            if kind in ("polygon", "theodolite"):  # the same record through CSV and XLSX
+                for i in range(args.cases // 5):
+                    paths = [Path(folder) / f"{kind}-twin-{i}{s}" for s in (".csv", ".xlsx")]
+                    for path, data in zip(paths, twins(Picks(rng), kind), strict=True):
+                        path.write_bytes(data)
+                    counts[(kind, "twins")] += 1
+                    for problem in judge_twins(kind, *map(str, paths)):
+                        key = f"{kind}: CSV vs XLSX: {problem[:40]}"
+                        counts[("finding", key)] += 1
+                        examples.setdefault(key, [])
+                        if len(examples[key]) < args.show:
+                            examples[key].append(f"{paths[0].name}: {problem}")
+                    for path in paths:
+                        path.unlink()
     seconds = time.perf_counter() - start
     say = sys.stdout.write
-    total = sum(v for (k, _), v in counts.items() if k != "finding")
+    total = sum(v for (k, o), v in counts.items() if k != "finding" and o != "twins")
     say(f"{total} cases in {seconds:.0f} s (seed {args.seed})\n")
     for kind in KINDS:
         say(f"  {kind}: {counts[(kind, 'result')]} results, {counts[(kind, 'refused')]} "
             f"refused ({unnamed_rows[kind]} naming no row), {counts[(kind, 'traceback')]} "
-            "tracebacks\n")
+            f"tracebacks; {counts[(kind, 'twins')]} records read as CSV and as XLSX\n")
     findings = {k: v for (c, k), v in counts.items() if c == "finding"}
     say(f"findings: {sum(findings.values())}\n")
     for key, count in sorted(findings.items()):

@@ -151,7 +151,7 @@ def test_positioning_cli_never_crashes(text, tmp_path, capsys):
 # judges them (tests/hostile_records.py; `python tests/hostile_records.py --cases 2500` runs
 # the full round of 10,000 cases, seeded, and counts every finding)
 
-ROUND = settings(max_examples=25, deadline=None,
+ROUND = settings(max_examples=15, deadline=None,
                  suppress_health_check=[HealthCheck.function_scoped_fixture,
                                         HealthCheck.too_slow])
 
@@ -207,3 +207,23 @@ def test_binary_headers_are_refused_in_one_clean_line(kind, data, tmp_path):
 @given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
 def test_damaged_records_judged_as_the_round_judges_them(kind, data, tmp_path):
     _judged(kind, data.draw(round_case(kind, "damaged")), tmp_path)
+
+
+@st.composite
+def twin_records(draw, kind: str):
+    from hostile_records import Picks, twins
+
+    return twins(Picks(draw=draw), kind)
+
+
+@ROUND
+@given(kind=st.sampled_from(["theodolite", "polygon"]), data=st.data())
+def test_xlsx_reads_what_the_csv_reads(kind, data, tmp_path):
+    """The same D°M'S" record — full-width, Chinese, European decimal commas, a hostile cell —
+    as CSV and as XLSX: the same refusal or the same figures."""
+    from hostile_records import judge_twins
+
+    csv_data, xlsx_data = data.draw(twin_records(kind))
+    (tmp_path / "r.csv").write_bytes(csv_data)
+    (tmp_path / "r.xlsx").write_bytes(xlsx_data)
+    assert judge_twins(kind, str(tmp_path / "r.csv"), str(tmp_path / "r.xlsx")) == []

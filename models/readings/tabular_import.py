@@ -70,14 +70,19 @@ def _decode(data: bytes, source: str) -> str:
         return data[3:].decode("utf-8")
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):
         return data.decode("utf-16")
+    first = None
     for encoding in ("utf-8", "gb18030"):
         try:
             return data.decode(encoding)
-        except UnicodeDecodeError:
+        except UnicodeDecodeError as exc:
+            first = first or exc
             continue
+    where = first.start if first is not None else 0
     raise TableImportError(message(
-        QT_TR_NOOP("{source}: not UTF-8 or GBK text; save it as CSV UTF-8 and try again"),
-        source=source))
+        QT_TR_NOOP("{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); "
+                   "save it as CSV UTF-8 and try again"),
+        source=source, row=data.count(b"\n", 0, where) + 1, byte=f"{data[where]:02X}",
+        column=where - data.rfind(b"\n", 0, where)))
 
 
 def _sniff_delimiter(text: str) -> str:

@@ -450,6 +450,11 @@ def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarr
 _TRUE_ROTATION_MAX_ITERATIONS = 8
 
 
+def _row_of(index: int, row_numbers) -> int:
+    """The sheet row of reading ``index`` (1-based), for messages."""
+    return int(row_numbers[index]) if row_numbers is not None else index + 1
+
+
 def true_rotation_deg(azimuth_deg, setup: SetupParameters, iterations: int = 4) -> np.ndarray:
     """Axis rotation that makes the theodolite read ``azimuth_deg``: solves A(t) = A_i.
 
@@ -463,7 +468,8 @@ def true_rotation_deg(azimuth_deg, setup: SetupParameters, iterations: int = 4) 
     return rotation
 
 
-def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None = None) -> None:
+def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None = None,
+              row_numbers=None) -> None:
     """Refuse readings that cannot identify a set-up, before any fit (ValueError, one line).
 
     Angles must be finite and physically possible (|E| ≤ 90°, |θ| and |A| within two
@@ -477,9 +483,9 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
         if bad.size:
             i = int(bad[0])
             raise ValueError(message(
-                QT_TR_NOOP("reading {value}, column '{name}': {values}° is beyond ±{limit}° and cannot "
+                QT_TR_NOOP("row {value}, column '{name}': {values}° is beyond ±{limit}° and cannot "
                            "be a reading of this test"),
-                value=i + 1, name=name, values=f"{values[i]:g}", limit=f"{limit:g}"))
+                value=_row_of(i, row_numbers), name=name, values=f"{values[i]:g}", limit=f"{limit:g}"))
     distinct = np.unique(np.round(theta, 6))
     if distinct.size == 1:
         raise ValueError(message(
@@ -513,10 +519,6 @@ MIN_R_SQUARED = 0.99
 # A corrected error (the axis' own error of indication) beyond this is not an axis' error
 # but θ and A of one row that disagree: a typed or shifted cell, another unit.
 MAX_AXIS_ERROR_ARCSEC = 3600.0
-
-
-def _row_of(index: int, row_numbers) -> int:
-    return int(row_numbers[index]) if row_numbers is not None else index + 1
 
 
 def check_fit(ident: Identification, accuracy_arcsec: float | None, row_numbers=None) -> None:
@@ -610,7 +612,7 @@ def analyze_run(
     theta = np.asarray(theta_deg, dtype=float)
     az = np.asarray(azimuth_deg, dtype=float)
     elev = np.asarray(elevation_deg, dtype=float)
-    check_run(theta, az, elev)
+    check_run(theta, az, elev, row_numbers=row_numbers)
     if reference_index is None:
         reference_index = int(np.argmin(np.abs(theta)))
     if not 0 <= reference_index < theta.size:

@@ -6199,5 +6199,26 @@ Issue a certificate on this result anyway? Only if you have checked the readings
             <source>no</source>
             <translation>否</translation>
         </message>
+        <message>
+            <source>Residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
+            <translation>残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+        </message>
+        <message>
+            <source>the PDF to check</source>
+            <translation>要检查的 PDF</translation>
+        </message>
+        <message>
+            <source>row {value}, column '{name}': {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
+            <translation>第 {value} 行，列 '{name}'：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
+        </message>
+        <message>
+            <source>{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); save it as CSV UTF-8 and try again</source>
+            <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a "zip bomb") is refused unread.</extracomment>
+            <translation>{source}：第 {row} 行：不是 UTF-8 或 GBK 文本（第 {column} 个位置的十六进制字节 {byte}）；请另存为 CSV UTF-8 后重试</translation>
+        </message>
+        <message>
+            <source>Three non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). For each: the publication's check figures; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101).</source>
+            <translation>三种非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。对每种方法：论文的校核数值；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。</translation>
+        </message>
     </context>
 </TS>
