@@ -248,11 +248,37 @@ class ReportPdf(FPDF):
             if _mostly_cjk(text):  # Chinese prose: broken between characters, not justified
                 # (fpdf2's WORD wrap dropped a word with the fallback font at a line's end:
                 # "随机种子 20261127" printed without its number)
-                self.multi_cell(0, 4.6, text, wrapmode="CHAR", align="L",
-                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+                self.multi_cell(0, 4.6, self._cjk_lines(text, size), wrapmode="CHAR",
+                                align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
             else:
                 self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+
+    def _cjk_lines(self, text: str, size: float) -> str:
+        """Chinese prose broken into lines here, between characters but never inside a
+        figure or a Latin word ("95.4 / 5 %" lost a figure), nor before a closing mark; the
+        lines are joined by newlines for a CHAR-wrapped cell that then breaks nothing."""
+        room = self.epw - 2 * self.c_margin - 0.5  # mm, a little spare for rounding
+        out = []
+        for line in text.split("\n"):
+            tokens: list[str] = []
+            for token in _CJK_TOKEN.findall(line):
+                if tokens and token[0] in _NO_LINE_START:
+                    tokens[-1] += token  # a closing mark stays with what it closes
+                else:
+                    tokens.append(token)
+            current, width = "", 0.0
+            for token in tokens:
+                w = self.text_width(token, size)
+                if current and width + w > room:
+                    out.append(current.rstrip())
+                    current = token.lstrip()
+                    width = self.text_width(current, size)
+                else:
+                    current, width = current + token, width + w
+            out.append(current)
+        self.set_font(FONT, "", size)
+        return "\n".join(out)
 
     def key_values(self, rows: list[tuple[str, str]]) -> None:
         self.set_font(FONT, "", 9)
@@ -438,6 +464,13 @@ def _wrapmode(cells) -> str:
 
 
 _CJK = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef\uac00-\ud7af]")
+#: a line of Chinese prose in unbreakable pieces: a run of anything but CJK and spaces (a
+#: figure, with its unit after a space; a Latin word; a symbol), one CJK character, a space
+_CJK_RANGE = "\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef"
+_CJK_TOKEN = re.compile(f"[^\\s{_CJK_RANGE}]+(?: (?:%|mV|V|rad|nm|µm|µrad)(?=$|[\\s{_CJK_RANGE}]))?"
+                        f"|[{_CJK_RANGE}]|\\s")
+#: what may not begin a line of Chinese
+_NO_LINE_START = "。，、；：！？）」』”’》"
 
 
 def _mostly_cjk(text: str) -> bool:
