@@ -251,7 +251,9 @@ class ReportPdf(FPDF):
                 self.multi_cell(0, 4.6, self._cjk_lines(text, size), wrapmode="CHAR",
                                 align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
             else:
-                self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
+                long_word = _long_word(text)  # (a checksum): broken here between words
+                self.multi_cell(0, 4.6, self._cjk_lines(text, size) if long_word else text,
+                                wrapmode="CHAR" if long_word else "WORD",
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
     def _cjk_lines(self, text: str, size: float) -> str:
