@@ -248,8 +248,9 @@ class ReportPdf(FPDF):
             if _mostly_cjk(text):  # Chinese prose: broken between characters, not justified
                 # (fpdf2's WORD wrap dropped a word with the fallback font at a line's end:
                 # "随机种子 20261127" printed without its number)
-                self.multi_cell(0, 4.6, self._cjk_lines(text, size), wrapmode="CHAR",
-                                align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+                # (pre-broken lines lost their last Latin word to the same fpdf2 font bug)
+                self.multi_cell(0, 4.6, text, wrapmode="CHAR", align="L",
+                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
             else:
                 long_word = _long_word(text)  # (a checksum): broken here between words
                 self.multi_cell(0, 4.6, self._cjk_lines(text, size) if long_word else text,
@@ -257,9 +258,10 @@ class ReportPdf(FPDF):
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
     def _cjk_lines(self, text: str, size: float) -> str:
-        """Chinese prose broken into lines here, between characters but never inside a
-        figure or a Latin word ("95.4 / 5 %" lost a figure), nor before a closing mark; the
-        lines are joined by newlines for a CHAR-wrapped cell that then breaks nothing."""
+        """Text broken into lines here, never inside a figure or a word shorter than a line,
+        nor before a closing mark; the lines are joined by newlines for a CHAR-wrapped cell
+        that then breaks only a word longer than a line. (Used for Latin text with a
+        checksum; on Chinese prose fpdf2 dropped the last Latin word of a pre-broken line.)"""
         room = self.epw - 2 * self.c_margin - 0.5  # mm, a little spare for rounding
         out = []
         for line in text.split("\n"):
