@@ -36,7 +36,8 @@ VARIANTS = {
 #: what may stay in Latin letters: symbols, units and the names of standards and tools
 SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VIM", "CSV",
            "XLSX", "VDI", "DGQ", "Welch", "Satterthwaite", "AngleBench", "anglebench",
-           "validate", "CNAS", "atan", "dev", "git", "sha"}  # git: the commit of the software
+           "validate", "CNAS", "atan", "dev", "asin", "ADC", "LSB", "git",
+           "sha"}  # git: the commit of the software
 WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a symbol's
 FIGURE = re.compile(r"[+-]?\d+\.\d+(?:\"|°| mV| V| %| rad)")
 

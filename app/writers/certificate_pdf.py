@@ -280,7 +280,10 @@ class ReportPdf(FPDF):
                 self.multi_cell(0, 4.6, self._wrapped(text, width, size), wrapmode="CHAR",
                                 align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
             else:
-                self.multi_cell(0, 4.6, text, wrapmode="CHAR" if _long_word(text) else "WORD",
+                long_word = _long_word(text)  # (a checksum): broken here between words
+                width = self.epw - 2 * self.c_margin - 0.6
+                self.multi_cell(0, 4.6, self._wrapped(text, width, size) if long_word else text,
+                                wrapmode="CHAR" if long_word else "WORD",
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
     def _cells_wrapped(self, rows, widths, size: float, bold_first: bool) -> list[list[str]]:
@@ -523,6 +526,9 @@ def _wrapmode(cells) -> str:
 
 
 _CJK = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef\uac00-\ud7af]")
+#: a line of Chinese prose in unbreakable pieces: a run of anything but CJK and spaces (a
+#: figure, with its unit after a space; a Latin word; a symbol), one CJK character, a space
+_CJK_RANGE = "\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef"
 
 
 def _mostly_cjk(text: str) -> bool:

@@ -202,7 +202,7 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
         lower = conformity.expanded_lower
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
             d = significant_decimals(min(lower, conformity.expanded_arcsec)) or digits
-            value = (f"{conformity.value_arcsec:.{d}f}{unit} "
+            value = (f"{conformity.value_arcsec:.{d}f}{unit}\n"  # a line each: never broken
                      f"{asymmetric_text(lower, conformity.expanded_arcsec, unit, d)}")
         else:
             value = format_uncertain(conformity.value_arcsec, conformity.expanded_arcsec, unit)

@@ -3975,7 +3975,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
-        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），U = {u}（包含概率 {p} %）。{sentence}</translation>
+        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
