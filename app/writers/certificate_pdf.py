@@ -526,9 +526,6 @@ def _wrapmode(cells) -> str:
 
 
 _CJK = re.compile("[\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef\uac00-\ud7af]")
-#: a line of Chinese prose in unbreakable pieces: a run of anything but CJK and spaces (a
-#: figure, with its unit after a space; a Latin word; a symbol), one CJK character, a space
-_CJK_RANGE = "\u2e80-\u9fff\uf900-\ufaff\uff00-\uffef"
 
 
 def _mostly_cjk(text: str) -> bool:
