@@ -75,8 +75,9 @@ class AfterCompensation:
             curve = pg.PlotDataItem(np.asarray(s.x, float), np.asarray(s.y, float),
                                     pen=pg.mkPen(pg.mkColor(*AFTER_COLOUR), width=2,
                                                  style=Qt.PenStyle.DashLine),
-                                    symbol="t", symbolSize=6, symbolBrush=pg.mkColor(*AFTER_COLOUR),
-                                    symbolPen=None, connect="finite")
+                                    symbol="t1" if s.label == "↑" else "t", symbolSize=6,
+                                    symbolBrush=pg.mkColor(*AFTER_COLOUR), symbolPen=None,
+                                    connect="finite")
             curve.setZValue(-1)  # today's run over the other
             plot.plot.addItem(curve)
             plot.legend.addItem(curve, tr("after compensation: {name}").format(name=self.label)
