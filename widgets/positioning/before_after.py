@@ -56,6 +56,8 @@ class AfterCompensation:
             self.line = ""
 
     def _clear_curves(self) -> None:
+        if not self.curves:
+            return
         plot = self._figure_plot
         for curve in self.curves:
             plot.legend.removeItem(curve)
