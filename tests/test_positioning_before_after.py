@@ -8,6 +8,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from models.positioning.analysis import POSITIONING
 from models.positioning.before_after import before_after
@@ -139,3 +141,20 @@ def test_the_rig_after_our_compensation_loses_its_systematic_error(noise):
         assert ba["A"].after == pytest.approx(4 * 0.6 * math.sqrt(2.5), abs=0.05)
         assert ba["R"].after == pytest.approx(ba["R"].before - ba["B"].before, abs=0.1)
     assert ba["A"].after < 0.4 * ba["A"].before
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.floats(-50, 50), min_size=12, max_size=12),
+       st.lists(st.floats(-50, 50), min_size=12, max_size=12))
+def test_a_log_against_itself_changes_nothing_and_swapping_negates(first, second):
+    def of(values):
+        v = iter(values)
+        return log(up={t: [next(v), next(v)] for t in (0, 10, 20)},
+                   down={t: [next(v), next(v)] for t in (0, 10, 20)})
+    a, b = of(first), of(second)
+    same = before_after(a, a)
+    assert all(c.improvement == 0 for c in same.figures)
+    there, back = before_after(a, b), before_after(b, a)
+    for key in ("A", "B", "E", "M", "R"):
+        assert there[key].before == a.iso.figures[key] and there[key].after == b.iso.figures[key]
+        assert there[key].improvement == pytest.approx(-back[key].improvement, abs=1e-12)
