@@ -22,6 +22,7 @@ from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
+from models.positioning.before_after import before_after, log_from_file
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -66,6 +67,10 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("angle unit of the printed summary and of --results "
                                          "(arcsec, urad or mdeg); JSON and certificates keep "
                                          "the unit of the evaluation")))
+    p.add_argument("--compare-after", metavar="AFTER.csv",
+                   help=words(QT_TR_NOOP("positioning: the log measured after compensation "
+                                         "(analysed with the same settings); prints A, B, E, M, "
+                                         "R before → after (JSON: before_after)")))
     add_language_option(p, words)
     p.add_argument("--zenith", action="store_true",
                    help=words(QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
@@ -164,7 +169,12 @@ def run_analyze(argv: list[str]) -> int:
     except SettingsError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
-    inputs = [args.file] + ([args.metadata] if args.metadata else [])
+    inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
+        [args.compare_after] if args.compare_after else [])
+    if args.compare_after and kind.key != "positioning":
+        _say(words(QT_TR_NOOP("anglebench analyze: --compare-after is for the positioning "
+                              "workbench")))
+        return EXIT_BAD_INPUT
     if args.table and kind.correction_table is None:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: --table: {workbench} has no "
                                          "correction table"), workbench=message(kind.title)),
@@ -219,13 +229,25 @@ def run_analyze(argv: list[str]) -> int:
     except ValueError as exc:
         _say(f"{args.file}: {_why(exc, words)}")
         return EXIT_BAD_INPUT
+    comparison = None
+    if args.compare_after:
+        try:
+            comparison = before_after(result, log_from_file(args.compare_after, settings))
+        except (ValueError, OSError) as exc:
+            _say(f"anglebench analyze: --compare-after: {_why(exc, words)}")
+            return EXIT_BAD_INPUT
     if args.json:
-        sys.stdout.write(json.dumps(_finite(kind.to_json(result)), indent=1, ensure_ascii=False)
-                         + "\n")
+        data = kind.to_json(result)
+        if comparison is not None:
+            data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
+        sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
     else:
         say = words
         summary = text_in_unit(rendered(kind.summary(result), say), ANGLE_UNITS[args.unit])
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
+        if comparison is not None:
+            sys.stdout.write(text_in_unit(rendered(comparison.text(Path(args.compare_after).name),
+                                                   say), ANGLE_UNITS[args.unit]) + "\n")
         for warning in getattr(result, "warnings", []):
             warning = text_in_unit(rendered(warning, say), ANGLE_UNITS[args.unit])
             sys.stdout.write(say(QT_TR_NOOP("Warning: {warning}")).format(warning=warning)

@@ -13,6 +13,7 @@ from typing import Any
 
 from PySide6.QtWidgets import QFileDialog, QInputDialog
 
+from models.positioning.before_after import log_from_file
 from models.run_overlay import OVERLAY_FIGURES, overlay_from_file, overlay_from_project_json
 from widgets.i18n import declared, explained, tr
 from widgets.run_overlay import RunOverlay
@@ -57,7 +58,9 @@ class RunOverlayActions:
 
     def overlay_file(self, path: str | Path | None = None) -> bool:
         """Overlay the run in a readings file (analysed with today's settings) or a project
-        file (with its own)."""
+        file (with its own). On the positioning workbench: the log after compensation."""
+        if hasattr(self.window.current, "after_compensation"):
+            return self.compare_after_compensation(path)
         overlay = self.overlay()
         if overlay is None:
             return False
@@ -71,6 +74,21 @@ class RunOverlayActions:
             self.window.tell(tr("Cannot overlay"), explained(exc))
             return False
         overlay.show(run)
+        return True
+
+    def compare_after_compensation(self, path: str | Path | None = None) -> bool:
+        """The positioning log measured after compensation drawn over today's, with A, B, E
+        before → after in the results text (widgets/positioning/before_after.py)."""
+        presenter = self.window.current
+        path = path or self.choose_file()
+        if not path:
+            return False
+        try:
+            after = log_from_file(path, presenter.settings)
+        except (ValueError, OSError) as exc:
+            self.window.tell(tr("Cannot overlay"), explained(exc))
+            return False
+        presenter.after_compensation.show(after, Path(path).name)
         return True
 
     def overlay_record(self) -> bool:
@@ -110,6 +128,9 @@ class RunOverlayActions:
         return True
 
     def remove(self) -> None:
+        after = getattr(self.window.current, "after_compensation", None)
+        if after is not None:
+            after.remove()
         overlay = self.overlays.get(self.window.current.kind.key)
         if overlay is not None:
             overlay.remove()

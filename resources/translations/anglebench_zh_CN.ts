@@ -275,6 +275,31 @@
         <translation>LinuxCNC COMP_FILE 类型 0</translation>
     </message>
     <message>
+        <source>Before → after compensation ({name}, {count} common targets): </source>
+        <extracomment>the figures compared when both logs are bidirectional (A, B, E first: the issue&apos;s three) per direction otherwise</extracomment>
+        <translation>补偿前 → 补偿后（{name}，{count} 个共同目标位置）：</translation>
+    </message>
+    <message>
+        <source>; {count} reading(s) at targets only one log has left out</source>
+        <translation>；仅一份记录含有的目标位置上的 {count} 个读数未计入</translation>
+    </message>
+    <message>
+        <source>the log after compensation has targets in {after}, the log before in {before}: not the same axis set-up</source>
+        <translation>补偿后记录的目标位置单位为 {after}，补偿前记录为 {before}：不是同一轴的设置</translation>
+    </message>
+    <message>
+        <source>the log after compensation has deviations in {after}, the log before in {before}: analyse both in the same deviation unit</source>
+        <translation>补偿后记录的偏差单位为 {after}，补偿前记录为 {before}：请以相同的偏差单位评定两者</translation>
+    </message>
+    <message>
+        <source>the log after compensation has no target in common with the log before: they cannot be compared</source>
+        <translation>补偿后记录与补偿前记录没有共同的目标位置：无法比较</translation>
+    </message>
+    <message>
+        <source>the two logs have no approach direction in common: they cannot be compared</source>
+        <translation>两份记录没有共同的趋近方向：无法比较</translation>
+    </message>
+    <message>
         <source>Mean positional deviation with ±2s</source>
         <translation>平均位置偏差及 ±2s</translation>
     </message>
@@ -3794,6 +3819,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>输出摘要及 --results 所用的角度单位（arcsec、urad 或 mdeg）；JSON 和证书保持评定所用的单位</translation>
     </message>
     <message>
+        <source>positioning: the log measured after compensation (analysed with the same settings); prints A, B, E, M, R before → after (JSON: before_after)</source>
+        <translation>positioning：补偿后测得的记录（以相同设置评定）；输出 A、B、E、M、R 补偿前 → 补偿后（JSON：before_after）</translation>
+    </message>
+    <message>
         <source>theodolite: the vertical column is the zenith angle V (same as --vertical-reading zenith)</source>
         <translation>theodolite：竖直列为天顶距 V（同 --vertical-reading zenith）</translation>
     </message>
@@ -3812,6 +3841,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
         <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --compare-after is for the positioning workbench</source>
+        <translation>anglebench analyze：--compare-after 仅用于定位工作台</translation>
     </message>
     <message>
         <source>anglebench analyze: --table: {workbench} has no correction table</source>
@@ -6043,6 +6076,14 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); save it as CSV UTF-8 and try again</source>
         <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a &quot;zip bomb&quot;) is refused unread.</extracomment>
         <translation>{source}：第 {row} 行：不是 UTF-8 或 GBK 文本（第 {column} 个位置的十六进制字节 {byte}）；请另存为 CSV UTF-8 后重试</translation>
+    </message>
+    <message>
+        <source>after compensation: {name}</source>
+        <translation>补偿后：{name}</translation>
+    </message>
+    <message>
+        <source>Not compared with the log after compensation: {reason}</source>
+        <translation>未与补偿后记录比较：{reason}</translation>
     </message>
 </context>
 </TS>

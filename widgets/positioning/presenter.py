@@ -9,6 +9,7 @@ from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
 from widgets.i18n import explained, tr, translated
+from widgets.positioning.before_after import AfterCompensation
 from widgets.positioning.view import PositioningView
 from widgets.workbench_presenter import WorkbenchPresenter
 
@@ -26,6 +27,8 @@ class PositioningPresenter(WorkbenchPresenter):
 
     def __init__(self, view: PositioningView | None = None, parent=None) -> None:
         super().__init__(POSITIONING, view, parent)
+        # File › Overlay a run…: the log after compensation, compared (app/run_overlay_actions.py)
+        self.after_compensation = AfterCompensation(self)
 
     def show_result(self, result: PositioningResult) -> None:
         self.view.show_figures(*self.in_unit(plots.deviation_figure(result),
