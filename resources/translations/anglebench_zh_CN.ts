@@ -4876,11 +4876,11 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
-        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确三维旋转计算。</translation>
+        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
     </message>
     <message>
         <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator&apos;s vertical along the shaft); the pyramidal correction is that set-up&apos;s, by exact 3-D rotation: the polygon&apos;s own term plus the autocollimator&apos;s roll times the vertical reading&apos;s change.</source>
-        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确三维旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
+        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
     </message>
     <message>
         <source>Set-up assumed: seed 001&apos;s frame (the autocollimator&apos;s vertical along the polygon&apos;s axis, not the shaft&apos;s); the pyramidal correction is the seed&apos;s eqs 3–7.</source>
