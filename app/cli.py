@@ -78,7 +78,8 @@ def _parser(words) -> argparse.ArgumentParser:
     for flag, owners in _flags().items():
         parts = []
         for kind, parameter in owners:
-            choices = (f" ({'|'.join(str(v) for v, _ in parameter.choices)})"
+            # "| " so that a long list wraps (a word of 80 columns cannot)
+            choices = (f" ({'| '.join(str(v) for v, _ in parameter.choices)})"
                        if parameter.choices else "")
             label = declared_text(parameter.label, words)
             explanation = declared_text(parameter.help, words)
