@@ -38,6 +38,7 @@ KEPT = {
     "user", "host", "database", "YYYY", "English", "Chinese", "position", "deviation_arcsec",
     "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
     "SINUMERIK", "FANUC", "HEIDENHAIN", "TNC", "COM", "CMA", "Beckhoff", "TwinCAT", "ISG", "Mach",
+    "ADC", "LSB",
 }
 # widgets whose text is the user's or the result's (readings, names typed, the models'
 # narrative of the result), not the window's
