@@ -143,3 +143,29 @@ def test_print_shows_the_plots_data(window, tmp_path):
     window.print_to(printer)  # … the printout does not print an empty frame
     assert not _inside(plot.main_plot, [plot.raw_curve, plot.model_curve])
     assert (tmp_path / "print.pdf").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+@pytest.mark.parametrize("size", SIZES, ids=lambda s: f"{s[0]}x{s[1]}")
+def test_the_positioning_deviation_plot_shows_every_point(window, size, language):
+    """Mean deviation per target, in English and in Chinese: the envelope of A (a
+    two-point line) and the ±2s bands stay in view when the legend makes its room (the
+    Chinese legend, wider, found no free corner: the view was cut at the lowest mean
+    point, ~−7″, leaving the lower envelope at −9.5″ and the ↑ band's bottom out)."""
+    window.load_all_samples()
+    window.set_language(language)
+    positioning = window.presenter("positioning")
+    window.resize(*size)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    positioning.view.plot_tabs.setCurrentIndex(0)
+    deviation = positioning.view.deviation_plot
+    _settle(deviation)
+    item = deviation.plot.getPlotItem()
+    assert len(deviation.curves) >= 4 and any(len(c.getData()[0]) == 2 for c in deviation.curves)
+    assert not _inside(item, deviation.curves)
+    (x0, x1), (y0, y1) = item.getViewBox().viewRange()
+    for band in deviation._bands:
+        for edge in band.curves:
+            x, y = edge.getData()
+            assert y0 <= y.min() and y.max() <= y1, (y.min(), y.max(), y0, y1)
