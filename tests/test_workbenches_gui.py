@@ -258,3 +258,19 @@ def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp
     qtbot.wait(3000)
     assert fringe.sheet.copy_rows()[:2] == [["0.1", "1.0", ""], ["0.9", "0.2", ""]]
     assert fringe.sheet.row_count == 2 and not fringe.busy
+
+
+def test_polygon_headline_says_the_result_stands_and_what_the_tilt_asks(qtbot, polygon):
+    """#31: "Grade 3 (±1″) met … tilt ψ = 480 exceeds 270" read as pass and fail at once.
+    The tilt's error is removed from the figures (exact 3-D rotation), so the grade's
+    verdict stands; the tilt above the allowed asks for a better seating next time."""
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    result = polygon.result
+    assert result.sets[0].tilt.psi_arcsec > result.allowed_tilt_arcsec  # the sample: ~480″ > 270″
+    headline = polygon.view.verdict.text()
+    assert headline.startswith("Grade 3 (±1\") met: corrected error peak-to-peak")
+    assert "exceeds" not in headline
+    assert "the tilt's error is corrected in these figures" in headline
+    assert (f"tilt ψ = {result.sets[0].tilt.psi_arcsec:.0f}\", above the "
+            f"{result.allowed_tilt_arcsec:.0f}\" allowed — re-seat the polygon") in headline

@@ -593,7 +593,11 @@ POLYGON = AnalysisKind(
                 ptp=f"{r.stats.peak_to_peak:.2f}\""),
         message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
         or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
-        message(QT_TR_NOOP("tilt ψ = {psi} exceeds {allowed}"),
+        # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D
+        # rotation); a tilt above the allowed only asks for a better seating next time
+        message(QT_TR_NOOP("the tilt's error is corrected in these figures (for the set-up "
+                           "stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — "
+                           "re-seat the polygon before the next run"),
                 psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
                 allowed=f"{r.allowed_tilt_arcsec:.0f}\""))),
     headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
