@@ -15,8 +15,8 @@ from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 from widgets.settings_form import SettingsForm
 
-#: the swept curves' colours, told apart at a glance: the first five (a default sweep)
-#: at least ΔE*ab 67 apart (pyqtgraph's 9 hues gave ω = 90° and 135° two greens 32 apart)
+# the swept curves' colours, told apart at a glance: the first five (a default sweep)
+# at least ΔE*ab 67 apart (pyqtgraph's 9 hues gave ω = 90° and 135° two greens 32 apart)
 PALETTE = ("#1f5fbf", "#e07000", "#1b9e3e", "#c2185b", "#000000", "#8c564b", "#17becf",
            "#7f7f7f", "#bcbd22", "#9467bd")
 

@@ -171,10 +171,10 @@ class WorkbenchView(QWidget):
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(splitter)
 
-    #: rows the readings table keeps in sight before the set-up below it gets its full
-    #: height (at 1280×720 the set-up took it: 3 rows of positioning readings were left)
+    # rows the readings table keeps in sight before the set-up below it gets its full
+    # height (at 1280×720 the set-up took it: 3 rows of positioning readings were left)
     READINGS_ROWS = 12
-    #: the least the set-up keeps (it scrolls below its full height)
+    # the least the set-up keeps (it scrolls below its full height)
     SETUP_MIN_HEIGHT = 120
 
     def _share_left_pane(self, height: int) -> None:
