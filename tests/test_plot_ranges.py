@@ -214,3 +214,37 @@ def test_what_if_legends_keep_every_entry_off_the_curves_in_distinct_colours(win
             assert vb.rect().contains(box)
             assert not _inside(item, drawn if plot is sim.top_plot else
                                [c for c in curves if c.getData()[0] is not None])
+
+
+def _wheel(widget, steps: int) -> None:
+    from PySide6.QtCore import QPoint, QPointF, Qt
+    from PySide6.QtGui import QWheelEvent
+
+    target = widget.viewport()
+    centre = QPointF(target.width() / 2, target.height() / 2)
+    event = QWheelEvent(centre, QPointF(target.mapToGlobal(centre.toPoint())), QPoint(0, 0),
+                        QPoint(0, 120 * steps), Qt.MouseButton.NoButton,
+                        Qt.KeyboardModifier.NoModifier, Qt.ScrollPhase.NoScrollPhase, False)
+    QApplication.sendEvent(target, event)
+
+
+def test_the_wheel_scrolls_past_a_plot_and_zooms_it_once_clicked(window):
+    """#31: scrolling the panel with the wheel zoomed the plot under the pointer."""
+    window.load_all_samples()
+    window.resize(1280, 720)
+    window.show()
+    positioning = window.presenter("positioning")
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    plot = positioning.view.deviation_plot.plot
+    _settle(plot)
+    vb = plot.getPlotItem().getViewBox()
+    before = np.array(vb.viewRange())
+    window.tabs.setFocus()
+    _wheel(plot, -5)
+    _settle(plot)
+    assert np.allclose(vb.viewRange(), before)  # not focused: no zoom
+    plot.setFocus()
+    QApplication.processEvents()
+    _wheel(plot, -5)
+    _settle(plot)
+    assert not np.allclose(vb.viewRange(), before)  # clicked (focused): the wheel zooms
