@@ -161,15 +161,19 @@ class CertificatePresenter:
         doubt = kind.certificate_doubt(result) if kind.certificate_doubt else ""
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False
-        entered = self.edit_details(self.details(kind.key))
-        if entered is None:
-            return False
-        self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
-        draft = draft_reasons(entered)
+        shown = self.details(kind.key)
+        while True:
+            entered = self.edit_details(shown)
+            if entered is None:
+                return False
+            self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
+            draft = draft_reasons(entered)
+            # "No, not a draft": back to the dialog, what was typed kept, to fill in the rest
+            if not draft or self.view.confirm_draft(draft):
+                break
+            shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
-        if draft and not self.view.confirm_draft(draft):
-            return False
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:

@@ -155,3 +155,20 @@ def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(win
     window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
     window.export_certificate()
     assert opened  # confirmed: on to the details
+
+
+def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
+    """#31: the headers were cut ("Stated as (U95, MPE, u", "er (reading, from face 1")
+    and one row was in sight."""
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.show()
+    table = dialog.standards
+    header = table.horizontalHeader()
+    metrics = header.fontMetrics()
+    for column in range(table.columnCount()):
+        text = table.horizontalHeaderItem(column).text()
+        widest = max(metrics.horizontalAdvance(line) for line in text.split("\n"))
+        assert header.sectionSize(column) >= widest, (text, header.sectionSize(column), widest)
+    assert table.viewport().height() >= 3 * table.verticalHeader().defaultSectionSize()
+    assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"

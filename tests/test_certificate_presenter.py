@@ -156,11 +156,15 @@ def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(part
                                                                            tmp_path):
     presenter, view, metadata, _ = parts
     kind, result = _theodolite(samples_dir)
-    view.edit_certificate_details.return_value = CertificateMetadata(
-        lab_name="Angle Lab", customer_name="Acme", operator="Li")
+    typed = CertificateMetadata(certificate_number="AB/9", lab_name="Angle Lab",
+                                customer_name="Acme", operator="Li")
+    # "No, not a draft", then the dialog again (#31: "No" closed it), then Cancel
+    view.edit_certificate_details.side_effect = [typed, None]
     view.confirm_draft.return_value = False
     assert not presenter.export_certificate(kind, result, {}, "run.csv")
     assert "reference standards" in view.confirm_draft.call_args.args[0]
+    assert view.edit_certificate_details.call_count == 2
+    assert view.edit_certificate_details.call_args.args[0] == typed  # the number kept too
     view.choose_save_path.assert_not_called()
     offered = presenter.details("polygon")  # nothing typed for the polygon yet
     assert (offered.lab_name, offered.customer_name, offered.operator) == \

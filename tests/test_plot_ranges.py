@@ -143,3 +143,108 @@ def test_print_shows_the_plots_data(window, tmp_path):
     window.print_to(printer)  # … the printout does not print an empty frame
     assert not _inside(plot.main_plot, [plot.raw_curve, plot.model_curve])
     assert (tmp_path / "print.pdf").stat().st_size > 10_000
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+@pytest.mark.parametrize("size", SIZES, ids=lambda s: f"{s[0]}x{s[1]}")
+def test_the_positioning_deviation_plot_shows_every_point(window, size, language):
+    """Mean deviation per target, in English and in Chinese: the envelope of A (a
+    two-point line) and the ±2s bands stay in view when the legend makes its room (the
+    Chinese legend, wider, found no free corner: the view was cut at the lowest mean
+    point, ~−7″, leaving the lower envelope at −9.5″ and the ↑ band's bottom out)."""
+    window.load_all_samples()
+    window.set_language(language)
+    positioning = window.presenter("positioning")
+    window.resize(*size)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    positioning.view.plot_tabs.setCurrentIndex(0)
+    deviation = positioning.view.deviation_plot
+    _settle(deviation)
+    item = deviation.plot.getPlotItem()
+    assert len(deviation.curves) >= 4 and any(len(c.getData()[0]) == 2 for c in deviation.curves)
+    assert not _inside(item, deviation.curves)
+    (x0, x1), (y0, y1) = item.getViewBox().viewRange()
+    for band in deviation._bands:
+        for edge in band.curves:
+            x, y = edge.getData()
+            assert y0 <= y.min() and y.max() <= y1, (y.min(), y.max(), y0, y1)
+
+
+def _lab(rgb) -> np.ndarray:
+    """CIE L*a*b* (D65) of an sRGB colour: distances in it are differences as seen."""
+    c = np.asarray(rgb, float) / 255
+    c = np.where(c > 0.04045, ((c + 0.055) / 1.055) ** 2.4, c / 12.92)
+    xyz = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722],
+                    [0.0193, 0.1192, 0.9505]]) @ c / np.array([0.9505, 1.0, 1.089])
+    f = np.where(xyz > 0.008856, np.cbrt(xyz), 7.787 * xyz + 16 / 116)
+    return np.array([116 * f[1] - 16, 500 * (f[0] - f[1]), 200 * (f[1] - f[2])])
+
+
+@pytest.mark.parametrize("key", ["polygon", "theodolite"])
+def test_what_if_legends_keep_every_entry_off_the_curves_in_distinct_colours(window, key):
+    """#31: at 1280×720 the What-if legends covered the curves and lost their last entry;
+    ω = 90° and 135° were two greens."""
+    presenter = window.presenter(key)
+    sim = presenter.view.simulation
+    window.resize(1280, 720)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    index = next(i for i in range(presenter.view.plot_tabs.count())
+                 if presenter.view.plot_widget(i) is sim)
+    presenter.view.plot_tabs.setCurrentIndex(index)
+    _settle(sim)
+    sim.update_curves()
+    _settle(sim)
+    drawn = [c for c in sim.top_curves if len(c.getData()[0] if c.getData()[0] is not None else [])]
+    assert len(drawn) == 5
+    colours = [_lab(c.opts["pen"].color().getRgb()[:3]) for c in drawn]
+    closest = min(np.linalg.norm(a - b) for i, a in enumerate(colours) for b in colours[i + 1:])
+    assert closest > 50, closest  # ΔE*ab; pyqtgraph's 9 hues: 90° and 135° were 32 apart
+    for plot, curves in ((sim.top_plot, sim.top_curves), (sim.bottom_plot, sim.bottom_curves)):
+        item = plot.getPlotItem()
+        legend = item.legend
+        named = [label.text for _, label in legend.items]
+        assert len(named) == 5  # one entry a drawn curve
+        if item.legend_corner == "above":  # every entry in the title line, none lost
+            assert all(name.split(" = ")[1] in item.titleLabel.text for name in named)
+        else:  # inside: the whole legend in the plot, over no curve's point
+            vb = item.getViewBox()
+            box = legend.mapRectToItem(vb, legend.boundingRect())
+            assert vb.rect().contains(box)
+            assert not _inside(item, drawn if plot is sim.top_plot else
+                               [c for c in curves if c.getData()[0] is not None])
+
+
+def _wheel(widget, steps: int) -> None:
+    from PySide6.QtCore import QPoint, QPointF, Qt
+    from PySide6.QtGui import QWheelEvent
+
+    target = widget.viewport()
+    centre = QPointF(target.width() / 2, target.height() / 2)
+    event = QWheelEvent(centre, QPointF(target.mapToGlobal(centre.toPoint())), QPoint(0, 0),
+                        QPoint(0, 120 * steps), Qt.MouseButton.NoButton,
+                        Qt.KeyboardModifier.NoModifier, Qt.ScrollPhase.NoScrollPhase, False)
+    QApplication.sendEvent(target, event)
+
+
+def test_the_wheel_scrolls_past_a_plot_and_zooms_it_once_clicked(window):
+    """#31: scrolling the panel with the wheel zoomed the plot under the pointer."""
+    window.load_all_samples()
+    window.resize(1280, 720)
+    window.show()
+    positioning = window.presenter("positioning")
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    plot = positioning.view.deviation_plot.plot
+    _settle(plot)
+    vb = plot.getPlotItem().getViewBox()
+    before = np.array(vb.viewRange())
+    window.tabs.setFocus()
+    _wheel(plot, -5)
+    _settle(plot)
+    assert np.allclose(vb.viewRange(), before)  # not focused: no zoom
+    plot.setFocus()
+    QApplication.processEvents()
+    _wheel(plot, -5)
+    _settle(plot)
+    assert not np.allclose(vb.viewRange(), before)  # clicked (focused): the wheel zooms

@@ -209,7 +209,7 @@ def test_cli_sets_the_frame_and_the_measured_roll(tmp_path, capsys):
 def test_certificate_and_summary_state_the_set_up():
     rig = PolygonRig(12, encoder_error(12), psi_arcsec=300.0, omega_deg=10.0)
     for setting, words in (("levelled", "autocollimator and rotary axis levelled"),
-                           ("polygon", "seed 001's frame")):
+                           ("polygon", "vertical along the polygon's axis, rolled")):
         result = analyze(rig.set_rows(), ac_alignment=setting)
         assert words in POLYGON.summary(result)
         doc = polygon_certificate(result, CertificateMetadata())

@@ -132,3 +132,40 @@ def test_an_issued_certificate_prints_page_for_page(window, samples_dir, tmp_pat
     printed.unlink()
     dialog.buttons["print"].click()  # cancelled: nothing printed, nothing said
     assert not printed.exists() and told == []
+
+
+def test_the_history_is_labelled_and_empty_says_so_in_the_window_language(qtbot):
+    """#31: before a certificate was picked the history showed an unlabelled empty
+    drop-down and a meaningless 0.2–0.8 axis; in Chinese its months were "Feb, Mar"."""
+    import datetime as dt
+
+    from widgets.i18n import install_language
+    from widgets.register_window import EPOCH, RegisterWindow
+
+    view = RegisterWindow()
+    qtbot.addWidget(view)
+    view.show()
+    assert view.history_empty.isVisible() and not view.history_plot.isVisible()
+    assert "select a certificate" in view.history_empty.text()
+    assert not view.figure.isVisible() and not view.figure_caption.isVisible()
+    day = dt.date(2026, 2, 1).toordinal()
+    view.show_history("SN-1", {"corrected peak-to-peak (\")": ([day, day + 60], [0.8, 0.9])},
+                      ["2026-02-01", "2026-04-02"], "2027-04-02", 365)
+    assert view.history_plot.isVisible() and not view.history_empty.isVisible()
+    assert view.figure.isVisible() and view.figure_caption.text() == "figure"
+    assert view.figure.currentText() == "corrected peak-to-peak (\")"
+    axis = view.history_plot.getAxis("bottom")
+    february = (day - EPOCH) * 86400.0
+    months = [february + k * 29 * 86400.0 for k in range(3)]
+    # the zoom level pyqtgraph writes months at ("%b")
+    axis.zoomLevel = next(level for level in axis.zoomLevels.values()
+                          if level.tickSpecs[0].format == "%b")
+    english = axis.tickStrings(months, 1.0, axis.zoomLevel.tickSpecs[0].spacing)
+    assert any("Feb" in text for text in english), english
+    install_language("zh_CN")
+    try:
+        chinese = axis.tickStrings(months, 1.0, axis.zoomLevel.tickSpecs[0].spacing)
+    finally:
+        install_language("en")
+    assert any("2月" in text for text in chinese) and not any(
+        name in text for text in chinese for name in ("Feb", "Mar", "Apr")), chinese

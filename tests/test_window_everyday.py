@@ -100,7 +100,7 @@ def test_results_read_at_a_glance(window):
     polygon = window.presenter("polygon")
     view = polygon.view
     assert view.verdict.text().startswith("Grade 3 (±1\") met")
-    assert "exceeds" in view.verdict.text()
+    assert "above the 270\" allowed — re-seat the polygon" in view.verdict.text()
     assert view.warnings.text().count("⚠") == len(polygon.result.warnings)
     names = [view.figures.item(r, 0).text() for r in range(view.figures.rowCount())]
     assert names == ["corrected peak-to-peak (\")", "pyramidal tilt ψ (\")"]

@@ -55,7 +55,7 @@ def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     alignment.setCurrentIndex(alignment.findData("polygon"))  # seed 001's frame
     qtbot.waitUntil(lambda: polygon.result.ac_alignment == "polygon")
     assert "exceeds the 239\" allowed" in polygon.view.warnings.text()
-    assert "seed 001's frame" in polygon.view.summary.toPlainText()
+    assert "the frame of Tian et al. 2015" in polygon.view.summary.toPlainText()
     zero = polygon.view.settings.field("zero_face")
     zero.setValue(5)
     qtbot.waitUntil(lambda: polygon.result.zero_face == 5)
@@ -175,9 +175,25 @@ def test_closure_limit_table_setting(qtbot, polygon):
     qtbot.waitUntil(lambda: not polygon.result.valid)  # sample closure 0.12" > 0.1"
 
 
+def test_what_if_starts_in_the_main_set_up_and_names_it_plainly(polygon):
+    """#31: the What-if tab started in the paper's frame ("polygon's axis (seed 001's
+    frame)") while the workbench starts levelled; its sweep menu cited "Fig 3" of no paper."""
+    sim = polygon.view.simulation
+    main = polygon.view.settings.field("ac_alignment")
+    assert sim.form.values()["ac_alignment"] == main.currentData() == "levelled"
+    alignment = sim.form.field("ac_alignment")
+    texts = [alignment.itemText(i) for i in range(alignment.count())]
+    assert texts == [main.itemText(i) for i in range(main.count())]
+    assert texts[1] == "vertical along the polygon's axis (rolled with the tilt)"
+    sweep = sim.form.field("sweep")
+    assert not any("Fig" in sweep.itemText(i) for i in range(sweep.count()))
+    assert "Fig. 3 of Tian et al. 2015" in sweep.toolTip()
+    assert not any("seed" in text for text in texts + [main.toolTip()])
+
+
 def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     sim = polygon.view.simulation
-    sim.form.set_values({"psi_arcsec": 600.0, "sweep": "omega_deg"})
+    sim.form.set_values({"psi_arcsec": 600.0, "sweep": "omega_deg", "ac_alignment": "polygon"})
     sim.sweep_values.setText("0, 90")
     sim.update_curves()
     x, at_0 = sim.top_curves[0].getData()
@@ -242,3 +258,19 @@ def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp
     qtbot.wait(3000)
     assert fringe.sheet.copy_rows()[:2] == [["0.1", "1.0", ""], ["0.9", "0.2", ""]]
     assert fringe.sheet.row_count == 2 and not fringe.busy
+
+
+def test_polygon_headline_says_the_result_stands_and_what_the_tilt_asks(qtbot, polygon):
+    """#31: "Grade 3 (±1″) met … tilt ψ = 480 exceeds 270" read as pass and fail at once.
+    The tilt's error is removed from the figures (exact 3-D rotation), so the grade's
+    verdict stands; the tilt above the allowed asks for a better seating next time."""
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    result = polygon.result
+    assert result.sets[0].tilt.psi_arcsec > result.allowed_tilt_arcsec  # the sample: ~480″ > 270″
+    headline = polygon.view.verdict.text()
+    assert headline.startswith("Grade 3 (±1\") met: corrected error peak-to-peak")
+    assert "exceeds" not in headline
+    assert "the tilt's error is corrected in these figures" in headline
+    assert (f"tilt ψ = {result.sets[0].tilt.psi_arcsec:.0f}\", above the "
+            f"{result.allowed_tilt_arcsec:.0f}\" allowed — re-seat the polygon") in headline

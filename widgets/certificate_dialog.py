@@ -88,6 +88,15 @@ _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOO
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
+def _two_lines(text: str) -> str:
+    """A long header broken at the space nearest its middle."""
+    spaces = [i for i, c in enumerate(text) if c == " "]
+    if len(text) < 16 or not spaces:
+        return text
+    cut = min(spaces, key=lambda i: abs(i - len(text) / 2))
+    return f"{text[:cut]}\n{text[cut + 1:]}"
+
+
 class CertificateDialog(QDialog):
     """Edit certificate metadata; ``lab_defaults_saved`` carries the lab-wide fields."""
 
@@ -164,8 +173,17 @@ class CertificateDialog(QDialog):
         standards_box = QGroupBox(tr("Reference standards (their uncertainty enters the budget "
                                      "per reading)"))
         self.standards = QTableWidget(0, len(_STANDARD_COLUMNS))
-        self.standards.setHorizontalHeaderLabels([tr(h) for h in _STANDARD_HEADERS])
-        self.standards.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        # headers in two lines where long, every column as wide as its header (stretched,
+        # they were cut: "Stated as (U95, MPE, u"), three rows in sight (#31)
+        self.standards.setHorizontalHeaderLabels([_two_lines(tr(h)) for h in _STANDARD_HEADERS])
+        self.standards.horizontalHeader().setSectionResizeMode(
+            QHeaderView.ResizeMode.ResizeToContents)
+        self.standards.horizontalHeader().setStretchLastSection(True)
+        self.standards.setMinimumHeight(
+            self.standards.horizontalHeader().sizeHint().height()
+            + 3 * self.standards.verticalHeader().defaultSectionSize()
+            + self.standards.horizontalScrollBar().sizeHint().height()
+            + 2 * self.standards.frameWidth())
         self.standards.itemChanged.connect(lambda item: item.setBackground(Qt.GlobalColor.white))
         buttons = QHBoxLayout()
         add, remove = QPushButton(tr("Add standard")), QPushButton(tr("Remove standard"))

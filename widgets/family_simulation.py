@@ -7,11 +7,18 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QVBoxLayout, QWidget
 
 from widgets.i18n import live, on_language_change, tr
+from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 from widgets.settings_form import SettingsForm
+
+# the swept curves' colours, told apart at a glance: the first five (a default sweep)
+# at least ΔE*ab 67 apart (pyqtgraph's 9 hues gave ω = 90° and 135° two greens 32 apart)
+PALETTE = ("#1f5fbf", "#e07000", "#1b9e3e", "#c2185b", "#000000", "#8c564b", "#17becf",
+           "#7f7f7f", "#bcbd22", "#9467bd")
 
 # (parameters) -> (x, top curve, bottom curve)
 FamilyModel = Callable[[dict], tuple[np.ndarray, np.ndarray, np.ndarray]]
@@ -90,7 +97,10 @@ class FamilySimulation(QWidget):
         sweep = params["sweep"]
         values = self.swept_values() or [params[sweep]]
         while len(self.top_curves) < len(values):
-            pen = pg.mkPen(pg.intColor(len(self.top_curves), hues=9), width=2)
+            index = len(self.top_curves)  # a colour each (hues 9 apart: ω 90° and 135° both
+            pen = pg.mkPen(PALETTE[index % len(PALETTE)], width=2,  # green), dashed past ten
+                           style=Qt.PenStyle.DashLine if index >= len(PALETTE) else
+                           Qt.PenStyle.SolidLine)
             self.top_curves.append(self.top_plot.plot(pen=pen, name=" "))
             self.bottom_curves.append(self.bottom_plot.plot(pen=pen, name=" "))
         symbol, unit = self.sweeps[sweep]
@@ -103,6 +113,17 @@ class FamilySimulation(QWidget):
             top.setData(x, y_top)
             bottom.setData(x, y_bottom)
             for plot, curve in ((self.top_plot, top), (self.bottom_plot, bottom)):
-                label = plot.getPlotItem().legend.getLabel(curve)
-                if label is not None:
-                    label.setText(f"{symbol} = {values[i]:g}{unit}")
+                legend = plot.getPlotItem().legend
+                label = legend.getLabel(curve)
+                if label is None:
+                    legend.addItem(curve, " ")
+                    label = legend.getLabel(curve)
+                label.setText(f"{symbol} = {values[i]:g}{unit}")
+        for plot, curves in ((self.top_plot, self.top_curves),
+                             (self.bottom_plot, self.bottom_curves)):
+            item = plot.getPlotItem()
+            for curve in curves[len(values):]:  # an unused curve: out of the legend
+                item.legend.removeItem(curve)
+            # in a free corner, or above the plot when it is cramped (at 1280×720 the
+            # legend covered the curves and lost its last entry)
+            place_legend(item, item.legend)

@@ -29,7 +29,8 @@ from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, 
 
 from models.messages import TRANSLATIONS_DIR, declared_text, reason_of, rendered
 
-__all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "declared", "explained", "install_language", "live",
+__all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "current_language", "declared", "explained",
+           "install_language", "live",
            "on_language_change", "resolve_language", "tr", "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
@@ -138,6 +139,11 @@ def retranslate() -> None:
 # -- the language -----------------------------------------------------------------
 _installed: list[QTranslator] = []
 _current = ["en"]  # the language installed (English: no translator)
+
+
+def current_language() -> str:
+    """The language installed: ``en`` or ``zh_CN``."""
+    return _current[0]
 
 
 def resolve_language(choice: str) -> str:

@@ -40,6 +40,29 @@ def _data(plot_item) -> tuple[np.ndarray, np.ndarray]:
     return x[ok], y[ok]
 
 
+def _extent_y(plot_item) -> tuple[float, float] | None:
+    """The lowest and highest y of everything drawn: the reference lines that ``_data``
+    leaves out (an envelope) and the shaded ±bands too. Room made for the legend keeps
+    them in view (the positioning plot in Chinese, whose wider legend had no free corner,
+    cut off its lower envelope of A and the bottom of a band)."""
+    ys = []
+    for item in plot_item.listDataItems():
+        y = item.yData if hasattr(item, "yData") else item.getData()[1]
+        if y is not None and len(y):
+            ys.append(np.asarray(y, float))
+    for item in plot_item.items:
+        if isinstance(item, pg.FillBetweenItem):
+            for curve in getattr(item, "curves", None) or ():
+                y = curve.getData()[1]
+                if y is not None and len(y):
+                    ys.append(np.asarray(y, float))
+    if not ys:
+        return None
+    y = np.concatenate(ys)
+    y = y[np.isfinite(y)]
+    return (float(y.min()), float(y.max())) if y.size else None
+
+
 def _entry_html(sample, label) -> str:
     opts = sample.item.opts
     if opts.get("pen") is not None:
@@ -86,8 +109,10 @@ def place_legend(plot_item, legend) -> str:
     (x0, x1), (y0, y1) = vb.viewRange()
     if vb.state["autoRange"][0] or not (x0 <= x.min() and x.max() <= x1):
         x0, x1 = float(x.min()), float(x.max())
-    if vb.state["autoRange"][1] or not (y0 <= y.min() and y.max() <= y1):
-        y0, y1 = float(y.min()), float(y.max())
+    low, high = _extent_y(plot_item) or (float(y.min()), float(y.max()))
+    low, high = min(low, float(y.min())), max(high, float(y.max()))
+    if vb.state["autoRange"][1] or not (y0 <= low and high <= y1):
+        y0, y1 = low, high
     width, height = max(vb.width(), 1.0), max(vb.height(), 1.0)
     locked = bool(vb.state.get("aspectLocked"))
     if locked:  # 1:1 (a Lissajous figure): the data's box widened to the plot's shape

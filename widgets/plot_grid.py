@@ -38,3 +38,22 @@ def show_grid(plot, x: bool = True, y: bool = True) -> None:
     for name in ("left", "bottom"):
         plot.getAxis(name).setStyle(maxTickLevel=GRID_TICK_LEVELS)
 
+
+
+# The mouse wheel zooms a plot only once it has been clicked (it has the keyboard focus):
+# scrolling a panel with the wheel passed over a plot and zoomed it away (to 0–20000°,
+# #31). Unfocused, the wheel goes on to the panel, which scrolls. A zoom is undone with
+# the plot menu's View All (or the "A" button in its corner).
+_zoom_by_wheel = pg.ViewBox.wheelEvent
+
+
+def _wheel_zooms_a_focused_plot(self, ev, axis=None):
+    scene = self.scene()
+    views = scene.views() if scene is not None else []
+    if views and not any(view.hasFocus() for view in views):
+        ev.ignore()
+        return
+    _zoom_by_wheel(self, ev, axis)
+
+
+pg.ViewBox.wheelEvent = _wheel_zooms_a_focused_plot

@@ -8,7 +8,7 @@ from __future__ import annotations
 import datetime as dt
 
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QLocale, Qt
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
@@ -27,13 +27,40 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from widgets.i18n import declared, live, tr
+from widgets.i18n import current_language, declared, live, on_language_change, tr
 from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
 from widgets.screen_fit import fit_to_screen
 from widgets.text_table import show_text_table
 
 EPOCH = dt.date(1970, 1, 1).toordinal()
+_MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
+
+
+class LocalDateAxis(pg.DateAxisItem):
+    """pyqtgraph's date axis, its month names in the window's language (it writes them
+    with the C locale's strftime: "Feb, Mar" in a Chinese window)."""
+
+    def tickStrings(self, values, scale, spacing):  # noqa: N802 - pyqtgraph's name
+        strings = super().tickStrings(values, scale, spacing)
+        if current_language() == "en":
+            return strings
+        locale = QLocale(current_language())
+        names = {english: locale.monthName(number, QLocale.FormatType.ShortFormat)
+                 for number, english in enumerate(_MONTHS, start=1)}
+        out = []
+        for text in strings:
+            for english, local in names.items():
+                text = text.replace(english, local)
+            out.append(text)
+        return out
+
+    def picture_again(self) -> None:
+        """Written again (the window's language changed)."""
+        self.picture = None
+        self.update()
+
+
 COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7f8c8d")
 
 
@@ -76,7 +103,8 @@ class RegisterWindow(QDialog):
         self.history_title = QLabel()
         live(self.history_title.setText, tr("Select a certificate and press History"))
         self.history_plot = pg.PlotWidget(background="w", axisItems={
-            "bottom": pg.DateAxisItem(orientation="bottom")})
+            "bottom": LocalDateAxis(orientation="bottom")})
+        on_language_change(self, self.history_plot.getAxis("bottom").picture_again)
         show_grid(self.history_plot)
         self.history_plot.getAxis("left").enableAutoSIPrefix(False)
         self.history_legend = self.history_plot.addLegend(offset=(10, 10))
@@ -89,6 +117,17 @@ class RegisterWindow(QDialog):
         today = dt.date.today().toordinal() - EPOCH  # empty: the year up to today, in dates
         self.history_plot.setXRange((today - 365) * 86400.0, (today + 30) * 86400.0, padding=0)
         localise_plot_menus(self.history_plot)
+        # before any history: a sentence instead of an empty plot with a 0–1 axis
+        self.history_empty = QLabel()
+        live(self.history_empty.setText, tr("No history shown yet: select a certificate above "
+                                            "and press History (or double-click it) to see its "
+                                            "instrument's figures over time and its due date."))
+        self.history_empty.setWordWrap(True)
+        self.history_empty.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.history_empty.setEnabled(False)
+        self.history_plot.hide()
+        self.figure_caption = QLabel()  # the figure's drop-down, labelled
+        live(self.figure_caption.setText, tr("figure"))
         self.figure = QComboBox()  # which headline figure the history plots
         self.figure.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
         live(self.figure.setToolTip, tr("The figure of the certificates to follow over time"))
@@ -126,7 +165,10 @@ class RegisterWindow(QDialog):
         lower_layout.setContentsMargins(0, 0, 0, 0)
         row = QHBoxLayout()
         row.addWidget(self.history_title, 1)
+        row.addWidget(self.figure_caption)
         row.addWidget(self.figure)
+        self.figure_caption.hide()
+        self.figure.hide()  # shown with a history (empty, it was a blank drop-down)
         interval_caption = QLabel()
         live(interval_caption.setText, tr("calibration interval"))
         row.addWidget(interval_caption)
@@ -134,6 +176,7 @@ class RegisterWindow(QDialog):
         row.addWidget(self.interval_button)
         lower_layout.addLayout(row)
         lower_layout.addWidget(self.history_plot, 1)
+        lower_layout.addWidget(self.history_empty, 1)
         splitter = QSplitter(Qt.Orientation.Vertical)
         splitter.addWidget(upper)
         splitter.addWidget(lower)
@@ -182,6 +225,10 @@ class RegisterWindow(QDialog):
         if chosen in series:
             self.figure.setCurrentIndex(self.figure.findData(chosen))
         self.figure.blockSignals(False)
+        for widget in (self.figure_caption, self.figure):
+            widget.setVisible(bool(series))
+        self.history_plot.show()
+        self.history_empty.hide()
         self._draw_history(self.figure.currentData() or "")
         ends = [x for xs, _ in series.values() for x in xs]
         if due:

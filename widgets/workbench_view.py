@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import json
 
-from PySide6.QtCore import QEventLoop, QSettings, Qt, QTimer
+from PySide6.QtCore import QEvent, QEventLoop, QObject, QSettings, Qt, QTimer
 from PySide6.QtGui import QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -35,6 +35,20 @@ from widgets.i18n import Tr, declared, live, on_language_change, tr
 from widgets.plot_image import add_image_actions, plot_panels
 from widgets.readings_table_view import ReadingsTableView
 from widgets.settings_form import SettingsForm
+
+
+class _Resized(QObject):
+    """Calls ``callback(height)`` whenever ``widget`` is resized."""
+
+    def __init__(self, widget: QWidget, callback) -> None:
+        super().__init__(widget)
+        self._callback = callback
+        widget.installEventFilter(self)
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 - Qt's name
+        if event.type() == QEvent.Type.Resize:
+            self._callback(event.size().height())
+        return False
 
 
 class WorkbenchView(QWidget):
@@ -115,8 +129,15 @@ class WorkbenchView(QWidget):
         live(setup_box.setTitle, tr("Set-up"))
         setup_layout = QVBoxLayout(setup_box)
         setup_layout.setContentsMargins(2, 2, 2, 2)
-        setup_layout.addWidget(self.settings)
+        # the set-up scrolls when the window is short: the readings keep their rows
+        self.settings_area = QScrollArea()
+        self.settings_area.setWidgetResizable(True)
+        self.settings_area.setFrameShape(QFrame.Shape.NoFrame)
+        self.settings_area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.settings_area.setWidget(self.settings)
+        setup_layout.addWidget(self.settings_area)
         left_layout.addWidget(setup_box)
+        _Resized(left, self._share_left_pane)
 
         right = QWidget()
         right_layout = QVBoxLayout(right)
@@ -149,6 +170,26 @@ class WorkbenchView(QWidget):
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(splitter)
+
+    # rows the readings table keeps in sight before the set-up below it gets its full
+    # height (at 1280×720 the set-up took it: 3 rows of positioning readings were left)
+    READINGS_ROWS = 12
+    # the least the set-up keeps (it scrolls below its full height)
+    SETUP_MIN_HEIGHT = 120
+
+    def _share_left_pane(self, height: int) -> None:
+        """Share the left pane's height: the readings first (READINGS_ROWS rows), the
+        set-up the rest up to its full height, scrolling when it has less."""
+        header = self.table.horizontalHeader().sizeHint().height()
+        rows = self.table.verticalHeader().defaultSectionSize() * self.READINGS_ROWS
+        readings = header + rows + 2 * self.table.frameWidth() + \
+            self.readings_label.sizeHint().height() + 12
+        full = self.settings.sizeHint().height() + 2
+        # as wide as the form (the pane kept its width: the polygon's last column in sight)
+        self.settings_area.setMinimumWidth(self.settings.minimumSizeHint().width()
+                                           + self.settings_area.verticalScrollBar().sizeHint().width())
+        self.settings_area.setFixedHeight(
+            max(min(full, self.SETUP_MIN_HEIGHT), min(full, height - readings - 40)))
 
     # -- the calls the presenter makes (all it knows of the view) ----------------
     def subscribe(self, presenter) -> None:

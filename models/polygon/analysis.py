@@ -87,11 +87,12 @@ PARAMETERS = (
                    "in the budget, or spread it linearly over the set and remove it (stated on "
                    "the certificate)"),
     Parameter("ac_alignment", "autocollimator set-up", "choice", "levelled",
-              choices=(("levelled", "levelled (AC and rotary axis levelled)"),
-                       ("polygon", "polygon's axis (seed 001's frame)")),
+              choices=(("levelled", "levelled with the rotary axis"),
+                       ("polygon", "vertical along the polygon's axis (rolled with the tilt)")),
               help="How the autocollimator was set: levelled with the rotary axis (the usual "
                    "lab set-up: its vertical along the shaft), or with its vertical along the "
-                   "polygon's axis (seed 001's frame). The pyramidal correction is that "
+                   "polygon's own axis, rolled with its tilt (the frame of the method's paper, "
+                   "Tian et al. 2015). The pyramidal correction is that "
                    "frame's; the certificate states it. Tell them apart with a tilt test: "
                    "tilt the polygon on its seat and watch the horizontal reading"),
     Parameter("ac_roll_arcmin", "AC roll ≤", "float", 1.0, "′", 0.0, 60.0, decimals=1,
@@ -352,11 +353,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     allowed_seed = allowed_tilt_arcsec(grade, SHORT_FORM_COEFFICIENT)
     allowed_how = message(
         QT_TR_NOOP("levelled set-up: the polygon's own term plus a roll of {roll} over the "
-                   "vertical span 2ψ; in seed 001's frame {worst} worst case over the tilt "
-                   "direction, {seed} at ω = 90°"),
+                   "vertical span 2ψ; with the vertical along the polygon's axis {worst} worst "
+                   "case over the tilt direction, {seed} at ω = 90°"),
         roll=f"{roll_left:g}′", worst=f"{allowed_tilt_arcsec(grade):.0f}\"",
         seed=f"{allowed_seed:.0f}\"") if frame == "levelled" else message(
-        QT_TR_NOOP("worst case over the tilt direction; the seed's ω = 90° figure is {seed}"),
+        QT_TR_NOOP("worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015 "
+                   "is {seed}"),
         seed=f"{allowed_seed:.0f}\"")
     for r in results:
         warnings.extend(r.warnings)
@@ -381,7 +383,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
                        "({how}); the error it induces was identified and removed."),
             psi=f"{tilt.psi_arcsec:.1f}\"", allowed=f"{allowed:.0f}\"", grade=grade,
             how=message(QT_TR_NOOP("levelled set-up")) if frame == "levelled" else
-            message(QT_TR_NOOP("seed 001's frame, worst case over the tilt direction"))))
+            message(QT_TR_NOOP("vertical along the polygon's axis, worst case over the tilt "
+                               "direction"))))
     if spread:
         warnings.append(message(QT_TR_NOOP("Closure drift spread linearly over each set and "
                                            "removed from the autocollimator readings.")))
@@ -590,7 +593,11 @@ POLYGON = AnalysisKind(
                 ptp=f"{r.stats.peak_to_peak:.2f}\""),
         message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
         or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
-        message(QT_TR_NOOP("tilt ψ = {psi} exceeds {allowed}"),
+        # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D
+        # rotation); a tilt above the allowed only asks for a better seating next time
+        message(QT_TR_NOOP("the tilt's error is corrected in these figures (for the set-up "
+                           "stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — "
+                           "re-seat the polygon before the next run"),
                 psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
                 allowed=f"{r.allowed_tilt_arcsec:.0f}\""))),
     headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,

@@ -84,8 +84,9 @@ def setup_statement(result: PolygonResult) -> str:
             "reading's change."))
     else:
         frame = message(QT_TR_NOOP(
-            "Set-up assumed: seed 001's frame (the autocollimator's vertical along the "
-            "polygon's axis, not the shaft's); the pyramidal correction is the seed's eqs 3–7."))
+            "Set-up assumed: the autocollimator's vertical along the polygon's axis, rolled "
+            "with its tilt, not along the shaft (the frame of Tian et al. 2015); the pyramidal "
+            "correction is that paper's eqs 3–7."))
     if result.roll_corrected:
         roll = message(QT_TR_NOOP("Autocollimator roll measured {roll} (u = {u}) and corrected."),
                        roll=f"{result.ac_roll_measured_arcmin:+g}′",
@@ -330,7 +331,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
               (QT_TR_NOOP("Autocollimator set-up"),
                QT_TR_NOOP("levelled with the rotary axis (vertical along the shaft)")
                if result.ac_alignment == "levelled" else
-               QT_TR_NOOP("vertical along the polygon's axis (seed 001's frame)"), ""),
+               QT_TR_NOOP("vertical along the polygon's axis (rolled with the tilt)"), ""),
               (QT_TR_NOOP("Autocollimator roll"),
                message(QT_TR_NOOP("measured {roll}, corrected"),
                        roll=f"{result.ac_roll_measured_arcmin:+g}′")
@@ -338,10 +339,11 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                message(QT_TR_NOOP("not measured, up to ±{roll}"), roll=f"{result.ac_roll_arcmin:g}′"),
                f"{2 * result.u_ac_roll_arcmin:g}′" if result.roll_corrected else ""),
               (QT_TR_NOOP("Allowed pyramidal tilt"), message(QT_TR_NOOP(
-                  "{tilt} (levelled set-up, roll included; seed 001's frame: {worst} worst case "
-                  "over the tilt direction, {seed} at ω = 90°)") if result.ac_alignment == "levelled"
-                  else QT_TR_NOOP("{tilt} (worst case over the tilt direction; the seed's ω = 90° "
-                                  "figure: {seed})"),
+                  "{tilt} (levelled set-up, roll included; with the vertical along the polygon's "
+                  "axis: {worst} worst case over the tilt direction, {seed} at ω = 90°)")
+                  if result.ac_alignment == "levelled"
+                  else QT_TR_NOOP("{tilt} (worst case over the tilt direction; the ω = 90° "
+                                  "figure of Tian et al. 2015: {seed})"),
                   tilt=f"{result.allowed_tilt_arcsec:.0f}\"",
                   worst=f"{allowed_tilt_arcsec(result.grade):.0f}\"",
                   seed=f"{result.allowed_tilt_seed_arcsec:.0f}\""), "")]

@@ -416,12 +416,12 @@
         <translation>给出，未扣除</translation>
     </message>
     <message>
-        <source>Allowed pyramidal tilt</source>
-        <translation>允许塔差</translation>
+        <source>vertical along the polygon&apos;s axis (rolled with the tilt)</source>
+        <translation>竖直方向沿棱体轴线（随倾斜转动）</translation>
     </message>
     <message>
-        <source>{tilt} (worst case over the tilt direction; the seed&apos;s ω = 90° figure: {seed})</source>
-        <translation>{tilt}（按塔差方向的最不利情况；原文 ω = 90° 时的数值：{seed}）</translation>
+        <source>Allowed pyramidal tilt</source>
+        <translation>允许塔差</translation>
     </message>
     <message>
         <source>drift {drift} (within the limit)</source>
@@ -534,6 +534,18 @@
     <message>
         <source>position {position}</source>
         <translation>第 {position} 位置</translation>
+    </message>
+    <message>
+        <source>Set-up assumed: the autocollimator&apos;s vertical along the polygon&apos;s axis, rolled with its tilt, not along the shaft (the frame of Tian et al. 2015); the pyramidal correction is that paper&apos;s eqs 3–7.</source>
+        <translation>所假定的安置：自准直仪的竖直方向沿多面棱体轴线、随其倾斜转动，而非沿转轴（田留德等 2015 年论文的安置）；塔差修正按该论文式 3–7。</translation>
+    </message>
+    <message>
+        <source>{tilt} (levelled set-up, roll included; with the vertical along the polygon&apos;s axis: {worst} worst case over the tilt direction, {seed} at ω = 90°)</source>
+        <translation>{tilt}（调平安置，含滚转；竖直方向沿棱体轴线时：按倾斜方向的最不利情况 {worst}，ω = 90° 时 {seed}）</translation>
+    </message>
+    <message>
+        <source>{tilt} (worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015: {seed})</source>
+        <translation>{tilt}（按倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值：{seed}）</translation>
     </message>
     <message>
         <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
@@ -1049,6 +1061,10 @@
     <message>
         <source>HEIDENHAIN TNC .COM table (and .CMA)</source>
         <translation>HEIDENHAIN TNC .COM 补偿表（及 .CMA）</translation>
+    </message>
+    <message>
+        <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s own axis, rolled with its tilt (the frame of the method&apos;s paper, Tian et al. 2015). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
+        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
     </message>
     <message>
         <source>ISG kernel leadscrew error compensation list</source>
@@ -2620,12 +2636,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>扫描参数</translation>
     </message>
     <message>
-        <source>direction ω (Fig 3)</source>
-        <translation>方向 ω（图 3）</translation>
+        <source>The parameter drawn as a family of curves: the tilt&apos;s direction ω (as in Fig. 3 of Tian et al. 2015, the polygon method&apos;s paper) or its size ψ (as in its Fig. 4)</source>
+        <translation>画成一族曲线的参数：倾斜方向 ω（如多面棱体方法论文田留德等 2015 的图 3）或倾斜大小 ψ（如该文图 4）</translation>
     </message>
     <message>
-        <source>tilt ψ (Fig 4)</source>
-        <translation>倾斜 ψ（图 4）</translation>
+        <source>levelled with the rotary axis</source>
+        <translation>与回转轴一同调平</translation>
     </message>
     <message>
         <source>θ (deg)</source>
@@ -2848,6 +2864,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>选择一份证书并按“历史”</translation>
     </message>
     <message>
+        <source>No history shown yet: select a certificate above and press History (or double-click it) to see its instrument&apos;s figures over time and its due date.</source>
+        <translation>尚未显示历史：在上方选择一份证书并按“历史”（或双击该证书），即可看到该仪器各结果项随时间的变化及下次到期日。</translation>
+    </message>
+    <message>
         <source>The figure of the certificates to follow over time</source>
         <translation>随时间跟踪的证书结果</translation>
     </message>
@@ -2916,16 +2936,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>θ 范围 ±</translation>
     </message>
     <message>
-        <source>β (Figs 3, 4)</source>
-        <translation>β（图 3、4）</translation>
-    </message>
-    <message>
-        <source>α (Fig 5)</source>
-        <translation>α（图 5）</translation>
-    </message>
-    <message>
-        <source>ψ (Fig 6)</source>
-        <translation>ψ（图 6）</translation>
+        <source>The parameter drawn as a family of curves, as in the figures of Tian et al. 2017 (the theodolite method&apos;s paper): β as in its Figs. 3 and 4, α as in its Fig. 5, ψ as in its Fig. 6</source>
+        <translation>画成一族曲线的参数，如经纬仪方法论文田留德等 2017 的图：β 如其图 3 和图 4，α 如其图 5，ψ 如其图 6</translation>
     </message>
     <message>
         <source>ζ (&quot;)</source>
@@ -3396,8 +3408,20 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
     </message>
     <message>
+        <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon&apos;s axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
+        <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
+    </message>
+    <message>
+        <source>worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015 is {seed}</source>
+        <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
+    </message>
+    <message>
         <source>Tilt not identified (no vertical readings).</source>
         <translation>未辨识倾斜（没有垂直读数）。</translation>
+    </message>
+    <message>
+        <source>vertical along the polygon&apos;s axis, worst case over the tilt direction</source>
+        <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
     </message>
     <message>
         <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
@@ -3480,8 +3504,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>倾斜在允许范围内</translation>
     </message>
     <message>
-        <source>tilt ψ = {psi} exceeds {allowed}</source>
-        <translation>倾斜 ψ = {psi}，超过 {allowed}</translation>
+        <source>the tilt&apos;s error is corrected in these figures (for the set-up stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — re-seat the polygon before the next run</source>
+        <translation>上述结果已修正塔差引起的误差（按所述安置）。安置：倾斜 ψ = {psi}，超过允许的 {allowed}——下次测量前请重新安装棱体</translation>
     </message>
     <message>
         <source>Set {number}</source>
@@ -4883,10 +4907,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
     </message>
     <message>
-        <source>Set-up assumed: seed 001&apos;s frame (the autocollimator&apos;s vertical along the polygon&apos;s axis, not the shaft&apos;s); the pyramidal correction is the seed&apos;s eqs 3–7.</source>
-        <translation>所假定的安置：种子 001 的坐标系（自准直仪的竖直方向沿多面棱体轴线，而非转轴）；塔差修正按原文式 3–7。</translation>
-    </message>
-    <message>
         <source>Autocollimator roll measured {roll} (u = {u}) and corrected.</source>
         <translation>自准直仪滚转实测为 {roll}（u = {u}），已修正。</translation>
     </message>
@@ -4931,10 +4951,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
     </message>
     <message>
-        <source>vertical along the polygon&apos;s axis (seed 001&apos;s frame)</source>
-        <translation>竖直方向沿多面棱体轴线（种子 001 的坐标系）</translation>
-    </message>
-    <message>
         <source>Autocollimator roll</source>
         <translation>自准直仪滚转</translation>
     </message>
@@ -4945,10 +4961,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>not measured, up to ±{roll}</source>
         <translation>未实测，最大 ±{roll}</translation>
-    </message>
-    <message>
-        <source>{tilt} (levelled set-up, roll included; seed 001&apos;s frame: {worst} worst case over the tilt direction, {seed} at ω = 90°)</source>
-        <translation>{tilt}（调平安置，含滚转；种子 001 的坐标系：按塔差方向的最不利情况 {worst}，ω = 90° 时 {seed}）</translation>
     </message>
     <message>
         <source>Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)</source>
@@ -4973,10 +4985,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>AC roll ≤</source>
         <translation>自准直仪滚转 ≤</translation>
-    </message>
-    <message>
-        <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s axis (seed 001&apos;s frame). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
-        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体轴线（种子 001 的坐标系）。塔差修正按该坐标系计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
     </message>
     <message>
         <source>Largest roll of the autocollimator about its line of sight, relative to the set-up&apos;s vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)</source>
@@ -5035,24 +5043,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>自准直仪安置</translation>
     </message>
     <message>
-        <source>polygon&apos;s axis (seed 001&apos;s frame)</source>
-        <translation>沿多面棱体轴线（种子 001 的坐标系）</translation>
-    </message>
-    <message>
-        <source>levelled (AC and rotary axis levelled)</source>
-        <translation>调平（自准直仪与回转轴均调平）</translation>
-    </message>
-    <message>
         <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
         <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
-    </message>
-    <message>
-        <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; in seed 001&apos;s frame {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
-        <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；种子 001 的坐标系中按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
-    </message>
-    <message>
-        <source>worst case over the tilt direction; the seed&apos;s ω = 90° figure is {seed}</source>
-        <translation>倾斜方向的最不利情况；论文中 ω = 90° 时为 {seed}</translation>
     </message>
     <message>
         <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} ({how}): the fixture is fine.</source>
@@ -5069,10 +5061,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>levelled set-up</source>
         <translation>调平安置</translation>
-    </message>
-    <message>
-        <source>seed 001&apos;s frame, worst case over the tilt direction</source>
-        <translation>种子 001 的坐标系，倾斜方向的最不利情况</translation>
     </message>
     <message>
         <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets&apos; error minus reverse sets&apos;)</source>

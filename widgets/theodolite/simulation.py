@@ -26,9 +26,12 @@ class TheodoliteSimulation(FamilySimulation):
         form.add_float("alpha_deg", tr("tilt direction α"), 0, 360, 3, "°", 15)
         form.add_float("beta_deg", tr("mirror normal β"), -10, 10, 4, "°", 0.5)
         form.add_float("half_range_deg", tr("θ range ±"), 1, 180, 1, "°", 5)
-        form.add_choice("sweep", tr("sweep"), [("beta_deg", tr("β (Figs 3, 4)")),
-                                               ("alpha_deg", tr("α (Fig 5)")),
-                                               ("psi_deg", tr("ψ (Fig 6)"))])
+        form.add_choice("sweep", tr("sweep"), [("beta_deg", tr("mirror normal β")),
+                                               ("alpha_deg", tr("tilt direction α")),
+                                               ("psi_deg", tr("axis tilt ψ"))],
+                        tr("The parameter drawn as a family of curves, as in the figures of "
+                           "Tian et al. 2017 (the theodolite method's paper): β as in its Figs. "
+                           "3 and 4, α as in its Fig. 5, ψ as in its Fig. 6"))
         form.set_values({"psi_deg": 3, "alpha_deg": 45, "beta_deg": 2, "half_range_deg": 20})
         super().__init__(form, {"beta_deg": ("β", "°"), "alpha_deg": ("α", "°"),
                                 "psi_deg": ("ψ", "°")},
