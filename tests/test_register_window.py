@@ -64,7 +64,8 @@ def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_pat
     assert "next due 2027-11-20" in dialog.history_title.text()
     assert dialog.figure.count() == 2 and dialog.due_line.isVisible()
     x, y = dialog.history_curves[0].getData()
-    assert len(y) == 1 and y[0] == pytest.approx(0.9817, abs=1e-3)  # corrected peak-to-peak
+    # corrected peak-to-peak of the sample measured on a levelled bench (#28; 0.9817 in the seed frame)
+    assert len(y) == 1 and y[0] == pytest.approx(0.9835, abs=1e-3)
     dialog.figure.setCurrentIndex(1)
     assert dialog.history_curves[0].getData()[1][0] == pytest.approx(480.0, abs=0.5)  # ψ
     dialog.tell = lambda *a: None
