@@ -9,18 +9,8 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 for _name in ("LANGUAGE", "LC_ALL", "LC_MESSAGES"):
     os.environ.pop(_name, None)
 os.environ["LANG"] = "C.UTF-8"
-# Never the user's own AngleBench folders (~/.local/share/AngleBench: the register;
-# ~/.config: the settings), even for a test that unsets ANGLEBENCH_REGISTER: the data and
-# configuration homes are a folder of the session's own.
 import atexit  # noqa: E402
 import shutil  # noqa: E402
-import tempfile  # noqa: E402
-
-_SESSION_HOME = tempfile.mkdtemp(prefix="anglebench-tests-")
-atexit.register(shutil.rmtree, _SESSION_HOME, True)
-os.environ["XDG_DATA_HOME"] = os.path.join(_SESSION_HOME, "data")
-os.environ["XDG_CONFIG_HOME"] = os.path.join(_SESSION_HOME, "config")
-
 import tempfile  # noqa: E402
 from pathlib import Path  # noqa: E402
 
@@ -30,6 +20,7 @@ from pathlib import Path  # noqa: E402
 USER_HOME = Path.home()
 _USER_FILES = [USER_HOME / ".config" / "AngleBench", USER_HOME / ".local" / "share" / "AngleBench"]
 TEST_HOME = Path(tempfile.mkdtemp(prefix="anglebench-tests-home-"))
+atexit.register(shutil.rmtree, TEST_HOME, True)
 os.environ["HOME"] = str(TEST_HOME)
 for _name, _folder in (("XDG_CONFIG_HOME", ".config"), ("XDG_DATA_HOME", ".local/share"),
                        ("XDG_CACHE_HOME", ".cache"), ("XDG_STATE_HOME", ".local/state")):

@@ -293,11 +293,11 @@ def test_an_old_register_gets_its_chain_when_migrated(register_url):
 
 
 def test_tests_never_reach_the_users_own_register(monkeypatch):
-    from pathlib import Path
+    from conftest import TEST_HOME, USER_HOME
 
     from models.register.location import default_register_url, register_url
 
-    monkeypatch.delenv("ANGLEBENCH_REGISTER")
+    monkeypatch.delenv("ANGLEBENCH_REGISTER", raising=False)
     for url in (default_register_url(), register_url()):
-        assert not url.startswith(f"sqlite:///{Path.home().resolve()}/"), url
-        assert "anglebench-tests-" in url
+        assert not url.startswith(f"sqlite:///{USER_HOME.resolve()}/"), url
+        assert url.startswith(f"sqlite:///{TEST_HOME.resolve()}/"), url
