@@ -52,7 +52,12 @@ ARCSEC = ANGLE_UNITS["arcsec"]
 _UNIT = r"(?:\"|″|°|%|µrad|μrad|urad|mdeg|arcsec|deg|rad|mV|V|nm|µm|μm|um|mm)"
 _FIGURE = re.compile(r"\s*([+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?)\s?(" + _UNIT + r")?\s*")
 # what joins two figures in one cell, and what the two columns it becomes are called
-_JOINS = {" … ": ("from", "to"), " ± ": ("", "U"), " / ": ("first", "second")}
+_JOINS = {" … ": ("from", "to"), " ± ": ("", "U"), " / ": ("first", "second"),
+          ", U = ": ("", "U"), "U−/U+": ("", "U−", "U+")}
+_NUMBER = r"[+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?"
+# a figure with its U as the certificate prints it: "12.34\", U = 0.81\"", or an asymmetric
+# interval "12.34\", U = −0.62\"/+0.81\"" (also on a line of its own under the figure)
+_WITH_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)(?P<lower>−\S+?)/(?P<upper>\+\S+)\s*")
 
 
 def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
@@ -60,8 +65,13 @@ def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
     joined): ``"+3.77627 V"`` → ((3.77627,), "V", ""); ``"-0.12\" … +0.34\""`` →
     ((-0.12, 0.34), "\"", " … "); ``None`` for a cell that is not figures alone (a word,
     a sentence, a checksum), which then stays text."""
-    join = next((j for j in _JOINS if j in text), "")
-    parts = text.split(join) if join else [text]
+    asymmetric = _WITH_U.fullmatch(text)
+    if asymmetric:  # value, U below it, U above it (both as positive half-widths)
+        join = "U−/U+"
+        parts = [asymmetric["value"], asymmetric["lower"].lstrip("−"), asymmetric["upper"]]
+    else:
+        join = next((j for j in _JOINS if j in text), "")
+        parts = text.split(join) if join else [text]
     values, units = [], set()
     for part in parts:
         found = _FIGURE.fullmatch(part)
@@ -98,8 +108,12 @@ def _figure_columns(header: tuple[str, ...],
         units = {f[1] for f in found}
         # one kind of join: its two names; several (ranges and value ± U in one column):
         # the first column is the value or the range's start, the second says what it holds
-        labels = (_JOINS[joins.pop()] if len(joins) == 1 else
-                  ("", " | ".join(_JOINS[j][1] for j in _JOINS if j in joins)))
+        if len(joins) == 1:
+            labels = _JOINS[joins.pop()]
+        else:  # each column after the first says what it holds for each kind of cell
+            labels = ("", *(" | ".join(dict.fromkeys(
+                _JOINS[j][i] for j in _JOINS if j in joins and len(_JOINS[j]) > i))
+                for i in range(1, count)))
         unit = units.pop() if len(units) == 1 else None
         base = name or "Value"
         for i in range(count):
