@@ -28,12 +28,14 @@ def certificate_picture(kind: str, scratch: Path, chinese_number: str = "") -> P
     from PySide6.QtGui import QColor, QImage, QPainter
 
     name = f"{kind}_zh" if chinese_number else kind
-    details = SAMPLES / f"certificate_{kind}.json"
+    # the example details, issued into the scratch register (ANGLEBENCH_REGISTER, set by
+    # main) that the register's picture shows: an example would go to a register of its own
+    data = {**json.loads((SAMPLES / f"certificate_{kind}.json").read_text("utf-8")),
+            "example": False}
     if chinese_number:
-        data = json.loads(details.read_text("utf-8"))
-        details = scratch / f"{name}.json"
-        details.write_text(json.dumps({**data, "language": "zh",
-                                       "certificate_number": chinese_number}), "utf-8")
+        data.update(language="zh", certificate_number=chinese_number)
+    details = scratch / f"{name}.json"
+    details.write_text(json.dumps(data), "utf-8")
     pdf = scratch / f"{name}.pdf"
     subprocess.run([sys.executable, "-m", "app.main", "analyze", kind,
                     str(SAMPLES / f"{kind}_sample.csv"), "--certificate", str(pdf), "--metadata",
