@@ -5,21 +5,16 @@ asymmetric interval, and the theodolite set-up parameters defined against indepe
 
 from __future__ import annotations
 
-import io
 import math
-import re
 from dataclasses import replace
 
 import numpy as np
 import pytest
-from pypdf import PdfReader
+from test_certificate_statements import FRINGE_INPUTS, _flat, _sample
 
-from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.certificate.document import budget_table, decision_rows
 from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
-from models.readings.tabular_import import map_columns, read_table
-from models.registry import KINDS
 from models.theodolite.model import analyze_run
 from models.theodolite.report import theodolite_budget, theodolite_certificate
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
@@ -34,23 +29,6 @@ META = CertificateMetadata.from_dict({
     "operator": "Wang",
     "standards": [{"description": "Theodolite", "certificate_no": "NIM-1",
                    "uncertainty_arcsec": 0.5, "basis": "u"}]})
-
-
-#: the fringe inputs the signals cannot show (a 16-bit ADC over ±10 V, its calibration)
-FRINGE_INPUTS = {"phase_reference_u": 0.01, "adc_lsb_mv": 0.3, "adc_offset_u_mv": 0.5,
-                 "adc_gain_u_pct": 0.02, "adc_linearity_mv": 0.6}
-
-
-def _flat(document) -> str:
-    reader = PdfReader(io.BytesIO(certificate_pdf_bytes(document)))
-    return re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in reader.pages))
-
-
-def _sample(key, settings=None):
-    kind = KINDS[key]
-    table = read_table(f"resources/samples/{kind.sample_file}")
-    parsed = ReadingsSheet(kind.columns, map_columns(table, kind.columns)).parse()
-    return kind, kind.analyze(parsed, kind.settings_with_defaults(settings or {}))
 
 
 # 10. ν_eff truncated to the lower integer before t is taken (GUM G.6.4) -------------------
