@@ -22,7 +22,6 @@ from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
-from models.positioning.before_after import before_after, log_from_file
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -172,7 +171,7 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
         [args.compare_after] if args.compare_after else [])
-    if args.compare_after and kind.key != "positioning":
+    if args.compare_after and kind.compare_after is None:
         _say(words(QT_TR_NOOP("anglebench analyze: --compare-after is for the positioning "
                               "workbench")))
         return EXIT_BAD_INPUT
@@ -233,7 +232,7 @@ def run_analyze(argv: list[str]) -> int:
     comparison = None
     if args.compare_after:
         try:
-            comparison = before_after(result, log_from_file(args.compare_after, settings))
+            comparison = kind.compare_after(result, kind.after_log(args.compare_after, settings))
         except (ValueError, OSError) as exc:
             _say(f"anglebench analyze: --compare-after: {_why(exc, words)}")
             return EXIT_BAD_INPUT

@@ -13,7 +13,6 @@ from typing import Any
 
 from PySide6.QtWidgets import QFileDialog, QInputDialog
 
-from models.positioning.before_after import log_from_file
 from models.run_overlay import OVERLAY_FIGURES, overlay_from_file, overlay_from_project_json
 from widgets.i18n import declared, explained, tr
 from widgets.run_overlay import RunOverlay
@@ -84,7 +83,7 @@ class RunOverlayActions:
         if not path:
             return False
         try:
-            after = log_from_file(path, presenter.settings)
+            after = presenter.kind.after_log(path, presenter.settings)
         except (ValueError, OSError) as exc:
             self.window.tell(tr("Cannot overlay"), explained(exc))
             return False

@@ -58,6 +58,10 @@ class AnalysisKind:
     # not): figures no instrument of the kind shows (the window asks; the command line
     # refuses without --confirm-implausible)
     certificate_doubt: Callable[[Any], str] | None = None
+    # (path, settings) -> the result of a log measured after compensation, and
+    # (before, after) -> their comparison (as_dict(), text()): ValueError saying why not
+    after_log: Callable[[Any, Any], Any] | None = None
+    compare_after: Callable[[Any, Any], Any] | None = None
     # instrument-style entry: the column a nominal step fills as rows are added, and the
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: str = ""

@@ -131,10 +131,13 @@ def test_a_large_record_of_numbers_is_imported_as_columns_and_edits_as_text(wind
     assert model.data(model.index(1, 0), Qt.ItemDataRole.DisplayRole) == \
         repr(float(f"{3.7 * np.sin(theta[1]) + 0.02:.6f}"))
     before = presenter.result.sin_fit.offset
-    model.setData(model.index(5, 0), "9.5")  # a spike typed over one sample
+    # a typing slip on one sample, 0.5 V off (a spike beyond half the ring's radius is
+    # refused as no signal: #30)
+    slip = f"{3.7 * np.sin(theta[5]) + 0.52:.6f}"
+    model.setData(model.index(5, 0), slip)
     qtbot.waitUntil(lambda: not presenter.busy and presenter.result is not None
                     and presenter.result.sin_fit.offset != before, timeout=60_000)
-    assert presenter.sheet.text(5, 0) == "9.5"
+    assert presenter.sheet.text(5, 0) == slip
     presenter.undo_stack.undo()
     qtbot.waitUntil(lambda: not presenter.busy and presenter.result is not None
                     and abs(presenter.result.sin_fit.offset - before) < 1e-12, timeout=60_000)

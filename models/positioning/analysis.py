@@ -416,4 +416,12 @@ POSITIONING = AnalysisKind(
                         if k in r.iso.figures},
     nominal_column="target",
     entry_column="deviation",
+    after_log=lambda path, settings: _before_after().log_from_file(path, settings),
+    compare_after=lambda before, after: _before_after().before_after(before, after),
 )
+
+
+def _before_after():
+    from models.positioning import before_after  # it reads logs with POSITIONING itself
+
+    return before_after
