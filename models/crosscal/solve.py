@@ -434,8 +434,8 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     used_index = np.flatnonzero(used)
     y_data = y.copy()
     if mode == "spread":
-        for j, r in closure_row.items():
-            rows = rows_of[j][:-1]
+        for j, r in closure_row.items():  # the closure reading itself becomes the first's
+            rows = rows_of[j]
             y_data[rows] -= t[rows] / n * (y[r] - y[first_row[j]])
 
     # design: columns E (n), d (n), o (m), δ (mountings with closure, when fitted)

@@ -6073,5 +6073,93 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>Not compared with the log after compensation: {reason}</source>
         <translation>未与补偿后记录比较：{reason}</translation>
     </message>
+    <message>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
+        <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
+    </message>
+    <message>
+        <source>mounting, position, encoder and autocollimator columns differ in length</source>
+        <translation>安装位置、面号、编码器和自准直仪各列长度不一致</translation>
+    </message>
+    <message>
+        <source>{faces} faces: a polygon has at least 3</source>
+        <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>drift must be one of {modes}, not {mode}</source>
+        <translation>漂移处理方式须为 {modes} 之一，而不是 {mode}</translation>
+    </message>
+    <message>
+        <source>ac_alignment must be one of {frames}, not {frame}</source>
+        <translation>ac_alignment 须为 {frames} 之一，而不是 {frame}</translation>
+    </message>
+    <message>
+        <source>the vertical readings ({count}) are not one per row ({rows})</source>
+        <translation>竖直读数（{count} 个）与行数（{rows} 行）不是一一对应</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: the faces and the encoder&apos;s steps are not connected — at least two mountings are needed</source>
+        <translation>只有安装位置 {mounting}：各面与编码器的步距未能关联——至少需要两个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder {encoder} is {offset} from step {step} ({nominal}) where mounting {mounting} reads face {face}: a mounting that starts elsewhere, or a wrong mounting or face number</source>
+        <translation>第 {row} 行：编码器读数 {encoder} 与第 {step} 步（{nominal}）相差 {offset}，此处安装位置 {mounting} 读第 {face} 面：该安装位置起点不同，或安装位置号、面号有误</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} do not connect the faces: no harmonic of the encoder&apos;s error or of the face deviations is determined</source>
+        <translation>安装位置 {mountings} 未能关联各面：编码器误差和各面偏差的谐波均无法确定</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
+        <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} {value} is not a whole number</source>
+        <translation>第 {row} 行：{column} {value} 不是整数</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} is not a number</source>
+        <translation>第 {row} 行：{column} 不是数字</translation>
+    </message>
+    <message>
+        <source>row {row}: face {face} is outside 1…{faces} (face count {faces})</source>
+        <translation>第 {row} 行：第 {face} 面超出 1…{faces}（面数 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} is outside 0…{last}</source>
+        <translation>第 {row} 行：安装位置 {mounting} 超出 0…{last}</translation>
+    </message>
+    <message>
+        <source>mounting {mounting} (rows {first}…{last}): face(s) {faces} missing — every mounting reads all {count} faces</source>
+        <translation>安装位置 {mounting}（第 {first}…{last} 行）：缺少第 {faces} 面——每个安装位置须读全部 {count} 个面</translation>
+    </message>
+    <message>
+        <source>no vertical readings: the polygon&apos;s tilt on the shaft is neither identified nor removed</source>
+        <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
+    </message>
+    <message>
+        <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator&apos;s σ</source>
+        <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} repeats row {other} (a duplicate reading; only the closure reading, last, may repeat the first face)</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的第 {face} 面与第 {other} 行重复（重复读数；只有最后的闭合读数可以重复第一个面）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: vertical readings missing: its tilt is neither identified nor removed</source>
+        <translation>安装位置 {mounting}：缺少竖直读数：未辨识也未消除其倾斜</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: no closure reading (its first face read again at the end): drift not checked</source>
+        <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：未检查漂移</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
+        <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
+    </message>
 </context>
 </TS>
