@@ -95,24 +95,28 @@ class Bench:
         az = -np.radians(np.arange(n) * 360.0 / n + self.face_dev_arcsec / 3600.0)
         return np.vstack([np.cos(az), np.sin(az), np.zeros(n)])
 
-    def _face_normal(self, face: int, turn_deg: float, psi: float, omega: float) -> np.ndarray:
-        """Face ``face``'s normal in the lab with the polygon turned by ``turn_deg`` (its
-        seat on the shaft plus the shaft's turn) about the shaft's axis."""
-        v = self._normals()[:, face - 1]
+    def _face_normals(self, faces, turn_deg, psi: float, omega: float) -> np.ndarray:
+        """The faces' normals (3, m) in the lab with the polygon turned by ``turn_deg`` (its
+        seat on the shaft plus the shaft's turn, one angle per face) about the shaft's axis."""
+        v = self._normals()[:, np.asarray(faces) - 1]
         if self.frame == "levelled":
             if psi:
                 v = rotation([-np.sin(omega), np.cos(omega), 0.0], psi * ARCSEC) @ v
-            return rotation([0.0, 0.0, 1.0], np.radians(turn_deg)) @ v
-        axis = [np.sin(psi * ARCSEC) * np.cos(omega), np.sin(psi * ARCSEC) * np.sin(omega),
-                np.cos(psi * ARCSEC)]
-        return rotation(axis, np.radians(turn_deg)) @ v
+            axis = np.array([0.0, 0.0, 1.0])
+        else:
+            axis = np.array([np.sin(psi * ARCSEC) * np.cos(omega), np.sin(psi * ARCSEC) * np.sin(omega),
+                             np.cos(psi * ARCSEC)])
+        # each column turned about the axis by its own angle (Rodrigues, column by column)
+        angle = np.radians(np.asarray(turn_deg, dtype=float))
+        along = axis[:, None] * (axis @ v)
+        return (along + (v - along) * np.cos(angle) + np.cross(axis, v, axis=0) * np.sin(angle))
 
-    def _null_turn(self, face: int, seat_deg: float, guess_deg: float, psi, omega) -> float:
-        """The shaft's turn near ``guess_deg`` at which the face's horizontal reading is zero
-        (Newton on the exact geometry)."""
-        theta = guess_deg
+    def _null_turns(self, faces, seat_deg: float, guess_deg, psi, omega) -> np.ndarray:
+        """The shaft's turns near ``guess_deg`` at which each face's horizontal reading is
+        zero (Newton on the exact geometry)."""
+        theta = np.asarray(guess_deg, dtype=float).copy()
         for _ in range(8):
-            v = self._face_normal(face, seat_deg + theta, psi, omega)
+            v = self._face_normals(faces, seat_deg + theta, psi, omega)
             theta -= np.degrees(np.arctan2(v[1], v[0]))
         return theta
 
@@ -129,18 +133,17 @@ class Bench:
             drift = float(self.rng.uniform(-1, 1) * self.drift_arcsec)
             self.mounts.append({"mounting": j, "seat_deg": seat, "psi_arcsec": psi,
                                 "omega_rad": omega, "drift_arcsec": drift})
-            faces = [(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else [])
-            for t, face in enumerate(faces):
-                if t == 0:
-                    theta = self.start_deg  # every mounting starts where the first did
-                else:
-                    theta = self._null_turn(face, seat, t * step, psi, omega)
-                    theta += self.rng.uniform(-1, 1) * self.stop_arcsec / 3600.0
-                v = self._face_normal(face, seat + theta, psi, omega)
-                noise = self.rng.normal(0.0, self.noise_arcsec, 2)
-                ac_x = (np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec + drift * t / n
-                        + noise[0])
-                ac_y = np.arctan2(v[2], v[0]) / ARCSEC + self.ac_zero_y_arcsec + noise[1]
-                row = (int(j), int(face), float(self.indicated_deg(theta)), float(ac_x))
-                out.append(row + ((float(ac_y),) if vertical else ()))
+            faces = np.array([(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else []))
+            t = np.arange(faces.size)
+            theta = self._null_turns(faces, seat, t * step, psi, omega)
+            theta += self.rng.uniform(-1, 1, faces.size) * self.stop_arcsec / 3600.0
+            theta[0] = self.start_deg  # every mounting starts where the first did
+            v = self._face_normals(faces, seat + theta, psi, omega)
+            noise = self.rng.normal(0.0, self.noise_arcsec, (2, faces.size))
+            ac_x = np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec + drift * t / n + noise[0]
+            ac_y = np.arctan2(v[2], v[0]) / ARCSEC + self.ac_zero_y_arcsec + noise[1]
+            encoder = self.indicated_deg(theta)
+            for q in range(faces.size):
+                row = (int(j), int(faces[q]), float(encoder[q]), float(ac_x[q]))
+                out.append(row + ((float(ac_y[q]),) if vertical else ()))
         return out
