@@ -42,10 +42,12 @@ H itself (``closure_drift_arcsec``) is given in every mode.
 Tilt: with vertical readings (``ac_y_arcsec``) each mounting's pyramidal tilt ψ, ω
 is fitted on its faces' vertical readings and its horizontal effect removed, in the
 frame the autocollimator is set to (``ac_alignment`` "levelled" or "polygon", a
-measured roll ``roll_rad``), by the polygon workbench's own functions
-(:func:`models.polygon.model.fit_tilt`, :func:`pyramidal_correction_arcsec`); θ is
-the face's nominal angle (i − 1)·360°/n, face 1 the zero (the constant part is the
-mounting's offset).
+measured roll ``roll_rad``), as the polygon workbench does it: the same exact 3-D
+readings and fit (:func:`models.polygon.model.fit_tilt`), done for all mountings at
+once by :mod:`models.crosscal.tilt` (tested to give fit_tilt's figures); θ is the
+face's nominal angle (i − 1)·360°/n, face 1 the zero (the constant part is the
+mounting's offset). The tilt's own uncertainty is left to the residual scatter (its
+correction is second order in ψ in a levelled set-up).
 
 What the design cannot determine is found from the null space of the design
 under the closure constraints, and named as harmonic orders of E and d (for
@@ -56,7 +58,10 @@ part of E and d made of the determined harmonics is given instead, labelled.
 The uncertainty is exact for the linear model: cov = σ²·Z(ZᵀXᵀXZ)⁺Zᵀ (X the design,
 Z the closure constraints' null space), σ from the residual scatter with
 ν = readings − rank (or stated, with its own ν), k from ν (GUM G.3, the house's
-:func:`models.uncertainty.budget.coverage_factor`).
+:func:`models.uncertainty.budget.coverage_factor`). With "spread" the estimate is
+x = G·L·y (L the spread map), cov = σ²·G·L·Lᵀ·Gᵀ and σ² = ‖r‖²/tr(Lᵀ(I − H)L).
+:mod:`models.crosscal.uncertainty` adds Estler's closed form, a design's expected u
+and a Monte Carlo check.
 """
 
 from __future__ import annotations

@@ -78,47 +78,50 @@ def fit_tilts(theta_deg, ac_y_arcsec, ac_alignment: str = "polygon", roll_rad: f
     k, p, q = np.moveaxis((np.linalg.pinv(design) @ v[..., None])[..., 0], 1, 0)
     x = np.stack([k, np.hypot(p, q), np.degrees(np.arctan2(q, p))], -1)  # (m, 3)
 
-    def residuals(x):
-        return x[:, [0]] + frame_readings_batch(theta, x[:, 1], x[:, 2], ac_alignment, roll_rad)[1] - v
+    def residuals(x, rows=slice(None)):
+        return (x[:, [0]] + frame_readings_batch(theta[rows], x[:, 1], x[:, 2], ac_alignment,
+                                                 roll_rad)[1] - v[rows])
 
-    def jacobian(x):
+    def jacobian(x, rows=slice(None)):
+        """Central differences in ψ and ω (fit_tilt's); the offset's column is 1."""
         h = np.finfo(float).eps ** (1 / 3) * np.maximum(1.0, np.abs(x))
-        cols = []
-        for i in range(3):
+        cols = [np.ones(theta[rows].shape)]
+        for i in (1, 2):
             up, down = x.copy(), x.copy()
             up[:, i] += h[:, i]
             down[:, i] -= h[:, i]
-            cols.append((residuals(up) - residuals(down)) / (2 * h[:, [i]]))
+            cols.append((residuals(up, rows) - residuals(down, rows)) / (2 * h[:, [i]]))
         return np.stack(cols, -1)  # (m, n, 3)
 
     settled = np.zeros(m, dtype=bool)
     for _ in range(iterations):
-        jac = jacobian(x)
-        step = -(np.linalg.pinv(jac, rcond=1e-12) @ residuals(x)[..., None])[..., 0]
-        step[settled] = 0.0
-        x = x + step
+        active = np.flatnonzero(~settled)
+        xa = x[active]
+        step = -(np.linalg.pinv(jacobian(xa, active), rcond=1e-12)
+                 @ residuals(xa, active)[..., None])[..., 0]
+        x[active] = xa + step
         # ω's step counts by what it moves the readings, ψ·Δω (ω is free when ψ = 0)
-        moved = np.stack([step[:, 0], step[:, 1], np.radians(step[:, 2]) * x[:, 1]], -1)
-        size = np.abs(x[:, 0]) + np.abs(x[:, 1]) + 1.0
-        settled |= np.linalg.norm(moved, axis=1) <= 1e-10 * size
+        moved = np.stack([step[:, 0], step[:, 1], np.radians(step[:, 2]) * x[active, 1]], -1)
+        size = np.abs(x[active, 0]) + np.abs(x[active, 1]) + 1.0
+        settled[active] = np.linalg.norm(moved, axis=1) <= 1e-10 * size
         if settled.all():
             break
     fun, jac = residuals(x), jacobian(x)
+    flip = x[:, 1] < 0
+    jac[flip, :, 1] *= -1
+    cov = np.linalg.pinv(np.swapaxes(jac, 1, 2) @ jac) * (np.sum(fun**2, axis=1)
+                                                           / max(n - 3, 1))[:, None, None]
     out: list[TiltFit] = []
     for q in range(m):
         if not (settled[q] and np.all(np.isfinite(fun[q]))):
             out.append(fit_tilt(theta[q], v[q], ac_alignment, roll_rad))
             continue
         kq, psi, omega = x[q]
-        jq = jac[q].copy()
-        if psi < 0:
+        if flip[q]:
             psi, omega = -psi, omega + 180.0
-            jq[:, 1] *= -1
-        sigma2 = float(fun[q] @ fun[q]) / max(n - 3, 1)
-        cov = np.linalg.pinv(jq.T @ jq) * sigma2
-        u = np.sqrt(np.clip(np.diag(cov), 0, None))
+        u = np.sqrt(np.clip(np.diag(cov[q]), 0, None))
         out.append(TiltFit(float(psi), float(omega % 360.0), float(kq), float(u[1]), float(u[2]),
-                           -fun[q], float(np.sqrt(np.mean(fun[q] ** 2))), cov[1:, 1:]))
+                           -fun[q], float(np.sqrt(np.mean(fun[q] ** 2))), cov[q, 1:, 1:]))
     return out
 
 

@@ -58,6 +58,7 @@ class MonteCarloCheck:
     #: fraction of values whose own U (each run's σ, ν and k) covers the simulation's truth
     coverage: float
     probability: float  # the coverage probability U is stated for
+    dof: float = math.inf  # ν of the σ the readings gave
 
     @property
     def ratio(self) -> float:
@@ -92,4 +93,4 @@ def monte_carlo_check(mounting, position, encoder_deg, ac_x_arcsec, runs: int = 
     scatter = np.sqrt(np.mean((values - truth) ** 2, axis=0))
     return MonteCarloCheck(runs, scatter[:n], scatter[n:], reference.encoder_error_u_arcsec,
                            reference.polygon_deviation_u_arcsec, covered / (runs * 2 * n),
-                           reference.probability)
+                           reference.probability, reference.dof)

@@ -6161,5 +6161,37 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
         <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
     </message>
+    <message>
+        <source>Cross-calibration (polygon + encoder)</source>
+        <translation>互校准（多面棱体 + 编码器）</translation>
+    </message>
+    <message>
+        <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
+        <translation>全组合测量，24 面，σ = 0.02&quot;：u = σ√(n − 1)/n（Estler）</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 faces, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面全组合测量，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, mountings 0, 1, 5 of 12, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面中的安装位置 0、1、5，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>mountings 0, 4, 8 of 12: the harmonics not determined are named and withheld</source>
+        <translation>12 面中的安装位置 0、4、8：无法确定的谐波被指明且不予报告</translation>
+    </message>
+    <message>
+        <source>stated u against the spread of {trials} simulated runs (ν = {dof})</source>
+        <translation>给出的 u 与 {trials} 次仿真测量的分散性比较（ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}</source>
+        <translation>比值 1 ± {tolerance}</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, U covers {coverage} %</source>
+        <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
+    </message>
 </context>
 </TS>
