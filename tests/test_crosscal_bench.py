@@ -21,7 +21,7 @@ from models.crosscal.uncertainty import (
     monte_carlo_check,
 )
 from models.messages import translator
-from models.polygon.model import fit_tilt, frame_readings_arcsec
+from models.pyramidal import fit_tilt, frame_readings_arcsec
 
 HARMONICS = {1: (2.0, 0.3), 2: (1.0, 1.1), 3: (0.5, 2.0), 4: (0.2, 0.7), 6: (0.3, 0.5)}
 

@@ -43,7 +43,7 @@ Tilt: with vertical readings (``ac_y_arcsec``) each mounting's pyramidal tilt ψ
 is fitted on its faces' vertical readings and its horizontal effect removed, in the
 frame the autocollimator is set to (``ac_alignment`` "levelled" or "polygon", a
 measured roll ``roll_rad``), as the polygon workbench does it: the same exact 3-D
-readings and fit (:func:`models.polygon.model.fit_tilt`), done for all mountings at
+readings and fit (:func:`models.pyramidal.fit_tilt`), done for all mountings at
 once by :mod:`models.crosscal.tilt` (tested to give fit_tilt's figures); θ is the
 face's nominal angle (i − 1)·360°/n, face 1 the zero (the constant part is the
 mounting's offset). The tilt's own uncertainty is left to the residual scatter (its
@@ -123,7 +123,7 @@ class CrossCalibration:
     #: computes it (tilt removed), nan without a closure reading
     closure_drift_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
     drift_mode: str = "fit"
-    #: per mounting: models.polygon.model.TiltFit, or None (no vertical readings)
+    #: per mounting: models.pyramidal.TiltFit, or None (no vertical readings)
     tilts: tuple = ()
     ac_alignment: str = "levelled"
     #: per row: the tilt's horizontal effect removed from the reading, arcsec (zeros without)
@@ -373,7 +373,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     """
     from scipy import sparse
 
-    from models.polygon.model import AC_ALIGNMENTS, closure_drift_arcsec
+    from models.pyramidal import AC_ALIGNMENTS, closure_drift_arcsec
 
     mode = drift if drift is not None else ("fit" if fit_drift else "report")
     if mode not in DRIFT_MODES:

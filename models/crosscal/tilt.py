@@ -1,21 +1,21 @@
 """Each mounting's pyramidal tilt, fitted on all mountings at once.
 
-The polygon workbench fits one set's tilt with :func:`models.polygon.model.fit_tilt`
+The polygon workbench fits one set's tilt with :func:`models.pyramidal.fit_tilt`
 (a linear start, then an exact Levenberg–Marquardt polish on
-:func:`models.polygon.model.frame_readings_arcsec`). A cross-calibration has one tilt
+:func:`models.pyramidal.frame_readings_arcsec`). A cross-calibration has one tilt
 per mounting — 72 of them for a 72-face full rosette — so here the same exact 3-D
 readings are evaluated for every mounting in one array (:func:`frame_readings_batch`,
 the polygon model's frames and roll, checked against it to 1e-9″ in the tests) and the
 same fit is done for all mountings together (Gauss–Newton from the same linear start;
 a mounting it does not settle is handed to ``fit_tilt`` itself). The results are the
-polygon model's :class:`~models.polygon.model.TiltFit`, with the same figures.
+polygon model's :class:`~models.pyramidal.TiltFit`, with the same figures.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from models.polygon.model import AC_ALIGNMENTS, TiltFit, fit_tilt
+from models.pyramidal import AC_ALIGNMENTS, TiltFit, fit_tilt
 from models.readings.angles import ARCSEC_PER_RAD
 
 __all__ = ["fit_tilts", "frame_readings_batch", "pyramidal_corrections"]
@@ -33,7 +33,7 @@ def _rotations(axis: np.ndarray, angle: np.ndarray) -> np.ndarray:
 
 def frame_readings_batch(theta_deg, psi_arcsec, omega_deg, ac_alignment: str = "polygon",
                          roll_rad: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`models.polygon.model.frame_readings_arcsec` for m tilts at once: θ (m, n) deg,
+    """:func:`models.pyramidal.frame_readings_arcsec` for m tilts at once: θ (m, n) deg,
     ψ (m,) arcsec, ω (m,) deg -> (ε_x, ε_y), each (m, n) arcsec."""
     if ac_alignment not in AC_ALIGNMENTS:
         raise ValueError(f"ac_alignment must be one of {AC_ALIGNMENTS}, not {ac_alignment!r}")
@@ -66,7 +66,7 @@ def frame_readings_batch(theta_deg, psi_arcsec, omega_deg, ac_alignment: str = "
 
 def fit_tilts(theta_deg, ac_y_arcsec, ac_alignment: str = "polygon", roll_rad: float = 0.0,
               iterations: int = 30) -> list[TiltFit]:
-    """:func:`models.polygon.model.fit_tilt` for each row of θ (m, n) and its vertical
+    """:func:`models.pyramidal.fit_tilt` for each row of θ (m, n) and its vertical
     readings (m, n), at once."""
     theta = np.atleast_2d(np.asarray(theta_deg, dtype=float))
     v = np.atleast_2d(np.asarray(ac_y_arcsec, dtype=float))
@@ -128,7 +128,7 @@ def fit_tilts(theta_deg, ac_y_arcsec, ac_alignment: str = "polygon", roll_rad: f
 def pyramidal_corrections(tilts: list[TiltFit], faces: int, ac_alignment: str,
                           roll_rad: float = 0.0) -> np.ndarray:
     """(m, n): each tilt's ε_x at faces 1 … n (θ = (i − 1)·360°/n) less its ε_x at face 1 —
-    :func:`models.polygon.model.pyramidal_correction_arcsec` with face 1 the zero."""
+    :func:`models.pyramidal.pyramidal_correction_arcsec` with face 1 the zero."""
     theta = np.broadcast_to(np.arange(faces) * 360.0 / faces, (len(tilts), faces))
     eps_x = frame_readings_batch(theta, [t.psi_arcsec for t in tilts], [t.omega_deg for t in tilts],
                                  ac_alignment, roll_rad)[0]
