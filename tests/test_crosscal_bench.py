@@ -260,6 +260,11 @@ def test_messages_are_translated():
         said.append(caught.value.args[0])
     result = solve(bench(6, 11).rows([0, 2, 4], closure=False), 6, noise_arcsec=0.01)
     said += list(result.warnings) + [result.correlation_statement]
+    # and every template the model declares has its Chinese
+    for path in sorted(Path(__file__).resolve().parents[1].glob("models/crosscal/*.py")):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "QT_TR_NOOP":
+                assert zh(node.args[0].value) != node.args[0].value, node.args[0].value
     for text in said:
         assert zh(text.template) != text.template, text
         assert re.search("[\u4e00-\u9fff]", zh(text.template))
@@ -283,3 +288,20 @@ def test_a_stated_sigma_with_its_dof_sets_k_and_a_missing_closure_is_said():
         other = solve([r for q, r in enumerate(rows) if q != 8], n, drift=mode)
         assert not other.row_used[other.row_closure].any() and other.row_used[~other.row_closure].all()
         assert other.dof == other.row_used.sum() - (2 * n + 3 - 2)
+
+
+def test_vertical_readings_that_follow_no_tilt_are_said():
+    n = 8
+    rows = [list(r) for r in bench(n, 13, noise_arcsec=0.02, tilt_arcsec=100.0).rows([0, 1, 3],
+                                                                                    vertical=True)]
+    for r in rows[9:18]:
+        r[4] += 5.0 * (r[1] % 2)  # mounting 1's vertical readings slip by 5″ on every other face
+    result = solve(rows, n)
+    said = [w for w in result.warnings if "vertical readings scatter" in w]
+    assert len(said) == 1 and said[0].startswith("mounting 1:")
+    assert not [w for w in solve(bench(n, 13, noise_arcsec=0.02, tilt_arcsec=100.0)
+                                 .rows([0, 1, 3], vertical=True), n).warnings if "scatter" in w]
+    for r in rows:
+        r[4] = float(np.random.default_rng(r[1]).normal(0.0, 1e5))  # no vertical readings at all
+    said = [w for w in solve(rows, n).warnings if "vertical readings" in w]
+    assert len(said) == 3 and all("no polygon sits that far" in w or "scatter" in w for w in said)

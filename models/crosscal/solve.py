@@ -80,6 +80,12 @@ __all__ = ["DRIFT_MODES", "CrossCalibration", "CrossCalibrationInputError", "har
 #: a reading further than this from its step is no reading of that step (fraction of a step)
 STEP_TOLERANCE = 0.25
 
+#: vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about
+#: their tilt curve are said to be suspect
+VERTICAL_SCATTER_FACTOR = 10.0
+#: a fitted tilt above this (1°) is no seating but wrong vertical readings
+MAX_TILT_ARCSEC = 3600.0
+
 #: how each mounting's drift is taken from its closure reading (see the module's text)
 DRIFT_MODES = ("fit", "spread", "report")
 
@@ -540,6 +546,21 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         for j in drifting:
             drift_out[mindex[j]] = -x[2 * n + m + dindex[j]]
     offsets = x[2 * n:2 * n + m]
+    # the same autocollimator reads both axes: vertical readings far off their tilt curve
+    # are no tilt (a wrong column, a slipped face); their correction is then not to be trusted
+    for j, tilt in zip(order, tilts, strict=True):
+        if tilt is not None and tilt.residual_rms_arcsec > VERTICAL_SCATTER_FACTOR * sigma + 0.1:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: the vertical readings scatter "
+                                               "{rms} RMS about the tilt fitted, far more than the "
+                                               "horizontal ones ({sigma}): check them; the tilt "
+                                               "correction rests on them"),
+                                    mounting=j, rms=f"{tilt.residual_rms_arcsec:.3f}\"",
+                                    sigma=f"{sigma:.3f}\""))
+        elif tilt is not None and tilt.psi_arcsec > MAX_TILT_ARCSEC:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: a tilt of {psi} was fitted — "
+                                               "no polygon sits that far off its seat: check the "
+                                               "vertical readings"),
+                                    mounting=j, psi=f"{tilt.psi_arcsec:.0f}\""))
     if bad_e or bad_d:
         warnings.append(_undetermined_text(n, tuple(order), bad_e, bad_d))
     return CrossCalibration(

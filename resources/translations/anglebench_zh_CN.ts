@@ -6193,5 +6193,13 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>ratio {ratio}, U covers {coverage} %</source>
         <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
     </message>
+    <message>
+        <source>mounting {mounting}: the vertical readings scatter {rms} RMS about the tilt fitted, far more than the horizontal ones ({sigma}): check them; the tilt correction rests on them</source>
+        <translation>安装位置 {mounting}：竖直读数相对拟合倾斜的分散为 {rms} RMS，远大于水平读数（{sigma}）：请检查；倾斜修正依赖于这些读数</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
+        <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
+    </message>
 </context>
 </TS>
