@@ -26,7 +26,7 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
     qtbot.keyClicks(fields["operator"], "Wang")
     qtbot.keyClicks(fields["approver"], "Dr. Li")  # an issued certificate is approved
     qtbot.keyClicks(fields["item_model"], "RT-400")
-    qtbot.keyClicks(fields["tolerance_arcsec"], "5")
+    qtbot.keyClicks(fields["tolerance"], "5")
     assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
     dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
                          "uncertainty_arcsec": 0.5})

@@ -67,7 +67,7 @@ def test_one_estimate_entering_twice_counts_once_for_nu():
         BudgetComponent("standard", "B", "normal", b, 1.0, 1.0, math.inf)), 1)
     apart = UncertaintyBudget(tuple(replace(c, dof_group="") for c in grouped.components), 1)
     u2 = 2 * s**2 + b**2
-    assert grouped.combined_arcsec[0] == pytest.approx(math.sqrt(u2))
+    assert grouped.combined[0] == pytest.approx(math.sqrt(u2))
     assert grouped.effective_dof() == pytest.approx(u2**2 / ((2 * s**2) ** 2 / nu))  # 25.9
     assert apart.effective_dof() == pytest.approx(u2**2 / (2 * s**4 / nu))  # 51.8: doubled
     # GTC: one input of u = √2·s with ν gives the same ν_eff
@@ -80,13 +80,13 @@ def test_theodolite_budget_counts_its_repeatability_once():
     budget = theodolite_budget(result, META)
     rows = budget.table()
     repeat = [r for r in rows if r["name"] in ("Reading repeatability", "Reference reading (θ₀)")]
-    assert len(repeat) == 2 and repeat[0]["u_arcsec"] == repeat[1]["u_arcsec"]
+    assert len(repeat) == 2 and repeat[0]["u"] == repeat[1]["u"]
     nu = repeat[0]["dof"]
     i = budget.worst_index
     contrib = budget.contributions()[:, i]
     names = [r["name"] for r in rows]
     model = contrib[names.index("Set-up model ζ (ψ, α, β)")]
-    group = repeat[0]["contribution_arcsec"] ** 2 + repeat[1]["contribution_arcsec"] ** 2
+    group = repeat[0]["contribution"] ** 2 + repeat[1]["contribution"] ** 2
     hand = float(np.sum(contrib**2)) ** 2 / (group**2 / nu + model**4 / nu)
     assert budget.effective_dof() == pytest.approx(hand)
 
@@ -108,9 +108,9 @@ def test_deciding_point_is_named_as_in_the_results_table(key):
     settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else None
     kind, result = _sample(key, settings)
     tolerance = 1000.0 if key != "polygon" else None
-    meta = replace(META, decision_quantity="points", tolerance_arcsec=tolerance)
+    meta = replace(META, decision_quantity="points", tolerance=tolerance)
     if key == "polygon":  # its tolerance is the grade's (±1")
-        meta = replace(meta, tolerance_arcsec=None,
+        meta = replace(meta, tolerance=None,
                        standards=(replace(META.standards[0], uncertainty_arcsec=0.1),))
     document = kind.certificate_document(result, meta)
     statement = str(document.conformity.statement)
@@ -143,7 +143,7 @@ def test_asymmetric_half_range_interval_is_printed_as_such():
     c = decide_conformity(errors, budget, 3.0, "guarded", "half_range")
     mc = c.monte_carlo
     assert mc.u_upper != pytest.approx(mc.u_lower, rel=0.02)
-    assert c.expanded_lower == mc.u_lower and c.expanded_arcsec == mc.u_upper
+    assert c.expanded_lower == mc.u_lower and c.expanded == mc.u_upper
     row = decision_rows(c, budget, "points")[0][1]
     d = 2 if min(mc.u_lower, mc.u_upper) >= 0.1 else 3
     assert f"−{mc.u_lower:.{d}f}\"/+{mc.u_upper:.{d}f}\"" in row and "±" not in row
@@ -205,7 +205,7 @@ def test_the_certificate_defines_alpha_and_beta():
 # 1. the fringe certificate's traceability ----------------------------------------------------
 def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     kind, result = _sample("fringe", {"samples_per_period": 64})
-    meta = replace(META, tolerance_arcsec=0.5, standards=(
+    meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
                 uncertainty_arcsec=None),))
     document = kind.certificate_document(result, meta)
@@ -225,7 +225,7 @@ def test_fringe_stated_inputs_enter_the_budget_by_hand():
     phase by u_o/R (rad), a gain ratio u_g by |S C|/R² u_g, the LSB q by q/√12/R, a
     linearity limit a by a/√3/R; R from the measured signals about their mean."""
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
-    document = kind.certificate_document(result, replace(META, tolerance_arcsec=0.5, standards=(
+    document = kind.certificate_document(result, replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
                 uncertainty_arcsec=0.005, basis="U95"),)))
     assert not document.untraceable and document.conformity.verdict != "not assessed"
@@ -287,13 +287,13 @@ def test_positioning_figures_carry_their_u():
     budget = positioning_budget(result, META)
     intervals = figure_uncertainties(result, budget)
     m = result.positions.size
-    hand = 2.0 * math.sqrt(float(np.sum(budget.combined_arcsec**2))) / m
+    hand = 2.0 * math.sqrt(float(np.sum(budget.combined**2))) / m
     lower, upper = intervals["B_mean"]
     assert lower == pytest.approx(hand, rel=0.05) and upper == pytest.approx(hand, rel=0.05)
     for key in ("A", "R", "E", "M", "B", "B_mean", "P"):
         assert key in intervals and min(intervals[key]) > 0
     # E is a range of means: at least one mean's U, at most that of a difference of two
-    u_mean = 2.0 * float(np.max(budget.combined_arcsec))
+    u_mean = 2.0 * float(np.max(budget.combined))
     assert 0.5 * u_mean < intervals["E"][1] < math.sqrt(2) * u_mean * 1.1
     kind, _ = _sample("positioning")
     document = kind.certificate_document(result, META)
@@ -311,9 +311,9 @@ def test_positioning_states_its_inputs_and_the_test_conditions():
                 "axis_temperature_c": 20.3, "axis_setup": "calibrator on the table centre"}
     document = kind.certificate_document(result, META, settings=settings)
     rows = {r["name"]: r for r in document.budget.table()}
-    assert rows["Misalignment of the reference"]["u_arcsec"] == pytest.approx(0.3)
-    assert rows["Resolution of the reference"]["u_arcsec"] == pytest.approx(0.1 / math.sqrt(12))
-    assert rows["Temperature"]["u_arcsec"] == pytest.approx(0.2)
+    assert rows["Misalignment of the reference"]["u"] == pytest.approx(0.3)
+    assert rows["Resolution of the reference"]["u"] == pytest.approx(0.1 / math.sqrt(12))
+    assert rows["Temperature"]["u"] == pytest.approx(0.2)
     listed = dict(document.settings)
     assert "calibrator on the table centre" in listed.values()
     assert any("20.3" in v for v in listed.values())
@@ -343,7 +343,7 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
                              {"grade": 4, "ac_roll_arcmin": 0.0})
     assert result.repeatability_arcsec is None  # one set
-    document = POLYGON.certificate_document(result, replace(META, tolerance_arcsec=None))
+    document = POLYGON.certificate_document(result, replace(META, tolerance=None))
     rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
     assert rows and "the autocollimator's reading noise from the tilt fits stands for it" in rows[0][2]
     assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
@@ -351,7 +351,7 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
 
 def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
-    meta = replace(META, tolerance_arcsec=0.5, standards=(
+    meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
                 certificate_no="CAL-2026-33", uncertainty_arcsec=None),))
     document = kind.certificate_document(result, meta)

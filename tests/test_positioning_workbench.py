@@ -100,7 +100,7 @@ def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samp
         nu = uc**4 / (u_rep**4 / (n - 1))  # Welch–Satterthwaite, the reference exact
         # k from ν_eff truncated to the lower integer (GUM G.6.4)
         k = stats.t.ppf(0.5 + math.erf(math.sqrt(2)) / 2, math.floor(nu))
-        assert document.budget.expanded_arcsec[index] == pytest.approx(k * uc, rel=1e-6)
+        assert document.budget.expanded[index] == pytest.approx(k * uc, rel=1e-6)
     text = flat(document)
     assert "follows ISO 230-2:2014" in text and "VDI/DGQ 3441" in text
     assert "x = actual position − target" in text

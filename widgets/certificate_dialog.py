@@ -40,6 +40,7 @@ from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
 )
+from models.quantity import UNITS
 from widgets.i18n import declared, tr
 from widgets.screen_fit import fit_to_screen
 
@@ -51,7 +52,7 @@ _TEXT_FIELDS = {
     "certificate_number": QT_TR_NOOP("Certificate number"),
     "issue_date": QT_TR_NOOP("Date of issue (YYYY-MM-DD)"),
     "calibration_date": QT_TR_NOOP("Date of calibration"),
-    "tolerance_arcsec": QT_TR_NOOP("Tolerance ± (\")"),
+    "tolerance": QT_TR_NOOP("Tolerance ±"),
     "lab_name": QT_TR_NOOP("Laboratory"), "lab_address": QT_TR_NOOP("Address"),
     "lab_accreditation": QT_TR_NOOP("Accreditation"), "number_scheme": QT_TR_NOOP("Number scheme"),
     "customer_name": QT_TR_NOOP("Customer"), "customer_address": QT_TR_NOOP("Address"),
@@ -79,6 +80,8 @@ _CHOICES = {
     "decision_quantity": (QT_TR_NOOP("Decided quantity"), {
         "half_range": QT_TR_NOOP("Half the peak-to-peak (Monte Carlo U)"),
         "points": QT_TR_NOOP("Every point with its own U")}),
+    # the tolerance's unit: that of the errors it is judged against, or one of their kind
+    "tolerance_unit": (QT_TR_NOOP("Unit of the tolerance"), {k: u.symbol for k, u in UNITS.items()}),
 }
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
                      "applies_to")
@@ -135,7 +138,7 @@ class CertificateDialog(QDialog):
     def _setup_ui(self) -> None:
         grid = QGridLayout()
         cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
-                                           "tolerance_arcsec", "coverage_probability_pct",
+                                           "tolerance", "coverage_probability_pct",
                                            "as_left_table_sha256", "calibration_site"))
         self.fields["issue_date"].setToolTip(tr(
             "A draft prints this date; an issued certificate is dated the day the register "

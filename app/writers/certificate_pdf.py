@@ -644,8 +644,8 @@ def _render(document: CertificateDocument) -> FPDF:
         (label(document, "Serial number", "\n"), meta.item_serial),
         (label(document, "Grade / specification", "\n"), joined(_between("; ", [
             meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
-                                     tolerance=f"{document.tolerance_arcsec:g}{document.unit}")
-            if document.tolerance_arcsec else ""]))),
+                                     tolerance=f"{document.tolerance:g}{document.unit}")
+            if document.tolerance else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
         (label(document, "Place of calibration", "\n"), _place(meta)),
         (label(document, "Environment", "\n"), _environment(meta)),
@@ -685,7 +685,7 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.heading(label(document, document.statistics.title))
     pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
     pdf.heading(label(document, "Measurement uncertainty"))
-    big_u = document.expanded_uncertainty_arcsec
+    big_u = document.expanded_uncertainty
     budget_ = document.budget
     pdf.paragraph(message(QT_TR_NOOP(
         "The expanded uncertainty of the error is U = {u} (the largest over the points; each "

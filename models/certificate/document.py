@@ -57,7 +57,7 @@ class CertificateDocument:
     budget: UncertaintyBudget
     budget_point: str  # where the budget table is evaluated, e.g. "θ = 30°"
     conformity: Conformity
-    tolerance_arcsec: float | None
+    tolerance: float | None  # the tolerance in the unit of the errors (`unit`)
     plots: tuple[PlotFigure, ...]
     warnings: tuple[str, ...] = ()
     # every point's figures, for the CSV/XLSX export: (column header, values)
@@ -76,9 +76,9 @@ class CertificateDocument:
     stated_inputs: tuple[str, ...] = ()
 
     @property
-    def expanded_uncertainty_arcsec(self) -> float:
+    def expanded_uncertainty(self) -> float:
         """The certificate's U: the largest over the curve's points."""
-        return self.budget.max_expanded_arcsec
+        return self.budget.max_expanded
 
     @property
     def title(self) -> str:
@@ -118,13 +118,13 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     for r in budget.table():
         dof = _dof_text(r["dof"])
         rows.append((r["name"], str(r["evaluation"]), r["distribution"],
-                     _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
-                     f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
+                     _fmt(r["value"]), f"{r['divisor']:.3g}", _fmt(r["u"]),
+                     f"{r['sensitivity']:.3g}", _fmt(r["contribution"]),
                      f"{100 * r['share']:.1f}", dof))
     i = budget.worst_index
     nu_text = _dof_text(budget.truncated_dof())
     raw = budget.effective_dof()
-    uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
+    uc = float(budget.combined[i]) if budget.points else float("nan")
     rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
     k = budget.coverage_factor
@@ -195,17 +195,17 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                   points: str, unit: str = "\"") -> list[tuple[str, str, str]]:
     """The statistics rows every certificate has: the decided quantity with its own U,
     and the curve's largest U with its coverage factor."""
-    big_u = budget.max_expanded_arcsec
+    big_u = budget.max_expanded
     digits = uncertainty_decimals(big_u)
     rows = []
-    if math.isfinite(conformity.value_arcsec):
+    if math.isfinite(conformity.value):
         lower = conformity.expanded_lower
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
-            d = significant_decimals(min(lower, conformity.expanded_arcsec)) or digits
-            value = (f"{conformity.value_arcsec:.{d}f}{unit}\n"  # a line each: never broken
-                     f"{asymmetric_text(lower, conformity.expanded_arcsec, unit, d)}")
+            d = significant_decimals(min(lower, conformity.expanded)) or digits
+            value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
+                     f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
         else:
-            value = format_uncertain(conformity.value_arcsec, conformity.expanded_arcsec, unit)
+            value = format_uncertain(conformity.value, conformity.expanded, unit)
         rows.append((QT_TR_NOOP("Decided quantity"), value, conformity.quantity))
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),

@@ -15,6 +15,7 @@ from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
 from models.messages import QT_TR_NOOP, message
+from models.quantity import UNITS, Quantity, UnitError
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
@@ -181,7 +182,8 @@ class CertificateMetadata:
     item_serial: str = ""
     item_model: str = ""  # the item's model / type designation
     item_grade: str = ""
-    tolerance_arcsec: float | None = None  # ± limit for the conformity statement
+    tolerance: float | None = None  # ± limit for the conformity statement, in tolerance_unit
+    tolerance_unit: str = "arcsec"  # a key of models.quantity.UNITS
     item_resolution_arcsec: float | None = None
     standards: tuple[ReferenceStandard, ...] = ()
     calibration_place: str = "laboratory"  # see PLACES
@@ -209,7 +211,7 @@ class CertificateMetadata:
     # the user's register (the command line issues them into a register of their own)
     example: bool = False
 
-    _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
+    _NUMBERS = ("tolerance", "item_resolution_arcsec", "temperature_c", "humidity_pct",
                 "coverage_probability_pct")
     _DATES = ("calibration_date", "issue_date")
 
@@ -221,6 +223,11 @@ class CertificateMetadata:
         if not isinstance(data, dict):
             raise MetadataError(message(
                 QT_TR_NOOP("certificate metadata must be a JSON object")))
+        if "tolerance_arcsec" in data and "tolerance" not in data:
+            # details written before the tolerance had its unit (project schema 1, a JSON
+            # file of the command line): arcseconds, as the key says; a project file's
+            # migration states the unit of each workbench's errors instead
+            data = {**data, "tolerance": data["tolerance_arcsec"]}
         values: dict[str, Any] = {}
         for f in fields(cls):
             if f.name.startswith("_") or f.name not in data:
@@ -263,9 +270,13 @@ class CertificateMetadata:
                 QT_TR_NOOP("certificate field 'decision_rule' must be one of {join}, not "
                            "'{decision_rule}'"),
                 join=', '.join(DECISION_RULES), decision_rule=meta.decision_rule))
-        if meta.tolerance_arcsec is not None and meta.tolerance_arcsec <= 0:
+        if meta.tolerance is not None and meta.tolerance <= 0:
             raise MetadataError(message(
-                QT_TR_NOOP("certificate field 'tolerance_arcsec' must be positive")))
+                QT_TR_NOOP("certificate field 'tolerance' must be positive")))
+        if meta.tolerance_unit not in UNITS:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'tolerance_unit' must be one of {join}, not "
+                           "'{unit}'"), join=', '.join(UNITS), unit=meta.tolerance_unit))
         if meta.humidity_pct is not None and not 0 <= meta.humidity_pct <= 100:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'humidity_pct' must be 0 to 100 %")))
@@ -288,6 +299,25 @@ class CertificateMetadata:
                            "'{document_type}'"),
                 join=', '.join(DOCUMENT_TYPES), document_type=meta.document_type))
         return meta
+
+    @property
+    def tolerance_quantity(self) -> Quantity | None:
+        """The tolerance with its unit (None when none is stated)."""
+        return None if self.tolerance is None else Quantity(self.tolerance, self.tolerance_unit)
+
+    def tolerance_in(self, unit: str) -> float | None:
+        """The tolerance as a number in ``unit`` (the unit of the errors it is judged
+        against); MetadataError when it is not a quantity of the same kind (a tolerance in
+        nm for errors in arcseconds)."""
+        if self.tolerance is None:
+            return None
+        try:
+            return float(self.tolerance_quantity.in_unit(unit))
+        except UnitError:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'tolerance' is in {given}, but the errors are in "
+                           "{unit}: state the tolerance in a unit of the same kind"),
+                given=UNITS[self.tolerance_unit].symbol, unit=UNITS[unit].symbol)) from None
 
     @property
     def coverage_probability(self) -> float:

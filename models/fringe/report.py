@@ -171,7 +171,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
             QT_TR_NOOP("Fitted model (correction table)"), "A", "normal", model, 1.0, 1.0, dof,
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit)
 
 
 class _SampleNames:
@@ -235,7 +235,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
             as_left_table_sha256=metadata.as_left_table_sha256[:16], sha256=result.table.sha256[:16]))
     budget = fringe_budget(result, metadata, as_found=not as_left)
     found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
     period, sym, unit = result.period_length, result.unit_symbol, result.unit
@@ -293,14 +293,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                  ratio=f"{result.amplitude_ratio:.4f}",
                  quadrature=f"{result.quadrature_error_deg:+.3f}°")),
     ]
-    tol = metadata.tolerance_arcsec
+    tol = metadata.tolerance_in(budget.unit.key)
     untraceable = untraceable_inputs(result, metadata)
     withheld = "" if not untraceable or tol is None else message(
         QT_TR_NOOP("the error is not traceable: {what}"),
         what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
     conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
                                    metadata.decision_quantity, withheld,
-                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym,
+                                   what=QT_TR_NOOP("as-found interpolation error"),
                                    point_names=_SampleNames())
     stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
     stat_rows.append((QT_TR_NOOP("Correction table"),

@@ -295,13 +295,14 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
     """The tolerance from the one source, the workbench's grade; metadata that states
     another grade or tolerance is refused rather than silently overruled."""
     tol = GRADE_ACCURACY_ARCSEC[result.grade]
-    if metadata.tolerance_arcsec is not None and not math.isclose(metadata.tolerance_arcsec, tol):
+    given = metadata.tolerance_in("arcsec")
+    if given is not None and not math.isclose(given, tol):
         raise MetadataError(
             message(
             QT_TR_NOOP("the certificate details give a tolerance of ±{tolerance_arcsec}\" but the "
                        "workbench is set to grade {grade} (±{tol}\"): change the grade or clear the "
                        "tolerance in the details"),
-            tolerance_arcsec=f"{metadata.tolerance_arcsec:g}", grade=result.grade, tol=f"{tol:g}"))
+            tolerance_arcsec=f"{given:g}", grade=result.grade, tol=f"{tol:g}"))
     match = _GRADE_IN_TEXT.search(metadata.item_grade or "")
     if match and int(match.group(1)) != result.grade:
         raise MetadataError(
@@ -316,7 +317,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                         source_name: str = "", method_reference: str = "") -> CertificateDocument:
     tol = polygon_tolerance_arcsec(result, metadata)
     budget = polygon_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     m = len(result.sets)
     counting = (QT_TR_NOOP("with the face numbering") if result.counting > 0
                 else QT_TR_NOOP("against the face numbering"))

@@ -106,7 +106,8 @@ def positioning_budget(result: PositioningResult,
     components += repeated_readings_components(result)
     components += resolution_component(metadata, 1.0)
     components += _stated_inputs(result)
-    return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
+                             result.deviation_unit)
 
 
 def repeated_readings_components(result: PositioningResult) -> list[BudgetComponent]:
@@ -285,7 +286,7 @@ def _figure_rows(result: PositioningResult,
 def positioning_certificate(result: PositioningResult, metadata: CertificateMetadata,
                             source_name: str = "", method_reference: str = "") -> CertificateDocument:
     budget = positioning_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     sym = result.symbol
     points = _points(result)
     m = result.positions.size
@@ -327,9 +328,10 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                      target=f"{target:g}{result.target_symbol}",
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
-    conformity = decide_conformity(curve, budget, metadata.tolerance_arcsec,
+    tol = metadata.tolerance_in(budget.unit.key)
+    conformity = decide_conformity(curve, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
-                                   what=QT_TR_NOOP("mean positional deviation"), unit=sym,
+                                   what=QT_TR_NOOP("mean positional deviation"),
                                    point_names=names)
     stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
@@ -381,7 +383,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     return CertificateDocument(
         "positioning", QT_TR_NOOP("Positioning test of an axis"), metadata, source_name, METHOD,
         method_reference, parameters, results, statistics, budget,
-        names[worst], conformity, metadata.tolerance_arcsec,
+        names[worst], conformity, tol,
         tuple(plots), tuple(result.warnings), unit=sym, statements=tuple(statements),
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(

@@ -1,14 +1,20 @@
 """The project file: one JSON document holding every workbench's readings and settings.
 
-Schema (``schema_version`` 1)::
+Schema (``schema_version`` 2)::
 
-    {"format": "anglebench-project", "schema_version": 1, "app_version": "0.1.0",
+    {"format": "anglebench-project", "schema_version": 2, "app_version": "0.1.0",
      "metadata": {...},
      "workbenches": {"theodolite": {"rows": [["0", "0", "-0.03"], ...],
                                      "settings": {...}}, ...}}
 
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
+
+Schema 2 gives the certificate's tolerance its unit: ``"tolerance": 0.5,
+"tolerance_unit": "nm"`` where schema 1 wrote ``"tolerance_arcsec": 0.5`` in the
+unit of the workbench's errors, whatever it was (nm for an interferometer, the
+deviation unit of a positioning log). A schema-1 file is migrated as it is read
+(:func:`migrate_certificate_details`); it is written back as schema 2.
 """
 
 from __future__ import annotations
@@ -31,6 +37,8 @@ __all__ = [
     "WorkbenchState",
     "check_project",
     "load_project",
+    "migrate_certificate_details",
+    "schema1_error_unit",
     "project_from_json",
     "project_json_parts",
     "project_to_json",
@@ -38,7 +46,7 @@ __all__ = [
 ]
 
 FORMAT_NAME = "anglebench-project"
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 
 
 class ProjectFileError(ValueError):
@@ -153,6 +161,13 @@ def project_from_json(text: str, source: str = "project") -> Project:
                        "changed"),
             source=source))
     project = Project(metadata=dict(metadata))
+    settings_of = {key: state.get("settings") for key, state in benches.items()
+                   if isinstance(state, dict)}
+    if version < 2 and certificates:
+        project.metadata["certificates"] = {
+            key: migrate_certificate_details(details, schema1_error_unit(
+                key, settings_of.get(key) if isinstance(settings_of.get(key), dict) else {}))
+            for key, details in certificates.items()}
     for key, state in benches.items():
         if not isinstance(state, dict):
             raise ProjectFileError(message(
@@ -176,6 +191,34 @@ def project_from_json(text: str, source: str = "project") -> Project:
                 source=source, key=key))
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
     return project
+
+
+def schema1_error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
+    """The unit a schema-1 file's tolerance was in: the unit of that workbench's errors as
+    its settings made them then (history, frozen with the schema: a workbench added
+    after schema 1 never wrote one). Fringe: nm when an interferometer period was set,
+    else arcsec; positioning: its deviation unit; the others: arcsec."""
+    if workbench == "fringe":
+        try:
+            return "nm" if float(settings.get("period_nm") or 0.0) else "arcsec"
+        except (TypeError, ValueError):
+            return "arcsec"
+    if workbench == "positioning":
+        unit = settings.get("deviation_unit", "arcsec")
+        return unit if unit in ("arcsec", "urad", "um", "nm") else "arcsec"
+    return "arcsec"
+
+
+def migrate_certificate_details(details: dict[str, Any], error_unit: str) -> dict[str, Any]:
+    """Certificate details written before the tolerance had its unit (``tolerance_arcsec``,
+    in the unit of the workbench's errors ``error_unit``) with ``tolerance`` and
+    ``tolerance_unit``; details that already state them come back as they are."""
+    if "tolerance_arcsec" not in details or "tolerance" in details:
+        return details
+    out = {k: v for k, v in details.items() if k != "tolerance_arcsec"}
+    out["tolerance"] = details["tolerance_arcsec"]
+    out["tolerance_unit"] = error_unit
+    return out
 
 
 def check_project(project: Project, kinds: Mapping[str, Any], source: str = "project") -> None:

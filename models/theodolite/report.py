@@ -148,7 +148,7 @@ def repeated_readings_components(result: TheodoliteResult) -> list[BudgetCompone
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
                            source_name: str = "", method_reference: str = "") -> CertificateDocument:
     budget = theodolite_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     ident = result.identification
     s = ident.setup
     # their own ν: the fit's n − 3 (three parameters from n elevations)
@@ -183,7 +183,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
                  rms=f"{c.rms:.2f}\"")),
     ]
-    tol = metadata.tolerance_arcsec
+    tol = metadata.tolerance_in(budget.unit.key)
     conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    point_names=_point_names(result.theta_deg))

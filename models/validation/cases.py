@@ -94,7 +94,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
         el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
         result = analyze_run(theta, az, el)
         deviations.append(result.corrected_error_arcsec - truth)
-        budgets.append(theodolite_budget(result, meta).combined_arcsec)
+        budgets.append(theodolite_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -121,7 +121,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
             rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
         deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
-        budgets.append(polygon_budget(result, meta).combined_arcsec)
+        budgets.append(polygon_budget(result, meta).combined)
     # face 1 is the zero: its error is zero by definition in set 1, and the budget's
     # simple pattern there is not compared
     return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
@@ -142,7 +142,7 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
         deviations.append(result.compensated_error)
-        budgets.append(fringe_budget(result, meta).combined_arcsec)
+        budgets.append(fringe_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -174,7 +174,7 @@ def positioning_budget_trials(trials: int, rng: np.random.Generator
                                  for t in result.positions] for d in (1, -1)])
         mean = np.concatenate([result.iso.forward.mean, result.iso.backward.mean])
         deviations.append(mean - truth)
-        budgets.append(positioning_budget(result, meta).combined_arcsec)
+        budgets.append(positioning_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
