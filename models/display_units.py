@@ -170,15 +170,19 @@ def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, An
 
 
 def figure_in_unit(figure: PlotFigure, unit: AngleUnit) -> PlotFigure:
-    """The plot with its y values (and their bands) in ``unit`` when its y title states
-    an angle unit; other figures come back unchanged."""
-    y_label, factor = header_in_unit(figure.y_label, unit)
+    """The plot with its y values (and their bands) in ``unit`` when they are in one of
+    the angle units results are read in (its ``y_unit``); other figures (volts, nm,
+    degrees of a position) come back unchanged."""
+    if figure.y_unit not in ANGLE_UNITS:
+        return figure
+    factor = unit.per_arcsec / ANGLE_UNITS[figure.y_unit].per_arcsec
     if factor == 1.0:
         return figure
+    y_label, _ = header_in_unit(figure.y_label, unit)
     series = tuple(replace(s, y=np.asarray(s.y) * factor,
                            band=None if s.band is None else np.asarray(s.band) * factor)
                    for s in figure.series)
-    return replace(figure, y_label=y_label, series=series)
+    return replace(figure, y_label=y_label, series=series, y_unit=unit.key)
 
 
 def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:

@@ -16,12 +16,13 @@ language, so this module does it in a few lines and loads nothing.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-__all__ = ["UNITS", "Quantity", "Unit", "UnitError", "unit"]
+__all__ = ["UNITS", "Quantity", "Unit", "UnitError", "unit", "unit_of_title"]
 
 
 class UnitError(ValueError):
@@ -61,7 +62,7 @@ UNITS: dict[str, Unit] = {u.key: u for u in (
 # other spellings of a unit (a symbol, a second µ, the prime of typography)
 _SPELLINGS: dict[str, str] = {
     **{u.symbol: u.key for u in UNITS.values()}, "″": "arcsec", "μrad": "urad",
-    "μm": "um", "µm": "um",
+    "μm": "um", "µm": "um", "deg": "deg",
 }
 
 
@@ -74,6 +75,20 @@ def unit(name: str | Unit) -> Unit:
         return UNITS[key]
     except (KeyError, TypeError):
         raise UnitError(f"unknown unit {name!r}; choose one of {', '.join(UNITS)}") from None
+
+
+_TITLE_UNIT = re.compile(r"\(([^()]+)\)\s*$")
+
+
+def unit_of_title(title: str) -> str:
+    """The key of the unit a title or header ends with ("error (µrad)" → "urad"), or ""
+    when it ends with none of ours ("signal (V)")."""
+    found = _TITLE_UNIT.search(str(title))
+    if found is None:
+        return ""
+    name = found.group(1).strip()
+    key = _SPELLINGS.get(name, name)
+    return key if key in UNITS else ""
 
 
 @dataclass(frozen=True)

@@ -64,7 +64,7 @@ def main() -> None:
     meta = window.certificate_metadata("polygon")
     dialog = CertificateDialog(meta, window)
     for _ in range(3):
-        dialog.add_standard({"description": "Autocollimator", "uncertainty_arcsec": 0.3})
+        dialog.add_standard({"description": "Autocollimator", "uncertainty": 0.3})
     dialog.show()
     record("certificate details", dialog)
     dialog.close()

@@ -38,7 +38,7 @@ META = CertificateMetadata.from_dict({
     "customer_name": "长春光机所 CIOMP", "item_description": "Encoder RX-26", "item_serial": "SN-1",
     "calibration_date": "2026-11-20", "issue_date": "2026-11-24", "created": "2026-11-24T10:00:00",
     "operator": "王工", "approver": "Dr. Li", "tolerance_arcsec": 3,
-    "standards": [{"description": "Reference AC", "certificate_no": "NIM-1", "uncertainty_arcsec": 0.4}],
+    "standards": [{"description": "Reference AC", "certificate_no": "NIM-1", "uncertainty": 0.4}],
     "notes": "=cmd|' /C calc'!A0 <b>x</b> 备注"})
 
 

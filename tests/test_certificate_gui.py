@@ -29,7 +29,7 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
     qtbot.keyClicks(fields["tolerance"], "5")
     assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
     dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
-                         "uncertainty_arcsec": 0.5})
+                         "uncertainty": 0.5})
 
 
 def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatch):

@@ -30,7 +30,7 @@ META = CertificateMetadata.from_dict({
     "item_description": "Encoder", "item_serial": "SN-1", "calibration_date": "2026-11-20",
     "issue_date": "2026-11-24", "created": "2026-11-24T10:00:00", "operator": "Wang",
     "standards": [{"description": "Autocollimator", "certificate_no": "NIM-2026-0212",
-                   "uncertainty_arcsec": 0.1}]})
+                   "uncertainty": 0.1}]})
 
 
 #: the fringe inputs the signals cannot show (a 16-bit ADC over ±10 V, its calibration)
@@ -137,7 +137,7 @@ def test_repeats_of_the_reference_angle_carry_their_uncertainty():
 
 
 @pytest.mark.parametrize("field, value, message", [
-    ("standards", [{"description": "x", "uncertainty_arcsec": 1e300}], "must be 0 to 3600"),
+    ("standards", [{"description": "x", "uncertainty": 1e300}], "must be 0 to 3600"),
     ("item_resolution_arcsec", -5, "must be 0 to 3600"),
     ("coverage_probability_pct", 120, "50 to 99.9"),
     ("decision_quantity", "mean", "must be one of half_range, points"),

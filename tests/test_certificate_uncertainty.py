@@ -28,7 +28,7 @@ META = CertificateMetadata.from_dict({
     "item_description": "Axis", "item_serial": "SN-1", "calibration_date": "2026-11-20",
     "operator": "Wang",
     "standards": [{"description": "Theodolite", "certificate_no": "NIM-1",
-                   "uncertainty_arcsec": 0.5, "basis": "u"}]})
+                   "uncertainty": 0.5, "basis": "u"}]})
 
 
 # 10. ν_eff truncated to the lower integer before t is taken (GUM G.6.4) -------------------
@@ -111,7 +111,7 @@ def test_deciding_point_is_named_as_in_the_results_table(key):
     meta = replace(META, decision_quantity="points", tolerance=tolerance)
     if key == "polygon":  # its tolerance is the grade's (±1")
         meta = replace(meta, tolerance=None,
-                       standards=(replace(META.standards[0], uncertainty_arcsec=0.1),))
+                       standards=(replace(META.standards[0], uncertainty=0.1),))
     document = kind.certificate_document(result, meta)
     statement = str(document.conformity.statement)
     assert "number " not in statement
@@ -207,7 +207,7 @@ def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     kind, result = _sample("fringe", {"samples_per_period": 64})
     meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                uncertainty_arcsec=None),))
+                uncertainty=None),))
     document = kind.certificate_document(result, meta)
     assert document.conformity.verdict == "not assessed"
     assert "not traceable" in document.conformity.statement
@@ -227,7 +227,7 @@ def test_fringe_stated_inputs_enter_the_budget_by_hand():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
     document = kind.certificate_document(result, replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                uncertainty_arcsec=0.005, basis="U95"),)))
+                uncertainty=0.005, basis="U95"),)))
     assert not document.untraceable and document.conformity.verdict != "not assessed"
     budget = document.budget
     names = [c.name for c in budget.components]
@@ -353,7 +353,7 @@ def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
     meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                certificate_no="CAL-2026-33", uncertainty_arcsec=None),))
+                certificate_no="CAL-2026-33", uncertainty=None),))
     document = kind.certificate_document(result, meta)
     assert document.stated_inputs == ("Phase reference", "ADC quantisation", "ADC offset",
                                       "ADC gain ratio", "ADC linearity")

@@ -147,3 +147,22 @@ def test_a_converted_quantity_round_trips(value, decimals, key):
     number = float(shown.split()[2])
     recovered = number / ANGLE_UNITS[key].per_arcsec
     assert abs(recovered - value) <= 0.5 * 10.0 ** -decimals + 1e-9
+
+
+def test_a_plot_states_its_unit_as_data_and_is_converted_by_it():
+    series = (PlotSeries("raw", np.array([0.0, 1.0]), np.array([3.6, -7.2])),)
+    declared = PlotFigure("Errors", "θ (°)", "error (\")", series)
+    assert declared.y_unit == "arcsec"  # read once from its title when it is declared
+    shown = figure_in_unit(declared, MDEG)
+    assert (shown.y_unit, shown.y_label) == ("mdeg", "error (mdeg)")
+    np.testing.assert_allclose(shown.series[0].y, [1.0, -2.0])
+    np.testing.assert_allclose(figure_in_unit(shown, ARCSEC).series[0].y, [3.6, -7.2])
+    assert PlotFigure("Signals", "θ", "signal (V)", series).y_unit == ""
+    assert PlotFigure("Interferometer", "θ", "error (nm)", series).y_unit == "nm"
+    nm = PlotFigure("Interferometer", "θ", "error (nm)", series)
+    assert figure_in_unit(nm, URAD) is nm  # nm stay nm
+    # a unit given as data wins over a title that states none
+    stated = PlotFigure("Errors", "θ (°)", "error", series, y_unit="urad")
+    np.testing.assert_allclose(figure_in_unit(stated, URAD).series[0].y, [3.6, -7.2])
+    np.testing.assert_allclose(figure_in_unit(stated, ARCSEC).series[0].y,
+                               np.array([3.6, -7.2]) / 4.8481368, rtol=1e-8)

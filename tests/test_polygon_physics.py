@@ -287,7 +287,7 @@ def test_polygon_stated_from_face_1_has_sensitivity_one():
 
         def contribution(applies_to, result=result):
             meta = CertificateMetadata.from_dict({"standards": [
-                {"description": "polygon", "uncertainty_arcsec": 0.2, "basis": "u",
+                {"description": "polygon", "uncertainty": 0.2, "basis": "u",
                  "applies_to": applies_to}]})
             return polygon_budget(result, meta).components[0].contribution(12)
 

@@ -88,7 +88,7 @@ def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
 # -- certificate ------------------------------------------------------------------------------
 def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samples_dir):
     meta = CertificateMetadata(standards=(ReferenceStandard("laser rotary calibrator",
-                                                            uncertainty_arcsec=0.6,
+                                                            uncertainty=0.6,
                                                             basis="U95"),))
     result = sample(samples_dir)
     document = KIND.certificate_document(result, meta)

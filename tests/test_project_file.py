@@ -104,14 +104,17 @@ def test_a_schema_1_file_opens_with_each_tolerance_in_its_workbench_unit(tmp_pat
     assert certificates["theodolite"]["tolerance"] == 3
     assert certificates["theodolite"]["tolerance_unit"] == "arcsec"
     assert "tolerance_arcsec" not in certificates["theodolite"]
-    assert certificates["positioning"] == {"tolerance": 15, "tolerance_unit": "urad",
-                                           "operator": "Wang"}  # its deviation unit
+    assert certificates["positioning"] == {  # in its deviation unit, every figure
+        "tolerance": 15, "tolerance_unit": "urad", "operator": "Wang",
+        "item_resolution": 0.1, "item_resolution_unit": "urad",
+        "standards": [{"description": "Rotary calibrator", "uncertainty": 0.5,
+                       "uncertainty_unit": "urad", "basis": "U95"}]}
     assert certificates["fringe"]["tolerance_unit"] == "nm"  # an interferometer period was set
     path = tmp_path / "again.anglebench.json"
     save_project(path, project)
     saved = json.loads(path.read_text("utf-8"))
     assert saved["schema_version"] == SCHEMA_VERSION == 2
-    assert "tolerance_arcsec" not in path.read_text("utf-8")
+    assert "_arcsec" not in path.read_text("utf-8")
     assert load_project(path) == project  # schema 2 is read as it is
     assert project_from_json(json.dumps({**saved, "schema_version": 1})) == project  # idempotent
 

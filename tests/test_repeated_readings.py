@@ -27,7 +27,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 
 META = CertificateMetadata.from_dict({"standards": [
-    {"description": "Reference AC", "uncertainty_arcsec": 0.4}]})
+    {"description": "Reference AC", "uncertainty": 0.4}]})
 TYPE_A = "Repeated readings (s/√n)"
 
 

@@ -90,9 +90,9 @@ def test_budget_agrees_with_gtc(inputs):
 def test_metadata_round_trip_and_errors():
     meta = CertificateMetadata.from_dict({
         "certificate_number": "AB-2026-0007", "customer_name": "北京精密机械 & Co <b>",
-        "standards": [{"description": "Polygon 24", "uncertainty_arcsec": "0,25", "basis": "U95"}],
+        "standards": [{"description": "Polygon 24", "uncertainty": "0,25", "basis": "U95"}],
         "temperature_c": 20.1, "calibration_date": "2026-11-24", "unknown": 1})
-    assert meta.standards[0].uncertainty_arcsec == 0.25
+    assert meta.standards[0].uncertainty == 0.25
     assert CertificateMetadata.from_dict(meta.to_dict()) == meta
     assert "customer" not in meta.missing_fields() and "operator" in meta.missing_fields()
     with pytest.raises(MetadataError, match="calibration_date"):

@@ -60,7 +60,7 @@ _TEXT_FIELDS = {
     "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
     "item_model": QT_TR_NOOP("Model / type"),
     "calibration_site": QT_TR_NOOP("Customer's site (where)"),
-    "item_resolution_arcsec": QT_TR_NOOP("Resolution (\")"),
+    "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
     "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
     "approver": QT_TR_NOOP("Approved by"),
@@ -82,12 +82,15 @@ _CHOICES = {
         "points": QT_TR_NOOP("Every point with its own U")}),
     # the tolerance's unit: that of the errors it is judged against, or one of their kind
     "tolerance_unit": (QT_TR_NOOP("Unit of the tolerance"), {k: u.symbol for k, u in UNITS.items()}),
+    "item_resolution_unit": (QT_TR_NOOP("Unit of the resolution"),
+                             {k: u.symbol for k, u in UNITS.items()}),
 }
-_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
-                     "applies_to")
+_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
+                     "applies_to", "uncertainty_unit")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
-                     QT_TR_NOOP("Uncertainty (\")"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
-                     QT_TR_NOOP("Per (reading, from face 1)"))
+                     QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
+                     QT_TR_NOOP("Per (reading, from face 1)"),
+                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -164,7 +167,7 @@ class CertificateDialog(QDialog):
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
             "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
-            "item_resolution_arcsec")), 1, 1)
+            "item_resolution")), 1, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
             "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
         notes_box = QGroupBox(tr("Remarks printed on the certificate"))
@@ -256,6 +259,8 @@ class CertificateDialog(QDialog):
                 text = "U95"
             if key == "applies_to" and not text:
                 text = "reading"
+            if key == "uncertainty_unit" and not text:
+                text = "arcsec"
             self.standards.setItem(row, col, QTableWidgetItem(text))
 
     def _remove_standard(self) -> None:
@@ -274,7 +279,8 @@ class CertificateDialog(QDialog):
             entry = {key: (self.standards.item(row, col).text()
                            if self.standards.item(row, col) else "")
                      for col, key in enumerate(_STANDARD_COLUMNS)}
-            if any(v.strip() for k, v in entry.items() if k not in ("basis", "applies_to")):
+            if any(v.strip() for k, v in entry.items()
+                   if k not in ("basis", "applies_to", "uncertainty_unit")):
                 standards.append(entry)
         data["standards"] = standards
         return data

@@ -29,6 +29,7 @@ import numpy as np
 from models.certificate.document import CertificateDocument, budget_table
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
 from models.project.atomic_write import write_bytes_atomic
+from models.quantity import UNITS
 
 __all__ = ["XLSX_MAX_ROWS", "neutralise", "split_figures", "write_results_csv", "write_results_xlsx"]
 
@@ -186,7 +187,8 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
     for i, s in enumerate(meta.standards, 1):
         rows.append((f"Standard {i}", f"{s.description}; serial {s.serial}; certificate "
                                       f"{s.certificate_no}"))
-        rows.append((f"Standard {i} uncertainty (\")", s.uncertainty_arcsec))
+        rows.append((f"Standard {i} uncertainty ({UNITS[s.uncertainty_unit].symbol})",
+                     s.uncertainty))
     return rows
 
 

@@ -17,6 +17,7 @@ from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure, PlotSeries
+from models.quantity import Quantity
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -153,17 +154,19 @@ def opinion(text) -> str:
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
-                                  reading: str, sensitivity_from_first=None) -> list[BudgetComponent]:
+                                  reading: str, sensitivity_from_first=None,
+                                  unit: str = "arcsec") -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
     ``sensitivity`` per point (√2 where the error is the difference of two
     readings, 0 at the reference point); ``reading`` says what one reading is.
     ``sensitivity_from_first`` is used for a standard whose figure applies to
-    each face's deviation from face 1 (polygon), where the workbench has one.
+    each face's deviation from face 1 (polygon), where the workbench has one. Each
+    standard's figure is converted to ``unit``, the budget's.
     """
     out = []
     for std in metadata.standards:
-        if std.uncertainty_arcsec is None:
+        if std.uncertainty is None:
             continue
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or QT_TR_NOOP("Reference standard")
@@ -176,19 +179,21 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 if std.certificate_no else
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf, note))
+            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note))
     return out
 
 
-def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[BudgetComponent]:
-    """The item's indication resolution r: rectangular, half-width r/2, per reading."""
-    r = metadata.item_resolution_arcsec
+def resolution_component(metadata: CertificateMetadata, sensitivity,
+                         unit: str = "arcsec") -> list[BudgetComponent]:
+    """The item's indication resolution r: rectangular, half-width r/2, per reading, in
+    ``unit`` (the budget's)."""
+    r = metadata.item_resolution_in(unit)
     if not r:
         return []
     return [BudgetComponent(QT_TR_NOOP("Item resolution"), "B", "rectangular", r / 2.0,
                             math.sqrt(3.0), sensitivity, math.inf,
                             message(QT_TR_NOOP("resolution {r} of the item's indication"),
-                                    r=f"{r:g}\""))]
+                                    r=Quantity(r, unit)))]
 
 
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,

@@ -132,7 +132,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     inputs = result.inputs or {}
     out = []
     theta_standard = result.phase_source == "theta_column" and any(
-        s.uncertainty_arcsec is not None for s in metadata.standards)
+        s.uncertainty is not None for s in metadata.standards)
     if not inputs.get("phase_reference_u") and not theta_standard:
         out.append(message(QT_TR_NOOP("the phase reference ({what}) has no stated uncertainty"),
                            what=message(PHASE_REFERENCE[result.phase_source])))
@@ -159,7 +159,8 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"))
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                               unit=result.unit)
     components += _stated_inputs(result, ds, dc, to_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,

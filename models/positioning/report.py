@@ -95,7 +95,8 @@ def positioning_budget(result: PositioningResult,
                 targets=", ".join(f"{t:g}" for t in once)))
     s = np.concatenate([p[2] for p in points])
     n = np.concatenate([p[3] for p in points]).astype(float)
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"))
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"),
+                                               unit=result.deviation_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Repeatability of the mean (s/√n)"), "A", "normal", s / np.sqrt(n), 1.0, 1.0,
         float(np.min(n) - 1),
@@ -104,7 +105,7 @@ def positioning_budget(result: PositioningResult,
                 n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
                 else f"{int(np.min(n))}…{int(np.max(n))}")))
     components += repeated_readings_components(result)
-    components += resolution_component(metadata, 1.0)
+    components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
                              result.deviation_unit)

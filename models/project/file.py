@@ -10,11 +10,13 @@ Schema (``schema_version`` 2)::
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
 
-Schema 2 gives the certificate's tolerance its unit: ``"tolerance": 0.5,
-"tolerance_unit": "nm"`` where schema 1 wrote ``"tolerance_arcsec": 0.5`` in the
-unit of the workbench's errors, whatever it was (nm for an interferometer, the
-deviation unit of a positioning log). A schema-1 file is migrated as it is read
-(:func:`migrate_certificate_details`); it is written back as schema 2.
+Schema 2 gives the certificate's tolerance and resolution their unit:
+``"tolerance": 0.5, "tolerance_unit": "nm"`` where schema 1 wrote
+``"tolerance_arcsec": 0.5`` in the unit of the workbench's errors, whatever it was
+(nm for an interferometer, the deviation unit of a positioning log); likewise
+``item_resolution_arcsec`` and each reference standard's ``uncertainty_arcsec``. A
+schema-1 file is migrated as it is read (:func:`migrate_certificate_details`); it is
+written back as schema 2.
 """
 
 from __future__ import annotations
@@ -210,14 +212,22 @@ def schema1_error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
 
 
 def migrate_certificate_details(details: dict[str, Any], error_unit: str) -> dict[str, Any]:
-    """Certificate details written before the tolerance had its unit (``tolerance_arcsec``,
-    in the unit of the workbench's errors ``error_unit``) with ``tolerance`` and
-    ``tolerance_unit``; details that already state them come back as they are."""
-    if "tolerance_arcsec" not in details or "tolerance" in details:
-        return details
-    out = {k: v for k, v in details.items() if k != "tolerance_arcsec"}
-    out["tolerance"] = details["tolerance_arcsec"]
-    out["tolerance_unit"] = error_unit
+    """Certificate details written before the tolerance and the resolution had their unit
+    (``tolerance_arcsec``, ``item_resolution_arcsec``: in the unit of the workbench's errors
+    ``error_unit``) with ``tolerance`` and ``tolerance_unit`` (``item_resolution``,
+    ``item_resolution_unit``); details that already state them come back as they are."""
+    out = dict(details)
+    for old, new in (("tolerance_arcsec", "tolerance"), ("item_resolution_arcsec", "item_resolution")):
+        if old in out and new not in out:
+            out[new] = out.pop(old)
+            out[f"{new}_unit"] = error_unit
+    standards = out.get("standards")
+    if isinstance(standards, list):
+        out["standards"] = [
+            {**{k: v for k, v in s.items() if k != "uncertainty_arcsec"},
+             "uncertainty": s["uncertainty_arcsec"], "uncertainty_unit": error_unit}
+            if isinstance(s, dict) and "uncertainty_arcsec" in s and "uncertainty" not in s else s
+            for s in standards]
     return out
 
 

@@ -84,7 +84,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
     theta = np.arange(-60.0, 60.1, 5.0)
     truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
     noise, u_standard = 0.5, 0.3
-    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty_arcsec=0.6,
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=0.6,
                                                             basis="U95"),))
     clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
     deviations, budgets = [], []
@@ -107,7 +107,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
     truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
     certificate_dev = np.random.default_rng(5).normal(0.0, 0.2, faces)
     u_polygon, noise = 0.10, 0.08
-    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
+    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty=0.20,
                                                             basis="U95"),))
     settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
     deviations, budgets = [], []
