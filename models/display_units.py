@@ -6,7 +6,7 @@ last step, and only where it states an angle unit: a header ``error (")`` become
 ``error (µrad)`` and its values are scaled; a result text (a
 :class:`~models.messages.Message`) is converted from the figures it was built
 with (:func:`in_unit`), a :class:`~models.quantity.Quantity` by its unit, a figure
-passed as text when it is one number with its angle unit (``0.45"``). A quantity
+passed as text (``0.45"``) number by number. A quantity
 whose unit is not an angle (nm, mV, V, °C) is left as it is, so an
 interferometer's nm stay nm, and so is a reading in degrees, minutes and seconds
 (``12°34'56.7"``: its seconds are no figure of their own).
@@ -67,9 +67,6 @@ _KEY_SUFFIX = re.compile(r"_(arcsec|urad|mdeg)(?![A-Za-z])")  # a column key: er
 _NUMBER_WITH_UNIT = re.compile(
     r"(?<![\"\w.'′°])(?<!' )(?<!′ )(?<!° )"
     r"([+\-−±]?)(\d+(?:\.(\d+))?(?:[eE][+\-]?\d+)?)(\"|″| ?µrad| ?μrad| ?mdeg)(?!\w)")
-# one figure passed as text: a number with its angle unit and nothing else
-_ONE_FIGURE = re.compile(
-    r"([+\-−±]?)(\d+(?:\.(\d+))?(?:[eE][+\-]?\d+)?)(\"|″| ?µrad| ?μrad| ?mdeg)")
 
 
 def angle_unit(key: str) -> AngleUnit:
@@ -139,17 +136,17 @@ def _figure_in_unit(figure: Any, unit: AngleUnit) -> Any:
         return figure.to(unit.key) if figure.unit.dimension == "angle" else figure
     if isinstance(figure, Message):
         return in_unit(figure, unit)
-    if isinstance(figure, str):
-        found = _ONE_FIGURE.fullmatch(figure)
-        return _rewrite(found, unit) if found is not None else figure
+    if isinstance(figure, str):  # a figure passed formatted: "0.45\"", "±3.05\" (u, k = 1)"
+        return text_in_unit(figure, unit)
     return figure
 
 
 def in_unit(text: str, unit: AngleUnit) -> str:
     """A result text with its angle figures in ``unit``. A :class:`Message` is rebuilt
-    from its own figures (a Quantity converted by its unit; a figure given as text only
-    when it is one number with its angle unit), so it can still be translated; its
-    plain-text parts and any other text go through :func:`text_in_unit`."""
+    from its own figures (a Quantity converted by its unit, a figure given as text by
+    :func:`text_in_unit`), so it can still be translated and its template's own words
+    are never touched; its plain-text parts and any other text go through
+    :func:`text_in_unit`."""
     if not isinstance(text, Message):
         return text_in_unit(text, unit) if isinstance(text, str) else text
     if text.parts:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -363,3 +364,36 @@ def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
             "(certificate CAL-2026-33; its figures enter as the inputs stated in the settings: "
             "Phase reference, ADC quantisation, ADC offset, ADC gain ratio, ADC linearity)") in flat
     assert "no uncertainty stated" not in flat
+
+
+def test_positioning_figures_in_their_own_unit_enter_the_budget_converted():
+    """#32: a standard's uncertainty, the item's resolution and the tolerance carry their
+    unit; on an axis evaluated in µrad a figure stated in arcseconds is converted (1" =
+    4.8481368 µrad), one stated in µm is refused, and the verdict is in µrad."""
+    from models.certificate.metadata import MetadataError, ReferenceStandard
+    from models.positioning.report import positioning_budget
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+    from models.uncertainty.conformity import decide_conformity
+
+    kind = KINDS["positioning"]
+    sample = Path(__file__).parents[1] / "resources" / "samples" / "positioning_sample.csv"
+    rows = map_columns(read_table(sample), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
+                          kind.settings_with_defaults({"deviation_unit": "urad"}))
+    in_arcsec = replace(META, standards=(ReferenceStandard("calibrator", uncertainty=1.0),),
+                        item_resolution=0.2, tolerance=15.0, tolerance_unit="arcsec")
+    budget = positioning_budget(result, in_arcsec)
+    assert budget.unit.key == "urad"
+    values = {str(c.name): c.value for c in budget.components}
+    assert values["calibrator"] == pytest.approx(4.8481368, rel=1e-8)
+    assert values["Item resolution"] == pytest.approx(0.1 * 4.8481368, rel=1e-8)
+    conformity = decide_conformity(result.deviations[:1] * 0.0, type(budget)(
+        budget.components[:1], 1, budget.probability, "urad"),
+        in_arcsec.tolerance_quantity, "simple", "points")
+    assert conformity.unit == "urad" and "±72.7221 µrad" in conformity.statement
+    in_um = replace(META, standards=(ReferenceStandard("laser", uncertainty=0.5,
+                                                       uncertainty_unit="um"),))
+    with pytest.raises(MetadataError, match="laser.*in µm, but the errors are in µrad"):
+        positioning_budget(result, in_um)
