@@ -110,7 +110,8 @@ def test_polygon_certificate_prints_every_warning_of_the_window():
 
 
 @pytest.mark.parametrize("details, message", [
-    ({"tolerance_arcsec": 5}, "tolerance of ±5\" but the workbench is set to grade 3"),
+    ({"tolerance": 5}, "tolerance of ±5\" but the workbench is set to grade 3"),
+    ({"tolerance": 24.240684, "tolerance_unit": "urad"}, "tolerance of ±5\" but the workbench"),
     ({"item_grade": "grade 5 (±5\")"}, "say 'grade 5 \\(±5\"\\)' but the workbench is set to grade 3"),
 ])
 def test_polygon_grade_has_one_source(details, message):

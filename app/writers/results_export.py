@@ -161,6 +161,7 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
 
 def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
     meta = document.metadata
+    q = document.budget.unit.symbol  # the unit of the errors, the budget and the tolerance
     rows: list[tuple[str, object]] = [
         ("Certificate number", meta.certificate_number), ("Test", document.kind_title),
         ("Readings", document.source_name), ("Laboratory", meta.lab_name),
@@ -170,13 +171,13 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
         ("Sign convention", document.sign_convention),
-        ("Expanded uncertainty U, largest (\")", document.expanded_uncertainty),
+        (f"Expanded uncertainty U, largest ({q})", document.expanded_uncertainty),
         ("Coverage factor k there", document.budget.coverage_factor),
         ("Coverage probability (%)", 100.0 * document.budget.probability),
-        ("Tolerance ± (\")", document.tolerance),
+        (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
-        ("Decided value (\")", document.conformity.value),
-        ("U of the decided value (\")", document.conformity.expanded),
+        (f"Decided value ({q})", document.conformity.value),
+        (f"U of the decided value ({q})", document.conformity.expanded),
         ("Verdict", document.conformity.verdict),
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
