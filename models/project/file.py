@@ -40,7 +40,6 @@ __all__ = [
     "check_project",
     "load_project",
     "migrate_certificate_details",
-    "schema1_error_unit",
     "project_from_json",
     "project_json_parts",
     "project_to_json",
@@ -163,12 +162,11 @@ def project_from_json(text: str, source: str = "project") -> Project:
                        "changed"),
             source=source))
     project = Project(metadata=dict(metadata))
-    settings_of = {key: state.get("settings") for key, state in benches.items()
-                   if isinstance(state, dict)}
     if version < 2 and certificates:
+        settings_of = {key: state.get("settings") for key, state in benches.items()
+                       if isinstance(state, dict) and isinstance(state.get("settings"), dict)}
         project.metadata["certificates"] = {
-            key: migrate_certificate_details(details, schema1_error_unit(
-                key, settings_of.get(key) if isinstance(settings_of.get(key), dict) else {}))
+            key: migrate_certificate_details(details, _error_unit(key, settings_of.get(key, {})))
             for key, details in certificates.items()}
     for key, state in benches.items():
         if not isinstance(state, dict):
@@ -195,20 +193,14 @@ def project_from_json(text: str, source: str = "project") -> Project:
     return project
 
 
-def schema1_error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
-    """The unit a schema-1 file's tolerance was in: the unit of that workbench's errors as
-    its settings made them then (history, frozen with the schema: a workbench added
-    after schema 1 never wrote one). Fringe: nm when an interferometer period was set,
-    else arcsec; positioning: its deviation unit; the others: arcsec."""
-    if workbench == "fringe":
-        try:
-            return "nm" if float(settings.get("period_nm") or 0.0) else "arcsec"
-        except (TypeError, ValueError):
-            return "arcsec"
-    if workbench == "positioning":
-        unit = settings.get("deviation_unit", "arcsec")
-        return unit if unit in ("arcsec", "urad", "um", "nm") else "arcsec"
-    return "arcsec"
+def _error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
+    """The unit a schema-1 file's figures were in: the unit of that workbench's errors
+    with its settings (Workbench.error_unit); arcsec for a workbench this version does
+    not know (check_project refuses it after)."""
+    from models.registry import KINDS  # late: the registry loads every workbench
+
+    kind = KINDS.get(workbench)
+    return kind.error_unit(settings) if kind is not None else "arcsec"
 
 
 def migrate_certificate_details(details: dict[str, Any], error_unit: str) -> dict[str, Any]:
