@@ -172,3 +172,26 @@ def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
         assert header.sectionSize(column) >= widest, (text, header.sectionSize(column), widest)
     assert table.viewport().height() >= 3 * table.verticalHeader().defaultSectionSize()
     assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"
+
+
+def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
+    """#32: the tolerance's unit is chosen beside it, a standard's typed in its row (its key
+    or its symbol); both come back as they were set."""
+    from models.quantity import Quantity
+
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    qtbot.keyClicks(dialog.fields["tolerance"], "15")
+    unit_box = dialog.choices["tolerance_unit"]
+    assert unit_box.currentData() == "arcsec"  # as a file of before states it
+    unit_box.setFocus()
+    while unit_box.currentData() != "urad":
+        qtbot.keyClick(unit_box, Qt.Key.Key_Down)
+    dialog.add_standard({"description": "laser", "uncertainty": 0.5, "uncertainty_unit": "µm"})
+    meta = dialog.metadata()
+    assert meta.tolerance_quantity == Quantity(15.0, "urad")
+    assert (meta.standards[0].uncertainty, meta.standards[0].uncertainty_unit) == (0.5, "um")
+    again = CertificateDialog(meta)
+    qtbot.addWidget(again)
+    assert again.choices["tolerance_unit"].currentText() == "µrad"
+    assert again.metadata() == meta

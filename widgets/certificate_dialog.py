@@ -80,11 +80,9 @@ _CHOICES = {
     "decision_quantity": (QT_TR_NOOP("Decided quantity"), {
         "half_range": QT_TR_NOOP("Half the peak-to-peak (Monte Carlo U)"),
         "points": QT_TR_NOOP("Every point with its own U")}),
-    # the tolerance's unit: that of the errors it is judged against, or one of their kind
-    "tolerance_unit": (QT_TR_NOOP("Unit of the tolerance"), {k: u.symbol for k, u in UNITS.items()}),
-    "item_resolution_unit": (QT_TR_NOOP("Unit of the resolution"),
-                             {k: u.symbol for k, u in UNITS.items()}),
 }
+# a figure typed with its unit, chosen beside it: field -> the key of its unit
+_UNIT_OF = {"tolerance": "tolerance_unit", "item_resolution": "item_resolution_unit"}
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
                      "applies_to", "uncertainty_unit")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
@@ -134,12 +132,29 @@ class CertificateDialog(QDialog):
                                    "scheme, unique across every workstation sharing it. A number "
                                    "typed here is refused if it was issued before."))
                 form.addRow(tr(_TEXT_FIELDS[key]), edit)
+            elif key in _UNIT_OF:  # the number, and its unit beside it
+                row = QHBoxLayout()
+                row.addWidget(self._line(key), 1)
+                row.addWidget(self._unit_box(_UNIT_OF[key]))
+                form.addRow(tr(_TEXT_FIELDS[key]), row)
             else:
                 form.addRow(tr(_TEXT_FIELDS[key]), self._line(key))
         return box
 
+    def _unit_box(self, key: str) -> QComboBox:
+        """A unit of models.quantity to choose (the errors' own, or one of their kind)."""
+        box = QComboBox()
+        box.setObjectName(key)
+        for unit_key, unit in UNITS.items():
+            box.addItem(unit.symbol, unit_key)
+        box.setToolTip(tr("The unit of the figure beside it: converted to the unit of the "
+                          "errors (an angle cannot be judged against a length)"))
+        self.choices[key] = box
+        return box
+
     def _setup_ui(self) -> None:
         grid = QGridLayout()
+        self.choices: dict[str, QComboBox] = {}
         cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
                                            "tolerance", "coverage_probability_pct",
                                            "as_left_table_sha256", "calibration_site"))
@@ -149,7 +164,6 @@ class CertificateDialog(QDialog):
         self.fields["as_left_table_sha256"].setToolTip(tr(
             "Fringe: the checksum of the correction table loaded into the encoder (printed in "
             "the exported table); the compensated error is then stated as left"))
-        self.choices: dict[str, QComboBox] = {}
         for key, (label, options) in _CHOICES.items():
             box = QComboBox()
             box.setObjectName(key)

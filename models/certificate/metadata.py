@@ -8,6 +8,7 @@ characters are removed and lengths are capped so no field can break the page.
 
 from __future__ import annotations
 
+import contextlib
 import datetime as dt
 import math
 import re
@@ -15,7 +16,7 @@ from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
 from models.messages import QT_TR_NOOP, message
-from models.quantity import UNITS, Quantity, UnitError
+from models.quantity import UNITS, Quantity, UnitError, unit
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
@@ -172,6 +173,8 @@ class ReferenceStandard:
                              f"{name}.uncertainty")
         unit_key = clean_text(data.get("uncertainty_unit", "arcsec"),
                               f"{name}.uncertainty_unit") or "arcsec"
+        with contextlib.suppress(UnitError):  # a symbol typed in the table ("µrad", '"')
+            unit_key = unit(unit_key).key
         if unit_key not in UNITS:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field '{key}' must be one of {join}, not '{unit}'"),

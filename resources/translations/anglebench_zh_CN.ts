@@ -1888,8 +1888,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>允差 ±</translation>
     </message>
     <message>
-        <source>Unit of the tolerance</source>
-        <translation>允差的单位</translation>
+        <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
+        <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
     <message>
         <source>Laboratory</source>
@@ -1926,10 +1926,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Resolution</source>
         <translation>分辨力</translation>
-    </message>
-    <message>
-        <source>Unit of the resolution</source>
-        <translation>分辨力的单位</translation>
     </message>
     <message>
         <source>Temperature (°C)</source>
