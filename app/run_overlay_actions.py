@@ -31,7 +31,7 @@ class RunOverlayActions:
     def choose_file(self) -> str:
         path, _ = QFileDialog.getOpenFileName(
             self.window, tr("Overlay a run on {workbench}").format(
-                workbench=declared(self.window.current.kind.title)), self.window._last_dir(),
+                workbench=declared(self.window.current.kind.title)), self.window.projects.last_dir(),
             tr("Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)"))
         return path
 

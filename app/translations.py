@@ -83,7 +83,7 @@ def declared_texts() -> list[str]:
         app.processEvents()
         for presenter in window.presenters:
             presenter.mark_saved()  # nothing to ask about on closing
-        window.recovery.discard()
+        window.projects.recovery.discard()
         window.close()
         window.deleteLater()
     if register is None:

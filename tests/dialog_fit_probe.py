@@ -107,10 +107,10 @@ def main() -> None:
     answer_modal("print")
     window.print_dialog()
     answer_modal("open project")
-    window.open_project_dialog()
+    window.projects.open_project_dialog()
     answer_modal("import readings")
     window.import_dialog()
-    window.recovery.discard()
+    window.projects.recovery.discard()
     window.close()
     sys.stdout.write(json.dumps(found) + "\n")
 

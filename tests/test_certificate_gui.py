@@ -63,9 +63,9 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
     assert register.verify(out.read_bytes()).number == record.number
     assert record.workbench == "theodolite" and record.item_serial == "RT-9"
     # the details are kept with the project, without the number (the next one is new)
-    stored = window.project().metadata["certificates"]["theodolite"]
+    stored = window.projects.project().metadata["certificates"]["theodolite"]
     assert stored["operator"] == "Wang" and stored["certificate_number"] == ""
-    assert window.is_modified
+    assert window.projects.is_modified
 
 
 def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
@@ -110,7 +110,7 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
     """humidity stored as "45 %" (an older version, or a hand-edited project): the other
     details stay in the dialog, the bad one shows as stored and is marked; all bad fields
     are marked at once."""
-    window.project_metadata["certificates"] = {"theodolite": {
+    window.projects.metadata["certificates"] = {"theodolite": {
         "lab_name": "Angle Lab", "customer_name": "Customer", "humidity_pct": "45 %",
         "temperature_c": "warm"}}
     window.tabs.setCurrentIndex(0)

@@ -75,7 +75,7 @@ def test_no_key_sequence_is_bound_twice(platform, monkeypatch, qtbot, tmp_path):
         assert all(a.shortcutContext() == Qt.ShortcutContext.WidgetWithChildrenShortcut
                    for a in table_actions)
         assert not _clashes(mine + table_actions), _clashes(mine + table_actions)
-    window.recovery.discard()
+    window.projects.recovery.discard()
 
 
 def test_the_platforms_own_bindings_are_expanded_once():
