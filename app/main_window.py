@@ -4,7 +4,6 @@ autosave and crash recovery, persisted window state and recent files."""
 from __future__ import annotations
 
 import contextlib
-import re
 from pathlib import Path
 
 import numpy as np
@@ -17,7 +16,6 @@ from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QFileDialog,
-    QInputDialog,
     QMainWindow,
     QMenu,
     QMessageBox,
@@ -25,17 +23,16 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.certificate_dialogs import CertificateDialogs
 from app.certificate_presenter import CertificatePresenter
 from app.project_dialogs import ProjectDialogs
 from app.project_presenter import ProjectPresenter, default_recovery_store
 from app.run_overlay_actions import RunOverlayActions
 from models import __version__
-from models.certificate.metadata import CertificateMetadata
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
-from widgets.certificate_dialog import CertificateDialog
 from widgets.fonts import ensure_cjk_font
 from widgets.i18n import (
     LANGUAGES,
@@ -56,15 +53,6 @@ LANGUAGE_SETTING = "ui/language"  # "system", "en" or "zh_CN" (widgets/i18n.py)
 ANGLE_UNIT_SETTING = "display/angle_unit"  # the unit results are read in, for every workbench
 
 
-def with_chosen_suffix(path: str, chosen_filter: str) -> str:
-    """A name typed without an extension gets the one of the file type chosen in the dialog
-    ("Excel workbook (*.xlsx)" writes out.xlsx, not a CSV named "out")."""
-    if not path or Path(path).suffix:
-        return path
-    match = re.search(r"\*(\.[A-Za-z0-9]+)", chosen_filter or "")
-    return path + match.group(1) if match else path
-
-
 def default_presenters() -> list[WorkbenchPresenter]:
     """One presenter per registered workbench, in the registry's order."""
     return [presenter_class(kind)() for kind in KINDS.values()]
@@ -83,7 +71,8 @@ class MainWindow(QMainWindow):
                                          recovery or default_recovery_store(), self.qsettings,
                                          lambda: self.current, self)
         self.manual = None  # the manual's window, made when first asked for (F1)
-        self.certificates = CertificatePresenter(self, self.qsettings, lambda: self.projects.metadata,
+        self.certificates = CertificatePresenter(CertificateDialogs(self), self.qsettings,
+                                                 lambda: self.projects.metadata,
                                                  lambda: self.current.mark_modified())
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
@@ -458,77 +447,7 @@ class MainWindow(QMainWindow):
         self.projects.update_title()
         self.statusBar().showMessage(tr("Bundled samples loaded in every workbench"), 8000)
 
-    # -- certificates -----------------------------------------------------------------
-    # -- certificates: the CertificatePresenter decides, the window shows ----------------
-    def lab_defaults(self) -> dict:
-        return self.certificates.lab_defaults()
-
-    def save_lab_defaults(self, defaults: dict) -> None:
-        self.certificates.save_lab_defaults(defaults)
-
-    def certificate_metadata(self, key: str | None = None) -> CertificateMetadata:
-        return self.certificates.details(key or self.current.kind.key)
-
-    def store_certificate_metadata(self, meta: CertificateMetadata, key: str | None = None) -> None:
-        self.certificates.store_details(key or self.current.kind.key, meta)
-
-    def edit_certificate_metadata(self, meta: CertificateMetadata) -> CertificateMetadata | None:
-        return self.certificates.edit_details(meta)
-
-    def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
-                                 raw: dict) -> CertificateMetadata | None:
-        """The certificate dialog (the presenter's view call)."""
-        dialog = CertificateDialog(meta, self)
-        dialog.lab_defaults_saved.connect(self.save_lab_defaults)
-        if problems:  # a stored detail that no longer reads: shown as stored, marked
-            dialog.show_problems(problems, raw)
-        if dialog.exec() != QDialog.DialogCode.Accepted:
-            return None
-        return dialog.metadata()
-
-    def confirm_draft(self, missing: list[str]) -> bool:
-        answer = self.ask(
-            tr("Export a draft?"),
-            tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not a "
-               "certificate, and nothing is recorded in the register. Export the draft anyway?")
-            .format(missing=", ".join(tr(m) for m in missing)),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
-
-    def confirm_implausible(self, reason: str) -> bool:
-        answer = self.ask(
-            tr("Certify these figures?"),
-            tr("{reason}\n\nIssue a certificate on this result anyway? Only if you have "
-               "checked the readings and the figures are right.").format(reason=reason),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No)
-        return answer == QMessageBox.StandardButton.Yes
-
-    def ask_change_note(self, revision) -> str:
-        question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
-                       "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else
-                    tr("This certificate amends {number}. What changed, and why? (printed on "
-                       "the certificate; ISO/IEC 17025 7.8.8)"))
-        text, ok = QInputDialog.getMultiLineText(self, tr("What changed"),
-                                                 question.format(number=revision.number))
-        return text if ok else ""
-
-    def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
-        path, chosen = QFileDialog.getSaveFileName(self, title,
-                                                   str(Path(self.projects.last_dir()) / suggested),
-                                                   file_filter)
-        return with_chosen_suffix(path, chosen)
-
-    def show_status(self, text: str, milliseconds: int) -> None:
-        self.statusBar().showMessage(text, milliseconds)
-
-    def wait_cursor(self, on: bool) -> None:
-        if on:
-            QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
-        else:
-            QApplication.restoreOverrideCursor()
-
+    # -- certificates: the CertificatePresenter decides, its CertificateDialogs show ----
     def _current_result(self):
         presenter = self.current
         if presenter.result is None:

@@ -109,7 +109,7 @@ class RunOverlayActions:
                                                       "{workbench}.").format(
                 workbench=declared(presenter.kind.title)))
             return False
-        serial = str(self.window.certificate_metadata(key).item_serial or "")
+        serial = str(self.window.certificates.details(key).item_serial or "")
         records = ([r for r in records if r.item_serial == serial] +
                    [r for r in records if r.item_serial != serial])
         labels = [f"{r.number} — {r.item_serial} — {r.calibration_date}" for r in records]

@@ -11,7 +11,7 @@ from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from app.main_window import with_chosen_suffix
+from app.certificate_dialogs import with_chosen_suffix
 
 
 @pytest.fixture
