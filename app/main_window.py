@@ -1,5 +1,9 @@
-"""Main window: one tab per workbench, the File/Edit/Help menus, project files,
-autosave and crash recovery, persisted window state and recent files."""
+"""Main window: one tab per workbench, composed with the presenters that decide — the
+project's (files, recent files, autosave, recovery: app/project_presenter.py) and the
+certificates' (app/certificate_presenter.py) — their window sides (app/project_dialogs.py,
+app/certificate_dialogs.py) and the menus (app/main_menus.py). The window itself keeps
+its state between runs, the language and angle unit, importing, printing, the register
+and sending a run to the positioning workbench."""
 
 from __future__ import annotations
 
@@ -11,13 +15,12 @@ import pyqtgraph as pg
 import scipy
 from PySide6 import __version__ as pyside_version
 from PySide6.QtCore import QByteArray, QSettings, Qt, qVersion
-from PySide6.QtGui import QAction, QActionGroup, QCloseEvent, QKeySequence, QUndoGroup
+from PySide6.QtGui import QCloseEvent, QUndoGroup
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QFileDialog,
     QMainWindow,
-    QMenu,
     QMessageBox,
     QTabWidget,
     QWidget,
@@ -25,6 +28,7 @@ from PySide6.QtWidgets import (
 
 from app.certificate_dialogs import CertificateDialogs
 from app.certificate_presenter import CertificatePresenter
+from app.main_menus import MainMenus
 from app.project_dialogs import ProjectDialogs
 from app.project_presenter import ProjectPresenter, default_recovery_store
 from app.run_overlay_actions import RunOverlayActions
@@ -35,18 +39,14 @@ from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
 from widgets.fonts import ensure_cjk_font
 from widgets.i18n import (
-    LANGUAGES,
-    Tr,
     declared,
     explained,
     install_language,
-    live,
     on_language_change,
     resolve_language,
     tr,
 )
 from widgets.screen_fit import fit_to_screen
-from widgets.shortcuts import key_sequences
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
 
 LANGUAGE_SETTING = "ui/language"  # "system", "en" or "zh_CN" (widgets/i18n.py)
@@ -78,10 +78,13 @@ class MainWindow(QMainWindow):
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
         self._setup_ui()
-        self._setup_menus()
+        self.run_overlays = RunOverlayActions(self)
+        self.menus = MainMenus(self)
+        self.menus.check(self.menus.language_actions,
+                         str(self.qsettings.value(LANGUAGE_SETTING, "system")))
+        saved = str(self.qsettings.value(ANGLE_UNIT_SETTING, "arcsec"))
+        self.set_angle_unit(ANGLE_UNITS.get(saved, ANGLE_UNITS["arcsec"]))
         on_language_change(self, self._retranslate)
-        self.tabs.currentChanged.connect(self._on_tab_changed_send)
-        self._on_tab_changed_send(self.tabs.currentIndex())
         self._restore_window_state()
         self.projects.start()
 
@@ -100,167 +103,24 @@ class MainWindow(QMainWindow):
         self.setCentralWidget(self.tabs)
         self.statusBar().showMessage(tr("Ready"))
         fit_to_screen(self, 1400, 900)
-
-    def _menu(self, parent, title: Tr) -> QMenu:
-        menu = parent.addMenu(title)
-        live(menu.setTitle, title)
-        return menu
-
-    def _action(self, menu, text: Tr, slot, shortcut=None, tip: Tr | str = "") -> QAction:
-        action = QAction(text, self)
-        live(action.setText, text)
-        if shortcut is not None:
-            action.setShortcuts(key_sequences(shortcut))
-        if isinstance(tip, Tr):
-            live(action.setStatusTip, tip)
-        action.triggered.connect(slot)
-        menu.addAction(action)
-        return action
-
-    def _setup_menus(self) -> None:
-        file_menu = self._menu(self.menuBar(), tr("&File"))
-        self.new_action = self._action(file_menu, tr("&New"), self.projects.new_project,
-                                       QKeySequence.StandardKey.New)
-        self.open_action = self._action(file_menu, tr("&Open…"), self.projects.open_project_dialog,
-                                        QKeySequence.StandardKey.Open)
-        self.recent_menu = self._menu(file_menu, tr("Open &recent"))
-        self.save_action = self._action(file_menu, tr("&Save"), self.projects.save,
-                                        QKeySequence.StandardKey.Save)
-        self.save_as_action = self._action(file_menu, tr("Save &as…"), self.projects.save_as,
-                                           QKeySequence.StandardKey.SaveAs)
-        file_menu.addSeparator()
-        self.import_action = self._action(file_menu, tr("&Import CSV/XLSX…"), self.import_dialog,
-                                          QKeySequence("Ctrl+Shift+I"),
-                                          tr("Replace the current workbench's readings with a "
-                                             "file's"))
-        self.sample_action = self._action(file_menu, tr("Load bundled &sample"), self.load_sample)
-        self.export_action = self._action(
-            file_menu, tr("&Export certificate…"), self.export_certificate, QKeySequence("Ctrl+E"),
-            tr("Write the current workbench's test certificate (PDF)"))
-        self.export_results_action = self._action(
-            file_menu, tr("Export &results (CSV/XLSX)…"), self.export_results,
-            tip=tr("Write every point's raw, correction, corrected error and U"))
-        self.register_action = self._action(
-            file_menu, tr("Certificate re&gister…"), self.show_register,
-            tip=tr("Every issued certificate: search, verify a PDF, amend, an instrument's "
-                   "history"))
-        self.send_action = self._action(
-            file_menu, tr("Send to &positioning"), self.send_to_positioning,
-            tip=tr("Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
-                   "readings are replaced; Edit > Undo there restores them)"))
-        self.run_overlays = RunOverlayActions(self)
-        self.overlay_action = self._action(
-            file_menu, tr("O&verlay a run…"), lambda: self.run_overlays.overlay_file(),
-            tip=tr("Draw another run of this workbench against today's: a readings or project "
-                   "file (before/after compensation …)"))
-        self.overlay_record_action = self._action(
-            file_menu, tr("Overlay a certificate from the register…"),
-            lambda: self.run_overlays.overlay_record(),
-            tip=tr("Draw this instrument's earlier certificate against today's run"))
-        self.remove_overlay_action = self._action(
-            file_menu, tr("Remove the overlaid run"), lambda: self.run_overlays.remove())
-        file_menu.addSeparator()
-        self.print_action = self._action(
-            file_menu, tr("&Print…"), self.print_dialog, QKeySequence.StandardKey.Print,
-            tr("Print the current workbench's result and plot (the certificate is the PDF)"))
-        file_menu.addSeparator()
-        self._action(file_menu, tr("&Quit"), self.close, QKeySequence.StandardKey.Quit)
-
-        edit_menu = self._menu(self.menuBar(), tr("&Edit"))
-        # our own actions, not QUndoGroup's: theirs keep the prefix of the language they
-        # were made in ("Undo Paste 3 rows" stays English in a Chinese window)
-        undo = QAction(self)
-        undo.triggered.connect(self.undo_group.undo)
-        undo.setShortcuts(key_sequences(QKeySequence.StandardKey.Undo))
-        redo = QAction(self)
-        redo.triggered.connect(self.undo_group.redo)
-        redo.setShortcuts(key_sequences(QKeySequence.StandardKey.Redo, "Ctrl+Shift+Z", "Ctrl+Y"))
-        edit_menu.addAction(undo)
-        edit_menu.addAction(redo)
-        self.undo_action, self.redo_action = undo, redo
-        for signal in (self.undo_group.undoTextChanged, self.undo_group.redoTextChanged,
-                       self.undo_group.canUndoChanged, self.undo_group.canRedoChanged,
-                       self.undo_group.activeStackChanged):
-            signal.connect(self._update_undo_actions)
-        self._update_undo_actions()
-        edit_menu.addSeparator()
-        self._action(edit_menu, tr("&Copy"), lambda: self.current.view.table.copy_selection())
-        self._action(edit_menu, tr("&Paste"), lambda: self.current.view.table.paste())
-        self._action(edit_menu, tr("&Insert row"), lambda: self.current.view.table.insert_row())
-        self._action(edit_menu, tr("&Delete rows"), lambda: self.current.view.table.delete_rows())
-
-        view_menu = self._menu(self.menuBar(), tr("&View"))
-        for text, keys, step in ((tr("&Next workbench"), ("Ctrl+PgDown", "Ctrl+Tab"), 1),
-                                 (tr("&Previous workbench"), ("Ctrl+PgUp", "Ctrl+Shift+Tab"),
-                                  -1)):
-            action = self._action(view_menu, text, lambda _=False, s=step: self.switch_tab(s))
-            action.setShortcuts(key_sequences(*keys))
-            action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
-        focus = self._action(view_menu, tr("Next &pane (table, set-up, result, plots)"),
-                             self.focus_next_pane, QKeySequence("F6"))
-        focus.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
-        units_menu = self._menu(view_menu, tr("Angle &unit of results"))
-        self.angle_unit_actions = QActionGroup(self)
-        for unit in ANGLE_UNITS.values():
-            action = self._action(units_menu, declared(unit.name),
-                                  lambda _=False, u=unit: self.set_angle_unit(u),
-                                  tip=tr("Plots, figures, texts and exported results in this "
-                                         "unit (certificates keep the unit of the evaluation)"))
-            action.setCheckable(True)
-            action.setData(unit.key)
-            self.angle_unit_actions.addAction(action)
-        saved = str(self.qsettings.value(ANGLE_UNIT_SETTING, "arcsec"))
-        self.set_angle_unit(ANGLE_UNITS.get(saved, ANGLE_UNITS["arcsec"]))
-
-        language_menu = self._menu(view_menu, tr("&Language"))
-        self.language_actions = QActionGroup(self)
-        chosen = str(self.qsettings.value(LANGUAGE_SETTING, "system"))
-        for key, name in LANGUAGES.items():
-            action = self._action(language_menu, tr(name) if key == "system" else Tr(name, name),
-                                  lambda _=False, k=key: self.set_language(k))
-            action.setCheckable(True)
-            action.setChecked(key == chosen)
-            action.setData(key)
-            self.language_actions.addAction(action)
-
-        # readings from the instruments (#34): the panel, hidden until Connect…
+        # readings from the instruments (#34): the panel, hidden until Instrument › Connect…
         from app.capture.panel import CapturePanel
 
         self.capture_panel = CapturePanel(self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.capture_panel)
         self.capture_panel.hide()
-        instrument_menu = self._menu(self.menuBar(), tr("&Instrument"))
-        self.connect_instrument_action = self._action(
-            instrument_menu, tr("&Connect…"),
-            lambda: (self.capture_panel.show(), self.capture_panel.connect_dialog()))
-        help_menu = self._menu(self.menuBar(), tr("&Help"))
-        self._action(help_menu, tr("&Manual (this workbench)"), self.show_manual,
-                     QKeySequence.StandardKey.HelpContents,
-                     tip=tr("What to measure, how to set up, every setting and plot"))
-        self._action(help_menu, tr("&Quick guide"), self.show_guide)
-        self._action(help_menu, tr("&About AngleBench"), self.show_about)
 
     def set_language(self, choice: str) -> None:
         """The window in English or Chinese (or the system's language), at once: every text
         is set again and each result redrawn; readings, undo history and plots stay."""
-        for action in self.language_actions.actions():
-            action.setChecked(action.data() == choice)
+        self.menus.check(self.menus.language_actions, choice)
         self.qsettings.setValue(LANGUAGE_SETTING, choice)
         self.language = resolve_language(choice)  # before the texts are set again in it
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
         install_language(choice)
 
-    def _update_undo_actions(self, *_args) -> None:
-        group = self.undo_group
-        what = group.undoText()
-        self.undo_action.setText(tr("&Undo {what}").format(what=what) if what else tr("&Undo"))
-        self.undo_action.setEnabled(group.canUndo())
-        what = group.redoText()
-        self.redo_action.setText(tr("&Redo {what}").format(what=what) if what else tr("&Redo"))
-        self.redo_action.setEnabled(group.canRedo())
-
     def _retranslate(self) -> None:
-        self._update_undo_actions()
+        self.menus.update_undo_actions()
         if self.manual is not None and self.manual.isVisible():  # the page in the new language
             self.manual.show_page(self.current.kind.key, self.language)
         for index, presenter in enumerate(self.presenters):
@@ -269,8 +129,7 @@ class MainWindow(QMainWindow):
 
     def set_angle_unit(self, unit: AngleUnit) -> None:
         """Results in ``unit`` on every workbench (redrawn, not re-analysed); remembered."""
-        for action in self.angle_unit_actions.actions():
-            action.setChecked(action.data() == unit.key)
+        self.menus.check(self.menus.angle_unit_actions, unit.key)
         for presenter in self.presenters:
             presenter.set_angle_unit(unit)
         self.qsettings.setValue(ANGLE_UNIT_SETTING, unit.key)
@@ -435,11 +294,6 @@ class MainWindow(QMainWindow):
                "restores the positioning readings").format(workbench=declared(source.kind.title),
                                                            rows=len(rows)), 8000)
         return True
-
-    def _on_tab_changed_send(self, index: int) -> None:
-        presenter = self.presenters[index] if 0 <= index < len(self.presenters) else None
-        self.send_action.setEnabled(presenter is not None
-                                    and presenter.kind.positioning_rows is not None)
 
     def load_all_samples(self) -> None:
         for presenter in self.presenters:

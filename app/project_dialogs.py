@@ -17,7 +17,7 @@ __all__ = ["ProjectDialogs"]
 
 class ProjectDialogs:
     """:class:`app.project_presenter.ProjectView` for ``window`` (the main window; its
-    ``projects`` is the presenter, its ``recent_menu`` lists the recent files)."""
+    ``projects`` is the presenter, its ``menus.recent_menu`` lists the recent files)."""
 
     def __init__(self, window: Any) -> None:
         self.window = window
@@ -60,7 +60,7 @@ class ProjectDialogs:
         self.window.setWindowTitle(title)
 
     def show_recent(self, paths: list[str]) -> None:
-        menu = self.window.recent_menu
+        menu = self.window.menus.recent_menu
         menu.clear()
         for path in paths:
             action = menu.addAction(path)

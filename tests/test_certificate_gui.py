@@ -51,7 +51,7 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
     monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
     out = tmp_path / "cert.pdf"
     window.certificates.view.choose_save_path = lambda *a: str(out)
-    window.export_action.trigger()
+    window.menus.export_action.trigger()
     assert "humidity_pct" in seen["error"] and "background" in seen["style"]
     assert window.told == []
     text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
@@ -99,7 +99,7 @@ def test_export_results_csv(window, tmp_path):
     window.tabs.setCurrentIndex(1)
     out = tmp_path / "r.csv"
     window.certificates.view.choose_save_path = lambda *a: str(out)
-    window.export_results_action.trigger()
+    window.menus.export_results_action.trigger()
     lines = out.read_text(encoding="utf-8-sig").splitlines()
     result = window.current.result
     assert lines[0].startswith("position,nominal_deg")

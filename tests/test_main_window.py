@@ -210,7 +210,7 @@ def test_import_is_undoable(make_window, tmp_path):
     good.write_text("theta_deg,azimuth_deg,elevation_deg\n0,0,0\n1,1,0\n2,2,0\n3,3,0\n")
     assert window.import_file(good, "theodolite")
     assert bench.sheet.row_count == 4
-    window.undo_action.trigger()
+    window.menus.undo_action.trigger()
     assert bench.sheet.copy_rows() == before
 
 
@@ -218,9 +218,9 @@ def test_load_sample_menu_is_one_undo_step(make_window):
     window = make_window()
     bench = window.presenter("theodolite")
     bench.table_model.set_cells([(0, 0, "5")])
-    window.sample_action.trigger()
+    window.menus.sample_action.trigger()
     assert bench.sheet.row_count == 41
-    window.undo_action.trigger()
+    window.menus.undo_action.trigger()
     assert bench.sheet.text(0, 0) == "5" and bench.sheet.row_count == 1
 
 

@@ -187,7 +187,7 @@ def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
     theodolite.table_model.set_cells([(0, 1, "-19°52'58.0\"")])
     rows, undo = theodolite.state().rows, theodolite.undo_stack.count()
     before = theodolite.view.error_plot.corrected_curve.getData()[1].copy()
-    chinese = next(a for a in window.language_actions.actions() if a.data() == "zh_CN")
+    chinese = next(a for a in window.menus.language_actions.actions() if a.data() == "zh_CN")
     chinese.trigger()
     assert window.qsettings.value("ui/language") == "zh_CN" and chinese.isChecked()
     assert window.menuBar().actions()[0].text() == "文件(&F)"
@@ -199,7 +199,7 @@ def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
     assert (theodolite.view.error_plot.corrected_curve.getData()[1] == before).all()
     theodolite.undo_stack.undo()  # the history survived the change of language
     assert theodolite.state().rows != rows
-    next(a for a in window.language_actions.actions() if a.data() == "en").trigger()
+    next(a for a in window.menus.language_actions.actions() if a.data() == "en").trigger()
     assert window.menuBar().actions()[0].text() == "&File"
     assert theodolite.view.error_plot.main_plot.getAxis("left").labelText == "raw error (\")"
 
