@@ -15,6 +15,7 @@ from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QMenu
 
 from models.display_units import ANGLE_UNITS
+from models.workbench import SendsRuns
 from widgets.i18n import LANGUAGES, Tr, declared, live, tr
 from widgets.shortcuts import key_sequences
 
@@ -181,4 +182,4 @@ class MainMenus:
         presenters = self.window.presenters
         presenter = presenters[index] if 0 <= index < len(presenters) else None
         self.send_action.setEnabled(presenter is not None
-                                    and presenter.kind.positioning_rows is not None)
+                                    and isinstance(presenter.kind, SendsRuns))
