@@ -51,6 +51,6 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
         dialog.grab().save(str(path))
         paths.append(path)
         dialog.close()
-        window.recovery.discard()
+        window.projects.recovery.discard()
         window.close()
     return paths

@@ -156,7 +156,7 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)  # polygon
     polygon = window.presenter("polygon")
-    assert window.send_action.isEnabled()
+    assert window.menus.send_action.isEnabled()
     assert window.send_to_positioning()
     positioning = window.presenter("positioning")
     assert window.current is positioning
@@ -170,7 +170,7 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     positioning.refresh()
     assert positioning.result.positions.size == 13
     window.tabs.setCurrentIndex(2)  # fringe: nothing to send
-    assert not window.send_action.isEnabled()
+    assert not window.menus.send_action.isEnabled()
 
 
 def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir, capsys):
