@@ -87,7 +87,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
     theta = np.arange(-60.0, 60.1, 5.0)
     truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
     noise, u_standard = 0.5, 0.3
-    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty_arcsec=0.6,
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=0.6,
                                                             basis="U95"),))
     clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
     deviations, budgets = [], []
@@ -97,7 +97,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
         el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
         result = analyze_run(theta, az, el)
         deviations.append(result.corrected_error_arcsec - truth)
-        budgets.append(theodolite_budget(result, meta).combined_arcsec)
+        budgets.append(theodolite_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -110,7 +110,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
     truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
     certificate_dev = np.random.default_rng(5).normal(0.0, 0.2, faces)
     u_polygon, noise = 0.10, 0.08
-    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
+    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty=0.20,
                                                             basis="U95"),))
     settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
     deviations, budgets = [], []
@@ -124,7 +124,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
             rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
         deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
-        budgets.append(polygon_budget(result, meta).combined_arcsec)
+        budgets.append(polygon_budget(result, meta).combined)
     # face 1 is the zero: its error is zero by definition in set 1, and the budget's
     # simple pattern there is not compared
     return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
@@ -145,7 +145,7 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
         deviations.append(result.compensated_error)
-        budgets.append(fringe_budget(result, meta).combined_arcsec)
+        budgets.append(fringe_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -177,7 +177,7 @@ def positioning_budget_trials(trials: int, rng: np.random.Generator
                                  for t in result.positions] for d in (1, -1)])
         mean = np.concatenate([result.iso.forward.mean, result.iso.backward.mean])
         deviations.append(mean - truth)
-        budgets.append(positioning_budget(result, meta).combined_arcsec)
+        budgets.append(positioning_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 

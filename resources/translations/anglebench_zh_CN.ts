@@ -1884,8 +1884,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>校准日期</translation>
     </message>
     <message>
-        <source>Tolerance ± (&quot;)</source>
-        <translation>允差 ± (&quot;)</translation>
+        <source>Tolerance ±</source>
+        <translation>允差 ±</translation>
+    </message>
+    <message>
+        <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
+        <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
     <message>
         <source>Laboratory</source>
@@ -1920,8 +1924,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>等级 / 规格</translation>
     </message>
     <message>
-        <source>Resolution (&quot;)</source>
-        <translation>分辨力 (&quot;)</translation>
+        <source>Resolution</source>
+        <translation>分辨力</translation>
     </message>
     <message>
         <source>Temperature (°C)</source>
@@ -1990,8 +1994,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;{name}.uncertainty_arcsec&apos; must be 0 to 3600&quot; (an angle standard&apos;s uncertainty)</source>
-        <translation>证书字段 &apos;{name}.uncertainty_arcsec&apos; 必须在 0 至 3600&quot; 之间（角度标准的不确定度）</translation>
+        <source>certificate field &apos;{name}.uncertainty&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
@@ -2014,16 +2018,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;decision_rule&apos; 必须是 {join} 之一，而不是 &apos;{decision_rule}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;tolerance_arcsec&apos; must be positive</source>
-        <translation>证书字段 &apos;tolerance_arcsec&apos; 必须为正数</translation>
+        <source>certificate field &apos;tolerance&apos; must be positive</source>
+        <translation>证书字段 &apos;tolerance&apos; 必须为正数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{key}&apos; must be one of {join}, not &apos;{unit}&apos;</source>
+        <translation>证书字段 &apos;{key}&apos; 必须是 {join} 之一，而不是 &apos;{unit}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution&apos; is in {given}, but the errors are in {unit}: state the resolution in a unit of the same kind</source>
+        <translation>证书字段 &apos;item_resolution&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出分辨力</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance&apos; is in {given}, but the errors are in {unit}: state the tolerance in a unit of the same kind</source>
+        <translation>证书字段 &apos;tolerance&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出允差</translation>
     </message>
     <message>
         <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
         <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
     </message>
     <message>
-        <source>certificate field &apos;item_resolution_arcsec&apos; must be 0 to 3600&quot;</source>
-        <translation>证书字段 &apos;item_resolution_arcsec&apos; 必须在 0 至 3600&quot; 之间</translation>
+        <source>certificate field &apos;item_resolution&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;item_resolution&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;coverage_probability_pct&apos; must be 50 to 99.9 %</source>
@@ -2468,8 +2484,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>签名及日期</translation>
     </message>
     <message>
-        <source>Uncertainty (&quot;)</source>
-        <translation>不确定度 (&quot;)</translation>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>Unit of the uncertainty (&quot;, µrad, nm, µm …)</source>
+        <translation>不确定度的单位（&quot;、µrad、nm、µm …）</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty is in {given}, but the errors are in {unit}: state it in a unit of the same kind</source>
+        <translation>参考标准 &apos;{name}&apos;：其不确定度的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出</translation>
     </message>
     <message>
         <source>Stated as (U95, MPE, u)</source>
@@ -3962,8 +3986,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不确定度给出方式必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number of arcseconds</source>
-        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负角秒数</translation>
+        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number</source>
+        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负数</translation>
     </message>
     <message>
         <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
