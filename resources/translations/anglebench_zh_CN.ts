@@ -6225,5 +6225,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
         <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
     </message>
+    <message>
+        <source>face pyramidal errors: each face normal&apos;s elevation relative to the faces&apos; mean plane (their mean and first harmonic over the faces are not determined: they cannot be told from the autocollimator&apos;s vertical zero and the polygon&apos;s tilt); largest {largest}, u up to {u}</source>
+        <translation>工作面棱锥误差：各工作面法线相对于各工作面平均平面的仰角（其在各工作面上的平均值和一次谐波无法确定：它们与自准直仪的竖直零位及多面棱体的倾斜无法区分）；最大 {largest}，u 最大 {u}</translation>
+    </message>
 </context>
 </TS>
