@@ -454,8 +454,8 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
                       mounting=mounting[r], face=position[r])
     y = off * 3600.0 - c
     warnings: list[Message] = []
-    tilts, pyramidal, faces_fit, vertical_scatter = _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment,
-                              roll_rad, warnings)
+    tilts, pyramidal, faces_fit, vertical_scatter = _tilts(y, ac_y, position, closure, rows_of, order,
+                                                           n, ac_alignment, roll_rad, warnings)
 
     m = len(order)
     mindex = {j: q for q, j in enumerate(order)}
