@@ -386,12 +386,14 @@ class MainWindow(QMainWindow):
         return any(p.is_modified for p in self.presenters)
 
     def project(self) -> Project:
-        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.project_metadata))
+        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.project_metadata),
+                       self.capture_panel.raw_capture())
 
     def apply_project(self, project: Project) -> None:
         for presenter in self.presenters:
             presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
         self.project_metadata = dict(project.metadata)
+        self.capture_panel.load_raw_capture(project.raw_capture)
         self.project_metadata.pop("autosaved_at", None)
         self.project_metadata.pop("project_path", None)
 
@@ -703,7 +705,7 @@ class MainWindow(QMainWindow):
         result = self._current_result()
         return result is not None and self.certificates.export_certificate(
             self.current.kind, result, self.current.settings, self._source_name(),
-            self.current.state().rows)
+            self.current.state().rows, self.capture_panel.raw_sessions(self.current.kind.key))
 
     def export_results(self) -> bool:
         result = self._current_result()

@@ -66,6 +66,9 @@ class AnalysisKind:
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: str = ""
     entry_column: str = ""
+    # guided acquisition from an instrument (models/capture/guidance.py): (rows above,
+    # the current row, settings, nominal step) -> NextReading, what to do next
+    acquisition_guide: Callable[..., Any] | None = None
 
     def headline_figures(self, result: Any) -> dict[str, float]:
         """The headline figures that are numbers (the window's table, the register's trend)."""

@@ -12,6 +12,7 @@ import numpy as np
 from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
+from models.polygon.acquisition import polygon_guide
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
@@ -580,6 +581,7 @@ POLYGON = AnalysisKind(
     certificate=polygon_certificate,
     check_settings=_check_across,
     presenter="widgets.polygon.presenter:PolygonPresenter",
+    acquisition_guide=polygon_guide,
     positioning_rows=positioning_rows,
     certificate_doubt=certificate_doubt,
     verdict=lambda r: joined((

@@ -12,6 +12,7 @@ from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.report import theodolite_certificate
 
@@ -213,4 +214,5 @@ THEODOLITE = AnalysisKind(
                         "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
     nominal_column="theta_deg",
     entry_column="azimuth_deg",
+    acquisition_guide=theodolite_guide,
 )
