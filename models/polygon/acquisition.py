@@ -4,9 +4,11 @@ set, and the n readings of each face (models/capture/guidance.py).
 
 The encoder reading expected is the set's first encoder reading plus the steps of
 360°/N taken since, counted the way the encoder went between the set's first two faces
-(or as the *encoder counts* setting says when only one face is read). N is the *faces*
+(the first set's while a later set has one face read; the *encoder counts* setting when
+only one face is read at all). N is the *faces*
 setting, or the faces of the first set when it has closed, or 360° over the encoder's
-first step; without them the face alone is said (no figure is guessed).
+first step when that step is within a quarter of the gap to the next N's; without them
+the face alone is said (no figure is guessed).
 """
 
 from __future__ import annotations
@@ -73,12 +75,19 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     if not count and len(set_one) > 2 and set_one[-1] == set_one[0] and set_no != _int(
             groups[0][0][1], 1):
         count = len(set(set_one))
-    first_step = (_wrap(encoders[1] - encoders[0]) if len(encoders) > 1
-                  and encoders[0] is not None and encoders[1] is not None else None)
+    # which way faces and encoder go: this set's first two faces, else the first set's
+    pattern = in_set if len(in_set) > 1 else [
+        (k, g) for k, g in groups if _int(k[1], 1) == _int(groups[0][0][1], 1)
+        and _int(k[0]) is not None]
+    pattern_faces = [_int(k[0]) for k, _ in pattern]
+    pattern_encoders = [_angle(g[0].get("encoder_deg", "")) for _, g in pattern]
+    first_step = (_wrap(pattern_encoders[1] - pattern_encoders[0]) if len(pattern) > 1
+                  and None not in pattern_encoders[:2] else None)
     if not count and first_step:
-        guess = 360.0 / abs(first_step)
-        if 3 <= round(guess) <= 360 and abs(guess - round(guess)) < 0.05:
-            count = round(guess)
+        # N when the step is within a quarter of the gap between 360°/N and 360°/(N ± 1)
+        guess = round(360.0 / abs(first_step))
+        if 3 <= guess <= 360 and abs(abs(first_step) - 360.0 / guess) < 90.0 / guess ** 2:
+            count = guess
     closed = len(in_set) > 1 and face == first_face
     if closed:  # the set is done: the next one starts where this one did
         encoder = encoders[0]
@@ -88,8 +97,8 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
                            set=set_no + 1, face=first_face, encoder=degrees_text(encoder % 360))
         return said(text, first_face, set_no + 1, 1)
     order = 1
-    if len(faces_read) > 1:
-        gap = faces_read[1] - faces_read[0]
+    if len(pattern_faces) > 1:
+        gap = pattern_faces[1] - pattern_faces[0]
         order = -1 if gap == -1 or (count and gap == count - 1) else 1
     following = face + order
     if count:
