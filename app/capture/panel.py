@@ -124,6 +124,7 @@ class CapturePanel(QDockWidget):
         self.kind = ""
         self.frames: deque[tuple[float, tuple[float, ...], int]] = deque(maxlen=8192)
         self.latest: Reading | None = None
+        self.received = 0  # readings taken in from the worker since connecting
         #: finished sessions per workbench (stored form), and the one of this connection
         self.sessions: dict[str, list[dict]] = {}
         self.session: _Session | None = None
@@ -208,6 +209,7 @@ class CapturePanel(QDockWidget):
         self.kind = kind
         self.frames.clear()
         self.latest = None
+        self.received = 0
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.window_.current.kind.key, kind, self.worker)
         self._last_fault = ""
@@ -351,6 +353,7 @@ class CapturePanel(QDockWidget):
                 self.status.setStyleSheet("color: #b00020;")
                 ended = ended or event.final
                 continue
+            self.received += 1
             self.frames.append((event.time_s, event.values, event.frame))
             self.latest = event
             fresh = True

@@ -86,6 +86,11 @@ class CaptureWorker:
             self._thread.join(wait_s)
 
     @property
+    def t0(self) -> float:
+        """``time.monotonic()`` at the start: the readings' and raw frames' times count from it."""
+        return self._t0
+
+    @property
     def running(self) -> bool:
         return self._thread.is_alive()
 
