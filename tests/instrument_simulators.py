@@ -9,8 +9,8 @@ Fault modes (``faults``): ``noise`` (garbage bytes and lines between frames),
 GeoCOM's return code 1284, a readout's error line), ``silence`` (never answers),
 ``disconnect`` (the link drops after ``disconnect_after`` frames, and again every
 ``disconnect_every`` frames when that is set: a TCP client is cut off and a new one
-accepted; on a pty, as with a pulled cable, nothing goes either way for ``gap_s``), ``wrong_baud`` (what a link at the wrong speed delivers: only
-garbage bytes).
+accepted; on a pty, as with a pulled cable, nothing goes either way for ``gap_s``),
+``wrong_baud`` (what a link at the wrong speed delivers: only garbage bytes).
 
 The instrument's position is a script: ``positions`` each held ``hold_s`` seconds, with
 Gaussian noise of ``sigma`` (arcsec, or the readout's unit) on every frame.
