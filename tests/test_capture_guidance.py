@@ -95,6 +95,10 @@ def test_theodolite_theta(rows, current, n, step, text, fill):
 
 
 def test_the_guides_are_the_workbenches_own():
+    from models.workbench import GuidesAcquisition
+
     assert KINDS["polygon"].acquisition_guide is polygon_guide
     assert KINDS["theodolite"].acquisition_guide is theodolite_guide
-    assert KINDS["fringe"].acquisition_guide is None
+    assert not isinstance(KINDS["fringe"], GuidesAcquisition)
+    assert {k for k, w in KINDS.items() if isinstance(w, GuidesAcquisition)} >= {"polygon",
+                                                                                "theodolite"}

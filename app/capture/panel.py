@@ -11,11 +11,12 @@ set to read the zenith angle); a readout's single value goes to the current cell
 
 *Auto-take* feeds every reading to a stability gate (models/capture/stability.py): when
 the output has stayed within the window for the dwell, the mean of those frames is
-taken as if *Take reading* was pressed. A workbench that guides (``acquisition_guide``,
-models/capture/guidance.py) says what to do next ("go to face 7 (encoder ≈ 105°)",
-"θ = 12°"); its cells saying which point a reading is of are filled with it, and with
-*readings per point* n > 1 the gate takes the n readings of a point one after another
-from fresh frames, then waits for the instrument to move. The n rows of a point are
+taken as if *Take reading* was pressed. A workbench that guides (the capability
+``GuidesAcquisition`` of models/workbench.py; models/capture/guidance.py) says what to
+do next ("go to face 7 (encoder ≈ 105°)", "θ = 12°"); its cells saying which point a
+reading is of are filled with it, and with *readings per point* n > 1 the gate takes
+the n readings of a point one after another from fresh frames, then waits for the
+instrument to move. The n rows of a point are
 averaged by the workbench, and their s/√n is the budget's Type A input
 (models/readings/repeats.py).
 
@@ -55,6 +56,7 @@ from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation
 from models.capture.raw_record import frame_text
 from models.capture.stability import StabilityGate
+from models.workbench import GuidesAcquisition
 from widgets.i18n import live, tr, translated
 
 __all__ = ["CapturePanel", "ConnectDialog", "TAKE_READING_KEY"]
@@ -311,8 +313,8 @@ class CapturePanel(QDockWidget):
     def update_guide(self) -> None:
         """What the workbench says to do next, for the row the next reading goes to."""
         presenter = self.window_.current
-        guide = getattr(presenter.kind, "acquisition_guide", None)
-        if guide is None:
+        kind = presenter.kind
+        if not isinstance(kind, GuidesAcquisition):
             self.next_reading = None
             self.guide.setText("")
             return
@@ -328,7 +330,7 @@ class CapturePanel(QDockWidget):
             return {k: sheet.text(r, c) for c, k in enumerate(keys)}
 
         step = presenter.view.table.nominal_step or 0.0
-        self.next_reading = guide([cells(r) for r in range(min(row, sheet.row_count))],
+        self.next_reading = kind.acquisition_guide([cells(r) for r in range(min(row, sheet.row_count))],
                                   cells(row), presenter.settings, step)
         self.guide.setText(tr("Next: {what}").format(what=translated(self.next_reading.text)))
 

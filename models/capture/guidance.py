@@ -1,8 +1,9 @@
 """Guided acquisition: what the technician does next, said by the workbench.
 
-A workbench that can guide declares ``acquisition_guide(rows, current, settings, step)``
-(see models/analysis_kind.py): ``rows`` are the sheet's rows above the row the next
-reading goes to, each a mapping of column key to the text typed, ``current`` that row's
+A workbench that can guide has the capability ``GuidesAcquisition`` (models/workbench.py):
+``acquisition_guide(rows, current, settings, step)``, where ``rows`` are the sheet's rows
+above the row the next reading goes to, each a mapping of column key to the text typed,
+``current`` that row's
 cells (a nominal may be filled in already), ``settings`` the workbench's settings and
 ``step`` the table's nominal step (0: none). It answers a :class:`NextReading`: the
 words to show ("go to face 7 (encoder ≈ 105°)", "θ = 12°"), the cells that say which
