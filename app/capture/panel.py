@@ -28,7 +28,9 @@ their SHA-256) with a certificate.
 
 from __future__ import annotations
 
+import math
 import queue
+import time
 from collections import deque
 
 import numpy as np
@@ -46,6 +48,7 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
+    QSizePolicy,
     QSpinBox,
     QVBoxLayout,
     QWidget,
@@ -67,6 +70,8 @@ TAKE_READING_KEY = "F9"
 SPREAD_SECONDS = 1.0
 #: how often the guidance is worked out again while connected (seconds of frames)
 GUIDE_EVERY_S = 0.25
+#: the longest a timer tick spends taking in readings (the window stays responsive)
+DRAIN_BUDGET_S = 0.010
 
 class ConnectDialog(QDialog):
     def __init__(self, parent=None) -> None:
@@ -183,14 +188,19 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.window_label, self.window_box)
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
-        for widget in (self.status, self.guide, self.value, self.stability, self.allan):
+        for widget in (self.status, self.guide, self.value, self.stability, self.allan,
+                       self.auto_state):
             widget.setWordWrap(True)
+            # a longer text wraps, never widens the panel: the plots beside it are not
+            # resized (and redrawn) while a stream updates the texts 50 times a second
+            widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        for widget in (self.status, self.guide, self.value, self.stability, self.allan):
             layout.addWidget(widget)
         layout.addLayout(buttons)
         layout.addWidget(self.auto)
         layout.addLayout(auto_form)
-        self.auto_state.setWordWrap(True)
         layout.addWidget(self.auto_state)
+        body.setMinimumWidth(320)
         layout.addStretch(1)
         self.setWidget(body)
         self.timer = QTimer(self)
@@ -336,13 +346,15 @@ class CapturePanel(QDockWidget):
 
     # ------------------------------------------------------------ the live readout
     def drain(self) -> None:
-        """Everything the worker has queued, without waiting."""
+        """What the worker has queued, without waiting: for at most ``DRAIN_BUDGET_S`` a
+        tick, so a stream faster than the window can follow makes a backlog (worked off in
+        the next ticks), never a frozen window."""
         if self.worker is not None:
-            self._drain(self.worker)
+            self._drain(self.worker, time.perf_counter() + DRAIN_BUDGET_S)
 
-    def _drain(self, worker: CaptureWorker) -> None:
+    def _drain(self, worker: CaptureWorker, until: float = math.inf) -> None:
         fresh = ended = False
-        while True:
+        while time.perf_counter() < until:
             try:
                 event = worker.events.get_nowait()
             except queue.Empty:
@@ -382,7 +394,12 @@ class CapturePanel(QDockWidget):
         self.value.setText("   ".join(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}"
                                       for v in reading.values))
         now = reading.time_s
-        recent = np.array([v for t, v, _ in self.frames if t >= now - SPREAD_SECONDS])
+        recent = []
+        for t, v, _ in reversed(self.frames):
+            if t < now - SPREAD_SECONDS:
+                break
+            recent.append(v)
+        recent = np.array(recent)
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
             scale = 3600.0 if reading.unit == "deg" else 1.0
