@@ -6083,7 +6083,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Window</source>
-        <translation>窗口</translation>
+        <translation>稳定范围</translation>
     </message>
     <message>
         <source>Dwell</source>
