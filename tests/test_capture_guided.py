@@ -93,7 +93,7 @@ def test_auto_take_two_readings_per_face_traced_to_the_frames_and_in_the_budget(
                      if c.name == TYPE_A)
     x = np.array(means)[:, 0].reshape(len(AC_X), n)
     expected = x.std(axis=1, ddof=1) / math.sqrt(n)
-    np.testing.assert_allclose(component.value_arcsec, expected[:8], atol=1e-7)
+    np.testing.assert_allclose(component.value, expected[:8], atol=1e-7)
     assert component.dof == n - 1 and component.evaluation == "A"
     # the guidance for a face's first reading, the encoder at 45° a face from face 1's
     presenter.view.table.setCurrentIndex(model.index(12, 0))

@@ -133,8 +133,8 @@ def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot,
     assert saved["polygon"][0]["frames"][saved["polygon"][0]["takes"][0][1]][1] == \
         "3 003 2.500 1.000"
     path = tmp_path / "captured.anglebench.json"
-    assert window.save_to(path)
-    window.new_project()
+    assert window.projects.save_to(path)
+    window.projects.new_project()
     assert panel.raw_capture() == {}
-    assert window.open_project(path)
+    assert window.projects.open_project(path)
     assert panel.raw_capture() == saved
