@@ -110,7 +110,9 @@ class MainWindow(QMainWindow):
         self.capture_panel = CapturePanel(self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.capture_panel)
         self.capture_panel.hide()
-        self.projects.capture = self.capture_panel  # its raw frames go with the project
+        # its raw frames go with the project
+        self.projects.raw_capture = self.capture_panel.raw_capture
+        self.projects.load_raw_capture = self.capture_panel.load_raw_capture
 
     def set_language(self, choice: str) -> None:
         """The window in English or Chinese (or the system's language), at once: every text
