@@ -63,6 +63,8 @@ class Workbench(ABC):
     entry_column: ClassVar[str] = ""
     # command-line switches that set one of the settings (``--zenith``)
     shortcuts: ClassVar[tuple[Shortcut, ...]] = ()
+    # the settings the README's sample certificate is made with (beside the defaults)
+    sample_settings: ClassVar[Mapping[str, Any]] = {}
 
     def __init__(self) -> None:
         missing = [name for name in _REQUIRED if not hasattr(self, name)]
@@ -84,6 +86,12 @@ class Workbench(ABC):
     def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default
         """The checks across settings (SettingsError naming the key); each setting alone
         is checked by its declaration."""
+
+    def validation_cases(self, trials: int) -> list[Any]:
+        """Its reference cases (models.validation.cases.ValidationCase: check figures of the
+        method's publication, simulations with known truth) kept in its own folder; the
+        first four workbenches' live in models/validation/cases.py."""
+        return []
 
     def __repr__(self) -> str:
         return f"<workbench {self.key}>"

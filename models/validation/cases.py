@@ -450,5 +450,9 @@ def uncertainty_cases() -> list[ValidationCase]:
 
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
+    from models.registry import KINDS  # a workbench's own cases, kept in its folder
+
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
-            + positioning_cases(trials) + uncertainty_cases())
+            + positioning_cases(trials)
+            + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
+            + uncertainty_cases())
