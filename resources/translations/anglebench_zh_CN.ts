@@ -3154,10 +3154,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
     </message>
     <message>
-        <source>Positioning test of an axis</source>
-        <translation>轴线定位检测</translation>
-    </message>
-    <message>
         <source>target {target} ({arrow})</source>
         <translation>目标位置 {target}（{arrow}）</translation>
     </message>
@@ -3857,10 +3853,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
-    </message>
-    <message>
-        <source>--zenith applies to theodolite, not {kind}</source>
-        <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
     </message>
     <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
@@ -5802,7 +5794,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the other run has no corrected curve to draw</source>
-        <extracomment>workbench → &quot;module:function&quot; giving the figure whose &quot;corrected&quot; series is overlaid</extracomment>
         <translation>另一次测量没有可绘制的修正后曲线</translation>
     </message>
     <message>
