@@ -31,6 +31,7 @@ from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table
 from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
 from models.validation.fringe_rig import FringeHead, equal_steps
@@ -210,7 +211,7 @@ def _agreement_case(workbench: str, run: Callable, trials: int, seed: int) -> Va
 
 
 def theodolite_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Theodolite run")
+    w = THEODOLITE.title
     theta = np.arange(-20.0, 21.0, 1.0)
     zeta = induced_error_arcsec(theta, 3.0, 45.0, 2.0)
     alphas = np.arange(0.0, 360.0, 1.0)
@@ -247,7 +248,7 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
 
 
 def polygon_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Polygon encoder test")
+    w = POLYGON.title
     theta = np.arange(0.0, 360.0, 1.0)
     eps_x, eps_y = pyramidal_readings_arcsec(theta, 600.0, 90.0)
     fine = np.arange(0.0, 360.0, 0.5)
@@ -316,7 +317,7 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
 
 
 def fringe_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Fringe signal analysis")
+    w = FRINGE.title
     per = 64
     theta = equal_steps(8 * per, per)
     # Table 1, the cos channel's B1 read as +3.7346 (SPEC §3)
@@ -355,7 +356,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
 
 
 def positioning_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     lost = 4.0  # arcsec
     rig = AxisRig(_axis_error_deg, lost_motion=lost / 3600)  # no scatter: every figure known
     result = POSITIONING.analyze(positioning_readings(rig), {})
@@ -405,7 +406,7 @@ def positioning_hand_cases() -> list[ValidationCase]:
     a run small enough to work out on paper (see HAND_EXAMPLE)."""
     from models.uncertainty.iso230 import iso230_evaluate
 
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     figures = iso230_evaluate(np.array(HAND_EXAMPLE["positions"]),
                               np.array(HAND_EXAMPLE["deviations"], float),
                               np.array(HAND_EXAMPLE["directions"])).figures
