@@ -7,7 +7,7 @@ reference and the dotted path of its presenter), and from the capabilities it ha
 a small abstract class of its own::
 
     class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
-        key = "fringe"
+        key = KEY  # from models/fringe/__init__.py, with TITLE
         ...
 
 Shared code asks ``isinstance(workbench, WritesCorrectionTable)``, never a workbench's
@@ -41,7 +41,7 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRu
 SIGN_CONVENTION = "indicated_minus_reference"
 SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
 
-#: what a concrete workbench class must set (checked when the class is defined)
+#: what a concrete workbench class must set (checked when its object is made)
 _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
              "presenter")
 
