@@ -82,7 +82,7 @@ def test_a_workbench_is_its_two_folders_and_one_registry_line(kind):
 
 @pytest.mark.parametrize("path", [f"widgets/{k}/presenter.py" for k in WORKBENCHES]
                          + ["widgets/workbench_presenter.py", "app/certificate_presenter.py",
-                            "app/register_presenter.py"])
+                            "app/register_presenter.py", "app/project_presenter.py"])
 def test_presenters_hold_no_widgets_and_open_no_dialogs(path):
     """A presenter decides and asks its view; it builds no widget, draws nothing itself."""
     bad = {m for m in imports(ROOT / path) if m.startswith(("PySide6.QtWidgets", "pyqtgraph"))}

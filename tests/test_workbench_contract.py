@@ -245,5 +245,5 @@ def test_certificate_of_the_sample(key):
     assert document.results.rows and document.budget.points and document.method, (
         f"models/{key}/report.py: the certificate states results, an uncertainty budget and the method")
     assert document.method_reference == kind.method_reference
-    assert math.isfinite(document.expanded_uncertainty_arcsec)
+    assert math.isfinite(document.expanded_uncertainty)
     assert kind.certificate_doubt(result) == "", f"{key}: its own sample is doubted"
