@@ -6089,6 +6089,108 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>未与补偿后记录比较：{reason}</translation>
     </message>
     <message>
+        <source>Auto-take when stable</source>
+        <translation>稳定时自动取数</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
+        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>稳定范围</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>驻留时间</translation>
+    </message>
+    <message>
+        <source>Auto-take: taken; move to the next point</source>
+        <translation>自动取数：已取；请转到下一点</translation>
+    </message>
+    <message>
+        <source>Auto-take: settling, {percent} % of the dwell</source>
+        <translation>自动取数：正在稳定，已达驻留时间的 {percent} %</translation>
+    </message>
+    <message>
+        <source>Next: {what}</source>
+        <translation>下一步：{what}</translation>
+    </message>
+    <message>
+        <source>Connected: {port} (reconnected after: {reason})</source>
+        <translation>已连接：{port}（曾因以下原因重新连接：{reason}）</translation>
+    </message>
+    <message>
+        <source>{what} — reading {k} of {n}</source>
+        <translation>{what} — 第 {k} 次读数，共 {n} 次</translation>
+    </message>
+    <message>
+        <source>go to face {face}</source>
+        <translation>转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>stay at face {face}</source>
+        <translation>停在第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face}</source>
+        <translation>第 {set} 测回：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>第 {set} 测回：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>go to the next face (set the number of faces)</source>
+        <translation>转到下一面（请设置面数）</translation>
+    </message>
+    <message>
+        <source>go back to face {face} (encoder ≈ {encoder}°): the closure of set {set}</source>
+        <translation>回到第 {face} 面（编码器 ≈ {encoder}°）：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go back to face {face}: the closure of set {set}</source>
+        <translation>回到第 {face} 面：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>turn the axis to the next θ and type it in the θ column</source>
+        <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
+    </message>
+    <message>
+        <source>θ = {theta}</source>
+        <translation>θ = {theta}</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames must be a list of sessions</source>
+        <translation>{where}：原始数据帧必须是采集会话的列表</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: not a capture session ({keys} expected)</source>
+        <translation>{where}，第 {i} 个会话：不是采集会话（应有 {keys}）</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: a frame or a take is not as stored by AngleBench</source>
+        <translation>{where}，第 {i} 个会话：某一帧或某次取数与 AngleBench 保存的格式不符</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;raw_capture&apos; must be an object; nothing was changed</source>
+        <translation>{source}：'raw_capture' 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: &apos;sha256&apos; and &apos;sessions&apos; expected; nothing was changed</source>
+        <translation>{where}：应有 'sha256' 和 'sessions'；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{reason}; nothing was changed</source>
+        <translation>{reason}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
+        <translation>{where}：原始数据帧与其 SHA-256 不符（采集后被改动过）；未作任何更改</translation>
         <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
         <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
     </message>
