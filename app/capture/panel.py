@@ -172,8 +172,8 @@ class CapturePanel(QDockWidget):
         self.window_box.setDecimals(3)
         self.window_box.setValue(0.5)
         self.window_box.setSuffix(' "')
-        self.window_box.setToolTip(tr("The spread allowed over the dwell (arcseconds; a "
-                                      "readout's own unit)"))
+        live(self.window_box.setToolTip, tr("The spread allowed over the dwell (arcseconds; a "
+                                            "readout's own unit)"))
         self.dwell_box = QDoubleSpinBox()
         self.dwell_box.setRange(0.01, 600.0)
         self.dwell_box.setDecimals(2)
