@@ -62,7 +62,7 @@ from widgets.i18n import (
 from widgets.screen_fit import fit_to_screen
 from widgets.shortcuts import key_sequences
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
-from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
+from widgets.workers import application_workers
 
 log = logging.getLogger(__name__)
 
@@ -754,8 +754,9 @@ class MainWindow(QMainWindow):
     def _write_recovery_in_background(self, project: Project) -> None:
         # the window keeps the interpreter every 0.1 ms; a million new strings would start
         # full cyclic-GC passes that hold it for a few hundred ms (strings hold no cycles)
-        with gui_thread_first(), cyclic_gc_paused():
-            self._write_recovery(project, wait_while_analysing)
+        workers = application_workers()
+        with workers.gui_thread_first(), workers.cyclic_gc_paused():
+            self._write_recovery(project, workers.wait_while_analysing)
 
     def _write_recovery(self, project: Project, between_blocks=None) -> None:
         try:

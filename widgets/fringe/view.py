@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
@@ -157,3 +157,9 @@ class FringeView(WorkbenchView):
         path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",
                                               tr("CSV (*.csv);;C header (*.h)"))
         return path
+
+    def tell(self, title: str, text: str) -> None:
+        QMessageBox.warning(self, title, text)
+
+    def show_status(self, text: str) -> None:
+        self.append_to_readings_caption(f" — {text}")
