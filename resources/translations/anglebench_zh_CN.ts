@@ -6073,5 +6073,25 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>Not compared with the log after compensation: {reason}</source>
         <translation>未与补偿后记录比较：{reason}</translation>
     </message>
+    <message>
+        <source> — RUN INVALID (closure failed)</source>
+        <translation> — 测量无效（闭合不合格）</translation>
+    </message>
+    <message>
+        <source>Cannot read certificate</source>
+        <translation>无法读取证书</translation>
+    </message>
+    <message>
+        <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
+        <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>Load polygon certificate</source>
+        <translation>载入多面棱体证书</translation>
+    </message>
+    <message>
+        <source>Cannot export the correction table</source>
+        <translation>无法导出修正表</translation>
+    </message>
 </context>
 </TS>
