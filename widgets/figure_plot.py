@@ -155,7 +155,14 @@ class FigureRenderer:
                 curve.setData([], [])
             self._name(index, "")
         follow_new_data(self.item)  # new data: shown whole again
+        self._settle_legend()
+
+    def _settle_legend(self) -> None:
+        """The legend laid out at once with its new names, then placed: its size is then
+        the new one (and no layout is left pending on a plot that may be deleted before
+        the event loop comes round: a window closed just after a change of language)."""
         if self.legend is not None:
+            self.legend.layout.activate()
             place_legend(self.item, self.legend)
 
     def relabel(self) -> None:
@@ -170,6 +177,7 @@ class FigureRenderer:
             entry = self.legend.getLabel(curve)
             if entry is not None and english:
                 entry.setText(legend_name(english))
+        self._settle_legend()
 
 
 class FigurePlot(QWidget):

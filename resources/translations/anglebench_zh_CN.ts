@@ -1315,6 +1315,10 @@
         <translation>信号</translation>
     </message>
     <message>
+        <source>sin</source>
+        <translation>sin</translation>
+    </message>
+    <message>
         <source>sin fit res.</source>
         <translation>sin 拟合残差</translation>
     </message>
@@ -2332,7 +2336,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Amendment {number} to certificate {certificate}</source>
-        <extracomment>a curve&apos;s colour by its role, as the window&apos;s error plot draws it (widgets/error_plot.py) the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
+        <extracomment>the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
         <translation>证书 {certificate} 的第 {number} 号修改</translation>
     </message>
     <message>
@@ -5005,6 +5009,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>cos</source>
+        <translation>cos</translation>
     </message>
     <message>
         <source>grade 1: ±0.25&quot;</source>
