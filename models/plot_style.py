@@ -5,8 +5,8 @@ the PDF writer (app/writers/certificate_pdf.py) both draw from :func:`series_sty
 curve looks the same on screen and on paper.
 
 A series with a ``role`` (the error plot's raw error, set-up model, corrected error and
-residuals) is drawn in its role's colour and line, whatever colour it declares; any other
-series in its own colour.
+residuals) is drawn in its role's colour, whatever colour it declares, and the set-up
+model dashed; any other series in its own colour.
 """
 
 from __future__ import annotations
@@ -49,12 +49,14 @@ def role_colour(series: PlotSeries) -> tuple[int, int, int]:
 
 
 def series_style(series: PlotSeries) -> SeriesStyle:
-    """Colour, line, dash and markers of ``series``: its role's, else as it declares."""
-    style = ROLE_STYLES.get(series.role)
-    if style is not None:
-        return style
+    """Colour, line, dash and markers of ``series`` in a figure drawn on one chart: its
+    role's colour, dashed when its role is (the set-up model) or it says so, the width and
+    markers (dots) it declares. (The window's three-panel error plot draws each role with
+    all of its role's style, its markers too: widgets/error_plot.py.)"""
+    role = ROLE_STYLES.get(series.role)
     width = DEFAULT_WIDTH if series.width is None else series.width
-    return SeriesStyle(series.color, width, series.dashed, "o" if series.markers else None,
+    return SeriesStyle(role_colour(series), width, series.dashed or (role is not None and role.dashed),
+                       "o" if series.markers else None,
                        MARKER_SIZE if series.marker_size is None else series.marker_size)
 
 

@@ -10,12 +10,14 @@ set to clip and decimate its curves (the fringe plots: a million samples) keeps 
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
-from models.plot_style import drawing_order, series_style
+from models.plot_style import SeriesStyle, drawing_order, series_style
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
@@ -31,6 +33,17 @@ def legend_name(label: str) -> str | None:
     if not label:
         return None
     return label if label.isdigit() else declared(label)
+
+
+@functools.lru_cache(maxsize=256)
+def _curve_style(style: SeriesStyle) -> dict:
+    """A series' style as PlotDataItem's options."""
+    colour = pg.mkColor(*style.colour)
+    pen = None if style.width == 0 else pg.mkPen(
+        colour, width=style.width,
+        style=Qt.PenStyle.DashLine if style.dashed else Qt.PenStyle.SolidLine)
+    return {"pen": pen, "symbol": style.symbol, "symbolSize": style.symbol_size,
+            "symbolBrush": colour, "symbolPen": None}
 
 
 class FigureRenderer:
@@ -134,18 +147,8 @@ class FigureRenderer:
                 fill.setZValue(-2 * len(figure.series))
                 self.item.addItem(fill)
                 self.bands.append(fill)
-            pen = None if style.width == 0 else pg.mkPen(
-                colour, width=style.width,
-                style=Qt.PenStyle.DashLine if style.dashed else Qt.PenStyle.SolidLine)
-            curve.setPen(pen)
-            if style.symbol is not None:
-                curve.setSymbol(style.symbol)
-                curve.setSymbolSize(style.symbol_size)
-                curve.setSymbolBrush(colour)
-                curve.setSymbolPen(None)
-            else:
-                curve.setSymbol(None)
-            curve.setData(s.x, s.y, connect="finite")
+            # the style goes with the data: one redraw (pen None: markers only, no line drawn)
+            curve.setData(s.x, s.y, connect="finite", **_curve_style(style))
             self._name(index, s.label)
         for index in range(len(figure.series), len(self.curves)):  # fewer series than before
             curve = self.curves[index]

@@ -11,7 +11,6 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
-from widgets.legend_placement import place_legend
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.workbench_view import WorkbenchView
 
@@ -128,9 +127,6 @@ class FringeView(WorkbenchView):
         plot.set_axis_label(plot.corrected_plot, "left", f"compensated {unit}")
         self.error_plot.show_figure(errors, figures["residuals"])
         self.plots.show(figures)
-        for plot in (self.plots.signals, self.plots.lissajous, self.plots.drift):
-            item = plot.getPlotItem()
-            place_legend(item, item.legend)
 
     def clear_result(self) -> None:
         self.error_plot.clear()
