@@ -8,6 +8,7 @@ from __future__ import annotations
 import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
+from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
@@ -89,7 +90,7 @@ class FringePlots(QWidget):
 
 class FringeView(WorkbenchView):
     def __init__(self, parent=None) -> None:
-        super().__init__("Fringe signal analysis", parent)
+        super().__init__(TITLE, parent)
         self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
                                     residual_label="sin fit res. (mV)")
         self.error_plot.set_axis_label(self.error_plot.main_plot, "left", "interp. error (\")")
