@@ -33,8 +33,8 @@ from models.plots import PlotFigure
 from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRuns",
-           "ComparesAfterLog", "IssuesCertificates", "OverlaysRuns", "SendsRuns", "SettingsError",
-           "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
+           "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates", "OverlaysRuns",
+           "SendsRuns", "SettingsError", "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
 #: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
 #: correction is the negative of an error.
@@ -84,6 +84,13 @@ class Workbench(ABC):
     def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default
         """The checks across settings (SettingsError naming the key); each setting alone
         is checked by its declaration."""
+
+    def error_unit(self, settings: Mapping[str, Any]) -> str:
+        """The unit of the errors this workbench finds with ``settings`` (a key of
+        models.quantity.UNITS): a certificate's tolerance, resolution and standards'
+        uncertainties are converted to it, and a project file of schema 1, which wrote
+        them as bare numbers in it, is read in it."""
+        return "arcsec"
 
     def __repr__(self) -> str:
         return f"<workbench {self.key}>"
@@ -204,7 +211,19 @@ class ShowsHeadline(ABC):
         calibrations ({"name (unit)": value})."""
 
 
+class GuidesAcquisition(ABC):
+    """Says what to do next while readings come from an instrument (the window's
+    instrument panel; models/capture/guidance.py)."""
+
+    @abstractmethod
+    def acquisition_guide(self, rows: Any, current: Mapping[str, str],
+                          settings: Mapping[str, Any], step: float = 0.0) -> Any:
+        """The next reading's :class:`~models.capture.guidance.NextReading` ("go to face 7
+        (encoder ≈ 105°)", "θ = 12°"), from the rows above the current row (column key ->
+        text), the current row's cells, the settings and the table's nominal step."""
+
+
 #: every capability a workbench may declare (the contract test lists them)
 CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
-                ComparesAfterLog, OverlaysRuns, ShowsHeadline)
+                ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition)
 

@@ -1888,8 +1888,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>校准日期</translation>
     </message>
     <message>
-        <source>Tolerance ± (&quot;)</source>
-        <translation>允差 ± (&quot;)</translation>
+        <source>Tolerance ±</source>
+        <translation>允差 ±</translation>
+    </message>
+    <message>
+        <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
+        <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
     <message>
         <source>Laboratory</source>
@@ -1924,8 +1928,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>等级 / 规格</translation>
     </message>
     <message>
-        <source>Resolution (&quot;)</source>
-        <translation>分辨力 (&quot;)</translation>
+        <source>Resolution</source>
+        <translation>分辨力</translation>
     </message>
     <message>
         <source>Temperature (°C)</source>
@@ -1994,8 +1998,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;{name}.uncertainty_arcsec&apos; must be 0 to 3600&quot; (an angle standard&apos;s uncertainty)</source>
-        <translation>证书字段 &apos;{name}.uncertainty_arcsec&apos; 必须在 0 至 3600&quot; 之间（角度标准的不确定度）</translation>
+        <source>certificate field &apos;{name}.uncertainty&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
@@ -2018,16 +2022,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;decision_rule&apos; 必须是 {join} 之一，而不是 &apos;{decision_rule}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;tolerance_arcsec&apos; must be positive</source>
-        <translation>证书字段 &apos;tolerance_arcsec&apos; 必须为正数</translation>
+        <source>certificate field &apos;tolerance&apos; must be positive</source>
+        <translation>证书字段 &apos;tolerance&apos; 必须为正数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{key}&apos; must be one of {join}, not &apos;{unit}&apos;</source>
+        <translation>证书字段 &apos;{key}&apos; 必须是 {join} 之一，而不是 &apos;{unit}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution&apos; is in {given}, but the errors are in {unit}: state the resolution in a unit of the same kind</source>
+        <translation>证书字段 &apos;item_resolution&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出分辨力</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance&apos; is in {given}, but the errors are in {unit}: state the tolerance in a unit of the same kind</source>
+        <translation>证书字段 &apos;tolerance&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出允差</translation>
     </message>
     <message>
         <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
         <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
     </message>
     <message>
-        <source>certificate field &apos;item_resolution_arcsec&apos; must be 0 to 3600&quot;</source>
-        <translation>证书字段 &apos;item_resolution_arcsec&apos; 必须在 0 至 3600&quot; 之间</translation>
+        <source>certificate field &apos;item_resolution&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;item_resolution&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;coverage_probability_pct&apos; must be 50 to 99.9 %</source>
@@ -2472,8 +2488,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>签名及日期</translation>
     </message>
     <message>
-        <source>Uncertainty (&quot;)</source>
-        <translation>不确定度 (&quot;)</translation>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>Unit of the uncertainty (&quot;, µrad, nm, µm …)</source>
+        <translation>不确定度的单位（&quot;、µrad、nm、µm …）</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty is in {given}, but the errors are in {unit}: state it in a unit of the same kind</source>
+        <translation>参考标准 &apos;{name}&apos;：其不确定度的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出</translation>
     </message>
     <message>
         <source>Stated as (U95, MPE, u)</source>
@@ -3966,8 +3990,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不确定度给出方式必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number of arcseconds</source>
-        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负角秒数</translation>
+        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number</source>
+        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负数</translation>
     </message>
     <message>
         <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
@@ -6100,6 +6124,236 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>Cannot export the correction table</source>
         <translation>无法导出修正表</translation>
+    </message>
+    <message>
+        <source>Auto-take when stable</source>
+        <translation>稳定时自动取数</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
+        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>稳定范围</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>驻留时间</translation>
+    </message>
+    <message>
+        <source>Auto-take: taken; move to the next point</source>
+        <translation>自动取数：已取；请转到下一点</translation>
+    </message>
+    <message>
+        <source>Auto-take: settling, {percent} % of the dwell</source>
+        <translation>自动取数：正在稳定，已达驻留时间的 {percent} %</translation>
+    </message>
+    <message>
+        <source>Next: {what}</source>
+        <translation>下一步：{what}</translation>
+    </message>
+    <message>
+        <source>Connected: {port} (reconnected after: {reason})</source>
+        <translation>已连接：{port}（曾因以下原因重新连接：{reason}）</translation>
+    </message>
+    <message>
+        <source>{what} — reading {k} of {n}</source>
+        <translation>{what} — 第 {k} 次读数，共 {n} 次</translation>
+    </message>
+    <message>
+        <source>go to face {face}</source>
+        <translation>转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>stay at face {face}</source>
+        <translation>停在第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face}</source>
+        <translation>第 {set} 测回：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>第 {set} 测回：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>go to the next face (set the number of faces)</source>
+        <translation>转到下一面（请设置面数）</translation>
+    </message>
+    <message>
+        <source>go back to face {face} (encoder ≈ {encoder}°): the closure of set {set}</source>
+        <translation>回到第 {face} 面（编码器 ≈ {encoder}°）：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go back to face {face}: the closure of set {set}</source>
+        <translation>回到第 {face} 面：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>turn the axis to the next θ and type it in the θ column</source>
+        <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
+    </message>
+    <message>
+        <source>θ = {theta}</source>
+        <translation>θ = {theta}</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames must be a list of sessions</source>
+        <translation>{where}：原始数据帧必须是采集会话的列表</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: not a capture session ({keys} expected)</source>
+        <translation>{where}，第 {i} 个会话：不是采集会话（应有 {keys}）</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: a frame or a take is not as stored by AngleBench</source>
+        <translation>{where}，第 {i} 个会话：某一帧或某次取数与 AngleBench 保存的格式不符</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;raw_capture&apos; must be an object; nothing was changed</source>
+        <translation>{source}：'raw_capture' 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: &apos;sha256&apos; and &apos;sessions&apos; expected; nothing was changed</source>
+        <translation>{where}：应有 'sha256' 和 'sessions'；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{reason}; nothing was changed</source>
+        <translation>{reason}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
+        <translation>{where}：原始数据帧与其 SHA-256 不符（采集后被改动过）；未作任何更改</translation>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
+        <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
+    </message>
+    <message>
+        <source>mounting, position, encoder and autocollimator columns differ in length</source>
+        <translation>安装位置、面号、编码器和自准直仪各列长度不一致</translation>
+    </message>
+    <message>
+        <source>{faces} faces: a polygon has at least 3</source>
+        <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>drift must be one of {modes}, not {mode}</source>
+        <translation>漂移处理方式须为 {modes} 之一，而不是 {mode}</translation>
+    </message>
+    <message>
+        <source>ac_alignment must be one of {frames}, not {frame}</source>
+        <translation>ac_alignment 须为 {frames} 之一，而不是 {frame}</translation>
+    </message>
+    <message>
+        <source>the vertical readings ({count}) are not one per row ({rows})</source>
+        <translation>竖直读数（{count} 个）与行数（{rows} 行）不是一一对应</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: the faces and the encoder&apos;s steps are not connected — at least two mountings are needed</source>
+        <translation>只有安装位置 {mounting}：各面与编码器的步距未能关联——至少需要两个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder {encoder} is {offset} from step {step} ({nominal}) where mounting {mounting} reads face {face}: a mounting that starts elsewhere, or a wrong mounting or face number</source>
+        <translation>第 {row} 行：编码器读数 {encoder} 与第 {step} 步（{nominal}）相差 {offset}，此处安装位置 {mounting} 读第 {face} 面：该安装位置起点不同，或安装位置号、面号有误</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} do not connect the faces: no harmonic of the encoder&apos;s error or of the face deviations is determined</source>
+        <translation>安装位置 {mountings} 未能关联各面：编码器误差和各面偏差的谐波均无法确定</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
+        <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} {value} is not a whole number</source>
+        <translation>第 {row} 行：{column} {value} 不是整数</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} is not a number</source>
+        <translation>第 {row} 行：{column} 不是数字</translation>
+    </message>
+    <message>
+        <source>row {row}: face {face} is outside 1…{faces} (face count {faces})</source>
+        <translation>第 {row} 行：第 {face} 面超出 1…{faces}（面数 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} is outside 0…{last}</source>
+        <translation>第 {row} 行：安装位置 {mounting} 超出 0…{last}</translation>
+    </message>
+    <message>
+        <source>mounting {mounting} (rows {first}…{last}): face(s) {faces} missing — every mounting reads all {count} faces</source>
+        <translation>安装位置 {mounting}（第 {first}…{last} 行）：缺少第 {faces} 面——每个安装位置须读全部 {count} 个面</translation>
+    </message>
+    <message>
+        <source>no vertical readings: the polygon&apos;s tilt on the shaft is neither identified nor removed</source>
+        <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
+    </message>
+    <message>
+        <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator&apos;s σ</source>
+        <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} repeats row {other} (a duplicate reading; only the closure reading, last, may repeat the first face)</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的第 {face} 面与第 {other} 行重复（重复读数；只有最后的闭合读数可以重复第一个面）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: vertical readings missing: its tilt is neither identified nor removed</source>
+        <translation>安装位置 {mounting}：缺少竖直读数：未辨识也未消除其倾斜</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: no closure reading (its first face read again at the end): drift not checked</source>
+        <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：未检查漂移</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
+        <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
+    </message>
+    <message>
+        <source>Cross-calibration (polygon + encoder)</source>
+        <translation>互校准（多面棱体 + 编码器）</translation>
+    </message>
+    <message>
+        <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
+        <translation>全组合测量，24 面，σ = 0.02&quot;：u = σ√(n − 1)/n（Estler）</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 faces, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面全组合测量，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, mountings 0, 1, 5 of 12, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面中的安装位置 0、1、5，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>mountings 0, 4, 8 of 12: the harmonics not determined are named and withheld</source>
+        <translation>12 面中的安装位置 0、4、8：无法确定的谐波被指明且不予报告</translation>
+    </message>
+    <message>
+        <source>stated u against the spread of {trials} simulated runs (ν = {dof})</source>
+        <translation>给出的 u 与 {trials} 次仿真测量的分散性比较（ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}</source>
+        <translation>比值 1 ± {tolerance}</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, U covers {coverage} %</source>
+        <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: the vertical readings scatter {rms} RMS about the tilt fitted, far more than the horizontal ones ({sigma}): check them; the tilt correction rests on them</source>
+        <translation>安装位置 {mounting}：竖直读数相对拟合倾斜的分散为 {rms} RMS，远大于水平读数（{sigma}）：请检查；倾斜修正依赖于这些读数</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
+        <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
     </message>
 </context>
 </TS>
