@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from app.main import main
+from models.registry import KINDS
 
 
 def run_cli(capsys, *args):
@@ -189,13 +190,13 @@ def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, nam
     assert code == 0 and json.loads(fast) == json.loads(slow)
 
 
-@pytest.mark.parametrize("kind", ["theodolite", "polygon", "fringe", "positioning"])
+@pytest.mark.parametrize("kind", list(KINDS))
 def test_the_summary_in_chinese_carries_the_same_figures(capsys, samples_dir, kind):
     """--language zh_CN: the summary and warnings in Chinese (from the window's own .ts,
     read without Qt), every figure of each line as in English (the word order may differ)."""
     import re
 
-    sample = str(samples_dir / f"{kind}_sample.csv")
+    sample = str(samples_dir / KINDS[kind].sample_file)
     code, english, _ = run_cli(capsys, kind, sample)
     assert code == 0
     code, chinese, _ = run_cli(capsys, kind, sample, "--language", "zh_CN")

@@ -658,7 +658,6 @@
     </message>
     <message>
         <source>Positioning (axis)</source>
-        <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1&quot; everywhere. Forward means 2&quot; and 4&quot;, backward 0&quot; and 1&quot;: E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
         <translation>定位（轴线）</translation>
     </message>
     <message>
@@ -1453,6 +1452,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture)</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -2007,6 +2007,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>certificate metadata must be a JSON object</source>
+        <extracomment>keys written before their figures had a unit (project schema 1) → the keys now</extracomment>
         <translation>证书信息必须是 JSON 对象</translation>
     </message>
     <message>
@@ -2486,10 +2487,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Signature and date</source>
         <translation>签名及日期</translation>
-    </message>
-    <message>
-        <source>Uncertainty</source>
-        <translation>不确定度</translation>
     </message>
     <message>
         <source>Unit of the uncertainty (&quot;, µrad, nm, µm …)</source>
@@ -3182,10 +3179,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
     </message>
     <message>
-        <source>Positioning test of an axis</source>
-        <translation>轴线定位检测</translation>
-    </message>
-    <message>
         <source>target {target} ({arrow})</source>
         <translation>目标位置 {target}（{arrow}）</translation>
     </message>
@@ -3537,11 +3530,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Set {number}</source>
-        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis). Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
+        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
         <translation>第 {number} 组</translation>
     </message>
     <message>
         <source>at least 4 vertical readings are needed to identify the tilt</source>
+        <extracomment>The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis).</extracomment>
         <translation>辨识塔差至少需要 4 个竖直读数</translation>
     </message>
     <message>
@@ -3885,10 +3879,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
-    </message>
-    <message>
-        <source>--zenith applies to theodolite, not {kind}</source>
-        <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
     </message>
     <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
@@ -4319,6 +4309,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
+        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
@@ -4364,6 +4355,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{source}: workbench &apos;{key}&apos;: &apos;settings&apos; must be an object</source>
         <translation>{source}：工作台 &apos;{key}&apos;：&apos;settings&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
+        <translation>{where}：原始帧与其 SHA-256 不符（采集后被改动）；未作任何更改</translation>
     </message>
     <message>
         <source>{source}: workbench &apos;{key}&apos; is not one this version knows; nothing was changed</source>
@@ -5116,6 +5111,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>ISO 230-2 worked by hand (2 targets, 3 runs each way): {figure}</source>
+        <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1&quot; everywhere. Forward means 2&quot; and 4&quot;, backward 0&quot; and 1&quot;: E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
         <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
     </message>
     <message>
@@ -5834,7 +5830,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the other run has no corrected curve to draw</source>
-        <extracomment>workbench → &quot;module:function&quot; giving the figure whose &quot;corrected&quot; series is overlaid</extracomment>
         <translation>另一次测量没有可绘制的修正后曲线</translation>
     </message>
     <message>
@@ -5931,7 +5926,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive)</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
@@ -5952,6 +5947,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Not connected</source>
+        <extracomment>finished sessions per workbench (stored form), and the one of this connection rows filled by Take reading or auto-take: (workbench, row, values)</extracomment>
         <translation>未连接</translation>
     </message>
     <message>
@@ -6037,7 +6033,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only</extracomment>
+        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index in the worker&apos;s :attr:`CaptureWorker.raw` a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -6203,6 +6199,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{where}: the raw frames must be a list of sessions</source>
+        <extracomment>a session&apos;s keys, in the order they are stored</extracomment>
         <translation>{where}：原始数据帧必须是采集会话的列表</translation>
     </message>
     <message>
@@ -6215,19 +6212,17 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{source}: &apos;raw_capture&apos; must be an object; nothing was changed</source>
-        <translation>{source}：'raw_capture' 必须是对象；未作任何更改</translation>
+        <translation>{source}：&apos;raw_capture&apos; 必须是对象；未作任何更改</translation>
     </message>
     <message>
         <source>{where}: &apos;sha256&apos; and &apos;sessions&apos; expected; nothing was changed</source>
-        <translation>{where}：应有 'sha256' 和 'sessions'；未作任何更改</translation>
+        <translation>{where}：应有 &apos;sha256&apos; 和 &apos;sessions&apos;；未作任何更改</translation>
     </message>
     <message>
         <source>{reason}; nothing was changed</source>
         <translation>{reason}；未作任何更改</translation>
     </message>
     <message>
-        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
-        <translation>{where}：原始数据帧与其 SHA-256 不符（采集后被改动过）；未作任何更改</translation>
         <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
         <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
     </message>
@@ -6269,6 +6264,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not)</extracomment>
         <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
     </message>
     <message>
@@ -6354,6 +6350,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
         <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
+    </message>
+    <message>
+        <source>face pyramidal errors: each face normal&apos;s elevation relative to the faces&apos; mean plane (their mean and first harmonic over the faces are not determined: they cannot be told from the autocollimator&apos;s vertical zero and the polygon&apos;s tilt); largest {largest}, u up to {u}</source>
+        <translation>工作面棱锥误差：各工作面法线相对于各工作面平均平面的仰角（其在各工作面上的平均值和一次谐波无法确定：它们与自准直仪的竖直零位及多面棱体的倾斜无法区分）；最大 {largest}，u 最大 {u}</translation>
     </message>
 </context>
 </TS>
