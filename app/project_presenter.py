@@ -32,7 +32,7 @@ from models.project.file import (
 from models.project.recovery import RecoveryStore
 from widgets.i18n import explained, tr
 from widgets.workbench_presenter import WorkbenchPresenter
-from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
+from widgets.workers import application_workers
 
 __all__ = ["ProjectPresenter", "ProjectView", "default_recovery_store"]
 
@@ -315,8 +315,9 @@ class ProjectPresenter(QObject):
     def _write_recovery_in_background(self, project: Project) -> None:
         # the window keeps the interpreter every 0.1 ms; a million new strings would start
         # full cyclic-GC passes that hold it for a few hundred ms (strings hold no cycles)
-        with gui_thread_first(), cyclic_gc_paused():
-            self._write_recovery(project, wait_while_analysing)
+        workers = application_workers()
+        with workers.gui_thread_first(), workers.cyclic_gc_paused():
+            self._write_recovery(project, workers.wait_while_analysing)
 
     def _write_recovery(self, project: Project, between_blocks=None) -> None:
         try:

@@ -2,9 +2,10 @@
 
 Each workbench's ``plots`` module turns its result into :class:`PlotFigure`\\ s;
 the window draws them with pyqtgraph and the certificate with the PDF writer,
-so a curve, its name and its unit are written in one place. ``role`` tells the
-window's error plot where a series goes (raw and model on the upper panel,
-corrected on its own); the PDF draws every series of a figure on one chart.
+so a curve, its name and its unit are written in one place; how each series looks
+is decided once for both in models/plot_style.py. ``role`` tells the window's error
+plot where a series goes (raw and model on the upper panel, corrected on its own);
+the PDF draws every series of a figure on one chart.
 ``y_unit`` is the unit of every series' y values and bands, as data (a key of
 models.quantity.UNITS; empty when they are not a quantity of ours, volts say): given,
 or read once from the y title's unit when the figure is declared.
@@ -29,6 +30,8 @@ class PlotSeries:
     band: np.ndarray | None = None  # ± half-width drawn as a shaded band around y
     role: str = ""  # "raw", "model", "corrected", "residual" for the window's error plot
     dashed: bool = False  # drawn with a dashed line (the positioning runs: the down direction)
+    width: float | None = None  # the line's width in the window (0: markers only); None: 2 px
+    marker_size: float | None = None  # the markers' size in the window; None: 6 px
 
 
 @dataclass(frozen=True)

@@ -165,7 +165,7 @@ def test_the_positioning_deviation_plot_shows_every_point(window, size, language
     assert len(deviation.curves) >= 4 and any(len(c.getData()[0]) == 2 for c in deviation.curves)
     assert not _inside(item, deviation.curves)
     (x0, x1), (y0, y1) = item.getViewBox().viewRange()
-    for band in deviation._bands:
+    for band in deviation.bands:
         for edge in band.curves:
             x, y = edge.getData()
             assert y0 <= y.min() and y.max() <= y1, (y.min(), y.max(), y0, y1)

@@ -278,3 +278,21 @@ def test_the_controller_options_form_returns_what_is_typed(qtbot):
     assert got == {"axis": "AX7", "system": "1"}
     assert seen == {"title": "SINUMERIK 840D: controller options",
                     "tip": "machine axis name, e.g. AX1 or X1"}
+
+
+def test_an_unwritable_compensation_path_is_told_by_its_name(presenter_and_view, samples_dir,
+                                                            tmp_path):
+    """The file asked for is named (not the temporary file written beside it), and
+    nothing is written."""
+    presenter, view = presenter_and_view
+    presenter.table_model.replace_all(map_columns(read_table(samples_dir / KIND.sample_file),
+                                                  KIND.columns))
+    presenter.refresh()
+    bad = tmp_path / "no such folder" / "c.csv"
+    view.ask_compensation_path.return_value = str(bad)
+    presenter.export_compensation_dialog()
+    title, text = view.tell.call_args.args
+    assert title == "Cannot export the compensation table"
+    assert text.startswith(f"{bad}: ") and ".tmp" not in text
+    assert not bad.parent.exists()
+    view.show_status.assert_not_called()

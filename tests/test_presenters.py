@@ -12,6 +12,7 @@ import shiboken6
 from PySide6.QtWidgets import QWidget
 
 from models.readings.tabular_import import map_columns, read_table
+from tests.pseudo_translation import pseudo_translated
 from widgets.fringe.presenter import FringePresenter
 from widgets.fringe.view import FringeView
 from widgets.polygon.presenter import PolygonPresenter
@@ -76,15 +77,32 @@ def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qt
     np.testing.assert_allclose(raw.y + correction.y, corrected.y, atol=1e-9)
     assert len(raw.x) == 24 and residuals is not None and tilt is not None
     assert harmonics.series[0].y.size == 12
-    presenter.table_model.set_cells([(24, 3, "25.0")])  # the closure reading far off
-    presenter.refresh()
-    view.append_to_readings_caption.assert_called_with(" — RUN INVALID (closure failed)")
     bad = tmp_path / "cert.csv"
     bad.write_text("1,0.1\n1,0.2\n")
     view.ask_certificate_file.return_value = str(bad)
-    presenter.load_certificate_dialog()
-    title, text = view.tell.call_args.args
-    assert title == "Cannot read certificate" and "position 1 appears twice" in text
+    short = tmp_path / "short.csv"
+    short.write_text("1,0.1\n2,0.2\n")
+    with pseudo_translated():  # what the presenter says goes through the translations
+        presenter.table_model.set_cells([(24, 3, "25.0")])  # the closure reading far off
+        presenter.refresh()
+        caption = view.append_to_readings_caption.call_args.args[0]
+        presenter.load_certificate_dialog()
+        title, text = view.tell.call_args.args
+        view.ask_certificate_file.return_value = str(short)
+        presenter.load_certificate_dialog()
+        missing = view.tell.call_args.args[1]
+        undo_before = presenter.undo_stack.count()
+        good = tmp_path / "good.csv"
+        good.write_text("".join(f"{i},0.{i:02d}\n" for i in range(1, 25)))
+        view.ask_certificate_file.return_value = str(good)
+        presenter.load_certificate_dialog()
+        undo_text = presenter.undo_stack.text(undo_before)
+    assert not presenter.result.valid
+    assert all(said.startswith("‹") and said.endswith("›")
+               for said in (caption, title, text, missing, undo_text))
+    # a models Message: its template translated, the file and position put in after
+    assert str(bad) in text
+    assert str(short) in missing and "position 3 (row 3" in missing
     view.ask_certificate_file.return_value = ""  # cancelled: nothing asked, nothing changed
     view.tell.reset_mock()
     presenter.load_certificate_dialog()

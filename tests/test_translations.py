@@ -416,3 +416,34 @@ def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, sa
     finally:
         window.set_language("en")
     assert window.certificates.details("theodolite").language == "en"
+
+
+def test_the_application_owns_one_language_with_the_texts_that_follow_it(qapp, qtbot):
+    """widgets/i18n.py keeps no module state: the application's Language holds the
+    language installed, its translators, and every live text and callback; a text or
+    callback whose owner was closed is let go."""
+    import shiboken6
+    from PySide6.QtCore import QCoreApplication
+
+    from tests.pseudo_translation import marked, pseudo_translated
+    from widgets.i18n import application_language, install_language, live, on_language_change, tr
+
+    language = application_language()
+    assert language is application_language()
+    assert language.parent() is QCoreApplication.instance() and language.code == "en"
+    assert install_language("zh_CN") == "zh_CN" and language.code == "zh_CN"
+    assert install_language("en") == "en" and language.code == "en"
+    label, gone = QLabel(), QLabel()
+    qtbot.addWidget(label)
+    live(label.setText, tr("Copy image"))
+    live(gone.setText, tr("Copy image"))
+    calls = []
+    on_language_change(label, lambda: calls.append("label"))
+    on_language_change(gone, lambda: calls.append("gone"))
+    shiboken6.delete(gone)  # its window closed
+    with pseudo_translated():
+        language.retranslate()
+        assert label.text() == marked("Copy image")
+    assert calls == ["label"]
+    language.retranslate()
+    assert label.text() == "Copy image" and calls == ["label", "label"]

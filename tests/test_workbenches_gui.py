@@ -274,3 +274,31 @@ def test_polygon_headline_says_the_result_stands_and_what_the_tilt_asks(qtbot, p
     assert "the tilt's error is corrected in these figures" in headline
     assert (f"tilt ψ = {result.sets[0].tilt.psi_arcsec:.0f}\", above the "
             f"{result.allowed_tilt_arcsec:.0f}\" allowed — re-seat the polygon") in headline
+
+
+def test_fringe_table_export_to_an_unwritable_path_tells_the_user(qtbot, fringe, tmp_path,
+                                                                   monkeypatch):
+    """The export goes through the workbench's correction table, as on the command line: a
+    folder that is not there is told, naming the file, and nothing is raised out of the
+    button's slot; a good path writes the table and says so."""
+    from PySide6.QtWidgets import QFileDialog, QMessageBox
+
+    told = []
+    monkeypatch.setattr(QMessageBox, "warning", lambda _parent, title, text: told.append(
+        (title, text)))
+    fringe.load_sample()
+    qtbot.waitUntil(lambda: fringe.result is not None)
+    bad = tmp_path / "no such folder" / "table.csv"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(bad), ""))
+    qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
+    assert len(told) == 1
+    title, text = told[0]
+    assert title == "Cannot export the correction table"
+    assert str(bad) in text and "No such file or directory" in text
+    assert not bad.parent.exists()
+    good = tmp_path / "table.h"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(good), ""))
+    qtbot.mouseClick(fringe.view.export_button, Qt.MouseButton.LeftButton)
+    assert len(told) == 1
+    assert good.read_text().startswith("/* AngleBench fringe correction table")
+    assert "Correction table, 1024 entries (C header) written" in fringe.view.readings_label.text()

@@ -1,6 +1,7 @@
 """Error-curve plot shared by the workbenches: raw error with the model over it,
 the corrected error on its own scale, a residual plot beneath; legends, arcsec
-axes and a crosshair readout."""
+axes and a crosshair readout. Each role's colour, line and markers are those the
+certificate draws with (models/plot_style.py)."""
 
 from __future__ import annotations
 
@@ -9,15 +10,29 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
+from models.plot_style import ROLE_STYLES
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 from widgets.plot_range import follow_new_data
 
-RAW_PEN = pg.mkPen("#c0392b", width=2)
-MODEL_PEN = pg.mkPen("#7f8c8d", width=2, style=Qt.PenStyle.DashLine)
-CORRECTED_PEN = pg.mkPen("#1f5fbf", width=2)
-RESIDUAL_PEN = pg.mkPen("#2e8b57", width=1.5)
+
+def _pen(role: str) -> pg.QtGui.QPen:
+    """The pen of a role's curve, as decided for the window and the certificate alike
+    (models/plot_style.py)."""
+    style = ROLE_STYLES[role]
+    return pg.mkPen(pg.mkColor(*style.colour), width=style.width,
+                    style=Qt.PenStyle.DashLine if style.dashed else Qt.PenStyle.SolidLine)
+
+
+def _symbol(role: str) -> dict:
+    style = ROLE_STYLES[role]
+    return {"symbol": style.symbol, "symbolSize": style.symbol_size,
+            "symbolBrush": pg.mkColor(*style.colour), "symbolPen": None}
+
+
+RAW_PEN, MODEL_PEN, CORRECTED_PEN, RESIDUAL_PEN = (_pen(role) for role in (
+    "raw", "model", "corrected", "residual"))
 MAX_SYMBOL_POINTS = 500  # beyond this, points are drawn as lines only (they would overlap,
 #                            and 1000 symbols cost ~10 ms per redraw)
 DENSE_POINTS = 2000  # beyond this a curve is a band of envelope points: drawn with 1-px pens
@@ -81,15 +96,12 @@ class ErrorPlot(QWidget):
         on_language_change(self, self._relabel)
         self.legend = self.main_plot.addLegend(offset=(-10, 10))
         self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
-        self.raw_curve = self.main_plot.plot(name=declared("raw"), pen=RAW_PEN, symbol="o", symbolSize=5,
-                                             symbolBrush="#c0392b", symbolPen=None)
+        self.raw_curve = self.main_plot.plot(name=declared("raw"), pen=RAW_PEN, **_symbol("raw"))
         self.model_curve = self.main_plot.plot(name=declared("model"), pen=MODEL_PEN)
         self.corrected_curve = self.corrected_plot.plot(
-            name=declared("corrected"), pen=CORRECTED_PEN, symbol="s", symbolSize=5,
-            symbolBrush="#1f5fbf", symbolPen=None)
+            name=declared("corrected"), pen=CORRECTED_PEN, **_symbol("corrected"))
         self.corrected_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
-        self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, symbol="o", symbolSize=4,
-                                                      symbolBrush="#2e8b57", symbolPen=None)
+        self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, **_symbol("residual"))
         self.residual_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
         # the legend's names in English, to be shown again in the window's language (an
         # empty plot's legend too: it stayed "raw / model / corrected" in Chinese)
@@ -210,9 +222,11 @@ class ErrorPlot(QWidget):
 
     def _style_for(self, points: int) -> None:
         """Symbols on a short curve; thin pens on a dense one."""
-        for curve, symbol, pen in ((self.raw_curve, "o", RAW_PEN),
-                                   (self.corrected_curve, "s", CORRECTED_PEN),
-                                   (self.residual_curve, "o", RESIDUAL_PEN)):
+        for curve, symbol, pen in ((self.raw_curve, ROLE_STYLES["raw"].symbol, RAW_PEN),
+                                   (self.corrected_curve, ROLE_STYLES["corrected"].symbol,
+                                    CORRECTED_PEN),
+                                   (self.residual_curve, ROLE_STYLES["residual"].symbol,
+                                    RESIDUAL_PEN)):
             wanted = symbol if points <= MAX_SYMBOL_POINTS else None
             if curve.opts["symbol"] != wanted:
                 curve.setSymbol(wanted)

@@ -1,22 +1,192 @@
-"""A plot that draws any declared figure (models/plots.py): each series as a line, with
-markers where asked and its ±band shaded; the legend names every labelled series."""
+"""The window's renderer of declared figures (models/plots.py), and a plot widget that holds one.
+
+:class:`FigureRenderer` draws a :class:`~models.plots.PlotFigure` into a pyqtgraph plot:
+each series as a line in the style decided for it in models/plot_style.py (the PDF
+writer draws from the same decisions), with markers where asked and its ±band shaded,
+or as bars; the legend names every labelled series in the window's language. The
+curves are made on the first figure and updated with ``setData`` after that, so a plot
+set to clip and decimate its curves (the fringe plots: a million samples) keeps doing so.
+"""
 
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
-from widgets.i18n import declared
+from models.plot_style import SeriesStyle, drawing_order, series_style
+from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
 from widgets.plot_range import follow_new_data
 
+__all__ = ["FigurePlot", "FigureRenderer", "legend_name"]
+
+BAND_ALPHA = 50  # of 255
+
+
+def legend_name(label: str) -> str | None:
+    """A series' legend entry in the window's language (a run's number as it is)."""
+    if not label:
+        return None
+    return label if label.isdigit() else declared(label)
+
+
+@functools.lru_cache(maxsize=256)
+def _curve_style(style: SeriesStyle) -> dict:
+    """A series' style as PlotDataItem's options."""
+    colour = pg.mkColor(*style.colour)
+    pen = None if style.width == 0 else pg.mkPen(
+        colour, width=style.width,
+        style=Qt.PenStyle.DashLine if style.dashed else Qt.PenStyle.SolidLine)
+    return {"pen": pen, "symbol": style.symbol, "symbolSize": style.symbol_size,
+            "symbolBrush": colour, "symbolPen": None}
+
+
+class FigureRenderer:
+    """Draws declared figures into ``plot`` (a PlotWidget or PlotItem).
+
+    ``titles``: the figure's title and axis titles are shown (otherwise the plot keeps its
+    own); ``bars``: each series is drawn as bars of ``bar_width`` (offset as declared),
+    rising from ``0`` or, with ``log_bars``, from a decade below the smallest value (the
+    values are log10 amplitudes: the tallest bar is then the largest). ``curves`` holds the
+    drawn series (PlotDataItems or BarGraphItems) in the figure's order, for tests."""
+
+    def __init__(self, plot, titles: bool = True, bars: bool = False, bar_width: float = 0.6,
+                 log_bars: bool = False) -> None:
+        self.item: pg.PlotItem = plot.getPlotItem() if hasattr(plot, "getPlotItem") else plot
+        self.titles, self.bars, self.bar_width, self.log_bars = titles, bars, bar_width, log_bars
+        self.curves: list = []
+        self.bands: list[pg.FillBetweenItem] = []  # the ±bands drawn
+        self._names: list[str] = []  # each curve's label, in English
+        self._figure = None
+        on_language_change(self.item, self.relabel)
+
+    @property
+    def legend(self):
+        return self.item.legend
+
+    def clear(self) -> None:
+        """Nothing drawn and no legend entry (the curves stay, empty: the next figure drawn
+        reuses them)."""
+        for index, curve in enumerate(self.curves):
+            if self.bars:
+                curve.setOpts(x=[], height=[], width=self.bar_width)
+            else:
+                curve.setData([], [])
+            self._name(index, "")
+        self._remove_bands()
+
+    def _remove_bands(self) -> None:
+        for band in self.bands:
+            self.item.removeItem(band)
+        self.bands = []
+
+    def curve(self, index: int):
+        """The ``index``-th curve, made when first needed."""
+        while len(self.curves) <= index:
+            if self.bars:
+                bars = pg.BarGraphItem(x=[], height=[], width=self.bar_width)
+                self.item.addItem(bars)
+                self.curves.append(bars)
+            else:
+                self.curves.append(self.item.plot())
+            self._names.append("")
+        return self.curves[index]
+
+    def _name(self, index: int, label: str) -> None:
+        """The legend entry of curve ``index``: added, renamed or removed as its label says."""
+        curve, legend = self.curves[index], self.legend
+        self._names[index] = label
+        if legend is None:
+            return
+        name = legend_name(label)
+        curve.opts["name"] = name
+        entry = legend.getLabel(curve)
+        if entry is not None and name:
+            entry.setText(name)
+        elif entry is not None:
+            legend.removeItem(curve)
+        elif name:
+            legend.addItem(curve, name)
+
+    def show(self, figure) -> None:
+        """Draw ``figure`` (``None``: nothing)."""
+        if figure is None:
+            self.clear()
+            return
+        self._figure = figure
+        if self.titles:
+            self.item.setTitle(declared(figure.title), size="9pt")
+            self.item.setLabel("bottom", declared(figure.x_label))
+            self.item.setLabel("left", declared(figure.y_label))
+        self._remove_bands()
+        floor = 0.0
+        if self.bars and self.log_bars:
+            logs = np.concatenate([np.asarray(s.y, float) for s in figure.series] or [np.empty(0)])
+            floor = float(np.floor(np.min(logs[np.isfinite(logs)], initial=0.0))) - 1.0
+        order = {id(s): i for i, s in enumerate(drawing_order(figure))}
+        for index, s in enumerate(figure.series):
+            curve = self.curve(index)
+            style = series_style(s)
+            colour = pg.mkColor(*style.colour)
+            if self.bars:
+                curve.setOpts(x=s.x, y0=floor, height=np.asarray(s.y) - floor,
+                              width=self.bar_width, brush=colour)
+                self._name(index, s.label)
+                continue
+            curve.setZValue(order[id(s)] - len(figure.series))  # the set-up model under the rest
+            if s.band is not None:
+                ok = np.isfinite(s.y) & np.isfinite(s.band)
+                upper = pg.PlotCurveItem(s.x[ok], (s.y + s.band)[ok])
+                lower = pg.PlotCurveItem(s.x[ok], (s.y - s.band)[ok])
+                fill = pg.FillBetweenItem(upper, lower, brush=pg.mkBrush(*style.colour, BAND_ALPHA))
+                fill.setZValue(-2 * len(figure.series))
+                self.item.addItem(fill)
+                self.bands.append(fill)
+            # the style goes with the data: one redraw (pen None: markers only, no line drawn)
+            curve.setData(s.x, s.y, connect="finite", **_curve_style(style))
+            self._name(index, s.label)
+        for index in range(len(figure.series), len(self.curves)):  # fewer series than before
+            curve = self.curves[index]
+            if self.bars:
+                curve.setOpts(x=[], height=[], width=self.bar_width)
+            else:
+                curve.setData([], [])
+            self._name(index, "")
+        follow_new_data(self.item)  # new data: shown whole again
+        self._settle_legend()
+
+    def _settle_legend(self) -> None:
+        """The legend laid out at once with its new names, then placed: its size is then
+        the new one (and no layout is left pending on a plot that may be deleted before
+        the event loop comes round: a window closed just after a change of language)."""
+        if self.legend is not None:
+            self.legend.layout.activate()
+            place_legend(self.item, self.legend)
+
+    def relabel(self) -> None:
+        """The titles and legend again in the window's language."""
+        if self._figure is not None and self.titles:
+            self.item.setTitle(declared(self._figure.title), size="9pt")
+            self.item.setLabel("bottom", declared(self._figure.x_label))
+            self.item.setLabel("left", declared(self._figure.y_label))
+        if self.legend is None:
+            return
+        for curve, english in zip(self.curves, self._names, strict=True):
+            entry = self.legend.getLabel(curve)
+            if entry is not None and english:
+                entry.setText(legend_name(english))
+        self._settle_legend()
+
 
 class FigurePlot(QWidget):
-    """``curves`` holds the drawn series (PlotDataItems) in the figure's order, for tests
-    (``getData()``)."""
+    """A plot widget showing one declared figure at a time, with its title, axis titles and
+    legend. ``curves`` holds the drawn series (PlotDataItems) in the figure's order, for
+    tests (``getData()``)."""
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
@@ -25,51 +195,26 @@ class FigurePlot(QWidget):
         for axis in ("left", "bottom"):
             self.plot.getAxis(axis).enableAutoSIPrefix(False)
         self.legend = self.plot.addLegend(offset=(-10, 10))
-        self.curves: list[pg.PlotDataItem] = []
-        self._bands: list[pg.FillBetweenItem] = []
+        self.renderer = FigureRenderer(self.plot)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.plot)
+
+    @property
+    def curves(self) -> list[pg.PlotDataItem]:
+        return self.renderer.curves
+
+    @property
+    def bands(self) -> list[pg.FillBetweenItem]:
+        """The shaded ±bands drawn (for tests)."""
+        return self.renderer.bands
 
     def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
         super().resizeEvent(event)
         place_legend(self.plot.getPlotItem(), self.legend)
 
     def clear(self) -> None:
-        self.legend.clear()
-        for item in self.curves + self._bands:
-            self.plot.removeItem(item)
-        self.curves, self._bands = [], []
-
-    @staticmethod
-    def _name(label: str) -> str | None:
-        """A series' legend entry in the window's language (a run's number as it is)."""
-        if not label:
-            return None
-        return label if label.isdigit() else declared(label)
+        self.renderer.clear()
 
     def show_figure(self, figure) -> None:
-        self.clear()
-        if figure is None:
-            return
-        self.plot.setTitle(declared(figure.title), size="9pt")
-        self.plot.setLabel("bottom", declared(figure.x_label))
-        self.plot.setLabel("left", declared(figure.y_label))
-        for s in figure.series:
-            colour = pg.mkColor(*s.color)
-            if s.band is not None:
-                ok = np.isfinite(s.y) & np.isfinite(s.band)
-                upper = pg.PlotCurveItem(s.x[ok], (s.y + s.band)[ok])
-                lower = pg.PlotCurveItem(s.x[ok], (s.y - s.band)[ok])
-                fill = pg.FillBetweenItem(upper, lower, brush=pg.mkBrush(*s.color, 50))
-                self.plot.addItem(fill)
-                self._bands.append(fill)
-            symbol = {"symbol": "o", "symbolSize": 6, "symbolBrush": colour,
-                      "symbolPen": None} if s.markers else {}
-            pen = pg.mkPen(colour, width=2, style=Qt.PenStyle.DashLine if s.dashed
-                           else Qt.PenStyle.SolidLine)
-            curve = self.plot.plot(s.x, s.y, pen=pen, connect="finite",
-                                   name=self._name(s.label), **symbol)
-            self.curves.append(curve)
-        follow_new_data(self.plot.getPlotItem())
-        place_legend(self.plot.getPlotItem(), self.legend)
+        self.renderer.show(figure)

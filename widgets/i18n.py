@@ -17,7 +17,9 @@ Everything is in one translation context (the empty one), so a text is translate
 same wherever it appears.
 
 The language follows the system's unless one was chosen (View › Language); it is kept
-in the settings under ``ui/language``.
+in the settings under ``ui/language``. The application owns one :class:`Language`
+(``application_language()``): the translators installed, the language they give, and
+every text and callback that follows it.
 """
 
 from __future__ import annotations
@@ -25,13 +27,13 @@ from __future__ import annotations
 import weakref
 from collections.abc import Callable
 
-from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QTranslator
+from PySide6.QtCore import QT_TR_NOOP, QCoreApplication, QLibraryInfo, QLocale, QObject, QTranslator
 
 from models.messages import TRANSLATIONS_DIR, declared_text, reason_of, rendered
 
-__all__ = ["LANGUAGES", "SEEN_DECLARED", "Tr", "current_language", "declared", "explained",
-           "install_language", "live",
-           "on_language_change", "resolve_language", "tr", "translated"]
+__all__ = ["LANGUAGES", "SEEN_DECLARED", "Language", "Tr", "application_language", "declared",
+           "explained", "install_language", "live", "on_language_change", "resolve_language", "tr",
+           "translated"]
 
 LANGUAGES = {"system": QT_TR_NOOP("System language"), "en": "English",
              "zh_CN": "简体中文 (Chinese)"}
@@ -79,27 +81,7 @@ def declared(source: str) -> Tr:
     return Tr(_translate_declared(source), source, True)
 
 
-# -- texts that follow the language -------------------------------------------------
-_live: list[tuple[weakref.ref, Callable[[str], None], str, bool]] = []
-_callbacks: list[tuple[weakref.ref, Callable[[], Callable[[], None] | None]]] = []
-
-
-def live(setter, text: Tr) -> None:
-    """``setter(text)`` now and again after every change of language. ``setter`` is a
-    bound method of a Qt object (``label.setText``, ``action.setToolTip``)."""
-    setter(text)
-    owner = getattr(setter, "__self__", None)
-    if owner is not None:
-        _live.append((weakref.ref(owner), setter.__name__, text.source, text.is_declared))
-
-
-def on_language_change(owner, callback: Callable[[], None]) -> None:
-    """Run ``callback`` after every change of language while ``owner`` lives. A bound
-    method is held weakly (a window closed is not kept alive by its language)."""
-    held = weakref.WeakMethod(callback) if hasattr(callback, "__self__") else (lambda: callback)
-    _callbacks.append((weakref.ref(owner), held))
-
-
+# -- the language, and the texts that follow it -------------------------------------
 def _alive(obj) -> bool:
     if obj is None:
         return False
@@ -111,39 +93,102 @@ def _alive(obj) -> bool:
         return True
 
 
-def retranslate() -> None:
-    """Set every live text again in the language now installed, then run the callbacks."""
-    kept = []
-    for ref, name, source, is_declared in _live:
-        owner = ref()
-        if not _alive(owner):
-            continue
-        try:
-            getattr(owner, name)(declared(source) if is_declared else tr(source))
-        except RuntimeError:  # its C++ side went with its window
-            continue
-        kept.append((ref, name, source, is_declared))
-    _live[:] = kept
-    callbacks = []
-    for ref, held in _callbacks:
-        callback = held()
-        if _alive(ref()) and callback is not None:
-            try:
-                callback()
-            except RuntimeError:  # a part of it was deleted with its window
+class Language(QObject):
+    """The language the window is shown in: one per application, a child of the
+    ``QCoreApplication`` (:func:`application_language`). It holds the translators it
+    installed, the language they give (``code``: ``en`` or ``zh_CN``; English has no
+    translator), and every text and callback that follows a change of language."""
+
+    def __init__(self, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.code = "en"
+        self._translators: list[QTranslator] = []
+        self._live: list[tuple[weakref.ref, str, str, bool]] = []
+        self._callbacks: list[tuple[weakref.ref, Callable[[], Callable[[], None] | None]]] = []
+
+    def follow(self, setter, text: Tr) -> None:
+        """``setter(text)`` again after every change of language (see :func:`live`)."""
+        owner = getattr(setter, "__self__", None)
+        if owner is not None:
+            self._live.append((weakref.ref(owner), setter.__name__, text.source, text.is_declared))
+
+    def on_change(self, owner, callback: Callable[[], None]) -> None:
+        """Run ``callback`` after every change of language while ``owner`` lives. A bound
+        method is held weakly (a window closed is not kept alive by its language)."""
+        held = weakref.WeakMethod(callback) if hasattr(callback, "__self__") else (lambda: callback)
+        self._callbacks.append((weakref.ref(owner), held))
+
+    def retranslate(self) -> None:
+        """Set every live text again in the language now installed, then run the callbacks."""
+        kept = []
+        for ref, name, source, is_declared in self._live:
+            owner = ref()
+            if not _alive(owner):
                 continue
-            callbacks.append((ref, held))
-    _callbacks[:] = callbacks
+            try:
+                getattr(owner, name)(declared(source) if is_declared else tr(source))
+            except RuntimeError:  # its C++ side went with its window
+                continue
+            kept.append((ref, name, source, is_declared))
+        self._live[:] = kept
+        callbacks = []
+        for ref, held in self._callbacks:
+            callback = held()
+            if _alive(ref()) and callback is not None:
+                try:
+                    callback()
+                except RuntimeError:  # a part of it was deleted with its window
+                    continue
+                callbacks.append((ref, held))
+        self._callbacks[:] = callbacks
+
+    def install(self, choice: str) -> str:
+        """Install the translators of ``choice`` (ours, and Qt's own for its dialogs), then
+        retranslate every live text; returns the language installed."""
+        app = QCoreApplication.instance()
+        language = resolve_language(choice)
+        if language == self.code:
+            return language  # nothing to set again (a second window, the same choice)
+        self.code = language
+        for translator in self._translators:
+            app.removeTranslator(translator)
+        self._translators.clear()
+        if language != "en":
+            ours = QTranslator(self)
+            if ours.load(str(TRANSLATIONS_DIR / f"anglebench_{language}.qm")):
+                app.installTranslator(ours)
+                self._translators.append(ours)
+            qt = QTranslator(self)
+            if qt.load(f"qtbase_{language}",
+                       QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)):
+                app.installTranslator(qt)
+                self._translators.append(qt)
+        self.retranslate()
+        return language
 
 
-# -- the language -----------------------------------------------------------------
-_installed: list[QTranslator] = []
-_current = ["en"]  # the language installed (English: no translator)
+def application_language() -> Language:
+    """The application's language: a child of the ``QCoreApplication``, made when first
+    asked for (English), and gone with the application."""
+    app = QCoreApplication.instance()
+    if app is None:
+        raise RuntimeError("the language belongs to the application: make a QApplication first")
+    language = app.findChild(Language)
+    if language is None:
+        language = Language(app)
+    return language
 
 
-def current_language() -> str:
-    """The language installed: ``en`` or ``zh_CN``."""
-    return _current[0]
+def live(setter, text: Tr) -> None:
+    """``setter(text)`` now and again after every change of language. ``setter`` is a
+    bound method of a Qt object (``label.setText``, ``action.setToolTip``)."""
+    setter(text)
+    application_language().follow(setter, text)
+
+
+def on_language_change(owner, callback: Callable[[], None]) -> None:
+    """Run ``callback`` after every change of language while ``owner`` lives."""
+    application_language().on_change(owner, callback)
 
 
 def resolve_language(choice: str) -> str:
@@ -154,25 +199,5 @@ def resolve_language(choice: str) -> str:
 
 
 def install_language(choice: str) -> str:
-    """Install the translators of ``choice`` (ours, and Qt's own for its dialogs), then
-    retranslate every live text; returns the language installed."""
-    app = QCoreApplication.instance()
-    language = resolve_language(choice)
-    if language == _current[0]:
-        return language  # nothing to set again (a second window, the same choice)
-    _current[0] = language
-    for translator in _installed:
-        app.removeTranslator(translator)
-    _installed.clear()
-    if language != "en":
-        ours = QTranslator(app)
-        if ours.load(str(TRANSLATIONS_DIR / f"anglebench_{language}.qm")):
-            app.installTranslator(ours)
-            _installed.append(ours)
-        qt = QTranslator(app)
-        if qt.load(f"qtbase_{language}",
-                   QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)):
-            app.installTranslator(qt)
-            _installed.append(qt)
-    retranslate()
-    return language
+    """The application's language set to ``choice`` (:meth:`Language.install`)."""
+    return application_language().install(choice)

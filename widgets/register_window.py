@@ -27,7 +27,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from widgets.i18n import current_language, declared, live, on_language_change, tr
+from widgets.i18n import application_language, declared, live, on_language_change, tr
 from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
 from widgets.screen_fit import fit_to_screen
@@ -43,9 +43,10 @@ class LocalDateAxis(pg.DateAxisItem):
 
     def tickStrings(self, values, scale, spacing):  # noqa: N802 - pyqtgraph's name
         strings = super().tickStrings(values, scale, spacing)
-        if current_language() == "en":
+        language = application_language().code
+        if language == "en":
             return strings
-        locale = QLocale(current_language())
+        locale = QLocale(language)
         names = {english: locale.monthName(number, QLocale.FormatType.ShortFormat)
                  for number, english in enumerate(_MONTHS, start=1)}
         out = []

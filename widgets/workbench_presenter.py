@@ -33,13 +33,7 @@ from models.workbench import ShowsHeadline, Workbench
 from widgets.i18n import explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
-from widgets.workers import (
-    analysis_running,
-    cyclic_gc_paused,
-    emit_if_alive,
-    gui_thread_first,
-    worker_pool,
-)
+from widgets.workers import Workers, application_workers, emit_if_alive
 
 log = logging.getLogger(__name__)
 
@@ -67,16 +61,16 @@ class _AnalysisTask(QRunnable):
     """Parse and analyse a large sheet on a worker thread."""
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
-                 generation: int, signals: _TaskSignals, prepare, current) -> None:
+                 generation: int, signals: _TaskSignals, prepare, current, workers: Workers) -> None:
         super().__init__()
-        self._args = (kind, sheet, settings, generation, signals, prepare, current)
+        self._args = (kind, sheet, settings, generation, signals, prepare, current, workers)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals, prepare, current = self._args
+        kind, sheet, settings, generation, signals, prepare, current, workers = self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
-            with (gui_thread_first(), analysis_running(),
+            with (workers.gui_thread_first(), workers.analysis_running(),
                   cancellable(lambda: generation != current())):
                 checkpoint()
                 parsed = sheet.parse()
@@ -104,16 +98,16 @@ class _ImportTask(QRunnable):
     """Read and map a large file on a worker thread."""
 
     def __init__(self, kind: Workbench, path: str, signals: _TaskSignals,
-                 generation: int) -> None:
+                 generation: int, workers: Workers) -> None:
         super().__init__()
-        self._args = (kind, path, signals, generation)
+        self._args = (kind, path, signals, generation, workers)
 
     def run(self) -> None:
-        kind, path, signals, generation = self._args
+        kind, path, signals, generation, workers = self._args
         # Millions of new row lists would trigger full cyclic-GC passes that hold the GIL
         # for up to half a second each and stall the window; rows of strings hold no
         # cycles, so the collector rests while they are built.
-        with cyclic_gc_paused(), gui_thread_first(), analysis_running():
+        with workers.cyclic_gc_paused(), workers.gui_thread_first(), workers.analysis_running():
             # a record of plain numbers stays numbers (a column store): a million readings
             # are read in a fraction of a second and never become a million text rows
             parsed = read_numeric(path, kind.columns)
@@ -170,6 +164,7 @@ class WorkbenchPresenter(QObject):
                          (view if issubclass(type(view), QObject) else None))
         self.kind = kind
         self.view = view
+        self.workers = application_workers()  # the application's thread pool
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
@@ -355,7 +350,8 @@ class WorkbenchPresenter(QObject):
             return
         self._import_pending = True
         self._set_busy(True, tr("Reading {name} …").format(name=Path(path).name))
-        worker_pool().start(_ImportTask(self.kind, path, self._signals, self._import_generation))
+        self.workers.start(_ImportTask(self.kind, path, self._signals, self._import_generation,
+                                       self.workers))
 
     def _rows_by_mapping(self, exc: MissingColumnError) -> list[list[str]] | None:
         """The rows with the column mapping the view gives (remembered or asked); None when
@@ -423,9 +419,10 @@ class WorkbenchPresenter(QObject):
         if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
             self._set_busy(True, tr("Analysing {rows} readings …").format(
                 rows=self.sheet.row_count))
-            worker_pool().start(
+            self.workers.start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
-                              self._signals, self.prepare_display, lambda: self._generation))
+                              self._signals, self.prepare_display, lambda: self._generation,
+                              self.workers))
             return
         parsed = self.sheet.parse()
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))

@@ -30,6 +30,7 @@ from fpdf.fonts import FontFace
 from models.certificate.document import CertificateDocument, PlotFigure, Table, budget_table
 from models.certificate.metadata import PLACES
 from models.messages import QT_TR_NOOP, Message, in_language, joined, message, translator
+from models.plot_style import drawing_order, legend_series, series_style
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import Quantity
 from models.software import software_identity
@@ -46,9 +47,6 @@ INK = (20, 20, 20)
 GREY = (110, 110, 110)
 RULE = (170, 170, 170)
 HEADER_FILL = (228, 233, 240)
-#: a curve's colour by its role, as the window's error plot draws it (widgets/error_plot.py)
-WINDOW_COLOURS = {"raw": (0xC0, 0x39, 0x2B), "model": (0x7F, 0x8C, 0x8D),
-                  "corrected": (0x1F, 0x5F, 0xBF), "residual": (0x2E, 0x8B, 0x57)}
 
 
 def font_files() -> dict[str, Path]:
@@ -442,19 +440,21 @@ class ReportPdf(FPDF):
             upper = list(zip(px(s.x[ok]).tolist(), py((s.y + s.band)[ok]).tolist(), strict=True))
             lower = list(zip(px(s.x[ok]).tolist(), py((s.y - s.band)[ok]).tolist(), strict=True))
             if len(upper) >= 2:
-                colour = WINDOW_COLOURS.get(s.role, s.color)
+                colour = series_style(s).colour
                 self.set_fill_color(*[int(255 - (255 - c) * 0.25) for c in colour])
                 self.polygon(upper + lower[::-1], style="F")
-        # the set-up model (dashed, as in the window) under the raw error it explains
-        for s in sorted(figure.series, key=lambda s: s.role != "model"):
+        # drawn as in the window (models/plot_style.py): the set-up model, dashed, first,
+        # under the raw error it explains
+        for s in drawing_order(figure):
             ok = np.isfinite(s.x) & np.isfinite(s.y)
             pts = list(zip(px(s.x[ok]).tolist(), py(s.y[ok]).tolist(), strict=True))
-            colour = WINDOW_COLOURS.get(s.role, s.color)
+            style = series_style(s)
+            colour = style.colour
             self.set_draw_color(*colour)
             self.set_line_width(0.3)
             if len(pts) >= 2:
                 with self.local_context():
-                    if s.role == "model":
+                    if style.dashed:
                         self.set_dash_pattern(dash=1.2, gap=0.8)
                     self.polyline(pts)
             if s.markers and len(pts) <= 400:
@@ -467,10 +467,8 @@ class ReportPdf(FPDF):
             self.mixed_text(self.l_margin + 1.5 - self.text_width(y_label, 7) / 2,
                             y0 + h / 2, y_label, 7)
         lx = x0 + 2
-        for s in figure.series:
-            if not s.label:  # a second line of a labelled pair (an envelope's lower edge)
-                continue
-            self.set_draw_color(*WINDOW_COLOURS.get(s.role, s.color))
+        for s in legend_series(figure):
+            self.set_draw_color(*series_style(s).colour)
             self.set_line_width(0.6)
             self.line(lx, y0 + 3, lx + 5, y0 + 3)
             name = self.say(s.label)

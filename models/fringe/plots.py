@@ -26,6 +26,8 @@ BINS = 2000  # runs per curve
 ERROR = QT_TR_NOOP("error")  # an axis title, its unit after it
 BLUE, GREEN, PURPLE, RED, ORANGE, TEAL = ((31, 119, 180), (44, 160, 44), (148, 103, 189),
                                           (214, 39, 40), (230, 126, 34), (22, 160, 133))
+# the window's own plots (signals, Lissajous, spectrum, drift), as they have always looked
+SIN_RED, COS_BLUE, ELLIPSE_GREEN = (192, 57, 43), (31, 95, 191), (39, 174, 96)
 
 
 def _axis(result: FringeResult) -> tuple[np.ndarray, np.ndarray | None, str]:
@@ -77,10 +79,10 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
     step = max(1, x.size // (2 * bins))
     theta = drawn(result.theta_rad)[::step]
     out["signals"] = PlotFigure(QT_TR_NOOP("Signals and their fit"), along, "signal (V)", (
-        PlotSeries("u sin", *envelope(x, drawn(result.u_sin), bins), (230, 176, 170)),
-        PlotSeries("u cos", *envelope(x, drawn(result.u_cos), bins), (169, 204, 227)),
-        PlotSeries("sin fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28)),
-        PlotSeries("cos fit", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96))))
+        PlotSeries("u sin", *envelope(x, drawn(result.u_sin), bins), (230, 176, 170), width=3),
+        PlotSeries("u cos", *envelope(x, drawn(result.u_cos), bins), (169, 204, 227), width=3),
+        PlotSeries("fit", x[::step], model_signal(theta, result.sin_fit), (123, 36, 28), width=1.5),
+        PlotSeries("", x[::step], model_signal(theta, result.cos_fit), (21, 67, 96), width=1.5)))
     shown = one_per_cell(result.u_cos, result.u_sin)  # every excursion, ~1000 points a ring
     t = np.linspace(0.0, 2 * np.pi, 361)
     e = result.ellipse
@@ -89,24 +91,26 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
                else (np.empty(0), np.empty(0)))
     radius = 0.5 * (result.sin_fit.amplitude[1] + result.cos_fit.amplitude[1])
     out["lissajous"] = PlotFigure(QT_TR_NOOP("Lissajous figure"), "u cos (V)", "u sin (V)", (
-        PlotSeries("measured", result.u_cos[shown], result.u_sin[shown], RED, True),
-        PlotSeries("fitted ellipse (Heydemann)", *ellipse, GREEN),
-        PlotSeries("compensated (circle × A1)", radius * np.cos(t), radius * np.sin(t), BLUE)))
+        PlotSeries("measured", result.u_cos[shown], result.u_sin[shown], SIN_RED, True, width=0,
+                   marker_size=2),
+        PlotSeries("fitted ellipse (Heydemann)", *ellipse, ELLIPSE_GREEN, dashed=True),
+        PlotSeries("compensated (unit circle × A1)", radius * np.cos(t), radius * np.sin(t),
+                   COS_BLUE, width=1.5)))
     orders = np.array(result.sin_fit.orders, dtype=float)
     out["spectrum"] = PlotFigure(QT_TR_NOOP("Harmonics of the two channels"), "harmonic order",
                                  "amplitude (V, log10)", tuple(
         PlotSeries(name, orders + shift, np.log10([max(fit.amplitude[k], 1e-9)
                                                    for k in fit.orders]), color)
-        for name, shift, fit, color in (("sin", -0.18, result.sin_fit, RED),
-                                        ("cos", 0.18, result.cos_fit, BLUE))))
+        for name, shift, fit, color in (("sin", -0.18, result.sin_fit, SIN_RED),
+                                        ("cos", 0.18, result.cos_fit, COS_BLUE))))
     periods = np.arange(result.sin_periods.shape[0], dtype=float)
-    drift = [("A1 (sin)", result.sin_periods[:, 1], RED), ("B1 (cos)", result.cos_periods[:, 1],
-                                                           BLUE)]
+    drift = [("A1 (sin)", result.sin_periods[:, 1], SIN_RED),
+             ("B1 (cos)", result.cos_periods[:, 1], COS_BLUE)]
     if result.sin_periods.shape[1] > 3:
         drift += [("A3 × 10", result.sin_periods[:, 3] * 10, ORANGE),
                   ("B3 × 10", result.cos_periods[:, 3] * 10, TEAL)]
     out["drift"] = PlotFigure(QT_TR_NOOP("Drift per period"), "period", "amplitude (V)", tuple(
-        PlotSeries(name, *envelope(periods, values, bins // 2), color)
+        PlotSeries(name, *envelope(periods, values, bins // 2), color, width=1.5)
         for name, values, color in drift))
     return out
 

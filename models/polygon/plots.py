@@ -16,6 +16,7 @@ __all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "re
 BLUE, ORANGE, GREEN, PURPLE, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
                                     (148, 103, 189), (192, 57, 43))
 ANGLE = QT_TR_NOOP("position angle (°)")
+WINDOW_RED, WINDOW_BLUE = (192, 57, 43), (31, 95, 191)  # the tilt and harmonics plots' own
 
 
 def error_figure(result: PolygonResult) -> PlotFigure:
@@ -59,12 +60,13 @@ def tilt_figure(result: PolygonResult) -> PlotFigure | None:
     _, at_faces = frame_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg, *frame)
     return PlotFigure(QT_TR_NOOP("Vertical readings and the tilt model (set 1)"), "θ (deg)",
                       "AC vertical − zero (\")", (
-        PlotSeries("readings", result.theta_deg, at_faces + tilt.residuals_arcsec, RED, True),
-        PlotSeries("tilt model ε_y", dense, model, BLUE),
+        PlotSeries("readings", result.theta_deg, at_faces + tilt.residuals_arcsec, WINDOW_RED, True,
+                   width=0, marker_size=7),
+        PlotSeries("tilt model ε_y", dense, model, WINDOW_BLUE),
     ))
 
 
 def harmonics_figure(result: PolygonResult) -> PlotFigure:
     h = result.harmonics
     return PlotFigure(QT_TR_NOOP("Harmonics of the corrected error"), "harmonic order", "amplitude (\")", (
-        PlotSeries("amplitude", h.order[1:].astype(float), h.amplitude[1:], BLUE),))
+        PlotSeries("amplitude", h.order[1:].astype(float), h.amplitude[1:], WINDOW_BLUE),))

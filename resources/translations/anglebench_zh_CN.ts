@@ -1314,6 +1314,10 @@
         <translation>信号</translation>
     </message>
     <message>
+        <source>sin</source>
+        <translation>sin</translation>
+    </message>
+    <message>
         <source>sin fit res.</source>
         <translation>sin 拟合残差</translation>
     </message>
@@ -2349,7 +2353,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Amendment {number} to certificate {certificate}</source>
-        <extracomment>a curve&apos;s colour by its role, as the window&apos;s error plot draws it (widgets/error_plot.py) the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
+        <extracomment>the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
         <translation>证书 {certificate} 的第 {number} 号修改</translation>
     </message>
     <message>
@@ -5026,6 +5030,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
     </message>
     <message>
+        <source>cos</source>
+        <translation>cos</translation>
+    </message>
+    <message>
         <source>grade 1: ±0.25&quot;</source>
         <translation>1 级：±0.25&quot;</translation>
     </message>
@@ -6092,6 +6100,26 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>Not compared with the log after compensation: {reason}</source>
         <translation>未与补偿后记录比较：{reason}</translation>
+    </message>
+    <message>
+        <source> — RUN INVALID (closure failed)</source>
+        <translation> — 测量无效（闭合不合格）</translation>
+    </message>
+    <message>
+        <source>Cannot read certificate</source>
+        <translation>无法读取证书</translation>
+    </message>
+    <message>
+        <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
+        <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>Load polygon certificate</source>
+        <translation>载入多面棱体证书</translation>
+    </message>
+    <message>
+        <source>Cannot export the correction table</source>
+        <translation>无法导出修正表</translation>
     </message>
     <message>
         <source>Auto-take when stable</source>

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from models.fringe import plots
 from models.fringe.analysis import FRINGE, FringeResult
-from models.fringe.export import write_correction_table
 from widgets.fringe.view import FringeView
+from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
 
 
@@ -35,4 +35,20 @@ class FringePresenter(WorkbenchPresenter):
             return
         path = self.view.ask_table_path()
         if path:
-            write_correction_table(path, self.result)
+            self.export_table(path)
+
+    def export_table(self, path: str) -> str:
+        """Write the correction table through the kind (as the command line does); a table
+        that cannot be written is told, naming the file, and nothing else changes."""
+        try:
+            what = self.kind.correction_table(self.result, self._settings, path)
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export the correction table"), explained(exc))
+            return ""
+        except OSError as exc:
+            self.view.tell(tr("Cannot export the correction table"),
+                           tr("{path}: {reason}. Nothing else was changed.").format(
+                               path=path, reason=exc.strerror or exc))
+            return ""
+        self.view.show_status(tr("{what} written").format(what=translated(what)))
+        return what

@@ -5,16 +5,14 @@ period. Widgets only: the presenter hands it arrays to draw."""
 
 from __future__ import annotations
 
-import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
+from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
-from widgets.legend_placement import place_legend
 from widgets.plot_grid import IntegerAxis, show_grid
-from widgets.plot_range import follow_new_data
 from widgets.workbench_view import WorkbenchView
 
 
@@ -40,49 +38,54 @@ def _plot(left: str, bottom: str, legend: bool = True, downsample: bool = True,
 
 
 class FringePlots(QWidget):
-    """The fringe-specific plots; every curve is created once."""
+    """The fringe-specific plots, each drawn by a :class:`FigureRenderer` from its declared
+    figure (models/fringe/plots.py); the curves are made once and updated after that."""
 
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
         self.signals = _plot("signal (V)", "electrical phase θ (periods)")
-        self.sin_points = self.signals.plot(name="u sin", pen=pg.mkPen("#e6b0aa", width=3))
-        self.cos_points = self.signals.plot(name="u cos", pen=pg.mkPen("#a9cce3", width=3))
-        self.sin_fit = self.signals.plot(name="fit", pen=pg.mkPen("#7b241c", width=1.5))
-        self.cos_fit = self.signals.plot(pen=pg.mkPen("#154360", width=1.5))
         self.lissajous = _plot("u sin (V)", "u cos (V)", downsample=False)
         self.lissajous.setAspectLocked(True)
-        self.liss_raw = self.lissajous.plot(name="measured", pen=None, symbol="o", symbolSize=2,
-                                            symbolPen=None, symbolBrush="#c0392b")
-        self.liss_ellipse = self.lissajous.plot(name="fitted ellipse (Heydemann)",
-                                                pen=pg.mkPen("#27ae60", width=2,
-                                                             style=pg.QtCore.Qt.PenStyle.DashLine))
-        self.liss_ideal = self.lissajous.plot(name="compensated (unit circle × A1)",
-                                              pen=pg.mkPen("#1f5fbf", width=1.5))
         self.spectrum = _plot("amplitude (V, log)", "harmonic order", downsample=False,
                               whole_x=True)
         self.spectrum.setLogMode(y=True)
-        self.sin_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#c0392b", name="sin")
-        self.cos_bars = pg.BarGraphItem(x=[], height=[], width=0.35, brush="#1f5fbf", name="cos")
-        self.spectrum.addItem(self.sin_bars)
-        self.spectrum.addItem(self.cos_bars)
         self.drift = _plot("amplitude (V)", "period")
-        self.drift_a1 = self.drift.plot(name="A1 (sin)", pen=pg.mkPen("#c0392b", width=1.5))
-        self.drift_b1 = self.drift.plot(name="B1 (cos)", pen=pg.mkPen("#1f5fbf", width=1.5))
-        self.drift_a3 = self.drift.plot(name="A3 × 10", pen=pg.mkPen("#e67e22", width=1.5))
-        self.drift_b3 = self.drift.plot(name="B3 × 10", pen=pg.mkPen("#16a085", width=1.5))
-        self._names = {}  # legend label -> English name
-        for plot in (self.signals, self.lissajous, self.drift):
-            for _sample, label in plot.getPlotItem().legend.items:
-                self._names[label] = label.text
-        self._relabel()
+        self.renderers = {
+            "signals": FigureRenderer(self.signals, titles=False),
+            "lissajous": FigureRenderer(self.lissajous, titles=False),
+            "spectrum": FigureRenderer(self.spectrum, titles=False, bars=True, bar_width=0.35,
+                                       log_bars=True),
+            "drift": FigureRenderer(self.drift, titles=False),
+        }
         on_language_change(self, self._relabel)
 
     def _relabel(self) -> None:
         for plot in (self.signals, self.lissajous, self.spectrum, self.drift):
             for axis, english in plot.english_labels.items():
                 plot.setLabel(axis, declared(english))
-        for label, english in self._names.items():
-            label.setText(declared(english))
+
+    def show(self, figures: dict) -> None:
+        for name, renderer in self.renderers.items():
+            renderer.show(figures[name])
+
+    def clear(self) -> None:
+        for renderer in self.renderers.values():
+            renderer.clear()
+
+    # each curve by name, for tests (getData(), opts)
+    sin_points = property(lambda self: self.renderers["signals"].curve(0))
+    cos_points = property(lambda self: self.renderers["signals"].curve(1))
+    sin_fit = property(lambda self: self.renderers["signals"].curve(2))
+    cos_fit = property(lambda self: self.renderers["signals"].curve(3))
+    liss_raw = property(lambda self: self.renderers["lissajous"].curve(0))
+    liss_ellipse = property(lambda self: self.renderers["lissajous"].curve(1))
+    liss_ideal = property(lambda self: self.renderers["lissajous"].curve(2))
+    sin_bars = property(lambda self: self.renderers["spectrum"].curve(0))
+    cos_bars = property(lambda self: self.renderers["spectrum"].curve(1))
+    drift_a1 = property(lambda self: self.renderers["drift"].curve(0))
+    drift_b1 = property(lambda self: self.renderers["drift"].curve(1))
+    drift_a3 = property(lambda self: self.renderers["drift"].curve(2))
+    drift_b3 = property(lambda self: self.renderers["drift"].curve(3))
 
 
 class FringeView(WorkbenchView):
@@ -124,37 +127,19 @@ class FringeView(WorkbenchView):
         unit = errors.y_label[errors.y_label.rfind("("):]
         plot.set_axis_label(plot.corrected_plot, "left", f"compensated {unit}")
         self.error_plot.show_figure(errors, figures["residuals"])
-        p = self.plots
-        for curve, series in zip((p.sin_points, p.cos_points, p.sin_fit, p.cos_fit),
-                                 figures["signals"].series, strict=True):
-            curve.setData(series.x, series.y)
-        for curve, series in zip((p.liss_raw, p.liss_ellipse, p.liss_ideal),
-                                 figures["lissajous"].series, strict=True):
-            curve.setData(series.x, series.y)
-        sin_bars, cos_bars = figures["spectrum"].series
-        # log10 amplitudes: bars rise from a decade below the smallest, so the tallest bar
-        # is the largest harmonic (from 0, i.e. 1 V, the smallest would hang longest)
-        logs = np.concatenate([sin_bars.y, cos_bars.y])
-        floor = float(np.floor(np.min(logs[np.isfinite(logs)], initial=0.0))) - 1.0
-        p.sin_bars.setOpts(x=sin_bars.x, y0=floor, height=sin_bars.y - floor, width=0.35)
-        p.cos_bars.setOpts(x=cos_bars.x, y0=floor, height=cos_bars.y - floor, width=0.35)
-        drift = figures["drift"].series
-        for i, curve in enumerate((p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3)):
-            curve.setData(*((drift[i].x, drift[i].y) if i < len(drift) else ([], [])))
-        for plot in (p.signals, p.lissajous, p.spectrum, p.drift):
-            follow_new_data(plot.getPlotItem())  # new data: shown whole again
-        for plot in (p.signals, p.lissajous, p.drift):
-            item = plot.getPlotItem()
-            place_legend(item, item.legend)
+        self.plots.show(figures)
 
     def clear_result(self) -> None:
         self.error_plot.clear()
-        p = self.plots
-        for curve in (p.sin_points, p.cos_points, p.sin_fit, p.cos_fit, p.liss_raw, p.liss_ellipse,
-                      p.liss_ideal, p.drift_a1, p.drift_b1, p.drift_a3, p.drift_b3):
-            curve.setData([], [])
+        self.plots.clear()
 
     def ask_table_path(self) -> str:
         path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",
                                               tr("CSV (*.csv);;C header (*.h)"))
         return path
+
+    def tell(self, title: str, text: str) -> None:
+        QMessageBox.warning(self, title, text)
+
+    def show_status(self, text: str) -> None:
+        self.append_to_readings_caption(f" — {text}")

@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+from models.messages import QT_TR_NOOP, message
 from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import PolygonResult
 from models.readings.tabular_import import TableImportError
+from widgets.i18n import explained, tr
 from widgets.polygon.view import PolygonView
 from widgets.workbench_presenter import WorkbenchPresenter
 
@@ -25,7 +27,7 @@ class PolygonPresenter(WorkbenchPresenter):
             plots.error_figure(result), plots.residual_figure(result),
             plots.tilt_figure(result), plots.harmonics_figure(result)))
         if not result.valid:
-            self.view.append_to_readings_caption(" — RUN INVALID (closure failed)")
+            self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 
     def load_certificate_dialog(self) -> None:
         path = self.view.ask_certificate_file()
@@ -33,7 +35,7 @@ class PolygonPresenter(WorkbenchPresenter):
             try:
                 self.load_certificate(path)
             except TableImportError as exc:
-                self.view.tell("Cannot read certificate", str(exc))
+                self.view.tell(tr("Cannot read certificate"), explained(exc))
 
     def load_certificate(self, path: str) -> int:
         """Fill the deviation column by position (one undo step); returns the cells changed.
@@ -53,10 +55,11 @@ class PolygonPresenter(WorkbenchPresenter):
             except ValueError:
                 continue
             if position not in deviations:
-                raise TableImportError(f"{path}: no deviation for position {position} "
-                                       f"(row {row + 1} of the readings)")
+                raise TableImportError(message(QT_TR_NOOP(
+                    "{path}: no deviation for position {position} (row {row} of the readings)"),
+                    path=str(path), position=position, row=row + 1))
             changes.append((row, column, f"{deviations[position]:g}"))
-        self.table_model.set_cells(changes, "Load polygon certificate")
+        self.table_model.set_cells(changes, tr("Load polygon certificate"))
         return len(changes)
 
     def clear_result(self) -> None:

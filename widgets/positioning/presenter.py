@@ -76,9 +76,14 @@ class PositioningPresenter(WorkbenchPresenter):
         """Write the table as set up; a table that cannot be made is told, not written."""
         try:
             what = self.kind.correction_table(self.result, self._settings, path)
-        except (ValueError, OSError) as exc:
+        except ValueError as exc:
             self.view.tell(tr("Cannot export the compensation table"),
                            explained(exc))
+            return ""
+        except OSError as exc:  # named by the file asked for, not the temporary file beside it
+            self.view.tell(tr("Cannot export the compensation table"),
+                           tr("{path}: {reason}. Nothing else was changed.").format(
+                               path=path, reason=exc.strerror or exc))
             return ""
         self.view.show_status(tr("{what} written").format(what=translated(what)))
         return what
