@@ -115,7 +115,8 @@ def _edit_large(qtbot, window, edits: int = 5) -> np.ndarray:
     for i in range(edits):
         before = presenter.result
         t0 = time.perf_counter()
-        model.setData(model.index(10 + i, 0), f"{1.0 + 0.1 * i}")
+        slip = float(presenter.sheet.text(10 + i, 0)) + 0.3  # a slip (a spike is refused, #30)
+        model.setData(model.index(10 + i, 0), f"{slip:.6f}")
         qtbot.waitUntil(lambda b=before: presenter.result is not b and not presenter.busy,
                         timeout=120_000)
         QApplication.processEvents()
@@ -130,11 +131,12 @@ def _edit_burst(qtbot, window, edits: int = 4) -> tuple[float, int]:
     model = presenter.table_model
     cancelled = presenter.cancelled_analyses
     t0 = time.perf_counter()
+    last = float(presenter.sheet.text(40 + edits - 1, 0)) + 0.3
     for i in range(edits):
-        model.setData(model.index(40 + i, 0), f"{0.5 + 0.1 * i}")
+        model.setData(model.index(40 + i, 0), f"{float(presenter.sheet.text(40 + i, 0)) + 0.3:.6f}")
         qtbot.wait(30)  # typing: a cell every 30 ms
     qtbot.waitUntil(lambda: not presenter.busy and presenter.result is not None
-                    and presenter.result.u_sin[40 + edits - 1] == 0.5 + 0.1 * (edits - 1),
+                    and abs(presenter.result.u_sin[40 + edits - 1] - last) < 1e-6,
                     timeout=120_000)
     return time.perf_counter() - t0, presenter.cancelled_analyses - cancelled
 
