@@ -14,6 +14,7 @@ import importlib
 from typing import Any
 
 from models.analysis_kind import AnalysisKind
+from models.crosscal.analysis import CROSSCAL
 from models.fringe.analysis import FRINGE
 from models.polygon.analysis import POLYGON
 from models.positioning.analysis import POSITIONING
@@ -23,7 +24,7 @@ __all__ = ["KINDS", "presenter_class"]
 
 
 KINDS: dict[str, AnalysisKind] = {k.key: k for k in (THEODOLITE, POLYGON, FRINGE,
-                                                           POSITIONING)}
+                                                           POSITIONING, CROSSCAL)}
 
 
 def presenter_class(kind: AnalysisKind) -> Any:

@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.crosscal.analysis import CROSSCAL
 from models.fringe.analysis import FRINGE
 from models.fringe.report import fringe_budget
 from models.messages import QT_TR_NOOP, message
@@ -33,12 +34,13 @@ from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
+from models.validation.crosscal_rig import CrossCalRig
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
 from models.validation.positioning_rig import AxisRig
 from models.validation.theodolite_rig import theodolite_readings
 
-__all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
+__all__ = ["ValidationCase", "budget_agreement", "crosscal_budget_trials", "fringe_budget_trials",
            "polygon_budget_trials", "positioning_budget_trials", "run_validation", "theodolite_budget_trials"]
 
 
@@ -448,7 +450,48 @@ def uncertainty_cases() -> list[ValidationCase]:
     return cases
 
 
+def _crosscal_run(rig: CrossCalRig, mountings) -> tuple[object, np.ndarray, np.ndarray]:
+    rows = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""] for j, i, a, x in rig.rows(mountings)]
+    result = CROSSCAL.analyze(ReadingsSheet(CROSSCAL.columns, rows).parse(),
+                              CROSSCAL.default_settings)
+    e, d = rig.truth()
+    return result, e, d
+
+
+def crosscal_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+    """12-face full rosette, σ = 0.03″: (encoder error − truth) and u of each run."""
+    deviations, budgets = [], []
+    for _ in range(trials):
+        rig = CrossCalRig(12, {1: (0.8, 0.7), 2: (0.3, -0.3)}, rng.normal(0, 0.4, 12),
+                          noise_arcsec=0.03, drift_arcsec=0.05, rng=rng)
+        result, e, _ = _crosscal_run(rig, range(12))
+        deviations.append(result.solution.encoder_error_arcsec - e)
+        budgets.append(result.solution.encoder_error_u_arcsec)
+    return np.array(deviations), np.array(budgets)
+
+
+def crosscal_cases(trials: int) -> list[ValidationCase]:
+    w = QT_TR_NOOP("Cross-calibration (polygon + encoder)")
+    rig = CrossCalRig(12, {1: (0.8, 0.7), 2: (0.3, -0.3), 3: (0.1, 1.2)},
+                      np.random.default_rng(5).normal(0, 0.4, 12), rng=np.random.default_rng(6))
+    result, e, d = _crosscal_run(rig, range(12))
+    partial, _, _ = _crosscal_run(CrossCalRig(12, {1: (0.8, 0.7)}, np.zeros(12), noise_arcsec=0.03,
+                                              rng=np.random.default_rng(7)), (0, 6))
+    unseen = ", ".join(map(str, partial.solution.undetermined_encoder_harmonics))
+    return [
+        _at_most(w, QT_TR_NOOP("3-D simulation, full rosette of 12 (no noise): |encoder error − "
+                               "true error|"), EXACT_SIMULATION, 0.005,
+                 float(np.max(np.abs(result.solution.encoder_error_arcsec - e)))),
+        _at_most(w, QT_TR_NOOP("3-D simulation, full rosette of 12 (no noise): |face deviation − "
+                               "true deviation|"), EXACT_SIMULATION, 0.005,
+                 float(np.max(np.abs(result.solution.polygon_deviation_arcsec - d)))),
+        ValidationCase(w, QT_TR_NOOP("mountings 0 and 6 of 12 faces: harmonics left unseen"),
+                       HAND_COMPUTED, "2, 4, 6", unseen, unseen == "2, 4, 6"),
+        _agreement_case(w, crosscal_budget_trials, trials, 12),
+    ]
+
+
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
-            + positioning_cases(trials) + uncertainty_cases())
+            + positioning_cases(trials) + crosscal_cases(trials) + uncertainty_cases())
