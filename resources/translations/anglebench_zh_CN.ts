@@ -64,6 +64,10 @@
         <translation>E 残差</translation>
     </message>
     <message>
+        <source>Each mounting&apos;s drift, seen by its closure reading: fitted by least squares as a linear drift over the mounting and removed; or its closure spread linearly over the mounting and removed, as the polygon workbench does; or only reported</source>
+        <translation>各安装位置的漂移（由其闭合读数看出）：按最小二乘拟合为该安装位置内的线性漂移并扣除；或如多面棱体工作台那样将闭合差线性分配到该安装位置并扣除；或仅报告</translation>
+    </message>
+    <message>
         <source>Encoder: grating lines per revolution; errors in arcsec of shaft angle (one period = 1296000&quot;/L)</source>
         <translation>编码器：每转光栅线数；误差以轴角的角秒表示（一个周期 = 1296000&quot;/L）</translation>
     </message>
@@ -90,6 +94,10 @@
     <message>
         <source>FANUC pitch error compensation (parameters 3620–3625)</source>
         <translation>FANUC 螺距误差补偿（参数 3620–3625）</translation>
+    </message>
+    <message>
+        <source>Faces of the polygon (= the encoder&apos;s steps); 0: as many as the readings have</source>
+        <translation>多面棱体面数（= 编码器的步数）；0：按读数中的面数</translation>
     </message>
     <message>
         <source>Faces of the polygon; 0: as many as the first set has positions</source>
@@ -141,12 +149,200 @@
         <translation>信号参数辨识结果</translation>
     </message>
     <message>
+        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported.</source>
+        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。</translation>
+    </message>
+    <message>
+        <source>Reading scatter through the design</source>
+        <translation>读数分散性（经测量设计传递）</translation>
+    </message>
+    <message>
+        <source>σ = {sigma} of one reading ({how}), propagated exactly through the least-squares design of {mountings} mountings</source>
+        <translation>单次读数 σ = {sigma}（{how}），经 {mountings} 个安装位置的最小二乘设计严格传递</translation>
+    </message>
+    <message>
+        <source>from the residuals, ν = {nu}</source>
+        <translation>由残差求得，ν = {nu}</translation>
+    </message>
+    <message>
+        <source>stated</source>
+        <translation>给定值</translation>
+    </message>
+    <message>
+        <source>resolution {r} per reading, through the same design</source>
+        <translation>每次读数的分辨力 {r}，经同一设计传递</translation>
+    </message>
+    <message>
+        <source>no certificate: this design does not determine the {what} (harmonic(s) {orders} unseen); add a mounting</source>
+        <translation>不能出具证书：此测量设计不能确定{what}（第 {orders} 次谐波不可见）；请增加安装位置</translation>
+    </message>
+    <message>
+        <source>encoder&apos;s error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>face deviations</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Faces / encoder steps</source>
+        <translation>面数 / 编码器步数</translation>
+    </message>
+    <message>
+        <source>Mountings</source>
+        <translation>安装位置</translation>
+    </message>
+    <message>
+        <source>σ of one reading</source>
+        <translation>单次读数的 σ</translation>
+    </message>
+    <message>
+        <source>spread linearly over each mounting and removed</source>
+        <translation>在各安装位置内线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>set to its nominal steps</source>
+        <translation>置于标称步位</translation>
+    </message>
+    <message>
+        <source>read at each step</source>
+        <translation>每步读数</translation>
+    </message>
+    <message>
+        <source>Largest correlation encoder / polygon</source>
+        <translation>编码器与多面棱体结果的最大相关系数</translation>
+    </message>
+    <message>
+        <source>Mounting {mounting} closure</source>
+        <translation>安装位置 {mounting} 闭合差</translation>
+    </message>
+    <message>
         <source>Parameter</source>
         <translation>参数</translation>
     </message>
     <message>
         <source>Value</source>
         <translation>量值</translation>
+    </message>
+    <message>
+        <source>Encoder error at its steps</source>
+        <translation>编码器各步误差</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>From the start (°)</source>
+        <translation>自起点 (°)</translation>
+    </message>
+    <message>
+        <source>Error (&quot;)</source>
+        <translation>误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Error = indicated − true angle, about its mean over the full turn (the steps of a full turn close at 360°).</source>
+        <translation>误差 = 示值 − 真角度，以整周平均值为零（整周各步在 360° 处封闭）。</translation>
+    </message>
+    <message>
+        <source>step {k}</source>
+        <translation>第 {k} 步</translation>
+    </message>
+    <message>
+        <source>encoder error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>误差</translation>
+    </message>
+    <message>
+        <source>JJF 1115 division error</source>
+        <translation>JJF 1115 分度误差</translation>
+    </message>
+    <message>
+        <source>JJF 1115 repeatability (largest s over the steps)</source>
+        <translation>JJF 1115 重复性（各步 s 的最大值）</translation>
+    </message>
+    <message>
+        <source>the mountings as repeated runs</source>
+        <translation>各安装位置视为重复测量</translation>
+    </message>
+    <message>
+        <source>ISO 230-2 (unidirectional)</source>
+        <translation>ISO 230-2（单向）</translation>
+    </message>
+    <message>
+        <source>the mountings as repeated runs; deviation = −error</source>
+        <translation>各安装位置视为重复测量；偏差 = −误差</translation>
+    </message>
+    <message>
+        <source>Face deviations</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>Deviation (&quot;)</source>
+        <translation>偏差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>From face 1 (&quot;)</source>
+        <translation>相对第 1 面 (&quot;)</translation>
+    </message>
+    <message>
+        <source>U from face 1 (&quot;)</source>
+        <translation>相对第 1 面的 U (&quot;)</translation>
+    </message>
+    <message>
+        <source>Deviation = the face&apos;s angle from face 1 minus its nominal, stated about the mean over the faces (the faces close at 360°); the last two columns state it from face 1.</source>
+        <translation>偏差 = 该面相对第 1 面的角度减去其标称值，以各面平均值为零（各面在 360° 处封闭）；最后两列给出相对第 1 面的值。</translation>
+    </message>
+    <message>
+        <source>face {k}</source>
+        <translation>第 {k} 面</translation>
+    </message>
+    <message>
+        <source>face deviation</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>各步</translation>
+    </message>
+    <message>
+        <source>faces</source>
+        <translation>各面</translation>
+    </message>
+    <message>
+        <source>No calibrated reference enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator reads near its null, where its scale error does not matter.</source>
+        <translation>本结果未使用任何已校准的参考标准：多面棱体与编码器依圆周封闭原理相互校准。自准直仪在零位附近读数，其示值比例误差可忽略。</translation>
+    </message>
+    <message>
+        <source>The {other} was calibrated in the same run; the largest correlation between its results and these is {r}.</source>
+        <translation>{other}在同一次测量中一并校准；其结果与本结果之间的最大相关系数为 {r}。</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>多面棱体</translation>
+    </message>
+    <message>
+        <source>encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Cross-calibration (polygon + encoder)</source>
+        <translation>互校（多面棱体 + 编码器）</translation>
     </message>
     <message>
         <source>Sample</source>
@@ -684,6 +880,18 @@
     <message>
         <source>compensation table loaded into the rig&apos;s controller: largest |mean deviation| left</source>
         <translation>补偿表载入仿真装置的控制器后：剩余 |平均偏差| 的最大值</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 (no noise): |encoder error − true error|</source>
+        <translation>三维仿真，12 个安装位置全组合（无噪声）：|编码器误差 − 真误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 (no noise): |face deviation − true deviation|</source>
+        <translation>三维仿真，12 个安装位置全组合（无噪声）：|面偏差 − 真偏差|</translation>
+    </message>
+    <message>
+        <source>mountings 0 and 6 of 12 faces: harmonics left unseen</source>
+        <translation>12 面棱体安装位置 0 和 6：不可见的谐波</translation>
     </message>
     <message>
         <source>R_down</source>
@@ -1235,8 +1443,68 @@
         <translation>原始误差和修正后误差</translation>
     </message>
     <message>
+        <source>Encoder error at its steps with U</source>
+        <translation>编码器各步误差及其 U</translation>
+    </message>
+    <message>
+        <source>encoder step (°)</source>
+        <translation>编码器步位 (°)</translation>
+    </message>
+    <message>
         <source>error (&quot;)</source>
         <translation>误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>encoder error ± U</source>
+        <translation>编码器误差 ± U</translation>
+    </message>
+    <message>
+        <source>Polygon face deviations with U</source>
+        <translation>多面棱体面偏差及其 U</translation>
+    </message>
+    <message>
+        <source>face</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>deviation (&quot;)</source>
+        <translation>偏差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>face deviation ± U</source>
+        <translation>面偏差 ± U</translation>
+    </message>
+    <message>
+        <source>residual per mounting</source>
+        <translation>各安装位置残差</translation>
+    </message>
+    <message>
+        <source>outlier (&gt; 3σ)</source>
+        <translation>异常值（&gt; 3σ）</translation>
+    </message>
+    <message>
+        <source>Residuals per mounting and face</source>
+        <translation>各安装位置、各面的残差</translation>
+    </message>
+    <message>
+        <source>closure (x′ − x) − (a′ − a)</source>
+        <translation>闭合差 (x′ − x) − (a′ − a)</translation>
+    </message>
+    <message>
+        <source>drift fitted</source>
+        <translation>拟合漂移</translation>
+    </message>
+    <message>
+        <source>Closure per mounting</source>
+        <translation>各安装位置闭合差</translation>
+    </message>
+    <message>
+        <source>mounting</source>
+        <translation>安装位置</translation>
+    </message>
+    <message>
+        <source>closure (&quot;)</source>
+        <translation>闭合差 (&quot;)</translation>
     </message>
     <message>
         <source>raw error e (mean)</source>
@@ -3476,8 +3744,73 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>谐波：1 次（偏心）{first}，2 次（椭圆度）{second}</translation>
     </message>
     <message>
+        <source>row {row}: {reason}</source>
+        <extracomment>a residual beyond this many σ is marked as an outlier</extracomment>
+        <translation>第 {row} 行：{reason}</translation>
+    </message>
+    <message>
+        <source>The mountings {mountings} cannot separate harmonic(s) {encoder} of the encoder&apos;s error and {polygon} of the face deviations: those results are withheld. Add a mounting that is not a multiple of the others&apos; spacing.</source>
+        <translation>安装位置 {mountings} 不能分离编码器误差的第 {encoder} 次谐波和面偏差的第 {polygon} 次谐波：这些结果不予给出。请增加一个不是其他安装间隔整数倍的安装位置。</translation>
+    </message>
+    <message>
+        <source>{count} reading(s) lie beyond {sigmas}σ of the fit (rows {rows}): check them</source>
+        <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
+    </message>
+    <message>
+        <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>
+        <translation>{faces} 面棱体装于编码器上，{count} 个安装位置（{mountings}）；单次读数 σ = {sigma}（ν = {nu}），k = {k}</translation>
+    </message>
+    <message>
+        <source>Encoder set to its nominal steps (no encoder readings).</source>
+        <translation>编码器置于标称步位（无编码器读数）。</translation>
+    </message>
+    <message>
+        <source>Encoder error {span} (peak-to-peak {ptp}), U up to {u}</source>
+        <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
+    </message>
+    <message>
+        <source>Encoder error NOT determined: harmonic(s) {orders} unseen by this design</source>
+        <translation>编码器误差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
+    </message>
+    <message>
+        <source>Face deviations {span} (about their mean), U up to {u}</source>
+        <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
+    </message>
+    <message>
+        <source>Face deviations NOT determined: harmonic(s) {orders} unseen by this design</source>
+        <translation>面偏差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
+    </message>
+    <message>
+        <source>Closures {count} of {mountings}: {low} … {high}; drift removed</source>
+        <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移已扣除</translation>
+    </message>
+    <message>
+        <source>Closures {count} of {mountings}: {low} … {high}; drift reported, not removed</source>
+        <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移仅报告，未扣除</translation>
+    </message>
+    <message>
+        <source>No closure readings: drift not measured</source>
+        <translation>无闭合读数：未测漂移</translation>
+    </message>
+    <message>
+        <source>Largest correlation between an encoder error and a face deviation: {r}</source>
+        <translation>编码器误差与面偏差之间的最大相关系数：{r}</translation>
+    </message>
+    <message>
         <source>JJF 1115: division error {value}</source>
         <translation>JJF 1115：分度误差 {value}</translation>
+    </message>
+    <message>
+        <source>This design cannot separate every harmonic: the undetermined results are withheld (see the warnings).</source>
+        <translation>此测量设计不能分离全部谐波：未能确定的结果不予给出（见警告）。</translation>
+    </message>
+    <message>
+        <source>Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations {low} … {high} (U ≤ {ud})</source>
+        <translation>编码器误差峰峰值 {ptp}（U ≤ {ue}）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
+    </message>
+    <message>
+        <source>the face deviations are not determined by this design: nothing to send</source>
+        <translation>此测量设计不能确定面偏差：无可发送的内容</translation>
     </message>
     <message>
         <source>, repeatability {value}</source>
@@ -4995,6 +5328,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>自准直仪绕其视轴的实测滚转 ρ：水平读数随竖直读数单位变化的变化量（使某一面俯仰并观察两个读数），二者同增为 +；给出其不确定度时予以修正</translation>
     </message>
     <message>
+        <source>Standard deviation of one reading when known (the autocollimator&apos;s and the encoder&apos;s noise together); 0: taken from the residuals of the fit, with its degrees of freedom</source>
+        <translation>已知时给出单次读数的标准偏差（自准直仪与编码器噪声合计）；0：由拟合残差求得，并给出其自由度</translation>
+    </message>
+    <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
         <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
     </message>
@@ -5003,8 +5340,44 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
     </message>
     <message>
+        <source>The frame the tilt correction is made in when vertical readings are given, as in the polygon workbench: the autocollimator levelled with the rotary axis, or its vertical along the polygon&apos;s axis</source>
+        <translation>给出垂直读数时倾斜修正所采用的坐标系，与多面棱体工作台相同：自准直仪与回转轴调平，或其垂直方向沿多面棱体轴线</translation>
+    </message>
+    <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>Which instrument the certificate is issued for: the polygon&apos;s face deviations or the encoder&apos;s error at its steps</source>
+        <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
+    </message>
+    <message>
+        <source>certificate of</source>
+        <translation>证书对象</translation>
+    </message>
+    <message>
+        <source>closure</source>
+        <translation>闭合</translation>
+    </message>
+    <message>
+        <source>encoder error peak-to-peak</source>
+        <translation>编码器误差峰峰值</translation>
+    </message>
+    <message>
+        <source>encoder step</source>
+        <translation>编码器步位</translation>
+    </message>
+    <message>
+        <source>face deviation peak-to-peak</source>
+        <translation>面偏差峰峰值</translation>
+    </message>
+    <message>
+        <source>fit linearly, remove</source>
+        <translation>线性拟合并扣除</translation>
+    </message>
+    <message>
+        <source>from the residuals</source>
+        <translation>由残差求得</translation>
     </message>
     <message>
         <source>grade 1: ±0.25&quot;</source>
@@ -5035,8 +5408,24 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>7 级：±30&quot;</translation>
     </message>
     <message>
+        <source>report it (not removed)</source>
+        <translation>仅报告（不扣除）</translation>
+    </message>
+    <message>
+        <source>the encoder (error at its steps)</source>
+        <translation>编码器（各步误差）</translation>
+    </message>
+    <message>
+        <source>the polygon (face deviations)</source>
+        <translation>多面棱体（面偏差）</translation>
+    </message>
+    <message>
         <source>u(AC roll measured)</source>
         <translation>u(自准直仪滚转实测值)</translation>
+    </message>
+    <message>
+        <source>σ of a reading</source>
+        <translation>单次读数 σ</translation>
     </message>
     <message>
         <source>autocollimator set-up</source>
@@ -6072,6 +6461,103 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>Not compared with the log after compensation: {reason}</source>
         <translation>未与补偿后记录比较：{reason}</translation>
+    </message>
+    <message>
+        <source>The polygon&apos;s face deviations (from face 1, with U)</source>
+        <translation>多面棱体面偏差（相对第 1 面，含 U）</translation>
+    </message>
+    <message>
+        <source>no readings</source>
+        <extracomment>autocollimator readings beyond this are no readings of a polygon&apos;s faces a matrix&apos;s last column named so holds each mounting&apos;s closure reading (its first face)</extracomment>
+        <translation>无读数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{key}&apos;: {value}&quot; is beyond ±{limit}&quot; and cannot be an autocollimator reading of a face</source>
+        <translation>第 {row} 行，列“{key}”：{value}&quot; 超出 ±{limit}&quot;，不可能是自准直仪对棱体面的读数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;encoder_deg&apos;: the encoder reading is given in some rows and blank in others; give it in every row, or leave the column blank when the encoder was set to its nominal steps</source>
+        <translation>第 {row} 行，列“encoder_deg”：编码器读数有的行有、有的行空；请每行都填，或在编码器置于标称步位时整列留空</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;ac_y_arcsec&apos;: a vertical reading is missing (give one in every row, or none)</source>
+        <translation>第 {row} 行，列“ac_y_arcsec”：缺少垂直读数（每行都填，或都不填）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} again, after mounting {other}: keep each mounting&apos;s readings in one block</source>
+        <translation>第 {row} 行：在安装位置 {other} 之后又出现安装位置 {mounting}：每个安装位置的读数须连在一起</translation>
+    </message>
+    <message>
+        <source>{faces} faces: a polygon has at least 3</source>
+        <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;mounting&apos;: mounting {mounting} is outside 0…{last} (a mounting is how many faces the polygon was turned, for {faces} faces)</source>
+        <translation>第 {row} 行，列“mounting”：安装位置 {mounting} 超出 0…{last}（安装位置是多面棱体转过的面数，共 {faces} 面）</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;position&apos;: face {face} is outside 1…{faces} (the face count is {faces})</source>
+        <translation>第 {row} 行，列“position”：面 {face} 超出 1…{faces}（面数为 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} is read again (row {first}); only the closure reading, last in its mounting, may repeat the first face</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的面 {face} 重复读数（第 {first} 行）；只有该安装位置最后的闭合读数可重复第一个面</translation>
+    </message>
+    <message>
+        <source>rows {row}–{last}: mounting {mounting} reads {read} faces, the face count is {faces}: face(s) {missing} missing</source>
+        <translation>第 {row}–{last} 行：安装位置 {mounting} 读了 {read} 个面，面数为 {faces}：缺少面 {missing}</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} starts at face {face}; turned {mounting} face(s), the polygon has face {start} at the encoder&apos;s first step, where every mounting starts</source>
+        <translation>第 {row} 行：安装位置 {mounting} 从面 {face} 开始；转过 {mounting} 个面后，位于编码器第一步（各安装位置的起点）的应是面 {start}</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: one mounting does not connect the faces with the encoder&apos;s steps; turn the polygon on the shaft and read at least one more mounting</source>
+        <translation>只有安装位置 {mounting}：一个安装位置不能把各面与编码器各步联系起来；请在轴上转动多面棱体，至少再测一个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} starts with the encoder at {reading}°, {off}° from where mounting {first} started ({start}°): every mounting starts from the same encoder position</source>
+        <translation>第 {row} 行：安装位置 {mounting} 开始时编码器读数为 {reading}°，与安装位置 {first} 的起点（{start}°）相差 {off}°：各安装位置须从同一编码器位置开始</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;encoder_deg&apos;: {reading}° is {off}° from step {step} ({nominal}°) where mounting {mounting} reads face {face}: a wrong mounting or face number, or a mis-typed reading</source>
+        <translation>第 {row} 行，列“encoder_deg”：{reading}° 与第 {step} 步（{nominal}°）相差 {off}°，此处安装位置 {mounting} 读面 {face}：安装位置或面号有误，或读数录入错误</translation>
+    </message>
+    <message>
+        <source>Cannot save the face deviations</source>
+        <translation>无法保存面偏差</translation>
+    </message>
+    <message>
+        <source>{what} written: load them in the polygon workbench with &apos;Load polygon certificate…&apos;</source>
+        <translation>{what}已写出：请在多面棱体工作台用“载入多面棱体证书…”载入</translation>
+    </message>
+    <message>
+        <source>Save face deviations for the polygon workbench…</source>
+        <translation>保存面偏差供多面棱体工作台使用…</translation>
+    </message>
+    <message>
+        <source>The polygon&apos;s face deviations from face 1 with their U, as a file the polygon workbench loads with &apos;Load polygon certificate…&apos;</source>
+        <translation>多面棱体相对第 1 面的面偏差及其 U，写成多面棱体工作台可用“载入多面棱体证书…”载入的文件</translation>
+    </message>
+    <message>
+        <source>Encoder error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>Residuals</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <source>Closure</source>
+        <translation>闭合差</translation>
+    </message>
+    <message>
+        <source>Save face deviations</source>
+        <translation>保存面偏差</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
     </message>
 </context>
 </TS>
