@@ -1,7 +1,8 @@
 """Cross-calibration of a polygon and an encoder as a workbench: readings columns,
 settings, the analysis (models/crosscal/solve.py), JSON and summary.
 
-The workbench is declared here and registered by one line in models/registry.py.
+The workbench is declared here (:class:`CrossCal`) and registered by one line in
+models/registry.py.
 """
 
 from __future__ import annotations
@@ -14,12 +15,19 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
+from models.crosscal import KEY, TITLE
 from models.crosscal.readings import COLUMNS, CrossCalReadings, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
 from models.uncertainty.iso230 import iso230_evaluate
+from models.workbench import (
+    SIGN_CONVENTION,
+    IssuesCertificates,
+    ShowsHeadline,
+    Workbench,
+    WritesCorrectionTable,
+)
 
 __all__ = ["CROSSCAL", "CrossCalResult", "analyze", "polygon_deviation_rows", "summary", "to_json"]
 
@@ -292,41 +300,41 @@ def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
     return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
 
 
-def _certificate(result, metadata, source_name="", method_reference=""):
-    from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
+class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "crosscal_sample.csv"
+    method_reference = ("Kinnane M. et al., Metrologia 52 (2015) 244; Estler W. T., Uncertainty "
+                        "analysis for angle calibrations using circle closure, J. Res. NIST 103 "
+                        "(1998) 141")
+    presenter = "widgets.crosscal.presenter:CrossCalPresenter"
+    nominal_column = "position"
+    entry_column = "ac_x_arcsec"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    verdict = staticmethod(verdict)
 
-    return crosscal_certificate(result, metadata, source_name, method_reference)
+    def certificate(self, result, metadata, source_name=""):
+        from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
+
+        return crosscal_certificate(result, metadata, source_name, self.method_reference)
+
+    def correction_table(self, result, settings, path) -> str:
+        """The polygon's deviations as the polygon workbench reads a certificate (--table,
+        and the window's "Save face deviations for the polygon workbench")."""
+        from models.crosscal.export import write_polygon_reference  # imports this module
+
+        return write_polygon_reference(result, settings, path)
+
+    def headline(self, r):
+        s = r.solution
+        return {"encoder error peak-to-peak (\")": float(np.ptp(s.encoder_error_arcsec))
+                if s.encoder_error_arcsec is not None else float("nan"),
+                "face deviation peak-to-peak (\")": float(np.ptp(s.polygon_deviation_arcsec))
+                if s.polygon_deviation_arcsec is not None else float("nan")}
 
 
-def _polygon_reference(result, settings, path) -> str:
-    from models.crosscal.export import write_polygon_reference  # imports this module
-
-    return write_polygon_reference(result, settings, path)
-
-
-CROSSCAL = AnalysisKind(
-    key="crosscal",
-    title="Cross-calibration (polygon + encoder)",
-    columns=COLUMNS,
-    parameters=PARAMETERS,
-    analyze=analyze,
-    to_json=to_json,
-    summary=summary,
-    sample_file="crosscal_sample.csv",
-    method_reference="Kinnane M. et al., Metrologia 52 (2015) 244; Estler W. T., Uncertainty "
-                     "analysis for angle calibrations using circle closure, J. Res. NIST 103 "
-                     "(1998) 141",
-    certificate=_certificate,
-    presenter="widgets.crosscal.presenter:CrossCalPresenter",
-    verdict=verdict,
-    # the polygon's deviations as the polygon workbench reads a certificate (--table, and
-    # the window's "Save face deviations for the polygon workbench")
-    correction_table=_polygon_reference,
-    headline=lambda r: {
-        "encoder error peak-to-peak (\")": float(np.ptp(r.solution.encoder_error_arcsec))
-        if r.solution.encoder_error_arcsec is not None else float("nan"),
-        "face deviation peak-to-peak (\")": float(np.ptp(r.solution.polygon_deviation_arcsec))
-        if r.solution.polygon_deviation_arcsec is not None else float("nan")},
-    nominal_column="position",
-    entry_column="ac_x_arcsec",
-)
+CROSSCAL = CrossCal()

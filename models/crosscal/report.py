@@ -18,6 +18,7 @@ import numpy as np
 
 from models.certificate.document import CertificateDocument, Table, decision_rows
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.crosscal import KEY, TITLE
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
@@ -173,8 +174,10 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                               else QT_TR_NOOP("encoder")),
                 r=f"{result.cross_correlation():.2f}"))
     return CertificateDocument(
-        "crosscal", QT_TR_NOOP("Cross-calibration (polygon + encoder)"), metadata, source_name,
-        METHOD, method_reference, parameters, results, statistics, budget,
-        message(point, k=worst if item == "encoder" else worst + 1), conformity,
-        metadata.tolerance_arcsec, tuple(p for p in plots if p is not None),
-        tuple(result.warnings), point_columns=point_columns, statements=statements)
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget,
+        budget_point=message(point, k=worst if item == "encoder" else worst + 1),
+        conformity=conformity, tolerance_arcsec=metadata.tolerance_arcsec,
+        plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
+        point_columns=point_columns, statements=statements)
