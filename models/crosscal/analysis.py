@@ -19,7 +19,7 @@ from models.crosscal import KEY, TITLE
 from models.crosscal.readings import COLUMNS, CrossCalReadings, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
-from models.parameters import Parameter
+from models.parameters import Parameter, SettingsError
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
@@ -70,9 +70,10 @@ class CrossCalResult:
     readings: CrossCalReadings
     solution: CrossCalibration
     closure_arcsec: np.ndarray  # per mounting, (x′ − x) − (a′ − a); NaN without closure
-    spread_drift: bool
+    drift_removed: bool  # "fit" or "spread": the drift was removed
     certificate_of: str
     warnings: list[str] = field(default_factory=list)
+    drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
 
     @property
     def faces(self) -> int:
@@ -134,11 +135,14 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     readings = read_crosscal(parsed, int(settings.get("faces", 0) or 0))
     noise = float(settings.get("noise_arcsec", 0.0) or 0.0)
     mode = str(settings.get("closure_drift", "fit"))
-    spread = mode != "report"
+    removed = mode != "report"
     extra = {"drift": mode, "ac_alignment": settings.get("ac_alignment", "levelled"),
              "ac_y_arcsec": readings.ac_y_arcsec}
     accepted = inspect.signature(solve_crosscal).parameters
     extra = {k: v for k, v in extra.items() if k in accepted}  # the model's newer keywords
+    if mode == "spread" and "drift" not in extra:
+        raise SettingsError(message(QT_TR_NOOP("closure drift 'spread' is not available in this "
+                                               "version: choose 'fit' or 'report'")))
     try:
         solution = solve_crosscal(readings.mounting, readings.position, readings.encoder_deg,
                                   readings.ac_x_arcsec, faces=readings.faces,
@@ -146,6 +150,9 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     except CrossCalibrationInputError as exc:
         raise ValueError(_sheet_row(reason_of(exc), exc.row, readings)) from None
     warnings: list[str] = list(getattr(solution, "warnings", ()))
+    if readings.ac_y_arcsec is not None and "ac_y_arcsec" not in extra:
+        warnings.append(message(QT_TR_NOOP("The vertical readings are not used by this version: "
+                                           "no tilt is fitted or corrected.")))
     if not solution.separable and not hasattr(solution, "undetermined_text"):
         warnings.append(message(QT_TR_NOOP(
             "The mountings {mountings} cannot separate harmonic(s) {encoder} of the encoder's "
@@ -154,8 +161,8 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
             mountings=", ".join(map(str, solution.mountings)),
             encoder=", ".join(map(str, solution.undetermined_encoder_harmonics)) or "—",
             polygon=", ".join(map(str, solution.undetermined_polygon_harmonics)) or "—"))
-    result = CrossCalResult(readings, solution, readings.closure_arcsec(), spread,
-                            str(settings.get("certificate_of", "polygon")), warnings)
+    result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
+                            str(settings.get("certificate_of", "polygon")), warnings, mode)
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "
@@ -202,7 +209,7 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "undetermined_polygon_harmonics": list(s.undetermined_polygon_harmonics),
         "largest_correlation_encoder_polygon": result.cross_correlation(),
         "closure_arcsec": _list(result.closure_arcsec),
-        "closure_drift_spread": result.spread_drift,
+        "closure_drift": result.drift_mode,
         "drift_arcsec": _list(s.drift_arcsec),
         "residual_rms_arcsec": float(np.sqrt(np.mean(s.residuals_arcsec**2))),
         "outlier_rows": [result.readings.row(i) for i in result.outliers],
@@ -256,7 +263,7 @@ def summary(result: CrossCalResult) -> str:
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
     if closures.size:
         out.append(message(QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "
-                                      "removed") if result.spread_drift else
+                                      "removed") if result.drift_removed else
                            QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "
                                       "reported, not removed"),
                            count=int(closures.size), mountings=len(s.mountings),

@@ -37,6 +37,11 @@ METHOD = QT_TR_NOOP(
     "mountings chosen cannot separate are named and not reported.")
 
 
+DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least squares and removed"),
+               "spread": QT_TR_NOOP("spread linearly over each mounting and removed"),
+               "report": QT_TR_NOOP("reported, not removed")}
+
+
 def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
     """(values, u of one reading's scatter per point, what) of the certificate's item."""
     s = result.solution
@@ -88,9 +93,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
               (QT_TR_NOOP("Mountings"), ", ".join(map(str, s.mountings)), ""),
               (QT_TR_NOOP("σ of one reading"), f"{s.sigma_arcsec:.4f}\"",
                "ν = ∞" if not math.isfinite(s.dof) else f"ν = {s.dof:.0f}"),
-              (QT_TR_NOOP("Closure drift"),
-               QT_TR_NOOP("spread linearly over each mounting and removed") if result.spread_drift
-               else QT_TR_NOOP("reported, not removed"), ""),
+              (QT_TR_NOOP("Closure drift"), DRIFT_WORDS[result.drift_mode], ""),
               (QT_TR_NOOP("Encoder"),
                QT_TR_NOOP("set to its nominal steps") if result.readings.nominal_encoder
                else QT_TR_NOOP("read at each step"), ""),

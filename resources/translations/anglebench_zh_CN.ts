@@ -201,6 +201,10 @@
         <translation>在各安装位置内线性分配并扣除</translation>
     </message>
     <message>
+        <source>fitted linearly over each mounting by least squares and removed</source>
+        <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
+    </message>
+    <message>
         <source>Encoder</source>
         <translation>编码器</translation>
     </message>
@@ -3422,10 +3426,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
     </message>
     <message>
-        <source>Positioning test of an axis</source>
-        <translation>轴线定位检测</translation>
-    </message>
-    <message>
         <source>target {target} ({arrow})</source>
         <translation>目标位置 {target}（{arrow}）</translation>
     </message>
@@ -3747,6 +3747,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>row {row}: {reason}</source>
         <extracomment>a residual beyond this many σ is marked as an outlier</extracomment>
         <translation>第 {row} 行：{reason}</translation>
+    </message>
+    <message>
+        <source>closure drift &apos;spread&apos; is not available in this version: choose &apos;fit&apos; or &apos;report&apos;</source>
+        <translation>本版本不提供闭合漂移“线性分配”：请选择“拟合”或“报告”</translation>
+    </message>
+    <message>
+        <source>The vertical readings are not used by this version: no tilt is fitted or corrected.</source>
+        <translation>本版本不使用垂直读数：不拟合也不修正倾斜。</translation>
     </message>
     <message>
         <source>The mountings {mountings} cannot separate harmonic(s) {encoder} of the encoder&apos;s error and {polygon} of the face deviations: those results are withheld. Add a mounting that is not a multiple of the others&apos; spacing.</source>
@@ -4190,10 +4198,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
-    </message>
-    <message>
-        <source>--zenith applies to theodolite, not {kind}</source>
-        <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
     </message>
     <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
@@ -6191,7 +6195,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the other run has no corrected curve to draw</source>
-        <extracomment>workbench → &quot;module:function&quot; giving the figure whose &quot;corrected&quot; series is overlaid</extracomment>
         <translation>另一次测量没有可绘制的修正后曲线</translation>
     </message>
     <message>
