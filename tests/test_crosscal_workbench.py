@@ -352,3 +352,34 @@ def test_closure_drift_modes_are_what_they_say(samples_dir):
     else:  # the model cannot spread it yet: refused, never reported as removed
         with pytest.raises(SettingsError, match="'spread' is not available"):
             KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": "spread"})
+
+
+def test_an_outlier_is_marked_on_the_residual_map_and_named_by_row(samples_dir):
+    from models.crosscal.plots import residual_figure
+
+    rows = _sample_rows(samples_dir)
+    rows[40][3] = f"{float(rows[40][3]) + 0.5:.3f}"  # a mis-read autocollimator: row 41
+    result = KIND.analyze(parse(rows), KIND.default_settings)
+    assert [result.readings.row(i) for i in result.outliers] == [41]
+    marked = [s for s in residual_figure(result).series if s.color == (192, 57, 43)]
+    assert len(marked) == 1 and marked[0].x.tolist() == [float(rows[40][1])]
+    assert any("rows 41" in w for w in result.warnings)
+    assert KIND.to_json(result)["outlier_rows"] == [41]
+
+
+def test_an_xlsx_matrix_is_imported(mocked, tmp_path):
+    import openpyxl
+
+    presenter, view = mocked
+    n = 4
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["安装位置", *range(1, n + 1), "closure"])
+    rng = np.random.default_rng(9)
+    for j in range(n):
+        sheet.append([j, *np.round(rng.normal(0, 2, n + 1), 2).tolist()])
+    book.save(tmp_path / "rosette.xlsx")
+    presenter.import_file(tmp_path / "rosette.xlsx")
+    assert presenter.sheet.row_count == n * (n + 1)
+    assert presenter.result is not None and presenter.result.faces == n
+    view.ask_column_mapping.assert_not_called()

@@ -219,6 +219,8 @@ def matrix_rows(table: RawTable) -> list[list[str]] | None:
     (face j + 1 first), the closure reading last. None when the table is no such matrix.
     The encoder column stays blank: the encoder was set to its nominal steps."""
     header = [h.strip() for h in table.header or []]
+    while header and not header[-1]:  # a workbook's row is as wide as its widest
+        header.pop()
     if len(header) < 4:
         return None
     closure = header[-1].lower() in CLOSURE_HEADERS
