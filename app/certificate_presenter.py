@@ -2,10 +2,10 @@
 export of the certificate through the register (which allocates its number and keeps
 the record), amendments and replacements, and the export of the results.
 
-A presenter with no widgets: it asks its view (the main window, through the calls
-of :class:`CertificateView`) for the details, for a file name, and to tell the user
-something; it keeps the details in the project's metadata and the lab's defaults
-in the settings store. Tested with a mock view, no window.
+A presenter with no widgets: it asks its view (the calls of :class:`CertificateView`;
+in the window, app/certificate_dialogs.py) for the details, for a file name, and to
+tell the user something; it keeps the details in the project's metadata and the lab's
+defaults in the settings store. Tested with a mock view, no window.
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ class PendingRevision:
 
 
 class CertificateView(Protocol):
-    """What the certificate presenter asks of the window."""
+    """What the certificate presenter asks of the window (app/certificate_dialogs.py)."""
 
     def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
                                  raw: dict) -> CertificateMetadata | None:

@@ -86,7 +86,7 @@ def register_picture(scratch: Path) -> Path:
     QApplication.processEvents()
     out = HERE / "register.png"
     dialog.grab().save(str(out))
-    window.recovery.release()
+    window.projects.recovery.release()
     return out
 
 

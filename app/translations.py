@@ -79,11 +79,11 @@ def declared_texts() -> list[str]:
         window.show_register()
         from widgets.certificate_dialog import CertificateDialog
 
-        CertificateDialog(window.certificate_metadata("polygon"), window).deleteLater()
+        CertificateDialog(window.certificates.details("polygon"), window).deleteLater()
         app.processEvents()
         for presenter in window.presenters:
             presenter.mark_saved()  # nothing to ask about on closing
-        window.recovery.discard()
+        window.projects.recovery.discard()
         window.close()
         window.deleteLater()
     if register is None:

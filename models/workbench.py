@@ -85,6 +85,13 @@ class Workbench(ABC):
         """The checks across settings (SettingsError naming the key); each setting alone
         is checked by its declaration."""
 
+    def error_unit(self, settings: Mapping[str, Any]) -> str:
+        """The unit of the errors this workbench finds with ``settings`` (a key of
+        models.quantity.UNITS): a certificate's tolerance, resolution and standards'
+        uncertainties are converted to it, and a project file of schema 1, which wrote
+        them as bare numbers in it, is read in it."""
+        return "arcsec"
+
     def __repr__(self) -> str:
         return f"<workbench {self.key}>"
 

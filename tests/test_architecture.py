@@ -97,7 +97,7 @@ def test_every_registered_workbench_is_complete(key):
 
 @pytest.mark.parametrize("path", [f"widgets/{k}/presenter.py" for k in WORKBENCHES]
                          + ["widgets/workbench_presenter.py", "app/certificate_presenter.py",
-                            "app/register_presenter.py"])
+                            "app/register_presenter.py", "app/project_presenter.py"])
 def test_presenters_hold_no_widgets_and_open_no_dialogs(path):
     """A presenter decides and asks its view; it builds no widget, draws nothing itself."""
     bad = {m for m in imports(ROOT / path) if m.startswith(("PySide6.QtWidgets", "pyqtgraph"))}

@@ -30,7 +30,7 @@ META = CertificateMetadata.from_dict({
     "item_description": "Encoder", "item_serial": "SN-1", "calibration_date": "2026-11-20",
     "issue_date": "2026-11-24", "created": "2026-11-24T10:00:00", "operator": "Wang",
     "standards": [{"description": "Autocollimator", "certificate_no": "NIM-2026-0212",
-                   "uncertainty_arcsec": 0.1}]})
+                   "uncertainty": 0.1}]})
 
 
 #: the fringe inputs the signals cannot show (a 16-bit ADC over ±10 V, its calibration)
@@ -65,16 +65,16 @@ def test_coverage_factor_follows_the_effective_degrees_of_freedom():
     assert budget.coverage_factor == pytest.approx(k) and k > 2.2
     flat = _flat(document)
     assert f"k = {k:.2f}" in flat and "95.45 %" in flat
-    assert document.expanded_uncertainty_arcsec == pytest.approx(
-        float(np.max(budget.coverage_factors * budget.combined_arcsec)))
+    assert document.expanded_uncertainty == pytest.approx(
+        float(np.max(budget.coverage_factors * budget.combined)))
 
 
 # 4. fringe conformity on the as-found error -----------------------------------------------
 def test_fringe_conformity_is_on_the_error_as_found():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
-    meta = replace(META, tolerance_arcsec=0.5, decision_quantity="points")
+    meta = replace(META, tolerance=0.5, decision_quantity="points")
     document = kind.certificate_document(result, meta)
-    assert document.conformity.value_arcsec > 0.4  # the as-found error, not the compensated 0.02"
+    assert document.conformity.value > 0.4  # the as-found error, not the compensated 0.02"
     flat = _flat(document)
     assert "as-found interpolation error" in flat or "as found" in flat
     assert "is not the item's unless the table is loaded" in flat
@@ -94,7 +94,7 @@ def test_fringe_as_left_only_with_the_loaded_tables_checksum():
 def test_17025_statements_on_every_certificate(key):
     settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else {}
     kind, result = _sample(key, settings)
-    meta = replace(META, tolerance_arcsec=None if key == "polygon" else 2.0)
+    meta = replace(META, tolerance=None if key == "polygon" else 2.0)
     flat = _flat(kind.certificate_document(result, meta))
     assert flat.count("Calibration certificate") >= 1 and "Test certificate" not in flat
     assert "traceable to the SI unit of plane angle" in flat and "NIM-2026-0212" in flat
@@ -132,12 +132,12 @@ def test_repeats_of_the_reference_angle_carry_their_uncertainty():
     budget = theodolite_budget(result, META)
     at_zero = np.nonzero(theta == 0.0)[0]
     assert list(at_zero) == [4, 13]
-    assert budget.expanded_arcsec[4] == 0.0  # the zeroing reading itself
-    assert budget.expanded_arcsec[13] > 0.3  # a later reading at θ = 0 is a reading like any
+    assert budget.expanded[4] == 0.0  # the zeroing reading itself
+    assert budget.expanded[13] > 0.3  # a later reading at θ = 0 is a reading like any
 
 
 @pytest.mark.parametrize("field, value, message", [
-    ("standards", [{"description": "x", "uncertainty_arcsec": 1e300}], "must be 0 to 3600"),
+    ("standards", [{"description": "x", "uncertainty": 1e300}], "must be 0 to 3600"),
     ("item_resolution_arcsec", -5, "must be 0 to 3600"),
     ("coverage_probability_pct", 120, "50 to 99.9"),
     ("decision_quantity", "mean", "must be one of half_range, points"),

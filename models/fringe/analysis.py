@@ -533,6 +533,13 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
     def certificate(self, result, metadata, source_name=""):
         return fringe_certificate(result, metadata, source_name, self.method_reference)
 
+    def error_unit(self, settings):
+        """nm when an interferometer's period is set, as :func:`analyze` does; else arcsec."""
+        try:
+            return "nm" if float(settings.get("period_nm") or 0.0) else "arcsec"
+        except (TypeError, ValueError):
+            return "arcsec"
+
     def overlay_figure(self, result):
         return fringe_figures(result)["errors"]
 

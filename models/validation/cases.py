@@ -21,7 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
-from models.crosscal.analysis import CROSSCAL
+from models.crosscal.solve import solve_crosscal
+from models.crosscal.uncertainty import design_uncertainty, estler_full_rosette, monte_carlo_check
 from models.fringe.analysis import FRINGE
 from models.fringe.report import fringe_budget
 from models.messages import QT_TR_NOOP, message
@@ -40,7 +41,7 @@ from models.validation.polygon_rig import PolygonRig
 from models.validation.positioning_rig import AxisRig
 from models.validation.theodolite_rig import theodolite_readings
 
-__all__ = ["ValidationCase", "budget_agreement", "crosscal_budget_trials", "fringe_budget_trials",
+__all__ = ["ValidationCase", "budget_agreement", "fringe_budget_trials",
            "polygon_budget_trials", "positioning_budget_trials", "run_validation", "theodolite_budget_trials"]
 
 
@@ -86,7 +87,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
     theta = np.arange(-60.0, 60.1, 5.0)
     truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
     noise, u_standard = 0.5, 0.3
-    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty_arcsec=0.6,
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=0.6,
                                                             basis="U95"),))
     clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
     deviations, budgets = [], []
@@ -96,7 +97,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
         el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
         result = analyze_run(theta, az, el)
         deviations.append(result.corrected_error_arcsec - truth)
-        budgets.append(theodolite_budget(result, meta).combined_arcsec)
+        budgets.append(theodolite_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -109,7 +110,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
     truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
     certificate_dev = np.random.default_rng(5).normal(0.0, 0.2, faces)
     u_polygon, noise = 0.10, 0.08
-    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
+    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty=0.20,
                                                             basis="U95"),))
     settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
     deviations, budgets = [], []
@@ -123,7 +124,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
             rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
         deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
-        budgets.append(polygon_budget(result, meta).combined_arcsec)
+        budgets.append(polygon_budget(result, meta).combined)
     # face 1 is the zero: its error is zero by definition in set 1, and the budget's
     # simple pattern there is not compared
     return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
@@ -144,7 +145,7 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
         deviations.append(result.compensated_error)
-        budgets.append(fringe_budget(result, meta).combined_arcsec)
+        budgets.append(fringe_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -176,7 +177,7 @@ def positioning_budget_trials(trials: int, rng: np.random.Generator
                                  for t in result.positions] for d in (1, -1)])
         mean = np.concatenate([result.iso.forward.mean, result.iso.backward.mean])
         deviations.append(mean - truth)
-        budgets.append(positioning_budget(result, meta).combined_arcsec)
+        budgets.append(positioning_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -450,45 +451,49 @@ def uncertainty_cases() -> list[ValidationCase]:
     return cases
 
 
-def _crosscal_run(rig: CrossCalRig, mountings) -> tuple[object, np.ndarray, np.ndarray]:
-    rows = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""] for j, i, a, x in rig.rows(mountings)]
-    result = CROSSCAL.analyze(ReadingsSheet(CROSSCAL.columns, rows).parse(),
-                              CROSSCAL.default_settings)
-    e, d = rig.truth()
-    return result, e, d
-
-
-def crosscal_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """12-face full rosette, σ = 0.03″: (encoder error − truth) and u of each run."""
-    deviations, budgets = [], []
-    for _ in range(trials):
-        rig = CrossCalRig(12, {1: (0.8, 0.7), 2: (0.3, -0.3)}, rng.normal(0, 0.4, 12),
-                          noise_arcsec=0.03, drift_arcsec=0.05, rng=rng)
-        result, e, _ = _crosscal_run(rig, range(12))
-        deviations.append(result.solution.encoder_error_arcsec - e)
-        budgets.append(result.solution.encoder_error_u_arcsec)
-    return np.array(deviations), np.array(budgets)
-
-
 def crosscal_cases(trials: int) -> list[ValidationCase]:
+    """Cross-calibration: Estler's closed form, exact simulations of full and partial
+    rosettes by the rig (mounting errors, stops, drift, tilt), the harmonics a design
+    cannot see, and the stated u against a Monte Carlo of the same design."""
     w = QT_TR_NOOP("Cross-calibration (polygon + encoder)")
-    rig = CrossCalRig(12, {1: (0.8, 0.7), 2: (0.3, -0.3), 3: (0.1, 1.2)},
-                      np.random.default_rng(5).normal(0, 0.4, 12), rng=np.random.default_rng(6))
-    result, e, d = _crosscal_run(rig, range(12))
-    partial, _, _ = _crosscal_run(CrossCalRig(12, {1: (0.8, 0.7)}, np.zeros(12), noise_arcsec=0.03,
-                                              rng=np.random.default_rng(7)), (0, 6))
-    unseen = ", ".join(map(str, partial.solution.undetermined_encoder_harmonics))
-    return [
-        _at_most(w, QT_TR_NOOP("3-D simulation, full rosette of 12 (no noise): |encoder error − "
-                               "true error|"), EXACT_SIMULATION, 0.005,
-                 float(np.max(np.abs(result.solution.encoder_error_arcsec - e)))),
-        _at_most(w, QT_TR_NOOP("3-D simulation, full rosette of 12 (no noise): |face deviation − "
-                               "true deviation|"), EXACT_SIMULATION, 0.005,
-                 float(np.max(np.abs(result.solution.polygon_deviation_arcsec - d)))),
-        ValidationCase(w, QT_TR_NOOP("mountings 0 and 6 of 12 faces: harmonics left unseen"),
-                       HAND_COMPUTED, "2, 4, 6", unseen, unseen == "2, 4, 6"),
-        _agreement_case(w, crosscal_budget_trials, trials, 12),
-    ]
+    u, _, _ = estler_full_rosette(24, 0.02)
+    planned = design_uncertainty(24, range(24), 0.02, closure=False)
+    cases = [_close(w, QT_TR_NOOP("full rosette, 24 faces, σ = 0.02\": u = σ√(n − 1)/n (Estler)"),
+                    CHECK_FIGURE, u, float(planned.encoder_error_u_arcsec.max()), 1e-7, digits=5)]
+    harmonics = {1: (2.0, 0.3), 2: (1.0, 1.1), 3: (0.5, 2.0), 6: (0.3, 0.5)}
+    for mountings, name in ((list(range(12)), QT_TR_NOOP("3-D simulation, full rosette of 12 faces, "
+                                                         "no noise: |result − truth|")),
+                            ([0, 1, 5], QT_TR_NOOP("3-D simulation, mountings 0, 1, 5 of 12, no "
+                                                   "noise: |result − truth|"))):
+        rig = CrossCalRig(12, harmonics, np.random.default_rng(33).normal(0.0, 1.5, 12),
+                          drift_arcsec=0.5, tilt_arcsec=30.0, rng=np.random.default_rng(34))
+        j, i, a, c = (np.array(col) for col in zip(*rig.rows(mountings), strict=True))
+        result = solve_crosscal(j, i, a, c, faces=12, noise_arcsec=0.01)
+        true_e, true_d = rig.truth()
+        cases.append(_at_most(w, name, EXACT_SIMULATION, 0.002, float(max(
+            np.abs(result.encoder_error_arcsec - true_e).max(),
+            np.abs(result.polygon_deviation_arcsec - true_d).max()))))
+    rig = CrossCalRig(12, harmonics, np.zeros(12), rng=np.random.default_rng(35))
+    j, i, a, c = (np.array(col) for col in zip(*rig.rows([0, 4, 8]), strict=True))
+    unseen = solve_crosscal(j, i, a, c, faces=12, noise_arcsec=0.01)
+    cases.append(ValidationCase(
+        w, QT_TR_NOOP("mountings 0, 4, 8 of 12: the harmonics not determined are named and "
+                      "withheld"), EXACT_SIMULATION, "3, 6",
+        ", ".join(map(str, unseen.undetermined_encoder_harmonics)),
+        unseen.undetermined_encoder_harmonics == (3, 6) and unseen.encoder_error_arcsec is None))
+    rig = CrossCalRig(6, {1: (2.0, 0.3)}, np.random.default_rng(36).normal(0.0, 1.5, 6),
+                      drift_arcsec=0.5, noise_arcsec=0.2, rng=np.random.default_rng(37))
+    check = monte_carlo_check(*(np.array(col) for col in zip(*rig.rows([0, 1, 3]), strict=True)),
+                              runs=trials, seed=38, faces=6)
+    tolerance = max(0.10, 3.0 / math.sqrt(2.0 * trials))
+    cases.append(ValidationCase(
+        w, message(QT_TR_NOOP("stated u against the spread of {trials} simulated runs (ν = {dof})"),
+                   trials=trials, dof=f"{check.dof:g}"),
+        BUDGET_VS_MONTE_CARLO, message(QT_TR_NOOP("ratio 1 ± {tolerance}"), tolerance=f"{tolerance:.2f}"),
+        message(QT_TR_NOOP("ratio {ratio}, U covers {coverage} %"), ratio=f"{check.ratio:.3f}",
+                coverage=f"{100 * check.coverage:.1f}"),
+        abs(check.ratio - 1.0) <= tolerance))
+    return cases
 
 
 def run_validation(trials: int = 200) -> list[ValidationCase]:
