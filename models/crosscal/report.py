@@ -63,7 +63,7 @@ def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
                 how=message(QT_TR_NOOP("from the residuals, ν = {nu}"), nu=f"{nu:.0f}")
                 if math.isfinite(nu) else message(QT_TR_NOOP("stated")),
                 mountings=len(s.mountings)))]
-    r = metadata.item_resolution_arcsec
+    r = metadata.item_resolution_in("arcsec")
     if r and s.sigma_arcsec > 0:
         components.append(BudgetComponent(
             QT_TR_NOOP("Item resolution"), "B", "rectangular", np.asarray(u) / s.sigma_arcsec * r / 2,
@@ -86,7 +86,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
             orders=", ".join(map(str, s.undetermined_encoder_harmonics if item == "encoder"
                                  else s.undetermined_polygon_harmonics))))
     budget = crosscal_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     n = result.faces
     closures = result.closure_arcsec
     rows_p = [(QT_TR_NOOP("Faces / encoder steps"), f"{n}", ""),
@@ -158,7 +158,8 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         stat_rows = [(QT_TR_NOOP("Deviation"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
         plots = [polygon_figure(result)]
-    conformity = decide_conformity(values, budget, metadata.tolerance_arcsec,
+    tolerance = metadata.tolerance_in("arcsec")
+    conformity = decide_conformity(values, budget, tolerance,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=what, point_names=names)
     stat_rows[1:1] = decision_rows(conformity, budget,
@@ -181,6 +182,6 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget,
         budget_point=message(point, k=worst if item == "encoder" else worst + 1),
-        conformity=conformity, tolerance_arcsec=metadata.tolerance_arcsec,
+        conformity=conformity, tolerance=tolerance,
         plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
         point_columns=point_columns, statements=statements)
