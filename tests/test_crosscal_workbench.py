@@ -337,21 +337,12 @@ def test_a_matrix_becomes_each_mounting_from_its_first_step(n, closure, seed):
 
 
 def test_closure_drift_modes_are_what_they_say(samples_dir):
-    import inspect
-
-    from models.crosscal.solve import solve_crosscal
-    from models.parameters import SettingsError
-
     rows = _sample_rows(samples_dir)
-    report = KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": "report"})
-    assert KIND.to_json(report)["closure_drift"] == "report"
-    assert not report.drift_removed and "not removed" in KIND.summary(report)
-    if "drift" in inspect.signature(solve_crosscal).parameters:
-        spread = KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": "spread"})
-        assert spread.drift_removed and KIND.to_json(spread)["closure_drift"] == "spread"
-    else:  # the model cannot spread it yet: refused, never reported as removed
-        with pytest.raises(SettingsError, match="'spread' is not available"):
-            KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": "spread"})
+    for mode in ("fit", "spread", "report"):
+        result = KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": mode})
+        assert KIND.to_json(result)["closure_drift"] == mode
+        assert result.drift_removed == (mode != "report")
+        assert ("not removed" in KIND.summary(result)) == (mode == "report")
 
 
 def test_an_outlier_is_marked_on_the_residual_map_and_named_by_row(samples_dir):
@@ -383,3 +374,23 @@ def test_an_xlsx_matrix_is_imported(mocked, tmp_path):
     assert presenter.sheet.row_count == n * (n + 1)
     assert presenter.result is not None and presenter.result.faces == n
     view.ask_column_mapping.assert_not_called()
+
+
+def test_vertical_readings_correct_each_mountings_tilt_in_the_frame_set():
+    """The bench of the model's tests (tests/crosscal_simulator.py: its own rotations) seats
+    the polygon with a tilt of up to 10′ in each mounting; the vertical column corrects it."""
+    from crosscal_simulator import Bench
+
+    n = 8
+    bench = Bench(n, {1: (1.0, 0.4), 2: (0.4, 1.0)}, np.random.default_rng(4).normal(0, 0.5, n),
+                  tilt_arcsec=600.0, noise_arcsec=0.002, rng=np.random.default_rng(5))
+    rows = [[str(j), str(i), f"{a:.9f}", f"{x:.5f}", f"{y:.5f}"]
+            for j, i, a, x, y in bench.rows(range(n), vertical=True)]
+    e, d = bench.truth()
+    tilted = KIND.analyze(parse(rows), KIND.default_settings)
+    blind = KIND.analyze(parse([r[:4] + [""] for r in rows]), KIND.default_settings)
+    error = np.max(np.abs(tilted.solution.encoder_error_arcsec - e))
+    blind_error = np.max(np.abs(blind.solution.encoder_error_arcsec - e))
+    assert error < 0.01 < blind_error
+    assert np.max(np.abs(tilted.solution.polygon_deviation_arcsec - d)) < 0.01
+    assert not any("not used by this version" in w for w in tilted.warnings)

@@ -7,7 +7,6 @@ models/registry.py.
 
 from __future__ import annotations
 
-import inspect
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -19,7 +18,7 @@ from models.crosscal import KEY, TITLE
 from models.crosscal.readings import COLUMNS, CrossCalReadings, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
-from models.parameters import Parameter, SettingsError
+from models.parameters import Parameter
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
@@ -136,31 +135,16 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     noise = float(settings.get("noise_arcsec", 0.0) or 0.0)
     mode = str(settings.get("closure_drift", "fit"))
     removed = mode != "report"
-    extra = {"drift": mode, "ac_alignment": settings.get("ac_alignment", "levelled"),
-             "ac_y_arcsec": readings.ac_y_arcsec}
-    accepted = inspect.signature(solve_crosscal).parameters
-    extra = {k: v for k, v in extra.items() if k in accepted}  # the model's newer keywords
-    if mode == "spread" and "drift" not in extra:
-        raise SettingsError(message(QT_TR_NOOP("closure drift 'spread' is not available in this "
-                                               "version: choose 'fit' or 'report'")))
     try:
         solution = solve_crosscal(readings.mounting, readings.position, readings.encoder_deg,
                                   readings.ac_x_arcsec, faces=readings.faces,
-                                  noise_arcsec=noise or None, fit_drift=mode == "fit", **extra)
+                                  noise_arcsec=noise or None, drift=mode,
+                                  ac_y_arcsec=readings.ac_y_arcsec,
+                                  ac_alignment=settings.get("ac_alignment", "levelled"))
     except CrossCalibrationInputError as exc:
         raise ValueError(_sheet_row(reason_of(exc), exc.row, readings)) from None
-    warnings: list[str] = list(getattr(solution, "warnings", ()))
-    if readings.ac_y_arcsec is not None and "ac_y_arcsec" not in extra:
-        warnings.append(message(QT_TR_NOOP("The vertical readings are not used by this version: "
-                                           "no tilt is fitted or corrected.")))
-    if not solution.separable and not hasattr(solution, "undetermined_text"):
-        warnings.append(message(QT_TR_NOOP(
-            "The mountings {mountings} cannot separate harmonic(s) {encoder} of the encoder's "
-            "error and {polygon} of the face deviations: those results are withheld. Add a "
-            "mounting that is not a multiple of the others' spacing."),
-            mountings=", ".join(map(str, solution.mountings)),
-            encoder=", ".join(map(str, solution.undetermined_encoder_harmonics)) or "—",
-            polygon=", ".join(map(str, solution.undetermined_polygon_harmonics)) or "—"))
+    # the model's own: no closure, no vertical readings, harmonics it cannot see
+    warnings: list[str] = list(solution.warnings)
     result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
                             str(settings.get("certificate_of", "polygon")), warnings, mode)
     if result.outliers.size:

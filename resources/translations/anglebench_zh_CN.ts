@@ -3715,18 +3715,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>第 {row} 行：{reason}</translation>
     </message>
     <message>
-        <source>closure drift &apos;spread&apos; is not available in this version: choose &apos;fit&apos; or &apos;report&apos;</source>
-        <translation>本版本不提供闭合漂移“线性分配”：请选择“拟合”或“报告”</translation>
-    </message>
-    <message>
-        <source>The vertical readings are not used by this version: no tilt is fitted or corrected.</source>
-        <translation>本版本不使用垂直读数：不拟合也不修正倾斜。</translation>
-    </message>
-    <message>
-        <source>The mountings {mountings} cannot separate harmonic(s) {encoder} of the encoder&apos;s error and {polygon} of the face deviations: those results are withheld. Add a mounting that is not a multiple of the others&apos; spacing.</source>
-        <translation>安装位置 {mountings} 不能分离编码器误差的第 {encoder} 次谐波和面偏差的第 {polygon} 次谐波：这些结果不予给出。请增加一个不是其他安装间隔整数倍的安装位置。</translation>
-    </message>
-    <message>
         <source>{count} reading(s) lie beyond {sigmas}σ of the fit (rows {rows}): check them</source>
         <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
     </message>
