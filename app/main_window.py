@@ -110,6 +110,9 @@ class MainWindow(QMainWindow):
         self.capture_panel = CapturePanel(self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.capture_panel)
         self.capture_panel.hide()
+        # its raw frames go with the project
+        self.projects.raw_capture = self.capture_panel.raw_capture
+        self.projects.load_raw_capture = self.capture_panel.load_raw_capture
 
     def set_language(self, choice: str) -> None:
         """The window in English or Chinese (or the system's language), at once: every text
@@ -318,7 +321,7 @@ class MainWindow(QMainWindow):
         result = self._current_result()
         return result is not None and self.certificates.export_certificate(
             self.current.kind, result, self.current.settings, self._source_name(),
-            self.current.state().rows)
+            self.current.state().rows, self.capture_panel.raw_sessions(self.current.kind.key))
 
     def export_results(self) -> bool:
         result = self._current_result()

@@ -102,6 +102,10 @@ class ProjectPresenter(QObject):
         self.current = current
         self.path: Path | None = None
         self.metadata: dict = {}
+        #: the instruments' raw frames, saved and opened with the project (the window sets
+        #: its capture panel's raw_capture and load_raw_capture)
+        self.raw_capture: Callable[[], dict] = dict
+        self.load_raw_capture: Callable[[dict], None] = lambda _raw: None
         self.autosave_timer = QTimer(self)
         self.autosave_timer.setSingleShot(True)
         self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
@@ -135,12 +139,14 @@ class ProjectPresenter(QObject):
         return any(p.is_modified for p in self.presenters)
 
     def project(self) -> Project:
-        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.metadata))
+        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.metadata),
+                       self.raw_capture())
 
     def apply_project(self, project: Project) -> None:
         for presenter in self.presenters:
             presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
         self.metadata = dict(project.metadata)
+        self.load_raw_capture(project.raw_capture)
         self.metadata.pop("autosaved_at", None)
         self.metadata.pop("project_path", None)
 

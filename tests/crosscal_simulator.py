@@ -15,6 +15,10 @@ constraints or the polygon workbench's tilt equations. Frames and senses:
   azimuth −((i − 1)·360°/n + d_i), d_i its true deviation (faces numbered in the
   counting sense). Mounting j seats it turned on the shaft by j·360°/n + μ_j (μ_j the
   mounting error, uniform within ±``mounting_error_arcsec``).
+* Face pyramidal errors: face i's normal stands at its own elevation β_i
+  (``face_elevation_arcsec``, positive towards the polygon's own axis direction +z) above
+  the polygon's plane, ``[cosβ cos az, cosβ sin az, sinβ]`` in the polygon's frame — fixed to
+  the polygon, so the same in every mounting (zero unless given).
 * Tilt: in each mounting the polygon sits with its own axis at ψ_j from the shaft's,
   towards ω_j (in the polygon's frame). ``frame = "levelled"``: the shaft is vertical
   (z, levelled like the AC) and the face normals are tipped by ψ_j about
@@ -60,6 +64,7 @@ class Bench:
     encoder_zero_deg: float = 97.3
     ac_zero_x_arcsec: float = -4.0
     ac_zero_y_arcsec: float = 7.0
+    face_elevation_arcsec: np.ndarray | None = None  # β_i per face (1 … n), ″; None: square faces
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
@@ -93,7 +98,9 @@ class Bench:
     def _normals(self) -> np.ndarray:
         n = self.faces
         az = -np.radians(np.arange(n) * 360.0 / n + self.face_dev_arcsec / 3600.0)
-        return np.vstack([np.cos(az), np.sin(az), np.zeros(n)])
+        beta = (np.zeros(n) if self.face_elevation_arcsec is None
+                else np.asarray(self.face_elevation_arcsec, dtype=float) * ARCSEC)
+        return np.vstack([np.cos(beta) * np.cos(az), np.cos(beta) * np.sin(az), np.sin(beta)])
 
     def _face_normals(self, faces, turn_deg, psi: float, omega: float) -> np.ndarray:
         """The faces' normals (3, m) in the lab with the polygon turned by ``turn_deg`` (its

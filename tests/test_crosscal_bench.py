@@ -305,3 +305,110 @@ def test_vertical_readings_that_follow_no_tilt_are_said():
         r[4] = float(np.random.default_rng(r[1]).normal(0.0, 1e5))  # no vertical readings at all
     said = [w for w in solve(rows, n).warnings if "vertical readings" in w]
     assert len(said) == 3 and all("no polygon sits that far" in w or "scatter" in w for w in said)
+
+
+def _mean_plane_part(beta: np.ndarray) -> np.ndarray:
+    """The test's own: β less its least-squares mean and first harmonic over the faces."""
+    n = beta.size
+    az = 2 * np.pi * np.arange(n) / n
+    plane = np.column_stack([np.ones(n), np.cos(az), np.sin(az)])
+    return beta - plane @ np.linalg.lstsq(plane, beta, rcond=None)[0]
+
+
+def pyramidal_bench(n: int, seed: int, amplitude: float, **kw) -> Bench:
+    """A polygon whose faces have their own pyramidal errors, uniform within ±amplitude."""
+    beta = np.random.default_rng(900 + seed).uniform(-amplitude, amplitude, n)
+    return bench(n, seed, face_elevation_arcsec=beta, **kw)
+
+
+@pytest.mark.parametrize("frame", ["levelled", "polygon"])
+@pytest.mark.parametrize("amplitude", [1.0, 5.0])
+def test_face_pyramidal_errors_are_no_scatter(frame, amplitude):
+    """(a) Faces with ordinary pyramidal errors (±1″, ±5″, the same in every mounting) and
+    ψ up to 600″ per mounting, σ 0.02″: no vertical-scatter warning — the faces' pattern
+    (RMS 0.5–2.8″ about their mean plane, 10σ + 0.1″ = 0.3″) is fitted once, shared by the
+    mountings, and what is left is the noise."""
+    n = 24
+    b = pyramidal_bench(n, 21, amplitude, noise_arcsec=0.02, tilt_arcsec=600.0, frame=frame)
+    result = solve(b.rows([0, 1, 5, 11], vertical=True), n, ac_alignment=frame)
+    assert np.sqrt(np.mean(_mean_plane_part(b.face_elevation_arcsec) ** 2)) > 0.45 * amplitude
+    assert not [w for w in result.warnings if "scatter" in w]
+    assert np.all(result.vertical_scatter_arcsec < 0.04)
+    assert np.all([t.residual_rms_arcsec < 0.04 for t in result.tilts])
+    # each tilt is the faces' mean plane's: ψ_j off by at most β's first-harmonic amplitude
+    az = 2 * np.pi * np.arange(n) / n
+    plane = np.column_stack([np.ones(n), np.cos(az), np.sin(az)])
+    tipped = float(np.hypot(*np.linalg.lstsq(plane, b.face_elevation_arcsec, rcond=None)[0][1:]))
+    np.testing.assert_allclose([t.psi_arcsec for t in result.tilts],
+                               [m["psi_arcsec"] for m in b.mounts], atol=tipped + 0.05)
+
+
+@pytest.mark.parametrize("frame", ["levelled", "polygon"])
+def test_face_pyramidal_errors_recovered_relative_to_their_mean_plane(frame):
+    """(b) β about the faces' mean plane recovered to its u (k = 1: σ/√m·√(1 − 3/n) here,
+    0.0094″): every face within 4.5u, the RMS error within 1.5u, u as the scatter says; the
+    mean and first harmonic — not determined — are not in it; without noise to 3 mas
+    (levelled) or 11 mas (polygon frame) at ψ 600″; no β from one mounting."""
+    n, mountings = 24, [0, 1, 5, 11]
+    b = pyramidal_bench(n, 22, 5.0, noise_arcsec=0.02, tilt_arcsec=600.0, frame=frame)
+    result = solve(b.rows(mountings, vertical=True), n, ac_alignment=frame)
+    true = _mean_plane_part(b.face_elevation_arcsec)
+    u = result.face_pyramidal_u_arcsec
+    np.testing.assert_allclose(u, 0.02 / np.sqrt(4) * np.sqrt(1 - 3 / n), rtol=0.3)
+    miss = result.face_pyramidal_arcsec - true
+    assert np.abs(miss).max() < 4.5 * u.max() and np.sqrt(np.mean(miss**2)) < 1.5 * u.max()
+    assert np.ptp(true) > 6.0  # β of either sign or the wrong faces would miss by far more
+    np.testing.assert_allclose(_mean_plane_part(result.face_pyramidal_arcsec),
+                               result.face_pyramidal_arcsec, atol=1e-9)
+    noiseless = solve(pyramidal_bench(n, 22, 5.0, tilt_arcsec=600.0, frame=frame)
+                      .rows(mountings, vertical=True), n, noise_arcsec=0.01, ac_alignment=frame)
+    # no noise: what is left (square faces give as much) is the tilt's vertical pattern taken
+    # at the faces' nominal angles — a face deviation d (1.5″ here) moves it by ψ·d, 0.004″
+    # at ψ = 600″ — and, in the polygon frame, read where the shaft stopped (±15″ off null)
+    np.testing.assert_allclose(noiseless.face_pyramidal_arcsec, true,
+                               atol=0.004 if frame == "levelled" else 0.012)
+    assert "mean plane" in noiseless.face_pyramidal_statement
+    rows = [list(r) for r in b.rows(mountings, vertical=True)]
+    for r in rows:
+        if r[0] != 0:
+            r[4] = float("nan")  # only mounting 0 read vertically: β cannot be told from it
+    alone = solve(rows, n, ac_alignment=frame)
+    assert alone.face_pyramidal_arcsec is None and alone.face_pyramidal_statement is None
+
+
+@pytest.mark.parametrize("frame", ["levelled", "polygon"])
+def test_face_pyramidal_errors_leave_e_and_d_as_with_square_faces(frame):
+    """(c) The same bench, the same noise, with square faces and with ±5″ pyramidal errors,
+    ψ up to 600″: E and d agree to 0.002″ (u of E, d is 0.009″; without β in the exact
+    correction ±5″ cost up to 0.004″, ±15″ 0.011″)."""
+    n, mountings = 24, [0, 1, 5, 11, 17]
+    square = bench(n, 23, noise_arcsec=0.02, tilt_arcsec=600.0, frame=frame)
+    faces = pyramidal_bench(n, 23, 5.0, noise_arcsec=0.02, tilt_arcsec=600.0, frame=frame)
+    a = solve(square.rows(mountings, vertical=True), n, ac_alignment=frame)
+    b = solve(faces.rows(mountings, vertical=True), n, ac_alignment=frame)
+    assert a.face_pyramidal_arcsec is not None
+    assert np.abs(b.encoder_error_arcsec - a.encoder_error_arcsec).max() < 0.002
+    assert np.abs(b.polygon_deviation_arcsec - a.polygon_deviation_arcsec).max() < 0.002
+    assert 0.004 < a.encoder_error_u_arcsec.max() < 0.02
+    true_e, true_d = faces.truth()
+    assert np.abs(b.polygon_deviation_arcsec - true_d).max() < 5 * b.polygon_deviation_u_arcsec.max()
+
+
+def test_a_slipped_vertical_reading_or_a_rocking_polygon_still_warns():
+    """(d) Faces with ±5″ pyramidal errors, ψ up to 600″: one vertical reading slipped by 3″
+    in mounting 5 is said naming mounting 5 (and no other: the faces' β is judged as the
+    median over the mountings); a polygon that rocked to another tilt halfway through
+    mounting 11 is said naming mounting 11."""
+    n, mountings = 24, [0, 1, 5, 11]
+    rows = [list(r) for r in pyramidal_bench(n, 24, 5.0, noise_arcsec=0.02, tilt_arcsec=600.0)
+            .rows(mountings, vertical=True)]
+    assert not [w for w in solve(rows, n).warnings if "scatter" in w]
+    slipped = [list(r) for r in rows]
+    slipped[2 * (n + 1) + 7][4] += 3.0  # mounting 5, its 8th reading
+    said = [w for w in solve(slipped, n).warnings if "vertical readings scatter" in w]
+    assert len(said) == 1 and said[0].startswith("mounting 5:")
+    rocked = [list(r) for r in rows]
+    for r in rocked[3 * (n + 1) + n // 2:]:  # mounting 11 from its 13th reading: 2″ more tilt
+        r[4] += 2.0 * np.cos(np.radians((r[1] - 1) * 360.0 / n) - 1.0)
+    said = [w for w in solve(rocked, n).warnings if "vertical readings scatter" in w]
+    assert len(said) == 1 and said[0].startswith("mounting 11:")

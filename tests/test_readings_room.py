@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtWidgets import QApplication
 
-KINDS = ("theodolite", "polygon", "fringe", "positioning")
+from models.registry import KINDS
 
 
 def _rows_visible(table) -> float:

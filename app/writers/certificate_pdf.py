@@ -114,6 +114,7 @@ CHINESE = {
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
     "Model": "型号", "Place of calibration": "校准地点",
+    "Instrument output": "仪器原始输出",
 }
 
 
@@ -651,6 +652,8 @@ def _render(document: CertificateDocument) -> FPDF:
         (label(document, "Place of calibration", "\n"), _place(meta)),
         (label(document, "Environment", "\n"), _environment(meta)),
         (label(document, "Readings", "\n"), document.source_name),
+        *([(label(document, "Instrument output", "\n"),
+            f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
     ])
     pdf.heading(label(document, "Reference standards and traceability"))
     pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)

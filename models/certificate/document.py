@@ -75,6 +75,8 @@ class CertificateDocument:
     # inputs of the budget stated in the analysis settings (a standard listed with its
     # certificate and no U in the table stands behind them: the ADC's figures, say)
     stated_inputs: tuple[str, ...] = ()
+    # SHA-256 of the instrument's raw frames behind the readings (models/capture/raw_record)
+    raw_data_sha256: str = ""
 
     @property
     def expanded_uncertainty(self) -> float:

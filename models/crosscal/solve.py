@@ -46,7 +46,14 @@ measured roll ``roll_rad``), as the polygon workbench does it: the same exact 3-
 readings and fit (:func:`models.pyramidal.fit_tilt`), done for all mountings at
 once by :mod:`models.crosscal.tilt` (tested to give fit_tilt's figures); θ is the
 face's nominal angle (i − 1)·360°/n, face 1 the zero (the constant part is the
-mounting's offset). The tilt's own uncertainty is left to the residual scatter (its
+mounting's offset). The faces' own pyramidal errors — each face normal's elevation β_i,
+fixed to the polygon, the same in every mounting — are fitted with the tilts, shared by all
+mountings (:func:`models.crosscal.tilt.fit_tilts_and_faces`): β's mean over the faces
+cannot be told from the vertical zero nor its first harmonic from a tilt common to all
+mountings, so β is constrained to neither (each face relative to the faces' mean plane) and
+reported as ``face_pyramidal_arcsec``; it enters the horizontal correction exactly (an
+elevated normal read through a tilt). The scatter the vertical readings are judged by is
+what is left after both. The tilt's own uncertainty is left to the residual scatter (its
 correction is second order in ψ in a levelled set-up).
 
 What the design cannot determine is found from the null space of the design
@@ -144,6 +151,18 @@ class CrossCalibration:
     row_used: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
     probability: float = DEFAULT_COVERAGE_PROBABILITY
     warnings: tuple = ()  # Messages (closure over its limit, no closure, no vertical readings)
+    #: per face (1 … n): the face normal's own elevation β_i (its pyramidal error), arcsec, in
+    #: the sense of the vertical reading, relative to the faces' mean plane (mean and first
+    #: harmonic over the faces removed — they cannot be told from the autocollimator's
+    #: vertical zero and a tilt common to all mountings); None without vertical readings of
+    #: at least two mountings
+    face_pyramidal_arcsec: np.ndarray | None = None
+    #: standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter
+    face_pyramidal_u_arcsec: np.ndarray | None = None
+    #: per mounting: RMS of its vertical readings about its tilt and the faces' pyramidal errors
+    #: (their median over the mountings), arcsec — what the vertical readings are judged by;
+    #: nan without vertical readings
+    vertical_scatter_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def separable(self) -> bool:
@@ -199,6 +218,19 @@ class CrossCalibration:
         return message(QT_TR_NOOP("the encoder's errors and the face deviations are correlated: "
                                   "|r| up to {r}; use the covariance given when combining them"),
                        r=f"{r:.2f}")
+
+    @property
+    def face_pyramidal_statement(self) -> Message | None:
+        """What the face pyramidal errors are relative to (None when not fitted)."""
+        if self.face_pyramidal_arcsec is None:
+            return None
+        return message(QT_TR_NOOP("face pyramidal errors: each face normal's elevation relative "
+                                  "to the faces' mean plane (their mean and first harmonic over "
+                                  "the faces are not determined: they cannot be told from the "
+                                  "autocollimator's vertical zero and the polygon's tilt); "
+                                  "largest {largest}, u up to {u}"),
+                       largest=f"{np.abs(self.face_pyramidal_arcsec).max():.2f}\"",
+                       u=f"{np.max(self.face_pyramidal_u_arcsec):.3f}\"")
 
     @property
     def undetermined_text(self) -> Message | None:
@@ -325,16 +357,16 @@ def _sequence(mounting, position, order, n):
 
 
 def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad, warnings):
-    """Each mounting's tilt fitted on its vertical readings and its horizontal effect
-    removed from y (in place); (tilts per mounting, correction per row)."""
-    from models.crosscal.tilt import fit_tilts, pyramidal_corrections
+    """Each mounting's tilt and the faces' own elevations fitted on the vertical readings
+    and their horizontal effect removed from y (in place); (tilts per mounting, correction
+    per row, the faces' FacePyramidalFit or None)."""
+    from models.crosscal.tilt import fit_tilts_and_faces, pyramidal_corrections
 
     correction = np.zeros(y.size)
     if ac_y is None:
         warnings.append(message(QT_TR_NOOP("no vertical readings: the polygon's tilt on the shaft "
                                            "is neither identified nor removed")))
-        return tuple(None for _ in order), correction
-    step = 360.0 / n
+        return tuple(None for _ in order), correction, None, np.full(len(order), math.nan)
     read = []
     for j in order:
         faces_rows = rows_of[j][~closure[rows_of[j]]]
@@ -345,17 +377,24 @@ def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad
                                                "its tilt is neither identified nor removed"),
                                     mounting=j))
     tilts: dict[int, object] = {}
+    faces_fit = None
     if read:
         face_rows = [rows_of[j][~closure[rows_of[j]]] for j in read]
-        theta = np.array([(position[r] - 1) * step for r in face_rows])
-        fits = fit_tilts(theta, np.array([ac_y[r] for r in face_rows]), ac_alignment, roll_rad)
-        table = pyramidal_corrections(fits, n, ac_alignment, roll_rad)
+        fits, faces_fit = fit_tilts_and_faces(np.array([position[r] - 1 for r in face_rows]), n,
+                                              np.array([ac_y[r] for r in face_rows]), ac_alignment,
+                                              roll_rad)
+        table = pyramidal_corrections(fits, n, ac_alignment, roll_rad,
+                                      None if faces_fit is None else faces_fit.elevation_arcsec)
         for q, j in enumerate(read):
             rows = rows_of[j]
             correction[rows] = table[q, position[rows] - 1]
             tilts[j] = fits[q]
     y -= correction
-    return tuple(tilts.get(j) for j in order), correction
+    scatter = {j: tilts[j].residual_rms_arcsec for j in tilts}
+    if faces_fit is not None:
+        scatter.update(zip(read, faces_fit.scatter_arcsec.tolist(), strict=True))
+    return (tuple(tilts.get(j) for j in order), correction, faces_fit,
+            np.array([scatter.get(j, math.nan) for j in order]))
 
 
 def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | None = None,
@@ -415,8 +454,8 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
                       mounting=mounting[r], face=position[r])
     y = off * 3600.0 - c
     warnings: list[Message] = []
-    tilts, pyramidal = _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment,
-                              roll_rad, warnings)
+    tilts, pyramidal, faces_fit, vertical_scatter = _tilts(y, ac_y, position, closure, rows_of, order,
+                                                           n, ac_alignment, roll_rad, warnings)
 
     m = len(order)
     mindex = {j: q for q, j in enumerate(order)}
@@ -548,13 +587,14 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     offsets = x[2 * n:2 * n + m]
     # the same autocollimator reads both axes: vertical readings far off their tilt curve
     # are no tilt (a wrong column, a slipped face); their correction is then not to be trusted
-    for j, tilt in zip(order, tilts, strict=True):
-        if tilt is not None and tilt.residual_rms_arcsec > VERTICAL_SCATTER_FACTOR * sigma + 0.1:
+    # (the scatter left after each mounting's tilt and the faces' own pyramidal errors)
+    for j, tilt, rms in zip(order, tilts, vertical_scatter, strict=True):
+        if tilt is not None and rms > VERTICAL_SCATTER_FACTOR * sigma + 0.1:
             warnings.append(message(QT_TR_NOOP("mounting {mounting}: the vertical readings scatter "
                                                "{rms} RMS about the tilt fitted, far more than the "
                                                "horizontal ones ({sigma}): check them; the tilt "
                                                "correction rests on them"),
-                                    mounting=j, rms=f"{tilt.residual_rms_arcsec:.3f}\"",
+                                    mounting=j, rms=f"{rms:.3f}\"",
                                     sigma=f"{sigma:.3f}\""))
         elif tilt is not None and tilt.psi_arcsec > MAX_TILT_ARCSEC:
             warnings.append(message(QT_TR_NOOP("mounting {mounting}: a tilt of {psi} was fitted — "
@@ -575,4 +615,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         residuals_arcsec=residuals, rank_deficiency=deficiency,
         closure_drift_arcsec=h_drift, drift_mode=mode, tilts=tilts, ac_alignment=ac_alignment,
         pyramidal_arcsec=pyramidal, row_step=k, row_time=t, row_closure=closure, row_used=used,
-        probability=probability, warnings=tuple(warnings))
+        probability=probability, warnings=tuple(warnings),
+        face_pyramidal_arcsec=None if faces_fit is None else faces_fit.elevation_arcsec,
+        face_pyramidal_u_arcsec=None if faces_fit is None else faces_fit.u_arcsec,
+        vertical_scatter_arcsec=vertical_scatter)

@@ -5,7 +5,13 @@ Schema (``schema_version`` 2)::
     {"format": "anglebench-project", "schema_version": 2, "app_version": "0.1.0",
      "metadata": {...},
      "workbenches": {"theodolite": {"rows": [["0", "0", "-0.03"], ...],
-                                     "settings": {...}}, ...}}
+                                     "settings": {...}}, ...},
+     "raw_capture": {"polygon": {"sha256": "…", "sessions": [...]}}}
+
+``raw_capture`` (optional in schema 2: absent in a project with no instrument readings,
+and in files written before it existed) keeps what the instruments sent, per workbench: see
+models/capture/raw_record.py; ``sha256`` is the digest of ``sessions`` as stored, and a
+file whose sessions no longer give it is refused.
 
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
@@ -28,6 +34,7 @@ from pathlib import Path
 from typing import Any
 
 from models import __version__ as APP_VERSION
+from models.capture.raw_record import raw_digest, raw_sessions_from_json
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.atomic_write import write_text_atomic
 
@@ -64,6 +71,8 @@ class WorkbenchState:
 class Project:
     workbenches: dict[str, WorkbenchState] = field(default_factory=dict)
     metadata: dict[str, Any] = field(default_factory=dict)
+    #: workbench key -> its capture sessions (models/capture/raw_record.py), optional
+    raw_capture: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
 
 
 _ROWS_CHUNK = 20_000
@@ -105,7 +114,17 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
             if between_blocks is not None:
                 between_blocks()
         yield f'],"settings":{dumps(state.settings)}}}'
-    yield "}}"
+    yield "}"
+    raw = {str(k): v for k, v in project.raw_capture.items() if v}
+    if raw:
+        yield ',"raw_capture":{'
+        for i, (key, sessions) in enumerate(raw.items()):
+            yield (("," if i else "") + f'{dumps(key)}:{{"sha256":{dumps(raw_digest(sessions))},'
+                   f'"sessions":{dumps(sessions)}}}')
+            if between_blocks is not None:
+                between_blocks()
+        yield "}"
+    yield "}"
 
 
 def project_from_json(text: str, source: str = "project") -> Project:
@@ -190,7 +209,34 @@ def project_from_json(text: str, source: str = "project") -> Project:
                 QT_TR_NOOP("{source}: workbench '{key}': 'settings' must be an object"),
                 source=source, key=key))
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
+    project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
     return project
+
+
+def _raw_capture(raw: Any, source: str) -> dict[str, list[dict[str, Any]]]:
+    """The optional raw frames, checked against their digest."""
+    if not isinstance(raw, dict):
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: 'raw_capture' must be an object; nothing was changed"),
+            source=source))
+    out = {}
+    for key, entry in raw.items():
+        where = f"{source}: raw_capture '{key}'"
+        if not isinstance(entry, dict) or not isinstance(entry.get("sha256"), str):
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{where}: 'sha256' and 'sessions' expected; nothing was changed"),
+                where=where))
+        try:
+            sessions = raw_sessions_from_json(entry.get("sessions"), where)
+        except ValueError as exc:
+            raise ProjectFileError(message(QT_TR_NOOP("{reason}; nothing was changed"),
+                                           reason=reason_of(exc))) from None
+        if raw_digest(sessions) != entry["sha256"]:
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{where}: the raw frames do not give their SHA-256 (changed after "
+                           "they were captured); nothing was changed"), where=where))
+        out[str(key)] = sessions
+    return out
 
 
 def _error_unit(workbench: str, settings: Mapping[str, Any]) -> str:

@@ -33,6 +33,7 @@ from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table
 from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
 from models.validation.crosscal_rig import CrossCalRig
@@ -213,7 +214,7 @@ def _agreement_case(workbench: str, run: Callable, trials: int, seed: int) -> Va
 
 
 def theodolite_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Theodolite run")
+    w = THEODOLITE.title
     theta = np.arange(-20.0, 21.0, 1.0)
     zeta = induced_error_arcsec(theta, 3.0, 45.0, 2.0)
     alphas = np.arange(0.0, 360.0, 1.0)
@@ -250,7 +251,7 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
 
 
 def polygon_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Polygon encoder test")
+    w = POLYGON.title
     theta = np.arange(0.0, 360.0, 1.0)
     eps_x, eps_y = pyramidal_readings_arcsec(theta, 600.0, 90.0)
     fine = np.arange(0.0, 360.0, 0.5)
@@ -319,7 +320,7 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
 
 
 def fringe_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Fringe signal analysis")
+    w = FRINGE.title
     per = 64
     theta = equal_steps(8 * per, per)
     # Table 1, the cos channel's B1 read as +3.7346 (SPEC §3)
@@ -358,7 +359,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
 
 
 def positioning_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     lost = 4.0  # arcsec
     rig = AxisRig(_axis_error_deg, lost_motion=lost / 3600)  # no scatter: every figure known
     result = POSITIONING.analyze(positioning_readings(rig), {})
@@ -408,7 +409,7 @@ def positioning_hand_cases() -> list[ValidationCase]:
     a run small enough to work out on paper (see HAND_EXAMPLE)."""
     from models.uncertainty.iso230 import iso230_evaluate
 
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     figures = iso230_evaluate(np.array(HAND_EXAMPLE["positions"]),
                               np.array(HAND_EXAMPLE["deviations"], float),
                               np.array(HAND_EXAMPLE["directions"])).figures
@@ -498,5 +499,9 @@ def crosscal_cases(trials: int) -> list[ValidationCase]:
 
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
+    from models.registry import KINDS  # a workbench's own cases, kept in its folder
+
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
-            + positioning_cases(trials) + crosscal_cases(trials) + uncertainty_cases())
+            + positioning_cases(trials) + crosscal_cases(trials)
+            + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
+            + uncertainty_cases())
