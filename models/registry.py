@@ -15,6 +15,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
+from models.crosscal.analysis import CROSSCAL
 from models.fringe.analysis import FRINGE
 from models.polygon.analysis import POLYGON
 from models.positioning.analysis import POSITIONING
@@ -30,6 +31,7 @@ KINDS: dict[str, Workbench] = {k.key: k for k in (
     POLYGON,
     FRINGE,
     POSITIONING,
+    CROSSCAL,
 )}
 
 

@@ -231,3 +231,29 @@ def test_old_details_are_read_in_the_unit_of_the_workbench_errors(tmp_path):
     fringe = KINDS["fringe"]
     assert fringe.error_unit(fringe.settings_with_defaults({"period_nm": 632.8})) == "nm"
     assert fringe.error_unit(fringe.settings_with_defaults({})) == "arcsec"
+
+
+def test_crosscal_json_contract(capsys, samples_dir, tmp_path):
+    code, out, err = run_cli(capsys, "crosscal", str(samples_dir / "crosscal_sample.csv"), "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    for key in ("encoder_error_arcsec", "polygon_deviation_arcsec"):
+        values, expanded = np.array(data[key]), np.array(data[key.replace("_arcsec", "_U_arcsec")])
+        assert values.shape == expanded.shape == (12,)
+        assert abs(values.sum()) < 1e-9 and np.all((expanded > 0) & (expanded < 0.03))
+    assert data["separable"] and "unseen_components" not in data
+    # mountings 0, 4, 8 of 12: orders 3 and 6 are unseen, and never printed as results
+    rows = (samples_dir / "crosscal_sample.csv").read_text("utf-8").splitlines()
+    partial = tmp_path / "partial.csv"
+    partial.write_text("\n".join([rows[0]] + [r for r in rows[1:] if r.split(",")[0] in
+                                              ("0", "4", "8")]) + "\n", encoding="utf-8")
+    code, out, err = run_cli(capsys, "crosscal", str(partial), "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["encoder_error_arcsec"] is None and data["polygon_deviation_U_arcsec"] is None
+    assert data["unseen_components"]["encoder_harmonics"] == [3, 6]
+    bad = tmp_path / "bad.csv"
+    bad.write_text("\n".join(rows[:5] + [rows[3]] + rows[5:]) + "\n", encoding="utf-8")
+    code, _, err = run_cli(capsys, "crosscal", str(bad))
+    # rows counted as the window counts them: the readings, the header not counted
+    assert code == 2 and "row 5: mounting 0, face 3 is read again (row 3)" in err

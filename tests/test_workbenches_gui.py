@@ -140,8 +140,9 @@ def test_edits_cancel_the_analysis_they_supersede(qtbot, fringe, monkeypatch):
 def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     assert main(["--screenshot", str(tmp_path)]) == 0
     names = sorted(p.name for p in tmp_path.glob("*.png"))
-    assert names == ["certificate_dialog.png", "fringe.png", "polygon.png", "positioning.png",
-                     "theodolite.png"]
+    from models.registry import KINDS
+
+    assert names == sorted(["certificate_dialog.png"] + [f"{key}.png" for key in KINDS])
     assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))
 
 

@@ -1,0 +1,331 @@
+"""Cross-calibration of a polygon and an encoder as a workbench: readings columns,
+settings, the analysis (models/crosscal/solve.py), JSON and summary.
+
+The workbench is declared here (:class:`CrossCal`) and registered by one line in
+models/registry.py.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from models.crosscal import KEY, TITLE
+from models.crosscal.readings import COLUMNS, CrossCalReadings, read_crosscal
+from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
+from models.parameters import Parameter
+from models.uncertainty.iso230 import iso230_evaluate
+from models.workbench import (
+    SIGN_CONVENTION,
+    IssuesCertificates,
+    ShowsHeadline,
+    Workbench,
+    WritesCorrectionTable,
+)
+
+__all__ = ["CROSSCAL", "CrossCalResult", "analyze", "polygon_deviation_rows", "summary", "to_json"]
+
+PARAMETERS = (
+    Parameter("faces", "faces n", "int", 0, minimum=3, maximum=360, zero="from the readings",
+              help="Faces of the polygon (= the encoder's steps); 0: as many as the readings "
+                   "have"),
+    Parameter("closure_drift", "closure drift", "choice", "fit",
+              choices=(("fit", "fit linearly, remove"),
+                       ("spread", "spread linearly, remove"),
+                       ("report", "report it (not removed)")),
+              help="Each mounting's drift, seen by its closure reading: fitted by least squares "
+                   "as a linear drift over the mounting and removed; or its closure spread "
+                   "linearly over the mounting and removed, as the polygon workbench does; or "
+                   "only reported"),
+    Parameter("ac_alignment", "autocollimator set-up", "choice", "levelled",
+              choices=(("levelled", "levelled with the rotary axis"),
+                       ("polygon", "vertical along the polygon's axis (rolled with the tilt)")),
+              help="The frame the tilt correction is made in when vertical readings are given, "
+                   "as in the polygon workbench: the autocollimator levelled with the rotary "
+                   "axis, or its vertical along the polygon's axis"),
+    Parameter("noise_arcsec", "σ of a reading", "float", 0.0, "\"", 0.0, 100.0, decimals=3,
+              step=0.01, zero="from the residuals",
+              help="Standard deviation of one reading when known (the autocollimator's and the "
+                   "encoder's noise together); 0: taken from the residuals of the fit, with its "
+                   "degrees of freedom"),
+    Parameter("certificate_of", "certificate of", "choice", "polygon",
+              choices=(("polygon", "the polygon (face deviations)"),
+                       ("encoder", "the encoder (error at its steps)")),
+              help="Which instrument the certificate is issued for: the polygon's face "
+                   "deviations or the encoder's error at its steps"),
+)
+
+#: a residual beyond this many σ is marked as an outlier
+OUTLIER_SIGMAS = 3.0
+
+
+@dataclass(frozen=True)
+class CrossCalResult:
+    readings: CrossCalReadings
+    solution: CrossCalibration
+    closure_arcsec: np.ndarray  # per mounting, (x′ − x) − (a′ − a); NaN without closure
+    drift_removed: bool  # "fit" or "spread": the drift was removed
+    certificate_of: str
+    warnings: list[str] = field(default_factory=list)
+    drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
+
+    @property
+    def faces(self) -> int:
+        return self.solution.faces
+
+    @property
+    def step_deg(self) -> np.ndarray:
+        """The encoder's steps from its start, first step first (°)."""
+        return np.arange(self.faces) * 360.0 / self.faces
+
+    @property
+    def outliers(self) -> np.ndarray:
+        """Indices of the readings whose residual exceeds OUTLIER_SIGMAS·σ."""
+        s = self.solution
+        if not s.sigma_arcsec > 0:
+            return np.zeros(0, dtype=int)
+        return np.flatnonzero(np.abs(s.residuals_arcsec) > OUTLIER_SIGMAS * s.sigma_arcsec)
+
+    def encoder_runs_arcsec(self) -> np.ndarray:
+        """Each mounting's own estimate of the encoder's error at each step (mountings ×
+        steps): E_k plus that reading's residual (closure readings left out)."""
+        r, s = self.readings, self.solution
+        e = s.encoder_error_determined_arcsec
+        k = (r.position - 1 - r.mounting) % self.faces
+        out = np.full((len(r.mountings), self.faces), np.nan)
+        for q, j in enumerate(r.mountings):
+            rows = np.flatnonzero((r.mounting == j) & ~r.closure)
+            out[q, k[rows]] = e[k[rows]] + s.residuals_arcsec[rows]
+        return out
+
+    def polygon_u_from_face1_arcsec(self) -> np.ndarray:
+        """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries)."""
+        n, cov = self.faces, self.solution.covariance_arcsec2
+        d = cov[n:, n:]
+        var = np.diag(d) + d[0, 0] - 2.0 * d[:, 0]
+        return self.solution.coverage_factor * np.sqrt(np.clip(var, 0.0, None))
+
+    def cross_correlation(self) -> float:
+        """The largest |correlation| between an encoder error and a face deviation."""
+        n = self.faces
+        block = self.solution.correlation[:n, n:]
+        return float(np.max(np.abs(block))) if block.size else 0.0
+
+
+def _sheet_row(text: str, row: int | None, readings: CrossCalReadings) -> str:
+    """The model's reason naming the sheet's row (the model counts the rows given it)."""
+    if row is None:
+        return text
+    sheet = readings.row(row - 1)
+    figures = getattr(text, "figures", None)
+    if figures and any(v == row for v in figures.values()):
+        key = next(k for k, v in figures.items() if v == row)
+        return message(text.template, **{**figures, key: sheet})
+    return text.replace(f"row {row}", f"row {sheet}", 1) if f"row {row}" in text else \
+        message(QT_TR_NOOP("row {row}: {reason}"), row=sheet, reason=text)
+
+
+def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
+    readings = read_crosscal(parsed, int(settings.get("faces", 0) or 0))
+    noise = float(settings.get("noise_arcsec", 0.0) or 0.0)
+    mode = str(settings.get("closure_drift", "fit"))
+    removed = mode != "report"
+    try:
+        solution = solve_crosscal(readings.mounting, readings.position, readings.encoder_deg,
+                                  readings.ac_x_arcsec, faces=readings.faces,
+                                  noise_arcsec=noise or None, drift=mode,
+                                  ac_y_arcsec=readings.ac_y_arcsec,
+                                  ac_alignment=settings.get("ac_alignment", "levelled"))
+    except CrossCalibrationInputError as exc:
+        raise ValueError(_sheet_row(reason_of(exc), exc.row, readings)) from None
+    # the model's own: no closure, no vertical readings, harmonics it cannot see
+    warnings: list[str] = list(solution.warnings)
+    result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
+                            str(settings.get("certificate_of", "polygon")), warnings, mode)
+    if result.outliers.size:
+        shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
+        warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "
+                                           "(rows {rows}): check them"),
+                                count=int(result.outliers.size), sigmas=f"{OUTLIER_SIGMAS:g}",
+                                rows=shown + (" …" if result.outliers.size > 8 else "")))
+    return result
+
+
+def _list(values) -> list[float] | None:
+    return None if values is None else [float(v) for v in values]
+
+
+def encoder_figures(result: CrossCalResult) -> dict[str, float]:
+    """JJF 1115's division error and ISO 230-2's unidirectional figures of the encoder's
+    error, its mountings taken as repeated runs (deviation = −error)."""
+    runs = result.encoder_runs_arcsec()
+    theta = np.tile(result.step_deg, runs.shape[0])
+    keep = np.isfinite(runs.ravel())
+    figures = iso230_evaluate(theta[keep], -runs.ravel()[keep]).figures
+    out = {"division_error_jjf1115": float(np.ptp(result.solution.encoder_error_determined_arcsec)),
+           "repeatability_jjf1115": float(np.nanmax(np.nanstd(runs, axis=0, ddof=1)))
+           if runs.shape[0] > 1 else float("nan")}
+    out.update({f"iso230_{k}": float(v) for k, v in figures.items()})
+    return out
+
+
+def to_json(result: CrossCalResult) -> dict[str, Any]:
+    s = result.solution
+    out: dict[str, Any] = {
+        "faces": s.faces,
+        "mountings": list(s.mountings),
+        "encoder_error_arcsec": _list(s.encoder_error_arcsec),
+        "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None
+        else _list(s.encoder_error_expanded_arcsec),
+        "polygon_deviation_arcsec": _list(s.polygon_deviation_arcsec),
+        "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None
+        else _list(s.polygon_deviation_expanded_arcsec),
+        "coverage_factor": s.coverage_factor,
+        "sigma_arcsec": s.sigma_arcsec,
+        "dof": s.dof,
+        "separable": s.separable,
+        "undetermined_encoder_harmonics": list(s.undetermined_encoder_harmonics),
+        "undetermined_polygon_harmonics": list(s.undetermined_polygon_harmonics),
+        "largest_correlation_encoder_polygon": result.cross_correlation(),
+        "closure_arcsec": _list(result.closure_arcsec),
+        "closure_drift": result.drift_mode,
+        "drift_arcsec": _list(s.drift_arcsec),
+        "residual_rms_arcsec": float(np.sqrt(np.mean(s.residuals_arcsec**2))),
+        "outlier_rows": [result.readings.row(i) for i in result.outliers],
+        "nominal_encoder_steps": result.readings.nominal_encoder,
+        "sign_convention": SIGN_CONVENTION,
+        "warnings": result.warnings,
+    }
+    if not s.separable:  # what the design does see: labelled, never the result
+        out["unseen_components"] = {
+            "encoder_harmonics": list(s.undetermined_encoder_harmonics),
+            "polygon_harmonics": list(s.undetermined_polygon_harmonics),
+            "encoder_error_without_them_arcsec": _list(s.encoder_error_determined_arcsec),
+            "polygon_deviation_without_them_arcsec": _list(s.polygon_deviation_determined_arcsec)}
+    else:
+        out["polygon_deviation_U_from_face1_arcsec"] = _list(result.polygon_u_from_face1_arcsec())
+        out["encoder_figures_arcsec"] = encoder_figures(result)
+    return out
+
+
+def _span(values: np.ndarray) -> str:
+    return f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\""
+
+
+def summary(result: CrossCalResult) -> str:
+    s = result.solution
+    nu = "∞" if not math.isfinite(s.dof) else f"{s.dof:.0f}"
+    out = [message(QT_TR_NOOP("{faces}-face polygon on the encoder, {count} mountings ({mountings}); "
+                              "σ of a reading {sigma} (ν = {nu}), k = {k}"),
+                   faces=s.faces, count=len(s.mountings),
+                   mountings=", ".join(map(str, s.mountings)), sigma=f"{s.sigma_arcsec:.3f}\"",
+                   nu=nu, k=f"{s.coverage_factor:.2f}")]
+    if result.readings.nominal_encoder:
+        out.append(message(QT_TR_NOOP("Encoder set to its nominal steps (no encoder readings).")))
+    if s.encoder_error_arcsec is not None:
+        out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
+                           span=_span(s.encoder_error_arcsec),
+                           ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
+                           u=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\""))
+    else:
+        out.append(message(QT_TR_NOOP("Encoder error NOT determined: harmonic(s) {orders} unseen "
+                                      "by this design"),
+                           orders=", ".join(map(str, s.undetermined_encoder_harmonics))))
+    if s.polygon_deviation_arcsec is not None:
+        out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
+                           span=_span(s.polygon_deviation_arcsec),
+                           u=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\""))
+    else:
+        out.append(message(QT_TR_NOOP("Face deviations NOT determined: harmonic(s) {orders} "
+                                      "unseen by this design"),
+                           orders=", ".join(map(str, s.undetermined_polygon_harmonics))))
+    closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
+    if closures.size:
+        out.append(message(QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "
+                                      "removed") if result.drift_removed else
+                           QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "
+                                      "reported, not removed"),
+                           count=int(closures.size), mountings=len(s.mountings),
+                           low=f"{np.min(closures):+.2f}\"", high=f"{np.max(closures):+.2f}\""))
+    else:
+        out.append(message(QT_TR_NOOP("No closure readings: drift not measured")))
+    if s.separable:
+        out.append(message(QT_TR_NOOP("Largest correlation between an encoder error and a face "
+                                      "deviation: {r}"), r=f"{result.cross_correlation():.2f}"))
+        figures = encoder_figures(result)
+        out.append(joined((message(QT_TR_NOOP("JJF 1115: division error {value}"),
+                                   value=f"{figures['division_error_jjf1115']:.3f}\""),
+                           ", ISO 230-2: " + ", ".join(
+                               f"{k[7:]} = {v:.3f}\"" for k, v in figures.items()
+                               if k.startswith("iso230_") and math.isfinite(v)))))
+    return lines(out)
+
+
+def verdict(result: CrossCalResult) -> str:
+    s = result.solution
+    if not s.separable:
+        return message(QT_TR_NOOP("This design cannot separate every harmonic: the undetermined "
+                                  "results are withheld (see the warnings)."))
+    return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
+                              "{low} … {high} (U ≤ {ud})"),
+                   ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
+                   ue=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\"",
+                   low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
+                   high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
+                   ud=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\"")
+
+
+def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
+    """The polygon's face deviations as its certificate states them for the polygon
+    workbench: position, deviation from face 1 (″) and its expanded U (″)."""
+    d = result.solution.polygon_deviation_arcsec
+    if d is None:
+        raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
+                                            "design: nothing to send")))
+    u = result.polygon_u_from_face1_arcsec()
+    return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
+
+
+class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "crosscal_sample.csv"
+    method_reference = ("Kinnane M. et al., Metrologia 52 (2015) 244; Estler W. T., Uncertainty "
+                        "analysis for angle calibrations using circle closure, J. Res. NIST 103 "
+                        "(1998) 141")
+    presenter = "widgets.crosscal.presenter:CrossCalPresenter"
+    nominal_column = "position"
+    entry_column = "ac_x_arcsec"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    verdict = staticmethod(verdict)
+
+    def certificate(self, result, metadata, source_name=""):
+        from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
+
+        return crosscal_certificate(result, metadata, source_name, self.method_reference)
+
+    def correction_table(self, result, settings, path) -> str:
+        """The polygon's deviations as the polygon workbench reads a certificate (--table,
+        and the window's "Save face deviations for the polygon workbench")."""
+        from models.crosscal.export import write_polygon_reference  # imports this module
+
+        return write_polygon_reference(result, settings, path)
+
+    def headline(self, r):
+        s = r.solution
+        return {"encoder error peak-to-peak (\")": float(np.ptp(s.encoder_error_arcsec))
+                if s.encoder_error_arcsec is not None else float("nan"),
+                "face deviation peak-to-peak (\")": float(np.ptp(s.polygon_deviation_arcsec))
+                if s.polygon_deviation_arcsec is not None else float("nan")}
+
+
+CROSSCAL = CrossCal()

@@ -1,0 +1,38 @@
+"""The polygon's face deviations from a cross-calibration, written as the polygon
+workbench reads a polygon certificate (``position,deviation_arcsec``; models/polygon/
+certificate_reader.py), each with its expanded uncertainty from face 1."""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from models.crosscal.analysis import CrossCalResult, polygon_deviation_rows
+from models.messages import QT_TR_NOOP, message
+from models.project.atomic_write import write_text_atomic
+
+__all__ = ["polygon_reference_csv", "write_polygon_reference"]
+
+
+def polygon_reference_csv(result: CrossCalResult) -> str:
+    rows = polygon_deviation_rows(result)  # ValueError when not determined
+    s = result.solution
+    largest = max(float(r[2]) for r in rows)
+    out = io.StringIO()
+    out.write("# AngleBench cross-calibration: the polygon's face deviations from face 1 "
+              "(for the polygon workbench: Load polygon certificate)\n")
+    out.write(f"# U (k = {s.coverage_factor:.2f}) from face 1 up to {largest:.4f} arcsec: "
+              "enter it as the polygon standard's U stated from face 1\n")
+    out.write("position,deviation_arcsec,expanded_uncertainty_arcsec\n")
+    for row in rows:
+        out.write(",".join(row) + "\n")
+    return out.getvalue()
+
+
+def write_polygon_reference(result: CrossCalResult, settings: Mapping[str, Any],
+                            path: str | Path) -> str:
+    """Write the file (atomically); returns what was written, for the user."""
+    write_text_atomic(path, polygon_reference_csv(result))
+    return message(QT_TR_NOOP("The polygon's face deviations (from face 1, with U)"))

@@ -1,0 +1,187 @@
+"""Cross-calibration: uncertainty budget and certificate content, for the polygon (its
+face deviations) or for the encoder (its error at its steps) — the setting
+``certificate_of`` chooses.
+
+Each result is a linear function of the readings (least squares under the closure
+constraints), so its standard uncertainty is exact from the design: the diagonal of
+σ²·(AᵀA)⁺ on the constraints, σ the scatter of one reading from the fit's residuals
+(Type A, ν = readings − unknowns) or as stated. No reference standard enters: the
+closure of the circle is the reference. The item's resolution, when stated, enters per
+reading through the same design (its standard uncertainty scales σ's share).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from models.certificate.document import CertificateDocument, Table, decision_rows
+from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.crosscal import KEY, TITLE
+from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
+from models.messages import QT_TR_NOOP, message
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+__all__ = ["crosscal_budget", "crosscal_certificate"]
+
+METHOD = QT_TR_NOOP(
+    "Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder "
+    "in several mountings (turned by j faces on the shaft) and in each mounting the shaft is "
+    "turned from the same encoder reading through the encoder's n steps of 360°/n, an "
+    "autocollimator reading each face in turn. Each reading is the encoder's error at its step "
+    "plus the polygon's deviation at the face plus the mounting's offset (and drift); the faces "
+    "of the polygon and the steps of a full turn each close at 360°, so both error sets are "
+    "found together by least squares, without a calibrated polygon. Harmonics that the "
+    "mountings chosen cannot separate are named and not reported.")
+
+
+DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least squares and removed"),
+               "spread": QT_TR_NOOP("spread linearly over each mounting and removed"),
+               "report": QT_TR_NOOP("reported, not removed")}
+
+
+def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
+    """(values, u of one reading's scatter per point, what) of the certificate's item."""
+    s = result.solution
+    if result.certificate_of == "encoder":
+        return s.encoder_error_arcsec, s.encoder_error_u_arcsec, "encoder"
+    return s.polygon_deviation_arcsec, s.polygon_deviation_u_arcsec, "polygon"
+
+
+def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
+    s = result.solution
+    _, u, _ = _per_point(result)
+    nu = s.dof
+    components = [BudgetComponent(
+        QT_TR_NOOP("Reading scatter through the design"), "A" if math.isfinite(nu) else "B",
+        "normal", np.asarray(u, dtype=float), 1.0, 1.0, nu,
+        message(QT_TR_NOOP("σ = {sigma} of one reading ({how}), propagated exactly through the "
+                           "least-squares design of {mountings} mountings"),
+                sigma=f"{s.sigma_arcsec:.4f}\"",
+                how=message(QT_TR_NOOP("from the residuals, ν = {nu}"), nu=f"{nu:.0f}")
+                if math.isfinite(nu) else message(QT_TR_NOOP("stated")),
+                mountings=len(s.mountings)))]
+    r = metadata.item_resolution_in("arcsec")
+    if r and s.sigma_arcsec > 0:
+        components.append(BudgetComponent(
+            QT_TR_NOOP("Item resolution"), "B", "rectangular", np.asarray(u) / s.sigma_arcsec * r / 2,
+            math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("resolution {r} per reading, through the same design"),
+                    r=f"{r:g}\"")))
+    return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability)
+
+
+def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
+                         method_reference: str = "") -> CertificateDocument:
+    s = result.solution
+    values, _, item = _per_point(result)
+    if values is None:
+        raise MetadataError(message(QT_TR_NOOP(
+            "no certificate: this design does not determine the {what} (harmonic(s) {orders} "
+            "unseen); add a mounting"),
+            what=message(QT_TR_NOOP("encoder's error") if item == "encoder"
+                         else QT_TR_NOOP("face deviations")),
+            orders=", ".join(map(str, s.undetermined_encoder_harmonics if item == "encoder"
+                                 else s.undetermined_polygon_harmonics))))
+    budget = crosscal_budget(result, metadata)
+    big_u = budget.expanded
+    n = result.faces
+    closures = result.closure_arcsec
+    rows_p = [(QT_TR_NOOP("Faces / encoder steps"), f"{n}", ""),
+              (QT_TR_NOOP("Mountings"), ", ".join(map(str, s.mountings)), ""),
+              (QT_TR_NOOP("σ of one reading"), f"{s.sigma_arcsec:.4f}\"",
+               "ν = ∞" if not math.isfinite(s.dof) else f"ν = {s.dof:.0f}"),
+              (QT_TR_NOOP("Closure drift"), DRIFT_WORDS[result.drift_mode], ""),
+              (QT_TR_NOOP("Encoder"),
+               QT_TR_NOOP("set to its nominal steps") if result.readings.nominal_encoder
+               else QT_TR_NOOP("read at each step"), ""),
+              (QT_TR_NOOP("Largest correlation encoder / polygon"),
+               f"{result.cross_correlation():.2f}", "")]
+    for q, j in enumerate(s.mountings):
+        if math.isfinite(closures[q]):
+            rows_p.append((message(QT_TR_NOOP("Mounting {mounting} closure"), mounting=j),
+                           f"{closures[q]:+.3f}\"", ""))
+    parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
+                       (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), ""), rows_p)
+    if item == "encoder":
+        first = result.step_deg
+        rows = [(f"{k}", f"{first[k]:.4f}", f"{values[k]:+.3f}", f"{big_u[k]:.3f}")
+                for k in range(n)]
+        results = Table(QT_TR_NOOP("Encoder error at its steps"),
+                        (QT_TR_NOOP("Step"), QT_TR_NOOP("From the start (°)"),
+                         QT_TR_NOOP("Error (\")"), "U (\")"), rows,
+                        QT_TR_NOOP("Error = indicated − true angle, about its mean over the "
+                                   "full turn (the steps of a full turn close at 360°)."))
+        point_columns = (("step", np.arange(n, dtype=float)), ("step_deg", first),
+                         ("error_arcsec", values), ("expanded_uncertainty_arcsec", big_u))
+        point = QT_TR_NOOP("step {k}")
+        names = [message(point, k=k) for k in range(n)]
+        what = QT_TR_NOOP("encoder error")
+        from models.crosscal.analysis import encoder_figures
+
+        figures = encoder_figures(result)
+        stat_rows = [(QT_TR_NOOP("Error"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
+                      message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\"")),
+                     (QT_TR_NOOP("JJF 1115 division error"),
+                      f"{figures['division_error_jjf1115']:.3f}\"", "")]
+        if math.isfinite(figures["repeatability_jjf1115"]):
+            stat_rows.append((QT_TR_NOOP("JJF 1115 repeatability (largest s over the steps)"),
+                              f"{figures['repeatability_jjf1115']:.3f}\"",
+                              QT_TR_NOOP("the mountings as repeated runs")))
+        iso = [f"{k[7:]} = {v:.3f}\"" for k, v in figures.items()
+               if k.startswith("iso230_") and math.isfinite(v)]
+        if iso:
+            stat_rows.append((QT_TR_NOOP("ISO 230-2 (unidirectional)"), ", ".join(iso),
+                              QT_TR_NOOP("the mountings as repeated runs; deviation = −error")))
+        plots = [encoder_figure(result)]
+    else:
+        u1 = result.polygon_u_from_face1_arcsec()
+        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", f"{values[i]:+.3f}", f"{big_u[i]:.3f}",
+                 f"{values[i] - values[0]:+.3f}", f"{u1[i]:.3f}") for i in range(n)]
+        results = Table(QT_TR_NOOP("Face deviations"),
+                        (QT_TR_NOOP("Face"), QT_TR_NOOP("Nominal (°)"),
+                         QT_TR_NOOP("Deviation (\")"), "U (\")", QT_TR_NOOP("From face 1 (\")"),
+                         QT_TR_NOOP("U from face 1 (\")")), rows,
+                        QT_TR_NOOP("Deviation = the face's angle from face 1 minus its nominal, "
+                                   "stated about the mean over the faces (the faces close at "
+                                   "360°); the last two columns state it from face 1."))
+        point_columns = (("face", np.arange(1, n + 1, dtype=float)),
+                         ("nominal_deg", np.arange(n) * 360.0 / n), ("deviation_arcsec", values),
+                         ("expanded_uncertainty_arcsec", big_u),
+                         ("deviation_from_face1_arcsec", values - values[0]),
+                         ("expanded_uncertainty_from_face1_arcsec", u1))
+        point = QT_TR_NOOP("face {k}")
+        names = [message(point, k=k + 1) for k in range(n)]
+        what = QT_TR_NOOP("face deviation")
+        stat_rows = [(QT_TR_NOOP("Deviation"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
+                      message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        plots = [polygon_figure(result)]
+    tolerance = metadata.tolerance_in("arcsec")
+    conformity = decide_conformity(values, budget, tolerance,
+                                   metadata.decision_rule, metadata.decision_quantity,
+                                   what=what, point_names=names)
+    stat_rows[1:1] = decision_rows(conformity, budget,
+                                   QT_TR_NOOP("steps") if item == "encoder" else QT_TR_NOOP("faces"))
+    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
+                       stat_rows)
+    plots += [residual_figure(result), closure_figure(result)]
+    worst = budget.worst_index
+    statements = (
+        QT_TR_NOOP("No calibrated reference enters these results: the polygon and the encoder "
+                   "are calibrated against each other by the closure of the circle. The "
+                   "autocollimator reads near its null, where its scale error does not matter."),
+        message(QT_TR_NOOP("The {other} was calibrated in the same run; the largest correlation "
+                           "between its results and these is {r}."),
+                other=message(QT_TR_NOOP("polygon") if item == "encoder"
+                              else QT_TR_NOOP("encoder")),
+                r=f"{result.cross_correlation():.2f}"))
+    return CertificateDocument(
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget,
+        budget_point=message(point, k=worst if item == "encoder" else worst + 1),
+        conformity=conformity, tolerance=tolerance,
+        plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
+        point_columns=point_columns, statements=statements)

@@ -1,0 +1,1 @@
+"""Cross-calibration (polygon + encoder) workbench: presenter and view."""

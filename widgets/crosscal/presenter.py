@@ -1,0 +1,58 @@
+"""Cross-calibration (polygon + encoder) workbench: the presenter (no widgets: it asks
+its view)."""
+
+from __future__ import annotations
+
+from models.crosscal import plots
+from models.crosscal.analysis import CROSSCAL, CrossCalResult
+from models.crosscal.readings import matrix_rows
+from models.readings.tabular_import import MissingColumnError
+from widgets.crosscal.view import CrossCalView
+from widgets.i18n import explained, tr, translated
+from widgets.workbench_presenter import WorkbenchPresenter
+
+
+class CrossCalPresenter(WorkbenchPresenter):
+    """Encoder errors and face deviations, with their U, on every edit."""
+
+    view_class = CrossCalView
+
+    def __init__(self, view: CrossCalView | None = None, parent=None) -> None:
+        super().__init__(CROSSCAL, view, parent)
+
+    def show_result(self, result: CrossCalResult) -> None:
+        self.table_model.set_highlight_rows({int(i) for i in result.readings.sheet_rows[
+            result.readings.closure] - 1})
+        self.view.show_figures(*self.in_unit(
+            plots.encoder_figure(result), plots.polygon_figure(result),
+            plots.residual_figure(result), plots.closure_figure(result)))
+        self.view.set_reference_enabled(result.solution.polygon_deviation_arcsec is not None)
+
+    def clear_result(self) -> None:
+        self.table_model.set_highlight_rows(set())
+        self.view.clear_result()
+        self.view.set_reference_enabled(False)
+
+    def _rows_by_mapping(self, exc: MissingColumnError) -> list[list[str]] | None:
+        """A file whose headers name no column: the n × n matrix labs write (rows mountings,
+        columns positions) is taken as it is; anything else goes to the column mapping."""
+        rows = matrix_rows(exc.table)
+        return rows if rows is not None else super()._rows_by_mapping(exc)
+
+    def save_polygon_reference_dialog(self) -> str:
+        if self.result is None:
+            return ""
+        path = self.view.ask_reference_path()
+        return self.save_polygon_reference(path) if path else ""
+
+    def save_polygon_reference(self, path: str) -> str:
+        """The face deviations (from face 1, with U) as the polygon workbench loads a
+        certificate; a design that does not determine them is told, not written."""
+        try:
+            what = self.kind.correction_table(self.result, self._settings, path)
+        except (ValueError, OSError) as exc:
+            self.view.tell(tr("Cannot save the face deviations"), explained(exc))
+            return ""
+        self.view.show_status(tr("{what} written: load them in the polygon workbench with "
+                                 "'Load polygon certificate…'").format(what=translated(what)))
+        return what
