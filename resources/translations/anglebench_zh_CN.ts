@@ -1,6825 +1,6825 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN" sourcelanguage="en">
-    <context>
-        <name />
-        <message>
-            <source>A [deg]</source>
-            <translation>A [°]</translation>
-        </message>
-        <message>
-            <source>A1 (sin)</source>
-            <translation>A1 (sin)</translation>
-        </message>
-        <message>
-            <source>AC vertical − zero</source>
-            <translation>自准直仪垂直读数 − 零位</translation>
-        </message>
-        <message>
-            <source>AC x ["]</source>
-            <translation>自准直仪 x ["]</translation>
-        </message>
-        <message>
-            <source>AC y ["]</source>
-            <translation>自准直仪 y ["]</translation>
-        </message>
-        <message>
-            <source>A_down</source>
-            <translation>A↓</translation>
-        </message>
-        <message>
-            <source>A_up</source>
-            <translation>A↑</translation>
-        </message>
-        <message>
-            <source>Admissible axis tilt: the inversion's other root (ψ near 90°) is rejected</source>
-            <translation>允许的轴系倾斜：反解的另一个根（ψ 接近 90°）被舍弃</translation>
-        </message>
-        <message>
-            <source>Admissible elevation of the mirror normal</source>
-            <translation>反射镜法线允许的俯仰角</translation>
-        </message>
-        <message>
-            <source>B1 (cos)</source>
-            <translation>B1 (cos)</translation>
-        </message>
-        <message>
-            <source>Beckhoff TwinCAT Tc2_MC2 position compensation table</source>
-            <translation>Beckhoff TwinCAT Tc2_MC2 位置补偿表</translation>
-        </message>
-        <message>
-            <source>CSV (position, compensation)</source>
-            <translation>CSV（位置，补偿值）</translation>
-        </message>
-        <message>
-            <source>Closure limit per grade, comma-separated; default half the grade's accuracy</source>
-            <translation>各等级的闭合差限值，以逗号分隔；默认为该等级准确度的一半</translation>
-        </message>
-        <message>
-            <source>E / V [deg]</source>
-            <translation>E / V [°]</translation>
-        </message>
-        <message>
-            <source>E residual</source>
-            <translation>E 残差</translation>
-        </message>
-        <message>
-            <source>Encoder: grating lines per revolution; errors in arcsec of shaft angle (one period = 1296000"/L)</source>
-            <translation>编码器：每转光栅线数；误差以轴角的角秒表示（一个周期 = 1296000"/L）</translation>
-        </message>
-        <message>
-            <source>English</source>
-            <translation>English（英文）</translation>
-        </message>
-        <message>
-            <source>Entries of the correction table over the measured phase</source>
-            <translation>修正表在所测相位上的条目数</translation>
-        </message>
-        <message>
-            <source>Equal steps, N samples a period. 0: the phase from the θ column or, without one, estimated from the signals (Heydemann); a record that does not follow N is refused</source>
-            <translation>等间隔，每周期 N 个采样。0：相位取自 θ 列，若无该列则由信号估计（Heydemann）；不符合 N 的记录被拒绝</translation>
-        </message>
-        <message>
-            <source>Every set's errors are taken from this one reading of set 1, so reversal and repeatability between sets are kept</source>
-            <translation>各组的误差都以第 1 组的这一读数为零位，从而保留组间的反向差和重复性</translation>
-        </message>
-        <message>
-            <source>Exact linear least squares, or the seed's particle swarm (first period only, for comparison)</source>
-            <translation>精确线性最小二乘，或论文中的粒子群算法（仅第一个周期，用于比较）</translation>
-        </message>
-        <message>
-            <source>FANUC pitch error compensation (parameters 3620–3625)</source>
-            <translation>FANUC 螺距误差补偿（参数 3620–3625）</translation>
-        </message>
-        <message>
-            <source>Faces of the polygon; 0: as many as the first set has positions</source>
-            <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
-        </message>
-        <message>
-            <source>The sine and cosine signals of the encoder's grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
-            <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
-        </message>
-        <message>
-            <source>The phase was estimated from the signals, with no phase reference: offsets, amplitude ratio and quadrature error are identified; a pure phase distortion of the grating is not observable this way and is not in the error stated.</source>
-            <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
-        </message>
-        <message>
-            <source>sample</source>
-            <translation>采样点</translation>
-        </message>
-        <message>
-            <source>Signal noise</source>
-            <translation>信号噪声</translation>
-        </message>
-        <message>
-            <source>σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, converted to phase</source>
-            <translation>由拟合残差得 σ = {sin} mV（sin）、{cos} mV（cos），换算为相位</translation>
-        </message>
-        <message>
-            <source>Fitted model (correction table)</source>
-            <translation>拟合模型（修正表）</translation>
-        </message>
-        <message>
-            <source>covariance of the fitted parameters propagated to the modelled phase error</source>
-            <translation>拟合参数的协方差传播至模型相位误差</translation>
-        </message>
-        <message>
-            <source>{channel}: offset A₀</source>
-            <translation>{channel}：直流偏置 A₀</translation>
-        </message>
-        <message>
-            <source>{channel}: R², residual RMS</source>
-            <translation>{channel}：R²、残差均方根</translation>
-        </message>
-        <message>
-            <source>the certificate details say a correction table with checksum {as_left_table_sha256}… was loaded into the encoder, but this analysis's table is {sha256}…: export and load this table, or clear the checksum</source>
-            <extracomment>a record of up to this many samples is printed whole on the certificate</extracomment>
-            <translation>证书信息称已将校验和为 {as_left_table_sha256}… 的修正表载入编码器，但本次分析的修正表为 {sha256}…：请导出并载入本修正表，或清除该校验和</translation>
-        </message>
-        <message>
-            <source>Signal parameters identified</source>
-            <translation>信号参数辨识结果</translation>
-        </message>
-        <message>
-            <source>Parameter</source>
-            <translation>参数</translation>
-        </message>
-        <message>
-            <source>Value</source>
-            <translation>量值</translation>
-        </message>
-        <message>
-            <source>Sample</source>
-            <translation>采样点</translation>
-        </message>
-        <message>
-            <source>Phase θ (°)</source>
-            <translation>相位 θ (°)</translation>
-        </message>
-        <message>
-            <source>As found ({unit})</source>
-            <translation>校准前 ({unit})</translation>
-        </message>
-        <message>
-            <source>Correction ({unit})</source>
-            <translation>修正值 ({unit})</translation>
-        </message>
-        <message>
-            <source>Compensated ({unit})</source>
-            <translation>补偿后 ({unit})</translation>
-        </message>
-        <message>
-            <source>U as left ({unit})</source>
-            <translation>U 交付状态 ({unit})</translation>
-        </message>
-        <message>
-            <source>U as found ({unit})</source>
-            <translation>U 校准前 ({unit})</translation>
-        </message>
-        <message>
-            <source>phase from {n} equal steps a period</source>
-            <translation>相位取自每周期 {n} 等分步长</translation>
-        </message>
-        <message>
-            <source>peak-to-peak {ptp} ({share} % of a period)</source>
-            <translation>峰峰值 {ptp}（为一个周期的 {share} %）</translation>
-        </message>
-        <message>
-            <source>Samples</source>
-            <translation>采样点数</translation>
-        </message>
-        <message>
-            <source>Interpolation error as found</source>
-            <translation>校准前细分误差</translation>
-        </message>
-        <message>
-            <source>After compensation (as left)</source>
-            <translation>补偿后（交付状态）</translation>
-        </message>
-        <message>
-            <source>After compensation (not applied to the item)</source>
-            <translation>补偿后（未施加于被校对象）</translation>
-        </message>
-        <message>
-            <source>Offsets, amplitude ratio, quadrature error</source>
-            <translation>直流偏置、幅值比、正交误差</translation>
-        </message>
-        <message>
-            <source>ratio {ratio}, quadrature {quadrature}</source>
-            <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
-        </message>
-        <message>
-            <source>as-found interpolation error</source>
-            <translation>校准前细分误差</translation>
-        </message>
-        <message>
-            <source>samples</source>
-            <translation>采样点</translation>
-        </message>
-        <message>
-            <source>Correction table</source>
-            <translation>修正表</translation>
-        </message>
-        <message>
-            <source>{n} entries</source>
-            <translation>{n} 项</translation>
-        </message>
-        <message>
-            <source>Drift of sin A1 over the periods</source>
-            <translation>各周期 sin 通道 A1 的漂移</translation>
-        </message>
-        <message>
-            <source>{n} periods fitted one by one</source>
-            <translation>逐个拟合 {n} 个周期</translation>
-        </message>
-        <message>
-            <source>Statistics</source>
-            <translation>统计结果</translation>
-        </message>
-        <message>
-            <source>Quantity</source>
-            <translation>量</translation>
-        </message>
-        <message>
-            <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left.</source>
-            <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态。</translation>
-        </message>
-        <message>
-            <source>Fringe signal analysis</source>
-            <translation>莫尔条纹信号分析</translation>
-        </message>
-        <message>
-            <source>sample {sample}</source>
-            <translation>第 {sample} 个采样点</translation>
-        </message>
-        <message>
-            <source>positional deviation x = actual position − target (ISO 230-2), i.e. reference − indicated: the negative of an error of indication; compensation = −x</source>
-            <extracomment>ISO 230-2's sign: x = actual − target. The axis's own scale indicates the target when it stops and the reference reads the actual position, so x = reference − indicated: the negative of an error of indication (the other workbenches' sign).</extracomment>
-            <translation>位置偏差 x = 实际位置 − 目标位置（ISO 230-2），即 参考值 − 示值：为示值误差的负值；补偿值 = −x</translation>
-        </message>
-        <message>
-            <source>GB/T 17421.2-2016 (identical to ISO 230-2:2014)</source>
-            <extracomment>ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target. target unit → its symbol deviation unit → (target unit it belongs to, deviation units per target unit, symbol) the standard applied → its title on the certificate</extracomment>
-            <translation>GB/T 17421.2-2016（等同 ISO 230-2:2014）</translation>
-        </message>
-        <message>
-            <source>ISO 230-2:2014</source>
-            <translation>ISO 230-2:2014</translation>
-        </message>
-        <message>
-            <source>Interferometer: displacement per fringe (316.4 nm for λ/2 of a HeNe laser); errors then in nm. 0: an encoder</source>
-            <translation>干涉仪：每个条纹的位移（HeNe 激光 λ/2 为 316.4 nm）；误差以 nm 表示。0：编码器</translation>
-        </message>
-        <message>
-            <source>LinuxCNC COMP_FILE type 0</source>
-            <translation>LinuxCNC COMP_FILE 类型 0</translation>
-        </message>
-        <message>
-            <source>Before → after compensation ({name}, {count} common targets): </source>
-            <extracomment>the figures compared when both logs are bidirectional (A, B, E first: the issue's three) per direction otherwise</extracomment>
-            <translation>补偿前 → 补偿后（{name}，{count} 个共同目标位置）：</translation>
-        </message>
-        <message>
-            <source>; {count} reading(s) at targets only one log has left out</source>
-            <translation>；仅一份记录含有的目标位置上的 {count} 个读数未计入</translation>
-        </message>
-        <message>
-            <source>the log after compensation has targets in {after}, the log before in {before}: not the same axis set-up</source>
-            <translation>补偿后记录的目标位置单位为 {after}，补偿前记录为 {before}：不是同一轴的设置</translation>
-        </message>
-        <message>
-            <source>the log after compensation has deviations in {after}, the log before in {before}: analyse both in the same deviation unit</source>
-            <translation>补偿后记录的偏差单位为 {after}，补偿前记录为 {before}：请以相同的偏差单位评定两者</translation>
-        </message>
-        <message>
-            <source>the log after compensation has no target in common with the log before: they cannot be compared</source>
-            <translation>补偿后记录与补偿前记录没有共同的目标位置：无法比较</translation>
-        </message>
-        <message>
-            <source>the two logs have no approach direction in common: they cannot be compared</source>
-            <translation>两份记录没有共同的趋近方向：无法比较</translation>
-        </message>
-        <message>
-            <source>Mean positional deviation with ±2s</source>
-            <translation>平均位置偏差及 ±2s</translation>
-        </message>
-        <message>
-            <source>Odd harmonics only (the seed's model), or every order up to the highest</source>
-            <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
-        </message>
-        <message>
-            <source>Repeatability (mean of {sets} sets)</source>
-            <translation>重复性（{sets} 个测回的平均）</translation>
-        </message>
-        <message>
-            <source>Repeatability (mean of 1 set)</source>
-            <translation>重复性（1 个测回）</translation>
-        </message>
-        <message>
-            <source>pooled standard deviation {s} of the sets about their direction's mean, {dof} degrees of freedom</source>
-            <translation>各测回相对于同方向平均值的合并标准偏差 {s}，自由度 {dof}</translation>
-        </message>
-        <message>
-            <source>Autocollimator reading noise (mean of {sets} sets)</source>
-            <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
-        </message>
-        <message>
-            <source>Autocollimator reading noise (mean of 1 set)</source>
-            <translation>自准直仪读数噪声（1 个测回）</translation>
-        </message>
-        <message>
-            <source>scatter of the vertical readings about the tilt fits, {dof} degrees of freedom (no direction was measured twice)</source>
-            <translation>竖直读数相对于塔差拟合的分散性，自由度 {dof}（没有方向被测量两次）</translation>
-        </message>
-        <message>
-            <source>{note}, divided by √{m}</source>
-            <translation>{note}，除以 √{m}</translation>
-        </message>
-        <message>
-            <source>Zero reading (face {face}, set 1)</source>
-            <translation>零位读数（第 {face} 面，第 1 测回）</translation>
-        </message>
-        <message>
-            <source>one reading shared by every set: not reduced</source>
-            <translation>各测回共用的一个读数：不因平均而减小</translation>
-        </message>
-        <message>
-            <source>spread linearly and removed, half the drift left</source>
-            <translation>线性分配并扣除，余下一半漂移</translation>
-        </message>
-        <message>
-            <source>not removed, up to the whole drift</source>
-            <translation>未扣除，最大为全部漂移</translation>
-        </message>
-        <message>
-            <source>Closure drift</source>
-            <translation>闭合漂移</translation>
-        </message>
-        <message>
-            <source>closures {closures} beyond their reading noise; {how}</source>
-            <translation>闭合差 {closures} 超出其读数噪声；{how}</translation>
-        </message>
-        <message>
-            <source>face or reading</source>
-            <translation>面或读数</translation>
-        </message>
-        <message>
-            <source>Pyramidal correction (ψ, ω)</source>
-            <translation>塔差修正（ψ, ω）</translation>
-        </message>
-        <message>
-            <source>the certificate details give a tolerance of ±{tolerance_arcsec}" but the workbench is set to grade {grade} (±{tol}"): change the grade or clear the tolerance in the details</source>
-            <translation>证书信息给出的允差为 ±{tolerance_arcsec}"，但工作台设为 {grade} 级（±{tol}"）：请修改等级，或清除证书信息中的允差</translation>
-        </message>
-        <message>
-            <source>the certificate details say '{item_grade}' but the workbench is set to grade {grade}: make them agree</source>
-            <translation>证书信息为 '{item_grade}'，但工作台设为 {grade} 级：请使两者一致</translation>
-        </message>
-        <message>
-            <source>with the face numbering</source>
-            <translation>与面序号同向</translation>
-        </message>
-        <message>
-            <source>against the face numbering</source>
-            <translation>与面序号反向</translation>
-        </message>
-        <message>
-            <source>Faces</source>
-            <translation>面数</translation>
-        </message>
-        <message>
-            <source>Sets</source>
-            <translation>测回数</translation>
-        </message>
-        <message>
-            <source>Encoder grade</source>
-            <translation>编码器准确度等级</translation>
-        </message>
-        <message>
-            <source>Encoder counts</source>
-            <translation>编码器计数方向</translation>
-        </message>
-        <message>
-            <source>Common zero</source>
-            <translation>公共零位</translation>
-        </message>
-        <message>
-            <source>face {face} of set 1</source>
-            <translation>第 1 测回第 {face} 面</translation>
-        </message>
-        <message>
-            <source>spread linearly over each set and removed</source>
-            <translation>在各测回内线性分配并扣除</translation>
-        </message>
-        <message>
-            <source>reported, not removed</source>
-            <translation>给出，未扣除</translation>
-        </message>
-        <message>
-            <source>vertical along the polygon's axis (rolled with the tilt)</source>
-            <translation>竖直方向沿棱体轴线（随倾斜转动）</translation>
-        </message>
-        <message>
-            <source>Allowed pyramidal tilt</source>
-            <translation>允许塔差</translation>
-        </message>
-        <message>
-            <source>drift {drift} (within the limit)</source>
-            <translation>漂移 {drift}（在限值内）</translation>
-        </message>
-        <message>
-            <source>drift {drift} (OUTSIDE the limit)</source>
-            <translation>漂移 {drift}（超出限值）</translation>
-        </message>
-        <message>
-            <source>Set {set} (forward, from face {face}) closure</source>
-            <translation>第 {set} 测回（正向，自第 {face} 面起）闭合</translation>
-        </message>
-        <message>
-            <source>Set {set} (reverse, from face {face}) closure</source>
-            <translation>第 {set} 测回（反向，自第 {face} 面起）闭合</translation>
-        </message>
-        <message>
-            <source>Set {set} pyramidal tilt ψ</source>
-            <translation>第 {set} 测回塔差 ψ</translation>
-        </message>
-        <message>
-            <source>Set {set} tilt direction ω</source>
-            <translation>第 {set} 测回塔差方向 ω</translation>
-        </message>
-        <message>
-            <source>Set-up parameters identified</source>
-            <translation>安装参数辨识结果</translation>
-        </message>
-        <message>
-            <source>Results per position (mean of the two directions' means)</source>
-            <translation>各位置结果（正反两个方向平均值的平均）</translation>
-        </message>
-        <message>
-            <source>Results per position (mean of {sets} sets)</source>
-            <translation>各位置结果（{sets} 个测回的平均）</translation>
-        </message>
-        <message>
-            <source>Results per position (mean of 1 set)</source>
-            <translation>各位置结果（1 个测回）</translation>
-        </message>
-        <message>
-            <source>Position</source>
-            <translation>位置</translation>
-        </message>
-        <message>
-            <source>Nominal (°)</source>
-            <translation>标称值 (°)</translation>
-        </message>
-        <message>
-            <source>Raw error (")</source>
-            <translation>原始误差 (")</translation>
-        </message>
-        <message>
-            <source>Correction (")</source>
-            <translation>修正值 (")</translation>
-        </message>
-        <message>
-            <source>Corrected error (")</source>
-            <translation>修正后误差 (")</translation>
-        </message>
-        <message>
-            <source>Error = indicated − reference, from face {face} of set 1. Corrected = raw + correction; the correction removes the error the pyramidal tilt induces.</source>
-            <translation>误差 = 示值 − 参考值，以第 1 测回第 {face} 面为零位。修正后 = 原始 + 修正值；修正值消除塔差引起的误差。</translation>
-        </message>
-        <message>
-            <source>Raw error</source>
-            <translation>原始误差</translation>
-        </message>
-        <message>
-            <source>peak-to-peak {ptp}</source>
-            <translation>峰峰值 {ptp}</translation>
-        </message>
-        <message>
-            <source>Corrected error</source>
-            <translation>修正后误差</translation>
-        </message>
-        <message>
-            <source>Harmonics 1st / 2nd</source>
-            <translation>1 次 / 2 次谐波</translation>
-        </message>
-        <message>
-            <source>eccentricity / ellipticity</source>
-            <translation>偏心 / 椭圆度</translation>
-        </message>
-        <message>
-            <source>Repeatability (largest s over positions)</source>
-            <translation>重复性（各位置中最大的 s）</translation>
-        </message>
-        <message>
-            <source>Repeatability</source>
-            <translation>重复性</translation>
-        </message>
-        <message>
-            <source>not evaluated</source>
-            <translation>未评定</translation>
-        </message>
-        <message>
-            <source>the run is invalid (closure failed)</source>
-            <translation>本次测量无效（闭合不合格）</translation>
-        </message>
-        <message>
-            <source>positions</source>
-            <translation>各位置</translation>
-        </message>
-        <message>
-            <source>Polygon encoder test</source>
-            <translation>多面棱体编码器检测</translation>
-        </message>
-        <message>
-            <source>position {position}</source>
-            <translation>第 {position} 位置</translation>
-        </message>
-        <message>
-            <source>Set-up assumed: the autocollimator's vertical along the polygon's axis, rolled with its tilt, not along the shaft (the frame of Tian et al. 2015); the pyramidal correction is that paper's eqs 3–7.</source>
-            <translation>所假定的安置：自准直仪的竖直方向沿多面棱体轴线、随其倾斜转动，而非沿转轴（田留德等 2015 年论文的安置）；塔差修正按该论文式 3–7。</translation>
-        </message>
-        <message>
-            <source>{tilt} (levelled set-up, roll included; with the vertical along the polygon's axis: {worst} worst case over the tilt direction, {seed} at ω = 90°)</source>
-            <translation>{tilt}（调平安置，含滚转；竖直方向沿棱体轴线时：按倾斜方向的最不利情况 {worst}，ω = 90° 时 {seed}）</translation>
-        </message>
-        <message>
-            <source>{tilt} (worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015: {seed})</source>
-            <translation>{tilt}（按倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值：{seed}）</translation>
-        </message>
-        <message>
-            <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
-            <translation>第 1 测回第 {face} 面处 U 为零：所有误差均以该读数为起点，按定义其自身误差为零。</translation>
-        </message>
-        <message>
-            <source>Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method's reference; the allowed pyramidal tilt is derived from them (a third of the accuracy, worst case over the tilt direction).</source>
-            <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
-        </message>
-        <message>
-            <source>check figure</source>
-            <extracomment>where a case's expected value comes from</extracomment>
-            <translation>校核数值</translation>
-        </message>
-        <message>
-            <source>exact simulation</source>
-            <translation>精确仿真</translation>
-        </message>
-        <message>
-            <source>budget vs Monte Carlo</source>
-            <translation>不确定度评定与蒙特卡洛比较</translation>
-        </message>
-        <message>
-            <source>GUM budget u against the spread of {trials} simulated runs</source>
-            <translation>GUM 不确定度评定的 u 与 {trials} 次仿真测量的分散性比较</translation>
-        </message>
-        <message>
-            <source>ratio 1 ± {tolerance}, worst point within {point} %</source>
-            <translation>比值 1 ± {tolerance}，最差点在 {point} % 以内</translation>
-        </message>
-        <message>
-            <source>ratio {ratio}, worst point {worst} %</source>
-            <translation>比值 {ratio}，最差点 {worst} %</translation>
-        </message>
-        <message>
-            <source>ζ spans ±187.9" (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)</source>
-            <translation>ζ 的范围为 ±187.9"（ψ = 3°，α = 45°，β = 2°，θ = −20…20°）</translation>
-        </message>
-        <message>
-            <source>largest spread of ζ over α at one θ</source>
-            <translation>同一 θ 下 ζ 随 α 的最大变化范围</translation>
-        </message>
-        <message>
-            <source>the seed's experiment: ζ from −301"</source>
-            <translation>原文实验：ζ 自 −301"</translation>
-        </message>
-        <message>
-            <source>the seed's experiment: ζ to +423"</source>
-            <translation>原文实验：ζ 至 +423"</translation>
-        </message>
-        <message>
-            <source>3-D simulation, no noise: |corrected − true error|</source>
-            <translation>三维仿真，无噪声：|修正后误差 − 真实误差|</translation>
-        </message>
-        <message>
-            <source>3-D simulation, no noise: |ψ, α, β − set-up| (°)</source>
-            <translation>三维仿真，无噪声：|ψ、α、β − 设定值|（°）</translation>
-        </message>
-        <message>
-            <source>sign: an axis indicating 1e-5 too much reads + at +20°</source>
-            <translation>符号：示值偏大 1e-5 的轴系在 +20° 处读数为正</translation>
-        </message>
-        <message>
-            <source>largest |ε_x| at ψ = 10′, ω = 90°</source>
-            <translation>ψ = 10′、ω = 90° 时 |ε_x| 的最大值</translation>
-        </message>
-        <message>
-            <source>ε_x/ψ² at θ = 111° (×1e-5)</source>
-            <translation>θ = 111° 处的 ε_x/ψ²（×1e-5）</translation>
-        </message>
-        <message>
-            <source>ε_x/ψ² at θ = 179° (×1e-6)</source>
-            <translation>θ = 179° 处的 ε_x/ψ²（×1e-6）</translation>
-        </message>
-        <message>
-            <source>ε_y spans 2ψ</source>
-            <translation>ε_y 的范围为 2ψ</translation>
-        </message>
-        <message>
-            <source>largest ε_x/ψ² over every direction (×1e-6)</source>
-            <translation>所有方向上 ε_x/ψ² 的最大值（×1e-6）</translation>
-        </message>
-        <message>
-            <source>3-D simulation (ψ = 480″, counting against the faces, zero through 360°): |corrected − true error|</source>
-            <translation>三维仿真（ψ = 480″，计数方向与面序相反，零位跨越 360°）：|修正后误差 − 真实误差|</translation>
-        </message>
-        <message>
-            <source>3-D simulation: a constant 2″ backlash is the reversal B</source>
-            <translation>三维仿真：恒定 2″ 的回程间隙即反向差 B</translation>
-        </message>
-        <message>
-            <source>3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = 0.03″: RMS of corrected − true error (2σ)</source>
-            <translation>三维仿真，16 种设置，12–72 面，ψ 300–1200″，σ = 0.03″：修正后误差 − 真实误差的均方根（2σ）</translation>
-        </message>
-        <message>
-            <source>Table 1's signals: peak-to-peak interpolation error</source>
-            <translation>表 1 的信号：细分误差峰峰值</translation>
-        </message>
-        <message>
-            <source>Table 1's signals: error left after compensation (peak-to-peak)</source>
-            <translation>表 1 的信号：补偿后剩余误差（峰峰值）</translation>
-        </message>
-        <message>
-            <source>sampled signals with a true phase: |raw error − true error|</source>
-            <translation>带真实相位的采样信号：|原始误差 − 真实误差|</translation>
-        </message>
-        <message>
-            <source>sampled signals with a true phase: |offsets − truth| (V)</source>
-            <translation>带真实相位的采样信号：|直流偏置 − 真值|（V）</translation>
-        </message>
-        <message>
-            <source>Positioning (axis)</source>
-            <translation>定位（轴线）</translation>
-        </message>
-        <message>
-            <source>axis without scatter: reversal B = lost motion</source>
-            <translation>无分散的轴系：反向差 B = 失动量</translation>
-        </message>
-        <message>
-            <source>axis without scatter: mean reversal B̄ = −lost motion (axis lags)</source>
-            <translation>无分散的轴系：平均反向差 B̄ = −失动量（轴系滞后）</translation>
-        </message>
-        <message>
-            <source>axis without scatter: E↑ = range of the axis error</source>
-            <translation>无分散的轴系：E↑ = 轴系误差的范围</translation>
-        </message>
-        <message>
-            <source>axis without scatter: A = range of the axis error + lost motion</source>
-            <translation>无分散的轴系：A = 轴系误差的范围 + 失动量</translation>
-        </message>
-        <message>
-            <source>axis without scatter: VDI 3441 P = Pa + U</source>
-            <translation>无分散的轴系：VDI 3441 P = Pa + U</translation>
-        </message>
-        <message>
-            <source>compensation table loaded into the rig's controller: largest |mean deviation| left</source>
-            <translation>补偿表载入仿真装置的控制器后：剩余 |平均偏差| 的最大值</translation>
-        </message>
-        <message>
-            <source>R_down</source>
-            <translation>R↓</translation>
-        </message>
-        <message>
-            <source>R_up</source>
-            <translation>R↑</translation>
-        </message>
-        <message>
-            <source>Reversal value B_i = x̄↑ − x̄↓</source>
-            <translation>反向差值 B_i = x̄↑ − x̄↓</translation>
-        </message>
-        <message>
-            <source>Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0</source>
-            <translation>经纬仪对反射镜置零的行；0：θ 最接近 0 的行</translation>
-        </message>
-        <message>
-            <source>SINUMERIK 840D measuring system error compensation</source>
-            <translation>SINUMERIK 840D 测量系统误差补偿</translation>
-        </message>
-        <message>
-            <source>Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)</source>
-            <translation>两个趋近方向各一张表，或由两者平均值得到一张表（补偿值 = −平均偏差）</translation>
-        </message>
-        <message>
-            <source>Spacing of the compensation table in the target unit; 0: one entry at each target</source>
-            <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
-        </message>
-        <message>
-            <source>The controller's settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500 (ISG); axis=X (Mach4)</source>
-            <translation>控制器设置，以逗号分隔的“键=值”；各控制器可用的选项及其说明见导出时弹出的选项表</translation>
-        </message>
-        <message>
-            <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
-            <translation>一组测量回到第一面时显示的漂移：报告并计入不确定度，或在该组内线性分配并扣除（在证书上说明）</translation>
-        </message>
-        <message>
-            <source>The elevations identify the set-up without touching the axis' own error; the azimuth route absorbs any part of it that looks like the model</source>
-            <translation>俯仰角可在不影响轴系自身误差的情况下辨识安装误差；方位角途径会吸收轴系误差中与模型相似的部分</translation>
-        </message>
-        <message>
-            <source>The highest harmonic fitted to each channel</source>
-            <translation>每个通道拟合的最高次谐波</translation>
-        </message>
-        <message>
-            <source>The phase origin is arbitrary: the table is stated with its mean removed, or with its first entry zero (said in the exported file)</source>
-            <translation>相位原点是任意的：修正表去除其平均值，或使第一个条目为零（在导出文件中说明）</translation>
-        </message>
-        <message>
-            <source>The standard the certificate states and judges by; the JSON always has ISO 230-2 and VDI/DGQ 3441 both</source>
-            <translation>证书所依据并据以判定的标准；JSON 中总是同时给出 ISO 230-2 和 VDI/DGQ 3441</translation>
-        </message>
-        <message>
-            <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite's vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed's A − θ; the set-up's share of it, −ζ evaluated at the axis' true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
-            <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即原文 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
-        </message>
-        <message>
-            <source>elevation readings</source>
-            <extracomment>how the table names what the set-up was identified from (ident.method)</extracomment>
-            <translation>竖直读数</translation>
-        </message>
-        <message>
-            <source>azimuth readings</source>
-            <translation>水平读数</translation>
-        </message>
-        <message>
-            <source>reading (pointing)</source>
-            <translation>读数（瞄准）</translation>
-        </message>
-        <message>
-            <source>Reading repeatability</source>
-            <translation>读数重复性</translation>
-        </message>
-        <message>
-            <source>standard deviation of the vertical readings about the fit, {n} readings, {dof} degrees of freedom; taken for the azimuth too</source>
-            <translation>竖直读数相对于拟合的标准偏差，{n} 个读数，自由度 {dof}；水平读数亦取此值</translation>
-        </message>
-        <message>
-            <source>Reference reading (θ₀)</source>
-            <translation>参考读数（θ₀）</translation>
-        </message>
-        <message>
-            <source>Set-up model ζ (ψ, α, β)</source>
-            <translation>安装模型 ζ（ψ, α, β）</translation>
-        </message>
-        <message>
-            <source>covariance of the identified parameters propagated through ζ(θ)</source>
-            <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
-        </message>
-        <message>
-            <source>Axis tilt ψ</source>
-            <translation>轴倾角 ψ</translation>
-        </message>
-        <message>
-            <source>Tilt direction α</source>
-            <translation>倾斜方向 α</translation>
-        </message>
-        <message>
-            <source>Mirror normal β</source>
-            <translation>反射镜法线 β</translation>
-        </message>
-        <message>
-            <source>Identified from</source>
-            <translation>辨识依据</translation>
-        </message>
-        <message>
-            <source>{method} readings</source>
-            <translation>{method} 读数</translation>
-        </message>
-        <message>
-            <source>R² of the fit</source>
-            <translation>拟合 R²</translation>
-        </message>
-        <message>
-            <source>Residual RMS</source>
-            <translation>残差均方根</translation>
-        </message>
-        <message>
-            <source>Reference point θ₀</source>
-            <translation>参考点 θ₀</translation>
-        </message>
-        <message>
-            <source>Results per point (corrected = raw + correction)</source>
-            <translation>各测点结果（修正后 = 原始 + 修正值）</translation>
-        </message>
-        <message>
-            <source>Points</source>
-            <translation>测点数</translation>
-        </message>
-        <message>
-            <source>peak-to-peak {ptp}, RMS {rms}</source>
-            <translation>峰峰值 {ptp}，均方根 {rms}</translation>
-        </message>
-        <message>
-            <source>points</source>
-            <translation>各测点</translation>
-        </message>
-        <message>
-            <source>Theodolite run</source>
-            <translation>经纬仪测量</translation>
-        </message>
-        <message>
-            <source>U is zero at the reference reading (row {row}, θ₀ = {theta}): the theodolite was zeroed there, so its error is zero by definition.</source>
-            <translation>参考读数处 U 为零（第 {row} 行，θ₀ = {theta}）：经纬仪在该点置零，按定义其误差为零。</translation>
-        </message>
-        <message>
-            <source>Unit of the deviations and of every figure; arcsec or µrad for a rotary axis, µm or nm for a linear one</source>
-            <translation>偏差及各项结果的单位；回转轴用角秒或 µrad，直线轴用 µm 或 nm</translation>
-        </message>
-        <message>
-            <source>Unit of the target (and measured) positions</source>
-            <translation>目标（及实测）位置的单位</translation>
-        </message>
-        <message>
-            <source>VDI/DGQ 3441:1977</source>
-            <translation>VDI/DGQ 3441:1977</translation>
-        </message>
-        <message>
-            <source>Whether the encoder counts up or down as the face numbers rise; auto finds it from the readings and says so</source>
-            <translation>面号增加时编码器是增计数还是减计数；自动模式由读数判断并给出说明</translation>
-        </message>
-        <message>
-            <source>after compensation</source>
-            <translation>补偿后</translation>
-        </message>
-        <message>
-            <source>against the face numbers</source>
-            <translation>与面号相反</translation>
-        </message>
-        <message>
-            <source>all</source>
-            <translation>全部</translation>
-        </message>
-        <message>
-            <source>amplitude</source>
-            <translation>幅值</translation>
-        </message>
-        <message>
-            <source>arcseconds</source>
-            <translation>角秒</translation>
-        </message>
-        <message>
-            <source>as-found peak-to-peak</source>
-            <translation>补偿前峰峰值</translation>
-        </message>
-        <message>
-            <source>at the targets</source>
-            <translation>在目标位置</translation>
-        </message>
-        <message>
-            <source>auto (from the readings)</source>
-            <translation>自动（由读数判断）</translation>
-        </message>
-        <message>
-            <source>auto (θ nearest 0)</source>
-            <translation>自动（θ 最接近 0）</translation>
-        </message>
-        <message>
-            <source>azimuth errors (absorbs axis error!)</source>
-            <translation>方位角误差（会吸收轴系误差！）</translation>
-        </message>
-        <message>
-            <source>before compensation</source>
-            <translation>补偿前</translation>
-        </message>
-        <message>
-            <source>bidirectional mean M_i</source>
-            <translation>双向平均 M_i</translation>
-        </message>
-        <message>
-            <source>bound |β| ≤</source>
-            <translation>界限 |β| ≤</translation>
-        </message>
-        <message>
-            <source>bound |ψ| ≤</source>
-            <translation>界限 |ψ| ≤</translation>
-        </message>
-        <message>
-            <source>closure drift</source>
-            <translation>闭合漂移</translation>
-        </message>
-        <message>
-            <source>closure limits grades 1–7</source>
-            <translation>1–7 级闭合差限值</translation>
-        </message>
-        <message>
-            <source>common zero at face</source>
-            <translation>公共零位所在面</translation>
-        </message>
-        <message>
-            <source>compensated</source>
-            <translation>补偿后</translation>
-        </message>
-        <message>
-            <source>compensated (unit circle × A1)</source>
-            <translation>补偿后（单位圆 × A1）</translation>
-        </message>
-        <message>
-            <source>compensated peak-to-peak</source>
-            <translation>补偿后峰峰值</translation>
-        </message>
-        <message>
-            <source>compensation format</source>
-            <translation>补偿文件格式</translation>
-        </message>
-        <message>
-            <source>compensation step</source>
-            <translation>补偿间隔</translation>
-        </message>
-        <message>
-            <source>compensation tables</source>
-            <translation>补偿表</translation>
-        </message>
-        <message>
-            <source>controller options</source>
-            <translation>控制器选项</translation>
-        </message>
-        <message>
-            <source>corrected</source>
-            <translation>修正后</translation>
-        </message>
-        <message>
-            <source>Raw error, set-up model and corrected error</source>
-            <translation>原始误差、安装模型和修正后误差</translation>
-        </message>
-        <message>
-            <source>corrected = raw + ζ</source>
-            <translation>修正后 = 原始 + ζ</translation>
-        </message>
-        <message>
-            <source>Fit residuals (vertical readings)</source>
-            <translation>拟合残差（竖直读数）</translation>
-        </message>
-        <message>
-            <source>E residual (")</source>
-            <translation>E 残差 (")</translation>
-        </message>
-        <message>
-            <source>corrected e − (ε_x − ε_x,zero)</source>
-            <translation>修正后 e − (ε_x − ε_x,zero)</translation>
-        </message>
-        <message>
-            <source>corrected peak-to-peak</source>
-            <translation>修正后峰峰值</translation>
-        </message>
-        <message>
-            <source>correction table size</source>
-            <translation>修正表大小</translation>
-        </message>
-        <message>
-            <source>correction −(ε_x − ε_x,zero)</source>
-            <translation>修正值 −(ε_x − ε_x,zero)</translation>
-        </message>
-        <message>
-            <source>degrees (rotary axis)</source>
-            <translation>度（回转轴）</translation>
-        </message>
-        <message>
-            <source>deviation</source>
-            <translation>偏差</translation>
-        </message>
-        <message>
-            <source>deviation unit</source>
-            <translation>偏差单位</translation>
-        </message>
-        <message>
-            <source>dir [+/−]</source>
-            <translation>方向 [+/−]</translation>
-        </message>
-        <message>
-            <source>error</source>
-            <translation>误差</translation>
-        </message>
-        <message>
-            <source>electrical phase θ (periods)</source>
-            <translation>电相位 θ（周期）</translation>
-        </message>
-        <message>
-            <source>error, est. phase</source>
-            <translation>误差（估计相位）</translation>
-        </message>
-        <message>
-            <source>Interpolation error before and after compensation</source>
-            <translation>补偿前后的细分误差</translation>
-        </message>
-        <message>
-            <source>Fit residuals</source>
-            <translation>拟合残差</translation>
-        </message>
-        <message>
-            <source>residual (mV)</source>
-            <translation>残差 (mV)</translation>
-        </message>
-        <message>
-            <source>Signals and their fit</source>
-            <translation>信号及其拟合</translation>
-        </message>
-        <message>
-            <source>Lissajous figure</source>
-            <translation>李萨如图</translation>
-        </message>
-        <message>
-            <source>Harmonics of the two channels</source>
-            <translation>两路信号的谐波</translation>
-        </message>
-        <message>
-            <source>Compensated error in the first period, with U</source>
-            <translation>第一个周期内补偿后误差及其 U</translation>
-        </message>
-        <message>
-            <source>phase θ (°)</source>
-            <translation>相位 θ (°)</translation>
-        </message>
-        <message>
-            <source>compensated ± U</source>
-            <translation>补偿后 ± U</translation>
-        </message>
-        <message>
-            <source>phase within the period (°); the motion stood or turned back</source>
-            <translation>周期内相位 (°)；运动曾停止或反向</translation>
-        </message>
-        <message>
-            <source>中文 + English (headings and labels)</source>
-            <translation>中文 + English（标题和标签双语）</translation>
-        </message>
-        <message>
-            <source>elevation E</source>
-            <translation>俯仰角 E</translation>
-        </message>
-        <message>
-            <source>CSV always works; LinuxCNC's joint compensation file (COMP_FILE_TYPE = 0, documented in the LinuxCNC INI configuration manual) lists nominal, actual forward and actual reverse positions; the controllers' formats follow their manuals, and a table the controller would reject or misapply is refused naming the rule</source>
-            <translation>CSV 始终可用；LinuxCNC 关节补偿文件（COMP_FILE_TYPE = 0，见 LinuxCNC INI 配置手册）列出名义位置、正向实际位置和反向实际位置；各控制器格式遵循其手册，控制器会拒绝或误用的表将被拒绝并指明所违反的规则</translation>
-        </message>
-        <message>
-            <source>HEIDENHAIN TNC .COM table (and .CMA)</source>
-            <translation>HEIDENHAIN TNC .COM 补偿表（及 .CMA）</translation>
-        </message>
-        <message>
-            <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon's own axis, rolled with its tilt (the frame of the method's paper, Tian et al. 2015). The pyramidal correction is that frame's; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
-            <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
-        </message>
-        <message>
-            <source>ISG kernel leadscrew error compensation list</source>
-            <translation>ISG 内核丝杠误差补偿列表</translation>
-        </message>
-        <message>
-            <source>Mach4 screw map</source>
-            <translation>Mach4 丝杠映射</translation>
-        </message>
-        <message>
-            <source>elevations (recommended)</source>
-            <translation>俯仰角（推荐）</translation>
-        </message>
-        <message>
-            <source>encoder (use L)</source>
-            <translation>编码器（使用 L）</translation>
-        </message>
-        <message>
-            <source>encoder a [deg]</source>
-            <translation>编码器读数 a [°]</translation>
-        </message>
-        <message>
-            <source>encoder counts</source>
-            <translation>编码器计数方向</translation>
-        </message>
-        <message>
-            <source>encoder grade</source>
-            <translation>编码器等级</translation>
-        </message>
-        <message>
-            <source>envelope of A</source>
-            <translation>A 的包络</translation>
-        </message>
-        <message>
-            <source>faces n</source>
-            <translation>面数 n</translation>
-        </message>
-        <message>
-            <source>first reading of set 1</source>
-            <translation>第 1 组的第一个读数</translation>
-        </message>
-        <message>
-            <source>fit</source>
-            <translation>拟合</translation>
-        </message>
-        <message>
-            <source>fitted ellipse (Heydemann)</source>
-            <translation>拟合椭圆（Heydemann）</translation>
-        </message>
-        <message>
-            <source>forward and backward</source>
-            <translation>正向和反向</translation>
-        </message>
-        <message>
-            <source>from the readings</source>
-            <translation>由读数确定</translation>
-        </message>
-        <message>
-            <source>harmonic order</source>
-            <translation>谐波次数</translation>
-        </message>
-        <message>
-            <source>harmonics</source>
-            <translation>谐波</translation>
-        </message>
-        <message>
-            <source>highest harmonic</source>
-            <translation>最高次谐波</translation>
-        </message>
-        <message>
-            <source>identification</source>
-            <translation>辨识方法</translation>
-        </message>
-        <message>
-            <source>identify from</source>
-            <translation>辨识依据</translation>
-        </message>
-        <message>
-            <source>interferometer period</source>
-            <translation>干涉仪周期</translation>
-        </message>
-        <message>
-            <source>interp. error</source>
-            <translation>细分误差</translation>
-        </message>
-        <message>
-            <source>its mean is zero</source>
-            <translation>平均值为零</translation>
-        </message>
-        <message>
-            <source>least squares (exact)</source>
-            <translation>最小二乘（精确）</translation>
-        </message>
-        <message>
-            <source>lines per revolution L</source>
-            <translation>每转线数 L</translation>
-        </message>
-        <message>
-            <source>mean reversal B̄</source>
-            <translation>平均反向差 B̄</translation>
-        </message>
-        <message>
-            <source>measured</source>
-            <translation>实测</translation>
-        </message>
-        <message>
-            <source>micrometres</source>
-            <translation>微米</translation>
-        </message>
-        <message>
-            <source>microradians</source>
-            <translation>微弧度</translation>
-        </message>
-        <message>
-            <source>millidegrees</source>
-            <translation>毫度</translation>
-        </message>
-        <message>
-            <source>millimetres (linear axis)</source>
-            <translation>毫米（直线轴）</translation>
-        </message>
-        <message>
-            <source>nanometres</source>
-            <translation>纳米</translation>
-        </message>
-        <message>
-            <source>odd (1, 3, 5 …)</source>
-            <translation>奇次（1, 3, 5 …）</translation>
-        </message>
-        <message>
-            <source>one, from the bidirectional mean</source>
-            <translation>一张，由双向平均得到</translation>
-        </message>
-        <message>
-            <source>particle swarm (seed)</source>
-            <translation>粒子群（论文）</translation>
-        </message>
-        <message>
-            <source>period</source>
-            <translation>周期</translation>
-        </message>
-        <message>
-            <source>phase from θ or the signals</source>
-            <translation>相位取自 θ 或信号</translation>
-        </message>
-        <message>
-            <source>polygon dev ["]</source>
-            <translation>棱体偏差 ["]</translation>
-        </message>
-        <message>
-            <source>pos</source>
-            <translation>位置</translation>
-        </message>
-        <message>
-            <source>pyramidal tilt ψ</source>
-            <translation>棱锥倾斜 ψ</translation>
-        </message>
-        <message>
-            <source>raw error</source>
-            <translation>原始误差</translation>
-        </message>
-        <message>
-            <source>position angle (°)</source>
-            <translation>位置角 (°)</translation>
-        </message>
-        <message>
-            <source>Raw and corrected error</source>
-            <translation>原始误差和修正后误差</translation>
-        </message>
-        <message>
-            <source>error (")</source>
-            <translation>误差 (")</translation>
-        </message>
-        <message>
-            <source>raw error e (mean)</source>
-            <translation>原始误差 e（平均）</translation>
-        </message>
-        <message>
-            <source>Corrected error with its expanded uncertainty U</source>
-            <translation>修正后误差及其扩展不确定度 U</translation>
-        </message>
-        <message>
-            <source>corrected ± U</source>
-            <translation>修正后 ± U</translation>
-        </message>
-        <message>
-            <source>Tilt fit residuals (vertical readings, set 1)</source>
-            <translation>塔差拟合残差（竖直读数，第 1 测回）</translation>
-        </message>
-        <message>
-            <source>residual (")</source>
-            <translation>残差 (")</translation>
-        </message>
-        <message>
-            <source>residual</source>
-            <translation>残差</translation>
-        </message>
-        <message>
-            <source>Vertical readings and the tilt model (set 1)</source>
-            <translation>竖直读数及塔差模型（第 1 测回）</translation>
-        </message>
-        <message>
-            <source>Harmonics of the corrected error</source>
-            <translation>修正后误差的谐波</translation>
-        </message>
-        <message>
-            <source>raw error θ − A</source>
-            <translation>原始误差 θ − A</translation>
-        </message>
-        <message>
-            <source>raw peak-to-peak</source>
-            <translation>原始峰峰值</translation>
-        </message>
-        <message>
-            <source>readings</source>
-            <translation>读数</translation>
-        </message>
-        <message>
-            <source>reference row</source>
-            <translation>参考行</translation>
-        </message>
-        <message>
-            <source>report it (uncertainty)</source>
-            <translation>报告（计入不确定度）</translation>
-        </message>
-        <message>
-            <source>reversal</source>
-            <translation>反向差</translation>
-        </message>
-        <message>
-            <source>run</source>
-            <translation>测次</translation>
-        </message>
-        <message>
-            <source>samples per period N</source>
-            <translation>每周期采样数 N</translation>
-        </message>
-        <message>
-            <source>set</source>
-            <translation>组</translation>
-        </message>
-        <message>
-            <source>set-up share −ζ(θ)</source>
-            <translation>安装误差分量 −ζ(θ)</translation>
-        </message>
-        <message>
-            <source>signal</source>
-            <translation>信号</translation>
-        </message>
-        <message>
-            <source>sin</source>
-            <translation>sin</translation>
-        </message>
-        <message>
-            <source>sin fit res.</source>
-            <translation>sin 拟合残差</translation>
-        </message>
-        <message>
-            <source>spread linearly, remove</source>
-            <translation>线性分配并扣除</translation>
-        </message>
-        <message>
-            <source>standard applied</source>
-            <translation>采用的标准</translation>
-        </message>
-        <message>
-            <source>table zero</source>
-            <translation>修正表零点</translation>
-        </message>
-        <message>
-            <source>target</source>
-            <translation>目标位置</translation>
-        </message>
-        <message>
-            <source>target position</source>
-            <translation>目标位置</translation>
-        </message>
-        <message>
-            <source>target unit</source>
-            <translation>目标位置单位</translation>
-        </message>
-        <message>
-            <source>theodolite accuracy (1σ)</source>
-            <translation>经纬仪准确度（1σ）</translation>
-        </message>
-        <message>
-            <source>tilt fit res.</source>
-            <translation>倾斜拟合残差</translation>
-        </message>
-        <message>
-            <source>tilt model ε_y</source>
-            <translation>倾斜模型 ε_y</translation>
-        </message>
-        <message>
-            <source>u cos</source>
-            <translation>u cos</translation>
-        </message>
-        <message>
-            <source>u cos [V]</source>
-            <translation>u cos [V]</translation>
-        </message>
-        <message>
-            <source>u sin</source>
-            <translation>u sin</translation>
-        </message>
-        <message>
-            <source>u sin [V]</source>
-            <translation>u sin [V]</translation>
-        </message>
-        <message>
-            <source>vertical reading</source>
-            <translation>竖直读数</translation>
-        </message>
-        <message>
-            <source>with the face numbers</source>
-            <translation>与面号一致</translation>
-        </message>
-        <message>
-            <source>zenith angle V (E = V − 90°)</source>
-            <translation>天顶距 V（E = V − 90°）</translation>
-        </message>
-        <message>
-            <source>zero at phase 0</source>
-            <translation>相位 0 处为零</translation>
-        </message>
-        <message>
-            <source>θ [deg]</source>
-            <translation>θ [°]</translation>
-        </message>
-        <message>
-            <source>θ face angle</source>
-            <translation>θ 面角</translation>
-        </message>
-        <message>
-            <source>θ phase [deg]</source>
-            <translation>θ 相位 [°]</translation>
-        </message>
-        <message>
-            <source>Export certificate</source>
-            <extracomment>details typed for one workbench that the next workbench's certificate is offered</extracomment>
-            <translation>导出证书</translation>
-        </message>
-        <message>
-            <source>Draft written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
-            <translation>草稿已写入 {path} — 草稿：缺少 {missing}；未在证书登记册中记录</translation>
-        </message>
-        <message>
-            <source>Cannot export</source>
-            <translation>无法导出</translation>
-        </message>
-        <message>
-            <source>{path}: {reason}. Nothing else was changed.</source>
-            <translation>{path}：{reason}。其他内容均未改变。</translation>
-        </message>
-        <message>
-            <source>Not issued</source>
-            <translation>未签发</translation>
-        </message>
-        <message>
-            <source>{reason}. No certificate was written or recorded.</source>
-            <translation>{reason}。未写入也未记录任何证书。</translation>
-        </message>
-        <message>
-            <source>Issued, but the file was not written</source>
-            <translation>已签发，但文件未写入</translation>
-        </message>
-        <message>
-            <source>Certificate {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
-            <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
-        </message>
-        <message>
-            <source>Certificate {number} issued: written to {path} and recorded in the register</source>
-            <translation>证书 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
-        </message>
-        <message>
-            <source>Export results</source>
-            <translation>导出结果</translation>
-        </message>
-        <message>
-            <source>CSV (*.csv);;Excel workbook (*.xlsx)</source>
-            <translation>CSV (*.csv);;Excel 工作簿 (*.xlsx)</translation>
-        </message>
-        <message>
-            <source>Results written to {path}</source>
-            <translation>结果已写入 {path}</translation>
-        </message>
-        <message>
-            <source>Autosave is off: {reason}</source>
-            <extracomment>files that may be dropped on the window: readings, or a project (.json) the instruments' raw frames, saved and opened with the project (the window sets its capture panel's raw_capture and load_raw_capture)</extracomment>
-            <translation>自动保存已关闭：{reason}</translation>
-        </message>
-        <message>
-            <source>Ready</source>
-            <translation>就绪</translation>
-        </message>
-        <message>
-            <source>&amp;File</source>
-            <translation>文件(&amp;F)</translation>
-        </message>
-        <message>
-            <source>&amp;New</source>
-            <translation>新建(&amp;N)</translation>
-        </message>
-        <message>
-            <source>&amp;Open…</source>
-            <translation>打开(&amp;O)…</translation>
-        </message>
-        <message>
-            <source>Open &amp;recent</source>
-            <translation>最近打开(&amp;R)</translation>
-        </message>
-        <message>
-            <source>&amp;Save</source>
-            <translation>保存(&amp;S)</translation>
-        </message>
-        <message>
-            <source>Save &amp;as…</source>
-            <translation>另存为(&amp;A)…</translation>
-        </message>
-        <message>
-            <source>&amp;Import CSV/XLSX…</source>
-            <translation>导入 CSV/XLSX(&amp;I)…</translation>
-        </message>
-        <message>
-            <source>Replace the current workbench's readings with a file's</source>
-            <translation>用文件中的读数替换当前工作台的读数</translation>
-        </message>
-        <message>
-            <source>Load bundled &amp;sample</source>
-            <translation>载入自带示例(&amp;S)</translation>
-        </message>
-        <message>
-            <source>&amp;Export certificate…</source>
-            <translation>导出证书(&amp;E)…</translation>
-        </message>
-        <message>
-            <source>Write the current workbench's test certificate (PDF)</source>
-            <translation>写出当前工作台的检测证书（PDF）</translation>
-        </message>
-        <message>
-            <source>Export &amp;results (CSV/XLSX)…</source>
-            <translation>导出结果(&amp;R)（CSV/XLSX）…</translation>
-        </message>
-        <message>
-            <source>Write every point's raw, correction, corrected error and U</source>
-            <translation>写出每个点的原始误差、修正值、修正后误差和 U</translation>
-        </message>
-        <message>
-            <source>Certificate re&amp;gister…</source>
-            <translation>证书登记册(&amp;G)…</translation>
-        </message>
-        <message>
-            <source>Every issued certificate: search, verify a PDF, amend, an instrument's history</source>
-            <translation>所有已签发的证书：检索、验证 PDF、修订、仪器历史</translation>
-        </message>
-        <message>
-            <source>Send to &amp;positioning</source>
-            <translation>发送到定位工作台(&amp;P)</translation>
-        </message>
-        <message>
-            <source>Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its readings are replaced; Edit &gt; Undo there restores them)</source>
-            <translation>在定位工作台按 ISO 230-2 / VDI 3441 评定本次测量（其读数将被替换；在该工作台 编辑 &gt; 撤销 可恢复）</translation>
-        </message>
-        <message>
-            <source>&amp;Print…</source>
-            <translation>打印(&amp;P)…</translation>
-        </message>
-        <message>
-            <source>Print the current workbench's result and plot (the certificate is the PDF)</source>
-            <translation>打印当前工作台的结果和图（证书为 PDF）</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>退出(&amp;Q)</translation>
-        </message>
-        <message>
-            <source>&amp;Edit</source>
-            <translation>编辑(&amp;E)</translation>
-        </message>
-        <message>
-            <source>&amp;Undo</source>
-            <translation>撤销(&amp;U)</translation>
-        </message>
-        <message>
-            <source>&amp;Redo</source>
-            <translation>重做(&amp;R)</translation>
-        </message>
-        <message>
-            <source>&amp;Copy</source>
-            <translation>复制(&amp;C)</translation>
-        </message>
-        <message>
-            <source>&amp;Paste</source>
-            <translation>粘贴(&amp;P)</translation>
-        </message>
-        <message>
-            <source>&amp;Insert row</source>
-            <translation>插入行(&amp;I)</translation>
-        </message>
-        <message>
-            <source>&amp;Delete rows</source>
-            <translation>删除行(&amp;D)</translation>
-        </message>
-        <message>
-            <source>&amp;View</source>
-            <translation>视图(&amp;V)</translation>
-        </message>
-        <message>
-            <source>&amp;Next workbench</source>
-            <translation>下一个工作台(&amp;N)</translation>
-        </message>
-        <message>
-            <source>&amp;Previous workbench</source>
-            <translation>上一个工作台(&amp;P)</translation>
-        </message>
-        <message>
-            <source>Next &amp;pane (table, set-up, result, plots)</source>
-            <translation>下一个窗格(&amp;P)（表格、设置、结果、图）</translation>
-        </message>
-        <message>
-            <source>Angle &amp;unit of results</source>
-            <translation>结果的角度单位(&amp;U)</translation>
-        </message>
-        <message>
-            <source>Plots, figures, texts and exported results in this unit (certificates keep the unit of the evaluation)</source>
-            <translation>图、数值、文本和导出结果使用此单位（证书保持评定时的单位）</translation>
-        </message>
-        <message>
-            <source>&amp;Language</source>
-            <translation>语言(&amp;L)</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>帮助(&amp;H)</translation>
-        </message>
-        <message>
-            <source>&amp;Manual (this workbench)</source>
-            <translation>手册（本工作台）(&amp;M)</translation>
-        </message>
-        <message>
-            <source>What to measure, how to set up, every setting and plot</source>
-            <translation>测量什么、如何安装、每项设置和每个图</translation>
-        </message>
-        <message>
-            <source>&amp;Quick guide</source>
-            <translation>快速指南(&amp;Q)</translation>
-        </message>
-        <message>
-            <source>&amp;About AngleBench</source>
-            <translation>关于 AngleBench(&amp;A)</translation>
-        </message>
-        <message>
-            <source>&amp;Undo {what}</source>
-            <translation>撤销(&amp;U) {what}</translation>
-        </message>
-        <message>
-            <source>&amp;Redo {what}</source>
-            <translation>重做(&amp;R) {what}</translation>
-        </message>
-        <message>
-            <source>AngleBench — quick guide</source>
-            <translation>AngleBench — 快速指南</translation>
-        </message>
-        <message>
-            <source>Type or paste the readings on the left (Return goes to the next row's first reading; a nominal step fills θ, face or target). The result, its warnings and the plots follow every edit.
+<context>
+    <name></name>
+    <message>
+        <source>A [deg]</source>
+        <translation>A [°]</translation>
+    </message>
+    <message>
+        <source>A1 (sin)</source>
+        <translation>A1 (sin)</translation>
+    </message>
+    <message>
+        <source>AC vertical − zero</source>
+        <translation>自准直仪垂直读数 − 零位</translation>
+    </message>
+    <message>
+        <source>AC x [&quot;]</source>
+        <translation>自准直仪 x [&quot;]</translation>
+    </message>
+    <message>
+        <source>AC y [&quot;]</source>
+        <translation>自准直仪 y [&quot;]</translation>
+    </message>
+    <message>
+        <source>A_down</source>
+        <translation>A↓</translation>
+    </message>
+    <message>
+        <source>A_up</source>
+        <translation>A↑</translation>
+    </message>
+    <message>
+        <source>Admissible axis tilt: the inversion&apos;s other root (ψ near 90°) is rejected</source>
+        <translation>允许的轴系倾斜：反解的另一个根（ψ 接近 90°）被舍弃</translation>
+    </message>
+    <message>
+        <source>Admissible elevation of the mirror normal</source>
+        <translation>反射镜法线允许的俯仰角</translation>
+    </message>
+    <message>
+        <source>B1 (cos)</source>
+        <translation>B1 (cos)</translation>
+    </message>
+    <message>
+        <source>Beckhoff TwinCAT Tc2_MC2 position compensation table</source>
+        <translation>Beckhoff TwinCAT Tc2_MC2 位置补偿表</translation>
+    </message>
+    <message>
+        <source>CSV (position, compensation)</source>
+        <translation>CSV（位置，补偿值）</translation>
+    </message>
+    <message>
+        <source>Closure limit per grade, comma-separated; default half the grade&apos;s accuracy</source>
+        <translation>各等级的闭合差限值，以逗号分隔；默认为该等级准确度的一半</translation>
+    </message>
+    <message>
+        <source>E / V [deg]</source>
+        <translation>E / V [°]</translation>
+    </message>
+    <message>
+        <source>E residual</source>
+        <translation>E 残差</translation>
+    </message>
+    <message>
+        <source>Encoder: grating lines per revolution; errors in arcsec of shaft angle (one period = 1296000&quot;/L)</source>
+        <translation>编码器：每转光栅线数；误差以轴角的角秒表示（一个周期 = 1296000&quot;/L）</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>English（英文）</translation>
+    </message>
+    <message>
+        <source>Entries of the correction table over the measured phase</source>
+        <translation>修正表在所测相位上的条目数</translation>
+    </message>
+    <message>
+        <source>Equal steps, N samples a period. 0: the phase from the θ column or, without one, estimated from the signals (Heydemann); a record that does not follow N is refused</source>
+        <translation>等间隔，每周期 N 个采样。0：相位取自 θ 列，若无该列则由信号估计（Heydemann）；不符合 N 的记录被拒绝</translation>
+    </message>
+    <message>
+        <source>Every set&apos;s errors are taken from this one reading of set 1, so reversal and repeatability between sets are kept</source>
+        <translation>各组的误差都以第 1 组的这一读数为零位，从而保留组间的反向差和重复性</translation>
+    </message>
+    <message>
+        <source>Exact linear least squares, or the seed&apos;s particle swarm (first period only, for comparison)</source>
+        <translation>精确线性最小二乘，或论文中的粒子群算法（仅第一个周期，用于比较）</translation>
+    </message>
+    <message>
+        <source>FANUC pitch error compensation (parameters 3620–3625)</source>
+        <translation>FANUC 螺距误差补偿（参数 3620–3625）</translation>
+    </message>
+    <message>
+        <source>Faces of the polygon; 0: as many as the first set has positions</source>
+        <translation>多面棱体的面数；0：与第一组的位置数相同</translation>
+    </message>
+    <message>
+        <source>The sine and cosine signals of the encoder&apos;s grating are sampled over whole periods. Each channel is modelled as an offset plus fundamental and odd harmonics (3rd, 5th) with their phases, u = A₀ + Σ A_k sin(kθ + c_k), and fitted by linear least squares (the paper fits the same model by particle swarm optimisation). The interpolation error is the phase atan2(u_sin, u_cos) minus θ; the modelled error, tabulated over the measured phase, is the correction, and the compensated error is what remains after applying it.</source>
+        <translation>在整周期内采样编码器光栅的正弦和余弦信号。每一路信号建模为直流偏置加基波及奇次谐波（3 次、5 次）及其相位，u = A₀ + Σ A_k sin(kθ + c_k)，并用线性最小二乘拟合（原文用粒子群优化拟合同一模型）。细分误差为相位 atan2(u_sin, u_cos) 减去 θ；按实测相位制表的模型误差即为修正值，补偿后误差为施加修正后的剩余误差。</translation>
+    </message>
+    <message>
+        <source>The phase was estimated from the signals, with no phase reference: offsets, amplitude ratio and quadrature error are identified; a pure phase distortion of the grating is not observable this way and is not in the error stated.</source>
+        <translation>相位由信号本身估计，无相位参考：直流偏置、幅值比和正交误差可以辨识；光栅的纯相位畸变用此方法不可观测，不包含在所给出的误差中。</translation>
+    </message>
+    <message>
+        <source>sample</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Signal noise</source>
+        <translation>信号噪声</translation>
+    </message>
+    <message>
+        <source>σ = {sin} mV (sin), {cos} mV (cos) from the fit residuals, converted to phase</source>
+        <translation>由拟合残差得 σ = {sin} mV（sin）、{cos} mV（cos），换算为相位</translation>
+    </message>
+    <message>
+        <source>Fitted model (correction table)</source>
+        <translation>拟合模型（修正表）</translation>
+    </message>
+    <message>
+        <source>covariance of the fitted parameters propagated to the modelled phase error</source>
+        <translation>拟合参数的协方差传播至模型相位误差</translation>
+    </message>
+    <message>
+        <source>{channel}: offset A₀</source>
+        <translation>{channel}：直流偏置 A₀</translation>
+    </message>
+    <message>
+        <source>{channel}: R², residual RMS</source>
+        <translation>{channel}：R²、残差均方根</translation>
+    </message>
+    <message>
+        <source>the certificate details say a correction table with checksum {as_left_table_sha256}… was loaded into the encoder, but this analysis&apos;s table is {sha256}…: export and load this table, or clear the checksum</source>
+        <extracomment>a record of up to this many samples is printed whole on the certificate</extracomment>
+        <translation>证书信息称已将校验和为 {as_left_table_sha256}… 的修正表载入编码器，但本次分析的修正表为 {sha256}…：请导出并载入本修正表，或清除该校验和</translation>
+    </message>
+    <message>
+        <source>Signal parameters identified</source>
+        <translation>信号参数辨识结果</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>量值</translation>
+    </message>
+    <message>
+        <source>Sample</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Phase θ (°)</source>
+        <translation>相位 θ (°)</translation>
+    </message>
+    <message>
+        <source>As found ({unit})</source>
+        <translation>校准前 ({unit})</translation>
+    </message>
+    <message>
+        <source>Correction ({unit})</source>
+        <translation>修正值 ({unit})</translation>
+    </message>
+    <message>
+        <source>Compensated ({unit})</source>
+        <translation>补偿后 ({unit})</translation>
+    </message>
+    <message>
+        <source>U as left ({unit})</source>
+        <translation>U 交付状态 ({unit})</translation>
+    </message>
+    <message>
+        <source>U as found ({unit})</source>
+        <translation>U 校准前 ({unit})</translation>
+    </message>
+    <message>
+        <source>phase from {n} equal steps a period</source>
+        <translation>相位取自每周期 {n} 等分步长</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp} ({share} % of a period)</source>
+        <translation>峰峰值 {ptp}（为一个周期的 {share} %）</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>采样点数</translation>
+    </message>
+    <message>
+        <source>Interpolation error as found</source>
+        <translation>校准前细分误差</translation>
+    </message>
+    <message>
+        <source>After compensation (as left)</source>
+        <translation>补偿后（交付状态）</translation>
+    </message>
+    <message>
+        <source>After compensation (not applied to the item)</source>
+        <translation>补偿后（未施加于被校对象）</translation>
+    </message>
+    <message>
+        <source>Offsets, amplitude ratio, quadrature error</source>
+        <translation>直流偏置、幅值比、正交误差</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, quadrature {quadrature}</source>
+        <translation>幅值比 {ratio}，正交误差 {quadrature}</translation>
+    </message>
+    <message>
+        <source>as-found interpolation error</source>
+        <translation>校准前细分误差</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>采样点</translation>
+    </message>
+    <message>
+        <source>Correction table</source>
+        <translation>修正表</translation>
+    </message>
+    <message>
+        <source>{n} entries</source>
+        <translation>{n} 项</translation>
+    </message>
+    <message>
+        <source>Drift of sin A1 over the periods</source>
+        <translation>各周期 sin 通道 A1 的漂移</translation>
+    </message>
+    <message>
+        <source>{n} periods fitted one by one</source>
+        <translation>逐个拟合 {n} 个周期</translation>
+    </message>
+    <message>
+        <source>Statistics</source>
+        <translation>统计结果</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <source>As left: the lab states that the correction table with sha256 {sha} was loaded into the encoder; the compensated error and its U are the item as left.</source>
+        <translation>交付状态：实验室声明已将 sha256 为 {sha} 的修正表载入编码器；补偿后误差及其 U 为被校对象交付时的状态。</translation>
+    </message>
+    <message>
+        <source>Fringe signal analysis</source>
+        <translation>莫尔条纹信号分析</translation>
+    </message>
+    <message>
+        <source>sample {sample}</source>
+        <translation>第 {sample} 个采样点</translation>
+    </message>
+    <message>
+        <source>positional deviation x = actual position − target (ISO 230-2), i.e. reference − indicated: the negative of an error of indication; compensation = −x</source>
+        <extracomment>ISO 230-2&apos;s sign: x = actual − target. The axis&apos;s own scale indicates the target when it stops and the reference reads the actual position, so x = reference − indicated: the negative of an error of indication (the other workbenches&apos; sign).</extracomment>
+        <translation>位置偏差 x = 实际位置 − 目标位置（ISO 230-2），即 参考值 − 示值：为示值误差的负值；补偿值 = −x</translation>
+    </message>
+    <message>
+        <source>GB/T 17421.2-2016 (identical to ISO 230-2:2014)</source>
+        <extracomment>ISO 230-2:2014 (and VDI/DGQ 3441): at least five runs in each direction at every target. target unit → its symbol deviation unit → (target unit it belongs to, deviation units per target unit, symbol) the standard applied → its title on the certificate</extracomment>
+        <translation>GB/T 17421.2-2016（等同 ISO 230-2:2014）</translation>
+    </message>
+    <message>
+        <source>ISO 230-2:2014</source>
+        <translation>ISO 230-2:2014</translation>
+    </message>
+    <message>
+        <source>Interferometer: displacement per fringe (316.4 nm for λ/2 of a HeNe laser); errors then in nm. 0: an encoder</source>
+        <translation>干涉仪：每个条纹的位移（HeNe 激光 λ/2 为 316.4 nm）；误差以 nm 表示。0：编码器</translation>
+    </message>
+    <message>
+        <source>LinuxCNC COMP_FILE type 0</source>
+        <translation>LinuxCNC COMP_FILE 类型 0</translation>
+    </message>
+    <message>
+        <source>Before → after compensation ({name}, {count} common targets): </source>
+        <extracomment>the figures compared when both logs are bidirectional (A, B, E first: the issue&apos;s three) per direction otherwise</extracomment>
+        <translation>补偿前 → 补偿后（{name}，{count} 个共同目标位置）：</translation>
+    </message>
+    <message>
+        <source>; {count} reading(s) at targets only one log has left out</source>
+        <translation>；仅一份记录含有的目标位置上的 {count} 个读数未计入</translation>
+    </message>
+    <message>
+        <source>the log after compensation has targets in {after}, the log before in {before}: not the same axis set-up</source>
+        <translation>补偿后记录的目标位置单位为 {after}，补偿前记录为 {before}：不是同一轴的设置</translation>
+    </message>
+    <message>
+        <source>the log after compensation has deviations in {after}, the log before in {before}: analyse both in the same deviation unit</source>
+        <translation>补偿后记录的偏差单位为 {after}，补偿前记录为 {before}：请以相同的偏差单位评定两者</translation>
+    </message>
+    <message>
+        <source>the log after compensation has no target in common with the log before: they cannot be compared</source>
+        <translation>补偿后记录与补偿前记录没有共同的目标位置：无法比较</translation>
+    </message>
+    <message>
+        <source>the two logs have no approach direction in common: they cannot be compared</source>
+        <translation>两份记录没有共同的趋近方向：无法比较</translation>
+    </message>
+    <message>
+        <source>Mean positional deviation with ±2s</source>
+        <translation>平均位置偏差及 ±2s</translation>
+    </message>
+    <message>
+        <source>Odd harmonics only (the seed&apos;s model), or every order up to the highest</source>
+        <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
+    </message>
+    <message>
+        <source>Repeatability (mean of {sets} sets)</source>
+        <translation>重复性（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Repeatability (mean of 1 set)</source>
+        <translation>重复性（1 个测回）</translation>
+    </message>
+    <message>
+        <source>pooled standard deviation {s} of the sets about their direction&apos;s mean, {dof} degrees of freedom</source>
+        <translation>各测回相对于同方向平均值的合并标准偏差 {s}，自由度 {dof}</translation>
+    </message>
+    <message>
+        <source>Autocollimator reading noise (mean of {sets} sets)</source>
+        <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Autocollimator reading noise (mean of 1 set)</source>
+        <translation>自准直仪读数噪声（1 个测回）</translation>
+    </message>
+    <message>
+        <source>scatter of the vertical readings about the tilt fits, {dof} degrees of freedom (no direction was measured twice)</source>
+        <translation>竖直读数相对于塔差拟合的分散性，自由度 {dof}（没有方向被测量两次）</translation>
+    </message>
+    <message>
+        <source>{note}, divided by √{m}</source>
+        <translation>{note}，除以 √{m}</translation>
+    </message>
+    <message>
+        <source>Zero reading (face {face}, set 1)</source>
+        <translation>零位读数（第 {face} 面，第 1 测回）</translation>
+    </message>
+    <message>
+        <source>one reading shared by every set: not reduced</source>
+        <translation>各测回共用的一个读数：不因平均而减小</translation>
+    </message>
+    <message>
+        <source>spread linearly and removed, half the drift left</source>
+        <translation>线性分配并扣除，余下一半漂移</translation>
+    </message>
+    <message>
+        <source>not removed, up to the whole drift</source>
+        <translation>未扣除，最大为全部漂移</translation>
+    </message>
+    <message>
+        <source>Closure drift</source>
+        <translation>闭合漂移</translation>
+    </message>
+    <message>
+        <source>closures {closures} beyond their reading noise; {how}</source>
+        <translation>闭合差 {closures} 超出其读数噪声；{how}</translation>
+    </message>
+    <message>
+        <source>face or reading</source>
+        <translation>面或读数</translation>
+    </message>
+    <message>
+        <source>Pyramidal correction (ψ, ω)</source>
+        <translation>塔差修正（ψ, ω）</translation>
+    </message>
+    <message>
+        <source>the certificate details give a tolerance of ±{tolerance_arcsec}&quot; but the workbench is set to grade {grade} (±{tol}&quot;): change the grade or clear the tolerance in the details</source>
+        <translation>证书信息给出的允差为 ±{tolerance_arcsec}&quot;，但工作台设为 {grade} 级（±{tol}&quot;）：请修改等级，或清除证书信息中的允差</translation>
+    </message>
+    <message>
+        <source>the certificate details say &apos;{item_grade}&apos; but the workbench is set to grade {grade}: make them agree</source>
+        <translation>证书信息为 &apos;{item_grade}&apos;，但工作台设为 {grade} 级：请使两者一致</translation>
+    </message>
+    <message>
+        <source>with the face numbering</source>
+        <translation>与面序号同向</translation>
+    </message>
+    <message>
+        <source>against the face numbering</source>
+        <translation>与面序号反向</translation>
+    </message>
+    <message>
+        <source>Faces</source>
+        <translation>面数</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>测回数</translation>
+    </message>
+    <message>
+        <source>Encoder grade</source>
+        <translation>编码器准确度等级</translation>
+    </message>
+    <message>
+        <source>Encoder counts</source>
+        <translation>编码器计数方向</translation>
+    </message>
+    <message>
+        <source>Common zero</source>
+        <translation>公共零位</translation>
+    </message>
+    <message>
+        <source>face {face} of set 1</source>
+        <translation>第 1 测回第 {face} 面</translation>
+    </message>
+    <message>
+        <source>spread linearly over each set and removed</source>
+        <translation>在各测回内线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>reported, not removed</source>
+        <translation>给出，未扣除</translation>
+    </message>
+    <message>
+        <source>vertical along the polygon&apos;s axis (rolled with the tilt)</source>
+        <translation>竖直方向沿棱体轴线（随倾斜转动）</translation>
+    </message>
+    <message>
+        <source>Allowed pyramidal tilt</source>
+        <translation>允许塔差</translation>
+    </message>
+    <message>
+        <source>drift {drift} (within the limit)</source>
+        <translation>漂移 {drift}（在限值内）</translation>
+    </message>
+    <message>
+        <source>drift {drift} (OUTSIDE the limit)</source>
+        <translation>漂移 {drift}（超出限值）</translation>
+    </message>
+    <message>
+        <source>Set {set} (forward, from face {face}) closure</source>
+        <translation>第 {set} 测回（正向，自第 {face} 面起）闭合</translation>
+    </message>
+    <message>
+        <source>Set {set} (reverse, from face {face}) closure</source>
+        <translation>第 {set} 测回（反向，自第 {face} 面起）闭合</translation>
+    </message>
+    <message>
+        <source>Set {set} pyramidal tilt ψ</source>
+        <translation>第 {set} 测回塔差 ψ</translation>
+    </message>
+    <message>
+        <source>Set {set} tilt direction ω</source>
+        <translation>第 {set} 测回塔差方向 ω</translation>
+    </message>
+    <message>
+        <source>Set-up parameters identified</source>
+        <translation>安装参数辨识结果</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of the two directions&apos; means)</source>
+        <translation>各位置结果（正反两个方向平均值的平均）</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of {sets} sets)</source>
+        <translation>各位置结果（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Results per position (mean of 1 set)</source>
+        <translation>各位置结果（1 个测回）</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>Nominal (°)</source>
+        <translation>标称值 (°)</translation>
+    </message>
+    <message>
+        <source>Raw error (&quot;)</source>
+        <translation>原始误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Correction (&quot;)</source>
+        <translation>修正值 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Corrected error (&quot;)</source>
+        <translation>修正后误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Error = indicated − reference, from face {face} of set 1. Corrected = raw + correction; the correction removes the error the pyramidal tilt induces.</source>
+        <translation>误差 = 示值 − 参考值，以第 1 测回第 {face} 面为零位。修正后 = 原始 + 修正值；修正值消除塔差引起的误差。</translation>
+    </message>
+    <message>
+        <source>Raw error</source>
+        <translation>原始误差</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp}</source>
+        <translation>峰峰值 {ptp}</translation>
+    </message>
+    <message>
+        <source>Corrected error</source>
+        <translation>修正后误差</translation>
+    </message>
+    <message>
+        <source>Harmonics 1st / 2nd</source>
+        <translation>1 次 / 2 次谐波</translation>
+    </message>
+    <message>
+        <source>eccentricity / ellipticity</source>
+        <translation>偏心 / 椭圆度</translation>
+    </message>
+    <message>
+        <source>Repeatability (largest s over positions)</source>
+        <translation>重复性（各位置中最大的 s）</translation>
+    </message>
+    <message>
+        <source>Repeatability</source>
+        <translation>重复性</translation>
+    </message>
+    <message>
+        <source>not evaluated</source>
+        <translation>未评定</translation>
+    </message>
+    <message>
+        <source>the run is invalid (closure failed)</source>
+        <translation>本次测量无效（闭合不合格）</translation>
+    </message>
+    <message>
+        <source>positions</source>
+        <translation>各位置</translation>
+    </message>
+    <message>
+        <source>Polygon encoder test</source>
+        <translation>多面棱体编码器检测</translation>
+    </message>
+    <message>
+        <source>position {position}</source>
+        <translation>第 {position} 位置</translation>
+    </message>
+    <message>
+        <source>Set-up assumed: the autocollimator&apos;s vertical along the polygon&apos;s axis, rolled with its tilt, not along the shaft (the frame of Tian et al. 2015); the pyramidal correction is that paper&apos;s eqs 3–7.</source>
+        <translation>所假定的安置：自准直仪的竖直方向沿多面棱体轴线、随其倾斜转动，而非沿转轴（田留德等 2015 年论文的安置）；塔差修正按该论文式 3–7。</translation>
+    </message>
+    <message>
+        <source>{tilt} (levelled set-up, roll included; with the vertical along the polygon&apos;s axis: {worst} worst case over the tilt direction, {seed} at ω = 90°)</source>
+        <translation>{tilt}（调平安置，含滚转；竖直方向沿棱体轴线时：按倾斜方向的最不利情况 {worst}，ω = 90° 时 {seed}）</translation>
+    </message>
+    <message>
+        <source>{tilt} (worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015: {seed})</source>
+        <translation>{tilt}（按倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值：{seed}）</translation>
+    </message>
+    <message>
+        <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
+        <translation>第 1 测回第 {face} 面处 U 为零：所有误差均以该读数为起点，按定义其自身误差为零。</translation>
+    </message>
+    <message>
+        <source>Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method&apos;s reference; the allowed pyramidal tilt is derived from them (a third of the accuracy, worst case over the tilt direction).</source>
+        <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
+    </message>
+    <message>
+        <source>check figure</source>
+        <extracomment>where a case&apos;s expected value comes from</extracomment>
+        <translation>校核数值</translation>
+    </message>
+    <message>
+        <source>exact simulation</source>
+        <translation>精确仿真</translation>
+    </message>
+    <message>
+        <source>budget vs Monte Carlo</source>
+        <translation>不确定度评定与蒙特卡洛比较</translation>
+    </message>
+    <message>
+        <source>GUM budget u against the spread of {trials} simulated runs</source>
+        <translation>GUM 不确定度评定的 u 与 {trials} 次仿真测量的分散性比较</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}, worst point within {point} %</source>
+        <translation>比值 1 ± {tolerance}，最差点在 {point} % 以内</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, worst point {worst} %</source>
+        <translation>比值 {ratio}，最差点 {worst} %</translation>
+    </message>
+    <message>
+        <source>ζ spans ±187.9&quot; (ψ = 3°, α = 45°, β = 2°, θ = −20…20°)</source>
+        <translation>ζ 的范围为 ±187.9&quot;（ψ = 3°，α = 45°，β = 2°，θ = −20…20°）</translation>
+    </message>
+    <message>
+        <source>largest spread of ζ over α at one θ</source>
+        <translation>同一 θ 下 ζ 随 α 的最大变化范围</translation>
+    </message>
+    <message>
+        <source>the seed&apos;s experiment: ζ from −301&quot;</source>
+        <translation>原文实验：ζ 自 −301&quot;</translation>
+    </message>
+    <message>
+        <source>the seed&apos;s experiment: ζ to +423&quot;</source>
+        <translation>原文实验：ζ 至 +423&quot;</translation>
+    </message>
+    <message>
+        <source>3-D simulation, no noise: |corrected − true error|</source>
+        <translation>三维仿真，无噪声：|修正后误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, no noise: |ψ, α, β − set-up| (°)</source>
+        <translation>三维仿真，无噪声：|ψ、α、β − 设定值|（°）</translation>
+    </message>
+    <message>
+        <source>sign: an axis indicating 1e-5 too much reads + at +20°</source>
+        <translation>符号：示值偏大 1e-5 的轴系在 +20° 处读数为正</translation>
+    </message>
+    <message>
+        <source>largest |ε_x| at ψ = 10′, ω = 90°</source>
+        <translation>ψ = 10′、ω = 90° 时 |ε_x| 的最大值</translation>
+    </message>
+    <message>
+        <source>ε_x/ψ² at θ = 111° (×1e-5)</source>
+        <translation>θ = 111° 处的 ε_x/ψ²（×1e-5）</translation>
+    </message>
+    <message>
+        <source>ε_x/ψ² at θ = 179° (×1e-6)</source>
+        <translation>θ = 179° 处的 ε_x/ψ²（×1e-6）</translation>
+    </message>
+    <message>
+        <source>ε_y spans 2ψ</source>
+        <translation>ε_y 的范围为 2ψ</translation>
+    </message>
+    <message>
+        <source>largest ε_x/ψ² over every direction (×1e-6)</source>
+        <translation>所有方向上 ε_x/ψ² 的最大值（×1e-6）</translation>
+    </message>
+    <message>
+        <source>3-D simulation (ψ = 480″, counting against the faces, zero through 360°): |corrected − true error|</source>
+        <translation>三维仿真（ψ = 480″，计数方向与面序相反，零位跨越 360°）：|修正后误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation: a constant 2″ backlash is the reversal B</source>
+        <translation>三维仿真：恒定 2″ 的回程间隙即反向差 B</translation>
+    </message>
+    <message>
+        <source>3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = 0.03″: RMS of corrected − true error (2σ)</source>
+        <translation>三维仿真，16 种设置，12–72 面，ψ 300–1200″，σ = 0.03″：修正后误差 − 真实误差的均方根（2σ）</translation>
+    </message>
+    <message>
+        <source>Table 1&apos;s signals: peak-to-peak interpolation error</source>
+        <translation>表 1 的信号：细分误差峰峰值</translation>
+    </message>
+    <message>
+        <source>Table 1&apos;s signals: error left after compensation (peak-to-peak)</source>
+        <translation>表 1 的信号：补偿后剩余误差（峰峰值）</translation>
+    </message>
+    <message>
+        <source>sampled signals with a true phase: |raw error − true error|</source>
+        <translation>带真实相位的采样信号：|原始误差 − 真实误差|</translation>
+    </message>
+    <message>
+        <source>sampled signals with a true phase: |offsets − truth| (V)</source>
+        <translation>带真实相位的采样信号：|直流偏置 − 真值|（V）</translation>
+    </message>
+    <message>
+        <source>Positioning (axis)</source>
+        <translation>定位（轴线）</translation>
+    </message>
+    <message>
+        <source>axis without scatter: reversal B = lost motion</source>
+        <translation>无分散的轴系：反向差 B = 失动量</translation>
+    </message>
+    <message>
+        <source>axis without scatter: mean reversal B̄ = −lost motion (axis lags)</source>
+        <translation>无分散的轴系：平均反向差 B̄ = −失动量（轴系滞后）</translation>
+    </message>
+    <message>
+        <source>axis without scatter: E↑ = range of the axis error</source>
+        <translation>无分散的轴系：E↑ = 轴系误差的范围</translation>
+    </message>
+    <message>
+        <source>axis without scatter: A = range of the axis error + lost motion</source>
+        <translation>无分散的轴系：A = 轴系误差的范围 + 失动量</translation>
+    </message>
+    <message>
+        <source>axis without scatter: VDI 3441 P = Pa + U</source>
+        <translation>无分散的轴系：VDI 3441 P = Pa + U</translation>
+    </message>
+    <message>
+        <source>compensation table loaded into the rig&apos;s controller: largest |mean deviation| left</source>
+        <translation>补偿表载入仿真装置的控制器后：剩余 |平均偏差| 的最大值</translation>
+    </message>
+    <message>
+        <source>R_down</source>
+        <translation>R↓</translation>
+    </message>
+    <message>
+        <source>R_up</source>
+        <translation>R↑</translation>
+    </message>
+    <message>
+        <source>Reversal value B_i = x̄↑ − x̄↓</source>
+        <translation>反向差值 B_i = x̄↑ − x̄↓</translation>
+    </message>
+    <message>
+        <source>Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0</source>
+        <translation>经纬仪对反射镜置零的行；0：θ 最接近 0 的行</translation>
+    </message>
+    <message>
+        <source>SINUMERIK 840D measuring system error compensation</source>
+        <translation>SINUMERIK 840D 测量系统误差补偿</translation>
+    </message>
+    <message>
+        <source>Separate tables for the two approach directions, or one table from the mean of the two (compensation = −mean deviation)</source>
+        <translation>两个趋近方向各一张表，或由两者平均值得到一张表（补偿值 = −平均偏差）</translation>
+    </message>
+    <message>
+        <source>Spacing of the compensation table in the target unit; 0: one entry at each target</source>
+        <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500 (ISG); axis=X (Mach4)</source>
+        <translation>控制器设置，以逗号分隔的“键=值”；各控制器可用的选项及其说明见导出时弹出的选项表</translation>
+    </message>
+    <message>
+        <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
+        <translation>一组测量回到第一面时显示的漂移：报告并计入不确定度，或在该组内线性分配并扣除（在证书上说明）</translation>
+    </message>
+    <message>
+        <source>The elevations identify the set-up without touching the axis&apos; own error; the azimuth route absorbs any part of it that looks like the model</source>
+        <translation>俯仰角可在不影响轴系自身误差的情况下辨识安装误差；方位角途径会吸收轴系误差中与模型相似的部分</translation>
+    </message>
+    <message>
+        <source>The highest harmonic fitted to each channel</source>
+        <translation>每个通道拟合的最高次谐波</translation>
+    </message>
+    <message>
+        <source>The phase origin is arbitrary: the table is stated with its mean removed, or with its first entry zero (said in the exported file)</source>
+        <translation>相位原点是任意的：修正表去除其平均值，或使第一个条目为零（在导出文件中说明）</translation>
+    </message>
+    <message>
+        <source>The standard the certificate states and judges by; the JSON always has ISO 230-2 and VDI/DGQ 3441 both</source>
+        <translation>证书所依据并据以判定的标准；JSON 中总是同时给出 ISO 230-2 和 VDI/DGQ 3441</translation>
+    </message>
+    <message>
+        <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed&apos;s A − θ; the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
+        <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即原文 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
+    </message>
+    <message>
+        <source>elevation readings</source>
+        <extracomment>how the table names what the set-up was identified from (ident.method)</extracomment>
+        <translation>竖直读数</translation>
+    </message>
+    <message>
+        <source>azimuth readings</source>
+        <translation>水平读数</translation>
+    </message>
+    <message>
+        <source>reading (pointing)</source>
+        <translation>读数（瞄准）</translation>
+    </message>
+    <message>
+        <source>Reading repeatability</source>
+        <translation>读数重复性</translation>
+    </message>
+    <message>
+        <source>standard deviation of the vertical readings about the fit, {n} readings, {dof} degrees of freedom; taken for the azimuth too</source>
+        <translation>竖直读数相对于拟合的标准偏差，{n} 个读数，自由度 {dof}；水平读数亦取此值</translation>
+    </message>
+    <message>
+        <source>Reference reading (θ₀)</source>
+        <translation>参考读数（θ₀）</translation>
+    </message>
+    <message>
+        <source>Set-up model ζ (ψ, α, β)</source>
+        <translation>安装模型 ζ（ψ, α, β）</translation>
+    </message>
+    <message>
+        <source>covariance of the identified parameters propagated through ζ(θ)</source>
+        <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
+    </message>
+    <message>
+        <source>Axis tilt ψ</source>
+        <translation>轴倾角 ψ</translation>
+    </message>
+    <message>
+        <source>Tilt direction α</source>
+        <translation>倾斜方向 α</translation>
+    </message>
+    <message>
+        <source>Mirror normal β</source>
+        <translation>反射镜法线 β</translation>
+    </message>
+    <message>
+        <source>Identified from</source>
+        <translation>辨识依据</translation>
+    </message>
+    <message>
+        <source>{method} readings</source>
+        <translation>{method} 读数</translation>
+    </message>
+    <message>
+        <source>R² of the fit</source>
+        <translation>拟合 R²</translation>
+    </message>
+    <message>
+        <source>Residual RMS</source>
+        <translation>残差均方根</translation>
+    </message>
+    <message>
+        <source>Reference point θ₀</source>
+        <translation>参考点 θ₀</translation>
+    </message>
+    <message>
+        <source>Results per point (corrected = raw + correction)</source>
+        <translation>各测点结果（修正后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>测点数</translation>
+    </message>
+    <message>
+        <source>peak-to-peak {ptp}, RMS {rms}</source>
+        <translation>峰峰值 {ptp}，均方根 {rms}</translation>
+    </message>
+    <message>
+        <source>points</source>
+        <translation>各测点</translation>
+    </message>
+    <message>
+        <source>Theodolite run</source>
+        <translation>经纬仪测量</translation>
+    </message>
+    <message>
+        <source>U is zero at the reference reading (row {row}, θ₀ = {theta}): the theodolite was zeroed there, so its error is zero by definition.</source>
+        <translation>参考读数处 U 为零（第 {row} 行，θ₀ = {theta}）：经纬仪在该点置零，按定义其误差为零。</translation>
+    </message>
+    <message>
+        <source>Unit of the deviations and of every figure; arcsec or µrad for a rotary axis, µm or nm for a linear one</source>
+        <translation>偏差及各项结果的单位；回转轴用角秒或 µrad，直线轴用 µm 或 nm</translation>
+    </message>
+    <message>
+        <source>Unit of the target (and measured) positions</source>
+        <translation>目标（及实测）位置的单位</translation>
+    </message>
+    <message>
+        <source>VDI/DGQ 3441:1977</source>
+        <translation>VDI/DGQ 3441:1977</translation>
+    </message>
+    <message>
+        <source>Whether the encoder counts up or down as the face numbers rise; auto finds it from the readings and says so</source>
+        <translation>面号增加时编码器是增计数还是减计数；自动模式由读数判断并给出说明</translation>
+    </message>
+    <message>
+        <source>after compensation</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>against the face numbers</source>
+        <translation>与面号相反</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <source>amplitude</source>
+        <translation>幅值</translation>
+    </message>
+    <message>
+        <source>arcseconds</source>
+        <translation>角秒</translation>
+    </message>
+    <message>
+        <source>as-found peak-to-peak</source>
+        <translation>补偿前峰峰值</translation>
+    </message>
+    <message>
+        <source>at the targets</source>
+        <translation>在目标位置</translation>
+    </message>
+    <message>
+        <source>auto (from the readings)</source>
+        <translation>自动（由读数判断）</translation>
+    </message>
+    <message>
+        <source>auto (θ nearest 0)</source>
+        <translation>自动（θ 最接近 0）</translation>
+    </message>
+    <message>
+        <source>azimuth errors (absorbs axis error!)</source>
+        <translation>方位角误差（会吸收轴系误差！）</translation>
+    </message>
+    <message>
+        <source>before compensation</source>
+        <translation>补偿前</translation>
+    </message>
+    <message>
+        <source>bidirectional mean M_i</source>
+        <translation>双向平均 M_i</translation>
+    </message>
+    <message>
+        <source>bound |β| ≤</source>
+        <translation>界限 |β| ≤</translation>
+    </message>
+    <message>
+        <source>bound |ψ| ≤</source>
+        <translation>界限 |ψ| ≤</translation>
+    </message>
+    <message>
+        <source>closure drift</source>
+        <translation>闭合漂移</translation>
+    </message>
+    <message>
+        <source>closure limits grades 1–7</source>
+        <translation>1–7 级闭合差限值</translation>
+    </message>
+    <message>
+        <source>common zero at face</source>
+        <translation>公共零位所在面</translation>
+    </message>
+    <message>
+        <source>compensated</source>
+        <translation>补偿后</translation>
+    </message>
+    <message>
+        <source>compensated (unit circle × A1)</source>
+        <translation>补偿后（单位圆 × A1）</translation>
+    </message>
+    <message>
+        <source>compensated peak-to-peak</source>
+        <translation>补偿后峰峰值</translation>
+    </message>
+    <message>
+        <source>compensation format</source>
+        <translation>补偿文件格式</translation>
+    </message>
+    <message>
+        <source>compensation step</source>
+        <translation>补偿间隔</translation>
+    </message>
+    <message>
+        <source>compensation tables</source>
+        <translation>补偿表</translation>
+    </message>
+    <message>
+        <source>controller options</source>
+        <translation>控制器选项</translation>
+    </message>
+    <message>
+        <source>corrected</source>
+        <translation>修正后</translation>
+    </message>
+    <message>
+        <source>Raw error, set-up model and corrected error</source>
+        <translation>原始误差、安装模型和修正后误差</translation>
+    </message>
+    <message>
+        <source>corrected = raw + ζ</source>
+        <translation>修正后 = 原始 + ζ</translation>
+    </message>
+    <message>
+        <source>Fit residuals (vertical readings)</source>
+        <translation>拟合残差（竖直读数）</translation>
+    </message>
+    <message>
+        <source>E residual (&quot;)</source>
+        <translation>E 残差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>corrected e − (ε_x − ε_x,zero)</source>
+        <translation>修正后 e − (ε_x − ε_x,zero)</translation>
+    </message>
+    <message>
+        <source>corrected peak-to-peak</source>
+        <translation>修正后峰峰值</translation>
+    </message>
+    <message>
+        <source>correction table size</source>
+        <translation>修正表大小</translation>
+    </message>
+    <message>
+        <source>correction −(ε_x − ε_x,zero)</source>
+        <translation>修正值 −(ε_x − ε_x,zero)</translation>
+    </message>
+    <message>
+        <source>degrees (rotary axis)</source>
+        <translation>度（回转轴）</translation>
+    </message>
+    <message>
+        <source>deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>deviation unit</source>
+        <translation>偏差单位</translation>
+    </message>
+    <message>
+        <source>dir [+/−]</source>
+        <translation>方向 [+/−]</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>误差</translation>
+    </message>
+    <message>
+        <source>electrical phase θ (periods)</source>
+        <translation>电相位 θ（周期）</translation>
+    </message>
+    <message>
+        <source>error, est. phase</source>
+        <translation>误差（估计相位）</translation>
+    </message>
+    <message>
+        <source>Interpolation error before and after compensation</source>
+        <translation>补偿前后的细分误差</translation>
+    </message>
+    <message>
+        <source>Fit residuals</source>
+        <translation>拟合残差</translation>
+    </message>
+    <message>
+        <source>residual (mV)</source>
+        <translation>残差 (mV)</translation>
+    </message>
+    <message>
+        <source>Signals and their fit</source>
+        <translation>信号及其拟合</translation>
+    </message>
+    <message>
+        <source>Lissajous figure</source>
+        <translation>李萨如图</translation>
+    </message>
+    <message>
+        <source>Harmonics of the two channels</source>
+        <translation>两路信号的谐波</translation>
+    </message>
+    <message>
+        <source>Compensated error in the first period, with U</source>
+        <translation>第一个周期内补偿后误差及其 U</translation>
+    </message>
+    <message>
+        <source>phase θ (°)</source>
+        <translation>相位 θ (°)</translation>
+    </message>
+    <message>
+        <source>compensated ± U</source>
+        <translation>补偿后 ± U</translation>
+    </message>
+    <message>
+        <source>phase within the period (°); the motion stood or turned back</source>
+        <translation>周期内相位 (°)；运动曾停止或反向</translation>
+    </message>
+    <message>
+        <source>中文 + English (headings and labels)</source>
+        <translation>中文 + English（标题和标签双语）</translation>
+    </message>
+    <message>
+        <source>elevation E</source>
+        <translation>俯仰角 E</translation>
+    </message>
+    <message>
+        <source>CSV always works; LinuxCNC&apos;s joint compensation file (COMP_FILE_TYPE = 0, documented in the LinuxCNC INI configuration manual) lists nominal, actual forward and actual reverse positions; the controllers&apos; formats follow their manuals, and a table the controller would reject or misapply is refused naming the rule</source>
+        <translation>CSV 始终可用；LinuxCNC 关节补偿文件（COMP_FILE_TYPE = 0，见 LinuxCNC INI 配置手册）列出名义位置、正向实际位置和反向实际位置；各控制器格式遵循其手册，控制器会拒绝或误用的表将被拒绝并指明所违反的规则</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN TNC .COM table (and .CMA)</source>
+        <translation>HEIDENHAIN TNC .COM 补偿表（及 .CMA）</translation>
+    </message>
+    <message>
+        <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s own axis, rolled with its tilt (the frame of the method&apos;s paper, Tian et al. 2015). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
+        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
+    </message>
+    <message>
+        <source>ISG kernel leadscrew error compensation list</source>
+        <translation>ISG 内核丝杠误差补偿列表</translation>
+    </message>
+    <message>
+        <source>Mach4 screw map</source>
+        <translation>Mach4 丝杠映射</translation>
+    </message>
+    <message>
+        <source>elevations (recommended)</source>
+        <translation>俯仰角（推荐）</translation>
+    </message>
+    <message>
+        <source>encoder (use L)</source>
+        <translation>编码器（使用 L）</translation>
+    </message>
+    <message>
+        <source>encoder a [deg]</source>
+        <translation>编码器读数 a [°]</translation>
+    </message>
+    <message>
+        <source>encoder counts</source>
+        <translation>编码器计数方向</translation>
+    </message>
+    <message>
+        <source>encoder grade</source>
+        <translation>编码器等级</translation>
+    </message>
+    <message>
+        <source>envelope of A</source>
+        <translation>A 的包络</translation>
+    </message>
+    <message>
+        <source>faces n</source>
+        <translation>面数 n</translation>
+    </message>
+    <message>
+        <source>first reading of set 1</source>
+        <translation>第 1 组的第一个读数</translation>
+    </message>
+    <message>
+        <source>fit</source>
+        <translation>拟合</translation>
+    </message>
+    <message>
+        <source>fitted ellipse (Heydemann)</source>
+        <translation>拟合椭圆（Heydemann）</translation>
+    </message>
+    <message>
+        <source>forward and backward</source>
+        <translation>正向和反向</translation>
+    </message>
+    <message>
+        <source>from the readings</source>
+        <translation>由读数确定</translation>
+    </message>
+    <message>
+        <source>harmonic order</source>
+        <translation>谐波次数</translation>
+    </message>
+    <message>
+        <source>harmonics</source>
+        <translation>谐波</translation>
+    </message>
+    <message>
+        <source>highest harmonic</source>
+        <translation>最高次谐波</translation>
+    </message>
+    <message>
+        <source>identification</source>
+        <translation>辨识方法</translation>
+    </message>
+    <message>
+        <source>identify from</source>
+        <translation>辨识依据</translation>
+    </message>
+    <message>
+        <source>interferometer period</source>
+        <translation>干涉仪周期</translation>
+    </message>
+    <message>
+        <source>interp. error</source>
+        <translation>细分误差</translation>
+    </message>
+    <message>
+        <source>its mean is zero</source>
+        <translation>平均值为零</translation>
+    </message>
+    <message>
+        <source>least squares (exact)</source>
+        <translation>最小二乘（精确）</translation>
+    </message>
+    <message>
+        <source>lines per revolution L</source>
+        <translation>每转线数 L</translation>
+    </message>
+    <message>
+        <source>mean reversal B̄</source>
+        <translation>平均反向差 B̄</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>实测</translation>
+    </message>
+    <message>
+        <source>micrometres</source>
+        <translation>微米</translation>
+    </message>
+    <message>
+        <source>microradians</source>
+        <translation>微弧度</translation>
+    </message>
+    <message>
+        <source>millidegrees</source>
+        <translation>毫度</translation>
+    </message>
+    <message>
+        <source>millimetres (linear axis)</source>
+        <translation>毫米（直线轴）</translation>
+    </message>
+    <message>
+        <source>nanometres</source>
+        <translation>纳米</translation>
+    </message>
+    <message>
+        <source>odd (1, 3, 5 …)</source>
+        <translation>奇次（1, 3, 5 …）</translation>
+    </message>
+    <message>
+        <source>one, from the bidirectional mean</source>
+        <translation>一张，由双向平均得到</translation>
+    </message>
+    <message>
+        <source>particle swarm (seed)</source>
+        <translation>粒子群（论文）</translation>
+    </message>
+    <message>
+        <source>period</source>
+        <translation>周期</translation>
+    </message>
+    <message>
+        <source>phase from θ or the signals</source>
+        <translation>相位取自 θ 或信号</translation>
+    </message>
+    <message>
+        <source>polygon dev [&quot;]</source>
+        <translation>棱体偏差 [&quot;]</translation>
+    </message>
+    <message>
+        <source>pos</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>pyramidal tilt ψ</source>
+        <translation>棱锥倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>raw error</source>
+        <translation>原始误差</translation>
+    </message>
+    <message>
+        <source>position angle (°)</source>
+        <translation>位置角 (°)</translation>
+    </message>
+    <message>
+        <source>Raw and corrected error</source>
+        <translation>原始误差和修正后误差</translation>
+    </message>
+    <message>
+        <source>error (&quot;)</source>
+        <translation>误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>raw error e (mean)</source>
+        <translation>原始误差 e（平均）</translation>
+    </message>
+    <message>
+        <source>Corrected error with its expanded uncertainty U</source>
+        <translation>修正后误差及其扩展不确定度 U</translation>
+    </message>
+    <message>
+        <source>corrected ± U</source>
+        <translation>修正后 ± U</translation>
+    </message>
+    <message>
+        <source>Tilt fit residuals (vertical readings, set 1)</source>
+        <translation>塔差拟合残差（竖直读数，第 1 测回）</translation>
+    </message>
+    <message>
+        <source>residual (&quot;)</source>
+        <translation>残差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>residual</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <source>Vertical readings and the tilt model (set 1)</source>
+        <translation>竖直读数及塔差模型（第 1 测回）</translation>
+    </message>
+    <message>
+        <source>Harmonics of the corrected error</source>
+        <translation>修正后误差的谐波</translation>
+    </message>
+    <message>
+        <source>raw error θ − A</source>
+        <translation>原始误差 θ − A</translation>
+    </message>
+    <message>
+        <source>raw peak-to-peak</source>
+        <translation>原始峰峰值</translation>
+    </message>
+    <message>
+        <source>readings</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>reference row</source>
+        <translation>参考行</translation>
+    </message>
+    <message>
+        <source>report it (uncertainty)</source>
+        <translation>报告（计入不确定度）</translation>
+    </message>
+    <message>
+        <source>reversal</source>
+        <translation>反向差</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>测次</translation>
+    </message>
+    <message>
+        <source>samples per period N</source>
+        <translation>每周期采样数 N</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>组</translation>
+    </message>
+    <message>
+        <source>set-up share −ζ(θ)</source>
+        <translation>安装误差分量 −ζ(θ)</translation>
+    </message>
+    <message>
+        <source>signal</source>
+        <translation>信号</translation>
+    </message>
+    <message>
+        <source>sin</source>
+        <translation>sin</translation>
+    </message>
+    <message>
+        <source>sin fit res.</source>
+        <translation>sin 拟合残差</translation>
+    </message>
+    <message>
+        <source>spread linearly, remove</source>
+        <translation>线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>standard applied</source>
+        <translation>采用的标准</translation>
+    </message>
+    <message>
+        <source>table zero</source>
+        <translation>修正表零点</translation>
+    </message>
+    <message>
+        <source>target</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>target position</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>target unit</source>
+        <translation>目标位置单位</translation>
+    </message>
+    <message>
+        <source>theodolite accuracy (1σ)</source>
+        <translation>经纬仪准确度（1σ）</translation>
+    </message>
+    <message>
+        <source>tilt fit res.</source>
+        <translation>倾斜拟合残差</translation>
+    </message>
+    <message>
+        <source>tilt model ε_y</source>
+        <translation>倾斜模型 ε_y</translation>
+    </message>
+    <message>
+        <source>u cos</source>
+        <translation>u cos</translation>
+    </message>
+    <message>
+        <source>u cos [V]</source>
+        <translation>u cos [V]</translation>
+    </message>
+    <message>
+        <source>u sin</source>
+        <translation>u sin</translation>
+    </message>
+    <message>
+        <source>u sin [V]</source>
+        <translation>u sin [V]</translation>
+    </message>
+    <message>
+        <source>vertical reading</source>
+        <translation>竖直读数</translation>
+    </message>
+    <message>
+        <source>with the face numbers</source>
+        <translation>与面号一致</translation>
+    </message>
+    <message>
+        <source>zenith angle V (E = V − 90°)</source>
+        <translation>天顶距 V（E = V − 90°）</translation>
+    </message>
+    <message>
+        <source>zero at phase 0</source>
+        <translation>相位 0 处为零</translation>
+    </message>
+    <message>
+        <source>θ [deg]</source>
+        <translation>θ [°]</translation>
+    </message>
+    <message>
+        <source>θ face angle</source>
+        <translation>θ 面角</translation>
+    </message>
+    <message>
+        <source>θ phase [deg]</source>
+        <translation>θ 相位 [°]</translation>
+    </message>
+    <message>
+        <source>Export certificate</source>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered</extracomment>
+        <translation>导出证书</translation>
+    </message>
+    <message>
+        <source>Draft written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
+        <translation>草稿已写入 {path} — 草稿：缺少 {missing}；未在证书登记册中记录</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>{path}: {reason}. Nothing else was changed.</source>
+        <translation>{path}：{reason}。其他内容均未改变。</translation>
+    </message>
+    <message>
+        <source>Not issued</source>
+        <translation>未签发</translation>
+    </message>
+    <message>
+        <source>{reason}. No certificate was written or recorded.</source>
+        <translation>{reason}。未写入也未记录任何证书。</translation>
+    </message>
+    <message>
+        <source>Issued, but the file was not written</source>
+        <translation>已签发，但文件未写入</translation>
+    </message>
+    <message>
+        <source>Certificate {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
+        <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
+    </message>
+    <message>
+        <source>Certificate {number} issued: written to {path} and recorded in the register</source>
+        <translation>证书 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
+    </message>
+    <message>
+        <source>Export results</source>
+        <translation>导出结果</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;Excel workbook (*.xlsx)</source>
+        <translation>CSV (*.csv);;Excel 工作簿 (*.xlsx)</translation>
+    </message>
+    <message>
+        <source>Results written to {path}</source>
+        <translation>结果已写入 {path}</translation>
+    </message>
+    <message>
+        <source>Autosave is off: {reason}</source>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture)</extracomment>
+        <translation>自动保存已关闭：{reason}</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>就绪</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>&amp;Import CSV/XLSX…</source>
+        <translation>导入 CSV/XLSX(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Replace the current workbench&apos;s readings with a file&apos;s</source>
+        <translation>用文件中的读数替换当前工作台的读数</translation>
+    </message>
+    <message>
+        <source>Load bundled &amp;sample</source>
+        <translation>载入自带示例(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Export certificate…</source>
+        <translation>导出证书(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Write the current workbench&apos;s test certificate (PDF)</source>
+        <translation>写出当前工作台的检测证书（PDF）</translation>
+    </message>
+    <message>
+        <source>Export &amp;results (CSV/XLSX)…</source>
+        <translation>导出结果(&amp;R)（CSV/XLSX）…</translation>
+    </message>
+    <message>
+        <source>Write every point&apos;s raw, correction, corrected error and U</source>
+        <translation>写出每个点的原始误差、修正值、修正后误差和 U</translation>
+    </message>
+    <message>
+        <source>Certificate re&amp;gister…</source>
+        <translation>证书登记册(&amp;G)…</translation>
+    </message>
+    <message>
+        <source>Every issued certificate: search, verify a PDF, amend, an instrument&apos;s history</source>
+        <translation>所有已签发的证书：检索、验证 PDF、修订、仪器历史</translation>
+    </message>
+    <message>
+        <source>Send to &amp;positioning</source>
+        <translation>发送到定位工作台(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its readings are replaced; Edit &gt; Undo there restores them)</source>
+        <translation>在定位工作台按 ISO 230-2 / VDI 3441 评定本次测量（其读数将被替换；在该工作台 编辑 &gt; 撤销 可恢复）</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>打印(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Print the current workbench&apos;s result and plot (the certificate is the PDF)</source>
+        <translation>打印当前工作台的结果和图（证书为 PDF）</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>粘贴(&amp;P)</translation>
+    </message>
+    <message>
+        <source>&amp;Insert row</source>
+        <translation>插入行(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete rows</source>
+        <translation>删除行(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Next workbench</source>
+        <translation>下一个工作台(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Previous workbench</source>
+        <translation>上一个工作台(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Next &amp;pane (table, set-up, result, plots)</source>
+        <translation>下一个窗格(&amp;P)（表格、设置、结果、图）</translation>
+    </message>
+    <message>
+        <source>Angle &amp;unit of results</source>
+        <translation>结果的角度单位(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Plots, figures, texts and exported results in this unit (certificates keep the unit of the evaluation)</source>
+        <translation>图、数值、文本和导出结果使用此单位（证书保持评定时的单位）</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Manual (this workbench)</source>
+        <translation>手册（本工作台）(&amp;M)</translation>
+    </message>
+    <message>
+        <source>What to measure, how to set up, every setting and plot</source>
+        <translation>测量什么、如何安装、每项设置和每个图</translation>
+    </message>
+    <message>
+        <source>&amp;Quick guide</source>
+        <translation>快速指南(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;About AngleBench</source>
+        <translation>关于 AngleBench(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo {what}</source>
+        <translation>撤销(&amp;U) {what}</translation>
+    </message>
+    <message>
+        <source>&amp;Redo {what}</source>
+        <translation>重做(&amp;R) {what}</translation>
+    </message>
+    <message>
+        <source>AngleBench — quick guide</source>
+        <translation>AngleBench — 快速指南</translation>
+    </message>
+    <message>
+        <source>Type or paste the readings on the left (Return goes to the next row&apos;s first reading; a nominal step fills θ, face or target). The result, its warnings and the plots follow every edit.
 
 Keys: Ctrl+PgDn / Ctrl+PgUp or Ctrl+Tab switch workbenches; F6 moves between table, set-up, result and plots; Ctrl+Z / Ctrl+Shift+Z undo and redo; Ctrl+E exports the certificate; F1 opens the manual; right-click a plot to copy or save its image.
 
-Errors are errors of indication (indicated − reference); the positioning workbench keeps ISO 230-2's actual − target. Certificates are numbered and recorded by the register (File › Certificate register). Drop a CSV or XLSX on the window to import it.</source>
-            <translation>在左侧输入或粘贴读数（回车转到下一行的第一个读数；名义步距会自动填写 θ、面号或目标位置）。结果、警告和图随每次编辑更新。
+Errors are errors of indication (indicated − reference); the positioning workbench keeps ISO 230-2&apos;s actual − target. Certificates are numbered and recorded by the register (File › Certificate register). Drop a CSV or XLSX on the window to import it.</source>
+        <translation>在左侧输入或粘贴读数（回车转到下一行的第一个读数；名义步距会自动填写 θ、面号或目标位置）。结果、警告和图随每次编辑更新。
 
 按键：Ctrl+PgDn / Ctrl+PgUp 或 Ctrl+Tab 切换工作台；F6 在表格、设置、结果和图之间移动；Ctrl+Z / Ctrl+Shift+Z 撤销和重做；Ctrl+E 导出证书；F1 打开手册；右键单击图可复制或保存图像。
 
 误差为示值误差（示值 − 参考值）；定位工作台沿用 ISO 230-2 的实际位置 − 目标位置。证书由登记册编号并记录（文件 › 证书登记册）。将 CSV 或 XLSX 拖到窗口上即可导入。</translation>
-        </message>
-        <message>
-            <source>untitled</source>
-            <translation>未命名</translation>
-        </message>
-        <message>
-            <source>Unsaved readings</source>
-            <translation>未保存的读数</translation>
-        </message>
-        <message>
-            <source>Save the changes to the project first?</source>
-            <translation>先保存对项目的更改吗？</translation>
-        </message>
-        <message>
-            <source>Open project</source>
-            <translation>打开项目</translation>
-        </message>
-        <message>
-            <source>AngleBench project (*.anglebench.json *.json)</source>
-            <translation>AngleBench 项目 (*.anglebench.json *.json)</translation>
-        </message>
-        <message>
-            <source>Cannot open project</source>
-            <translation>无法打开项目</translation>
-        </message>
-        <message>
-            <source>{reason}. Your current work is as it was.</source>
-            <translation>{reason}。当前工作保持不变。</translation>
-        </message>
-        <message>
-            <source>Opened {path}</source>
-            <translation>已打开 {path}</translation>
-        </message>
-        <message>
-            <source>Save project</source>
-            <translation>保存项目</translation>
-        </message>
-        <message>
-            <source>Cannot save</source>
-            <translation>无法保存</translation>
-        </message>
-        <message>
-            <source>{path}: {reason}. Your readings are still here.</source>
-            <translation>{path}：{reason}。您的读数仍在。</translation>
-        </message>
-        <message>
-            <source>Saved {path}</source>
-            <translation>已保存 {path}</translation>
-        </message>
-        <message>
-            <source>Import readings into {workbench}</source>
-            <translation>将读数导入{workbench}</translation>
-        </message>
-        <message>
-            <source>Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)</source>
-            <translation>读数 (*.csv *.txt *.xlsx *.xlsm);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Cannot import</source>
-            <translation>无法导入</translation>
-        </message>
-        <message>
-            <source>Imported {path} (Edit › Undo restores the old readings)</source>
-            <translation>已导入 {path}（编辑 › 撤销 可恢复原读数）</translation>
-        </message>
-        <message>
-            <source>Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)</source>
-            <translation>已导入 {name}：{rows} 行（编辑 › 撤销 可恢复之前的读数）</translation>
-        </message>
-        <message>
-            <source>Printed</source>
-            <translation>已打印</translation>
-        </message>
-        <message>
-            <source>Cannot open</source>
-            <translation>无法打开</translation>
-        </message>
-        <message>
-            <source>Cannot send</source>
-            <translation>无法发送</translation>
-        </message>
-        <message>
-            <source>{workbench} has nothing to send to the positioning workbench.</source>
-            <translation>{workbench}没有可发送到定位工作台的内容。</translation>
-        </message>
-        <message>
-            <source>no readings have been analysed yet</source>
-            <translation>尚未分析任何读数</translation>
-        </message>
-        <message>
-            <source>Nothing to send</source>
-            <translation>没有可发送的内容</translation>
-        </message>
-        <message>
-            <source>{workbench}: {rows} readings sent (deviation = −corrected error); Edit › Undo restores the positioning readings</source>
-            <translation>{workbench}：已发送 {rows} 个读数（偏差 = −修正后误差）；编辑 › 撤销 可恢复定位工作台的读数</translation>
-        </message>
-        <message>
-            <source>Bundled samples loaded in every workbench</source>
-            <translation>已在每个工作台载入自带示例</translation>
-        </message>
-        <message>
-            <source>Export a draft?</source>
-            <translation>导出草稿？</translation>
-        </message>
-        <message>
-            <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
-            <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
-        </message>
-        <message>
-            <source>This certificate replaces {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
-            <translation>本证书替代 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
-        </message>
-        <message>
-            <source>This certificate amends {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
-            <translation>本证书修订 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
-        </message>
-        <message>
-            <source>What changed</source>
-            <translation>改变的内容</translation>
-        </message>
-        <message>
-            <source>Nothing to export</source>
-            <translation>没有可导出的内容</translation>
-        </message>
-        <message>
-            <source>Cannot recover</source>
-            <translation>无法恢复</translation>
-        </message>
-        <message>
-            <source>{reason} (the file was kept aside as damaged)</source>
-            <translation>{reason}（该文件已作为损坏文件另存）</translation>
-        </message>
-        <message>
-            <source>an unknown time</source>
-            <translation>未知时间</translation>
-        </message>
-        <message>
-            <source>an untitled project</source>
-            <translation>未命名项目</translation>
-        </message>
-        <message>
-            <source>Recover unsaved work</source>
-            <translation>恢复未保存的工作</translation>
-        </message>
-        <message>
-            <source>AngleBench did not close normally. Restore the unsaved readings of {name}, autosaved {when}?</source>
-            <translation>AngleBench 上次未正常关闭。恢复 {name} 于 {when} 自动保存的未保存读数吗？</translation>
-        </message>
-        <message>
-            <source>The autosave was kept aside: {path}</source>
-            <translation>自动保存文件已另存：{path}</translation>
-        </message>
-        <message>
-            <source>About AngleBench</source>
-            <translation>关于 AngleBench</translation>
-        </message>
-        <message>
-            <source>Angle metrology workbench.</source>
-            <translation>角度计量工作台。</translation>
-        </message>
-        <message>
-            <source>Number</source>
-            <translation>编号</translation>
-        </message>
-        <message>
-            <source>Status</source>
-            <translation>状态</translation>
-        </message>
-        <message>
-            <source>Revision</source>
-            <translation>修订</translation>
-        </message>
-        <message>
-            <source>Issued</source>
-            <translation>签发日期</translation>
-        </message>
-        <message>
-            <source>Calibrated</source>
-            <translation>校准日期</translation>
-        </message>
-        <message>
-            <source>Workbench</source>
-            <translation>工作台</translation>
-        </message>
-        <message>
-            <source>Serial</source>
-            <translation>编号（出厂）</translation>
-        </message>
-        <message>
-            <source>Customer</source>
-            <translation>委托方</translation>
-        </message>
-        <message>
-            <source>Register</source>
-            <translation>登记册</translation>
-        </message>
-        <message>
-            <source>Select a certificate first.</source>
-            <translation>请先选择一份证书。</translation>
-        </message>
-        <message>
-            <source>{number} was superseded by {newer}: amend or replace that one.</source>
-            <translation>{number} 已被 {newer} 取代：请修订或替代后者。</translation>
-        </message>
-        <message>
-            <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues a replacement of {number} and asks what changed.</source>
-            <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的替代证书并询问改变的内容。</translation>
-        </message>
-        <message>
-            <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues an amendment to {number} and asks what changed.</source>
-            <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的修订证书并询问改变的内容。</translation>
-        </message>
-        <message>
-            <source>Cannot print</source>
-            <translation>无法打印</translation>
-        </message>
-        <message>
-            <source>Cannot verify</source>
-            <translation>无法验证</translation>
-        </message>
-        <message>
-            <source>Not in the register</source>
-            <translation>不在登记册中</translation>
-        </message>
-        <message>
-            <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
-            <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
-        </message>
-        <message>
-            <source>Verified</source>
-            <translation>已验证</translation>
-        </message>
-        <message>
-            <source>{path} is certificate {number} as issued on {date} ({status}), byte for byte.</source>
-            <translation>{path} 逐字节与 {date} 签发的证书 {number}（{status}）一致。</translation>
-        </message>
-        <message>
-            <source>Certificate number</source>
-            <translation>证书编号</translation>
-        </message>
-        <message>
-            <source>Date of issue (YYYY-MM-DD)</source>
-            <translation>签发日期（YYYY-MM-DD）</translation>
-        </message>
-        <message>
-            <source>Date of calibration</source>
-            <translation>校准日期</translation>
-        </message>
-        <message>
-            <source>Tolerance ±</source>
-            <translation>允差 ±</translation>
-        </message>
-        <message>
-            <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
-            <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
-        </message>
-        <message>
-            <source>Laboratory</source>
-            <translation>实验室</translation>
-        </message>
-        <message>
-            <source>Address</source>
-            <translation>地址</translation>
-        </message>
-        <message>
-            <source>Accreditation</source>
-            <translation>认可</translation>
-        </message>
-        <message>
-            <source>Number scheme</source>
-            <translation>编号规则</translation>
-        </message>
-        <message>
-            <source>Item under test</source>
-            <translation>被测件</translation>
-        </message>
-        <message>
-            <source>Manufacturer</source>
-            <translation>制造商</translation>
-        </message>
-        <message>
-            <source>Serial number</source>
-            <translation>出厂编号</translation>
-        </message>
-        <message>
-            <source>Grade / specification</source>
-            <translation>等级 / 规格</translation>
-        </message>
-        <message>
-            <source>Resolution</source>
-            <translation>分辨力</translation>
-        </message>
-        <message>
-            <source>Temperature (°C)</source>
-            <translation>温度 (°C)</translation>
-        </message>
-        <message>
-            <source>Relative humidity (%)</source>
-            <translation>相对湿度 (%)</translation>
-        </message>
-        <message>
-            <source>Operator</source>
-            <translation>校准员</translation>
-        </message>
-        <message>
-            <source>Approved by</source>
-            <translation>批准人</translation>
-        </message>
-        <message>
-            <source>Coverage probability (%)</source>
-            <translation>包含概率 (%)</translation>
-        </message>
-        <message>
-            <source>Table loaded (sha256)</source>
-            <translation>已载入的修正表（sha256）</translation>
-        </message>
-        <message>
-            <source>Document</source>
-            <translation>文件类型</translation>
-        </message>
-        <message>
-            <source>Calibration certificate</source>
-            <extracomment>What the document is: a calibration certificate, or a test report.</extracomment>
-            <translation>校准证书</translation>
-        </message>
-        <message>
-            <source>Test report</source>
-            <translation>检测报告</translation>
-        </message>
-        <message>
-            <source>certificate field '{field_name}' must be text</source>
-            <extracomment>the certificate's language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English ("校准证书 Calibration certificate") What a reference standard's uncertainty figure applies to (see ReferenceStandard).</extracomment>
-            <translation>证书字段 '{field_name}' 必须是文本</translation>
-        </message>
-        <message>
-            <source>certificate field '{field_name}' must be a number</source>
-            <translation>证书字段 '{field_name}' 必须是数字</translation>
-        </message>
-        <message>
-            <source>certificate field '{field_name}': '{shown}' is not a number</source>
-            <translation>证书字段 '{field_name}'：'{shown}' 不是数字</translation>
-        </message>
-        <message>
-            <source>certificate field '{field_name}' must be a finite number</source>
-            <translation>证书字段 '{field_name}' 必须是有限的数</translation>
-        </message>
-        <message>
-            <source>certificate field '{field_name}': '{text}' is not a date (YYYY-MM-DD)</source>
-            <translation>证书字段 '{field_name}'：'{text}' 不是日期（YYYY-MM-DD）</translation>
-        </message>
-        <message>
-            <source>certificate field '{name}' must be an object</source>
-            <translation>证书字段 '{name}' 必须是对象</translation>
-        </message>
-        <message>
-            <source>certificate field '{name}.basis' must be one of {join}, not '{basis}'</source>
-            <translation>证书字段 '{name}.basis' 必须是 {join} 之一，而不是 '{basis}'</translation>
-        </message>
-        <message>
-            <source>certificate field '{name}.uncertainty' must be 0 to 3600" (or 0 to 3600 µm)</source>
-            <translation>证书字段 '{name}.uncertainty' 必须在 0 至 3600"（或 0 至 3600 µm）之间</translation>
-        </message>
-        <message>
-            <source>certificate field '{name}.applies_to' must be one of {join}, not '{applies_to}'</source>
-            <translation>证书字段 '{name}.applies_to' 必须是 {join} 之一，而不是 '{applies_to}'</translation>
-        </message>
-        <message>
-            <source>certificate metadata must be a JSON object</source>
-            <extracomment>keys written before their figures had a unit (project schema 1) → the keys now</extracomment>
-            <translation>证书信息必须是 JSON 对象</translation>
-        </message>
-        <message>
-            <source>certificate field 'standards' must be a list</source>
-            <translation>证书字段 'standards' 必须是列表</translation>
-        </message>
-        <message>
-            <source>certificate field 'language' must be one of {join}, not '{language}'</source>
-            <translation>证书字段 'language' 必须是 {join} 之一，而不是 '{language}'</translation>
-        </message>
-        <message>
-            <source>certificate field 'decision_rule' must be one of {join}, not '{decision_rule}'</source>
-            <translation>证书字段 'decision_rule' 必须是 {join} 之一，而不是 '{decision_rule}'</translation>
-        </message>
-        <message>
-            <source>certificate field 'tolerance' must be positive</source>
-            <translation>证书字段 'tolerance' 必须为正数</translation>
-        </message>
-        <message>
-            <source>certificate field '{key}' must be one of {join}, not '{unit}'</source>
-            <translation>证书字段 '{key}' 必须是 {join} 之一，而不是 '{unit}'</translation>
-        </message>
-        <message>
-            <source>certificate field 'item_resolution' is in {given}, but the errors are in {unit}: state the resolution in a unit of the same kind</source>
-            <translation>证书字段 'item_resolution' 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出分辨力</translation>
-        </message>
-        <message>
-            <source>certificate field 'tolerance' is in {given}, but the errors are in {unit}: state the tolerance in a unit of the same kind</source>
-            <translation>证书字段 'tolerance' 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出允差</translation>
-        </message>
-        <message>
-            <source>certificate field 'humidity_pct' must be 0 to 100 %</source>
-            <translation>证书字段 'humidity_pct' 必须在 0 至 100 % 之间</translation>
-        </message>
-        <message>
-            <source>certificate field 'item_resolution' must be 0 to 3600" (or 0 to 3600 µm)</source>
-            <translation>证书字段 'item_resolution' 必须在 0 至 3600"（或 0 至 3600 µm）之间</translation>
-        </message>
-        <message>
-            <source>certificate field 'coverage_probability_pct' must be 50 to 99.9 %</source>
-            <translation>证书字段 'coverage_probability_pct' 必须在 50 至 99.9 % 之间</translation>
-        </message>
-        <message>
-            <source>certificate field 'decision_quantity' must be one of {join}, not '{decision_quantity}'</source>
-            <translation>证书字段 'decision_quantity' 必须是 {join} 之一，而不是 '{decision_quantity}'</translation>
-        </message>
-        <message>
-            <source>certificate field 'document_type' must be one of {join}, not '{document_type}'</source>
-            <translation>证书字段 'document_type' 必须是 {join} 之一，而不是 '{document_type}'</translation>
-        </message>
-        <message>
-            <source>certificate number</source>
-            <translation>证书编号</translation>
-        </message>
-        <message>
-            <source>laboratory</source>
-            <translation>校准机构</translation>
-        </message>
-        <message>
-            <source>supersedes</source>
-            <extracomment>what ``show`` lists of a record, named as the register's columns (translated as names)</extracomment>
-            <translation>取代</translation>
-        </message>
-        <message>
-            <source>superseded_by</source>
-            <translation>被取代于</translation>
-        </message>
-        <message>
-            <source>issue_date</source>
-            <translation>签发日期</translation>
-        </message>
-        <message>
-            <source>calibration_date</source>
-            <translation>校准日期</translation>
-        </message>
-        <message>
-            <source>workbench</source>
-            <translation>工作台</translation>
-        </message>
-        <message>
-            <source>item_description</source>
-            <translation>被校对象</translation>
-        </message>
-        <message>
-            <source>item_manufacturer</source>
-            <translation>制造厂</translation>
-        </message>
-        <message>
-            <source>item_serial</source>
-            <translation>出厂编号</translation>
-        </message>
-        <message>
-            <source>customer</source>
-            <translation>委托方</translation>
-        </message>
-        <message>
-            <source>workstation</source>
-            <translation>工作站</translation>
-        </message>
-        <message>
-            <source>issued_at</source>
-            <translation>签发时间</translation>
-        </message>
-        <message>
-            <source>pdf_sha256</source>
-            <translation>PDF 的 sha256</translation>
-        </message>
-        <message>
-            <source>The certificate register</source>
-            <translation>证书登记册</translation>
-        </message>
-        <message>
-            <source>sqlite:///path, a file path or postgresql://user@host/db</source>
-            <translation>sqlite:///路径、文件路径或 postgresql://user@host/db</translation>
-        </message>
-        <message>
-            <source>the certificates, newest first</source>
-            <translation>列出证书，最新的在前</translation>
-        </message>
-        <message>
-            <source>text to find in the number, the serial or the customer</source>
-            <translation>在证书编号、出厂编号或委托方中查找的文字</translation>
-        </message>
-        <message>
-            <source>one certificate's record</source>
-            <translation>一份证书的记录</translation>
-        </message>
-        <message>
-            <source>the certificate number</source>
-            <translation>证书编号</translation>
-        </message>
-        <message>
-            <source>also write the PDF as issued</source>
-            <translation>同时写出签发时的 PDF</translation>
-        </message>
-        <message>
-            <source>also write the project behind it</source>
-            <translation>同时写出其所依据的项目</translation>
-        </message>
-        <message>
-            <source>is this PDF, byte for byte, one the register issued?</source>
-            <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
-        </message>
-        <message>
-            <source>every record: index.csv, the PDFs and the projects</source>
-            <translation>导出全部记录：index.csv、PDF 和项目</translation>
-        </message>
-        <message>
-            <source>the archive to write</source>
-            <translation>要写出的压缩包</translation>
-        </message>
-        <message>
-            <source>continue numbering from hand-issued numbers</source>
-            <translation>在手工签发的编号之后继续编号</translation>
-        </message>
-        <message>
-            <source>e.g. AB-{year}-{seq:04d}</source>
-            <translation>例如 AB-{year}-{seq:04d}</translation>
-        </message>
-        <message>
-            <source>the next sequence number to issue</source>
-            <translation>下一个要签发的序号</translation>
-        </message>
-        <message>
-            <source>YYYY-MM-DD for the scheme's date fields (default today)</source>
-            <translation>编号规则中日期字段所用的 YYYY-MM-DD（默认为今天）</translation>
-        </message>
-        <message>
-            <source>set an instrument's calibration interval</source>
-            <translation>设置仪器的校准周期</translation>
-        </message>
-        <message>
-            <source>the instrument's serial number</source>
-            <translation>仪器的出厂编号</translation>
-        </message>
-        <message>
-            <source>0 clears it</source>
-            <translation>0 表示清除</translation>
-        </message>
-        <message>
-            <source>{number}  ({status}{revision})</source>
-            <translation>{number}（{status}{revision}）</translation>
-        </message>
-        <message>
-            <source>  {field}: {value}</source>
-            <translation>  {field}：{value}</translation>
-        </message>
-        <message>
-            <source>  headline {name}: {value}</source>
-            <translation>  主要结果 {name}：{value}</translation>
-        </message>
-        <message>
-            <source>  software: {versions}</source>
-            <translation>  软件：{versions}</translation>
-        </message>
-        <message>
-            <source>  next calibration of {serial} due: {date}</source>
-            <translation>  {serial} 的下次校准日期：{date}</translation>
-        </message>
-        <message>
-            <source>{n} certificate(s) exported to {out}</source>
-            <translation>已将 {n} 份证书导出到 {out}</translation>
-        </message>
-        <message>
-            <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
-            <translation>{path}：不在登记册中（没有已签发的 PDF 具有此 SHA-256：已被改动、是草稿，或来自另一登记册）</translation>
-        </message>
-        <message>
-            <source>{path}: certificate {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
-            <translation>{path}：证书 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
-        </message>
-        <message>
-            <source>--date {date}: not YYYY-MM-DD</source>
-            <translation>--date {date}：不是 YYYY-MM-DD 格式</translation>
-        </message>
-        <message>
-            <source>the next certificate of {scheme} will be {number}</source>
-            <translation>{scheme} 的下一份证书编号将为 {number}</translation>
-        </message>
-        <message>
-            <source>anglebench register: cannot write: {reason}</source>
-            <translation>anglebench register：无法写入：{reason}</translation>
-        </message>
-        <message>
-            <source>item under test</source>
-            <translation>被校准对象</translation>
-        </message>
-        <message>
-            <source>item serial number</source>
-            <translation>被校对象出厂编号</translation>
-        </message>
-        <message>
-            <source>date of calibration</source>
-            <translation>校准日期</translation>
-        </message>
-        <message>
-            <source>operator</source>
-            <translation>校准员</translation>
-        </message>
-        <message>
-            <source>reference standards</source>
-            <translation>计量标准</translation>
-        </message>
-        <message>
-            <source>Language</source>
-            <translation>语言</translation>
-        </message>
-        <message>
-            <source>Decision rule</source>
-            <translation>判定规则</translation>
-        </message>
-        <message>
-            <source>Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)</source>
-            <translation>保护带 w = U：合格 / 有条件 / 不合格（ILAC-G8 4.2.3）</translation>
-        </message>
-        <message>
-            <source>Guard band w = U: pass / fail (ILAC-G8 4.2.2)</source>
-            <translation>保护带 w = U：合格 / 不合格（ILAC-G8 4.2.2）</translation>
-        </message>
-        <message>
-            <source>Simple acceptance (ILAC-G8 4.2.1)</source>
-            <translation>简单接受（ILAC-G8 4.2.1）</translation>
-        </message>
-        <message>
-            <source>Combined standard u_c</source>
-            <translation>合成标准不确定度 u_c</translation>
-        </message>
-        <message>
-            <source>Expanded U (k = {k})</source>
-            <translation>扩展不确定度 U（k = {k}）</translation>
-        </message>
-        <message>
-            <source>Uncertainty budget</source>
-            <translation>不确定度分量一览表</translation>
-        </message>
-        <message>
-            <source>Input</source>
-            <translation>输入量</translation>
-        </message>
-        <message>
-            <source>Type</source>
-            <translation>评定类别</translation>
-        </message>
-        <message>
-            <source>Distribution</source>
-            <translation>分布</translation>
-        </message>
-        <message>
-            <source>Value ({unit})</source>
-            <translation>量值 ({unit})</translation>
-        </message>
-        <message>
-            <source>Divisor</source>
-            <translation>除数</translation>
-        </message>
-        <message>
-            <source>Share %</source>
-            <translation>占比 %</translation>
-        </message>
-        <message>
-            <source>Reference standard</source>
-            <translation>计量标准</translation>
-        </message>
-        <message>
-            <source>face, stated from face 1</source>
-            <translation>面，以第 1 面为基准给出</translation>
-        </message>
-        <message>
-            <source>{basis} per {per}, certificate {certificate}</source>
-            <translation>每个{per}的{basis}，证书 {certificate}</translation>
-        </message>
-        <message>
-            <source>{basis} per {per}</source>
-            <translation>每个{per}的{basis}</translation>
-        </message>
-        <message>
-            <source>Item resolution</source>
-            <translation>被校对象分辨力</translation>
-        </message>
-        <message>
-            <source>resolution {r} of the item's indication</source>
-            <translation>被校对象示值的分辨力 {r}</translation>
-        </message>
-        <message>
-            <source>Decided quantity</source>
-            <translation>判定的量</translation>
-        </message>
-        <message>
-            <source>Expanded uncertainty U (p = {p} %)</source>
-            <translation>扩展不确定度 U（p = {p} %）</translation>
-        </message>
-        <message>
-            <source>largest over the {points}; k = {k} there</source>
-            <translation>{points}中的最大值；该处 k = {k}</translation>
-        </message>
-        <message>
-            <source>Half the peak-to-peak (Monte Carlo U)</source>
-            <translation>峰峰值的一半（蒙特卡洛 U）</translation>
-        </message>
-        <message>
-            <source>Every point with its own U</source>
-            <translation>每个点及其各自的 U</translation>
-        </message>
-        <message>
-            <source>Amendment {number} to certificate {certificate}</source>
-            <extracomment>the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
-            <translation>证书 {certificate} 的第 {number} 号修改</translation>
-        </message>
-        <message>
-            <source>Amendment to certificate {certificate}</source>
-            <translation>证书 {certificate} 的修改</translation>
-        </message>
-        <message>
-            <source>This certificate replaces certificate {certificate}</source>
-            <translation>本证书替代证书 {certificate}</translation>
-        </message>
-        <message>
-            <source>{what}, which it supersedes; the original stays on record unchanged. Changed: {change}</source>
-            <translation>{what}，原证书作废；原证书存档，内容不变。修改内容：{change}</translation>
-        </message>
-        <message>
-            <source>{what}, which it supersedes; the original stays on record unchanged.</source>
-            <translation>{what}，原证书作废；原证书存档，内容不变。</translation>
-        </message>
-        <message>
-            <source>Page {page} of {pages}</source>
-            <translation>第 {page} 页 共 {pages} 页</translation>
-        </message>
-        <message>
-            <source>(no data)</source>
-            <translation>（无数据）</translation>
-        </message>
-        <message>
-            <source>Laboratory not stated</source>
-            <translation>未注明校准机构</translation>
-        </message>
-        <message>
-            <source>Certificate no number</source>
-            <translation>证书 无编号</translation>
-        </message>
-        <message>
-            <source>This certificate shall not be reproduced except in full without the laboratory's written approval.</source>
-            <translation>未经本实验室书面批准，不得部分复制本证书。</translation>
-        </message>
-        <message>
-            <source>Certificate {number} · AngleBench {version}</source>
-            <translation>证书 {number} · AngleBench {version}</translation>
-        </message>
-        <message>
-            <source>DRAFT</source>
-            <translation>草稿</translation>
-        </message>
-        <message>
-            <source>not stated</source>
-            <translation>未注明</translation>
-        </message>
-        <message>
-            <source>Reference standards</source>
-            <translation>计量标准</translation>
-        </message>
-        <message>
-            <source>Standard</source>
-            <translation>计量标准</translation>
-        </message>
-        <message>
-            <source>Serial no.</source>
-            <translation>出厂编号</translation>
-        </message>
-        <message>
-            <source>Certificate no.</source>
-            <translation>证书编号</translation>
-        </message>
-        <message>
-            <source>Uncertainty</source>
-            <translation>不确定度</translation>
-        </message>
-        <message>
-            <source>DRAFT — not valid as a certificate. Missing: {fields}.</source>
-            <translation>草稿——不能作为证书使用。缺少：{fields}。</translation>
-        </message>
-        <message>
-            <source>tolerance ±{tolerance}</source>
-            <translation>允差 ±{tolerance}</translation>
-        </message>
-        <message>
-            <source>Reference: {reference}.</source>
-            <translation>参考文献：{reference}。</translation>
-        </message>
-        <message>
-            <source>The evaluation follows {standard}, implemented in AngleBench {version}; its verification is the validation report of that version (anglebench validate): simulations with known truth and hand-computed examples, each with its result.</source>
-            <translation>评定依据 {standard}，由 AngleBench {version} 实现；其验证记录为该版本的确认报告（anglebench validate）：已知真值的仿真和手工计算示例，各附结果。</translation>
-        </message>
-        <message>
-            <source>This is a non-standard method, published in the reference above and implemented in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the validation report of that version (anglebench validate): the reference figures of the publication and exact simulations with known truth, each with its result.</source>
-            <translation>本方法为非标准方法，发表于上述参考文献，由 AngleBench {version} 实现。其确认记录（ISO/IEC 17025 7.2.2）为该版本的确认报告（anglebench validate）：原文的参考数据和已知真值的精确仿真，各附结果。</translation>
-        </message>
-        <message>
-            <source>The expanded uncertainty of the error is U = {u} (the largest over the points; each point's U is in the results table). At each point it is the combined standard uncertainty multiplied by the coverage factor k of Student's t for that point's effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of {p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM (JCGM 100:2008).</source>
-            <translation>误差的扩展不确定度 U = {u}（各点中的最大值；各点的 U 见结果表）。各点的扩展不确定度为合成标准不确定度乘以包含因子 k，k 为该点有效自由度（Welch–Satterthwaite 公式）和包含概率 {p} % 下的 t 分布值；最大处 k = {k}。不确定度按 GUM（JCGM 100:2008）评定。</translation>
-        </message>
-        <message>
-            <source>Decided quantity: {quantity}.</source>
-            <translation>判定的量：{quantity}。</translation>
-        </message>
-        <message>
-            <source>Decision rule: {rule}.</source>
-            <translation>判定规则：{rule}。</translation>
-        </message>
-        <message>
-            <source>Zones: {zones}.</source>
-            <translation>区间：{zones}。</translation>
-        </message>
-        <message>
-            <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
-            <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
-        </message>
-        <message>
-            <source>{standard} (certificate {certificate})</source>
-            <translation>{standard}（证书 {certificate}）</translation>
-        </message>
-        <message>
-            <source>standard</source>
-            <translation>计量标准</translation>
-        </message>
-        <message>
-            <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the reference standards listed, calibrated as stated in their certificates: {names}.</source>
-            <translation>计量溯源性：通过所列计量标准，校准结果可溯源至国际单位制（SI）平面角单位，各标准的校准见其证书：{names}。</translation>
-        </message>
-        <message>
-            <source>temperature {t} °C</source>
-            <translation>温度 {t} °C</translation>
-        </message>
-        <message>
-            <source>relative humidity {h} %</source>
-            <translation>相对湿度 {h} %</translation>
-        </message>
-        <message>
-            <source>Signature and date</source>
-            <translation>签名及日期</translation>
-        </message>
-        <message>
-            <source>Unit of the uncertainty (", µrad, nm, µm …)</source>
-            <translation>不确定度的单位（"、µrad、nm、µm …）</translation>
-        </message>
-        <message>
-            <source>reference standard '{name}': its uncertainty is in {given}, but the errors are in {unit}: state it in a unit of the same kind</source>
-            <translation>参考标准 '{name}'：其不确定度的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出</translation>
-        </message>
-        <message>
-            <source>Stated as (U95, MPE, u)</source>
-            <translation>表示为（U95、MPE、u）</translation>
-        </message>
-        <message>
-            <source>Per (reading, from face 1)</source>
-            <translation>适用于（每个读数、相对第 1 面）</translation>
-        </message>
-        <message>
-            <source>Certificate details</source>
-            <translation>证书信息</translation>
-        </message>
-        <message>
-            <source>allocated by the register on export</source>
-            <translation>导出时由登记册分配</translation>
-        </message>
-        <message>
-            <source>Leave empty: the register allocates the next number of the scheme, unique across every workstation sharing it. A number typed here is refused if it was issued before.</source>
-            <translation>留空：由登记册按编号规则分配下一个编号，在共享登记册的所有工作站中唯一。此处输入的编号若已签发过将被拒绝。</translation>
-        </message>
-        <message>
-            <source>Certificate</source>
-            <translation>证书</translation>
-        </message>
-        <message>
-            <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
-            <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
-        </message>
-        <message>
-            <source>Environment and people</source>
-            <translation>环境和人员</translation>
-        </message>
-        <message>
-            <source>Remarks printed on the certificate</source>
-            <translation>印在证书上的备注</translation>
-        </message>
-        <message>
-            <source>Reference standards (their uncertainty enters the budget per reading)</source>
-            <translation>计量标准（其不确定度按每个读数计入评定）</translation>
-        </message>
-        <message>
-            <source>Add standard</source>
-            <translation>添加标准</translation>
-        </message>
-        <message>
-            <source>Remove standard</source>
-            <translation>删除标准</translation>
-        </message>
-        <message>
-            <source>Export…</source>
-            <translation>导出…</translation>
-        </message>
-        <message>
-            <source>Save as lab defaults</source>
-            <translation>保存为实验室默认值</translation>
-        </message>
-        <message>
-            <source>Lab, number scheme, standards, people and decision rule become the start of every new certificate</source>
-            <translation>实验室、编号规则、计量标准、人员和判定规则将作为每份新证书的起始内容</translation>
-        </message>
-        <message>
-            <source> (and {count} more, marked red)</source>
-            <translation>（另有 {count} 处，已标红）</translation>
-        </message>
-        <message>
-            <source>Saved as the lab's defaults.</source>
-            <translation>已保存为实验室默认值。</translation>
-        </message>
-        <message>
-            <source>(not in the file)</source>
-            <translation>（文件中没有）</translation>
-        </message>
-        <message>
-            <source>Which column is which?</source>
-            <translation>各列分别是什么？</translation>
-        </message>
-        <message>
-            <source> (optional)</source>
-            <translation>（可选）</translation>
-        </message>
-        <message>
-            <source>Remember for files with these headers</source>
-            <translation>对具有这些表头的文件记住此对应</translation>
-        </message>
-        <message>
-            <source>The first rows as they would be read:</source>
-            <translation>前几行的读取结果：</translation>
-        </message>
-        <message>
-            <source>Still needed: {columns}</source>
-            <translation>仍需要：{columns}</translation>
-        </message>
-        <message>
-            <source>Values of the swept parameter, separated by commas</source>
-            <translation>扫描参数的取值，以逗号分隔</translation>
-        </message>
-        <message>
-            <source>sweep values</source>
-            <translation>扫描取值</translation>
-        </message>
-        <message>
-            <source>Export table (CSV / C header)…</source>
-            <translation>导出修正表（CSV / C 头文件）…</translation>
-        </message>
-        <message>
-            <source>Interpolation error</source>
-            <translation>细分误差</translation>
-        </message>
-        <message>
-            <source>Signals and fit</source>
-            <translation>信号及拟合</translation>
-        </message>
-        <message>
-            <source>Lissajous</source>
-            <translation>李萨如图</translation>
-        </message>
-        <message>
-            <source>Spectrum</source>
-            <translation>频谱</translation>
-        </message>
-        <message>
-            <source>Drift per period</source>
-            <translation>逐周期漂移</translation>
-        </message>
-        <message>
-            <source>Export correction table</source>
-            <translation>导出修正表</translation>
-        </message>
-        <message>
-            <source>CSV (*.csv);;C header (*.h)</source>
-            <translation>CSV (*.csv);;C 头文件 (*.h)</translation>
-        </message>
-        <message>
-            <source>AngleBench — manual</source>
-            <translation>AngleBench — 手册</translation>
-        </message>
-        <message>
-            <source>Save image</source>
-            <translation>保存图像</translation>
-        </message>
-        <message>
-            <source>PNG image (*.png)</source>
-            <translation>PNG 图像 (*.png)</translation>
-        </message>
-        <message>
-            <source>Copy image</source>
-            <translation>复制图像</translation>
-        </message>
-        <message>
-            <source>Save image…</source>
-            <translation>保存图像…</translation>
-        </message>
-        <message>
-            <source>tilt ψ</source>
-            <translation>倾斜 ψ</translation>
-        </message>
-        <message>
-            <source>direction ω</source>
-            <translation>方向 ω</translation>
-        </message>
-        <message>
-            <source>sweep</source>
-            <translation>扫描参数</translation>
-        </message>
-        <message>
-            <source>The parameter drawn as a family of curves: the tilt's direction ω (as in Fig. 3 of Tian et al. 2015, the polygon method's paper) or its size ψ (as in its Fig. 4)</source>
-            <translation>画成一族曲线的参数：倾斜方向 ω（如多面棱体方法论文田留德等 2015 的图 3）或倾斜大小 ψ（如该文图 4）</translation>
-        </message>
-        <message>
-            <source>levelled with the rotary axis</source>
-            <translation>与回转轴一同调平</translation>
-        </message>
-        <message>
-            <source>θ (deg)</source>
-            <translation>θ (°)</translation>
-        </message>
-        <message>
-            <source>ε_x induced error (")</source>
-            <translation>ε_x 引起的误差 (")</translation>
-        </message>
-        <message>
-            <source>ε_y vertical (")</source>
-            <translation>ε_y 垂直 (")</translation>
-        </message>
-        <message>
-            <source>harmonic order (1 = eccentricity, 2 = ellipticity)</source>
-            <translation>谐波次数（1 = 偏心，2 = 椭圆度）</translation>
-        </message>
-        <message>
-            <source>Load polygon certificate…</source>
-            <translation>载入多面棱体证书…</translation>
-        </message>
-        <message>
-            <source>Fill the deviation column from a CSV/XLSX with position,deviation_arcsec</source>
-            <translation>从含 position,deviation_arcsec 的 CSV/XLSX 填写偏差列</translation>
-        </message>
-        <message>
-            <source>Error over the circle</source>
-            <translation>全圆误差</translation>
-        </message>
-        <message>
-            <source>Vertical readings / tilt</source>
-            <translation>垂直读数 / 倾斜</translation>
-        </message>
-        <message>
-            <source>Harmonics</source>
-            <translation>谐波</translation>
-        </message>
-        <message>
-            <source>What-if: set-up errors</source>
-            <translation>假设分析：安装误差</translation>
-        </message>
-        <message>
-            <source>Polygon calibration certificate</source>
-            <translation>多面棱体校准证书</translation>
-        </message>
-        <message>
-            <source>Deviations (*.csv *.txt *.xlsx);;All files (*)</source>
-            <translation>偏差 (*.csv *.txt *.xlsx);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Export compensation table…</source>
-            <translation>导出补偿表…</translation>
-        </message>
-        <message>
-            <source>Compensation = −mean deviation, at the targets or a uniform step, as set above: CSV, LinuxCNC's COMP_FILE (type 0), or a controller's table (SINUMERIK, FANUC, HEIDENHAIN, TwinCAT, ISG, Mach4)</source>
-            <translation>补偿量 = −平均偏差，取于目标点或按上方设定的等步距：CSV、LinuxCNC 的 COMP_FILE（类型 0），或控制器补偿表（SINUMERIK、FANUC、HEIDENHAIN、TwinCAT、ISG、Mach4）</translation>
-        </message>
-        <message>
-            <source>Deviation per target</source>
-            <translation>各目标位置的偏差</translation>
-        </message>
-        <message>
-            <source>Reversal per target</source>
-            <translation>各目标位置的反向差</translation>
-        </message>
-        <message>
-            <source>Runs</source>
-            <translation>各测次</translation>
-        </message>
-        <message>
-            <source>Per target</source>
-            <translation>逐目标位置</translation>
-        </message>
-        <message>
-            <source>LinuxCNC compensation file (*.txt *.comp);;All files (*)</source>
-            <translation>LinuxCNC 补偿文件 (*.txt *.comp);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>CSV (*.csv);;All files (*)</source>
-            <translation>CSV (*.csv);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Controller compensation file (*.{ext});;All files (*)</source>
-            <translation>控制器补偿文件 (*.{ext});;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Export compensation table</source>
-            <translation>导出补偿表</translation>
-        </message>
-        <message>
-            <source>{controller}: controller options</source>
-            <translation>{controller}：控制器选项</translation>
-        </message>
-        <message>
-            <source>Row {row}, {header} ({key}): {reason}</source>
-            <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
-        </message>
-        <message>
-            <source>Edit row {row}</source>
-            <translation>编辑第 {row} 行</translation>
-        </message>
-        <message>
-            <source>Edit cells</source>
-            <translation>编辑单元格</translation>
-        </message>
-        <message>
-            <source>Delete {rows} row(s)</source>
-            <translation>删除 {rows} 行</translation>
-        </message>
-        <message>
-            <source>Replace readings</source>
-            <translation>替换读数</translation>
-        </message>
-        <message>
-            <source>Copy</source>
-            <translation>复制</translation>
-        </message>
-        <message>
-            <source>Paste</source>
-            <translation>粘贴</translation>
-        </message>
-        <message>
-            <source>Clear cells</source>
-            <translation>清除单元格</translation>
-        </message>
-        <message>
-            <source>Insert row above</source>
-            <translation>在上方插入行</translation>
-        </message>
-        <message>
-            <source>Delete rows</source>
-            <translation>删除行</translation>
-        </message>
-        <message>
-            <source>Next nominal</source>
-            <translation>下一个名义值</translation>
-        </message>
-        <message>
-            <source>Paste {rows} row(s) (header row left out)</source>
-            <translation>粘贴 {rows} 行（已略去表头行）</translation>
-        </message>
-        <message>
-            <source>Paste {rows} row(s)</source>
-            <translation>粘贴 {rows} 行</translation>
-        </message>
-        <message>
-            <source>{paste}, replacing the sheet</source>
-            <translation>{paste}，替换整张表</translation>
-        </message>
-        <message>
-            <source>Paste readings</source>
-            <translation>粘贴读数</translation>
-        </message>
-        <message>
-            <source>The {pasted} pasted rows land on a run of {run}; {left} row(s) of the old run would stay below them and be analysed with them.</source>
-            <translation>粘贴的 {pasted} 行落在一次 {run} 行的测量上；原测量中有 {left} 行会留在其下方并一起被分析。</translation>
-        </message>
-        <message>
-            <source>Replace the sheet</source>
-            <translation>替换整张表</translation>
-        </message>
-        <message>
-            <source>Overwrite rows 1–{rows} only</source>
-            <translation>仅覆盖第 1–{rows} 行</translation>
-        </message>
-        <message>
-            <source>Certificate register</source>
-            <translation>证书登记册</translation>
-        </message>
-        <message>
-            <source>empty: the file in your data folder; or postgresql://user@host/database</source>
-            <translation>留空：使用数据文件夹中的文件；或 postgresql://user@host/database</translation>
-        </message>
-        <message>
-            <source>Use</source>
-            <translation>使用</translation>
-        </message>
-        <message>
-            <source>Search number, serial or customer</source>
-            <translation>检索编号、出厂编号或委托方</translation>
-        </message>
-        <message>
-            <source>Amend…</source>
-            <translation>修订…</translation>
-        </message>
-        <message>
-            <source>Replace…</source>
-            <translation>替代…</translation>
-        </message>
-        <message>
-            <source>Save PDF…</source>
-            <translation>保存 PDF…</translation>
-        </message>
-        <message>
-            <source>Print…</source>
-            <translation>打印…</translation>
-        </message>
-        <message>
-            <source>Verify a PDF…</source>
-            <translation>验证 PDF…</translation>
-        </message>
-        <message>
-            <source>History</source>
-            <translation>历史</translation>
-        </message>
-        <message>
-            <source>Open the certificate's readings and details; the next export issues Amendment n to it, saying what changed</source>
-            <translation>打开该证书的读数和信息；下次导出将签发其第 n 号修订，并说明改变的内容</translation>
-        </message>
-        <message>
-            <source>As Amend, but the new certificate gets a new number and replaces the original</source>
-            <translation>与修订相同，但新证书使用新编号并替代原证书</translation>
-        </message>
-        <message>
-            <source>Is a PDF, byte for byte, one this register issued?</source>
-            <translation>某个 PDF 是否逐字节与本登记册签发的一致？</translation>
-        </message>
-        <message>
-            <source>Select a certificate and press History</source>
-            <translation>选择一份证书并按“历史”</translation>
-        </message>
-        <message>
-            <source>No history shown yet: select a certificate above and press History (or double-click it) to see its instrument's figures over time and its due date.</source>
-            <translation>尚未显示历史：在上方选择一份证书并按“历史”（或双击该证书），即可看到该仪器各结果项随时间的变化及下次到期日。</translation>
-        </message>
-        <message>
-            <source>The figure of the certificates to follow over time</source>
-            <translation>随时间跟踪的证书结果</translation>
-        </message>
-        <message>
-            <source> days</source>
-            <translation> 天</translation>
-        </message>
-        <message>
-            <source>no interval set</source>
-            <translation>未设置周期</translation>
-        </message>
-        <message>
-            <source>Set interval</source>
-            <translation>设置周期</translation>
-        </message>
-        <message>
-            <source>Register:</source>
-            <translation>登记册：</translation>
-        </message>
-        <message>
-            <source>calibration interval</source>
-            <translation>校准周期</translation>
-        </message>
-        <message>
-            <source>Instrument {serial}: {count} calibration(s)</source>
-            <translation>仪器 {serial}：{count} 次校准</translation>
-        </message>
-        <message>
-            <source>, next due {date}</source>
-            <translation>，下次到期 {date}</translation>
-        </message>
-        <message>
-            <source>, no due date (set an interval)</source>
-            <translation>，无到期日（请设置周期）</translation>
-        </message>
-        <message>
-            <source>Verify a certificate PDF</source>
-            <translation>验证证书 PDF</translation>
-        </message>
-        <message>
-            <source>Save the certificate's PDF</source>
-            <translation>保存证书 PDF</translation>
-        </message>
-        <message>
-            <source>Certificate {number}</source>
-            <translation>证书 {number}</translation>
-        </message>
-        <message>
-            <source>Insert rows</source>
-            <translation>插入行</translation>
-        </message>
-        <message>
-            <source>axis tilt ψ</source>
-            <translation>轴系倾斜 ψ</translation>
-        </message>
-        <message>
-            <source>tilt direction α</source>
-            <translation>倾斜方向 α</translation>
-        </message>
-        <message>
-            <source>mirror normal β</source>
-            <translation>反射镜法线 β</translation>
-        </message>
-        <message>
-            <source>θ range ±</source>
-            <translation>θ 范围 ±</translation>
-        </message>
-        <message>
-            <source>The parameter drawn as a family of curves, as in the figures of Tian et al. 2017 (the theodolite method's paper): β as in its Figs. 3 and 4, α as in its Fig. 5, ψ as in its Fig. 6</source>
-            <translation>画成一族曲线的参数，如经纬仪方法论文田留德等 2017 的图：β 如其图 3 和图 4，α 如其图 5，ψ 如其图 6</translation>
-        </message>
-        <message>
-            <source>ζ (")</source>
-            <translation>ζ (")</translation>
-        </message>
-        <message>
-            <source>E (deg)</source>
-            <translation>E (°)</translation>
-        </message>
-        <message>
-            <source>Error curves</source>
-            <translation>误差曲线</translation>
-        </message>
-        <message>
-            <source>Import {name}</source>
-            <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
-            <translation>导入 {name}</translation>
-        </message>
-        <message>
-            <source>Reading {name} …</source>
-            <translation>正在读取 {name} …</translation>
-        </message>
-        <message>
-            <source>Analysing {rows} readings …</source>
-            <translation>正在分析 {rows} 个读数 …</translation>
-        </message>
-        <message>
-            <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
-            <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
-        </message>
-        <message>
-            <source>Readings — {used} used</source>
-            <translation>读数 — 已用 {used} 个</translation>
-        </message>
-        <message>
-            <source>, {cells} bad cell(s)</source>
-            <translation>，{cells} 个错误单元格</translation>
-        </message>
-        <message>
-            <source>next: row {row}</source>
-            <translation>下一个：第 {row} 行</translation>
-        </message>
-        <message>
-            <source>No result: {reason}</source>
-            <translation>无结果：{reason}</translation>
-        </message>
-        <message>
-            <source>No readings yet.</source>
-            <translation>尚无读数。</translation>
-        </message>
-        <message>
-            <source>The axis is sent to each target position in turn, in runs that approach every target from one direction and then from the other, as logged; the reference instrument reads the actual position reached. The positional deviation is x = actual position − target (ISO 230-2). Per target and direction: the mean x̄, the standard deviation s (n − 1) and the reversal value B_i = x̄↑ − x̄↓; for the axis the figures of the standard applied below, the others beside them. A compensation table for the axis controller is the negative of the mean deviation.</source>
-            <translation>按记录，轴依次运行至各目标位置，各测量循环先从一个方向、再从另一方向趋近每个目标；参考仪器读取实际到达的位置。位置偏差为 x = 实际位置 − 目标位置（ISO 230-2）。对每个目标和方向给出平均值 x̄、标准偏差 s（n − 1）和反向差值 B_i = x̄↑ − x̄↓；对整轴给出下述所采用标准的指标，并列出其他标准的指标。轴控制器的补偿表为平均偏差的负值。</translation>
-        </message>
-        <message>
-            <source>bidirectional accuracy of positioning</source>
-            <extracomment>ISO 230-2 figure → (English name, GB/T 17421.2 name)</extracomment>
-            <translation>双向定位精度</translation>
-        </message>
-        <message>
-            <source>unidirectional accuracy of positioning ↑</source>
-            <translation>单向定位精度 ↑</translation>
-        </message>
-        <message>
-            <source>unidirectional accuracy of positioning ↓</source>
-            <translation>单向定位精度 ↓</translation>
-        </message>
-        <message>
-            <source>bidirectional repeatability of positioning</source>
-            <translation>双向重复定位精度</translation>
-        </message>
-        <message>
-            <source>unidirectional repeatability of positioning ↑</source>
-            <translation>单向重复定位精度 ↑</translation>
-        </message>
-        <message>
-            <source>unidirectional repeatability of positioning ↓</source>
-            <translation>单向重复定位精度 ↓</translation>
-        </message>
-        <message>
-            <source>bidirectional systematic positional deviation</source>
-            <translation>双向定位系统偏差</translation>
-        </message>
-        <message>
-            <source>unidirectional systematic positional deviation ↑</source>
-            <translation>单向定位系统偏差 ↑</translation>
-        </message>
-        <message>
-            <source>unidirectional systematic positional deviation ↓</source>
-            <translation>单向定位系统偏差 ↓</translation>
-        </message>
-        <message>
-            <source>range of the mean bidirectional positional deviation</source>
-            <translation>平均双向位置偏差范围</translation>
-        </message>
-        <message>
-            <source>reversal value of the axis</source>
-            <translation>反向差值</translation>
-        </message>
-        <message>
-            <source>mean reversal value of the axis</source>
-            <translation>平均反向差值</translation>
-        </message>
-        <message>
-            <source>position uncertainty</source>
-            <translation>位置不确定度</translation>
-        </message>
-        <message>
-            <source>largest position scatter</source>
-            <translation>最大位置分散</translation>
-        </message>
-        <message>
-            <source>position deviation</source>
-            <translation>位置偏差</translation>
-        </message>
-        <message>
-            <source>largest reversal span</source>
-            <translation>最大反向差</translation>
-        </message>
-        <message>
-            <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
-            <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
-        </message>
-        <message>
-            <source>target(s) {targets} backward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
-            <translation>目标 {targets} 反向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
-        </message>
-        <message>
-            <source>reading</source>
-            <translation>读数</translation>
-        </message>
-        <message>
-            <source>Repeatability of the mean (s/√n)</source>
-            <translation>平均值的重复性（s/√n）</translation>
-        </message>
-        <message>
-            <source>s of the runs at each target and direction, n = {n}; ν of the fewest runs</source>
-            <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
-        </message>
-        <message>
-            <source>forward {n}</source>
-            <translation>正向 {n}</translation>
-        </message>
-        <message>
-            <source>backward {n}</source>
-            <translation>反向 {n}</translation>
-        </message>
-        <message>
-            <source>Standard applied</source>
-            <translation>采用标准</translation>
-        </message>
-        <message>
-            <source>Targets</source>
-            <translation>目标位置</translation>
-        </message>
-        <message>
-            <source>Readings</source>
-            <translation>读数</translation>
-        </message>
-        <message>
-            <source>Fewest runs at a target</source>
-            <translation>目标位置上的最少测量次数</translation>
-        </message>
-        <message>
-            <source>fewer than {n}: flagged</source>
-            <translation>少于 {n}：已标注</translation>
-        </message>
-        <message>
-            <source>Test</source>
-            <translation>检测</translation>
-        </message>
-        <message>
-            <source>Item</source>
-            <translation>项目</translation>
-        </message>
-        <message>
-            <source>Note</source>
-            <translation>说明</translation>
-        </message>
-        <message>
-            <source>Target</source>
-            <translation>目标位置</translation>
-        </message>
-        <message>
-            <source>Results per target ({unit}; target in {target})</source>
-            <translation>各目标位置结果（{unit}；目标位置单位 {target}）</translation>
-        </message>
-        <message>
-            <source>x = actual position − target. U is the expanded uncertainty of the mean x̄.</source>
-            <translation>x = 实际位置 − 目标位置。U 为平均值 x̄ 的扩展不确定度。</translation>
-        </message>
-        <message>
-            <source>mean positional deviation</source>
-            <translation>平均位置偏差</translation>
-        </message>
-        <message>
-            <source>targets and directions</source>
-            <translation>各目标位置和方向</translation>
-        </message>
-        <message>
-            <source>Figures of the axis</source>
-            <translation>轴线定位指标</translation>
-        </message>
-        <message>
-            <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
-            <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
-        </message>
-        <message>
-            <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range); a specification of A, R or P is read against the figures above.</source>
-            <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
-        </message>
-        <message>
-            <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
-            <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
-        </message>
-        <message>
-            <source>target {target} ({arrow})</source>
-            <translation>目标位置 {target}（{arrow}）</translation>
-        </message>
-        <message>
-            <source>off</source>
-            <translation>关</translation>
-        </message>
-        <message>
-            <source>Typing a row and pressing Return fills the next row's nominal value with this step (0: off) and moves to its first reading</source>
-            <translation>输入一行并按回车后，按此步距填写下一行的名义值（0：关闭），并移到该行的第一个读数</translation>
-        </message>
-        <message>
-            <source>Set-up</source>
-            <translation>设置</translation>
-        </message>
-        <message>
-            <source>Result</source>
-            <translation>结果</translation>
-        </message>
-        <message>
-            <source>figure</source>
-            <translation>结果项</translation>
-        </message>
-        <message>
-            <source>value</source>
-            <translation>数值</translation>
-        </message>
-        <message>
-            <source>next {column} +</source>
-            <translation>下一个 {column} +</translation>
-        </message>
-        <message>
-            <source>System language</source>
-            <translation>系统语言</translation>
-        </message>
-        <message>
-            <source>Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio and the quadrature error are identified from the Lissajous ellipse (Heydemann); the harmonics are fitted against the estimated phase, so only the part of their distortion that bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure round and is not observable without a phase reference.</source>
-            <extracomment>the settings that are inputs of the certificate's budget (FringeResult.inputs) Channel voltages beyond this are not a read head's signals. A fit of the channels against the phase below this R² means the phase is wrong.</extracomment>
-            <translation>相位由信号估计（无相位基准）：直流偏置、幅值比和正交误差由李萨如椭圆辨识（Heydemann）；谐波按估计的相位拟合，因此只能看到其畸变中使李萨如图形弯曲的部分——光栅的纯相位畸变使图形仍为圆形，没有相位基准时无法观测。</translation>
-        </message>
-        <message>
-            <source>row {row}, column '{key}': {u} V is not a read head's signal (beyond ±{signal_limit_v} V)</source>
-            <translation>第 {row} 行，列 '{key}'：{u} V 不是读数头的信号（超出 ±{signal_limit_v} V）</translation>
-        </message>
-        <message>
-            <source>channel {key} is constant ({u} V): not a fringe signal</source>
-            <translation>通道 {key} 为常数（{u} V）：不是莫尔条纹信号</translation>
-        </message>
-        <message>
-            <source>the two channels are the same signal (correlation {corr}): they must be in quadrature (sine and cosine)</source>
-            <translation>两个通道是同一信号（相关系数 {corr}）：它们必须正交（正弦和余弦）</translation>
-        </message>
-        <message>
-            <source>not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)</source>
-            <translation>不是莫尔条纹信号：李萨如图（u_sin, u_cos）中{exc}</translation>
-        </message>
-        <message>
-            <source>the channels are not in quadrature: their phases differ by {value}°, not about 90°</source>
-            <translation>两通道不正交：相位差为 {value}°，而不是约 90°</translation>
-        </message>
-        <message>
-            <source>not a fringe signal: the Lissajous figure is not a ring (its radius scatters by {value} %); noise, or two unrelated channels</source>
-            <translation>不是莫尔条纹信号：李萨如图不是圆环（半径分散 {value} %）；可能是噪声，或两个不相关的通道</translation>
-        </message>
-        <message>
-            <source>The θ column was not used: samples per period N was given.</source>
-            <translation>未使用 θ 列：已给出每周期采样数 N。</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'theta_deg': blank while other rows have a phase; fill it, or clear the column to estimate the phase from the signals</source>
-            <translation>第 {row} 行，列 'theta_deg'：为空，而其他行有相位；请填写，或清空该列以由信号估计相位</translation>
-        </message>
-        <message>
-            <source>every θ is {theta_col}°: the phase did not change</source>
-            <translation>所有 θ 均为 {theta_col}°：相位没有变化</translation>
-        </message>
-        <message>
-            <source>{size} samples; at least {value} are needed</source>
-            <translation>{size} 个采样点；至少需要 {value} 个</translation>
-        </message>
-        <message>
-            <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>
-            <translation>信号仅覆盖一个周期的 {value} %：少于四分之三个周期无法估计相位</translation>
-        </message>
-        <message>
-            <source>the particle swarm (the seed's method) fits orders 1, 3, 5 only</source>
-            <translation>粒子群法（原文方法）只拟合 1、3、5 次</translation>
-        </message>
-        <message>
-            <source>Particle swarm on the first period: cost {cost} V² against {lsq} V² for least squares, {seconds} s.</source>
-            <translation>第一个周期上的粒子群算法：代价 {cost} V²，最小二乘为 {lsq} V²，耗时 {seconds} s。</translation>
-        </message>
-        <message>
-            <source>N = {n} samples per period</source>
-            <translation>每周期 N = {n} 个采样点</translation>
-        </message>
-        <message>
-            <source>the θ column</source>
-            <translation>θ 列</translation>
-        </message>
-        <message>
-            <source>the signals do not follow {given} (R² {r_squared} sin, {r_squared2} cos): leave the samples per period and the θ column out to estimate the phase from the signals</source>
-            <translation>信号与{given}不符（R²：sin {r_squared}，cos {r_squared2}）：不填每周期采样点数和 θ 列，即可由信号估计相位</translation>
-        </message>
-        <message>
-            <source>against this phase the cos channel leads the sin channel by {lead}°, not about 90°: the channels are in the wrong order or one is inverted (check the columns, or the sense of θ)</source>
-            <translation>按此相位，cos 通道超前 sin 通道 {lead}°，而不是约 90°：通道顺序错误或其中一路反相（请检查各列或 θ 的方向）</translation>
-        </message>
-        <message>
-            <source>max_order must be at least 1</source>
-            <translation>max_order 至少为 1</translation>
-        </message>
-        <message>
-            <source>phase from equal steps, {n} samples per period</source>
-            <translation>相位取自等间隔采样，每周期 {n} 个</translation>
-        </message>
-        <message>
-            <source>phase from the θ column</source>
-            <translation>相位取自 θ 列</translation>
-        </message>
-        <message>
-            <source>phase estimated from the signals</source>
-            <translation>相位由信号估计</translation>
-        </message>
-        <message>
-            <source>L = {lines} (period {period})</source>
-            <translation>L = {lines}（周期 {period}）</translation>
-        </message>
-        <message>
-            <source>period {period} nm</source>
-            <translation>周期 {period} nm</translation>
-        </message>
-        <message>
-            <source>{n} samples, {source}, {scale}, fitted by least squares</source>
-            <translation>{n} 个采样，{source}，{scale}，最小二乘拟合</translation>
-        </message>
-        <message>
-            <source>{n} samples, {source}, {scale}, fitted by PSO</source>
-            <translation>{n} 个采样，{source}，{scale}，粒子群拟合</translation>
-        </message>
-        <message>
-            <source>; the motion reversed {count} time(s)</source>
-            <translation>；运动反向 {count} 次</translation>
-        </message>
-        <message>
-            <source>Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error {quadrature}°</source>
-            <translation>直流偏置 {sin} / {cos} mV，幅值比 {ratio}，正交误差 {quadrature}°</translation>
-        </message>
-        <message>
-            <source>Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, {share} % of a period)</source>
-            <translation>补偿前细分误差：{low} … {high}（峰峰值 {ptp}，一个周期的 {share} %）</translation>
-        </message>
-        <message>
-            <source>After compensation ({entries}-entry table, zero at its mean): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
-            <translation>补偿后（{entries} 项修正表，以平均值为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
-        </message>
-        <message>
-            <source>After compensation ({entries}-entry table, zero at its phase 0): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
-            <translation>补偿后（{entries} 项修正表，以相位 0 处为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
-        </message>
-        <message>
-            <source>Correction table, {n} entries (C header)</source>
-            <translation>修正表，{n} 项（C 头文件）</translation>
-        </message>
-        <message>
-            <source>Correction table, {n} entries (CSV)</source>
-            <translation>修正表，{n} 项（CSV）</translation>
-        </message>
-        <message>
-            <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
-            <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
-        </message>
-        <message>
-            <source>closure limit table must be text like '0.125, 0.25, …', not {name__}</source>
-            <extracomment>Autocollimator readings and face deviations beyond this are not readings of a polygon test.</extracomment>
-            <translation>闭合差限值表必须是形如 '0.125, 0.25, …' 的文本，而不是 {name__}</translation>
-        </message>
-        <message>
-            <source>closure limit table: {len} entries for 7 grades</source>
-            <translation>闭合差限值表：7 个等级却有 {len} 项</translation>
-        </message>
-        <message>
-            <source>closure limit table: '{part}' (grade {g}) is not a number</source>
-            <translation>闭合差限值表：'{part}'（{g} 级）不是数字</translation>
-        </message>
-        <message>
-            <source>closure limit for grade {g} must be a positive number</source>
-            <translation>{g} 级的闭合差限值必须为正数</translation>
-        </message>
-        <message>
-            <source>row {row}, column '{key}': {values}" is beyond ±{reading_limit_arcsec}" and cannot be a reading of a polygon test</source>
-            <translation>第 {row} 行，列 '{key}'：{values}" 超出 ±{reading_limit_arcsec}"，不可能是多面棱体检测的读数</translation>
-        </message>
-        <message>
-            <source>rows {row}–{row2}: all encoder readings are {a}°: the encoder did not turn</source>
-            <translation>第 {row}–{row2} 行：编码器读数均为 {a}°：编码器没有转动</translation>
-        </message>
-        <message>
-            <source>counting with the face numbering</source>
-            <translation>与面序号同向计数</translation>
-        </message>
-        <message>
-            <source>counting against the face numbering</source>
-            <translation>与面序号反向计数</translation>
-        </message>
-        <message>
-            <source>row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, relative to the set's first reading); a polygon test needs every reading within {tolerance}° of its face</source>
-            <translation>第 {row} 行：编码器读数 {reading}° 与第 {face} 面相差 {off}°（{sense}，相对于该测回的第一个读数）；多面棱体检测要求每个读数与其面相差不超过 {tolerance}°</translation>
-        </message>
-        <message>
-            <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
-            <translation>{set}：未注明方向且编码器步进有正有反：按正向处理。</translation>
-        </message>
-        <message>
-            <source>{faces} positions; a polygon test needs at least 3 faces</source>
-            <translation>{faces} 个位置；多面棱体检测至少需要 3 个面</translation>
-        </message>
-        <message>
-            <source>set {set_id} (from row {row}) has positions {tolist}; expected 1…{faces} once each, in any order, then the first position again for the closure</source>
-            <translation>第 {set_id} 测回（自第 {row} 行起）的位置为 {tolist}；应为 1…{faces} 各一次（顺序不限），再回到第一个位置以检查闭合</translation>
-        </message>
-        <message>
-            <source>The encoder counts against the face numbering (detected from the readings): face angles and deviations are taken in the encoder's counting sense.</source>
-            <translation>编码器计数方向与面号相反（由读数判断）：面角和偏差按编码器的计数方向取值。</translation>
-        </message>
-        <message>
-            <source>The encoder counts against the face numbering: face angles and deviations are taken in the encoder's counting sense.</source>
-            <translation>编码器计数方向与面号相反：面角和偏差按编码器的计数方向取值。</translation>
-        </message>
-        <message>
-            <source>set {set}</source>
-            <translation>第 {set} 测回</translation>
-        </message>
-        <message>
-            <source>row {row}: {label} starts {off}° away from the first set's encoder zero; all sets must share one zero</source>
-            <translation>第 {row} 行：{label} 的起点与第一测回的编码器零位相差 {off}°；所有测回必须共用一个零位</translation>
-        </message>
-        <message>
-            <source>row {row}: the closure reading is {back}° from the set's first reading on face {int}</source>
-            <translation>第 {row} 行：闭合读数与该测回在第 {int} 面上的第一个读数相差 {back}°</translation>
-        </message>
-        <message>
-            <source>{n} usable readings; a polygon test needs at least 3 positions</source>
-            <translation>{n} 个可用读数；多面棱体检测至少需要 3 个位置</translation>
-        </message>
-        <message>
-            <source>zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}</source>
-            <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
-        </message>
-        <message>
-            <source>levelled set-up: the polygon's own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon's axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
-            <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
-        </message>
-        <message>
-            <source>worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015 is {seed}</source>
-            <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
-        </message>
-        <message>
-            <source>Tilt not identified (no vertical readings).</source>
-            <translation>未辨识倾斜（没有垂直读数）。</translation>
-        </message>
-        <message>
-            <source>vertical along the polygon's axis, worst case over the tilt direction</source>
-            <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
-        </message>
-        <message>
-            <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
-            <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
-        </message>
-        <message>
-            <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
-            <translation>{faces} 面棱体，{sets} 组，{grade} 级（{accuracy}）</translation>
-        </message>
-        <message>
-            <source>, encoder counting against the face numbering</source>
-            <translation>，编码器计数方向与面号相反</translation>
-        </message>
-        <message>
-            <source>; zero: face {face} of set 1</source>
-            <translation>；零位：第 1 组第 {face} 面</translation>
-        </message>
-        <message>
-            <source>   *** RUN INVALID: closure failed ***</source>
-            <translation>   *** 测量无效：闭合不合格 ***</translation>
-        </message>
-        <message>
-            <source>not measured</source>
-            <translation>未测量</translation>
-        </message>
-        <message>
-            <source>drift {drift} ok</source>
-            <translation>漂移 {drift}，合格</translation>
-        </message>
-        <message>
-            <source>drift {drift} FAILED</source>
-            <translation>漂移 {drift}，不合格</translation>
-        </message>
-        <message>
-            <source>no tilt</source>
-            <translation>无倾斜数据</translation>
-        </message>
-        <message>
-            <source>  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; pyramidal correction up to {largest}</source>
-            <translation>  第 {set} 组（{sense}，自第 {face} 面）：闭合 {closure}；{tilt}；棱锥误差修正最大 {largest}</translation>
-        </message>
-        <message>
-            <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} met (rule: half the peak-to-peak ≤ accuracy)</source>
-            <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
-        </message>
-        <message>
-            <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} NOT met (rule: half the peak-to-peak ≤ accuracy)</source>
-            <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：不符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
-        </message>
-        <message>
-            <source>Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}</source>
-            <translation>谐波：1 次（偏心）{first}，2 次（椭圆度）{second}</translation>
-        </message>
-        <message>
-            <source>JJF 1115: division error {value}</source>
-            <translation>JJF 1115：分度误差 {value}</translation>
-        </message>
-        <message>
-            <source>, repeatability {value}</source>
-            <translation>，重复性 {value}</translation>
-        </message>
-        <message>
-            <source>, repeatability not evaluated (no direction was measured twice)</source>
-            <translation>，未评定重复性（没有任何方向测量两次）</translation>
-        </message>
-        <message>
-            <source>RUN INVALID: closure failed. </source>
-            <translation>测量无效：闭合不合格。</translation>
-        </message>
-        <message>
-            <source>Grade {grade} (±{accuracy}) met: corrected error peak-to-peak {ptp}; </source>
-            <translation>符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
-        </message>
-        <message>
-            <source>Grade {grade} (±{accuracy}) NOT met: corrected error peak-to-peak {ptp}; </source>
-            <translation>不符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
-        </message>
-        <message>
-            <source>tilt within the allowed</source>
-            <translation>倾斜在允许范围内</translation>
-        </message>
-        <message>
-            <source>the tilt's error is corrected in these figures (for the set-up stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — re-seat the polygon before the next run</source>
-            <translation>上述结果已修正塔差引起的误差（按所述安置）。安置：倾斜 ψ = {psi}，超过允许的 {allowed}——下次测量前请重新安装棱体</translation>
-        </message>
-        <message>
-            <source>Set {number}</source>
-            <extracomment>Table 1 of the seed: accuracy (±") of encoder grades 1–7. The seed's ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. Levelled frame: the polygon's own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
-            <translation>第 {number} 组</translation>
-        </message>
-        <message>
-            <source>at least 4 vertical readings are needed to identify the tilt</source>
-            <extracomment>The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001's frame: the autocollimator's vertical along the polygon's axis).</extracomment>
-            <translation>辨识塔差至少需要 4 个竖直读数</translation>
-        </message>
-        <message>
-            <source>the vertical reading is highest at face {high} and lowest at face {low} (spread 2ψ = {spread}): tilt the polygon on its seat so that face {high} comes down and face {low} up by about {psi} each</source>
-            <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
-        </message>
-        <message>
-            <source>{set}: closure drift {drift} exceeds the limit ±{limit}: the set is invalid; repeat it.</source>
-            <translation>{set}：闭合漂移 {drift} 超过限值 ±{limit}：该组无效，请重测。</translation>
-        </message>
-        <message>
-            <source>{set}: no closure reading (the row back on its start face): drift not checked.</source>
-            <translation>{set}：没有闭合读数（回到起始面的那一行）：未检查漂移。</translation>
-        </message>
-        <message>
-            <source>{set}: vertical readings missing: pyramidal error not identified or removed.</source>
-            <translation>{set}：缺少垂直读数：未辨识也未扣除棱锥误差。</translation>
-        </message>
-        <message>
-            <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
-            <extracomment>the settings that are inputs of the certificate's budget (PositioningResult.inputs) A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
-            <translation>deviation_unit {s} 适用于以 {belongs} 为单位的轴，但 target_unit 为 {s2}：deg 请选 arcsec 或 urad，mm 请选 um 或 nm</translation>
-        </message>
-        <message>
-            <source>row {row}: neither a deviation nor a measured position; one of the two is needed</source>
-            <translation>第 {row} 行：既无偏差也无实测位置；两者至少需要一个</translation>
-        </message>
-        <message>
-            <source>row {row}: deviation {deviation} but measured − target = {from_measured} ({s}): give one of the two, or make them agree</source>
-            <translation>第 {row} 行：偏差为 {deviation}，但 实测 − 目标 = {from_measured}（{s}）：请只给出其一，或使两者一致</translation>
-        </message>
-        <message>
-            <source>row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} {s2}): check the deviation unit, or whether a position was typed as a deviation</source>
-            <translation>第 {row} 行：偏差 {out} {s} 超出 {limit} {s}（{deviation_limit} {s2}）：请检查偏差单位，或是否把位置填成了偏差</translation>
-        </message>
-        <message>
-            <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
-            <translation>{count} 个读数未注明趋近方向：按目标位置的顺序确定（重复的目标位置即为一次测量的折返点）。</translation>
-        </message>
-        <message>
-            <source>rows {row} and {row2}: target {key}, run {key2}, direction {value} twice</source>
-            <translation>第 {row} 行和第 {row2} 行：目标 {key}、第 {key2} 次测量、方向 {value} 重复出现</translation>
-        </message>
-        <message>
-            <source>row {row}: no run number, though other rows have one; give every row its run, or none</source>
-            <translation>第 {row} 行：没有测量序号，而其他行有；请为每一行给出序号，或全都不给</translation>
-        </message>
-        <message>
-            <source>{n} usable readings; a positioning test needs at least two targets</source>
-            <translation>{n} 个可用读数；定位检测至少需要两个目标位置</translation>
-        </message>
-        <message>
-            <source>row {row}: target {targets} {s} is beyond ±{limit} {s}: not a position of an axis</source>
-            <translation>第 {row} 行：目标 {targets} {s} 超出 ±{limit} {s}：不是轴的位置</translation>
-        </message>
-        <message>
-            <source>every reading is at target {targets}: a positioning test needs at least two targets</source>
-            <translation>所有读数都在目标 {targets}：定位检测至少需要两个目标位置</translation>
-        </message>
-        <message>
-            <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
-            <translation>目标位置 {targets} 没有正向读数：正向结果不包括这些位置。</translation>
-        </message>
-        <message>
-            <source>No backward reading at target(s) {targets}: the backward figures leave them out.</source>
-            <translation>目标位置 {targets} 没有反向读数：反向结果不包括这些位置。</translation>
-        </message>
-        <message>
-            <source>forward {runs}</source>
-            <translation>正向 {runs} 次</translation>
-        </message>
-        <message>
-            <source>backward {runs}</source>
-            <translation>反向 {runs} 次</translation>
-        </message>
-        <message>
-            <source>Fewer runs than ISO 230-2 asks (5 in each direction at every target): {runs} at the least measured target. Evaluated, and flagged as the standard requires.</source>
-            <translation>测量次数少于 ISO 230-2 的要求（每个目标位置每个方向 5 次）：测量最少的目标位置为 {runs}。已评定，并按标准要求加以标注。</translation>
-        </message>
-        <message>
-            <source>One approach direction only: the unidirectional figures are given; B, M, the bidirectional R and A, and VDI/DGQ 3441 U and P need both directions and are not evaluated.</source>
-            <translation>只有一个趋近方向：给出单向结果；B、M、双向 R 和 A 以及 VDI/DGQ 3441 的 U 和 P 需要两个方向，未评定。</translation>
-        </message>
-        <message>
-            <source>No target was approached twice in the same direction: repeatability (R), accuracy (A) and the position scatter Ps are not evaluated.</source>
-            <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
-        </message>
-        <message>
-            <source>forward</source>
-            <translation>正向</translation>
-        </message>
-        <message>
-            <source>backward</source>
-            <translation>反向</translation>
-        </message>
-        <message>
-            <source>forward ≥ {runs}</source>
-            <translation>正向 ≥ {runs}</translation>
-        </message>
-        <message>
-            <source>backward ≥ {runs}</source>
-            <translation>反向 ≥ {runs}</translation>
-        </message>
-        <message>
-            <source>{targets} targets {first}…{last}, {readings} readings, {directions} (runs per target: {runs})</source>
-            <translation>{targets} 个目标位置 {first}…{last}，{readings} 个读数，{directions}（每个目标位置的测量次数：{runs}）</translation>
-        </message>
-        <message>
-            <source>   *** fewer than 5 runs: flagged ***</source>
-            <translation>   *** 少于 5 次测量：已标注 ***</translation>
-        </message>
-        <message>
-            <source>Standard applied: {standard}. Compensation = −mean deviation (Export compensation table… below the set-up).</source>
-            <translation>采用的标准：{standard}。补偿值 = −平均偏差（设置下方的“导出补偿表…”）。</translation>
-        </message>
-        <message>
-            <source> — fewer than 5 runs: flagged</source>
-            <translation> — 少于 5 次测量：已标注</translation>
-        </message>
-        <message>
-            <source>{n} usable readings; at least 4 are needed</source>
-            <translation>{n} 个可用读数；至少需要 4 个</translation>
-        </message>
-        <message>
-            <source>reference row {reference} is blank, unreadable or missing</source>
-            <translation>参考行 {reference} 为空、无法读取或不存在</translation>
-        </message>
-        <message>
-            <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
-            <translation>由俯仰角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
-        </message>
-        <message>
-            <source>Set-up identified from the azimuth readings ({n} points, reference θ = {theta}°):</source>
-            <translation>由方位角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
-        </message>
-        <message>
-            <source>  axis tilt       ψ = {value}° ± {u}</source>
-            <translation>  轴系倾斜       ψ = {value}° ± {u}</translation>
-        </message>
-        <message>
-            <source>  tilt direction  α = {value}° ± {u}</source>
-            <translation>  倾斜方向       α = {value}° ± {u}</translation>
-        </message>
-        <message>
-            <source>  mirror normal   β = {value}° ± {u}</source>
-            <translation>  反射镜法线     β = {value}° ± {u}</translation>
-        </message>
-        <message>
-            <source>  R² = {r2}, residual RMS = {rms}</source>
-            <translation>  R² = {r2}，残差均方根 = {rms}</translation>
-        </message>
-        <message>
-            <source>Raw error        {low} … {high} (peak-to-peak {ptp})</source>
-            <translation>原始误差         {low} … {high}（峰峰值 {ptp}）</translation>
-        </message>
-        <message>
-            <source>Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})</source>
-            <translation>修正后误差       {low} … {high}（峰峰值 {ptp}，均方根 {rms}）</translation>
-        </message>
-        <message>
-            <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
-            <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）；安装误差对原始峰峰值的贡献为 {share}</translation>
-        </message>
-        <message>
-            <source>at least 4 readings are needed to identify ψ, α, β</source>
-            <translation>辨识 ψ、α、β 至少需要 4 个读数</translation>
-        </message>
-        <message>
-            <source>the elevations fit no set-up (sin E is not of the form a + b cos θ + c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column</source>
-            <translation>仰角读数与任何安装状态都不符（sin E 不具有 a + b cos θ + c sin θ 且 |a|、|b|、|c| ≤ 1 的形式）：请检查仰角列</translation>
-        </message>
-        <message>
-            <source>no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations</source>
-            <translation>没有 ψ ≤ {psi_max_deg}° 且 |β| ≤ {beta_max_deg}° 的安装状态与仰角读数相符</translation>
-        </message>
-        <message>
-            <source>no admissible set-up fits the azimuth errors</source>
-            <translation>没有可接受的安装状态与方位误差相符</translation>
-        </message>
-        <message>
-            <source>Identified from the azimuth errors: any part of the axis' own error that looks like the set-up model (a scale error, say) is absorbed and removed from the result.</source>
-            <translation>由方位角误差辨识：轴系自身误差中与安装误差模型相似的部分（例如比例误差）会被吸收并从结果中扣除。</translation>
-        </message>
-        <message>
-            <source>{first} and {second} cannot be separated on this range (correlation {r}); widen the range of θ.</source>
-            <translation>在此范围内 {first} 与 {second} 无法分离（相关系数 {r}）；请扩大 θ 的范围。</translation>
-        </message>
-        <message>
-            <source>Some parameters are not determined by these readings (singular fit).</source>
-            <translation>这些读数无法确定部分参数（拟合奇异）。</translation>
-        </message>
-        <message>
-            <source>all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn between readings</source>
-            <translation>所有 θ 相等（{theta}°）：无法辨识安装状态；读数之间轴必须转动</translation>
-        </message>
-        <message>
-            <source>{size} distinct θ; at least 4 are needed to identify ψ, α, β</source>
-            <translation>只有 {size} 个不同的 θ；辨识 ψ、α、β 至少需要 4 个</translation>
-        </message>
-        <message>
-            <source>θ spans only {ptp}°: too little rotation to identify the set-up</source>
-            <translation>θ 仅跨 {ptp}°：转角过小，无法辨识安装状态</translation>
-        </message>
-        <message>
-            <source>reference row {value} is outside the {size} readings</source>
-            <translation>参考行 {value} 不在 {size} 个读数之内</translation>
-        </message>
-        <message>
-            <source>unknown identification method '{method}'</source>
-            <translation>未知的辨识方法 '{method}'</translation>
-        </message>
-        <message>
-            <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
-            <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
-        </message>
-        <message>
-            <source>usage: </source>
-            <extracomment>``system`` follows the environment's locale argparse's own words (its help's headings and its refusals of a command line), for the translators: argparse looks them up through gettext; ``speaking`` hands them to our catalogue instead</extracomment>
-            <translation>用法：</translation>
-        </message>
-        <message>
-            <source>positional arguments</source>
-            <translation>位置参数</translation>
-        </message>
-        <message>
-            <source>options</source>
-            <translation>选项</translation>
-        </message>
-        <message>
-            <source>show this help message and exit</source>
-            <translation>显示此帮助信息并退出</translation>
-        </message>
-        <message>
-            <source>the following arguments are required: %s</source>
-            <translation>缺少以下参数：%s</translation>
-        </message>
-        <message>
-            <source>unrecognized arguments: %s</source>
-            <translation>无法识别的参数：%s</translation>
-        </message>
-        <message>
-            <source>argument %(argument_name)s: %(message)s</source>
-            <translation>参数 %(argument_name)s：%(message)s</translation>
-        </message>
-        <message>
-            <source>invalid choice: %(value)r (choose from %(choices)s)</source>
-            <translation>无效的选项：%(value)r（可选 %(choices)s）</translation>
-        </message>
-        <message>
-            <source>invalid %(type)s value: %(value)r</source>
-            <translation>无效的 %(type)s 值：%(value)r</translation>
-        </message>
-        <message>
-            <source>expected one argument</source>
-            <translation>需要一个参数值</translation>
-        </message>
-        <message>
-            <source>expected at most one argument</source>
-            <translation>最多需要一个参数值</translation>
-        </message>
-        <message>
-            <source>expected at least one argument</source>
-            <translation>至少需要一个参数值</translation>
-        </message>
-        <message>
-            <source>ambiguous option: %(option)s could match %(matches)s</source>
-            <translation>有歧义的选项：%(option)s 可匹配 %(matches)s</translation>
-        </message>
-        <message>
-            <source>ignored explicit argument %r</source>
-            <translation>忽略了明确给出的参数值 %r</translation>
-        </message>
-        <message>
-            <source>not allowed with argument %s</source>
-            <translation>不能与参数 %s 同时使用</translation>
-        </message>
-        <message>
-            <source>one of the arguments %s is required</source>
-            <translation>必须给出参数 %s 之一</translation>
-        </message>
-        <message>
-            <source>unknown parser %(parser_name)r (choices: %(choices)s)</source>
-            <translation>未知的子命令 %(parser_name)r（可选：%(choices)s）</translation>
-        </message>
-        <message>
-            <source>language of what the command prints (zh_CN: Simplified Chinese; system, the default: the system's locale); JSON, CSV and the files written keep their English keys</source>
-            <translation>命令输出所用的语言（zh_CN：简体中文；system，默认：跟随系统区域设置）；JSON、CSV 及写出的文件保留其英文键名</translation>
-        </message>
-        <message>
-            <source>Analyse a readings file</source>
-            <translation>分析读数文件</translation>
-        </message>
-        <message>
-            <source>the workbench</source>
-            <translation>工作台</translation>
-        </message>
-        <message>
-            <source>the readings (CSV, TSV, XLSX)</source>
-            <translation>读数文件（CSV、TSV、XLSX）</translation>
-        </message>
-        <message>
-            <source>print JSON instead of a summary</source>
-            <translation>输出 JSON 而不是摘要</translation>
-        </message>
-        <message>
-            <source>also write a test certificate</source>
-            <translation>同时写出校准证书</translation>
-        </message>
-        <message>
-            <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
-            <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
-        </message>
-        <message>
-            <source>also write the results per point (with U) as CSV or XLSX</source>
-            <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
-        </message>
-        <message>
-            <source>which of the file's headers holds which column, when the headers are not recognised, e.g. theta_deg=转角,azimuth_deg=方位角</source>
-            <translation>表头无法识别时，指定文件中哪个表头对应哪一列，例如 theta_deg=转角,azimuth_deg=方位角</translation>
-        </message>
-        <message>
-            <source>also write the workbench's correction table: fringe (CSV, or a C header for OUT.h), positioning (compensation table; --compensation-format, --compensation-step, --compensation-tables)</source>
-            <translation>同时写出工作台的修正表：fringe（CSV；OUT.h 时为 C 头文件），positioning（补偿表；见 --compensation-format、--compensation-step、--compensation-tables）</translation>
-        </message>
-        <message>
-            <source>angle unit of the printed summary and of --results (arcsec, urad or mdeg); JSON and certificates keep the unit of the evaluation</source>
-            <translation>输出摘要及 --results 所用的角度单位（arcsec、urad 或 mdeg）；JSON 和证书保持评定所用的单位</translation>
-        </message>
-        <message>
-            <source>positioning: the log measured after compensation (analysed with the same settings); prints A, B, E, M, R before → after (JSON: before_after)</source>
-            <translation>positioning：补偿后测得的记录（以相同设置评定）；输出 A、B、E、M、R 补偿前 → 补偿后（JSON：before_after）</translation>
-        </message>
-        <message>
-            <source>theodolite: the vertical column is the zenith angle V (same as --vertical-reading zenith)</source>
-            <translation>theodolite：竖直列为天顶距 V（同 --vertical-reading zenith）</translation>
-        </message>
-        <message>
-            <source>{kind}: {label}{choices}. {help}</source>
-            <translation>{kind}：{label}{choices}。{help}</translation>
-        </message>
-        <message>
-            <source>{flag} applies to {kinds}, not {kind}</source>
-            <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: --columns: '{part}' is not KEY=HEADER</source>
-            <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: --compare-after is for the positioning workbench</source>
-            <translation>anglebench analyze：--compare-after 仅用于定位工作台</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: --table: {workbench} has no correction table</source>
-            <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: choose another name</source>
-            <translation>anglebench analyze：{flag} {out} 是输入文件（{clash}）；未写入任何文件：请另选文件名</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: {flag} and {twin} name the same file</source>
-            <translation>anglebench analyze：{flag} 和 {twin} 指向同一个文件</translation>
-        </message>
-        <message>
-            <source> (and {n} more bad cell(s))</source>
-            <translation>（另有 {n} 个无法读取的单元格）</translation>
-        </message>
-        <message>
-            <source>{file}: row {row}, column '{column}': {reason}</source>
-            <translation>{file}：第 {row} 行，列 '{column}'：{reason}</translation>
-        </message>
-        <message>
-            <source>Warning: {warning}</source>
-            <translation>警告：{warning}</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: cannot write {path}: {reason}</source>
-            <translation>anglebench analyze：无法写入 {path}：{reason}</translation>
-        </message>
-        <message>
-            <source>{what} written to {path}</source>
-            <translation>{what}已写入 {path}</translation>
-        </message>
-        <message>
-            <source>{path}: not a JSON file ({reason})</source>
-            <translation>{path}：不是 JSON 文件（{reason}）</translation>
-        </message>
-        <message>
-            <source>{path}: not a certificate's details (nested too deep or a number too long)</source>
-            <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: {reason}; no certificate was written</source>
-            <translation>anglebench analyze：{reason}；未写入证书</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save it with 'anglebench register show {number} --pdf OUT.pdf'</source>
-            <translation>anglebench analyze：证书 {number} 已签发并登记，但{reason}：请用 'anglebench register show {number} --pdf OUT.pdf' 保存</translation>
-        </message>
-        <message>
-            <source>Certificate {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
-            <translation>证书 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
-        </message>
-        <message>
-            <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
-            <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: cannot write: {reason}</source>
-            <translation>anglebench analyze：无法写入：{reason}</translation>
-        </message>
-        <message>
-            <source>error = indicated − reference (VIM); correction = −error</source>
-            <extracomment>Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction is the negative of an error.</extracomment>
-            <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
-        </message>
-        <message>
-            <source>expanded uncertainty U (k = 2)</source>
-            <extracomment>The coverage probability of k = 2 for a normal distribution (95.45 %).</extracomment>
-            <translation>扩展不确定度 U（k = 2）</translation>
-        </message>
-        <message>
-            <source>maximum permissible error ±a</source>
-            <translation>最大允许误差 ±a</translation>
-        </message>
-        <message>
-            <source>standard uncertainty u</source>
-            <translation>标准不确定度 u</translation>
-        </message>
-        <message>
-            <source>normal</source>
-            <extracomment>the distributions a budget's inputs are given (the names its table prints)</extracomment>
-            <translation>正态</translation>
-        </message>
-        <message>
-            <source>rectangular</source>
-            <translation>矩形</translation>
-        </message>
-        <message>
-            <source>uncertainty basis must be one of {join}, not '{basis}'</source>
-            <translation>不确定度给出方式必须是 {join} 之一，而不是 '{basis}'</translation>
-        </message>
-        <message>
-            <source>uncertainty input '{name}': its value must be a finite, non-negative number</source>
-            <translation>不确定度输入量 '{name}'：其值必须是有限的非负数</translation>
-        </message>
-        <message>
-            <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
-            <translation>带保护带 w = U 的非二元声明（ILAC-G8:09/2019，4.2.3）：结果在 T − w 以内为合格；在 T 以内为有条件合格；在 T + w 以内为有条件不合格；超出 T + w 为不合格</translation>
-        </message>
-        <message>
-            <source>binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.2): pass when the result lies within T − w, fail otherwise</source>
-            <translation>带保护带 w = U 的二元声明（ILAC-G8:09/2019，4.2.2）：结果在 T − w 以内为合格，否则为不合格</translation>
-        </message>
-        <message>
-            <source>binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, 4.2.1): pass when the result lies within T, fail otherwise; the risk of a false acceptance reaches 50 % at the limit</source>
-            <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
-        </message>
-        <message>
-            <source>half the peak-to-peak error after the best zero, with its own U and bias from a Monte Carlo simulation of this measurement (JCGM 101)</source>
-            <translation>最佳零位下误差峰峰值的一半，其 U 和偏倚由本次测量的蒙特卡洛模拟得出（JCGM 101）</translation>
-        </message>
-        <message>
-            <source>every point's error against ±T with that point's own U (ISO 14253-1)</source>
-            <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
-        </message>
-        <message>
-            <source>pass ≤ {t} &lt; fail</source>
-            <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
-            <translation>合格 ≤ {t} &lt; 不合格</translation>
-        </message>
-        <message>
-            <source>pass ≤ {low} (T − w) &lt; fail</source>
-            <translation>合格 ≤ {low} (T − w) &lt; 不合格</translation>
-        </message>
-        <message>
-            <source>pass ≤ {low} (T − w) &lt; conditional pass ≤ {t} (T) &lt; conditional fail ≤ {high} (T + w) &lt; fail</source>
-            <translation>合格 ≤ {low} (T − w) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + w) &lt; 不合格</translation>
-        </message>
-        <message>
-            <source>The item conforms to the specification ±{t} (pass).</source>
-            <translation>被校对象符合技术要求 ±{t}（合格）。</translation>
-        </message>
-        <message>
-            <source>Conditional pass: the result lies within ±{t} but closer to the limit than the guard band, so conformity is not proven at the stated coverage probability.</source>
-            <translation>有条件合格：结果在 ±{t} 以内，但距限值小于保护带，在所述包含概率下不能证明其符合。</translation>
-        </message>
-        <message>
-            <source>Conditional fail: the result lies beyond ±{t} by less than the guard band, so non-conformity is not proven at the stated coverage probability.</source>
-            <translation>有条件不合格：结果超出 ±{t}，但超出量小于保护带，在所述包含概率下不能证明其不符合。</translation>
-        </message>
-        <message>
-            <source>The item does not conform to the specification ±{t} (fail).</source>
-            <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
-        </message>
-        <message>
-            <source>corrected error</source>
-            <translation>修正后误差</translation>
-        </message>
-        <message>
-            <source>No statement of conformity: {reason}.</source>
-            <translation>不作符合性声明：{reason}。</translation>
-        </message>
-        <message>
-            <source>No statement of conformity: no specification (tolerance) was given.</source>
-            <translation>不作符合性声明：未给出技术要求（允差）。</translation>
-        </message>
-        <message>
-            <source>per point, with w = U of that point: {zones}</source>
-            <translation>逐点判定，w 取该点的 U：{zones}</translation>
-        </message>
-        <message>
-            <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
-            <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
-        </message>
-        <message>
-            <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
-            <translation>{quantity}：{trials} 次试验，随机种子 {seed}，在 {points} 个点中每 {stride} 个取一个</translation>
-        </message>
-        <message>
-            <source>{quantity}: {trials} trials, seed {seed}</source>
-            <translation>{quantity}：{trials} 次试验，随机种子 {seed}</translation>
-        </message>
-        <message>
-            <source>empty</source>
-            <translation>为空</translation>
-        </message>
-        <message>
-            <source>'{text}' is not a finite angle</source>
-            <translation>'{text}' 不是有限的角度值</translation>
-        </message>
-        <message>
-            <source>'{text}' is not an angle; write decimal degrees (12.5) or D°M'S" (12°34'56.7", 12 34 56.7, 12:34:56.7)</source>
-            <translation>'{text}' 不是角度；请写成十进制度（12.5）或 度°分′秒″（12°34'56.7"、12 34 56.7、12:34:56.7）</translation>
-        </message>
-        <message>
-            <source>'{text}': degrees must be whole when minutes follow</source>
-            <translation>'{text}'：后面有分时，度必须为整数</translation>
-        </message>
-        <message>
-            <source>'{text}': minutes must be whole when seconds follow</source>
-            <translation>'{text}'：后面有秒时，分必须为整数</translation>
-        </message>
-        <message>
-            <source>'{text}': minutes {minutes} out of range (0 to 59)</source>
-            <translation>'{text}'：分 {minutes} 超出范围（0 至 59）</translation>
-        </message>
-        <message>
-            <source>'{text}': seconds {seconds} out of range (0 to below 60)</source>
-            <translation>'{text}'：秒 {seconds} 超出范围（0 至小于 60）</translation>
-        </message>
-        <message>
-            <source>{source}: row {row}, column '{column}': {reason}</source>
-            <translation>{source}：第 {row} 行，列 '{column}'：{reason}</translation>
-        </message>
-        <message>
-            <source>row {row}, column '{column}': {reason}</source>
-            <translation>第 {row} 行，列 '{column}'：{reason}</translation>
-        </message>
-        <message>
-            <source>empty; a value is needed here</source>
-            <translation>为空；此处需要一个值</translation>
-        </message>
-        <message>
-            <source>'{text}' is not a whole number</source>
-            <translation>'{text}' 不是整数</translation>
-        </message>
-        <message>
-            <source>'{text}' is out of range for a whole number here</source>
-            <translation>'{text}' 超出此处整数的范围</translation>
-        </message>
-        <message>
-            <source>'{text}' is not one of {choices}</source>
-            <translation>'{text}' 不是 {choices} 之一</translation>
-        </message>
-        <message>
-            <source>'{text}' is not a number</source>
-            <extracomment>The largest whole number an INTEGER column takes (positions, set numbers …).</extracomment>
-            <translation>'{text}' 不是数字</translation>
-        </message>
-        <message>
-            <source>'{text}' is not a finite number</source>
-            <translation>'{text}' 不是有限的数</translation>
-        </message>
-        <message>
-            <source>{size} samples; at least {value} are needed for orders {join}</source>
-            <extracomment>each sample's residual (V) when the fit was made from samples (the plots read it)</extracomment>
-            <translation>{size} 个采样点；拟合 {join} 次谐波至少需要 {value} 个</translation>
-        </message>
-        <message>
-            <source>the correction table needs at least 8 entries</source>
-            <translation>修正表至少需要 8 项</translation>
-        </message>
-        <message>
-            <source>the signals do not move</source>
-            <translation>信号没有变化</translation>
-        </message>
-        <message>
-            <source>the samples do not make an ellipse (degenerate)</source>
-            <translation>采样点不构成椭圆（退化）</translation>
-        </message>
-        <message>
-            <source>the samples do not make an ellipse</source>
-            <translation>采样点不构成椭圆</translation>
-        </message>
-        <message>
-            <source>{key} must be one of {shown}, not {text}</source>
-            <translation>{key} 必须是 {shown} 之一，而不是 {text}</translation>
-        </message>
-        <message>
-            <source>{flag}: '{text}' is not a whole number</source>
-            <translation>{flag}：'{text}' 不是整数</translation>
-        </message>
-        <message>
-            <source>{flag}: '{text}' is not a number</source>
-            <translation>{flag}：'{text}' 不是数字</translation>
-        </message>
-        <message>
-            <source>{key} must be one of {shown}, not {value}</source>
-            <translation>{key} 必须是 {shown} 之一，而不是 {value}</translation>
-        </message>
-        <message>
-            <source>{key} must be text, not {name__}</source>
-            <translation>{key} 必须是文本，而不是 {name__}</translation>
-        </message>
-        <message>
-            <source>{key} must be a number, not {value}</source>
-            <translation>{key} 必须是数字，而不是 {value}</translation>
-        </message>
-        <message>
-            <source>{key} must be a whole number, not {value}</source>
-            <translation>{key} 必须是整数，而不是 {value}</translation>
-        </message>
-        <message>
-            <source>{key} must be {zero}{low} to {high}{value}, not {value2}</source>
-            <translation>{key} 必须在 {zero}{low} 至 {high}{value} 之间，而不是 {value2}</translation>
-        </message>
-        <message>
-            <source>separate tables for the forward and the backward approach</source>
-            <translation>正向和反向趋近各一张表</translation>
-        </message>
-        <message>
-            <source>one table from the bidirectional mean (x_up + x_down)/2</source>
-            <translation>由双向平均值 (x_up + x_down)/2 得出的一张表</translation>
-        </message>
-        <message>
-            <source>forward approach only (the backward was not measured)</source>
-            <translation>仅正向趋近（未测反向）</translation>
-        </message>
-        <message>
-            <source>backward approach only (the forward was not measured)</source>
-            <translation>仅反向趋近（未测正向）</translation>
-        </message>
-        <message>
-            <source>a step of {step} leaves fewer than two points over the targets {positions}…{positions2}</source>
-            <translation>步距 {step} 在目标 {positions}…{positions2} 范围内不足两个点</translation>
-        </message>
-        <message>
-            <source>a step of {step} gives {count} points; at most {max_points}</source>
-            <translation>步距 {step} 得到 {count} 个点；最多 {max_points} 个</translation>
-        </message>
-        <message>
-            <source>uniform step {step}</source>
-            <translation>等步距 {step}</translation>
-        </message>
-        <message>
-            <source>a bidirectional table needs both approach directions; this run has one: export separate tables</source>
-            <translation>双向补偿表需要两个趋近方向；本次测量只有一个：请分别导出</translation>
-        </message>
-        <message>
-            <source>no bidirectional mean deviation at target(s) {missing}: a compensation table needs every target</source>
-            <translation>目标 {missing} 处没有双向平均偏差：补偿表需要所有目标位置</translation>
-        </message>
-        <message>
-            <source>no forward mean deviation at target(s) {missing}: a compensation table needs every target</source>
-            <translation>目标 {missing} 处没有正向平均偏差：补偿表需要所有目标位置</translation>
-        </message>
-        <message>
-            <source>no backward mean deviation at target(s) {missing}: a compensation table needs every target</source>
-            <translation>目标 {missing} 处没有反向平均偏差：补偿表需要所有目标位置</translation>
-        </message>
-        <message>
-            <source>LinuxCNC's compensation file lists the forward and the reverse positions: export separate tables (both directions measured)</source>
-            <translation>LinuxCNC 的补偿文件分列正向和反向位置：请分别导出补偿表（两个方向均已测量）</translation>
-        </message>
-        <message>
-            <source>{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a larger step</source>
-            <translation>{size} 个点；LinuxCNC 每个关节最多 {linuxcnc_max_points} 个：请选择更大的步距</translation>
-        </message>
-        <message>
-            <source>LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points in {unit}</source>
-            <translation>LinuxCNC 补偿文件（COMP_FILE_TYPE = 0），{n} 个点，单位 {unit}</translation>
-        </message>
-        <message>
-            <source>Compensation table, {n} points ({form}, {spacing})</source>
-            <translation>补偿表，{n} 个点（{form}，{spacing}）</translation>
-        </message>
-        <message>
-            <source>{source}: cannot read ({value})</source>
-            <translation>{source}：无法读取（{value}）</translation>
-        </message>
-        <message>
-            <source>{source}: the file holds no rows</source>
-            <translation>{source}：文件中没有数据行</translation>
-        </message>
-        <message>
-            <source>{source}: row {line}: {len} columns; a readings file has at most {max_columns}</source>
-            <translation>{source}：第 {line} 行：{len} 列；读数文件最多 {max_columns} 列</translation>
-        </message>
-        <message>
-            <source>{source}: row {line}, column {col}: a cell of {len} characters is not a reading (at most {max_cell_chars})</source>
-            <translation>{source}：第 {line} 行，第 {col} 列：长 {len} 个字符的单元格不是读数（最多 {max_cell_chars} 个）</translation>
-        </message>
-        <message>
-            <source>{source}: more than {max_rows} rows</source>
-            <translation>{source}：超过 {max_rows} 行</translation>
-        </message>
-        <message>
-            <source>{source}: row {line_num}: cannot read the CSV ({what})</source>
-            <translation>{source}：第 {line_num} 行：无法读取 CSV（{what}）</translation>
-        </message>
-        <message>
-            <source>{source}: not a readable XLSX workbook ({exc})</source>
-            <translation>{source}：不是可读取的 XLSX 工作簿（{exc}）</translation>
-        </message>
-        <message>
-            <source>{source}: reading XLSX needs openpyxl</source>
-            <translation>{source}：读取 XLSX 需要 openpyxl</translation>
-        </message>
-        <message>
-            <source>{source}: the workbook expands to {value} MB, more than the {value2} MB a readings file needs: save the sheet as CSV</source>
-            <translation>{source}：工作簿展开后为 {value} MB，超过读数文件所需的 {value2} MB：请将工作表另存为 CSV</translation>
-        </message>
-        <message>
-            <source>{source}: more than {max_empty_xlsx_rows} empty rows after row {value}: keep the readings in one block (a stray far cell?)</source>
-            <translation>{source}：第 {value} 行之后有超过 {max_empty_xlsx_rows} 个空行：请将读数放在一个连续区域内（远处是否有零散单元格？）</translation>
-        </message>
-        <message>
-            <source>{source}: the workbook's sheet cannot be read ({exc})</source>
-            <translation>{source}：无法读取工作簿中的工作表（{exc}）</translation>
-        </message>
-        <message>
-            <source>{source}: column mapping names '{wanted}', which is not a column here ({join})</source>
-            <translation>{source}：列映射中的 '{wanted}' 不是此处的列（{join}）</translation>
-        </message>
-        <message>
-            <source>{source}: column mapping {wanted}={header}: the file has no header '{header}' (its headers: {join})</source>
-            <translation>{source}：列映射 {wanted}={header}：文件中没有表头 '{header}'（其表头为：{join}）</translation>
-        </message>
-        <message>
-            <source>{source}: row 1 (header): no column '{key}'; expected headers {join} (or their names, e.g. {title}{value}); the file's header is {join2}</source>
-            <extracomment>How far below the top a header is looked for (title, lab and date rows above it).</extracomment>
-            <translation>{source}：第 1 行（表头）：没有列 '{key}'；应有表头 {join}（或其名称，例如 {title}{value}）；文件的表头为 {join2}</translation>
-        </message>
-        <message>
-            <source>unknown angle unit {key}; choose one of {join}</source>
-            <translation>未知的角度单位 {key}；请选择 {join} 之一</translation>
-        </message>
-        <message>
-            <source>{source}: row {line_numbers}, column '{column_key}': {reason}</source>
-            <translation>{source}：第 {line_numbers} 行，列 '{column_key}'：{reason}</translation>
-        </message>
-        <message>
-            <source>{source}: row {line_numbers}: position {int} appears twice</source>
-            <translation>{source}：第 {line_numbers} 行：位置 {int} 出现两次</translation>
-        </message>
-        <message>
-            <source>{source}: no deviations found</source>
-            <translation>{source}：未找到偏差值</translation>
-        </message>
-        <message>
-            <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
-            <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional</extracomment>
-            <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: damaged project file (nested too deep, or a number too long); nothing was changed</source>
-            <translation>{source}：项目文件已损坏（嵌套过深或数字过长）；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: not an AngleBench project file</source>
-            <translation>{source}：不是 AngleBench 项目文件</translation>
-        </message>
-        <message>
-            <source>{source}: schema_version is missing or invalid</source>
-            <translation>{source}：schema_version 缺失或无效</translation>
-        </message>
-        <message>
-            <source>{source}: written by a newer AngleBench (schema {version}; this version reads up to {schema_version}). Nothing was changed; update AngleBench to open it.</source>
-            <translation>{source}：由较新版本的 AngleBench 写入（schema {version}；本版本最多读取 {schema_version}）。未作任何更改；请更新 AngleBench 后打开。</translation>
-        </message>
-        <message>
-            <source>{source}: 'workbenches' must be an object</source>
-            <translation>{source}：'workbenches' 必须是对象</translation>
-        </message>
-        <message>
-            <source>{source}: 'metadata' must be an object; nothing was changed</source>
-            <translation>{source}：'metadata' 必须是对象；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: 'metadata.certificates' must map workbenches to objects; nothing was changed</source>
-            <translation>{source}：'metadata.certificates' 必须将工作台映射为对象；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}' must be an object</source>
-            <translation>{source}：工作台 '{key}' 必须是对象</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}': 'rows' must be a list of lists</source>
-            <translation>{source}：工作台 '{key}'：'rows' 必须是列表的列表</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}': every cell must be text</source>
-            <translation>{source}：工作台 '{key}'：每个单元格都必须是文本</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}': 'settings' must be an object</source>
-            <translation>{source}：工作台 '{key}'：'settings' 必须是对象</translation>
-        </message>
-        <message>
-            <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
-            <translation>{where}：原始帧与其 SHA-256 不符（采集后被改动）；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}' is not one this version knows; nothing was changed</source>
-            <translation>{source}：本版本不认识工作台 '{key}'；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}', row {i}: {len} cells for {width} columns; nothing was changed</source>
-            <translation>{source}：工作台 '{key}'，第 {i} 行：{width} 列却有 {len} 个单元格；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{source}: workbench '{key}': {exc}; nothing was changed</source>
-            <translation>{source}：工作台 '{key}'：{exc}；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{path}: cannot read ({value})</source>
-            <translation>{path}：无法读取（{value}）</translation>
-        </message>
-        <message>
-            <source>{path}: damaged project file (not UTF-8 text)</source>
-            <translation>{path}：项目文件已损坏（不是 UTF-8 文本）</translation>
-        </message>
-        <message>
-            <source>the number scheme '{scheme}' has no {{seq}}: the register cannot number certificates with it</source>
-            <translation>编号方案 '{scheme}' 中没有 {{seq}}：登记册无法用它为证书编号</translation>
-        </message>
-        <message>
-            <source>register {display_url}: {reason}</source>
-            <extracomment>what the hash chain found changed since issue (checked on opening)</extracomment>
-            <translation>登记册 {display_url}：{reason}</translation>
-        </message>
-        <message>
-            <source>register {display_url}: {exc}</source>
-            <translation>登记册 {display_url}：{exc}</translation>
-        </message>
-        <message>
-            <source>register {display_url} is at schema version {version}, made by a newer AngleBench than {version__} (knows {latest}): open it with that version</source>
-            <translation>登记册 {display_url} 的 schema 版本为 {version}，由比 {version__} 更新的 AngleBench 建立（本版本支持到 {latest}）：请用该版本打开</translation>
-        </message>
-        <message>
-            <source>no free number in scheme '{scheme}'</source>
-            <translation>编号方案 '{scheme}' 中已无可用编号</translation>
-        </message>
-        <message>
-            <source>the next sequence number must be 1 or more</source>
-            <translation>下一个序号必须不小于 1</translation>
-        </message>
-        <message>
-            <source>the register has already allocated up to {format_certificate_number}: it never numbers back</source>
-            <translation>登记册已分配到 {format_certificate_number}：不会回退编号</translation>
-        </message>
-        <message>
-            <source>certificate number {number} was issued on {issued_at} ({workbench}, serial {value}): a number is issued once; leave the number empty and the register allocates the next</source>
-            <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请将编号留空，由登记册分配下一个</translation>
-        </message>
-        <message>
-            <source>{number} was superseded by {superseded_by}: amend or replace that one</source>
-            <translation>{number} 已被 {superseded_by} 取代：请修改或替代后者</translation>
-        </message>
-        <message>
-            <source>no certificate {number} in the register</source>
-            <translation>登记册中没有证书 {number}</translation>
-        </message>
-        <message>
-            <source>a calibration interval is a positive number of days</source>
-            <translation>校准间隔必须是正的天数</translation>
-        </message>
-        <message>
-            <source>Cannot export the compensation table</source>
-            <translation>无法导出补偿表</translation>
-        </message>
-        <message>
-            <source>{what} written</source>
-            <translation>{what}已写入</translation>
-        </message>
-        <message>
-            <source>Angle metrology workbench</source>
-            <translation>角度计量工作台</translation>
-        </message>
-        <message>
-            <source>project file to open</source>
-            <translation>要打开的项目文件</translation>
-        </message>
-        <message>
-            <source>load the bundled samples</source>
-            <translation>载入随附的示例</translation>
-        </message>
-        <message>
-            <source>render every workbench with its sample to DIR/&lt;workbench&gt;.png</source>
-            <translation>将每个工作台连同其示例绘制为 DIR/&lt;workbench&gt;.png</translation>
-        </message>
-        <message>
-            <source>the window's size for --screenshot, in logical pixels (with QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)</source>
-            <translation>--screenshot 的窗口尺寸，单位为逻辑像素（QT_SCALE_FACTOR=2 时，960x540 即 200 %% 缩放的 1920x1080 屏幕）</translation>
-        </message>
-        <message>
-            <source>the language of --screenshot's window and of this help (the window itself follows View › Language)</source>
-            <translation>--screenshot 窗口及本帮助所用的语言（窗口本身跟随“视图 › 语言”）</translation>
-        </message>
-        <message>
-            <source>{text}: give the size as WxH, e.g. 1280x720</source>
-            <translation>{text}：请以 WxH 给出尺寸，例如 1280x720</translation>
-        </message>
-        <message>
-            <source>{text}: 320x240 to 8000x8000</source>
-            <translation>{text}：应在 320x240 到 8000x8000 之间</translation>
-        </message>
-        <message>
-            <source>anglebench: the window needs Qt's X11 libraries; install them with
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>未命名</translation>
+    </message>
+    <message>
+        <source>Unsaved readings</source>
+        <translation>未保存的读数</translation>
+    </message>
+    <message>
+        <source>Save the changes to the project first?</source>
+        <translation>先保存对项目的更改吗？</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>打开项目</translation>
+    </message>
+    <message>
+        <source>AngleBench project (*.anglebench.json *.json)</source>
+        <translation>AngleBench 项目 (*.anglebench.json *.json)</translation>
+    </message>
+    <message>
+        <source>Cannot open project</source>
+        <translation>无法打开项目</translation>
+    </message>
+    <message>
+        <source>{reason}. Your current work is as it was.</source>
+        <translation>{reason}。当前工作保持不变。</translation>
+    </message>
+    <message>
+        <source>Opened {path}</source>
+        <translation>已打开 {path}</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>Cannot save</source>
+        <translation>无法保存</translation>
+    </message>
+    <message>
+        <source>{path}: {reason}. Your readings are still here.</source>
+        <translation>{path}：{reason}。您的读数仍在。</translation>
+    </message>
+    <message>
+        <source>Saved {path}</source>
+        <translation>已保存 {path}</translation>
+    </message>
+    <message>
+        <source>Import readings into {workbench}</source>
+        <translation>将读数导入{workbench}</translation>
+    </message>
+    <message>
+        <source>Readings (*.csv *.txt *.xlsx *.xlsm);;All files (*)</source>
+        <translation>读数 (*.csv *.txt *.xlsx *.xlsm);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot import</source>
+        <translation>无法导入</translation>
+    </message>
+    <message>
+        <source>Imported {path} (Edit › Undo restores the old readings)</source>
+        <translation>已导入 {path}（编辑 › 撤销 可恢复原读数）</translation>
+    </message>
+    <message>
+        <source>Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)</source>
+        <translation>已导入 {name}：{rows} 行（编辑 › 撤销 可恢复之前的读数）</translation>
+    </message>
+    <message>
+        <source>Printed</source>
+        <translation>已打印</translation>
+    </message>
+    <message>
+        <source>Cannot open</source>
+        <translation>无法打开</translation>
+    </message>
+    <message>
+        <source>Cannot send</source>
+        <translation>无法发送</translation>
+    </message>
+    <message>
+        <source>{workbench} has nothing to send to the positioning workbench.</source>
+        <translation>{workbench}没有可发送到定位工作台的内容。</translation>
+    </message>
+    <message>
+        <source>no readings have been analysed yet</source>
+        <translation>尚未分析任何读数</translation>
+    </message>
+    <message>
+        <source>Nothing to send</source>
+        <translation>没有可发送的内容</translation>
+    </message>
+    <message>
+        <source>{workbench}: {rows} readings sent (deviation = −corrected error); Edit › Undo restores the positioning readings</source>
+        <translation>{workbench}：已发送 {rows} 个读数（偏差 = −修正后误差）；编辑 › 撤销 可恢复定位工作台的读数</translation>
+    </message>
+    <message>
+        <source>Bundled samples loaded in every workbench</source>
+        <translation>已在每个工作台载入自带示例</translation>
+    </message>
+    <message>
+        <source>Export a draft?</source>
+        <translation>导出草稿？</translation>
+    </message>
+    <message>
+        <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
+        <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>This certificate replaces {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
+        <translation>本证书替代 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
+    </message>
+    <message>
+        <source>This certificate amends {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
+        <translation>本证书修订 {number}。改变了什么，为什么？（印在证书上；ISO/IEC 17025 7.8.8）</translation>
+    </message>
+    <message>
+        <source>What changed</source>
+        <translation>改变的内容</translation>
+    </message>
+    <message>
+        <source>Nothing to export</source>
+        <translation>没有可导出的内容</translation>
+    </message>
+    <message>
+        <source>Cannot recover</source>
+        <translation>无法恢复</translation>
+    </message>
+    <message>
+        <source>{reason} (the file was kept aside as damaged)</source>
+        <translation>{reason}（该文件已作为损坏文件另存）</translation>
+    </message>
+    <message>
+        <source>an unknown time</source>
+        <translation>未知时间</translation>
+    </message>
+    <message>
+        <source>an untitled project</source>
+        <translation>未命名项目</translation>
+    </message>
+    <message>
+        <source>Recover unsaved work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <source>AngleBench did not close normally. Restore the unsaved readings of {name}, autosaved {when}?</source>
+        <translation>AngleBench 上次未正常关闭。恢复 {name} 于 {when} 自动保存的未保存读数吗？</translation>
+    </message>
+    <message>
+        <source>The autosave was kept aside: {path}</source>
+        <translation>自动保存文件已另存：{path}</translation>
+    </message>
+    <message>
+        <source>About AngleBench</source>
+        <translation>关于 AngleBench</translation>
+    </message>
+    <message>
+        <source>Angle metrology workbench.</source>
+        <translation>角度计量工作台。</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>编号</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>修订</translation>
+    </message>
+    <message>
+        <source>Issued</source>
+        <translation>签发日期</translation>
+    </message>
+    <message>
+        <source>Calibrated</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>Workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>Serial</source>
+        <translation>编号（出厂）</translation>
+    </message>
+    <message>
+        <source>Customer</source>
+        <translation>委托方</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>登记册</translation>
+    </message>
+    <message>
+        <source>Select a certificate first.</source>
+        <translation>请先选择一份证书。</translation>
+    </message>
+    <message>
+        <source>{number} was superseded by {newer}: amend or replace that one.</source>
+        <translation>{number} 已被 {newer} 取代：请修订或替代后者。</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues a replacement of {number} and asks what changed.</source>
+        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的替代证书并询问改变的内容。</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues an amendment to {number} and asks what changed.</source>
+        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的修订证书并询问改变的内容。</translation>
+    </message>
+    <message>
+        <source>Cannot print</source>
+        <translation>无法打印</translation>
+    </message>
+    <message>
+        <source>Cannot verify</source>
+        <translation>无法验证</translation>
+    </message>
+    <message>
+        <source>Not in the register</source>
+        <translation>不在登记册中</translation>
+    </message>
+    <message>
+        <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
+        <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
+    </message>
+    <message>
+        <source>Verified</source>
+        <translation>已验证</translation>
+    </message>
+    <message>
+        <source>{path} is certificate {number} as issued on {date} ({status}), byte for byte.</source>
+        <translation>{path} 逐字节与 {date} 签发的证书 {number}（{status}）一致。</translation>
+    </message>
+    <message>
+        <source>Certificate number</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>Date of issue (YYYY-MM-DD)</source>
+        <translation>签发日期（YYYY-MM-DD）</translation>
+    </message>
+    <message>
+        <source>Date of calibration</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>Tolerance ±</source>
+        <translation>允差 ±</translation>
+    </message>
+    <message>
+        <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
+        <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
+    </message>
+    <message>
+        <source>Laboratory</source>
+        <translation>实验室</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Accreditation</source>
+        <translation>认可</translation>
+    </message>
+    <message>
+        <source>Number scheme</source>
+        <translation>编号规则</translation>
+    </message>
+    <message>
+        <source>Item under test</source>
+        <translation>被测件</translation>
+    </message>
+    <message>
+        <source>Manufacturer</source>
+        <translation>制造商</translation>
+    </message>
+    <message>
+        <source>Serial number</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>Grade / specification</source>
+        <translation>等级 / 规格</translation>
+    </message>
+    <message>
+        <source>Resolution</source>
+        <translation>分辨力</translation>
+    </message>
+    <message>
+        <source>Temperature (°C)</source>
+        <translation>温度 (°C)</translation>
+    </message>
+    <message>
+        <source>Relative humidity (%)</source>
+        <translation>相对湿度 (%)</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>Approved by</source>
+        <translation>批准人</translation>
+    </message>
+    <message>
+        <source>Coverage probability (%)</source>
+        <translation>包含概率 (%)</translation>
+    </message>
+    <message>
+        <source>Table loaded (sha256)</source>
+        <translation>已载入的修正表（sha256）</translation>
+    </message>
+    <message>
+        <source>Document</source>
+        <translation>文件类型</translation>
+    </message>
+    <message>
+        <source>Calibration certificate</source>
+        <extracomment>What the document is: a calibration certificate, or a test report.</extracomment>
+        <translation>校准证书</translation>
+    </message>
+    <message>
+        <source>Test report</source>
+        <translation>检测报告</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be text</source>
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是文本</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be a number</source>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是数字</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos;: &apos;{shown}&apos; is not a number</source>
+        <translation>证书字段 &apos;{field_name}&apos;：&apos;{shown}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be a finite number</source>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是有限的数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos;: &apos;{text}&apos; is not a date (YYYY-MM-DD)</source>
+        <translation>证书字段 &apos;{field_name}&apos;：&apos;{text}&apos; 不是日期（YYYY-MM-DD）</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}&apos; must be an object</source>
+        <translation>证书字段 &apos;{name}&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.basis&apos; must be one of {join}, not &apos;{basis}&apos;</source>
+        <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.uncertainty&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
+        <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate metadata must be a JSON object</source>
+        <extracomment>keys written before their figures had a unit (project schema 1) → the keys now</extracomment>
+        <translation>证书信息必须是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;standards&apos; must be a list</source>
+        <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;language&apos; must be one of {join}, not &apos;{language}&apos;</source>
+        <translation>证书字段 &apos;language&apos; 必须是 {join} 之一，而不是 &apos;{language}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;decision_rule&apos; must be one of {join}, not &apos;{decision_rule}&apos;</source>
+        <translation>证书字段 &apos;decision_rule&apos; 必须是 {join} 之一，而不是 &apos;{decision_rule}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance&apos; must be positive</source>
+        <translation>证书字段 &apos;tolerance&apos; 必须为正数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{key}&apos; must be one of {join}, not &apos;{unit}&apos;</source>
+        <translation>证书字段 &apos;{key}&apos; 必须是 {join} 之一，而不是 &apos;{unit}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution&apos; is in {given}, but the errors are in {unit}: state the resolution in a unit of the same kind</source>
+        <translation>证书字段 &apos;item_resolution&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出分辨力</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance&apos; is in {given}, but the errors are in {unit}: state the tolerance in a unit of the same kind</source>
+        <translation>证书字段 &apos;tolerance&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出允差</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
+        <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;item_resolution&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;coverage_probability_pct&apos; must be 50 to 99.9 %</source>
+        <translation>证书字段 &apos;coverage_probability_pct&apos; 必须在 50 至 99.9 % 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;decision_quantity&apos; must be one of {join}, not &apos;{decision_quantity}&apos;</source>
+        <translation>证书字段 &apos;decision_quantity&apos; 必须是 {join} 之一，而不是 &apos;{decision_quantity}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;document_type&apos; must be one of {join}, not &apos;{document_type}&apos;</source>
+        <translation>证书字段 &apos;document_type&apos; 必须是 {join} 之一，而不是 &apos;{document_type}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate number</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>laboratory</source>
+        <translation>校准机构</translation>
+    </message>
+    <message>
+        <source>supersedes</source>
+        <extracomment>what ``show`` lists of a record, named as the register&apos;s columns (translated as names)</extracomment>
+        <translation>取代</translation>
+    </message>
+    <message>
+        <source>superseded_by</source>
+        <translation>被取代于</translation>
+    </message>
+    <message>
+        <source>issue_date</source>
+        <translation>签发日期</translation>
+    </message>
+    <message>
+        <source>calibration_date</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>item_description</source>
+        <translation>被校对象</translation>
+    </message>
+    <message>
+        <source>item_manufacturer</source>
+        <translation>制造厂</translation>
+    </message>
+    <message>
+        <source>item_serial</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>customer</source>
+        <translation>委托方</translation>
+    </message>
+    <message>
+        <source>workstation</source>
+        <translation>工作站</translation>
+    </message>
+    <message>
+        <source>issued_at</source>
+        <translation>签发时间</translation>
+    </message>
+    <message>
+        <source>pdf_sha256</source>
+        <translation>PDF 的 sha256</translation>
+    </message>
+    <message>
+        <source>The certificate register</source>
+        <translation>证书登记册</translation>
+    </message>
+    <message>
+        <source>sqlite:///path, a file path or postgresql://user@host/db</source>
+        <translation>sqlite:///路径、文件路径或 postgresql://user@host/db</translation>
+    </message>
+    <message>
+        <source>the certificates, newest first</source>
+        <translation>列出证书，最新的在前</translation>
+    </message>
+    <message>
+        <source>text to find in the number, the serial or the customer</source>
+        <translation>在证书编号、出厂编号或委托方中查找的文字</translation>
+    </message>
+    <message>
+        <source>one certificate&apos;s record</source>
+        <translation>一份证书的记录</translation>
+    </message>
+    <message>
+        <source>the certificate number</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>also write the PDF as issued</source>
+        <translation>同时写出签发时的 PDF</translation>
+    </message>
+    <message>
+        <source>also write the project behind it</source>
+        <translation>同时写出其所依据的项目</translation>
+    </message>
+    <message>
+        <source>is this PDF, byte for byte, one the register issued?</source>
+        <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
+    </message>
+    <message>
+        <source>every record: index.csv, the PDFs and the projects</source>
+        <translation>导出全部记录：index.csv、PDF 和项目</translation>
+    </message>
+    <message>
+        <source>the archive to write</source>
+        <translation>要写出的压缩包</translation>
+    </message>
+    <message>
+        <source>continue numbering from hand-issued numbers</source>
+        <translation>在手工签发的编号之后继续编号</translation>
+    </message>
+    <message>
+        <source>e.g. AB-{year}-{seq:04d}</source>
+        <translation>例如 AB-{year}-{seq:04d}</translation>
+    </message>
+    <message>
+        <source>the next sequence number to issue</source>
+        <translation>下一个要签发的序号</translation>
+    </message>
+    <message>
+        <source>YYYY-MM-DD for the scheme&apos;s date fields (default today)</source>
+        <translation>编号规则中日期字段所用的 YYYY-MM-DD（默认为今天）</translation>
+    </message>
+    <message>
+        <source>set an instrument&apos;s calibration interval</source>
+        <translation>设置仪器的校准周期</translation>
+    </message>
+    <message>
+        <source>the instrument&apos;s serial number</source>
+        <translation>仪器的出厂编号</translation>
+    </message>
+    <message>
+        <source>0 clears it</source>
+        <translation>0 表示清除</translation>
+    </message>
+    <message>
+        <source>{number}  ({status}{revision})</source>
+        <translation>{number}（{status}{revision}）</translation>
+    </message>
+    <message>
+        <source>  {field}: {value}</source>
+        <translation>  {field}：{value}</translation>
+    </message>
+    <message>
+        <source>  headline {name}: {value}</source>
+        <translation>  主要结果 {name}：{value}</translation>
+    </message>
+    <message>
+        <source>  software: {versions}</source>
+        <translation>  软件：{versions}</translation>
+    </message>
+    <message>
+        <source>  next calibration of {serial} due: {date}</source>
+        <translation>  {serial} 的下次校准日期：{date}</translation>
+    </message>
+    <message>
+        <source>{n} certificate(s) exported to {out}</source>
+        <translation>已将 {n} 份证书导出到 {out}</translation>
+    </message>
+    <message>
+        <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
+        <translation>{path}：不在登记册中（没有已签发的 PDF 具有此 SHA-256：已被改动、是草稿，或来自另一登记册）</translation>
+    </message>
+    <message>
+        <source>{path}: certificate {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：证书 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>--date {date}: not YYYY-MM-DD</source>
+        <translation>--date {date}：不是 YYYY-MM-DD 格式</translation>
+    </message>
+    <message>
+        <source>the next certificate of {scheme} will be {number}</source>
+        <translation>{scheme} 的下一份证书编号将为 {number}</translation>
+    </message>
+    <message>
+        <source>anglebench register: cannot write: {reason}</source>
+        <translation>anglebench register：无法写入：{reason}</translation>
+    </message>
+    <message>
+        <source>item under test</source>
+        <translation>被校准对象</translation>
+    </message>
+    <message>
+        <source>item serial number</source>
+        <translation>被校对象出厂编号</translation>
+    </message>
+    <message>
+        <source>date of calibration</source>
+        <translation>校准日期</translation>
+    </message>
+    <message>
+        <source>operator</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>reference standards</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>Decision rule</source>
+        <translation>判定规则</translation>
+    </message>
+    <message>
+        <source>Guard band w = U: pass / conditional / fail (ILAC-G8 4.2.3)</source>
+        <translation>保护带 w = U：合格 / 有条件 / 不合格（ILAC-G8 4.2.3）</translation>
+    </message>
+    <message>
+        <source>Guard band w = U: pass / fail (ILAC-G8 4.2.2)</source>
+        <translation>保护带 w = U：合格 / 不合格（ILAC-G8 4.2.2）</translation>
+    </message>
+    <message>
+        <source>Simple acceptance (ILAC-G8 4.2.1)</source>
+        <translation>简单接受（ILAC-G8 4.2.1）</translation>
+    </message>
+    <message>
+        <source>Combined standard u_c</source>
+        <translation>合成标准不确定度 u_c</translation>
+    </message>
+    <message>
+        <source>Expanded U (k = {k})</source>
+        <translation>扩展不确定度 U（k = {k}）</translation>
+    </message>
+    <message>
+        <source>Uncertainty budget</source>
+        <translation>不确定度分量一览表</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>输入量</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>评定类别</translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation>分布</translation>
+    </message>
+    <message>
+        <source>Value ({unit})</source>
+        <translation>量值 ({unit})</translation>
+    </message>
+    <message>
+        <source>Divisor</source>
+        <translation>除数</translation>
+    </message>
+    <message>
+        <source>Share %</source>
+        <translation>占比 %</translation>
+    </message>
+    <message>
+        <source>Reference standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>face, stated from face 1</source>
+        <translation>面，以第 1 面为基准给出</translation>
+    </message>
+    <message>
+        <source>{basis} per {per}, certificate {certificate}</source>
+        <translation>每个{per}的{basis}，证书 {certificate}</translation>
+    </message>
+    <message>
+        <source>{basis} per {per}</source>
+        <translation>每个{per}的{basis}</translation>
+    </message>
+    <message>
+        <source>Item resolution</source>
+        <translation>被校对象分辨力</translation>
+    </message>
+    <message>
+        <source>resolution {r} of the item&apos;s indication</source>
+        <translation>被校对象示值的分辨力 {r}</translation>
+    </message>
+    <message>
+        <source>Decided quantity</source>
+        <translation>判定的量</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty U (p = {p} %)</source>
+        <translation>扩展不确定度 U（p = {p} %）</translation>
+    </message>
+    <message>
+        <source>largest over the {points}; k = {k} there</source>
+        <translation>{points}中的最大值；该处 k = {k}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak (Monte Carlo U)</source>
+        <translation>峰峰值的一半（蒙特卡洛 U）</translation>
+    </message>
+    <message>
+        <source>Every point with its own U</source>
+        <translation>每个点及其各自的 U</translation>
+    </message>
+    <message>
+        <source>Amendment {number} to certificate {certificate}</source>
+        <extracomment>the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
+        <translation>证书 {certificate} 的第 {number} 号修改</translation>
+    </message>
+    <message>
+        <source>Amendment to certificate {certificate}</source>
+        <translation>证书 {certificate} 的修改</translation>
+    </message>
+    <message>
+        <source>This certificate replaces certificate {certificate}</source>
+        <translation>本证书替代证书 {certificate}</translation>
+    </message>
+    <message>
+        <source>{what}, which it supersedes; the original stays on record unchanged. Changed: {change}</source>
+        <translation>{what}，原证书作废；原证书存档，内容不变。修改内容：{change}</translation>
+    </message>
+    <message>
+        <source>{what}, which it supersedes; the original stays on record unchanged.</source>
+        <translation>{what}，原证书作废；原证书存档，内容不变。</translation>
+    </message>
+    <message>
+        <source>Page {page} of {pages}</source>
+        <translation>第 {page} 页 共 {pages} 页</translation>
+    </message>
+    <message>
+        <source>(no data)</source>
+        <translation>（无数据）</translation>
+    </message>
+    <message>
+        <source>Laboratory not stated</source>
+        <translation>未注明校准机构</translation>
+    </message>
+    <message>
+        <source>Certificate no number</source>
+        <translation>证书 无编号</translation>
+    </message>
+    <message>
+        <source>This certificate shall not be reproduced except in full without the laboratory&apos;s written approval.</source>
+        <translation>未经本实验室书面批准，不得部分复制本证书。</translation>
+    </message>
+    <message>
+        <source>Certificate {number} · AngleBench {version}</source>
+        <translation>证书 {number} · AngleBench {version}</translation>
+    </message>
+    <message>
+        <source>DRAFT</source>
+        <translation>草稿</translation>
+    </message>
+    <message>
+        <source>not stated</source>
+        <translation>未注明</translation>
+    </message>
+    <message>
+        <source>Reference standards</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Serial no.</source>
+        <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>Certificate no.</source>
+        <translation>证书编号</translation>
+    </message>
+    <message>
+        <source>Uncertainty</source>
+        <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>DRAFT — not valid as a certificate. Missing: {fields}.</source>
+        <translation>草稿——不能作为证书使用。缺少：{fields}。</translation>
+    </message>
+    <message>
+        <source>tolerance ±{tolerance}</source>
+        <translation>允差 ±{tolerance}</translation>
+    </message>
+    <message>
+        <source>Reference: {reference}.</source>
+        <translation>参考文献：{reference}。</translation>
+    </message>
+    <message>
+        <source>The evaluation follows {standard}, implemented in AngleBench {version}; its verification is the validation report of that version (anglebench validate): simulations with known truth and hand-computed examples, each with its result.</source>
+        <translation>评定依据 {standard}，由 AngleBench {version} 实现；其验证记录为该版本的确认报告（anglebench validate）：已知真值的仿真和手工计算示例，各附结果。</translation>
+    </message>
+    <message>
+        <source>This is a non-standard method, published in the reference above and implemented in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the validation report of that version (anglebench validate): the reference figures of the publication and exact simulations with known truth, each with its result.</source>
+        <translation>本方法为非标准方法，发表于上述参考文献，由 AngleBench {version} 实现。其确认记录（ISO/IEC 17025 7.2.2）为该版本的确认报告（anglebench validate）：原文的参考数据和已知真值的精确仿真，各附结果。</translation>
+    </message>
+    <message>
+        <source>The expanded uncertainty of the error is U = {u} (the largest over the points; each point&apos;s U is in the results table). At each point it is the combined standard uncertainty multiplied by the coverage factor k of Student&apos;s t for that point&apos;s effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of {p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM (JCGM 100:2008).</source>
+        <translation>误差的扩展不确定度 U = {u}（各点中的最大值；各点的 U 见结果表）。各点的扩展不确定度为合成标准不确定度乘以包含因子 k，k 为该点有效自由度（Welch–Satterthwaite 公式）和包含概率 {p} % 下的 t 分布值；最大处 k = {k}。不确定度按 GUM（JCGM 100:2008）评定。</translation>
+    </message>
+    <message>
+        <source>Decided quantity: {quantity}.</source>
+        <translation>判定的量：{quantity}。</translation>
+    </message>
+    <message>
+        <source>Decision rule: {rule}.</source>
+        <translation>判定规则：{rule}。</translation>
+    </message>
+    <message>
+        <source>Zones: {zones}.</source>
+        <translation>区间：{zones}。</translation>
+    </message>
+    <message>
+        <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
+        <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
+    </message>
+    <message>
+        <source>{standard} (certificate {certificate})</source>
+        <translation>{standard}（证书 {certificate}）</translation>
+    </message>
+    <message>
+        <source>standard</source>
+        <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the reference standards listed, calibrated as stated in their certificates: {names}.</source>
+        <translation>计量溯源性：通过所列计量标准，校准结果可溯源至国际单位制（SI）平面角单位，各标准的校准见其证书：{names}。</translation>
+    </message>
+    <message>
+        <source>temperature {t} °C</source>
+        <translation>温度 {t} °C</translation>
+    </message>
+    <message>
+        <source>relative humidity {h} %</source>
+        <translation>相对湿度 {h} %</translation>
+    </message>
+    <message>
+        <source>Signature and date</source>
+        <translation>签名及日期</translation>
+    </message>
+    <message>
+        <source>Unit of the uncertainty (&quot;, µrad, nm, µm …)</source>
+        <translation>不确定度的单位（&quot;、µrad、nm、µm …）</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty is in {given}, but the errors are in {unit}: state it in a unit of the same kind</source>
+        <translation>参考标准 &apos;{name}&apos;：其不确定度的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出</translation>
+    </message>
+    <message>
+        <source>Stated as (U95, MPE, u)</source>
+        <translation>表示为（U95、MPE、u）</translation>
+    </message>
+    <message>
+        <source>Per (reading, from face 1)</source>
+        <translation>适用于（每个读数、相对第 1 面）</translation>
+    </message>
+    <message>
+        <source>Certificate details</source>
+        <translation>证书信息</translation>
+    </message>
+    <message>
+        <source>allocated by the register on export</source>
+        <translation>导出时由登记册分配</translation>
+    </message>
+    <message>
+        <source>Leave empty: the register allocates the next number of the scheme, unique across every workstation sharing it. A number typed here is refused if it was issued before.</source>
+        <translation>留空：由登记册按编号规则分配下一个编号，在共享登记册的所有工作站中唯一。此处输入的编号若已签发过将被拒绝。</translation>
+    </message>
+    <message>
+        <source>Certificate</source>
+        <translation>证书</translation>
+    </message>
+    <message>
+        <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
+        <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
+    </message>
+    <message>
+        <source>Environment and people</source>
+        <translation>环境和人员</translation>
+    </message>
+    <message>
+        <source>Remarks printed on the certificate</source>
+        <translation>印在证书上的备注</translation>
+    </message>
+    <message>
+        <source>Reference standards (their uncertainty enters the budget per reading)</source>
+        <translation>计量标准（其不确定度按每个读数计入评定）</translation>
+    </message>
+    <message>
+        <source>Add standard</source>
+        <translation>添加标准</translation>
+    </message>
+    <message>
+        <source>Remove standard</source>
+        <translation>删除标准</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Save as lab defaults</source>
+        <translation>保存为实验室默认值</translation>
+    </message>
+    <message>
+        <source>Lab, number scheme, standards, people and decision rule become the start of every new certificate</source>
+        <translation>实验室、编号规则、计量标准、人员和判定规则将作为每份新证书的起始内容</translation>
+    </message>
+    <message>
+        <source> (and {count} more, marked red)</source>
+        <translation>（另有 {count} 处，已标红）</translation>
+    </message>
+    <message>
+        <source>Saved as the lab&apos;s defaults.</source>
+        <translation>已保存为实验室默认值。</translation>
+    </message>
+    <message>
+        <source>(not in the file)</source>
+        <translation>（文件中没有）</translation>
+    </message>
+    <message>
+        <source>Which column is which?</source>
+        <translation>各列分别是什么？</translation>
+    </message>
+    <message>
+        <source> (optional)</source>
+        <translation>（可选）</translation>
+    </message>
+    <message>
+        <source>Remember for files with these headers</source>
+        <translation>对具有这些表头的文件记住此对应</translation>
+    </message>
+    <message>
+        <source>The first rows as they would be read:</source>
+        <translation>前几行的读取结果：</translation>
+    </message>
+    <message>
+        <source>Still needed: {columns}</source>
+        <translation>仍需要：{columns}</translation>
+    </message>
+    <message>
+        <source>Values of the swept parameter, separated by commas</source>
+        <translation>扫描参数的取值，以逗号分隔</translation>
+    </message>
+    <message>
+        <source>sweep values</source>
+        <translation>扫描取值</translation>
+    </message>
+    <message>
+        <source>Export table (CSV / C header)…</source>
+        <translation>导出修正表（CSV / C 头文件）…</translation>
+    </message>
+    <message>
+        <source>Interpolation error</source>
+        <translation>细分误差</translation>
+    </message>
+    <message>
+        <source>Signals and fit</source>
+        <translation>信号及拟合</translation>
+    </message>
+    <message>
+        <source>Lissajous</source>
+        <translation>李萨如图</translation>
+    </message>
+    <message>
+        <source>Spectrum</source>
+        <translation>频谱</translation>
+    </message>
+    <message>
+        <source>Drift per period</source>
+        <translation>逐周期漂移</translation>
+    </message>
+    <message>
+        <source>Export correction table</source>
+        <translation>导出修正表</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;C header (*.h)</source>
+        <translation>CSV (*.csv);;C 头文件 (*.h)</translation>
+    </message>
+    <message>
+        <source>AngleBench — manual</source>
+        <translation>AngleBench — 手册</translation>
+    </message>
+    <message>
+        <source>Save image</source>
+        <translation>保存图像</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Copy image</source>
+        <translation>复制图像</translation>
+    </message>
+    <message>
+        <source>Save image…</source>
+        <translation>保存图像…</translation>
+    </message>
+    <message>
+        <source>tilt ψ</source>
+        <translation>倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>direction ω</source>
+        <translation>方向 ω</translation>
+    </message>
+    <message>
+        <source>sweep</source>
+        <translation>扫描参数</translation>
+    </message>
+    <message>
+        <source>The parameter drawn as a family of curves: the tilt&apos;s direction ω (as in Fig. 3 of Tian et al. 2015, the polygon method&apos;s paper) or its size ψ (as in its Fig. 4)</source>
+        <translation>画成一族曲线的参数：倾斜方向 ω（如多面棱体方法论文田留德等 2015 的图 3）或倾斜大小 ψ（如该文图 4）</translation>
+    </message>
+    <message>
+        <source>levelled with the rotary axis</source>
+        <translation>与回转轴一同调平</translation>
+    </message>
+    <message>
+        <source>θ (deg)</source>
+        <translation>θ (°)</translation>
+    </message>
+    <message>
+        <source>ε_x induced error (&quot;)</source>
+        <translation>ε_x 引起的误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>ε_y vertical (&quot;)</source>
+        <translation>ε_y 垂直 (&quot;)</translation>
+    </message>
+    <message>
+        <source>harmonic order (1 = eccentricity, 2 = ellipticity)</source>
+        <translation>谐波次数（1 = 偏心，2 = 椭圆度）</translation>
+    </message>
+    <message>
+        <source>Load polygon certificate…</source>
+        <translation>载入多面棱体证书…</translation>
+    </message>
+    <message>
+        <source>Fill the deviation column from a CSV/XLSX with position,deviation_arcsec</source>
+        <translation>从含 position,deviation_arcsec 的 CSV/XLSX 填写偏差列</translation>
+    </message>
+    <message>
+        <source>Error over the circle</source>
+        <translation>全圆误差</translation>
+    </message>
+    <message>
+        <source>Vertical readings / tilt</source>
+        <translation>垂直读数 / 倾斜</translation>
+    </message>
+    <message>
+        <source>Harmonics</source>
+        <translation>谐波</translation>
+    </message>
+    <message>
+        <source>What-if: set-up errors</source>
+        <translation>假设分析：安装误差</translation>
+    </message>
+    <message>
+        <source>Polygon calibration certificate</source>
+        <translation>多面棱体校准证书</translation>
+    </message>
+    <message>
+        <source>Deviations (*.csv *.txt *.xlsx);;All files (*)</source>
+        <translation>偏差 (*.csv *.txt *.xlsx);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export compensation table…</source>
+        <translation>导出补偿表…</translation>
+    </message>
+    <message>
+        <source>Compensation = −mean deviation, at the targets or a uniform step, as set above: CSV, LinuxCNC&apos;s COMP_FILE (type 0), or a controller&apos;s table (SINUMERIK, FANUC, HEIDENHAIN, TwinCAT, ISG, Mach4)</source>
+        <translation>补偿量 = −平均偏差，取于目标点或按上方设定的等步距：CSV、LinuxCNC 的 COMP_FILE（类型 0），或控制器补偿表（SINUMERIK、FANUC、HEIDENHAIN、TwinCAT、ISG、Mach4）</translation>
+    </message>
+    <message>
+        <source>Deviation per target</source>
+        <translation>各目标位置的偏差</translation>
+    </message>
+    <message>
+        <source>Reversal per target</source>
+        <translation>各目标位置的反向差</translation>
+    </message>
+    <message>
+        <source>Runs</source>
+        <translation>各测次</translation>
+    </message>
+    <message>
+        <source>Per target</source>
+        <translation>逐目标位置</translation>
+    </message>
+    <message>
+        <source>LinuxCNC compensation file (*.txt *.comp);;All files (*)</source>
+        <translation>LinuxCNC 补偿文件 (*.txt *.comp);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv);;All files (*)</source>
+        <translation>CSV (*.csv);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Controller compensation file (*.{ext});;All files (*)</source>
+        <translation>控制器补偿文件 (*.{ext});;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export compensation table</source>
+        <translation>导出补偿表</translation>
+    </message>
+    <message>
+        <source>{controller}: controller options</source>
+        <translation>{controller}：控制器选项</translation>
+    </message>
+    <message>
+        <source>Row {row}, {header} ({key}): {reason}</source>
+        <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
+    </message>
+    <message>
+        <source>Edit row {row}</source>
+        <translation>编辑第 {row} 行</translation>
+    </message>
+    <message>
+        <source>Edit cells</source>
+        <translation>编辑单元格</translation>
+    </message>
+    <message>
+        <source>Delete {rows} row(s)</source>
+        <translation>删除 {rows} 行</translation>
+    </message>
+    <message>
+        <source>Replace readings</source>
+        <translation>替换读数</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>粘贴</translation>
+    </message>
+    <message>
+        <source>Clear cells</source>
+        <translation>清除单元格</translation>
+    </message>
+    <message>
+        <source>Insert row above</source>
+        <translation>在上方插入行</translation>
+    </message>
+    <message>
+        <source>Delete rows</source>
+        <translation>删除行</translation>
+    </message>
+    <message>
+        <source>Next nominal</source>
+        <translation>下一个名义值</translation>
+    </message>
+    <message>
+        <source>Paste {rows} row(s) (header row left out)</source>
+        <translation>粘贴 {rows} 行（已略去表头行）</translation>
+    </message>
+    <message>
+        <source>Paste {rows} row(s)</source>
+        <translation>粘贴 {rows} 行</translation>
+    </message>
+    <message>
+        <source>{paste}, replacing the sheet</source>
+        <translation>{paste}，替换整张表</translation>
+    </message>
+    <message>
+        <source>Paste readings</source>
+        <translation>粘贴读数</translation>
+    </message>
+    <message>
+        <source>The {pasted} pasted rows land on a run of {run}; {left} row(s) of the old run would stay below them and be analysed with them.</source>
+        <translation>粘贴的 {pasted} 行落在一次 {run} 行的测量上；原测量中有 {left} 行会留在其下方并一起被分析。</translation>
+    </message>
+    <message>
+        <source>Replace the sheet</source>
+        <translation>替换整张表</translation>
+    </message>
+    <message>
+        <source>Overwrite rows 1–{rows} only</source>
+        <translation>仅覆盖第 1–{rows} 行</translation>
+    </message>
+    <message>
+        <source>Certificate register</source>
+        <translation>证书登记册</translation>
+    </message>
+    <message>
+        <source>empty: the file in your data folder; or postgresql://user@host/database</source>
+        <translation>留空：使用数据文件夹中的文件；或 postgresql://user@host/database</translation>
+    </message>
+    <message>
+        <source>Use</source>
+        <translation>使用</translation>
+    </message>
+    <message>
+        <source>Search number, serial or customer</source>
+        <translation>检索编号、出厂编号或委托方</translation>
+    </message>
+    <message>
+        <source>Amend…</source>
+        <translation>修订…</translation>
+    </message>
+    <message>
+        <source>Replace…</source>
+        <translation>替代…</translation>
+    </message>
+    <message>
+        <source>Save PDF…</source>
+        <translation>保存 PDF…</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>打印…</translation>
+    </message>
+    <message>
+        <source>Verify a PDF…</source>
+        <translation>验证 PDF…</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>历史</translation>
+    </message>
+    <message>
+        <source>Open the certificate&apos;s readings and details; the next export issues Amendment n to it, saying what changed</source>
+        <translation>打开该证书的读数和信息；下次导出将签发其第 n 号修订，并说明改变的内容</translation>
+    </message>
+    <message>
+        <source>As Amend, but the new certificate gets a new number and replaces the original</source>
+        <translation>与修订相同，但新证书使用新编号并替代原证书</translation>
+    </message>
+    <message>
+        <source>Is a PDF, byte for byte, one this register issued?</source>
+        <translation>某个 PDF 是否逐字节与本登记册签发的一致？</translation>
+    </message>
+    <message>
+        <source>Select a certificate and press History</source>
+        <translation>选择一份证书并按“历史”</translation>
+    </message>
+    <message>
+        <source>No history shown yet: select a certificate above and press History (or double-click it) to see its instrument&apos;s figures over time and its due date.</source>
+        <translation>尚未显示历史：在上方选择一份证书并按“历史”（或双击该证书），即可看到该仪器各结果项随时间的变化及下次到期日。</translation>
+    </message>
+    <message>
+        <source>The figure of the certificates to follow over time</source>
+        <translation>随时间跟踪的证书结果</translation>
+    </message>
+    <message>
+        <source> days</source>
+        <translation> 天</translation>
+    </message>
+    <message>
+        <source>no interval set</source>
+        <translation>未设置周期</translation>
+    </message>
+    <message>
+        <source>Set interval</source>
+        <translation>设置周期</translation>
+    </message>
+    <message>
+        <source>Register:</source>
+        <translation>登记册：</translation>
+    </message>
+    <message>
+        <source>calibration interval</source>
+        <translation>校准周期</translation>
+    </message>
+    <message>
+        <source>Instrument {serial}: {count} calibration(s)</source>
+        <translation>仪器 {serial}：{count} 次校准</translation>
+    </message>
+    <message>
+        <source>, next due {date}</source>
+        <translation>，下次到期 {date}</translation>
+    </message>
+    <message>
+        <source>, no due date (set an interval)</source>
+        <translation>，无到期日（请设置周期）</translation>
+    </message>
+    <message>
+        <source>Verify a certificate PDF</source>
+        <translation>验证证书 PDF</translation>
+    </message>
+    <message>
+        <source>Save the certificate&apos;s PDF</source>
+        <translation>保存证书 PDF</translation>
+    </message>
+    <message>
+        <source>Certificate {number}</source>
+        <translation>证书 {number}</translation>
+    </message>
+    <message>
+        <source>Insert rows</source>
+        <translation>插入行</translation>
+    </message>
+    <message>
+        <source>axis tilt ψ</source>
+        <translation>轴系倾斜 ψ</translation>
+    </message>
+    <message>
+        <source>tilt direction α</source>
+        <translation>倾斜方向 α</translation>
+    </message>
+    <message>
+        <source>mirror normal β</source>
+        <translation>反射镜法线 β</translation>
+    </message>
+    <message>
+        <source>θ range ±</source>
+        <translation>θ 范围 ±</translation>
+    </message>
+    <message>
+        <source>The parameter drawn as a family of curves, as in the figures of Tian et al. 2017 (the theodolite method&apos;s paper): β as in its Figs. 3 and 4, α as in its Fig. 5, ψ as in its Fig. 6</source>
+        <translation>画成一族曲线的参数，如经纬仪方法论文田留德等 2017 的图：β 如其图 3 和图 4，α 如其图 5，ψ 如其图 6</translation>
+    </message>
+    <message>
+        <source>ζ (&quot;)</source>
+        <translation>ζ (&quot;)</translation>
+    </message>
+    <message>
+        <source>E (deg)</source>
+        <translation>E (°)</translation>
+    </message>
+    <message>
+        <source>Error curves</source>
+        <translation>误差曲线</translation>
+    </message>
+    <message>
+        <source>Import {name}</source>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
+        <translation>导入 {name}</translation>
+    </message>
+    <message>
+        <source>Reading {name} …</source>
+        <translation>正在读取 {name} …</translation>
+    </message>
+    <message>
+        <source>Analysing {rows} readings …</source>
+        <translation>正在分析 {rows} 个读数 …</translation>
+    </message>
+    <message>
+        <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
+        <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
+    </message>
+    <message>
+        <source>Readings — {used} used</source>
+        <translation>读数 — 已用 {used} 个</translation>
+    </message>
+    <message>
+        <source>, {cells} bad cell(s)</source>
+        <translation>，{cells} 个错误单元格</translation>
+    </message>
+    <message>
+        <source>next: row {row}</source>
+        <translation>下一个：第 {row} 行</translation>
+    </message>
+    <message>
+        <source>No result: {reason}</source>
+        <translation>无结果：{reason}</translation>
+    </message>
+    <message>
+        <source>No readings yet.</source>
+        <translation>尚无读数。</translation>
+    </message>
+    <message>
+        <source>The axis is sent to each target position in turn, in runs that approach every target from one direction and then from the other, as logged; the reference instrument reads the actual position reached. The positional deviation is x = actual position − target (ISO 230-2). Per target and direction: the mean x̄, the standard deviation s (n − 1) and the reversal value B_i = x̄↑ − x̄↓; for the axis the figures of the standard applied below, the others beside them. A compensation table for the axis controller is the negative of the mean deviation.</source>
+        <translation>按记录，轴依次运行至各目标位置，各测量循环先从一个方向、再从另一方向趋近每个目标；参考仪器读取实际到达的位置。位置偏差为 x = 实际位置 − 目标位置（ISO 230-2）。对每个目标和方向给出平均值 x̄、标准偏差 s（n − 1）和反向差值 B_i = x̄↑ − x̄↓；对整轴给出下述所采用标准的指标，并列出其他标准的指标。轴控制器的补偿表为平均偏差的负值。</translation>
+    </message>
+    <message>
+        <source>bidirectional accuracy of positioning</source>
+        <extracomment>ISO 230-2 figure → (English name, GB/T 17421.2 name)</extracomment>
+        <translation>双向定位精度</translation>
+    </message>
+    <message>
+        <source>unidirectional accuracy of positioning ↑</source>
+        <translation>单向定位精度 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional accuracy of positioning ↓</source>
+        <translation>单向定位精度 ↓</translation>
+    </message>
+    <message>
+        <source>bidirectional repeatability of positioning</source>
+        <translation>双向重复定位精度</translation>
+    </message>
+    <message>
+        <source>unidirectional repeatability of positioning ↑</source>
+        <translation>单向重复定位精度 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional repeatability of positioning ↓</source>
+        <translation>单向重复定位精度 ↓</translation>
+    </message>
+    <message>
+        <source>bidirectional systematic positional deviation</source>
+        <translation>双向定位系统偏差</translation>
+    </message>
+    <message>
+        <source>unidirectional systematic positional deviation ↑</source>
+        <translation>单向定位系统偏差 ↑</translation>
+    </message>
+    <message>
+        <source>unidirectional systematic positional deviation ↓</source>
+        <translation>单向定位系统偏差 ↓</translation>
+    </message>
+    <message>
+        <source>range of the mean bidirectional positional deviation</source>
+        <translation>平均双向位置偏差范围</translation>
+    </message>
+    <message>
+        <source>reversal value of the axis</source>
+        <translation>反向差值</translation>
+    </message>
+    <message>
+        <source>mean reversal value of the axis</source>
+        <translation>平均反向差值</translation>
+    </message>
+    <message>
+        <source>position uncertainty</source>
+        <translation>位置不确定度</translation>
+    </message>
+    <message>
+        <source>largest position scatter</source>
+        <translation>最大位置分散</translation>
+    </message>
+    <message>
+        <source>position deviation</source>
+        <translation>位置偏差</translation>
+    </message>
+    <message>
+        <source>largest reversal span</source>
+        <translation>最大反向差</translation>
+    </message>
+    <message>
+        <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
+        <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
+    </message>
+    <message>
+        <source>target(s) {targets} backward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
+        <translation>目标 {targets} 反向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>Repeatability of the mean (s/√n)</source>
+        <translation>平均值的重复性（s/√n）</translation>
+    </message>
+    <message>
+        <source>s of the runs at each target and direction, n = {n}; ν of the fewest runs</source>
+        <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
+    </message>
+    <message>
+        <source>forward {n}</source>
+        <translation>正向 {n}</translation>
+    </message>
+    <message>
+        <source>backward {n}</source>
+        <translation>反向 {n}</translation>
+    </message>
+    <message>
+        <source>Standard applied</source>
+        <translation>采用标准</translation>
+    </message>
+    <message>
+        <source>Targets</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>Readings</source>
+        <translation>读数</translation>
+    </message>
+    <message>
+        <source>Fewest runs at a target</source>
+        <translation>目标位置上的最少测量次数</translation>
+    </message>
+    <message>
+        <source>fewer than {n}: flagged</source>
+        <translation>少于 {n}：已标注</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>检测</translation>
+    </message>
+    <message>
+        <source>Item</source>
+        <translation>项目</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>说明</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>目标位置</translation>
+    </message>
+    <message>
+        <source>Results per target ({unit}; target in {target})</source>
+        <translation>各目标位置结果（{unit}；目标位置单位 {target}）</translation>
+    </message>
+    <message>
+        <source>x = actual position − target. U is the expanded uncertainty of the mean x̄.</source>
+        <translation>x = 实际位置 − 目标位置。U 为平均值 x̄ 的扩展不确定度。</translation>
+    </message>
+    <message>
+        <source>mean positional deviation</source>
+        <translation>平均位置偏差</translation>
+    </message>
+    <message>
+        <source>targets and directions</source>
+        <translation>各目标位置和方向</translation>
+    </message>
+    <message>
+        <source>Figures of the axis</source>
+        <translation>轴线定位指标</translation>
+    </message>
+    <message>
+        <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
+        <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
+    </message>
+    <message>
+        <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range); a specification of A, R or P is read against the figures above.</source>
+        <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
+    </message>
+    <message>
+        <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
+        <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
+    </message>
+    <message>
+        <source>target {target} ({arrow})</source>
+        <translation>目标位置 {target}（{arrow}）</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>Typing a row and pressing Return fills the next row&apos;s nominal value with this step (0: off) and moves to its first reading</source>
+        <translation>输入一行并按回车后，按此步距填写下一行的名义值（0：关闭），并移到该行的第一个读数</translation>
+    </message>
+    <message>
+        <source>Set-up</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>figure</source>
+        <translation>结果项</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>数值</translation>
+    </message>
+    <message>
+        <source>next {column} +</source>
+        <translation>下一个 {column} +</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>系统语言</translation>
+    </message>
+    <message>
+        <source>Phase estimated from the signals (no phase reference): the offsets, the amplitude ratio and the quadrature error are identified from the Lissajous ellipse (Heydemann); the harmonics are fitted against the estimated phase, so only the part of their distortion that bends the Lissajous figure is seen — a pure phase distortion of the grating leaves the figure round and is not observable without a phase reference.</source>
+        <extracomment>the settings that are inputs of the certificate&apos;s budget (FringeResult.inputs) Channel voltages beyond this are not a read head&apos;s signals. A fit of the channels against the phase below this R² means the phase is wrong.</extracomment>
+        <translation>相位由信号估计（无相位基准）：直流偏置、幅值比和正交误差由李萨如椭圆辨识（Heydemann）；谐波按估计的相位拟合，因此只能看到其畸变中使李萨如图形弯曲的部分——光栅的纯相位畸变使图形仍为圆形，没有相位基准时无法观测。</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{key}&apos;: {u} V is not a read head&apos;s signal (beyond ±{signal_limit_v} V)</source>
+        <translation>第 {row} 行，列 &apos;{key}&apos;：{u} V 不是读数头的信号（超出 ±{signal_limit_v} V）</translation>
+    </message>
+    <message>
+        <source>channel {key} is constant ({u} V): not a fringe signal</source>
+        <translation>通道 {key} 为常数（{u} V）：不是莫尔条纹信号</translation>
+    </message>
+    <message>
+        <source>the two channels are the same signal (correlation {corr}): they must be in quadrature (sine and cosine)</source>
+        <translation>两个通道是同一信号（相关系数 {corr}）：它们必须正交（正弦和余弦）</translation>
+    </message>
+    <message>
+        <source>not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)</source>
+        <translation>不是莫尔条纹信号：李萨如图（u_sin, u_cos）中{exc}</translation>
+    </message>
+    <message>
+        <source>the channels are not in quadrature: their phases differ by {value}°, not about 90°</source>
+        <translation>两通道不正交：相位差为 {value}°，而不是约 90°</translation>
+    </message>
+    <message>
+        <source>not a fringe signal: the Lissajous figure is not a ring (its radius scatters by {value} %); noise, or two unrelated channels</source>
+        <translation>不是莫尔条纹信号：李萨如图不是圆环（半径分散 {value} %）；可能是噪声，或两个不相关的通道</translation>
+    </message>
+    <message>
+        <source>The θ column was not used: samples per period N was given.</source>
+        <translation>未使用 θ 列：已给出每周期采样数 N。</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;theta_deg&apos;: blank while other rows have a phase; fill it, or clear the column to estimate the phase from the signals</source>
+        <translation>第 {row} 行，列 &apos;theta_deg&apos;：为空，而其他行有相位；请填写，或清空该列以由信号估计相位</translation>
+    </message>
+    <message>
+        <source>every θ is {theta_col}°: the phase did not change</source>
+        <translation>所有 θ 均为 {theta_col}°：相位没有变化</translation>
+    </message>
+    <message>
+        <source>{size} samples; at least {value} are needed</source>
+        <translation>{size} 个采样点；至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>
+        <translation>信号仅覆盖一个周期的 {value} %：少于四分之三个周期无法估计相位</translation>
+    </message>
+    <message>
+        <source>the particle swarm (the seed&apos;s method) fits orders 1, 3, 5 only</source>
+        <translation>粒子群法（原文方法）只拟合 1、3、5 次</translation>
+    </message>
+    <message>
+        <source>Particle swarm on the first period: cost {cost} V² against {lsq} V² for least squares, {seconds} s.</source>
+        <translation>第一个周期上的粒子群算法：代价 {cost} V²，最小二乘为 {lsq} V²，耗时 {seconds} s。</translation>
+    </message>
+    <message>
+        <source>N = {n} samples per period</source>
+        <translation>每周期 N = {n} 个采样点</translation>
+    </message>
+    <message>
+        <source>the θ column</source>
+        <translation>θ 列</translation>
+    </message>
+    <message>
+        <source>the signals do not follow {given} (R² {r_squared} sin, {r_squared2} cos): leave the samples per period and the θ column out to estimate the phase from the signals</source>
+        <translation>信号与{given}不符（R²：sin {r_squared}，cos {r_squared2}）：不填每周期采样点数和 θ 列，即可由信号估计相位</translation>
+    </message>
+    <message>
+        <source>against this phase the cos channel leads the sin channel by {lead}°, not about 90°: the channels are in the wrong order or one is inverted (check the columns, or the sense of θ)</source>
+        <translation>按此相位，cos 通道超前 sin 通道 {lead}°，而不是约 90°：通道顺序错误或其中一路反相（请检查各列或 θ 的方向）</translation>
+    </message>
+    <message>
+        <source>max_order must be at least 1</source>
+        <translation>max_order 至少为 1</translation>
+    </message>
+    <message>
+        <source>phase from equal steps, {n} samples per period</source>
+        <translation>相位取自等间隔采样，每周期 {n} 个</translation>
+    </message>
+    <message>
+        <source>phase from the θ column</source>
+        <translation>相位取自 θ 列</translation>
+    </message>
+    <message>
+        <source>phase estimated from the signals</source>
+        <translation>相位由信号估计</translation>
+    </message>
+    <message>
+        <source>L = {lines} (period {period})</source>
+        <translation>L = {lines}（周期 {period}）</translation>
+    </message>
+    <message>
+        <source>period {period} nm</source>
+        <translation>周期 {period} nm</translation>
+    </message>
+    <message>
+        <source>{n} samples, {source}, {scale}, fitted by least squares</source>
+        <translation>{n} 个采样，{source}，{scale}，最小二乘拟合</translation>
+    </message>
+    <message>
+        <source>{n} samples, {source}, {scale}, fitted by PSO</source>
+        <translation>{n} 个采样，{source}，{scale}，粒子群拟合</translation>
+    </message>
+    <message>
+        <source>; the motion reversed {count} time(s)</source>
+        <translation>；运动反向 {count} 次</translation>
+    </message>
+    <message>
+        <source>Offsets {sin} / {cos} mV, amplitude ratio {ratio}, quadrature error {quadrature}°</source>
+        <translation>直流偏置 {sin} / {cos} mV，幅值比 {ratio}，正交误差 {quadrature}°</translation>
+    </message>
+    <message>
+        <source>Interpolation error as found: {low} … {high} (peak-to-peak {ptp}, {share} % of a period)</source>
+        <translation>补偿前细分误差：{low} … {high}（峰峰值 {ptp}，一个周期的 {share} %）</translation>
+    </message>
+    <message>
+        <source>After compensation ({entries}-entry table, zero at its mean): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
+        <translation>补偿后（{entries} 项修正表，以平均值为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
+    </message>
+    <message>
+        <source>After compensation ({entries}-entry table, zero at its phase 0): {low} … {high} (peak-to-peak {ptp}, {share} %)</source>
+        <translation>补偿后（{entries} 项修正表，以相位 0 处为零）：{low} … {high}（峰峰值 {ptp}，{share} %）</translation>
+    </message>
+    <message>
+        <source>Correction table, {n} entries (C header)</source>
+        <translation>修正表，{n} 项（C 头文件）</translation>
+    </message>
+    <message>
+        <source>Correction table, {n} entries (CSV)</source>
+        <translation>修正表，{n} 项（CSV）</translation>
+    </message>
+    <message>
+        <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
+        <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
+    </message>
+    <message>
+        <source>closure limit table must be text like &apos;0.125, 0.25, …&apos;, not {name__}</source>
+        <extracomment>Autocollimator readings and face deviations beyond this are not readings of a polygon test.</extracomment>
+        <translation>闭合差限值表必须是形如 &apos;0.125, 0.25, …&apos; 的文本，而不是 {name__}</translation>
+    </message>
+    <message>
+        <source>closure limit table: {len} entries for 7 grades</source>
+        <translation>闭合差限值表：7 个等级却有 {len} 项</translation>
+    </message>
+    <message>
+        <source>closure limit table: &apos;{part}&apos; (grade {g}) is not a number</source>
+        <translation>闭合差限值表：&apos;{part}&apos;（{g} 级）不是数字</translation>
+    </message>
+    <message>
+        <source>closure limit for grade {g} must be a positive number</source>
+        <translation>{g} 级的闭合差限值必须为正数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{key}&apos;: {values}&quot; is beyond ±{reading_limit_arcsec}&quot; and cannot be a reading of a polygon test</source>
+        <translation>第 {row} 行，列 &apos;{key}&apos;：{values}&quot; 超出 ±{reading_limit_arcsec}&quot;，不可能是多面棱体检测的读数</translation>
+    </message>
+    <message>
+        <source>rows {row}–{row2}: all encoder readings are {a}°: the encoder did not turn</source>
+        <translation>第 {row}–{row2} 行：编码器读数均为 {a}°：编码器没有转动</translation>
+    </message>
+    <message>
+        <source>counting with the face numbering</source>
+        <translation>与面序号同向计数</translation>
+    </message>
+    <message>
+        <source>counting against the face numbering</source>
+        <translation>与面序号反向计数</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, relative to the set&apos;s first reading); a polygon test needs every reading within {tolerance}° of its face</source>
+        <translation>第 {row} 行：编码器读数 {reading}° 与第 {face} 面相差 {off}°（{sense}，相对于该测回的第一个读数）；多面棱体检测要求每个读数与其面相差不超过 {tolerance}°</translation>
+    </message>
+    <message>
+        <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
+        <translation>{set}：未注明方向且编码器步进有正有反：按正向处理。</translation>
+    </message>
+    <message>
+        <source>{faces} positions; a polygon test needs at least 3 faces</source>
+        <translation>{faces} 个位置；多面棱体检测至少需要 3 个面</translation>
+    </message>
+    <message>
+        <source>set {set_id} (from row {row}) has positions {tolist}; expected 1…{faces} once each, in any order, then the first position again for the closure</source>
+        <translation>第 {set_id} 测回（自第 {row} 行起）的位置为 {tolist}；应为 1…{faces} 各一次（顺序不限），再回到第一个位置以检查闭合</translation>
+    </message>
+    <message>
+        <source>The encoder counts against the face numbering (detected from the readings): face angles and deviations are taken in the encoder&apos;s counting sense.</source>
+        <translation>编码器计数方向与面号相反（由读数判断）：面角和偏差按编码器的计数方向取值。</translation>
+    </message>
+    <message>
+        <source>The encoder counts against the face numbering: face angles and deviations are taken in the encoder&apos;s counting sense.</source>
+        <translation>编码器计数方向与面号相反：面角和偏差按编码器的计数方向取值。</translation>
+    </message>
+    <message>
+        <source>set {set}</source>
+        <translation>第 {set} 测回</translation>
+    </message>
+    <message>
+        <source>row {row}: {label} starts {off}° away from the first set&apos;s encoder zero; all sets must share one zero</source>
+        <translation>第 {row} 行：{label} 的起点与第一测回的编码器零位相差 {off}°；所有测回必须共用一个零位</translation>
+    </message>
+    <message>
+        <source>row {row}: the closure reading is {back}° from the set&apos;s first reading on face {int}</source>
+        <translation>第 {row} 行：闭合读数与该测回在第 {int} 面上的第一个读数相差 {back}°</translation>
+    </message>
+    <message>
+        <source>{n} usable readings; a polygon test needs at least 3 positions</source>
+        <translation>{n} 个可用读数；多面棱体检测至少需要 3 个位置</translation>
+    </message>
+    <message>
+        <source>zero_face must be 0 (the first reading) or a face 1…{faces}, not {s}</source>
+        <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
+    </message>
+    <message>
+        <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon&apos;s axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
+        <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
+    </message>
+    <message>
+        <source>worst case over the tilt direction; the ω = 90° figure of Tian et al. 2015 is {seed}</source>
+        <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
+    </message>
+    <message>
+        <source>Tilt not identified (no vertical readings).</source>
+        <translation>未辨识倾斜（没有垂直读数）。</translation>
+    </message>
+    <message>
+        <source>vertical along the polygon&apos;s axis, worst case over the tilt direction</source>
+        <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
+    </message>
+    <message>
+        <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
+        <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
+    </message>
+    <message>
+        <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
+        <translation>{faces} 面棱体，{sets} 组，{grade} 级（{accuracy}）</translation>
+    </message>
+    <message>
+        <source>, encoder counting against the face numbering</source>
+        <translation>，编码器计数方向与面号相反</translation>
+    </message>
+    <message>
+        <source>; zero: face {face} of set 1</source>
+        <translation>；零位：第 1 组第 {face} 面</translation>
+    </message>
+    <message>
+        <source>   *** RUN INVALID: closure failed ***</source>
+        <translation>   *** 测量无效：闭合不合格 ***</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>drift {drift} ok</source>
+        <translation>漂移 {drift}，合格</translation>
+    </message>
+    <message>
+        <source>drift {drift} FAILED</source>
+        <translation>漂移 {drift}，不合格</translation>
+    </message>
+    <message>
+        <source>no tilt</source>
+        <translation>无倾斜数据</translation>
+    </message>
+    <message>
+        <source>  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; pyramidal correction up to {largest}</source>
+        <translation>  第 {set} 组（{sense}，自第 {face} 面）：闭合 {closure}；{tilt}；棱锥误差修正最大 {largest}</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} met (rule: half the peak-to-peak ≤ accuracy)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} NOT met (rule: half the peak-to-peak ≤ accuracy)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：不符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
+    </message>
+    <message>
+        <source>Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}</source>
+        <translation>谐波：1 次（偏心）{first}，2 次（椭圆度）{second}</translation>
+    </message>
+    <message>
+        <source>JJF 1115: division error {value}</source>
+        <translation>JJF 1115：分度误差 {value}</translation>
+    </message>
+    <message>
+        <source>, repeatability {value}</source>
+        <translation>，重复性 {value}</translation>
+    </message>
+    <message>
+        <source>, repeatability not evaluated (no direction was measured twice)</source>
+        <translation>，未评定重复性（没有任何方向测量两次）</translation>
+    </message>
+    <message>
+        <source>RUN INVALID: closure failed. </source>
+        <translation>测量无效：闭合不合格。</translation>
+    </message>
+    <message>
+        <source>Grade {grade} (±{accuracy}) met: corrected error peak-to-peak {ptp}; </source>
+        <translation>符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
+    </message>
+    <message>
+        <source>Grade {grade} (±{accuracy}) NOT met: corrected error peak-to-peak {ptp}; </source>
+        <translation>不符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
+    </message>
+    <message>
+        <source>tilt within the allowed</source>
+        <translation>倾斜在允许范围内</translation>
+    </message>
+    <message>
+        <source>the tilt&apos;s error is corrected in these figures (for the set-up stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — re-seat the polygon before the next run</source>
+        <translation>上述结果已修正塔差引起的误差（按所述安置）。安置：倾斜 ψ = {psi}，超过允许的 {allowed}——下次测量前请重新安装棱体</translation>
+    </message>
+    <message>
+        <source>Set {number}</source>
+        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
+        <translation>第 {number} 组</translation>
+    </message>
+    <message>
+        <source>at least 4 vertical readings are needed to identify the tilt</source>
+        <extracomment>The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis).</extracomment>
+        <translation>辨识塔差至少需要 4 个竖直读数</translation>
+    </message>
+    <message>
+        <source>the vertical reading is highest at face {high} and lowest at face {low} (spread 2ψ = {spread}): tilt the polygon on its seat so that face {high} comes down and face {low} up by about {psi} each</source>
+        <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
+    </message>
+    <message>
+        <source>{set}: closure drift {drift} exceeds the limit ±{limit}: the set is invalid; repeat it.</source>
+        <translation>{set}：闭合漂移 {drift} 超过限值 ±{limit}：该组无效，请重测。</translation>
+    </message>
+    <message>
+        <source>{set}: no closure reading (the row back on its start face): drift not checked.</source>
+        <translation>{set}：没有闭合读数（回到起始面的那一行）：未检查漂移。</translation>
+    </message>
+    <message>
+        <source>{set}: vertical readings missing: pyramidal error not identified or removed.</source>
+        <translation>{set}：缺少垂直读数：未辨识也未扣除棱锥误差。</translation>
+    </message>
+    <message>
+        <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
+        <extracomment>the settings that are inputs of the certificate&apos;s budget (PositioningResult.inputs) A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
+        <translation>deviation_unit {s} 适用于以 {belongs} 为单位的轴，但 target_unit 为 {s2}：deg 请选 arcsec 或 urad，mm 请选 um 或 nm</translation>
+    </message>
+    <message>
+        <source>row {row}: neither a deviation nor a measured position; one of the two is needed</source>
+        <translation>第 {row} 行：既无偏差也无实测位置；两者至少需要一个</translation>
+    </message>
+    <message>
+        <source>row {row}: deviation {deviation} but measured − target = {from_measured} ({s}): give one of the two, or make them agree</source>
+        <translation>第 {row} 行：偏差为 {deviation}，但 实测 − 目标 = {from_measured}（{s}）：请只给出其一，或使两者一致</translation>
+    </message>
+    <message>
+        <source>row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} {s2}): check the deviation unit, or whether a position was typed as a deviation</source>
+        <translation>第 {row} 行：偏差 {out} {s} 超出 {limit} {s}（{deviation_limit} {s2}）：请检查偏差单位，或是否把位置填成了偏差</translation>
+    </message>
+    <message>
+        <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
+        <translation>{count} 个读数未注明趋近方向：按目标位置的顺序确定（重复的目标位置即为一次测量的折返点）。</translation>
+    </message>
+    <message>
+        <source>rows {row} and {row2}: target {key}, run {key2}, direction {value} twice</source>
+        <translation>第 {row} 行和第 {row2} 行：目标 {key}、第 {key2} 次测量、方向 {value} 重复出现</translation>
+    </message>
+    <message>
+        <source>row {row}: no run number, though other rows have one; give every row its run, or none</source>
+        <translation>第 {row} 行：没有测量序号，而其他行有；请为每一行给出序号，或全都不给</translation>
+    </message>
+    <message>
+        <source>{n} usable readings; a positioning test needs at least two targets</source>
+        <translation>{n} 个可用读数；定位检测至少需要两个目标位置</translation>
+    </message>
+    <message>
+        <source>row {row}: target {targets} {s} is beyond ±{limit} {s}: not a position of an axis</source>
+        <translation>第 {row} 行：目标 {targets} {s} 超出 ±{limit} {s}：不是轴的位置</translation>
+    </message>
+    <message>
+        <source>every reading is at target {targets}: a positioning test needs at least two targets</source>
+        <translation>所有读数都在目标 {targets}：定位检测至少需要两个目标位置</translation>
+    </message>
+    <message>
+        <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
+        <translation>目标位置 {targets} 没有正向读数：正向结果不包括这些位置。</translation>
+    </message>
+    <message>
+        <source>No backward reading at target(s) {targets}: the backward figures leave them out.</source>
+        <translation>目标位置 {targets} 没有反向读数：反向结果不包括这些位置。</translation>
+    </message>
+    <message>
+        <source>forward {runs}</source>
+        <translation>正向 {runs} 次</translation>
+    </message>
+    <message>
+        <source>backward {runs}</source>
+        <translation>反向 {runs} 次</translation>
+    </message>
+    <message>
+        <source>Fewer runs than ISO 230-2 asks (5 in each direction at every target): {runs} at the least measured target. Evaluated, and flagged as the standard requires.</source>
+        <translation>测量次数少于 ISO 230-2 的要求（每个目标位置每个方向 5 次）：测量最少的目标位置为 {runs}。已评定，并按标准要求加以标注。</translation>
+    </message>
+    <message>
+        <source>One approach direction only: the unidirectional figures are given; B, M, the bidirectional R and A, and VDI/DGQ 3441 U and P need both directions and are not evaluated.</source>
+        <translation>只有一个趋近方向：给出单向结果；B、M、双向 R 和 A 以及 VDI/DGQ 3441 的 U 和 P 需要两个方向，未评定。</translation>
+    </message>
+    <message>
+        <source>No target was approached twice in the same direction: repeatability (R), accuracy (A) and the position scatter Ps are not evaluated.</source>
+        <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>正向</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <source>forward ≥ {runs}</source>
+        <translation>正向 ≥ {runs}</translation>
+    </message>
+    <message>
+        <source>backward ≥ {runs}</source>
+        <translation>反向 ≥ {runs}</translation>
+    </message>
+    <message>
+        <source>{targets} targets {first}…{last}, {readings} readings, {directions} (runs per target: {runs})</source>
+        <translation>{targets} 个目标位置 {first}…{last}，{readings} 个读数，{directions}（每个目标位置的测量次数：{runs}）</translation>
+    </message>
+    <message>
+        <source>   *** fewer than 5 runs: flagged ***</source>
+        <translation>   *** 少于 5 次测量：已标注 ***</translation>
+    </message>
+    <message>
+        <source>Standard applied: {standard}. Compensation = −mean deviation (Export compensation table… below the set-up).</source>
+        <translation>采用的标准：{standard}。补偿值 = −平均偏差（设置下方的“导出补偿表…”）。</translation>
+    </message>
+    <message>
+        <source> — fewer than 5 runs: flagged</source>
+        <translation> — 少于 5 次测量：已标注</translation>
+    </message>
+    <message>
+        <source>{n} usable readings; at least 4 are needed</source>
+        <translation>{n} 个可用读数；至少需要 4 个</translation>
+    </message>
+    <message>
+        <source>reference row {reference} is blank, unreadable or missing</source>
+        <translation>参考行 {reference} 为空、无法读取或不存在</translation>
+    </message>
+    <message>
+        <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
+        <translation>由俯仰角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
+    </message>
+    <message>
+        <source>Set-up identified from the azimuth readings ({n} points, reference θ = {theta}°):</source>
+        <translation>由方位角读数辨识的安装误差（{n} 个点，参考 θ = {theta}°）：</translation>
+    </message>
+    <message>
+        <source>  axis tilt       ψ = {value}° ± {u}</source>
+        <translation>  轴系倾斜       ψ = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  tilt direction  α = {value}° ± {u}</source>
+        <translation>  倾斜方向       α = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  mirror normal   β = {value}° ± {u}</source>
+        <translation>  反射镜法线     β = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  R² = {r2}, residual RMS = {rms}</source>
+        <translation>  R² = {r2}，残差均方根 = {rms}</translation>
+    </message>
+    <message>
+        <source>Raw error        {low} … {high} (peak-to-peak {ptp})</source>
+        <translation>原始误差         {low} … {high}（峰峰值 {ptp}）</translation>
+    </message>
+    <message>
+        <source>Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})</source>
+        <translation>修正后误差       {low} … {high}（峰峰值 {ptp}，均方根 {rms}）</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）；安装误差对原始峰峰值的贡献为 {share}</translation>
+    </message>
+    <message>
+        <source>at least 4 readings are needed to identify ψ, α, β</source>
+        <translation>辨识 ψ、α、β 至少需要 4 个读数</translation>
+    </message>
+    <message>
+        <source>the elevations fit no set-up (sin E is not of the form a + b cos θ + c sin θ with |a|, |b|, |c| ≤ 1): check the elevation column</source>
+        <translation>仰角读数与任何安装状态都不符（sin E 不具有 a + b cos θ + c sin θ 且 |a|、|b|、|c| ≤ 1 的形式）：请检查仰角列</translation>
+    </message>
+    <message>
+        <source>no set-up with ψ ≤ {psi_max_deg}° and |β| ≤ {beta_max_deg}° fits the elevations</source>
+        <translation>没有 ψ ≤ {psi_max_deg}° 且 |β| ≤ {beta_max_deg}° 的安装状态与仰角读数相符</translation>
+    </message>
+    <message>
+        <source>no admissible set-up fits the azimuth errors</source>
+        <translation>没有可接受的安装状态与方位误差相符</translation>
+    </message>
+    <message>
+        <source>Identified from the azimuth errors: any part of the axis&apos; own error that looks like the set-up model (a scale error, say) is absorbed and removed from the result.</source>
+        <translation>由方位角误差辨识：轴系自身误差中与安装误差模型相似的部分（例如比例误差）会被吸收并从结果中扣除。</translation>
+    </message>
+    <message>
+        <source>{first} and {second} cannot be separated on this range (correlation {r}); widen the range of θ.</source>
+        <translation>在此范围内 {first} 与 {second} 无法分离（相关系数 {r}）；请扩大 θ 的范围。</translation>
+    </message>
+    <message>
+        <source>Some parameters are not determined by these readings (singular fit).</source>
+        <translation>这些读数无法确定部分参数（拟合奇异）。</translation>
+    </message>
+    <message>
+        <source>all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn between readings</source>
+        <translation>所有 θ 相等（{theta}°）：无法辨识安装状态；读数之间轴必须转动</translation>
+    </message>
+    <message>
+        <source>{size} distinct θ; at least 4 are needed to identify ψ, α, β</source>
+        <translation>只有 {size} 个不同的 θ；辨识 ψ、α、β 至少需要 4 个</translation>
+    </message>
+    <message>
+        <source>θ spans only {ptp}°: too little rotation to identify the set-up</source>
+        <translation>θ 仅跨 {ptp}°：转角过小，无法辨识安装状态</translation>
+    </message>
+    <message>
+        <source>reference row {value} is outside the {size} readings</source>
+        <translation>参考行 {value} 不在 {size} 个读数之内</translation>
+    </message>
+    <message>
+        <source>unknown identification method &apos;{method}&apos;</source>
+        <translation>未知的辨识方法 &apos;{method}&apos;</translation>
+    </message>
+    <message>
+        <source>Residual RMS {rms} is more than three times the theodolite accuracy {accuracy}: check the readings and the set-up.</source>
+        <translation>残差均方根 {rms} 超过经纬仪准确度 {accuracy} 的三倍：请检查读数和安装。</translation>
+    </message>
+    <message>
+        <source>usage: </source>
+        <extracomment>``system`` follows the environment&apos;s locale argparse&apos;s own words (its help&apos;s headings and its refusals of a command line), for the translators: argparse looks them up through gettext; ``speaking`` hands them to our catalogue instead</extracomment>
+        <translation>用法：</translation>
+    </message>
+    <message>
+        <source>positional arguments</source>
+        <translation>位置参数</translation>
+    </message>
+    <message>
+        <source>options</source>
+        <translation>选项</translation>
+    </message>
+    <message>
+        <source>show this help message and exit</source>
+        <translation>显示此帮助信息并退出</translation>
+    </message>
+    <message>
+        <source>the following arguments are required: %s</source>
+        <translation>缺少以下参数：%s</translation>
+    </message>
+    <message>
+        <source>unrecognized arguments: %s</source>
+        <translation>无法识别的参数：%s</translation>
+    </message>
+    <message>
+        <source>argument %(argument_name)s: %(message)s</source>
+        <translation>参数 %(argument_name)s：%(message)s</translation>
+    </message>
+    <message>
+        <source>invalid choice: %(value)r (choose from %(choices)s)</source>
+        <translation>无效的选项：%(value)r（可选 %(choices)s）</translation>
+    </message>
+    <message>
+        <source>invalid %(type)s value: %(value)r</source>
+        <translation>无效的 %(type)s 值：%(value)r</translation>
+    </message>
+    <message>
+        <source>expected one argument</source>
+        <translation>需要一个参数值</translation>
+    </message>
+    <message>
+        <source>expected at most one argument</source>
+        <translation>最多需要一个参数值</translation>
+    </message>
+    <message>
+        <source>expected at least one argument</source>
+        <translation>至少需要一个参数值</translation>
+    </message>
+    <message>
+        <source>ambiguous option: %(option)s could match %(matches)s</source>
+        <translation>有歧义的选项：%(option)s 可匹配 %(matches)s</translation>
+    </message>
+    <message>
+        <source>ignored explicit argument %r</source>
+        <translation>忽略了明确给出的参数值 %r</translation>
+    </message>
+    <message>
+        <source>not allowed with argument %s</source>
+        <translation>不能与参数 %s 同时使用</translation>
+    </message>
+    <message>
+        <source>one of the arguments %s is required</source>
+        <translation>必须给出参数 %s 之一</translation>
+    </message>
+    <message>
+        <source>unknown parser %(parser_name)r (choices: %(choices)s)</source>
+        <translation>未知的子命令 %(parser_name)r（可选：%(choices)s）</translation>
+    </message>
+    <message>
+        <source>language of what the command prints (zh_CN: Simplified Chinese; system, the default: the system&apos;s locale); JSON, CSV and the files written keep their English keys</source>
+        <translation>命令输出所用的语言（zh_CN：简体中文；system，默认：跟随系统区域设置）；JSON、CSV 及写出的文件保留其英文键名</translation>
+    </message>
+    <message>
+        <source>Analyse a readings file</source>
+        <translation>分析读数文件</translation>
+    </message>
+    <message>
+        <source>the workbench</source>
+        <translation>工作台</translation>
+    </message>
+    <message>
+        <source>the readings (CSV, TSV, XLSX)</source>
+        <translation>读数文件（CSV、TSV、XLSX）</translation>
+    </message>
+    <message>
+        <source>print JSON instead of a summary</source>
+        <translation>输出 JSON 而不是摘要</translation>
+    </message>
+    <message>
+        <source>also write a test certificate</source>
+        <translation>同时写出校准证书</translation>
+    </message>
+    <message>
+        <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
+        <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
+    </message>
+    <message>
+        <source>also write the results per point (with U) as CSV or XLSX</source>
+        <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
+    </message>
+    <message>
+        <source>which of the file&apos;s headers holds which column, when the headers are not recognised, e.g. theta_deg=转角,azimuth_deg=方位角</source>
+        <translation>表头无法识别时，指定文件中哪个表头对应哪一列，例如 theta_deg=转角,azimuth_deg=方位角</translation>
+    </message>
+    <message>
+        <source>also write the workbench&apos;s correction table: fringe (CSV, or a C header for OUT.h), positioning (compensation table; --compensation-format, --compensation-step, --compensation-tables)</source>
+        <translation>同时写出工作台的修正表：fringe（CSV；OUT.h 时为 C 头文件），positioning（补偿表；见 --compensation-format、--compensation-step、--compensation-tables）</translation>
+    </message>
+    <message>
+        <source>angle unit of the printed summary and of --results (arcsec, urad or mdeg); JSON and certificates keep the unit of the evaluation</source>
+        <translation>输出摘要及 --results 所用的角度单位（arcsec、urad 或 mdeg）；JSON 和证书保持评定所用的单位</translation>
+    </message>
+    <message>
+        <source>positioning: the log measured after compensation (analysed with the same settings); prints A, B, E, M, R before → after (JSON: before_after)</source>
+        <translation>positioning：补偿后测得的记录（以相同设置评定）；输出 A、B、E、M、R 补偿前 → 补偿后（JSON：before_after）</translation>
+    </message>
+    <message>
+        <source>theodolite: the vertical column is the zenith angle V (same as --vertical-reading zenith)</source>
+        <translation>theodolite：竖直列为天顶距 V（同 --vertical-reading zenith）</translation>
+    </message>
+    <message>
+        <source>{kind}: {label}{choices}. {help}</source>
+        <translation>{kind}：{label}{choices}。{help}</translation>
+    </message>
+    <message>
+        <source>{flag} applies to {kinds}, not {kind}</source>
+        <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
+        <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --compare-after is for the positioning workbench</source>
+        <translation>anglebench analyze：--compare-after 仅用于定位工作台</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --table: {workbench} has no correction table</source>
+        <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: choose another name</source>
+        <translation>anglebench analyze：{flag} {out} 是输入文件（{clash}）；未写入任何文件：请另选文件名</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {flag} and {twin} name the same file</source>
+        <translation>anglebench analyze：{flag} 和 {twin} 指向同一个文件</translation>
+    </message>
+    <message>
+        <source> (and {n} more bad cell(s))</source>
+        <translation>（另有 {n} 个无法读取的单元格）</translation>
+    </message>
+    <message>
+        <source>{file}: row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>{file}：第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>Warning: {warning}</source>
+        <translation>警告：{warning}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: cannot write {path}: {reason}</source>
+        <translation>anglebench analyze：无法写入 {path}：{reason}</translation>
+    </message>
+    <message>
+        <source>{what} written to {path}</source>
+        <translation>{what}已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{path}: not a JSON file ({reason})</source>
+        <translation>{path}：不是 JSON 文件（{reason}）</translation>
+    </message>
+    <message>
+        <source>{path}: not a certificate&apos;s details (nested too deep or a number too long)</source>
+        <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {reason}; no certificate was written</source>
+        <translation>anglebench analyze：{reason}；未写入证书</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
+        <translation>anglebench analyze：证书 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
+    </message>
+    <message>
+        <source>Certificate {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
+        <translation>证书 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
+    </message>
+    <message>
+        <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
+        <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: cannot write: {reason}</source>
+        <translation>anglebench analyze：无法写入：{reason}</translation>
+    </message>
+    <message>
+        <source>error = indicated − reference (VIM); correction = −error</source>
+        <extracomment>Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction is the negative of an error.</extracomment>
+        <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
+    </message>
+    <message>
+        <source>expanded uncertainty U (k = 2)</source>
+        <extracomment>The coverage probability of k = 2 for a normal distribution (95.45 %).</extracomment>
+        <translation>扩展不确定度 U（k = 2）</translation>
+    </message>
+    <message>
+        <source>maximum permissible error ±a</source>
+        <translation>最大允许误差 ±a</translation>
+    </message>
+    <message>
+        <source>standard uncertainty u</source>
+        <translation>标准不确定度 u</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <extracomment>the distributions a budget&apos;s inputs are given (the names its table prints)</extracomment>
+        <translation>正态</translation>
+    </message>
+    <message>
+        <source>rectangular</source>
+        <translation>矩形</translation>
+    </message>
+    <message>
+        <source>uncertainty basis must be one of {join}, not &apos;{basis}&apos;</source>
+        <translation>不确定度给出方式必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
+    </message>
+    <message>
+        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number</source>
+        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负数</translation>
+    </message>
+    <message>
+        <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
+        <translation>带保护带 w = U 的非二元声明（ILAC-G8:09/2019，4.2.3）：结果在 T − w 以内为合格；在 T 以内为有条件合格；在 T + w 以内为有条件不合格；超出 T + w 为不合格</translation>
+    </message>
+    <message>
+        <source>binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.2): pass when the result lies within T − w, fail otherwise</source>
+        <translation>带保护带 w = U 的二元声明（ILAC-G8:09/2019，4.2.2）：结果在 T − w 以内为合格，否则为不合格</translation>
+    </message>
+    <message>
+        <source>binary statement for simple acceptance, w = 0 (ILAC-G8:09/2019, 4.2.1): pass when the result lies within T, fail otherwise; the risk of a false acceptance reaches 50 % at the limit</source>
+        <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
+    </message>
+    <message>
+        <source>half the peak-to-peak error after the best zero, with its own U and bias from a Monte Carlo simulation of this measurement (JCGM 101)</source>
+        <translation>最佳零位下误差峰峰值的一半，其 U 和偏倚由本次测量的蒙特卡洛模拟得出（JCGM 101）</translation>
+    </message>
+    <message>
+        <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
+        <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
+    </message>
+    <message>
+        <source>pass ≤ {t} &lt; fail</source>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
+        <translation>合格 ≤ {t} &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − w) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − w) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − w) &lt; conditional pass ≤ {t} (T) &lt; conditional fail ≤ {high} (T + w) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − w) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + w) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>The item conforms to the specification ±{t} (pass).</source>
+        <translation>被校对象符合技术要求 ±{t}（合格）。</translation>
+    </message>
+    <message>
+        <source>Conditional pass: the result lies within ±{t} but closer to the limit than the guard band, so conformity is not proven at the stated coverage probability.</source>
+        <translation>有条件合格：结果在 ±{t} 以内，但距限值小于保护带，在所述包含概率下不能证明其符合。</translation>
+    </message>
+    <message>
+        <source>Conditional fail: the result lies beyond ±{t} by less than the guard band, so non-conformity is not proven at the stated coverage probability.</source>
+        <translation>有条件不合格：结果超出 ±{t}，但超出量小于保护带，在所述包含概率下不能证明其不符合。</translation>
+    </message>
+    <message>
+        <source>The item does not conform to the specification ±{t} (fail).</source>
+        <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
+    </message>
+    <message>
+        <source>corrected error</source>
+        <translation>修正后误差</translation>
+    </message>
+    <message>
+        <source>No statement of conformity: {reason}.</source>
+        <translation>不作符合性声明：{reason}。</translation>
+    </message>
+    <message>
+        <source>No statement of conformity: no specification (tolerance) was given.</source>
+        <translation>不作符合性声明：未给出技术要求（允差）。</translation>
+    </message>
+    <message>
+        <source>per point, with w = U of that point: {zones}</source>
+        <translation>逐点判定，w 取该点的 U：{zones}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
+        <translation>{quantity}：{trials} 次试验，随机种子 {seed}，在 {points} 个点中每 {stride} 个取一个</translation>
+    </message>
+    <message>
+        <source>{quantity}: {trials} trials, seed {seed}</source>
+        <translation>{quantity}：{trials} 次试验，随机种子 {seed}</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>为空</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a finite angle</source>
+        <translation>&apos;{text}&apos; 不是有限的角度值</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not an angle; write decimal degrees (12.5) or D°M&apos;S&quot; (12°34&apos;56.7&quot;, 12 34 56.7, 12:34:56.7)</source>
+        <translation>&apos;{text}&apos; 不是角度；请写成十进制度（12.5）或 度°分′秒″（12°34&apos;56.7&quot;、12 34 56.7、12:34:56.7）</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: degrees must be whole when minutes follow</source>
+        <translation>&apos;{text}&apos;：后面有分时，度必须为整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: minutes must be whole when seconds follow</source>
+        <translation>&apos;{text}&apos;：后面有秒时，分必须为整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: minutes {minutes} out of range (0 to 59)</source>
+        <translation>&apos;{text}&apos;：分 {minutes} 超出范围（0 至 59）</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos;: seconds {seconds} out of range (0 to below 60)</source>
+        <translation>&apos;{text}&apos;：秒 {seconds} 超出范围（0 至小于 60）</translation>
+    </message>
+    <message>
+        <source>{source}: row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>{source}：第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{column}&apos;: {reason}</source>
+        <translation>第 {row} 行，列 &apos;{column}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>empty; a value is needed here</source>
+        <translation>为空；此处需要一个值</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a whole number</source>
+        <translation>&apos;{text}&apos; 不是整数</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is out of range for a whole number here</source>
+        <translation>&apos;{text}&apos; 超出此处整数的范围</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not one of {choices}</source>
+        <translation>&apos;{text}&apos; 不是 {choices} 之一</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a number</source>
+        <extracomment>The largest whole number an INTEGER column takes (positions, set numbers …).</extracomment>
+        <translation>&apos;{text}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>&apos;{text}&apos; is not a finite number</source>
+        <translation>&apos;{text}&apos; 不是有限的数</translation>
+    </message>
+    <message>
+        <source>{size} samples; at least {value} are needed for orders {join}</source>
+        <extracomment>each sample&apos;s residual (V) when the fit was made from samples (the plots read it)</extracomment>
+        <translation>{size} 个采样点；拟合 {join} 次谐波至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>the correction table needs at least 8 entries</source>
+        <translation>修正表至少需要 8 项</translation>
+    </message>
+    <message>
+        <source>the signals do not move</source>
+        <translation>信号没有变化</translation>
+    </message>
+    <message>
+        <source>the samples do not make an ellipse (degenerate)</source>
+        <translation>采样点不构成椭圆（退化）</translation>
+    </message>
+    <message>
+        <source>the samples do not make an ellipse</source>
+        <translation>采样点不构成椭圆</translation>
+    </message>
+    <message>
+        <source>{key} must be one of {shown}, not {text}</source>
+        <translation>{key} 必须是 {shown} 之一，而不是 {text}</translation>
+    </message>
+    <message>
+        <source>{flag}: &apos;{text}&apos; is not a whole number</source>
+        <translation>{flag}：&apos;{text}&apos; 不是整数</translation>
+    </message>
+    <message>
+        <source>{flag}: &apos;{text}&apos; is not a number</source>
+        <translation>{flag}：&apos;{text}&apos; 不是数字</translation>
+    </message>
+    <message>
+        <source>{key} must be one of {shown}, not {value}</source>
+        <translation>{key} 必须是 {shown} 之一，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be text, not {name__}</source>
+        <translation>{key} 必须是文本，而不是 {name__}</translation>
+    </message>
+    <message>
+        <source>{key} must be a number, not {value}</source>
+        <translation>{key} 必须是数字，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be a whole number, not {value}</source>
+        <translation>{key} 必须是整数，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>{key} must be {zero}{low} to {high}{value}, not {value2}</source>
+        <translation>{key} 必须在 {zero}{low} 至 {high}{value} 之间，而不是 {value2}</translation>
+    </message>
+    <message>
+        <source>separate tables for the forward and the backward approach</source>
+        <translation>正向和反向趋近各一张表</translation>
+    </message>
+    <message>
+        <source>one table from the bidirectional mean (x_up + x_down)/2</source>
+        <translation>由双向平均值 (x_up + x_down)/2 得出的一张表</translation>
+    </message>
+    <message>
+        <source>forward approach only (the backward was not measured)</source>
+        <translation>仅正向趋近（未测反向）</translation>
+    </message>
+    <message>
+        <source>backward approach only (the forward was not measured)</source>
+        <translation>仅反向趋近（未测正向）</translation>
+    </message>
+    <message>
+        <source>a step of {step} leaves fewer than two points over the targets {positions}…{positions2}</source>
+        <translation>步距 {step} 在目标 {positions}…{positions2} 范围内不足两个点</translation>
+    </message>
+    <message>
+        <source>a step of {step} gives {count} points; at most {max_points}</source>
+        <translation>步距 {step} 得到 {count} 个点；最多 {max_points} 个</translation>
+    </message>
+    <message>
+        <source>uniform step {step}</source>
+        <translation>等步距 {step}</translation>
+    </message>
+    <message>
+        <source>a bidirectional table needs both approach directions; this run has one: export separate tables</source>
+        <translation>双向补偿表需要两个趋近方向；本次测量只有一个：请分别导出</translation>
+    </message>
+    <message>
+        <source>no bidirectional mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有双向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>no forward mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有正向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>no backward mean deviation at target(s) {missing}: a compensation table needs every target</source>
+        <translation>目标 {missing} 处没有反向平均偏差：补偿表需要所有目标位置</translation>
+    </message>
+    <message>
+        <source>LinuxCNC&apos;s compensation file lists the forward and the reverse positions: export separate tables (both directions measured)</source>
+        <translation>LinuxCNC 的补偿文件分列正向和反向位置：请分别导出补偿表（两个方向均已测量）</translation>
+    </message>
+    <message>
+        <source>{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a larger step</source>
+        <translation>{size} 个点；LinuxCNC 每个关节最多 {linuxcnc_max_points} 个：请选择更大的步距</translation>
+    </message>
+    <message>
+        <source>LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points in {unit}</source>
+        <translation>LinuxCNC 补偿文件（COMP_FILE_TYPE = 0），{n} 个点，单位 {unit}</translation>
+    </message>
+    <message>
+        <source>Compensation table, {n} points ({form}, {spacing})</source>
+        <translation>补偿表，{n} 个点（{form}，{spacing}）</translation>
+    </message>
+    <message>
+        <source>{source}: cannot read ({value})</source>
+        <translation>{source}：无法读取（{value}）</translation>
+    </message>
+    <message>
+        <source>{source}: the file holds no rows</source>
+        <translation>{source}：文件中没有数据行</translation>
+    </message>
+    <message>
+        <source>{source}: row {line}: {len} columns; a readings file has at most {max_columns}</source>
+        <translation>{source}：第 {line} 行：{len} 列；读数文件最多 {max_columns} 列</translation>
+    </message>
+    <message>
+        <source>{source}: row {line}, column {col}: a cell of {len} characters is not a reading (at most {max_cell_chars})</source>
+        <translation>{source}：第 {line} 行，第 {col} 列：长 {len} 个字符的单元格不是读数（最多 {max_cell_chars} 个）</translation>
+    </message>
+    <message>
+        <source>{source}: more than {max_rows} rows</source>
+        <translation>{source}：超过 {max_rows} 行</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_num}: cannot read the CSV ({what})</source>
+        <translation>{source}：第 {line_num} 行：无法读取 CSV（{what}）</translation>
+    </message>
+    <message>
+        <source>{source}: not a readable XLSX workbook ({exc})</source>
+        <translation>{source}：不是可读取的 XLSX 工作簿（{exc}）</translation>
+    </message>
+    <message>
+        <source>{source}: reading XLSX needs openpyxl</source>
+        <translation>{source}：读取 XLSX 需要 openpyxl</translation>
+    </message>
+    <message>
+        <source>{source}: the workbook expands to {value} MB, more than the {value2} MB a readings file needs: save the sheet as CSV</source>
+        <translation>{source}：工作簿展开后为 {value} MB，超过读数文件所需的 {value2} MB：请将工作表另存为 CSV</translation>
+    </message>
+    <message>
+        <source>{source}: more than {max_empty_xlsx_rows} empty rows after row {value}: keep the readings in one block (a stray far cell?)</source>
+        <translation>{source}：第 {value} 行之后有超过 {max_empty_xlsx_rows} 个空行：请将读数放在一个连续区域内（远处是否有零散单元格？）</translation>
+    </message>
+    <message>
+        <source>{source}: the workbook&apos;s sheet cannot be read ({exc})</source>
+        <translation>{source}：无法读取工作簿中的工作表（{exc}）</translation>
+    </message>
+    <message>
+        <source>{source}: column mapping names &apos;{wanted}&apos;, which is not a column here ({join})</source>
+        <translation>{source}：列映射中的 &apos;{wanted}&apos; 不是此处的列（{join}）</translation>
+    </message>
+    <message>
+        <source>{source}: column mapping {wanted}={header}: the file has no header &apos;{header}&apos; (its headers: {join})</source>
+        <translation>{source}：列映射 {wanted}={header}：文件中没有表头 &apos;{header}&apos;（其表头为：{join}）</translation>
+    </message>
+    <message>
+        <source>{source}: row 1 (header): no column &apos;{key}&apos;; expected headers {join} (or their names, e.g. {title}{value}); the file&apos;s header is {join2}</source>
+        <extracomment>How far below the top a header is looked for (title, lab and date rows above it).</extracomment>
+        <translation>{source}：第 1 行（表头）：没有列 &apos;{key}&apos;；应有表头 {join}（或其名称，例如 {title}{value}）；文件的表头为 {join2}</translation>
+    </message>
+    <message>
+        <source>unknown angle unit {key}; choose one of {join}</source>
+        <translation>未知的角度单位 {key}；请选择 {join} 之一</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_numbers}, column &apos;{column_key}&apos;: {reason}</source>
+        <translation>{source}：第 {line_numbers} 行，列 &apos;{column_key}&apos;：{reason}</translation>
+    </message>
+    <message>
+        <source>{source}: row {line_numbers}: position {int} appears twice</source>
+        <translation>{source}：第 {line_numbers} 行：位置 {int} 出现两次</translation>
+    </message>
+    <message>
+        <source>{source}: no deviations found</source>
+        <translation>{source}：未找到偏差值</translation>
+    </message>
+    <message>
+        <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
+        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional</extracomment>
+        <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: damaged project file (nested too deep, or a number too long); nothing was changed</source>
+        <translation>{source}：项目文件已损坏（嵌套过深或数字过长）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: not an AngleBench project file</source>
+        <translation>{source}：不是 AngleBench 项目文件</translation>
+    </message>
+    <message>
+        <source>{source}: schema_version is missing or invalid</source>
+        <translation>{source}：schema_version 缺失或无效</translation>
+    </message>
+    <message>
+        <source>{source}: written by a newer AngleBench (schema {version}; this version reads up to {schema_version}). Nothing was changed; update AngleBench to open it.</source>
+        <translation>{source}：由较新版本的 AngleBench 写入（schema {version}；本版本最多读取 {schema_version}）。未作任何更改；请更新 AngleBench 后打开。</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;workbenches&apos; must be an object</source>
+        <translation>{source}：&apos;workbenches&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;metadata&apos; must be an object; nothing was changed</source>
+        <translation>{source}：&apos;metadata&apos; 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;metadata.certificates&apos; must map workbenches to objects; nothing was changed</source>
+        <translation>{source}：&apos;metadata.certificates&apos; 必须将工作台映射为对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos; must be an object</source>
+        <translation>{source}：工作台 &apos;{key}&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: &apos;rows&apos; must be a list of lists</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：&apos;rows&apos; 必须是列表的列表</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: every cell must be text</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：每个单元格都必须是文本</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: &apos;settings&apos; must be an object</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：&apos;settings&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
+        <translation>{where}：原始帧与其 SHA-256 不符（采集后被改动）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos; is not one this version knows; nothing was changed</source>
+        <translation>{source}：本版本不认识工作台 &apos;{key}&apos;；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;, row {i}: {len} cells for {width} columns; nothing was changed</source>
+        <translation>{source}：工作台 &apos;{key}&apos;，第 {i} 行：{width} 列却有 {len} 个单元格；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: workbench &apos;{key}&apos;: {exc}; nothing was changed</source>
+        <translation>{source}：工作台 &apos;{key}&apos;：{exc}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{path}: cannot read ({value})</source>
+        <translation>{path}：无法读取（{value}）</translation>
+    </message>
+    <message>
+        <source>{path}: damaged project file (not UTF-8 text)</source>
+        <translation>{path}：项目文件已损坏（不是 UTF-8 文本）</translation>
+    </message>
+    <message>
+        <source>the number scheme &apos;{scheme}&apos; has no {{seq}}: the register cannot number certificates with it</source>
+        <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
+    </message>
+    <message>
+        <source>register {display_url}: {reason}</source>
+        <extracomment>what the hash chain found changed since issue (checked on opening)</extracomment>
+        <translation>登记册 {display_url}：{reason}</translation>
+    </message>
+    <message>
+        <source>register {display_url}: {exc}</source>
+        <translation>登记册 {display_url}：{exc}</translation>
+    </message>
+    <message>
+        <source>register {display_url} is at schema version {version}, made by a newer AngleBench than {version__} (knows {latest}): open it with that version</source>
+        <translation>登记册 {display_url} 的 schema 版本为 {version}，由比 {version__} 更新的 AngleBench 建立（本版本支持到 {latest}）：请用该版本打开</translation>
+    </message>
+    <message>
+        <source>no free number in scheme &apos;{scheme}&apos;</source>
+        <translation>编号方案 &apos;{scheme}&apos; 中已无可用编号</translation>
+    </message>
+    <message>
+        <source>the next sequence number must be 1 or more</source>
+        <translation>下一个序号必须不小于 1</translation>
+    </message>
+    <message>
+        <source>the register has already allocated up to {format_certificate_number}: it never numbers back</source>
+        <translation>登记册已分配到 {format_certificate_number}：不会回退编号</translation>
+    </message>
+    <message>
+        <source>certificate number {number} was issued on {issued_at} ({workbench}, serial {value}): a number is issued once; leave the number empty and the register allocates the next</source>
+        <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请将编号留空，由登记册分配下一个</translation>
+    </message>
+    <message>
+        <source>{number} was superseded by {superseded_by}: amend or replace that one</source>
+        <translation>{number} 已被 {superseded_by} 取代：请修改或替代后者</translation>
+    </message>
+    <message>
+        <source>no certificate {number} in the register</source>
+        <translation>登记册中没有证书 {number}</translation>
+    </message>
+    <message>
+        <source>a calibration interval is a positive number of days</source>
+        <translation>校准间隔必须是正的天数</translation>
+    </message>
+    <message>
+        <source>Cannot export the compensation table</source>
+        <translation>无法导出补偿表</translation>
+    </message>
+    <message>
+        <source>{what} written</source>
+        <translation>{what}已写入</translation>
+    </message>
+    <message>
+        <source>Angle metrology workbench</source>
+        <translation>角度计量工作台</translation>
+    </message>
+    <message>
+        <source>project file to open</source>
+        <translation>要打开的项目文件</translation>
+    </message>
+    <message>
+        <source>load the bundled samples</source>
+        <translation>载入随附的示例</translation>
+    </message>
+    <message>
+        <source>render every workbench with its sample to DIR/&lt;workbench&gt;.png</source>
+        <translation>将每个工作台连同其示例绘制为 DIR/&lt;workbench&gt;.png</translation>
+    </message>
+    <message>
+        <source>the window&apos;s size for --screenshot, in logical pixels (with QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)</source>
+        <translation>--screenshot 的窗口尺寸，单位为逻辑像素（QT_SCALE_FACTOR=2 时，960x540 即 200 %% 缩放的 1920x1080 屏幕）</translation>
+    </message>
+    <message>
+        <source>the language of --screenshot&apos;s window and of this help (the window itself follows View › Language)</source>
+        <translation>--screenshot 窗口及本帮助所用的语言（窗口本身跟随“视图 › 语言”）</translation>
+    </message>
+    <message>
+        <source>{text}: give the size as WxH, e.g. 1280x720</source>
+        <translation>{text}：请以 WxH 给出尺寸，例如 1280x720</translation>
+    </message>
+    <message>
+        <source>{text}: 320x240 to 8000x8000</source>
+        <translation>{text}：应在 320x240 到 8000x8000 之间</translation>
+    </message>
+    <message>
+        <source>anglebench: the window needs Qt&apos;s X11 libraries; install them with
   sudo apt-get install {packages}</source>
-            <translation>anglebench：窗口需要 Qt 的 X11 库；请用以下命令安装
+        <translation>anglebench：窗口需要 Qt 的 X11 库；请用以下命令安装
   sudo apt-get install {packages}</translation>
-        </message>
-        <message>
-            <source>Platform</source>
-            <extracomment>libraries named besides the register's (models.register.store.LIBRARIES)</extracomment>
-            <translation>平台</translation>
-        </message>
-        <message>
-            <source>pass</source>
-            <extracomment>a decision's verdict and a rule's name, as the report prints them</extracomment>
-            <translation>通过</translation>
-        </message>
-        <message>
-            <source>FAIL</source>
-            <translation>未通过</translation>
-        </message>
-        <message>
-            <source>AngleBench method validation</source>
-            <translation>AngleBench 方法确认</translation>
-        </message>
-        <message>
-            <source>Validation record of the software named below; file it with the method's validation (ISO/IEC 17025 7.2.2).</source>
-            <translation>下列软件的确认记录；请与方法确认一并归档（ISO/IEC 17025 7.2.2）。</translation>
-        </message>
-        <message>
-            <source>Method validation report</source>
-            <translation>方法确认报告</translation>
-        </message>
-        <message>
-            <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed.</source>
-            <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过。</translation>
-        </message>
-        <message>
-            <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed — NOT VALIDATED.</source>
-            <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过 — 未通过确认。</translation>
-        </message>
-        <message>
-            <source>What was checked</source>
-            <translation>检查内容</translation>
-        </message>
-        <message>
-            <source>Case</source>
-            <translation>案例</translation>
-        </message>
-        <message>
-            <source>Source</source>
-            <translation>来源</translation>
-        </message>
-        <message>
-            <source>Expected</source>
-            <translation>预期值</translation>
-        </message>
-        <message>
-            <source>Obtained</source>
-            <translation>所得值</translation>
-        </message>
-        <message>
-            <source>Verdict</source>
-            <translation>结论</translation>
-        </message>
-        <message>
-            <source>Reviewed by</source>
-            <translation>审核</translation>
-        </message>
-        <message>
-            <source>Name, signature and date: {blank}</source>
-            <translation>姓名、签字及日期：{blank}</translation>
-        </message>
-        <message>
-            <source>Run the method validation cases</source>
-            <translation>运行方法确认案例</translation>
-        </message>
-        <message>
-            <source>also write the validation report</source>
-            <translation>同时写出确认报告</translation>
-        </message>
-        <message>
-            <source>simulated runs for each budget comparison (default 200)</source>
-            <translation>每项不确定度评定比较的仿真次数（默认 200）</translation>
-        </message>
-        <message>
-            <source>anglebench validate: --trials must be 100 to 100000</source>
-            <translation>anglebench validate：--trials 应在 100 到 100000 之间</translation>
-        </message>
-        <message>
-            <source>{verdict}  {workbench}: {name} — expected {expected}, obtained {obtained}</source>
-            <translation>{verdict}  {workbench}：{name} — 预期 {expected}，所得 {obtained}</translation>
-        </message>
-        <message>
-            <source>{passed} passed, {failed} failed</source>
-            <translation>{passed} 个通过，{failed} 个未通过</translation>
-        </message>
-        <message>
-            <source>anglebench validate: cannot write {path}: {reason}</source>
-            <translation>anglebench validate：无法写入 {path}：{reason}</translation>
-        </message>
-        <message>
-            <source>Validation report written to {path}</source>
-            <translation>确认报告已写入 {path}</translation>
-        </message>
-        <message>
-            <source>issued</source>
-            <translation>已签发</translation>
-        </message>
-        <message>
-            <source>superseded</source>
-            <translation>已被取代</translation>
-        </message>
-        <message>
-            <source>original</source>
-            <translation>原始</translation>
-        </message>
-        <message>
-            <source>replacement</source>
-            <translation>替代</translation>
-        </message>
-        <message>
-            <source>amendment {n}</source>
-            <translation>第 {n} 次修订</translation>
-        </message>
-        <message>
-            <source>{controller}: {rule} — {detail}</source>
-            <translation>{controller}：{rule} — {detail}</translation>
-        </message>
-        <message>
-            <source>{controller} options: '{part}' is not KEY=VALUE</source>
-            <translation>{controller} 选项：“{part}”不是 KEY=VALUE 形式</translation>
-        </message>
-        <message>
-            <source>{controller} options: unknown option '{key}'; it takes {known}</source>
-            <translation>{controller} 选项：未知选项“{key}”；可用选项为 {known}</translation>
-        </message>
-        <message>
-            <source>{controller} options: {key}={value} is not a number</source>
-            <translation>{controller} 选项：{key}={value} 不是数字</translation>
-        </message>
-        <message>
-            <source>{controller} options: {key}={value} is below {minimum}</source>
-            <translation>{controller} 选项：{key}={value} 小于 {minimum}</translation>
-        </message>
-        <message>
-            <source>equidistant points ({source})</source>
-            <translation>等间距补偿点（{source}）</translation>
-        </message>
-        <message>
-            <source>the points are not equally spaced: choose a compensation step</source>
-            <translation>补偿点间距不相等：请选择补偿步距</translation>
-        </message>
-        <message>
-            <source>the step divides the turn ({source})</source>
-            <translation>步距须整除一整圈（{source}）</translation>
-        </message>
-        <message>
-            <source>a step of {step} does not divide {period}</source>
-            <translation>步距 {step} 不能整除 {period}</translation>
-        </message>
-        <message>
-            <source>one turn ({source})</source>
-            <translation>一整圈（{source}）</translation>
-        </message>
-        <message>
-            <source>the points {first}…{last} run past one turn of {period}</source>
-            <translation>补偿点 {first}…{last} 超出一整圈 {period}</translation>
-        </message>
-        <message>
-            <source>the two ends of the turn differed by {gap} (axis unit): both set to their mean</source>
-            <translation>整圈两端相差 {gap}（轴单位）：两端均取其平均值</translation>
-        </message>
-        <message>
-            <source>the points {first}…{last} do not reach one turn less one step</source>
-            <translation>补偿点 {first}…{last} 未达到一整圈减一个步距</translation>
-        </message>
-        <message>
-            <source>the end of the turn, {end}, takes the value at its start</source>
-            <translation>整圈终点 {end} 取其起点的值</translation>
-        </message>
-        <message>
-            <source>controlled axis number of the parameter tape (A1, A2 …)</source>
-            <translation>参数带中的控制轴号（A1、A2 …）</translation>
-        </message>
-        <message>
-            <source>detection unit in mm or degrees, e.g. 0.001</source>
-            <translation>检测单位，mm 或度，例如 0.001</translation>
-        </message>
-        <message>
-            <source>parameter 3623, pitch error compensation magnification</source>
-            <translation>参数 3623，螺距误差补偿倍率</translation>
-        </message>
-        <message>
-            <source>reference position (machine coordinate); it must be a point of the table</source>
-            <translation>参考点位置（机床坐标）；必须是表中的一个补偿点</translation>
-        </message>
-        <message>
-            <source>parameter 3620 (−1: chosen so that the numbers start at 0 or 1)</source>
-            <translation>参数 3620（−1：自动选取，使编号从 0 或 1 开始）</translation>
-        </message>
-        <message>
-            <source>largest stored value of one point, in detection units</source>
-            <translation>单个补偿点可存储的最大值，以检测单位计</translation>
-        </message>
-        <message>
-            <source>most compensation points of one axis</source>
-            <translation>单轴最多补偿点数</translation>
-        </message>
-        <message>
-            <source>a rotary axis's travel per revolution, e.g. 360 (parameter 3625; 0: linear)</source>
-            <translation>旋转轴每转移动量，例如 360（参数 3625；0：直线轴）</translation>
-        </message>
-        <message>
-            <source>one table ({source})</source>
-            <translation>仅一张表（{source}）</translation>
-        </message>
-        <message>
-            <source>export one table from the bidirectional mean; the reversal belongs in parameter 1851 (bidirectional pitch error compensation, 3605#0, is not written)</source>
-            <translation>请由双向平均值导出一张表；反向差值应设于参数 1851（不写入双向螺距误差补偿 3605#0）</translation>
-        </message>
-        <message>
-            <source>detection unit and magnification must be positive</source>
-            <translation>检测单位和倍率必须为正</translation>
-        </message>
-        <message>
-            <source>3620, the reference position is a compensation point ({source})</source>
-            <translation>3620，参考点位置须为补偿点（{source}）</translation>
-        </message>
-        <message>
-            <source>the reference {reference} is not a point of {first}…{last} step {step}{rotary}</source>
-            <translation>参考点 {reference} 不是 {first}…{last}（步距 {step}）中的补偿点{rotary}</translation>
-        </message>
-        <message>
-            <source>; on a rotary axis it is the first point</source>
-            <translation>；旋转轴上参考点须为第一个补偿点</translation>
-        </message>
-        <message>
-            <source>{key} in whole detection units ({source})</source>
-            <translation>{key} 须为检测单位的整数倍（{source}）</translation>
-        </message>
-        <message>
-            <source>{value} detection units</source>
-            <translation>{value} 个检测单位</translation>
-        </message>
-        <message>
-            <source>3621 ≥ 0 ({source})</source>
-            <translation>3621 ≥ 0（{source}）</translation>
-        </message>
-        <message>
-            <source>point numbers would start at {first}: raise reference_number</source>
-            <translation>补偿点编号将从 {first} 开始：请增大 reference_number</translation>
-        </message>
-        <message>
-            <source>at most {max_points} points per axis</source>
-            <translation>每轴最多 {max_points} 个补偿点</translation>
-        </message>
-        <message>
-            <source>{n} points: choose a larger step</source>
-            <translation>{n} 个补偿点：请选择更大的步距</translation>
-        </message>
-        <message>
-            <source>a stored value is at most ±{limit} × 3623 magnification</source>
-            <translation>单个存储值最多为 ±{limit} × 3623 倍率</translation>
-        </message>
-        <message>
-            <source>an increment of {worst} units of {quantum}: raise the magnification or choose a smaller step</source>
-            <translation>增量为 {worst} 个 {quantum} 单位：请增大倍率或选择更小的步距</translation>
-        </message>
-        <message>
-            <source>rotary axis: the values of one revolution sum to zero ({source})</source>
-            <translation>旋转轴：一转内各补偿值之和须为零（{source}）</translation>
-        </message>
-        <message>
-            <source>they sum to {turn} (3620 = {ref}, 3621 = {first})</source>
-            <translation>其和为 {turn}（3620 = {ref}，3621 = {first}）</translation>
-        </message>
-        <message>
-            <source>FANUC pitch error compensation, axis {axis}, points {first}…{last}, reference point {ref}; the compensation at the reference position ({offset}) is not pitch error: it is left out of the table</source>
-            <translation>FANUC 螺距误差补偿，轴 {axis}，补偿点 {first}…{last}，参考点 {ref}；参考点位置处的补偿量（{offset}）不属于螺距误差，不计入表中</translation>
-        </message>
-        <message>
-            <source>axis key (column name), e.g. X or C</source>
-            <translation>轴名（列名），例如 X 或 C</translation>
-        </message>
-        <message>
-            <source>error (actual − target) or correction (−error): as the machine's manual states</source>
-            <translation>error（实际 − 目标）或 correction（−误差）：按机床手册规定</translation>
-        </message>
-        <message>
-            <source>a rotary axis's turn, 360 (0: linear)</source>
-            <translation>旋转轴一整圈，360（0：直线轴）</translation>
-        </message>
-        <message>
-            <source>{controller} options: values=error or values=correction must be given (the sign of a .COM value could not be verified: take it from the machine's manual)</source>
-            <translation>{controller} 选项：必须给出 values=error 或 values=correction（.COM 值的符号未能核实：请依机床手册确定）</translation>
-        </message>
-        <message>
-            <source>at most {n} entries per .COM table ({source})</source>
-            <translation>每张 .COM 表最多 {n} 行（{source}）</translation>
-        </message>
-        <message>
-            <source>the positions must ascend</source>
-            <translation>位置必须递增</translation>
-        </message>
-        <message>
-            <source>rotary axis: entries 0…360 only ({source})</source>
-            <translation>旋转轴：仅限 0…360 的条目（{source}）</translation>
-        </message>
-        <message>
-            <source>the table runs {first}…{last}</source>
-            <translation>该表范围为 {first}…{last}</translation>
-        </message>
-        <message>
-            <source>HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and its .CMA assignment</source>
-            <translation>HEIDENHAIN .COM 补偿表，轴 {axis}，{n} 行（{sense}），及其 .CMA 分配表</translation>
-        </message>
-        <message>
-            <source>logical axis number (kopf.log_achs_nr)</source>
-            <translation>逻辑轴号（kopf.log_achs_nr）</translation>
-        </message>
-        <message>
-            <source>axis name (kopf.log_achs_name)</source>
-            <translation>轴名（kopf.log_achs_name）</translation>
-        </message>
-        <message>
-            <source>P-COMP-00059 of the axis (default 1500)</source>
-            <translation>该轴的 P-COMP-00059（默认 1500）</translation>
-        </message>
-        <message>
-            <source>a modulo axis's turn, 360 (0: linear)</source>
-            <translation>模态轴一整圈，360（0：直线轴）</translation>
-        </message>
-        <message>
-            <source>{key} in whole units of 0.1 µm / 0.0001° ({source})</source>
-            <translation>{key} 须为 0.1 µm / 0.0001° 的整数倍（{source}）</translation>
-        </message>
-        <message>
-            <source>{value} units</source>
-            <translation>{value} 个单位</translation>
-        </message>
-        <message>
-            <source>kw_nr_max &lt; P-COMP-00059 = {max_points}</source>
-            <translation>kw_nr_max &lt; P-COMP-00059 = {max_points}</translation>
-        </message>
-        <message>
-            <source>modulo table closed ({source})</source>
-            <translation>模态表须闭合（{source}）</translation>
-        </message>
-        <message>
-            <source>the first and last values differ by {gap}</source>
-            <translation>首尾两值相差 {gap}</translation>
-        </message>
-        <message>
-            <source>ISG leadscrew error compensation list, axis {axis}, {n} points{sides}</source>
-            <translation>ISG 丝杠误差补偿列表，轴 {axis}，{n} 个补偿点{sides}</translation>
-        </message>
-        <message>
-            <source>, bilateral</source>
-            <translation>，双向</translation>
-        </message>
-        <message>
-            <source>axis or motor name</source>
-            <translation>轴名或电机名</translation>
-        </message>
-        <message>
-            <source>points = intervals + 1, evenly spaced over the length ({source})</source>
-            <translation>点数 = 区间数 + 1，在长度上等距分布（{source}）</translation>
-        </message>
-        <message>
-            <source>{n} values for {points} points over {length}</source>
-            <translation>{n} 个值对应 {length} 上的 {points} 个点</translation>
-        </message>
-        <message>
-            <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points</source>
-            <translation>Mach4 丝杠映射 {axis}：起点 {start}，长度 {length}，{n} 个点</translation>
-        </message>
-        <message>
-            <source>machine axis name, e.g. AX1 or X1</source>
-            <translation>机床轴名，例如 AX1 或 X1</translation>
-        </message>
-        <message>
-            <source>measuring system the table is for: 1 or 2</source>
-            <translation>该表所属测量系统：1 或 2</translation>
-        </message>
-        <message>
-            <source>measuring systems the axis has (MD30200 NUM_ENCS)</source>
-            <translation>该轴的测量系统数（MD30200 NUM_ENCS）</translation>
-        </message>
-        <message>
-            <source>MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: not checked, the file states what it needs)</source>
-            <translation>该轴的 MD38000 MM_ENC_COMP_MAX_POINTS（0：不检查，文件中注明所需值）</translation>
-        </message>
-        <message>
-            <source>a rotary axis's turn, e.g. 360 (0: not modulo)</source>
-            <translation>旋转轴一整圈，例如 360（0：非模态）</translation>
-        </message>
-        <message>
-            <source>one table per measuring system ({source})</source>
-            <translation>每个测量系统仅一张表（{source}）</translation>
-        </message>
-        <message>
-            <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH</source>
-            <translation>请由双向平均值导出一张表；反向差值应设于 MD32450 BACKLASH</translation>
-        </message>
-        <message>
-            <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
-            <translation>测量系统（K3；MD30200 NUM_ENCS = {encoders}）</translation>
-        </message>
-        <message>
-            <source>a table for measuring system {system} is never applied on an axis with {encoders}</source>
-            <translation>测量系统 {system} 的表在只有 {encoders} 个测量系统的轴上永远不会生效</translation>
-        </message>
-        <message>
-            <source>STEP divides MAX − MIN ({source})</source>
-            <translation>STEP 须整除 MAX − MIN（{source}）</translation>
-        </message>
-        <message>
-            <source>step {step} over {minimum}…{maximum} with {n} values</source>
-            <translation>步距 {step}，范围 {minimum}…{maximum}，共 {n} 个值</translation>
-        </message>
-        <message>
-            <source>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</source>
-            <translation>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</translation>
-        </message>
-        <message>
-            <source>the values at {minimum} and {maximum} differ by {gap}</source>
-            <translation>{minimum} 与 {maximum} 处的值相差 {gap}</translation>
-        </message>
-        <message>
-            <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
-            <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
-        </message>
-        <message>
-            <source>prefix of the PLC variables, e.g. Axis1</source>
-            <translation>PLC 变量名前缀，例如 Axis1</translation>
-        </message>
-        <message>
-            <source>a modulo axis's period, e.g. 360 (0: linear)</source>
-            <translation>模态轴周期，例如 360（0：直线轴）</translation>
-        </message>
-        <message>
-            <source>'{name}' is not a PLC identifier</source>
-            <translation>“{name}”不是合法的 PLC 标识符</translation>
-        </message>
-        <message>
-            <source>equidistant, monotonically increasing table ({source})</source>
-            <translation>等间距、单调递增的表（{source}）</translation>
-        </message>
-        <message>
-            <source>the positions are not equally spaced and ascending</source>
-            <translation>位置不等间距或不递增</translation>
-        </message>
-        <message>
-            <source>TwinCAT Tc2_MC2 position compensation table(s) {name}, {n} elements</source>
-            <translation>TwinCAT Tc2_MC2 位置补偿表 {name}，{n} 个元素</translation>
-        </message>
-        <message>
-            <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder's reading a, the polygon's calibrated face deviation and the autocollimator's horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set's first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed's eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
-            <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
-        </message>
-        <message>
-            <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator's vertical along the shaft); the pyramidal correction is that set-up's, by exact 3-D rotation: the polygon's own term plus the autocollimator's roll times the vertical reading's change.</source>
-            <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
-        </message>
-        <message>
-            <source>Autocollimator roll measured {roll} (u = {u}) and corrected.</source>
-            <translation>自准直仪滚转实测为 {roll}（u = {u}），已修正。</translation>
-        </message>
-        <message>
-            <source>Autocollimator roll not measured: up to ±{roll}, not corrected, in the uncertainty.</source>
-            <translation>自准直仪滚转未实测：最大 ±{roll}，未修正，计入不确定度。</translation>
-        </message>
-        <message>
-            <source>To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the vertical reading changes by Δy and watch the horizontal reading: on a levelled bench it moves by less than the roll bound times Δy; if it moves more, measure that ratio (the roll) and enter it.</source>
-            <translation>判断装置属于哪种安置：使某一面（或轴上的反射镜）俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
-        </message>
-        <message>
-            <source>the shaft</source>
-            <translation>转轴</translation>
-        </message>
-        <message>
-            <source>the polygon's axis</source>
-            <translation>多面棱体轴线</translation>
-        </message>
-        <message>
-            <source>Autocollimator roll ρ (cross-talk ρ·(y − y_z))</source>
-            <translation>自准直仪滚转 ρ（串扰 ρ·(y − y_z)）</translation>
-        </message>
-        <message>
-            <source>measured roll {roll} relative to {vertical}, corrected; its standard uncertainty {u} times the vertical reading's change from the zero face</source>
-            <translation>相对于{vertical}的实测滚转 {roll}，已修正；其标准不确定度 {u} 乘以竖直读数相对于零位面的变化量</translation>
-        </message>
-        <message>
-            <source>roll relative to {vertical} up to ±{roll} (stated, not measured, not corrected) times the vertical reading's change from the zero face</source>
-            <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
-        </message>
-        <message>
-            <source>covariance of ψ, ω from the tilt fits propagated through the set-up's exact correction</source>
-            <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
-        </message>
-        <message>
-            <source>Autocollimator set-up</source>
-            <translation>自准直仪安置</translation>
-        </message>
-        <message>
-            <source>levelled with the rotary axis (vertical along the shaft)</source>
-            <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
-        </message>
-        <message>
-            <source>Autocollimator roll</source>
-            <translation>自准直仪滚转</translation>
-        </message>
-        <message>
-            <source>measured {roll}, corrected</source>
-            <translation>实测 {roll}，已修正</translation>
-        </message>
-        <message>
-            <source>not measured, up to ±{roll}</source>
-            <translation>未实测，最大 ±{roll}</translation>
-        </message>
-        <message>
-            <source>Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)</source>
-            <translation>反向差 B（最大 |x̄↑ − x̄↓|，ISO 230-2）</translation>
-        </message>
-        <message>
-            <source>mean B̄ = {b} (ISO 230-2: deviation x = reference − indicated, forward minus reverse; = mean of ē↓ − ē↑ of the errors)</source>
-            <translation>平均 B̄ = {b}（ISO 230-2：偏差 x = 参考值 − 示值，正向减反向；即误差 ē↓ − ē↑ 的平均）</translation>
-        </message>
-        <message>
-            <source>3-D simulation in seed 001's frame (ψ = 900″), set as such: |corrected − true error|</source>
-            <translation>种子 001 坐标系下的三维仿真（ψ = 900″），按此设置：|修正后 − 真误差|</translation>
-        </message>
-        <message>
-            <source>3-D simulation, levelled, autocollimator pitched 0.5° and rolled 2′ (measured by a tilt test): |corrected − true error|</source>
-            <translation>三维仿真，调平安置，自准直仪俯仰 0.5°、滚转 2′（由俯仰试验测得）：|修正后 − 真误差|</translation>
-        </message>
-        <message>
-            <source>AC roll measured</source>
-            <translation>自准直仪滚转实测值</translation>
-        </message>
-        <message>
-            <source>AC roll ≤</source>
-            <translation>自准直仪滚转 ≤</translation>
-        </message>
-        <message>
-            <source>Largest roll of the autocollimator about its line of sight, relative to the set-up's vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)</source>
-            <translation>未实测时，自准直仪绕其视轴相对于安置竖直方向的最大滚转：它使部分竖直读数进入水平读数（不确定度分量）</translation>
-        </message>
-        <message>
-            <source>Measured roll ρ of the autocollimator about its line of sight: the horizontal reading's change per unit change of the vertical one (tilt a face and watch both readings), + when both rise together; corrected when its uncertainty is given</source>
-            <translation>自准直仪绕其视轴的实测滚转 ρ：水平读数随竖直读数单位变化的变化量（使某一面俯仰并观察两个读数），二者同增为 +；给出其不确定度时予以修正</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
-            <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
-        </message>
-        <message>
-            <source>Table 1 of the seed: the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
-            <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
-        </message>
-        <message>
-            <source>The theodolite's standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
-            <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
-        </message>
-        <message>
-            <source>cos</source>
-            <translation>cos</translation>
-        </message>
-        <message>
-            <source>grade 1: ±0.25"</source>
-            <translation>1 级：±0.25"</translation>
-        </message>
-        <message>
-            <source>grade 2: ±0.5"</source>
-            <translation>2 级：±0.5"</translation>
-        </message>
-        <message>
-            <source>grade 3: ±1"</source>
-            <translation>3 级：±1"</translation>
-        </message>
-        <message>
-            <source>grade 4: ±2"</source>
-            <translation>4 级：±2"</translation>
-        </message>
-        <message>
-            <source>grade 5: ±5"</source>
-            <translation>5 级：±5"</translation>
-        </message>
-        <message>
-            <source>grade 6: ±10"</source>
-            <translation>6 级：±10"</translation>
-        </message>
-        <message>
-            <source>grade 7: ±30"</source>
-            <translation>7 级：±30"</translation>
-        </message>
-        <message>
-            <source>u(AC roll measured)</source>
-            <translation>u(自准直仪滚转实测值)</translation>
-        </message>
-        <message>
-            <source>autocollimator set-up</source>
-            <translation>自准直仪安置</translation>
-        </message>
-        <message>
-            <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
-            <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
-        </message>
-        <message>
-            <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} ({how}): the fixture is fine.</source>
-            <translation>棱锥倾斜 ψ = {psi}，在 {grade} 级允许的 {allowed} 以内（{how}）：安装良好。</translation>
-        </message>
-        <message>
-            <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}): {advice}; then re-zero and measure again.</source>
-            <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）：{advice}；然后重新置零并重测。</translation>
-        </message>
-        <message>
-            <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}); the error it induces was identified and removed.</source>
-            <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）；其引起的误差已辨识并扣除。</translation>
-        </message>
-        <message>
-            <source>levelled set-up</source>
-            <translation>调平安置</translation>
-        </message>
-        <message>
-            <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets' error minus reverse sets')</source>
-            <translation>，反向差 |ē↑ − ē↓| 最大 {value}（ē↑ − ē↓ 平均 {mean}：正向测回误差减反向测回误差）</translation>
-        </message>
-        <message>
-            <source>undefined</source>
-            <translation>无定义</translation>
-        </message>
-        <message>
-            <source>amplitude not significant (A{k} ≤ U)</source>
-            <translation>幅值不显著（A{k} ≤ U）</translation>
-        </message>
-        <message>
-            <source>hand-computed example</source>
-            <translation>手算示例</translation>
-        </message>
-        <message>
-            <source>published table</source>
-            <translation>公开发表的表</translation>
-        </message>
-        <message>
-            <source>ISO 230-2 worked by hand (2 targets, 3 runs each way): {figure}</source>
-            <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1" everywhere. Forward means 2" and 4", backward 0" and 1": E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
-            <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
-        </message>
-        <message>
-            <source>Uncertainty and decision (all workbenches)</source>
-            <translation>不确定度与判定（所有工作台）</translation>
-        </message>
-        <message>
-            <source>coverage factor k for ν = {nu}</source>
-            <translation>ν = {nu} 时的包含因子 k</translation>
-        </message>
-        <message>
-            <source>decision rule {rule}: {x}" against T = 1", w = 0.2"</source>
-            <translation>判定规则 {rule}：{x}"，T = 1"，w = 0.2"</translation>
-        </message>
-        <message>
-            <source>Register changed after issue</source>
-            <translation>登记册在签发后被改动</translation>
-        </message>
-        <message>
-            <source>Model / type</source>
-            <translation>型号/规格</translation>
-        </message>
-        <message>
-            <source>Customer's site (where)</source>
-            <translation>委托方现场（地点）</translation>
-        </message>
-        <message>
-            <source>at the laboratory</source>
-            <extracomment>where the calibration was made (ISO/IEC 17025 7.8.2.1 c): the laboratory's own premises, or the customer's site (its address in ``calibration_site``)</extracomment>
-            <translation>在实验室内</translation>
-        </message>
-        <message>
-            <source>at the customer's site</source>
-            <translation>在委托方现场</translation>
-        </message>
-        <message>
-            <source>certificate field 'example' must be true or false</source>
-            <translation>证书字段“example”必须为 true 或 false</translation>
-        </message>
-        <message>
-            <source>certificate field 'calibration_place' must be one of {join}, not '{place}'</source>
-            <translation>证书字段“calibration_place”必须是 {join} 之一，而不是“{place}”</translation>
-        </message>
-        <message>
-            <source>certificate fields 'calibration_date' {calibration} and 'issue_date' {issue}: a certificate cannot be issued before the calibration it reports</source>
-            <translation>证书字段“calibration_date”{calibration} 与“issue_date”{issue}：证书不能在其报告的校准之前签发</translation>
-        </message>
-        <message>
-            <source>approver</source>
-            <translation>批准人</translation>
-        </message>
-        <message>
-            <source>the customer's site where it was calibrated</source>
-            <translation>校准所在的委托方现场</translation>
-        </message>
-        <message>
-            <source>the PDF to check (without it: the register's hash chain and stored PDFs only)</source>
-            <translation>要核验的 PDF（不给出时：只核验登记册的哈希链和所存 PDF）</translation>
-        </message>
-        <message>
-            <source>CHANGED AFTER ISSUE: {problem}</source>
-            <translation>签发后被改动：{problem}</translation>
-        </message>
-        <message>
-            <source>register: hash chain intact over {n} record(s), every stored PDF matches its SHA-256; chain head {head}</source>
-            <translation>登记册：{n} 条记录的哈希链完整，所存每个 PDF 与其 SHA-256 相符；链头 {head}</translation>
-        </message>
-        <message>
-            <source>{path}: {number} is no longer valid: superseded by {by} (see 'anglebench register show {by}')</source>
-            <translation>{path}：{number} 已不再有效：已被 {by} 取代（见“anglebench register show {by}”）</translation>
-        </message>
-        <message>
-            <source>anglebench register: WARNING: {problem}</source>
-            <translation>anglebench register：警告：{problem}</translation>
-        </message>
-        <message>
-            <source>Place of calibration</source>
-            <translation>校准地点</translation>
-        </message>
-        <message>
-            <source>— End of certificate {number} —</source>
-            <translation>— 证书 {number} 结束 —</translation>
-        </message>
-        <message>
-            <source>A draft prints this date; an issued certificate is dated the day the register issues it</source>
-            <translation>草稿打印此日期；签发的证书以登记册签发之日为签发日期</translation>
-        </message>
-        <message>
-            <source>anglebench analyze: these are the bundled example details ("example": true): the certificate is issued in a register of its own, deleted afterwards; your register is not touched</source>
-            <translation>anglebench analyze：这是随附的示例信息（"example": true）：证书签发到其专用的登记册中，之后即删除；您的登记册不受影响</translation>
-        </message>
-        <message>
-            <source>{number} was issued on {original}: an amendment or replacement cannot be dated {today}, before it (check the computer's clock)</source>
-            <translation>{number} 签发于 {original}：其修订或替换证书不能早于它，日期不能为 {today}（请检查计算机时钟）</translation>
-        </message>
-        <message>
-            <source>the stored PDF of {number} no longer matches the SHA-256 recorded when it was issued: it was changed in the database; it is not exported</source>
-            <translation>{number} 所存的 PDF 与签发时记录的 SHA-256 不再相符：它在数据库中被改动过；不予导出</translation>
-        </message>
-        <message>
-            <source>record {number}: the hash chain is broken here (this record, or one before it, was changed, inserted or deleted after issue)</source>
-            <translation>记录 {number}：哈希链在此断开（此记录或其前面的记录在签发后被改动、插入或删除）</translation>
-        </message>
-        <message>
-            <source>record {number}: the stored PDF does not match the SHA-256 recorded at issue</source>
-            <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
-        </message>
-        <message>
-            <source>record {number}: marked "{status}" (superseded by {marked}), but the register's records say {by}</source>
-            <translation>记录 {number}：标为“{status}”（被 {marked} 取代），但登记册的记录表明{by}</translation>
-        </message>
-        <message>
-            <source>superseded by {number}</source>
-            <translation>已被 {number} 取代</translation>
-        </message>
-        <message>
-            <source>issued, superseded by none</source>
-            <translation>已签发，未被取代</translation>
-        </message>
-        <message>
-            <source>an issued certificate needs the name of the person who approves it ("Approved by"); without one it can only be written as a draft</source>
-            <translation>签发的证书需要批准人的姓名（“批准人”）；没有批准人只能写成草稿</translation>
-        </message>
-        <message>
-            <source>the date of calibration {calibration} is after the date of issue {today} (the day the register issues it): a certificate reports a calibration already made</source>
-            <translation>校准日期 {calibration} 晚于签发日期 {today}（登记册签发之日）：证书只能报告已完成的校准</translation>
-        </message>
-        <message>
-            <source>print the version and the source's commit (or, installed without git, the digest of its source files), then exit</source>
-            <translation>显示版本和源代码的提交号（未用 git 安装时为源文件的摘要），然后退出</translation>
-        </message>
-        <message>
-            <source>Check figures: the published figure to the digits it is printed with (the tolerance is half its last digit); a published table likewise.</source>
-            <extracomment>each kind of case's acceptance criterion, and why it is that</extracomment>
-            <translation>校核数值：与发表值在其印出的位数上一致（容差为末位的一半）；公开发表的表同样如此。</translation>
-        </message>
-        <message>
-            <source>Exact simulations and examples worked by hand: agreement to 0.0001" or better, far below any uncertainty a certificate states (its U is 0.01" or more): what remains is rounding, not method.</source>
-            <translation>精确仿真和手算示例：一致到 0.0001" 或更好，远小于证书给出的任何不确定度（其 U 为 0.01" 或更大）：剩下的是舍入误差，而非方法误差。</translation>
-        </message>
-        <message>
-            <source>Budget against Monte Carlo: the spread of N simulated runs estimates a standard uncertainty to about 1/√(2N) (relative); the budget's u must agree within three times that, at least 10 %, over all points, and within four times that, at least 25 %, at the worst point of a curve (with N = 200: 15 % and 25 %; a worst point of 24 % passes by that margin, not by chance: over some 40 points the largest of their sampling errors reaches about 3 × 5 %, and a budget off by a quarter at one point would still be caught).</source>
-            <translation>不确定度评定对蒙特卡洛：N 次仿真的分散性估计标准不确定度的相对误差约为 1/√(2N)；评定的 u 在全部点上须一致到其三倍以内（至少 10 %），在曲线最差点上须一致到其四倍以内（至少 25 %）（N = 200 时为 15 % 和 25 %；最差点 24 % 是按此余量通过，而非偶然：约 40 个点中抽样误差的最大值可达约 3 × 5 %，而某一点偏差四分之一的评定仍会被发现）。</translation>
-        </message>
-        <message>
-            <source>Software cases: exact (every name and figure found in the PDF's text; the register finds what it issued and reports what was changed; a file reads to the same numbers as numpy.loadtxt).</source>
-            <translation>软件用例：精确（PDF 文本中找到每个名称和数值；登记册找到其签发的证书并报告被改动之处；文件读出的数值与 numpy.loadtxt 相同）。</translation>
-        </message>
-        <message>
-            <source>Software (all workbenches)</source>
-            <translation>软件（所有工作台）</translation>
-        </message>
-        <message>
-            <source>exact, end to end</source>
-            <translation>精确，端到端</translation>
-        </message>
-        <message>
-            <source>certificate text as extracted from the PDF (zh, Latin-only lab name)</source>
-            <translation>从 PDF 提取的证书文本（中文，实验室名称仅含拉丁字母）</translation>
-        </message>
-        <message>
-            <source>lab name on {pages} of {pages} pages, {n} of {n} figures</source>
-            <translation>{pages} 页中 {pages} 页有实验室名称，{n} 个数值中 {n} 个</translation>
-        </message>
-        <message>
-            <source>lab name on {named} of {pages} pages, {found} of {n} figures</source>
-            <translation>{pages} 页中 {named} 页有实验室名称，{n} 个数值中 {found} 个</translation>
-        </message>
-        <message>
-            <source>register: issue, verify, a PDF and its hash rewritten in the database</source>
-            <translation>登记册：签发、核验、在数据库中改写 PDF 及其哈希值</translation>
-        </message>
-        <message>
-            <source>verified; the change reported</source>
-            <translation>核验通过；改动被报告</translation>
-        </message>
-        <message>
-            <source>verified: {verified}; changes reported: {caught}</source>
-            <translation>核验：{verified}；报告的改动：{caught}</translation>
-        </message>
-        <message>
-            <source>file import of {file}, as written and with decimal commas, against numpy.loadtxt</source>
-            <translation>导入文件 {file}（原样及小数逗号形式），与 numpy.loadtxt 比较</translation>
-        </message>
-        <message>
-            <source>Document ID</source>
-            <translation>文件编号</translation>
-        </message>
-        <message>
-            <source>Four workbenches. Three use non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T 17421.2). For each: the publication's check figures or, for the standard method, examples worked by hand; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase, an axis with a known error and lost motion) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101). Then what every workbench shares: the coverage factor k from ν, the decision rules, the certificate's text as a reader extracts it from the PDF, the register, and file import.</source>
-            <translation>四个工作台。其中三个采用非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。第四个，轴线定位，采用标准方法（ISO 230-2、VDI/DGQ 3441、GB/T 17421.2）。对每个工作台：论文的校核数值，或对标准方法为手算示例；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号、误差和反向间隙已知的轴线）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。然后是各工作台共用的部分：由 ν 求包含因子 k、判定规则、从 PDF 提取的证书文本、登记册和文件导入。</translation>
-        </message>
-        <message>
-            <source>Acceptance criteria</source>
-            <translation>验收准则</translation>
-        </message>
-        <message>
-            <source>ADC LSB</source>
-            <translation>ADC 最低有效位</translation>
-        </message>
-        <message>
-            <source>ADC gain ratio u</source>
-            <translation>ADC 增益比 u</translation>
-        </message>
-        <message>
-            <source>ADC linearity ±</source>
-            <translation>ADC 线性度 ±</translation>
-        </message>
-        <message>
-            <source>ADC offset u</source>
-            <translation>ADC 偏置 u</translation>
-        </message>
-        <message>
-            <source>expansion coefficient</source>
-            <translation>线膨胀系数</translation>
-        </message>
-        <message>
-            <source>reference resolution</source>
-            <translation>参考仪器分辨力</translation>
-        </message>
-        <message>
-            <source>the sampling's uniformity (the timing of the samples)</source>
-            <extracomment>what the phase reference is, by where the phase came from</extracomment>
-            <translation>采样的均匀性（各采样点的时刻）</translation>
-        </message>
-        <message>
-            <source>the θ reference's stated U</source>
-            <translation>θ 参考给出的 U</translation>
-        </message>
-        <message>
-            <source>the phase estimation's validated limit</source>
-            <translation>相位估计经确认的限值</translation>
-        </message>
-        <message>
-            <source>Phase reference</source>
-            <translation>相位参考</translation>
-        </message>
-        <message>
-            <source>{what}: u = {u}° of a period (stated)</source>
-            <translation>{what}：u = 一个周期的 {u}°（给定值）</translation>
-        </message>
-        <message>
-            <source>ADC quantisation</source>
-            <translation>ADC 量化</translation>
-        </message>
-        <message>
-            <source>LSB {lsb} mV: LSB/√12 in each channel (also in the residuals' scatter: counted twice, on the safe side)</source>
-            <translation>最低有效位 {lsb} mV：每通道 LSB/√12（也包含在残差的分散性中：重复计入，偏于安全）</translation>
-        </message>
-        <message>
-            <source>ADC offset</source>
-            <translation>ADC 偏置</translation>
-        </message>
-        <message>
-            <source>u = {u} mV in each channel (stated); taken as the ADC's, not the read head's</source>
-            <translation>每通道 u = {u} mV（给定值）；视为 ADC 的偏置，而非读数头的</translation>
-        </message>
-        <message>
-            <source>ADC gain ratio</source>
-            <translation>ADC 增益比</translation>
-        </message>
-        <message>
-            <source>u = {u} % of the ratio of the channels' gains (stated)</source>
-            <translation>两通道增益之比的 u = {u} %（给定值）</translation>
-        </message>
-        <message>
-            <source>ADC linearity</source>
-            <translation>ADC 线性度</translation>
-        </message>
-        <message>
-            <source>integral nonlinearity ±{a} mV in each channel (stated)</source>
-            <translation>每通道积分非线性 ±{a} mV（给定值）</translation>
-        </message>
-        <message>
-            <source>the phase reference ({what}) has no stated uncertainty</source>
-            <translation>相位参考（{what}）未给出不确定度</translation>
-        </message>
-        <message>
-            <source>quantisation</source>
-            <translation>量化</translation>
-        </message>
-        <message>
-            <source>offset</source>
-            <translation>偏置</translation>
-        </message>
-        <message>
-            <source>gain</source>
-            <translation>增益</translation>
-        </message>
-        <message>
-            <source>linearity</source>
-            <translation>线性度</translation>
-        </message>
-        <message>
-            <source>the ADC's {figures} have no stated uncertainty</source>
-            <translation>ADC 的{figures}未给出不确定度</translation>
-        </message>
-        <message>
-            <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
-            <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
-        </message>
-        <message>
-            <source>The first {per} samples are shown (every {step}-th), and the samples with the extremes of each error and the largest U; all {n} samples are in the CSV/XLSX results export.</source>
-            <translation>列出前 {per} 个采样点（每 {step} 个取一个），以及各误差取极值和 U 最大的采样点；全部 {n} 个采样点在 CSV/XLSX 结果导出文件中。</translation>
-        </message>
-        <message>
-            <source>Results per sample (compensated = raw + correction)</source>
-            <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
-        </message>
-        <message>
-            <source>Conformity is judged on the interpolation error as found. The compensated error is not the item's unless the table is loaded into it (table sha256 {sha}).</source>
-            <translation>符合性按校准前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
-        </message>
-        <message>
-            <source>The compensated error is the error the correction table is expected to leave, if the signals stay as they were measured.</source>
-            <translation>补偿后误差是在信号保持测量时状态的前提下，预计修正表施加后剩余的误差。</translation>
-        </message>
-        <message>
-            <source>the error is not traceable: {what}</source>
-            <translation>误差不具有溯源性：{what}</translation>
-        </message>
-        <message>
-            <source>Repeatability was not evaluated: one set and no vertical readings, so nothing in U covers the scatter of the readings; U understates the uncertainty by it.</source>
-            <translation>未评定重复性：仅一个测回且无竖直读数，因此 U 中没有分量覆盖读数的分散性；U 因此低估了不确定度。</translation>
-        </message>
-        <message>
-            <source>no direction was measured twice; in U the autocollimator's reading noise from the tilt fits stands for it</source>
-            <translation>没有方向被测量两次；U 中以塔差拟合得到的自准直仪读数噪声代替</translation>
-        </message>
-        <message>
-            <source>no direction was measured twice and there are no vertical readings: nothing in U covers it</source>
-            <translation>没有方向被测量两次，且无竖直读数：U 中没有分量覆盖它</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty at a target from the reference's alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated</source>
-            <translation>参考仪器相对于轴线的对准（余弦误差、偏心）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty at a target from the temperatures (the axis' expansion and its compensation, the reference's environment), in the deviation unit. 0: not stated</source>
-            <translation>温度（轴的热膨胀及其补偿、参考仪器的环境）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty of each channel's ADC offset, from its calibration. 0: not stated</source>
-            <translation>各通道 ADC 偏置的标准不确定度，取自其校准。0：未给出</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty of each sample's phase, in degrees of a signal period: with N equal steps the sampling's uniformity (the timing of the samples), with a θ column its reference's stated U / k, with an estimated phase the method's validated limit. 0: not stated</source>
-            <translation>各采样点相位的标准不确定度，以信号周期的度数表示：N 等分步长时为采样的均匀性（各采样点的时刻），有 θ 列时为其参考给出的 U / k，相位由估计得出时为该方法经确认的限值。0：未给出</translation>
-        </message>
-        <message>
-            <source>Standard uncertainty of the ratio of the two channels' ADC gains (a gain common to both does not move the phase). 0: not stated</source>
-            <translation>两通道 ADC 增益之比的标准不确定度（两通道共同的增益不改变相位）。0：未给出</translation>
-        </message>
-        <message>
-            <source>Temperature of the axis (its scale or encoder) during the test (ISO 230-2, clause 8). 0: not stated</source>
-            <translation>检测期间轴（其标尺或编码器）的温度（ISO 230-2 第 8 章）。0：未给出</translation>
-        </message>
-        <message>
-            <source>The ADC's integral nonlinearity limit ±a per channel (rectangular). 0: not stated</source>
-            <translation>每通道 ADC 积分非线性限值 ±a（矩形分布）。0：未给出</translation>
-        </message>
-        <message>
-            <source>The ADC's step (quantisation LSB/√12 per channel). 0: not stated</source>
-            <translation>ADC 的量化步长（每通道量化 LSB/√12）。0：未给出</translation>
-        </message>
-        <message>
-            <source>The axis' set-up (ISO 230-2, clause 8): position of the reference, load, feed, dwell at each target, other axes' positions</source>
-            <translation>轴的安装状态（ISO 230-2 第 8 章）：参考仪器的位置、负载、进给速度、各目标位置的停留时间、其他轴的位置</translation>
-        </message>
-        <message>
-            <source>The nominal expansion coefficient the compensation used (linear axes; ISO 230-2, clause 8). 0: not stated</source>
-            <translation>补偿所用的名义线膨胀系数（直线轴；ISO 230-2 第 8 章）。0：未给出</translation>
-        </message>
-        <message>
-            <source>Set-up parameters: azimuths are counted from the theodolite's azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis' upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed's E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
-            <extracomment>what ψ, α and β are (the frame of SPEC §1, the seed's), checked against an independent rig built in a frame with OZ up (tests/test_certificate_uncertainty.py)</extracomment>
-            <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
-        </message>
-        <message>
-            <source>θ = {theta}° (row {row} of the results)</source>
-            <translation>θ = {theta}°（结果表第 {row} 行）</translation>
-        </message>
-        <message>
-            <source>the zeroing reading, shared by every point: a second reading, independent of the point's own, but the same estimate s, so for ν_eff one input with the repeatability (ν counted once)</source>
-            <translation>置零读数，为各点共用：是与该点自身读数相互独立的另一个读数，但来自同一个估计值 s，因此计算 ν_eff 时与重复性合为一个输入量（ν 只计一次）</translation>
-        </message>
-        <message>
-            <source>Resolution of the reference's reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>
-            <translation>参考仪器读数的分辨力，以偏差单位表示（矩形分布，半宽 r/2）。0：未给出</translation>
-        </message>
-        <message>
-            <source>What the theodolite's vertical circle reads; E is the seed's, positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
-            <translation>经纬仪竖直度盘的读数；E 按原文定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
-        </message>
-        <message>
-            <source>axis set-up</source>
-            <translation>轴的安装状态</translation>
-        </message>
-        <message>
-            <source>axis temperature</source>
-            <translation>轴的温度</translation>
-        </message>
-        <message>
-            <source>misalignment u</source>
-            <translation>对准误差 u</translation>
-        </message>
-        <message>
-            <source>phase reference u</source>
-            <translation>相位参考 u</translation>
-        </message>
-        <message>
-            <source>temperature u</source>
-            <translation>温度 u</translation>
-        </message>
-        <message>
-            <source>Budget at {point}, the point with the largest U. k = {k} is Student's t for ν = {nu}, the effective degrees of freedom (Welch–Satterthwaite: {raw}) truncated to the lower integer (GUM G.6.4), and a coverage probability of {p} %; each point's U uses its own ν.</source>
-            <translation>分量一览表取自 {point}，即 U 最大的点。k = {k} 为 t 分布在 ν = {nu} 和包含概率 {p} % 时的值，ν 为有效自由度（韦尔奇–萨特思韦特公式：{raw}）向下取整（GUM G.6.4）；各点的 U 采用其自身的 ν。</translation>
-        </message>
-        <message>
-            <source>Opinion and interpretation (ISO/IEC 17025 7.8.7), not a measured result: {text}</source>
-            <translation>意见和解释（ISO/IEC 17025 7.8.7），并非测量结果：{text}</translation>
-        </message>
-        <message>
-            <source>{standard} (certificate {certificate}; its figures enter as the inputs stated in the settings: {inputs})</source>
-            <translation>{standard}（证书 {certificate}；其数据作为分析设置中给出的输入量计入：{inputs}）</translation>
-        </message>
-        <message>
-            <source>Metrological traceability: not established for these results — {what}; no statement of conformity rests on them.</source>
-            <translation>计量溯源性：本结果未建立溯源性——{what}；不依据本结果作符合性声明。</translation>
-        </message>
-        <message>
-            <source>The standards listed with a certificate and a stated uncertainty: {names}.</source>
-            <translation>所列具有证书并给出不确定度的计量标准：{names}。</translation>
-        </message>
-        <message>
-            <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate and a stated uncertainty is listed.</source>
-            <translation>计量溯源性：本文件未建立——未列出具有校准证书并给出不确定度的计量标准。</translation>
-        </message>
-        <message>
-            <source>{standard}: no uncertainty stated, so it is no input of the budget and the results are not traceable through it.</source>
-            <translation>{standard}：未给出不确定度，因此不是不确定度分量，结果也不能通过它溯源。</translation>
-        </message>
-        <message>
-            <source>Misalignment of the reference</source>
-            <extracomment>the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)</extracomment>
-            <translation>参考仪器的对准误差</translation>
-        </message>
-        <message>
-            <source>Resolution of the reference</source>
-            <translation>参考仪器的分辨力</translation>
-        </message>
-        <message>
-            <source>Temperature</source>
-            <translation>温度</translation>
-        </message>
-        <message>
-            <source>resolution {r}: rectangular, half-width r/2</source>
-            <translation>分辨力 {r}：矩形分布，半宽 r/2</translation>
-        </message>
-        <message>
-            <source>u = {r} at every target (stated)</source>
-            <translation>各目标位置 u = {r}（给定值）</translation>
-        </message>
-        <message>
-            <source>{figure}, U = {u}</source>
-            <translation>{figure}，U = {u}</translation>
-        </message>
-        <message>
-            <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
-            <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
-        </message>
-        <message>
-            <source>U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM 101, seed {seed}) from the inputs of the per-target U — each reading drawn about its target's mean with its s, each Type B input once per target and direction — and the figures evaluated as above; the central interval of {p} % about the median, printed −/+ where it is not symmetric.</source>
-            <translation>轴线各项指标的 U：以蒙特卡洛法（JCGM 101，随机种子 {seed}）由各目标位置 U 的输入量将检测重复 {trials} 次——各读数按其目标位置的平均值和 s 抽样，各 B 类输入量按每个目标位置和方向抽样一次——并按上述方法计算各项指标；取中位数附近包含概率 {p} % 的中心区间，不对称时以 −/+ 给出。</translation>
-        </message>
-        <message>
-            <source>The reference standard's U enters each mean deviation with sensitivity 1: a rotary calibrator's or an interferometer's certificate states it for a position measured from the reference's datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
-            <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
-        </message>
-        <message>
-            <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
-            <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
-        </message>
-        <message>
-            <source>No statement of conformity is possible: the expanded uncertainty U = {u} is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
-            <translation>无法作符合性声明：扩展不确定度 U = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
-        </message>
-        <message>
-            <source>point {n}</source>
-            <translation>第 {n} 点</translation>
-        </message>
-        <message>
-            <source>(at {point})</source>
-            <translation>（在 {point}）</translation>
-        </message>
-        <message>
-            <source>Every point's {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
-            <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
-        </message>
-        <message>
-            <source>the interval's coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis' curve, against the {p} % stated</source>
-            <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
-        </message>
-        <message>
-            <source>Certify these figures?</source>
-            <translation>为这些数值出具证书？</translation>
-        </message>
-        <message>
-            <source>{reason}
+    </message>
+    <message>
+        <source>Platform</source>
+        <extracomment>libraries named besides the register&apos;s (models.register.store.LIBRARIES)</extracomment>
+        <translation>平台</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <extracomment>a decision&apos;s verdict and a rule&apos;s name, as the report prints them</extracomment>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>未通过</translation>
+    </message>
+    <message>
+        <source>AngleBench method validation</source>
+        <translation>AngleBench 方法确认</translation>
+    </message>
+    <message>
+        <source>Validation record of the software named below; file it with the method&apos;s validation (ISO/IEC 17025 7.2.2).</source>
+        <translation>下列软件的确认记录；请与方法确认一并归档（ISO/IEC 17025 7.2.2）。</translation>
+    </message>
+    <message>
+        <source>Method validation report</source>
+        <translation>方法确认报告</translation>
+    </message>
+    <message>
+        <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed.</source>
+        <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过。</translation>
+    </message>
+    <message>
+        <source>Run on {date} at {time} UTC: {passed} of {cases} reference cases passed — NOT VALIDATED.</source>
+        <translation>运行于 {date} {time} UTC：{cases} 个参考案例中 {passed} 个通过 — 未通过确认。</translation>
+    </message>
+    <message>
+        <source>What was checked</source>
+        <translation>检查内容</translation>
+    </message>
+    <message>
+        <source>Case</source>
+        <translation>案例</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>来源</translation>
+    </message>
+    <message>
+        <source>Expected</source>
+        <translation>预期值</translation>
+    </message>
+    <message>
+        <source>Obtained</source>
+        <translation>所得值</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>Reviewed by</source>
+        <translation>审核</translation>
+    </message>
+    <message>
+        <source>Name, signature and date: {blank}</source>
+        <translation>姓名、签字及日期：{blank}</translation>
+    </message>
+    <message>
+        <source>Run the method validation cases</source>
+        <translation>运行方法确认案例</translation>
+    </message>
+    <message>
+        <source>also write the validation report</source>
+        <translation>同时写出确认报告</translation>
+    </message>
+    <message>
+        <source>simulated runs for each budget comparison (default 200)</source>
+        <translation>每项不确定度评定比较的仿真次数（默认 200）</translation>
+    </message>
+    <message>
+        <source>anglebench validate: --trials must be 100 to 100000</source>
+        <translation>anglebench validate：--trials 应在 100 到 100000 之间</translation>
+    </message>
+    <message>
+        <source>{verdict}  {workbench}: {name} — expected {expected}, obtained {obtained}</source>
+        <translation>{verdict}  {workbench}：{name} — 预期 {expected}，所得 {obtained}</translation>
+    </message>
+    <message>
+        <source>{passed} passed, {failed} failed</source>
+        <translation>{passed} 个通过，{failed} 个未通过</translation>
+    </message>
+    <message>
+        <source>anglebench validate: cannot write {path}: {reason}</source>
+        <translation>anglebench validate：无法写入 {path}：{reason}</translation>
+    </message>
+    <message>
+        <source>Validation report written to {path}</source>
+        <translation>确认报告已写入 {path}</translation>
+    </message>
+    <message>
+        <source>issued</source>
+        <translation>已签发</translation>
+    </message>
+    <message>
+        <source>superseded</source>
+        <translation>已被取代</translation>
+    </message>
+    <message>
+        <source>original</source>
+        <translation>原始</translation>
+    </message>
+    <message>
+        <source>replacement</source>
+        <translation>替代</translation>
+    </message>
+    <message>
+        <source>amendment {n}</source>
+        <translation>第 {n} 次修订</translation>
+    </message>
+    <message>
+        <source>{controller}: {rule} — {detail}</source>
+        <translation>{controller}：{rule} — {detail}</translation>
+    </message>
+    <message>
+        <source>{controller} options: &apos;{part}&apos; is not KEY=VALUE</source>
+        <translation>{controller} 选项：“{part}”不是 KEY=VALUE 形式</translation>
+    </message>
+    <message>
+        <source>{controller} options: unknown option &apos;{key}&apos;; it takes {known}</source>
+        <translation>{controller} 选项：未知选项“{key}”；可用选项为 {known}</translation>
+    </message>
+    <message>
+        <source>{controller} options: {key}={value} is not a number</source>
+        <translation>{controller} 选项：{key}={value} 不是数字</translation>
+    </message>
+    <message>
+        <source>{controller} options: {key}={value} is below {minimum}</source>
+        <translation>{controller} 选项：{key}={value} 小于 {minimum}</translation>
+    </message>
+    <message>
+        <source>equidistant points ({source})</source>
+        <translation>等间距补偿点（{source}）</translation>
+    </message>
+    <message>
+        <source>the points are not equally spaced: choose a compensation step</source>
+        <translation>补偿点间距不相等：请选择补偿步距</translation>
+    </message>
+    <message>
+        <source>the step divides the turn ({source})</source>
+        <translation>步距须整除一整圈（{source}）</translation>
+    </message>
+    <message>
+        <source>a step of {step} does not divide {period}</source>
+        <translation>步距 {step} 不能整除 {period}</translation>
+    </message>
+    <message>
+        <source>one turn ({source})</source>
+        <translation>一整圈（{source}）</translation>
+    </message>
+    <message>
+        <source>the points {first}…{last} run past one turn of {period}</source>
+        <translation>补偿点 {first}…{last} 超出一整圈 {period}</translation>
+    </message>
+    <message>
+        <source>the two ends of the turn differed by {gap} (axis unit): both set to their mean</source>
+        <translation>整圈两端相差 {gap}（轴单位）：两端均取其平均值</translation>
+    </message>
+    <message>
+        <source>the points {first}…{last} do not reach one turn less one step</source>
+        <translation>补偿点 {first}…{last} 未达到一整圈减一个步距</translation>
+    </message>
+    <message>
+        <source>the end of the turn, {end}, takes the value at its start</source>
+        <translation>整圈终点 {end} 取其起点的值</translation>
+    </message>
+    <message>
+        <source>controlled axis number of the parameter tape (A1, A2 …)</source>
+        <translation>参数带中的控制轴号（A1、A2 …）</translation>
+    </message>
+    <message>
+        <source>detection unit in mm or degrees, e.g. 0.001</source>
+        <translation>检测单位，mm 或度，例如 0.001</translation>
+    </message>
+    <message>
+        <source>parameter 3623, pitch error compensation magnification</source>
+        <translation>参数 3623，螺距误差补偿倍率</translation>
+    </message>
+    <message>
+        <source>reference position (machine coordinate); it must be a point of the table</source>
+        <translation>参考点位置（机床坐标）；必须是表中的一个补偿点</translation>
+    </message>
+    <message>
+        <source>parameter 3620 (−1: chosen so that the numbers start at 0 or 1)</source>
+        <translation>参数 3620（−1：自动选取，使编号从 0 或 1 开始）</translation>
+    </message>
+    <message>
+        <source>largest stored value of one point, in detection units</source>
+        <translation>单个补偿点可存储的最大值，以检测单位计</translation>
+    </message>
+    <message>
+        <source>most compensation points of one axis</source>
+        <translation>单轴最多补偿点数</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s travel per revolution, e.g. 360 (parameter 3625; 0: linear)</source>
+        <translation>旋转轴每转移动量，例如 360（参数 3625；0：直线轴）</translation>
+    </message>
+    <message>
+        <source>one table ({source})</source>
+        <translation>仅一张表（{source}）</translation>
+    </message>
+    <message>
+        <source>export one table from the bidirectional mean; the reversal belongs in parameter 1851 (bidirectional pitch error compensation, 3605#0, is not written)</source>
+        <translation>请由双向平均值导出一张表；反向差值应设于参数 1851（不写入双向螺距误差补偿 3605#0）</translation>
+    </message>
+    <message>
+        <source>detection unit and magnification must be positive</source>
+        <translation>检测单位和倍率必须为正</translation>
+    </message>
+    <message>
+        <source>3620, the reference position is a compensation point ({source})</source>
+        <translation>3620，参考点位置须为补偿点（{source}）</translation>
+    </message>
+    <message>
+        <source>the reference {reference} is not a point of {first}…{last} step {step}{rotary}</source>
+        <translation>参考点 {reference} 不是 {first}…{last}（步距 {step}）中的补偿点{rotary}</translation>
+    </message>
+    <message>
+        <source>; on a rotary axis it is the first point</source>
+        <translation>；旋转轴上参考点须为第一个补偿点</translation>
+    </message>
+    <message>
+        <source>{key} in whole detection units ({source})</source>
+        <translation>{key} 须为检测单位的整数倍（{source}）</translation>
+    </message>
+    <message>
+        <source>{value} detection units</source>
+        <translation>{value} 个检测单位</translation>
+    </message>
+    <message>
+        <source>3621 ≥ 0 ({source})</source>
+        <translation>3621 ≥ 0（{source}）</translation>
+    </message>
+    <message>
+        <source>point numbers would start at {first}: raise reference_number</source>
+        <translation>补偿点编号将从 {first} 开始：请增大 reference_number</translation>
+    </message>
+    <message>
+        <source>at most {max_points} points per axis</source>
+        <translation>每轴最多 {max_points} 个补偿点</translation>
+    </message>
+    <message>
+        <source>{n} points: choose a larger step</source>
+        <translation>{n} 个补偿点：请选择更大的步距</translation>
+    </message>
+    <message>
+        <source>a stored value is at most ±{limit} × 3623 magnification</source>
+        <translation>单个存储值最多为 ±{limit} × 3623 倍率</translation>
+    </message>
+    <message>
+        <source>an increment of {worst} units of {quantum}: raise the magnification or choose a smaller step</source>
+        <translation>增量为 {worst} 个 {quantum} 单位：请增大倍率或选择更小的步距</translation>
+    </message>
+    <message>
+        <source>rotary axis: the values of one revolution sum to zero ({source})</source>
+        <translation>旋转轴：一转内各补偿值之和须为零（{source}）</translation>
+    </message>
+    <message>
+        <source>they sum to {turn} (3620 = {ref}, 3621 = {first})</source>
+        <translation>其和为 {turn}（3620 = {ref}，3621 = {first}）</translation>
+    </message>
+    <message>
+        <source>FANUC pitch error compensation, axis {axis}, points {first}…{last}, reference point {ref}; the compensation at the reference position ({offset}) is not pitch error: it is left out of the table</source>
+        <translation>FANUC 螺距误差补偿，轴 {axis}，补偿点 {first}…{last}，参考点 {ref}；参考点位置处的补偿量（{offset}）不属于螺距误差，不计入表中</translation>
+    </message>
+    <message>
+        <source>axis key (column name), e.g. X or C</source>
+        <translation>轴名（列名），例如 X 或 C</translation>
+    </message>
+    <message>
+        <source>error (actual − target) or correction (−error): as the machine&apos;s manual states</source>
+        <translation>error（实际 − 目标）或 correction（−误差）：按机床手册规定</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s turn, 360 (0: linear)</source>
+        <translation>旋转轴一整圈，360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>{controller} options: values=error or values=correction must be given (the sign of a .COM value could not be verified: take it from the machine&apos;s manual)</source>
+        <translation>{controller} 选项：必须给出 values=error 或 values=correction（.COM 值的符号未能核实：请依机床手册确定）</translation>
+    </message>
+    <message>
+        <source>at most {n} entries per .COM table ({source})</source>
+        <translation>每张 .COM 表最多 {n} 行（{source}）</translation>
+    </message>
+    <message>
+        <source>the positions must ascend</source>
+        <translation>位置必须递增</translation>
+    </message>
+    <message>
+        <source>rotary axis: entries 0…360 only ({source})</source>
+        <translation>旋转轴：仅限 0…360 的条目（{source}）</translation>
+    </message>
+    <message>
+        <source>the table runs {first}…{last}</source>
+        <translation>该表范围为 {first}…{last}</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN .COM table for axis {axis}, {n} entries ({sense}), and its .CMA assignment</source>
+        <translation>HEIDENHAIN .COM 补偿表，轴 {axis}，{n} 行（{sense}），及其 .CMA 分配表</translation>
+    </message>
+    <message>
+        <source>logical axis number (kopf.log_achs_nr)</source>
+        <translation>逻辑轴号（kopf.log_achs_nr）</translation>
+    </message>
+    <message>
+        <source>axis name (kopf.log_achs_name)</source>
+        <translation>轴名（kopf.log_achs_name）</translation>
+    </message>
+    <message>
+        <source>P-COMP-00059 of the axis (default 1500)</source>
+        <translation>该轴的 P-COMP-00059（默认 1500）</translation>
+    </message>
+    <message>
+        <source>a modulo axis&apos;s turn, 360 (0: linear)</source>
+        <translation>模态轴一整圈，360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>{key} in whole units of 0.1 µm / 0.0001° ({source})</source>
+        <translation>{key} 须为 0.1 µm / 0.0001° 的整数倍（{source}）</translation>
+    </message>
+    <message>
+        <source>{value} units</source>
+        <translation>{value} 个单位</translation>
+    </message>
+    <message>
+        <source>kw_nr_max &lt; P-COMP-00059 = {max_points}</source>
+        <translation>kw_nr_max &lt; P-COMP-00059 = {max_points}</translation>
+    </message>
+    <message>
+        <source>modulo table closed ({source})</source>
+        <translation>模态表须闭合（{source}）</translation>
+    </message>
+    <message>
+        <source>the first and last values differ by {gap}</source>
+        <translation>首尾两值相差 {gap}</translation>
+    </message>
+    <message>
+        <source>ISG leadscrew error compensation list, axis {axis}, {n} points{sides}</source>
+        <translation>ISG 丝杠误差补偿列表，轴 {axis}，{n} 个补偿点{sides}</translation>
+    </message>
+    <message>
+        <source>, bilateral</source>
+        <translation>，双向</translation>
+    </message>
+    <message>
+        <source>axis or motor name</source>
+        <translation>轴名或电机名</translation>
+    </message>
+    <message>
+        <source>points = intervals + 1, evenly spaced over the length ({source})</source>
+        <translation>点数 = 区间数 + 1，在长度上等距分布（{source}）</translation>
+    </message>
+    <message>
+        <source>{n} values for {points} points over {length}</source>
+        <translation>{n} 个值对应 {length} 上的 {points} 个点</translation>
+    </message>
+    <message>
+        <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points</source>
+        <translation>Mach4 丝杠映射 {axis}：起点 {start}，长度 {length}，{n} 个点</translation>
+    </message>
+    <message>
+        <source>machine axis name, e.g. AX1 or X1</source>
+        <translation>机床轴名，例如 AX1 或 X1</translation>
+    </message>
+    <message>
+        <source>measuring system the table is for: 1 or 2</source>
+        <translation>该表所属测量系统：1 或 2</translation>
+    </message>
+    <message>
+        <source>measuring systems the axis has (MD30200 NUM_ENCS)</source>
+        <translation>该轴的测量系统数（MD30200 NUM_ENCS）</translation>
+    </message>
+    <message>
+        <source>MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: not checked, the file states what it needs)</source>
+        <translation>该轴的 MD38000 MM_ENC_COMP_MAX_POINTS（0：不检查，文件中注明所需值）</translation>
+    </message>
+    <message>
+        <source>a rotary axis&apos;s turn, e.g. 360 (0: not modulo)</source>
+        <translation>旋转轴一整圈，例如 360（0：非模态）</translation>
+    </message>
+    <message>
+        <source>one table per measuring system ({source})</source>
+        <translation>每个测量系统仅一张表（{source}）</translation>
+    </message>
+    <message>
+        <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH</source>
+        <translation>请由双向平均值导出一张表；反向差值应设于 MD32450 BACKLASH</translation>
+    </message>
+    <message>
+        <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
+        <translation>测量系统（K3；MD30200 NUM_ENCS = {encoders}）</translation>
+    </message>
+    <message>
+        <source>a table for measuring system {system} is never applied on an axis with {encoders}</source>
+        <translation>测量系统 {system} 的表在只有 {encoders} 个测量系统的轴上永远不会生效</translation>
+    </message>
+    <message>
+        <source>STEP divides MAX − MIN ({source})</source>
+        <translation>STEP 须整除 MAX − MIN（{source}）</translation>
+    </message>
+    <message>
+        <source>step {step} over {minimum}…{maximum} with {n} values</source>
+        <translation>步距 {step}，范围 {minimum}…{maximum}，共 {n} 个值</translation>
+    </message>
+    <message>
+        <source>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</source>
+        <translation>MD38000 MM_ENC_COMP_MAX_POINTS = {max_points}</translation>
+    </message>
+    <message>
+        <source>the values at {minimum} and {maximum} differ by {gap}</source>
+        <translation>{minimum} 与 {maximum} 处的值相差 {gap}</translation>
+    </message>
+    <message>
+        <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
+        <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
+    </message>
+    <message>
+        <source>prefix of the PLC variables, e.g. Axis1</source>
+        <translation>PLC 变量名前缀，例如 Axis1</translation>
+    </message>
+    <message>
+        <source>a modulo axis&apos;s period, e.g. 360 (0: linear)</source>
+        <translation>模态轴周期，例如 360（0：直线轴）</translation>
+    </message>
+    <message>
+        <source>&apos;{name}&apos; is not a PLC identifier</source>
+        <translation>“{name}”不是合法的 PLC 标识符</translation>
+    </message>
+    <message>
+        <source>equidistant, monotonically increasing table ({source})</source>
+        <translation>等间距、单调递增的表（{source}）</translation>
+    </message>
+    <message>
+        <source>the positions are not equally spaced and ascending</source>
+        <translation>位置不等间距或不递增</translation>
+    </message>
+    <message>
+        <source>TwinCAT Tc2_MC2 position compensation table(s) {name}, {n} elements</source>
+        <translation>TwinCAT Tc2_MC2 位置补偿表 {name}，{n} 个元素</translation>
+    </message>
+    <message>
+        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
+        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
+    </message>
+    <message>
+        <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator&apos;s vertical along the shaft); the pyramidal correction is that set-up&apos;s, by exact 3-D rotation: the polygon&apos;s own term plus the autocollimator&apos;s roll times the vertical reading&apos;s change.</source>
+        <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll measured {roll} (u = {u}) and corrected.</source>
+        <translation>自准直仪滚转实测为 {roll}（u = {u}），已修正。</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll not measured: up to ±{roll}, not corrected, in the uncertainty.</source>
+        <translation>自准直仪滚转未实测：最大 ±{roll}，未修正，计入不确定度。</translation>
+    </message>
+    <message>
+        <source>To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the vertical reading changes by Δy and watch the horizontal reading: on a levelled bench it moves by less than the roll bound times Δy; if it moves more, measure that ratio (the roll) and enter it.</source>
+        <translation>判断装置属于哪种安置：使某一面（或轴上的反射镜）俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
+    </message>
+    <message>
+        <source>the shaft</source>
+        <translation>转轴</translation>
+    </message>
+    <message>
+        <source>the polygon&apos;s axis</source>
+        <translation>多面棱体轴线</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll ρ (cross-talk ρ·(y − y_z))</source>
+        <translation>自准直仪滚转 ρ（串扰 ρ·(y − y_z)）</translation>
+    </message>
+    <message>
+        <source>measured roll {roll} relative to {vertical}, corrected; its standard uncertainty {u} times the vertical reading&apos;s change from the zero face</source>
+        <translation>相对于{vertical}的实测滚转 {roll}，已修正；其标准不确定度 {u} 乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>roll relative to {vertical} up to ±{roll} (stated, not measured, not corrected) times the vertical reading&apos;s change from the zero face</source>
+        <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
+        <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
+    </message>
+    <message>
+        <source>Autocollimator set-up</source>
+        <translation>自准直仪安置</translation>
+    </message>
+    <message>
+        <source>levelled with the rotary axis (vertical along the shaft)</source>
+        <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll</source>
+        <translation>自准直仪滚转</translation>
+    </message>
+    <message>
+        <source>measured {roll}, corrected</source>
+        <translation>实测 {roll}，已修正</translation>
+    </message>
+    <message>
+        <source>not measured, up to ±{roll}</source>
+        <translation>未实测，最大 ±{roll}</translation>
+    </message>
+    <message>
+        <source>Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)</source>
+        <translation>反向差 B（最大 |x̄↑ − x̄↓|，ISO 230-2）</translation>
+    </message>
+    <message>
+        <source>mean B̄ = {b} (ISO 230-2: deviation x = reference − indicated, forward minus reverse; = mean of ē↓ − ē↑ of the errors)</source>
+        <translation>平均 B̄ = {b}（ISO 230-2：偏差 x = 参考值 − 示值，正向减反向；即误差 ē↓ − ē↑ 的平均）</translation>
+    </message>
+    <message>
+        <source>3-D simulation in seed 001&apos;s frame (ψ = 900″), set as such: |corrected − true error|</source>
+        <translation>种子 001 坐标系下的三维仿真（ψ = 900″），按此设置：|修正后 − 真误差|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, levelled, autocollimator pitched 0.5° and rolled 2′ (measured by a tilt test): |corrected − true error|</source>
+        <translation>三维仿真，调平安置，自准直仪俯仰 0.5°、滚转 2′（由俯仰试验测得）：|修正后 − 真误差|</translation>
+    </message>
+    <message>
+        <source>AC roll measured</source>
+        <translation>自准直仪滚转实测值</translation>
+    </message>
+    <message>
+        <source>AC roll ≤</source>
+        <translation>自准直仪滚转 ≤</translation>
+    </message>
+    <message>
+        <source>Largest roll of the autocollimator about its line of sight, relative to the set-up&apos;s vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)</source>
+        <translation>未实测时，自准直仪绕其视轴相对于安置竖直方向的最大滚转：它使部分竖直读数进入水平读数（不确定度分量）</translation>
+    </message>
+    <message>
+        <source>Measured roll ρ of the autocollimator about its line of sight: the horizontal reading&apos;s change per unit change of the vertical one (tilt a face and watch both readings), + when both rise together; corrected when its uncertainty is given</source>
+        <translation>自准直仪绕其视轴的实测滚转 ρ：水平读数随竖直读数单位变化的变化量（使某一面俯仰并观察两个读数），二者同增为 +；给出其不确定度时予以修正</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
+        <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
+    </message>
+    <message>
+        <source>Table 1 of the seed: the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
+        <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
+    </message>
+    <message>
+        <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
+        <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>cos</source>
+        <translation>cos</translation>
+    </message>
+    <message>
+        <source>grade 1: ±0.25&quot;</source>
+        <translation>1 级：±0.25&quot;</translation>
+    </message>
+    <message>
+        <source>grade 2: ±0.5&quot;</source>
+        <translation>2 级：±0.5&quot;</translation>
+    </message>
+    <message>
+        <source>grade 3: ±1&quot;</source>
+        <translation>3 级：±1&quot;</translation>
+    </message>
+    <message>
+        <source>grade 4: ±2&quot;</source>
+        <translation>4 级：±2&quot;</translation>
+    </message>
+    <message>
+        <source>grade 5: ±5&quot;</source>
+        <translation>5 级：±5&quot;</translation>
+    </message>
+    <message>
+        <source>grade 6: ±10&quot;</source>
+        <translation>6 级：±10&quot;</translation>
+    </message>
+    <message>
+        <source>grade 7: ±30&quot;</source>
+        <translation>7 级：±30&quot;</translation>
+    </message>
+    <message>
+        <source>u(AC roll measured)</source>
+        <translation>u(自准直仪滚转实测值)</translation>
+    </message>
+    <message>
+        <source>autocollimator set-up</source>
+        <translation>自准直仪安置</translation>
+    </message>
+    <message>
+        <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
+        <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} ({how}): the fixture is fine.</source>
+        <translation>棱锥倾斜 ψ = {psi}，在 {grade} 级允许的 {allowed} 以内（{how}）：安装良好。</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}): {advice}; then re-zero and measure again.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）：{advice}；然后重新置零并重测。</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt ψ = {psi} exceeds the {allowed} allowed for grade {grade} ({how}); the error it induces was identified and removed.</source>
+        <translation>棱锥倾斜 ψ = {psi}，超过 {grade} 级允许的 {allowed}（{how}）；其引起的误差已辨识并扣除。</translation>
+    </message>
+    <message>
+        <source>levelled set-up</source>
+        <translation>调平安置</translation>
+    </message>
+    <message>
+        <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets&apos; error minus reverse sets&apos;)</source>
+        <translation>，反向差 |ē↑ − ē↓| 最大 {value}（ē↑ − ē↓ 平均 {mean}：正向测回误差减反向测回误差）</translation>
+    </message>
+    <message>
+        <source>undefined</source>
+        <translation>无定义</translation>
+    </message>
+    <message>
+        <source>amplitude not significant (A{k} ≤ U)</source>
+        <translation>幅值不显著（A{k} ≤ U）</translation>
+    </message>
+    <message>
+        <source>hand-computed example</source>
+        <translation>手算示例</translation>
+    </message>
+    <message>
+        <source>published table</source>
+        <translation>公开发表的表</translation>
+    </message>
+    <message>
+        <source>ISO 230-2 worked by hand (2 targets, 3 runs each way): {figure}</source>
+        <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1&quot; everywhere. Forward means 2&quot; and 4&quot;, backward 0&quot; and 1&quot;: E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
+        <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
+    </message>
+    <message>
+        <source>Uncertainty and decision (all workbenches)</source>
+        <translation>不确定度与判定（所有工作台）</translation>
+    </message>
+    <message>
+        <source>coverage factor k for ν = {nu}</source>
+        <translation>ν = {nu} 时的包含因子 k</translation>
+    </message>
+    <message>
+        <source>decision rule {rule}: {x}&quot; against T = 1&quot;, w = 0.2&quot;</source>
+        <translation>判定规则 {rule}：{x}&quot;，T = 1&quot;，w = 0.2&quot;</translation>
+    </message>
+    <message>
+        <source>Register changed after issue</source>
+        <translation>登记册在签发后被改动</translation>
+    </message>
+    <message>
+        <source>Model / type</source>
+        <translation>型号/规格</translation>
+    </message>
+    <message>
+        <source>Customer&apos;s site (where)</source>
+        <translation>委托方现场（地点）</translation>
+    </message>
+    <message>
+        <source>at the laboratory</source>
+        <extracomment>where the calibration was made (ISO/IEC 17025 7.8.2.1 c): the laboratory&apos;s own premises, or the customer&apos;s site (its address in ``calibration_site``)</extracomment>
+        <translation>在实验室内</translation>
+    </message>
+    <message>
+        <source>at the customer&apos;s site</source>
+        <translation>在委托方现场</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;example&apos; must be true or false</source>
+        <translation>证书字段“example”必须为 true 或 false</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;calibration_place&apos; must be one of {join}, not &apos;{place}&apos;</source>
+        <translation>证书字段“calibration_place”必须是 {join} 之一，而不是“{place}”</translation>
+    </message>
+    <message>
+        <source>certificate fields &apos;calibration_date&apos; {calibration} and &apos;issue_date&apos; {issue}: a certificate cannot be issued before the calibration it reports</source>
+        <translation>证书字段“calibration_date”{calibration} 与“issue_date”{issue}：证书不能在其报告的校准之前签发</translation>
+    </message>
+    <message>
+        <source>approver</source>
+        <translation>批准人</translation>
+    </message>
+    <message>
+        <source>the customer&apos;s site where it was calibrated</source>
+        <translation>校准所在的委托方现场</translation>
+    </message>
+    <message>
+        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only)</source>
+        <translation>要核验的 PDF（不给出时：只核验登记册的哈希链和所存 PDF）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {problem}</source>
+        <translation>签发后被改动：{problem}</translation>
+    </message>
+    <message>
+        <source>register: hash chain intact over {n} record(s), every stored PDF matches its SHA-256; chain head {head}</source>
+        <translation>登记册：{n} 条记录的哈希链完整，所存每个 PDF 与其 SHA-256 相符；链头 {head}</translation>
+    </message>
+    <message>
+        <source>{path}: {number} is no longer valid: superseded by {by} (see &apos;anglebench register show {by}&apos;)</source>
+        <translation>{path}：{number} 已不再有效：已被 {by} 取代（见“anglebench register show {by}”）</translation>
+    </message>
+    <message>
+        <source>anglebench register: WARNING: {problem}</source>
+        <translation>anglebench register：警告：{problem}</translation>
+    </message>
+    <message>
+        <source>Place of calibration</source>
+        <translation>校准地点</translation>
+    </message>
+    <message>
+        <source>— End of certificate {number} —</source>
+        <translation>— 证书 {number} 结束 —</translation>
+    </message>
+    <message>
+        <source>A draft prints this date; an issued certificate is dated the day the register issues it</source>
+        <translation>草稿打印此日期；签发的证书以登记册签发之日为签发日期</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: these are the bundled example details (&quot;example&quot;: true): the certificate is issued in a register of its own, deleted afterwards; your register is not touched</source>
+        <translation>anglebench analyze：这是随附的示例信息（&quot;example&quot;: true）：证书签发到其专用的登记册中，之后即删除；您的登记册不受影响</translation>
+    </message>
+    <message>
+        <source>{number} was issued on {original}: an amendment or replacement cannot be dated {today}, before it (check the computer&apos;s clock)</source>
+        <translation>{number} 签发于 {original}：其修订或替换证书不能早于它，日期不能为 {today}（请检查计算机时钟）</translation>
+    </message>
+    <message>
+        <source>the stored PDF of {number} no longer matches the SHA-256 recorded when it was issued: it was changed in the database; it is not exported</source>
+        <translation>{number} 所存的 PDF 与签发时记录的 SHA-256 不再相符：它在数据库中被改动过；不予导出</translation>
+    </message>
+    <message>
+        <source>record {number}: the hash chain is broken here (this record, or one before it, was changed, inserted or deleted after issue)</source>
+        <translation>记录 {number}：哈希链在此断开（此记录或其前面的记录在签发后被改动、插入或删除）</translation>
+    </message>
+    <message>
+        <source>record {number}: the stored PDF does not match the SHA-256 recorded at issue</source>
+        <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
+    </message>
+    <message>
+        <source>record {number}: marked &quot;{status}&quot; (superseded by {marked}), but the register&apos;s records say {by}</source>
+        <translation>记录 {number}：标为“{status}”（被 {marked} 取代），但登记册的记录表明{by}</translation>
+    </message>
+    <message>
+        <source>superseded by {number}</source>
+        <translation>已被 {number} 取代</translation>
+    </message>
+    <message>
+        <source>issued, superseded by none</source>
+        <translation>已签发，未被取代</translation>
+    </message>
+    <message>
+        <source>an issued certificate needs the name of the person who approves it (&quot;Approved by&quot;); without one it can only be written as a draft</source>
+        <translation>签发的证书需要批准人的姓名（“批准人”）；没有批准人只能写成草稿</translation>
+    </message>
+    <message>
+        <source>the date of calibration {calibration} is after the date of issue {today} (the day the register issues it): a certificate reports a calibration already made</source>
+        <translation>校准日期 {calibration} 晚于签发日期 {today}（登记册签发之日）：证书只能报告已完成的校准</translation>
+    </message>
+    <message>
+        <source>print the version and the source&apos;s commit (or, installed without git, the digest of its source files), then exit</source>
+        <translation>显示版本和源代码的提交号（未用 git 安装时为源文件的摘要），然后退出</translation>
+    </message>
+    <message>
+        <source>Check figures: the published figure to the digits it is printed with (the tolerance is half its last digit); a published table likewise.</source>
+        <extracomment>each kind of case&apos;s acceptance criterion, and why it is that</extracomment>
+        <translation>校核数值：与发表值在其印出的位数上一致（容差为末位的一半）；公开发表的表同样如此。</translation>
+    </message>
+    <message>
+        <source>Exact simulations and examples worked by hand: agreement to 0.0001&quot; or better, far below any uncertainty a certificate states (its U is 0.01&quot; or more): what remains is rounding, not method.</source>
+        <translation>精确仿真和手算示例：一致到 0.0001&quot; 或更好，远小于证书给出的任何不确定度（其 U 为 0.01&quot; 或更大）：剩下的是舍入误差，而非方法误差。</translation>
+    </message>
+    <message>
+        <source>Budget against Monte Carlo: the spread of N simulated runs estimates a standard uncertainty to about 1/√(2N) (relative); the budget&apos;s u must agree within three times that, at least 10 %, over all points, and within four times that, at least 25 %, at the worst point of a curve (with N = 200: 15 % and 25 %; a worst point of 24 % passes by that margin, not by chance: over some 40 points the largest of their sampling errors reaches about 3 × 5 %, and a budget off by a quarter at one point would still be caught).</source>
+        <translation>不确定度评定对蒙特卡洛：N 次仿真的分散性估计标准不确定度的相对误差约为 1/√(2N)；评定的 u 在全部点上须一致到其三倍以内（至少 10 %），在曲线最差点上须一致到其四倍以内（至少 25 %）（N = 200 时为 15 % 和 25 %；最差点 24 % 是按此余量通过，而非偶然：约 40 个点中抽样误差的最大值可达约 3 × 5 %，而某一点偏差四分之一的评定仍会被发现）。</translation>
+    </message>
+    <message>
+        <source>Software cases: exact (every name and figure found in the PDF&apos;s text; the register finds what it issued and reports what was changed; a file reads to the same numbers as numpy.loadtxt).</source>
+        <translation>软件用例：精确（PDF 文本中找到每个名称和数值；登记册找到其签发的证书并报告被改动之处；文件读出的数值与 numpy.loadtxt 相同）。</translation>
+    </message>
+    <message>
+        <source>Software (all workbenches)</source>
+        <translation>软件（所有工作台）</translation>
+    </message>
+    <message>
+        <source>exact, end to end</source>
+        <translation>精确，端到端</translation>
+    </message>
+    <message>
+        <source>certificate text as extracted from the PDF (zh, Latin-only lab name)</source>
+        <translation>从 PDF 提取的证书文本（中文，实验室名称仅含拉丁字母）</translation>
+    </message>
+    <message>
+        <source>lab name on {pages} of {pages} pages, {n} of {n} figures</source>
+        <translation>{pages} 页中 {pages} 页有实验室名称，{n} 个数值中 {n} 个</translation>
+    </message>
+    <message>
+        <source>lab name on {named} of {pages} pages, {found} of {n} figures</source>
+        <translation>{pages} 页中 {named} 页有实验室名称，{n} 个数值中 {found} 个</translation>
+    </message>
+    <message>
+        <source>register: issue, verify, a PDF and its hash rewritten in the database</source>
+        <translation>登记册：签发、核验、在数据库中改写 PDF 及其哈希值</translation>
+    </message>
+    <message>
+        <source>verified; the change reported</source>
+        <translation>核验通过；改动被报告</translation>
+    </message>
+    <message>
+        <source>verified: {verified}; changes reported: {caught}</source>
+        <translation>核验：{verified}；报告的改动：{caught}</translation>
+    </message>
+    <message>
+        <source>file import of {file}, as written and with decimal commas, against numpy.loadtxt</source>
+        <translation>导入文件 {file}（原样及小数逗号形式），与 numpy.loadtxt 比较</translation>
+    </message>
+    <message>
+        <source>Document ID</source>
+        <translation>文件编号</translation>
+    </message>
+    <message>
+        <source>Four workbenches. Three use non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T 17421.2). For each: the publication&apos;s check figures or, for the standard method, examples worked by hand; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase, an axis with a known error and lost motion) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101). Then what every workbench shares: the coverage factor k from ν, the decision rules, the certificate&apos;s text as a reader extracts it from the PDF, the register, and file import.</source>
+        <translation>四个工作台。其中三个采用非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。第四个，轴线定位，采用标准方法（ISO 230-2、VDI/DGQ 3441、GB/T 17421.2）。对每个工作台：论文的校核数值，或对标准方法为手算示例；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号、误差和反向间隙已知的轴线）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。然后是各工作台共用的部分：由 ν 求包含因子 k、判定规则、从 PDF 提取的证书文本、登记册和文件导入。</translation>
+    </message>
+    <message>
+        <source>Acceptance criteria</source>
+        <translation>验收准则</translation>
+    </message>
+    <message>
+        <source>ADC LSB</source>
+        <translation>ADC 最低有效位</translation>
+    </message>
+    <message>
+        <source>ADC gain ratio u</source>
+        <translation>ADC 增益比 u</translation>
+    </message>
+    <message>
+        <source>ADC linearity ±</source>
+        <translation>ADC 线性度 ±</translation>
+    </message>
+    <message>
+        <source>ADC offset u</source>
+        <translation>ADC 偏置 u</translation>
+    </message>
+    <message>
+        <source>expansion coefficient</source>
+        <translation>线膨胀系数</translation>
+    </message>
+    <message>
+        <source>reference resolution</source>
+        <translation>参考仪器分辨力</translation>
+    </message>
+    <message>
+        <source>the sampling&apos;s uniformity (the timing of the samples)</source>
+        <extracomment>what the phase reference is, by where the phase came from</extracomment>
+        <translation>采样的均匀性（各采样点的时刻）</translation>
+    </message>
+    <message>
+        <source>the θ reference&apos;s stated U</source>
+        <translation>θ 参考给出的 U</translation>
+    </message>
+    <message>
+        <source>the phase estimation&apos;s validated limit</source>
+        <translation>相位估计经确认的限值</translation>
+    </message>
+    <message>
+        <source>Phase reference</source>
+        <translation>相位参考</translation>
+    </message>
+    <message>
+        <source>{what}: u = {u}° of a period (stated)</source>
+        <translation>{what}：u = 一个周期的 {u}°（给定值）</translation>
+    </message>
+    <message>
+        <source>ADC quantisation</source>
+        <translation>ADC 量化</translation>
+    </message>
+    <message>
+        <source>LSB {lsb} mV: LSB/√12 in each channel (also in the residuals&apos; scatter: counted twice, on the safe side)</source>
+        <translation>最低有效位 {lsb} mV：每通道 LSB/√12（也包含在残差的分散性中：重复计入，偏于安全）</translation>
+    </message>
+    <message>
+        <source>ADC offset</source>
+        <translation>ADC 偏置</translation>
+    </message>
+    <message>
+        <source>u = {u} mV in each channel (stated); taken as the ADC&apos;s, not the read head&apos;s</source>
+        <translation>每通道 u = {u} mV（给定值）；视为 ADC 的偏置，而非读数头的</translation>
+    </message>
+    <message>
+        <source>ADC gain ratio</source>
+        <translation>ADC 增益比</translation>
+    </message>
+    <message>
+        <source>u = {u} % of the ratio of the channels&apos; gains (stated)</source>
+        <translation>两通道增益之比的 u = {u} %（给定值）</translation>
+    </message>
+    <message>
+        <source>ADC linearity</source>
+        <translation>ADC 线性度</translation>
+    </message>
+    <message>
+        <source>integral nonlinearity ±{a} mV in each channel (stated)</source>
+        <translation>每通道积分非线性 ±{a} mV（给定值）</translation>
+    </message>
+    <message>
+        <source>the phase reference ({what}) has no stated uncertainty</source>
+        <translation>相位参考（{what}）未给出不确定度</translation>
+    </message>
+    <message>
+        <source>quantisation</source>
+        <translation>量化</translation>
+    </message>
+    <message>
+        <source>offset</source>
+        <translation>偏置</translation>
+    </message>
+    <message>
+        <source>gain</source>
+        <translation>增益</translation>
+    </message>
+    <message>
+        <source>linearity</source>
+        <translation>线性度</translation>
+    </message>
+    <message>
+        <source>the ADC&apos;s {figures} have no stated uncertainty</source>
+        <translation>ADC 的{figures}未给出不确定度</translation>
+    </message>
+    <message>
+        <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
+        <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
+    </message>
+    <message>
+        <source>The first {per} samples are shown (every {step}-th), and the samples with the extremes of each error and the largest U; all {n} samples are in the CSV/XLSX results export.</source>
+        <translation>列出前 {per} 个采样点（每 {step} 个取一个），以及各误差取极值和 U 最大的采样点；全部 {n} 个采样点在 CSV/XLSX 结果导出文件中。</translation>
+    </message>
+    <message>
+        <source>Results per sample (compensated = raw + correction)</source>
+        <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
+        <translation>符合性按校准前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
+    </message>
+    <message>
+        <source>The compensated error is the error the correction table is expected to leave, if the signals stay as they were measured.</source>
+        <translation>补偿后误差是在信号保持测量时状态的前提下，预计修正表施加后剩余的误差。</translation>
+    </message>
+    <message>
+        <source>the error is not traceable: {what}</source>
+        <translation>误差不具有溯源性：{what}</translation>
+    </message>
+    <message>
+        <source>Repeatability was not evaluated: one set and no vertical readings, so nothing in U covers the scatter of the readings; U understates the uncertainty by it.</source>
+        <translation>未评定重复性：仅一个测回且无竖直读数，因此 U 中没有分量覆盖读数的分散性；U 因此低估了不确定度。</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice; in U the autocollimator&apos;s reading noise from the tilt fits stands for it</source>
+        <translation>没有方向被测量两次；U 中以塔差拟合得到的自准直仪读数噪声代替</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice and there are no vertical readings: nothing in U covers it</source>
+        <translation>没有方向被测量两次，且无竖直读数：U 中没有分量覆盖它</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty at a target from the reference&apos;s alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated</source>
+        <translation>参考仪器相对于轴线的对准（余弦误差、偏心）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty at a target from the temperatures (the axis&apos; expansion and its compensation, the reference&apos;s environment), in the deviation unit. 0: not stated</source>
+        <translation>温度（轴的热膨胀及其补偿、参考仪器的环境）在各目标位置引起的标准不确定度，以偏差单位表示。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of each channel&apos;s ADC offset, from its calibration. 0: not stated</source>
+        <translation>各通道 ADC 偏置的标准不确定度，取自其校准。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k, with an estimated phase the method&apos;s validated limit. 0: not stated</source>
+        <translation>各采样点相位的标准不确定度，以信号周期的度数表示：N 等分步长时为采样的均匀性（各采样点的时刻），有 θ 列时为其参考给出的 U / k，相位由估计得出时为该方法经确认的限值。0：未给出</translation>
+    </message>
+    <message>
+        <source>Standard uncertainty of the ratio of the two channels&apos; ADC gains (a gain common to both does not move the phase). 0: not stated</source>
+        <translation>两通道 ADC 增益之比的标准不确定度（两通道共同的增益不改变相位）。0：未给出</translation>
+    </message>
+    <message>
+        <source>Temperature of the axis (its scale or encoder) during the test (ISO 230-2, clause 8). 0: not stated</source>
+        <translation>检测期间轴（其标尺或编码器）的温度（ISO 230-2 第 8 章）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The ADC&apos;s integral nonlinearity limit ±a per channel (rectangular). 0: not stated</source>
+        <translation>每通道 ADC 积分非线性限值 ±a（矩形分布）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The ADC&apos;s step (quantisation LSB/√12 per channel). 0: not stated</source>
+        <translation>ADC 的量化步长（每通道量化 LSB/√12）。0：未给出</translation>
+    </message>
+    <message>
+        <source>The axis&apos; set-up (ISO 230-2, clause 8): position of the reference, load, feed, dwell at each target, other axes&apos; positions</source>
+        <translation>轴的安装状态（ISO 230-2 第 8 章）：参考仪器的位置、负载、进给速度、各目标位置的停留时间、其他轴的位置</translation>
+    </message>
+    <message>
+        <source>The nominal expansion coefficient the compensation used (linear axes; ISO 230-2, clause 8). 0: not stated</source>
+        <translation>补偿所用的名义线膨胀系数（直线轴；ISO 230-2 第 8 章）。0：未给出</translation>
+    </message>
+    <message>
+        <source>Set-up parameters: azimuths are counted from the theodolite&apos;s azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis&apos; upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed&apos;s E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
+        <extracomment>what ψ, α and β are (the frame of SPEC §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/test_certificate_uncertainty.py)</extracomment>
+        <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
+    </message>
+    <message>
+        <source>θ = {theta}° (row {row} of the results)</source>
+        <translation>θ = {theta}°（结果表第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>the zeroing reading, shared by every point: a second reading, independent of the point&apos;s own, but the same estimate s, so for ν_eff one input with the repeatability (ν counted once)</source>
+        <translation>置零读数，为各点共用：是与该点自身读数相互独立的另一个读数，但来自同一个估计值 s，因此计算 ν_eff 时与重复性合为一个输入量（ν 只计一次）</translation>
+    </message>
+    <message>
+        <source>Resolution of the reference&apos;s reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>
+        <translation>参考仪器读数的分辨力，以偏差单位表示（矩形分布，半宽 r/2）。0：未给出</translation>
+    </message>
+    <message>
+        <source>What the theodolite&apos;s vertical circle reads; E is the seed&apos;s, positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
+        <translation>经纬仪竖直度盘的读数；E 按原文定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
+    </message>
+    <message>
+        <source>axis set-up</source>
+        <translation>轴的安装状态</translation>
+    </message>
+    <message>
+        <source>axis temperature</source>
+        <translation>轴的温度</translation>
+    </message>
+    <message>
+        <source>misalignment u</source>
+        <translation>对准误差 u</translation>
+    </message>
+    <message>
+        <source>phase reference u</source>
+        <translation>相位参考 u</translation>
+    </message>
+    <message>
+        <source>temperature u</source>
+        <translation>温度 u</translation>
+    </message>
+    <message>
+        <source>Budget at {point}, the point with the largest U. k = {k} is Student&apos;s t for ν = {nu}, the effective degrees of freedom (Welch–Satterthwaite: {raw}) truncated to the lower integer (GUM G.6.4), and a coverage probability of {p} %; each point&apos;s U uses its own ν.</source>
+        <translation>分量一览表取自 {point}，即 U 最大的点。k = {k} 为 t 分布在 ν = {nu} 和包含概率 {p} % 时的值，ν 为有效自由度（韦尔奇–萨特思韦特公式：{raw}）向下取整（GUM G.6.4）；各点的 U 采用其自身的 ν。</translation>
+    </message>
+    <message>
+        <source>Opinion and interpretation (ISO/IEC 17025 7.8.7), not a measured result: {text}</source>
+        <translation>意见和解释（ISO/IEC 17025 7.8.7），并非测量结果：{text}</translation>
+    </message>
+    <message>
+        <source>{standard} (certificate {certificate}; its figures enter as the inputs stated in the settings: {inputs})</source>
+        <translation>{standard}（证书 {certificate}；其数据作为分析设置中给出的输入量计入：{inputs}）</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: not established for these results — {what}; no statement of conformity rests on them.</source>
+        <translation>计量溯源性：本结果未建立溯源性——{what}；不依据本结果作符合性声明。</translation>
+    </message>
+    <message>
+        <source>The standards listed with a certificate and a stated uncertainty: {names}.</source>
+        <translation>所列具有证书并给出不确定度的计量标准：{names}。</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: not established on this document — no reference standard with a calibration certificate and a stated uncertainty is listed.</source>
+        <translation>计量溯源性：本文件未建立——未列出具有校准证书并给出不确定度的计量标准。</translation>
+    </message>
+    <message>
+        <source>{standard}: no uncertainty stated, so it is no input of the budget and the results are not traceable through it.</source>
+        <translation>{standard}：未给出不确定度，因此不是不确定度分量，结果也不能通过它溯源。</translation>
+    </message>
+    <message>
+        <source>Misalignment of the reference</source>
+        <extracomment>the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)</extracomment>
+        <translation>参考仪器的对准误差</translation>
+    </message>
+    <message>
+        <source>Resolution of the reference</source>
+        <translation>参考仪器的分辨力</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>resolution {r}: rectangular, half-width r/2</source>
+        <translation>分辨力 {r}：矩形分布，半宽 r/2</translation>
+    </message>
+    <message>
+        <source>u = {r} at every target (stated)</source>
+        <translation>各目标位置 u = {r}（给定值）</translation>
+    </message>
+    <message>
+        <source>{figure}, U = {u}</source>
+        <translation>{figure}，U = {u}</translation>
+    </message>
+    <message>
+        <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
+        <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
+    </message>
+    <message>
+        <source>U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM 101, seed {seed}) from the inputs of the per-target U — each reading drawn about its target&apos;s mean with its s, each Type B input once per target and direction — and the figures evaluated as above; the central interval of {p} % about the median, printed −/+ where it is not symmetric.</source>
+        <translation>轴线各项指标的 U：以蒙特卡洛法（JCGM 101，随机种子 {seed}）由各目标位置 U 的输入量将检测重复 {trials} 次——各读数按其目标位置的平均值和 s 抽样，各 B 类输入量按每个目标位置和方向抽样一次——并按上述方法计算各项指标；取中位数附近包含概率 {p} % 的中心区间，不对称时以 −/+ 给出。</translation>
+    </message>
+    <message>
+        <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
+        <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
+    </message>
+    <message>
+        <source>Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget.</source>
+        <translation>未给出、因而未计入 U 的输入量：{inputs}。U 仅包含分量一览表中的输入量。</translation>
+    </message>
+    <message>
+        <source>No statement of conformity is possible: the expanded uncertainty U = {u} is not smaller than the tolerance T = {t}, so no result could be shown to lie within it.</source>
+        <translation>无法作符合性声明：扩展不确定度 U = {u} 不小于允差 T = {t}，任何结果都不能证明在其范围以内。</translation>
+    </message>
+    <message>
+        <source>point {n}</source>
+        <translation>第 {n} 点</translation>
+    </message>
+    <message>
+        <source>(at {point})</source>
+        <translation>（在 {point}）</translation>
+    </message>
+    <message>
+        <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
+        <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
+    </message>
+    <message>
+        <source>the interval&apos;s coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis&apos; curve, against the {p} % stated</source>
+        <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
+    </message>
+    <message>
+        <source>Certify these figures?</source>
+        <translation>为这些数值出具证书？</translation>
+    </message>
+    <message>
+        <source>{reason}
 
 Issue a certificate on this result anyway? Only if you have checked the readings and the figures are right.</source>
-            <translation>{reason}
+        <translation>{reason}
 
 仍要根据此结果出具证书吗？仅当您已核对读数且这些数值无误时才这样做。</translation>
-        </message>
-        <message>
-            <source>no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, B0 = {b0} V against amplitudes A1 = {a1} V, B1 = {b1} V; the measured phase atan2(u_sin, u_cos) turns {turns} times a period, not once), so no table over it can compensate: remove the offsets (differential signals A+ − A−, or the reference voltage) and analyse again</source>
-            <translation>不进行补偿：李萨如图形未环绕 0 V（偏置 A0 = {a0} V、B0 = {b0} V，而幅值 A1 = {a1} V、B1 = {b1} V；测得相位 atan2(u_sin, u_cos) 每周期转 {turns} 圈，而不是 1 圈），因此任何基于该相位的表都无法补偿：请去除偏置（差分信号 A+ − A−，或参考电压）后重新分析</translation>
-        </message>
-        <message>
-            <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
-            <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
-        </message>
-        <message>
-            <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>
-            <translation>不进行补偿：拟合信号的测得相位 atan2(u_sin, u_cos) 在一个周期内回转（李萨如图形在 0 V 附近打圈：偏置 A0 = {a0} V、B0 = {b0} V，幅值 A1 = {a1} V、B1 = {b1} V），因此基于该相位的表无法补偿</translation>
-        </message>
-        <message>
-            <source>no compensation: the correction table, applied to the fitted signals themselves, leaves {after} % of a period of their {before} % (peak-to-peak): it does not compensate these signals</source>
-            <translation>不进行补偿：修正表作用于拟合信号本身后，仍剩余一个周期的 {after} %（原为 {before} %，峰峰值）：它不能补偿这些信号</translation>
-        </message>
-        <message>
-            <source>*** ERRORS OF {degrees}° ({worst}): no encoder of grade 1–7 errs by more than arcseconds. Check the unit of the encoder column (degrees), the number of faces ({faces}) and the face numbering before trusting any figure; a certificate needs your confirmation. ***</source>
-            <translation>*** 误差达 {degrees}°（{worst}）：1–7 级编码器的误差不会超过角秒量级。采信任何数值之前，请检查编码器列的单位（度）、面数（{faces}）和面编号；出具证书需要您确认。***</translation>
-        </message>
-        <message>
-            <source>no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with R² below {min_r2}), R² = {r2}; the largest residual, {largest}, is at row {row}: check that row's readings, the columns and the accuracy setting</source>
-            <translation>没有任何安装状态能解释 {column} 读数：残差 RMS {rms} 是经纬仪精度 {accuracy} 的 {ratio} 倍（超过 {far} 倍，或 R² 低于 {min_r2} 时超过 {near} 倍，即拒绝），R² = {r2}；最大残差 {largest} 位于第 {row} 行：请检查该行读数、各列和精度设置</translation>
-        </message>
-        <message>
-            <source>row {row}, where the theodolite was zeroed (θ = {theta}°, A = {azimuth}°), disagrees with {bad} of the other {n} rows by more than ±{limit}: check columns 'theta_deg' and 'azimuth_deg' of that row, or the reference row</source>
-            <translation>第 {row} 行（经纬仪在此置零，θ = {theta}°，A = {azimuth}°）与其余 {n} 行中的 {bad} 行相差超过 ±{limit}：请检查该行的 'theta_deg' 和 'azimuth_deg' 列，或参考行</translation>
-        </message>
-        <message>
-            <source>row {row}: θ = {theta}° and A = {azimuth}° disagree by {error} after the set-up's share is removed ({bad} of {n} rows beyond ±{limit}; the zero is at row {zero}): no axis errs by that much: check columns 'theta_deg' and 'azimuth_deg' of that row</source>
-            <translation>第 {row} 行：扣除安装误差后，θ = {theta}° 与 A = {azimuth}° 相差 {error}（{n} 行中有 {bad} 行超过 ±{limit}；零位在第 {zero} 行）：没有任何轴系误差会这么大：请检查该行的 'theta_deg' 和 'azimuth_deg' 列</translation>
-        </message>
-        <message>
-            <source>issue the certificate although the result shows figures no instrument of the kind has (polygon: errors of degrees); you have checked the readings</source>
-            <translation>即使结果显示该类仪器不可能有的数值（polygon：误差达数度）也出具证书；表示您已核对读数</translation>
-        </message>
-        <message>
-            <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
-            <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
-        </message>
-        <message>
-            <source>Readings, run by run (colour: run; ↑ solid, ↓ dashed)</source>
-            <translation>逐次测量的读数（颜色：测次；↑ 实线，↓ 虚线）</translation>
-        </message>
-        <message>
-            <source>model</source>
-            <translation>模型</translation>
-        </message>
-        <message>
-            <source>raw</source>
-            <translation>原始</translation>
-        </message>
-        <message>
-            <source>readings typed in AngleBench</source>
-            <translation>在 AngleBench 中录入的读数</translation>
-        </message>
-        <message>
-            <source>View All</source>
-            <translation>显示全部</translation>
-        </message>
-        <message>
-            <source>Plot</source>
-            <translation>图</translation>
-        </message>
-        <message>
-            <source>X axis</source>
-            <translation>X 轴</translation>
-        </message>
-        <message>
-            <source>Y axis</source>
-            <translation>Y 轴</translation>
-        </message>
-        <message>
-            <source>Auto</source>
-            <translation>自动</translation>
-        </message>
-        <message>
-            <source>Manual</source>
-            <translation>手动</translation>
-        </message>
-        <message>
-            <source>Invert axis</source>
-            <translation>坐标轴反向</translation>
-        </message>
-        <message>
-            <source>Mouse enabled</source>
-            <translation>允许鼠标缩放平移</translation>
-        </message>
-        <message>
-            <source>Visible data only</source>
-            <translation>仅按可见数据</translation>
-        </message>
-        <message>
-            <source>Auto pan only</source>
-            <translation>仅自动平移</translation>
-        </message>
-        <message>
-            <source>Link axis:</source>
-            <translation>联动坐标轴：</translation>
-        </message>
-        <message>
-            <source>readings per point n</source>
-            <translation>每点读数次数 n</translation>
-        </message>
-        <message>
-            <source>Repeated readings (s/√n)</source>
-            <translation>重复读数（s/√n）</translation>
-        </message>
-        <message>
-            <source>s/√n of the {n} encoder and autocollimator readings at each face, over the sets; ν = {dof}</source>
-            <translation>各面 {n} 次编码器与自准直仪读数的 s/√n，按测回合成；ν = {dof}</translation>
-        </message>
-        <message>
-            <source>Repeated readings at the zero face (s/√n)</source>
-            <translation>零位面的重复读数（s/√n）</translation>
-        </message>
-        <message>
-            <source>s/√n of the {n} readings at face {face} of set 1, shared by every set</source>
-            <translation>第 1 测回第 {face} 面 {n} 次读数的 s/√n，各测回共用</translation>
-        </message>
-        <message>
-            <source>s/√n of the {n} azimuth readings at each point, ν = {dof}</source>
-            <translation>各点 {n} 次方位角读数的 s/√n，ν = {dof}</translation>
-        </message>
-        <message>
-            <source>Repeated readings at θ₀ (s/√n)</source>
-            <translation>θ₀ 处的重复读数（s/√n）</translation>
-        </message>
-        <message>
-            <source>s/√n of the {n} readings at the reference point, shared by every point</source>
-            <translation>参考点 {n} 次读数的 s/√n，各点共用</translation>
-        </message>
-        <message>
-            <source>n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input 'Repeated readings'. 1: every row is a point</source>
-            <translation>每个点（面、目标位置或 θ）连续读取 n 次：每 n 行为一个点，取平均；其 s/√n（ν = n − 1）作为 A 类分量“重复读数”计入不确定度评定。1：每行为一个点</translation>
-        </message>
-        <message>
-            <source>O&amp;verlay a run…</source>
-            <translation>叠加另一次测量(&amp;V)…</translation>
-        </message>
-        <message>
-            <source>Draw another run of this workbench against today's: a readings or project file (before/after compensation …)</source>
-            <translation>将本工作台的另一次测量与本次画在同一坐标上：读数文件或项目文件（补偿前/后 …）</translation>
-        </message>
-        <message>
-            <source>Overlay a certificate from the register…</source>
-            <translation>叠加登记册中的证书…</translation>
-        </message>
-        <message>
-            <source>Draw this instrument's earlier certificate against today's run</source>
-            <translation>将该仪器以前的证书与本次测量画在同一坐标上</translation>
-        </message>
-        <message>
-            <source>Remove the overlaid run</source>
-            <translation>移除叠加的测量</translation>
-        </message>
-        <message>
-            <source>s/√n of the {n} readings at each approach, over the runs of the target; ν = {dof}</source>
-            <translation>每次趋近 {n} 次读数的 s/√n，按该目标位置的各次循环合成；ν = {dof}</translation>
-        </message>
-        <message>
-            <source>Overlay a run on {workbench}</source>
-            <translation>在{workbench}上叠加另一次测量</translation>
-        </message>
-        <message>
-            <source>Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)</source>
-            <translation>读数或项目 (*.csv *.txt *.xlsx *.xlsm *.json);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Overlay a certificate</source>
-            <translation>叠加证书</translation>
-        </message>
-        <message>
-            <source>Certificate of this workbench:</source>
-            <translation>本工作台的证书：</translation>
-        </message>
-        <message>
-            <source>Cannot overlay</source>
-            <translation>无法叠加</translation>
-        </message>
-        <message>
-            <source>{workbench} has no error curve to overlay a run on.</source>
-            <translation>{workbench}没有可叠加的误差曲线。</translation>
-        </message>
-        <message>
-            <source>The register holds no certificate of {workbench}.</source>
-            <translation>登记册中没有{workbench}的证书。</translation>
-        </message>
-        <message>
-            <source>{n} readings per point, but the last point has {count} (row {row} on): add its missing readings or remove the extra ones</source>
-            <extracomment>the setting every workbench with repeated readings declares</extracomment>
-            <translation>每点 {n} 次读数，但最后一个点只有 {count} 次（自第 {row} 行起）：补齐缺少的读数或删去多余的读数</translation>
-        </message>
-        <message>
-            <source>rows {row} and {row2} are readings {j} and 1 of one point ({n} readings per point), but their '{column}' differs: check for a missing or extra reading</source>
-            <translation>第 {row} 行和第 {row2} 行是同一点的第 {j} 次和第 1 次读数（每点 {n} 次），但其“{column}”不同：请检查是否缺少或多出读数</translation>
-        </message>
-        <message>
-            <source>row {row}: '{column}' is blank, but the other readings of its point have it: give every reading of a point the same columns</source>
-            <translation>第 {row} 行：“{column}”为空，但该点的其他读数有此项：同一点的每次读数应填写相同的列</translation>
-        </message>
-        <message>
-            <source>the other run has no corrected curve to draw</source>
-            <translation>另一次测量没有可绘制的修正后曲线</translation>
-        </message>
-        <message>
-            <source>the {workbench} workbench has no error curve to overlay</source>
-            <translation>{workbench}工作台没有可叠加的误差曲线</translation>
-        </message>
-        <message>
-            <source>{label}: the run cannot be analysed: {reason}</source>
-            <translation>{label}：无法分析该次测量：{reason}</translation>
-        </message>
-        <message>
-            <source>{label} holds no readings of the {workbench} workbench</source>
-            <translation>{label} 中没有{workbench}工作台的读数</translation>
-        </message>
-        <message>
-            <source>other run: {name}</source>
-            <translation>另一次测量：{name}</translation>
-        </message>
-        <message>
-            <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register, anglebench capture; each has --help.</source>
-            <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register、anglebench capture；各有 --help。</translation>
-        </message>
-        <message>
-            <source>{text}: give a number greater than 0</source>
-            <translation>{text}：请给出大于 0 的数</translation>
-        </message>
-        <message>
-            <source>Capture readings from an instrument into a CSV</source>
-            <translation>从仪器采集读数，写入 CSV</translation>
-        </message>
-        <message>
-            <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM) or readout (one line per reading)</source>
-            <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（徕卡 GeoCOM 经纬仪）或 readout（每个读数一行的数显表）</translation>
-        </message>
-        <message>
-            <source>a serial port (/dev/ttyUSB0, COM3) or tcp://host:port</source>
-            <translation>串口（/dev/ttyUSB0、COM3）或 tcp://host:port</translation>
-        </message>
-        <message>
-            <source>the CSV to write</source>
-            <translation>要写入的 CSV</translation>
-        </message>
-        <message>
-            <source>baud rate, as set on the instrument (default 9600)</source>
-            <translation>波特率，与仪器上的设置一致（默认 9600）</translation>
-        </message>
-        <message>
-            <source>how many readings (default 1)</source>
-            <translation>读数个数（默认 1）</translation>
-        </message>
-        <message>
-            <source>take a reading when the spread of the frames stays within WINDOW (arcsec; a readout's own unit) for --dwell seconds</source>
-            <translation>各帧的离散在 --dwell 秒内保持在 WINDOW 之内时取一个读数（角秒；数显表用其自身单位）</translation>
-        </message>
-        <message>
-            <source>the dwell time of --stable</source>
-            <translation>--stable 的驻留时间</translation>
-        </message>
-        <message>
-            <source>readout: regular expression of a line, with a group named value (and unit)</source>
-            <translation>数显表：一行的正则表达式，含名为 value 的组（及 unit）</translation>
-        </message>
-        <message>
-            <source>seconds without a valid frame before the link is reconnected (default 2)</source>
-            <translation>无有效帧多少秒后重新连接（默认 2）</translation>
-        </message>
-        <message>
-            <source>reconnections in a row without a reading before giving up (default 3)</source>
-            <translation>连续多少次重连仍无读数即放弃（默认 3）</translation>
-        </message>
-        <message>
-            <source>give up after this long (default: never)</source>
-            <translation>超过此时长即放弃（默认：不限）</translation>
-        </message>
-        <message>
-            <source>&amp;Instrument</source>
-            <translation>仪器(&amp;I)</translation>
-        </message>
-        <message>
-            <source>&amp;Connect…</source>
-            <translation>连接(&amp;C)…</translation>
-        </message>
-        <message>
-            <source>Allan deviation (first axis): {figures}</source>
-            <translation>阿伦偏差（第一轴）：{figures}</translation>
-        </message>
-        <message>
-            <source>Autocollimator (ELCOMAT kind)</source>
-            <translation>自准直仪（ELCOMAT 类）</translation>
-        </message>
-        <message>
-            <source>Baud rate</source>
-            <translation>波特率</translation>
-        </message>
-        <message>
-            <source>Connect to an instrument</source>
-            <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive)</extracomment>
-            <translation>连接仪器</translation>
-        </message>
-        <message>
-            <source>Connected: {port}</source>
-            <translation>已连接：{port}</translation>
-        </message>
-        <message>
-            <source>Connecting to {port}…</source>
-            <translation>正在连接 {port}…</translation>
-        </message>
-        <message>
-            <source>Connect…</source>
-            <translation>连接…</translation>
-        </message>
-        <message>
-            <source>Instrument</source>
-            <translation>仪器</translation>
-        </message>
-        <message>
-            <source>Not connected</source>
-            <extracomment>finished sessions per workbench (stored form), and the one of this connection rows filled by Take reading or auto-take: (workbench, row, values)</extracomment>
-            <translation>未连接</translation>
-        </message>
-        <message>
-            <source>Port</source>
-            <translation>端口</translation>
-        </message>
-        <message>
-            <source>Readout (one line per reading)</source>
-            <translation>数显表（每个读数一行）</translation>
-        </message>
-        <message>
-            <source>Spread over the last second: {spread}{unit}</source>
-            <translation>最近一秒内的离散：{spread}{unit}</translation>
-        </message>
-        <message>
-            <source>Take reading (F9)</source>
-            <translation>取读数 (F9)</translation>
-        </message>
-        <message>
-            <source>Take reading (row {row})</source>
-            <translation>取读数（第 {row} 行）</translation>
-        </message>
-        <message>
-            <source>Theodolite (Leica GeoCOM)</source>
-            <translation>经纬仪（徕卡 GeoCOM）</translation>
-        </message>
-        <message>
-            <source>{reason} (reconnecting)</source>
-            <translation>{reason}（正在重新连接）</translation>
-        </message>
-        <message>
-            <source>This workbench has no column for this instrument's reading: choose a cell first (readout) or another workbench</source>
-            <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
-        </message>
-        <message>
-            <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings' trace to the instrument's own output)</source>
-            <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
-        </message>
-        <message>
-            <source>anglebench capture: --stable and --dwell go together</source>
-            <translation>anglebench capture：--stable 与 --dwell 须同时给出</translation>
-        </message>
-        <message>
-            <source>anglebench capture: --pattern: {reason}</source>
-            <translation>anglebench capture：--pattern：{reason}</translation>
-        </message>
-        <message>
-            <source>{port}: {n} of {total} readings in {seconds} s</source>
-            <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
-        </message>
-        <message>
-            <source>anglebench capture: {reason}; reconnecting</source>
-            <translation>anglebench capture：{reason}；正在重新连接</translation>
-        </message>
-        <message>
-            <source>{port}: interrupted</source>
-            <translation>{port}：已中断</translation>
-        </message>
-        <message>
-            <source>anglebench capture: {reason}; no reading was taken</source>
-            <translation>anglebench capture：{reason}；未取得任何读数</translation>
-        </message>
-        <message>
-            <source>anglebench capture: cannot write {path}: {reason}</source>
-            <translation>anglebench capture：无法写入 {path}：{reason}</translation>
-        </message>
-        <message>
-            <source>anglebench capture: {reason}; the {n} readings taken are in {path}</source>
-            <translation>anglebench capture：{reason}；已取得的 {n} 个读数在 {path} 中</translation>
-        </message>
-        <message>
-            <source>{n} readings written to {path} ({refused} frames refused: noise, an invalid axis or an error reply)</source>
-            <translation>{n} 个读数已写入 {path}（拒收 {refused} 帧：噪声、无效轴或错误应答）</translation>
-        </message>
-        <message>
-            <source>{n} readings written to {path}</source>
-            <translation>{n} 个读数已写入 {path}</translation>
-        </message>
-        <message>
-            <source>{port}: cannot open ({reason})</source>
-            <extracomment>a read returns after this long without bytes, so the worker can look up and stop</extracomment>
-            <translation>{port}：无法打开（{reason}）</translation>
-        </message>
-        <message>
-            <source>{port}: no answer for {seconds} s</source>
-            <extracomment>seconds since the worker started, when the frame's last byte arrived the instrument's line as it sent it its index in the worker's :attr:`CaptureWorker.raw` a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only when the worker started (UTC, ISO 8601): the raw frames' times count from it</extracomment>
-            <translation>{port}：{seconds} 秒无应答</translation>
-        </message>
-        <message>
-            <source>{port}: only unreadable bytes for {seconds} s (a wrong baud rate? {baud} was used)</source>
-            <translation>{port}：{seconds} 秒内只收到无法识读的字节（波特率错误？所用为 {baud}）</translation>
-        </message>
-        <message>
-            <source>{port}: no valid reading for {seconds} s (last: {reason})</source>
-            <translation>{port}：{seconds} 秒无有效读数（最后一行：{reason}）</translation>
-        </message>
-        <message>
-            <source>{port}: the link dropped ({reason})</source>
-            <translation>{port}：连接中断（{reason}）</translation>
-        </message>
-        <message>
-            <source>conditional pass</source>
-            <translation>有条件合格</translation>
-        </message>
-        <message>
-            <source>conditional fail</source>
-            <translation>有条件不合格</translation>
-        </message>
-        <message>
-            <source>fail</source>
-            <translation>不合格</translation>
-        </message>
-        <message>
-            <source>guard band, non-binary</source>
-            <translation>带保护带，非二元</translation>
-        </message>
-        <message>
-            <source>guard band, binary</source>
-            <translation>带保护带，二元</translation>
-        </message>
-        <message>
-            <source>simple acceptance</source>
-            <translation>简单接受</translation>
-        </message>
-        <message>
-            <source>It is no longer valid: superseded by {by}.</source>
-            <translation>它已不再有效：已被 {by} 取代。</translation>
-        </message>
-        <message>
-            <source>yes</source>
-            <translation>是</translation>
-        </message>
-        <message>
-            <source>no</source>
-            <translation>否</translation>
-        </message>
-        <message>
-            <source>row {value}, column '{name}': {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
-            <translation>第 {value} 行，列 '{name}'：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
-        </message>
-        <message>
-            <source>{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); save it as CSV UTF-8 and try again</source>
-            <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a "zip bomb") is refused unread.</extracomment>
-            <translation>{source}：第 {row} 行：不是 UTF-8 或 GBK 文本（第 {column} 个位置的十六进制字节 {byte}）；请另存为 CSV UTF-8 后重试</translation>
-        </message>
-        <message>
-            <source>after compensation: {name}</source>
-            <translation>补偿后：{name}</translation>
-        </message>
-        <message>
-            <source>Not compared with the log after compensation: {reason}</source>
-            <translation>未与补偿后记录比较：{reason}</translation>
-        </message>
-        <message>
-            <source> — RUN INVALID (closure failed)</source>
-            <translation> — 测量无效（闭合不合格）</translation>
-        </message>
-        <message>
-            <source>Cannot read certificate</source>
-            <translation>无法读取证书</translation>
-        </message>
-        <message>
-            <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
-            <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
-        </message>
-        <message>
-            <source>Load polygon certificate</source>
-            <translation>载入多面棱体证书</translation>
-        </message>
-        <message>
-            <source>Cannot export the correction table</source>
-            <translation>无法导出修正表</translation>
-        </message>
-        <message>
-            <source>Auto-take when stable</source>
-            <translation>稳定时自动取数</translation>
-        </message>
-        <message>
-            <source>The spread allowed over the dwell (arcseconds; a readout's own unit)</source>
-            <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
-        </message>
-        <message>
-            <source>Window</source>
-            <translation>稳定范围</translation>
-        </message>
-        <message>
-            <source>Dwell</source>
-            <translation>驻留时间</translation>
-        </message>
-        <message>
-            <source>Auto-take: taken; move to the next point</source>
-            <translation>自动取数：已取；请转到下一点</translation>
-        </message>
-        <message>
-            <source>Auto-take: settling, {percent} % of the dwell</source>
-            <translation>自动取数：正在稳定，已达驻留时间的 {percent} %</translation>
-        </message>
-        <message>
-            <source>Next: {what}</source>
-            <translation>下一步：{what}</translation>
-        </message>
-        <message>
-            <source>Connected: {port} (reconnected after: {reason})</source>
-            <translation>已连接：{port}（曾因以下原因重新连接：{reason}）</translation>
-        </message>
-        <message>
-            <source>{what} — reading {k} of {n}</source>
-            <translation>{what} — 第 {k} 次读数，共 {n} 次</translation>
-        </message>
-        <message>
-            <source>go to face {face}</source>
-            <translation>转到第 {face} 面</translation>
-        </message>
-        <message>
-            <source>stay at face {face}</source>
-            <translation>停在第 {face} 面</translation>
-        </message>
-        <message>
-            <source>set {set}: go to face {face}</source>
-            <translation>第 {set} 测回：转到第 {face} 面</translation>
-        </message>
-        <message>
-            <source>set {set}: go to face {face} (encoder ≈ {encoder}°)</source>
-            <translation>第 {set} 测回：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
-        </message>
-        <message>
-            <source>go to the next face (set the number of faces)</source>
-            <translation>转到下一面（请设置面数）</translation>
-        </message>
-        <message>
-            <source>go back to face {face} (encoder ≈ {encoder}°): the closure of set {set}</source>
-            <translation>回到第 {face} 面（编码器 ≈ {encoder}°）：第 {set} 测回的闭合读数</translation>
-        </message>
-        <message>
-            <source>go back to face {face}: the closure of set {set}</source>
-            <translation>回到第 {face} 面：第 {set} 测回的闭合读数</translation>
-        </message>
-        <message>
-            <source>go to face {face} (encoder ≈ {encoder}°)</source>
-            <translation>转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
-        </message>
-        <message>
-            <source>turn the axis to the next θ and type it in the θ column</source>
-            <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
-        </message>
-        <message>
-            <source>θ = {theta}</source>
-            <translation>θ = {theta}</translation>
-        </message>
-        <message>
-            <source>{where}: the raw frames must be a list of sessions</source>
-            <extracomment>a session's keys, in the order they are stored</extracomment>
-            <translation>{where}：原始数据帧必须是采集会话的列表</translation>
-        </message>
-        <message>
-            <source>{where}, session {i}: not a capture session ({keys} expected)</source>
-            <translation>{where}，第 {i} 个会话：不是采集会话（应有 {keys}）</translation>
-        </message>
-        <message>
-            <source>{where}, session {i}: a frame or a take is not as stored by AngleBench</source>
-            <translation>{where}，第 {i} 个会话：某一帧或某次取数与 AngleBench 保存的格式不符</translation>
-        </message>
-        <message>
-            <source>{source}: 'raw_capture' must be an object; nothing was changed</source>
-            <translation>{source}：'raw_capture' 必须是对象；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{where}: 'sha256' and 'sessions' expected; nothing was changed</source>
-            <translation>{where}：应有 'sha256' 和 'sessions'；未作任何更改</translation>
-        </message>
-        <message>
-            <source>{reason}; nothing was changed</source>
-            <translation>{reason}；未作任何更改</translation>
-        </message>
-        <message>
-            <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder's error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
-            <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
-        </message>
-        <message>
-            <source>the encoder's errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
-            <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
-        </message>
-        <message>
-            <source>mounting, position, encoder and autocollimator columns differ in length</source>
-            <translation>安装位置、面号、编码器和自准直仪各列长度不一致</translation>
-        </message>
-        <message>
-            <source>{faces} faces: a polygon has at least 3</source>
-            <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
-        </message>
-        <message>
-            <source>drift must be one of {modes}, not {mode}</source>
-            <translation>漂移处理方式须为 {modes} 之一，而不是 {mode}</translation>
-        </message>
-        <message>
-            <source>ac_alignment must be one of {frames}, not {frame}</source>
-            <translation>ac_alignment 须为 {frames} 之一，而不是 {frame}</translation>
-        </message>
-        <message>
-            <source>the vertical readings ({count}) are not one per row ({rows})</source>
-            <translation>竖直读数（{count} 个）与行数（{rows} 行）不是一一对应</translation>
-        </message>
-        <message>
-            <source>only mounting {mounting}: the faces and the encoder's steps are not connected — at least two mountings are needed</source>
-            <translation>只有安装位置 {mounting}：各面与编码器的步距未能关联——至少需要两个安装位置</translation>
-        </message>
-        <message>
-            <source>row {row}: encoder {encoder} is {offset} from step {step} ({nominal}) where mounting {mounting} reads face {face}: a mounting that starts elsewhere, or a wrong mounting or face number</source>
-            <translation>第 {row} 行：编码器读数 {encoder} 与第 {step} 步（{nominal}）相差 {offset}，此处安装位置 {mounting} 读第 {face} 面：该安装位置起点不同，或安装位置号、面号有误</translation>
-        </message>
-        <message>
-            <source>mountings {mountings} do not connect the faces: no harmonic of the encoder's error or of the face deviations is determined</source>
-            <translation>安装位置 {mountings} 未能关联各面：编码器误差和各面偏差的谐波均无法确定</translation>
-        </message>
-        <message>
-            <source>the encoder's errors and the face deviations are uncorrelated (a full rosette)</source>
-            <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting's drift is taken from its closure reading (see the module's text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted ("fit"), the closure drift H ("spread", "report"); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt's horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading's order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in "spread"/"report" do not) per face (1 … n): the face normal's own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces' mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator's vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces' pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings</extracomment>
-            <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
-        </message>
-        <message>
-            <source>row {row}: {column} {value} is not a whole number</source>
-            <translation>第 {row} 行：{column} {value} 不是整数</translation>
-        </message>
-        <message>
-            <source>row {row}: {column} is not a number</source>
-            <translation>第 {row} 行：{column} 不是数字</translation>
-        </message>
-        <message>
-            <source>row {row}: face {face} is outside 1…{faces} (face count {faces})</source>
-            <translation>第 {row} 行：第 {face} 面超出 1…{faces}（面数 {faces}）</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting} is outside 0…{last}</source>
-            <translation>第 {row} 行：安装位置 {mounting} 超出 0…{last}</translation>
-        </message>
-        <message>
-            <source>mounting {mounting} (rows {first}…{last}): face(s) {faces} missing — every mounting reads all {count} faces</source>
-            <translation>安装位置 {mounting}（第 {first}…{last} 行）：缺少第 {faces} 面——每个安装位置须读全部 {count} 个面</translation>
-        </message>
-        <message>
-            <source>no vertical readings: the polygon's tilt on the shaft is neither identified nor removed</source>
-            <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
-        </message>
-        <message>
-            <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator's σ</source>
-            <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting}, face {face} repeats row {other} (a duplicate reading; only the closure reading, last, may repeat the first face)</source>
-            <translation>第 {row} 行：安装位置 {mounting} 的第 {face} 面与第 {other} 行重复（重复读数；只有最后的闭合读数可以重复第一个面）</translation>
-        </message>
-        <message>
-            <source>mounting {mounting}: vertical readings missing: its tilt is neither identified nor removed</source>
-            <translation>安装位置 {mounting}：缺少竖直读数：未辨识也未消除其倾斜</translation>
-        </message>
-        <message>
-            <source>mounting {mounting}: no closure reading (its first face read again at the end): drift not checked</source>
-            <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：未检查漂移</translation>
-        </message>
-        <message>
-            <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
-            <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
-        </message>
-        <message>
-            <source>Cross-calibration (polygon + encoder)</source>
-            <translation>互校准（多面棱体 + 编码器）</translation>
-        </message>
-        <message>
-            <source>full rosette, 24 faces, σ = 0.02": u = σ√(n − 1)/n (Estler)</source>
-            <translation>全组合测量，24 面，σ = 0.02"：u = σ√(n − 1)/n（Estler）</translation>
-        </message>
-        <message>
-            <source>3-D simulation, full rosette of 12 faces, no noise: |result − truth|</source>
-            <translation>三维仿真，12 面全组合测量，无噪声：|结果 − 真值|</translation>
-        </message>
-        <message>
-            <source>3-D simulation, mountings 0, 1, 5 of 12, no noise: |result − truth|</source>
-            <translation>三维仿真，12 面中的安装位置 0、1、5，无噪声：|结果 − 真值|</translation>
-        </message>
-        <message>
-            <source>mountings 0, 4, 8 of 12: the harmonics not determined are named and withheld</source>
-            <translation>12 面中的安装位置 0、4、8：无法确定的谐波被指明且不予报告</translation>
-        </message>
-        <message>
-            <source>stated u against the spread of {trials} simulated runs (ν = {dof})</source>
-            <translation>给出的 u 与 {trials} 次仿真测量的分散性比较（ν = {dof}）</translation>
-        </message>
-        <message>
-            <source>ratio 1 ± {tolerance}</source>
-            <translation>比值 1 ± {tolerance}</translation>
-        </message>
-        <message>
-            <source>ratio {ratio}, U covers {coverage} %</source>
-            <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
-        </message>
-        <message>
-            <source>mounting {mounting}: the vertical readings scatter {rms} RMS about the tilt fitted, far more than the horizontal ones ({sigma}): check them; the tilt correction rests on them</source>
-            <translation>安装位置 {mounting}：竖直读数相对拟合倾斜的分散为 {rms} RMS，远大于水平读数（{sigma}）：请检查；倾斜修正依赖于这些读数</translation>
-        </message>
-        <message>
-            <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
-            <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
-        </message>
-        <message>
-            <source>face pyramidal errors: each face normal's elevation relative to the faces' mean plane (their mean and first harmonic over the faces are not determined: they cannot be told from the autocollimator's vertical zero and the polygon's tilt); largest {largest}, u up to {u}</source>
-            <translation>工作面棱锥误差：各工作面法线相对于各工作面平均平面的仰角（其在各工作面上的平均值和一次谐波无法确定：它们与自准直仪的竖直零位及多面棱体的倾斜无法区分）；最大 {largest}，u 最大 {u}</translation>
-        </message>
-        <message>
-            <source>Each mounting's drift, seen by its closure reading: fitted by least squares as a linear drift over the mounting and removed; or its closure spread linearly over the mounting and removed, as the polygon workbench does; or only reported</source>
-            <translation>各安装位置的漂移（由其闭合读数看出）：按最小二乘拟合为该安装位置内的线性漂移并扣除；或如多面棱体工作台那样将闭合差线性分配到该安装位置并扣除；或仅报告</translation>
-        </message>
-        <message>
-            <source>Faces of the polygon (= the encoder's steps); 0: as many as the readings have</source>
-            <translation>多面棱体面数（= 编码器的步数）；0：按读数中的面数</translation>
-        </message>
-        <message>
-            <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder's n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder's error at its step plus the polygon's deviation at the face plus the mounting's offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported.</source>
-            <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。</translation>
-        </message>
-        <message>
-            <source>Reading scatter through the design</source>
-            <translation>读数分散性（经测量设计传递）</translation>
-        </message>
-        <message>
-            <source>σ = {sigma} of one reading ({how}), propagated exactly through the least-squares design of {mountings} mountings</source>
-            <translation>单次读数 σ = {sigma}（{how}），经 {mountings} 个安装位置的最小二乘设计严格传递</translation>
-        </message>
-        <message>
-            <source>from the residuals, ν = {nu}</source>
-            <translation>由残差求得，ν = {nu}</translation>
-        </message>
-        <message>
-            <source>stated</source>
-            <translation>给定值</translation>
-        </message>
-        <message>
-            <source>resolution {r} per reading, through the same design</source>
-            <translation>每次读数的分辨力 {r}，经同一设计传递</translation>
-        </message>
-        <message>
-            <source>no certificate: this design does not determine the {what} (harmonic(s) {orders} unseen); add a mounting</source>
-            <translation>不能出具证书：此测量设计不能确定{what}（第 {orders} 次谐波不可见）；请增加安装位置</translation>
-        </message>
-        <message>
-            <source>encoder's error</source>
-            <translation>编码器误差</translation>
-        </message>
-        <message>
-            <source>face deviations</source>
-            <translation>面偏差</translation>
-        </message>
-        <message>
-            <source>Faces / encoder steps</source>
-            <translation>面数 / 编码器步数</translation>
-        </message>
-        <message>
-            <source>Mountings</source>
-            <translation>安装位置</translation>
-        </message>
-        <message>
-            <source>σ of one reading</source>
-            <translation>单次读数的 σ</translation>
-        </message>
-        <message>
-            <source>spread linearly over each mounting and removed</source>
-            <translation>在各安装位置内线性分配并扣除</translation>
-        </message>
-        <message>
-            <source>fitted linearly over each mounting by least squares and removed</source>
-            <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
-        </message>
-        <message>
-            <source>Encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>set to its nominal steps</source>
-            <translation>置于标称步位</translation>
-        </message>
-        <message>
-            <source>read at each step</source>
-            <translation>每步读数</translation>
-        </message>
-        <message>
-            <source>Largest correlation encoder / polygon</source>
-            <translation>编码器与多面棱体结果的最大相关系数</translation>
-        </message>
-        <message>
-            <source>Mounting {mounting} closure</source>
-            <translation>安装位置 {mounting} 闭合差</translation>
-        </message>
-        <message>
-            <source>Encoder error at its steps</source>
-            <translation>编码器各步误差</translation>
-        </message>
-        <message>
-            <source>Step</source>
-            <translation>步</translation>
-        </message>
-        <message>
-            <source>From the start (°)</source>
-            <translation>自起点 (°)</translation>
-        </message>
-        <message>
-            <source>Error (")</source>
-            <translation>误差 (")</translation>
-        </message>
-        <message>
-            <source>Error = indicated − true angle, about its mean over the full turn (the steps of a full turn close at 360°).</source>
-            <translation>误差 = 示值 − 真角度，以整周平均值为零（整周各步在 360° 处封闭）。</translation>
-        </message>
-        <message>
-            <source>step {k}</source>
-            <translation>第 {k} 步</translation>
-        </message>
-        <message>
-            <source>encoder error</source>
-            <translation>编码器误差</translation>
-        </message>
-        <message>
-            <source>Error</source>
-            <translation>误差</translation>
-        </message>
-        <message>
-            <source>JJF 1115 division error</source>
-            <translation>JJF 1115 分度误差</translation>
-        </message>
-        <message>
-            <source>JJF 1115 repeatability (largest s over the steps)</source>
-            <translation>JJF 1115 重复性（各步 s 的最大值）</translation>
-        </message>
-        <message>
-            <source>the mountings as repeated runs</source>
-            <translation>各安装位置视为重复测量</translation>
-        </message>
-        <message>
-            <source>ISO 230-2 (unidirectional)</source>
-            <translation>ISO 230-2（单向）</translation>
-        </message>
-        <message>
-            <source>the mountings as repeated runs; deviation = −error</source>
-            <translation>各安装位置视为重复测量；偏差 = −误差</translation>
-        </message>
-        <message>
-            <source>Face deviations</source>
-            <translation>面偏差</translation>
-        </message>
-        <message>
-            <source>Face</source>
-            <translation>面</translation>
-        </message>
-        <message>
-            <source>Deviation (")</source>
-            <translation>偏差 (")</translation>
-        </message>
-        <message>
-            <source>From face 1 (")</source>
-            <translation>相对第 1 面 (")</translation>
-        </message>
-        <message>
-            <source>U from face 1 (")</source>
-            <translation>相对第 1 面的 U (")</translation>
-        </message>
-        <message>
-            <source>Deviation = the face's angle from face 1 minus its nominal, stated about the mean over the faces (the faces close at 360°); the last two columns state it from face 1.</source>
-            <translation>偏差 = 该面相对第 1 面的角度减去其标称值，以各面平均值为零（各面在 360° 处封闭）；最后两列给出相对第 1 面的值。</translation>
-        </message>
-        <message>
-            <source>face {k}</source>
-            <translation>第 {k} 面</translation>
-        </message>
-        <message>
-            <source>face deviation</source>
-            <translation>面偏差</translation>
-        </message>
-        <message>
-            <source>Deviation</source>
-            <translation>偏差</translation>
-        </message>
-        <message>
-            <source>steps</source>
-            <translation>各步</translation>
-        </message>
-        <message>
-            <source>faces</source>
-            <translation>各面</translation>
-        </message>
-        <message>
-            <source>No calibrated reference enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator reads near its null, where its scale error does not matter.</source>
-            <translation>本结果未使用任何已校准的参考标准：多面棱体与编码器依圆周封闭原理相互校准。自准直仪在零位附近读数，其示值比例误差可忽略。</translation>
-        </message>
-        <message>
-            <source>The {other} was calibrated in the same run; the largest correlation between its results and these is {r}.</source>
-            <translation>{other}在同一次测量中一并校准；其结果与本结果之间的最大相关系数为 {r}。</translation>
-        </message>
-        <message>
-            <source>polygon</source>
-            <translation>多面棱体</translation>
-        </message>
-        <message>
-            <source>encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>Encoder error at its steps with U</source>
-            <translation>编码器各步误差及其 U</translation>
-        </message>
-        <message>
-            <source>encoder step (°)</source>
-            <translation>编码器步位 (°)</translation>
-        </message>
-        <message>
-            <source>encoder error ± U</source>
-            <translation>编码器误差 ± U</translation>
-        </message>
-        <message>
-            <source>Polygon face deviations with U</source>
-            <translation>多面棱体面偏差及其 U</translation>
-        </message>
-        <message>
-            <source>face</source>
-            <translation>面</translation>
-        </message>
-        <message>
-            <source>deviation (")</source>
-            <translation>偏差 (")</translation>
-        </message>
-        <message>
-            <source>face deviation ± U</source>
-            <translation>面偏差 ± U</translation>
-        </message>
-        <message>
-            <source>residual per mounting</source>
-            <translation>各安装位置残差</translation>
-        </message>
-        <message>
-            <source>outlier (&gt; 3σ)</source>
-            <translation>异常值（&gt; 3σ）</translation>
-        </message>
-        <message>
-            <source>Residuals per mounting and face</source>
-            <translation>各安装位置、各面的残差</translation>
-        </message>
-        <message>
-            <source>closure (x′ − x) − (a′ − a)</source>
-            <translation>闭合差 (x′ − x) − (a′ − a)</translation>
-        </message>
-        <message>
-            <source>drift fitted</source>
-            <translation>拟合漂移</translation>
-        </message>
-        <message>
-            <source>Closure per mounting</source>
-            <translation>各安装位置闭合差</translation>
-        </message>
-        <message>
-            <source>mounting</source>
-            <translation>安装位置</translation>
-        </message>
-        <message>
-            <source>closure (")</source>
-            <translation>闭合差 (")</translation>
-        </message>
-        <message>
-            <source>row {row}: {reason}</source>
-            <extracomment>a residual beyond this many σ is marked as an outlier</extracomment>
-            <translation>第 {row} 行：{reason}</translation>
-        </message>
-        <message>
-            <source>{count} reading(s) lie beyond {sigmas}σ of the fit (rows {rows}): check them</source>
-            <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
-        </message>
-        <message>
-            <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>
-            <translation>{faces} 面棱体装于编码器上，{count} 个安装位置（{mountings}）；单次读数 σ = {sigma}（ν = {nu}），k = {k}</translation>
-        </message>
-        <message>
-            <source>Encoder set to its nominal steps (no encoder readings).</source>
-            <translation>编码器置于标称步位（无编码器读数）。</translation>
-        </message>
-        <message>
-            <source>Encoder error {span} (peak-to-peak {ptp}), U up to {u}</source>
-            <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
-        </message>
-        <message>
-            <source>Encoder error NOT determined: harmonic(s) {orders} unseen by this design</source>
-            <translation>编码器误差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
-        </message>
-        <message>
-            <source>Face deviations {span} (about their mean), U up to {u}</source>
-            <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
-        </message>
-        <message>
-            <source>Face deviations NOT determined: harmonic(s) {orders} unseen by this design</source>
-            <translation>面偏差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
-        </message>
-        <message>
-            <source>Closures {count} of {mountings}: {low} … {high}; drift removed</source>
-            <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移已扣除</translation>
-        </message>
-        <message>
-            <source>Closures {count} of {mountings}: {low} … {high}; drift reported, not removed</source>
-            <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移仅报告，未扣除</translation>
-        </message>
-        <message>
-            <source>No closure readings: drift not measured</source>
-            <translation>无闭合读数：未测漂移</translation>
-        </message>
-        <message>
-            <source>Largest correlation between an encoder error and a face deviation: {r}</source>
-            <translation>编码器误差与面偏差之间的最大相关系数：{r}</translation>
-        </message>
-        <message>
-            <source>This design cannot separate every harmonic: the undetermined results are withheld (see the warnings).</source>
-            <translation>此测量设计不能分离全部谐波：未能确定的结果不予给出（见警告）。</translation>
-        </message>
-        <message>
-            <source>Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations {low} … {high} (U ≤ {ud})</source>
-            <translation>编码器误差峰峰值 {ptp}（U ≤ {ue}）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
-        </message>
-        <message>
-            <source>the face deviations are not determined by this design: nothing to send</source>
-            <translation>此测量设计不能确定面偏差：无可发送的内容</translation>
-        </message>
-        <message>
-            <source>Standard deviation of one reading when known (the autocollimator's and the encoder's noise together); 0: taken from the residuals of the fit, with its degrees of freedom</source>
-            <translation>已知时给出单次读数的标准偏差（自准直仪与编码器噪声合计）；0：由拟合残差求得，并给出其自由度</translation>
-        </message>
-        <message>
-            <source>The frame the tilt correction is made in when vertical readings are given, as in the polygon workbench: the autocollimator levelled with the rotary axis, or its vertical along the polygon's axis</source>
-            <translation>给出垂直读数时倾斜修正所采用的坐标系，与多面棱体工作台相同：自准直仪与回转轴调平，或其垂直方向沿多面棱体轴线</translation>
-        </message>
-        <message>
-            <source>Which instrument the certificate is issued for: the polygon's face deviations or the encoder's error at its steps</source>
-            <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
-        </message>
-        <message>
-            <source>certificate of</source>
-            <translation>证书对象</translation>
-        </message>
-        <message>
-            <source>closure</source>
-            <translation>闭合</translation>
-        </message>
-        <message>
-            <source>encoder error peak-to-peak</source>
-            <translation>编码器误差峰峰值</translation>
-        </message>
-        <message>
-            <source>encoder step</source>
-            <translation>编码器步位</translation>
-        </message>
-        <message>
-            <source>face deviation peak-to-peak</source>
-            <translation>面偏差峰峰值</translation>
-        </message>
-        <message>
-            <source>fit linearly, remove</source>
-            <translation>线性拟合并扣除</translation>
-        </message>
-        <message>
-            <source>from the residuals</source>
-            <translation>由残差求得</translation>
-        </message>
-        <message>
-            <source>report it (not removed)</source>
-            <translation>仅报告（不扣除）</translation>
-        </message>
-        <message>
-            <source>the encoder (error at its steps)</source>
-            <translation>编码器（各步误差）</translation>
-        </message>
-        <message>
-            <source>the polygon (face deviations)</source>
-            <translation>多面棱体（面偏差）</translation>
-        </message>
-        <message>
-            <source>σ of a reading</source>
-            <translation>单次读数 σ</translation>
-        </message>
-        <message>
-            <source>The polygon's face deviations (from face 1, with U)</source>
-            <translation>多面棱体面偏差（相对第 1 面，含 U）</translation>
-        </message>
-        <message>
-            <source>no readings</source>
-            <extracomment>autocollimator readings beyond this are no readings of a polygon's faces a matrix's last column named so holds each mounting's closure reading (its first face)</extracomment>
-            <translation>无读数</translation>
-        </message>
-        <message>
-            <source>row {row}, column '{key}': {value}" is beyond ±{limit}" and cannot be an autocollimator reading of a face</source>
-            <translation>第 {row} 行，列“{key}”：{value}" 超出 ±{limit}"，不可能是自准直仪对棱体面的读数</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'encoder_deg': the encoder reading is given in some rows and blank in others; give it in every row, or leave the column blank when the encoder was set to its nominal steps</source>
-            <translation>第 {row} 行，列“encoder_deg”：编码器读数有的行有、有的行空；请每行都填，或在编码器置于标称步位时整列留空</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'ac_y_arcsec': a vertical reading is missing (give one in every row, or none)</source>
-            <translation>第 {row} 行，列“ac_y_arcsec”：缺少垂直读数（每行都填，或都不填）</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting} again, after mounting {other}: keep each mounting's readings in one block</source>
-            <translation>第 {row} 行：在安装位置 {other} 之后又出现安装位置 {mounting}：每个安装位置的读数须连在一起</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'mounting': mounting {mounting} is outside 0…{last} (a mounting is how many faces the polygon was turned, for {faces} faces)</source>
-            <translation>第 {row} 行，列“mounting”：安装位置 {mounting} 超出 0…{last}（安装位置是多面棱体转过的面数，共 {faces} 面）</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'position': face {face} is outside 1…{faces} (the face count is {faces})</source>
-            <translation>第 {row} 行，列“position”：面 {face} 超出 1…{faces}（面数为 {faces}）</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting}, face {face} is read again (row {first}); only the closure reading, last in its mounting, may repeat the first face</source>
-            <translation>第 {row} 行：安装位置 {mounting} 的面 {face} 重复读数（第 {first} 行）；只有该安装位置最后的闭合读数可重复第一个面</translation>
-        </message>
-        <message>
-            <source>rows {row}–{last}: mounting {mounting} reads {read} faces, the face count is {faces}: face(s) {missing} missing</source>
-            <translation>第 {row}–{last} 行：安装位置 {mounting} 读了 {read} 个面，面数为 {faces}：缺少面 {missing}</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting} starts at face {face}; turned {mounting} face(s), the polygon has face {start} at the encoder's first step, where every mounting starts</source>
-            <translation>第 {row} 行：安装位置 {mounting} 从面 {face} 开始；转过 {mounting} 个面后，位于编码器第一步（各安装位置的起点）的应是面 {start}</translation>
-        </message>
-        <message>
-            <source>only mounting {mounting}: one mounting does not connect the faces with the encoder's steps; turn the polygon on the shaft and read at least one more mounting</source>
-            <translation>只有安装位置 {mounting}：一个安装位置不能把各面与编码器各步联系起来；请在轴上转动多面棱体，至少再测一个安装位置</translation>
-        </message>
-        <message>
-            <source>row {row}: mounting {mounting} starts with the encoder at {reading}°, {off}° from where mounting {first} started ({start}°): every mounting starts from the same encoder position</source>
-            <translation>第 {row} 行：安装位置 {mounting} 开始时编码器读数为 {reading}°，与安装位置 {first} 的起点（{start}°）相差 {off}°：各安装位置须从同一编码器位置开始</translation>
-        </message>
-        <message>
-            <source>row {row}, column 'encoder_deg': {reading}° is {off}° from step {step} ({nominal}°) where mounting {mounting} reads face {face}: a wrong mounting or face number, or a mis-typed reading</source>
-            <translation>第 {row} 行，列“encoder_deg”：{reading}° 与第 {step} 步（{nominal}°）相差 {off}°，此处安装位置 {mounting} 读面 {face}：安装位置或面号有误，或读数录入错误</translation>
-        </message>
-        <message>
-            <source>Cannot save the face deviations</source>
-            <translation>无法保存面偏差</translation>
-        </message>
-        <message>
-            <source>{what} written: load them in the polygon workbench with 'Load polygon certificate…'</source>
-            <translation>{what}已写出：请在多面棱体工作台用“载入多面棱体证书…”载入</translation>
-        </message>
-        <message>
-            <source>Save face deviations for the polygon workbench…</source>
-            <translation>保存面偏差供多面棱体工作台使用…</translation>
-        </message>
-        <message>
-            <source>The polygon's face deviations from face 1 with their U, as a file the polygon workbench loads with 'Load polygon certificate…'</source>
-            <translation>多面棱体相对第 1 面的面偏差及其 U，写成多面棱体工作台可用“载入多面棱体证书…”载入的文件</translation>
-        </message>
-        <message>
-            <source>Encoder error</source>
-            <translation>编码器误差</translation>
-        </message>
-        <message>
-            <source>Residuals</source>
-            <translation>残差</translation>
-        </message>
-        <message>
-            <source>Closure</source>
-            <translation>闭合差</translation>
-        </message>
-        <message>
-            <source>Save face deviations</source>
-            <translation>保存面偏差</translation>
-        </message>
-        <message>
-            <source>CSV (*.csv)</source>
-            <translation>CSV (*.csv)</translation>
-        </message>
-    </context>
+    </message>
+    <message>
+        <source>no compensation: the Lissajous figure does not circle 0 V (offsets A0 = {a0} V, B0 = {b0} V against amplitudes A1 = {a1} V, B1 = {b1} V; the measured phase atan2(u_sin, u_cos) turns {turns} times a period, not once), so no table over it can compensate: remove the offsets (differential signals A+ − A−, or the reference voltage) and analyse again</source>
+        <translation>不进行补偿：李萨如图形未环绕 0 V（偏置 A0 = {a0} V、B0 = {b0} V，而幅值 A1 = {a1} V、B1 = {b1} V；测得相位 atan2(u_sin, u_cos) 每周期转 {turns} 圈，而不是 1 圈），因此任何基于该相位的表都无法补偿：请去除偏置（差分信号 A+ − A−，或参考电压）后重新分析</translation>
+    </message>
+    <message>
+        <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
+        <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
+    </message>
+    <message>
+        <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>
+        <translation>不进行补偿：拟合信号的测得相位 atan2(u_sin, u_cos) 在一个周期内回转（李萨如图形在 0 V 附近打圈：偏置 A0 = {a0} V、B0 = {b0} V，幅值 A1 = {a1} V、B1 = {b1} V），因此基于该相位的表无法补偿</translation>
+    </message>
+    <message>
+        <source>no compensation: the correction table, applied to the fitted signals themselves, leaves {after} % of a period of their {before} % (peak-to-peak): it does not compensate these signals</source>
+        <translation>不进行补偿：修正表作用于拟合信号本身后，仍剩余一个周期的 {after} %（原为 {before} %，峰峰值）：它不能补偿这些信号</translation>
+    </message>
+    <message>
+        <source>*** ERRORS OF {degrees}° ({worst}): no encoder of grade 1–7 errs by more than arcseconds. Check the unit of the encoder column (degrees), the number of faces ({faces}) and the face numbering before trusting any figure; a certificate needs your confirmation. ***</source>
+        <translation>*** 误差达 {degrees}°（{worst}）：1–7 级编码器的误差不会超过角秒量级。采信任何数值之前，请检查编码器列的单位（度）、面数（{faces}）和面编号；出具证书需要您确认。***</translation>
+    </message>
+    <message>
+        <source>no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with R² below {min_r2}), R² = {r2}; the largest residual, {largest}, is at row {row}: check that row&apos;s readings, the columns and the accuracy setting</source>
+        <translation>没有任何安装状态能解释 {column} 读数：残差 RMS {rms} 是经纬仪精度 {accuracy} 的 {ratio} 倍（超过 {far} 倍，或 R² 低于 {min_r2} 时超过 {near} 倍，即拒绝），R² = {r2}；最大残差 {largest} 位于第 {row} 行：请检查该行读数、各列和精度设置</translation>
+    </message>
+    <message>
+        <source>row {row}, where the theodolite was zeroed (θ = {theta}°, A = {azimuth}°), disagrees with {bad} of the other {n} rows by more than ±{limit}: check columns &apos;theta_deg&apos; and &apos;azimuth_deg&apos; of that row, or the reference row</source>
+        <translation>第 {row} 行（经纬仪在此置零，θ = {theta}°，A = {azimuth}°）与其余 {n} 行中的 {bad} 行相差超过 ±{limit}：请检查该行的 &apos;theta_deg&apos; 和 &apos;azimuth_deg&apos; 列，或参考行</translation>
+    </message>
+    <message>
+        <source>row {row}: θ = {theta}° and A = {azimuth}° disagree by {error} after the set-up&apos;s share is removed ({bad} of {n} rows beyond ±{limit}; the zero is at row {zero}): no axis errs by that much: check columns &apos;theta_deg&apos; and &apos;azimuth_deg&apos; of that row</source>
+        <translation>第 {row} 行：扣除安装误差后，θ = {theta}° 与 A = {azimuth}° 相差 {error}（{n} 行中有 {bad} 行超过 ±{limit}；零位在第 {zero} 行）：没有任何轴系误差会这么大：请检查该行的 &apos;theta_deg&apos; 和 &apos;azimuth_deg&apos; 列</translation>
+    </message>
+    <message>
+        <source>issue the certificate although the result shows figures no instrument of the kind has (polygon: errors of degrees); you have checked the readings</source>
+        <translation>即使结果显示该类仪器不可能有的数值（polygon：误差达数度）也出具证书；表示您已核对读数</translation>
+    </message>
+    <message>
+        <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
+        <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
+    </message>
+    <message>
+        <source>Readings, run by run (colour: run; ↑ solid, ↓ dashed)</source>
+        <translation>逐次测量的读数（颜色：测次；↑ 实线，↓ 虚线）</translation>
+    </message>
+    <message>
+        <source>model</source>
+        <translation>模型</translation>
+    </message>
+    <message>
+        <source>raw</source>
+        <translation>原始</translation>
+    </message>
+    <message>
+        <source>readings typed in AngleBench</source>
+        <translation>在 AngleBench 中录入的读数</translation>
+    </message>
+    <message>
+        <source>View All</source>
+        <translation>显示全部</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>图</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>X 轴</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Y 轴</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>手动</translation>
+    </message>
+    <message>
+        <source>Invert axis</source>
+        <translation>坐标轴反向</translation>
+    </message>
+    <message>
+        <source>Mouse enabled</source>
+        <translation>允许鼠标缩放平移</translation>
+    </message>
+    <message>
+        <source>Visible data only</source>
+        <translation>仅按可见数据</translation>
+    </message>
+    <message>
+        <source>Auto pan only</source>
+        <translation>仅自动平移</translation>
+    </message>
+    <message>
+        <source>Link axis:</source>
+        <translation>联动坐标轴：</translation>
+    </message>
+    <message>
+        <source>readings per point n</source>
+        <translation>每点读数次数 n</translation>
+    </message>
+    <message>
+        <source>Repeated readings (s/√n)</source>
+        <translation>重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} encoder and autocollimator readings at each face, over the sets; ν = {dof}</source>
+        <translation>各面 {n} 次编码器与自准直仪读数的 s/√n，按测回合成；ν = {dof}</translation>
+    </message>
+    <message>
+        <source>Repeated readings at the zero face (s/√n)</source>
+        <translation>零位面的重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} readings at face {face} of set 1, shared by every set</source>
+        <translation>第 1 测回第 {face} 面 {n} 次读数的 s/√n，各测回共用</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} azimuth readings at each point, ν = {dof}</source>
+        <translation>各点 {n} 次方位角读数的 s/√n，ν = {dof}</translation>
+    </message>
+    <message>
+        <source>Repeated readings at θ₀ (s/√n)</source>
+        <translation>θ₀ 处的重复读数（s/√n）</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} readings at the reference point, shared by every point</source>
+        <translation>参考点 {n} 次读数的 s/√n，各点共用</translation>
+    </message>
+    <message>
+        <source>n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input &apos;Repeated readings&apos;. 1: every row is a point</source>
+        <translation>每个点（面、目标位置或 θ）连续读取 n 次：每 n 行为一个点，取平均；其 s/√n（ν = n − 1）作为 A 类分量“重复读数”计入不确定度评定。1：每行为一个点</translation>
+    </message>
+    <message>
+        <source>O&amp;verlay a run…</source>
+        <translation>叠加另一次测量(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>Draw another run of this workbench against today&apos;s: a readings or project file (before/after compensation …)</source>
+        <translation>将本工作台的另一次测量与本次画在同一坐标上：读数文件或项目文件（补偿前/后 …）</translation>
+    </message>
+    <message>
+        <source>Overlay a certificate from the register…</source>
+        <translation>叠加登记册中的证书…</translation>
+    </message>
+    <message>
+        <source>Draw this instrument&apos;s earlier certificate against today&apos;s run</source>
+        <translation>将该仪器以前的证书与本次测量画在同一坐标上</translation>
+    </message>
+    <message>
+        <source>Remove the overlaid run</source>
+        <translation>移除叠加的测量</translation>
+    </message>
+    <message>
+        <source>s/√n of the {n} readings at each approach, over the runs of the target; ν = {dof}</source>
+        <translation>每次趋近 {n} 次读数的 s/√n，按该目标位置的各次循环合成；ν = {dof}</translation>
+    </message>
+    <message>
+        <source>Overlay a run on {workbench}</source>
+        <translation>在{workbench}上叠加另一次测量</translation>
+    </message>
+    <message>
+        <source>Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)</source>
+        <translation>读数或项目 (*.csv *.txt *.xlsx *.xlsm *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Overlay a certificate</source>
+        <translation>叠加证书</translation>
+    </message>
+    <message>
+        <source>Certificate of this workbench:</source>
+        <translation>本工作台的证书：</translation>
+    </message>
+    <message>
+        <source>Cannot overlay</source>
+        <translation>无法叠加</translation>
+    </message>
+    <message>
+        <source>{workbench} has no error curve to overlay a run on.</source>
+        <translation>{workbench}没有可叠加的误差曲线。</translation>
+    </message>
+    <message>
+        <source>The register holds no certificate of {workbench}.</source>
+        <translation>登记册中没有{workbench}的证书。</translation>
+    </message>
+    <message>
+        <source>{n} readings per point, but the last point has {count} (row {row} on): add its missing readings or remove the extra ones</source>
+        <extracomment>the setting every workbench with repeated readings declares</extracomment>
+        <translation>每点 {n} 次读数，但最后一个点只有 {count} 次（自第 {row} 行起）：补齐缺少的读数或删去多余的读数</translation>
+    </message>
+    <message>
+        <source>rows {row} and {row2} are readings {j} and 1 of one point ({n} readings per point), but their &apos;{column}&apos; differs: check for a missing or extra reading</source>
+        <translation>第 {row} 行和第 {row2} 行是同一点的第 {j} 次和第 1 次读数（每点 {n} 次），但其“{column}”不同：请检查是否缺少或多出读数</translation>
+    </message>
+    <message>
+        <source>row {row}: &apos;{column}&apos; is blank, but the other readings of its point have it: give every reading of a point the same columns</source>
+        <translation>第 {row} 行：“{column}”为空，但该点的其他读数有此项：同一点的每次读数应填写相同的列</translation>
+    </message>
+    <message>
+        <source>the other run has no corrected curve to draw</source>
+        <translation>另一次测量没有可绘制的修正后曲线</translation>
+    </message>
+    <message>
+        <source>the {workbench} workbench has no error curve to overlay</source>
+        <translation>{workbench}工作台没有可叠加的误差曲线</translation>
+    </message>
+    <message>
+        <source>{label}: the run cannot be analysed: {reason}</source>
+        <translation>{label}：无法分析该次测量：{reason}</translation>
+    </message>
+    <message>
+        <source>{label} holds no readings of the {workbench} workbench</source>
+        <translation>{label} 中没有{workbench}工作台的读数</translation>
+    </message>
+    <message>
+        <source>other run: {name}</source>
+        <translation>另一次测量：{name}</translation>
+    </message>
+    <message>
+        <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register, anglebench capture; each has --help.</source>
+        <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register、anglebench capture；各有 --help。</translation>
+    </message>
+    <message>
+        <source>{text}: give a number greater than 0</source>
+        <translation>{text}：请给出大于 0 的数</translation>
+    </message>
+    <message>
+        <source>Capture readings from an instrument into a CSV</source>
+        <translation>从仪器采集读数，写入 CSV</translation>
+    </message>
+    <message>
+        <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM) or readout (one line per reading)</source>
+        <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（徕卡 GeoCOM 经纬仪）或 readout（每个读数一行的数显表）</translation>
+    </message>
+    <message>
+        <source>a serial port (/dev/ttyUSB0, COM3) or tcp://host:port</source>
+        <translation>串口（/dev/ttyUSB0、COM3）或 tcp://host:port</translation>
+    </message>
+    <message>
+        <source>the CSV to write</source>
+        <translation>要写入的 CSV</translation>
+    </message>
+    <message>
+        <source>baud rate, as set on the instrument (default 9600)</source>
+        <translation>波特率，与仪器上的设置一致（默认 9600）</translation>
+    </message>
+    <message>
+        <source>how many readings (default 1)</source>
+        <translation>读数个数（默认 1）</translation>
+    </message>
+    <message>
+        <source>take a reading when the spread of the frames stays within WINDOW (arcsec; a readout&apos;s own unit) for --dwell seconds</source>
+        <translation>各帧的离散在 --dwell 秒内保持在 WINDOW 之内时取一个读数（角秒；数显表用其自身单位）</translation>
+    </message>
+    <message>
+        <source>the dwell time of --stable</source>
+        <translation>--stable 的驻留时间</translation>
+    </message>
+    <message>
+        <source>readout: regular expression of a line, with a group named value (and unit)</source>
+        <translation>数显表：一行的正则表达式，含名为 value 的组（及 unit）</translation>
+    </message>
+    <message>
+        <source>seconds without a valid frame before the link is reconnected (default 2)</source>
+        <translation>无有效帧多少秒后重新连接（默认 2）</translation>
+    </message>
+    <message>
+        <source>reconnections in a row without a reading before giving up (default 3)</source>
+        <translation>连续多少次重连仍无读数即放弃（默认 3）</translation>
+    </message>
+    <message>
+        <source>give up after this long (default: never)</source>
+        <translation>超过此时长即放弃（默认：不限）</translation>
+    </message>
+    <message>
+        <source>&amp;Instrument</source>
+        <translation>仪器(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Connect…</source>
+        <translation>连接(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Allan deviation (first axis): {figures}</source>
+        <translation>阿伦偏差（第一轴）：{figures}</translation>
+    </message>
+    <message>
+        <source>Autocollimator (ELCOMAT kind)</source>
+        <translation>自准直仪（ELCOMAT 类）</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Connect to an instrument</source>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive)</extracomment>
+        <translation>连接仪器</translation>
+    </message>
+    <message>
+        <source>Connected: {port}</source>
+        <translation>已连接：{port}</translation>
+    </message>
+    <message>
+        <source>Connecting to {port}…</source>
+        <translation>正在连接 {port}…</translation>
+    </message>
+    <message>
+        <source>Connect…</source>
+        <translation>连接…</translation>
+    </message>
+    <message>
+        <source>Instrument</source>
+        <translation>仪器</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <extracomment>finished sessions per workbench (stored form), and the one of this connection rows filled by Take reading or auto-take: (workbench, row, values)</extracomment>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <source>Readout (one line per reading)</source>
+        <translation>数显表（每个读数一行）</translation>
+    </message>
+    <message>
+        <source>Spread over the last second: {spread}{unit}</source>
+        <translation>最近一秒内的离散：{spread}{unit}</translation>
+    </message>
+    <message>
+        <source>Take reading (F9)</source>
+        <translation>取读数 (F9)</translation>
+    </message>
+    <message>
+        <source>Take reading (row {row})</source>
+        <translation>取读数（第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>Theodolite (Leica GeoCOM)</source>
+        <translation>经纬仪（徕卡 GeoCOM）</translation>
+    </message>
+    <message>
+        <source>{reason} (reconnecting)</source>
+        <translation>{reason}（正在重新连接）</translation>
+    </message>
+    <message>
+        <source>This workbench has no column for this instrument&apos;s reading: choose a cell first (readout) or another workbench</source>
+        <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
+    </message>
+    <message>
+        <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings&apos; trace to the instrument&apos;s own output)</source>
+        <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: --stable and --dwell go together</source>
+        <translation>anglebench capture：--stable 与 --dwell 须同时给出</translation>
+    </message>
+    <message>
+        <source>anglebench capture: --pattern: {reason}</source>
+        <translation>anglebench capture：--pattern：{reason}</translation>
+    </message>
+    <message>
+        <source>{port}: {n} of {total} readings in {seconds} s</source>
+        <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; reconnecting</source>
+        <translation>anglebench capture：{reason}；正在重新连接</translation>
+    </message>
+    <message>
+        <source>{port}: interrupted</source>
+        <translation>{port}：已中断</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; no reading was taken</source>
+        <translation>anglebench capture：{reason}；未取得任何读数</translation>
+    </message>
+    <message>
+        <source>anglebench capture: cannot write {path}: {reason}</source>
+        <translation>anglebench capture：无法写入 {path}：{reason}</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; the {n} readings taken are in {path}</source>
+        <translation>anglebench capture：{reason}；已取得的 {n} 个读数在 {path} 中</translation>
+    </message>
+    <message>
+        <source>{n} readings written to {path} ({refused} frames refused: noise, an invalid axis or an error reply)</source>
+        <translation>{n} 个读数已写入 {path}（拒收 {refused} 帧：噪声、无效轴或错误应答）</translation>
+    </message>
+    <message>
+        <source>{n} readings written to {path}</source>
+        <translation>{n} 个读数已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{port}: cannot open ({reason})</source>
+        <extracomment>a read returns after this long without bytes, so the worker can look up and stop</extracomment>
+        <translation>{port}：无法打开（{reason}）</translation>
+    </message>
+    <message>
+        <source>{port}: no answer for {seconds} s</source>
+        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index in the worker&apos;s :attr:`CaptureWorker.raw` a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+        <translation>{port}：{seconds} 秒无应答</translation>
+    </message>
+    <message>
+        <source>{port}: only unreadable bytes for {seconds} s (a wrong baud rate? {baud} was used)</source>
+        <translation>{port}：{seconds} 秒内只收到无法识读的字节（波特率错误？所用为 {baud}）</translation>
+    </message>
+    <message>
+        <source>{port}: no valid reading for {seconds} s (last: {reason})</source>
+        <translation>{port}：{seconds} 秒无有效读数（最后一行：{reason}）</translation>
+    </message>
+    <message>
+        <source>{port}: the link dropped ({reason})</source>
+        <translation>{port}：连接中断（{reason}）</translation>
+    </message>
+    <message>
+        <source>conditional pass</source>
+        <translation>有条件合格</translation>
+    </message>
+    <message>
+        <source>conditional fail</source>
+        <translation>有条件不合格</translation>
+    </message>
+    <message>
+        <source>fail</source>
+        <translation>不合格</translation>
+    </message>
+    <message>
+        <source>guard band, non-binary</source>
+        <translation>带保护带，非二元</translation>
+    </message>
+    <message>
+        <source>guard band, binary</source>
+        <translation>带保护带，二元</translation>
+    </message>
+    <message>
+        <source>simple acceptance</source>
+        <translation>简单接受</translation>
+    </message>
+    <message>
+        <source>It is no longer valid: superseded by {by}.</source>
+        <translation>它已不再有效：已被 {by} 取代。</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>是</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>否</translation>
+    </message>
+    <message>
+        <source>row {value}, column &apos;{name}&apos;: {values}° is beyond ±{limit}° and cannot be a reading of this test</source>
+        <translation>第 {value} 行，列 &apos;{name}&apos;：{values}° 超出 ±{limit}°，不可能是本检测的读数</translation>
+    </message>
+    <message>
+        <source>{source}: row {row}: not UTF-8 or GBK text (byte {byte} hex at position {column}); save it as CSV UTF-8 and try again</source>
+        <extracomment>Limits of a readings file: no readings file comes near them, a hostile one does. A run of empty sheet rows longer than this ends the reading with an error. An XLSX workbook whose parts expand beyond this (a &quot;zip bomb&quot;) is refused unread.</extracomment>
+        <translation>{source}：第 {row} 行：不是 UTF-8 或 GBK 文本（第 {column} 个位置的十六进制字节 {byte}）；请另存为 CSV UTF-8 后重试</translation>
+    </message>
+    <message>
+        <source>after compensation: {name}</source>
+        <translation>补偿后：{name}</translation>
+    </message>
+    <message>
+        <source>Not compared with the log after compensation: {reason}</source>
+        <translation>未与补偿后记录比较：{reason}</translation>
+    </message>
+    <message>
+        <source> — RUN INVALID (closure failed)</source>
+        <translation> — 测量无效（闭合不合格）</translation>
+    </message>
+    <message>
+        <source>Cannot read certificate</source>
+        <translation>无法读取证书</translation>
+    </message>
+    <message>
+        <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
+        <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
+    </message>
+    <message>
+        <source>Load polygon certificate</source>
+        <translation>载入多面棱体证书</translation>
+    </message>
+    <message>
+        <source>Cannot export the correction table</source>
+        <translation>无法导出修正表</translation>
+    </message>
+    <message>
+        <source>Auto-take when stable</source>
+        <translation>稳定时自动取数</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
+        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>稳定范围</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>驻留时间</translation>
+    </message>
+    <message>
+        <source>Auto-take: taken; move to the next point</source>
+        <translation>自动取数：已取；请转到下一点</translation>
+    </message>
+    <message>
+        <source>Auto-take: settling, {percent} % of the dwell</source>
+        <translation>自动取数：正在稳定，已达驻留时间的 {percent} %</translation>
+    </message>
+    <message>
+        <source>Next: {what}</source>
+        <translation>下一步：{what}</translation>
+    </message>
+    <message>
+        <source>Connected: {port} (reconnected after: {reason})</source>
+        <translation>已连接：{port}（曾因以下原因重新连接：{reason}）</translation>
+    </message>
+    <message>
+        <source>{what} — reading {k} of {n}</source>
+        <translation>{what} — 第 {k} 次读数，共 {n} 次</translation>
+    </message>
+    <message>
+        <source>go to face {face}</source>
+        <translation>转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>stay at face {face}</source>
+        <translation>停在第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face}</source>
+        <translation>第 {set} 测回：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>第 {set} 测回：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>go to the next face (set the number of faces)</source>
+        <translation>转到下一面（请设置面数）</translation>
+    </message>
+    <message>
+        <source>go back to face {face} (encoder ≈ {encoder}°): the closure of set {set}</source>
+        <translation>回到第 {face} 面（编码器 ≈ {encoder}°）：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go back to face {face}: the closure of set {set}</source>
+        <translation>回到第 {face} 面：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>turn the axis to the next θ and type it in the θ column</source>
+        <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
+    </message>
+    <message>
+        <source>θ = {theta}</source>
+        <translation>θ = {theta}</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames must be a list of sessions</source>
+        <extracomment>a session&apos;s keys, in the order they are stored</extracomment>
+        <translation>{where}：原始数据帧必须是采集会话的列表</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: not a capture session ({keys} expected)</source>
+        <translation>{where}，第 {i} 个会话：不是采集会话（应有 {keys}）</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: a frame or a take is not as stored by AngleBench</source>
+        <translation>{where}，第 {i} 个会话：某一帧或某次取数与 AngleBench 保存的格式不符</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;raw_capture&apos; must be an object; nothing was changed</source>
+        <translation>{source}：&apos;raw_capture&apos; 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: &apos;sha256&apos; and &apos;sessions&apos; expected; nothing was changed</source>
+        <translation>{where}：应有 &apos;sha256&apos; 和 &apos;sessions&apos;；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{reason}; nothing was changed</source>
+        <translation>{reason}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
+        <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
+    </message>
+    <message>
+        <source>mounting, position, encoder and autocollimator columns differ in length</source>
+        <translation>安装位置、面号、编码器和自准直仪各列长度不一致</translation>
+    </message>
+    <message>
+        <source>{faces} faces: a polygon has at least 3</source>
+        <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>drift must be one of {modes}, not {mode}</source>
+        <translation>漂移处理方式须为 {modes} 之一，而不是 {mode}</translation>
+    </message>
+    <message>
+        <source>ac_alignment must be one of {frames}, not {frame}</source>
+        <translation>ac_alignment 须为 {frames} 之一，而不是 {frame}</translation>
+    </message>
+    <message>
+        <source>the vertical readings ({count}) are not one per row ({rows})</source>
+        <translation>竖直读数（{count} 个）与行数（{rows} 行）不是一一对应</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: the faces and the encoder&apos;s steps are not connected — at least two mountings are needed</source>
+        <translation>只有安装位置 {mounting}：各面与编码器的步距未能关联——至少需要两个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder {encoder} is {offset} from step {step} ({nominal}) where mounting {mounting} reads face {face}: a mounting that starts elsewhere, or a wrong mounting or face number</source>
+        <translation>第 {row} 行：编码器读数 {encoder} 与第 {step} 步（{nominal}）相差 {offset}，此处安装位置 {mounting} 读第 {face} 面：该安装位置起点不同，或安装位置号、面号有误</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} do not connect the faces: no harmonic of the encoder&apos;s error or of the face deviations is determined</source>
+        <translation>安装位置 {mountings} 未能关联各面：编码器误差和各面偏差的谐波均无法确定</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings</extracomment>
+        <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} {value} is not a whole number</source>
+        <translation>第 {row} 行：{column} {value} 不是整数</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} is not a number</source>
+        <translation>第 {row} 行：{column} 不是数字</translation>
+    </message>
+    <message>
+        <source>row {row}: face {face} is outside 1…{faces} (face count {faces})</source>
+        <translation>第 {row} 行：第 {face} 面超出 1…{faces}（面数 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} is outside 0…{last}</source>
+        <translation>第 {row} 行：安装位置 {mounting} 超出 0…{last}</translation>
+    </message>
+    <message>
+        <source>mounting {mounting} (rows {first}…{last}): face(s) {faces} missing — every mounting reads all {count} faces</source>
+        <translation>安装位置 {mounting}（第 {first}…{last} 行）：缺少第 {faces} 面——每个安装位置须读全部 {count} 个面</translation>
+    </message>
+    <message>
+        <source>no vertical readings: the polygon&apos;s tilt on the shaft is neither identified nor removed</source>
+        <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
+    </message>
+    <message>
+        <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator&apos;s σ</source>
+        <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} repeats row {other} (a duplicate reading; only the closure reading, last, may repeat the first face)</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的第 {face} 面与第 {other} 行重复（重复读数；只有最后的闭合读数可以重复第一个面）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: vertical readings missing: its tilt is neither identified nor removed</source>
+        <translation>安装位置 {mounting}：缺少竖直读数：未辨识也未消除其倾斜</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: no closure reading (its first face read again at the end): drift not checked</source>
+        <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：未检查漂移</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
+        <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
+    </message>
+    <message>
+        <source>Cross-calibration (polygon + encoder)</source>
+        <translation>互校准（多面棱体 + 编码器）</translation>
+    </message>
+    <message>
+        <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
+        <translation>全组合测量，24 面，σ = 0.02&quot;：u = σ√(n − 1)/n（Estler）</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 faces, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面全组合测量，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, mountings 0, 1, 5 of 12, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面中的安装位置 0、1、5，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>mountings 0, 4, 8 of 12: the harmonics not determined are named and withheld</source>
+        <translation>12 面中的安装位置 0、4、8：无法确定的谐波被指明且不予报告</translation>
+    </message>
+    <message>
+        <source>stated u against the spread of {trials} simulated runs (ν = {dof})</source>
+        <translation>给出的 u 与 {trials} 次仿真测量的分散性比较（ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}</source>
+        <translation>比值 1 ± {tolerance}</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, U covers {coverage} %</source>
+        <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: the vertical readings scatter {rms} RMS about the tilt fitted, far more than the horizontal ones ({sigma}): check them; the tilt correction rests on them</source>
+        <translation>安装位置 {mounting}：竖直读数相对拟合倾斜的分散为 {rms} RMS，远大于水平读数（{sigma}）：请检查；倾斜修正依赖于这些读数</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
+        <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
+    </message>
+    <message>
+        <source>face pyramidal errors: each face normal&apos;s elevation relative to the faces&apos; mean plane (their mean and first harmonic over the faces are not determined: they cannot be told from the autocollimator&apos;s vertical zero and the polygon&apos;s tilt); largest {largest}, u up to {u}</source>
+        <translation>工作面棱锥误差：各工作面法线相对于各工作面平均平面的仰角（其在各工作面上的平均值和一次谐波无法确定：它们与自准直仪的竖直零位及多面棱体的倾斜无法区分）；最大 {largest}，u 最大 {u}</translation>
+    </message>
+    <message>
+        <source>Each mounting&apos;s drift, seen by its closure reading: fitted by least squares as a linear drift over the mounting and removed; or its closure spread linearly over the mounting and removed, as the polygon workbench does; or only reported</source>
+        <translation>各安装位置的漂移（由其闭合读数看出）：按最小二乘拟合为该安装位置内的线性漂移并扣除；或如多面棱体工作台那样将闭合差线性分配到该安装位置并扣除；或仅报告</translation>
+    </message>
+    <message>
+        <source>Faces of the polygon (= the encoder&apos;s steps); 0: as many as the readings have</source>
+        <translation>多面棱体面数（= 编码器的步数）；0：按读数中的面数</translation>
+    </message>
+    <message>
+        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported.</source>
+        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。</translation>
+    </message>
+    <message>
+        <source>Reading scatter through the design</source>
+        <translation>读数分散性（经测量设计传递）</translation>
+    </message>
+    <message>
+        <source>σ = {sigma} of one reading ({how}), propagated exactly through the least-squares design of {mountings} mountings</source>
+        <translation>单次读数 σ = {sigma}（{how}），经 {mountings} 个安装位置的最小二乘设计严格传递</translation>
+    </message>
+    <message>
+        <source>from the residuals, ν = {nu}</source>
+        <translation>由残差求得，ν = {nu}</translation>
+    </message>
+    <message>
+        <source>stated</source>
+        <translation>给定值</translation>
+    </message>
+    <message>
+        <source>resolution {r} per reading, through the same design</source>
+        <translation>每次读数的分辨力 {r}，经同一设计传递</translation>
+    </message>
+    <message>
+        <source>no certificate: this design does not determine the {what} (harmonic(s) {orders} unseen); add a mounting</source>
+        <translation>不能出具证书：此测量设计不能确定{what}（第 {orders} 次谐波不可见）；请增加安装位置</translation>
+    </message>
+    <message>
+        <source>encoder&apos;s error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>face deviations</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Faces / encoder steps</source>
+        <translation>面数 / 编码器步数</translation>
+    </message>
+    <message>
+        <source>Mountings</source>
+        <translation>安装位置</translation>
+    </message>
+    <message>
+        <source>σ of one reading</source>
+        <translation>单次读数的 σ</translation>
+    </message>
+    <message>
+        <source>spread linearly over each mounting and removed</source>
+        <translation>在各安装位置内线性分配并扣除</translation>
+    </message>
+    <message>
+        <source>fitted linearly over each mounting by least squares and removed</source>
+        <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>set to its nominal steps</source>
+        <translation>置于标称步位</translation>
+    </message>
+    <message>
+        <source>read at each step</source>
+        <translation>每步读数</translation>
+    </message>
+    <message>
+        <source>Largest correlation encoder / polygon</source>
+        <translation>编码器与多面棱体结果的最大相关系数</translation>
+    </message>
+    <message>
+        <source>Mounting {mounting} closure</source>
+        <translation>安装位置 {mounting} 闭合差</translation>
+    </message>
+    <message>
+        <source>Encoder error at its steps</source>
+        <translation>编码器各步误差</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <source>From the start (°)</source>
+        <translation>自起点 (°)</translation>
+    </message>
+    <message>
+        <source>Error (&quot;)</source>
+        <translation>误差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>Error = indicated − true angle, about its mean over the full turn (the steps of a full turn close at 360°).</source>
+        <translation>误差 = 示值 − 真角度，以整周平均值为零（整周各步在 360° 处封闭）。</translation>
+    </message>
+    <message>
+        <source>step {k}</source>
+        <translation>第 {k} 步</translation>
+    </message>
+    <message>
+        <source>encoder error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>误差</translation>
+    </message>
+    <message>
+        <source>JJF 1115 division error</source>
+        <translation>JJF 1115 分度误差</translation>
+    </message>
+    <message>
+        <source>JJF 1115 repeatability (largest s over the steps)</source>
+        <translation>JJF 1115 重复性（各步 s 的最大值）</translation>
+    </message>
+    <message>
+        <source>the mountings as repeated runs</source>
+        <translation>各安装位置视为重复测量</translation>
+    </message>
+    <message>
+        <source>ISO 230-2 (unidirectional)</source>
+        <translation>ISO 230-2（单向）</translation>
+    </message>
+    <message>
+        <source>the mountings as repeated runs; deviation = −error</source>
+        <translation>各安装位置视为重复测量；偏差 = −误差</translation>
+    </message>
+    <message>
+        <source>Face deviations</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Face</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>Deviation (&quot;)</source>
+        <translation>偏差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>From face 1 (&quot;)</source>
+        <translation>相对第 1 面 (&quot;)</translation>
+    </message>
+    <message>
+        <source>U from face 1 (&quot;)</source>
+        <translation>相对第 1 面的 U (&quot;)</translation>
+    </message>
+    <message>
+        <source>Deviation = the face&apos;s angle from face 1 minus its nominal, stated about the mean over the faces (the faces close at 360°); the last two columns state it from face 1.</source>
+        <translation>偏差 = 该面相对第 1 面的角度减去其标称值，以各面平均值为零（各面在 360° 处封闭）；最后两列给出相对第 1 面的值。</translation>
+    </message>
+    <message>
+        <source>face {k}</source>
+        <translation>第 {k} 面</translation>
+    </message>
+    <message>
+        <source>face deviation</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Deviation</source>
+        <translation>偏差</translation>
+    </message>
+    <message>
+        <source>steps</source>
+        <translation>各步</translation>
+    </message>
+    <message>
+        <source>faces</source>
+        <translation>各面</translation>
+    </message>
+    <message>
+        <source>No calibrated reference enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator reads near its null, where its scale error does not matter.</source>
+        <translation>本结果未使用任何已校准的参考标准：多面棱体与编码器依圆周封闭原理相互校准。自准直仪在零位附近读数，其示值比例误差可忽略。</translation>
+    </message>
+    <message>
+        <source>The {other} was calibrated in the same run; the largest correlation between its results and these is {r}.</source>
+        <translation>{other}在同一次测量中一并校准；其结果与本结果之间的最大相关系数为 {r}。</translation>
+    </message>
+    <message>
+        <source>polygon</source>
+        <translation>多面棱体</translation>
+    </message>
+    <message>
+        <source>encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Encoder error at its steps with U</source>
+        <translation>编码器各步误差及其 U</translation>
+    </message>
+    <message>
+        <source>encoder step (°)</source>
+        <translation>编码器步位 (°)</translation>
+    </message>
+    <message>
+        <source>encoder error ± U</source>
+        <translation>编码器误差 ± U</translation>
+    </message>
+    <message>
+        <source>Polygon face deviations with U</source>
+        <translation>多面棱体面偏差及其 U</translation>
+    </message>
+    <message>
+        <source>face</source>
+        <translation>面</translation>
+    </message>
+    <message>
+        <source>deviation (&quot;)</source>
+        <translation>偏差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>face deviation ± U</source>
+        <translation>面偏差 ± U</translation>
+    </message>
+    <message>
+        <source>residual per mounting</source>
+        <translation>各安装位置残差</translation>
+    </message>
+    <message>
+        <source>outlier (&gt; 3σ)</source>
+        <translation>异常值（&gt; 3σ）</translation>
+    </message>
+    <message>
+        <source>Residuals per mounting and face</source>
+        <translation>各安装位置、各面的残差</translation>
+    </message>
+    <message>
+        <source>closure (x′ − x) − (a′ − a)</source>
+        <translation>闭合差 (x′ − x) − (a′ − a)</translation>
+    </message>
+    <message>
+        <source>drift fitted</source>
+        <translation>拟合漂移</translation>
+    </message>
+    <message>
+        <source>Closure per mounting</source>
+        <translation>各安装位置闭合差</translation>
+    </message>
+    <message>
+        <source>mounting</source>
+        <translation>安装位置</translation>
+    </message>
+    <message>
+        <source>closure (&quot;)</source>
+        <translation>闭合差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>row {row}: {reason}</source>
+        <extracomment>a residual beyond this many σ is marked as an outlier</extracomment>
+        <translation>第 {row} 行：{reason}</translation>
+    </message>
+    <message>
+        <source>{count} reading(s) lie beyond {sigmas}σ of the fit (rows {rows}): check them</source>
+        <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
+    </message>
+    <message>
+        <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>
+        <translation>{faces} 面棱体装于编码器上，{count} 个安装位置（{mountings}）；单次读数 σ = {sigma}（ν = {nu}），k = {k}</translation>
+    </message>
+    <message>
+        <source>Encoder set to its nominal steps (no encoder readings).</source>
+        <translation>编码器置于标称步位（无编码器读数）。</translation>
+    </message>
+    <message>
+        <source>Encoder error {span} (peak-to-peak {ptp}), U up to {u}</source>
+        <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
+    </message>
+    <message>
+        <source>Encoder error NOT determined: harmonic(s) {orders} unseen by this design</source>
+        <translation>编码器误差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
+    </message>
+    <message>
+        <source>Face deviations {span} (about their mean), U up to {u}</source>
+        <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
+    </message>
+    <message>
+        <source>Face deviations NOT determined: harmonic(s) {orders} unseen by this design</source>
+        <translation>面偏差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
+    </message>
+    <message>
+        <source>Closures {count} of {mountings}: {low} … {high}; drift removed</source>
+        <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移已扣除</translation>
+    </message>
+    <message>
+        <source>Closures {count} of {mountings}: {low} … {high}; drift reported, not removed</source>
+        <translation>闭合差（{mountings} 个中的 {count} 个）：{low} … {high}；漂移仅报告，未扣除</translation>
+    </message>
+    <message>
+        <source>No closure readings: drift not measured</source>
+        <translation>无闭合读数：未测漂移</translation>
+    </message>
+    <message>
+        <source>Largest correlation between an encoder error and a face deviation: {r}</source>
+        <translation>编码器误差与面偏差之间的最大相关系数：{r}</translation>
+    </message>
+    <message>
+        <source>This design cannot separate every harmonic: the undetermined results are withheld (see the warnings).</source>
+        <translation>此测量设计不能分离全部谐波：未能确定的结果不予给出（见警告）。</translation>
+    </message>
+    <message>
+        <source>Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations {low} … {high} (U ≤ {ud})</source>
+        <translation>编码器误差峰峰值 {ptp}（U ≤ {ue}）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
+    </message>
+    <message>
+        <source>the face deviations are not determined by this design: nothing to send</source>
+        <translation>此测量设计不能确定面偏差：无可发送的内容</translation>
+    </message>
+    <message>
+        <source>Standard deviation of one reading when known (the autocollimator&apos;s and the encoder&apos;s noise together); 0: taken from the residuals of the fit, with its degrees of freedom</source>
+        <translation>已知时给出单次读数的标准偏差（自准直仪与编码器噪声合计）；0：由拟合残差求得，并给出其自由度</translation>
+    </message>
+    <message>
+        <source>The frame the tilt correction is made in when vertical readings are given, as in the polygon workbench: the autocollimator levelled with the rotary axis, or its vertical along the polygon&apos;s axis</source>
+        <translation>给出垂直读数时倾斜修正所采用的坐标系，与多面棱体工作台相同：自准直仪与回转轴调平，或其垂直方向沿多面棱体轴线</translation>
+    </message>
+    <message>
+        <source>Which instrument the certificate is issued for: the polygon&apos;s face deviations or the encoder&apos;s error at its steps</source>
+        <translation>证书所针对的器具：多面棱体的面偏差，或编码器各步的误差</translation>
+    </message>
+    <message>
+        <source>certificate of</source>
+        <translation>证书对象</translation>
+    </message>
+    <message>
+        <source>closure</source>
+        <translation>闭合</translation>
+    </message>
+    <message>
+        <source>encoder error peak-to-peak</source>
+        <translation>编码器误差峰峰值</translation>
+    </message>
+    <message>
+        <source>encoder step</source>
+        <translation>编码器步位</translation>
+    </message>
+    <message>
+        <source>face deviation peak-to-peak</source>
+        <translation>面偏差峰峰值</translation>
+    </message>
+    <message>
+        <source>fit linearly, remove</source>
+        <translation>线性拟合并扣除</translation>
+    </message>
+    <message>
+        <source>from the residuals</source>
+        <translation>由残差求得</translation>
+    </message>
+    <message>
+        <source>report it (not removed)</source>
+        <translation>仅报告（不扣除）</translation>
+    </message>
+    <message>
+        <source>the encoder (error at its steps)</source>
+        <translation>编码器（各步误差）</translation>
+    </message>
+    <message>
+        <source>the polygon (face deviations)</source>
+        <translation>多面棱体（面偏差）</translation>
+    </message>
+    <message>
+        <source>σ of a reading</source>
+        <translation>单次读数 σ</translation>
+    </message>
+    <message>
+        <source>The polygon&apos;s face deviations (from face 1, with U)</source>
+        <translation>多面棱体面偏差（相对第 1 面，含 U）</translation>
+    </message>
+    <message>
+        <source>no readings</source>
+        <extracomment>autocollimator readings beyond this are no readings of a polygon&apos;s faces a matrix&apos;s last column named so holds each mounting&apos;s closure reading (its first face)</extracomment>
+        <translation>无读数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;{key}&apos;: {value}&quot; is beyond ±{limit}&quot; and cannot be an autocollimator reading of a face</source>
+        <translation>第 {row} 行，列“{key}”：{value}&quot; 超出 ±{limit}&quot;，不可能是自准直仪对棱体面的读数</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;encoder_deg&apos;: the encoder reading is given in some rows and blank in others; give it in every row, or leave the column blank when the encoder was set to its nominal steps</source>
+        <translation>第 {row} 行，列“encoder_deg”：编码器读数有的行有、有的行空；请每行都填，或在编码器置于标称步位时整列留空</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;ac_y_arcsec&apos;: a vertical reading is missing (give one in every row, or none)</source>
+        <translation>第 {row} 行，列“ac_y_arcsec”：缺少垂直读数（每行都填，或都不填）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} again, after mounting {other}: keep each mounting&apos;s readings in one block</source>
+        <translation>第 {row} 行：在安装位置 {other} 之后又出现安装位置 {mounting}：每个安装位置的读数须连在一起</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;mounting&apos;: mounting {mounting} is outside 0…{last} (a mounting is how many faces the polygon was turned, for {faces} faces)</source>
+        <translation>第 {row} 行，列“mounting”：安装位置 {mounting} 超出 0…{last}（安装位置是多面棱体转过的面数，共 {faces} 面）</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;position&apos;: face {face} is outside 1…{faces} (the face count is {faces})</source>
+        <translation>第 {row} 行，列“position”：面 {face} 超出 1…{faces}（面数为 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} is read again (row {first}); only the closure reading, last in its mounting, may repeat the first face</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的面 {face} 重复读数（第 {first} 行）；只有该安装位置最后的闭合读数可重复第一个面</translation>
+    </message>
+    <message>
+        <source>rows {row}–{last}: mounting {mounting} reads {read} faces, the face count is {faces}: face(s) {missing} missing</source>
+        <translation>第 {row}–{last} 行：安装位置 {mounting} 读了 {read} 个面，面数为 {faces}：缺少面 {missing}</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} starts at face {face}; turned {mounting} face(s), the polygon has face {start} at the encoder&apos;s first step, where every mounting starts</source>
+        <translation>第 {row} 行：安装位置 {mounting} 从面 {face} 开始；转过 {mounting} 个面后，位于编码器第一步（各安装位置的起点）的应是面 {start}</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: one mounting does not connect the faces with the encoder&apos;s steps; turn the polygon on the shaft and read at least one more mounting</source>
+        <translation>只有安装位置 {mounting}：一个安装位置不能把各面与编码器各步联系起来；请在轴上转动多面棱体，至少再测一个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} starts with the encoder at {reading}°, {off}° from where mounting {first} started ({start}°): every mounting starts from the same encoder position</source>
+        <translation>第 {row} 行：安装位置 {mounting} 开始时编码器读数为 {reading}°，与安装位置 {first} 的起点（{start}°）相差 {off}°：各安装位置须从同一编码器位置开始</translation>
+    </message>
+    <message>
+        <source>row {row}, column &apos;encoder_deg&apos;: {reading}° is {off}° from step {step} ({nominal}°) where mounting {mounting} reads face {face}: a wrong mounting or face number, or a mis-typed reading</source>
+        <translation>第 {row} 行，列“encoder_deg”：{reading}° 与第 {step} 步（{nominal}°）相差 {off}°，此处安装位置 {mounting} 读面 {face}：安装位置或面号有误，或读数录入错误</translation>
+    </message>
+    <message>
+        <source>Cannot save the face deviations</source>
+        <translation>无法保存面偏差</translation>
+    </message>
+    <message>
+        <source>{what} written: load them in the polygon workbench with &apos;Load polygon certificate…&apos;</source>
+        <translation>{what}已写出：请在多面棱体工作台用“载入多面棱体证书…”载入</translation>
+    </message>
+    <message>
+        <source>Save face deviations for the polygon workbench…</source>
+        <translation>保存面偏差供多面棱体工作台使用…</translation>
+    </message>
+    <message>
+        <source>The polygon&apos;s face deviations from face 1 with their U, as a file the polygon workbench loads with &apos;Load polygon certificate…&apos;</source>
+        <translation>多面棱体相对第 1 面的面偏差及其 U，写成多面棱体工作台可用“载入多面棱体证书…”载入的文件</translation>
+    </message>
+    <message>
+        <source>Encoder error</source>
+        <translation>编码器误差</translation>
+    </message>
+    <message>
+        <source>Residuals</source>
+        <translation>残差</translation>
+    </message>
+    <message>
+        <source>Closure</source>
+        <translation>闭合差</translation>
+    </message>
+    <message>
+        <source>Save face deviations</source>
+        <translation>保存面偏差</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+</context>
 </TS>
