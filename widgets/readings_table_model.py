@@ -18,6 +18,11 @@ INVALID_BRUSH = QBrush(QColor(255, 205, 205))
 MUTED_BRUSH = QBrush(QColor(235, 240, 250))
 
 _Index = QModelIndex | QPersistentModelIndex
+#: the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each
+#: paint and column fit, and the others are turned away before any work (a capture's take
+#: re-measures the columns, and this is most of its cost)
+_ROLES = frozenset((Qt.ItemDataRole.DisplayRole, Qt.ItemDataRole.EditRole,
+                    Qt.ItemDataRole.BackgroundRole, Qt.ItemDataRole.ToolTipRole))
 
 
 class ReadingsTableModel(QAbstractTableModel):
@@ -47,7 +52,7 @@ class ReadingsTableModel(QAbstractTableModel):
         return 0 if parent.isValid() else self.sheet.column_count
 
     def data(self, index: _Index, role: int = Qt.ItemDataRole.DisplayRole):
-        if not index.isValid():
+        if role not in _ROLES or not index.isValid():
             return None
         r, c = index.row(), index.column()
         inside = r < self.sheet.row_count

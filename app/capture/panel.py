@@ -72,6 +72,9 @@ SPREAD_SECONDS = 1.0
 GUIDE_EVERY_S = 0.25
 #: the longest a timer tick spends taking in readings (the window stays responsive)
 DRAIN_BUDGET_S = 0.010
+#: the live readout's texts are redrawn at most this often (a 250 Hz stream would
+#: otherwise repaint the panel at every 20 ms tick); the newest reading is always shown
+SHOW_EVERY_S = 0.1
 
 class ConnectDialog(QDialog):
     def __init__(self, parent=None) -> None:
@@ -207,6 +210,8 @@ class CapturePanel(QDockWidget):
         self.timer.setInterval(20)
         self.timer.timeout.connect(self.drain)
         self._allan_due = 0.0
+        self._show_due = 0.0  # perf_counter time the readout's texts may be redrawn
+        self._show_pending = False
 
     # ------------------------------------------------------------ connecting
     def connect_dialog(self) -> None:
@@ -222,6 +227,7 @@ class CapturePanel(QDockWidget):
         self.frames.clear()
         self.latest = None
         self.received = 0
+        self._show_due, self._show_pending = 0.0, False
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.window_.current.kind.key, kind, self.worker)
         self._last_fault = ""
@@ -375,16 +381,21 @@ class CapturePanel(QDockWidget):
                 self._guide_due = event.time_s + GUIDE_EVERY_S
                 self.update_guide()
             self._feed_gate(event)
-        if fresh:
-            if self.worker is worker and not ended:
+        if fresh and self.worker is worker and not ended:
+            if self.status.styleSheet():  # a style set anew repolishes the label
                 self.status.setStyleSheet("")
-                self.status.setText(tr("Connected: {port}").format(port=worker.port)
-                                    if not self._last_fault else
-                                    tr("Connected: {port} (reconnected after: {reason})").format(
-                                        port=worker.port, reason=self._last_fault))
-                self.take_button.setEnabled(True)
-            self._show()
-            self._show_gate()
+            self.status.setText(tr("Connected: {port}").format(port=worker.port)
+                                if not self._last_fault else
+                                tr("Connected: {port} (reconnected after: {reason})").format(
+                                    port=worker.port, reason=self._last_fault))
+            self.take_button.setEnabled(True)
+        if fresh or self._show_pending:
+            now = time.perf_counter()
+            self._show_pending = now < self._show_due and self.worker is worker and not ended
+            if not self._show_pending:
+                self._show_due = now + SHOW_EVERY_S
+                self._show()
+                self._show_gate()
         if ended and self.worker is worker:
             self.disconnect_instrument()
 
