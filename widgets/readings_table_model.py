@@ -39,6 +39,9 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet = sheet
         self.undo_stack = undo_stack
         self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+        #: why a cell's text cannot be read, by (column, text): a column's parse depends on
+        #: the text alone, and every paint asks it of every visible cell
+        self._reasons: dict[tuple[int, str], str | None] = {}
         on_language_change(self, self._on_language_changed)
 
     def _on_language_changed(self) -> None:
@@ -61,19 +64,34 @@ class ReadingsTableModel(QAbstractTableModel):
         if not inside:
             return None
         if role == Qt.ItemDataRole.BackgroundRole:
-            if self.sheet.cell_error(r, c) is not None:
+            if self.cell_error(r, c) is not None:
                 return INVALID_BRUSH
             if r in self.highlight_rows:
                 return MUTED_BRUSH
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
-            reason = self.sheet.cell_error(r, c)
+            reason = self.cell_error(r, c)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
             return (tr("Row {row}, {header} ({key}): {reason}").format(
                 row=r + 1, header=declared(column.header), key=column.key,
                 reason=translated(reason))
                 if reason else None)
         return None
+
+    def cell_error(self, r: int, c: int) -> str | None:
+        """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse
+        remembered by column and text (a blank row is fine, asked each time)."""
+        if self.sheet.is_blank_row(r):
+            return None
+        key = (c, self.sheet.text(r, c))
+        try:
+            return self._reasons[key]
+        except KeyError:
+            pass
+        if len(self._reasons) > 50_000:
+            self._reasons.clear()
+        reason = self._reasons[key] = self.sheet.cell_error(r, c)
+        return reason
 
     def headerData(self, section: int, orientation: Qt.Orientation,  # noqa: N802
                    role: int = Qt.ItemDataRole.DisplayRole):
