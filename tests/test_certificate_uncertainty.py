@@ -173,7 +173,7 @@ def _rig_with_z_up(theta_deg, psi_deg, lean_azimuth_deg, normal_elevation_deg):
 @pytest.mark.parametrize("beta", [1.5, -1.5])
 def test_alpha_and_beta_as_defined_on_the_certificate(alpha, beta):
     theta = np.arange(-30.0, 30.1, 2.0)
-    # the SPEC rig (models/validation): its α and β are recovered as they were set
+    # the rig of ../shared/SPEC.md (models/validation): its α and β are recovered as they were set
     azimuth, elevation = theodolite_readings(theta, 2.0, alpha, beta)
     s = analyze_run(theta, azimuth, elevation).identification.setup
     assert (s.psi_deg, s.alpha_deg, s.beta_deg) == pytest.approx((2.0, alpha, beta), abs=1e-7)

@@ -88,7 +88,7 @@ def test_polygon_json_keys(capsys, samples_dir):
     # the levelled rig tilts the polygon against the shaft: 180° − ω
     assert data["pyramidal_direction_deg"] == pytest.approx(180.0 - 60.0, abs=0.5)
     assert data["ac_alignment"] == "levelled"
-    # corrected = error − (ε_x − ε_x at the zero face): SPEC §2, corrected 2026-11-27
+    # corrected = error − (ε_x − ε_x at the zero face): ../shared/SPEC.md §2, corrected 2026-11-27
     np.testing.assert_allclose(np.array(data["error_arcsec"]) - data["pyramidal_error_arcsec"],
                                data["corrected_error_arcsec"], atol=1e-12)
 

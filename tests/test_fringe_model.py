@@ -21,7 +21,7 @@ from models.fringe.model import (
 )
 from models.readings.sheet import ReadingsSheet
 
-# Table 1 of the seed, cosine B1 read as +3.7346 (SPEC.md erratum)
+# Table 1 of the seed, cosine B1 read as +3.7346 (../shared/SPEC.md erratum)
 SIN = ChannelFit.from_parameters(-0.0179, {1: (3.7763, 0.026), 3: (-0.0796, 3.2261),
                                            5: (0.0109, 0.4688)})
 COS = ChannelFit.from_parameters(-0.0642, {1: (3.7346, 1.5902), 3: (0.079, 8.0719),

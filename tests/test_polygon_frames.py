@@ -1,4 +1,4 @@
-"""The frame the autocollimator reads in (SPEC §2, issue #28), against the exact 3-D rig.
+"""The frame the autocollimator reads in (../shared/SPEC.md §2, issue #28), against the exact 3-D rig.
 
 The rig (models/validation/polygon_rig.py) builds either bench from rotations: a levelled
 shaft with the polygon seated at a tilt, or seed 001's frame (the autocollimator's
@@ -46,7 +46,7 @@ def test_polygon_frame_is_the_seeds_equations_exactly():
         seed = pyramidal_readings_arcsec(theta, psi, omega)
         ours = frame_readings_arcsec(theta, psi, omega, "polygon")
         np.testing.assert_allclose(ours, seed, atol=1e-9)
-    # SPEC §2's check figure holds in the seed's frame
+    # ../shared/SPEC.md §2's check figure holds in the seed's frame
     eps_x = frame_readings_arcsec(np.arange(0.0, 360.0, 0.5), 600.0, 90.0, "polygon")[0]
     assert np.max(np.abs(eps_x)) == pytest.approx(1.921, abs=1e-3)
 

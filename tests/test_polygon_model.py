@@ -18,7 +18,7 @@ from models.validation.polygon_rig import PolygonRig
 THETA = np.arange(0.0, 360.0, 1.0)
 
 
-# -- check figures of SPEC.md section 2 ------------------------------------------
+# -- check figures of ../shared/SPEC.md section 2 ------------------------------------------
 def test_largest_induced_error_1_921_at_111_deg():
     eps_x, _ = pyramidal_readings_arcsec(THETA, 600.0, 90.0)  # ψ = 10', ω = 90°
     i = int(np.argmax(np.abs(eps_x)))

@@ -19,7 +19,7 @@ from models.theodolite.model import (
 THETA = np.arange(-20.0, 21.0, 1.0)
 
 
-# -- check figures of SPEC.md section 1 -------------------------------------------
+# -- check figures of ../shared/SPEC.md section 1 -------------------------------------------
 def test_check_figure_zeta_span_187_9():
     zeta = induced_error_arcsec(THETA, 3.0, 45.0, 2.0)
     assert zeta.min() == pytest.approx(-187.9, abs=0.05)

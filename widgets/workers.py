@@ -34,7 +34,7 @@ _switch_interval_default = sys.getswitchinterval()
 
 @contextlib.contextmanager
 def gui_thread_first():
-    """While a worker runs Python code, hand the GIL back to the GUI thread every 0.5 ms
+    """While a worker runs Python code, hand the GIL back to the GUI thread every 0.1 ms
     instead of 5 ms. Painting calls Python (pyqtgraph) hundreds of times per frame and
     waits for the GIL at each call: with the default interval a frame took seconds."""
     global _WORKERS_RUNNING, _switch_interval_default
