@@ -19,6 +19,7 @@ from typing import Any, Protocol
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, AngleUnit
+from models.workbench import IssuesCertificates
 from widgets.i18n import explained, tr, translated
 
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
@@ -158,7 +159,7 @@ class CertificatePresenter:
         recorded."""
         from app.certificate_issue import draft_reasons
 
-        doubt = kind.certificate_doubt(result) if kind.certificate_doubt else ""
+        doubt = kind.certificate_doubt(result) if isinstance(kind, IssuesCertificates) else ""
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False
         shown = self.details(kind.key)

@@ -18,14 +18,15 @@ from typing import Any
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
 from app.writers.results_export import write_results_csv, write_results_xlsx
-from models.analysis_kind import SettingsError
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, text_in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
+from models.parameters import SettingsError
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
 from models.registry import KINDS
+from models.workbench import ComparesAfterLog, IssuesCertificates, WritesCorrectionTable
 
 
 def _why(exc: BaseException, words) -> str:
@@ -71,9 +72,9 @@ def _parser(words) -> argparse.ArgumentParser:
                                          "(analysed with the same settings); prints A, B, E, M, "
                                          "R before → after (JSON: before_after)")))
     add_language_option(p, words)
-    p.add_argument("--zenith", action="store_true",
-                   help=words(QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
-                                         "(same as --vertical-reading zenith)")))
+    for _, shortcut in _shortcuts():
+        p.add_argument(shortcut.flag, dest=_dest(shortcut.flag), action="store_true",
+                       help=words(shortcut.help))
     for flag, owners in _flags().items():
         parts = []
         for kind, parameter in owners:
@@ -104,6 +105,11 @@ def _flags() -> dict[str, list[tuple[str, Any]]]:
     return flags
 
 
+def _shortcuts() -> list[tuple[str, Any]]:
+    """Each workbench's switches that set one of its settings (``--zenith``), with its key."""
+    return [(key, s) for key, kind in KINDS.items() for s in kind.shortcuts]
+
+
 def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
     """The settings the options give, each checked against the chosen workbench's own
     declaration; an option of another workbench is refused."""
@@ -118,11 +124,13 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
                                         flag=flag, kinds=" and ".join(k for k, _ in owners),
                                         kind=args.kind))
         settings[parameter.key] = parameter.from_text(text)
-    if args.zenith:
-        if args.kind != "theodolite":
-            raise SettingsError(message(QT_TR_NOOP("--zenith applies to theodolite, not {kind}"),
-                                        kind=args.kind))
-        settings["vertical_reading"] = "zenith"
+    for key, shortcut in _shortcuts():
+        if not getattr(args, _dest(shortcut.flag)):
+            continue
+        if key != args.kind:
+            raise SettingsError(message(QT_TR_NOOP("{flag} applies to {kinds}, not {kind}"),
+                                        flag=shortcut.flag, kinds=key, kind=args.kind))
+        settings[shortcut.key] = shortcut.value
     return settings
 
 
@@ -171,11 +179,11 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
         [args.compare_after] if args.compare_after else [])
-    if args.compare_after and kind.compare_after is None:
+    if args.compare_after and not isinstance(kind, ComparesAfterLog):
         _say(words(QT_TR_NOOP("anglebench analyze: --compare-after is for the positioning "
                               "workbench")))
         return EXIT_BAD_INPUT
-    if args.table and kind.correction_table is None:
+    if args.table and not isinstance(kind, WritesCorrectionTable):
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: --table: {workbench} has no "
                                          "correction table"), workbench=message(kind.title)),
                       words))
@@ -264,7 +272,8 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
                               path=args.table), words))
-    doubt = kind.certificate_doubt(result) if kind.certificate_doubt and args.certificate else ""
+    doubt = (kind.certificate_doubt(result)
+             if isinstance(kind, IssuesCertificates) and args.certificate else "")
     if doubt and not args.confirm_implausible:
         _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {reason} If the "
                                          "readings are right, run again with "

@@ -46,6 +46,7 @@ from models.project.file import (
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
+from models.workbench import AcceptsRuns, SendsRuns
 from widgets.certificate_dialog import CertificateDialog
 from widgets.fonts import ensure_cjk_font
 from widgets.i18n import (
@@ -585,8 +586,8 @@ class MainWindow(QMainWindow):
     def send_to_positioning(self) -> bool:
         """The current run, as readings of the positioning workbench (one undo step there)."""
         source = self.current
-        target = next((p for p in self.presenters if p.kind.key == "positioning"), None)
-        if target is None or source is target or source.kind.positioning_rows is None:
+        target = next((p for p in self.presenters if isinstance(p.kind, AcceptsRuns)), None)
+        if target is None or source is target or not isinstance(source.kind, SendsRuns):
             self.tell(tr("Cannot send"), tr("{workbench} has nothing to send to the "
                                             "positioning workbench.").format(
                 workbench=declared(source.kind.title)))
@@ -595,9 +596,9 @@ class MainWindow(QMainWindow):
             problem = source.problem or tr("no readings have been analysed yet")
             self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
             return False
-        rows = source.kind.positioning_rows(source.result)
+        rows = source.kind.run_rows(source.result)
         target.table_model.replace_all(rows, f"From {source.kind.title}", checked=True)
-        target.set_settings({**target.settings, "target_unit": "deg", "deviation_unit": "arcsec"})
+        target.set_settings(target.kind.settings_for_runs(target.settings))
         target.refresh()
         self.tabs.setCurrentIndex(self.presenters.index(target))
         self.statusBar().showMessage(
@@ -609,7 +610,7 @@ class MainWindow(QMainWindow):
     def _on_tab_changed_send(self, index: int) -> None:
         presenter = self.presenters[index] if 0 <= index < len(self.presenters) else None
         self.send_action.setEnabled(presenter is not None
-                                    and presenter.kind.positioning_rows is not None)
+                                    and isinstance(presenter.kind, SendsRuns))
 
     def load_all_samples(self) -> None:
         for presenter in self.presenters:

@@ -13,7 +13,8 @@ from typing import Any
 
 from PySide6.QtWidgets import QFileDialog, QInputDialog
 
-from models.run_overlay import OVERLAY_FIGURES, overlay_from_file, overlay_from_project_json
+from models.run_overlay import overlay_from_file, overlay_from_project_json
+from models.workbench import OverlaysRuns
 from widgets.i18n import declared, explained, tr
 from widgets.run_overlay import RunOverlay
 
@@ -46,7 +47,7 @@ class RunOverlayActions:
         curve to overlay."""
         presenter = presenter or self.window.current
         key = presenter.kind.key
-        if key not in OVERLAY_FIGURES or not hasattr(presenter.view, "error_plot"):
+        if not isinstance(presenter.kind, OverlaysRuns) or not hasattr(presenter.view, "error_plot"):
             self.window.tell(tr("Cannot overlay"), tr("{workbench} has no error curve to overlay a "
                                                       "run on.").format(
                 workbench=declared(presenter.kind.title)))

@@ -15,7 +15,7 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["Parameter", "SettingsError", "check_parameters"]
+__all__ = ["Parameter", "SettingsError", "Shortcut", "check_parameters"]
 
 
 class SettingsError(ValueError):
@@ -116,6 +116,17 @@ class Parameter:
             return self.zero
         return f"{value:g}{' ' + self.unit if self.unit else ''}" if isinstance(
             value, int | float) else str(value)
+
+
+@dataclass(frozen=True)
+class Shortcut:
+    """A command-line switch that sets one setting to one value (``--zenith`` for
+    ``--vertical-reading zenith``); ``help`` is a QT_TR_NOOP text."""
+
+    flag: str
+    key: str
+    value: Any
+    help: str
 
 
 def check_parameters(parameters: Sequence[Parameter],

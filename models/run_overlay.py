@@ -11,7 +11,6 @@ this workbench cannot analyse, is refused with the reason.
 
 from __future__ import annotations
 
-import importlib
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -19,16 +18,10 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.plots import PlotFigure
+from models.workbench import OverlaysRuns
 
-__all__ = ["OVERLAY_FIGURES", "PROJECT_SUFFIX", "OverlayRun", "overlay_from_file",
+__all__ = ["PROJECT_SUFFIX", "OverlayRun", "overlay_from_file",
            "overlay_from_project_json", "overlay_run"]
-
-#: workbench → "module:function" giving the figure whose "corrected" series is overlaid
-OVERLAY_FIGURES = {
-    "theodolite": "models.theodolite.plots:error_figure",
-    "polygon": "models.polygon.plots:error_figure",
-    "fringe": "models.fringe.plots:figures",
-}
 
 PROJECT_SUFFIX = ".json"  # a project file (.anglebench.json); other files are readings
 
@@ -50,11 +43,8 @@ class OverlayRun:
         return self.figure.series[0].y
 
 
-def _figure(kind_key: str, result: Any) -> PlotFigure:
-    module, name = OVERLAY_FIGURES[kind_key].split(":")
-    figure = getattr(importlib.import_module(module), name)(result)
-    if isinstance(figure, dict):
-        figure = figure["errors"]
+def _figure(kind: OverlaysRuns, result: Any) -> PlotFigure:
+    figure = kind.overlay_figure(result)
     corrected = figure.by_role("corrected")
     if corrected is None:
         raise ValueError(message(QT_TR_NOOP("the other run has no corrected curve to draw")))
@@ -67,7 +57,7 @@ def overlay_run(kind: Any, rows: Sequence[Sequence[str]], settings: Mapping[str,
     cannot be drawn."""
     from models.readings.sheet import ReadingsSheet
 
-    if kind.key not in OVERLAY_FIGURES:
+    if not isinstance(kind, OverlaysRuns):
         raise ValueError(message(QT_TR_NOOP("the {workbench} workbench has no error curve to "
                                             "overlay"), workbench=kind.title))
     parsed = ReadingsSheet(kind.columns, rows).parse()
@@ -76,7 +66,7 @@ def overlay_run(kind: Any, rows: Sequence[Sequence[str]], settings: Mapping[str,
     except (ValueError, ArithmeticError) as exc:
         raise ValueError(message(QT_TR_NOOP("{label}: the run cannot be analysed: {reason}"),
                                  label=label, reason=reason_of(exc))) from None
-    return OverlayRun(label, _figure(kind.key, result))
+    return OverlayRun(label, _figure(kind, result))
 
 
 def _from_project(kind: Any, project: Any, label: str) -> OverlayRun:

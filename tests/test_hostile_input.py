@@ -155,8 +155,8 @@ def test_inapplicable_or_out_of_range_options_are_refused(capsys, samples_dir, k
     ({"samples_per_period": "64"}, "samples_per_period must be a number"),
 ])
 def test_fringe_settings_from_a_project_file_are_checked(settings, message):
-    from models.analysis_kind import SettingsError
     from models.fringe.analysis import FRINGE
+    from models.parameters import SettingsError
 
     with pytest.raises(SettingsError, match=message):
         FRINGE.analyze(ReadingsSheet(FRINGE.columns, [["0", "1"]] * 40).parse(), settings)
@@ -168,7 +168,7 @@ def test_fringe_settings_from_a_project_file_are_checked(settings, message):
     ({"grade": "3"}, "grade must be one of 1, 2, 3"),
 ])
 def test_polygon_settings_from_a_project_file_are_checked(samples_dir, settings, message):
-    from models.analysis_kind import SettingsError
+    from models.parameters import SettingsError
     from models.polygon.analysis import POLYGON
     from models.readings.tabular_import import map_columns
 

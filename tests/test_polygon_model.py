@@ -144,7 +144,7 @@ def test_positions_must_be_complete():
 
 
 def test_closure_limit_table():
-    from models.analysis_kind import SettingsError
+    from models.parameters import SettingsError
     from models.polygon.analysis import closure_limit_arcsec
 
     assert closure_limit_arcsec(3, "0.125, 0.25, 0.5, 1") == 0.5

@@ -11,13 +11,13 @@ import numpy as np
 import pytest
 
 from app.main import main
-from models.analysis_kind import SIGN_CONVENTION
 from models.polygon.analysis import POLYGON
 from models.readings.sheet import ReadingsSheet
 from models.registry import KINDS
 from models.theodolite.model import analyze_run
 from models.validation.polygon_rig import PolygonRig
 from models.validation.theodolite_rig import theodolite_readings
+from models.workbench import SIGN_CONVENTION
 
 SCALE = 1e-5
 
@@ -59,7 +59,7 @@ def test_positioning_takes_the_encoder_error_with_iso_sign():
     nominal = np.arange(faces) * 30.0
     rig = PolygonRig(faces, SCALE * nominal * 3600, psi_arcsec=200.0, omega_deg=30.0)
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(), {"grade": 7})
-    rows = POLYGON.positioning_rows(result)
+    rows = POLYGON.run_rows(result)
     positioning = KINDS["positioning"]
     sent = positioning.analyze(ReadingsSheet(positioning.columns, rows).parse(), {})
     assert sent.iso.forward.mean[1] == pytest.approx(-1.08, abs=1e-3)

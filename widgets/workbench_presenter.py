@@ -11,7 +11,6 @@ from typing import Any
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
-from models.analysis_kind import AnalysisKind
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.display_units import (
     ANGLE_UNITS,
@@ -30,6 +29,7 @@ from models.readings.tabular_import import (
     map_columns,
     read_table,
 )
+from models.workbench import ShowsHeadline, Workbench
 from widgets.i18n import explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.workbench_view import WorkbenchView
@@ -66,7 +66,7 @@ class _TaskSignals(QObject):
 class _AnalysisTask(QRunnable):
     """Parse and analyse a large sheet on a worker thread."""
 
-    def __init__(self, kind: AnalysisKind, sheet: ReadingsSheet, settings: dict[str, Any],
+    def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals, prepare, current) -> None:
         super().__init__()
         self._args = (kind, sheet, settings, generation, signals, prepare, current)
@@ -103,7 +103,7 @@ def _prepare_display(prepare, result: Any) -> Any:
 class _ImportTask(QRunnable):
     """Read and map a large file on a worker thread."""
 
-    def __init__(self, kind: AnalysisKind, path: str, signals: _TaskSignals,
+    def __init__(self, kind: Workbench, path: str, signals: _TaskSignals,
                  generation: int) -> None:
         super().__init__()
         self._args = (kind, path, signals, generation)
@@ -134,7 +134,7 @@ class _ImportTask(QRunnable):
         emit_if_alive(signals.imported, rows, path, "", generation)
 
 
-def _run_analysis(kind: AnalysisKind, parsed: ParsedReadings,
+def _run_analysis(kind: Workbench, parsed: ParsedReadings,
                   settings: dict[str, Any]) -> tuple[Any, str]:
     try:
         return kind.analyze(parsed, settings), ""
@@ -162,7 +162,7 @@ class WorkbenchPresenter(QObject):
     #: the view a presenter makes when none is given (a test gives a mock)
     view_class: type[WorkbenchView] | None = None
 
-    def __init__(self, kind: AnalysisKind, view: WorkbenchView | None = None, parent=None) -> None:
+    def __init__(self, kind: Workbench, view: WorkbenchView | None = None, parent=None) -> None:
         if view is None:
             view = self.view_class()
         # lives as long as its view (a mock view in a test is no QObject)
@@ -469,7 +469,8 @@ class WorkbenchPresenter(QObject):
                 return self.in_unit_text(translated(text))
 
             self.view.set_summary(unit_text(self.kind.summary(result)))
-            self.view.set_verdict(unit_text(self.kind.verdict(result)) if self.kind.verdict
+            self.view.set_verdict(unit_text(self.kind.verdict(result))
+                                  if isinstance(self.kind, ShowsHeadline)
                                   else "")
             self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
                                                   self.angle_unit))

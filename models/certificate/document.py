@@ -13,7 +13,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION_TEXT
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure, PlotSeries
@@ -29,6 +28,7 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
+from models.workbench import SIGN_CONVENTION_TEXT
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "opinion", "reference_standard_components",
@@ -43,7 +43,7 @@ class Table:
     note: str = ""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CertificateDocument:
     kind_key: str
     kind_title: str

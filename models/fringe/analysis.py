@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.cancellation import checkpoint
+from models.fringe import KEY, TITLE
 from models.fringe.export import write_correction_table
 from models.fringe.model import (
     TWO_PI,
@@ -26,11 +26,20 @@ from models.fringe.model import (
     refine_phase,
 )
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
+from models.fringe.plots import figures as fringe_figures
 from models.fringe.report import fringe_certificate
 from models.fringe.result import FringeResult
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.workbench import (
+    SIGN_CONVENTION,
+    IssuesCertificates,
+    OverlaysRuns,
+    ShowsHeadline,
+    Workbench,
+    WritesCorrectionTable,
+)
 
 __all__ = ["FRINGE", "FringeResult"]
 
@@ -506,28 +515,38 @@ def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: s
                    else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
 
 
-FRINGE = AnalysisKind(
-    key="fringe",
-    title="Fringe signal analysis",
-    columns=COLUMNS,
-    parameters=PARAMETERS,
-    analyze=analyze,
-    to_json=to_json,
-    summary=summary,
-    sample_file="fringe_sample.csv",
-    method_reference="Gao X. et al., Automatic compensation of sine deviation for grating fringe "
-                     "photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)",
-    certificate=fringe_certificate,
-    presenter="widgets.fringe.presenter:FringePresenter",
-    correction_table=_correction_table,
-    verdict=lambda r: message(
-        QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
-                   "after compensation"),
-        ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
-        share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
-        after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}"),
-    headline=lambda r: {f"as-found peak-to-peak ({r.unit})": r.raw_peak_to_peak,
-                        f"compensated peak-to-peak ({r.unit})": r.compensated_peak_to_peak},
-    nominal_column="",
-    entry_column="u_sin",
-)
+class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "fringe_sample.csv"
+    method_reference = ("Gao X. et al., Automatic compensation of sine deviation for grating "
+                        "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
+    presenter = "widgets.fringe.presenter:FringePresenter"
+    entry_column = "u_sin"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    correction_table = staticmethod(_correction_table)
+
+    def certificate(self, result, metadata, source_name=""):
+        return fringe_certificate(result, metadata, source_name, self.method_reference)
+
+    def overlay_figure(self, result):
+        return fringe_figures(result)["errors"]
+
+    def verdict(self, r):
+        return message(
+            QT_TR_NOOP("Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} "
+                       "after compensation"),
+            ptp=f"{r.raw_peak_to_peak:.3f}{r.unit_symbol}",
+            share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
+            after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}")
+
+    def headline(self, r):
+        return {f"as-found peak-to-peak ({r.unit})": r.raw_peak_to_peak,
+                f"compensated peak-to-peak ({r.unit})": r.compensated_peak_to_peak}
+
+
+FRINGE = Fringe()

@@ -34,6 +34,7 @@ from models.certificate.document import (
     reference_standard_components,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
 from models.fringe.model import model_signal, model_signal_std
 from models.messages import QT_TR_NOOP, joined, message
@@ -330,10 +331,12 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         "The compensated error is the error the correction table is expected to leave, if the "
         "signals stay as they were measured.")),)
     return CertificateDocument(
-        "fringe", QT_TR_NOOP("Fringe signal analysis"), metadata, source_name, METHOD,
-        method_reference, parameters, results, statistics, budget,
-        message(QT_TR_NOOP("sample {sample}"), sample=worst + 1), conformity, tol, plots,
-        tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget,
+        budget_point=message(QT_TR_NOOP("sample {sample}"), sample=worst + 1),
+        conformity=conformity, tolerance_arcsec=tol, plots=plots,
+        warnings=tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (

@@ -9,9 +9,9 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
+from models.polygon import KEY, TITLE
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
@@ -28,11 +28,20 @@ from models.polygon.model import (
     tilt_advice,
     wrap_deg,
 )
+from models.polygon.plots import error_figure
 from models.polygon.report import polygon_certificate, setup_statement
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
+from models.workbench import (
+    SIGN_CONVENTION,
+    IssuesCertificates,
+    OverlaysRuns,
+    SendsRuns,
+    ShowsHeadline,
+    Workbench,
+)
 
 __all__ = ["POLYGON", "closure_limit_arcsec"]
 
@@ -565,44 +574,57 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
-POLYGON = AnalysisKind(
-    key="polygon",
-    title="Polygon encoder test",
-    columns=COLUMNS,
-    parameters=PARAMETERS,
-    analyze=analyze,
-    to_json=to_json,
-    summary=summary,
-    sample_file="polygon_sample.csv",
-    method_reference="Tian L. et al., Analysis the influence of pyramidal error on the encoder "
-                     "accuracy test by using coordinate transformation, Acta Optica Sinica "
-                     "35(5):0512003 (2015)",
-    certificate=polygon_certificate,
-    check_settings=_check_across,
-    presenter="widgets.polygon.presenter:PolygonPresenter",
-    positioning_rows=positioning_rows,
-    certificate_doubt=certificate_doubt,
-    verdict=lambda r: joined((
-        certificate_doubt(r), " " if certificate_doubt(r) else "",
-        "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
-        message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
-                           "{ptp}; ") if r.accuracy_ok else
-                QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "
-                           "peak-to-peak {ptp}; "),
-                grade=r.grade, accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"",
-                ptp=f"{r.stats.peak_to_peak:.2f}\""),
-        message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
-        or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
-        # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D
-        # rotation); a tilt above the allowed only asks for a better seating next time
-        message(QT_TR_NOOP("the tilt's error is corrected in these figures (for the set-up "
-                           "stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — "
-                           "re-seat the polygon before the next run"),
-                psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
-                allowed=f"{r.allowed_tilt_arcsec:.0f}\""))),
-    headline=lambda r: {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
-                        "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
-                        if r.sets[0].tilt else float("nan")},
-    nominal_column="position",
-    entry_column="encoder_deg",
-)
+class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "polygon_sample.csv"
+    method_reference = ("Tian L. et al., Analysis the influence of pyramidal error on the "
+                        "encoder accuracy test by using coordinate transformation, Acta Optica "
+                        "Sinica 35(5):0512003 (2015)")
+    presenter = "widgets.polygon.presenter:PolygonPresenter"
+    nominal_column = "position"
+    entry_column = "encoder_deg"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    run_rows = staticmethod(positioning_rows)
+    certificate_doubt = staticmethod(certificate_doubt)
+
+    def check_settings(self, checked):
+        _check_across(checked)
+
+    def certificate(self, result, metadata, source_name=""):
+        return polygon_certificate(result, metadata, source_name, self.method_reference)
+
+    def overlay_figure(self, result):
+        return error_figure(result)
+
+    def verdict(self, r):
+        return joined((
+            certificate_doubt(r), " " if certificate_doubt(r) else "",
+            "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
+            message(QT_TR_NOOP("Grade {grade} (±{accuracy}) met: corrected error peak-to-peak "
+                               "{ptp}; ") if r.accuracy_ok else
+                    QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "
+                               "peak-to-peak {ptp}; "),
+                    grade=r.grade, accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"",
+                    ptp=f"{r.stats.peak_to_peak:.2f}\""),
+            message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
+            or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
+            # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D
+            # rotation); a tilt above the allowed only asks for a better seating next time
+            message(QT_TR_NOOP("the tilt's error is corrected in these figures (for the set-up "
+                               "stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — "
+                               "re-seat the polygon before the next run"),
+                    psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
+                    allowed=f"{r.allowed_tilt_arcsec:.0f}\"")))
+
+    def headline(self, r):
+        return {"corrected peak-to-peak (\")": r.stats.peak_to_peak,
+                "pyramidal tilt ψ (\")": r.sets[0].tilt.psi_arcsec
+                if r.sets[0].tilt else float("nan")}
+
+
+POLYGON = Polygon()

@@ -44,6 +44,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
+from models.polygon import KEY, TITLE
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     PolygonResult,
@@ -435,10 +436,12 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                                            "uncertainty by it.")))
     worst = budget.worst_index
     return CertificateDocument(
-        "polygon", QT_TR_NOOP("Polygon encoder test"), metadata, source_name, METHOD,
-        method_reference, parameters, results, statistics, budget,
-        message(QT_TR_NOOP("position {position}"), position=worst + 1), conformity, tol,
-        tuple(plots), tuple(warnings),
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget,
+        budget_point=message(QT_TR_NOOP("position {position}"), position=worst + 1),
+        conformity=conformity, tolerance_arcsec=tol, plots=tuple(plots),
+        warnings=tuple(warnings),
         statements=(
             message(QT_TR_NOOP("U is zero at face {face} of set 1: every error is taken from "
                                "that reading, so its own error is zero by definition."),

@@ -9,9 +9,9 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import AnalysisKind
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
+from models.positioning import KEY, TITLE
 from models.positioning.compensation import write_compensation
 from models.positioning.model import (
     DEVIATION_UNITS,
@@ -26,6 +26,14 @@ from models.positioning.model import (
 from models.positioning.report import positioning_certificate
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.workbench import (
+    AcceptsRuns,
+    ComparesAfterLog,
+    IssuesCertificates,
+    ShowsHeadline,
+    Workbench,
+    WritesCorrectionTable,
+)
 
 __all__ = ["POSITIONING"]
 
@@ -382,43 +390,59 @@ def _figures_line(prefix: str, figures, symbol: str):
     return joined(parts)
 
 
-def _correction_table(result: PositioningResult, settings: Mapping[str, Any], path: str) -> str:
-    s = POSITIONING.checked_settings(settings)
-    return write_compensation(path, result, s["compensation_step"], s["compensation_tables"],
-                              s["compensation_format"], s["compensation_controller_options"])
+class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsRuns,
+                  ComparesAfterLog, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "positioning_sample.csv"
+    method_reference = ("ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
+                        "accuracy and repeatability of positioning of numerically controlled "
+                        "axes; VDI/DGQ 3441:1977; GB/T 17421.2-2016")
+    presenter = "widgets.positioning.presenter:PositioningPresenter"
+    nominal_column = "target"
+    entry_column = "deviation"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+
+    def check_settings(self, checked):
+        _check_units(checked)
+
+    def certificate(self, result, metadata, source_name=""):
+        return positioning_certificate(result, metadata, source_name, self.method_reference)
+
+    def correction_table(self, result, settings, path):
+        s = self.checked_settings(settings)
+        return write_compensation(path, result, s["compensation_step"], s["compensation_tables"],
+                                  s["compensation_format"], s["compensation_controller_options"])
+
+    def settings_for_runs(self, settings):
+        return {**settings, "target_unit": "deg", "deviation_unit": "arcsec"}
+
+    def after_log(self, path, settings):
+        return _before_after().log_from_file(path, settings)
+
+    def compare_after(self, before, after):
+        return _before_after().before_after(before, after)
+
+    def verdict(self, r):
+        return joined((
+            _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
+                          ((k, r.iso.figures.get(k)) for k in (
+                              ("A", "R", "B") if r.bidirectional else
+                              tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
+                                    for f in ("A", "R")))), r.symbol),
+            "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged"))))
+
+    def headline(self, r):
+        return {f"{k} ({r.deviation_unit})": r.iso.figures[k]
+                for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
+                if k in r.iso.figures}
 
 
-POSITIONING = AnalysisKind(
-    key="positioning",
-    title="Positioning (axis)",
-    columns=COLUMNS,
-    parameters=PARAMETERS,
-    analyze=analyze,
-    to_json=to_json,
-    summary=summary,
-    sample_file="positioning_sample.csv",
-    method_reference="ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
-                     "accuracy and repeatability of positioning of numerically controlled axes; "
-                     "VDI/DGQ 3441:1977; GB/T 17421.2-2016",
-    certificate=positioning_certificate,
-    check_settings=_check_units,
-    presenter="widgets.positioning.presenter:PositioningPresenter",
-    correction_table=_correction_table,
-    verdict=lambda r: joined((
-        _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
-                      ((k, r.iso.figures.get(k)) for k in (
-                          ("A", "R", "B") if r.bidirectional else
-                          tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
-                                for f in ("A", "R")))), r.symbol),
-        "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged")))),
-    headline=lambda r: {f"{k} ({r.deviation_unit})": r.iso.figures[k]
-                        for k in ("A", "R", "B", "A_up", "A_down", "R_up", "R_down")
-                        if k in r.iso.figures},
-    nominal_column="target",
-    entry_column="deviation",
-    after_log=lambda path, settings: _before_after().log_from_file(path, settings),
-    compare_after=lambda before, after: _before_after().before_after(before, after),
-)
+POSITIONING = Positioning()
 
 
 def _before_after():

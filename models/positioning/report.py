@@ -30,6 +30,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
+from models.positioning import KEY, TITLE
 from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION_TEXT,
@@ -379,10 +380,11 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     directions = np.concatenate([np.full(m, 1.0 if name == "up" else -1.0)
                                  for name, *_ in points])
     return CertificateDocument(
-        "positioning", QT_TR_NOOP("Positioning test of an axis"), metadata, source_name, METHOD,
-        method_reference, parameters, results, statistics, budget,
-        names[worst], conformity, metadata.tolerance_arcsec,
-        tuple(plots), tuple(result.warnings), unit=sym, statements=tuple(statements),
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget, budget_point=names[worst],
+        conformity=conformity, tolerance_arcsec=metadata.tolerance_arcsec, plots=tuple(plots),
+        warnings=tuple(result.warnings), unit=sym, statements=tuple(statements),
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(
             ("target", np.tile(result.positions, len(points))), ("direction", directions),

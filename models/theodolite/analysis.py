@@ -7,13 +7,22 @@ from typing import Any
 
 import numpy as np
 
-from models.analysis_kind import SIGN_CONVENTION, AnalysisKind
 from models.messages import QT_TR_NOOP, lines, message
-from models.parameters import Parameter, SettingsError
+from models.parameters import Parameter, SettingsError, Shortcut
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult, analyze_run
+from models.theodolite.plots import error_figure
 from models.theodolite.report import theodolite_certificate
+from models.workbench import (
+    SIGN_CONVENTION,
+    IssuesCertificates,
+    OverlaysRuns,
+    SendsRuns,
+    ShowsHeadline,
+    Workbench,
+)
 
 __all__ = ["THEODOLITE"]
 
@@ -189,28 +198,42 @@ def summary(result: TheodoliteResult) -> str:
     return lines(out)
 
 
-THEODOLITE = AnalysisKind(
-    key="theodolite",
-    title="Theodolite run",
-    columns=COLUMNS,
-    parameters=PARAMETERS,
-    analyze=analyze,
-    to_json=to_json,
-    summary=summary,
-    sample_file="theodolite_sample.csv",
-    method_reference="Tian L. et al., Test method of angle error of limited rotation axis "
-                     "system, Acta Photonica Sinica 46(11):1112005 (2017)",
-    certificate=theodolite_certificate,
-    presenter="widgets.theodolite.presenter:TheodolitePresenter",
-    positioning_rows=positioning_rows,
-    verdict=lambda r: message(
-        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
-                   "contributed {share} to the raw peak-to-peak"),
-        low=f"{r.corrected_stats.min:+.2f}\"", high=f"{r.corrected_stats.max:+.2f}\"",
-        ptp=f"{r.corrected_stats.peak_to_peak:.2f}\"",
-        share=f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\""),
-    headline=lambda r: {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
-                        "raw peak-to-peak (\")": r.raw_stats.peak_to_peak},
-    nominal_column="theta_deg",
-    entry_column="azimuth_deg",
-)
+class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "theodolite_sample.csv"
+    method_reference = ("Tian L. et al., Test method of angle error of limited rotation axis "
+                        "system, Acta Photonica Sinica 46(11):1112005 (2017)")
+    presenter = "widgets.theodolite.presenter:TheodolitePresenter"
+    nominal_column = "theta_deg"
+    entry_column = "azimuth_deg"
+    shortcuts = (Shortcut("--zenith", "vertical_reading", "zenith",
+                          QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
+                                     "(same as --vertical-reading zenith)")),)
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    run_rows = staticmethod(positioning_rows)
+
+    def certificate(self, result, metadata, source_name=""):
+        return theodolite_certificate(result, metadata, source_name, self.method_reference)
+
+    def overlay_figure(self, result):
+        return error_figure(result)
+
+    def verdict(self, r):
+        return message(
+            QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
+                       "contributed {share} to the raw peak-to-peak"),
+            low=f"{r.corrected_stats.min:+.2f}\"", high=f"{r.corrected_stats.max:+.2f}\"",
+            ptp=f"{r.corrected_stats.peak_to_peak:.2f}\"",
+            share=f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\"")
+
+    def headline(self, r):
+        return {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
+                "raw peak-to-peak (\")": r.raw_stats.peak_to_peak}
+
+
+THEODOLITE = Theodolite()

@@ -41,6 +41,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
+from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
@@ -198,10 +199,11 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
              residual_figure(result))
     worst = budget.worst_index
     return CertificateDocument(
-        "theodolite", QT_TR_NOOP("Theodolite run"), metadata, source_name, METHOD,
-        method_reference,
-        parameters, results, statistics, budget, f"θ = {result.theta_deg[worst]:g}°", conformity,
-        tol, plots, tuple(result.warnings),
+        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
+        method=METHOD, method_reference=method_reference, parameters=parameters,
+        results=results, statistics=statistics, budget=budget,
+        budget_point=f"θ = {result.theta_deg[worst]:g}°", conformity=conformity,
+        tolerance_arcsec=tol, plots=plots, warnings=tuple(result.warnings),
         statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),

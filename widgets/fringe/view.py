@@ -9,6 +9,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QPushButton, QVBoxLayout, QWidget
 
+from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
@@ -86,7 +87,7 @@ class FringePlots(QWidget):
 
 class FringeView(WorkbenchView):
     def __init__(self, parent=None) -> None:
-        super().__init__("Fringe signal analysis", parent)
+        super().__init__(TITLE, parent)
         self.error_plot = ErrorPlot(x_label="electrical phase θ (periods)",
                                     residual_label="sin fit res. (mV)")
         self.error_plot.set_axis_label(self.error_plot.main_plot, "left", "interp. error (\")")

@@ -8,6 +8,7 @@ import numpy as np
 import pyqtgraph as pg
 from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
+from models.polygon import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.legend_placement import place_legend
@@ -75,7 +76,7 @@ class HarmonicBars(QWidget):
 
 class PolygonView(WorkbenchView):
     def __init__(self, parent=None) -> None:
-        super().__init__("Polygon encoder test", parent)
+        super().__init__(TITLE, parent)
         self.error_plot = ErrorPlot(x_label="θ face angle (°)",
                                     residual_label="tilt fit res. (\")")
         self.tilt_plot = TiltPlot()

@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QTableWidget,
 )
 
+from models.positioning import TITLE
 from widgets.figure_plot import FigurePlot
 from widgets.i18n import declared, live, tr
 from widgets.text_table import show_text_table
@@ -27,7 +28,7 @@ from widgets.workbench_view import WorkbenchView
 
 class PositioningView(WorkbenchView):
     def __init__(self, parent=None) -> None:
-        super().__init__("Positioning (axis)", parent)
+        super().__init__(TITLE, parent)
         self.deviation_plot = FigurePlot()
         self.reversal_plot = FigurePlot()
         self.readings_plot = FigurePlot()

@@ -3,6 +3,7 @@ simulation panel. Widgets only; the presenter calls ``show_curves`` and ``clear_
 
 from __future__ import annotations
 
+from models.theodolite import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.i18n import tr
 from widgets.theodolite.simulation import TheodoliteSimulation
@@ -11,7 +12,7 @@ from widgets.workbench_view import WorkbenchView
 
 class TheodoliteView(WorkbenchView):
     def __init__(self, parent=None) -> None:
-        super().__init__("Theodolite run", parent)
+        super().__init__(TITLE, parent)
         self.error_plot = ErrorPlot(residual_label="E residual (\")")
         self.simulation = TheodoliteSimulation()
         self.add_plot_tab(self.error_plot, tr("Error curves"))

@@ -1,0 +1,210 @@
+"""What every workbench provides to the window, the command line and the project file.
+
+A workbench is one object of a class that derives from :class:`Workbench`, the core
+every workbench has (its key and title, readings columns, settings declared once as
+:class:`~models.parameters.Parameter`, analysis, JSON, summary, sample file, method
+reference and the dotted path of its presenter), and from the capabilities it has, each
+a small abstract class of its own::
+
+    class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
+        key = "fringe"
+        ...
+
+Shared code asks ``isinstance(workbench, WritesCorrectionTable)``, never a workbench's
+key. The capabilities are abstract mixins, not ``typing.Protocol``: a workbench states
+in its class line what it does (one place to read, one place to grep), a capability
+whose method is missing fails when the workbench is created rather than when a user
+first clicks, and ``isinstance`` answers by declaration — a runtime-checkable protocol
+only looks for an attribute of that name, so a helper that happened to be called
+``verdict`` would grant a capability.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from abc import ABC, abstractmethod
+from collections.abc import Mapping
+from typing import Any, ClassVar
+
+from models.messages import QT_TR_NOOP
+from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
+from models.plots import PlotFigure
+from models.readings.sheet import Column, ParsedReadings
+
+__all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRuns",
+           "ComparesAfterLog", "IssuesCertificates", "OverlaysRuns", "SendsRuns", "SettingsError",
+           "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
+
+#: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
+#: correction is the negative of an error.
+SIGN_CONVENTION = "indicated_minus_reference"
+SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
+
+#: what a concrete workbench class must set (checked when the class is defined)
+_REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
+             "presenter")
+
+
+class Workbench(ABC):
+    """The core of every workbench. A concrete class sets the attributes below and the
+    three methods; its one object is listed in :mod:`models.registry`."""
+
+    key: ClassVar[str]  # the project file's and the command line's name of it
+    title: ClassVar[str]  # the tab's, the certificate's and the messages' (QT_TR_NOOP)
+    columns: ClassVar[tuple[Column, ...]]
+    parameters: ClassVar[tuple[Parameter, ...]]
+    sample_file: ClassVar[str]  # a file in resources/samples/
+    method_reference: ClassVar[str]  # the published method or standard
+    presenter: ClassVar[str]  # "package.module:Class", imported only by the window
+    # instrument-style entry: the column a nominal step fills as rows are added, and the
+    # column where a row's readings begin (Return after an edit goes there, one row down)
+    nominal_column: ClassVar[str] = ""
+    entry_column: ClassVar[str] = ""
+    # command-line switches that set one of the settings (``--zenith``)
+    shortcuts: ClassVar[tuple[Shortcut, ...]] = ()
+
+    def __init__(self) -> None:
+        missing = [name for name in _REQUIRED if not hasattr(self, name)]
+        if missing:
+            raise TypeError(f"workbench {type(self).__name__} does not set {', '.join(missing)}")
+
+    @abstractmethod
+    def analyze(self, parsed: ParsedReadings, settings: Mapping[str, Any]) -> Any:
+        """The result of the parsed readings analysed with the checked settings."""
+
+    @abstractmethod
+    def to_json(self, result: Any) -> dict[str, Any]:
+        """The result as the command line's JSON (``anglebench analyze … --json``)."""
+
+    @abstractmethod
+    def summary(self, result: Any) -> str:
+        """The result as readable text."""
+
+    def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default
+        """The checks across settings (SettingsError naming the key); each setting alone
+        is checked by its declaration."""
+
+    def __repr__(self) -> str:
+        return f"<workbench {self.key}>"
+
+    @property
+    def default_settings(self) -> dict[str, Any]:
+        return {p.key: p.default for p in self.parameters}
+
+    def parameter(self, key: str) -> Parameter:
+        return next(p for p in self.parameters if p.key == key)
+
+    def checked_settings(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
+        """The settings with defaults, each checked (types and ranges, then across
+        settings): for a project file, the form and the command line alike."""
+        checked = check_parameters(self.parameters, settings)
+        self.check_settings(checked)
+        return checked
+
+    def settings_with_defaults(self, settings: Mapping[str, Any] | None) -> dict[str, Any]:
+        merged = dict(self.default_settings)
+        if settings:
+            merged.update({k: v for k, v in settings.items() if k in self.default_settings})
+        return merged
+
+    def headline_figures(self, result: Any) -> dict[str, float]:
+        """The headline figures that are numbers (the window's table, the register's trend)."""
+        if not isinstance(self, ShowsHeadline):
+            return {}
+        return {k: float(v) for k, v in self.headline(result).items()
+                if isinstance(v, int | float) and math.isfinite(v)}
+
+    def certificate_document(self, result: Any, metadata: Any, source_name: str = "",
+                             settings: Mapping[str, Any] | None = None) -> Any:
+        """The certificate content of ``result`` (see models.certificate.document), listing
+        the ``settings`` it was analysed with as their declarations word them."""
+        if not isinstance(self, IssuesCertificates):
+            raise ValueError(f"{self.title}: no certificate is defined")
+        document = self.certificate(result, metadata, source_name)
+        if settings is not None:
+            checked = self.checked_settings(settings)
+            listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters)
+            document = dataclasses.replace(document, settings=listing)
+        return document
+
+
+class IssuesCertificates(ABC):
+    """Issues a test certificate of its result."""
+
+    @abstractmethod
+    def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:
+        """The :class:`~models.certificate.document.CertificateDocument` of ``result``
+        (without the settings' listing: :meth:`Workbench.certificate_document` adds it)."""
+
+    def certificate_doubt(self, result: Any) -> str:
+        """Why a certificate of ``result`` needs the user's confirmation first ("" when it
+        does not): figures no instrument of the kind shows (the window asks; the command
+        line refuses without --confirm-implausible)."""
+        return ""
+
+
+class WritesCorrectionTable(ABC):
+    """Writes a correction or compensation table (``anglebench analyze … --table``, the
+    window's export button)."""
+
+    @abstractmethod
+    def correction_table(self, result: Any, settings: Mapping[str, Any], path: str) -> str:
+        """Writes the table of ``result`` to ``path``; returns what was written."""
+
+
+class SendsRuns(ABC):
+    """Its run can be sent to the workbench that accepts runs, to be judged there
+    (ISO 230-2 / VDI 3441)."""
+
+    @abstractmethod
+    def run_rows(self, result: Any) -> list[list[str]]:
+        """The result as readings rows (target in °, run, direction, deviation in arcsec)."""
+
+
+class AcceptsRuns(ABC):
+    """Takes the runs other workbenches send (their :meth:`SendsRuns.run_rows`)."""
+
+    @abstractmethod
+    def settings_for_runs(self, settings: Mapping[str, Any]) -> dict[str, Any]:
+        """``settings`` changed so that they read sent rows (targets in °, deviations in
+        arcsec)."""
+
+
+class ComparesAfterLog(ABC):
+    """Compares its result with a log measured after compensation."""
+
+    @abstractmethod
+    def after_log(self, path: Any, settings: Any) -> Any:
+        """The result of the log at ``path`` analysed with ``settings`` (ValueError why not)."""
+
+    @abstractmethod
+    def compare_after(self, before: Any, after: Any) -> Any:
+        """The comparison of ``before`` and ``after`` (``as_dict()``, ``text(name)``)."""
+
+
+class OverlaysRuns(ABC):
+    """Draws a second run (before/after, an earlier certificate) over today's error curve."""
+
+    @abstractmethod
+    def overlay_figure(self, result: Any) -> PlotFigure:
+        """The figure whose "corrected" series is overlaid."""
+
+
+class ShowsHeadline(ABC):
+    """States its result in one line and in a few figures."""
+
+    @abstractmethod
+    def verdict(self, result: Any) -> str:
+        """The result in one line, shown above everything else in the window."""
+
+    @abstractmethod
+    def headline(self, result: Any) -> dict[str, float]:
+        """The figures the register keeps to show an instrument's drift over its
+        calibrations ({"name (unit)": value})."""
+
+
+#: every capability a workbench may declare (the contract test lists them)
+CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
+                ComparesAfterLog, OverlaysRuns, ShowsHeadline)
+
