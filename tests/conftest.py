@@ -17,7 +17,8 @@ from pathlib import Path  # noqa: E402
 # The app keeps files outside the project: its settings (~/.config/AngleBench), its register
 # and autosaves (~/.local/share/AngleBench). The suite, and every program it starts, gets a
 # home of its own: the user's own files are never read or written by a test (#31).
-USER_HOME = Path.home()
+# (a pytest-xdist worker inherits the HOME set below: the user's own is passed on)
+USER_HOME = Path(os.environ.setdefault("ANGLEBENCH_TESTS_USER_HOME", str(Path.home())))
 _USER_FILES = [USER_HOME / ".config" / "AngleBench", USER_HOME / ".local" / "share" / "AngleBench"]
 TEST_HOME = Path(tempfile.mkdtemp(prefix="anglebench-tests-home-"))
 atexit.register(shutil.rmtree, TEST_HOME, True)

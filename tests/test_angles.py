@@ -87,6 +87,7 @@ def test_dms_components_round_trip(d, m, s, negative, pattern):
     assert math.isclose(parse_angle_deg(text), expected, abs_tol=1e-12)
 
 
+@pytest.mark.slow
 @given(st.text(max_size=20))
 def test_never_raises_anything_but_parse_error(text):
     try:

@@ -125,6 +125,7 @@ def test_refused_options(tmp_path, capsys, argv, says):
     assert len(err) == 1 and says in err[0]
 
 
+@pytest.mark.slow
 def test_the_console_command_in_chinese(tmp_path):
     """The real entry point in a process of its own, speaking Chinese."""
     with ReadoutSimulator("pty", positions=[(2.0,)]) as sim:

@@ -10,6 +10,8 @@ import pytest
 
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
 
 

@@ -96,6 +96,7 @@ def test_anything_else_is_refused(line):
 axis_value = st.floats(-2000, 2000, allow_nan=False).map(lambda v: round(v, 3))
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(st.sampled_from("1234"), st.sampled_from("0123"), axis_value, axis_value,
        st.lists(st.binary(max_size=30), max_size=4))

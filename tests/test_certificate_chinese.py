@@ -21,6 +21,8 @@ from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 
+pytestmark = pytest.mark.slow  # every test prints certificates (fringe: 512 rows)
+
 SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
 
 VARIANTS = {

@@ -59,6 +59,7 @@ def _text(pdf: bytes) -> tuple[str, int]:
     return "\n".join(page.extract_text() for page in reader.pages), len(reader.pages)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("key", sorted(KINDS))
 def test_certificate_of_each_sample_carries_its_figures(key):
     kind, result = _analysed(key)
@@ -89,6 +90,7 @@ def test_certificate_of_each_sample_carries_its_figures(key):
     assert f"k = {budget.coverage_factor:.2f}" in flat
 
 
+@pytest.mark.slow
 def test_certificate_is_deterministic_and_marks_drafts():
     kind, result = _analysed("polygon")
     doc = kind.certificate_document(result, _meta("polygon"), "p.csv")
@@ -98,6 +100,7 @@ def test_certificate_is_deterministic_and_marks_drafts():
     assert "DRAFT" in text and "customer" in text
 
 
+@pytest.mark.slow
 def test_polygon_certificate_prints_every_warning_of_the_window():
     kind, result = _analysed("polygon")
     text, _ = _text(certificate_pdf_bytes(kind.certificate_document(result, _meta("polygon"))))
@@ -121,6 +124,7 @@ def test_polygon_grade_has_one_source(details, message):
     assert kind.certificate_document(result, same).tolerance_arcsec == 1.0
 
 
+@pytest.mark.slow
 def test_hostile_text_neither_breaks_the_page_nor_becomes_markup():
     kind, result = _analysed("theodolite")
     long_word = "W" * 400
@@ -170,6 +174,7 @@ def test_results_csv_and_xlsx():
                 assert cell.data_type != "f"
 
 
+@pytest.mark.slow
 def test_cli_writes_certificate_and_results(tmp_path):
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps(META.to_dict(), ensure_ascii=False), encoding="utf-8")
@@ -190,6 +195,7 @@ def test_cli_writes_certificate_and_results(tmp_path):
     assert "Traceback" not in done.stderr
 
 
+@pytest.mark.slow
 def test_text_no_bundled_font_can_print_is_refused_not_dropped(samples_dir):
     import pytest as _pytest
 
@@ -209,6 +215,7 @@ def test_text_no_bundled_font_can_print_is_refused_not_dropped(samples_dir):
     assert certificate_pdf_bytes(chinese).startswith(b"%PDF")
 
 
+@pytest.mark.slow
 def test_a_bilingual_certificate_has_chinese_headings_beside_the_english(samples_dir):
     import io
     import re
@@ -322,6 +329,7 @@ def test_text_cells_that_look_like_formulas_stay_neutralised_in_every_sheet():
 _UNITS_PRINTED = ("", " V", " mV", "\"", "°", " nm", " rad", "%")  # angles stay in "
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.tuples(st.floats(-1e6, 1e6, allow_nan=False), st.integers(0, 6),
                           st.sampled_from(_UNITS_PRINTED), st.text(max_size=20)),

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 
+import pytest
 from pypdf import PdfReader
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog
@@ -32,6 +33,7 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
                          "uncertainty_arcsec": 0.5})
 
 
+@pytest.mark.slow
 def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatch):
     window.load_all_samples()
     window.tabs.setCurrentIndex(0)
@@ -68,6 +70,7 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
     assert window.is_modified
 
 
+@pytest.mark.slow
 def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
     window.load_all_samples()
     monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
@@ -77,11 +80,13 @@ def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
     assert not called and not (tmp_path / "x.pdf").exists()
 
 
+@pytest.mark.slow
 def test_no_result_is_told_not_crashed(window):
     assert not window.export_certificate()
     assert "Nothing" in window.told[0] or "no readings" in window.told[0]
 
 
+@pytest.mark.slow
 def test_lab_defaults_fill_a_new_certificate(window, qtbot):
     dialog = CertificateDialog(CertificateMetadata())
     qtbot.addWidget(dialog)
@@ -94,6 +99,7 @@ def test_lab_defaults_fill_a_new_certificate(window, qtbot):
     assert meta.customer_name == ""
 
 
+@pytest.mark.slow
 def test_export_results_csv(window, tmp_path):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)
@@ -106,6 +112,7 @@ def test_export_results_csv(window, tmp_path):
     assert len(lines) == result.faces + 1
 
 
+@pytest.mark.slow
 def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
     """humidity stored as "45 %" (an older version, or a hand-edited project): the other
     details stay in the dialog, the bad one shows as stored and is marked; all bad fields
@@ -130,6 +137,7 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
     assert "humidity_pct" in seen["error"] and "temperature_c" in seen["error"]
 
 
+@pytest.mark.slow
 def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(window, qtbot,
                                                                           tmp_path, monkeypatch):
     from PySide6.QtWidgets import QMessageBox

@@ -41,6 +41,7 @@ def _theodolite(samples_dir):
     return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
 
 
+@pytest.mark.slow
 def test_a_draft_is_written_and_nothing_recorded(parts, samples_dir, tmp_path):
     presenter, view, metadata, modified = parts
     entered = CertificateMetadata(certificate_number="AB/7", lab_name="Lab")
@@ -66,6 +67,7 @@ COMPLETE = CertificateMetadata.from_dict({
                    "uncertainty_arcsec": 0.5}]})
 
 
+@pytest.mark.slow
 def test_without_an_approver_the_window_writes_a_draft_and_records_nothing(parts, samples_dir,
                                                                           tmp_path):
     presenter, view, _, _ = parts
@@ -79,6 +81,7 @@ def test_without_an_approver_the_window_writes_a_draft_and_records_nothing(parts
         assert register.list() == []
 
 
+@pytest.mark.slow
 def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts, samples_dir,
                                                                          tmp_path):
     presenter, view, metadata, _ = parts
@@ -108,6 +111,7 @@ def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts
         assert register.get("AB-2026-0001").status == "superseded"
 
 
+@pytest.mark.slow
 def test_a_refusal_of_the_register_writes_nothing(parts, samples_dir, tmp_path):
     presenter, view, _, _ = parts
     kind, result = _theodolite(samples_dir)
@@ -172,6 +176,7 @@ def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(part
     assert offered.item_serial == ""  # the item is the next workbench's own
 
 
+@pytest.mark.slow
 def test_an_unreachable_register_issues_nothing_and_says_so(parts, samples_dir, tmp_path,
                                                             monkeypatch):
     presenter, view, _, _ = parts
@@ -195,6 +200,7 @@ def _polygon_with_errors_of_degrees(samples_dir):
     return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
 
 
+@pytest.mark.slow
 def test_errors_no_encoder_has_are_certified_only_when_confirmed(parts, samples_dir, tmp_path):
     presenter, view, _, _ = parts
     kind, result = _polygon_with_errors_of_degrees(samples_dir)

@@ -51,6 +51,7 @@ def _sample(key, settings=None):
 
 
 # 1. k = 2 always -----------------------------------------------------------------------
+@pytest.mark.slow
 def test_coverage_factor_follows_the_effective_degrees_of_freedom():
     """An 8-face polygon measured once: few degrees of freedom, so k is well above 2."""
     rig = PolygonRig(8, 0.3 * np.sin(np.radians(np.arange(8) * 45.0)), psi_arcsec=200.0,
@@ -70,6 +71,7 @@ def test_coverage_factor_follows_the_effective_degrees_of_freedom():
 
 
 # 4. fringe conformity on the as-found error -----------------------------------------------
+@pytest.mark.slow
 def test_fringe_conformity_is_on_the_error_as_found():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
     meta = replace(META, tolerance_arcsec=0.5, decision_quantity="points")
@@ -81,6 +83,7 @@ def test_fringe_conformity_is_on_the_error_as_found():
     assert "As left" not in flat
 
 
+@pytest.mark.slow
 def test_fringe_as_left_only_with_the_loaded_tables_checksum():
     kind, result = _sample("fringe", {"samples_per_period": 64})
     left = kind.certificate_document(result, replace(META, as_left_table_sha256=result.table.sha256))
@@ -90,6 +93,7 @@ def test_fringe_as_left_only_with_the_loaded_tables_checksum():
 
 
 # 5. the statements ------------------------------------------------------------------------
+@pytest.mark.slow
 @pytest.mark.parametrize("key", sorted(KINDS))
 def test_17025_statements_on_every_certificate(key):
     settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else {}
@@ -115,6 +119,7 @@ def test_17025_statements_on_every_certificate(key):
     assert "Test report" in _flat(report)
 
 
+@pytest.mark.slow
 def test_no_traceability_claimed_without_a_certified_standard():
     kind, result = _sample("theodolite")
     flat = _flat(kind.certificate_document(result, replace(META, standards=())))

@@ -203,6 +203,7 @@ def test_the_certificate_defines_alpha_and_beta():
 
 
 # 1. the fringe certificate's traceability ----------------------------------------------------
+@pytest.mark.slow
 def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     kind, result = _sample("fringe", {"samples_per_period": 64})
     meta = replace(META, tolerance_arcsec=0.5, standards=(
@@ -220,6 +221,7 @@ def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     assert "Data acquisition (16-bit ADC): no uncertainty stated" in flat
 
 
+@pytest.mark.slow
 def test_fringe_stated_inputs_enter_the_budget_by_hand():
     """Per sample: the phase reference u·P/360; an offset u_o of either channel moves the
     phase by u_o/R (rad), a gain ratio u_g by |S C|/R² u_g, the LSB q by q/√12/R, a
@@ -349,6 +351,7 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
 
 
+@pytest.mark.slow
 def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
     meta = replace(META, tolerance_arcsec=0.5, standards=(

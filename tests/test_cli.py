@@ -64,6 +64,7 @@ def test_missing_file_and_bad_kind(capsys, tmp_path):
     assert exc.value.code == 2
 
 
+@pytest.mark.slow
 def test_console_script_runs_without_traceback(tmp_path):
     path = tmp_path / "bad.csv"
     path.write_bytes(b"\xff\xfe\x00garbage")
@@ -172,6 +173,7 @@ def test_unit_option_converts_the_summary_and_the_results(capsys, samples_dir, t
     assert "corrected_error_arcsec" in json.loads(out)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["fringe_sample.csv", "fringe_interferometer_sample.csv"])
 def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, name):
     """A record of plain numbers through the numeric fast reader and through the tolerant

@@ -13,6 +13,7 @@ import json
 import math
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -122,24 +123,28 @@ FUZZ = settings(max_examples=120, deadline=None,
                 suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 
 
+@pytest.mark.slow
 @FUZZ
 @given(text=damaged_record("polygon"))
 def test_polygon_cli_never_crashes(text, tmp_path, capsys):
     _run("polygon", text, tmp_path, capsys)
 
 
+@pytest.mark.slow
 @FUZZ
 @given(text=damaged_record("theodolite"))
 def test_theodolite_cli_never_crashes(text, tmp_path, capsys):
     _run("theodolite", text, tmp_path, capsys)
 
 
+@pytest.mark.slow
 @FUZZ
 @given(text=damaged_record("fringe"))
 def test_fringe_cli_never_crashes(text, tmp_path, capsys):
     _run("fringe", text, tmp_path, capsys)
 
 
+@pytest.mark.slow
 @FUZZ
 @given(text=damaged_record("positioning"))
 def test_positioning_cli_never_crashes(text, tmp_path, capsys):
@@ -179,6 +184,7 @@ def test_fringe_off_centre_signals_are_compensated_or_refused(made, tmp_path):
     _judged("fringe", made, tmp_path)
 
 
+@pytest.mark.slow
 @ROUND
 @given(made=round_case("theodolite", "no set-up"))
 def test_theodolite_elevations_of_no_setup_are_refused(made, tmp_path):
@@ -191,6 +197,7 @@ def test_full_width_and_decimal_comma_spellings(kind, data, tmp_path):
     _judged(kind, data.draw(round_case(kind, "spelling")), tmp_path)
 
 
+@pytest.mark.slow
 @ROUND
 @given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
 def test_damaged_xlsx(kind, data, tmp_path):
@@ -216,6 +223,7 @@ def twin_records(draw, kind: str):
     return twins(Picks(draw=draw), kind)
 
 
+@pytest.mark.slow
 @ROUND
 @given(kind=st.sampled_from(["theodolite", "polygon"]), data=st.data())
 def test_xlsx_reads_what_the_csv_reads(kind, data, tmp_path):

@@ -127,6 +127,7 @@ def issued(tmp_path, samples_dir, capsys):
     return pdf, details
 
 
+@pytest.mark.slow
 def test_the_register_speaks_chinese(issued, tmp_path, capsys):
     pdf, details = issued
     theirs = " ".join(str(v) for v in details.values() if isinstance(v, str))
@@ -163,6 +164,7 @@ def test_the_register_speaks_chinese(issued, tmp_path, capsys):
     assert capsys.readouterr().err.startswith("已将 1 份证书导出到")
 
 
+@pytest.mark.slow
 def test_the_method_validation_in_chinese(tmp_path, capsys):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100", "--language", "zh_CN"]) == 0

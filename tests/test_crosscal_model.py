@@ -168,6 +168,7 @@ def test_full_rosette_closed_form():
     assert free.sigma_arcsec == pytest.approx(sigma, rel=0.1)
 
 
+@pytest.mark.slow
 def test_monte_carlo_coverage_of_the_expanded_uncertainty():
     """400 seeded runs of a partial rosette (n = 6, mountings 0, 1, 3 with closure and drift):
     σ from the residuals (ν = 5), k from ν; U covers the truth 95.45 % ± 3 %."""

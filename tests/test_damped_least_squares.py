@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import least_squares
@@ -21,6 +22,7 @@ def _damped_sine(x, t):
     return x[0] * np.exp(-x[1] * t) * np.sin(3.0 * t + x[2])
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(amp=st.floats(0.5, 5.0), decay=st.floats(0.0, 2.0), phase=st.floats(-1.5, 1.5),
        seed=st.integers(0, 2**31 - 1))
@@ -62,6 +64,7 @@ def test_polish_says_when_it_did_not_converge():
     assert not out.converged
 
 
+@pytest.mark.slow
 def test_small_runs_do_not_import_scipy_optimize():
     """`analyze` on the theodolite and polygon samples stays clear of scipy.optimize (~0.3 s)."""
     code = (

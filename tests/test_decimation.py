@@ -1,6 +1,7 @@
 """Thinning a long curve for drawing keeps every excursion."""
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
@@ -8,6 +9,7 @@ from hypothesis.extra.numpy import arrays
 from models.decimation import envelope, one_per_cell
 
 
+@pytest.mark.slow
 @settings(max_examples=80, deadline=None)
 @given(arrays(float, st.integers(1, 5000), elements=st.floats(-1e6, 1e6)),
        st.integers(1, 400))

@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 ROOT = Path(__file__).resolve().parent.parent
 SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
     "1280x720": (1280, 720, "1", "en"),

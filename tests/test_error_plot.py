@@ -1,6 +1,7 @@
 """The error plot's y ranges follow the data without jittering on small changes."""
 
 import numpy as np
+import pytest
 
 from widgets.error_plot import ErrorPlot
 
@@ -52,6 +53,7 @@ def test_the_legend_goes_where_the_data_is_not(qtbot):
     assert plot.corrected_plot.legend_corner != "top-right"
 
 
+@pytest.mark.slow
 def test_a_cramped_plot_puts_its_legend_above_the_data_and_back_when_there_is_room(qtbot):
     """Data in every corner of a plot too small for a legend inside it (a small window at
     200 %): the entries go to the title line above the data area, with their colours;

@@ -84,6 +84,7 @@ def test_compensated_error_reaches_the_noise_floor():
     assert np.ptp(raw) > 20 * np.std(comp)
 
 
+@pytest.mark.slow
 def test_least_squares_cost_never_above_pso():
     theta = phase_of_samples(64, 64)
     rng = np.random.default_rng(0)

@@ -72,6 +72,7 @@ def coverage(name: str, repeats: int, seed: int, snr: float = 3.0) -> tuple[int,
     return hits, repeats
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", SHAPES)
 def test_printed_coverage_is_what_the_interval_achieves(name):
     repeats = 40

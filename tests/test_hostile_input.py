@@ -317,6 +317,7 @@ def _polygon_text(samples_dir, off_deg: float) -> str:
                      for r in rows) + "\n"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("off_deg", [1.0, 2.9, -2.0])
 def test_polygon_errors_of_degrees_are_said_first_and_need_confirmation(tmp_path, capsys,
                                                                        samples_dir, off_deg):

@@ -10,6 +10,8 @@ from PySide6.QtWidgets import QMessageBox
 from app.main_window import MainWindow
 from models.project.recovery import RecoveryStore
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 
 @pytest.fixture
 def make_window(qtbot, tmp_path):

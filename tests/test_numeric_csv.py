@@ -56,6 +56,7 @@ def numeric_files(draw):
     return kind, ending.join(lines) + draw(st.sampled_from(["", ending]))
 
 
+@pytest.mark.slow
 @settings(max_examples=120, deadline=None)
 @given(numeric_files())
 def test_the_fast_reader_reads_what_the_tolerant_reader_reads(case):

@@ -5,6 +5,7 @@ rows inserted and removed) applied to both give the same cells and the same read
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -34,6 +35,7 @@ edits = st.lists(st.one_of(
     max_size=8)
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(st.integers(1, 25), st.booleans(), st.integers(0, 2**31 - 1), edits)
 def test_a_numeric_sheet_reads_and_edits_as_the_text_sheet(n, with_theta, seed, changes):
@@ -63,6 +65,7 @@ def test_a_numeric_sheet_reads_and_edits_as_the_text_sheet(n, with_theta, seed, 
     assert numeric.copy_rows() == text.copy_rows()
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(st.integers(1, 60), st.integers(0, 2**31 - 1),
        st.lists(st.lists(st.tuples(st.integers(0, 59), st.integers(0, 2),
@@ -105,6 +108,7 @@ def test_the_cells_show_the_numbers_they_hold():
     assert copy[0][0] == "0.09113" and rows[0][0] == "9"  # an autosave's copy stays
 
 
+@pytest.mark.slow
 def test_a_large_record_of_numbers_is_imported_as_columns_and_edits_as_text(window, qtbot,
                                                                            tmp_path):
     """Through the window: the import keeps the numbers as columns, the table shows them,

@@ -134,6 +134,7 @@ def test_cli_columns_maps_headers_it_does_not_know(tmp_path, samples_dir, capsys
     assert "the file has no header 'Wnkl'" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_the_window_asks_for_a_mapping_once_and_remembers_it(qtbot, tmp_path, samples_dir,
                                                             monkeypatch):
     from PySide6.QtCore import QSettings

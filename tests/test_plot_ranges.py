@@ -9,6 +9,8 @@ import numpy as np
 import pytest
 from PySide6.QtWidgets import QApplication
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 # the sizes the window was tried at: 1600×1000, 1280×720, and 200 % on 2560×1600 (1280×800
 # logical: Qt lays the window out in logical pixels, the fonts' sizes in them the same)
 SIZES = [(1600, 1000), (1280, 720), (1280, 800)]

@@ -114,6 +114,7 @@ def wrong_frame_rms(frame: str, setting: str, psi: float, faces: int = 24) -> fl
     return worst
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("frame, setting", [("levelled", "polygon"), ("polygon", "levelled")])
 def test_the_wrong_frame_costs_this_much(frame, setting):
     """The figure README and the manual quote: with the wrong frame set, the corrected
@@ -125,6 +126,7 @@ def test_the_wrong_frame_costs_this_much(frame, setting):
     assert wrong_frame_rms(frame, frame, 900.0) < 1e-3
 
 
+@pytest.mark.slow
 def test_levelled_own_term_is_at_most_psi_squared_over_two():
     psi, faces, worst = 900.0, 72, 0.0
     for omega in np.arange(0.0, 360.0, 10.0):
@@ -158,6 +160,7 @@ def test_unmeasured_roll_is_covered_by_its_budget_input():
     np.testing.assert_allclose(roll[0].value_arcsec * 20.0, left / 0.8 * 1.0, rtol=0.02, atol=2e-3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("frame, least", [("polygon", 1e-3), ("levelled", 2e-4)])
 def test_correction_uncertainty_matches_its_scatter(frame, least):
     """u of the pyramidal correction from the fit's covariance of ψ, ω against the scatter

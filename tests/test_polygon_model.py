@@ -128,6 +128,7 @@ def test_failed_closure_marks_run_invalid():
     assert POLYGON.to_json(result)["closure_ok"] is False
 
 
+@pytest.mark.slow
 def test_tilt_fit_uncertainty_matches_monte_carlo():
     theta = np.arange(24) * 15.0
     _, eps_y = pyramidal_readings_arcsec(theta, 300.0, 40.0)

@@ -72,6 +72,7 @@ def test_corrected_error_is_the_truth_within_noise(index):
     assert rms <= 3 * SIGMA
 
 
+@pytest.mark.slow
 def test_corrected_error_over_all_cases_is_within_two_sigma():
     residual = np.concatenate([corrected_minus_truth(i).ravel() for i in CASES])
     assert np.sqrt(np.mean(residual**2)) <= 2 * SIGMA

@@ -44,6 +44,7 @@ def _open(window, qtbot):
     return presenter
 
 
+@pytest.mark.slow
 def test_the_log_after_compensation_is_drawn_compared_and_removable(window, qtbot, samples_dir,
                                                                    tmp_path):
     presenter = _open(window, qtbot)
@@ -91,6 +92,7 @@ def test_the_log_after_compensation_is_drawn_compared_and_removable(window, qtbo
     assert not any("after compensation" in item[1].text for item in legend.items)
 
 
+@pytest.mark.slow
 def test_a_log_that_cannot_be_compared_is_told(window, qtbot, samples_dir, tmp_path):
     presenter = _open(window, qtbot)
     # another workbench's readings: refused naming the file

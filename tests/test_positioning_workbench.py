@@ -76,6 +76,7 @@ def test_cli_writes_a_table_and_refuses_what_it_cannot_write(samples_dir, tmp_pa
     assert "is an input" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
     pdf = tmp_path / "p.pdf"
     assert main(["analyze", "positioning", str(samples_dir / KIND.sample_file), "--standard",
@@ -86,6 +87,7 @@ def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
 
 
 # -- certificate ------------------------------------------------------------------------------
+@pytest.mark.slow
 def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samples_dir):
     meta = CertificateMetadata(standards=(ReferenceStandard("laser rotary calibrator",
                                                             uncertainty_arcsec=0.6,
@@ -152,6 +154,7 @@ def test_presenter_draws_the_declared_figures_and_exports(presenter_and_view, sa
     assert not (tmp_path / "c.comp").exists()
 
 
+@pytest.mark.slow
 def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)  # polygon
@@ -193,6 +196,7 @@ def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir,
     assert from_xlsx["iso230_2"] == pytest.approx(from_csv["iso230_2"])
 
 
+@pytest.mark.slow
 def test_a_theodolite_run_is_sent_with_the_iso_sign(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(0)

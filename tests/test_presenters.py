@@ -65,6 +65,7 @@ def test_theodolite_presenter_asks_for_curves_in_theta_order(qtbot, samples_dir)
     assert any("absorb" in w for w in view.set_warnings.call_args.args[0])
 
 
+@pytest.mark.slow
 def test_polygon_presenter_marks_a_failed_closure_and_tells_a_bad_certificate(qtbot, samples_dir,
                                                                                tmp_path):
     presenter, view = make(PolygonPresenter, PolygonView, qtbot)

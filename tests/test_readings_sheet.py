@@ -1,4 +1,5 @@
 import numpy as np
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -33,6 +34,7 @@ def test_choices_and_optional():
     assert "not one of" in parsed.errors[0].reason
 
 
+@pytest.mark.slow
 @given(st.lists(st.floats(-1e6, 1e6, allow_nan=False), min_size=1, max_size=30))
 def test_number_columns_round_trip(values):
     sheet = ReadingsSheet(COLUMNS, [[repr(v), repr(v)] for v in values])

@@ -40,6 +40,7 @@ def type_cell(qtbot, view, row, column, text):
     qtbot.waitUntil(lambda: view.model().data(view.model().index(row, column)) == text)
 
 
+@pytest.mark.slow
 def test_typing_readings_updates_corrected_curve(qtbot, bench):
     theta, truth, rows = run_rows()
     table = bench.view.table
@@ -53,6 +54,7 @@ def test_typing_readings_updates_corrected_curve(qtbot, bench):
     assert bench.sheet.row_count == 11
 
 
+@pytest.mark.slow
 def test_paste_block_then_undo_redo(qtbot, bench):
     theta, _, rows = run_rows(noise=0.2)
     QGuiApplication.clipboard().setText("\n".join("\t".join(r) for r in rows))
@@ -71,6 +73,7 @@ def test_paste_block_then_undo_redo(qtbot, bench):
     assert bench.sheet.text(10, 0) == "10"
 
 
+@pytest.mark.slow
 def test_invalid_cell_is_marked_and_the_rest_keeps_working(qtbot, bench):
     _, _, rows = run_rows()
     bench.table_model.replace_all(rows)
@@ -85,6 +88,7 @@ def test_invalid_cell_is_marked_and_the_rest_keeps_working(qtbot, bench):
     assert "cannot be read (row 4)" in bench.view.warnings.text()
 
 
+@pytest.mark.slow
 def test_insert_and_delete_rows_are_undoable(qtbot, bench):
     _, _, rows = run_rows()
     bench.table_model.replace_all(rows)
@@ -100,6 +104,7 @@ def test_insert_and_delete_rows_are_undoable(qtbot, bench):
     assert bench.sheet.copy_rows() == [r + ["", ""] for r in rows]
 
 
+@pytest.mark.slow
 def test_copy_selection_as_tab_separated(qtbot, bench):
     _, _, rows = run_rows()
     bench.table_model.replace_all(rows)
@@ -109,6 +114,7 @@ def test_copy_selection_as_tab_separated(qtbot, bench):
     assert QGuiApplication.clipboard().text() == "\t".join(rows[1] + ["", ""])
 
 
+@pytest.mark.slow
 def test_clear_cells_with_delete_key(qtbot, bench):
     _, _, rows = run_rows()
     bench.table_model.replace_all(rows)
@@ -120,6 +126,7 @@ def test_clear_cells_with_delete_key(qtbot, bench):
     assert bench.sheet.text(0, 2) == rows[0][2]
 
 
+@pytest.mark.slow
 def test_settings_change_reanalyses(qtbot, bench):
     _, _, rows = run_rows()
     bench.table_model.replace_all(rows)

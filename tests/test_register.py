@@ -44,6 +44,7 @@ def register(register_url):
         yield reg
 
 
+@pytest.mark.slow
 def test_numbers_follow_the_scheme_and_are_never_issued_twice(register):
     first, pdf = register.issue(request(), render)
     second, _ = register.issue(request(), render)
@@ -90,6 +91,7 @@ def _killed_mid_export(url: str) -> None:
     register.issue(request(), die)
 
 
+@pytest.mark.slow
 def test_a_process_killed_during_export_leaves_no_record(register_url):
     process = multiprocessing.get_context("spawn").Process(target=_killed_mid_export,
                                                            args=(register_url,))
@@ -108,6 +110,7 @@ def _issue_many(url: str, count: int, queue) -> None:
         queue.put([reg.issue(request(), render)[0].number for _ in range(count)])
 
 
+@pytest.mark.slow
 def test_processes_allocating_at_once_never_share_a_number(register_url):
     Register(register_url).close()  # created once; the workers only open it
     context = multiprocessing.get_context("spawn")

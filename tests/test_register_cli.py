@@ -8,6 +8,7 @@ import datetime as dt
 import json
 import zipfile
 
+import pytest
 import sqlalchemy as sa
 
 from app.main import main
@@ -27,6 +28,7 @@ def issue(samples_dir, tmp_path, name, capsys, **changes):
     return code, capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
     code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
     year = dt.datetime.now(dt.timezone.utc).year  # the register's day of issue
@@ -59,6 +61,7 @@ def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
     assert index.count("\n") == 3 and "RX-26-0815" in index
 
 
+@pytest.mark.slow
 def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, capsys):
     assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
                  "--certificate", str(tmp_path / "d.pdf")]) == 0
@@ -81,6 +84,7 @@ def test_continue_numbering_from_the_command_line(capsys):
     assert "never numbers back" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_the_bundled_example_details_never_touch_the_users_register(samples_dir, tmp_path,
                                                                      capsys):
     """Used as the README shows, the examples issue into a register of their own."""
@@ -94,6 +98,7 @@ def test_the_bundled_example_details_never_touch_the_users_register(samples_dir,
     assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
 
 
+@pytest.mark.slow
 def test_issuing_without_an_approver_is_refused(samples_dir, tmp_path, capsys):
     """Without an approver the certificate is only a draft, and nothing is recorded."""
     code, err = issue(samples_dir, tmp_path, "n", capsys, approver="")
@@ -101,6 +106,7 @@ def test_issuing_without_an_approver_is_refused(samples_dir, tmp_path, capsys):
     assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
 
 
+@pytest.mark.slow
 def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir, tmp_path,
                                                                      capsys):
     assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0

@@ -15,6 +15,8 @@ from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 
 def issue_polygon(register, samples_dir, tmp_path, name, **changes):
     kind = KINDS["polygon"]

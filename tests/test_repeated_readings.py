@@ -59,6 +59,7 @@ def _average(rows, n):
     return average_repeats(parsed, n, ("point", "dir"), ("angle", "x"), angles=("angle",))
 
 
+@pytest.mark.slow
 @settings(max_examples=80, deadline=None)
 @given(st.integers(2, 6), st.integers(1, 5), st.data())
 def test_mean_and_standard_deviation_of_the_mean_of_any_readings(n, points, data):
@@ -277,6 +278,7 @@ def test_window_pasted_repeats_with_the_setting_averaged(qtbot, samples_dir):
     qtbot.waitUntil(lambda: presenter.result is None, timeout=10000)
 
 
+@pytest.mark.slow
 def test_typed_entry_fills_a_point_s_nominal_n_times(window, qtbot):
     """With 2 readings per point and a nominal step of 2°, Return after a point's first
     reading keeps its θ, after its second goes on to the next θ; the two typed readings

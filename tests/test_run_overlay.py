@@ -52,6 +52,7 @@ def _open(window, key, qtbot):
     return presenter
 
 
+@pytest.mark.slow
 def test_a_readings_file_is_overlaid_labelled_in_unit_and_removable(window, qtbot, samples_dir,
                                                                     tmp_path):
     presenter = _open(window, "theodolite", qtbot)
@@ -85,6 +86,7 @@ def test_a_readings_file_is_overlaid_labelled_in_unit_and_removable(window, qtbo
     assert presenter.view.error_plot.corrected_curve in plot.listDataItems()
 
 
+@pytest.mark.slow
 def test_the_overlay_stays_while_todays_readings_change(window, qtbot, samples_dir, tmp_path):
     presenter = _open(window, "theodolite", qtbot)
     kind, earlier, path = _earlier_theodolite(samples_dir, tmp_path)
@@ -112,6 +114,7 @@ def test_a_project_file_is_overlaid_with_its_own_settings(tmp_path, samples_dir)
         overlay_from_file(kind, other, {})
 
 
+@pytest.mark.slow
 def test_the_register_s_earlier_certificate_is_overlaid(window, qtbot, samples_dir, tmp_path):
     kind, rows = _rows(samples_dir, "polygon")
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
@@ -142,6 +145,7 @@ def test_the_register_s_earlier_certificate_is_overlaid(window, qtbot, samples_d
         overlay.curve).text
 
 
+@pytest.mark.slow
 def test_another_workbench_s_file_or_a_workbench_without_curve_is_refused(window, qtbot,
                                                                           samples_dir):
     _open(window, "theodolite", qtbot)

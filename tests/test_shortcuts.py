@@ -53,6 +53,7 @@ def _clashes(actions: list[QAction]) -> list[str]:
     return found
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("platform", PLATFORMS)
 def test_no_key_sequence_is_bound_twice(platform, monkeypatch, qtbot, tmp_path):
     from PySide6.QtCore import QSettings

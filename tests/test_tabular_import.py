@@ -80,6 +80,7 @@ cell = st.text(alphabet=st.characters(blacklist_characters="\t\r\n\"", blacklist
                max_size=8)
 
 
+@pytest.mark.slow
 @given(st.lists(st.lists(cell, min_size=2, max_size=4), min_size=1, max_size=10))
 def test_paste_round_trip_tab_separated(grid):
     width = max(len(r) for r in grid)

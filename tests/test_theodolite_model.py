@@ -98,6 +98,7 @@ def random_setups(count, seed):
         )
 
 
+@pytest.mark.slow
 def test_noise_free_recovery_to_1e_6_arcsec_for_every_setup():
     for setup, theta, _ in random_setups(300, seed=11):
         _, elevation = forward_readings(theta, *setup.as_array())
@@ -109,6 +110,7 @@ def test_noise_free_recovery_to_1e_6_arcsec_for_every_setup():
         assert found.beta_deg == pytest.approx(canonical.beta_deg, abs=1e-9)
 
 
+@pytest.mark.slow
 def test_noisy_fit_always_reaches_the_global_optimum():
     """With 0.3" noise the fit matches one started at the true parameters (the optimum)."""
     for setup, theta, rng in random_setups(300, seed=12):
@@ -121,6 +123,7 @@ def test_noisy_fit_always_reaches_the_global_optimum():
         assert np.max(np.abs(induced_error_arcsec(theta, *found.setup.as_array()) - optimum)) < 0.01
 
 
+@pytest.mark.slow
 def test_uncertainties_agree_with_monte_carlo():
     setup = SetupParameters(5.0, 200.0, -3.0)
     rng = np.random.default_rng(5)
@@ -178,6 +181,7 @@ def test_noise_free_run_recovers_true_error_exactly():
     assert result.identification.r_squared > 0.999999
 
 
+@pytest.mark.slow
 def test_azimuth_route_absorbs_the_linear_part_and_warns():
     setup = SetupParameters(5.8249, 43.4965, -0.0395)
     truth = true_axis_error(THETA)

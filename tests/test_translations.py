@@ -158,6 +158,7 @@ def chinese(window, qtbot):
     window.set_language("en")
 
 
+@pytest.mark.slow
 def test_every_text_of_the_window_is_translated(chinese, qtbot):
     """The whole window in Chinese, every workbench and plot tab shown, the register and
     the certificate dialog open: no English word left in a text of the window's own."""
@@ -181,6 +182,7 @@ def test_every_text_of_the_window_is_translated(chinese, qtbot):
     mapping.deleteLater()
 
 
+@pytest.mark.slow
 def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
     window.load_all_samples()
     theodolite = window.presenter("theodolite")
@@ -208,6 +210,7 @@ def _sources(ts: Path) -> set[str]:
     return {m.findtext("source") for m in ET.parse(ts).iter("message")}
 
 
+@pytest.mark.slow
 def test_the_translation_files_are_made_from_the_sources(tmp_path, qapp):
     """declared_strings.py holds what the window asks the models' texts for; the .ts
     holds every text of the sources, each translated; the .qm is lrelease's of it."""
@@ -243,6 +246,7 @@ def test_the_language_follows_the_system_unless_chosen(monkeypatch):
     assert QApplication.instance() is not None
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("typed", ["12°75'", "abc", "12.5°30'", ""])
 def test_a_cell_that_cannot_be_read_says_why_in_the_windows_language(chinese, typed):
     """The red cell's tooltip in the Chinese window: no English of ours, the text typed and
@@ -312,6 +316,7 @@ def test_refused_input_is_explained_in_chinese(tmp_path, capsys, kind, content, 
     assert english_words(english.replace(str(path), "")), english  # it was English before
 
 
+@pytest.mark.slow
 def test_a_refused_analysis_says_why_in_the_chinese_window(chinese):
     fringe = chinese.presenter("fringe")
     fringe.table_model.replace_all([["1.0", "2.0", ""]] * 40)
@@ -322,6 +327,7 @@ def test_a_refused_analysis_says_why_in_the_chinese_window(chinese):
     fringe.undo_stack.undo()
 
 
+@pytest.mark.slow
 def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
     """argparse's refusal and the line after a draft certificate is written, in Chinese."""
     from app.main import main
@@ -341,6 +347,7 @@ def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
     assert english_words(said.replace(str(out), "")) == set(), said
 
 
+@pytest.mark.slow
 def test_the_register_window_follows_the_language(window, samples_dir, tmp_path, capsys):
     """A record's status and revision are the register's English words as data, shown in
     the window's language; the open register follows a change of language at once."""
@@ -364,6 +371,7 @@ def test_the_register_window_follows_the_language(window, samples_dir, tmp_path,
     assert table.item(0, 1).text() == "issued"
 
 
+@pytest.mark.slow
 def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, samples_dir,
                                                      monkeypatch):
     """#31's leftovers: the empty plots' legends (before any readings), a positioning run

@@ -70,6 +70,7 @@ def test_divisors():
         divisor_for_basis("k3")
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.tuples(st.floats(0.01, 5.0), st.floats(-3.0, 3.0).filter(lambda c: abs(c) > 0.01),
                           st.sampled_from([math.inf, 2, 5, 30])), min_size=1, max_size=6))
@@ -180,6 +181,7 @@ def test_half_range_is_debiased_by_monte_carlo():
     assert again.value_arcsec == c.value_arcsec  # seeded: the same certificate every time
 
 
+@pytest.mark.slow
 def test_half_range_estimate_is_unbiased_over_repeats():
     """The seed's theodolite experiment, 41 points, 0.5" noise, a curve of true half
     range 0.991": the measured half range averages 1.67" (biased); ours ≈ the truth."""

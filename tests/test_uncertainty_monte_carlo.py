@@ -22,6 +22,8 @@ from models.validation.cases import (
     theodolite_budget_trials,
 )
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 TRIALS = 500
 
 

@@ -7,6 +7,7 @@ import io
 import re
 from pathlib import Path
 
+import pytest
 from pypdf import PdfReader
 
 from app.main import main
@@ -32,6 +33,7 @@ def test_rigs_import_nothing_from_the_code_they_check():
             assert allowed, f"{name}.py imports {module}"
 
 
+@pytest.mark.slow
 def test_validate_command_writes_a_dated_report(tmp_path, capsys):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100"]) == 0

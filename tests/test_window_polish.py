@@ -8,9 +8,12 @@ from __future__ import annotations
 import datetime as dt
 
 import pyqtgraph as pg
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 from PySide6.QtWidgets import QSplitter
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
 
 def _luminance(colour: QColor) -> float:

@@ -26,6 +26,7 @@ def fringe(qtbot):
     return presenter
 
 
+@pytest.mark.slow
 def test_polygon_sample_plots_and_closure_row(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
@@ -39,6 +40,7 @@ def test_polygon_sample_plots_and_closure_row(qtbot, polygon):
     assert heights[0] == pytest.approx(0.35, abs=0.05)  # eccentricity of the sample encoder
 
 
+@pytest.mark.slow
 def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
@@ -68,6 +70,7 @@ def test_polygon_correction_curve_and_settings_through_the_form(qtbot, polygon):
     assert "(counting against the face numbering" in polygon.view.summary.toPlainText()
 
 
+@pytest.mark.slow
 def test_polygon_failed_closure_shows_invalid(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
@@ -77,6 +80,7 @@ def test_polygon_failed_closure_shows_invalid(qtbot, polygon):
     assert "RUN INVALID" in polygon.view.summary.toPlainText()
 
 
+@pytest.mark.slow
 def test_fringe_paste_and_compensation(qtbot, fringe, samples_dir):
     lines = (samples_dir / "fringe_sample.csv").read_text().splitlines()[1:129]
     QGuiApplication.clipboard().setText("\n".join(line.replace(",", "\t") for line in lines))
@@ -107,6 +111,7 @@ def test_interferometer_record_without_phase_reference(qtbot, fringe, samples_di
     assert "phase estimated from the signals" in fringe.view.summary.toPlainText()
 
 
+@pytest.mark.slow
 def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypatch):
     monkeypatch.setattr(workbench_presenter, "THREAD_THRESHOLD_ROWS", 1000)
     theta = np.arange(64 * 40) * 2 * np.pi / 64
@@ -118,6 +123,7 @@ def test_large_fringe_run_is_analysed_off_the_gui_thread(qtbot, fringe, monkeypa
     assert fringe.result.raw_error.size == 2560
 
 
+@pytest.mark.slow
 def test_edits_cancel_the_analysis_they_supersede(qtbot, fringe, monkeypatch):
     """Edits typed while a large record is analysed: the running analysis stops at its
     next checkpoint instead of finishing for nothing, and the result shown is the last
@@ -137,6 +143,7 @@ def test_edits_cancel_the_analysis_they_supersede(qtbot, fringe, monkeypatch):
     assert fringe.cancelled_analyses <= 4
 
 
+@pytest.mark.slow
 def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     assert main(["--screenshot", str(tmp_path)]) == 0
     names = sorted(p.name for p in tmp_path.glob("*.png"))
@@ -168,6 +175,7 @@ def test_polygon_certificate_missing_position(qtbot, polygon, tmp_path):
         polygon.load_certificate(str(cert))
 
 
+@pytest.mark.slow
 def test_closure_limit_table_setting(qtbot, polygon):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None and polygon.result.valid)
@@ -206,6 +214,7 @@ def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     assert np.ptp(levelled) == pytest.approx(600.0**2 / 206264.8 / 2, rel=1e-3)  # ψ²/2 rad
 
 
+@pytest.mark.slow
 def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):
     theta = np.arange(64 * 1200) * 2 * np.pi / 64  # 76800 samples, about 1.4 MB
     path = tmp_path / "revolution.csv"
@@ -225,6 +234,7 @@ def test_large_file_is_read_off_the_gui_thread(qtbot, fringe, tmp_path):
     qtbot.waitUntil(lambda: fringe.sheet.row_count == 0)
 
 
+@pytest.mark.slow
 def test_large_import_error_is_reported(qtbot, fringe, tmp_path):
     path = tmp_path / "bad.csv"
     path.write_text("foo,bar\n" + "1,2\n" * 300_000)
@@ -242,6 +252,7 @@ def _large_signal_file(tmp_path) -> object:
     return path
 
 
+@pytest.mark.slow
 def test_the_last_import_asked_for_is_the_one_shown(qtbot, fringe, tmp_path, samples_dir):
     fringe.start_import(_large_signal_file(tmp_path))  # read on a worker …
     fringe.start_import(samples_dir / "fringe_sample.csv")  # … then a small one at once
@@ -250,6 +261,7 @@ def test_the_last_import_asked_for_is_the_one_shown(qtbot, fringe, tmp_path, sam
     assert fringe.sheet.row_count == 512
 
 
+@pytest.mark.slow
 def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp_path):
     from models.project.file import WorkbenchState
 
