@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: run test test-fast bench lint pictures translations clean
+.PHONY: run test test-fast bench lint pictures translations new-workbench clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -38,6 +38,11 @@ pictures: $(STAMP)
 # Qt translations: texts gathered (lupdate), the .ts kept, the .qm compiled (lrelease)
 translations: $(STAMP)
 	QT_QPA_PLATFORM=offscreen $(PY) -m app.translations
+
+# A new workbench's two folders, sample, manual pages and registry entry (app/new_workbench.py):
+# make new-workbench NAME=tilt TITLE="Tilt table" TITLE_ZH="倾斜台"
+new-workbench: $(STAMP)
+	$(PY) -m app.new_workbench "$(NAME)" --title "$(TITLE)" --title-zh "$(TITLE_ZH)"
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources

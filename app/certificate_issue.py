@@ -7,10 +7,12 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 from typing import Any
 
 from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.capture.raw_record import raw_digest
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import Project, WorkbenchState, project_to_json
@@ -36,19 +38,24 @@ def draft_reasons(metadata: CertificateMetadata) -> list[str]:
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
-                      replacement: bool = False) -> CertificateRecord:
+                      replacement: bool = False, raw_capture: list | None = None
+                      ) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
-    PDF can be saved from the register)."""
+    PDF can be saved from the register). ``raw_capture``: the instrument's sessions behind
+    the readings (models/capture/raw_record.py), recorded with them in the project state
+    (so in the register's hash chain); their SHA-256 is printed on the certificate."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
-                      {"certificates": {kind.key: metadata.to_dict()}})
+                      {"certificates": {kind.key: metadata.to_dict()}},
+                      {kind.key: raw_capture} if raw_capture else {})
+    digest = raw_digest(raw_capture) if raw_capture else ""
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
     def render(final: CertificateMetadata) -> bytes:
-        return certificate_pdf_bytes(
-            kind.certificate_document(result, final, source_name, settings))
+        document = kind.certificate_document(result, final, source_name, settings)
+        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest))
 
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement)

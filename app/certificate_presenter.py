@@ -2,10 +2,10 @@
 export of the certificate through the register (which allocates its number and keeps
 the record), amendments and replacements, and the export of the results.
 
-A presenter with no widgets: it asks its view (the main window, through the calls
-of :class:`CertificateView`) for the details, for a file name, and to tell the user
-something; it keeps the details in the project's metadata and the lab's defaults
-in the settings store. Tested with a mock view, no window.
+A presenter with no widgets: it asks its view (the calls of :class:`CertificateView`;
+in the window, app/certificate_dialogs.py) for the details, for a file name, and to
+tell the user something; it keeps the details in the project's metadata and the lab's
+defaults in the settings store. Tested with a mock view, no window.
 """
 
 from __future__ import annotations
@@ -42,7 +42,7 @@ class PendingRevision:
 
 
 class CertificateView(Protocol):
-    """What the certificate presenter asks of the window."""
+    """What the certificate presenter asks of the window (app/certificate_dialogs.py)."""
 
     def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
                                  raw: dict) -> CertificateMetadata | None:
@@ -153,7 +153,8 @@ class CertificatePresenter:
 
     # -- exports ------------------------------------------------------------------
     def export_certificate(self, kind, result, settings: dict, source_name: str,
-                           rows: list[list[str]] | None = None) -> bool:
+                           rows: list[list[str]] | None = None,
+                           raw_capture: list | None = None) -> bool:
         """Ask for the details and a file; a complete certificate is issued through the
         register (number allocated there, record kept), a draft is written and nothing
         recorded."""
@@ -199,7 +200,7 @@ class CertificatePresenter:
                     path=path, missing=", ".join(tr(m) for m in draft)), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
-                               revision, note)
+                               revision, note, raw_capture)
         except (OSError, ValueError) as exc:
             self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
                            .format(path=path, reason=explained(exc)))
@@ -208,7 +209,7 @@ class CertificatePresenter:
             self.view.wait_cursor(False)
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
-               note) -> bool:
+               note, raw_capture=None) -> bool:
         from app.certificate_issue import IssuedNotWritten, issue_certificate
         from models.register.store import RegisterError
 
@@ -217,7 +218,8 @@ class CertificatePresenter:
                 record = issue_certificate(
                     register, kind, result, entered, settings, rows, source_name, path,
                     supersedes=revision.number if revision else "", change_note=note,
-                    replacement=bool(revision and revision.replacement))
+                    replacement=bool(revision and revision.replacement),
+                    raw_capture=raw_capture)
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(

@@ -19,9 +19,10 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.display_units import ANGLE_UNITS, text_in_unit
+from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
+from models.project.file import migrate_certificate_details
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import TableImportError, map_columns, read_table
@@ -251,13 +252,13 @@ def run_analyze(argv: list[str]) -> int:
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
     else:
         say = words
-        summary = text_in_unit(rendered(kind.summary(result), say), ANGLE_UNITS[args.unit])
+        summary = rendered(in_unit(kind.summary(result), ANGLE_UNITS[args.unit]), say)
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
         if comparison is not None:
-            sys.stdout.write(text_in_unit(rendered(comparison.text(Path(args.compare_after).name),
-                                                   say), ANGLE_UNITS[args.unit]) + "\n")
+            sys.stdout.write(rendered(in_unit(comparison.text(Path(args.compare_after).name),
+                                              ANGLE_UNITS[args.unit]), say) + "\n")
         for warning in getattr(result, "warnings", []):
-            warning = text_in_unit(rendered(warning, say), ANGLE_UNITS[args.unit])
+            warning = rendered(in_unit(warning, ANGLE_UNITS[args.unit]), say)
             sys.stdout.write(say(QT_TR_NOOP("Warning: {warning}")).format(warning=warning)
                              + "\n")
     if args.table:
@@ -293,7 +294,9 @@ def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
     return table, map_columns(table, kind.columns, mapping)
 
 
-def _read_metadata(path: str | None) -> CertificateMetadata:
+def _read_metadata(path: str | None, error_unit: str = "arcsec") -> CertificateMetadata:
+    """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
+    unit is read in ``error_unit``, the unit of the errors it was judged against."""
     if not path:
         return CertificateMetadata()
     try:
@@ -309,6 +312,8 @@ def _read_metadata(path: str | None) -> CertificateMetadata:
         raise MetadataError(message(QT_TR_NOOP("{path}: not a certificate's details (nested too "
                                                "deep or a number too long)"), path=path)) from None
     try:
+        if isinstance(data, dict):
+            data = migrate_certificate_details(data, error_unit)
         return CertificateMetadata.from_dict(data)
     except MetadataError as exc:
         raise MetadataError(message("{path}: {reason}", path=path, reason=reason_of(exc))) from None
@@ -368,7 +373,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
 
     words = translator(args.language)
     try:
-        metadata = _read_metadata(args.metadata)
+        metadata = _read_metadata(args.metadata,
+                                  kind.error_unit(kind.settings_with_defaults(settings)))
     except MetadataError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

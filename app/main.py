@@ -147,9 +147,9 @@ def run_gui(project: str | None, samples: bool, words=str) -> int:
     app.setApplicationName("AngleBench")
     window = MainWindow()
     window.show()
-    if not window.offer_recovery():
+    if not window.projects.offer_recovery():
         if project:
-            window.open_project(project)
+            window.projects.open_project(project)
         elif samples:
             window.load_all_samples()
     return app.exec()

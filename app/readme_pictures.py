@@ -17,7 +17,16 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parents[1] / "resources" / "screenshots"
 SAMPLES = HERE.parent / "samples"
-EXTRA = {"fringe": ["--lines-per-rev", "16384"]}  # the phase from the sample's θ column
+
+
+def _sample_flags(kind: str) -> list[str]:
+    """The command-line flags of the settings the workbench's sample certificate is made
+    with (``Workbench.sample_settings``: the fringe sample's phase from its θ column)."""
+    from models.registry import KINDS
+
+    workbench = KINDS[kind]
+    return [part for key, value in workbench.sample_settings.items()
+            for part in (workbench.parameter(key).flag, str(value))]
 
 
 def certificate_picture(kind: str, scratch: Path, chinese_number: str = "") -> Path:
@@ -37,9 +46,11 @@ def certificate_picture(kind: str, scratch: Path, chinese_number: str = "") -> P
     details = scratch / f"{name}.json"
     details.write_text(json.dumps(data), "utf-8")
     pdf = scratch / f"{name}.pdf"
+    from models.registry import KINDS
+
     subprocess.run([sys.executable, "-m", "app.main", "analyze", kind,
-                    str(SAMPLES / f"{kind}_sample.csv"), "--certificate", str(pdf), "--metadata",
-                    str(details), *EXTRA.get(kind, [])],
+                    str(SAMPLES / KINDS[kind].sample_file), "--certificate", str(pdf),
+                    "--metadata", str(details), *_sample_flags(kind)],
                    check=True, stdout=subprocess.DEVNULL)
     subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "3", str(pdf),
                     str(scratch / name)], check=True)
@@ -86,8 +97,16 @@ def register_picture(scratch: Path) -> Path:
     QApplication.processEvents()
     out = HERE / "register.png"
     dialog.grab().save(str(out))
-    window.recovery.release()
+    window.projects.recovery.release()
     return out
+
+
+#: the README's pictures of a workbench at a screen size, scale and language, each named
+#: after its workbench's key ("KEY_…png")
+SCALED = (("polygon_1280x720.png", "1280x720", "1", "en"),
+          ("polygon_200pct.png", "960x540", "2", "en"),
+          ("polygon_zh_CN.png", "1400x900", "1", "zh_CN"),
+          ("theodolite_zh_CN.png", "1400x900", "1", "zh_CN"))
 
 
 def scaled_pictures(scratch: Path) -> list[Path]:
@@ -95,11 +114,8 @@ def scaled_pictures(scratch: Path) -> list[Path]:
     1920×1080 screen at 200 % (960×540 logical pixels), and two workbenches in Chinese:
     each its own process, since Qt reads the scale factor once, when it starts."""
     out = []
-    for name, size, scale, language, kind in (
-            ("polygon_1280x720.png", "1280x720", "1", "en", "polygon"),
-            ("polygon_200pct.png", "960x540", "2", "en", "polygon"),
-            ("polygon_zh_CN.png", "1400x900", "1", "zh_CN", "polygon"),
-            ("theodolite_zh_CN.png", "1400x900", "1", "zh_CN", "theodolite")):
+    for name, size, scale, language in SCALED:
+        kind = name.split("_")[0]
         folder = scratch / name
         subprocess.run([sys.executable, "-m", "app.main", "--screenshot", str(folder), "--size",
                         size, "--language", language], check=True, stdout=subprocess.DEVNULL,
@@ -122,9 +138,12 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as scratch:
         # the example certificates are issued into a scratch register, not the user's
         os.environ["ANGLEBENCH_REGISTER"] = str(Path(scratch) / "register.sqlite")
-        for kind in ("theodolite", "polygon", "fringe", "positioning"):
+        from models.registry import KINDS
+
+        for kind in KINDS:
             certificate_picture(kind, Path(scratch))
-        certificate_picture("theodolite", Path(scratch), chinese_number="AB-2026-0050")
+        # the first workbench's certificate in Chinese as well
+        certificate_picture(next(iter(KINDS)), Path(scratch), chinese_number="AB-2026-0050")
         validation_picture(Path(scratch))
         scaled_pictures(Path(scratch))
         register_picture(Path(scratch))

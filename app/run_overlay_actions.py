@@ -32,7 +32,7 @@ class RunOverlayActions:
     def choose_file(self) -> str:
         path, _ = QFileDialog.getOpenFileName(
             self.window, tr("Overlay a run on {workbench}").format(
-                workbench=declared(self.window.current.kind.title)), self.window._last_dir(),
+                workbench=declared(self.window.current.kind.title)), self.window.projects.last_dir(),
             tr("Readings or project (*.csv *.txt *.xlsx *.xlsm *.json);;All files (*)"))
         return path
 
@@ -110,7 +110,7 @@ class RunOverlayActions:
                                                       "{workbench}.").format(
                 workbench=declared(presenter.kind.title)))
             return False
-        serial = str(self.window.certificate_metadata(key).item_serial or "")
+        serial = str(self.window.certificates.details(key).item_serial or "")
         records = ([r for r in records if r.item_serial == serial] +
                    [r for r in records if r.item_serial != serial])
         labels = [f"{r.number} — {r.item_serial} — {r.calibration_date}" for r in records]

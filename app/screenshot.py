@@ -20,7 +20,7 @@ def _example_metadata() -> CertificateMetadata:
         "customer_name": "Changchun Optics Ltd.", "item_description": "Limited-rotation axis",
         "item_serial": "LRA-0815", "calibration_date": "2026-11-20", "operator": "Wang",
         "standards": [{"description": "Autocollimating theodolite", "certificate_no": "NIM-1187",
-                       "uncertainty_arcsec": 0.5, "basis": "U95"}]})
+                       "uncertainty": 0.5, "basis": "U95"}]})
 
 
 def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
@@ -51,6 +51,6 @@ def write_screenshots(folder: str | Path, size: tuple[int, int] = (1400, 900),
         dialog.grab().save(str(path))
         paths.append(path)
         dialog.close()
-        window.recovery.discard()
+        window.projects.recovery.discard()
         window.close()
     return paths

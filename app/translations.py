@@ -69,7 +69,10 @@ def declared_texts() -> list[str]:
         settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
         window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "r"))
         window.show()
-        runs = [None, ("fringe", SAMPLES_DIR / "fringe_interferometer_sample.csv")]  # est. phase
+        # then each further sample of a workbench, "KEY_…_sample.csv" (the fringe record
+        # without a phase reference: the texts of a phase estimated from the signals)
+        runs = [None] + [(p.kind.key, path) for p in window.presenters
+                         for path in sorted(SAMPLES_DIR.glob(f"{p.kind.key}_*_sample.csv"))]
         for run in runs:
             if run is None:
                 window.load_all_samples()
@@ -79,11 +82,12 @@ def declared_texts() -> list[str]:
         window.show_register()
         from widgets.certificate_dialog import CertificateDialog
 
-        CertificateDialog(window.certificate_metadata("polygon"), window).deleteLater()
+        CertificateDialog(window.certificates.details(window.current.kind.key),
+                          window).deleteLater()
         app.processEvents()
         for presenter in window.presenters:
             presenter.mark_saved()  # nothing to ask about on closing
-        window.recovery.discard()
+        window.projects.recovery.discard()
         window.close()
         window.deleteLater()
     if register is None:

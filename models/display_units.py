@@ -2,16 +2,18 @@
 
 Every figure is computed and kept in one unit (arcseconds; a positioning log in
 the unit it was typed in). What is shown and exported is converted here, at the
-last step, and only where its header or its text states an angle unit: a header
-``error (")`` becomes ``error (µrad)`` and its values are scaled; in a line of
-text, a number written with its unit (``0.45"``, ``+1.2 µrad``) is rewritten with
-the new one. A quantity whose unit is not an angle (nm, mV, V, °C) is left as it
-is, so an interferometer's nm stay nm.
+last step, and only where it states an angle unit: a header ``error (")`` becomes
+``error (µrad)`` and its values are scaled; a result text (a
+:class:`~models.messages.Message`) is converted from the figures it was built
+with (:func:`in_unit`), a :class:`~models.quantity.Quantity` by its unit, a figure
+passed as text (``0.45"``) number by number. A quantity
+whose unit is not an angle (nm, mV, V, °C) is left as it is, so an
+interferometer's nm stay nm, and so is a reading in degrees, minutes and seconds
+(``12°34'56.7"``: its seconds are no figure of their own).
 
-The rewriting of text is the reason this lives in one module: the summaries,
-verdicts and warnings are written once, in arcseconds, by each workbench, and the
-window and the command line show them in the chosen unit without each workbench
-formatting every figure twice.
+Text that is not a Message (a table cell written as one string) is rewritten with
+:func:`text_in_unit`, which converts each number written with its angle unit and
+leaves a D°M'S" reading alone.
 """
 
 from __future__ import annotations
@@ -24,8 +26,9 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.plots import PlotFigure
+from models.quantity import Quantity
 
 __all__ = [
     "ANGLE_UNITS",
@@ -34,6 +37,7 @@ __all__ = [
     "figure_in_unit",
     "figures_in_unit",
     "header_in_unit",
+    "in_unit",
     "table_in_unit",
     "text_in_unit",
 ]
@@ -59,9 +63,10 @@ _SPELLINGS: dict[str, str] = {"\"": "arcsec", "″": "arcsec", "arcsec": "arcsec
 _HEADER_UNIT = re.compile(r"\((\"|″|arcsec|µrad|μrad|urad|mdeg)\)")
 _KEY_SUFFIX = re.compile(r"_(arcsec|urad|mdeg)(?![A-Za-z])")  # a column key: error_arcsec
 # a number with its unit: not inside a quotation ("1.5" quoted is a cell's text), not
-# the tail of a longer word or number
+# the tail of a longer word or number, and not the seconds of a D°M'S" reading
 _NUMBER_WITH_UNIT = re.compile(
-    r"(?<![\"\w.])([+\-−±]?)(\d+(?:\.(\d+))?(?:[eE][+\-]?\d+)?)(\"|″| ?µrad| ?μrad| ?mdeg)(?!\w)")
+    r"(?<![\"\w.'′°])(?<!' )(?<!′ )(?<!° )"
+    r"([+\-−±]?)(\d+(?:\.(\d+))?(?:[eE][+\-]?\d+)?)(\"|″| ?µrad| ?μrad| ?mdeg)(?!\w)")
 
 
 def angle_unit(key: str) -> AngleUnit:
@@ -102,22 +107,53 @@ def header_in_unit(header: str, unit: AngleUnit) -> tuple[str, float]:
     return header, 1.0
 
 
+def _rewrite(match: re.Match[str], unit: AngleUnit) -> str:
+    """A number written with its angle unit, in ``unit`` at the resolution it had."""
+    sign, number, decimals, spelt = match.groups()
+    factor = _factor(spelt, unit)
+    if factor == 1.0:
+        return match.group(0)
+    value = float(number) * factor
+    if "e" in number.lower():
+        digits = f"{value:.3g}"
+    else:
+        digits = f"{value:.{_places(value, len(decimals or ''), factor)}f}"
+    gap = "" if unit.symbol == "\"" else " "
+    return f"{sign}{digits}{gap}{unit.symbol}"
+
+
 def text_in_unit(text: str, unit: AngleUnit) -> str:
-    """``text`` with every number written with an angle unit converted to ``unit``,
-    keeping the figure's resolution and its sign."""
-    def rewrite(match: re.Match[str]) -> str:
-        sign, number, decimals, spelt = match.groups()
-        factor = _factor(spelt, unit)
-        if factor == 1.0:
-            return match.group(0)
-        value = float(number) * factor
-        if "e" in number.lower():
-            digits = f"{value:.3g}"
-        else:
-            digits = f"{value:.{_places(value, len(decimals or ''), factor)}f}"
-        gap = "" if unit.symbol == "\"" else " "
-        return f"{sign}{digits}{gap}{unit.symbol}"
-    return _NUMBER_WITH_UNIT.sub(rewrite, text)
+    """Plain ``text`` (not a Message) with every number written with an angle unit
+    converted to ``unit``, keeping the figure's resolution and its sign; a D°M'S"
+    reading is left as it is. A Message goes through :func:`in_unit` instead."""
+    if isinstance(text, Message):
+        return in_unit(text, unit)
+    return _NUMBER_WITH_UNIT.sub(lambda m: _rewrite(m, unit), text)
+
+
+def _figure_in_unit(figure: Any, unit: AngleUnit) -> Any:
+    if isinstance(figure, Quantity):
+        return figure.to(unit.key) if figure.unit.dimension == "angle" else figure
+    if isinstance(figure, Message):
+        return in_unit(figure, unit)
+    if isinstance(figure, str):  # a figure passed formatted: "0.45\"", "±3.05\" (u, k = 1)"
+        return text_in_unit(figure, unit)
+    return figure
+
+
+def in_unit(text: str, unit: AngleUnit) -> str:
+    """A result text with its angle figures in ``unit``. A :class:`Message` is rebuilt
+    from its own figures (a Quantity converted by its unit, a figure given as text by
+    :func:`text_in_unit`), so it can still be translated and its template's own words
+    are never touched; its plain-text parts and any other text go through
+    :func:`text_in_unit`."""
+    if not isinstance(text, Message):
+        return text_in_unit(text, unit) if isinstance(text, str) else text
+    if text.parts:
+        return Message(text.template, None, tuple(in_unit(p, unit) for p in text.parts))
+    if not text.figures:
+        return text
+    return Message(text.template, {k: _figure_in_unit(v, unit) for k, v in text.figures.items()})
 
 
 def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, Any]:
@@ -131,15 +167,19 @@ def figures_in_unit(figures: Mapping[str, Any], unit: AngleUnit) -> dict[str, An
 
 
 def figure_in_unit(figure: PlotFigure, unit: AngleUnit) -> PlotFigure:
-    """The plot with its y values (and their bands) in ``unit`` when its y title states
-    an angle unit; other figures come back unchanged."""
-    y_label, factor = header_in_unit(figure.y_label, unit)
+    """The plot with its y values (and their bands) in ``unit`` when they are in one of
+    the angle units results are read in (its ``y_unit``); other figures (volts, nm,
+    degrees of a position) come back unchanged."""
+    if figure.y_unit not in ANGLE_UNITS:
+        return figure
+    factor = unit.per_arcsec / ANGLE_UNITS[figure.y_unit].per_arcsec
     if factor == 1.0:
         return figure
+    y_label, _ = header_in_unit(figure.y_label, unit)
     series = tuple(replace(s, y=np.asarray(s.y) * factor,
                            band=None if s.band is None else np.asarray(s.band) * factor)
                    for s in figure.series)
-    return replace(figure, y_label=y_label, series=series)
+    return replace(figure, y_label=y_label, series=series, y_unit=unit.key)
 
 
 def _cell_in_unit(cell: Any, factor: float, unit: AngleUnit) -> Any:

@@ -8,8 +8,11 @@ English text. ``QT_TR_NOOP`` marks a template for ``pyside6-lupdate``, which fin
 by name; here it does nothing else. A :class:`Message` built from parts
 (:func:`joined`) is translated part by part.
 
-Figures are passed already formatted (``ptp=f"{x:.2f}\\""``), with their unit, so the
-translated text keeps their resolution and can still be shown in another angle unit.
+A figure with a unit is best passed as a :class:`~models.quantity.Quantity`
+(``ptp=Quantity(x, "arcsec", ".2f")``): it prints with its unit at its resolution, and
+:func:`models.display_units.in_unit` converts it for another angle unit from the number
+itself. A figure passed already formatted (``ptp=f"{x:.2f}\\""``) is converted only when
+it is one number with its angle unit; the finished text is never rewritten.
 """
 
 from __future__ import annotations

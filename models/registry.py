@@ -24,8 +24,13 @@ from models.workbench import Workbench
 __all__ = ["KINDS", "presenter_class"]
 
 
-KINDS: dict[str, Workbench] = {k.key: k for k in (THEODOLITE, POLYGON, FRINGE,
-                                                           POSITIONING)}
+#: the workbenches in the order of the window's tabs
+KINDS: dict[str, Workbench] = {k.key: k for k in (
+    THEODOLITE,
+    POLYGON,
+    FRINGE,
+    POSITIONING,
+)}
 
 
 def presenter_class(kind: Workbench) -> Any:

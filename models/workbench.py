@@ -7,7 +7,7 @@ reference and the dotted path of its presenter), and from the capabilities it ha
 a small abstract class of its own::
 
     class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
-        key = "fringe"
+        key = KEY  # from models/fringe/__init__.py, with TITLE
         ...
 
 Shared code asks ``isinstance(workbench, WritesCorrectionTable)``, never a workbench's
@@ -33,15 +33,15 @@ from models.plots import PlotFigure
 from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRuns",
-           "ComparesAfterLog", "IssuesCertificates", "OverlaysRuns", "SendsRuns", "SettingsError",
-           "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
+           "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates", "OverlaysRuns",
+           "SendsRuns", "SettingsError", "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
 #: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
 #: correction is the negative of an error.
 SIGN_CONVENTION = "indicated_minus_reference"
 SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
 
-#: what a concrete workbench class must set (checked when the class is defined)
+#: what a concrete workbench class must set (checked when its object is made)
 _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
              "presenter")
 
@@ -63,6 +63,8 @@ class Workbench(ABC):
     entry_column: ClassVar[str] = ""
     # command-line switches that set one of the settings (``--zenith``)
     shortcuts: ClassVar[tuple[Shortcut, ...]] = ()
+    # the settings the README's sample certificate is made with (beside the defaults)
+    sample_settings: ClassVar[Mapping[str, Any]] = {}
 
     def __init__(self) -> None:
         missing = [name for name in _REQUIRED if not hasattr(self, name)]
@@ -84,6 +86,19 @@ class Workbench(ABC):
     def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default
         """The checks across settings (SettingsError naming the key); each setting alone
         is checked by its declaration."""
+
+    def error_unit(self, settings: Mapping[str, Any]) -> str:
+        """The unit of the errors this workbench finds with ``settings`` (a key of
+        models.quantity.UNITS): a certificate's tolerance, resolution and standards'
+        uncertainties are converted to it, and a project file of schema 1, which wrote
+        them as bare numbers in it, is read in it."""
+        return "arcsec"
+
+    def validation_cases(self, trials: int) -> list[Any]:
+        """Its reference cases (models.validation.cases.ValidationCase: check figures of the
+        method's publication, simulations with known truth) kept in its own folder; the
+        first four workbenches' live in models/validation/cases.py."""
+        return []
 
     def __repr__(self) -> str:
         return f"<workbench {self.key}>"
@@ -204,7 +219,19 @@ class ShowsHeadline(ABC):
         calibrations ({"name (unit)": value})."""
 
 
+class GuidesAcquisition(ABC):
+    """Says what to do next while readings come from an instrument (the window's
+    instrument panel; models/capture/guidance.py)."""
+
+    @abstractmethod
+    def acquisition_guide(self, rows: Any, current: Mapping[str, str],
+                          settings: Mapping[str, Any], step: float = 0.0) -> Any:
+        """The next reading's :class:`~models.capture.guidance.NextReading` ("go to face 7
+        (encoder ≈ 105°)", "θ = 12°"), from the rows above the current row (column key ->
+        text), the current row's cells, the settings and the table's nominal step."""
+
+
 #: every capability a workbench may declare (the contract test lists them)
 CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
-                ComparesAfterLog, OverlaysRuns, ShowsHeadline)
+                ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition)
 

@@ -61,10 +61,10 @@ def main() -> None:
     record("main window", window)
 
     # the certificate dialog as File › Export certificate opens it, with three standards
-    meta = window.certificate_metadata("polygon")
+    meta = window.certificates.details("polygon")
     dialog = CertificateDialog(meta, window)
     for _ in range(3):
-        dialog.add_standard({"description": "Autocollimator", "uncertainty_arcsec": 0.3})
+        dialog.add_standard({"description": "Autocollimator", "uncertainty": 0.3})
     dialog.show()
     record("certificate details", dialog)
     dialog.close()
@@ -99,18 +99,18 @@ def main() -> None:
     answer_modal("paste question")
     window.current.view.table.ask_paste(5, 20)
     answer_modal("draft question")
-    window.confirm_draft(["reference standards", "approver", "customer"])
+    window.certificates.view.confirm_draft(["reference standards", "approver", "customer"])
     from app.certificate_presenter import PendingRevision
 
     answer_modal("what changed")
-    window.ask_change_note(PendingRevision("polygon", "AB-2026-0042"))
+    window.certificates.view.ask_change_note(PendingRevision("polygon", "AB-2026-0042"))
     answer_modal("print")
     window.print_dialog()
     answer_modal("open project")
-    window.open_project_dialog()
+    window.projects.open_project_dialog()
     answer_modal("import readings")
     window.import_dialog()
-    window.recovery.discard()
+    window.projects.recovery.discard()
     window.close()
     sys.stdout.write(json.dumps(found) + "\n")
 

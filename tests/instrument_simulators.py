@@ -7,10 +7,10 @@ that misreads the protocol fails against them.
 Fault modes (``faults``): ``noise`` (garbage bytes and lines between frames),
 ``invalid_axes`` (every third frame marked invalid: an axis's status digit, or
 GeoCOM's return code 1284, a readout's error line), ``silence`` (never answers),
-``disconnect`` (the link drops after ``disconnect_after`` frames: a TCP client is cut
-off and a new one accepted; on a pty, as with a pulled cable, nothing goes either way
-for ``gap_s``), ``wrong_baud`` (what a link at the wrong speed delivers: only
-garbage bytes).
+``disconnect`` (the link drops after ``disconnect_after`` frames, and again every
+``disconnect_every`` frames when that is set: a TCP client is cut off and a new one
+accepted; on a pty, as with a pulled cable, nothing goes either way for ``gap_s``),
+``wrong_baud`` (what a link at the wrong speed delivers: only garbage bytes).
 
 The instrument's position is a script: ``positions`` each held ``hold_s`` seconds, with
 Gaussian noise of ``sigma`` (arcsec, or the readout's unit) on every frame.
@@ -40,10 +40,13 @@ class _Simulator:
     def __init__(self, transport: str = "pty", faults: tuple[str, ...] = (),
                  positions=((0.0, 0.0),), hold_s: float = 1e9, sigma: float = 0.0,
                  disconnect_after: int = 5, gap_s: float = 0.3, rate_hz: float = 250.0,
-                 seed: int = 34) -> None:
+                 seed: int = 34, disconnect_every: int = 0) -> None:
         self.transport, self.faults = transport, set(faults)
         self.positions, self.hold_s, self.sigma = list(positions), hold_s, sigma
         self.disconnect_after, self.gap_s, self.rate_hz = disconnect_after, gap_s, rate_hz
+        #: with ``disconnect``: drop the link again every this many frames (0: once)
+        self.disconnect_every = disconnect_every
+        self.cuts = 0
         self.rng = random.Random(seed)
         self.sent: list = []
         self.received: list[bytes] = []
@@ -136,7 +139,9 @@ class _Simulator:
     def _cut_now(self) -> bool:
         if "disconnect" in self.faults and not self._disconnected \
                 and self._frames >= self.disconnect_after:
-            self._disconnected = True
+            self._disconnected = not self.disconnect_every
+            self.disconnect_after = self._frames + self.disconnect_every
+            self.cuts += 1
             return True
         return False
 

@@ -38,13 +38,13 @@ META = CertificateMetadata.from_dict({
     "customer_name": "长春光机所 CIOMP", "item_description": "Encoder RX-26", "item_serial": "SN-1",
     "calibration_date": "2026-11-20", "issue_date": "2026-11-24", "created": "2026-11-24T10:00:00",
     "operator": "王工", "approver": "Dr. Li", "tolerance_arcsec": 3,
-    "standards": [{"description": "Reference AC", "certificate_no": "NIM-1", "uncertainty_arcsec": 0.4}],
+    "standards": [{"description": "Reference AC", "certificate_no": "NIM-1", "uncertainty": 0.4}],
     "notes": "=cmd|' /C calc'!A0 <b>x</b> 备注"})
 
 
 def _meta(key):
     """The example details; the polygon takes its tolerance from its grade alone."""
-    return replace(META, tolerance_arcsec=None) if key == "polygon" else META
+    return replace(META, tolerance=None) if key == "polygon" else META
 
 
 def _analysed(key):
@@ -69,7 +69,7 @@ def test_certificate_of_each_sample_carries_its_figures(key):
     flat = re.sub(r"\s+", " ", text)
     assert f"Page {pages} of {pages}" in flat and "Page 1 of" in flat
     assert "AB-2026-0042" in flat and "长春光机所" in flat and "王工" in flat
-    big_u = document.expanded_uncertainty_arcsec
+    big_u = document.expanded_uncertainty
     assert f"U = {big_u:.{uncertainty_decimals(big_u)}f}\"" in flat
     assert "Decision rule" in flat and "DRAFT" not in flat
     for row in document.parameters.rows[:3]:  # the identified parameters, as printed
@@ -85,8 +85,8 @@ def test_certificate_of_each_sample_carries_its_figures(key):
         assert f"{json_out['compensated_peak_to_peak_arcsec']:.3f}\"" in flat
     # U on the certificate is the budget's: k from each point's ν_eff
     budget = document.budget
-    assert document.expanded_uncertainty_arcsec == pytest.approx(
-        float(np.max(budget.coverage_factors * budget.combined_arcsec)))
+    assert document.expanded_uncertainty == pytest.approx(
+        float(np.max(budget.coverage_factors * budget.combined)))
     assert f"k = {budget.coverage_factor:.2f}" in flat
 
 
@@ -113,15 +113,16 @@ def test_polygon_certificate_prints_every_warning_of_the_window():
 
 
 @pytest.mark.parametrize("details, message", [
-    ({"tolerance_arcsec": 5}, "tolerance of ±5\" but the workbench is set to grade 3"),
+    ({"tolerance": 5}, "tolerance of ±5\" but the workbench is set to grade 3"),
+    ({"tolerance": 24.240684, "tolerance_unit": "urad"}, "tolerance of ±5\" but the workbench"),
     ({"item_grade": "grade 5 (±5\")"}, "say 'grade 5 \\(±5\"\\)' but the workbench is set to grade 3"),
 ])
 def test_polygon_grade_has_one_source(details, message):
     kind, result = _analysed("polygon")
     with pytest.raises(MetadataError, match=message):
         kind.certificate_document(result, replace(_meta("polygon"), **details))
-    same = replace(_meta("polygon"), tolerance_arcsec=1.0, item_grade="grade 3")
-    assert kind.certificate_document(result, same).tolerance_arcsec == 1.0
+    same = replace(_meta("polygon"), tolerance=1.0, item_grade="grade 3")
+    assert kind.certificate_document(result, same).tolerance == 1.0
 
 
 @pytest.mark.slow
@@ -288,7 +289,7 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     column = budget[0].index("c·u (\")")
     doc = kind.certificate_document(result, META)
     assert combined[column] == pytest.approx(
-        doc.budget.combined_arcsec[doc.budget.worst_index], abs=5e-4)
+        doc.budget.combined[doc.budget.worst_index], abs=5e-4)
 
 
 @pytest.mark.parametrize("key", sorted(KINDS))

@@ -27,10 +27,10 @@ def _type_details(qtbot, dialog: CertificateDialog) -> None:
     qtbot.keyClicks(fields["operator"], "Wang")
     qtbot.keyClicks(fields["approver"], "Dr. Li")  # an issued certificate is approved
     qtbot.keyClicks(fields["item_model"], "RT-400")
-    qtbot.keyClicks(fields["tolerance_arcsec"], "5")
+    qtbot.keyClicks(fields["tolerance"], "5")
     assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
     dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
-                         "uncertainty_arcsec": 0.5})
+                         "uncertainty": 0.5})
 
 
 @pytest.mark.slow
@@ -52,8 +52,8 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
 
     monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
     out = tmp_path / "cert.pdf"
-    window.choose_save_path = lambda *a: str(out)
-    window.export_action.trigger()
+    window.certificates.view.choose_save_path = lambda *a: str(out)
+    window.menus.export_action.trigger()
     assert "humidity_pct" in seen["error"] and "background" in seen["style"]
     assert window.told == []
     text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
@@ -65,9 +65,9 @@ def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatc
     assert register.verify(out.read_bytes()).number == record.number
     assert record.workbench == "theodolite" and record.item_serial == "RT-9"
     # the details are kept with the project, without the number (the next one is new)
-    stored = window.project().metadata["certificates"]["theodolite"]
+    stored = window.projects.project().metadata["certificates"]["theodolite"]
     assert stored["operator"] == "Wang" and stored["certificate_number"] == ""
-    assert window.is_modified
+    assert window.projects.is_modified
 
 
 @pytest.mark.slow
@@ -75,7 +75,7 @@ def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
     window.load_all_samples()
     monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
     called = []
-    window.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
+    window.certificates.view.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
     assert not window.export_certificate()
     assert not called and not (tmp_path / "x.pdf").exists()
 
@@ -90,11 +90,11 @@ def test_no_result_is_told_not_crashed(window):
 def test_lab_defaults_fill_a_new_certificate(window, qtbot):
     dialog = CertificateDialog(CertificateMetadata())
     qtbot.addWidget(dialog)
-    dialog.lab_defaults_saved.connect(window.save_lab_defaults)
+    dialog.lab_defaults_saved.connect(window.certificates.save_lab_defaults)
     qtbot.keyClicks(dialog.fields["lab_name"], "Angle Lab")
     qtbot.keyClicks(dialog.fields["operator"], "Li")
     qtbot.mouseClick(dialog.save_defaults_button, Qt.MouseButton.LeftButton)
-    meta = window.certificate_metadata("polygon")
+    meta = window.certificates.details("polygon")
     assert meta.lab_name == "Angle Lab" and meta.operator == "Li"
     assert meta.customer_name == ""
 
@@ -104,8 +104,8 @@ def test_export_results_csv(window, tmp_path):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)
     out = tmp_path / "r.csv"
-    window.choose_save_path = lambda *a: str(out)
-    window.export_results_action.trigger()
+    window.certificates.view.choose_save_path = lambda *a: str(out)
+    window.menus.export_results_action.trigger()
     lines = out.read_text(encoding="utf-8-sig").splitlines()
     result = window.current.result
     assert lines[0].startswith("position,nominal_deg")
@@ -117,7 +117,7 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
     """humidity stored as "45 %" (an older version, or a hand-edited project): the other
     details stay in the dialog, the bad one shows as stored and is marked; all bad fields
     are marked at once."""
-    window.project_metadata["certificates"] = {"theodolite": {
+    window.projects.metadata["certificates"] = {"theodolite": {
         "lab_name": "Angle Lab", "customer_name": "Customer", "humidity_pct": "45 %",
         "temperature_c": "warm"}}
     window.tabs.setCurrentIndex(0)
@@ -131,7 +131,7 @@ def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
         return QDialog.DialogCode.Rejected
 
     monkeypatch.setattr(CertificateDialog, "exec", look)
-    assert window.edit_certificate_metadata(window.certificate_metadata()) is None
+    assert window.certificates.edit_details(window.certificates.details(window.current.kind.key)) is None
     assert seen["lab"] == "Angle Lab" and seen["humidity"] == "45 %"
     assert all(style for style in seen["styles"])
     assert "humidity_pct" in seen["error"] and "temperature_c" in seen["error"]
@@ -180,3 +180,26 @@ def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
         assert header.sectionSize(column) >= widest, (text, header.sectionSize(column), widest)
     assert table.viewport().height() >= 3 * table.verticalHeader().defaultSectionSize()
     assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"
+
+
+def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
+    """#32: the tolerance's unit is chosen beside it, a standard's typed in its row (its key
+    or its symbol); both come back as they were set."""
+    from models.quantity import Quantity
+
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    qtbot.keyClicks(dialog.fields["tolerance"], "15")
+    unit_box = dialog.choices["tolerance_unit"]
+    assert unit_box.currentData() == "arcsec"  # as a file of before states it
+    unit_box.setFocus()
+    while unit_box.currentData() != "urad":
+        qtbot.keyClick(unit_box, Qt.Key.Key_Down)
+    dialog.add_standard({"description": "laser", "uncertainty": 0.5, "uncertainty_unit": "µm"})
+    meta = dialog.metadata()
+    assert meta.tolerance_quantity == Quantity(15.0, "urad")
+    assert (meta.standards[0].uncertainty, meta.standards[0].uncertainty_unit) == (0.5, "um")
+    again = CertificateDialog(meta)
+    qtbot.addWidget(again)
+    assert again.choices["tolerance_unit"].currentText() == "µrad"
+    assert again.metadata() == meta

@@ -64,7 +64,7 @@ COMPLETE = CertificateMetadata.from_dict({
     "item_serial": "T-1", "calibration_date": "2026-11-20", "issue_date": "2026-11-24",
     "operator": "Wang", "approver": "Dr. Li",
     "standards": [{"description": "Theodolite", "certificate_no": "N-1",
-                   "uncertainty_arcsec": 0.5}]})
+                   "uncertainty": 0.5}]})
 
 
 @pytest.mark.slow

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -28,7 +29,7 @@ META = CertificateMetadata.from_dict({
     "item_description": "Axis", "item_serial": "SN-1", "calibration_date": "2026-11-20",
     "operator": "Wang",
     "standards": [{"description": "Theodolite", "certificate_no": "NIM-1",
-                   "uncertainty_arcsec": 0.5, "basis": "u"}]})
+                   "uncertainty": 0.5, "basis": "u"}]})
 
 
 # 10. ν_eff truncated to the lower integer before t is taken (GUM G.6.4) -------------------
@@ -67,7 +68,7 @@ def test_one_estimate_entering_twice_counts_once_for_nu():
         BudgetComponent("standard", "B", "normal", b, 1.0, 1.0, math.inf)), 1)
     apart = UncertaintyBudget(tuple(replace(c, dof_group="") for c in grouped.components), 1)
     u2 = 2 * s**2 + b**2
-    assert grouped.combined_arcsec[0] == pytest.approx(math.sqrt(u2))
+    assert grouped.combined[0] == pytest.approx(math.sqrt(u2))
     assert grouped.effective_dof() == pytest.approx(u2**2 / ((2 * s**2) ** 2 / nu))  # 25.9
     assert apart.effective_dof() == pytest.approx(u2**2 / (2 * s**4 / nu))  # 51.8: doubled
     # GTC: one input of u = √2·s with ν gives the same ν_eff
@@ -80,13 +81,13 @@ def test_theodolite_budget_counts_its_repeatability_once():
     budget = theodolite_budget(result, META)
     rows = budget.table()
     repeat = [r for r in rows if r["name"] in ("Reading repeatability", "Reference reading (θ₀)")]
-    assert len(repeat) == 2 and repeat[0]["u_arcsec"] == repeat[1]["u_arcsec"]
+    assert len(repeat) == 2 and repeat[0]["u"] == repeat[1]["u"]
     nu = repeat[0]["dof"]
     i = budget.worst_index
     contrib = budget.contributions()[:, i]
     names = [r["name"] for r in rows]
     model = contrib[names.index("Set-up model ζ (ψ, α, β)")]
-    group = repeat[0]["contribution_arcsec"] ** 2 + repeat[1]["contribution_arcsec"] ** 2
+    group = repeat[0]["contribution"] ** 2 + repeat[1]["contribution"] ** 2
     hand = float(np.sum(contrib**2)) ** 2 / (group**2 / nu + model**4 / nu)
     assert budget.effective_dof() == pytest.approx(hand)
 
@@ -108,10 +109,10 @@ def test_deciding_point_is_named_as_in_the_results_table(key):
     settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else None
     kind, result = _sample(key, settings)
     tolerance = 1000.0 if key != "polygon" else None
-    meta = replace(META, decision_quantity="points", tolerance_arcsec=tolerance)
+    meta = replace(META, decision_quantity="points", tolerance=tolerance)
     if key == "polygon":  # its tolerance is the grade's (±1")
-        meta = replace(meta, tolerance_arcsec=None,
-                       standards=(replace(META.standards[0], uncertainty_arcsec=0.1),))
+        meta = replace(meta, tolerance=None,
+                       standards=(replace(META.standards[0], uncertainty=0.1),))
     document = kind.certificate_document(result, meta)
     statement = str(document.conformity.statement)
     assert "number " not in statement
@@ -143,7 +144,7 @@ def test_asymmetric_half_range_interval_is_printed_as_such():
     c = decide_conformity(errors, budget, 3.0, "guarded", "half_range")
     mc = c.monte_carlo
     assert mc.u_upper != pytest.approx(mc.u_lower, rel=0.02)
-    assert c.expanded_lower == mc.u_lower and c.expanded_arcsec == mc.u_upper
+    assert c.expanded_lower == mc.u_lower and c.expanded == mc.u_upper
     row = decision_rows(c, budget, "points")[0][1]
     d = 2 if min(mc.u_lower, mc.u_upper) >= 0.1 else 3
     assert f"−{mc.u_lower:.{d}f}\"/+{mc.u_upper:.{d}f}\"" in row and "±" not in row
@@ -206,9 +207,9 @@ def test_the_certificate_defines_alpha_and_beta():
 @pytest.mark.slow
 def test_fringe_without_stated_inputs_is_not_traceable_and_not_judged():
     kind, result = _sample("fringe", {"samples_per_period": 64})
-    meta = replace(META, tolerance_arcsec=0.5, standards=(
+    meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                uncertainty_arcsec=None),))
+                uncertainty=None),))
     document = kind.certificate_document(result, meta)
     assert document.conformity.verdict == "not assessed"
     assert "not traceable" in document.conformity.statement
@@ -227,9 +228,9 @@ def test_fringe_stated_inputs_enter_the_budget_by_hand():
     phase by u_o/R (rad), a gain ratio u_g by |S C|/R² u_g, the LSB q by q/√12/R, a
     linearity limit a by a/√3/R; R from the measured signals about their mean."""
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
-    document = kind.certificate_document(result, replace(META, tolerance_arcsec=0.5, standards=(
+    document = kind.certificate_document(result, replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                uncertainty_arcsec=0.005, basis="U95"),)))
+                uncertainty=0.005, basis="U95"),)))
     assert not document.untraceable and document.conformity.verdict != "not assessed"
     budget = document.budget
     names = [c.name for c in budget.components]
@@ -289,13 +290,13 @@ def test_positioning_figures_carry_their_u():
     budget = positioning_budget(result, META)
     intervals = figure_uncertainties(result, budget)
     m = result.positions.size
-    hand = 2.0 * math.sqrt(float(np.sum(budget.combined_arcsec**2))) / m
+    hand = 2.0 * math.sqrt(float(np.sum(budget.combined**2))) / m
     lower, upper = intervals["B_mean"]
     assert lower == pytest.approx(hand, rel=0.05) and upper == pytest.approx(hand, rel=0.05)
     for key in ("A", "R", "E", "M", "B", "B_mean", "P"):
         assert key in intervals and min(intervals[key]) > 0
     # E is a range of means: at least one mean's U, at most that of a difference of two
-    u_mean = 2.0 * float(np.max(budget.combined_arcsec))
+    u_mean = 2.0 * float(np.max(budget.combined))
     assert 0.5 * u_mean < intervals["E"][1] < math.sqrt(2) * u_mean * 1.1
     kind, _ = _sample("positioning")
     document = kind.certificate_document(result, META)
@@ -313,9 +314,9 @@ def test_positioning_states_its_inputs_and_the_test_conditions():
                 "axis_temperature_c": 20.3, "axis_setup": "calibrator on the table centre"}
     document = kind.certificate_document(result, META, settings=settings)
     rows = {r["name"]: r for r in document.budget.table()}
-    assert rows["Misalignment of the reference"]["u_arcsec"] == pytest.approx(0.3)
-    assert rows["Resolution of the reference"]["u_arcsec"] == pytest.approx(0.1 / math.sqrt(12))
-    assert rows["Temperature"]["u_arcsec"] == pytest.approx(0.2)
+    assert rows["Misalignment of the reference"]["u"] == pytest.approx(0.3)
+    assert rows["Resolution of the reference"]["u"] == pytest.approx(0.1 / math.sqrt(12))
+    assert rows["Temperature"]["u"] == pytest.approx(0.2)
     listed = dict(document.settings)
     assert "calibrator on the table centre" in listed.values()
     assert any("20.3" in v for v in listed.values())
@@ -345,7 +346,7 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
                              {"grade": 4, "ac_roll_arcmin": 0.0})
     assert result.repeatability_arcsec is None  # one set
-    document = POLYGON.certificate_document(result, replace(META, tolerance_arcsec=None))
+    document = POLYGON.certificate_document(result, replace(META, tolerance=None))
     rows = [r for r in document.statistics.rows if r[0] == "Repeatability"]
     assert rows and "the autocollimator's reading noise from the tilt fits stands for it" in rows[0][2]
     assert any(c.name.startswith("Autocollimator reading noise") for c in document.budget.components)
@@ -354,9 +355,9 @@ def test_polygon_says_what_covers_an_unevaluated_repeatability():
 @pytest.mark.slow
 def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
-    meta = replace(META, tolerance_arcsec=0.5, standards=(
+    meta = replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                certificate_no="CAL-2026-33", uncertainty_arcsec=None),))
+                certificate_no="CAL-2026-33", uncertainty=None),))
     document = kind.certificate_document(result, meta)
     assert document.stated_inputs == ("Phase reference", "ADC quantisation", "ADC offset",
                                       "ADC gain ratio", "ADC linearity")
@@ -366,3 +367,36 @@ def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
             "(certificate CAL-2026-33; its figures enter as the inputs stated in the settings: "
             "Phase reference, ADC quantisation, ADC offset, ADC gain ratio, ADC linearity)") in flat
     assert "no uncertainty stated" not in flat
+
+
+def test_positioning_figures_in_their_own_unit_enter_the_budget_converted():
+    """#32: a standard's uncertainty, the item's resolution and the tolerance carry their
+    unit; on an axis evaluated in µrad a figure stated in arcseconds is converted (1" =
+    4.8481368 µrad), one stated in µm is refused, and the verdict is in µrad."""
+    from models.certificate.metadata import MetadataError, ReferenceStandard
+    from models.positioning.report import positioning_budget
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+    from models.uncertainty.conformity import decide_conformity
+
+    kind = KINDS["positioning"]
+    sample = Path(__file__).parents[1] / "resources" / "samples" / "positioning_sample.csv"
+    rows = map_columns(read_table(sample), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
+                          kind.settings_with_defaults({"deviation_unit": "urad"}))
+    in_arcsec = replace(META, standards=(ReferenceStandard("calibrator", uncertainty=1.0),),
+                        item_resolution=0.2, tolerance=15.0, tolerance_unit="arcsec")
+    budget = positioning_budget(result, in_arcsec)
+    assert budget.unit.key == "urad"
+    values = {str(c.name): c.value for c in budget.components}
+    assert values["calibrator"] == pytest.approx(4.8481368, rel=1e-8)
+    assert values["Item resolution"] == pytest.approx(0.1 * 4.8481368, rel=1e-8)
+    conformity = decide_conformity(result.deviations[:1] * 0.0, type(budget)(
+        budget.components[:1], 1, budget.probability, "urad"),
+        in_arcsec.tolerance_quantity, "simple", "points")
+    assert conformity.unit == "urad" and "±72.7221 µrad" in conformity.statement
+    in_um = replace(META, standards=(ReferenceStandard("laser", uncertainty=0.5,
+                                                       uncertainty_unit="um"),))
+    with pytest.raises(MetadataError, match="laser.*in µm, but the errors are in µrad"):
+        positioning_budget(result, in_um)

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from app.main import main
+from models.registry import KINDS
 
 
 def run_cli(capsys, *args):
@@ -191,13 +192,13 @@ def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, nam
     assert code == 0 and json.loads(fast) == json.loads(slow)
 
 
-@pytest.mark.parametrize("kind", ["theodolite", "polygon", "fringe", "positioning"])
+@pytest.mark.parametrize("kind", list(KINDS))
 def test_the_summary_in_chinese_carries_the_same_figures(capsys, samples_dir, kind):
     """--language zh_CN: the summary and warnings in Chinese (from the window's own .ts,
     read without Qt), every figure of each line as in English (the word order may differ)."""
     import re
 
-    sample = str(samples_dir / f"{kind}_sample.csv")
+    sample = str(samples_dir / KINDS[kind].sample_file)
     code, english, _ = run_cli(capsys, kind, sample)
     assert code == 0
     code, chinese, _ = run_cli(capsys, kind, sample, "--language", "zh_CN")
@@ -207,3 +208,28 @@ def test_the_summary_in_chinese_carries_the_same_figures(capsys, samples_dir, ki
         assert sorted(numbers.findall(zh)) == sorted(numbers.findall(en)), (en, zh)
     assert re.search(r"[\u4e00-\u9fff]", chinese)
     assert len(re.findall(r"\b(?:the|of|and|is)\b", chinese)) == 0, chinese
+
+
+def test_old_details_are_read_in_the_unit_of_the_workbench_errors(tmp_path):
+    """#32: details written before the figures had their unit (``tolerance_arcsec``…) are
+    read in the unit of the errors the settings give (a positioning log in µrad: µrad), as
+    they were judged then; details in the new form keep their own unit."""
+    from app.cli import _read_metadata
+    from models.registry import KINDS
+
+    positioning = KINDS["positioning"]
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps({"tolerance_arcsec": 15, "item_resolution_arcsec": 0.1,
+                               "standards": [{"description": "laser",
+                                              "uncertainty_arcsec": 0.5}]}), "utf-8")
+    unit = positioning.error_unit(positioning.settings_with_defaults({"deviation_unit": "urad"}))
+    meta = _read_metadata(str(old), unit)
+    assert (meta.tolerance, meta.tolerance_unit) == (15.0, "urad")
+    assert (meta.item_resolution, meta.item_resolution_unit) == (0.1, "urad")
+    assert meta.standards[0].uncertainty_unit == "urad"
+    new = tmp_path / "new.json"
+    new.write_text(json.dumps({"tolerance": 3, "tolerance_unit": "arcsec"}), "utf-8")
+    assert _read_metadata(str(new), unit).tolerance_in("urad") == pytest.approx(3 * 4.8481368)
+    fringe = KINDS["fringe"]
+    assert fringe.error_unit(fringe.settings_with_defaults({"period_nm": 632.8})) == "nm"
+    assert fringe.error_unit(fringe.settings_with_defaults({})) == "arcsec"

@@ -48,16 +48,16 @@ def test_save_and_reopen_round_trip(make_window, tmp_path, samples_dir):
     bench = window.presenter("theodolite")
     bench.table_model.set_cells([(0, 1, "bad°")])
     bench.set_settings({"accuracy_arcsec": 0.7})
-    assert window.is_modified and window.windowTitle().endswith("*")
+    assert window.projects.is_modified and window.windowTitle().endswith("*")
     path = tmp_path / "run.anglebench.json"
-    assert window.save_to(path)
-    assert not window.is_modified
+    assert window.projects.save_to(path)
+    assert not window.projects.is_modified
     other = make_window()
-    assert other.open_project(path)
+    assert other.projects.open_project(path)
     reopened = other.presenter("theodolite")
     assert reopened.sheet.copy_rows() == bench.sheet.copy_rows()
     assert reopened.settings["accuracy_arcsec"] == 0.7
-    assert other.recent_files()[0] == str(path)
+    assert other.projects.recent_files()[0] == str(path)
 
 
 def test_damaged_or_newer_project_keeps_current_work(make_window, tmp_path):
@@ -66,61 +66,61 @@ def test_damaged_or_newer_project_keeps_current_work(make_window, tmp_path):
     before = window.presenter("theodolite").sheet.copy_rows()
     damaged = tmp_path / "damaged.json"
     damaged.write_text('{"format": "anglebench-project", "schema_version": 1, "workb')
-    assert not window.open_project(damaged)
+    assert not window.projects.open_project(damaged)
     newer = tmp_path / "newer.json"
     newer.write_text(json.dumps({"format": "anglebench-project", "schema_version": 7}))
-    assert not window.open_project(newer)
+    assert not window.projects.open_project(newer)
     assert "damaged project file" in window.told[0] and "newer AngleBench" in window.told[1]
     assert window.presenter("theodolite").sheet.copy_rows() == before
 
 
 def crash(window) -> None:
     """The window's process dies: no closeEvent, the kernel drops its lock, the file stays."""
-    os.close(window.recovery._lock_fd)
-    window.recovery._lock_fd = None
-    window.autosave_timer.stop()
+    os.close(window.projects.recovery._lock_fd)
+    window.projects.recovery._lock_fd = None
+    window.projects.autosave_timer.stop()
 
 
 def test_autosave_and_recovery_after_a_crash(make_window, tmp_path):
     window = make_window()
     window.load_all_samples()
-    assert window.save_to(tmp_path / "run.anglebench.json")
+    assert window.projects.save_to(tmp_path / "run.anglebench.json")
     window.presenter("theodolite").table_model.set_cells([(0, 0, "-20.5")])
-    window.autosave()
-    assert window.recovery.exists()
+    window.projects.autosave()
+    assert window.projects.recovery.exists()
     crash(window)
     survivor = make_window(answer=QMessageBox.StandardButton.Yes)
     asked = []
     survivor.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
-    assert survivor.offer_recovery()
+    assert survivor.projects.offer_recovery()
     assert "run.anglebench.json" in asked[0] and "autosaved 20" in asked[0]
     assert survivor.presenter("theodolite").sheet.text(0, 0) == "-20.5"
-    assert survivor.is_modified
-    assert survivor.project_path == tmp_path / "run.anglebench.json"  # Ctrl+S saves it there
+    assert survivor.projects.is_modified
+    assert survivor.projects.path == tmp_path / "run.anglebench.json"  # Ctrl+S saves it there
     assert survivor.windowTitle().endswith("run.anglebench.json *")
 
 
 def test_an_edit_is_autosaved_within_seconds(make_window, qtbot):
     window = make_window()
     window.presenter("theodolite").table_model.set_cells([(0, 0, "1")])
-    qtbot.waitUntil(window.recovery.exists, timeout=6000)
+    qtbot.waitUntil(window.projects.recovery.exists, timeout=6000)
 
 
 def test_two_windows_never_take_each_others_work(make_window):
     a = make_window()
     a.presenter("theodolite").table_model.set_cells([(0, 0, "111")])
-    a.autosave()
+    a.projects.autosave()
     b = make_window()
-    assert not b.offer_recovery()  # A is alive: its autosave is not a crash
+    assert not b.projects.offer_recovery()  # A is alive: its autosave is not a crash
     b.presenter("theodolite").table_model.set_cells([(0, 0, "222")])
-    b.autosave()
-    assert a.recovery.path != b.recovery.path
+    b.projects.autosave()
+    assert a.projects.recovery.path != b.projects.recovery.path
     b.ask = lambda *args: QMessageBox.StandardButton.Discard
     b.close()
-    assert a.recovery.exists() and not b.recovery.exists()
+    assert a.projects.recovery.exists() and not b.projects.recovery.exists()
     crash(a)
     c = make_window(answer=QMessageBox.StandardButton.Yes)
-    assert c.offer_recovery()
+    assert c.projects.offer_recovery()
     assert c.presenter("theodolite").sheet.text(0, 0) == "111"
 
 
@@ -130,7 +130,7 @@ def test_damaged_autosaves_are_kept_aside_each_under_its_own_name(make_window, t
     for i in range(2):
         (folder / f"recovery-dead{i}.anglebench.json").write_text("{damaged")
         window = make_window()
-        assert not window.offer_recovery()
+        assert not window.projects.offer_recovery()
         assert "kept aside" in window.told[0]
     assert len(list(folder.glob("*.damaged-*.json"))) == 2
 
@@ -159,7 +159,7 @@ def test_opening_a_damaged_project_changes_nothing(make_window, tmp_path, change
     source = make_window()
     source.load_all_samples()
     path = tmp_path / "good.anglebench.json"
-    assert source.save_to(path)
+    assert source.projects.save_to(path)
     document = json.loads(path.read_text())
     change(document)
     bad = tmp_path / "bad.anglebench.json"
@@ -169,19 +169,19 @@ def test_opening_a_damaged_project_changes_nothing(make_window, tmp_path, change
     theodolite.table_model.set_cells([(0, 0, "7"), (1, 0, "8")])
     rows, title = theodolite.sheet.copy_rows(), window.windowTitle()
     undo = theodolite.undo_stack.count()
-    assert not window.open_project(bad)
+    assert not window.projects.open_project(bad)
     assert "nothing was changed" in window.told[-1]
     assert theodolite.sheet.copy_rows() == rows and window.windowTitle() == title
-    assert theodolite.undo_stack.count() == undo and window.project_path is None
+    assert theodolite.undo_stack.count() == undo and window.projects.path is None
 
 
 def test_clean_close_removes_recovery_file(make_window):
     window = make_window(answer=QMessageBox.StandardButton.Discard)
     window.presenter("theodolite").table_model.set_cells([(0, 0, "1")])
-    window.autosave()
-    assert window.recovery.exists()
+    window.projects.autosave()
+    assert window.projects.recovery.exists()
     window.close()
-    assert not window.recovery.exists()
+    assert not window.projects.recovery.exists()
 
 
 def test_close_can_be_cancelled(make_window):
@@ -212,7 +212,7 @@ def test_import_is_undoable(make_window, tmp_path):
     good.write_text("theta_deg,azimuth_deg,elevation_deg\n0,0,0\n1,1,0\n2,2,0\n3,3,0\n")
     assert window.import_file(good, "theodolite")
     assert bench.sheet.row_count == 4
-    window.undo_action.trigger()
+    window.menus.undo_action.trigger()
     assert bench.sheet.copy_rows() == before
 
 
@@ -220,9 +220,9 @@ def test_load_sample_menu_is_one_undo_step(make_window):
     window = make_window()
     bench = window.presenter("theodolite")
     bench.table_model.set_cells([(0, 0, "5")])
-    window.sample_action.trigger()
+    window.menus.sample_action.trigger()
     assert bench.sheet.row_count == 41
-    window.undo_action.trigger()
+    window.menus.undo_action.trigger()
     assert bench.sheet.text(0, 0) == "5" and bench.sheet.row_count == 1
 
 
@@ -230,21 +230,22 @@ def test_a_sheet_grown_large_waits_the_large_autosave_delay(make_window, monkeyp
     """The timer started on a small edit (a setting) and a million rows arrived before it
     ran out: it does not write them then, beside the user's first edits, but waits the
     large sheets' delay from the same first edit; then it writes."""
-    import app.main_window as main_window
+    import app.project_presenter as project_presenter
 
     window = make_window()
     fringe = window.presenter("fringe")
     fringe.set_settings({**fringe.settings, "samples_per_period": 64})
-    assert window.autosave_timer.isActive()
-    assert window.autosave_timer.interval() == main_window.AUTOSAVE_DELAY_MS
+    assert window.projects.autosave_timer.isActive()
+    assert window.projects.autosave_timer.interval() == project_presenter.AUTOSAVE_DELAY_MS
     written = []
-    monkeypatch.setattr(window, "autosave", lambda: written.append(True))
-    monkeypatch.setattr(main_window, "AUTOSAVE_THREAD_ROWS", -1)  # every sheet counts as large
-    window._autosave_when_due()  # the short delay ran out
-    assert written == [] and window.autosave_timer.isActive()
-    left_ms = window.autosave_timer.interval()
-    assert main_window.AUTOSAVE_DELAY_LARGE_MS - 500 < left_ms <= main_window.AUTOSAVE_DELAY_LARGE_MS
-    window._unsaved_since -= main_window.AUTOSAVE_DELAY_LARGE_MS / 1000.0  # its time came
-    window._autosave_when_due()
+    monkeypatch.setattr(window.projects, "autosave", lambda: written.append(True))
+    monkeypatch.setattr(project_presenter, "AUTOSAVE_THREAD_ROWS", -1)  # every sheet counts as large
+    window.projects._autosave_when_due()  # the short delay ran out
+    assert written == [] and window.projects.autosave_timer.isActive()
+    left_ms = window.projects.autosave_timer.interval()
+    large_ms = project_presenter.AUTOSAVE_DELAY_LARGE_MS
+    assert large_ms - 500 < left_ms <= large_ms
+    window.projects._unsaved_since -= large_ms / 1000.0  # its time came
+    window.projects._autosave_when_due()
     assert written == [True]
-    window.autosave_timer.stop()
+    window.projects.autosave_timer.stop()

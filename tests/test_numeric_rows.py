@@ -146,7 +146,7 @@ def test_a_large_record_of_numbers_is_imported_as_columns_and_edits_as_text(wind
     qtbot.waitUntil(lambda: not presenter.busy and presenter.result is not None
                     and abs(presenter.result.sin_fit.offset - before) < 1e-12, timeout=60_000)
     assert presenter.undo_stack.count() == 2  # the import and the edit
-    assert window.save_to(tmp_path / "project.anglebench.json")
+    assert window.projects.save_to(tmp_path / "project.anglebench.json")
     saved = json.loads((tmp_path / "project.anglebench.json").read_text("utf-8"))
     rows = saved["workbenches"]["fringe"]["rows"]
     assert len(rows) == samples and float(rows[1][0]) == float(f"{3.7 * np.sin(theta[1]) + 0.02:.6f}")

@@ -73,7 +73,7 @@ def test_new_readings_after_file_new_are_in_view(window):
     plots = presenter.view.plots
     window.show()
     _settle(plots.drift)
-    window.new_project()
+    window.projects.new_project()
     phase = np.arange(640) * 2 * np.pi / 64
     cells = [(r, c, f"{v:.5f}") for r, p in enumerate(phase)
              for c, v in enumerate((0.37 * np.sin(p) + 0.01, 0.36 * np.cos(p) - 0.02))]

@@ -150,14 +150,14 @@ def test_unmeasured_roll_is_covered_by_its_budget_input():
     assert np.max(left) > 0.2  # the roll's cross-talk is there, uncorrected …
     roll = [c for c in polygon_budget(result, CertificateMetadata()).components if "roll" in c.name]
     assert len(roll) == 1  # one input, not also a "reticle roll"
-    assert np.all(left <= roll[0].value_arcsec + 1e-3)  # … and within the bound's input
-    assert np.all(left >= 0.8 * roll[0].value_arcsec - 1e-3)
+    assert np.all(left <= roll[0].value + 1e-3)  # … and within the bound's input
+    assert np.all(left >= 0.8 * roll[0].value - 1e-3)
     measured = analyze(rig.set_rows(), ac_roll_measured_arcmin=rig.tilt_test_roll_arcmin(),
                        u_ac_roll_arcmin=0.05)
     assert np.max(np.abs(measured.sets[0].corrected_error_arcsec - rig.truth_arcsec())) < 1e-3
     roll = [c for c in polygon_budget(measured, CertificateMetadata()).components if "roll" in c.name]
     assert len(roll) == 1 and roll[0].distribution == "normal"
-    np.testing.assert_allclose(roll[0].value_arcsec * 20.0, left / 0.8 * 1.0, rtol=0.02, atol=2e-3)
+    np.testing.assert_allclose(roll[0].value * 20.0, left / 0.8 * 1.0, rtol=0.02, atol=2e-3)
 
 
 @pytest.mark.slow
@@ -175,7 +175,7 @@ def test_correction_uncertainty_matches_its_scatter(frame, least):
         if k < 5:
             comp = next(c for c in polygon_budget(result, CertificateMetadata()).components
                         if c.name.startswith("Pyramidal"))
-            budgets.append(comp.value_arcsec)
+            budgets.append(comp.value)
     scatter = np.std(corrections, axis=0, ddof=1)
     u = np.mean(budgets, axis=0)
     assert np.max(scatter) > least  # the correction does scatter …

@@ -288,7 +288,7 @@ def test_polygon_stated_from_face_1_has_sensitivity_one():
 
         def contribution(applies_to, result=result):
             meta = CertificateMetadata.from_dict({"standards": [
-                {"description": "polygon", "uncertainty_arcsec": 0.2, "basis": "u",
+                {"description": "polygon", "uncertainty": 0.2, "basis": "u",
                  "applies_to": applies_to}]})
             return polygon_budget(result, meta).components[0].contribution(12)
 
@@ -312,7 +312,7 @@ def test_reticle_roll_enters_as_the_issue_figures_it():
     result = analyze(rig.set_rows(), ac_roll_arcmin=1.0)
     roll = next(c for c in polygon_budget(result, CertificateMetadata()).components
                 if "roll" in c.name)
-    assert np.max(roll.value_arcsec) == pytest.approx(960.0 / 3437.75, rel=1e-3)  # 0.28″ limit
+    assert np.max(roll.value) == pytest.approx(960.0 / 3437.75, rel=1e-3)  # 0.28″ limit
     assert np.max(roll.contribution(24)) == pytest.approx(0.279 / np.sqrt(3), rel=1e-2)
 
 

@@ -90,7 +90,7 @@ def test_certificate_names_the_standard_applied(samples_dir, tmp_path, capsys):
 @pytest.mark.slow
 def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samples_dir):
     meta = CertificateMetadata(standards=(ReferenceStandard("laser rotary calibrator",
-                                                            uncertainty_arcsec=0.6,
+                                                            uncertainty=0.6,
                                                             basis="U95"),))
     result = sample(samples_dir)
     document = KIND.certificate_document(result, meta)
@@ -102,7 +102,7 @@ def test_u_per_target_is_the_gum_combination_of_reference_and_repeatability(samp
         nu = uc**4 / (u_rep**4 / (n - 1))  # Welch–Satterthwaite, the reference exact
         # k from ν_eff truncated to the lower integer (GUM G.6.4)
         k = stats.t.ppf(0.5 + math.erf(math.sqrt(2)) / 2, math.floor(nu))
-        assert document.budget.expanded_arcsec[index] == pytest.approx(k * uc, rel=1e-6)
+        assert document.budget.expanded[index] == pytest.approx(k * uc, rel=1e-6)
     text = flat(document)
     assert "follows ISO 230-2:2014" in text and "VDI/DGQ 3441" in text
     assert "x = actual position − target" in text
@@ -159,7 +159,7 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)  # polygon
     polygon = window.presenter("polygon")
-    assert window.send_action.isEnabled()
+    assert window.menus.send_action.isEnabled()
     assert window.send_to_positioning()
     positioning = window.presenter("positioning")
     assert window.current is positioning
@@ -173,7 +173,7 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     positioning.refresh()
     assert positioning.result.positions.size == 13
     window.tabs.setCurrentIndex(2)  # fringe: nothing to send
-    assert not window.send_action.isEnabled()
+    assert not window.menus.send_action.isEnabled()
 
 
 def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir, capsys):

@@ -16,6 +16,8 @@ from widgets.fringe.presenter import FringePresenter
 from widgets.fringe.view import FringeView
 from widgets.polygon.presenter import PolygonPresenter
 from widgets.polygon.view import PolygonView
+from widgets.positioning.presenter import PositioningPresenter
+from widgets.positioning.view import PositioningView
 from widgets.theodolite.presenter import TheodolitePresenter
 from widgets.theodolite.view import TheodoliteView
 
@@ -105,9 +107,70 @@ def test_fringe_presenter_hands_the_view_every_curve_and_exports(qtbot, samples_
     assert out.read_text().startswith("# AngleBench fringe correction table")
 
 
+def test_positioning_presenter_flags_few_runs_and_tells_what_it_cannot_write(qtbot, samples_dir,
+                                                                             tmp_path):
+    presenter, view = make(PositioningPresenter, PositioningView, qtbot)
+    presenter.export_compensation_dialog()  # no result yet: nothing asked
+    view.ask_compensation_path.assert_not_called()
+    rows = map_columns(read_table(samples_dir / presenter.kind.sample_file), presenter.kind.columns)
+    presenter.table_model.replace_all([r for r in rows if r[1] in ("1", "2", "3")])
+    presenter.refresh()
+    deviation, _, readings = view.show_figures.call_args.args
+    assert len(readings.series) == 6  # three runs each way …
+    view.append_to_readings_caption.assert_called_with(" — fewer than 5 runs: flagged")  # … flagged
+    view.append_to_readings_caption.reset_mock()
+    load(presenter, samples_dir)
+    view.append_to_readings_caption.assert_not_called()  # five runs: no flag
+    view.ask_compensation_path.return_value = ""  # cancelled: nothing written, nothing told
+    presenter.export_compensation_dialog()
+    assert view.ask_compensation_path.call_args.args == ("compensation.csv", "csv")
+    view.show_status.assert_not_called()
+    view.tell.assert_not_called()
+    view.ask_compensation_path.return_value = str(tmp_path / "no" / "such" / "dir" / "c.csv")
+    presenter.export_compensation_dialog()
+    title, text = view.tell.call_args.args
+    assert title == "Cannot export the compensation table" and "c.csv" in text
+    view.show_status.assert_not_called()
+    assert not (tmp_path / "no").exists()
+
+
+def test_positioning_presenter_asks_the_controller_options_and_keeps_them(qtbot, samples_dir,
+                                                                         tmp_path):
+    presenter, view = make(PositioningPresenter, PositioningView, qtbot)
+    load(presenter, samples_dir)
+    presenter.set_settings({**presenter.settings, "compensation_format": "fanuc",
+                            "compensation_tables": "bidirectional", "compensation_step": 30.0,
+                            "compensation_controller_options": "axis=4, modulo=360"})
+    presenter.refresh()
+    view.ask_controller_options.return_value = None  # cancelled: no file asked for
+    presenter.export_compensation_dialog()
+    controller, fields = view.ask_controller_options.call_args.args
+    assert controller == "FANUC"
+    values = {key: value for key, _, value in fields}
+    assert values["axis"] == "4" and values["modulo"] == "360"  # the set-up's text, read
+    assert values["detection_unit"] == "0.001" and values["reference_number"] == "-1"  # defaults
+    assert all(help_text for _, help_text, _ in fields)
+    view.ask_compensation_path.assert_not_called()
+    assert presenter.settings["compensation_controller_options"] == "axis=4, modulo=360"
+    view.ask_controller_options.return_value = {**values, "axis": " 2 ", "reference": ""}
+    out = tmp_path / "PITCH.TXT"
+    view.ask_compensation_path.return_value = str(out)
+    presenter.export_compensation_dialog()
+    assert view.ask_compensation_path.call_args.args == ("PITCH.TXT", "fanuc")
+    kept = presenter.settings["compensation_controller_options"]
+    assert kept.startswith("axis=2, detection_unit=0.001,") and "reference=" not in kept
+    assert out.is_file() and "FANUC" in view.show_status.call_args.args[0]
+    presenter.set_settings({**presenter.settings, "compensation_controller_options": "axis"})
+    view.ask_controller_options.reset_mock()
+    presenter.export_compensation_dialog()  # text that does not read: told, no form
+    view.ask_controller_options.assert_not_called()
+    title, text = view.tell.call_args.args
+    assert title == "Cannot export the compensation table" and "'axis' is not KEY=VALUE" in text
+
+
 @pytest.mark.parametrize("presenter_class, view_class", [
     (TheodolitePresenter, TheodoliteView), (PolygonPresenter, PolygonView),
-    (FringePresenter, FringeView)])
+    (FringePresenter, FringeView), (PositioningPresenter, PositioningView)])
 def test_unreadable_readings_clear_the_view(qtbot, presenter_class, view_class):
     presenter, view = make(presenter_class, view_class, qtbot)
     presenter.table_model.replace_all([["x"] * len(presenter.kind.columns)] * 3)

@@ -7,9 +7,9 @@ from __future__ import annotations
 import pytest
 from PySide6.QtWidgets import QApplication
 
-pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+from models.registry import KINDS
 
-KINDS = ("theodolite", "polygon", "fringe", "positioning")
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
 
 def _rows_visible(table) -> float:

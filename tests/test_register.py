@@ -304,3 +304,28 @@ def test_tests_never_reach_the_users_own_register(monkeypatch):
     for url in (default_register_url(), register_url()):
         assert not url.startswith(f"sqlite:///{USER_HOME.resolve()}/"), url
         assert url.startswith(f"sqlite:///{TEST_HOME.resolve()}/"), url
+
+
+def test_a_record_with_a_schema_1_project_keeps_its_chain_and_opens_migrated(register):
+    """#32: a record issued before the figures had their unit holds a schema-1 project; the
+    register never rewrites it (its hash chain holds), and it opens with each figure in the
+    unit of its workbench's errors."""
+    import json
+
+    from models.project.file import project_from_json
+
+    old = json.dumps({"format": "anglebench-project", "schema_version": 1, "metadata": {
+        "certificates": {"positioning": {"tolerance_arcsec": 15, "standards": [
+            {"description": "laser", "uncertainty_arcsec": 0.5}]}}},
+        "workbenches": {"positioning": {"rows": [], "settings": {"target_unit": "mm",
+                                                                 "deviation_unit": "um"}}}})
+    record, _ = register.issue(IssueRequest("polygon", META, old, {}), render)
+    assert register.audit(pdfs=True) == []
+    stored = register.get(record.number).project_json
+    assert '"tolerance_arcsec": 15' in stored  # kept as it was issued
+    details = project_from_json(stored).metadata["certificates"]
+    assert details["positioning"]["tolerance"] == 15
+    assert details["positioning"]["tolerance_unit"] == "um"
+    assert details["positioning"]["standards"][0]["uncertainty_unit"] == "um"
+    # the issuing workbench's own details were written by this version: read as they are
+    assert CertificateMetadata.from_dict(details["polygon"]).tolerance_unit == "arcsec"

@@ -74,9 +74,9 @@ def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_pat
     dialog.buttons["amend"].click()
     assert window.current.kind.key == "polygon" and window.current.result is not None
     # the technician exports: the details come back from the record, the change is asked
-    window.edit_certificate_details = lambda meta, problems, raw: meta
-    window.ask_change_note = lambda revision: "reference standard's certificate number"
-    window.choose_save_path = lambda *a: str(tmp_path / "amended.pdf")
+    window.certificates.view.edit_certificate_details = lambda meta, problems, raw: meta
+    window.certificates.view.ask_change_note = lambda revision: "reference standard's certificate number"
+    window.certificates.view.choose_save_path = lambda *a: str(tmp_path / "amended.pdf")
     assert window.export_certificate()
     with window.certificates.open_register() as register:
         assert register.get("AB-2026-0001-A1").supersedes == "AB-2026-0001"

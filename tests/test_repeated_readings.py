@@ -27,7 +27,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 
 META = CertificateMetadata.from_dict({"standards": [
-    {"description": "Reference AC", "uncertainty_arcsec": 0.4}]})
+    {"description": "Reference AC", "uncertainty": 0.4}]})
 TYPE_A = "Repeated readings (s/√n)"
 
 
@@ -119,7 +119,7 @@ def test_n_identical_readings_give_the_single_reading_result_exactly(key, sample
     result = _analyse(kind, tripled, readings_per_point=3)
     assert json.dumps(kind.to_json(result)) == single
     budget = kind.certificate_document(result, META).budget
-    assert np.all(np.asarray(_component(budget, TYPE_A).value_arcsec) == 0.0)
+    assert np.all(np.asarray(_component(budget, TYPE_A).value) == 0.0)
 
 
 def test_theodolite_noisy_repeats_average_and_their_type_a_input(samples_dir):
@@ -147,17 +147,17 @@ def test_theodolite_noisy_repeats_average_and_their_type_a_input(samples_dir):
     point = _component(budget, TYPE_A)
     expected = s_mean.copy()
     expected[ref] = 0.0
-    np.testing.assert_allclose(point.value_arcsec, expected, atol=2e-5)
+    np.testing.assert_allclose(point.value, expected, atol=2e-5)
     assert point.dof == n - 1 and point.evaluation == "A" and point.divisor == 1.0
     shared = _component(budget, "Repeated readings at θ₀ (s/√n)")
-    assert shared.value_arcsec == pytest.approx(s_mean[ref], abs=2e-5) and shared.dof == n - 1
+    assert shared.value == pytest.approx(s_mean[ref], abs=2e-5) and shared.dof == n - 1
     # the s of the means scatter about σ/√n (41 points × 3 degrees of freedom)
     assert math.sqrt(np.mean(s_mean**2)) == pytest.approx(sigma / math.sqrt(n), rel=0.3)
     # u_c at a point holds the Type A input with the others
     others = [c for c in budget.components if c.name != TYPE_A]
     k = 5 if ref != 5 else 6
     without = math.sqrt(sum(float(c.contribution(budget.points)[k]) ** 2 for c in others))
-    assert budget.combined_arcsec[k] == pytest.approx(math.hypot(without, s_mean[k]), rel=1e-9)
+    assert budget.combined[k] == pytest.approx(math.hypot(without, s_mean[k]), rel=1e-9)
 
 
 def test_positioning_noisy_repeats_per_approach(samples_dir):
@@ -179,7 +179,7 @@ def test_positioning_noisy_repeats_per_approach(samples_dir):
             expected.append(math.sqrt(np.sum(s_mean[here] ** 2)) / np.sum(here))
     budget = kind.certificate_document(result, META).budget
     component = _component(budget, TYPE_A)
-    np.testing.assert_allclose(component.value_arcsec, expected, atol=1e-8)
+    np.testing.assert_allclose(component.value, expected, atol=1e-8)
     assert component.dof == n - 1
     assert _component(budget, "Repeatability of the mean (s/√n)").dof == \
         _component(kind.certificate_document(_analyse(kind, rows), META).budget,
@@ -208,13 +208,13 @@ def test_polygon_noisy_repeats_per_face(samples_dir):
     per_set = np.array(per_set)
     budget = kind.certificate_document(result, META).budget
     component = _component(budget, TYPE_A)
-    np.testing.assert_allclose(component.value_arcsec,
+    np.testing.assert_allclose(component.value,
                                np.sqrt(np.sum(per_set**2, axis=0)) / len(per_set), atol=2e-5)
     assert component.dof == n - 1
     single = _analyse(kind, rows)
     assert result.closure_rows == {r for c in single.closure_rows for r in (2 * c, 2 * c + 1)}
     zero = _component(budget, "Repeated readings at the zero face (s/√n)")
-    assert zero.value_arcsec == pytest.approx(per_set[0, result.zero_face - 1], abs=2e-5)
+    assert zero.value == pytest.approx(per_set[0, result.zero_face - 1], abs=2e-5)
 
 
 # -- the command line, the project file and the window ----------------------------------------

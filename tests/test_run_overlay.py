@@ -79,7 +79,7 @@ def test_a_readings_file_is_overlaid_labelled_in_unit_and_removable(window, qtbo
     presenter.set_angle_unit(ANGLE_UNITS["urad"])
     np.testing.assert_allclose(overlay.curve.getData()[1],
                                expected_y * ANGLE_UNITS["urad"].per_arcsec, atol=1e-8)
-    window.remove_overlay_action.trigger()
+    window.menus.remove_overlay_action.trigger()
     assert overlay.curve not in plot.listDataItems()
     assert presenter.view.error_plot.corrected_legend.getLabel(overlay.curve) is None
     assert len(overlay.curve.getData()[0] if overlay.curve.getData()[0] is not None else []) == 0

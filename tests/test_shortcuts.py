@@ -69,14 +69,14 @@ def test_no_key_sequence_is_bound_twice(platform, monkeypatch, qtbot, tmp_path):
     qtbot.addWidget(window)
     mine = [a for a in window.findChildren(QAction) if a.shortcuts()
             and not any(p.view.table is a.parent() for p in window.presenters)]
-    redo = [k.toString() for k in window.redo_action.shortcuts()]
+    redo = [k.toString() for k in window.menus.redo_action.shortcuts()]
     assert "Ctrl+Shift+Z" in redo and "Ctrl+Y" in redo  # the keys the quick guide names
     for presenter in window.presenters:  # the table's keys act where the table has focus
         table_actions = [a for a in presenter.view.table.actions() if a.shortcuts()]
         assert all(a.shortcutContext() == Qt.ShortcutContext.WidgetWithChildrenShortcut
                    for a in table_actions)
         assert not _clashes(mine + table_actions), _clashes(mine + table_actions)
-    window.recovery.discard()
+    window.projects.recovery.discard()
 
 
 def test_the_platforms_own_bindings_are_expanded_once():

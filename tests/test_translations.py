@@ -171,7 +171,7 @@ def test_every_text_of_the_window_is_translated(chinese, qtbot):
         for tab in range(presenter.view.plot_tabs.count()):
             presenter.view.plot_tabs.setCurrentIndex(tab)
     window.show_register()
-    dialog = CertificateDialog(window.certificate_metadata("polygon"), window)
+    dialog = CertificateDialog(window.certificates.details("polygon"), window)
     mapping = ColumnMappingDialog(window.presenter("theodolite").kind.columns,
                                   ["a", "b", "c"], [["1", "2", "3"]], "", window)
     texts = window_texts(window, [window.register_window, dialog, mapping])
@@ -189,7 +189,7 @@ def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
     theodolite.table_model.set_cells([(0, 1, "-19°52'58.0\"")])
     rows, undo = theodolite.state().rows, theodolite.undo_stack.count()
     before = theodolite.view.error_plot.corrected_curve.getData()[1].copy()
-    chinese = next(a for a in window.language_actions.actions() if a.data() == "zh_CN")
+    chinese = next(a for a in window.menus.language_actions.actions() if a.data() == "zh_CN")
     chinese.trigger()
     assert window.qsettings.value("ui/language") == "zh_CN" and chinese.isChecked()
     assert window.menuBar().actions()[0].text() == "文件(&F)"
@@ -201,7 +201,7 @@ def test_the_language_changes_at_once_and_the_work_stays(window, qtbot):
     assert (theodolite.view.error_plot.corrected_curve.getData()[1] == before).all()
     theodolite.undo_stack.undo()  # the history survived the change of language
     assert theodolite.state().rows != rows
-    next(a for a in window.language_actions.actions() if a.data() == "en").trigger()
+    next(a for a in window.menus.language_actions.actions() if a.data() == "en").trigger()
     assert window.menuBar().actions()[0].text() == "&File"
     assert theodolite.view.error_plot.main_plot.getAxis("left").labelText == "raw error (\")"
 
@@ -399,7 +399,7 @@ def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, sa
         assert english_words(caption) == set(), caption
         asked = []
         window.ask = lambda title, text, *a: asked.append(text)
-        window.confirm_draft(window.certificate_metadata("polygon").missing_fields())
+        window.certificates.view.confirm_draft(window.certificates.details("polygon").missing_fields())
         assert "计量标准" in asked[0] and english_words(asked[0]) == set(), asked[0]
         printed = []
         monkeypatch.setattr(widgets.print_view, "print_workbench",
@@ -411,7 +411,7 @@ def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, sa
         for axis in (polygon.error_plot.residual_plot.getAxis("bottom"),
                      polygon.tilt_plot.plot.getAxis("bottom")):
             assert "(°)" in axis.labelText and "deg" not in axis.labelText, axis.labelText
-        meta = window.certificate_metadata("polygon")
+        meta = window.certificates.details("polygon")
         assert meta.language == "zh"
         window.tabs.setCurrentIndex(1)
         presenter = window.current
@@ -423,4 +423,4 @@ def test_no_english_left_where_a_technician_looks_31(window, qtbot, tmp_path, sa
         assert re.search("[\u4e00-\u9fff]", title) and english_words(title) == set(), title
     finally:
         window.set_language("en")
-    assert window.certificate_metadata("theodolite").language == "en"
+    assert window.certificates.details("theodolite").language == "en"

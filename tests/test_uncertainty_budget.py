@@ -36,13 +36,13 @@ def test_budget_hand_figures():
         BudgetComponent("noise", "A", "normal", np.array([0.0, 0.4]), 1.0, 1.0, 9),
     ), points=2)
     # point 1: (0.3·√2)² + 0.3² = 0.27; point 2: + 0.16
-    assert budget.combined_arcsec == pytest.approx([math.sqrt(0.27), math.sqrt(0.43)])
+    assert budget.combined == pytest.approx([math.sqrt(0.27), math.sqrt(0.43)])
     assert budget.worst_index == 1
     # Welch–Satterthwaite: 0.43² / (0.4⁴ / 9) = 65.0; k from Student's t for 95.45 %
     nu = 0.43**2 / (0.4**4 / 9)
     assert budget.effective_dof() == pytest.approx(nu)
     assert budget.coverage_factor == pytest.approx(2.039, abs=1e-3)  # scipy.stats.t.ppf
-    assert budget.expanded_arcsec[1] == pytest.approx(budget.coverage_factor * math.sqrt(0.43))
+    assert budget.expanded[1] == pytest.approx(budget.coverage_factor * math.sqrt(0.43))
     assert budget.coverage_factors[0] == pytest.approx(2.0, abs=1e-9)  # ν_eff = ∞: k = 2
     rows = budget.table()
     assert [r["name"] for r in rows] == ["std", "mpe", "noise"]
@@ -80,7 +80,7 @@ def test_budget_agrees_with_gtc(inputs):
                        for i, (u, c, nu) in enumerate(inputs))
     ours = UncertaintyBudget(components, 1)
     y = sum(c * GTC.ureal(1.0, u, nu) for u, c, nu in inputs)
-    assert ours.combined_arcsec[0] == pytest.approx(GTC.uncertainty(y), rel=1e-9)
+    assert ours.combined[0] == pytest.approx(GTC.uncertainty(y), rel=1e-9)
     nu_gtc = GTC.dof(y)
     if math.isinf(nu_gtc):
         assert math.isinf(ours.effective_dof())
@@ -91,9 +91,9 @@ def test_budget_agrees_with_gtc(inputs):
 def test_metadata_round_trip_and_errors():
     meta = CertificateMetadata.from_dict({
         "certificate_number": "AB-2026-0007", "customer_name": "北京精密机械 & Co <b>",
-        "standards": [{"description": "Polygon 24", "uncertainty_arcsec": "0,25", "basis": "U95"}],
+        "standards": [{"description": "Polygon 24", "uncertainty": "0,25", "basis": "U95"}],
         "temperature_c": 20.1, "calibration_date": "2026-11-24", "unknown": 1})
-    assert meta.standards[0].uncertainty_arcsec == 0.25
+    assert meta.standards[0].uncertainty == 0.25
     assert CertificateMetadata.from_dict(meta.to_dict()) == meta
     assert "customer" not in meta.missing_fields() and "operator" in meta.missing_fields()
     with pytest.raises(MetadataError, match="calibration_date"):
@@ -147,7 +147,7 @@ def test_decision_rules_on_every_point(x, rule, verdict):
     c = decide_conformity(errors, _flat_budget(3, 0.3), 1.0, rule, "points")
     assert c.verdict == verdict
     assert "ILAC-G8:09/2019, 4.2." in c.rule
-    assert c.value_arcsec == pytest.approx(x) and c.expanded_arcsec == pytest.approx(0.3)
+    assert c.value == pytest.approx(x) and c.expanded == pytest.approx(0.3)
     assert "the deciding point is point 2:" in c.statement
 
 
@@ -174,11 +174,11 @@ def test_half_range_is_debiased_by_monte_carlo():
     mc = c.monte_carlo
     assert mc.measured == pytest.approx(0.5 * np.ptp(noisy))
     assert mc.measured > 0.9  # what the old certificate judged
-    assert c.value_arcsec < 0.3  # noise explains nearly all of it
-    assert c.expanded_arcsec < 1.8  # wide: near zero the noise hides how small the curve is
+    assert c.value < 0.3  # noise explains nearly all of it
+    assert c.expanded < 1.8  # wide: near zero the noise hides how small the curve is
     assert c.verdict == "pass"  # a perfect axis against ±2" is no longer "no statement"
     again = decide_conformity(noisy, budget, 2.0, "guarded", "half_range")
-    assert again.value_arcsec == c.value_arcsec  # seeded: the same certificate every time
+    assert again.value == c.value  # seeded: the same certificate every time
 
 
 @pytest.mark.slow

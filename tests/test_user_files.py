@@ -17,7 +17,7 @@ def _inside_test_home(path: str | Path) -> bool:
 
 
 def test_every_place_the_app_keeps_files_is_the_tests_own():
-    from app.main_window import default_recovery_store
+    from app.project_presenter import default_recovery_store
     from models.register.location import default_register_url
 
     assert _inside_test_home(Path.home()) and not _inside_test_home(USER_HOME)
@@ -44,7 +44,7 @@ def test_a_window_with_every_default_writes_only_in_the_tests_home(qtbot, monkey
     window.load_all_samples()
     theodolite = window.presenter("theodolite")
     theodolite.table_model.set_cells([(0, 1, "-19.9")], "typed")
-    window.autosave()
+    window.projects.autosave()
     window.show_register()  # opens (makes) the default register
     written = [p for p in TEST_HOME.rglob("*") if p.is_file()]
     assert any("AngleBench" in str(p) for p in written)

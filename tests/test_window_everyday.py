@@ -11,7 +11,7 @@ from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from app.main_window import with_chosen_suffix
+from app.certificate_dialogs import with_chosen_suffix
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
@@ -293,7 +293,7 @@ def test_print_puts_the_result_and_plot_on_a_page(window, tmp_path):
     text = " ".join(reader.pages[0].extract_text().split())
     assert len(reader.pages) == 1 and "Grade 3" in text and "Polygon encoder test" in text
     assert reader.pages[0].images  # the plot
-    assert window.print_action.shortcut().toString() == "Ctrl+P"
+    assert window.menus.print_action.shortcut().toString() == "Ctrl+P"
 
 
 def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path):
@@ -309,7 +309,7 @@ def test_results_are_read_in_the_unit_chosen_once(window, monkeypatch, tmp_path)
     monkeypatch.setattr(QFileDialog, "getSaveFileName",
                         lambda *a, **k: (str(tmp_path / "arcsec.csv"), "CSV (*.csv)"))
     assert window.export_results()
-    urad = next(a for a in window.angle_unit_actions.actions() if a.data() == "urad")
+    urad = next(a for a in window.menus.angle_unit_actions.actions() if a.data() == "urad")
     urad.trigger()
     assert urad.isChecked()
     np.testing.assert_allclose(plot.corrected_curve.getData()[1], before * 4.8481368, rtol=1e-7)

@@ -40,6 +40,7 @@ from models.certificate.metadata import (
     CertificateMetadata,
     MetadataError,
 )
+from models.quantity import UNITS
 from widgets.i18n import declared, tr
 from widgets.screen_fit import fit_to_screen
 
@@ -51,7 +52,7 @@ _TEXT_FIELDS = {
     "certificate_number": QT_TR_NOOP("Certificate number"),
     "issue_date": QT_TR_NOOP("Date of issue (YYYY-MM-DD)"),
     "calibration_date": QT_TR_NOOP("Date of calibration"),
-    "tolerance_arcsec": QT_TR_NOOP("Tolerance ± (\")"),
+    "tolerance": QT_TR_NOOP("Tolerance ±"),
     "lab_name": QT_TR_NOOP("Laboratory"), "lab_address": QT_TR_NOOP("Address"),
     "lab_accreditation": QT_TR_NOOP("Accreditation"), "number_scheme": QT_TR_NOOP("Number scheme"),
     "customer_name": QT_TR_NOOP("Customer"), "customer_address": QT_TR_NOOP("Address"),
@@ -59,7 +60,7 @@ _TEXT_FIELDS = {
     "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
     "item_model": QT_TR_NOOP("Model / type"),
     "calibration_site": QT_TR_NOOP("Customer's site (where)"),
-    "item_resolution_arcsec": QT_TR_NOOP("Resolution (\")"),
+    "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
     "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
     "approver": QT_TR_NOOP("Approved by"),
@@ -80,11 +81,14 @@ _CHOICES = {
         "half_range": QT_TR_NOOP("Half the peak-to-peak (Monte Carlo U)"),
         "points": QT_TR_NOOP("Every point with its own U")}),
 }
-_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty_arcsec", "basis",
-                     "applies_to")
+# a figure typed with its unit, chosen beside it: field -> the key of its unit
+_UNIT_OF = {"tolerance": "tolerance_unit", "item_resolution": "item_resolution_unit"}
+_STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
+                     "applies_to", "uncertainty_unit")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
-                     QT_TR_NOOP("Uncertainty (\")"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
-                     QT_TR_NOOP("Per (reading, from face 1)"))
+                     QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
+                     QT_TR_NOOP("Per (reading, from face 1)"),
+                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -128,14 +132,31 @@ class CertificateDialog(QDialog):
                                    "scheme, unique across every workstation sharing it. A number "
                                    "typed here is refused if it was issued before."))
                 form.addRow(tr(_TEXT_FIELDS[key]), edit)
+            elif key in _UNIT_OF:  # the number, and its unit beside it
+                row = QHBoxLayout()
+                row.addWidget(self._line(key), 1)
+                row.addWidget(self._unit_box(_UNIT_OF[key]))
+                form.addRow(tr(_TEXT_FIELDS[key]), row)
             else:
                 form.addRow(tr(_TEXT_FIELDS[key]), self._line(key))
         return box
 
+    def _unit_box(self, key: str) -> QComboBox:
+        """A unit of models.quantity to choose (the errors' own, or one of their kind)."""
+        box = QComboBox()
+        box.setObjectName(key)
+        for unit_key, unit in UNITS.items():
+            box.addItem(unit.symbol, unit_key)
+        box.setToolTip(tr("The unit of the figure beside it: converted to the unit of the "
+                          "errors (an angle cannot be judged against a length)"))
+        self.choices[key] = box
+        return box
+
     def _setup_ui(self) -> None:
         grid = QGridLayout()
+        self.choices: dict[str, QComboBox] = {}
         cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
-                                           "tolerance_arcsec", "coverage_probability_pct",
+                                           "tolerance", "coverage_probability_pct",
                                            "as_left_table_sha256", "calibration_site"))
         self.fields["issue_date"].setToolTip(tr(
             "A draft prints this date; an issued certificate is dated the day the register "
@@ -143,7 +164,6 @@ class CertificateDialog(QDialog):
         self.fields["as_left_table_sha256"].setToolTip(tr(
             "Fringe: the checksum of the correction table loaded into the encoder (printed in "
             "the exported table); the compensated error is then stated as left"))
-        self.choices: dict[str, QComboBox] = {}
         for key, (label, options) in _CHOICES.items():
             box = QComboBox()
             box.setObjectName(key)
@@ -161,7 +181,7 @@ class CertificateDialog(QDialog):
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
             "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
-            "item_resolution_arcsec")), 1, 1)
+            "item_resolution")), 1, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
             "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
         notes_box = QGroupBox(tr("Remarks printed on the certificate"))
@@ -253,6 +273,8 @@ class CertificateDialog(QDialog):
                 text = "U95"
             if key == "applies_to" and not text:
                 text = "reading"
+            if key == "uncertainty_unit" and not text:
+                text = "arcsec"
             self.standards.setItem(row, col, QTableWidgetItem(text))
 
     def _remove_standard(self) -> None:
@@ -271,7 +293,8 @@ class CertificateDialog(QDialog):
             entry = {key: (self.standards.item(row, col).text()
                            if self.standards.item(row, col) else "")
                      for col, key in enumerate(_STANDARD_COLUMNS)}
-            if any(v.strip() for k, v in entry.items() if k not in ("basis", "applies_to")):
+            if any(v.strip() for k, v in entry.items()
+                   if k not in ("basis", "applies_to", "uncertainty_unit")):
                 standards.append(entry)
         data["standards"] = standards
         return data

@@ -17,7 +17,7 @@ from models.display_units import (
     AngleUnit,
     figure_in_unit,
     figures_in_unit,
-    text_in_unit,
+    in_unit,
 )
 from models.messages import reason_of
 from models.project.file import WorkbenchState
@@ -243,7 +243,9 @@ class WorkbenchPresenter(QObject):
                      for f in figures)
 
     def in_unit_text(self, text: str) -> str:
-        return text_in_unit(text, self.angle_unit)
+        """A model's text in the chosen unit (converted from its figures), then in the
+        window's language."""
+        return translated(in_unit(text, self.angle_unit))
 
     # -- state ------------------------------------------------------------
     @property
@@ -458,7 +460,7 @@ class WorkbenchPresenter(QObject):
         self.view.set_next_row(tr("next: row {row}").format(row=self.sheet.row_count + 1))
         if result is None:
             self.clear_result()
-            error = self.in_unit_text(translated(error))
+            error = self.in_unit_text(error)
             no_result = tr("No result: {reason}").format(reason=error) if error else ""
             self.view.set_summary(no_result or tr("No readings yet."))
             self.view.set_verdict(no_result)
@@ -466,7 +468,7 @@ class WorkbenchPresenter(QObject):
             self.view.set_warnings(input_warnings)
         else:
             def unit_text(text: str) -> str:  # in the window's language, then its unit
-                return self.in_unit_text(translated(text))
+                return self.in_unit_text(text)
 
             self.view.set_summary(unit_text(self.kind.summary(result)))
             self.view.set_verdict(unit_text(self.kind.verdict(result))

@@ -13,6 +13,7 @@ queued stay queued whatever happens.
 from __future__ import annotations
 
 import contextlib
+import datetime as dt
 import queue
 import threading
 import time
@@ -37,6 +38,8 @@ class Reading:
     unit: str
     #: the instrument's line as it sent it
     raw: bytes
+    #: its index in the worker's :attr:`CaptureWorker.raw`
+    frame: int = -1
 
 
 @dataclass(frozen=True)
@@ -68,9 +71,12 @@ class CaptureWorker:
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"capture {port}", daemon=True)
         self._t0 = time.monotonic()
+        #: when the worker started (UTC, ISO 8601): the raw frames' times count from it
+        self.started_utc = ""
 
     def start(self) -> CaptureWorker:
         self._t0 = time.monotonic()
+        self.started_utc = dt.datetime.now(dt.timezone.utc).isoformat()
         self._thread.start()
         return self
 
@@ -78,6 +84,11 @@ class CaptureWorker:
         self._stop.set()
         if self._thread.is_alive():
             self._thread.join(wait_s)
+
+    @property
+    def t0(self) -> float:
+        """``time.monotonic()`` at the start: the readings' and raw frames' times count from it."""
+        return self._t0
 
     @property
     def running(self) -> bool:
@@ -164,7 +175,8 @@ class CaptureWorker:
                         continue
                     got += 1
                     last_good = now
-                    self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line))
+                    self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line,
+                                            len(self.raw) - 1))
                 if now - last_good > self.silence_s:
                     seconds = f"{self.silence_s:g}"
                     if not heard_bytes:

@@ -31,6 +31,7 @@ from models.certificate.document import CertificateDocument, PlotFigure, Table, 
 from models.certificate.metadata import PLACES
 from models.messages import QT_TR_NOOP, Message, in_language, joined, message, translator
 from models.project.atomic_write import write_bytes_atomic
+from models.quantity import Quantity
 from models.software import software_identity
 from models.uncertainty.budget import BASIS_DIVISORS
 from models.uncertainty.conformity import uncertainty_decimals
@@ -113,6 +114,7 @@ CHINESE = {
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
     "Model": "型号", "Place of calibration": "校准地点",
+    "Instrument output": "仪器原始输出",
 }
 
 
@@ -596,8 +598,8 @@ def _tick(value: float, ticks: list[float]) -> str:
 def _standards_table(document: CertificateDocument) -> Table:
     rows = []
     for s in document.metadata.standards:
-        u = "—" if s.uncertainty_arcsec is None else message(
-            "{u} ({basis})", u=f"{s.uncertainty_arcsec:g}\"",
+        u = "—" if s.uncertainty is None else message(
+            "{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
             basis=message(BASIS_DIVISORS[s.basis][0]))
         rows.append((s.description or "—", s.serial or "—", s.certificate_no or "—", u))
     if not rows:
@@ -644,12 +646,14 @@ def _render(document: CertificateDocument) -> FPDF:
         (label(document, "Serial number", "\n"), meta.item_serial),
         (label(document, "Grade / specification", "\n"), joined(_between("; ", [
             meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
-                                     tolerance=f"{document.tolerance_arcsec:g}{document.unit}")
-            if document.tolerance_arcsec else ""]))),
+                                     tolerance=f"{document.tolerance:g}{document.unit}")
+            if document.tolerance else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
         (label(document, "Place of calibration", "\n"), _place(meta)),
         (label(document, "Environment", "\n"), _environment(meta)),
         (label(document, "Readings", "\n"), document.source_name),
+        *([(label(document, "Instrument output", "\n"),
+            f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
     ])
     pdf.heading(label(document, "Reference standards and traceability"))
     pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
@@ -685,7 +689,7 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.heading(label(document, document.statistics.title))
     pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
     pdf.heading(label(document, "Measurement uncertainty"))
-    big_u = document.expanded_uncertainty_arcsec
+    big_u = document.expanded_uncertainty
     budget_ = document.budget
     pdf.paragraph(message(QT_TR_NOOP(
         "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
@@ -771,12 +775,12 @@ def _traceability(document: CertificateDocument) -> str:
     none (document.untraceable) leaves the result untraceable, with no conformity on it."""
     standards = document.metadata.standards
     stated = document.stated_inputs
-    listed = [s for s in standards if s.certificate_no and (s.uncertainty_arcsec is not None
+    listed = [s for s in standards if s.certificate_no and (s.uncertainty is not None
                                                              or stated)]
     names = joined(_between("; ", (
         message(QT_TR_NOOP("{standard} (certificate {certificate})"),
                 standard=s.description or message(QT_TR_NOOP("standard")),
-                certificate=s.certificate_no) if s.uncertainty_arcsec is not None else
+                certificate=s.certificate_no) if s.uncertainty is not None else
         message(QT_TR_NOOP("{standard} (certificate {certificate}; its figures enter as the "
                            "inputs stated in the settings: {inputs})"),
                 standard=s.description or message(QT_TR_NOOP("standard")),
@@ -800,7 +804,7 @@ def _traceability(document: CertificateDocument) -> str:
                                     "listed, calibrated as stated in their certificates: "
                                     "{names}."), names=names)]
     for s in standards:
-        if s.uncertainty_arcsec is None and not (stated and s.certificate_no):
+        if s.uncertainty is None and not (stated and s.certificate_no):
             parts += [" ", message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
                                               "input of the budget and the results are not "
                                               "traceable through it."),

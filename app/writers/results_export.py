@@ -29,6 +29,7 @@ import numpy as np
 from models.certificate.document import CertificateDocument, budget_table
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
 from models.project.atomic_write import write_bytes_atomic
+from models.quantity import UNITS
 
 __all__ = ["XLSX_MAX_ROWS", "neutralise", "split_figures", "write_results_csv", "write_results_xlsx"]
 
@@ -160,6 +161,7 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
 
 def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
     meta = document.metadata
+    q = document.budget.unit.symbol  # the unit of the errors, the budget and the tolerance
     rows: list[tuple[str, object]] = [
         ("Certificate number", meta.certificate_number), ("Test", document.kind_title),
         ("Readings", document.source_name), ("Laboratory", meta.lab_name),
@@ -169,13 +171,13 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
         ("Sign convention", document.sign_convention),
-        ("Expanded uncertainty U, largest (\")", document.expanded_uncertainty_arcsec),
+        (f"Expanded uncertainty U, largest ({q})", document.expanded_uncertainty),
         ("Coverage factor k there", document.budget.coverage_factor),
         ("Coverage probability (%)", 100.0 * document.budget.probability),
-        ("Tolerance ± (\")", document.tolerance_arcsec),
+        (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
-        ("Decided value (\")", document.conformity.value_arcsec),
-        ("U of the decided value (\")", document.conformity.expanded_arcsec),
+        (f"Decided value ({q})", document.conformity.value),
+        (f"U of the decided value ({q})", document.conformity.expanded),
         ("Verdict", document.conformity.verdict),
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
@@ -186,7 +188,8 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
     for i, s in enumerate(meta.standards, 1):
         rows.append((f"Standard {i}", f"{s.description}; serial {s.serial}; certificate "
                                       f"{s.certificate_no}"))
-        rows.append((f"Standard {i} uncertainty (\")", s.uncertainty_arcsec))
+        rows.append((f"Standard {i} uncertainty ({UNITS[s.uncertainty_unit].symbol})",
+                     s.uncertainty))
     return rows
 
 

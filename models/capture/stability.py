@@ -49,6 +49,17 @@ class StabilityGate:
         values = np.array([v for _, v in self._frames])
         return values.max(axis=0) - values.min(axis=0)
 
+    def progress(self, time_s: float) -> tuple[str, float]:
+        """Where the gate stands at ``time_s`` (the last frame's time): ``("taken", 0)``
+        while it waits for the output to leave the position just taken, else
+        ``("settling", f)`` with f the part of the dwell the frames kept have covered
+        (0 to 1)."""
+        if self._taken is not None:
+            return "taken", 0.0
+        if not self._frames:
+            return "settling", 0.0
+        return "settling", min(1.0, max(0.0, (time_s - self._frames[0][0]) / self.dwell_s))
+
     def feed(self, time_s: float, values) -> StableReading | None:
         """One frame; the reading when this frame completes a stable dwell."""
         value = np.atleast_1d(np.asarray(values, dtype=float))

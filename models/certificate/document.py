@@ -16,6 +16,7 @@ import numpy as np
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure, PlotSeries
+from models.quantity import Quantity
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -57,7 +58,7 @@ class CertificateDocument:
     budget: UncertaintyBudget
     budget_point: str  # where the budget table is evaluated, e.g. "θ = 30°"
     conformity: Conformity
-    tolerance_arcsec: float | None
+    tolerance: float | None  # the tolerance in the unit of the errors (`unit`)
     plots: tuple[PlotFigure, ...]
     warnings: tuple[str, ...] = ()
     # every point's figures, for the CSV/XLSX export: (column header, values)
@@ -74,11 +75,13 @@ class CertificateDocument:
     # inputs of the budget stated in the analysis settings (a standard listed with its
     # certificate and no U in the table stands behind them: the ADC's figures, say)
     stated_inputs: tuple[str, ...] = ()
+    # SHA-256 of the instrument's raw frames behind the readings (models/capture/raw_record)
+    raw_data_sha256: str = ""
 
     @property
-    def expanded_uncertainty_arcsec(self) -> float:
+    def expanded_uncertainty(self) -> float:
         """The certificate's U: the largest over the curve's points."""
-        return self.budget.max_expanded_arcsec
+        return self.budget.max_expanded
 
     @property
     def title(self) -> str:
@@ -118,13 +121,13 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     for r in budget.table():
         dof = _dof_text(r["dof"])
         rows.append((r["name"], str(r["evaluation"]), r["distribution"],
-                     _fmt(r["value_arcsec"]), f"{r['divisor']:.3g}", _fmt(r["u_arcsec"]),
-                     f"{r['sensitivity']:.3g}", _fmt(r["contribution_arcsec"]),
+                     _fmt(r["value"]), f"{r['divisor']:.3g}", _fmt(r["u"]),
+                     f"{r['sensitivity']:.3g}", _fmt(r["contribution"]),
                      f"{100 * r['share']:.1f}", dof))
     i = budget.worst_index
     nu_text = _dof_text(budget.truncated_dof())
     raw = budget.effective_dof()
-    uc = float(budget.combined_arcsec[i]) if budget.points else float("nan")
+    uc = float(budget.combined[i]) if budget.points else float("nan")
     rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
     k = budget.coverage_factor
@@ -153,17 +156,19 @@ def opinion(text) -> str:
 
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
-                                  reading: str, sensitivity_from_first=None) -> list[BudgetComponent]:
+                                  reading: str, sensitivity_from_first=None,
+                                  unit: str = "arcsec") -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
     ``sensitivity`` per point (√2 where the error is the difference of two
     readings, 0 at the reference point); ``reading`` says what one reading is.
     ``sensitivity_from_first`` is used for a standard whose figure applies to
-    each face's deviation from face 1 (polygon), where the workbench has one.
+    each face's deviation from face 1 (polygon), where the workbench has one. Each
+    standard's figure is converted to ``unit``, the budget's.
     """
     out = []
     for std in metadata.standards:
-        if std.uncertainty_arcsec is None:
+        if std.uncertainty is None:
             continue
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or QT_TR_NOOP("Reference standard")
@@ -176,36 +181,38 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 if std.certificate_no else
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_arcsec, divisor, c, math.inf, note))
+            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note))
     return out
 
 
-def resolution_component(metadata: CertificateMetadata, sensitivity) -> list[BudgetComponent]:
-    """The item's indication resolution r: rectangular, half-width r/2, per reading."""
-    r = metadata.item_resolution_arcsec
+def resolution_component(metadata: CertificateMetadata, sensitivity,
+                         unit: str = "arcsec") -> list[BudgetComponent]:
+    """The item's indication resolution r: rectangular, half-width r/2, per reading, in
+    ``unit`` (the budget's)."""
+    r = metadata.item_resolution_in(unit)
     if not r:
         return []
     return [BudgetComponent(QT_TR_NOOP("Item resolution"), "B", "rectangular", r / 2.0,
                             math.sqrt(3.0), sensitivity, math.inf,
                             message(QT_TR_NOOP("resolution {r} of the item's indication"),
-                                    r=f"{r:g}\""))]
+                                    r=Quantity(r, unit)))]
 
 
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                   points: str, unit: str = "\"") -> list[tuple[str, str, str]]:
     """The statistics rows every certificate has: the decided quantity with its own U,
     and the curve's largest U with its coverage factor."""
-    big_u = budget.max_expanded_arcsec
+    big_u = budget.max_expanded
     digits = uncertainty_decimals(big_u)
     rows = []
-    if math.isfinite(conformity.value_arcsec):
+    if math.isfinite(conformity.value):
         lower = conformity.expanded_lower
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
-            d = significant_decimals(min(lower, conformity.expanded_arcsec)) or digits
-            value = (f"{conformity.value_arcsec:.{d}f}{unit}\n"  # a line each: never broken
-                     f"{asymmetric_text(lower, conformity.expanded_arcsec, unit, d)}")
+            d = significant_decimals(min(lower, conformity.expanded)) or digits
+            value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
+                     f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
         else:
-            value = format_uncertain(conformity.value_arcsec, conformity.expanded_arcsec, unit)
+            value = format_uncertain(conformity.value, conformity.expanded, unit)
         rows.append((QT_TR_NOOP("Decided quantity"), value, conformity.quantity))
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),

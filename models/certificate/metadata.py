@@ -8,6 +8,7 @@ characters are removed and lengths are capped so no field can break the page.
 
 from __future__ import annotations
 
+import contextlib
 import datetime as dt
 import math
 import re
@@ -15,6 +16,7 @@ from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
 from models.messages import QT_TR_NOOP, message
+from models.quantity import UNITS, Quantity, UnitError, unit
 from models.uncertainty.budget import BASIS_DIVISORS, DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.conformity import DECISION_QUANTITIES, DECISION_RULES
 
@@ -122,20 +124,36 @@ def _date(value: Any, field_name: str) -> str:
 class ReferenceStandard:
     """A reference standard used in the test, with its calibration certificate.
 
-    ``uncertainty_arcsec`` stated as ``basis`` (see BASIS_DIVISORS) enters the
-    budget as a Type B component for each reading made with it; leave it empty
-    for a standard whose uncertainty does not enter the result. ``applies_to``
-    says what the figure is the uncertainty of: each ``reading`` (the default),
-    or each face's deviation ``from face 1`` (a polygon certificate that states
-    its deviations from face 1, whose face 1 is then exact).
+    ``uncertainty`` (in ``uncertainty_unit``, converted to the unit of the errors)
+    stated as ``basis`` (see BASIS_DIVISORS) enters the budget as a Type B component
+    for each reading made with it; leave it empty for a standard whose uncertainty
+    does not enter the result. ``applies_to`` says what the figure is the
+    uncertainty of: each ``reading`` (the default), or each face's deviation ``from
+    face 1`` (a polygon certificate that states its deviations from face 1, whose face
+    1 is then exact).
     """
 
     description: str = ""
     serial: str = ""
     certificate_no: str = ""
-    uncertainty_arcsec: float | None = None
+    uncertainty: float | None = None
     basis: str = "U95"
     applies_to: str = "reading"
+    uncertainty_unit: str = "arcsec"  # a key of models.quantity.UNITS
+
+    def uncertainty_in(self, unit: str, name: str = "standards") -> float | None:
+        """The stated uncertainty as a number in ``unit`` (the errors'); MetadataError when
+        it is not a quantity of the same kind."""
+        if self.uncertainty is None:
+            return None
+        try:
+            return float(Quantity(self.uncertainty, self.uncertainty_unit).in_unit(unit))
+        except UnitError:
+            raise MetadataError(message(
+                QT_TR_NOOP("reference standard '{name}': its uncertainty is in {given}, but the "
+                           "errors are in {unit}: state it in a unit of the same kind"),
+                name=self.description or name, given=UNITS[self.uncertainty_unit].symbol,
+                unit=UNITS[unit].symbol)) from None
 
     @classmethod
     def from_dict(cls, data: Any, index: int) -> ReferenceStandard:
@@ -149,11 +167,23 @@ class ReferenceStandard:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field '{name}.basis' must be one of {join}, not '{basis}'"),
                 name=name, join=', '.join(BASIS_DIVISORS), basis=basis))
-        u = _optional_number(data.get("uncertainty_arcsec"), f"{name}.uncertainty_arcsec")
-        if u is not None and not 0 <= u <= 3600:
+        # "uncertainty_arcsec": written before the figure had its unit (arcseconds, or the
+        # unit of the workbench's errors: a project file's migration says which)
+        u = _optional_number(data.get("uncertainty", data.get("uncertainty_arcsec")),
+                             f"{name}.uncertainty")
+        unit_key = clean_text(data.get("uncertainty_unit", "arcsec"),
+                              f"{name}.uncertainty_unit") or "arcsec"
+        with contextlib.suppress(UnitError):  # a symbol typed in the table ("µrad", '"')
+            unit_key = unit(unit_key).key
+        if unit_key not in UNITS:
             raise MetadataError(message(
-                QT_TR_NOOP("certificate field '{name}.uncertainty_arcsec' must be 0 to 3600\" (an angle "
-                           "standard's uncertainty)"),
+                QT_TR_NOOP("certificate field '{key}' must be one of {join}, not '{unit}'"),
+                key=f"{name}.uncertainty_unit", join=', '.join(UNITS), unit=unit_key))
+        if u is not None and not 0 <= Quantity(u, unit_key).to(
+                "arcsec" if UNITS[unit_key].dimension == "angle" else "um").value <= 3600:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{name}.uncertainty' must be 0 to 3600\" (or 0 to "
+                           "3600 µm)"),
                 name=name))
         applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
         if applies_to not in APPLIES_TO:
@@ -164,7 +194,11 @@ class ReferenceStandard:
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
                    clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
-                   applies_to)
+                   applies_to, unit_key)
+
+
+#: keys written before their figures had a unit (project schema 1) → the keys now
+_UNITLESS_KEYS = {"tolerance_arcsec": "tolerance", "item_resolution_arcsec": "item_resolution"}
 
 
 @dataclass(frozen=True)
@@ -181,8 +215,10 @@ class CertificateMetadata:
     item_serial: str = ""
     item_model: str = ""  # the item's model / type designation
     item_grade: str = ""
-    tolerance_arcsec: float | None = None  # ± limit for the conformity statement
-    item_resolution_arcsec: float | None = None
+    tolerance: float | None = None  # ± limit for the conformity statement, in tolerance_unit
+    tolerance_unit: str = "arcsec"  # a key of models.quantity.UNITS
+    item_resolution: float | None = None  # the item's indication resolution, in its unit
+    item_resolution_unit: str = "arcsec"  # a key of models.quantity.UNITS
     standards: tuple[ReferenceStandard, ...] = ()
     calibration_place: str = "laboratory"  # see PLACES
     calibration_site: str = ""  # the customer's site: where
@@ -209,7 +245,7 @@ class CertificateMetadata:
     # the user's register (the command line issues them into a register of their own)
     example: bool = False
 
-    _NUMBERS = ("tolerance_arcsec", "item_resolution_arcsec", "temperature_c", "humidity_pct",
+    _NUMBERS = ("tolerance", "item_resolution", "temperature_c", "humidity_pct",
                 "coverage_probability_pct")
     _DATES = ("calibration_date", "issue_date")
 
@@ -221,6 +257,12 @@ class CertificateMetadata:
         if not isinstance(data, dict):
             raise MetadataError(message(
                 QT_TR_NOOP("certificate metadata must be a JSON object")))
+        for old, new in _UNITLESS_KEYS.items():
+            if old in data and new not in data:
+                # details written before these figures had their unit (project schema 1, a
+                # JSON file of the command line): arcseconds, as the key says; a project
+                # file's migration states the unit of each workbench's errors instead
+                data = {**data, new: data[old]}
         values: dict[str, Any] = {}
         for f in fields(cls):
             if f.name.startswith("_") or f.name not in data:
@@ -263,15 +305,24 @@ class CertificateMetadata:
                 QT_TR_NOOP("certificate field 'decision_rule' must be one of {join}, not "
                            "'{decision_rule}'"),
                 join=', '.join(DECISION_RULES), decision_rule=meta.decision_rule))
-        if meta.tolerance_arcsec is not None and meta.tolerance_arcsec <= 0:
+        if meta.tolerance is not None and meta.tolerance <= 0:
             raise MetadataError(message(
-                QT_TR_NOOP("certificate field 'tolerance_arcsec' must be positive")))
+                QT_TR_NOOP("certificate field 'tolerance' must be positive")))
+        for key in ("tolerance_unit", "item_resolution_unit"):
+            if getattr(meta, key) not in UNITS:
+                raise MetadataError(message(
+                    QT_TR_NOOP("certificate field '{key}' must be one of {join}, not '{unit}'"),
+                    key=key, join=', '.join(UNITS), unit=getattr(meta, key)))
         if meta.humidity_pct is not None and not 0 <= meta.humidity_pct <= 100:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'humidity_pct' must be 0 to 100 %")))
-        if meta.item_resolution_arcsec is not None and not 0 <= meta.item_resolution_arcsec <= 3600:
+        if meta.item_resolution is not None and not 0 <= Quantity(
+                meta.item_resolution, meta.item_resolution_unit).to(
+                "arcsec" if UNITS[meta.item_resolution_unit].dimension == "angle" else "um"
+                ).value <= 3600:
             raise MetadataError(message(
-                QT_TR_NOOP("certificate field 'item_resolution_arcsec' must be 0 to 3600\"")))
+                QT_TR_NOOP("certificate field 'item_resolution' must be 0 to 3600\" (or 0 to "
+                           "3600 µm)")))
         if meta.coverage_probability_pct is None:
             meta = replace(meta, coverage_probability_pct=100.0 * DEFAULT_COVERAGE_PROBABILITY)
         if not 50.0 <= meta.coverage_probability_pct <= 99.9:
@@ -288,6 +339,38 @@ class CertificateMetadata:
                            "'{document_type}'"),
                 join=', '.join(DOCUMENT_TYPES), document_type=meta.document_type))
         return meta
+
+    @property
+    def tolerance_quantity(self) -> Quantity | None:
+        """The tolerance with its unit (None when none is stated)."""
+        return None if self.tolerance is None else Quantity(self.tolerance, self.tolerance_unit)
+
+    def item_resolution_in(self, unit: str) -> float | None:
+        """The item's resolution as a number in ``unit`` (its errors'); MetadataError when
+        it is not a quantity of the same kind."""
+        if self.item_resolution is None:
+            return None
+        try:
+            return float(Quantity(self.item_resolution, self.item_resolution_unit).in_unit(unit))
+        except UnitError:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'item_resolution' is in {given}, but the errors "
+                           "are in {unit}: state the resolution in a unit of the same kind"),
+                given=UNITS[self.item_resolution_unit].symbol, unit=UNITS[unit].symbol)) from None
+
+    def tolerance_in(self, unit: str) -> float | None:
+        """The tolerance as a number in ``unit`` (the unit of the errors it is judged
+        against); MetadataError when it is not a quantity of the same kind (a tolerance in
+        nm for errors in arcseconds)."""
+        if self.tolerance is None:
+            return None
+        try:
+            return float(self.tolerance_quantity.in_unit(unit))
+        except UnitError:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field 'tolerance' is in {given}, but the errors are in "
+                           "{unit}: state the tolerance in a unit of the same kind"),
+                given=UNITS[self.tolerance_unit].symbol, unit=UNITS[unit].symbol)) from None
 
     @property
     def coverage_probability(self) -> float:

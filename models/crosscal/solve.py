@@ -26,30 +26,73 @@ end with a closure reading (the repeat of their first face); the drift reported
 is −δ_j, the polygon workbench's (c′ − c) − (a′ − a): an autocollimator that
 drifted by D gives D.
 
+Drift (``drift``), as in the polygon workbench, from the closure reading:
+
+* ``"fit"`` (the default): δ_j fitted with everything else, as above (least squares
+  uses the closure reading with all the others);
+* ``"spread"``: the closure drift H = (c′ − c) − (a′ − a) of the mounting's first
+  face is taken as growing linearly from its first reading to its closure and removed
+  from the readings (the polygon workbench's "spread"); the closure reading is then
+  used up, and the covariance carries the two readings H came from (exact);
+* ``"report"``: H is reported and judged against ``closure_limit_arcsec`` but not
+  removed; the closure reading is left out of the fit.
+
+H itself (``closure_drift_arcsec``) is given in every mode.
+
+Tilt: with vertical readings (``ac_y_arcsec``) each mounting's pyramidal tilt ψ, ω
+is fitted on its faces' vertical readings and its horizontal effect removed, in the
+frame the autocollimator is set to (``ac_alignment`` "levelled" or "polygon", a
+measured roll ``roll_rad``), as the polygon workbench does it: the same exact 3-D
+readings and fit (:func:`models.pyramidal.fit_tilt`), done for all mountings at
+once by :mod:`models.crosscal.tilt` (tested to give fit_tilt's figures); θ is the
+face's nominal angle (i − 1)·360°/n, face 1 the zero (the constant part is the
+mounting's offset). The tilt's own uncertainty is left to the residual scatter (its
+correction is second order in ψ in a levelled set-up).
+
 What the design cannot determine is found from the null space of the design
 under the closure constraints, and named as harmonic orders of E and d (for
 mountings all a multiple of g faces apart, with g dividing n, the harmonics h
 with h·g ≡ 0 mod n are unseen); such values are not reported (``None``); the
 part of E and d made of the determined harmonics is given instead, labelled.
+
+The uncertainty is exact for the linear model: cov = σ²·Z(ZᵀXᵀXZ)⁺Zᵀ (X the design,
+Z the closure constraints' null space), σ from the residual scatter with
+ν = readings − rank (or stated, with its own ν), k from ν (GUM G.3, the house's
+:func:`models.uncertainty.budget.coverage_factor`). With "spread" the estimate is
+x = G·L·y (L the spread map), cov = σ²·G·L·Lᵀ·Gᵀ and σ² = ‖r‖²/tr(Lᵀ(I − H)L).
+:mod:`models.crosscal.uncertainty` adds Estler's closed form, a design's expected u
+and a Monte Carlo check.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY, coverage_factor
 
-__all__ = ["CrossCalibration", "CrossCalibrationInputError", "harmonic_basis", "solve_crosscal"]
+__all__ = ["DRIFT_MODES", "CrossCalibration", "CrossCalibrationInputError", "harmonic_basis",
+           "solve_crosscal"]
 
 #: a reading further than this from its step is no reading of that step (fraction of a step)
 STEP_TOLERANCE = 0.25
 
+#: vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about
+#: their tilt curve are said to be suspect
+VERTICAL_SCATTER_FACTOR = 10.0
+#: a fitted tilt above this (1°) is no seating but wrong vertical readings
+MAX_TILT_ARCSEC = 3600.0
+
+#: how each mounting's drift is taken from its closure reading (see the module's text)
+DRIFT_MODES = ("fit", "spread", "report")
+
 
 class CrossCalibrationInputError(ValueError):
-    """Readings that cannot be a cross-calibration; ``row`` is the 1-based data row (or None)."""
+    """Readings that cannot be a cross-calibration; ``row`` is the 1-based data row (or None).
+    The text is a :class:`models.messages.Message` (translated by the window)."""
 
     def __init__(self, text: str, row: int | None = None) -> None:
         super().__init__(text)
@@ -73,12 +116,34 @@ class CrossCalibration:
     #: covariance of (E, d) — of their determined parts — arcsec², 2n × 2n
     covariance_arcsec2: np.ndarray
     sigma_arcsec: float  # standard deviation of one reading (from the residuals, or as given)
-    dof: float  # ν of sigma (inf when given)
+    dof: float  # ν of sigma (inf when given without its own ν)
     coverage_factor: float
     offsets_arcsec: np.ndarray  # o_j per mounting (about their mean)
-    drift_arcsec: np.ndarray  # per mounting, (c′ − c) − (a′ − a) fitted; nan without closure
-    residuals_arcsec: np.ndarray  # per row in the order given
+    #: per mounting (in ``mountings`` order): the drift used — fitted ("fit"), the closure
+    #: drift H ("spread", "report"); nan without a closure reading
+    drift_arcsec: np.ndarray
+    residuals_arcsec: np.ndarray  # per row in the order given (closure rows included)
     rank_deficiency: int
+    # --- added for the workbench (all with defaults) ---
+    #: per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench
+    #: computes it (tilt removed), nan without a closure reading
+    closure_drift_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    drift_mode: str = "fit"
+    #: per mounting: models.pyramidal.TiltFit, or None (no vertical readings)
+    tilts: tuple = ()
+    ac_alignment: str = "levelled"
+    #: per row: the tilt's horizontal effect removed from the reading, arcsec (zeros without)
+    pyramidal_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    #: per row: the encoder step k, the reading's order t in its mounting (closure: n), and
+    #: whether it is a closure reading
+    row_step: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    row_time: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    row_closure: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    #: per row: whether the reading entered the least squares (closure readings in
+    #: "spread"/"report" do not)
+    row_used: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=bool))
+    probability: float = DEFAULT_COVERAGE_PROBABILITY
+    warnings: tuple = ()  # Messages (closure over its limit, no closure, no vertical readings)
 
     @property
     def separable(self) -> bool:
@@ -112,6 +177,48 @@ class CrossCalibration:
             r = self.covariance_arcsec2 / np.outer(u, u)
         return np.where(np.outer(u, u) > 0, r, 0.0)
 
+    @property
+    def cross_covariance_arcsec2(self) -> np.ndarray:
+        """cov(E_k, d_i), n × n (rows steps k, columns faces i), arcsec²."""
+        n = self.faces
+        return self.covariance_arcsec2[:n, n:]
+
+    @property
+    def max_cross_correlation(self) -> float:
+        """The largest |r(E_k, d_i)| between the two result sets (0 for a full rosette)."""
+        n = self.faces
+        return float(np.abs(self.correlation[:n, n:]).max())
+
+    @property
+    def correlation_statement(self) -> Message:
+        """What a certificate says of the correlation between the two result sets."""
+        r = self.max_cross_correlation
+        if r < 1e-6:
+            return message(QT_TR_NOOP("the encoder's errors and the face deviations are "
+                                      "uncorrelated (a full rosette)"))
+        return message(QT_TR_NOOP("the encoder's errors and the face deviations are correlated: "
+                                  "|r| up to {r}; use the covariance given when combining them"),
+                       r=f"{r:.2f}")
+
+    @property
+    def undetermined_text(self) -> Message | None:
+        """Why values are withheld (None when the design separates everything)."""
+        if self.separable:
+            return None
+        return _undetermined_text(self.faces, self.mountings, self.undetermined_encoder_harmonics,
+                                  self.undetermined_polygon_harmonics)
+
+
+def _undetermined_text(n, mountings, bad_e, bad_d) -> Message:
+    spacing = math.gcd(n, *(j - mountings[0] for j in mountings[1:]))
+    orders = sorted(set(bad_e) | set(bad_d))
+    return message(QT_TR_NOOP("mountings {mountings} are all a multiple of {spacing} faces apart: "
+                              "harmonic orders {orders} of the encoder's error and of the face "
+                              "deviations are not determined and are not reported; the figures "
+                              "shown hold the determined harmonics only"),
+                   mountings=", ".join(map(str, mountings)), spacing=spacing,
+                   orders=", ".join(map(str, orders)))
+
 
 def harmonic_basis(n: int) -> list[tuple[int, np.ndarray]]:
     """Orthonormal real Fourier basis of R^n, grouped by harmonic order h = 0 … n//2:
@@ -139,6 +246,11 @@ def _number(v) -> float:
         return math.nan
 
 
+def _refuse(template: str, at: int | None = None, **figures) -> CrossCalibrationInputError:
+    """The error for a refused input, its text a Message; ``at`` the 1-based row."""
+    return CrossCalibrationInputError(message(template, **figures), at)
+
+
 def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
     mounting = np.asarray(mounting)
     position = np.asarray(position)
@@ -146,8 +258,8 @@ def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
     c = np.asarray(ac_x_arcsec, dtype=float)
     size = mounting.size
     if not (position.size == a.size == c.size == size):
-        raise CrossCalibrationInputError("mounting, position, encoder and autocollimator columns "
-                                         "differ in length")
+        raise _refuse(QT_TR_NOOP("mounting, position, encoder and autocollimator columns differ "
+                                 "in length"))
     for name, col in (("mounting", mounting), ("position", position)):
         try:
             values = col.astype(float)
@@ -156,12 +268,13 @@ def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
         bad = np.flatnonzero(~np.isfinite(values) | (values != np.round(values)))
         if bad.size:
             r = int(bad[0]) + 1
-            raise CrossCalibrationInputError(f"row {r}: {name} {col[r - 1]!r} is not a whole number", r)
+            raise _refuse(QT_TR_NOOP("row {row}: {column} {value} is not a whole number"), r,
+                          row=r, column=name, value=repr(col[r - 1]))
     for name, col in (("encoder_deg", a), ("ac_x_arcsec", c)):
         bad = np.flatnonzero(~np.isfinite(col))
         if bad.size:
             r = int(bad[0]) + 1
-            raise CrossCalibrationInputError(f"row {r}: {name} is not a number", r)
+            raise _refuse(QT_TR_NOOP("row {row}: {column} is not a number"), r, row=r, column=name)
     mounting = mounting.astype(float).astype(int)
     position = position.astype(float).astype(int)
     order = list(dict.fromkeys(mounting.tolist()))  # mountings in the order first met
@@ -169,39 +282,25 @@ def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
         faces = int(np.unique(position[mounting == order[0]]).size) if size else 0
     n = int(faces)
     if n < 3:
-        raise CrossCalibrationInputError(f"{n} faces: a polygon has at least 3")
+        raise _refuse(QT_TR_NOOP("{faces} faces: a polygon has at least 3"), faces=n)
     for r, (j, i) in enumerate(zip(mounting, position, strict=True), start=1):
         if not 1 <= i <= n:
-            raise CrossCalibrationInputError(f"row {r}: face {i} is outside 1…{n} (face count {n})", r)
+            raise _refuse(QT_TR_NOOP("row {row}: face {face} is outside 1…{faces} (face count "
+                                     "{faces})"), r, row=r, face=i, faces=n)
         if not 0 <= j < n:
-            raise CrossCalibrationInputError(f"row {r}: mounting {j} is outside 0…{n - 1}", r)
+            raise _refuse(QT_TR_NOOP("row {row}: mounting {mounting} is outside 0…{last}"), r,
+                          row=r, mounting=j, last=n - 1)
     return mounting, position, a, c, order, n
 
 
-def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | None = None,
-                   noise_arcsec: float | None = None, fit_drift: bool = True,
-                   probability: float = DEFAULT_COVERAGE_PROBABILITY) -> CrossCalibration:
-    """Encoder errors E_k and face deviations d_i from readings in the order measured.
-
-    Rows: ``mounting`` j, ``position`` (face 1 … n at the autocollimator), encoder
-    reading (deg) and autocollimator horizontal reading (″). Every mounting reads
-    every face once, optionally ending with a closure reading of its first face.
-    ``noise_arcsec``: a known σ of one reading (ν = ∞); otherwise σ comes from the
-    residuals with ν = readings − rank (refused when ν = 0). Rows that cannot be a
-    cross-calibration raise :class:`CrossCalibrationInputError` naming the row.
-    """
-    mounting, position, a, c, order, n = _rows(mounting, position, encoder_deg, ac_x_arcsec, faces)
-    if len(order) < 2:
-        raise CrossCalibrationInputError(
-            f"only mounting {order[0] if order else '—'}: the faces and the encoder's steps are not "
-            "connected — at least two mountings are needed")
-    step = 360.0 / n
-    # reading order t in each mounting; the closure row (repeat of the first face, last) gets t = n
+def _sequence(mounting, position, order, n):
+    """Reading order t per row (closure t = n), closure flags, each mounting's rows."""
     t = np.zeros(mounting.size, dtype=int)
     closure = np.zeros(mounting.size, dtype=bool)
-    has_closure = {}
+    rows_of = {}
     for j in order:
         rows = np.flatnonzero(mounting == j)
+        rows_of[j] = rows
         seen: dict[int, int] = {}
         for idx, r in enumerate(rows):
             i = int(position[r])
@@ -210,19 +309,96 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
                     closure[r] = True
                     t[r] = n
                     continue
-                raise CrossCalibrationInputError(
-                    f"row {r + 1}: mounting {j}, face {i} repeats row {seen[i] + 1} "
-                    "(a duplicate reading; only the closure reading, last, may repeat the first face)",
-                    r + 1)
+                raise _refuse(QT_TR_NOOP("row {row}: mounting {mounting}, face {face} repeats row "
+                                         "{other} (a duplicate reading; only the closure reading, "
+                                         "last, may repeat the first face)"), r + 1,
+                              row=r + 1, mounting=j, face=i, other=seen[i] + 1)
             seen[i] = r
             t[r] = idx
         missing = sorted(set(range(1, n + 1)) - set(seen))
         if missing:
-            raise CrossCalibrationInputError(
-                f"mounting {j} (rows {rows[0] + 1}…{rows[-1] + 1}): face(s) "
-                f"{', '.join(map(str, missing))} missing — every mounting reads all {n} faces",
-                int(rows[-1]) + 1)
-        has_closure[j] = bool(closure[rows].any())
+            raise _refuse(QT_TR_NOOP("mounting {mounting} (rows {first}…{last}): face(s) {faces} "
+                                     "missing — every mounting reads all {count} faces"),
+                          int(rows[-1]) + 1, mounting=j, first=rows[0] + 1, last=rows[-1] + 1,
+                          faces=", ".join(map(str, missing)), count=n)
+    return t, closure, rows_of
+
+
+def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad, warnings):
+    """Each mounting's tilt fitted on its vertical readings and its horizontal effect
+    removed from y (in place); (tilts per mounting, correction per row)."""
+    from models.crosscal.tilt import fit_tilts, pyramidal_corrections
+
+    correction = np.zeros(y.size)
+    if ac_y is None:
+        warnings.append(message(QT_TR_NOOP("no vertical readings: the polygon's tilt on the shaft "
+                                           "is neither identified nor removed")))
+        return tuple(None for _ in order), correction
+    step = 360.0 / n
+    read = []
+    for j in order:
+        faces_rows = rows_of[j][~closure[rows_of[j]]]
+        if n >= 4 and np.all(np.isfinite(ac_y[faces_rows])):
+            read.append(j)
+        else:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: vertical readings missing: "
+                                               "its tilt is neither identified nor removed"),
+                                    mounting=j))
+    tilts: dict[int, object] = {}
+    if read:
+        face_rows = [rows_of[j][~closure[rows_of[j]]] for j in read]
+        theta = np.array([(position[r] - 1) * step for r in face_rows])
+        fits = fit_tilts(theta, np.array([ac_y[r] for r in face_rows]), ac_alignment, roll_rad)
+        table = pyramidal_corrections(fits, n, ac_alignment, roll_rad)
+        for q, j in enumerate(read):
+            rows = rows_of[j]
+            correction[rows] = table[q, position[rows] - 1]
+            tilts[j] = fits[q]
+    y -= correction
+    return tuple(tilts.get(j) for j in order), correction
+
+
+def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | None = None,
+                   noise_arcsec: float | None = None, fit_drift: bool = True,
+                   probability: float = DEFAULT_COVERAGE_PROBABILITY, *,
+                   ac_y_arcsec=None, ac_alignment: str = "levelled", roll_rad: float = 0.0,
+                   drift: str | None = None, closure_limit_arcsec: float = math.inf,
+                   noise_dof: float = math.inf) -> CrossCalibration:
+    """Encoder errors E_k and face deviations d_i from readings in the order measured.
+
+    Rows: ``mounting`` j, ``position`` (face 1 … n at the autocollimator), encoder
+    reading (deg) and autocollimator horizontal reading (″). Every mounting reads
+    every face once, optionally ending with a closure reading of its first face.
+    ``noise_arcsec``: a known σ of one reading (with its ``noise_dof``, ∞ unless
+    stated); otherwise σ comes from the residuals with ν = readings − rank (refused
+    when ν = 0). ``drift``: "fit", "spread" or "report" (module text; None: "fit",
+    or "report" when ``fit_drift`` is False). ``ac_y_arcsec`` (nan where not read):
+    each mounting's tilt fitted and removed in the ``ac_alignment`` frame. Rows that
+    cannot be a cross-calibration raise :class:`CrossCalibrationInputError` naming
+    the row.
+    """
+    from scipy import sparse
+
+    from models.pyramidal import AC_ALIGNMENTS, closure_drift_arcsec
+
+    mode = drift if drift is not None else ("fit" if fit_drift else "report")
+    if mode not in DRIFT_MODES:
+        raise _refuse(QT_TR_NOOP("drift must be one of {modes}, not {mode}"),
+                      modes=", ".join(DRIFT_MODES), mode=repr(mode))
+    if ac_alignment not in AC_ALIGNMENTS:
+        raise _refuse(QT_TR_NOOP("ac_alignment must be one of {frames}, not {frame}"),
+                      frames=", ".join(AC_ALIGNMENTS), frame=repr(ac_alignment))
+    mounting, position, a, c, order, n = _rows(mounting, position, encoder_deg, ac_x_arcsec, faces)
+    ac_y = None if ac_y_arcsec is None else np.asarray(ac_y_arcsec, dtype=float)
+    if ac_y is not None and ac_y.size != a.size:
+        raise _refuse(QT_TR_NOOP("the vertical readings ({count}) are not one per row ({rows})"),
+                      count=ac_y.size, rows=a.size)
+    if len(order) < 2:
+        raise _refuse(QT_TR_NOOP("only mounting {mounting}: the faces and the encoder's steps are "
+                                 "not connected — at least two mountings are needed"),
+                      mounting=order[0] if order else "—")
+    step = 360.0 / n
+    t, closure, rows_of = _sequence(mounting, position, order, n)
     k = (position - 1 - mounting) % n
     first = order[0]
     start_rows = np.flatnonzero((mounting == first) & (k == 0) & ~closure)
@@ -231,45 +407,80 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     far = np.flatnonzero(np.abs(off) > STEP_TOLERANCE * step)
     if far.size:
         r = int(far[0])
-        raise CrossCalibrationInputError(
-            f"row {r + 1}: encoder {a[r]:.4f}° is {off[r]:+.4f}° from step {k[r]} "
-            f"({a_start + k[r] * step:.4f}°) where mounting {mounting[r]} reads face {position[r]}: "
-            "a mounting that starts elsewhere, or a wrong mounting or face number", r + 1)
+        raise _refuse(QT_TR_NOOP("row {row}: encoder {encoder} is {offset} from step {step} "
+                                 "({nominal}) where mounting {mounting} reads face {face}: a "
+                                 "mounting that starts elsewhere, or a wrong mounting or face "
+                                 "number"), r + 1, row=r + 1, encoder=f"{a[r]:.4f}°",
+                      offset=f"{off[r]:+.4f}°", step=k[r], nominal=f"{a_start + k[r] * step:.4f}°",
+                      mounting=mounting[r], face=position[r])
     y = off * 3600.0 - c
+    warnings: list[Message] = []
+    tilts, pyramidal = _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment,
+                              roll_rad, warnings)
 
-    # design: columns E (n), d (n), o (m), δ (mountings with closure, when fitted)
     m = len(order)
     mindex = {j: q for q, j in enumerate(order)}
-    drifting = [j for j in order if has_closure[j]] if fit_drift else []
+    closure_row = {j: int(rows_of[j][-1]) for j in order if closure[rows_of[j][-1]]}
+    first_row = {j: int(rows_of[j][0]) for j in order}
+    # H = (c′ − c) − (a′ − a) on the first face, tilt removed: −(y′ − y) (the same step)
+    h_drift = np.full(m, np.nan)
+    for j, r in closure_row.items():
+        f = first_row[j]
+        h_drift[mindex[j]] = closure_drift_arcsec(a[f], c[f] + pyramidal[f], a[r], c[r] + pyramidal[r])
+    for j in order:
+        if j not in closure_row:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: no closure reading (its first "
+                                               "face read again at the end): drift not checked"),
+                                    mounting=j))
+        elif abs(h_drift[mindex[j]]) > closure_limit_arcsec:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: closure drift {drift} exceeds "
+                                               "the limit ±{limit}: repeat the mounting"),
+                                    mounting=j, drift=f"{h_drift[mindex[j]]:+.3f}\"",
+                                    limit=f"{closure_limit_arcsec:g}\""))
+
+    # the linear map from the readings to the data the least squares sees (spread: each
+    # mounting's rows less t/n of its closure drift; the closure reading is used up)
+    used = ~closure if mode in ("spread", "report") else np.ones(y.size, dtype=bool)
+    rows_n = int(used.sum())
+    used_index = np.flatnonzero(used)
+    y_data = y.copy()
+    if mode == "spread":
+        for j, r in closure_row.items():  # the closure reading itself becomes the first's
+            rows = rows_of[j]
+            y_data[rows] -= t[rows] / n * (y[r] - y[first_row[j]])
+
+    # design: columns E (n), d (n), o (m), δ (mountings with closure, when fitted)
+    drifting = [j for j in order if j in closure_row] if mode == "fit" else []
     dindex = {j: q for q, j in enumerate(drifting)}
     p = 2 * n + m + len(drifting)
-    rows_n = mounting.size
-    design = np.zeros((rows_n, p))
-    ar = np.arange(rows_n)
-    design[ar, k] = 1.0
-    design[ar, n + position - 1] = 1.0
-    design[ar, 2 * n + np.array([mindex[j] for j in mounting])] = 1.0
-    drift_col = np.array([dindex.get(int(j), -1) for j in mounting])
-    has = drift_col >= 0
-    design[ar[has], 2 * n + m + drift_col[has]] = t[has] / n
-    # closure constraints Σ E = 0 and Σ d = 0 (they also fix the offsets' level); without
-    # the drift term (fit_drift False) a closure reading is one more reading of its face.
-    # Solved on the constraints' null space.
+    ar = np.arange(y.size)
+    mcol = 2 * n + np.array([mindex[j] for j in mounting])
+    dcol = np.array([dindex.get(int(j), -1) for j in mounting])
+    cols = [k, n + position - 1, mcol]
+    vals = [np.ones(y.size)] * 3
+    has = dcol >= 0
+    design_all = sparse.csr_matrix(
+        (np.concatenate(vals + [t[has] / n]),
+         (np.concatenate([ar] * 3 + [ar[has]]), np.concatenate(cols + [2 * n + m + dcol[has]]))),
+        shape=(y.size, p))
+    design = design_all[used_index]
+    normal_full = (design.T @ design).toarray()
+    # closure constraints Σ E = 0 and Σ d = 0 (they also fix the offsets' level); solved on
+    # the constraints' null space
     constraint = np.zeros((2, p))
     constraint[0, :n] = 1.0
     constraint[1, n:2 * n] = 1.0
     _, _, vt = np.linalg.svd(constraint)
     z = vt[2:].T  # p × (p − 2), orthonormal, spans {x : C x = 0}
-    # normal equations on the constraints' null space (p − 2 unknowns; fast for 72 faces)
-    zat = (design @ z).T
-    normal = zat @ zat.T
+    normal = z.T @ normal_full @ z
     lam, vec = np.linalg.eigh(normal)
     tol = 1e-9 * max(float(lam[-1]), 1.0)
     seen = lam > tol
     rank = int(seen.sum())
     pinv_normal = (vec[:, seen] / lam[seen]) @ vec[:, seen].T
-    x = z @ (pinv_normal @ (zat @ y))
-    residuals = y - design @ x
+    solver = z @ pinv_normal @ z.T  # p × p: x = solver · Xᵀ y
+    x = solver @ (design.T @ y_data[used_index])
+    residuals = y_data - design_all @ x
     null = z @ vec[:, ~seen]  # p × deficiency, orthonormal
     deficiency = p - 2 - rank
 
@@ -286,35 +497,72 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     null_e, null_d = null[:n], null[n:2 * n]
     bad_e, keep_e = unseen(null_e)
     bad_d, keep_d = unseen(null_d)
-    if np.linalg.norm(keep_e @ null_e) > 1e-6 or np.linalg.norm(keep_d @ null_d) > 1e-6:
-        raise CrossCalibrationInputError(
-            "the mountings do not determine the encoder's errors and the face deviations "
-            "(not even in part): they do not connect the faces")
-    if len(bad_e) == n // 2 or len(bad_d) == n // 2:
-        raise CrossCalibrationInputError(
-            f"mountings {', '.join(map(str, order))} do not connect the faces: no harmonic of the "
-            "encoder's error or of the face deviations is determined")
+    mountings_text = ", ".join(map(str, order))
+    if (np.linalg.norm(keep_e @ null_e) > 1e-6 or np.linalg.norm(keep_d @ null_d) > 1e-6
+            or len(bad_e) == n // 2 or len(bad_d) == n // 2):
+        raise _refuse(QT_TR_NOOP("mountings {mountings} do not connect the faces: no harmonic of "
+                                 "the encoder's error or of the face deviations is determined"),
+                      mountings=mountings_text)
 
+    if mode == "spread" and closure_row:
+        # exact: x = solver·Xᵀ·L·y, L the spread map; E‖r‖² = σ²·tr(Lᵀ(I − H)L)
+        lrows, lcols, lvals = list(range(rows_n)), list(used_index), [1.0] * rows_n
+        position_in_used = {int(r): u for u, r in enumerate(used_index)}
+        for j, r in closure_row.items():
+            for row in rows_of[j][1:-1]:
+                u = position_in_used[int(row)]
+                lrows += [u, u]
+                lcols += [r, first_row[j]]
+                lvals += [-t[row] / n, t[row] / n]
+        spread_map = sparse.csr_matrix((lvals, (lrows, lcols)), shape=(rows_n, y.size))
+        gain = (spread_map.T @ (design @ solver)).T  # p × all rows: x = gain · y
+        design_map = (spread_map.T @ design).T.toarray()  # Xᵀ L
+        scatter_trace = float(spread_map.multiply(spread_map).sum() - np.sum(gain * design_map))
+        cov_unit = gain @ gain.T
+    else:
+        scatter_trace = float(rows_n - rank)
+        cov_unit = solver
     dof = float(rows_n - rank)
     if noise_arcsec is not None:
-        sigma, dof = float(noise_arcsec), math.inf
+        sigma, dof = float(noise_arcsec), float(noise_dof)
     elif dof <= 0:
-        raise CrossCalibrationInputError(
-            f"{rows_n} readings determine {rank} unknowns with none left over: the scatter of a reading "
-            "cannot be evaluated — add a mounting, or state the autocollimator's σ")
+        raise _refuse(QT_TR_NOOP("{readings} readings determine {unknowns} unknowns with none left "
+                                 "over: the scatter of a reading cannot be evaluated — add a "
+                                 "mounting, or state the autocollimator's σ"),
+                      readings=rows_n, unknowns=rank)
     else:
-        sigma = float(math.sqrt(residuals @ residuals / dof))
-    cov_x = sigma**2 * (z @ pinv_normal @ z.T)
+        used_res = residuals[used_index]
+        sigma = float(math.sqrt(used_res @ used_res / scatter_trace))
+    cov_x = sigma**2 * cov_unit
     proj = np.zeros((2 * n, p))
     proj[:n, :n] = keep_e
     proj[n:, n:2 * n] = keep_d
     cov = proj @ cov_x @ proj.T
     e_det = keep_e @ x[:n]
     d_det = keep_d @ x[n:2 * n]
-    drift = np.full(m, np.nan)
-    for j in drifting:
-        drift[mindex[j]] = -x[2 * n + m + dindex[j]]
+    drift_out = h_drift.copy()
+    if mode == "fit":
+        drift_out = np.full(m, np.nan)
+        for j in drifting:
+            drift_out[mindex[j]] = -x[2 * n + m + dindex[j]]
     offsets = x[2 * n:2 * n + m]
+    # the same autocollimator reads both axes: vertical readings far off their tilt curve
+    # are no tilt (a wrong column, a slipped face); their correction is then not to be trusted
+    for j, tilt in zip(order, tilts, strict=True):
+        if tilt is not None and tilt.residual_rms_arcsec > VERTICAL_SCATTER_FACTOR * sigma + 0.1:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: the vertical readings scatter "
+                                               "{rms} RMS about the tilt fitted, far more than the "
+                                               "horizontal ones ({sigma}): check them; the tilt "
+                                               "correction rests on them"),
+                                    mounting=j, rms=f"{tilt.residual_rms_arcsec:.3f}\"",
+                                    sigma=f"{sigma:.3f}\""))
+        elif tilt is not None and tilt.psi_arcsec > MAX_TILT_ARCSEC:
+            warnings.append(message(QT_TR_NOOP("mounting {mounting}: a tilt of {psi} was fitted — "
+                                               "no polygon sits that far off its seat: check the "
+                                               "vertical readings"),
+                                    mounting=j, psi=f"{tilt.psi_arcsec:.0f}\""))
+    if bad_e or bad_d:
+        warnings.append(_undetermined_text(n, tuple(order), bad_e, bad_d))
     return CrossCalibration(
         faces=n, mountings=tuple(order),
         encoder_error_arcsec=None if bad_e else e_det,
@@ -323,5 +571,8 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         encoder_error_determined_arcsec=e_det, polygon_deviation_determined_arcsec=d_det,
         covariance_arcsec2=cov, sigma_arcsec=sigma, dof=dof,
         coverage_factor=coverage_factor(dof, probability),
-        offsets_arcsec=offsets - offsets.mean(), drift_arcsec=drift,
-        residuals_arcsec=residuals, rank_deficiency=deficiency)
+        offsets_arcsec=offsets - offsets.mean(), drift_arcsec=drift_out,
+        residuals_arcsec=residuals, rank_deficiency=deficiency,
+        closure_drift_arcsec=h_drift, drift_mode=mode, tilts=tilts, ac_alignment=ac_alignment,
+        pyramidal_arcsec=pyramidal, row_step=k, row_time=t, row_closure=closure, row_used=used,
+        probability=probability, warnings=tuple(warnings))

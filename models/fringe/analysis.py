@@ -525,6 +525,7 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
                         "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
     presenter = "widgets.fringe.presenter:FringePresenter"
     entry_column = "u_sin"
+    sample_settings = {"lines_per_rev": 16384}  # the phase from the sample's θ column
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
@@ -532,6 +533,13 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
 
     def certificate(self, result, metadata, source_name=""):
         return fringe_certificate(result, metadata, source_name, self.method_reference)
+
+    def error_unit(self, settings):
+        """nm when an interferometer's period is set, as :func:`analyze` does; else arcsec."""
+        try:
+            return "nm" if float(settings.get("period_nm") or 0.0) else "arcsec"
+        except (TypeError, ValueError):
+            return "arcsec"
 
     def overlay_figure(self, result):
         return fringe_figures(result)["errors"]

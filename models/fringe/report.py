@@ -133,7 +133,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     inputs = result.inputs or {}
     out = []
     theta_standard = result.phase_source == "theta_column" and any(
-        s.uncertainty_arcsec is not None for s in metadata.standards)
+        s.uncertainty is not None for s in metadata.standards)
     if not inputs.get("phase_reference_u") and not theta_standard:
         out.append(message(QT_TR_NOOP("the phase reference ({what}) has no stated uncertainty"),
                            what=message(PHASE_REFERENCE[result.phase_source])))
@@ -160,7 +160,8 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     us = model_signal_std(result.theta_rad, sig_s, result.sin_fit.orders, result.theta_rad)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"))
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                               unit=result.unit)
     components += _stated_inputs(result, ds, dc, to_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
@@ -172,7 +173,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
             QT_TR_NOOP("Fitted model (correction table)"), "A", "normal", model, 1.0, 1.0, dof,
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit)
 
 
 class _SampleNames:
@@ -236,7 +237,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
             as_left_table_sha256=metadata.as_left_table_sha256[:16], sha256=result.table.sha256[:16]))
     budget = fringe_budget(result, metadata, as_found=not as_left)
     found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
     period, sym, unit = result.period_length, result.unit_symbol, result.unit
@@ -294,14 +295,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                  ratio=f"{result.amplitude_ratio:.4f}",
                  quadrature=f"{result.quadrature_error_deg:+.3f}°")),
     ]
-    tol = metadata.tolerance_arcsec
+    tol = metadata.tolerance_in(budget.unit.key)
     untraceable = untraceable_inputs(result, metadata)
     withheld = "" if not untraceable or tol is None else message(
         QT_TR_NOOP("the error is not traceable: {what}"),
         what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
     conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
                                    metadata.decision_quantity, withheld,
-                                   what=QT_TR_NOOP("as-found interpolation error"), unit=sym,
+                                   what=QT_TR_NOOP("as-found interpolation error"),
                                    point_names=_SampleNames())
     stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
     stat_rows.append((QT_TR_NOOP("Correction table"),
@@ -335,7 +336,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget,
         budget_point=message(QT_TR_NOOP("sample {sample}"), sample=worst + 1),
-        conformity=conformity, tolerance_arcsec=tol, plots=plots,
+        conformity=conformity, tolerance=tol, plots=plots,
         warnings=tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),

@@ -12,6 +12,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
+from models.polygon.acquisition import polygon_guide
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
@@ -36,6 +37,7 @@ from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
+    GuidesAcquisition,
     IssuesCertificates,
     OverlaysRuns,
     SendsRuns,
@@ -574,7 +576,8 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
-class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline):
+class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
+              GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -589,6 +592,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
+    acquisition_guide = staticmethod(polygon_guide)
     run_rows = staticmethod(positioning_rows)
     certificate_doubt = staticmethod(certificate_doubt)
 

@@ -296,13 +296,14 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
     """The tolerance from the one source, the workbench's grade; metadata that states
     another grade or tolerance is refused rather than silently overruled."""
     tol = GRADE_ACCURACY_ARCSEC[result.grade]
-    if metadata.tolerance_arcsec is not None and not math.isclose(metadata.tolerance_arcsec, tol):
+    given = metadata.tolerance_in("arcsec")
+    if given is not None and not math.isclose(given, tol):
         raise MetadataError(
             message(
             QT_TR_NOOP("the certificate details give a tolerance of ±{tolerance_arcsec}\" but the "
                        "workbench is set to grade {grade} (±{tol}\"): change the grade or clear the "
                        "tolerance in the details"),
-            tolerance_arcsec=f"{metadata.tolerance_arcsec:g}", grade=result.grade, tol=f"{tol:g}"))
+            tolerance_arcsec=f"{given:g}", grade=result.grade, tol=f"{tol:g}"))
     match = _GRADE_IN_TEXT.search(metadata.item_grade or "")
     if match and int(match.group(1)) != result.grade:
         raise MetadataError(
@@ -317,7 +318,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                         source_name: str = "", method_reference: str = "") -> CertificateDocument:
     tol = polygon_tolerance_arcsec(result, metadata)
     budget = polygon_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     m = len(result.sets)
     counting = (QT_TR_NOOP("with the face numbering") if result.counting > 0
                 else QT_TR_NOOP("against the face numbering"))
@@ -440,7 +441,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget,
         budget_point=message(QT_TR_NOOP("position {position}"), position=worst + 1),
-        conformity=conformity, tolerance_arcsec=tol, plots=tuple(plots),
+        conformity=conformity, tolerance=tol, plots=tuple(plots),
         warnings=tuple(warnings),
         statements=(
             message(QT_TR_NOOP("U is zero at face {face} of set 1: every error is taken from "

@@ -410,6 +410,11 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
     def check_settings(self, checked):
         _check_units(checked)
 
+    def error_unit(self, settings):
+        """The deviation unit, every figure's."""
+        unit = settings.get("deviation_unit", "arcsec")
+        return unit if unit in DEVIATION_UNITS else "arcsec"
+
     def certificate(self, result, metadata, source_name=""):
         return positioning_certificate(result, metadata, source_name, self.method_reference)
 

@@ -96,7 +96,8 @@ def positioning_budget(result: PositioningResult,
                 targets=", ".join(f"{t:g}" for t in once)))
     s = np.concatenate([p[2] for p in points])
     n = np.concatenate([p[3] for p in points]).astype(float)
-    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"))
+    components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"),
+                                               unit=result.deviation_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Repeatability of the mean (s/√n)"), "A", "normal", s / np.sqrt(n), 1.0, 1.0,
         float(np.min(n) - 1),
@@ -105,9 +106,10 @@ def positioning_budget(result: PositioningResult,
                 n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
                 else f"{int(np.min(n))}…{int(np.max(n))}")))
     components += repeated_readings_components(result)
-    components += resolution_component(metadata, 1.0)
+    components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)
-    return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
+                             result.deviation_unit)
 
 
 def repeated_readings_components(result: PositioningResult) -> list[BudgetComponent]:
@@ -286,7 +288,7 @@ def _figure_rows(result: PositioningResult,
 def positioning_certificate(result: PositioningResult, metadata: CertificateMetadata,
                             source_name: str = "", method_reference: str = "") -> CertificateDocument:
     budget = positioning_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     sym = result.symbol
     points = _points(result)
     m = result.positions.size
@@ -328,9 +330,10 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                      target=f"{target:g}{result.target_symbol}",
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
-    conformity = decide_conformity(curve, budget, metadata.tolerance_arcsec,
+    tol = metadata.tolerance_in(budget.unit.key)
+    conformity = decide_conformity(curve, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
-                                   what=QT_TR_NOOP("mean positional deviation"), unit=sym,
+                                   what=QT_TR_NOOP("mean positional deviation"),
                                    point_names=names)
     stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
@@ -383,7 +386,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget, budget_point=names[worst],
-        conformity=conformity, tolerance_arcsec=metadata.tolerance_arcsec, plots=tuple(plots),
+        conformity=conformity, tolerance=tol, plots=tuple(plots),
         warnings=tuple(result.warnings), unit=sym, statements=tuple(statements),
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(

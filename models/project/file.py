@@ -1,14 +1,28 @@
 """The project file: one JSON document holding every workbench's readings and settings.
 
-Schema (``schema_version`` 1)::
+Schema (``schema_version`` 2)::
 
-    {"format": "anglebench-project", "schema_version": 1, "app_version": "0.1.0",
+    {"format": "anglebench-project", "schema_version": 2, "app_version": "0.1.0",
      "metadata": {...},
      "workbenches": {"theodolite": {"rows": [["0", "0", "-0.03"], ...],
-                                     "settings": {...}}, ...}}
+                                     "settings": {...}}, ...},
+     "raw_capture": {"polygon": {"sha256": "…", "sessions": [...]}}}
+
+``raw_capture`` (optional in schema 2: absent in a project with no instrument readings,
+and in files written before it existed) keeps what the instruments sent, per workbench: see
+models/capture/raw_record.py; ``sha256`` is the digest of ``sessions`` as stored, and a
+file whose sessions no longer give it is refused.
 
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
+
+Schema 2 gives the certificate's tolerance and resolution their unit:
+``"tolerance": 0.5, "tolerance_unit": "nm"`` where schema 1 wrote
+``"tolerance_arcsec": 0.5`` in the unit of the workbench's errors, whatever it was
+(nm for an interferometer, the deviation unit of a positioning log); likewise
+``item_resolution_arcsec`` and each reference standard's ``uncertainty_arcsec``. A
+schema-1 file is migrated as it is read (:func:`migrate_certificate_details`); it is
+written back as schema 2.
 """
 
 from __future__ import annotations
@@ -20,6 +34,7 @@ from pathlib import Path
 from typing import Any
 
 from models import __version__ as APP_VERSION
+from models.capture.raw_record import raw_digest, raw_sessions_from_json
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.atomic_write import write_text_atomic
 
@@ -31,6 +46,7 @@ __all__ = [
     "WorkbenchState",
     "check_project",
     "load_project",
+    "migrate_certificate_details",
     "project_from_json",
     "project_json_parts",
     "project_to_json",
@@ -38,7 +54,7 @@ __all__ = [
 ]
 
 FORMAT_NAME = "anglebench-project"
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 
 
 class ProjectFileError(ValueError):
@@ -55,6 +71,8 @@ class WorkbenchState:
 class Project:
     workbenches: dict[str, WorkbenchState] = field(default_factory=dict)
     metadata: dict[str, Any] = field(default_factory=dict)
+    #: workbench key -> its capture sessions (models/capture/raw_record.py), optional
+    raw_capture: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
 
 
 _ROWS_CHUNK = 20_000
@@ -96,7 +114,17 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
             if between_blocks is not None:
                 between_blocks()
         yield f'],"settings":{dumps(state.settings)}}}'
-    yield "}}"
+    yield "}"
+    raw = {str(k): v for k, v in project.raw_capture.items() if v}
+    if raw:
+        yield ',"raw_capture":{'
+        for i, (key, sessions) in enumerate(raw.items()):
+            yield (("," if i else "") + f'{dumps(key)}:{{"sha256":{dumps(raw_digest(sessions))},'
+                   f'"sessions":{dumps(sessions)}}}')
+            if between_blocks is not None:
+                between_blocks()
+        yield "}"
+    yield "}"
 
 
 def project_from_json(text: str, source: str = "project") -> Project:
@@ -153,6 +181,12 @@ def project_from_json(text: str, source: str = "project") -> Project:
                        "changed"),
             source=source))
     project = Project(metadata=dict(metadata))
+    if version < 2 and certificates:
+        settings_of = {key: state.get("settings") for key, state in benches.items()
+                       if isinstance(state, dict) and isinstance(state.get("settings"), dict)}
+        project.metadata["certificates"] = {
+            key: migrate_certificate_details(details, _error_unit(key, settings_of.get(key, {})))
+            for key, details in certificates.items()}
     for key, state in benches.items():
         if not isinstance(state, dict):
             raise ProjectFileError(message(
@@ -175,7 +209,64 @@ def project_from_json(text: str, source: str = "project") -> Project:
                 QT_TR_NOOP("{source}: workbench '{key}': 'settings' must be an object"),
                 source=source, key=key))
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
+    project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
     return project
+
+
+def _raw_capture(raw: Any, source: str) -> dict[str, list[dict[str, Any]]]:
+    """The optional raw frames, checked against their digest."""
+    if not isinstance(raw, dict):
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: 'raw_capture' must be an object; nothing was changed"),
+            source=source))
+    out = {}
+    for key, entry in raw.items():
+        where = f"{source}: raw_capture '{key}'"
+        if not isinstance(entry, dict) or not isinstance(entry.get("sha256"), str):
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{where}: 'sha256' and 'sessions' expected; nothing was changed"),
+                where=where))
+        try:
+            sessions = raw_sessions_from_json(entry.get("sessions"), where)
+        except ValueError as exc:
+            raise ProjectFileError(message(QT_TR_NOOP("{reason}; nothing was changed"),
+                                           reason=reason_of(exc))) from None
+        if raw_digest(sessions) != entry["sha256"]:
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{where}: the raw frames do not give their SHA-256 (changed after "
+                           "they were captured); nothing was changed"), where=where))
+        out[str(key)] = sessions
+    return out
+
+
+def _error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
+    """The unit a schema-1 file's figures were in: the unit of that workbench's errors
+    with its settings (Workbench.error_unit); arcsec for a workbench this version does
+    not know (check_project refuses it after)."""
+    from models.registry import KINDS  # late: the registry loads every workbench
+
+    kind = KINDS.get(workbench)
+    return kind.error_unit(settings) if kind is not None else "arcsec"
+
+
+def migrate_certificate_details(details: dict[str, Any], error_unit: str) -> dict[str, Any]:
+    """Certificate details written before the tolerance and the resolution had their unit
+    (``tolerance_arcsec``, ``item_resolution_arcsec``: in the unit of the workbench's errors
+    ``error_unit``) with ``tolerance`` and ``tolerance_unit`` (``item_resolution``,
+    ``item_resolution_unit``); details that already state them come back as they are."""
+    out = dict(details)
+    for old, new in (("tolerance_arcsec", "tolerance"), ("item_resolution_arcsec", "item_resolution")):
+        if old in out and new not in out:
+            out[new] = out.pop(old)
+            out[f"{new}_unit"] = error_unit
+    standards = out.get("standards")
+    if isinstance(standards, list):
+        out["standards"] = [
+            {**{k: v for k, v in s.items() if k != "uncertainty_arcsec"},
+             "uncertainty": s["uncertainty_arcsec"], "uncertainty_unit": error_unit}
+            if isinstance(s, dict) and "uncertainty_arcsec" in s and "uncertainty" not in s else s
+            for s in standards]
+    return out
 
 
 def check_project(project: Project, kinds: Mapping[str, Any], source: str = "project") -> None:

@@ -112,6 +112,13 @@ class CertificateRecord:
     def software(self) -> dict[str, str]:
         return json.loads(self.software_json)
 
+    @property
+    def raw_sha256(self) -> str:
+        """SHA-256 of the instrument's raw frames behind the readings, as the project state
+        (in the hash chain) holds it; "" for typed readings and older records."""
+        entry = json.loads(self.project_json).get("raw_capture", {}).get(self.workbench)
+        return entry.get("sha256", "") if isinstance(entry, dict) else ""
+
 
 _RECORD_COLUMNS = tuple(f.name for f in dataclasses.fields(CertificateRecord))
 

@@ -12,11 +12,13 @@ from models.parameters import Parameter, SettingsError, Shortcut
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
+from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
 from models.theodolite.report import theodolite_certificate
 from models.workbench import (
     SIGN_CONVENTION,
+    GuidesAcquisition,
     IssuesCertificates,
     OverlaysRuns,
     SendsRuns,
@@ -198,7 +200,8 @@ def summary(result: TheodoliteResult) -> str:
     return lines(out)
 
 
-class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline):
+class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
+                 GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -215,6 +218,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
+    acquisition_guide = staticmethod(theodolite_guide)
     run_rows = staticmethod(positioning_rows)
 
     def certificate(self, result, metadata, source_name=""):

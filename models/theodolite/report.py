@@ -149,7 +149,7 @@ def repeated_readings_components(result: TheodoliteResult) -> list[BudgetCompone
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
                            source_name: str = "", method_reference: str = "") -> CertificateDocument:
     budget = theodolite_budget(result, metadata)
-    big_u = budget.expanded_arcsec
+    big_u = budget.expanded
     ident = result.identification
     s = ident.setup
     # their own ν: the fit's n − 3 (three parameters from n elevations)
@@ -184,7 +184,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
                  rms=f"{c.rms:.2f}\"")),
     ]
-    tol = metadata.tolerance_arcsec
+    tol = metadata.tolerance_in(budget.unit.key)
     conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    point_names=_point_names(result.theta_deg))
@@ -203,7 +203,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget,
         budget_point=f"θ = {result.theta_deg[worst]:g}°", conformity=conformity,
-        tolerance_arcsec=tol, plots=plots, warnings=tuple(result.warnings),
+        tolerance=tol, plots=plots, warnings=tuple(result.warnings),
         statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),

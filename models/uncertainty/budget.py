@@ -21,7 +21,10 @@ quadrature as usual, but their estimates are one estimate, so for
 Welch–Satterthwaite they enter as one input, u² = Σ c_i² u_i², with its ν
 (counting them as independent estimates would double their ν).
 
-All values are in arcseconds.
+Every value of a budget is in its ``unit`` (models.quantity): arcseconds for an angle
+error, nm or µm for an interferometer's or a linear axis' deviations, as the error curve
+it belongs to. The budget states it, and its figures carry it
+(:meth:`UncertaintyBudget.quantity`).
 """
 
 from __future__ import annotations
@@ -33,6 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
+from models.quantity import Quantity, Unit
+from models.quantity import unit as _unit
 
 __all__ = [
     "BASIS_DIVISORS",
@@ -84,8 +89,8 @@ def divisor_for_basis(basis: str) -> tuple[float, str]:
 class BudgetComponent:
     """One input of the budget.
 
-    ``value_arcsec`` is the quoted figure (a scalar, or one value per point for
-    a propagated or per-point estimate); ``sensitivity`` a scalar or one
+    ``value`` is the quoted figure in the budget's unit (a scalar, or one value per
+    point for a propagated or per-point estimate); ``sensitivity`` a scalar or one
     coefficient per point; ``dof`` the degrees of freedom (``inf`` for a Type B
     input taken as exactly known).
     """
@@ -93,7 +98,7 @@ class BudgetComponent:
     name: str
     evaluation: str  # "A" or "B"
     distribution: str
-    value_arcsec: float | np.ndarray
+    value: float | np.ndarray
     divisor: float
     sensitivity: float | np.ndarray
     dof: float
@@ -102,16 +107,15 @@ class BudgetComponent:
     dof_group: str = ""  # inputs evaluated from one estimate: one input for ν_eff
 
     def __post_init__(self) -> None:
-        values = np.asarray(self.value_arcsec, dtype=float)
+        values = np.asarray(self.value, dtype=float)
         if not np.all(np.isfinite(values)) or np.any(values < 0) or not self.divisor > 0:
             raise ValueError(message(
-                QT_TR_NOOP("uncertainty input '{name}': its value must be a finite, non-negative number "
-                           "of arcseconds"),
+                QT_TR_NOOP("uncertainty input '{name}': its value must be a finite, non-negative number"),
                 name=self.name))
 
     def standard_uncertainty(self, points: int) -> np.ndarray:
         """Standard uncertainty of the input, per point (before the sensitivity)."""
-        return np.broadcast_to(np.asarray(self.value_arcsec, dtype=float) / self.divisor,
+        return np.broadcast_to(np.asarray(self.value, dtype=float) / self.divisor,
                                (points,))
 
     def contribution(self, points: int) -> np.ndarray:
@@ -122,11 +126,20 @@ class BudgetComponent:
 
 @dataclass(frozen=True)
 class UncertaintyBudget:
-    """The components of one error curve's uncertainty, with ``points`` points."""
+    """The components of one error curve's uncertainty, with ``points`` points, every
+    value in ``unit`` (a key or a :class:`~models.quantity.Unit`)."""
 
     components: tuple[BudgetComponent, ...]
     points: int
     probability: float = DEFAULT_COVERAGE_PROBABILITY  # stated coverage probability
+    unit: Unit | str = "arcsec"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "unit", _unit(self.unit))
+
+    def quantity(self, value, spec: str = "g") -> Quantity:
+        """A figure of this budget (``max_expanded``, a row of ``expanded``) with its unit."""
+        return Quantity(value, self.unit, spec)
 
     def contributions(self) -> np.ndarray:
         """Array (components, points) of |c_i| · u(x_i)."""
@@ -139,8 +152,8 @@ class UncertaintyBudget:
         return np.array([c.contribution(self.points) for c in self.components])
 
     @functools.cached_property
-    def combined_arcsec(self) -> np.ndarray:
-        """Combined standard uncertainty u_c per point."""
+    def combined(self) -> np.ndarray:
+        """Combined standard uncertainty u_c per point, in the budget's unit."""
         return np.sqrt(np.sum(self.contributions() ** 2, axis=0))
 
     @functools.cached_property
@@ -181,14 +194,14 @@ class UncertaintyBudget:
         return ks[inverse].reshape(-1) if self.points else np.zeros(0)
 
     @functools.cached_property
-    def expanded_arcsec(self) -> np.ndarray:
+    def expanded(self) -> np.ndarray:
         """Expanded uncertainty U = k · u_c per point, k from each point's ν_eff."""
-        return self.coverage_factors * self.combined_arcsec
+        return self.coverage_factors * self.combined
 
     @property
     def worst_index(self) -> int:
         """The point with the largest U: the budget table is printed for it."""
-        return int(np.argmax(self.expanded_arcsec)) if self.points else 0
+        return int(np.argmax(self.expanded)) if self.points else 0
 
     @property
     def coverage_factor(self) -> float:
@@ -196,8 +209,8 @@ class UncertaintyBudget:
         return float(self.coverage_factors[self.worst_index]) if self.points else float("nan")
 
     @property
-    def max_expanded_arcsec(self) -> float:
-        return float(np.max(self.expanded_arcsec)) if self.points else float("nan")
+    def max_expanded(self) -> float:
+        return float(np.max(self.expanded)) if self.points else float("nan")
 
     def effective_dof(self, index: int | None = None) -> float:
         """ν_eff at one point (default the worst), before truncation."""
@@ -213,19 +226,20 @@ class UncertaintyBudget:
 
     def table(self, index: int | None = None) -> list[dict[str, object]]:
         """Rows of the budget at one point (default the worst): name, type, distribution,
-        quoted value, divisor, u, sensitivity, contribution, share of u_c², ν."""
+        quoted value, divisor, u, sensitivity, contribution (in the budget's ``unit``),
+        share of u_c², ν."""
         i = self.worst_index if index is None else index
         contrib = self.contributions()[:, i] if self.components else np.zeros(0)
         total = float(np.sum(contrib**2)) or 1.0
         rows = []
         for comp, share in zip(self.components, contrib, strict=True):
-            value = np.broadcast_to(np.asarray(comp.value_arcsec, dtype=float), (self.points,))[i]
+            value = np.broadcast_to(np.asarray(comp.value, dtype=float), (self.points,))[i]
             sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (self.points,))[i]
             rows.append({
                 "name": comp.name, "evaluation": comp.evaluation,
-                "distribution": comp.distribution, "value_arcsec": float(value),
-                "divisor": comp.divisor, "u_arcsec": float(value / comp.divisor),
-                "sensitivity": float(sens), "contribution_arcsec": float(share),
+                "distribution": comp.distribution, "value": float(value),
+                "divisor": comp.divisor, "u": float(value / comp.divisor),
+                "sensitivity": float(sens), "contribution": float(share),
                 "share": float(share**2 / total), "dof": comp.dof, "note": comp.note,
             })
         return rows

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.messages import QT_TR_NOOP, joined, message
+from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = [
@@ -97,7 +98,8 @@ def uncertainty_decimals(expanded: float) -> int:
 
 @dataclass(frozen=True)
 class HalfRangeEstimate:
-    """Half the peak-to-peak of an error curve, from a Monte Carlo simulation (arcsec)."""
+    """Half the peak-to-peak of an error curve, from a Monte Carlo simulation (in the unit of
+    the curve and its budget)."""
 
     measured: float  # half the peak-to-peak of the measured curve
     bias: float  # measured − value: what the noise added to the range
@@ -140,11 +142,11 @@ def _denoised_half_range(curves: np.ndarray, noise_power: float) -> np.ndarray:
     return 0.5 * (smooth.max(axis=1) - smooth.min(axis=1))
 
 
-def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
+def half_range_monte_carlo(errors, budget: UncertaintyBudget,
                            trials: int = MONTE_CARLO_TRIALS,
                            seed: int = MONTE_CARLO_SEED) -> HalfRangeEstimate:
-    """JCGM 101 for half the peak-to-peak of ``errors_arcsec`` (points in their natural
-    order: by angle, position or sample).
+    """JCGM 101 for half the peak-to-peak of ``errors`` (in the budget's unit; points in
+    their natural order: by angle, position or sample).
 
     The measured half range of a noisy curve runs high: noise widens any range.
     The estimator S takes the half range after Fourier shrinkage of the
@@ -159,7 +161,7 @@ def half_range_monte_carlo(errors_arcsec, budget: UncertaintyBudget,
     lowered on long curves (5·10⁶ draws at the most), and a curve of more than
     16 384 points is judged on every k-th point.
     """
-    full = np.asarray(errors_arcsec, dtype=float)
+    full = np.asarray(errors, dtype=float)
     stride = max(1, -(-full.size // MAX_MONTE_CARLO_POINTS))
     points = np.arange(0, full.size, stride)
     e = full[points]
@@ -227,11 +229,12 @@ class Conformity:
     statement: str
     rule: str
     quantity: str = ""  # the decided quantity and how it was evaluated
-    value_arcsec: float = float("nan")
-    expanded_arcsec: float = float("nan")
+    value: float = float("nan")  # the decided value, in ``unit``
+    expanded: float = float("nan")  # its U, in ``unit``
     zones: str = ""
     monte_carlo: HalfRangeEstimate | None = None
     expanded_lower: float = float("nan")  # an asymmetric interval's lower half-width (else U)
+    unit: str = "arcsec"  # the unit of value, expanded and expanded_lower (models.quantity)
 
     @property
     def conforms(self) -> bool | None:
@@ -286,35 +289,40 @@ def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
                    t=f"{t:g}{q}")
 
 
-def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec: float | None,
+def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | float | None,
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
-                      unit: str = "\"", point_names=None) -> Conformity:
-    """The verdict on an error curve against ±``tolerance_arcsec`` (in ``unit``, the
-    errors' own: arcsec, or nm for an interferometer).
+                      point_names=None) -> Conformity:
+    """The verdict on an error curve against ±``tolerance``.
 
-    ``invalid_reason`` (for example a failed closure) withholds the statement, and so
-    does U ≥ T. ``point_names`` name the points as the results table does (the deciding
-    point is named so).
+    ``errors`` are in the budget's unit (arcsec, or nm for an interferometer); a
+    ``tolerance`` Quantity is converted to it (an angle against a length is refused with
+    :class:`~models.quantity.UnitError`), a bare number is taken in it. Figures are
+    written with that unit. ``invalid_reason`` (for example a failed closure) withholds
+    the statement, and so does U ≥ T. ``point_names`` name the points as the results
+    table does (the deciding point is named so).
     """
-    q = unit
+    q = budget.unit.written()
+    if isinstance(tolerance, Quantity):
+        tolerance = float(tolerance.in_unit(budget.unit))
     what = message(what) if not hasattr(what, "template") else what
     rule_text = message(DECISION_RULES[rule])
-    sentence = {v: message(template, t=f"{float(tolerance_arcsec or 0):g}{q}")
+    sentence = {v: message(template, t=f"{float(tolerance or 0):g}{q}")
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
     if invalid_reason:
         return Conformity("not assessed", message(
             QT_TR_NOOP("No statement of conformity: {reason}."), reason=invalid_reason),
-            rule_text)
-    if tolerance_arcsec is None:
+            rule_text, unit=budget.unit.key)
+    if tolerance is None:
         return Conformity("not assessed", message(QT_TR_NOOP(
-            "No statement of conformity: no specification (tolerance) was given.")), rule_text)
-    e = np.asarray(errors_arcsec, dtype=float)
-    t = float(tolerance_arcsec)
+            "No statement of conformity: no specification (tolerance) was given.")), rule_text,
+            unit=budget.unit.key)
+    e = np.asarray(errors, dtype=float)
+    t = float(tolerance)
     if quantity == "points":
-        u = budget.expanded_arcsec
+        u = budget.expanded
         verdicts = [_verdict(abs(x), t, w if rule != "simple" else 0.0, rule) for x, w in zip(e, u,
                                                                                               strict=True)]
         worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
@@ -333,7 +341,7 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
             return Conformity("not assessed", joined([_too_uncertain(w_max, t, q, d), " ",
                                                       message(QT_TR_NOOP("(at {point})"),
                                                               point=name)]),
-                              rule_text, quantity_text, x, w)
+                              rule_text, quantity_text, x, w, unit=budget.unit.key)
         text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
                                   "the deciding point is {point}: |e| = {e}, U = {u}. "
                                   "{sentence}"),
@@ -341,7 +349,8 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
                        u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
         zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
                         zones=_zones(t, w, rule, d, q))
-        return Conformity(verdict, text, rule_text, quantity_text, x, w, zones)
+        return Conformity(verdict, text, rule_text, quantity_text, x, w, zones,
+                          unit=budget.unit.key)
     mc = half_range_monte_carlo(e, budget)
     x, w = mc.value, mc.u_upper
     d = uncertainty_decimals(min(mc.u_upper, mc.u_lower))
@@ -374,7 +383,7 @@ def decide_conformity(errors_arcsec, budget: UncertaintyBudget, tolerance_arcsec
         p=f"{100 * mc.probability:.2f}")])
     return Conformity(verdict, text, rule_text, quantity_text, x, w,
                       "" if verdict == "not assessed" else _zones(t, w, rule, d, q), mc,
-                      mc.u_lower)
+                      mc.u_lower, budget.unit.key)
 
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:

@@ -21,6 +21,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.crosscal.solve import solve_crosscal
+from models.crosscal.uncertainty import design_uncertainty, estler_full_rosette, monte_carlo_check
 from models.fringe.analysis import FRINGE
 from models.fringe.report import fringe_budget
 from models.messages import QT_TR_NOOP, message
@@ -31,8 +33,10 @@ from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table
 from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
+from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
+from models.validation.crosscal_rig import CrossCalRig
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
 from models.validation.positioning_rig import AxisRig
@@ -84,7 +88,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
     theta = np.arange(-60.0, 60.1, 5.0)
     truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
     noise, u_standard = 0.5, 0.3
-    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty_arcsec=0.6,
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=0.6,
                                                             basis="U95"),))
     clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
     deviations, budgets = [], []
@@ -94,7 +98,7 @@ def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.
         el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
         result = analyze_run(theta, az, el)
         deviations.append(result.corrected_error_arcsec - truth)
-        budgets.append(theodolite_budget(result, meta).combined_arcsec)
+        budgets.append(theodolite_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -107,7 +111,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
     truth = 1.5 * np.sin(np.radians(theta) + 0.3) + 0.4 * np.sin(2 * np.radians(theta))
     certificate_dev = np.random.default_rng(5).normal(0.0, 0.2, faces)
     u_polygon, noise = 0.10, 0.08
-    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty_arcsec=0.20,
+    meta = CertificateMetadata(standards=(ReferenceStandard("polygon", uncertainty=0.20,
                                                             basis="U95"),))
     settings = {"grade": 5, "ac_roll_arcmin": 0.0}  # the rig's reticle has no roll
     deviations, budgets = [], []
@@ -121,7 +125,7 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
             rows += rig.set_rows(k + 1, reverse=d < 0, start_face=1 if d > 0 else 7)
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
         deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
-        budgets.append(polygon_budget(result, meta).combined_arcsec)
+        budgets.append(polygon_budget(result, meta).combined)
     # face 1 is the zero: its error is zero by definition in set 1, and the budget's
     # simple pattern there is not compared
     return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
@@ -142,7 +146,7 @@ def fringe_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndar
         values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
         result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
         deviations.append(result.compensated_error)
-        budgets.append(fringe_budget(result, meta).combined_arcsec)
+        budgets.append(fringe_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -174,7 +178,7 @@ def positioning_budget_trials(trials: int, rng: np.random.Generator
                                  for t in result.positions] for d in (1, -1)])
         mean = np.concatenate([result.iso.forward.mean, result.iso.backward.mean])
         deviations.append(mean - truth)
-        budgets.append(positioning_budget(result, meta).combined_arcsec)
+        budgets.append(positioning_budget(result, meta).combined)
     return np.array(deviations), np.array(budgets)
 
 
@@ -210,7 +214,7 @@ def _agreement_case(workbench: str, run: Callable, trials: int, seed: int) -> Va
 
 
 def theodolite_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Theodolite run")
+    w = THEODOLITE.title
     theta = np.arange(-20.0, 21.0, 1.0)
     zeta = induced_error_arcsec(theta, 3.0, 45.0, 2.0)
     alphas = np.arange(0.0, 360.0, 1.0)
@@ -247,7 +251,7 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
 
 
 def polygon_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Polygon encoder test")
+    w = POLYGON.title
     theta = np.arange(0.0, 360.0, 1.0)
     eps_x, eps_y = pyramidal_readings_arcsec(theta, 600.0, 90.0)
     fine = np.arange(0.0, 360.0, 0.5)
@@ -316,7 +320,7 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
 
 
 def fringe_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Fringe signal analysis")
+    w = FRINGE.title
     per = 64
     theta = equal_steps(8 * per, per)
     # Table 1, the cos channel's B1 read as +3.7346 (../shared/SPEC.md §3)
@@ -355,7 +359,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
 
 
 def positioning_cases(trials: int) -> list[ValidationCase]:
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     lost = 4.0  # arcsec
     rig = AxisRig(_axis_error_deg, lost_motion=lost / 3600)  # no scatter: every figure known
     result = POSITIONING.analyze(positioning_readings(rig), {})
@@ -405,7 +409,7 @@ def positioning_hand_cases() -> list[ValidationCase]:
     a run small enough to work out on paper (see HAND_EXAMPLE)."""
     from models.uncertainty.iso230 import iso230_evaluate
 
-    w = QT_TR_NOOP("Positioning (axis)")
+    w = POSITIONING.title
     figures = iso230_evaluate(np.array(HAND_EXAMPLE["positions"]),
                               np.array(HAND_EXAMPLE["deviations"], float),
                               np.array(HAND_EXAMPLE["directions"])).figures
@@ -448,7 +452,56 @@ def uncertainty_cases() -> list[ValidationCase]:
     return cases
 
 
+def crosscal_cases(trials: int) -> list[ValidationCase]:
+    """Cross-calibration: Estler's closed form, exact simulations of full and partial
+    rosettes by the rig (mounting errors, stops, drift, tilt), the harmonics a design
+    cannot see, and the stated u against a Monte Carlo of the same design."""
+    w = QT_TR_NOOP("Cross-calibration (polygon + encoder)")
+    u, _, _ = estler_full_rosette(24, 0.02)
+    planned = design_uncertainty(24, range(24), 0.02, closure=False)
+    cases = [_close(w, QT_TR_NOOP("full rosette, 24 faces, σ = 0.02\": u = σ√(n − 1)/n (Estler)"),
+                    CHECK_FIGURE, u, float(planned.encoder_error_u_arcsec.max()), 1e-7, digits=5)]
+    harmonics = {1: (2.0, 0.3), 2: (1.0, 1.1), 3: (0.5, 2.0), 6: (0.3, 0.5)}
+    for mountings, name in ((list(range(12)), QT_TR_NOOP("3-D simulation, full rosette of 12 faces, "
+                                                         "no noise: |result − truth|")),
+                            ([0, 1, 5], QT_TR_NOOP("3-D simulation, mountings 0, 1, 5 of 12, no "
+                                                   "noise: |result − truth|"))):
+        rig = CrossCalRig(12, harmonics, np.random.default_rng(33).normal(0.0, 1.5, 12),
+                          drift_arcsec=0.5, tilt_arcsec=30.0, rng=np.random.default_rng(34))
+        j, i, a, c = (np.array(col) for col in zip(*rig.rows(mountings), strict=True))
+        result = solve_crosscal(j, i, a, c, faces=12, noise_arcsec=0.01)
+        true_e, true_d = rig.truth()
+        cases.append(_at_most(w, name, EXACT_SIMULATION, 0.002, float(max(
+            np.abs(result.encoder_error_arcsec - true_e).max(),
+            np.abs(result.polygon_deviation_arcsec - true_d).max()))))
+    rig = CrossCalRig(12, harmonics, np.zeros(12), rng=np.random.default_rng(35))
+    j, i, a, c = (np.array(col) for col in zip(*rig.rows([0, 4, 8]), strict=True))
+    unseen = solve_crosscal(j, i, a, c, faces=12, noise_arcsec=0.01)
+    cases.append(ValidationCase(
+        w, QT_TR_NOOP("mountings 0, 4, 8 of 12: the harmonics not determined are named and "
+                      "withheld"), EXACT_SIMULATION, "3, 6",
+        ", ".join(map(str, unseen.undetermined_encoder_harmonics)),
+        unseen.undetermined_encoder_harmonics == (3, 6) and unseen.encoder_error_arcsec is None))
+    rig = CrossCalRig(6, {1: (2.0, 0.3)}, np.random.default_rng(36).normal(0.0, 1.5, 6),
+                      drift_arcsec=0.5, noise_arcsec=0.2, rng=np.random.default_rng(37))
+    check = monte_carlo_check(*(np.array(col) for col in zip(*rig.rows([0, 1, 3]), strict=True)),
+                              runs=trials, seed=38, faces=6)
+    tolerance = max(0.10, 3.0 / math.sqrt(2.0 * trials))
+    cases.append(ValidationCase(
+        w, message(QT_TR_NOOP("stated u against the spread of {trials} simulated runs (ν = {dof})"),
+                   trials=trials, dof=f"{check.dof:g}"),
+        BUDGET_VS_MONTE_CARLO, message(QT_TR_NOOP("ratio 1 ± {tolerance}"), tolerance=f"{tolerance:.2f}"),
+        message(QT_TR_NOOP("ratio {ratio}, U covers {coverage} %"), ratio=f"{check.ratio:.3f}",
+                coverage=f"{100 * check.coverage:.1f}"),
+        abs(check.ratio - 1.0) <= tolerance))
+    return cases
+
+
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
+    from models.registry import KINDS  # a workbench's own cases, kept in its folder
+
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
-            + positioning_cases(trials) + uncertainty_cases())
+            + positioning_cases(trials) + crosscal_cases(trials)
+            + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
+            + uncertainty_cases())

@@ -658,7 +658,6 @@
     </message>
     <message>
         <source>Positioning (axis)</source>
-        <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1&quot; everywhere. Forward means 2&quot; and 4&quot;, backward 0&quot; and 1&quot;: E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
         <translation>定位（轴线）</translation>
     </message>
     <message>
@@ -1449,6 +1448,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture)</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -1884,8 +1884,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>校准日期</translation>
     </message>
     <message>
-        <source>Tolerance ± (&quot;)</source>
-        <translation>允差 ± (&quot;)</translation>
+        <source>Tolerance ±</source>
+        <translation>允差 ±</translation>
+    </message>
+    <message>
+        <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
+        <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
     <message>
         <source>Laboratory</source>
@@ -1920,8 +1924,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>等级 / 规格</translation>
     </message>
     <message>
-        <source>Resolution (&quot;)</source>
-        <translation>分辨力 (&quot;)</translation>
+        <source>Resolution</source>
+        <translation>分辨力</translation>
     </message>
     <message>
         <source>Temperature (°C)</source>
@@ -1990,8 +1994,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;{name}.uncertainty_arcsec&apos; must be 0 to 3600&quot; (an angle standard&apos;s uncertainty)</source>
-        <translation>证书字段 &apos;{name}.uncertainty_arcsec&apos; 必须在 0 至 3600&quot; 之间（角度标准的不确定度）</translation>
+        <source>certificate field &apos;{name}.uncertainty&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
@@ -1999,6 +2003,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>certificate metadata must be a JSON object</source>
+        <extracomment>keys written before their figures had a unit (project schema 1) → the keys now</extracomment>
         <translation>证书信息必须是 JSON 对象</translation>
     </message>
     <message>
@@ -2014,16 +2019,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;decision_rule&apos; 必须是 {join} 之一，而不是 &apos;{decision_rule}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;tolerance_arcsec&apos; must be positive</source>
-        <translation>证书字段 &apos;tolerance_arcsec&apos; 必须为正数</translation>
+        <source>certificate field &apos;tolerance&apos; must be positive</source>
+        <translation>证书字段 &apos;tolerance&apos; 必须为正数</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{key}&apos; must be one of {join}, not &apos;{unit}&apos;</source>
+        <translation>证书字段 &apos;{key}&apos; 必须是 {join} 之一，而不是 &apos;{unit}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;item_resolution&apos; is in {given}, but the errors are in {unit}: state the resolution in a unit of the same kind</source>
+        <translation>证书字段 &apos;item_resolution&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出分辨力</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;tolerance&apos; is in {given}, but the errors are in {unit}: state the tolerance in a unit of the same kind</source>
+        <translation>证书字段 &apos;tolerance&apos; 的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出允差</translation>
     </message>
     <message>
         <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
         <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
     </message>
     <message>
-        <source>certificate field &apos;item_resolution_arcsec&apos; must be 0 to 3600&quot;</source>
-        <translation>证书字段 &apos;item_resolution_arcsec&apos; 必须在 0 至 3600&quot; 之间</translation>
+        <source>certificate field &apos;item_resolution&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
+        <translation>证书字段 &apos;item_resolution&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
     </message>
     <message>
         <source>certificate field &apos;coverage_probability_pct&apos; must be 50 to 99.9 %</source>
@@ -2468,8 +2485,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>签名及日期</translation>
     </message>
     <message>
-        <source>Uncertainty (&quot;)</source>
-        <translation>不确定度 (&quot;)</translation>
+        <source>Unit of the uncertainty (&quot;, µrad, nm, µm …)</source>
+        <translation>不确定度的单位（&quot;、µrad、nm、µm …）</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty is in {given}, but the errors are in {unit}: state it in a unit of the same kind</source>
+        <translation>参考标准 &apos;{name}&apos;：其不确定度的单位是 {given}，而误差的单位是 {unit}：请用同类的单位给出</translation>
     </message>
     <message>
         <source>Stated as (U95, MPE, u)</source>
@@ -3154,10 +3175,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ISO 230-2 要求每个目标位置每个方向至少测量 {n} 次；本次检测少于此数（{runs}）。各指标已评定并加以标注。</translation>
     </message>
     <message>
-        <source>Positioning test of an axis</source>
-        <translation>轴线定位检测</translation>
-    </message>
-    <message>
         <source>target {target} ({arrow})</source>
         <translation>目标位置 {target}（{arrow}）</translation>
     </message>
@@ -3509,11 +3526,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Set {number}</source>
-        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis). Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
+        <extracomment>Table 1 of the seed: accuracy (±&quot;) of encoder grades 1–7. The seed&apos;s ε_x/ψ² (1/arcsec): its largest over θ at ω = 90° (θ ≈ 111°). The largest ε_x/ψ² over every θ and ω (1/arcsec): (1 + √2)/2 rad⁻¹ = 5.852e-6, at ω = 67.5°, θ = 225° (and ω = 247.5°). ω is not known before measuring, so the allowed tilt is judged with this one. Levelled frame: the polygon&apos;s own term is a 2θ pattern of amplitude ψ²/4 (rad), so two faces differ by at most ψ²/2: 1/(2 rad) = 2.424e-6 per arcsec (tests check it by 3-D).</extracomment>
         <translation>第 {number} 组</translation>
     </message>
     <message>
         <source>at least 4 vertical readings are needed to identify the tilt</source>
+        <extracomment>The set-ups the horizontal readings may be taken in: ``levelled`` (autocollimator and rotary axis levelled, the usual lab set-up) and ``polygon`` (seed 001&apos;s frame: the autocollimator&apos;s vertical along the polygon&apos;s axis).</extracomment>
         <translation>辨识塔差至少需要 4 个竖直读数</translation>
     </message>
     <message>
@@ -3859,10 +3877,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
     </message>
     <message>
-        <source>--zenith applies to theodolite, not {kind}</source>
-        <translation>--zenith 适用于 theodolite，而不是 {kind}</translation>
-    </message>
-    <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
         <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
     </message>
@@ -3962,8 +3976,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不确定度给出方式必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number of arcseconds</source>
-        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负角秒数</translation>
+        <source>uncertainty input &apos;{name}&apos;: its value must be a finite, non-negative number</source>
+        <translation>不确定度输入量 &apos;{name}&apos;：其值必须是有限的非负数</translation>
     </message>
     <message>
         <source>non-binary statement with a guard band w = U (ILAC-G8:09/2019, 4.2.3): pass when the result lies within T − w; conditional pass within T; conditional fail within T + w; fail beyond T + w</source>
@@ -4291,6 +4305,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
+        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
@@ -4336,6 +4351,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{source}: workbench &apos;{key}&apos;: &apos;settings&apos; must be an object</source>
         <translation>{source}：工作台 &apos;{key}&apos;：&apos;settings&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
+        <translation>{where}：原始帧与其 SHA-256 不符（采集后被改动）；未作任何更改</translation>
     </message>
     <message>
         <source>{source}: workbench &apos;{key}&apos; is not one this version knows; nothing was changed</source>
@@ -5084,6 +5103,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>ISO 230-2 worked by hand (2 targets, 3 runs each way): {figure}</source>
+        <extracomment>ISO 230-2 by hand: two targets, three runs each way, s = 1&quot; everywhere. Forward means 2&quot; and 4&quot;, backward 0&quot; and 1&quot;: E↑ = 2, E = 4 − 0 = 4, B = max(|2 − 0|, |4 − 1|) = 3, B̄ = (2 + 3)/2 = 2.5, M = 2.5 − 1 = 1.5, R = max(2s↑ + 2s↓ + |B_i|, 4s) = 4 + 3 = 7, A = max(x̄ + 2s) − min(x̄ − 2s) = (4 + 2) − (0 − 2) = 8.</extracomment>
         <translation>ISO 230-2 手算示例（2 个目标位置，每个方向 3 次）：{figure}</translation>
     </message>
     <message>
@@ -5802,7 +5822,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the other run has no corrected curve to draw</source>
-        <extracomment>workbench → &quot;module:function&quot; giving the figure whose &quot;corrected&quot; series is overlaid</extracomment>
         <translation>另一次测量没有可绘制的修正后曲线</translation>
     </message>
     <message>
@@ -5899,7 +5918,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive)</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
@@ -5920,6 +5939,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Not connected</source>
+        <extracomment>finished sessions per workbench (stored form), and the one of this connection rows filled by Take reading or auto-take: (workbench, row, values)</extracomment>
         <translation>未连接</translation>
     </message>
     <message>
@@ -6005,7 +6025,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only</extracomment>
+        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index in the worker&apos;s :attr:`CaptureWorker.raw` a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -6072,6 +6092,236 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>Not compared with the log after compensation: {reason}</source>
         <translation>未与补偿后记录比较：{reason}</translation>
+    </message>
+    <message>
+        <source>Auto-take when stable</source>
+        <translation>稳定时自动取数</translation>
+    </message>
+    <message>
+        <source>The spread allowed over the dwell (arcseconds; a readout&apos;s own unit)</source>
+        <translation>驻留时间内允许的离散（角秒；读数器为其自身单位）</translation>
+    </message>
+    <message>
+        <source>Window</source>
+        <translation>稳定范围</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>驻留时间</translation>
+    </message>
+    <message>
+        <source>Auto-take: taken; move to the next point</source>
+        <translation>自动取数：已取；请转到下一点</translation>
+    </message>
+    <message>
+        <source>Auto-take: settling, {percent} % of the dwell</source>
+        <translation>自动取数：正在稳定，已达驻留时间的 {percent} %</translation>
+    </message>
+    <message>
+        <source>Next: {what}</source>
+        <translation>下一步：{what}</translation>
+    </message>
+    <message>
+        <source>Connected: {port} (reconnected after: {reason})</source>
+        <translation>已连接：{port}（曾因以下原因重新连接：{reason}）</translation>
+    </message>
+    <message>
+        <source>{what} — reading {k} of {n}</source>
+        <translation>{what} — 第 {k} 次读数，共 {n} 次</translation>
+    </message>
+    <message>
+        <source>go to face {face}</source>
+        <translation>转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>stay at face {face}</source>
+        <translation>停在第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face}</source>
+        <translation>第 {set} 测回：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>set {set}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>第 {set} 测回：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>go to the next face (set the number of faces)</source>
+        <translation>转到下一面（请设置面数）</translation>
+    </message>
+    <message>
+        <source>go back to face {face} (encoder ≈ {encoder}°): the closure of set {set}</source>
+        <translation>回到第 {face} 面（编码器 ≈ {encoder}°）：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go back to face {face}: the closure of set {set}</source>
+        <translation>回到第 {face} 面：第 {set} 测回的闭合读数</translation>
+    </message>
+    <message>
+        <source>go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>turn the axis to the next θ and type it in the θ column</source>
+        <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
+    </message>
+    <message>
+        <source>θ = {theta}</source>
+        <translation>θ = {theta}</translation>
+    </message>
+    <message>
+        <source>{where}: the raw frames must be a list of sessions</source>
+        <extracomment>a session&apos;s keys, in the order they are stored</extracomment>
+        <translation>{where}：原始数据帧必须是采集会话的列表</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: not a capture session ({keys} expected)</source>
+        <translation>{where}，第 {i} 个会话：不是采集会话（应有 {keys}）</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: a frame or a take is not as stored by AngleBench</source>
+        <translation>{where}，第 {i} 个会话：某一帧或某次取数与 AngleBench 保存的格式不符</translation>
+    </message>
+    <message>
+        <source>{source}: &apos;raw_capture&apos; must be an object; nothing was changed</source>
+        <translation>{source}：&apos;raw_capture&apos; 必须是对象；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}: &apos;sha256&apos; and &apos;sessions&apos; expected; nothing was changed</source>
+        <translation>{where}：应有 &apos;sha256&apos; 和 &apos;sessions&apos;；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{reason}; nothing was changed</source>
+        <translation>{reason}；未作任何更改</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
+        <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
+    </message>
+    <message>
+        <source>mounting, position, encoder and autocollimator columns differ in length</source>
+        <translation>安装位置、面号、编码器和自准直仪各列长度不一致</translation>
+    </message>
+    <message>
+        <source>{faces} faces: a polygon has at least 3</source>
+        <translation>{faces} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>drift must be one of {modes}, not {mode}</source>
+        <translation>漂移处理方式须为 {modes} 之一，而不是 {mode}</translation>
+    </message>
+    <message>
+        <source>ac_alignment must be one of {frames}, not {frame}</source>
+        <translation>ac_alignment 须为 {frames} 之一，而不是 {frame}</translation>
+    </message>
+    <message>
+        <source>the vertical readings ({count}) are not one per row ({rows})</source>
+        <translation>竖直读数（{count} 个）与行数（{rows} 行）不是一一对应</translation>
+    </message>
+    <message>
+        <source>only mounting {mounting}: the faces and the encoder&apos;s steps are not connected — at least two mountings are needed</source>
+        <translation>只有安装位置 {mounting}：各面与编码器的步距未能关联——至少需要两个安装位置</translation>
+    </message>
+    <message>
+        <source>row {row}: encoder {encoder} is {offset} from step {step} ({nominal}) where mounting {mounting} reads face {face}: a mounting that starts elsewhere, or a wrong mounting or face number</source>
+        <translation>第 {row} 行：编码器读数 {encoder} 与第 {step} 步（{nominal}）相差 {offset}，此处安装位置 {mounting} 读第 {face} 面：该安装位置起点不同，或安装位置号、面号有误</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} do not connect the faces: no harmonic of the encoder&apos;s error or of the face deviations is determined</source>
+        <translation>安装位置 {mountings} 未能关联各面：编码器误差和各面偏差的谐波均无法确定</translation>
+    </message>
+    <message>
+        <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not)</extracomment>
+        <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} {value} is not a whole number</source>
+        <translation>第 {row} 行：{column} {value} 不是整数</translation>
+    </message>
+    <message>
+        <source>row {row}: {column} is not a number</source>
+        <translation>第 {row} 行：{column} 不是数字</translation>
+    </message>
+    <message>
+        <source>row {row}: face {face} is outside 1…{faces} (face count {faces})</source>
+        <translation>第 {row} 行：第 {face} 面超出 1…{faces}（面数 {faces}）</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting} is outside 0…{last}</source>
+        <translation>第 {row} 行：安装位置 {mounting} 超出 0…{last}</translation>
+    </message>
+    <message>
+        <source>mounting {mounting} (rows {first}…{last}): face(s) {faces} missing — every mounting reads all {count} faces</source>
+        <translation>安装位置 {mounting}（第 {first}…{last} 行）：缺少第 {faces} 面——每个安装位置须读全部 {count} 个面</translation>
+    </message>
+    <message>
+        <source>no vertical readings: the polygon&apos;s tilt on the shaft is neither identified nor removed</source>
+        <translation>没有竖直读数：未辨识也未消除多面棱体在轴上的倾斜</translation>
+    </message>
+    <message>
+        <source>{readings} readings determine {unknowns} unknowns with none left over: the scatter of a reading cannot be evaluated — add a mounting, or state the autocollimator&apos;s σ</source>
+        <translation>{readings} 个读数确定 {unknowns} 个未知量，没有剩余自由度：无法评定单次读数的分散性——请增加安装位置，或给出自准直仪的 σ</translation>
+    </message>
+    <message>
+        <source>row {row}: mounting {mounting}, face {face} repeats row {other} (a duplicate reading; only the closure reading, last, may repeat the first face)</source>
+        <translation>第 {row} 行：安装位置 {mounting} 的第 {face} 面与第 {other} 行重复（重复读数；只有最后的闭合读数可以重复第一个面）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: vertical readings missing: its tilt is neither identified nor removed</source>
+        <translation>安装位置 {mounting}：缺少竖直读数：未辨识也未消除其倾斜</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: no closure reading (its first face read again at the end): drift not checked</source>
+        <translation>安装位置 {mounting}：没有闭合读数（最后再读一次第一个面）：未检查漂移</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: closure drift {drift} exceeds the limit ±{limit}: repeat the mounting</source>
+        <translation>安装位置 {mounting}：闭合漂移 {drift} 超过限值 ±{limit}：请重测该安装位置</translation>
+    </message>
+    <message>
+        <source>Cross-calibration (polygon + encoder)</source>
+        <translation>互校准（多面棱体 + 编码器）</translation>
+    </message>
+    <message>
+        <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
+        <translation>全组合测量，24 面，σ = 0.02&quot;：u = σ√(n − 1)/n（Estler）</translation>
+    </message>
+    <message>
+        <source>3-D simulation, full rosette of 12 faces, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面全组合测量，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>3-D simulation, mountings 0, 1, 5 of 12, no noise: |result − truth|</source>
+        <translation>三维仿真，12 面中的安装位置 0、1、5，无噪声：|结果 − 真值|</translation>
+    </message>
+    <message>
+        <source>mountings 0, 4, 8 of 12: the harmonics not determined are named and withheld</source>
+        <translation>12 面中的安装位置 0、4、8：无法确定的谐波被指明且不予报告</translation>
+    </message>
+    <message>
+        <source>stated u against the spread of {trials} simulated runs (ν = {dof})</source>
+        <translation>给出的 u 与 {trials} 次仿真测量的分散性比较（ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>ratio 1 ± {tolerance}</source>
+        <translation>比值 1 ± {tolerance}</translation>
+    </message>
+    <message>
+        <source>ratio {ratio}, U covers {coverage} %</source>
+        <translation>比值 {ratio}，U 覆盖 {coverage} %</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: the vertical readings scatter {rms} RMS about the tilt fitted, far more than the horizontal ones ({sigma}): check them; the tilt correction rests on them</source>
+        <translation>安装位置 {mounting}：竖直读数相对拟合倾斜的分散为 {rms} RMS，远大于水平读数（{sigma}）：请检查；倾斜修正依赖于这些读数</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: a tilt of {psi} was fitted — no polygon sits that far off its seat: check the vertical readings</source>
+        <translation>安装位置 {mounting}：拟合得到的倾斜为 {psi}——多面棱体不可能安装偏斜到这种程度：请检查竖直读数</translation>
     </message>
 </context>
 </TS>

@@ -47,7 +47,7 @@ CHILD = textwrap.dedent("""
     window.installEventFilter(watcher)
     window.show()
     app.exec()
-    window.recovery.discard()
+    window.projects.recovery.discard()
 """)
 
 

@@ -14,7 +14,7 @@ from PySide6.QtCore import Qt
 
 from models.positioning.before_after import AFTER_COLOUR, after_figure, before_after
 from models.positioning.model import PositioningResult
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import explained, tr
 from widgets.legend_placement import place_legend
 
 __all__ = ["AfterCompensation"]
@@ -90,7 +90,7 @@ class AfterCompensation:
         if result is None:
             return
         try:
-            text = translated(before_after(result, self.after).text(self.label))
+            text = before_after(result, self.after).text(self.label)
         except ValueError as exc:
             text = tr("Not compared with the log after compensation: {reason}").format(
                 reason=explained(exc))

@@ -1,0 +1,93 @@
+"""The window's side of the certificate presenter (app/certificate_presenter.py): the
+certificate dialog, the questions before a certificate is issued, the file dialog, the
+wait cursor and the status bar.
+
+Questions and messages go through the window's ``ask`` and ``tell`` so tests can answer
+them."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QInputDialog, QMessageBox
+
+from models.certificate.metadata import CertificateMetadata
+from widgets.certificate_dialog import CertificateDialog
+from widgets.i18n import tr
+
+__all__ = ["CertificateDialogs", "with_chosen_suffix"]
+
+
+def with_chosen_suffix(path: str, chosen_filter: str) -> str:
+    """A name typed without an extension gets the one of the file type chosen in the dialog
+    ("Excel workbook (*.xlsx)" writes out.xlsx, not a CSV named "out")."""
+    if not path or Path(path).suffix:
+        return path
+    match = re.search(r"\*(\.[A-Za-z0-9]+)", chosen_filter or "")
+    return path + match.group(1) if match else path
+
+
+class CertificateDialogs:
+    """:class:`app.certificate_presenter.CertificateView` for ``window`` (the main window;
+    its ``certificates`` is the presenter, its ``projects`` knows the last folder used)."""
+
+    def __init__(self, window: Any) -> None:
+        self.window = window
+
+    def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
+                                 raw: dict) -> CertificateMetadata | None:
+        dialog = CertificateDialog(meta, self.window)
+        dialog.lab_defaults_saved.connect(self.window.certificates.save_lab_defaults)
+        if problems:  # a stored detail that no longer reads: shown as stored, marked
+            dialog.show_problems(problems, raw)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return None
+        return dialog.metadata()
+
+    def confirm_draft(self, missing: list[str]) -> bool:
+        answer = self.window.ask(
+            tr("Export a draft?"),
+            tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not a "
+               "certificate, and nothing is recorded in the register. Export the draft anyway?")
+            .format(missing=", ".join(tr(m) for m in missing)),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
+    def confirm_implausible(self, reason: str) -> bool:
+        answer = self.window.ask(
+            tr("Certify these figures?"),
+            tr("{reason}\n\nIssue a certificate on this result anyway? Only if you have "
+               "checked the readings and the figures are right.").format(reason=reason),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
+    def ask_change_note(self, revision) -> str:
+        question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
+                       "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else
+                    tr("This certificate amends {number}. What changed, and why? (printed on "
+                       "the certificate; ISO/IEC 17025 7.8.8)"))
+        text, ok = QInputDialog.getMultiLineText(self.window, tr("What changed"),
+                                                 question.format(number=revision.number))
+        return text if ok else ""
+
+    def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
+        path, chosen = QFileDialog.getSaveFileName(
+            self.window, title, str(Path(self.window.projects.last_dir()) / suggested), file_filter)
+        return with_chosen_suffix(path, chosen)
+
+    def tell(self, title: str, text: str) -> None:
+        self.window.tell(title, text)
+
+    def show_status(self, text: str, milliseconds: int) -> None:
+        self.window.statusBar().showMessage(text, milliseconds)
+
+    def wait_cursor(self, on: bool) -> None:
+        if on:
+            QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        else:
+            QApplication.restoreOverrideCursor()

@@ -1,0 +1,316 @@
+"""``make new-workbench NAME=key TITLE="…" TITLE_ZH="…"``: a new workbench's starting point.
+
+Writes the two folders (``models/KEY``, ``widgets/KEY``), a sample, the manual pages in
+English and Chinese (linked from the manuals' index), its entry in ``models/registry.py``
+and the Chinese of its texts in ``resources/translations/anglebench_zh_CN.ts``. The model
+it writes is a working one — the errors of indication of an angle against a reference, a
+validation case by simulation — to be replaced by the workbench's own; what it has then
+is checked by ``tests/test_workbench_contract.py``, each failure saying what to add where.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from html import escape
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+#: the texts of the written model with their Chinese (added to the .ts when missing)
+TEXTS_ZH = {
+    "Reference angle, as the standard reads it": "参考角（标准器读数）",
+    "Angle the instrument under test indicates": "被检仪器的示值角",
+    "Zero": "零点",
+    "as read": "按读数",
+    "at the first reading": "在第一个读数处",
+    "Whether the errors are taken relative to the first reading": "示值误差是否以第一个读数为零点",
+    "at least {n} readings are needed, not {got}": "至少需要 {n} 个读数，而不是 {got}",
+    "Error of indication {low} … {high} (peak-to-peak {ptp}) over {n} readings":
+        "示值误差 {low} … {high}（峰峰值 {ptp}），共 {n} 个读数",
+    "Error of indication, peak-to-peak {ptp}": "示值误差峰峰值 {ptp}",
+    "Error of indication": "示值误差",
+    "error of indication": "示值误差",
+    "a known error recovered from simulated readings": "由仿真读数复现已知误差",
+}
+
+MODEL = '''"""{title} as a workbench: readings columns, settings, analysis, JSON and summary.
+
+Written by ``make new-workbench`` as a starting point — the errors of indication of an
+angle against a reference — to be replaced by the workbench's own model.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+{model_imports}
+
+__all__ = ["{const}"]
+
+COLUMNS = (
+    Column("reference_deg", "reference", "deg", ColumnKind.ANGLE_DEG,
+           help=QT_TR_NOOP("Reference angle, as the standard reads it")),
+    Column("indicated_deg", "indicated", "deg", ColumnKind.ANGLE_DEG,
+           help=QT_TR_NOOP("Angle the instrument under test indicates")),
+)
+
+PARAMETERS = (
+    Parameter("zero", QT_TR_NOOP("Zero"), "choice", "none",
+              choices=(("none", QT_TR_NOOP("as read")), ("first", QT_TR_NOOP("at the first reading"))),
+              help=QT_TR_NOOP("Whether the errors are taken relative to the first reading")),
+)
+
+
+@dataclass(frozen=True)
+class {cls}Result:
+    reference_deg: np.ndarray
+    error_arcsec: np.ndarray  # indicated − reference
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def peak_to_peak(self) -> float:
+        return float(np.ptp(self.error_arcsec))
+
+
+def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> {cls}Result:
+    reference = parsed.values["reference_deg"].astype(float)
+    indicated = parsed.values["indicated_deg"].astype(float)
+    if reference.size < 2:
+        raise ValueError(message(QT_TR_NOOP("at least {{n}} readings are needed, not {{got}}"),
+                                 n=2, got=reference.size))
+    error = ((indicated - reference + 180.0) % 360.0 - 180.0) * 3600.0
+    if settings["zero"] == "first":
+        error = error - error[0]
+    return {cls}Result(reference, error)
+
+
+def to_json(result: {cls}Result) -> dict[str, Any]:
+    return {{"reference_deg": result.reference_deg.tolist(),
+            "error_arcsec": result.error_arcsec.tolist(),
+            "peak_to_peak_arcsec": result.peak_to_peak,
+            "sign_convention": SIGN_CONVENTION, "warnings": list(result.warnings)}}
+
+
+def summary(result: {cls}Result) -> str:
+    return lines([message(
+        QT_TR_NOOP("Error of indication {{low}} … {{high}} (peak-to-peak {{ptp}}) over {{n}} readings"),
+        low=f"{{result.error_arcsec.min():+.2f}}\\"", high=f"{{result.error_arcsec.max():+.2f}}\\"",
+        ptp=f"{{result.peak_to_peak:.2f}}\\"", n=result.error_arcsec.size)])
+
+
+def error_figure(result: {cls}Result) -> PlotFigure:
+    order = np.argsort(result.reference_deg, kind="stable")
+    return PlotFigure(QT_TR_NOOP("Error of indication"), "θ (°)", QT_TR_NOOP("error (\\")"), (
+        PlotSeries(QT_TR_NOOP("error of indication"), result.reference_deg[order],
+                   result.error_arcsec[order], (31, 119, 180), True, role="corrected"),))
+
+
+class {cls}(Workbench, OverlaysRuns, ShowsHeadline):
+    key = KEY
+    title = TITLE
+    columns = COLUMNS
+    parameters = PARAMETERS
+    sample_file = "{key}_sample.csv"
+    method_reference = "VIM 4.1 (JCGM 200:2012): error of indication = indicated − reference"
+    presenter = "widgets.{key}.presenter:{cls}Presenter"
+    nominal_column = "reference_deg"
+    entry_column = "indicated_deg"
+    analyze = staticmethod(analyze)
+    to_json = staticmethod(to_json)
+    summary = staticmethod(summary)
+    overlay_figure = staticmethod(error_figure)
+
+    def verdict(self, result):
+        return message(QT_TR_NOOP("Error of indication, peak-to-peak {{ptp}}"),
+                       ptp=f"{{result.peak_to_peak:.2f}}\\"")
+
+    def headline(self, result):
+        return {{"peak-to-peak (\\")": result.peak_to_peak}}
+
+    def validation_cases(self, trials):
+        from models.validation.cases import EXACT_SIMULATION, ValidationCase
+
+        # readings made from a known error (not from the model's formula): 5" + 2" sin θ
+        reference = np.linspace(0.0, 350.0, 36)
+        truth = 5.0 + 2.0 * np.sin(np.radians(reference))
+        rows = [[f"{{r:.6f}}", f"{{r + t / 3600.0:.9f}}"] for r, t in zip(reference, truth, strict=True)]
+        from models.readings.sheet import ReadingsSheet
+
+        result = self.analyze(ReadingsSheet(self.columns, rows).parse(), self.default_settings)
+        worst = float(np.max(np.abs(result.error_arcsec - truth)))
+        return [ValidationCase(self.title, QT_TR_NOOP("a known error recovered from simulated readings"),
+                               EXACT_SIMULATION, "≤ 0.001\\"", f"{{worst:.2g}}\\"", worst <= 0.001)]
+
+
+{const} = {cls}()
+'''
+
+INIT = '''"""The {key} workbench: {title}.
+
+Its key and title are given once, here: the analysis, the window and the registry use them.
+"""
+
+from models.messages import QT_TR_NOOP
+
+KEY = "{key}"
+TITLE = QT_TR_NOOP("{title}")
+'''
+
+VIEW = '''"""The {key} workbench's view: the shared readings and set-up, and its error curve."""
+
+from __future__ import annotations
+
+from models.{key} import TITLE
+from widgets.error_plot import ErrorPlot
+from widgets.i18n import tr
+from widgets.workbench_view import WorkbenchView
+
+
+class {cls}View(WorkbenchView):
+    def __init__(self, parent=None) -> None:
+        super().__init__(TITLE, parent)
+        self.error_plot = ErrorPlot()
+        self.add_plot_tab(self.error_plot, tr("Error curves"))
+
+    def clear_result(self) -> None:
+        self.error_plot.clear()
+'''
+
+PRESENTER = '''"""The {key} workbench's presenter (no widgets: it asks its view to draw)."""
+
+from __future__ import annotations
+
+{presenter_imports}
+
+
+class {cls}Presenter(WorkbenchPresenter):
+    view_class = {cls}View
+
+    def __init__(self, view: {cls}View | None = None, parent=None) -> None:
+        super().__init__({const}, view, parent)
+
+    def show_result(self, result) -> None:
+        self.view.error_plot.show_figure(*self.in_unit(error_figure(result)))
+
+    def clear_result(self) -> None:
+        self.view.clear_result()
+'''
+
+SAMPLE = "reference_deg,indicated_deg\n" + "".join(
+    f"{r},{r + (4.0 + 3.0 * ((r // 30) % 3 - 1)) / 3600.0:.6f}\n" for r in range(0, 360, 30))
+
+MANUAL = '''<html><head><meta charset="utf-8"><title>{title}</title></head><body>
+<p><a href="index{lang}.html">{manual}</a></p>
+<h1>{title}</h1>
+<p>{what}</p>
+</body></html>
+'''
+
+
+def _imports(*lines: str) -> str:
+    """Import lines in the order ruff's isort keeps them (by module)."""
+    return "\n".join(sorted(lines, key=lambda line: line.split()[1]))
+
+
+def _class_name(key: str) -> str:
+    return "".join(part.capitalize() for part in key.split("_"))
+
+
+def _write(path: Path, text: str) -> None:
+    if path.exists():
+        raise SystemExit(f"new-workbench: {path.relative_to(ROOT)} exists already")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, "utf-8")
+
+
+def _register(key: str, const: str) -> None:
+    """The workbench's entry in models/registry.py: its import and its name in the list."""
+    path = ROOT / "models" / "registry.py"
+    text = path.read_text("utf-8")
+    imports = re.findall(r"^from models\.\w+\.analysis import \w+\n", text, re.MULTILINE)
+    text = text.replace(imports[-1], imports[-1] + f"from models.{key}.analysis import {const}\n", 1)
+    text = text.replace("\n)}\n", f"\n    {const},\n)}}\n", 1)
+    path.write_text(text, "utf-8")
+
+
+def _link_manual(key: str, title: str, title_zh: str) -> None:
+    for lang, shown in (("", title), (".zh_CN", title_zh)):
+        path = ROOT / "resources" / "manual" / f"index{lang}.html"
+        text = path.read_text("utf-8")
+        last = text.rindex("</li>\n") + len("</li>\n")
+        link = f'<li><a href="{key}{lang}.html">{escape(shown)}</a></li>\n'
+        path.write_text(text[:last] + link + text[last:], "utf-8")
+
+
+def _translate(texts: dict[str, str]) -> None:
+    """Each text's Chinese in the .ts (a text it has already keeps its translation)."""
+    path = ROOT / "resources" / "translations" / "anglebench_zh_CN.ts"
+    text = path.read_text("utf-8")
+    entries = "".join(
+        f"    <message>\n        <source>{escape(en, quote=False)}</source>\n"
+        f"        <translation>{escape(zh, quote=False)}</translation>\n    </message>\n"
+        for en, zh in texts.items() if f"<source>{escape(en, quote=False)}</source>" not in text)
+    at = text.index("</context>")
+    path.write_text(text[:at] + entries + text[at:], "utf-8")
+
+
+def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
+    """Writes the workbench ``key``; the files written (registry, index and .ts edited)."""
+    if not re.fullmatch(r"[a-z][a-z0-9_]*", key):
+        raise SystemExit("new-workbench: NAME is lower-case letters, digits and _ (a Python name)")
+    names = {"key": key, "title": title, "cls": _class_name(key), "const": key.upper()}
+    names["model_imports"] = _imports(
+        f"from models.{key} import KEY, TITLE", "from models.messages import QT_TR_NOOP, lines, message",
+        "from models.parameters import Parameter", "from models.plots import PlotFigure, PlotSeries",
+        "from models.readings.sheet import Column, ColumnKind, ParsedReadings",
+        "from models.workbench import SIGN_CONVENTION, OverlaysRuns, ShowsHeadline, Workbench")
+    names["presenter_imports"] = _imports(
+        f"from models.{key}.analysis import {names['const']}, error_figure",
+        f"from widgets.{key}.view import {names['cls']}View",
+        "from widgets.workbench_presenter import WorkbenchPresenter")
+    written = {
+        ROOT / "models" / key / "__init__.py": INIT.format(**names),
+        ROOT / "models" / key / "analysis.py": MODEL.format(**names),
+        ROOT / "widgets" / key / "__init__.py": f'"""The {key} workbench\'s window part."""\n',
+        ROOT / "widgets" / key / "view.py": VIEW.format(**names),
+        ROOT / "widgets" / key / "presenter.py": PRESENTER.format(**names),
+        ROOT / "resources" / "samples" / f"{key}_sample.csv": SAMPLE,
+        ROOT / "resources" / "manual" / f"{key}.html": MANUAL.format(
+            title=escape(title), lang="", manual="Manual",
+            what="Readings: the reference angle and the angle the instrument indicates, in "
+                 "degrees; the error of indication is indicated − reference."),
+        ROOT / "resources" / "manual" / f"{key}.zh_CN.html": MANUAL.format(
+            title=escape(title_zh), lang=".zh_CN", manual="手册",
+            what="读数：参考角和被检仪器的示值角（度）；示值误差 = 示值 − 参考值。"),
+    }
+    for path, text in written.items():
+        _write(path, text)
+    _register(key, names["const"])
+    _link_manual(key, title, title_zh)
+    _translate({title: title_zh, **TEXTS_ZH})
+    return list(written)
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="make new-workbench", description=__doc__.splitlines()[0])
+    p.add_argument("name", help="the workbench's key: lower-case letters, digits and _")
+    p.add_argument("--title", required=True, help="its title in English")
+    p.add_argument("--title-zh", required=True, help="its title in Chinese")
+    args = p.parse_args(argv)
+    for path in new_workbench(args.name, args.title, args.title_zh):
+        sys.stdout.write(f"wrote {path.relative_to(ROOT)}\n")
+    sys.stdout.write("edited models/registry.py, resources/manual/index*.html and "
+                     "resources/translations/anglebench_zh_CN.ts\n"
+                     f"next: QT_QPA_PLATFORM=offscreen .venv/bin/python -m pytest "
+                     f"tests/test_workbench_contract.py -k {args.name}\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

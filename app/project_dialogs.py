@@ -1,0 +1,72 @@
+"""The window's side of the project presenter (app/project_presenter.py): its file dialogs
+and questions, the title, the recent files menu, the status bar.
+
+Questions and messages go through the window's ``ask`` and ``tell`` so tests can answer
+them."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from PySide6.QtWidgets import QFileDialog, QMessageBox
+
+from widgets.i18n import tr
+
+__all__ = ["ProjectDialogs"]
+
+
+class ProjectDialogs:
+    """:class:`app.project_presenter.ProjectView` for ``window`` (the main window; its
+    ``projects`` is the presenter, its ``menus.recent_menu`` lists the recent files)."""
+
+    def __init__(self, window: Any) -> None:
+        self.window = window
+
+    def ask_open_path(self, folder: str) -> str:
+        path, _ = QFileDialog.getOpenFileName(self.window, tr("Open project"), folder,
+                                              tr("AngleBench project (*.anglebench.json *.json)"))
+        return path
+
+    def ask_save_path(self, folder: str) -> str:
+        path, _ = QFileDialog.getSaveFileName(self.window, tr("Save project"), folder,
+                                              tr("AngleBench project (*.anglebench.json *.json)"))
+        return path
+
+    def ask_save_changes(self) -> bool | None:
+        answer = self.window.ask(
+            tr("Unsaved readings"), tr("Save the changes to the project first?"),
+            QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
+            | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
+        if answer == QMessageBox.StandardButton.Save:
+            return True
+        return False if answer == QMessageBox.StandardButton.Discard else None
+
+    def ask_recover(self, name: str, when: str) -> bool:
+        answer = self.window.ask(
+            tr("Recover unsaved work"),
+            tr("AngleBench did not close normally. Restore the unsaved readings of {name}, "
+               "autosaved {when}?").format(name=name, when=when),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.Yes)
+        return answer == QMessageBox.StandardButton.Yes
+
+    def tell(self, title: str, text: str) -> None:
+        self.window.tell(title, text)
+
+    def show_status(self, text: str, milliseconds: int) -> None:
+        self.window.statusBar().showMessage(text, milliseconds)
+
+    def show_title(self, title: str) -> None:
+        self.window.setWindowTitle(title)
+
+    def show_recent(self, paths: list[str]) -> None:
+        menu = self.window.menus.recent_menu
+        menu.clear()
+        for path in paths:
+            action = menu.addAction(path)
+            action.triggered.connect(lambda _checked=False, p=path: self.window.projects.open_project(p))
+        menu.setEnabled(bool(paths))
+
+    def show_workbench(self, key: str) -> None:
+        self.window.tabs.setCurrentIndex(next(i for i, p in enumerate(self.window.presenters)
+                                              if p.kind.key == key))

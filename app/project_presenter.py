@@ -1,0 +1,353 @@
+"""Project control: the project file (new, open, save, save as, the recent files), a file
+dropped on the window, the autosave of unsaved work (off the GUI thread for large sheets)
+and the offer of the work a window left when it did not close normally.
+
+A presenter with no widgets: it asks its view (the calls of :class:`ProjectView`) for a
+file name or an answer, and to show the title, the recent files and messages; the
+workbench presenters hold the readings and settings. Tested with a mock view, no window.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import threading
+import time
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import Any, Protocol
+
+from PySide6.QtCore import QObject, QStandardPaths, QTimer
+
+from models import __version__
+from models.project.file import (
+    Project,
+    ProjectFileError,
+    WorkbenchState,
+    check_project,
+    load_project,
+    project_from_json,
+    save_project,
+)
+from models.project.recovery import RecoveryStore
+from widgets.i18n import explained, tr
+from widgets.workbench_presenter import WorkbenchPresenter
+from widgets.workers import cyclic_gc_paused, gui_thread_first, wait_while_analysing
+
+__all__ = ["ProjectPresenter", "ProjectView", "default_recovery_store"]
+
+log = logging.getLogger(__name__)
+
+AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s while typing)
+AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
+AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
+MAX_RECENT = 8
+RECENT_FILES_KEY = "recent_files"
+#: files that may be dropped on the window: readings, or a project (.json)
+DROPPABLE = (".csv", ".txt", ".tsv", ".xlsx", ".xlsm", ".json")
+
+
+def default_recovery_store() -> RecoveryStore:
+    folder = os.environ.get("ANGLEBENCH_DATA_DIR") or QStandardPaths.writableLocation(
+        QStandardPaths.StandardLocation.AppDataLocation)
+    return RecoveryStore(Path(folder or Path.home() / ".anglebench"))
+
+
+class ProjectView(Protocol):
+    """What the project presenter asks of the window."""
+
+    def ask_open_path(self, folder: str) -> str:
+        """A project file to open (empty if cancelled)."""
+
+    def ask_save_path(self, folder: str) -> str:
+        """A file to save the project in (empty if cancelled)."""
+
+    def ask_save_changes(self) -> bool | None:
+        """Save the unsaved changes first? True: save, False: discard them, None: cancel."""
+
+    def ask_recover(self, name: str, when: str) -> bool:
+        """Restore the unsaved work of ``name``, autosaved ``when``?"""
+
+    def tell(self, title: str, text: str) -> None: ...
+
+    def show_status(self, text: str, milliseconds: int) -> None: ...
+
+    def show_title(self, title: str) -> None: ...
+
+    def show_recent(self, paths: list[str]) -> None:
+        """The recent files, newest first (each one opens with ``open_project``)."""
+
+    def show_workbench(self, key: str) -> None:
+        """Bring the workbench ``key`` to the front."""
+
+
+class SettingsStore(Protocol):
+    def value(self, key: str, default: Any = None) -> Any: ...
+
+    def setValue(self, key: str, value: Any) -> None: ...  # noqa: N802 - QSettings' name
+
+
+class ProjectPresenter(QObject):
+    """The project of one window: ``presenters`` hold its workbenches, ``current`` gives
+    the workbench in front (a readings file dropped goes there)."""
+
+    def __init__(self, view: ProjectView, presenters: Sequence[WorkbenchPresenter],
+                 recovery: RecoveryStore, store: SettingsStore,
+                 current: Callable[[], WorkbenchPresenter], parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.view = view
+        self.presenters = list(presenters)
+        self.recovery = recovery
+        self.store = store
+        self.current = current
+        self.path: Path | None = None
+        self.metadata: dict = {}
+        #: the instruments' raw frames, saved and opened with the project (the window sets
+        #: its capture panel's raw_capture and load_raw_capture)
+        self.raw_capture: Callable[[], dict] = dict
+        self.load_raw_capture: Callable[[dict], None] = lambda _raw: None
+        self.autosave_timer = QTimer(self)
+        self.autosave_timer.setSingleShot(True)
+        self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
+        self.autosave_timer.timeout.connect(self._autosave_when_due)
+        self._unsaved_since = 0.0  # time.monotonic() of the first edit not yet autosaved
+        self._autosave_thread: threading.Thread | None = None
+        for presenter in self.presenters:
+            presenter.modified_changed.connect(self.update_title)
+            presenter.undo_stack.indexChanged.connect(self._schedule_autosave)
+            presenter.modified_changed.connect(self._schedule_autosave)
+
+    def start(self) -> None:
+        """This window's autosave claimed (told when it cannot be); title and recent files shown."""
+        self.view.show_recent(self.recent_files())
+        try:
+            self.recovery.claim()
+        except OSError as exc:
+            self.view.show_status(tr("Autosave is off: {reason}").format(reason=exc), 15000)
+        self.update_title()
+
+    def close(self) -> None:
+        """The window closes: no more autosaves; the last one finished; the autosave let go."""
+        self.autosave_timer.stop()
+        if self._autosave_thread is not None:
+            self._autosave_thread.join(timeout=30)
+        self.recovery.release()
+
+    # -- the project --------------------------------------------------------------
+    @property
+    def is_modified(self) -> bool:
+        return any(p.is_modified for p in self.presenters)
+
+    def project(self) -> Project:
+        return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.metadata),
+                       self.raw_capture())
+
+    def apply_project(self, project: Project) -> None:
+        for presenter in self.presenters:
+            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        self.metadata = dict(project.metadata)
+        self.load_raw_capture(project.raw_capture)
+        self.metadata.pop("autosaved_at", None)
+        self.metadata.pop("project_path", None)
+
+    def update_title(self, *_args) -> None:
+        name = self.path.name if self.path else tr("untitled")
+        self.view.show_title(f"AngleBench {__version__} — {name}{' *' if self.is_modified else ''}")
+
+    def confirm_discard(self) -> bool:
+        """True when there is nothing unsaved, or the user saved it or lets it go."""
+        if not self.is_modified:
+            return True
+        answer = self.view.ask_save_changes()
+        if answer:
+            return self.save()
+        return answer is False
+
+    def new_project(self) -> None:
+        if not self.confirm_discard():
+            return
+        self.apply_project(Project())
+        self.path = None
+        self.update_title()
+
+    def open_project_dialog(self) -> None:
+        path = self.view.ask_open_path(self.last_dir())
+        if path:
+            self.open_project(path)
+
+    def open_project(self, path: str | Path) -> bool:
+        """Open a project; a damaged or newer file leaves the current work untouched."""
+        if not self.confirm_discard():
+            return False
+        try:
+            project = load_project(path)
+            check_project(project, self._kinds(), str(path))
+        except ProjectFileError as exc:
+            self.view.tell(tr("Cannot open project"),
+                           tr("{reason}. Your current work is as it was.").format(reason=exc))
+            return False
+        self.apply_project(project)
+        self.path = Path(path)
+        self._add_recent(self.path)
+        self.update_title()
+        self.view.show_status(tr("Opened {path}").format(path=path), 5000)
+        return True
+
+    def open_project_state(self, project_json: str, workbench: str) -> bool:
+        """Load the project behind a certificate (asking about unsaved work first) and show its
+        workbench; the project is untitled (saving it asks for a name)."""
+        if not self.confirm_discard():
+            return False
+        try:
+            project = project_from_json(project_json, "the register's record")
+            check_project(project, self._kinds(), "the register's record")
+        except ProjectFileError as exc:
+            self.view.tell(tr("Cannot open"), explained(exc))
+            return False
+        self.apply_project(project)
+        self.path = None
+        self.view.show_workbench(workbench)
+        self.update_title()
+        return True
+
+    def _kinds(self) -> dict:
+        return {p.kind.key: p.kind for p in self.presenters}
+
+    def save(self) -> bool:
+        if self.path is None:
+            return self.save_as()
+        return self.save_to(self.path)
+
+    def save_as(self) -> bool:
+        path = self.view.ask_save_path(self.last_dir())
+        if not path:
+            return False
+        if not path.endswith(".json"):
+            path += ".anglebench.json"
+        return self.save_to(path)
+
+    def save_to(self, path: str | Path) -> bool:
+        try:
+            save_project(path, self.project())
+        except OSError as exc:
+            self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
+                           .format(path=path, reason=exc.strerror or exc))
+            return False
+        self.path = Path(path)
+        for presenter in self.presenters:
+            presenter.mark_saved()
+        self.recovery.discard()
+        self._add_recent(self.path)
+        self.update_title()
+        self.view.show_status(tr("Saved {path}").format(path=path), 5000)
+        return True
+
+    # -- files dropped on the window ----------------------------------------------------
+    @staticmethod
+    def droppable(paths: Sequence[str]) -> list[str]:
+        return [p for p in paths if p.lower().endswith(DROPPABLE)]
+
+    def drop(self, path: str) -> None:
+        """A readings file goes into the current workbench (one undo step); a project file
+        opens (asking about unsaved work)."""
+        if path.lower().endswith(".json"):
+            self.open_project(path)
+        else:
+            self.current().start_import(path)  # large files are read off the GUI thread
+
+    # -- recent files -------------------------------------------------------------------
+    def recent_files(self) -> list[str]:
+        value = self.store.value(RECENT_FILES_KEY, [])
+        if isinstance(value, str):
+            value = [value]
+        return [str(v) for v in (value or [])]
+
+    def _add_recent(self, path: Path) -> None:
+        files = [str(path)] + [f for f in self.recent_files() if f != str(path)]
+        self.store.setValue(RECENT_FILES_KEY, files[:MAX_RECENT])
+        self.view.show_recent(self.recent_files())
+
+    def last_dir(self) -> str:
+        """The folder file dialogs open in: the latest project's."""
+        recent = self.recent_files()
+        return str(Path(recent[0]).parent) if recent else str(Path.home())
+
+    # -- autosave and recovery ------------------------------------------------------
+    def _rows(self) -> int:
+        return sum(p.sheet.row_count for p in self.presenters)
+
+    def _schedule_autosave(self, *_args) -> None:
+        """An edit: autosave a few seconds from now (not later while typing goes on)."""
+        if not self.autosave_timer.isActive():
+            self._unsaved_since = time.monotonic()
+            self.autosave_timer.start(self._autosave_delay_ms())
+
+    def _autosave_delay_ms(self) -> int:
+        return AUTOSAVE_DELAY_LARGE_MS if self._rows() > AUTOSAVE_THREAD_ROWS else AUTOSAVE_DELAY_MS
+
+    def _autosave_when_due(self) -> None:
+        """The timer's end: autosave, unless the sheets grew large since it was started (a
+        file read after a setting changed); a large one waits its own longer delay, from
+        the same first edit (why: BENCHMARKS.md, Notes)."""
+        waited_ms = (time.monotonic() - self._unsaved_since) * 1000.0
+        due_ms = self._autosave_delay_ms()
+        if waited_ms < due_ms - 1.0:
+            self.autosave_timer.start(int(due_ms - waited_ms) + 1)
+            return
+        self.autosave()
+
+    def autosave(self) -> None:
+        if not self.is_modified:
+            return
+        if self._rows() > AUTOSAVE_THREAD_ROWS:
+            project = Project({p.kind.key: p.state(deep=False) for p in self.presenters},
+                              dict(self.metadata))
+            if self._autosave_thread is not None and self._autosave_thread.is_alive():
+                self.autosave_timer.start()  # the last one is still writing: try again soon
+                return
+            self._autosave_thread = threading.Thread(
+                target=self._write_recovery_in_background, args=(project,), daemon=True)
+            self._autosave_thread.start()
+        else:
+            self._write_recovery(self.project())
+
+    def _write_recovery_in_background(self, project: Project) -> None:
+        # the window keeps the interpreter every 0.1 ms; a million new strings would start
+        # full cyclic-GC passes that hold it for a few hundred ms (strings hold no cycles)
+        with gui_thread_first(), cyclic_gc_paused():
+            self._write_recovery(project, wait_while_analysing)
+
+    def _write_recovery(self, project: Project, between_blocks=None) -> None:
+        try:
+            self.recovery.write(project, self.path, between_blocks)
+        except OSError as exc:
+            log.warning("autosave failed: %s", exc)
+
+    def offer_recovery(self) -> bool:
+        """If a window ended without saving, offer its autosaved work (newest first);
+        another running window's autosave is never offered."""
+        orphans = self.recovery.orphans()
+        if not orphans:
+            return False
+        path = orphans[0]
+        try:
+            project = self.recovery.load(path)
+        except ProjectFileError as exc:
+            self.view.tell(tr("Cannot recover"),
+                           tr("{reason} (the file was kept aside as damaged)").format(reason=exc))
+            return False
+        when = project.metadata.get("autosaved_at") or tr("an unknown time")
+        source = project.metadata.get("project_path") or ""
+        name = Path(source).name if source else tr("an untitled project")
+        if not self.view.ask_recover(name, when):
+            kept = self.recovery.set_aside(path, "declined")
+            self.view.show_status(tr("The autosave was kept aside: {path}").format(path=kept), 15000)
+            return False
+        self.apply_project(project)
+        self.path = Path(source) if source else None
+        for presenter in self.presenters:  # recovered work is unsaved work
+            presenter.mark_modified()
+        self.recovery.adopt(path)
+        self.autosave()  # now this window's own autosave
+        self.update_title()
+        return True

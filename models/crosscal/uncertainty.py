@@ -1,0 +1,96 @@
+"""Uncertainty of a cross-calibration beyond the least squares' own covariance.
+
+* :func:`estler_full_rosette` — the closed form for the full rosette (every face at
+  every step once, one reading each): u²(Ê_k) = u²(d̂_i) = σ²(n − 1)/n², covariance
+  −σ²/n² within a set, 0 between the sets, ν = (n − 1)(n − 2) (Estler, "Uncertainty
+  analysis for angle calibrations using circle closure", J. Res. NIST 103 (1998) 141).
+* :func:`design_uncertainty` — what a planned design will give, before measuring: the
+  standard uncertainty of each value for a reading σ (for Gaussian readings this is the
+  design's Cramér–Rao bound, which the least squares attains).
+* :func:`monte_carlo_check` — the stated uncertainty checked by simulation on the
+  measured design: readings drawn about the fitted model with the fitted σ, solved
+  again; the scatter of the results against the stated u, and how often U covers.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from models.crosscal.solve import CrossCalibration, solve_crosscal
+
+__all__ = ["MonteCarloCheck", "design_uncertainty", "estler_full_rosette", "monte_carlo_check"]
+
+
+def estler_full_rosette(n: int, sigma_arcsec: float) -> tuple[float, float, int]:
+    """(u of each E_k and d_i, their covariance within a set, ν) for the full rosette."""
+    return sigma_arcsec * math.sqrt(n - 1) / n, -sigma_arcsec**2 / n**2, (n - 1) * (n - 2)
+
+
+def design_readings(n: int, mountings, closure: bool = True) -> tuple[np.ndarray, ...]:
+    """Noise-free readings of a perfect polygon on a perfect encoder for a design:
+    (mounting, position, encoder_deg, ac_x_arcsec), every mounting from 0°."""
+    rows = []
+    for j in mountings:
+        faces = [(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else [])
+        rows += [(j, face, (t * 360.0 / n) % 360.0, 0.0) for t, face in enumerate(faces)]
+    return tuple(np.array(col) for col in zip(*rows, strict=True))
+
+
+def design_uncertainty(n: int, mountings, sigma_arcsec: float, closure: bool = True,
+                       drift: str = "fit") -> CrossCalibration:
+    """The result a design gives for readings of σ (its covariance and u per value; the
+    values themselves are zeros): the uncertainty to expect before measuring."""
+    return solve_crosscal(*design_readings(n, mountings, closure), faces=n,
+                          noise_arcsec=sigma_arcsec, drift=drift)
+
+
+@dataclass(frozen=True)
+class MonteCarloCheck:
+    runs: int
+    #: standard deviation of the simulated results per value, and the u stated (k = 1)
+    encoder_u_mc_arcsec: np.ndarray
+    polygon_u_mc_arcsec: np.ndarray
+    encoder_u_stated_arcsec: np.ndarray
+    polygon_u_stated_arcsec: np.ndarray
+    #: fraction of values whose own U (each run's σ, ν and k) covers the simulation's truth
+    coverage: float
+    probability: float  # the coverage probability U is stated for
+    dof: float = math.inf  # ν of the σ the readings gave
+
+    @property
+    def ratio(self) -> float:
+        """RMS of the simulated scatter over RMS of the stated u (1 when they agree)."""
+        mc = np.concatenate([self.encoder_u_mc_arcsec, self.polygon_u_mc_arcsec])
+        stated = np.concatenate([self.encoder_u_stated_arcsec, self.polygon_u_stated_arcsec])
+        return float(np.sqrt(np.mean(mc**2) / np.mean(stated**2)))
+
+
+def monte_carlo_check(mounting, position, encoder_deg, ac_x_arcsec, runs: int = 200, seed: int = 0,
+                      **solve_kwargs) -> MonteCarloCheck:
+    """Solve the readings, then ``runs`` times: horizontal readings drawn about the fitted
+    model with the fitted σ (normal), solved with the same settings. Compares only the
+    determined parts when the design leaves harmonics unseen."""
+    ac_x = np.asarray(ac_x_arcsec, dtype=float)
+    reference = solve_crosscal(mounting, position, encoder_deg, ac_x, **solve_kwargs)
+    sigma = reference.sigma_arcsec
+    rng = np.random.default_rng(seed)
+    n = reference.faces
+    fitted = ac_x + reference.residuals_arcsec  # y = … − c: these readings fit exactly
+    truth = np.concatenate([reference.encoder_error_determined_arcsec,
+                            reference.polygon_deviation_determined_arcsec])
+    values = np.empty((runs, 2 * n))
+    covered = 0
+    for q in range(runs):
+        run = solve_crosscal(mounting, position, encoder_deg, fitted + rng.normal(0.0, sigma, ac_x.size),
+                             **solve_kwargs)
+        values[q] = np.concatenate([run.encoder_error_determined_arcsec,
+                                    run.polygon_deviation_determined_arcsec])
+        u = np.concatenate([run.encoder_error_expanded_arcsec, run.polygon_deviation_expanded_arcsec])
+        covered += int(np.sum(np.abs(values[q] - truth) <= u))
+    scatter = np.sqrt(np.mean((values - truth) ** 2, axis=0))
+    return MonteCarloCheck(runs, scatter[:n], scatter[n:], reference.encoder_error_u_arcsec,
+                           reference.polygon_deviation_u_arcsec, covered / (runs * 2 * n),
+                           reference.probability, reference.dof)

@@ -1,0 +1,249 @@
+"""What every workbench in the registry must have, each requirement with what to add and
+where when it is missing. A new workbench (``make new-workbench NAME=…``) is checked by
+this file first; the rest of the suite takes every workbench from the registry.
+
+Run it alone on one workbench: ``pytest tests/test_workbench_contract.py -k NAME``.
+"""
+
+from __future__ import annotations
+
+import inspect
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from models.certificate.metadata import CertificateMetadata
+from models.messages import TRANSLATIONS_DIR, catalogue, declared_text, rendered
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS, presenter_class
+from models.workbench import (
+    CAPABILITIES,
+    AcceptsRuns,
+    IssuesCertificates,
+    OverlaysRuns,
+    SendsRuns,
+    ShowsHeadline,
+    Workbench,
+    WritesCorrectionTable,
+)
+
+ROOT = Path(__file__).resolve().parents[1]
+SAMPLES = ROOT / "resources" / "samples"
+MANUAL = ROOT / "resources" / "manual"
+LANGUAGES = ("zh_CN",)  # the languages besides English the window and certificates speak
+SIGN_CONVENTIONS = ("indicated_minus_reference", "actual_minus_target")
+
+pytestmark = pytest.mark.parametrize("key", list(KINDS))
+
+
+def _where(key: str) -> str:
+    return f"models/{key}/analysis.py"
+
+
+def _sample(key: str):
+    kind = KINDS[key]
+    rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
+    parsed = ReadingsSheet(kind.columns, rows).parse()
+    return kind, kind.analyze(parsed, kind.settings_with_defaults(kind.sample_settings))
+
+
+def _words(text: str) -> bool:
+    """Whether a text has words to translate (a symbol, a unit or a standard's name such as
+    "ISO 230-2:2014" has none)."""
+    return bool(re.search(r"[a-z]{2}", text))
+
+
+def _templates(text) -> list[str]:
+    """Every template a rendered text looked up."""
+    seen: list[str] = []
+    rendered(text, lambda template: seen.append(template) or template)
+    return seen
+
+
+# -- the core -------------------------------------------------------------------------
+def test_is_a_workbench_listed_once_under_its_key(key):
+    kind = KINDS[key]
+    assert isinstance(kind, Workbench), (
+        f"{key}: the registry's entry must be an object of a Workbench class (models/workbench.py)")
+    assert kind.key == key and re.fullmatch(r"[a-z][a-z0-9_]*", key), (
+        f"{key}: the key is lower-case letters, digits and _ and is the registry's key")
+    assert [k for k in KINDS if k == key] == [key]
+
+
+def test_key_and_title_are_given_once_in_the_package(key):
+    import importlib
+
+    package = importlib.import_module(f"models.{key}")
+    assert getattr(package, "KEY", None) == key and getattr(package, "TITLE", None) == \
+        KINDS[key].title, (f"models/{key}/__init__.py: set KEY = {key!r} and TITLE = "
+                           "QT_TR_NOOP('…'); the workbench, its report and its view import them")
+    assert KINDS[key].title, f"models/{key}/__init__.py: TITLE is empty"
+
+
+def test_settings_and_columns_are_declared_whole(key):
+    kind = KINDS[key]
+    assert kind.columns, f"{_where(key)}: declare the readings columns (COLUMNS)"
+    keys = [c.key for c in kind.columns]
+    assert len(set(keys)) == len(keys), f"{_where(key)}: a column key is declared twice"
+    for column in kind.columns:
+        assert column.title and column.help, f"{_where(key)}: column {column.key} needs a title and help"
+    for p in kind.parameters:
+        assert p.label and p.help, f"{_where(key)}: setting {p.key} needs a label and help"
+        assert p.check(p.default) == p.default, f"{_where(key)}: setting {p.key}'s default fails its check"
+    assert kind.checked_settings({}) is not None, f"{_where(key)}: the defaults fail check_settings"
+    for name in (kind.nominal_column, kind.entry_column):
+        assert not name or name in keys, f"{_where(key)}: {name!r} is not one of its columns"
+    for shortcut in kind.shortcuts:
+        assert kind.parameter(shortcut.key).check(shortcut.value) == shortcut.value, (
+            f"{_where(key)}: {shortcut.flag} sets {shortcut.key} to a value it refuses")
+    for name, value in kind.sample_settings.items():
+        assert kind.parameter(name).check(value) == value, (
+            f"{_where(key)}: sample_settings[{name!r}] fails its declaration's check")
+    assert kind.method_reference, (
+        f"{_where(key)}: method_reference names the publication or standard the method follows")
+
+
+def test_sample_parses_and_analyses(key):
+    kind = KINDS[key]
+    path = SAMPLES / kind.sample_file
+    assert path.is_file(), f"{key}: add its sample readings as resources/samples/{kind.sample_file}"
+    kind, result = _sample(key)
+    assert result is not None
+
+
+def test_json_carries_the_sign_convention_and_the_warnings(key):
+    kind, result = _sample(key)
+    data = kind.to_json(result)
+    assert isinstance(data, dict), f"{_where(key)}: to_json returns a dict"
+    text = json.dumps(data, allow_nan=True)  # the command line writes it; NaN made null there
+    assert json.loads(text) is not None
+    assert data.get("sign_convention") in SIGN_CONVENTIONS, (
+        f"{_where(key)}: to_json states 'sign_convention' (models.workbench.SIGN_CONVENTION "
+        "for errors of indication)")
+    assert isinstance(data.get("warnings"), list), f"{_where(key)}: to_json lists 'warnings'"
+
+
+def test_summary_is_text(key):
+    kind, result = _sample(key)
+    summary = kind.summary(result)
+    assert isinstance(summary, str) and summary.strip(), f"{_where(key)}: summary says something"
+
+
+# -- documentation and language --------------------------------------------------------
+def test_manual_pages_in_every_language(key):
+    for language in ("",) + tuple(f".{lang}" for lang in LANGUAGES):
+        page = MANUAL / f"{key}{language}.html"
+        assert page.is_file(), f"{key}: add its manual page resources/manual/{page.name}"
+        index = MANUAL / f"index{language}.html"
+        assert f'href="{key}{language}.html"' in index.read_text("utf-8"), (
+            f"{key}: link resources/manual/{page.name} from resources/manual/{index.name}")
+
+
+def test_its_texts_are_translated(key):
+    """The title, the settings and the sample's summary and verdict are in
+    resources/translations/anglebench_zh_CN.ts (add them there, then `make translations`);
+    a text ending in a unit ("arcseconds (\")") is translated without it."""
+    kind, result = _sample(key)
+    for language in LANGUAGES:
+        words = catalogue(TRANSLATIONS_DIR / f"anglebench_{language}.ts")
+        texts = [kind.title] + [t for p in kind.parameters for t in (p.label, p.help)] + [
+            t for p in kind.parameters for _, t in p.choices]
+        texts += _templates(kind.summary(result))
+        if isinstance(kind, ShowsHeadline):
+            texts += _templates(kind.verdict(result))
+        translate = words.get
+        missing = sorted({t for t in texts if _words(t) and declared_text(
+            t, lambda s, translate=translate: translate(s) or s) == t})
+        assert not missing, (f"{key}: no {language} translation in resources/translations/"
+                             f"anglebench_{language}.ts for:\n  " + "\n  ".join(missing))
+
+
+# -- validation -------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def validation_workbenches() -> set[str]:
+    from models.validation.cases import run_validation
+
+    return {case.workbench for case in run_validation(trials=10)}
+
+
+def test_the_validation_report_has_its_cases(key, validation_workbenches):
+    assert KINDS[key].title in validation_workbenches, (
+        f"{key}: the validation report (anglebench validate) has no case of it: return its "
+        f"reference cases from validation_cases() in {_where(key)} (ValidationCase of "
+        "models/validation/cases.py, workbench = its title) and update README's case count")
+
+
+# -- the window -------------------------------------------------------------------------
+def test_presenter_lives_in_its_folder(key):
+    from widgets.workbench_presenter import WorkbenchPresenter
+
+    kind = KINDS[key]
+    assert kind.presenter.startswith(f"widgets.{key}."), (
+        f"{_where(key)}: presenter = 'widgets.{key}.presenter:…Presenter'")
+    cls = presenter_class(kind)
+    assert inspect.isclass(cls) and issubclass(cls, WorkbenchPresenter), (
+        f"widgets/{key}/presenter.py: the presenter derives from WorkbenchPresenter")
+    assert cls.view_class is not None, f"widgets/{key}/presenter.py: set view_class"
+
+
+def test_presenter_shows_the_sample(key, qtbot):
+    cls = presenter_class(KINDS[key])
+    presenter = cls()
+    qtbot.addWidget(presenter.view)
+    presenter.load_sample()
+    qtbot.waitUntil(lambda: presenter.result is not None or bool(presenter.problem), timeout=20000)
+    assert presenter.result is not None, f"widgets/{key}: the sample is not analysed: {presenter.problem}"
+    assert presenter.view.title == KINDS[key].title, (
+        f"widgets/{key}/view.py: the view's title is the workbench's TITLE (from models.{key})")
+
+
+# -- capabilities ---------------------------------------------------------------------------
+def test_its_capabilities_work_on_the_sample(key, tmp_path):
+    kind, result = _sample(key)
+    declared = [c.__name__ for c in CAPABILITIES if isinstance(kind, c)]
+    assert declared == [c.__name__ for c in CAPABILITIES if c in type(kind).__mro__]
+    if isinstance(kind, ShowsHeadline):
+        assert isinstance(kind.verdict(result), str) and kind.verdict(result), (
+            f"{_where(key)}: verdict() says the result in one line")
+        headline = kind.headline(result)
+        assert headline and all(isinstance(v, int | float) for v in headline.values()), (
+            f"{_where(key)}: headline() gives figures by name")
+        assert any(math.isfinite(v) for v in headline.values())
+    if isinstance(kind, SendsRuns):
+        receivers = [k for k in KINDS.values() if isinstance(k, AcceptsRuns)]
+        assert receivers, f"{key} sends runs, but no workbench accepts them"
+        receiver = receivers[0]
+        rows = kind.run_rows(result)
+        parsed = ReadingsSheet(receiver.columns, rows).parse()
+        assert not parsed.errors, f"{_where(key)}: run_rows gives rows {receiver.key} refuses"
+    if isinstance(kind, WritesCorrectionTable):
+        what = kind.correction_table(result, kind.default_settings, str(tmp_path / "table.csv"))
+        assert what and any(tmp_path.iterdir()), f"{_where(key)}: correction_table writes a file"
+    if isinstance(kind, OverlaysRuns):
+        figure = kind.overlay_figure(result)
+        assert figure.by_role("corrected") is not None, (
+            f"{_where(key)}: overlay_figure has a series of role 'corrected' to draw over")
+
+
+def test_certificate_of_the_sample(key):
+    kind, result = _sample(key)
+    if not isinstance(kind, IssuesCertificates):
+        pytest.skip(f"{key} issues no certificates")
+    path = SAMPLES / f"certificate_{key}.json"
+    assert path.is_file(), (f"{key}: add the example certificate details as resources/samples/"
+                            f"{path.name} (copy another workbench's; \"example\": true)")
+    details = json.loads(path.read_text("utf-8"))
+    assert details.get("example") is True, f"resources/samples/{path.name}: set \"example\": true"
+    metadata = CertificateMetadata.from_dict(details)
+    document = kind.certificate_document(result, metadata, kind.sample_file, kind.sample_settings)
+    assert (document.kind_key, document.kind_title) == (key, kind.title), (
+        f"models/{key}/report.py: build CertificateDocument with kind_key=KEY, kind_title=TITLE")
+    assert document.results.rows and document.budget.points and document.method, (
+        f"models/{key}/report.py: the certificate states results, an uncertainty budget and the method")
+    assert document.method_reference == kind.method_reference
+    assert math.isfinite(document.expanded_uncertainty)
+    assert kind.certificate_doubt(result) == "", f"{key}: its own sample is doubted"
