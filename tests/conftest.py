@@ -69,7 +69,7 @@ def postgres_server():
     """A throw-away PostgreSQL cluster on a Unix socket for the session (see
     tests/postgres_cluster.py); skipped with the reason when none can be started, and a
     failure instead where ANGLEBENCH_REQUIRE_POSTGRES=1 (CI)."""
-    from postgres_cluster import PostgresUnavailable, start_cluster
+    from tests.postgres_cluster import PostgresUnavailable, start_cluster
 
     try:
         server = start_cluster()

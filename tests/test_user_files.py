@@ -8,8 +8,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import TEST_HOME, USER_FILES_BEFORE, USER_HOME, _user_files_state
 from PySide6.QtCore import QSettings, QStandardPaths
+
+from tests.conftest import TEST_HOME, USER_FILES_BEFORE, USER_HOME, _user_files_state
 
 
 def _inside_test_home(path: str | Path) -> bool:

@@ -94,7 +94,7 @@ def test_recovery_store(tmp_path):
 
 # -- #32: schema 2 gives the tolerance its unit; a schema-1 file is migrated as it is read --
 
-FIXTURE = Path(__file__).parent / "fixtures" / "project_schema1.anglebench.json"
+FIXTURE = Path(__file__).parents[2] / "fixtures" / "project_schema1.anglebench.json"
 
 
 def test_a_schema_1_file_opens_with_each_tolerance_in_its_workbench_unit(tmp_path):
@@ -130,7 +130,7 @@ def test_a_schema_1_file_gives_the_same_analysis_and_the_same_verdict():
     state = project.workbenches["theodolite"]
     opened = kind.analyze(ReadingsSheet(kind.columns, state.rows).parse(),
                           kind.settings_with_defaults(state.settings))
-    sample = Path(__file__).parents[1] / "resources" / "samples" / "theodolite_sample.csv"
+    sample = Path(__file__).parents[3] / "resources" / "samples" / "theodolite_sample.csv"
     typed = kind.analyze(ReadingsSheet(kind.columns, map_columns(read_table(sample), kind.columns)
                                        ).parse(), kind.settings_with_defaults({}))
     np.testing.assert_array_equal(opened.corrected_error_arcsec, typed.corrected_error_arcsec)

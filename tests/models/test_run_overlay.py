@@ -154,7 +154,7 @@ def test_another_workbench_s_file_or_a_workbench_without_curve_is_refused(window
     assert "theodolite" not in window.run_overlays.overlays or \
         not window.run_overlays.overlays["theodolite"].shown
     # positioning: no error curve; its log after compensation is compared instead
-    # (tests/test_positioning_after_compensation_window.py), a certificate is refused
+    # (tests/widgets/positioning/test_positioning_after_compensation_window.py), a certificate is refused
     window.tabs.setCurrentIndex(window.presenters.index(window.presenter("positioning")))
     assert not window.run_overlays.overlay_record()
     assert "no error curve" in window.told[-1]

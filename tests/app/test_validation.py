@@ -18,7 +18,7 @@ RIGS = ("rotation", "polygon_rig", "theodolite_rig", "fringe_rig", "positioning_
 
 def test_rigs_import_nothing_from_the_code_they_check():
     """The simulators may use numpy, the standard library and each other, nothing else."""
-    folder = Path(__file__).resolve().parents[1] / "models" / "validation"
+    folder = Path(__file__).resolve().parents[2] / "models" / "validation"
     for name in RIGS:
         tree = ast.parse((folder / f"{name}.py").read_text(encoding="utf-8"))
         for node in ast.walk(tree):
@@ -40,7 +40,7 @@ def test_validate_command_writes_a_dated_report(tmp_path, capsys):
     printed = capsys.readouterr().out
     counted = re.search(r"^(\d\d) passed, 0 failed$", printed, re.MULTILINE)
     assert counted, printed
-    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text("utf-8")
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text("utf-8")
     assert f"runs {counted.group(1)} reference cases" in readme  # the README says how many
     assert printed.count("pass  Theodolite run") >= 7 and printed.count("pass  Fringe") >= 5
     text = re.sub(r"\s+", " ", "\n".join(p.extract_text() for p in PdfReader(

@@ -296,9 +296,8 @@ def test_an_old_register_gets_its_chain_when_migrated(register_url):
 
 
 def test_tests_never_reach_the_users_own_register(monkeypatch):
-    from conftest import TEST_HOME, USER_HOME
-
     from models.register.location import default_register_url, register_url
+    from tests.conftest import TEST_HOME, USER_HOME
 
     monkeypatch.delenv("ANGLEBENCH_REGISTER", raising=False)
     for url in (default_register_url(), register_url()):

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from crosscal_simulator import Bench
 
 from models.crosscal.solve import CrossCalibrationInputError, solve_crosscal
 from models.crosscal.tilt import fit_tilts, frame_readings_batch
@@ -22,6 +21,7 @@ from models.crosscal.uncertainty import (
 )
 from models.messages import translator
 from models.pyramidal import fit_tilt, frame_readings_arcsec
+from tests.crosscal_simulator import Bench
 
 HARMONICS = {1: (2.0, 0.3), 2: (1.0, 1.1), 3: (0.5, 2.0), 4: (0.2, 0.7), 6: (0.3, 0.5)}
 
@@ -41,7 +41,7 @@ def solve(rows, n, **kw):
 
 
 def test_the_bench_imports_nothing_but_numpy():
-    path = Path(__file__).with_name("crosscal_simulator.py")
+    path = Path(__file__).parents[2].joinpath("crosscal_simulator.py")
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.ImportFrom | ast.Import):
             module = node.module if isinstance(node, ast.ImportFrom) else node.names[0].name
@@ -261,7 +261,7 @@ def test_messages_are_translated():
     result = solve(bench(6, 11).rows([0, 2, 4], closure=False), 6, noise_arcsec=0.01)
     said += list(result.warnings) + [result.correlation_statement]
     # and every template the model declares has its Chinese
-    for path in sorted(Path(__file__).resolve().parents[1].glob("models/crosscal/*.py")):
+    for path in sorted(Path(__file__).resolve().parents[3].glob("models/crosscal/*.py")):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.Call) and getattr(node.func, "id", "") == "QT_TR_NOOP":
                 assert zh(node.args[0].value) != node.args[0].value, node.args[0].value

@@ -24,7 +24,7 @@ from models.registry import KINDS
 
 pytestmark = pytest.mark.slow  # every test prints a certificate and reads it back
 
-SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 LAB_NAMES = {"latin": "Shenzhen Angle Metrology Lab", "chinese": "深圳角度计量实验室",
              "mixed": "深圳 Angle 计量实验室 Lab"}
 FIGURE = re.compile(r"[+\-−]?\d+(?:\.\d+)?")

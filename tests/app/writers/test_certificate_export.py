@@ -31,7 +31,7 @@ from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
 from models.uncertainty.conformity import uncertainty_decimals
 
-SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 
 META = CertificateMetadata.from_dict({
     "certificate_number": "AB-2026-0042", "lab_name": "精密角度计量实验室 Precision Angle Lab",

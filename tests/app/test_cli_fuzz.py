@@ -163,13 +163,13 @@ ROUND = settings(max_examples=15, deadline=None,
 
 @st.composite
 def round_case(draw, kind: str, family: str):
-    from hostile_records import Picks, case
+    from tests.hostile_records import Picks, case
 
     return case(Picks(draw=draw), kind, family)
 
 
 def _judged(kind: str, made, tmp_path) -> None:
-    from hostile_records import judge
+    from tests.hostile_records import judge
 
     suffix, data, extra = made
     path = tmp_path / f"{kind}{suffix}"
@@ -218,7 +218,7 @@ def test_damaged_records_judged_as_the_round_judges_them(kind, data, tmp_path):
 
 @st.composite
 def twin_records(draw, kind: str):
-    from hostile_records import Picks, twins
+    from tests.hostile_records import Picks, twins
 
     return twins(Picks(draw=draw), kind)
 
@@ -229,7 +229,7 @@ def twin_records(draw, kind: str):
 def test_xlsx_reads_what_the_csv_reads(kind, data, tmp_path):
     """The same D°M'S" record — full-width, Chinese, European decimal commas, a hostile cell —
     as CSV and as XLSX: the same refusal or the same figures."""
-    from hostile_records import judge_twins
+    from tests.hostile_records import judge_twins
 
     csv_data, xlsx_data = data.draw(twin_records(kind))
     (tmp_path / "r.csv").write_bytes(csv_data)

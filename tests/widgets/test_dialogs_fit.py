@@ -17,7 +17,7 @@ import pytest
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
     "1280x720": (1280, 720, "1", "en"),
     "200% on 2560x1600": (2560, 1600, "2", "zh_CN"),
@@ -34,7 +34,7 @@ def test_every_dialog_fits_the_screen(screen, tmp_path):
     env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
            "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
            "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
-    run = subprocess.run([sys.executable, str(ROOT / "tests" / "dialog_fit_probe.py"), language],
+    run = subprocess.run([sys.executable, "-m", "tests.dialog_fit_probe", language],
                          env=env, capture_output=True, text=True, timeout=600, cwd=tmp_path)
     assert run.returncode == 0, run.stderr[-3000:]
     found = json.loads(run.stdout.strip().splitlines()[-1])

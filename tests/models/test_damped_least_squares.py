@@ -14,7 +14,7 @@ from scipy.optimize import least_squares
 
 from models.damped_least_squares import difference_jacobian, polish
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _damped_sine(x, t):

@@ -11,7 +11,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_certificate_statements import FRINGE_INPUTS, _flat, _sample
 
 from models.certificate.document import budget_table, decision_rows
 from models.certificate.metadata import CertificateMetadata
@@ -21,6 +20,7 @@ from models.theodolite.report import theodolite_budget, theodolite_certificate
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 from models.validation.theodolite_rig import theodolite_readings
+from tests.models.certificate.test_certificate_statements import FRINGE_INPUTS, _flat, _sample
 
 GTC = pytest.importorskip("GTC")
 
@@ -381,7 +381,7 @@ def test_positioning_figures_in_their_own_unit_enter_the_budget_converted():
     from models.uncertainty.conformity import decide_conformity
 
     kind = KINDS["positioning"]
-    sample = Path(__file__).parents[1] / "resources" / "samples" / "positioning_sample.csv"
+    sample = Path(__file__).parents[3] / "resources" / "samples" / "positioning_sample.csv"
     rows = map_columns(read_table(sample), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
                           kind.settings_with_defaults({"deviation_unit": "urad"}))

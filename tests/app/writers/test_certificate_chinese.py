@@ -23,7 +23,7 @@ from models.registry import KINDS
 
 pytestmark = pytest.mark.slow  # every test prints certificates (fringe: 512 rows)
 
-SAMPLES = Path(__file__).resolve().parents[1] / "resources" / "samples"
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
 
 VARIANTS = {
     "as issued": {},
