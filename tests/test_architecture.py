@@ -126,6 +126,7 @@ def test_shared_code_names_no_workbench():
                        + "\n".join(found))
 
 
+@pytest.mark.slow
 def test_workbenches_are_told_apart_by_capability():
     """No shared code tests a workbench's key (``kind.key == …``) or one of its own
     methods' presence (``kind.x is None``): it asks ``isinstance(kind, Capability)``."""

@@ -88,6 +88,7 @@ def test_save_and_open_round_trip_with_title_and_recent_files(qtbot, tmp_path, s
     other_view.tell.assert_not_called()
 
 
+@pytest.mark.slow
 def test_unsaved_work_is_saved_kept_or_let_go_as_answered(qtbot, tmp_path, samples_dir):
     presenter, view, (theodolite, _) = make(qtbot, tmp_path)
     load_sample(theodolite, samples_dir)
@@ -161,6 +162,7 @@ def test_the_project_behind_a_certificate_opens_untitled_at_its_workbench(qtbot,
     assert view.tell.call_args.args[0] == "Cannot open"
 
 
+@pytest.mark.slow
 def test_an_edit_is_autosaved_and_offered_back_after_a_crash(qtbot, tmp_path, samples_dir):
     crashed, _, (theodolite, _) = make(qtbot, tmp_path)
     load_sample(theodolite, samples_dir)

@@ -34,6 +34,7 @@ def test_autocollimator_readings_to_csv(tmp_path, capsys):
     assert "25 readings written to" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_stability_gated_readings_of_a_set_of_positions(tmp_path):
     """Four positions held 0.3 s each with 0.05" noise: one reading per position, the mean
     of a 0.1 s dwell, within 0.05" of where the instrument really was; the frames while

@@ -19,6 +19,8 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
 META = CertificateMetadata.from_dict({"standards": [
     {"description": "Reference AC", "uncertainty_arcsec": 0.4}]})

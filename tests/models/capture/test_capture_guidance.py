@@ -24,6 +24,7 @@ def _wrapped(a, b):
     return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
+@pytest.mark.slow
 @settings(max_examples=150, deadline=None)
 @given(faces=st.integers(3, 72), start=st.floats(0, 360, exclude_max=True),
        counts_up=st.booleans(), faces_up=st.booleans(), data=st.data())

@@ -41,6 +41,7 @@ def test_an_endless_line_of_noise_is_dropped_and_the_next_line_read():
     assert framer.feed(b"\xfe\xfe\r4 003 1 2\r") == [b"4 003 1 2"]
 
 
+@pytest.mark.slow
 @settings(max_examples=100, deadline=None)
 @given(st.lists(st.binary(max_size=40), max_size=20), st.integers(1, 7))
 def test_any_split_of_the_bytes_gives_the_same_lines(chunks, step):

@@ -87,6 +87,7 @@ def test_changed_or_damaged_raw_frames_are_refused_naming_the_file(tmp_path, cha
     assert str(path) in str(caught.value) and "nothing was changed" in str(caught.value)
 
 
+@pytest.mark.slow
 def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_url, tmp_path,
                                                                      samples_dir):
     from models.registry import KINDS
@@ -118,6 +119,7 @@ def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_u
     assert "Instrument output" not in plain
 
 
+@pytest.mark.slow
 def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot, tmp_path):
     window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
     presenter = window.presenter("polygon")

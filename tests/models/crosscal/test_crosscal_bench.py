@@ -172,6 +172,7 @@ def test_drift_fitted_or_spread_leaves_the_truth_within_its_uncertainty(mode):
     assert solve(rows, n, fit_drift=False).drift_mode == "report"
 
 
+@pytest.mark.slow
 def test_spread_drift_covariance_is_exact():
     """Spreading uses the first and closure readings of each mounting on every reading of
     it; the covariance carries that (correlated) noise: the Monte Carlo scatter matches the
@@ -204,6 +205,7 @@ def test_estler_closed_form_reproduced_for_the_full_rosette():
     assert solve(rows, n).dof == dof
 
 
+@pytest.mark.slow
 def test_cross_correlation_of_a_partial_rosette_is_stated_and_real():
     """Mountings 0, 1, 3 of 8: the two result sets are correlated; the stated correlation
     of the most correlated pair (E_k, d_i) is what 300 bench runs show, within three
@@ -226,6 +228,7 @@ def test_cross_correlation_of_a_partial_rosette_is_stated_and_real():
     assert np.std(np.array(pairs)[:, 0]) == pytest.approx(planned.encoder_error_u_arcsec[k], rel=0.1)
 
 
+@pytest.mark.slow
 def test_monte_carlo_check_of_a_partial_rosette():
     n = 6
     rows = bench(n, 8, drift_arcsec=0.5, noise_arcsec=0.2).rows([0, 1, 3])

@@ -88,6 +88,7 @@ def test_a_segment_that_cannot_fix_every_harmonic_gets_the_least_squares_answer(
     np.testing.assert_allclose(rows[:, :3], direct, atol=1e-9)
 
 
+@pytest.mark.slow
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.floats(-40.0, 40.0), min_size=1, max_size=8),
        st.floats(0.0, 0.3), st.integers(0, 2**31))
