@@ -1063,7 +1063,7 @@
     </message>
     <message>
         <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s own axis, rolled with its tilt (the frame of the method&apos;s paper, Tian et al. 2015). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
-        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
+        <translation>自准直仪的安置方式：按回转轴调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
     </message>
     <message>
         <source>ISG kernel leadscrew error compensation list</source>
@@ -2666,7 +2666,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>levelled with the rotary axis</source>
-        <translation>与回转轴一同调平</translation>
+        <translation>按回转轴调平（竖直方向沿转轴）</translation>
     </message>
     <message>
         <source>θ (deg)</source>
@@ -4971,7 +4971,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>levelled with the rotary axis (vertical along the shaft)</source>
-        <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
+        <translation>按回转轴调平（竖直方向沿转轴）</translation>
     </message>
     <message>
         <source>Autocollimator roll</source>
@@ -6480,16 +6480,16 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>JJF 1115 重复性（各步 s 的最大值）</translation>
     </message>
     <message>
-        <source>the mountings as repeated runs</source>
-        <translation>各安装位置视为重复测量</translation>
+        <source>indicative (mountings are remountings, not repeat runs)</source>
+        <translation>仅供参考（各安装位置为重新安装，并非重复测量）</translation>
     </message>
     <message>
         <source>ISO 230-2 (unidirectional)</source>
         <translation>ISO 230-2（单向）</translation>
     </message>
     <message>
-        <source>the mountings as repeated runs; deviation = −error</source>
-        <translation>各安装位置视为重复测量；偏差 = −误差</translation>
+        <source>indicative (mountings are remountings, not repeat runs); deviation = −error</source>
+        <translation>仅供参考（各安装位置为重新安装，并非重复测量）；偏差 = −误差</translation>
     </message>
     <message>
         <source>Face deviations</source>
