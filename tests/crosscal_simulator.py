@@ -149,7 +149,8 @@ class Bench:
             theta[0] = self.start_deg  # every mounting starts where the first did
             v = self._face_normals(faces, seat + theta, psi, omega)
             noise = self.rng.normal(0.0, self.noise_arcsec, (2, faces.size))
-            ac_x = (1.0 + self.ac_scale) * np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec + drift * t / n + noise[0]
+            ac_x = ((1.0 + self.ac_scale) * np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec
+                    + drift * t / n + noise[0])
             ac_y = np.arctan2(v[2], v[0]) / ARCSEC + self.ac_zero_y_arcsec + noise[1]
             encoder = self.indicated_deg(theta)
             for q in range(faces.size):

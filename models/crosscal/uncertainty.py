@@ -152,7 +152,7 @@ def tilt_fit_effect_arcsec(solution: CrossCalibration, mounting, position) -> np
         rows = np.flatnonzero(mounting == j)
         g = solution.gain[:, rows]
 
-        def eps(psi, omega, th=theta[rows]):
+        def eps(psi, omega, th=theta[rows], g=g):
             return g @ pyramidal_correction_arcsec(th, psi, omega, 0.0, solution.ac_alignment)
 
         d_psi = (eps(t.psi_arcsec + 0.01, t.omega_deg) - eps(t.psi_arcsec - 0.01, t.omega_deg)) / 0.02
