@@ -104,3 +104,18 @@ def test_the_budget_has_the_benchs_inputs(item):
     assert [c.name for c in crosscal_budget(none, CertificateMetadata()).components] == names[:1]
     resolved = crosscal_budget(result, CertificateMetadata(item_resolution=0.1))
     assert "Item resolution" in [c.name for c in resolved.components]
+
+
+def test_with_vertical_readings_the_tilt_is_no_row_and_its_fit_is_said_negligible():
+    """Vertical readings: the tilts are fitted and removed, so no bound enters; their own
+    u(ψ), u(ω) moves the results by far less than the scatter (second order when levelled)."""
+    from models.crosscal.report import budget_remarks
+
+    n = 12
+    rows = bench(n, 8, noise_arcsec=0.03, tilt_arcsec=60.0).rows(range(n), vertical=True)
+    text = [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", f"{y:.6f}"] for j, i, a, x, y in rows]
+    result = KIND.analyze(ReadingsSheet(KIND.columns, text).parse(), KIND.default_settings)
+    names = [c.name for c in crosscal_budget(result, CertificateMetadata()).components]
+    assert "Tilt of the polygon on the shaft (not measured)" not in names
+    assert "Tilt correction (fitted ψ, ω)" not in names
+    assert "negligible" in str(budget_remarks(result)[0])

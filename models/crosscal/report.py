@@ -142,7 +142,7 @@ def budget_remarks(result) -> tuple[str, ...]:
     if np.any(fitted > 0) and np.max(fitted) <= 0.1 * np.min(_per_point(result)[1]):
         parts += ["; ", message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
                                            "results by at most {u} (u), negligible"),
-                                u=f"{np.max(fitted):.4f}\"")]
+                                u=f"{np.max(fitted):.2g}\"")]
     return (joined((*parts, ".")),)
 
 
