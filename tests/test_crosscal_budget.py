@@ -119,3 +119,20 @@ def test_with_vertical_readings_the_tilt_is_no_row_and_its_fit_is_said_negligibl
     assert "Tilt of the polygon on the shaft (not measured)" not in names
     assert "Tilt correction (fitted ψ, ω)" not in names
     assert "negligible" in str(budget_remarks(result)[0])
+
+
+def test_the_deviations_from_face_1_carry_the_scale_error_too():
+    """U(d_i − d_1) (certificate column and the polygon workbench's table) has the bench's
+    bounds through the design: a scale error s on the bench moves d_i − d_1 by no more than
+    its share s·|(G·c)_i − (G·c)_1| (to second order), the half-width it is given."""
+    n, s = 12, 0.005
+    true_rows = bench(n, 3, noise_arcsec=0.0).rows(range(n))
+    scaled_rows = bench(n, 3, noise_arcsec=0.0, ac_scale=s).rows(range(n))
+    moved = results(scaled_rows, n)[n:] - results(true_rows, n)[n:]
+    moved = moved - moved[0]
+    stated = _analyze(scaled_rows, ac_scale_pct=100 * s, tilt_bound_arcsec=0.0)
+    plain = _analyze(scaled_rows, ac_scale_pct=0.0, tilt_bound_arcsec=0.0)
+    k = stated.solution.coverage_factor
+    share = np.sqrt(stated.polygon_u_from_face1_arcsec() ** 2 - plain.polygon_u_from_face1_arcsec() ** 2)
+    np.testing.assert_allclose(share * np.sqrt(3.0) / k, np.abs(moved), rtol=0.02, atol=1e-4)
+    assert np.max(np.abs(moved)) > 0.01 and share[0] == 0.0

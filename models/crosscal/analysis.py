@@ -118,11 +118,28 @@ class CrossCalResult:
         return out
 
     def polygon_u_from_face1_arcsec(self) -> np.ndarray:
-        """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries)."""
+        """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries): the
+        scatter's (k from its ν) with the bench's stated bounds through the design."""
         n, cov = self.faces, self.solution.covariance_arcsec2
         d = cov[n:, n:]
         var = np.diag(d) + d[0, 0] - 2.0 * d[:, 0]
+        from_first = np.zeros((n, 2 * n))
+        from_first[:, n:] = np.eye(n)
+        from_first[:, n] -= 1.0
+        var = var + self.systematic_u_arcsec(from_first) ** 2
         return self.solution.coverage_factor * np.sqrt(np.clip(var, 0.0, None))
+
+    def systematic_u_arcsec(self, combine=None) -> np.ndarray:
+        """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
+        bounds (the autocollimator's scale error; the tilt when not measured), each
+        rectangular, through the design (models.crosscal.uncertainty)."""
+        from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
+
+        s, r = self.solution, self.readings
+        scale = self.ac_scale_pct / 100.0 * scale_effect_arcsec(s, r.ac_x_arcsec, combine)
+        tilt = tilt_effect_arcsec(s, r.mounting, r.position, self.tilt_bound_arcsec,
+                                  combine=combine)
+        return np.sqrt(scale**2 + tilt**2) / math.sqrt(3.0)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""

@@ -97,28 +97,36 @@ def monte_carlo_check(mounting, position, encoder_deg, ac_x_arcsec, runs: int = 
                            reference.probability, reference.dof)
 
 
-def scale_effect_arcsec(solution: CrossCalibration, ac_x_arcsec) -> np.ndarray:
+def _gain(solution: CrossCalibration, combine) -> np.ndarray:
+    """G, or ``combine``·G for combinations of the results (differences from face 1, say)."""
+    return solution.gain if combine is None else np.asarray(combine, dtype=float) @ solution.gain
+
+
+def scale_effect_arcsec(solution: CrossCalibration, ac_x_arcsec, combine=None) -> np.ndarray:
     """|(G·c)| per value of (E, d) (2n): the results' change per unit relative scale error s of
     the autocollimator, whose readings c become (1 + s)·c: δy = −s·c, δ(E, d) = −s·G·c exactly
-    (G = ``solution.gain``; a constant zero offset cancels in each mounting's offset)."""
+    (G = ``solution.gain``; a constant zero offset cancels in each mounting's offset); of
+    ``combine``·(E, d) when given."""
     c = np.asarray(ac_x_arcsec, dtype=float)
-    return np.abs(solution.gain @ c)
+    return np.abs(_gain(solution, combine) @ c)
 
 
 def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arcsec: float,
-                       directions: int = 72) -> np.ndarray:
+                       directions: int = 72, combine=None) -> np.ndarray:
     """Half-width per value of (E, d) (2n) of the results' change that an unmeasured tilt of
     the polygon on the shaft up to ``bound_arcsec`` causes: per mounting, the exact horizontal
     effect of a tilt ψ = bound towards the worst direction ω (``models.pyramidal``, in the
     set-up's frame) through the design, |G_j · ε_j(ω)| at its largest over ω; the mountings'
     tilts are independent, so their half-widths add in quadrature (each rectangular). Mountings
-    whose tilt was fitted from vertical readings are left out."""
+    whose tilt was fitted from vertical readings are left out. Of ``combine``·(E, d) when
+    given."""
     from models.pyramidal import pyramidal_correction_arcsec
 
     n = solution.faces
     mounting = np.asarray(mounting)
     theta = (np.asarray(position, dtype=int) - 1) * 360.0 / n
-    total = np.zeros(2 * n)
+    gain = _gain(solution, combine)
+    total = np.zeros(gain.shape[0])
     if not bound_arcsec > 0:
         return total
     for j, tilt in zip(solution.mountings, solution.tilts or (None,) * len(solution.mountings),
@@ -126,8 +134,8 @@ def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arc
         if tilt is not None:  # fitted and removed
             continue
         rows = np.flatnonzero(mounting == j)
-        g = solution.gain[:, rows]
-        worst = np.zeros(2 * n)
+        g = gain[:, rows]
+        worst = np.zeros(gain.shape[0])
         for omega in np.arange(directions) * 360.0 / directions:
             eps = pyramidal_correction_arcsec(theta[rows], bound_arcsec, omega, 0.0,
                                               solution.ac_alignment)
