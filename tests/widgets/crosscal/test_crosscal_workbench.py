@@ -1,0 +1,398 @@
+"""The cross-calibration workbench: readings refused naming the row (hypothesis), the n × n
+matrix, the JSON contract against the 3-D rig's truth, certificates in three languages,
+the polygon workbench taking the deviations, the presenter on a mock view and the window
+pasting readings."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+from unittest import mock
+
+import numpy as np
+import pytest
+import shiboken6
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from PySide6.QtGui import QGuiApplication
+from PySide6.QtWidgets import QWidget
+
+from app.main import main
+from models.crosscal.readings import COLUMNS, matrix_rows, read_crosscal
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import read_table
+from models.registry import KINDS
+from models.validation.crosscal_rig import CrossCalRig
+from widgets.crosscal.presenter import CrossCalPresenter
+from widgets.crosscal.view import CrossCalView
+
+KIND = KINDS["crosscal"]
+HARMONICS = {1: (0.8, 0.7), 2: (0.3, -0.3), 3: (0.1, 1.2)}
+
+
+def rig_rows(faces=8, mountings=None, closure=True, noise=0.0, seed=1) -> tuple[list, CrossCalRig]:
+    rng = np.random.default_rng(seed)
+    rig = CrossCalRig(faces, HARMONICS, rng.normal(0, 0.4, faces), noise_arcsec=noise, rng=rng)
+    rows = rig.rows(range(faces) if mountings is None else mountings, closure=closure)
+    return [[str(j), str(i), f"{a:.9f}", f"{x:.6f}", ""] for j, i, a, x in rows], rig
+
+
+def parse(rows):
+    return ReadingsSheet(COLUMNS, rows).parse()
+
+
+def refused(rows, faces=0) -> str:
+    with pytest.raises(ValueError) as info:
+        KIND.analyze(parse(rows), {**KIND.default_settings, "faces": faces})
+    return str(info.value)
+
+
+# -- the parser ---------------------------------------------------------------------------
+design = st.integers(3, 9).flatmap(lambda n: st.tuples(
+    st.just(n), st.lists(st.integers(0, n - 1), min_size=2, max_size=n, unique=True),
+    st.booleans()))
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(design)
+def test_any_design_of_whole_mountings_is_read_as_written(case):
+    n, mountings, closure = case
+    rows, _ = rig_rows(n, mountings, closure)
+    readings = read_crosscal(parse(rows))
+    assert readings.faces == n and readings.mountings == tuple(mountings)
+    assert int(readings.closure.sum()) == (len(mountings) if closure else 0)
+    assert readings.sheet_rows.tolist() == list(range(1, len(rows) + 1))
+    # each mounting starts at face j + 1, where the encoder's first step is
+    for j in mountings:
+        first = int(np.flatnonzero(readings.mounting == j)[0])
+        assert readings.position[first] == j + 1
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(design, st.data())
+def test_a_duplicate_or_missing_face_is_refused_naming_its_row(case, data):
+    n, mountings, closure = case
+    rows, _ = rig_rows(n, mountings, closure)
+    q = data.draw(st.sampled_from(mountings))
+    block = [r for r, row in enumerate(rows) if row[0] == str(q)]
+    inner = block[1:n]  # not the mounting's first row (its start) nor its closure
+    victim = data.draw(st.sampled_from(inner))
+    twin = data.draw(st.sampled_from([r for r in inner if r != victim]))
+    duplicate = [list(r) for r in rows]
+    duplicate[victim][1] = duplicate[twin][1]  # read twice, another face never read
+    text = refused(duplicate)
+    later = max(victim, twin) + 1
+    assert f"row {later}: mounting {q}, face {rows[twin][1]} is read again" in text
+    missing = [r for k, r in enumerate(rows) if k != victim]
+    text = refused(missing)
+    assert f"mounting {q} reads {n - 1} faces, the face count is {n}" in text
+    assert f"face(s) {rows[victim][1]} missing" in text
+    assert f"rows {block[0] + 1}–" in text
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(design, st.data())
+def test_a_mounting_that_starts_elsewhere_or_splits_is_refused_naming_its_row(case, data):
+    n, mountings, _ = case
+    rows, _ = rig_rows(n, mountings, closure=False)
+    q = data.draw(st.sampled_from(mountings[1:]))
+    block = [r for r, row in enumerate(rows) if row[0] == str(q)]
+    moved = [list(r) for r in rows]
+    moved[block[0]], moved[block[1]] = moved[block[1]], moved[block[0]]  # starts one face on
+    assert f"row {block[0] + 1}: mounting {q} starts at face" in refused(moved)
+    shifted = [list(r) for r in rows]
+    for r in block:  # the whole mounting read from another encoder start
+        shifted[r][2] = f"{float(shifted[r][2]) + 0.5 * 360.0 / n:.9f}"
+    assert f"row {block[0] + 1}: mounting {q} starts with the encoder at" in refused(shifted)
+    split = [list(r) for r in rows]
+    split.append(split.pop(block[0]))  # its first reading moved to the end
+    text = refused(split)
+    assert "keep each mounting's readings in one block" in text or "starts at face" in text
+
+
+@pytest.mark.parametrize("faces", [7, 9])
+def test_a_face_count_that_disagrees_names_the_rows(faces):
+    rows, _ = rig_rows(8, [0, 3], closure=False)
+    text = refused(rows, faces)
+    if faces == 7:
+        assert "row 1, column 'mounting'" in text or "column 'position': face 8 is outside 1…7" \
+            in text
+    else:
+        assert "rows 1–8: mounting 0 reads 8 faces, the face count is 9: face(s) 9 missing" in text
+
+
+def test_one_mounting_and_a_blank_cell_are_refused():
+    rows, _ = rig_rows(6, [0])
+    assert "only mounting 0" in refused(rows)
+    rows, _ = rig_rows(6, [0, 2])
+    rows[4][2] = ""
+    assert "row 5, column 'encoder_deg': the encoder reading is given in some rows" in refused(rows)
+
+
+# -- the matrix ---------------------------------------------------------------------------
+def test_the_matrix_labs_write_is_the_same_readings(tmp_path):
+    """An n × n matrix (rows mountings, columns faces, a closure column) read as rows: the
+    encoder blank (set to its steps), each mounting from face j + 1."""
+    n = 6
+    rng = np.random.default_rng(3)
+    ac = np.round(rng.normal(0, 5, (n, n + 1)), 3)
+    lines = ["mounting," + ",".join(str(i) for i in range(1, n + 1)) + ",closure"]
+    lines += [f"{j}," + ",".join(f"{v:.3f}" for v in ac[j]) for j in range(n)]
+    path = tmp_path / "matrix.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    rows = matrix_rows(read_table(path))
+    assert len(rows) == n * (n + 1)
+    assert rows[n + 1][:2] == ["1", "2"] and rows[n + 1][3] == f"{ac[1, 1]:.3f}"  # face 2 first
+    assert rows[2 * n + 1] == ["1", "2", "", f"{ac[1, n]:.3f}", ""]  # its closure, last
+    readings = read_crosscal(parse(rows))
+    assert readings.nominal_encoder and int(readings.closure.sum()) == n
+    k = (readings.position - 1 - readings.mounting) % n
+    np.testing.assert_allclose(readings.encoder_deg, k * 360.0 / n)
+    assert matrix_rows(read_table(tmp_path / "matrix.csv")) == rows
+    (tmp_path / "plain.csv").write_text("a,b,c,d\n1,2,3,4\n", encoding="utf-8")
+    assert matrix_rows(read_table(tmp_path / "plain.csv")) is None
+
+
+# -- results against the rig ----------------------------------------------------------------
+def test_full_and_partial_rosettes_against_the_rig():
+    rows, rig = rig_rows(8, noise=0.02, seed=5)
+    result = KIND.analyze(parse(rows), KIND.default_settings)
+    e, d = rig.truth()
+    s = result.solution
+    assert np.all(np.abs(s.encoder_error_arcsec - e) <= s.encoder_error_expanded_arcsec * 1.5)
+    assert np.all(np.abs(s.polygon_deviation_arcsec - d) <= s.polygon_deviation_expanded_arcsec * 1.5)
+    data = KIND.to_json(result)
+    assert len(data["encoder_error_arcsec"]) == 8 and len(data["polygon_deviation_U_arcsec"]) == 8
+    assert "unseen_components" not in data
+    rows, _ = rig_rows(8, [0, 4], noise=0.02)
+    data = KIND.to_json(KIND.analyze(parse(rows), KIND.default_settings))
+    assert data["encoder_error_arcsec"] is None and data["polygon_deviation_arcsec"] is None
+    assert data["encoder_error_U_arcsec"] is None
+    assert data["unseen_components"]["encoder_harmonics"] == [2, 4]
+    assert any("withheld" in w or "not determined" in w.lower() for w in data["warnings"])
+
+
+def test_the_polygon_workbench_takes_the_deviations(qtbot, tmp_path, samples_dir):
+    from widgets.polygon.presenter import PolygonPresenter
+
+    result = KIND.analyze(parse([r + [""] * 0 for r in _sample_rows(samples_dir)]),
+                          KIND.default_settings)
+    path = tmp_path / "deviations.csv"
+    assert "face deviations" in KIND.correction_table(result, {}, str(path))
+    polygon = PolygonPresenter()
+    qtbot.addWidget(polygon.view)
+    polygon.load_sample()  # 24 faces: a 12-face reference does not fit
+    from models.readings.tabular_import import TableImportError
+
+    with pytest.raises(TableImportError, match="no deviation for position 13"):
+        polygon.load_certificate(str(path))
+    rows = [[str(i), "0", "", "0", "", "", ""] for i in range(1, 13)]
+    polygon.table_model.replace_all(rows)
+    assert polygon.load_certificate(str(path)) == 12
+    column = polygon.sheet.column_index("polygon_dev_arcsec")
+    got = np.array([float(polygon.sheet.text(r, column)) for r in range(12)])
+    d = result.solution.polygon_deviation_arcsec
+    np.testing.assert_allclose(got, d - d[0], atol=1e-4)
+    u = np.loadtxt(path, delimiter=",", skiprows=3)[:, 2]
+    assert u[0] == 0.0 and np.all(u[1:] > 0) and u.max() < 0.05
+
+
+def _sample_rows(samples_dir):
+    from models.readings.tabular_import import map_columns
+
+    return map_columns(read_table(samples_dir / KIND.sample_file), COLUMNS)
+
+
+# -- certificates -------------------------------------------------------------------------
+@pytest.mark.parametrize("item", ["polygon", "encoder"])
+def test_certificates_in_three_languages_have_every_glyph(tmp_path, samples_dir, capsys, item):
+    example = "certificate_crosscal_encoder.json" if item == "encoder" else "certificate_crosscal.json"
+    details = json.loads((samples_dir / example).read_text("utf-8"))
+    details.pop("example", None)
+    details["certificate_number"] = ""  # a draft: nothing goes to the register
+    for language in ("en", "zh+en", "zh"):
+        meta = tmp_path / f"meta-{language}.json"
+        meta.write_text(json.dumps({**details, "language": language, "operator": ""}),
+                        encoding="utf-8")
+        pdf = tmp_path / f"{item}-{language}.pdf"
+        code = main(["analyze", "crosscal", str(samples_dir / KIND.sample_file),
+                     "--certificate-of", item, "--certificate", str(pdf), "--metadata",
+                     str(meta)])
+        assert code == 0, capsys.readouterr().err
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True,
+                              check=True)
+        assert "No font" not in text.stderr + text.stdout
+        body = text.stdout
+        if item == "encoder":
+            assert ("JJF 1115" in body) and ("ISO 230-2" in body)
+            assert ("Encoder error at its steps" in body) or ("编码器各步误差" in body)
+            assert "RX-26" in body and "P12" not in body.split("RX-26")[0]  # the encoder's details
+        else:
+            assert ("Face deviations" in body) or ("面偏差" in body)
+
+
+# -- the presenter on a mock view -----------------------------------------------------------
+_OWNERS: list[QWidget] = []
+
+
+@pytest.fixture
+def mocked(qtbot):
+    view = mock.create_autospec(CrossCalView, instance=True)
+    view.settings_values.return_value = {}
+    owner = QWidget()
+    _OWNERS.append(owner)
+    yield CrossCalPresenter(view, parent=owner), view
+    while _OWNERS:
+        shiboken6.delete(_OWNERS.pop())
+
+
+def test_presenter_hands_the_view_the_four_figures_and_marks_closures(mocked, samples_dir):
+    presenter, view = mocked
+    presenter.table_model.replace_all(_sample_rows(samples_dir))
+    presenter.refresh()
+    encoder, polygon, residuals, closure = view.show_figures.call_args.args
+    s = presenter.result.solution
+    np.testing.assert_allclose(encoder.series[0].y, s.encoder_error_arcsec)
+    np.testing.assert_allclose(encoder.series[0].band, s.encoder_error_expanded_arcsec)
+    np.testing.assert_allclose(polygon.series[0].y, s.polygon_deviation_arcsec)
+    assert len(closure.series[0].y) == 12
+    assert presenter.table_model.highlight_rows == {12 + 13 * j for j in range(12)}
+    view.set_reference_enabled.assert_called_with(True)
+    assert "Encoder error peak-to-peak" in view.set_verdict.call_args.args[0]
+
+
+def test_presenter_tells_a_bad_design_and_a_refused_save(mocked, tmp_path):
+    presenter, view = mocked
+    rows, _ = rig_rows(8, [0, 4])
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    encoder, polygon, _, _ = view.show_figures.call_args.args
+    assert encoder is None and polygon is None  # withheld, not drawn
+    view.set_reference_enabled.assert_called_with(False)
+    assert presenter.save_polygon_reference(str(tmp_path / "d.csv")) == ""
+    assert "not determined" in view.tell.call_args.args[1]
+    rows[3][1] = rows[2][1]
+    presenter.table_model.replace_all(rows)
+    presenter.refresh()
+    assert presenter.result is None
+    view.clear_result.assert_called()
+    assert "row 4: mounting 0, face 3 is read again" in view.set_summary.call_args.args[0]
+
+
+def test_presenter_takes_a_matrix_where_it_would_ask_for_the_mapping(mocked, tmp_path):
+    presenter, view = mocked
+    n = 5
+    lines = ["mounting," + ",".join(map(str, range(1, n + 1)))]
+    rng = np.random.default_rng(2)
+    lines += [f"{j}," + ",".join(f"{v:.2f}" for v in rng.normal(0, 3, n)) for j in range(n)]
+    path = tmp_path / "rosette.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    presenter.import_file(path)
+    assert presenter.sheet.row_count == n * n
+    view.ask_column_mapping.assert_not_called()
+    assert presenter.result is not None and presenter.result.readings.nominal_encoder
+
+
+# -- the window ---------------------------------------------------------------------------
+def test_pasted_readings_are_drawn(qtbot, samples_dir):
+    presenter = CrossCalPresenter()
+    qtbot.addWidget(presenter.view)
+    rows = _sample_rows(samples_dir)
+    QGuiApplication.clipboard().setText("\n".join("\t".join(r) for r in rows))
+    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 0))
+    presenter.view.table.paste_action.trigger()
+    qtbot.waitUntil(lambda: presenter.result is not None)
+    s = presenter.result.solution
+    x, y = presenter.view.encoder_plot.curves[0].getData()
+    np.testing.assert_allclose(x, np.arange(12) * 30.0)
+    np.testing.assert_allclose(y, s.encoder_error_arcsec)
+    x, y = presenter.view.polygon_plot.curves[0].getData()
+    np.testing.assert_allclose(x, np.arange(1, 13))
+    np.testing.assert_allclose(y, s.polygon_deviation_arcsec)
+    assert len(presenter.view.residual_plot.curves) >= 12
+    x, y = presenter.view.closure_plot.curves[0].getData()
+    np.testing.assert_allclose(y, presenter.result.closure_arcsec)
+    assert np.all(np.abs(y) < 0.3)
+    assert presenter.view.reference_button.isEnabled()
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.integers(3, 12), st.booleans(), st.integers(0, 2**32 - 1))
+def test_a_matrix_becomes_each_mounting_from_its_first_step(n, closure, seed):
+    from models.readings.tabular_import import RawTable
+
+    rng = np.random.default_rng(seed)
+    cells = np.round(rng.normal(0, 10, (n, n + 1)), 3)
+    header = ["安装\\面"] + [str(i) for i in range(1, n + 1)] + (["closure"] if closure else [])
+    grid = [[str(j)] + [f"{v:.3f}" for v in cells[j, :n + closure]] for j in range(n)]
+    rows = matrix_rows(RawTable("m.csv", header, grid, list(range(2, n + 2))))
+    assert len(rows) == n * (n + closure)
+    for j in range(n):
+        block = [r for r in rows if r[0] == str(j)]
+        faces = [int(r[1]) for r in block]
+        assert faces[0] == j + 1 and sorted(faces[:n]) == list(range(1, n + 1))
+        assert all(r[3] == f"{cells[j, int(r[1]) - 1]:.3f}" for r in block[:n])
+        if closure:
+            assert block[-1][1] == str(j + 1) and block[-1][3] == f"{cells[j, n]:.3f}"
+    readings = read_crosscal(parse(rows))
+    assert readings.mountings == tuple(range(n)) and readings.nominal_encoder
+
+
+def test_closure_drift_modes_are_what_they_say(samples_dir):
+    rows = _sample_rows(samples_dir)
+    for mode in ("fit", "spread", "report"):
+        result = KIND.analyze(parse(rows), {**KIND.default_settings, "closure_drift": mode})
+        assert KIND.to_json(result)["closure_drift"] == mode
+        assert result.drift_removed == (mode != "report")
+        assert ("not removed" in KIND.summary(result)) == (mode == "report")
+
+
+def test_an_outlier_is_marked_on_the_residual_map_and_named_by_row(samples_dir):
+    from models.crosscal.plots import residual_figure
+
+    rows = _sample_rows(samples_dir)
+    rows[40][3] = f"{float(rows[40][3]) + 0.5:.3f}"  # a mis-read autocollimator: row 41
+    result = KIND.analyze(parse(rows), KIND.default_settings)
+    assert [result.readings.row(i) for i in result.outliers] == [41]
+    marked = [s for s in residual_figure(result).series if s.color == (192, 57, 43)]
+    assert len(marked) == 1 and marked[0].x.tolist() == [float(rows[40][1])]
+    assert any("rows 41" in w for w in result.warnings)
+    assert KIND.to_json(result)["outlier_rows"] == [41]
+
+
+def test_an_xlsx_matrix_is_imported(mocked, tmp_path):
+    import openpyxl
+
+    presenter, view = mocked
+    n = 4
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["安装位置", *range(1, n + 1), "closure"])
+    rng = np.random.default_rng(9)
+    for j in range(n):
+        sheet.append([j, *np.round(rng.normal(0, 2, n + 1), 2).tolist()])
+    book.save(tmp_path / "rosette.xlsx")
+    presenter.import_file(tmp_path / "rosette.xlsx")
+    assert presenter.sheet.row_count == n * (n + 1)
+    assert presenter.result is not None and presenter.result.faces == n
+    view.ask_column_mapping.assert_not_called()
+
+
+def test_vertical_readings_correct_each_mountings_tilt_in_the_frame_set():
+    """The bench of the model's tests (tests/crosscal_simulator.py: its own rotations) seats
+    the polygon with a tilt of up to 10′ in each mounting; the vertical column corrects it."""
+    from tests.crosscal_simulator import Bench
+
+    n = 8
+    bench = Bench(n, {1: (1.0, 0.4), 2: (0.4, 1.0)}, np.random.default_rng(4).normal(0, 0.5, n),
+                  tilt_arcsec=600.0, noise_arcsec=0.002, rng=np.random.default_rng(5))
+    rows = [[str(j), str(i), f"{a:.9f}", f"{x:.5f}", f"{y:.5f}"]
+            for j, i, a, x, y in bench.rows(range(n), vertical=True)]
+    e, d = bench.truth()
+    tilted = KIND.analyze(parse(rows), KIND.default_settings)
+    blind = KIND.analyze(parse([r[:4] + [""] for r in rows]), KIND.default_settings)
+    error = np.max(np.abs(tilted.solution.encoder_error_arcsec - e))
+    blind_error = np.max(np.abs(blind.solution.encoder_error_arcsec - e))
+    assert error < 0.01 < blind_error
+    assert np.max(np.abs(tilted.solution.polygon_deviation_arcsec - d)) < 0.01
+    assert not any("not used by this version" in w for w in tilted.warnings)
