@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from crosscal_simulator import Bench
 
 from models.certificate.metadata import CertificateMetadata
 from models.crosscal.report import crosscal_budget
@@ -14,6 +13,7 @@ from models.crosscal.solve import solve_crosscal
 from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
 from models.readings.sheet import ReadingsSheet
 from models.registry import KINDS
+from tests.crosscal_simulator import Bench
 
 KIND = KINDS["crosscal"]
 HARMONICS = {1: (2.0, 0.3), 2: (1.0, 1.1), 3: (0.5, 2.0)}
