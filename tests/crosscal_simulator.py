@@ -31,7 +31,8 @@ constraints or the polygon workbench's tilt equations. Frames and senses:
   (faces j+1, j+2, … as the encoder counts its steps), and, with ``closure``, once more to
   the first face after a full turn. The AC's zero drifts linearly in time within each
   mounting (by up to ±``drift_arcsec`` over its n steps); both readings have Gaussian
-  noise σ = ``noise_arcsec``.
+  noise σ = ``noise_arcsec``. The AC's horizontal scale may be off by ``ac_scale`` (relative):
+  it then indicates (1 + s) times the face normal's angle from its null.
 """
 
 from __future__ import annotations
@@ -65,6 +66,7 @@ class Bench:
     ac_zero_x_arcsec: float = -4.0
     ac_zero_y_arcsec: float = 7.0
     face_elevation_arcsec: np.ndarray | None = None  # β_i per face (1 … n), ″; None: square faces
+    ac_scale: float = 0.0  # the AC's relative scale error: it indicates (1 + s)·(angle from its null)
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
@@ -147,7 +149,8 @@ class Bench:
             theta[0] = self.start_deg  # every mounting starts where the first did
             v = self._face_normals(faces, seat + theta, psi, omega)
             noise = self.rng.normal(0.0, self.noise_arcsec, (2, faces.size))
-            ac_x = np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec + drift * t / n + noise[0]
+            ac_x = ((1.0 + self.ac_scale) * np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec
+                    + drift * t / n + noise[0])
             ac_y = np.arctan2(v[2], v[0]) / ARCSEC + self.ac_zero_y_arcsec + noise[1]
             encoder = self.indicated_deg(theta)
             for q in range(faces.size):

@@ -53,6 +53,18 @@ PARAMETERS = (
               help="Standard deviation of one reading when known (the autocollimator's and the "
                    "encoder's noise together); 0: taken from the residuals of the fit, with its "
                    "degrees of freedom"),
+    Parameter("ac_scale_pct", "autocollimator scale error up to", "float", 0.2, "%", 0.0, 10.0,
+              decimals=3, step=0.05, zero="none",
+              help="Largest relative error of the autocollimator's indication over the readings' "
+                   "span (its scale and linearity, from its calibration), rectangular: it enters "
+                   "the uncertainty through the design (a constant offset cancels in each "
+                   "mounting's offset); 0: not in the budget"),
+    Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not measured",
+              "float", 60.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              help="Without vertical readings the polygon's tilt on the shaft is neither "
+                   "identified nor removed: its exact effect for a tilt up to this, the worst "
+                   "direction, enters the uncertainty (rectangular); not used when vertical "
+                   "readings are given (the tilt is then fitted and removed)"),
     Parameter("certificate_of", "certificate of", "choice", "polygon",
               choices=(("polygon", "the polygon (face deviations)"),
                        ("encoder", "the encoder (error at its steps)")),
@@ -73,6 +85,8 @@ class CrossCalResult:
     certificate_of: str
     warnings: list[str] = field(default_factory=list)
     drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
+    ac_scale_pct: float = 0.0  # setting: the autocollimator's scale error bound (budget)
+    tilt_bound_arcsec: float = 0.0  # setting: the tilt bound without vertical readings (budget)
 
     @property
     def faces(self) -> int:
@@ -104,11 +118,28 @@ class CrossCalResult:
         return out
 
     def polygon_u_from_face1_arcsec(self) -> np.ndarray:
-        """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries)."""
+        """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries): the
+        scatter's (k from its ν) with the bench's stated bounds through the design."""
         n, cov = self.faces, self.solution.covariance_arcsec2
         d = cov[n:, n:]
         var = np.diag(d) + d[0, 0] - 2.0 * d[:, 0]
+        from_first = np.zeros((n, 2 * n))
+        from_first[:, n:] = np.eye(n)
+        from_first[:, n] -= 1.0
+        var = var + self.systematic_u_arcsec(from_first) ** 2
         return self.solution.coverage_factor * np.sqrt(np.clip(var, 0.0, None))
+
+    def systematic_u_arcsec(self, combine=None) -> np.ndarray:
+        """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
+        bounds (the autocollimator's scale error; the tilt when not measured), each
+        rectangular, through the design (models.crosscal.uncertainty)."""
+        from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
+
+        s, r = self.solution, self.readings
+        scale = self.ac_scale_pct / 100.0 * scale_effect_arcsec(s, r.ac_x_arcsec, combine)
+        tilt = tilt_effect_arcsec(s, r.mounting, r.position, self.tilt_bound_arcsec,
+                                  combine=combine)
+        return np.sqrt(scale**2 + tilt**2) / math.sqrt(3.0)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""
@@ -146,7 +177,9 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     # the model's own: no closure, no vertical readings, harmonics it cannot see
     warnings: list[str] = list(solution.warnings)
     result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
-                            str(settings.get("certificate_of", "polygon")), warnings, mode)
+                            str(settings.get("certificate_of", "polygon")), warnings, mode,
+                            float(settings.get("ac_scale_pct", 0.2) or 0.0),
+                            float(settings.get("tilt_bound_arcsec", 60.0) or 0.0))
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "

@@ -20,7 +20,7 @@ from models.certificate.document import CertificateDocument, Table, decision_row
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, TITLE
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
@@ -70,7 +70,80 @@ def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
             math.sqrt(3.0), 1.0, math.inf,
             message(QT_TR_NOOP("resolution {r} per reading, through the same design"),
                     r=f"{r:g}\"")))
+    components += _systematic_components(result, np.asarray(u, dtype=float))
     return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability)
+
+
+def _item_block(result) -> slice:
+    n = result.faces
+    return slice(0, n) if result.certificate_of == "encoder" else slice(n, 2 * n)
+
+
+def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponent]:
+    """The bench's systematic inputs, each through the design (results = G·y, so a pattern
+    δy in the readings moves them by G·δy exactly): the autocollimator's scale error over the
+    readings' span, and an unmeasured tilt of the polygon on the shaft (its fitted tilt's own
+    uncertainty, when vertical readings were given, if it is not negligible)."""
+    from models.crosscal.uncertainty import (
+        scale_effect_arcsec,
+        tilt_effect_arcsec,
+        tilt_fit_effect_arcsec,
+    )
+
+    s, r, block = result.solution, result.readings, _item_block(result)
+    out = []
+    if result.ac_scale_pct > 0:
+        c = np.asarray(r.ac_x_arcsec, dtype=float)
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Autocollimator scale error"), "B", "rectangular",
+            result.ac_scale_pct / 100.0 * scale_effect_arcsec(s, c)[block], math.sqrt(3.0), 1.0,
+            math.inf,
+            message(QT_TR_NOOP("up to ±{scale} of the reading (scale and linearity, stated) over "
+                               "the readings' span {low} … {high}, through the design"),
+                    scale=f"{result.ac_scale_pct:g} %", low=f"{np.min(c):+.1f}\"",
+                    high=f"{np.max(c):+.1f}\"")))
+    unmeasured = [j for j, t in zip(s.mountings, s.tilts or (None,) * len(s.mountings),
+                                    strict=True) if t is None]
+    if unmeasured and result.tilt_bound_arcsec > 0:
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Tilt of the polygon on the shaft (not measured)"), "B", "rectangular",
+            tilt_effect_arcsec(s, r.mounting, r.position, result.tilt_bound_arcsec)[block],
+            math.sqrt(3.0), 1.0, math.inf,
+            message(QT_TR_NOOP("no vertical readings in {count} mounting(s): a tilt up to {psi} "
+                               "(stated) in its worst direction, exact effect in the set-up's "
+                               "frame, through the design"),
+                    count=len(unmeasured), psi=f"{result.tilt_bound_arcsec:g}\"")))
+    fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[block]
+    if np.any(fitted > 0) and np.max(fitted) > 0.1 * np.min(u_scatter):
+        out.append(BudgetComponent(
+            QT_TR_NOOP("Tilt correction (fitted ψ, ω)"), "A", "normal", fitted, 1.0, 1.0, math.inf,
+            QT_TR_NOOP("u(ψ), u(ω) of each mounting's tilt fit through its removed correction "
+                       "and the design")))
+    return out
+
+
+def budget_remarks(result) -> tuple[str, ...]:
+    """Why the budget has no separate row for drift, temperature and (when negligible) the
+    fitted tilt's own uncertainty: one line for the certificate."""
+    from models.crosscal.uncertainty import tilt_fit_effect_arcsec
+
+    s, r = result.solution, result.readings
+    drift = {"fit": QT_TR_NOOP("each mounting's drift is fitted with the results, so what is "
+                               "left of it is in the reading scatter"),
+             "spread": QT_TR_NOOP("each mounting's closure drift is removed, so what is left of "
+                                  "it is in the reading scatter"),
+             "report": QT_TR_NOOP("each mounting's drift is reported, not removed; within a "
+                                  "mounting it is in the reading scatter")}[result.drift_mode]
+    parts = [message(QT_TR_NOOP("Not separate rows of the budget: drift ({drift}); temperature "
+                                "(the angles between a polygon's faces, and an encoder's steps "
+                                "over a full turn, are insensitive to a uniform temperature)"),
+                     drift=message(drift))]
+    fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[_item_block(result)]
+    if np.any(fitted > 0) and np.max(fitted) <= 0.1 * np.min(_per_point(result)[1]):
+        parts += ["; ", message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
+                                           "results by at most {u} (u), negligible"),
+                                u=f"{np.max(fitted):.2g}\"")]
+    return (joined((*parts, ".")),)
 
 
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
@@ -129,12 +202,14 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         if math.isfinite(figures["repeatability_jjf1115"]):
             stat_rows.append((QT_TR_NOOP("JJF 1115 repeatability (largest s over the steps)"),
                               f"{figures['repeatability_jjf1115']:.3f}\"",
-                              QT_TR_NOOP("the mountings as repeated runs")))
+                              QT_TR_NOOP("indicative (mountings are remountings, not repeat "
+                                         "runs)")))
         iso = [f"{k[7:]} = {v:.3f}\"" for k, v in figures.items()
                if k.startswith("iso230_") and math.isfinite(v)]
         if iso:
             stat_rows.append((QT_TR_NOOP("ISO 230-2 (unidirectional)"), ", ".join(iso),
-                              QT_TR_NOOP("the mountings as repeated runs; deviation = −error")))
+                              QT_TR_NOOP("indicative (mountings are remountings, not repeat "
+                                         "runs); deviation = −error")))
         plots = [encoder_figure(result)]
     else:
         u1 = result.polygon_u_from_face1_arcsec()
@@ -184,4 +259,4 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         budget_point=message(point, k=worst if item == "encoder" else worst + 1),
         conformity=conformity, tolerance=tolerance,
         plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
-        point_columns=point_columns, statements=statements)
+        point_columns=point_columns, statements=statements + budget_remarks(result))

@@ -163,6 +163,11 @@ class CrossCalibration:
     #: (their median over the mountings), arcsec — what the vertical readings are judged by;
     #: nan without vertical readings
     vertical_scatter_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    #: (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start −
+    #: k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a
+    #: systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern
+    #: δc in the autocollimator's readings by −gain · δc)
+    gain: np.ndarray = field(default_factory=lambda: np.zeros((0, 0)))
 
     @property
     def separable(self) -> bool:
@@ -561,6 +566,8 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
     else:
         scatter_trace = float(rows_n - rank)
         cov_unit = solver
+        gain = np.zeros((p, y.size))
+        gain[:, used_index] = (design @ solver).T
     dof = float(rows_n - rank)
     if noise_arcsec is not None:
         sigma, dof = float(noise_arcsec), float(noise_dof)
@@ -618,4 +625,4 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
         probability=probability, warnings=tuple(warnings),
         face_pyramidal_arcsec=None if faces_fit is None else faces_fit.elevation_arcsec,
         face_pyramidal_u_arcsec=None if faces_fit is None else faces_fit.u_arcsec,
-        vertical_scatter_arcsec=vertical_scatter)
+        vertical_scatter_arcsec=vertical_scatter, gain=proj @ gain)

@@ -21,7 +21,8 @@ import numpy as np
 
 from models.crosscal.solve import CrossCalibration, solve_crosscal
 
-__all__ = ["MonteCarloCheck", "design_uncertainty", "estler_full_rosette", "monte_carlo_check"]
+__all__ = ["MonteCarloCheck", "design_uncertainty", "estler_full_rosette", "monte_carlo_check",
+           "scale_effect_arcsec", "tilt_effect_arcsec", "tilt_fit_effect_arcsec"]
 
 
 def estler_full_rosette(n: int, sigma_arcsec: float) -> tuple[float, float, int]:
@@ -94,3 +95,78 @@ def monte_carlo_check(mounting, position, encoder_deg, ac_x_arcsec, runs: int = 
     return MonteCarloCheck(runs, scatter[:n], scatter[n:], reference.encoder_error_u_arcsec,
                            reference.polygon_deviation_u_arcsec, covered / (runs * 2 * n),
                            reference.probability, reference.dof)
+
+
+def _gain(solution: CrossCalibration, combine) -> np.ndarray:
+    """G, or ``combine``·G for combinations of the results (differences from face 1, say)."""
+    return solution.gain if combine is None else np.asarray(combine, dtype=float) @ solution.gain
+
+
+def scale_effect_arcsec(solution: CrossCalibration, ac_x_arcsec, combine=None) -> np.ndarray:
+    """|(G·c)| per value of (E, d) (2n): the results' change per unit relative scale error s of
+    the autocollimator, whose readings c become (1 + s)·c: δy = −s·c, δ(E, d) = −s·G·c exactly
+    (G = ``solution.gain``; a constant zero offset cancels in each mounting's offset); of
+    ``combine``·(E, d) when given."""
+    c = np.asarray(ac_x_arcsec, dtype=float)
+    return np.abs(_gain(solution, combine) @ c)
+
+
+def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arcsec: float,
+                       directions: int = 72, combine=None) -> np.ndarray:
+    """Half-width per value of (E, d) (2n) of the results' change that an unmeasured tilt of
+    the polygon on the shaft up to ``bound_arcsec`` causes: per mounting, the exact horizontal
+    effect of a tilt ψ = bound towards the worst direction ω (``models.pyramidal``, in the
+    set-up's frame) through the design, |G_j · ε_j(ω)| at its largest over ω; the mountings'
+    tilts are independent, so their half-widths add in quadrature (each rectangular). Mountings
+    whose tilt was fitted from vertical readings are left out. Of ``combine``·(E, d) when
+    given."""
+    from models.pyramidal import pyramidal_correction_arcsec
+
+    n = solution.faces
+    mounting = np.asarray(mounting)
+    theta = (np.asarray(position, dtype=int) - 1) * 360.0 / n
+    gain = _gain(solution, combine)
+    total = np.zeros(gain.shape[0])
+    if not bound_arcsec > 0:
+        return total
+    for j, tilt in zip(solution.mountings, solution.tilts or (None,) * len(solution.mountings),
+                       strict=True):
+        if tilt is not None:  # fitted and removed
+            continue
+        rows = np.flatnonzero(mounting == j)
+        g = gain[:, rows]
+        worst = np.zeros(gain.shape[0])
+        for omega in np.arange(directions) * 360.0 / directions:
+            eps = pyramidal_correction_arcsec(theta[rows], bound_arcsec, omega, 0.0,
+                                              solution.ac_alignment)
+            worst = np.maximum(worst, np.abs(g @ eps))
+        total += worst**2
+    return np.sqrt(total)
+
+
+def tilt_fit_effect_arcsec(solution: CrossCalibration, mounting, position) -> np.ndarray:
+    """Standard uncertainty per value of (E, d) (2n) that the fitted tilts' own uncertainty
+    u(ψ), u(ω) leaves in the results through their removed correction (first order, through
+    the design); zeros without vertical readings."""
+    from models.pyramidal import pyramidal_correction_arcsec
+
+    n = solution.faces
+    mounting = np.asarray(mounting)
+    theta = (np.asarray(position, dtype=int) - 1) * 360.0 / n
+    total = np.zeros(2 * n)
+    for j, t in zip(solution.mountings, solution.tilts or (), strict=False):
+        if t is None:
+            continue
+        rows = np.flatnonzero(mounting == j)
+        g = solution.gain[:, rows]
+
+        def eps(psi, omega, th=theta[rows], g=g):
+            return g @ pyramidal_correction_arcsec(th, psi, omega, 0.0, solution.ac_alignment)
+
+        d_psi = (eps(t.psi_arcsec + 0.01, t.omega_deg) - eps(t.psi_arcsec - 0.01, t.omega_deg)) / 0.02
+        d_om = (eps(t.psi_arcsec, t.omega_deg + 1e-3) - eps(t.psi_arcsec, t.omega_deg - 1e-3)) / 2e-3
+        cov = t.cov_psi_omega if t.cov_psi_omega is not None else np.diag(
+            [t.u_psi_arcsec**2, t.u_omega_deg**2])
+        grad = np.column_stack([d_psi, d_om])
+        total += np.clip(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0, None)
+    return np.sqrt(total)

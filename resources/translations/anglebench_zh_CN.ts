@@ -1063,7 +1063,7 @@
     </message>
     <message>
         <source>How the autocollimator was set: levelled with the rotary axis (the usual lab set-up: its vertical along the shaft), or with its vertical along the polygon&apos;s own axis, rolled with its tilt (the frame of the method&apos;s paper, Tian et al. 2015). The pyramidal correction is that frame&apos;s; the certificate states it. Tell them apart with a tilt test: tilt the polygon on its seat and watch the horizontal reading</source>
-        <translation>自准直仪的安置方式：与回转轴一同调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
+        <translation>自准直仪的安置方式：按回转轴调平（实验室常用装置：其竖直方向沿转轴），或其竖直方向沿多面棱体自身轴线、随其倾斜转动（方法论文田留德等 2015 所用的安置）。塔差修正按该安置计算，并在证书上注明。用俯仰试验区分：使棱体在安装座上俯仰，观察水平读数</translation>
     </message>
     <message>
         <source>ISG kernel leadscrew error compensation list</source>
@@ -2666,7 +2666,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>levelled with the rotary axis</source>
-        <translation>与回转轴一同调平</translation>
+        <translation>按回转轴调平（竖直方向沿转轴）</translation>
     </message>
     <message>
         <source>θ (deg)</source>
@@ -4971,7 +4971,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>levelled with the rotary axis (vertical along the shaft)</source>
-        <translation>与回转轴一同调平（竖直方向沿转轴）</translation>
+        <translation>按回转轴调平（竖直方向沿转轴）</translation>
     </message>
     <message>
         <source>Autocollimator roll</source>
@@ -5010,6 +5010,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>自准直仪滚转 ≤</translation>
     </message>
     <message>
+        <source>Largest relative error of the autocollimator&apos;s indication over the readings&apos; span (its scale and linearity, from its calibration), rectangular: it enters the uncertainty through the design (a constant offset cancels in each mounting&apos;s offset); 0: not in the budget</source>
+        <translation>自准直仪示值在读数范围内的最大相对误差（其刻度与线性，取自其校准），矩形分布：经测量设计计入不确定度（恒定零位偏差在各安装位置的偏移中抵消）；0：不计入预算</translation>
+    </message>
+    <message>
         <source>Largest roll of the autocollimator about its line of sight, relative to the set-up&apos;s vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)</source>
         <translation>未实测时，自准直仪绕其视轴相对于安置竖直方向的最大滚转：它使部分竖直读数进入水平读数（不确定度分量）</translation>
     </message>
@@ -5028,6 +5032,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
+        <translation>无竖直读数时，多面棱体在轴上的倾斜既未辨识也未修正：按不超过此值的倾斜、最不利方向精确计算其影响，计入不确定度（矩形分布）；给出竖直读数时不用（此时倾斜被拟合并修正）</translation>
+    </message>
+    <message>
+        <source>autocollimator scale error up to</source>
+        <translation>自准直仪刻度误差上限</translation>
     </message>
     <message>
         <source>cos</source>
@@ -5060,6 +5072,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>grade 7: ±30&quot;</source>
         <translation>7 级：±30&quot;</translation>
+    </message>
+    <message>
+        <source>largest tilt of the polygon on the shaft, when not measured</source>
+        <translation>多面棱体在轴上的最大倾斜（未测量时）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
     </message>
     <message>
         <source>u(AC roll measured)</source>
@@ -6264,7 +6284,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>the encoder&apos;s errors and the face deviations are uncorrelated (a full rosette)</source>
-        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings</extracomment>
+        <extracomment>a reading further than this from its step is no reading of that step (fraction of a step) vertical readings scattering more than this many times the horizontal σ (+ 0.1″) about their tilt curve are said to be suspect a fitted tilt above this (1°) is no seating but wrong vertical readings how each mounting&apos;s drift is taken from its closure reading (see the module&apos;s text) E_k at steps k = 0 … n−1 (first step first), Σ = 0; None when not determined d_i for faces 1 … n, Σ = 0; None when not determined harmonic orders of E and of d the design cannot see (empty when all are determined) E and d with the undetermined harmonics removed (equal to the results when none is) covariance of (E, d) — of their determined parts — arcsec², 2n × 2n per mounting (in ``mountings`` order): the drift used — fitted (&quot;fit&quot;), the closure drift H (&quot;spread&quot;, &quot;report&quot;); nan without a closure reading per mounting: H = (c′ − c) − (a′ − a) of its closure reading, as the polygon workbench computes it (tilt removed), nan without a closure reading per mounting: models.pyramidal.TiltFit, or None (no vertical readings) per row: the tilt&apos;s horizontal effect removed from the reading, arcsec (zeros without) per row: the encoder step k, the reading&apos;s order t in its mounting (closure: n), and whether it is a closure reading per row: whether the reading entered the least squares (closure readings in &quot;spread&quot;/&quot;report&quot; do not) per face (1 … n): the face normal&apos;s own elevation β_i (its pyramidal error), arcsec, in the sense of the vertical reading, relative to the faces&apos; mean plane (mean and first harmonic over the faces removed — they cannot be told from the autocollimator&apos;s vertical zero and a tilt common to all mountings); None without vertical readings of at least two mountings standard uncertainty (k = 1) of each face_pyramidal_arcsec, from the vertical scatter per mounting: RMS of its vertical readings about its tilt and the faces&apos; pyramidal errors (their median over the mountings), arcsec — what the vertical readings are judged by; nan without vertical readings (2n × rows): (E, d) = gain · y, y per row the reading the model sees, y = (a − a_start − k·360°/n)·3600 − c − tilt correction (closure rows included; zero where not used), so a systematic pattern δy in the readings moves the results by exactly gain · δy (a pattern δc in the autocollimator&apos;s readings by −gain · δc)</extracomment>
         <translation>编码器误差与各面偏差不相关（全组合测量）</translation>
     </message>
     <message>
@@ -6420,6 +6440,50 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
     </message>
     <message>
+        <source>Autocollimator scale error</source>
+        <translation>自准直仪刻度误差</translation>
+    </message>
+    <message>
+        <source>up to ±{scale} of the reading (scale and linearity, stated) over the readings&apos; span {low} … {high}, through the design</source>
+        <translation>读数的 ±{scale} 以内（刻度与线性，给定值），读数范围 {low} … {high}，经测量设计传递</translation>
+    </message>
+    <message>
+        <source>Tilt of the polygon on the shaft (not measured)</source>
+        <translation>多面棱体在轴上的倾斜（未测量）</translation>
+    </message>
+    <message>
+        <source>no vertical readings in {count} mounting(s): a tilt up to {psi} (stated) in its worst direction, exact effect in the set-up&apos;s frame, through the design</source>
+        <translation>{count} 个安装位置无竖直读数：倾斜至多 {psi}（给定值），取最不利方向，按装置坐标系精确计算其影响，经测量设计传递</translation>
+    </message>
+    <message>
+        <source>Tilt correction (fitted ψ, ω)</source>
+        <translation>倾斜修正（拟合的 ψ、ω）</translation>
+    </message>
+    <message>
+        <source>u(ψ), u(ω) of each mounting&apos;s tilt fit through its removed correction and the design</source>
+        <translation>各安装位置倾斜拟合的 u(ψ)、u(ω)，经其修正量与测量设计传递</translation>
+    </message>
+    <message>
+        <source>each mounting&apos;s drift is fitted with the results, so what is left of it is in the reading scatter</source>
+        <translation>各安装位置的漂移与结果一同拟合，其剩余部分已含于读数分散性中</translation>
+    </message>
+    <message>
+        <source>each mounting&apos;s closure drift is removed, so what is left of it is in the reading scatter</source>
+        <translation>各安装位置的闭合漂移已修正，其剩余部分已含于读数分散性中</translation>
+    </message>
+    <message>
+        <source>each mounting&apos;s drift is reported, not removed; within a mounting it is in the reading scatter</source>
+        <translation>各安装位置的漂移仅报告、未修正；安装位置内的漂移含于读数分散性中</translation>
+    </message>
+    <message>
+        <source>Not separate rows of the budget: drift ({drift}); temperature (the angles between a polygon&apos;s faces, and an encoder&apos;s steps over a full turn, are insensitive to a uniform temperature)</source>
+        <translation>不单列于预算中：漂移（{drift}）；温度（多面棱体各面间的夹角及编码器整周各步对均匀温度变化不敏感）</translation>
+    </message>
+    <message>
+        <source>the fitted tilts&apos; own uncertainty changes the results by at most {u} (u), negligible</source>
+        <translation>拟合倾斜自身的不确定度使结果至多变化 {u}（u），可忽略</translation>
+    </message>
+    <message>
         <source>Encoder</source>
         <translation>编码器</translation>
     </message>
@@ -6480,16 +6544,16 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>JJF 1115 重复性（各步 s 的最大值）</translation>
     </message>
     <message>
-        <source>the mountings as repeated runs</source>
-        <translation>各安装位置视为重复测量</translation>
+        <source>indicative (mountings are remountings, not repeat runs)</source>
+        <translation>仅供参考（各安装位置为重新安装，并非重复测量）</translation>
     </message>
     <message>
         <source>ISO 230-2 (unidirectional)</source>
         <translation>ISO 230-2（单向）</translation>
     </message>
     <message>
-        <source>the mountings as repeated runs; deviation = −error</source>
-        <translation>各安装位置视为重复测量；偏差 = −误差</translation>
+        <source>indicative (mountings are remountings, not repeat runs); deviation = −error</source>
+        <translation>仅供参考（各安装位置为重新安装，并非重复测量）；偏差 = −误差</translation>
     </message>
     <message>
         <source>Face deviations</source>

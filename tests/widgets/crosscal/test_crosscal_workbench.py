@@ -206,7 +206,8 @@ def _sample_rows(samples_dir):
 # -- certificates -------------------------------------------------------------------------
 @pytest.mark.parametrize("item", ["polygon", "encoder"])
 def test_certificates_in_three_languages_have_every_glyph(tmp_path, samples_dir, capsys, item):
-    details = json.loads((samples_dir / "certificate_crosscal.json").read_text("utf-8"))
+    example = "certificate_crosscal_encoder.json" if item == "encoder" else "certificate_crosscal.json"
+    details = json.loads((samples_dir / example).read_text("utf-8"))
     details.pop("example", None)
     details["certificate_number"] = ""  # a draft: nothing goes to the register
     for language in ("en", "zh+en", "zh"):
@@ -225,6 +226,7 @@ def test_certificates_in_three_languages_have_every_glyph(tmp_path, samples_dir,
         if item == "encoder":
             assert ("JJF 1115" in body) and ("ISO 230-2" in body)
             assert ("Encoder error at its steps" in body) or ("编码器各步误差" in body)
+            assert "RX-26" in body and "P12" not in body.split("RX-26")[0]  # the encoder's details
         else:
             assert ("Face deviations" in body) or ("面偏差" in body)
 
