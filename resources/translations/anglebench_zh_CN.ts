@@ -2762,6 +2762,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -5946,7 +5947,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive)</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
