@@ -143,8 +143,16 @@ class ErrorPlot(QWidget):
 
     def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
         """Update the curves (arcsec over x); ``None`` hides a curve."""
-        self.main_renderer.show(self._figure("raw", "model", x=x, ys=(raw, model)))
-        self.corrected_renderer.show(self._figure("corrected", x=x, ys=(corrected,)))
+        points = np.size(x)  # a hidden curve's legend sample drawn as its panel's others
+        self.main_renderer.show(self._figure("raw", "model", x=x, ys=(raw, model)),
+                                follow=False, points=points)
+        self.corrected_renderer.show(self._figure("corrected", x=x, ys=(corrected,)),
+                                     follow=False, points=points)
+        # both panels drawn, then ranged: x-linked, they follow their new data together
+        for renderer in (self.main_renderer, self.corrected_renderer):
+            renderer.follow_x()
+        for renderer in (self.main_renderer, self.corrected_renderer):
+            renderer.follow_y()
         place_legend(self.main_plot, self.legend)
         place_legend(self.corrected_plot, self.corrected_legend)
 

@@ -141,13 +141,13 @@ class FigureRenderer:
     def _user_ranged(self, _mask) -> None:
         self._sticky_y = False
 
-    def style(self, series) -> SeriesStyle:
+    def style(self, series, points: int | None = None) -> SeriesStyle:
         """How ``series`` is drawn here: as decided in models/plot_style.py, with its role's
         markers on a panel drawn with ``role_markers``, and fewer of them or thinner pens
-        on a long series."""
+        on a long series (of ``points``, by default its own)."""
         role = ROLE_STYLES.get(series.role) if self.role_markers else None
         style = series_style(series) if role is None else role
-        points = np.size(series.x)
+        points = np.size(series.x) if points is None else points
         if style.symbol is not None and self.dense_points is not None and points > self.dense_points:
             style = dataclasses.replace(style, width=1.0)
         if (style.symbol is not None and self.max_symbol_points is not None
@@ -155,9 +155,12 @@ class FigureRenderer:
             style = dataclasses.replace(style, symbol=None)
         return style
 
-    def show(self, figure, follow: bool = True) -> None:
+    def show(self, figure, follow: bool = True, points: int | None = None) -> None:
         """Draw ``figure`` (``None``: nothing); with ``follow=False`` the view's range is
-        left as it is (curves declared before there is any data)."""
+        left as it is (curves declared before there is any data, or panels that follow
+        their new data together once all are drawn: :meth:`follow_x`, :meth:`follow_y`);
+        ``points``: the count the markers and pens go by (a hidden curve's legend entry
+        then looks like its panel's others), by default each series' own."""
         if figure is None:
             self.clear()
             return
@@ -174,7 +177,7 @@ class FigureRenderer:
         order = {id(s): i for i, s in enumerate(drawing_order(figure))}
         for index, s in enumerate(figure.series):
             curve = self.curve(index)
-            style = self.style(s)
+            style = self.style(s, points)
             colour = pg.mkColor(*style.colour)
             if self.bars:
                 curve.setOpts(x=s.x, y0=floor, height=np.asarray(s.y) - floor,
@@ -202,17 +205,26 @@ class FigureRenderer:
                 curve.setData([], [])
             self._name(index, "")
         if follow and self.steady_y:
-            if follow_new_data(self.item, y=False):  # new data: a user's zoom of the old is given up
-                self._sticky_y = True
-            self._follow_y([s.y for s in figure.series])
+            self.follow_x()
+            self.follow_y()
         elif follow:
             follow_new_data(self.item)  # new data: shown whole again
         self._settle_legend()
 
-    def _follow_y(self, arrays) -> None:
-        """Move the y range only if the data left it or fill less than 60 % of it. A user's
-        zoom is left alone until the plot's auto-range button ("A") is pressed or the data
-        change (``follow_new_data``)."""
+    def follow_x(self) -> None:
+        """New data are shown whole along x again (``steady_y``: y is :meth:`follow_y`'s)."""
+        if not self.steady_y:
+            follow_new_data(self.item)
+        elif follow_new_data(self.item, y=False):  # new data: a user's zoom of the old is given up
+            self._sticky_y = True
+
+    def follow_y(self) -> None:
+        """``steady_y``: move the y range only if the data left it or fill less than 60 % of
+        it. A user's zoom is left alone until the plot's auto-range button ("A") is pressed
+        or the data change (:meth:`follow_x`)."""
+        if not self.steady_y or self._figure is None:
+            return
+        arrays = [s.y for s in self._figure.series]
         vb = self.item.getViewBox()
         if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
             vb.enableAutoRange(y=False)
