@@ -379,7 +379,7 @@ def test_an_xlsx_matrix_is_imported(mocked, tmp_path):
 def test_vertical_readings_correct_each_mountings_tilt_in_the_frame_set():
     """The bench of the model's tests (tests/crosscal_simulator.py: its own rotations) seats
     the polygon with a tilt of up to 10′ in each mounting; the vertical column corrects it."""
-    from crosscal_simulator import Bench
+    from tests.crosscal_simulator import Bench
 
     n = 8
     bench = Bench(n, {1: (1.0, 0.4), 2: (0.4, 1.0)}, np.random.default_rng(4).normal(0, 0.5, n),
