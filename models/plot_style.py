@@ -52,7 +52,7 @@ def series_style(series: PlotSeries) -> SeriesStyle:
     """Colour, line, dash and markers of ``series`` in a figure drawn on one chart: its
     role's colour, dashed when its role is (the set-up model) or it says so, the width and
     markers (dots) it declares. (The window's three-panel error plot draws each role with
-    all of its role's style, its markers too: widgets/error_plot.py.)"""
+    all of its role's style, its markers too: FigureRenderer's ``role_markers``.)"""
     role = ROLE_STYLES.get(series.role)
     width = DEFAULT_WIDTH if series.width is None else series.width
     return SeriesStyle(role_colour(series), width, series.dashed or (role is not None and role.dashed),

@@ -1,7 +1,9 @@
 """Error-curve plot shared by the workbenches: raw error with the model over it,
 the corrected error on its own scale, a residual plot beneath; legends, arcsec
-axes and a crosshair readout. Each role's colour, line and markers are those the
-certificate draws with (models/plot_style.py)."""
+axes and a crosshair readout. Each panel's curves are drawn by a FigureRenderer
+(widgets/figure_plot.py), the code that draws every other figure, in the colour, line
+and markers the certificate draws each role with (models/plot_style.py); this widget
+lays out the panels, names their axes and legends, and reads the curves under the cursor."""
 
 from __future__ import annotations
 
@@ -11,10 +13,11 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 from models.plot_style import ROLE_STYLES
+from models.plots import PlotFigure, PlotSeries
+from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
-from widgets.plot_range import follow_new_data
 
 
 def _pen(role: str) -> pg.QtGui.QPen:
@@ -23,12 +26,6 @@ def _pen(role: str) -> pg.QtGui.QPen:
     style = ROLE_STYLES[role]
     return pg.mkPen(pg.mkColor(*style.colour), width=style.width,
                     style=Qt.PenStyle.DashLine if style.dashed else Qt.PenStyle.SolidLine)
-
-
-def _symbol(role: str) -> dict:
-    style = ROLE_STYLES[role]
-    return {"symbol": style.symbol, "symbolSize": style.symbol_size,
-            "symbolBrush": pg.mkColor(*style.colour), "symbolPen": None}
 
 
 RAW_PEN, MODEL_PEN, CORRECTED_PEN, RESIDUAL_PEN = (_pen(role) for role in (
@@ -63,15 +60,6 @@ class ErrorPlot(QWidget):
         self.unit = "\""  # of the errors drawn, for the readout under the cursor
         self._setup_ui(x_label, residual_label)
         self._layout()
-        # y ranges follow the data, but only when it leaves the view or shrinks well
-        # inside it: an edit that moves the curve a little leaves the axes (and their
-        # tick labels, ~2 ms each to re-render) alone, and the plot does not jitter
-        self._sticky_y: dict[pg.ViewBox, bool] = {}
-        for plot in (self.main_plot, self.corrected_plot, self.residual_plot):
-            vb = plot.getViewBox()
-            self._sticky_y[vb] = True
-            vb.sigRangeChangedManually.connect(lambda _mask, vb=vb: self._sticky_y.__setitem__(
-                vb, False))
 
     def _setup_ui(self, x_label: str, residual_label: str) -> None:
         self.graphics = pg.GraphicsLayoutWidget()
@@ -96,17 +84,27 @@ class ErrorPlot(QWidget):
         on_language_change(self, self._relabel)
         self.legend = self.main_plot.addLegend(offset=(-10, 10))
         self.corrected_legend = self.corrected_plot.addLegend(offset=(-10, 10))
-        self.raw_curve = self.main_plot.plot(name=declared("raw"), pen=RAW_PEN, **_symbol("raw"))
-        self.model_curve = self.main_plot.plot(name=declared("model"), pen=MODEL_PEN)
-        self.corrected_curve = self.corrected_plot.plot(
-            name=declared("corrected"), pen=CORRECTED_PEN, **_symbol("corrected"))
+        # each panel's renderer: the roles' own markers, none on a long curve, thin pens on a
+        # dense one; y ranges that follow the data only when it leaves the view or shrinks
+        # well inside it (an edit that moves the curve a little leaves the axes, and their
+        # tick labels, ~2 ms each to re-render, alone: the plot does not jitter); the
+        # curves drawn in the order made, the model over the raw error
+        panel = {"titles": False, "role_markers": True, "max_symbol_points": MAX_SYMBOL_POINTS,
+                 "dense_points": DENSE_POINTS, "steady_y": True, "z_order": False}
+        self.main_renderer = FigureRenderer(self.main_plot, **panel)
+        self.corrected_renderer = FigureRenderer(self.corrected_plot, y_includes=(0.0,), **panel)
+        self.residual_renderer = FigureRenderer(self.residual_plot, y_includes=(0.0,), **panel)
+        # the legend's names in English, shown again in the window's language by the
+        # renderers (an empty plot's legend too: it stayed "raw / model / corrected" in Chinese)
+        self._curve_names = {"raw": "raw", "model": "model", "corrected": "corrected"}
+        self.main_renderer.show(self._figure("raw", "model"), follow=False)
+        self.raw_curve, self.model_curve = self.main_renderer.curves
+        self.corrected_renderer.show(self._figure("corrected"), follow=False)
+        (self.corrected_curve,) = self.corrected_renderer.curves
         self.corrected_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
-        self.residual_curve = self.residual_plot.plot(pen=RESIDUAL_PEN, **_symbol("residual"))
+        self.residual_renderer.show(self._figure("residual"), follow=False)
+        (self.residual_curve,) = self.residual_renderer.curves
         self.residual_plot.addItem(pg.InfiniteLine(0, angle=0, pen=pg.mkPen("#999")))
-        # the legend's names in English, to be shown again in the window's language (an
-        # empty plot's legend too: it stayed "raw / model / corrected" in Chinese)
-        self._curve_names = {self.raw_curve: "raw", self.model_curve: "model",
-                             self.corrected_curve: "corrected"}
         self.vline = pg.InfiniteLine(angle=90, movable=False, pen=pg.mkPen("#888", width=1))
         self.main_plot.addItem(self.vline, ignoreBounds=True)
         self.readout = QLabel(" ")
@@ -125,34 +123,36 @@ class ErrorPlot(QWidget):
         place_legend(self.main_plot, self.legend)
         place_legend(self.corrected_plot, self.corrected_legend)
 
+    def _figure(self, *roles: str, x=(), ys=None) -> PlotFigure:
+        """The figure a panel draws: a series per role (empty where ``ys`` has ``None``),
+        named as the legend names it."""
+        x = np.asarray(x, dtype=float)
+        ys = ys if ys is not None else [None] * len(roles)
+        return PlotFigure("", "", "", tuple(
+            PlotSeries(self._curve_names.get(role, ""), x if y is not None else np.empty(0),
+                       np.asarray(y, dtype=float) if y is not None else np.empty(0), role=role)
+            for role, y in zip(roles, ys, strict=True)))
+
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
-        for curve, name in ((self.raw_curve, raw), (self.model_curve, model),
-                            (self.corrected_curve, corrected)):
-            self._curve_names[curve] = name
-            name = declared(name) if name else name
-            curve.opts["name"] = name
-            for legend in (self.legend, self.corrected_legend):
-                label = legend.getLabel(curve)
-                if label is not None and name:
-                    label.setText(name)
-                elif label is not None:
-                    legend.removeItem(curve)
+        """The legend's names of the three curves ("": none), in English."""
+        self._curve_names.update(raw=raw, model=model, corrected=corrected)
+        for renderer, roles in ((self.main_renderer, ("raw", "model")),
+                                (self.corrected_renderer, ("corrected",))):
+            for index, role in enumerate(roles):
+                renderer.rename(index, self._curve_names[role])
 
     def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
         """Update the curves (arcsec over x); ``None`` hides a curve."""
-        x = np.asarray(x, dtype=float)
-        self._style_for(x.size)
-        for curve, y in ((self.raw_curve, raw), (self.model_curve, model),
-                         (self.corrected_curve, corrected)):
-            if y is None:
-                curve.setData([], [])
-            else:
-                curve.setData(x, np.asarray(y, dtype=float))
-        for plot in (self.main_plot, self.corrected_plot):
-            if follow_new_data(plot, y=False):  # new data: a user's zoom of the old is given up
-                self._sticky_y[plot.getViewBox()] = True
-        self._follow_y(self.main_plot, (raw, model))
-        self._follow_y(self.corrected_plot, (corrected, [0.0]))
+        points = np.size(x)  # a hidden curve's legend sample drawn as its panel's others
+        self.main_renderer.show(self._figure("raw", "model", x=x, ys=(raw, model)),
+                                follow=False, points=points)
+        self.corrected_renderer.show(self._figure("corrected", x=x, ys=(corrected,)),
+                                     follow=False, points=points)
+        # both panels drawn, then ranged: x-linked, they follow their new data together
+        for renderer in (self.main_renderer, self.corrected_renderer):
+            renderer.follow_x()
+        for renderer in (self.main_renderer, self.corrected_renderer):
+            renderer.follow_y()
         place_legend(self.main_plot, self.legend)
         place_legend(self.corrected_plot, self.corrected_legend)
 
@@ -180,11 +180,6 @@ class ErrorPlot(QWidget):
     def _relabel(self) -> None:
         for (plot, axis), english in self._labels.items():
             plot.setLabel(axis, declared(english))
-        for curve, english in getattr(self, "_curve_names", {}).items():
-            for legend in (self.legend, self.corrected_legend):
-                label = legend.getLabel(curve)
-                if label is not None and english:
-                    label.setText(declared(english))
 
     def _state_units(self, errors_label: str, residuals_label: str) -> None:
         """Each panel's title names the unit of the figure it draws (the unit results are
@@ -198,52 +193,11 @@ class ErrorPlot(QWidget):
             self.set_axis_label(self.residual_plot, "left", _with_unit(
                 self.axis_label(self.residual_plot), _unit_of(residuals_label)))
 
-    def _follow_y(self, plot, arrays) -> None:
-        """Move the y range only if the data left it or fill less than 60 % of it. A user's
-        zoom is left alone until the plot's auto-range button ("A") is pressed or the data
-        change (``follow_new_data``)."""
-        vb = plot.getViewBox()
-        if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
-            vb.enableAutoRange(y=False)
-            self._sticky_y[vb] = True
-        if not self._sticky_y.get(vb, False):
-            return
-        values = [np.asarray(a, dtype=float).ravel() for a in arrays if a is not None]
-        values = np.concatenate(values) if values else np.empty(0)
-        values = values[np.isfinite(values)]
-        if values.size == 0:
-            return
-        lo, hi = float(values.min()), float(values.max())
-        span = hi - lo if hi > lo else max(abs(hi), 1e-3)
-        view_lo, view_hi = vb.viewRange()[1]
-        if lo < view_lo or hi > view_hi or span < 0.6 * (view_hi - view_lo):
-            pad = 0.08 * span
-            vb.setYRange(lo - pad, hi + pad, padding=0.0)
-
-    def _style_for(self, points: int) -> None:
-        """Symbols on a short curve; thin pens on a dense one."""
-        for curve, symbol, pen in ((self.raw_curve, ROLE_STYLES["raw"].symbol, RAW_PEN),
-                                   (self.corrected_curve, ROLE_STYLES["corrected"].symbol,
-                                    CORRECTED_PEN),
-                                   (self.residual_curve, ROLE_STYLES["residual"].symbol,
-                                    RESIDUAL_PEN)):
-            wanted = symbol if points <= MAX_SYMBOL_POINTS else None
-            if curve.opts["symbol"] != wanted:
-                curve.setSymbol(wanted)
-            width = 1.0 if points > DENSE_POINTS else pen.widthF()
-            if curve.opts["pen"].widthF() != width:
-                thin = pg.mkPen(pen)
-                thin.setWidthF(width)
-                curve.setPen(thin)
-
     def set_residuals(self, x, residuals) -> None:
         if residuals is None:
-            self.residual_curve.setData([], [])
+            self.residual_renderer.clear()
         else:
-            self.residual_curve.setData(np.asarray(x, float), np.asarray(residuals, float))
-            if follow_new_data(self.residual_plot, y=False):
-                self._sticky_y[self.residual_plot.getViewBox()] = True
-            self._follow_y(self.residual_plot, (residuals, [0.0]))
+            self.residual_renderer.show(self._figure("residual", x=x, ys=(residuals,)))
 
     def clear(self) -> None:
         self.set_curves([], None, None, None)

@@ -10,6 +10,7 @@ set to clip and decimate its curves (the fringe plots: a million samples) keeps 
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 
 import numpy as np
@@ -17,7 +18,7 @@ import pyqtgraph as pg
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 
-from models.plot_style import SeriesStyle, drawing_order, series_style
+from models.plot_style import ROLE_STYLES, SeriesStyle, drawing_order, series_style
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
@@ -53,12 +54,31 @@ class FigureRenderer:
     own); ``bars``: each series is drawn as bars of ``bar_width`` (offset as declared),
     rising from ``0`` or, with ``log_bars``, from a decade below the smallest value (the
     values are log10 amplitudes: the tallest bar is then the largest). ``curves`` holds the
-    drawn series (PlotDataItems or BarGraphItems) in the figure's order, for tests."""
+    drawn series (PlotDataItems or BarGraphItems) in the figure's order, for tests.
+
+    The error plot's panels (widgets/error_plot.py) ask for more: ``role_markers``, a series
+    with a role is drawn with all of its role's style, markers too; ``max_symbol_points``,
+    a series of more points is drawn without markers (they would overlap, and 1000 symbols
+    cost ~10 ms per redraw); ``dense_points``, a series of markers of more points is a band
+    of envelope points drawn with a 1-px pen (a 2-px pen adds nothing to a band and a third
+    to the panel's paint); ``steady_y``, the y range moves only when the data leave it or
+    fill less than 60 % of it (with ``y_includes`` always in view: the zero line), so an
+    edit that moves a curve a little leaves the axes alone; ``z_order=False`` draws the
+    series in the figure's order, each over the one before."""
 
     def __init__(self, plot, titles: bool = True, bars: bool = False, bar_width: float = 0.6,
-                 log_bars: bool = False) -> None:
+                 log_bars: bool = False, *, role_markers: bool = False,
+                 max_symbol_points: int | None = None, dense_points: int | None = None,
+                 steady_y: bool = False, y_includes: tuple[float, ...] = (),
+                 z_order: bool = True) -> None:
         self.item: pg.PlotItem = plot.getPlotItem() if hasattr(plot, "getPlotItem") else plot
         self.titles, self.bars, self.bar_width, self.log_bars = titles, bars, bar_width, log_bars
+        self.role_markers, self.z_order = role_markers, z_order
+        self.max_symbol_points, self.dense_points = max_symbol_points, dense_points
+        self.steady_y, self.y_includes = steady_y, tuple(y_includes)
+        self._sticky_y = True  # the y range is ours to move (False: the user zoomed or dragged)
+        if steady_y:
+            self.item.getViewBox().sigRangeChangedManually.connect(self._user_ranged)
         self.curves: list = []
         self.bands: list[pg.FillBetweenItem] = []  # the ±bands drawn
         self._names: list[str] = []  # each curve's label, in English
@@ -97,6 +117,11 @@ class FigureRenderer:
             self._names.append("")
         return self.curves[index]
 
+    def rename(self, index: int, label: str) -> None:
+        """Curve ``index``'s legend entry, by the English ``label`` ("": none)."""
+        self.curve(index)
+        self._name(index, label)
+
     def _name(self, index: int, label: str) -> None:
         """The legend entry of curve ``index``: added, renamed or removed as its label says."""
         curve, legend = self.curves[index], self.legend
@@ -113,8 +138,29 @@ class FigureRenderer:
         elif name:
             legend.addItem(curve, name)
 
-    def show(self, figure) -> None:
-        """Draw ``figure`` (``None``: nothing)."""
+    def _user_ranged(self, _mask) -> None:
+        self._sticky_y = False
+
+    def style(self, series, points: int | None = None) -> SeriesStyle:
+        """How ``series`` is drawn here: as decided in models/plot_style.py, with its role's
+        markers on a panel drawn with ``role_markers``, and fewer of them or thinner pens
+        on a long series (of ``points``, by default its own)."""
+        role = ROLE_STYLES.get(series.role) if self.role_markers else None
+        style = series_style(series) if role is None else role
+        points = np.size(series.x) if points is None else points
+        if style.symbol is not None and self.dense_points is not None and points > self.dense_points:
+            style = dataclasses.replace(style, width=1.0)
+        if (style.symbol is not None and self.max_symbol_points is not None
+                and points > self.max_symbol_points):
+            style = dataclasses.replace(style, symbol=None)
+        return style
+
+    def show(self, figure, follow: bool = True, points: int | None = None) -> None:
+        """Draw ``figure`` (``None``: nothing); with ``follow=False`` the view's range is
+        left as it is (curves declared before there is any data, or panels that follow
+        their new data together once all are drawn: :meth:`follow_x`, :meth:`follow_y`);
+        ``points``: the count the markers and pens go by (a hidden curve's legend entry
+        then looks like its panel's others), by default each series' own."""
         if figure is None:
             self.clear()
             return
@@ -131,14 +177,15 @@ class FigureRenderer:
         order = {id(s): i for i, s in enumerate(drawing_order(figure))}
         for index, s in enumerate(figure.series):
             curve = self.curve(index)
-            style = series_style(s)
+            style = self.style(s, points)
             colour = pg.mkColor(*style.colour)
             if self.bars:
                 curve.setOpts(x=s.x, y0=floor, height=np.asarray(s.y) - floor,
                               width=self.bar_width, brush=colour)
                 self._name(index, s.label)
                 continue
-            curve.setZValue(order[id(s)] - len(figure.series))  # the set-up model under the rest
+            if self.z_order:  # the set-up model under the rest
+                curve.setZValue(order[id(s)] - len(figure.series))
             if s.band is not None:
                 ok = np.isfinite(s.y) & np.isfinite(s.band)
                 upper = pg.PlotCurveItem(s.x[ok], (s.y + s.band)[ok])
@@ -157,8 +204,44 @@ class FigureRenderer:
             else:
                 curve.setData([], [])
             self._name(index, "")
-        follow_new_data(self.item)  # new data: shown whole again
+        if follow and self.steady_y:
+            self.follow_x()
+            self.follow_y()
+        elif follow:
+            follow_new_data(self.item)  # new data: shown whole again
         self._settle_legend()
+
+    def follow_x(self) -> None:
+        """New data are shown whole along x again (``steady_y``: y is :meth:`follow_y`'s)."""
+        if not self.steady_y:
+            follow_new_data(self.item)
+        elif follow_new_data(self.item, y=False):  # new data: a user's zoom of the old is given up
+            self._sticky_y = True
+
+    def follow_y(self) -> None:
+        """``steady_y``: move the y range only if the data left it or fill less than 60 % of
+        it. A user's zoom is left alone until the plot's auto-range button ("A") is pressed
+        or the data change (:meth:`follow_x`)."""
+        if not self.steady_y or self._figure is None:
+            return
+        arrays = [s.y for s in self._figure.series]
+        vb = self.item.getViewBox()
+        if vb.state["autoRange"][1]:  # pyqtgraph's own auto-range (start, or "A" pressed)
+            vb.enableAutoRange(y=False)
+            self._sticky_y = True
+        if not self._sticky_y:
+            return
+        values = [np.asarray(a, dtype=float).ravel() for a in (*arrays, self.y_includes)]
+        values = np.concatenate(values)
+        values = values[np.isfinite(values)]
+        if values.size == 0:
+            return
+        lo, hi = float(values.min()), float(values.max())
+        span = hi - lo if hi > lo else max(abs(hi), 1e-3)
+        view_lo, view_hi = vb.viewRange()[1]
+        if lo < view_lo or hi > view_hi or span < 0.6 * (view_hi - view_lo):
+            pad = 0.08 * span
+            vb.setYRange(lo - pad, hi + pad, padding=0.0)
 
     def _settle_legend(self) -> None:
         """The legend laid out at once with its new names, then placed: its size is then

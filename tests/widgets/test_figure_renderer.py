@@ -112,3 +112,43 @@ def test_the_certificate_draws_from_the_shared_style(monkeypatch, series, colour
     assert seen and all(style.colour == colour for style in seen)
     stroke = " ".join(f"{c / 255:.4f}".rstrip("0").rstrip(".") or "0" for c in colour)
     assert f"{stroke} RG" in content
+
+
+def _role_figure(points: int, scale: float = 1.0) -> PlotFigure:
+    x = np.linspace(0.0, 360.0, points)
+    wave = scale * np.sin(np.radians(x))
+    return PlotFigure("", "θ (°)", "error (\")", (PlotSeries("raw", x, wave, role="raw"),
+                                                   PlotSeries("model", x, 0.9 * wave, role="model")))
+
+
+@pytest.mark.parametrize(("points", "symbol", "width"), [(24, "o", 2.0), (600, None, 2.0),
+                                                         (3000, None, 1.0)])
+def test_a_panel_of_the_error_plot_draws_roles_by_their_point_count(qtbot, points, symbol, width):
+    """The error plot's rules, now the renderer's: a role's own markers on a short curve, none
+    beyond 500 points, a 1-px pen on a curve of points beyond 2000 (not on the model's line)."""
+    widget = pg.PlotWidget()
+    qtbot.addWidget(widget)
+    renderer = FigureRenderer(widget, titles=False, role_markers=True, max_symbol_points=500,
+                              dense_points=2000)
+    renderer.show(_role_figure(points))
+    raw, model = renderer.curves
+    assert raw.opts["symbol"] == symbol and raw.opts["pen"].widthF() == width
+    assert raw.opts["symbolSize"] == ROLE_STYLES["raw"].symbol_size
+    assert model.opts["symbol"] is None and model.opts["pen"].widthF() == 2.0
+    assert model.opts["pen"].style() == Qt.PenStyle.DashLine
+
+
+def test_a_steady_y_range_moves_only_when_the_data_leave_it_or_shrink_well_inside(qtbot):
+    widget = pg.PlotWidget()
+    qtbot.addWidget(widget)
+    renderer = FigureRenderer(widget, titles=False, steady_y=True, y_includes=(0.0,))
+    vb = widget.getPlotItem().getViewBox()
+    renderer.show(_role_figure(24))
+    first = vb.viewRange()[1]
+    assert first[0] < -1.0 and first[1] > 1.0 and not vb.state["autoRange"][1]
+    renderer.show(_role_figure(24, 1.02))  # a small edit: the axes stay
+    assert vb.viewRange()[1] == first
+    renderer.show(_role_figure(24, 3.0))  # the data leave the view: it follows
+    assert vb.viewRange()[1][1] > 3.0
+    renderer.show(_role_figure(24, 0.2))  # shrinks well inside: it follows
+    assert vb.viewRange()[1][1] < 0.5
