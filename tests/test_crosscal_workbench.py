@@ -5,6 +5,7 @@ pasting readings."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import subprocess
 from unittest import mock
@@ -197,6 +198,91 @@ def test_the_polygon_workbench_takes_the_deviations(qtbot, tmp_path, samples_dir
     assert u[0] == 0.0 and np.all(u[1:] > 0) and u.max() < 0.05
 
 
+def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
+    """The 3-D bench of tests/crosscal_simulator.py (its own rotations), 12 faces, a partial
+    rosette, σ = 0.05″ stated: the JSON's face deviations about their mean and from face 1,
+    and the encoder's errors about their mean, each inside its own U in 95 % of the cases;
+    the U from face 1 (from the full covariance) is not the U about the mean, and the polygon
+    certificate states the deviations from face 1 with that U."""
+    from crosscal_simulator import Bench
+
+    from models.certificate.metadata import CertificateMetadata
+
+    n, trials, sigma = 12, 150, 0.05
+    settings = {**KIND.default_settings, "noise_arcsec": sigma}
+    inside = {"mean": [], "face 1": [], "encoder": []}
+    for seed in range(trials):
+        rng = np.random.default_rng(seed)
+        bench = Bench(n, {1: (1.5, 0.3), 2: (0.6, 1.0), 5: (0.2, 0.4)}, rng.normal(0, 1.0, n),
+                      noise_arcsec=sigma, rng=rng)
+        rows = [[str(j), str(i), f"{a:.10f}", f"{x:.6f}", ""]
+                for j, i, a, x in bench.rows([0, 1, 5])]
+        result = KIND.analyze(parse(rows), settings)
+        data = json.loads(json.dumps(KIND.to_json(result)))
+        true_e, true_d = bench.truth()
+        assert data["polygon_deviation_reference"] == "mean"
+        assert data["encoder_error_reference"] == "mean"
+        d, u = np.array(data["polygon_deviation_arcsec"]), np.array(data["polygon_deviation_U_arcsec"])
+        d1 = np.array(data["polygon_deviation_from_face1_arcsec"])
+        u1 = np.array(data["polygon_deviation_U_from_face1_arcsec"])
+        e, ue = np.array(data["encoder_error_arcsec"]), np.array(data["encoder_error_U_arcsec"])
+        assert abs(d.sum()) < 1e-9 and abs(e.sum()) < 1e-9 and d1[0] == 0.0 and u1[0] == 0.0
+        inside["mean"] += list(np.abs(d - true_d) <= u)
+        inside["face 1"] += list(np.abs(d1 - (true_d - true_d[0]))[1:] <= u1[1:])
+        inside["encoder"] += list(np.abs(e - true_e) <= ue)
+    for key, hits in inside.items():
+        assert 0.93 <= np.mean(hits) <= 0.97, (key, np.mean(hits))
+    # the two references carry different U: the mean's would be wrong from face 1
+    assert np.max(np.abs(u1[1:] / u[1:] - 1.0)) > 0.1
+    meta = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": "Lab"})
+    document = KIND.certificate_document(result, meta, "x.csv", settings)
+    table = np.array([[float(c) for c in row] for row in document.results.rows])
+    np.testing.assert_allclose(table[:, 2], d1, atol=6e-4)
+    np.testing.assert_allclose(table[:, 3], u1, atol=6e-4)
+    assert "From face 1" in document.results.header[2]
+    np.testing.assert_allclose(document.budget.expanded, u1, rtol=1e-9, atol=1e-12)
+
+
+def test_the_face_deviations_are_sent_to_the_polygon_workbench_with_their_u(window, samples_dir):
+    """Window: the crosscal sample analysed, File › Send as reference; the polygon workbench's
+    reference column is d_i − d_1 (1e-6″), its standard's U the largest of d_i − d_1, stated
+    from face 1; a second send replaces it; Undo there restores the column."""
+    from app.reference_sender import send_reference
+
+    crosscal, polygon = window.presenter("crosscal"), window.presenter("polygon")
+    crosscal.load_sample()
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert crosscal.result is not None and window.menus.send_reference_action.isEnabled()
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    assert not window.menus.send_reference_action.isEnabled()  # nothing to send from there
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert send_reference(window) and window.current is polygon, window.told
+    d = crosscal.result.solution.polygon_deviation_arcsec
+    n = crosscal.result.faces
+    column = polygon.sheet.column_index("polygon_dev_arcsec")
+    assert polygon.sheet.row_count == n  # an empty table: a row per face
+    got = np.array([float(polygon.sheet.text(r, column)) for r in range(n)])
+    np.testing.assert_allclose(got, d - d[0], atol=1e-6)
+    assert [int(polygon.sheet.text(r, 0)) for r in range(n)] == list(range(1, n + 1))
+    u1 = crosscal.result.polygon_u_from_face1_arcsec()
+    k = crosscal.result.solution.coverage_factor
+    (standard,) = [s for s in window.certificates.details("polygon").standards
+                   if s.applies_to == "from face 1"]
+    assert standard.basis == "u" and standard.uncertainty == pytest.approx(u1.max() / k, abs=1e-6)
+    assert "largest U of d_i − d_1" in standard.description and f"{u1.max():.4f}" in standard.description
+    assert 0.0 < u1.max() < 0.05 and u1[0] == 0.0
+    # into a table with readings: by position, one undo step; sent again: one standard
+    polygon.table_model.set_cells([(r, column, "9") for r in range(n)], "typed")
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert send_reference(window)
+    got = np.array([float(polygon.sheet.text(r, column)) for r in range(n)])
+    np.testing.assert_allclose(got, d - d[0], atol=1e-6)
+    assert len([s for s in window.certificates.details("polygon").standards
+                if s.applies_to == "from face 1"]) == 1
+    polygon.table_model.undo_stack.undo()
+    assert polygon.sheet.text(3, column) == "9"
+
+
 def _sample_rows(samples_dir):
     from models.readings.tabular_import import map_columns
 
@@ -222,11 +308,40 @@ def test_certificates_in_three_languages_have_every_glyph(tmp_path, samples_dir,
                               check=True)
         assert "No font" not in text.stderr + text.stdout
         body = text.stdout
+        flat = "".join(body.split())
+        # traceable through the closure of the circle, never "not established"
+        if language == "zh":
+            assert "经圆周封闭（2πrad，准确值）溯源至国际单位制平面角单位" in flat
+            assert "依圆周封闭原理相互校准" in flat and "本文件未建立" not in flat
+        else:
+            assert "throughtheclosureofthecircle(2πrad,exact)" in flat
+            assert "bytheclosureprinciple" in flat and "notestablished" not in flat
         if item == "encoder":
             assert ("JJF 1115" in body) and ("ISO 230-2" in body)
             assert ("Encoder error at its steps" in body) or ("编码器各步误差" in body)
         else:
             assert ("Face deviations" in body) or ("面偏差" in body)
+
+
+def test_only_crosscal_states_its_own_traceability_basis(samples_dir):
+    from app.writers.certificate_pdf import _traceability
+    from models.certificate.metadata import CertificateMetadata
+    from models.workbench import IssuesCertificates
+
+    details = json.loads((samples_dir / "certificate_crosscal.json").read_text("utf-8"))
+    details.pop("example", None)
+    meta = CertificateMetadata.from_dict({**details, "standards": []})
+    result = KIND.analyze(parse(_sample_rows(samples_dir)), KIND.default_settings)
+    document = KIND.certificate_document(result, meta, "x.csv", KIND.default_settings)
+    assert document.traceability_basis == KIND.traceability_basis
+    text = _traceability(document)
+    assert text.startswith("Metrological traceability: the results are traceable to the SI")
+    assert "closure principle" in text and "not established" not in text
+    # the other workbenches keep the shared wording: through the standards listed
+    others = [k for k in KINDS.values() if isinstance(k, IssuesCertificates) and k is not KIND]
+    assert len(others) >= 4 and all(k.traceability_basis is None for k in others)
+    plain = dataclasses.replace(document, traceability_basis="")
+    assert "not established on this document" in _traceability(plain)
 
 
 # -- the presenter on a mock view -----------------------------------------------------------

@@ -792,6 +792,11 @@ def _traceability(document: CertificateDocument) -> str:
         if listed:
             parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
                                               "stated uncertainty: {names}."), names=names)]
+    elif document.traceability_basis:  # a self-calibrating method: its own reference
+        parts = [_translatable(document.traceability_basis)]
+        if listed:
+            parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
+                                              "stated uncertainty: {names}."), names=names)]
     elif not listed:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established on this "
                                     "document — no reference standard with a calibration "

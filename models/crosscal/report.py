@@ -43,11 +43,17 @@ DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least sq
 
 
 def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
-    """(values, u of one reading's scatter per point, what) of the certificate's item."""
+    """(values, u of one reading's scatter per point, what) of the certificate's item: the
+    encoder's errors about their mean over the full turn, the polygon's face deviations from
+    face 1 (d_i − d_1, as polygon certificates state them), each u for that same quantity
+    (from the full covariance: face 1's u is zero)."""
     s = result.solution
     if result.certificate_of == "encoder":
         return s.encoder_error_arcsec, s.encoder_error_u_arcsec, "encoder"
-    return s.polygon_deviation_arcsec, s.polygon_deviation_u_arcsec, "polygon"
+    d = s.polygon_deviation_arcsec
+    if d is None:
+        return None, None, "polygon"
+    return d - d[0], result.polygon_u_from_face1_standard_arcsec(), "polygon"
 
 
 def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
@@ -137,21 +143,23 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                               QT_TR_NOOP("the mountings as repeated runs; deviation = −error")))
         plots = [encoder_figure(result)]
     else:
-        u1 = result.polygon_u_from_face1_arcsec()
-        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", f"{values[i]:+.3f}", f"{big_u[i]:.3f}",
-                 f"{values[i] - values[0]:+.3f}", f"{u1[i]:.3f}") for i in range(n)]
+        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", f"{values[i]:+.3f}", f"{big_u[i]:.3f}")
+                for i in range(n)]
         results = Table(QT_TR_NOOP("Face deviations"),
                         (QT_TR_NOOP("Face"), QT_TR_NOOP("Nominal (°)"),
-                         QT_TR_NOOP("Deviation (\")"), "U (\")", QT_TR_NOOP("From face 1 (\")"),
-                         QT_TR_NOOP("U from face 1 (\")")), rows,
-                        QT_TR_NOOP("Deviation = the face's angle from face 1 minus its nominal, "
-                                   "stated about the mean over the faces (the faces close at "
-                                   "360°); the last two columns state it from face 1."))
+                         QT_TR_NOOP("From face 1 (\")"), "U (\")"), rows,
+                        QT_TR_NOOP("Deviation = the face's angle from face 1 minus its nominal "
+                                   "(face 1 is the reference: its deviation and U are zero by "
+                                   "definition); U is that of the difference from face 1, from "
+                                   "the full covariance of the fit."))
+        about_mean = s.polygon_deviation_arcsec
         point_columns = (("face", np.arange(1, n + 1, dtype=float)),
-                         ("nominal_deg", np.arange(n) * 360.0 / n), ("deviation_arcsec", values),
-                         ("expanded_uncertainty_arcsec", big_u),
-                         ("deviation_from_face1_arcsec", values - values[0]),
-                         ("expanded_uncertainty_from_face1_arcsec", u1))
+                         ("nominal_deg", np.arange(n) * 360.0 / n),
+                         ("deviation_from_face1_arcsec", values),
+                         ("expanded_uncertainty_from_face1_arcsec", big_u),
+                         ("deviation_about_mean_arcsec", about_mean),
+                         ("expanded_uncertainty_about_mean_arcsec",
+                          s.polygon_deviation_expanded_arcsec))
         point = QT_TR_NOOP("face {k}")
         names = [message(point, k=k + 1) for k in range(n)]
         what = QT_TR_NOOP("face deviation")

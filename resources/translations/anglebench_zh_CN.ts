@@ -6821,5 +6821,41 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
+    <message>
+        <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the closure of the circle (2π rad, exact): the polygon and the encoder are calibrated against each other by the closure principle; no reference standard is used.</source>
+        <translation>计量溯源性：本结果经圆周封闭（2π rad，准确值）溯源至国际单位制平面角单位：多面棱体与编码器依圆周封闭原理相互校准，未使用任何计量标准。</translation>
+    </message>
+    <message>
+        <source>Deviation = the face&apos;s angle from face 1 minus its nominal (face 1 is the reference: its deviation and U are zero by definition); U is that of the difference from face 1, from the full covariance of the fit.</source>
+        <translation>偏差 = 该面相对第 1 面的角度减去其标称值（以第 1 面为参考：其偏差与 U 按定义为零）；U 为相对第 1 面之差的扩展不确定度，由拟合的完整协方差求得。</translation>
+    </message>
+    <message>
+        <source>Reference from another workbench</source>
+        <translation>来自其他工作台的参考值</translation>
+    </message>
+    <message>
+        <source>{workbench} has no reference to send.</source>
+        <translation>{workbench}没有可发送的参考值。</translation>
+    </message>
+    <message>
+        <source>{workbench}: {cells} reference values sent to {target} with their U (largest u = {u}); Edit › Undo there restores the column</source>
+        <translation>{workbench}：{cells} 个参考值连同其 U 已发送至{target}（最大 u = {u}）；在该处用 编辑 › 撤销 可恢复该列</translation>
+    </message>
+    <message>
+        <source>Send as &amp;reference</source>
+        <translation>作为参考值发送(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Send this result to the workbench that reads with it as its reference, with its U (the polygon&apos;s face deviations from face 1 to the polygon workbench)</source>
+        <translation>将本结果连同其 U 作为参考值发送至使用它的工作台（多面棱体相对第 1 面的面偏差发送至多面棱体工作台）</translation>
+    </message>
+    <message>
+        <source>Polygon, {faces} faces, cross-calibrated (closure principle); its U is the largest U of d_i − d_1 over the faces, {u} (k = {k})</source>
+        <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；其 U 取各面 d_i − d_1 的最大 U，{u}（k = {k}）</translation>
+    </message>
+    <message>
+        <source>polygon face deviations</source>
+        <translation>多面棱体面偏差</translation>
+    </message>
 </context>
 </TS>
