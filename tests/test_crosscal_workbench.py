@@ -429,6 +429,73 @@ def test_pasted_readings_are_drawn(qtbot, samples_dir):
     assert presenter.view.reference_button.isEnabled()
 
 
+def _matrix_and_long(n: int, seed: int) -> tuple[list[str], list[str]]:
+    """The same readings as the n × n matrix labs write and as rows of the columns
+    (encoder blank: set to its steps; face j + 1 first in mounting j, the closure last)."""
+    ac = np.round(np.random.default_rng(seed).normal(0, 5, (n, n + 1)), 3)
+    matrix = ["mounting," + ",".join(str(i) for i in range(1, n + 1)) + ",closure"]
+    matrix += [f"{j}," + ",".join(f"{v:.3f}" for v in ac[j]) for j in range(n)]
+    long = ["mounting,position,encoder_deg,ac_x_arcsec"]
+    for j in range(n):
+        long += [f"{j},{(j + k) % n + 1},,{ac[j, (j + k) % n]:.3f}" for k in range(n)]
+        long.append(f"{j},{j + 1},,{ac[j, n]:.3f}")
+    return matrix, long
+
+
+def test_the_command_line_reads_the_matrix(tmp_path, capsys):
+    """`anglebench analyze crosscal MATRIX.csv --json` gives what the same readings written
+    as rows give; a bad cell of the matrix is refused, not a crash."""
+    n = 7
+    matrix, long = _matrix_and_long(n, 11)
+    (tmp_path / "matrix.csv").write_text("\n".join(matrix) + "\n", encoding="utf-8")
+    (tmp_path / "long.csv").write_text("\n".join(long) + "\n", encoding="utf-8")
+    got = {}
+    for name in ("matrix", "long"):
+        code = main(["analyze", "crosscal", str(tmp_path / f"{name}.csv"), "--json"])
+        out, err = capsys.readouterr()
+        assert code == 0, err
+        got[name] = json.loads(out)
+    a, b = got["matrix"], got["long"]
+    assert a["faces"] == n and a["mountings"] == list(range(n)) and a["nominal_encoder_steps"]
+    for key in ("encoder_error_arcsec", "encoder_error_U_arcsec", "polygon_deviation_arcsec",
+                "polygon_deviation_U_arcsec", "closure_arcsec"):
+        np.testing.assert_allclose(a[key], b[key], rtol=0, atol=1e-12)
+    assert np.ptp(a["polygon_deviation_arcsec"]) > 1.0  # real figures, not zeros
+    cells = matrix[3].split(",")
+    cells[4] = "1.2.3"
+    matrix[3] = ",".join(cells)
+    (tmp_path / "bad.csv").write_text("\n".join(matrix) + "\n", encoding="utf-8")
+    code = main(["analyze", "crosscal", str(tmp_path / "bad.csv"), "--json"])
+    out, err = capsys.readouterr()
+    assert code != 0 and "ac_x_arcsec" in err and "row" in err and not out
+
+
+def test_a_pasted_matrix_is_unrolled_into_the_readings(qtbot, tmp_path):
+    n = 6
+    matrix, long = _matrix_and_long(n, 5)
+    presenter = CrossCalPresenter()
+    qtbot.addWidget(presenter.view)
+    QGuiApplication.clipboard().setText("\n".join(line.replace(",", "\t") for line in matrix))
+    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 0))
+    presenter.view.table.paste_action.trigger()
+    qtbot.waitUntil(lambda: presenter.result is not None)
+    assert presenter.sheet.row_count == n * (n + 1)
+    (tmp_path / "long.csv").write_text("\n".join(long) + "\n", encoding="utf-8")
+    expected = KIND.analyze(parse(_rows_of(tmp_path / "long.csv")), KIND.default_settings)
+    np.testing.assert_allclose(presenter.result.solution.polygon_deviation_arcsec,
+                               expected.solution.polygon_deviation_arcsec, atol=1e-12)
+    np.testing.assert_allclose(presenter.result.solution.encoder_error_arcsec,
+                               expected.solution.encoder_error_arcsec, atol=1e-12)
+    presenter.undo_stack.undo()  # one undo step restores the empty sheet
+    assert not any(presenter.sheet.text(r, 3) for r in range(presenter.sheet.row_count))
+
+
+def _rows_of(path):
+    from models.readings.tabular_import import map_columns
+
+    return map_columns(read_table(path), COLUMNS)
+
+
 @settings(max_examples=40, deadline=None)
 @given(st.integers(3, 12), st.booleans(), st.integers(0, 2**32 - 1))
 def test_a_matrix_becomes_each_mounting_from_its_first_step(n, closure, seed):

@@ -6857,5 +6857,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>polygon face deviations</source>
         <translation>多面棱体面偏差</translation>
     </message>
+    <message>
+        <source>Paste {rows} row(s), replacing the sheet</source>
+        <translation>粘贴 {rows} 行，替换整个表格</translation>
+    </message>
 </context>
 </TS>
