@@ -203,7 +203,7 @@ def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
     rosette, σ = 0.05″ stated: the JSON's face deviations about their mean and from face 1,
     and the encoder's errors about their mean, each inside its own U in 95 % of the cases;
     the U from face 1 (from the full covariance) is not the U about the mean, and the polygon
-    certificate states the deviations from face 1 with that U."""
+    certificate states both, each with its own U."""
     from crosscal_simulator import Bench
 
     from models.certificate.metadata import CertificateMetadata
@@ -237,10 +237,12 @@ def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
     meta = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": "Lab"})
     document = KIND.certificate_document(result, meta, "x.csv", settings)
     table = np.array([[float(c) for c in row] for row in document.results.rows])
-    np.testing.assert_allclose(table[:, 2], d1, atol=6e-4)
-    np.testing.assert_allclose(table[:, 3], u1, atol=6e-4)
-    assert "From face 1" in document.results.header[2]
-    np.testing.assert_allclose(document.budget.expanded, u1, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(table[:, 2], d, atol=6e-4)  # d_i about the mean, its U
+    np.testing.assert_allclose(table[:, 3], u, atol=6e-4)
+    np.testing.assert_allclose(table[:, 4], d1, atol=6e-4)  # d_i − d_1, its own U
+    np.testing.assert_allclose(table[:, 5], u1, atol=6e-4)
+    assert "From face 1" in document.results.header[4] and "about the mean" in document.results.note
+    np.testing.assert_allclose(document.budget.expanded, u, rtol=1e-9, atol=1e-12)
 
 
 def test_the_face_deviations_are_sent_to_the_polygon_workbench_with_their_u(window, samples_dir):

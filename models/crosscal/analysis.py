@@ -105,6 +105,18 @@ class CrossCalResult:
             out[q, k[rows]] = e[k[rows]] + s.residuals_arcsec[rows]
         return out
 
+    @property
+    def encoder_start_deg(self) -> float:
+        """The encoder's reading where every mounting starts (its first mounting's first)."""
+        r = self.readings
+        return float(r.encoder_deg[np.flatnonzero(r.mounting == r.mountings[0])[0]])
+
+    def encoder_u_from_step0_arcsec(self) -> np.ndarray:
+        """Expanded U of E_k − E_0 from the full covariance (zero at step 0)."""
+        n, cov = self.faces, self.solution.covariance_arcsec2[:self.faces, :self.faces]
+        var = np.diag(cov) + cov[0, 0] - 2.0 * cov[:, 0]
+        return self.solution.coverage_factor * np.sqrt(np.clip(var[:n], 0.0, None))
+
     def polygon_u_from_face1_standard_arcsec(self) -> np.ndarray:
         """Standard uncertainty of d_i − d_1 from the full covariance: var d_i + var d_1
         − 2 cov(d_i, d_1) (zero at face 1, the reference)."""
