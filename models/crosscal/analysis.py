@@ -257,17 +257,13 @@ def summary(result: CrossCalResult) -> str:
                            ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
                            u=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\""))
     else:
-        out.append(message(QT_TR_NOOP("Encoder error NOT determined: harmonic(s) {orders} unseen "
-                                      "by this design"),
-                           orders=", ".join(map(str, s.undetermined_encoder_harmonics))))
+        out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
                            span=_span(s.polygon_deviation_arcsec),
                            u=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\""))
     else:
-        out.append(message(QT_TR_NOOP("Face deviations NOT determined: harmonic(s) {orders} "
-                                      "unseen by this design"),
-                           orders=", ".join(map(str, s.undetermined_polygon_harmonics))))
+        out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
     if closures.size:
         out.append(message(QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "

@@ -6921,5 +6921,17 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{standard} (comparator)</source>
         <translation>{standard}（比较器）</translation>
     </message>
+    <message>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined: the encoder&apos;s errors and the face deviations are withheld (add a mounting that is not)</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定：编码器误差与各面偏差均不予给出（请增加一个不满足此条件的安装位置）</translation>
+    </message>
+    <message>
+        <source>Encoder error NOT determined (withheld)</source>
+        <translation>编码器误差未能确定（不予给出）</translation>
+    </message>
+    <message>
+        <source>Face deviations NOT determined (withheld)</source>
+        <translation>面偏差未能确定（不予给出）</translation>
+    </message>
 </context>
 </TS>
