@@ -578,3 +578,32 @@ def test_vertical_readings_correct_each_mountings_tilt_in_the_frame_set():
     assert error < 0.01 < blind_error
     assert np.max(np.abs(tilted.solution.polygon_deviation_arcsec - d)) < 0.01
     assert not any("not used by this version" in w for w in tilted.warnings)
+
+
+# -- guided acquisition -----------------------------------------------------------------------
+@pytest.mark.parametrize("told", [12, 0])
+def test_the_guide_says_each_next_face_and_its_encoder_reading_through_the_sample(samples_dir,
+                                                                                 told):
+    """Replaying the sample (12 mountings of 12 faces and a closure each): before every row
+    the guide names that row's mounting and face, and the encoder reading it roughly shows
+    (start + k·30°) — with *faces* 0, once the first mounting has closed."""
+    rows = [dict(zip([c.key for c in COLUMNS], r, strict=False)) for r in _sample_rows(samples_dir)]
+    settings = {**KIND.default_settings, "faces": told}
+    said = 0
+    for i, row in enumerate(rows):
+        guide = KIND.acquisition_guide(rows[:i], {}, settings)
+        if told or i > 13:
+            assert guide.fill == {"mounting": row["mounting"], "position": row["position"]}, i
+        else:  # the first mounting of an unknown face count: its faces are not guessed
+            assert guide.fill == {"mounting": "0"} or i == 0, (i, guide)
+        text = str(guide.text)
+        if "≈ " in text:
+            shown = float(text.split("≈ ")[1].split("°")[0])
+            wrapped = abs((shown - float(row["encoder_deg"]) + 180.0) % 360.0 - 180.0)
+            assert wrapped <= 0.05 + 20 / 3600, (i, text, row)
+            said += 1
+    assert said >= 12 * 11 - (0 if told else 13)
+    assert str(KIND.acquisition_guide(rows[:25], {}, settings).text) == (
+        "mounting 1: go back to face 2 for its closure")
+    assert str(KIND.acquisition_guide([], {}, settings).text) == (
+        "mounting 0: go to face 1 (the encoder's start)")

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from models.crosscal import KEY, TITLE
+from models.crosscal.acquisition import crosscal_guide
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
@@ -22,6 +23,7 @@ from models.parameters import Parameter
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
+    GuidesAcquisition,
     IssuesCertificates,
     SendsReference,
     SentReference,
@@ -330,7 +332,7 @@ def polygon_reference(result: CrossCalResult) -> SentReference:
 
 
 class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline,
-               SendsReference):
+               SendsReference, GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -351,6 +353,7 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     to_json = staticmethod(to_json)
     sent_reference = staticmethod(polygon_reference)
     rows_from_table = staticmethod(matrix_rows)  # the n × n matrix labs write
+    acquisition_guide = staticmethod(crosscal_guide)
     summary = staticmethod(summary)
     verdict = staticmethod(verdict)
 

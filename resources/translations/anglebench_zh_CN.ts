@@ -6933,5 +6933,33 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>Face deviations NOT determined (withheld)</source>
         <translation>面偏差未能确定（不予给出）</translation>
     </message>
+    <message>
+        <source>mounting {mounting}: go to face {face} (the encoder&apos;s start)</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面（编码器起点）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to the next face, or back to face {face} for its closure</source>
+        <translation>安装位置 {mounting}：转到下一面，或回到第 {face} 面读取闭合</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to face {face}</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go back to face {face} for its closure</source>
+        <translation>安装位置 {mounting}：回到第 {face} 面读取闭合</translation>
+    </message>
+    <message>
+        <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start</source>
+        <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点</translation>
+    </message>
+    <message>
+        <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start (encoder ≈ {encoder}°)</source>
+        <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点（编码器 ≈ {encoder}°）</translation>
+    </message>
 </context>
 </TS>
