@@ -6223,10 +6223,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{reason}；未作任何更改</translation>
     </message>
     <message>
-        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
-        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
-    </message>
-    <message>
         <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
         <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
     </message>
@@ -6364,10 +6360,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>多面棱体面数（= 编码器的步数）；0：按读数中的面数</translation>
     </message>
     <message>
-        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported.</source>
-        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。</translation>
-    </message>
-    <message>
         <source>Reading scatter through the design</source>
         <translation>读数分散性（经测量设计传递）</translation>
     </message>
@@ -6456,10 +6448,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>误差 (&quot;)</translation>
     </message>
     <message>
-        <source>Error = indicated − true angle, about its mean over the full turn (the steps of a full turn close at 360°).</source>
-        <translation>误差 = 示值 − 真角度，以整周平均值为零（整周各步在 360° 处封闭）。</translation>
-    </message>
-    <message>
         <source>step {k}</source>
         <translation>第 {k} 步</translation>
     </message>
@@ -6512,10 +6500,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>相对第 1 面的 U (&quot;)</translation>
     </message>
     <message>
-        <source>Deviation = the face&apos;s angle from face 1 minus its nominal, stated about the mean over the faces (the faces close at 360°); the last two columns state it from face 1.</source>
-        <translation>偏差 = 该面相对第 1 面的角度减去其标称值，以各面平均值为零（各面在 360° 处封闭）；最后两列给出相对第 1 面的值。</translation>
-    </message>
-    <message>
         <source>face {k}</source>
         <translation>第 {k} 面</translation>
     </message>
@@ -6534,10 +6518,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>faces</source>
         <translation>各面</translation>
-    </message>
-    <message>
-        <source>No calibrated reference enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator reads near its null, where its scale error does not matter.</source>
-        <translation>本结果未使用任何已校准的参考标准：多面棱体与编码器依圆周封闭原理相互校准。自准直仪在零位附近读数，其示值比例误差可忽略。</translation>
     </message>
     <message>
         <source>The {other} was calibrated in the same run; the largest correlation between its results and these is {r}.</source>
@@ -6633,16 +6613,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
     </message>
     <message>
-        <source>Encoder error NOT determined: harmonic(s) {orders} unseen by this design</source>
-        <translation>编码器误差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
-    </message>
-    <message>
         <source>Face deviations {span} (about their mean), U up to {u}</source>
         <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
-    </message>
-    <message>
-        <source>Face deviations NOT determined: harmonic(s) {orders} unseen by this design</source>
-        <translation>面偏差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
     </message>
     <message>
         <source>Closures {count} of {mountings}: {low} … {high}; drift removed</source>
@@ -6826,10 +6798,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>计量溯源性：本结果经圆周封闭（2π rad，准确值）溯源至国际单位制平面角单位：多面棱体与编码器依圆周封闭原理相互校准，未使用任何计量标准。</translation>
     </message>
     <message>
-        <source>Deviation = the face&apos;s angle from face 1 minus its nominal (face 1 is the reference: its deviation and U are zero by definition); U is that of the difference from face 1, from the full covariance of the fit.</source>
-        <translation>偏差 = 该面相对第 1 面的角度减去其标称值（以第 1 面为参考：其偏差与 U 按定义为零）；U 为相对第 1 面之差的扩展不确定度，由拟合的完整协方差求得。</translation>
-    </message>
-    <message>
         <source>Reference from another workbench</source>
         <translation>来自其他工作台的参考值</translation>
     </message>
@@ -6855,6 +6823,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>polygon face deviations</source>
+        <extracomment>what the cross-calibration sends and the polygon workbench accepts</extracomment>
         <translation>多面棱体面偏差</translation>
     </message>
     <message>
