@@ -62,11 +62,12 @@ class PolygonPresenter(WorkbenchPresenter):
             self.table_model.replace_all(rows, label)
             return len(rows)
         try:
-            return self._fill_deviations(reference.values, label, declared(reference.kind))
+            return self._fill_deviations(reference.values, label, declared(reference.kind), ".6f")
         except TableImportError as exc:
             raise ValueError(str(exc)) from None
 
-    def _fill_deviations(self, deviations: dict[int, float], label: str, path: str) -> int:
+    def _fill_deviations(self, deviations: dict[int, float], label: str, path: str,
+                         spec: str = "g") -> int:
         column = self.sheet.column_index("polygon_dev_arcsec")
         position_column = self.sheet.column_index("position")
         changes = []
@@ -82,7 +83,7 @@ class PolygonPresenter(WorkbenchPresenter):
                 raise TableImportError(message(QT_TR_NOOP(
                     "{path}: no deviation for position {position} (row {row} of the readings)"),
                     path=str(path), position=position, row=row + 1))
-            changes.append((row, column, f"{deviations[position]:.6f}"))
+            changes.append((row, column, format(deviations[position], spec)))
         self.table_model.set_cells(changes, label)
         return len(changes)
 
