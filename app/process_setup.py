@@ -1,18 +1,16 @@
 """How the process runs numpy, set once at start-up, before numpy is imported.
 
 * **One BLAS thread.** OpenBLAS starts a thread per core for a large product and
-  its threads spin while they wait. On a two-core machine an analysis's products
-  beside the window's thread held the interpreter for 0.3–0.4 s; the analyses
-  here are a few 7×7 solves and products of thin matrices, for which one thread
-  is as fast. ``OPENBLAS_NUM_THREADS`` (and its cousins) is read when the library
-  loads, so this must run before the first ``import numpy``; a value the user set
-  is kept.
+  its threads spin while they wait, holding the interpreter from the window's
+  thread (the measurements: BENCHMARKS.md, Notes); the analyses here are small,
+  for which one thread is as fast. ``OPENBLAS_NUM_THREADS`` (and its cousins) is
+  read when the library loads, so this must run before the first ``import numpy``;
+  a value the user set is kept.
 * **Freed arrays reused, not returned to the system.** glibc returns every
   freed block above 128 KB to the kernel at once (``mmap``), so each temporary
-  array of a million-sample analysis (8 MB) was faulted in again page by page:
-  a fifth of an edit's analysis on this machine. Blocks up to 32 MB come from the
-  heap instead, and up to 256 MB of freed heap is kept for the next analysis
-  (``mallopt``; glibc only, nothing elsewhere).
+  array of a million-sample analysis (8 MB) was faulted in again page by page.
+  Blocks up to 32 MB come from the heap instead, and up to 256 MB of freed heap
+  is kept for the next analysis (``mallopt``; glibc only, nothing elsewhere).
 """
 
 from __future__ import annotations

@@ -288,8 +288,7 @@ class ProjectPresenter(QObject):
     def _autosave_when_due(self) -> None:
         """The timer's end: autosave, unless the sheets grew large since it was started (a
         file read after a setting changed); a large one waits its own longer delay, from
-        the same first edit. Autosaving a million rows 3 s after the import began ran
-        beside the user's first edits and made them four times slower."""
+        the same first edit (why: BENCHMARKS.md, Notes)."""
         waited_ms = (time.monotonic() - self._unsaved_since) * 1000.0
         due_ms = self._autosave_delay_ms()
         if waited_ms < due_ms - 1.0:

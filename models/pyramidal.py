@@ -4,7 +4,7 @@ drift of a turn: the geometry the polygon and cross-calibration workbenches shar
 Seed 001 (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015), eqs 3–7: the encoder
 axis ``[sinψ cosω, sinψ sinω, cosψ]`` is tilted by ψ towards ω in the polygon frame;
 face normal ``[cosθ, sinθ, 0]`` rotated about it by −θ gives ``ε_x = atan(y'/x')`` and
-``ε_y = atan(z'/x')``. Which frame the autocollimator reads in (SPEC §2, 2026-12-01):
+``ε_y = atan(z'/x')``. Which frame the autocollimator reads in (../shared/SPEC.md §2, 2026-12-01):
 ``"polygon"`` (eqs 3–7: its vertical along the polygon's axis) or ``"levelled"`` (the
 lab's set-up: its vertical along the shaft), same turned normals read in a basis turned
 by the least rotation; a measured roll ρ turns the reading basis about the line of

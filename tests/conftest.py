@@ -17,7 +17,8 @@ from pathlib import Path  # noqa: E402
 # The app keeps files outside the project: its settings (~/.config/AngleBench), its register
 # and autosaves (~/.local/share/AngleBench). The suite, and every program it starts, gets a
 # home of its own: the user's own files are never read or written by a test (#31).
-USER_HOME = Path.home()
+# (a pytest-xdist worker inherits the HOME set below: the user's own is passed on)
+USER_HOME = Path(os.environ.setdefault("ANGLEBENCH_TESTS_USER_HOME", str(Path.home())))
 _USER_FILES = [USER_HOME / ".config" / "AngleBench", USER_HOME / ".local" / "share" / "AngleBench"]
 TEST_HOME = Path(tempfile.mkdtemp(prefix="anglebench-tests-home-"))
 atexit.register(shutil.rmtree, TEST_HOME, True)
@@ -68,7 +69,7 @@ def postgres_server():
     """A throw-away PostgreSQL cluster on a Unix socket for the session (see
     tests/postgres_cluster.py); skipped with the reason when none can be started, and a
     failure instead where ANGLEBENCH_REQUIRE_POSTGRES=1 (CI)."""
-    from postgres_cluster import PostgresUnavailable, start_cluster
+    from tests.postgres_cluster import PostgresUnavailable, start_cluster
 
     try:
         server = start_cluster()

@@ -1,5 +1,5 @@
 """Opens every dialog of the window on the screen Qt was started with and prints, as JSON,
-each one's frame and the screen's available geometry (tests/test_dialogs_fit.py runs it
+each one's frame and the screen's available geometry (tests/widgets/test_dialogs_fit.py runs it
 in a process of its own per screen: an offscreen screen of a given size and scale).
 
 Each dialog is opened the way the user opens it (its menu action, its button), answered

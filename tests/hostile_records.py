@@ -1,6 +1,6 @@
 """Hostile readings files for the command line, and the judge of what it answers.
 
-Shared by the property test (tests/test_cli_fuzz.py: hypothesis draws the choices) and the
+Shared by the property test (tests/app/test_cli_fuzz.py: hypothesis draws the choices) and the
 full fuzz round (``python tests/hostile_records.py --cases 10000``: a seeded numpy
 generator draws them, every case is run and counted, nothing stops at the first finding).
 

@@ -31,18 +31,21 @@ def python_files(*folders: str) -> list[Path]:
     return [p for folder in folders for p in (ROOT / folder).rglob("*.py")]
 
 
+@pytest.mark.slow
 def test_only_widgets_and_app_import_qt():
     for path in python_files("models", "resources"):
         bad = {m for m in imports(path) if m.split(".")[0] in QT}
         assert not bad, f"{path.relative_to(ROOT)} imports {bad}"
 
 
+@pytest.mark.slow
 def test_models_import_nothing_from_widgets_or_app():
     for path in python_files("models"):
         bad = {m for m in imports(path) if m.split(".")[0] in ("widgets", "app")}
         assert not bad, f"{path.relative_to(ROOT)} imports {bad}"
 
 
+@pytest.mark.slow
 def test_widgets_import_nothing_from_app():
     for path in python_files("widgets"):
         bad = {m for m in imports(path) if m.split(".")[0] == "app"}
@@ -71,6 +74,7 @@ def files_touching(kind: str) -> set[str]:
     return found
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", WORKBENCHES)
 def test_a_workbench_is_its_two_folders_and_one_registry_line(kind):
     # the validation cases exercise the first four workbenches on purpose (a newer one keeps
@@ -122,6 +126,7 @@ def test_shared_code_names_no_workbench():
                        + "\n".join(found))
 
 
+@pytest.mark.slow
 def test_workbenches_are_told_apart_by_capability():
     """No shared code tests a workbench's key (``kind.key == …``) or one of its own
     methods' presence (``kind.x is None``): it asks ``isinstance(kind, Capability)``."""

@@ -1,6 +1,10 @@
 import subprocess
 import sys
 
+import pytest
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 
 def test_models_import_no_qt():
     code = (

@@ -13,6 +13,8 @@ from app.main import main
 from models.parameters import SettingsError
 from models.registry import KINDS, presenter_class
 
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
 PAIRS = [(key, p) for key, kind in KINDS.items() for p in kind.parameters]
 
 

@@ -42,6 +42,7 @@ def test_version_names_the_checkouts_commit(capsys):
     assert head in run.stdout
 
 
+@pytest.mark.slow
 def test_a_certificate_names_the_commit(samples_dir):
     head = _head()
     kind = KINDS["theodolite"]

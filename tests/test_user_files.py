@@ -7,8 +7,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from conftest import TEST_HOME, USER_FILES_BEFORE, USER_HOME, _user_files_state
+import pytest
 from PySide6.QtCore import QSettings, QStandardPaths
+
+from tests.conftest import TEST_HOME, USER_FILES_BEFORE, USER_HOME, _user_files_state
 
 
 def _inside_test_home(path: str | Path) -> bool:
@@ -32,6 +34,7 @@ def test_every_place_the_app_keeps_files_is_the_tests_own():
     assert _inside_test_home(default_recovery_store().folder)
 
 
+@pytest.mark.slow
 def test_a_window_with_every_default_writes_only_in_the_tests_home(qtbot, monkeypatch):
     from app.main_window import MainWindow
 

@@ -172,6 +172,7 @@ def validation_workbenches() -> set[str]:
     return {case.workbench for case in run_validation(trials=10)}
 
 
+@pytest.mark.slow
 def test_the_validation_report_has_its_cases(key, validation_workbenches):
     assert KINDS[key].title in validation_workbenches, (
         f"{key}: the validation report (anglebench validate) has no case of it: return its "
@@ -192,6 +193,7 @@ def test_presenter_lives_in_its_folder(key):
     assert cls.view_class is not None, f"widgets/{key}/presenter.py: set view_class"
 
 
+@pytest.mark.slow
 def test_presenter_shows_the_sample(key, qtbot):
     cls = presenter_class(KINDS[key])
     presenter = cls()

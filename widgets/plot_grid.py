@@ -26,9 +26,7 @@ class IntegerAxis(pg.AxisItem):
         return out
 
 GRID_ALPHA = 0.25
-# Major and minor grid lines only: pyqtgraph's third level of ticks drew as many faint
-# lines again, and the grid was most of a panel's paint (the fringe error panels: 70 ms
-# a repaint with it, 27 ms without, on the benchmark machine).
+# Major and minor grid lines only (a third level costs most of a paint: BENCHMARKS.md, Notes)
 GRID_TICK_LEVELS = 1
 
 

@@ -4,11 +4,11 @@ sample's phasor (sin θ, cos θ) rather than from θ.
 A fit of ``A0 + Σ (s_k sin kθ + c_k cos kθ)`` needs the rows 1, sin kθ, cos kθ of
 every sample. On a million samples three things cost more than the arithmetic:
 
-* ``np.sin`` and ``np.cos`` of float64 (12 ns a sample each here; the other ufuncs
-  take a fraction of a nanosecond). The orders come from the phasor by the Chebyshev
-  recurrence sin (k+1)θ = 2 cos θ · sin kθ − sin (k−1)θ, and a phase that moves by δ
-  moves its phasor by a rotation whose sin δ and cos δ come from their Taylor series,
-  as many terms as the largest |δ| of the block needs for double precision. The
+* ``np.sin`` and ``np.cos`` of float64 (measured: BENCHMARKS.md, Notes). The orders
+  come from the phasor by the Chebyshev recurrence
+  sin (k+1)θ = 2 cos θ · sin kθ − sin (k−1)θ, and a phase that moves by δ moves its
+  phasor by a rotation whose sin δ and cos δ come from their Taylor series, as many
+  terms as the largest |δ| of the block needs for double precision. The
   phase of a record without a phase reference starts as atan2 of the corrected
   signals, so its phasor is those signals over their norm: no sine is ever taken.
   The phasor is also the exact one: θ of a long record is unwrapped to ~1e5 rad,
@@ -17,9 +17,7 @@ every sample. On a million samples three things cost more than the arithmetic:
   from memory. A block of :data:`BLOCK` samples keeps its rows in the cache while they
   are used.
 * The normal equations of a long, narrow design: XᵀX of 7 × n by n × 7 in one BLAS
-  call ran at a third of the speed of the same sums a block of 8192 samples at a time
-  (OpenBLAS here: 3.8 ms a million samples in blocks of 8192, 10–12 ms in blocks of
-  16384 or more, 9–12 ms as dot products one entry at a time).
+  call ran at a third of the speed of the same sums a block of 8192 samples at a time.
 """
 
 from __future__ import annotations

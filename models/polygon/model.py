@@ -16,10 +16,10 @@ encoder has turned by (i − 1)·360°/n.
   about it by −θ (eqs 3–5) gives ``ε_x = atan(y'/x')`` and
   ``ε_y = atan(z'/x')`` (eqs 6–7). Eqs 3–7 turn the faces by −θ, so the
   horizontal readings, taken in eq (1)'s sense, contain −ε_x: the corrected
-  error is ``e_i − (ε_x,i − ε_x,z)`` (SPEC §2, corrected 2026-11-27). The fitted
+  error is ``e_i − (ε_x,i − ε_x,z)`` (../shared/SPEC.md §2, corrected 2026-11-27). The fitted
   ω is in the seed's frame; :func:`tilt_advice` says where the tilt is in
   terms of faces and readings.
-* Which frame the autocollimator reads in (SPEC §2, 2026-12-01): eqs 3–7 put the
+* Which frame the autocollimator reads in (../shared/SPEC.md §2, 2026-12-01): eqs 3–7 put the
   autocollimator's vertical along the *polygon's* axis (``ac_alignment`` =
   ``"polygon"``). In a lab the autocollimator and the rotary axis are levelled
   (``"levelled"``): its vertical is along the shaft. Same coordinates, same turned

@@ -1,1 +1,2 @@
-"""readings."""
+"""Readings: the sheet a technician types or pastes into, reading files of readings, and
+parsing angles."""

@@ -46,8 +46,9 @@ def names_of(column: Column) -> set[str]:
 
 
 def match_header(header: Sequence[str], columns: Sequence[Column]) -> list[int | None]:
-    """For each column, the index of the header cell naming it (None: not named). An exact
-    key match wins over a normalised one; a header cell names one column only."""
+    """Return, for each column, the index of the header cell that names it, or None when
+    no cell does. A cell that is exactly the column's key wins over a cell that matches only
+    after normalising, and each header cell names at most one column."""
     names = [normalise_header(h) for h in header]
     exact = [str(h).strip().lower() for h in header]
     taken: set[int] = set()

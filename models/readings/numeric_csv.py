@@ -53,13 +53,7 @@ def _line_offset(data: bytes, line: int) -> int:
     return offset
 
 
-# ~400 lines a call. Every step on the body holds the interpreter while it runs — numpy's
-# parser, the checks, the decoding — so each works on a chunk: a window reading on a
-# worker thread gets the interpreter back within half a millisecond (a million lines in
-# one call froze it for half a second; whole-file checks for 30–60 ms each). A paint of
-# the window calls Python hundreds of times and waits that long at each call: with
-# chunks of 6 000 lines a paint during an import took 0.2–0.7 s; the parse as a whole
-# takes no longer for the smaller chunks.
+# ~400 lines a step, so that a reading window keeps its interpreter: BENCHMARKS.md, Notes
 CHUNK_BYTES = 8 * 1024
 
 
@@ -68,7 +62,8 @@ class _NotPlain(Exception):
 
 
 def _parse(data: bytes, start: int, end: int, delimiter: str, used: list[int]) -> np.ndarray:
-    """The numbers of ``data[start:end]``, a chunk of lines at a time; raises _NotPlain."""
+    """Parse the numbers in ``data[start:end]``, a chunk of lines at a time. Raise
+    _NotPlain as soon as a chunk holds anything but plain numbers."""
     blocks = []
     while start < end:
         stop = data.find(b"\n", min(start + CHUNK_BYTES, end), end)
@@ -88,8 +83,9 @@ def _parse(data: bytes, start: int, end: int, delimiter: str, used: list[int]) -
 
 def read_numeric(path: str | Path, columns: Sequence[Column],
                  mapping: dict[str, str] | None = None) -> ParsedReadings | None:
-    """The readings of an all-numeric CSV file, or None to let the tolerant reader read it
-    (never an error of its own: the tolerant reader says what is wrong and where)."""
+    """Read a CSV file whose body is plain numbers. Return None for any other file, so that
+    the tolerant reader reads it. This function never raises an error of its own: the
+    tolerant reader is the one that says what is wrong and where."""
     path = Path(path)
     if path.suffix.lower() in (".xlsx", ".xlsm"):
         return None

@@ -41,8 +41,9 @@ REPEATS_PARAMETER = Parameter(
 
 @dataclass(frozen=True)
 class RepeatedReadings:
-    """What averaging the repeated readings left: per point (the averaged rows, in order),
-    each measured column's standard deviation of the mean s/√n, in the column's unit."""
+    """What is left of the repeated readings after averaging them. ``s_mean`` holds, for
+    each measured column, one standard deviation of the mean (s/√n, in the column's unit)
+    per point, in the order of the averaged rows."""
 
     n: int
     s_mean: dict[str, np.ndarray]
@@ -64,9 +65,13 @@ def _same(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 def average_repeats(parsed: ParsedReadings, n: int, keys: Sequence[str],
                     measured: Sequence[str], angles: Sequence[str] = ()
                     ) -> tuple[ParsedReadings, RepeatedReadings | None]:
-    """``parsed`` with every ``n`` used rows made one (the ``keys`` columns must agree in a
-    group; the ``measured`` ones are averaged, ``angles`` among them in degrees wrapped
-    about the group's first); ``None`` for the repeats when ``n`` is 1 (nothing changes)."""
+    """Average every ``n`` consecutive used rows of ``parsed`` into one row.
+
+    In each group of ``n`` rows the ``keys`` columns must hold the same values, and the
+    ``measured`` columns are averaged. The ``angles`` among them are in degrees and are
+    averaged as deviations from the group's first reading, wrapped to ±180°. Return the
+    averaged readings and what the averaging left; when ``n`` is 1 nothing changes and the
+    second value is None."""
     n = int(n)
     if n <= 1:
         return parsed, None

@@ -212,9 +212,10 @@ class NumericRows:
         return self.count
 
     def _texts(self, c: int, start: int, stop: int) -> list[str]:
-        """Column ``c``'s cells ``start:stop`` as the text they show: a blank column's
-        empty, a whole number's digits, any other number's shortest text that gives it back
-        (one C loop a column: a million cells in a fraction of a second)."""
+        """Return the text that cells ``start:stop`` of column ``c`` show. A blank column
+        shows empty cells, a whole number its digits, and any other number the shortest text
+        that reads back as the same number. One C loop does a whole column, so a million
+        cells take a fraction of a second."""
         data = self.values[c]
         if data is None:
             return [""] * (stop - start)
@@ -400,9 +401,10 @@ class ReadingsSheet:
         self.rows = [self._fit_row(r) for r in rows]
 
     def adopt_rows(self, rows: list[list[str]] | NumericRows, checked: bool = False) -> None:
-        """Take ``rows`` as they are (no copy): each must already hold one string per column.
-        ``checked``: the caller guarantees it (rows from :func:`map_columns`), skip the scan.
-        A :class:`NumericRows` of these columns is taken as it is."""
+        """Use ``rows`` as the sheet's rows without copying them. Each row must already hold
+        one string per column; with ``checked`` the caller guarantees this (rows from
+        :func:`map_columns`) and the rows are not scanned. A :class:`NumericRows` with the
+        sheet's columns is used as it is."""
         if isinstance(rows, NumericRows):
             if rows.columns != self.columns:
                 raise ValueError("rows do not match the columns")

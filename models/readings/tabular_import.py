@@ -119,8 +119,8 @@ _DMS_MARK = re.compile("[°'\"′″度分秒]")
 
 
 def _dms_with_decimal_comma(lines: list[str]) -> bool:
-    """A pasted column of D°M'S" with decimal commas (138°24'05,15"): its commas are not
-    between cells."""
+    """Tell whether pasted lines are one column of D°M'S" angles with decimal commas, such
+    as 138°24'05,15". The commas of such lines are decimal commas, not cell separators."""
     filled = [ln.strip() for ln in lines if ln.strip()]
     if not filled or not all(_DMS_MARK.search(ln) for ln in filled):
         return False

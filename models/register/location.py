@@ -31,9 +31,10 @@ def default_register_url() -> str:
 
 
 def register_url(configured: str = "", explicit: str = "") -> str:
-    """``explicit`` (a command-line option) first, then the environment's register, then the
-    one configured (the window's setting), else the default file. A value without ``://``
-    is a SQLite file's path."""
+    """Return the URL of the register to use. The first one given wins: ``explicit`` (a
+    command-line option), then the environment variable, then ``configured`` (the window's
+    setting), and otherwise the default file. A value without ``://`` is taken as the path of
+    a SQLite file."""
     value = explicit.strip() or os.environ.get(ENV_VAR, "").strip() or configured.strip()
     if not value:
         return default_register_url()

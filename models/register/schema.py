@@ -73,9 +73,10 @@ def _v2(conn: sa.Connection) -> None:
 
 
 def _v3(conn: sa.Connection) -> None:
-    """The hash chain: the column (unless version 1 made the table with it), then the chain
-    over the records already issued, in the order of issue. It vouches for them as they
-    are now: changes made before this migration cannot be seen."""
+    """Add the hash chain. Add its column (unless version 1 already created the table with
+    it), then compute the chain over the records already issued, in the order of issue.
+    The chain vouches for those records as they are now: a change made before this
+    migration cannot be detected."""
     from models.register.chain import CHAINED, GENESIS, link
 
     columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}

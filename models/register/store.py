@@ -71,8 +71,9 @@ def software_versions() -> dict[str, str]:
 
 @dataclass(frozen=True)
 class IssueRequest:
-    """What an export hands the register: the details (number empty: allocate one), the
-    project state behind the certificate as project-file JSON, and headline figures."""
+    """What an export hands the register: the certificate's details (an empty number asks
+    the register to allocate one), the project state behind the certificate as project-file
+    JSON, and the headline figures."""
 
     workbench: str
     metadata: CertificateMetadata
@@ -129,8 +130,9 @@ def _normalise_url(url: str) -> str:
 
 
 def _counter_name(scheme: str, date: dt.date) -> str:
-    """The scheme with its date fields filled and the sequence left as '#': numbers of one
-    year (or month, day) share a counter."""
+    """Name the counter of ``scheme`` on ``date``: the scheme with its date fields filled in
+    and the sequence left as '#'. All numbers of one year (or month, or day) thus share one
+    counter."""
     if not _SEQ.search(scheme):
         raise RegisterError(message(
             QT_TR_NOOP("the number scheme '{scheme}' has no {{seq}}: the register cannot number "
@@ -393,8 +395,9 @@ class Register:
             return self._get(conn, number)
 
     def pdf(self, number: str, checked: bool = True) -> bytes:
-        """The PDF as issued; ``checked``: RegisterError unless it still matches the SHA-256
-        recorded at issue (a PDF changed in the database is never handed out as issued)."""
+        """Return the PDF as issued. With ``checked``, raise RegisterError when it no longer
+        matches the SHA-256 recorded at issue, so that a PDF changed in the database is never
+        handed out as the issued one."""
         certificates = self._schema.CERTIFICATES
         with self._read() as conn:
             row = conn.execute(self._sa.select(certificates.c.pdf, certificates.c.pdf_sha256)
@@ -411,9 +414,10 @@ class Register:
         return data
 
     def audit(self, pdfs: bool = False) -> list:
-        """What was changed in the database after issue, one message each (empty: nothing
-        seen): the hash chain recomputed over every record, each status checked against the
-        record that supersedes it, and with ``pdfs`` each stored PDF against its SHA-256."""
+        """List what was changed in the database after issue, one message per finding (an
+        empty list when nothing was found). The hash chain is recomputed over every record,
+        each record's status is checked against the record that supersedes it, and with
+        ``pdfs`` each stored PDF is checked against its SHA-256."""
         sa, certificates = self._sa, self._schema.CERTIFICATES
         columns = ("id", *CHAINED, "status", "superseded_by", "chain_sha256")
         problems: list = []
@@ -515,8 +519,8 @@ class Register:
 
 
 def _check_issuable(meta: CertificateMetadata, issue_date: dt.date) -> None:
-    """An issued certificate is approved, and reports a calibration already made: refused
-    otherwise (a draft, which the register never records, needs neither)."""
+    """Raise RegisterError unless the certificate has an approver and its calibration date is
+    not after ``issue_date``. (A draft needs neither, and the register never records one.)"""
     if not meta.approver.strip():
         raise RegisterError(message(QT_TR_NOOP(
             "an issued certificate needs the name of the person who approves it ("

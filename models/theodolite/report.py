@@ -63,8 +63,8 @@ METHOD = QT_TR_NOOP(
 )
 
 
-#: what ψ, α and β are (the frame of SPEC §1, the seed's), checked against an independent rig
-#: built in a frame with OZ up (tests/test_certificate_uncertainty.py)
+#: what ψ, α and β are (the frame of ../shared/SPEC.md §1, the seed's), checked against an independent rig
+#: built in a frame with OZ up (tests/models/certificate/test_certificate_uncertainty.py)
 SETUP_DEFINITIONS = QT_TR_NOOP(
     "Set-up parameters: azimuths are counted from the theodolite's azimuth zero in the sense its "
     "horizontal circle reads (clockwise seen from above), and the axis under test turns that way "

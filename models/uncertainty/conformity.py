@@ -76,7 +76,7 @@ MAX_MONTE_CARLO_POINTS = 16_384
 
 
 #: The coverage the half-range interval achieved in its validation, by curve shape
-#: (tests/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real
+#: (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real
 #: sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the
 #: certificate prints it.
 HALF_RANGE_COVERAGE = {"smooth": 0.883, "rough": 0.917, "spike": 0.900, "sample": 0.893}

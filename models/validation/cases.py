@@ -2,7 +2,7 @@
 
 Three kinds of case for each workbench:
 
-* the seeds' check figures (SPEC.md), from the model's equations;
+* the seeds' check figures (../shared/SPEC.md), from the model's equations;
 * exact simulations with known truth, made by the first-principles rigs of
   this package, run through the whole analysis;
 * the GUM budget against a Monte Carlo simulation of repeated measurements
@@ -323,7 +323,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
     w = FRINGE.title
     per = 64
     theta = equal_steps(8 * per, per)
-    # Table 1, the cos channel's B1 read as +3.7346 (SPEC §3)
+    # Table 1, the cos channel's B1 read as +3.7346 (../shared/SPEC.md §3)
     table1 = FringeHead(offsets_v=(-0.0179, -0.0642), amplitudes_v=(3.7763, 3.7346),
                         phase_rad=0.026, quadrature_deg=np.degrees(1.5902 - 0.026) - 90.0,
                         sin_harmonics={3: (-0.0796, 3.2261), 5: (0.0109, 0.4688)},

@@ -1,6 +1,6 @@
 """A limited-rotation axis seen by an autocollimating theodolite, by 3-D rotation.
 
-Frame of SPEC §1: OZ plumb down, OX the azimuth zero. The axis is tilted by
+Frame of ../shared/SPEC.md §1: OZ plumb down, OX the azimuth zero. The axis is tilted by
 ψ towards α, ``P = [−sinψ cosα, −sinψ sinα, cosψ]``; the mirror normal at the
 axis' zero is ``[cosβ, 0, −sinβ]``. The axis turns the mirror by its true
 rotation (right-handed about P); the theodolite reads the normal's azimuth

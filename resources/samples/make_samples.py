@@ -81,7 +81,7 @@ def crosscal_sample() -> None:
             writer.writerow([mounting, face, f"{encoder:.7f}", f"{ac_x:.3f}"])
 
 
-# Table 1 of the seed, the cos channel's B1 read as +3.7346 (SPEC §3)
+# Table 1 of the seed, the cos channel's B1 read as +3.7346 (../shared/SPEC.md §3)
 TABLE1 = FringeHead(offsets_v=(-0.0179, -0.0642), amplitudes_v=(3.7763, 3.7346), phase_rad=0.026,
                     quadrature_deg=float(np.degrees(1.5902 - 0.026)) - 90.0,
                     sin_harmonics={3: (-0.0796, 3.2261), 5: (0.0109, 0.4688)},

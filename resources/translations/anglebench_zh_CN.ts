@@ -4005,7 +4005,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>pass ≤ {t} &lt; fail</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -5487,7 +5487,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Set-up parameters: azimuths are counted from the theodolite&apos;s azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis&apos; upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed&apos;s E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
-        <extracomment>what ψ, α and β are (the frame of SPEC §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/test_certificate_uncertainty.py)</extracomment>
+        <extracomment>what ψ, α and β are (the frame of ../shared/SPEC.md §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/models/certificate/test_certificate_uncertainty.py)</extracomment>
         <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
     </message>
     <message>

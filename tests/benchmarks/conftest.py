@@ -9,6 +9,10 @@ A benchmark may also give a one-line ``headline``: the headlines open
 BENCHMARKS.md and replace the block between the README's ``bench:headlines``
 markers, so the README's figures are those of the last run, never copied by
 hand (tests/test_readme_benchmarks.py checks that the two agree).
+
+The block between the ``notes`` markers at the end of BENCHMARKS.md is written by hand
+(why a constant or a design is as it is, with the measurement that decided it): a run
+keeps it as it is.
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ ROOT = Path(__file__).resolve().parents[2]
 REPORT = ROOT / "BENCHMARKS.md"
 README = ROOT / "README.md"
 BEGIN, END = "<!-- bench:headlines begin -->", "<!-- bench:headlines end -->"
+NOTES_BEGIN, NOTES_END = "<!-- notes begin", "<!-- notes end -->"
 _SECTIONS: dict[str, list[str]] = {}
 _HEADLINES: dict[str, str] = {}
 
@@ -85,9 +90,16 @@ def pytest_sessionfinish(session, exitstatus):
     head = ["## Headlines", "", *headlines, ""] if headlines else []
     text = "\n".join(_header() + head + [line for key in sorted(_SECTIONS) for line in
                                          _SECTIONS[key] + [""]])
-    write_text_atomic(REPORT, text)
+    write_text_atomic(REPORT, text + _notes())
     if headlines:
         _update_readme(headlines)
+
+
+def _notes() -> str:
+    """The hand-written notes block of the BENCHMARKS.md there is, with its markers ("" if none)."""
+    old = REPORT.read_text(encoding="utf-8") if REPORT.exists() else ""
+    start, end = old.find(NOTES_BEGIN), old.find(NOTES_END)
+    return "\n" + old[start:end + len(NOTES_END)] + "\n" if 0 <= start < end else ""
 
 
 def _update_readme(headlines: list[str]) -> None:

@@ -21,10 +21,10 @@ import os
 
 import numpy as np
 from bench_util import fmt_time, timings
-from crosscal_simulator import Bench
 from scipy.linalg import null_space
 
 from models.crosscal.solve import solve_crosscal
+from tests.crosscal_simulator import Bench
 
 RUNS = 300
 SIGMA = 0.02

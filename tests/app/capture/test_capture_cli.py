@@ -1,0 +1,169 @@
+"""``anglebench capture`` end to end: the command line against the protocol simulators
+over a pseudo-terminal (and TCP), as CI runs it, without hardware."""
+
+from __future__ import annotations
+
+import csv
+import math
+import subprocess
+import sys
+
+import pytest
+
+from app.main import main
+from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator, TheodoliteSimulator
+
+FAST = ["--silence", "0.2", "--retries", "1"]
+
+
+def rows_of(path):
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.reader(handle))
+
+
+def test_autocollimator_readings_to_csv(tmp_path, capsys):
+    out = tmp_path / "ac.csv"
+    with AutocollimatorSimulator("pty", positions=[(12.5, -3.25)]) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "25",
+                     "--out", str(out), *FAST]) == 0
+    rows = rows_of(out)
+    assert rows[0] == ["time_s", "ac_x_arcsec", "ac_y_arcsec"]
+    assert [tuple(map(float, r[1:])) for r in rows[1:]] == [(12.5, -3.25)] * 25
+    times = [float(r[0]) for r in rows[1:]]
+    assert times == sorted(times) and times[-1] - times[0] == pytest.approx(24 / 250, abs=0.08)
+    assert "25 readings written to" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_stability_gated_readings_of_a_set_of_positions(tmp_path):
+    """Four positions held 0.3 s each with 0.05" noise: one reading per position, the mean
+    of a 0.1 s dwell, within 0.05" of where the instrument really was; the frames while
+    it moves never give a reading."""
+    positions = [(100.0, 5.0), (200.0, 5.0), (300.0, -5.0), (400.0, 0.0)]
+    out = tmp_path / "set.csv"
+    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.3, sigma=0.05) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "4", "--stable", "0.5",
+                     "--dwell", "0.1", "--out", str(out), *FAST]) == 0
+    got = [tuple(map(float, r[1:])) for r in rows_of(out)[1:]]
+    assert len(got) == 4
+    for (x, y), (tx, ty) in zip(got, positions, strict=True):
+        assert abs(x - tx) < 0.05 and abs(y - ty) < 0.05
+
+
+def test_theodolite_over_tcp_and_a_disconnect_mid_set(tmp_path, capsys):
+    out = tmp_path / "theo.csv"
+    positions = [(30.0 * i, 90.0 + i / 100) for i in range(1, 5)]
+    with TheodoliteSimulator("tcp", faults=("disconnect",), disconnect_after=6, positions=positions,
+                             hold_s=0.2) as sim:
+        assert main(["capture", "theodolite", sim.port, "--readings", "15",
+                     "--out", str(out), *FAST]) == 0
+    rows = rows_of(out)
+    assert rows[0] == ["time_s", "azimuth_deg", "zenith_deg"]
+    got = [tuple(map(float, r[1:])) for r in rows[1:]]
+    assert len(got) == 15
+    for (hz, v), (shz, sv) in zip(got, sim.sent[:15], strict=True):
+        assert math.isclose(hz, shz, abs_tol=1e-7) and math.isclose(v, sv, abs_tol=1e-7)
+    err = capsys.readouterr().err
+    assert f"{sim.port}: the link dropped" in err and "reconnecting" in err
+
+
+def test_a_readout_with_noise_and_error_lines(tmp_path):
+    out = tmp_path / "ro.csv"
+    with ReadoutSimulator("pty", faults=("noise", "invalid_axes"), positions=[(105.00012,)]) as sim:
+        assert main(["capture", "readout", sim.port, "--readings", "8", "--out", str(out),
+                     *FAST]) == 0
+    rows = rows_of(out)
+    assert rows[0] == ["time_s", "value", "unit"]
+    assert [r[1:] for r in rows[1:]] == [["105.00012", "deg"]] * 8
+
+
+@pytest.mark.parametrize(("fault", "says"), [("silence", "no answer for 0.2 s"),
+                                             ("wrong_baud", "a wrong baud rate? 9600 was used")])
+def test_a_dead_instrument_exits_2_with_one_line_naming_the_port(tmp_path, capsys, fault, says):
+    out = tmp_path / "x.csv"
+    with AutocollimatorSimulator("pty", faults=(fault,)) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--out", str(out), *FAST]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1].startswith(f"anglebench capture: {sim.port}: ") and says in err[-1]
+    assert err[-1].endswith("no reading was taken")
+    assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_a_wrong_port_exits_2(tmp_path, capsys):
+    out = tmp_path / "x.csv"
+    assert main(["capture", "theodolite", "/dev/no-such-port", "--out", str(out), "--retries", "0"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("anglebench capture: /dev/no-such-port: cannot open")
+
+
+def test_readings_taken_before_a_final_fault_are_kept(tmp_path, capsys):
+    out = tmp_path / "part.csv"
+    with ReadoutSimulator("pty", positions=[(1.5,)]) as sim:
+        # asks for more readings than the time allows
+        assert main(["capture", "readout", sim.port, "--readings", "100000", "--timeout", "0.3",
+                     "--out", str(out), *FAST]) == 2
+    partial = tmp_path / "part.partial.csv"
+    assert not out.exists() and partial.exists()
+    rows = rows_of(partial)
+    assert len(rows) > 2 and all(r[1:] == ["1.5", "deg"] for r in rows[1:])
+    err = capsys.readouterr().err.strip()
+    assert f"readings in 0.3 s; the {len(rows) - 1} readings taken are in {partial}" in err
+
+
+@pytest.mark.parametrize(("argv", "says"), [
+    (["--stable", "1"], "--stable and --dwell go together"),
+    (["--readings", "0"], "'0': give a number greater than 0"),
+    (["--pattern", "(?P<v>x)"], "--pattern"),
+])
+def test_refused_options(tmp_path, capsys, argv, says):
+    kind = "readout" if "--pattern" in argv else "autocollimator"
+    try:
+        status = main(["capture", kind, "/dev/null", "--out", str(tmp_path / "x.csv"), *argv])
+    except SystemExit as exc:  # argparse's refusal
+        status = exc.code
+    assert status == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and says in err[0]
+
+
+@pytest.mark.slow
+def test_the_console_command_in_chinese(tmp_path):
+    """The real entry point in a process of its own, speaking Chinese."""
+    with ReadoutSimulator("pty", positions=[(2.0,)]) as sim:
+        done = subprocess.run([sys.executable, "-m", "app.main", "capture", "readout", sim.port,
+                               "--readings", "3", "--out", str(tmp_path / "r.csv"),
+                               "--language", "zh_CN"], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stderr
+    assert len(rows_of(tmp_path / "r.csv")) == 4
+    assert done.stderr.strip() == f"3 个读数已写入 {tmp_path / 'r.csv'}"
+
+
+def test_a_theodolite_settled_across_zero_azimuth_reads_where_it_is(tmp_path):
+    """Hz noise of 2" around 0°: the frames read 359.999…° and 0.000…°; the gated reading
+    is their mean near 0° (or just under 360°), never 180°."""
+    out = tmp_path / "zero.csv"
+    with TheodoliteSimulator("pty", positions=[(0.0, 90.0)], sigma=2.0) as sim:
+        assert main(["capture", "theodolite", sim.port, "--readings", "1", "--stable", "20",
+                     "--dwell", "0.1", "--timeout", "5", "--out", str(out), *FAST]) == 0
+    hz, v = (float(x) for x in rows_of(out)[1][1:])
+    assert min(hz, 360.0 - hz) * 3600 < 3.0 and abs(v - 90.0) * 3600 < 3.0
+    assert sim.sent and any(h > 180 for h, _ in sim.sent if h) and any(h < 180 for h, _ in sim.sent)
+
+
+def test_the_raw_record_traces_every_reading_to_the_instruments_line(tmp_path):
+    out, raw = tmp_path / "ac.csv", tmp_path / "ac.raw.csv"
+    with AutocollimatorSimulator("pty", faults=("invalid_axes",), positions=[(4.0, -2.5)],
+                                 sigma=0.3) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "20", "--out", str(out),
+                     "--raw", str(raw), *FAST]) == 0
+    readings = rows_of(out)[1:]
+    lines = rows_of(raw)
+    assert lines[0] == ["time_s", "reading", "line"]
+    used = [r for r in lines[1:] if r[1] == "1"]
+    assert [r[0] for r in used][:20] == [r[0] for r in readings]
+    for (_, x, y), (_, _, line) in zip(readings, used, strict=False):
+        assert line.split()[2:] == [f"{float(x):.3f}", f"{float(y):.3f}"]
+    refused = [r[2] for r in lines[1:] if r[1] == "0"]
+    assert refused and all(r.split()[1] in ("001", "002", "000") for r in refused)
+    # the record holds the frames the simulator sent, in order, none left out
+    assert [r[1] == "1" for r in lines[1:]] == [None not in f for f in sim.sent[:len(lines) - 1]]

@@ -1,0 +1,227 @@
+"""The instrument panel's auto-take, n readings per point and guidance, through the
+protocol simulators on a pseudo-terminal (the real serial code path): what the table
+receives is traced back frame by frame to what the simulated instrument sent, and the
+n readings of a point give the budget's Type A input.
+
+The simulator's ``sent`` list is the instrument's own record (nothing from the code under
+test): with no line noise, raw frame i is sent frame i.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QTimer
+
+from models.certificate.metadata import CertificateMetadata
+from models.readings.sheet import ReadingsSheet
+from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
+FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
+META = CertificateMetadata.from_dict({"standards": [
+    {"description": "Reference AC", "uncertainty_arcsec": 0.4}]})
+TYPE_A = "Repeated readings (s/√n)"
+#: an 8-face polygon read once round and closed: AC x at each face (arcsec)
+AC_X = [3.0, -2.0, 5.0, 1.0, -4.0, 2.5, 0.5, -1.5, 3.0]
+
+
+def _show(window, key):
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
+    return window.presenter(key)
+
+
+def _phases(panel, seen: set) -> QTimer:
+    probe = QTimer()
+    probe.setInterval(5)
+    probe.timeout.connect(lambda: seen.add(panel.auto_phase))
+    probe.start()
+    return probe
+
+
+def _polygon_rows(n: int) -> list[list[str]]:
+    """The faces and encoder readings typed beforehand, AC cells left for the instrument."""
+    return [[str(i % 8 + 1), f"{45 * (i % 8)}", "0", "", "", "", ""]
+            for i in range(len(AC_X)) for _ in range(n)]
+
+
+def test_auto_take_two_readings_per_face_traced_to_the_frames_and_in_the_budget(window, qtbot):
+    n = 2
+    presenter = _show(window, "polygon")
+    presenter.set_settings({**presenter.settings, "readings_per_point": n, "faces": 8})
+    model = presenter.table_model
+    model.replace_all(_polygon_rows(n), "faces typed")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.3)
+    panel.dwell_box.setValue(0.1)
+    seen: set[str] = set()
+    positions = [(x, 0.0) for x in AC_X]
+    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.6, sigma=0.04) as sim:
+        probe = _phases(panel, seen)
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: len(panel.taken) >= n * len(AC_X), timeout=20000)
+        qtbot.wait(300)  # the last face is held: no reading more is taken there
+        probe.stop()
+        panel.disconnect_instrument()
+    assert len(panel.taken) == n * len(AC_X) and {"settling", "taken"} <= seen
+    session = panel.raw_sessions("polygon")[-1]
+    assert [t[0] for t in session["takes"]] == list(range(n * len(AC_X)))
+    sent = np.array([(round(x, 3), round(y, 3)) for x, y in sim.sent])
+    means = []
+    previous_last = -1
+    for row, first, last in session["takes"]:
+        assert first > previous_last  # each reading from frames of its own
+        previous_last = last
+        stored = np.array([[float(v) for v in f[1].split()[2:]] for f in
+                           session["frames"][first:last + 1]])
+        np.testing.assert_allclose(stored, sent[first:last + 1], atol=0)  # as the instrument said
+        mean = sent[first:last + 1].mean(axis=0)
+        means.append(mean)
+        cell = float(model.sheet.text(row, keys.index("ac_x_arcsec")))
+        assert cell == pytest.approx(mean[0], abs=1e-9)
+        truth = AC_X[row // n]
+        assert abs(cell - truth) < 0.1  # 25 frames of σ = 0.04"
+    # the workbench averages the n readings of each face; their s/√n is the Type A input
+    kind = presenter.kind
+    result = kind.analyze(ReadingsSheet(kind.columns, presenter.state().rows).parse(),
+                          presenter.settings)
+    component = next(c for c in kind.certificate_document(result, META).budget.components
+                     if c.name == TYPE_A)
+    x = np.array(means)[:, 0].reshape(len(AC_X), n)
+    expected = x.std(axis=1, ddof=1) / math.sqrt(n)
+    np.testing.assert_allclose(component.value, expected[:8], atol=1e-7)
+    assert component.dof == n - 1 and component.evaluation == "A"
+    # the guidance for a face's first reading, the encoder at 45° a face from face 1's
+    presenter.view.table.setCurrentIndex(model.index(12, 0))
+    panel.update_guide()
+    assert panel.guide.text() == "Next: go to face 7 (encoder ≈ 270°) — reading 1 of 2"
+    presenter.view.table.setCurrentIndex(model.index(13, 0))
+    panel.update_guide()
+    assert panel.guide.text() == "Next: stay at face 7 — reading 2 of 2"
+
+
+def test_guided_polygon_fills_the_face_and_says_the_next_one(window, qtbot):
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    rows = [[str(f), f"{15 * f + 90}", "0", "", "", "1", "+"] for f in range(1, 7)]
+    model.replace_all(rows + [["", "", "", "", "", "", ""]], "six faces")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(6, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(1.25, -0.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        assert panel.guide.text() == "Next: go to face 7 (encoder ≈ 195°)"
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    assert [model.sheet.text(6, keys.index(k)) for k in ("position", "set", "ac_x_arcsec")] == \
+        ["7", "1", "1.25"]
+    assert panel.guide.text() == "Next: go to face 8 (encoder ≈ 210°)"
+
+
+def test_guided_theodolite_says_theta_and_fills_it(window, qtbot):
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    presenter.view.step.setValue(2.0)
+    model.replace_all([["10", "", "", "", ""]], "first θ")
+    presenter.view.table.setCurrentIndex(model.index(0, 1))
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(33.5, 90.25)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        assert panel.guide.text() == "Next: θ = 10°"
+        for _ in range(3):
+            panel.take_button.click()
+        panel.disconnect_instrument()
+    assert [model.sheet.text(r, 0) for r in range(4)] == ["10", "12", "14", "16"]
+    assert [float(model.sheet.text(r, 1)) for r in range(3)] == pytest.approx([33.5] * 3, abs=1e-8)
+    assert panel.guide.text() == "Next: θ = 16°"
+
+
+# ---------------------------------------------------------------- faults during a set
+
+@pytest.mark.parametrize("transport", ["pty", "tcp"])
+def test_a_disconnect_mid_set_names_the_port_and_the_set_goes_on(window, qtbot, transport):
+    """The link drops while the set is read (a pulled cable: nothing either way for 0.4 s
+    on the pty; the socket cut on TCP): the panel says so naming the port, reconnects, and
+    every face is still taken once, with its own value."""
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.3)
+    panel.dwell_box.setValue(0.1)
+    statuses: list[str] = []
+    positions = [(10.0 * i, 1.0) for i in range(1, 6)]
+    with AutocollimatorSimulator(transport, faults=("disconnect",), disconnect_after=200,
+                                 gap_s=0.4, positions=positions, hold_s=0.8) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=4,
+                         retry_pause_s=0.05)
+        probe = QTimer()
+        probe.setInterval(5)
+        probe.timeout.connect(lambda: statuses.append(panel.status.text()))
+        probe.start()
+        qtbot.waitUntil(lambda: len(panel.taken) >= len(positions), timeout=20000)
+        probe.stop()
+        panel.disconnect_instrument()
+    # said while it reconnects (the pty's gap is long enough to see it), and after
+    assert any(s.startswith(f"Connected: {sim.port} (reconnected after: {sim.port}: ")
+               for s in statuses)
+    if transport == "pty":
+        assert any(s.startswith(sim.port) and s.endswith("(reconnecting)") for s in statuses)
+    got = [float(model.sheet.text(r, keys.index("ac_x_arcsec"))) for r in range(len(positions))]
+    assert got == pytest.approx([p[0] for p in positions], abs=1e-9)
+    assert [model.sheet.text(r, 0) for r in range(len(positions))] == ["1", "2", "3", "4", "5"]
+
+
+def test_line_noise_never_reaches_a_cell(window, qtbot):
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.3)
+    panel.dwell_box.setValue(0.1)
+    positions = [(-5.0, 2.0), (7.5, 2.0), (0.25, 2.0)]
+    with AutocollimatorSimulator("pty", faults=("noise",), positions=positions, hold_s=0.6) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: len(panel.taken) >= 3, timeout=15000)
+        panel.disconnect_instrument()
+    assert [float(model.sheet.text(r, keys.index("ac_x_arcsec"))) for r in range(3)] == \
+        pytest.approx([-5.0, 7.5, 0.25], abs=1e-9)
+    frames = panel.raw_sessions("polygon")[-1]["frames"]
+    assert any(f[2] == 0 for f in frames)  # the garbage is kept with the frames, refused
+
+
+@pytest.mark.parametrize("port, words", [("/dev/nonexistent-anglebench", "cannot open"),
+                                         ("tcp://127.0.0.1:9", "cannot open")])
+def test_a_wrong_port_is_named(window, qtbot, port, words):
+    _show(window, "polygon")
+    panel = window.capture_panel
+    panel.connect_to("autocollimator", port, silence_s=0.2, retries=0)
+    qtbot.waitUntil(lambda: panel.worker is None, timeout=5000)
+    assert panel.status.text().startswith(f"{port}: {words}")
+    assert not panel.take_button.isEnabled()
+
+
+def test_a_wrong_baud_rate_is_named(window, qtbot):
+    _show(window, "theodolite")
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", faults=("wrong_baud",)) as sim:
+        panel.connect_to("theodolite", sim.port, baud=4800, **FAST)
+        qtbot.waitUntil(lambda: panel.worker is None, timeout=5000)
+    text = panel.status.text()
+    assert text.startswith(sim.port) and "baud" in text and "4800" in text

@@ -1,0 +1,71 @@
+"""The window's instrument panel against the simulators over a pty: the live readout
+never waits for the instrument, and Take reading fills the current row as one undo
+step."""
+
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
+FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
+
+
+def _show(window, key):
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
+    return window.presenter(key)
+
+
+def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    keys = [c.key for c in model.sheet.columns]
+    row = model.sheet.row_count  # the empty row after the readings
+    presenter.view.table.setCurrentIndex(model.index(row, 0))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        assert panel.value.text() == '3.250"   -1.500"'
+        steps = presenter.undo_stack.count()
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    assert model.sheet.text(row, keys.index("ac_x_arcsec")) == "3.25"
+    assert model.sheet.text(row, keys.index("ac_y_arcsec")) == "-1.5"
+    assert presenter.undo_stack.count() == steps + 1
+    presenter.undo_stack.undo()
+    assert row >= model.sheet.row_count or model.sheet.text(row, keys.index("ac_x_arcsec")) == ""
+
+    # a silent instrument: the window is never kept waiting, and it says so naming the port
+    with AutocollimatorSimulator("pty", faults=("silence",)) as sim:
+        started = time.monotonic()
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        assert time.monotonic() - started < 0.1
+        assert not panel.take_button.isEnabled()
+        qtbot.waitUntil(lambda: "no answer" in panel.status.text(), timeout=3000)
+        panel.disconnect_instrument()
+    assert panel.status.text().startswith(f"{sim.port}: no answer") and not panel.take_button.isEnabled()
+
+
+def test_theodolite_zenith_goes_to_the_vertical_column_only_when_it_reads_zenith(window, qtbot):
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    keys = [c.key for c in model.sheet.columns]
+    row = model.sheet.row_count
+    presenter.view.table.setCurrentIndex(model.index(row, 0))
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(123.4567, 87.6543)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
+        panel.take_reading()
+        panel.disconnect_instrument()
+    assert float(model.sheet.text(row, keys.index("azimuth_deg"))) == pytest.approx(123.4567, abs=1e-8)
+    vertical = model.sheet.text(row, keys.index("elevation_deg"))
+    zenith = presenter.settings.get("vertical_reading") == "zenith"
+    assert (float(vertical) == pytest.approx(87.6543, abs=1e-8)) if zenith else vertical == ""
+

@@ -1,0 +1,227 @@
+"""The certificate presenter with a mock view: no window, no dialog (Mantid's MVP tests
+are the model)."""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from unittest import mock
+
+import pytest
+from pypdf import PdfReader
+
+from app.certificate_presenter import CertificatePresenter, CertificateView, PendingRevision
+from models.certificate.metadata import CertificateMetadata
+from models.project.file import project_from_json
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+
+
+class Store(dict):
+    def value(self, key, default=None):
+        return self.get(key, default)
+
+    def setValue(self, key, value):  # noqa: N802 - QSettings' name
+        self[key] = value
+
+
+@pytest.fixture
+def parts():
+    view = mock.create_autospec(CertificateView, instance=True)
+    metadata: dict = {}
+    modified = mock.Mock()
+    presenter = CertificatePresenter(view, Store(), lambda: metadata, modified)
+    return presenter, view, metadata, modified
+
+
+def _theodolite(samples_dir):
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+
+
+@pytest.mark.slow
+def test_a_draft_is_written_and_nothing_recorded(parts, samples_dir, tmp_path):
+    presenter, view, metadata, modified = parts
+    entered = CertificateMetadata(certificate_number="AB/7", lab_name="Lab")
+    view.edit_certificate_details.return_value = entered
+    view.choose_save_path.return_value = str(tmp_path / "out")
+    kind, result = _theodolite(samples_dir)
+    assert presenter.export_certificate(kind, result, {}, "run.csv")
+    assert view.choose_save_path.call_args.args[1] == "AB-7.pdf"
+    assert (tmp_path / "out.pdf").read_bytes().startswith(b"%PDF")
+    assert metadata["certificates"]["theodolite"]["lab_name"] == "Lab"
+    modified.assert_called_once()
+    assert "nothing was recorded in the register" in view.show_status.call_args.args[0]
+    view.wait_cursor.assert_has_calls([mock.call(True), mock.call(False)])
+    with presenter.open_register() as register:
+        assert register.list() == []  # a draft allocates nothing
+
+
+COMPLETE = CertificateMetadata.from_dict({
+    "lab_name": "Lab", "customer_name": "Customer", "item_description": "Turntable",
+    "item_serial": "T-1", "calibration_date": "2026-11-20", "issue_date": "2026-11-24",
+    "operator": "Wang", "approver": "Dr. Li",
+    "standards": [{"description": "Theodolite", "certificate_no": "N-1",
+                   "uncertainty": 0.5}]})
+
+
+@pytest.mark.slow
+def test_without_an_approver_the_window_writes_a_draft_and_records_nothing(parts, samples_dir,
+                                                                          tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = dataclasses.replace(COMPLETE, approver="")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(tmp_path / "d.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert view.confirm_draft.call_args.args[0] == ["approver"]
+    with presenter.open_register() as register:
+        assert register.list() == []
+
+
+@pytest.mark.slow
+def test_an_issued_certificate_is_numbered_and_recorded_and_can_be_amended(parts, samples_dir,
+                                                                         tmp_path):
+    presenter, view, metadata, _ = parts
+    kind, result = _theodolite(samples_dir)
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "first.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", rows)
+    assert "Certificate AB-2026-0001 issued" in view.show_status.call_args.args[0]
+    with presenter.open_register() as register:
+        record = register.get("AB-2026-0001")
+        stored = project_from_json(record.project_json).workbenches["theodolite"]
+        assert stored.rows[3][:3] == rows[3][:3]  # the readings as typed
+    # an amendment: the next export of this workbench asks what changed
+    presenter.start_revision(PendingRevision("theodolite", "AB-2026-0001"))
+    view.ask_change_note.return_value = "customer address corrected"
+    view.choose_save_path.return_value = str(tmp_path / "second.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", rows)
+    assert "AB-2026-0001-A1 (amendment 1 of AB-2026-0001) issued" in \
+        view.show_status.call_args.args[0]
+    text = re.sub(r"\s+", " ", "".join(p.extract_text()
+                                        for p in PdfReader(tmp_path / "second.pdf").pages))
+    assert "Amendment 1 to certificate AB-2026-0001" in text
+    assert "customer address corrected" in text
+    assert presenter.pending is None
+    with presenter.open_register() as register:
+        assert register.get("AB-2026-0001").status == "superseded"
+
+
+@pytest.mark.slow
+def test_a_refusal_of_the_register_writes_nothing(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "a.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    typed = CertificateMetadata.from_dict({**COMPLETE.to_dict(),
+                                           "certificate_number": "AB-2026-0001"})
+    view.edit_certificate_details.return_value = typed
+    view.choose_save_path.return_value = str(tmp_path / "b.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert "AB-2026-0001 was issued on" in view.tell.call_args.args[1]
+    assert not (tmp_path / "b.pdf").exists()
+
+
+def test_cancelled_details_write_nothing(parts, samples_dir):
+    presenter, view, metadata, modified = parts
+    view.edit_certificate_details.return_value = None
+    kind, result = _theodolite(samples_dir)
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    view.choose_save_path.assert_not_called()
+    assert metadata == {} and not modified.called
+
+
+def test_a_stored_detail_gone_bad_reaches_the_view_marked(parts):
+    presenter, view, metadata, _ = parts
+    metadata["certificates"] = {"polygon": {"lab_name": "Lab", "humidity_pct": "45 %"}}
+    presenter.save_lab_defaults({"operator": "Wang"})
+    meta = presenter.details("polygon")
+    assert meta.lab_name == "Lab" and meta.operator == "Wang"
+    view.edit_certificate_details.return_value = None
+    presenter.edit_details(meta)
+    _, problems, raw = view.edit_certificate_details.call_args.args
+    assert "humidity_pct" in problems and raw["humidity_pct"] == "45 %"
+
+
+def test_export_errors_are_told_not_raised(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    view.choose_save_path.return_value = str(tmp_path / "no" / "such" / "dir" / "r.csv")
+    kind, result = _theodolite(samples_dir)
+    assert not presenter.export_results(kind, result, {}, "run.csv")
+    assert "Cannot export" in view.tell.call_args.args[0]
+
+
+def test_a_draft_is_confirmed_first_and_details_carry_to_the_next_workbench(parts, samples_dir,
+                                                                           tmp_path):
+    presenter, view, metadata, _ = parts
+    kind, result = _theodolite(samples_dir)
+    typed = CertificateMetadata(certificate_number="AB/9", lab_name="Angle Lab",
+                                customer_name="Acme", operator="Li")
+    # "No, not a draft", then the dialog again (#31: "No" closed it), then Cancel
+    view.edit_certificate_details.side_effect = [typed, None]
+    view.confirm_draft.return_value = False
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    assert "reference standards" in view.confirm_draft.call_args.args[0]
+    assert view.edit_certificate_details.call_count == 2
+    assert view.edit_certificate_details.call_args.args[0] == typed  # the number kept too
+    view.choose_save_path.assert_not_called()
+    offered = presenter.details("polygon")  # nothing typed for the polygon yet
+    assert (offered.lab_name, offered.customer_name, offered.operator) == \
+        ("Angle Lab", "Acme", "Li")
+    assert offered.item_serial == ""  # the item is the next workbench's own
+
+
+@pytest.mark.slow
+def test_an_unreachable_register_issues_nothing_and_says_so(parts, samples_dir, tmp_path,
+                                                            monkeypatch):
+    presenter, view, _, _ = parts
+    monkeypatch.delenv("ANGLEBENCH_REGISTER")
+    presenter.set_register_url("postgresql://lab@/register?host=/nonexistent-socket")
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "c.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    title, text = view.tell.call_args.args
+    assert title == "Not issued" and "postgresql+psycopg://lab@/register" in text
+    assert not (tmp_path / "c.pdf").exists()
+
+
+def _polygon_with_errors_of_degrees(samples_dir):
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    from models.readings.angles import format_dms, parse_angle_deg
+
+    rows[2][1] = format_dms(parse_angle_deg(rows[2][1]) + 2.0, 2)  # face 3 two degrees off
+    return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+
+
+@pytest.mark.slow
+def test_errors_no_encoder_has_are_certified_only_when_confirmed(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind, result = _polygon_with_errors_of_degrees(samples_dir)
+    view.confirm_implausible.return_value = False
+    assert not presenter.export_certificate(kind, result, {}, "poly.csv")
+    assert "ERRORS OF 2.00°" in view.confirm_implausible.call_args.args[0]
+    view.edit_certificate_details.assert_not_called()
+    view.choose_save_path.assert_not_called()
+    view.confirm_implausible.return_value = True
+    view.edit_certificate_details.return_value = CertificateMetadata(lab_name="Lab")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(tmp_path / "out.pdf")
+    assert presenter.export_certificate(kind, result, {}, "poly.csv")
+    assert (tmp_path / "out.pdf").exists()
+
+
+def test_a_plausible_result_asks_nothing_more(parts, samples_dir, tmp_path):
+    presenter, view, _, _ = parts
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view.edit_certificate_details.return_value = None
+    assert not presenter.export_certificate(kind, result, {}, "poly.csv")
+    view.confirm_implausible.assert_not_called()

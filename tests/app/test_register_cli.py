@@ -1,0 +1,133 @@
+"""``anglebench analyze --certificate`` issues through the register; ``anglebench register``
+lists, shows, verifies and exports what was issued (the register of each test is its own,
+see conftest.py)."""
+
+from __future__ import annotations
+
+import datetime as dt
+import json
+import zipfile
+
+import pytest
+import sqlalchemy as sa
+
+from app.main import main
+from models.certificate.metadata import CertificateMetadata
+from models.register.location import register_url
+from models.register.schema import CERTIFICATES
+from models.register.store import IssueRequest, Register
+
+
+def issue(samples_dir, tmp_path, name, capsys, **changes):
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, **changes})  # the lab's own details, made from the example
+    meta_path = tmp_path / f"{name}.json"
+    meta_path.write_text(json.dumps(meta), encoding="utf-8")
+    code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
+                 str(tmp_path / f"{name}.pdf"), "--metadata", str(meta_path)])
+    return code, capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
+    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
+    year = dt.datetime.now(dt.timezone.utc).year  # the register's day of issue
+    assert code == 0 and f"Certificate AB-{year}-0001 issued" in err
+    code, err = issue(samples_dir, tmp_path, "b", capsys)  # the sample's own number
+    assert code == 0 and "AB-2026-0042" in err
+    code, err = issue(samples_dir, tmp_path, "c", capsys)  # … once only
+    assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
+    assert main(["register", "list", "RX-26"]) == 0
+    listed = capsys.readouterr().out.splitlines()
+    assert [line.split("\t")[0] for line in listed] == ["AB-2026-0042", f"AB-{year}-0001"]
+    assert main(["register", "show", f"AB-{year}-0001", "--pdf", str(tmp_path / "copy.pdf"),
+                 "--project", str(tmp_path / "p.json")]) == 0
+    shown = capsys.readouterr().out
+    assert "workbench: polygon" in shown and "headline corrected peak-to-peak" in shown
+    assert (tmp_path / "copy.pdf").read_bytes() == (tmp_path / "a.pdf").read_bytes()
+    project = json.loads((tmp_path / "p.json").read_text(encoding="utf-8"))
+    assert project["workbenches"]["polygon"]["rows"][0][0] == "1"
+    assert main(["register", "verify", str(tmp_path / "a.pdf")]) == 0
+    assert f"certificate AB-{year}-0001" in capsys.readouterr().out
+    tampered = tmp_path / "t.pdf"
+    tampered.write_bytes((tmp_path / "a.pdf").read_bytes() + b"%\n")  # one byte changed is enough
+    assert main(["register", "verify", str(tampered)]) == 1
+    assert "NOT in the register" in capsys.readouterr().out
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
+    with zipfile.ZipFile(tmp_path / "all.zip") as archive:
+        names = set(archive.namelist())
+        index = archive.read("index.csv").decode()
+    assert {f"pdf/AB-{year}-0001.pdf", "project/AB-2026-0042.anglebench.json"} <= names
+    assert index.count("\n") == 3 and "RX-26-0815" in index
+
+
+@pytest.mark.slow
+def test_a_draft_is_not_recorded_and_bad_requests_exit_2(samples_dir, tmp_path, capsys):
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--certificate", str(tmp_path / "d.pdf")]) == 0
+    assert "nothing was recorded in the register" in capsys.readouterr().err
+    assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+    assert main(["register", "show", "NOPE"]) == 2
+    assert "no certificate NOPE" in capsys.readouterr().err
+    assert main(["register", "interval", "RX-1", "-5"]) == 2
+    assert "positive number of days" in capsys.readouterr().err
+    assert main(["register", "--register", "postgresql://x@/db?host=/nonexistent", "list"]) == 2
+    assert "register postgresql+psycopg://x@/db" in capsys.readouterr().err
+
+
+def test_continue_numbering_from_the_command_line(capsys):
+    assert main(["register", "continue", "AB-{year}-{seq:04d}", "43", "--date",
+                 "2026-11-24"]) == 0
+    assert "will be AB-2026-0043" in capsys.readouterr().out
+    assert main(["register", "continue", "AB-{year}-{seq:04d}", "5", "--date",
+                 "2026-11-24"]) == 2
+    assert "never numbers back" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_the_bundled_example_details_never_touch_the_users_register(samples_dir, tmp_path,
+                                                                     capsys):
+    """Used as the README shows, the examples issue into a register of their own."""
+    for _ in range(2):  # their fixed number, twice: no clash, since nothing is kept
+        assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                     "--certificate", str(tmp_path / "example.pdf"), "--metadata",
+                     str(samples_dir / "certificate_polygon.json")]) == 0
+        err = capsys.readouterr().err
+        assert "register of its own" in err and "AB-2026-0042 issued" in err
+    assert (tmp_path / "example.pdf").read_bytes()[:5] == b"%PDF-"
+    assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+
+
+@pytest.mark.slow
+def test_issuing_without_an_approver_is_refused(samples_dir, tmp_path, capsys):
+    """Without an approver the certificate is only a draft, and nothing is recorded."""
+    code, err = issue(samples_dir, tmp_path, "n", capsys, approver="")
+    assert code == 0 and "DRAFT: approver missing" in err
+    assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+
+
+@pytest.mark.slow
+def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir, tmp_path,
+                                                                     capsys):
+    assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0
+    with Register(register_url()) as register:
+        original = register.list()[0].number
+        meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-11-20")
+        record, _ = register.issue(
+            IssueRequest("polygon", meta, register.get(original).project_json),
+            lambda meta: b"%PDF replacement", supersedes=original, replacement=True,
+            change_note="re-issued")
+    assert main(["register", "verify", str(tmp_path / "a.pdf")]) == 0
+    out = capsys.readouterr().out
+    assert "hash chain intact over 2 record(s)" in out
+    assert f"{original} is no longer valid: superseded by {record.number}" in out
+    engine = sa.create_engine(register_url())
+    with engine.begin() as conn:  # the stored PDF changed in the database
+        conn.execute(CERTIFICATES.update().where(CERTIFICATES.c.number == original)
+                     .values(pdf=b"%PDF forged"))
+    engine.dispose()
+    assert main(["register", "show", original, "--pdf", str(tmp_path / "out.pdf")]) == 2
+    assert "no longer matches the SHA-256" in capsys.readouterr().err
+    assert not (tmp_path / "out.pdf").exists()
+    assert main(["register", "verify"]) == 1
+    assert "stored PDF does not match" in capsys.readouterr().out

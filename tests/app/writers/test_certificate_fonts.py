@@ -1,0 +1,101 @@
+"""Every run of text on a certificate has its font (#29): every workbench's sample
+certificate printed in en, zh+en and zh, with a laboratory name in Latin letters only, in
+Chinese only and mixed, read back by poppler's pdftotext. fpdf2 once set the font inside
+the "q … Q" around a cell, so the next run had none: poppler said "No font in show" and
+printed nothing there (a Latin-only lab name in the head of every page after the first;
+the seed's digits and "w" between Chinese words). Fails on any such complaint, on a page
+without the lab's name, and on any figure or name of the source missing from the text."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.certificate.metadata import CertificateMetadata
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+
+pytestmark = pytest.mark.slow  # every test prints a certificate and reads it back
+
+SAMPLES = Path(__file__).resolve().parents[3] / "resources" / "samples"
+LAB_NAMES = {"latin": "Shenzhen Angle Metrology Lab", "chinese": "深圳角度计量实验室",
+             "mixed": "深圳 Angle 计量实验室 Lab"}
+FIGURE = re.compile(r"[+\-−]?\d+(?:\.\d+)?")
+
+
+@pytest.fixture(scope="module")
+def analysed():
+    out = {}
+    for key, kind in KINDS.items():
+        rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
+        settings = kind.settings_with_defaults(None)
+        out[key] = (kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(), settings),
+                    settings, json.loads((SAMPLES / f"certificate_{key}.json").read_text("utf-8")))
+    return out
+
+
+def _pdftotext(pdf: bytes, tmp_path: Path) -> tuple[str, str]:
+    """(text, poppler's complaints)."""
+    if shutil.which("pdftotext") is None:
+        pytest.fail("pdftotext is missing: apt-get install poppler-utils (.ci/run does)")
+    path = tmp_path / "certificate.pdf"
+    path.write_bytes(pdf)
+    run = subprocess.run(["pdftotext", "-enc", "UTF-8", str(path), "-"], capture_output=True,
+                         text=True, encoding="utf-8", check=True)
+    return run.stdout, run.stderr
+
+
+@pytest.mark.parametrize("lab", list(LAB_NAMES))
+@pytest.mark.parametrize("language", ["en", "zh+en", "zh"])
+@pytest.mark.parametrize("key", sorted(KINDS))
+def test_every_run_has_a_font_and_every_page_the_lab(analysed, key, language, lab, tmp_path):
+    kind, result, settings, details = analysed[key]
+    metadata = CertificateMetadata.from_dict({**details, "lab_name": LAB_NAMES[lab],
+                                              "language": language})
+    document = kind.certificate_document(result, metadata, kind.sample_file, settings)
+    text, complaints = _pdftotext(certificate_pdf_bytes(document), tmp_path)
+    assert "No font" not in complaints, complaints[:300]
+    assert complaints.strip() == "", complaints[:300]
+    pages = [page for page in text.split("\f") if page.strip()]
+    assert len(pages) >= 3
+    without = [n for n, page in enumerate(pages, 1) if LAB_NAMES[lab] not in page]
+    assert without == [], f"pages without the laboratory's name: {without}"
+    flat = re.sub(r"\s+", "", text)  # a cell may wrap a long name or figure
+    meta = metadata
+    names = [meta.lab_name, meta.customer_name, meta.item_description, meta.item_manufacturer,
+             meta.item_serial, meta.item_model, meta.operator, meta.approver,
+             document.source_name,
+             *(s.certificate_no for s in meta.standards), *(s.serial for s in meta.standards)]
+    missing = [n for n in names if n and re.sub(r"\s+", "", n) not in flat]
+    assert missing == []
+    tables = (document.parameters, document.results, document.statistics)
+    figures = {f.lstrip("+-−") if float(f.replace("−", "-")) == 0 else f  # "0.00", not "−0.00"
+               for t in tables for row in t.rows for cell in row
+               for f in FIGURE.findall(str(cell))}
+    assert len(figures) > 50
+    lost = sorted(f for f in figures if f not in flat)
+    assert lost == []
+    starts = [line for line in text.splitlines() if line.strip()[:1] in set("。，、；：）")]
+    assert starts == []  # a line never starts with a closing mark
+    end = f"—证书{metadata.certificate_number}结束—" if language == "zh" else \
+        f"—Endofcertificate{metadata.certificate_number}—"
+    assert end in re.sub(r"\s+", "", pages[-1])  # the end-of-certificate marker
+
+
+def test_figures_and_formulas_are_never_broken_across_lines(analysed, tmp_path):
+    """Chinese prose broke between any two characters: "随机种子 2026 / 1127", "T + / w"."""
+    kind, result, settings, details = analysed["polygon"]
+    metadata = CertificateMetadata.from_dict({**details, "language": "zh"})
+    document = kind.certificate_document(result, metadata, kind.sample_file, settings)
+    text, _ = _pdftotext(certificate_pdf_bytes(document), tmp_path)
+    lines = [line.strip() for line in text.splitlines()]
+    assert any("20261127" in line for line in lines)  # the seed whole on its line
+    assert not [line for line in lines if line.endswith(("T +", "T −", "="))]
+    assert "在实验室内" in text  # the place of calibration

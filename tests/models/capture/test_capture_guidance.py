@@ -1,0 +1,105 @@
+"""What the workbenches say to do next while an instrument is read (guided acquisition):
+the polygon's next face with the encoder reading it should roughly show, its closure and
+the next set, the n readings of a point; the theodolite's θ. The rows are a bench turned
+by hand: encoder readings 360°/N apart with the table's own small errors, either way
+round, from any start."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from models.polygon.acquisition import polygon_guide
+from models.registry import KINDS
+from models.theodolite.acquisition import theodolite_guide
+
+
+def _row(face, encoder, set_no="1"):
+    return {"position": str(face), "encoder_deg": f"{encoder:.6f}", "polygon_dev_arcsec": "0",
+            "ac_x_arcsec": "1.0", "ac_y_arcsec": "", "set": set_no, "direction": ""}
+
+
+def _wrapped(a, b):
+    return abs((a - b + 180.0) % 360.0 - 180.0)
+
+
+@pytest.mark.slow
+@settings(max_examples=150, deadline=None)
+@given(faces=st.integers(3, 72), start=st.floats(0, 360, exclude_max=True),
+       counts_up=st.booleans(), faces_up=st.booleans(), data=st.data())
+def test_the_next_face_and_its_encoder_reading_from_any_start(faces, start, counts_up, faces_up,
+                                                              data):
+    read = data.draw(st.integers(2, faces - 1))
+    first = data.draw(st.integers(1, faces))
+    step = (360.0 / faces) * (1 if counts_up else -1)
+    errors = data.draw(st.lists(st.floats(-20, 20), min_size=read, max_size=read))  # arcsec
+    order = 1 if faces_up else -1
+    rows = [_row((first - 1 + order * k) % faces + 1, (start + k * step + e / 3600) % 360)
+            for k, e in enumerate(errors)]
+    told = dict(faces=faces) if data.draw(st.booleans()) else dict(faces=0)
+    step_out = polygon_guide(rows, {}, {**told, "readings_per_point": 1})
+    face = (first - 1 + order * read) % faces + 1
+    assert step_out.fill["position"] == str(face) and step_out.reading == step_out.of == 1
+    expected = (start + read * step) % 360
+    text = str(step_out.text)
+    shown = float(text.split("≈ ")[1].split("°")[0])
+    assert _wrapped(shown, expected) <= 0.05 + 20 / 3600
+    assert text.startswith(f"go to face {face} (encoder ≈ ")
+
+
+def test_closure_then_the_next_set_then_the_readings_of_a_point():
+    rows = [_row(f, 15.0 * f) for f in range(1, 25)]
+    closure = polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 1})
+    assert closure.text == "go back to face 1 (encoder ≈ 15°): the closure of set 1"
+    rows.append(_row(1, 15.0004))
+    second = polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 1})
+    assert second.text == "set 2: go to face 1 (encoder ≈ 15°)"
+    assert second.fill == {"position": "1", "set": "2"}
+    rows.append(_row(1, 15.0, "2"))
+    assert polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 1}).text == \
+        "go to face 2 (encoder ≈ 30°)"  # 24 faces: the first set's
+    again = polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 3})
+    assert again.text == "stay at face 1 — reading 2 of 3" and again.reading == 2
+    assert not again.new_point
+
+
+def test_nothing_is_guessed_that_the_readings_cannot_say():
+    # one face read, the face count not set: the face, no encoder figure
+    assert polygon_guide([_row(1, 40.0)], {}, {"faces": 0, "readings_per_point": 1}).text == \
+        "go to face 2"
+    # the count set but not which way the encoder counts: still no figure …
+    assert polygon_guide([_row(1, 40.0)], {}, {"faces": 8, "readings_per_point": 1,
+                                               "counting": "auto"}).text == "go to face 2"
+    # … until the setting says it
+    assert polygon_guide([_row(1, 40.0)], {}, {"faces": 8, "readings_per_point": 1,
+                                               "counting": "against"}).text == \
+        "go to face 2 (encoder ≈ 355°)"
+    assert polygon_guide([], {}, {"faces": 0, "readings_per_point": 2}).text == \
+        "go to face 1 — reading 1 of 2"
+
+
+@pytest.mark.parametrize("rows, current, n, step, text, fill", [
+    ([], {"theta_deg": "12"}, 1, 0.0, "θ = 12°", {"theta_deg": "12"}),
+    ([{"theta_deg": "-4", "azimuth_deg": "1"}], {"theta_deg": ""}, 2, 2.0,
+     "θ = -4° — reading 2 of 2", {"theta_deg": "-4"}),
+    ([{"theta_deg": "-4", "azimuth_deg": "1"}] * 2, {"theta_deg": ""}, 2, 2.0,
+     "θ = -2° — reading 1 of 2", {"theta_deg": "-2"}),
+    ([{"theta_deg": "10", "azimuth_deg": "1"}], {"theta_deg": "12°30'"}, 1, 0.0, "θ = 12°30'",
+     {"theta_deg": "12°30'"}),
+    ([{"theta_deg": "10", "azimuth_deg": "1"}], {"theta_deg": ""}, 1, 0.0,
+     "turn the axis to the next θ and type it in the θ column", {}),
+])
+def test_theodolite_theta(rows, current, n, step, text, fill):
+    said = theodolite_guide(rows, current, {"readings_per_point": n}, step)
+    assert (said.text, said.fill) == (text, fill)
+
+
+def test_the_guides_are_the_workbenches_own():
+    from models.workbench import GuidesAcquisition
+
+    assert KINDS["polygon"].acquisition_guide is polygon_guide
+    assert KINDS["theodolite"].acquisition_guide is theodolite_guide
+    assert not isinstance(KINDS["fringe"], GuidesAcquisition)
+    assert {k for k, w in KINDS.items() if isinstance(w, GuidesAcquisition)} >= {"polygon",
+                                                                                "theodolite"}

@@ -1,0 +1,142 @@
+"""The instrument's raw frames kept with the project (an optional key: older files open,
+the schema version stays) and their SHA-256 in the register's chained record and on the
+certificate, so a certificate's readings trace to what the instrument sent."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import subprocess
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from app.certificate_issue import issue_certificate
+from models.capture.raw_record import raw_digest, raw_sessions_from_json, session_json
+from models.certificate.metadata import CertificateMetadata
+from models.project.file import (
+    SCHEMA_VERSION,
+    Project,
+    ProjectFileError,
+    WorkbenchState,
+    load_project,
+    project_to_json,
+    save_project,
+)
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.register.store import Register
+from tests.instrument_simulators import AutocollimatorSimulator
+
+
+def _session(lines=(b"3 003 1.250 -0.500", b"\xff\x00garbage\r", b"3 003 1.260 -0.490")):
+    frames = [(0.004 * i, line, not line.startswith(b"\xff")) for i, line in enumerate(lines)]
+    return session_json("autocollimator", "/dev/ttyUSB0", 9600,
+                        "2026-12-02T01:02:03.000000+00:00", frames, [(0, 0, 2)])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.binary(min_size=1, max_size=60), min_size=1, max_size=20))
+def test_any_bytes_survive_the_file_exactly(lines):
+    sessions = [_session(tuple(lines))]
+    sessions[0]["takes"] = [[0, 0, len(lines) - 1]]
+    text = project_to_json(Project({}, {}, {"polygon": sessions}))
+    again = json.loads(text)["raw_capture"]["polygon"]
+    assert [f[1].encode("latin-1") for f in again["sessions"][0]["frames"]] == list(lines)
+    assert raw_sessions_from_json(again["sessions"], "x") == sessions
+
+
+def test_the_project_file_keeps_the_frames_and_their_digest_as_stored(tmp_path):
+    sessions = [_session()]
+    path = tmp_path / "p.anglebench.json"
+    save_project(path, Project({"polygon": WorkbenchState([["1", "0"]], {})}, {},
+                               {"polygon": sessions}))
+    text = path.read_text(encoding="utf-8")
+    stored = json.loads(text)
+    assert stored["schema_version"] == SCHEMA_VERSION  # raw_capture needs no new version
+    entry = stored["raw_capture"]["polygon"]
+    as_stored = json.dumps(entry["sessions"], ensure_ascii=False, separators=(",", ":"))
+    assert as_stored in text  # the digest is of this very text
+    assert entry["sha256"] == hashlib.sha256(as_stored.encode()).hexdigest() == raw_digest(sessions)
+    assert load_project(path).raw_capture == {"polygon": sessions}
+    # a file written before raw frames existed (or without any) opens, and has no key
+    bare = project_to_json(Project({"polygon": WorkbenchState([["1", "0"]], {})}))
+    assert "raw_capture" not in bare
+    old = tmp_path / "old.anglebench.json"
+    old.write_text(bare, encoding="utf-8")
+    assert load_project(old).raw_capture == {}
+
+
+@pytest.mark.parametrize("change, words", [
+    (lambda d: d["raw_capture"]["polygon"]["sessions"][0]["frames"][0].__setitem__(
+        1, "3 003 9.250 -0.500"), "do not give their SHA-256"),
+    (lambda d: d["raw_capture"]["polygon"]["sessions"][0]["takes"].append([1, 2, 9]),
+     "a frame or a take"),
+    (lambda d: d["raw_capture"].__setitem__("polygon", []), "'sha256' and 'sessions'"),
+    (lambda d: d.__setitem__("raw_capture", []), "'raw_capture' must be an object"),
+])
+def test_changed_or_damaged_raw_frames_are_refused_naming_the_file(tmp_path, change, words):
+    path = tmp_path / "p.anglebench.json"
+    save_project(path, Project({}, {}, {"polygon": [_session()]}))
+    document = json.loads(path.read_text(encoding="utf-8"))
+    change(document)
+    path.write_text(json.dumps(document, ensure_ascii=False), encoding="utf-8")
+    with pytest.raises(ProjectFileError, match=words) as caught:
+        load_project(path)
+    assert str(path) in str(caught.value) and "nothing was changed" in str(caught.value)
+
+
+@pytest.mark.slow
+def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_url, tmp_path,
+                                                                     samples_dir):
+    from models.registry import KINDS
+
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": ""})
+    sessions = [_session()]
+    with Register(register_url) as register:
+        typed = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                                  kind.checked_settings({}), rows, "typed.csv",
+                                  str(tmp_path / "typed.pdf"))
+        record = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                                   kind.checked_settings({}), rows, "captured.anglebench.json",
+                                   str(tmp_path / "captured.pdf"), raw_capture=sessions)
+        assert typed.raw_sha256 == "" and record.raw_sha256 == raw_digest(sessions)
+        assert register.get(record.number).raw_sha256 == raw_digest(sessions)
+        assert register.audit(pdfs=True) == []
+        kept = json.loads(record.project_json)["raw_capture"]["polygon"]["sessions"]
+        assert kept == sessions  # the frames themselves are in the record
+    text = subprocess.run(["pdftotext", "-layout", str(tmp_path / "captured.pdf"), "-"],
+                          capture_output=True, text=True, check=True).stdout
+    # "SHA-256 <digest>": the 64 digits go to a line of their own
+    assert "Instrument output" in text and "SHA-256" in text and raw_digest(sessions) in text
+    plain = subprocess.run(["pdftotext", str(tmp_path / "typed.pdf"), "-"], capture_output=True,
+                           text=True, check=True).stdout
+    assert "Instrument output" not in plain
+
+
+@pytest.mark.slow
+def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot, tmp_path):
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    presenter = window.presenter("polygon")
+    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 3))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(2.5, 1.0)]) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=1)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    saved = panel.raw_capture()
+    assert list(saved) == ["polygon"] and saved["polygon"][0]["takes"][0][0] == 0
+    assert saved["polygon"][0]["frames"][saved["polygon"][0]["takes"][0][1]][1] == \
+        "3 003 2.500 1.000"
+    path = tmp_path / "captured.anglebench.json"
+    assert window.projects.save_to(path)
+    window.projects.new_project()
+    assert panel.raw_capture() == {}
+    assert window.projects.open_project(path)
+    assert panel.raw_capture() == saved

@@ -1,0 +1,330 @@
+"""The certificate register on both back ends (SQLite always; PostgreSQL when a throw-away
+server can be started, see tests/postgres_cluster.py): numbers unique across processes,
+a crash leaves a whole record or none, amendments keep the original, verification by hash,
+an instrument's history and due date, migrations of an old register."""
+
+from __future__ import annotations
+
+import datetime as dt
+import multiprocessing
+import os
+
+import pytest
+import sqlalchemy as sa
+
+from models.certificate.metadata import CertificateMetadata
+from models.register import schema
+from models.register.store import IssueRequest, Register, RegisterError
+
+META = CertificateMetadata(item_serial="RX-1", item_description="Rotary encoder",
+                           customer_name="Acme Optics", calibration_date="2026-11-20",
+                           issue_date="2026-11-24", number_scheme="AB-{year}-{seq:04d}",
+                           approver="Dr. Li")
+ISSUED = dt.datetime(2026, 11, 24, 10, 0, tzinfo=dt.timezone.utc)
+
+
+def on(day: dt.datetime):
+    """The register's clock, stopped at ``day``."""
+    return lambda: day
+PROJECT = '{"format": "anglebench-project", "schema_version": 1, "workbenches": {}}'
+
+
+def request(meta=META, headline=None):
+    return IssueRequest("polygon", meta, PROJECT, headline or {})
+
+
+def render(meta: CertificateMetadata) -> bytes:
+    return f"%PDF {meta.certificate_number} {meta.revision} {meta.supersedes}".encode()
+
+
+@pytest.fixture
+def register(register_url):
+    with Register(register_url) as reg:
+        reg.clock = on(ISSUED)
+        yield reg
+
+
+@pytest.mark.slow
+def test_numbers_follow_the_scheme_and_are_never_issued_twice(register):
+    first, pdf = register.issue(request(), render)
+    second, _ = register.issue(request(), render)
+    assert (first.number, second.number) == ("AB-2026-0001", "AB-2026-0002")
+    assert pdf == b"%PDF AB-2026-0001  " and register.pdf(first.number) == pdf
+    assert first.pdf_sha256 == __import__("hashlib").sha256(pdf).hexdigest()
+    with pytest.raises(RegisterError, match="AB-2026-0001 was issued on"):
+        register.issue(request(META.__class__(**{**META.to_dict(), "standards": (),
+                                                "certificate_number": "AB-2026-0001"})), render)
+    typed, _ = register.issue(request(CertificateMetadata(certificate_number="AB-2026-0003",
+                                                          approver="Dr. Li")), render)
+    third, _ = register.issue(request(), render)  # the typed number is skipped
+    assert typed.number == "AB-2026-0003" and third.number == "AB-2026-0004"
+    next_year = CertificateMetadata(approver="Dr. Li")
+    register.clock = on(dt.datetime(2027, 1, 2, 8, tzinfo=dt.timezone.utc))
+    assert register.issue(request(next_year), render)[0].number == "AB-2027-0001"
+
+
+def test_the_record_holds_the_project_versions_and_headline(register):
+    record, _ = register.issue(request(headline={"corrected peak-to-peak (\")": 0.8}), render)
+    got = register.get(record.number)
+    assert got.headline == {"corrected peak-to-peak (\")": 0.8}
+    assert got.software["anglebench"] and "numpy" in got.software
+    assert '"certificate_number": "AB-2026-0001"' in got.project_json  # the final details
+    assert got.item_serial == "RX-1" and got.customer == "Acme Optics" and got.workstation
+
+
+def test_a_failure_before_the_commit_leaves_no_record_and_uses_no_number(register):
+    def broken(meta):
+        raise ValueError("the PDF could not be made")
+
+    with pytest.raises(ValueError, match="could not be made"):
+        register.issue(request(), broken)
+    assert register.list() == []
+    assert register.issue(request(), render)[0].number == "AB-2026-0001"
+
+
+def _killed_mid_export(url: str) -> None:
+    def die(meta):
+        os._exit(3)  # the process dies with the transaction open
+
+    register = Register(url)
+    register.clock = on(ISSUED)
+    register.issue(request(), die)
+
+
+@pytest.mark.slow
+def test_a_process_killed_during_export_leaves_no_record(register_url):
+    process = multiprocessing.get_context("spawn").Process(target=_killed_mid_export,
+                                                           args=(register_url,))
+    process.start()
+    process.join(60)
+    assert process.exitcode == 3
+    with Register(register_url) as reg:
+        assert reg.list() == []
+        reg.clock = on(ISSUED)
+        assert reg.issue(request(), render)[0].number == "AB-2026-0001"
+
+
+def _issue_many(url: str, count: int, queue) -> None:
+    with Register(url) as reg:
+        reg.clock = on(ISSUED)
+        queue.put([reg.issue(request(), render)[0].number for _ in range(count)])
+
+
+@pytest.mark.slow
+def test_processes_allocating_at_once_never_share_a_number(register_url):
+    Register(register_url).close()  # created once; the workers only open it
+    context = multiprocessing.get_context("spawn")
+    queue = context.Queue()
+    workers = [context.Process(target=_issue_many, args=(register_url, 8, queue))
+               for _ in range(4)]
+    for w in workers:
+        w.start()
+    numbers = [n for _ in workers for n in queue.get(timeout=120)]
+    for w in workers:
+        w.join(60)
+        assert w.exitcode == 0
+    assert sorted(numbers) == [f"AB-2026-{i:04d}" for i in range(1, 33)]
+
+
+def test_an_amendment_references_the_original_which_stays_unchanged(register):
+    original, original_pdf = register.issue(request(), render)
+    amended, pdf = register.issue(request(), render, supersedes=original.number,
+                                  change_note="serial number corrected")
+    assert amended.number == "AB-2026-0001-A1" and amended.revision == "amendment 1"
+    assert pdf == b"%PDF AB-2026-0001-A1 amendment 1 AB-2026-0001"
+    old = register.get(original.number)
+    assert old.status == "superseded" and old.superseded_by == amended.number
+    assert register.pdf(original.number) == original_pdf  # unchanged
+    with pytest.raises(RegisterError, match="superseded by AB-2026-0001-A1"):
+        register.issue(request(), render, supersedes=original.number)
+    second, _ = register.issue(request(), render, supersedes=amended.number)
+    assert second.number == "AB-2026-0001-A2"
+    replacement, _ = register.issue(request(), render, supersedes=second.number,
+                                    replacement=True, change_note="re-issued")
+    assert replacement.number == "AB-2026-0002" and replacement.revision == "replacement"
+    with pytest.raises(RegisterError, match="no certificate XX-1"):
+        register.issue(request(), render, supersedes="XX-1")
+
+
+def test_search_verify_history_and_due_date(register):
+    a, pdf_a = register.issue(request(headline={"p": 1.0}), render)
+    other = CertificateMetadata(item_serial="ZZ-9", customer_name="Other Lab",
+                                calibration_date="2026-10-01", approver="Dr. Li")
+    register.issue(request(other), render)
+    later = CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                   "calibration_date": "2027-05-01", "issue_date": ""})
+    register.clock = on(dt.datetime(2027, 5, 2, 9, tzinfo=dt.timezone.utc))
+    b, _ = register.issue(request(later, {"p": 1.4}), render)
+    assert [r.number for r in register.list("acme")] == [b.number, a.number]
+    assert [r.number for r in register.list("zz-9")] == ["AB-2026-0002"]
+    assert register.verify(pdf_a).number == a.number
+    assert register.verify(pdf_a + b" ") is None
+    assert [r.headline["p"] for r in register.history("RX-1")] == [1.0, 1.4]
+    assert register.due_date("RX-1") is None
+    register.set_interval("RX-1", 365)
+    assert register.due_date("RX-1") == dt.date(2028, 4, 30)
+
+
+def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.begin() as conn:  # a register made by the version that knew migration 1 only
+        schema.SCHEMA_VERSION.create(conn)
+        conn.execute(schema.SCHEMA_VERSION.insert().values(version=1))
+        schema.MIGRATIONS[1](conn)
+    with Register(register_url) as reg:
+        assert reg.version == schema.LATEST == 3
+        reg.clock = on(ISSUED)
+        reg.issue(request(), render)
+        reg.set_interval("RX-1", 180)  # the table migration 2 added
+    with engine.begin() as conn:
+        conn.execute(schema.SCHEMA_VERSION.update().values(version=99))
+    engine.dispose()
+    with pytest.raises(RegisterError, match="schema version 99, made by a newer AngleBench"):
+        Register(register_url)
+
+
+def test_an_unreachable_register_says_so(tmp_path):
+    with pytest.raises(RegisterError, match="register postgresql\\+psycopg://u:\\*\\*\\*@"):
+        Register("postgresql://u:secret@/none?host=/nonexistent-socket-dir")
+
+
+def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(register):
+    scheme, day = "AB-{year}-{seq:04d}", dt.date(2026, 11, 24)
+    assert register.continue_numbering(scheme, day, 43) == "AB-2026-0043"
+    assert register.issue(request(), render)[0].number == "AB-2026-0043"
+    with pytest.raises(RegisterError, match="already allocated up to AB-2026-0043"):
+        register.continue_numbering(scheme, day, 10)
+    assert register.continue_numbering(scheme, day, 100) == "AB-2026-0100"
+    assert register.issue(request(), render)[0].number == "AB-2026-0100"
+
+
+def test_an_issued_certificate_needs_an_approver(register):
+    with pytest.raises(RegisterError, match="approves it"):
+        register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                      "approver": " "})), render)
+    assert register.list() == []
+    assert "approver" in CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                "approver": ""}).missing_fields()
+
+
+def test_the_date_of_issue_is_the_day_the_register_issues_it(register):
+    typed = CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                   "issue_date": "2026-11-01", "calibration_date": "2026-10-20",
+                                   "created": "2026-11-01T08:00:00"})
+    register.clock = on(dt.datetime(2026, 11, 30, 23, 59, 30, tzinfo=dt.timezone.utc))
+    seen = []
+    record, _ = register.issue(request(typed), lambda meta: seen.append(meta) or b"%PDF")
+    assert record.issue_date == seen[0].issue_date == "2026-11-30"  # not the typed 11-01
+    assert record.issued_at == seen[0].created == "2026-11-30T23:59:30+00:00"
+    assert record.number == "AB-2026-0001"
+
+
+def test_a_calibration_after_the_day_of_issue_or_in_the_future_is_refused(register):
+    register.clock = on(dt.datetime(2026, 11, 1, 9, tzinfo=dt.timezone.utc))
+    with pytest.raises(RegisterError, match="2026-11-20 is after the date of issue 2026-11-01"):
+        register.issue(request(), render)  # calibrated 2026-11-20: in the future
+    assert register.list() == []
+    with pytest.raises(Exception, match="cannot be issued before the calibration"):
+        CertificateMetadata.from_dict({"calibration_date": "2026-11-20",
+                                       "issue_date": "2026-11-01"})
+
+
+def test_an_amendment_is_not_dated_before_its_original(register):
+    original, _ = register.issue(request(), render)
+    register.clock = on(ISSUED - dt.timedelta(days=3))  # the computer's clock set back
+    with pytest.raises(RegisterError, match="cannot be dated 2026-11-21, before it"):
+        register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                                      "calibration_date": "2026-11-01"})),
+                       render, supersedes=original.number, change_note="typo")
+    assert register.get(original.number).status == "issued"
+
+
+def _tamper(register, number: str, **values) -> None:
+    """What someone with the database's password could do behind AngleBench's back."""
+    certificates = schema.CERTIFICATES
+    with register.engine.begin() as conn:
+        conn.execute(certificates.update().where(certificates.c.number == number)
+                     .values(**values))
+
+
+def test_the_hash_chain_shows_changes_made_inside_the_database(register):
+    first, pdf = register.issue(request(), render)
+    second, _ = register.issue(request(), render)
+    assert register.audit(pdfs=True) == [] and register.chain_head() != "0" * 64
+    forged = b"%PDF forged"
+    _tamper(register, first.number, pdf=forged,
+            pdf_sha256=__import__("hashlib").sha256(forged).hexdigest())
+    problems = [str(p) for p in register.audit(pdfs=True)]
+    assert problems == [f"record {first.number}: the hash chain is broken here (this record, "
+                        "or one before it, was changed, inserted or deleted after issue)"]
+    with Register(register.url) as reopened:  # checked on opening too
+        assert [str(p) for p in reopened.problems] == problems
+    _tamper(register, second.number, pdf=b"%PDF changed alone")
+    assert any("stored PDF does not match" in str(p) for p in register.audit(pdfs=True))
+    with pytest.raises(RegisterError, match="no longer matches the SHA-256"):
+        register.pdf(second.number)
+    _tamper(register, second.number, customer="Someone Else")
+    assert sum("hash chain is broken" in str(p) for p in register.audit()) == 2
+
+
+def test_a_superseded_record_set_back_to_issued_is_seen(register):
+    original, _ = register.issue(request(), render)
+    amended, _ = register.issue(request(), render, supersedes=original.number, change_note="x")
+    assert register.audit() == []
+    _tamper(register, original.number, status="issued", superseded_by=None)
+    problems = [str(p) for p in register.audit()]
+    assert problems == [f"record {original.number}: marked \"issued\" (superseded by —), but "
+                        f"the register's records say superseded by {amended.number}"]
+    with pytest.raises(RegisterError, match="superseded by"):  # and no amendment of it
+        _tamper(register, original.number, status="superseded", superseded_by=amended.number)
+        register.issue(request(), render, supersedes=original.number)
+
+
+def test_an_old_register_gets_its_chain_when_migrated(register_url):
+    with Register(register_url) as reg:
+        reg.clock = on(ISSUED)
+        numbers = [reg.issue(request(), render)[0].number for _ in range(3)]
+        head = reg.chain_head()
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.begin() as conn:  # as version 2 left it: no chain
+        conn.execute(schema.CERTIFICATES.update().values(chain_sha256=None))
+        conn.execute(schema.SCHEMA_VERSION.update().values(version=2))
+    engine.dispose()
+    with Register(register_url) as reg:
+        assert reg.version == 3 and reg.problems == [] and reg.chain_head() == head
+        assert [r.number for r in reg.list()] == numbers[::-1]
+
+
+def test_tests_never_reach_the_users_own_register(monkeypatch):
+    from models.register.location import default_register_url, register_url
+    from tests.conftest import TEST_HOME, USER_HOME
+
+    monkeypatch.delenv("ANGLEBENCH_REGISTER", raising=False)
+    for url in (default_register_url(), register_url()):
+        assert not url.startswith(f"sqlite:///{USER_HOME.resolve()}/"), url
+        assert url.startswith(f"sqlite:///{TEST_HOME.resolve()}/"), url
+
+
+def test_a_record_with_a_schema_1_project_keeps_its_chain_and_opens_migrated(register):
+    """#32: a record issued before the figures had their unit holds a schema-1 project; the
+    register never rewrites it (its hash chain holds), and it opens with each figure in the
+    unit of its workbench's errors."""
+    import json
+
+    from models.project.file import project_from_json
+
+    old = json.dumps({"format": "anglebench-project", "schema_version": 1, "metadata": {
+        "certificates": {"positioning": {"tolerance_arcsec": 15, "standards": [
+            {"description": "laser", "uncertainty_arcsec": 0.5}]}}},
+        "workbenches": {"positioning": {"rows": [], "settings": {"target_unit": "mm",
+                                                                 "deviation_unit": "um"}}}})
+    record, _ = register.issue(IssueRequest("polygon", META, old, {}), render)
+    assert register.audit(pdfs=True) == []
+    stored = register.get(record.number).project_json
+    assert '"tolerance_arcsec": 15' in stored  # kept as it was issued
+    details = project_from_json(stored).metadata["certificates"]
+    assert details["positioning"]["tolerance"] == 15
+    assert details["positioning"]["tolerance_unit"] == "um"
+    assert details["positioning"]["standards"][0]["uncertainty_unit"] == "um"
+    # the issuing workbench's own details were written by this version: read as they are
+    assert CertificateMetadata.from_dict(details["polygon"]).tolerance_unit == "arcsec"

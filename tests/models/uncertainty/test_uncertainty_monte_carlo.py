@@ -1,0 +1,56 @@
+"""Each workbench's GUM budget against a Monte Carlo simulation (GUM Supplement 1).
+
+A simulated run with known truth (the first-principles rigs of
+models/validation) is repeated with fresh draws of every input the budget
+names (reading noise, the reference standards' errors); the spread of
+(corrected error − truth) over the trials is compared, point by point, with the
+budget's combined standard uncertainty. The validation report runs the same
+comparisons with fewer trials.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from models.validation.cases import (
+    budget_agreement,
+    fringe_budget_trials,
+    polygon_budget_trials,
+    theodolite_budget_trials,
+)
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
+TRIALS = 500
+
+
+def test_theodolite_budget_matches_monte_carlo():
+    deviations, budgets = theodolite_budget_trials(TRIALS, np.random.default_rng(11))
+    ratio, worst = budget_agreement(deviations, budgets)
+    assert abs(ratio - 1.0) < 0.10, ratio
+    assert worst < 0.20, worst
+    # the reference reading carries no uncertainty in either
+    reference = np.max(budgets, axis=0) == 0.0
+    assert reference.sum() == 1 and np.max(np.abs(deviations[:, reference])) < 1e-9
+
+
+@pytest.mark.parametrize("directions", [(1,), (1, 1, 1), (1, -1, 1, -1)])
+def test_polygon_budget_matches_monte_carlo(directions):
+    deviations, budgets = polygon_budget_trials(TRIALS // 2, np.random.default_rng(5 + len(directions)),
+                                                directions)
+    ratio, worst = budget_agreement(deviations, budgets)
+    assert abs(ratio - 1.0) < 0.10, ratio
+    assert worst < 0.25, worst
+
+
+def test_fringe_budget_matches_monte_carlo():
+    deviations, budgets = fringe_budget_trials(TRIALS, np.random.default_rng(3))
+    ratio, worst = budget_agreement(deviations, budgets)
+    assert abs(ratio - 1.0) < 0.10, ratio
+    assert worst < 0.25, worst
+    # the figure is the size expected: σ/A of a radian, as shaft angle
+    expected = 0.004 / 1.0 * 1_296_000 / 16384 / (2 * math.pi)
+    assert np.sqrt(np.mean(np.square(budgets), axis=0)).mean() == pytest.approx(expected, rel=0.15)

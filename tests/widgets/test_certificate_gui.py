@@ -1,0 +1,205 @@
+"""Export a certificate through the File menu, typing the details into the real dialog."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+from pypdf import PdfReader
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDialog
+
+from models.certificate.metadata import CertificateMetadata
+from widgets.certificate_dialog import CertificateDialog
+
+
+def _type_details(qtbot, dialog: CertificateDialog) -> None:
+    fields = dialog.fields
+    fields["lab_name"].insert("角度实验室")  # as an input method commits it (QTest types Latin-1)
+    qtbot.keyClicks(fields["lab_name"], " Angle Lab")
+    qtbot.keyClicks(fields["customer_name"], "=Customer & Co")
+    qtbot.keyClicks(fields["item_description"], "Rotary table RT-400")
+    qtbot.keyClicks(fields["item_serial"], "RT-9")
+    qtbot.keyClicks(fields["calibration_date"], "2026-11-20")
+    assert fields["issue_date"].text()  # today, prefilled
+    fields["issue_date"].clear()
+    qtbot.keyClicks(fields["issue_date"], "2026-11-24")
+    qtbot.keyClicks(fields["operator"], "Wang")
+    qtbot.keyClicks(fields["approver"], "Dr. Li")  # an issued certificate is approved
+    qtbot.keyClicks(fields["item_model"], "RT-400")
+    qtbot.keyClicks(fields["tolerance"], "5")
+    assert fields["certificate_number"].placeholderText() == "allocated by the register on export"
+    dialog.add_standard({"description": "Theodolite T3000", "certificate_no": "NIM-7",
+                         "uncertainty": 0.5})
+
+
+@pytest.mark.slow
+def test_export_certificate_through_the_menu(window, qtbot, tmp_path, monkeypatch):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+    seen = {}
+
+    def fill_and_accept(dialog):
+        _type_details(qtbot, dialog)
+        # a bad value is marked and keeps the dialog open, with everything typed kept
+        qtbot.keyClicks(dialog.fields["humidity_pct"], "wet")
+        dialog.accept()
+        seen["error"] = dialog.error_label.text()
+        seen["style"] = dialog.fields["humidity_pct"].styleSheet()
+        dialog.fields["humidity_pct"].setText("45")
+        dialog.accept()
+        return dialog.result()
+
+    monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
+    out = tmp_path / "cert.pdf"
+    window.certificates.view.choose_save_path = lambda *a: str(out)
+    window.menus.export_action.trigger()
+    assert "humidity_pct" in seen["error"] and "background" in seen["style"]
+    assert window.told == []
+    text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
+    assert "角度实验室" in text and "=Customer & Co" in text and "NIM-7" in text
+    assert "DRAFT" not in text
+    with window.certificates.open_register() as register:  # the number came from the register
+        (record,) = register.list()
+    assert record.number == "AB-2026-0001" and record.number in text
+    assert register.verify(out.read_bytes()).number == record.number
+    assert record.workbench == "theodolite" and record.item_serial == "RT-9"
+    # the details are kept with the project, without the number (the next one is new)
+    stored = window.projects.project().metadata["certificates"]["theodolite"]
+    assert stored["operator"] == "Wang" and stored["certificate_number"] == ""
+    assert window.projects.is_modified
+
+
+@pytest.mark.slow
+def test_cancelled_dialog_writes_nothing(window, tmp_path, monkeypatch):
+    window.load_all_samples()
+    monkeypatch.setattr(CertificateDialog, "exec", lambda d: QDialog.DialogCode.Rejected)
+    called = []
+    window.certificates.view.choose_save_path = lambda *a: called.append(a) or str(tmp_path / "x.pdf")
+    assert not window.export_certificate()
+    assert not called and not (tmp_path / "x.pdf").exists()
+
+
+@pytest.mark.slow
+def test_no_result_is_told_not_crashed(window):
+    assert not window.export_certificate()
+    assert "Nothing" in window.told[0] or "no readings" in window.told[0]
+
+
+@pytest.mark.slow
+def test_lab_defaults_fill_a_new_certificate(window, qtbot):
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.lab_defaults_saved.connect(window.certificates.save_lab_defaults)
+    qtbot.keyClicks(dialog.fields["lab_name"], "Angle Lab")
+    qtbot.keyClicks(dialog.fields["operator"], "Li")
+    qtbot.mouseClick(dialog.save_defaults_button, Qt.MouseButton.LeftButton)
+    meta = window.certificates.details("polygon")
+    assert meta.lab_name == "Angle Lab" and meta.operator == "Li"
+    assert meta.customer_name == ""
+
+
+@pytest.mark.slow
+def test_export_results_csv(window, tmp_path):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(1)
+    out = tmp_path / "r.csv"
+    window.certificates.view.choose_save_path = lambda *a: str(out)
+    window.menus.export_results_action.trigger()
+    lines = out.read_text(encoding="utf-8-sig").splitlines()
+    result = window.current.result
+    assert lines[0].startswith("position,nominal_deg")
+    assert len(lines) == result.faces + 1
+
+
+@pytest.mark.slow
+def test_a_stored_detail_gone_bad_blanks_nothing(window, qtbot, monkeypatch):
+    """humidity stored as "45 %" (an older version, or a hand-edited project): the other
+    details stay in the dialog, the bad one shows as stored and is marked; all bad fields
+    are marked at once."""
+    window.projects.metadata["certificates"] = {"theodolite": {
+        "lab_name": "Angle Lab", "customer_name": "Customer", "humidity_pct": "45 %",
+        "temperature_c": "warm"}}
+    window.tabs.setCurrentIndex(0)
+    seen = {}
+
+    def look(dialog):
+        seen["lab"] = dialog.fields["lab_name"].text()
+        seen["humidity"] = dialog.fields["humidity_pct"].text()
+        seen["styles"] = [dialog.fields[k].styleSheet() for k in ("humidity_pct", "temperature_c")]
+        seen["error"] = dialog.error_label.text()
+        return QDialog.DialogCode.Rejected
+
+    monkeypatch.setattr(CertificateDialog, "exec", look)
+    assert window.certificates.edit_details(window.certificates.details(window.current.kind.key)) is None
+    assert seen["lab"] == "Angle Lab" and seen["humidity"] == "45 %"
+    assert all(style for style in seen["styles"])
+    assert "humidity_pct" in seen["error"] and "temperature_c" in seen["error"]
+
+
+@pytest.mark.slow
+def test_errors_of_degrees_are_shown_first_and_certified_only_when_confirmed(window, qtbot,
+                                                                          tmp_path, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    from models.readings.angles import format_dms, parse_angle_deg
+
+    window.load_all_samples()
+    polygon = next(p for p in window.presenters if p.kind.key == "polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    cell = polygon.table_model.index(2, 1)
+    wrong = format_dms(parse_angle_deg(polygon.table_model.data(cell)) + 2.0, 2)
+    polygon.table_model.set_cells([(2, 1, wrong)])  # face 3 typed two degrees off
+    qtbot.waitUntil(lambda: polygon.result is not None and "ERRORS OF" in
+                    polygon.view.warnings.text())
+    assert polygon.view.verdict.text().startswith("*** ERRORS OF 2.00°")  # bold, on top
+    asked = []
+    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.No
+    opened = []
+    monkeypatch.setattr(CertificateDialog, "exec", lambda d: opened.append(d) or 0)
+    assert not window.export_certificate()
+    assert "ERRORS OF 2.00°" in asked[0] and not opened  # refused before any detail is asked
+    window.ask = lambda title, text, *a: asked.append(text) or QMessageBox.StandardButton.Yes
+    window.export_certificate()
+    assert opened  # confirmed: on to the details
+
+
+def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
+    """#31: the headers were cut ("Stated as (U95, MPE, u", "er (reading, from face 1")
+    and one row was in sight."""
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    dialog.show()
+    table = dialog.standards
+    header = table.horizontalHeader()
+    metrics = header.fontMetrics()
+    for column in range(table.columnCount()):
+        text = table.horizontalHeaderItem(column).text()
+        widest = max(metrics.horizontalAdvance(line) for line in text.split("\n"))
+        assert header.sectionSize(column) >= widest, (text, header.sectionSize(column), widest)
+    assert table.viewport().height() >= 3 * table.verticalHeader().defaultSectionSize()
+    assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"
+
+
+def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
+    """#32: the tolerance's unit is chosen beside it, a standard's typed in its row (its key
+    or its symbol); both come back as they were set."""
+    from models.quantity import Quantity
+
+    dialog = CertificateDialog(CertificateMetadata())
+    qtbot.addWidget(dialog)
+    qtbot.keyClicks(dialog.fields["tolerance"], "15")
+    unit_box = dialog.choices["tolerance_unit"]
+    assert unit_box.currentData() == "arcsec"  # as a file of before states it
+    unit_box.setFocus()
+    while unit_box.currentData() != "urad":
+        qtbot.keyClick(unit_box, Qt.Key.Key_Down)
+    dialog.add_standard({"description": "laser", "uncertainty": 0.5, "uncertainty_unit": "µm"})
+    meta = dialog.metadata()
+    assert meta.tolerance_quantity == Quantity(15.0, "urad")
+    assert (meta.standards[0].uncertainty, meta.standards[0].uncertainty_unit) == (0.5, "um")
+    again = CertificateDialog(meta)
+    qtbot.addWidget(again)
+    assert again.choices["tolerance_unit"].currentText() == "µrad"
+    assert again.metadata() == meta

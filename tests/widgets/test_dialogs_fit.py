@@ -1,0 +1,53 @@
+"""Every dialog of the window fits the screen (#31): a 1280×720 laptop, and 200 % scale on
+a 2560×1600 screen (1280×800 logical). Each screen is an offscreen screen of that size in
+a process of its own (tests/dialog_fit_probe.py opens every dialog as the user does);
+a dialog whose frame leaves the screen's free area fails here, named, with its size.
+Before #31 the certificate dialog was 868 px tall (Export… and Cancel off a 720 px
+screen), the register 724 and the manual 764."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
+ROOT = Path(__file__).resolve().parents[2]
+SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
+    "1280x720": (1280, 720, "1", "en"),
+    "200% on 2560x1600": (2560, 1600, "2", "zh_CN"),
+}
+
+
+@pytest.mark.parametrize("screen", SCREENS)
+def test_every_dialog_fits_the_screen(screen, tmp_path):
+    width, height, scale, language = SCREENS[screen]
+    config = tmp_path / "screen.json"
+    config.write_text(json.dumps({"screens": [{
+        "name": "laptop", "x": 0, "y": 0, "width": width, "height": height,
+        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
+    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
+           "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
+           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
+    run = subprocess.run([sys.executable, "-m", "tests.dialog_fit_probe", language],
+                         env=env, capture_output=True, text=True, timeout=600, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr[-3000:]
+    found = json.loads(run.stdout.strip().splitlines()[-1])
+    expected = {"main window", "certificate details", "certificate details (Export certificate…)",
+                "which column is which", "certificate register", "manual", "quick guide", "about",
+                "a message (tell)", "a question (ask)", "paste question", "draft question",
+                "what changed", "print", "open project", "import readings"}
+    assert set(found) == expected  # every dialog was opened (and answered)
+    too_big = []
+    for name, seen in found.items():
+        x, y, w, h = seen["frame"]
+        ax, ay, aw, ah = seen["available"]
+        assert (aw, ah) == (width // int(scale), height // int(scale))
+        if w > aw or h > ah or x < ax or y < ay or x + w > ax + aw or y + h > ay + ah:
+            too_big.append(f"{name}: {w}×{h} at ({x}, {y}) on {aw}×{ah}")
+    assert not too_big, "off the screen: " + "; ".join(too_big)

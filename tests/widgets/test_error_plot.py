@@ -1,0 +1,75 @@
+"""The error plot's y ranges follow the data without jittering on small changes."""
+
+import numpy as np
+import pytest
+
+from widgets.error_plot import ErrorPlot
+
+
+def test_y_range_moves_only_when_needed_and_respects_a_zoom(qtbot):
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    x = np.linspace(-20, 20, 41)
+    y = np.sin(x / 5)
+    plot.set_curves(x, y, y * 0.9, y * 0.1)
+    vb = plot.main_plot.getViewBox()
+    first = vb.viewRange()[1]
+    assert first[0] < -1.0 + 1e-9 and first[1] > 1.0 - 1e-9
+    plot.set_curves(x, y * 1.02, y * 0.9, y * 0.1)  # a small edit: the axes stay
+    assert vb.viewRange()[1] == first
+    plot.set_curves(x, y * 3, y * 0.9, y * 0.1)  # the data leave the view: it follows
+    grown = vb.viewRange()[1]
+    assert grown[1] >= 3.0 and grown[0] <= -3.0
+    plot.set_curves(x, y * 0.2, y * 0.2, y * 0.1)  # shrinks well inside: it follows
+    assert vb.viewRange()[1][1] < 1.0
+    vb.setYRange(-10, 10, padding=0)
+    vb.sigRangeChangedManually.emit([False, True])  # as a mouse zoom does
+    plot.set_curves(x, y * 0.2, y * 0.2, y * 0.1)  # the same data drawn again
+    assert vb.viewRange()[1] == [-10.0, 10.0]  # the user's zoom is kept
+    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)  # new data: the zoom is given up (#31)
+    assert vb.viewRange()[1][1] < 1.0
+    vb.setYRange(-10, 10, padding=0)
+    vb.sigRangeChangedManually.emit([False, True])
+    vb.enableAutoRange(y=True)  # the "A" button
+    plot.set_curves(x, y * 0.5, y * 0.5, y * 0.1)
+    assert vb.viewRange()[1][1] < 1.0
+
+
+def test_the_legend_goes_where_the_data_is_not(qtbot):
+    """A curve rising to the top right: the legend leaves that corner; a falling one: it
+    stays top right (the default when it is empty)."""
+    from widgets.error_plot import ErrorPlot
+
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(800, 600)
+    plot.show()
+    x = np.linspace(0, 100, 200)
+    plot.set_curves(x, raw=x ** 2 / 100, model=x ** 2 / 100, corrected=-x)
+    assert plot.main_plot.legend_corner != "top-right"
+    assert plot.corrected_plot.legend_corner == "top-right"  # −x leaves the top right empty
+    plot.set_curves(x, raw=-x, model=-x, corrected=x)
+    assert plot.main_plot.legend_corner == "top-right"
+    assert plot.corrected_plot.legend_corner != "top-right"
+
+
+@pytest.mark.slow
+def test_a_cramped_plot_puts_its_legend_above_the_data_and_back_when_there_is_room(qtbot):
+    """Data in every corner of a plot too small for a legend inside it (a small window at
+    200 %): the entries go to the title line above the data area, with their colours;
+    given room again, the legend returns inside, in a corner."""
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(420, 330)
+    plot.show()
+    x = np.linspace(0, 100, 400)
+    wave = np.sin(x / 3.0)  # fills every corner
+    plot.set_curve_names("raw error", "set-up model", "corrected")
+    plot.set_curves(x, raw=wave, model=0.9 * wave, corrected=wave)
+    qtbot.waitUntil(lambda: plot.main_plot.legend_corner == "above")
+    title = plot.main_plot.titleLabel.text
+    assert "raw error" in title and "set-up model" in title and "#c0392b" in title.lower()
+    assert not plot.legend.isVisible()
+    plot.resize(1400, 1400)
+    qtbot.waitUntil(lambda: plot.main_plot.legend_corner != "above")
+    assert plot.legend.isVisible() and not plot.main_plot.titleLabel.isVisible()

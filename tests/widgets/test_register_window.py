@@ -1,0 +1,174 @@
+"""The register window: its presenter with a mock view, and the real window driven by
+qtbot (list, search, verify, amend through the main window, history with a due date)."""
+
+from __future__ import annotations
+
+import json
+from unittest import mock
+
+import pytest
+
+from app.certificate_issue import issue_certificate
+from app.register_presenter import RegisterPresenter, RegisterView
+from models.certificate.metadata import CertificateMetadata
+from models.readings.sheet import ReadingsSheet
+from models.readings.tabular_import import map_columns, read_table
+from models.registry import KINDS
+
+pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
+
+
+def issue_polygon(register, samples_dir, tmp_path, name, **changes):
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": "", **changes})
+    return issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                             kind.checked_settings({}), rows, "polygon_sample.csv",
+                             str(tmp_path / f"{name}.pdf"))
+
+
+def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, samples_dir,
+                                                                    tmp_path):
+    with window.certificates.open_register() as register:
+        first = issue_polygon(register, samples_dir, tmp_path, "a")
+        issue_polygon(register, samples_dir, tmp_path, "b", item_serial="OTHER-1",
+                      customer_name="Other customer")
+    view = mock.create_autospec(RegisterView, instance=True)
+    opened = mock.Mock(return_value=True)
+    presenter = RegisterPresenter(view, window.certificates, opened)
+    presenter.refresh()
+    header, rows = view.show_records.call_args.args
+    assert header[0] == "Number" and [r[0] for r in rows] == ["AB-2026-0002", "AB-2026-0001"]
+    presenter.refresh("other")
+    assert [r[0] for r in view.show_records.call_args.args[1]] == ["AB-2026-0002"]
+    presenter.refresh("")
+    view.selected_row.return_value = 1
+    assert presenter.revise()
+    opened.assert_called_once_with(first.project_json, "polygon")
+    assert window.certificates.pending.number == "AB-2026-0001"
+    view.ask_pdf_to_verify.return_value = str(tmp_path / "a.pdf")
+    assert presenter.verify_pdf().number == "AB-2026-0001"
+    view.ask_pdf_path.return_value = str(tmp_path / "copy.pdf")
+    assert presenter.save_pdf()
+    assert (tmp_path / "copy.pdf").read_bytes() == (tmp_path / "a.pdf").read_bytes()
+
+
+def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_path, qtbot):
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+        register.set_interval("RX-26-0815", 365)
+    window.show_register()
+    dialog = window.register_window
+    assert dialog.table.rowCount() == 1 and dialog.table.item(0, 0).text() == "AB-2026-0001"
+    dialog.buttons["history"].click()
+    assert "next due 2027-11-20" in dialog.history_title.text()
+    assert dialog.figure.count() == 2 and dialog.due_line.isVisible()
+    x, y = dialog.history_curves[0].getData()
+    # corrected peak-to-peak of the sample measured on a levelled bench (#28; 0.9817 in the seed frame)
+    assert len(y) == 1 and y[0] == pytest.approx(0.9835, abs=1e-3)
+    dialog.figure.setCurrentIndex(1)
+    assert dialog.history_curves[0].getData()[1][0] == pytest.approx(480.0, abs=0.5)  # ψ
+    dialog.tell = lambda *a: None
+    dialog.buttons["amend"].click()
+    assert window.current.kind.key == "polygon" and window.current.result is not None
+    # the technician exports: the details come back from the record, the change is asked
+    window.certificates.view.edit_certificate_details = lambda meta, problems, raw: meta
+    window.certificates.view.ask_change_note = lambda revision: "reference standard's certificate number"
+    window.certificates.view.choose_save_path = lambda *a: str(tmp_path / "amended.pdf")
+    assert window.export_certificate()
+    with window.certificates.open_register() as register:
+        assert register.get("AB-2026-0001-A1").supersedes == "AB-2026-0001"
+        assert register.get("AB-2026-0001").status == "superseded"
+    dialog.search.setText("A1")
+    assert dialog.table.rowCount() == 1
+
+
+def test_chinese_in_the_window_is_drawn_not_boxed(window):
+    """Without a system CJK font the window registers the bundled one, which has the glyphs
+    of a Chinese customer's name."""
+    from PySide6.QtGui import QFont, QFontMetrics
+
+    from widgets.fonts import ensure_cjk_font
+
+    family = ensure_cjk_font()
+    assert family
+    metrics = QFontMetrics(QFont(family))
+    assert all(metrics.inFontUcs4(ord(ch)) for ch in "长春光电有限公司转角方位")
+
+
+def test_an_issued_certificate_prints_page_for_page(window, samples_dir, tmp_path, monkeypatch):
+    """Print… in the register: the print dialog, then every page of the PDF as issued,
+    full size (to a PDF printer here, read back page by page)."""
+    from pypdf import PdfReader
+    from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
+    from widgets.print_view import pdf_page_images
+
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+    issued = (tmp_path / "a.pdf").read_bytes()
+    printed = tmp_path / "printed.pdf"
+
+    def accept(dialog):
+        dialog.printer().setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+        dialog.printer().setOutputFileName(str(printed))
+        return 1
+
+    monkeypatch.setattr(QPrintDialog, "exec", accept)
+    window.show_register()
+    dialog = window.register_window
+    dialog.table.selectRow(0)
+    told = []
+    dialog.tell = lambda *a: told.append(a)
+    dialog.buttons["print"].click()
+    assert told == []
+    pages = len(PdfReader(str(tmp_path / "a.pdf")).pages)
+    assert pages >= 2 and len(PdfReader(str(printed)).pages) == pages
+    first = next(pdf_page_images(issued, 50))
+    assert abs(first.width() - 210 / 25.4 * 50) <= 1  # A4 at 50 dpi
+    gray = [first.pixelColor(x, y).lightness() for x in range(0, first.width(), 3)
+            for y in range(0, first.height(), 3)]
+    assert min(gray) < 80 and sum(g > 240 for g in gray) > len(gray) / 2  # text on paper
+    monkeypatch.setattr(QPrintDialog, "exec", lambda dialog: 0)
+    printed.unlink()
+    dialog.buttons["print"].click()  # cancelled: nothing printed, nothing said
+    assert not printed.exists() and told == []
+
+
+def test_the_history_is_labelled_and_empty_says_so_in_the_window_language(qtbot):
+    """#31: before a certificate was picked the history showed an unlabelled empty
+    drop-down and a meaningless 0.2–0.8 axis; in Chinese its months were "Feb, Mar"."""
+    import datetime as dt
+
+    from widgets.i18n import install_language
+    from widgets.register_window import EPOCH, RegisterWindow
+
+    view = RegisterWindow()
+    qtbot.addWidget(view)
+    view.show()
+    assert view.history_empty.isVisible() and not view.history_plot.isVisible()
+    assert "select a certificate" in view.history_empty.text()
+    assert not view.figure.isVisible() and not view.figure_caption.isVisible()
+    day = dt.date(2026, 2, 1).toordinal()
+    view.show_history("SN-1", {"corrected peak-to-peak (\")": ([day, day + 60], [0.8, 0.9])},
+                      ["2026-02-01", "2026-04-02"], "2027-04-02", 365)
+    assert view.history_plot.isVisible() and not view.history_empty.isVisible()
+    assert view.figure.isVisible() and view.figure_caption.text() == "figure"
+    assert view.figure.currentText() == "corrected peak-to-peak (\")"
+    axis = view.history_plot.getAxis("bottom")
+    february = (day - EPOCH) * 86400.0
+    months = [february + k * 29 * 86400.0 for k in range(3)]
+    # the zoom level pyqtgraph writes months at ("%b")
+    axis.zoomLevel = next(level for level in axis.zoomLevels.values()
+                          if level.tickSpecs[0].format == "%b")
+    english = axis.tickStrings(months, 1.0, axis.zoomLevel.tickSpecs[0].spacing)
+    assert any("Feb" in text for text in english), english
+    install_language("zh_CN")
+    try:
+        chinese = axis.tickStrings(months, 1.0, axis.zoomLevel.tickSpecs[0].spacing)
+    finally:
+        install_language("en")
+    assert any("2月" in text for text in chinese) and not any(
+        name in text for text in chinese for name in ("Feb", "Mar", "Apr")), chinese
