@@ -204,9 +204,8 @@ def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
     and the encoder's errors about their mean, each inside its own U in 95 % of the cases;
     the U from face 1 (from the full covariance) is not the U about the mean, and the polygon
     certificate states both, each with its own U."""
-    from crosscal_simulator import Bench
-
     from models.certificate.metadata import CertificateMetadata
+    from tests.crosscal_simulator import Bench
 
     n, trials, sigma = 12, 150, 0.05
     settings = {**KIND.default_settings, "noise_arcsec": sigma}
