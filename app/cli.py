@@ -8,6 +8,7 @@ its help included, is in the language of ``--language`` (default: the system's).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 import sys
@@ -25,7 +26,12 @@ from models.parameters import SettingsError
 from models.project.file import migrate_certificate_details
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
-from models.readings.tabular_import import TableImportError, map_columns, read_table
+from models.readings.tabular_import import (
+    MissingColumnError,
+    TableImportError,
+    map_columns,
+    read_table,
+)
 from models.registry import KINDS
 from models.workbench import ComparesAfterLog, IssuesCertificates, WritesCorrectionTable
 
@@ -291,7 +297,14 @@ def run_analyze(argv: list[str]) -> int:
 
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
     table = read_table(path)
-    return table, map_columns(table, kind.columns, mapping)
+    try:
+        return table, map_columns(table, kind.columns, mapping)
+    except MissingColumnError:
+        own = None if mapping else kind.rows_from_table(table)  # the workbench's own layout
+        if own is None:
+            raise
+        # its rows are the readings unrolled: a bad cell is named by the readings' row
+        return dataclasses.replace(table, line_numbers=list(range(1, len(own) + 1))), own
 
 
 def _read_metadata(path: str | None, error_unit: str = "arcsec") -> CertificateMetadata:

@@ -14,6 +14,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QMenu
 
+from app.reference_sender import receiver_of, send_reference
 from models.display_units import ANGLE_UNITS
 from models.workbench import SendsRuns
 from widgets.i18n import LANGUAGES, Tr, declared, live, tr
@@ -92,6 +93,10 @@ class MainMenus:
             file_menu, tr("Send to &positioning"), window.send_to_positioning,
             tip=tr("Judge this run to ISO 230-2 / VDI 3441 in the positioning workbench (its "
                    "readings are replaced; Edit > Undo there restores them)"))
+        self.send_reference_action = self._action(
+            file_menu, tr("Send as &reference"), lambda: send_reference(window),
+            tip=tr("Send this result to the workbench that reads with it as its reference, with "
+                   "its U (the polygon's face deviations from face 1 to the polygon workbench)"))
         self.overlay_action = self._action(
             file_menu, tr("O&verlay a run…"), lambda: overlays.overlay_file(),
             tip=tr("Draw another run of this workbench against today's: a readings or project "
@@ -183,3 +188,5 @@ class MainMenus:
         presenter = presenters[index] if 0 <= index < len(presenters) else None
         self.send_action.setEnabled(presenter is not None
                                     and isinstance(presenter.kind, SendsRuns))
+        self.send_reference_action.setEnabled(presenter is not None
+                                              and receiver_of(self.window, presenter) is not None)

@@ -32,9 +32,10 @@ from models.parameters import Parameter, SettingsError, Shortcut, check_paramete
 from models.plots import PlotFigure
 from models.readings.sheet import Column, ParsedReadings
 
-__all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRuns",
-           "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates", "OverlaysRuns",
-           "SendsRuns", "SettingsError", "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
+__all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
+           "AcceptsRuns", "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates",
+           "OverlaysRuns", "SendsReference", "SendsRuns", "SentReference", "SettingsError",
+           "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
 #: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
 #: correction is the negative of an error.
@@ -94,6 +95,12 @@ class Workbench(ABC):
         them as bare numbers in it, is read in it."""
         return "arcsec"
 
+    def rows_from_table(self, table: Any) -> list[list[str]] | None:
+        """A file or pasted block whose headers name none of its columns, read in this
+        workbench's own layout (the cross-calibration's n × n matrix) as readings rows of
+        its columns; None: not such a table (the column mapping is asked)."""
+        return None
+
     def validation_cases(self, trials: int) -> list[Any]:
         """Its reference cases (models.validation.cases.ValidationCase: check figures of the
         method's publication, simulations with known truth) kept in its own folder; the
@@ -141,11 +148,19 @@ class Workbench(ABC):
             checked = self.checked_settings(settings)
             listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters)
             document = dataclasses.replace(document, settings=listing)
+        basis = self.traceability_basis
+        if basis and not document.traceability_basis:
+            document = dataclasses.replace(document, traceability_basis=basis)
         return document
 
 
 class IssuesCertificates(ABC):
     """Issues a test certificate of its result."""
+
+    #: what its results are traceable through when no reference standard enters them
+    #: (QT_TR_NOOP; the closure of the circle for a self-calibrating method); None: the
+    #: certificate states traceability through the reference standards listed, as usual
+    traceability_basis: ClassVar[str | None] = None
 
     @abstractmethod
     def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:
@@ -184,6 +199,43 @@ class AcceptsRuns(ABC):
     def settings_for_runs(self, settings: Mapping[str, Any]) -> dict[str, Any]:
         """``settings`` changed so that they read sent rows (targets in °, deviations in
         arcsec)."""
+
+
+@dataclasses.dataclass(frozen=True)
+class SentReference:
+    """A reference one workbench finds for another to read with: a value per position
+    (the polygon's face deviations from face 1, in ``unit``), the expanded U of each (for
+    the same quantity, with ``coverage_factor``) and the reference standard's name."""
+
+    kind: str  # what it is the reference of (SendsReference.reference_kind)
+    values: dict[int, float]
+    expanded_uncertainty: dict[int, float]
+    coverage_factor: float
+    standard_name: str  # the reference standard's name on the receiver's certificate
+    unit: str = "arcsec"
+
+    @property
+    def largest_standard_uncertainty(self) -> float:
+        """max u = U / k over the positions: one figure for a budget that takes one."""
+        return max(self.expanded_uncertainty.values()) / self.coverage_factor
+
+
+class SendsReference(ABC):
+    """Its result is a reference standard's values for another workbench (the window's
+    "Send … as reference"; the receiver is found by :class:`AcceptsReference`)."""
+
+    reference_kind: ClassVar[str]  # e.g. "polygon face deviations"
+
+    @abstractmethod
+    def sent_reference(self, result: Any) -> SentReference:
+        """The reference in ``result`` (ValueError why there is none)."""
+
+
+class AcceptsReference(ABC):
+    """Reads with a reference another workbench sends (:class:`SendsReference`) of its
+    ``accepted_reference`` kind; its presenter's ``accept_reference`` fills the values."""
+
+    accepted_reference: ClassVar[str]
 
 
 class ComparesAfterLog(ABC):
@@ -233,5 +285,6 @@ class GuidesAcquisition(ABC):
 
 #: every capability a workbench may declare (the contract test lists them)
 CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
-                ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition)
+                ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition,
+                SendsReference, AcceptsReference)
 

@@ -22,9 +22,11 @@ from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS, presenter_class
 from models.workbench import (
     CAPABILITIES,
+    AcceptsReference,
     AcceptsRuns,
     IssuesCertificates,
     OverlaysRuns,
+    SendsReference,
     SendsRuns,
     ShowsHeadline,
     Workbench,
@@ -222,6 +224,13 @@ def test_its_capabilities_work_on_the_sample(key, tmp_path):
         rows = kind.run_rows(result)
         parsed = ReadingsSheet(receiver.columns, rows).parse()
         assert not parsed.errors, f"{_where(key)}: run_rows gives rows {receiver.key} refuses"
+    if isinstance(kind, SendsReference):
+        receivers = [k for k in KINDS.values() if isinstance(k, AcceptsReference)
+                     and k.accepted_reference == kind.reference_kind]
+        assert receivers, f"{key} sends a {kind.reference_kind!r} reference, but none accepts it"
+        reference = kind.sent_reference(result)
+        assert reference.kind == kind.reference_kind and reference.values
+        assert set(reference.values) == set(reference.expanded_uncertainty)
     if isinstance(kind, WritesCorrectionTable):
         what = kind.correction_table(result, kind.default_settings, str(tmp_path / "table.csv"))
         assert what and any(tmp_path.iterdir()), f"{_where(key)}: correction_table writes a file"

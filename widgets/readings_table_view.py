@@ -14,7 +14,7 @@ from PySide6.QtWidgets import (
 )
 
 from models.readings.paste import plan_paste
-from models.readings.tabular_import import split_pasted_text
+from models.readings.tabular_import import RawTable, split_pasted_text
 from widgets.i18n import live, tr
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.shortcuts import key_sequences
@@ -35,6 +35,9 @@ class ReadingsTableView(QTableView):
         self.entry_column = 0  # where a row's readings begin
         self.nominal_step = 0.0  # 0: off
         self.readings_per_point = 1  # n readings of a point: the nominal advances every n rows
+        # a pasted block in the workbench's own layout (RawTable -> rows | None; the
+        # presenter sets Workbench.rows_from_table): unrolled into readings, the sheet replaced
+        self.own_layout = None
         self._setup_ui()
         # after the view's own handling: the edit is committed and the editor closed
         self.itemDelegate().closeEditor.connect(self._editor_closed)
@@ -139,6 +142,12 @@ class ReadingsTableView(QTableView):
         if not grid:
             return ""
         model = self.readings_model()
+        own = self.own_layout(RawTable("", grid[0], grid[1:], list(range(2, len(grid) + 1)))) \
+            if self.own_layout is not None and len(grid) > 1 else None
+        if own:
+            model.replace_all(own, tr("Paste {rows} row(s), replacing the sheet").format(
+                rows=len(own)), checked=True)
+            return "replace"
         sheet = model.sheet
         filled = sum(1 for r in range(sheet.row_count) if any(
             sheet.text(r, c).strip() for c in range(sheet.column_count)))

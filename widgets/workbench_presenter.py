@@ -169,6 +169,8 @@ class WorkbenchPresenter(QObject):
         self.undo_stack = QUndoStack(self)
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
         self.view.attach_table_model(self.table_model)
+        if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
+            self.view.table.own_layout = kind.rows_from_table
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
@@ -357,6 +359,9 @@ class WorkbenchPresenter(QObject):
         """The rows with the column mapping the view gives (remembered or asked); None when
         the user gives none. Raises TableImportError for a mapping the file cannot take."""
         table = exc.table
+        own = self.kind.rows_from_table(table)  # the workbench's own layout, taken as it is
+        if own is not None:
+            return own
         mapping = self.view.ask_column_mapping(self.kind.columns, list(table.header or []),
                                                table.rows[:8], explained(exc))
         if not mapping:

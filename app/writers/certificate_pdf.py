@@ -599,7 +599,10 @@ def _standards_table(document: CertificateDocument) -> Table:
         u = "—" if s.uncertainty is None else message(
             "{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
             basis=message(BASIS_DIVISORS[s.basis][0]))
-        rows.append((s.description or "—", s.serial or "—", s.certificate_no or "—", u))
+        name = s.description or "—"
+        if document.traceability_basis:  # no reference standard: a comparator
+            name = message(QT_TR_NOOP("{standard} (comparator)"), standard=name)
+        rows.append((name, s.serial or "—", s.certificate_no or "—", u))
     if not rows:
         rows.append((QT_TR_NOOP("not stated"), "", "", ""))
     return Table(QT_TR_NOOP("Reference standards"), (
@@ -792,6 +795,14 @@ def _traceability(document: CertificateDocument) -> str:
         if listed:
             parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
                                               "stated uncertainty: {names}."), names=names)]
+    elif document.traceability_basis:  # a self-calibrating method: its own reference
+        parts = [_translatable(document.traceability_basis)]
+        if standards:  # no reference value comes from them
+            parts += [" ", message(QT_TR_NOOP("The instruments listed are comparators only; "
+                                              "their calibration enters the uncertainty, not "
+                                              "the reference: {names}."),
+                                   names=_listed(s.description or message(QT_TR_NOOP("standard"))
+                                                 for s in standards))]
     elif not listed:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established on this "
                                     "document — no reference standard with a calibration "

@@ -15,14 +15,18 @@ from typing import Any
 import numpy as np
 
 from models.crosscal import KEY, TITLE
-from models.crosscal.readings import COLUMNS, CrossCalReadings, read_crosscal
+from models.crosscal.acquisition import crosscal_guide
+from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
+    GuidesAcquisition,
     IssuesCertificates,
+    SendsReference,
+    SentReference,
     ShowsHeadline,
     Workbench,
     WritesCorrectionTable,
@@ -117,17 +121,37 @@ class CrossCalResult:
             out[q, k[rows]] = e[k[rows]] + s.residuals_arcsec[rows]
         return out
 
+    @property
+    def encoder_start_deg(self) -> float:
+        """The encoder's reading where every mounting starts (its first mounting's first)."""
+        r = self.readings
+        return float(r.encoder_deg[np.flatnonzero(r.mounting == r.mountings[0])[0]])
+
+    def _u_from_first(self, block: int) -> np.ndarray:
+        """Standard uncertainty of x_i − x_1 within one result set (0: E, 1: d): the scatter's
+        from the full covariance (var x_i + var x_1 − 2 cov), with the bench's stated bounds
+        through the design."""
+        n, cov = self.faces, self.solution.covariance_arcsec2
+        c = cov[block * n:(block + 1) * n, block * n:(block + 1) * n]
+        var = np.diag(c) + c[0, 0] - 2.0 * c[:, 0]
+        from_first = np.zeros((n, 2 * n))
+        from_first[:, block * n:(block + 1) * n] = np.eye(n)
+        from_first[:, block * n] -= 1.0
+        var = var + self.systematic_u_arcsec(from_first) ** 2
+        return np.sqrt(np.clip(var, 0.0, None))
+
+    def encoder_u_from_step0_arcsec(self) -> np.ndarray:
+        """Expanded U of E_k − E_0 (zero at step 0)."""
+        return self.solution.coverage_factor * self._u_from_first(0)
+
+    def polygon_u_from_face1_standard_arcsec(self) -> np.ndarray:
+        """Standard uncertainty of d_i − d_1 (zero at face 1, the reference)."""
+        return self._u_from_first(1)
+
     def polygon_u_from_face1_arcsec(self) -> np.ndarray:
         """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries): the
         scatter's (k from its ν) with the bench's stated bounds through the design."""
-        n, cov = self.faces, self.solution.covariance_arcsec2
-        d = cov[n:, n:]
-        var = np.diag(d) + d[0, 0] - 2.0 * d[:, 0]
-        from_first = np.zeros((n, 2 * n))
-        from_first[:, n:] = np.eye(n)
-        from_first[:, n] -= 1.0
-        var = var + self.systematic_u_arcsec(from_first) ** 2
-        return self.solution.coverage_factor * np.sqrt(np.clip(var, 0.0, None))
+        return self.solution.coverage_factor * self._u_from_first(1)
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
@@ -212,6 +236,9 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
     out: dict[str, Any] = {
         "faces": s.faces,
         "mountings": list(s.mountings),
+        # what each result set is stated relative to (its U is for that same quantity)
+        "encoder_error_reference": "mean",
+        "polygon_deviation_reference": "mean",
         "encoder_error_arcsec": _list(s.encoder_error_arcsec),
         "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None
         else _list(s.encoder_error_expanded_arcsec),
@@ -241,6 +268,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
             "encoder_error_without_them_arcsec": _list(s.encoder_error_determined_arcsec),
             "polygon_deviation_without_them_arcsec": _list(s.polygon_deviation_determined_arcsec)}
     else:
+        d = s.polygon_deviation_arcsec
+        out["polygon_deviation_from_face1_arcsec"] = _list(d - d[0])  # reference "face 1"
         out["polygon_deviation_U_from_face1_arcsec"] = _list(result.polygon_u_from_face1_arcsec())
         out["encoder_figures_arcsec"] = encoder_figures(result)
     return out
@@ -266,17 +295,13 @@ def summary(result: CrossCalResult) -> str:
                            ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
                            u=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\""))
     else:
-        out.append(message(QT_TR_NOOP("Encoder error NOT determined: harmonic(s) {orders} unseen "
-                                      "by this design"),
-                           orders=", ".join(map(str, s.undetermined_encoder_harmonics))))
+        out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
                            span=_span(s.polygon_deviation_arcsec),
                            u=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\""))
     else:
-        out.append(message(QT_TR_NOOP("Face deviations NOT determined: harmonic(s) {orders} "
-                                      "unseen by this design"),
-                           orders=", ".join(map(str, s.undetermined_polygon_harmonics))))
+        out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
     if closures.size:
         out.append(message(QT_TR_NOOP("Closures {count} of {mountings}: {low} … {high}; drift "
@@ -324,7 +349,26 @@ def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
     return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
 
 
-class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
+#: what the cross-calibration sends and the polygon workbench accepts
+POLYGON_FACE_DEVIATIONS = QT_TR_NOOP("polygon face deviations")
+
+
+def polygon_reference(result: CrossCalResult) -> SentReference:
+    """The polygon's face deviations from face 1 with the U of each (d_i − d_1, from the full
+    covariance), for the polygon workbench's reference column and its standard's U."""
+    polygon_deviation_rows(result)  # ValueError when the design does not determine them
+    d = result.solution.polygon_deviation_arcsec
+    u1 = result.polygon_u_from_face1_arcsec()
+    k = result.solution.coverage_factor
+    name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); its "
+                              "U is the largest U of d_i − d_1 over the faces, {u} (k = {k})"),
+                   faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}")
+    return SentReference(POLYGON_FACE_DEVIATIONS, {i + 1: float(d[i] - d[0]) for i in range(result.faces)},
+                         {i + 1: float(u1[i]) for i in range(result.faces)}, float(k), name)
+
+
+class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline,
+               SendsReference, GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -334,10 +378,18 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
                         "analysis for angle calibrations using circle closure, J. Res. NIST 103 "
                         "(1998) 141")
     presenter = "widgets.crosscal.presenter:CrossCalPresenter"
+    traceability_basis = QT_TR_NOOP(
+        "Metrological traceability: the results are traceable to the SI unit of plane angle "
+        "through the closure of the circle (2π rad, exact): the polygon and the encoder are "
+        "calibrated against each other by the closure principle; no reference standard is used.")
     nominal_column = "position"
     entry_column = "ac_x_arcsec"
+    reference_kind = POLYGON_FACE_DEVIATIONS
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
+    sent_reference = staticmethod(polygon_reference)
+    rows_from_table = staticmethod(matrix_rows)  # the n × n matrix labs write
+    acquisition_guide = staticmethod(crosscal_guide)
     summary = staticmethod(summary)
     verdict = staticmethod(verdict)
 

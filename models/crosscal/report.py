@@ -34,7 +34,12 @@ METHOD = QT_TR_NOOP(
     "plus the polygon's deviation at the face plus the mounting's offset (and drift); the faces "
     "of the polygon and the steps of a full turn each close at 360°, so both error sets are "
     "found together by least squares, without a calibrated polygon. Harmonics that the "
-    "mountings chosen cannot separate are named and not reported.")
+    "mountings chosen cannot separate are named and not reported. Each mounting ends with a "
+    "closure reading of its first face after the full turn: its change over the turn is the "
+    "mounting's drift, fitted or spread linearly over the mounting and removed, or reported, as "
+    "set. When vertical readings are given, the polygon's tilt on the shaft is fitted for each "
+    "mounting from them and its effect on the horizontal readings removed, in the frame the "
+    "autocollimator is set up in.")
 
 
 DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least squares and removed"),
@@ -43,7 +48,8 @@ DRIFT_WORDS = {"fit": QT_TR_NOOP("fitted linearly over each mounting by least sq
 
 
 def _per_point(result) -> tuple[np.ndarray, np.ndarray, str]:
-    """(values, u of one reading's scatter per point, what) of the certificate's item."""
+    """(values, u of one reading's scatter per point, what) of the certificate's item, each
+    about its mean over the n faces or steps (the budget's and the conformity's quantity)."""
     s = result.solution
     if result.certificate_of == "encoder":
         return s.encoder_error_arcsec, s.encoder_error_u_arcsec, "encoder"
@@ -146,6 +152,56 @@ def budget_remarks(result) -> tuple[str, ...]:
     return (joined((*parts, ".")),)
 
 
+def _budget_point(point: str, k: int, big_u: np.ndarray, item: str) -> str:
+    """Where the budget is shown: the point with the largest U, or any when U is the same at
+    every point (a full rosette)."""
+    if np.ptp(big_u) <= 1e-6 * max(float(np.max(big_u)), 1e-12):
+        return message(QT_TR_NOOP("{point} (U is the same at every step)") if item == "encoder"
+                       else QT_TR_NOOP("{point} (U is the same at every face)"),
+                       point=message(point, k=k))
+    return message(point, k=k)
+
+
+def _correlation_statement(result, item: str) -> str:
+    """The correlations within the certificate's set, as the covariance gives them: about the
+    mean and from the first point, and the largest U of a difference of two."""
+    n, s = result.faces, result.solution
+    block = s.covariance_arcsec2[:n, :n] if item == "encoder" else s.covariance_arcsec2[n:, n:]
+    off = ~np.eye(n, dtype=bool)
+
+    def mean_r(c: np.ndarray) -> float:
+        sd = np.sqrt(np.clip(np.diag(c), 1e-300, None))
+        return float(np.mean((c / np.outer(sd, sd))[~np.eye(len(c), dtype=bool)]))
+
+    first = block - block[:, :1] - block[:1, :] + block[0, 0]  # cov of x_i − x_1
+    pair = np.diag(block)[:, None] + np.diag(block)[None, :] - 2.0 * block
+    return message(QT_TR_NOOP("Within these results the values are correlated: about the mean "
+                              "r = {r_mean} on average between two of them (−1/(n − 1) = "
+                              "{r_full} for a full rosette); stated from {first} r = {r_first}. "
+                              "The U of the difference of any two, U(x_j − x_i), is at most "
+                              "{u_pair}."),
+                   r_mean=f"{mean_r(block):+.3f}", r_full=f"{-1.0 / (n - 1):+.3f}",
+                   first=message(QT_TR_NOOP("step 0") if item == "encoder"
+                                 else QT_TR_NOOP("face 1")),
+                   r_first=f"{mean_r(first[1:, 1:]):+.2f}",
+                   u_pair=f"{s.coverage_factor * np.sqrt(np.max(pair[off]) + _pair_systematic_u2(result, item)):.3f}\"")
+
+
+def _pair_systematic_u2(result, item: str) -> float:
+    """A bound on the squared standard uncertainty that the bench's stated bounds (scale,
+    unmeasured tilt; rectangular) add to the difference of two values of the set: the scale
+    effect's largest difference within the set, and twice the largest tilt effect."""
+    from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
+
+    n, s, r = result.faces, result.solution, result.readings
+    block = slice(0, n) if item == "encoder" else slice(n, 2 * n)
+    signed = s.gain[block] @ np.asarray(r.ac_x_arcsec, dtype=float)
+    scale = result.ac_scale_pct / 100.0 * float(np.ptp(signed))
+    tilt = 2.0 * float(np.max(tilt_effect_arcsec(s, r.mounting, r.position,
+                                                 result.tilt_bound_arcsec)[block]))
+    return (scale**2 + tilt**2) / 3.0
+
+
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
                          method_reference: str = "") -> CertificateDocument:
     s = result.solution
@@ -169,7 +225,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
               (QT_TR_NOOP("Closure drift"), DRIFT_WORDS[result.drift_mode], ""),
               (QT_TR_NOOP("Encoder"),
                QT_TR_NOOP("set to its nominal steps") if result.readings.nominal_encoder
-               else QT_TR_NOOP("read at each step"), ""),
+               else QT_TR_NOOP("read at each step"),
+               message(QT_TR_NOOP("start {start}; step k at start + k·{step}"),
+                       start=f"{result.encoder_start_deg:.4f}°", step=f"{360.0 / n:g}°")),
               (QT_TR_NOOP("Largest correlation encoder / polygon"),
                f"{result.cross_correlation():.2f}", "")]
     for q, j in enumerate(s.mountings):
@@ -180,15 +238,26 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"), ""), rows_p)
     if item == "encoder":
         first = result.step_deg
-        rows = [(f"{k}", f"{first[k]:.4f}", f"{values[k]:+.3f}", f"{big_u[k]:.3f}")
+        start = result.encoder_start_deg
+        reading = (start + first) % 360.0
+        u0 = result.encoder_u_from_step0_arcsec()
+        rows = [(f"{k}", f"{first[k]:.4f}", f"{reading[k]:.4f}", f"{values[k]:+.3f}",
+                 f"{big_u[k]:.3f}", f"{values[k] - values[0]:+.3f}", f"{u0[k]:.3f}")
                 for k in range(n)]
         results = Table(QT_TR_NOOP("Encoder error at its steps"),
                         (QT_TR_NOOP("Step"), QT_TR_NOOP("From the start (°)"),
-                         QT_TR_NOOP("Error (\")"), "U (\")"), rows,
-                        QT_TR_NOOP("Error = indicated − true angle, about its mean over the "
-                                   "full turn (the steps of a full turn close at 360°)."))
+                         QT_TR_NOOP("Encoder reading (°)"), QT_TR_NOOP("Error (\")"), "U (\")",
+                         QT_TR_NOOP("From step 0 (\")"), QT_TR_NOOP("U from step 0 (\")")), rows,
+                        QT_TR_NOOP("Error = indicated − true angle at each of the n steps, stated "
+                                   "about its mean over the n steps (the steps of a full turn close "
+                                   "at 360°), with its U; harmonics of order n and above are not "
+                                   "resolved (aliased). The last two columns state it from step 0 "
+                                   "(zero there), with their own U from the full covariance."))
         point_columns = (("step", np.arange(n, dtype=float)), ("step_deg", first),
-                         ("error_arcsec", values), ("expanded_uncertainty_arcsec", big_u))
+                         ("encoder_reading_deg", reading),
+                         ("error_arcsec", values), ("expanded_uncertainty_arcsec", big_u),
+                         ("error_from_step0_arcsec", values - values[0]),
+                         ("expanded_uncertainty_from_step0_arcsec", u0))
         point = QT_TR_NOOP("step {k}")
         names = [message(point, k=k) for k in range(n)]
         what = QT_TR_NOOP("encoder error")
@@ -219,9 +288,11 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                         (QT_TR_NOOP("Face"), QT_TR_NOOP("Nominal (°)"),
                          QT_TR_NOOP("Deviation (\")"), "U (\")", QT_TR_NOOP("From face 1 (\")"),
                          QT_TR_NOOP("U from face 1 (\")")), rows,
-                        QT_TR_NOOP("Deviation = the face's angle from face 1 minus its nominal, "
-                                   "stated about the mean over the faces (the faces close at "
-                                   "360°); the last two columns state it from face 1."))
+                        QT_TR_NOOP("Deviation d_i = the face's angle minus its nominal, stated "
+                                   "about the mean over the n faces (Σ d_i = 0: the faces close at "
+                                   "360°), with its U. The last two columns state it from face 1, "
+                                   "d_i − d_1 (zero there), with their own U from the full "
+                                   "covariance."))
         point_columns = (("face", np.arange(1, n + 1, dtype=float)),
                          ("nominal_deg", np.arange(n) * 360.0 / n), ("deviation_arcsec", values),
                          ("expanded_uncertainty_arcsec", big_u),
@@ -244,9 +315,14 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
     plots += [residual_figure(result), closure_figure(result)]
     worst = budget.worst_index
     statements = (
-        QT_TR_NOOP("No calibrated reference enters these results: the polygon and the encoder "
-                   "are calibrated against each other by the closure of the circle. The "
-                   "autocollimator reads near its null, where its scale error does not matter."),
+        message(QT_TR_NOOP("No calibrated reference value enters these results: the polygon and "
+                           "the encoder are calibrated against each other by the closure of the "
+                           "circle. The autocollimator is a comparator only; its readings span "
+                           "{low} … {high}, over which its scale error is an input of the "
+                           "uncertainty."),
+                low=f"{np.min(result.readings.ac_x_arcsec):+.1f}\"",
+                high=f"{np.max(result.readings.ac_x_arcsec):+.1f}\""),
+        _correlation_statement(result, item),
         message(QT_TR_NOOP("The {other} was calibrated in the same run; the largest correlation "
                            "between its results and these is {r}."),
                 other=message(QT_TR_NOOP("polygon") if item == "encoder"
@@ -256,7 +332,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
         method=METHOD, method_reference=method_reference, parameters=parameters,
         results=results, statistics=statistics, budget=budget,
-        budget_point=message(point, k=worst if item == "encoder" else worst + 1),
+        budget_point=_budget_point(point, worst if item == "encoder" else worst + 1, big_u, item),
         conformity=conformity, tolerance=tolerance,
         plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
         point_columns=point_columns, statements=statements + budget_remarks(result))

@@ -251,8 +251,8 @@ def _undetermined_text(n, mountings, bad_e, bad_d) -> Message:
     orders = sorted(set(bad_e) | set(bad_d))
     return message(QT_TR_NOOP("mountings {mountings} are all a multiple of {spacing} faces apart: "
                               "harmonic orders {orders} of the encoder's error and of the face "
-                              "deviations are not determined and are not reported; the figures "
-                              "shown hold the determined harmonics only"),
+                              "deviations are not determined: the encoder's errors and the face "
+                              "deviations are withheld (add a mounting that is not)"),
                    mountings=", ".join(map(str, mountings)), spacing=spacing,
                    orders=", ".join(map(str, orders)))
 

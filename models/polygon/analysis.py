@@ -37,6 +37,7 @@ from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
+    AcceptsReference,
     GuidesAcquisition,
     IssuesCertificates,
     OverlaysRuns,
@@ -577,7 +578,7 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
 
 
 class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
-              GuidesAcquisition):
+              GuidesAcquisition, AcceptsReference):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -589,6 +590,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     presenter = "widgets.polygon.presenter:PolygonPresenter"
     nominal_column = "position"
     entry_column = "encoder_deg"
+    accepted_reference = "polygon face deviations"  # its polygon_dev_arcsec column, from face 1
     analyze = staticmethod(analyze)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)

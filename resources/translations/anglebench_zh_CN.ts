@@ -6244,10 +6244,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{reason}；未作任何更改</translation>
     </message>
     <message>
-        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined and are not reported; the figures shown hold the determined harmonics only</source>
-        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定，不予报告；所示数值仅含已确定的谐波</translation>
-    </message>
-    <message>
         <source>the encoder&apos;s errors and the face deviations are correlated: |r| up to {r}; use the covariance given when combining them</source>
         <translation>编码器误差与各面偏差相关：|r| 最大 {r}；两者合用时请使用所给的协方差</translation>
     </message>
@@ -6385,10 +6381,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>多面棱体面数（= 编码器的步数）；0：按读数中的面数</translation>
     </message>
     <message>
-        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported.</source>
-        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。</translation>
-    </message>
-    <message>
         <source>Reading scatter through the design</source>
         <translation>读数分散性（经测量设计传递）</translation>
     </message>
@@ -6521,10 +6513,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>误差 (&quot;)</translation>
     </message>
     <message>
-        <source>Error = indicated − true angle, about its mean over the full turn (the steps of a full turn close at 360°).</source>
-        <translation>误差 = 示值 − 真角度，以整周平均值为零（整周各步在 360° 处封闭）。</translation>
-    </message>
-    <message>
         <source>step {k}</source>
         <translation>第 {k} 步</translation>
     </message>
@@ -6577,10 +6565,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>相对第 1 面的 U (&quot;)</translation>
     </message>
     <message>
-        <source>Deviation = the face&apos;s angle from face 1 minus its nominal, stated about the mean over the faces (the faces close at 360°); the last two columns state it from face 1.</source>
-        <translation>偏差 = 该面相对第 1 面的角度减去其标称值，以各面平均值为零（各面在 360° 处封闭）；最后两列给出相对第 1 面的值。</translation>
-    </message>
-    <message>
         <source>face {k}</source>
         <translation>第 {k} 面</translation>
     </message>
@@ -6599,10 +6583,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>faces</source>
         <translation>各面</translation>
-    </message>
-    <message>
-        <source>No calibrated reference enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator reads near its null, where its scale error does not matter.</source>
-        <translation>本结果未使用任何已校准的参考标准：多面棱体与编码器依圆周封闭原理相互校准。自准直仪在零位附近读数，其示值比例误差可忽略。</translation>
     </message>
     <message>
         <source>The {other} was calibrated in the same run; the largest correlation between its results and these is {r}.</source>
@@ -6698,16 +6678,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>编码器误差 {span}（峰峰值 {ptp}），U 最大 {u}</translation>
     </message>
     <message>
-        <source>Encoder error NOT determined: harmonic(s) {orders} unseen by this design</source>
-        <translation>编码器误差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
-    </message>
-    <message>
         <source>Face deviations {span} (about their mean), U up to {u}</source>
         <translation>面偏差 {span}（以平均值为零），U 最大 {u}</translation>
-    </message>
-    <message>
-        <source>Face deviations NOT determined: harmonic(s) {orders} unseen by this design</source>
-        <translation>面偏差未能确定：此测量设计看不到第 {orders} 次谐波</translation>
     </message>
     <message>
         <source>Closures {count} of {mountings}: {low} … {high}; drift removed</source>
@@ -6885,6 +6857,143 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the closure of the circle (2π rad, exact): the polygon and the encoder are calibrated against each other by the closure principle; no reference standard is used.</source>
+        <translation>计量溯源性：本结果经圆周封闭（2π rad，准确值）溯源至国际单位制平面角单位：多面棱体与编码器依圆周封闭原理相互校准，未使用任何计量标准。</translation>
+    </message>
+    <message>
+        <source>Reference from another workbench</source>
+        <translation>来自其他工作台的参考值</translation>
+    </message>
+    <message>
+        <source>{workbench} has no reference to send.</source>
+        <translation>{workbench}没有可发送的参考值。</translation>
+    </message>
+    <message>
+        <source>{workbench}: {cells} reference values sent to {target} with their U (largest u = {u}); Edit › Undo there restores the column</source>
+        <translation>{workbench}：{cells} 个参考值连同其 U 已发送至{target}（最大 u = {u}）；在该处用 编辑 › 撤销 可恢复该列</translation>
+    </message>
+    <message>
+        <source>Send as &amp;reference</source>
+        <translation>作为参考值发送(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Send this result to the workbench that reads with it as its reference, with its U (the polygon&apos;s face deviations from face 1 to the polygon workbench)</source>
+        <translation>将本结果连同其 U 作为参考值发送至使用它的工作台（多面棱体相对第 1 面的面偏差发送至多面棱体工作台）</translation>
+    </message>
+    <message>
+        <source>Polygon, {faces} faces, cross-calibrated (closure principle); its U is the largest U of d_i − d_1 over the faces, {u} (k = {k})</source>
+        <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；其 U 取各面 d_i − d_1 的最大 U，{u}（k = {k}）</translation>
+    </message>
+    <message>
+        <source>polygon face deviations</source>
+        <extracomment>what the cross-calibration sends and the polygon workbench accepts</extracomment>
+        <translation>多面棱体面偏差</translation>
+    </message>
+    <message>
+        <source>Paste {rows} row(s), replacing the sheet</source>
+        <translation>粘贴 {rows} 行，替换整个表格</translation>
+    </message>
+    <message>
+        <source>Cross-calibration by the closure principle: a polygon is fixed on the shaft of the encoder in several mountings (turned by j faces on the shaft) and in each mounting the shaft is turned from the same encoder reading through the encoder&apos;s n steps of 360°/n, an autocollimator reading each face in turn. Each reading is the encoder&apos;s error at its step plus the polygon&apos;s deviation at the face plus the mounting&apos;s offset (and drift); the faces of the polygon and the steps of a full turn each close at 360°, so both error sets are found together by least squares, without a calibrated polygon. Harmonics that the mountings chosen cannot separate are named and not reported. Each mounting ends with a closure reading of its first face after the full turn: its change over the turn is the mounting&apos;s drift, fitted or spread linearly over the mounting and removed, or reported, as set. When vertical readings are given, the polygon&apos;s tilt on the shaft is fitted for each mounting from them and its effect on the horizontal readings removed, in the frame the autocollimator is set up in.</source>
+        <translation>按圆周封闭原理互校：多面棱体以若干安装位置（在轴上转过 j 个面）固定在被检编码器的轴上，每个安装位置都从同一编码器读数起，将轴转过编码器的 n 步（每步 360°/n），由自准直仪依次读取各面。每个读数等于编码器在该步的误差加上该面的多面棱体偏差，再加上该安装位置的偏置（及漂移）；多面棱体各面与整周各步都在 360° 处封闭，故两组误差可由最小二乘一并求得，无需已校准的多面棱体。所选安装位置无法分离的谐波予以指明且不报告。每个安装位置在转满一周后以其第一面的闭合读数结束：其在一周内的变化即该安装位置的漂移，按设置在该安装位置内线性拟合或线性分配后扣除，或仅报告。给出竖直读数时，由其逐个安装位置拟合多面棱体在轴上的倾斜，并在自准直仪所设的坐标系中扣除其对水平读数的影响。</translation>
+    </message>
+    <message>
+        <source>Encoder reading (°)</source>
+        <translation>编码器读数 (°)</translation>
+    </message>
+    <message>
+        <source>From step 0 (&quot;)</source>
+        <translation>相对第 0 步 (&quot;)</translation>
+    </message>
+    <message>
+        <source>U from step 0 (&quot;)</source>
+        <translation>相对第 0 步的 U (&quot;)</translation>
+    </message>
+    <message>
+        <source>Error = indicated − true angle at each of the n steps, stated about its mean over the n steps (the steps of a full turn close at 360°), with its U; harmonics of order n and above are not resolved (aliased). The last two columns state it from step 0 (zero there), with their own U from the full covariance.</source>
+        <translation>误差 = 各步示值 − 真角度，以 n 步的平均值为零给出（整周各步在 360° 处封闭），并附其 U；n 阶及以上谐波无法分辨（混叠）。最后两列给出相对第 0 步的值（该步为零），并附由完整协方差求得的各自 U。</translation>
+    </message>
+    <message>
+        <source>Deviation d_i = the face&apos;s angle minus its nominal, stated about the mean over the n faces (Σ d_i = 0: the faces close at 360°), with its U. The last two columns state it from face 1, d_i − d_1 (zero there), with their own U from the full covariance.</source>
+        <translation>偏差 d_i = 该面角度减去其标称值，以 n 个面的平均值为零给出（Σ d_i = 0：各面在 360° 处封闭），并附其 U。最后两列给出相对第 1 面的值 d_i − d_1（该面为零），并附由完整协方差求得的各自 U。</translation>
+    </message>
+    <message>
+        <source>start {start}; step k at start + k·{step}</source>
+        <translation>起点 {start}；第 k 步位于起点 + k·{step}</translation>
+    </message>
+    <message>
+        <source>No calibrated reference value enters these results: the polygon and the encoder are calibrated against each other by the closure of the circle. The autocollimator is a comparator only; its readings span {low} … {high}, over which its scale error is an input of the uncertainty.</source>
+        <translation>本结果未使用任何已校准的参考值：多面棱体与编码器依圆周封闭原理相互校准。自准直仪仅作比较器；其读数范围为 {low} … {high}，其在此范围内的示值比例误差作为不确定度的输入量。</translation>
+    </message>
+    <message>
+        <source>Within these results the values are correlated: about the mean r = {r_mean} on average between two of them (−1/(n − 1) = {r_full} for a full rosette); stated from {first} r = {r_first}. The U of the difference of any two, U(x_j − x_i), is at most {u_pair}.</source>
+        <translation>本组结果的各值之间相关：以平均值为零时，任意两值的平均相关系数 r = {r_mean}（全循环测量为 −1/(n − 1) = {r_full}）；相对{first}给出时 r = {r_first}。任意两值之差的扩展不确定度 U(x_j − x_i) 不超过 {u_pair}。</translation>
+    </message>
+    <message>
+        <source>step 0</source>
+        <translation>第 0 步</translation>
+    </message>
+    <message>
+        <source>face 1</source>
+        <translation>第 1 面</translation>
+    </message>
+    <message>
+        <source>{point} (U is the same at every step)</source>
+        <translation>{point}（各步的 U 相同）</translation>
+    </message>
+    <message>
+        <source>{point} (U is the same at every face)</source>
+        <translation>{point}（各面的 U 相同）</translation>
+    </message>
+    <message>
+        <source>The instruments listed are comparators only; their calibration enters the uncertainty, not the reference: {names}.</source>
+        <translation>所列仪器仅作比较器，其校准进入不确定度，而不作为参考：{names}。</translation>
+    </message>
+    <message>
+        <source>{standard} (comparator)</source>
+        <translation>{standard}（比较器）</translation>
+    </message>
+    <message>
+        <source>mountings {mountings} are all a multiple of {spacing} faces apart: harmonic orders {orders} of the encoder&apos;s error and of the face deviations are not determined: the encoder&apos;s errors and the face deviations are withheld (add a mounting that is not)</source>
+        <translation>安装位置 {mountings} 彼此相隔均为 {spacing} 个面的整数倍：编码器误差和各面偏差的 {orders} 次谐波无法确定：编码器误差与各面偏差均不予给出（请增加一个不满足此条件的安装位置）</translation>
+    </message>
+    <message>
+        <source>Encoder error NOT determined (withheld)</source>
+        <translation>编码器误差未能确定（不予给出）</translation>
+    </message>
+    <message>
+        <source>Face deviations NOT determined (withheld)</source>
+        <translation>面偏差未能确定（不予给出）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to face {face} (the encoder&apos;s start)</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面（编码器起点）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to the next face, or back to face {face} for its closure</source>
+        <translation>安装位置 {mounting}：转到下一面，或回到第 {face} 面读取闭合</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to face {face}</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go to face {face} (encoder ≈ {encoder}°)</source>
+        <translation>安装位置 {mounting}：转到第 {face} 面（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: go back to face {face} for its closure</source>
+        <translation>安装位置 {mounting}：回到第 {face} 面读取闭合</translation>
+    </message>
+    <message>
+        <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start</source>
+        <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点</translation>
+    </message>
+    <message>
+        <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start (encoder ≈ {encoder}°)</source>
+        <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点（编码器 ≈ {encoder}°）</translation>
     </message>
 </context>
 </TS>

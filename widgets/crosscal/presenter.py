@@ -5,8 +5,6 @@ from __future__ import annotations
 
 from models.crosscal import plots
 from models.crosscal.analysis import CROSSCAL, CrossCalResult
-from models.crosscal.readings import matrix_rows
-from models.readings.tabular_import import MissingColumnError
 from widgets.crosscal.view import CrossCalView
 from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -32,12 +30,6 @@ class CrossCalPresenter(WorkbenchPresenter):
         self.table_model.set_highlight_rows(set())
         self.view.clear_result()
         self.view.set_reference_enabled(False)
-
-    def _rows_by_mapping(self, exc: MissingColumnError) -> list[list[str]] | None:
-        """A file whose headers name no column: the n × n matrix labs write (rows mountings,
-        columns positions) is taken as it is; anything else goes to the column mapping."""
-        rows = matrix_rows(exc.table)
-        return rows if rows is not None else super()._rows_by_mapping(exc)
 
     def save_polygon_reference_dialog(self) -> str:
         if self.result is None:

@@ -8,7 +8,7 @@ from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import PolygonResult
 from models.readings.tabular_import import TableImportError
-from widgets.i18n import explained, tr
+from widgets.i18n import declared, explained, tr
 from widgets.polygon.view import PolygonView
 from widgets.workbench_presenter import WorkbenchPresenter
 
@@ -42,7 +42,32 @@ class PolygonPresenter(WorkbenchPresenter):
 
         Raises TableImportError for a bad file and when a position has no deviation.
         """
-        deviations = read_polygon_certificate(path)
+        return self._fill_deviations(read_polygon_certificate(path), tr("Load polygon certificate"),
+                                     str(path))
+
+    def accept_reference(self, reference) -> int:
+        """The face deviations another workbench sends (models.workbench.SentReference, from
+        face 1) in the deviation column by position, one undo step; an empty table gets a row
+        per face. ValueError, nothing changed, when a position has none."""
+        label = tr("Reference from another workbench")
+        if not any(self.sheet.text(r, self.sheet.column_index("position")).strip()
+                   for r in range(self.sheet.row_count)):
+            column = self.sheet.column_index("polygon_dev_arcsec")
+            rows = []
+            for position, value in sorted(reference.values.items()):
+                row = [""] * self.sheet.column_count
+                row[self.sheet.column_index("position")] = str(position)
+                row[column] = f"{value:.6f}"
+                rows.append(row)
+            self.table_model.replace_all(rows, label)
+            return len(rows)
+        try:
+            return self._fill_deviations(reference.values, label, declared(reference.kind), ".6f")
+        except TableImportError as exc:
+            raise ValueError(str(exc)) from None
+
+    def _fill_deviations(self, deviations: dict[int, float], label: str, path: str,
+                         spec: str = "g") -> int:
         column = self.sheet.column_index("polygon_dev_arcsec")
         position_column = self.sheet.column_index("position")
         changes = []
@@ -58,8 +83,8 @@ class PolygonPresenter(WorkbenchPresenter):
                 raise TableImportError(message(QT_TR_NOOP(
                     "{path}: no deviation for position {position} (row {row} of the readings)"),
                     path=str(path), position=position, row=row + 1))
-            changes.append((row, column, f"{deviations[position]:g}"))
-        self.table_model.set_cells(changes, tr("Load polygon certificate"))
+            changes.append((row, column, format(deviations[position], spec)))
+        self.table_model.set_cells(changes, label)
         return len(changes)
 
     def clear_result(self) -> None:

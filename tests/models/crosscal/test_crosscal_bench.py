@@ -244,8 +244,9 @@ def test_unseen_harmonics_are_named_in_a_warning():
     assert result.encoder_error_arcsec is None and result.polygon_deviation_arcsec is None
     assert result.undetermined_text == ("mountings 0, 4, 8 are all a multiple of 4 faces apart: "
                                         "harmonic orders 3, 6 of the encoder's error and of the face "
-                                        "deviations are not determined and are not reported; the "
-                                        "figures shown hold the determined harmonics only")
+                                        "deviations are not determined: the encoder's errors and "
+                                        "the face deviations are withheld (add a mounting that is "
+                                        "not)")
     assert result.undetermined_text in result.warnings
 
 

@@ -5,6 +5,7 @@ pasting readings."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import subprocess
 from unittest import mock
@@ -197,6 +198,92 @@ def test_the_polygon_workbench_takes_the_deviations(qtbot, tmp_path, samples_dir
     assert u[0] == 0.0 and np.all(u[1:] > 0) and u.max() < 0.05
 
 
+def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
+    """The 3-D bench of tests/crosscal_simulator.py (its own rotations), 12 faces, a partial
+    rosette, σ = 0.05″ stated: the JSON's face deviations about their mean and from face 1,
+    and the encoder's errors about their mean, each inside its own U in 95 % of the cases;
+    the U from face 1 (from the full covariance) is not the U about the mean, and the polygon
+    certificate states both, each with its own U."""
+    from models.certificate.metadata import CertificateMetadata
+    from tests.crosscal_simulator import Bench
+
+    n, trials, sigma = 12, 150, 0.05
+    settings = {**KIND.default_settings, "noise_arcsec": sigma}
+    inside = {"mean": [], "face 1": [], "encoder": []}
+    for seed in range(trials):
+        rng = np.random.default_rng(seed)
+        bench = Bench(n, {1: (1.5, 0.3), 2: (0.6, 1.0), 5: (0.2, 0.4)}, rng.normal(0, 1.0, n),
+                      noise_arcsec=sigma, rng=rng)
+        rows = [[str(j), str(i), f"{a:.10f}", f"{x:.6f}", ""]
+                for j, i, a, x in bench.rows([0, 1, 5])]
+        result = KIND.analyze(parse(rows), settings)
+        data = json.loads(json.dumps(KIND.to_json(result)))
+        true_e, true_d = bench.truth()
+        assert data["polygon_deviation_reference"] == "mean"
+        assert data["encoder_error_reference"] == "mean"
+        d, u = np.array(data["polygon_deviation_arcsec"]), np.array(data["polygon_deviation_U_arcsec"])
+        d1 = np.array(data["polygon_deviation_from_face1_arcsec"])
+        u1 = np.array(data["polygon_deviation_U_from_face1_arcsec"])
+        e, ue = np.array(data["encoder_error_arcsec"]), np.array(data["encoder_error_U_arcsec"])
+        assert abs(d.sum()) < 1e-9 and abs(e.sum()) < 1e-9 and d1[0] == 0.0 and u1[0] == 0.0
+        inside["mean"] += list(np.abs(d - true_d) <= u)
+        inside["face 1"] += list(np.abs(d1 - (true_d - true_d[0]))[1:] <= u1[1:])
+        inside["encoder"] += list(np.abs(e - true_e) <= ue)
+    for key, hits in inside.items():
+        assert 0.93 <= np.mean(hits) <= 0.97, (key, np.mean(hits))
+    # the two references carry different U: the mean's would be wrong from face 1
+    assert np.max(np.abs(u1[1:] / u[1:] - 1.0)) > 0.1
+    meta = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": "Lab"})
+    document = KIND.certificate_document(result, meta, "x.csv", settings)
+    table = np.array([[float(c) for c in row] for row in document.results.rows])
+    np.testing.assert_allclose(table[:, 2], d, atol=6e-4)  # d_i about the mean, its U
+    np.testing.assert_allclose(table[:, 3], u, atol=6e-4)
+    np.testing.assert_allclose(table[:, 4], d1, atol=6e-4)  # d_i − d_1, its own U
+    np.testing.assert_allclose(table[:, 5], u1, atol=6e-4)
+    assert "From face 1" in document.results.header[4] and "about the mean" in document.results.note
+    np.testing.assert_allclose(document.budget.expanded, u, rtol=1e-9, atol=1e-12)
+
+
+def test_the_face_deviations_are_sent_to_the_polygon_workbench_with_their_u(window, samples_dir):
+    """Window: the crosscal sample analysed, File › Send as reference; the polygon workbench's
+    reference column is d_i − d_1 (1e-6″), its standard's U the largest of d_i − d_1, stated
+    from face 1; a second send replaces it; Undo there restores the column."""
+    from app.reference_sender import send_reference
+
+    crosscal, polygon = window.presenter("crosscal"), window.presenter("polygon")
+    crosscal.load_sample()
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert crosscal.result is not None and window.menus.send_reference_action.isEnabled()
+    window.tabs.setCurrentIndex(window.presenters.index(polygon))
+    assert not window.menus.send_reference_action.isEnabled()  # nothing to send from there
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert send_reference(window) and window.current is polygon, window.told
+    d = crosscal.result.solution.polygon_deviation_arcsec
+    n = crosscal.result.faces
+    column = polygon.sheet.column_index("polygon_dev_arcsec")
+    assert polygon.sheet.row_count == n  # an empty table: a row per face
+    got = np.array([float(polygon.sheet.text(r, column)) for r in range(n)])
+    np.testing.assert_allclose(got, d - d[0], atol=1e-6)
+    assert [int(polygon.sheet.text(r, 0)) for r in range(n)] == list(range(1, n + 1))
+    u1 = crosscal.result.polygon_u_from_face1_arcsec()
+    k = crosscal.result.solution.coverage_factor
+    (standard,) = [s for s in window.certificates.details("polygon").standards
+                   if s.applies_to == "from face 1"]
+    assert standard.basis == "u" and standard.uncertainty == pytest.approx(u1.max() / k, abs=1e-6)
+    assert "largest U of d_i − d_1" in standard.description and f"{u1.max():.4f}" in standard.description
+    assert 0.0 < u1.max() < 0.05 and u1[0] == 0.0
+    # into a table with readings: by position, one undo step; sent again: one standard
+    polygon.table_model.set_cells([(r, column, "9") for r in range(n)], "typed")
+    window.tabs.setCurrentIndex(window.presenters.index(crosscal))
+    assert send_reference(window)
+    got = np.array([float(polygon.sheet.text(r, column)) for r in range(n)])
+    np.testing.assert_allclose(got, d - d[0], atol=1e-6)
+    assert len([s for s in window.certificates.details("polygon").standards
+                if s.applies_to == "from face 1"]) == 1
+    polygon.table_model.undo_stack.undo()
+    assert polygon.sheet.text(3, column) == "9"
+
+
 def _sample_rows(samples_dir):
     from models.readings.tabular_import import map_columns
 
@@ -223,12 +310,41 @@ def test_certificates_in_three_languages_have_every_glyph(tmp_path, samples_dir,
                               check=True)
         assert "No font" not in text.stderr + text.stdout
         body = text.stdout
+        flat = "".join(body.split())
+        # traceable through the closure of the circle, never "not established"
+        if language == "zh":
+            assert "经圆周封闭（2πrad，准确值）溯源至国际单位制平面角单位" in flat
+            assert "依圆周封闭原理相互校准" in flat and "本文件未建立" not in flat
+        else:
+            assert "throughtheclosureofthecircle(2πrad,exact)" in flat
+            assert "bytheclosureprinciple" in flat and "notestablished" not in flat
         if item == "encoder":
             assert ("JJF 1115" in body) and ("ISO 230-2" in body)
             assert ("Encoder error at its steps" in body) or ("编码器各步误差" in body)
             assert "RX-26" in body and "P12" not in body.split("RX-26")[0]  # the encoder's details
         else:
             assert ("Face deviations" in body) or ("面偏差" in body)
+
+
+def test_only_crosscal_states_its_own_traceability_basis(samples_dir):
+    from app.writers.certificate_pdf import _traceability
+    from models.certificate.metadata import CertificateMetadata
+    from models.workbench import IssuesCertificates
+
+    details = json.loads((samples_dir / "certificate_crosscal.json").read_text("utf-8"))
+    details.pop("example", None)
+    meta = CertificateMetadata.from_dict({**details, "standards": []})
+    result = KIND.analyze(parse(_sample_rows(samples_dir)), KIND.default_settings)
+    document = KIND.certificate_document(result, meta, "x.csv", KIND.default_settings)
+    assert document.traceability_basis == KIND.traceability_basis
+    text = _traceability(document)
+    assert text.startswith("Metrological traceability: the results are traceable to the SI")
+    assert "closure principle" in text and "not established" not in text
+    # the other workbenches keep the shared wording: through the standards listed
+    others = [k for k in KINDS.values() if isinstance(k, IssuesCertificates) and k is not KIND]
+    assert len(others) >= 4 and all(k.traceability_basis is None for k in others)
+    plain = dataclasses.replace(document, traceability_basis="")
+    assert "not established on this document" in _traceability(plain)
 
 
 # -- the presenter on a mock view -----------------------------------------------------------
@@ -316,6 +432,73 @@ def test_pasted_readings_are_drawn(qtbot, samples_dir):
     assert presenter.view.reference_button.isEnabled()
 
 
+def _matrix_and_long(n: int, seed: int) -> tuple[list[str], list[str]]:
+    """The same readings as the n × n matrix labs write and as rows of the columns
+    (encoder blank: set to its steps; face j + 1 first in mounting j, the closure last)."""
+    ac = np.round(np.random.default_rng(seed).normal(0, 5, (n, n + 1)), 3)
+    matrix = ["mounting," + ",".join(str(i) for i in range(1, n + 1)) + ",closure"]
+    matrix += [f"{j}," + ",".join(f"{v:.3f}" for v in ac[j]) for j in range(n)]
+    long = ["mounting,position,encoder_deg,ac_x_arcsec"]
+    for j in range(n):
+        long += [f"{j},{(j + k) % n + 1},,{ac[j, (j + k) % n]:.3f}" for k in range(n)]
+        long.append(f"{j},{j + 1},,{ac[j, n]:.3f}")
+    return matrix, long
+
+
+def test_the_command_line_reads_the_matrix(tmp_path, capsys):
+    """`anglebench analyze crosscal MATRIX.csv --json` gives what the same readings written
+    as rows give; a bad cell of the matrix is refused, not a crash."""
+    n = 7
+    matrix, long = _matrix_and_long(n, 11)
+    (tmp_path / "matrix.csv").write_text("\n".join(matrix) + "\n", encoding="utf-8")
+    (tmp_path / "long.csv").write_text("\n".join(long) + "\n", encoding="utf-8")
+    got = {}
+    for name in ("matrix", "long"):
+        code = main(["analyze", "crosscal", str(tmp_path / f"{name}.csv"), "--json"])
+        out, err = capsys.readouterr()
+        assert code == 0, err
+        got[name] = json.loads(out)
+    a, b = got["matrix"], got["long"]
+    assert a["faces"] == n and a["mountings"] == list(range(n)) and a["nominal_encoder_steps"]
+    for key in ("encoder_error_arcsec", "encoder_error_U_arcsec", "polygon_deviation_arcsec",
+                "polygon_deviation_U_arcsec", "closure_arcsec"):
+        np.testing.assert_allclose(a[key], b[key], rtol=0, atol=1e-12)
+    assert np.ptp(a["polygon_deviation_arcsec"]) > 1.0  # real figures, not zeros
+    cells = matrix[3].split(",")
+    cells[4] = "1.2.3"
+    matrix[3] = ",".join(cells)
+    (tmp_path / "bad.csv").write_text("\n".join(matrix) + "\n", encoding="utf-8")
+    code = main(["analyze", "crosscal", str(tmp_path / "bad.csv"), "--json"])
+    out, err = capsys.readouterr()
+    assert code != 0 and "ac_x_arcsec" in err and "row" in err and not out
+
+
+def test_a_pasted_matrix_is_unrolled_into_the_readings(qtbot, tmp_path):
+    n = 6
+    matrix, long = _matrix_and_long(n, 5)
+    presenter = CrossCalPresenter()
+    qtbot.addWidget(presenter.view)
+    QGuiApplication.clipboard().setText("\n".join(line.replace(",", "\t") for line in matrix))
+    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 0))
+    presenter.view.table.paste_action.trigger()
+    qtbot.waitUntil(lambda: presenter.result is not None)
+    assert presenter.sheet.row_count == n * (n + 1)
+    (tmp_path / "long.csv").write_text("\n".join(long) + "\n", encoding="utf-8")
+    expected = KIND.analyze(parse(_rows_of(tmp_path / "long.csv")), KIND.default_settings)
+    np.testing.assert_allclose(presenter.result.solution.polygon_deviation_arcsec,
+                               expected.solution.polygon_deviation_arcsec, atol=1e-12)
+    np.testing.assert_allclose(presenter.result.solution.encoder_error_arcsec,
+                               expected.solution.encoder_error_arcsec, atol=1e-12)
+    presenter.undo_stack.undo()  # one undo step restores the empty sheet
+    assert not any(presenter.sheet.text(r, 3) for r in range(presenter.sheet.row_count))
+
+
+def _rows_of(path):
+    from models.readings.tabular_import import map_columns
+
+    return map_columns(read_table(path), COLUMNS)
+
+
 @settings(max_examples=40, deadline=None)
 @given(st.integers(3, 12), st.booleans(), st.integers(0, 2**32 - 1))
 def test_a_matrix_becomes_each_mounting_from_its_first_step(n, closure, seed):
@@ -396,3 +579,32 @@ def test_vertical_readings_correct_each_mountings_tilt_in_the_frame_set():
     assert error < 0.01 < blind_error
     assert np.max(np.abs(tilted.solution.polygon_deviation_arcsec - d)) < 0.01
     assert not any("not used by this version" in w for w in tilted.warnings)
+
+
+# -- guided acquisition -----------------------------------------------------------------------
+@pytest.mark.parametrize("told", [12, 0])
+def test_the_guide_says_each_next_face_and_its_encoder_reading_through_the_sample(samples_dir,
+                                                                                 told):
+    """Replaying the sample (12 mountings of 12 faces and a closure each): before every row
+    the guide names that row's mounting and face, and the encoder reading it roughly shows
+    (start + k·30°) — with *faces* 0, once the first mounting has closed."""
+    rows = [dict(zip([c.key for c in COLUMNS], r, strict=False)) for r in _sample_rows(samples_dir)]
+    settings = {**KIND.default_settings, "faces": told}
+    said = 0
+    for i, row in enumerate(rows):
+        guide = KIND.acquisition_guide(rows[:i], {}, settings)
+        if told or i > 13:
+            assert guide.fill == {"mounting": row["mounting"], "position": row["position"]}, i
+        else:  # the first mounting of an unknown face count: its faces are not guessed
+            assert guide.fill == {"mounting": "0"} or i == 0, (i, guide)
+        text = str(guide.text)
+        if "≈ " in text:
+            shown = float(text.split("≈ ")[1].split("°")[0])
+            wrapped = abs((shown - float(row["encoder_deg"]) + 180.0) % 360.0 - 180.0)
+            assert wrapped <= 0.05 + 20 / 3600, (i, text, row)
+            said += 1
+    assert said >= 12 * 11 - (0 if told else 13)
+    assert str(KIND.acquisition_guide(rows[:25], {}, settings).text) == (
+        "mounting 1: go back to face 2 for its closure")
+    assert str(KIND.acquisition_guide([], {}, settings).text) == (
+        "mounting 0: go to face 1 (the encoder's start)")

@@ -1,0 +1,66 @@
+"""Sending a workbench's result to another as its reference standard (File › Send as
+reference): the cross-calibration's polygon face deviations, from face 1 with their U, into
+the polygon workbench's reference column, and the polygon's U into its certificate details.
+
+The sender and the receiver are found by capability (models.workbench.SendsReference /
+AcceptsReference, matched by the kind of reference), never by key."""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+from models.certificate.metadata import ReferenceStandard
+from models.workbench import AcceptsReference, SendsReference
+from widgets.i18n import declared, explained, tr, translated
+
+__all__ = ["receiver_of", "send_reference"]
+
+
+def receiver_of(window: Any, source: Any) -> Any:
+    """The presenter whose workbench accepts what ``source``'s sends (None: none)."""
+    if not isinstance(source.kind, SendsReference):
+        return None
+    return next((p for p in window.presenters if p is not source
+                 and isinstance(p.kind, AcceptsReference)
+                 and p.kind.accepted_reference == source.kind.reference_kind), None)
+
+
+def send_reference(window: Any) -> bool:
+    """The current workbench's reference into the workbench that accepts it (one undo step
+    there), its largest U as the reference standard's (stated from face 1) in that
+    workbench's certificate details, replacing one sent before."""
+    source = window.current
+    target = receiver_of(window, source)
+    if target is None:
+        window.tell(tr("Cannot send"), tr("{workbench} has no reference to send.").format(
+            workbench=declared(source.kind.title)))
+        return False
+    if source.result is None:
+        problem = source.problem or tr("no readings have been analysed yet")
+        window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
+        return False
+    try:
+        reference = source.kind.sent_reference(source.result)
+        cells = target.accept_reference(reference)
+    except ValueError as exc:
+        window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {explained(exc)}")
+        return False
+    # the budget takes one figure per standard: the largest standard u of d_i − d_1, stated so
+    standard = ReferenceStandard(description=translated(reference.standard_name),
+                                 uncertainty=round(reference.largest_standard_uncertainty, 6),
+                                 basis="u", applies_to="from face 1",
+                                 uncertainty_unit=reference.unit)
+    meta = window.certificates.details(target.kind.key)
+    kept = tuple(s for s in meta.standards if s.applies_to != "from face 1")
+    window.certificates.store_details(target.kind.key,
+                                      dataclasses.replace(meta, standards=(*kept, standard)))
+    target.refresh()
+    window.tabs.setCurrentIndex(window.presenters.index(target))
+    window.statusBar().showMessage(
+        tr("{workbench}: {cells} reference values sent to {target} with their U (largest "
+           "u = {u}); Edit › Undo there restores the column").format(
+            workbench=declared(source.kind.title), cells=cells,
+            target=declared(target.kind.title),
+            u=f"{reference.largest_standard_uncertainty:.4f}\""), 8000)
+    return True
