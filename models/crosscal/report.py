@@ -175,6 +175,7 @@ def _correlation_statement(result, item: str) -> str:
 
     first = block - block[:, :1] - block[:1, :] + block[0, 0]  # cov of x_i − x_1
     pair = np.diag(block)[:, None] + np.diag(block)[None, :] - 2.0 * block
+    u2_pair = float(np.max(pair[off])) + _pair_systematic_u2(result, item)
     return message(QT_TR_NOOP("Within these results the values are correlated: about the mean "
                               "r = {r_mean} on average between two of them (−1/(n − 1) = "
                               "{r_full} for a full rosette); stated from {first} r = {r_first}. "
@@ -184,14 +185,14 @@ def _correlation_statement(result, item: str) -> str:
                    first=message(QT_TR_NOOP("step 0") if item == "encoder"
                                  else QT_TR_NOOP("face 1")),
                    r_first=f"{mean_r(first[1:, 1:]):+.2f}",
-                   u_pair=f"{s.coverage_factor * np.sqrt(np.max(pair[off]) + _pair_systematic_u2(result, item)):.3f}\"")
+                   u_pair=f"{s.coverage_factor * np.sqrt(u2_pair):.3f}\"")
 
 
 def _pair_systematic_u2(result, item: str) -> float:
     """A bound on the squared standard uncertainty that the bench's stated bounds (scale,
     unmeasured tilt; rectangular) add to the difference of two values of the set: the scale
     effect's largest difference within the set, and twice the largest tilt effect."""
-    from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
+    from models.crosscal.uncertainty import tilt_effect_arcsec
 
     n, s, r = result.faces, result.solution, result.readings
     block = slice(0, n) if item == "encoder" else slice(n, 2 * n)
