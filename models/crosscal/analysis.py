@@ -7,6 +7,7 @@ models/registry.py.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -153,6 +154,22 @@ class CrossCalResult:
         scatter's (k from its ν) with the bench's stated bounds through the design."""
         return self.solution.coverage_factor * self._u_from_first(1)
 
+    @functools.cached_property
+    def expanded_u_arcsec(self) -> tuple[np.ndarray, np.ndarray]:
+        """(U of E, U of d) about their mean as the certificates state them: the reading
+        scatter through the design with the bench's stated bounds (scale, unmeasured tilt), k
+        from each value's ν_eff (models.crosscal.report.crosscal_budget, without the item's
+        resolution, which only the certificate details give)."""
+        import dataclasses
+
+        from models.certificate.metadata import CertificateMetadata
+        from models.crosscal.report import crosscal_budget
+
+        details = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
+        e, d = (crosscal_budget(dataclasses.replace(self, certificate_of=item), details).expanded
+                for item in ("encoder", "polygon"))
+        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
         bounds (the autocollimator's scale error; the tilt when not measured), each
@@ -233,6 +250,7 @@ def encoder_figures(result: CrossCalResult) -> dict[str, float]:
 
 def to_json(result: CrossCalResult) -> dict[str, Any]:
     s = result.solution
+    u_e, u_d = result.expanded_u_arcsec if s.separable else (None, None)
     out: dict[str, Any] = {
         "faces": s.faces,
         "mountings": list(s.mountings),
@@ -240,11 +258,9 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "encoder_error_reference": "mean",
         "polygon_deviation_reference": "mean",
         "encoder_error_arcsec": _list(s.encoder_error_arcsec),
-        "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None
-        else _list(s.encoder_error_expanded_arcsec),
+        "encoder_error_U_arcsec": None if s.encoder_error_arcsec is None else _list(u_e),
         "polygon_deviation_arcsec": _list(s.polygon_deviation_arcsec),
-        "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None
-        else _list(s.polygon_deviation_expanded_arcsec),
+        "polygon_deviation_U_arcsec": None if s.polygon_deviation_arcsec is None else _list(u_d),
         "coverage_factor": s.coverage_factor,
         "sigma_arcsec": s.sigma_arcsec,
         "dof": s.dof,
@@ -293,13 +309,13 @@ def summary(result: CrossCalResult) -> str:
         out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
                            span=_span(s.encoder_error_arcsec),
                            ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                           u=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\""))
+                           u=f"{np.max(result.expanded_u_arcsec[0]):.3f}\""))
     else:
         out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
                            span=_span(s.polygon_deviation_arcsec),
-                           u=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\""))
+                           u=f"{np.max(result.expanded_u_arcsec[1]):.3f}\""))
     else:
         out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
@@ -332,10 +348,10 @@ def verdict(result: CrossCalResult) -> str:
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
                    ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                   ue=f"{np.max(s.encoder_error_expanded_arcsec):.3f}\"",
+                   ue=f"{np.max(result.expanded_u_arcsec[0]):.3f}\"",
                    low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
                    high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
-                   ud=f"{np.max(s.polygon_deviation_expanded_arcsec):.3f}\"")
+                   ud=f"{np.max(result.expanded_u_arcsec[1]):.3f}\"")
 
 
 def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:

@@ -24,7 +24,7 @@ def encoder_figure(result) -> PlotFigure | None:
     return PlotFigure(QT_TR_NOOP("Encoder error at its steps with U"), QT_TR_NOOP("encoder step (°)"),
                       QT_TR_NOOP("error (\")"), (
         PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg, s.encoder_error_arcsec, BLUE,
-                   True, band=s.encoder_error_expanded_arcsec, role="corrected"),))
+                   True, band=result.expanded_u_arcsec[0], role="corrected"),))
 
 
 def polygon_figure(result) -> PlotFigure | None:
@@ -35,7 +35,7 @@ def polygon_figure(result) -> PlotFigure | None:
     return PlotFigure(QT_TR_NOOP("Polygon face deviations with U"), QT_TR_NOOP("face"),
                       QT_TR_NOOP("deviation (\")"), (
         PlotSeries(QT_TR_NOOP("face deviation ± U"), faces, s.polygon_deviation_arcsec, GREEN, True,
-                   band=s.polygon_deviation_expanded_arcsec, role="corrected"),))
+                   band=result.expanded_u_arcsec[1], role="corrected"),))
 
 
 def residual_figure(result) -> PlotFigure:
