@@ -45,6 +45,10 @@ def test_an_autocollimator_stream_is_read_frame_for_frame(transport):
         worker = CaptureWorker(sim.port, Autocollimator(), **FAST).start()
         readings, faults = collect(worker, 100)
         worker.stop()
+        # the simulator reads the stop command on its own thread: wait for it (up to 5 s)
+        deadline = time.monotonic() + 5.0
+        while (not sim.received or sim.received[-1] != b"s") and time.monotonic() < deadline:
+            time.sleep(0.01)
     assert not faults and len(readings) == 100
     sent = [(round(x, 3), round(y, 3)) for x, y in sim.sent[:100]]
     assert [r.values for r in readings] == sent
