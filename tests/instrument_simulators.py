@@ -12,6 +12,11 @@ GeoCOM's return code 1284, a readout's error line), ``silence`` (never answers),
 accepted; on a pty, as with a pulled cable, nothing goes either way for ``gap_s``),
 ``wrong_baud`` (what a link at the wrong speed delivers: only garbage bytes).
 
+A slow instrument (``reply_delay_s``) works through the requests it receives one after
+the other, each taking that long, and answers each with the position at the moment it
+answers; ``max_pending`` records the most requests it held unanswered at once (a client
+that keeps one request in flight never makes it more than 1).
+
 The instrument's position is a script: ``positions`` each held ``hold_s`` seconds, with
 Gaussian noise of ``sigma`` (arcsec, or the readout's unit) on every frame.
 ``sent`` records every measurement frame written whole (value, or None for an
@@ -40,13 +45,16 @@ class _Simulator:
     def __init__(self, transport: str = "pty", faults: tuple[str, ...] = (),
                  positions=((0.0, 0.0),), hold_s: float = 1e9, sigma: float = 0.0,
                  disconnect_after: int = 5, gap_s: float = 0.3, rate_hz: float = 250.0,
-                 seed: int = 34, disconnect_every: int = 0) -> None:
+                 seed: int = 34, disconnect_every: int = 0, reply_delay_s: float = 0.0) -> None:
         self.transport, self.faults = transport, set(faults)
         self.positions, self.hold_s, self.sigma = list(positions), hold_s, sigma
         self.disconnect_after, self.gap_s, self.rate_hz = disconnect_after, gap_s, rate_hz
         #: with ``disconnect``: drop the link again every this many frames (0: once)
         self.disconnect_every = disconnect_every
         self.cuts = 0
+        #: seconds each request takes to answer; requests wait their turn
+        self.reply_delay_s = reply_delay_s
+        self.max_pending = 0
         self.rng = random.Random(seed)
         self.sent: list = []
         self.received: list[bytes] = []
@@ -101,7 +109,13 @@ class _Simulator:
         """Until stopped, or (TCP) until the link drops."""
         pending = b""
         next_frame = time.monotonic()
+        queued: list[tuple[float, bytes]] = []  # (when it is answered, the request)
         while not self._stop.is_set():
+            while queued and time.monotonic() >= queued[0][0]:
+                _, one = queued.pop(0)
+                for reply in self.answer(one):
+                    if not self._write(link, write, reply):
+                        return
             ready, _, _ = select.select([link], [], [], 0.002)
             if ready:
                 try:
@@ -116,6 +130,12 @@ class _Simulator:
                     self.received.append(one)
                     if "silence" in self.faults or self._gap():
                         continue
+                    if self.reply_delay_s > 0:
+                        start = max([time.monotonic()] + [due for due, _ in queued[-1:]])
+                        queued.append((start + self.reply_delay_s, one))
+                        self.max_pending = max(self.max_pending, len(queued))
+                        continue
+                    self.max_pending = max(self.max_pending, 1)
                     for reply in self.answer(one):
                         if not self._write(link, write, reply):
                             return
@@ -175,10 +195,16 @@ class _Simulator:
 
 
 class AutocollimatorSimulator(_Simulator):
-    """Commands end in LF, replies in CR (see the module's docstring of the protocol)."""
+    """Commands end in LF, replies in CR (see the module's docstring of the protocol).
+    ``streams=False``: a model that answers single shots (``a``, ``r``) only and says
+    nothing to ``A``/``R``, as some ELCOMAT 3000 firmware does."""
 
     command_end = b"\n"
     line_end = b"\r"
+
+    def __init__(self, *args, streams: bool = True, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.streams = streams
 
     def _measurement(self, code: str) -> bytes:
         x, y = (self.noisy(v) for v in self.position())
@@ -194,7 +220,7 @@ class AutocollimatorSimulator(_Simulator):
         if command in (b"a", b"r"):
             return [self._measurement("4" if command == b"a" else "2")]
         if command in (b"A", b"R"):
-            self._streaming, self._code = True, ("3" if command == b"A" else "1")
+            self._streaming, self._code = self.streams, ("3" if command == b"A" else "1")
             return []
         if command == b"s":
             self._streaming = False
@@ -208,11 +234,29 @@ class AutocollimatorSimulator(_Simulator):
 
 
 class TheodoliteSimulator(_Simulator):
-    """Leica GeoCOM: ``%R1Q,rpc[,trid]:params`` CR LF in, ``%R1P,0,trid:rc,…`` CR LF out.
-    ``positions`` are (Hz, V) in degrees."""
+    """Leica GeoCOM: ``%R1Q,rpc[,trid]:params`` CR LF in, ``%R1P,0,trid:rc,…`` CR LF out
+    (the transaction id echoed, 0 when the request has none; ``omit_trid`` answers
+    ``%R1P,0:rc,…`` without one, which the reference's syntax allows). ``positions`` are
+    (Hz, V) in degrees.
+
+    Besides the angles (TMC_GetAngle1, 2003; TMC_GetAngle5, 2107) it answers what a client
+    asks when it connects, as an instrument does: COM_NullProc (0), COM_GetDoublePrecision
+    (108), COM_GetSWVersion (110), CSV_GetInstrumentNo (5003), CSV_GetInstrumentName (5004)
+    and CSV_GetSWVersion (5034); any other procedure with GRC_UNDEFINED (1)."""
 
     command_end = b"\r\n"
     line_end = b"\r\n"
+    #: the connection calls' replies after the return code
+    IDENTITY = {0: "", 108: ",15", 110: ",1,50,0", 5003: ",1234567", 5004: ',"TM50 0.5"',
+                5034: ",3,10,0"}
+
+    def __init__(self, *args, omit_trid: bool = False, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.omit_trid = omit_trid
+
+    def _reply(self, trid: int, rest: str) -> bytes:
+        head = "%R1P,0" if self.omit_trid else f"%R1P,0,{trid}"
+        return f"{head}:{rest}\r\n".encode()
 
     def answer(self, command: bytes) -> list[bytes]:
         text = command.decode("ascii", "replace").strip()
@@ -220,8 +264,10 @@ class TheodoliteSimulator(_Simulator):
             return []
         head = text[5:].split(":", 1)[0].split(",")
         rpc, trid = int(head[0]), (int(head[1]) if len(head) > 1 else 0)
+        if rpc in self.IDENTITY:
+            return [self._reply(trid, "0" + self.IDENTITY[rpc])]
         if rpc not in (2003, 2107):
-            return [f"%R1P,0,{trid}:1\r\n".encode()]  # GRC_UNDEFINED for anything else
+            return [self._reply(trid, "1")]  # GRC_UNDEFINED for anything else
         # sigma in arcseconds on each angle
         hz, v = (math.radians(d + (self.rng.gauss(0.0, self.sigma) / 3600.0 if self.sigma else 0.0))
                  for d in self.position())
@@ -233,7 +279,7 @@ class TheodoliteSimulator(_Simulator):
         values = f"{hz:.10f},{v:.10f}"
         if rpc == 2003:
             values += ",0.0000048,12345678,0.00001,-0.00002,0.0000048,12345670,0"
-        return [f"%R1P,0,{trid}:{rc},{values}\r\n".encode()]
+        return [self._reply(trid, f"{rc},{values}")]
 
 
 class ReadoutSimulator(_Simulator):

@@ -24,7 +24,7 @@ import queue
 import time
 from pathlib import Path
 
-from app.capture.instruments import INSTRUMENTS, LineReadoutInstrument
+from app.capture.instruments import CAPTURE_MODES, INSTRUMENTS, Autocollimator, LineReadoutInstrument
 from app.capture.worker import CaptureWorker, Fault
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
@@ -76,6 +76,17 @@ def _parser(words) -> argparse.ArgumentParser:
                                          "reconnected (default 2)")))
     p.add_argument("--retries", type=int, default=3, metavar="N", help=words(QT_TR_NOOP(
         "reconnections in a row without a reading before giving up (default 3)")))
+    p.add_argument("--reply-timeout", type=_positive(words), default=5.0, metavar="SECONDS",
+                   help=words(QT_TR_NOOP(
+                       "an instrument that is asked (theodolite, readout, a polled autocollimator): "
+                       "how long one request waits for its reply before it counts as a fault; the "
+                       "next request is sent only after the reply or this (default 5)")))
+    p.add_argument("--mode", choices=CAPTURE_MODES, default="auto", help=words(QT_TR_NOOP(
+        "autocollimator: auto (stream, or single-shot requests when it does not stream), "
+        "stream, or poll (single-shot requests only)")))
+    p.add_argument("--poll-rate", type=_positive(words), default=20.0, metavar="HZ",
+                   help=words(QT_TR_NOOP("single-shot requests per second at the most when an "
+                                         "autocollimator is polled (default 20)")))
     p.add_argument("--timeout", type=_positive(words), metavar="SECONDS",
                    help=words(QT_TR_NOOP("give up after this long (default: never)")))
     p.add_argument("--raw", metavar="RAW.csv", help=words(QT_TR_NOOP(
@@ -129,8 +140,14 @@ def run_capture(argv: list[str]) -> int:
         except ValueError as exc:
             say(message(QT_TR_NOOP("anglebench capture: --pattern: {reason}"), reason=str(exc)))
             return EXIT_BAD_INPUT
+    elif args.instrument == "autocollimator":
+        instrument = Autocollimator(args.mode)
     else:
         instrument = INSTRUMENTS[args.instrument]()
+    if args.mode != "auto" and args.instrument != "autocollimator":
+        say(message(QT_TR_NOOP("anglebench capture: --mode is the autocollimator's (an instrument "
+                               "that answers requests is always asked)")))
+        return EXIT_BAD_INPUT
     columns = instrument.columns
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
     # the gate's window is in arcseconds for angles in degrees; a theodolite's angles go to
@@ -140,7 +157,8 @@ def run_capture(argv: list[str]) -> int:
     origin: tuple[float, ...] | None = None
     rows: list[list[object]] = []
     worker = CaptureWorker(args.port, instrument, args.baud, silence_s=args.silence,
-                           retries=max(args.retries, 0)).start()
+                           retries=max(args.retries, 0), reply_timeout_s=args.reply_timeout,
+                           poll_interval_s=1.0 / args.poll_rate).start()
     ends = time.monotonic() + args.timeout if args.timeout else None
     failure = None
     try:
@@ -197,6 +215,10 @@ def run_capture(argv: list[str]) -> int:
         say(message(QT_TR_NOOP("anglebench capture: {reason}; the {n} readings taken are in "
                                "{path}"), reason=failure, n=len(rows), path=str(target)))
         return EXIT_BAD_INPUT
+    if worker.polling and args.mode == "auto":
+        say(message(QT_TR_NOOP("anglebench capture: {port} did not stream after A: read by "
+                               "single-shot a requests (--mode poll asks so from the start)"),
+                    port=args.port))
     if worker.refused:
         say(message(QT_TR_NOOP("{n} readings written to {path} ({refused} frames refused: "
                                "noise, an invalid axis or an error reply)"), n=len(rows),

@@ -1,8 +1,15 @@
 """What each instrument is sent and how its lines become readings.
 
 An instrument either streams once started (the autocollimator after ``A``) or answers
-one request at a time (GeoCOM's TMC_GetAngle5, a readout's STX), asked again as soon
-as it has answered.
+one request at a time (GeoCOM's TMC_GetAngle5, a readout's STX). A request is sent only
+when the previous one has been answered (or its reply timeout has passed): one request
+in flight, never a queue of them in the instrument's buffer.
+
+An autocollimator that does not stream after ``A`` (some ELCOMAT models and firmware
+answer only single-shot requests) is read by single-shot ``a`` requests instead, paced
+the same way (:attr:`Instrument.poll`): chosen with ``mode="poll"``, or found by
+``mode="auto"`` when no frame arrives within :attr:`Instrument.stream_wait_s` of the
+start.
 """
 
 from __future__ import annotations
@@ -12,10 +19,22 @@ from dataclasses import dataclass
 
 from models.capture.autocollimator import AutocollimatorFrame, command, parse_autocollimator_line
 from models.capture.errors import FrameError
-from models.capture.geocom import GET_ANGLE5, INCLINE_AUTOMATIC, angles_of, parse_geocom_reply, request
+from models.capture.geocom import (
+    GET_ANGLE5,
+    INCLINE_AUTOMATIC,
+    MAX_TRANSACTION_ID,
+    angles_of,
+    parse_geocom_reply,
+    request,
+)
 from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineReadout
 
-__all__ = ["INSTRUMENTS", "Autocollimator", "Instrument", "LineReadoutInstrument", "Theodolite"]
+__all__ = ["CAPTURE_MODES", "INSTRUMENTS", "Autocollimator", "Instrument", "LineReadoutInstrument",
+           "Theodolite"]
+
+#: how a streaming instrument is read: ``auto`` (stream, single-shot requests when it does not
+#: stream), ``stream`` or ``poll`` (single-shot requests only)
+CAPTURE_MODES = ("auto", "stream", "poll")
 
 
 @dataclass
@@ -29,17 +48,39 @@ class Instrument:
     request: bytes | None = None
     #: the baud rate when none is given (the usual serial default; set the instrument's own)
     default_baud: int = 9600
+    #: a streaming instrument's single-shot request, sent instead of the stream when it does
+    #: not stream (None: it has none)
+    poll: bytes | None = None
+    #: ``mode="auto"``: how long to wait for the stream's first frame before polling
+    stream_wait_s: float = 1.0
+    #: ``auto``, ``stream`` or ``poll`` (:data:`CAPTURE_MODES`; ``poll`` needs :attr:`poll`)
+    mode: str = "auto"
 
     def values(self, line: bytes) -> tuple[tuple[float, ...], str] | None:
         """The reading's values and unit; None for a line that is not a measurement (device
         information); :class:`FrameError` for a line that cannot be one."""
         raise NotImplementedError
 
+    def request_bytes(self, transaction: int) -> bytes | None:
+        """The request to send, the ``transaction``-th of the session (from 1); None for an
+        instrument that is not asked."""
+        return self.request
+
+    def transaction_of(self, transaction: int) -> int | None:
+        """The transaction id the ``transaction``-th request carries (None: it carries none)."""
+        return None
+
+    def reply_transaction(self, line: bytes) -> int | None:
+        """The transaction id a reply line carries (None: none, or not a reply that has one)."""
+        return None
+
 
 class Autocollimator(Instrument):
-    def __init__(self) -> None:
+    def __init__(self, mode: str = "auto") -> None:
+        if mode not in CAPTURE_MODES:
+            raise ValueError(f"mode must be one of {', '.join(CAPTURE_MODES)}")
         super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
-                         stop=command("stop"))
+                         stop=command("stop"), poll=command("single"), mode=mode)
 
     def values(self, line: bytes):
         frame = parse_autocollimator_line(line)
@@ -53,9 +94,23 @@ class Autocollimator(Instrument):
 
 
 class Theodolite(Instrument):
+    """GeoCOM TMC_GetAngle5, each request with a transaction id (1 … 7, round again)."""
+
     def __init__(self) -> None:
         super().__init__(("azimuth_deg", "zenith_deg"),
                          request=request(GET_ANGLE5, INCLINE_AUTOMATIC))
+
+    def transaction_of(self, transaction: int) -> int:
+        return (transaction - 1) % MAX_TRANSACTION_ID + 1
+
+    def request_bytes(self, transaction: int) -> bytes:
+        return request(GET_ANGLE5, INCLINE_AUTOMATIC, trid=self.transaction_of(transaction))
+
+    def reply_transaction(self, line: bytes) -> int | None:
+        try:
+            return parse_geocom_reply(line).trid
+        except FrameError:
+            return None
 
     def values(self, line: bytes):
         hz, v = angles_of(parse_geocom_reply(line), GET_ANGLE5)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import contextlib
 import datetime as dt
 import queue
+import select
 import threading
 import time
 from dataclasses import dataclass
@@ -22,12 +23,15 @@ from dataclasses import dataclass
 import serial
 
 from app.capture.instruments import Instrument
-from app.capture.link import CaptureError, open_link
+from app.capture.link import READ_TIMEOUT_S, CaptureError, open_link
 from models.capture.errors import FrameError
 from models.capture.framing import LineFramer
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["CaptureWorker", "Fault", "Reading"]
+
+#: bytes read from a socket at once
+READ_BLOCK = 65536
 
 
 @dataclass(frozen=True)
@@ -56,10 +60,23 @@ class _LinkLost(Exception):
 class CaptureWorker:
     def __init__(self, port: str, instrument: Instrument, baud: int | None = None,
                  silence_s: float = 1.0, retries: int = 3, retry_pause_s: float = 0.2,
-                 opener=open_link) -> None:
+                 opener=open_link, reply_timeout_s: float | None = None,
+                 poll_interval_s: float = 0.0) -> None:
         self.port, self.instrument = port, instrument
         self.baud = baud or instrument.default_baud
         self.silence_s, self.retries, self.retry_pause_s = silence_s, retries, retry_pause_s
+        #: how long a request waits for its reply before it counts as a fault (default: the
+        #: silence); the next request waits for the reply or this
+        self.reply_timeout_s = silence_s if reply_timeout_s is None else reply_timeout_s
+        #: the least time between two single-shot requests to a streaming instrument that is
+        #: polled (an instrument that only answers requests is asked again when it answers)
+        self.poll_interval_s = poll_interval_s
+        #: requests sent, reply timeouts, lines found in a serial port's buffer at connection
+        self.requests = 0
+        self.timeouts = 0
+        self.stale_at_connect = 0
+        #: the instrument did not stream when asked to and is read by single-shot requests
+        self.polling = False
         self._open = opener
         self.events: queue.Queue[Reading | Fault] = queue.Queue()
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
@@ -134,42 +151,125 @@ class CaptureWorker:
             with contextlib.suppress(OSError):
                 sock.close()
 
+    def _read(self, link) -> bytes:
+        """What has arrived, in one block: a socket is read as far as it has bytes (pyserial's
+        socket:// says one byte waiting whatever it holds), a serial port its waiting count."""
+        sock = getattr(link, "_socket", None)
+        if sock is not None:
+            ready, _, _ = select.select([sock], [], [], READ_TIMEOUT_S)
+            if not ready:
+                return b""
+            data = sock.recv(READ_BLOCK)
+            if not data:
+                raise serial.SerialException("the instrument closed the connection")
+            return data
+        return link.read(link.in_waiting or 1)
+
+    def _waiting_at_connect(self, link) -> list[bytes]:
+        """A serial port's bytes received before this session asked for anything (old frames
+        in the driver's buffer): read, not discarded, so the raw trace keeps them. A socket
+        has none from before its connection: its first bytes are read as they come."""
+        if getattr(link, "_socket", None) is not None:
+            return []
+        framer = LineFramer()
+        data = link.read(link.in_waiting) if link.in_waiting else b""
+        return framer.feed(data + b"\n") if data else []
+
+    def _no_reading_message(self, heard_bytes: bool, last_refusal: str, timed_out: bool):
+        seconds = f"{self.silence_s:g}"
+        if not heard_bytes:
+            return message(QT_TR_NOOP("{port}: no answer for {seconds} s"), port=self.port,
+                           seconds=seconds)
+        if timed_out:
+            return message(QT_TR_NOOP("{port}: no reply to a request within {seconds} s (the "
+                                      "reply timeout)"), port=self.port,
+                           seconds=f"{self.reply_timeout_s:g}")
+        if not last_refusal or last_refusal.startswith("not text"):
+            return message(QT_TR_NOOP("{port}: only unreadable bytes for {seconds} s "
+                                      "(a wrong baud rate? {baud} was used)"),
+                           port=self.port, seconds=seconds, baud=self.baud)
+        return message(QT_TR_NOOP("{port}: no valid reading for {seconds} s (last: {reason})"),
+                       port=self.port, seconds=seconds, reason=last_refusal)
+
     def _session(self, link) -> int:
         """Read until stopped (returns the number of readings) or until the link is lost
-        (raises :class:`_LinkLost` with the reason and the number of readings)."""
+        (raises :class:`_LinkLost` with the reason and the number of readings).
+
+        An instrument that is asked gets one request at a time: the next goes out when the
+        reply to the last has come (a reading, a refused reply, device information) and
+        (polling a streaming instrument) :attr:`poll_interval_s` has passed since the last
+        was sent, or — a fault with its
+        own message, then a reconnection — when :attr:`reply_timeout_s` has passed with no
+        reply. A reply that carries another transaction id than the request in flight is an
+        old request's, kept in the raw trace and not read. While a request waits within its
+        timeout, the instrument is not silent.
+        """
         framer = LineFramer()
         instrument = self.instrument
         got = 0
         heard_bytes = False
         last_refusal = ""
-        last_good = time.monotonic()
-        asked_at: float | None = None
+        start = last_good = time.monotonic()
+        transactions = 0
+        in_flight: float | None = None  # when the request in flight was sent
+        heard_since_request = False
+        asked_at = -1e9
+        lines = 0  # lines framed in this session
+        expected: int | None = None  # the transaction id of the request in flight
+        polling = instrument.request is None and instrument.poll is not None and (
+            instrument.mode == "poll" or self.polling)
         try:
-            link.reset_input_buffer()
-            if instrument.start:
+            for line in self._waiting_at_connect(link):
+                self.raw.append((time.monotonic() - self._t0, line, False))
+                self.stale_at_connect += 1
+            if instrument.start and not polling:
                 link.write(instrument.start)
             while not self._stop.is_set():
                 now = time.monotonic()
-                if instrument.request is not None and (asked_at is None
-                                                       or now - asked_at > self.silence_s / 4):
-                    link.write(instrument.request)
-                    asked_at = now
-                data = link.read(link.in_waiting or 1)
+                if (not polling and instrument.mode == "auto" and instrument.poll is not None
+                        and instrument.request is None and lines == 0
+                        and now - start > min(instrument.stream_wait_s, self.silence_s / 2)):
+                    # no frame since the stream was asked for: the instrument answers single shots
+                    polling = self.polling = True
+                    if instrument.stop:
+                        link.write(instrument.stop)
+                ask = instrument.poll if polling else instrument.request_bytes(transactions + 1)
+                if ask is not None and in_flight is None and (not polling
+                                                              or now - asked_at >= self.poll_interval_s):
+                    transactions += 1
+                    link.write(ask)
+                    self.requests += 1
+                    in_flight = asked_at = now
+                    heard_since_request = False
+                    expected = None if polling else instrument.transaction_of(transactions)
+                data = self._read(link)
                 if data:
-                    heard_bytes = True
+                    heard_bytes = heard_since_request = True
                 now = time.monotonic()
                 for line in framer.feed(data):
+                    lines += 1
+                    if ask is not None:
+                        trid = instrument.reply_transaction(line)
+                        stale = ""
+                        if in_flight is None:
+                            stale = "a reply with no request in flight"
+                        elif expected is not None and trid is not None and trid != expected:
+                            stale = (f"reply to an earlier request (transaction {trid}, waiting "
+                                     f"for {expected})")
+                        if stale:
+                            self.raw.append((now - self._t0, line, False))
+                            self.refused += 1
+                            self._refusal(stale)
+                            continue
+                    in_flight = None
                     try:
                         parsed = instrument.values(line)
                     except FrameError as exc:
                         self.raw.append((now - self._t0, line, False))
                         self.refused += 1
                         last_refusal = str(exc)
-                        if len(self.refusals) < 20:
-                            self.refusals.append(str(exc))
-                        asked_at = None
+                        self._refusal(str(exc))
                         continue
-                    asked_at = None
                     self.raw.append((now - self._t0, line, parsed is not None))
                     if parsed is None:
                         continue
@@ -177,22 +277,19 @@ class CaptureWorker:
                     last_good = now
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line,
                                             len(self.raw) - 1))
-                if now - last_good > self.silence_s:
-                    seconds = f"{self.silence_s:g}"
-                    if not heard_bytes:
-                        what = message(QT_TR_NOOP("{port}: no answer for {seconds} s"),
-                                       port=self.port, seconds=seconds)
-                    elif not last_refusal or last_refusal.startswith("not text"):
-                        what = message(QT_TR_NOOP("{port}: only unreadable bytes for {seconds} s "
-                                                  "(a wrong baud rate? {baud} was used)"),
-                                       port=self.port, seconds=seconds, baud=self.baud)
-                    else:
-                        what = message(QT_TR_NOOP("{port}: no valid reading for {seconds} s "
-                                                  "(last: {reason})"), port=self.port,
-                                       seconds=seconds, reason=last_refusal)
-                    raise _LinkLost(what, got)
+                waiting = in_flight is not None and now - in_flight <= self.reply_timeout_s
+                timed_out = (in_flight is not None and not waiting)
+                if timed_out and not heard_since_request:
+                    self.timeouts += 1
+                    raise _LinkLost(self._no_reading_message(heard_bytes, last_refusal, True), got)
+                if now - last_good > self.silence_s and not waiting:
+                    raise _LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]
             raise _LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
                                     port=self.port, reason=reason), got) from None
         return got
+
+    def _refusal(self, text: str) -> None:
+        if len(self.refusals) < 20:
+            self.refusals.append(text)

@@ -2,9 +2,14 @@
 stations, as far as reading angles needs.
 
 A request is ``%R1Q,<rpc>[,<trid>]:<param>,<param>…`` ended by CR LF; the reply is
-``%R1P,<com_rc>,<trid>:<rc>[,<value>…]`` ended by CR LF. ``com_rc`` is the
-communication's return code, ``rc`` the procedure's; 0 is GRC_OK for both. The angle
-procedures read here:
+``%R1P,<com_rc>[,<trid>]:<rc>[,<value>…]`` ended by CR LF. ``com_rc`` is the
+communication's return code, ``rc`` the procedure's; 0 is GRC_OK for both. The
+transaction id is optional on both sides (the reference manual's syntax puts it in
+brackets): an instrument echoes the id of the request it answers, so a reply that
+carries one is matched to its request, and a reply without one is taken as the answer
+to the one request in flight. The client sends one request at a time and the next only
+after the reply (or a reply timeout): the manual advises against queueing requests,
+which the instrument's receive buffer may lose. The angle procedures read here:
 
 * ``TMC_GetAngle1`` (RPC 2003, one parameter: the inclination mode) answers
   ``rc,Hz,V,AngleAccuracy,AngleTime,CrossIncline,LengthIncline,AccuracyIncline,
@@ -30,15 +35,19 @@ from dataclasses import dataclass
 
 from models.capture.errors import FrameError
 
-__all__ = ["GET_ANGLE1", "GET_ANGLE5", "GeocomReply", "angles_of", "parse_geocom_reply",
-           "request"]
+__all__ = ["GET_ANGLE1", "GET_ANGLE5", "GeocomReply", "MAX_TRANSACTION_ID", "angles_of",
+           "parse_geocom_reply", "request"]
 
 GET_ANGLE1 = 2003
 GET_ANGLE5 = 2107
 #: inclination mode of the angle requests: 1 = automatic (the instrument decides)
 INCLINE_AUTOMATIC = 1
 
-_REPLY = re.compile(r"%R1P,(\d+),(\d+):(-?\d+)((?:,[^,]*)*)")
+#: transaction ids are counted 1 … 7 and round again (an id in that range is echoed by every
+#: GeoCOM generation; with one request in flight, seven tell any late reply from the current)
+MAX_TRANSACTION_ID = 7
+
+_REPLY = re.compile(r"%R1P,(\d+)(?:,(\d+))?:(-?\d+)((?:,[^,]*)*)")
 
 
 def request(rpc: int, *params: object, trid: int | None = None) -> bytes:
@@ -50,7 +59,7 @@ def request(rpc: int, *params: object, trid: int | None = None) -> bytes:
 @dataclass(frozen=True)
 class GeocomReply:
     com_rc: int
-    trid: int
+    trid: int | None  # None: the reply carries no transaction id
     rc: int
     values: tuple[str, ...]
 
@@ -66,7 +75,7 @@ def parse_geocom_reply(line: bytes) -> GeocomReply:
         raise FrameError(f"not a GeoCOM reply: {text[:40]!r}")
     com_rc, trid, rc, rest = found.groups()
     values = tuple(rest[1:].split(",")) if rest else ()
-    return GeocomReply(int(com_rc), int(trid), int(rc), values)
+    return GeocomReply(int(com_rc), None if trid is None else int(trid), int(rc), values)
 
 
 def angles_of(reply: GeocomReply, rpc: int) -> tuple[float, float]:

@@ -12,6 +12,15 @@ the axes"):
 * H/CMA: a .CMA table assigns .COM tables to axes, a column per axis; several lines may be
   entered, only one is active (ACTIVE = *).
 * H/rotary: on a rotary axis only the entries 0…360 are recognised.
+* H/equidistant: the compensation points are equally spaced ("Equidistant spacing
+  between the measuring points is necessary", MANUALplus 620 Technical Manual, "Entering
+  compensation values"), on linear axes as on rotary ones: a table measured at unequal
+  steps is refused, naming a compensation step that resamples it (``--compensation-step``).
+* H/407: on the TNC 407/415/425 (option ``control=tnc407``) the spacing of the points is a
+  power of two in 0.1 µm (the manual's example: a wanted 7 mm becomes 2^16 × 0.1 µm =
+  6.5536 mm; TNC 407/415/425 Technical Manual 01.98, 1.6.4 "Nonlinear axis error
+  compensation", p. 4-28). Checked on linear axes; on a rotary axis the unit of that power
+  of two is not stated there, so it is not checked.
 
 Not verified (see README), hence options without a default or stated in the file: the
 sign of a value (the option ``values`` must say whether the machine's manual wants the
@@ -38,13 +47,20 @@ from models.positioning.controllers.common import (
 
 NAME = "HEIDENHAIN TNC"
 SOURCE = "HEIDENHAIN Technical Manual, nonlinear axis error compensation"
+SOURCE_EQUIDISTANT = "MANUALplus 620 Technical Manual, Entering compensation values"
+SOURCE_407 = "TNC 407/415/425 Technical Manual, 1.6.4, p. 4-28"
 MAX_ENTRIES = 256
 OPTIONS = (
     Option("axis", "text", "X", QT_TR_NOOP("axis key (column name), e.g. X or C")),
     Option("values", "text", None, QT_TR_NOOP("error (actual − target) or correction (−error): "
                                               "as the machine's manual states")),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, 360 (0: linear)"), minimum=0),
+    Option("control", "text", "tnc", QT_TR_NOOP("tnc (iTNC, TNC 6xx, MANUALplus) or tnc407 (TNC "
+                                                "407/415/425: a spacing of 2^n × 0.1 µm)")),
 )
+CONTROLS = ("tnc", "tnc407")
+#: TNC 407/415/425: the spacing of the compensation points is 2^n of this (mm)
+TNC407_QUANTUM_MM = 1e-4
 
 
 @dataclass(frozen=True)
@@ -70,12 +86,51 @@ def build(table, options) -> Plan:
     columns = [sign * in_target_unit(table.forward, table.deviation_unit)]
     if table.backward is not None:
         columns.append(sign * in_target_unit(table.backward, table.deviation_unit))
+    if o["control"].lower() not in CONTROLS:
+        raise ControllerRuleError(message(QT_TR_NOOP(
+            "{controller} options: control={control}; it takes {known}"), controller=NAME,
+            control=o["control"], known=", ".join(CONTROLS)))
     rotary = o["modulo"] > 0
+    step = _equidistant(positions)
     if rotary:
-        equidistant_step(NAME, positions, SOURCE)
         positions, columns, _ = close_turn(NAME, positions, columns, o["modulo"], SOURCE)
+    elif o["control"].lower() == "tnc407":
+        _power_of_two(step, table.target_unit)
     return Plan(o["axis"].upper(), o["values"], positions, columns[0],
                 columns[1] if len(columns) > 1 else None, rotary, table.target_unit)
+
+
+def _equidistant(positions: np.ndarray) -> float:
+    """H/equidistant: the step; refused with the step that would resample the table (the
+    smallest spacing measured, or a larger one when that makes more than 256 points)."""
+    try:
+        return equidistant_step(NAME, positions, SOURCE_EQUIDISTANT)
+    except ControllerRuleError:
+        steps = np.diff(positions)
+        smallest = float(np.min(steps[steps > 0])) if np.any(steps > 0) else 0.0
+        span = float(positions[-1] - positions[0])
+        suggested = max(smallest, span / (MAX_ENTRIES - 1)) if smallest > 0 else 0.0
+        raise refuse(NAME, message(QT_TR_NOOP("equidistant points ({source})"),
+                                   source=SOURCE_EQUIDISTANT),
+                     message(QT_TR_NOOP("the points are spaced {low}…{high}: resample the table at "
+                                        "one compensation step, e.g. {step} (compensation step)"),
+                             low=f"{float(np.min(steps)):g}", high=f"{float(np.max(steps)):g}",
+                             step=f"{suggested:g}")) from None
+
+
+def _power_of_two(step: float, unit: str) -> None:
+    """H/407: the spacing 2^n × 0.1 µm (a linear axis in mm)."""
+    if unit != "mm":
+        return
+    units = step / TNC407_QUANTUM_MM
+    exponent = round(np.log2(units)) if units > 0 else 0
+    if units <= 0 or abs(units - 2.0 ** exponent) > 1e-6 * units:
+        below = 2.0 ** np.floor(np.log2(max(units, 1.0))) * TNC407_QUANTUM_MM
+        raise refuse(NAME, message(QT_TR_NOOP("TNC 407/415/425: a spacing of 2^n × 0.1 µm "
+                                              "({source})"), source=SOURCE_407),
+                     message(QT_TR_NOOP("a step of {step} mm is not one: choose {below} mm or "
+                                        "{above} mm (compensation step)"),
+                             step=f"{step:g}", below=f"{below:g}", above=f"{2 * below:g}"))
 
 
 def lint(plan: Plan) -> Plan:

@@ -110,11 +110,13 @@ def test_a_port_that_does_not_exist():
 @pytest.mark.parametrize("transport", ["pty", "tcp"])
 def test_a_disconnect_mid_set_loses_no_reading(transport):
     """The link drops after 8 answers; the worker reconnects and the set goes on: every
-    answer the theodolite gave whole is a reading, in order, none twice."""
+    answer the theodolite gave whole is a reading, in order, none twice. On the pty the
+    request sent into the gap is lost, as on a pulled cable: it waits its reply timeout
+    (longer than the gap), then the link is opened again."""
     positions = [(10.0 * i, 90.0 - i) for i in range(1, 5)]
     with TheodoliteSimulator(transport, faults=("disconnect",), disconnect_after=8,
                              positions=positions, hold_s=0.25) as sim:
-        worker = CaptureWorker(sim.port, Theodolite(), **FAST).start()
+        worker = CaptureWorker(sim.port, Theodolite(), **FAST, reply_timeout_s=0.5).start()
         readings, faults = collect(worker, 20)
         worker.stop()
     assert len(faults) == 1 and not faults[0].final and sim.port in faults[0].message
@@ -130,7 +132,7 @@ def test_theodolite_angles_in_degrees_and_error_replies_refused():
     assert not faults and len(readings) == 10
     assert all(r.values == pytest.approx((123.4567, 87.6543), abs=1e-8) for r in readings)
     assert any("1284" in r for r in worker.refusals)
-    assert sim.received[0] == b"%R1Q,2107:1"
+    assert sim.received[0] == b"%R1Q,2107,1:1"  # TMC_GetAngle5, transaction 1, automatic incline
 
 
 def test_a_readout_is_asked_and_read():
