@@ -1,13 +1,21 @@
 """Opening an instrument's port: a serial device (``/dev/ttyUSB0``, ``COM3``) or a TCP
-address (``tcp://host:port``, or pyserial's own ``socket://host:port``)."""
+address (``tcp://host:port``, or pyserial's own ``socket://host:port``).
+
+A TCP address is opened as a plain socket (:class:`TcpLink`), not through pyserial's
+``socket://`` handler: that handler empties its input when it opens, so the frames an
+instrument (or a serial-to-network bridge) sends as soon as it is connected were lost,
+and it says one byte is waiting whatever it holds, so lines were read a byte per call."""
 
 from __future__ import annotations
+
+import select
+import socket
 
 import serial
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["CaptureError", "open_link", "serial_url"]
+__all__ = ["CaptureError", "TcpLink", "open_link", "serial_url"]
 
 #: a read returns after this long without bytes, so the worker can look up and stop
 READ_TIMEOUT_S = 0.02
@@ -24,8 +32,72 @@ def serial_url(port: str) -> str:
     return port
 
 
-def open_link(port: str, baud: int) -> serial.SerialBase:
+#: how long connecting to a TCP address may take
+CONNECT_TIMEOUT_S = 3.0
+#: bytes read from a socket at once
+READ_BLOCK = 65536
+
+
+class TcpLink:
+    """A TCP connection with the few calls the capture worker makes of a serial port."""
+
+    def __init__(self, host: str, port: int, timeout: float = READ_TIMEOUT_S) -> None:
+        self._socket = socket.create_connection((host, port), timeout=CONNECT_TIMEOUT_S)
+        self._socket.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        self._socket.settimeout(1.0)  # a write that cannot go out in 1 s is a dropped link
+        self.timeout = timeout
+
+    @property
+    def in_waiting(self) -> int:
+        return 0
+
+    def read(self, size: int = READ_BLOCK) -> bytes:
+        """What has arrived (up to ``size``, at least a block when more is there), or b""
+        after :attr:`timeout`; :class:`OSError` when the peer has closed the connection."""
+        ready, _, _ = select.select([self._socket], [], [], self.timeout)
+        if not ready:
+            return b""
+        data = self._socket.recv(max(size, READ_BLOCK))
+        if not data:
+            raise ConnectionResetError("the instrument closed the connection")
+        return data
+
+    def write(self, data: bytes) -> int:
+        self._socket.sendall(data)
+        return len(data)
+
+    def reset_input_buffer(self) -> None:
+        """Nothing: a new connection holds nothing from before it."""
+
+    def close(self) -> None:
+        try:
+            self._socket.shutdown(socket.SHUT_RDWR)
+        except OSError:
+            pass
+        self._socket.close()
+
+
+def _tcp_address(port: str) -> tuple[str, int] | None:
+    lower = port.lower()
+    for scheme in ("tcp://", "socket://"):
+        if lower.startswith(scheme):
+            rest = port[len(scheme):].split("?", 1)[0].rstrip("/")
+            host, sep, number = rest.rpartition(":")
+            if not sep or not number.isdigit():
+                return None
+            return host.strip("[]"), int(number)
+    return None
+
+
+def open_link(port: str, baud: int):
     """The open port; :class:`CaptureError` naming it when it cannot be opened."""
+    address = _tcp_address(port)
+    if address is not None:
+        try:
+            return TcpLink(*address)
+        except (OSError, ValueError) as exc:
+            raise CaptureError(message(QT_TR_NOOP("{port}: cannot open ({reason})"), port=port,
+                                       reason=_reason(exc))) from None
     try:
         return serial.serial_for_url(serial_url(port), baudrate=baud, timeout=READ_TIMEOUT_S,
                                      write_timeout=1.0)

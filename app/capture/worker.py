@@ -15,7 +15,6 @@ from __future__ import annotations
 import contextlib
 import datetime as dt
 import queue
-import select
 import threading
 import time
 from dataclasses import dataclass
@@ -23,15 +22,12 @@ from dataclasses import dataclass
 import serial
 
 from app.capture.instruments import Instrument
-from app.capture.link import READ_TIMEOUT_S, CaptureError, open_link
+from app.capture.link import READ_BLOCK, CaptureError, TcpLink, open_link
 from models.capture.errors import FrameError
 from models.capture.framing import LineFramer
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["CaptureWorker", "Fault", "Reading"]
-
-#: bytes read from a socket at once
-READ_BLOCK = 65536
 
 
 @dataclass(frozen=True)
@@ -152,24 +148,17 @@ class CaptureWorker:
                 sock.close()
 
     def _read(self, link) -> bytes:
-        """What has arrived, in one block: a socket is read as far as it has bytes (pyserial's
-        socket:// says one byte waiting whatever it holds), a serial port its waiting count."""
-        sock = getattr(link, "_socket", None)
-        if sock is not None:
-            ready, _, _ = select.select([sock], [], [], READ_TIMEOUT_S)
-            if not ready:
-                return b""
-            data = sock.recv(READ_BLOCK)
-            if not data:
-                raise serial.SerialException("the instrument closed the connection")
-            return data
+        """What has arrived, in one block (a serial port: what it says is waiting; a TCP link
+        reads a block of whatever it holds)."""
+        if isinstance(link, TcpLink):
+            return link.read(READ_BLOCK)
         return link.read(link.in_waiting or 1)
 
     def _waiting_at_connect(self, link) -> list[bytes]:
         """A serial port's bytes received before this session asked for anything (old frames
         in the driver's buffer): read, not discarded, so the raw trace keeps them. A socket
         has none from before its connection: its first bytes are read as they come."""
-        if getattr(link, "_socket", None) is not None:
+        if isinstance(link, TcpLink):
             return []
         framer = LineFramer()
         data = link.read(link.in_waiting) if link.in_waiting else b""

@@ -24,22 +24,27 @@ class LineFramer:
 
     def feed(self, data: bytes) -> list[bytes]:
         lines: list[bytes] = []
-        for byte in data:
-            if byte in (0x0A, 0x0D):
-                if self._overlong:
-                    self._overlong = False
-                elif self._buffer:
-                    lines.append(bytes(self._buffer))
-                self._buffer.clear()
-                continue
+        start, size = 0, len(data)
+        while start < size:
+            cr, lf = data.find(b"\r", start), data.find(b"\n", start)
+            end = min(e for e in (cr, lf, size) if e >= 0)
+            piece = data[start:end]
+            if not self._overlong:
+                if len(self._buffer) + len(piece) > self.max_line:
+                    self._buffer.clear()
+                    self._overlong = True
+                    self.dropped += 1
+                else:
+                    self._buffer += piece
+            if end == size:
+                break
+            # a line end
             if self._overlong:
-                continue
-            if len(self._buffer) >= self.max_line:
-                self._buffer.clear()
-                self._overlong = True
-                self.dropped += 1
-                continue
-            self._buffer.append(byte)
+                self._overlong = False
+            elif self._buffer:
+                lines.append(bytes(self._buffer))
+            self._buffer.clear()
+            start = end + 1
         return lines
 
     def reset(self) -> None:
