@@ -109,7 +109,7 @@ def simple_sinumerik(text: str, x: np.ndarray) -> np.ndarray:
 def _fanuc_parse(text: str) -> tuple[dict[int, int], dict[int, int]]:
     params, data = {}, {}
     for ln in text.split():
-        m = re.fullmatch(r"N(\d+)(?:A\d+)?P(-?\d+)", ln)
+        m = re.fullmatch(r"N(\d+)(?:Q1)?(?:A\d+)?P(-?\d+)", ln)
         if not m:
             continue
         number, value = int(m.group(1)), int(m.group(2))

@@ -8,6 +8,7 @@ and it says one byte is waiting whatever it holds, so lines were read a byte per
 
 from __future__ import annotations
 
+import contextlib
 import select
 import socket
 
@@ -70,10 +71,8 @@ class TcpLink:
         """Nothing: a new connection holds nothing from before it."""
 
     def close(self) -> None:
-        try:
+        with contextlib.suppress(OSError):
             self._socket.shutdown(socket.SHUT_RDWR)
-        except OSError:
-            pass
         self._socket.close()
 
 

@@ -15,7 +15,13 @@ documented in the LinuxCNC manual (INI configuration, section [JOINT_n], COMP_FI
 and COMP_FILE_TYPE): one line per point, "nominal actual-forward actual-reverse" in
 machine units (mm, or degrees for an angular joint), nominal ascending, at most 256
 lines; the controller reads the actual positions and compensates itself, so the
-file holds measured positions, not corrections. The other controllers' formats
+file holds measured positions, not corrections. LinuxCNC does not wrap a rotary joint's
+table: beyond its first and last lines it applies their values (checked against
+LinuxCNC's own loading and look-up code), so at 370° it applies the value at the end of
+the table, not at 10°. For a rotary joint the options ``modulo=360, travel_min=…,
+travel_max=…`` write the closed turn repeated over the whole travel of the joint (at most
+256 lines); without them the table is written as measured and the message warns that it
+is not wrapped. The other controllers' formats
 (SINUMERIK 840D, FANUC, HEIDENHAIN TNC, TwinCAT, ISG, Mach4) are in
 models/positioning/controllers/, one module each, every rule citing its manual.
 """
@@ -28,14 +34,24 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
+from models.positioning.controllers.common import (
+    ControllerRuleError,
+    Option,
+    close_turn,
+    equidistant_step,
+    parse_options,
+    refuse,
+)
 from models.positioning.model import DEVIATION_UNITS, PositioningResult
 from models.project.atomic_write import write_text_atomic
 
-__all__ = ["LINUXCNC_MAX_POINTS", "CompensationTable", "compensation_table",
-           "compensation_csv", "linuxcnc_comp_file", "write_compensation"]
+__all__ = ["LINUXCNC_MAX_POINTS", "LINUXCNC_NAME", "LINUXCNC_OPTIONS", "CompensationTable",
+           "compensation_table", "compensation_csv", "linuxcnc_comp_file", "write_compensation"]
 
 LINUXCNC_MAX_POINTS = 256
+LINUXCNC_NAME = "LinuxCNC"
+LINUXCNC_SOURCE = "LinuxCNC INI configuration, [JOINT_n] COMP_FILE_TYPE = 0"
 FORMS = {"separate": QT_TR_NOOP("separate tables for the forward and the backward approach"),
          "bidirectional": QT_TR_NOOP("one table from the bidirectional mean (x_up + x_down)/2"),
          "forward only": QT_TR_NOOP("forward approach only (the backward was not measured)"),
@@ -134,23 +150,80 @@ def compensation_csv(table: CompensationTable) -> str:
     return out.getvalue()
 
 
-def linuxcnc_comp_file(table: CompensationTable) -> str:
-    """LinuxCNC COMP_FILE_TYPE 0: "nominal actual_forward actual_reverse" in machine units."""
+def _linuxcnc_options():
+    return (
+        Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary joint's turn, 360 (0: linear): the table "
+                                                  "is repeated over the joint's travel")),
+        Option("travel_min", "float", float("nan"), QT_TR_NOOP("a rotary joint's travel, lowest "
+                                                               "position (MIN_LIMIT)")),
+        Option("travel_max", "float", float("nan"), QT_TR_NOOP("a rotary joint's travel, highest "
+                                                               "position (MAX_LIMIT)")),
+    )
+
+
+LINUXCNC_OPTIONS = _linuxcnc_options()
+
+
+def _over_travel(table: CompensationTable, modulo: float, low: float, high: float):
+    """The closed turn repeated over ``low``…``high``: positions and the two compensations."""
+    positions = np.asarray(table.positions, dtype=float)
+    equidistant_step(LINUXCNC_NAME, positions, LINUXCNC_SOURCE)
+    grid, (forward, backward), _ = close_turn(LINUXCNC_NAME, positions,
+                                              [np.asarray(table.forward, dtype=float),
+                                               np.asarray(table.backward, dtype=float)],
+                                              modulo, LINUXCNC_SOURCE)
+    start, step = float(grid[0]), float(grid[1] - grid[0])
+    first = int(np.ceil((low - start) / step - 1e-9))
+    last = int(np.floor((high - start) / step + 1e-9))
+    points = start + step * np.arange(first, last + 1)
+    points = np.unique(np.concatenate(([low], points[(points > low) & (points < high)], [high])))
+
+    def periodic(values):
+        return np.interp(start + np.mod(points - start, modulo), grid, values)
+
+    return points, periodic(forward), periodic(backward)
+
+
+def linuxcnc_comp_file(table: CompensationTable, options="") -> tuple[str, str]:
+    """LinuxCNC COMP_FILE_TYPE 0: "nominal actual_forward actual_reverse" in machine units; with
+    the text of what was written (and, for a rotary joint written as measured, the warning
+    that LinuxCNC does not wrap it)."""
     if table.backward is None:
         raise ValueError(message(
             QT_TR_NOOP("LinuxCNC's compensation file lists the forward and the reverse positions: export "
                        "separate tables (both directions measured)")))
-    if table.positions.size > LINUXCNC_MAX_POINTS:
-        raise ValueError(message(
-            QT_TR_NOOP("{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a "
-                       "larger step"),
-            size=table.positions.size, linuxcnc_max_points=LINUXCNC_MAX_POINTS))
+    o = parse_options(LINUXCNC_NAME, LINUXCNC_OPTIONS, options)
+    positions, forward, backward = table.positions, table.forward, table.backward
+    note = ""
+    if o["modulo"] > 0:
+        low = o["travel_min"] if np.isfinite(o["travel_min"]) else float(positions[0])
+        high = (o["travel_max"] if np.isfinite(o["travel_max"])
+                else float(positions[0]) + o["modulo"])
+        if not high > low:
+            raise ControllerRuleError(message(QT_TR_NOOP(
+                "{controller} options: travel_max must be above travel_min"), controller=LINUXCNC_NAME))
+        positions, forward, backward = _over_travel(table, o["modulo"], low, high)
+        note = message(QT_TR_NOOP("LinuxCNC does not wrap a rotary joint's table: the closed turn is "
+                                  "written over the joint's travel {low}…{high}; beyond it the end "
+                                  "values apply"), low=f"{low:g}", high=f"{high:g}")
+    elif table.target_unit == "deg":
+        note = message(QT_TR_NOOP("warning: LinuxCNC does not wrap a rotary joint's table: beyond "
+                                  "{first}…{last} it applies the end values (at {beyond} the value at "
+                                  "{last}, not at {wrapped}); give modulo=360, travel_min and "
+                                  "travel_max to write it over the joint's travel"),
+                       first=f"{positions[0]:g}", last=f"{positions[-1]:g}",
+                       beyond=f"{positions[-1] + 10:g}", wrapped=f"{positions[0] + 10:g}")
+    if np.asarray(positions).size > LINUXCNC_MAX_POINTS:
+        raise refuse(LINUXCNC_NAME, message(QT_TR_NOOP("at most {n} lines per joint ({source})"),
+                                            n=LINUXCNC_MAX_POINTS, source=LINUXCNC_SOURCE),
+                     message(QT_TR_NOOP("{size} points: choose a larger step or a shorter travel"),
+                             size=np.asarray(positions).size))
     scale = DEVIATION_UNITS[table.deviation_unit][1]
     lines = []
-    for p, f, b in zip(table.positions, table.forward, table.backward, strict=True):
+    for p, f, b in zip(positions, forward, backward, strict=True):
         # actual position = nominal + mean deviation = nominal − compensation
         lines.append(f"{p:.9f} {p - f / scale:.9f} {p - b / scale:.9f}")
-    return "\n".join(lines) + "\n"
+    return "\n".join(lines) + "\n", note
 
 
 def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
@@ -172,9 +245,11 @@ def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
             write_text_atomic(stem + suffix if suffix else path, text)
         return what
     if fmt == "linuxcnc":
-        text = linuxcnc_comp_file(table)
+        text, note = linuxcnc_comp_file(table, options)
         what = message(QT_TR_NOOP("LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points "
-                                  "in {unit}"), n=table.positions.size, unit=table.target_unit)
+                                  "in {unit}"), n=text.count("\n"), unit=table.target_unit)
+        if note:
+            what = joined((what, "; ", note))
     else:
         text = compensation_csv(table)
         what = message(QT_TR_NOOP("Compensation table, {n} points ({form}, {spacing})"),

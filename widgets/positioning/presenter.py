@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
+from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
@@ -45,7 +48,8 @@ class PositioningPresenter(WorkbenchPresenter):
         if self.result is None:
             return
         fmt = self._settings["compensation_format"]
-        if fmt in CONTROLLERS and not self.ask_controller_options(fmt):
+        asks = fmt in CONTROLLERS or (fmt == "linuxcnc" and self.result.target_unit == "deg")
+        if asks and not self.ask_controller_options(fmt):
             return
         path = self.view.ask_compensation_path(SUGGESTED_NAMES.get(fmt, "compensation.csv"), fmt)
         if path:
@@ -54,14 +58,15 @@ class PositioningPresenter(WorkbenchPresenter):
     def ask_controller_options(self, fmt: str) -> bool:
         """The controller's options in a small form (filled from the set-up's text); the
         answer is kept in the set-up. False when cancelled or the text cannot be read."""
-        module = CONTROLLERS[fmt]
+        module = CONTROLLERS.get(fmt) or SimpleNamespace(NAME=LINUXCNC_NAME, OPTIONS=LINUXCNC_OPTIONS)
         try:
             current = parse_options(module.NAME, module.OPTIONS,
                                     self._settings["compensation_controller_options"])
         except ValueError as exc:
             self.view.tell(tr("Cannot export the compensation table"), explained(exc))
             return False
-        fields = [(o.key, o.help, "" if current[o.key] is None else f"{current[o.key]:g}"
+        fields = [(o.key, o.help, "" if current[o.key] is None or current[o.key] != current[o.key]
+                   else f"{current[o.key]:g}"
                    if isinstance(current[o.key], float) else str(current[o.key]))
                   for o in module.OPTIONS]
         answer = self.view.ask_controller_options(module.NAME, fields)

@@ -23,6 +23,11 @@ Series 16i/18i "Bidirectional pitch error compensation"):
 * F/separate: bidirectional pitch error compensation (3605#0, 3626, 3627) is not written:
   one table, from the bidirectional mean (the reversal belongs in parameter 1851).
 
+* F/series: the parameter tapes of the Series 30i/31i/32i write ``Q1`` in every block
+  (``N03620Q1A1P…``, ``N10000Q1P…``), as that series' parameter manual shows its tape blocks;
+  the older series (0i, 16i/18i/21i) write none. Option ``series``: ``0i`` (default, no Q) or
+  ``30i``.
+
 Not verified (see README): the range of one stored value (±7 on older series, larger on
 later ones: option value_limit), the number of points per axis (option max_points), the
 data numbers N10000 + point of the parameter tape, and whether the increment is output
@@ -64,7 +69,10 @@ OPTIONS = (
     Option("max_points", "int", 128, QT_TR_NOOP("most compensation points of one axis"), minimum=2),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's travel per revolution, e.g. 360 "
                                               "(parameter 3625; 0: linear)"), minimum=0),
+    Option("series", "text", "0i", QT_TR_NOOP("control series of the tape: 0i (also 16i/18i/21i) or "
+                                              "30i (also 31i/32i: Q1 in every block)")),
 )
+SERIES = ("0i", "30i")
 
 
 @dataclass(frozen=True)
@@ -81,10 +89,15 @@ class Plan:
     value_limit: int
     max_points: int
     reference_deviation: str = ""  # the compensation at the reference (text), not written
+    series: str = "0i"
 
 
 def build(table, options) -> Plan:
     o = parse_options(NAME, OPTIONS, options)
+    if o["series"].lower() not in SERIES:
+        raise refuse(NAME, message(QT_TR_NOOP("series ({source})"), source=SOURCE),
+                     message(QT_TR_NOOP("series={series}; it takes {known}"),
+                             series=o["series"], known=", ".join(SERIES)))
     if table.backward is not None:
         raise refuse(NAME, message(QT_TR_NOOP("one table ({source})"), source=SOURCE),
                      message(QT_TR_NOOP("export one table from the bidirectional mean; the "
@@ -125,7 +138,8 @@ def build(table, options) -> Plan:
     return Plan(o["axis"], o["detection_unit"], o["magnification"], ref_no, first, last,
                 step / o["detection_unit"], o["modulo"] / o["detection_unit"] if rotary else 0.0,
                 values, o["value_limit"], o["max_points"],
-                f"{comp[r] * DEVIATION_UNITS[table.deviation_unit][1]:.3g} {table.deviation_unit}")
+                f"{comp[r] * DEVIATION_UNITS[table.deviation_unit][1]:.3g} {table.deviation_unit}",
+                o["series"].lower())
 
 
 def lint(plan: Plan) -> Plan:
@@ -163,12 +177,15 @@ def lint(plan: Plan) -> Plan:
 
 def render(plan: Plan) -> str:
     a = plan.axis
-    out = ["%", f"N3620A{a}P{plan.reference_number}", f"N3621A{a}P{plan.most_negative}",
-           f"N3622A{a}P{plan.most_positive}", f"N3623A{a}P{plan.magnification}",
-           f"N3624A{a}P{int(round(plan.interval))}"]
+    q = "Q1" if plan.series == "30i" else ""  # F/series
+    n = "05d" if plan.series == "30i" else "d"
+    out = ["%", f"N{3620:{n}}{q}A{a}P{plan.reference_number}",
+           f"N{3621:{n}}{q}A{a}P{plan.most_negative}",
+           f"N{3622:{n}}{q}A{a}P{plan.most_positive}", f"N{3623:{n}}{q}A{a}P{plan.magnification}",
+           f"N{3624:{n}}{q}A{a}P{int(round(plan.interval))}"]
     if plan.per_revolution:
-        out.append(f"N3625A{a}P{int(round(plan.per_revolution))}")
-    out += [f"N{10000 + n}P{plan.values[n]}" for n in sorted(plan.values)]
+        out.append(f"N{3625:{n}}{q}A{a}P{int(round(plan.per_revolution))}")
+    out += [f"N{10000 + i}{q}P{plan.values[i]}" for i in sorted(plan.values)]
     out.append("%")
     return "\n".join(out) + "\n"
 

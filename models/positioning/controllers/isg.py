@@ -15,6 +15,10 @@ Leadscrew error compensation (FCT-C5) and its parameters P-COMP-00017…00025, 0
   the controller subtracts them.
 * I/interpolation: between points the value is interpolated linearly.
 * I/max: kw_nr_max must be smaller than P-COMP-00059 (default 1500).
+* I/range: the type of ``pos``/``neg`` is SGN16 in older pages of the TwinCAT CNC
+  documentation and SGN32 in newer ones: option ``value_type`` (default ``sgn16``, which every
+  version takes: ±32767 × 0.1 µm = ±3.2767 mm); a value beyond the type's range is refused,
+  never wrapped.
 
 Not verified (see README): what is applied beyond the table (held here). The ISG "CSV
 format" belongs to the volumetric compensation (TF5280), not to an axis table; it is not
@@ -29,6 +33,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 from models.positioning.controllers.common import (
+    ControllerRuleError,
     Option,
     close_turn,
     equidistant_step,
@@ -45,7 +50,11 @@ OPTIONS = (
     Option("axis_name", "text", "X", QT_TR_NOOP("axis name (kopf.log_achs_name)")),
     Option("max_points", "int", 1500, QT_TR_NOOP("P-COMP-00059 of the axis (default 1500)"), minimum=2),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a modulo axis's turn, 360 (0: linear)"), minimum=0),
+    Option("value_type", "text", "sgn16", QT_TR_NOOP("type of pos/neg in the kernel's "
+                                                     "documentation: sgn16 (older) or sgn32")),
 )
+#: I/range: the largest magnitude of a pos/neg value of each type
+VALUE_LIMITS = {"sgn16": 2 ** 15 - 1, "sgn32": 2 ** 31 - 1}
 
 
 @dataclass(frozen=True)
@@ -58,10 +67,15 @@ class Plan:
     neg: np.ndarray | None
     modulo: bool
     max_points: int
+    value_type: str = "sgn16"
 
 
 def build(table, options) -> Plan:
     o = parse_options(NAME, OPTIONS, options)
+    if o["value_type"].lower() not in VALUE_LIMITS:
+        raise ControllerRuleError(message(QT_TR_NOOP(
+            "{controller} options: value_type={value}; it takes {known}"), controller=NAME,
+            value=o["value_type"], known=", ".join(VALUE_LIMITS)))
     positions = np.asarray(table.positions, dtype=float)
     columns = [-in_target_unit(table.forward, table.deviation_unit)]  # I/values: the error
     if table.backward is not None:
@@ -71,7 +85,8 @@ def build(table, options) -> Plan:
         positions, columns, _ = close_turn(NAME, positions, columns, o["modulo"], SOURCE)
     values = [np.round(c / UNIT).astype(np.int64) for c in columns]
     return Plan(o["axis_number"], o["axis_name"], positions[0] / UNIT, step / UNIT, values[0],
-                values[1] if len(values) > 1 else None, o["modulo"] > 0, o["max_points"])
+                values[1] if len(values) > 1 else None, o["modulo"] > 0, o["max_points"],
+                o["value_type"].lower())
 
 
 def lint(plan: Plan) -> Plan:
@@ -86,6 +101,17 @@ def lint(plan: Plan) -> Plan:
         raise refuse(NAME, message(QT_TR_NOOP("kw_nr_max < P-COMP-00059 = {max_points}"),
                                    max_points=plan.max_points),
                      message(QT_TR_NOOP("{n} points: choose a larger step"), n=plan.pos.size))
+    limit = VALUE_LIMITS[plan.value_type]
+    for values in (plan.pos, plan.neg):
+        if values is not None and values.size and int(np.max(np.abs(values))) > limit:
+            raise refuse(NAME, message(QT_TR_NOOP("pos/neg are {kind}: at most ±{limit} units of "
+                                                  "0.1 µm / 0.0001°"), kind=plan.value_type.upper(),
+                                       limit=limit),
+                         message(QT_TR_NOOP("a value of {value} units{hint}"),
+                                 value=int(values[np.argmax(np.abs(values))]),
+                                 hint=message(QT_TR_NOOP(" (value_type=sgn32 if the kernel's "
+                                                         "documentation types them so)"))
+                                 if plan.value_type == "sgn16" else ""))
     if plan.modulo:
         for values in (plan.pos, plan.neg):
             if values is not None and values[0] != values[-1]:

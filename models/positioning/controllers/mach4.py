@@ -5,15 +5,17 @@ Rules, from MachMotion's support documentation "Mach 4 Screw Mapping":
 * M/map: a map is given by its start point (the most negative position), its length (the
   positive travel from the start) and its number of points, evenly spaced, including
   both ends: intervals + 1.
-* M/value: the error at each point is the difference between the expected position and
-  the actual one (read here as expected − actual = −x̄, the compensation).
+* M/value: "the error at each point is the difference between the expected position and
+  the actual one". The words allow either order, so the sign is an option without a
+  default, as HEIDENHAIN's: ``values=correction`` writes expected − actual = −x̄ (the
+  compensation; the reading under which the page's example comes out right), ``values=error``
+  writes actual − expected = x̄. The file's header says which was written.
 * M/direction: builds after 2107 apply one map to both directions; builds after 4780 take
   separate maps for positive and negative travel.
 
-Not verified (see README): the sign reading above (the page's words allow either order),
-what is applied beyond the map, the limit on the number of points, and how Mach4 stores
-the map: the file written is a list of the values to enter in the plugin, not a Mach4
-file.
+Not verified (see README): the sign (hence the required option), what is applied beyond
+the map, the limit on the number of points, and how Mach4 stores the map: the file written
+is a list of the values to enter in the plugin, not a Mach4 file.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 from models.positioning.controllers.common import (
+    ControllerRuleError,
     Option,
     equidistant_step,
     in_target_unit,
@@ -35,6 +38,8 @@ NAME = "Mach4"
 SOURCE = "MachMotion, Mach 4 Screw Mapping"
 OPTIONS = (
     Option("axis", "text", "X", QT_TR_NOOP("axis or motor name")),
+    Option("values", "text", None, QT_TR_NOOP("correction (expected − actual) or error (actual − "
+                                              "expected): as the machine's Mach4 build takes it")),
 )
 
 
@@ -46,17 +51,23 @@ class Plan:
     points: int
     positive: np.ndarray
     negative: np.ndarray | None
+    sense: str = "correction"
 
 
 def build(table, options) -> Plan:
     o = parse_options(NAME, OPTIONS, options)
+    if o["values"] not in ("error", "correction"):
+        raise ControllerRuleError(message(QT_TR_NOOP(
+            "{controller} options: values=correction or values=error must be given (the sign of a "
+            "screw map's value is not stated unambiguously: see README)"), controller=NAME))
+    sign = 1.0 if o["values"] == "correction" else -1.0
     positions = np.asarray(table.positions, dtype=float)
     equidistant_step(NAME, positions, SOURCE)
-    positive = in_target_unit(table.forward, table.deviation_unit)  # M/value
+    positive = sign * in_target_unit(table.forward, table.deviation_unit)  # M/value
     negative = (None if table.backward is None else
-                in_target_unit(table.backward, table.deviation_unit))
+                sign * in_target_unit(table.backward, table.deviation_unit))
     return Plan(o["axis"], float(positions[0]), float(positions[-1] - positions[0]),
-                positions.size, positive, negative)
+                positions.size, positive, negative, o["values"])
 
 
 def lint(plan: Plan) -> Plan:
@@ -70,8 +81,10 @@ def lint(plan: Plan) -> Plan:
 
 
 def render(plan: Plan) -> str:
+    sense = ("expected - actual (values=correction)" if plan.sense == "correction" else
+             "actual - expected (values=error)")
     out = [f"; AngleBench: Mach4 screw map for {plan.axis} (Configure / Plugins / Machine "
-           "Calibration, Linear Compensation); error = expected - actual",
+           f"Calibration, Linear Compensation); error = {sense}",
            f"Axis={plan.axis}", f"Start={plan.start:.9g}", f"Length={plan.length:.9g}",
            f"Points={plan.points}"]
     step = plan.length / (plan.points - 1)
@@ -87,6 +100,8 @@ def render(plan: Plan) -> str:
 
 def write(table, options) -> tuple[list[tuple[str, str]], str]:
     plan = lint(build(table, options))
-    what = message(QT_TR_NOOP("Mach4 screw map for {axis}: start {start}, length {length}, {n} points"),
-                   axis=plan.axis, start=f"{plan.start:g}", length=f"{plan.length:g}", n=plan.points)
+    what = message(QT_TR_NOOP("Mach4 screw map for {axis}: start {start}, length {length}, {n} points "
+                              "({sense})"),
+                   axis=plan.axis, start=f"{plan.start:g}", length=f"{plan.length:g}", n=plan.points,
+                   sense=plan.sense)
     return [("", render(plan))], what

@@ -21,6 +21,12 @@ the system variables and machine data it names:
   values at both ends must both be entered and agree.
 * K3/MSEC-system: n selects the measuring system; a table for a measuring system the axis
   does not have (MD30200 NUM_ENCS) is never applied.
+* K3/MSEC-reference: the manual recommends that the compensation be zero at the reference
+  point (the axis's error there belongs to the reference point's own setting, MD34080
+  REFP_MOVE_DIST / MD34090 REFP_MOVE_DIST_CORR, not to the table). Option ``reference``: the
+  reference point's position; the table is then shifted so its value there is 0 and the
+  shift is stated, to be entered in MD34090. Without it the table is written as measured
+  and the file and the message say so.
 * One table per measuring system: the reversal is MD32450 BACKLASH's, not the table's
   (so separate forward/backward tables are refused; the mean reversal is stated).
 """
@@ -50,6 +56,9 @@ OPTIONS = (
     Option("max_points", "int", 0, QT_TR_NOOP("MD38000 MM_ENC_COMP_MAX_POINTS of the axis (0: "
                                               "not checked, the file states what it needs)"), minimum=0),
     Option("modulo", "float", 0.0, QT_TR_NOOP("a rotary axis's turn, e.g. 360 (0: not modulo)"), minimum=0),
+    Option("reference", "float", float("nan"), QT_TR_NOOP(
+        "the reference point's position: the table is made zero there (K3's recommendation; "
+        "the shift goes to MD34090)")),
 )
 
 
@@ -65,6 +74,8 @@ class Plan:
     modulo: bool
     values: np.ndarray  # measured error (axis unit), one per point
     note: str = ""
+    reference: float = float("nan")  # the reference point's position (nan: not given)
+    reference_shift: float = 0.0  # the error at the reference point taken out of the table
 
 
 def build(table, options) -> Plan:
@@ -80,8 +91,23 @@ def build(table, options) -> Plan:
     note = ""
     if o["modulo"] > 0:
         positions, (error,), note = close_turn(NAME, positions, [error], o["modulo"], SOURCE)
+    shift = 0.0
+    reference = o["reference"]
+    if np.isfinite(reference):
+        if o["modulo"] > 0:
+            reference = positions[0] + (reference - positions[0]) % o["modulo"]
+        if not positions[0] - 1e-9 <= reference <= positions[-1] + 1e-9:
+            raise refuse(NAME, message(QT_TR_NOOP("zero compensation at the reference point "
+                                                  "({source})"), source=SOURCE),
+                         message(QT_TR_NOOP("the reference point {reference} lies outside the "
+                                            "table {first}…{last}"),
+                                 reference=f"{o['reference']:g}", first=f"{positions[0]:g}",
+                                 last=f"{positions[-1]:g}"))
+        shift = float(np.interp(reference, positions, error))
+        error = error - shift
     return Plan(o["axis"], o["system"], o["encoders"], o["max_points"], step,
-                float(positions[0]), float(positions[-1]), o["modulo"] > 0, error, note)
+                float(positions[0]), float(positions[-1]), o["modulo"] > 0, error, note,
+                reference, shift)
 
 
 def lint(plan: Plan) -> Plan:
@@ -118,6 +144,10 @@ def render(plan: Plan) -> str:
            "(actual - target), a positive value moves the axis negative",
            f"; load with MD32700 ENC_COMP_ENABLE[{n}]=0 and MD38000 MM_ENC_COMP_MAX_POINTS[{n}]"
            f" >= {plan.values.size}; then set MD32700 to 1",
+           (f"; zero at the reference point {plan.reference:g} (K3); its error {plan.reference_shift:.7g} "
+            "goes to MD34090 REFP_MOVE_DIST_CORR" if np.isfinite(plan.reference) else
+            "; written as measured: K3 recommends zero compensation at the reference point "
+            "(option reference)"),
            "CHANDATA(1)"]
     out += [f"$AA_ENC_COMP[{n},{i},{ax}]={v:.7f}" for i, v in enumerate(plan.values)]
     out += [f"$AA_ENC_COMP_STEP[{n},{ax}]={plan.step:.7g}",
@@ -133,4 +163,11 @@ def write(table, options) -> tuple[list[tuple[str, str]], str]:
     what = message(QT_TR_NOOP("SINUMERIK 840D measuring system error compensation, axis {axis}, "
                               "measuring system {system}, {n} points"),
                    axis=plan.axis, system=plan.system, n=plan.values.size)
-    return [("", render(plan))], joined((what, "; " if plan.note else "", plan.note))
+    if np.isfinite(plan.reference):
+        ref = message(QT_TR_NOOP("zero at the reference point {reference}: its error, {shift} (axis "
+                                 "unit), is for MD34090 REFP_MOVE_DIST_CORR"),
+                      reference=f"{plan.reference:g}", shift=f"{plan.reference_shift:.6g}")
+    else:
+        ref = message(QT_TR_NOOP("written as measured: the manual (K3) recommends zero compensation "
+                                 "at the reference point (option reference=POSITION)"))
+    return [("", render(plan))], joined((what, "; " if plan.note else "", plan.note, "; ", ref))

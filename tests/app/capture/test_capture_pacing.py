@@ -17,9 +17,9 @@ from app.capture.worker import CaptureWorker
 from app.main import main
 from models.capture.geocom import parse_geocom_reply
 from tests.app.capture.test_capture_link import FAST, collect
+from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
 CLI_FAST = ["--silence", "0.2", "--retries", "1"]
-from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
 
 def rows_of(path):
@@ -189,7 +189,8 @@ def test_a_polled_autocollimator_through_the_stability_gate(tmp_path):
                      "--stable", "0.5", "--dwell", "0.15", "--poll-rate", "50", "--silence", "1",
                      "--retries", "0", "--timeout", "20"]) == 0
     rows = rows_of(out)[1:]
-    assert [tuple(map(float, r[1:])) for r in rows] == [pytest.approx((5.0, 6.0)), pytest.approx((15.0, 16.0))]
+    assert [tuple(map(float, r[1:])) for r in rows] == [pytest.approx((5.0, 6.0)),
+                                                        pytest.approx((15.0, 16.0))]
 
 
 def test_mode_is_refused_for_an_instrument_that_is_always_asked(tmp_path, capsys):

@@ -81,7 +81,7 @@ def _options(fmt, axis):
         "heidenhain": f"axis=C,values=error,{m}" if modulo else "axis=X,values=error",
         "twincat": f"name=Table1,{m}",
         "isg": f"axis_name=C,{m}",
-        "mach4": "axis=X",
+        "mach4": "axis=X,values=correction",
     }[fmt]
 
 
@@ -240,9 +240,10 @@ def test_lints_refuse_naming_the_rule(tmp_path):
         CONTROLLERS["mach4"].write(rotary, "axle=X")
     uneven = compensation_table(measure("linear", targets=np.array([0, 50, 120, 200.0])),
                                 tables="bidirectional")
-    for fmt in ("sinumerik", "fanuc", "twincat", "isg", "mach4"):
+    for fmt in ("sinumerik", "fanuc", "twincat", "isg", "mach4", "heidenhain"):
         with pytest.raises(ControllerRuleError, match="equidistant"):
-            CONTROLLERS[fmt].write(uneven, "")
+            CONTROLLERS[fmt].write(uneven, {"mach4": "values=correction",
+                                            "heidenhain": "values=error"}.get(fmt, ""))
     # nothing written when refused
     with pytest.raises(ControllerRuleError):
         write_compensation(str(tmp_path / "no"), measure("rotary"), 0.0, "bidirectional",
