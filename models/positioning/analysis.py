@@ -100,10 +100,12 @@ PARAMETERS = (
                    "is refused naming the rule"),
     Parameter("compensation_controller_options", "controller options", "text", "",
               help="The controller's settings as KEY=VALUE, comma-separated, e.g. "
-                   "axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, "
-                   "magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, "
-                   "modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, "
-                   "max_points=1500 (ISG); axis=X (Mach4)"),
+                   "axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, "
+                   "detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i "
+                   "(FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); "
+                   "axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, "
+                   "values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 "
+                   "(LinuxCNC, a rotary joint)"),
     # inputs of the budget the readings cannot show, in the deviation unit (0: not stated, and
     # the certificate says it is not in U)
     Parameter("misalignment_u", "misalignment u", "float", 0.0, "", 0.0, 1e6, zero="not stated",
