@@ -414,6 +414,26 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
 
         return crosscal_certificate(result, metadata, source_name, self.method_reference)
 
+    def uncertainty_budgets(self, result, metadata):
+        # each item's budget as its certificate states it (about the mean of the n values);
+        # nothing when the design does not separate them (the values are not the result)
+        import dataclasses
+
+        from models.certificate.uncertainty_json import PointUncertainty
+        from models.crosscal.report import crosscal_budget
+
+        s = result.solution
+        if not s.separable:
+            return {}
+        budgets = {name: crosscal_budget(dataclasses.replace(result, certificate_of=item),
+                                              metadata)
+                   for item, name in (("encoder", "encoder_error_arcsec"),
+                                      ("polygon", "polygon_deviation_arcsec"))}
+        budgets["polygon_deviation_from_face1_arcsec"] = PointUncertainty(
+            np.asarray(result.polygon_u_from_face1_arcsec(), dtype=float),
+            np.full(s.faces, float(s.coverage_factor)))
+        return budgets
+
     def correction_table(self, result, settings, path) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,
         and the window's "Save face deviations for the polygon workbench")."""

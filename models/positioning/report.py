@@ -334,7 +334,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     conformity = decide_conformity(curve, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=QT_TR_NOOP("mean positional deviation"),
-                                   point_names=names)
+                                   point_names=names, not_stated=not_stated(result))
     stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
     statistics = Table(QT_TR_NOOP("Figures of the axis"),

@@ -15,7 +15,7 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
-from models.theodolite.report import theodolite_certificate
+from models.theodolite.report import theodolite_certificate, theodolite_json_budgets
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -223,6 +223,9 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
 
     def certificate(self, result, metadata, source_name=""):
         return theodolite_certificate(result, metadata, source_name, self.method_reference)
+
+    def uncertainty_budgets(self, result, metadata):
+        return theodolite_json_budgets(result, metadata)
 
     def overlay_figure(self, result):
         return error_figure(result)

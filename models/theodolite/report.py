@@ -47,7 +47,8 @@ from models.theodolite.plots import corrected_with_uncertainty, error_figure, re
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate"]
+__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate",
+           "theodolite_json_budgets"]
 
 METHOD = QT_TR_NOOP(
     "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
@@ -116,12 +117,31 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
                    "the repeatability (ν counted once)"), common=True,
         dof_group="repeatability"))
     components.append(BudgetComponent(
-        QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", result.model_uncertainty_arcsec,
+        MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
                                   "ζ(θ)")))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
+
+
+def theodolite_json_budgets(result: TheodoliteResult,
+                            metadata: CertificateMetadata) -> dict[str, UncertaintyBudget]:
+    """The budget of each error array of the JSON: the raw error (the readings and the
+    standards: every input but the set-up model), the model error (the set-up model alone)
+    and the corrected error (all, the certificate's)."""
+    full = theodolite_budget(result, metadata)
+
+    def part(keep) -> UncertaintyBudget:
+        return UncertaintyBudget(tuple(c for c in full.components if keep(c.name == MODEL_INPUT)),
+                                 full.points, full.probability, full.unit)
+
+    return {"raw_error_arcsec": part(lambda model: not model),
+            "model_error_arcsec": part(lambda model: model),
+            "corrected_error_arcsec": full}
 
 
 def repeated_readings_components(result: TheodoliteResult) -> list[BudgetComponent]:
