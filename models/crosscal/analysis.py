@@ -21,6 +21,7 @@ from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, rea
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
@@ -309,13 +310,13 @@ def summary(result: CrossCalResult) -> str:
         out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
                            span=_span(s.encoder_error_arcsec),
                            ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                           u=f"{np.max(result.expanded_u_arcsec[0]):.3f}\""))
+                           u=expanded_text(float(np.max(result.expanded_u_arcsec[0])))))
     else:
         out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
                            span=_span(s.polygon_deviation_arcsec),
-                           u=f"{np.max(result.expanded_u_arcsec[1]):.3f}\""))
+                           u=expanded_text(float(np.max(result.expanded_u_arcsec[1])))))
     else:
         out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]

@@ -32,6 +32,8 @@ from models.certificate.document import (
     decision_rows,
     opinion,
     reference_standard_components,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
@@ -251,8 +253,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     phase_deg = np.degrees(result.theta_rad[idx])
     numeric = list(zip(idx + 1, phase_deg, raw[idx], correction[idx], comp[idx], big_u[idx],
                        strict=True))
-    rows = [(f"{int(i)}", f"{p:.2f}", f"{r:+.3f}", f"{c:+.3f}", f"{e:+.3f}", f"{u:.3f}")
-            for i, p, r, c, e, u in numeric]
+    shown = table_decimals(big_u)  # each sample to the decimal of its own U (GUM 7.2.6)
+    rows = [(f"{int(i)}", f"{p:.2f}", *cells, u_text) for i, p, r, c, e, u in numeric
+            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     if idx.size == raw.size:
         note = message(QT_TR_NOOP("All {n} samples are shown; they are also in the CSV/XLSX "
                                   "results export."), n=raw.size)

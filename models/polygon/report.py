@@ -43,6 +43,8 @@ from models.certificate.document import (
     decision_rows,
     reference_standard_components,
     resolution_component,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
@@ -425,8 +427,10 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
     numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
                        correction, result.mean_corrected_arcsec, big_u, strict=True))
-    rows = [(f"{int(p)}", f"{t:.3f}", f"{r:+.2f}", f"{c:+.3f}", f"{e:+.2f}", f"{u:.2f}")
-            for p, t, r, c, e, u in numeric]
+    shown = table_decimals(big_u)  # each point to the decimal of its own U (GUM 7.2.6)
+    rows = [(f"{int(p)}", f"{t:.3f}", *cells, u_text)
+            for p, t, r, c, e, u in numeric
+            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     title = (message(QT_TR_NOOP("Results per position (mean of the two directions' means)"))
              if result.reversal_arcsec is not None else
              message(QT_TR_NOOP("Results per position (mean of {sets} sets)"), sets=m) if m > 1

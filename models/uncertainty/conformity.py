@@ -552,7 +552,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         return Conformity("not assessed", message(QT_TR_NOOP(
             "No statement of conformity: {reason}."), reason=reason), rule_text,
             monte_carlo=mc, reason=reason, **common)
-    d = uncertainty_decimals(min(upper, lower) if min(upper, lower) > 0 else max(upper, lower))
+    d = uncertainty_decimals(max(upper, lower))  # two significant digits at most on each side
     verdict = _verdict(x, t, 0.0 if rule == "simple" else upper, rule,
                        0.0 if rule == "simple" else lower)
     interval = asymmetric_text(lower, upper, q, d)
