@@ -266,17 +266,17 @@ class Conformity:
     monte_carlo: HalfRangeEstimate | None = None
     expanded_lower: float = float("nan")  # an asymmetric interval's lower half-width (else U)
     unit: str = "arcsec"  # the unit of value, expanded and expanded_lower (models.quantity)
-    #: why no statement of conformity is made ("" when one is): U incomplete, U ≥ T, the
-    #: figure withheld, the run invalid, no tolerance
+    # why no statement of conformity is made ("" when one is): U incomplete, U ≥ T, the
+    # figure withheld, the run invalid, no tolerance
     reason: str = ""
     rule_key: str = ""  # "simple", "guarded_binary" or "guarded"
     probability: float = float("nan")  # the coverage probability of the interval
-    #: the probability that the item conforms (true value within ±T), from the decided
-    #: value's interval (see :func:`probability_conforming`)
+    # the probability that the item conforms (true value within ±T), from the decided
+    # value's interval (see :func:`probability_conforming`)
     conforming_probability: float = float("nan")
-    #: the probability of a wrong decision at the decision stated: false acceptance after a
-    #: pass or conditional pass, false rejection after a fail or conditional fail (JCGM
-    #: 106:2012 9.5, specific risk); nan when no statement is made
+    # the probability of a wrong decision at the decision stated: false acceptance after a
+    # pass or conditional pass, false rejection after a fail or conditional fail (JCGM
+    # 106:2012 9.5, specific risk); nan when no statement is made
     decision_risk: float = float("nan")
 
     @property
@@ -307,8 +307,8 @@ class Conformity:
         return self.verdict != "not assessed"
 
 
-#: how the probabilities of conformity and of a wrong decision are computed (stated on
-#: the certificate and checked in tests/models/uncertainty/test_conformity_decision.py)
+# how the probabilities of conformity and of a wrong decision are computed (stated on
+# the certificate and checked in tests/models/uncertainty/test_conformity_decision.py)
 RISK_METHOD = QT_TR_NOOP(
     "probability of conformity from the decided value's own interval (JCGM 106:2012, 9.5: "
     "specific risk): the value's distribution taken as normal on each side of it, each side's "
