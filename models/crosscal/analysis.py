@@ -349,10 +349,10 @@ def verdict(result: CrossCalResult) -> str:
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
                    ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                   ue=f"{np.max(result.expanded_u_arcsec[0]):.3f}\"",
+                   ue=expanded_text(float(np.max(result.expanded_u_arcsec[0]))),
                    low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
                    high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
-                   ud=f"{np.max(result.expanded_u_arcsec[1]):.3f}\"")
+                   ud=expanded_text(float(np.max(result.expanded_u_arcsec[1]))))
 
 
 def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
