@@ -161,15 +161,23 @@ class CrossCalResult:
         scatter through the design with the bench's stated bounds (scale, unmeasured tilt), k
         from each value's ν_eff (models.crosscal.report.crosscal_budget, without the item's
         resolution, which only the certificate details give)."""
+
+
+        e, d = (budget.expanded for budget in self.bench_budgets)
+        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+
+    @functools.cached_property
+    def bench_budgets(self) -> tuple[Any, Any]:
+        """The budgets (models.uncertainty.budget.UncertaintyBudget) of E and of d without
+        the certificate details (no item resolution, the default coverage probability)."""
         import dataclasses
 
         from models.certificate.metadata import CertificateMetadata
         from models.crosscal.report import crosscal_budget
 
         details = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
-        e, d = (crosscal_budget(dataclasses.replace(self, certificate_of=item), details).expanded
-                for item in ("encoder", "polygon"))
-        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+        return tuple(crosscal_budget(dataclasses.replace(self, certificate_of=item), details)
+                     for item in ("encoder", "polygon"))
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
@@ -420,16 +428,22 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
         # nothing when the design does not separate them (the values are not the result)
         import dataclasses
 
+        from models.certificate.metadata import CertificateMetadata
         from models.certificate.uncertainty_json import PointUncertainty
         from models.crosscal.report import crosscal_budget
 
         s = result.solution
         if not s.separable:
             return {}
-        budgets = {name: crosscal_budget(dataclasses.replace(result, certificate_of=item),
-                                              metadata)
-                   for item, name in (("encoder", "encoder_error_arcsec"),
-                                      ("polygon", "polygon_deviation_arcsec"))}
+        names = ("encoder_error_arcsec", "polygon_deviation_arcsec")
+        plain = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
+        if (not metadata.item_resolution_in("arcsec")
+                and metadata.coverage_probability == plain.coverage_probability):
+            budgets = dict(zip(names, result.bench_budgets, strict=True))  # computed once
+        else:
+            budgets = {name: crosscal_budget(dataclasses.replace(result, certificate_of=item),
+                                             metadata)
+                       for item, name in zip(("encoder", "polygon"), names, strict=True)}
         budgets["polygon_deviation_from_face1_arcsec"] = PointUncertainty(
             np.asarray(result.polygon_u_from_face1_arcsec(), dtype=float),
             np.full(s.faces, float(s.coverage_factor)))
