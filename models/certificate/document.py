@@ -33,7 +33,7 @@ from models.uncertainty.conformity import (
 from models.workbench import SIGN_CONVENTION_TEXT
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "format_uncertain", "rounded_cells", "table_decimals", "opinion", "reference_standard_components",
+           "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion", "reference_standard_components",
            "resolution_component"]
 
 
@@ -256,3 +256,15 @@ def rounded_cells(values, expanded: float, reference_decimals: int,
         u_text = f"{expanded:.{d}f}"
     spec = f"+.{d}f" if signed else f".{d}f"
     return [format(float(v), spec) for v in values], u_text
+
+
+def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,
+             fallback: int = 5) -> tuple[str, str]:
+    """A parameter and its U, each with ``unit`` (" V", " rad"): U to two significant digits
+    at most and the value to its decimal (GUM 7.2.6); without a U, the value to
+    ``fallback`` decimals and U "—"."""
+    spec = "+" if signed else ""
+    if not (math.isfinite(expanded) and expanded > 0):
+        return f"{value:{spec}.{fallback}f}{unit}", "—"
+    d = uncertainty_decimals(expanded)
+    return f"{value:{spec}.{d}f}{unit}", f"{expanded:.{d}f}{unit}"

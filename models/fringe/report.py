@@ -30,6 +30,7 @@ from models.certificate.document import (
     CertificateDocument,
     Table,
     decision_rows,
+    gum_pair,
     opinion,
     reference_standard_components,
     rounded_cells,
@@ -196,13 +197,15 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         rows.append((message(QT_TR_NOOP("{channel}: offset A₀"), channel=label),
-                     f"{fit.offset:+.5f} V", f"{k * fit.u_offset:.5f} V"))
+                     *gum_pair(fit.offset, k * fit.u_offset, " V", signed=True)))
         for h in fit.orders:
             ua = fit.u_amplitude.get(h, float("nan"))
             up = fit.u_phase.get(h, float("nan"))
-            rows.append((f"{label}: A{h}", f"{fit.amplitude[h]:.5f} V", f"{k * ua:.5f} V"))
+            # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
+            rows.append((f"{label}: A{h}", *gum_pair(fit.amplitude[h], k * ua, " V")))
             if abs(fit.amplitude[h]) > k * ua and np.isfinite(up) and k * up < np.pi:
-                rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], k * up, " rad",
+                                                         signed=True)))
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
