@@ -33,8 +33,8 @@ from models.uncertainty.conformity import (
 from models.workbench import SIGN_CONVENTION_TEXT
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion", "reference_standard_components",
-           "resolution_component"]
+           "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion",
+           "reference_standard_components", "resolution_component"]
 
 
 @dataclass(frozen=True)
