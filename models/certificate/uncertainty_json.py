@@ -134,8 +134,9 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     withheld = ""
     try:
         budgets = kind.uncertainty_budgets(result, metadata)
-    except (MetadataError, ValueError) as exc:
-        budgets, withheld = {}, str(reason_of(exc))
+    except (MetadataError, ValueError) as exc:  # U not determined: the arrays' U null
+        names = getattr(kind, "uncertainty_array_names", lambda r: ())(result)
+        budgets, withheld = dict.fromkeys(names), str(reason_of(exc))
     conformity, tolerance, why = None, None, ""
     if metadata.tolerance is not None or getattr(kind, "tolerance_in_settings", False):
         try:  # the decision as the certificate makes it

@@ -418,6 +418,9 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
     def certificate(self, result, metadata, source_name=""):
         return positioning_certificate(result, metadata, source_name, self.method_reference)
 
+    def uncertainty_array_names(self, result):
+        return [f"per_target/mean_{name}" for name, _, _ in result.directions_present()]
+
     def uncertainty_budgets(self, result, metadata):
         # the budget's points: every target of each direction measured, direction after
         # direction (as the certificate's table); U of the mean deviation per_target.mean_*

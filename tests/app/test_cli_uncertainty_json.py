@@ -139,3 +139,14 @@ def test_u_not_smaller_than_t_gives_numbers_and_no_verdict(quantity, tolerance, 
     assert decided["verdict"] is None and "not smaller than" in decided["reason"]
     assert decided["interval_high"] - decided["value"] >= tolerance
     assert decided["tolerance"] == tolerance
+
+
+def test_u_not_determined_is_null_with_the_reason(capsys, tmp_path):
+    """A target approached once has no repeatability: U is not determined, said so."""
+    path = tmp_path / "log.csv"
+    path.write_text("target,run,direction,deviation\n0,1,+,1.0\n0,2,+,1.2\n10,1,+,2.0\n"
+                    "20,1,+,2.5\n20,2,+,2.4\n", encoding="utf-8")
+    assert main(["analyze", "positioning", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["per_target"]["expanded_uncertainty_mean_up"] is None
+    assert "approached fewer than twice" in data["uncertainty_withheld"]
