@@ -4035,7 +4035,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
-        <extracomment>why no statement of conformity is made (&quot;&quot; when one is): U incomplete, U ≥ T, the figure withheld, the run invalid, no tolerance the probability that the item conforms (true value within ±T), from the decided value&apos;s interval (see :func:`probability_conforming`) the probability of a wrong decision at the decision stated: false acceptance after a pass or conditional pass, false rejection after a fail or conditional fail (JCGM 106:2012 9.5, specific risk); nan when no statement is made how the probabilities of conformity and of a wrong decision are computed (stated on the certificate and checked in tests/models/uncertainty/test_conformity_decision.py)</extracomment>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
