@@ -122,19 +122,23 @@ def merge_json(data: dict[str, Any], extra: Mapping[str, Any]) -> dict[str, Any]
     return data
 
 
+#: what a budget or a decision raises when the readings do not determine it (a degenerate
+#: record): the JSON then says why, and still prints every figure it has
+_NOT_DETERMINED = (ValueError, ArithmeticError, IndexError, np.linalg.LinAlgError)
+
+
 def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
                                settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """The U keys of ``kind``'s JSON for ``result`` with the certificate details
     ``metadata`` (the standards and their U, the tolerance, the decision rule and quantity):
     the budgets the workbench names for its arrays, the decision its certificate makes."""
-    from models.certificate.metadata import MetadataError
     from models.messages import reason_of
 
     probability = float(metadata.coverage_probability)
     withheld = ""
     try:
         budgets = kind.uncertainty_budgets(result, metadata)
-    except (MetadataError, ValueError) as exc:  # U not determined: the arrays' U null
+    except _NOT_DETERMINED as exc:  # U not determined: the arrays' U null
         names = getattr(kind, "uncertainty_array_names", lambda r: ())(result)
         budgets, withheld = dict.fromkeys(names), str(reason_of(exc))
     conformity, tolerance, why = None, None, ""
@@ -142,7 +146,7 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         try:  # the decision as the certificate makes it
             document = kind.certificate(result, metadata)
             conformity, tolerance = document.conformity, document.tolerance
-        except (MetadataError, ValueError) as exc:
+        except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
     out = uncertainty_json(budgets, probability, conformity, tolerance, withheld)
     if conformity is None:
