@@ -253,6 +253,18 @@ def run_analyze(argv: list[str]) -> int:
             return EXIT_BAD_INPUT
     if args.json:
         data = kind.to_json(result)
+        if isinstance(kind, IssuesCertificates):
+            # U beside every error array and the decided quantity, with the certificate
+            # details given (their standards, tolerance and decision rule), else none
+            from models.certificate.uncertainty_json import merge_json, workbench_uncertainty_json
+
+            try:
+                metadata = _read_metadata(args.metadata,
+                                          kind.error_unit(kind.settings_with_defaults(settings)))
+            except MetadataError as exc:
+                _say(f"anglebench analyze: {_why(exc, words)}")
+                return EXIT_BAD_INPUT
+            merge_json(data, workbench_uncertainty_json(kind, result, metadata, settings))
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")

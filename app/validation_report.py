@@ -249,19 +249,24 @@ def validation_pdf_bytes(cases: list[ValidationCase], run_at: dt.datetime, trial
     pdf.key_values([(QT_TR_NOOP("Document ID"), ident), *_versions()])
     pdf.heading(QT_TR_NOOP("What was checked"))
     pdf.paragraph(message(QT_TR_NOOP(
-        "Four workbenches. Three use non-standard methods, each from a published paper: the "
+        "Five workbenches. Three use non-standard methods, each from a published paper: the "
         "theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon "
         "encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe "
         "signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the "
         "positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T "
-        "17421.2). For each: the publication's check figures or, for the standard method, "
+        "17421.2). The fifth, the cross-calibration of a polygon and an encoder against each "
+        "other, solves the closure of the circle by least squares (Estler's rosette). For "
+        "each: the publication's check figures or, for the standard methods, "
         "examples worked by hand; exact simulations with known truth made by first-principles "
         "simulators (3-D rotations of mirror and face normals, sampled signals with a true "
         "phase, an axis with a known error and lost motion) that share no code with the "
         "analysis, run through the whole analysis; and the GUM uncertainty budget against the "
         "spread of {trials} simulated repeated measurements (JCGM 101). Then what every "
-        "workbench shares: the coverage factor k from ν, the decision rules, the certificate's "
-        "text as a reader extracts it from the PDF, the register, and file import."),
+        "workbench shares: the coverage factor k from ν, U rounded to two significant digits "
+        "(GUM 7.2.6), the decision rules of ILAC-G8 with the guard band from the decided "
+        "value's own interval, the probability of a false acceptance (JCGM 106) and the "
+        "decisions refused (U incomplete, U ≥ T), the certificate's text as a reader extracts "
+        "it from the PDF, the register, and file import."),
         trials=trials))
     pdf.heading(QT_TR_NOOP("Acceptance criteria"))
     for criterion in ACCEPTANCE:

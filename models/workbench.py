@@ -161,11 +161,20 @@ class IssuesCertificates(ABC):
     #: (QT_TR_NOOP; the closure of the circle for a self-calibrating method); None: the
     #: certificate states traceability through the reference standards listed, as usual
     traceability_basis: ClassVar[str | None] = None
+    #: its settings always give a tolerance (the polygon's grade): a decision is always made
+    tolerance_in_settings: ClassVar[bool] = False
 
     @abstractmethod
     def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:
         """The :class:`~models.certificate.document.CertificateDocument` of ``result``
         (without the settings' listing: :meth:`Workbench.certificate_document` adds it)."""
+
+    def uncertainty_budgets(self, result: Any, metadata: Any) -> dict[str, Any]:
+        """The budget (models.uncertainty.budget.UncertaintyBudget, or
+        models.certificate.uncertainty_json.PointUncertainty) of each error array of the
+        JSON, by its name (``"object/name"`` for an array inside an object): the JSON gets
+        ``expanded_uncertainty_<name>`` and ``coverage_factor_<name>`` beside it."""
+        return {}
 
     def certificate_doubt(self, result: Any) -> str:
         """Why a certificate of ``result`` needs the user's confirmation first ("" when it

@@ -59,6 +59,9 @@ _NUMBER = r"[+\-−]?(?:\d+\.?\d*|\.\d+)(?:[eE][+\-−]?\d+)?"
 # a figure with its U as the certificate prints it: "12.34\", U = 0.81\"", or an asymmetric
 # interval "12.34\", U = −0.62\"/+0.81\"" (also on a line of its own under the figure)
 _WITH_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)(?P<lower>−\S+?)/(?P<upper>\+\S+)\s*")
+# the same with a symmetric interval: "25.01\", U = ±1.35\"", or "0.407\"\n±0.094\"" (its U
+# both below and above the value: the same columns as an asymmetric one)
+_WITH_SYMMETRIC_U = re.compile(r"\s*(?P<value>.+?)(?:, U = |\s*\n\s*)±(?P<u>\S+)\s*")
 
 
 def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
@@ -67,9 +70,13 @@ def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
     ((-0.12, 0.34), "\"", " … "); ``None`` for a cell that is not figures alone (a word,
     a sentence, a checksum), which then stays text."""
     asymmetric = _WITH_U.fullmatch(text)
+    symmetric = _WITH_SYMMETRIC_U.fullmatch(text)
     if asymmetric:  # value, U below it, U above it (both as positive half-widths)
         join = "U−/U+"
         parts = [asymmetric["value"], asymmetric["lower"].lstrip("−"), asymmetric["upper"]]
+    elif symmetric:
+        join = "U−/U+"
+        parts = [symmetric["value"], symmetric["u"], symmetric["u"]]
     else:
         join = next((j for j in _JOINS if j in text), "")
         parts = text.split(join) if join else [text]
@@ -178,7 +185,13 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("Decided quantity", document.conformity.quantity),
         (f"Decided value ({q})", document.conformity.value),
         (f"U of the decided value ({q})", document.conformity.expanded),
+        (f"Decided value: interval low ({q})", document.conformity.interval_low),
+        (f"Decided value: interval high ({q})", document.conformity.interval_high),
+        ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
+        ("Probability of conformity (%)", 100.0 * document.conformity.conforming_probability),
+        ("Probability of a wrong decision (%)", 100.0 * document.conformity.decision_risk),
         ("Verdict", document.conformity.verdict),
+        ("No statement of conformity because", document.conformity.reason),
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
         *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),

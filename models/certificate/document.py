@@ -24,6 +24,7 @@ from models.uncertainty.budget import (
     divisor_for_basis,
 )
 from models.uncertainty.conformity import (
+    REFERENCE_POINT_TEXT,
     Conformity,
     asymmetric_text,
     significant_decimals,
@@ -32,8 +33,8 @@ from models.uncertainty.conformity import (
 from models.workbench import SIGN_CONVENTION_TEXT
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "format_uncertain", "opinion", "reference_standard_components",
-           "resolution_component"]
+           "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion",
+           "reference_standard_components", "resolution_component"]
 
 
 @dataclass(frozen=True)
@@ -211,7 +212,8 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
     if math.isfinite(conformity.value):
         lower = conformity.expanded_lower
         if math.isfinite(lower) and lower > 0:  # an asymmetric interval, printed as such
-            d = significant_decimals(min(lower, conformity.expanded)) or digits
+            # two significant digits at most on either side (GUM 7.2.6): the larger's decimal
+            d = significant_decimals(max(lower, conformity.expanded)) or digits
             value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
                      f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
         else:
@@ -231,3 +233,38 @@ def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) 
     if decimals is None:
         return f"{value:.{digits}f}{unit}"
     return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"
+
+
+def table_decimals(expanded, fallback: int = 2) -> int:
+    """The decimal a table's points are printed to where a point's own U gives none (a
+    reference point, U = 0): that of the median positive U."""
+    u = np.asarray(expanded, dtype=float)
+    positive = u[np.isfinite(u) & (u > 0)]
+    return uncertainty_decimals(float(np.median(positive))) if positive.size else fallback
+
+
+def rounded_cells(values, expanded: float, reference_decimals: int,
+                  signed: bool = True) -> tuple[list[str], str]:
+    """A point's figures and its U as GUM 7.2.6 asks: U to two significant digits at most,
+    each figure to the same decimal; U = 0 (a reference point, zero by definition) printed
+    so, its figures to ``reference_decimals``."""
+    if expanded == 0 or not math.isfinite(expanded):
+        d = reference_decimals
+        u_text = message(REFERENCE_POINT_TEXT) if expanded == 0 else "—"
+    else:
+        d = uncertainty_decimals(expanded)
+        u_text = f"{expanded:.{d}f}"
+    spec = f"+.{d}f" if signed else f".{d}f"
+    return [format(float(v), spec) for v in values], u_text
+
+
+def gum_pair(value: float, expanded: float, unit: str, signed: bool = False,
+             fallback: int = 5) -> tuple[str, str]:
+    """A parameter and its U, each with ``unit`` (" V", " rad"): U to two significant digits
+    at most and the value to its decimal (GUM 7.2.6); without a U, the value to
+    ``fallback`` decimals and U "—"."""
+    spec = "+" if signed else ""
+    if not (math.isfinite(expanded) and expanded > 0):
+        return f"{value:{spec}.{fallback}f}{unit}", "—"
+    d = uncertainty_decimals(expanded)
+    return f"{value:{spec}.{d}f}{unit}", f"{expanded:.{d}f}{unit}"

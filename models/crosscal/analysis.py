@@ -21,6 +21,7 @@ from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, rea
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
@@ -160,15 +161,23 @@ class CrossCalResult:
         scatter through the design with the bench's stated bounds (scale, unmeasured tilt), k
         from each value's ν_eff (models.crosscal.report.crosscal_budget, without the item's
         resolution, which only the certificate details give)."""
+
+
+        e, d = (budget.expanded for budget in self.bench_budgets)
+        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+
+    @functools.cached_property
+    def bench_budgets(self) -> tuple[Any, Any]:
+        """The budgets (models.uncertainty.budget.UncertaintyBudget) of E and of d without
+        the certificate details (no item resolution, the default coverage probability)."""
         import dataclasses
 
         from models.certificate.metadata import CertificateMetadata
         from models.crosscal.report import crosscal_budget
 
         details = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
-        e, d = (crosscal_budget(dataclasses.replace(self, certificate_of=item), details).expanded
-                for item in ("encoder", "polygon"))
-        return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
+        return tuple(crosscal_budget(dataclasses.replace(self, certificate_of=item), details)
+                     for item in ("encoder", "polygon"))
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
@@ -309,13 +318,13 @@ def summary(result: CrossCalResult) -> str:
         out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
                            span=_span(s.encoder_error_arcsec),
                            ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                           u=f"{np.max(result.expanded_u_arcsec[0]):.3f}\""))
+                           u=expanded_text(float(np.max(result.expanded_u_arcsec[0])))))
     else:
         out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
                            span=_span(s.polygon_deviation_arcsec),
-                           u=f"{np.max(result.expanded_u_arcsec[1]):.3f}\""))
+                           u=expanded_text(float(np.max(result.expanded_u_arcsec[1])))))
     else:
         out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
@@ -348,10 +357,10 @@ def verdict(result: CrossCalResult) -> str:
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
                    ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                   ue=f"{np.max(result.expanded_u_arcsec[0]):.3f}\"",
+                   ue=expanded_text(float(np.max(result.expanded_u_arcsec[0]))),
                    low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
                    high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
-                   ud=f"{np.max(result.expanded_u_arcsec[1]):.3f}\"")
+                   ud=expanded_text(float(np.max(result.expanded_u_arcsec[1]))))
 
 
 def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
@@ -413,6 +422,32 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
         from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
 
         return crosscal_certificate(result, metadata, source_name, self.method_reference)
+
+    def uncertainty_budgets(self, result, metadata):
+        # each item's budget as its certificate states it (about the mean of the n values);
+        # nothing when the design does not separate them (the values are not the result)
+        import dataclasses
+
+        from models.certificate.metadata import CertificateMetadata
+        from models.certificate.uncertainty_json import PointUncertainty
+        from models.crosscal.report import crosscal_budget
+
+        s = result.solution
+        if not s.separable:
+            return {}
+        names = ("encoder_error_arcsec", "polygon_deviation_arcsec")
+        plain = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
+        if (not metadata.item_resolution_in("arcsec")
+                and metadata.coverage_probability == plain.coverage_probability):
+            budgets = dict(zip(names, result.bench_budgets, strict=True))  # computed once
+        else:
+            budgets = {name: crosscal_budget(dataclasses.replace(result, certificate_of=item),
+                                             metadata)
+                       for item, name in zip(("encoder", "polygon"), names, strict=True)}
+        budgets["polygon_deviation_from_face1_arcsec"] = PointUncertainty(
+            np.asarray(result.polygon_u_from_face1_arcsec(), dtype=float),
+            np.full(s.faces, float(s.coverage_factor)))
+        return budgets
 
     def correction_table(self, result, settings, path) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,

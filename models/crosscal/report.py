@@ -16,7 +16,13 @@ import math
 
 import numpy as np
 
-from models.certificate.document import CertificateDocument, Table, decision_rows
+from models.certificate.document import (
+    CertificateDocument,
+    Table,
+    decision_rows,
+    rounded_cells,
+    table_decimals,
+)
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, TITLE
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
@@ -242,9 +248,13 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         start = result.encoder_start_deg
         reading = (start + first) % 360.0
         u0 = result.encoder_u_from_step0_arcsec()
-        rows = [(f"{k}", f"{first[k]:.4f}", f"{reading[k]:.4f}", f"{values[k]:+.3f}",
-                 f"{big_u[k]:.3f}", f"{values[k] - values[0]:+.3f}", f"{u0[k]:.3f}")
-                for k in range(n)]
+        shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
+        rows = [(f"{k}", f"{first[k]:.4f}", f"{reading[k]:.4f}", *mean_cells, mean_u,
+                 *first_cells, first_u)
+                for k in range(n)
+                for (mean_cells, mean_u), (first_cells, first_u) in
+                ((rounded_cells((values[k],), big_u[k], shown),
+                  rounded_cells((values[k] - values[0],), u0[k], shown)),)]
         results = Table(QT_TR_NOOP("Encoder error at its steps"),
                         (QT_TR_NOOP("Step"), QT_TR_NOOP("From the start (°)"),
                          QT_TR_NOOP("Encoder reading (°)"), QT_TR_NOOP("Error (\")"), "U (\")",
@@ -283,8 +293,12 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         plots = [encoder_figure(result)]
     else:
         u1 = result.polygon_u_from_face1_arcsec()
-        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", f"{values[i]:+.3f}", f"{big_u[i]:.3f}",
-                 f"{values[i] - values[0]:+.3f}", f"{u1[i]:.3f}") for i in range(n)]
+        shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
+        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", *mean_cells, mean_u, *first_cells, first_u)
+                for i in range(n)
+                for (mean_cells, mean_u), (first_cells, first_u) in
+                ((rounded_cells((values[i],), big_u[i], shown),
+                  rounded_cells((values[i] - values[0],), u1[i], shown)),)]
         results = Table(QT_TR_NOOP("Face deviations"),
                         (QT_TR_NOOP("Face"), QT_TR_NOOP("Nominal (°)"),
                          QT_TR_NOOP("Deviation (\")"), "U (\")", QT_TR_NOOP("From face 1 (\")"),

@@ -27,7 +27,7 @@ from models.fringe.model import (
 )
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.plots import figures as fringe_figures
-from models.fringe.report import fringe_certificate
+from models.fringe.report import fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
@@ -533,6 +533,12 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
 
     def certificate(self, result, metadata, source_name=""):
         return fringe_certificate(result, metadata, source_name, self.method_reference)
+
+    def uncertainty_budgets(self, result, metadata):
+        # as found: the signals' and the stated inputs; compensated: with the fitted model
+        u = result.unit
+        return {f"raw_error_{u}": fringe_budget(result, metadata, as_found=True),
+                f"compensated_error_{u}": fringe_budget(result, metadata)}
 
     def error_unit(self, settings):
         """nm when an interferometer's period is set, as :func:`analyze` does; else arcsec."""

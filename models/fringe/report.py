@@ -30,8 +30,11 @@ from models.certificate.document import (
     CertificateDocument,
     Table,
     decision_rows,
+    gum_pair,
     opinion,
     reference_standard_components,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
@@ -194,13 +197,15 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
     rows = []
     for label, fit in (("sin", result.sin_fit), ("cos", result.cos_fit)):
         rows.append((message(QT_TR_NOOP("{channel}: offset A₀"), channel=label),
-                     f"{fit.offset:+.5f} V", f"{k * fit.u_offset:.5f} V"))
+                     *gum_pair(fit.offset, k * fit.u_offset, " V", signed=True)))
         for h in fit.orders:
             ua = fit.u_amplitude.get(h, float("nan"))
             up = fit.u_phase.get(h, float("nan"))
-            rows.append((f"{label}: A{h}", f"{fit.amplitude[h]:.5f} V", f"{k * ua:.5f} V"))
+            # each parameter to the decimal of its U, two significant digits (GUM 7.2.6)
+            rows.append((f"{label}: A{h}", *gum_pair(fit.amplitude[h], k * ua, " V")))
             if abs(fit.amplitude[h]) > k * ua and np.isfinite(up) and k * up < np.pi:
-                rows.append((f"{label}: c{h}", f"{fit.phase[h]:+.5f} rad", f"{k * up:.5f} rad"))
+                rows.append((f"{label}: c{h}", *gum_pair(fit.phase[h], k * up, " rad",
+                                                         signed=True)))
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
@@ -251,8 +256,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     phase_deg = np.degrees(result.theta_rad[idx])
     numeric = list(zip(idx + 1, phase_deg, raw[idx], correction[idx], comp[idx], big_u[idx],
                        strict=True))
-    rows = [(f"{int(i)}", f"{p:.2f}", f"{r:+.3f}", f"{c:+.3f}", f"{e:+.3f}", f"{u:.3f}")
-            for i, p, r, c, e, u in numeric]
+    shown = table_decimals(big_u)  # each sample to the decimal of its own U (GUM 7.2.6)
+    rows = [(f"{int(i)}", f"{p:.2f}", *cells, u_text) for i, p, r, c, e, u in numeric
+            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     if idx.size == raw.size:
         note = message(QT_TR_NOOP("All {n} samples are shown; they are also in the CSV/XLSX "
                                   "results export."), n=raw.size)

@@ -30,7 +30,7 @@ from models.polygon.model import (
     wrap_deg,
 )
 from models.polygon.plots import error_figure
-from models.polygon.report import polygon_certificate, setup_statement
+from models.polygon.report import polygon_certificate, polygon_json_budgets, setup_statement
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
@@ -603,6 +603,11 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
     def certificate(self, result, metadata, source_name=""):
         return polygon_certificate(result, metadata, source_name, self.method_reference)
+
+    tolerance_in_settings = True  # the grade
+
+    def uncertainty_budgets(self, result, metadata):
+        return polygon_json_budgets(result, metadata)
 
     def overlay_figure(self, result):
         return error_figure(result)

@@ -30,8 +30,10 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
+from typing import Any
 
 import numpy as np
 
@@ -41,6 +43,8 @@ from models.certificate.document import (
     decision_rows,
     reference_standard_components,
     resolution_component,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
@@ -56,7 +60,7 @@ from models.polygon.plots import corrected_with_uncertainty, error_figure, resid
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["polygon_budget", "polygon_certificate", "polygon_tolerance_arcsec",
+__all__ = ["polygon_budget", "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
            "repeated_readings_components", "setup_statement"]
 
 METHOD = QT_TR_NOOP(
@@ -280,7 +284,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     u_pyr = _pyramidal_uncertainty(result)
     if u_pyr is not None:
         components.append(BudgetComponent(
-            QT_TR_NOOP("Pyramidal correction (ψ, ω)"), "A", "normal", u_pyr, 1.0, 1.0,
+            PYRAMIDAL_INPUT, "A", "normal", u_pyr, 1.0, 1.0,
             max(n - 3, 1), QT_TR_NOOP("covariance of ψ, ω from the tilt fits propagated through "
                                       "the set-up's exact correction")))
     components += _roll_component(result, result.ac_roll_arcmin, n)
@@ -290,6 +294,57 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
+
+
+PYRAMIDAL_INPUT = QT_TR_NOOP("Pyramidal correction (ψ, ω)")
+#: the inputs of the mean over the sets that one set carries √m-fold (their templates)
+_PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
+                   "Autocollimator reading noise (mean of {sets} sets)",
+                   "Repeated readings (s/√n)", "Closure drift", "Pyramidal correction (ψ, ω)")
+
+
+def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata) -> dict[str, Any]:
+    """The budget of each error array of the JSON. ``mean_corrected_error_arcsec``: the
+    certificate's. The arrays of every set (``error_arcsec`` before the pyramidal
+    correction, ``pyramidal_error_arcsec`` the correction's own, ``corrected_error_arcsec``),
+    set after set: one set's budget — with one set the certificate's; with m sets the
+    inputs averaged over the sets (repeatability, reading noise, drift, tilt fits) taken
+    √m_eff (√m) times larger, as for one set of them."""
+    from models.certificate.uncertainty_json import PointUncertainty
+
+    full = polygon_budget(result, metadata)
+    m = len(result.sets)
+    m_eff = _effective_sets(np.array([s.direction for s in result.sets]))
+    one = full
+    if m > 1:
+        comps = []
+        for c in full.components:
+            template = getattr(c.name, "template", c.name)
+            if template in _PER_SET_SCALED:
+                factor = math.sqrt(m_eff if template.startswith(("Repeatability (mean",
+                                                                  "Autocollimator")) else m)
+                c = dataclasses.replace(c, value=np.asarray(c.value, dtype=float) * factor)
+            comps.append(c)
+        one = UncertaintyBudget(tuple(comps), full.points, full.probability, full.unit)
+
+    def part(keep) -> UncertaintyBudget:
+        return UncertaintyBudget(tuple(c for c in one.components
+                                       if keep(getattr(c.name, "template", c.name)
+                                               == PYRAMIDAL_INPUT)),
+                                 one.points, one.probability, one.unit)
+
+    return {"error_arcsec": PointUncertainty.repeated(part(lambda pyr: not pyr), m),
+            "pyramidal_error_arcsec": PointUncertainty.repeated(part(lambda pyr: pyr), m),
+            "corrected_error_arcsec": PointUncertainty.repeated(one, m),
+            "mean_corrected_error_arcsec": full}
+
+
+def not_stated(result: PolygonResult) -> list[str]:
+    """The inputs the certificate says are not in U: the readings' scatter when no direction
+    was measured twice and there are no vertical readings (nothing in U covers it)."""
+    if len(result.sets) == 1 and result.sets[0].tilt is None:
+        return [QT_TR_NOOP("repeatability of the readings")]
+    return []
 
 
 def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadata) -> float:
@@ -372,8 +427,10 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
     numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
                        correction, result.mean_corrected_arcsec, big_u, strict=True))
-    rows = [(f"{int(p)}", f"{t:.3f}", f"{r:+.2f}", f"{c:+.3f}", f"{e:+.2f}", f"{u:.2f}")
-            for p, t, r, c, e, u in numeric]
+    shown = table_decimals(big_u)  # each point to the decimal of its own U (GUM 7.2.6)
+    rows = [(f"{int(p)}", f"{t:.3f}", *cells, u_text)
+            for p, t, r, c, e, u in numeric
+            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     title = (message(QT_TR_NOOP("Results per position (mean of the two directions' means)"))
              if result.reversal_arcsec is not None else
              message(QT_TR_NOOP("Results per position (mean of {sets} sets)"), sets=m) if m > 1
@@ -420,7 +477,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         metadata.decision_quantity,
         "" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
         point_names=[message(QT_TR_NOOP("position {position}"), position=i)
-                     for i in range(1, result.faces + 1)])
+                     for i in range(1, result.faces + 1)],
+        not_stated=not_stated(result))
     stat_rows[2:2] = decision_rows(conformity, budget, QT_TR_NOOP("positions"))
     statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
                        stat_rows)

@@ -23,7 +23,7 @@ from models.positioning.model import (
     figure_text,
     infer_directions,
 )
-from models.positioning.report import positioning_certificate
+from models.positioning.report import positioning_budget, positioning_certificate
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.workbench import (
@@ -419,6 +419,22 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
 
     def certificate(self, result, metadata, source_name=""):
         return positioning_certificate(result, metadata, source_name, self.method_reference)
+
+    def uncertainty_array_names(self, result):
+        return [f"per_target/mean_{name}" for name, _, _ in result.directions_present()]
+
+    def uncertainty_budgets(self, result, metadata):
+        # the budget's points: every target of each direction measured, direction after
+        # direction (as the certificate's table); U of the mean deviation per_target.mean_*
+        from models.certificate.uncertainty_json import PointUncertainty
+
+        budget = positioning_budget(result, metadata)
+        out, start = {}, 0
+        for name, _, _stats in result.directions_present():
+            stop = start + result.positions.size
+            out[f"per_target/mean_{name}"] = PointUncertainty.part(budget, slice(start, stop))
+            start = stop
+        return out
 
     def correction_table(self, result, settings, path):
         s = self.checked_settings(settings)

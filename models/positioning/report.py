@@ -27,6 +27,8 @@ from models.certificate.document import (
     opinion,
     reference_standard_components,
     resolution_component,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
@@ -257,7 +259,7 @@ def _with_u(text: str, value, interval: tuple[float, float] | None, sym: str) ->
     if interval is None or value is None or not math.isfinite(value):
         return text
     lower, upper = interval
-    d = min(max(2, uncertainty_decimals(max(min(lower, upper), 1e-12))), 4)
+    d = uncertainty_decimals(max(lower, upper))  # two significant digits at most (GUM 7.2.6)
     return message(QT_TR_NOOP("{figure}, U = {u}"), figure=f"{value:.{d}f}{sym}",
                    u=asymmetric_text(lower, upper, sym, d))
 
@@ -313,10 +315,12 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     if result.bidirectional:
         header += ["B_i", "M_i"]
     rows = []
+    shown = table_decimals(big_u)  # each mean to the decimal of its own U (GUM 7.2.6)
     for i, target in enumerate(result.positions):
         row = [f"{target:g}"]
         for name, mean, s, _ in points:
-            row += [f"{mean[i]:+.3f}", f"{s[i]:.3f}", f"{u_by_dir[name][i]:.3f}"]
+            (mean_text,), u_text = rounded_cells((mean[i],), u_by_dir[name][i], shown)
+            row += [mean_text, f"{s[i]:.3f}", u_text]
         if result.bidirectional:
             row += [f"{result.iso.reversal[i]:+.3f}", f"{result.iso.bidirectional_mean[i]:+.3f}"]
         rows.append(tuple(row))
@@ -334,7 +338,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     conformity = decide_conformity(curve, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=QT_TR_NOOP("mean positional deviation"),
-                                   point_names=names)
+                                   point_names=names, not_stated=not_stated(result))
     stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
     stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
     statistics = Table(QT_TR_NOOP("Figures of the axis"),

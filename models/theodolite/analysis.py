@@ -15,7 +15,8 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
-from models.theodolite.report import theodolite_certificate
+from models.theodolite.report import theodolite_certificate, theodolite_json_budgets
+from models.uncertainty.conformity import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -181,11 +182,11 @@ def summary(result: TheodoliteResult) -> str:
                            "reference θ = {theta}°):"),
                 n=r.n, theta=f"{result.reference_theta_deg:g}"),
         message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"), value=f"{s.psi_deg:.4f}",
-                u=f"{u[0]:.2f}\" (u, k = 1)"),
+                u=f"{u[0]:.{uncertainty_decimals(u[0])}f}\" (u, k = 1)"),
         message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"), value=f"{s.alpha_deg:.4f}",
-                u=f"{u[1]:.2f}\" (u, k = 1)"),
+                u=f"{u[1]:.{uncertainty_decimals(u[1])}f}\" (u, k = 1)"),
         message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"), value=f"{s.beta_deg:.4f}",
-                u=f"{u[2]:.2f}\" (u, k = 1)"),
+                u=f"{u[2]:.{uncertainty_decimals(u[2])}f}\" (u, k = 1)"),
         message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
                 rms=f"{ident.residual_rms_arcsec:.3f}\""),
         message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),
@@ -223,6 +224,9 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
 
     def certificate(self, result, metadata, source_name=""):
         return theodolite_certificate(result, metadata, source_name, self.method_reference)
+
+    def uncertainty_budgets(self, result, metadata):
+        return theodolite_json_budgets(result, metadata)
 
     def overlay_figure(self, result):
         return error_figure(result)

@@ -38,6 +38,8 @@ from models.certificate.document import (
     decision_rows,
     reference_standard_components,
     resolution_component,
+    rounded_cells,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
@@ -45,9 +47,10 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
-from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.conformity import decide_conformity, expanded_text
 
-__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate"]
+__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate",
+           "theodolite_json_budgets"]
 
 METHOD = QT_TR_NOOP(
     "The axis under test carries a plane mirror. At each indicated angle θ the autocollimating "
@@ -116,12 +119,31 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
                    "the repeatability (ν counted once)"), common=True,
         dof_group="repeatability"))
     components.append(BudgetComponent(
-        QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", result.model_uncertainty_arcsec,
+        MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
                                   "ζ(θ)")))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+
+
+MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
+
+
+def theodolite_json_budgets(result: TheodoliteResult,
+                            metadata: CertificateMetadata) -> dict[str, UncertaintyBudget]:
+    """The budget of each error array of the JSON: the raw error (the readings and the
+    standards: every input but the set-up model), the model error (the set-up model alone)
+    and the corrected error (all, the certificate's)."""
+    full = theodolite_budget(result, metadata)
+
+    def part(keep) -> UncertaintyBudget:
+        return UncertaintyBudget(tuple(c for c in full.components if keep(c.name == MODEL_INPUT)),
+                                 full.points, full.probability, full.unit)
+
+    return {"raw_error_arcsec": part(lambda model: not model),
+            "model_error_arcsec": part(lambda model: model),
+            "corrected_error_arcsec": full}
 
 
 def repeated_readings_components(result: TheodoliteResult) -> list[BudgetComponent]:
@@ -159,9 +181,9 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     parameters = Table(
         QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
                                                      f"U (k = {k:.2f}, ν = {nu})"),
-        [(QT_TR_NOOP("Axis tilt ψ"), f"{s.psi_deg:.5f}°", f"{u2[0]:.2f}\""),
-         (QT_TR_NOOP("Tilt direction α"), f"{s.alpha_deg:.4f}°", f"{u2[1]:.2f}\""),
-         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.5f}°", f"{u2[2]:.2f}\""),
+        [(QT_TR_NOOP("Axis tilt ψ"), f"{s.psi_deg:.5f}°", expanded_text(u2[0])),
+         (QT_TR_NOOP("Tilt direction α"), f"{s.alpha_deg:.4f}°", expanded_text(u2[1])),
+         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.5f}°", expanded_text(u2[2])),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(
              ident.method, QT_TR_NOOP("{method} readings")), method=ident.method), ""),
          (QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),
@@ -170,8 +192,10 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     correction = -result.model_error_arcsec
     numeric = list(zip(result.theta_deg, result.raw_error_arcsec, correction,
                        result.corrected_error_arcsec, big_u, strict=True))
-    rows = [(f"{t:.4f}", f"{r:+.2f}", f"{c:+.2f}", f"{e:+.2f}", f"{u:.2f}")
-            for t, r, c, e, u in numeric]
+    # each point's figures to the decimal of its own U, two significant digits (GUM 7.2.6)
+    shown = table_decimals(big_u)
+    rows = [(f"{t:.4f}", *cells, u_text) for t, r, c, e, u in numeric
+            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     results = Table(QT_TR_NOOP("Results per point (corrected = raw + correction)"),
                     ("θ (°)", QT_TR_NOOP("Raw error (\")"), QT_TR_NOOP("Correction (\")"),
                      QT_TR_NOOP("Corrected error (\")"), "U (\")"), rows)

@@ -41,8 +41,12 @@ __all__ = [
     "Conformity",
     "HalfRangeEstimate",
     "asymmetric_text",
+    "REFERENCE_POINT_TEXT",
     "decide_conformity",
+    "expanded_text",
+    "gum_rounded",
     "half_range_monte_carlo",
+    "probability_conforming",
     "significant_decimals",
     "uncertainty_decimals",
 ]
@@ -83,17 +87,44 @@ HALF_RANGE_COVERAGE = {"smooth": 0.883, "rough": 0.917, "spike": 0.900, "sample"
 
 
 def significant_decimals(expanded: float) -> int | None:
-    """Decimals that show U with two significant digits (GUM 7.2.6); None if U is not
-    a positive number."""
+    """Decimals that show U with at most two significant digits (GUM 7.2.6, JJF 1059.1),
+    after rounding (0.0996 is "0.10", not "0.100"); None if U is not a positive number.
+    Never negative: a U of 100 or more is printed to the unit."""
     if not math.isfinite(expanded) or expanded <= 0:
         return None
-    return max(0, 1 - int(math.floor(math.log10(expanded))))
+    decimals = 1 - int(math.floor(math.log10(expanded)))
+    if round(expanded, decimals) >= 10.0 ** (2 - decimals) * (1 - 1e-12):
+        decimals -= 1  # rounding carried into a third digit
+    return max(0, decimals)
 
 
 def uncertainty_decimals(expanded: float) -> int:
-    """:func:`significant_decimals`, but never fewer than two (arcsec are printed to 0.01")."""
+    """:func:`significant_decimals` (two significant digits of U at most); two decimals
+    where U is not a positive number (nothing to round to)."""
     decimals = significant_decimals(expanded)
-    return 2 if decimals is None else max(2, decimals)
+    return 2 if decimals is None else decimals
+
+
+#: what a U of zero at a reference point is printed as (never "0.00")
+REFERENCE_POINT_TEXT = QT_TR_NOOP("reference point, by definition")
+
+
+def gum_rounded(value: float, expanded: float) -> tuple[str, str]:
+    """(value, U) as GUM 7.2.6 asks: U to at most two significant digits, the value to the
+    same decimal; U of zero gives the value to two decimals and U as "0"."""
+    decimals = uncertainty_decimals(expanded)
+    u = "0" if expanded == 0 else f"{expanded:.{decimals}f}"
+    return f"{value:.{decimals}f}", u
+
+
+def expanded_text(expanded: float, unit: str = "\"", reference: bool | None = None) -> str:
+    """U as printed: two significant digits at most with its unit; at a reference point
+    (``reference``, or U exactly zero when not told) "reference point, by definition"."""
+    if reference or (reference is None and expanded == 0):
+        return message(REFERENCE_POINT_TEXT)
+    if not math.isfinite(expanded):
+        return "—"
+    return f"{expanded:.{uncertainty_decimals(expanded)}f}{unit}"
 
 
 @dataclass(frozen=True)
@@ -230,11 +261,23 @@ class Conformity:
     rule: str
     quantity: str = ""  # the decided quantity and how it was evaluated
     value: float = float("nan")  # the decided value, in ``unit``
-    expanded: float = float("nan")  # its U, in ``unit``
+    expanded: float = float("nan")  # its U (the upper half-width of its interval), in ``unit``
     zones: str = ""
     monte_carlo: HalfRangeEstimate | None = None
     expanded_lower: float = float("nan")  # an asymmetric interval's lower half-width (else U)
     unit: str = "arcsec"  # the unit of value, expanded and expanded_lower (models.quantity)
+    # why no statement of conformity is made ("" when one is): U incomplete, U ≥ T, the
+    # figure withheld, the run invalid, no tolerance
+    reason: str = ""
+    rule_key: str = ""  # "simple", "guarded_binary" or "guarded"
+    probability: float = float("nan")  # the coverage probability of the interval
+    # the probability that the item conforms (true value within ±T), from the decided
+    # value's interval (see :func:`probability_conforming`)
+    conforming_probability: float = float("nan")
+    # the probability of a wrong decision at the decision stated: false acceptance after a
+    # pass or conditional pass, false rejection after a fail or conditional fail (JCGM
+    # 106:2012 9.5, specific risk); nan when no statement is made
+    decision_risk: float = float("nan")
 
     @property
     def conforms(self) -> bool | None:
@@ -242,27 +285,93 @@ class Conformity:
             return None
         return self.verdict in ("pass", "conditional pass")
 
+    @property
+    def lower_half_width(self) -> float:
+        lower = self.expanded_lower
+        return lower if math.isfinite(lower) else self.expanded
 
-def _zones(t: float, w: float, rule: str, d: int, q: str = "\"") -> str:
+    @property
+    def interval_low(self) -> float:
+        """The interval's lower end; a half range is never negative, so its interval ends
+        at zero at the lowest (the coverage is not lowered by it)."""
+        low = self.value - self.lower_half_width
+        return max(low, 0.0) if self.monte_carlo is not None else low
+
+    @property
+    def interval_high(self) -> float:
+        return self.value + self.expanded
+
+    @property
+    def stated(self) -> bool:
+        """A statement of conformity was made."""
+        return self.verdict != "not assessed"
+
+
+# how the probabilities of conformity and of a wrong decision are computed (stated on
+# the certificate and checked in tests/models/uncertainty/test_conformity_decision.py)
+RISK_METHOD = QT_TR_NOOP(
+    "probability of conformity from the decided value's own interval (JCGM 106:2012, 9.5: "
+    "specific risk): the value's distribution taken as normal on each side of it, each side's "
+    "standard deviation that half-width divided by the normal factor of the stated coverage "
+    "probability, so that the interval holds it; with every point deciding, at most the sum "
+    "over the points of each one's probability of lying outside ±T (Boole's inequality)")
+
+
+def _z(probability: float) -> float:
+    from scipy.special import ndtri
+
+    return float(ndtri(0.5 * (1.0 + probability)))
+
+
+def probability_conforming(value: float, lower: float, upper: float, tolerance: float,
+                           probability: float, two_sided: bool = False) -> float:
+    """P(Y ≤ T) (or P(|Y| ≤ T) when ``two_sided``) for a value with the interval
+    [value − lower, value + upper] at ``probability``: each side of the value a half of a
+    normal distribution whose quantile (1 ± p)/2 falls at that side's end (a split normal
+    about the median ``value``; a symmetric interval gives the normal distribution)."""
+    from scipy.special import ndtr
+
+    z = _z(probability)
+    s_lo, s_hi = max(lower, 0.0) / z, max(upper, 0.0) / z
+
+    def cdf(y: float) -> float:  # P(Y ≤ y)
+        if y >= value:
+            return 1.0 if s_hi == 0 else 0.5 + (float(ndtr((y - value) / s_hi)) - 0.5)
+        return 0.0 if s_lo == 0 else float(ndtr((y - value) / s_lo))
+
+    inside = cdf(tolerance)
+    if two_sided:
+        inside -= cdf(-tolerance)
+    return min(1.0, max(0.0, inside))
+
+
+def _zones(t: float, w_accept: float, w_reject: float, rule: str, d: int,
+           q: str = "\"") -> str:
     if rule == "simple":
         return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=f"{t:g}{q}")
     if rule == "guarded_binary":
-        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=f"{t - w:.{d}f}{q}")
+        return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=f"{t - w_accept:.{d}f}{q}")
     return message(QT_TR_NOOP("pass ≤ {low} (T − w) < conditional pass ≤ {t} (T) < conditional "
                               "fail ≤ {high} (T + w) < fail"),
-                   low=f"{t - w:.{d}f}{q}", t=f"{t:g}{q}", high=f"{t + w:.{d}f}{q}")
+                   low=f"{t - w_accept:.{d}f}{q}", t=f"{t:g}{q}",
+                   high=f"{t + w_reject:.{d}f}{q}")
 
 
-def _verdict(x: float, t: float, w: float, rule: str) -> str:
+def _verdict(x: float, t: float, w_accept: float, rule: str,
+             w_reject: float | None = None) -> str:
+    """The decision on a result ``x`` against T with the guard band of acceptance
+    ``w_accept`` (the interval's upper half-width: what the true value may exceed x by) and
+    of rejection ``w_reject`` (its lower half-width; ``w_accept`` when not given)."""
+    w_reject = w_accept if w_reject is None else w_reject
     if rule == "simple":
         return "pass" if x <= t else "fail"
     if rule == "guarded_binary":
-        return "pass" if x <= t - w else "fail"
-    if x <= t - w:
+        return "pass" if x <= t - w_accept else "fail"
+    if x <= t - w_accept:
         return "pass"
     if x <= t:
         return "conditional pass"
-    if x <= t + w:
+    if x <= t + w_reject:
         return "conditional fail"
     return "fail"
 
@@ -289,18 +398,58 @@ def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
                    t=f"{t:g}{q}")
 
 
+def _incomplete_reason(inputs) -> str:
+    return message(QT_TR_NOOP("U is incomplete: inputs not stated, so not in U: {inputs}"),
+                   inputs=joined(part for i, name in enumerate(inputs)
+                                 for part in ((", " if i else ""), message(name))))
+
+
+def _risk_sentence(verdict: str, risk: float) -> str:
+    figure = "< 0.01" if risk < 1e-4 else f"{100 * risk:.2f}"
+    if verdict in ("pass", "conditional pass"):
+        return message(QT_TR_NOOP("Probability of a false acceptance at this decision: {p} % "
+                                  "(specific risk, JCGM 106)."), p=figure)
+    return message(QT_TR_NOOP("Probability of a false rejection at this decision: {p} % "
+                              "(specific risk, JCGM 106)."), p=figure)
+
+
+def _with_risk(conformity: Conformity) -> Conformity:
+    """The statement followed by the probability of a wrong decision, when one is made."""
+    if not conformity.stated or not math.isfinite(conformity.decision_risk):
+        return conformity
+    import dataclasses
+
+    return dataclasses.replace(conformity, statement=joined(
+        [conformity.statement, " ", _risk_sentence(conformity.verdict,
+                                                   conformity.decision_risk)]),
+        quantity=joined([conformity.quantity, "; ", message(RISK_METHOD)]))
+
+
+def _risk(verdict: str, conforming: float) -> float:
+    if verdict in ("pass", "conditional pass"):
+        return 1.0 - conforming
+    if verdict in ("fail", "conditional fail"):
+        return conforming
+    return float("nan")
+
+
 def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | float | None,
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
-                      point_names=None) -> Conformity:
-    """The verdict on an error curve against ±``tolerance``.
+                      point_names=None, not_stated=()) -> Conformity:
+    """The verdict on an error curve against ±``tolerance`` (ILAC-G8:09/2019).
 
     ``errors`` are in the budget's unit (arcsec, or nm for an interferometer); a
     ``tolerance`` Quantity is converted to it (an angle against a length is refused with
     :class:`~models.quantity.UnitError`), a bare number is taken in it. Figures are
-    written with that unit. ``invalid_reason`` (for example a failed closure) withholds
-    the statement, and so does U ≥ T. ``point_names`` name the points as the results
-    table does (the deciding point is named so).
+    written with that unit. No statement is made (verdict "not assessed", the ``reason``
+    said) when ``invalid_reason`` is given (a failed closure, an untraceable error), when
+    U is incomplete (``not_stated``: the inputs the certificate names as not stated, so
+    not in U), when U ≥ T, or when the decided figure is withheld (not a finite number);
+    the decided value and its interval are still given whenever they can be computed.
+    The guard band is the decided value's own interval: its upper half-width guards
+    acceptance, its lower half-width rejection. ``point_names`` name the points as the
+    results table does (the deciding point is named so).
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
@@ -311,68 +460,130 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
                 for v, template in _SENTENCE.items()}
     if quantity not in DECISION_QUANTITIES:
         raise ValueError(f"decision quantity must be one of {', '.join(DECISION_QUANTITIES)}")
-    if invalid_reason:
-        return Conformity("not assessed", message(
-            QT_TR_NOOP("No statement of conformity: {reason}."), reason=invalid_reason),
-            rule_text, unit=budget.unit.key)
+    common = {"rule_key": rule, "probability": budget.probability, "unit": budget.unit.key}
     if tolerance is None:
+        reason = message(QT_TR_NOOP("no specification (tolerance) was given"))
         return Conformity("not assessed", message(QT_TR_NOOP(
             "No statement of conformity: no specification (tolerance) was given.")), rule_text,
-            unit=budget.unit.key)
+            reason=reason, **common)
+    withheld = []
+    if invalid_reason:
+        withheld.append(invalid_reason)
+    if not_stated:
+        withheld.append(_incomplete_reason(not_stated))
     e = np.asarray(errors, dtype=float)
     t = float(tolerance)
+    if not e.size or not np.all(np.isfinite(e)):
+        reason = joined([*(part for i, w in enumerate(withheld) for part in (("; " if i else ""), w)),
+                         "; " if withheld else "",
+                         message(QT_TR_NOOP("the decided quantity is withheld (the errors are "
+                                            "not all determined)"))])
+        return Conformity("not assessed", message(
+            QT_TR_NOOP("No statement of conformity: {reason}."), reason=reason), rule_text,
+            reason=reason, **common)
     if quantity == "points":
-        u = budget.expanded
-        verdicts = [_verdict(abs(x), t, w if rule != "simple" else 0.0, rule) for x, w in zip(e, u,
-                                                                                              strict=True)]
-        worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
-        x, w = abs(float(e[worst])), float(u[worst])
-        d = uncertainty_decimals(w)
-        verdict = verdicts[worst]
-        point = (point_names[worst] if point_names is not None else
-                 message(QT_TR_NOOP("point {n}"), n=worst + 1))
-        quantity_text = message(DECISION_QUANTITIES["points"])
-        largest = int(np.argmax(u))
-        if float(u[largest]) >= t:
-            w_max = float(u[largest])
-            d = uncertainty_decimals(w_max)
-            name = (point_names[largest] if point_names is not None else
-                    message(QT_TR_NOOP("point {n}"), n=largest + 1))
-            return Conformity("not assessed", joined([_too_uncertain(w_max, t, q, d), " ",
-                                                      message(QT_TR_NOOP("(at {point})"),
-                                                              point=name)]),
-                              rule_text, quantity_text, x, w, unit=budget.unit.key)
-        text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
-                                  "the deciding point is {point}: |e| = {e}, U = {u}. "
-                                  "{sentence}"),
-                       what=what, t=f"{t:g}{q}", point=point, e=f"{x:.{d}f}{q}",
-                       u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
-        zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
-                        zones=_zones(t, w, rule, d, q))
-        return Conformity(verdict, text, rule_text, quantity_text, x, w, zones,
-                          unit=budget.unit.key)
+        return _with_risk(_decide_points(e, budget, t, rule, rule_text, what, point_names,
+                                         withheld, sentence, q, common))
+    return _with_risk(_decide_half_range(e, budget, t, rule, rule_text, what, withheld,
+                                         sentence, q, common))
+
+
+def _withheld_text(withheld: list) -> str:
+    return joined(part for i, w in enumerate(withheld) for part in (("; " if i else ""), w))
+
+
+def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, sentence, q,
+                   common) -> Conformity:
+    u = budget.expanded
+    verdicts = [_verdict(abs(x), t, w if rule != "simple" else 0.0, rule)
+                for x, w in zip(e, u, strict=True)]
+    worst = max(range(e.size), key=lambda i: (_ORDER.index(verdicts[i]), abs(e[i]) + u[i]))
+    x, w = abs(float(e[worst])), float(u[worst])
+    d = uncertainty_decimals(w)
+    verdict = verdicts[worst]
+    point = (point_names[worst] if point_names is not None else
+             message(QT_TR_NOOP("point {n}"), n=worst + 1))
+    quantity_text = message(DECISION_QUANTITIES["points"])
+    # P(every point within ±T) ≥ 1 − Σ P(point i outside) (Boole); ≤ P(the worst point within)
+    inside = np.array([probability_conforming(float(xi), float(wi), float(wi), t,
+                                              budget.probability, two_sided=True)
+                       for xi, wi in zip(e, u, strict=True)])
+    conforming = (max(0.0, 1.0 - float(np.sum(1.0 - inside)))
+                  if verdict in ("pass", "conditional pass") else float(np.min(inside)))
+    values = {"value": x, "expanded": w, "expanded_lower": w, "conforming_probability": conforming}
+    largest = int(np.argmax(u))
+    if float(u[largest]) >= t:
+        w_max = float(u[largest])
+        d = uncertainty_decimals(w_max)
+        name = (point_names[largest] if point_names is not None else
+                message(QT_TR_NOOP("point {n}"), n=largest + 1))
+        text = joined([_too_uncertain(w_max, t, q, d), " ",
+                       message(QT_TR_NOOP("(at {point})"), point=name)])
+        reason = _withheld_text([*withheld, message(
+            QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=f"{w_max:.{d}f}{q}",
+            t=f"{t:g}{q}")])
+        if withheld:
+            text = message(QT_TR_NOOP("No statement of conformity: {reason}."), reason=reason)
+        return Conformity("not assessed", text, rule_text, quantity_text, reason=reason,
+                          **values, **common)
+    if withheld:
+        reason = _withheld_text(withheld)
+        return Conformity("not assessed", message(QT_TR_NOOP(
+            "No statement of conformity: {reason}."), reason=reason), rule_text, quantity_text,
+            reason=reason, **values, **common)
+    text = message(QT_TR_NOOP("Every point's {what} was judged against ±{t} with its own U; "
+                              "the deciding point is {point}: |e| = {e}, U = {u}. "
+                              "{sentence}"),
+                   what=what, t=f"{t:g}{q}", point=point, e=f"{x:.{d}f}{q}",
+                   u=f"{w:.{d}f}{q}", sentence=sentence[verdict])
+    zones = message(QT_TR_NOOP("per point, with w = U of that point: {zones}"),
+                    zones=_zones(t, w, w, rule, d, q))
+    return Conformity(verdict, text, rule_text, quantity_text, zones=zones,
+                      decision_risk=_risk(verdict, conforming), **values, **common)
+
+
+def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, q,
+                       common) -> Conformity:
     mc = half_range_monte_carlo(e, budget)
-    x, w = mc.value, mc.u_upper
-    d = uncertainty_decimals(min(mc.u_upper, mc.u_lower))
-    verdict = _verdict(x, t, 0.0 if rule == "simple" else w, rule)
-    interval = asymmetric_text(mc.u_lower, mc.u_upper, q, d)
-    if max(mc.u_upper, mc.u_lower) >= t:
+    x, upper, lower = float(mc.value), float(mc.u_upper), float(mc.u_lower)
+    if not (math.isfinite(x) and math.isfinite(upper) and math.isfinite(lower)):
+        reason = _withheld_text([*withheld, message(QT_TR_NOOP(
+            "the decided quantity is withheld (the data do not determine it)"))])
+        return Conformity("not assessed", message(QT_TR_NOOP(
+            "No statement of conformity: {reason}."), reason=reason), rule_text,
+            monte_carlo=mc, reason=reason, **common)
+    d = uncertainty_decimals(max(upper, lower))  # two significant digits at most on each side
+    verdict = _verdict(x, t, 0.0 if rule == "simple" else upper, rule,
+                       0.0 if rule == "simple" else lower)
+    interval = asymmetric_text(lower, upper, q, d)
+    conforming = probability_conforming(x, lower, upper, t, mc.probability)
+    reasons = list(withheld)
+    if max(upper, lower) >= t:
+        reasons.append(message(QT_TR_NOOP("U = {u} is not smaller than T = {t}"),
+                               u=f"{max(upper, lower):.{d}f}{q}", t=f"{t:g}{q}"))
+    if reasons:
         verdict = "not assessed"
-        sentence[verdict] = _too_uncertain(max(mc.u_upper, mc.u_lower), t, q, d)
+        sentence[verdict] = (_too_uncertain(max(upper, lower), t, q, d)
+                             if not withheld else
+                             message(QT_TR_NOOP("No statement of conformity: {reason}."),
+                                     reason=_withheld_text(reasons)))
+    measured = float(mc.measured)
     text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} (measured {measured}, less "
                               "{bias} that the noise adds to a range), U = {u} (coverage "
                               "probability {p} %). {sentence}"),
-                   what=what, value=f"{x:.{d}f}{q}", measured=f"{mc.measured:.{d}f}{q}",
-                   bias=f"{mc.bias:.{d}f}{q}", u=interval,
+                   what=what, value=f"{x:.{d}f}{q}", measured=f"{measured:.{d}f}{q}",
+                   bias=f"{measured - x:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
+    trials, seed = getattr(mc, "trials", 0), getattr(mc, "seed", MONTE_CARLO_SEED)
+    stride = getattr(mc, "stride", 1)
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
                                         "{stride}-th of the {points} points"),
                              quantity=message(DECISION_QUANTITIES["half_range"]),
-                             trials=mc.trials, seed=mc.seed, stride=mc.stride, points=e.size)
-                     if mc.stride > 1 else
+                             trials=trials, seed=seed, stride=stride, points=e.size)
+                     if stride > 1 else
                      message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}"),
                              quantity=message(DECISION_QUANTITIES["half_range"]),
-                             trials=mc.trials, seed=mc.seed))
+                             trials=trials, seed=seed))
     achieved = HALF_RANGE_COVERAGE
     quantity_text = joined([quantity_text, "; ", message(QT_TR_NOOP(
         "the interval's coverage achieved in validation (true half range 3σ): {smooth} % on a "
@@ -381,9 +592,14 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
         smooth=f"{100 * achieved['smooth']:.0f}", rough=f"{100 * achieved['rough']:.0f}",
         spike=f"{100 * achieved['spike']:.0f}", sample=f"{100 * achieved['sample']:.0f}",
         p=f"{100 * mc.probability:.2f}")])
-    return Conformity(verdict, text, rule_text, quantity_text, x, w,
-                      "" if verdict == "not assessed" else _zones(t, w, rule, d, q), mc,
-                      mc.u_lower, budget.unit.key)
+    common = {**common, "probability": float(mc.probability)}
+    return Conformity(verdict, text, rule_text, quantity_text, x, upper,
+                      "" if verdict == "not assessed" else
+                      _zones(t, 0.0 if rule == "simple" else upper,
+                             0.0 if rule == "simple" else lower, rule, d, q), mc, lower,
+                      reason=_withheld_text(reasons) if reasons else "",
+                      conforming_probability=conforming,
+                      decision_risk=_risk(verdict, conforming), **common)
 
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:

@@ -449,6 +449,51 @@ def uncertainty_cases() -> list[ValidationCase]:
                                                rule=message(RULE_NAMES[rule]), x=f"{x:.2f}"),
                                     HAND_COMPUTED, VERDICT_WORDS[expected],
                                     VERDICT_WORDS.get(got, got), got == expected))
+    return cases + decision_machinery_cases()
+
+
+def decision_machinery_cases() -> list[ValidationCase]:
+    """ILAC-G8 with an asymmetric interval (its upper half-width guards acceptance, its lower
+    rejection), the probability of a false acceptance at the acceptance limit (JCGM 106: the
+    normal tail beyond k = 2, 2.275 %), the statements refused (U incomplete, U ≥ T) and U
+    rounded to two significant digits (GUM 7.2.6), each against a hand-computed answer."""
+    from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+    from models.uncertainty.conformity import (
+        _verdict,
+        decide_conformity,
+        gum_rounded,
+        probability_conforming,
+    )
+
+    w = QT_TR_NOOP("Uncertainty and decision (all workbenches)")
+    cases = []
+    for x, expected in ((0.70, "pass"), (0.75, "conditional pass"), (1.05, "conditional fail"),
+                        (1.11, "fail")):
+        got = _verdict(x, 1.0, 0.3, "guarded", 0.1)
+        cases.append(ValidationCase(w, message(QT_TR_NOOP(
+            "asymmetric interval −0.1\"/+0.3\": {x}\" against T = 1\" (acceptance guarded by "
+            "+0.3\", rejection by −0.1\")"), x=f"{x:.2f}"), HAND_COMPUTED,
+            VERDICT_WORDS[expected], VERDICT_WORDS.get(got, got), got == expected))
+    risk = 1.0 - probability_conforming(0.8, 0.2, 0.2, 1.0, 0.9545)
+    cases.append(_close(w, QT_TR_NOOP("probability of a false acceptance at T − U (U = 2u), %"),
+                        HAND_COMPUTED, 2.275, 100 * risk, 0.001, unit="", digits=3))
+    budget = UncertaintyBudget((BudgetComponent("u", "B", "normal", 0.1, 1.0, 1.0, math.inf),),
+                               3, 0.9545)
+    incomplete = decide_conformity([0.1, 0.2, -0.1], budget, 1.0, "guarded", "points",
+                                   not_stated=(QT_TR_NOOP("Temperature"),))
+    too_large = decide_conformity([0.1, 0.2, -0.1], budget, 0.15, "guarded", "points")
+    for name, decided in ((QT_TR_NOOP("U incomplete (an input not stated): no statement of "
+                                      "conformity"), incomplete),
+                          (QT_TR_NOOP("U ≥ T: no statement of conformity"), too_large)):
+        cases.append(ValidationCase(w, name, HAND_COMPUTED, QT_TR_NOOP("not assessed"),
+                                    QT_TR_NOOP("not assessed") if not decided.stated else
+                                    VERDICT_WORDS.get(decided.verdict, decided.verdict),
+                                    not decided.stated and math.isfinite(decided.value)))
+    for u, printed in ((2.03, "2.0"), (0.0996, "0.10"), (3.54, "3.5"), (0.094, "0.094")):
+        got = gum_rounded(0.0, u)[1]
+        cases.append(ValidationCase(w, message(QT_TR_NOOP("U = {u}\" printed to two significant "
+                                                          "digits"), u=f"{u:g}"),
+                                    HAND_COMPUTED, printed, got, got == printed))
     return cases
 
 

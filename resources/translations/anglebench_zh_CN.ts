@@ -657,6 +657,30 @@
         <translation>带真实相位的采样信号：|直流偏置 − 真值|（V）</translation>
     </message>
     <message>
+        <source>asymmetric interval −0.1&quot;/+0.3&quot;: {x}&quot; against T = 1&quot; (acceptance guarded by +0.3&quot;, rejection by −0.1&quot;)</source>
+        <translation>不对称区间 −0.1″/+0.3″：{x}″ 对照 T = 1″（合格判定以 +0.3″ 保护，不合格判定以 −0.1″ 保护）</translation>
+    </message>
+    <message>
+        <source>probability of a false acceptance at T − U (U = 2u), %</source>
+        <translation>在 T − U 处的误合格概率（U = 2u），%</translation>
+    </message>
+    <message>
+        <source>U incomplete (an input not stated): no statement of conformity</source>
+        <translation>U 不完整（有输入量未给出）：不作符合性声明</translation>
+    </message>
+    <message>
+        <source>U ≥ T: no statement of conformity</source>
+        <translation>U ≥ T：不作符合性声明</translation>
+    </message>
+    <message>
+        <source>not assessed</source>
+        <translation>未判定</translation>
+    </message>
+    <message>
+        <source>U = {u}&quot; printed to two significant digits</source>
+        <translation>U = {u}″ 修约为两位有效数字</translation>
+    </message>
+    <message>
         <source>Positioning (axis)</source>
         <translation>定位（轴线）</translation>
     </message>
@@ -4005,8 +4029,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
     </message>
     <message>
+        <source>reference point, by definition</source>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
+        <translation>参考点，按定义为零</translation>
+    </message>
+    <message>
+        <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
+        <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
+    </message>
+    <message>
         <source>pass ≤ {t} &lt; fail</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -4034,8 +4066,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>被校对象不符合技术要求 ±{t}（不合格）。</translation>
     </message>
     <message>
+        <source>U is incomplete: inputs not stated, so not in U: {inputs}</source>
+        <translation>U 不完整：以下输入量未给出，未计入 U：{inputs}</translation>
+    </message>
+    <message>
+        <source>Probability of a false acceptance at this decision: {p} % (specific risk, JCGM 106).</source>
+        <translation>本判定的误合格概率：{p} %（特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>Probability of a false rejection at this decision: {p} % (specific risk, JCGM 106).</source>
+        <translation>本判定的误不合格概率：{p} %（特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
         <source>corrected error</source>
         <translation>修正后误差</translation>
+    </message>
+    <message>
+        <source>no specification (tolerance) was given</source>
+        <translation>未给出技术要求（允差）</translation>
+    </message>
+    <message>
+        <source>the decided quantity is withheld (the errors are not all determined)</source>
+        <translation>判定量不予给出（误差未全部确定）</translation>
     </message>
     <message>
         <source>No statement of conformity: {reason}.</source>
@@ -4046,8 +4098,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
     </message>
     <message>
+        <source>U = {u} is not smaller than T = {t}</source>
+        <translation>U = {u} 不小于 T = {t}</translation>
+    </message>
+    <message>
         <source>per point, with w = U of that point: {zones}</source>
         <translation>逐点判定，w 取该点的 U：{zones}</translation>
+    </message>
+    <message>
+        <source>the decided quantity is withheld (the data do not determine it)</source>
+        <translation>判定量不予给出（数据无法确定它）</translation>
     </message>
     <message>
         <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
@@ -4511,6 +4571,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>检查内容</translation>
     </message>
     <message>
+        <source>Five workbenches. Three use non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T 17421.2). The fifth, the cross-calibration of a polygon and an encoder against each other, solves the closure of the circle by least squares (Estler&apos;s rosette). For each: the publication&apos;s check figures or, for the standard methods, examples worked by hand; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase, an axis with a known error and lost motion) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101). Then what every workbench shares: the coverage factor k from ν, U rounded to two significant digits (GUM 7.2.6), the decision rules of ILAC-G8 with the guard band from the decided value&apos;s own interval, the probability of a false acceptance (JCGM 106) and the decisions refused (U incomplete, U ≥ T), the certificate&apos;s text as a reader extracts it from the PDF, the register, and file import.</source>
+        <translation>五个工作台。其中三个采用非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。第四个，轴线定位，采用标准方法（ISO 230-2、VDI/DGQ 3441、GB/T 17421.2）。第五个，多面棱体与编码器互校准，以最小二乘法求解圆周封闭（Estler 花瓣法）。对每个工作台：论文的校核数值，或对标准方法为手算示例；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号、误差和反向间隙已知的轴线）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。然后是各工作台共用的部分：由 ν 求包含因子 k、U 修约为两位有效数字（GUM 7.2.6）、ILAC-G8 判定规则（保护带取自判定量自身的区间）、误合格概率（JCGM 106）及不作声明的情形（U 不完整、U ≥ T）、从 PDF 提取的证书文本、登记册和文件导入。</translation>
+    </message>
+    <message>
         <source>Case</source>
         <translation>案例</translation>
     </message>
@@ -4967,6 +5031,11 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
+        <source>repeatability of the readings</source>
+        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
+        <translation>读数重复性</translation>
+    </message>
+    <message>
         <source>Autocollimator set-up</source>
         <translation>自准直仪安置</translation>
     </message>
@@ -5320,10 +5389,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Document ID</source>
         <translation>文件编号</translation>
-    </message>
-    <message>
-        <source>Four workbenches. Three use non-standard methods, each from a published paper: the theodolite run (Tian et al., Acta Photonica Sinica 46(11) 1112005, 2017), the polygon encoder test (Tian et al., Acta Optica Sinica 35(5) 0512003, 2015) and the fringe signal analysis (Gao et al., Acta Optica Sinica 33(7) 0712001, 2013). The fourth, the positioning of an axis, follows standard methods (ISO 230-2, VDI/DGQ 3441, GB/T 17421.2). For each: the publication&apos;s check figures or, for the standard method, examples worked by hand; exact simulations with known truth made by first-principles simulators (3-D rotations of mirror and face normals, sampled signals with a true phase, an axis with a known error and lost motion) that share no code with the analysis, run through the whole analysis; and the GUM uncertainty budget against the spread of {trials} simulated repeated measurements (JCGM 101). Then what every workbench shares: the coverage factor k from ν, the decision rules, the certificate&apos;s text as a reader extracts it from the PDF, the register, and file import.</source>
-        <translation>四个工作台。其中三个采用非标准方法，各出自一篇已发表的论文：经纬仪测量（Tian 等，光子学报 46(11) 1112005，2017）、多面棱体编码器检测（Tian 等，光学学报 35(5) 0512003，2015）和莫尔条纹信号分析（Gao 等，光学学报 33(7) 0712001，2013）。第四个，轴线定位，采用标准方法（ISO 230-2、VDI/DGQ 3441、GB/T 17421.2）。对每个工作台：论文的校核数值，或对标准方法为手算示例；由第一性原理仿真器（反射镜与棱体面法线的三维旋转、带真实相位的采样信号、误差和反向间隙已知的轴线）生成、真值已知、与分析不共享代码的精确仿真，经完整分析处理；以及 GUM 不确定度评定与 {trials} 次仿真重复测量分散性的比较（JCGM 101）。然后是各工作台共用的部分：由 ν 求包含因子 k、判定规则、从 PDF 提取的证书文本、登记册和文件导入。</translation>
     </message>
     <message>
         <source>Acceptance criteria</source>

@@ -18,11 +18,13 @@ from models.readings.sheet import ReadingsSheet
 from models.theodolite.model import analyze_run
 from models.theodolite.report import theodolite_budget, theodolite_certificate
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.conformity import decide_conformity, significant_decimals
 from models.validation.theodolite_rig import theodolite_readings
 from tests.models.certificate.test_certificate_statements import FRINGE_INPUTS, _flat, _sample
 
 GTC = pytest.importorskip("GTC")
+
+POSITIONING_INPUTS = {"misalignment_u": 0.1, "reference_resolution": 0.1, "temperature_u": 0.1}
 
 META = CertificateMetadata.from_dict({
     "certificate_number": "AB-2026-0100", "lab_name": "Angle Lab", "customer_name": "Customer",
@@ -100,13 +102,18 @@ def test_theodolite_setup_parameters_take_k_from_their_own_dof():
     k = GTC.reporting.k_factor(nu, 100 * math.erf(math.sqrt(2)))
     assert document.parameters.header[2] == f"U (k = {k:.2f}, ν = {nu})"
     u_psi = result.identification.uncertainty_deg[0] * 3600.0
-    assert document.parameters.rows[0][2] == f"{k * u_psi:.2f}\""
+    # U to two significant digits (GUM 7.2.6; three were printed before issue 39)
+    printed = document.parameters.rows[0][2]
+    decimals = significant_decimals(k * u_psi)
+    assert printed == f"{k * u_psi:.{decimals}f}\""
 
 
 # 13. the deciding point named as the results table names it ----------------------------------
 @pytest.mark.parametrize("key", ["theodolite", "polygon", "positioning", "fringe"])
 def test_deciding_point_is_named_as_in_the_results_table(key):
     settings = {"samples_per_period": 64, **FRINGE_INPUTS} if key == "fringe" else None
+    if key == "positioning":  # every input stated: an incomplete U makes no statement
+        settings = POSITIONING_INPUTS
     kind, result = _sample(key, settings)
     tolerance = 1000.0 if key != "polygon" else None
     meta = replace(META, decision_quantity="points", tolerance=tolerance)
@@ -261,7 +268,10 @@ def test_fringe_prints_every_sample_and_its_extreme():
     rows = document.results.rows
     assert len(rows) == result.raw_error.size == 512
     lowest = int(np.argmin(result.raw_error))
-    assert rows[lowest][0] == f"{lowest + 1}" and rows[lowest][2] == f"{result.raw_error[lowest]:+.3f}"
+    # printed to the decimal of its U (GUM 7.2.6; issue 39: three decimals whatever U was)
+    d = significant_decimals(float(document.budget.expanded[lowest]))
+    assert rows[lowest][0] == f"{lowest + 1}" and rows[lowest][2] == f"{result.raw_error[lowest]:+.{d}f}"
+    assert rows[lowest][5] == f"{document.budget.expanded[lowest]:.{d}f}"
 
 
 # 6. the positioning figures with their U ---------------------------------------------------

@@ -1,0 +1,164 @@
+"""U in the command line's JSON (``anglebench analyze KIND FILE --json``).
+
+Beside each reported error array ``NAME`` (for example ``corrected_error_arcsec``) the
+JSON gets ``expanded_uncertainty_NAME`` (U per point, same order, same unit; 0 at a
+reference point, where the error is zero by definition) and ``coverage_factor_NAME`` (k
+per point, or one number when every point has the same k), and at the top level the
+``coverage_probability``. When a tolerance is set, ``decided_quantity`` states the figure
+the conformity decision is made on — ``value``, ``interval_low``, ``interval_high``,
+``coverage_probability``, ``unit``, ``verdict`` (null when no statement of conformity may
+be made, with the ``reason``), ``rule`` — always with numbers where the readings give them.
+
+Each workbench says which budget belongs to which array
+(:meth:`models.workbench.IssuesCertificates.uncertainty_budgets`); this module writes them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.conformity import Conformity
+
+__all__ = ["PointUncertainty", "budget_arrays", "decided_quantity_json", "merge_json",
+           "uncertainty_json", "workbench_uncertainty_json"]
+
+
+@dataclass(frozen=True)
+class PointUncertainty:
+    """U and k per point of an array whose U is not one budget's (a part of a budget's
+    points, or a budget's points repeated)."""
+
+    expanded: np.ndarray
+    coverage_factors: np.ndarray
+
+    @classmethod
+    def part(cls, budget: UncertaintyBudget, points: slice) -> PointUncertainty:
+        return cls(np.asarray(budget.expanded)[points], np.asarray(budget.coverage_factors)[points])
+
+    @classmethod
+    def repeated(cls, budget: UncertaintyBudget, times: int) -> PointUncertainty:
+        return cls(np.tile(budget.expanded, times), np.tile(budget.coverage_factors, times))
+
+
+def _number(x: float) -> float | None:
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def budget_arrays(name: str, budget: UncertaintyBudget | PointUncertainty | None) -> dict[str, Any]:
+    """``expanded_uncertainty_NAME`` and ``coverage_factor_NAME`` of one error array (None
+    for both when its U is not determined)."""
+    if budget is None:
+        return {f"expanded_uncertainty_{name}": None, f"coverage_factor_{name}": None}
+    u = np.asarray(budget.expanded, dtype=float)
+    k = np.asarray(budget.coverage_factors, dtype=float)
+    finite = k[np.isfinite(k)]
+    factor: Any = ([_number(v) for v in k] if finite.size and np.ptp(finite) > 0 or
+                   finite.size != k.size else (_number(finite[0]) if finite.size else None))
+    return {f"expanded_uncertainty_{name}": [_number(v) for v in u],
+            f"coverage_factor_{name}": factor}
+
+
+def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> dict[str, Any] | None:
+    """The decided quantity as the JSON states it; None without a tolerance."""
+    if tolerance is None:
+        return None
+    stated = conformity.verdict != "not assessed"
+    out: dict[str, Any] = {
+        "value": _number(conformity.value),
+        "interval_low": _number(conformity.interval_low),
+        "interval_high": _number(conformity.interval_high),
+        "coverage_probability": _number(conformity.probability),
+        "unit": conformity.unit,
+        "tolerance": _number(tolerance),
+        "verdict": conformity.verdict if stated else None,
+        "rule": conformity.rule_key,
+        "probability_conforming": _number(conformity.conforming_probability),
+        # false acceptance after a pass, false rejection after a fail (JCGM 106 specific risk)
+        "decision_risk": _number(conformity.decision_risk) if stated else None,
+    }
+    if not stated:
+        out["reason"] = str(conformity.reason or conformity.statement)
+    return out
+
+
+def uncertainty_json(budgets: Mapping[str, UncertaintyBudget | PointUncertainty | None], probability: float,
+                     conformity: Conformity | None = None,
+                     tolerance: float | None = None, withheld: str = "") -> dict[str, Any]:
+    """The keys to add to a workbench's JSON: U and k beside each array of ``budgets``
+    (a key ``a/b`` places them in the object ``a`` of the JSON, beside its array ``b``),
+    ``coverage_probability``, and ``decided_quantity`` when a tolerance is set.
+    ``withheld``: why U is not given (every array's U then null)."""
+    out: dict[str, Any] = {"coverage_probability": _number(probability)}
+    for key, budget in budgets.items():
+        *path, name = key.split("/")
+        target = out
+        for part in path:
+            target = target.setdefault(part, {})
+        target.update(budget_arrays(name, budget))
+    if withheld:
+        out["uncertainty_withheld"] = withheld
+    if conformity is not None:
+        decided = decided_quantity_json(conformity, tolerance)
+        if decided is not None:
+            out["decided_quantity"] = decided
+    return out
+
+
+def merge_json(data: dict[str, Any], extra: Mapping[str, Any]) -> dict[str, Any]:
+    """``extra`` merged into ``data`` (objects merged key by key; existing keys keep their
+    values: new keys go beside them)."""
+    for key, value in extra.items():
+        if isinstance(value, Mapping) and isinstance(data.get(key), dict):
+            merge_json(data[key], value)
+        elif key not in data:
+            data[key] = value
+    return data
+
+
+#: what a budget or a decision raises when the readings do not determine it (a degenerate
+#: record): the JSON then says why, and still prints every figure it has
+_NOT_DETERMINED = (ValueError, ArithmeticError, IndexError, np.linalg.LinAlgError)
+
+
+def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
+                               settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
+    """The U keys of ``kind``'s JSON for ``result`` with the certificate details
+    ``metadata`` (the standards and their U, the tolerance, the decision rule and quantity):
+    the budgets the workbench names for its arrays, the decision its certificate makes."""
+    from models.messages import reason_of
+
+    probability = float(metadata.coverage_probability)
+    withheld = ""
+    try:
+        budgets = kind.uncertainty_budgets(result, metadata)
+    except _NOT_DETERMINED as exc:  # U not determined: the arrays' U null
+        names = getattr(kind, "uncertainty_array_names", lambda r: ())(result)
+        budgets, withheld = dict.fromkeys(names), str(reason_of(exc))
+    conformity, tolerance, why = None, None, ""
+    if metadata.tolerance is not None or getattr(kind, "tolerance_in_settings", False):
+        try:  # the decision as the certificate makes it
+            document = kind.certificate(result, metadata)
+            conformity, tolerance = document.conformity, document.tolerance
+        except _NOT_DETERMINED as exc:
+            why = str(reason_of(exc))
+    out = uncertainty_json(budgets, probability, conformity, tolerance, withheld)
+    if conformity is None:
+        unit = kind.error_unit(kind.settings_with_defaults(settings))
+        try:
+            tolerance = metadata.tolerance_in(unit)
+        except ValueError:  # a tolerance in a unit of another kind: no figure to state
+            tolerance = None
+        if tolerance is not None:
+            out["decided_quantity"] = {
+                "value": None, "interval_low": None, "interval_high": None,
+                "coverage_probability": probability, "unit": unit,
+                "tolerance": tolerance, "verdict": None, "rule": metadata.decision_rule,
+                "reason": why}
+    return out

@@ -1,0 +1,196 @@
+"""The statement of conformity as ILAC-G8:09/2019 makes it: the guard band from the decided
+value's own interval, the decision at the edges of every zone, the probability of a wrong
+decision (JCGM 106), and no statement when U is incomplete, U ≥ T or the figure withheld.
+U printed as GUM 7.2.6 asks (two significant digits at most)."""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.stats import norm
+
+import models.uncertainty.conformity as conformity_module
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import (
+    decide_conformity,
+    expanded_text,
+    gum_rounded,
+    probability_conforming,
+    significant_decimals,
+)
+
+P = 0.9544997361036416  # k = 2 exactly for a normal distribution
+K = norm.ppf(0.5 * (1 + P))
+
+
+def _budget(u: float, n: int) -> UncertaintyBudget:
+    """Every point with the standard uncertainty u, exactly known (k = 2)."""
+    return UncertaintyBudget((BudgetComponent("noise", "B", "normal", u, 1.0, 1.0, math.inf),),
+                             n, P)
+
+
+# --- GUM 7.2.6 --------------------------------------------------------------------------
+
+def _significant_digits(text: str) -> int:
+    digits = text.replace(".", "").lstrip("0")
+    return len(digits)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(min_value=1e-6, max_value=99.4), st.floats(min_value=-1e3, max_value=1e3))
+def test_u_has_at_most_two_significant_digits_and_the_value_its_decimal(u, value):
+    value_text, u_text = gum_rounded(value, u)
+    assert _significant_digits(u_text) <= 2, (u, u_text)
+    decimals = len(u_text.split(".")[1]) if "." in u_text else 0
+    assert (len(value_text.split(".")[1]) if "." in value_text else 0) == decimals
+    step = 10.0 ** -decimals
+    # rounded to the nearest digit shown: never off by more than half of it
+    assert abs(float(u_text) - u) <= 0.5 * step * (1 + 1e-9)
+    assert abs(float(value_text) - value) <= 0.5 * step * (1 + 1e-9)
+
+
+@pytest.mark.parametrize(("u", "text"), [(2.03, "2.0"), (3.54, "3.5"), (0.0996, "0.10"),
+                                         (0.094, "0.094"), (1.35, "1.4"), (0.0123, "0.012"),
+                                         (12.6, "13"), (0.9996, "1.0")])
+def test_printed_u_examples(u, text):
+    assert gum_rounded(1.0, u)[1] == text
+    assert significant_decimals(u) == (len(text.split(".")[1]) if "." in text else 0)
+
+
+def test_zero_u_is_a_reference_point_never_0_00():
+    assert str(expanded_text(0.0)) == "reference point, by definition"
+    assert expanded_text(0.25) == "0.25\""
+
+
+# --- decisions at the edges of the zones -------------------------------------------------
+
+T = 1.0
+U = float(_budget(0.1, 1).expanded[0])  # u = 0.1, k = 2 (to the last bit as computed)
+
+
+@pytest.mark.parametrize(("edge", "rule", "verdict"), [
+    (lambda: T - U, "guarded", "pass"), (lambda: T - U + 1e-6, "guarded", "conditional pass"),
+    (lambda: T, "guarded", "conditional pass"), (lambda: T + 1e-6, "guarded", "conditional fail"),
+    (lambda: T + U, "guarded", "conditional fail"), (lambda: T + U + 1e-6, "guarded", "fail"),
+    (lambda: T - U, "guarded_binary", "pass"),
+    (lambda: T - U + 1e-6, "guarded_binary", "fail"),
+    (lambda: T, "simple", "pass"), (lambda: T + 1e-6, "simple", "fail"),
+    (lambda: -(T + U + 1e-6), "guarded", "fail"),  # |e| decides
+])
+def test_points_rule_at_the_band_edges(edge, rule, verdict):
+    error = edge()
+    errors = np.array([0.0, 0.1, error, -0.05])
+    c = decide_conformity(errors, _budget(0.1, errors.size), T, rule, "points")
+    assert c.verdict == verdict
+    assert c.value == pytest.approx(abs(error))
+    assert c.interval_low == pytest.approx(abs(error) - U)
+    assert c.interval_high == pytest.approx(abs(error) + U)
+
+
+def _fixed_half_range(monkeypatch, value: float, lower: float, upper: float) -> None:
+    estimate = SimpleNamespace(value=value, u_lower=lower, u_upper=upper, probability=P,
+                               measured=value + 0.05, trials=1000, seed=1, stride=1)
+    monkeypatch.setattr(conformity_module, "half_range_monte_carlo", lambda e, b: estimate)
+
+
+@pytest.mark.parametrize(("value", "verdict"), [
+    (1.0 - 0.3, "pass"), (1.0 - 0.3 + 1e-6, "conditional pass"), (1.0, "conditional pass"),
+    (1.0 + 0.1, "conditional fail"), (1.0 + 0.1 + 1e-6, "fail")])
+def test_asymmetric_interval_upper_half_width_guards_acceptance(monkeypatch, value, verdict):
+    """The interval −0.1/+0.3: acceptance needs value + 0.3 ≤ T, rejection value − 0.1 > T."""
+    _fixed_half_range(monkeypatch, value, 0.1, 0.3)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), 1.0, "guarded", "half_range")
+    assert c.verdict == verdict
+    assert (c.interval_low, c.interval_high) == pytest.approx((value - 0.1, value + 0.3))
+
+
+def test_probability_of_false_acceptance_is_the_normal_tail(monkeypatch):
+    """At the acceptance limit with a symmetric interval the true value exceeds T with the
+    normal tail beyond k = 2: 2.275 %."""
+    p = probability_conforming(T - U, U, U, T, P)
+    assert 1 - p == pytest.approx(norm.sf(K), rel=1e-9)
+    _fixed_half_range(monkeypatch, T - U, U, U)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "guarded", "half_range")
+    assert c.verdict == "pass" and c.decision_risk == pytest.approx(norm.sf(K), rel=1e-6)
+    assert "2.28 %" in c.statement
+    # simple acceptance at the limit: half the time the item is out
+    _fixed_half_range(monkeypatch, T, U, U)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "simple", "half_range")
+    assert c.verdict == "pass" and c.decision_risk == pytest.approx(0.5)
+    # a fail: the probability of a false rejection
+    _fixed_half_range(monkeypatch, T + 1.5 * U, U, U)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "guarded", "half_range")
+    assert c.verdict == "fail" and c.decision_risk == pytest.approx(norm.cdf(-1.5 * K))
+    assert "false rejection" in c.statement
+
+
+def test_split_normal_holds_the_interval_at_its_probability():
+    """Drawn independently: each side of the value a half normal with the side's σ; the
+    interval −a/+b holds P of the draws and the tail beyond T is what is stated."""
+    rng = np.random.default_rng(5)
+    value, lower, upper, t = 2.0, 0.3, 0.9, 2.5
+    side = rng.random(400_000) < 0.5
+    half = np.abs(rng.standard_normal(side.size))
+    draws = np.where(side, value + half * upper / K, value - half * lower / K)
+    inside = np.mean((draws >= value - lower) & (draws <= value + upper))
+    assert inside == pytest.approx(P, abs=0.002)
+    assert probability_conforming(value, lower, upper, t, P) == pytest.approx(
+        np.mean(draws <= t), abs=0.002)
+
+
+def test_points_false_acceptance_is_bounded_by_the_sum_over_points():
+    errors = np.array([T - U, -(T - U), 0.0])  # two points at the acceptance limit
+    c = decide_conformity(errors, _budget(0.1, 3), T, "guarded", "points")
+    tail = norm.sf(K)
+    assert c.verdict == "pass"
+    assert c.decision_risk == pytest.approx(2 * tail + 2 * norm.sf(18 * K / 2) + norm.sf(10 * K),
+                                            rel=1e-3)
+
+
+# --- no statement ------------------------------------------------------------------------
+
+def test_incomplete_u_makes_no_statement_but_gives_the_figures():
+    errors = np.array([0.0, 0.1, 0.3, -0.05])
+    c = decide_conformity(errors, _budget(0.05, 4), T, "guarded", "points",
+                          not_stated=("Temperature", "Misalignment of the reference"))
+    assert c.verdict == "not assessed" and c.conforms is None
+    assert "Temperature, Misalignment of the reference" in c.reason
+    assert "not stated" in c.reason and "not stated" in c.statement
+    assert c.value == pytest.approx(0.3) and c.interval_high == pytest.approx(0.4)
+    assert math.isnan(c.decision_risk)
+
+
+def test_u_not_smaller_than_t_makes_no_statement():
+    errors = np.array([0.0, 0.1, 0.3, -0.05])
+    c = decide_conformity(errors, _budget(0.5, 4), T, "guarded", "points")
+    assert c.verdict == "not assessed"
+    assert "not smaller than" in c.reason and math.isfinite(c.value)
+
+
+def test_u_not_smaller_than_t_on_the_half_range(monkeypatch):
+    _fixed_half_range(monkeypatch, 0.2, 0.5, 1.2)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "simple", "half_range")
+    assert c.verdict == "not assessed" and "not smaller than" in c.reason
+    assert c.value == pytest.approx(0.2) and c.interval_high == pytest.approx(1.4)
+    assert c.interval_low == 0.0  # a half range is never negative
+
+
+def test_withheld_figure_makes_no_statement(monkeypatch):
+    _fixed_half_range(monkeypatch, float("nan"), float("nan"), float("nan"))
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "guarded", "half_range")
+    assert c.verdict == "not assessed" and "withheld" in c.reason
+    c = decide_conformity(np.array([0.1, np.nan]), _budget(0.01, 2), T, "guarded", "points")
+    assert c.verdict == "not assessed" and "withheld" in c.reason
+
+
+def test_invalid_run_keeps_the_figures(monkeypatch):
+    _fixed_half_range(monkeypatch, 0.3, 0.1, 0.1)
+    c = decide_conformity(np.zeros(8), _budget(0.01, 8), T, "guarded", "half_range",
+                          invalid_reason="the run is invalid (closure failed)")
+    assert c.verdict == "not assessed" and "closure failed" in c.reason
+    assert c.value == pytest.approx(0.3)
