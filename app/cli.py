@@ -237,7 +237,7 @@ def run_analyze(argv: list[str]) -> int:
                                       reason=first.reason), more)), words))
         return EXIT_BAD_INPUT
     try:
-        result = kind.analyze(parsed, kind.settings_with_defaults(settings))
+        result = kind.analyze_as_far_as_it_goes(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -251,8 +251,10 @@ def run_analyze(argv: list[str]) -> int:
         except (ValueError, OSError) as exc:
             _say(f"anglebench analyze: --compare-after: {_why(exc, words)}")
             return EXIT_BAD_INPUT
+    incomplete = getattr(result, "incomplete", None)
     if args.json:
         data = kind.to_json(result)
+        data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
@@ -260,6 +262,8 @@ def run_analyze(argv: list[str]) -> int:
         say = words
         summary = rendered(in_unit(kind.summary(result), ANGLE_UNITS[args.unit]), say)
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
+        if incomplete is not None:
+            sys.stdout.write(rendered(incomplete.progress(), say) + "\n")
         if comparison is not None:
             sys.stdout.write(rendered(in_unit(comparison.text(Path(args.compare_after).name),
                                               ANGLE_UNITS[args.unit]), say) + "\n")
@@ -279,6 +283,13 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
                               path=args.table), words))
+    if incomplete is not None and args.certificate:
+        _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {progress} is "
+                                         "not complete; a certificate needs every {unit} "
+                                         "complete (the complete ones are analysed above)"),
+                              file=args.file, progress=incomplete.text(),
+                              unit=incomplete.unit), words))
+        return EXIT_BAD_INPUT
     doubt = (kind.certificate_doubt(result)
              if isinstance(kind, IssuesCertificates) and args.certificate else "")
     if doubt and not args.confirm_implausible:

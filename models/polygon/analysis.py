@@ -31,6 +31,7 @@ from models.polygon.model import (
 )
 from models.polygon.plots import error_figure
 from models.polygon.report import polygon_certificate, setup_statement
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
@@ -182,6 +183,33 @@ def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None
             rows = rows[:-1]
         out.append((set_id, rows, closure))
     return out
+
+
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete sets, and the last set when it is in progress: its faces read once each,
+    fewer than the polygon has, no closure yet (the face count from the setting, else from
+    the first set)."""
+    if parsed.n == 0 or not np.all(np.isfinite(parsed["position"])):
+        return parsed, None
+    split = split_sets(parsed)
+    faces = int(settings.get("faces", 0) or 0)
+    if not faces:
+        if len(split) < 2:
+            return parsed, None  # one set and no face count: nothing says it is short
+        faces = int(split[0][1].size)
+    set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int).tolist()
+    positions = parsed["position"].astype(int).tolist()
+    rows = short_last_unit(set_ids, positions, set(range(1, faces + 1)))
+    if rows is None:
+        return parsed, None
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    unit = IncompleteUnit("set", float(set_ids[-1]) if len(split) > 1 or
+                          np.isfinite(parsed["set"][-1]) else 1.0,
+                          int(rows.size), faces, _row(parsed, int(rows[0])),
+                          _row(parsed, int(rows[-1])), tuple(int(r) for r in rows))
+    return subset(parsed, keep), unit
 
 
 def _row(parsed: ParsedReadings, index: int) -> int:
@@ -600,6 +628,9 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
     def check_settings(self, checked):
         _check_across(checked)
+
+    def split_incomplete(self, parsed, settings):
+        return split_incomplete(parsed, settings)
 
     def certificate(self, result, metadata, source_name=""):
         return polygon_certificate(result, metadata, source_name, self.method_reference)

@@ -24,6 +24,7 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import positioning_certificate
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.workbench import (
@@ -240,6 +241,60 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     return out
 
 
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete runs, and the last unit when it is in progress: in the linear cycle the
+    last run (its readings the last rows, fewer (target, direction) than the earlier runs
+    have, each once); in the pilgrim-step cycle the last target (fewer (run, direction)
+    than the other targets have)."""
+    if parsed.n < 2 or not np.all(np.isfinite(parsed["target"])):
+        return parsed, None
+    runs_column = parsed["run"]
+    if np.any(np.isfinite(runs_column)) and not np.all(np.isfinite(runs_column)):
+        return parsed, None  # refused by the analysis, naming the row
+    per_point = int(settings.get("readings_per_point", 1) or 1)
+    if not np.all(np.isfinite(runs_column)) and per_point > 1:
+        return parsed, None  # repeated readings: the runs are counted after averaging
+    targets = np.round(parsed["target"].astype(float), 9)
+    directions = _directions(parsed, [])
+    runs = _runs_counted(parsed, targets, directions)
+    t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
+    # linear cycle: the last run short of the (target, direction) the runs before it have
+    earlier = {(t[i], d[i]) for i in range(parsed.n) if r[i] != r[-1]}
+    rows = short_last_unit(r, list(zip(t, d, strict=True)), earlier)
+    unit = "run"
+    if rows is None:  # pilgrim-step cycle: the last target short of the others' approaches
+        others = {(r[i], d[i]) for i in range(parsed.n) if t[i] != t[-1]}
+        rows = short_last_unit(t, list(zip(r, d, strict=True)), others)
+        unit = "target"
+        if rows is None:
+            return parsed, None
+        expected = len(others)
+    else:
+        expected = len(earlier)
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    number = float(r[-1]) if unit == "run" else float(t[-1])
+    return subset(parsed, keep), IncompleteUnit(
+        unit, number, int(rows.size) // per_point if per_point > 1 else int(rows.size),
+        expected, _row(parsed, int(rows[0])), _row(parsed, int(rows[-1])),
+        tuple(int(i) for i in rows))
+
+
+def _runs_counted(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray
+                  ) -> np.ndarray:
+    """The run of each reading: the run column, else the k-th approach to a target in a
+    direction (no check: the analysis checks)."""
+    if np.all(np.isfinite(parsed["run"])):
+        return parsed["run"].astype(int)
+    counts: dict[tuple[float, float], int] = {}
+    out = np.empty(targets.size, dtype=int)
+    for i, key in enumerate(zip(targets.tolist(), directions.tolist(), strict=True)):
+        counts[key] = counts.get(key, 0) + 1
+        out[i] = counts[key]
+    return out
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
     s = POSITIONING.checked_settings(settings)
     parsed, repeats = average_repeats(parsed, s["readings_per_point"],
@@ -409,6 +464,9 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
 
     def check_settings(self, checked):
         _check_units(checked)
+
+    def split_incomplete(self, parsed, settings):
+        return split_incomplete(parsed, settings)
 
     def error_unit(self, settings):
         """The deviation unit, every figure's."""

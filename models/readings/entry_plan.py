@@ -95,8 +95,9 @@ def _blank(row: Mapping[str, str]) -> bool:
 @dataclass(frozen=True)
 class EntryPlan:
     """The points of a test in the order they are taken; ``kind`` names the plan's maker
-    (``positioning``, ``polygon``, ``crosscal``, ``theodolite``) and ``spec`` its inputs
-    (what :meth:`as_dict` saves)."""
+    (``cycle``: positioning's ISO 230-2 test cycle, ``sets``: a polygon test's sets,
+    ``mountings``: a cross-calibration's, ``passes``: a theodolite run's) and ``spec`` its
+    inputs (what :meth:`as_dict` saves)."""
 
     kind: str
     spec: Mapping[str, Any]
@@ -230,7 +231,7 @@ def positioning_plan(targets: Sequence[float], runs: int = 5, bidirectional: boo
                                      target=f"{_number(t)}{unit}", run=run,
                                      arrow="↑" if d > 0 else "↓"))
                    for i, (t, run, d) in enumerate(approaches))
-    return EntryPlan("positioning", {"targets": targets, "runs": runs,
+    return EntryPlan("cycle", {"targets": targets, "runs": runs,
                                      "bidirectional": bool(bidirectional), "order": order,
                                      "unit": unit}, points)
 
@@ -255,7 +256,7 @@ def polygon_plan(faces: int, sets: int = 1, closure: bool = True,
                              faces=faces))
             points.append(PlanPoint(len(points), {"position": str(face), "set": str(s),
                                                   "direction": "-" if reverse else "+"}, label))
-    return EntryPlan("polygon", {"faces": faces, "sets": sets, "closure": bool(closure),
+    return EntryPlan("sets", {"faces": faces, "sets": sets, "closure": bool(closure),
                                  "alternate": bool(alternate)}, tuple(points))
 
 
@@ -279,7 +280,7 @@ def crosscal_plan(faces: int, mountings: int | None = None, closure: bool = Fals
                              mounting=j, face=face, k=q + 1, faces=faces))
             points.append(PlanPoint(len(points), {"mounting": str(j), "position": str(face)},
                                     label))
-    return EntryPlan("crosscal", {"faces": faces, "mountings": mountings,
+    return EntryPlan("mountings", {"faces": faces, "mountings": mountings,
                                   "closure": bool(closure)}, tuple(points))
 
 
@@ -305,10 +306,10 @@ def theodolite_plan(thetas: Sequence[float], runs: int = 1,
                          if several else message(QT_TR_NOOP("θ = {theta}"),
                                                  theta=f"{_number(t)}°"))
                 points.append(PlanPoint(len(points), cells, label))
-    return EntryPlan("theodolite", {"thetas": thetas, "runs": runs,
+    return EntryPlan("passes", {"thetas": thetas, "runs": runs,
                                     "bidirectional": bool(bidirectional)}, tuple(points))
 
 
 #: each plan's maker by its kind (EntryPlan.from_dict)
-PLAN_MAKERS = {"positioning": positioning_plan, "polygon": polygon_plan,
-               "crosscal": crosscal_plan, "theodolite": theodolite_plan}
+PLAN_MAKERS = {"cycle": positioning_plan, "sets": polygon_plan, "mountings": crosscal_plan,
+               "passes": theodolite_plan}

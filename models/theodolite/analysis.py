@@ -9,6 +9,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
@@ -118,6 +119,29 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     return result
 
 
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete passes, and the last pass (run column) when it is in progress: its rows
+    the last ones, fewer (θ, direction) steps than the passes before it, each once."""
+    runs = parsed["run"]
+    if parsed.n < 2 or not (np.all(np.isfinite(runs)) and np.all(np.isfinite(parsed["theta_deg"]))):
+        return parsed, None
+    r = runs.astype(int).tolist()
+    steps = list(zip(np.round(parsed["theta_deg"].astype(float), 9).tolist(),
+                     [d or "+" for d in parsed["direction"]], strict=True))
+    earlier = {steps[i] for i in range(parsed.n) if r[i] != r[-1]}
+    rows = short_last_unit(r, steps, earlier)
+    if rows is None:
+        return parsed, None
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    sheet = parsed.row_index.astype(int) + 1
+    per_point = int(settings.get("readings_per_point", 1) or 1)
+    return subset(parsed, keep), IncompleteUnit(
+        "pass", float(r[-1]), int(rows.size) // per_point if per_point > 1 else int(rows.size),
+        len(earlier), int(sheet[rows[0]]), int(sheet[rows[-1]]), tuple(int(i) for i in rows))
+
+
 def positioning_rows(result: TheodoliteResult) -> list[list[str]]:
     """The run as readings of the positioning workbench: target = θ, deviation = −corrected
     error (actual − target is reference − indicated); run and direction as read, else blank
@@ -216,6 +240,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
                           QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
                                      "(same as --vertical-reading zenith)")),)
     analyze = staticmethod(analyze)
+    split_incomplete = staticmethod(split_incomplete)
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
     acquisition_guide = staticmethod(theodolite_guide)
