@@ -160,6 +160,13 @@ class CertificatePresenter:
         recorded."""
         from app.certificate_issue import draft_reasons
 
+        incomplete = getattr(result, "incomplete", None)
+        if incomplete is not None:  # before any dialog: a certificate needs every unit
+            self.view.tell(tr("Certificate"), tr(
+                "No certificate: {progress} is not complete. A certificate needs every set, "
+                "mounting or run complete; finish it, or delete its rows to certify the "
+                "complete ones.").format(progress=translated(incomplete.text())))
+            return False
         doubt = kind.certificate_doubt(result) if isinstance(kind, IssuesCertificates) else ""
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False

@@ -131,7 +131,8 @@ class _ImportTask(QRunnable):
 def _run_analysis(kind: Workbench, parsed: ParsedReadings,
                   settings: dict[str, Any]) -> tuple[Any, str]:
     try:
-        return kind.analyze(parsed, settings), ""
+        # a run in progress: the complete units analysed, the last one's progress shown
+        return kind.analyze_as_far_as_it_goes(parsed, settings), ""
     except AnalysisCancelled:
         raise
     except ValueError as exc:  # bad input: a message for the technician
@@ -472,13 +473,16 @@ class WorkbenchPresenter(QObject):
             def unit_text(text: str) -> str:  # in the window's language, then its unit
                 return self.in_unit_text(text)
 
-            self.view.set_summary(unit_text(self.kind.summary(result)))
+            incomplete = getattr(result, "incomplete", None)
+            progress = (unit_text(incomplete.progress()) + "\n") if incomplete else ""
+            self.view.set_summary(progress + unit_text(self.kind.summary(result)))
             self.view.set_verdict(unit_text(self.kind.verdict(result))
                                   if isinstance(self.kind, ShowsHeadline)
                                   else "")
             self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
                                                   self.angle_unit))
             self.view.set_warnings(input_warnings + [unit_text(w) for w in
-                                                     getattr(result, "warnings", [])])
+                                                     getattr(result, "warnings", [])]
+                                   + ([unit_text(incomplete.progress())] if incomplete else []))
             self.show_result(result)
         self.analysed.emit()

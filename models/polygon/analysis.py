@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
@@ -259,6 +259,33 @@ def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, toler
         face=int(parsed['position'][i]), sense=sense, tolerance=f"{tolerance:g}"))
 
 
+def _likely_face_count(parsed: ParsedReadings, rows: np.ndarray, faces: int) -> str | None:
+    """The likely cause when a set's encoder readings do not fit its faces: the encoder
+    steps by another face count's angle per face (a partial set read with the face count
+    "from the readings", a wrong face count), or the faces are numbered otherwise."""
+    a = parsed["encoder_deg"][rows]
+    p = parsed["position"][rows]
+    dp = np.diff(p)
+    ok = dp != 0
+    if not np.any(ok):
+        return None
+    per_face = np.abs(wrap_deg(np.diff(a))[ok] / dp[ok])
+    per_face = per_face[per_face > 0.1]
+    if per_face.size == 0:
+        return None
+    step = float(np.median(per_face))
+    likely = int(round(360.0 / step))
+    if likely < 3 or likely == faces or abs(360.0 / likely - step) > min(1.0, step / 8):
+        return message(QT_TR_NOOP("The encoder readings of set 1 do not follow its face "
+                                  "numbers ({faces} faces): check the face numbering"),
+                       faces=faces)
+    return message(QT_TR_NOOP("The encoder steps by {step}° per face, which is a {likely}-face "
+                              "polygon, but the face count is {faces} ({read} positions read): "
+                              "set the number of faces to {likely} (a partial set?), or check "
+                              "the face numbering"),
+                   step=f"{step:.3f}", likely=likely, faces=faces, read=int(rows.size))
+
+
 def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
                warnings: list[str]) -> int:
     """A set's direction: from the direction column, else from the encoder's steps."""
@@ -297,7 +324,14 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
                            "once each, in any order, then the first position again for the closure"),
                 set_id=set_id, row=_row(parsed, int(rows[0])), tolist=positions.tolist(), faces=faces))
     first_rows = split[0][1]
-    counting, detected = _counting_sense(parsed, first_rows, step, tolerance, counting_setting)
+    try:
+        counting, detected = _counting_sense(parsed, first_rows, step, tolerance,
+                                             counting_setting)
+    except ValueError as exc:
+        likely = _likely_face_count(parsed, first_rows, faces)
+        if likely is None:
+            raise
+        raise ValueError(joined((likely, " (", reason_of(exc), ")"))) from None
     if counting < 0:
         warnings.append(message(
             QT_TR_NOOP("The encoder counts against the face numbering (detected from the "

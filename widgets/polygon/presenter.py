@@ -80,12 +80,32 @@ class PolygonPresenter(WorkbenchPresenter):
             except ValueError:
                 continue
             if position not in deviations:
+                read = max(self._positions())
+                # a polygon's own reference (faces 1…m, m ≥ 3) for another face count
+                if (len(deviations) >= 3 and read != len(deviations)
+                        and sorted(deviations) == list(range(1, len(deviations) + 1))):
+                    raise TableImportError(message(QT_TR_NOOP(
+                        "{path}: the readings have {read} faces (position {position}, row "
+                        "{row}), the reference {faces}: {read} faces against {faces}; choose "
+                        "the polygon's own reference"), path=str(path), read=read,
+                        position=position, row=row + 1, faces=len(deviations)))
                 raise TableImportError(message(QT_TR_NOOP(
                     "{path}: no deviation for position {position} (row {row} of the readings)"),
                     path=str(path), position=position, row=row + 1))
             changes.append((row, column, format(deviations[position], spec)))
         self.table_model.set_cells(changes, label)
         return len(changes)
+
+    def _positions(self) -> list[int]:
+        """The face numbers in the position column (unreadable cells left out)."""
+        column = self.sheet.column_index("position")
+        out = []
+        for row in range(self.sheet.row_count):
+            try:
+                out.append(int(float(self.sheet.text(row, column))))
+            except ValueError:
+                continue
+        return out or [0]
 
     def clear_result(self) -> None:
         self.table_model.set_highlight_rows(set())
