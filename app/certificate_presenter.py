@@ -181,6 +181,12 @@ class CertificatePresenter:
             if not draft or self.view.confirm_draft(draft):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
+        try:  # details the result refuses (a grade that disagrees) told before the file dialog
+            kind.certificate_document(result, entered, source_name, settings)
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export"), tr("{reason}. Nothing was written; the details "
+                                                   "are kept.").format(reason=explained(exc)))
+            return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
         if revision is not None and not draft:

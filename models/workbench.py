@@ -30,6 +30,7 @@ from typing import Any, ClassVar
 from models.messages import QT_TR_NOOP, joined, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
 from models.plots import PlotFigure
+from models.readings.entry_plan import EntryPlan
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
 
@@ -63,6 +64,9 @@ class Workbench(ABC):
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: ClassVar[str] = ""
     entry_column: ClassVar[str] = ""
+    # the columns whose cells are a point's readings (typed or captured); the entry plan
+    # (Workbench.entry_plan) fills the others
+    plan_reading_keys: ClassVar[tuple[str, ...]] = ()
     # command-line switches that set one of the settings (``--zenith``)
     shortcuts: ClassVar[tuple[Shortcut, ...]] = ()
     # the settings the README's sample certificate is made with (beside the defaults)
@@ -84,6 +88,12 @@ class Workbench(ABC):
     @abstractmethod
     def summary(self, result: Any) -> str:
         """The result as readable text."""
+
+    def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
+        """The order its points are taken in, from the settings (models/readings/entry_plan.py;
+        None: no plan set, entry follows the nominal step). ValueError why a plan set cannot
+        be made."""
+        return None
 
     def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
                          ) -> tuple[ParsedReadings, IncompleteUnit | None]:

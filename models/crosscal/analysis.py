@@ -21,6 +21,7 @@ from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, rea
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
+from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
@@ -76,6 +77,11 @@ PARAMETERS = (
                        ("encoder", "the encoder (error at its steps)")),
               help="Which instrument the certificate is issued for: the polygon's face "
                    "deviations or the encoder's error at its steps"),
+    Parameter("plan_mountings", "entry plan: mountings", "int", 0, minimum=2, maximum=360,
+              zero="no plan", cli=False,
+              help="Mountings of the entry plan: with the number of faces set, entry fills "
+                   "mounting and face as readings arrive (mounting j from face j + 1) and shows "
+                   "the next one. 0: no plan"),
 )
 
 #: a residual beyond this many σ is marked as an outlier
@@ -431,6 +437,18 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     reference_kind = POLYGON_FACE_DEVIATIONS
     analyze = staticmethod(analyze)
     split_incomplete = staticmethod(split_incomplete)
+    plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
+
+    def entry_plan(self, settings):
+        mountings = int(settings.get("plan_mountings", 0) or 0)
+        if not mountings:
+            return None
+        faces = int(settings.get("faces", 0) or 0)
+        if not faces:
+            raise ValueError(message(QT_TR_NOOP("the entry plan needs the number of faces "
+                                                "(set-up: faces n)")))
+        return crosscal_plan(faces, mountings)
+
     to_json = staticmethod(to_json)
     sent_reference = staticmethod(polygon_reference)
     rows_from_table = staticmethod(matrix_rows)  # the n × n matrix labs write

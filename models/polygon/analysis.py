@@ -31,6 +31,7 @@ from models.polygon.model import (
 )
 from models.polygon.plots import error_figure
 from models.polygon.report import polygon_certificate, setup_statement
+from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -124,6 +125,11 @@ PARAMETERS = (
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
     REPEATS_PARAMETER,
+    Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
+              cli=False,
+              help="Sets of the entry plan: with the number of faces set, entry fills face, "
+                   "set and direction (every second set reverse) as readings arrive and shows "
+                   "the next face; each set ends on face 1 again (closure). 0: no plan"),
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
@@ -665,6 +671,18 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
+
+    plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
+
+    def entry_plan(self, settings):
+        sets = int(settings.get("plan_sets", 0) or 0)
+        if not sets:
+            return None
+        faces = int(settings.get("faces", 0) or 0)
+        if not faces:
+            raise ValueError(message(QT_TR_NOOP("the entry plan needs the number of faces "
+                                                "(set-up: faces n)")))
+        return polygon_plan(faces, sets, closure=True, alternate=True)
 
     def certificate(self, result, metadata, source_name=""):
         return polygon_certificate(result, metadata, source_name, self.method_reference)

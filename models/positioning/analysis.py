@@ -18,12 +18,14 @@ from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION,
     STANDARDS,
+    TARGET_UNITS,
     PositioningResult,
     evaluate,
     figure_text,
     infer_directions,
 )
 from models.positioning.report import positioning_certificate
+from models.readings.entry_plan import positioning_plan, targets_from_text
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -133,6 +135,22 @@ PARAMETERS = (
               help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
                    "feed, dwell at each target, other axes' positions"),
     REPEATS_PARAMETER,
+    # the test plan: entry follows the run (models/readings/entry_plan.py)
+    Parameter("plan_runs", "test plan: runs", "int", 0, minimum=1, maximum=100, zero="no plan",
+              cli=False,
+              help="Runs of the test plan (ISO 230-2: 5); with the targets below, entry fills "
+                   "target, run and direction as readings arrive and shows the next point. "
+                   "0: no plan (the nominal step fills the target)"),
+    Parameter("plan_targets", "test plan: targets", "text", "0:30:12", cli=False,
+              help="The plan's targets: start:step:count (0:30:12) or a list (0, 30, 60)"),
+    Parameter("plan_directions", "test plan: directions", "choice", "both", cli=False,
+              choices=(("both", "bidirectional (↑ then ↓)"), ("up", "unidirectional (↑)")),
+              help="Approach directions of the plan"),
+    Parameter("plan_order", "test plan: order", "choice", "linear", cli=False,
+              choices=(("linear", "linear (ISO 230-2 standard cycle)"),
+                       ("pilgrim", "pilgrim step (every approach of a target in turn)")),
+              help="Linear: run 1 ↑ over every target, then ↓, then run 2; pilgrim step: "
+                   "all of one target's approaches before the next target"),
 )
 
 #: the settings that are inputs of the certificate's budget (PositioningResult.inputs)
@@ -467,6 +485,17 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
 
     def split_incomplete(self, parsed, settings):
         return split_incomplete(parsed, settings)
+
+    plan_reading_keys = ("deviation", "measured")
+
+    def entry_plan(self, settings):
+        runs = int(settings.get("plan_runs", 0) or 0)
+        if not runs:
+            return None
+        unit = TARGET_UNITS.get(str(settings.get("target_unit", "deg")), "°")
+        return positioning_plan(targets_from_text(str(settings.get("plan_targets", ""))), runs,
+                                settings.get("plan_directions", "both") == "both",
+                                str(settings.get("plan_order", "linear")), unit)
 
     def error_unit(self, settings):
         """The deviation unit, every figure's."""

@@ -40,7 +40,8 @@ from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import AngleParseError, parse_angle_deg
 
 __all__ = ["PLAN_MAKERS", "EntryPlan", "Placement", "PlanPoint", "crosscal_plan", "polygon_plan",
-           "positioning_plan", "same_cell", "targets_from", "theodolite_plan"]
+           "positioning_plan", "same_cell", "targets_from", "targets_from_text",
+           "theodolite_plan"]
 
 _UP = ("+", "↑", "up")
 _DOWN = ("-", "−", "↓", "down")
@@ -184,6 +185,32 @@ def targets_from(start: float, step: float, count: int) -> list[float]:
     if not (math.isfinite(start) and math.isfinite(step) and step != 0):
         raise ValueError(message(QT_TR_NOOP("a test plan needs a finite, non-zero step")))
     return [start + k * step for k in range(count)]
+
+
+def targets_from_text(text: str) -> list[float]:
+    """Targets written as ``start:step:count`` ("0:30:13") or as a list ("0, 30, 60"; D°M′S″
+    allowed); ValueError naming what is wrong."""
+    text = str(text).strip()
+    if ":" in text and "°" not in text and text.count(":") == 2:
+        start, step, count = (part.strip() for part in text.split(":"))
+        try:
+            return targets_from(float(start), float(step), int(count))
+        except ValueError as exc:
+            if isinstance(exc.args[0] if exc.args else None, Message):
+                raise
+            raise ValueError(message(QT_TR_NOOP("test plan targets '{text}': write start:step:"
+                                                "count (0:30:13) or a list (0, 30, 60)"),
+                                     text=text)) from None
+    parts = [p for p in text.replace(";", ",").split(",") if p.strip()]
+    try:
+        targets = [parse_angle_deg(p) for p in parts]
+        if len(targets) < 2:
+            raise ValueError("one target")
+        return targets
+    except (AngleParseError, ValueError):
+        raise ValueError(message(QT_TR_NOOP("test plan targets '{text}': write start:step:count "
+                                            "(0:30:13) or a list (0, 30, 60)"), text=text)) \
+            from None
 
 
 def _check_count(name: str, value: Any, least: int = 1) -> int:

@@ -9,6 +9,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
+from models.readings.entry_plan import targets_from_text, theodolite_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -71,6 +72,13 @@ PARAMETERS = (
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
     REPEATS_PARAMETER,
+    Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
+              zero="no plan", cli=False,
+              help="Passes of the entry plan over the θ steps below: entry fills θ (and run "
+                   "and direction with more than one pass) as readings arrive and shows the "
+                   "next step. 0: no plan"),
+    Parameter("plan_thetas", "entry plan: θ steps", "text", "-20:1:41", cli=False,
+              help="The plan's θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)"),
 )
 
 
@@ -241,6 +249,14 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
                                      "(same as --vertical-reading zenith)")),)
     analyze = staticmethod(analyze)
     split_incomplete = staticmethod(split_incomplete)
+    plan_reading_keys = ("azimuth_deg", "elevation_deg")
+
+    def entry_plan(self, settings):
+        passes = int(settings.get("plan_passes", 0) or 0)
+        if not passes:
+            return None
+        return theodolite_plan(targets_from_text(str(settings.get("plan_thetas", ""))), passes)
+
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
     acquisition_guide = staticmethod(theodolite_guide)

@@ -6,7 +6,7 @@ from models.messages import QT_TR_NOOP, message
 from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
-from models.polygon.model import PolygonResult
+from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult
 from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr
 from widgets.polygon.view import PolygonView
@@ -23,9 +23,11 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
+        tolerance = GRADE_ACCURACY_ARCSEC.get(result.grade)
         self.view.show_figures(*self.in_unit(
             plots.error_figure(result), plots.residual_figure(result),
-            plots.tilt_figure(result), plots.harmonics_figure(result)))
+            plots.tilt_figure(result), plots.harmonics_figure(result)),
+            sets=self.in_unit(plots.sets_figure(result, self.parsed, tolerance))[0])
         if not result.valid:
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
+from models.positioning.compensation import check_compensation
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
@@ -46,6 +47,13 @@ class PositioningPresenter(WorkbenchPresenter):
             return
         fmt = self._settings["compensation_format"]
         if fmt in CONTROLLERS and not self.ask_controller_options(fmt):
+            return
+        s = self.kind.checked_settings(self._settings)
+        try:  # a table the controller would refuse is told before the file dialog
+            check_compensation(self.result, s["compensation_step"], s["compensation_tables"],
+                               fmt, s["compensation_controller_options"])
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export the compensation table"), explained(exc))
             return
         path = self.view.ask_compensation_path(SUGGESTED_NAMES.get(fmt, "compensation.csv"), fmt)
         if path:
