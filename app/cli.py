@@ -285,10 +285,9 @@ def run_analyze(argv: list[str]) -> int:
                               path=args.table), words))
     if incomplete is not None and args.certificate:
         _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {progress} is "
-                                         "not complete; a certificate needs every {unit} "
-                                         "complete (the complete ones are analysed above)"),
-                              file=args.file, progress=incomplete.text(),
-                              unit=incomplete.unit), words))
+                                         "not complete; a certificate waits for it (the "
+                                         "complete ones are analysed above)"),
+                              file=args.file, progress=incomplete.text()), words))
         return EXIT_BAD_INPUT
     doubt = (kind.certificate_doubt(result)
              if isinstance(kind, IssuesCertificates) and args.certificate else "")

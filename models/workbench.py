@@ -110,8 +110,8 @@ class Workbench(ABC):
         if unit is None:
             return self.analyze(parsed, settings)
         if complete.n == 0:
-            raise ValueError(message(QT_TR_NOOP("{progress}: no {kind} is complete yet"),
-                                     progress=unit.text(), kind=unit.unit))
+            raise ValueError(message(QT_TR_NOOP("{progress}: none is complete yet"),
+                                     progress=unit.text()))
         try:
             result = self.analyze(complete, settings)
         except ValueError as exc:

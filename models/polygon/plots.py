@@ -113,7 +113,7 @@ def sets_figure(result: PolygonResult, parsed: Any = None,
     as taken (raw error against set 1's reference, markers only) and the tolerance ±T
     (dashed, about the mid-range of the mean) when one is given."""
     th = result.theta_deg
-    series = [PlotSeries(f"set {k} ({'+' if s.direction > 0 else '−'})", th,
+    series = [PlotSeries(f"{k} ({'+' if s.direction > 0 else '−'})", th,
                          s.corrected_error_arcsec, SET_COLOURS[(k - 1) % len(SET_COLOURS)], True,
                          width=1)
               for k, s in enumerate(result.sets, 1)]
@@ -121,7 +121,7 @@ def sets_figure(result: PolygonResult, parsed: Any = None,
                              GREEN, False, width=3))
     x, y = in_progress_errors(parsed, result)
     if x.size:
-        series.append(PlotSeries(str(result.incomplete.text()) + " (raw)", x, y, GREY, True,
+        series.append(PlotSeries(QT_TR_NOOP("set in progress (raw error)"), x, y, GREY, True,
                                  width=0, marker_size=8))
     if tolerance_arcsec:
         # about the mean error's mid-range: the curve stays inside exactly when half its
@@ -133,5 +133,5 @@ def sets_figure(result: PolygonResult, parsed: Any = None,
                                  np.full(2, mid + tolerance_arcsec), RED, dashed=True, width=1))
         series.append(PlotSeries("", ends, np.full(2, mid - tolerance_arcsec), RED, dashed=True,
                                  width=1))
-    return PlotFigure(QT_TR_NOOP("Corrected error of each set"), ANGLE, QT_TR_NOOP("error (\")"),
-                      tuple(series))
+    return PlotFigure(QT_TR_NOOP("Corrected error of each set (set number, direction)"), ANGLE,
+                      QT_TR_NOOP("error (\")"), tuple(series))

@@ -54,10 +54,9 @@ class IncompleteUnit:
     def progress(self) -> Message:
         """The line the summary and the command line print."""
         return message(QT_TR_NOOP("In progress: {unit} (rows {first}–{last}); its readings "
-                                  "enter no figure until it is complete. A certificate needs "
-                                  "every {kind} complete."),
-                       unit=self.text(), first=self.first_row, last=self.last_row,
-                       kind=self.unit)
+                                  "enter no figure until it is complete, and a certificate "
+                                  "waits for it."),
+                       unit=self.text(), first=self.first_row, last=self.last_row)
 
     def as_dict(self) -> dict[str, object]:
         """The JSON key ``incomplete``."""

@@ -63,7 +63,7 @@ def passes_figure(result: TheodoliteResult) -> PlotFigure | None:
     for k, (run, direction) in enumerate(np.unique(np.stack([runs, directions]), axis=1).T):
         pick = (runs == run) & (directions == direction)
         o = np.argsort(result.theta_deg[pick], kind="stable")
-        series.append(PlotSeries(f"pass {int(run)} {'↑' if direction > 0 else '↓'}",
+        series.append(PlotSeries(f"{int(run)} {'↑' if direction > 0 else '↓'}",
                                  result.theta_deg[pick][o], result.corrected_error_arcsec[pick][o],
                                  PASS_COLOURS[k % len(PASS_COLOURS)], True,
                                  dashed=bool(direction < 0), width=1))
@@ -71,5 +71,5 @@ def passes_figure(result: TheodoliteResult) -> PlotFigure | None:
     thetas = np.unique(key)
     mean = np.array([np.mean(result.corrected_error_arcsec[key == t]) for t in thetas])
     series.append(PlotSeries(QT_TR_NOOP("mean of the passes"), thetas, mean, GREEN, width=3))
-    return PlotFigure(QT_TR_NOOP("Corrected error of each pass"), "θ (°)", QT_TR_NOOP("error (\")"),
-                      tuple(series))
+    return PlotFigure(QT_TR_NOOP("Corrected error of each pass (pass number, direction)"),
+                      "θ (°)", QT_TR_NOOP("error (\")"), tuple(series))

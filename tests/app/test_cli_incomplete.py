@@ -78,7 +78,7 @@ def test_the_incomplete_unit_enters_no_figure(capsys, samples_dir, tmp_path, ind
     assert code == 0 and f"In progress: {got['text']}" in out
     code = main(["analyze", kind, str(tmp_path / "partial.csv"), "--certificate",
                  str(tmp_path / "c.pdf")])
-    assert code == 2 and "a certificate needs every" in capsys.readouterr().err
+    assert code == 2 and "a certificate waits for it" in capsys.readouterr().err
     assert not (tmp_path / "c.pdf").exists()
     # the whole of it, complete, is no run in progress
     whole = _json(capsys, kind, _write(tmp_path / "whole.csv", header, done + last))
@@ -119,4 +119,4 @@ def test_no_complete_unit_yet_is_said(capsys, samples_dir, tmp_path):
     path = _write(tmp_path / "first.csv", header, rows[:5])
     code = main(["analyze", "polygon", path, "--faces", "24"])
     err = capsys.readouterr().err
-    assert code == 2 and "set 1: 5 of 24 faces: no set is complete yet" in err
+    assert code == 2 and "set 1: 5 of 24 faces: none is complete yet" in err

@@ -41,13 +41,13 @@ def test_one_row_of_set_2_keeps_set_1s_result(qtbot, samples_dir):
         presenter.table_model.replace_all(rows[:29])  # set 2's first 4 faces: 1, 24, 23, 22
         presenter.refresh()
         sets = view.show_figures.call_args.kwargs["sets"]
-        taken = next(x for x in sets.series if x.label.startswith("set 2: 4 of 24 faces"))
+        taken = next(x for x in sets.series if x.label == "set in progress (raw error)")
         whole = presenter.kind.analyze(ReadingsSheet(presenter.kind.columns, rows).parse(),
                                        presenter.settings)
         np.testing.assert_allclose(taken.x, whole.theta_deg[[0, 23, 22, 21]])
         np.testing.assert_allclose(taken.y, whole.sets[1].error_arcsec[[0, 23, 22, 21]],
                                    atol=1e-6)
-        assert [x.label for x in sets.series[:2]] == ["set 1 (+)", "mean of the sets"]
+        assert [x.label for x in sets.series[:2]] == ["1 (+)", "mean of the sets"]
         band = [x for x in sets.series if x.dashed]
         assert len(band) == 2 and band[0].y[0] - band[1].y[0] == 2.0  # grade 3: ±1″
         # a certificate is refused before the details dialog, naming what is in progress

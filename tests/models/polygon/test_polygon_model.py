@@ -182,5 +182,5 @@ def test_a_partial_set_is_named_by_its_face_count_before_a_cell_is_blamed(sample
     assert said.startswith("The encoder steps by 14.99")
     assert "24-face polygon" in said and "face count is 10" in said
     # told the face count, it is a set in progress: 10 of 24 faces, none complete yet
-    with pytest.raises(ValueError, match="set 1: 10 of 24 faces: no set is complete yet"):
+    with pytest.raises(ValueError, match="set 1: 10 of 24 faces: none is complete yet"):
         POLYGON.analyze_as_far_as_it_goes(parsed, {"faces": 24})
