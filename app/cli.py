@@ -24,6 +24,7 @@ from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
 from models.project.file import migrate_certificate_details
+from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import (
@@ -227,6 +228,9 @@ def run_analyze(argv: list[str]) -> int:
             _say(_why(exc, words))
             return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
+    # rows at the end that wait for their reading (a plan's or the nominal step's cells
+    # filled, no reading yet) are points not yet taken, not bad rows
+    parsed, _ = without_waiting_rows(parsed, kind.plan_reading_keys)
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]

@@ -8,7 +8,6 @@ import logging
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
@@ -23,7 +22,7 @@ from models.display_units import (
 from models.messages import reason_of
 from models.project.file import WorkbenchState
 from models.readings.entry_plan import EntryPlan
-from models.readings.incomplete import subset
+from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
@@ -478,24 +477,7 @@ class WorkbenchPresenter(QObject):
     def _without_waiting_rows(self, parsed: ParsedReadings) -> ParsedReadings:
         """The readings less the rows at the end that wait for their reading (the plan's or
         the nominal step's cells filled, no reading yet): a row waiting is not a bad row."""
-        reading = self._reading_keys()
-        if not reading or isinstance(self.sheet.rows, NumericRows):
-            return parsed
-        columns = [self.sheet.column_index(k) for k in reading]
-        waiting = set()
-        for r in range(self.sheet.row_count - 1, max(-1, self.sheet.row_count - 6), -1):
-            texts = [self.sheet.text(r, c).strip() for c in range(self.sheet.column_count)]
-            if not any(texts):
-                continue
-            if any(texts[c] for c in columns):
-                break
-            waiting.add(r)
-        if not waiting:
-            return parsed
-        keep = np.array([int(i) not in waiting for i in parsed.row_index], dtype=bool)
-        out = subset(parsed, keep)
-        out.errors[:] = [e for e in out.errors if e.row not in waiting]
-        return out
+        return without_waiting_rows(parsed, self._reading_keys())[0]
 
     # -- analysis -----------------------------------------------------------
     def schedule_refresh(self) -> None:

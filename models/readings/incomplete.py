@@ -18,7 +18,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.sheet import ParsedReadings
 
-__all__ = ["IncompleteUnit", "UNIT_WORDS", "short_last_unit", "subset"]
+__all__ = ["UNIT_WORDS", "IncompleteUnit", "short_last_unit", "subset", "without_waiting_rows"]
 
 #: each unit's words: (what the unit is, what its readings are)
 UNIT_WORDS: dict[str, tuple[str, str]] = {
@@ -91,3 +91,38 @@ def short_last_unit(unit_of_row: Sequence[Hashable], member_of_row: Sequence[Has
     if len(set(members)) != len(members) or not set(members) < set(expected):
         return None
     return np.asarray(rows, dtype=int)
+
+
+def _blank(value: object) -> bool:
+    if isinstance(value, float):
+        return not np.isfinite(value)
+    return not str(value).strip()
+
+
+def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...]
+                         ) -> tuple[ParsedReadings, int]:
+    """The readings less the rows at the end that wait for their reading: their plan's or
+    nominal step's cells filled (target, face, set), every cell of ``reading_keys`` blank.
+    Such a row is a point not yet taken, not a bad row. (readings, rows left out)."""
+    if not reading_keys or (parsed.n == 0 and not parsed.errors):
+        return parsed, 0
+    in_parsed = {int(r): i for i, r in enumerate(parsed.row_index.tolist())}
+    errors_of: dict[int, list] = {}
+    for e in parsed.errors:
+        errors_of.setdefault(e.row, []).append(e)
+    waiting: set[int] = set()
+    for row in sorted(set(in_parsed) | set(errors_of), reverse=True):
+        errors = errors_of.get(row, [])
+        if any(e.column_key not in reading_keys or e.text.strip() for e in errors):
+            break  # a cell of its own is wrong: told as before
+        i = in_parsed.get(row)
+        if i is not None and not all(_blank(parsed.values[k][i]) for k in reading_keys
+                                     if k in parsed.values):
+            break  # it has a reading
+        waiting.add(row)
+    if not waiting:
+        return parsed, 0
+    keep = np.array([int(r) not in waiting for r in parsed.row_index], dtype=bool)
+    out = subset(parsed, keep)
+    out.errors[:] = [e for e in out.errors if e.row not in waiting]
+    return out, len(waiting)

@@ -120,3 +120,23 @@ def test_no_complete_unit_yet_is_said(capsys, samples_dir, tmp_path):
     code = main(["analyze", "polygon", path, "--faces", "24"])
     err = capsys.readouterr().err
     assert code == 2 and "set 1: 5 of 24 faces: none is complete yet" in err
+
+
+def test_rows_waiting_for_their_reading_are_points_not_yet_taken(capsys, samples_dir, tmp_path):
+    """A log written from the plan: run 5's remaining rows hold target, run and direction
+    and no deviation yet. They are not bad rows; run 5 is in progress."""
+    header, rows = _rows(samples_dir / "positioning_sample.csv")
+    runs = _units(rows, 1)
+    done = [r for block in runs[:-1] for r in block]
+    planned = [r[:3] + [""] for r in runs[-1][6:]]
+    alone = _json(capsys, "positioning", _write(tmp_path / "a.csv", header, done))
+    partial = _json(capsys, "positioning", _write(tmp_path / "b.csv", header,
+                                                  done + runs[-1][:6] + planned))
+    got = partial.pop("incomplete")
+    alone.pop("incomplete")
+    assert (got["unit"], got["number"], got["readings"], got["expected"]) == ("run", 5, 6, 26)
+    assert partial == alone
+    # a blank reading in the middle is still refused, naming its row
+    gap = done[:10] + [done[10][:3] + [""]] + done[11:]
+    code = main(["analyze", "positioning", _write(tmp_path / "c.csv", header, gap)])
+    assert code == 2 and "row 11: neither a deviation" in capsys.readouterr().err
