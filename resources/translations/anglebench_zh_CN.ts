@@ -2737,6 +2737,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>全圆误差</translation>
     </message>
     <message>
+        <source>Each set</source>
+        <translation>各测回</translation>
+    </message>
+    <message>
         <source>Vertical readings / tilt</source>
         <translation>垂直读数 / 倾斜</translation>
     </message>
@@ -3018,7 +3022,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>误差曲线</translation>
     </message>
     <message>
-        <source>Passes</source>
+        <source>Each pass</source>
         <translation>各遍</translation>
     </message>
     <message>

@@ -92,7 +92,7 @@ class PolygonView(WorkbenchView):
         live(self.certificate_button.setToolTip, tr("Fill the deviation column from a CSV/XLSX "
                                                     "with position,deviation_arcsec"))
         self.add_plot_tab(self.error_plot, tr("Error over the circle"))
-        self.add_plot_tab(self.sets_plot, tr("Sets"))
+        self.add_plot_tab(self.sets_plot, tr("Each set"))
         self.add_plot_tab(self.tilt_plot, tr("Vertical readings / tilt"))
         self.add_plot_tab(self.harmonics, tr("Harmonics"))
         self.add_plot_tab(self.simulation, tr("What-if: set-up errors"))

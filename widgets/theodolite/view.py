@@ -18,7 +18,7 @@ class TheodoliteView(WorkbenchView):
         self.simulation = TheodoliteSimulation()
         self.passes_plot = FigurePlot()  # each pass beside the mean (runs in the readings)
         self.add_plot_tab(self.error_plot, tr("Error curves"))
-        self.add_plot_tab(self.passes_plot, tr("Passes"))
+        self.add_plot_tab(self.passes_plot, tr("Each pass"))
         self.add_plot_tab(self.simulation, tr("What-if: set-up errors"))
 
     def show_figures(self, errors, residuals, passes=None) -> None:
