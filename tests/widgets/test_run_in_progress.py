@@ -57,7 +57,7 @@ def test_one_row_of_set_2_keeps_set_1s_result(qtbot, samples_dir):
         certificates = CertificatePresenter(dialogs, mock.MagicMock(), dict, lambda: None)
         assert not certificates.export_certificate(presenter.kind, presenter.result,
                                                    presenter.settings, "x.csv")
-        assert "set 2: 1 of 24 faces" in dialogs.tell.call_args.args[1]
+        assert "set 2: 4 of 24 faces" in dialogs.tell.call_args.args[1]
         dialogs.edit_certificate_details.assert_not_called()
     finally:
         shiboken6.delete(owner)
