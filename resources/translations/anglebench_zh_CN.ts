@@ -898,6 +898,10 @@
         <translation>双向平均 M_i</translation>
     </message>
     <message>
+        <source>in progress (as taken)</source>
+        <translation>进行中（按实测）</translation>
+    </message>
+    <message>
         <source>bound |β| ≤</source>
         <translation>界限 |β| ≤</translation>
     </message>

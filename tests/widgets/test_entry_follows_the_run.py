@@ -60,6 +60,13 @@ def test_the_plan_fills_target_run_and_direction_as_deviations_arrive(presenter_
         if k == 10:  # run 1 complete, run 2 ↑ at 0, 30 and 60: a run in progress
             assert str(presenter.result.incomplete.text()) == "run 2: 3 of 8 readings"
             assert view.set_next_row.call_args.args[0] == "next: target 90°, run 2 ↑ (11/16)"
+            # its readings drawn as taken beside the runs, in no figure
+            readings = view.show_figures.call_args.args[2]
+            taken = readings.series[-1]
+            assert taken.label == "in progress (as taken)"
+            np.testing.assert_allclose(taken.x, [0, 30, 60])
+            np.testing.assert_allclose(taken.y, [_truth(t, "+") for t in (0, 30, 60)],
+                                       atol=1e-3)
         if following is None:
             break
         row = following

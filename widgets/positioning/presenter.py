@@ -34,7 +34,7 @@ class PositioningPresenter(WorkbenchPresenter):
     def show_result(self, result: PositioningResult) -> None:
         self.view.show_figures(*self.in_unit(plots.deviation_figure(result),
                                              plots.reversal_figure(result),
-                                             plots.readings_figure(result)))
+                                             plots.readings_figure(result, self.parsed)))
         self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(tr(" — fewer than 5 runs: flagged"))
