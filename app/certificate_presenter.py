@@ -160,6 +160,13 @@ class CertificatePresenter:
         recorded."""
         from app.certificate_issue import draft_reasons
 
+        incomplete = getattr(result, "incomplete", None)
+        if incomplete is not None:  # before any dialog: a certificate needs every unit
+            self.view.tell(tr("Certificate"), tr(
+                "No certificate: {progress} is not complete. A certificate needs every set, "
+                "mounting or run complete; finish it, or delete its rows to certify the "
+                "complete ones.").format(progress=translated(incomplete.text())))
+            return False
         doubt = kind.certificate_doubt(result) if isinstance(kind, IssuesCertificates) else ""
         if doubt and not self.view.confirm_implausible(translated(doubt)):
             return False
@@ -174,6 +181,12 @@ class CertificatePresenter:
             if not draft or self.view.confirm_draft(draft):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
+        try:  # details the result refuses (a grade that disagrees) told before the file dialog
+            kind.certificate_document(result, entered, source_name, settings)
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export"), tr("{reason}. Nothing was written; the details "
+                                                   "are kept.").format(reason=explained(exc)))
+            return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
         if revision is not None and not draft:

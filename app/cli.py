@@ -24,6 +24,7 @@ from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
 from models.project.file import migrate_certificate_details
+from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import (
@@ -227,6 +228,9 @@ def run_analyze(argv: list[str]) -> int:
             _say(_why(exc, words))
             return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
+    # rows at the end that wait for their reading (a plan's or the nominal step's cells
+    # filled, no reading yet) are points not yet taken, not bad rows
+    parsed, _ = without_waiting_rows(parsed, kind.plan_reading_keys)
     if parsed.errors:
         first = parsed.errors[0]
         line = table.line_numbers[first.row]
@@ -237,7 +241,7 @@ def run_analyze(argv: list[str]) -> int:
                                       reason=first.reason), more)), words))
         return EXIT_BAD_INPUT
     try:
-        result = kind.analyze(parsed, kind.settings_with_defaults(settings))
+        result = kind.analyze_as_far_as_it_goes(parsed, kind.settings_with_defaults(settings))
     except SettingsError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -251,6 +255,7 @@ def run_analyze(argv: list[str]) -> int:
         except (ValueError, OSError) as exc:
             _say(f"anglebench analyze: --compare-after: {_why(exc, words)}")
             return EXIT_BAD_INPUT
+    incomplete = getattr(result, "incomplete", None)
     if args.json:
         data = kind.to_json(result)
         if isinstance(kind, IssuesCertificates):
@@ -265,6 +270,7 @@ def run_analyze(argv: list[str]) -> int:
                 _say(f"anglebench analyze: {_why(exc, words)}")
                 return EXIT_BAD_INPUT
             merge_json(data, workbench_uncertainty_json(kind, result, metadata, settings))
+        data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
@@ -272,6 +278,8 @@ def run_analyze(argv: list[str]) -> int:
         say = words
         summary = rendered(in_unit(kind.summary(result), ANGLE_UNITS[args.unit]), say)
         sys.stdout.write(f"{say(kind.title)}: {args.file}\n{summary}\n")
+        if incomplete is not None:
+            sys.stdout.write(rendered(incomplete.progress(), say) + "\n")
         if comparison is not None:
             sys.stdout.write(rendered(in_unit(comparison.text(Path(args.compare_after).name),
                                               ANGLE_UNITS[args.unit]), say) + "\n")
@@ -291,6 +299,12 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
                               path=args.table), words))
+    if incomplete is not None and args.certificate:
+        _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {progress} is "
+                                         "not complete; a certificate waits for it (the "
+                                         "complete ones are analysed above)"),
+                              file=args.file, progress=incomplete.text()), words))
+        return EXIT_BAD_INPUT
     doubt = (kind.certificate_doubt(result)
              if isinstance(kind, IssuesCertificates) and args.certificate else "")
     if doubt and not args.confirm_implausible:

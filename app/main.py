@@ -65,10 +65,11 @@ def main(argv: list[str] | None = None) -> int:
                             help=words(QT_TR_NOOP(
                                 "the window's size for --screenshot, in logical pixels (with "
                                 "QT_SCALE_FACTOR=2, 960x540 is a 1920x1080 screen at 200 %%)")))
-        parser.add_argument("--language", choices=("system", "en", "zh_CN"), default="en",
+        parser.add_argument("--language", choices=("system", "en", "zh_CN"), default=None,
                             help=words(QT_TR_NOOP(
-                                "the language of --screenshot's window and of this help (the "
-                                "window itself follows View › Language)")))
+                                "the language of the window (default: as last chosen in View "
+                                "› Language), of --screenshot's window (default: en) and of "
+                                "this help")))
         args = parser.parse_args(argv)
     if args.version:
         from models.software import software_identity
@@ -79,10 +80,10 @@ def main(argv: list[str] | None = None) -> int:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
         from app.screenshot import write_screenshots
 
-        for path in write_screenshots(args.screenshot, args.size, args.language):
+        for path in write_screenshots(args.screenshot, args.size, args.language or "en"):
             print(path)  # noqa: T201 - the command's output
         return 0
-    return run_gui(args.project, args.samples, words)
+    return run_gui(args.project, args.samples, words, args.language)
 
 
 def _size_reader(words):
@@ -129,7 +130,7 @@ def missing_x11_packages() -> list[str]:
     return missing
 
 
-def run_gui(project: str | None, samples: bool, words=str) -> int:
+def run_gui(project: str | None, samples: bool, words=str, language: str | None = None) -> int:
     missing = missing_x11_packages()
     if missing:
         from models.messages import QT_TR_NOOP, message, rendered
@@ -146,6 +147,8 @@ def run_gui(project: str | None, samples: bool, words=str) -> int:
     app.setOrganizationName("AngleBench")
     app.setApplicationName("AngleBench")
     window = MainWindow()
+    if language:  # --language: the window in it (and View › Language set to it)
+        window.set_language(language)
     window.show()
     if not window.projects.offer_recovery():
         if project:

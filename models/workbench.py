@@ -27,9 +27,11 @@ from abc import ABC, abstractmethod
 from collections.abc import Mapping
 from typing import Any, ClassVar
 
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, joined, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
 from models.plots import PlotFigure
+from models.readings.entry_plan import EntryPlan
+from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
@@ -62,6 +64,9 @@ class Workbench(ABC):
     # column where a row's readings begin (Return after an edit goes there, one row down)
     nominal_column: ClassVar[str] = ""
     entry_column: ClassVar[str] = ""
+    # the columns whose cells are a point's readings (typed or captured); the entry plan
+    # (Workbench.entry_plan) fills the others
+    plan_reading_keys: ClassVar[tuple[str, ...]] = ()
     # command-line switches that set one of the settings (``--zenith``)
     shortcuts: ClassVar[tuple[Shortcut, ...]] = ()
     # the settings the README's sample certificate is made with (beside the defaults)
@@ -83,6 +88,38 @@ class Workbench(ABC):
     @abstractmethod
     def summary(self, result: Any) -> str:
         """The result as readable text."""
+
+    def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
+        """The order its points are taken in, from the settings (models/readings/entry_plan.py;
+        None: no plan set, entry follows the nominal step). ValueError why a plan set cannot
+        be made."""
+        return None
+
+    def split_incomplete(self, parsed: ParsedReadings, settings: Mapping[str, Any]
+                         ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+        """The readings of the complete units, and the last unit when it is in progress
+        (a set, mounting, run short of readings; models/readings/incomplete.py); by
+        default every reading is complete."""
+        return parsed, None
+
+    def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
+                                  settings: Mapping[str, Any]) -> Any:
+        """The result of the complete units (its ``incomplete``: the last unit in progress,
+        whose readings enter no figure); ValueError when no unit is complete yet."""
+        complete, unit = self.split_incomplete(parsed, settings)
+        if unit is None:
+            return self.analyze(parsed, settings)
+        if complete.n == 0:
+            raise ValueError(message(QT_TR_NOOP("{progress}: none is complete yet"),
+                                     progress=unit.text()))
+        try:
+            result = self.analyze(complete, settings)
+        except ValueError as exc:
+            raise ValueError(joined((reason_of(exc), message(
+                QT_TR_NOOP(" (in progress, left out: {progress})"), progress=unit.text())))) \
+                from None
+        object.__setattr__(result, "incomplete", unit)  # a field of every result that has units
+        return result
 
     def check_settings(self, checked: dict[str, Any]) -> None:  # noqa: B027 - none by default
         """The checks across settings (SettingsError naming the key); each setting alone

@@ -200,14 +200,19 @@ class ErrorPlot(QWidget):
             self.residual_renderer.show(self._figure("residual", x=x, ys=(residuals,)))
 
     def clear(self) -> None:
+        """No data: the curves emptied and the crosshair's line and readout with them (it
+        kept the old values after File › New)."""
         self.set_curves([], None, None, None)
         self.set_residuals([], None)
+        self.vline.hide()
+        self.readout.setText(" ")
 
     def _on_mouse_moved(self, pos) -> None:
         if not self.main_plot.sceneBoundingRect().contains(pos):
             return
         point = self.main_plot.vb.mapSceneToView(pos)
         self.vline.setPos(point.x())
+        self.vline.show()
         parts = [f"x = {point.x():.4g}"]
         for curve in (self.raw_curve, self.model_curve, self.corrected_curve):
             xs, ys = curve.getData()

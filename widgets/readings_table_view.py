@@ -38,6 +38,10 @@ class ReadingsTableView(QTableView):
         # a pasted block in the workbench's own layout (RawTable -> rows | None; the
         # presenter sets Workbench.rows_from_table): unrolled into readings, the sheet replaced
         self.own_layout = None
+        # the entry plan (the presenter's WorkbenchPresenter.plan_return): Return after a
+        # reading fills the plan's cells and gives the row the next reading goes to; None
+        # (or it returns None): no plan, the nominal step as before
+        self.plan_return = None
         self._setup_ui()
         # after the view's own handling: the edit is committed and the editor closed
         self.itemDelegate().closeEditor.connect(self._editor_closed)
@@ -77,6 +81,13 @@ class ReadingsTableView(QTableView):
             self.next_row(row)
 
     def next_row(self, row: int) -> None:
+        if self.plan_return is not None:
+            target_row = self.plan_return(row)
+            if target_row is not None:
+                target = self.readings_model().index(target_row, self.entry_column)
+                self.setCurrentIndex(target)
+                self.scrollTo(target)
+                return
         model = self.readings_model()
         sheet = model.sheet
         nominal = self.nominal_column

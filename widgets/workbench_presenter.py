@@ -21,6 +21,8 @@ from models.display_units import (
 )
 from models.messages import reason_of
 from models.project.file import WorkbenchState
+from models.readings.entry_plan import EntryPlan
+from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
 from models.readings.tabular_import import (
@@ -47,6 +49,8 @@ THREAD_THRESHOLD_BYTES = 1_000_000
 # a file read on the GUI thread above this size may take half a second (the 216 kB
 # interferometer sample: 0.38 s to read and analyse): the busy bar is shown first (#31)
 PROGRESS_BYTES = 100_000
+# the entry plan follows sheets up to this many rows (a test typed or captured point by point)
+PLAN_ROWS = 5_000
 
 
 class _TaskSignals(QObject):
@@ -131,7 +135,8 @@ class _ImportTask(QRunnable):
 def _run_analysis(kind: Workbench, parsed: ParsedReadings,
                   settings: dict[str, Any]) -> tuple[Any, str]:
     try:
-        return kind.analyze(parsed, settings), ""
+        # a run in progress: the complete units analysed, the last one's progress shown
+        return kind.analyze_as_far_as_it_goes(parsed, settings), ""
     except AnalysisCancelled:
         raise
     except ValueError as exc:  # bad input: a message for the technician
@@ -171,12 +176,14 @@ class WorkbenchPresenter(QObject):
         self.view.attach_table_model(self.table_model)
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
+            self.view.table.plan_return = self.plan_return
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
         self.display: Any = None  # prepare_display(result)
         self.parsed: ParsedReadings | None = None
         self.problem = ""
+        self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
         self.angle_unit: AngleUnit = ANGLE_UNITS["arcsec"]  # what results are shown in
         self._generation = 0
         self._import_generation = 0  # a newer import, or an opened project, drops older imports
@@ -412,6 +419,66 @@ class WorkbenchPresenter(QObject):
         self.undo_stack.clear()
         self.mark_saved()
 
+    # -- the entry plan: entry follows the run ----------------------------------
+    def entry_plan(self) -> EntryPlan | None:
+        """The plan the settings give (None: none set, or it cannot be made: plan_problem)."""
+        try:
+            plan = self.kind.entry_plan(self._settings)
+        except ValueError as exc:
+            self.plan_problem = reason_of(exc)
+            return None
+        self.plan_problem = ""
+        return plan
+
+    def _plan_rows(self, plan: EntryPlan) -> tuple[list[dict[str, str]], list[str]] | None:
+        if isinstance(self.sheet.rows, NumericRows) or self.sheet.row_count > PLAN_ROWS:
+            return None
+        keys = [c.key for c in self.kind.columns]
+        return [{k: self.sheet.text(r, c) for c, k in enumerate(keys)}
+                for r in range(self.sheet.row_count)], keys
+
+    def _reading_keys(self) -> tuple[str, ...]:
+        return self.kind.plan_reading_keys or ((self.kind.entry_column,)
+                                               if self.kind.entry_column else ())
+
+    def plan_return(self, row: int) -> int | None:
+        """Return after an edit of ``row`` with a plan set: the row's plan cells filled when
+        its reading came without them, the next point's plan cells put in the row it goes
+        to (one undo step each); the row the next reading goes to, None without a plan."""
+        plan = self.entry_plan()
+        if plan is None:
+            return None
+        got = self._plan_rows(plan)
+        if got is None:
+            return None
+        rows, keys = got
+        reading = self._reading_keys()
+        changes = []
+        if 0 <= row < len(rows) and any(rows[row].get(k, "").strip() for k in reading) and \
+                not any(rows[row].get(k, "").strip() for k in plan.points[0].cells):
+            point = plan.next_point(rows, reading)
+            if point is not None:
+                changes += [(row, keys.index(k), v) for k, v in point.cells.items()]
+                rows[row].update(point.cells)
+        place = plan.placement(rows, reading)
+        if place is None:
+            if changes:
+                self.table_model.set_cells(changes, tr("Entry plan"))
+            return None
+        if place.row >= len(rows):
+            rows.append({k: "" for k in keys})
+        changes += [(place.row, keys.index(k), v) for k, v in place.cells.items()
+                    if not rows[place.row].get(k, "").strip()]
+        if changes:
+            self.table_model.set_cells(changes, tr("Entry plan: {point}").format(
+                point=translated(place.point.label)))
+        return place.row
+
+    def _without_waiting_rows(self, parsed: ParsedReadings) -> ParsedReadings:
+        """The readings less the rows at the end that wait for their reading (the plan's or
+        the nominal step's cells filled, no reading yet): a row waiting is not a bad row."""
+        return without_waiting_rows(parsed, self._reading_keys())[0]
+
     # -- analysis -----------------------------------------------------------
     def schedule_refresh(self) -> None:
         self._timer.start()
@@ -429,7 +496,7 @@ class WorkbenchPresenter(QObject):
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers))
             return
-        parsed = self.sheet.parse()
+        parsed = self._without_waiting_rows(self.sheet.parse())
         result, error = _run_analysis(self.kind, parsed, dict(self._settings))
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
 
@@ -443,6 +510,16 @@ class WorkbenchPresenter(QObject):
             parsed, result, display = payload
             self._finish(parsed, result, error, display)
 
+    def _next_text(self) -> str:
+        """"next: target 120°, run 3 ↓" with a plan; "next: row 57" without."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if got is None:
+            return tr("next: row {row}").format(row=self.sheet.row_count + 1)
+        text = translated(plan.next_text(got[0], self._reading_keys()))
+        done, total = plan.progress(got[0], self._reading_keys())
+        return f"{text} ({done}/{total})"
+
     def _finish(self, parsed: ParsedReadings, result: Any, error: str, display: Any = None) -> None:
         self.parsed = parsed
         self.display = display
@@ -455,11 +532,15 @@ class WorkbenchPresenter(QObject):
             input_warnings.append(
                 tr("{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point "
                    "at a red cell to see why.").format(cells=len(parsed.errors), rows=shown))
+        next_text = self._next_text()
+        if self.plan_problem:
+            input_warnings.append(tr("Entry plan: {reason}").format(
+                reason=translated(self.plan_problem)))
         self.view.set_readings_caption(
             tr("Readings — {used} used").format(used=parsed.n) + (
                 tr(", {cells} bad cell(s)").format(cells=len(parsed.errors))
                                              if parsed.errors else ""))
-        self.view.set_next_row(tr("next: row {row}").format(row=self.sheet.row_count + 1))
+        self.view.set_next_row(next_text)
         if result is None:
             self.clear_result()
             error = self.in_unit_text(error)
@@ -472,13 +553,16 @@ class WorkbenchPresenter(QObject):
             def unit_text(text: str) -> str:  # in the window's language, then its unit
                 return self.in_unit_text(text)
 
-            self.view.set_summary(unit_text(self.kind.summary(result)))
+            incomplete = getattr(result, "incomplete", None)
+            progress = (unit_text(incomplete.progress()) + "\n") if incomplete else ""
+            self.view.set_summary(progress + unit_text(self.kind.summary(result)))
             self.view.set_verdict(unit_text(self.kind.verdict(result))
                                   if isinstance(self.kind, ShowsHeadline)
                                   else "")
             self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
                                                   self.angle_unit))
             self.view.set_warnings(input_warnings + [unit_text(w) for w in
-                                                     getattr(result, "warnings", [])])
+                                                     getattr(result, "warnings", [])]
+                                   + ([unit_text(incomplete.progress())] if incomplete else []))
             self.show_result(result)
         self.analysed.emit()

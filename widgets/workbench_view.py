@@ -17,6 +17,7 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QHeaderView,
     QLabel,
+    QMainWindow,
     QPlainTextEdit,
     QProgressBar,
     QScrollArea,
@@ -57,6 +58,7 @@ class WorkbenchView(QWidget):
     def __init__(self, title: str, parent=None) -> None:
         super().__init__(parent)
         self.title = title
+        self.last_status = ""
         self._setup_ui()
         self._layout()
         self._retranslate()
@@ -101,7 +103,8 @@ class WorkbenchView(QWidget):
         header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
         self.figures.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.figures.setFixedWidth(320)
+        # narrow enough that the summary beside it keeps its lines at 1280×720 (#41: cramped)
+        self.figures.setFixedWidth(250)
         self.warnings = QLabel()
         self.warnings.setWordWrap(True)
         self.warnings.setTextFormat(Qt.TextFormat.PlainText)
@@ -158,7 +161,7 @@ class WorkbenchView(QWidget):
         self.result_splitter.addWidget(fit_box)
         self.result_splitter.addWidget(self.plot_tabs)
         self.result_splitter.setStretchFactor(1, 1)
-        self.result_splitter.setSizes([220, 640])
+        self.result_splitter.setSizes([270, 590])
         right_layout.addWidget(self.result_splitter, 1)
 
         splitter = QSplitter(Qt.Orientation.Horizontal)
@@ -238,6 +241,14 @@ class WorkbenchView(QWidget):
     def set_readings_per_point(self, n: int) -> None:
         """Typed entry fills a point's nominal value n times (n readings make a point)."""
         self.table.readings_per_point = n
+
+    def show_status(self, text: str) -> None:
+        """A passing message (a table written): the window's status bar for ten seconds, not
+        the readings' caption (which the next analysis rewrites); ``last_status`` keeps it."""
+        self.last_status = text
+        top = self.window()
+        if isinstance(top, QMainWindow):
+            top.statusBar().showMessage(text, 10_000)
 
     def set_next_row(self, text: str) -> None:
         self.next_label.setText(text)

@@ -22,6 +22,8 @@ from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, 
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
 from models.uncertainty.conformity import expanded_text
+from models.readings.entry_plan import crosscal_plan
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,
@@ -76,6 +78,11 @@ PARAMETERS = (
                        ("encoder", "the encoder (error at its steps)")),
               help="Which instrument the certificate is issued for: the polygon's face "
                    "deviations or the encoder's error at its steps"),
+    Parameter("plan_mountings", "entry plan: mountings", "int", 0, minimum=2, maximum=360,
+              zero="no plan", cli=False,
+              help="Mountings of the entry plan: with the number of faces set, entry fills "
+                   "mounting and face as readings arrive (mounting j from face j + 1) and shows "
+                   "the next one. 0: no plan"),
 )
 
 #: a residual beyond this many σ is marked as an outlier
@@ -93,6 +100,7 @@ class CrossCalResult:
     drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
     ac_scale_pct: float = 0.0  # setting: the autocollimator's scale error bound (budget)
     tilt_bound_arcsec: float = 0.0  # setting: the tilt bound without vertical readings (budget)
+    incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
 
     @property
     def faces(self) -> int:
@@ -209,6 +217,32 @@ def _sheet_row(text: str, row: int | None, readings: CrossCalReadings) -> str:
         return message(text.template, **{**figures, key: sheet})
     return text.replace(f"row {row}", f"row {sheet}", 1) if f"row {row}" in text else \
         message(QT_TR_NOOP("row {row}: {reason}"), row=sheet, reason=text)
+
+
+def split_incomplete(parsed, settings: Mapping[str, Any]):
+    """The complete mountings, and the last mounting when it is in progress: its rows the
+    last ones, each face read once, fewer than the polygon has (the face count from the
+    setting, else from the first mounting), no closure yet."""
+    if parsed.n == 0 or not (np.all(np.isfinite(parsed["mounting"]))
+                             and np.all(np.isfinite(parsed["position"]))):
+        return parsed, None
+    mounting = parsed["mounting"].astype(int).tolist()
+    position = parsed["position"].astype(int).tolist()
+    faces = int(settings.get("faces", 0) or 0)
+    if not faces:
+        first = [p for j, p in zip(mounting, position, strict=True) if j == mounting[0]]
+        if mounting[-1] == mounting[0]:
+            return parsed, None  # one mounting and no face count: nothing says it is short
+        faces = max(len(set(first)), max(position))
+    rows = short_last_unit(mounting, position, set(range(1, faces + 1)))
+    if rows is None:
+        return parsed, None
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    sheet = parsed.row_index.astype(int) + 1
+    return subset(parsed, keep), IncompleteUnit(
+        "mounting", float(mounting[-1]), int(rows.size), faces, int(sheet[rows[0]]),
+        int(sheet[rows[-1]]), tuple(int(i) for i in rows))
 
 
 def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
@@ -411,6 +445,19 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     entry_column = "ac_x_arcsec"
     reference_kind = POLYGON_FACE_DEVIATIONS
     analyze = staticmethod(analyze)
+    split_incomplete = staticmethod(split_incomplete)
+    plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
+
+    def entry_plan(self, settings):
+        mountings = int(settings.get("plan_mountings", 0) or 0)
+        if not mountings:
+            return None
+        faces = int(settings.get("faces", 0) or 0)
+        if not faces:
+            raise ValueError(message(QT_TR_NOOP("the entry plan needs the number of faces "
+                                                "(set-up: faces n)")))
+        return crosscal_plan(faces, mountings)
+
     to_json = staticmethod(to_json)
     sent_reference = staticmethod(polygon_reference)
     rows_from_table = staticmethod(matrix_rows)  # the n × n matrix labs write

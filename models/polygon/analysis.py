@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
@@ -31,6 +31,9 @@ from models.polygon.model import (
 )
 from models.polygon.plots import error_figure
 from models.polygon.report import polygon_certificate, polygon_json_budgets, setup_statement
+from models.polygon.report import polygon_certificate, setup_statement
+from models.readings.entry_plan import polygon_plan
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
@@ -123,6 +126,11 @@ PARAMETERS = (
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
     REPEATS_PARAMETER,
+    Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
+              cli=False,
+              help="Sets of the entry plan: with the number of faces set, entry fills face, "
+                   "set and direction (every second set reverse) as readings arrive and shows "
+                   "the next face; each set ends on face 1 again (closure). 0: no plan"),
 )
 
 COUNTING_CHOICES = {"auto": 0, "with": 1, "against": -1}
@@ -184,6 +192,33 @@ def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None
     return out
 
 
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete sets, and the last set when it is in progress: its faces read once each,
+    fewer than the polygon has, no closure yet (the face count from the setting, else from
+    the first set)."""
+    if parsed.n == 0 or not np.all(np.isfinite(parsed["position"])):
+        return parsed, None
+    split = split_sets(parsed)
+    faces = int(settings.get("faces", 0) or 0)
+    if not faces:
+        if len(split) < 2:
+            return parsed, None  # one set and no face count: nothing says it is short
+        faces = int(split[0][1].size)
+    set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int).tolist()
+    positions = parsed["position"].astype(int).tolist()
+    rows = short_last_unit(set_ids, positions, set(range(1, faces + 1)))
+    if rows is None:
+        return parsed, None
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    unit = IncompleteUnit("set", float(set_ids[-1]) if len(split) > 1 or
+                          np.isfinite(parsed["set"][-1]) else 1.0,
+                          int(rows.size), faces, _row(parsed, int(rows[0])),
+                          _row(parsed, int(rows[-1])), tuple(int(r) for r in rows))
+    return subset(parsed, keep), unit
+
+
 def _row(parsed: ParsedReadings, index: int) -> int:
     """The 1-based sheet row of parsed reading ``index``."""
     return int(parsed.row_index[index]) + 1
@@ -231,6 +266,33 @@ def _counting_sense(parsed: ParsedReadings, rows: np.ndarray, step: float, toler
         face=int(parsed['position'][i]), sense=sense, tolerance=f"{tolerance:g}"))
 
 
+def _likely_face_count(parsed: ParsedReadings, rows: np.ndarray, faces: int) -> str | None:
+    """The likely cause when a set's encoder readings do not fit its faces: the encoder
+    steps by another face count's angle per face (a partial set read with the face count
+    "from the readings", a wrong face count), or the faces are numbered otherwise."""
+    a = parsed["encoder_deg"][rows]
+    p = parsed["position"][rows]
+    dp = np.diff(p)
+    ok = dp != 0
+    if not np.any(ok):
+        return None
+    per_face = np.abs(wrap_deg(np.diff(a))[ok] / dp[ok])
+    per_face = per_face[per_face > 0.1]
+    if per_face.size == 0:
+        return None
+    step = float(np.median(per_face))
+    likely = int(round(360.0 / step))
+    if likely < 3 or likely == faces or abs(360.0 / likely - step) > min(1.0, step / 8):
+        return message(QT_TR_NOOP("The encoder readings of set 1 do not follow its face "
+                                  "numbers ({faces} faces): check the face numbering"),
+                       faces=faces)
+    return message(QT_TR_NOOP("The encoder steps by {step}° per face, which is a {likely}-face "
+                              "polygon, but the face count is {faces} ({read} positions read): "
+                              "set the number of faces to {likely} (a partial set?), or check "
+                              "the face numbering"),
+                   step=f"{step:.3f}", likely=likely, faces=faces, read=int(rows.size))
+
+
 def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
                warnings: list[str]) -> int:
     """A set's direction: from the direction column, else from the encoder's steps."""
@@ -269,7 +331,14 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
                            "once each, in any order, then the first position again for the closure"),
                 set_id=set_id, row=_row(parsed, int(rows[0])), tolist=positions.tolist(), faces=faces))
     first_rows = split[0][1]
-    counting, detected = _counting_sense(parsed, first_rows, step, tolerance, counting_setting)
+    try:
+        counting, detected = _counting_sense(parsed, first_rows, step, tolerance,
+                                             counting_setting)
+    except ValueError as exc:
+        likely = _likely_face_count(parsed, first_rows, faces)
+        if likely is None:
+            raise
+        raise ValueError(joined((likely, " (", reason_of(exc), ")"))) from None
     if counting < 0:
         warnings.append(message(
             QT_TR_NOOP("The encoder counts against the face numbering (detected from the "
@@ -600,6 +669,21 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
     def check_settings(self, checked):
         _check_across(checked)
+
+    def split_incomplete(self, parsed, settings):
+        return split_incomplete(parsed, settings)
+
+    plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
+
+    def entry_plan(self, settings):
+        sets = int(settings.get("plan_sets", 0) or 0)
+        if not sets:
+            return None
+        faces = int(settings.get("faces", 0) or 0)
+        if not faces:
+            raise ValueError(message(QT_TR_NOOP("the entry plan needs the number of faces "
+                                                "(set-up: faces n)")))
+        return polygon_plan(faces, sets, closure=True, alternate=True)
 
     def certificate(self, result, metadata, source_name=""):
         return polygon_certificate(result, metadata, source_name, self.method_reference)

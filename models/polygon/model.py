@@ -358,6 +358,7 @@ class PolygonResult:
     # set's s/√n per position (sets, faces) of its encoder and autocollimator readings
     repeats: object = None
     repeat_s_mean_arcsec: np.ndarray | None = None
+    incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

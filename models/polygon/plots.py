@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -10,8 +11,8 @@ from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
 from models.polygon.model import PolygonResult, frame_readings_arcsec
 
-__all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "residual_figure",
-           "tilt_figure"]
+__all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "in_progress_errors",
+           "residual_figure", "sets_figure", "tilt_figure"]
 
 BLUE, ORANGE, GREEN, PURPLE, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
                                     (148, 103, 189), (192, 57, 43))
@@ -70,3 +71,67 @@ def harmonics_figure(result: PolygonResult) -> PlotFigure:
     h = result.harmonics
     return PlotFigure(QT_TR_NOOP("Harmonics of the corrected error"), "harmonic order", "amplitude (\")", (
         PlotSeries("amplitude", h.order[1:].astype(float), h.amplitude[1:], WINDOW_BLUE),))
+
+
+# one colour per set (dark enough to read on white), repeated past eight
+SET_COLOURS = ((31, 95, 191), (192, 57, 43), (142, 68, 173), (211, 84, 0), (22, 160, 133),
+               (52, 73, 94), (183, 149, 11), (199, 21, 133))
+GREY = (120, 120, 120)
+
+
+def in_progress_errors(parsed: Any, result: PolygonResult) -> tuple[np.ndarray, np.ndarray]:
+    """The raw error of each face the set in progress has read (result.incomplete), against
+    the first set's reference: set 1's raw error at that face plus the change of the
+    encoder reading less the change of the autocollimator's (the polygon's face angle and
+    deviation are the same face's, so they cancel). (θ in °, error in ″); empty arrays
+    when no set is in progress."""
+    unit = getattr(result, "incomplete", None)
+    if unit is None or parsed is None or not unit.rows:
+        return np.empty(0), np.empty(0)
+    from models.polygon.analysis import split_sets
+
+    _, first_rows, _ = split_sets(parsed)[0]
+    face_row = {int(parsed["position"][i]): int(i) for i in first_rows}
+    a, x = parsed["encoder_deg"], parsed["ac_x_arcsec"]
+    theta, error = [], []
+    for i in unit.rows:
+        if i >= parsed.n:
+            continue
+        face = int(parsed["position"][i])
+        ref = face_row.get(face)
+        if ref is None or not 1 <= face <= result.faces:
+            continue
+        change = float((a[i] - a[ref] + 180.0) % 360.0 - 180.0) * 3600.0 - (x[i] - x[ref])
+        theta.append(result.theta_deg[face - 1])
+        error.append(result.sets[0].error_arcsec[face - 1] + change)
+    return np.asarray(theta, dtype=float), np.asarray(error, dtype=float)
+
+
+def sets_figure(result: PolygonResult, parsed: Any = None,
+                tolerance_arcsec: float | None = None) -> PlotFigure:
+    """Each set's corrected error as its own curve beside their mean, the set in progress
+    as taken (raw error against set 1's reference, markers only) and the tolerance ±T
+    (dashed, about the mid-range of the mean) when one is given."""
+    th = result.theta_deg
+    series = [PlotSeries(f"{k} ({'+' if s.direction > 0 else '−'})", th,
+                         s.corrected_error_arcsec, SET_COLOURS[(k - 1) % len(SET_COLOURS)], True,
+                         width=1)
+              for k, s in enumerate(result.sets, 1)]
+    series.append(PlotSeries(QT_TR_NOOP("mean of the sets"), th, result.mean_corrected_arcsec,
+                             GREEN, False, width=3))
+    x, y = in_progress_errors(parsed, result)
+    if x.size:
+        series.append(PlotSeries(QT_TR_NOOP("set in progress (raw error)"), x, y, GREY, True,
+                                 width=0, marker_size=8))
+    if tolerance_arcsec:
+        # about the mean error's mid-range: the curve stays inside exactly when half its
+        # peak-to-peak is within ±T (the grade's rule)
+        mid = 0.5 * (float(np.max(result.mean_corrected_arcsec))
+                     + float(np.min(result.mean_corrected_arcsec)))
+        ends = np.array([0.0, 360.0])
+        series.append(PlotSeries(QT_TR_NOOP("tolerance ±T about the mid-range"), ends,
+                                 np.full(2, mid + tolerance_arcsec), RED, dashed=True, width=1))
+        series.append(PlotSeries("", ends, np.full(2, mid - tolerance_arcsec), RED, dashed=True,
+                                 width=1))
+    return PlotFigure(QT_TR_NOOP("Corrected error of each set (set number, direction)"), ANGLE,
+                      QT_TR_NOOP("error (\")"), tuple(series))

@@ -18,12 +18,16 @@ from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION,
     STANDARDS,
+    TARGET_UNITS,
     PositioningResult,
     evaluate,
     figure_text,
     infer_directions,
 )
 from models.positioning.report import positioning_budget, positioning_certificate
+from models.positioning.report import positioning_certificate
+from models.readings.entry_plan import positioning_plan, targets_from_text
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.workbench import (
@@ -134,6 +138,22 @@ PARAMETERS = (
               help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
                    "feed, dwell at each target, other axes' positions"),
     REPEATS_PARAMETER,
+    # the test plan: entry follows the run (models/readings/entry_plan.py)
+    Parameter("plan_runs", "test plan: runs", "int", 0, minimum=1, maximum=100, zero="no plan",
+              cli=False,
+              help="Runs of the test plan (ISO 230-2: 5); with the targets below, entry fills "
+                   "target, run and direction as readings arrive and shows the next point. "
+                   "0: no plan (the nominal step fills the target)"),
+    Parameter("plan_targets", "test plan: targets", "text", "0:30:12", cli=False,
+              help="The plan's targets: start:step:count (0:30:12) or a list (0, 30, 60)"),
+    Parameter("plan_directions", "test plan: directions", "choice", "both", cli=False,
+              choices=(("both", "bidirectional (↑ then ↓)"), ("up", "unidirectional (↑)")),
+              help="Approach directions of the plan"),
+    Parameter("plan_order", "test plan: order", "choice", "linear", cli=False,
+              choices=(("linear", "linear (ISO 230-2 standard cycle)"),
+                       ("pilgrim", "pilgrim step (every approach of a target in turn)")),
+              help="Linear: run 1 ↑ over every target, then ↓, then run 2; pilgrim step: "
+                   "all of one target's approaches before the next target"),
 )
 
 #: the settings that are inputs of the certificate's budget (PositioningResult.inputs)
@@ -237,6 +257,60 @@ def _runs(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray) -
     counts: dict[tuple[float, float], int] = {}
     out = np.empty(targets.size, dtype=int)
     for i, key in enumerate(zip(key_target.tolist(), directions.tolist(), strict=True)):
+        counts[key] = counts.get(key, 0) + 1
+        out[i] = counts[key]
+    return out
+
+
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete runs, and the last unit when it is in progress: in the linear cycle the
+    last run (its readings the last rows, fewer (target, direction) than the earlier runs
+    have, each once); in the pilgrim-step cycle the last target (fewer (run, direction)
+    than the other targets have)."""
+    if parsed.n < 2 or not np.all(np.isfinite(parsed["target"])):
+        return parsed, None
+    runs_column = parsed["run"]
+    if np.any(np.isfinite(runs_column)) and not np.all(np.isfinite(runs_column)):
+        return parsed, None  # refused by the analysis, naming the row
+    per_point = int(settings.get("readings_per_point", 1) or 1)
+    if not np.all(np.isfinite(runs_column)) and per_point > 1:
+        return parsed, None  # repeated readings: the runs are counted after averaging
+    targets = np.round(parsed["target"].astype(float), 9)
+    directions = _directions(parsed, [])
+    runs = _runs_counted(parsed, targets, directions)
+    t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
+    # linear cycle: the last run short of the (target, direction) the runs before it have
+    earlier = {(t[i], d[i]) for i in range(parsed.n) if r[i] != r[-1]}
+    rows = short_last_unit(r, list(zip(t, d, strict=True)), earlier)
+    unit = "run"
+    if rows is None:  # pilgrim-step cycle: the last target short of the others' approaches
+        others = {(r[i], d[i]) for i in range(parsed.n) if t[i] != t[-1]}
+        rows = short_last_unit(t, list(zip(r, d, strict=True)), others)
+        unit = "target"
+        if rows is None:
+            return parsed, None
+        expected = len(others)
+    else:
+        expected = len(earlier)
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    number = float(r[-1]) if unit == "run" else float(t[-1])
+    return subset(parsed, keep), IncompleteUnit(
+        unit, number, int(rows.size) // per_point if per_point > 1 else int(rows.size),
+        expected, _row(parsed, int(rows[0])), _row(parsed, int(rows[-1])),
+        tuple(int(i) for i in rows))
+
+
+def _runs_counted(parsed: ParsedReadings, targets: np.ndarray, directions: np.ndarray
+                  ) -> np.ndarray:
+    """The run of each reading: the run column, else the k-th approach to a target in a
+    direction (no check: the analysis checks)."""
+    if np.all(np.isfinite(parsed["run"])):
+        return parsed["run"].astype(int)
+    counts: dict[tuple[float, float], int] = {}
+    out = np.empty(targets.size, dtype=int)
+    for i, key in enumerate(zip(targets.tolist(), directions.tolist(), strict=True)):
         counts[key] = counts.get(key, 0) + 1
         out[i] = counts[key]
     return out
@@ -411,6 +485,20 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
 
     def check_settings(self, checked):
         _check_units(checked)
+
+    def split_incomplete(self, parsed, settings):
+        return split_incomplete(parsed, settings)
+
+    plan_reading_keys = ("deviation", "measured")
+
+    def entry_plan(self, settings):
+        runs = int(settings.get("plan_runs", 0) or 0)
+        if not runs:
+            return None
+        unit = TARGET_UNITS.get(str(settings.get("target_unit", "deg")), "°")
+        return positioning_plan(targets_from_text(str(settings.get("plan_targets", ""))), runs,
+                                settings.get("plan_directions", "both") == "both",
+                                str(settings.get("plan_order", "linear")), unit)
 
     def error_unit(self, settings):
         """The deviation unit, every figure's."""

@@ -226,6 +226,20 @@ def linuxcnc_comp_file(table: CompensationTable, options="") -> tuple[str, str]:
     return "\n".join(lines) + "\n", note
 
 
+def check_compensation(result: PositioningResult, step: float = 0.0, tables: str = "separate",
+                       fmt: str = "csv", options: str = "") -> None:
+    """Make the table in memory, nothing written: ValueError naming the rule when the
+    controller would reject or misapply it (the window asks this before its file dialog)."""
+    from models.positioning.controllers import CONTROLLERS
+
+    table = compensation_table(result, step, tables)
+    if fmt in CONTROLLERS:
+        if fmt == "heidenhain":
+            CONTROLLERS[fmt].write(table, options, name="COMP.COM")
+        else:
+            CONTROLLERS[fmt].write(table, options)
+
+
 def write_compensation(path: str, result: PositioningResult, step: float = 0.0,
                        tables: str = "separate", fmt: str = "csv", options: str = "") -> str:
     """Write the table (atomically); returns a line saying what was written. ``options``

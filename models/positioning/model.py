@@ -160,6 +160,7 @@ class PositioningResult:
     repeat_s_mean: np.ndarray | None = None
     # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
+    incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
 
     @property
     def positions(self) -> np.ndarray:

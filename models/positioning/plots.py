@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
-from models.positioning.model import PositioningResult
+from models.positioning.model import DEVIATION_UNITS, PositioningResult
 
-__all__ = ["deviation_figure", "readings_figure", "reversal_figure"]
+__all__ = ["deviation_figure", "in_progress_readings", "readings_figure", "reversal_figure"]
 
 FORWARD, BACKWARD, MEAN, ENVELOPE, GREY = ((192, 57, 43), (31, 95, 191), (44, 160, 44),
                                            (120, 120, 120), (150, 150, 150))
@@ -66,9 +68,25 @@ RUN_COLOURS = ((31, 95, 191), (192, 57, 43), (39, 174, 96), (142, 68, 173), (211
                (22, 160, 133), (52, 73, 94), (183, 149, 11), (199, 21, 133), (127, 140, 141))
 
 
-def readings_figure(result: PositioningResult) -> PlotFigure:
+def in_progress_readings(parsed: Any, result: PositioningResult) -> tuple[np.ndarray, np.ndarray]:
+    """The readings of the run (or pilgrim-step target) in progress, as taken: (target,
+    deviation in the deviation unit); empty when nothing is in progress. They enter no
+    figure; the window draws them beside the runs."""
+    unit = getattr(result, "incomplete", None)
+    if unit is None or parsed is None or not unit.rows:
+        return np.empty(0), np.empty(0)
+    rows = np.asarray([i for i in unit.rows if i < parsed.n], dtype=int)
+    target = parsed["target"][rows].astype(float)
+    scale = DEVIATION_UNITS[result.deviation_unit][1]
+    deviation = parsed["deviation"][rows].astype(float)
+    measured = (parsed["measured"][rows].astype(float) - target) * scale
+    return target, np.where(np.isfinite(deviation), deviation, measured)
+
+
+def readings_figure(result: PositioningResult, parsed: Any = None) -> PlotFigure:
     """Every reading, one series per run and direction: each run its own colour, named by
-    its number once; ↑ solid, ↓ dashed (markers on both)."""
+    its number once; ↑ solid, ↓ dashed (markers on both); with ``parsed``, the readings of
+    a run in progress as taken (grey markers, in no figure)."""
     series = []
     runs = [int(r) if float(r).is_integer() else r for r in np.unique(result.runs)]
     named = set()
@@ -84,5 +102,9 @@ def readings_figure(result: PositioningResult) -> PlotFigure:
             series.append(PlotSeries(label, result.targets[rows][order],
                                      result.deviations[rows][order], colour, True,
                                      dashed=direction < 0))
+    x, y = in_progress_readings(parsed, result)
+    if x.size:
+        series.append(PlotSeries(QT_TR_NOOP("in progress (as taken)"), x, y, GREY, True,
+                                 width=0, marker_size=8))
     return PlotFigure(QT_TR_NOOP("Readings, run by run (colour: run; ↑ solid, ↓ dashed)"),
                       _x_label(result), _y_label(result), tuple(series))

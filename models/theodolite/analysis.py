@@ -9,6 +9,8 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
+from models.readings.entry_plan import targets_from_text, theodolite_plan
+from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
@@ -71,6 +73,13 @@ PARAMETERS = (
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
     REPEATS_PARAMETER,
+    Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
+              zero="no plan", cli=False,
+              help="Passes of the entry plan over the θ steps below: entry fills θ (and run "
+                   "and direction with more than one pass) as readings arrive and shows the "
+                   "next step. 0: no plan"),
+    Parameter("plan_thetas", "entry plan: θ steps", "text", "-20:1:41", cli=False,
+              help="The plan's θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)"),
 )
 
 
@@ -117,6 +126,29 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     result.directions = directions
     result.repeats = repeats
     return result
+
+
+def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
+                     ) -> tuple[ParsedReadings, IncompleteUnit | None]:
+    """The complete passes, and the last pass (run column) when it is in progress: its rows
+    the last ones, fewer (θ, direction) steps than the passes before it, each once."""
+    runs = parsed["run"]
+    if parsed.n < 2 or not (np.all(np.isfinite(runs)) and np.all(np.isfinite(parsed["theta_deg"]))):
+        return parsed, None
+    r = runs.astype(int).tolist()
+    steps = list(zip(np.round(parsed["theta_deg"].astype(float), 9).tolist(),
+                     [d or "+" for d in parsed["direction"]], strict=True))
+    earlier = {steps[i] for i in range(parsed.n) if r[i] != r[-1]}
+    rows = short_last_unit(r, steps, earlier)
+    if rows is None:
+        return parsed, None
+    keep = np.ones(parsed.n, dtype=bool)
+    keep[rows] = False
+    sheet = parsed.row_index.astype(int) + 1
+    per_point = int(settings.get("readings_per_point", 1) or 1)
+    return subset(parsed, keep), IncompleteUnit(
+        "pass", float(r[-1]), int(rows.size) // per_point if per_point > 1 else int(rows.size),
+        len(earlier), int(sheet[rows[0]]), int(sheet[rows[-1]]), tuple(int(i) for i in rows))
 
 
 def positioning_rows(result: TheodoliteResult) -> list[list[str]]:
@@ -217,6 +249,15 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
                           QT_TR_NOOP("theodolite: the vertical column is the zenith angle V "
                                      "(same as --vertical-reading zenith)")),)
     analyze = staticmethod(analyze)
+    split_incomplete = staticmethod(split_incomplete)
+    plan_reading_keys = ("azimuth_deg", "elevation_deg")
+
+    def entry_plan(self, settings):
+        passes = int(settings.get("plan_passes", 0) or 0)
+        if not passes:
+            return None
+        return theodolite_plan(targets_from_text(str(settings.get("plan_thetas", ""))), passes)
+
     to_json = staticmethod(to_json)
     summary = staticmethod(summary)
     acquisition_guide = staticmethod(theodolite_guide)

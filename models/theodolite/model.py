@@ -429,6 +429,7 @@ class TheodoliteResult:
     runs: np.ndarray | None = None  # per used row, when the readings name their runs
     directions: np.ndarray | None = None  # ±1 per used row, when stated
     repeats: object = None  # RepeatedReadings when each point is the mean of n readings
+    incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
 
 
 def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:

@@ -40,6 +40,10 @@
         <translation>反射镜法线允许的俯仰角</translation>
     </message>
     <message>
+        <source>Approach directions of the plan</source>
+        <translation>计划的趋近方向</translation>
+    </message>
+    <message>
         <source>B1 (cos)</source>
         <translation>B1 (cos)</translation>
     </message>
@@ -918,6 +922,10 @@
         <translation>双向平均 M_i</translation>
     </message>
     <message>
+        <source>in progress (as taken)</source>
+        <translation>进行中（按实测）</translation>
+    </message>
+    <message>
         <source>bound |β| ≤</source>
         <translation>界限 |β| ≤</translation>
     </message>
@@ -984,6 +992,14 @@
     <message>
         <source>E residual (&quot;)</source>
         <translation>E 残差 (&quot;)</translation>
+    </message>
+    <message>
+        <source>mean of the passes</source>
+        <translation>各遍平均</translation>
+    </message>
+    <message>
+        <source>Corrected error of each pass (pass number, direction)</source>
+        <translation>各遍的修正后误差（遍序号，方向）</translation>
     </message>
     <message>
         <source>corrected e − (ε_x − ε_x,zero)</source>
@@ -1278,6 +1294,22 @@
         <translation>塔差拟合残差（竖直读数，第 1 测回）</translation>
     </message>
     <message>
+        <source>mean of the sets</source>
+        <translation>各测回平均</translation>
+    </message>
+    <message>
+        <source>set in progress (raw error)</source>
+        <translation>进行中的测回（原始误差）</translation>
+    </message>
+    <message>
+        <source>tolerance ±T about the mid-range</source>
+        <translation>允差 ±T（以极差中值为中心）</translation>
+    </message>
+    <message>
+        <source>Corrected error of each set (set number, direction)</source>
+        <translation>各测回的修正后误差（测回序号，方向）</translation>
+    </message>
+    <message>
         <source>residual (&quot;)</source>
         <translation>残差 (&quot;)</translation>
     </message>
@@ -1398,6 +1430,10 @@
         <translation>u sin [V]</translation>
     </message>
     <message>
+        <source>unidirectional (↑)</source>
+        <translation>单向（↑）</translation>
+    </message>
+    <message>
         <source>vertical reading</source>
         <translation>竖直读数</translation>
     </message>
@@ -1427,7 +1463,6 @@
     </message>
     <message>
         <source>Export certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered</extracomment>
         <translation>导出证书</translation>
     </message>
     <message>
@@ -1437,6 +1472,14 @@
     <message>
         <source>Cannot export</source>
         <translation>无法导出</translation>
+    </message>
+    <message>
+        <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
+        <translation>不能出具证书：{progress} 尚未完成。证书要求每个测回、安装位置或测量循环都已完成；请完成它，或删除其各行以对已完成部分出具证书。</translation>
+    </message>
+    <message>
+        <source>{reason}. Nothing was written; the details are kept.</source>
+        <translation>{reason}。未写入任何内容；已填写的信息予以保留。</translation>
     </message>
     <message>
         <source>{path}: {reason}. Nothing else was changed.</source>
@@ -2542,6 +2585,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Certificate</source>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered</extracomment>
         <translation>证书</translation>
     </message>
     <message>
@@ -2719,6 +2763,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Error over the circle</source>
         <translation>全圆误差</translation>
+    </message>
+    <message>
+        <source>Each set</source>
+        <translation>各测回</translation>
     </message>
     <message>
         <source>Vertical readings / tilt</source>
@@ -3002,6 +3050,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>误差曲线</translation>
     </message>
     <message>
+        <source>Each pass</source>
+        <translation>各遍</translation>
+    </message>
+    <message>
         <source>Import {name}</source>
         <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
         <translation>导入 {name}</translation>
@@ -3011,12 +3063,24 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>正在读取 {name} …</translation>
     </message>
     <message>
+        <source>Entry plan</source>
+        <translation>录入计划</translation>
+    </message>
+    <message>
+        <source>Entry plan: {point}</source>
+        <translation>录入计划：{point}</translation>
+    </message>
+    <message>
         <source>Analysing {rows} readings …</source>
         <translation>正在分析 {rows} 个读数 …</translation>
     </message>
     <message>
         <source>{cells} cell(s) cannot be read (row {rows}); those rows are left out. Point at a red cell to see why.</source>
         <translation>{cells} 个单元格无法读取（第 {rows} 行）；这些行被略去。将鼠标指向红色单元格可查看原因。</translation>
+    </message>
+    <message>
+        <source>Entry plan: {reason}</source>
+        <translation>录入计划：{reason}</translation>
     </message>
     <message>
         <source>Readings — {used} used</source>
@@ -3412,6 +3476,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>row {row}: encoder reading {reading}° is {off}° from face {face} ({sense}, relative to the set&apos;s first reading); a polygon test needs every reading within {tolerance}° of its face</source>
         <translation>第 {row} 行：编码器读数 {reading}° 与第 {face} 面相差 {off}°（{sense}，相对于该测回的第一个读数）；多面棱体检测要求每个读数与其面相差不超过 {tolerance}°</translation>
+    </message>
+    <message>
+        <source>The encoder readings of set 1 do not follow its face numbers ({faces} faces): check the face numbering</source>
+        <translation>第 1 测回的编码器读数与其面号（{faces} 面）不符：请检查面的编号</translation>
+    </message>
+    <message>
+        <source>The encoder steps by {step}° per face, which is a {likely}-face polygon, but the face count is {faces} ({read} positions read): set the number of faces to {likely} (a partial set?), or check the face numbering</source>
+        <translation>编码器每面步进 {step}°，对应 {likely} 面棱体，但面数为 {faces}（已读 {read} 个位置）：请将面数设为 {likely}（测回未完成？），或检查面的编号</translation>
     </message>
     <message>
         <source>{set}: direction not stated and the encoder steps go both ways: taken as forward.</source>
@@ -3979,6 +4051,15 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
     </message>
     <message>
+        <source>{progress}: none is complete yet</source>
+        <extracomment>what a concrete workbench class must set (checked when its object is made)</extracomment>
+        <translation>{progress}：尚无已完成的部分</translation>
+    </message>
+    <message>
+        <source> (in progress, left out: {progress})</source>
+        <translation>（进行中，未计入：{progress}）</translation>
+    </message>
+    <message>
         <source>expanded uncertainty U (k = 2)</source>
         <extracomment>The coverage probability of k = 2 for a normal distribution (95.45 %).</extracomment>
         <translation>扩展不确定度 U（k = 2）</translation>
@@ -4515,8 +4596,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>--screenshot 的窗口尺寸，单位为逻辑像素（QT_SCALE_FACTOR=2 时，960x540 即 200 %% 缩放的 1920x1080 屏幕）</translation>
     </message>
     <message>
-        <source>the language of --screenshot&apos;s window and of this help (the window itself follows View › Language)</source>
-        <translation>--screenshot 窗口及本帮助所用的语言（窗口本身跟随“视图 › 语言”）</translation>
+        <source>the language of the window (default: as last chosen in View › Language), of --screenshot&apos;s window (default: en) and of this help</source>
+        <translation>窗口的语言（默认：上次在 视图 › 语言 中所选）、--screenshot 窗口的语言（默认：en）以及本帮助的语言</translation>
     </message>
     <message>
         <source>{text}: give the size as WxH, e.g. 1280x720</source>
@@ -5088,8 +5169,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>未实测时，自准直仪绕其视轴相对于安置竖直方向的最大滚转：它使部分竖直读数进入水平读数（不确定度分量）</translation>
     </message>
     <message>
+        <source>Linear: run 1 ↑ over every target, then ↓, then run 2; pilgrim step: all of one target&apos;s approaches before the next target</source>
+        <translation>线性：第 1 次测量先 ↑ 经过所有目标位置，再 ↓，然后第 2 次测量；朝圣步：先完成一个目标位置的全部趋近，再到下一个目标位置</translation>
+    </message>
+    <message>
         <source>Measured roll ρ of the autocollimator about its line of sight: the horizontal reading&apos;s change per unit change of the vertical one (tilt a face and watch both readings), + when both rise together; corrected when its uncertainty is given</source>
         <translation>自准直仪绕其视轴的实测滚转 ρ：水平读数随竖直读数单位变化的变化量（使某一面俯仰并观察两个读数），二者同增为 +；给出其不确定度时予以修正</translation>
+    </message>
+    <message>
+        <source>Mountings of the entry plan: with the number of faces set, entry fills mounting and face as readings arrive (mounting j from face j + 1) and shows the next one. 0: no plan</source>
+        <translation>录入计划的安装位置数：设定面数后，读数到来时自动填写安装位置和面号（安装位置 j 从第 j + 1 面起）并显示下一个。0：无计划</translation>
+    </message>
+    <message>
+        <source>Passes of the entry plan over the θ steps below: entry fills θ (and run and direction with more than one pass) as readings arrive and shows the next step. 0: no plan</source>
+        <translation>录入计划按下列 θ 步进的遍数：读数到来时自动填写 θ（多于一遍时也填写序号和方向）并显示下一步。0：无计划</translation>
+    </message>
+    <message>
+        <source>Runs of the test plan (ISO 230-2: 5); with the targets below, entry fills target, run and direction as readings arrive and shows the next point. 0: no plan (the nominal step fills the target)</source>
+        <translation>测试计划的测量次数（ISO 230-2：5）；配合下列目标位置，读数到来时自动填写目标位置、测量序号和方向并显示下一个点。0：无计划（由名义步长填写目标位置）</translation>
+    </message>
+    <message>
+        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
+        <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向）并显示下一面；每个测回最后回到第 1 面（闭合）。0：无计划</translation>
     </message>
     <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
@@ -5098,6 +5199,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Table 1 of the seed: the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
         <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
+    </message>
+    <message>
+        <source>The plan&apos;s targets: start:step:count (0:30:12) or a list (0, 30, 60)</source>
+        <translation>计划的目标位置：起点:步长:个数（0:30:12）或列表（0, 30, 60）</translation>
+    </message>
+    <message>
+        <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
+        <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
@@ -5112,8 +5221,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>自准直仪刻度误差上限</translation>
     </message>
     <message>
+        <source>bidirectional (↑ then ↓)</source>
+        <translation>双向（先 ↑ 后 ↓）</translation>
+    </message>
+    <message>
         <source>cos</source>
         <translation>cos</translation>
+    </message>
+    <message>
+        <source>entry plan: mountings</source>
+        <translation>录入计划：安装位置数</translation>
+    </message>
+    <message>
+        <source>entry plan: passes</source>
+        <translation>录入计划：遍数</translation>
+    </message>
+    <message>
+        <source>entry plan: sets</source>
+        <translation>录入计划：测回数</translation>
+    </message>
+    <message>
+        <source>entry plan: θ steps</source>
+        <translation>录入计划：θ 步进</translation>
     </message>
     <message>
         <source>grade 1: ±0.25&quot;</source>
@@ -5148,8 +5277,40 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>多面棱体在轴上的最大倾斜（未测量时）</translation>
     </message>
     <message>
+        <source>linear (ISO 230-2 standard cycle)</source>
+        <translation>线性（ISO 230-2 标准循环）</translation>
+    </message>
+    <message>
+        <source>no plan</source>
+        <translation>无计划</translation>
+    </message>
+    <message>
         <source>none</source>
         <translation>无</translation>
+    </message>
+    <message>
+        <source>pilgrim step (every approach of a target in turn)</source>
+        <translation>朝圣步（逐个目标位置完成全部趋近）</translation>
+    </message>
+    <message>
+        <source>position angle</source>
+        <translation>位置角</translation>
+    </message>
+    <message>
+        <source>test plan: directions</source>
+        <translation>测试计划：方向</translation>
+    </message>
+    <message>
+        <source>test plan: order</source>
+        <translation>测试计划：顺序</translation>
+    </message>
+    <message>
+        <source>test plan: runs</source>
+        <translation>测试计划：测量次数</translation>
+    </message>
+    <message>
+        <source>test plan: targets</source>
+        <translation>测试计划：目标位置</translation>
     </message>
     <message>
         <source>u(AC roll measured)</source>
@@ -5750,6 +5911,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>即使结果显示该类仪器不可能有的数值（polygon：误差达数度）也出具证书；表示您已核对读数</translation>
     </message>
     <message>
+        <source>{file}: no certificate was written: {progress} is not complete; a certificate waits for it (the complete ones are analysed above)</source>
+        <translation>{file}：未写出证书：{progress} 尚未完成；证书须待其完成（上面已分析已完成的部分）</translation>
+    </message>
+    <message>
         <source>{file}: no certificate was written: {reason} If the readings are right, run again with --confirm-implausible</source>
         <translation>{file}：未写出证书：{reason} 若读数无误，请加上 --confirm-implausible 重新运行</translation>
     </message>
@@ -6196,6 +6361,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>无法读取证书</translation>
     </message>
     <message>
+        <source>{path}: the readings have {read} faces (position {position}, row {row}), the reference {faces}: {read} faces against {faces}; choose the polygon&apos;s own reference</source>
+        <translation>{path}：读数有 {read} 个面（位置 {position}，第 {row} 行），参考值只有 {faces} 个：{read} 面对 {faces} 面；请选用该棱体自己的参考值</translation>
+    </message>
+    <message>
         <source>{path}: no deviation for position {position} (row {row} of the readings)</source>
         <translation>{path}：位置 {position} 没有偏差值（读数第 {row} 行）</translation>
     </message>
@@ -6278,6 +6447,82 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>turn the axis to the next θ and type it in the θ column</source>
         <translation>将被测轴转到下一个 θ，并在 θ 列中输入</translation>
+    </message>
+    <message>
+        <source>plan complete ({n} points)</source>
+        <translation>计划已完成（{n} 个点）</translation>
+    </message>
+    <message>
+        <source>next: {point}</source>
+        <translation>下一个：{point}</translation>
+    </message>
+    <message>
+        <source>not an entry plan: {data}</source>
+        <translation>不是录入计划：{data}</translation>
+    </message>
+    <message>
+        <source>entry plan: {reason}</source>
+        <translation>录入计划：{reason}</translation>
+    </message>
+    <message>
+        <source>a test plan needs at least 2 targets, not {count}</source>
+        <translation>测试计划至少需要 2 个目标位置，而不是 {count}</translation>
+    </message>
+    <message>
+        <source>a test plan needs a finite, non-zero step</source>
+        <translation>测试计划需要有限且非零的步长</translation>
+    </message>
+    <message>
+        <source>test plan targets &apos;{text}&apos;: write start:step:count (0:30:13) or a list (0, 30, 60)</source>
+        <translation>测试计划目标位置“{text}”：请写成 起点:步长:个数（0:30:13）或列表（0, 30, 60）</translation>
+    </message>
+    <message>
+        <source>a test plan needs {name} ≥ {least}, not {value}</source>
+        <translation>测试计划需要 {name} ≥ {least}，而不是 {value}</translation>
+    </message>
+    <message>
+        <source>a test plan needs at least 2 finite targets</source>
+        <translation>测试计划至少需要 2 个有限的目标位置</translation>
+    </message>
+    <message>
+        <source>a test plan lists a target twice</source>
+        <translation>测试计划中某个目标位置出现了两次</translation>
+    </message>
+    <message>
+        <source>test plan order &apos;{order}&apos;: linear or pilgrim</source>
+        <translation>测试计划顺序“{order}”：应为 linear 或 pilgrim</translation>
+    </message>
+    <message>
+        <source>target {target}, run {run} {arrow}</source>
+        <translation>目标位置 {target}，第 {run} 次测量 {arrow}</translation>
+    </message>
+    <message>
+        <source>set {set}: closure on face {face}</source>
+        <translation>第 {set} 测回：在第 {face} 面闭合</translation>
+    </message>
+    <message>
+        <source>set {set}: face {face} of {faces}</source>
+        <translation>第 {set} 测回：第 {face} 面（共 {faces} 面）</translation>
+    </message>
+    <message>
+        <source>a test plan of {faces} faces has at most {faces} mountings, not {mountings}</source>
+        <translation>{faces} 面的测试计划最多有 {faces} 个安装位置，而不是 {mountings}</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: closure on face {face}</source>
+        <translation>安装位置 {mounting}：在第 {face} 面闭合</translation>
+    </message>
+    <message>
+        <source>mounting {mounting}: face {face} ({k} of {faces})</source>
+        <translation>安装位置 {mounting}：第 {face} 面（第 {k} 个，共 {faces} 个）</translation>
+    </message>
+    <message>
+        <source>a theodolite plan needs at least 3 finite θ</source>
+        <translation>经纬仪计划至少需要 3 个有限的 θ</translation>
+    </message>
+    <message>
+        <source>θ = {theta}, pass {run} {arrow}</source>
+        <translation>θ = {theta}，第 {run} 遍 {arrow}</translation>
     </message>
     <message>
         <source>θ = {theta}</source>
@@ -6775,6 +7020,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>此测量设计不能确定面偏差：无可发送的内容</translation>
     </message>
     <message>
+        <source>the entry plan needs the number of faces (set-up: faces n)</source>
+        <translation>录入计划需要面数（设置：面数 n）</translation>
+    </message>
+    <message>
         <source>Standard deviation of one reading when known (the autocollimator&apos;s and the encoder&apos;s noise together); 0: taken from the residuals of the fit, with its degrees of freedom</source>
         <translation>已知时给出单次读数的标准偏差（自准直仪与编码器噪声合计）；0：由拟合残差求得，并给出其自由度</translation>
     </message>
@@ -7059,6 +7308,31 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start (encoder ≈ {encoder}°)</source>
         <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>set {number}: {readings} of {expected} faces</source>
+        <extracomment>each unit&apos;s words: (what the unit is, what its readings are)</extracomment>
+        <translation>第 {number} 测回：已读 {readings} 面，共 {expected} 面</translation>
+    </message>
+    <message>
+        <source>mounting {number}: {readings} of {expected} faces</source>
+        <translation>安装位置 {number}：已读 {readings} 面，共 {expected} 面</translation>
+    </message>
+    <message>
+        <source>run {number}: {readings} of {expected} readings</source>
+        <translation>第 {number} 次测量：已有 {readings} 个读数，共 {expected} 个</translation>
+    </message>
+    <message>
+        <source>target {number}: {readings} of {expected} readings</source>
+        <translation>目标位置 {number}：已有 {readings} 个读数，共 {expected} 个</translation>
+    </message>
+    <message>
+        <source>pass {number}: {readings} of {expected} steps</source>
+        <translation>第 {number} 遍：已有 {readings} 步，共 {expected} 步</translation>
+    </message>
+    <message>
+        <source>In progress: {unit} (rows {first}–{last}); its readings enter no figure until it is complete, and a certificate waits for it.</source>
+        <translation>进行中：{unit}（第 {first}–{last} 行）；完成前其读数不计入任何结果，证书也须待其完成。</translation>
     </message>
 </context>
 </TS>

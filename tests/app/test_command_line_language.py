@@ -184,3 +184,36 @@ def test_the_method_validation_in_chinese(tmp_path, capsys):
             "openpyxl", "fonttools", "GTC", "loadtxt"} | english_words(text.split(
                 "平台", 1)[1].split("检查内容", 1)[0])  # the platform string
     assert english_words(text) - kept == set()
+
+
+@pytest.mark.slow  # a whole main window
+def test_language_option_opens_the_window_in_that_language(qtbot, monkeypatch, tmp_path):
+    """``anglebench --language zh_CN`` opened an English window (#41)."""
+    from PySide6.QtCore import QSettings
+    from PySide6.QtWidgets import QApplication
+
+    import app.main as main_module
+    import app.main_window as main_window
+    from models.project.recovery import RecoveryStore
+    from widgets.i18n import install_language
+
+    made = []
+    real = main_window.MainWindow
+
+    def probe():
+        window = real(settings=QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat),
+                      recovery=RecoveryStore(tmp_path / "recovery"))
+        qtbot.addWidget(window)
+        made.append(window)
+        return window
+
+    monkeypatch.setattr(main_window, "MainWindow", probe)
+    monkeypatch.setattr(main_module, "missing_x11_packages", lambda: [])
+    monkeypatch.setattr(QApplication, "exec", lambda _app: 0)
+    try:
+        assert main_module.main(["--language", "zh_CN"]) == 0
+        window = made[0]
+        assert window.language == "zh_CN"
+        assert window.menuBar().actions()[0].text() != "&File"
+    finally:
+        install_language("en")

@@ -73,3 +73,19 @@ def test_a_cramped_plot_puts_its_legend_above_the_data_and_back_when_there_is_ro
     plot.resize(1400, 1400)
     qtbot.waitUntil(lambda: plot.main_plot.legend_corner != "above")
     assert plot.legend.isVisible() and not plot.main_plot.titleLabel.isVisible()
+
+
+def test_the_crosshair_is_cleared_with_the_data(qtbot):
+    """After File › New (the plots cleared) the readout kept the old values (#41)."""
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    plot.resize(600, 500)
+    plot.show()
+    x = np.linspace(-20, 20, 41)
+    plot.set_curves(x, 0.1 * x, 0.05 * x, 0.05 * x)
+    centre = plot.main_plot.sceneBoundingRect().center()
+    plot._on_mouse_moved(centre)
+    assert "@" in plot.readout.text() and plot.vline.isVisible()
+    plot.clear()
+    assert plot.readout.text().strip() == "" and not plot.vline.isVisible()
+    assert plot.raw_curve.getData()[0] is None or len(plot.raw_curve.getData()[0]) == 0

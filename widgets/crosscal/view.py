@@ -55,6 +55,3 @@ class CrossCalView(WorkbenchView):
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)
-
-    def show_status(self, text: str) -> None:
-        self.append_to_readings_caption(f" — {text}")

@@ -140,6 +140,3 @@ class FringeView(WorkbenchView):
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)
-
-    def show_status(self, text: str) -> None:
-        self.append_to_readings_caption(f" — {text}")

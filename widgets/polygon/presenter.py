@@ -6,7 +6,7 @@ from models.messages import QT_TR_NOOP, message
 from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
-from models.polygon.model import PolygonResult
+from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult
 from models.readings.tabular_import import TableImportError
 from widgets.i18n import declared, explained, tr
 from widgets.polygon.view import PolygonView
@@ -23,9 +23,11 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
+        tolerance = GRADE_ACCURACY_ARCSEC.get(result.grade)
         self.view.show_figures(*self.in_unit(
             plots.error_figure(result), plots.residual_figure(result),
-            plots.tilt_figure(result), plots.harmonics_figure(result)))
+            plots.tilt_figure(result), plots.harmonics_figure(result)),
+            sets=self.in_unit(plots.sets_figure(result, self.parsed, tolerance))[0])
         if not result.valid:
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 
@@ -80,12 +82,32 @@ class PolygonPresenter(WorkbenchPresenter):
             except ValueError:
                 continue
             if position not in deviations:
+                read = max(self._positions())
+                # a polygon's own reference (faces 1…m, m ≥ 3) for another face count
+                if (len(deviations) >= 3 and read != len(deviations)
+                        and sorted(deviations) == list(range(1, len(deviations) + 1))):
+                    raise TableImportError(message(QT_TR_NOOP(
+                        "{path}: the readings have {read} faces (position {position}, row "
+                        "{row}), the reference {faces}: {read} faces against {faces}; choose "
+                        "the polygon's own reference"), path=str(path), read=read,
+                        position=position, row=row + 1, faces=len(deviations)))
                 raise TableImportError(message(QT_TR_NOOP(
                     "{path}: no deviation for position {position} (row {row} of the readings)"),
                     path=str(path), position=position, row=row + 1))
             changes.append((row, column, format(deviations[position], spec)))
         self.table_model.set_cells(changes, label)
         return len(changes)
+
+    def _positions(self) -> list[int]:
+        """The face numbers in the position column (unreadable cells left out)."""
+        column = self.sheet.column_index("position")
+        out = []
+        for row in range(self.sheet.row_count):
+            try:
+                out.append(int(float(self.sheet.text(row, column))))
+            except ValueError:
+                continue
+        return out or [0]
 
     def clear_result(self) -> None:
         self.table_model.set_highlight_rows(set())

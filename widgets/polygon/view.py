@@ -9,7 +9,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout
 
 from models.polygon import TITLE
 from widgets.error_plot import ErrorPlot
-from widgets.figure_plot import FigureRenderer
+from widgets.figure_plot import FigurePlot, FigureRenderer
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.polygon.simulation import PolygonSimulation
@@ -85,12 +85,14 @@ class PolygonView(WorkbenchView):
                                     residual_label="tilt fit res. (\")")
         self.tilt_plot = TiltPlot()
         self.harmonics = HarmonicBars()
+        self.sets_plot = FigurePlot()  # each set beside the mean, the set in progress, ±T
         self.simulation = PolygonSimulation()
         self.certificate_button = QPushButton()
         live(self.certificate_button.setText, tr("Load polygon certificate…"))
         live(self.certificate_button.setToolTip, tr("Fill the deviation column from a CSV/XLSX "
                                                     "with position,deviation_arcsec"))
         self.add_plot_tab(self.error_plot, tr("Error over the circle"))
+        self.add_plot_tab(self.sets_plot, tr("Each set"))
         self.add_plot_tab(self.tilt_plot, tr("Vertical readings / tilt"))
         self.add_plot_tab(self.harmonics, tr("Harmonics"))
         self.add_plot_tab(self.simulation, tr("What-if: set-up errors"))
@@ -100,14 +102,19 @@ class PolygonView(WorkbenchView):
         self.settings.layout().addRow(self.certificate_button)
         self.certificate_button.clicked.connect(presenter.load_certificate_dialog)
 
-    def show_figures(self, errors, residuals, tilt, harmonics) -> None:
+    def show_figures(self, errors, residuals, tilt, harmonics, sets=None) -> None:
         """The declared figures (models/polygon/plots.py); ``None`` leaves a plot empty."""
         self.error_plot.show_figure(errors, residuals)
+        if sets is None:
+            self.sets_plot.clear()
+        else:
+            self.sets_plot.show_figure(sets)
         self.tilt_plot.show_figure(tilt)
         self.harmonics.show_figure(harmonics)
 
     def clear_result(self) -> None:
         self.error_plot.clear()
+        self.sets_plot.clear()
         self.tilt_plot.show_figure(None)
         self.harmonics.clear()
 

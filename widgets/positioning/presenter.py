@@ -8,6 +8,7 @@ from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS
+from models.positioning.compensation import check_compensation
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
@@ -36,7 +37,7 @@ class PositioningPresenter(WorkbenchPresenter):
     def show_result(self, result: PositioningResult) -> None:
         self.view.show_figures(*self.in_unit(plots.deviation_figure(result),
                                              plots.reversal_figure(result),
-                                             plots.readings_figure(result)))
+                                             plots.readings_figure(result, self.parsed)))
         self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(tr(" — fewer than 5 runs: flagged"))
@@ -50,6 +51,13 @@ class PositioningPresenter(WorkbenchPresenter):
         fmt = self._settings["compensation_format"]
         asks = fmt in CONTROLLERS or (fmt == "linuxcnc" and self.result.target_unit == "deg")
         if asks and not self.ask_controller_options(fmt):
+            return
+        s = self.kind.checked_settings(self._settings)
+        try:  # a table the controller would refuse is told before the file dialog
+            check_compensation(self.result, s["compensation_step"], s["compensation_tables"],
+                               fmt, s["compensation_controller_options"])
+        except ValueError as exc:
+            self.view.tell(tr("Cannot export the compensation table"), explained(exc))
             return
         path = self.view.ask_compensation_path(SUGGESTED_NAMES.get(fmt, "compensation.csv"), fmt)
         if path:

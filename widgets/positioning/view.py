@@ -112,6 +112,3 @@ class PositioningView(WorkbenchView):
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)
-
-    def show_status(self, text: str) -> None:
-        self.append_to_readings_caption(f" — {text}")

@@ -18,8 +18,10 @@ class TheodolitePresenter(WorkbenchPresenter):
         super().__init__(THEODOLITE, view, parent)
 
     def show_result(self, result: TheodoliteResult) -> None:
+        passes = plots.passes_figure(result)
+        extra = {} if passes is None else {"passes": self.in_unit(passes)[0]}
         self.view.show_figures(*self.in_unit(plots.error_figure(result),
-                                             plots.residual_figure(result)))
+                                             plots.residual_figure(result)), **extra)
 
     def clear_result(self) -> None:
         self.view.clear_result()

@@ -167,3 +167,20 @@ def test_certificate_reader(tmp_path):
     path.write_text("1,0.1\n2,abc\n")
     with pytest.raises(TableImportError, match="row 2, column 'deviation_arcsec'"):
         read_polygon_certificate(path)
+
+
+def test_a_partial_set_is_named_by_its_face_count_before_a_cell_is_blamed(samples_dir):
+    """10 of 24 faces pasted, faces "from the readings": the cause is the face count (#41)."""
+    import csv
+
+    with open(samples_dir / "polygon_sample.csv", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))[1:11]
+    parsed = ReadingsSheet(POLYGON.columns, rows).parse()
+    with pytest.raises(ValueError) as info:
+        POLYGON.analyze(parsed, {})
+    said = str(info.value)
+    assert said.startswith("The encoder steps by 14.99")
+    assert "24-face polygon" in said and "face count is 10" in said
+    # told the face count, it is a set in progress: 10 of 24 faces, none complete yet
+    with pytest.raises(ValueError, match="set 1: 10 of 24 faces: none is complete yet"):
+        POLYGON.analyze_as_far_as_it_goes(parsed, {"faces": 24})

@@ -245,13 +245,15 @@ def test_presenter_asks_the_controllers_options_and_tells_the_lints_refusal(pres
     presenter.export_compensation_dialog()
     name, fields = view.ask_controller_options.call_args.args
     assert name == "SINUMERIK 840D" and fields[0][0] == "axis" and fields[0][2] == "AX4"
-    assert view.ask_compensation_path.call_args.args == ("AX_EEC.INI", "sinumerik")
+    # the controller's refusal comes before the file dialog (#41; it came after it)
+    view.ask_compensation_path.assert_not_called()
     assert "MD38000 MM_ENC_COMP_MAX_POINTS = 5" in view.tell.call_args.args[1]
     assert not (tmp_path / "AX_EEC.INI").exists()
     assert presenter.settings["compensation_controller_options"] == (
         "axis=AX4, system=1, encoders=1, max_points=5, modulo=360")
     view.ask_controller_options.return_value = {"axis": "AX4", "max_points": "0", "modulo": "360"}
     presenter.export_compensation_dialog()
+    assert view.ask_compensation_path.call_args.args == ("AX_EEC.INI", "sinumerik")
     assert "$AA_ENC_COMP_IS_MODULO[0,AX4]=1" in (tmp_path / "AX_EEC.INI").read_text()
     view.ask_controller_options.return_value = None  # cancelled: nothing asked, nothing written
     view.ask_compensation_path.reset_mock()
