@@ -160,14 +160,18 @@ def opinion(text) -> str:
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                                   reading: str, sensitivity_from_first=None,
-                                  unit: str = "arcsec") -> list[BudgetComponent]:
+                                  unit: str = "arcsec", common: bool = False
+                                  ) -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
     ``sensitivity`` per point (√2 where the error is the difference of two
     readings, 0 at the reference point); ``reading`` says what one reading is.
     ``sensitivity_from_first`` is used for a standard whose figure applies to
     each face's deviation from face 1 (polygon), where the workbench has one. Each
-    standard's figure is converted to ``unit``, the budget's.
+    standard's figure is converted to ``unit``, the budget's. ``common``: the standard's
+    calibration error is one unknown value for the whole run (drawn once per trial in a
+    Monte Carlo of the curve); a figure stated per face from face 1 is each face's own
+    calibration and stays one input per point.
     """
     out = []
     for std in metadata.standards:
@@ -175,16 +179,18 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
             continue
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or QT_TR_NOOP("Reference standard")
-        per, c = reading, sensitivity
+        per, c, shared = reading, sensitivity, common
         if std.applies_to == "from face 1" and sensitivity_from_first is not None:
             per, c = QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first
+            shared = False
         basis = message(BASIS_DIVISORS[std.basis][0])
         note = (message(QT_TR_NOOP("{basis} per {per}, certificate {certificate}"), basis=basis,
                         per=message(per), certificate=std.certificate_no)
                 if std.certificate_no else
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note))
+            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note,
+            common=shared))
     return out
 
 

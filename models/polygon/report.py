@@ -19,7 +19,9 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   mean of the sets;
 * the autocollimator's roll ρ about its line of sight, relative to the set-up's
   vertical (one input, it is the only "reticle roll"): it turns part of the
-  vertical reading into the horizontal one, ρ·(y_i − y_z). Not measured: the
+  vertical reading into the horizontal one, ρ·(y_i − y_z). One unknown value
+  for the whole run: the Monte Carlo of the half range draws it once per
+  trial, with the sign of y_i − y_z at each face. Not measured: the
   stated bound, rectangular, nothing corrected; measured (and corrected): its
   standard uncertainty, normal;
 * the closure drift: the drift that the closures show beyond their reading
@@ -220,28 +222,33 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
     limit = result.u_ac_roll_arcmin if measured else roll_arcmin
     if limit <= 0:
         return []
-    spans = [np.abs(s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)])
+    spans = [s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)]
              for s in result.sets if s.ac_y_arcsec is not None]
     if not spans:
         return []
+    # one unknown roll for the whole run: its effect at each face has the sign of the
+    # vertical reading's change (the Monte Carlo of the half range draws ρ once per trial)
+    change = np.mean(spans, axis=0)
+    sign = np.where(change < 0, -1.0, 1.0)
     rho = limit / 60.0 * math.pi / 180.0
     vertical = (QT_TR_NOOP("the shaft") if result.ac_alignment == "levelled"
                 else QT_TR_NOOP("the polygon's axis"))
     if measured:
         return [BudgetComponent(
             QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "normal",
-            rho * np.mean(spans, axis=0), 1.0, 1.0, math.inf,
+            rho * np.abs(change), 1.0, sign, math.inf,
             message(QT_TR_NOOP("measured roll {roll} relative to {vertical}, corrected; its "
                                "standard uncertainty {u} times the vertical reading's change "
                                "from the zero face"),
                     roll=f"{result.ac_roll_measured_arcmin:+g}′", vertical=message(vertical),
-                    u=f"{limit:g}′"))]
+                    u=f"{limit:g}′"), common=True)]
     return [BudgetComponent(
         QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "rectangular",
-        rho * np.mean(spans, axis=0), math.sqrt(3.0), 1.0, math.inf,
+        rho * np.abs(change), math.sqrt(3.0), sign, math.inf,
         message(QT_TR_NOOP("roll relative to {vertical} up to ±{roll} (stated, not measured, "
                            "not corrected) times the vertical reading's change from the zero "
-                           "face"), vertical=message(vertical), roll=f"{roll_arcmin:g}′"))]
+                           "face"), vertical=message(vertical), roll=f"{roll_arcmin:g}′"),
+        common=True)]
 
 
 def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
@@ -272,6 +279,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     not_first = (np.arange(n) != 0).astype(float)
     from_first = np.sqrt(not_first + not_first[zero])
     from_first[zero] = 0.0
+    # each face's calibrated deviation is its own unknown, and so is each reading: per point
     components = reference_standard_components(metadata, pair, QT_TR_NOOP("face or reading"),
                                                from_first)
     noise_components, noise = _noise_components(result, n, zero)

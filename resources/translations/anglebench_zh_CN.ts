@@ -3997,8 +3997,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
     </message>
     <message>
-        <source>half the peak-to-peak error after the best zero, with its own U and bias from a Monte Carlo simulation of this measurement (JCGM 101)</source>
-        <translation>最佳零位下误差峰峰值的一半，其 U 和偏倚由本次测量的蒙特卡洛模拟得出（JCGM 101）</translation>
+        <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from bounds on the curve&apos;s maximum and minimum (Romano, Shaikh &amp; Wolf 2014), the noise simulated from the budget (JCGM 101)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
@@ -4006,7 +4006,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>pass ≤ {t} &lt; fail</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it.</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape: the lowest cell of each shape over noise 0.1, 0.5, 1 and 2 times the true half range and 12, 36 and 72 points, 50 runs a cell (models.validation.half_range.coverage_study, seed 20261202; pooled over a shape&apos;s 600 runs: smooth 99.8 %, rough 99.3 %, spike 99.5 %, the samples&apos; real curves 99.7 %). tests/benchmarks/test_half_range_coverage.py reruns it with 100 runs a cell; `anglebench validate` with fewer. The share of the miss probability α spent on bounding the curve&apos;s gaps to its extremes (the first step of Romano, Shaikh &amp; Wolf&apos;s two-step test, β = α/10).</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -4050,8 +4050,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>逐点判定，w 取该点的 U：{zones}</translation>
     </message>
     <message>
-        <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
-        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
+        <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, the lowest of each shape): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on real curves, against the {p} % stated</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
@@ -5431,6 +5435,27 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ADC 的{figures}未给出不确定度</translation>
     </message>
     <message>
+        <source>Fitted model, {channel} channel, direction {j}</source>
+        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC offset, {channel} channel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one offset for the whole record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one gain ratio for the whole record</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
         <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
     </message>
@@ -5441,6 +5466,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Results per sample (compensated = raw + correction)</source>
         <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>as-found interpolation error (fitted model, whole period)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -5631,10 +5660,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
         <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
-    </message>
-    <message>
-        <source>the interval&apos;s coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis&apos; curve, against the {p} % stated</source>
-        <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
     </message>
     <message>
         <source>Certify these figures?</source>
@@ -6994,6 +7019,35 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>turn the polygon on the shaft by one face: mounting {mounting}, face {face} at the encoder&apos;s start (encoder ≈ {encoder}°)</source>
         <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点（编码器 ≈ {encoder}°）</translation>
+    </message>
+    <message>
+        <source>Decided quantity: half the peak-to-peak (all workbenches)</source>
+        <extracomment>the target: the mean half-width at most this many times what a correct interval needs</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coverage by simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{shape}: noise {noises} × the half range, {points} points, {runs} runs a cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coverage ≥ {p} % (≥ {floor} of {runs} hits)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × needed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>through the {workbench} workbench&apos;s analysis and budget: {what}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>
