@@ -170,8 +170,7 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
     each face's deviation from face 1 (polygon), where the workbench has one. Each
     standard's figure is converted to ``unit``, the budget's. ``common``: the standard's
     calibration error is one unknown value for the whole run (drawn once per trial in a
-    Monte Carlo of the curve); a figure stated per face from face 1 is each face's own
-    calibration and stays one input per point.
+    Monte Carlo of the curve), otherwise one per point.
     """
     out = []
     for std in metadata.standards:
@@ -179,10 +178,9 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
             continue
         divisor, distribution = divisor_for_basis(std.basis)
         name = std.description or QT_TR_NOOP("Reference standard")
-        per, c, shared = reading, sensitivity, common
+        per, c = reading, sensitivity
         if std.applies_to == "from face 1" and sensitivity_from_first is not None:
             per, c = QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first
-            shared = False
         basis = message(BASIS_DIVISORS[std.basis][0])
         note = (message(QT_TR_NOOP("{basis} per {per}, certificate {certificate}"), basis=basis,
                         per=message(per), certificate=std.certificate_no)
@@ -190,7 +188,7 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
             name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note,
-            common=shared))
+            common=common))
     return out
 
 

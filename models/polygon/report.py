@@ -5,10 +5,11 @@ the first set: ``e_i = (a_i − a_z) − nominal_i − (dev_i − dev_z) − (x_
 minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the sets
 (the mean of the two directions' means when both were run). Its inputs:
 
-* each reference standard's figure, per face or reading: sensitivity √2 (a
-  difference of two), 0 at the zero face; a polygon whose certificate states
-  its deviations from face 1 has sensitivity 1 where one of the two faces is
-  face 1. These are systematic and are not reduced by repeating sets;
+* each reference standard's figure, per face or reading, twice: the face's (or
+  reading's) own calibration error, one unknown per point, and the zero face's,
+  one unknown shared by every point (together √2·u, a difference of two; 0 at
+  the zero face); a polygon whose certificate states its deviations from face 1
+  has face 1 exact. These are systematic and are not reduced by repeating sets;
 * the reading noise: with a direction run twice or more, the standard
   deviation of the sets about their direction's mean pooled over positions
   and directions (Type A), divided by √m for the mean of m sets; otherwise the
@@ -34,6 +35,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 
 import numpy as np
 
@@ -270,18 +272,33 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> 
                 closures=", ".join(f"{d:+.2f}" for d in drifts) + "\"", how=message(how)))]
 
 
+def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> list[BudgetComponent]:
+    """Each reference standard twice, as the error e_i = … − (dev_i − dev_z) − (x_i − x_z)
+    takes it: the face's (or reading's) own calibration error, one unknown per point, and
+    the zero face's, one unknown shared by every point (drawn once per trial in the half
+    range's Monte Carlo); together √2·u (0 at the zero face), or, for deviations stated from
+    face 1 (face 1 exact), u where one of the two faces is face 1."""
+    not_zero = np.ones(n)
+    not_zero[zero] = 0.0
+    not_first = (np.arange(n) != 0).astype(float)
+    own = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
+                                        not_first * not_zero)
+    shared = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
+                                           not_first[zero] * not_zero, common=True)
+    out = list(own)
+    for comp in shared:
+        if np.any(np.asarray(comp.sensitivity) != 0):
+            out.append(replace(comp, name=message(QT_TR_NOOP("{name}, at the zero face"),
+                                                  name=message(comp.name))))
+    return out
+
+
 def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
     n = result.faces
     zero = _zero_index(result)
     pair = np.full(n, math.sqrt(2.0))
     pair[zero] = 0.0
-    # a deviation stated from face 1: dev_i − dev_z has face 1's term exact
-    not_first = (np.arange(n) != 0).astype(float)
-    from_first = np.sqrt(not_first + not_first[zero])
-    from_first[zero] = 0.0
-    # each face's calibrated deviation is its own unknown, and so is each reading: per point
-    components = reference_standard_components(metadata, pair, QT_TR_NOOP("face or reading"),
-                                               from_first)
+    components = _standard_components(metadata, zero, n)
     noise_components, noise = _noise_components(result, n, zero)
     components += noise_components
     components += repeated_readings_components(result)

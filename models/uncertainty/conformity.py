@@ -102,11 +102,13 @@ def uncertainty_decimals(expanded: float) -> int:
 
 @dataclass(frozen=True)
 class HalfRangeEstimate:
-    """Half the peak-to-peak of an error curve, from a Monte Carlo simulation (in the unit of
-    the curve and its budget)."""
+    """Half the peak-to-peak of an error curve with its coverage interval
+    [value − u_lower, value + u_upper] at ``probability`` (in the unit of the curve and its
+    budget); see :func:`half_range_monte_carlo`."""
 
     measured: float  # half the peak-to-peak of the measured curve
-    bias: float  # measured − value: what the noise added to the range
+    bias: float  # measured − value: 0, the value is the measured half range (what noise may
+    # have added to it is the interval's lower side, u_lower)
     value: float  # the estimate stated
     u_upper: float  # upper half-width of the coverage interval about ``value``
     u_lower: float

@@ -3998,7 +3998,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from bounds on the curve&apos;s maximum and minimum (Romano, Shaikh &amp; Wolf 2014), the noise simulated from the budget (JCGM 101)</source>
-        <translation type="unfinished"></translation>
+        <translation>最佳零位下误差峰峰值的一半（实测值），其包含区间由曲线最大值和最小值的界给出（Romano、Shaikh 与 Wolf 2014），噪声按不确定度预算仿真（JCGM 101）</translation>
     </message>
     <message>
         <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
@@ -4051,11 +4051,11 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
-        <translation type="unfinished"></translation>
+        <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %；噪声只会使实测极差增大，故区间向下比向上伸得更远）。{sentence}</translation>
     </message>
     <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, the lowest of each shape): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on real curves, against the {p} % stated</source>
-        <translation type="unfinished"></translation>
+        <translation>该区间在验证中达到的包含概率（噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，各形状取最低值）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，真实曲线 {sample} %，所声明的为 {p} %</translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
@@ -4480,6 +4480,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>Platform</source>
         <extracomment>libraries named besides the register&apos;s (models.register.store.LIBRARIES)</extracomment>
         <translation>平台</translation>
+    </message>
+    <message>
+        <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points. Its width against what a correct interval needs (the half-width about the value that covers p of the runs) is reported beside it; the target is 1.6 times at the most.</source>
+        <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点。其宽度与正确区间所需宽度（以该值为中心、包含 p 次仿真的半宽）之比列于旁边；目标为不超过 1.6 倍。</translation>
     </message>
     <message>
         <source>pass</source>
@@ -4967,6 +4971,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
     </message>
     <message>
+        <source>{name}, at the zero face</source>
+        <translation>{name}（零位面）</translation>
+    </message>
+    <message>
         <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
@@ -5437,23 +5445,23 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Fitted model, {channel} channel, direction {j}</source>
         <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>拟合模型，{channel} 通道，第 {j} 个方向</translation>
     </message>
     <message>
         <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error</source>
-        <translation type="unfinished"></translation>
+        <translation>拟合参数协方差的一个独立方向，传播至模型相位误差</translation>
     </message>
     <message>
         <source>ADC offset, {channel} channel</source>
-        <translation type="unfinished"></translation>
+        <translation>ADC 偏置，{channel} 通道</translation>
     </message>
     <message>
         <source>one offset for the whole record</source>
-        <translation type="unfinished"></translation>
+        <translation>整个记录为同一个偏置</translation>
     </message>
     <message>
         <source>one gain ratio for the whole record</source>
-        <translation type="unfinished"></translation>
+        <translation>整个记录为同一个增益比</translation>
     </message>
     <message>
         <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
@@ -5469,7 +5477,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>as-found interpolation error (fitted model, whole period)</source>
-        <translation type="unfinished"></translation>
+        <translation>校准前细分误差（拟合模型，整个周期）</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -7021,33 +7029,61 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>将多面棱体在轴上转过一个面：安装位置 {mounting}，第 {face} 面位于编码器起点（编码器 ≈ {encoder}°）</translation>
     </message>
     <message>
-        <source>Decided quantity: half the peak-to-peak (all workbenches)</source>
+        <source>41 points, half range 1&quot;, noise 0.5&quot;</source>
         <extracomment>the target: the mean half-width at most this many times what a correct interval needs</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>41 个点，峰峰值一半 1&quot;，噪声 0.5&quot;</translation>
+    </message>
+    <message>
+        <source>24 faces, half range 0.5&quot;, noise 0.08&quot;</source>
+        <translation>24 面，峰峰值一半 0.5&quot;，噪声 0.08&quot;</translation>
+    </message>
+    <message>
+        <source>64 samples a period, 4 periods, noise 4 mV on 1 V</source>
+        <translation>每周期 64 个采样点，4 个周期，1 V 信号上噪声 4 mV</translation>
+    </message>
+    <message>
+        <source>smooth curve (1st and 2nd harmonics)</source>
+        <translation>平滑曲线（1 次和 2 次谐波）</translation>
+    </message>
+    <message>
+        <source>rough curve (ten harmonics, 1/k)</source>
+        <translation>粗糙曲线（十个谐波，1/k）</translation>
+    </message>
+    <message>
+        <source>single spike on a flat curve</source>
+        <translation>平坦曲线上的单个尖峰</translation>
+    </message>
+    <message>
+        <source>the bundled samples&apos; real curves</source>
+        <translation>随附示例的真实曲线</translation>
+    </message>
+    <message>
+        <source>Decided quantity: half the peak-to-peak (all workbenches)</source>
+        <translation>判定的量：峰峰值的一半（所有工作台）</translation>
     </message>
     <message>
         <source>coverage by simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>仿真检验包含概率</translation>
     </message>
     <message>
         <source>{shape}: noise {noises} × the half range, {points} points, {runs} runs a cell</source>
-        <translation type="unfinished"></translation>
+        <translation>{shape}：噪声为峰峰值一半的 {noises} 倍，{points} 个点，每格 {runs} 次</translation>
     </message>
     <message>
         <source>coverage ≥ {p} % (≥ {floor} of {runs} hits)</source>
-        <translation type="unfinished"></translation>
+        <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）</translation>
     </message>
     <message>
-        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × needed</source>
-        <translation type="unfinished"></translation>
+        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × needed (median of the cells)</source>
+        <translation>{pooled} %（{runs} 次中 {hits} 次；最低一格 {lowest} %），宽度为所需的 {width} 倍（各格中位数）</translation>
     </message>
     <message>
-        <source>through the {workbench} workbench&apos;s analysis and budget: {what}</source>
-        <translation type="unfinished"></translation>
+        <source>through the workbench&apos;s analysis and budget, {workbench}: {what}</source>
+        <translation>经工作台自身的分析与不确定度预算，{workbench}：{what}</translation>
     </message>
     <message>
         <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
-        <translation type="unfinished"></translation>
+        <translation>{coverage} %（{runs} 次中 {hits} 次），宽度为所需的 {width} 倍</translation>
     </message>
 </context>
 </TS>
