@@ -75,6 +75,15 @@ ACCEPTANCE = (
                "worst point of 24 % passes by that margin, not by chance: over some 40 points "
                "the largest of their sampling errors reaches about 3 × 5 %, and a budget off by "
                "a quarter at one point would still be caught)."),
+    QT_TR_NOOP("Coverage by simulation (the decided quantity's interval, half the "
+               "peak-to-peak): the interval must cover the true value at least as often as the "
+               "probability printed beside it, since a customer's risk rests on that figure; "
+               "N runs of a true coverage p give fewer hits than the least number stated in "
+               "under 1 % of studies (binomial), so fewer fail. The shapes are those that "
+               "occur (smooth, rough, a single spike, the samples' real curves) with noise 0.1 "
+               "to 2 times the half range at 12 to 72 points. Its width against what a correct "
+               "interval needs (the half-width about the value that covers p of the runs) is "
+               "reported beside it; the target is 1.6 times at the most."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -161,14 +161,17 @@ def opinion(text) -> str:
 
 def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                                   reading: str, sensitivity_from_first=None,
-                                  unit: str = "arcsec") -> list[BudgetComponent]:
+                                  unit: str = "arcsec", common: bool = False
+                                  ) -> list[BudgetComponent]:
     """One Type B input per reference standard with a stated uncertainty.
 
     ``sensitivity`` per point (√2 where the error is the difference of two
     readings, 0 at the reference point); ``reading`` says what one reading is.
     ``sensitivity_from_first`` is used for a standard whose figure applies to
     each face's deviation from face 1 (polygon), where the workbench has one. Each
-    standard's figure is converted to ``unit``, the budget's.
+    standard's figure is converted to ``unit``, the budget's. ``common``: the standard's
+    calibration error is one unknown value for the whole run (drawn once per trial in a
+    Monte Carlo of the curve), otherwise one per point.
     """
     out = []
     for std in metadata.standards:
@@ -185,7 +188,8 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 if std.certificate_no else
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
-            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note))
+            name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note,
+            common=common))
     return out
 
 

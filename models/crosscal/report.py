@@ -106,14 +106,16 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
     out = []
     if result.ac_scale_pct > 0:
         c = np.asarray(r.ac_x_arcsec, dtype=float)
+        # one scale error for the whole run: δ(E, d) = −s·G·c, its sign point by point
+        pattern = -(s.gain @ c)[block]
         out.append(BudgetComponent(
             QT_TR_NOOP("Autocollimator scale error"), "B", "rectangular",
-            result.ac_scale_pct / 100.0 * scale_effect_arcsec(s, c)[block], math.sqrt(3.0), 1.0,
-            math.inf,
+            result.ac_scale_pct / 100.0 * scale_effect_arcsec(s, c)[block], math.sqrt(3.0),
+            np.where(pattern < 0, -1.0, 1.0), math.inf,
             message(QT_TR_NOOP("up to ±{scale} of the reading (scale and linearity, stated) over "
                                "the readings' span {low} … {high}, through the design"),
                     scale=f"{result.ac_scale_pct:g} %", low=f"{np.min(c):+.1f}\"",
-                    high=f"{np.max(c):+.1f}\"")))
+                    high=f"{np.max(c):+.1f}\""), common=True))
     unmeasured = [j for j, t in zip(s.mountings, s.tilts or (None,) * len(s.mountings),
                                     strict=True) if t is None]
     if unmeasured and result.tilt_bound_arcsec > 0:

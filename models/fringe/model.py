@@ -169,6 +169,18 @@ def model_signal_std(theta_fit_rad, residual_std: float, orders: tuple[int, ...]
     return residual_std * np.sqrt(np.clip(np.einsum("ij,jk,ik->i", x, inv, x), 0.0, None))
 
 
+def model_signal_modes(theta_fit_rad, orders: tuple[int, ...], theta_rad) -> np.ndarray:
+    """(len(theta_rad), p) changes of a fitted channel's model at ``theta_rad`` per unit
+    residual standard deviation, one column per independent direction of its parameters'
+    covariance (the eigenvectors of (XᵀX)⁻¹ scaled by the root of their eigenvalue): a
+    draw ξ ~ N(0, I) of p values gives one model the data allow, σ·(modes @ ξ); the row
+    norms are :func:`model_signal_std` / σ."""
+    _, inv = _solver(np.asarray(theta_fit_rad, dtype=float), orders)
+    values, vectors = np.linalg.eigh(0.5 * (inv + inv.T))
+    x = _design(np.asarray(theta_rad, dtype=float), orders)
+    return x @ (vectors * np.sqrt(np.clip(values, 0.0, None)))
+
+
 def fit_channel(theta_rad, u, orders: tuple[int, ...] = (1, 3, 5)) -> ChannelFit:
     """Exact least squares for ``A0 + Σ A_k sin(kθ + c_k)``; global, no start.
 

@@ -39,12 +39,17 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
-from models.fringe.model import model_signal, model_signal_std
+from models.fringe.model import (
+    interpolation_error_rad,
+    model_signal,
+    model_signal_modes,
+    model_signal_std,
+)
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
 
-__all__ = ["fringe_budget", "fringe_certificate"]
+__all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
 
 METHOD = QT_TR_NOOP(
     "The sine and cosine signals of the encoder's grating are sampled over whole periods. Each "
@@ -113,9 +118,10 @@ def _stated_inputs(result, ds: np.ndarray, dc: np.ndarray, to_unit: float) -> li
         c = model_signal(result.theta_rad, result.cos_fit)
         out.append(BudgetComponent(
             QT_TR_NOOP("ADC gain ratio"), "B", "normal",
-            np.abs(s * c) / (s**2 + c**2) * gain / 100.0 * to_unit, 1.0, 1.0, math.inf,
+            np.abs(s * c) / (s**2 + c**2) * gain / 100.0 * to_unit, 1.0,
+            np.where(s * c < 0, -1.0, 1.0), math.inf,
             message(QT_TR_NOOP("u = {u} % of the ratio of the channels' gains (stated)"),
-                    u=f"{gain:g}")))
+                    u=f"{gain:g}"), common=True))
     linearity = inputs.get("adc_linearity_mv", 0.0)
     if linearity:
         out.append(BudgetComponent(
@@ -164,7 +170,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
     uc = model_signal_std(result.theta_rad, sig_c, result.cos_fit.orders, result.theta_rad)
     model = np.hypot(ds * us, dc * uc) * to_unit
     components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
-                                               unit=result.unit)
+                                               unit=result.unit, common=True)
     components += _stated_inputs(result, ds, dc, to_unit)
     components.append(BudgetComponent(
         QT_TR_NOOP("Signal noise"), "A", "normal", noise, 1.0, 1.0, dof,
@@ -177,6 +183,91 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit)
+
+
+#: the points a period is judged on when the decided quantity is the half range of the
+#: continuous as-found error (the fitted model's, over the whole period)
+MODEL_CURVE_POINTS = 256
+
+
+def model_error_curve(result, points: int = MODEL_CURVE_POINTS) -> tuple[np.ndarray, np.ndarray]:
+    """(θ, e): the as-found interpolation error of the fitted model, atan2(S, C) − θ in the
+    result's unit, over one whole period at ``points`` equal steps of θ (the continuous
+    curve, not only the sampled phases)."""
+    theta = np.arange(points) * (2.0 * math.pi / points)
+    s = model_signal(theta, result.sin_fit)
+    c = model_signal(theta, result.cos_fit)
+    to_unit = result.period_length / (2.0 * math.pi)
+    return theta, interpolation_error_rad(np.arctan2(s, c), theta) * to_unit
+
+
+def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray) -> UncertaintyBudget:
+    """The budget of the model's as-found error at the phases ``theta`` (see
+    :func:`model_error_curve`), every input with its nature: each independent direction of
+    each channel's fitted parameters (their covariance from the fit residuals, Type A with
+    n − p degrees of freedom, one estimate a channel), each channel's ADC offset and the
+    channels' gain ratio are one unknown value for the whole record, carried to every phase
+    through their signed sensitivity; the ADC's quantisation and linearity are bounded
+    errors of each reading (rectangular, per phase); the reference standards' and the phase
+    reference's errors shift the phase of the whole period (one value each)."""
+    n = result.theta_rad.size
+    to_unit = result.period_length / (2.0 * math.pi)
+    s = model_signal(theta, result.sin_fit)
+    c = model_signal(theta, result.cos_fit)
+    r2 = s**2 + c**2
+    ds, dc = c / r2 * to_unit, -s / r2 * to_unit  # ∂φ/∂u_s, ∂φ/∂u_c, as shaft angle per V
+    p = 1 + 2 * len(result.sin_fit.orders)
+    dof = max(n - p, 1)
+
+    def signed(effect: np.ndarray, name, figure: float, note, evaluation="B", nu=math.inf,
+               group="") -> BudgetComponent:
+        return BudgetComponent(name, evaluation, "normal", np.abs(effect) * figure, 1.0,
+                               np.where(effect < 0, -1.0, 1.0), nu, note, common=True,
+                               dof_group=group)
+
+    components = []
+    for label, fit, d in (("sin", result.sin_fit, ds), ("cos", result.cos_fit, dc)):
+        sigma = fit.residual_rms * math.sqrt(n / dof)
+        modes = model_signal_modes(result.theta_rad, fit.orders, theta)
+        for j in range(modes.shape[1]):
+            components.append(signed(
+                d * modes[:, j], message(QT_TR_NOOP("Fitted model, {channel} channel, direction "
+                                                    "{j}"), channel=label, j=j + 1),
+                sigma, QT_TR_NOOP("one independent direction of the fitted parameters' "
+                                  "covariance, carried to the modelled phase error"),
+                "A", dof, f"fit {label}"))
+    inputs = result.inputs or {}
+    offset = inputs.get("adc_offset_u_mv", 0.0)
+    if offset:
+        for label, d in (("sin", ds), ("cos", dc)):
+            components.append(signed(d, message(QT_TR_NOOP("ADC offset, {channel} channel"),
+                                                channel=label), offset * 1e-3,
+                                     QT_TR_NOOP("one offset for the whole record")))
+    gain = inputs.get("adc_gain_u_pct", 0.0)
+    if gain:
+        components.append(signed(s * c / r2 * to_unit, QT_TR_NOOP("ADC gain ratio"),
+                                 gain / 100.0, QT_TR_NOOP("one gain ratio for the whole "
+                                                          "record")))
+    both = np.hypot(ds, dc)
+    lsb = inputs.get("adc_lsb_mv", 0.0)
+    if lsb:
+        components.append(BudgetComponent(
+            QT_TR_NOOP("ADC quantisation"), "B", "rectangular", both * lsb * 1e-3 / 2.0,
+            math.sqrt(3.0), 1.0, math.inf))
+    linearity = inputs.get("adc_linearity_mv", 0.0)
+    if linearity:
+        components.append(BudgetComponent(
+            QT_TR_NOOP("ADC linearity"), "B", "rectangular", both * linearity * 1e-3,
+            math.sqrt(3.0), 1.0, math.inf))
+    u_phase = inputs.get("phase_reference_u", 0.0)
+    if u_phase:
+        components.append(BudgetComponent(
+            QT_TR_NOOP("Phase reference"), "B", "normal", u_phase / 360.0 * result.period_length,
+            1.0, 1.0, math.inf, common=True))
+    components += reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
+                                                unit=result.unit, common=True)
+    return UncertaintyBudget(tuple(components), theta.size, metadata.coverage_probability,
+                             result.unit)
 
 
 class _SampleNames:
@@ -306,10 +397,18 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     withheld = "" if not untraceable or tol is None else message(
         QT_TR_NOOP("the error is not traceable: {what}"),
         what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
-    conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
-                                   metadata.decision_quantity, withheld,
-                                   what=QT_TR_NOOP("as-found interpolation error"),
-                                   point_names=_SampleNames())
+    if metadata.decision_quantity == "half_range":  # the continuous curve, the whole period
+        theta_model, model_error = model_error_curve(result)
+        conformity = decide_conformity(model_error, model_error_budget(result, metadata,
+                                                                       theta_model),
+                                       tol, metadata.decision_rule, "half_range", withheld,
+                                       what=QT_TR_NOOP("as-found interpolation error (fitted "
+                                                       "model, whole period)"))
+    else:
+        conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
+                                       metadata.decision_quantity, withheld,
+                                       what=QT_TR_NOOP("as-found interpolation error"),
+                                       point_names=_SampleNames())
     stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
     stat_rows.append((QT_TR_NOOP("Correction table"),
                       message(QT_TR_NOOP("{n} entries"), n=result.table.size),

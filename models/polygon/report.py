@@ -5,10 +5,11 @@ the first set: ``e_i = (a_i − a_z) − nominal_i − (dev_i − dev_z) − (x_
 minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the sets
 (the mean of the two directions' means when both were run). Its inputs:
 
-* each reference standard's figure, per face or reading: sensitivity √2 (a
-  difference of two), 0 at the zero face; a polygon whose certificate states
-  its deviations from face 1 has sensitivity 1 where one of the two faces is
-  face 1. These are systematic and are not reduced by repeating sets;
+* each reference standard's figure, per face or reading, twice: the face's (or
+  reading's) own calibration error, one unknown per point, and the zero face's,
+  one unknown shared by every point (together √2·u, a difference of two; 0 at
+  the zero face); a polygon whose certificate states its deviations from face 1
+  has face 1 exact. These are systematic and are not reduced by repeating sets;
 * the reading noise: with a direction run twice or more, the standard
   deviation of the sets about their direction's mean pooled over positions
   and directions (Type A), divided by √m for the mean of m sets; otherwise the
@@ -19,7 +20,9 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   mean of the sets;
 * the autocollimator's roll ρ about its line of sight, relative to the set-up's
   vertical (one input, it is the only "reticle roll"): it turns part of the
-  vertical reading into the horizontal one, ρ·(y_i − y_z). Not measured: the
+  vertical reading into the horizontal one, ρ·(y_i − y_z). One unknown value
+  for the whole run: the Monte Carlo of the half range draws it once per
+  trial, with the sign of y_i − y_z at each face. Not measured: the
   stated bound, rectangular, nothing corrected; measured (and corrected): its
   standard uncertainty, normal;
 * the closure drift: the drift that the closures show beyond their reading
@@ -34,6 +37,7 @@ import dataclasses
 import math
 import re
 from typing import Any
+from dataclasses import replace
 
 import numpy as np
 
@@ -224,28 +228,33 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
     limit = result.u_ac_roll_arcmin if measured else roll_arcmin
     if limit <= 0:
         return []
-    spans = [np.abs(s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)])
+    spans = [s.ac_y_arcsec - s.ac_y_arcsec[_zero_index(result)]
              for s in result.sets if s.ac_y_arcsec is not None]
     if not spans:
         return []
+    # one unknown roll for the whole run: its effect at each face has the sign of the
+    # vertical reading's change (the Monte Carlo of the half range draws ρ once per trial)
+    change = np.mean(spans, axis=0)
+    sign = np.where(change < 0, -1.0, 1.0)
     rho = limit / 60.0 * math.pi / 180.0
     vertical = (QT_TR_NOOP("the shaft") if result.ac_alignment == "levelled"
                 else QT_TR_NOOP("the polygon's axis"))
     if measured:
         return [BudgetComponent(
             QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "normal",
-            rho * np.mean(spans, axis=0), 1.0, 1.0, math.inf,
+            rho * np.abs(change), 1.0, sign, math.inf,
             message(QT_TR_NOOP("measured roll {roll} relative to {vertical}, corrected; its "
                                "standard uncertainty {u} times the vertical reading's change "
                                "from the zero face"),
                     roll=f"{result.ac_roll_measured_arcmin:+g}′", vertical=message(vertical),
-                    u=f"{limit:g}′"))]
+                    u=f"{limit:g}′"), common=True)]
     return [BudgetComponent(
         QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "rectangular",
-        rho * np.mean(spans, axis=0), math.sqrt(3.0), 1.0, math.inf,
+        rho * np.abs(change), math.sqrt(3.0), sign, math.inf,
         message(QT_TR_NOOP("roll relative to {vertical} up to ±{roll} (stated, not measured, "
                            "not corrected) times the vertical reading's change from the zero "
-                           "face"), vertical=message(vertical), roll=f"{roll_arcmin:g}′"))]
+                           "face"), vertical=message(vertical), roll=f"{roll_arcmin:g}′"),
+        common=True)]
 
 
 def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
@@ -267,17 +276,33 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> 
                 closures=", ".join(f"{d:+.2f}" for d in drifts) + "\"", how=message(how)))]
 
 
+def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> list[BudgetComponent]:
+    """Each reference standard twice, as the error e_i = … − (dev_i − dev_z) − (x_i − x_z)
+    takes it: the face's (or reading's) own calibration error, one unknown per point, and
+    the zero face's, one unknown shared by every point (drawn once per trial in the half
+    range's Monte Carlo); together √2·u (0 at the zero face), or, for deviations stated from
+    face 1 (face 1 exact), u where one of the two faces is face 1."""
+    not_zero = np.ones(n)
+    not_zero[zero] = 0.0
+    not_first = (np.arange(n) != 0).astype(float)
+    own = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
+                                        not_first * not_zero)
+    shared = reference_standard_components(metadata, not_zero, QT_TR_NOOP("face or reading"),
+                                           not_first[zero] * not_zero, common=True)
+    out = list(own)
+    for comp in shared:
+        if np.any(np.asarray(comp.sensitivity) != 0):
+            out.append(replace(comp, name=message(QT_TR_NOOP("{name}, at the zero face"),
+                                                  name=message(comp.name))))
+    return out
+
+
 def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
     n = result.faces
     zero = _zero_index(result)
     pair = np.full(n, math.sqrt(2.0))
     pair[zero] = 0.0
-    # a deviation stated from face 1: dev_i − dev_z has face 1's term exact
-    not_first = (np.arange(n) != 0).astype(float)
-    from_first = np.sqrt(not_first + not_first[zero])
-    from_first[zero] = 0.0
-    components = reference_standard_components(metadata, pair, QT_TR_NOOP("face or reading"),
-                                               from_first)
+    components = _standard_components(metadata, zero, n)
     noise_components, noise = _noise_components(result, n, zero)
     components += noise_components
     components += repeated_readings_components(result)

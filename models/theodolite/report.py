@@ -6,7 +6,8 @@ at the reference point), minus the set-up model ζ(θ):
 
 * each reference standard's figure, per reading: sensitivity √2 (0 at the
   reference reading, whose error is zero by definition; a repeat of the
-  reference angle later in the run is a reading like any other);
+  reference angle later in the run is a reading like any other); the
+  standard's calibration error is one unknown value for the run;
 * the reading repeatability, estimated (Type A) by the identification's
   residual RMS with n − 3 degrees of freedom, once for the reading itself and
   once for the reference reading that every point shares. These are two
@@ -18,10 +19,10 @@ at the reference point), minus the set-up model ζ(θ):
   ν. The vertical
   residuals are the only measure of it (the azimuth residuals hold the axis'
   own error, the measurand); an autocollimating theodolite sets on the mirror
-  as repeatably in azimuth as in elevation. It measures this set-up's pointing
-  repeatability (mirror, air, axis wobble), which the theodolite's calibration
-  U does not cover; the theodolite's own reading repeatability is in both,
-  counted twice on the safe side;
+  as repeatably in azimuth as in elevation. It is the run's reading noise, and
+  the only one: the theodolite's stated figure is its calibration error, one
+  unknown value for the whole run (``common``), so the noise is counted once
+  where the half range is simulated;
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
 """
@@ -104,7 +105,8 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
     single = _not_reference(result)
     pair = math.sqrt(2.0) * single
     dof = max(n - 3, 1)
-    components = reference_standard_components(metadata, pair, QT_TR_NOOP("reading (pointing)"))
+    components = reference_standard_components(metadata, pair, QT_TR_NOOP("reading (pointing)"),
+                                               common=True)
     res = result.elevation_residuals_arcsec
     noise = float(np.sqrt(np.sum(res**2) / dof))
     components.append(BudgetComponent(

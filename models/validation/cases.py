@@ -545,8 +545,9 @@ def crosscal_cases(trials: int) -> list[ValidationCase]:
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     from models.registry import KINDS  # a workbench's own cases, kept in its folder
+    from models.validation.half_range import half_range_cases
 
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
             + positioning_cases(trials) + crosscal_cases(trials)
             + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
-            + uncertainty_cases())
+            + uncertainty_cases() + half_range_cases(trials))

@@ -4102,8 +4102,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
     </message>
     <message>
-        <source>half the peak-to-peak error after the best zero, with its own U and bias from a Monte Carlo simulation of this measurement (JCGM 101)</source>
-        <translation>最佳零位下误差峰峰值的一半，其 U 和偏倚由本次测量的蒙特卡洛模拟得出（JCGM 101）</translation>
+        <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from bounds on the curve&apos;s maximum and minimum (Romano, Shaikh &amp; Wolf 2014), the noise simulated from the budget (JCGM 101)</source>
+        <translation>最佳零位下误差峰峰值的一半（实测值），其包含区间由曲线最大值和最小值的界给出（Romano、Shaikh 与 Wolf 2014），噪声按不确定度预算仿真（JCGM 101）</translation>
     </message>
     <message>
         <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
@@ -4120,6 +4120,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>pass ≤ {t} &lt; fail</source>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape: the lowest cell of each shape over noise 0.1, 0.5, 1 and 2 times the true half range and 12, 36 and 72 points, 50 runs a cell (models.validation.half_range.coverage_study, seed 20261202; pooled over a shape&apos;s 600 runs: smooth 99.8 %, rough 99.3 %, spike 99.5 %, the samples&apos; real curves 99.7 %). tests/benchmarks/test_half_range_coverage.py reruns it with 100 runs a cell; `anglebench validate` with fewer. The share of the miss probability α spent on bounding the curve&apos;s gaps to its extremes (the first step of Romano, Shaikh &amp; Wolf&apos;s two-step test, β = α/10).</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -4193,6 +4194,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
         <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
+        <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
+        <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %；噪声只会使实测极差增大，故区间向下比向上伸得更远）。{sentence}</translation>
+    </message>
+    <message>
+        <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, the lowest of each shape): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on real curves, against the {p} % stated</source>
+        <translation>该区间在验证中达到的包含概率（噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，各形状取最低值）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，真实曲线 {sample} %，所声明的为 {p} %</translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
@@ -4617,6 +4624,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <source>Platform</source>
         <extracomment>libraries named besides the register&apos;s (models.register.store.LIBRARIES)</extracomment>
         <translation>平台</translation>
+    </message>
+    <message>
+        <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points. Its width against what a correct interval needs (the half-width about the value that covers p of the runs) is reported beside it; the target is 1.6 times at the most.</source>
+        <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点。其宽度与正确区间所需宽度（以该值为中心、包含 p 次仿真的半宽）之比列于旁边；目标为不超过 1.6 倍。</translation>
     </message>
     <message>
         <source>pass</source>
@@ -5106,6 +5117,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>roll relative to {vertical} up to ±{roll} (stated, not measured, not corrected) times the vertical reading&apos;s change from the zero face</source>
         <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
+    </message>
+    <message>
+        <source>{name}, at the zero face</source>
+        <translation>{name}（零位面）</translation>
     </message>
     <message>
         <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
@@ -5657,6 +5672,27 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>ADC 的{figures}未给出不确定度</translation>
     </message>
     <message>
+        <source>Fitted model, {channel} channel, direction {j}</source>
+        <extracomment>the points a period is judged on when the decided quantity is the half range of the continuous as-found error (the fitted model&apos;s, over the whole period)</extracomment>
+        <translation>拟合模型，{channel} 通道，第 {j} 个方向</translation>
+    </message>
+    <message>
+        <source>one independent direction of the fitted parameters&apos; covariance, carried to the modelled phase error</source>
+        <translation>拟合参数协方差的一个独立方向，传播至模型相位误差</translation>
+    </message>
+    <message>
+        <source>ADC offset, {channel} channel</source>
+        <translation>ADC 偏置，{channel} 通道</translation>
+    </message>
+    <message>
+        <source>one offset for the whole record</source>
+        <translation>整个记录为同一个偏置</translation>
+    </message>
+    <message>
+        <source>one gain ratio for the whole record</source>
+        <translation>整个记录为同一个增益比</translation>
+    </message>
+    <message>
         <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
         <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
     </message>
@@ -5667,6 +5703,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Results per sample (compensated = raw + correction)</source>
         <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
+    </message>
+    <message>
+        <source>as-found interpolation error (fitted model, whole period)</source>
+        <translation>校准前细分误差（拟合模型，整个周期）</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
@@ -5857,10 +5897,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Every point&apos;s {what} was judged against ±{t} with its own U; the deciding point is {point}: |e| = {e}, U = {u}. {sentence}</source>
         <translation>各点的{what}均以其自身的 U 与 ±{t} 比较；起决定作用的点为 {point}：|e| = {e}，U = {u}。{sentence}</translation>
-    </message>
-    <message>
-        <source>the interval&apos;s coverage achieved in validation (true half range 3σ): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on a real axis&apos; curve, against the {p} % stated</source>
-        <translation>该区间在确认中达到的包含概率（真实半范围为 3σ）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际轴线曲线 {sample} %，所述包含概率为 {p} %</translation>
     </message>
     <message>
         <source>Certify these figures?</source>
@@ -7333,6 +7369,61 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>In progress: {unit} (rows {first}–{last}); its readings enter no figure until it is complete, and a certificate waits for it.</source>
         <translation>进行中：{unit}（第 {first}–{last} 行）；完成前其读数不计入任何结果，证书也须待其完成。</translation>
+        <source>41 points, half range 1&quot;, noise 0.5&quot;</source>
+        <extracomment>the target: the mean half-width at most this many times what a correct interval needs</extracomment>
+        <translation>41 个点，峰峰值一半 1&quot;，噪声 0.5&quot;</translation>
+    </message>
+    <message>
+        <source>24 faces, half range 0.5&quot;, noise 0.08&quot;</source>
+        <translation>24 面，峰峰值一半 0.5&quot;，噪声 0.08&quot;</translation>
+    </message>
+    <message>
+        <source>64 samples a period, 4 periods, noise 4 mV on 1 V</source>
+        <translation>每周期 64 个采样点，4 个周期，1 V 信号上噪声 4 mV</translation>
+    </message>
+    <message>
+        <source>smooth curve (1st and 2nd harmonics)</source>
+        <translation>平滑曲线（1 次和 2 次谐波）</translation>
+    </message>
+    <message>
+        <source>rough curve (ten harmonics, 1/k)</source>
+        <translation>粗糙曲线（十个谐波，1/k）</translation>
+    </message>
+    <message>
+        <source>single spike on a flat curve</source>
+        <translation>平坦曲线上的单个尖峰</translation>
+    </message>
+    <message>
+        <source>the bundled samples&apos; real curves</source>
+        <translation>随附示例的真实曲线</translation>
+    </message>
+    <message>
+        <source>Decided quantity: half the peak-to-peak (all workbenches)</source>
+        <translation>判定的量：峰峰值的一半（所有工作台）</translation>
+    </message>
+    <message>
+        <source>coverage by simulation</source>
+        <translation>仿真检验包含概率</translation>
+    </message>
+    <message>
+        <source>{shape}: noise {noises} × the half range, {points} points, {runs} runs a cell</source>
+        <translation>{shape}：噪声为峰峰值一半的 {noises} 倍，{points} 个点，每格 {runs} 次</translation>
+    </message>
+    <message>
+        <source>coverage ≥ {p} % (≥ {floor} of {runs} hits)</source>
+        <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）</translation>
+    </message>
+    <message>
+        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × needed (median of the cells)</source>
+        <translation>{pooled} %（{runs} 次中 {hits} 次；最低一格 {lowest} %），宽度为所需的 {width} 倍（各格中位数）</translation>
+    </message>
+    <message>
+        <source>through the workbench&apos;s analysis and budget, {workbench}: {what}</source>
+        <translation>经工作台自身的分析与不确定度预算，{workbench}：{what}</translation>
+    </message>
+    <message>
+        <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
+        <translation>{coverage} %（{runs} 次中 {hits} 次），宽度为所需的 {width} 倍</translation>
     </message>
 </context>
 </TS>

@@ -279,7 +279,9 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     # ranges (from … to) and the decided quantity with its asymmetric U (value, U−, U+)
     assert stats[0][:5] == ["Quantity", "Value", "Value (to | U−)", "Value (U+)", "Value: unit"]
     decided = _row_named(stats, "Decided quantity")
-    assert decided[1] > 0 and 0 < decided[2] < decided[1] and 0 < decided[3] < decided[1]
+    # the lower half-width reaches the value itself where noise could explain the whole range
+    # (the sample: 41 points, 0.5" noise); the value is the measured half range
+    assert decided[1] > 0 and 0 < decided[2] <= decided[1] and 0 < decided[3] < decided[1]
     corrected = _row_named(stats, "Corrected error")
     assert corrected[1] == pytest.approx(result.corrected_stats.min, abs=5e-3) and corrected[1] < 0
     assert corrected[2] == pytest.approx(result.corrected_stats.max, abs=5e-3)
