@@ -624,8 +624,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                               "interval {low} … {high} (U = {u}, coverage probability {p} %; "
                               "noise can only widen a measured range, so the interval reaches "
                               "further below the value than above it). {sentence}"),
-                   what=what, value=f"{x:.{d}f}{q}", low=f"{mc.interval_low:.{d}f}{q}",
-                   high=f"{mc.interval_high:.{d}f}{q}", u=interval,
+                   what=what, value=f"{x:.{d}f}{q}", low=f"{max(0.0, x - lower):.{d}f}{q}",
+                   high=f"{x + upper:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
     trials, seed = getattr(mc, "trials", 0), getattr(mc, "seed", MONTE_CARLO_SEED)
     stride = getattr(mc, "stride", 1)
