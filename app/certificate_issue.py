@@ -16,6 +16,7 @@ from models.capture.raw_record import raw_digest
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import Project, WorkbenchState, project_to_json
+from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
 
 __all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate"]
@@ -43,7 +44,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
-    PDF can be saved from the register). ``raw_capture``: the instrument's sessions behind
+    PDF can be saved from the register); OutputRefused (an OSError) when ``path`` is the
+    register or one of its files, before anything is issued. ``raw_capture``: the instrument's sessions behind
     the readings (models/capture/raw_record.py), recorded with them in the project state
     (so in the register's hash chain); their SHA-256 is printed on the certificate."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
@@ -57,6 +59,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
         document = kind.certificate_document(result, final, source_name, settings)
         return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest))
 
+    # before a number is used: an output onto the register (or a database) is refused
+    check_output(path, register_files(register.url))
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement)
     try:

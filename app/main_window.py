@@ -75,6 +75,7 @@ class MainWindow(QMainWindow):
         self.certificates = CertificatePresenter(CertificateDialogs(self), self.qsettings,
                                                  lambda: self.projects.metadata,
                                                  lambda: self.current.mark_modified())
+        self.certificates.open_project_path = lambda: self.projects.path
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"

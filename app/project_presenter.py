@@ -231,7 +231,7 @@ class ProjectPresenter(QObject):
             save_project(path, self.project())
         except OSError as exc:
             self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
-                           .format(path=path, reason=exc.strerror or exc))
+                           .format(path=path, reason=exc.strerror or explained(exc)))
             return False
         self.path = Path(path)
         for presenter in self.presenters:

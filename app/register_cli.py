@@ -29,6 +29,7 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
 from models.project.atomic_write import write_bytes_atomic
+from models.project.output_guard import OutputRefused, check_outputs, register_files
 from models.register.location import register_url
 from models.register.wording import revision_words, status_words
 
@@ -171,8 +172,17 @@ def run_register(argv: list[str]) -> int:
         args = _parser(words).parse_args(argv)
     from models.register.store import Register, RegisterError
 
+    url = register_url(explicit=args.register)
+    outputs = ((("--pdf", args.pdf), ("--project", args.project)) if args.command == "show"
+               else (("OUT.zip", args.out),) if args.command == "export" else ())
     try:
-        with Register(register_url(explicit=args.register)) as register:
+        # before the register is opened: nothing written, the register untouched
+        check_outputs(outputs, register_files(url))
+    except OutputRefused as exc:
+        _say(f"anglebench register: {rendered(reason_of(exc), words)}")
+        return EXIT_BAD_INPUT
+    try:
+        with Register(url) as register:
             if args.command != "verify":
                 for problem in register.problems:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),

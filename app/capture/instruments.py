@@ -15,7 +15,12 @@ from models.capture.errors import FrameError
 from models.capture.geocom import GET_ANGLE5, INCLINE_AUTOMATIC, angles_of, parse_geocom_reply, request
 from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineReadout
 
-__all__ = ["INSTRUMENTS", "Autocollimator", "Instrument", "LineReadoutInstrument", "Theodolite"]
+#: an electronic autocollimator's range, default: ±1° (3600″) is more than any measures
+#: (ELCOMAT kind: ±1000″ … ±2000″); a frame beyond it is a misread, not a reading
+AUTOCOLLIMATOR_RANGE_ARCSEC = 3600.0
+
+__all__ = ["AUTOCOLLIMATOR_RANGE_ARCSEC", "INSTRUMENTS", "Autocollimator", "Instrument",
+           "LineReadoutInstrument", "Theodolite"]
 
 
 @dataclass
@@ -29,6 +34,27 @@ class Instrument:
     request: bytes | None = None
     #: the baud rate when none is given (the usual serial default; set the instrument's own)
     default_baud: int = 9600
+    #: the instrument's range, per value: (lowest, highest) or None (any finite value); a
+    #: frame outside it is refused, not taken (a setting: ``--range`` on the command line)
+    limits: tuple[tuple[float, float] | None, ...] = ()
+
+    def check_range(self, values: tuple[float, ...]) -> None:
+        """FrameError when a value is not finite or outside the instrument's range."""
+        for i, value in enumerate(values):
+            if not math.isfinite(value):
+                raise FrameError(f"value {value} is not a number")
+            limit = self.limits[i] if i < len(self.limits) else None
+            if limit is not None and not limit[0] <= value <= limit[1]:
+                name = self.columns[i] if i < len(self.columns) else f"value {i + 1}"
+                raise FrameError(f"{name} {value:g} outside the instrument's range "
+                                 f"{limit[0]:g} … {limit[1]:g}")
+
+    def set_range(self, half_width: float | None) -> None:
+        """Every value within ±``half_width`` (the instrument's own unit); None: the
+        instrument's default."""
+        if half_width is not None:
+            self.limits = tuple((-half_width, half_width) for _ in self.columns
+                                if _ != "unit")
 
     def values(self, line: bytes) -> tuple[tuple[float, ...], str] | None:
         """The reading's values and unit; None for a line that is not a measurement (device
@@ -39,7 +65,8 @@ class Instrument:
 class Autocollimator(Instrument):
     def __init__(self) -> None:
         super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
-                         stop=command("stop"))
+                         stop=command("stop"),
+                         limits=((-AUTOCOLLIMATOR_RANGE_ARCSEC, AUTOCOLLIMATOR_RANGE_ARCSEC),) * 2)
 
     def values(self, line: bytes):
         frame = parse_autocollimator_line(line)
@@ -55,7 +82,8 @@ class Autocollimator(Instrument):
 class Theodolite(Instrument):
     def __init__(self) -> None:
         super().__init__(("azimuth_deg", "zenith_deg"),
-                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC))
+                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC),
+                         limits=((0.0, 360.0), (0.0, 360.0)))  # GeoCOM: 0 … 2π rad
 
     def values(self, line: bytes):
         hz, v = angles_of(parse_geocom_reply(line), GET_ANGLE5)
