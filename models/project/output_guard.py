@@ -81,11 +81,12 @@ def sqlite_path_of_url(url: str) -> Path | None:
     scheme, _, rest = text.partition("://")
     if not scheme.lower().startswith("sqlite"):
         return None
+    # sqlite:///relative and sqlite:////absolute, as SQLAlchemy reads them
     rest = rest.split("?", 1)[0]
+    rest = rest[1:] if rest.startswith("/") else rest
     if not rest or rest == ":memory:":
         return None
-    # sqlite:///relative and sqlite:////absolute, as SQLAlchemy reads them
-    return Path(rest[1:] if rest.startswith("/") else rest)
+    return Path(rest)
 
 
 def register_files(url: str) -> list[Protected]:
