@@ -138,3 +138,31 @@ def test_the_window_refuses_an_export_onto_the_register_or_the_open_project(
         assert not presenter.export_certificate(kind, result, {}, "run.csv")
         assert says in view.tell.call_args.args[1]
     assert _digest(register) == before and project.read_text() == "{}"
+
+
+def test_register_export_neutralises_formula_cells(register, tmp_path, capsys):
+    import csv
+    import io
+    import zipfile
+
+    from models.register.store import IssueRequest
+
+    hostile = {"customer_name": "=HYPERLINK(\"http://evil\",\"click\")",
+               "item_serial": "+cmd|' /C calc'!A0", "item_description": "@SUM(1+1)",
+               "operator": "-2+3+cmd|' /C calc'!A0", "item_manufacturer": "-19°52'57.0\""}
+    meta = CertificateMetadata.from_dict({"lab_name": "Lab", "approver": "Dr. Li",
+                                          "certificate_number": "AB-1", **hostile})
+    with Register(f"sqlite:///{register}") as opened:
+        opened.issue(IssueRequest("polygon", meta, "{}", {"peak": -0.5}), lambda m: b"%PDF x")
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
+    with zipfile.ZipFile(tmp_path / "all.zip") as archive:
+        rows = list(csv.DictReader(io.StringIO(archive.read("index.csv").decode())))
+    (row,) = rows
+    assert row["customer"] == "'" + hostile["customer_name"]
+    assert row["item_serial"] == "'" + hostile["item_serial"]
+    assert row["item_description"] == "'" + hostile["item_description"]
+    assert row["operator"] == "'" + hostile["operator"]
+    assert row["item_manufacturer"] == "-19°52'57.0\""  # an angle is data: as it is
+    assert row["number"] == "AB-1"
+    for value in row.values():
+        assert not value.startswith(("=", "+", "@")) or value.startswith("'")
