@@ -7,7 +7,9 @@ as it has answered.
 
 from __future__ import annotations
 
+import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from models.capture.autocollimator import AutocollimatorFrame, command, parse_autocollimator_line
@@ -20,7 +22,7 @@ from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineRe
 AUTOCOLLIMATOR_RANGE_ARCSEC = 3600.0
 
 __all__ = ["AUTOCOLLIMATOR_RANGE_ARCSEC", "INSTRUMENTS", "Autocollimator", "Instrument",
-           "LineReadoutInstrument", "Theodolite"]
+           "LineReadoutInstrument", "Theodolite", "frame_values", "reading_columns"]
 
 
 @dataclass
@@ -102,3 +104,36 @@ class LineReadoutInstrument(Instrument):
 
 INSTRUMENTS = {"autocollimator": Autocollimator, "theodolite": Theodolite,
                "readout": LineReadoutInstrument}
+
+
+def reading_columns(instrument: str, keys: Sequence[str], vertical_zenith: bool = False
+                    ) -> list[tuple[str, int | None]]:
+    """Where each value of a reading of ``instrument`` goes in a sheet whose columns are
+    ``keys``: the column's key and index; index None for a cell chosen when it is taken (a
+    readout's), -1 for a value the sheet has no column for. A theodolite's zenith angle goes
+    to the elevation column when the workbench reads zenith angles (``vertical_zenith``)."""
+    if instrument == "readout":
+        return [("value", None)]
+    out: list[tuple[str, int | None]] = []
+    for key in INSTRUMENTS[instrument]().columns:
+        target = key
+        if key == "zenith_deg" and vertical_zenith and "elevation_deg" in keys:
+            target = "elevation_deg"
+        out.append((target, list(keys).index(target) if target in keys else -1))
+    return out
+
+
+@functools.cache
+def _instrument(name: str) -> Instrument:
+    return INSTRUMENTS[name]()
+
+
+def frame_values(instrument: str, line: bytes) -> tuple[float, ...] | None:
+    """The values a raw line of ``instrument`` reads (None: not a reading)."""
+    if instrument not in INSTRUMENTS:
+        return None
+    try:
+        parsed = _instrument(instrument).values(line)
+    except (FrameError, ValueError):
+        return None
+    return None if parsed is None else tuple(parsed[0])
