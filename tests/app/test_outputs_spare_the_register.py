@@ -166,3 +166,23 @@ def test_register_export_neutralises_formula_cells(register, tmp_path, capsys):
     assert row["number"] == "AB-1"
     for value in row.values():
         assert not value.startswith(("=", "+", "@")) or value.startswith("'")
+
+
+def test_the_window_saves_no_project_or_register_pdf_onto_the_register(register, tmp_path):
+    from app.register_presenter import RegisterPresenter, RegisterView
+    from models.project.file import Project, save_project
+    from models.project.output_guard import OutputRefused
+
+    before = _digest(register)
+    with pytest.raises(OutputRefused, match="is a database"):  # File › Save as, any register
+        save_project(register, Project())
+    view = mock.create_autospec(CertificateView, instance=True)
+    certificates = CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
+    register_view = mock.create_autospec(RegisterView, instance=True)
+    presenter = RegisterPresenter(register_view, certificates, lambda *a: True)
+    presenter.selected = lambda: mock.Mock(number="AB-1")
+    (tmp_path / "link.pdf").symlink_to(register)
+    register_view.ask_pdf_path.return_value = str(tmp_path / "link.pdf")
+    assert not presenter.save_pdf()
+    assert "is the certificate register" in register_view.tell.call_args.args[1]
+    assert _digest(register) == before
