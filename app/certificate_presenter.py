@@ -92,6 +92,8 @@ class CertificatePresenter:
         self.default_language = "en"
         #: the project open in the window (the main window sets it): no export may replace it
         self.open_project_path: Callable[[], Any] = lambda: None
+        #: the readings files imported in this window (the main window sets it): inputs too
+        self.inputs: Callable[[], list] = list
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self) -> dict:
@@ -142,11 +144,12 @@ class CertificatePresenter:
         return register_url(str(self.store.value(REGISTER_KEY, "") or ""))
 
     def protected(self) -> list:
-        """The files no export may replace: the register (with its journal files) and the
-        open project (models/project/output_guard.py)."""
-        from models.project.output_guard import open_project, register_files
+        """The files no export may replace: the register (with its journal files), the
+        open project and the readings files imported (models/project/output_guard.py)."""
+        from models.project.output_guard import input_files, open_project, register_files
 
-        return register_files(self.register_url()) + open_project(self.open_project_path())
+        return (register_files(self.register_url()) + open_project(self.open_project_path())
+                + input_files(self.inputs()))
 
     def set_register_url(self, url: str) -> None:
         self.store.setValue(REGISTER_KEY, url.strip())

@@ -89,6 +89,8 @@ class MainWindow(QMainWindow):
                                                  lambda: self.projects.metadata,
                                                  lambda: self.current.mark_modified())
         self.certificates.open_project_path = lambda: self.projects.path
+        self.imported_files: list[str] = []  # inputs: no export may replace them
+        self.certificates.inputs = lambda: list(self.imported_files)
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
@@ -261,6 +263,8 @@ class MainWindow(QMainWindow):
 
     def _on_imported(self, path: str, rows: int) -> None:
         """Say that it worked (and replace an earlier error at once)."""
+        if path not in self.imported_files:
+            self.imported_files.append(path)
         self.statusBar().showMessage(
             tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
             .format(name=Path(path).name, rows=rows), 8000)

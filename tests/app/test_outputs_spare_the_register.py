@@ -186,3 +186,20 @@ def test_the_window_saves_no_project_or_register_pdf_onto_the_register(register,
     assert not presenter.save_pdf()
     assert "is the certificate register" in register_view.tell.call_args.args[1]
     assert _digest(register) == before
+
+
+def test_the_window_refuses_an_export_onto_an_imported_readings_file(register, tmp_path,
+                                                                     samples_dir):
+    view = mock.create_autospec(CertificateView, instance=True)
+    presenter = CertificatePresenter(view, Store(), lambda: {}, mock.Mock())
+    readings = tmp_path / "run.csv"
+    readings.write_bytes((samples_dir / KINDS["theodolite"].sample_file).read_bytes())
+    presenter.inputs = lambda: [str(readings)]
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(readings), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    before = readings.read_bytes()
+    view.choose_save_path.return_value = str(readings)
+    assert not presenter.export_results(kind, result, {}, "run.csv")
+    assert "is an input" in view.tell.call_args.args[1]
+    assert readings.read_bytes() == before
