@@ -98,7 +98,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     for session in sessions:
         instrument = session["instrument"]
         targets = list(columns_of(instrument))
-        angles = instrument == "theodolite"
+        # values in degrees (a column key ending in _deg) are angles: compared on the circle
+        angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         for row, first, last in session["takes"]:
             key = (instrument, session["port"], session["started_utc"], first, last)
             if cache is not None and key in cache:
