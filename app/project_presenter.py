@@ -30,6 +30,7 @@ from models.project.file import (
     save_project,
 )
 from models.project.recovery import RecoveryStore
+from models.readings.sheet import NumericRows
 from widgets.i18n import explained, tr
 from widgets.workbench_presenter import WorkbenchPresenter
 from widgets.workers import application_workers
@@ -332,6 +333,14 @@ class ProjectPresenter(QObject):
         for key, (row, column, text) in pending.items():
             state = project.workbenches.get(key)
             if state is None or row < 0 or column < 0:
+                continue
+            if isinstance(state.rows, NumericRows) and row < len(state.rows):
+                # a large record's snapshot (its own copy): the row set as an edited one,
+                # the million others not copied
+                cells = state.rows.row(row)
+                cells += [""] * (column + 1 - len(cells))
+                cells[column] = text
+                state.rows.edited[row] = cells
                 continue
             rows = list(state.rows)
             while len(rows) <= row:

@@ -138,3 +138,26 @@ def test_the_value_being_typed_is_autosaved_and_recovered_after_kill_9(make_wind
     table.commitData(editor)
     table.closeEditor(editor, table.itemDelegate().EndEditHint.NoHint)
     assert table.pending_edit() is None
+
+
+def test_a_value_typed_in_a_large_record_goes_into_its_snapshot_only():
+    """A record of numbers (a million rows would be) keeps its arrays: the typed value is set
+    as an edited row of the autosave's snapshot; the sheet's own rows are untouched."""
+    import numpy as np
+
+    from app.project_presenter import ProjectPresenter
+    from models.project.file import Project, WorkbenchState, project_to_json
+    from models.readings.sheet import NumericRows
+    from models.registry import KINDS
+
+    columns = KINDS["fringe"].columns
+    values = {c.key: np.arange(5, dtype=float) + i for i, c in enumerate(columns)}
+    rows = NumericRows(columns, values, 5)
+    snapshot = rows.snapshot()
+    project = ProjectPresenter._with_pending(
+        Project({"fringe": WorkbenchState(snapshot, {})}, {}), {"fringe": (3, 1, "7.25")})
+    assert project.workbenches["fringe"].rows is snapshot
+    assert snapshot.cell(3, 1) == "7.25" and rows.cell(3, 1) != "7.25"
+    assert '"7.25"' in project_to_json(project)
+    assert project.metadata["pending_edits"] == {"fringe": {"row": 4, "column": 2,
+                                                            "text": "7.25"}}
