@@ -38,7 +38,13 @@ from app.capture.instruments import INSTRUMENTS, LineReadoutInstrument
 from app.capture.worker import CaptureWorker, Fault
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.capture.journal import CaptureJournal, frame_text, journal_path, read_journal
+from models.capture.journal import (
+    CaptureJournal,
+    frame_text,
+    journal_in_use,
+    journal_path,
+    read_journal,
+)
 from models.capture.line_readout import DEFAULT_PATTERN
 from models.capture.stability import StabilityGate
 from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered
@@ -163,6 +169,11 @@ def _recover(out: str, say) -> int | None:
     journal = journal_path(out)
     if not journal.exists():
         return None
+    if journal_in_use(journal):
+        say(message(QT_TR_NOOP("anglebench capture: another capture is writing into {out} "
+                               "(its journal {path} is in use); choose another --out"),
+                    out=out, path=str(journal)))
+        return EXIT_BAD_INPUT
     try:
         contents = read_journal(journal)
         stamp = time.strftime("%Y%m%dT%H%M%S", time.localtime(journal.stat().st_mtime))

@@ -33,8 +33,13 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["JOURNAL_SUFFIX", "CaptureJournal", "JournalContents", "journal_path",
-           "read_journal"]
+try:  # POSIX: a lock the kernel drops when the process dies
+    import fcntl
+except ImportError:  # pragma: no cover - Windows
+    fcntl = None  # type: ignore[assignment]
+
+__all__ = ["JOURNAL_SUFFIX", "CaptureJournal", "JournalContents", "journal_in_use",
+           "journal_path", "read_journal"]
 
 JOURNAL_SUFFIX = ".capture-journal.csv"
 _MAGIC = "# anglebench capture journal 1"
@@ -70,6 +75,8 @@ class CaptureJournal:
         # O_EXCL: a journal left by a killed capture is recovered, never replaced
         fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_BINARY", 0),
                      0o666)
+        if fcntl is not None:  # held while the capture runs (the kernel drops it at a kill)
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         self._file = os.fdopen(fd, "w", encoding="utf-8", newline="")
         try:
             header = [_MAGIC + "\n"] + [_line([f"# {k}", v]) for k, v in info.items()]
@@ -111,6 +118,25 @@ class CaptureJournal:
         self.close()
         with contextlib.suppress(FileNotFoundError):
             os.unlink(self.path)
+
+
+def journal_in_use(path: str | os.PathLike[str]) -> bool:
+    """Whether a running capture holds the journal at ``path`` (its lock is taken)."""
+    if fcntl is None:  # pragma: no cover - Windows: an open file cannot be removed anyway
+        return False
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except OSError:
+        return False
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        return True
+    else:
+        fcntl.flock(fd, fcntl.LOCK_UN)
+        return False
+    finally:
+        os.close(fd)
 
 
 @dataclass

@@ -223,3 +223,16 @@ def test_a_full_disk_at_the_end_keeps_the_readings_in_the_journal(tmp_path, caps
     assert all(r[1:] == ["1.5", "deg"] for r in read_journal(journal).readings)
     err = capsys.readouterr().err
     assert f"No space left on device; the 4 readings taken are kept in {journal}" in err
+
+
+def test_a_running_captures_journal_is_never_taken_for_a_killed_ones(tmp_path, capsys):
+    out = tmp_path / "ac.csv"
+    running = CaptureJournal(journal_path(out), ("time_s", "ac_x_arcsec", "ac_y_arcsec"),
+                             {"out": str(out), "raw": ""})
+    running.reading(["0.1", "1.0", "2.0"])
+    try:
+        assert main(["capture", "autocollimator", "/dev/null", "--out", str(out)]) == 2
+        assert "another capture is writing into" in capsys.readouterr().err
+        assert read_journal(journal_path(out)).readings == [["0.1", "1.0", "2.0"]]
+    finally:
+        running.close()
