@@ -1403,7 +1403,7 @@
     </message>
     <message>
         <source>Export certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>导出证书</translation>
     </message>
     <message>
@@ -6034,8 +6034,12 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>仪器的量程：数值超出 ±LIMIT（自准直仪以角秒计，读数显示器以其自身单位计）的数据帧被拒绝，不取为读数（默认：自准直仪 ±3600，读数显示器不限）</translation>
     </message>
     <message>
-        <source>anglebench capture: {path} is left from an earlier capture but cannot be read ({reason}); move it away to capture into {out}</source>
+        <source>anglebench capture: another capture is writing into {out} (its journal {path} is in use); choose another --out</source>
         <extracomment>the signals that end a capture the way Ctrl-C does: the readings taken written first</extracomment>
+        <translation>anglebench capture：另一个采集正在写入 {out}（其日志文件 {path} 正在使用）；请另选 --out</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {path} is left from an earlier capture but cannot be read ({reason}); move it away to capture into {out}</source>
         <translation>anglebench capture：{path} 是之前一次采集留下的文件，但无法读取（{reason}）；请将其移走后再采集到 {out}</translation>
     </message>
     <message>
