@@ -11,14 +11,18 @@ import dataclasses
 from collections.abc import Mapping
 from typing import Any
 
+from app.capture.instruments import frame_values, reading_columns
 from app.writers.certificate_pdf import certificate_pdf_bytes
+from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import Project, WorkbenchState, project_to_json
+from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
 
-__all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate"]
+__all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate",
+           "readings_edited_after_capture"]
 
 
 class IssuedNotWritten(OSError):
@@ -35,6 +39,17 @@ def draft_reasons(metadata: CertificateMetadata) -> list[str]:
     return [m for m in metadata.missing_fields() if m != "certificate number"]
 
 
+def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessions,
+                                  cache: dict | None = None) -> list[EditedReading]:
+    """The captured readings of ``sessions`` whose cells in ``rows`` differ now from what
+    the instrument's frames give (models/capture/edits.py)."""
+    keys = [c.key for c in kind.columns]
+    zenith = settings.get("vertical_reading") == "zenith"
+    return edited_after_capture(sessions or [], rows,
+                                lambda instrument: reading_columns(instrument, keys, zenith),
+                                frame_values, cache)
+
+
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
@@ -43,20 +58,28 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
-    PDF can be saved from the register). ``raw_capture``: the instrument's sessions behind
+    PDF can be saved from the register); OutputRefused (an OSError) when ``path`` is the
+    register or one of its files, before anything is issued. ``raw_capture``: the instrument's sessions behind
     the readings (models/capture/raw_record.py), recorded with them in the project state
-    (so in the register's hash chain); their SHA-256 is printed on the certificate."""
+    (so in the register's hash chain); their SHA-256 is printed on the certificate, and so is
+    every captured reading edited in the sheet since ("reading of row 3 edited after capture:
+    21.56 → 26.56")."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}},
                       {kind.key: raw_capture} if raw_capture else {})
     digest = raw_digest(raw_capture) if raw_capture else ""
+    edited = tuple(e.text() for e in readings_edited_after_capture(
+        kind, settings, rows, raw_capture)) if raw_capture else ()
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
     def render(final: CertificateMetadata) -> bytes:
         document = kind.certificate_document(result, final, source_name, settings)
-        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest))
+        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest,
+                                                         edited_readings=edited))
 
+    # before a number is used: an output onto the register (or a database) is refused
+    check_output(path, register_files(register.url))
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement)
     try:

@@ -19,6 +19,7 @@ from typing import Any, Protocol
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, AngleUnit
+from models.project.output_guard import check_output
 from models.workbench import IssuesCertificates
 from widgets.i18n import explained, tr, translated
 
@@ -89,6 +90,10 @@ class CertificatePresenter:
         # the language of a certificate whose details do not name one: the window's
         # ("zh" in a Chinese window; the main window sets it)
         self.default_language = "en"
+        #: the project open in the window (the main window sets it): no export may replace it
+        self.open_project_path: Callable[[], Any] = lambda: None
+        #: the readings files imported in this window (the main window sets it): inputs too
+        self.inputs: Callable[[], list] = list
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self) -> dict:
@@ -137,6 +142,14 @@ class CertificatePresenter:
         from models.register.location import register_url
 
         return register_url(str(self.store.value(REGISTER_KEY, "") or ""))
+
+    def protected(self) -> list:
+        """The files no export may replace: the register (with its journal files), the
+        open project and the readings files imported (models/project/output_guard.py)."""
+        from models.project.output_guard import input_files, open_project, register_files
+
+        return (register_files(self.register_url()) + open_project(self.open_project_path())
+                + input_files(self.inputs()))
 
     def set_register_url(self, url: str) -> None:
         self.store.setValue(REGISTER_KEY, url.strip())
@@ -203,6 +216,7 @@ class CertificatePresenter:
             path += ".pdf"
         self.view.wait_cursor(True)
         try:
+            check_output(path, self.protected())
             if draft:
                 from app.writers.certificate_pdf import write_certificate_pdf
 
@@ -259,6 +273,7 @@ class CertificatePresenter:
         if not path:
             return False
         try:
+            check_output(path, self.protected())
             document = kind.certificate_document(result, self.details(kind.key), source_name,
                                                  settings)
             if path.lower().endswith(".xlsx"):

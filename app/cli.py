@@ -25,6 +25,13 @@ from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_o
 from models.parameters import SettingsError
 from models.project.file import migrate_certificate_details
 from models.readings.incomplete import without_waiting_rows
+from models.project.output_guard import (
+    OutputRefused,
+    Protected,
+    check_outputs,
+    input_files,
+    register_files,
+)
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import (
@@ -155,11 +162,12 @@ def _column_mapping(text: str | None) -> dict[str, str] | None:
     return mapping
 
 
-def _same_file(a: str, b: str) -> bool:
-    try:
-        return Path(a).resolve() == Path(b).resolve()
-    except (OSError, RuntimeError):
-        return False
+def _protected(inputs: list[str]) -> list[Protected]:
+    """What no output may replace: the inputs and the certificate register (the one this
+    run would issue into), with its journal files."""
+    from models.register.location import register_url
+
+    return input_files(inputs) + register_files(register_url())
 
 
 def _finite(value: Any) -> Any:
@@ -198,20 +206,11 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     outputs = (("--certificate", args.certificate), ("--results", args.results),
                ("--table", args.table))
-    for flag, out in outputs:
-        clash = next((i for i in inputs if out and _same_file(out, i)), None)
-        if clash:
-            _say(rendered(message(QT_TR_NOOP("anglebench analyze: {flag} {out} is an input "
-                                             "({clash}); nothing was written: choose another "
-                                             "name"), flag=flag, out=out, clash=clash), words))
-            return EXIT_BAD_INPUT
-    named = [(flag, out) for flag, out in outputs if out]
-    for i, (flag, out) in enumerate(named):
-        twin = next((f for f, o in named[i + 1:] if _same_file(out, o)), None)
-        if twin:
-            _say(rendered(message(QT_TR_NOOP("anglebench analyze: {flag} and {twin} name the same "
-                                             "file"), flag=flag, twin=twin), words))
-            return EXIT_BAD_INPUT
+    try:
+        check_outputs(outputs, _protected(inputs))
+    except OutputRefused as exc:
+        _say(f"anglebench analyze: {_why(exc, words)}")
+        return EXIT_BAD_INPUT
     try:
         mapping = _column_mapping(args.columns)
     except TableImportError as exc:

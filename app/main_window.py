@@ -59,6 +59,19 @@ def default_presenters() -> list[WorkbenchPresenter]:
     return [presenter_class(kind)() for kind in KINDS.values()]
 
 
+class _SheetRows:
+    """A sheet's rows as a sequence of lists of text, read when asked (not copied)."""
+
+    def __init__(self, sheet) -> None:
+        self.sheet = sheet
+
+    def __len__(self) -> int:
+        return self.sheet.row_count
+
+    def __getitem__(self, row: int) -> list[str]:
+        return [self.sheet.text(row, c) for c in range(self.sheet.column_count)]
+
+
 class MainWindow(QMainWindow):
     """Holds the workbench presenters; all dialogs go through ``ask``/``tell`` so tests can
     answer them."""
@@ -75,6 +88,9 @@ class MainWindow(QMainWindow):
         self.certificates = CertificatePresenter(CertificateDialogs(self), self.qsettings,
                                                  lambda: self.projects.metadata,
                                                  lambda: self.current.mark_modified())
+        self.certificates.open_project_path = lambda: self.projects.path
+        self.imported_files: list[str] = []  # inputs: no export may replace them
+        self.certificates.inputs = lambda: list(self.imported_files)
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
@@ -112,7 +128,35 @@ class MainWindow(QMainWindow):
         self.capture_panel.hide()
         # its raw frames go with the project
         self.projects.raw_capture = self.capture_panel.raw_capture
-        self.projects.load_raw_capture = self.capture_panel.load_raw_capture
+        self.projects.load_raw_capture = self._load_raw_capture
+        # a captured reading edited in the sheet since is marked there (issue 40)
+        self._captured_values: dict = {}
+        for presenter in self.presenters:
+            presenter.table_model.sheet_changed.connect(
+                lambda p=presenter: self.mark_edited_readings(p))
+
+    def _load_raw_capture(self, raw: dict) -> None:
+        self.capture_panel.load_raw_capture(raw)
+        for presenter in self.presenters:
+            self.mark_edited_readings(presenter)
+
+    def mark_edited_readings(self, presenter) -> None:
+        """Mark the cells of ``presenter``'s captured readings that differ now from what the
+        instrument's frames give (app/certificate_issue.py says the same on the
+        certificate)."""
+        from app.certificate_issue import readings_edited_after_capture
+
+        panel = getattr(self, "capture_panel", None)
+        sessions = panel.raw_sessions(presenter.kind.key) if panel is not None else []
+        if not sessions and not presenter.table_model.edited_cells:
+            return
+        sheet = presenter.sheet
+        keys = [c.key for c in sheet.columns]
+        edits = readings_edited_after_capture(presenter.kind, presenter.settings,
+                                              _SheetRows(sheet), sessions,
+                                              self._captured_values)
+        presenter.table_model.set_edited_cells({
+            (e.row, keys.index(e.column)): e.text() for e in edits if e.column in keys})
 
     def set_language(self, choice: str) -> None:
         """The window in English or Chinese (or the system's language), at once: every text
@@ -219,6 +263,8 @@ class MainWindow(QMainWindow):
 
     def _on_imported(self, path: str, rows: int) -> None:
         """Say that it worked (and replace an earlier error at once)."""
+        if path not in self.imported_files:
+            self.imported_files.append(path)
         self.statusBar().showMessage(
             tr("Imported {name}: {rows} row(s) (Edit › Undo restores the previous readings)")
             .format(name=Path(path).name, rows=rows), 8000)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
 
 from widgets.i18n import tr
 
@@ -55,6 +55,19 @@ class ProjectDialogs:
 
     def show_status(self, text: str, milliseconds: int) -> None:
         self.window.statusBar().showMessage(text, milliseconds)
+
+    def show_autosave_problem(self, text: str) -> None:
+        """A red warning in the status bar, beside any message, until ``text`` is empty."""
+        label = getattr(self.window, "autosave_warning", None)
+        if label is None:
+            label = QLabel()
+            label.setStyleSheet("color: #b00020; font-weight: bold;")
+            label.setWordWrap(False)
+            self.window.statusBar().addPermanentWidget(label)
+            self.window.autosave_warning = label
+        label.setText(text)
+        label.setToolTip(text)
+        label.setVisible(bool(text))
 
     def show_title(self, title: str) -> None:
         self.window.setWindowTitle(title)

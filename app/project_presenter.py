@@ -17,7 +17,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, Protocol
 
-from PySide6.QtCore import QObject, QStandardPaths, QTimer
+from PySide6.QtCore import QObject, QStandardPaths, QTimer, Signal
 
 from models import __version__
 from models.project.file import (
@@ -30,6 +30,7 @@ from models.project.file import (
     save_project,
 )
 from models.project.recovery import RecoveryStore
+from models.readings.sheet import NumericRows
 from widgets.i18n import explained, tr
 from widgets.workbench_presenter import WorkbenchPresenter
 from widgets.workers import application_workers
@@ -80,6 +81,10 @@ class ProjectView(Protocol):
     def show_workbench(self, key: str) -> None:
         """Bring the workbench ``key`` to the front."""
 
+    def show_autosave_problem(self, text: str) -> None:
+        """A warning that stays in sight until it is cleared (``text`` empty): the unsaved
+        work is not being autosaved."""
+
 
 class SettingsStore(Protocol):
     def value(self, key: str, default: Any = None) -> Any: ...
@@ -90,6 +95,10 @@ class SettingsStore(Protocol):
 class ProjectPresenter(QObject):
     """The project of one window: ``presenters`` hold its workbenches, ``current`` gives
     the workbench in front (a readings file dropped goes there)."""
+
+    #: an autosave ended: "" when it was written, else why it was not (emitted from the
+    #: thread that wrote it; handled on the window's)
+    autosave_finished = Signal(str)
 
     def __init__(self, view: ProjectView, presenters: Sequence[WorkbenchPresenter],
                  recovery: RecoveryStore, store: SettingsStore,
@@ -112,10 +121,17 @@ class ProjectPresenter(QObject):
         self.autosave_timer.timeout.connect(self._autosave_when_due)
         self._unsaved_since = 0.0  # time.monotonic() of the first edit not yet autosaved
         self._autosave_thread: threading.Thread | None = None
+        #: why the last autosave failed ("" when it did not): shown until a save succeeds
+        self.autosave_problem = ""
+        self.autosave_finished.connect(self._autosave_reported)
         for presenter in self.presenters:
             presenter.modified_changed.connect(self.update_title)
             presenter.undo_stack.indexChanged.connect(self._schedule_autosave)
             presenter.modified_changed.connect(self._schedule_autosave)
+            table = getattr(getattr(presenter, "view", None), "table", None)
+            typing = getattr(table, "typing", None)
+            if typing is not None and hasattr(typing, "connect"):  # a value being typed
+                typing.connect(self._schedule_autosave)
 
     def start(self) -> None:
         """This window's autosave claimed (told when it cannot be); title and recent files shown."""
@@ -149,6 +165,7 @@ class ProjectPresenter(QObject):
         self.load_raw_capture(project.raw_capture)
         self.metadata.pop("autosaved_at", None)
         self.metadata.pop("project_path", None)
+        self.metadata.pop("pending_edits", None)
 
     def update_title(self, *_args) -> None:
         name = self.path.name if self.path else tr("untitled")
@@ -231,12 +248,15 @@ class ProjectPresenter(QObject):
             save_project(path, self.project())
         except OSError as exc:
             self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
-                           .format(path=path, reason=exc.strerror or exc))
+                           .format(path=path, reason=exc.strerror or explained(exc)))
             return False
         self.path = Path(path)
         for presenter in self.presenters:
             presenter.mark_saved()
         self.recovery.discard()
+        if self.autosave_problem:  # the work is safe in the project file now
+            self.autosave_problem = ""
+            self.view.show_autosave_problem("")
         self._add_recent(self.path)
         self.update_title()
         self.view.show_status(tr("Saved {path}").format(path=path), 5000)
@@ -296,12 +316,54 @@ class ProjectPresenter(QObject):
             return
         self.autosave()
 
+    def _pending_edits(self) -> dict[str, tuple[int, int, str]]:
+        """The text still in a cell's editor (typed, not yet entered), by workbench."""
+        out = {}
+        for presenter in self.presenters:
+            table = getattr(getattr(presenter, "view", None), "table", None)
+            pending = table.pending_edit() if hasattr(table, "pending_edit") else None
+            if isinstance(pending, tuple) and len(pending) == 3:
+                out[presenter.kind.key] = pending
+        return out
+
+    @staticmethod
+    def _with_pending(project: Project, pending: dict[str, tuple[int, int, str]]) -> Project:
+        """``project`` with each editor's text in its cell (the autosave's copy only: the
+        sheet and its undo history are not touched)."""
+        for key, (row, column, text) in pending.items():
+            state = project.workbenches.get(key)
+            if state is None or row < 0 or column < 0:
+                continue
+            if isinstance(state.rows, NumericRows) and row < len(state.rows):
+                # a large record's snapshot (its own copy): the row set as an edited one,
+                # the million others not copied
+                cells = state.rows.row(row)
+                cells += [""] * (column + 1 - len(cells))
+                cells[column] = text
+                state.rows.edited[row] = cells
+                continue
+            rows = list(state.rows)
+            while len(rows) <= row:
+                rows.append([])
+            cells = list(rows[row])
+            cells += [""] * (column + 1 - len(cells))
+            cells[column] = text
+            rows[row] = cells
+            project.workbenches[key] = WorkbenchState(rows, state.settings)
+        if pending:
+            project.metadata = {**project.metadata, "pending_edits": {
+                key: {"row": row + 1, "column": column + 1, "text": text}
+                for key, (row, column, text) in pending.items()}}
+        return project
+
     def autosave(self) -> None:
-        if not self.is_modified:
+        pending = self._pending_edits()
+        if not self.is_modified and not pending:
             return
         if self._rows() > AUTOSAVE_THREAD_ROWS:
-            project = Project({p.kind.key: p.state(deep=False) for p in self.presenters},
-                              dict(self.metadata))
+            project = self._with_pending(
+                Project({p.kind.key: p.state(deep=False) for p in self.presenters},
+                        dict(self.metadata)), pending)
             if self._autosave_thread is not None and self._autosave_thread.is_alive():
                 self.autosave_timer.start()  # the last one is still writing: try again soon
                 return
@@ -309,7 +371,7 @@ class ProjectPresenter(QObject):
                 target=self._write_recovery_in_background, args=(project,), daemon=True)
             self._autosave_thread.start()
         else:
-            self._write_recovery(self.project())
+            self._write_recovery(self._with_pending(self.project(), pending))
 
     def _write_recovery_in_background(self, project: Project) -> None:
         # the window keeps the interpreter every 0.1 ms; a million new strings would start
@@ -323,6 +385,24 @@ class ProjectPresenter(QObject):
             self.recovery.write(project, self.path, between_blocks)
         except OSError as exc:
             log.warning("autosave failed: %s", exc)
+            reason = f"{self.recovery.path}: {exc.strerror or explained(exc)}"
+            self.autosave_finished.emit(reason)
+            return
+        self.autosave_finished.emit("")
+
+    def _autosave_reported(self, reason: str) -> None:
+        """Said in the window: a failure stays until a save succeeds (an autosave or the
+        project saved); the autosave is tried again at the next edit."""
+        if reason:
+            self.autosave_problem = reason
+            self.view.show_autosave_problem(tr(
+                "Autosave failed: {reason}. Your unsaved readings are not protected: save the "
+                "project (File › Save as) on a disk with room.").format(reason=reason))
+            self.view.show_status(tr("Autosave failed: {reason}").format(reason=reason), 0)
+        elif self.autosave_problem:
+            self.autosave_problem = ""
+            self.view.show_autosave_problem("")
+            self.view.show_status(tr("Autosave works again"), 5000)
 
     def offer_recovery(self) -> bool:
         """If a window ended without saving, offer its autosaved work (newest first);
@@ -344,6 +424,7 @@ class ProjectPresenter(QObject):
             kept = self.recovery.set_aside(path, "declined")
             self.view.show_status(tr("The autosave was kept aside: {path}").format(path=kept), 15000)
             return False
+        typed = project.metadata.get("pending_edits") or {}
         self.apply_project(project)
         self.path = Path(source) if source else None
         for presenter in self.presenters:  # recovered work is unsaved work
@@ -351,4 +432,10 @@ class ProjectPresenter(QObject):
         self.recovery.adopt(path)
         self.autosave()  # now this window's own autosave
         self.update_title()
+        if isinstance(typed, dict) and typed:
+            self.view.show_status(tr("Recovered, with the values that were still being typed "
+                                     "({cells}): check them").format(cells=", ".join(
+                                         tr("row {row}, column {column}").format(
+                                             row=e.get("row"), column=e.get("column"))
+                                         for e in typed.values() if isinstance(e, dict))), 0)
         return True

@@ -29,8 +29,10 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered
 from models.project.atomic_write import write_bytes_atomic
+from models.project.output_guard import OutputRefused, check_outputs, register_files
 from models.register.location import register_url
 from models.register.wording import revision_words, status_words
+from models.spreadsheet_cell import spreadsheet_safe
 
 #: what ``show`` lists of a record, named as the register's columns (translated as names)
 SHOWN = (QT_TR_NOOP("supersedes"), QT_TR_NOOP("superseded_by"), QT_TR_NOOP("issue_date"),
@@ -109,11 +111,13 @@ def _export(register, out: str, words) -> int:
     records = register.list()
     index = io.StringIO()
     writer = csv.writer(index)
-    writer.writerow(COLUMNS + ("headline",))
+    writer.writerow(COLUMNS + ("headline",))  # the register's own words: nothing to neutralise
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w", zipfile.ZIP_DEFLATED) as archive:
         for record in records:
-            writer.writerow([getattr(record, c) or "" for c in COLUMNS] + [record.headline_json])
+            # a customer, a serial or a note typed as =HYPERLINK(…) is shown, never run
+            writer.writerow([spreadsheet_safe(getattr(record, c) or "") for c in COLUMNS]
+                            + [spreadsheet_safe(record.headline_json)])
             safe = record.number.replace("/", "_")
             pdf = register.pdf(record.number, checked=False)  # the audit's copy: all of it
             changed = hashlib.sha256(pdf).hexdigest() != record.pdf_sha256
@@ -171,8 +175,17 @@ def run_register(argv: list[str]) -> int:
         args = _parser(words).parse_args(argv)
     from models.register.store import Register, RegisterError
 
+    url = register_url(explicit=args.register)
+    outputs = ((("--pdf", args.pdf), ("--project", args.project)) if args.command == "show"
+               else (("OUT.zip", args.out),) if args.command == "export" else ())
     try:
-        with Register(register_url(explicit=args.register)) as register:
+        # before the register is opened: nothing written, the register untouched
+        check_outputs(outputs, register_files(url))
+    except OutputRefused as exc:
+        _say(f"anglebench register: {rendered(reason_of(exc), words)}")
+        return EXIT_BAD_INPUT
+    try:
+        with Register(url) as register:
             if args.command != "verify":
                 for problem in register.problems:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),

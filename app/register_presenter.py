@@ -129,8 +129,10 @@ class RegisterPresenter:
         if not path:
             return False
         from models.project.atomic_write import write_bytes_atomic
+        from models.project.output_guard import check_output
 
         try:
+            check_output(path, self.certificates.protected())
             with self._register() as register:
                 write_bytes_atomic(path, register.pdf(record.number))
         except (RegisterError, OSError) as exc:

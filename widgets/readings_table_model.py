@@ -16,6 +16,7 @@ from widgets.table_commands import (
 
 INVALID_BRUSH = QBrush(QColor(255, 205, 205))
 MUTED_BRUSH = QBrush(QColor(235, 240, 250))
+EDITED_BRUSH = QBrush(QColor(255, 226, 160))  # a captured reading edited since
 
 _Index = QModelIndex | QPersistentModelIndex
 #: the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each
@@ -39,6 +40,9 @@ class ReadingsTableModel(QAbstractTableModel):
         self.sheet = sheet
         self.undo_stack = undo_stack
         self.highlight_rows: set[int] = set()  # rows drawn apart (e.g. the closure row)
+        #: cells whose captured reading was edited since, with what to say of each
+        #: (models/capture/edits.py): drawn apart, the text in their tooltip
+        self.edited_cells: dict[tuple[int, int], str] = {}
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
         self._reasons: dict[tuple[int, str], str | None] = {}
@@ -66,11 +70,15 @@ class ReadingsTableModel(QAbstractTableModel):
         if role == Qt.ItemDataRole.BackgroundRole:
             if self.cell_error(r, c) is not None:
                 return INVALID_BRUSH
+            if (r, c) in self.edited_cells:
+                return EDITED_BRUSH
             if r in self.highlight_rows:
                 return MUTED_BRUSH
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
             reason = self.cell_error(r, c)
+            if reason is None and (r, c) in self.edited_cells:
+                return translated(self.edited_cells[(r, c)])
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
             return (tr("Row {row}, {header} ({key}): {reason}").format(
                 row=r + 1, header=declared(column.header), key=column.key,
@@ -119,6 +127,16 @@ class ReadingsTableModel(QAbstractTableModel):
                 self.dataChanged.emit(self.index(0, 0), self.index(self.sheet.row_count - 1,
                                                                    self.sheet.column_count - 1),
                                       [Qt.ItemDataRole.BackgroundRole])
+
+    def set_edited_cells(self, cells: dict[tuple[int, int], str]) -> None:
+        """Mark the cells of captured readings edited since (repaints only on a change)."""
+        if cells != self.edited_cells:
+            changed = set(cells) | set(self.edited_cells)
+            self.edited_cells = dict(cells)
+            for r, c in changed:
+                index = self.index(r, c)
+                self.dataChanged.emit(index, index, [Qt.ItemDataRole.BackgroundRole,
+                                                     Qt.ItemDataRole.ToolTipRole])
 
     # -- undoable edits ---------------------------------------------------
     def setData(self, index: _Index, value, role: int = Qt.ItemDataRole.EditRole) -> bool:  # noqa: N802

@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QPersistentModelIndex, Qt, Signal
 from PySide6.QtGui import QAction, QGuiApplication, QKeySequence
 from PySide6.QtWidgets import (
     QAbstractItemDelegate,
     QAbstractItemView,
     QHeaderView,
+    QLineEdit,
     QMenu,
     QMessageBox,
+    QStyledItemDelegate,
     QTableView,
 )
 
@@ -18,6 +20,34 @@ from models.readings.tabular_import import RawTable, split_pasted_text
 from widgets.i18n import live, tr
 from widgets.readings_table_model import ReadingsTableModel
 from widgets.shortcuts import key_sequences
+
+
+class _TypingDelegate(QStyledItemDelegate):
+    """The default editor, watched: what is typed in it before it is entered can be
+    autosaved (a reading being typed is not lost with the window)."""
+
+    typing = Signal()
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.editor: QLineEdit | None = None
+        self.index = QPersistentModelIndex()
+
+    def createEditor(self, parent, option, index):  # noqa: N802 - Qt's name
+        editor = super().createEditor(parent, option, index)
+        if isinstance(editor, QLineEdit):
+            self.editor, self.index = editor, QPersistentModelIndex(index)
+            editor.textEdited.connect(self.typing)
+            editor.destroyed.connect(self._editor_gone)
+        return editor
+
+    def destroyEditor(self, editor, index) -> None:  # noqa: N802 - Qt's name
+        if editor is self.editor:
+            self._editor_gone()
+        super().destroyEditor(editor, index)
+
+    def _editor_gone(self, *_args) -> None:
+        self.editor, self.index = None, QPersistentModelIndex()
 
 
 class ReadingsTableView(QTableView):
@@ -42,9 +72,26 @@ class ReadingsTableView(QTableView):
         # reading fills the plan's cells and gives the row the next reading goes to; None
         # (or it returns None): no plan, the nominal step as before
         self.plan_return = None
+        self._typing_delegate = _TypingDelegate(self)
+        self.setItemDelegate(self._typing_delegate)
+        #: a value is being typed in a cell (not yet entered): the window autosaves it
+        self.typing = self._typing_delegate.typing
         self._setup_ui()
         # after the view's own handling: the edit is committed and the editor closed
         self.itemDelegate().closeEditor.connect(self._editor_closed)
+
+    def pending_edit(self) -> tuple[int, int, str] | None:
+        """(row, column, text) of a cell's editor whose text differs from the cell's, while
+        it is open; None otherwise."""
+        delegate = self._typing_delegate
+        editor, index = delegate.editor, delegate.index
+        if editor is None or not index.isValid() or self.state() != self.State.EditingState:
+            return None
+        shown = index.data(Qt.ItemDataRole.EditRole)
+        text = editor.text()
+        if text == ("" if shown is None else str(shown)):
+            return None
+        return index.row(), index.column(), text
 
     def _setup_ui(self) -> None:
         self.setSelectionMode(QAbstractItemView.SelectionMode.ExtendedSelection)

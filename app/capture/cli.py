@@ -9,18 +9,28 @@ the mean of the frames of a dwell whose spread stayed within WINDOW (arcseconds 
 autocollimator and the theodolite, the readout's own unit for a readout), and the next
 one waits for the instrument to move to a new position.
 
-The file is written atomically when the set is complete. A fault the link recovers
-from is said on stderr and the set goes on; one it does not (or ``--timeout``) ends
-with exit status 2 and one line naming the port, and the readings already taken are
-written to ``FILE.partial.csv``.
+The file is written atomically when the set is complete. Until then every reading (synced
+to disk before it counts) and every line the instrument sent are appended to a journal
+beside it, ``FILE.csv.capture-journal.csv`` (models/capture/journal.py), removed once the
+file is written: a kill, a power cut or a full disk leaves every reading taken on disk, and
+the next capture into FILE.csv says where they are (``FILE.recovered-STAMP.csv``). A fault
+the link recovers from is said on stderr and the set goes on; one it does not,
+``--timeout``, Ctrl-C, SIGTERM or SIGHUP ends with exit status 2 and one line naming the
+port, and the readings already taken are written to ``FILE.partial.csv`` (``--raw``'s lines
+too, even when no reading was taken). ``--out`` and ``--raw`` may not be one file, nor the
+certificate register.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import csv
+import datetime as dt
 import io
 import queue
+import signal
+import threading
 import time
 from pathlib import Path
 
@@ -28,12 +38,24 @@ from app.capture.instruments import CAPTURE_MODES, INSTRUMENTS, Autocollimator, 
 from app.capture.worker import CaptureWorker, Fault
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
+from models.capture.journal import (
+    CaptureJournal,
+    frame_text,
+    journal_in_use,
+    journal_path,
+    read_journal,
+)
 from models.capture.line_readout import DEFAULT_PATTERN
 from models.capture.stability import StabilityGate
-from models.messages import QT_TR_NOOP, message, rendered
+from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered
 from models.project.atomic_write import write_text_atomic
+from models.project.output_guard import OutputRefused, check_outputs, register_files
+from models.register.location import register_url
 
-__all__ = ["run_capture"]
+__all__ = ["RAW_FRAMES_IN_MEMORY", "run_capture"]
+
+#: raw lines kept in memory; older ones are in the journal (on disk) only
+RAW_FRAMES_IN_MEMORY = 10_000
 
 
 def _positive(words, kind=float):
@@ -92,16 +114,20 @@ def _parser(words) -> argparse.ArgumentParser:
     p.add_argument("--raw", metavar="RAW.csv", help=words(QT_TR_NOOP(
         "also write every line the instrument sent, time-stamped, and whether it became a "
         "reading (the readings' trace to the instrument's own output)")))
+    p.add_argument("--range", type=_positive(words), metavar="LIMIT", help=words(QT_TR_NOOP(
+        "the instrument's range: a frame with a value beyond ±LIMIT (arcsec for the "
+        "autocollimator, the readout's own unit) is refused, not taken (default: "
+        "autocollimator ±3600, readout any)")))
     add_language_option(p, words)
     return p
 
 
-def _raw_text(lines: list[tuple[float, bytes, bool]]) -> str:
+def _raw_text_of(frames: list[tuple[str, str, str]]) -> str:
+    """The raw trace's CSV from the journal's frames (time, 1/0, the line as text)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(("time_s", "reading", "line"))
-    writer.writerows((repr(round(t, 6)), int(used), line.decode("ascii", "backslashreplace"))
-                     for t, line, used in lines)
+    writer.writerows(frames)
     return buffer.getvalue()
 
 
@@ -123,6 +149,84 @@ def _csv_text(columns: tuple[str, ...], rows: list[list[object]]) -> str:
     return buffer.getvalue()
 
 
+class _Stopped(Exception):
+    """The process was asked to end (SIGTERM, SIGHUP): the readings taken are written."""
+
+
+def _stop_on(signum, _frame) -> None:
+    raise _Stopped(signal.Signals(signum).name)
+
+
+#: the signals that end a capture the way Ctrl-C does: the readings taken written first
+_ENDING = tuple(getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name))
+
+
+def _handle(handler) -> dict:
+    """Set ``handler`` for the ending signals; the handlers they had (only the main thread
+    may set them: elsewhere nothing is changed)."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    return {sig: signal.signal(sig, handler) for sig in _ENDING}
+
+
+def _recovered_path(path: Path, stamp: str) -> Path:
+    return path.with_name(f"{path.stem}.recovered-{stamp}{path.suffix or '.csv'}")
+
+
+def _recover(out: str, say) -> int | None:
+    """A journal left beside ``out`` by a capture that did not end (killed, power cut): its
+    readings (and raw lines, when that capture wrote them) written to ``*.recovered-STAMP``
+    files, said, and the journal removed. None when all went well, else the exit status."""
+    journal = journal_path(out)
+    if not journal.exists():
+        return None
+    if journal_in_use(journal):
+        say(message(QT_TR_NOOP("anglebench capture: another capture is writing into {out} "
+                               "(its journal {path} is in use); choose another --out"),
+                    out=out, path=str(journal)))
+        return EXIT_BAD_INPUT
+    try:
+        contents = read_journal(journal)
+        stamp = time.strftime("%Y%m%dT%H%M%S", time.localtime(journal.stat().st_mtime))
+    except (OSError, ValueError) as exc:
+        say(message(QT_TR_NOOP("anglebench capture: {path} is left from an earlier capture but "
+                               "cannot be read ({reason}); move it away to capture into {out}"),
+                    path=str(journal), reason=getattr(exc, "strerror", None) or str(exc),
+                    out=out))
+        return EXIT_BAD_INPUT
+    if not contents.readings and not contents.frames:  # killed before it heard anything
+        with contextlib.suppress(OSError):
+            journal.unlink()
+        return None
+    target = _recovered_path(Path(out), stamp)
+    writes = [(target, _csv_text(contents.columns[1:], contents.readings))]
+    raw_target = None
+    if contents.info.get("raw"):
+        raw_target = _recovered_path(Path(contents.info["raw"]), stamp)
+        writes.append((raw_target, _raw_text_of(contents.frames)))
+    for path, text in writes:
+        try:
+            write_text_atomic(path, text)
+        except OSError as exc:
+            say(message(QT_TR_NOOP("anglebench capture: an earlier capture into {out} did not "
+                                   "end; its readings are in {journal}, and {path} cannot be "
+                                   "written ({reason})"), out=out, journal=str(journal),
+                        path=str(path), reason=exc.strerror or str(exc)))
+            return 1
+    with contextlib.suppress(OSError):
+        journal.unlink()
+    if raw_target is not None:
+        say(message(QT_TR_NOOP("anglebench capture: an earlier capture into {out} did not end "
+                               "(killed?): its {n} readings are in {path}, its {m} raw lines "
+                               "in {raw}"), out=out, n=len(contents.readings), path=str(target),
+                    m=len(contents.frames), raw=str(raw_target)))
+    else:
+        say(message(QT_TR_NOOP("anglebench capture: an earlier capture into {out} did not end "
+                               "(killed?): its {n} readings are in {path}"), out=out,
+                    n=len(contents.readings), path=str(target)))
+    return None
+
+
 def run_capture(argv: list[str]) -> int:
     language = language_asked(argv)
     with speaking(language) as words:
@@ -133,6 +237,10 @@ def run_capture(argv: list[str]) -> int:
 
     if (args.stable is None) != (args.dwell is None):
         say(message(QT_TR_NOOP("anglebench capture: --stable and --dwell go together")))
+        return EXIT_BAD_INPUT
+    if args.range is not None and args.instrument == "theodolite":
+        say(message(QT_TR_NOOP("anglebench capture: --range is for the autocollimator and the "
+                               "readout (a theodolite reads 0° … 360°)")))
         return EXIT_BAD_INPUT
     if args.instrument == "readout":
         try:
@@ -148,7 +256,27 @@ def run_capture(argv: list[str]) -> int:
         say(message(QT_TR_NOOP("anglebench capture: --mode is the autocollimator's (an instrument "
                                "that answers requests is always asked)")))
         return EXIT_BAD_INPUT
+    instrument.set_range(args.range)
+    try:
+        check_outputs((("--out", args.out), ("--raw", args.raw)), register_files(register_url()))
+    except OutputRefused as exc:
+        say(joined(("anglebench capture: ", reason_of(exc))))
+        return EXIT_BAD_INPUT
+    recovery = _recover(args.out, say)
+    if recovery is not None:
+        return recovery
     columns = instrument.columns
+    try:
+        journal = CaptureJournal(journal_path(args.out), ("time_s",) + columns, {
+            "started": dt.datetime.now(dt.timezone.utc).isoformat(timespec="seconds"),
+            "instrument": args.instrument, "port": args.port,
+            "out": str(Path(args.out).resolve()),
+            "raw": str(Path(args.raw).resolve()) if args.raw else ""})
+    except OSError as exc:
+        say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; nothing was "
+                               "captured"), path=str(journal_path(args.out)),
+                    reason=exc.strerror or str(exc)))
+        return 1
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
     # the gate's window is in arcseconds for angles in degrees; a theodolite's angles go to
     # the gate as their difference from the first frame's, wrapped to ±180°, so a position
@@ -156,12 +284,24 @@ def run_capture(argv: list[str]) -> int:
     scale = 3600.0 if args.instrument == "theodolite" else 1.0
     origin: tuple[float, ...] | None = None
     rows: list[list[object]] = []
+    previous = _handle(_stop_on)
     worker = CaptureWorker(args.port, instrument, args.baud, silence_s=args.silence,
                            retries=max(args.retries, 0), reply_timeout_s=args.reply_timeout,
-                           poll_interval_s=1.0 / args.poll_rate).start()
+                           poll_interval_s=1.0 / args.poll_rate, raw_cap=RAW_FRAMES_IN_MEMORY)
     ends = time.monotonic() + args.timeout if args.timeout else None
     failure = None
+
+    def journal_frames() -> None:
+        for t, line, used in worker.take_raw():
+            journal.frame(t, line, used)
+
+    def take(row: list[object]) -> None:
+        journal_frames()
+        journal.reading(row)  # on disk before it counts
+        rows.append(row)
+
     try:
+        worker.start()
         while len(rows) < args.readings:
             if ends is not None and time.monotonic() > ends:
                 failure = message(QT_TR_NOOP("{port}: {n} of {total} readings in {seconds} s"),
@@ -171,6 +311,7 @@ def run_capture(argv: list[str]) -> int:
             try:
                 event = worker.events.get(timeout=0.05)
             except queue.Empty:
+                journal_frames()
                 continue
             if isinstance(event, Fault):
                 if event.final:
@@ -181,7 +322,7 @@ def run_capture(argv: list[str]) -> int:
                 continue
             unit = [event.unit] if args.instrument == "readout" else []
             if gate is None:
-                rows.append([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
+                take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
                 continue
             origin = origin or (event.values if scale != 1.0 else (0.0,) * len(event.values))
             taken = gate.feed(event.time_s, [_wrapped(v - o, scale) * scale
@@ -190,27 +331,61 @@ def run_capture(argv: list[str]) -> int:
                 means = [o + float(v) / scale for v, o in zip(taken.mean, origin, strict=True)]
                 if scale != 1.0:
                     means = [m % 360.0 for m in means]
-                rows.append([repr(round(taken.time_s, 6)), *map(repr, means), *unit])
+                take([repr(round(taken.time_s, 6)), *map(repr, means), *unit])
     except KeyboardInterrupt:
         failure = message(QT_TR_NOOP("{port}: interrupted"), port=args.port)
+    except _Stopped as exc:
+        failure = message(QT_TR_NOOP("{port}: stopped by {signal}"), port=args.port,
+                          signal=str(exc))
+    except OSError as exc:  # the journal cannot be written: the disk is full
+        failure = message(QT_TR_NOOP("cannot write {path} ({reason})"), path=str(journal.path),
+                          reason=exc.strerror or str(exc))
     finally:
-        worker.stop()
+        # from here on the readings are written: a second SIGTERM waits for that
+        _handle(signal.SIG_IGN)
+        try:
+            worker.stop()
+            with contextlib.suppress(OSError, ValueError):
+                journal_frames()
+            journal.close()
+            status = _finish(args, columns, rows, worker, journal, failure, say)
+        finally:
+            for sig, handler in previous.items():
+                signal.signal(sig, handler)
+    return status
+
+
+def _finish(args, columns, rows, worker, journal, failure, say) -> int:
+    """The readings (and the raw lines) written; the journal removed once they are."""
     target = Path(args.out) if failure is None else _partial_path(args.out)
-    if failure is not None and not rows:
-        say(message(QT_TR_NOOP("anglebench capture: {reason}; no reading was taken"),
-                    reason=failure))
-        return EXIT_BAD_INPUT
-    writes = [(target, _csv_text(columns, rows))]
-    if args.raw:
+    try:  # the journal is what was taken (a signal may have come between it and memory)
+        kept = read_journal(journal.path)
+        rows, frames = kept.readings, kept.frames
+    except (OSError, ValueError):  # the journal unreadable: what memory holds
+        frames = [(repr(round(t, 6)), str(int(u)), frame_text(line)) for t, line, u in worker.raw]
+    writes = [(target, _csv_text(columns, rows))] if rows else []
+    raw_target = None
+    if args.raw:  # written even when no reading was taken: then it is all there is
         raw_target = Path(args.raw) if failure is None else _partial_path(args.raw)
-        writes.append((raw_target, _raw_text(worker.raw)))
+        writes.append((raw_target, _raw_text_of(frames)))
     for path, text in writes:
         try:
             write_text_atomic(path, text)
         except OSError as exc:
-            say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}"),
-                        path=str(path), reason=exc.strerror or str(exc)))
+            say(message(QT_TR_NOOP("anglebench capture: cannot write {path}: {reason}; the {n} "
+                                   "readings taken are kept in {journal}"), path=str(path),
+                        reason=exc.strerror or str(exc), n=len(rows), journal=str(journal.path)))
             return 1
+    journal.remove()
+    if failure is not None and not rows:
+        if raw_target is not None:
+            say(message(QT_TR_NOOP("anglebench capture: {reason}; no reading was taken (the "
+                                   "instrument's lines are in {raw})"), reason=failure,
+                        raw=str(raw_target)))
+        else:
+            say(message(QT_TR_NOOP("anglebench capture: {reason}; no reading was taken"),
+                        reason=failure))
+        return EXIT_BAD_INPUT
     if failure is not None:
         say(message(QT_TR_NOOP("anglebench capture: {reason}; the {n} readings taken are in "
                                "{path}"), reason=failure, n=len(rows), path=str(target)))

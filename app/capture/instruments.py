@@ -14,7 +14,9 @@ start.
 
 from __future__ import annotations
 
+import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from models.capture.autocollimator import AutocollimatorFrame, command, parse_autocollimator_line
@@ -29,8 +31,12 @@ from models.capture.geocom import (
 )
 from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineReadout
 
-__all__ = ["CAPTURE_MODES", "INSTRUMENTS", "Autocollimator", "Instrument", "LineReadoutInstrument",
-           "Theodolite"]
+#: an electronic autocollimator's range, default: ±1° (3600″) is more than any measures
+#: (ELCOMAT kind: ±1000″ … ±2000″); a frame beyond it is a misread, not a reading
+AUTOCOLLIMATOR_RANGE_ARCSEC = 3600.0
+
+__all__ = ["AUTOCOLLIMATOR_RANGE_ARCSEC", "CAPTURE_MODES", "INSTRUMENTS", "Autocollimator",
+           "Instrument", "LineReadoutInstrument", "Theodolite", "frame_values", "reading_columns"]
 
 #: how a streaming instrument is read: ``auto`` (stream, single-shot requests when it does not
 #: stream), ``stream`` or ``poll`` (single-shot requests only)
@@ -55,6 +61,27 @@ class Instrument:
     stream_wait_s: float = 1.0
     #: ``auto``, ``stream`` or ``poll`` (:data:`CAPTURE_MODES`; ``poll`` needs :attr:`poll`)
     mode: str = "auto"
+    #: the instrument's range, per value: (lowest, highest) or None (any finite value); a
+    #: frame outside it is refused, not taken (a setting: ``--range`` on the command line)
+    limits: tuple[tuple[float, float] | None, ...] = ()
+
+    def check_range(self, values: tuple[float, ...]) -> None:
+        """FrameError when a value is not finite or outside the instrument's range."""
+        for i, value in enumerate(values):
+            if not math.isfinite(value):
+                raise FrameError(f"value {value} is not a number")
+            limit = self.limits[i] if i < len(self.limits) else None
+            if limit is not None and not limit[0] <= value <= limit[1]:
+                name = self.columns[i] if i < len(self.columns) else f"value {i + 1}"
+                raise FrameError(f"{name} {value:g} outside the instrument's range "
+                                 f"{limit[0]:g} … {limit[1]:g}")
+
+    def set_range(self, half_width: float | None) -> None:
+        """Every value within ±``half_width`` (the instrument's own unit); None: the
+        instrument's default."""
+        if half_width is not None:
+            self.limits = tuple((-half_width, half_width) for _ in self.columns
+                                if _ != "unit")
 
     def values(self, line: bytes) -> tuple[tuple[float, ...], str] | None:
         """The reading's values and unit; None for a line that is not a measurement (device
@@ -80,7 +107,8 @@ class Autocollimator(Instrument):
         if mode not in CAPTURE_MODES:
             raise ValueError(f"mode must be one of {', '.join(CAPTURE_MODES)}")
         super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
-                         stop=command("stop"), poll=command("single"), mode=mode)
+                         stop=command("stop"), poll=command("single"), mode=mode,
+                         limits=((-AUTOCOLLIMATOR_RANGE_ARCSEC, AUTOCOLLIMATOR_RANGE_ARCSEC),) * 2)
 
     def values(self, line: bytes):
         frame = parse_autocollimator_line(line)
@@ -98,7 +126,8 @@ class Theodolite(Instrument):
 
     def __init__(self) -> None:
         super().__init__(("azimuth_deg", "zenith_deg"),
-                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC))
+                         request=request(GET_ANGLE5, INCLINE_AUTOMATIC),
+                         limits=((0.0, 360.0), (0.0, 360.0)))  # GeoCOM: 0 … 2π rad
 
     def transaction_of(self, transaction: int) -> int:
         return (transaction - 1) % MAX_TRANSACTION_ID + 1
@@ -129,3 +158,36 @@ class LineReadoutInstrument(Instrument):
 
 INSTRUMENTS = {"autocollimator": Autocollimator, "theodolite": Theodolite,
                "readout": LineReadoutInstrument}
+
+
+def reading_columns(instrument: str, keys: Sequence[str], vertical_zenith: bool = False
+                    ) -> list[tuple[str, int | None]]:
+    """Where each value of a reading of ``instrument`` goes in a sheet whose columns are
+    ``keys``: the column's key and index; index None for a cell chosen when it is taken (a
+    readout's), -1 for a value the sheet has no column for. A theodolite's zenith angle goes
+    to the elevation column when the workbench reads zenith angles (``vertical_zenith``)."""
+    if instrument == "readout":
+        return [("value", None)]
+    out: list[tuple[str, int | None]] = []
+    for key in INSTRUMENTS[instrument]().columns:
+        target = key
+        if key == "zenith_deg" and vertical_zenith and "elevation_deg" in keys:
+            target = "elevation_deg"
+        out.append((target, list(keys).index(target) if target in keys else -1))
+    return out
+
+
+@functools.cache
+def _instrument(name: str) -> Instrument:
+    return INSTRUMENTS[name]()
+
+
+def frame_values(instrument: str, line: bytes) -> tuple[float, ...] | None:
+    """The values a raw line of ``instrument`` reads (None: not a reading)."""
+    if instrument not in INSTRUMENTS:
+        return None
+    try:
+        parsed = _instrument(instrument).values(line)
+    except (FrameError, ValueError):
+        return None
+    return None if parsed is None else tuple(parsed[0])

@@ -54,7 +54,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.capture.instruments import INSTRUMENTS
+from app.capture.instruments import INSTRUMENTS, reading_columns
 from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation
 from models.capture.raw_record import frame_text
@@ -447,19 +447,16 @@ class CapturePanel(QDockWidget):
         row = index.row() if index.isValid() else model.sheet.row_count
         keys = [c.key for c in model.sheet.columns]
         changes = []
-        columns = INSTRUMENTS[self.kind]().columns
         if self.kind == "readout":
             column = index.column() if index.isValid() else -1
             if column >= 0:
                 changes.append((row, column, f"{values[0]:.12g}"))
         else:
             vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
-            for key, value in zip(columns, values, strict=False):
-                target = key
-                if key == "zenith_deg" and vertical_zenith and "elevation_deg" in keys:
-                    target = "elevation_deg"
-                if target in keys:
-                    changes.append((row, keys.index(target), f"{value:.12g}"))
+            for (_, column), value in zip(reading_columns(self.kind, keys, vertical_zenith),
+                                          values, strict=False):
+                if column is not None and column >= 0:
+                    changes.append((row, column, f"{value:.12g}"))
         if not changes:
             self.status.setText(tr("This workbench has no column for this instrument's "
                                    "reading: choose a cell first (readout) or another "

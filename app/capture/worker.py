@@ -38,7 +38,8 @@ class Reading:
     unit: str
     #: the instrument's line as it sent it
     raw: bytes
-    #: its index in the worker's :attr:`CaptureWorker.raw`
+    #: its index among the lines the worker kept since the start (in
+    #: :attr:`CaptureWorker.raw` at ``frame - raw_first``)
     frame: int = -1
 
 
@@ -57,7 +58,7 @@ class CaptureWorker:
     def __init__(self, port: str, instrument: Instrument, baud: int | None = None,
                  silence_s: float = 1.0, retries: int = 3, retry_pause_s: float = 0.2,
                  opener=open_link, reply_timeout_s: float | None = None,
-                 poll_interval_s: float = 0.0) -> None:
+                 poll_interval_s: float = 0.0, raw_cap: int | None = None) -> None:
         self.port, self.instrument = port, instrument
         self.baud = baud or instrument.default_baud
         self.silence_s, self.retries, self.retry_pause_s = silence_s, retries, retry_pause_s
@@ -81,6 +82,12 @@ class CaptureWorker:
         #: every line the instrument sent, as sent: (seconds since the start, the line,
         #: whether it became a reading); appended by the worker thread only
         self.raw: list[tuple[float, bytes, bool]] = []
+        #: the index (since the start) of ``raw[0]``: frames a consumer has taken
+        #: (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory
+        self.raw_first = 0
+        self.raw_cap = raw_cap
+        self._raw_taken = 0
+        self._raw_lock = threading.Lock()
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"capture {port}", daemon=True)
         self._t0 = time.monotonic()
@@ -97,6 +104,24 @@ class CaptureWorker:
         self._stop.set()
         if self._thread.is_alive():
             self._thread.join(wait_s)
+
+    def _keep(self, time_s: float, line: bytes, used: bool) -> int:
+        """A line the instrument sent, kept; its index since the start."""
+        with self._raw_lock:
+            self.raw.append((time_s, line, used))
+            return self.raw_first + len(self.raw) - 1
+
+    def take_raw(self) -> list[tuple[float, bytes, bool]]:
+        """The lines sent since the last call (the caller keeps them, e.g. in a journal);
+        with ``raw_cap``, only the newest ``raw_cap`` lines stay in memory after it."""
+        with self._raw_lock:
+            new = self.raw[self._raw_taken - self.raw_first:]
+            self._raw_taken = self.raw_first + len(self.raw)
+            if self.raw_cap is not None and len(self.raw) > self.raw_cap:
+                drop = len(self.raw) - self.raw_cap
+                del self.raw[:drop]
+                self.raw_first += drop
+            return new
 
     @property
     def t0(self) -> float:
@@ -209,7 +234,7 @@ class CaptureWorker:
             instrument.mode == "poll" or self.polling)
         try:
             for line in self._waiting_at_connect(link):
-                self.raw.append((time.monotonic() - self._t0, line, False))
+                self._keep(time.monotonic() - self._t0, line, False)
                 self.stale_at_connect += 1
             if instrument.start and not polling:
                 link.write(instrument.start)
@@ -246,26 +271,27 @@ class CaptureWorker:
                             stale = (f"reply to an earlier request (transaction {trid}, waiting "
                                      f"for {expected})")
                         if stale:
-                            self.raw.append((now - self._t0, line, False))
+                            self._keep(now - self._t0, line, False)
                             self.refused += 1
                             self._refusal(stale)
                             continue
                     in_flight = None
                     try:
                         parsed = instrument.values(line)
+                        if parsed is not None:
+                            instrument.check_range(parsed[0])
                     except FrameError as exc:
-                        self.raw.append((now - self._t0, line, False))
+                        self._keep(now - self._t0, line, False)
                         self.refused += 1
                         last_refusal = str(exc)
                         self._refusal(str(exc))
                         continue
-                    self.raw.append((now - self._t0, line, parsed is not None))
+                    index = self._keep(now - self._t0, line, parsed is not None)
                     if parsed is None:
                         continue
                     got += 1
                     last_good = now
-                    self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line,
-                                            len(self.raw) - 1))
+                    self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line, index))
                 waiting = in_flight is not None and now - in_flight <= self.reply_timeout_s
                 timed_out = (in_flight is not None and not waiting)
                 if timed_out and not heard_since_request:

@@ -19,6 +19,7 @@ import hashlib
 import json
 import math
 import re
+import unicodedata
 from importlib import resources
 from pathlib import Path
 
@@ -82,6 +83,15 @@ def _document_texts(document: CertificateDocument) -> list[str]:
             json.dumps(document.metadata.to_dict(), ensure_ascii=False)]
 
 
+def right_to_left(document: CertificateDocument) -> str:
+    """The right-to-left letters of the document (Arabic, Hebrew…): the certificate sets text
+    left to right, one character after another, so such a word would print reversed and
+    unjoined."""
+    seen = dict.fromkeys(ch for text in _document_texts(document) for ch in text
+                         if unicodedata.bidirectional(ch) in ("R", "AL"))
+    return "".join(seen)
+
+
 def unprintable(document: CertificateDocument) -> str:
     """The characters of the document that no bundled font has (they would be dropped
     from the PDF without a word)."""
@@ -112,7 +122,7 @@ CHINESE = {
     "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
     "Model": "型号", "Place of calibration": "校准地点",
-    "Instrument output": "仪器原始输出",
+    "Instrument output": "仪器原始输出", "Edited after capture": "采集后修改",
 }
 
 
@@ -230,10 +240,27 @@ class ReportPdf(FPDF):
         # The right-hand cell first: a CJK lab name switches to the fallback font, and
         # fpdf2 then omits the font selection of the next cell on a fresh page.
         y = self.get_y()
-        self.set_x(self.l_margin + self.epw / 2)
-        self.cell(self.epw / 2, 5, right, align="R")
+        right_width = min(self.text_width(right, 8) + 2 * self.c_margin + 0.5, self.epw / 2)
+        self.set_font(FONT, "", 8)
+        self.set_x(self.l_margin + self.epw - right_width)
+        self.cell(right_width, 5, right, align="R")
+        # the left text (the lab's name) gets what the number leaves, never more: shrunk
+        # down to 6 pt, then broken into lines, so it never prints over the number
+        room = self.epw - right_width - 3
+        size = 8.0
+        wide = self.text_width(left, size)
+        if wide > room - 2 * self.c_margin:
+            size = max(6.0, size * (room - 2 * self.c_margin) / wide)
+        self.set_font(FONT, "", size)
         self.set_xy(self.l_margin, y)
-        self.cell(self.epw / 2, 5, left, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        if self.text_width(left, size) <= room - 2 * self.c_margin:
+            self.cell(room, 5, left, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        else:
+            self.multi_cell(room, size * 0.45, self._wrapped(left, room - 2 * self.c_margin - 0.6,
+                                                             size),
+                            wrapmode="CHAR", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            self.set_y(max(self.get_y(), y + 5))
+        self.set_font(FONT, "", 8)
         self.set_draw_color(*RULE)
         self.line(self.l_margin, self.get_y(), self.w - self.r_margin, self.get_y())
         self.ln(3)
@@ -549,7 +576,7 @@ def _units(text: str) -> list[str]:
     which one is Chinese — but never before a closing mark ("。", "）") or after an opening
     one, and never inside a Latin word or a figure."""
     units, current, previous = [], "", ""
-    for ch, nxt in zip(text, text[1:] + " ", strict=True):
+    for ch, nxt in zip(text, text[1:] + " ", strict=False):  # "" (a blank line): no unit
         current += ch
         if ch.isspace() and previous not in _OPERATORS and nxt not in _OPERATORS:
             units.append(current)  # "T + w", "k = 2" are kept on one line
@@ -655,6 +682,8 @@ def _render(document: CertificateDocument) -> FPDF:
         (label(document, "Readings", "\n"), document.source_name),
         *([(label(document, "Instrument output", "\n"),
             f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
+        *([(label(document, "Edited after capture", "\n"), joined(_between("\n", document.edited_readings)))]
+          if document.edited_readings else []),
     ])
     pdf.heading(label(document, "Reference standards and traceability"))
     pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
@@ -881,6 +910,11 @@ def certificate_pdf_bytes(document: CertificateDocument) -> bytes:
     if missing:
         raise ValueError(f"the certificate's text has characters no bundled font can print: "
                          f"'{missing[:20]}'; write those details in Latin or Chinese script")
+    backwards = right_to_left(document)
+    if backwards:
+        raise ValueError(f"the certificate's text has right-to-left script ('{backwards[:20]}'"
+                         f"), which the certificate cannot print in its order (it would read "
+                         f"reversed); write those details in Latin or Chinese script")
     final = _render(document)
     try:
         return bytes(final.output())

@@ -78,6 +78,9 @@ class CertificateDocument:
     stated_inputs: tuple[str, ...] = ()
     # SHA-256 of the instrument's raw frames behind the readings (models/capture/raw_record)
     raw_data_sha256: str = ""
+    # captured readings edited in the sheet since (models/capture/edits.py), one text each:
+    # "reading of row 3 edited after capture: 21.56 → 26.56"
+    edited_readings: tuple[str, ...] = ()
     # what the results are traceable through when no reference standard enters them
     # (IssuesCertificates.traceability_basis); "": through the standards listed
     traceability_basis: str = ""

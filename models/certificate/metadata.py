@@ -2,8 +2,9 @@
 standards, environment, people and dates (ISO/IEC 17025 clause 7.8).
 
 Entered in the metadata dialog, stored in the project file (per workbench),
-with lab-wide defaults kept in the settings. Text is stored as typed; control
-characters are removed and lengths are capped so no field can break the page.
+with lab-wide defaults kept in the settings. Text is stored as typed (stripped, a tab as a
+space); a field with a control or format character, or longer than its limit (200
+characters, notes 2000), is refused naming the field: nothing is removed or cut unseen.
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import contextlib
 import datetime as dt
 import math
 import re
+import unicodedata
 from dataclasses import asdict, dataclass, fields, replace
 from typing import Any
 
@@ -54,7 +56,10 @@ PLACES = {"laboratory": QT_TR_NOOP("at the laboratory"),
 #: and labels in Chinese beside the English ("校准证书 Calibration certificate")
 LANGUAGES = {"en": "English", "zh": "中文", "zh+en": "中文 + English (headings and labels)"}
 
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+#: what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides,
+#: U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned
+#: code points
+_REFUSED_CATEGORIES = frozenset({"Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn"})
 
 
 #: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
@@ -65,8 +70,22 @@ class MetadataError(ValueError):
     """A metadata field cannot be used; the message names the field."""
 
 
+def _refused_character(text: str) -> str:
+    """The first character of ``text`` that may not be on a certificate: a control or
+    format character (invisible: U+200B, U+061C, a bidi override…), a line or paragraph
+    separator, a private-use or unassigned code point; "" when there is none. A newline is
+    judged by the caller."""
+    for ch in text:
+        if ch != "\n" and unicodedata.category(ch) in _REFUSED_CATEGORIES:
+            return ch
+    return ""
+
+
 def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
-    """A field's text without control characters or bidi overrides, capped in length."""
+    """A field's text, stripped; a tab (and, in a one-line field, a line break) as a space.
+    MetadataError, naming the field, for text longer than the field's limit (never cut) or
+    with a control or format character (never removed unseen: an invisible character makes
+    two texts that print alike differ)."""
     if value is None:
         return ""
     if not isinstance(value, str | int | float) or isinstance(value, bool):
@@ -79,11 +98,24 @@ def clean_text(value: Any, field_name: str, multiline: bool = False) -> str:
         raise MetadataError(message(
             QT_TR_NOOP("certificate field '{field_name}' must be text"),
             field_name=field_name)) from None
-    if multiline:
-        text = text.replace("\r\n", "\n").replace("\r", "\n")
-        text = "\n".join(_CONTROL.sub("", line.replace("\t", " ")) for line in text.split("\n"))
-        return text.strip()[:MAX_NOTES_CHARS]
-    return _CONTROL.sub("", text.replace("\t", " ").replace("\n", " ")).strip()[:MAX_FIELD_CHARS]
+    text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\t", " ")
+    if not multiline:
+        text = text.replace("\n", " ")
+    text = "\n".join(line.rstrip() for line in text.split("\n")).strip()
+    bad = _refused_character(text)
+    if bad:
+        raise MetadataError(message(QT_TR_NOOP(
+            "certificate field '{field_name}' holds the invisible or control character "
+            "U+{code} ({name}): delete it (retype the text if it was pasted)"),
+            field_name=field_name, code=f"{ord(bad):04X}",
+            name=unicodedata.name(bad, "unnamed").lower()))
+    limit = MAX_NOTES_CHARS if multiline else MAX_FIELD_CHARS
+    if len(text) > limit:
+        raise MetadataError(message(QT_TR_NOOP(
+            "certificate field '{field_name}' is {length} characters long; at most {limit} "
+            "fit: shorten it (nothing is cut unseen)"), field_name=field_name,
+            length=len(text), limit=limit))
+    return text
 
 
 def _optional_number(value: Any, field_name: str) -> float | None:

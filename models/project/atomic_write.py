@@ -11,6 +11,8 @@ import time
 from collections.abc import Iterable
 from pathlib import Path
 
+from models.project.output_guard import refuse_database
+
 __all__ = ["write_bytes_atomic", "write_text_atomic"]
 
 
@@ -44,9 +46,12 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
 
     The temporary file is created in the target's folder (so the rename stays on
     one file system), flushed and fsync'ed before ``os.replace``. On any error
-    the temporary file is removed and the old file is left untouched.
+    the temporary file is removed and the old file is left untouched. A target that is a
+    SQLite database or one of its journals (a certificate register) is refused
+    (OutputRefused, an OSError) before anything is written.
     """
     target = Path(path)
+    refuse_database(target)  # a certificate register is never an output (output_guard.py)
     if target.is_symlink():  # write through the link: the link stays a link
         target = target.resolve()
     _remove_stale_temps(target)

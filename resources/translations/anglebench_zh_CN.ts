@@ -1463,6 +1463,7 @@
     </message>
     <message>
         <source>Export certificate</source>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>导出证书</translation>
     </message>
     <message>
@@ -1519,7 +1520,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>files that may be dropped on the window: readings, or a project (.json) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture)</extracomment>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -1831,6 +1832,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>没有可导出的内容</translation>
     </message>
     <message>
+        <source>Autosave failed: {reason}. Your unsaved readings are not protected: save the project (File › Save as) on a disk with room.</source>
+        <translation>自动保存失败：{reason}。未保存的读数没有受到保护：请将项目保存（文件 › 另存为）到有空间的磁盘上。</translation>
+    </message>
+    <message>
+        <source>Autosave failed: {reason}</source>
+        <translation>自动保存失败：{reason}</translation>
+    </message>
+    <message>
+        <source>Autosave works again</source>
+        <translation>自动保存已恢复正常</translation>
+    </message>
+    <message>
         <source>Cannot recover</source>
         <translation>无法恢复</translation>
     </message>
@@ -1845,6 +1858,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>an untitled project</source>
         <translation>未命名项目</translation>
+    </message>
+    <message>
+        <source>Recovered, with the values that were still being typed ({cells}): check them</source>
+        <translation>已恢复，包括当时仍在输入的值（{cells}）：请核对</translation>
+    </message>
+    <message>
+        <source>row {row}, column {column}</source>
+        <translation>第 {row} 行第 {column} 列</translation>
     </message>
     <message>
         <source>Recover unsaved work</source>
@@ -2037,8 +2058,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>certificate field &apos;{field_name}&apos; must be text</source>
-        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
+        <extracomment>the certificate&apos;s language: English; Chinese throughout (JJF 1001 terms); or its headings and labels in Chinese beside the English (&quot;校准证书 Calibration certificate&quot;) what no field may hold: control (Cc) and format (Cf: U+200B, U+061C, bidi overrides, U+FEFF) characters, line/paragraph separators, surrogates, private-use and unassigned code points What a reference standard&apos;s uncertainty figure applies to (see ReferenceStandard).</extracomment>
         <translation>证书字段 &apos;{field_name}&apos; 必须是文本</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; holds the invisible or control character U+{code} ({name}): delete it (retype the text if it was pasted)</source>
+        <translation>证书字段 &apos;{field_name}&apos; 含有不可见字符或控制字符 U+{code}（{name}）：请删除它（如为粘贴的文本，请重新输入）</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; is {length} characters long; at most {limit} fit: shorten it (nothing is cut unseen)</source>
+        <translation>证书字段 &apos;{field_name}&apos; 长 {length} 个字符，最多允许 {limit} 个：请缩短（不会在不告知的情况下截断）</translation>
     </message>
     <message>
         <source>certificate field &apos;{field_name}&apos; must be a number</source>
@@ -2834,7 +2863,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -2855,6 +2884,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Copy</source>
+        <extracomment>a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>复制</translation>
     </message>
     <message>
@@ -3988,14 +4018,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>anglebench analyze: --table: {workbench} has no correction table</source>
         <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
-    </message>
-    <message>
-        <source>anglebench analyze: {flag} {out} is an input ({clash}); nothing was written: choose another name</source>
-        <translation>anglebench analyze：{flag} {out} 是输入文件（{clash}）；未写入任何文件：请另选文件名</translation>
-    </message>
-    <message>
-        <source>anglebench analyze: {flag} and {twin} name the same file</source>
-        <translation>anglebench analyze：{flag} 和 {twin} 指向同一个文件</translation>
     </message>
     <message>
         <source> (and {n} more bad cell(s))</source>
@@ -6141,6 +6163,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{text}: give a number greater than 0</source>
+        <extracomment>raw lines kept in memory; older ones are in the journal (on disk) only</extracomment>
         <translation>{text}：请给出大于 0 的数</translation>
     </message>
     <message>
@@ -6274,12 +6297,45 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
     </message>
     <message>
+        <source>the instrument&apos;s range: a frame with a value beyond ±LIMIT (arcsec for the autocollimator, the readout&apos;s own unit) is refused, not taken (default: autocollimator ±3600, readout any)</source>
+        <translation>仪器的量程：数值超出 ±LIMIT（自准直仪以角秒计，读数显示器以其自身单位计）的数据帧被拒绝，不取为读数（默认：自准直仪 ±3600，读数显示器不限）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: another capture is writing into {out} (its journal {path} is in use); choose another --out</source>
+        <extracomment>the signals that end a capture the way Ctrl-C does: the readings taken written first</extracomment>
+        <translation>anglebench capture：另一个采集正在写入 {out}（其日志文件 {path} 正在使用）；请另选 --out</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {path} is left from an earlier capture but cannot be read ({reason}); move it away to capture into {out}</source>
+        <translation>anglebench capture：{path} 是之前一次采集留下的文件，但无法读取（{reason}）；请将其移走后再采集到 {out}</translation>
+    </message>
+    <message>
+        <source>anglebench capture: an earlier capture into {out} did not end; its readings are in {journal}, and {path} cannot be written ({reason})</source>
+        <translation>anglebench capture：之前一次到 {out} 的采集未正常结束；其读数在 {journal} 中，无法写入 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: an earlier capture into {out} did not end (killed?): its {n} readings are in {path}, its {m} raw lines in {raw}</source>
+        <translation>anglebench capture：之前一次到 {out} 的采集未正常结束（被终止？）：其 {n} 个读数在 {path} 中，{m} 行原始输出在 {raw} 中</translation>
+    </message>
+    <message>
+        <source>anglebench capture: an earlier capture into {out} did not end (killed?): its {n} readings are in {path}</source>
+        <translation>anglebench capture：之前一次到 {out} 的采集未正常结束（被终止？）：其 {n} 个读数在 {path} 中</translation>
+    </message>
+    <message>
         <source>anglebench capture: --stable and --dwell go together</source>
         <translation>anglebench capture：--stable 与 --dwell 须同时给出</translation>
     </message>
     <message>
+        <source>anglebench capture: --range is for the autocollimator and the readout (a theodolite reads 0° … 360°)</source>
+        <translation>anglebench capture：--range 用于自准直仪和读数显示器（经纬仪读数为 0° … 360°）</translation>
+    </message>
+    <message>
         <source>anglebench capture: --pattern: {reason}</source>
         <translation>anglebench capture：--pattern：{reason}</translation>
+    </message>
+    <message>
+        <source>anglebench capture: cannot write {path}: {reason}; nothing was captured</source>
+        <translation>anglebench capture：无法写入 {path}：{reason}；未进行采集</translation>
     </message>
     <message>
         <source>{port}: {n} of {total} readings in {seconds} s</source>
@@ -6294,12 +6350,24 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{port}：已中断</translation>
     </message>
     <message>
-        <source>anglebench capture: {reason}; no reading was taken</source>
-        <translation>anglebench capture：{reason}；未取得任何读数</translation>
+        <source>{port}: stopped by {signal}</source>
+        <translation>{port}：被 {signal} 终止</translation>
     </message>
     <message>
-        <source>anglebench capture: cannot write {path}: {reason}</source>
-        <translation>anglebench capture：无法写入 {path}：{reason}</translation>
+        <source>cannot write {path} ({reason})</source>
+        <translation>无法写入 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: cannot write {path}: {reason}; the {n} readings taken are kept in {journal}</source>
+        <translation>anglebench capture：无法写入 {path}：{reason}；已取得的 {n} 个读数保存在 {journal} 中</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; no reading was taken (the instrument&apos;s lines are in {raw})</source>
+        <translation>anglebench capture：{reason}；未取得任何读数（仪器输出的各行在 {raw} 中）</translation>
+    </message>
+    <message>
+        <source>anglebench capture: {reason}; no reading was taken</source>
+        <translation>anglebench capture：{reason}；未取得任何读数</translation>
     </message>
     <message>
         <source>anglebench capture: {reason}; the {n} readings taken are in {path}</source>
@@ -6320,7 +6388,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index in the worker&apos;s :attr:`CaptureWorker.raw` a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -7424,6 +7492,38 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
         <translation>{coverage} %（{runs} 次中 {hits} 次），宽度为所需的 {width} 倍</translation>
+        <source>reading of row {row} edited after capture: {captured} → {now}</source>
+        <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied)</extracomment>
+        <translation>第 {row} 行的读数在采集后被修改：{captured} → {now}</translation>
+    </message>
+    <message>
+        <source>the certificate register ({path})</source>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <translation>证书登记册（{path}）</translation>
+    </message>
+    <message>
+        <source>the certificate register&apos;s {kind} file ({path})</source>
+        <translation>证书登记册的 {kind} 文件（{path}）</translation>
+    </message>
+    <message>
+        <source>an input ({path})</source>
+        <translation>输入文件（{path}）</translation>
+    </message>
+    <message>
+        <source>the open project ({path})</source>
+        <translation>当前打开的项目（{path}）</translation>
+    </message>
+    <message>
+        <source>{path} is a database (a certificate register?); nothing was written: choose another name</source>
+        <translation>{path} 是一个数据库（证书登记册？）；未写入任何内容：请换一个文件名</translation>
+    </message>
+    <message>
+        <source>{flag}{out} is {what}; nothing was written: choose another name</source>
+        <translation>{flag}{out} 是{what}；未写入任何内容：请换一个文件名</translation>
+    </message>
+    <message>
+        <source>{flag} and {twin} name the same file ({out}); nothing was written</source>
+        <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
     </message>
 </context>
 </TS>

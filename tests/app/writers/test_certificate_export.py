@@ -128,13 +128,13 @@ def test_polygon_grade_has_one_source(details, message):
 @pytest.mark.slow
 def test_hostile_text_neither_breaks_the_page_nor_becomes_markup():
     kind, result = _analysed("theodolite")
-    long_word = "W" * 400
+    long_word = "W" * 200  # the field's limit (a longer one is refused: issue 40, not cut)
     meta = CertificateMetadata.from_dict({
         **META.to_dict(), "customer_name": long_word, "item_description": "<b>bold</b> **x** {nb}",
         "notes": "\n".join(["第一行 line"] * 60)})
     text, pages = _text(certificate_pdf_bytes(kind.certificate_document(result, meta)))
     flat = re.sub(r"\s+", "", text)
-    assert "W" * 150 in flat  # wrapped, not cut
+    assert "W" * 200 in flat  # wrapped, not cut
     assert "<b>bold</b>**x**{nb}" in flat  # printed as typed
     assert pages >= 4
 

@@ -1,0 +1,127 @@
+"""Readings that no longer say what the instrument said: a captured reading edited in the
+sheet afterwards.
+
+Each *take* of a capture session (models/capture/raw_record.py) names the sheet row it
+filled and the instrument's frames behind it. The reading those frames give (one frame, or
+the mean of a dwell's frames) is compared with what the row's cells hold now; a cell that
+differs is an edit after capture. The raw frames and their SHA-256 stay as captured: the
+certificate prints the hash, and says which rows were edited and from what to what.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from models.messages import QT_TR_NOOP, Message, message
+from models.readings.angles import parse_angle_deg
+
+__all__ = ["EditedReading", "captured_values", "edited_after_capture"]
+
+#: a cell that holds the captured value within this (relative) is the captured reading: it
+#: was written with 12 significant digits
+_SAME = 1e-9
+
+
+@dataclass(frozen=True)
+class EditedReading:
+    #: the sheet row (0-based) and the column's key
+    row: int
+    column: str
+    #: the reading the frames give, and the cell's text now ("" when emptied)
+    captured: str
+    now: str
+
+    def text(self) -> Message:
+        return message(QT_TR_NOOP("reading of row {row} edited after capture: {captured} → "
+                                  "{now}"), row=self.row + 1, captured=self.captured,
+                       now=self.now or "—")
+
+
+def captured_values(session: dict[str, Any], first: int, last: int,
+                    values_of: Callable[[str, bytes], tuple[float, ...] | None],
+                    angles: bool) -> tuple[float, ...] | None:
+    """The reading frames ``first``…``last`` of ``session`` give: the mean of those that
+    were readings (angles in degrees averaged about the first, so 359.9° and 0.1° give 0°).
+    None when no frame there reads."""
+    got = []
+    for _, line, used in session["frames"][first:last + 1]:
+        if not used:
+            continue
+        values = values_of(session["instrument"], line.encode("latin-1"))
+        if values is not None:
+            got.append(tuple(float(v) for v in values))
+    if not got or any(len(g) != len(got[0]) for g in got):
+        return None
+    if not angles:
+        return tuple(math.fsum(g[i] for g in got) / len(got) for i in range(len(got[0])))
+    origin = got[0]
+    means = []
+    for i, o in enumerate(origin):
+        offsets = [(g[i] - o + 180.0) % 360.0 - 180.0 for g in got]
+        means.append((o + math.fsum(offsets) / len(offsets)) % 360.0)
+    return tuple(means)
+
+
+def _number(text: str, angle: bool) -> float | None:
+    text = text.strip()
+    if not text:
+        return None
+    try:
+        return float(parse_angle_deg(text)) if angle else float(text)
+    except (ValueError, TypeError, OverflowError):
+        return None
+
+
+def _same(cell: float | None, value: float, angle: bool) -> bool:
+    if cell is None:
+        return False
+    difference = (cell - value + 180.0) % 360.0 - 180.0 if angle else cell - value
+    return abs(difference) <= _SAME * max(1.0, abs(value))
+
+
+def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequence[str]],
+                         columns_of: Callable[[str], Sequence[tuple[str, int | None]]],
+                         values_of: Callable[[str, bytes], tuple[float, ...] | None],
+                         cache: dict | None = None) -> list[EditedReading]:
+    """Every cell of a taken reading that differs now from the reading its frames give.
+
+    ``columns_of(instrument)``: per value of the instrument's reading, the column's key and
+    index in the sheet (index None: the value went to a cell chosen at the time, e.g. a
+    readout's; such a reading is edited when no cell of its row holds it any more; -1: the
+    sheet has no column for it).
+    ``values_of(instrument, line)``: the values a frame reads (None if none). ``cache``: a
+    dict kept between calls, the frames' readings by session and take (they never change)."""
+    edited: dict[tuple[int, str], EditedReading] = {}
+    for session in sessions:
+        instrument = session["instrument"]
+        targets = list(columns_of(instrument))
+        # values in degrees (a column key ending in _deg) are angles: compared on the circle
+        angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
+        for row, first, last in session["takes"]:
+            key = (instrument, session["port"], session["started_utc"], first, last)
+            if cache is not None and key in cache:
+                values = cache[key]
+            else:
+                values = captured_values(session, first, last, values_of, angles)
+                if cache is not None:
+                    cache[key] = values
+            if values is None or row < 0:
+                continue
+            cells = list(rows[row]) if row < len(rows) else []
+            for (key, column), value in zip(targets, values, strict=False):
+                captured = f"{value:.12g}"
+                if column is not None and column < 0:  # no column for it in this sheet
+                    continue
+                if column is None:
+                    if not any(_same(_number(c, angles), value, angles) for c in cells):
+                        edited[(row, key)] = EditedReading(row, key, captured, "")
+                    continue
+                now = cells[column] if column < len(cells) else ""
+                if _same(_number(now, angles), value, angles):
+                    edited.pop((row, key), None)  # taken again later: as captured
+                else:
+                    edited[(row, key)] = EditedReading(row, key, captured, now.strip())
+    return sorted(edited.values(), key=lambda e: (e.row, e.column))

@@ -1,0 +1,177 @@
+"""Outputs that may not land on a file we must keep: the certificate register (its SQLite
+database and the journal, WAL and shared-memory files beside it), the inputs of the run and
+the project open in the window.
+
+Two files are the same when they resolve to the same file: a symbolic link is followed, and
+a hard link (another name of the same inode) is found by comparing ``st_dev``/``st_ino``.
+A name that does not exist yet is compared by its resolved path (the register's WAL file
+exists only while the database is open).
+
+As a last line, :func:`refuse_database` looks at what the target holds: no AngleBench output
+is ever a SQLite database or one of its journals, so a write that would replace one is
+refused whoever asked for it (a register in another folder than the configured one, a
+command this module was not told about).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
+           "open_project", "refuse_database", "register_files", "same_file",
+           "sqlite_path_of_url"]
+
+#: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
+#: ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index)
+SQLITE_COMPANIONS = ("-journal", "-wal", "-shm")
+
+#: the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte
+#: orders of its magic number); the -shm file has no magic and is found by its name
+_SQLITE_MAGIC = (b"SQLite format 3\x00", bytes.fromhex("d9d505f920a163d7"),
+                 bytes.fromhex("377f0682"), bytes.fromhex("377f0683"))
+
+
+class OutputRefused(OSError):
+    """An output names a file that must not be written (its reason is a Message). An
+    OSError, so that every writer's "cannot write" path reports it and keeps going."""
+
+
+@dataclass(frozen=True)
+class Protected:
+    """A file no output may replace, and what it is (a Message, e.g. "the register")."""
+
+    path: Path
+    what: str
+
+
+def _identity(path: Path) -> tuple[int, int] | None:
+    try:
+        st = os.stat(path)  # follows symbolic links
+    except (OSError, ValueError):
+        return None
+    return st.st_dev, st.st_ino
+
+
+def _resolved(path: str | os.PathLike[str]) -> str:
+    try:
+        return os.path.normcase(os.path.realpath(os.path.expanduser(os.fspath(path))))
+    except (OSError, ValueError, RuntimeError):
+        return os.path.normcase(os.path.abspath(os.fspath(path)))
+
+
+def same_file(a: str | os.PathLike[str], b: str | os.PathLike[str]) -> bool:
+    """Whether ``a`` and ``b`` are one file: the same inode when both exist (a symbolic or
+    hard link to it included), else the same resolved path."""
+    first, second = _identity(Path(a)), _identity(Path(b))
+    if first is not None and second is not None:
+        return first == second
+    return _resolved(a) == _resolved(b)
+
+
+def sqlite_path_of_url(url: str) -> Path | None:
+    """The database file of a ``sqlite:///`` register URL (None for a server register)."""
+    text = (url or "").strip()
+    if "://" not in text:
+        return Path(text).expanduser() if text else None
+    scheme, _, rest = text.partition("://")
+    if not scheme.lower().startswith("sqlite"):
+        return None
+    # sqlite:///relative and sqlite:////absolute, as SQLAlchemy reads them
+    rest = rest.split("?", 1)[0]
+    rest = rest[1:] if rest.startswith("/") else rest
+    if not rest or rest == ":memory:":
+        return None
+    return Path(rest)
+
+
+def register_files(url: str) -> list[Protected]:
+    """The register's database and its journal, WAL and shared-memory files."""
+    database = sqlite_path_of_url(url)
+    if database is None:
+        return []
+    what = message(QT_TR_NOOP("the certificate register ({path})"), path=str(database))
+    return [Protected(database, what)] + [
+        Protected(Path(f"{database}{suffix}"),
+                  message(QT_TR_NOOP("the certificate register's {kind} file ({path})"),
+                          kind=suffix[1:], path=f"{database}{suffix}"))
+        for suffix in SQLITE_COMPANIONS]
+
+
+def input_files(paths: Iterable[str | os.PathLike[str] | None]) -> list[Protected]:
+    """The run's inputs (None and empty names left out)."""
+    return [Protected(Path(p), message(QT_TR_NOOP("an input ({path})"), path=str(p)))
+            for p in paths if p]
+
+
+def open_project(path: str | os.PathLike[str] | None) -> list[Protected]:
+    """The project open in the window (none when it was never saved)."""
+    if not path:
+        return []
+    return [Protected(Path(path), message(QT_TR_NOOP("the open project ({path})"),
+                                          path=str(path)))]
+
+
+def _companion_of_database(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` names the journal, WAL or shared-memory file of a SQLite database
+    that exists beside it."""
+    resolved = _resolved(path)
+    for suffix in SQLITE_COMPANIONS:
+        if resolved.endswith(os.path.normcase(suffix)):
+            base = resolved[: -len(suffix)]
+            if _is_database(base):
+                return True
+    return False
+
+
+def _is_database(path: str | os.PathLike[str]) -> bool:
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(16)
+    except (OSError, ValueError):
+        return False
+    return any(head.startswith(magic) for magic in _SQLITE_MAGIC)
+
+
+def refuse_database(path: str | os.PathLike[str]) -> None:
+    """Raise OutputRefused when ``path`` (after links) holds a SQLite database or one of its
+    journals, or names the journal/WAL/shared-memory file of one: a certificate register,
+    ours or not, is never an output."""
+    if _is_database(path) or _companion_of_database(path):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{path} is a database (a certificate register?); nothing was written: choose "
+            "another name"), path=os.fspath(path)))
+
+
+def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protected],
+                 flag: str = "") -> None:
+    """Raise OutputRefused when the output ``path`` is one of ``protected`` (after symbolic
+    and hard links) or a database; nothing has been written then. ``flag``: how the user
+    named the output (``--certificate``), said in the refusal."""
+    if not path:
+        return
+    for item in protected:
+        if same_file(path, item.path):
+            raise OutputRefused(message(QT_TR_NOOP(
+                "{flag}{out} is {what}; nothing was written: choose another name"),
+                flag=f"{flag} " if flag else "", out=os.fspath(path), what=item.what))
+    refuse_database(path)
+
+
+def check_outputs(outputs: Sequence[tuple[str, str | os.PathLike[str] | None]],
+                  protected: Sequence[Protected]) -> None:
+    """Each named output checked against ``protected``, and no two outputs the same file.
+    ``outputs``: (flag, path) pairs; a pair without a path is skipped."""
+    named = [(flag, out) for flag, out in outputs if out]
+    for flag, out in named:
+        check_output(out, protected, flag)
+    for i, (flag, out) in enumerate(named):
+        twin = next((f for f, o in named[i + 1:] if same_file(out, o)), None)
+        if twin:
+            raise OutputRefused(message(QT_TR_NOOP(
+                "{flag} and {twin} name the same file ({out}); nothing was written"),
+                flag=flag, twin=twin, out=os.fspath(out)))

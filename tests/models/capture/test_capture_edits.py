@@ -1,0 +1,117 @@
+"""A captured reading edited in the sheet afterwards is found, with what the instrument's
+frames gave and what the cell holds now (issue 40 item 11)."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pytest
+
+from app.capture.instruments import frame_values, reading_columns
+from app.certificate_issue import readings_edited_after_capture
+from models.capture.edits import EditedReading, captured_values, edited_after_capture
+from models.capture.raw_record import session_json
+from models.registry import KINDS
+
+
+def _autocollimator_line(x: float, y: float, axes: str = "3") -> bytes:
+    """A streamed measurement as the ELCOMAT-kind protocol writes it (code 3, status 00a)."""
+    return f"3 00{axes} {x:.3f} {y:.3f}".encode()
+
+
+def _session(readings, takes, instrument="autocollimator"):
+    frames = []
+    for i, (x, y) in enumerate(readings):
+        frames.append((0.01 * i, _autocollimator_line(x, y), True))
+        frames.append((0.01 * i + 0.005, b"garbage \xff", False))  # a refused line between
+    return session_json(instrument, "/dev/ttyUSB0", 9600, "2026-12-02T01:02:03+00:00", frames,
+                        takes)
+
+
+POLYGON = [c.key for c in KINDS["polygon"].columns]
+
+
+def _columns(instrument):
+    return reading_columns(instrument, POLYGON)
+
+
+def test_an_edited_reading_is_found_with_its_captured_and_its_present_value():
+    # row 0: one frame; row 2: the mean of three frames (an auto-take's dwell)
+    session = _session([(12.5, -3.25), (21.5, 1.0), (21.6, 1.1), (21.58, 0.9)],
+                       [[0, 0, 0], [2, 2, 6]])
+    rows = [["1", "0", "0", "12.5", "-3.25"], ["2", "30", "0", "", ""],
+            ["3", "60", "0", "21.56", "1"]]
+    assert edited_after_capture([session], rows, _columns, frame_values) == []
+    rows[2][3] = "26.56"
+    (edit,) = edited_after_capture([session], rows, _columns, frame_values)
+    assert edit == EditedReading(2, "ac_x_arcsec", "21.56", "26.56")
+    assert edit.text() == "reading of row 3 edited after capture: 21.56 → 26.56"
+    rows[0][4] = ""  # emptied
+    edits = edited_after_capture([session], rows, _columns, frame_values)
+    assert [e.text() for e in edits] == [
+        "reading of row 1 edited after capture: -3.25 → —",
+        "reading of row 3 edited after capture: 21.56 → 26.56"]
+
+
+def test_a_reading_taken_again_is_as_captured_and_the_cache_keeps_the_frames_reading():
+    session = _session([(5.0, 1.0), (7.0, 2.0)], [[0, 0, 0], [0, 2, 2]])  # row 0 retaken
+    rows = [["1", "0", "0", "7", "2"]]
+    cache: dict = {}
+    assert edited_after_capture([session], rows, _columns, frame_values, cache) == []
+    assert len(cache) == 2
+    calls = []
+    assert edited_after_capture([session], rows, _columns,
+                                lambda *a: calls.append(a), cache) == [] and calls == []
+
+
+def test_angles_are_compared_as_angles():
+    """A theodolite's Hz settled at 0°: frames at 359.99999° and 0.00001° average to 0°
+    (not 180°); a cell typed in D°M'S" with the same angle is not an edit."""
+    def values_of(_instrument, line):
+        return tuple(float(v) for v in line.split())
+
+    frames = [(0.0, b"359.99999 90", True), (0.1, b"0.00001 90", True),
+              (0.2, b"12.5 90", True)]
+    session = session_json("theodolite", "tcp://x:1", 9600, "t", frames, [[0, 0, 1], [1, 2, 2]])
+    assert captured_values(session, 0, 1, values_of, angles=True)[0] == pytest.approx(0.0,
+                                                                                      abs=1e-9)
+    keys = [c.key for c in KINDS["theodolite"].columns]
+    rows = [["-20", "0", "90"], ["-19", "12°30'00\"", "90"]]
+    columns = lambda instrument: reading_columns(instrument, keys, vertical_zenith=True)  # noqa: E731
+    assert edited_after_capture([session], rows, columns, values_of) == []
+    rows[1][1] = "12°30'01\""
+    (edit,) = edited_after_capture([session], rows, columns, values_of)
+    assert (edit.row, edit.column, edit.captured) == (1, "azimuth_deg", "12.5")
+
+
+def test_the_certificate_says_which_rows_were_edited(samples_dir):
+    import io
+
+    from pypdf import PdfReader
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    x = float(rows[2][3])
+    session = _session([(x, float(rows[2][4]))], [[2, 0, 0]])
+    settings = kind.settings_with_defaults(None)
+    assert readings_edited_after_capture(kind, settings, rows, [session]) == []
+    edited = [list(r) for r in rows]
+    edited[2][3] = f"{x + 5:g}"
+    edits = readings_edited_after_capture(kind, settings, edited, [session])
+    assert [e.text() for e in edits] == [
+        f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}"]
+    result = kind.analyze(ReadingsSheet(kind.columns, edited).parse(), settings)
+    document = dataclasses.replace(
+        kind.certificate_document(result, CertificateMetadata(), "run.csv", settings),
+        raw_data_sha256="ab" * 32, edited_readings=tuple(e.text() for e in edits))
+    text = "".join(p.extract_text() for p in PdfReader(io.BytesIO(
+        certificate_pdf_bytes(document))).pages)
+    flat = " ".join(text.split())
+    assert "SHA-256 " + "ab" * 32 in flat.replace("\n", "")
+    assert "Edited after capture" in flat
+    assert f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}" in flat
