@@ -122,6 +122,18 @@ PARAMETERS = (
               decimals=2, step=0.1, cli_name="ac-roll-u", zero="not measured",
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
+    Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not identified",
+              "float", 300.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              help="When the vertical readings cannot identify the tilt (none given, all equal, "
+                   "or only 3 faces: no degrees of freedom) the pyramidal error is not removed: "
+                   "its exact effect for a tilt up to this, in the worst direction, enters the "
+                   "uncertainty (rectangular); not used when the tilt is fitted"),
+    Parameter("reading_noise_arcsec", "σ of a reading, when not evaluated", "float", 0.0, "\"",
+              0.0, 100.0, decimals=3, step=0.01, zero="not stated",
+              help="Standard deviation of one reading (autocollimator and encoder together), "
+                   "from the lab's own records, used only when the readings cannot evaluate it "
+                   "(one set per direction and no tilt fit with degrees of freedom); 0: not "
+                   "stated, and then no uncertainty is given"),
     REPEATS_PARAMETER,
 )
 
@@ -377,7 +389,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     if tilt is None:
-        verdict = message(QT_TR_NOOP("Tilt not identified (no vertical readings)."))
+        verdict = message(QT_TR_NOOP("Tilt not identified: {why}"),
+                          why=results[0].tilt_not_identified)
     elif tilt.psi_arcsec <= allowed:
         verdict = message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade "
@@ -414,6 +427,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
+        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
+        reading_noise_arcsec=float(s["reading_noise_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
