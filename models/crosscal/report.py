@@ -76,8 +76,39 @@ def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
             math.sqrt(3.0), 1.0, math.inf,
             message(QT_TR_NOOP("resolution {r} per reading, through the same design"),
                     r=f"{r:g}\"")))
+    components += _comparator_components(result, metadata)
     components += _systematic_components(result, np.asarray(u, dtype=float))
-    return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability,
+                             floor=result.cmc)
+
+
+def _comparator_components(result, metadata: CertificateMetadata) -> list[BudgetComponent]:
+    """Each comparator's stated uncertainty (the autocollimator's calibration), an input of
+    every reading: the closure is the reference, but every reading is made with the
+    comparator, and its indication error at a reading is known only within its certificate's
+    U. Taken as independent from reading to reading and propagated exactly through the design,
+    like the reading scatter: a constant part cancels in each mounting's offset (so this is on
+    the safe side), a part that follows the reading's value is what its certificate bounds.
+    A comparator listed without a stated uncertainty is no input: the certificate then says
+    the results are not traceable through it."""
+    from models.uncertainty.budget import divisor_for_basis
+
+    s = result.solution
+    through = np.sqrt(np.sum(np.asarray(s.gain, dtype=float)[_item_block(result)] ** 2, axis=1))
+    out = []
+    for std in metadata.standards:
+        stated = std.uncertainty_in("arcsec")
+        if stated is None or not stated > 0:
+            continue
+        divisor, distribution = divisor_for_basis(std.basis)
+        out.append(BudgetComponent(
+            message(QT_TR_NOOP("Comparator calibration: {standard}"),
+                    standard=std.description or message(QT_TR_NOOP("comparator"))),
+            "B", distribution, stated * through, divisor, 1.0, math.inf,
+            message(QT_TR_NOOP("its stated uncertainty {u} per reading (certificate {certificate}), "
+                               "through the least-squares design as the reading scatter is"),
+                    u=f"{stated:g}\"", certificate=std.certificate_no or "—")))
+    return out
 
 
 def _item_block(result) -> slice:

@@ -107,6 +107,12 @@ PARAMETERS = (
               zero="not stated", decimals=4, step=0.01,
               help="The ADC's integral nonlinearity limit ±a per channel (rectangular). "
                    "0: not stated"),
+    Parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "float", 0.0, "", 0.0, 3600.0, decimals=4,
+              step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for the interpolation error: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
 )
 
 #: the settings that are inputs of the certificate's budget (FringeResult.inputs)
@@ -428,6 +434,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings,
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
+        cmc=float(s["cmc"]),
     )
 
 
@@ -594,6 +601,8 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "fringe_sample.csv"
+    measurand_standards = (QT_TR_NOOP("a phase or angle reference"),
+                           QT_TR_NOOP("the ADC (its figures stated in the settings)"))
     method_reference = ("Gao X. et al., Automatic compensation of sine deviation for grating "
                         "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
     presenter = "widgets.fringe.presenter:FringePresenter"

@@ -134,6 +134,12 @@ PARAMETERS = (
                    "from the lab's own records, used only when the readings cannot evaluate it "
                    "(one set per direction and no tilt fit with degrees of freedom); 0: not "
                    "stated, and then no uncertainty is given"),
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0, "\"", 0.0, 3600.0, decimals=4,
+              step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for the encoder error: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
     REPEATS_PARAMETER,
 )
 
@@ -428,7 +434,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
         tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
-        reading_noise_arcsec=float(s["reading_noise_arcsec"]),
+        reading_noise_arcsec=float(s["reading_noise_arcsec"]), cmc=float(s["cmc_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
@@ -486,6 +492,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "closure_drift_spread": result.spread_drift,
         "pyramidal_tilt_arcsec": first.tilt.psi_arcsec if first.tilt else None,
         "pyramidal_direction_deg": first.tilt.omega_deg if first.tilt else None,
+        # why the tilt was not identified (None when it was): ψ is then no finding
+        "tilt_not_identified": first.tilt_not_identified or None,
         "pyramidal_error_arcsec": np.concatenate(
             [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
         "corrected_error_arcsec": np.concatenate(
@@ -599,6 +607,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "polygon_sample.csv"
+    measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
+                           QT_TR_NOOP("the autocollimator"))
     method_reference = ("Tian L. et al., Analysis the influence of pyramidal error on the "
                         "encoder accuracy test by using coordinate transformation, Acta Optica "
                         "Sinica 35(5):0512003 (2015)")

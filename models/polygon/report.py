@@ -339,7 +339,8 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
+                             floor=result.cmc)
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)

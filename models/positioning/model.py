@@ -160,6 +160,7 @@ class PositioningResult:
     repeat_s_mean: np.ndarray | None = None
     # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
+    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
 
     @property
     def positions(self) -> np.ndarray:

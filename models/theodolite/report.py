@@ -121,7 +121,8 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
                                   "ζ(θ)")))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
+                             floor=result.cmc)
 
 
 def repeated_readings_components(result: TheodoliteResult) -> list[BudgetComponent]:
