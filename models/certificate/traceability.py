@@ -29,7 +29,10 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     with_u = [s for s in standards if s.certificate_no and s.uncertainty is not None]
     by_settings = [s for s in standards if s.certificate_no and s.uncertainty is None
                    and stated_inputs]
-    carried = len(with_u) + min(len(by_settings), 1)
+    # the inputs stated in the settings, by the standard they come from ("Phase reference",
+    # "ADC offset", "ADC gain ratio" …: two standards), one listed standard each at most
+    families = {str(name).split()[0] for name in stated_inputs if str(name).strip()}
+    carried = len(with_u) + min(len(by_settings), len(families))
     if carried < len(roles):
         gaps.append(message(QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
