@@ -75,15 +75,17 @@ PARAMETERS = (
                        ("encoder", "the encoder (error at its steps)")),
               help="Which instrument the certificate is issued for: the polygon's face "
                    "deviations or the encoder's error at its steps"),
-    Parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "float", 0.0, "\"", 0.0, 3600.0, decimals=4,
-              step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for a polygon's face deviations: "
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "a polygon's face deviations: "
                    "the smallest U of its scope. Every U stated is at least this; results whose "
                    "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
                    "stated, nothing said"),
-    Parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "float", 0.0, "\"", 0.0, 3600.0, decimals=4,
-              step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for an encoder's error at its steps: "
+    Parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "an encoder's error at its steps: "
                    "the smallest U of its scope. Every U stated is at least this; results whose "
                    "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
                    "stated, nothing said"),

@@ -107,9 +107,10 @@ PARAMETERS = (
               zero="not stated", decimals=4, step=0.01,
               help="The ADC's integral nonlinearity limit ±a per channel (rectangular). "
                    "0: not stated"),
-    Parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "float", 0.0, "", 0.0, 3600.0, decimals=4,
-              step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for the interpolation error: "
+    Parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "float", 0.0,
+              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the interpolation error: "
                    "the smallest U of its scope. Every U stated is at least this; results whose "
                    "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
                    "stated, nothing said"),

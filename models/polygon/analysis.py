@@ -134,9 +134,10 @@ PARAMETERS = (
                    "from the lab's own records, used only when the readings cannot evaluate it "
                    "(one set per direction and no tilt fit with degrees of freedom); 0: not "
                    "stated, and then no uncertainty is given"),
-    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0, "\"", 0.0, 3600.0, decimals=4,
-              step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for the encoder error: "
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the encoder error: "
                    "the smallest U of its scope. Every U stated is at least this; results whose "
                    "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
                    "stated, nothing said"),

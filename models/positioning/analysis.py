@@ -131,9 +131,10 @@ PARAMETERS = (
     Parameter("axis_setup", "axis set-up", "text", "",
               help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
                    "feed, dwell at each target, other axes' positions"),
-    Parameter("cmc", "laboratory's CMC (smallest U), in the deviations' unit", "float", 0.0, "", 0.0, 3600.0, decimals=4,
-              step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for the positioning deviation: "
+    Parameter("cmc", "laboratory's CMC (smallest U), in the deviations' unit", "float", 0.0,
+              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the positioning deviation: "
                    "the smallest U of its scope. Every U stated is at least this; results whose "
                    "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
                    "stated, nothing said"),

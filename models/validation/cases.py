@@ -500,8 +500,9 @@ def crosscal_cases(trials: int) -> list[ValidationCase]:
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     from models.registry import KINDS  # a workbench's own cases, kept in its folder
+    from models.validation.degenerate import degenerate_design_cases  # (imports this module)
 
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
             + positioning_cases(trials) + crosscal_cases(trials)
             + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
-            + uncertainty_cases())
+            + uncertainty_cases() + degenerate_design_cases(trials))
