@@ -27,12 +27,14 @@ from abc import ABC, abstractmethod
 from collections.abc import Mapping
 from typing import Any, ClassVar
 
+from models.certificate.traceability import test_report_statement, traceability_gaps
 from models.messages import QT_TR_NOOP, joined, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
 from models.plots import PlotFigure
 from models.readings.entry_plan import EntryPlan
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
+from models.uncertainty.lab_scope import scope_statement
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
            "AcceptsRuns", "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates",
@@ -188,6 +190,16 @@ class Workbench(ABC):
         basis = self.traceability_basis
         if basis and not document.traceability_basis:
             document = dataclasses.replace(document, traceability_basis=basis)
+        gaps = traceability_gaps(document.metadata, self.measurand_standards,
+                                 document.stated_inputs)
+        if gaps:
+            document = dataclasses.replace(document, traceability_gaps=tuple(gaps))
+        why = test_report_statement(document)
+        if why:
+            document = dataclasses.replace(document, statements=(why, *document.statements))
+        scope = scope_statement(document.budget, document.unit)
+        if scope:
+            document = dataclasses.replace(document, statements=(*document.statements, scope))
         return document
 
 
@@ -200,6 +212,10 @@ class IssuesCertificates(ABC):
     traceability_basis: ClassVar[str | None] = None
     #: its settings always give a tolerance (the polygon's grade): a decision is always made
     tolerance_in_settings: ClassVar[bool] = False
+    #: the standards that carry the measurand (QT_TR_NOOP texts): a calibration certificate
+    #: states traceability only when each is listed with a certificate and a stated U;
+    #: otherwise the document is a test report and says why
+    measurand_standards: ClassVar[tuple[str, ...]] = ()
 
     @abstractmethod
     def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:

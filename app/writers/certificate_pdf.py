@@ -626,6 +626,9 @@ def _standards_table(document: CertificateDocument) -> Table:
         u = "—" if s.uncertainty is None else message(
             "{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
             basis=message(BASIS_DIVISORS[s.basis][0]))
+        if s.uncertainty is None and s.certificate_no and document.stated_inputs:
+            u = message(QT_TR_NOOP("as stated in the settings: {inputs}"),
+                        inputs=joined(_between(", ", document.stated_inputs)))
         name = s.description or "—"
         if document.traceability_basis:  # no reference standard: a comparator
             name = message(QT_TR_NOOP("{standard} (comparator)"), standard=name)
@@ -821,6 +824,13 @@ def _traceability(document: CertificateDocument) -> str:
                                     "results — {what}; no statement of conformity rests on "
                                     "them."),
                          what=joined(_between("; ", document.untraceable)))]
+        if listed:
+            parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
+                                              "stated uncertainty: {names}."), names=names)]
+    elif document.traceability_gaps:
+        parts = [message(QT_TR_NOOP("Metrological traceability: not established for these "
+                                    "results — {what}."),
+                         what=joined(_between("; ", document.traceability_gaps)))]
         if listed:
             parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
                                               "stated uncertainty: {names}."), names=names)]

@@ -84,6 +84,18 @@ class CertificateDocument:
     # what the results are traceable through when no reference standard enters them
     # (IssuesCertificates.traceability_basis); "": through the standards listed
     traceability_basis: str = ""
+    # why traceability is not established although standards are listed (a standard that
+    # carries the measurand not listed with a certificate and a stated U, say): the document
+    # is then a test report, not a calibration certificate (traceability_gaps)
+    traceability_gaps: tuple[str, ...] = ()
+
+    @property
+    def is_test_report(self) -> bool:
+        """A test report: asked for, or a calibration certificate that cannot state
+        traceability (its standards listed, but not every one that carries the measurand
+        with a certificate and a stated U; or an input with no stated uncertainty)."""
+        return (self.metadata.document_type == "test" or bool(self.traceability_gaps)
+                or bool(self.untraceable and self.metadata.standards))
 
     @property
     def expanded_uncertainty(self) -> float:
@@ -92,7 +104,7 @@ class CertificateDocument:
 
     @property
     def title(self) -> str:
-        return DOCUMENT_TYPES[self.metadata.document_type]
+        return DOCUMENT_TYPES["test" if self.is_test_report else self.metadata.document_type]
 
     @property
     def is_draft(self) -> bool:

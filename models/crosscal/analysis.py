@@ -83,6 +83,20 @@ PARAMETERS = (
               help="Mountings of the entry plan: with the number of faces set, entry fills "
                    "mounting and face as readings arrive (mounting j from face j + 1) and shows "
                    "the next one. 0: no plan"),
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "a polygon's face deviations: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
+    Parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "an encoder's error at its steps: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
 )
 
 #: a residual beyond this many σ is marked as an outlier
@@ -101,6 +115,13 @@ class CrossCalResult:
     ac_scale_pct: float = 0.0  # setting: the autocollimator's scale error bound (budget)
     tilt_bound_arcsec: float = 0.0  # setting: the tilt bound without vertical readings (budget)
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
+    cmc_polygon_arcsec: float = 0.0  # setting: the lab's CMC for face deviations (U floor)
+    cmc_encoder_arcsec: float = 0.0  # setting: the lab's CMC for the encoder's error (U floor)
+
+    @property
+    def cmc(self) -> float:
+        """The laboratory's CMC for the certificate's item (0: none stated)."""
+        return self.cmc_encoder_arcsec if self.certificate_of == "encoder" else self.cmc_polygon_arcsec
 
     @property
     def faces(self) -> int:
@@ -263,7 +284,9 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     result = CrossCalResult(readings, solution, readings.closure_arcsec(), removed,
                             str(settings.get("certificate_of", "polygon")), warnings, mode,
                             float(settings.get("ac_scale_pct", 0.2) or 0.0),
-                            float(settings.get("tilt_bound_arcsec", 60.0) or 0.0))
+                            float(settings.get("tilt_bound_arcsec", 60.0) or 0.0),
+                            float(settings.get("cmc_arcsec", 0.0) or 0.0),
+                            float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0))
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "

@@ -82,8 +82,39 @@ def crosscal_budget(result, metadata: CertificateMetadata) -> UncertaintyBudget:
             math.sqrt(3.0), 1.0, math.inf,
             message(QT_TR_NOOP("resolution {r} per reading, through the same design"),
                     r=f"{r:g}\"")))
+    components += _comparator_components(result, metadata)
     components += _systematic_components(result, np.asarray(u, dtype=float))
-    return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), result.faces, metadata.coverage_probability,
+                             floor=result.cmc)
+
+
+def _comparator_components(result, metadata: CertificateMetadata) -> list[BudgetComponent]:
+    """Each comparator's stated uncertainty (the autocollimator's calibration), an input of
+    every reading: the closure is the reference, but every reading is made with the
+    comparator, and its indication error at a reading is known only within its certificate's
+    U. Taken as independent from reading to reading and propagated exactly through the design,
+    like the reading scatter: a constant part cancels in each mounting's offset (so this is on
+    the safe side), a part that follows the reading's value is what its certificate bounds.
+    A comparator listed without a stated uncertainty is no input: the certificate then says
+    the results are not traceable through it."""
+    from models.uncertainty.budget import divisor_for_basis
+
+    s = result.solution
+    through = np.sqrt(np.sum(np.asarray(s.gain, dtype=float)[_item_block(result)] ** 2, axis=1))
+    out = []
+    for std in metadata.standards:
+        stated = std.uncertainty_in("arcsec")
+        if stated is None or not stated > 0:
+            continue
+        divisor, distribution = divisor_for_basis(std.basis)
+        out.append(BudgetComponent(
+            message(QT_TR_NOOP("Comparator calibration: {standard}"),
+                    standard=std.description or message(QT_TR_NOOP("comparator"))),
+            "B", distribution, stated * through, divisor, 1.0, math.inf,
+            message(QT_TR_NOOP("its stated uncertainty {u} per reading (certificate {certificate}), "
+                               "through the least-squares design as the reading scatter is"),
+                    u=f"{stated:g}\"", certificate=std.certificate_no or "—")))
+    return out
 
 
 def _item_block(result) -> slice:
@@ -170,7 +201,7 @@ def _budget_point(point: str, k: int, big_u: np.ndarray, item: str) -> str:
     return message(point, k=k)
 
 
-def _correlation_statement(result, item: str) -> str:
+def _correlation_statement(result, item: str, metadata: CertificateMetadata | None = None) -> str:
     """The correlations within the certificate's set, as the covariance gives them: about the
     mean and from the first point, and the largest U of a difference of two."""
     n, s = result.faces, result.solution
@@ -183,7 +214,7 @@ def _correlation_statement(result, item: str) -> str:
 
     first = block - block[:, :1] - block[:1, :] + block[0, 0]  # cov of x_i − x_1
     pair = np.diag(block)[:, None] + np.diag(block)[None, :] - 2.0 * block
-    u2_pair = float(np.max(pair[off])) + _pair_systematic_u2(result, item)
+    u2_pair = float(np.max(pair[off])) + _pair_systematic_u2(result, item, metadata)
     return message(QT_TR_NOOP("Within these results the values are correlated: about the mean "
                               "r = {r_mean} on average between two of them (−1/(n − 1) = "
                               "{r_full} for a full rosette); stated from {first} r = {r_first}. "
@@ -196,7 +227,7 @@ def _correlation_statement(result, item: str) -> str:
                    u_pair=f"{s.coverage_factor * np.sqrt(u2_pair):.3f}\"")
 
 
-def _pair_systematic_u2(result, item: str) -> float:
+def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None = None) -> float:
     """A bound on the squared standard uncertainty that the bench's stated bounds (scale,
     unmeasured tilt; rectangular) add to the difference of two values of the set: the scale
     effect's largest difference within the set, and twice the largest tilt effect."""
@@ -208,7 +239,18 @@ def _pair_systematic_u2(result, item: str) -> float:
     scale = result.ac_scale_pct / 100.0 * float(np.ptp(signed))
     tilt = 2.0 * float(np.max(tilt_effect_arcsec(s, r.mounting, r.position,
                                                  result.tilt_bound_arcsec)[block]))
-    return (scale**2 + tilt**2) / 3.0
+    comparators = 0.0  # each comparator's u per reading, independent: Σ_k (G_ik − G_jk)² u²
+    if metadata is not None:
+        g = np.asarray(s.gain, dtype=float)[block]
+        gram = g @ g.T
+        spread = float(np.max(np.diag(gram)[:, None] + np.diag(gram)[None, :] - 2.0 * gram))
+        for std in metadata.standards:
+            stated = std.uncertainty_in("arcsec")
+            if stated is not None and stated > 0:
+                from models.uncertainty.budget import divisor_for_basis
+
+                comparators += (stated / divisor_for_basis(std.basis)[0]) ** 2 * spread
+    return (scale**2 + tilt**2) / 3.0 + comparators
 
 
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
@@ -339,7 +381,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                            "uncertainty."),
                 low=f"{np.min(result.readings.ac_x_arcsec):+.1f}\"",
                 high=f"{np.max(result.readings.ac_x_arcsec):+.1f}\""),
-        _correlation_statement(result, item),
+        _correlation_statement(result, item, metadata),
         message(QT_TR_NOOP("The {other} was calibrated in the same run; the largest correlation "
                            "between its results and these is {r}."),
                 other=message(QT_TR_NOOP("polygon") if item == "encoder"

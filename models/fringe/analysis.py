@@ -107,6 +107,13 @@ PARAMETERS = (
               zero="not stated", decimals=4, step=0.01,
               help="The ADC's integral nonlinearity limit ±a per channel (rectangular). "
                    "0: not stated"),
+    Parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "float", 0.0,
+              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the interpolation error: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
 )
 
 #: the settings that are inputs of the certificate's budget (FringeResult.inputs)
@@ -229,6 +236,74 @@ def _phase_source(parsed: ParsedReadings, per_period: int, warnings: list[str]
     return "estimated", None
 
 
+#: singular values below this share of the largest: the columns are one (aliased)
+ALIAS_TOLERANCE = 1e-9
+#: more distinct phases than this cannot all sit on a few aliasing points: not checked
+ALIAS_CHECK_PHASES = 20_000
+
+
+def _folded_phases(theta_rad: np.ndarray) -> np.ndarray:
+    """The distinct sample phases within one period (rad)."""
+    return np.unique(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
+
+
+def _rank_deficient(columns: np.ndarray) -> bool:
+    values = np.linalg.svd(columns, compute_uv=False)
+    return bool(values[-1] <= ALIAS_TOLERANCE * values[0])
+
+
+def check_record_covers_a_period(theta_rad: np.ndarray, step_rad: float) -> None:
+    """Refuse a record whose phases span less than one period: the fit would extrapolate the
+    error over the part of the period never sampled (and the correction table with it)."""
+    span = float(np.ptp(theta_rad)) + step_rad
+    if span < TWO_PI * (1.0 - 1e-9):
+        raise ValueError(message(QT_TR_NOOP(
+            "the record covers {share} % of one period ({span}° of phase): the harmonics and "
+            "the interpolation error over the whole period cannot be determined from less than "
+            "one whole period; record at least one period"),
+            share=f"{100.0 * span / TWO_PI:.1f}", span=f"{math.degrees(span):.1f}"))
+
+
+def check_orders_not_aliased(theta_rad: np.ndarray, orders: tuple[int, ...],
+                             per_period: int = 0) -> None:
+    """Refuse harmonic orders that the sample phases cannot tell apart, naming the pair: at N
+    samples a period, order k and order N − k (or k + N) take the same values at every sample
+    (order N/2 has a sine that is zero at every sample, order N one that is the offset)."""
+    phases = _folded_phases(theta_rad)
+    if phases.size > ALIAS_CHECK_PHASES:
+        return
+
+    def columns(k: int) -> np.ndarray:
+        if k == 0:
+            return np.ones((phases.size, 1))
+        return np.column_stack([np.sin(k * phases), np.cos(k * phases)])
+
+    modulo = (message(QT_TR_NOOP(" at N = {n} samples per period"), n=per_period)
+              if per_period else "")
+    for k in orders:
+        if _rank_deficient(columns(k)):
+            raise ValueError(message(QT_TR_NOOP(
+                "harmonic order {k} is not determined{modulo}: its sine and cosine are not "
+                "independent at the sampled phases (order N/2 or a multiple of N); lower the "
+                "highest harmonic or sample more finely"), k=k, modulo=modulo))
+    every = (0, *orders)
+    for i, a in enumerate(every):
+        for b in every[i + 1:]:
+            if _rank_deficient(np.column_stack([columns(a), columns(b)])):
+                raise ValueError(message(QT_TR_NOOP(
+                    "harmonic orders {a} and {b} alias{modulo}: they take the same values at "
+                    "every sampled phase, so the fit cannot tell them apart; lower the highest "
+                    "harmonic below half the samples per period, or sample more finely"),
+                    a=a if a else message(QT_TR_NOOP("0 (the offset)")), b=b, modulo=modulo))
+    design = np.column_stack([columns(k) for k in every])
+    if phases.size < design.shape[1] or _rank_deficient(design):
+        raise ValueError(message(QT_TR_NOOP(
+            "{count} distinct phases cannot determine the {params} parameters of each channel "
+            "(offset and harmonics {orders}); lower the highest harmonic or sample more finely"),
+            count=phases.size, params=design.shape[1],
+            orders=", ".join(str(k) for k in orders)))
+
+
 def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     """How often the motion turned back: a turn counts once the phase has gone
     ``hysteresis_rad`` the other way, so noise while standing still does not, nor a single
@@ -286,6 +361,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                 value=f"{100 * bins / 36:.0f}"))
         theta = unwrapped(phase)
         warnings.append(OBSERVABILITY)
+    if source == "samples_per_period":
+        check_record_covers_a_period(theta, TWO_PI / per_period)
+    elif theta.size > 1:
+        check_record_covers_a_period(theta, float(np.median(np.abs(np.diff(theta)))))
     pso_seconds, design = None, None
     if s["method"] == "pso":
         if orders != (1, 3, 5):
@@ -318,7 +397,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "leave the samples per period and the θ column out to estimate the phase from "
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
-    if source != "estimated":
+    if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
+        check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
         if abs(lead - 90.0) > 30.0:
             raise ValueError(message(
@@ -355,6 +435,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings,
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
+        cmc=float(s["cmc"]),
     )
 
 
@@ -521,6 +602,8 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "fringe_sample.csv"
+    measurand_standards = (QT_TR_NOOP("a phase or angle reference"),
+                           QT_TR_NOOP("the ADC (its figures stated in the settings)"))
     method_reference = ("Gao X. et al., Automatic compensation of sine deviation for grating "
                         "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
     presenter = "widgets.fringe.presenter:FringePresenter"

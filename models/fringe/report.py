@@ -182,7 +182,8 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
             QT_TR_NOOP("Fitted model (correction table)"), "A", "normal", model, 1.0, 1.0, dof,
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit,
+                             floor=result.cmc)
 
 
 #: the points a period is judged on when the decided quantity is the half range of the

@@ -125,6 +125,25 @@ PARAMETERS = (
               decimals=2, step=0.1, cli_name="ac-roll-u", zero="not measured",
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
+    Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not identified",
+              "float", 300.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              help="When the vertical readings cannot identify the tilt (none given, all equal, "
+                   "or only 3 faces: no degrees of freedom) the pyramidal error is not removed: "
+                   "its exact effect for a tilt up to this, in the worst direction, enters the "
+                   "uncertainty (rectangular); not used when the tilt is fitted"),
+    Parameter("reading_noise_arcsec", "σ of a reading, when not evaluated", "float", 0.0, "\"",
+              0.0, 100.0, decimals=3, step=0.01, zero="not stated",
+              help="Standard deviation of one reading (autocollimator and encoder together), "
+                   "from the lab's own records, used only when the readings cannot evaluate it "
+                   "(one set per direction and no tilt fit with degrees of freedom); 0: not "
+                   "stated, and then no uncertainty is given"),
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the encoder error: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
     REPEATS_PARAMETER,
     Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
               cli=False,
@@ -446,7 +465,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     valid = all(r.closure_ok is not False for r in results)
     tilt = results[0].tilt
     if tilt is None:
-        verdict = message(QT_TR_NOOP("Tilt not identified (no vertical readings)."))
+        verdict = message(QT_TR_NOOP("Tilt not identified: {why}"),
+                          why=results[0].tilt_not_identified)
     elif tilt.psi_arcsec <= allowed:
         verdict = message(
             QT_TR_NOOP("Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade "
@@ -483,6 +503,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
+        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
+        reading_noise_arcsec=float(s["reading_noise_arcsec"]), cmc=float(s["cmc_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
@@ -540,6 +562,8 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "closure_drift_spread": result.spread_drift,
         "pyramidal_tilt_arcsec": first.tilt.psi_arcsec if first.tilt else None,
         "pyramidal_direction_deg": first.tilt.omega_deg if first.tilt else None,
+        # why the tilt was not identified (None when it was): ψ is then no finding
+        "tilt_not_identified": first.tilt_not_identified or None,
         "pyramidal_error_arcsec": np.concatenate(
             [r.pyramidal_error_arcsec for r in result.sets]).tolist(),
         "corrected_error_arcsec": np.concatenate(
@@ -653,6 +677,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "polygon_sample.csv"
+    measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
+                           QT_TR_NOOP("the autocollimator"))
     method_reference = ("Tian L. et al., Analysis the influence of pyramidal error on the "
                         "encoder accuracy test by using coordinate transformation, Acta Optica "
                         "Sinica 35(5):0512003 (2015)")

@@ -83,6 +83,7 @@ __all__ = [
     "evaluate_sets",
     "pooled_repeatability",
     "tilt_advice",
+    "tilt_not_identified",
     "wrap_deg",
 ]
 
@@ -247,11 +248,46 @@ class PolygonSetResult:
     start_face: int = 1
     ac_y_arcsec: np.ndarray | None = None  # position order, for the budget
     warnings: list[str] = field(default_factory=list)
+    # why the tilt was not identified ("" when it was): no vertical readings, no variation
+    # in them, or no degrees of freedom left for the fit (3 faces)
+    tilt_not_identified: str = ""
 
     @property
     def closure_arcsec(self) -> float | None:
         """|closure drift|, the figure judged against the closure limit."""
         return None if self.closure_drift_arcsec is None else abs(self.closure_drift_arcsec)
+
+
+#: the tilt fit's unknowns: the vertical reading's zero, ψ and ω
+TILT_FIT_UNKNOWNS = 3
+
+
+def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
+    """Why one set's vertical readings cannot identify the tilt, naming it ("" when they can).
+
+    A tilt ψ moves the vertical reading by 2ψ peak-to-peak over a turn: readings that are all
+    equal carry no tilt to fit (and a fit through them shows no scatter, so they cannot say
+    how noisy the readings are either); the fit has three unknowns (zero, ψ, ω), so 3 faces
+    leave it no degrees of freedom — it passes through every reading, whatever their noise.
+    """
+    v = np.asarray(ac_y_arcsec, dtype=float)
+    if v.size == 0 or not np.all(np.isfinite(v)):
+        return message(QT_TR_NOOP("{set}: vertical readings missing: the pyramidal tilt is not "
+                                  "identified and its error not removed; the tilt bound "
+                                  "enters the uncertainty."), set=set_name(label))
+    if v.size <= TILT_FIT_UNKNOWNS:
+        return message(QT_TR_NOOP(
+            "{set}: {n} faces give {n} vertical readings for the tilt fit's 3 unknowns (zero, ψ, "
+            "ω): no degrees of freedom are left, so the fit would pass through every reading "
+            "whatever its noise. The pyramidal tilt is not identified and its error not "
+            "removed; the tilt bound enters the uncertainty."), set=set_name(label), n=v.size)
+    if np.ptp(v) == 0:
+        return message(QT_TR_NOOP(
+            "{set}: every vertical reading is {value}\": no variation, while a tilt ψ moves it by "
+            "2ψ over a turn. The pyramidal tilt is not identified (ψ = 0 is not a finding) and its "
+            "error not removed; the tilt bound enters the uncertainty. Check that the vertical "
+            "readings were read, not copied."), set=set_name(label), value=f"{v[0]:g}")
+    return ""
 
 
 def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
@@ -311,17 +347,17 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         ac_y = np.asarray(s.ac_y_arcsec, dtype=float)[order]
         tilt = None
         pyramidal = np.zeros(n)
-        if ac_y.size >= 4 and np.all(np.isfinite(ac_y)):
+        unidentified = tilt_not_identified(ac_y, s.label)
+        if not unidentified:
             tilt = fit_tilt(theta, ac_y, ac_alignment, roll_rad)
             pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z,
                                                     ac_alignment, roll_rad)
         else:
-            warnings.append(message(QT_TR_NOOP("{set}: vertical readings missing: pyramidal "
-                                               "error not identified or removed."),
-                                    set=set_name(s.label)))
+            warnings.append(unidentified)
         results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,
                                         s.direction, int(s.positions[0]),
-                                        ac_y if tilt is not None else None, warnings))
+                                        ac_y if tilt is not None else None, warnings,
+                                        unidentified))
     return results
 
 
@@ -353,6 +389,9 @@ class PolygonResult:
     ac_roll_measured_arcmin: float | None = None  # measured roll ρ, corrected (None: not measured)
     u_ac_roll_arcmin: float = 0.0  # its standard uncertainty
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
+    tilt_bound_arcsec: float = 300.0  # setting: the tilt bound when not identified (budget)
+    reading_noise_arcsec: float = 0.0  # setting: σ of a reading when not evaluated (0: none)
+    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
     warnings: list[str] = field(default_factory=list)
     # with n readings per point (setting readings per point): RepeatedReadings, and each
     # set's s/√n per position (sets, faces) of its encoder and autocollimator readings

@@ -51,10 +51,12 @@ from models.certificate.document import (
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, joined, message
 from models.polygon import KEY, TITLE
 from models.polygon.model import (
     GRADE_ACCURACY_ARCSEC,
+    TILT_FIT_UNKNOWNS,
     PolygonResult,
     allowed_tilt_arcsec,
     pooled_repeatability,
@@ -198,16 +200,30 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
         evaluation = "A"
     else:
         fits = [s.tilt for s in result.sets if s.tilt is not None]
-        if not fits:
-            return [], 0.0
-        dof = sum(max(n - 3, 1) for _ in fits)
-        noise = float(np.sqrt(sum(np.sum(t.residuals_arcsec**2) for t in fits) / dof))
-        name = (QT_TR_NOOP("Autocollimator reading noise (mean of {sets} sets)")
-                if len(result.sets) > 1 else
-                QT_TR_NOOP("Autocollimator reading noise (mean of 1 set)"))
-        note = message(QT_TR_NOOP("scatter of the vertical readings about the tilt fits, {dof} "
-                                  "degrees of freedom (no direction was measured twice)"), dof=dof)
-        evaluation = "A"
+        dof = sum(n - TILT_FIT_UNKNOWNS for _ in fits)  # a fitted tilt has n ≥ 4
+        scatter = sum(float(np.sum(t.residuals_arcsec**2)) for t in fits)
+        if dof > 0 and scatter > 0:
+            noise = float(np.sqrt(scatter / dof))
+            name = (QT_TR_NOOP("Autocollimator reading noise (mean of {sets} sets)")
+                    if len(result.sets) > 1 else
+                    QT_TR_NOOP("Autocollimator reading noise (mean of 1 set)"))
+            note = message(QT_TR_NOOP("scatter of the vertical readings about the tilt fits, "
+                                      "{dof} degrees of freedom (no direction was measured "
+                                      "twice)"), dof=dof)
+            evaluation = "A"
+        elif result.reading_noise_arcsec > 0:
+            noise, dof, evaluation = result.reading_noise_arcsec, math.inf, "B"
+            name = (QT_TR_NOOP("Reading noise, stated (mean of {sets} sets)")
+                    if len(result.sets) > 1 else QT_TR_NOOP("Reading noise, stated (mean of 1 set)"))
+            note = message(QT_TR_NOOP("σ = {s} of a reading (stated in the settings: the readings "
+                                      "cannot evaluate it)"), s=f"{noise:g}\"")
+        else:
+            raise UncertaintyWithheld(message(QT_TR_NOOP(
+                "no uncertainty can be given: the reading noise has no degrees of freedom to be "
+                "evaluated from (no direction was measured twice, and no tilt fit has readings "
+                "left over its 3 unknowns: {why}). Measure a direction twice, or give vertical "
+                "readings that vary on 4 faces or more, or state the σ of a reading in the "
+                "settings"), why=_why_no_fit(result)))
     mean_sensitivity = ones if len(result.sets) > 1 else not_zero
     return [
         BudgetComponent(message(name, sets=len(result.sets)),
@@ -220,6 +236,42 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
                                                        "reduced"), common=True,
                         dof_group="repeatability"),
     ], noise
+
+
+def _why_no_fit(result: PolygonResult) -> str:
+    """Why no set's tilt fit gives a reading noise (its own words, or "")."""
+    reasons = [s.tilt_not_identified for s in result.sets if s.tilt_not_identified]
+    if reasons:
+        return reasons[0]
+    return message(QT_TR_NOOP("the vertical readings lie exactly on the fitted tilt curve"))
+
+
+def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int
+                                 ) -> list[BudgetComponent]:
+    """A tilt up to the stated bound, not identified and not removed: its exact effect on the
+    errors against the zero face, in the worst direction (the set-up's frame, the roll's
+    cross-talk over the vertical span 2ψ added), rectangular. One unknown tilt for the
+    whole run: common to every set, not reduced by repeating them."""
+    bound = result.tilt_bound_arcsec
+    if bound <= 0 or all(s.tilt is not None for s in result.sets):
+        return []
+    theta = result.sets[0].theta_deg
+    roll = 2.0 * result.u_ac_roll_arcmin if result.roll_corrected else result.ac_roll_arcmin
+    rho = math.radians(roll / 60.0)
+    worst = np.zeros(n)
+    for omega in np.arange(72) * 5.0:
+        own = pyramidal_correction_arcsec(theta, bound, omega, theta[zero], result.ac_alignment,
+                                          _roll_rad(result))
+        span = bound * np.abs(np.cos(np.radians(theta - omega))
+                              - np.cos(np.radians(theta[zero] - omega)))
+        worst = np.maximum(worst, np.abs(own) + rho * span)
+    return [BudgetComponent(
+        QT_TR_NOOP("Pyramidal tilt, not identified (bound)"), "B", "rectangular", worst,
+        math.sqrt(3.0), 1.0, math.inf,
+        message(QT_TR_NOOP("a tilt up to {psi} (stated) in its worst direction, not removed: "
+                           "its exact effect in the set-up's frame plus the autocollimator's "
+                           "roll {roll} over the vertical span 2ψ"),
+                psi=f"{bound:g}\"", roll=f"{roll:g}′"))]
 
 
 def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[BudgetComponent]:
@@ -312,10 +364,12 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
             PYRAMIDAL_INPUT, "A", "normal", u_pyr, 1.0, 1.0,
             max(n - 3, 1), QT_TR_NOOP("covariance of ψ, ω from the tilt fits propagated through "
                                       "the set-up's exact correction")))
+    components += _unidentified_tilt_component(result, n, zero)
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
+                             floor=result.cmc)
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
@@ -488,8 +542,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                           QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
                                      "reading noise from the tilt fits stands for it")
                           if any(s.tilt is not None for s in result.sets) else
-                          QT_TR_NOOP("no direction was measured twice and there are no vertical "
-                                     "readings: nothing in U covers it")))
+                          QT_TR_NOOP("no direction was measured twice and the tilt was not "
+                                     "fitted: in U the stated σ of a reading stands for it")))
     if result.reversal_arcsec is not None:
         stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
@@ -511,13 +565,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     plots = [error_figure(result), corrected_with_uncertainty(result, big_u)]
     if residuals is not None:
         plots.append(residuals)
-    tilt = result.sets[0].tilt
     warnings = list(result.warnings)
-    if m == 1 and tilt is None:
-        warnings.append(message(QT_TR_NOOP("Repeatability was not evaluated: one set and no "
-                                           "vertical readings, so nothing in U covers the "
-                                           "scatter of the readings; U understates the "
-                                           "uncertainty by it.")))
     worst = budget.worst_index
     return CertificateDocument(
         kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,

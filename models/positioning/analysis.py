@@ -137,6 +137,13 @@ PARAMETERS = (
     Parameter("axis_setup", "axis set-up", "text", "",
               help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
                    "feed, dwell at each target, other axes' positions"),
+    Parameter("cmc", "laboratory's CMC (smallest U), in the deviations' unit", "float", 0.0,
+              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the positioning deviation: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
     REPEATS_PARAMETER,
     # the test plan: entry follows the run (models/readings/entry_plan.py)
     Parameter("plan_runs", "test plan: runs", "int", 0, minimum=1, maximum=100, zero="no plan",
@@ -350,6 +357,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["deviation"],
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
+    result.cmc = float(s["cmc"])
     for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),
@@ -473,6 +481,7 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "positioning_sample.csv"
+    measurand_standards = (QT_TR_NOOP("the reference measuring system"),)
     method_reference = ("ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
                         "accuracy and repeatability of positioning of numerically controlled "
                         "axes; VDI/DGQ 3441:1977; GB/T 17421.2-2016")

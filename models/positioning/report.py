@@ -111,7 +111,7 @@ def positioning_budget(result: PositioningResult,
     components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
-                             result.deviation_unit)
+                             result.deviation_unit, floor=result.cmc)
 
 
 def repeated_readings_components(result: PositioningResult) -> list[BudgetComponent]:

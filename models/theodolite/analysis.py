@@ -72,6 +72,13 @@ PARAMETERS = (
                    "states it (basis u, the same figure); residuals above 3× it raise a warning; "
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
+    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0,
+              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
+              help="The laboratory's calibration and measurement capability (CMC) for "
+                   "the axis error: "
+                   "the smallest U of its scope. Every U stated is at least this; results whose "
+                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
+                   "stated, nothing said"),
     REPEATS_PARAMETER,
     Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
               zero="no plan", cli=False,
@@ -125,6 +132,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
     result.repeats = repeats
+    result.cmc = float(s["cmc_arcsec"])
     return result
 
 
@@ -240,6 +248,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     columns = COLUMNS
     parameters = PARAMETERS
     sample_file = "theodolite_sample.csv"
+    measurand_standards = (QT_TR_NOOP("the autocollimating theodolite"),)
     method_reference = ("Tian L. et al., Test method of angle error of limited rotation axis "
                         "system, Acta Photonica Sinica 46(11):1112005 (2017)")
     presenter = "widgets.theodolite.presenter:TheodolitePresenter"

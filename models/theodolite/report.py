@@ -126,7 +126,8 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
                                   "ζ(θ)")))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
-    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability)
+    return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
+                             floor=result.cmc)
 
 
 MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")

@@ -133,6 +133,9 @@ class UncertaintyBudget:
     points: int
     probability: float = DEFAULT_COVERAGE_PROBABILITY  # stated coverage probability
     unit: Unit | str = "arcsec"
+    # the laboratory's smallest U for this quantity (its CMC, in ``unit``; 0: none stated): a
+    # floor on every point's U, except where the error is zero by definition (u_c = 0)
+    floor: float = 0.0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "unit", _unit(self.unit))
@@ -194,9 +197,24 @@ class UncertaintyBudget:
         return ks[inverse].reshape(-1) if self.points else np.zeros(0)
 
     @functools.cached_property
-    def expanded(self) -> np.ndarray:
-        """Expanded uncertainty U = k · u_c per point, k from each point's ν_eff."""
+    def computed_expanded(self) -> np.ndarray:
+        """U = k · u_c per point as the budget gives it, before the laboratory's CMC."""
         return self.coverage_factors * self.combined
+
+    @functools.cached_property
+    def expanded(self) -> np.ndarray:
+        """Expanded uncertainty U = k · u_c per point, k from each point's ν_eff; never below
+        the laboratory's CMC (``floor``) where the error is not zero by definition."""
+        computed = self.computed_expanded
+        if not self.floor > 0:
+            return computed
+        return np.where(self.combined > 0, np.maximum(computed, self.floor), computed)
+
+    @property
+    def below_floor(self) -> np.ndarray:
+        """The points whose computed U is below the laboratory's CMC (outside its scope:
+        their U is stated as the CMC)."""
+        return (self.combined > 0) & (self.computed_expanded < self.floor)
 
     @property
     def worst_index(self) -> int:

@@ -546,8 +546,9 @@ def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     from models.registry import KINDS  # a workbench's own cases, kept in its folder
     from models.validation.half_range import half_range_cases
+    from models.validation.degenerate import degenerate_design_cases  # (imports this module)
 
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
             + positioning_cases(trials) + crosscal_cases(trials)
             + [case for kind in KINDS.values() for case in kind.validation_cases(trials)]
-            + uncertainty_cases() + half_range_cases(trials))
+            + uncertainty_cases() + half_range_cases(trials) + degenerate_design_cases(trials))

@@ -2497,6 +2497,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>草稿</translation>
     </message>
     <message>
+        <source>as stated in the settings: {inputs}</source>
+        <translation>见分析设置中的给定值：{inputs}</translation>
+    </message>
+    <message>
         <source>not stated</source>
         <translation>未注明</translation>
     </message>
@@ -2567,6 +2571,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>standard</source>
         <translation>计量标准</translation>
+    </message>
+    <message>
+        <source>Metrological traceability: not established for these results — {what}.</source>
+        <translation>计量溯源性：本结果的计量溯源性未建立——{what}。</translation>
     </message>
     <message>
         <source>Metrological traceability: the results are traceable to the SI unit of plane angle through the reference standards listed, calibrated as stated in their certificates: {names}.</source>
@@ -3375,6 +3383,31 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>所有 θ 均为 {theta_col}°：相位没有变化</translation>
     </message>
     <message>
+        <source>the record covers {share} % of one period ({span}° of phase): the harmonics and the interpolation error over the whole period cannot be determined from less than one whole period; record at least one period</source>
+        <extracomment>singular values below this share of the largest: the columns are one (aliased) more distinct phases than this cannot all sit on a few aliasing points: not checked</extracomment>
+        <translation>记录仅覆盖一个周期的 {share} %（相位 {span}°）：不足一个完整周期，无法确定各次谐波及整个周期上的细分误差；请至少记录一个周期</translation>
+    </message>
+    <message>
+        <source> at N = {n} samples per period</source>
+        <translation>（每周期采样数 N = {n}）</translation>
+    </message>
+    <message>
+        <source>harmonic order {k} is not determined{modulo}: its sine and cosine are not independent at the sampled phases (order N/2 or a multiple of N); lower the highest harmonic or sample more finely</source>
+        <translation>{k} 次谐波无法确定{modulo}：在所采样的相位上其正弦与余弦分量不独立（N/2 次或 N 的整数倍次）；请降低最高谐波次数或加密采样</translation>
+    </message>
+    <message>
+        <source>harmonic orders {a} and {b} alias{modulo}: they take the same values at every sampled phase, so the fit cannot tell them apart; lower the highest harmonic below half the samples per period, or sample more finely</source>
+        <translation>{a} 次与 {b} 次谐波混叠{modulo}：二者在每个采样相位上取值相同，拟合无法区分；请将最高谐波次数降至每周期采样数的一半以下，或加密采样</translation>
+    </message>
+    <message>
+        <source>0 (the offset)</source>
+        <translation>0（直流偏置）</translation>
+    </message>
+    <message>
+        <source>{count} distinct phases cannot determine the {params} parameters of each channel (offset and harmonics {orders}); lower the highest harmonic or sample more finely</source>
+        <translation>{count} 个不同相位无法确定每路信号的 {params} 个参数（直流偏置及 {orders} 次谐波）；请降低最高谐波次数或加密采样</translation>
+    </message>
+    <message>
         <source>{size} samples; at least {value} are needed</source>
         <translation>{size} 个采样点；至少需要 {value} 个</translation>
     </message>
@@ -3465,6 +3498,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Correction table, {n} entries (CSV)</source>
         <translation>修正表，{n} 项（CSV）</translation>
+    </message>
+    <message>
+        <source>a phase or angle reference</source>
+        <translation>相位或角度参考标准</translation>
+    </message>
+    <message>
+        <source>the ADC (its figures stated in the settings)</source>
+        <translation>ADC（其指标在分析设置中给出）</translation>
     </message>
     <message>
         <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
@@ -3564,10 +3605,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值为 {seed}</translation>
     </message>
     <message>
-        <source>Tilt not identified (no vertical readings).</source>
-        <translation>未辨识倾斜（没有垂直读数）。</translation>
-    </message>
-    <message>
         <source>vertical along the polygon&apos;s axis, worst case over the tilt direction</source>
         <translation>竖直方向沿棱体轴线，倾斜方向的最不利情况</translation>
     </message>
@@ -3636,6 +3673,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>，未评定重复性（没有任何方向测量两次）</translation>
     </message>
     <message>
+        <source>the polygon (its face deviations)</source>
+        <translation>多面棱体（其面偏差）</translation>
+    </message>
+    <message>
+        <source>the autocollimator</source>
+        <translation>自准直仪</translation>
+    </message>
+    <message>
         <source>RUN INVALID: closure failed. </source>
         <translation>测量无效：闭合不合格。</translation>
     </message>
@@ -3670,16 +3715,25 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>垂直读数在第 {high} 面最高、第 {low} 面最低（差值 2ψ = {spread}）：在安装座上倾斜棱体，使第 {high} 面降低、第 {low} 面升高，各约 {psi}</translation>
     </message>
     <message>
+        <source>{set}: vertical readings missing: the pyramidal tilt is not identified and its error not removed; the tilt bound enters the uncertainty.</source>
+        <extracomment>the tilt fit&apos;s unknowns: the vertical reading&apos;s zero, ψ and ω</extracomment>
+        <translation>{set}：缺少竖直读数：塔差倾斜未辨识，其误差未扣除；倾斜上限计入不确定度。</translation>
+    </message>
+    <message>
+        <source>{set}: {n} faces give {n} vertical readings for the tilt fit&apos;s 3 unknowns (zero, ψ, ω): no degrees of freedom are left, so the fit would pass through every reading whatever its noise. The pyramidal tilt is not identified and its error not removed; the tilt bound enters the uncertainty.</source>
+        <translation>{set}：{n} 个面只给出 {n} 个竖直读数，而倾斜拟合有 3 个未知量（零位、ψ、ω）：没有剩余自由度，无论噪声多大拟合都会通过每个读数。塔差倾斜未辨识，其误差未扣除；倾斜上限计入不确定度。</translation>
+    </message>
+    <message>
+        <source>{set}: every vertical reading is {value}&quot;: no variation, while a tilt ψ moves it by 2ψ over a turn. The pyramidal tilt is not identified (ψ = 0 is not a finding) and its error not removed; the tilt bound enters the uncertainty. Check that the vertical readings were read, not copied.</source>
+        <translation>{set}：所有竖直读数均为 {value}&quot;，没有变化，而倾斜 ψ 会使其在一周内变化 2ψ。塔差倾斜未辨识（ψ = 0 不是测量结果），其误差未扣除；倾斜上限计入不确定度。请核实竖直读数确为实测而非抄录。</translation>
+    </message>
+    <message>
         <source>{set}: closure drift {drift} exceeds the limit ±{limit}: the set is invalid; repeat it.</source>
         <translation>{set}：闭合漂移 {drift} 超过限值 ±{limit}：该组无效，请重测。</translation>
     </message>
     <message>
         <source>{set}: no closure reading (the row back on its start face): drift not checked.</source>
         <translation>{set}：没有闭合读数（回到起始面的那一行）：未检查漂移。</translation>
-    </message>
-    <message>
-        <source>{set}: vertical readings missing: pyramidal error not identified or removed.</source>
-        <translation>{set}：缺少垂直读数：未辨识也未扣除棱锥误差。</translation>
     </message>
     <message>
         <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
@@ -3779,6 +3833,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>采用的标准：{standard}。补偿值 = −平均偏差（设置下方的“导出补偿表…”）。</translation>
     </message>
     <message>
+        <source>the reference measuring system</source>
+        <translation>参考测量系统</translation>
+    </message>
+    <message>
         <source> — fewer than 5 runs: flagged</source>
         <translation> — 少于 5 次测量：已标注</translation>
     </message>
@@ -3821,6 +3879,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})</source>
         <translation>修正后误差       {low} … {high}（峰峰值 {ptp}，均方根 {rms}）</translation>
+    </message>
+    <message>
+        <source>the autocollimating theodolite</source>
+        <translation>自准直经纬仪</translation>
     </message>
     <message>
         <source>Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up contributed {share} to the raw peak-to-peak</source>
@@ -5121,6 +5183,34 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>判断装置属于哪种安置：使某一面（或轴上的反射镜）俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
     </message>
     <message>
+        <source>Reading noise, stated (mean of {sets} sets)</source>
+        <translation>读数噪声，给定值（{sets} 个测回的平均）</translation>
+    </message>
+    <message>
+        <source>Reading noise, stated (mean of 1 set)</source>
+        <translation>读数噪声，给定值（1 个测回）</translation>
+    </message>
+    <message>
+        <source>σ = {s} of a reading (stated in the settings: the readings cannot evaluate it)</source>
+        <translation>单次读数 σ = {s}（在分析设置中给出：读数本身无法评定）</translation>
+    </message>
+    <message>
+        <source>no uncertainty can be given: the reading noise has no degrees of freedom to be evaluated from (no direction was measured twice, and no tilt fit has readings left over its 3 unknowns: {why}). Measure a direction twice, or give vertical readings that vary on 4 faces or more, or state the σ of a reading in the settings</source>
+        <translation>无法给出不确定度：读数噪声没有可用于评定的自由度（没有方向被测量两次，且倾斜拟合在 3 个未知量之外没有剩余读数：{why}）。请将某一方向测量两次，或在 4 个及以上的面上给出有变化的竖直读数，或在分析设置中给出单次读数的 σ</translation>
+    </message>
+    <message>
+        <source>the vertical readings lie exactly on the fitted tilt curve</source>
+        <translation>竖直读数恰好全部落在拟合的倾斜曲线上</translation>
+    </message>
+    <message>
+        <source>Pyramidal tilt, not identified (bound)</source>
+        <translation>塔差倾斜，未辨识（上限）</translation>
+    </message>
+    <message>
+        <source>a tilt up to {psi} (stated) in its worst direction, not removed: its exact effect in the set-up&apos;s frame plus the autocollimator&apos;s roll {roll} over the vertical span 2ψ</source>
+        <translation>最不利方向上不超过 {psi}（给定值）的倾斜，未扣除：按安置方式坐标系计算的精确影响，加上自准直仪滚转 {roll} 乘以竖直跨度 2ψ</translation>
+    </message>
+    <message>
         <source>the shaft</source>
         <translation>转轴</translation>
     </message>
@@ -5172,6 +5262,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>not measured, up to ±{roll}</source>
         <translation>未实测，最大 ±{roll}</translation>
+    </message>
+    <message>
+        <source>no direction was measured twice and the tilt was not fitted: in U the stated σ of a reading stands for it</source>
+        <translation>没有方向被测量两次且倾斜未拟合：U 中以给定的单次读数 σ 代替</translation>
     </message>
     <message>
         <source>Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)</source>
@@ -5228,6 +5322,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
         <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向）并显示下一面；每个测回最后回到第 1 面（闭合）。0：无计划</translation>
+        <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (one set per direction and no tilt fit with degrees of freedom); 0: not stated, and then no uncertainty is given</source>
+        <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（每个方向只有一个测回且倾斜拟合没有自由度）；0：未给出，此时不给出不确定度</translation>
     </message>
     <message>
         <source>Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)</source>
@@ -5244,10 +5340,36 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
         <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for a polygon&apos;s face deviations: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for an encoder&apos;s error at its steps: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对编码器各步误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the axis error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对轴系误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the encoder error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对编码器误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the interpolation error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对细分误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the positioning deviation: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对位置偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>When the vertical readings cannot identify the tilt (none given, all equal, or only 3 faces: no degrees of freedom) the pyramidal error is not removed: its exact effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
+        <translation>当竖直读数无法辨识倾斜时（未给出、全部相等，或只有 3 个面：没有自由度），塔差误差不予扣除：不超过此值、处于最不利方向的倾斜的精确影响计入不确定度（矩形分布）；倾斜已拟合时不使用</translation>
     </message>
     <message>
         <source>Without vertical readings the polygon&apos;s tilt on the shaft is neither identified nor removed: its exact effect for a tilt up to this, the worst direction, enters the uncertainty (rectangular); not used when vertical readings are given (the tilt is then fitted and removed)</source>
@@ -5310,6 +5432,30 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>7 级：±30&quot;</translation>
     </message>
     <message>
+        <source>laboratory&apos;s CMC (smallest U)</source>
+        <translation>实验室 CMC（最小 U）</translation>
+    </message>
+    <message>
+        <source>laboratory&apos;s CMC (smallest U), encoder</source>
+        <translation>实验室 CMC（最小 U），编码器</translation>
+    </message>
+    <message>
+        <source>laboratory&apos;s CMC (smallest U), in the deviations&apos; unit</source>
+        <translation>实验室 CMC（最小 U），以偏差单位计</translation>
+    </message>
+    <message>
+        <source>laboratory&apos;s CMC (smallest U), in the errors&apos; unit</source>
+        <translation>实验室 CMC（最小 U），以误差单位计</translation>
+    </message>
+    <message>
+        <source>laboratory&apos;s CMC (smallest U), polygon</source>
+        <translation>实验室 CMC（最小 U），多面棱体</translation>
+    </message>
+    <message>
+        <source>largest tilt of the polygon on the shaft, when not identified</source>
+        <translation>多面棱体在轴上的最大倾斜（未辨识时）</translation>
+    </message>
+    <message>
         <source>largest tilt of the polygon on the shaft, when not measured</source>
         <translation>多面棱体在轴上的最大倾斜（未测量时）</translation>
     </message>
@@ -5348,10 +5494,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>test plan: targets</source>
         <translation>测试计划：目标位置</translation>
+        <source>none stated</source>
+        <translation>未给出</translation>
     </message>
     <message>
         <source>u(AC roll measured)</source>
         <translation>u(自准直仪滚转实测值)</translation>
+    </message>
+    <message>
+        <source>σ of a reading, when not evaluated</source>
+        <translation>单次读数 σ（无法评定时）</translation>
     </message>
     <message>
         <source>autocollimator set-up</source>
@@ -5360,6 +5512,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>a measured autocollimator roll ({roll}) needs its standard uncertainty: give it, or set the measured roll to 0 (not measured)</source>
         <translation>实测的自准直仪滚转（{roll}）需要给出其标准不确定度：请给出，或将实测滚转设为 0（未实测）</translation>
+    </message>
+    <message>
+        <source>Tilt not identified: {why}</source>
+        <translation>倾斜未辨识：{why}</translation>
     </message>
     <message>
         <source>Pyramidal tilt ψ = {psi} is within the {allowed} allowed for grade {grade} ({how}): the fixture is fine.</source>
@@ -5743,16 +5899,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>误差不具有溯源性：{what}</translation>
     </message>
     <message>
-        <source>Repeatability was not evaluated: one set and no vertical readings, so nothing in U covers the scatter of the readings; U understates the uncertainty by it.</source>
-        <translation>未评定重复性：仅一个测回且无竖直读数，因此 U 中没有分量覆盖读数的分散性；U 因此低估了不确定度。</translation>
-    </message>
-    <message>
         <source>no direction was measured twice; in U the autocollimator&apos;s reading noise from the tilt fits stands for it</source>
         <translation>没有方向被测量两次；U 中以塔差拟合得到的自准直仪读数噪声代替</translation>
-    </message>
-    <message>
-        <source>no direction was measured twice and there are no vertical readings: nothing in U covers it</source>
-        <translation>没有方向被测量两次，且无竖直读数：U 中没有分量覆盖它</translation>
     </message>
     <message>
         <source>Standard uncertainty at a target from the reference&apos;s alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated</source>
@@ -6847,6 +6995,18 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>在各安装位置内按最小二乘线性拟合并扣除</translation>
     </message>
     <message>
+        <source>Comparator calibration: {standard}</source>
+        <translation>比较器校准：{standard}</translation>
+    </message>
+    <message>
+        <source>comparator</source>
+        <translation>比较器</translation>
+    </message>
+    <message>
+        <source>its stated uncertainty {u} per reading (certificate {certificate}), through the least-squares design as the reading scatter is</source>
+        <translation>每个读数的给定不确定度 {u}（证书 {certificate}），与读数分散性一样经最小二乘设计传播</translation>
+    </message>
+    <message>
         <source>Autocollimator scale error</source>
         <translation>自准直仪刻度误差</translation>
     </message>
@@ -7524,6 +7684,84 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{flag} and {twin} name the same file ({out}); nothing was written</source>
         <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
+        <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
+        <translation>承载被测量的计量标准为 {roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
+    </message>
+    <message>
+        <source>{standard} has no stated uncertainty</source>
+        <translation>{standard} 未给出不确定度</translation>
+    </message>
+    <message>
+        <source>{standard} has no calibration certificate stated</source>
+        <translation>{standard} 未给出校准证书</translation>
+    </message>
+    <message>
+        <source>This document is a test report, not a calibration certificate: metrological traceability of its results is not established ({why}).</source>
+        <translation>本文件为检测报告，而非校准证书：其结果的计量溯源性未建立（{why}）。</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}; every U stated here is at or above it.</source>
+        <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}；本文件给出的每个 U 均不小于此值。</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}. At {count} of the {points} points the U these readings give (down to {lowest}) is below it: those results are outside the laboratory&apos;s scope, and their U is stated as the CMC.</source>
+        <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}。在 {points} 个点中有 {count} 个点，由本次读数得到的 U（最小 {lowest}）低于此值：这些结果超出实验室的能力范围，其 U 按 CMC 给出。</translation>
+    </message>
+    <message>
+        <source>refused: “{words}”</source>
+        <translation>拒绝：“{words}”</translation>
+    </message>
+    <message>
+        <source>accepted</source>
+        <translation>被接受</translation>
+    </message>
+    <message>
+        <source>12 faces, every vertical reading equal (true tilt 300″): tilt not identified, U withheld without a stated σ</source>
+        <translation>12 面，所有竖直读数相等（真实倾斜 300″）：倾斜未辨识，未给出 σ 时不给出 U</translation>
+    </message>
+    <message>
+        <source>3 faces (true tilt 300″): the tilt fit has no degrees of freedom, U withheld without a stated σ</source>
+        <translation>3 面（真实倾斜 300″）：倾斜拟合没有自由度，未给出 σ 时不给出 U</translation>
+    </message>
+    <message>
+        <source>ψ not reported; the reason says “{words}”; U withheld</source>
+        <translation>不报告 ψ；原因说明含“{words}”；不给出 U</translation>
+    </message>
+    <message>
+        <source>ψ {psi}; U {u}</source>
+        <translation>ψ {psi}；U {u}</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>不报告</translation>
+    </message>
+    <message>
+        <source>withheld</source>
+        <translation>不予给出</translation>
+    </message>
+    <message>
+        <source>given</source>
+        <translation>已给出</translation>
+    </message>
+    <message>
+        <source>{faces} faces, tilt not identified, σ stated: U with the tilt bound 300″ covers the truth ({runs} runs, random direction)</source>
+        <translation>{faces} 面，倾斜未辨识，给出 σ：含倾斜上限 300″ 的 U 覆盖真值（{runs} 次运行，随机方向）</translation>
+    </message>
+    <message>
+        <source>≥ 95 % of the points (the bound&apos;s worst direction, rectangular: on the safe side)</source>
+        <translation>≥ 95 % 的点（上限取最不利方向、矩形分布：偏于安全）</translation>
+    </message>
+    <message>
+        <source>40 of the 64 samples of one period</source>
+        <translation>一个周期 64 个采样中的 40 个</translation>
+    </message>
+    <message>
+        <source>N = 8 samples per period, orders 1, 3, 5 (the 5th aliases onto the 3rd)</source>
+        <translation>每周期 N = 8 个采样，谐波 1、3、5 次（5 次混叠到 3 次）</translation>
+    </message>
+    <message>
+        <source>3 points: ψ, α, β leave no degrees of freedom for the reading noise</source>
+        <translation>3 个点：ψ、α、β 使读数噪声没有剩余自由度</translation>
     </message>
 </context>
 </TS>

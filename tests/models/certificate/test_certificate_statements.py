@@ -14,7 +14,7 @@ import pytest
 from pypdf import PdfReader
 
 from app.writers.certificate_pdf import certificate_pdf_bytes
-from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.metadata import CertificateMetadata, MetadataError, ReferenceStandard
 from models.polygon.analysis import POLYGON
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
@@ -98,6 +98,14 @@ def test_fringe_as_left_only_with_the_loaded_tables_checksum():
 #: statement, beside META (none for a workbench not listed)
 STATEMENT_SETTINGS = {"fringe": {"samples_per_period": 64, **FRINGE_INPUTS}}
 STATEMENT_TOLERANCE = {"polygon": None}  # the grade's accuracy is the polygon's tolerance
+#: issue 39: every standard that carries the measurand listed with its certificate and U,
+#: beside META's autocollimator (the polygon's; the fringe's phase reference and ADC)
+STATEMENT_STANDARDS = {
+    "polygon": ({"description": "Polygon", "certificate_no": "NIM-2026-0871",
+                 "uncertainty": 0.2, "applies_to": "from face 1"},),
+    "fringe": ({"description": "Reference angle encoder", "certificate_no": "NIM-2026-0999",
+                "uncertainty": 0.05},
+               {"description": "Data acquisition", "certificate_no": "CAL-2026-33"})}
 #: workbenches whose errors are taken from one of their own readings (zero there)
 ZEROED_AT_ONE_OF_ITS_READINGS = ("theodolite", "polygon")
 
@@ -106,7 +114,9 @@ ZEROED_AT_ONE_OF_ITS_READINGS = ("theodolite", "polygon")
 @pytest.mark.parametrize("key", sorted(k for k in KINDS if isinstance(KINDS[k], IssuesCertificates)))
 def test_17025_statements_on_every_certificate(key):
     kind, result = _sample(key, STATEMENT_SETTINGS.get(key, {}))
-    meta = replace(META, tolerance=STATEMENT_TOLERANCE.get(key, 2.0))
+    meta = replace(META, tolerance=STATEMENT_TOLERANCE.get(key, 2.0), standards=(
+        *META.standards, *(ReferenceStandard.from_dict(s, i)
+                           for i, s in enumerate(STATEMENT_STANDARDS.get(key, ())))))
     document = kind.certificate_document(result, meta)
     flat = _flat(document)
     assert flat.count("Calibration certificate") >= 1 and "Test certificate" not in flat

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from models.certificate.document import budget_table, decision_rows
-from models.certificate.metadata import CertificateMetadata
+from models.certificate.metadata import CertificateMetadata, ReferenceStandard
 from models.readings.sheet import ReadingsSheet
 from models.theodolite.model import analyze_run
 from models.theodolite.report import theodolite_budget, theodolite_certificate
@@ -32,6 +32,9 @@ META = CertificateMetadata.from_dict({
     "operator": "Wang",
     "standards": [{"description": "Theodolite", "certificate_no": "NIM-1",
                    "uncertainty": 0.5, "basis": "u"}]})
+#: the fringe's phase reference: its certificate listed, its u stated in the settings
+PHASE_REFERENCE = ReferenceStandard("Reference angle encoder (phase of each sample)", "RE-2",
+                                    "NIM-2026-0999")
 
 
 # 10. ν_eff truncated to the lower integer before t is taken (GUM G.6.4) -------------------
@@ -235,9 +238,10 @@ def test_fringe_stated_inputs_enter_the_budget_by_hand():
     phase by u_o/R (rad), a gain ratio u_g by |S C|/R² u_g, the LSB q by q/√12/R, a
     linearity limit a by a/√3/R; R from the measured signals about their mean."""
     kind, result = _sample("fringe", {"samples_per_period": 64, **FRINGE_INPUTS})
+    # issue 39: traceable only with the phase reference listed too (its u in the settings)
     document = kind.certificate_document(result, replace(META, tolerance=0.5, standards=(
         replace(META.standards[0], description="Data acquisition (16-bit ADC)",
-                uncertainty=0.005, basis="U95"),)))
+                uncertainty=0.005, basis="U95"), PHASE_REFERENCE)))
     assert not document.untraceable and document.conformity.verdict != "not assessed"
     budget = document.budget
     names = [c.name for c in budget.components]
@@ -371,7 +375,21 @@ def test_fringe_adc_certificate_stands_behind_the_stated_inputs():
     document = kind.certificate_document(result, meta)
     assert document.stated_inputs == ("Phase reference", "ADC quantisation", "ADC offset",
                                       "ADC gain ratio", "ADC linearity")
+    # issue 39: the ADC alone, no phase reference standard listed — not traceable, a test
+    # report that says why (it was stated "traceable to the SI" here before)
     flat = _flat(document)
+    assert document.is_test_report and "Test report" in flat
+    assert "traceable to the SI unit of plane angle" not in flat
+    assert ("the standards that carry the measurand are a phase or angle reference; the ADC "
+            "(its figures stated in the settings), each to be listed with a calibration "
+            "certificate and a stated uncertainty; 1 listed so") in flat
+    assert "This document is a test report, not a calibration certificate" in flat
+    # the ADC's U is what the settings state, not "—"
+    assert "as stated in the settings: Phase reference, ADC quantisation" in flat
+    document = kind.certificate_document(result, replace(
+        meta, standards=(*meta.standards, PHASE_REFERENCE)))
+    flat = _flat(document)
+    assert not document.is_test_report and "Calibration certificate" in flat
     assert ("traceable to the SI unit of plane angle through the reference standards listed, "
             "calibrated as stated in their certificates: Data acquisition (16-bit ADC) "
             "(certificate CAL-2026-33; its figures enter as the inputs stated in the settings: "

@@ -1,0 +1,61 @@
+"""Whether a certificate may state metrological traceability, and when it is a test report.
+
+A calibration certificate states traceability to the SI only where every standard that
+carries the measurand is listed with its calibration certificate and a stated uncertainty
+(ISO/IEC 17025 6.5, 7.8.4.1; ILAC-P14). Otherwise the document is a test report and its
+title and statements say so, naming what is missing.
+"""
+
+from __future__ import annotations
+
+from models.certificate.metadata import CertificateMetadata
+from models.messages import QT_TR_NOOP, joined, message
+
+__all__ = ["test_report_statement", "traceability_gaps"]
+
+
+def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
+                      stated_inputs: tuple[str, ...] = ()) -> list[str]:
+    """Why the standards listed do not make the results traceable (empty: they do, or none is
+    listed yet — a draft, which says so). ``roles``: the standards that carry the measurand
+    (QT_TR_NOOP texts, e.g. the polygon and the autocollimator); each needs a standard listed
+    with a calibration certificate and a stated U — a U in the table, or, for one standard
+    listed with its certificate and no U, the inputs stated in the settings (the ADC's
+    figures). Every standard listed needs both, or the results are not traceable through it."""
+    standards = metadata.standards
+    if not standards:
+        return []
+    gaps = []
+    with_u = [s for s in standards if s.certificate_no and s.uncertainty is not None]
+    by_settings = [s for s in standards if s.certificate_no and s.uncertainty is None
+                   and stated_inputs]
+    # the inputs stated in the settings, by the standard they come from ("Phase reference",
+    # "ADC offset", "ADC gain ratio" …: two standards), one listed standard each at most
+    families = {str(name).split()[0] for name in stated_inputs if str(name).strip()}
+    carried = len(with_u) + min(len(by_settings), len(families))
+    if carried < len(roles):
+        gaps.append(message(QT_TR_NOOP(
+            "the standards that carry the measurand are {roles}, each to be listed with a "
+            "calibration certificate and a stated uncertainty; {count} listed so"),
+            roles=joined(part for i, r in enumerate(roles)
+                         for part in (("; " if i else ""), message(r))), count=carried))
+    for std in standards:
+        name = std.description or message(QT_TR_NOOP("standard"))
+        if std.uncertainty is None and not (stated_inputs and std.certificate_no):
+            gaps.append(message(QT_TR_NOOP("{standard} has no stated uncertainty"), standard=name))
+        elif not std.certificate_no:
+            gaps.append(message(QT_TR_NOOP("{standard} has no calibration certificate stated"),
+                                standard=name))
+    return gaps
+
+
+def test_report_statement(document) -> str:
+    """Why a document asked for as a calibration certificate is a test report ("" when it is
+    not, or was asked for as one)."""
+    if document.metadata.document_type == "test" or not document.is_test_report:
+        return ""
+    why = list(document.untraceable) + list(document.traceability_gaps)
+    return message(QT_TR_NOOP(
+        "This document is a test report, not a calibration certificate: metrological "
+        "traceability of its results is not established ({why})."),
+        why=joined(part for i, w in enumerate(why) for part in (("; " if i else ""), w)))

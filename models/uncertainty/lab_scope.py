@@ -1,0 +1,39 @@
+"""The laboratory's scope: its smallest U for a quantity (its CMC) as a floor on every U.
+
+A laboratory states on a certificate no U below its calibration and measurement capability
+(ILAC-P14:09/2020, 5.4): a budget that gives less (a cross-calibrated polygon's 0.018″, say)
+shows what these readings alone support, not what the laboratory can claim. Each workbench
+declares the CMC as a setting per quantity (0: none stated, and then nothing is said); the
+budget applies it (:attr:`UncertaintyBudget.floor`) and the certificate names it, with the
+points whose computed U was below it flagged as outside the scope.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from models.messages import QT_TR_NOOP, message
+from models.uncertainty.budget import UncertaintyBudget
+
+__all__ = ["scope_statement"]
+
+
+def scope_statement(budget: UncertaintyBudget, unit: str = "\"") -> str:
+    """The certificate's statement of the laboratory's CMC and the points outside its scope
+    ("" when no CMC is stated)."""
+    if not budget.floor > 0 or not budget.points:
+        return ""
+    below = budget.below_floor
+    cmc = f"{budget.floor:g}{unit}"
+    if not np.any(below):
+        return message(QT_TR_NOOP(
+            "The laboratory's calibration and measurement capability (CMC) for this quantity is "
+            "U = {cmc}; every U stated here is at or above it."), cmc=cmc)
+    lowest = float(np.min(budget.computed_expanded[below]))
+    return message(QT_TR_NOOP(
+        "The laboratory's calibration and measurement capability (CMC) for this quantity is "
+        "U = {cmc}. At {count} of the {points} points the U these readings give (down to "
+        "{lowest}) is below it: those results are outside the laboratory's scope, and their U "
+        "is stated as the CMC."),
+        cmc=cmc, count=int(np.count_nonzero(below)), points=budget.points,
+        lowest=f"{lowest:.2g}{unit}")

@@ -1,0 +1,63 @@
+"""Fringe records the data cannot determine (issue 39): shorter than one period, or harmonic
+orders that alias at the samples per period — refused, naming the share or the pair.
+
+The channels are sampled sin/cos of a known true phase (models/validation/fringe_rig.py,
+numpy only), with harmonics, noise and an ADC's quantisation.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from app.main import main
+from models.fringe.analysis import FRINGE
+from models.readings.sheet import ParsedReadings
+from models.validation.fringe_rig import FringeHead, equal_steps
+
+HEAD = FringeHead(offsets_v=(0.01, -0.02), amplitudes_v=(1.0, 0.97), quadrature_deg=0.4,
+                  sin_harmonics={3: (0.012, 0.3), 5: (0.004, 1.0)},
+                  cos_harmonics={3: (0.009, -0.2)}, noise_v=0.001, adc_bits=16)
+
+
+def _parsed(count: int, per_period: int, with_theta: bool = False) -> ParsedReadings:
+    theta = equal_steps(count, per_period)
+    u_sin, u_cos = HEAD.channels(theta, np.random.default_rng(count))
+    column = np.degrees(theta) if with_theta else np.full(count, np.nan)
+    return ParsedReadings({"u_sin": u_sin, "u_cos": u_cos, "theta_deg": column},
+                          np.arange(count))
+
+
+@pytest.mark.parametrize("with_theta", [False, True])
+def test_a_record_shorter_than_one_period_is_refused_with_its_share(with_theta):
+    settings = {"samples_per_period": 0 if with_theta else 64}
+    with pytest.raises(ValueError, match=r"covers 62\.5 % of one period"):
+        FRINGE.analyze(_parsed(40, 64, with_theta), settings)
+    whole = FRINGE.analyze(_parsed(64, 64, with_theta), settings)  # one period is enough
+    assert whole.sin_fit.amplitude[3] == pytest.approx(0.012, abs=0.002)
+
+
+def test_orders_that_alias_at_the_samples_per_period_are_refused_naming_the_pair():
+    # N = 8: sin 5θ = −sin 3θ and cos 5θ = cos 3θ at every sample
+    with pytest.raises(ValueError, match=r"orders 3 and 5 alias at N = 8"):
+        FRINGE.analyze(_parsed(80, 8), {"samples_per_period": 8})
+    with pytest.raises(ValueError, match=r"order 3 is not determined at N = 6"):
+        FRINGE.analyze(_parsed(60, 6), {"samples_per_period": 6, "max_order": 3})
+    # the same samples with orders below N/2 are determined: the fit finds the truth
+    result = FRINGE.analyze(_parsed(80, 8), {"samples_per_period": 8, "max_order": 3})
+    assert result.sin_fit.orders == (1, 3)
+
+
+def test_aliasing_is_found_in_a_theta_column_too():
+    with pytest.raises(ValueError, match=r"orders 3 and 5 alias"):
+        FRINGE.analyze(_parsed(80, 8, with_theta=True), {})
+
+
+def test_the_command_line_refuses_with_one_line(tmp_path, capsys):
+    parsed = _parsed(40, 64)
+    path = tmp_path / "short.csv"
+    path.write_text("u_sin,u_cos\n" + "".join(
+        f"{s:.6f},{c:.6f}\n" for s, c in zip(parsed["u_sin"], parsed["u_cos"], strict=True)))
+    assert main(["analyze", "fringe", str(path), "--samples-per-period", "64", "--json"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "covers 62.5 % of one period" in err[0]
