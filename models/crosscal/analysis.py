@@ -285,8 +285,8 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
                             str(settings.get("certificate_of", "polygon")), warnings, mode,
                             float(settings.get("ac_scale_pct", 0.2) or 0.0),
                             float(settings.get("tilt_bound_arcsec", 60.0) or 0.0),
-                            float(settings.get("cmc_arcsec", 0.0) or 0.0),
-                            float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0))
+                            cmc_polygon_arcsec=float(settings.get("cmc_arcsec", 0.0) or 0.0),
+                            cmc_encoder_arcsec=float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0))
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "

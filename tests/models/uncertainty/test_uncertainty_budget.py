@@ -112,7 +112,12 @@ def test_lab_defaults_fill_only_empty_fields():
 
 @given(st.text(max_size=400))
 def test_clean_text_never_keeps_control_characters(text):
-    out = clean_text(text, "x")
+    """A field is printed whole or refused naming it (#40: never cut or stripped silently)."""
+    try:
+        out = clean_text(text, "x")
+    except MetadataError as exc:
+        assert "'x'" in str(exc)
+        return
     assert len(out) <= 200
     assert not any(ord(ch) < 32 or 0x7F <= ord(ch) <= 0x9F for ch in out)
     assert "\u202e" not in out
