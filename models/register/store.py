@@ -572,11 +572,11 @@ class Register:
         counters = self._schema.COUNTERS
         if self._state(conn) != (plan.seq - 1, plan.head):
             return False
-        if plan.counter is not None and conn.execute(self._sa.select(
-                counters.c.last_value).where(counters.c.name == plan.counter)
-        ).scalar_one_or_none() != plan.counter_before:
-            return False
-        return True
+        if plan.counter is None:
+            return True
+        now = conn.execute(self._sa.select(counters.c.last_value).where(
+            counters.c.name == plan.counter)).scalar_one_or_none()
+        return now == plan.counter_before
 
     def issue(self, request: IssueRequest, render: Callable[..., bytes],
               *, supersedes: str = "", change_note: str = "", replacement: bool = False
