@@ -53,9 +53,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
-    def render(final: CertificateMetadata) -> bytes:
+    def render(final: CertificateMetadata, head: str = "") -> bytes:
         document = kind.certificate_document(result, final, source_name, settings)
-        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest))
+        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest,
+                                                         register_head=head))
 
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement)

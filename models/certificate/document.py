@@ -80,6 +80,13 @@ class CertificateDocument:
     # what the results are traceable through when no reference standard enters them
     # (IssuesCertificates.traceability_basis); "": through the standards listed
     traceability_basis: str = ""
+    # the register's chain head before this certificate (the previous record's chain
+    # value), printed short on every page's foot and in full on the last page: every copy
+    # anchors the register's history up to it (models/register/chain.py); "" unissued
+    register_head: str = ""
+    # a specimen (the bundled example details, or the window's training switch):
+    # watermarked SPECIMEN, numbered SPECIMEN-…, never recorded in a register
+    specimen: bool = False
 
     @property
     def expanded_uncertainty(self) -> float:

@@ -26,8 +26,8 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "ENTRY_CHAINED", "GENESIS", "append_baseline", "link",
-           "link_entry", "verify_v1_chain"]
+__all__ = ["CHAINED", "CHAINED_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "append_baseline",
+           "head_in_pdf", "link", "link_entry", "verify_v1_chain"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
 CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
@@ -58,6 +58,19 @@ def link(previous: str, record: Mapping[str, Any]) -> str:
 def link_entry(previous: str, entry: Mapping[str, Any]) -> str:
     """The chain after the entry ``entry`` (an interval, a withdrawal …)."""
     return _digest(previous, {"entry": {k: entry[k] for k in ENTRY_CHAINED}})
+
+
+#: how a certificate's PDF carries the head before it, in its document information
+#: (keywords), besides printing it
+HEAD_MARK = "anglebench-register-head-before:"
+
+
+def head_in_pdf(data: bytes) -> str:
+    """The chain head a certificate's PDF carries (its keywords), or ""."""
+    import re
+
+    found = re.search(HEAD_MARK.encode() + rb"([0-9a-f]{64})", data)
+    return found.group(1).decode() if found else ""
 
 
 def verify_v1_chain(conn) -> str:
