@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import datetime as dt
 import json
+import shutil
+import subprocess
 import zipfile
 
 import pytest
@@ -87,15 +89,24 @@ def test_continue_numbering_from_the_command_line(capsys):
 @pytest.mark.slow
 def test_the_bundled_example_details_never_touch_the_users_register(samples_dir, tmp_path,
                                                                      capsys):
-    """Used as the README shows, the examples issue into a register of their own."""
-    for _ in range(2):  # their fixed number, twice: no clash, since nothing is kept
+    """Used as the README shows, the examples give a SPECIMEN (#40: they used to give an
+    unmarked certificate with the sample's own number, "recorded" in a throw-away
+    register): numbered SPECIMEN-…, recorded nowhere, never claiming to be."""
+    for _ in range(2):  # twice: no clash, since nothing is kept
         assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
                      "--certificate", str(tmp_path / "example.pdf"), "--metadata",
                      str(samples_dir / "certificate_polygon.json")]) == 0
         err = capsys.readouterr().err
-        assert "register of its own" in err and "AB-2026-0042 issued" in err
+        assert "SPECIMEN SPECIMEN-" in err and "recorded in no register" in err
+        assert "AB-2026-0042" not in err and "recorded in the register" not in err
     assert (tmp_path / "example.pdf").read_bytes()[:5] == b"%PDF-"
     assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+    assert main(["register", "verify", str(tmp_path / "example.pdf")]) == 1
+    assert "NOT in the register" in capsys.readouterr().out
+    if shutil.which("pdftotext"):  # the watermark and the statement on the page
+        text = subprocess.run(["pdftotext", str(tmp_path / "example.pdf"), "-"],
+                              capture_output=True, text=True, check=True).stdout
+        assert "SPECIMEN —" in text and "not a certificate, not recorded in" in text
 
 
 @pytest.mark.slow
