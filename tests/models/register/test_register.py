@@ -411,7 +411,7 @@ def _issue_at(url: str, start: float, render_s: float, queue) -> None:
             reg.clock = on(ISSUED)
             time.sleep(max(0.0, start - time.time()))  # all at once
             queue.put(("ok", reg.issue(request(), slow_render)[0].number))
-    except Exception as exc:  # reported, not lost with the process
+    except RegisterError as exc:  # reported, not lost with the process
         queue.put(("refused", str(exc)))
 
 
