@@ -9,6 +9,8 @@
                                                hold the history up to that head?
     anglebench register head                   the chain's head now, for the lab's log
     anglebench register withdraw NUMBER --reason TEXT   withdraw (void) a certificate
+    anglebench register signatories [NAME …] [--distinct] [--clear]   the lab's authorised
+                                               signatories (without arguments: shown)
     anglebench register export OUT.zip         every record: index.csv, PDFs, projects
     anglebench register interval SERIAL DAYS  set an instrument's calibration interval
     anglebench register continue SCHEME NEXT   continue numbering after hand-issued numbers
@@ -100,7 +102,16 @@ def _parser(words) -> argparse.ArgumentParser:
         "set an instrument's calibration interval")))
     interval.add_argument("serial", help=words(QT_TR_NOOP("the instrument's serial number")))
     interval.add_argument("days", type=int, help=words(QT_TR_NOOP("0 clears it")))
-    for command in (listing, show, verify, export, counter, interval, head, withdraw):
+    signatories = sub.add_parser("signatories", help=words(QT_TR_NOOP(
+        "the lab's authorised signatories: an approver must be one of them")))
+    signatories.add_argument("names", nargs="*", help=words(QT_TR_NOOP(
+        "the names (without any: show the list)")))
+    signatories.add_argument("--distinct", action="store_true", help=words(QT_TR_NOOP(
+        "the approver must differ from the operator")))
+    signatories.add_argument("--clear", action="store_true", help=words(QT_TR_NOOP(
+        "no list: any named approver is accepted")))
+    for command in (listing, show, verify, export, counter, interval, head, withdraw,
+                    signatories):
         add_language_option(command, words, subcommand=True)
     return p
 
@@ -270,6 +281,17 @@ def run_register(argv: list[str]) -> int:
                 return _verify(register, args.pdf, words, args.head, args.head_from)
             if args.command == "head":
                 sys.stdout.write(register.chain_head() + "\n")
+                return 0
+            if args.command == "signatories":
+                if args.names or args.clear or args.distinct:
+                    register.set_signatories([] if args.clear else args.names, args.distinct)
+                names, distinct = register.signatories()
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "authorised signatories: {names}; approver and operator {rule}"),
+                    names=", ".join(names) or message(QT_TR_NOOP("none listed (any named "
+                                                                 "approver)")),
+                    rule=message(QT_TR_NOOP("must differ") if distinct
+                                 else QT_TR_NOOP("may be the same"))), words) + "\n")
                 return 0
             if args.command == "withdraw":
                 register.withdraw(args.number, args.reason)

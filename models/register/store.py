@@ -608,13 +608,16 @@ class Register:
                 "the register's records were changed after issue ({problem}): nothing is "
                 "recorded into a broken chain; see 'anglebench register verify'"),
                 problem=self.problems[0]))
-        now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
-        issue_date = now.astimezone(self.timezone).date()  # the lab's local date
-        _check_issuable(meta, issue_date)
+        self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
         user = _os_user()
         with self._issuing_turn() as turn:
             for _attempt in range(ISSUE_ATTEMPTS):
+                # the time of issue is taken for each attempt: a record committed by another
+                # issuer meanwhile is then always before it
+                now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
+                issue_date = now.astimezone(self.timezone).date()  # the lab's local date
+                _check_issuable(meta, issue_date)
                 with self._read() as conn:
                     plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
                 original = plan.original
@@ -720,6 +723,43 @@ class Register:
             conn.execute(certificates.update().where(certificates.c.number == number).values(
                 status="withdrawn", withdrawn_reason=reason))
         return chain
+
+    # -- approval ---------------------------------------------------------------------------
+    def signatories(self) -> tuple[list[str], bool]:
+        """The lab's authorised signatories (empty: none configured, any named approver is
+        accepted) and whether the approver must differ from the operator: the last
+        ``signatories`` entry of the chain."""
+        entries = self._schema.ENTRIES
+        with self._read() as conn:
+            body = conn.execute(self._sa.select(entries.c.body_json).where(
+                entries.c.kind == "signatories").order_by(entries.c.seq.desc()).limit(1)
+            ).scalar_one_or_none()
+        data = json.loads(body) if body else {}
+        return list(data.get("names", [])), bool(data.get("distinct", False))
+
+    def set_signatories(self, names: list[str], distinct: bool) -> None:
+        """Configure the authorised signatories (an empty list: none, any named approver is
+        accepted, as before) and whether approver and operator must differ: a chained entry."""
+        cleaned = sorted({" ".join(n.split()) for n in names if n.strip()})
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            self._append_entry(conn, "signatories", "lab",
+                               {"names": cleaned, "distinct": bool(distinct)})
+
+    def _check_approval(self, meta: CertificateMetadata) -> None:
+        names, distinct = self.signatories()
+        approver = " ".join(meta.approver.split())
+        if names and approver.casefold() not in {n.casefold() for n in names}:
+            raise RegisterError(message(QT_TR_NOOP(
+                "\"{approver}\" is not one of the lab's authorised signatories ({names}): "
+                "the certificate is approved by one of them"),
+                approver=approver, names=", ".join(names)))
+        if distinct and approver.casefold() == " ".join(meta.operator.split()).casefold():
+            raise RegisterError(message(QT_TR_NOOP(
+                "the lab requires the approver to differ from the operator: {name} cannot "
+                "approve a calibration they made"), name=approver))
 
     # -- reading --------------------------------------------------------------------------
     def _get(self, conn, number: str) -> CertificateRecord:

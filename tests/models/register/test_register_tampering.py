@@ -309,3 +309,25 @@ def test_a_certificate_carries_the_head_before_it(issued):
         assert register.chain_before(record.number) == head  # after the interval's entry
         assert json.loads(record.project_json)["metadata"]["certificates"]["polygon"][
             "certificate_number"] == record.number
+
+
+def test_authorised_signatories_and_a_distinct_approver(register_url):
+    with _open(register_url) as register:
+        assert register.signatories() == ([], False)
+        register.issue(IssueRequest("polygon", META, PROJECT), render)  # none listed: any
+        register.set_signatories(["Dr. Li", "Ms. Wang"], distinct=True)
+        assert register.signatories() == (["Dr. Li", "Ms. Wang"], True)
+        stranger = CertificateMetadata(**{**META.to_dict(), "standards": (),
+                                          "approver": "Mr. Nobody"})
+        with pytest.raises(RegisterError, match="not one of the lab's authorised"):
+            register.issue(IssueRequest("polygon", stranger, PROJECT), render)
+        own = CertificateMetadata(**{**META.to_dict(), "standards": (), "operator": "dr.  li"})
+        with pytest.raises(RegisterError, match="cannot approve a calibration they made"):
+            register.issue(IssueRequest("polygon", own, PROJECT), render)
+        other = CertificateMetadata(**{**META.to_dict(), "standards": (), "operator": "Tech"})
+        record, _ = register.issue(IssueRequest("polygon", other, PROJECT), render)
+        assert (record.approver, record.operator) == ("Dr. Li", "Tech")
+        assert register.audit() == []
+    sql(register_url, "UPDATE entries SET body_json = '{\"names\": [\"Mr. Nobody\"]}'")
+    assert any("entry signatories lab: the hash chain is broken" in p
+               for p in found(register_url))
