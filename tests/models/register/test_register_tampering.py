@@ -331,3 +331,29 @@ def test_authorised_signatories_and_a_distinct_approver(register_url):
     sql(register_url, "UPDATE entries SET body_json = '{\"names\": [\"Mr. Nobody\"]}'")
     assert any("entry signatories lab: the hash chain is broken" in p
                for p in found(register_url))
+
+
+def test_a_stalled_issuer_on_postgresql_is_named_not_waited_for_forever(postgres_server,
+                                                                        monkeypatch):
+    """#40: one stalled issuer blocked every other indefinitely; now a statement waits
+    LOCK_TIMEOUT_S and the refusal names the session holding the lock."""
+    from models.register import store
+
+    url = postgres_server.new_database()
+    with _open(url) as register:
+        register.issue(IssueRequest("polygon", META, PROJECT), render)
+    monkeypatch.setattr(store, "LOCK_TIMEOUT_S", 1)
+    engine = sa.create_engine(url.replace("postgresql://", "postgresql+psycopg://"),
+                              connect_args={"application_name": "stalled issuer"})
+    with engine.connect() as stalled:
+        stalled.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": store._CHAIN_LOCK})
+        with _open(url) as register:  # opening and listing take no lock: not blocked
+            assert len(register.list()) == 1
+            with pytest.raises(RegisterError, match="waited 1 s for the register's lock, held "
+                                                    "by pid .*stalled issuer"):
+                register.set_interval("RX-1", 100)
+        stalled.rollback()
+    engine.dispose()
+    with _open(url) as register:
+        register.set_interval("RX-1", 100)
+        assert register.interval("RX-1") == 100 and register.problems == []
