@@ -65,6 +65,9 @@ CERTIFICATES = sa.Table(
     sa.Column("approver", sa.Text, nullable=True),
     sa.Column("withdrawn_reason", sa.Text, nullable=True),
     sa.Column("chain_format", sa.Integer, nullable=True),
+    # HMAC-SHA256 of chain_sha256 with the laboratory's key kept outside the database
+    # (models/register/signing.py); None when the lab signs nothing
+    sa.Column("signature", sa.String(64), nullable=True),
 )
 
 #: the register's other records, chained with the certificates (migration 4): calibration
@@ -80,6 +83,7 @@ ENTRIES = sa.Table(
     sa.Column("os_user", sa.Text, nullable=False),
     sa.Column("workstation", sa.Text, nullable=False),
     sa.Column("chain_sha256", sa.String(64), nullable=False),
+    sa.Column("signature", sa.String(64), nullable=True),
 )
 
 #: what the register knows of itself, updated in the transaction of every record: the
@@ -141,7 +145,8 @@ def _v3(conn: sa.Connection) -> None:
 
 
 _V4_COLUMNS = ("seq INTEGER", "counter VARCHAR(200)", "counter_value INTEGER", "os_user TEXT",
-               "approver TEXT", "withdrawn_reason TEXT", "chain_format INTEGER")
+               "approver TEXT", "withdrawn_reason TEXT", "chain_format INTEGER",
+               "signature VARCHAR(64)")
 
 
 def _v4(conn: sa.Connection) -> None:

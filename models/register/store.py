@@ -118,6 +118,7 @@ class CertificateRecord:
     withdrawn_reason: str | None = None
     chain_format: int | None = None
     chain_sha256: str | None = None
+    signature: str | None = None  # with the lab's key (models/register/signing.py)
 
     @property
     def headline(self) -> dict[str, float]:
@@ -215,12 +216,20 @@ class Register:
     stored PDFs: :meth:`audit` with ``pdfs``). A SQLite file that cannot be written is opened
     read-only (listed and verified, never issued into)."""
 
-    def __init__(self, url: str, *, timezone: str = "") -> None:
+    def __init__(self, url: str, *, timezone: str = "", key_file: str = "") -> None:
         import os
 
         import sqlalchemy as sa
 
         from models.register import schema
+        from models.register.signing import KeyError_, load_key
+
+        try:
+            #: the laboratory's key (ANGLEBENCH_REGISTER_KEY): new records are signed with
+            #: it and every signature is checked; None: nothing is signed or checked
+            self._key = load_key(key_file)
+        except KeyError_ as exc:
+            raise RegisterError(reason_of(exc)) from None
 
         self._sa, self._schema = sa, schema
         self.url = _normalise_url(url)
@@ -461,9 +470,15 @@ class Register:
                      microsecond=0).isoformat(),
                  "os_user": _os_user(), "workstation": socket.gethostname()}
         chain = link_entry(head, entry)
-        conn.execute(schema.ENTRIES.insert().values(**entry, chain_sha256=chain))
+        conn.execute(schema.ENTRIES.insert().values(**entry, chain_sha256=chain,
+                                                    signature=self._sign(chain)))
         self._set_state(conn, records + 1, chain)
         return chain
+
+    def _sign(self, chain: str) -> str | None:
+        from models.register.signing import sign
+
+        return sign(self._key, chain) if self._key else None
 
     def _set_state(self, conn, records: int, head: str) -> None:
         state = self._schema.STATE
@@ -644,8 +659,9 @@ class Register:
                     pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver, chain_format=2)
-                record = dataclasses.replace(record, chain_sha256=link(
-                    plan.head, dataclasses.asdict(record)))
+                chain = link(plan.head, dataclasses.asdict(record))
+                record = dataclasses.replace(record, chain_sha256=chain,
+                                             signature=self._sign(chain))
                 with self._write() as conn:
                     if not self.is_sqlite:  # SQLite's BEGIN IMMEDIATE already serialises
                         conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
@@ -836,7 +852,7 @@ class Register:
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
         columns = ("id", *CHAINED, *CHAINED_V2, "chain_format", "status", "superseded_by",
-                   "withdrawn_reason", "chain_sha256")
+                   "withdrawn_reason", "chain_sha256", "signature")
         problems: list = []
         with self._read() as conn:
             rows = conn.execute(sa.select(*(certificates.c[c] for c in columns))
@@ -879,6 +895,7 @@ class Register:
                         problems.append(message(QT_TR_NOOP(
                             "record {number}: the stored PDF does not match the SHA-256 "
                             "recorded at issue"), number=item.number))
+        problems += self._signature_problems(links)
         count = len(links)
         if state.get("records") != str(count) or state.get("head") != previous:
             problems.append(message(QT_TR_NOOP(
@@ -887,6 +904,32 @@ class Register:
                 "or added after issue"), recorded=state.get("records", "?"),
                 head=(state.get("head") or "?")[:16], count=count, actual=previous[:16]))
         problems += _cross_checks(rows, notes, counters, intervals)
+        return problems
+
+    def _signature_problems(self, links: list) -> list:
+        """With the lab's key: every signature must be the key's; from the first signed
+        record on every record must be signed, the last one always (a record forged and
+        appended after the last genuine one carries no valid signature)."""
+        from models.register.signing import signature_ok
+
+        if not self._key or not links:
+            return []
+        problems: list = []
+        signed_since = None
+        for _seq, is_entry, item in links:
+            name = (message(QT_TR_NOOP("entry {kind} {subject}"), kind=item.kind,
+                            subject=item.subject) if is_entry else item.number)
+            if item.signature is not None:
+                if not signature_ok(self._key, item.chain_sha256 or "", item.signature):
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: its signature is not the laboratory key's: it was "
+                        "changed, or forged, outside AngleBench"), number=name))
+                signed_since = signed_since or name
+            elif signed_since is not None or item is links[-1][2]:
+                problems.append(message(QT_TR_NOOP(
+                    "record {number}: not signed with the laboratory's key (the last record "
+                    "and every one since the first signed are): added outside AngleBench, or "
+                    "issued without the key"), number=name))
         return problems
 
     def chain_head(self) -> str:

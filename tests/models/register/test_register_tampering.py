@@ -357,3 +357,37 @@ def test_a_stalled_issuer_on_postgresql_is_named_not_waited_for_forever(postgres
     with _open(url) as register:
         register.set_interval("RX-1", 100)
         assert register.interval("RX-1") == 100 and register.problems == []
+
+
+def test_a_record_forged_after_the_last_genuine_one_is_found_with_the_labs_key(register_url,
+                                                                                tmp_path):
+    """#40 (optional part): chain and state can be recomputed by anyone; a signature with
+    the lab's key, kept outside the database, cannot."""
+    import os
+
+    key = tmp_path / "lab.key"
+    key.write_bytes(os.urandom(32))
+    with Register(register_url, timezone="UTC", key_file=str(key)) as register:
+        register.clock = lambda: ISSUED
+        genuine = [register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
+                   for _ in range(2)]
+        register.set_interval("RX-1", 365)
+        assert all(r.signature and len(r.signature) == 64 for r in genuine)
+        assert register.audit(pdfs=True) == []
+    with _open(register_url) as intruder:  # AngleBench without the key: chain and state fine
+        forged, _ = intruder.issue(IssueRequest("polygon", META, PROJECT), render)
+        assert intruder.problems == [] and intruder.audit() == []
+    with Register(register_url, timezone="UTC", key_file=str(key)) as register:
+        assert [str(p) for p in register.problems] == [
+            f"record {forged.number}: not signed with the laboratory's key (the last record "
+            "and every one since the first signed are): added outside AngleBench, or issued "
+            "without the key"]
+    sql(register_url, "UPDATE certificates SET signature = :s WHERE number = :n",
+        s=genuine[1].signature, n=forged.number)  # a genuine signature copied
+    with Register(register_url, timezone="UTC", key_file=str(key)) as register:
+        assert any(f"record {forged.number}: its signature is not the laboratory key's" in
+                   str(p) for p in register.problems)
+    short = tmp_path / "short.key"
+    short.write_bytes(b"secret")
+    with pytest.raises(RegisterError, match="holds 6 bytes"):
+        Register(register_url, key_file=str(short))
