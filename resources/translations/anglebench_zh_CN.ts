@@ -4516,7 +4516,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -4638,6 +4638,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>the register recorded {recorded} record(s) ending at chain head {head}, but holds {count} ending at {actual}: records were deleted (the tail truncated) or added after issue</source>
         <translation>登记册记下的是 {recorded} 条记录、止于链头 {head}，但现有 {count} 条、止于 {actual}：签发后有记录被删除（尾部被截断）或被添加</translation>
+    </message>
+    <message>
+        <source>record {number}: its signature is not the laboratory key&apos;s: it was changed, or forged, outside AngleBench</source>
+        <translation>记录 {number}：其签名不是实验室密钥所签：它在 AngleBench 之外被改动或伪造</translation>
+    </message>
+    <message>
+        <source>record {number}: not signed with the laboratory&apos;s key (the last record and every one since the first signed are): added outside AngleBench, or issued without the key</source>
+        <translation>记录 {number}：未用实验室密钥签名（最后一条记录以及自第一条签名记录以来的每条记录都应签名）：它是在 AngleBench 之外添加的，或签发时未使用密钥</translation>
     </message>
     <message>
         <source>head &apos;{value}&apos;: a chain head is 12 to 64 hexadecimal digits</source>
@@ -7237,6 +7245,14 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
         <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in</extracomment>
         <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），它打印不出或会移动文字；请去掉它重新输入{what}</translation>
+    </message>
+    <message>
+        <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
+        <translation>无法读取实验室的登记册密钥 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>the laboratory&apos;s register key {path} holds {n} bytes: a key is at least 32 random bytes</source>
+        <translation>实验室的登记册密钥 {path} 只有 {n} 字节：密钥至少应为 32 个随机字节</translation>
     </message>
 </context>
 </TS>
