@@ -73,10 +73,11 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
-    def render(final: CertificateMetadata) -> bytes:
+    def render(final: CertificateMetadata, head: str = "") -> bytes:
         document = kind.certificate_document(result, final, source_name, settings)
         return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest,
-                                                         edited_readings=edited))
+                                                         edited_readings=edited,
+                                                         register_head=head))
 
     # before a number is used: an output onto the register (or a database) is refused
     check_output(path, register_files(register.url))

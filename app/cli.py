@@ -359,22 +359,32 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec") -> CertificateM
 
 def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     """Issue through the register (the number allocated there unless the details give one);
-    None after saying why it was refused. The bundled example details (``"example": true``)
-    are issued into a register of their own, deleted afterwards: never the user's."""
-    from models.register.location import register_url, url_for_path
+    None after saying why it was refused."""
+    from models.register.location import register_url
 
     words = translator(args.language)
-    if not metadata.example:
-        return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
-    import tempfile
+    return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
 
+
+def _specimen(args: argparse.Namespace, document, words) -> None:
+    """The bundled example details (``"example": true``): a SPECIMEN, watermarked and
+    numbered SPECIMEN-… (a number the register refuses, so it cannot clash), never
+    recorded in any register."""
+    import dataclasses
+    import hashlib
+
+    from app.writers.certificate_pdf import write_certificate_pdf
+
+    stamp = hashlib.sha256(repr(document.metadata.to_dict()).encode()).hexdigest()[:8].upper()
+    number = f"SPECIMEN-{stamp}"
+    document = dataclasses.replace(
+        document, specimen=True,
+        metadata=dataclasses.replace(document.metadata, certificate_number=number))
+    write_certificate_pdf(args.certificate, document)
     _say(rendered(message(QT_TR_NOOP(
-        "anglebench analyze: these are the bundled example details (\"example\": true): the "
-        "certificate is issued in a register of its own, deleted afterwards; your register is "
-        "not touched")), words))
-    with tempfile.TemporaryDirectory(prefix="anglebench-example-") as own:
-        return _issue_into(url_for_path(Path(own) / "example-register.sqlite"), args, kind,
-                           result, metadata, settings, rows, words)
+        "SPECIMEN {number} written to {path}: these are the bundled example details "
+        "(\"example\": true); it is watermarked SPECIMEN, is not a certificate and was "
+        "recorded in no register"), number=number, path=args.certificate), words))
 
 
 def _issue_into(url, args, kind, result, metadata, settings, rows, words):
@@ -422,7 +432,9 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     try:
-        if args.certificate and not draft_reasons(metadata):
+        if args.certificate and metadata.example:
+            _specimen(args, document, words)
+        elif args.certificate and not draft_reasons(metadata):
             record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT

@@ -1,9 +1,16 @@
 """``anglebench register``: the certificate register for audits, without a window.
 
     anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
-    anglebench register show NUMBER            the record (--pdf OUT, --project OUT to extract)
+    anglebench register show NUMBER            the record (--pdf OUT, --project OUT to extract),
+                                               its chain value and the head before it
     anglebench register verify [FILE.pdf]      the hash chain and every stored PDF; is this PDF,
-                                               byte for byte, one we issued?
+                                               byte for byte, one we issued? --head VALUE (or
+                                               --head-from CERT.pdf): does the register still
+                                               hold the history up to that head?
+    anglebench register head                   the chain's head now, for the lab's log
+    anglebench register withdraw NUMBER --reason TEXT   withdraw (void) a certificate
+    anglebench register signatories [NAME …] [--distinct] [--clear]   the lab's authorised
+                                               signatories (without arguments: shown)
     anglebench register export OUT.zip         every record: index.csv, PDFs, projects
     anglebench register interval SERIAL DAYS  set an instrument's calibration interval
     anglebench register continue SCHEME NEXT   continue numbering after hand-issued numbers
@@ -40,6 +47,10 @@ SHOWN = (QT_TR_NOOP("supersedes"), QT_TR_NOOP("superseded_by"), QT_TR_NOOP("issu
          QT_TR_NOOP("item_description"), QT_TR_NOOP("item_manufacturer"),
          QT_TR_NOOP("item_serial"), QT_TR_NOOP("customer"), QT_TR_NOOP("operator"),
          QT_TR_NOOP("workstation"), QT_TR_NOOP("issued_at"), QT_TR_NOOP("pdf_sha256"))
+#: shown as well (registers of schema version 4): who approved and who issued it (the
+#: operating-system user), why it was withdrawn, its value in the hash chain
+SHOWN_V4 = (QT_TR_NOOP("approver"), QT_TR_NOOP("os_user"), QT_TR_NOOP("withdrawn_reason"),
+            QT_TR_NOOP("chain_sha256"))
 COLUMNS = ("number", "status", "revision", *SHOWN)
 
 
@@ -66,6 +77,19 @@ def _parser(words) -> argparse.ArgumentParser:
         "is this PDF, byte for byte, one the register issued?")))
     verify.add_argument("pdf", nargs="?", default="", help=words(QT_TR_NOOP(
         "the PDF to check (without it: the register's hash chain and stored PDFs only)")))
+    verify.add_argument("--head", default="", metavar="VALUE", help=words(QT_TR_NOOP(
+        "a chain head noted earlier (12 to 64 hex digits): the register must still hold the "
+        "history up to it")))
+    verify.add_argument("--head-from", default="", metavar="CERT.pdf", help=words(QT_TR_NOOP(
+        "the chain head printed on a certificate (the head before it): the register must "
+        "still hold the history up to it")))
+    head = sub.add_parser("head", help=words(QT_TR_NOOP(
+        "the register's chain head now (note it in the lab's log)")))
+    withdraw = sub.add_parser("withdraw", help=words(QT_TR_NOOP(
+        "withdraw (void) a certificate, with the reason: a new record")))
+    withdraw.add_argument("number", help=words(QT_TR_NOOP("the certificate number")))
+    withdraw.add_argument("--reason", required=True, help=words(QT_TR_NOOP(
+        "why it is withdrawn")))
     export = sub.add_parser("export", help=words(QT_TR_NOOP(
         "every record: index.csv, the PDFs and the projects")))
     export.add_argument("out", metavar="OUT.zip", help=words(QT_TR_NOOP("the archive to write")))
@@ -80,7 +104,16 @@ def _parser(words) -> argparse.ArgumentParser:
         "set an instrument's calibration interval")))
     interval.add_argument("serial", help=words(QT_TR_NOOP("the instrument's serial number")))
     interval.add_argument("days", type=int, help=words(QT_TR_NOOP("0 clears it")))
-    for command in (listing, show, verify, export, counter, interval):
+    signatories = sub.add_parser("signatories", help=words(QT_TR_NOOP(
+        "the lab's authorised signatories: an approver must be one of them")))
+    signatories.add_argument("names", nargs="*", help=words(QT_TR_NOOP(
+        "the names (without any: show the list)")))
+    signatories.add_argument("--distinct", action="store_true", help=words(QT_TR_NOOP(
+        "the approver must differ from the operator")))
+    signatories.add_argument("--clear", action="store_true", help=words(QT_TR_NOOP(
+        "no list: any named approver is accepted")))
+    for command in (listing, show, verify, export, counter, interval, head, withdraw,
+                    signatories):
         add_language_option(command, words, subcommand=True)
     return p
 
@@ -90,11 +123,13 @@ def _print_record(record, register, words) -> None:
                 else joined((", ", revision_words(record.revision))))
     lines = [message(QT_TR_NOOP("{number}  ({status}{revision})"), number=record.number,
                      status=status_words(record.status), revision=revision)]
-    for key in SHOWN:
+    for key in (*SHOWN, *SHOWN_V4):
         value = getattr(record, key)
         if value:
             lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
                                  value=value))
+    lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
+                         head=register.chain_before(record.number)))
     for name, value in record.headline.items():  # a figure's name as the certificate has it
         lines.append(message(QT_TR_NOOP("  headline {name}: {value}"),
                              name=declared_text(name, words), value=f"{value:.6g}"))
@@ -130,8 +165,10 @@ def _export(register, out: str, words) -> int:
     return 0
 
 
-def _verify(register, path: str, words) -> int:
-    """The register's hash chain and stored PDFs; then, if given, the PDF at ``path``."""
+def _verify(register, path: str, words, head: str = "", head_from: str = "") -> int:
+    """The register's hash chain and stored PDFs; then, if given, the PDF at ``path`` and
+    the head ``head`` (or the one printed on the certificate ``head_from``)."""
+    from models.register.chain import head_in_pdf
     from models.register.store import RegisterError
 
     def out(text) -> None:
@@ -144,15 +181,35 @@ def _verify(register, path: str, words) -> int:
         out(message(QT_TR_NOOP("register: hash chain intact over {n} record(s), every stored PDF "
                                "matches its SHA-256; chain head {head}"),
                     n=len(register.list()), head=register.chain_head()))
+    failed = bool(problems)
+    if head_from:
+        head = head_in_pdf(_read(head_from))
+        if not head:
+            raise RegisterError(message(QT_TR_NOOP(
+                "{path}: no register chain head printed in it (a draft, a specimen, or issued "
+                "before AngleBench printed the head)"), path=head_from))
+    if head:
+        found = register.find_head(head)
+        if found is None:
+            failed = True
+            out(message(QT_TR_NOOP(
+                "CHANGED AFTER ISSUE: head {head} is not in the register's chain: the history "
+                "up to it was rewritten or removed (or it is another register's)"), head=head))
+        else:
+            out(message(QT_TR_NOOP(
+                "head {head}: in the register's chain at record {seq}; the history up to it "
+                "is still there"), head=found[1], seq=found[0]))
     if not path:
-        return 1 if problems else 0
-    try:
-        with open(path, "rb") as handle:
-            data = handle.read()
-    except OSError as exc:
-        raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
-                                    path=path, value=exc.strerror)) from None
-    record = register.verify(data)
+        return 1 if failed else 0
+    data = _read(path)
+    found = register.verify_all(data)
+    if len(found) > 1:
+        out(message(QT_TR_NOOP(
+            "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, "
+            "so all but one were copied into the register after issue"), path=path,
+            n=len(found), numbers=", ".join(r.number for r in found)))
+        return 1
+    record = found[0] if found else None
     if record is None:
         out(message(QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
@@ -166,14 +223,35 @@ def _verify(register, path: str, words) -> int:
         out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
                                "see 'anglebench register show {by}')"), path=path,
                     number=record.number, by=record.superseded_by))
-    return 1 if problems else 0
+    if record.status == "withdrawn":
+        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
+                    path=path, number=record.number, reason=record.withdrawn_reason or "—"))
+    printed = head_in_pdf(data)
+    if printed and printed != register.chain_before(record.number):
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "
+            "register's chain before {number} is now {actual}"), path=path, printed=printed,
+            number=record.number, actual=register.chain_before(record.number)))
+        failed = True
+    return 1 if failed else 0
+
+
+def _read(path: str) -> bytes:
+    from models.register.store import RegisterError
+
+    try:
+        with open(path, "rb") as handle:
+            return handle.read()
+    except OSError as exc:
+        raise RegisterError(message(QT_TR_NOOP("{path}: cannot read ({value})"),
+                                    path=path, value=exc.strerror)) from None
 
 
 def run_register(argv: list[str]) -> int:
     language = language_asked(argv)
     with speaking(language) as words:
         args = _parser(words).parse_args(argv)
-    from models.register.store import Register, RegisterError
+    from models.register.store import Register, RegisterError, RegisterTampered
 
     url = register_url(explicit=args.register)
     outputs = ((("--pdf", args.pdf), ("--project", args.project)) if args.command == "show"
@@ -185,7 +263,15 @@ def run_register(argv: list[str]) -> int:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")
         return EXIT_BAD_INPUT
     try:
-        with Register(url) as register:
+        try:
+            register = Register(url)
+        except RegisterTampered as exc:
+            if args.command != "verify":
+                raise
+            sys.stdout.write(rendered(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"),
+                                              problem=reason_of(exc)), words) + "\n")
+            return 1
+        with register:
             if args.command != "verify":
                 for problem in register.problems:
                     _say(rendered(message(QT_TR_NOOP("anglebench register: WARNING: {problem}"),
@@ -205,7 +291,28 @@ def run_register(argv: list[str]) -> int:
                     write_bytes_atomic(args.project, record.project_json.encode("utf-8"))
                 return 0
             if args.command == "verify":
-                return _verify(register, args.pdf, words)
+                return _verify(register, args.pdf, words, args.head, args.head_from)
+            if args.command == "head":
+                sys.stdout.write(register.chain_head() + "\n")
+                return 0
+            if args.command == "signatories":
+                if args.names or args.clear or args.distinct:
+                    register.set_signatories([] if args.clear else args.names, args.distinct)
+                names, distinct = register.signatories()
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "authorised signatories: {names}; approver and operator {rule}"),
+                    names=", ".join(names) or message(QT_TR_NOOP("none listed (any named "
+                                                                 "approver)")),
+                    rule=message(QT_TR_NOOP("must differ") if distinct
+                                 else QT_TR_NOOP("may be the same"))), words) + "\n")
+                return 0
+            if args.command == "withdraw":
+                register.withdraw(args.number, args.reason)
+                sys.stdout.write(rendered(message(QT_TR_NOOP(
+                    "{number} withdrawn ({reason}); chain head now {head}"),
+                    number=args.number, reason=args.reason, head=register.chain_head()),
+                    words) + "\n")
+                return 0
             if args.command == "continue":
                 import datetime as dt
 

@@ -161,11 +161,21 @@ class RegisterPresenter:
             with open(path, "rb") as handle:
                 data = handle.read()
             with self._register() as register:
-                record = register.verify(data)
+                found = register.verify_all(data)
+                problems = register.audit(pdfs=True)  # the stored PDFs too, on demand
         except (OSError, RegisterError) as exc:
             self.view.tell(tr("Cannot verify"), explained(exc))
             return None
-        if record is None:
+        if problems:
+            self.view.tell(tr("Register changed after issue"), "\n".join(
+                translated(p) for p in problems[:20]))
+        record = found[0] if len(found) == 1 else None
+        if len(found) > 1:
+            self.view.tell(tr("Not in the register"), tr(
+                "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued "
+                "once, so all but one were copied into the register after issue.").format(
+                path=path, n=len(found), numbers=", ".join(r.number for r in found)))
+        elif record is None:
             self.view.tell(tr("Not in the register"), tr(
                 "{path}: no certificate issued from this register has this PDF (SHA-256): it "
                 "was altered, is a draft, or comes from another register.").format(path=path))
@@ -175,7 +185,10 @@ class RegisterPresenter:
                 .format(path=path, number=record.number, date=record.issued_at,
                         status=translated(status_words(record.status)))
                 + ("" if not record.superseded_by else "\n" + tr(
-                    "It is no longer valid: superseded by {by}.").format(by=record.superseded_by)))
+                    "It is no longer valid: superseded by {by}.").format(by=record.superseded_by))
+                + ("" if record.status != "withdrawn" else "\n" + tr(
+                    "It is no longer valid: withdrawn ({reason}).").format(
+                    reason=record.withdrawn_reason or "—")))
         return record
 
     def show_history(self) -> None:

@@ -280,7 +280,11 @@ class ReportPdf(FPDF):
                   align="R", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.str_alias_nb_pages = previous
         self.cell(self.epw, 4, self.foot[1])
+        self._foot_anchor()
         self.set_text_color(*INK)
+
+    def _foot_anchor(self) -> None:
+        """The register's head before this certificate, short (see _CertificatePdf)."""
 
     def output(self, *args, **kwargs):
         self.str_alias_nb_pages = PAGE_TOTAL_ALIAS  # fill in the footer's placeholders
@@ -525,16 +529,24 @@ class _CertificatePdf(ReportPdf):
 
     def header(self) -> None:
         super().header()
-        if self.document.is_draft:
-            self._watermark()
+        if self.document.specimen:
+            self._watermark(QT_TR_NOOP("SPECIMEN"), 60)
+        elif self.document.is_draft:
+            self._watermark(QT_TR_NOOP("DRAFT"), 90)
 
-    def _watermark(self) -> None:
+    def _watermark(self, word: str = QT_TR_NOOP("DRAFT"), size: float = 90) -> None:
         x, y = self.get_x(), self.get_y()
         with (self.local_context(text_color=(235, 200, 200)),
               self.rotation(45, self.w / 2, self.h / 2)):
-            self.mixed_text(self.w / 2 - 60, self.h / 2 + 12, self.say(QT_TR_NOOP("DRAFT")), 90,
-                            "B")
+            self.mixed_text(self.w / 2 - 60, self.h / 2 + 12, self.say(word), size, "B")
         self.set_xy(x, y)
+
+    def _foot_anchor(self) -> None:
+        head = self.document.register_head
+        if head:
+            self.set_xy(self.l_margin, self.h - 6)
+            self.cell(self.epw, 3.5, self.say(message(QT_TR_NOOP(
+                "Register chain head before this certificate: {head}…"), head=head[:16])))
 
 
 _NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](0(?:\.0+)?)(?![\d.])")
@@ -650,13 +662,21 @@ def _render(document: CertificateDocument) -> FPDF:
     pdf.set_producer("AngleBench (fpdf2)")
     created = _created(document)
     pdf.set_creation_date(created)
+    if document.register_head:
+        from models.register.chain import HEAD_MARK
+
+        pdf.set_keywords(f"{HEAD_MARK}{document.register_head}")
     pdf.add_page()
 
     pdf.set_font(FONT, "B", 17)
     pdf.cell(0, 9, label(document, document.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     pdf.set_font(FONT, "", 11)
     pdf.cell(0, 6, pdf.say(document.kind_title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
-    if document.is_draft:
+    if document.specimen:
+        pdf.paragraph(message(QT_TR_NOOP(
+            "SPECIMEN — made from example details for training or demonstration; not a "
+            "certificate, not recorded in any register.")), 9, (170, 30, 30))
+    elif document.is_draft:
         pdf.paragraph(message(QT_TR_NOOP("DRAFT — not valid as a certificate. Missing: "
                                          "{fields}."), fields=_listed(meta.missing_fields())),
                       9, (170, 30, 30))
@@ -770,6 +790,13 @@ def _render(document: CertificateDocument) -> FPDF:
         pdf.multi_cell(0, 5, pdf.say(message(QT_TR_NOOP("— End of certificate {number} —"),
                                              number=meta.certificate_number or "—")),
                        align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        if document.register_head:
+            pdf.set_font(FONT, "", 7)
+            pdf.multi_cell(0, 4, pdf.say(message(QT_TR_NOOP(
+                "The laboratory's certificate register, before this certificate, ended at "
+                "chain head {head}; 'anglebench register verify --head' proves the register "
+                "still holds that history."), head=document.register_head)),
+                align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
     digest = hashlib.md5(_identity(document, created).encode(), usedforsecurity=False).hexdigest()
     pdf.file_id = lambda *_: f"<{digest}><{digest}>"
     return pdf

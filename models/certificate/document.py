@@ -88,6 +88,13 @@ class CertificateDocument:
     # carries the measurand not listed with a certificate and a stated U, say): the document
     # is then a test report, not a calibration certificate (traceability_gaps)
     traceability_gaps: tuple[str, ...] = ()
+    # the register's chain head before this certificate (the previous record's chain
+    # value), printed short on every page's foot and in full on the last page: every copy
+    # anchors the register's history up to it (models/register/chain.py); "" unissued
+    register_head: str = ""
+    # a specimen (the bundled example details, or the window's training switch):
+    # watermarked SPECIMEN, numbered SPECIMEN-…, never recorded in a register
+    specimen: bool = False
 
     @property
     def is_test_report(self) -> bool:

@@ -7,8 +7,16 @@ chain; neither does a record deleted or inserted before the last. What changes l
 after issue — the status and ``superseded_by`` when an amendment or replacement is issued —
 is outside the chain and checked against the record that supersedes it, which is in it.
 
+Since schema version 4 the chain also runs through the register's other records (the
+``entries`` table: calibration intervals, numbering continued, withdrawals), in one order
+(``seq``), and a record's chain covers who issued it (the operating-system user), who
+approved it, its place and the counter value its number came from (``chain_format`` 2).
+The ``register_state`` row holds the number of records and the head, so a deleted tail is
+found; the counters are cross-checked against the records allocated from them.
+
 Anyone with write access can recompute the whole chain: the chain's head (``anglebench
-register verify`` prints it), noted outside the database from time to time, anchors it.
+register head``), noted outside the database, and the head printed on every certificate
+(the head *before* it) anchor it (``anglebench register verify --head``).
 """
 
 from __future__ import annotations
@@ -18,18 +26,104 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "GENESIS", "link"]
+__all__ = ["CHAINED", "CHAINED_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "append_baseline",
+           "head_in_pdf", "link", "link_entry", "verify_v1_chain"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
 CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
            "item_description", "item_manufacturer", "item_serial", "customer", "operator",
            "workstation", "supersedes", "revision", "change_note", "project_json",
            "software_json", "headline_json", "pdf_sha256")
+#: what a record of chain format 2 (schema version 4) adds to its chain
+CHAINED_V2 = ("seq", "counter", "counter_value", "os_user", "approver")
+#: an entry's fields, all in the chain
+ENTRY_CHAINED = ("seq", "kind", "subject", "body_json", "recorded_at", "os_user", "workstation")
 GENESIS = "0" * 64
 
 
-def link(previous: str, record: Mapping[str, Any]) -> str:
-    """The chain after ``record``, given the chain before it."""
-    body = json.dumps({k: record[k] for k in CHAINED}, sort_keys=True, ensure_ascii=False,
-                      separators=(",", ":"))
+def _digest(previous: str, fields: Mapping[str, Any]) -> str:
+    body = json.dumps(dict(fields), sort_keys=True, ensure_ascii=False, separators=(",", ":"))
     return hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
+
+
+def link(previous: str, record: Mapping[str, Any]) -> str:
+    """The chain after the certificate ``record``, given the chain before it."""
+    keys = CHAINED + (CHAINED_V2 if (record.get("chain_format") or 1) >= 2 else ())
+    fields = {k: record[k] for k in keys}
+    if (record.get("chain_format") or 1) >= 2:
+        fields["chain_format"] = record["chain_format"]
+    return _digest(previous, fields)
+
+
+def link_entry(previous: str, entry: Mapping[str, Any]) -> str:
+    """The chain after the entry ``entry`` (an interval, a withdrawal …)."""
+    return _digest(previous, {"entry": {k: entry[k] for k in ENTRY_CHAINED}})
+
+
+#: how a certificate's PDF carries the head before it, in its document information
+#: (keywords), besides printing it
+HEAD_MARK = "anglebench-register-head-before:"
+
+
+def head_in_pdf(data: bytes) -> str:
+    """The chain head a certificate's PDF carries (its keywords), or ""."""
+    import re
+
+    found = re.search(HEAD_MARK.encode() + rb"([0-9a-f]{64})", data)
+    return found.group(1).decode() if found else ""
+
+
+def verify_v1_chain(conn) -> str:
+    """The chain of a version-3 register recomputed over its records: "" when every stored
+    value is what it should be, else which record breaks it."""
+    import sqlalchemy as sa
+
+    from models.register.schema import CERTIFICATES
+
+    previous = GENESIS
+    rows = conn.execute(sa.select(CERTIFICATES.c.number, CERTIFICATES.c.chain_sha256,
+                                  *(CERTIFICATES.c[k] for k in CHAINED))
+                        .order_by(CERTIFICATES.c.id)).all()
+    for row in rows:
+        previous = link(previous, row._asdict())
+        if row.chain_sha256 != previous:
+            return (f"record {row.number}: the hash chain is broken here (this record, or one "
+                    "before it, was changed, inserted or deleted after issue)")
+    return ""
+
+
+def append_baseline(conn, records: int) -> None:
+    """Migration 4: the counters and intervals as they stand, recorded as chained entries
+    after the ``records`` certificates, and the state row written."""
+    import datetime as dt
+    import getpass
+    import socket
+
+    import sqlalchemy as sa
+
+    from models.register.schema import CERTIFICATES, COUNTERS, ENTRIES, INSTRUMENTS, STATE
+
+    head = conn.execute(sa.select(CERTIFICATES.c.chain_sha256).order_by(
+        CERTIFICATES.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
+    seq = records
+    now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat()
+    try:
+        user = getpass.getuser()
+    except (KeyError, OSError):
+        user = ""
+    baseline = [("numbering", name, {"last_value": value, "baseline": True})
+                for name, value in conn.execute(sa.select(COUNTERS.c.name, COUNTERS.c.last_value)
+                                                .order_by(COUNTERS.c.name))]
+    baseline += [("interval", serial, {"days": days, "baseline": True})
+                 for serial, days in conn.execute(sa.select(
+                     INSTRUMENTS.c.serial, INSTRUMENTS.c.interval_days)
+                     .order_by(INSTRUMENTS.c.serial))]
+    for kind, subject, body in baseline:
+        seq += 1
+        entry = {"seq": seq, "kind": kind, "subject": subject,
+                 "body_json": json.dumps(body, sort_keys=True), "recorded_at": now,
+                 "os_user": user, "workstation": socket.gethostname()}
+        head = link_entry(head, entry)
+        conn.execute(ENTRIES.insert().values(**entry, chain_sha256=head))
+    for name, value in (("records", str(seq)), ("head", head), ("schema_version", "4")):
+        conn.execute(STATE.insert().values(name=name, value=value))

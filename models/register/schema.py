@@ -2,7 +2,10 @@
 
 ``schema_version`` holds the version a register is at; opening it applies every later
 migration in one transaction, so an old register opens in a newer AngleBench. A register
-made by a newer AngleBench than this one is refused, not guessed at.
+made by a newer AngleBench than this one is refused, not guessed at; so is a version set
+back (the structures of a later version are there, or the copy of the version in
+``register_state`` differs): a migration never recomputes a chain over records that have
+one (migration 4 proves the existing chain first and keeps its values).
 """
 
 from __future__ import annotations
@@ -11,8 +14,8 @@ from collections.abc import Callable
 
 import sqlalchemy as sa
 
-__all__ = ["CERTIFICATES", "COUNTERS", "INSTRUMENTS", "LATEST", "METADATA", "MIGRATIONS",
-           "SCHEMA_VERSION"]
+__all__ = ["CERTIFICATES", "COUNTERS", "ENTRIES", "INSTRUMENTS", "LATEST", "METADATA",
+           "MIGRATIONS", "SCHEMA_VERSION", "STATE", "downgrade_evidence"]
 
 METADATA = sa.MetaData()
 
@@ -52,6 +55,43 @@ CERTIFICATES = sa.Table(
     sa.Column("pdf", sa.LargeBinary, nullable=False),
     # the hash chain over the records in the order of issue (migration 3; models/register/chain)
     sa.Column("chain_sha256", sa.String(64), nullable=True),
+    # migration 4: the record's place in the chain (shared with ENTRIES), the counter and
+    # value its number was allocated from, who issued it (the operating-system user) and
+    # approved it, and which fields the chain covers (1: CHAINED; 2: CHAINED + CHAINED_V2)
+    sa.Column("seq", sa.Integer, nullable=True),
+    sa.Column("counter", sa.String(200), nullable=True),
+    sa.Column("counter_value", sa.Integer, nullable=True),
+    sa.Column("os_user", sa.Text, nullable=True),
+    sa.Column("approver", sa.Text, nullable=True),
+    sa.Column("withdrawn_reason", sa.Text, nullable=True),
+    sa.Column("chain_format", sa.Integer, nullable=True),
+    # HMAC-SHA256 of chain_sha256 with the laboratory's key kept outside the database
+    # (models/register/signing.py); None when the lab signs nothing
+    sa.Column("signature", sa.String(64), nullable=True),
+)
+
+#: the register's other records, chained with the certificates (migration 4): calibration
+#: intervals set, numbering continued, certificates withdrawn, the baseline at migration
+ENTRIES = sa.Table(
+    "entries", METADATA,
+    sa.Column("id", sa.Integer, primary_key=True, autoincrement=True),
+    sa.Column("seq", sa.Integer, nullable=False, unique=True),
+    sa.Column("kind", sa.String(40), nullable=False),  # interval | numbering | withdrawal
+    sa.Column("subject", sa.String(200), nullable=False),  # serial, counter or number
+    sa.Column("body_json", sa.Text, nullable=False),
+    sa.Column("recorded_at", sa.String(40), nullable=False),
+    sa.Column("os_user", sa.Text, nullable=False),
+    sa.Column("workstation", sa.Text, nullable=False),
+    sa.Column("chain_sha256", sa.String(64), nullable=False),
+    sa.Column("signature", sa.String(64), nullable=True),
+)
+
+#: what the register knows of itself, updated in the transaction of every record: the
+#: number of records in the chain, its head, and a copy of the schema version (migration 4)
+STATE = sa.Table(
+    "register_state", METADATA,
+    sa.Column("name", sa.String(40), primary_key=True),
+    sa.Column("value", sa.Text, nullable=False),
 )
 
 #: per instrument serial: the calibration interval (migration 2)
@@ -62,9 +102,18 @@ INSTRUMENTS = sa.Table(
 )
 
 
+_V1_CERTIFICATE_COLUMNS = (
+    "id", "number", "issued_at", "issue_date", "calibration_date", "workbench",
+    "item_description", "item_manufacturer", "item_serial", "customer", "operator",
+    "workstation", "status", "supersedes", "superseded_by", "revision", "change_note",
+    "project_json", "software_json", "headline_json", "pdf_sha256", "pdf")
+
+
 def _v1(conn: sa.Connection) -> None:
-    for table in (COUNTERS, CERTIFICATES):
-        table.create(conn)
+    COUNTERS.create(conn)
+    # the table as version 1 made it (later migrations add their columns)
+    sa.Table("certificates", sa.MetaData(),
+             *(CERTIFICATES.c[name]._copy() for name in _V1_CERTIFICATE_COLUMNS)).create(conn)
 
 
 def _v2(conn: sa.Connection) -> None:
@@ -76,12 +125,16 @@ def _v3(conn: sa.Connection) -> None:
     """Add the hash chain. Add its column (unless version 1 already created the table with
     it), then compute the chain over the records already issued, in the order of issue.
     The chain vouches for those records as they are now: a change made before this
-    migration cannot be detected."""
+    migration cannot be detected. A register whose records already carry chain values is
+    never given a new chain (see :func:`downgrade_evidence`)."""
     from models.register.chain import CHAINED, GENESIS, link
 
     columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
     if "chain_sha256" not in columns:
         conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN chain_sha256 VARCHAR(64)"))
+    elif conn.execute(sa.text("SELECT COUNT(*) FROM certificates WHERE chain_sha256 IS NOT "
+                              "NULL")).scalar_one():
+        raise ValueError("the records already carry a hash chain")
     previous = GENESIS
     rows = conn.execute(sa.select(CERTIFICATES.c.id, *(CERTIFICATES.c[k] for k in CHAINED))
                         .order_by(CERTIFICATES.c.id)).all()
@@ -91,6 +144,59 @@ def _v3(conn: sa.Connection) -> None:
             chain_sha256=previous))
 
 
+_V4_COLUMNS = ("seq INTEGER", "counter VARCHAR(200)", "counter_value INTEGER", "os_user TEXT",
+               "approver TEXT", "withdrawn_reason TEXT", "chain_format INTEGER",
+               "signature VARCHAR(64)")
+
+
+def _v4(conn: sa.Connection) -> None:
+    """Chain positions, the state row, the entries table. The existing chain is proved
+    first (a broken one is refused, never recomputed) and kept value for value; each record
+    gets its place; the counters and intervals as they stand are recorded as chained
+    baseline entries (the records behind them predate the cross-check)."""
+    from models.register.chain import verify_v1_chain
+
+    problem = verify_v1_chain(conn)
+    if problem:
+        raise ValueError(problem)
+    for column in _V4_COLUMNS:
+        conn.execute(sa.text(f"ALTER TABLE certificates ADD COLUMN {column}"))
+    ENTRIES.create(conn)
+    STATE.create(conn)
+    ids = conn.execute(sa.select(CERTIFICATES.c.id).order_by(CERTIFICATES.c.id)).scalars().all()
+    for seq, row_id in enumerate(ids, 1):
+        conn.execute(CERTIFICATES.update().where(CERTIFICATES.c.id == row_id).values(
+            seq=seq, chain_format=1))
+    from models.register.chain import append_baseline
+
+    append_baseline(conn, len(ids))
+
+
 #: version → the migration that brings a register to it from the version before
-MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3}
+MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4}
 LATEST = max(MIGRATIONS)
+
+
+def downgrade_evidence(conn: sa.Connection, version: int) -> str:
+    """Why ``version`` (read from ``schema_version``) cannot be this register's: a later
+    version's structures are present, or the state's copy of the version differs; "" when
+    nothing says so."""
+    inspector = sa.inspect(conn)
+    tables = set(inspector.get_table_names())
+    if version < 1 or version > LATEST:
+        return ""  # an unknown version is refused by the caller
+    if "register_state" in tables:
+        copy = conn.execute(sa.select(STATE.c.value).where(STATE.c.name == "schema_version")
+                            ).scalar_one_or_none()
+        if version < 4 or copy != str(version):
+            return f"register_state records schema version {copy}"
+    if version < 2 and "instruments" in tables:
+        return "the table of version 2 (instruments) exists"
+    if version < 4 and "certificates" in tables:
+        columns = {c["name"] for c in inspector.get_columns("certificates")}
+        if "seq" in columns or "entries" in tables:
+            return "the columns of version 4 exist"
+        if version < 3 and "chain_sha256" in columns and conn.execute(sa.text(
+                "SELECT COUNT(*) FROM certificates WHERE chain_sha256 IS NOT NULL")).scalar_one():
+            return "the records carry the hash chain of version 3"
+    return ""

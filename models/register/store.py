@@ -5,14 +5,16 @@ both back ends, transactions and parameter styles handled the same way, and the
 dialect's own DDL for the few types that differ (BLOB / BYTEA, autoincrement); the
 ORM is not used. It is imported only when a register is opened.
 
-Issuing is one transaction: the number is allocated (``INSERT … ON CONFLICT DO UPDATE …
-RETURNING`` on a counter row, which both databases run atomically and serialise across
-processes), the PDF is rendered with that number, and the record — number, dates, item,
-customer, the full project state, software versions, headline figures, the PDF and its
-SHA-256 — is inserted. Anything that fails before the commit (the PDF, the disk, the
-process killed) leaves no record and no number used. SQLite transactions begin
-IMMEDIATE (the write lock at once, so two writers queue instead of failing); on
-PostgreSQL the counter row's lock does the same.
+Issuing holds the write lock for milliseconds: the number the register expects next
+and the chain's head are read without a lock, the PDF is rendered with them, and one short
+transaction checks that counter and head are still those (else the PDF is rendered again,
+the issuer then waiting its turn) and commits the counter, the record — number, dates,
+item, customer, issuing user and approver, the full project state, software versions,
+headline figures, the PDF and its SHA-256 — and the register's state (record count and
+head). Anything that fails before the commit (the PDF, the disk, the process killed) leaves
+no record and no number used. SQLite writes begin IMMEDIATE (the write lock at once, so
+two writers queue instead of failing), reads take no lock; on PostgreSQL an advisory lock
+serialises the chain's growth and every statement has a lock timeout.
 """
 
 from __future__ import annotations
@@ -34,15 +36,17 @@ from typing import Any
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
-from models.register.chain import CHAINED, GENESIS, link
+from models.register.chain import CHAINED, CHAINED_V2, GENESIS, link
 
-__all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "software_versions"]
+__all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "RegisterTampered",
+           "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
 _SEQ = re.compile(r"\{seq(?::0?\d+d)?\}")
 _ADVISORY_LOCK = 0x414E4742  # "ANGB": serialises migrations on PostgreSQL
 _CHAIN_LOCK = 0x414E4743  # serialises the hash chain's growth on PostgreSQL
+_TURN_LOCK = 0x414E4744  # an issuer's turn to render after a lost race (PostgreSQL)
 
 
 class RegisterError(ValueError):
@@ -103,6 +107,18 @@ class CertificateRecord:
     software_json: str
     headline_json: str
     pdf_sha256: str
+    # schema version 4 (None on older records): the place in the chain, the counter and
+    # value the number came from, who issued (the operating-system user) and approved it,
+    # why it was withdrawn, the chain's format and value after it
+    seq: int | None = None
+    counter: str | None = None
+    counter_value: int | None = None
+    os_user: str | None = None
+    approver: str | None = None
+    withdrawn_reason: str | None = None
+    chain_format: int | None = None
+    chain_sha256: str | None = None
+    signature: str | None = None  # with the lab's key (models/register/signing.py)
 
     @property
     def headline(self) -> dict[str, float]:
@@ -141,31 +157,118 @@ def _counter_name(scheme: str, date: dt.date) -> str:
     return format_certificate_number(_SEQ.sub("#", scheme), 0, date)
 
 
+class RegisterTampered(RegisterError):
+    """The register's own records show a change made behind AngleBench's back that makes
+    it unsafe to open (a schema version set back): refused, and reported by verify."""
+
+
+#: how often an issue is rendered again when another issue took the number or head first
+ISSUE_ATTEMPTS = 200
+#: how long a PostgreSQL statement waits for a lock before saying who holds it
+LOCK_TIMEOUT_S = 20
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """What the register expects the next record to be, read without a write lock."""
+
+    number: str
+    seq: int
+    head: str
+    counter: str | None
+    counter_before: int | None
+    counter_value: int | None
+    original: CertificateRecord | None
+    revision: str
+
+
+def _os_user() -> str:
+    import getpass
+
+    try:
+        return getpass.getuser()
+    except (KeyError, OSError):
+        return ""
+
+
+def lab_timezone(name: str = "") -> dt.tzinfo:
+    """The lab's time zone: ``name`` (an IANA name such as Asia/Shanghai), else the
+    ``ANGLEBENCH_TIMEZONE`` environment variable, else the system's."""
+    import os
+
+    name = name.strip() or os.environ.get("ANGLEBENCH_TIMEZONE", "").strip()
+    if name:
+        from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
+
+        try:
+            return ZoneInfo(name)
+        except (ZoneInfoNotFoundError, ValueError):
+            raise RegisterError(message(QT_TR_NOOP(
+                "the lab's time zone '{name}' is not known (an IANA name such as "
+                "Asia/Shanghai or Europe/Berlin)"), name=name)) from None
+    return dt.datetime.now().astimezone().tzinfo or dt.timezone.utc
+
+
 class Register:
     """Open (creating or migrating) the register at ``url``: ``sqlite:///path`` or
-    ``postgresql://user@host/db``."""
+    ``postgresql://user@host/db``. Opening takes no write lock unless the schema version
+    asks for a migration; it checks the hash chain, the state and the counters (not the
+    stored PDFs: :meth:`audit` with ``pdfs``). A SQLite file that cannot be written is opened
+    read-only (listed and verified, never issued into)."""
 
-    def __init__(self, url: str) -> None:
+    def __init__(self, url: str, *, timezone: str = "", key_file: str = "") -> None:
+        import os
+
         import sqlalchemy as sa
 
         from models.register import schema
+        from models.register.signing import KeyError_, load_key
+
+        try:
+            #: the laboratory's key (ANGLEBENCH_REGISTER_KEY): new records are signed with
+            #: it and every signature is checked; None: nothing is signed or checked
+            self._key = load_key(key_file)
+        except KeyError_ as exc:
+            raise RegisterError(reason_of(exc)) from None
 
         self._sa, self._schema = sa, schema
         self.url = _normalise_url(url)
         self.is_sqlite = self.url.startswith("sqlite")
+        self.read_only = False
+        self.timezone = lab_timezone(timezone)
+        self._sqlite_path = ""
         try:
             if self.is_sqlite:
                 path = self.url.split("///", 1)[1] if "///" in self.url else ""
                 if path and path != ":memory:":
-                    Path(path).parent.mkdir(parents=True, exist_ok=True)
-                self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
-                sa.event.listen(self.engine, "connect", _sqlite_connect)
+                    self._sqlite_path = path
+                    file = Path(path)
+                    if file.exists() and not (os.access(file, os.W_OK)
+                                              and os.access(file.parent, os.W_OK)):
+                        self.read_only = True
+                    else:
+                        file.parent.mkdir(parents=True, exist_ok=True)
+                if self.read_only:
+                    from urllib.parse import quote
+
+                    self.engine = sa.create_engine(
+                        f"sqlite:///file:{quote(path)}?mode=ro&immutable=1&uri=true",
+                        connect_args={"timeout": 60})
+                    sa.event.listen(self.engine, "connect", _sqlite_connect_read_only)
+                else:
+                    self.engine = sa.create_engine(self.url, connect_args={"timeout": 60})
+                    sa.event.listen(self.engine, "connect", _sqlite_connect)
                 sa.event.listen(self.engine, "begin", _sqlite_begin)
             else:
-                self.engine = sa.create_engine(self.url, pool_pre_ping=True)
+                import socket
+
+                self.engine = sa.create_engine(self.url, pool_pre_ping=True, connect_args={
+                    "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
+                                        f"pid {os.getpid()}"[:63]})
             try:
                 self._migrate()
-                #: what the hash chain found changed since issue (checked on opening)
+                #: what the chain, the state and the counters found changed since issue
+                #: (checked on opening; the stored PDFs on demand: audit(pdfs=True))
                 self.problems = self.audit()
             except BaseException:
                 self.engine.dispose()
@@ -194,25 +297,74 @@ class Register:
         self.close()
 
     # -- schema ---------------------------------------------------------------------------
+    def _version_in(self, conn) -> int | None:
+        sa, schema = self._sa, self._schema
+        if not sa.inspect(conn).has_table("schema_version"):
+            return None
+        versions = conn.execute(sa.select(schema.SCHEMA_VERSION.c.version)).scalars().all()
+        if len(versions) != 1:
+            raise RegisterTampered(message(QT_TR_NOOP(
+                "register {display_url}: the table schema_version holds {n} rows instead of "
+                "one: it was changed outside AngleBench; the register is not opened"),
+                display_url=self.display_url, n=len(versions)))
+        return versions[0]
+
+    def _check_version(self, conn, version: int) -> None:
+        schema = self._schema
+        if version > schema.LATEST:
+            raise RegisterError(message(
+                QT_TR_NOOP("register {display_url} is at schema version {version}, made by a newer "
+                           "AngleBench than {version__} (knows {latest}): open it with that version"),
+                display_url=self.display_url, version=version, version__=__version__,
+                latest=schema.LATEST))
+        if version < 1:
+            raise RegisterTampered(message(QT_TR_NOOP(
+                "register {display_url}: schema version {version} is no version AngleBench "
+                "ever made: it was changed outside AngleBench; the register is not opened"),
+                display_url=self.display_url, version=version))
+        evidence = schema.downgrade_evidence(conn, version)
+        if evidence:
+            raise RegisterTampered(message(QT_TR_NOOP(
+                "register {display_url}: schema version {version} was set back ({evidence}): "
+                "a migration would rewrite the records' hash chain, so the register is not "
+                "opened; restore the version or the register from a backup"),
+                display_url=self.display_url, version=version, evidence=evidence))
+
     def _migrate(self) -> None:
         sa, schema = self._sa, self._schema
+        with self._read() as conn:
+            version = self._version_in(conn)
+            if version is not None:
+                self._check_version(conn, version)
+        if version == schema.LATEST:
+            return  # nothing to do: no write lock taken
+        if self.read_only:
+            raise RegisterError(message(QT_TR_NOOP(
+                "register {display_url} is read-only and at schema version {version}: it must "
+                "be migrated to {latest} by an AngleBench that can write it"),
+                display_url=self.display_url, version=version or 0, latest=schema.LATEST))
         with self.engine.begin() as conn:
             if not self.is_sqlite:
                 conn.execute(sa.text("SELECT pg_advisory_xact_lock(:k)"), {"k": _ADVISORY_LOCK})
-            if not sa.inspect(conn).has_table("schema_version"):
+            version = self._version_in(conn)
+            if version is None:
                 schema.SCHEMA_VERSION.create(conn)
                 conn.execute(schema.SCHEMA_VERSION.insert().values(version=0))
-            version = conn.execute(sa.select(schema.SCHEMA_VERSION.c.version)).scalar_one()
-            if version > schema.LATEST:
-                raise RegisterError(message(
-                    QT_TR_NOOP("register {display_url} is at schema version {version}, made by a newer "
-                               "AngleBench than {version__} (knows {latest}): open it with that version"),
-                    display_url=self.display_url, version=version, version__=__version__,
-                    latest=schema.LATEST))
+                version = 0
+            else:
+                self._check_version(conn, version)
             for step in range(version + 1, schema.LATEST + 1):
-                schema.MIGRATIONS[step](conn)
+                try:
+                    schema.MIGRATIONS[step](conn)
+                except ValueError as exc:
+                    raise RegisterTampered(message(QT_TR_NOOP(
+                        "register {display_url}: migration to schema version {step} refused: "
+                        "{reason}; the records' hash chain is never recomputed"),
+                        display_url=self.display_url, step=step, reason=str(exc))) from None
             if version < schema.LATEST:
                 conn.execute(schema.SCHEMA_VERSION.update().values(version=schema.LATEST))
+                conn.execute(schema.STATE.update().where(
+                    schema.STATE.c.name == "schema_version").values(value=str(schema.LATEST)))
 
     @property
     def version(self) -> int:
@@ -221,8 +373,10 @@ class Register:
 
     @contextmanager
     def _read(self) -> Iterator[Any]:
+        """A connection that reads: no write lock (SQLite: a deferred transaction)."""
         try:
             with self.engine.connect() as conn:
+                conn.execution_options(anglebench_read=True)
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
             raise RegisterError(message(
@@ -231,30 +385,122 @@ class Register:
 
     @contextmanager
     def _write(self) -> Iterator[Any]:
-        """One transaction: committed when the block ends, rolled back on any exception."""
+        """One transaction: committed when the block ends, rolled back on any exception.
+        On PostgreSQL its statements wait at most LOCK_TIMEOUT_S for a lock, then the
+        refusal names who holds it."""
+        if self.read_only:
+            raise RegisterError(message(QT_TR_NOOP(
+                "register {display_url} is read-only: it can be listed and verified, not "
+                "written"), display_url=self.display_url))
         try:
             with self.engine.begin() as conn:
+                if not self.is_sqlite:
+                    conn.execute(self._sa.text(
+                        f"SET LOCAL lock_timeout = '{LOCK_TIMEOUT_S}s'"))
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:  # a unique number taken meanwhile too
+            reason = _reason(exc)
+            if getattr(getattr(exc, "orig", None), "sqlstate", "") == "55P03":
+                reason = message(QT_TR_NOOP(
+                    "waited {s} s for the register's lock, held by {holder}"),
+                    s=LOCK_TIMEOUT_S, holder=self._lock_holders() or "?")
             raise RegisterError(message(
                 QT_TR_NOOP("register {display_url}: {reason}"),
-                display_url=self.display_url, reason=_reason(exc))) from None
+                display_url=self.display_url, reason=reason)) from None
+
+    def _lock_holders(self) -> str:
+        """PostgreSQL: the sessions holding the register's locks (user, program, client,
+        since when)."""
+        try:
+            with self.engine.connect() as conn:
+                rows = conn.execute(self._sa.text(
+                    "SELECT DISTINCT a.pid, a.usename, a.application_name, a.client_addr, "
+                    "a.xact_start FROM pg_locks l JOIN pg_stat_activity a ON a.pid = l.pid "
+                    "WHERE l.granted AND a.pid <> pg_backend_pid() AND a.datname = "
+                    "current_database() AND (l.locktype = 'advisory' OR l.relation IS NOT "
+                    "NULL) ORDER BY a.xact_start")).all()
+        except self._sa.exc.SQLAlchemyError:
+            return ""
+        return "; ".join(f"pid {r.pid} ({r.usename}, {r.application_name or '—'}, "
+                         f"{r.client_addr or 'local'}, in a transaction since {r.xact_start})"
+                         for r in rows)
+
+    # -- the chain's state -------------------------------------------------------------
+    def _tail(self, conn) -> tuple[int, str]:
+        """The records in the chain and its head, as the records themselves give them (the
+        highest place and its chain value)."""
+        sa, schema = self._sa, self._schema
+        best = (0, GENESIS)
+        for table in (schema.CERTIFICATES, schema.ENTRIES):
+            row = conn.execute(sa.select(table.c.seq, table.c.chain_sha256)
+                               .where(table.c.seq.is_not(None))
+                               .order_by(table.c.seq.desc()).limit(1)).first()
+            if row is not None and row.seq > best[0]:
+                best = (row.seq, row.chain_sha256 or GENESIS)
+        return best
+
+    def _state(self, conn) -> tuple[int, str]:
+        """The record count and head the register wrote with its last record; refuses
+        (RegisterError) when the records no longer end there."""
+        sa, schema = self._sa, self._schema
+        state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
+        try:
+            records, head = int(state["records"]), state["head"]
+        except (KeyError, ValueError):
+            raise RegisterError(message(QT_TR_NOOP(
+                "the register's state row was changed or deleted: nothing is recorded into "
+                "it until 'anglebench register verify' is clean"))) from None
+        if (records, head) != self._tail(conn) or self.problems:
+            raise RegisterError(message(QT_TR_NOOP(
+                "the register's records were changed after issue ({problem}): nothing is "
+                "recorded into a broken chain; see 'anglebench register verify'"),
+                problem=self.problems[0] if self.problems else message(QT_TR_NOOP(
+                    "its last record is not the one it recorded last"))))
+        return records, head
+
+    def _append_entry(self, conn, kind: str, subject: str, body: dict) -> str:
+        """A chained entry after the current head; returns its chain value."""
+        from models.register.chain import link_entry
+
+        schema = self._schema
+        records, head = self._state(conn)
+        entry = {"seq": records + 1, "kind": kind, "subject": subject,
+                 "body_json": json.dumps(body, sort_keys=True, ensure_ascii=False),
+                 "recorded_at": self.clock().astimezone(dt.timezone.utc).replace(
+                     microsecond=0).isoformat(),
+                 "os_user": _os_user(), "workstation": socket.gethostname()}
+        chain = link_entry(head, entry)
+        conn.execute(schema.ENTRIES.insert().values(**entry, chain_sha256=chain,
+                                                    signature=self._sign(chain)))
+        self._set_state(conn, records + 1, chain)
+        return chain
+
+    def _sign(self, chain: str) -> str | None:
+        from models.register.signing import sign
+
+        return sign(self._key, chain) if self._key else None
+
+    def _set_state(self, conn, records: int, head: str) -> None:
+        state = self._schema.STATE
+        conn.execute(state.update().where(state.c.name == "records").values(value=str(records)))
+        conn.execute(state.update().where(state.c.name == "head").values(value=head))
 
     # -- issuing --------------------------------------------------------------------------
-    def _allocate(self, conn, scheme: str, date: dt.date) -> str:
-        sa, certificates = self._sa, self._schema.CERTIFICATES
+    def _next_value(self, conn, scheme: str, date: dt.date) -> tuple[str, str, int | None, int]:
+        """The counter of ``scheme`` on ``date``, its value now (None: no row yet), the value
+        the next number takes (numbers typed by hand before are skipped) and that number."""
+        sa, schema = self._sa, self._schema
         name = _counter_name(scheme, date)
-        statement = sa.text(
-            "INSERT INTO counters (name, last_value) VALUES (:name, 1) "
-            "ON CONFLICT (name) DO UPDATE SET last_value = counters.last_value + 1 "
-            "RETURNING last_value")
-        for _ in range(10_000):  # skip numbers typed by hand before the register numbered
-            seq = conn.execute(statement, {"name": name}).scalar_one()
-            number = format_certificate_number(scheme, seq, date)
-            taken = conn.execute(sa.select(certificates.c.id).where(
-                certificates.c.number == number)).first()
+        before = conn.execute(sa.select(schema.COUNTERS.c.last_value).where(
+            schema.COUNTERS.c.name == name)).scalar_one_or_none()
+        value = (before or 0) + 1
+        for _ in range(10_000):
+            number = format_certificate_number(scheme, value, date)
+            taken = conn.execute(sa.select(schema.CERTIFICATES.c.id).where(
+                schema.CERTIFICATES.c.number == number)).first()
             if taken is None:
-                return number
+                return name, number, before, value
+            value += 1
         raise RegisterError(message(
             QT_TR_NOOP("no free number in scheme '{scheme}'"),
             scheme=scheme))
@@ -262,7 +508,7 @@ class Register:
     def continue_numbering(self, scheme: str, date: dt.date, next_sequence: int) -> str:
         """A lab moving to the register from numbers issued by hand: the next number the
         scheme allocates (for ``date``'s year, month …) is ``next_sequence``. Never moves the
-        counter back. Returns that next number."""
+        counter back. Recorded as a chained entry. Returns that next number."""
         if next_sequence < 1:
             raise RegisterError(message(
                 QT_TR_NOOP("the next sequence number must be 1 or more")))
@@ -282,6 +528,7 @@ class Register:
             else:
                 conn.execute(counters.update().where(counters.c.name == name).values(
                     last_value=next_sequence - 1))
+            self._append_entry(conn, "numbering", name, {"last_value": next_sequence - 1})
         return format_certificate_number(scheme, next_sequence, date)
 
     def _check_free(self, conn, number: str) -> None:
@@ -298,73 +545,165 @@ class Register:
                 number=number, issued_at=row.issued_at[:10], workbench=row.workbench,
                 value=row.item_serial or '—'))
 
-    def issue(self, request: IssueRequest, render: Callable[[CertificateMetadata], bytes],
+    def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
+              issue_date: dt.date, now: dt.datetime) -> _Plan:
+        sa, certificates = self._sa, self._schema.CERTIFICATES
+        records, head = self._state(conn)
+        last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number)
+                            .order_by(certificates.c.id.desc()).limit(1)).first()
+        if last is not None and _parse_time(last.issued_at) > now:
+            raise RegisterError(message(QT_TR_NOOP(
+                "the computer's clock says {now}, before the register's last record ({number}, "
+                "issued {then}): the clock was set back; nothing is issued until it is right"),
+                now=now.isoformat(), number=last.number, then=last.issued_at))
+        revision, original = "original", None
+        counter = before = value = None
+        if supersedes:
+            original = self._current(conn, supersedes)
+            if original.issue_date > issue_date.isoformat():
+                raise RegisterError(message(QT_TR_NOOP(
+                    "{number} was issued on {original}: an amendment or replacement cannot "
+                    "be dated {today}, before it (check the computer's clock)"),
+                    number=original.number, original=original.issue_date,
+                    today=issue_date.isoformat()))
+            if replacement:
+                revision = "replacement"
+                counter, number, before, value = self._next_value(conn, meta.number_scheme,
+                                                                  issue_date)
+            else:
+                n = _amendment_count(conn, self, original) + 1
+                revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
+                self._check_free(conn, number)
+        elif meta.certificate_number:
+            number = meta.certificate_number
+            self._check_free(conn, number)
+        else:
+            counter, number, before, value = self._next_value(conn, meta.number_scheme,
+                                                              issue_date)
+        return _Plan(number, records + 1, head, counter, before, value, original, revision)
+
+    def _unchanged(self, conn, plan: _Plan) -> bool:
+        """Whether the register is still as ``plan`` read it (in the write transaction)."""
+        counters = self._schema.COUNTERS
+        if self._state(conn) != (plan.seq - 1, plan.head):
+            return False
+        if plan.counter is None:
+            return True
+        now = conn.execute(self._sa.select(counters.c.last_value).where(
+            counters.c.name == plan.counter)).scalar_one_or_none()
+        return now == plan.counter_before
+
+    def issue(self, request: IssueRequest, render: Callable[..., bytes],
               *, supersedes: str = "", change_note: str = "", replacement: bool = False
               ) -> tuple[CertificateRecord, bytes]:
-        """Allocate the number (or check the one given), render the PDF with it, record it:
-        one transaction. ``supersedes`` issues an amendment (number ``<original>-A<n>``) or,
-        with ``replacement``, a new certificate replacing the original; the original is
-        kept unchanged and marked superseded. Returns the record and the PDF."""
+        """Allocate the number (or check the one given), render the PDF with it and with
+        the chain's head before it, record it. The PDF is rendered outside any lock with
+        the number and head the register expects next; one short transaction then checks
+        that they still are (else renders again) and commits number, record and PDF — no
+        gaps, no duplicates. ``render(meta)`` or ``render(meta, head=…)``. ``supersedes``
+        issues an amendment (number ``<original>-A<n>``) or, with ``replacement``, a new
+        certificate replacing the original; the original is kept unchanged and marked
+        superseded. Returns the record and the PDF."""
+        from models.register.identifiers import IdentifierError, normalise_identifier
+
         meta = request.metadata
-        now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
-        issue_date = now.date()  # the date of issue is the day the register issues it
-        _check_issuable(meta, issue_date)
+        try:
+            number = normalise_identifier(meta.certificate_number, message(
+                QT_TR_NOOP("certificate number")))
+            serial = normalise_identifier(meta.item_serial, message(QT_TR_NOOP("serial number")))
+        except IdentifierError as exc:
+            raise RegisterError(reason_of(exc)) from None
+        if number.upper().startswith("SPECIMEN"):
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate number {number}: numbers beginning SPECIMEN are kept for specimen "
+                "certificates, which are never recorded"), number=number))
+        meta = dataclasses.replace(meta, certificate_number=number, item_serial=serial)
+        if self.problems:
+            raise RegisterError(message(QT_TR_NOOP(
+                "the register's records were changed after issue ({problem}): nothing is "
+                "recorded into a broken chain; see 'anglebench register verify'"),
+                problem=self.problems[0]))
+        self._check_approval(meta)
         certificates = self._schema.CERTIFICATES
-        with self._write() as conn:
-            revision, original = "original", None
-            if supersedes:
-                original = self._current(conn, supersedes)
-                if original.issue_date > issue_date.isoformat():
-                    raise RegisterError(message(QT_TR_NOOP(
-                        "{number} was issued on {original}: an amendment or replacement cannot "
-                        "be dated {today}, before it (check the computer's clock)"),
-                        number=original.number, original=original.issue_date,
-                        today=issue_date.isoformat()))
-                if replacement:
-                    revision = "replacement"
-                    number = self._allocate(conn, meta.number_scheme, issue_date)
-                else:
-                    n = _amendment_count(conn, self, original) + 1
-                    revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
-                    self._check_free(conn, number)
-            elif meta.certificate_number:
-                number = meta.certificate_number
-                self._check_free(conn, number)
-            else:
-                number = self._allocate(conn, meta.number_scheme, issue_date)
-            final = dataclasses.replace(
-                meta, certificate_number=number, issue_date=issue_date.isoformat(),
-                created=now.isoformat(),
-                supersedes=original.number if original else "",
-                revision="" if revision == "original" else revision, change_note=change_note)
-            pdf = render(final)
-            record = CertificateRecord(
-                number=number,
-                issued_at=now.isoformat(),
-                issue_date=issue_date.isoformat(), calibration_date=meta.calibration_date,
-                workbench=request.workbench, item_description=meta.item_description,
-                item_manufacturer=meta.item_manufacturer, item_serial=meta.item_serial,
-                customer=meta.customer_name, operator=meta.operator,
-                workstation=socket.gethostname(), status="issued",
-                supersedes=original.number if original else None, superseded_by=None,
-                revision=revision, change_note=change_note,
-                project_json=_with_metadata(request.project_json, request.workbench, final),
-                software_json=json.dumps(software_versions(), sort_keys=True),
-                headline_json=json.dumps(request.headline, sort_keys=True),
-                pdf_sha256=hashlib.sha256(pdf).hexdigest())
-            if not self.is_sqlite:  # SQLite's BEGIN IMMEDIATE already serialises writers
-                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
-                             {"k": _CHAIN_LOCK})
-            previous = conn.execute(self._sa.select(certificates.c.chain_sha256).order_by(
-                certificates.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
-            conn.execute(certificates.insert().values(
-                **dataclasses.asdict(record), pdf=pdf,
-                chain_sha256=link(previous, dataclasses.asdict(record))))
-            if original is not None:
-                conn.execute(certificates.update().where(
-                    certificates.c.number == original.number).values(
-                    status="superseded", superseded_by=number))
-        return record, pdf
+        user = _os_user()
+        with self._issuing_turn() as turn:
+            for _attempt in range(ISSUE_ATTEMPTS):
+                # the time of issue is taken for each attempt: a record committed by another
+                # issuer meanwhile is then always before it
+                now = self.clock().astimezone(dt.timezone.utc).replace(microsecond=0)
+                issue_date = now.astimezone(self.timezone).date()  # the lab's local date
+                _check_issuable(meta, issue_date)
+                with self._read() as conn:
+                    plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
+                original = plan.original
+                final = dataclasses.replace(
+                    meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
+                    created=now.isoformat(),
+                    supersedes=original.number if original else "",
+                    revision="" if plan.revision == "original" else plan.revision,
+                    change_note=change_note)
+                pdf = _call_render(render, final, plan.head)
+                record = CertificateRecord(
+                    number=plan.number,
+                    issued_at=now.isoformat(),
+                    issue_date=issue_date.isoformat(), calibration_date=meta.calibration_date,
+                    workbench=request.workbench, item_description=meta.item_description,
+                    item_manufacturer=meta.item_manufacturer, item_serial=meta.item_serial,
+                    customer=meta.customer_name, operator=meta.operator,
+                    workstation=socket.gethostname(), status="issued",
+                    supersedes=original.number if original else None, superseded_by=None,
+                    revision=plan.revision, change_note=change_note,
+                    project_json=_with_metadata(request.project_json, request.workbench, final),
+                    software_json=json.dumps(software_versions(), sort_keys=True),
+                    headline_json=json.dumps(request.headline, sort_keys=True),
+                    pdf_sha256=hashlib.sha256(pdf).hexdigest(),
+                    seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
+                    os_user=user, approver=meta.approver, chain_format=2)
+                chain = link(plan.head, dataclasses.asdict(record))
+                record = dataclasses.replace(record, chain_sha256=chain,
+                                             signature=self._sign(chain))
+                with self._write() as conn:
+                    if not self.is_sqlite:  # SQLite's BEGIN IMMEDIATE already serialises
+                        conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                                     {"k": _CHAIN_LOCK})
+                    if self._unchanged(conn, plan):
+                        if original is not None:
+                            current = self._current(conn, original.number)
+                            if current.status != "issued":
+                                continue
+                        self._check_free(conn, plan.number)
+                        conn.execute(certificates.insert().values(
+                            **dataclasses.asdict(record), pdf=pdf))
+                        if plan.counter is not None:
+                            counters = self._schema.COUNTERS
+                            if plan.counter_before is None:
+                                conn.execute(counters.insert().values(
+                                    name=plan.counter, last_value=plan.counter_value))
+                            else:
+                                conn.execute(counters.update().where(
+                                    counters.c.name == plan.counter).values(
+                                    last_value=plan.counter_value))
+                        self._set_state(conn, plan.seq, record.chain_sha256)
+                        if original is not None:
+                            conn.execute(certificates.update().where(
+                                certificates.c.number == original.number).values(
+                                status="superseded", superseded_by=plan.number))
+                        return record, pdf
+                turn.take()  # another issue came first: render again, in turn
+        raise RegisterError(message(QT_TR_NOOP(
+            "the register was busy: {n} other certificates were issued while this one was "
+            "being made; try again"), n=ISSUE_ATTEMPTS))
+
+    @contextmanager
+    def _issuing_turn(self) -> Iterator[Any]:
+        """After a lost race an issuer waits for its turn (an advisory lock: a file lock
+        beside a SQLite register, a session lock on PostgreSQL) so that it renders at most
+        twice; the database's own lock is held only for the commit."""
+        turn = _Turn(self)
+        try:
+            yield turn
+        finally:
+            turn.release()
 
     @staticmethod
     def clock() -> dt.datetime:
@@ -373,11 +712,70 @@ class Register:
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
+        if record.status == "withdrawn":
+            raise RegisterError(message(
+                QT_TR_NOOP("{number} was withdrawn ({reason}): it cannot be amended or replaced"),
+                number=number, reason=record.withdrawn_reason or "—"))
         if record.status != "issued":
             raise RegisterError(message(
                 QT_TR_NOOP("{number} was superseded by {superseded_by}: amend or replace that one"),
                 number=number, superseded_by=record.superseded_by))
         return record
+
+    def withdraw(self, number: str, reason: str) -> str:
+        """Withdraw (void) certificate ``number`` with ``reason``: a new chained record; the
+        certificate is kept unchanged and marked withdrawn. Returns the entry's chain value."""
+        reason = " ".join((reason or "").split())
+        if not reason:
+            raise RegisterError(message(QT_TR_NOOP(
+                "a certificate is withdrawn with a reason (--reason)")))
+        certificates = self._schema.CERTIFICATES
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            self._current(conn, number)
+            chain = self._append_entry(conn, "withdrawal", number, {"reason": reason})
+            conn.execute(certificates.update().where(certificates.c.number == number).values(
+                status="withdrawn", withdrawn_reason=reason))
+        return chain
+
+    # -- approval ---------------------------------------------------------------------------
+    def signatories(self) -> tuple[list[str], bool]:
+        """The lab's authorised signatories (empty: none configured, any named approver is
+        accepted) and whether the approver must differ from the operator: the last
+        ``signatories`` entry of the chain."""
+        entries = self._schema.ENTRIES
+        with self._read() as conn:
+            body = conn.execute(self._sa.select(entries.c.body_json).where(
+                entries.c.kind == "signatories").order_by(entries.c.seq.desc()).limit(1)
+            ).scalar_one_or_none()
+        data = json.loads(body) if body else {}
+        return list(data.get("names", [])), bool(data.get("distinct", False))
+
+    def set_signatories(self, names: list[str], distinct: bool) -> None:
+        """Configure the authorised signatories (an empty list: none, any named approver is
+        accepted, as before) and whether approver and operator must differ: a chained entry."""
+        cleaned = sorted({" ".join(n.split()) for n in names if n.strip()})
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            self._append_entry(conn, "signatories", "lab",
+                               {"names": cleaned, "distinct": bool(distinct)})
+
+    def _check_approval(self, meta: CertificateMetadata) -> None:
+        names, distinct = self.signatories()
+        approver = " ".join(meta.approver.split())
+        if names and approver.casefold() not in {n.casefold() for n in names}:
+            raise RegisterError(message(QT_TR_NOOP(
+                "\"{approver}\" is not one of the lab's authorised signatories ({names}): "
+                "the certificate is approved by one of them"),
+                approver=approver, names=", ".join(names)))
+        if distinct and approver.casefold() == " ".join(meta.operator.split()).casefold():
+            raise RegisterError(message(QT_TR_NOOP(
+                "the lab requires the approver to differ from the operator: {name} cannot "
+                "approve a calibration they made"), name=approver))
 
     # -- reading --------------------------------------------------------------------------
     def _get(self, conn, number: str) -> CertificateRecord:
@@ -391,8 +789,37 @@ class Register:
         return CertificateRecord(**row._asdict())
 
     def get(self, number: str) -> CertificateRecord:
+        from models.register.identifiers import IdentifierError, normalise_identifier
+
         with self._read() as conn:
-            return self._get(conn, number)
+            try:
+                return self._get(conn, number)
+            except RegisterError:
+                try:
+                    alike = normalise_identifier(number)
+                except IdentifierError:
+                    raise RegisterError(message(
+                        QT_TR_NOOP("no certificate {number} in the register"),
+                        number=number)) from None
+                return self._get(conn, alike)
+
+    def chain_before(self, number: str) -> str:
+        """The chain's head before certificate ``number`` (what its PDF prints)."""
+        record = self.get(number)
+        sa, schema = self._sa, self._schema
+        with self._read() as conn:
+            if record.seq is None:
+                row = conn.execute(sa.select(schema.CERTIFICATES.c.chain_sha256).where(
+                    schema.CERTIFICATES.c.id < sa.select(schema.CERTIFICATES.c.id).where(
+                        schema.CERTIFICATES.c.number == number).scalar_subquery())
+                    .order_by(schema.CERTIFICATES.c.id.desc()).limit(1)).scalar_one_or_none()
+                return row or GENESIS
+            for table in (schema.CERTIFICATES, schema.ENTRIES):
+                value = conn.execute(sa.select(table.c.chain_sha256).where(
+                    table.c.seq == record.seq - 1)).scalar_one_or_none()
+                if value:
+                    return value
+        return GENESIS
 
     def pdf(self, number: str, checked: bool = True) -> bytes:
         """Return the PDF as issued. With ``checked``, raise RegisterError when it no longer
@@ -415,52 +842,124 @@ class Register:
 
     def audit(self, pdfs: bool = False) -> list:
         """List what was changed in the database after issue, one message per finding (an
-        empty list when nothing was found). The hash chain is recomputed over every record,
-        each record's status is checked against the record that supersedes it, and with
-        ``pdfs`` each stored PDF is checked against its SHA-256."""
-        sa, certificates = self._sa, self._schema.CERTIFICATES
-        columns = ("id", *CHAINED, "status", "superseded_by", "chain_sha256")
+        empty list when nothing was found): the hash chain recomputed over every record
+        and entry in their order, their places counted against the state row, the counters
+        against the records numbered from them, the intervals and each record's status
+        against the entries and records that set them; with ``pdfs`` each stored PDF against
+        its SHA-256."""
+        from models.register.chain import link_entry
+
+        sa, schema = self._sa, self._schema
+        certificates, entries = schema.CERTIFICATES, schema.ENTRIES
+        columns = ("id", *CHAINED, *CHAINED_V2, "chain_format", "status", "superseded_by",
+                   "withdrawn_reason", "chain_sha256", "signature")
         problems: list = []
-        previous = GENESIS
-        superseders: dict[str, str] = {}
         with self._read() as conn:
             rows = conn.execute(sa.select(*(certificates.c[c] for c in columns))
-                                .order_by(certificates.c.id)).all()
+                                .order_by(certificates.c.seq, certificates.c.id)).all()
+            notes = conn.execute(sa.select(entries).order_by(entries.c.seq)).all()
+            state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
+            counters = dict(conn.execute(sa.select(schema.COUNTERS.c.name,
+                                                   schema.COUNTERS.c.last_value)).all())
+            intervals = dict(conn.execute(sa.select(schema.INSTRUMENTS.c.serial,
+                                                    schema.INSTRUMENTS.c.interval_days)).all())
+            links = sorted([(r.seq, 0, r) for r in rows if r.seq is not None]
+                           + [(e.seq, 1, e) for e in notes], key=lambda t: (t[0], t[1]))
             for row in rows:
-                previous = link(previous, row._asdict())
-                if row.chain_sha256 != previous:
+                if row.seq is None:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: it has no place in the hash chain (inserted after "
+                        "issue)"), number=row.number))
+            previous, expected = GENESIS, 1
+            for seq, is_entry, item in links:
+                name = (message(QT_TR_NOOP("entry {kind} {subject}"), kind=item.kind,
+                                subject=item.subject) if is_entry else item.number)
+                if seq != expected:
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: it is at place {seq} of the chain, where {expected} "
+                        "was expected (records deleted or inserted before it)"),
+                        number=name, seq=seq, expected=expected))
+                expected = seq + 1
+                fields = item._asdict()
+                value = link_entry(previous, fields) if is_entry else link(previous, fields)
+                if item.chain_sha256 != value:
                     problems.append(message(QT_TR_NOOP(
                         "record {number}: the hash chain is broken here (this record, or one "
                         "before it, was changed, inserted or deleted after issue)"),
-                        number=row.number))
-                    previous = row.chain_sha256 or previous  # report each break once
-                if row.supersedes:
-                    superseders[row.supersedes] = row.number
-                if pdfs:
+                        number=name))
+                previous = item.chain_sha256 or value  # report each break once
+                if pdfs and not is_entry:
                     data = conn.execute(sa.select(certificates.c.pdf).where(
-                        certificates.c.id == row.id)).scalar_one()
-                    if hashlib.sha256(bytes(data)).hexdigest() != row.pdf_sha256:
+                        certificates.c.id == item.id)).scalar_one()
+                    if hashlib.sha256(bytes(data)).hexdigest() != item.pdf_sha256:
                         problems.append(message(QT_TR_NOOP(
                             "record {number}: the stored PDF does not match the SHA-256 "
-                            "recorded at issue"), number=row.number))
-        for row in rows:
-            by = superseders.get(row.number)
-            if (row.status, row.superseded_by) != (("superseded", by) if by else ("issued", None)):
+                            "recorded at issue"), number=item.number))
+        problems += self._signature_problems(links)
+        count = len(links)
+        if state.get("records") != str(count) or state.get("head") != previous:
+            problems.append(message(QT_TR_NOOP(
+                "the register recorded {recorded} record(s) ending at chain head {head}, but "
+                "holds {count} ending at {actual}: records were deleted (the tail truncated) "
+                "or added after issue"), recorded=state.get("records", "?"),
+                head=(state.get("head") or "?")[:16], count=count, actual=previous[:16]))
+        problems += _cross_checks(rows, notes, counters, intervals)
+        return problems
+
+    def _signature_problems(self, links: list) -> list:
+        """With the lab's key: every signature must be the key's; from the first signed
+        record on every record must be signed, the last one always (a record forged and
+        appended after the last genuine one carries no valid signature)."""
+        from models.register.signing import signature_ok
+
+        if not self._key or not links:
+            return []
+        problems: list = []
+        signed_since = None
+        for _seq, is_entry, item in links:
+            name = (message(QT_TR_NOOP("entry {kind} {subject}"), kind=item.kind,
+                            subject=item.subject) if is_entry else item.number)
+            if item.signature is not None:
+                if not signature_ok(self._key, item.chain_sha256 or "", item.signature):
+                    problems.append(message(QT_TR_NOOP(
+                        "record {number}: its signature is not the laboratory key's: it was "
+                        "changed, or forged, outside AngleBench"), number=name))
+                signed_since = signed_since or name
+            elif signed_since is not None or item is links[-1][2]:
                 problems.append(message(QT_TR_NOOP(
-                    "record {number}: marked \"{status}\" (superseded by {marked}), but the "
-                    "register's records say {by}"), number=row.number, status=row.status,
-                    marked=row.superseded_by or "—",
-                    by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
-                    or message(QT_TR_NOOP("issued, superseded by none"))))
+                    "record {number}: not signed with the laboratory's key (the last record "
+                    "and every one since the first signed are): added outside AngleBench, or "
+                    "issued without the key"), number=name))
         return problems
 
     def chain_head(self) -> str:
         """The chain after the last record (GENESIS for an empty register): noted outside the
         database, it anchors every record issued before."""
-        certificates = self._schema.CERTIFICATES
         with self._read() as conn:
-            return conn.execute(self._sa.select(certificates.c.chain_sha256).order_by(
-                certificates.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
+            return self._tail(conn)[1]
+
+    def find_head(self, value: str) -> tuple[int, str] | None:
+        """Where the chain passed through ``value`` (a head noted from an earlier day or
+        printed on a certificate; 12 or more leading hex digits do): its place and the
+        full value; None when no record's chain is that (the history up to it rewritten, or
+        another register's). RegisterError when the digits fit several."""
+        value = value.strip().lower()
+        if not re.fullmatch(r"[0-9a-f]{12,64}", value):
+            raise RegisterError(message(QT_TR_NOOP(
+                "head '{value}': a chain head is 12 to 64 hexadecimal digits"), value=value))
+        if GENESIS.startswith(value):
+            return 0, GENESIS
+        sa, schema = self._sa, self._schema
+        found = []
+        with self._read() as conn:
+            for table in (schema.CERTIFICATES, schema.ENTRIES):
+                found += conn.execute(sa.select(table.c.seq, table.c.chain_sha256).where(
+                    table.c.chain_sha256.like(f"{value}%"))).all()
+        if len(found) > 1:
+            raise RegisterError(message(QT_TR_NOOP(
+                "head '{value}' fits {n} records: give more of its digits"), value=value,
+                n=len(found)))
+        return (found[0].seq or 0, found[0].chain_sha256) if found else None
 
     def list(self, search: str = "", limit: int = 10_000) -> list[CertificateRecord]:
         """Newest first; ``search`` matches the number, the serial or the customer (any case)."""
@@ -474,18 +973,26 @@ class Register:
         with self._read() as conn:
             return [CertificateRecord(**row._asdict()) for row in conn.execute(query)]
 
-    def verify(self, pdf: bytes) -> CertificateRecord | None:
-        """The record whose PDF is byte for byte this one (by SHA-256), or None."""
+    def verify_all(self, pdf: bytes) -> list[CertificateRecord]:
+        """Every record whose PDF is byte for byte this one (by SHA-256): one for a genuine
+        PDF; more than one when a record was copied into the register."""
         certificates = self._schema.CERTIFICATES
         digest = hashlib.sha256(pdf).hexdigest()
         with self._read() as conn:
-            number = conn.execute(self._sa.select(certificates.c.number).where(
-                certificates.c.pdf_sha256 == digest)).scalar_one_or_none()
-            return None if number is None else self._get(conn, number)
+            numbers = conn.execute(self._sa.select(certificates.c.number).where(
+                certificates.c.pdf_sha256 == digest).order_by(certificates.c.id)).scalars().all()
+            return [self._get(conn, number) for number in numbers]
+
+    def verify(self, pdf: bytes) -> CertificateRecord | None:
+        """The record whose PDF is byte for byte this one (by SHA-256), or None; the first
+        when several are (see :meth:`verify_all`)."""
+        found = self.verify_all(pdf)
+        return found[0] if found else None
 
     def history(self, serial: str) -> list[CertificateRecord]:
         """Every certificate of an instrument, oldest calibration first."""
         certificates = self._schema.CERTIFICATES
+        serial = _alike(serial)
         with self._read() as conn:
             rows = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
                                 .where(certificates.c.item_serial == serial)
@@ -494,20 +1001,31 @@ class Register:
 
     # -- calibration intervals -------------------------------------------------------------
     def set_interval(self, serial: str, days: int | None) -> None:
+        """Set (or with None or 0 clear) an instrument's interval: a chained entry."""
+        from models.register.identifiers import IdentifierError, normalise_identifier
+
+        try:
+            serial = normalise_identifier(serial, message(QT_TR_NOOP("serial number")))
+        except IdentifierError as exc:
+            raise RegisterError(reason_of(exc)) from None
+        if days is not None and days < 0:
+            raise RegisterError(message(
+                QT_TR_NOOP("a calibration interval is a positive number of days")))
         instruments = self._schema.INSTRUMENTS
         with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
             conn.execute(instruments.delete().where(instruments.c.serial == serial))
             if days:
-                if days < 1:
-                    raise RegisterError(message(
-                        QT_TR_NOOP("a calibration interval is a positive number of days")))
                 conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
+            self._append_entry(conn, "interval", serial, {"days": int(days) if days else None})
 
     def interval(self, serial: str) -> int | None:
         instruments = self._schema.INSTRUMENTS
         with self._read() as conn:
             return conn.execute(self._sa.select(instruments.c.interval_days).where(
-                instruments.c.serial == serial)).scalar_one_or_none()
+                instruments.c.serial == _alike(serial))).scalar_one_or_none()
 
     def due_date(self, serial: str) -> dt.date | None:
         """The last calibration of the serial plus its interval (None without either)."""
@@ -516,6 +1034,132 @@ class Register:
         if not days or not dates:
             return None
         return dt.date.fromisoformat(max(dates)) + dt.timedelta(days=days)
+
+
+class _Turn:
+    """An issuer's turn after a lost race (see Register._issuing_turn)."""
+
+    def __init__(self, register: Register) -> None:
+        self.register, self._handle, self._conn = register, None, None
+
+    def take(self) -> None:
+        if self._handle is not None or self._conn is not None:
+            return
+        register = self.register
+        if register.is_sqlite and register._sqlite_path:
+            try:
+                import fcntl
+            except ImportError:  # Windows: retries without a turn
+                return
+            try:
+                handle = open(register._sqlite_path + ".issuing", "a+b")  # noqa: SIM115
+            except OSError:
+                return
+            fcntl.flock(handle, fcntl.LOCK_EX)
+            self._handle = handle
+        elif not register.is_sqlite:
+            conn = register.engine.connect()
+            conn.execute(register._sa.text("SET lock_timeout = '120s'"))
+            try:
+                conn.execute(register._sa.text("SELECT pg_advisory_lock(:k)"), {"k": _TURN_LOCK})
+                conn.commit()
+            except register._sa.exc.SQLAlchemyError:
+                conn.close()
+                return
+            self._conn = conn
+
+    def release(self) -> None:
+        if self._handle is not None:
+            self._handle.close()  # the lock goes with the descriptor
+            self._handle = None
+        if self._conn is not None:
+            try:
+                self._conn.execute(self.register._sa.text("SELECT pg_advisory_unlock(:k)"),
+                                   {"k": _TURN_LOCK})
+                self._conn.commit()
+            finally:
+                self._conn.close()
+                self._conn = None
+
+
+def _alike(identifier: str) -> str:
+    """An identifier as the register keeps it (as typed when it cannot be)."""
+    from models.register.identifiers import IdentifierError, normalise_identifier
+
+    try:
+        return normalise_identifier(identifier)
+    except IdentifierError:
+        return identifier
+
+
+def _parse_time(text: str) -> dt.datetime:
+    try:
+        stamp = dt.datetime.fromisoformat(text)
+    except ValueError:
+        return dt.datetime.min.replace(tzinfo=dt.timezone.utc)
+    return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
+
+
+def _call_render(render: Callable[..., bytes], final: CertificateMetadata, head: str) -> bytes:
+    import inspect
+
+    try:
+        takes_head = "head" in inspect.signature(render).parameters
+    except (TypeError, ValueError):
+        takes_head = False
+    return render(final, head=head) if takes_head else render(final)
+
+
+def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
+    """The counters, intervals and statuses against the chained records that set them."""
+    problems: list = []
+    reached: dict[str, int] = {}
+    for note in notes:
+        body = json.loads(note.body_json or "{}")
+        if note.kind == "numbering" and isinstance(body.get("last_value"), int):
+            reached[note.subject] = max(reached.get(note.subject, 0), body["last_value"])
+    for row in rows:
+        if row.counter and row.counter_value:
+            reached[row.counter] = max(reached.get(row.counter, 0), row.counter_value)
+    for name in sorted(set(reached) | set(counters)):
+        value, recorded = counters.get(name), reached.get(name, 0)
+        if value is None or value < recorded:
+            problems.append(message(QT_TR_NOOP(
+                "counter {name}: it stands at {value}, but the records reach {recorded}: it "
+                "was set back after issue (a number would be issued twice)"),
+                name=name, value="—" if value is None else value, recorded=recorded))
+        elif value > recorded:
+            problems.append(message(QT_TR_NOOP(
+                "counter {name}: it stands at {value}, but no record was numbered {value}: "
+                "the record was deleted after issue"), name=name, value=value))
+    last_interval: dict[str, int | None] = {}
+    withdrawn: dict[str, str] = {}
+    for note in notes:
+        body = json.loads(note.body_json or "{}")
+        if note.kind == "interval":
+            last_interval[note.subject] = body.get("days")
+        elif note.kind == "withdrawal":
+            withdrawn[note.subject] = body.get("reason", "")
+    for serial in sorted(set(last_interval) | set(intervals)):
+        if intervals.get(serial) != last_interval.get(serial):
+            problems.append(message(QT_TR_NOOP(
+                "instrument {serial}: calibration interval {days} day(s), but the register's "
+                "records set {recorded}: changed after it was recorded"), serial=serial,
+                days=intervals.get(serial) or "—", recorded=last_interval.get(serial) or "—"))
+    superseders = {row.supersedes: row.number for row in rows if row.supersedes}
+    for row in rows:
+        by = superseders.get(row.number)
+        expected = (("superseded", by) if by else ("withdrawn", None) if row.number in withdrawn
+                    else ("issued", None))
+        if (row.status, row.superseded_by) != expected:
+            problems.append(message(QT_TR_NOOP(
+                "record {number}: marked \"{status}\" (superseded by {marked}), but the "
+                "register's records say {by}"), number=row.number, status=row.status,
+                marked=row.superseded_by or "—",
+                by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
+                or (message(QT_TR_NOOP("withdrawn")) if row.number in withdrawn else
+                    message(QT_TR_NOOP("issued, superseded by none")))))
+    return problems
 
 
 def _check_issuable(meta: CertificateMetadata, issue_date: dt.date) -> None:
@@ -567,5 +1211,12 @@ def _sqlite_connect(dbapi_connection, _record) -> None:
     cursor.close()
 
 
+def _sqlite_connect_read_only(dbapi_connection, _record) -> None:
+    dbapi_connection.isolation_level = None
+
+
 def _sqlite_begin(conn) -> None:
-    conn.exec_driver_sql("BEGIN IMMEDIATE")
+    """A write takes the lock at once (writers queue instead of failing); a read takes
+    none (a deferred transaction)."""
+    read = conn.get_execution_options().get("anglebench_read")
+    conn.exec_driver_sql("BEGIN" if read else "BEGIN IMMEDIATE")

@@ -10,12 +10,13 @@ from models.messages import QT_TR_NOOP, message
 
 __all__ = ["revision_words", "status_words"]
 
-_STATUSES = {"issued": QT_TR_NOOP("issued"), "superseded": QT_TR_NOOP("superseded")}
+_STATUSES = {"issued": QT_TR_NOOP("issued"), "superseded": QT_TR_NOOP("superseded"),
+             "withdrawn": QT_TR_NOOP("withdrawn")}
 _REVISIONS = {"original": QT_TR_NOOP("original"), "replacement": QT_TR_NOOP("replacement")}
 
 
 def status_words(status: str) -> str:
-    """``issued`` or ``superseded`` as a message (any other text as it is)."""
+    """``issued``, ``superseded`` or ``withdrawn`` as a message (any other text as it is)."""
     return message(_STATUSES[status]) if status in _STATUSES else status
 
 

@@ -1952,6 +1952,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>不在登记册中</translation>
     </message>
     <message>
+        <source>{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, so all but one were copied into the register after issue.</source>
+        <translation>{path}：其 SHA-256 出现在 {n} 条记录中（{numbers}）：一份证书只签发一次，因此除一条外都是签发后被复制进登记册的。</translation>
+    </message>
+    <message>
         <source>{path}: no certificate issued from this register has this PDF (SHA-256): it was altered, is a draft, or comes from another register.</source>
         <translation>{path}：本登记册签发的证书中没有此 PDF（SHA-256）：它已被改动、是草稿，或来自其他登记册。</translation>
     </message>
@@ -1962,6 +1966,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>{path} is certificate {number} as issued on {date} ({status}), byte for byte.</source>
         <translation>{path} 逐字节与 {date} 签发的证书 {number}（{status}）一致。</translation>
+    </message>
+    <message>
+        <source>It is no longer valid: withdrawn ({reason}).</source>
+        <translation>该证书已不再有效：已作废（{reason}）。</translation>
     </message>
     <message>
         <source>Certificate number</source>
@@ -2212,6 +2220,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>PDF 的 sha256</translation>
     </message>
     <message>
+        <source>os_user</source>
+        <translation>签发用户</translation>
+    </message>
+    <message>
+        <source>withdrawn_reason</source>
+        <translation>作废原因</translation>
+    </message>
+    <message>
+        <source>chain_sha256</source>
+        <translation>链值</translation>
+    </message>
+    <message>
         <source>The certificate register</source>
         <translation>证书登记册</translation>
     </message>
@@ -2246,6 +2266,26 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>is this PDF, byte for byte, one the register issued?</source>
         <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
+    </message>
+    <message>
+        <source>a chain head noted earlier (12 to 64 hex digits): the register must still hold the history up to it</source>
+        <translation>此前记下的链头（12 至 64 位十六进制数字）：登记册必须仍保有截至该链头的历史</translation>
+    </message>
+    <message>
+        <source>the chain head printed on a certificate (the head before it): the register must still hold the history up to it</source>
+        <translation>证书上印的链头（该证书之前的链头）：登记册必须仍保有截至该链头的历史</translation>
+    </message>
+    <message>
+        <source>the register&apos;s chain head now (note it in the lab&apos;s log)</source>
+        <translation>登记册当前的链头（请记入实验室日志）</translation>
+    </message>
+    <message>
+        <source>withdraw (void) a certificate, with the reason: a new record</source>
+        <translation>作废一份证书并说明原因：作为一条新记录</translation>
+    </message>
+    <message>
+        <source>why it is withdrawn</source>
+        <translation>作废原因</translation>
     </message>
     <message>
         <source>every record: index.csv, the PDFs and the projects</source>
@@ -2284,12 +2324,32 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>0 表示清除</translation>
     </message>
     <message>
+        <source>the lab&apos;s authorised signatories: an approver must be one of them</source>
+        <translation>实验室的授权签字人：批准人必须是其中之一</translation>
+    </message>
+    <message>
+        <source>the names (without any: show the list)</source>
+        <translation>姓名（不给出时：显示名单）</translation>
+    </message>
+    <message>
+        <source>the approver must differ from the operator</source>
+        <translation>批准人必须不同于校准员</translation>
+    </message>
+    <message>
+        <source>no list: any named approver is accepted</source>
+        <translation>无名单：接受任何署名的批准人</translation>
+    </message>
+    <message>
         <source>{number}  ({status}{revision})</source>
         <translation>{number}（{status}{revision}）</translation>
     </message>
     <message>
         <source>  {field}: {value}</source>
         <translation>  {field}：{value}</translation>
+    </message>
+    <message>
+        <source>  chain head before it (printed on it): {head}</source>
+        <translation>  其前的链头（印在证书上）：{head}</translation>
     </message>
     <message>
         <source>  headline {name}: {value}</source>
@@ -2308,12 +2368,56 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>已将 {n} 份证书导出到 {out}</translation>
     </message>
     <message>
+        <source>{path}: no register chain head printed in it (a draft, a specimen, or issued before AngleBench printed the head)</source>
+        <translation>{path}：其中没有印登记册链头（草稿、样本，或在 AngleBench 开始印链头之前签发）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: head {head} is not in the register&apos;s chain: the history up to it was rewritten or removed (or it is another register&apos;s)</source>
+        <translation>签发后被改动：链头 {head} 不在登记册的哈希链中：截至该链头的历史已被改写或删除（或它属于另一登记册）</translation>
+    </message>
+    <message>
+        <source>head {head}: in the register&apos;s chain at record {seq}; the history up to it is still there</source>
+        <translation>链头 {head}：位于登记册哈希链的第 {seq} 条记录处；截至该链头的历史仍然完整</translation>
+    </message>
+    <message>
+        <source>{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, so all but one were copied into the register after issue</source>
+        <translation>{path}：其 SHA-256 出现在 {n} 条记录中（{numbers}）：一份证书只签发一次，因此除一条外都是签发后被复制进登记册的</translation>
+    </message>
+    <message>
         <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
         <translation>{path}：不在登记册中（没有已签发的 PDF 具有此 SHA-256：已被改动、是草稿，或来自另一登记册）</translation>
     </message>
     <message>
         <source>{path}: certificate {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
         <translation>{path}：证书 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>{path}: {number} is no longer valid: withdrawn ({reason})</source>
+        <translation>{path}：{number} 已不再有效：已作废（{reason}）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the register&apos;s chain before {number} is now {actual}</source>
+        <translation>签发后被改动：{path} 印有其前的链头 {printed}，但登记册中 {number} 之前的链值现为 {actual}</translation>
+    </message>
+    <message>
+        <source>authorised signatories: {names}; approver and operator {rule}</source>
+        <translation>授权签字人：{names}；批准人与校准员{rule}</translation>
+    </message>
+    <message>
+        <source>none listed (any named approver)</source>
+        <translation>未列名单（任何署名的批准人）</translation>
+    </message>
+    <message>
+        <source>must differ</source>
+        <translation>必须不同</translation>
+    </message>
+    <message>
+        <source>may be the same</source>
+        <translation>可以相同</translation>
+    </message>
+    <message>
+        <source>{number} withdrawn ({reason}); chain head now {head}</source>
+        <translation>{number} 已作废（{reason}）；当前链头 {head}</translation>
     </message>
     <message>
         <source>--date {date}: not YYYY-MM-DD</source>
@@ -2493,12 +2597,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书 {number} · AngleBench {version}</translation>
     </message>
     <message>
+        <source>SPECIMEN</source>
+        <translation>样本</translation>
+    </message>
+    <message>
         <source>DRAFT</source>
         <translation>草稿</translation>
     </message>
     <message>
         <source>as stated in the settings: {inputs}</source>
         <translation>见分析设置中的给定值：{inputs}</translation>
+        <source>Register chain head before this certificate: {head}…</source>
+        <translation>本证书之前的登记册链头：{head}…</translation>
     </message>
     <message>
         <source>not stated</source>
@@ -2523,6 +2633,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Uncertainty</source>
         <translation>不确定度</translation>
+    </message>
+    <message>
+        <source>SPECIMEN — made from example details for training or demonstration; not a certificate, not recorded in any register.</source>
+        <translation>样本——由示例信息生成，用于培训或演示；不是证书，未记入任何登记册。</translation>
     </message>
     <message>
         <source>DRAFT — not valid as a certificate. Missing: {fields}.</source>
@@ -2563,6 +2677,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
         <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s certificate register, before this certificate, ended at chain head {head}; &apos;anglebench register verify --head&apos; proves the register still holds that history.</source>
+        <translation>在本证书之前，实验室证书登记册的链头为 {head}；“anglebench register verify --head”可证明登记册仍保有该历史。</translation>
     </message>
     <message>
         <source>{standard} (certificate {certificate})</source>
@@ -4110,6 +4228,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
     </message>
     <message>
+        <source>SPECIMEN {number} written to {path}: these are the bundled example details (&quot;example&quot;: true); it is watermarked SPECIMEN, is not a certificate and was recorded in no register</source>
+        <translation>样本 {number} 已写入 {path}：这些是随附的示例信息（&quot;example&quot;: true）；它带有“样本”水印，不是证书，未记入任何登记册</translation>
+    </message>
+    <message>
         <source>anglebench analyze: {reason}; no certificate was written</source>
         <translation>anglebench analyze：{reason}；未写入证书</translation>
     </message>
@@ -4618,8 +4740,13 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>编号方案 &apos;{scheme}&apos; 中没有 {{seq}}：登记册无法用它为证书编号</translation>
     </message>
     <message>
+        <source>the lab&apos;s time zone &apos;{name}&apos; is not known (an IANA name such as Asia/Shanghai or Europe/Berlin)</source>
+        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it</extracomment>
+        <translation>实验室时区“{name}”无法识别（应为 IANA 名称，如 Asia/Shanghai 或 Europe/Berlin）</translation>
+    </message>
+    <message>
         <source>register {display_url}: {reason}</source>
-        <extracomment>what the hash chain found changed since issue (checked on opening)</extracomment>
+        <extracomment>the laboratory&apos;s key (ANGLEBENCH_REGISTER_KEY): new records are signed with it and every signature is checked; None: nothing is signed or checked what the chain, the state and the counters found changed since issue (checked on opening; the stored PDFs on demand: audit(pdfs=True))</extracomment>
         <translation>登记册 {display_url}：{reason}</translation>
     </message>
     <message>
@@ -4627,8 +4754,48 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>登记册 {display_url}：{exc}</translation>
     </message>
     <message>
+        <source>register {display_url}: the table schema_version holds {n} rows instead of one: it was changed outside AngleBench; the register is not opened</source>
+        <translation>登记册 {display_url}：schema_version 表有 {n} 行而不是一行：它在 AngleBench 之外被改动；不打开该登记册</translation>
+    </message>
+    <message>
         <source>register {display_url} is at schema version {version}, made by a newer AngleBench than {version__} (knows {latest}): open it with that version</source>
         <translation>登记册 {display_url} 的 schema 版本为 {version}，由比 {version__} 更新的 AngleBench 建立（本版本支持到 {latest}）：请用该版本打开</translation>
+    </message>
+    <message>
+        <source>register {display_url}: schema version {version} is no version AngleBench ever made: it was changed outside AngleBench; the register is not opened</source>
+        <translation>登记册 {display_url}：模式版本 {version} 不是 AngleBench 生成过的版本：它在 AngleBench 之外被改动；不打开该登记册</translation>
+    </message>
+    <message>
+        <source>register {display_url}: schema version {version} was set back ({evidence}): a migration would rewrite the records&apos; hash chain, so the register is not opened; restore the version or the register from a backup</source>
+        <translation>登记册 {display_url}：模式版本 {version} 被回退（{evidence}）：迁移会改写记录的哈希链，因此不打开该登记册；请恢复版本号或从备份恢复登记册</translation>
+    </message>
+    <message>
+        <source>register {display_url} is read-only and at schema version {version}: it must be migrated to {latest} by an AngleBench that can write it</source>
+        <translation>登记册 {display_url} 为只读且处于模式版本 {version}：必须由可写入它的 AngleBench 迁移到 {latest}</translation>
+    </message>
+    <message>
+        <source>register {display_url}: migration to schema version {step} refused: {reason}; the records&apos; hash chain is never recomputed</source>
+        <translation>登记册 {display_url}：拒绝迁移到模式版本 {step}：{reason}；记录的哈希链绝不重新计算</translation>
+    </message>
+    <message>
+        <source>register {display_url} is read-only: it can be listed and verified, not written</source>
+        <translation>登记册 {display_url} 为只读：可列出和核验，不能写入</translation>
+    </message>
+    <message>
+        <source>waited {s} s for the register&apos;s lock, held by {holder}</source>
+        <translation>等待登记册的锁 {s} 秒，该锁由 {holder} 持有</translation>
+    </message>
+    <message>
+        <source>the register&apos;s state row was changed or deleted: nothing is recorded into it until &apos;anglebench register verify&apos; is clean</source>
+        <translation>登记册的状态行被改动或删除：在“anglebench register verify”无问题之前不记入任何内容</translation>
+    </message>
+    <message>
+        <source>the register&apos;s records were changed after issue ({problem}): nothing is recorded into a broken chain; see &apos;anglebench register verify&apos;</source>
+        <translation>登记册的记录在签发后被改动（{problem}）：不向断开的哈希链记入任何内容；见“anglebench register verify”</translation>
+    </message>
+    <message>
+        <source>its last record is not the one it recorded last</source>
+        <translation>其最后一条记录不是它最后记入的那条</translation>
     </message>
     <message>
         <source>no free number in scheme &apos;{scheme}&apos;</source>
@@ -4647,12 +4814,76 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书编号 {number} 已于 {issued_at} 签发（{workbench}，出厂编号 {value}）：一个编号只签发一次；请将编号留空，由登记册分配下一个</translation>
     </message>
     <message>
+        <source>the computer&apos;s clock says {now}, before the register&apos;s last record ({number}, issued {then}): the clock was set back; nothing is issued until it is right</source>
+        <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
+    </message>
+    <message>
+        <source>serial number</source>
+        <translation>序列号</translation>
+    </message>
+    <message>
+        <source>certificate number {number}: numbers beginning SPECIMEN are kept for specimen certificates, which are never recorded</source>
+        <translation>证书编号 {number}：以 SPECIMEN 开头的编号留给样本证书使用，样本证书从不记入登记册</translation>
+    </message>
+    <message>
+        <source>the register was busy: {n} other certificates were issued while this one was being made; try again</source>
+        <translation>登记册繁忙：生成本证书期间另有 {n} 份证书签发；请重试</translation>
+    </message>
+    <message>
+        <source>{number} was withdrawn ({reason}): it cannot be amended or replaced</source>
+        <translation>{number} 已作废（{reason}）：不能修订或替换</translation>
+    </message>
+    <message>
         <source>{number} was superseded by {superseded_by}: amend or replace that one</source>
         <translation>{number} 已被 {superseded_by} 取代：请修改或替代后者</translation>
     </message>
     <message>
+        <source>a certificate is withdrawn with a reason (--reason)</source>
+        <translation>作废证书须说明原因（--reason）</translation>
+    </message>
+    <message>
+        <source>&quot;{approver}&quot; is not one of the lab&apos;s authorised signatories ({names}): the certificate is approved by one of them</source>
+        <translation>“{approver}”不是实验室的授权签字人（{names}）：证书须由其中一人批准</translation>
+    </message>
+    <message>
+        <source>the lab requires the approver to differ from the operator: {name} cannot approve a calibration they made</source>
+        <translation>实验室要求批准人不同于校准员：{name} 不能批准自己所做的校准</translation>
+    </message>
+    <message>
         <source>no certificate {number} in the register</source>
         <translation>登记册中没有证书 {number}</translation>
+    </message>
+    <message>
+        <source>record {number}: it has no place in the hash chain (inserted after issue)</source>
+        <translation>记录 {number}：它在哈希链中没有位置（签发后插入）</translation>
+    </message>
+    <message>
+        <source>entry {kind} {subject}</source>
+        <translation>条目 {kind} {subject}</translation>
+    </message>
+    <message>
+        <source>record {number}: it is at place {seq} of the chain, where {expected} was expected (records deleted or inserted before it)</source>
+        <translation>记录 {number}：它位于哈希链的第 {seq} 位，而应为第 {expected} 位（其前的记录被删除或插入）</translation>
+    </message>
+    <message>
+        <source>the register recorded {recorded} record(s) ending at chain head {head}, but holds {count} ending at {actual}: records were deleted (the tail truncated) or added after issue</source>
+        <translation>登记册记下的是 {recorded} 条记录、止于链头 {head}，但现有 {count} 条、止于 {actual}：签发后有记录被删除（尾部被截断）或被添加</translation>
+    </message>
+    <message>
+        <source>record {number}: its signature is not the laboratory key&apos;s: it was changed, or forged, outside AngleBench</source>
+        <translation>记录 {number}：其签名不是实验室密钥所签：它在 AngleBench 之外被改动或伪造</translation>
+    </message>
+    <message>
+        <source>record {number}: not signed with the laboratory&apos;s key (the last record and every one since the first signed are): added outside AngleBench, or issued without the key</source>
+        <translation>记录 {number}：未用实验室密钥签名（最后一条记录以及自第一条签名记录以来的每条记录都应签名）：它是在 AngleBench 之外添加的，或签发时未使用密钥</translation>
+    </message>
+    <message>
+        <source>head &apos;{value}&apos;: a chain head is 12 to 64 hexadecimal digits</source>
+        <translation>链头“{value}”：链头为 12 至 64 位十六进制数字</translation>
+    </message>
+    <message>
+        <source>head &apos;{value}&apos; fits {n} records: give more of its digits</source>
+        <translation>链头“{value}”与 {n} 条记录相符：请给出更多位数字</translation>
     </message>
     <message>
         <source>a calibration interval is a positive number of days</source>
@@ -5605,6 +5836,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>approver</source>
+        <extracomment>shown as well (registers of schema version 4): who approved and who issued it (the operating-system user), why it was withdrawn, its value in the hash chain</extracomment>
         <translation>批准人</translation>
     </message>
     <message>
@@ -5644,10 +5876,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>草稿打印此日期；签发的证书以登记册签发之日为签发日期</translation>
     </message>
     <message>
-        <source>anglebench analyze: these are the bundled example details (&quot;example&quot;: true): the certificate is issued in a register of its own, deleted afterwards; your register is not touched</source>
-        <translation>anglebench analyze：这是随附的示例信息（&quot;example&quot;: true）：证书签发到其专用的登记册中，之后即删除；您的登记册不受影响</translation>
-    </message>
-    <message>
         <source>{number} was issued on {original}: an amendment or replacement cannot be dated {today}, before it (check the computer&apos;s clock)</source>
         <translation>{number} 签发于 {original}：其修订或替换证书不能早于它，日期不能为 {today}（请检查计算机时钟）</translation>
     </message>
@@ -5664,12 +5892,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>记录 {number}：所存的 PDF 与签发时记录的 SHA-256 不符</translation>
     </message>
     <message>
+        <source>counter {name}: it stands at {value}, but the records reach {recorded}: it was set back after issue (a number would be issued twice)</source>
+        <translation>计数器 {name}：其值为 {value}，但记录已到 {recorded}：它在签发后被回退（会导致编号重复签发）</translation>
+    </message>
+    <message>
+        <source>counter {name}: it stands at {value}, but no record was numbered {value}: the record was deleted after issue</source>
+        <translation>计数器 {name}：其值为 {value}，但没有编号为 {value} 的记录：该记录在签发后被删除</translation>
+    </message>
+    <message>
+        <source>instrument {serial}: calibration interval {days} day(s), but the register&apos;s records set {recorded}: changed after it was recorded</source>
+        <translation>仪器 {serial}：校准间隔 {days} 天，但登记册的记录设定为 {recorded}：记录后被改动</translation>
+    </message>
+    <message>
         <source>record {number}: marked &quot;{status}&quot; (superseded by {marked}), but the register&apos;s records say {by}</source>
         <translation>记录 {number}：标为“{status}”（被 {marked} 取代），但登记册的记录表明{by}</translation>
     </message>
     <message>
         <source>superseded by {number}</source>
         <translation>已被 {number} 取代</translation>
+    </message>
+    <message>
+        <source>withdrawn</source>
+        <translation>已作废</translation>
     </message>
     <message>
         <source>issued, superseded by none</source>
@@ -7762,6 +8006,17 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>3 points: ψ, α, β leave no degrees of freedom for the reading noise</source>
         <translation>3 个点：ψ、α、β 使读数噪声没有剩余自由度</translation>
+        <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
+        <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in</extracomment>
+        <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），它打印不出或会移动文字；请去掉它重新输入{what}</translation>
+    </message>
+    <message>
+        <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
+        <translation>无法读取实验室的登记册密钥 {path}（{reason}）</translation>
+    </message>
+    <message>
+        <source>the laboratory&apos;s register key {path} holds {n} bytes: a key is at least 32 random bytes</source>
+        <translation>实验室的登记册密钥 {path} 只有 {n} 字节：密钥至少应为 32 个随机字节</translation>
     </message>
 </context>
 </TS>

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import datetime as dt
 import json
+import shutil
+import subprocess
 import zipfile
 
 import pytest
@@ -87,15 +89,24 @@ def test_continue_numbering_from_the_command_line(capsys):
 @pytest.mark.slow
 def test_the_bundled_example_details_never_touch_the_users_register(samples_dir, tmp_path,
                                                                      capsys):
-    """Used as the README shows, the examples issue into a register of their own."""
-    for _ in range(2):  # their fixed number, twice: no clash, since nothing is kept
+    """Used as the README shows, the examples give a SPECIMEN (#40: they used to give an
+    unmarked certificate with the sample's own number, "recorded" in a throw-away
+    register): numbered SPECIMEN-…, recorded nowhere, never claiming to be."""
+    for _ in range(2):  # twice: no clash, since nothing is kept
         assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
                      "--certificate", str(tmp_path / "example.pdf"), "--metadata",
                      str(samples_dir / "certificate_polygon.json")]) == 0
         err = capsys.readouterr().err
-        assert "register of its own" in err and "AB-2026-0042 issued" in err
+        assert "SPECIMEN SPECIMEN-" in err and "recorded in no register" in err
+        assert "AB-2026-0042" not in err and "recorded in the register" not in err
     assert (tmp_path / "example.pdf").read_bytes()[:5] == b"%PDF-"
     assert main(["register", "list"]) == 0 and capsys.readouterr().out == ""
+    assert main(["register", "verify", str(tmp_path / "example.pdf")]) == 1
+    assert "NOT in the register" in capsys.readouterr().out
+    if shutil.which("pdftotext"):  # the watermark and the statement on the page
+        text = subprocess.run(["pdftotext", str(tmp_path / "example.pdf"), "-"],
+                              capture_output=True, text=True, check=True).stdout
+        assert "SPECIMEN —" in text and "not a certificate, not recorded in" in text
 
 
 @pytest.mark.slow
@@ -131,3 +142,91 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
     assert not (tmp_path / "out.pdf").exists()
     assert main(["register", "verify"]) == 1
     assert "stored PDF does not match" in capsys.readouterr().out
+
+
+def _three(render_head=True) -> list[str]:
+    """Three certificates in the test's register (a stand-in PDF that carries its head the
+    way a certificate's keywords do)."""
+    from models.register.chain import HEAD_MARK
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-1")
+    with Register(register_url()) as register:
+        return [register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m, head="": f"%PDF {m.certificate_number} "
+                               f"{HEAD_MARK}{head}".encode())[0].number for _ in range(3)]
+
+
+def _sql(*statements: str) -> None:
+    engine = sa.create_engine(register_url())
+    with engine.begin() as conn:
+        for statement in statements:
+            conn.execute(sa.text(statement))
+    engine.dispose()
+
+
+def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys):
+    numbers = _three()
+    _sql("UPDATE schema_version SET version = 2")
+    assert main(["register", "verify"]) == 1
+    assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
+    assert main(["register", "list"]) == 2
+    assert "schema version 2 was set back" in capsys.readouterr().err
+    _sql("UPDATE schema_version SET version = 4",
+         f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
+    assert main(["register", "verify"]) == 1
+    out = capsys.readouterr().out
+    assert "records were deleted" in out and "no record was numbered 3" in out
+    assert main(["register", "list"]) == 0
+    assert "WARNING: the register recorded 3 record(s)" in capsys.readouterr().err
+
+
+def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
+    numbers = _three()
+    assert main(["register", "head"]) == 0
+    head = capsys.readouterr().out.strip()
+    assert len(head) == 64
+    assert main(["register", "verify", "--head", head[:16]]) == 0
+    assert "the history up to it is still there" in capsys.readouterr().out
+    assert main(["register", "verify", "--head", "f" * 20]) == 1
+    assert "is not in the register's chain" in capsys.readouterr().out
+    assert main(["register", "show", numbers[1], "--pdf", str(tmp_path / "2.pdf")]) == 0
+    shown = capsys.readouterr().out
+    assert "approver: Dr. Li" in shown and "os_user:" in shown and "chain_sha256:" in shown
+    assert main(["register", "verify", "--head-from", str(tmp_path / "2.pdf")]) == 0
+    assert main(["register", "withdraw", numbers[1], "--reason", "wrong item"]) == 0
+    capsys.readouterr()
+    assert main(["register", "verify", str(tmp_path / "2.pdf")]) == 0
+    out = capsys.readouterr().out
+    assert f"{numbers[1]} is no longer valid: withdrawn (wrong item)" in out
+    assert main(["register", "list"]) == 0
+    assert f"{numbers[1]}\twithdrawn" in capsys.readouterr().out
+    assert main(["register", "withdraw", numbers[1], "--reason", "again"]) == 2
+    assert "was withdrawn" in capsys.readouterr().err
+
+
+def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys):
+    import os
+
+    numbers = _three()
+    path = register_url().split("///", 1)[1]
+    real = os.access
+    monkeypatch.setattr(os, "access", lambda p, mode, **k: False if (
+        mode == os.W_OK and str(p) in (path, os.path.dirname(path))) else real(p, mode, **k))
+    assert main(["register", "list"]) == 0
+    assert capsys.readouterr().out.count("\n") == 3
+    assert main(["register", "verify"]) == 0
+    assert main(["register", "withdraw", numbers[0], "--reason", "x"]) == 2
+    assert "read-only" in capsys.readouterr().err
+
+
+def test_a_pdf_copied_into_a_second_record_is_said(tmp_path, capsys):
+    numbers = _three()
+    assert main(["register", "show", numbers[0], "--pdf", str(tmp_path / "1.pdf")]) == 0
+    _sql(f"UPDATE certificates SET pdf = (SELECT pdf FROM certificates WHERE number = "
+         f"'{numbers[0]}'), pdf_sha256 = (SELECT pdf_sha256 FROM certificates WHERE number = "
+         f"'{numbers[0]}') WHERE number = '{numbers[2]}'")
+    capsys.readouterr()
+    assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 1
+    out = capsys.readouterr().out
+    assert f"its SHA-256 is in 2 records ({numbers[0]}, {numbers[2]})" in out

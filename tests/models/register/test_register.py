@@ -172,7 +172,7 @@ def test_an_old_register_is_migrated_and_a_newer_one_refused(register_url):
         conn.execute(schema.SCHEMA_VERSION.insert().values(version=1))
         schema.MIGRATIONS[1](conn)
     with Register(register_url) as reg:
-        assert reg.version == schema.LATEST == 3
+        assert reg.version == schema.LATEST == 4
         reg.clock = on(ISSUED)
         reg.issue(request(), render)
         reg.set_interval("RX-1", 180)  # the table migration 2 added
@@ -232,7 +232,7 @@ def test_a_calibration_after_the_day_of_issue_or_in_the_future_is_refused(regist
 def test_an_amendment_is_not_dated_before_its_original(register):
     original, _ = register.issue(request(), render)
     register.clock = on(ISSUED - dt.timedelta(days=3))  # the computer's clock set back
-    with pytest.raises(RegisterError, match="cannot be dated 2026-11-21, before it"):
+    with pytest.raises(RegisterError, match="clock was set back"):  # #40: before any record
         register.issue(request(CertificateMetadata(**{**META.to_dict(), "standards": (),
                                                       "calibration_date": "2026-11-01"})),
                        render, supersedes=original.number, change_note="typo")
@@ -280,19 +280,88 @@ def test_a_superseded_record_set_back_to_issued_is_seen(register):
         register.issue(request(), render, supersedes=original.number)
 
 
-def test_an_old_register_gets_its_chain_when_migrated(register_url):
-    with Register(register_url) as reg:
-        reg.clock = on(ISSUED)
-        numbers = [reg.issue(request(), render)[0].number for _ in range(3)]
-        head = reg.chain_head()
-    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
-    with engine.begin() as conn:  # as version 2 left it: no chain
-        conn.execute(schema.CERTIFICATES.update().values(chain_sha256=None))
-        conn.execute(schema.SCHEMA_VERSION.update().values(version=2))
+def _old_register(url: str, version: int, records: int, chained: bool) -> list[str]:
+    """A register as an AngleBench of schema ``version`` (2 or 3) left it, with ``records``
+    certificates (version 3: with the chain that version computed, here from its
+    definition: SHA-256 over the previous value and the issued fields as sorted JSON)."""
+    import hashlib
+    import json
+
+    fields = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
+              "item_description", "item_manufacturer", "item_serial", "customer", "operator",
+              "workstation", "supersedes", "revision", "change_note", "project_json",
+              "software_json", "headline_json", "pdf_sha256")
+    engine = sa.create_engine(url.replace("postgresql://", "postgresql+psycopg://"))
+    numbers, previous = [], "0" * 64
+    with engine.begin() as conn:
+        schema.SCHEMA_VERSION.create(conn)
+        conn.execute(schema.SCHEMA_VERSION.insert().values(version=version))
+        for step in range(1, version + 1):
+            schema.MIGRATIONS[step](conn)
+        for i in range(1, records + 1):
+            pdf = f"%PDF old {i}".encode()
+            row = {"number": f"AB-2025-{i:04d}", "issued_at": f"2025-03-0{i}T09:00:00+00:00",
+                   "issue_date": f"2025-03-0{i}", "calibration_date": "2025-03-01",
+                   "workbench": "polygon", "item_description": "encoder",
+                   "item_manufacturer": "", "item_serial": "RX-1", "customer": "Acme",
+                   "operator": "", "workstation": "bench", "supersedes": None,
+                   "revision": "original", "change_note": "", "project_json": PROJECT,
+                   "software_json": "{}", "headline_json": "{}",
+                   "pdf_sha256": hashlib.sha256(pdf).hexdigest()}
+            body = json.dumps({k: row[k] for k in fields}, sort_keys=True, ensure_ascii=False,
+                              separators=(",", ":"))
+            previous = hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
+            extra = {"chain_sha256": previous} if chained else {}
+            conn.execute(sa.text(
+                f"INSERT INTO certificates ({', '.join([*row, 'status', 'pdf', *extra])}) "
+                f"VALUES ({', '.join(f':{k}' for k in [*row, 'status', 'pdf', *extra])})"),
+                {**row, "status": "issued", "pdf": pdf, **extra})
+            conn.execute(sa.text("INSERT INTO counters (name, last_value) VALUES "
+                                 "('AB-2025-#', :v) ON CONFLICT (name) DO UPDATE SET "
+                                 "last_value = :v"), {"v": i})
+            numbers.append(row["number"])
     engine.dispose()
+    return numbers, previous
+
+
+def test_an_old_register_gets_its_chain_when_migrated(register_url):
+    """A genuine version-2 register (no chain): migration 3 chains its records, 4 keeps
+    that chain value for value and continues it."""
+    numbers, head = _old_register(register_url, 2, 3, chained=False)
     with Register(register_url) as reg:
-        assert reg.version == 3 and reg.problems == [] and reg.chain_head() == head
+        assert reg.version == 4 and reg.problems == [] and reg.find_head(head) == (3, head)
         assert [r.number for r in reg.list()] == numbers[::-1]
+        assert reg.get(numbers[-1]).chain_sha256 == head
+        reg.clock = on(ISSUED)
+        before = reg.chain_head()  # after the migration's baseline (the counter as it stood)
+        record, _ = reg.issue(request(), render)
+        assert reg.chain_before(record.number) == before and reg.audit(pdfs=True) == []
+        assert reg.chain_head() == reg.get(record.number).chain_sha256
+
+
+def test_a_version_3_chain_is_proved_and_kept_by_the_migration(register_url):
+    numbers, head = _old_register(register_url, 3, 3, chained=True)
+    with Register(register_url) as reg:
+        assert reg.version == 4 and reg.problems == [] and reg.find_head(head[:16]) == (3, head)
+        assert reg.get(numbers[-1]).chain_sha256 == head
+
+
+def test_a_version_3_register_edited_before_migrating_is_refused_not_rechained(register_url):
+    """#40: an edit then a migration must not launder the edit into a new chain."""
+    from models.register.store import RegisterTampered
+
+    numbers, _ = _old_register(register_url, 3, 3, chained=True)
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.begin() as conn:
+        conn.execute(sa.text("UPDATE certificates SET customer = 'Someone' WHERE number = :n"),
+                     {"n": numbers[1]})
+    engine.dispose()
+    with pytest.raises(RegisterTampered, match=f"record {numbers[1]}: the hash chain is broken"):
+        Register(register_url)
+    engine = sa.create_engine(register_url.replace("postgresql://", "postgresql+psycopg://"))
+    with engine.connect() as conn:  # left as it was: version 3, the edit visible
+        assert conn.execute(sa.text("SELECT version FROM schema_version")).scalar_one() == 3
+    engine.dispose()
 
 
 def test_tests_never_reach_the_users_own_register(monkeypatch):
@@ -328,3 +397,46 @@ def test_a_record_with_a_schema_1_project_keeps_its_chain_and_opens_migrated(reg
     assert details["positioning"]["standards"][0]["uncertainty_unit"] == "um"
     # the issuing workbench's own details were written by this version: read as they are
     assert CertificateMetadata.from_dict(details["polygon"]).tolerance_unit == "arcsec"
+
+
+def _issue_at(url: str, start: float, render_s: float, queue) -> None:
+    import time
+
+    def slow_render(meta, head=""):
+        time.sleep(render_s)  # a real PDF takes 0.3 … 9 s: rendered outside any lock
+        return f"%PDF {meta.certificate_number} {head}".encode()
+
+    try:
+        with Register(url) as reg:
+            reg.clock = on(ISSUED)
+            time.sleep(max(0.0, start - time.time()))  # all at once
+            queue.put(("ok", reg.issue(request(), slow_render)[0].number))
+    except RegisterError as exc:  # reported, not lost with the process
+        queue.put(("refused", str(exc)))
+
+
+@pytest.mark.slow
+def test_forty_processes_issuing_at_once_are_all_served(tmp_path):
+    """#40: 40 issuing processes into one SQLite register at once: none refused, 40
+    distinct numbers without a gap, the chain intact (26 of 40 were refused "database is
+    locked" when the write lock was held while rendering)."""
+    import time
+
+    url = f"sqlite:///{tmp_path / 'register.sqlite'}"
+    Register(url).close()
+    context = multiprocessing.get_context("fork")  # forked: no imports (the Qt of the parent
+    queue = context.Queue()                       # is never touched by the children)
+    start = time.time() + 5  # after every worker has started
+    workers = [context.Process(target=_issue_at, args=(url, start, 0.3, queue))
+               for _ in range(40)]
+    for w in workers:
+        w.start()
+    answers = [queue.get(timeout=600) for _ in workers]
+    for w in workers:
+        w.join(60)
+    assert [a for a in answers if a[0] != "ok"] == []
+    assert sorted(n for _, n in answers) == [f"AB-2026-{i:04d}" for i in range(1, 41)]
+    with Register(url) as reg:
+        assert reg.problems == [] and reg.audit(pdfs=True) == []
+        pdfs = {r.number: reg.pdf(r.number) for r in reg.list()}
+        assert all(f" {reg.chain_before(n)}".encode() in pdf for n, pdf in pdfs.items())

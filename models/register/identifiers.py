@@ -1,0 +1,38 @@
+"""Identifiers that print alike are one identifier: a certificate number or a serial is
+normalised (Unicode NFKC; every dash and hyphen as "-", every space as one " ") and refused
+when it holds a character that prints as nothing or moves text (format, control,
+private-use, unassigned, line and paragraph separators), before any uniqueness check."""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["IdentifierError", "normalise_identifier"]
+
+#: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
+_DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
+                     "\ufe58\ufe63\uff0d\u058a\u05be\u1400\u1806\u2e17\u30a0]")
+_REFUSED_CATEGORIES = {"Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp"}
+
+
+class IdentifierError(ValueError):
+    """An identifier holds a character that does not print as itself."""
+
+
+def normalise_identifier(text: str, what: str = "identifier") -> str:
+    """``text`` as the register keeps it; IdentifierError names the first character that
+    prints as nothing (by its code point) and where it is."""
+    text = text or ""
+    for i, char in enumerate(text):
+        if unicodedata.category(char) in _REFUSED_CATEGORIES:
+            raise IdentifierError(message(QT_TR_NOOP(
+                "{what} \"{shown}\": character {n} is U+{code:04X} ({name}), which prints as "
+                "nothing or moves the text; type the {what} again without it"),
+                what=what, shown=text.encode("ascii", "backslashreplace").decode(), n=i + 1,
+                code=ord(char), name=unicodedata.name(char, "unnamed")))
+    text = unicodedata.normalize("NFKC", text)
+    text = _DASHES.sub("-", text)
+    return " ".join(text.split())

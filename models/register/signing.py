@@ -1,0 +1,50 @@
+"""Records signed with the laboratory's key, kept outside the database: each record's and
+entry's chain value is signed (HMAC-SHA256), so a record forged and appended after the
+last genuine one — with its chain and the state recomputed, which needs no secret — carries
+no valid signature. The key is a file named by ``ANGLEBENCH_REGISTER_KEY`` (at least 32
+bytes, e.g. ``head -c 32 /dev/urandom > lab.key``; kept off the database server)."""
+
+from __future__ import annotations
+
+import hashlib
+import hmac
+import os
+from pathlib import Path
+
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["KEY_ENV_VAR", "load_key", "sign", "signature_ok"]
+
+KEY_ENV_VAR = "ANGLEBENCH_REGISTER_KEY"
+
+
+class KeyError_(ValueError):
+    """The key file named cannot be used."""
+
+
+def load_key(path: str = "") -> bytes | None:
+    """The lab's key from ``path`` or the file ``ANGLEBENCH_REGISTER_KEY`` names; None when
+    neither is set. ValueError (the message names the file) when it cannot be read or is
+    shorter than 32 bytes."""
+    path = path.strip() or os.environ.get(KEY_ENV_VAR, "").strip()
+    if not path:
+        return None
+    try:
+        key = Path(path).expanduser().read_bytes()
+    except OSError as exc:
+        raise KeyError_(message(QT_TR_NOOP(
+            "the laboratory's register key {path} cannot be read ({reason})"),
+            path=path, reason=exc.strerror or str(exc))) from None
+    if len(key) < 32:
+        raise KeyError_(message(QT_TR_NOOP(
+            "the laboratory's register key {path} holds {n} bytes: a key is at least 32 "
+            "random bytes"), path=path, n=len(key)))
+    return key
+
+
+def sign(key: bytes, chain: str) -> str:
+    return hmac.new(key, chain.encode(), hashlib.sha256).hexdigest()
+
+
+def signature_ok(key: bytes, chain: str, signature: str | None) -> bool:
+    return bool(signature) and hmac.compare_digest(sign(key, chain), signature)
