@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QEvent, QObject, Qt, Signal
 from PySide6.QtWidgets import (
+    QAbstractScrollArea,
+    QApplication,
     QComboBox,
     QDoubleSpinBox,
     QFormLayout,
@@ -17,6 +19,35 @@ from PySide6.QtWidgets import (
 
 from models.parameters import Parameter
 from widgets.i18n import Tr, declared, live, on_language_change, tr
+
+
+class _UnfocusedWheel(QObject):
+    """Hands the wheel of a field without focus to the area that scrolls around it: scrolling
+    a set-up past a field never changes it (#41: "not stated" became 0.3000)."""
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 - Qt's name
+        if event.type() == QEvent.Type.Wheel and isinstance(watched, QWidget) \
+                and not watched.hasFocus():
+            parent = watched.parentWidget()
+            while parent is not None and not isinstance(parent, QAbstractScrollArea):
+                parent = parent.parentWidget()
+            if parent is not None:
+                QApplication.sendEvent(parent.verticalScrollBar(), event)
+            return True
+        return False
+
+
+_WHEEL_FILTER: _UnfocusedWheel | None = None
+
+
+def ignore_unfocused_wheel(widget: QWidget) -> None:
+    """The mouse wheel changes ``widget`` (a spin box, a list) only when it has focus (a
+    click or Tab gives it); otherwise the wheel scrolls what is around it."""
+    global _WHEEL_FILTER  # noqa: PLW0603 - one filter for the application
+    if _WHEEL_FILTER is None:
+        _WHEEL_FILTER = _UnfocusedWheel(QApplication.instance())
+    widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+    widget.installEventFilter(_WHEEL_FILTER)
 
 
 def _shown(text: str) -> Tr:
@@ -101,6 +132,8 @@ class SettingsForm(QWidget):
 
     def _add(self, key: str, label: str, widget, tooltip: str):
         widget.setObjectName(key)
+        if isinstance(widget, (QComboBox, QSpinBox, QDoubleSpinBox)):
+            ignore_unfocused_wheel(widget)
         if tooltip:
             live(widget.setToolTip, _shown(tooltip))
         caption = QLabel()

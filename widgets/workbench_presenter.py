@@ -30,8 +30,9 @@ from models.readings.tabular_import import (
     read_table,
 )
 from models.workbench import ShowsHeadline, Workbench
-from widgets.i18n import explained, on_language_change, tr, translated
+from widgets.i18n import declared, explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
+from widgets.table_commands import SettingsCommand
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import Workers, application_workers, emit_if_alive
 
@@ -258,8 +259,25 @@ class WorkbenchPresenter(QObject):
         self.schedule_refresh()
 
     def settings_edited(self) -> None:
-        """The user changed a set-up field."""
-        self._settings.update(self.view.settings_values())
+        """The user changed a set-up field: one undo step (Edit › Undo puts it back)."""
+        old = dict(self._settings)
+        new = {**old, **self.view.settings_values()}
+        if new == old:
+            return
+        changed = [k for k in new if new[k] != old.get(k)]
+        label = tr("Set-up: {names}").format(names=", ".join(
+            self._setting_label(k) for k in changed[:3]) + (" …" if len(changed) > 3 else ""))
+        self.undo_stack.push(SettingsCommand(self._apply_edited_settings, old, new, label))
+
+    def _setting_label(self, key: str) -> str:
+        parameter = next((p for p in self.kind.parameters if p.key == key), None)
+        return declared(parameter.label) if parameter is not None else key
+
+    def _apply_edited_settings(self, settings: dict[str, Any]) -> None:
+        """The set-up of an undo step, shown and analysed (the fields set without signals)."""
+        if settings != self.view.settings_values():
+            self.view.set_settings(settings)
+        self._settings = dict(settings)
         self._readings_per_point()
         self._settings_modified = True
         self._emit_modified()
