@@ -21,6 +21,10 @@ from models.parameters import Parameter
 from widgets.i18n import Tr, declared, live, on_language_change, tr
 
 
+#: a form whose widest label and widest field are wider than this (px) wraps its rows
+WRAP_WIDTH = 600
+
+
 class _UnfocusedWheel(QObject):
     """Hands the wheel of a field without focus to the area that scrolls around it: scrolling
     a set-up past a field never changes it (#41: "not stated" became 0.3000)."""
@@ -66,6 +70,7 @@ class SettingsForm(QWidget):
         self._form = QFormLayout(self)
         self._form.setContentsMargins(4, 4, 4, 4)
         self._choices: list[tuple[QComboBox, list[Tr]]] = []
+        self._widest = (0, 0)  # the widest label and field so far (px)
         on_language_change(self, self._retranslate_choices)
 
     def add_float(self, key: str, label: str, minimum: float, maximum: float, decimals: int = 3,
@@ -140,6 +145,13 @@ class SettingsForm(QWidget):
         live(caption.setText, _shown(label))
         caption.setBuddy(widget)
         self._form.addRow(caption, widget)
+        # a form whose widest label and widest field together are wider than WRAP_WIDTH puts fields below their labels when the
+        # pane is narrow: with the capture panel docked beside it the window stays within a
+        # 1280 px screen (#41: the cross-calibration set-up made it 1484 px)
+        self._widest = (max(self._widest[0], caption.sizeHint().width()),
+                        max(self._widest[1], widget.minimumSizeHint().width()))
+        if sum(self._widest) > WRAP_WIDTH:
+            self._form.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapLongRows)
         self._fields[key] = widget
         return widget
 

@@ -57,6 +57,7 @@ import numpy as np
 from PySide6.QtCore import QSettings, Qt, QTimer
 from PySide6.QtGui import QKeySequence
 from PySide6.QtWidgets import (
+    QBoxLayout,
     QCheckBox,
     QComboBox,
     QDialog,
@@ -437,8 +438,17 @@ class CapturePanel(QDockWidget):
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
         body = QWidget()
-        layout = QVBoxLayout(body)
-        layout.setContentsMargins(4, 4, 4, 4)
+        # three columns side by side when docked at the bottom, one above the other beside
+        self.body_layout = QBoxLayout(QBoxLayout.Direction.TopToBottom, body)
+        self.body_layout.setContentsMargins(4, 4, 4, 4)
+        sections = [QWidget(), QWidget(), QWidget()]
+        columns = []
+        for section in sections:
+            column = QVBoxLayout(section)
+            column.setContentsMargins(0, 0, 0, 0)
+            columns.append(column)
+            self.body_layout.addWidget(section)
+        self.body_layout.addStretch(1)
         self.guide = QLabel("")
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
         self.stability = QLabel("")
@@ -477,16 +487,18 @@ class CapturePanel(QDockWidget):
         for widget in (self.guide, self.stability, self.allan, self.auto_state):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        layout.addWidget(self.guide)
-        layout.addWidget(self.links[0].box)
-        layout.addWidget(self.stability)
-        layout.addWidget(self.allan)
-        layout.addWidget(self.take_button)
-        layout.addWidget(self.auto)
-        layout.addLayout(auto_form)
-        layout.addWidget(self.auto_state)
-        layout.addWidget(self.links[1].box)
-        layout.addStretch(1)
+        columns[0].addWidget(self.guide)
+        columns[0].addWidget(self.links[0].box)
+        columns[0].addWidget(self.stability)
+        columns[0].addWidget(self.allan)
+        columns[1].addWidget(self.take_button)
+        columns[1].addWidget(self.auto)
+        columns[1].addLayout(auto_form)
+        columns[1].addWidget(self.auto_state)
+        columns[2].addWidget(self.links[1].box)
+        for column in columns:
+            column.addStretch(1)
+        self.dockLocationChanged.connect(self._docked)
         # the body scrolls (vertically) rather than making the window wider or taller
         scroll = QScrollArea()
         scroll.setWidget(body)
@@ -507,6 +519,12 @@ class CapturePanel(QDockWidget):
         if tabs is not None:
             tabs.currentChanged.connect(self.workbench_changed)
         on_language_change(self, self._refill_columns)
+
+    def _docked(self, area) -> None:
+        """At the bottom the panel's parts stand side by side; at a side, one above the other."""
+        bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
+        self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
+                                      else QBoxLayout.Direction.TopToBottom)
 
     # ------------------------------------------------------------ the first link's state
     @property
