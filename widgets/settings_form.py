@@ -20,7 +20,6 @@ from PySide6.QtWidgets import (
 from models.parameters import Parameter
 from widgets.i18n import Tr, declared, live, on_language_change, tr
 
-
 #: a form whose widest label and widest field are wider than this (px) wraps its rows
 WRAP_WIDTH = 600
 
@@ -145,9 +144,10 @@ class SettingsForm(QWidget):
         live(caption.setText, _shown(label))
         caption.setBuddy(widget)
         self._form.addRow(caption, widget)
-        # a form whose widest label and widest field together are wider than WRAP_WIDTH puts fields below their labels when the
-        # pane is narrow: with the capture panel docked beside it the window stays within a
-        # 1280 px screen (#41: the cross-calibration set-up made it 1484 px)
+        # a form whose widest label and widest field together are wider than WRAP_WIDTH
+        # puts fields below their labels when the pane is narrow: with the capture panel
+        # docked beside it the window stays within a 1280 px screen (#41: the
+        # cross-calibration set-up made it 1484 px)
         self._widest = (max(self._widest[0], caption.sizeHint().width()),
                         max(self._widest[1], widget.minimumSizeHint().width()))
         if sum(self._widest) > WRAP_WIDTH:
