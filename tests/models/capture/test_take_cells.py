@@ -56,7 +56,7 @@ def test_cells_rounded_to_the_instrument_resolution():
     assert cell_text(23.9468846154, "arcsec", 0.1) == "23.9"
     assert cell_text(-0.004, "arcsec", 0.01) == "0.00"  # no "-0.00"
     # 1 µrad = 0.206265"; 1.0" is 4.848 µrad → 5 µrad = 1.031"
-    assert MICRORADIAN_ARCSEC == pytest.approx(0.2062648, abs=1e-7)
+    assert pytest.approx(0.2062648, abs=1e-7) == MICRORADIAN_ARCSEC
     assert cell_text(1.0, "arcsec", MICRORADIAN_ARCSEC) == "1.03"
     assert cell_text(23.9468846154, "arcsec", 0.0) == "23.9468846154"  # as sent
     # a theodolite's azimuth in decimal degrees, to 0.1": 5 decimals of a degree do not
