@@ -10,6 +10,7 @@ from typing import Any
 
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
+from PySide6.QtWidgets import QHeaderView
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.display_units import (
@@ -188,6 +189,10 @@ class WorkbenchPresenter(QObject):
         self._signals.cancelled.connect(self._on_task_cancelled)
         self._signals.imported.connect(self._on_import_finished)
         self.busy = False
+        #: readings are coming from an instrument (the capture panel says): each take is
+        #: analysed off the GUI thread and the columns are not re-measured (the panel widens
+        #: the ones it fills), so the window never pauses for a take (#41)
+        self.capturing = False
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -434,14 +439,29 @@ class WorkbenchPresenter(QObject):
     def schedule_refresh(self) -> None:
         self._timer.start()
 
+    def set_capturing(self, on: bool) -> None:
+        """Readings from an instrument start (analysis off the GUI thread, columns widened
+        by the capture only) or stop (the columns fitted to their contents again)."""
+        if on == self.capturing:
+            return
+        self.capturing = on
+        if on:
+            self.view.table.horizontalHeader().setSectionResizeMode(
+                QHeaderView.ResizeMode.Interactive)
+        else:
+            self._fit_columns()
+
     def refresh(self) -> None:
-        """Parse the readings and analyse them now (on a worker for large sheets)."""
+        """Parse the readings and analyse them now (on a worker for large sheets, and while
+        capturing)."""
         self._timer.stop()
-        self._fit_columns()
+        if not self.capturing:
+            self._fit_columns()
         self._generation += 1
-        if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
-            self._set_busy(True, tr("Analysing {rows} readings …").format(
-                rows=self.sheet.row_count))
+        if self.sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
+            if not self.capturing:
+                self._set_busy(True, tr("Analysing {rows} readings …").format(
+                    rows=self.sheet.row_count))
             self.workers.start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,

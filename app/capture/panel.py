@@ -67,6 +67,7 @@ from PySide6.QtWidgets import (
     QFormLayout,
     QGridLayout,
     QGroupBox,
+    QHeaderView,
     QLabel,
     QLineEdit,
     QPushButton,
@@ -577,6 +578,7 @@ class CapturePanel(QDockWidget):
         link.connect(kind, port, baud, simulator, **worker_options)
         self._reset_statistics()
         self._refill_columns()
+        self._capturing()
         self.timer.start()
 
     def disconnect_instrument(self, slot: int | None = None) -> None:
@@ -618,6 +620,16 @@ class CapturePanel(QDockWidget):
         self.take_button.setEnabled(any(link.usable for link in self.links))
         if not any(link.connected for link in self.links):
             self.timer.stop()
+        self._capturing()
+
+    def _capturing(self) -> None:
+        """The workbench in front analyses takes off the GUI thread while an instrument is
+        connected; the others as usual."""
+        connected = any(link.connected for link in self.links)
+        current = getattr(self.window_, "current", None)
+        for presenter in getattr(self.window_, "presenters", []):
+            if hasattr(presenter, "set_capturing"):
+                presenter.set_capturing(connected and presenter is current)
 
     def _reset_statistics(self) -> None:
         """A new connection or another workbench: no figure of before stays on screen."""
@@ -634,6 +646,7 @@ class CapturePanel(QDockWidget):
         """Another workbench in front: its guidance, not the last one's."""
         self._reset_statistics()
         self._refill_columns()
+        self._capturing()
         if any(link.connected for link in self.links):
             self.update_guide()
 
@@ -935,6 +948,7 @@ class CapturePanel(QDockWidget):
                     filled.add(keys.index(key))
         changes += self._from_reference(sheet, keys, row, changes, filled)
         model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1))
+        self._widen(table, changes)
         for link in self.links:
             got = taking.get(link.slot)
             if got is not None and link.session is not None and got[2][0] >= 0 \
@@ -945,6 +959,19 @@ class CapturePanel(QDockWidget):
         table.next_row(row)
         self.update_guide()
         return f"row {row + 1}"
+
+    @staticmethod
+    def _widen(table, changes) -> None:
+        """The columns a take filled widened to their new text when it needs more room (an
+        increment, not a re-measure of every cell: the window never pauses for it)."""
+        header = table.horizontalHeader()
+        if header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
+            return  # Qt fits them itself
+        metrics = table.fontMetrics()
+        for _, column, text in changes:
+            needed = metrics.horizontalAdvance(text) + 16
+            if needed > header.sectionSize(column):
+                header.resizeSection(column, needed)
 
     @staticmethod
     def _from_reference(sheet, keys, row, changes, filled) -> list[tuple[int, int, str]]:
