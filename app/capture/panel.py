@@ -50,8 +50,13 @@ from __future__ import annotations
 import contextlib
 import math
 import queue
+import re
+import select
+import subprocess
+import sys
 import time
 from collections import deque
+from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QSettings, Qt, QTimer
@@ -218,6 +223,44 @@ class DemonstrationDialog(QDialog):
                 tuple(k for k, box in self.faults.items() if box.isChecked()))
 
 
+class DemonstrationProcess:
+    """``anglebench simulate KIND 0`` in a process of its own: the port it answers on, and
+    ``close()`` (also as a context manager's exit) to stop it."""
+
+    #: where the demonstration instrument points in turn (8 s each)
+    POSITIONS = {"autocollimator": ("12.5,4.1,-6.3,0.4", "12.5,-3.2"),
+                 "theodolite": ("0,5,10,15", "0,89.998"),
+                 "readout": ("0,15.00012,30.00007,44.99991", "0")}
+
+    def __init__(self, kind: str, noise: float = 0.05, drift: float = 0.0,
+                 faults: tuple[str, ...] = (), start_s: float = 10.0) -> None:
+        positions, position = self.POSITIONS[kind]
+        command = [sys.executable, "-m", "app.main", "simulate", kind, "0",
+                   "--positions", positions, "--position", position, "--hold", "8",
+                   "--noise", f"{noise:g}", "--drift", f"{drift:g}"]
+        for fault in faults:
+            command += ["--fault", fault]
+        self.process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                                        stderr=subprocess.DEVNULL, text=True,
+                                        cwd=str(Path(__file__).resolve().parents[2]))
+        ready, _, _ = select.select([self.process.stdout], [], [], start_s)
+        line = self.process.stdout.readline() if ready else ""
+        found = re.search(r"tcp://127\.0\.0\.1:\d+", line)
+        if found is None:
+            self.close()
+            raise OSError(f"the demonstration {kind} did not start")
+        self.port = found.group(0)
+
+    def close(self) -> None:
+        if self.process.poll() is None:
+            self.process.terminate()
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.process.communicate(timeout=5)
+
+    def __exit__(self, *_exc) -> None:
+        self.close()
+
+
 class _Session:
     """One connection's raw frames as they will be stored, converted as they arrive (a
     project saved during a long stream converts only the frames since the last save)."""
@@ -260,6 +303,9 @@ class InstrumentLink:
         live(self.status.setText, tr("Not connected"))
         self.value = QLabel("—")
         self.value.setStyleSheet(_VALUE_STYLE)
+        # room for two lines: a stale value's "(link lost)" wraps below it, never clipped
+        self.value.setMinimumHeight(2 * self.value.fontMetrics().lineSpacing() * 16 //
+                                    max(1, self.value.font().pointSize()) + 8)
         for label in (self.status, self.value):
             label.setWordWrap(True)
             # a longer text wraps, never widens the panel: the plots beside it are not
@@ -588,29 +634,25 @@ class CapturePanel(QDockWidget):
 
     def start_demonstration(self, kind: str, noise: float = 0.05, drift: float = 0.0,
                             faults: tuple[str, ...] = (), slot: int | None = None) -> str:
-        """A demonstration instrument on a free TCP port of 127.0.0.1, connected to the
-        first free instrument (or ``slot``); its port."""
-        from app.capture.simulate_cli import simulator_from
-
+        """A demonstration instrument (``anglebench simulate``, a process of its own so it
+        never competes with the window for time) on a free TCP port of 127.0.0.1,
+        connected to the first free instrument (or ``slot``); its port."""
         if slot is None:
             slot = 0 if not self.links[0].connected or self.links[1].connected else 1
-        link = self.links[slot]
-        link.disconnect()
-        positions = {"autocollimator": [(12.5, -3.2), (4.1, 0.8), (-6.3, 2.2), (0.4, -1.1)],
-                     "theodolite": [(0.0, 89.998), (5.0, 90.001), (10.0, 90.004)],
-                     "readout": [(0.0,), (15.00012,), (30.00007,), (44.99991,)]}[kind]
-        simulator = simulator_from(kind, 0, noise=noise, drift=drift, faults=faults,
-                                   rate_hz=50.0)
-        simulator.positions, simulator.hold_s = positions, 8.0
-        simulator.__enter__()
-        self.connect_to(kind, simulator.port, slot=slot, simulator=simulator)
-        return simulator.port
+        self.links[slot].disconnect()
+        demonstration = DemonstrationProcess(kind, noise, drift, faults)
+        self.connect_to(kind, demonstration.port, slot=slot, simulator=demonstration)
+        return demonstration.port
 
     def demonstration_dialog(self) -> None:
         dialog = DemonstrationDialog(self)
         if dialog.exec() == QDialog.DialogCode.Accepted:
             kind, noise, drift, faults = dialog.choice()
-            self.start_demonstration(kind, noise, drift, faults)
+            try:
+                self.start_demonstration(kind, noise, drift, faults)
+            except OSError as exc:
+                self.status.setText(tr("The demonstration instrument did not start: {reason}")
+                                    .format(reason=str(exc)))
 
     def closeEvent(self, event) -> None:  # noqa: N802
         self.disconnect_instrument()
@@ -798,10 +840,9 @@ class CapturePanel(QDockWidget):
         """What the workers have queued, without waiting: for at most ``DRAIN_BUDGET_S`` a
         tick, so a stream faster than the window can follow makes a backlog (worked off in
         the next ticks), never a frozen window."""
-        until = time.perf_counter() + DRAIN_BUDGET_S
-        for link in self.links:
-            if link.worker is not None:
-                self._drain_link(link, link.worker, until)
+        active = [link for link in self.links if link.worker is not None]
+        for link in active:  # each its share: a fast stream never starves the other link
+            self._drain_link(link, link.worker, time.perf_counter() + DRAIN_BUDGET_S / len(active))
         now = time.perf_counter()
         for link in self.links:
             if link.worker is not None and link.latest is not None and not link.lost \

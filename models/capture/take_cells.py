@@ -86,7 +86,8 @@ def cell_text(value: float, unit: str, resolution_arcsec: float, dms: bool = Fal
     own unit."""
     if unit == "deg" and column_unit not in ('"', "arcsec"):
         if resolution_arcsec <= 0:
-            return format_dms(value, 6) if dms else f"{value:.12g}"
+            # as sent: D°M′S″ to 0.001″ (a readout's 0.00001° is 0.036″), else every digit
+            return format_dms(value, 3) if dms else f"{value:.12g}"
         arcsec = rounded(value * 3600.0, resolution_arcsec)
         if dms:
             return format_dms(arcsec / 3600.0, decimals_for(resolution_arcsec))

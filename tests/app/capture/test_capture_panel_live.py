@@ -81,8 +81,14 @@ def test_two_instruments_fill_one_row_at_the_same_moment(window, qtbot):
         qtbot.waitUntil(lambda: all(link.usable for link in panel.links), timeout=3000)
         assert panel.links[0].status.text() == f"Connected: {ac.port}"
         assert second.status.text() == f"Connected: {readout.port}"
+        assert presenter.capturing  # takes are analysed off the GUI thread
+        parsed = presenter.parsed
         panel.take_button.click()
+        presenter.refresh()
+        assert presenter.parsed is parsed  # not analysed here: on a worker
+        qtbot.waitUntil(lambda: presenter.parsed is not parsed, timeout=5000)  # it lands
         panel.disconnect_instrument()
+    assert not presenter.capturing
     assert _cells(model, 0, keys, ("ac_x_arcsec", "ac_y_arcsec")) == ["2.35", "-1.23"]
     # the readout's degrees "as sent" (its default resolution), in decimal degrees
     assert float(model.sheet.text(0, keys.index("encoder_deg"))) == pytest.approx(105.00012,
@@ -172,4 +178,4 @@ def test_a_demonstration_instrument_from_the_menu(window, qtbot):
     assert presenter.table_model.sheet.text(row, keys.index("azimuth_deg")) != ""
     window.menus.disconnect_instrument_action.trigger()
     assert panel.links[0].simulator is None and panel.worker is None
-    assert simulator._stop.is_set()  # the demonstration stopped with the link
+    assert simulator.process.poll() is not None  # the demonstration stopped with the link
