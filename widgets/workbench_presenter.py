@@ -10,7 +10,6 @@ from typing import Any
 
 from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
-from PySide6.QtWidgets import QHeaderView
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
 from models.display_units import (
@@ -446,8 +445,7 @@ class WorkbenchPresenter(QObject):
             return
         self.capturing = on
         if on:
-            self.view.table.horizontalHeader().setSectionResizeMode(
-                QHeaderView.ResizeMode.Interactive)
+            self.view.hold_columns()
         else:
             self._fit_columns()
 
