@@ -233,7 +233,7 @@ class DemonstrationProcess:
                  "readout": ("0,15.00012,30.00007,44.99991", "0")}
 
     def __init__(self, kind: str, noise: float = 0.05, drift: float = 0.0,
-                 faults: tuple[str, ...] = (), start_s: float = 10.0) -> None:
+                 faults: tuple[str, ...] = (), start_s: float = 30.0) -> None:
         positions, position = self.POSITIONS[kind]
         command = [sys.executable, "-m", "app.main", "simulate", kind, "0",
                    "--positions", positions, "--position", position, "--hold", "8",

@@ -179,3 +179,31 @@ def test_a_demonstration_instrument_from_the_menu(window, qtbot):
     window.menus.disconnect_instrument_action.trigger()
     assert panel.links[0].simulator is None and panel.worker is None
     assert simulator.process.poll() is not None  # the demonstration stopped with the link
+
+
+def test_a_face_deviation_is_filled_from_the_polygon_certificate_rows(window, qtbot):
+    """#41: cells the capture cannot fill: a polygon face's deviation (its certificate's,
+    typed or sent once per face) goes with the face into the row a take fills; a face
+    with two different deviations is left for the technician; D°M′S″ rows get D°M′S″."""
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    keys = [c.key for c in model.sheet.columns]
+    rows = [["1", "0°00'00\"", "0.00", "1.00", "0.50", "1", "+"],
+            ["2", "90°00'01\"", "0.13", "2.00", "0.40", "1", "+"],
+            ["3", "180°00'02\"", "-0.21", "3.00", "0.30", "1", "+"],
+            ["2", "", "", "", "", "2", "+"]]  # set 2, face 2 planned
+    model.replace_all([list(r) for r in rows], "set 1 and a planned face")
+    presenter.view.table.setCurrentIndex(model.index(3, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(4.0, 0.2)]) as ac, \
+            ReadoutSimulator("pty", positions=[(90.00012,)]) as readout:
+        panel.connect_to("autocollimator", ac.port, **FAST)
+        panel.connect_to("readout", readout.port, slot=1, **FAST)
+        panel.links[1].column.setCurrentIndex(panel.links[1].column.findData("encoder_deg"))
+        qtbot.waitUntil(lambda: all(link.usable for link in panel.links), timeout=3000)
+        panel.take_reading()
+        panel.disconnect_instrument()
+    assert _cells(model, 3, keys, ("position", "polygon_dev_arcsec", "ac_x_arcsec", "set")) == \
+        ["2", "0.13", "4.00", "2"]
+    # 90.00012° = 90°00'00.432" as sent, in the column's D°M′S″
+    assert model.sheet.text(3, keys.index("encoder_deg")) == "90°00'00.432\""
