@@ -136,6 +136,13 @@ def _instrument_names() -> tuple[tuple[str, str], ...]:
             ("readout", tr("Readout (one line per reading)")))
 
 
+def _unwrapped_deg(values, origin):
+    """Angles in degrees as ``origin`` plus their difference from it wrapped to ±180°: a
+    direction near 0°/360° is not 360° apart from itself."""
+    values = np.asarray(values, dtype=float)
+    return origin + (values - origin + 180.0) % 360.0 - 180.0
+
+
 class ConnectDialog(QDialog):
     """Instrument, port and baud rate; the port and baud last used for each instrument are
     filled in (``settings``)."""
@@ -911,10 +918,13 @@ class CapturePanel(QDockWidget):
             if t < now - SPREAD_SECONDS:
                 break
             recent.append(v)
+        degrees = reading.unit == "deg"
+        scale = 3600.0 if degrees else 1.0
         recent = np.array(recent)
+        if degrees and len(recent):  # an angle near 0°/360° spreads by its noise, not 360°
+            recent = _unwrapped_deg(recent, recent[0])
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
-            scale = 3600.0 if reading.unit == "deg" else 1.0
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
                 spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))
@@ -923,12 +933,15 @@ class CapturePanel(QDockWidget):
             times = np.array([t for t, _, _ in self.frames])
             tau0 = float(np.median(np.diff(times)))
             first = np.array([v[0] for _, v, _ in self.frames])
+            if degrees:
+                first = _unwrapped_deg(first, first[0])
             if tau0 > 0:
                 taus, adev = allan_deviation(first, tau0)
-                scale = 3600.0 if reading.unit == "deg" else 1.0
+                # three of them (the shortest, a middle and the longest τ): the text stays short
+                picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
                 self.allan.setText(tr("Allan deviation (first axis): {figures}").format(
-                    figures=", ".join(f"{a * scale:.3g} ({t:.3g} s)"
-                                      for t, a in list(zip(taus, adev, strict=True))[::2])))
+                    figures=", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)"
+                                      for i in picked)))
 
     # ------------------------------------------------------------ take reading
     def take_reading(self, values: tuple[float, ...] | None = None,

@@ -207,3 +207,21 @@ def test_a_face_deviation_is_filled_from_the_polygon_certificate_rows(window, qt
         ["2", "0.13", "4.00", "2"]
     # 90.00012° = 90°00'00.432" as sent, in the column's D°M′S″
     assert model.sheet.text(3, keys.index("encoder_deg")) == "90°00'00.432\""
+
+
+def test_a_direction_at_zero_spreads_by_its_noise_not_by_360_degrees(window, qtbot):
+    """The theodolite aimed at 0°: readings 359°59'59.8" and 0°00'00.3" are 0.5" apart
+    (the panel showed a spread of 1295999.997" and an Allan deviation of 6.4e+05")."""
+    _show(window, "theodolite")
+    panel = window.capture_panel
+    with TheodoliteSimulator("tcp", positions=[(0.0, 90.0)], sigma=0.5) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.allan.text() != "" and panel.stability.text() != "",
+                        timeout=8000)
+        spread = [float(v) for v in panel.stability.text().split(":")[1].replace('"', "").split()]
+        allan = [float(part.split("(")[0]) for part in panel.allan.text().split(":")[1].split(",")]
+        panel.disconnect_instrument()
+    hz = [v[0] for v in sim.sent if v is not None]
+    assert min(hz) < 0.001 and max(hz) > 359.999  # it did read on both sides of 0°
+    assert 0.0 < spread[0] < 6.0  # σ = 0.5": a few σ, never 360°
+    assert all(0.0 < a < 2.0 for a in allan)
