@@ -6008,6 +6008,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
+        <extracomment>where the demonstration instrument points in turn (8 s each)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -6078,6 +6079,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{value} (link lost)</source>
         <translation>{value}（链路中断）</translation>
+    </message>
+    <message>
+        <source>The demonstration instrument did not start: {reason}</source>
+        <translation>演示仪器未能启动：{reason}</translation>
     </message>
     <message>
         <source>Spread over the last second: {spread}{unit}</source>
