@@ -96,7 +96,7 @@ from models.capture.take_cells import (
     next_empty_point,
 )
 from models.workbench import GuidesAcquisition
-from widgets.i18n import live, on_language_change, tr, translated
+from widgets.i18n import declared, live, on_language_change, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
 
 __all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"]
@@ -389,7 +389,8 @@ class InstrumentLink:
             self.column.clear()
             self.column.addItem(tr("the current cell"), "")
             for column in columns:
-                self.column.addItem(column.header, column.key)
+                self.column.addItem(declared(column.header), column.key)
+            self.resolution.setItemText(0, tr("as sent"))  # in the language chosen now
             self.column.setCurrentIndex(max(0, self.column.findData(chosen)))
         finally:
             self.column.blockSignals(False)
