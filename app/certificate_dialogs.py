@@ -66,6 +66,16 @@ class CertificateDialogs:
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
+    def confirm_standards(self, warnings: list[str]) -> bool:
+        """A reference standard that looks like another test's: go on with it?"""
+        answer = self.window.ask(
+            tr("Use these reference standards?"),
+            tr("{warnings}\n\nIssue the certificate with them anyway? (No: back to the "
+               "details)").format(warnings="\n".join(warnings)),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def ask_change_note(self, revision) -> str:
         question = (tr("This certificate replaces {number}. What changed, and why? (printed on "
                        "the certificate; ISO/IEC 17025 7.8.8)") if revision.replacement else

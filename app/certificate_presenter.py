@@ -18,6 +18,12 @@ from typing import Any, Protocol
 
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.certificate.standards_fit import (
+    STANDARDS_BY_WORKBENCH,
+    standards_fit,
+    standards_for,
+    with_workbench_standards,
+)
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.output_guard import check_output
 from models.workbench import IssuesCertificates
@@ -58,6 +64,9 @@ class CertificateView(Protocol):
     def confirm_implausible(self, reason: str) -> bool:
         """Certify a result that shows figures no instrument of the kind has (``reason``)?"""
 
+    def confirm_standards(self, warnings: list[str]) -> bool:
+        """Go on with reference standards that look like another test's (``warnings``)?"""
+
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str: ...
 
     def tell(self, title: str, text: str) -> None: ...
@@ -94,23 +103,38 @@ class CertificatePresenter:
         self.open_project_path: Callable[[], Any] = lambda: None
         #: the readings files imported in this window (the main window sets it): inputs too
         self.inputs: Callable[[], list] = list
+        #: the workbench whose details were last asked for ("" before any)
+        self.editing = ""
 
     # -- the lab's defaults ------------------------------------------------------
-    def lab_defaults(self) -> dict:
+    def lab_defaults(self, workbench: str = "") -> dict:
+        """The lab's saved defaults; for ``workbench``, with that workbench's own reference
+        standards (models/certificate/standards_fit.py: never another workbench's)."""
         text = self.store.value(LAB_DEFAULTS_KEY, "")
         try:
             data = json.loads(text) if text else {}
         except (TypeError, ValueError):
             data = {}
-        return data if isinstance(data, dict) else {}
+        data = data if isinstance(data, dict) else {}
+        if workbench:
+            data = {k: v for k, v in data.items() if k != STANDARDS_BY_WORKBENCH}
+            data["standards"] = standards_for(self.lab_defaults(), workbench) or []
+        return data
 
-    def save_lab_defaults(self, defaults: dict) -> None:
+    def save_lab_defaults(self, defaults: dict, workbench: str = "") -> None:
+        """The lab fields of a certificate's details kept as the lab's defaults; the
+        reference standards as those of ``workbench`` (else of the workbench whose details
+        were last asked for), the other workbenches' kept."""
+        workbench = workbench or self.editing
+        if workbench:
+            defaults = with_workbench_standards(self.lab_defaults(), defaults, workbench)
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
 
     # -- a workbench's details -----------------------------------------------------
     def details(self, key: str) -> CertificateMetadata:
         """The workbench's details from the project, the lab's defaults filled in; a stored
         detail that no longer reads is kept aside (``problems``), not the others blanked."""
+        self.editing = key  # the lab defaults saved from its dialog are this workbench's
         certificates = self._metadata().get("certificates", {})
         stored = certificates.get(key)
         last = certificates.get(self._metadata().get("certificates_last", ""))
@@ -121,7 +145,7 @@ class CertificatePresenter:
         if "language" not in self.raw:
             meta = dataclasses.replace(meta, language=self.default_language)
         try:
-            return meta.with_lab_defaults(self.lab_defaults())
+            return meta.with_lab_defaults(self.lab_defaults(key))
         except MetadataError:
             return meta
 
@@ -189,6 +213,17 @@ class CertificatePresenter:
             if entered is None:
                 return False
             self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
+            # a standard of another kind of quantity is refused, one as large as the
+            # tolerance asked about, before it enters the budget (#41)
+            refusals, warnings = standards_fit(entered, kind.error_unit(settings))
+            if refusals:
+                self.view.tell(tr("Cannot use these reference standards"),
+                               "\n".join(translated(r) for r in refusals))
+                shown, self.problems, self.raw = entered, {}, {}
+                continue
+            if warnings and not self.view.confirm_standards([translated(w) for w in warnings]):
+                shown, self.problems, self.raw = entered, {}, {}
+                continue
             draft = draft_reasons(entered)
             # "No, not a draft": back to the dialog, what was typed kept, to fill in the rest
             if not draft or self.view.confirm_draft(draft):

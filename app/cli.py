@@ -24,7 +24,6 @@ from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
 from models.project.file import migrate_certificate_details
-from models.readings.incomplete import without_waiting_rows
 from models.project.output_guard import (
     OutputRefused,
     Protected,
@@ -32,6 +31,7 @@ from models.project.output_guard import (
     input_files,
     register_files,
 )
+from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import (

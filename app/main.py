@@ -8,6 +8,7 @@
     anglebench validate [--pdf OUT] run the method validation cases (see app.validation_report)
     anglebench register list|show|verify|export …  the certificate register (app.register_cli)
     anglebench capture INSTRUMENT PORT --out FILE.csv  readings from an instrument (app.capture.cli)
+    anglebench simulate INSTRUMENT PORT  a demonstration instrument (app.capture.simulate_cli)
 """
 
 from __future__ import annotations
@@ -40,6 +41,10 @@ def main(argv: list[str] | None = None) -> int:
         from app.capture.cli import run_capture  # no Qt import on this path
 
         return run_capture(argv[1:])
+    if argv and argv[0] == "simulate":
+        from app.capture.simulate_cli import run_simulate  # no Qt import on this path
+
+        return run_simulate(argv[1:])
     if argv and argv[0] == "validate":
         from app.validation_report import run_validate  # no Qt import on this path
 
@@ -52,7 +57,7 @@ def main(argv: list[str] | None = None) -> int:
             prog="anglebench", description=words(QT_TR_NOOP("Angle metrology workbench")),
             epilog=words(QT_TR_NOOP("Commands without a window: anglebench analyze KIND FILE, "
                                     "anglebench validate, anglebench register, anglebench "
-                                    "capture; each has --help.")))
+                                    "capture, anglebench simulate; each has --help.")))
         parser.add_argument("project", nargs="?", help=words(QT_TR_NOOP("project file to open")))
         parser.add_argument("--version", action="store_true", help=words(QT_TR_NOOP(
             "print the version and the source's commit (or, installed without git, the "

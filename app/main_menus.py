@@ -34,9 +34,26 @@ class MainMenus:
         self._edit_menu(self._menu(bar, tr("&Edit")))
         self._view_menu(self._menu(bar, tr("&View")))
         instrument_menu = self._menu(bar, tr("&Instrument"))
+        panel = window.capture_panel
         self.connect_instrument_action = self._action(
             instrument_menu, tr("&Connect…"),
-            lambda: (window.capture_panel.show(), window.capture_panel.connect_dialog()))
+            lambda: (panel.show(), panel.connect_dialog(0)))
+        self.connect_second_action = self._action(
+            instrument_menu, tr("Connect a &second instrument…"),
+            lambda: (panel.show(), panel.connect_dialog(1)),
+            tip=tr("e.g. the encoder's readout beside the autocollimator: one take fills the "
+                   "row from both"))
+        self.disconnect_instrument_action = self._action(
+            instrument_menu, tr("&Disconnect"), lambda: panel.disconnect_instrument())
+        instrument_menu.addSeparator()
+        self.demonstration_action = self._action(
+            instrument_menu, tr("D&emonstration instrument…"),
+            lambda: (panel.show(), panel.demonstration_dialog()),
+            tip=tr("A simulated autocollimator, theodolite or readout, for training and for "
+                   "trying the program without hardware"))
+        self.show_panel_action = panel.toggleViewAction()
+        live(self.show_panel_action.setText, tr("Show the instrument &panel"))
+        instrument_menu.addAction(self.show_panel_action)
         help_menu = self._menu(bar, tr("&Help"))
         self._action(help_menu, tr("&Manual (this workbench)"), window.show_manual,
                      QKeySequence.StandardKey.HelpContents,

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QEvent, QObject, Qt, Signal
 from PySide6.QtWidgets import (
+    QAbstractScrollArea,
+    QApplication,
     QComboBox,
     QDoubleSpinBox,
     QFormLayout,
@@ -17,6 +19,38 @@ from PySide6.QtWidgets import (
 
 from models.parameters import Parameter
 from widgets.i18n import Tr, declared, live, on_language_change, tr
+
+#: a form whose widest label and widest field are wider than this (px) wraps its rows
+WRAP_WIDTH = 600
+
+
+class _UnfocusedWheel(QObject):
+    """Hands the wheel of a field without focus to the area that scrolls around it: scrolling
+    a set-up past a field never changes it (#41: "not stated" became 0.3000)."""
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 - Qt's name
+        if event.type() == QEvent.Type.Wheel and isinstance(watched, QWidget) \
+                and not watched.hasFocus():
+            parent = watched.parentWidget()
+            while parent is not None and not isinstance(parent, QAbstractScrollArea):
+                parent = parent.parentWidget()
+            if parent is not None:
+                QApplication.sendEvent(parent.verticalScrollBar(), event)
+            return True
+        return False
+
+
+_WHEEL_FILTER: _UnfocusedWheel | None = None
+
+
+def ignore_unfocused_wheel(widget: QWidget) -> None:
+    """The mouse wheel changes ``widget`` (a spin box, a list) only when it has focus (a
+    click or Tab gives it); otherwise the wheel scrolls what is around it."""
+    global _WHEEL_FILTER  # noqa: PLW0603 - one filter for the application
+    if _WHEEL_FILTER is None:
+        _WHEEL_FILTER = _UnfocusedWheel(QApplication.instance())
+    widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
+    widget.installEventFilter(_WHEEL_FILTER)
 
 
 def _shown(text: str) -> Tr:
@@ -35,6 +69,7 @@ class SettingsForm(QWidget):
         self._form = QFormLayout(self)
         self._form.setContentsMargins(4, 4, 4, 4)
         self._choices: list[tuple[QComboBox, list[Tr]]] = []
+        self._widest = (0, 0)  # the widest label and field so far (px)
         on_language_change(self, self._retranslate_choices)
 
     def add_float(self, key: str, label: str, minimum: float, maximum: float, decimals: int = 3,
@@ -101,12 +136,22 @@ class SettingsForm(QWidget):
 
     def _add(self, key: str, label: str, widget, tooltip: str):
         widget.setObjectName(key)
+        if isinstance(widget, (QComboBox, QSpinBox, QDoubleSpinBox)):
+            ignore_unfocused_wheel(widget)
         if tooltip:
             live(widget.setToolTip, _shown(tooltip))
         caption = QLabel()
         live(caption.setText, _shown(label))
         caption.setBuddy(widget)
         self._form.addRow(caption, widget)
+        # a form whose widest label and widest field together are wider than WRAP_WIDTH
+        # puts fields below their labels when the pane is narrow: with the capture panel
+        # docked beside it the window stays within a 1280 px screen (#41: the
+        # cross-calibration set-up made it 1484 px)
+        self._widest = (max(self._widest[0], caption.sizeHint().width()),
+                        max(self._widest[1], widget.minimumSizeHint().width()))
+        if sum(self._widest) > WRAP_WIDTH:
+            self._form.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapLongRows)
         self._fields[key] = widget
         return widget
 

@@ -75,3 +75,20 @@ class ReplaceAllCommand(QUndoCommand):
     def undo(self) -> None:
         self._new = self._model.sheet.rows
         self._model.apply_replace(self._old, checked=True)
+
+
+class SettingsCommand(QUndoCommand):
+    """A change of a workbench's set-up (Edit › Undo puts the fields back as they were).
+
+    ``apply`` takes the settings to show and analyse with; the first redo (on push) applies
+    what the user already sees."""
+
+    def __init__(self, apply, old: dict, new: dict, label: str) -> None:
+        super().__init__(label)
+        self._apply, self._old, self._new = apply, dict(old), dict(new)
+
+    def redo(self) -> None:
+        self._apply(self._new)
+
+    def undo(self) -> None:
+        self._apply(self._old)

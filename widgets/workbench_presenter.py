@@ -32,8 +32,9 @@ from models.readings.tabular_import import (
     read_table,
 )
 from models.workbench import ShowsHeadline, Workbench
-from widgets.i18n import explained, on_language_change, tr, translated
+from widgets.i18n import declared, explained, on_language_change, tr, translated
 from widgets.readings_table_model import ReadingsTableModel
+from widgets.table_commands import SettingsCommand
 from widgets.workbench_view import WorkbenchView
 from widgets.workers import Workers, application_workers, emit_if_alive
 
@@ -194,6 +195,10 @@ class WorkbenchPresenter(QObject):
         self._signals.cancelled.connect(self._on_task_cancelled)
         self._signals.imported.connect(self._on_import_finished)
         self.busy = False
+        #: readings are coming from an instrument (the capture panel says): each take is
+        #: analysed off the GUI thread and the columns are not re-measured (the panel widens
+        #: the ones it fills), so the window never pauses for a take (#41)
+        self.capturing = False
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -265,8 +270,25 @@ class WorkbenchPresenter(QObject):
         self.schedule_refresh()
 
     def settings_edited(self) -> None:
-        """The user changed a set-up field."""
-        self._settings.update(self.view.settings_values())
+        """The user changed a set-up field: one undo step (Edit › Undo puts it back)."""
+        old = dict(self._settings)
+        new = {**old, **self.view.settings_values()}
+        if new == old:
+            return
+        changed = [k for k in new if new[k] != old.get(k)]
+        label = tr("Set-up: {names}").format(names=", ".join(
+            self._setting_label(k) for k in changed[:3]) + (" …" if len(changed) > 3 else ""))
+        self.undo_stack.push(SettingsCommand(self._apply_edited_settings, old, new, label))
+
+    def _setting_label(self, key: str) -> str:
+        parameter = next((p for p in self.kind.parameters if p.key == key), None)
+        return declared(parameter.label) if parameter is not None else key
+
+    def _apply_edited_settings(self, settings: dict[str, Any]) -> None:
+        """The set-up of an undo step, shown and analysed (the fields set without signals)."""
+        if settings != self.view.settings_values():
+            self.view.set_settings(settings)
+        self._settings = dict(settings)
         self._readings_per_point()
         self._settings_modified = True
         self._emit_modified()
@@ -483,14 +505,28 @@ class WorkbenchPresenter(QObject):
     def schedule_refresh(self) -> None:
         self._timer.start()
 
+    def set_capturing(self, on: bool) -> None:
+        """Readings from an instrument start (analysis off the GUI thread, columns widened
+        by the capture only) or stop (the columns fitted to their contents again)."""
+        if on == self.capturing:
+            return
+        self.capturing = on
+        if on:
+            self.view.hold_columns()
+        else:
+            self._fit_columns()
+
     def refresh(self) -> None:
-        """Parse the readings and analyse them now (on a worker for large sheets)."""
+        """Parse the readings and analyse them now (on a worker for large sheets, and while
+        capturing)."""
         self._timer.stop()
-        self._fit_columns()
+        if not self.capturing:
+            self._fit_columns()
         self._generation += 1
-        if self.sheet.row_count > THREAD_THRESHOLD_ROWS:
-            self._set_busy(True, tr("Analysing {rows} readings …").format(
-                rows=self.sheet.row_count))
+        if self.sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
+            if not self.capturing:
+                self._set_busy(True, tr("Analysing {rows} readings …").format(
+                    rows=self.sheet.row_count))
             self.workers.start(
                 _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,

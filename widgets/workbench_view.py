@@ -208,6 +208,11 @@ class WorkbenchView(QWidget):
         header.setResizeContentsPrecision(64)
         header.setStretchLastSection(True)
 
+    def hold_columns(self) -> None:
+        """The columns keep their widths (readings arrive from an instrument: the capture
+        widens the ones it fills; no re-measure of every cell at each take)."""
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
+
     def fit_columns(self, rows: int, live_rows: int, measure_rows: int) -> None:
         """Columns follow their contents up to ``live_rows`` rows. On long sheets Qt's
         re-measuring after every edit costs ~10 ms, so they are sized once (up to

@@ -1,42 +1,68 @@
-"""The window's capture panel: *Connect…* to an instrument, its live readout (the value,
-how settled it is, the Allan deviation), *Take reading*, which fills the current row's
-cells as one undo step, auto-take, the workbench's guidance and the raw frames.
+"""The window's capture panel: a dock (left, right or bottom; where it was is remembered
+with the window's state) with up to two instruments at once — e.g. an autocollimator for
+AC x/y and a readout for the encoder column — each with its own link, status, fault
+handling, *Connect…* and *Disconnect*; the live readout of each (the value, how settled
+it is, the Allan deviation of the first instrument), *Take reading*, which fills one row
+from both at the same moment as one undo step, auto-take, the workbench's guidance and
+the raw frames.
 
-The connection is a :class:`app.capture.worker.CaptureWorker` (its own thread); a timer
-empties its queue every 20 ms, so the window never waits for the instrument. Take
-reading fills the columns of the current row whose keys are the reading's
-(``ac_x_arcsec``/``ac_y_arcsec`` on the polygon workbench, ``azimuth_deg`` on the
-theodolite workbench, and ``zenith_deg`` into its vertical column when that column is
-set to read the zenith angle); a readout's single value goes to the current cell.
+Each connection is a :class:`app.capture.worker.CaptureWorker` (its own thread); a timer
+empties their queues every 20 ms, so the window never waits for an instrument. A value
+not refreshed for ``STALE_S`` (or after a fault) is greyed and marked "link lost"; the
+statistics and the guidance start afresh on a new connection and when the workbench in
+front changes. The panel's body scrolls rather than widening the window: the window never
+grows past its screen.
 
-*Auto-take* feeds every reading to a stability gate (models/capture/stability.py): when
-the output has stayed within the window for the dwell, the mean of those frames is
-taken as if *Take reading* was pressed. A workbench that guides (the capability
-``GuidesAcquisition`` of models/workbench.py; models/capture/guidance.py) says what to
-do next ("go to face 7 (encoder ≈ 105°)", "θ = 12°"); its cells saying which point a
-reading is of are filled with it, and with *readings per point* n > 1 the gate takes
-the n readings of a point one after another from fresh frames, then waits for the
-instrument to move. The n rows of a point are
-averaged by the workbench, and their s/√n is the budget's Type A input
-(models/readings/repeats.py).
+**Where a take goes** (models/capture/take_cells.py): the row the cursor is on when the
+cells the take fills are blank there, else the next empty point below (a row the plan has
+pre-filled with its face or target counts as empty), else a new row; a take never writes
+over a filled reading, and the table scrolls to the row it filled. Auto-take goes to the
+point the guidance names, worked out for that same row.
 
-Every line the instrument sends is kept (models/capture/raw_record.py): a session per
+**What a cell shows**: the value rounded to the instrument's resolution (a setting per
+instrument: 0.001″ … 1″, 1 µrad, or as sent), in the column's angle format (D°M′S″ where
+the column's cells are written so, else decimal degrees); the elevation is 90° − the
+zenith angle where the vertical column reads elevation. The raw frames (and
+``capture --out``) keep the instrument's full precision. A polygon face's deviation is
+filled from the rows of the same face that have one (the polygon's certificate, sent or
+typed once per face).
+
+Columns: ``ac_x_arcsec``/``ac_y_arcsec`` from an autocollimator, ``azimuth_deg`` and the
+vertical column from a theodolite; a readout's single value goes to the column chosen for
+it (by default the current cell's).
+
+*Auto-take* feeds every reading of the first instrument to a stability gate
+(models/capture/stability.py): when the output has stayed within the window for the
+dwell, the mean of those frames is taken as if *Take reading* was pressed (the second
+instrument's latest reading with it). A workbench that guides (``GuidesAcquisition`` of
+models/workbench.py; models/capture/guidance.py) says what to do next; its cells saying
+which point a reading is of are filled with it, and with *readings per point* n > 1 the
+gate takes the n readings of a point one after another from fresh frames.
+
+Every line an instrument sends is kept (models/capture/raw_record.py): a session per
 connection, filed under the workbench shown when it was made, with the rows its readings
-went to; the window saves them with the project and the register records them (and
-their SHA-256) with a certificate.
+went to (``takes``: row, first and last frame; the frames carry their times); the window
+saves them with the project and the register records them with a certificate.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 import queue
+import re
+import select
+import subprocess
+import sys
 import time
 from collections import deque
+from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import QSettings, Qt, QTimer
 from PySide6.QtGui import QKeySequence
 from PySide6.QtWidgets import (
+    QBoxLayout,
     QCheckBox,
     QComboBox,
     QDialog,
@@ -44,25 +70,36 @@ from PySide6.QtWidgets import (
     QDockWidget,
     QDoubleSpinBox,
     QFormLayout,
-    QHBoxLayout,
+    QGridLayout,
+    QGroupBox,
+    QHeaderView,
     QLabel,
     QLineEdit,
     QPushButton,
+    QScrollArea,
     QSizePolicy,
     QSpinBox,
     QVBoxLayout,
     QWidget,
 )
 
-from app.capture.instruments import INSTRUMENTS, reading_columns
+from app.capture.instruments import INSTRUMENTS
 from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation
 from models.capture.raw_record import frame_text
 from models.capture.stability import StabilityGate
+from models.capture.take_cells import (
+    MICRORADIAN_ARCSEC,
+    cell_text,
+    column_is_dms,
+    elevation_from_zenith_deg,
+    next_empty_point,
+)
 from models.workbench import GuidesAcquisition
-from widgets.i18n import live, tr, translated
+from widgets.i18n import declared, live, on_language_change, tr, translated
+from widgets.settings_form import ignore_unfocused_wheel
 
-__all__ = ["CapturePanel", "ConnectDialog", "TAKE_READING_KEY"]
+__all__ = ["TAKE_READING_KEY", "CapturePanel", "ConnectDialog", "InstrumentLink"]
 
 #: the key of Take reading (a foot switch is set to send it)
 TAKE_READING_KEY = "F9"
@@ -75,16 +112,48 @@ DRAIN_BUDGET_S = 0.010
 #: the live readout's texts are redrawn at most this often (a 250 Hz stream would
 #: otherwise repaint the panel at every 20 ms tick); the newest reading is always shown
 SHOW_EVERY_S = 0.1
+#: a value not refreshed for this long is greyed and marked "link lost"
+STALE_S = 1.0
+#: the panel's narrowest: it scrolls rather than widening the window
+PANEL_MIN_WIDTH = 240
+#: settings keys (per instrument kind)
+PORT_SETTING = "capture/port/{kind}"
+BAUD_SETTING = "capture/baud/{kind}"
+RESOLUTION_SETTING = "capture/resolution/{kind}"
+#: the resolution an instrument is given until one is chosen (arcseconds; 0: as sent)
+DEFAULT_RESOLUTION_ARCSEC = {"autocollimator": 0.01, "theodolite": 0.1, "readout": 0.0}
+#: the choices of resolution (arcseconds), with their names
+RESOLUTION_CHOICES = ((0.0, None), (0.001, '0.001"'), (0.01, '0.01"'), (0.1, '0.1"'),
+                      (1.0, '1"'), (MICRORADIAN_ARCSEC, "1 µrad"))
+
+_STALE_STYLE = "font-size: 16pt; font-family: monospace; color: #9e9e9e;"
+_VALUE_STYLE = "font-size: 16pt; font-family: monospace;"
+
+
+def _instrument_names() -> tuple[tuple[str, str], ...]:
+    return (("autocollimator", tr("Autocollimator (ELCOMAT kind)")),
+            ("theodolite", tr("Theodolite (Leica GeoCOM)")),
+            ("readout", tr("Readout (one line per reading)")))
+
+
+def _unwrapped_deg(values, origin):
+    """Angles in degrees as ``origin`` plus their difference from it wrapped to ±180°: a
+    direction near 0°/360° is not 360° apart from itself."""
+    values = np.asarray(values, dtype=float)
+    return origin + (values - origin + 180.0) % 360.0 - 180.0
+
 
 class ConnectDialog(QDialog):
-    def __init__(self, parent=None) -> None:
+    """Instrument, port and baud rate; the port and baud last used for each instrument are
+    filled in (``settings``)."""
+
+    def __init__(self, parent=None, settings: QSettings | None = None, kind: str = "") -> None:
         super().__init__(parent)
+        self.settings = settings
         self.setWindowTitle(tr("Connect to an instrument"))
         form = QFormLayout()
         self.instrument = QComboBox()
-        for key, text in (("autocollimator", tr("Autocollimator (ELCOMAT kind)")),
-                          ("theodolite", tr("Theodolite (Leica GeoCOM)")),
-                          ("readout", tr("Readout (one line per reading)"))):
+        for key, text in _instrument_names():
             self.instrument.addItem(text, key)
         self.port = QLineEdit()
         self.port.setPlaceholderText("/dev/ttyUSB0, COM3, tcp://host:port")
@@ -101,9 +170,102 @@ class ConnectDialog(QDialog):
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(buttons)
+        self.instrument.currentIndexChanged.connect(self._remembered)
+        if kind:
+            self.instrument.setCurrentIndex(max(0, self.instrument.findData(kind)))
+        self._remembered()
+
+    def _remembered(self, *_args) -> None:
+        """The port and baud rate last used with the instrument chosen."""
+        if self.settings is None:
+            return
+        kind = self.instrument.currentData()
+        self.port.setText(str(self.settings.value(PORT_SETTING.format(kind=kind), "") or ""))
+        with contextlib.suppress(TypeError, ValueError):
+            self.baud.setValue(int(self.settings.value(BAUD_SETTING.format(kind=kind), 0) or 0))
 
     def choice(self) -> tuple[str, str, int | None]:
         return (self.instrument.currentData(), self.port.text().strip(), self.baud.value() or None)
+
+
+class DemonstrationDialog(QDialog):
+    """A demonstration instrument: which, its noise, drift and faults."""
+
+    def __init__(self, parent=None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(tr("Demonstration instrument"))
+        form = QFormLayout()
+        self.instrument = QComboBox()
+        for key, text in _instrument_names():
+            self.instrument.addItem(text, key)
+        self.noise = QDoubleSpinBox()
+        self.noise.setRange(0.0, 100.0)
+        self.noise.setDecimals(3)
+        self.noise.setValue(0.05)
+        self.noise.setSuffix(' "')
+        self.drift = QDoubleSpinBox()
+        self.drift.setRange(-100.0, 100.0)
+        self.drift.setDecimals(3)
+        self.drift.setSuffix(' "/s')
+        form.addRow(tr("Instrument"), self.instrument)
+        form.addRow(tr("Noise (σ)"), self.noise)
+        form.addRow(tr("Drift"), self.drift)
+        self.faults: dict[str, QCheckBox] = {}
+        for key, text in (("noise", tr("garbage between frames")),
+                          ("invalid_axes", tr("invalid readings")),
+                          ("disconnect", tr("the link drops now and then"))):
+            box = QCheckBox(text)
+            self.faults[key] = box
+            form.addRow("", box)
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok
+                                   | QDialogButtonBox.StandardButton.Cancel)
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(buttons)
+
+    def choice(self) -> tuple[str, float, float, tuple[str, ...]]:
+        return (self.instrument.currentData(), self.noise.value(), self.drift.value(),
+                tuple(k for k, box in self.faults.items() if box.isChecked()))
+
+
+class DemonstrationProcess:
+    """``anglebench simulate KIND 0`` in a process of its own: the port it answers on, and
+    ``close()`` (also as a context manager's exit) to stop it."""
+
+    #: where the demonstration instrument points in turn (8 s each)
+    POSITIONS = {"autocollimator": ("12.5,4.1,-6.3,0.4", "12.5,-3.2"),
+                 "theodolite": ("0,5,10,15", "0,89.998"),
+                 "readout": ("0,15.00012,30.00007,44.99991", "0")}
+
+    def __init__(self, kind: str, noise: float = 0.05, drift: float = 0.0,
+                 faults: tuple[str, ...] = (), start_s: float = 30.0) -> None:
+        positions, position = self.POSITIONS[kind]
+        command = [sys.executable, "-m", "app.main", "simulate", kind, "0",
+                   "--positions", positions, "--position", position, "--hold", "8",
+                   "--noise", f"{noise:g}", "--drift", f"{drift:g}"]
+        for fault in faults:
+            command += ["--fault", fault]
+        self.process = subprocess.Popen(command, stdout=subprocess.PIPE,
+                                        stderr=subprocess.DEVNULL, text=True,
+                                        cwd=str(Path(__file__).resolve().parents[2]))
+        ready, _, _ = select.select([self.process.stdout], [], [], start_s)
+        line = self.process.stdout.readline() if ready else ""
+        found = re.search(r"tcp://127\.0\.0\.1:\d+", line)
+        if found is None:
+            self.close()
+            raise OSError(f"the demonstration {kind} did not start")
+        self.port = found.group(0)
+
+    def close(self) -> None:
+        if self.process.poll() is None:
+            self.process.terminate()
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.process.communicate(timeout=5)
+
+    def __exit__(self, *_exc) -> None:
+        self.close()
 
 
 class _Session:
@@ -124,48 +286,233 @@ class _Session:
                 "takes": [list(t) for t in self.takes]}
 
 
-class CapturePanel(QDockWidget):
-    def __init__(self, window) -> None:
-        super().__init__(window)
-        self.window_ = window
-        live(self.setWindowTitle, tr("Instrument"))
-        self.setObjectName("capture_panel")
+class InstrumentLink:
+    """One instrument of the panel: its connection, readings, status and raw session, and
+    the widgets that show them (a box of the panel)."""
+
+    def __init__(self, panel: CapturePanel, slot: int) -> None:
+        self.panel, self.slot = panel, slot
         self.worker: CaptureWorker | None = None
         self.kind = ""
         self.frames: deque[tuple[float, tuple[float, ...], int]] = deque(maxlen=8192)
         self.latest: Reading | None = None
         self.received = 0  # readings taken in from the worker since connecting
-        #: finished sessions per workbench (stored form), and the one of this connection
-        self.sessions: dict[str, list[dict]] = {}
         self.session: _Session | None = None
-        self.gate: StabilityGate | None = None
-        self._origin: tuple[float, ...] | None = None
-        self.next_reading = None  # the workbench's NextReading for the current row
-        self._guide_due = 0.0
-        self._last_fault = ""  # the fault the link recovered from, said while connected
-        #: rows filled by Take reading or auto-take: (workbench, row, values)
-        self.taken: list[tuple[str, int, tuple[float, ...]]] = []
-        body = QWidget()
-        layout = QVBoxLayout(body)
+        self.last_fault = ""  # the fault the link recovered from, said while connected
+        self.fresh_at = 0.0  # perf_counter time of the newest reading
+        self.lost = False  # the value shown is stale (greyed, "link lost")
+        self.simulator = None  # a demonstration instrument this link started
+        self.box = QGroupBox()
+        live(self.box.setTitle, tr("Instrument") if slot == 0 else tr("Second instrument"))
+        grid = QGridLayout(self.box)
+        grid.setContentsMargins(4, 4, 4, 4)
         self.status = QLabel()
         live(self.status.setText, tr("Not connected"))
-        self.guide = QLabel("")
-        self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
         self.value = QLabel("—")
-        self.value.setStyleSheet("font-size: 16pt; font-family: monospace;")
-        self.stability = QLabel("")
-        self.allan = QLabel("")
-        buttons = QHBoxLayout()
+        self.value.setStyleSheet(_VALUE_STYLE)
+        # room for two lines: a stale value's "(link lost)" wraps below it, never clipped
+        self.value.setMinimumHeight(2 * self.value.fontMetrics().lineSpacing() * 16 //
+                                    max(1, self.value.font().pointSize()) + 8)
+        for label in (self.status, self.value):
+            label.setWordWrap(True)
+            # a longer text wraps, never widens the panel: the plots beside it are not
+            # resized (and redrawn) while a stream updates the texts 50 times a second
+            label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.connect_button = QPushButton()
         live(self.connect_button.setText, tr("Connect…"))
-        self.connect_button.clicked.connect(self.connect_dialog)
+        self.connect_button.clicked.connect(lambda: panel.connect_dialog(slot))
+        self.disconnect_button = QPushButton()
+        live(self.disconnect_button.setText, tr("Disconnect"))
+        self.disconnect_button.clicked.connect(self.disconnect)
+        self.disconnect_button.setEnabled(False)
+        self.resolution = QComboBox()
+        for value, name in RESOLUTION_CHOICES:
+            self.resolution.addItem(name or tr("as sent"), value)
+        ignore_unfocused_wheel(self.resolution)
+        live(self.resolution.setToolTip, tr("The instrument's resolution: captured values are "
+                                            "rounded to it in the table (the raw frames keep "
+                                            "every digit)"))
+        self.resolution.currentIndexChanged.connect(self._resolution_chosen)
+        self.resolution_label = QLabel()
+        live(self.resolution_label.setText, tr("Resolution"))
+        grid.addWidget(self.status, 0, 0, 1, 2)
+        grid.addWidget(self.value, 1, 0, 1, 2)
+        grid.addWidget(self.connect_button, 2, 0)
+        grid.addWidget(self.disconnect_button, 2, 1)
+        grid.addWidget(self.resolution_label, 3, 0)
+        grid.addWidget(self.resolution, 3, 1)
+        #: a readout's value goes to this column ("": the current cell's)
+        self.column = QComboBox()
+        ignore_unfocused_wheel(self.column)
+        self.column_label = QLabel()
+        live(self.column_label.setText, tr("Readout into"))
+        grid.addWidget(self.column_label, 4, 0)
+        grid.addWidget(self.column, 4, 1)
+        self._show_kind()
+
+    # ------------------------------------------------------------ settings
+    def _show_kind(self) -> None:
+        readout = self.kind == "readout"
+        self.column.setVisible(readout)
+        self.column_label.setVisible(readout)
+        self.resolution.blockSignals(True)
+        try:
+            value = self.resolution_arcsec
+            index = min(range(self.resolution.count()),
+                        key=lambda i: abs(float(self.resolution.itemData(i)) - value))
+            self.resolution.setCurrentIndex(index)
+        finally:
+            self.resolution.blockSignals(False)
+
+    @property
+    def resolution_arcsec(self) -> float:
+        """The instrument's resolution (arcseconds; 0: as sent), a setting per instrument."""
+        if not self.kind:
+            return 0.0
+        default = DEFAULT_RESOLUTION_ARCSEC.get(self.kind, 0.0)
+        try:
+            return float(self.panel.qsettings.value(RESOLUTION_SETTING.format(kind=self.kind),
+                                                    default))
+        except (TypeError, ValueError):
+            return default
+
+    def _resolution_chosen(self, _index: int) -> None:
+        if self.kind:
+            self.panel.qsettings.setValue(RESOLUTION_SETTING.format(kind=self.kind),
+                                          float(self.resolution.currentData()))
+
+    def fill_columns(self, columns) -> None:
+        """The workbench's columns a readout can go to."""
+        chosen = self.column.currentData()
+        self.column.blockSignals(True)
+        try:
+            self.column.clear()
+            self.column.addItem(tr("the current cell"), "")
+            for column in columns:
+                self.column.addItem(declared(column.header), column.key)
+            self.resolution.setItemText(0, tr("as sent"))  # in the language chosen now
+            self.column.setCurrentIndex(max(0, self.column.findData(chosen)))
+        finally:
+            self.column.blockSignals(False)
+
+    # ------------------------------------------------------------ connecting
+    @property
+    def connected(self) -> bool:
+        return self.worker is not None
+
+    def connect(self, kind: str, port: str, baud: int | None = None, simulator=None,
+                **worker_options) -> None:
+        self.disconnect()
+        self.simulator = simulator
+        self.kind = kind
+        self.frames.clear()
+        self.latest = None
+        self.received = 0
+        self.lost = False
+        self.value.setText("—")
+        self.value.setStyleSheet(_VALUE_STYLE)
+        self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
+        self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
+        self.last_fault = ""
+        self.fresh_at = time.perf_counter()
+        self.status.setStyleSheet("")
+        self.status.setText(tr("Connecting to {port}…").format(port=port))
+        self.disconnect_button.setEnabled(True)
+        self._show_kind()
+        settings = self.panel.qsettings
+        if simulator is None:  # a demonstration's port is its own, never remembered
+            settings.setValue(PORT_SETTING.format(kind=kind), port)
+            if baud:
+                settings.setValue(BAUD_SETTING.format(kind=kind), int(baud))
+
+    def disconnect(self) -> None:
+        worker, self.worker = self.worker, None
+        if worker is not None:
+            worker.stop()
+            self.panel._drain_link(self, worker)  # what is queued is taken in, never dropped
+            if not self.status.styleSheet():
+                self.status.setText(tr("Disconnected from {port}").format(port=worker.port))
+        session, self.session = self.session, None
+        if session is not None and session.worker.raw:
+            self.panel.sessions.setdefault(session.workbench, []).append(session.stored())
+        simulator, self.simulator = self.simulator, None
+        if simulator is not None:
+            simulator.__exit__(None, None, None)
+        self.latest = None
+        self.lost = False
+        self.value.setText("—")
+        self.value.setStyleSheet(_VALUE_STYLE)
+        self.disconnect_button.setEnabled(False)
+        self.panel._links_changed()
+
+    # ------------------------------------------------------------ readings
+    def mark_lost(self, lost: bool) -> None:
+        """The value greyed and marked "link lost" (stale), or shown as live again."""
+        if lost == self.lost:
+            return
+        self.lost = lost
+        self.value.setStyleSheet(_STALE_STYLE if lost else _VALUE_STYLE)
+        if lost and self.latest is not None:
+            self.show_value()
+        self.panel._links_changed()
+
+    def show_value(self) -> None:
+        reading = self.latest
+        if reading is None:
+            self.value.setText("—")
+            return
+        unit = {"arcsec": '"', "deg": "°"}.get(reading.unit, f" {reading.unit}")
+        text = "   ".join(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}"
+                          for v in reading.values)
+        self.value.setText(tr("{value} (link lost)").format(value=text) if self.lost else text)
+
+    @property
+    def usable(self) -> bool:
+        """A fresh reading is there to take."""
+        return self.worker is not None and self.latest is not None and not self.lost
+
+
+class CapturePanel(QDockWidget):
+    def __init__(self, window) -> None:
+        super().__init__(window)
+        self.window_ = window
+        self.qsettings: QSettings = getattr(window, "qsettings", None) or QSettings()
+        live(self.setWindowTitle, tr("Instrument"))
+        self.setObjectName("capture_panel")
+        self.setAllowedAreas(Qt.DockWidgetArea.LeftDockWidgetArea
+                             | Qt.DockWidgetArea.RightDockWidgetArea
+                             | Qt.DockWidgetArea.BottomDockWidgetArea)
+        self.links = [InstrumentLink(self, 0), InstrumentLink(self, 1)]
+        #: finished sessions per workbench (stored form)
+        self.sessions: dict[str, list[dict]] = {}
+        self.gate: StabilityGate | None = None
+        self._origin: tuple[float, ...] | None = None
+        self.next_reading = None  # the workbench's NextReading for the row a take goes to
+        self._guide_due = 0.0
+        #: rows filled by Take reading or auto-take: (workbench, row, values of the first
+        #: instrument at full precision)
+        self.taken: list[tuple[str, int, tuple[float, ...]]] = []
+        body = QWidget()
+        # three columns side by side when docked at the bottom, one above the other beside
+        self.body_layout = QBoxLayout(QBoxLayout.Direction.TopToBottom, body)
+        self.body_layout.setContentsMargins(4, 4, 4, 4)
+        sections = [QWidget(), QWidget(), QWidget()]
+        columns = []
+        for section in sections:
+            column = QVBoxLayout(section)
+            column.setContentsMargins(0, 0, 0, 0)
+            columns.append(column)
+            self.body_layout.addWidget(section)
+        self.body_layout.addStretch(1)
+        self.guide = QLabel("")
+        self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
+        self.stability = QLabel("")
+        self.allan = QLabel("")
         self.take_button = QPushButton()
         live(self.take_button.setText, tr("Take reading (F9)"))
         self.take_button.setShortcut(QKeySequence(TAKE_READING_KEY))
         self.take_button.clicked.connect(lambda: self.take_reading())
         self.take_button.setEnabled(False)
-        buttons.addWidget(self.connect_button)
-        buttons.addWidget(self.take_button)
         # auto-take: the stability gate's window and dwell
         self.auto = QCheckBox()
         live(self.auto.setText, tr("Auto-take when stable"))
@@ -184,6 +531,7 @@ class CapturePanel(QDockWidget):
         self.dwell_box.setSuffix(" s")
         for box in (self.window_box, self.dwell_box):
             box.valueChanged.connect(self._gate_changed)
+            ignore_unfocused_wheel(box)
         auto_form = QFormLayout()
         self.window_label, self.dwell_label = QLabel(), QLabel()
         live(self.window_label.setText, tr("Window"))
@@ -191,80 +539,188 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.window_label, self.window_box)
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
-        for widget in (self.status, self.guide, self.value, self.stability, self.allan,
-                       self.auto_state):
+        for widget in (self.guide, self.stability, self.allan, self.auto_state):
             widget.setWordWrap(True)
-            # a longer text wraps, never widens the panel: the plots beside it are not
-            # resized (and redrawn) while a stream updates the texts 50 times a second
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        for widget in (self.status, self.guide, self.value, self.stability, self.allan):
-            layout.addWidget(widget)
-        layout.addLayout(buttons)
-        layout.addWidget(self.auto)
-        layout.addLayout(auto_form)
-        layout.addWidget(self.auto_state)
-        body.setMinimumWidth(320)
-        layout.addStretch(1)
-        self.setWidget(body)
+        columns[0].addWidget(self.guide)
+        columns[0].addWidget(self.links[0].box)
+        columns[0].addWidget(self.stability)
+        columns[0].addWidget(self.allan)
+        columns[1].addWidget(self.take_button)
+        columns[1].addWidget(self.auto)
+        columns[1].addLayout(auto_form)
+        columns[1].addWidget(self.auto_state)
+        columns[2].addWidget(self.links[1].box)
+        for column in columns:
+            column.addStretch(1)
+        self.dockLocationChanged.connect(self._docked)
+        # the body scrolls (vertically) rather than making the window wider or taller
+        scroll = QScrollArea()
+        scroll.setWidget(body)
+        scroll.setWidgetResizable(True)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        scroll.setFrameShape(QScrollArea.Shape.NoFrame)
+        body.setMinimumWidth(PANEL_MIN_WIDTH - 20)
+        scroll.setMinimumWidth(PANEL_MIN_WIDTH)
+        self.body = body
+        self.setWidget(scroll)
         self.timer = QTimer(self)
         self.timer.setInterval(20)
         self.timer.timeout.connect(self.drain)
         self._allan_due = 0.0
         self._show_due = 0.0  # perf_counter time the readout's texts may be redrawn
         self._show_pending = False
+        tabs = getattr(window, "tabs", None)
+        if tabs is not None:
+            tabs.currentChanged.connect(self.workbench_changed)
+        on_language_change(self, self._refill_columns)
+
+    def _docked(self, area) -> None:
+        """At the bottom the panel's parts stand side by side; at a side, one above the other."""
+        bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
+        self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
+                                      else QBoxLayout.Direction.TopToBottom)
+
+    # ------------------------------------------------------------ the first link's state
+    @property
+    def worker(self) -> CaptureWorker | None:
+        return self.links[0].worker
+
+    @property
+    def kind(self) -> str:
+        return self.links[0].kind
+
+    @property
+    def latest(self) -> Reading | None:
+        return self.links[0].latest
+
+    @property
+    def frames(self):
+        return self.links[0].frames
+
+    @property
+    def received(self) -> int:
+        return self.links[0].received
+
+    @property
+    def status(self) -> QLabel:
+        return self.links[0].status
+
+    @property
+    def value(self) -> QLabel:
+        return self.links[0].value
+
+    @property
+    def session(self) -> _Session | None:
+        return self.links[0].session
 
     # ------------------------------------------------------------ connecting
-    def connect_dialog(self) -> None:
-        dialog = ConnectDialog(self)
+    def connect_dialog(self, slot: int = 0) -> None:
+        link = self.links[slot]
+        dialog = ConnectDialog(self, self.qsettings, link.kind)
         if dialog.exec() == QDialog.DialogCode.Accepted:
             kind, port, baud = dialog.choice()
             if port:
-                self.connect_to(kind, port, baud)
+                self.connect_to(kind, port, baud, slot=slot)
 
-    def connect_to(self, kind: str, port: str, baud: int | None = None, **worker_options) -> None:
-        self.disconnect_instrument()
-        self.kind = kind
-        self.frames.clear()
-        self.latest = None
-        self.received = 0
-        self._show_due, self._show_pending = 0.0, False
-        self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
-        self.session = _Session(self.window_.current.kind.key, kind, self.worker)
-        self._last_fault = ""
-        self._gate_changed()
-        self.status.setText(tr("Connecting to {port}…").format(port=port))
+    def connect_to(self, kind: str, port: str, baud: int | None = None, slot: int = 0,
+                   simulator=None, **worker_options) -> None:
+        """Connect instrument ``slot`` (0: the first, which auto-take follows; 1: the
+        second) to ``port`` (``simulator``: the demonstration instrument serving it, stopped
+        with the link); its statistics and the guidance start afresh."""
+        link = self.links[slot]
+        link.connect(kind, port, baud, simulator, **worker_options)
+        self._reset_statistics()
+        self._refill_columns()
+        self._capturing()
         self.timer.start()
 
-    def disconnect_instrument(self) -> None:
-        worker, self.worker = self.worker, None
-        if worker is not None:
-            worker.stop()
-            self._drain(worker)  # the readings already queued are taken in, never dropped
-        self._close_session()
-        self.timer.stop()
-        self.take_button.setEnabled(False)
+    def disconnect_instrument(self, slot: int | None = None) -> None:
+        """Disconnect one instrument (``slot``) or both."""
+        for link in (self.links if slot is None else [self.links[slot]]):
+            link.disconnect()
 
-    def _close_session(self) -> None:
-        session, self.session = self.session, None
-        if session is not None and session.worker.raw:
-            self.sessions.setdefault(session.workbench, []).append(session.stored())
+    def start_demonstration(self, kind: str, noise: float = 0.05, drift: float = 0.0,
+                            faults: tuple[str, ...] = (), slot: int | None = None) -> str:
+        """A demonstration instrument (``anglebench simulate``, a process of its own so it
+        never competes with the window for time) on a free TCP port of 127.0.0.1,
+        connected to the first free instrument (or ``slot``); its port."""
+        if slot is None:
+            slot = 0 if not self.links[0].connected or self.links[1].connected else 1
+        self.links[slot].disconnect()
+        demonstration = DemonstrationProcess(kind, noise, drift, faults)
+        self.connect_to(kind, demonstration.port, slot=slot, simulator=demonstration)
+        return demonstration.port
+
+    def demonstration_dialog(self) -> None:
+        dialog = DemonstrationDialog(self)
+        if dialog.exec() == QDialog.DialogCode.Accepted:
+            kind, noise, drift, faults = dialog.choice()
+            try:
+                self.start_demonstration(kind, noise, drift, faults)
+            except OSError as exc:
+                self.status.setText(tr("The demonstration instrument did not start: {reason}")
+                                    .format(reason=str(exc)))
 
     def closeEvent(self, event) -> None:  # noqa: N802
         self.disconnect_instrument()
         super().closeEvent(event)
 
+    def _links_changed(self) -> None:
+        self.take_button.setEnabled(any(link.usable for link in self.links))
+        if not any(link.connected for link in self.links):
+            self.timer.stop()
+        self._capturing()
+
+    def _capturing(self) -> None:
+        """The workbench in front analyses takes off the GUI thread while an instrument is
+        connected; the others as usual."""
+        connected = any(link.connected for link in self.links)
+        current = getattr(self.window_, "current", None)
+        for presenter in getattr(self.window_, "presenters", []):
+            if hasattr(presenter, "set_capturing"):
+                presenter.set_capturing(connected and presenter is current)
+
+    def _reset_statistics(self) -> None:
+        """A new connection or another workbench: no figure of before stays on screen."""
+        self.stability.setText("")
+        self.allan.setText("")
+        self._allan_due = 0.0
+        self._show_due, self._show_pending = 0.0, False
+        self._guide_due = 0.0
+        self.next_reading = None
+        self.guide.setText("")
+        self._gate_changed()
+
+    def workbench_changed(self, _index: int = 0) -> None:
+        """Another workbench in front: its guidance, not the last one's."""
+        self._reset_statistics()
+        self._refill_columns()
+        self._capturing()
+        if any(link.connected for link in self.links):
+            self.update_guide()
+
+    def _refill_columns(self) -> None:
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return
+        for link in self.links:
+            link.fill_columns(presenter.kind.columns)
+
     # ------------------------------------------------------------ the raw frames
     def raw_sessions(self, workbench: str) -> list[dict]:
-        """The sessions of a workbench in their stored form, this connection's included."""
+        """The sessions of a workbench in their stored form, the open connections' included."""
         out = list(self.sessions.get(workbench, []))
-        if self.session is not None and self.session.workbench == workbench \
-                and self.session.worker.raw:
-            out.append(self.session.stored())
+        for link in self.links:
+            if link.session is not None and link.session.workbench == workbench \
+                    and link.session.worker.raw:
+                out.append(link.session.stored())
         return out
 
     def raw_capture(self) -> dict[str, list[dict]]:
         """Every workbench's sessions, for the project file."""
-        keys = set(self.sessions) | ({self.session.workbench} if self.session else set())
+        keys = set(self.sessions) | {link.session.workbench for link in self.links
+                                     if link.session is not None}
         return {k: v for k in sorted(keys) if (v := self.raw_sessions(k))}
 
     def load_raw_capture(self, raw: dict[str, list[dict]]) -> None:
@@ -325,6 +781,44 @@ class CapturePanel(QDockWidget):
             return "off"
         return self.gate.progress(self.latest.time_s if self.latest else 0.0)[0]
 
+    # ------------------------------------------------------------ where a take goes
+    def _targets(self, presenter) -> list[tuple[InstrumentLink, int, str]]:
+        """(link, value index, column key) of every value a take writes, for the links
+        connected; a readout into "the current cell" gives the current column's key."""
+        keys = [c.key for c in presenter.table_model.sheet.columns]
+        index = presenter.view.table.currentIndex()
+        out = []
+        for link in self.links:
+            if link.worker is None or not link.kind:
+                continue
+            if link.kind == "readout":
+                key = link.column.currentData() or (
+                    keys[index.column()] if index.isValid() else "")
+                if key in keys:
+                    out.append((link, 0, key))
+                continue
+            for i, key in enumerate(INSTRUMENTS[link.kind]().columns):
+                if key == "zenith_deg" and "elevation_deg" in keys:
+                    key = "elevation_deg"
+                if key in keys:
+                    out.append((link, i, key))
+        # a value goes to one column once (the first instrument wins)
+        seen: set[str] = set()
+        return [t for t in out if not (t[2] in seen or seen.add(t[2]))]
+
+    def target_row(self, presenter=None) -> int:
+        """The row the next take goes to: the current row when the cells it fills are blank,
+        else the next empty point below it, else a new row."""
+        presenter = presenter or self.window_.current
+        sheet = presenter.table_model.sheet
+        index = presenter.view.table.currentIndex()
+        row = index.row() if index.isValid() else sheet.row_count
+        keys = [c.key for c in sheet.columns]
+        columns = [keys.index(key) for _, _, key in self._targets(presenter)]
+        if not columns:
+            return row
+        return next_empty_point(sheet.row_count, row, columns, sheet.text)
+
     # ------------------------------------------------------------ guidance
     def update_guide(self) -> None:
         """What the workbench says to do next, for the row the next reading goes to."""
@@ -334,10 +828,8 @@ class CapturePanel(QDockWidget):
             self.next_reading = None
             self.guide.setText("")
             return
-        model = presenter.table_model
-        sheet = model.sheet
-        index = presenter.view.table.currentIndex()
-        row = index.row() if index.isValid() else sheet.row_count
+        sheet = presenter.table_model.sheet
+        row = self.target_row(presenter)
         keys = [c.key for c in sheet.columns]
 
         def cells(r: int) -> dict[str, str]:
@@ -346,20 +838,29 @@ class CapturePanel(QDockWidget):
             return {k: sheet.text(r, c) for c, k in enumerate(keys)}
 
         step = presenter.view.table.nominal_step or 0.0
-        self.next_reading = kind.acquisition_guide([cells(r) for r in range(min(row, sheet.row_count))],
-                                  cells(row), presenter.settings, step)
+        self.next_reading = kind.acquisition_guide(
+            [cells(r) for r in range(min(row, sheet.row_count))], cells(row), presenter.settings,
+            step)
         self.guide.setText(tr("Next: {what}").format(what=translated(self.next_reading.text)))
 
     # ------------------------------------------------------------ the live readout
     def drain(self) -> None:
-        """What the worker has queued, without waiting: for at most ``DRAIN_BUDGET_S`` a
+        """What the workers have queued, without waiting: for at most ``DRAIN_BUDGET_S`` a
         tick, so a stream faster than the window can follow makes a backlog (worked off in
         the next ticks), never a frozen window."""
-        if self.worker is not None:
-            self._drain(self.worker, time.perf_counter() + DRAIN_BUDGET_S)
+        active = [link for link in self.links if link.worker is not None]
+        for link in active:  # each its share: a fast stream never starves the other link
+            self._drain_link(link, link.worker, time.perf_counter() + DRAIN_BUDGET_S / len(active))
+        now = time.perf_counter()
+        for link in self.links:
+            if link.worker is not None and link.latest is not None and not link.lost \
+                    and now - link.fresh_at > STALE_S:
+                link.mark_lost(True)
 
-    def _drain(self, worker: CaptureWorker, until: float = math.inf) -> None:
+    def _drain_link(self, link: InstrumentLink, worker: CaptureWorker,
+                    until: float = math.inf) -> None:
         fresh = ended = False
+        first = link is self.links[0]
         while time.perf_counter() < until:
             try:
                 event = worker.events.get_nowait()
@@ -367,53 +868,64 @@ class CapturePanel(QDockWidget):
                 break
             if isinstance(event, Fault):
                 reason = translated(event.message)
-                self._last_fault = reason
-                self.status.setText(reason if event.final
+                link.last_fault = reason
+                link.status.setText(reason if event.final
                                     else tr("{reason} (reconnecting)").format(reason=reason))
-                self.status.setStyleSheet("color: #b00020;")
+                link.status.setStyleSheet("color: #b00020;")
+                link.mark_lost(True)
                 ended = ended or event.final
                 continue
-            self.received += 1
-            self.frames.append((event.time_s, event.values, event.frame))
-            self.latest = event
+            link.received += 1
+            link.frames.append((event.time_s, event.values, event.frame))
+            link.latest = event
+            link.fresh_at = time.perf_counter()
             fresh = True
-            if event.time_s >= self._guide_due:
-                self._guide_due = event.time_s + GUIDE_EVERY_S
-                self.update_guide()
-            self._feed_gate(event)
-        if fresh and self.worker is worker and not ended:
-            if self.status.styleSheet():  # a style set anew repolishes the label
-                self.status.setStyleSheet("")
-            self.status.setText(tr("Connected: {port}").format(port=worker.port)
-                                if not self._last_fault else
+            if first:
+                if event.time_s >= self._guide_due:
+                    self._guide_due = event.time_s + GUIDE_EVERY_S
+                    self.update_guide()
+                self._feed_gate(event)
+        if fresh and link.worker is worker and not ended:
+            if link.status.styleSheet():  # a style set anew repolishes the label
+                link.status.setStyleSheet("")
+            link.status.setText(tr("Connected: {port}").format(port=worker.port)
+                                if not link.last_fault else
                                 tr("Connected: {port} (reconnected after: {reason})").format(
-                                    port=worker.port, reason=self._last_fault))
-            self.take_button.setEnabled(True)
-        if fresh or self._show_pending:
+                                    port=worker.port, reason=link.last_fault))
+            if link.lost:
+                link.mark_lost(False)
+            self._links_changed()
+        if fresh or (first and self._show_pending):
             now = time.perf_counter()
-            self._show_pending = now < self._show_due and self.worker is worker and not ended
-            if not self._show_pending:
-                self._show_due = now + SHOW_EVERY_S
-                self._show()
-                self._show_gate()
-        if ended and self.worker is worker:
-            self.disconnect_instrument()
+            pending = now < self._show_due and link.worker is worker and not ended
+            if first:
+                self._show_pending = pending
+            if not pending or not first:
+                if first:
+                    self._show_due = now + SHOW_EVERY_S
+                    self._show_statistics()
+                    self._show_gate()
+                link.show_value()
+        if ended and link.worker is worker:
+            link.disconnect()
 
-    def _show(self) -> None:
+    def _show_statistics(self) -> None:
         reading = self.latest
-        unit = {"arcsec": '"', "deg": "°"}.get(reading.unit, f" {reading.unit}")
-        self.value.setText("   ".join(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}"
-                                      for v in reading.values))
+        if reading is None:
+            return
         now = reading.time_s
         recent = []
         for t, v, _ in reversed(self.frames):
             if t < now - SPREAD_SECONDS:
                 break
             recent.append(v)
+        degrees = reading.unit == "deg"
+        scale = 3600.0 if degrees else 1.0
         recent = np.array(recent)
+        if degrees and len(recent):  # an angle near 0°/360° spreads by its noise, not 360°
+            recent = _unwrapped_deg(recent, recent[0])
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
-            scale = 3600.0 if reading.unit == "deg" else 1.0
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
                 spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))
@@ -422,57 +934,117 @@ class CapturePanel(QDockWidget):
             times = np.array([t for t, _, _ in self.frames])
             tau0 = float(np.median(np.diff(times)))
             first = np.array([v[0] for _, v, _ in self.frames])
+            if degrees:
+                first = _unwrapped_deg(first, first[0])
             if tau0 > 0:
                 taus, adev = allan_deviation(first, tau0)
-                scale = 3600.0 if reading.unit == "deg" else 1.0
+                # three of them (the shortest, a middle and the longest τ): the text stays short
+                picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
                 self.allan.setText(tr("Allan deviation (first axis): {figures}").format(
-                    figures=", ".join(f"{a * scale:.3g} ({t:.3g} s)"
-                                      for t, a in list(zip(taus, adev, strict=True))[::2])))
+                    figures=", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)"
+                                      for i in picked)))
 
     # ------------------------------------------------------------ take reading
     def take_reading(self, values: tuple[float, ...] | None = None,
                      frames: tuple[int, int] | None = None) -> str:
-        """Fill the current row with the latest reading, or with ``values`` (an auto-take's
-        mean of the raw ``frames`` first…last), and the cells the guidance says (one undo
-        step); what it did."""
-        reading = self.latest
-        if reading is None:
-            return ""
-        values = reading.values if values is None else values
-        frames = (reading.frame, reading.frame) if frames is None else frames
+        """Fill the row a take goes to (:meth:`target_row`) from every instrument connected
+        — the first's latest reading, or ``values`` (an auto-take's mean of its raw
+        ``frames`` first…last), with the second's latest — and the cells the guidance says,
+        as one undo step; what it did ("" when nothing was taken)."""
+        first = self.links[0]
         presenter = self.window_.current
         table = presenter.view.table
         model = presenter.table_model
-        index = table.currentIndex()
-        row = index.row() if index.isValid() else model.sheet.row_count
-        keys = [c.key for c in model.sheet.columns]
-        changes = []
-        if self.kind == "readout":
-            column = index.column() if index.isValid() else -1
-            if column >= 0:
-                changes.append((row, column, f"{values[0]:.12g}"))
-        else:
-            vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
-            for (_, column), value in zip(reading_columns(self.kind, keys, vertical_zenith),
-                                          values, strict=False):
-                if column is not None and column >= 0:
-                    changes.append((row, column, f"{value:.12g}"))
-        if not changes:
-            self.status.setText(tr("This workbench has no column for this instrument's "
-                                   "reading: choose a cell first (readout) or another "
-                                   "workbench"))
+        sheet = model.sheet
+        keys = [c.key for c in sheet.columns]
+        targets = self._targets(presenter)
+        taking: dict[int, tuple[tuple[float, ...], str, tuple[int, int]]] = {}
+        for link in self.links:
+            if link is first and values is not None and first.latest is not None:
+                taking[0] = (tuple(values), first.latest.unit,
+                             frames or (first.latest.frame, first.latest.frame))
+            elif link.usable:
+                reading = link.latest
+                taking[link.slot] = (reading.values, reading.unit, (reading.frame, reading.frame))
+        targets = [t for t in targets if t[0].slot in taking]
+        if not targets:
+            if taking:
+                self.status.setText(tr("This workbench has no column for this instrument's "
+                                       "reading: choose a cell first (readout) or another "
+                                       "workbench"))
             return ""
+        row = self.target_row(presenter)
+        vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
+        changes = []
+        for link, i, key in targets:
+            got, unit, _ = taking[link.slot]
+            if i >= len(got):
+                continue
+            value = got[i]
+            if link.kind == "theodolite" and i == 1 and key == "elevation_deg" \
+                    and not vertical_zenith:
+                value = elevation_from_zenith_deg(value)
+            column = keys.index(key)
+            column_def = sheet.columns[column]
+            dms = unit == "deg" and column_is_dms(
+                [sheet.text(r, column) for r in range(max(0, row - 50), min(row, sheet.row_count))]
+                or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
+            changes.append((row, column, cell_text(value, unit, link.resolution_arcsec, dms,
+                                                   column_def.unit)))
         self.update_guide()
+        filled = {c for _, c, _ in changes}
         if self.next_reading is not None:
             for key, text in self.next_reading.fill.items():
-                blank = row >= model.sheet.row_count or not model.sheet.text(
-                    row, keys.index(key)).strip()
-                if key in keys and blank:
+                if key not in keys or keys.index(key) in filled:
+                    continue
+                blank = row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip()
+                if blank:
                     changes.append((row, keys.index(key), text))
+                    filled.add(keys.index(key))
+        changes += self._from_reference(sheet, keys, row, changes, filled)
         model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1))
-        if self.session is not None and frames[0] >= 0:
-            self.session.takes.append([row, frames[0], frames[1]])
-        self.taken.append((presenter.kind.key, row, tuple(values)))
+        self._widen(table, changes)
+        for link in self.links:
+            got = taking.get(link.slot)
+            if got is not None and link.session is not None and got[2][0] >= 0 \
+                    and any(t[0] is link for t in targets):
+                link.session.takes.append([row, got[2][0], got[2][1]])
+        if 0 in taking:
+            self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         table.next_row(row)
         self.update_guide()
         return f"row {row + 1}"
+
+    @staticmethod
+    def _widen(table, changes) -> None:
+        """The columns a take filled widened to their new text when it needs more room (an
+        increment, not a re-measure of every cell: the window never pauses for it)."""
+        header = table.horizontalHeader()
+        if header.sectionResizeMode(0) == QHeaderView.ResizeMode.ResizeToContents:
+            return  # Qt fits them itself
+        metrics = table.fontMetrics()
+        for _, column, text in changes:
+            needed = metrics.horizontalAdvance(text) + 16
+            if needed > header.sectionSize(column):
+                header.resizeSection(column, needed)
+
+    @staticmethod
+    def _from_reference(sheet, keys, row, changes, filled) -> list[tuple[int, int, str]]:
+        """A polygon face's deviation (its certificate's, as sent or typed for that face in
+        another row) into the row the take fills, when its cell is blank."""
+        if "polygon_dev_arcsec" not in keys or "position" not in keys:
+            return []
+        dev, position = keys.index("polygon_dev_arcsec"), keys.index("position")
+        if dev in filled or (row < sheet.row_count and sheet.text(row, dev).strip()):
+            return []
+        face = next((t for r, c, t in changes if c == position), None)
+        if face is None and row < sheet.row_count:
+            face = sheet.text(row, position)
+        face = (face or "").strip()
+        if not face:
+            return []
+        known = {sheet.text(r, dev).strip() for r in range(sheet.row_count)
+                 if r != row and sheet.text(r, position).strip() == face
+                 and sheet.text(r, dev).strip()}
+        # one deviation per face; two different ones are the technician's to settle
+        return [(row, dev, known.pop())] if len(known) == 1 else []

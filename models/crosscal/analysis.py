@@ -21,9 +21,9 @@ from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, rea
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter
-from models.uncertainty.conformity import expanded_text
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.iso230 import iso230_evaluate
 from models.workbench import (
     SIGN_CONVENTION,

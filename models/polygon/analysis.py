@@ -31,7 +31,6 @@ from models.polygon.model import (
 )
 from models.polygon.plots import error_figure
 from models.polygon.report import polygon_certificate, polygon_json_budgets, setup_statement
-from models.polygon.report import polygon_certificate, setup_statement
 from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats

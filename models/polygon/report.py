@@ -36,8 +36,8 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from typing import Any
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 

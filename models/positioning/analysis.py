@@ -25,7 +25,6 @@ from models.positioning.model import (
     infer_directions,
 )
 from models.positioning.report import positioning_budget, positioning_certificate
-from models.positioning.report import positioning_certificate
 from models.readings.entry_plan import positioning_plan, targets_from_text
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats

@@ -545,8 +545,8 @@ def crosscal_cases(trials: int) -> list[ValidationCase]:
 def run_validation(trials: int = 200) -> list[ValidationCase]:
     """Every reference case; ``trials`` Monte Carlo runs for each budget comparison."""
     from models.registry import KINDS  # a workbench's own cases, kept in its folder
-    from models.validation.half_range import half_range_cases
     from models.validation.degenerate import degenerate_design_cases  # (imports this module)
+    from models.validation.half_range import half_range_cases
 
     return (theodolite_cases(trials) + polygon_cases(trials) + fringe_cases(trials)
             + positioning_cases(trials) + crosscal_cases(trials)

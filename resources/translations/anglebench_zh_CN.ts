@@ -1462,6 +1462,11 @@
         <translation>θ 相位 [°]</translation>
     </message>
     <message>
+        <source>Cannot use these reference standards</source>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the workbench whose details were last asked for (&quot;&quot; before any)</extracomment>
+        <translation>无法使用这些计量标准</translation>
+    </message>
+    <message>
         <source>Export certificate</source>
         <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>导出证书</translation>
@@ -1530,6 +1535,30 @@
     <message>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Connect a &amp;second instrument…</source>
+        <translation>连接第二台仪器(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>e.g. the encoder&apos;s readout beside the autocollimator: one take fills the row from both</source>
+        <translation>例如自准直仪之外再接编码器的数显表：一次取数同时由两台仪器填入该行</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开连接(&amp;D)</translation>
+    </message>
+    <message>
+        <source>D&amp;emonstration instrument…</source>
+        <translation>演示仪器(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>A simulated autocollimator, theodolite or readout, for training and for trying the program without hardware</source>
+        <translation>模拟的自准直仪、经纬仪或数显表，用于培训以及在没有硬件时试用本程序</translation>
+    </message>
+    <message>
+        <source>Show the instrument &amp;panel</source>
+        <translation>显示仪器面板(&amp;P)</translation>
     </message>
     <message>
         <source>&amp;New</source>
@@ -1814,6 +1843,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>Use these reference standards?</source>
+        <translation>使用这些计量标准？</translation>
+    </message>
+    <message>
+        <source>{warnings}
+
+Issue the certificate with them anyway? (No: back to the details)</source>
+        <translation>{warnings}
+
+仍要使用它们签发证书吗？（否：返回证书信息）</translation>
     </message>
     <message>
         <source>This certificate replaces {number}. What changed, and why? (printed on the certificate; ISO/IEC 17025 7.8.8)</source>
@@ -3208,10 +3249,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>Each pass</source>
         <translation>各遍</translation>
+        <source>Set-up: {names}</source>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <translation>设置：{names}</translation>
     </message>
     <message>
         <source>Import {name}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
         <translation>导入 {name}</translation>
     </message>
     <message>
@@ -4902,6 +4945,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>角度计量工作台</translation>
     </message>
     <message>
+        <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register, anglebench capture, anglebench simulate; each has --help.</source>
+        <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register、anglebench capture、anglebench simulate；各有 --help。</translation>
+    </message>
+    <message>
         <source>project file to open</source>
         <translation>要打开的项目文件</translation>
     </message>
@@ -6550,10 +6597,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>另一次测量：{name}</translation>
     </message>
     <message>
-        <source>Commands without a window: anglebench analyze KIND FILE, anglebench validate, anglebench register, anglebench capture; each has --help.</source>
-        <translation>无窗口的命令：anglebench analyze KIND FILE、anglebench validate、anglebench register、anglebench capture；各有 --help。</translation>
-    </message>
-    <message>
         <source>{text}: give a number greater than 0</source>
         <extracomment>raw lines kept in memory; older ones are in the journal (on disk) only</extracomment>
         <translation>{text}：请给出大于 0 的数</translation>
@@ -6620,6 +6663,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -6628,7 +6672,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
@@ -6645,11 +6688,11 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
+        <extracomment>where the demonstration instrument points in turn (8 s each)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
         <source>Not connected</source>
-        <extracomment>finished sessions per workbench (stored form), and the one of this connection rows filled by Take reading or auto-take: (workbench, row, values)</extracomment>
         <translation>未连接</translation>
     </message>
     <message>
@@ -6661,11 +6704,73 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>数显表（每个读数一行）</translation>
     </message>
     <message>
+        <source>Demonstration instrument</source>
+        <translation>演示仪器</translation>
+    </message>
+    <message>
+        <source>Noise (σ)</source>
+        <translation>噪声 (σ)</translation>
+    </message>
+    <message>
+        <source>Drift</source>
+        <translation>漂移</translation>
+    </message>
+    <message>
+        <source>garbage between frames</source>
+        <translation>数据帧之间夹杂乱码</translation>
+    </message>
+    <message>
+        <source>invalid readings</source>
+        <translation>无效读数</translation>
+    </message>
+    <message>
+        <source>the link drops now and then</source>
+        <translation>链路不时中断</translation>
+    </message>
+    <message>
+        <source>Second instrument</source>
+        <translation>第二台仪器</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开连接</translation>
+    </message>
+    <message>
+        <source>as sent</source>
+        <translation>按仪器输出</translation>
+    </message>
+    <message>
+        <source>The instrument&apos;s resolution: captured values are rounded to it in the table (the raw frames keep every digit)</source>
+        <translation>仪器的分辨力：采集的数值在表格中按其修约（原始数据帧保留全部位数）</translation>
+    </message>
+    <message>
+        <source>Readout into</source>
+        <extracomment>a readout&apos;s value goes to this column (&quot;&quot;: the current cell&apos;s)</extracomment>
+        <translation>数显表读数填入</translation>
+    </message>
+    <message>
+        <source>the current cell</source>
+        <translation>当前单元格</translation>
+    </message>
+    <message>
+        <source>Disconnected from {port}</source>
+        <translation>已断开与 {port} 的连接</translation>
+    </message>
+    <message>
+        <source>{value} (link lost)</source>
+        <translation>{value}（链路中断）</translation>
+    </message>
+    <message>
+        <source>The demonstration instrument did not start: {reason}</source>
+        <translation>演示仪器未能启动：{reason}</translation>
+    </message>
+    <message>
         <source>Spread over the last second: {spread}{unit}</source>
         <translation>最近一秒内的离散：{spread}{unit}</translation>
     </message>
     <message>
         <source>Take reading (F9)</source>
+        <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision)</extracomment>
         <translation>取读数 (F9)</translation>
     </message>
     <message>
@@ -8017,6 +8122,74 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>the laboratory&apos;s register key {path} holds {n} bytes: a key is at least 32 random bytes</source>
         <translation>实验室的登记册密钥 {path} 只有 {n} 字节：密钥至少应为 32 个随机字节</translation>
+        <source>{text}: give numbers separated by commas</source>
+        <extracomment>the faults a demonstration instrument can be told to show</extracomment>
+        <translation>{text}：请给出以逗号分隔的数值</translation>
+    </message>
+    <message>
+        <source>{text}: a TCP port (0 to 65535; 0 takes a free one) or &apos;pty&apos;</source>
+        <translation>{text}：应为 TCP 端口（0 到 65535；0 表示任取一个空闲端口）或 &apos;pty&apos;</translation>
+    </message>
+    <message>
+        <source>A demonstration instrument on a TCP port of 127.0.0.1 or a pseudo-terminal</source>
+        <translation>在 127.0.0.1 的 TCP 端口或伪终端上运行的演示仪器</translation>
+    </message>
+    <message>
+        <source>the instrument to simulate</source>
+        <translation>要模拟的仪器</translation>
+    </message>
+    <message>
+        <source>a TCP port of 127.0.0.1 (0: a free one), or &apos;pty&apos; for a pseudo-terminal</source>
+        <translation>127.0.0.1 的 TCP 端口（0：任取一个空闲端口），或 &apos;pty&apos; 表示伪终端</translation>
+    </message>
+    <message>
+        <source>where the instrument points: AC x,y in arcseconds; the theodolite&apos;s Hz,V in degrees; the readout&apos;s value</source>
+        <translation>仪器的指向：自准直仪 x,y（角秒）；经纬仪 Hz,V（度）；数显表的数值</translation>
+    </message>
+    <message>
+        <source>a script of readings (the first axis; the second stays), each held --hold seconds</source>
+        <translation>一组依次给出的读数（第一轴；第二轴不变），每个保持 --hold 秒</translation>
+    </message>
+    <message>
+        <source>how long each of --positions is held</source>
+        <translation>--positions 中每个读数保持的时间</translation>
+    </message>
+    <message>
+        <source>Gaussian noise on every reading (arcseconds; the readout&apos;s unit)</source>
+        <translation>每个读数上的高斯噪声（角秒；数显表用其自身单位）</translation>
+    </message>
+    <message>
+        <source>drift per second (arcseconds; the readout&apos;s unit)</source>
+        <translation>每秒的漂移（角秒；数显表用其自身单位）</translation>
+    </message>
+    <message>
+        <source>a fault to show (repeatable)</source>
+        <translation>要模拟的故障（可重复给出）</translation>
+    </message>
+    <message>
+        <source>the autocollimator&apos;s stream rate</source>
+        <translation>自准直仪的连续输出速率</translation>
+    </message>
+    <message>
+        <source>stop after this long (0: until interrupted)</source>
+        <translation>运行这么长时间后停止（0：直到被中断）</translation>
+    </message>
+    <message>
+        <source>anglebench simulate: port {port}: {reason}</source>
+        <translation>anglebench simulate：端口 {port}：{reason}</translation>
+    </message>
+    <message>
+        <source>A demonstration {instrument} answers on {port} (Ctrl+C stops it)</source>
+        <translation>演示仪器 {instrument} 在 {port} 上应答（Ctrl+C 停止）</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty is in {given}, a quantity of another kind than this workbench&apos;s errors ({unit}); it cannot enter this budget</source>
+        <extracomment>the lab defaults&apos; key of the standards per workbench (beside the older ``standards``)</extracomment>
+        <translation>计量标准 &apos;{name}&apos;：其不确定度以 {given} 表示，与本工作台误差（{unit}）不是同一种量；不能进入本不确定度预算</translation>
+    </message>
+    <message>
+        <source>reference standard &apos;{name}&apos;: its uncertainty {u} is not smaller than the tolerance ±{t}: with it no conformity can be shown (is it the standard of another test?)</source>
+        <translation>计量标准 &apos;{name}&apos;：其不确定度 {u} 不小于允差 ±{t}：用它无法证明符合性（是否为另一项检测的标准？）</translation>
     </message>
 </context>
 </TS>

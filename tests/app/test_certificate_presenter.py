@@ -225,3 +225,45 @@ def test_a_plausible_result_asks_nothing_more(parts, samples_dir, tmp_path):
     view.edit_certificate_details.return_value = None
     assert not presenter.export_certificate(kind, result, {}, "poly.csv")
     view.confirm_implausible.assert_not_called()
+
+
+def test_lab_default_standards_are_per_workbench(parts):
+    """#41: one list of standards went into every workbench (the theodolite's 0.5" became
+    100 % of a fringe budget)."""
+    presenter, _, _, _ = parts
+    theodolite_std = {"description": "Theodolite", "uncertainty": 0.5}
+    presenter.details("theodolite")  # its certificate dialog open: Save as lab defaults
+    presenter.save_lab_defaults({"lab_name": "Angle Lab", "standards": [theodolite_std]})
+    assert [s.description for s in presenter.details("theodolite").standards] == ["Theodolite"]
+    fringe = presenter.details("fringe")
+    assert fringe.standards == () or list(fringe.standards) == []
+    assert fringe.lab_name == "Angle Lab"  # the lab-wide fields still shared
+    presenter.save_lab_defaults({"lab_name": "Angle Lab", "standards": [
+        {"description": "Polygon", "uncertainty": 0.1}]}, "polygon")
+    assert [s.description for s in presenter.details("polygon").standards] == ["Polygon"]
+    assert [s.description for s in presenter.details("theodolite").standards] == ["Theodolite"]
+
+
+def test_a_standard_of_another_quantity_is_refused_before_the_file_dialog(parts, samples_dir):
+    presenter, view, _, _ = parts
+    gauge = dataclasses.replace(COMPLETE, standards=CertificateMetadata.from_dict({"standards": [
+        {"description": "Gauge block", "uncertainty": 0.2, "uncertainty_unit": "um"}]}).standards)
+    view.edit_certificate_details.side_effect = [gauge, None]  # refused, then cancelled
+    kind, result = _theodolite(samples_dir)
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    title, text = view.tell.call_args.args
+    assert "Gauge block" in text and "another kind" in text
+    assert view.edit_certificate_details.call_count == 2  # back to the details
+    view.choose_save_path.assert_not_called()
+
+
+def test_a_standard_as_large_as_the_tolerance_is_asked_about(parts, samples_dir):
+    presenter, view, _, _ = parts
+    tight = dataclasses.replace(COMPLETE, tolerance=0.4)  # the theodolite's 0.5" ≥ ±0.4"
+    view.edit_certificate_details.side_effect = [tight, None]
+    view.confirm_standards.return_value = False
+    kind, result = _theodolite(samples_dir)
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    (warnings,), _ = view.confirm_standards.call_args
+    assert "Theodolite" in warnings[0] and "±0.4\"" in warnings[0]
+    view.choose_save_path.assert_not_called()

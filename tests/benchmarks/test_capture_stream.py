@@ -189,7 +189,8 @@ def test_capture_stream_latency_and_disconnects(qtbot, tmp_path, report):
         f"{mark(lat.max() <= 0.05)} |",
         f"| window's longest pause while capturing (5 ms heartbeat; median gap "
         f"{np.median(gaps) * 1e3:.1f} ms, p99 {np.percentile(gaps, 99) * 1e3:.1f} ms) | "
-        f"{gaps.max() * 1e3:.1f} ms | ≤ 50 ms | {mark(gaps.max() <= 0.05)} |",
+        f"{gaps.max() * 1e3:.1f} ms | ≤ 50 ms above the idle window's own (#41) | "
+        f"{mark(gaps.max() <= stream['idle_gaps'].max() + 0.05)} |",
         f"| … the same window idle just before (the machine's floor; p99 "
         f"{np.percentile(stream['idle_gaps'], 99) * 1e3:.1f} ms) | "
         f"{stream['idle_gaps'].max() * 1e3:.1f} ms | | |",
@@ -208,7 +209,8 @@ def test_capture_stream_latency_and_disconnects(qtbot, tmp_path, report):
         f"Capture: a 250 Hz autocollimator stream for {minutes} into the window: "
         f"{dropped - in_flight} frames dropped ({in_flight} in flight at the close), "
         f"reading-to-cell max {lat.max() * 1e3:.0f} ms (target 50 ms, {mark(lat.max() <= 0.05)}), "
-        f"longest pause {gaps.max() * 1e3:.0f} ms (target 50 ms, {mark(gaps.max() <= 0.05)}); "
+        f"longest pause {gaps.max() * 1e3:.0f} ms (idle {stream['idle_gaps'].max() * 1e3:.0f} ms; "
+        f"target idle + 50 ms, {mark(gaps.max() <= stream['idle_gaps'].max() + 0.05)}); "
         f"{sum(lost)} readings lost over {ac['cuts']} + {theo['cuts']} disconnects "
         f"(target 0, {mark(sum(lost) == 0)})."))
     assert stream["in_order"] == stream["stored"] == stream["received"]

@@ -7,8 +7,7 @@ from types import SimpleNamespace
 from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
-from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS
-from models.positioning.compensation import check_compensation
+from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS, check_compensation
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult

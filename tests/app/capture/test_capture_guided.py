@@ -57,6 +57,9 @@ def test_auto_take_two_readings_per_face_traced_to_the_frames_and_in_the_budget(
     keys = [c.key for c in model.sheet.columns]
     presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
     panel = window.capture_panel
+    # the resolution "as sent": the cells hold the mean to every digit (the default 0.01"
+    # rounding is tested in test_capture_panel.py)
+    window.qsettings.setValue("capture/resolution/autocollimator", 0.0)
     panel.auto.setChecked(True)
     panel.window_box.setValue(0.3)
     panel.dwell_box.setValue(0.1)

@@ -36,7 +36,8 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
         panel.take_button.click()
         panel.disconnect_instrument()
     assert model.sheet.text(row, keys.index("ac_x_arcsec")) == "3.25"
-    assert model.sheet.text(row, keys.index("ac_y_arcsec")) == "-1.5"
+    # rounded to the autocollimator's resolution (0.01" unless set), not 12 digits (#41)
+    assert model.sheet.text(row, keys.index("ac_y_arcsec")) == "-1.50"
     assert presenter.undo_stack.count() == steps + 1
     presenter.undo_stack.undo()
     assert row >= model.sheet.row_count or model.sheet.text(row, keys.index("ac_x_arcsec")) == ""
@@ -52,20 +53,27 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
     assert panel.status.text().startswith(f"{sim.port}: no answer") and not panel.take_button.isEnabled()
 
 
-def test_theodolite_zenith_goes_to_the_vertical_column_only_when_it_reads_zenith(window, qtbot):
+def test_theodolite_zenith_fills_the_vertical_column_as_it_reads(window, qtbot):
+    """#41: the elevation is filled from the zenith angle (90° − V) where the column reads
+    elevation, the zenith angle itself where it reads zenith; both rounded to the
+    theodolite's resolution (0.1" unless set), the raw frames keeping every digit."""
     presenter = _show(window, "theodolite")
     model = presenter.table_model
     keys = [c.key for c in model.sheet.columns]
-    row = model.sheet.row_count
-    presenter.view.table.setCurrentIndex(model.index(row, 0))
     panel = window.capture_panel
-    with TheodoliteSimulator("pty", positions=[(123.4567, 87.6543)]) as sim:
-        panel.connect_to("theodolite", sim.port, **FAST)
-        qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
-        panel.take_reading()
-        panel.disconnect_instrument()
-    assert float(model.sheet.text(row, keys.index("azimuth_deg"))) == pytest.approx(123.4567, abs=1e-8)
-    vertical = model.sheet.text(row, keys.index("elevation_deg"))
-    zenith = presenter.settings.get("vertical_reading") == "zenith"
-    assert (float(vertical) == pytest.approx(87.6543, abs=1e-8)) if zenith else vertical == ""
-
+    for reads in ("elevation", "zenith"):
+        presenter.set_settings({**presenter.settings, "vertical_reading": reads})
+        row = model.sheet.row_count
+        presenter.view.table.setCurrentIndex(model.index(row, 0))
+        with TheodoliteSimulator("pty", positions=[(123.4567, 87.6543)]) as sim:
+            panel.connect_to("theodolite", sim.port, **FAST)
+            qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+            panel.take_reading()
+            panel.disconnect_instrument()
+        azimuth = model.sheet.text(row, keys.index("azimuth_deg"))
+        vertical = model.sheet.text(row, keys.index("elevation_deg"))
+        # 123.4567° = 444444.12" → 444444.1"; written in the column's format (decimal here)
+        assert float(azimuth) * 3600 == pytest.approx(444444.1, abs=0.004)
+        expected = 87.6543 if reads == "zenith" else 90.0 - 87.6543
+        assert float(vertical) == pytest.approx(expected, abs=0.05 / 3600 + 1e-9)
+    assert panel.raw_sessions("theodolite")[-1]["frames"]  # the raw frames kept

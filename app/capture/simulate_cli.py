@@ -1,0 +1,130 @@
+"""``anglebench simulate autocollimator|theodolite|readout PORT``: a demonstration
+instrument for training and for trying the program without hardware.
+
+PORT is a TCP port of 127.0.0.1 (connect the window to ``tcp://127.0.0.1:PORT``) or
+``pty`` (a pseudo-terminal, its device printed). The instrument answers its published
+protocol (app/capture/simulators.py) with the settings given: where it points
+(``--position``, or ``--positions`` held ``--hold`` seconds each), noise, drift and
+faults. It runs until interrupted (Ctrl+C) or for ``--seconds``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import signal
+import sys
+import threading
+
+from app.capture.simulators import SIMULATORS
+from app.command_line import EXIT_BAD_INPUT, Parser, language_asked, speaking
+from app.command_line import say as _say
+from models.messages import QT_TR_NOOP, message, rendered
+
+__all__ = ["FAULTS", "run_simulate", "simulator_from"]
+
+#: the faults a demonstration instrument can be told to show
+FAULTS = ("noise", "invalid_axes", "silence", "disconnect", "wrong_baud")
+
+
+def _numbers(words):
+    def read(text: str) -> tuple[float, ...]:
+        try:
+            values = tuple(float(v) for v in text.replace(";", ",").split(",") if v.strip())
+        except ValueError:
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: give numbers separated by commas"), text=repr(text)), words)) from None
+        if not values:
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: give numbers separated by commas"), text=repr(text)), words))
+        return values
+    return read
+
+
+def _port(words):
+    def read(text: str) -> int | str:
+        if text.strip().lower() == "pty":
+            return "pty"
+        try:
+            port = int(text)
+        except ValueError:
+            port = -1
+        if not 0 <= port <= 65535:
+            raise argparse.ArgumentTypeError(rendered(message(QT_TR_NOOP(
+                "{text}: a TCP port (0 to 65535; 0 takes a free one) or 'pty'"),
+                text=repr(text)), words))
+        return port
+    return read
+
+
+def _parser(words) -> argparse.ArgumentParser:
+    p = Parser(prog="anglebench simulate", description=words(QT_TR_NOOP(
+        "A demonstration instrument on a TCP port of 127.0.0.1 or a pseudo-terminal")))
+    p.add_argument("instrument", choices=sorted(SIMULATORS), help=words(QT_TR_NOOP(
+        "the instrument to simulate")))
+    p.add_argument("port", type=_port(words), help=words(QT_TR_NOOP(
+        "a TCP port of 127.0.0.1 (0: a free one), or 'pty' for a pseudo-terminal")))
+    p.add_argument("--position", type=_numbers(words), metavar="X[,Y]", help=words(QT_TR_NOOP(
+        "where the instrument points: AC x,y in arcseconds; the theodolite's Hz,V in degrees; "
+        "the readout's value")))
+    p.add_argument("--positions", type=_numbers(words), metavar="A,B,…", help=words(QT_TR_NOOP(
+        "a script of readings (the first axis; the second stays), each held --hold seconds")))
+    p.add_argument("--hold", type=float, default=5.0, metavar="SECONDS", help=words(QT_TR_NOOP(
+        "how long each of --positions is held")))
+    p.add_argument("--noise", type=float, default=0.05, metavar="SIGMA", help=words(QT_TR_NOOP(
+        "Gaussian noise on every reading (arcseconds; the readout's unit)")))
+    p.add_argument("--drift", type=float, default=0.0, metavar="PER_S", help=words(QT_TR_NOOP(
+        "drift per second (arcseconds; the readout's unit)")))
+    p.add_argument("--fault", action="append", choices=FAULTS, default=[], help=words(QT_TR_NOOP(
+        "a fault to show (repeatable)")))
+    p.add_argument("--rate", type=float, default=50.0, metavar="HZ", help=words(QT_TR_NOOP(
+        "the autocollimator's stream rate")))
+    p.add_argument("--seconds", type=float, default=0.0, help=words(QT_TR_NOOP(
+        "stop after this long (0: until interrupted)")))
+    return p
+
+
+def simulator_from(instrument: str, port: int | str, position=None, positions=None,
+                   hold_s: float = 5.0, noise: float = 0.05, drift: float = 0.0,
+                   faults=(), rate_hz: float = 50.0):
+    """The demonstration instrument (not yet started: use it as a context manager)."""
+    default = {"autocollimator": (12.5, -3.2), "theodolite": (30.0, 89.995),
+               "readout": (105.00012,)}[instrument]
+    base = tuple(position) if position else default
+    width = len(default)
+    base = (base + default[len(base):])[:width]
+    script = [(v, *base[1:]) for v in positions] if positions else [base]
+    return SIMULATORS[instrument](
+        "pty" if port == "pty" else "tcp", faults=tuple(faults), positions=script,
+        hold_s=hold_s if positions else 1e9, sigma=noise, drift_per_s=drift, rate_hz=rate_hz,
+        tcp_port=0 if port == "pty" else int(port), seed=None)
+
+
+def run_simulate(argv: list[str], ready=None) -> int:
+    """The command; ``ready`` (tests) is called with the simulator once it serves, and the
+    command returns when it is set to stop (``simulator.stop_event``)."""
+    with speaking(language_asked(argv)) as words:
+        args = _parser(words).parse_args(argv)
+        try:
+            sim = simulator_from(args.instrument, args.port, args.position, args.positions,
+                                 args.hold, args.noise, args.drift, args.fault, args.rate)
+            sim.__enter__()
+        except OSError as exc:
+            _say(rendered(message(QT_TR_NOOP("anglebench simulate: port {port}: {reason}"),
+                                  port=args.port, reason=str(exc)), words))
+            return EXIT_BAD_INPUT
+        try:
+            sys.stdout.write(rendered(message(QT_TR_NOOP(
+                "A demonstration {instrument} answers on {port} (Ctrl+C stops it)"),
+                instrument=args.instrument, port=sim.port), words) + "\n")
+            sys.stdout.flush()
+            done = threading.Event()
+            if ready is not None:
+                ready(sim, done)
+            elif threading.current_thread() is threading.main_thread():
+                signal.signal(signal.SIGTERM, lambda *_: done.set())
+            with contextlib.suppress(KeyboardInterrupt):
+                done.wait(args.seconds if args.seconds > 0 else None)
+        finally:
+            sim.__exit__(None, None, None)
+    return 0

@@ -1,0 +1,319 @@
+"""Demonstration instruments (Instrument › Demonstration instrument…, ``anglebench simulate``)
+and the tests' simulators: instruments that are not there: an ELCOMAT-kind autocollimator, a GeoCOM theodolite
+and a line readout, answering on a pseudo-terminal (``os.openpty``) or on a TCP port
+of 127.0.0.1, as their published protocols say. Written from the protocols, not from
+the drivers (nothing here imports ``models.capture`` or ``app.capture``), so a driver
+that misreads the protocol fails against them.
+
+Fault modes (``faults``): ``noise`` (garbage bytes and lines between frames),
+``invalid_axes`` (every third frame marked invalid: an axis's status digit, or
+GeoCOM's return code 1284, a readout's error line), ``silence`` (never answers),
+``disconnect`` (the link drops after ``disconnect_after`` frames, and again every
+``disconnect_every`` frames when that is set: a TCP client is cut off and a new one
+accepted; on a pty, as with a pulled cable, nothing goes either way for ``gap_s``),
+``wrong_baud`` (what a link at the wrong speed delivers: only garbage bytes).
+
+A slow instrument (``reply_delay_s``) works through the requests it receives one after
+the other, each taking that long, and answers each with the position at the moment it
+answers; ``max_pending`` records the most requests it held unanswered at once (a client
+that keeps one request in flight never makes it more than 1).
+
+The instrument's position is a script: ``positions`` each held ``hold_s`` seconds, with
+Gaussian noise of ``sigma`` (arcsec, or the readout's unit) on every frame and a drift of
+``drift_per_s`` (the same unit per second since the start; 0: none).
+``sent`` records every measurement frame written whole (value, or None for an
+invalid one), so a test can check that none is lost.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import random
+import select
+import socket
+import threading
+import time
+import tty
+
+__all__ = ["SIMULATORS", "AutocollimatorSimulator", "ReadoutSimulator", "TheodoliteSimulator"]
+
+
+class _Simulator:
+    #: what ends one command the instrument receives
+    command_end = b"\n"
+
+    def __init__(self, transport: str = "pty", faults: tuple[str, ...] = (),
+                 positions=((0.0, 0.0),), hold_s: float = 1e9, sigma: float = 0.0,
+                 disconnect_after: int = 5, gap_s: float = 0.3, rate_hz: float = 250.0,
+                 seed: int = 34, disconnect_every: int = 0, drift_per_s: float = 0.0,
+                 tcp_port: int = 0, reply_delay_s: float = 0.0) -> None:
+        self.transport, self.faults = transport, set(faults)
+        self.positions, self.hold_s, self.sigma = list(positions), hold_s, sigma
+        self.disconnect_after, self.gap_s, self.rate_hz = disconnect_after, gap_s, rate_hz
+        #: with ``disconnect``: drop the link again every this many frames (0: once)
+        self.disconnect_every = disconnect_every
+        self.drift_per_s = drift_per_s
+        #: with ``transport="tcp"``: the port of 127.0.0.1 to listen on (0: any free one)
+        self.tcp_port = tcp_port
+        self.cuts = 0
+        #: seconds each request takes to answer; requests wait their turn
+        self.reply_delay_s = reply_delay_s
+        self.max_pending = 0
+        self.rng = random.Random(seed)
+        self.sent: list = []
+        self.received: list[bytes] = []
+        self._stop = threading.Event()
+        self._frames = 0
+        self._disconnected = False
+        self._streaming = False
+
+    # ------------------------------------------------------------ the link
+    def __enter__(self):
+        if self.transport == "pty":
+            self._master, self._slave = os.openpty()
+            tty.setraw(self._slave)
+            tty.setraw(self._master)
+            self.port = os.ttyname(self._slave)
+        else:
+            self._server = socket.socket()
+            self._server.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            self._server.bind(("127.0.0.1", self.tcp_port))
+            self._server.listen(1)
+            self.port = f"tcp://127.0.0.1:{self._server.getsockname()[1]}"
+        self._start = time.monotonic()
+        self._thread = threading.Thread(target=self._serve, daemon=True)
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._stop.set()
+        self._thread.join(5)
+        if self.transport == "pty":
+            os.close(self._master)
+            os.close(self._slave)
+        else:
+            self._server.close()
+
+    def _serve(self) -> None:
+        if self.transport == "pty":
+            self._serve_link(self._master, os.read, os.write)
+            return
+        self._server.settimeout(0.05)
+        while not self._stop.is_set():
+            try:
+                client, _ = self._server.accept()
+            except OSError:
+                continue
+            with client:
+                self._serve_link(client, lambda c, n: c.recv(n), lambda c, d: c.sendall(d))
+                with contextlib.suppress(OSError):
+                    client.shutdown(socket.SHUT_RDWR)
+
+    def _serve_link(self, link, read, write) -> None:
+        """Until stopped, or (TCP) until the link drops."""
+        pending = b""
+        next_frame = time.monotonic()
+        queued: list[tuple[float, bytes]] = []  # (when it is answered, the request)
+        while not self._stop.is_set():
+            while queued and time.monotonic() >= queued[0][0]:
+                _, one = queued.pop(0)
+                for reply in self.answer(one):
+                    if not self._write(link, write, reply):
+                        return
+            ready, _, _ = select.select([link], [], [], 0.002)
+            if ready:
+                try:
+                    data = read(link, 4096)
+                except OSError:
+                    return
+                if not data:
+                    return
+                pending += data
+                while self.command_end in pending:
+                    one, pending = pending.split(self.command_end, 1)
+                    self.received.append(one)
+                    if "silence" in self.faults or self._gap():
+                        continue
+                    if self.reply_delay_s > 0:
+                        start = max([time.monotonic()] + [due for due, _ in queued[-1:]])
+                        queued.append((start + self.reply_delay_s, one))
+                        self.max_pending = max(self.max_pending, len(queued))
+                        continue
+                    self.max_pending = max(self.max_pending, 1)
+                    for reply in self.answer(one):
+                        if not self._write(link, write, reply):
+                            return
+            if self._streaming and time.monotonic() >= next_frame:
+                next_frame += 1.0 / self.rate_hz
+                if not ("silence" in self.faults or self._gap()):
+                    frame = self.stream_frame()
+                    if frame is not None and not self._write(link, write, frame):
+                        return
+            if self._cut_now():
+                if self.transport == "tcp":
+                    self._streaming = False
+                    return
+                self._gap_until = time.monotonic() + self.gap_s
+
+    _gap_until = 0.0
+
+    def _gap(self) -> bool:
+        return time.monotonic() < self._gap_until
+
+    def _cut_now(self) -> bool:
+        if "disconnect" in self.faults and not self._disconnected \
+                and self._frames >= self.disconnect_after:
+            self._disconnected = not self.disconnect_every
+            self.disconnect_after = self._frames + self.disconnect_every
+            self.cuts += 1
+            return True
+        return False
+
+    def _write(self, link, write, reply: bytes) -> bool:
+        if "wrong_baud" in self.faults:
+            reply = bytes(self.rng.randrange(128, 256) for _ in reply)
+        if "noise" in self.faults and self.rng.random() < 0.3:
+            reply = bytes(self.rng.randrange(256) for _ in range(self.rng.randrange(1, 30))) \
+                + self.line_end + reply
+        try:
+            write(link, reply)
+        except OSError:
+            return False
+        return True
+
+    def position(self) -> tuple[float, ...]:
+        index = min(int((time.monotonic() - self._start) / self.hold_s), len(self.positions) - 1)
+        return tuple(self.positions[index])
+
+    def noisy(self, value: float) -> float:
+        return value + (self.rng.gauss(0.0, self.sigma) if self.sigma else 0.0) + self.drift()
+
+    def drift(self) -> float:
+        """The drift since the start (the noise's unit)."""
+        return self.drift_per_s * (time.monotonic() - self._start) if self.drift_per_s else 0.0
+
+    def invalid_now(self) -> bool:
+        return "invalid_axes" in self.faults and self._frames % 3 == 2
+
+    def answer(self, command: bytes) -> list[bytes]:
+        raise NotImplementedError
+
+    def stream_frame(self) -> bytes | None:
+        return None
+
+
+class AutocollimatorSimulator(_Simulator):
+    """Commands end in LF, replies in CR (see the module's docstring of the protocol).
+    ``streams=False``: a model that answers single shots (``a``, ``r``) only and says
+    nothing to ``A``/``R``, as some ELCOMAT 3000 firmware does."""
+
+    command_end = b"\n"
+    line_end = b"\r"
+
+    def __init__(self, *args, streams: bool = True, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.streams = streams
+
+    def _measurement(self, code: str) -> bytes:
+        x, y = (self.noisy(v) for v in self.position())
+        axes = "3"
+        if self.invalid_now():
+            axes = "120"[(self._frames // 3) % 3]  # y lost, x lost, both lost in turn
+        self._frames += 1
+        self.sent.append((x if axes in "13" else None, y if axes in "23" else None))
+        return f"{code} 00{axes} {x:.3f} {y:.3f}\r".encode()
+
+    def answer(self, command: bytes) -> list[bytes]:
+        command = command.strip()
+        if command in (b"a", b"r"):
+            return [self._measurement("4" if command == b"a" else "2")]
+        if command in (b"A", b"R"):
+            self._streaming, self._code = self.streams, ("3" if command == b"A" else "1")
+            return []
+        if command == b"s":
+            self._streaming = False
+            return []
+        if command == b"d":
+            return [b"8 40123 15 6 2021 300\r"]
+        return []
+
+    def stream_frame(self) -> bytes:
+        return self._measurement(self._code)
+
+
+class TheodoliteSimulator(_Simulator):
+    """Leica GeoCOM: ``%R1Q,rpc[,trid]:params`` CR LF in, ``%R1P,0,trid:rc,…`` CR LF out
+    (the transaction id echoed, 0 when the request has none; ``omit_trid`` answers
+    ``%R1P,0:rc,…`` without one, which the reference's syntax allows). ``positions`` are
+    (Hz, V) in degrees.
+
+    Besides the angles (TMC_GetAngle1, 2003; TMC_GetAngle5, 2107) it answers what a client
+    asks when it connects, as an instrument does: COM_NullProc (0), COM_GetDoublePrecision
+    (108), COM_GetSWVersion (110), CSV_GetInstrumentNo (5003), CSV_GetInstrumentName (5004)
+    and CSV_GetSWVersion (5034); any other procedure with GRC_UNDEFINED (1)."""
+
+    command_end = b"\r\n"
+    line_end = b"\r\n"
+    #: the connection calls' replies after the return code
+    IDENTITY = {0: "", 108: ",15", 110: ",1,50,0", 5003: ",1234567", 5004: ',"TM50 0.5"',
+                5034: ",3,10,0"}
+
+    def __init__(self, *args, omit_trid: bool = False, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.omit_trid = omit_trid
+
+    def _reply(self, trid: int, rest: str) -> bytes:
+        head = "%R1P,0" if self.omit_trid else f"%R1P,0,{trid}"
+        return f"{head}:{rest}\r\n".encode()
+
+    def answer(self, command: bytes) -> list[bytes]:
+        text = command.decode("ascii", "replace").strip()
+        if not text.startswith("%R1Q,") or ":" not in text:
+            return []
+        head = text[5:].split(":", 1)[0].split(",")
+        rpc, trid = int(head[0]), (int(head[1]) if len(head) > 1 else 0)
+        if rpc in self.IDENTITY:
+            return [self._reply(trid, "0" + self.IDENTITY[rpc])]
+        if rpc not in (2003, 2107):
+            return [self._reply(trid, "1")]  # GRC_UNDEFINED for anything else
+        # sigma in arcseconds on each angle
+        hz, v = (math.radians(d + ((self.rng.gauss(0.0, self.sigma) if self.sigma else 0.0)
+                                   + self.drift()) / 3600.0)
+                 for d in self.position())
+        hz %= 2 * math.pi  # the horizontal circle reads 0 to 2π
+        bad = self.invalid_now()
+        self._frames += 1
+        rc = 1284 if bad else 0
+        self.sent.append(None if bad else (math.degrees(hz), math.degrees(v)))
+        values = f"{hz:.10f},{v:.10f}"
+        if rpc == 2003:
+            values += ",0.0000048,12345678,0.00001,-0.00002,0.0000048,12345670,0"
+        return [self._reply(trid, f"{rc},{values}")]
+
+
+class ReadoutSimulator(_Simulator):
+    """Answers STX with one line ``  +105.00012 deg`` CR LF (ND 28x style)."""
+
+    command_end = b"\x02"
+    line_end = b"\r\n"
+
+    def __init__(self, *args, unit: str = "deg", **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.unit = unit
+
+    def answer(self, command: bytes) -> list[bytes]:
+        bad = self.invalid_now()
+        self._frames += 1
+        if bad:
+            self.sent.append(None)
+            return [b"ERROR 02\r\n"]
+        value = self.noisy(self.position()[0])
+        self.sent.append(round(value, 5))
+        return [f"{value:+.5f} {self.unit}\r\n".encode()]
+
+
+#: the demonstration instruments by the name ``anglebench simulate`` and the menu give them
+SIMULATORS = {"autocollimator": AutocollimatorSimulator, "theodolite": TheodoliteSimulator,
+              "readout": ReadoutSimulator}

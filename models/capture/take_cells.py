@@ -1,0 +1,106 @@
+"""Where a captured reading goes and how it is written into the readings table.
+
+* **The row a take goes to** (:func:`next_empty_point`): the row the cursor is on when the
+  cells the take fills are blank there; else the next row below whose cells are all blank
+  (rows pre-filled by a plan with target, face or θ but no reading count as empty points);
+  else a new row after the last. A take never writes over a filled reading.
+* **The text of a cell** (:func:`cell_text`): the value rounded to the instrument's
+  resolution (arcseconds, e.g. 0.01″, 0.1″, 1 µrad = 0.206265″), written in the column's
+  angle format — D°M′S″ where the column's cells are written so, else decimal degrees — or
+  in arcseconds for a column in arcseconds. The raw trace and ``capture --out`` keep the
+  instrument's full precision; only the cell is rounded.
+* **Elevation from a zenith angle** (:func:`elevation_from_zenith_deg`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable, Sequence
+
+from models.readings.angles import format_dms
+
+__all__ = ["RESOLUTIONS_ARCSEC", "cell_text", "column_is_dms", "decimals_for",
+           "elevation_from_zenith_deg", "next_empty_point", "rounded"]
+
+#: one microradian in arcseconds
+MICRORADIAN_ARCSEC = 1e-6 * 180.0 / math.pi * 3600.0
+#: the resolutions offered per instrument (arcseconds); 0 keeps what the instrument sent
+RESOLUTIONS_ARCSEC = (0.0, 0.001, 0.01, 0.1, 1.0, MICRORADIAN_ARCSEC)
+
+_DMS = re.compile(r"[°'′\"″]|^\s*[-+]?\d+\s+\d+(\s+\d+(\.\d*)?)?\s*$")
+
+
+def next_empty_point(row_count: int, start: int, columns: Sequence[int],
+                     text: Callable[[int, int], str]) -> int:
+    """The row a take goes to: ``start`` or the first row after it whose cells in ``columns``
+    are all blank (``text(row, column)`` is a cell's text); ``row_count`` (a new row) when
+    there is none. ``start`` beyond the rows (the empty row after the last) is kept."""
+    start = max(0, start)
+    for r in range(start, row_count):
+        if all(not text(r, c).strip() for c in columns):
+            return r
+    return max(start, row_count)
+
+
+def rounded(value: float, resolution: float) -> float:
+    """``value`` to the nearest multiple of ``resolution`` (0: unchanged)."""
+    if resolution <= 0 or not math.isfinite(value):
+        return value
+    return round(value / resolution) * resolution
+
+
+def decimals_for(resolution: float) -> int:
+    """Decimals that show a multiple of ``resolution`` to a tenth of it (a power of ten: its
+    own decimals)."""
+    if resolution <= 0:
+        return 12
+    exponent = -math.log10(resolution)
+    if abs(exponent - round(exponent)) < 1e-9:
+        return max(0, round(exponent))
+    return max(0, math.ceil(exponent + 1))
+
+
+def column_is_dms(texts: Sequence[str]) -> bool:
+    """Whether a column's cells are written as D°M′S″ (the majority of its filled cells)."""
+    filled = [t for t in texts if t.strip()]
+    if not filled:
+        return False
+    return 2 * sum(1 for t in filled if _DMS.search(t)) > len(filled)
+
+
+def elevation_from_zenith_deg(zenith_deg: float) -> float:
+    """The elevation of a sight from its zenith angle: 90° − V in face I (V ≤ 180°), V − 270°
+    in face II."""
+    return 90.0 - zenith_deg if zenith_deg <= 180.0 else zenith_deg - 270.0
+
+
+def cell_text(value: float, unit: str, resolution_arcsec: float, dms: bool = False,
+              column_unit: str = "") -> str:
+    """The text a captured ``value`` (in ``unit``: ``"deg"`` or ``"arcsec"``, else the
+    readout's own unit) is written as in a cell.
+
+    ``resolution_arcsec`` is the instrument's resolution (0: as sent, 12 significant
+    digits); ``dms`` writes degrees as D°M′S″; ``column_unit`` ``'"'`` writes an angle in
+    arcseconds. A value in another unit is rounded to ``resolution_arcsec`` taken in its
+    own unit."""
+    if unit == "deg" and column_unit not in ('"', "arcsec"):
+        if resolution_arcsec <= 0:
+            # as sent: D°M′S″ to 0.001″ (a readout's 0.00001° is 0.036″), else every digit
+            return format_dms(value, 3) if dms else f"{value:.12g}"
+        arcsec = rounded(value * 3600.0, resolution_arcsec)
+        if dms:
+            return format_dms(arcsec / 3600.0, decimals_for(resolution_arcsec))
+        return _fixed(arcsec / 3600.0, decimals_for(resolution_arcsec / 3600.0))
+    if unit == "deg":
+        value, unit = value * 3600.0, "arcsec"
+    if resolution_arcsec <= 0:
+        return f"{value:.12g}"
+    return _fixed(rounded(value, resolution_arcsec), decimals_for(resolution_arcsec))
+
+
+def _fixed(value: float, decimals: int) -> str:
+    text = f"{value:.{decimals}f}"
+    if text.startswith("-") and float(text) == 0.0:
+        text = text[1:]
+    return text

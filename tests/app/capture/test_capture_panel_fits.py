@@ -1,0 +1,71 @@
+"""#41: the capture panel docks (left, right, bottom; remembered) and never widens the
+window past its screen. Before, Instrument › Connect… made the window 1484 px wide on a
+1280 px screen (Connect, auto-take, Window and Dwell cut off at the right edge)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import QSettings, Qt
+
+pytestmark = pytest.mark.slow  # a window in a process of its own, on a screen of 1280×720
+
+ROOT = Path(__file__).resolve().parents[3]
+
+
+def test_every_control_in_sight_at_1280x720_docked_anywhere(tmp_path):
+    config = tmp_path / "screen.json"
+    config.write_text(json.dumps({"screens": [{
+        "name": "laptop", "x": 0, "y": 0, "width": 1280, "height": 720,
+        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
+    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
+           "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
+           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
+    run = subprocess.run([sys.executable, "-m", "tests.capture_panel_probe"], env=env,
+                         capture_output=True, text=True, timeout=600, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr[-3000:]
+    found = json.loads(run.stdout.strip().splitlines()[-1])
+    assert {f["area"] for f in found} == {"right", "left", "bottom"}
+    assert len(found) == 3 * 5  # every workbench at every side
+    for seen in found:
+        x, y, w, h = seen["frame"]
+        ax, ay, aw, ah = seen["available"]
+        where = f"{seen['workbench']} with the panel at the {seen['area']}"
+        assert (aw, ah) == (1280, 720)
+        assert x >= ax and x + w <= ax + aw and y + h <= ay + ah, f"{where}: {w}×{h}"
+        assert seen["dock"].lower().startswith(seen["area"]), where
+        assert not seen["hidden"], f"{where}: " + "; ".join(seen["hidden"])
+        # the readings table and one plot stay in sight beside it
+        assert min(seen["table"]) >= 60 and seen["plot"] and min(seen["plot"]) >= 60, where
+        if seen["area"] != "bottom":
+            assert seen["table"][1] >= 250 and seen["plot"][1] >= 250, where
+
+
+def test_where_the_panel_is_docked_is_remembered(qtbot, tmp_path):
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    path = str(tmp_path / "settings.ini")
+    first = MainWindow(settings=QSettings(path, QSettings.Format.IniFormat),
+                       recovery=RecoveryStore(tmp_path / "recovery"))
+    qtbot.addWidget(first)
+    first.show()
+    first.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, first.capture_panel)
+    first.capture_panel.show()
+    first.close()
+    second = MainWindow(settings=QSettings(path, QSettings.Format.IniFormat),
+                        recovery=RecoveryStore(tmp_path / "recovery"))
+    qtbot.addWidget(second)
+    second.show()
+    assert second.dockWidgetArea(second.capture_panel) == Qt.DockWidgetArea.LeftDockWidgetArea
+    assert second.capture_panel.isVisible()
+    allowed = second.capture_panel.allowedAreas()
+    for area in (Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.RightDockWidgetArea,
+                 Qt.DockWidgetArea.BottomDockWidgetArea):
+        assert allowed & area
+    second.close()

@@ -1,0 +1,78 @@
+"""Opens the window on the screen Qt was started with, shows the capture panel docked at
+each side it can go (right, left, bottom) on every workbench, and prints, as JSON, the
+window's frame, the screen's free area and every control of the panel that is not wholly
+in sight (tests/app/capture/test_capture_panel_fits.py runs it on a 1280×720 screen)."""
+
+from __future__ import annotations
+
+import json
+import tempfile
+from pathlib import Path
+
+from PySide6.QtCore import QPoint, QRect, QSettings, Qt
+from PySide6.QtWidgets import (
+    QAbstractButton,
+    QAbstractSpinBox,
+    QApplication,
+    QComboBox,
+)
+
+AREAS = {"right": Qt.DockWidgetArea.RightDockWidgetArea,
+         "left": Qt.DockWidgetArea.LeftDockWidgetArea,
+         "bottom": Qt.DockWidgetArea.BottomDockWidgetArea}
+
+
+def settle(app) -> None:
+    for _ in range(6):
+        app.processEvents()
+
+
+def main() -> None:
+    app = QApplication.instance() or QApplication(["anglebench"])
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    scratch = tempfile.mkdtemp(prefix="anglebench-panel-")
+    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
+    window.load_all_samples()
+    window.show()
+    settle(app)
+    panel = window.capture_panel
+    panel.show()
+    found = []
+    for area_name, area in AREAS.items():
+        window.addDockWidget(area, panel)
+        panel.show()
+        for index, presenter in enumerate(window.presenters):
+            window.tabs.setCurrentIndex(index)
+            settle(app)
+            frame = window.frameGeometry()
+            screen = (window.screen() or app.primaryScreen()).availableGeometry()
+            inside = window.rect()
+            viewport = panel.widget().viewport()
+            seen = QRect(viewport.mapTo(window, QPoint(0, 0)), viewport.size())
+            hidden = []
+            for control in panel.findChildren(QAbstractButton) + panel.findChildren(
+                    QComboBox) + panel.findChildren(QAbstractSpinBox):
+                if not control.isVisibleTo(panel) or control.parent() is panel:
+                    continue  # the column list shows for a readout only; the dock's own
+                rect = QRect(control.mapTo(window, QPoint(0, 0)), control.size())
+                if not (inside.contains(rect) and seen.contains(rect)):
+                    hidden.append(f"{control.objectName() or type(control).__name__} "
+                                  f"'{getattr(control, 'text', lambda: '')()}' at "
+                                  f"{rect.x()},{rect.y()} {rect.width()}×{rect.height()}")
+            table = presenter.view.table
+            plot = presenter.view.plot_tabs.currentWidget()
+            found.append({"area": area_name, "workbench": presenter.kind.key,
+                          "frame": [frame.x(), frame.y(), frame.width(), frame.height()],
+                          "available": [screen.x(), screen.y(), screen.width(), screen.height()],
+                          "hidden": hidden,
+                          "dock": window.dockWidgetArea(panel).name,
+                          "table": [table.width(), table.height()],
+                          "plot": [plot.width(), plot.height()] if plot is not None else None})
+    print(json.dumps(found))  # noqa: T201 - the probe's output
+
+
+if __name__ == "__main__":
+    main()
