@@ -16,6 +16,7 @@ from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
 from models.theodolite.report import theodolite_certificate
+from models.uncertainty.iso230 import once_note
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -197,6 +198,9 @@ def summary(result: TheodoliteResult) -> str:
     if result.iso230 is not None:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
+        note = once_note(result.iso230, "°")
+        if note is not None:
+            out.append(note)
     return lines(out)
 
 
