@@ -40,7 +40,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.special import polygamma
+from scipy.special import ndtr, ndtri, polygamma
 
 __all__ = ["ACHIEVED", "FigureInterval", "INTERVAL_TRIALS", "SIGNED_FIGURES", "axis_figures",
            "figure_intervals", "readings_seed", "world_truth"]
@@ -204,8 +204,8 @@ def _draw(mu_w, sig_w, n, u_b, shape, rng):
 
 #: calibration (Beran 1987): outer tests drawn from the world, and inner draws from each
 #: outer test's own world
-OUTER_TRIALS = 200
-INNER_TRIALS = 80
+OUTER_TRIALS = 300
+INNER_TRIALS = 40
 _CHUNK = 25
 
 
@@ -269,10 +269,12 @@ def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
     """The levels of the pivot's quantiles that make the interval cover at the probability
     asked for, by the iterated bootstrap (prepivoting, Beran 1987, Biometrika 74:457;
     Hall & Martin 1988): each outer test drawn from the world gets its own world and its
-    own inner bootstrap; the rank of its pivot (its figure − the world's figure) among its
-    inner pivots is uniform when the interval is exact, and the quantiles of those ranks are
-    the levels that correct it."""
-    ranks: dict[str, list[np.ndarray]] = {}
+    own inner bootstrap; its pivot (its figure − the world's figure), standardised by its
+    inner pivots' mean and standard deviation, is N(0, 1) when the interval is exact. The
+    mean and the standard deviation of those standardised pivots over the outer tests (the
+    normal form of the prepivot: two moments, steadier than its tail quantiles) give the
+    levels that correct it."""
+    scores: dict[str, list[np.ndarray]] = {}
     outer = min(outer, next(iter(pivots.values())).size)
     for start in range(0, outer, _CHUNK):
         sl = slice(start, min(start + _CHUNK, outer))
@@ -283,15 +285,17 @@ def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
         inner_draw = _draw({k: v[:, None, :] for k, v in mu_o.items()},
                            {k: v[:, None, :] for k, v in sig_o.items()},
                            n, u_b, (sl.stop - sl.start, inner), rng)
-        inner_sims = axis_figures(inner_draw)
-        for key, sim in inner_sims.items():
+        for key, sim in axis_figures(inner_draw).items():
             inner_pivot = sim - truth_o[key][:, None]
-            ranks.setdefault(key, []).append(
-                np.mean(inner_pivot <= pivots[key][sl][:, None], axis=1))
+            centre = np.mean(inner_pivot, axis=1)
+            spread = np.std(inner_pivot, axis=1, ddof=1)
+            z = np.divide(pivots[key][sl] - centre, spread,
+                          out=np.zeros_like(centre), where=spread > 0)
+            scores.setdefault(key, []).append(z)
+    z_tail = float(ndtri(1.0 - tail))
     levels = {}
-    for key, r in ranks.items():
-        u = np.concatenate(r)
-        # a rank of 0 or 1 is beyond the inner draws: half a step inside
-        u = np.clip(u, 0.5 / inner, 1.0 - 0.5 / inner)
-        levels[key] = (float(np.quantile(u, tail)), float(np.quantile(u, 1.0 - tail)))
+    for key, parts in scores.items():
+        z = np.concatenate(parts)
+        shift, scale = float(np.mean(z)), max(float(np.std(z, ddof=1)), 1.0)
+        levels[key] = (float(ndtr(shift - z_tail * scale)), float(ndtr(shift + z_tail * scale)))
     return levels

@@ -1,0 +1,103 @@
+"""Coverage study of the positioning figures' intervals (ISO 230-2 / GB/T 17421.2, VDI/DGQ
+3441): simulated axes with a known truth (models.validation.axis_figures_rig, numpy only)
+measured by the standard test cycle, each test run through the workbench's analysis as a
+user's file would be, and the share of tests whose interval holds the truth counted.
+
+Acceptance: a figure's coverage passes when the number of tests that missed is not more
+than the binomial test allows at the probability stated beside the figure (one-sided, 1 %:
+a correct interval fails it once in a hundred studies); its width is honest when the mean
+width is at most 1.6 × the width a correct interval needs (the spread of measured − truth
+between its quantiles at the stated tails, over the same tests).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.stats import binom
+
+from models.positioning.analysis import POSITIONING
+from models.positioning.report import figure_uncertainties
+from models.readings.sheet import ReadingsSheet
+from models.validation.axis_figures_rig import AxisCase
+
+__all__ = ["FIGURES", "STUDY_CASES", "FigureCoverage", "coverage_study", "study_case_tests"]
+
+FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
+           "B_mean", "P", "Ps_max", "Pa", "U_max")
+
+#: shapes × target counts × noise ratios × constant or varying repeatability
+STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k)
+                    for k, (shape, targets, ratio, varying) in enumerate(
+                        (s, m, r, v) for s in ("smooth", "rough", "spike", "sample")
+                        for m in (12, 72) for r in (0.1, 0.5, 2.0) for v in (False, True)))
+
+#: the miss rate allowed by the binomial test (one-sided)
+ALPHA = 0.01
+#: the widest interval, as a multiple of what a correct one needs, that is still honest
+WIDTH_LIMIT = 1.6
+
+
+@dataclass
+class FigureCoverage:
+    """The hits, widths and errors of one figure over the tests of a study."""
+
+    figure: str
+    hits: int = 0
+    tests: int = 0
+    probability: float = 1.0
+    widths: list[float] = field(default_factory=list)
+    errors: list[float] = field(default_factory=list)  # measured − truth
+    needed: list[float] = field(default_factory=list)  # per case: a correct interval's width
+
+    @property
+    def coverage(self) -> float:
+        return self.hits / self.tests if self.tests else math.nan
+
+    @property
+    def coverage_passes(self) -> bool:
+        """Not more misses than a correct interval at the stated probability would give
+        with probability 1 − ALPHA."""
+        allowed = int(binom.ppf(1.0 - ALPHA, self.tests, 1.0 - self.probability))
+        return self.tests - self.hits <= allowed
+
+    @property
+    def width_ratio(self) -> float:
+        return float(np.mean(self.widths) / np.mean(self.needed)) if self.needed else math.nan
+
+
+def study_case_tests(case: AxisCase, tests: int, rng: np.random.Generator):
+    """(truth, intervals) of ``tests`` simulated tests of one axis, each through the analysis."""
+    truth = case.truth()
+    for _ in range(tests):
+        rows = [[f"{t:.6f}", str(run), sign, f"{x:.6f}", ""]
+                for t, run, sign, x in case.readings(rng)]
+        result = POSITIONING.analyze(ReadingsSheet(POSITIONING.columns, rows).parse(), {})
+        yield truth, figure_uncertainties(result)
+
+
+def coverage_study(cases=STUDY_CASES, tests: int = 100, seed: int = 39
+                   ) -> dict[str, FigureCoverage]:
+    """Every figure's coverage over ``tests`` tests of each case."""
+    rng = np.random.default_rng(seed)
+    out = {key: FigureCoverage(key) for key in FIGURES}
+    for case in cases:
+        per_case: dict[str, list[tuple[float, float]]] = {}
+        for truth, intervals in study_case_tests(case, tests, rng):
+            for key, interval in intervals.items():
+                row = out[key]
+                row.tests += 1
+                row.hits += int(interval.low <= truth[key] <= interval.high)
+                row.probability = min(row.probability, interval.probability)
+                row.widths.append(interval.high - interval.low)
+                per_case.setdefault(key, []).append((interval.value - truth[key],
+                                                     interval.probability))
+        for key, values in per_case.items():
+            errors = np.array([e for e, _ in values])
+            tail = 0.5 * (1.0 - min(p for _, p in values))
+            lo, hi = np.quantile(errors, [tail, 1.0 - tail])
+            out[key].errors += errors.tolist()
+            out[key].needed += [float(hi - lo)] * errors.size
+    return out
