@@ -75,6 +75,18 @@ ACCEPTANCE = (
                "worst point of 24 % passes by that margin, not by chance: over some 40 points "
                "the largest of their sampling errors reaches about 3 × 5 %, and a budget off by "
                "a quarter at one point would still be caught)."),
+    QT_TR_NOOP("Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, "
+               "B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes "
+               "(models/validation/axis_figures_rig.py) with a known systematic deviation curve "
+               "(smooth pitch error, every harmonic the targets resolve, one spike, the bundled "
+               "sample's curve), a known reversal and a known repeatability (constant, or ±50 % "
+               "along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and "
+               "72 targets, 5 runs each way by the standard test cycle, each test through the "
+               "whole analysis. A figure's truth is the figure of the true distribution as the "
+               "standard defines it. It passes when no more tests missed than a correct interval "
+               "at the probability printed beside the figure would miss in 99 studies of 100 "
+               "(binomial test), and when its mean width is at most 1.6 × the width a correct "
+               "interval needs (the quantiles of measured − truth over the same tests)."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -137,15 +137,21 @@ def world_truth(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray]
 
 
 def _shrunk(values: np.ndarray, se2: np.ndarray) -> np.ndarray:
-    """Constrained empirical Bayes (Louis 1984): values (…, targets) pulled towards their
-    mean by √c, c = τ̂²/(τ̂² + mean se²), τ̂² = max(0, var − mean se²), so that the spread of
-    the result estimates the spread of the true values."""
-    centre = np.mean(values, axis=-1, keepdims=True)
-    noise = np.mean(np.broadcast_to(se2, values.shape), axis=-1, keepdims=True)
-    total = np.var(values, axis=-1, ddof=1, keepdims=True)
-    tau2 = np.maximum(total - noise, 0.0)
-    c = np.divide(tau2, tau2 + noise, out=np.zeros_like(tau2), where=(tau2 + noise) > 0)
-    return centre + np.sqrt(c) * (values - centre)
+    """Constrained empirical Bayes (Louis 1984): values (…, targets) with sampling
+    variances ``se2`` pulled towards their precision-weighted mean by √c_i,
+    c_i = τ̂²/(τ̂² + se_i²), so that the spread of the result estimates the spread of the
+    true values; τ̂² the between-target variance by DerSimonian & Laird (1986, Control.
+    Clin. Trials 7:177), which weights each target by its precision (one target that
+    scatters much does not pass for a rough curve)."""
+    se2 = np.maximum(np.broadcast_to(se2, values.shape), 1e-300)
+    w = 1.0 / se2
+    sw = np.sum(w, axis=-1, keepdims=True)
+    centre = np.sum(w * values, axis=-1, keepdims=True) / sw
+    q = np.sum(w * (values - centre) ** 2, axis=-1, keepdims=True)
+    k = values.shape[-1]
+    denominator = sw - np.sum(w**2, axis=-1, keepdims=True) / sw
+    tau2 = np.maximum((q - (k - 1)) / np.maximum(denominator, 1e-300), 0.0)
+    return centre + np.sqrt(tau2 / (tau2 + se2)) * (values - centre)
 
 
 def _world_sigmas(s: dict[str, np.ndarray], n: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -179,12 +185,21 @@ def _world_means(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray],
     return {k: _shrunk(v, sigmas[k] ** 2 / n[k] + u_b**2) for k, v in means.items()}
 
 
+#: the scatter of the world's means: each target's own s where it is above the moderated σ
+#: (a maximum of means follows the targets that scatter most; moderating their s would
+#: narrow it), else the moderated σ
+MEANS_FROM_OWN_S = True
+
+
 def _world(means, stds, n, u_b):
+    """(μ, σ, σ of the means) of the world fitted to measured means and s."""
     sig_w = _world_sigmas(stds, n)
-    return _world_means(means, sig_w, n, u_b), sig_w
+    sig_mean = ({k: np.maximum(stds[k], v) for k, v in sig_w.items()} if MEANS_FROM_OWN_S
+                else sig_w)
+    return _world_means(means, sig_mean, n, u_b), sig_w, sig_mean
 
 
-def _draw(mu_w, sig_w, n, u_b, shape, rng):
+def _draw(mu_w, sig_w, sig_mean, n, u_b, shape, rng):
     """Tests drawn from a world: means and s of shape ``shape + (targets,)`` (single
     precision: the draws' own scatter is far above its rounding)."""
     m = u_b.size
@@ -196,7 +211,7 @@ def _draw(mu_w, sig_w, n, u_b, shape, rng):
         half = nu[0] / 2.0 if np.all(nu == nu[0]) else np.broadcast_to(
             nu / 2.0, shape + (m,)).astype(np.float32)
         chi2 = rng.standard_gamma(half, shape + (m,), dtype=np.float32)
-        mean = (np.float32(mu) + np.float32(sig_w[k] / np.sqrt(n[k]))
+        mean = (np.float32(mu) + np.float32(sig_mean[k] / np.sqrt(n[k]))
                 * rng.standard_normal(shape + (m,), dtype=np.float32) + shared)
         drawn[k] = (mean, np.float32(sig_w[k] * np.sqrt(2.0 / nu)) * np.sqrt(chi2))
     return drawn
@@ -242,27 +257,43 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     u_b = np.zeros(m) if type_b_u is None else np.broadcast_to(
         np.asarray(type_b_u, float), (m,)).copy()
     measured = figures if figures is not None else world_truth(x, s)
-    mu_w, sig_w = _world(x, s, n, u_b)
+    mu_w, sig_w, sig_mean = _world(x, s, n, u_b)
     truth = world_truth(mu_w, sig_w)
     rng = np.random.default_rng(seed)
-    drawn = _draw(mu_w, sig_w, n, u_b, (trials,), rng)
+    drawn = _draw(mu_w, sig_w, sig_mean, n, u_b, (trials,), rng)
     sims = axis_figures(drawn)
     pivots = {k: sims[k] - truth[k] for k in sims}
     tail = 0.5 * (1.0 - probability)
     levels = {k: (tail, 1.0 - tail) for k in sims}
     if outer and inner:
         levels = _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng)
+    guard = _reversal_guard(x, sig_mean, n, tail) if "up" in x and "down" in x else None
     out = {}
     for key, value in measured.items():
         if key not in sims or value is None or not math.isfinite(value):
             continue
         q_lo, q_hi = np.quantile(pivots[key], levels[key])
         low, high = value - q_hi, value - q_lo
+        if guard is not None and key in ("B", "U_max"):
+            low = min(low, guard)
         if key not in SIGNED_FIGURES:
             low, high = max(low, 0.0), max(high, 0.0)
         out[key] = FigureInterval(float(value), float(low), float(high),
                                   min(probability, ACHIEVED.get(key, probability)))
     return out
+
+
+def _reversal_guard(x, sig_mean, n, tail) -> float:
+    """A lower bound of B = max |μ↑ − μ↓| that holds whatever the shape of the reversal
+    curve: max_i (|B_i| − c·u(B_i)), c the two-sided normal quantile at the Šidák-corrected
+    tail over the m targets (simultaneous bounds, projected onto the maximum). The bootstrap's
+    lower end is taken down to it where one target's reversal, large by chance, would pass
+    for a real one."""
+    se = np.sqrt(sig_mean["up"] ** 2 / n["up"] + sig_mean["down"] ** 2 / n["down"])
+    m = se.size
+    per_target = 1.0 - (1.0 - tail) ** (1.0 / m)
+    c = float(ndtri(1.0 - 0.5 * per_target))
+    return float(max(np.max(np.abs(x["up"] - x["down"]) - c * se), 0.0))
 
 
 def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
@@ -280,10 +311,11 @@ def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
         sl = slice(start, min(start + _CHUNK, outer))
         means = {k: v[0][sl] for k, v in drawn.items()}
         sds = {k: v[1][sl] for k, v in drawn.items()}
-        mu_o, sig_o = _world(means, sds, n, u_b)
+        mu_o, sig_o, sig_mean_o = _world(means, sds, n, u_b)
         truth_o = axis_figures({k: (mu_o[k], sig_o[k]) for k in mu_o})
         inner_draw = _draw({k: v[:, None, :] for k, v in mu_o.items()},
                            {k: v[:, None, :] for k, v in sig_o.items()},
+                           {k: v[:, None, :] for k, v in sig_mean_o.items()},
                            n, u_b, (sl.stop - sl.start, inner), rng)
         for key, sim in axis_figures(inner_draw).items():
             inner_pivot = sim - truth_o[key][:, None]

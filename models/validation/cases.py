@@ -37,6 +37,7 @@ from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
 from models.validation.crosscal_rig import CrossCalRig
+from models.validation.figure_coverage import figure_coverage_cases
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
 from models.validation.positioning_rig import AxisRig
@@ -391,7 +392,7 @@ def positioning_cases(trials: int) -> list[ValidationCase]:
                           float(np.nanmax(np.abs(np.concatenate(
                               [left.iso.forward.mean, left.iso.backward.mean]))))))
     cases.append(_agreement_case(w, positioning_budget_trials, trials, 4))
-    return cases + positioning_hand_cases()
+    return cases + positioning_hand_cases() + figure_coverage_cases(trials, ValidationCase)
 
 
 #: ISO 230-2 by hand: two targets, three runs each way, s = 1" everywhere. Forward means 2"

@@ -16,14 +16,17 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.special import ndtri
 from scipy.stats import binom
 
+from models.messages import QT_TR_NOOP, message
 from models.positioning.analysis import POSITIONING
 from models.positioning.report import figure_uncertainties
 from models.readings.sheet import ReadingsSheet
 from models.validation.axis_figures_rig import AxisCase
 
-__all__ = ["FIGURES", "STUDY_CASES", "FigureCoverage", "coverage_study", "study_case_tests"]
+__all__ = ["FIGURES", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES", "FigureCoverage", "coverage_study",
+           "figure_coverage_cases", "study_case_tests"]
 
 FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
            "B_mean", "P", "Ps_max", "Pa", "U_max")
@@ -33,6 +36,10 @@ STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k)
                     for k, (shape, targets, ratio, varying) in enumerate(
                         (s, m, r, v) for s in ("smooth", "rough", "spike", "sample")
                         for m in (12, 72) for r in (0.1, 0.5, 2.0) for v in (False, True)))
+
+#: the cases ``anglebench validate`` runs (12 targets: the study's quick half; the benchmark
+#: runs every case)
+VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and c.noise_ratio != 0.5)
 
 #: the miss rate allowed by the binomial test (one-sided)
 ALPHA = 0.01
@@ -95,9 +102,65 @@ def coverage_study(cases=STUDY_CASES, tests: int = 100, seed: int = 39
                 per_case.setdefault(key, []).append((interval.value - truth[key],
                                                      interval.probability))
         for key, values in per_case.items():
+            # a correct interval's width: the spread of measured − truth between the stated
+            # tails (normal quantiles of its standard deviation: steady with few tests)
             errors = np.array([e for e, _ in values])
             tail = 0.5 * (1.0 - min(p for _, p in values))
-            lo, hi = np.quantile(errors, [tail, 1.0 - tail])
+            spread = float(np.std(errors, ddof=1)) if errors.size > 1 else math.nan
             out[key].errors += errors.tolist()
-            out[key].needed += [float(hi - lo)] * errors.size
+            out[key].needed += [2.0 * float(ndtri(1.0 - tail)) * spread] * errors.size
+    return out
+
+
+#: what each figure's truth is (the record states it beside the figure)
+TRUTHS = {
+    "A": QT_TR_NOOP("max(μ + 2σ) − min(μ − 2σ) over both directions"),
+    "A_up": QT_TR_NOOP("max(μ↑ + 2σ↑) − min(μ↑ − 2σ↑)"),
+    "A_down": QT_TR_NOOP("max(μ↓ + 2σ↓) − min(μ↓ − 2σ↓)"),
+    "E": QT_TR_NOOP("range of μ↑ and μ↓ together"),
+    "E_up": QT_TR_NOOP("range of μ↑"),
+    "E_down": QT_TR_NOOP("range of μ↓"),
+    "M": QT_TR_NOOP("range of (μ↑ + μ↓)/2"),
+    "R": QT_TR_NOOP("max of max(2σ↑ + 2σ↓ + |μ↑ − μ↓|, 4σ↑, 4σ↓)"),
+    "R_up": QT_TR_NOOP("4σ↑ at the worst target"),
+    "R_down": QT_TR_NOOP("4σ↓ at the worst target"),
+    "B": QT_TR_NOOP("max |μ↑ − μ↓|"),
+    "B_mean": QT_TR_NOOP("mean of μ↑ − μ↓"),
+    "P": QT_TR_NOOP("VDI/DGQ 3441 P of μ, σ"),
+    "Ps_max": QT_TR_NOOP("max 3(σ↑ + σ↓)"),
+    "Pa": QT_TR_NOOP("range of (μ↑ + μ↓)/2"),
+    "U_max": QT_TR_NOOP("max |μ↑ − μ↓|"),
+}
+
+COVERAGE_STUDY = QT_TR_NOOP("coverage study")
+
+
+def tests_per_case(trials: int) -> int:
+    """Tests of each study case for ``anglebench validate --trials N``: N/10 (20 at the
+    default 200), every one through the whole analysis."""
+    return max(10, trials // 10)
+
+
+def figure_coverage_cases(trials: int, case_type) -> list:
+    """One case per figure (``case_type``: models.validation.cases.ValidationCase): its
+    interval's coverage of its truth over every study case."""
+    study = coverage_study(VALIDATE_CASES, tests_per_case(trials))
+    out = []
+    for key in FIGURES:
+        row = study[key]
+        allowed = int(binom.ppf(1.0 - ALPHA, row.tests, 1.0 - row.probability))
+        out.append(case_type(
+            POSITIONING.title,
+            message(QT_TR_NOOP("interval of {figure} covers its truth ({truth}; μ, σ the true "
+                               "mean and standard deviation at each target)"),
+                    figure=key, truth=message(TRUTHS[key])),
+            COVERAGE_STUDY,
+            message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed), width ≤ "
+                               "{limit} × a correct interval's"),
+                    p=f"{100 * row.probability:.2f}", allowed=allowed, tests=row.tests,
+                    limit=f"{WIDTH_LIMIT:g}"),
+            message(QT_TR_NOOP("{coverage} % ({missed} missed), width {ratio} ×"),
+                    coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
+                    ratio=f"{row.width_ratio:.2f}"),
+            row.coverage_passes and row.width_ratio <= WIDTH_LIMIT))
     return out
