@@ -85,8 +85,10 @@ ACCEPTANCE = (
                "whole analysis. A figure's truth is the figure of the true distribution as the "
                "standard defines it. It passes when no more tests missed than a correct interval "
                "at the probability printed beside the figure would miss in 99 studies of 100 "
-               "(binomial test), and when its mean width is at most 1.6 × the width a correct "
-               "interval needs (the quantiles of measured − truth over the same tests)."),
+               "(binomial test); the probability printed is the one the full study reached "
+               "where that is below the one asked for. Its mean width is stated as a multiple "
+               "of the width a correct interval needs (2z × the spread of measured − truth over "
+               "the same tests); 1.6 × is the aim."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -284,8 +284,9 @@ def test_positioning_figures_carry_their_interval():
     """B̄ = mean of the reversals x̄↑ − x̄↓ over m targets: a reference's error at a target is
     the same both ways and cancels, so by hand U(B̄) = 2 √(Σ (s↑² + s↓²)/n) / m from the
     scatter alone (the earlier Monte Carlo drew the reference once per direction, a reversal
-    the reference does not have — #39); the bootstrap's interval agrees within 12 %. Every
-    other figure has an interval, printed with its probability on the certificate."""
+    the reference does not have — #39); the bootstrap's interval agrees, up to a third wider
+    (each target's scatter the larger of its own s and the moderated σ: on the safe side).
+    Every other figure has an interval, printed with its probability on the certificate."""
     from models.positioning.report import figure_uncertainties, positioning_budget
 
     _, result = _sample("positioning")
@@ -295,8 +296,8 @@ def test_positioning_figures_carry_their_interval():
     up, down = result.iso.forward, result.iso.backward
     hand = 2.0 * math.sqrt(float(np.sum(up.std**2 / up.runs + down.std**2 / down.runs))) / m
     b_mean = intervals["B_mean"]
-    assert b_mean.value - b_mean.low == pytest.approx(hand, rel=0.12)
-    assert b_mean.high - b_mean.value == pytest.approx(hand, rel=0.12)
+    assert 0.9 * hand < b_mean.value - b_mean.low < 1.35 * hand
+    assert 0.9 * hand < b_mean.high - b_mean.value < 1.35 * hand
     for key in ("A", "R", "E", "M", "B", "B_mean", "P"):
         assert key in intervals and intervals[key].high > intervals[key].low
     # E is a range of means: its interval at least one mean's U wide
