@@ -337,7 +337,8 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "directions. The truth it covers is the figure of the axis's true mean deviations and "
         "true standard deviations (R = 4σ at the worst target). The interval may lie below "
         "the measured value. Its probability is the one a simulation study reached "
-        "(anglebench validate), where that is below {p} %."), trials=INTERVAL_TRIALS,
+        "(anglebench validate), on average over the axes studied, where that is below {p} %; "
+        "a spike hidden in scatter twice its size is covered less often."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
     if not intervals:
         statements.append(QT_TR_NOOP(
