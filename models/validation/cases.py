@@ -31,13 +31,13 @@ from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcs
 from models.polygon.report import polygon_budget
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table
+from models.positioning.figure_coverage import figure_coverage_cases
 from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
 from models.validation.crosscal_rig import CrossCalRig
-from models.validation.figure_coverage import figure_coverage_cases
 from models.validation.fringe_rig import FringeHead, equal_steps
 from models.validation.polygon_rig import PolygonRig
 from models.validation.positioning_rig import AxisRig

@@ -1,5 +1,5 @@
 """Coverage of the positioning figures' intervals (ISO 230-2 / GB/T 17421.2, VDI/DGQ 3441),
-#39: every study case of models/validation/figure_coverage.py (4 shapes × 12 and 72 targets
+#39: every study case of models/positioning/figure_coverage.py (4 shapes × 12 and 72 targets
 × repeatability 0.1, 0.5 and 2 × the signal × constant or varying along the axis; 5 runs
 each way), each test through the whole analysis. A figure passes when its misses are within
 the binomial allowance at the probability printed beside it, and its mean width is at most
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import time
 
-from models.validation.figure_coverage import STUDY_CASES, WIDTH_LIMIT, coverage_study
+from models.positioning.figure_coverage import STUDY_CASES, WIDTH_LIMIT, coverage_study
 
 TESTS_PER_CASE = 40
 

@@ -126,7 +126,7 @@ def test_results_sheet_has_the_intervals_as_numbers():
 def test_coverage_study_smoke():
     """A few tests of two axes through the whole analysis: every figure has an interval and
     most of them hold the truth (the full study: the benchmark)."""
-    from models.validation.figure_coverage import FIGURES, coverage_study
+    from models.positioning.figure_coverage import FIGURES, coverage_study
 
     study = coverage_study([AxisCase("sample", 12, 0.5, seed=1),
                             AxisCase("spike", 12, 2.0, varying=True, seed=2)], tests=4)
