@@ -689,7 +689,7 @@ def _render(document: CertificateDocument) -> FPDF:
         pdf.plot(figure)
     pdf.heading(label(document, document.statistics.title))
     if len(document.statistics.header) == 5:  # figures with their coverage interval
-        pdf.data_table(document.statistics, (50, 28, 44, 18, 34),
+        pdf.data_table(document.statistics, (46, 26, 42, 24, 36),
                        ("LEFT", "RIGHT", "RIGHT", "RIGHT", "LEFT"))
     else:
         pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))

@@ -39,7 +39,7 @@ VARIANTS = {
 SYMBOLS = {"sin", "cos", "rad", "zero", "ISO", "IEC", "GUM", "JCGM", "ILAC", "VIM", "CSV",
            "XLSX", "VDI", "DGQ", "Welch", "Satterthwaite", "AngleBench", "anglebench",
            "validate", "CNAS", "atan", "dev", "asin", "ADC", "LSB", "git",
-           "sha"}  # git: the commit of the software
+           "sha", "Beran", "Louis"}  # git: the commit of the software; cited authors
 WORD = re.compile(r"(?<![\w.])[A-Za-z]{3,}(?![\w])")  # "down" of A_down is a symbol's
 FIGURE = re.compile(r"[+-]?\d+\.\d+(?:\"|°| mV| V| %| rad)")
 
