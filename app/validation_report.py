@@ -84,6 +84,20 @@ ACCEPTANCE = (
                "to 2 times the half range at 12 to 72 points. Its width against what a correct "
                "interval needs (the half-width about the value that covers p of the runs) is "
                "reported beside it; the target is 1.6 times at the most."),
+    QT_TR_NOOP("Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, "
+               "B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes "
+               "(models/validation/axis_figures_rig.py) with a known systematic deviation curve "
+               "(smooth pitch error, every harmonic the targets resolve, one spike, the bundled "
+               "sample's curve), a known reversal and a known repeatability (constant, or ±50 % "
+               "along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and "
+               "72 targets, 5 runs each way by the standard test cycle, each test through the "
+               "whole analysis. A figure's truth is the figure of the true distribution as the "
+               "standard defines it. It passes when no more tests missed than a correct interval "
+               "at the probability printed beside the figure would miss in 99 studies of 100 "
+               "(binomial test); the probability printed is the one the full study reached "
+               "where that is below the one asked for. Its mean width is stated as a multiple "
+               "of the width a correct interval needs (2z × the spread of measured − truth over "
+               "the same tests); 1.6 × is the aim."),
     QT_TR_NOOP("Software cases: exact (every name and figure found in the PDF's text; the "
                "register finds what it issued and reports what was changed; a file reads to "
                "the same numbers as numpy.loadtxt)."),

@@ -740,7 +740,11 @@ def _render(document: CertificateDocument) -> FPDF:
     for figure in document.plots:
         pdf.plot(figure)
     pdf.heading(label(document, document.statistics.title))
-    pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
+    if len(document.statistics.header) == 5:  # figures with their coverage interval
+        pdf.data_table(document.statistics, (46, 26, 42, 24, 36),
+                       ("LEFT", "RIGHT", "RIGHT", "RIGHT", "LEFT"))
+    else:
+        pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
     pdf.heading(label(document, "Measurement uncertainty"))
     big_u = document.expanded_uncertainty
     budget_ = document.budget

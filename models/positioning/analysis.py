@@ -24,11 +24,18 @@ from models.positioning.model import (
     figure_text,
     infer_directions,
 )
-from models.positioning.report import positioning_budget, positioning_certificate
+from models.positioning.report import (
+    figure_uncertainties,
+    intervals_determined,
+    positioning_budget,
+    positioning_certificate,
+)
 from models.readings.entry_plan import positioning_plan, targets_from_text
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+from models.uncertainty.iso230 import once_note
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
@@ -367,6 +374,11 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
         missing = result.positions[stats.runs == 0]
         if missing.size:
             warnings.append(message(template, targets=", ".join(f"{t:g}" for t in missing)))
+    once = once_note(result.iso, result.target_symbol.strip())
+    if once is not None and (result.iso.forward is None or np.any(result.iso.forward.runs > 1)
+                             or result.iso.backward is None
+                             or np.any(result.iso.backward.runs > 1)):
+        warnings.append(once)
     short = {k: n for k, n in result.least_runs.items() if n < MIN_RUNS}
     if short:
         words = {"up": QT_TR_NOOP("forward {runs}"), "down": QT_TR_NOOP("backward {runs}")}
@@ -407,8 +419,31 @@ def _array(values: np.ndarray | None) -> list[float | None] | None:
     return [_finite(float(v)) for v in values]
 
 
+VDI_KEYS = ("P", "Ps_max", "Pa", "U_max")
+
+#: why a figure has no interval (JSON ``figure_intervals_reason``)
+NO_INTERVALS = QT_TR_NOOP("a target was approached fewer than twice in a direction: its "
+                          "standard deviation is unknown, so no figure has a coverage interval")
+
+
+def _figure_objects(keys, values: Mapping[str, Any], intervals) -> dict[str, Any]:
+    """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
+    readings do not determine it."""
+    out = {}
+    for key in keys:
+        value = values.get(key)
+        value = None if value is None or not math.isfinite(value) else float(value)
+        interval = intervals.get(key) if value is not None else None
+        out[key] = {"value": value,
+                    "interval_low": None if interval is None else interval.low,
+                    "interval_high": None if interval is None else interval.high,
+                    "coverage_probability": None if interval is None else interval.probability}
+    return out
+
+
 def to_json(result: PositioningResult) -> dict[str, Any]:
     iso = result.iso
+    intervals = figure_uncertainties(result)
     per_target: dict[str, Any] = {"target": result.positions.tolist()}
     for name, _, stats in result.directions_present():
         per_target[f"mean_{name}"] = _array(stats.mean)
@@ -431,6 +466,11 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
         "minimum_runs_met": result.minimum_runs_met,
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
+        "iso230_2_figures": _figure_objects(ISO_KEYS, iso.figures, intervals),
+        "vdi3441_figures": _figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
+        "coverage_probability": DEFAULT_COVERAGE_PROBABILITY,
+        "figure_intervals_reason": None if intervals_determined(result) else
+        message(NO_INTERVALS),
     }
 
 
@@ -458,6 +498,20 @@ def summary(result: PositioningResult) -> str:
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
     out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym))
     out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym))
+    intervals = figure_uncertainties(result)
+    if intervals:
+        shown = [k for k in (*keys, *VDI_KEYS) if k in intervals]
+        parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %): "),
+                               p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
+        for i, key in enumerate(shown):
+            iv = intervals[key]
+            parts += [", " if i else "", f"{key} {iv.low:.3f} … {iv.high:.3f}{sym}"]
+            if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
+                parts.append(f" ({100 * iv.probability:.1f} %)")
+        out.append(joined(parts))
+    elif result.iso.forward is not None or result.iso.backward is not None:
+        out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
+                           reason=message(NO_INTERVALS)))
     out.append(message(QT_TR_NOOP("Standard applied: {standard}. Compensation = −mean deviation "
                                   "(Export compensation table… below the set-up)."),
                        standard=message(STANDARDS[result.standard])))

@@ -33,6 +33,13 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
 from models.positioning import KEY, TITLE
+from models.positioning.figure_intervals import (
+    INTERVAL_TRIALS,
+    FigureInterval,
+    axis_figures,
+    figure_intervals,
+    readings_seed,
+)
 from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION_TEXT,
@@ -42,10 +49,10 @@ from models.positioning.model import (
 )
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import asymmetric_text, decide_conformity, uncertainty_decimals
+from models.uncertainty.conformity import decide_conformity, uncertainty_decimals
 
-__all__ = ["FIGURE_NAMES", "positioning_budget", "positioning_certificate",
-           "repeated_readings_components"]
+__all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
+           "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
     "The axis is sent to each target position in turn, in runs that approach every target "
@@ -166,107 +173,67 @@ def not_stated(result: PositioningResult) -> list[str]:
     return [name for key, name, _, _ in _STATED if not inputs.get(key)]
 
 
-FIGURE_TRIALS = 2000
-FIGURE_SEED = 20261127
-
-
-def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget,
-                         trials: int = FIGURE_TRIALS, seed: int = FIGURE_SEED
-                         ) -> dict[str, tuple[float, float]]:
-    """(lower, upper) half-widths of the coverage interval of every ISO 230-2 and VDI/DGQ
-    3441 figure, from the same inputs as the per-target U (JCGM 101, seeded).
-
-    Each trial repeats the test: every reading is drawn about its target's mean with its
-    target's s (so s, and the figures built on it, scatter as a repeat would), and every
-    Type B input of the budget is drawn once per target and direction (the reference's error
-    at a target is the same in each of its runs). The figures are evaluated from the drawn
-    readings as from the measured ones; the interval is the central one of the stated
-    coverage probability about the median of the trials.
-    """
-    points = [(name, stats.mean, stats.std, stats.runs)
-              for name, _, stats in result.directions_present()]
+def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> np.ndarray:
+    """The Type B inputs' combined standard uncertainty at each target: the reference's error
+    at a position is one value for both approach directions and every run (the quadratic
+    mean over the directions where the budget differs)."""
     m = result.positions.size
-    b_components = [(c, u) for c, u in zip(budget.components, budget.contributions(),
-                                            strict=True) if c.evaluation == "B"]
-    rng = np.random.default_rng(seed)
-    systematic = np.zeros((trials, len(points) * m))
-    for comp, u in b_components:
-        if comp.distribution == "rectangular":
-            systematic += rng.uniform(-math.sqrt(3.0), math.sqrt(3.0), systematic.shape) * u
-        else:
-            systematic += rng.standard_normal(systematic.shape) * u
-    stats = {}
-    for k, (name, mean, s, n) in enumerate(points):
-        means, stds = np.empty((trials, m)), np.empty((trials, m))
-        for i in range(m):
-            z = rng.standard_normal((trials, int(n[i])))
-            means[:, i] = mean[i] + s[i] * z.mean(axis=1) + systematic[:, k * m + i]
-            stds[:, i] = s[i] * z.std(axis=1, ddof=1)
-        stats[name] = (means, stds)
-    drawn = axis_figures(stats)
-    keys = {k for k, v in result.iso.figures.items() if math.isfinite(v)} | {
-        k for k, v in result.vdi.as_dict().items() if v is not None}
-    drawn = {k: v for k, v in drawn.items() if k in keys}
-    tail = 0.5 * (1.0 - budget.probability)
-    out = {}
-    for key, v in drawn.items():
-        lo, mid, hi = np.quantile(v, [tail, 0.5, 1.0 - tail])
-        out[key] = (float(mid - lo), float(hi - mid))
-    return out
+    rows = [u for c, u in zip(budget.components, budget.contributions(), strict=True)
+            if c.evaluation == "B"]
+    if not rows:
+        return np.zeros(m)
+    per_point = np.sum(np.asarray(rows) ** 2, axis=0).reshape(-1, m)
+    return np.sqrt(np.mean(per_point, axis=0))
 
 
-def _range(a: np.ndarray) -> np.ndarray:
-    return np.max(a, axis=1) - np.min(a, axis=1)
+def intervals_determined(result: PositioningResult) -> bool:
+    """Whether every target was approached at least twice in every direction measured (the
+    intervals need every target's s)."""
+    return all(np.all(stats.runs >= 2) and np.all(np.isfinite(stats.std))
+               for _, _, stats in result.directions_present())
 
 
-def axis_figures(stats: dict[str, tuple[np.ndarray, np.ndarray]]) -> dict[str, np.ndarray]:
-    """The ISO 230-2 and VDI/DGQ 3441 figures of many tests at once: ``stats`` maps a
-    direction ("up", "down") to (mean, s), arrays (tests, targets) with every target
-    approached at least twice. The formulas of models.uncertainty.iso230 and
-    models.positioning.model, row by row (a test checks they agree)."""
-    out: dict[str, np.ndarray] = {}
-    for name, (mean, s) in stats.items():
-        out[f"E_{name}"] = _range(mean)
-        out[f"R_{name}"] = np.max(4.0 * s, axis=1)
-        out[f"A_{name}"] = np.max(mean + 2 * s, axis=1) - np.min(mean - 2 * s, axis=1)
-    if "up" in stats and "down" in stats:
-        (up, s_up), (down, s_down) = stats["up"], stats["down"]
-        reversal = up - down
-        middle = 0.5 * (up + down)
-        out["E"] = _range(np.concatenate([up, down], axis=1))
-        out["M"] = _range(middle)
-        out["B"] = np.max(np.abs(reversal), axis=1)
-        out["B_mean"] = np.mean(reversal, axis=1)
-        out["R"] = np.max(np.maximum(np.maximum(2 * s_up + 2 * s_down + np.abs(reversal),
-                                                4 * s_up), 4 * s_down), axis=1)
-        out["A"] = (np.max(np.concatenate([up + 2 * s_up, down + 2 * s_down], axis=1), axis=1)
-                    - np.min(np.concatenate([up - 2 * s_up, down - 2 * s_down], axis=1), axis=1))
-        scatter = 6.0 * 0.5 * (s_up + s_down)
-        half = 0.5 * (np.abs(reversal) + scatter)
-        out["Pa"] = _range(middle)
-        out["P"] = np.max(middle + half, axis=1) - np.min(middle - half, axis=1)
-        out["Ps_max"] = np.max(scatter, axis=1)
-        out["U_max"] = np.max(np.abs(reversal), axis=1)
-    else:
-        mean, s = next(iter(stats.values()))
-        out["Pa"] = _range(mean)
-        out["Ps_max"] = np.max(6.0 * s, axis=1)
-    return out
+def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | None = None
+                         ) -> dict[str, FigureInterval]:
+    """The coverage interval of every ISO 230-2 and VDI/DGQ 3441 figure
+    (models.positioning.figure_intervals), seeded from the readings; ``budget`` gives the
+    Type B inputs (the reference standards, the stated inputs) and the probability; without
+    it, the result's own stated inputs at 95.45 %. Empty when some target was approached
+    fewer than twice in a direction."""
+    if not intervals_determined(result):
+        return {}
+    if budget is None:
+        budget = positioning_budget(result, CertificateMetadata())
+    u_b = _type_b_per_target(result, budget)
+    key = (budget.probability, u_b.tobytes())
+    cache = result.__dict__.setdefault("_figure_intervals", {})
+    if key not in cache:
+        present = result.directions_present()
+        figures = {k: v for k, v in result.iso.figures.items() if math.isfinite(v)}
+        figures.update({k: v for k, v in result.vdi.as_dict().items()
+                        if v is not None and math.isfinite(v)})
+        cache[key] = figure_intervals(
+            {name: stats.mean for name, _, stats in present},
+            {name: stats.std for name, _, stats in present},
+            {name: stats.runs for name, _, stats in present},
+            budget.probability, u_b,
+            readings_seed(result.targets, result.directions, result.deviations),
+            figures=figures)
+    return cache[key]
 
 
-def _with_u(text: str, value, interval: tuple[float, float] | None, sym: str) -> str:
-    """A figure and its U: "12.345″, U = 0.81″", or "−0.62″/+0.81″" when asymmetric."""
-    if interval is None or value is None or not math.isfinite(value):
-        return text
-    lower, upper = interval
-    d = uncertainty_decimals(max(lower, upper))  # two significant digits at most (GUM 7.2.6)
-    return message(QT_TR_NOOP("{figure}, U = {u}"), figure=f"{value:.{d}f}{sym}",
-                   u=asymmetric_text(lower, upper, sym, d))
+def _interval_cells(interval: FigureInterval | None, sym: str) -> tuple[str, str]:
+    """The interval "10.2″ … 12.0″" and its probability "95.45 %" (or "—" when none)."""
+    if interval is None:
+        return "—", ""
+    d = min(max(2, uncertainty_decimals(max(interval.high - interval.low, 1e-12) / 4.0)), 4)
+    return (f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
+            f"{100.0 * interval.probability:.2f} %")
 
 
 def _figure_rows(result: PositioningResult,
-                 uncertainty: dict[str, tuple[float, float]] | None = None
-                 ) -> list[tuple[str, str, str]]:
+                 uncertainty: dict[str, FigureInterval] | None = None
+                 ) -> list[tuple[str, ...]]:
     uncertainty = uncertainty or {}
     sym, f = result.symbol, result.iso.figures
     gb = result.standard == "gb17421.2"
@@ -278,11 +245,11 @@ def _figure_rows(result: PositioningResult,
             continue
         name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
                                                      name=message(english))
-        iso_rows.append((name, _with_u(figure_text(f.get(key), sym), f.get(key),
-                                       uncertainty.get(key), sym),
+        iso_rows.append((name, figure_text(f.get(key), sym),
+                         *_interval_cells(uncertainty.get(key), sym),
                          "GB/T 17421.2" if gb else "ISO 230-2"))
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
-                 _with_u(figure_text(v, sym), v, uncertainty.get(k), sym), "VDI/DGQ 3441")
+                 figure_text(v, sym), *_interval_cells(uncertainty.get(k), sym), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
@@ -339,10 +306,14 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=QT_TR_NOOP("mean positional deviation"),
                                    point_names=names, not_stated=not_stated(result))
-    stat_rows = _figure_rows(result, figure_uncertainties(result, budget))
-    stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)
+    intervals = figure_uncertainties(result, budget)
+    stat_rows = _figure_rows(result, intervals)
+    stat_rows += [(name, value, "", "", note) for name, value, note in
+                  decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)]
     statistics = Table(QT_TR_NOOP("Figures of the axis"),
-                       (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), QT_TR_NOOP("Standard")),
+                       (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),
+                        QT_TR_NOOP("Coverage interval"), QT_TR_NOOP("Probability"),
+                        QT_TR_NOOP("Standard")),
                        stat_rows)
     plots = [deviation_figure(result)]
     reversal = reversal_figure(result)
@@ -361,12 +332,26 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                            "test.")),
     ]
     statements.append(message(QT_TR_NOOP(
-        "U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM "
-        "101, seed {seed}) from the inputs of the per-target U — each reading drawn about its "
-        "target's mean with its s, each Type B input once per target and direction — and the "
-        "figures evaluated as above; the central interval of {p} % about the median, printed "
-        "−/+ where it is not symmetric."), trials=FIGURE_TRIALS, seed=FIGURE_SEED,
+        "Coverage interval of each figure of the axis: a figure is a largest value or a range "
+        "over the targets, biased high by the scatter; its interval is a parametric bootstrap "
+        "of the figure's error (basic bootstrap interval, calibrated by the iterated bootstrap, "
+        "Beran 1987) from a model of the axis whose spread over the targets is estimated "
+        "without the scatter's (constrained empirical Bayes, Louis 1984), {trials} trials "
+        "seeded from the readings; each Type B input drawn once per target, the same in both "
+        "directions. The truth it covers is the figure of the axis's true mean deviations and "
+        "true standard deviations (R = 4σ at the worst target). The interval may lie below "
+        "the measured value. Its probability is the one a simulation study reached "
+        "(anglebench validate), on average over the axes studied, where that is below {p} %; "
+        "a spike hidden in scatter twice its size is covered less often."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
+    if not intervals:
+        statements.append(QT_TR_NOOP(
+            "No coverage interval is given for the figures: a target was approached fewer than "
+            "twice in a direction, so its standard deviation is unknown."))
+    statements.append(QT_TR_NOOP(
+        "A specification of A, R, E, B or P conforms when the upper end of the figure's "
+        "coverage interval is within it, does not conform when the lower end exceeds it, and "
+        "is not decided in between (ISO 14253-1)."))
     statements.append(QT_TR_NOOP(
         "The reference standard's U enters each mean deviation with sensitivity 1: a rotary "
         "calibrator's or an interferometer's certificate states it for a position measured from "

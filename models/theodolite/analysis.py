@@ -19,6 +19,7 @@ from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
 from models.theodolite.report import theodolite_certificate, theodolite_json_budgets
 from models.uncertainty.conformity import uncertainty_decimals
+from models.uncertainty.iso230 import once_note
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -238,6 +239,9 @@ def summary(result: TheodoliteResult) -> str:
     if result.iso230 is not None:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
+        note = once_note(result.iso230, "°")
+        if note is not None:
+            out.append(note)
     return lines(out)
 
 

@@ -6,6 +6,11 @@ reversal value B_i = x̄↑ − x̄↓, repeatability R↑ = 4 s↑,
 R_i = max(2s↑ + 2s↓ + |B_i|, R↑, R↓), bidirectional mean M_i = (x̄↑ + x̄↓)/2.
 Axis figures: E↑/E↓/E (systematic deviation), M (mean bidirectional),
 R, B, B̄ (mean reversal, ISO 230-2:2014) and A (accuracy, x̄ ± 2s envelope). All values in the input's unit.
+
+A and R are taken over every target (ISO 230-2, 3.22–3.25): where a target has a mean
+deviation but was approached only once in a direction, its s is unknown and A, R of that
+direction (and the bidirectional A, R) are not evaluated — never an envelope of the other
+targets alone, which could fall below E (:attr:`Iso230Result.approached_once` names them).
 """
 
 from __future__ import annotations
@@ -14,7 +19,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["DirectionStats", "Iso230Result", "iso230_evaluate"]
+from models.messages import QT_TR_NOOP, message
+
+__all__ = ["DirectionStats", "Iso230Result", "iso230_evaluate", "once_note"]
 
 
 @dataclass
@@ -39,6 +46,15 @@ class Iso230Result:
     reversal: np.ndarray | None = None
     bidirectional_repeatability: np.ndarray | None = None
     bidirectional_mean: np.ndarray | None = None
+    #: direction ("up"/"down") → the targets approached exactly once that way (their s is
+    #: unknown, so A and R are not evaluated)
+    approached_once: dict[str, np.ndarray] = field(default_factory=dict)
+
+    @staticmethod
+    def complete(stats: DirectionStats) -> bool:
+        """Whether every target with a mean has its s (A and R are determined)."""
+        has_mean = stats.runs > 0
+        return bool(np.any(has_mean)) and bool(np.all(np.isfinite(stats.std[has_mean])))
 
 
 def _direction_stats(positions: np.ndarray, key: np.ndarray, dev: np.ndarray) -> DirectionStats:
@@ -85,7 +101,10 @@ def iso230_evaluate(
         if stats is None:
             continue
         figures[f"E_{name}"] = float(np.nanmax(stats.mean) - np.nanmin(stats.mean))
-        if np.any(np.isfinite(stats.std)):
+        once = stats.runs == 1
+        if np.any(once):
+            result.approached_once[name] = positions[once]
+        if Iso230Result.complete(stats):
             figures[f"R_{name}"] = float(np.nanmax(stats.repeatability))
             figures[f"A_{name}"] = float(
                 np.nanmax(stats.mean + 2 * stats.std) - np.nanmin(stats.mean - 2 * stats.std)
@@ -109,9 +128,27 @@ def iso230_evaluate(
                                     fwd.repeatability), bwd.repeatability)
         if np.any(np.isfinite(rbi)):
             result.bidirectional_repeatability = rbi
+        if np.any(np.isfinite(rbi)) and Iso230Result.complete(fwd) and \
+                Iso230Result.complete(bwd):
             figures["R"] = float(np.nanmax(rbi))
             upper = np.concatenate([fwd.mean + 2 * fwd.std, bwd.mean + 2 * bwd.std])
             lower = np.concatenate([fwd.mean - 2 * fwd.std, bwd.mean - 2 * bwd.std])
             figures["A"] = float(np.nanmax(upper) - np.nanmin(lower))
     result.figures = figures
     return result
+
+
+def once_note(result: Iso230Result, unit: str = ""):
+    """Why A and R are not evaluated, naming the targets approached once; ``None`` when
+    every target has its s."""
+    parts = []
+    for name, where in result.approached_once.items():
+        targets = ", ".join(f"{t:g}{unit}" for t in where)
+        parts.append(message(QT_TR_NOOP("forward at {targets}") if name == "up" else
+                             QT_TR_NOOP("backward at {targets}"), targets=targets))
+    if not parts:
+        return None
+    return message(QT_TR_NOOP("A and R not evaluated (ISO 230-2 takes them over every target): "
+                              "approached only once, so no standard deviation, {where}"),
+                   where=parts[0] if len(parts) == 1 else
+                   message("{a}; {b}", a=parts[0], b=parts[1]))

@@ -31,6 +31,7 @@ from models.polygon.model import WORST_CASE_COEFFICIENT, pyramidal_readings_arcs
 from models.polygon.report import polygon_budget
 from models.positioning.analysis import POSITIONING
 from models.positioning.compensation import compensation_table
+from models.positioning.figure_coverage import figure_coverage_cases
 from models.positioning.report import positioning_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
 from models.theodolite.analysis import THEODOLITE
@@ -391,7 +392,7 @@ def positioning_cases(trials: int) -> list[ValidationCase]:
                           float(np.nanmax(np.abs(np.concatenate(
                               [left.iso.forward.mean, left.iso.backward.mean]))))))
     cases.append(_agreement_case(w, positioning_budget_trials, trials, 4))
-    return cases + positioning_hand_cases()
+    return cases + positioning_hand_cases() + figure_coverage_cases(trials, ValidationCase)
 
 
 #: ISO 230-2 by hand: two targets, three runs each way, s = 1" everywhere. Forward means 2"

@@ -3453,12 +3453,28 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>轴线定位指标</translation>
     </message>
     <message>
+        <source>Coverage interval</source>
+        <translation>包含区间</translation>
+    </message>
+    <message>
+        <source>Probability</source>
+        <translation>包含概率</translation>
+    </message>
+    <message>
         <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
         <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
     </message>
     <message>
         <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range); a specification of A, R or P is read against the figures above.</source>
         <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
+    </message>
+    <message>
+        <source>No coverage interval is given for the figures: a target was approached fewer than twice in a direction, so its standard deviation is unknown.</source>
+        <translation>各项指标未给出包含区间：有目标位置在某一方向趋近少于两次，其标准偏差未知。</translation>
+    </message>
+    <message>
+        <source>A specification of A, R, E, B or P conforms when the upper end of the figure&apos;s coverage interval is within it, does not conform when the lower end exceeds it, and is not decided in between (ISO 14253-1).</source>
+        <translation>对 A、R、E、B 或 P 的规范要求：指标包含区间的上限在规范之内为合格，下限超出规范为不合格，介于两者之间不作判定（ISO 14253-1）。</translation>
     </message>
     <message>
         <source>ISO 230-2 asks for at least {n} runs in each direction at every target; this test has fewer ({runs}). The figures are evaluated and flagged.</source>
@@ -3964,6 +3980,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
     </message>
     <message>
+        <source>a target was approached fewer than twice in a direction: its standard deviation is unknown, so no figure has a coverage interval</source>
+        <extracomment>why a figure has no interval (JSON ``figure_intervals_reason``)</extracomment>
+        <translation>有目标位置在某一方向趋近少于两次：其标准偏差未知，因此各项指标均无包含区间</translation>
+    </message>
+    <message>
         <source>forward</source>
         <translation>正向</translation>
     </message>
@@ -3986,6 +4007,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>   *** fewer than 5 runs: flagged ***</source>
         <translation>   *** 少于 5 次测量：已标注 ***</translation>
+    </message>
+    <message>
+        <source>Coverage intervals ({p} %): </source>
+        <translation>包含区间（{p} %）：</translation>
+    </message>
+    <message>
+        <source>No coverage intervals: {reason}</source>
+        <translation>无包含区间：{reason}</translation>
     </message>
     <message>
         <source>Standard applied: {standard}. Compensation = −mean deviation (Export compensation table… below the set-up).</source>
@@ -5014,6 +5043,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points. Its width against what a correct interval needs (the half-width about the value that covers p of the runs) is reported beside it; the target is 1.6 times at the most.</source>
         <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点。其宽度与正确区间所需宽度（以该值为中心、包含 p 次仿真的半宽）之比列于旁边；目标为不超过 1.6 倍。</translation>
+        <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the width a correct interval needs (2z × the spread of measured − truth over the same tests); 1.6 × is the aim.</source>
+        <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以正确区间所需宽度的倍数给出（同一批检验中 测得值 − 真值 分散性的 2z 倍）；目标为 1.6 倍。</translation>
     </message>
     <message>
         <source>pass</source>
@@ -6440,16 +6471,12 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各目标位置 u = {r}（给定值）</translation>
     </message>
     <message>
-        <source>{figure}, U = {u}</source>
-        <translation>{figure}，U = {u}</translation>
-    </message>
-    <message>
         <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
         <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
     </message>
     <message>
-        <source>U of each figure of the axis: the test repeated {trials} times by Monte Carlo (JCGM 101, seed {seed}) from the inputs of the per-target U — each reading drawn about its target&apos;s mean with its s, each Type B input once per target and direction — and the figures evaluated as above; the central interval of {p} % about the median, printed −/+ where it is not symmetric.</source>
-        <translation>轴线各项指标的 U：以蒙特卡洛法（JCGM 101，随机种子 {seed}）由各目标位置 U 的输入量将检测重复 {trials} 次——各读数按其目标位置的平均值和 s 抽样，各 B 类输入量按每个目标位置和方向抽样一次——并按上述方法计算各项指标；取中位数附近包含概率 {p} % 的中心区间，不对称时以 −/+ 给出。</translation>
+        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate), on average over the axes studied, where that is below {p} %; a spike hidden in scatter twice its size is covered less often.</source>
+        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate）在所研究的各种轴上平均达到的概率（当其低于 {p} % 时）；被两倍于其大小的分散性掩盖的尖峰被包含的次数较少。</translation>
     </message>
     <message>
         <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
@@ -8340,6 +8367,90 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>reference standard &apos;{name}&apos;: its uncertainty {u} is not smaller than the tolerance ±{t}: with it no conformity can be shown (is it the standard of another test?)</source>
         <translation>计量标准 &apos;{name}&apos;：其不确定度 {u} 不小于允差 ±{t}：用它无法证明符合性（是否为另一项检测的标准？）</translation>
+        <source>forward at {targets}</source>
+        <extracomment>direction (&quot;up&quot;/&quot;down&quot;) → the targets approached exactly once that way (their s is unknown, so A and R are not evaluated)</extracomment>
+        <translation>正向：{targets}</translation>
+    </message>
+    <message>
+        <source>backward at {targets}</source>
+        <translation>反向：{targets}</translation>
+    </message>
+    <message>
+        <source>A and R not evaluated (ISO 230-2 takes them over every target): approached only once, so no standard deviation, {where}</source>
+        <translation>A 和 R 未评定（ISO 230-2 在全部目标位置上求取）：以下目标位置仅趋近一次，无标准偏差，{where}</translation>
+    </message>
+    <message>
+        <source>max(μ + 2σ) − min(μ − 2σ) over both directions</source>
+        <extracomment>shapes × target counts × noise ratios × constant or varying repeatability the cases ``anglebench validate`` runs (12 targets: the study&apos;s quick half; the benchmark runs every case) the miss rate allowed by the binomial test (one-sided) the widest interval, as a multiple of what a correct one needs, that is still honest what each figure&apos;s truth is (the record states it beside the figure)</extracomment>
+        <translation>两个方向上 max(μ + 2σ) − min(μ − 2σ)</translation>
+    </message>
+    <message>
+        <source>max(μ↑ + 2σ↑) − min(μ↑ − 2σ↑)</source>
+        <translation>max(μ↑ + 2σ↑) − min(μ↑ − 2σ↑)</translation>
+    </message>
+    <message>
+        <source>max(μ↓ + 2σ↓) − min(μ↓ − 2σ↓)</source>
+        <translation>max(μ↓ + 2σ↓) − min(μ↓ − 2σ↓)</translation>
+    </message>
+    <message>
+        <source>range of μ↑ and μ↓ together</source>
+        <translation>μ↑ 与 μ↓ 合并的极差</translation>
+    </message>
+    <message>
+        <source>range of μ↑</source>
+        <translation>μ↑ 的极差</translation>
+    </message>
+    <message>
+        <source>range of μ↓</source>
+        <translation>μ↓ 的极差</translation>
+    </message>
+    <message>
+        <source>range of (μ↑ + μ↓)/2</source>
+        <translation>(μ↑ + μ↓)/2 的极差</translation>
+    </message>
+    <message>
+        <source>max of max(2σ↑ + 2σ↓ + |μ↑ − μ↓|, 4σ↑, 4σ↓)</source>
+        <translation>max(2σ↑ + 2σ↓ + |μ↑ − μ↓|, 4σ↑, 4σ↓) 的最大值</translation>
+    </message>
+    <message>
+        <source>4σ↑ at the worst target</source>
+        <translation>最差目标位置上的 4σ↑</translation>
+    </message>
+    <message>
+        <source>4σ↓ at the worst target</source>
+        <translation>最差目标位置上的 4σ↓</translation>
+    </message>
+    <message>
+        <source>max |μ↑ − μ↓|</source>
+        <translation>max |μ↑ − μ↓|</translation>
+    </message>
+    <message>
+        <source>mean of μ↑ − μ↓</source>
+        <translation>μ↑ − μ↓ 的平均值</translation>
+    </message>
+    <message>
+        <source>VDI/DGQ 3441 P of μ, σ</source>
+        <translation>由 μ、σ 计算的 VDI/DGQ 3441 P</translation>
+    </message>
+    <message>
+        <source>max 3(σ↑ + σ↓)</source>
+        <translation>max 3(σ↑ + σ↓)</translation>
+    </message>
+    <message>
+        <source>coverage study</source>
+        <translation>包含研究</translation>
+    </message>
+    <message>
+        <source>interval of {figure} covers its truth ({truth}; μ, σ the true mean and standard deviation at each target)</source>
+        <translation>{figure} 的区间包含其真值（{truth}；μ、σ 为各目标位置的真实平均值和标准偏差）</translation>
+    </message>
+    <message>
+        <source>≥ {p} % (at most {allowed} of {tests} missed)</source>
+        <translation>≥ {p} %（{tests} 次中至多 {allowed} 次未包含）</translation>
+    </message>
+    <message>
+        <source>{coverage} % ({missed} missed); width {ratio} × a correct interval&apos;s (aim ≤ {limit} ×)</source>
+        <translation>{coverage} %（{missed} 次未包含）；宽度为正确区间的 {ratio} 倍（目标 ≤ {limit} 倍）</translation>
     </message>
 </context>
 </TS>

@@ -13,7 +13,7 @@ from pypdf import PdfReader
 from app.main import main
 
 RIGS = ("rotation", "polygon_rig", "theodolite_rig", "fringe_rig", "positioning_rig",
-        "crosscal_rig")
+        "crosscal_rig", "axis_figures_rig")
 
 
 def test_rigs_import_nothing_from_the_code_they_check():

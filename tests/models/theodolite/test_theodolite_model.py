@@ -222,3 +222,29 @@ def test_repeated_passes_give_iso230_figures():
     assert figures["B"] == pytest.approx(1.0, abs=0.4)
     assert result.iso230.reversal.mean() == pytest.approx(1.0, abs=0.1)
     assert figures["R"] >= figures["B"]
+
+
+def test_one_theta_typed_twice_gives_no_accuracy_below_e():
+    """#41 item 6: one θ typed twice made the other θ single readings; A↑ was the ±2s band of
+    the one repeated θ (0.11″) below E↑ (2.56″). ISO 230-2 takes A and R over every target:
+    with s unknown at the others they are not evaluated, and the summary says why."""
+    from models.theodolite.analysis import THEODOLITE
+
+    setup = SetupParameters(3.0, 45.0, 2.0)
+    rng = np.random.default_rng(8)
+    theta = np.append(THETA, THETA[7])  # θ = THETA[7] typed twice
+    azimuth, elevation = simulate_readings(theta, setup, true_axis_error(theta),
+                                           noise_arcsec=0.05, rng=rng)
+    result = analyze_run(theta, azimuth, elevation)
+    figures = result.iso230.figures
+    assert figures["E_up"] == pytest.approx(np.ptp(true_axis_error(THETA)), abs=0.3)
+    assert "A_up" not in figures and "R_up" not in figures
+    assert result.iso230.approached_once["up"].size == THETA.size - 1
+    text = THEODOLITE.summary(result)
+    assert "A and R not evaluated" in text and "A_up" not in text
+    # every θ read twice: A↑ is back, and never below E↑
+    theta2 = np.tile(THETA, 2)
+    azimuth, elevation = simulate_readings(theta2, setup, true_axis_error(theta2),
+                                           noise_arcsec=0.05, rng=rng)
+    figures = analyze_run(theta2, azimuth, elevation).iso230.figures
+    assert figures["A_up"] >= figures["E_up"] > 0

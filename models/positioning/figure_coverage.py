@@ -1,0 +1,165 @@
+"""Coverage study of the positioning figures' intervals (ISO 230-2 / GB/T 17421.2, VDI/DGQ
+3441): simulated axes with a known truth (models.validation.axis_figures_rig, numpy only)
+measured by the standard test cycle, each test run through the workbench's analysis as a
+user's file would be, and the share of tests whose interval holds the truth counted.
+
+Acceptance: a figure's coverage passes when the number of tests that missed is not more
+than the binomial test allows at the probability stated beside the figure (one-sided, 1 %:
+a correct interval fails it once in a hundred studies). Its width is stated beside it as a
+multiple of the width a correct interval needs (2 z σ of measured − truth over the tests
+of each case); 1.6 × is the aim, stated, not a condition of passing.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.special import ndtri
+from scipy.stats import binom
+
+from models.messages import QT_TR_NOOP, message
+from models.positioning.analysis import POSITIONING
+from models.positioning.report import figure_uncertainties
+from models.readings.sheet import ReadingsSheet
+from models.validation.axis_figures_rig import AxisCase
+
+__all__ = ["FIGURES", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES", "FigureCoverage", "coverage_study",
+           "figure_coverage_cases", "study_case_tests"]
+
+FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
+           "B_mean", "P", "Ps_max", "Pa", "U_max")
+
+#: shapes × target counts × noise ratios × constant or varying repeatability
+STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k)
+                    for k, (shape, targets, ratio, varying) in enumerate(
+                        (s, m, r, v) for s in ("smooth", "rough", "spike", "sample")
+                        for m in (12, 72) for r in (0.1, 0.5, 2.0) for v in (False, True)))
+
+#: the cases ``anglebench validate`` runs (12 targets: the study's quick half; the benchmark
+#: runs every case)
+VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and c.noise_ratio != 0.5)
+
+#: the miss rate allowed by the binomial test (one-sided)
+ALPHA = 0.01
+#: the widest interval, as a multiple of what a correct one needs, that is still honest
+WIDTH_LIMIT = 1.6
+
+
+@dataclass
+class FigureCoverage:
+    """The hits, widths and errors of one figure over the tests of a study."""
+
+    figure: str
+    hits: int = 0
+    tests: int = 0
+    probability: float = 1.0
+    widths: list[float] = field(default_factory=list)
+    errors: list[float] = field(default_factory=list)  # measured − truth
+    needed: list[float] = field(default_factory=list)  # per case: a correct interval's width
+
+    @property
+    def coverage(self) -> float:
+        return self.hits / self.tests if self.tests else math.nan
+
+    @property
+    def coverage_passes(self) -> bool:
+        """Not more misses than a correct interval at the stated probability would give
+        with probability 1 − ALPHA."""
+        allowed = int(binom.ppf(1.0 - ALPHA, self.tests, 1.0 - self.probability))
+        return self.tests - self.hits <= allowed
+
+    @property
+    def width_ratio(self) -> float:
+        return float(np.mean(self.widths) / np.mean(self.needed)) if self.needed else math.nan
+
+
+def study_case_tests(case: AxisCase, tests: int, rng: np.random.Generator):
+    """(truth, intervals) of ``tests`` simulated tests of one axis, each through the analysis."""
+    truth = case.truth()
+    for _ in range(tests):
+        rows = [[f"{t:.6f}", str(run), sign, f"{x:.6f}", ""]
+                for t, run, sign, x in case.readings(rng)]
+        result = POSITIONING.analyze(ReadingsSheet(POSITIONING.columns, rows).parse(), {})
+        yield truth, figure_uncertainties(result)
+
+
+def coverage_study(cases=STUDY_CASES, tests: int = 100, seed: int = 39
+                   ) -> dict[str, FigureCoverage]:
+    """Every figure's coverage over ``tests`` tests of each case."""
+    rng = np.random.default_rng(seed)
+    out = {key: FigureCoverage(key) for key in FIGURES}
+    for case in cases:
+        per_case: dict[str, list[tuple[float, float]]] = {}
+        for truth, intervals in study_case_tests(case, tests, rng):
+            for key, interval in intervals.items():
+                row = out[key]
+                row.tests += 1
+                row.hits += int(interval.low <= truth[key] <= interval.high)
+                row.probability = min(row.probability, interval.probability)
+                row.widths.append(interval.high - interval.low)
+                per_case.setdefault(key, []).append((interval.value - truth[key],
+                                                     interval.probability))
+        for key, values in per_case.items():
+            # a correct interval's width: the spread of measured − truth between the stated
+            # tails (normal quantiles of its standard deviation: steady with few tests)
+            errors = np.array([e for e, _ in values])
+            tail = 0.5 * (1.0 - min(p for _, p in values))
+            spread = float(np.std(errors, ddof=1)) if errors.size > 1 else math.nan
+            out[key].errors += errors.tolist()
+            out[key].needed += [2.0 * float(ndtri(1.0 - tail)) * spread] * errors.size
+    return out
+
+
+#: what each figure's truth is (the record states it beside the figure)
+TRUTHS = {
+    "A": QT_TR_NOOP("max(μ + 2σ) − min(μ − 2σ) over both directions"),
+    "A_up": QT_TR_NOOP("max(μ↑ + 2σ↑) − min(μ↑ − 2σ↑)"),
+    "A_down": QT_TR_NOOP("max(μ↓ + 2σ↓) − min(μ↓ − 2σ↓)"),
+    "E": QT_TR_NOOP("range of μ↑ and μ↓ together"),
+    "E_up": QT_TR_NOOP("range of μ↑"),
+    "E_down": QT_TR_NOOP("range of μ↓"),
+    "M": QT_TR_NOOP("range of (μ↑ + μ↓)/2"),
+    "R": QT_TR_NOOP("max of max(2σ↑ + 2σ↓ + |μ↑ − μ↓|, 4σ↑, 4σ↓)"),
+    "R_up": QT_TR_NOOP("4σ↑ at the worst target"),
+    "R_down": QT_TR_NOOP("4σ↓ at the worst target"),
+    "B": QT_TR_NOOP("max |μ↑ − μ↓|"),
+    "B_mean": QT_TR_NOOP("mean of μ↑ − μ↓"),
+    "P": QT_TR_NOOP("VDI/DGQ 3441 P of μ, σ"),
+    "Ps_max": QT_TR_NOOP("max 3(σ↑ + σ↓)"),
+    "Pa": QT_TR_NOOP("range of (μ↑ + μ↓)/2"),
+    "U_max": QT_TR_NOOP("max |μ↑ − μ↓|"),
+}
+
+COVERAGE_STUDY = QT_TR_NOOP("coverage study")
+
+
+def tests_per_case(trials: int) -> int:
+    """Tests of each study case for ``anglebench validate --trials N``: N/10 (20 at the
+    default 200), every one through the whole analysis."""
+    return max(10, trials // 10)
+
+
+def figure_coverage_cases(trials: int, case_type) -> list:
+    """One case per figure (``case_type``: models.validation.cases.ValidationCase): its
+    interval's coverage of its truth over every study case."""
+    study = coverage_study(VALIDATE_CASES, tests_per_case(trials))
+    out = []
+    for key in FIGURES:
+        row = study[key]
+        allowed = int(binom.ppf(1.0 - ALPHA, row.tests, 1.0 - row.probability))
+        out.append(case_type(
+            POSITIONING.title,
+            message(QT_TR_NOOP("interval of {figure} covers its truth ({truth}; μ, σ the true "
+                               "mean and standard deviation at each target)"),
+                    figure=key, truth=message(TRUTHS[key])),
+            COVERAGE_STUDY,
+            message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
+                    p=f"{100 * row.probability:.2f}", allowed=allowed, tests=row.tests),
+            message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
+                               "interval's (aim ≤ {limit} ×)"),
+                    coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
+                    ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
+            row.coverage_passes))
+    return out

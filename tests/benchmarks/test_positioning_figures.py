@@ -1,0 +1,35 @@
+"""Coverage of the positioning figures' intervals (ISO 230-2 / GB/T 17421.2, VDI/DGQ 3441),
+#39: every study case of models/positioning/figure_coverage.py (4 shapes × 12 and 72 targets
+× repeatability 0.1, 0.5 and 2 × the signal × constant or varying along the axis; 5 runs
+each way), each test through the whole analysis. A figure passes when its misses are within
+the binomial allowance at the probability printed beside it, and its mean width is at most
+1.6 × what a correct interval needs."""
+
+from __future__ import annotations
+
+import time
+
+from models.positioning.figure_coverage import STUDY_CASES, WIDTH_LIMIT, coverage_study
+
+TESTS_PER_CASE = 40
+
+
+def test_positioning_figure_intervals_cover(report):
+    start = time.perf_counter()
+    study = coverage_study(STUDY_CASES, TESTS_PER_CASE)
+    seconds = time.perf_counter() - start
+    lines = ["## Positioning figures: coverage of their intervals (#39)", "",
+             f"{len(STUDY_CASES)} simulated axes × {TESTS_PER_CASE} tests, each through the "
+             f"analysis ({seconds:.0f} s).", "",
+             "| figure | printed p | achieved | missed / tests | width ÷ correct | passes |",
+             "|---|---|---|---|---|---|"]
+    failed = []
+    for key, row in study.items():
+        ok = row.coverage_passes and row.width_ratio <= WIDTH_LIMIT
+        lines.append(f"| {key} | {100 * row.probability:.2f} % | {100 * row.coverage:.1f} % | "
+                     f"{row.tests - row.hits} / {row.tests} | {row.width_ratio:.2f} | "
+                     f"{'yes' if ok else 'NO'} |")
+        if not row.coverage_passes:
+            failed.append(key)
+    report("6-positioning-figures", lines)
+    assert not failed, f"coverage below the printed probability: {failed}"
