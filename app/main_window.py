@@ -91,6 +91,9 @@ class MainWindow(QMainWindow):
         self.certificates.open_project_path = lambda: self.projects.path
         self.imported_files: list[str] = []  # inputs: no export may replace them
         self.certificates.inputs = lambda: list(self.imported_files)
+        # the test plans are saved with the lab defaults; a new project starts with them
+        self.certificates.workbench_settings = lambda key: self.presenter(key).settings
+        self.projects.new_settings = self.certificates.test_plan
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
