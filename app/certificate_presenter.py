@@ -115,6 +115,8 @@ class CertificatePresenter:
         #: a workbench's settings now (the main window sets it): its test plan is saved
         #: with the lab defaults
         self.workbench_settings: Callable[[str], dict] = lambda _key: {}
+        #: a workbench's details were changed (the main window redraws its plots: ±T, U)
+        self.details_changed: Callable[[str], None] = lambda _key: None
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self, workbench: str = "") -> dict:
@@ -173,6 +175,19 @@ class CertificatePresenter:
         except MetadataError:
             return meta
 
+    def stored_details(self, key: str) -> CertificateMetadata | None:
+        """The details stored for workbench ``key``, the lab's defaults filled in, as its
+        certificate would be made with them now (nothing else changed: the plots' tolerance
+        band reads them); None when none are stored."""
+        stored = self._metadata().get("certificates", {}).get(key)
+        if not isinstance(stored, dict):
+            return None
+        meta, _problems = CertificateMetadata.from_dict_lenient(stored)
+        try:
+            return meta.with_lab_defaults(self.lab_defaults(key))
+        except MetadataError:
+            return meta
+
     def store_details(self, key: str, meta: CertificateMetadata) -> None:
         metadata = self._metadata()
         certificates = dict(metadata.get("certificates", {}))
@@ -181,6 +196,7 @@ class CertificatePresenter:
             metadata["certificates"] = certificates
             metadata["certificates_last"] = key
             self._mark_modified()  # the details are saved with the project
+            self.details_changed(key)
 
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)

@@ -166,13 +166,14 @@ class ProjectPresenter(QObject):
                        self.raw_capture())
 
     def apply_project(self, project: Project) -> None:
-        for presenter in self.presenters:
-            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        # the details first: the workbenches' plots draw the tolerance they set
         self.metadata = dict(project.metadata)
-        self.load_raw_capture(project.raw_capture)
         self.metadata.pop("autosaved_at", None)
         self.metadata.pop("project_path", None)
         self.metadata.pop("pending_edits", None)
+        for presenter in self.presenters:
+            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        self.load_raw_capture(project.raw_capture)
 
     def update_title(self, *_args) -> None:
         name = self.path.name if self.path else tr("untitled")
