@@ -186,8 +186,8 @@ class WorkbenchPresenter(QObject):
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
-        #: the certificate details this workbench's certificate would be made with (the
-        #: window sets it; None: none): the plots' tolerance and U bands come from them
+        # the certificate details this workbench's certificate would be made with (the
+        # window sets it; None: none): the plots' tolerance and U bands come from them
         self.certificate_details: Callable[[], Any] = lambda: None
         self.angle_unit: AngleUnit = ANGLE_UNITS["arcsec"]  # what results are shown in
         self._generation = 0
