@@ -1400,7 +1400,7 @@
     </message>
     <message>
         <source>test plan: targets</source>
-        <translation type="unfinished"></translation>
+        <translation>测试计划：目标位置</translation>
     </message>
     <message>
         <source>theodolite accuracy (1σ)</source>
@@ -3249,7 +3249,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Each pass</source>
-        <translation type="unfinished"></translation>
+        <translation>各遍</translation>
     </message>
     <message>
         <source>Set-up: {names}</source>
