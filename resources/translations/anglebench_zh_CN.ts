@@ -5730,7 +5730,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
-        <translation type="unfinished"></translation>
+        <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向），并显示下一个面；每个测回最后再测一次第 1 面（闭合）。0：无计划</translation>
     </message>
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
@@ -5758,7 +5758,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
-        <translation type="unfinished"></translation>
+        <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
