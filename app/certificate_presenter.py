@@ -32,6 +32,13 @@ from widgets.i18n import explained, tr, translated
 __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
+#: the lab defaults' key of the test plans, per workbench ({workbench: {plan_…: value}})
+TEST_PLANS = "test_plans"
+
+
+def plan_settings_of(settings: dict) -> dict:
+    """The settings of a workbench's test (entry) plan: its ``plan_…`` settings."""
+    return {k: v for k, v in settings.items() if k.startswith("plan_")}
 #: details typed for one workbench that the next workbench's certificate is offered
 SHARED_DETAILS = ("lab_name", "lab_address", "lab_accreditation", "customer_name",
                   "customer_address", "operator", "approver", "calibration_date",
@@ -105,6 +112,11 @@ class CertificatePresenter:
         self.inputs: Callable[[], list] = list
         #: the workbench whose details were last asked for ("" before any)
         self.editing = ""
+        #: a workbench's settings now (the main window sets it): its test plan is saved
+        #: with the lab defaults
+        self.workbench_settings: Callable[[str], dict] = lambda _key: {}
+        #: a workbench's details were changed (the main window redraws its plots: ±T, U)
+        self.details_changed: Callable[[str], None] = lambda _key: None
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self, workbench: str = "") -> dict:
@@ -126,9 +138,23 @@ class CertificatePresenter:
         reference standards as those of ``workbench`` (else of the workbench whose details
         were last asked for), the other workbenches' kept."""
         workbench = workbench or self.editing
+        stored = self.lab_defaults()
         if workbench:
-            defaults = with_workbench_standards(self.lab_defaults(), defaults, workbench)
+            defaults = with_workbench_standards(stored, defaults, workbench)
+        # the test plans: the workbench's as set now, the others' kept (a new project
+        # starts with them, test_plan)
+        plans = dict(stored.get(TEST_PLANS) or {})
+        if workbench:
+            plans[workbench] = plan_settings_of(self.workbench_settings(workbench))
+        if plans:
+            defaults = {**defaults, TEST_PLANS: plans}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
+
+    def test_plan(self, workbench: str) -> dict:
+        """The test plan's settings saved with the lab defaults for ``workbench`` ({}: none)."""
+        plans = self.lab_defaults().get(TEST_PLANS)
+        plan = plans.get(workbench) if isinstance(plans, dict) else None
+        return plan_settings_of(plan) if isinstance(plan, dict) else {}
 
     # -- a workbench's details -----------------------------------------------------
     def details(self, key: str) -> CertificateMetadata:
@@ -149,6 +175,19 @@ class CertificatePresenter:
         except MetadataError:
             return meta
 
+    def stored_details(self, key: str) -> CertificateMetadata | None:
+        """The details stored for workbench ``key``, the lab's defaults filled in, as its
+        certificate would be made with them now (nothing else changed: the plots' tolerance
+        band reads them); None when none are stored."""
+        stored = self._metadata().get("certificates", {}).get(key)
+        if not isinstance(stored, dict):
+            return None
+        meta, _problems = CertificateMetadata.from_dict_lenient(stored)
+        try:
+            return meta.with_lab_defaults(self.lab_defaults(key))
+        except MetadataError:
+            return meta
+
     def store_details(self, key: str, meta: CertificateMetadata) -> None:
         metadata = self._metadata()
         certificates = dict(metadata.get("certificates", {}))
@@ -157,6 +196,7 @@ class CertificatePresenter:
             metadata["certificates"] = certificates
             metadata["certificates_last"] = key
             self._mark_modified()  # the details are saved with the project
+            self.details_changed(key)
 
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)

@@ -91,6 +91,14 @@ class MainWindow(QMainWindow):
         self.certificates.open_project_path = lambda: self.projects.path
         self.imported_files: list[str] = []  # inputs: no export may replace them
         self.certificates.inputs = lambda: list(self.imported_files)
+        # the test plans are saved with the lab defaults; a new project starts with them
+        self.certificates.workbench_settings = lambda key: self.presenter(key).settings
+        self.projects.new_settings = self.certificates.test_plan
+        # the plots' tolerance band and U band: from the details the certificate would use
+        for presenter in self.presenters:
+            presenter.certificate_details = (
+                lambda key=presenter.kind.key: self.certificates.stored_details(key))
+        self.certificates.details_changed = lambda key: self.presenter(key).schedule_refresh()
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"

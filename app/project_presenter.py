@@ -115,6 +115,9 @@ class ProjectPresenter(QObject):
         #: its capture panel's raw_capture and load_raw_capture)
         self.raw_capture: Callable[[], dict] = dict
         self.load_raw_capture: Callable[[dict], None] = lambda _raw: None
+        #: a new project's settings of a workbench (the window sets it: the test plan saved
+        #: with the lab defaults)
+        self.new_settings: Callable[[str], dict] = lambda _key: {}
         self.autosave_timer = QTimer(self)
         self.autosave_timer.setSingleShot(True)
         self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
@@ -140,6 +143,10 @@ class ProjectPresenter(QObject):
             self.recovery.claim()
         except OSError as exc:
             self.view.show_status(tr("Autosave is off: {reason}").format(reason=exc), 15000)
+        for presenter in self.presenters:  # the window opens on a new project
+            saved = self.new_settings(presenter.kind.key)
+            if saved and not presenter.is_modified and presenter.sheet.row_count == 0:
+                presenter.load_state(WorkbenchState(settings={**presenter.settings, **saved}))
         self.update_title()
 
     def close(self) -> None:
@@ -159,13 +166,14 @@ class ProjectPresenter(QObject):
                        self.raw_capture())
 
     def apply_project(self, project: Project) -> None:
-        for presenter in self.presenters:
-            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        # the details first: the workbenches' plots draw the tolerance they set
         self.metadata = dict(project.metadata)
-        self.load_raw_capture(project.raw_capture)
         self.metadata.pop("autosaved_at", None)
         self.metadata.pop("project_path", None)
         self.metadata.pop("pending_edits", None)
+        for presenter in self.presenters:
+            presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
+        self.load_raw_capture(project.raw_capture)
 
     def update_title(self, *_args) -> None:
         name = self.path.name if self.path else tr("untitled")
@@ -183,7 +191,10 @@ class ProjectPresenter(QObject):
     def new_project(self) -> None:
         if not self.confirm_discard():
             return
-        self.apply_project(Project())
+        # the settings saved with the lab defaults (the test plans) are a new project's
+        self.apply_project(Project(workbenches={
+            p.kind.key: WorkbenchState(settings=dict(self.new_settings(p.kind.key)))
+            for p in self.presenters}))
         self.path = None
         self.update_title()
 

@@ -7,6 +7,8 @@ lays out the panels, names their axes and legends, and reads the curves under th
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
@@ -14,6 +16,7 @@ from PySide6.QtWidgets import QLabel, QVBoxLayout, QWidget
 
 from models.plot_style import ROLE_STYLES
 from models.plots import PlotFigure, PlotSeries
+from models.tolerance_band import TOLERANCE_ROLE, UNCERTAINTY_ROLE
 from widgets.figure_plot import FigureRenderer
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
@@ -141,13 +144,18 @@ class ErrorPlot(QWidget):
             for index, role in enumerate(roles):
                 renderer.rename(index, self._curve_names[role])
 
-    def set_curves(self, x, raw=None, model=None, corrected=None) -> None:
-        """Update the curves (arcsec over x); ``None`` hides a curve."""
+    def set_curves(self, x, raw=None, model=None, corrected=None, beside=()) -> None:
+        """Update the curves (arcsec over x); ``None`` hides a curve. ``beside``: series
+        drawn with the corrected error on its panel (its U band and the tolerance ±T,
+        models/tolerance_band.py)."""
         points = np.size(x)  # a hidden curve's legend sample drawn as its panel's others
         self.main_renderer.show(self._figure("raw", "model", x=x, ys=(raw, model)),
                                 follow=False, points=points)
-        self.corrected_renderer.show(self._figure("corrected", x=x, ys=(corrected,)),
-                                     follow=False, points=points)
+        corrected_figure = self._figure("corrected", x=x, ys=(corrected,))
+        if beside:
+            corrected_figure = dataclasses.replace(
+                corrected_figure, series=corrected_figure.series + tuple(beside))
+        self.corrected_renderer.show(corrected_figure, follow=False, points=points)
         # both panels drawn, then ranged: x-linked, they follow their new data together
         for renderer in (self.main_renderer, self.corrected_renderer):
             renderer.follow_x()
@@ -163,7 +171,9 @@ class ErrorPlot(QWidget):
         parts = {role: figure.by_role(role) for role in ("raw", "model", "corrected")}
         self.set_curve_names(*(s.label if s is not None else "" for s in parts.values()))
         x = next(s.x for s in parts.values() if s is not None)
-        self.set_curves(x, *(s.y if s is not None else None for s in parts.values()))
+        beside = tuple(s for s in figure.series if s.role in (UNCERTAINTY_ROLE, TOLERANCE_ROLE))
+        self.set_curves(x, *(s.y if s is not None else None for s in parts.values()),
+                        beside=beside)
         series = residuals.by_role("residual") if residuals is not None else None
         self.set_residuals(series.x if series is not None else [],
                            series.y if series is not None else None)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import gc
 import logging
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -21,7 +22,7 @@ from models.display_units import (
 )
 from models.messages import reason_of
 from models.project.file import WorkbenchState
-from models.readings.entry_plan import EntryPlan
+from models.readings.entry_plan import EntryPlan, Placement
 from models.readings.incomplete import without_waiting_rows
 from models.readings.numeric_csv import read_numeric
 from models.readings.sheet import NumericRows, ParsedReadings, ReadingsSheet
@@ -185,6 +186,9 @@ class WorkbenchPresenter(QObject):
         self.parsed: ParsedReadings | None = None
         self.problem = ""
         self.plan_problem = ""  # why the entry plan set cannot be made ("" when it can)
+        # the certificate details this workbench's certificate would be made with (the
+        # window sets it; None: none): the plots' tolerance and U bands come from them
+        self.certificate_details: Callable[[], Any] = lambda: None
         self.angle_unit: AngleUnit = ANGLE_UNITS["arcsec"]  # what results are shown in
         self._generation = 0
         self._import_generation = 0  # a newer import, or an opened project, drops older imports
@@ -250,6 +254,28 @@ class WorkbenchPresenter(QObject):
         nothing to draw, stays ``None``)."""
         return tuple(None if f is None else figure_in_unit(f, self.angle_unit)
                      for f in figures)
+
+    def tolerance_bands(self, result: Any) -> tuple[float | None, dict[str, Any], str]:
+        """(T, {array name: U per point}, decision quantity) as the certificate would use
+        them: T from the certificate details (in the errors' unit), U from the workbench's
+        budgets for the JSON's ``expanded_uncertainty_*``
+        (models/certificate/uncertainty_json.py); (None, {}, "") when no tolerance is set
+        or the details cannot give one."""
+        meta = self.certificate_details()
+        if meta is None or getattr(meta, "tolerance", None) is None:
+            return None, {}, ""
+        budgets_of = getattr(self.kind, "uncertainty_budgets", None)
+        if budgets_of is None:
+            return None, {}, ""
+        try:
+            budgets = budgets_of(result, meta)
+            unit = next((b.unit.key for b in budgets.values() if hasattr(b, "unit")), None)
+            tolerance = meta.tolerance_in(unit or self.kind.error_unit(self._settings))
+        except (ValueError, ArithmeticError) as exc:
+            log.debug("no tolerance band: %s", exc)
+            return None, {}, ""
+        return tolerance, {name: getattr(b, "expanded", None) for name, b in budgets.items()}, \
+            str(getattr(meta, "decision_quantity", "half_range"))
 
     def in_unit_text(self, text: str) -> str:
         """A model's text in the chosen unit (converted from its figures), then in the
@@ -495,6 +521,16 @@ class WorkbenchPresenter(QObject):
             self.table_model.set_cells(changes, tr("Entry plan: {point}").format(
                 point=translated(place.point.label)))
         return place.row
+
+    def plan_placement(self) -> Placement | None:
+        """Where the plan's next point goes (its row, ``len(rows)`` for a new one, and the
+        plan's cells for it), without changing the table; None without a plan (or when the
+        table is too large for one, or the plan is complete)."""
+        plan = self.entry_plan()
+        got = None if plan is None else self._plan_rows(plan)
+        if got is None:
+            return None
+        return plan.placement(got[0], self._reading_keys())
 
     def _without_waiting_rows(self, parsed: ParsedReadings) -> ParsedReadings:
         """The readings less the rows at the end that wait for their reading (the plan's or

@@ -806,13 +806,25 @@ class CapturePanel(QDockWidget):
         seen: set[str] = set()
         return [t for t in out if not (t[2] in seen or seen.add(t[2]))]
 
-    def target_row(self, presenter=None) -> int:
-        """The row the next take goes to: the current row when the cells it fills are blank,
-        else the next empty point below it, else a new row."""
+    @staticmethod
+    def _placement(presenter):
+        """The entry plan's next point (models/readings/entry_plan.py Placement), None when
+        the workbench has no plan or it is complete."""
+        placement = getattr(presenter, "plan_placement", None)
+        return placement() if placement is not None else None
+
+    def target_row(self, presenter=None, placement=None) -> int:
+        """The row the next take goes to: with an entry plan, the row of the plan's next point
+        (``placement``, else the presenter's); without one, the current row when the cells
+        it fills are blank, else the next empty point below it, else a new row. Never a row
+        whose cells the take fills are filled."""
         presenter = presenter or self.window_.current
         sheet = presenter.table_model.sheet
         index = presenter.view.table.currentIndex()
         row = index.row() if index.isValid() else sheet.row_count
+        place = placement or self._placement(presenter)
+        if place is not None:
+            row = place.row
         keys = [c.key for c in sheet.columns]
         columns = [keys.index(key) for _, _, key in self._targets(presenter)]
         if not columns:
@@ -973,7 +985,8 @@ class CapturePanel(QDockWidget):
                                        "reading: choose a cell first (readout) or another "
                                        "workbench"))
             return ""
-        row = self.target_row(presenter)
+        place = self._placement(presenter)
+        row = self.target_row(presenter, place)
         vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
         changes = []
         for link, i, key in targets:
@@ -993,6 +1006,13 @@ class CapturePanel(QDockWidget):
                                                    column_def.unit)))
         self.update_guide()
         filled = {c for _, c, _ in changes}
+        if place is not None and place.row == row:  # the plan's cells, where blank
+            for key, text in place.cells.items():
+                if key not in keys or keys.index(key) in filled:
+                    continue
+                if row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip():
+                    changes.append((row, keys.index(key), text))
+                    filled.add(keys.index(key))
         if self.next_reading is not None:
             for key, text in self.next_reading.fill.items():
                 if key not in keys or keys.index(key) in filled:

@@ -11,6 +11,7 @@ from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS, che
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
+from models.tolerance_band import with_tolerance
 from widgets.i18n import explained, tr, translated
 from widgets.positioning.before_after import AfterCompensation
 from widgets.positioning.view import PositioningView
@@ -34,12 +35,24 @@ class PositioningPresenter(WorkbenchPresenter):
         self.after_compensation = AfterCompensation(self)
 
     def show_result(self, result: PositioningResult) -> None:
-        self.view.show_figures(*self.in_unit(plots.deviation_figure(result),
+        self.view.show_figures(*self.in_unit(self._with_tolerance(plots.deviation_figure(result),
+                                                                  result),
                                              plots.reversal_figure(result),
                                              plots.readings_figure(result, self.parsed)))
         self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(tr(" — fewer than 5 runs: flagged"))
+
+    def _with_tolerance(self, figure, result: PositioningResult):
+        """The mean deviations' plot with ±T and each direction's U band where the
+        certificate details set a tolerance (models/tolerance_band.py)."""
+        tolerance, expanded, quantity = self.tolerance_bands(result)
+        if tolerance is None:
+            return figure
+        curves = [(f"x̄{plots.ARROWS[name]} ± U", result.positions, stats.mean,
+                   expanded.get(f"per_target/mean_{name}"))
+                  for name, _, stats in result.directions_present()]
+        return with_tolerance(figure, tolerance, curves, quantity)
 
     def clear_result(self) -> None:
         self.view.clear_result()
