@@ -191,7 +191,7 @@ class CertificatePresenter:
             self.store_details(kind.key, dataclasses.replace(entered, certificate_number=""))
             draft = draft_reasons(entered)
             # "No, not a draft": back to the dialog, what was typed kept, to fill in the rest
-            if not draft or self.view.confirm_draft(draft):
+            if entered.example or not draft or self.view.confirm_draft(draft):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
         try:  # details the result refuses (a grade that disagrees) told before the file dialog
@@ -202,12 +202,14 @@ class CertificatePresenter:
             return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
+        if entered.example:  # the training switch: a specimen, neither draft nor revision
+            draft, revision = [], None
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:
                 return False
-        suggested = (entered.certificate_number or
-                     (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
+        suggested = (f"{kind.key}-specimen" if entered.example else entered.certificate_number
+                     or (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
         path = self.view.choose_save_path(tr("Export certificate"),
                                           f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
         if not path:
@@ -217,6 +219,8 @@ class CertificatePresenter:
         self.view.wait_cursor(True)
         try:
             check_output(path, self.protected())
+            if entered.example:
+                return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
                 from app.writers.certificate_pdf import write_certificate_pdf
 
@@ -234,6 +238,21 @@ class CertificatePresenter:
             return False
         finally:
             self.view.wait_cursor(False)
+
+    def _specimen(self, kind, result, entered, settings, source_name, path) -> bool:
+        """The training switch: a SPECIMEN written, nothing recorded (as ``"example": true``
+        on the command line)."""
+        from app.certificate_issue import specimen_document
+        from app.writers.certificate_pdf import write_certificate_pdf
+
+        document = specimen_document(kind.certificate_document(result, entered, source_name,
+                                                               settings))
+        write_certificate_pdf(path, document)
+        self.view.show_status(tr(
+            "SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a "
+            "certificate, and recorded in no register").format(
+                number=document.metadata.certificate_number, path=path), 15000)
+        return True
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
                note, raw_capture=None) -> bool:

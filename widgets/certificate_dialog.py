@@ -14,6 +14,7 @@ from typing import Any
 
 from PySide6.QtCore import QT_TR_NOOP, Qt, Signal
 from PySide6.QtWidgets import (
+    QCheckBox,
     QComboBox,
     QDialog,
     QDialogButtonBox,
@@ -63,7 +64,7 @@ _TEXT_FIELDS = {
     "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
     "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
-    "approver": QT_TR_NOOP("Approved by"),
+    "approver": QT_TR_NOOP("Approved by"), "checker": QT_TR_NOOP("Checked by"),
     "coverage_probability_pct": QT_TR_NOOP("Coverage probability (%)"),
     "as_left_table_sha256": QT_TR_NOOP("Table loaded (sha256)"),
 }
@@ -175,15 +176,31 @@ class CertificateDialog(QDialog):
             self.choices[key] = box
             cert.layout().addRow(tr(label), box)
         self.decision_rule = self.choices["decision_rule"]
+        # the training switch: a specimen exactly as "example": true makes one on the command
+        # line (watermarked, numbered SPECIMEN-…, recorded in no register)
+        self.training = QCheckBox(tr("Training / specimen"))
+        self.training.setObjectName("example")
+        self.training.setToolTip(tr(
+            "A specimen for training or demonstration: watermarked SPECIMEN, numbered "
+            "SPECIMEN-…, not a certificate, and recorded in no register"))
+        cert.layout().addRow("", self.training)
         grid.addWidget(cert, 0, 0)
-        grid.addWidget(self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
-                                                  "number_scheme")), 0, 1)
+        lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
+                                                    "number_scheme"))
+        # the lab's template: a checker signs as well (核验员, JJF 1071's model)
+        self.checker_role = QCheckBox(tr("Certificates are checked (Checked by / 核验员)"))
+        self.checker_role.setObjectName("checker_role")
+        self.checker_role.setToolTip(tr(
+            "The lab's template asks for a checker: the signature block reads Calibrated by / "
+            "Checked by / Approved by, and a certificate without a checker is a draft"))
+        lab.layout().addRow("", self.checker_role)
+        grid.addWidget(lab, 0, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
             "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
             "item_resolution")), 1, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
-            "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
+            "temperature_c", "humidity_pct", "operator", "checker", "approver")), 2, 0)
         notes_box = QGroupBox(tr("Remarks printed on the certificate"))
         self.notes = QPlainTextEdit()
         self.notes.setObjectName("notes")
@@ -257,6 +274,8 @@ class CertificateDialog(QDialog):
         for key, box in self.choices.items():
             box.setCurrentIndex(max(box.findData(data.get(key)), 0))
         self.notes.setPlainText(meta.notes)
+        self.training.setChecked(meta.example)
+        self.checker_role.setChecked(meta.checker_role)
         if not meta.issue_date:
             self.fields["issue_date"].setText(dt.date.today().isoformat())
         self.standards.setRowCount(0)
@@ -288,6 +307,8 @@ class CertificateDialog(QDialog):
         for key, box in self.choices.items():
             data[key] = box.currentData()
         data["notes"] = self.notes.toPlainText()
+        data["example"] = self.training.isChecked()
+        data["checker_role"] = self.checker_role.isChecked()
         standards = []
         for row in range(self.standards.rowCount()):
             entry = {key: (self.standards.item(row, col).text()

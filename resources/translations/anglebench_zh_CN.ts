@@ -741,10 +741,6 @@
         <translation>补偿表的间隔（目标位置单位）；0：每个目标位置一个条目</translation>
     </message>
     <message>
-        <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500 (ISG); axis=X (Mach4)</source>
-        <translation>控制器设置，以逗号分隔的“键=值”；各控制器可用的选项及其说明见导出时弹出的选项表</translation>
-    </message>
-    <message>
         <source>The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)</source>
         <translation>一组测量回到第一面时显示的漂移：报告并计入不确定度，或在该组内线性分配并扣除（在证书上说明）</translation>
     </message>
@@ -1402,6 +1398,10 @@
         <translation>目标位置单位</translation>
     </message>
     <message>
+        <source>test plan: targets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>theodolite accuracy (1σ)</source>
         <translation>经纬仪准确度（1σ）</translation>
     </message>
@@ -1463,7 +1463,6 @@
     </message>
     <message>
         <source>Export certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>导出证书</translation>
     </message>
     <message>
@@ -1485,6 +1484,10 @@
     <message>
         <source>{path}: {reason}. Nothing else was changed.</source>
         <translation>{path}：{reason}。其他内容均未改变。</translation>
+    </message>
+    <message>
+        <source>SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a certificate, and recorded in no register</source>
+        <translation>样本 {number} 已写入 {path}（培训）：带“样本”水印，不是证书，未记录在任何登记册中</translation>
     </message>
     <message>
         <source>Not issued</source>
@@ -2119,6 +2122,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
     </message>
     <message>
+        <source>certificate field &apos;{name}&apos; must be true or false</source>
+        <translation>证书字段“{name}”必须为 true 或 false</translation>
+    </message>
+    <message>
         <source>certificate field &apos;language&apos; must be one of {join}, not &apos;{language}&apos;</source>
         <translation>证书字段 &apos;language&apos; 必须是 {join} 之一，而不是 &apos;{language}&apos;</translation>
     </message>
@@ -2346,6 +2353,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>  {field}: {value}</source>
         <translation>  {field}：{value}</translation>
+    </message>
+    <message>
+        <source>checker</source>
+        <translation>核验员</translation>
     </message>
     <message>
         <source>  chain head before it (printed on it): {head}</source>
@@ -2605,10 +2616,12 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>草稿</translation>
     </message>
     <message>
-        <source>as stated in the settings: {inputs}</source>
-        <translation>见分析设置中的给定值：{inputs}</translation>
         <source>Register chain head before this certificate: {head}…</source>
         <translation>本证书之前的登记册链头：{head}…</translation>
+    </message>
+    <message>
+        <source>as stated in the settings: {inputs}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>not stated</source>
@@ -2707,6 +2720,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>相对湿度 {h} %</translation>
     </message>
     <message>
+        <source>Calibrated by</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>Checked by</source>
+        <translation>核验员</translation>
+    </message>
+    <message>
         <source>Signature and date</source>
         <translation>签名及日期</translation>
     </message>
@@ -2740,12 +2761,28 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>证书</translation>
     </message>
     <message>
         <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
         <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
+    </message>
+    <message>
+        <source>Training / specimen</source>
+        <translation>培训 / 样本</translation>
+    </message>
+    <message>
+        <source>A specimen for training or demonstration: watermarked SPECIMEN, numbered SPECIMEN-…, not a certificate, and recorded in no register</source>
+        <translation>用于培训或演示的样本：带“样本”水印，编号为 SPECIMEN-…，不是证书，不记录在任何登记册中</translation>
+    </message>
+    <message>
+        <source>Certificates are checked (Checked by / 核验员)</source>
+        <translation>证书须经核验（核验员）</translation>
+    </message>
+    <message>
+        <source>The lab&apos;s template asks for a checker: the signature block reads Calibrated by / Checked by / Approved by, and a certificate without a checker is a draft</source>
+        <translation>实验室的证书模板要求核验员：签字栏为 校准员 / 核验员 / 批准人，未填写核验员的证书为草稿</translation>
     </message>
     <message>
         <source>Environment and people</source>
@@ -4317,16 +4354,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>reference point, by definition</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape (tests/models/uncertainty/test_half_range_coverage.py: true half range 3σ, 36 points — 41 for the real sample — 300 measurements each, seed 20261201): short of the stated 95.45 %, so the certificate prints it. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape: the lowest cell of each shape over noise 0.1, 0.5, 1 and 2 times the true half range and 12, 36 and 72 points, 50 runs a cell (models.validation.half_range.coverage_study, seed 20261202; pooled over a shape&apos;s 600 runs: smooth 99.8 %, rough 99.3 %, spike 99.5 %, the samples&apos; real curves 99.7 %). tests/benchmarks/test_half_range_coverage.py reruns it with 100 runs a cell; `anglebench validate` with fewer. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
         <translation>参考点，按定义为零</translation>
     </message>
     <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
+        <extracomment>The share of the miss probability α spent on bounding the curve&apos;s gaps to its extremes (the first step of Romano, Shaikh &amp; Wolf&apos;s two-step test, β = α/10).</extracomment>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
         <source>pass ≤ {t} &lt; fail</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape: the lowest cell of each shape over noise 0.1, 0.5, 1 and 2 times the true half range and 12, 36 and 72 points, 50 runs a cell (models.validation.half_range.coverage_study, seed 20261202; pooled over a shape&apos;s 600 runs: smooth 99.8 %, rough 99.3 %, spike 99.5 %, the samples&apos; real curves 99.7 %). tests/benchmarks/test_half_range_coverage.py reruns it with 100 runs a cell; `anglebench validate` with fewer. The share of the miss probability α spent on bounding the curve&apos;s gaps to its extremes (the first step of Romano, Shaikh &amp; Wolf&apos;s two-step test, β = α/10).</extracomment>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
     </message>
     <message>
@@ -4398,8 +4435,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>判定量不予给出（数据无法确定它）</translation>
     </message>
     <message>
-        <source>Half the peak-to-peak {what}: {value} (measured {measured}, less {bias} that the noise adds to a range), U = {u} (coverage probability {p} %). {sentence}</source>
-        <translation>{what}峰峰值的一半：{value}（实测 {measured}，减去噪声使极差增大的 {bias}），包含概率为 {p} % 时 U = {u}。{sentence}</translation>
         <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
         <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %；噪声只会使实测极差增大，故区间向下比向上伸得更远）。{sentence}</translation>
     </message>
@@ -4574,12 +4609,40 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>目标 {missing} 处没有反向平均偏差：补偿表需要所有目标位置</translation>
     </message>
     <message>
+        <source>a rotary joint&apos;s turn, 360 (0: linear): the table is repeated over the joint&apos;s travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a rotary joint&apos;s travel, lowest position (MIN_LIMIT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a rotary joint&apos;s travel, highest position (MAX_LIMIT)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>LinuxCNC&apos;s compensation file lists the forward and the reverse positions: export separate tables (both directions measured)</source>
         <translation>LinuxCNC 的补偿文件分列正向和反向位置：请分别导出补偿表（两个方向均已测量）</translation>
     </message>
     <message>
-        <source>{size} points; LinuxCNC takes at most {linuxcnc_max_points} per joint: choose a larger step</source>
-        <translation>{size} 个点；LinuxCNC 每个关节最多 {linuxcnc_max_points} 个：请选择更大的步距</translation>
+        <source>{controller} options: travel_max must be above travel_min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC does not wrap a rotary joint&apos;s table: the closed turn is written over the joint&apos;s travel {low}…{high}; beyond it the end values apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>warning: LinuxCNC does not wrap a rotary joint&apos;s table: beyond {first}…{last} it applies the end values (at {beyond} the value at {last}, not at {wrapped}); give modulo=360, travel_min and travel_max to write it over the joint&apos;s travel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at most {n} lines per joint ({source})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{size} points: choose a larger step or a shorter travel</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points in {unit}</source>
@@ -5150,6 +5213,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>旋转轴每转移动量，例如 360（参数 3625；0：直线轴）</translation>
     </message>
     <message>
+        <source>control series of the tape: 0i (also 16i/18i/21i) or 30i (also 31i/32i: Q1 in every block)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>series ({source})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>series={series}; it takes {known}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>one table ({source})</source>
         <translation>仅一张表（{source}）</translation>
     </message>
@@ -5230,8 +5305,29 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>旋转轴一整圈，360（0：直线轴）</translation>
     </message>
     <message>
+        <source>tnc (iTNC, TNC 6xx, MANUALplus) or tnc407 (TNC 407/415/425: a spacing of 2^n × 0.1 µm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{controller} options: values=error or values=correction must be given (the sign of a .COM value could not be verified: take it from the machine&apos;s manual)</source>
+        <extracomment>TNC 407/415/425: the spacing of the compensation points is 2^n of this (mm)</extracomment>
         <translation>{controller} 选项：必须给出 values=error 或 values=correction（.COM 值的符号未能核实：请依机床手册确定）</translation>
+    </message>
+    <message>
+        <source>{controller} options: control={control}; it takes {known}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the points are spaced {low}…{high}: resample the table at one compensation step, e.g. {step} (compensation step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TNC 407/415/425: a spacing of 2^n × 0.1 µm ({source})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a step of {step} mm is not one: choose {below} mm or {above} mm (compensation step)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>at most {n} entries per .COM table ({source})</source>
@@ -5270,6 +5366,15 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>模态轴一整圈，360（0：直线轴）</translation>
     </message>
     <message>
+        <source>type of pos/neg in the kernel&apos;s documentation: sgn16 (older) or sgn32</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{controller} options: value_type={value}; it takes {known}</source>
+        <extracomment>I/range: the largest magnitude of a pos/neg value of each type</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{key} in whole units of 0.1 µm / 0.0001° ({source})</source>
         <translation>{key} 须为 0.1 µm / 0.0001° 的整数倍（{source}）</translation>
     </message>
@@ -5280,6 +5385,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>kw_nr_max &lt; P-COMP-00059 = {max_points}</source>
         <translation>kw_nr_max &lt; P-COMP-00059 = {max_points}</translation>
+    </message>
+    <message>
+        <source>pos/neg are {kind}: at most ±{limit} units of 0.1 µm / 0.0001°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a value of {value} units{hint}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (value_type=sgn32 if the kernel&apos;s documentation types them so)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>modulo table closed ({source})</source>
@@ -5302,6 +5419,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>轴名或电机名</translation>
     </message>
     <message>
+        <source>correction (expected − actual) or error (actual − expected): as the machine&apos;s Mach4 build takes it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{controller} options: values=correction or values=error must be given (the sign of a screw map&apos;s value is not stated unambiguously: see README)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>points = intervals + 1, evenly spaced over the length ({source})</source>
         <translation>点数 = 区间数 + 1，在长度上等距分布（{source}）</translation>
     </message>
@@ -5310,8 +5435,8 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>{n} 个值对应 {length} 上的 {points} 个点</translation>
     </message>
     <message>
-        <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points</source>
-        <translation>Mach4 丝杠映射 {axis}：起点 {start}，长度 {length}，{n} 个点</translation>
+        <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points ({sense})</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>machine axis name, e.g. AX1 or X1</source>
@@ -5334,12 +5459,24 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>旋转轴一整圈，例如 360（0：非模态）</translation>
     </message>
     <message>
+        <source>the reference point&apos;s position: the table is made zero there (K3&apos;s recommendation; the shift goes to MD34090)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>one table per measuring system ({source})</source>
         <translation>每个测量系统仅一张表（{source}）</translation>
     </message>
     <message>
         <source>export one table from the bidirectional mean; the reversal belongs in MD32450 BACKLASH</source>
         <translation>请由双向平均值导出一张表；反向差值应设于 MD32450 BACKLASH</translation>
+    </message>
+    <message>
+        <source>zero compensation at the reference point ({source})</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the reference point {reference} lies outside the table {first}…{last}</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
@@ -5368,6 +5505,14 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>SINUMERIK 840D measuring system error compensation, axis {axis}, measuring system {system}, {n} points</source>
         <translation>SINUMERIK 840D 测量系统误差补偿，轴 {axis}，测量系统 {system}，{n} 个补偿点</translation>
+    </message>
+    <message>
+        <source>zero at the reference point {reference}: its error, {shift} (axis unit), is for MD34090 REFP_MOVE_DIST_CORR</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>written as measured: the manual (K3) recommends zero compensation at the reference point (option reference=POSITION)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>prefix of the PLC variables, e.g. Axis1</source>
@@ -5551,8 +5696,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>测试计划的测量次数（ISO 230-2：5）；配合下列目标位置，读数到来时自动填写目标位置、测量序号和方向并显示下一个点。0：无计划（由名义步长填写目标位置）</translation>
     </message>
     <message>
-        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
-        <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向）并显示下一面；每个测回最后回到第 1 面（闭合）。0：无计划</translation>
         <source>Standard deviation of one reading (autocollimator and encoder together), from the lab&apos;s own records, used only when the readings cannot evaluate it (one set per direction and no tilt fit with degrees of freedom); 0: not stated, and then no uncertainty is given</source>
         <translation>单次读数的标准偏差（自准直仪与编码器合计），取自实验室自己的记录，仅在读数本身无法评定时使用（每个方向只有一个测回且倾斜拟合没有自由度）；0：未给出，此时不给出不确定度</translation>
     </message>
@@ -5569,10 +5712,16 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>计划的目标位置：起点:步长:个数（0:30:12）或列表（0, 30, 60）</translation>
     </message>
     <message>
-        <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
-        <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for a polygon&apos;s face deviations: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
         <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for an encoder&apos;s error at its steps: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
@@ -5593,6 +5742,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for the positioning deviation: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
         <translation>实验室对位置偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
@@ -5723,8 +5876,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>测试计划：测量次数</translation>
     </message>
     <message>
-        <source>test plan: targets</source>
-        <translation>测试计划：目标位置</translation>
         <source>none stated</source>
         <translation>未给出</translation>
     </message>
@@ -5821,10 +5972,6 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>at the customer&apos;s site</source>
         <translation>在委托方现场</translation>
-    </message>
-    <message>
-        <source>certificate field &apos;example&apos; must be true or false</source>
-        <translation>证书字段“example”必须为 true 或 false</translation>
     </message>
     <message>
         <source>certificate field &apos;calibration_place&apos; must be one of {join}, not &apos;{place}&apos;</source>
@@ -6603,6 +6750,18 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>连续多少次重连仍无读数即放弃（默认 3）</translation>
     </message>
     <message>
+        <source>an instrument that is asked (theodolite, readout, a polled autocollimator): how long one request waits for its reply before it counts as a fault; the next request is sent only after the reply or this (default 5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>autocollimator: auto (stream, or single-shot requests when it does not stream), stream, or poll (single-shot requests only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>single-shot requests per second at the most when an autocollimator is polled (default 20)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>give up after this long (default: never)</source>
         <translation>超过此时长即放弃（默认：不限）</translation>
     </message>
@@ -6726,6 +6885,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>anglebench capture：--pattern：{reason}</translation>
     </message>
     <message>
+        <source>anglebench capture: --mode is the autocollimator&apos;s (an instrument that answers requests is always asked)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>anglebench capture: cannot write {path}: {reason}; nothing was captured</source>
         <translation>anglebench capture：无法写入 {path}：{reason}；未进行采集</translation>
     </message>
@@ -6766,6 +6929,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>anglebench capture：{reason}；已取得的 {n} 个读数在 {path} 中</translation>
     </message>
     <message>
+        <source>anglebench capture: {port} did not stream after A: read by single-shot a requests (--mode poll asks so from the start)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{n} readings written to {path} ({refused} frames refused: noise, an invalid axis or an error reply)</source>
         <translation>{n} 个读数已写入 {path}（拒收 {refused} 帧：噪声、无效轴或错误应答）</translation>
     </message>
@@ -6775,13 +6942,17 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: cannot open ({reason})</source>
-        <extracomment>a read returns after this long without bytes, so the worker can look up and stop</extracomment>
+        <extracomment>a read returns after this long without bytes, so the worker can look up and stop how long connecting to a TCP address may take bytes read from a socket at once</extracomment>
         <translation>{port}：无法打开（{reason}）</translation>
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
+    </message>
+    <message>
+        <source>{port}: no reply to a request within {seconds} s (the reply timeout)</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{port}: only unreadable bytes for {seconds} s (a wrong baud rate? {baud} was used)</source>
@@ -7840,7 +8011,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>In progress: {unit} (rows {first}–{last}); its readings enter no figure until it is complete, and a certificate waits for it.</source>
-        <translation>进行中：{unit}（第 {first}–{last} 行）；完成前其读数不计入任何结果，证书也须待其完成。</translation>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>41 points, half range 1&quot;, noise 0.5&quot;</source>
         <extracomment>the target: the mean half-width at most this many times what a correct interval needs</extracomment>
         <translation>41 个点，峰峰值一半 1&quot;，噪声 0.5&quot;</translation>
@@ -7895,7 +8068,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
-        <translation>{coverage} %（{runs} 次中 {hits} 次），宽度为所需的 {width} 倍</translation>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>reading of row {row} edited after capture: {captured} → {now}</source>
         <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied)</extracomment>
         <translation>第 {row} 行的读数在采集后被修改：{captured} → {now}</translation>
@@ -7927,7 +8102,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{flag} and {twin} name the same file ({out}); nothing was written</source>
-        <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
         <translation>承载被测量的计量标准为 {roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
     </message>
@@ -8005,7 +8182,9 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>3 points: ψ, α, β leave no degrees of freedom for the reading noise</source>
-        <translation>3 个点：ψ、α、β 使读数噪声没有剩余自由度</translation>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
         <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in</extracomment>
         <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），它打印不出或会移动文字；请去掉它重新输入{what}</translation>

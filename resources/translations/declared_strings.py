@@ -90,7 +90,7 @@ DECLARED = (
     QT_TR_NOOP("The ADC's integral nonlinearity limit ±a per channel (rectangular). 0: not stated"),
     QT_TR_NOOP("The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),
     QT_TR_NOOP("The axis' set-up (ISO 230-2, clause 8): position of the reference, load, feed, dwell at each target, other axes' positions"),
-    QT_TR_NOOP("The controller's settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360 (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500 (ISG); axis=X (Mach4)"),
+    QT_TR_NOOP("The controller's settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)"),
     QT_TR_NOOP('The drift a set shows on returning to its first face: report it and carry it in the budget, or spread it linearly over the set and remove it (stated on the certificate)'),
     QT_TR_NOOP("The elevations identify the set-up without touching the axis' own error; the azimuth route absorbs any part of it that looks like the model"),
     QT_TR_NOOP("The frame the tilt correction is made in when vertical readings are given, as in the polygon workbench: the autocollimator levelled with the rotary axis, or its vertical along the polygon's axis"),

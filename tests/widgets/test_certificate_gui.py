@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import re
 
 import pytest
 from pypdf import PdfReader
@@ -203,3 +204,44 @@ def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
     qtbot.addWidget(again)
     assert again.choices["tolerance_unit"].currentText() == "µrad"
     assert again.metadata() == meta
+
+
+def test_the_training_switch_reads_as_example_and_back(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"))
+    qtbot.addWidget(dialog)
+    assert not dialog.training.isChecked() and not dialog.metadata().example
+    dialog.training.click()
+    assert dialog.metadata().example is True
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab"))
+    assert not dialog.training.isChecked()
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab", example=True))
+    assert dialog.training.isChecked()
+
+
+@pytest.mark.slow
+def test_the_training_switch_gives_a_specimen_recorded_nowhere(window, qtbot, tmp_path,
+                                                               monkeypatch):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+
+    def fill_and_accept(dialog):
+        _type_details(qtbot, dialog)  # complete details: without the switch, an issue
+        dialog.training.click()
+        dialog.accept()
+        return dialog.result()
+
+    monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
+    out = tmp_path / "training.pdf"
+    suggested = []
+    window.certificates.view.choose_save_path = lambda *a: suggested.append(a[1]) or str(out)
+    shown = []
+    window.certificates.view.show_status = lambda text, ms: shown.append(text)
+    window.menus.export_action.trigger()
+    assert window.told == []
+    assert suggested == ["theodolite-specimen.pdf"]
+    text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
+    (number,) = set(re.findall(r"SPECIMEN-[0-9A-F]{8}", text))
+    assert "SPECIMEN" in text.replace(number, "") and "AB-2026" not in text
+    assert shown and number in shown[-1] and "recorded in no register" in shown[-1]
+    with window.certificates.open_register() as register:
+        assert register.list() == []  # no number used, nothing recorded
