@@ -31,6 +31,9 @@ SHARED_DETAILS = ("lab_name", "lab_address", "lab_accreditation", "customer_name
                   "customer_address", "operator", "approver", "calibration_date",
                   "temperature_c", "humidity_pct")
 REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folder
+#: the lab's time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system's): the
+#: date of issue is the lab's local date
+TIMEZONE_KEY = "certificate/lab_timezone"
 
 
 @dataclass(frozen=True)
@@ -151,6 +154,19 @@ class CertificatePresenter:
         return (register_files(self.register_url()) + open_project(self.open_project_path())
                 + input_files(self.inputs()))
 
+    def lab_timezone(self) -> str:
+        """The lab's time zone set in the window (empty: ANGLEBENCH_TIMEZONE, else the
+        system's)."""
+        return str(self.store.value(TIMEZONE_KEY, "") or "").strip()
+
+    def set_lab_timezone(self, name: str) -> None:
+        """Set the lab's time zone; RegisterError (nothing stored) for a name not known."""
+        from models.register.store import lab_timezone
+
+        if name.strip():
+            lab_timezone(name)
+        self.store.setValue(TIMEZONE_KEY, name.strip())
+
     def set_register_url(self, url: str) -> None:
         self.store.setValue(REGISTER_KEY, url.strip())
 
@@ -158,7 +174,7 @@ class CertificatePresenter:
         """The register (RegisterError when it cannot be opened)."""
         from models.register.store import Register
 
-        return Register(self.register_url())
+        return Register(self.register_url(), timezone=self.lab_timezone())
 
     def start_revision(self, revision: PendingRevision) -> None:
         """The next certificate of that workbench amends or replaces ``revision.number``."""

@@ -42,7 +42,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from models.quantity import UNITS
-from widgets.i18n import declared, tr
+from widgets.i18n import declared, explained, tr
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
@@ -106,13 +106,17 @@ class CertificateDialog(QDialog):
     """Edit certificate metadata; ``lab_defaults_saved`` carries the lab-wide fields."""
 
     lab_defaults_saved = Signal(dict)
+    #: the lab's time zone (an IANA name, checked; empty: the system's), on Export or save
+    lab_timezone_set = Signal(str)
 
-    def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None) -> None:
+    def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None,
+                 timezone: str = "") -> None:
         super().__init__(parent)
         self.setWindowTitle(tr("Certificate details"))
         self.fields: dict[str, QLineEdit] = {}
         self._setup_ui()
         self.set_metadata(metadata)
+        self.timezone.setText(timezone)
 
     # -- layout -------------------------------------------------------------
     def _line(self, key: str) -> QLineEdit:
@@ -194,6 +198,15 @@ class CertificateDialog(QDialog):
             "The lab's template asks for a checker: the signature block reads Calibrated by / "
             "Checked by / Approved by, and a certificate without a checker is a draft"))
         lab.layout().addRow("", self.checker_role)
+        # the lab's time zone: a window setting, not a detail of this certificate
+        self.timezone = QLineEdit()
+        self.timezone.setObjectName("lab_timezone")
+        self.timezone.setPlaceholderText(tr("the system's (e.g. Asia/Shanghai)"))
+        self.timezone.setToolTip(tr(
+            "The lab's time zone (an IANA name such as Asia/Shanghai): an issued certificate "
+            "is dated the lab's local date. Empty: ANGLEBENCH_TIMEZONE, else the system's"))
+        self.timezone.textEdited.connect(lambda _t: self.timezone.setStyleSheet(""))
+        lab.layout().addRow(tr("Time zone"), self.timezone)
         grid.addWidget(lab, 0, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
@@ -361,11 +374,31 @@ class CertificateDialog(QDialog):
             edit.setFocus()
             self.details_area.ensureWidgetVisible(edit)
 
+    def _timezone_checked(self) -> str | None:
+        """The time zone typed (empty: the system's); None, marked, when it is not known."""
+        from models.register.store import RegisterError, lab_timezone
+
+        name = self.timezone.text().strip()
+        if name:
+            try:
+                lab_timezone(name)
+            except RegisterError as exc:
+                self.timezone.setStyleSheet(_ERROR_STYLE)
+                self.error_label.setStyleSheet("color: #b00020;")
+                self.error_label.setText(explained(exc))
+                self.details_area.ensureWidgetVisible(self.timezone)
+                return None
+        return name
+
     def accept(self) -> None:  # the dialog stays open on a bad field
         try:
             self.metadata()
         except MetadataError:
             return
+        zone = self._timezone_checked()
+        if zone is None:
+            return
+        self.lab_timezone_set.emit(zone)
         super().accept()
 
     def _save_lab_defaults(self) -> None:
@@ -373,6 +406,10 @@ class CertificateDialog(QDialog):
             meta = self.metadata()
         except MetadataError:
             return
+        zone = self._timezone_checked()
+        if zone is None:
+            return
+        self.lab_timezone_set.emit(zone)
         self.lab_defaults_saved.emit(meta.lab_defaults())
         self.error_label.setStyleSheet("color: #1b5e20;")
         self.error_label.setText(tr("Saved as the lab's defaults."))

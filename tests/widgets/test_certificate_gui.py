@@ -245,3 +245,20 @@ def test_the_training_switch_gives_a_specimen_recorded_nowhere(window, qtbot, tm
     assert shown and number in shown[-1] and "recorded in no register" in shown[-1]
     with window.certificates.open_register() as register:
         assert register.list() == []  # no number used, nothing recorded
+
+
+def test_the_labs_time_zone_is_checked_and_set_from_the_dialog(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"), timezone="Asia/Shanghai")
+    qtbot.addWidget(dialog)
+    assert dialog.timezone.text() == "Asia/Shanghai"
+    set_to = []
+    dialog.lab_timezone_set.connect(set_to.append)
+    dialog.timezone.setText("Asia/Beijing")  # not an IANA name
+    dialog.accept()
+    assert set_to == [] and "Asia/Beijing" in dialog.error_label.text()
+    assert "background" in dialog.timezone.styleSheet()
+    assert dialog.result() != QDialog.DialogCode.Accepted
+    dialog.timezone.setText("Asia/Shanghai")
+    with qtbot.waitSignal(dialog.lab_timezone_set):
+        dialog.accept()
+    assert set_to == ["Asia/Shanghai"] and dialog.result() == QDialog.DialogCode.Accepted
