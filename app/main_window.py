@@ -91,6 +91,8 @@ class MainWindow(QMainWindow):
         self.certificates.open_project_path = lambda: self.projects.path
         self.imported_files: list[str] = []  # inputs: no export may replace them
         self.certificates.inputs = lambda: list(self.imported_files)
+        for presenter in self.presenters:  # the table exports spare them too
+            presenter.protected_outputs = self.certificates.protected
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"
