@@ -1927,6 +1927,22 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>登记册</translation>
     </message>
     <message>
+        <source>The stored PDFs could not be checked: {reason}</source>
+        <translation>无法核对存储的 PDF：{reason}</translation>
+    </message>
+    <message>
+        <source>Stored PDFs changed after issue: {problems}</source>
+        <translation>存储的 PDF 在签发后被改动：{problems}</translation>
+    </message>
+    <message>
+        <source>Every stored PDF matches its record.</source>
+        <translation>所有存储的 PDF 均与其记录一致。</translation>
+    </message>
+    <message>
+        <source>Checking the stored PDFs…</source>
+        <translation>正在核对存储的 PDF…</translation>
+    </message>
+    <message>
         <source>Select a certificate first.</source>
         <translation>请先选择一份证书。</translation>
     </message>
@@ -2749,6 +2765,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Certificate details</source>
+        <extracomment>the lab&apos;s time zone (an IANA name, checked; empty: the system&apos;s), on Export or save</extracomment>
         <translation>证书信息</translation>
     </message>
     <message>
@@ -2761,7 +2778,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>证书</translation>
     </message>
     <message>
@@ -2783,6 +2800,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
     <message>
         <source>The lab&apos;s template asks for a checker: the signature block reads Calibrated by / Checked by / Approved by, and a certificate without a checker is a draft</source>
         <translation>实验室的证书模板要求核验员：签字栏为 校准员 / 核验员 / 批准人，未填写核验员的证书为草稿</translation>
+    </message>
+    <message>
+        <source>the system&apos;s (e.g. Asia/Shanghai)</source>
+        <translation>系统时区（例如 Asia/Shanghai）</translation>
+    </message>
+    <message>
+        <source>The lab&apos;s time zone (an IANA name such as Asia/Shanghai): an issued certificate is dated the lab&apos;s local date. Empty: ANGLEBENCH_TIMEZONE, else the system&apos;s</source>
+        <translation>实验室所在时区（IANA 名称，例如 Asia/Shanghai）：签发的证书以实验室当地日期为签发日期。留空：使用 ANGLEBENCH_TIMEZONE，否则使用系统时区</translation>
+    </message>
+    <message>
+        <source>Time zone</source>
+        <translation>时区</translation>
     </message>
     <message>
         <source>Environment and people</source>
@@ -3248,7 +3277,7 @@ Errors are errors of indication (indicated − reference); the positioning workb
     </message>
     <message>
         <source>Import {name}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported)</extracomment>
         <translation>导入 {name}</translation>
     </message>
     <message>
