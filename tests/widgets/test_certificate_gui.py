@@ -262,3 +262,23 @@ def test_the_labs_time_zone_is_checked_and_set_from_the_dialog(qtbot):
     with qtbot.waitSignal(dialog.lab_timezone_set):
         dialog.accept()
     assert set_to == ["Asia/Shanghai"] and dialog.result() == QDialog.DialogCode.Accepted
+
+
+def test_the_checker_switch_is_a_lab_default_and_asks_for_a_checker(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"))
+    qtbot.addWidget(dialog)
+    saved = []
+    dialog.lab_defaults_saved.connect(saved.append)
+    dialog.checker_role.click()
+    dialog.save_defaults_button.click()
+    assert saved[-1]["checker_role"] is True
+    meta = dialog.metadata()
+    assert meta.checker_role and "checker" in meta.missing_fields()
+    qtbot.keyClicks(dialog.fields["checker"], "Zhao Min")
+    meta = dialog.metadata()
+    assert meta.checker == "Zhao Min" and "checker" not in meta.missing_fields()
+    # a new certificate starts from the lab's defaults: the switch on
+    fresh = CertificateMetadata().with_lab_defaults(saved[-1])
+    assert fresh.checker_role
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab"))
+    assert not dialog.checker_role.isChecked()
