@@ -39,8 +39,10 @@ class CertificateDialogs:
 
     def edit_certificate_details(self, meta: CertificateMetadata, problems: dict[str, str],
                                  raw: dict) -> CertificateMetadata | None:
-        dialog = CertificateDialog(meta, self.window)
+        dialog = CertificateDialog(meta, self.window,
+                                   timezone=self.window.certificates.lab_timezone())
         dialog.lab_defaults_saved.connect(self.window.certificates.save_lab_defaults)
+        dialog.lab_timezone_set.connect(self.window.certificates.set_lab_timezone)
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:

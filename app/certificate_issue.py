@@ -22,7 +22,7 @@ from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
 
 __all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate",
-           "readings_edited_after_capture"]
+           "readings_edited_after_capture", "specimen_document"]
 
 
 class IssuedNotWritten(OSError):
@@ -37,6 +37,19 @@ def draft_reasons(metadata: CertificateMetadata) -> list[str]:
     """What keeps the certificate a draft; the number is not among them (the register
     allocates it)."""
     return [m for m in metadata.missing_fields() if m != "certificate number"]
+
+
+def specimen_document(document):
+    """The document as a SPECIMEN (``"example": true`` on the command line, the training
+    switch in the window): watermarked, numbered SPECIMEN-… from its details (a number the
+    register refuses, so it cannot clash with an issued one); never recorded."""
+    import hashlib
+
+    stamp = hashlib.sha256(repr(document.metadata.to_dict()).encode()).hexdigest()[:8].upper()
+    number = f"SPECIMEN-{stamp}"
+    return dataclasses.replace(
+        document, specimen=True,
+        metadata=dataclasses.replace(document.metadata, certificate_number=number))
 
 
 def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessions,

@@ -44,6 +44,9 @@ SHARED_DETAILS = ("lab_name", "lab_address", "lab_accreditation", "customer_name
                   "customer_address", "operator", "approver", "calibration_date",
                   "temperature_c", "humidity_pct")
 REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folder
+#: the lab's time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system's): the
+#: date of issue is the lab's local date
+TIMEZONE_KEY = "certificate/lab_timezone"
 
 
 @dataclass(frozen=True)
@@ -215,6 +218,19 @@ class CertificatePresenter:
         return (register_files(self.register_url()) + open_project(self.open_project_path())
                 + input_files(self.inputs()))
 
+    def lab_timezone(self) -> str:
+        """The lab's time zone set in the window (empty: ANGLEBENCH_TIMEZONE, else the
+        system's)."""
+        return str(self.store.value(TIMEZONE_KEY, "") or "").strip()
+
+    def set_lab_timezone(self, name: str) -> None:
+        """Set the lab's time zone; RegisterError (nothing stored) for a name not known."""
+        from models.register.store import lab_timezone
+
+        if name.strip():
+            lab_timezone(name)
+        self.store.setValue(TIMEZONE_KEY, name.strip())
+
     def set_register_url(self, url: str) -> None:
         self.store.setValue(REGISTER_KEY, url.strip())
 
@@ -222,7 +238,7 @@ class CertificatePresenter:
         """The register (RegisterError when it cannot be opened)."""
         from models.register.store import Register
 
-        return Register(self.register_url())
+        return Register(self.register_url(), timezone=self.lab_timezone())
 
     def start_revision(self, revision: PendingRevision) -> None:
         """The next certificate of that workbench amends or replaces ``revision.number``."""
@@ -266,7 +282,7 @@ class CertificatePresenter:
                 continue
             draft = draft_reasons(entered)
             # "No, not a draft": back to the dialog, what was typed kept, to fill in the rest
-            if not draft or self.view.confirm_draft(draft):
+            if entered.example or not draft or self.view.confirm_draft(draft):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
         try:  # details the result refuses (a grade that disagrees) told before the file dialog
@@ -277,12 +293,14 @@ class CertificatePresenter:
             return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
         note = ""
+        if entered.example:  # the training switch: a specimen, neither draft nor revision
+            draft, revision = [], None
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:
                 return False
-        suggested = (entered.certificate_number or
-                     (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
+        suggested = (f"{kind.key}-specimen" if entered.example else entered.certificate_number
+                     or (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
         path = self.view.choose_save_path(tr("Export certificate"),
                                           f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
         if not path:
@@ -292,6 +310,8 @@ class CertificatePresenter:
         self.view.wait_cursor(True)
         try:
             check_output(path, self.protected())
+            if entered.example:
+                return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
                 from app.writers.certificate_pdf import write_certificate_pdf
 
@@ -309,6 +329,21 @@ class CertificatePresenter:
             return False
         finally:
             self.view.wait_cursor(False)
+
+    def _specimen(self, kind, result, entered, settings, source_name, path) -> bool:
+        """The training switch: a SPECIMEN written, nothing recorded (as ``"example": true``
+        on the command line)."""
+        from app.certificate_issue import specimen_document
+        from app.writers.certificate_pdf import write_certificate_pdf
+
+        document = specimen_document(kind.certificate_document(result, entered, source_name,
+                                                               settings))
+        write_certificate_pdf(path, document)
+        self.view.show_status(tr(
+            "SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a "
+            "certificate, and recorded in no register").format(
+                number=document.metadata.certificate_number, path=path), 15000)
+        return True
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
                note, raw_capture=None) -> bool:

@@ -370,16 +370,11 @@ def _specimen(args: argparse.Namespace, document, words) -> None:
     """The bundled example details (``"example": true``): a SPECIMEN, watermarked and
     numbered SPECIMEN-… (a number the register refuses, so it cannot clash), never
     recorded in any register."""
-    import dataclasses
-    import hashlib
-
+    from app.certificate_issue import specimen_document
     from app.writers.certificate_pdf import write_certificate_pdf
 
-    stamp = hashlib.sha256(repr(document.metadata.to_dict()).encode()).hexdigest()[:8].upper()
-    number = f"SPECIMEN-{stamp}"
-    document = dataclasses.replace(
-        document, specimen=True,
-        metadata=dataclasses.replace(document.metadata, certificate_number=number))
+    document = specimen_document(document)
+    number = document.metadata.certificate_number
     write_certificate_pdf(args.certificate, document)
     _say(rendered(message(QT_TR_NOOP(
         "SPECIMEN {number} written to {path}: these are the bundled example details "

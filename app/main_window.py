@@ -99,6 +99,8 @@ class MainWindow(QMainWindow):
             presenter.certificate_details = (
                 lambda key=presenter.kind.key: self.certificates.stored_details(key))
         self.certificates.details_changed = lambda key: self.presenter(key).schedule_refresh()
+        for presenter in self.presenters:  # the table exports spare them too
+            presenter.protected_outputs = self.certificates.protected
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"

@@ -118,6 +118,20 @@ def _parser(words) -> argparse.ArgumentParser:
     return p
 
 
+def _checker(record) -> str:
+    """The checker (核验员) of the certificate's details, from the project state recorded
+    with it; empty when the lab's template has none."""
+    from models.project.file import project_from_json
+
+    try:
+        details = project_from_json(record.project_json).metadata["certificates"][
+            record.workbench]
+    except (TypeError, ValueError, KeyError):
+        return ""
+    checker = details.get("checker", "") if isinstance(details, dict) else ""
+    return checker if isinstance(checker, str) else ""
+
+
 def _print_record(record, register, words) -> None:
     revision = ("" if record.revision == "original"
                 else joined((", ", revision_words(record.revision))))
@@ -128,6 +142,10 @@ def _print_record(record, register, words) -> None:
         if value:
             lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
                                  value=value))
+    checker = _checker(record)
+    if checker:  # kept in the project state recorded with it (the record has no column)
+        lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
+            QT_TR_NOOP("checker")), value=checker))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
     for name, value in record.headline.items():  # a figure's name as the certificate has it

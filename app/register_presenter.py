@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import datetime as dt
 from collections.abc import Callable
-from typing import Protocol
+from typing import Any, Protocol
 
 from PySide6.QtCore import QT_TR_NOOP
 
@@ -40,6 +40,12 @@ class RegisterView(Protocol):
     def tell(self, title: str, text: str) -> None: ...
 
     def print_certificate(self, pdf: bytes, number: str) -> int: ...  # pages; 0: cancelled
+
+    def in_background(self, work: Callable[[], Any], done: Callable[[Any], None]) -> None:
+        """Run ``work`` on a worker thread; ``done(its result or the exception)`` on the GUI
+        thread."""
+
+    def show_pdf_check(self, text: str, warning: bool) -> None: ...
 
 
 def _days(date: str) -> float:
@@ -75,10 +81,43 @@ class RegisterPresenter:
         if problems and search is None:  # checked on opening: said once, not per keystroke
             self.view.tell(tr("Register changed after issue"), "\n".join(
                 translated(p) for p in problems[:20]))
+        if search is None and self.records:  # on opening: the stored PDFs, in the background
+            self.check_pdfs()
         self.view.show_records(COLUMNS, [
             (r.number, translated(status_words(r.status)),
              translated(revision_words(r.revision)), r.issue_date, r.calibration_date, r.workbench,
              r.item_serial, r.customer) for r in self.records])
+
+    def check_pdfs(self) -> None:
+        """Check every stored PDF against the SHA-256 recorded at issue on a worker thread
+        (its own connection; the window stays responsive); a mismatch is shown as a warning
+        in the register window."""
+        from models.register.store import Register
+
+        url, zone = self.certificates.register_url(), self.certificates.lab_timezone()
+        self._pdf_check = getattr(self, "_pdf_check", 0) + 1
+        ticket = self._pdf_check
+
+        def work() -> list:
+            with Register(url, timezone=zone) as register:
+                opened = {str(p) for p in register.problems}
+                return [p for p in register.audit(pdfs=True) if str(p) not in opened]
+
+        def done(found) -> None:
+            if ticket != self._pdf_check:  # a later check (another register) replaced it
+                return
+            if isinstance(found, BaseException):
+                self.view.show_pdf_check(tr("The stored PDFs could not be checked: {reason}")
+                                         .format(reason=explained(found)), True)
+            elif found:
+                self.view.show_pdf_check(tr("Stored PDFs changed after issue: {problems}")
+                                         .format(problems="; ".join(
+                                             translated(p) for p in found[:20])), True)
+            else:
+                self.view.show_pdf_check(tr("Every stored PDF matches its record."), False)
+
+        self.view.show_pdf_check(tr("Checking the stored PDFs…"), False)
+        self.view.in_background(work, done)
 
     def set_location(self, url: str) -> None:
         self.certificates.set_register_url(url)

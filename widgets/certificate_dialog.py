@@ -14,6 +14,7 @@ from typing import Any
 
 from PySide6.QtCore import QT_TR_NOOP, Qt, Signal
 from PySide6.QtWidgets import (
+    QCheckBox,
     QComboBox,
     QDialog,
     QDialogButtonBox,
@@ -41,7 +42,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from models.quantity import UNITS
-from widgets.i18n import declared, tr
+from widgets.i18n import declared, explained, tr
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
@@ -63,7 +64,7 @@ _TEXT_FIELDS = {
     "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
     "humidity_pct": QT_TR_NOOP("Relative humidity (%)"), "operator": QT_TR_NOOP("Operator"),
-    "approver": QT_TR_NOOP("Approved by"),
+    "approver": QT_TR_NOOP("Approved by"), "checker": QT_TR_NOOP("Checked by"),
     "coverage_probability_pct": QT_TR_NOOP("Coverage probability (%)"),
     "as_left_table_sha256": QT_TR_NOOP("Table loaded (sha256)"),
 }
@@ -105,13 +106,17 @@ class CertificateDialog(QDialog):
     """Edit certificate metadata; ``lab_defaults_saved`` carries the lab-wide fields."""
 
     lab_defaults_saved = Signal(dict)
+    #: the lab's time zone (an IANA name, checked; empty: the system's), on Export or save
+    lab_timezone_set = Signal(str)
 
-    def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None) -> None:
+    def __init__(self, metadata: CertificateMetadata, parent: QWidget | None = None,
+                 timezone: str = "") -> None:
         super().__init__(parent)
         self.setWindowTitle(tr("Certificate details"))
         self.fields: dict[str, QLineEdit] = {}
         self._setup_ui()
         self.set_metadata(metadata)
+        self.timezone.setText(timezone)
 
     # -- layout -------------------------------------------------------------
     def _line(self, key: str) -> QLineEdit:
@@ -175,15 +180,40 @@ class CertificateDialog(QDialog):
             self.choices[key] = box
             cert.layout().addRow(tr(label), box)
         self.decision_rule = self.choices["decision_rule"]
+        # the training switch: a specimen exactly as "example": true makes one on the command
+        # line (watermarked, numbered SPECIMEN-…, recorded in no register)
+        self.training = QCheckBox(tr("Training / specimen"))
+        self.training.setObjectName("example")
+        self.training.setToolTip(tr(
+            "A specimen for training or demonstration: watermarked SPECIMEN, numbered "
+            "SPECIMEN-…, not a certificate, and recorded in no register"))
+        cert.layout().addRow("", self.training)
         grid.addWidget(cert, 0, 0)
-        grid.addWidget(self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
-                                                  "number_scheme")), 0, 1)
+        lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
+                                                    "number_scheme"))
+        # the lab's template: a checker signs as well (核验员, JJF 1071's model)
+        self.checker_role = QCheckBox(tr("Certificates are checked (Checked by / 核验员)"))
+        self.checker_role.setObjectName("checker_role")
+        self.checker_role.setToolTip(tr(
+            "The lab's template asks for a checker: the signature block reads Calibrated by / "
+            "Checked by / Approved by, and a certificate without a checker is a draft"))
+        lab.layout().addRow("", self.checker_role)
+        # the lab's time zone: a window setting, not a detail of this certificate
+        self.timezone = QLineEdit()
+        self.timezone.setObjectName("lab_timezone")
+        self.timezone.setPlaceholderText(tr("the system's (e.g. Asia/Shanghai)"))
+        self.timezone.setToolTip(tr(
+            "The lab's time zone (an IANA name such as Asia/Shanghai): an issued certificate "
+            "is dated the lab's local date. Empty: ANGLEBENCH_TIMEZONE, else the system's"))
+        self.timezone.textEdited.connect(lambda _t: self.timezone.setStyleSheet(""))
+        lab.layout().addRow(tr("Time zone"), self.timezone)
+        grid.addWidget(lab, 0, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
         grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
             "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
             "item_resolution")), 1, 1)
         grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
-            "temperature_c", "humidity_pct", "operator", "approver")), 2, 0)
+            "temperature_c", "humidity_pct", "operator", "checker", "approver")), 2, 0)
         notes_box = QGroupBox(tr("Remarks printed on the certificate"))
         self.notes = QPlainTextEdit()
         self.notes.setObjectName("notes")
@@ -257,6 +287,8 @@ class CertificateDialog(QDialog):
         for key, box in self.choices.items():
             box.setCurrentIndex(max(box.findData(data.get(key)), 0))
         self.notes.setPlainText(meta.notes)
+        self.training.setChecked(meta.example)
+        self.checker_role.setChecked(meta.checker_role)
         if not meta.issue_date:
             self.fields["issue_date"].setText(dt.date.today().isoformat())
         self.standards.setRowCount(0)
@@ -288,6 +320,8 @@ class CertificateDialog(QDialog):
         for key, box in self.choices.items():
             data[key] = box.currentData()
         data["notes"] = self.notes.toPlainText()
+        data["example"] = self.training.isChecked()
+        data["checker_role"] = self.checker_role.isChecked()
         standards = []
         for row in range(self.standards.rowCount()):
             entry = {key: (self.standards.item(row, col).text()
@@ -340,11 +374,31 @@ class CertificateDialog(QDialog):
             edit.setFocus()
             self.details_area.ensureWidgetVisible(edit)
 
+    def _timezone_checked(self) -> str | None:
+        """The time zone typed (empty: the system's); None, marked, when it is not known."""
+        from models.register.store import RegisterError, lab_timezone
+
+        name = self.timezone.text().strip()
+        if name:
+            try:
+                lab_timezone(name)
+            except RegisterError as exc:
+                self.timezone.setStyleSheet(_ERROR_STYLE)
+                self.error_label.setStyleSheet("color: #b00020;")
+                self.error_label.setText(explained(exc))
+                self.details_area.ensureWidgetVisible(self.timezone)
+                return None
+        return name
+
     def accept(self) -> None:  # the dialog stays open on a bad field
         try:
             self.metadata()
         except MetadataError:
             return
+        zone = self._timezone_checked()
+        if zone is None:
+            return
+        self.lab_timezone_set.emit(zone)
         super().accept()
 
     def _save_lab_defaults(self) -> None:
@@ -352,6 +406,10 @@ class CertificateDialog(QDialog):
             meta = self.metadata()
         except MetadataError:
             return
+        zone = self._timezone_checked()
+        if zone is None:
+            return
+        self.lab_timezone_set.emit(zone)
         self.lab_defaults_saved.emit(meta.lab_defaults())
         self.error_label.setStyleSheet("color: #1b5e20;")
         self.error_label.setText(tr("Saved as the lab's defaults."))

@@ -6,9 +6,10 @@ the presenter is app/register_presenter.py."""
 from __future__ import annotations
 
 import datetime as dt
+import threading
 
 import pyqtgraph as pg
-from PySide6.QtCore import QLocale, Qt
+from PySide6.QtCore import QLocale, QObject, Qt, Signal
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
@@ -32,6 +33,7 @@ from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
 from widgets.screen_fit import fit_to_screen
 from widgets.text_table import show_text_table
+from widgets.workers import emit_if_alive
 
 EPOCH = dt.date(1970, 1, 1).toordinal()
 _MONTHS = ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec")
@@ -65,9 +67,24 @@ class LocalDateAxis(pg.DateAxisItem):
 COLOURS = ("#1f5fbf", "#c0392b", "#27ae60", "#8e44ad", "#e67e22", "#16a085", "#7f8c8d")
 
 
+class _Delivery(QObject):
+    """Carries a worker thread's result to the GUI thread (a queued signal)."""
+
+    finished = Signal(object, object)  # done, its result
+
+
 class RegisterWindow(QDialog):
     def __init__(self, parent=None) -> None:
         super().__init__(parent)
+        self._delivery = _Delivery(self)
+        self._delivery.finished.connect(lambda done, result: done(result))
+        self.background: list[threading.Thread] = []  # the checks started (a test joins them)
+        # the stored PDFs' check, run in the background on opening: a mismatch stays in sight
+        self.pdf_check = QLabel()
+        self.pdf_check.setObjectName("pdf_check")
+        self.pdf_check.setWordWrap(True)
+        self.pdf_check.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.pdf_check_warning = False
         live(self.setWindowTitle, tr("Certificate register"))
         fit_to_screen(self, 1100, 720)
         self.location = QLabel()
@@ -184,6 +201,7 @@ class RegisterWindow(QDialog):
         splitter.setSizes([420, 300])
         layout = QVBoxLayout(self)
         layout.addLayout(top)
+        layout.addWidget(self.pdf_check)
         layout.addWidget(splitter, 1)
 
     # -- wiring ------------------------------------------------------------------------
@@ -277,6 +295,26 @@ class RegisterWindow(QDialog):
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.information(self, title, text)
+
+    def in_background(self, work, done) -> None:
+        """``work()`` on a thread of its own; ``done(result or exception)`` on the GUI
+        thread (dropped when the window is gone)."""
+        def run() -> None:
+            try:
+                result = work()
+            except Exception as exc:  # noqa: BLE001 - said in the window, not lost
+                result = exc
+            emit_if_alive(self._delivery.finished, done, result)
+
+        thread = threading.Thread(target=run, name="register-pdf-check", daemon=True)
+        self.background = [t for t in self.background if t.is_alive()] + [thread]
+        thread.start()
+
+    def show_pdf_check(self, text: str, warning: bool) -> None:
+        self.pdf_check_warning = warning
+        self.pdf_check.setStyleSheet("color: #b00020; font-weight: bold;" if warning
+                                     else "color: #555555;")
+        self.pdf_check.setText(("⚠ " if warning else "") + text)
 
     def print_certificate(self, pdf: bytes, number: str) -> int:
         """The print dialog, then the certificate's pages as issued; 0 when cancelled."""

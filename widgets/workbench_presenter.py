@@ -171,6 +171,9 @@ class WorkbenchPresenter(QObject):
                          (view if issubclass(type(view), QObject) else None))
         self.kind = kind
         self.view = view
+        #: the files no export of this workbench may replace (the main window sets it: the
+        #: register and its journals, the open project, the readings files imported)
+        self.protected_outputs = list
         self.workers = application_workers()  # the application's thread pool
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
@@ -220,6 +223,18 @@ class WorkbenchPresenter(QObject):
         on_language_change(self, self._redraw)
 
     # -- subclass hooks ---------------------------------------------------
+    def output_refused(self, path: str, title: str) -> bool:
+        """Whether the export to ``path`` is refused (told, nothing written): it is the
+        register, the open project or an input (models/project/output_guard.py)."""
+        from models.project.output_guard import OutputRefused, check_output
+
+        try:
+            check_output(path, self.protected_outputs())
+        except OutputRefused as exc:
+            self.view.tell(title, explained(exc))
+            return True
+        return False
+
     def build_settings(self) -> None:
         """The set-up fields, one per declared setting of the kind."""
         for parameter in self.kind.parameters:

@@ -920,15 +920,21 @@ def _signatures(pdf: _CertificatePdf) -> None:
         pdf.add_page()
     pdf.ln(8)
     y = pdf.get_y()
-    half = pdf.epw / 2
-    for i, (role, name) in enumerate(((QT_TR_NOOP("Operator"), meta.operator),
-                                      (QT_TR_NOOP("Approved by"), meta.approver))):
+    signers = [(QT_TR_NOOP("Operator"), meta.operator), (QT_TR_NOOP("Approved by"), meta.approver)]
+    if meta.checker_role:  # the lab's template asks for a checker (核验员, JJF 1071)
+        signers = [(QT_TR_NOOP("Calibrated by"), meta.operator),
+                   (QT_TR_NOOP("Checked by"), meta.checker),
+                   (QT_TR_NOOP("Approved by"), meta.approver)]
+    half = pdf.epw / len(signers)
+    for i, (role, name) in enumerate(signers):
         x = pdf.l_margin + i * half
         pdf.set_xy(x, y + 12)
         pdf.set_draw_color(*INK)
         pdf.line(x, y + 12, x + half - 12, y + 12)
         pdf.set_font(FONT, "", 8)
-        pdf.cell(half - 12, 4.5, f"{pdf.say(role)}{_colon(pdf.document)}{name or '—'}",
+        said = (f"{_say('zh')(role)} {role}" if meta.checker_role and pdf.language == "zh+en"
+                else pdf.say(role))
+        pdf.cell(half - 12, 4.5, f"{said}{_colon(pdf.document)}{name or '—'}",
                  new_x=XPos.LEFT, new_y=YPos.NEXT)
         pdf.set_x(x)
         pdf.cell(half - 12, 4.5, pdf.say(QT_TR_NOOP("Signature and date")), new_x=XPos.LEFT,

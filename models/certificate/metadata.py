@@ -43,7 +43,7 @@ MAX_NOTES_CHARS = 2000
 # as the lab's defaults, and a new certificate starts from them.
 LAB_DEFAULT_FIELDS = ("lab_name", "lab_address", "lab_accreditation", "number_scheme",
                       "standards", "operator", "approver", "decision_rule", "decision_quantity",
-                      "coverage_probability_pct", "document_type")
+                      "coverage_probability_pct", "document_type", "checker_role", "checker")
 
 #: What the document is: a calibration certificate, or a test report.
 DOCUMENT_TYPES = {"calibration": QT_TR_NOOP("Calibration certificate"),
@@ -261,6 +261,10 @@ class CertificateMetadata:
     created: str = ""  # ISO date-time written into the PDF; empty: the time of export
     operator: str = ""
     approver: str = ""
+    # the lab's template asks for a checker (核验员, JJF 1071's model): the signature block has
+    # operator / checker / approver, and the checker is required like the approver
+    checker_role: bool = False
+    checker: str = ""
     decision_rule: str = "guarded"
     decision_quantity: str = "half_range"
     coverage_probability_pct: float = 100.0 * DEFAULT_COVERAGE_PROBABILITY
@@ -307,10 +311,10 @@ class CertificateMetadata:
                 values[f.name] = tuple(ReferenceStandard.from_dict(s, i) for i, s in enumerate(raw))
             elif f.name in cls._NUMBERS:
                 values[f.name] = _optional_number(raw, f.name)
-            elif f.name == "example":
+            elif f.name in ("example", "checker_role"):
                 if not isinstance(raw, bool):
                     raise MetadataError(message(QT_TR_NOOP(
-                        "certificate field 'example' must be true or false")))
+                        "certificate field '{name}' must be true or false"), name=f.name))
                 values[f.name] = raw
             elif f.name in cls._DATES:
                 values[f.name] = _date(raw, f.name)
@@ -459,6 +463,8 @@ class CertificateMetadata:
             QT_TR_NOOP("operator"): self.operator,
             QT_TR_NOOP("approver"): self.approver,
         }
+        if self.checker_role:
+            required[QT_TR_NOOP("checker")] = self.checker
         missing = [name for name, value in required.items() if not value]
         if not self.standards:
             missing.append(QT_TR_NOOP("reference standards"))

@@ -1401,6 +1401,7 @@
     <message>
         <source>test plan: targets</source>
         <translation>测试计划：目标位置</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>theodolite accuracy (1σ)</source>
@@ -1489,6 +1490,10 @@
     <message>
         <source>{path}: {reason}. Nothing else was changed.</source>
         <translation>{path}：{reason}。其他内容均未改变。</translation>
+    </message>
+    <message>
+        <source>SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a certificate, and recorded in no register</source>
+        <translation>样本 {number} 已写入 {path}（培训）：带“样本”水印，不是证书，未记录在任何登记册中</translation>
     </message>
     <message>
         <source>Not issued</source>
@@ -1964,6 +1969,22 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>登记册</translation>
     </message>
     <message>
+        <source>The stored PDFs could not be checked: {reason}</source>
+        <translation>无法核对存储的 PDF：{reason}</translation>
+    </message>
+    <message>
+        <source>Stored PDFs changed after issue: {problems}</source>
+        <translation>存储的 PDF 在签发后被改动：{problems}</translation>
+    </message>
+    <message>
+        <source>Every stored PDF matches its record.</source>
+        <translation>所有存储的 PDF 均与其记录一致。</translation>
+    </message>
+    <message>
+        <source>Checking the stored PDFs…</source>
+        <translation>正在核对存储的 PDF…</translation>
+    </message>
+    <message>
         <source>Select a certificate first.</source>
         <translation>请先选择一份证书。</translation>
     </message>
@@ -2157,6 +2178,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>certificate field &apos;standards&apos; must be a list</source>
         <translation>证书字段 &apos;standards&apos; 必须是列表</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}&apos; must be true or false</source>
+        <translation>证书字段“{name}”必须为 true 或 false</translation>
     </message>
     <message>
         <source>certificate field &apos;language&apos; must be one of {join}, not &apos;{language}&apos;</source>
@@ -2386,6 +2411,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>  {field}: {value}</source>
         <translation>  {field}：{value}</translation>
+    </message>
+    <message>
+        <source>checker</source>
+        <translation>核验员</translation>
     </message>
     <message>
         <source>  chain head before it (printed on it): {head}</source>
@@ -2753,6 +2782,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>相对湿度 {h} %</translation>
     </message>
     <message>
+        <source>Calibrated by</source>
+        <translation>校准员</translation>
+    </message>
+    <message>
+        <source>Checked by</source>
+        <translation>核验员</translation>
+    </message>
+    <message>
         <source>Signature and date</source>
         <translation>签名及日期</translation>
     </message>
@@ -2774,6 +2811,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Certificate details</source>
+        <extracomment>the lab&apos;s time zone (an IANA name, checked; empty: the system&apos;s), on Export or save</extracomment>
         <translation>证书信息</translation>
     </message>
     <message>
@@ -2788,11 +2826,40 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <source>Certificate</source>
         <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any)</extracomment>
         <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
         <translation>证书</translation>
     </message>
     <message>
         <source>Fringe: the checksum of the correction table loaded into the encoder (printed in the exported table); the compensated error is then stated as left</source>
         <translation>条纹信号：载入编码器的修正表的校验和（印在导出的修正表中）；补偿后误差即作为交付状态给出</translation>
+    </message>
+    <message>
+        <source>Training / specimen</source>
+        <translation>培训 / 样本</translation>
+    </message>
+    <message>
+        <source>A specimen for training or demonstration: watermarked SPECIMEN, numbered SPECIMEN-…, not a certificate, and recorded in no register</source>
+        <translation>用于培训或演示的样本：带“样本”水印，编号为 SPECIMEN-…，不是证书，不记录在任何登记册中</translation>
+    </message>
+    <message>
+        <source>Certificates are checked (Checked by / 核验员)</source>
+        <translation>证书须经核验（核验员）</translation>
+    </message>
+    <message>
+        <source>The lab&apos;s template asks for a checker: the signature block reads Calibrated by / Checked by / Approved by, and a certificate without a checker is a draft</source>
+        <translation>实验室的证书模板要求核验员：签字栏为 校准员 / 核验员 / 批准人，未填写核验员的证书为草稿</translation>
+    </message>
+    <message>
+        <source>the system&apos;s (e.g. Asia/Shanghai)</source>
+        <translation>系统时区（例如 Asia/Shanghai）</translation>
+    </message>
+    <message>
+        <source>The lab&apos;s time zone (an IANA name such as Asia/Shanghai): an issued certificate is dated the lab&apos;s local date. Empty: ANGLEBENCH_TIMEZONE, else the system&apos;s</source>
+        <translation>实验室所在时区（IANA 名称，例如 Asia/Shanghai）：签发的证书以实验室当地日期为签发日期。留空：使用 ANGLEBENCH_TIMEZONE，否则使用系统时区</translation>
+    </message>
+    <message>
+        <source>Time zone</source>
+        <translation>时区</translation>
     </message>
     <message>
         <source>Environment and people</source>
@@ -3263,6 +3330,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Import {name}</source>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported)</extracomment>
         <translation>导入 {name}</translation>
     </message>
     <message>
@@ -5854,6 +5922,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>控制器的设置，写作 KEY=VALUE，以逗号分隔，例如 axis=AX4, system=1, modulo=360, reference=0（SINUMERIK）；axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i（FANUC）；axis=C, values=error, modulo=360（HEIDENHAIN）；name=Axis1（TwinCAT）；axis_name=C, max_points=1500, value_type=sgn32（ISG）；axis=X, values=correction（Mach4）；modulo=360, travel_min=-720, travel_max=720（LinuxCNC，回转轴）</translation>
         <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
         <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向），并显示下一个面；每个测回最后再测一次第 1 面（闭合）。0：无计划</translation>
+        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
@@ -5882,6 +5952,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
         <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
+        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
@@ -6112,10 +6183,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>at the customer&apos;s site</source>
         <translation>在委托方现场</translation>
-    </message>
-    <message>
-        <source>certificate field &apos;example&apos; must be true or false</source>
-        <translation>证书字段“example”必须为 true 或 false</translation>
     </message>
     <message>
         <source>certificate field &apos;calibration_place&apos; must be one of {join}, not &apos;{place}&apos;</source>

@@ -4,6 +4,7 @@ are the model)."""
 from __future__ import annotations
 
 import dataclasses
+import datetime as dt
 import re
 from unittest import mock
 
@@ -267,3 +268,31 @@ def test_a_standard_as_large_as_the_tolerance_is_asked_about(parts, samples_dir)
     (warnings,), _ = view.confirm_standards.call_args
     assert "Theodolite" in warnings[0] and "±0.4\"" in warnings[0]
     view.choose_save_path.assert_not_called()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("zone, day", [("Pacific/Kiritimati", "2026-12-02"),  # UTC+14
+                                       ("Pacific/Pago_Pago", "2026-12-01")])  # UTC−11
+def test_the_labs_time_zone_set_in_the_window_dates_the_issue(parts, samples_dir, tmp_path,
+                                                             monkeypatch, zone, day):
+    from models.register.store import Register, RegisterError
+
+    presenter, view, _, _ = parts
+    # the window's setting wins over the command line's variable
+    monkeypatch.setenv("ANGLEBENCH_TIMEZONE", "Europe/Berlin")
+    monkeypatch.setattr(Register, "clock", staticmethod(
+        lambda: dt.datetime(2026, 12, 1, 12, 30, tzinfo=dt.timezone.utc)))
+    with pytest.raises(RegisterError, match="Mars/Olympus"):
+        presenter.set_lab_timezone("Mars/Olympus")
+    assert presenter.lab_timezone() == ""  # a name not known is not stored
+    presenter.set_lab_timezone(f" {zone} ")
+    assert presenter.lab_timezone() == zone
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "dated.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    with presenter.open_register() as register:
+        (record,) = register.list()
+    assert record.issue_date == day
+    text = " ".join(p.extract_text() for p in PdfReader(tmp_path / "dated.pdf").pages)
+    assert day in text

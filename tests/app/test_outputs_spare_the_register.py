@@ -203,3 +203,64 @@ def test_the_window_refuses_an_export_onto_an_imported_readings_file(register, t
     assert not presenter.export_results(kind, result, {}, "run.csv")
     assert "is an input" in view.tell.call_args.args[1]
     assert readings.read_bytes() == before
+
+
+@pytest.mark.slow
+def test_table_exports_refuse_an_input_the_open_project_and_the_register(register, tmp_path,
+                                                                         samples_dir, capsys):
+    """--table of the fringe, positioning and cross-calibration workbenches onto an input
+    (the readings, the details, the log compared) is refused before anything is written."""
+    meta = tmp_path / "meta.json"
+    meta.write_text((samples_dir / "certificate_fringe.json").read_text("utf-8"), "utf-8")
+    for key in ("fringe", "positioning", "crosscal"):
+        readings = tmp_path / f"{key}.csv"
+        readings.write_bytes((samples_dir / KINDS[key].sample_file).read_bytes())
+        kept = {p: _digest(p) for p in (readings, meta)}
+        for target in (readings, meta, tmp_path / f"link-{key}.tsv"):
+            if target.name.startswith("link"):
+                target.symlink_to(readings)
+            assert main(["analyze", key, str(readings), "--metadata", str(meta),
+                         "--table", str(target)]) == 2, key
+            err = capsys.readouterr().err
+            assert f"--table {target} is an input" in err and "nothing was written" in err, err
+        assert {p: _digest(p) for p in kept} == kept
+    before = _digest(register)
+    after = tmp_path / "after.csv"
+    after.write_bytes((samples_dir / KINDS["positioning"].sample_file).read_bytes())
+    assert main(["analyze", "positioning", str(samples_dir / KINDS["positioning"].sample_file),
+                 "--compare-after", str(after), "--table", str(after)]) == 2
+    assert "is an input" in capsys.readouterr().err
+    assert _digest(register) == before
+
+
+@pytest.mark.slow
+def test_the_windows_table_exports_spare_inputs_the_project_and_the_register(
+        register, window, tmp_path, qtbot):
+    """The export buttons of the fringe, positioning and cross-calibration workbenches are
+    guarded like the certificate's: an imported readings file, the open project and the
+    register (named through a link) are refused, told, and left as they were."""
+    window.load_all_samples()
+    readings = tmp_path / "imported.csv"
+    readings.write_text("1,2\n")
+    window.imported_files.append(str(readings))
+    project = tmp_path / "open.anglebench.json"
+    project.write_text("{}")
+    window.projects.path = project
+    (tmp_path / "register-link.csv").symlink_to(register)
+    kept = {p: _digest(p) for p in (readings, project, register)}
+    exports = {"fringe": "export_table", "positioning": "export_compensation",
+               "crosscal": "save_polygon_reference"}
+    for key, name in exports.items():
+        presenter = window.presenter_of(key) if hasattr(window, "presenter_of") else next(
+            p for p in window.presenters if p.kind.key == key)
+        qtbot.waitUntil(lambda p=presenter: p.result is not None, timeout=60000)
+        told = []
+        presenter.view.tell = lambda title, text, told=told: told.append(text)
+        for target, says in ((readings, "is an input"), (project, "is the open project"),
+                             (tmp_path / "register-link.csv", "is the certificate register")):
+            assert getattr(presenter, name)(str(target)) == "", (key, target)
+            assert says in told[-1] and "nothing was written" in told[-1], (key, told)
+    assert {p: _digest(p) for p in kept} == kept
+    fringe = next(p for p in window.presenters if p.kind.key == "fringe")
+    assert fringe.export_table(str(tmp_path / "table.csv"))  # another name: written
+    assert (tmp_path / "table.csv").stat().st_size > 0

@@ -230,3 +230,41 @@ def test_a_pdf_copied_into_a_second_record_is_said(tmp_path, capsys):
     assert main(["register", "verify", str(tmp_path / "1.pdf")]) == 1
     out = capsys.readouterr().out
     assert f"its SHA-256 is in 2 records ({numbers[0]}, {numbers[2]})" in out
+
+
+def _pdf_text(path) -> str:
+    """The PDF's text as poppler's pdftotext reads it (pypdf where poppler is missing)."""
+    if shutil.which("pdftotext"):
+        return subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True,
+                              check=True, text=True).stdout
+    from pypdf import PdfReader
+
+    return "\n".join(p.extract_text() for p in PdfReader(path).pages)
+
+
+@pytest.mark.slow
+def test_a_checker_signs_when_the_labs_template_asks_and_show_prints_it(samples_dir, tmp_path,
+                                                                       capsys):
+    # without the setting: two signatures, as before
+    code, _ = issue(samples_dir, tmp_path, "two", capsys, certificate_number="",
+                    checker="Zhao Min")
+    text = _pdf_text(tmp_path / "two.pdf")
+    assert code == 0 and "Operator" in text and "Checked by" not in text
+    # asked for, but no checker named: a draft, nothing recorded
+    code, err = issue(samples_dir, tmp_path, "draft", capsys, certificate_number="",
+                      checker_role=True)
+    assert code == 0 and "checker missing; nothing was recorded" in err
+    for language, roles in (("en", ("Calibrated by", "Checked by", "Approved by")),
+                            ("zh", ("校准员", "核验员", "批准人")),
+                            ("zh+en", ("校准员 Calibrated by", "核验员 Checked by",
+                                       "批准人 Approved by"))):
+        name = language.replace("+", "")
+        code, err = issue(samples_dir, tmp_path, name, capsys, certificate_number="",
+                          checker_role=True, checker="Zhao Min", language=language)
+        assert code == 0, err
+        text = " ".join(_pdf_text(tmp_path / f"{name}.pdf").split())
+        assert all(role in text for role in roles), (language, text[-400:])
+        assert "Zhao Min" in text
+        number = err.split("Certificate ")[1].split()[0]
+        assert main(["register", "show", number]) == 0
+        assert "checker: Zhao Min" in capsys.readouterr().out

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import re
 
 import pytest
 from pypdf import PdfReader
@@ -203,3 +204,81 @@ def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
     qtbot.addWidget(again)
     assert again.choices["tolerance_unit"].currentText() == "µrad"
     assert again.metadata() == meta
+
+
+def test_the_training_switch_reads_as_example_and_back(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"))
+    qtbot.addWidget(dialog)
+    assert not dialog.training.isChecked() and not dialog.metadata().example
+    dialog.training.click()
+    assert dialog.metadata().example is True
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab"))
+    assert not dialog.training.isChecked()
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab", example=True))
+    assert dialog.training.isChecked()
+
+
+@pytest.mark.slow
+def test_the_training_switch_gives_a_specimen_recorded_nowhere(window, qtbot, tmp_path,
+                                                               monkeypatch):
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+
+    def fill_and_accept(dialog):
+        _type_details(qtbot, dialog)  # complete details: without the switch, an issue
+        dialog.training.click()
+        dialog.accept()
+        return dialog.result()
+
+    monkeypatch.setattr(CertificateDialog, "exec", fill_and_accept)
+    out = tmp_path / "training.pdf"
+    suggested = []
+    window.certificates.view.choose_save_path = lambda *a: suggested.append(a[1]) or str(out)
+    shown = []
+    window.certificates.view.show_status = lambda text, ms: shown.append(text)
+    window.menus.export_action.trigger()
+    assert window.told == []
+    assert suggested == ["theodolite-specimen.pdf"]
+    text = "\n".join(p.extract_text() for p in PdfReader(io.BytesIO(out.read_bytes())).pages)
+    (number,) = set(re.findall(r"SPECIMEN-[0-9A-F]{8}", text))
+    assert "SPECIMEN" in text.replace(number, "") and "AB-2026" not in text
+    assert shown and number in shown[-1] and "recorded in no register" in shown[-1]
+    with window.certificates.open_register() as register:
+        assert register.list() == []  # no number used, nothing recorded
+
+
+def test_the_labs_time_zone_is_checked_and_set_from_the_dialog(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"), timezone="Asia/Shanghai")
+    qtbot.addWidget(dialog)
+    assert dialog.timezone.text() == "Asia/Shanghai"
+    set_to = []
+    dialog.lab_timezone_set.connect(set_to.append)
+    dialog.timezone.setText("Asia/Beijing")  # not an IANA name
+    dialog.accept()
+    assert set_to == [] and "Asia/Beijing" in dialog.error_label.text()
+    assert "background" in dialog.timezone.styleSheet()
+    assert dialog.result() != QDialog.DialogCode.Accepted
+    dialog.timezone.setText("Asia/Shanghai")
+    with qtbot.waitSignal(dialog.lab_timezone_set):
+        dialog.accept()
+    assert set_to == ["Asia/Shanghai"] and dialog.result() == QDialog.DialogCode.Accepted
+
+
+def test_the_checker_switch_is_a_lab_default_and_asks_for_a_checker(qtbot):
+    dialog = CertificateDialog(CertificateMetadata(lab_name="Lab"))
+    qtbot.addWidget(dialog)
+    saved = []
+    dialog.lab_defaults_saved.connect(saved.append)
+    dialog.checker_role.click()
+    dialog.save_defaults_button.click()
+    assert saved[-1]["checker_role"] is True
+    meta = dialog.metadata()
+    assert meta.checker_role and "checker" in meta.missing_fields()
+    qtbot.keyClicks(dialog.fields["checker"], "Zhao Min")
+    meta = dialog.metadata()
+    assert meta.checker == "Zhao Min" and "checker" not in meta.missing_fields()
+    # a new certificate starts from the lab's defaults: the switch on
+    fresh = CertificateMetadata().with_lab_defaults(saved[-1])
+    assert fresh.checker_role
+    dialog.set_metadata(CertificateMetadata(lab_name="Lab"))
+    assert not dialog.checker_role.isChecked()

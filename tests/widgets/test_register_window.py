@@ -23,7 +23,9 @@ def issue_polygon(register, samples_dir, tmp_path, name, **changes):
     rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
     result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
     data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
-    data.update({"certificate_number": "", **changes})
+    # the lab's own details made from the example (with "example": true the window makes a
+    # specimen, as the command line does)
+    data.update({"certificate_number": "", "example": False, **changes})
     return issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
                              kind.checked_settings({}), rows, "polygon_sample.csv",
                              str(tmp_path / f"{name}.pdf"))
@@ -172,3 +174,39 @@ def test_the_history_is_labelled_and_empty_says_so_in_the_window_language(qtbot)
         install_language("en")
     assert any("2月" in text for text in chinese) and not any(
         name in text for text in chinese for name in ("Feb", "Mar", "Apr")), chinese
+
+
+def test_opening_checks_the_stored_pdfs_in_the_background(window, qtbot):
+    """A stored PDF swapped for another record's is shown as a warning in the register window,
+    found by a worker thread while the window stays free."""
+    import sqlalchemy as sa
+
+    from models.register.chain import HEAD_MARK
+    from models.register.store import IssueRequest
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="RX-1")
+    with window.certificates.open_register() as register:
+        numbers = [register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                                  lambda m, head="": f"%PDF {m.certificate_number} "
+                                  f"{HEAD_MARK}{head}".encode())[0].number for _ in range(3)]
+    window.show_register()
+    qtbot.waitUntil(lambda: "matches" in window.register_window.pdf_check.text(), timeout=20000)
+    assert not window.register_window.pdf_check_warning
+    window.register_window.close()
+    engine = sa.create_engine(window.certificates.register_url())
+    with engine.begin() as conn:  # the second record's PDF replaced by the first's
+        conn.execute(sa.text("UPDATE certificates SET pdf = (SELECT pdf FROM certificates "
+                             "WHERE number = :a) WHERE number = :b"),
+                     {"a": numbers[0], "b": numbers[1]})
+    engine.dispose()
+    window.show_register()
+    # the check runs on its own thread: on return the window says it is checking
+    assert window.register_window.pdf_check.text() == "Checking the stored PDFs…"
+    qtbot.waitUntil(lambda: window.register_window.pdf_check_warning, timeout=20000)
+    text = window.register_window.pdf_check.text()
+    assert numbers[1] in text and "does not match" in text and numbers[0] not in text
+    # the list is shown, not refused
+    assert sorted(r.number for r in window.register_presenter.records) == sorted(numbers)
+    for thread in window.register_window.background:
+        thread.join(5)

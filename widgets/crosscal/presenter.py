@@ -40,6 +40,8 @@ class CrossCalPresenter(WorkbenchPresenter):
     def save_polygon_reference(self, path: str) -> str:
         """The face deviations (from face 1, with U) as the polygon workbench loads a
         certificate; a design that does not determine them is told, not written."""
+        if self.output_refused(path, tr("Cannot save the face deviations")):
+            return ""
         try:
             what = self.kind.correction_table(self.result, self._settings, path)
         except (ValueError, OSError) as exc:

@@ -40,6 +40,8 @@ class FringePresenter(WorkbenchPresenter):
     def export_table(self, path: str) -> str:
         """Write the correction table through the kind (as the command line does); a table
         that cannot be written is told, naming the file, and nothing else changes."""
+        if self.output_refused(path, tr("Cannot export the correction table")):
+            return ""
         try:
             what = self.kind.correction_table(self.result, self._settings, path)
         except ValueError as exc:

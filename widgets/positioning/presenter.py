@@ -99,6 +99,8 @@ class PositioningPresenter(WorkbenchPresenter):
 
     def export_compensation(self, path: str) -> str:
         """Write the table as set up; a table that cannot be made is told, not written."""
+        if self.output_refused(path, tr("Cannot export the compensation table")):
+            return ""
         try:
             what = self.kind.correction_table(self.result, self._settings, path)
         except ValueError as exc:
