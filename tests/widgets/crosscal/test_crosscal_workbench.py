@@ -236,11 +236,18 @@ def test_each_stated_u_covers_its_stated_reference_on_the_independent_bench():
     assert np.max(np.abs(u1[1:] / u[1:] - 1.0)) > 0.1
     meta = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": "Lab"})
     document = KIND.certificate_document(result, meta, "x.csv", settings)
-    table = np.array([[float(c) for c in row] for row in document.results.rows])
-    np.testing.assert_allclose(table[:, 2], d, atol=6e-4)  # d_i about the mean, its U
-    np.testing.assert_allclose(table[:, 3], u, atol=6e-4)
-    np.testing.assert_allclose(table[:, 4], d1, atol=6e-4)  # d_i − d_1, its own U
-    np.testing.assert_allclose(table[:, 5], u1, atol=6e-4)
+    def cell(text):  # GUM 7.2.6: each figure to its U's decimal; U 0 is "reference point"
+        if not any(ch.isdigit() for ch in str(text)):
+            return 0.0, 0.0
+        text = str(text).strip()
+        decimals = len(text.split(".")[1]) if "." in text else 0
+        return float(text), 0.5 * 10.0 ** -decimals + 1e-12
+
+    cells = [[cell(c) for c in row] for row in document.results.rows]
+    table = np.array([[v for v, _ in row] for row in cells])
+    rounding = np.array([[r for _, r in row] for row in cells])
+    for column, truth in ((2, d), (3, u), (4, d1), (5, u1)):  # d_i, its U; d_i − d_1, its own U
+        assert np.all(np.abs(table[:, column] - truth) <= rounding[:, column]), column
     assert "From face 1" in document.results.header[4] and "about the mean" in document.results.note
     np.testing.assert_allclose(document.budget.expanded, u, rtol=1e-9, atol=1e-12)
 
