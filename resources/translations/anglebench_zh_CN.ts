@@ -1401,7 +1401,6 @@
     <message>
         <source>test plan: targets</source>
         <translation>测试计划：目标位置</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>theodolite accuracy (1σ)</source>
@@ -2682,10 +2681,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>本证书之前的登记册链头：{head}…</translation>
     </message>
     <message>
-        <source>as stated in the settings: {inputs}</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>not stated</source>
         <translation>未注明</translation>
     </message>
@@ -2824,9 +2819,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Certificate</source>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any)</extracomment>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
-        <extracomment>details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too</extracomment>
+        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
         <translation>证书</translation>
     </message>
     <message>
@@ -3325,12 +3318,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Set-up: {names}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
         <translation>设置：{names}</translation>
     </message>
     <message>
         <source>Import {name}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported)</extracomment>
         <translation>导入 {name}</translation>
     </message>
     <message>
@@ -4730,15 +4722,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>a rotary joint&apos;s travel, highest position (MAX_LIMIT)</source>
         <translation>回转轴的行程，最高位置（MAX_LIMIT）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a rotary joint&apos;s travel, lowest position (MIN_LIMIT)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a rotary joint&apos;s travel, highest position (MAX_LIMIT)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>LinuxCNC&apos;s compensation file lists the forward and the reverse positions: export separate tables (both directions measured)</source>
@@ -4763,23 +4746,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{size} points: choose a larger step or a shorter travel</source>
         <translation>{size} 个点：请选择更大的步距或更短的行程</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>LinuxCNC does not wrap a rotary joint&apos;s table: the closed turn is written over the joint&apos;s travel {low}…{high}; beyond it the end values apply</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>warning: LinuxCNC does not wrap a rotary joint&apos;s table: beyond {first}…{last} it applies the end values (at {beyond} the value at {last}, not at {wrapped}); give modulo=360, travel_min and travel_max to write it over the joint&apos;s travel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>at most {n} lines per joint ({source})</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>{size} points: choose a larger step or a shorter travel</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>LinuxCNC compensation file (COMP_FILE_TYPE = 0), {n} points in {unit}</source>
@@ -5147,6 +5113,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points. Its width against what a correct interval needs (the half-width about the value that covers p of the runs) is reported beside it; the target is 1.6 times at the most.</source>
         <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点。其宽度与正确区间所需宽度（以该值为中心、包含 p 次仿真的半宽）之比列于旁边；目标为不超过 1.6 倍。</translation>
+    </message>
+    <message>
         <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the width a correct interval needs (2z × the spread of measured − truth over the same tests); 1.6 × is the aim.</source>
         <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以正确区间所需宽度的倍数给出（同一批检验中 测得值 − 真值 分散性的 2z 倍）；目标为 1.6 倍。</translation>
     </message>
@@ -5366,15 +5334,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>series={series}; it takes {known}</source>
         <translation>series={series}；可选值为 {known}</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>series ({source})</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>series={series}; it takes {known}</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>one table ({source})</source>
@@ -5459,7 +5418,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>tnc (iTNC, TNC 6xx, MANUALplus) or tnc407 (TNC 407/415/425: a spacing of 2^n × 0.1 µm)</source>
         <translation>tnc（iTNC、TNC 6xx、MANUALplus）或 tnc407（TNC 407/415/425：点距为 2^n × 0.1 µm）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{controller} options: values=error or values=correction must be given (the sign of a .COM value could not be verified: take it from the machine&apos;s manual)</source>
@@ -5481,19 +5439,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>a step of {step} mm is not one: choose {below} mm or {above} mm (compensation step)</source>
         <translation>步距 {step} mm 不符合：请选择 {below} mm 或 {above} mm（补偿步距）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the points are spaced {low}…{high}: resample the table at one compensation step, e.g. {step} (compensation step)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>TNC 407/415/425: a spacing of 2^n × 0.1 µm ({source})</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a step of {step} mm is not one: choose {below} mm or {above} mm (compensation step)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>at most {n} entries per .COM table ({source})</source>
@@ -5534,13 +5479,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>type of pos/neg in the kernel&apos;s documentation: sgn16 (older) or sgn32</source>
         <translation>内核文档中 pos/neg 的数据类型：sgn16（较旧）或 sgn32</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{controller} options: value_type={value}; it takes {known}</source>
         <extracomment>I/range: the largest magnitude of a pos/neg value of each type</extracomment>
         <translation>{controller} 选项：value_type={value}；可选值为 {known}</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{key} in whole units of 0.1 µm / 0.0001° ({source})</source>
@@ -5565,15 +5508,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source> (value_type=sgn32 if the kernel&apos;s documentation types them so)</source>
         <translation>（若内核文档将其定为 sgn32，请设 value_type=sgn32）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a value of {value} units{hint}</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source> (value_type=sgn32 if the kernel&apos;s documentation types them so)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>modulo table closed ({source})</source>
@@ -5602,11 +5536,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{controller} options: values=correction or values=error must be given (the sign of a screw map&apos;s value is not stated unambiguously: see README)</source>
         <translation>{controller} 选项：必须给出 values=correction 或 values=error（丝杠映射值的符号没有明确规定：见 README）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>{controller} options: values=correction or values=error must be given (the sign of a screw map&apos;s value is not stated unambiguously: see README)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>points = intervals + 1, evenly spaced over the length ({source})</source>
@@ -5619,7 +5548,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Mach4 screw map for {axis}: start {start}, length {length}, {n} points ({sense})</source>
         <translation>{axis} 的 Mach4 丝杠映射：起点 {start}，长度 {length}，{n} 个点（{sense}）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>machine axis name, e.g. AX1 or X1</source>
@@ -5644,7 +5572,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the reference point&apos;s position: the table is made zero there (K3&apos;s recommendation; the shift goes to MD34090)</source>
         <translation>参考点位置：补偿表在该处取零（K3 的建议；偏移量填入 MD34090）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>one table per measuring system ({source})</source>
@@ -5661,11 +5588,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the reference point {reference} lies outside the table {first}…{last}</source>
         <translation>参考点 {reference} 在补偿表 {first}…{last} 之外</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the reference point {reference} lies outside the table {first}…{last}</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>measuring system (K3; MD30200 NUM_ENCS = {encoders})</source>
@@ -5702,11 +5624,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>written as measured: the manual (K3) recommends zero compensation at the reference point (option reference=POSITION)</source>
         <translation>按实测写出：手册（K3）建议参考点处补偿为零（选项 reference=位置）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>written as measured: the manual (K3) recommends zero compensation at the reference point (option reference=POSITION)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>prefix of the PLC variables, e.g. Axis1</source>
@@ -5920,14 +5837,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
         <translation>控制器的设置，写作 KEY=VALUE，以逗号分隔，例如 axis=AX4, system=1, modulo=360, reference=0（SINUMERIK）；axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i（FANUC）；axis=C, values=error, modulo=360（HEIDENHAIN）；name=Axis1（TwinCAT）；axis_name=C, max_points=1500, value_type=sgn32（ISG）；axis=X, values=correction（Mach4）；modulo=360, travel_min=-720, travel_max=720（LinuxCNC，回转轴）</translation>
-        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
-        <translation>录入计划的测回数：设定面数后，读数到来时自动填写面号、测回和方向（每隔一个测回反向），并显示下一个面；每个测回最后再测一次第 1 面（闭合）。0：无计划</translation>
-        <source>Sets of the entry plan: with the number of faces set, entry fills face, set and direction (every second set reverse) as readings arrive and shows the next face; each set ends on face 1 again (closure). 0: no plan</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for an encoder&apos;s error at its steps: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
@@ -5948,11 +5857,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for the positioning deviation: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
         <translation>实验室对位置偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
-    </message>
-    <message>
-        <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
-        <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
@@ -6081,10 +5985,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>test plan: runs</source>
         <translation>测试计划：测量次数</translation>
-    </message>
-    <message>
-        <source>test plan: targets</source>
-        <translation>测试计划：目标位置</translation>
     </message>
     <message>
         <source>none stated</source>
@@ -6963,15 +6863,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>single-shot requests per second at the most when an autocollimator is polled (default 20)</source>
         <translation>轮询自准直仪时每秒最多的单次请求数（默认 20）</translation>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>autocollimator: auto (stream, or single-shot requests when it does not stream), stream, or poll (single-shot requests only)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>single-shot requests per second at the most when an autocollimator is polled (default 20)</source>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>give up after this long (default: never)</source>
@@ -7161,7 +7052,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>anglebench capture: --mode is the autocollimator&apos;s (an instrument that answers requests is always asked)</source>
         <translation>anglebench capture：--mode 仅用于自准直仪（问答式仪器总是逐次询问）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>anglebench capture: cannot write {path}: {reason}; nothing was captured</source>
@@ -7206,7 +7096,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>anglebench capture: {port} did not stream after A: read by single-shot a requests (--mode poll asks so from the start)</source>
         <translation>anglebench capture：{port} 收到 A 后没有连续输出：已改用单次 a 请求读取（--mode poll 从一开始就这样询问）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{n} readings written to {path} ({refused} frames refused: noise, an invalid axis or an error reply)</source>
@@ -7229,7 +7118,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{port}: no reply to a request within {seconds} s (the reply timeout)</source>
         <translation>{port}：请求在 {seconds} s 内没有应答（应答超时）</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{port}: only unreadable bytes for {seconds} s (a wrong baud rate? {baud} was used)</source>
@@ -8289,7 +8177,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>In progress: {unit} (rows {first}–{last}); its readings enter no figure until it is complete, and a certificate waits for it.</source>
         <translation>进行中：{unit}（第 {first}–{last} 行）；完成前其读数不计入任何结果，证书也须待其完成。</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>41 points, half range 1&quot;, noise 0.5&quot;</source>
@@ -8347,7 +8234,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{coverage} % ({hits} of {runs}), width {width} × needed</source>
         <translation>{coverage} %（{runs} 次中 {hits} 次），宽度为所需的 {width} 倍</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>reading of row {row} edited after capture: {captured} → {now}</source>
@@ -8382,7 +8268,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{flag} and {twin} name the same file ({out}); nothing was written</source>
         <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
@@ -8463,7 +8348,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>3 points: ψ, α, β leave no degrees of freedom for the reading noise</source>
         <translation>3 个点：ψ、α、β 使读数噪声没有剩余自由度</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
@@ -8477,7 +8361,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>the laboratory&apos;s register key {path} holds {n} bytes: a key is at least 32 random bytes</source>
         <translation>实验室的登记册密钥 {path} 只有 {n} 字节：密钥至少应为 32 个随机字节</translation>
-        <translation type="unfinished"></translation>
     </message>
     <message>
         <source>{text}: give numbers separated by commas</source>
@@ -8548,6 +8431,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>reference standard &apos;{name}&apos;: its uncertainty {u} is not smaller than the tolerance ±{t}: with it no conformity can be shown (is it the standard of another test?)</source>
         <translation>计量标准 &apos;{name}&apos;：其不确定度 {u} 不小于允差 ±{t}：用它无法证明符合性（是否为另一项检测的标准？）</translation>
+    </message>
+    <message>
         <source>forward at {targets}</source>
         <extracomment>direction (&quot;up&quot;/&quot;down&quot;) → the targets approached exactly once that way (their s is unknown, so A and R are not evaluated)</extracomment>
         <translation>正向：{targets}</translation>
