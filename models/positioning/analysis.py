@@ -289,7 +289,8 @@ def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]
     per_point = int(settings.get("readings_per_point", 1) or 1)
     if not np.all(np.isfinite(runs_column)) and per_point > 1:
         return parsed, None  # repeated readings: the runs are counted after averaging
-    targets = np.round(parsed["target"].astype(float), 9)
+    with np.errstate(all="ignore"):  # a target of 1e308: refused by the analysis, naming it
+        targets = np.round(parsed["target"].astype(float), 9)
     directions = _directions(parsed, [])
     runs = _runs_counted(parsed, targets, directions)
     t, d, r = targets.tolist(), directions.tolist(), runs.tolist()
