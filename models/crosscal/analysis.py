@@ -25,6 +25,7 @@ from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.iso230 import iso230_evaluate
+from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -83,20 +84,10 @@ PARAMETERS = (
               help="Mountings of the entry plan: with the number of faces set, entry fills "
                    "mounting and face as readings arrive (mounting j from face j + 1) and shows "
                    "the next one. 0: no plan"),
-    Parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "float", 0.0,
-              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "a polygon's face deviations: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
-    Parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "float", 0.0,
-              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "an encoder's error at its steps: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
+    cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U), polygon", "\"",
+                  "a polygon's face deviations"),
+    cmc_parameter("cmc_encoder_arcsec", "laboratory's CMC (smallest U), encoder", "\"",
+                  "an encoder's error at its steps"),
 )
 
 #: a residual beyond this many σ is marked as an outlier

@@ -32,6 +32,7 @@ from models.fringe.result import FringeResult
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
     IssuesCertificates,
@@ -107,13 +108,7 @@ PARAMETERS = (
               zero="not stated", decimals=4, step=0.01,
               help="The ADC's integral nonlinearity limit ±a per channel (rectangular). "
                    "0: not stated"),
-    Parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "float", 0.0,
-              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "the interpolation error: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
+    cmc_parameter("cmc", "laboratory's CMC (smallest U), in the errors' unit", "", "the interpolation error"),
 )
 
 #: the settings that are inputs of the certificate's budget (FringeResult.inputs)

@@ -37,6 +37,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
+from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
     AcceptsReference,
@@ -136,13 +137,7 @@ PARAMETERS = (
                    "from the lab's own records, used only when the readings cannot evaluate it "
                    "(one set per direction and no tilt fit with degrees of freedom); 0: not "
                    "stated, and then no uncertainty is given"),
-    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0,
-              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "the encoder error: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
+    cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the encoder error"),
     REPEATS_PARAMETER,
     Parameter("plan_sets", "entry plan: sets", "int", 0, minimum=1, maximum=100, zero="no plan",
               cli=False,

@@ -36,6 +36,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.iso230 import once_note
+from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     AcceptsRuns,
     ComparesAfterLog,
@@ -143,13 +144,8 @@ PARAMETERS = (
     Parameter("axis_setup", "axis set-up", "text", "",
               help="The axis' set-up (ISO 230-2, clause 8): position of the reference, load, "
                    "feed, dwell at each target, other axes' positions"),
-    Parameter("cmc", "laboratory's CMC (smallest U), in the deviations' unit", "float", 0.0,
-              "", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "the positioning deviation: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
+    cmc_parameter("cmc", "laboratory's CMC (smallest U), in the deviations' unit", "",
+                  "the positioning deviation"),
     REPEATS_PARAMETER,
     # the test plan: entry follows the run (models/readings/entry_plan.py)
     Parameter("plan_runs", "test plan: runs", "int", 0, minimum=1, maximum=100, zero="no plan",

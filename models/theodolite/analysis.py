@@ -20,6 +20,7 @@ from models.theodolite.plots import error_figure
 from models.theodolite.report import theodolite_certificate, theodolite_json_budgets
 from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.iso230 import once_note
+from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -73,13 +74,7 @@ PARAMETERS = (
                    "states it (basis u, the same figure); residuals above 3× it raise a warning; "
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
-    Parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "float", 0.0,
-              "\"", 0.0, 3600.0, decimals=4, step=0.01, zero="none stated",
-              help="The laboratory's calibration and measurement capability (CMC) for "
-                   "the axis error: "
-                   "the smallest U of its scope. Every U stated is at least this; results whose "
-                   "computed U is below it are outside the scope and flagged (ILAC-P14). 0: none "
-                   "stated, nothing said"),
+    cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the axis error"),
     REPEATS_PARAMETER,
     Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
               zero="no plan", cli=False,

@@ -13,9 +13,22 @@ from __future__ import annotations
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
+from models.parameters import Parameter
 from models.uncertainty.budget import UncertaintyBudget
 
-__all__ = ["scope_statement"]
+__all__ = ["cmc_parameter", "scope_statement"]
+
+
+def cmc_parameter(key: str, label: str, unit: str, what: str) -> Parameter:
+    """The setting of the laboratory's CMC for one quantity of a workbench (``what``: "the
+    axis error", "a polygon's face deviations" …): a floor on every U stated, named on the
+    certificate; 0: none stated, nothing said."""
+    return Parameter(key, label, "float", 0.0, unit, 0.0, 3600.0, decimals=4, step=0.01,
+                     zero="none stated",
+                     help="The laboratory's calibration and measurement capability (CMC) for "
+                          f"{what}: the smallest U of its scope. Every U stated is at least this; "
+                          "results whose computed U is below it are outside the scope and flagged "
+                          "(ILAC-P14). 0: none stated, nothing said")
 
 
 def scope_statement(budget: UncertaintyBudget, unit: str = "\"") -> str:
