@@ -70,6 +70,7 @@ def main() -> None:
                           "hidden": hidden,
                           "dock": window.dockWidgetArea(panel).name,
                           "table": [table.width(), table.height()],
+                          "panel": [panel.width(), panel.height()],
                           "plot": [plot.width(), plot.height()] if plot is not None else None})
     print(json.dumps(found))  # noqa: T201 - the probe's output
 

@@ -271,6 +271,12 @@ class WorkbenchView(QWidget):
     #: the plots flat and overprinting their axis titles (high-DPI scale, small windows)
     PANEL_MIN_HEIGHT = 150
 
+    def keep_plot_height(self, height: int) -> None:
+        """The plot tabs keep at least ``height`` px when the window's room shrinks (0: no
+        minimum): the capture panel docked at the bottom asks for ~200 px of plot (#41);
+        the result box above gives way first."""
+        self.plot_tabs.setMinimumHeight(max(0, int(height)))
+
     def add_plot_tab(self, widget: QWidget, title: Tr) -> None:
         panels = max(1, plot_panels(widget))
         widget.setMinimumHeight(self.PANEL_MIN_HEIGHT * panels)

@@ -116,6 +116,14 @@ SHOW_EVERY_S = 0.1
 STALE_S = 1.0
 #: the panel's narrowest: it scrolls rather than widening the window
 PANEL_MIN_WIDTH = 240
+#: the panel's highest when docked at the bottom (its parts side by side fit in it)
+BOTTOM_PANEL_MAX_HEIGHT = 200
+#: the plot tabs' lowest (their tab bar and ~200 px of plot) while the panel is at the bottom
+PLOT_TABS_MIN_HEIGHT = 232
+#: Qt's "no maximum" of a widget's size
+QWIDGETSIZE_MAX = (1 << 24) - 1
+#: a nominal the plan writes (the encoder at the face) is written to this (″)
+NOMINAL_RESOLUTION_ARCSEC = 0.01
 #: settings keys (per instrument kind)
 PORT_SETTING = "capture/port/{kind}"
 BAUD_SETTING = "capture/baud/{kind}"
@@ -493,16 +501,19 @@ class CapturePanel(QDockWidget):
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
         body = QWidget()
-        # three columns side by side when docked at the bottom, one above the other beside
+        # five parts side by side when docked at the bottom (the guidance, the instrument,
+        # its statistics, the take, the second instrument: a low panel, the plots keep their
+        # height), one above the other beside
         self.body_layout = QBoxLayout(QBoxLayout.Direction.TopToBottom, body)
         self.body_layout.setContentsMargins(4, 4, 4, 4)
-        sections = [QWidget(), QWidget(), QWidget()]
+        sections = [QWidget() for _ in range(5)]
         columns = []
-        for section in sections:
+        for index, section in enumerate(sections):
             column = QVBoxLayout(section)
             column.setContentsMargins(0, 0, 0, 0)
             columns.append(column)
-            self.body_layout.addWidget(section)
+            # the guidance and the statistics take the width left (their texts wrap)
+            self.body_layout.addWidget(section, 2 if index in (0, 2) else 0)
         self.body_layout.addStretch(1)
         self.guide = QLabel("")
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
@@ -543,17 +554,18 @@ class CapturePanel(QDockWidget):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         columns[0].addWidget(self.guide)
-        columns[0].addWidget(self.links[0].box)
-        columns[0].addWidget(self.stability)
-        columns[0].addWidget(self.allan)
-        columns[1].addWidget(self.take_button)
-        columns[1].addWidget(self.auto)
-        columns[1].addLayout(auto_form)
-        columns[1].addWidget(self.auto_state)
-        columns[2].addWidget(self.links[1].box)
+        columns[1].addWidget(self.links[0].box)
+        columns[2].addWidget(self.stability)
+        columns[2].addWidget(self.allan)
+        columns[3].addWidget(self.take_button)
+        columns[3].addWidget(self.auto)
+        columns[3].addLayout(auto_form)
+        columns[3].addWidget(self.auto_state)
+        columns[4].addWidget(self.links[1].box)
         for column in columns:
             column.addStretch(1)
         self.dockLocationChanged.connect(self._docked)
+        self.visibilityChanged.connect(self._keep_plots)
         # the body scrolls (vertically) rather than making the window wider or taller
         scroll = QScrollArea()
         scroll.setWidget(body)
@@ -580,6 +592,21 @@ class CapturePanel(QDockWidget):
         bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
         self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
                                       else QBoxLayout.Direction.TopToBottom)
+        # at the bottom the panel is low (its parts side by side fit): the readings table
+        # and the plot above it keep their height on a 720 px screen
+        self.setMaximumHeight(BOTTOM_PANEL_MAX_HEIGHT if bottom else QWIDGETSIZE_MAX)
+        self._keep_plots()
+
+    def _keep_plots(self, *_args) -> None:
+        """While the panel is in sight at the bottom, every workbench's plot keeps ~200 px of
+        height (its result box gives way first); elsewhere, or closed, no minimum."""
+        area = self.window_.dockWidgetArea(self) if hasattr(self.window_, "dockWidgetArea") \
+            else None
+        bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea and not self.isHidden()
+        for presenter in getattr(self.window_, "presenters", ()):
+            keep = getattr(presenter.view, "keep_plot_height", None)
+            if keep is not None:
+                keep(PLOT_TABS_MIN_HEIGHT if bottom else 0)
 
     # ------------------------------------------------------------ the first link's state
     @property
@@ -978,6 +1005,8 @@ class CapturePanel(QDockWidget):
             elif link.usable:
                 reading = link.latest
                 taking[link.slot] = (reading.values, reading.unit, (reading.frame, reading.frame))
+        # the columns an instrument connected fills (a plan's nominal never goes there)
+        instrument_columns = {keys.index(key) for _, _, key in targets}
         targets = [t for t in targets if t[0].slot in taking]
         if not targets:
             if taking:
@@ -1021,6 +1050,21 @@ class CapturePanel(QDockWidget):
                 if blank:
                     changes.append((row, keys.index(key), text))
                     filled.add(keys.index(key))
+            # the reading the plan expects (the encoder at the face), where no instrument
+            # fills that column and the cell is blank
+            for key, value in self.next_reading.nominal.items():
+                if key not in keys:
+                    continue
+                column = keys.index(key)
+                if column in filled or column in instrument_columns:
+                    continue
+                if row < sheet.row_count and sheet.text(row, column).strip():
+                    continue
+                dms = column_is_dms([sheet.text(r, column) for r in range(
+                    max(0, row - 50), min(row, sheet.row_count))])
+                changes.append((row, column, cell_text(value, "deg", NOMINAL_RESOLUTION_ARCSEC,
+                                                       dms, sheet.columns[column].unit)))
+                filled.add(column)
         changes += self._from_reference(sheet, keys, row, changes, filled)
         model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1))
         self._widen(table, changes)

@@ -29,6 +29,11 @@ class NextReading:
     #: this is reading ``reading`` of the point's ``of``
     reading: int = 1
     of: int = 1
+    #: column key -> the reading expected there from the plan (degrees; the polygon's and the
+    #: cross-calibration's encoder at the face: the set's or mounting's first reading plus
+    #: the steps of 360°/N), written into a blank cell at a take when no instrument fills
+    #: that column; empty where the workbench does not know it
+    nominal: dict[str, float] = field(default_factory=dict)
 
     @property
     def new_point(self) -> bool:

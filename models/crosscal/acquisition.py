@@ -65,11 +65,16 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
         sense = 1.0 if (first_enc[1] - start + 180.0) % 360.0 - 180.0 >= 0 else -1.0
     j, faces, _ = groups[-1]
 
-    def said(text, mounting: int, face: int) -> NextReading:
-        return NextReading(text, {"mounting": str(mounting), "position": str(face)})
+    def said(text, mounting: int, face: int, k: int | None = None) -> NextReading:
+        nominal = {} if k is None or start is None else {"encoder_deg": expected(k)}
+        return NextReading(text, {"mounting": str(mounting), "position": str(face)},
+                           nominal=nominal)
+
+    def expected(k: int) -> float:
+        return (start + sense * k * 360.0 / n) % 360.0
 
     def encoder(k: int) -> str:
-        return degrees_text((start + sense * k * 360.0 / n) % 360.0)
+        return degrees_text(expected(k))
 
     if not n:  # the face count is not known yet: no face number is guessed
         return NextReading(message(QT_TR_NOOP("mounting {mounting}: go to the next face, or back "
@@ -84,10 +89,10 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
                                 mounting=j, face=face), j, face)
         return said(message(QT_TR_NOOP("mounting {mounting}: go to face {face} (encoder ≈ "
                                        "{encoder}°)"), mounting=j, face=face, encoder=encoder(k)),
-                    j, face)
+                    j, face, k)
     if k == n:
         return said(message(QT_TR_NOOP("mounting {mounting}: go back to face {face} for its "
-                                       "closure"), mounting=j, face=home), j, home)
+                                       "closure"), mounting=j, face=home), j, home, n)  # a full turn on
     nxt = j + 1
     face = nxt % n + 1
     if start is None:
@@ -97,4 +102,4 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
     return said(message(QT_TR_NOOP("turn the polygon on the shaft by one face: mounting "
                                    "{mounting}, face {face} at the encoder's start (encoder ≈ "
                                    "{encoder}°)"), mounting=nxt, face=face, encoder=encoder(0)),
-                nxt, face)
+                nxt, face, 0)

@@ -7,7 +7,8 @@ import numpy as np
 from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
 
-__all__ = ["closure_figure", "encoder_figure", "polygon_figure", "residual_figure"]
+__all__ = ["closure_figure", "encoder_figure", "in_progress_errors", "polygon_figure",
+           "residual_figure"]
 
 BLUE, ORANGE, GREEN, GREY, RED = ((31, 119, 180), (255, 127, 14), (44, 160, 44),
                                   (130, 130, 130), (192, 57, 43))
@@ -17,14 +18,56 @@ def _or_nan(values, n: int) -> np.ndarray:
     return np.full(n, np.nan) if values is None else np.asarray(values, dtype=float)
 
 
-def encoder_figure(result) -> PlotFigure | None:
+def in_progress_errors(parsed, result) -> tuple[np.ndarray, np.ndarray]:
+    """The mounting in progress (result.incomplete) as taken: at each of its readings the
+    reading the model sees, y = (a − a_start − k·360°/n)·3600 − c, less the complete
+    mountings' face deviation d_i, offset so its first reading sits on the encoder error
+    at that step (the mounting's own offset is not known until it is complete). (encoder
+    step in °, error in ″); empty arrays when no mounting is in progress, when the complete
+    mountings do not determine E and d, or when a reading's face or step is not the
+    polygon's. The readings as written: no tilt correction, no drift."""
+    unit = getattr(result, "incomplete", None)
+    s = result.solution
+    if (unit is None or parsed is None or not unit.rows or s.encoder_error_arcsec is None
+            or s.polygon_deviation_arcsec is None):
+        return np.empty(0), np.empty(0)
+    n = result.faces
+    step = 360.0 / n
+    start = result.encoder_start_deg
+    steps, values = [], []
+    for i in unit.rows:
+        if i >= parsed.n:
+            continue
+        face, mounting = parsed["position"][i], parsed["mounting"][i]
+        a, c = float(parsed["encoder_deg"][i]), float(parsed["ac_x_arcsec"][i])
+        if not (np.isfinite(face) and np.isfinite(mounting) and np.isfinite(a)
+                and np.isfinite(c)) or not 1 <= int(face) <= n:
+            continue
+        k = (int(face) - 1 - int(mounting)) % n
+        y = ((a - start - k * step + 180.0) % 360.0 - 180.0) * 3600.0 - c
+        steps.append(k)
+        values.append(y - s.polygon_deviation_arcsec[int(face) - 1])
+    if not steps:
+        return np.empty(0), np.empty(0)
+    k = np.asarray(steps, dtype=int)
+    v = np.asarray(values, dtype=float)
+    return result.step_deg[k], v - v[0] + s.encoder_error_arcsec[k[0]]
+
+
+def encoder_figure(result, parsed=None) -> PlotFigure | None:
+    """The encoder's error with U; with ``parsed`` (the readings given the analysis), the
+    mounting in progress as taken beside it (grey markers: in_progress_errors)."""
     s = result.solution
     if s.encoder_error_arcsec is None:
         return None
+    series = [PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg, s.encoder_error_arcsec,
+                         BLUE, True, band=result.expanded_u_arcsec[0], role="corrected")]
+    x, y = in_progress_errors(parsed, result)
+    if x.size:
+        series.append(PlotSeries(QT_TR_NOOP("mounting in progress (as taken)"), x, y, GREY, True,
+                                 width=0, marker_size=8))
     return PlotFigure(QT_TR_NOOP("Encoder error at its steps with U"), QT_TR_NOOP("encoder step (°)"),
-                      QT_TR_NOOP("error (\")"), (
-        PlotSeries(QT_TR_NOOP("encoder error ± U"), result.step_deg, s.encoder_error_arcsec, BLUE,
-                   True, band=result.expanded_u_arcsec[0], role="corrected"),))
+                      QT_TR_NOOP("error (\")"), tuple(series))
 
 
 def polygon_figure(result) -> PlotFigure | None:

@@ -50,13 +50,15 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     groups = point_groups(used_rows(rows), KEYS)
     uses_sets = any(g[0][1] for g in groups)
 
-    def said(text, face: int, set_no: int, reading: int) -> NextReading:
+    def said(text, face: int, set_no: int, reading: int,
+             encoder: float | None = None) -> NextReading:
         if n > 1:
             text = message(QT_TR_NOOP("{what} — reading {k} of {n}"), what=text, k=reading, n=n)
         fill = {"position": str(face)}
         if uses_sets or set_no > 1:
             fill["set"] = str(set_no)
-        return NextReading(text, fill, reading, n)
+        nominal = {} if encoder is None else {"encoder_deg": float(encoder) % 360.0}
+        return NextReading(text, fill, reading, n, nominal)
 
     if not groups or _int(groups[-1][0][0]) is None:
         return said(message(QT_TR_NOOP("go to face {face}"), face=1), 1, 1, 1)
@@ -95,7 +97,7 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
         if encoder is not None:
             text = message(QT_TR_NOOP("set {set}: go to face {face} (encoder ≈ {encoder}°)"),
                            set=set_no + 1, face=first_face, encoder=degrees_text(encoder % 360))
-        return said(text, first_face, set_no + 1, 1)
+        return said(text, first_face, set_no + 1, 1, encoder)
     order = 1
     if len(pattern_faces) > 1:
         gap = pattern_faces[1] - pattern_faces[0]
@@ -127,4 +129,4 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     figures = {"face": following, "set": set_no}
     if encoder is not None:
         figures["encoder"] = degrees_text(encoder)
-    return said(message(template, **figures), following, set_no, 1)
+    return said(message(template, **figures), following, set_no, 1, encoder)

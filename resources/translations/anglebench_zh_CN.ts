@@ -6882,7 +6882,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -7761,6 +7761,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>encoder error ± U</source>
         <translation>编码器误差 ± U</translation>
+    </message>
+    <message>
+        <source>mounting in progress (as taken)</source>
+        <translation>进行中的安装位置（按测得）</translation>
     </message>
     <message>
         <source>Polygon face deviations with U</source>

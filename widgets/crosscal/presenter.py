@@ -22,7 +22,7 @@ class CrossCalPresenter(WorkbenchPresenter):
         self.table_model.set_highlight_rows({int(i) for i in result.readings.sheet_rows[
             result.readings.closure] - 1})
         self.view.show_figures(*self.in_unit(
-            plots.encoder_figure(result), plots.polygon_figure(result),
+            plots.encoder_figure(result, self.parsed), plots.polygon_figure(result),
             plots.residual_figure(result), plots.closure_figure(result)))
         self.view.set_reference_enabled(result.solution.polygon_deviation_arcsec is not None)
 

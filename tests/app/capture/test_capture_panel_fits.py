@@ -44,6 +44,9 @@ def test_every_control_in_sight_at_1280x720_docked_anywhere(tmp_path):
         assert min(seen["table"]) >= 60 and seen["plot"] and min(seen["plot"]) >= 60, where
         if seen["area"] != "bottom":
             assert seen["table"][1] >= 250 and seen["plot"][1] >= 250, where
+        else:  # a low panel, its parts side by side: the plot keeps ~200 px (#41)
+            assert seen["plot"][1] >= 200 and seen["table"][1] >= 150, where
+            assert seen["panel"][1] <= 200 and seen["panel"][0] >= 1200, where
 
 
 def test_where_the_panel_is_docked_is_remembered(qtbot, tmp_path):

@@ -46,6 +46,10 @@ def test_the_next_face_and_its_encoder_reading_from_any_start(faces, start, coun
     shown = float(text.split("≈ ")[1].split("°")[0])
     assert _wrapped(shown, expected) <= 0.05 + 20 / 3600
     assert text.startswith(f"go to face {face} (encoder ≈ ")
+    # the nominal a take writes into a blank encoder cell: the set's first reading plus the
+    # steps of 360°/N, exactly
+    first_reading = float(rows[0]["encoder_deg"])
+    assert _wrapped(step_out.nominal["encoder_deg"], first_reading + read * step) < 1e-9
 
 
 def test_closure_then_the_next_set_then_the_readings_of_a_point():
@@ -103,3 +107,49 @@ def test_the_guides_are_the_workbenches_own():
     assert not isinstance(KINDS["fringe"], GuidesAcquisition)
     assert {k for k, w in KINDS.items() if isinstance(w, GuidesAcquisition)} >= {"polygon",
                                                                                 "theodolite"}
+
+
+def test_the_polygon_nominal_encoder_is_said_only_where_the_guide_knows_it():
+    rows = [_row(f, 15.0 * f + 0.0002) for f in range(1, 25)]
+    closure = polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 1})
+    assert closure.nominal["encoder_deg"] == pytest.approx(15.0002, abs=1e-9)
+    rows.append(_row(1, 15.0004))
+    second = polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 1})
+    assert second.nominal["encoder_deg"] == pytest.approx(15.0002, abs=1e-9)  # set 1's start
+    # one face read and no face count: no encoder figure is guessed, no nominal either
+    assert polygon_guide([_row(1, 40.0)], {}, {"faces": 0, "readings_per_point": 1}).nominal == {}
+    # the second reading of a point: it is taken where the table stands, no nominal
+    rows.append(_row(1, 15.0, "2"))
+    assert polygon_guide(rows, {}, {"faces": 0, "readings_per_point": 3}).nominal == {}
+
+
+def _crosscal_row(mounting, face, encoder):
+    return {"mounting": str(mounting), "position": str(face),
+            "encoder_deg": "" if encoder is None else f"{encoder:.6f}", "ac_x_arcsec": "1.0",
+            "ac_y_arcsec": ""}
+
+
+@pytest.mark.parametrize("sense", [1, -1])
+def test_the_crosscal_nominal_encoder_is_the_start_plus_the_steps(sense):
+    """7 faces (a step of 51.428571…°), the encoder counting either way from 200.0003°:
+    every mounting's face k at start + k·360°/7, its closure and the next mounting's first
+    face at the start."""
+    guide = KINDS["crosscal"].acquisition_guide
+    start, n = 200.0003, 7
+    rows = [_crosscal_row(0, k + 1, (start + sense * k * 360.0 / n) % 360) for k in range(3)]
+    got = guide(rows, {}, {"faces": n})
+    assert got.fill == {"mounting": "0", "position": "4"}
+    assert _wrapped(got.nominal["encoder_deg"], start + sense * 3 * 360.0 / n) < 1e-6
+    rows = [_crosscal_row(0, k % n + 1, (start + sense * k * 360.0 / n) % 360)
+            for k in range(n + 1)]  # mounting 0 with its closure
+    nxt = guide(rows, {}, {"faces": n})
+    assert nxt.fill == {"mounting": "1", "position": "2"}
+    assert _wrapped(nxt.nominal["encoder_deg"], start) < 1e-6
+    rows += [_crosscal_row(1, (1 + k) % n + 1, (start + sense * k * 360.0 / n) % 360)
+             for k in range(n)]
+    closure = guide(rows, {}, {"faces": n})
+    assert closure.fill == {"mounting": "1", "position": "2"}
+    assert _wrapped(closure.nominal["encoder_deg"], start) < 1e-6
+    # no encoder reading at the start, or no face count: nothing is guessed
+    assert guide([_crosscal_row(0, 1, None)], {}, {"faces": n}).nominal == {}
+    assert guide(rows[:2], {}, {"faces": 0}).nominal == {}

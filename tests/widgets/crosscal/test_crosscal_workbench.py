@@ -620,3 +620,41 @@ def test_the_guide_says_each_next_face_and_its_encoder_reading_through_the_sampl
         "mounting 1: go back to face 2 for its closure")
     assert str(KIND.acquisition_guide([], {}, settings).text) == (
         "mounting 0: go to face 1 (the encoder's start)")
+
+
+def test_the_mounting_in_progress_is_plotted_as_taken_beside_the_complete_result(qtbot,
+                                                                               samples_dir):
+    """The last mounting cut short: the complete mountings' result unchanged, the mounting in
+    progress a grey curve of as many points as readings, at each reading's encoder step, its
+    first on the complete solution and the rest what the whole run gives there (#41)."""
+    rows = _sample_rows(samples_dir)  # 12 faces, 12 mountings of 13 readings (closure last)
+    complete, taken = rows[:11 * 13], rows[11 * 13:11 * 13 + 5]
+    presenter = CrossCalPresenter()
+    qtbot.addWidget(presenter.view)
+    presenter.table_model.replace_all(complete)
+    presenter.refresh()
+    alone = presenter.result.solution.encoder_error_arcsec.copy()
+    assert len(presenter.view.encoder_plot.curves) == 1  # no mounting in progress, no curve
+    presenter.table_model.replace_all(complete + taken)
+    presenter.refresh()
+    result = presenter.result
+    assert result is not None and str(result.incomplete.text()) == "mounting 11: 5 of 12 faces"
+    np.testing.assert_array_equal(result.solution.encoder_error_arcsec, alone)
+    x, y = presenter.view.encoder_plot.curves[0].getData()
+    np.testing.assert_allclose(y, alone)
+    assert len(presenter.view.encoder_plot.curves) == 2
+    partial = presenter.view.encoder_plot.curves[1]
+    assert partial.opts["name"] == "mounting in progress (as taken)"  # its legend entry
+    assert partial.opts["pen"] is None  # markers only, grey
+    assert partial.opts["symbolBrush"].getRgb()[:3] == (130, 130, 130)
+    x, y = presenter.view.encoder_plot.curves[1].getData()
+    assert x.size == y.size == 5
+    # mounting 11 reads faces 12, 1, 2, 3, 4 at the encoder's steps 0 … 4
+    np.testing.assert_allclose(x, np.arange(5) * 30.0)
+    assert y[0] == pytest.approx(alone[0])
+    # the same steps of the run once complete: within the readings' own scatter
+    whole = KIND.analyze(parse(rows), KIND.default_settings)
+    sigma = whole.solution.sigma_arcsec
+    e = whole.solution.encoder_error_arcsec[:5]
+    np.testing.assert_allclose(y - y[0], e - e[0], atol=6 * sigma)
+    assert np.max(np.abs(y)) > 6 * sigma  # the encoder's error itself, not noise about zero
