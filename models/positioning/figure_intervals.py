@@ -167,7 +167,9 @@ def _world_sigmas(s: dict[str, np.ndarray], n: dict[str, np.ndarray]) -> dict[st
     out = {}
     for key, sd in s.items():
         nu = n[key] - 1.0
-        log_s2 = np.log(np.maximum(sd, 1e-300) ** 2)
+        # a zero s floored at the dtype's smallest normal (1e-300 is 0 in float32, and
+        # its square 0 in float64): log of 0 would warn, and warnings are errors
+        log_s2 = 2.0 * np.log(np.maximum(sd, np.finfo(sd.dtype).tiny))
         spread = _shrunk(log_s2, polygamma(1, nu / 2.0)) - np.mean(log_s2, axis=-1,
                                                                    keepdims=True)
         pooled = np.sum(nu * sd**2, axis=-1, keepdims=True) / np.sum(nu)
