@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import re
 from collections import Counter
 from collections.abc import Sequence
@@ -276,17 +277,26 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
             value2=f"{MAX_XLSX_EXPANDED_BYTES / 2**20:.0f}"))
     try:
         book = openpyxl.load_workbook(io.BytesIO(data), read_only=True, data_only=True)
+        # the formulas: a formula cell with no stored value (a sheet written by a program,
+        # never recalculated) reads as its formula, as a CSV of it does, not as a blank cell
+        formulas = openpyxl.load_workbook(io.BytesIO(data), read_only=True, data_only=False)
     except Exception as exc:  # noqa: BLE001 - openpyxl raises many types for damaged files
         raise TableImportError(message(
             QT_TR_NOOP("{source}: not a readable XLSX workbook ({exc})"),
             source=source, exc=reason_of(exc))) from None
     try:
-        sheet = book.worksheets[0]
+        sheet, formula_sheet = book.worksheets[0], formulas.worksheets[0]
         # the stored dimension can claim a million rows by 16384 columns: read what is there
         sheet.reset_dimensions()
+        formula_sheet.reset_dimensions()
         grid: list[list[str]] = []
         empty_run = 0
-        for line, row in enumerate(sheet.iter_rows(max_col=MAX_COLUMNS + 1, values_only=True), 1):
+        rows = itertools.zip_longest(
+            sheet.iter_rows(max_col=MAX_COLUMNS + 1, values_only=True),
+            formula_sheet.iter_rows(max_col=MAX_COLUMNS + 1, values_only=True), fillvalue=())
+        for line, (stored, written) in enumerate(rows, 1):
+            row = [w if v is None and isinstance(w, str) and w.startswith("=") else v
+                   for v, w in itertools.zip_longest(stored, written)]
             if all(v is None for v in row):
                 empty_run += 1
                 if empty_run > MAX_EMPTY_XLSX_ROWS:
@@ -314,6 +324,7 @@ def _read_xlsx(data: bytes, source: str) -> list[list[str]]:
             source=source, exc=reason_of(exc))) from None
     finally:
         book.close()
+        formulas.close()
 
 
 def _apply_mapping(table: RawTable, columns: Sequence[Column], positions: list[int | None],

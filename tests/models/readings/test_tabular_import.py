@@ -144,3 +144,19 @@ def test_xlsx_angles_stored_as_times_read_as_the_sheet_shows_them(tmp_path):
 
     assert parse_angle_deg(rows[0][1]) == pytest.approx(6 + 12 / 60 + 30 / 3600, abs=1e-9)
     assert parse_angle_deg(rows[0][2]) == pytest.approx(138 + 24 / 60 + 5.15 / 3600, abs=1e-6)
+
+
+def test_xlsx_formula_without_a_stored_value_reads_as_its_formula(tmp_path):
+    """A formula cell never recalculated (a sheet written by a program) has no stored value:
+    it reads as the formula — refused as an angle as the same cell in a CSV is — never as a
+    blank cell that drops the reading."""
+    import openpyxl
+
+    book = openpyxl.Workbook()
+    sheet = book.active
+    sheet.append(["theta_deg", "azimuth_deg", "elevation_deg"])
+    sheet.append([0, 0.25, 1.5])
+    sheet.append([1, "=cmd|' /C calc'!A0", 1.49])
+    book.save(tmp_path / "formula.xlsx")
+    rows = map_columns(read_table(tmp_path / "formula.xlsx"), COLUMNS)
+    assert rows == [["0", "0.25", "1.5"], ["1", "=cmd|' /C calc'!A0", "1.49"]]
