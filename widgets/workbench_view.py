@@ -207,6 +207,20 @@ class WorkbenchView(QWidget):
         # readings (one number format per column) and keep an edit cheap on long runs.
         header.setResizeContentsPrecision(64)
         header.setStretchLastSection(True)
+        header.sectionResized.connect(self._keep_columns_in_sight)
+        header.geometriesChanged.connect(self._keep_columns_in_sight)
+
+    def _keep_columns_in_sight(self, *_args) -> None:
+        """The readings pane at least as wide as every column (the polygon's set and
+        direction columns put its last ones behind a horizontal scroll bar at 1280 px)."""
+        table = self.table
+        header = table.horizontalHeader()
+        if header.length() <= table.viewport().width():
+            return  # every column in sight (the stretched last one follows the width)
+        width = (header.length() + table.verticalHeader().width() + 2 * table.frameWidth()
+                 + table.verticalScrollBar().sizeHint().width())
+        if width != table.minimumWidth():
+            table.setMinimumWidth(width)
 
     def hold_columns(self) -> None:
         """The columns keep their widths (readings arrive from an instrument: the capture

@@ -149,7 +149,7 @@ def _shrunk(values: np.ndarray, se2: np.ndarray) -> np.ndarray:
     true values; τ̂² the between-target variance by DerSimonian & Laird (1986, Control.
     Clin. Trials 7:177), which weights each target by its precision (one target that
     scatters much does not pass for a rough curve)."""
-    se2 = np.maximum(np.broadcast_to(se2, values.shape), 1e-300)
+    se2 = np.maximum(np.broadcast_to(se2, values.shape), 1e-150)  # w² stays finite (zero scatter)
     w = 1.0 / se2
     sw = np.sum(w, axis=-1, keepdims=True)
     centre = np.sum(w * values, axis=-1, keepdims=True) / sw
@@ -167,9 +167,9 @@ def _world_sigmas(s: dict[str, np.ndarray], n: dict[str, np.ndarray]) -> dict[st
     out = {}
     for key, sd in s.items():
         nu = n[key] - 1.0
-        # a zero s floored at the dtype's smallest normal (1e-300 is 0 in float32, and
-        # its square 0 in float64): log of 0 would warn, and warnings are errors
-        log_s2 = 2.0 * np.log(np.maximum(sd, np.finfo(sd.dtype).tiny))
+        # a zero s floored where float32 draws hold it (its square underflowed to 0 and
+        # log 0 warns; warnings are errors)
+        log_s2 = 2.0 * np.log(np.maximum(sd, 1e-30))
         spread = _shrunk(log_s2, polygamma(1, nu / 2.0)) - np.mean(log_s2, axis=-1,
                                                                    keepdims=True)
         pooled = np.sum(nu * sd**2, axis=-1, keepdims=True) / np.sum(nu)
