@@ -89,9 +89,9 @@ def _polygon_cases(runs: int) -> list[ValidationCase]:
             message(QT_TR_NOOP("ψ not reported; the reason says “{words}”; U withheld"),
                     words=Message(words)),
             message(QT_TR_NOOP("ψ {psi}; U {u}"),
-                    psi=QT_TR_NOOP("not reported") if result.sets[0].tilt is None
+                    psi=Message(QT_TR_NOOP("not reported")) if result.sets[0].tilt is None
                     else f"{result.sets[0].tilt.psi_arcsec:.1f}\"",
-                    u=QT_TR_NOOP("withheld") if withheld else QT_TR_NOOP("given")),
+                    u=Message(QT_TR_NOOP("withheld") if withheld else QT_TR_NOOP("given"))),
             passed))
         inside = total = 0
         for seed in range(runs):
