@@ -62,7 +62,7 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("sqlite:///path, a file path or "
                                          "postgresql://user@host/db")))
     add_language_option(p, words)
-    sub = p.add_subparsers(dest="command", required=True)
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     listing = sub.add_parser("list", help=words(QT_TR_NOOP("the certificates, newest first")))
     listing.add_argument("search", nargs="?", default="",
                          help=words(QT_TR_NOOP("text to find in the number, the serial or the "

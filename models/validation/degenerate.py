@@ -19,7 +19,7 @@ import numpy as np
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.withheld import UncertaintyWithheld
 from models.fringe.analysis import FRINGE
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, Message, message
 from models.polygon.analysis import POLYGON
 from models.polygon.report import polygon_budget
 from models.readings.sheet import ParsedReadings, ReadingsSheet
@@ -57,10 +57,10 @@ def _refused(workbench: str, name: str, expected: str, run) -> ValidationCase:
     except ValueError as exc:
         said = exc.args[0] if exc.args else str(exc)  # a Message: the report translates it
         return ValidationCase(workbench, name, EXACT_SIMULATION,
-                              message(QT_TR_NOOP("refused: “{words}”"), words=expected),
+                              message(QT_TR_NOOP("refused: “{words}”"), words=Message(expected)),
                               said, expected in str(said))
     return ValidationCase(workbench, name, EXACT_SIMULATION,
-                          message(QT_TR_NOOP("refused: “{words}”"), words=expected),
+                          message(QT_TR_NOOP("refused: “{words}”"), words=Message(expected)),
                           QT_TR_NOOP("accepted"), False)
 
 
@@ -70,10 +70,10 @@ def _polygon_cases(runs: int) -> list[ValidationCase]:
     for faces, flat, name, words in (
             (12, True, QT_TR_NOOP("12 faces, every vertical reading equal (true tilt 300″): "
                                   "tilt not identified, U withheld without a stated σ"),
-             "no variation"),
+             QT_TR_NOOP("no variation")),
             (3, False, QT_TR_NOOP("3 faces (true tilt 300″): the tilt fit has no degrees of "
                                   "freedom, U withheld without a stated σ"),
-             "no degrees of freedom")):
+             QT_TR_NOOP("no degrees of freedom"))):
         rows, _ = _polygon_rows(faces, 7, flat)
         result = _polygon(rows)
         reason = result.sets[0].tilt_not_identified
@@ -87,11 +87,11 @@ def _polygon_cases(runs: int) -> list[ValidationCase]:
         cases.append(ValidationCase(
             w, name, EXACT_SIMULATION,
             message(QT_TR_NOOP("ψ not reported; the reason says “{words}”; U withheld"),
-                    words=words),
+                    words=Message(words)),
             message(QT_TR_NOOP("ψ {psi}; U {u}"),
-                    psi=QT_TR_NOOP("not reported") if result.sets[0].tilt is None
+                    psi=Message(QT_TR_NOOP("not reported")) if result.sets[0].tilt is None
                     else f"{result.sets[0].tilt.psi_arcsec:.1f}\"",
-                    u=QT_TR_NOOP("withheld") if withheld else QT_TR_NOOP("given")),
+                    u=Message(QT_TR_NOOP("withheld") if withheld else QT_TR_NOOP("given"))),
             passed))
         inside = total = 0
         for seed in range(runs):
@@ -127,11 +127,11 @@ def degenerate_design_cases(trials: int) -> list[ValidationCase]:
     cases = _polygon_cases(runs)
     w = FRINGE.title
     cases.append(_refused(
-        w, QT_TR_NOOP("40 of the 64 samples of one period"), "covers 62.5 % of one period",
+        w, QT_TR_NOOP("40 of the 64 samples of one period"), QT_TR_NOOP("covers 62.5 % of one period"),
         lambda: FRINGE.analyze(_fringe_parsed(40, 64), {"samples_per_period": 64})))
     cases.append(_refused(
         w, QT_TR_NOOP("N = 8 samples per period, orders 1, 3, 5 (the 5th aliases onto the 3rd)"),
-        "orders 3 and 5 alias at N = 8",
+        QT_TR_NOOP("orders 3 and 5 alias at N = 8"),
         lambda: FRINGE.analyze(_fringe_parsed(80, 8), {"samples_per_period": 8})))
     theta = np.array([-10.0, 0.0, 10.0])
     azimuth, elevation = theodolite_readings(theta, 3.0, 45.0, 2.0)
@@ -139,6 +139,6 @@ def degenerate_design_cases(trials: int) -> list[ValidationCase]:
 
     cases.append(_refused(
         THEODOLITE.title, QT_TR_NOOP("3 points: ψ, α, β leave no degrees of freedom for the "
-                                     "reading noise"), "at least 4",
+                                     "reading noise"), QT_TR_NOOP("at least 4"),
         lambda: analyze_run(theta, azimuth, elevation, reference_index=1)))
     return cases

@@ -8310,8 +8310,16 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>12 面，所有竖直读数相等（真实倾斜 300″）：倾斜未辨识，未给出 σ 时不给出 U</translation>
     </message>
     <message>
+        <source>no variation</source>
+        <translation>没有变化</translation>
+    </message>
+    <message>
         <source>3 faces (true tilt 300″): the tilt fit has no degrees of freedom, U withheld without a stated σ</source>
         <translation>3 面（真实倾斜 300″）：倾斜拟合没有自由度，未给出 σ 时不给出 U</translation>
+    </message>
+    <message>
+        <source>no degrees of freedom</source>
+        <translation>没有剩余自由度</translation>
     </message>
     <message>
         <source>ψ not reported; the reason says “{words}”; U withheld</source>
@@ -8346,12 +8354,24 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>一个周期 64 个采样中的 40 个</translation>
     </message>
     <message>
+        <source>covers 62.5 % of one period</source>
+        <translation>覆盖一个周期的 62.5 %</translation>
+    </message>
+    <message>
         <source>N = 8 samples per period, orders 1, 3, 5 (the 5th aliases onto the 3rd)</source>
         <translation>每周期 N = 8 个采样，谐波 1、3、5 次（5 次混叠到 3 次）</translation>
     </message>
     <message>
+        <source>orders 3 and 5 alias at N = 8</source>
+        <translation>N = 8 时 3 次与 5 次谐波混叠</translation>
+    </message>
+    <message>
         <source>3 points: ψ, α, β leave no degrees of freedom for the reading noise</source>
         <translation>3 个点：ψ、α、β 使读数噪声没有剩余自由度</translation>
+    </message>
+    <message>
+        <source>at least 4</source>
+        <translation>至少需要 4 个</translation>
     </message>
     <message>
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>

@@ -39,14 +39,18 @@ KEPT = {
     "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
     "SINUMERIK", "FANUC", "HEIDENHAIN", "TNC", "COM", "CMA", "Beckhoff", "TwinCAT", "ISG", "Mach",
     "ADC", "LSB",
+    # CMC: as CNAS writes it; SPECIMEN-…: the specimens' numbers; IANA and its zone names
+    "CMC", "SPECIMEN", "IANA", "Asia", "Shanghai",
 }
+# a controller's options as they are typed (axis=AX4, KEY=VALUE): keys, not words
+TYPED_OPTION = re.compile(r"[A-Za-z_][A-Za-z0-9_]*=[^,;，；（）\s]*")
 # widgets whose text is the user's or the result's (readings, names typed, the models'
 # narrative of the result), not the window's
 SKIPPED_NAMES = {"figures", "per_target"}  # numbers and the figures named by the models
 
 
 def english_words(text: str) -> set[str]:
-    words = set(re.findall(r"[A-Za-z][A-Za-z_]{2,}", text))
+    words = set(re.findall(r"[A-Za-z][A-Za-z_]{2,}", TYPED_OPTION.sub("", text)))
     return {w for w in words if w not in KEPT and "_" not in w}  # B_i, ε_x,zero: symbols
 
 
