@@ -590,7 +590,8 @@ def _units(text: str) -> list[str]:
     units, current, previous = [], "", ""
     for ch, nxt in zip(text, text[1:] + " ", strict=False):  # "" (a blank line): no unit
         current += ch
-        if ch.isspace() and previous not in _OPERATORS and nxt not in _OPERATORS:
+        if (ch.isspace() and previous not in _OPERATORS and nxt not in _OPERATORS
+                and nxt not in _CLOSING):  # "95.45 %" is kept whole too
             units.append(current)  # "T + w", "k = 2" are kept on one line
             current = ""
         elif (not ch.isspace() and not nxt.isspace() and nxt not in _CLOSING
