@@ -36,14 +36,11 @@ POINTS = (12, 36, 72)
 WIDTH_LIMIT = 1.6
 
 
-@dataclass(frozen=True)
-class Cell:
-    shape: str
-    points: int
-    noise: float  # σ over the true half range
+class _Tally:
+    """Hits of a coverage study (``runs``, ``hits``, ``probability``), and its verdict."""
+
     runs: int
     hits: int
-    width_ratio: float  # mean half-width / the p quantile of |value − truth|
     probability: float
 
     @property
@@ -53,6 +50,17 @@ class Cell:
     @property
     def accepted(self) -> bool:
         return self.hits >= lowest_acceptable_hits(self.runs, self.probability)
+
+
+@dataclass(frozen=True)
+class Cell(_Tally):
+    shape: str
+    points: int
+    noise: float  # σ over the true half range
+    runs: int
+    hits: int
+    width_ratio: float  # mean half-width / the p quantile of |value − truth|
+    probability: float
 
 
 def lowest_acceptable_hits(runs: int, probability: float, risk: float = 0.01) -> int:
@@ -109,21 +117,13 @@ def summary(cells: list[Cell]) -> dict[str, dict[str, float]]:
 
 # -- through the workbenches: simulated runs with known truth, their own budgets ------------
 @dataclass(frozen=True)
-class WorkbenchCoverage:
+class WorkbenchCoverage(_Tally):
     workbench: str
     runs: int
     hits: int
     width_ratio: float
     probability: float
     describe: str
-
-    @property
-    def coverage(self) -> float:
-        return self.hits / self.runs
-
-    @property
-    def accepted(self) -> bool:
-        return self.hits >= lowest_acceptable_hits(self.runs, self.probability)
 
 
 def _tally(workbench: str, describe: str, outcomes: list[tuple[float, object]]) -> WorkbenchCoverage:
