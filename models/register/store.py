@@ -373,10 +373,18 @@ class Register:
 
     @contextmanager
     def _read(self) -> Iterator[Any]:
-        """A connection that reads: no write lock (SQLite: a deferred transaction)."""
+        """A connection that reads: no write lock (SQLite: a deferred transaction, which
+        reads one snapshot). On PostgreSQL a REPEATABLE READ, read-only transaction: every
+        statement in it sees the same snapshot, so the state row and the records it counts
+        are read as of one moment even while another issuer commits (READ COMMITTED took a
+        new snapshot per statement, and a concurrent issue then looked like a broken
+        chain)."""
         try:
             with self.engine.connect() as conn:
                 conn.execution_options(anglebench_read=True)
+                if not self.is_sqlite:
+                    conn.execution_options(isolation_level="REPEATABLE READ",
+                                           postgresql_readonly=True)
                 yield conn
         except self._sa.exc.SQLAlchemyError as exc:
             raise RegisterError(message(
