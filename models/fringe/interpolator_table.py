@@ -24,6 +24,7 @@ given, the smallest power of two of a period whose code range holds the table), 
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
@@ -259,7 +260,7 @@ def _residual(error_rad: np.ndarray) -> Residual:
                     float(np.ptp(e)) / TWO_PI)
 
 
-@dataclass(frozen=True)
+@dataclass
 class _Phases:
     """The true phases of a grid over one period and the measured phase of the fitted
     signals (after the separate terms) at each (rad)."""
@@ -272,6 +273,15 @@ class _Phases:
            grid: int) -> _Phases:
         theta = np.arange(grid) * (TWO_PI / grid)
         return cls(theta, _measured(theta, sin_fit, cos_fit, terms))
+
+    @functools.cached_property
+    def error_over_measured(self) -> tuple[np.ndarray, np.ndarray]:
+        """(measured phase in [0, 2π) ascending, the error φ − θ there, mean removed)."""
+        error = _wrap(self.measured - self.theta)
+        error = error - float(np.mean(error))
+        phi = np.mod(self.measured, TWO_PI)
+        order = np.argsort(phi)
+        return phi[order], error[order]
 
     def residual(self, values_period: np.ndarray, profile: ChipProfile) -> Residual:
         value = _lookup(np.asarray(values_period, dtype=float), self.measured,
@@ -304,15 +314,12 @@ def _check_turns_once(phases: _Phases) -> None:
 def _ideal_table(build: _Phases, profile: ChipProfile) -> np.ndarray:
     """The error over the measured phase at the entries (fractions of a period, mean
     removed, in the chip's sign)."""
-    error = _wrap(build.measured - build.theta)
-    error = error - float(np.mean(error))
-    phi_mod = np.mod(build.measured, TWO_PI)
-    order = np.argsort(phi_mod)
+    phi, error = build.error_over_measured
     n = profile.entries
     at = np.arange(n) * (TWO_PI / n)
     if profile.interpolation == "step":
         at = at + math.pi / n  # the entry holds over [j, j + 1): its middle
-    table = np.interp(at, phi_mod[order], error[order], period=TWO_PI)
+    table = np.interp(at, phi, error, period=TWO_PI)
     table = (table - float(np.mean(table))) / TWO_PI
     return -table if profile.sign == "add" else table
 
@@ -326,7 +333,8 @@ def _chosen_lsb(ideal: np.ndarray, max_code: int) -> float:
 
 
 def _build(build: _Phases, simulation: _Phases, terms: SeparateTerms,
-           profile: ChipProfile) -> InterpolatorTable:
+           profile: ChipProfile, quick: bool = False) -> InterpolatorTable:
+    """The table; ``quick``: its quantised residual only (the others left as it)."""
     ideal = _ideal_table(build, profile)
     chosen = profile.lsb_period is None
     lsb = _chosen_lsb(ideal, profile.max_code) if chosen else float(profile.lsb_period)
@@ -342,11 +350,11 @@ def _build(build: _Phases, simulation: _Phases, terms: SeparateTerms,
             largest=f"{largest:.4g}", codes=over, lsb=f"{lsb:.4g}", most=profile.max_code,
             bits=profile.bits, need_lsb=f"{largest / profile.max_code:.4g}",
             need_bits=need_bits))
+    residual = simulation.residual(codes * lsb, profile)
     return InterpolatorTable(
-        profile, codes, lsb, ideal, terms,
-        residual=simulation.residual(codes * lsb, profile),
-        residual_unquantised=simulation.residual(ideal, profile),
-        residual_without=simulation.residual(np.zeros(1), profile),
+        profile, codes, lsb, ideal, terms, residual=residual,
+        residual_unquantised=residual if quick else simulation.residual(ideal, profile),
+        residual_without=residual if quick else simulation.residual(np.zeros(1), profile),
         lsb_chosen=chosen)
 
 
@@ -376,7 +384,8 @@ def design_table(result: Any, profile: ChipProfile = GENERIC,
         trial = replace(profile, entries=entries, bits=bits, max_code=(1 << (bits - 1)) - 1,
                         lsb_period=None)
         try:
-            return _build(build, simulation, terms, trial).residual.max_abs <= max_residual_period
+            return _build(build, simulation, terms, trial, quick=True
+                          ).residual.max_abs <= max_residual_period
         except TableRefused:
             return False
 

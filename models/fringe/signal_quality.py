@@ -7,7 +7,9 @@ when one is chosen, so that a read head in tolerance at one place and out at ano
 Mounting indications, not conformity statements (models/fringe/signal_tolerance.py): no guard
 band, no uncertainty.
 
-A window's figure is the mean of its periods' figures. Windows are in record order; with N
+A window's figures are those of its periods' mean fit: the mean of their fitted coefficients
+(A_k cos c_k, A_k sin c_k) — with N equal steps a period exactly the least-squares fit of the
+window's samples. Windows are in record order; with N
 equal steps a period, window i starts at period i·n of the record (its place on the
 revolution from the record's start, ``revolution_deg``); with a θ column or an estimated
 phase, the per-period fits are segments of one period of travel each (a segment covering
@@ -31,7 +33,7 @@ from models.fringe.signal_tolerance import (
 )
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["SignalQuality", "period_figures", "signal_quality", "tolerance_json"]
+__all__ = ["SignalQuality", "default_window", "period_figures", "signal_quality", "tolerance_json"]
 
 #: grid of the per-period waveforms' peaks (refined by a parabola through the best three)
 _GRID = 512
@@ -131,8 +133,10 @@ def signal_quality(result: Any, preset: TolerancePreset | None = None, scale: fl
         raise ValueError(message(QT_TR_NOOP("the scale must be a positive number, not {scale}"),
                                  scale=f"{scale:g}"))
     orders = tuple(result.sin_fit.orders)
-    figures = period_figures(result.sin_periods, result.cos_periods, orders, preset, scale)
-    count = len(figures["amplitude_a"])
+    sin_rows, cos_rows = (_windowed(np.asarray(rows, float), periods_per_window)
+                          for rows in (result.sin_periods, result.cos_periods))
+    count = min(len(result.sin_periods), len(result.cos_periods))
+    figures = period_figures(sin_rows, cos_rows, orders, preset, scale)
     units = _units(preset, figures)
     equal_steps = getattr(result, "phase_source", "") == "samples_per_period"
     lines = getattr(result, "lines_per_rev", 0) if getattr(result, "unit", "") == "arcsec" else 0
@@ -142,8 +146,7 @@ def signal_quality(result: Any, preset: TolerancePreset | None = None, scale: fl
         entry: dict[str, Any] = {"window": i, "first_period": start, "periods": stop - start}
         if equal_steps and lines:
             entry["revolution_deg"] = (start + 0.5 * (stop - start)) * 360.0 / lines
-        values = {q: float(np.nanmean(v[start:stop])) if np.any(np.isfinite(v[start:stop]))
-                  else math.nan for q, v in figures.items()}
+        values = {q: float(v[i]) for q, v in figures.items()}
         entry.update(values)
         if preset is not None:
             states = {j.quantity: j.state for j in judge(values, preset)}
@@ -153,6 +156,32 @@ def signal_quality(result: Any, preset: TolerancePreset | None = None, scale: fl
                 counts[state] += 1
         windows.append(entry)
     return SignalQuality(windows, units, periods_per_window, preset, scale, out_of_band)
+
+
+def _windowed(rows: np.ndarray, n: int) -> np.ndarray:
+    """The rows ``[A0, A_k, c_k …]`` of each window of ``n`` periods: their coefficients'
+    mean, in canonical form again."""
+    if n == 1 or not len(rows):
+        return rows
+    count = len(rows)
+    starts = np.arange(0, count, n)
+    sizes = np.minimum(starts + n, count) - starts
+
+    def mean(values: np.ndarray) -> np.ndarray:
+        return np.add.reduceat(values, starts, axis=0) / sizes[:, None]
+
+    amp, phase = rows[:, 1::2], rows[:, 2::2]
+    s, c = mean(amp * np.cos(phase)), mean(amp * np.sin(phase))
+    out = np.empty((len(starts), rows.shape[1]))
+    out[:, 0] = mean(rows[:, :1])[:, 0]
+    out[:, 1::2], out[:, 2::2] = np.hypot(s, c), np.arctan2(c, s)
+    return out
+
+
+def default_window(result: Any, most: int = 1000) -> int:
+    """Periods a window so that a record gives at most ``most`` windows."""
+    count = min(len(result.sin_periods), len(result.cos_periods))
+    return max(1, -(-count // most))
 
 
 def _units(preset: TolerancePreset | None, figures: dict[str, np.ndarray]) -> dict[str, str]:
