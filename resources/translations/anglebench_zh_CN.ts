@@ -4408,8 +4408,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>，外带 {low} … {high}</translation>
     </message>
     <message>
-        <source>  {quantity} = {value}{unit}: {state} (band {low} … {high}</source>
-        <translation>  {quantity} = {value}{unit}：{state}（容差带 {low} … {high}</translation>
+        <source>  {quantity} = {value}{unit}: {state} (band {low} … {high}{outer})</source>
+        <translation>  {quantity} = {value}{unit}：{state}（容差带 {low} … {high}{outer}）</translation>
     </message>
     <message>
         <source>inside</source>
