@@ -189,5 +189,7 @@ def test_any_head_table_within_an_lsb_of_the_entries_limit(quad, ratio, h3, c3, 
     table = design_table(fits, profile)
     assert int(np.max(np.abs(table.codes))) <= profile.max_code
     assert table.residual.max_abs <= table.residual_unquantised.max_abs + table.lsb_period
-    worst, rms = _actual(head, table, points=20_011)
-    assert worst == pytest.approx(table.residual.max_abs, rel=2e-3, abs=2e-6)
+    # a step table's largest error sits at a jump: each grid (65 537 and 100 003 phases a
+    # period) meets it to within its spacing times the error's slope (≤ 0.2 here): 4e-6
+    worst, rms = _actual(head, table)
+    assert worst == pytest.approx(table.residual.max_abs, rel=2e-3, abs=4e-6)
