@@ -159,19 +159,10 @@ class CertificatePresenter:
             defaults = {**defaults, SIGNAL_PRESETS: stored[SIGNAL_PRESETS]}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
 
-    def signal_presets(self) -> tuple[list, list[str]]:
-        """The signal tolerance presets: the built-in ones and the lab's own saved with the
-        lab defaults, and a message for each stored one that does not read (#45)."""
-        from models.fringe.signal_tolerance import load_presets
-
-        return load_presets(self.lab_defaults())
-
-    def save_signal_presets(self, presets) -> None:
-        """The lab's own presets (those not a built-in as it is) saved with the lab defaults,
-        the other defaults kept."""
-        from models.fringe.signal_tolerance import lab_defaults_with_presets
-
-        data = lab_defaults_with_presets(self.lab_defaults(), presets)
+    def save_lab_defaults_entry(self, key: str, value: Any) -> None:
+        """One entry of the lab defaults set, the others kept: a workbench's own (e.g. the
+        fringe workbench's signal tolerance presets, models/fringe/signal_tolerance.py)."""
+        data = {**self.lab_defaults(), key: value}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(data, ensure_ascii=False))
 
     def test_plan(self, workbench: str) -> dict:

@@ -24,7 +24,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from abc import ABC, abstractmethod
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any, ClassVar
 
 from models.certificate.traceability import test_report_statement, traceability_gaps
@@ -245,10 +245,32 @@ class WritesCorrectionTable(ABC):
         """Writes the table of ``result`` to ``path``; returns what was written."""
 
 
-class JudgesSignals(ABC):  # noqa: B024 - a capability without methods of its own
+class JudgesSignals(ABC):
     """Its result holds two quadrature signals' fits: they are judged against a signal
     tolerance preset and an interpolator table is made from them (``--signal-preset``,
-    ``--interpolator-table``: models/fringe/signal_tolerance.py, interpolator_table.py)."""
+    ``--interpolator-table``: models/fringe/signal_tolerance.py, interpolator_table.py).
+    The command line reaches them only through these methods."""
+
+    #: the argparse destinations of its options (a workbench without the capability
+    #: refuses them)
+    signal_flags: tuple[str, ...] = ()
+
+    @abstractmethod
+    def add_signal_arguments(self, parser: Any, words: Callable[[str], str]) -> None:
+        """Its options, their help in the language of ``words``."""
+
+    @abstractmethod
+    def signal_setup(self, args: Any) -> Any:
+        """What the options ask for; ValueError (a message) when they do not hold."""
+
+    @abstractmethod
+    def signal_results(self, args: Any, result: Any, setup: Any
+                       ) -> tuple[dict[str, Any], list[Any], Any]:
+        """(the JSON keys to add, the summary lines, the table to write or None)."""
+
+    @abstractmethod
+    def write_signal_table(self, args: Any, result: Any, table: Any) -> Any:
+        """Write the table (OSError when it cannot be); what to say of it."""
 
 
 class SendsRuns(ABC):

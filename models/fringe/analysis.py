@@ -617,6 +617,32 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
     summary = staticmethod(summary)
     correction_table = staticmethod(_correction_table)
 
+    @property
+    def signal_flags(self):
+        from models.fringe.signal_options import FLAGS
+
+        return FLAGS
+
+    def add_signal_arguments(self, parser, words):
+        from models.fringe.signal_options import add_arguments
+
+        add_arguments(parser, words)
+
+    def signal_setup(self, args):
+        from models.fringe.signal_options import setup
+
+        return setup(args)
+
+    def signal_results(self, args, result, setup):
+        from models.fringe.signal_options import results
+
+        return results(args, result, *setup)
+
+    def write_signal_table(self, args, result, table):
+        from models.fringe.signal_options import write_table
+
+        return write_table(args, result, table)
+
     def certificate(self, result, metadata, source_name=""):
         return fringe_certificate(result, metadata, source_name, self.method_reference)
 

@@ -307,6 +307,8 @@ def test_signal_presets_saved_with_the_lab_defaults_and_kept(parts):
         LAB_DEFAULTS_KEY,
         Band,
         TolerancePreset,
+        lab_defaults_with_presets,
+        load_presets,
         preset_by_key,
     )
 
@@ -314,9 +316,10 @@ def test_signal_presets_saved_with_the_lab_defaults_and_kept(parts):
     presenter = parts[0]
     ours = TolerancePreset("ours", "our band", "1Vpp",
                            (Band("amplitude_a", "Vpp", (0.9, 1.1), (0.6, 1.2)),), "lab rule")
-    presenter.save_signal_presets([*BUILTIN_PRESETS, ours])
+    presenter.save_lab_defaults_entry(LAB_DEFAULTS_KEY, lab_defaults_with_presets(
+        presenter.lab_defaults(), [*BUILTIN_PRESETS, ours])[LAB_DEFAULTS_KEY])
     presenter.save_lab_defaults({"lab_name": "Lab"})
-    presets, problems = presenter.signal_presets()
+    presets, problems = load_presets(presenter.lab_defaults())
     assert problems == [] and preset_by_key("ours", presets) == ours
     assert presenter.lab_defaults()["lab_name"] == "Lab"
     assert len(presets) == len(BUILTIN_PRESETS) + 1
