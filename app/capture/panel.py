@@ -90,6 +90,7 @@ from models.capture.raw_record import frame_text
 from models.capture.stability import StabilityGate
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
+    cell_step,
     cell_text,
     column_is_dms,
     elevation_from_zenith_deg,
@@ -284,6 +285,8 @@ class _Session:
         self.workbench, self.kind, self.worker = workbench, kind, worker
         self.frames: list[list] = []
         self.takes: list[list[int]] = []
+        #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
+        self.steps: list[float] = []
 
     def stored(self) -> dict:
         raw = self.worker.raw
@@ -291,7 +294,7 @@ class _Session:
             self.frames.append([round(float(t), 6), frame_text(line), int(bool(used))])
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
                 "started_utc": self.worker.started_utc, "frames": list(self.frames),
-                "takes": [list(t) for t in self.takes]}
+                "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
 
 
 class InstrumentLink:
@@ -1018,6 +1021,7 @@ class CapturePanel(QDockWidget):
         row = self.target_row(presenter, place)
         vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
         changes = []
+        steps: dict[int, float] = {}
         for link, i, key in targets:
             got, unit, _ = taking[link.slot]
             if i >= len(got):
@@ -1033,6 +1037,9 @@ class CapturePanel(QDockWidget):
                 or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
             changes.append((row, column, cell_text(value, unit, link.resolution_arcsec, dms,
                                                    column_def.unit)))
+            # the step the cell was rounded to: within half of it the cell is as captured
+            steps[link.slot] = max(steps.get(link.slot, 0.0), cell_step(
+                unit, link.resolution_arcsec, dms, column_def.unit))
         self.update_guide()
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
@@ -1073,6 +1080,7 @@ class CapturePanel(QDockWidget):
             if got is not None and link.session is not None and got[2][0] >= 0 \
                     and any(t[0] is link for t in targets):
                 link.session.takes.append([row, got[2][0], got[2][1]])
+                link.session.steps.append(steps.get(link.slot, 0.0))
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         table.next_row(row)

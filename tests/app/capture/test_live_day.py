@@ -38,3 +38,34 @@ def test_the_result_text_keeps_its_width_beside_the_docked_panel(window):
         assert view.summary.width() >= 200, (key, view.summary.width())
         assert view.plot_tabs.width() >= 450, (key, view.plot_tabs.width())
         assert not table.horizontalScrollBar().isVisible(), key  # every column in sight
+
+
+def test_a_take_rounded_to_the_resolution_is_not_marked_edited(window, qtbot):
+    """A take writes 3.254" as "3.25" (0.01" unless set): the table then marked every
+    captured cell "edited after capture: 3.254 → 3.25" (orange), as the certificate would
+    have said. The session keeps each take's step, through the project file too."""
+    from models.capture.raw_record import raw_sessions_from_json
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    presenter = window.presenter("polygon")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    model = presenter.table_model
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(model.sheet.row_count, 0))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(3.254, -1.503)]) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=1,
+                         retry_pause_s=0.05)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    row = model.sheet.row_count - 1
+    assert model.sheet.text(row, keys.index("ac_x_arcsec")) == "3.25"
+    window.mark_edited_readings(presenter)
+    assert model.edited_cells == {}
+    (session,) = panel.raw_sessions("polygon")
+    assert session["steps"] == [0.01]
+    (again,) = raw_sessions_from_json([session], "project.anglebench")
+    assert again["steps"] == [0.01]
+    model.set_cells([(row, keys.index("ac_x_arcsec"), "3.27")])  # a real edit still shows
+    assert set(model.edited_cells) == {(row, keys.index("ac_x_arcsec"))}
