@@ -97,3 +97,17 @@ def test_a_demonstration_instrument_that_is_asked_answers_at_its_rate(kind):
         if isinstance(event, Reading):
             readings.append(event)
     assert 5 <= len(readings) <= 25, len(readings)
+
+
+def test_the_status_bar_says_ready_in_the_language_chosen(window):
+    """``anglebench --language zh_CN`` sets the language after the window is made: its
+    status bar kept "Ready" in English in the Chinese window."""
+    assert window.statusBar().currentMessage() == "Ready"
+    window.set_language("zh_CN")
+    try:
+        assert window.statusBar().currentMessage() == "就绪"
+        window.statusBar().showMessage("row 3: a message of its own")
+        window.set_language("en")  # another message is left as it is
+        assert window.statusBar().currentMessage() == "row 3: a message of its own"
+    finally:
+        window.set_language("en")
