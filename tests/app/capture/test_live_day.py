@@ -111,3 +111,20 @@ def test_the_status_bar_says_ready_in_the_language_chosen(window):
         assert window.statusBar().currentMessage() == "row 3: a message of its own"
     finally:
         window.set_language("en")
+
+
+def test_a_refusal_while_capturing_is_in_the_windows_language(window, qtbot):
+    """While an instrument is connected the analysis runs off the GUI thread; its refusal
+    crossed a signal typed ``str`` and lost its template: the Chinese window said
+    "无结果：0 usable readings; at least 4 are needed"."""
+    window.set_language("zh_CN")
+    try:
+        presenter = window.presenter("theodolite")
+        presenter.set_capturing(True)
+        presenter.table_model.set_cells([(0, 0, "-20"), (0, 1, "-20"), (0, 2, "1")])
+        presenter.refresh()
+        qtbot.waitUntil(lambda: presenter.view.verdict.text().startswith("无结果"), timeout=5000)
+        assert presenter.view.verdict.text() == "无结果：1 个可用读数；至少需要 4 个"
+    finally:
+        presenter.set_capturing(False)
+        window.set_language("en")
