@@ -646,12 +646,24 @@ class CapturePanel(QDockWidget):
 
     # ------------------------------------------------------------ connecting
     def connect_dialog(self, slot: int = 0) -> None:
-        link = self.links[slot]
-        dialog = ConnectDialog(self, self.qsettings, link.kind)
+        dialog = ConnectDialog(self, self.qsettings, self.suggested_kind(slot))
         if dialog.exec() == QDialog.DialogCode.Accepted:
             kind, port, baud = dialog.choice()
             if port:
                 self.connect_to(kind, port, baud, slot=slot)
+
+    def suggested_kind(self, slot: int = 0) -> str:
+        """The instrument *Connect…* proposes: the one last connected in ``slot``, else the
+        one the workbench in front reads (a theodolite on the theodolite's, an
+        autocollimator elsewhere; a readout second) — it proposed an autocollimator on the
+        theodolite's tab (#41)."""
+        if self.links[slot].kind:
+            return self.links[slot].kind
+        if slot:
+            return "readout"
+        current = getattr(self.window_, "current", None)
+        key = getattr(getattr(current, "kind", None), "key", "")
+        return "theodolite" if key == "theodolite" else "autocollimator"
 
     def connect_to(self, kind: str, port: str, baud: int | None = None, slot: int = 0,
                    simulator=None, **worker_options) -> None:

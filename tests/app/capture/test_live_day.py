@@ -128,3 +128,20 @@ def test_a_refusal_while_capturing_is_in_the_windows_language(window, qtbot):
     finally:
         presenter.set_capturing(False)
         window.set_language("en")
+
+
+def test_connect_proposes_the_instrument_the_workbench_reads(window):
+    """Instrument › Connect… on the theodolite's tab proposed an autocollimator."""
+    from app.capture.panel import ConnectDialog
+
+    panel = window.capture_panel
+    for key, first in (("theodolite", "theodolite"), ("polygon", "autocollimator")):
+        window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
+        assert panel.suggested_kind(0) == first
+        assert panel.suggested_kind(1) == "readout"
+        dialog = ConnectDialog(panel, panel.qsettings, panel.suggested_kind(0))
+        assert dialog.choice()[0] == first
+        dialog.deleteLater()
+    panel.links[0].kind = "autocollimator"  # the one last connected stays proposed
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("theodolite")))
+    assert panel.suggested_kind(0) == "autocollimator"
