@@ -727,6 +727,7 @@ class CapturePanel(QDockWidget):
         """A new connection or another workbench: no figure of before stays on screen."""
         self.stability.setText("")
         self.allan.setText("")
+        self._spread: float | None = None
         self._allan_due = 0.0
         self._show_due, self._show_pending = 0.0, False
         self._guide_due = 0.0
@@ -813,8 +814,15 @@ class CapturePanel(QDockWidget):
         if phase == "taken":
             self.auto_state.setText(tr("Auto-take: taken; move to the next point"))
         else:
-            self.auto_state.setText(tr("Auto-take: settling, {percent} % of the dwell").format(
-                percent=f"{100 * part:.0f}"))
+            text = tr("Auto-take: settling, {percent} % of the dwell").format(
+                percent=f"{100 * part:.0f}")
+            spread = getattr(self, "_spread", None)
+            if spread is not None and spread > self.window_box.value():
+                # why it waits (#41: a theodolite's 0.3" of noise spread 1.4" over a second:
+                # with the 0.5" window it never took, saying only "2 % of the dwell")
+                text += tr(" — the output spreads {spread} over a second, more than the "
+                           "window: widen the window").format(spread=f"{spread:.2g}")
+            self.auto_state.setText(text)
 
     @property
     def auto_phase(self) -> str:
@@ -980,6 +988,7 @@ class CapturePanel(QDockWidget):
             recent = _unwrapped_deg(recent, recent[0])
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
+            self._spread = float(np.max(spread)) * scale  # in the gate's unit
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
                 spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))

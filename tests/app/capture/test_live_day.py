@@ -145,3 +145,28 @@ def test_connect_proposes_the_instrument_the_workbench_reads(window):
     panel.links[0].kind = "autocollimator"  # the one last connected stays proposed
     window.tabs.setCurrentIndex(window.presenters.index(window.presenter("theodolite")))
     assert panel.suggested_kind(0) == "autocollimator"
+
+
+
+def test_auto_take_says_why_it_waits_when_the_noise_exceeds_the_window(window, qtbot):
+    """A theodolite with 0.3" of noise, read 50 times a second, spreads ~1.4" over a
+    second: with the 0.5" window auto-take never took, the panel saying only "settling, 2 %
+    of the dwell" for minutes. It now says the spread is more than the window."""
+    from tests.instrument_simulators import TheodoliteSimulator
+
+    presenter = window.presenter("theodolite")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.5)
+    panel.dwell_box.setValue(0.5)
+    with TheodoliteSimulator("pty", positions=[(10.0, 88.0)], sigma=0.3,
+                             reply_delay_s=0.02) as sim:
+        panel.connect_to("theodolite", sim.port, silence_s=1.0, retries=1)
+        qtbot.waitUntil(lambda: "more than the window" in panel.auto_state.text(),
+                        timeout=5000)
+        assert presenter.sheet.row_count == 0  # nothing taken
+        panel.window_box.setValue(3.0)  # widened: it takes
+        qtbot.waitUntil(lambda: presenter.sheet.row_count == 1, timeout=5000)
+        assert "more than the window" not in panel.auto_state.text()
+        panel.disconnect_instrument()
