@@ -152,6 +152,10 @@ def _unwrapped_deg(values, origin):
     return origin + (values - origin + 180.0) % 360.0 - 180.0
 
 
+#: reconnections the window tries in a row before it says the link is lost for good
+WINDOW_RETRIES = 12
+
+
 class ConnectDialog(QDialog):
     """Instrument, port and baud rate; the port and baud last used for each instrument are
     filled in (``settings``)."""
@@ -422,6 +426,9 @@ class InstrumentLink:
         self.lost = False
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
+        # the window rides out a link down ~15 s (0.2 s, 0.4 s, … between 12 tries): an
+        # instrument restarted or a cable re-seated; 3 tries gave up after 1.2 s (#41)
+        worker_options.setdefault("retries", WINDOW_RETRIES)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""

@@ -170,3 +170,25 @@ def test_auto_take_says_why_it_waits_when_the_noise_exceeds_the_window(window, q
         qtbot.waitUntil(lambda: presenter.sheet.row_count == 1, timeout=5000)
         assert "more than the window" not in panel.auto_state.text()
         panel.disconnect_instrument()
+
+
+def test_the_window_rides_out_an_instrument_restarted(window, qtbot):
+    """The demonstration theodolite restarted (2–3 s down): the panel gave up after three
+    tries in 1.2 s ("cannot open … Connection refused") and the run stopped until
+    Connect… again. The window now tries for ~15 s."""
+    from tests.instrument_simulators import TheodoliteSimulator
+
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("theodolite")))
+    panel = window.capture_panel
+    with TheodoliteSimulator("tcp", positions=[(10.0, 88.0)], reply_delay_s=0.02) as sim:
+        port = sim.port
+        panel.connect_to("theodolite", port, silence_s=0.5)
+        qtbot.waitUntil(lambda: panel.latest is not None, timeout=5000)
+    qtbot.wait(2500)  # down, as an instrument restarting
+    number = int(port.rsplit(":", 1)[1])
+    with TheodoliteSimulator("tcp", positions=[(20.0, 88.0)], reply_delay_s=0.02,
+                             tcp_port=number):
+        qtbot.waitUntil(lambda: panel.latest is not None
+                        and abs(panel.latest.values[0] - 20.0) < 1e-3, timeout=15000)
+        assert panel.links[0].connected
+        panel.disconnect_instrument()
