@@ -192,3 +192,25 @@ def test_the_window_rides_out_an_instrument_restarted(window, qtbot):
                         and abs(panel.latest.values[0] - 20.0) < 1e-3, timeout=15000)
         assert panel.links[0].connected
         panel.disconnect_instrument()
+
+
+def test_a_theodolite_take_is_as_captured_and_an_edited_elevation_is_marked(window, qtbot):
+    from tests.instrument_simulators import TheodoliteSimulator
+
+    presenter = window.presenter("theodolite")
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    model = presenter.table_model
+    keys = [c.key for c in model.sheet.columns]
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(10.0000123, 88.0000123)],
+                             reply_delay_s=0.02) as sim:
+        panel.connect_to("theodolite", sim.port, silence_s=0.5, retries=1)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    elevation = keys.index("elevation_deg")
+    assert model.sheet.text(0, elevation) == "2.000000"  # 90° − V, to 0.1" (1e-6°)
+    window.mark_edited_readings(presenter)
+    assert model.edited_cells == {}
+    model.set_cells([(0, elevation, "2.010000")])
+    assert set(model.edited_cells) == {(0, elevation)}

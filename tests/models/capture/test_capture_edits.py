@@ -147,3 +147,26 @@ def test_a_theodolite_reading_written_as_dms_to_its_resolution_is_as_captured():
     rows[0][1] = "10°00'00.2\""
     assert [e.column for e in edited_after_capture([session], rows, columns, frame_values)] \
         == ["azimuth_deg"]
+
+
+def test_an_edited_elevation_is_found_where_the_column_reads_elevation():
+    """A take writes 90° − V into the theodolite's elevation column (its default, "vertical
+    reading: elevation E"); the check compared nothing there, so an elevation edited after
+    capture went unmarked and uncertified (#41 live day)."""
+    v = 88.0000123  # elevation 1.9999877° = 1°59'59.956"
+    line = f"%R1P,0,1:0,{10.0 * 3.141592653589793 / 180:.12f}," \
+           f"{v * 3.141592653589793 / 180:.12f}".encode()
+    session = session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00",
+                           [(0.0, line, True)], [[0, 0, 0]], steps=[0.1 / 3600])
+    kind = KINDS["theodolite"]
+    settings = {"vertical_reading": "elevation"}
+    rows = [["10", "10°00'00.0\"", "2°00'00.0\"", "", ""]]
+    cache: dict = {}
+    assert readings_edited_after_capture(kind, settings, rows, [session], cache) == []
+    rows[0][2] = "2°00'10.0\""
+    (edit,) = readings_edited_after_capture(kind, settings, rows, [session], cache)
+    assert (edit.column, edit.now) == ("elevation_deg", "2°00'10.0\"")
+    # read as zenith angles the same cell is compared with V itself
+    assert [e.column for e in readings_edited_after_capture(
+        kind, {"vertical_reading": "zenith"}, [["10", "10°00'00.0\"", "88°00'00.0\"", "", ""]],
+        [session], cache)] == []
