@@ -461,6 +461,9 @@ class InstrumentLink:
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
         self.disconnect_button.setEnabled(False)
+        # its spread and Allan deviation go with it (#41: they stayed on screen)
+        if self.slot == 0 and hasattr(self.panel, "stability"):
+            self.panel.clear_statistics()
         self.panel._links_changed()
 
     # ------------------------------------------------------------ readings
@@ -730,12 +733,17 @@ class CapturePanel(QDockWidget):
             if hasattr(presenter, "set_capturing"):
                 presenter.set_capturing(connected and presenter is current)
 
-    def _reset_statistics(self) -> None:
-        """A new connection or another workbench: no figure of before stays on screen."""
+    def clear_statistics(self) -> None:
+        """The first instrument's spread and Allan deviation off the screen (its link ended:
+        they described readings no longer coming)."""
         self.stability.setText("")
         self.allan.setText("")
         self._spread: float | None = None
         self._allan_due = 0.0
+
+    def _reset_statistics(self) -> None:
+        """A new connection or another workbench: no figure of before stays on screen."""
+        self.clear_statistics()
         self._show_due, self._show_pending = 0.0, False
         self._guide_due = 0.0
         self.next_reading = None

@@ -214,3 +214,18 @@ def test_a_theodolite_take_is_as_captured_and_an_edited_elevation_is_marked(wind
     assert model.edited_cells == {}
     model.set_cells([(0, elevation, "2.010000")])
     assert set(model.edited_cells) == {(0, elevation)}
+
+
+def test_the_spread_and_allan_deviation_go_with_the_link(window, qtbot):
+    """After the link ended (given up, or Disconnect) the spread over the last second and
+    the Allan deviation of the readings that no longer come stayed on screen."""
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(1.0, 2.0)], sigma=0.05) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.5, retries=1)
+        qtbot.waitUntil(lambda: bool(panel.stability.text()) and bool(panel.allan.text()),
+                        timeout=5000)
+        panel.disconnect_instrument()
+    assert panel.stability.text() == "" and panel.allan.text() == ""
