@@ -15,6 +15,7 @@ from app.capture.instruments import frame_values, reading_columns
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
+from models.capture.take_cells import elevation_from_zenith_deg
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
 from models.project.file import Project, WorkbenchState, project_to_json
@@ -58,9 +59,26 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
     the instrument's frames give (models/capture/edits.py)."""
     keys = [c.key for c in kind.columns]
     zenith = settings.get("vertical_reading") == "zenith"
-    return edited_after_capture(sessions or [], rows,
-                                lambda instrument: reading_columns(instrument, keys, zenith),
-                                frame_values, cache)
+    # a take writes a theodolite's 90° − V where the column reads elevation: compared so
+    # (#41: the elevation was not compared at all, an edit of it went unmarked)
+    elevation = not zenith and "elevation_deg" in keys
+
+    def columns(instrument: str):
+        out = reading_columns(instrument, keys, zenith)
+        if instrument == "theodolite" and elevation:
+            out = [("elevation_deg", keys.index("elevation_deg")) if key == "zenith_deg"
+                   else (key, column) for key, column in out]
+        return out
+
+    def values(instrument: str, line: bytes):
+        got = frame_values(instrument, line)
+        if got is not None and instrument == "theodolite" and elevation and len(got) > 1:
+            got = (got[0], elevation_from_zenith_deg(got[1]), *got[2:])
+        return got
+
+    if cache is not None and elevation:  # the frames' readings as elevations kept apart
+        cache = cache.setdefault("elevation", {})
+    return edited_after_capture(sessions or [], rows, columns, values, cache)
 
 
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,

@@ -128,7 +128,8 @@ class MainWindow(QMainWindow):
         self.setAcceptDrops(True)
         self._on_tab_changed(0)
         self.setCentralWidget(self.tabs)
-        self.statusBar().showMessage(tr("Ready"))
+        self._ready = tr("Ready")
+        self.statusBar().showMessage(self._ready)
         fit_to_screen(self, 1400, 900)
         # readings from the instruments (#34): the panel, hidden until Instrument › Connect…
         from app.capture.panel import CapturePanel
@@ -179,6 +180,9 @@ class MainWindow(QMainWindow):
 
     def _retranslate(self) -> None:
         self.menus.update_undo_actions()
+        if self.statusBar().currentMessage() == getattr(self, "_ready", None):  # said anew
+            self._ready = tr("Ready")  # (--language is set after the window is made)
+            self.statusBar().showMessage(self._ready)
         if self.manual is not None and self.manual.isVisible():  # the page in the new language
             self.manual.show_page(self.current.kind.key, self.language)
         for index, presenter in enumerate(self.presenters):

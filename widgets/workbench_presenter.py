@@ -58,7 +58,9 @@ PLAN_ROWS = 5_000
 class _TaskSignals(QObject):
     """Owned by the presenter; workers emit through it back to the GUI thread."""
 
-    finished = Signal(int, object, str)
+    # the error as an object: a Message keeps its template (typed str, Qt gave back its
+    # English: "无结果：0 usable readings…" while capturing, #41)
+    finished = Signal(int, object, object)
     cancelled = Signal(int)  # an analysis superseded by newer readings stopped early
     imported = Signal(object, str, str, int)
 

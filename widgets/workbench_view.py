@@ -215,9 +215,20 @@ class WorkbenchView(QWidget):
         direction columns put its last ones behind a horizontal scroll bar at 1280 px)."""
         table = self.table
         header = table.horizontalHeader()
-        if header.length() <= table.viewport().width():
-            return  # every column in sight (the stretched last one follows the width)
-        width = (header.length() + table.verticalHeader().width() + 2 * table.frameWidth()
+        count = header.count()
+        if not count:
+            return
+        # the columns' own widths: the stretched last one counts with its contents' width,
+        # not the width it was stretched to (#41: counted stretched, the least width only
+        # grew — 663 px for the theodolite's 303 px of columns — and, with the instrument
+        # panel docked, the result's text was left 70 px)
+        last = count - 1
+        natural = sum(header.sectionSize(i) for i in range(last) if not header.isSectionHidden(i))
+        if not header.isSectionHidden(last):
+            # (a stretched section is never narrower than the header's default section)
+            natural += max(header.sectionSizeHint(last), table.sizeHintForColumn(last),
+                           header.defaultSectionSize())
+        width = (natural + table.verticalHeader().width() + 2 * table.frameWidth()
                  + table.verticalScrollBar().sizeHint().width())
         if width != table.minimumWidth():
             table.setMinimumWidth(width)

@@ -90,6 +90,7 @@ from models.capture.raw_record import frame_text
 from models.capture.stability import StabilityGate
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
+    cell_step,
     cell_text,
     column_is_dms,
     elevation_from_zenith_deg,
@@ -149,6 +150,10 @@ def _unwrapped_deg(values, origin):
     direction near 0°/360° is not 360° apart from itself."""
     values = np.asarray(values, dtype=float)
     return origin + (values - origin + 180.0) % 360.0 - 180.0
+
+
+#: reconnections the window tries in a row before it says the link is lost for good
+WINDOW_RETRIES = 12
 
 
 class ConnectDialog(QDialog):
@@ -284,6 +289,8 @@ class _Session:
         self.workbench, self.kind, self.worker = workbench, kind, worker
         self.frames: list[list] = []
         self.takes: list[list[int]] = []
+        #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
+        self.steps: list[float] = []
 
     def stored(self) -> dict:
         raw = self.worker.raw
@@ -291,7 +298,7 @@ class _Session:
             self.frames.append([round(float(t), 6), frame_text(line), int(bool(used))])
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
                 "started_utc": self.worker.started_utc, "frames": list(self.frames),
-                "takes": [list(t) for t in self.takes]}
+                "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
 
 
 class InstrumentLink:
@@ -419,6 +426,9 @@ class InstrumentLink:
         self.lost = False
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
+        # the window rides out a link down ~15 s (0.2 s, 0.4 s, … between 12 tries): an
+        # instrument restarted or a cable re-seated; 3 tries gave up after 1.2 s (#41)
+        worker_options.setdefault("retries", WINDOW_RETRIES)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""
@@ -451,6 +461,9 @@ class InstrumentLink:
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
         self.disconnect_button.setEnabled(False)
+        # its spread and Allan deviation go with it (#41: they stayed on screen)
+        if self.slot == 0 and hasattr(self.panel, "stability"):
+            self.panel.clear_statistics()
         self.panel._links_changed()
 
     # ------------------------------------------------------------ readings
@@ -643,12 +656,24 @@ class CapturePanel(QDockWidget):
 
     # ------------------------------------------------------------ connecting
     def connect_dialog(self, slot: int = 0) -> None:
-        link = self.links[slot]
-        dialog = ConnectDialog(self, self.qsettings, link.kind)
+        dialog = ConnectDialog(self, self.qsettings, self.suggested_kind(slot))
         if dialog.exec() == QDialog.DialogCode.Accepted:
             kind, port, baud = dialog.choice()
             if port:
                 self.connect_to(kind, port, baud, slot=slot)
+
+    def suggested_kind(self, slot: int = 0) -> str:
+        """The instrument *Connect…* proposes: the one last connected in ``slot``, else the
+        one the workbench in front reads (a theodolite on the theodolite's, an
+        autocollimator elsewhere; a readout second) — it proposed an autocollimator on the
+        theodolite's tab (#41)."""
+        if self.links[slot].kind:
+            return self.links[slot].kind
+        if slot:
+            return "readout"
+        current = getattr(self.window_, "current", None)
+        key = getattr(getattr(current, "kind", None), "key", "")
+        return "theodolite" if key == "theodolite" else "autocollimator"
 
     def connect_to(self, kind: str, port: str, baud: int | None = None, slot: int = 0,
                    simulator=None, **worker_options) -> None:
@@ -708,11 +733,17 @@ class CapturePanel(QDockWidget):
             if hasattr(presenter, "set_capturing"):
                 presenter.set_capturing(connected and presenter is current)
 
-    def _reset_statistics(self) -> None:
-        """A new connection or another workbench: no figure of before stays on screen."""
+    def clear_statistics(self) -> None:
+        """The first instrument's spread and Allan deviation off the screen (its link ended:
+        they described readings no longer coming)."""
         self.stability.setText("")
         self.allan.setText("")
+        self._spread: float | None = None
         self._allan_due = 0.0
+
+    def _reset_statistics(self) -> None:
+        """A new connection or another workbench: no figure of before stays on screen."""
+        self.clear_statistics()
         self._show_due, self._show_pending = 0.0, False
         self._guide_due = 0.0
         self.next_reading = None
@@ -798,8 +829,15 @@ class CapturePanel(QDockWidget):
         if phase == "taken":
             self.auto_state.setText(tr("Auto-take: taken; move to the next point"))
         else:
-            self.auto_state.setText(tr("Auto-take: settling, {percent} % of the dwell").format(
-                percent=f"{100 * part:.0f}"))
+            text = tr("Auto-take: settling, {percent} % of the dwell").format(
+                percent=f"{100 * part:.0f}")
+            spread = getattr(self, "_spread", None)
+            if spread is not None and spread > self.window_box.value():
+                # why it waits (#41: a theodolite's 0.3" of noise spread 1.4" over a second:
+                # with the 0.5" window it never took, saying only "2 % of the dwell")
+                text += tr(" — the output spreads {spread} over a second, more than the "
+                           "window: widen the window").format(spread=f"{spread:.2g}")
+            self.auto_state.setText(text)
 
     @property
     def auto_phase(self) -> str:
@@ -965,6 +1003,7 @@ class CapturePanel(QDockWidget):
             recent = _unwrapped_deg(recent, recent[0])
         if len(recent) > 1:
             spread = recent.max(axis=0) - recent.min(axis=0)
+            self._spread = float(np.max(spread)) * scale  # in the gate's unit
             shown = "   ".join(f"{s * scale:.3f}" for s in spread)
             self.stability.setText(tr("Spread over the last second: {spread}{unit}").format(
                 spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))
@@ -1018,6 +1057,7 @@ class CapturePanel(QDockWidget):
         row = self.target_row(presenter, place)
         vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
         changes = []
+        steps: dict[int, float] = {}
         for link, i, key in targets:
             got, unit, _ = taking[link.slot]
             if i >= len(got):
@@ -1033,6 +1073,9 @@ class CapturePanel(QDockWidget):
                 or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
             changes.append((row, column, cell_text(value, unit, link.resolution_arcsec, dms,
                                                    column_def.unit)))
+            # the step the cell was rounded to: within half of it the cell is as captured
+            steps[link.slot] = max(steps.get(link.slot, 0.0), cell_step(
+                unit, link.resolution_arcsec, dms, column_def.unit))
         self.update_guide()
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
@@ -1073,6 +1116,7 @@ class CapturePanel(QDockWidget):
             if got is not None and link.session is not None and got[2][0] >= 0 \
                     and any(t[0] is link for t in targets):
                 link.session.takes.append([row, got[2][0], got[2][1]])
+                link.session.steps.append(steps.get(link.slot, 0.0))
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         table.next_row(row)

@@ -78,7 +78,8 @@ def _parser(words) -> argparse.ArgumentParser:
     p.add_argument("--fault", action="append", choices=FAULTS, default=[], help=words(QT_TR_NOOP(
         "a fault to show (repeatable)")))
     p.add_argument("--rate", type=float, default=50.0, metavar="HZ", help=words(QT_TR_NOOP(
-        "the autocollimator's stream rate")))
+        "the autocollimator's stream rate; how often a theodolite or a readout answers at "
+        "most (each answer takes 1/HZ s, as a measurement does)")))
     p.add_argument("--seconds", type=float, default=0.0, help=words(QT_TR_NOOP(
         "stop after this long (0: until interrupted)")))
     return p
@@ -97,7 +98,10 @@ def simulator_from(instrument: str, port: int | str, position=None, positions=No
     return SIMULATORS[instrument](
         "pty" if port == "pty" else "tcp", faults=tuple(faults), positions=script,
         hold_s=hold_s if positions else 1e9, sigma=noise, drift_per_s=drift, rate_hz=rate_hz,
-        tcp_port=0 if port == "pty" else int(port), seed=None)
+        tcp_port=0 if port == "pty" else int(port), seed=None,
+        # an instrument that is asked measures before it answers (#41: answered at once, it
+        # was asked ~8700 times a second and kept the window's thread 60 % busy)
+        reply_delay_s=0.0 if instrument == "autocollimator" or rate_hz <= 0 else 1.0 / rate_hz)
 
 
 def run_simulate(argv: list[str], ready=None) -> int:

@@ -75,11 +75,21 @@ def _number(text: str, angle: bool) -> float | None:
         return None
 
 
-def _same(cell: float | None, value: float, angle: bool) -> bool:
+def _same(cell: float | None, value: float, angle: bool, step: float = 0.0) -> bool:
+    """The cell holds ``value``: to 12 significant digits, or within half the ``step`` the
+    take rounded it to (the instrument's resolution, in the reading's unit)."""
     if cell is None:
         return False
     difference = (cell - value + 180.0) % 360.0 - 180.0 if angle else cell - value
-    return abs(difference) <= _SAME * max(1.0, abs(value))
+    # 0.51: a D°M′S″ cell rounds the rounded seconds once more to its decimals
+    return abs(difference) <= max(_SAME * max(1.0, abs(value)), 0.51 * step)
+
+
+def _steps(session: dict[str, Any]) -> list[float]:
+    """Per take, the step its cells were written with (``steps``, since #41; a session
+    stored before holds none: its cells had every digit)."""
+    steps = session.get("steps")
+    return [float(s) for s in steps] if isinstance(steps, list) else []
 
 
 def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequence[str]],
@@ -100,7 +110,9 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         targets = list(columns_of(instrument))
         # values in degrees (a column key ending in _deg) are angles: compared on the circle
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
-        for row, first, last in session["takes"]:
+        steps = _steps(session)
+        for take, (row, first, last) in enumerate(session["takes"]):
+            step = steps[take] if take < len(steps) else 0.0
             key = (instrument, session["port"], session["started_utc"], first, last)
             if cache is not None and key in cache:
                 values = cache[key]
@@ -116,11 +128,11 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 if column is not None and column < 0:  # no column for it in this sheet
                     continue
                 if column is None:
-                    if not any(_same(_number(c, angles), value, angles) for c in cells):
+                    if not any(_same(_number(c, angles), value, angles, step) for c in cells):
                         edited[(row, key)] = EditedReading(row, key, captured, "")
                     continue
                 now = cells[column] if column < len(cells) else ""
-                if _same(_number(now, angles), value, angles):
+                if _same(_number(now, angles), value, angles, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
                     edited[(row, key)] = EditedReading(row, key, captured, now.strip())

@@ -35,6 +35,10 @@ __all__ = ["KEYS", "frame_text", "raw_digest", "raw_sessions_from_json", "sessio
 
 #: a session's keys, in the order they are stored
 KEYS = ("instrument", "port", "baud", "started_utc", "frames", "takes")
+#: the keys a session may have after them: ``steps``, per take, the step its cells were
+#: rounded to (the instrument's resolution in the reading's unit; 0: every digit), since
+#: #41 — a session without it wrote every digit
+OPTIONAL_KEYS = ("steps",)
 
 
 def frame_text(line: bytes) -> str:
@@ -43,14 +47,17 @@ def frame_text(line: bytes) -> str:
 
 
 def session_json(instrument: str, port: str, baud: int, started_utc: str,
-                 frames, takes) -> dict[str, Any]:
+                 frames, takes, steps=None) -> dict[str, Any]:
     """One session in its stored form, from the worker's frames ``(seconds, bytes,
-    reading)`` and the takes ``(row, first, last)``."""
-    return {"instrument": instrument, "port": port, "baud": int(baud),
-            "started_utc": started_utc,
-            "frames": [[round(float(t), 6), frame_text(line), int(bool(used))]
-                       for t, line, used in frames],
-            "takes": [[int(r), int(a), int(b)] for r, a, b in takes]}
+    reading)``, the takes ``(row, first, last)`` and, optionally, each take's ``steps``."""
+    session = {"instrument": instrument, "port": port, "baud": int(baud),
+               "started_utc": started_utc,
+               "frames": [[round(float(t), 6), frame_text(line), int(bool(used))]
+                          for t, line, used in frames],
+               "takes": [[int(r), int(a), int(b)] for r, a, b in takes]}
+    if steps is not None:
+        session["steps"] = [float(s) for s in steps]
+    return session
 
 
 def raw_digest(sessions: list[dict[str, Any]]) -> str:
@@ -75,7 +82,8 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
                                             "sessions"), where=where))
     sessions = []
     for i, session in enumerate(data, 1):
-        if not isinstance(session, dict) or set(session) != set(KEYS):
+        if not isinstance(session, dict) or not set(KEYS) <= set(session) <= \
+                set(KEYS) | set(OPTIONAL_KEYS):
             raise ValueError(message(QT_TR_NOOP("{where}, session {i}: not a capture session "
                                                 "({keys} expected)"),
                                      where=where, i=i, keys=", ".join(KEYS)))
@@ -90,9 +98,13 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
         ok = ok and all(isinstance(t, list) and len(t) == 3
                         and all(isinstance(v, int) and not isinstance(v, bool) for v in t)
                         and 0 <= t[1] <= t[2] < len(frames) for t in session["takes"])
+        steps = session.get("steps", [])
+        ok = ok and isinstance(steps, list) and len(steps) == len(session["takes"]) \
+            and all(isinstance(s, int | float) and not isinstance(s, bool) and math.isfinite(s)
+                    and s >= 0 for s in steps) if "steps" in session else ok
         if not ok:
             raise ValueError(message(QT_TR_NOOP("{where}, session {i}: a frame or a take is "
                                                 "not as stored by AngleBench"),
                                      where=where, i=i))
-        sessions.append({k: session[k] for k in KEYS})
+        sessions.append({k: session[k] for k in KEYS + OPTIONAL_KEYS if k in session})
     return sessions

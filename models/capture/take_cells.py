@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 
 from models.readings.angles import format_dms
 
-__all__ = ["RESOLUTIONS_ARCSEC", "cell_text", "column_is_dms", "decimals_for",
+__all__ = ["RESOLUTIONS_ARCSEC", "cell_step", "cell_text", "column_is_dms", "decimals_for",
            "elevation_from_zenith_deg", "next_empty_point", "rounded"]
 
 #: one microradian in arcseconds
@@ -97,6 +97,19 @@ def cell_text(value: float, unit: str, resolution_arcsec: float, dms: bool = Fal
     if resolution_arcsec <= 0:
         return f"{value:.12g}"
     return _fixed(rounded(value, resolution_arcsec), decimals_for(resolution_arcsec))
+
+
+def cell_step(unit: str, resolution_arcsec: float, dms: bool = False,
+              column_unit: str = "") -> float:
+    """The step :func:`cell_text` rounds a value in ``unit`` to, in that unit (0: none, 12
+    significant digits): what a cell may differ from the instrument's reading by, half of
+    it, and still hold that reading (models/capture/edits.py)."""
+    if unit == "deg":
+        if resolution_arcsec <= 0:
+            as_sent_dms = dms and column_unit not in ('"', "arcsec")
+            return 0.001 / 3600.0 if as_sent_dms else 0.0
+        return resolution_arcsec / 3600.0
+    return max(0.0, resolution_arcsec)
 
 
 def _fixed(value: float, decimals: int) -> str:

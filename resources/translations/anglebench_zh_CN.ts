@@ -6991,6 +6991,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
+        <extracomment>reconnections the window tries in a row before it says the link is lost for good</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
@@ -7007,7 +7008,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each)</extracomment>
+        <extracomment>where the demonstration instrument points in turn (8 s each) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -7082,6 +7083,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>The demonstration instrument did not start: {reason}</source>
         <translation>演示仪器未能启动：{reason}</translation>
+    </message>
+    <message>
+        <source> — the output spreads {spread} over a second, more than the window: widen the window</source>
+        <translation> — 输出在一秒内的离散为 {spread}，超过稳定范围：请放宽稳定范围</translation>
     </message>
     <message>
         <source>Spread over the last second: {spread}{unit}</source>
@@ -7462,7 +7467,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{where}: the raw frames must be a list of sessions</source>
-        <extracomment>a session&apos;s keys, in the order they are stored</extracomment>
+        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit</extracomment>
         <translation>{where}：原始数据帧必须是采集会话的列表</translation>
     </message>
     <message>
@@ -8532,8 +8537,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>要模拟的故障（可重复给出）</translation>
     </message>
     <message>
-        <source>the autocollimator&apos;s stream rate</source>
-        <translation>自准直仪的连续输出速率</translation>
+        <source>the autocollimator&apos;s stream rate; how often a theodolite or a readout answers at most (each answer takes 1/HZ s, as a measurement does)</source>
+        <translation>自准直仪的数据流速率；经纬仪或数显表每秒最多应答的次数（每次应答如同一次测量，耗时 1/HZ 秒）</translation>
     </message>
     <message>
         <source>stop after this long (0: until interrupted)</source>

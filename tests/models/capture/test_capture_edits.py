@@ -115,3 +115,58 @@ def test_the_certificate_says_which_rows_were_edited(samples_dir):
     assert "SHA-256 " + "ab" * 32 in flat.replace("\n", "")
     assert "Edited after capture" in flat
     assert f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}" in flat
+
+
+def test_a_reading_rounded_to_the_instruments_resolution_is_as_captured():
+    """#41 live day: a take writes its reading rounded to the instrument's resolution (0.01"
+    for an autocollimator); the mark then said every auto-take was "edited after capture:
+    0.384254901961 → 0.38". Each take keeps the step it was written with (``steps``)."""
+    session = _session([(0.381, -3.2), (0.387, -3.21), (0.3848, -3.205)], [[0, 0, 4]])
+    session["steps"] = [0.01]
+    rows = [["1", "0", "0", "0.38", "-3.21"]]
+    assert edited_after_capture([session], rows, _columns, frame_values) == []
+    rows[0][3] = "0.39"  # more than half a step from the reading: an edit
+    (edit,) = edited_after_capture([session], rows, _columns, frame_values)
+    assert (edit.row, edit.column, edit.now) == (0, "ac_x_arcsec", "0.39")
+    del session["steps"]  # a session stored before #41: every digit was written
+    rows[0][3] = "0.38"
+    assert {e.column for e in edited_after_capture([session], rows, _columns, frame_values)} \
+        == {"ac_x_arcsec", "ac_y_arcsec"}
+
+
+def test_a_theodolite_reading_written_as_dms_to_its_resolution_is_as_captured():
+    hz = 10.0000123  # 0.0443" off a whole 0.1"
+    line = f"%R1P,0,1:0,{hz * 3.141592653589793 / 180:.12f},1.535889741755".encode()
+    session = session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00",
+                           [(0.0, line, True)], [[0, 0, 0]])
+    session["steps"] = [0.1 / 3600]
+    keys = [c.key for c in KINDS["theodolite"].columns]
+    rows = [["10", "10°00'00.0\"", "2°00'00.0\"", "", ""]]
+    columns = lambda instrument: reading_columns(instrument, keys)  # noqa: E731
+    assert edited_after_capture([session], rows, columns, frame_values) == []
+    rows[0][1] = "10°00'00.2\""
+    assert [e.column for e in edited_after_capture([session], rows, columns, frame_values)] \
+        == ["azimuth_deg"]
+
+
+def test_an_edited_elevation_is_found_where_the_column_reads_elevation():
+    """A take writes 90° − V into the theodolite's elevation column (its default, "vertical
+    reading: elevation E"); the check compared nothing there, so an elevation edited after
+    capture went unmarked and uncertified (#41 live day)."""
+    v = 88.0000123  # elevation 1.9999877° = 1°59'59.956"
+    line = f"%R1P,0,1:0,{10.0 * 3.141592653589793 / 180:.12f}," \
+           f"{v * 3.141592653589793 / 180:.12f}".encode()
+    session = session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00",
+                           [(0.0, line, True)], [[0, 0, 0]], steps=[0.1 / 3600])
+    kind = KINDS["theodolite"]
+    settings = {"vertical_reading": "elevation"}
+    rows = [["10", "10°00'00.0\"", "2°00'00.0\"", "", ""]]
+    cache: dict = {}
+    assert readings_edited_after_capture(kind, settings, rows, [session], cache) == []
+    rows[0][2] = "2°00'10.0\""
+    (edit,) = readings_edited_after_capture(kind, settings, rows, [session], cache)
+    assert (edit.column, edit.now) == ("elevation_deg", "2°00'10.0\"")
+    # read as zenith angles the same cell is compared with V itself
+    assert [e.column for e in readings_edited_after_capture(
+        kind, {"vertical_reading": "zenith"}, [["10", "10°00'00.0\"", "88°00'00.0\"", "", ""]],
+        [session], cache)] == []

@@ -140,3 +140,21 @@ def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot,
     assert panel.raw_capture() == {}
     assert window.projects.open_project(path)
     assert panel.raw_capture() == saved
+
+
+def test_each_takes_step_is_kept_and_checked():
+    """#41 live day: ``steps`` (per take, the step its cells were rounded to) is optional,
+    kept in order and in the digest; one per take, finite and not negative, else refused."""
+    frames = [(0.0, b"3 003 1.000 2.000", True), (0.1, b"3 003 1.004 2.000", True)]
+    old = session_json("autocollimator", "/dev/ttyUSB0", 9600, "2026-12-02T01:02:03+00:00",
+                       frames, [[0, 0, 1]])
+    new = session_json("autocollimator", "/dev/ttyUSB0", 9600, "2026-12-02T01:02:03+00:00",
+                       frames, [[0, 0, 1]], steps=[0.01])
+    assert raw_sessions_from_json([old], "p") == [old]  # stored before: as it was
+    (kept,) = raw_sessions_from_json(json.loads(json.dumps([new])), "p")
+    assert list(kept) == ["instrument", "port", "baud", "started_utc", "frames", "takes",
+                          "steps"] and kept["steps"] == [0.01]
+    assert raw_digest([kept]) == raw_digest([new]) != raw_digest([old])
+    for bad in ([0.01, 0.01], [-0.01], [float("nan")], ["0.01"], [True], 0.01):
+        with pytest.raises(ValueError, match="session 1"):
+            raw_sessions_from_json([{**new, "steps": bad}], "p")
