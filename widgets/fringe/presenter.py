@@ -30,6 +30,22 @@ class FringePresenter(WorkbenchPresenter):
     def clear_result(self) -> None:
         self.view.clear_result()
 
+    def take_live_signals(self, u_sin, u_cos) -> None:
+        """The live view's window as the record: its samples replace the readings (one undo
+        step, as an import does), each channel's voltage written with 12 significant digits
+        (what the capture's raw lines say, so an edit after the take is seen); the phase is
+        left to be estimated from the signals."""
+        keys = [c.key for c in self.sheet.columns]
+        rows = []
+        for s, c in zip(u_sin.tolist(), u_cos.tolist(), strict=True):
+            values = {"u_sin": f"{s:.12g}", "u_cos": f"{c:.12g}"}
+            rows.append([values.get(k, "") for k in keys])
+        self.table_model.replace_all(rows, tr("Take live signals ({n} samples)").format(
+            n=len(rows)), checked=True)
+        self._fit_columns()
+        self.schedule_refresh()
+        self.view.show_status(tr("{n} samples taken from the live signals").format(n=len(rows)))
+
     def export_table_dialog(self) -> None:
         if self.result is None:
             return
