@@ -412,8 +412,8 @@ class ReadHeadSimulator(_Simulator):
         """The noiseless (u_sin, u_cos) in volts at the true phases ``theta_rad``, the head
         mounted as set (or as given)."""
         gap = self.gap_mm if gap_mm is None else gap_mm
-        yaw = math.atan(1e-3 * (self.yaw_mrad if yaw_mrad is None else yaw_mrad))
-        roll = math.atan(1e-3 * (self.roll_mrad if roll_mrad is None else roll_mrad))
+        yaw = 1e-3 * (self.yaw_mrad if yaw_mrad is None else yaw_mrad)  # rad
+        roll = 1e-3 * (self.roll_mrad if roll_mrad is None else roll_mrad)
         dirt = self.dirt if dirt is None else dirt
         theta = np.asarray(theta_rad, dtype=float)
         period_mm = self.period_um * 1e-3
