@@ -38,8 +38,6 @@ import time
 import tty
 from collections import deque
 
-import numpy as np
-
 __all__ = ["SIMULATORS", "AutocollimatorSimulator", "ReadHeadSimulator", "ReadoutSimulator",
            "TheodoliteSimulator"]
 
@@ -379,15 +377,14 @@ class ReadHeadSimulator(_Simulator):
         self.periods_per_rev, self.dirt_periods = periods_per_rev, dirt_periods
         self.history: deque = deque(maxlen=history)
         self._lock = threading.Lock()
-        self._np_rng = np.random.default_rng(self.rng.randrange(2 ** 32))
         self._samples = 0
         self._phase_turns = 0.0  # the true phase, in periods, at the last sample
         self._clock: float | None = None
         # the transimpedance: 1 Vpp (0.5 V amplitude) at the nominal mounting
         self._gain = 1.0
-        ideal = self.channels(np.linspace(0.0, 2 * math.pi, 64, endpoint=False),
-                              gap_mm=gap_nominal_mm, yaw_mrad=0.0, roll_mrad=0.0, dirt=0.0)
-        self._gain = 0.5 / (0.5 * (ideal[0].max() - ideal[0].min()))
+        ideal, _ = self.channels([2 * math.pi * i / 4096 for i in range(4096)],
+                                 gap_mm=gap_nominal_mm, yaw_mrad=0.0, roll_mrad=0.0, dirt=0.0)
+        self._gain = 0.5 / (0.5 * (max(ideal) - min(ideal)))
 
     # the stream starts when a client connects: the base's flag is always on
     @property
@@ -415,30 +412,35 @@ class ReadHeadSimulator(_Simulator):
         yaw = 1e-3 * (self.yaw_mrad if yaw_mrad is None else yaw_mrad)  # rad
         roll = 1e-3 * (self.roll_mrad if roll_mrad is None else roll_mrad)
         dirt = self.dirt if dirt is None else dirt
-        theta = np.asarray(theta_rad, dtype=float)
         period_mm = self.period_um * 1e-3
         excess = (gap - self.gap_nominal_mm) / self.gap_width_mm
         contrast = self.contrast * math.exp(-excess ** 2)
         if yaw:
-            contrast *= abs(np.sinc(self.field_length_mm * math.tan(yaw) / period_mm))
+            x = math.pi * self.field_length_mm * math.tan(yaw) / period_mm
+            contrast *= abs(math.sin(x) / x)
         h3 = 0.005 + 0.04 * min(excess ** 2, 4.0)
         spot = 2.0 * max(gap, 0.0) * math.tan(roll)
-        light = np.ones_like(theta)
-        if dirt and position_turns is not None:
-            where = np.mod(position_turns, self.periods_per_rev) / self.dirt_periods
-            light = 1.0 - dirt * np.exp(-0.5 * ((where - 0.5 * self.periods_per_rev
-                                                 / self.dirt_periods) * 4.0) ** 2)
-        currents = []
+        fields = []
         for k in range(4):
             y = (k - 1.5) * self.field_pitch_mm
-            shift = 2.0 * math.pi * y * math.tan(yaw) / period_mm
             # the fields' areas are balanced for the beam of a head mounted square
-            illumination = math.exp((y ** 2 - (y - spot) ** 2) / (2.0 * self.beam_width_mm ** 2))
-            psi = theta - k * math.pi / 2.0 + shift
-            currents.append(light * illumination
-                            * (1.0 + contrast * (np.sin(psi) + h3 * np.sin(3.0 * psi))))
-        u_sin = self._gain * (currents[0] - currents[2])
-        u_cos = self._gain * (currents[3] - currents[1])
+            fields.append((math.exp((y ** 2 - (y - spot) ** 2) / (2.0 * self.beam_width_mm ** 2)),
+                           2.0 * math.pi * y * math.tan(yaw) / period_mm - k * math.pi / 2.0))
+        u_sin, u_cos = [], []
+        turns = position_turns if position_turns is not None else [None] * len(theta_rad)
+        middle = 0.5 * self.periods_per_rev / self.dirt_periods
+        for theta, turn in zip(theta_rad, turns, strict=True):
+            light = 1.0
+            if dirt and turn is not None:
+                where = (turn % self.periods_per_rev) / self.dirt_periods
+                light = 1.0 - dirt * math.exp(-0.5 * ((where - middle) * 4.0) ** 2)
+            currents = []
+            for illumination, shift in fields:
+                psi = theta + shift
+                currents.append(light * illumination
+                                * (1.0 + contrast * (math.sin(psi) + h3 * math.sin(3.0 * psi))))
+            u_sin.append(self._gain * (currents[0] - currents[2]))
+            u_cos.append(self._gain * (currents[3] - currents[1]))
         return u_sin, u_cos
 
     def _due(self) -> int:
@@ -454,21 +456,23 @@ class ReadHeadSimulator(_Simulator):
         if count == 0:
             return None
         with self._lock:
-            n = self._samples + np.arange(1, count + 1)
-            t = n / self.sample_hz
-            speed = self.signal_hz * (1.0 + self.wobble * np.sin(2 * math.pi * 0.7 * t))
-            turns = self._phase_turns + np.cumsum(speed) / self.sample_hz
-            theta = 2.0 * math.pi * turns
+            turns, at = [], self._phase_turns
+            for n in range(self._samples + 1, self._samples + count + 1):
+                t = n / self.sample_hz
+                at += self.signal_hz * (1.0 + self.wobble * math.sin(2 * math.pi * 0.7 * t)) \
+                    / self.sample_hz
+                turns.append(at)
+            theta = [2.0 * math.pi * turn for turn in turns]
             u_sin, u_cos = self.channels(theta, position_turns=turns)
             if self.noise_mv:
-                u_sin = u_sin + self._np_rng.normal(0.0, 1e-3 * self.noise_mv, count)
-                u_cos = u_cos + self._np_rng.normal(0.0, 1e-3 * self.noise_mv, count)
-            self._phase_turns = float(turns[-1])
+                sigma = 1e-3 * self.noise_mv
+                u_sin = [u + self.rng.gauss(0.0, sigma) for u in u_sin]
+                u_cos = [u + self.rng.gauss(0.0, sigma) for u in u_cos]
+            self._phase_turns = at
             self._samples += count
         self._frames += count
-        self.history.extend(zip(theta.tolist(), u_sin.tolist(), u_cos.tolist(), strict=True))
-        return "".join(f"{s:.6f},{c:.6f}\n" for s, c in zip(u_sin.tolist(), u_cos.tolist(),
-                                                            strict=True)).encode()
+        self.history.extend(zip(theta, u_sin, u_cos, strict=True))
+        return "".join(f"{s:.6f},{c:.6f}\n" for s, c in zip(u_sin, u_cos, strict=True)).encode()
 
     def answer(self, command: bytes) -> list[bytes]:
         """``NAME VALUE`` changes a setting (:attr:`SETTINGS`); anything else is ignored."""

@@ -29,7 +29,7 @@ def fundamental(theta, u):
 
 def head_figures(head, **mounting):
     theta = np.linspace(0, 2 * math.pi, 720, endpoint=False)
-    u_sin, u_cos = head.channels(theta, **mounting)
+    u_sin, u_cos = (np.asarray(u) for u in head.channels(theta, **mounting))
     o_s, a_s, c_s = fundamental(theta, u_sin)
     o_c, a_c, c_c = fundamental(theta, u_cos)
     phase = math.degrees((c_c - c_s - math.pi / 2 + math.pi) % (2 * math.pi) - math.pi)

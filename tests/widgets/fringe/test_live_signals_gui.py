@@ -239,7 +239,7 @@ def test_the_read_head_simulator_live_over_tcp(fringe, qtbot):
         panel.disconnect_stream()
     # the head's figures from its own geometry, at the true phase (not the estimated one)
     theta = np.linspace(0, 2 * math.pi, 3600, endpoint=False)
-    u_sin, u_cos = head.channels(theta)
+    u_sin, u_cos = (np.asarray(u) for u in head.channels(theta))
     design = np.column_stack([np.ones_like(theta), np.sin(theta), np.cos(theta)])
     (_, ss, sc), *_ = np.linalg.lstsq(design, u_sin, rcond=None)
     (_, cs, cc), *_ = np.linalg.lstsq(design, u_cos, rcond=None)
