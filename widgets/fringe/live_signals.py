@@ -18,6 +18,8 @@ sessions and the lab defaults (app/main_window.py does this).
 
 from __future__ import annotations
 
+import contextlib
+import datetime as dt
 import math
 from collections import deque
 from collections.abc import Callable
@@ -573,11 +575,18 @@ class LiveSignalsPanel(QWidget):
         kept = [entry for entry in self.lines if first <= entry[0] <= last]
         where = {entry[0]: i for i, entry in enumerate(kept)}
         source = self.source
+        # the session starts with the take's first line (its frames' times count from it):
+        # each take a session of its own, told apart from an earlier one of the same stream
+        started = getattr(source, "started_utc", "") or ""
+        t0 = kept[0][1] if kept else 0.0
+        with contextlib.suppress(ValueError):
+            started = (dt.datetime.fromisoformat(started)
+                       + dt.timedelta(seconds=t0)).isoformat() if started else ""
         return {"instrument": INSTRUMENT,
                 "port": getattr(source, "port", "") or self.port.text(),
                 "baud": int(getattr(source, "baud", 0) or 0),
-                "started_utc": getattr(source, "started_utc", "") or "",
-                "frames": [[round(float(t), 6), frame_text(line), int(bool(used))]
+                "started_utc": started,
+                "frames": [[round(float(t - t0), 6), frame_text(line), int(bool(used))]
                            for _, t, line, used in kept],
                 "takes": [[row, where[i], where[i]] for row, i in enumerate(index.tolist())
                           if i in where]}

@@ -138,3 +138,43 @@ def test_a_signal_line_reads_back_to_the_fringe_columns():
     assert frame_values("signals", b"garbage") is None
     assert reading_columns("signals", ["u_sin", "u_cos", "theta_deg"]) == [("u_sin", 0), ("u_cos", 1)]
     assert INSTRUMENTS["signals"]().default_baud == 115200
+
+
+@pytest.mark.slow
+def test_anglebench_simulate_signals_streams_and_takes_settings_from_its_input():
+    """The command's head read with a bare socket: 1 Vpp as mounted; ``gap 1.05`` on its
+    standard input takes the amplitude to e⁻¹ of it (the contrast's fall-off)."""
+    import socket
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[3]
+    process = subprocess.Popen([sys.executable, "-m", "app.main", "simulate", "signals", "0",
+                                "--noise", "0", "--commands", "--seconds", "30"], cwd=root,
+                               stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    try:
+        line = process.stdout.readline()
+        port = int(line.split("tcp://127.0.0.1:")[1].split()[0])
+
+        def amplitude(link, pending=b""):
+            values = []
+            while len(values) < 2000:
+                pending += link.recv(65536)
+                *lines, pending = pending.split(b"\n")
+                values += [tuple(float(v) for v in x.split(b",")) for x in lines if x]
+            u = np.array(values[-1000:])
+            return float(np.mean(np.hypot(u[:, 0], u[:, 1]))), pending
+
+        with socket.create_connection(("127.0.0.1", port), timeout=5) as link:
+            nominal, _ = amplitude(link)
+            process.stdin.write("gap 1.05\n")
+            process.stdin.flush()
+            time.sleep(0.5)
+            link.recv(1 << 20)  # what was sent before the change
+            later, _ = amplitude(link)
+    finally:
+        process.terminate()
+        process.communicate(timeout=10)
+    assert nominal == pytest.approx(0.5, rel=0.02)
+    assert later / nominal == pytest.approx(math.exp(-1), rel=0.03)

@@ -251,3 +251,32 @@ def test_the_read_head_simulator_live_over_tcp(fringe, qtbot):
     high, low = u_sin.max(), u_sin.min()
     assert bars["offset_a"].value == pytest.approx(100 * (high + low) / (2 * (high - low)), abs=0.3)
     assert panel.refused == 0 and panel.samples >= 15 * 250
+
+
+@pytest.mark.slow
+def test_in_the_window_a_demonstration_take_is_kept_with_the_project_and_edits_are_seen(window, qtbot):
+    bench = next(p for p in window.presenters if getattr(p.view, "live_signals", None))
+    panel = bench.view.live_signals
+    bench.view.open_live_signals()
+    assert panel.start_demonstration()
+    try:
+        panel.knobs["gap_mm"].setValue(0.8)  # the technician turns the gap to nominal
+        assert panel.demonstration.gap_mm == 0.8
+        qtbot.waitUntil(lambda: panel.figures is not None and panel.figures.periods >= 15,
+                        timeout=15_000)
+        panel.take_button.click()
+        qtbot.wait(300)
+        panel.take_button.click()  # a second take: its own session, nothing flagged
+    finally:
+        panel.disconnect_stream()
+    key = bench.kind.key
+    sessions = window.capture_panel.raw_sessions(key)
+    assert len(sessions) == 2 and {s["instrument"] for s in sessions} == {"signals"}
+    assert sessions[0]["started_utc"] != sessions[1]["started_utc"]
+    assert key in window.capture_panel.raw_capture()  # saved with the project
+    model = bench.table_model
+    assert bench.sheet.row_count == len(sessions[1]["takes"]) > 1000
+    assert model.edited_cells == {}
+    model.set_cells([(5, 0, "0.123456")])
+    assert set(model.edited_cells) == {(5, 0)}
+    assert panel.demonstration is None and panel.source is None
