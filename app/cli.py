@@ -41,7 +41,12 @@ from models.readings.tabular_import import (
     read_table,
 )
 from models.registry import KINDS
-from models.workbench import ComparesAfterLog, IssuesCertificates, WritesCorrectionTable
+from models.workbench import (
+    ComparesAfterLog,
+    IssuesCertificates,
+    JudgesSignals,
+    WritesCorrectionTable,
+)
 
 
 def _why(exc: BaseException, words) -> str:
@@ -86,6 +91,7 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("positioning: the log measured after compensation "
                                          "(analysed with the same settings); prints A, B, E, M, "
                                          "R before → after (JSON: before_after)")))
+    _signal_options(p, words)
     add_language_option(p, words)
     for _, shortcut in _shortcuts():
         p.add_argument(shortcut.flag, dest=_dest(shortcut.flag), action="store_true",
@@ -104,6 +110,173 @@ def _parser(words) -> argparse.ArgumentParser:
         p.add_argument(flag, dest=_dest(flag), metavar=owners[0][1].kind.upper(),
                        help=" — ".join(parts).replace("%", "%%"))
     return p
+
+
+def _signal_options(p: argparse.ArgumentParser, words) -> None:
+    """The fringe workbench's signal tolerance and interpolator table options (#45)."""
+    p.add_argument("--signal-preset", metavar="KEY",
+                   help=words(QT_TR_NOOP("fringe: judge the signals (amplitudes, ratio, phase, "
+                                         "offsets) against a tolerance preset, e.g. "
+                                         "heidenhain_1vpp; a mounting indication, not a "
+                                         "statement of conformity (JSON: signal_tolerance)")))
+    p.add_argument("--signal-presets", metavar="PRESETS.json",
+                   help=words(QT_TR_NOOP("fringe: the lab's own presets (a list of presets, or "
+                                         "lab defaults holding signal_tolerance_presets)")))
+    p.add_argument("--signal-scale", metavar="SCALE", type=float, default=1.0,
+                   help=words(QT_TR_NOOP("fringe: the preset's unit per unit of the record (V "
+                                         "per ADC count, µA per V); default 1")))
+    p.add_argument("--signal-window", metavar="PERIODS", type=int,
+                   help=words(QT_TR_NOOP("fringe: periods a window of the signal quality along "
+                                         "the record (default: at most 1000 windows)")))
+    p.add_argument("--interpolator-table", metavar="OUT.csv|OUT.h|OUT.hex",
+                   help=words(QT_TR_NOOP("fringe: also write an interpolator look-up table as a "
+                                         "chip takes it (CSV, C header or Intel HEX), with its "
+                                         "residual predicted after quantisation")))
+    p.add_argument("--table-chip", choices=("generic", "ic-tw8"), default="generic",
+                   help=words(QT_TR_NOOP("the interpolator's profile (ic-tw8: 64 entries of 8 "
+                                         "bits, modelled after iC-Haus iC-TW8)")))
+    p.add_argument("--table-entries", metavar="N", type=int,
+                   help=words(QT_TR_NOOP("entries of the interpolator table, 2^k (generic: "
+                                         "default 64)")))
+    p.add_argument("--table-bits", metavar="B", type=int,
+                   help=words(QT_TR_NOOP("bits of its signed codes (generic: default 8)")))
+    p.add_argument("--table-lsb", metavar="FRACTION", type=float,
+                   help=words(QT_TR_NOOP("one code step as a fraction of a period (generic: "
+                                         "default the smallest power of two holding the "
+                                         "table)")))
+    p.add_argument("--table-interpolation", choices=("step", "linear"),
+                   help=words(QT_TR_NOOP("generic: the entry below the measured phase (step, "
+                                         "default) or linear between two entries")))
+    p.add_argument("--table-terms", metavar="offset,gain,phase",
+                   help=words(QT_TR_NOOP("generic: corrected apart from the table (written "
+                                         "beside it): any of offset, gain, phase")))
+    p.add_argument("--table-max-residual", metavar="X", type=float,
+                   help=words(QT_TR_NOOP("refuse the table when its predicted residual (largest "
+                                         "magnitude) exceeds X, in the error's unit (arcsec, or "
+                                         "nm for an interferometer)")))
+
+
+_SIGNAL_FLAGS = ("signal_preset", "signal_presets", "signal_window", "interpolator_table",
+                 "table_entries", "table_bits", "table_lsb", "table_interpolation",
+                 "table_terms", "table_max_residual")
+
+
+def _signal_setup(args: argparse.Namespace):
+    """The preset and the table profile asked for (None when not); a message when the
+    options do not hold (raised as ValueError)."""
+    from models.fringe.interpolator_export import FORMATS
+    from models.fringe.interpolator_table import chip_profile
+    from models.fringe.signal_tolerance import (
+        BUILTIN_PRESETS,
+        LAB_DEFAULTS_KEY,
+        load_presets,
+        preset_by_key,
+    )
+
+    used = [f for f in _SIGNAL_FLAGS if getattr(args, f) is not None]
+    if not isinstance(KINDS[args.kind], JudgesSignals) and (used or args.signal_scale != 1.0):
+        flag = "--" + (used[0] if used else "signal_scale").replace("_", "-")
+        raise ValueError(message(QT_TR_NOOP("{flag} applies to {kinds}, not {kind}"), flag=flag,
+                                 kinds=" and ".join(k for k, v in KINDS.items()
+                                                    if isinstance(v, JudgesSignals)),
+                                 kind=args.kind))
+    presets = list(BUILTIN_PRESETS)
+    if args.signal_presets:
+        try:
+            with open(args.signal_presets, encoding="utf-8-sig") as handle:
+                stored = json.load(handle)
+        except (OSError, ValueError) as exc:
+            raise ValueError(message(QT_TR_NOOP("{path}: cannot read the presets ({reason})"),
+                                     path=args.signal_presets, reason=str(exc))) from None
+        lab = stored if isinstance(stored, dict) else {LAB_DEFAULTS_KEY: stored}
+        presets, problems = load_presets(lab)
+        if problems:
+            raise ValueError(message("{path}: {reason}", path=args.signal_presets,
+                                     reason=problems[0]))
+    preset = preset_by_key(args.signal_preset, presets) if args.signal_preset else None
+    if not (math.isfinite(args.signal_scale) and args.signal_scale > 0):
+        raise ValueError(message(QT_TR_NOOP("--signal-scale: must be a positive number, not "
+                                            "{scale}"), scale=f"{args.signal_scale:g}"))
+    if args.signal_window is not None and args.signal_window < 1:
+        raise ValueError(message(QT_TR_NOOP("--signal-window: at least one period, not {n}"),
+                                 n=args.signal_window))
+    profile = None
+    if args.interpolator_table:
+        if Path(args.interpolator_table).suffix.lower() not in FORMATS:
+            raise ValueError(message(QT_TR_NOOP("--interpolator-table: {path}: write .csv, .h or "
+                                                ".hex"), path=args.interpolator_table))
+        terms = None
+        if args.table_terms is not None:
+            terms = tuple(t.strip() for t in args.table_terms.split(",") if t.strip())
+        profile = chip_profile(args.table_chip, args.table_entries, args.table_bits,
+                               args.table_lsb, terms)
+        if args.table_interpolation and args.table_chip == "generic":
+            profile = dataclasses.replace(profile, interpolation=args.table_interpolation)
+        elif args.table_interpolation and args.table_interpolation != profile.interpolation:
+            raise ValueError(message(QT_TR_NOOP("--table-interpolation: the {chip} interpolates "
+                                                "{how}"), chip=profile.name,
+                                     how=profile.interpolation))
+    elif any(getattr(args, f) is not None for f in _SIGNAL_FLAGS if f.startswith("table_")):
+        raise ValueError(message(QT_TR_NOOP("the --table-… options shape the interpolator "
+                                            "table: give --interpolator-table OUT too")))
+    return preset, profile
+
+
+def _signal_results(args, result, preset, profile):
+    """(the JSON keys to add, the summary lines, the table or None) of the fringe options."""
+    from models.fringe.interpolator_table import design_table
+    from models.fringe.signal_quality import default_window, signal_quality, tolerance_json
+    from models.fringe.signal_tolerance import NOT_CONFORMITY, judge, signal_figures
+
+    keys: dict[str, Any] = {}
+    texts: list[Any] = []
+    table = None
+    if not isinstance(KINDS[args.kind], JudgesSignals):
+        return keys, texts, table
+    window = args.signal_window or default_window(result)
+    if preset is not None:
+        figures = signal_figures(result, preset, args.signal_scale)
+        quality = signal_quality(result, preset, args.signal_scale, window)
+        keys["signal_quality"] = quality.windows
+        keys["signal_quality_units"] = quality.units
+        keys["signal_tolerance"] = tolerance_json(figures, preset, args.signal_scale, quality)
+        texts.append(message(QT_TR_NOOP("Signals against {preset}:"), preset=preset.name))
+        for j in judge(figures, preset):
+            band = j.band
+            outer = (message(QT_TR_NOOP(", outer {low} … {high}"), low=f"{band.outer[0]:.4g}",
+                             high=f"{band.outer[1]:.4g}") if band.outer else "")
+            texts.append(joined((message(QT_TR_NOOP("  {quantity} = {value}{unit}: {state} "
+                                                    "(band {low} … {high}"),
+                                         quantity=j.quantity, value=f"{j.value:.4g}",
+                                         unit=f" {j.unit}" if j.unit else "",
+                                         state=message(_STATE_TEXT[j.state]),
+                                         low=f"{band.inside[0]:.4g}",
+                                         high=f"{band.inside[1]:.4g}"), outer, ")")))
+        texts += quality.summary()
+        texts.append(NOT_CONFORMITY)
+    elif args.signal_window is not None:
+        quality = signal_quality(result, None, args.signal_scale, window)
+        keys["signal_quality"] = quality.windows
+        keys["signal_quality_units"] = quality.units
+    if profile is not None:
+        period = result.period_length
+        asked = (None if args.table_max_residual is None
+                 else args.table_max_residual / period)
+        table = design_table(result, profile, asked, (period, result.unit))
+        keys["interpolator_table"] = {
+            "profile": profile.key, "entries": table.entries, "bits": profile.bits,
+            "lsb_period": table.lsb_period, "interpolation": profile.interpolation,
+            "sign": profile.sign, "separate_terms": list(table.terms.applied),
+            "codes": table.codes.tolist(), "file": args.interpolator_table,
+            "predicted_residual": table.residual.as_dict(period, result.unit),
+            "residual_unquantised": table.residual_unquantised.as_dict(period, result.unit),
+            "error_without_table": table.residual_without.as_dict(period, result.unit),
+            "source": profile.source}
+    return keys, texts, table
+
+
+_STATE_TEXT = {"inside": QT_TR_NOOP("inside"), "outer": QT_TR_NOOP("in the outer band"),
+               "outside": QT_TR_NOOP("outside")}
 
 
 def _dest(flag: str) -> str:
@@ -204,8 +377,15 @@ def run_analyze(argv: list[str]) -> int:
                                          "correction table"), workbench=message(kind.title)),
                       words))
         return EXIT_BAD_INPUT
+    try:
+        preset, profile = _signal_setup(args)
+    except ValueError as exc:
+        _say(f"anglebench analyze: {_why(exc, words)}")
+        return EXIT_BAD_INPUT
+    if args.signal_presets:
+        inputs.append(args.signal_presets)
     outputs = (("--certificate", args.certificate), ("--results", args.results),
-               ("--table", args.table))
+               ("--table", args.table), ("--interpolator-table", args.interpolator_table))
     try:
         check_outputs(outputs, _protected(inputs))
     except OutputRefused as exc:
@@ -254,9 +434,15 @@ def run_analyze(argv: list[str]) -> int:
         except (ValueError, OSError) as exc:
             _say(f"anglebench analyze: --compare-after: {_why(exc, words)}")
             return EXIT_BAD_INPUT
+    try:
+        signal_keys, signal_texts, interpolator = _signal_results(args, result, preset, profile)
+    except ValueError as exc:
+        _say(f"{args.file}: {_why(exc, words)}")
+        return EXIT_BAD_INPUT
     incomplete = getattr(result, "incomplete", None)
     if args.json:
         data = kind.to_json(result)
+        data.update(signal_keys)
         if isinstance(kind, IssuesCertificates):
             # U beside every error array and the decided quantity, with the certificate
             # details given (their standards, tolerance and decision rule), else none
@@ -282,6 +468,8 @@ def run_analyze(argv: list[str]) -> int:
         if comparison is not None:
             sys.stdout.write(rendered(in_unit(comparison.text(Path(args.compare_after).name),
                                               ANGLE_UNITS[args.unit]), say) + "\n")
+        for text in signal_texts:
+            sys.stdout.write(rendered(text, say) + "\n")
         for warning in getattr(result, "warnings", []):
             warning = rendered(in_unit(warning, ANGLE_UNITS[args.unit]), say)
             sys.stdout.write(say(QT_TR_NOOP("Warning: {warning}")).format(warning=warning)
@@ -298,6 +486,27 @@ def run_analyze(argv: list[str]) -> int:
             return 1
         _say(rendered(message(QT_TR_NOOP("{what} written to {path}"), what=what,
                               path=args.table), words))
+    if interpolator is not None:
+        from models.fringe.interpolator_export import write_interpolator_table
+
+        try:
+            write_interpolator_table(args.interpolator_table, interpolator,
+                                     Path(args.file).name, result.period_length, result.unit)
+        except OSError as exc:
+            _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write {path}: {reason}"),
+                                  path=args.interpolator_table, reason=str(exc)), words))
+            return 1
+        r, period, unit = interpolator.residual, result.period_length, result.unit
+        _say(rendered(message(QT_TR_NOOP(
+            "Interpolator table ({chip}, {entries} entries of {bits} bits, LSB {lsb} of a "
+            "period) written to {path}: predicted residual {worst} {unit} largest, {rms} {unit} "
+            "RMS (the entries alone {ideal} {unit}; without a table {without} {unit})"),
+            chip=interpolator.profile.key, entries=interpolator.entries,
+            bits=interpolator.profile.bits, lsb=f"{interpolator.lsb_period:.4g}",
+            path=args.interpolator_table, worst=f"{r.max_abs * period:.4g}",
+            rms=f"{r.rms * period:.4g}",
+            ideal=f"{interpolator.residual_unquantised.max_abs * period:.4g}",
+            without=f"{interpolator.residual_without.max_abs * period:.4g}", unit=unit), words))
     if incomplete is not None and args.certificate:
         _say(rendered(message(QT_TR_NOOP("{file}: no certificate was written: {progress} is "
                                          "not complete; a certificate waits for it (the "

@@ -245,6 +245,12 @@ class WritesCorrectionTable(ABC):
         """Writes the table of ``result`` to ``path``; returns what was written."""
 
 
+class JudgesSignals(ABC):  # noqa: B024 - a capability without methods of its own
+    """Its result holds two quadrature signals' fits: they are judged against a signal
+    tolerance preset and an interpolator table is made from them (``--signal-preset``,
+    ``--interpolator-table``: models/fringe/signal_tolerance.py, interpolator_table.py)."""
+
+
 class SendsRuns(ABC):
     """Its run can be sent to the workbench that accepts runs, to be judged there
     (ISO 230-2 / VDI 3441)."""

@@ -62,3 +62,36 @@ def true_interpolation_error(measured_rad: np.ndarray, theta: np.ndarray) -> np.
     """Measured phase minus the true one, wrapped, its circular mean removed (rad)."""
     d = np.angle(np.exp(1j * (np.asarray(measured_rad) - theta)))
     return np.angle(np.exp(1j * (d - np.angle(np.mean(np.exp(1j * d))))))
+
+
+def ideal_terms(head: Head, u_a: np.ndarray, u_b: np.ndarray, terms: tuple[str, ...]
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """What a chip that corrects ``terms`` ("offset", "gain", "phase") of the head's
+    fundamentals exactly makes of its signals: offsets subtracted, B scaled to A, and B's
+    quadrature error q removed (B' = (B + A sin q) / cos q)."""
+    a, b = u_a, u_b
+    if "offset" in terms:
+        a, b = a - head.offset_a, b - head.offset_b
+    if "gain" in terms:
+        b = b * (head.peak_a / head.peak_b)
+    if "phase" in terms:
+        q = math.radians(head.quadrature_deg)
+        b = (b + a * math.sin(q)) / math.cos(q)
+    return a, b
+
+
+def chip_phase(u_a: np.ndarray, u_b: np.ndarray, codes: np.ndarray, lsb_period: float,
+               interpolation: str, sign: str) -> np.ndarray:
+    """A chip's corrected phase (rad): φ = atan2(u_a, u_b), the table of ``codes`` over one
+    period of φ looked up (``step``: the entry below φ; ``linear``: between the two about it),
+    code·LSB·2π added (``sign`` "add") or subtracted."""
+    phi = np.arctan2(u_a, u_b)
+    n = len(codes)
+    pos = (phi % (2.0 * math.pi)) / (2.0 * math.pi) * n
+    j = np.floor(pos).astype(int) % n
+    value = np.asarray(codes, dtype=float)[j]
+    if interpolation == "linear":
+        nxt = np.asarray(codes, dtype=float)[(j + 1) % n]
+        value = value + (nxt - value) * (pos - np.floor(pos))
+    value = value * lsb_period * 2.0 * math.pi
+    return phi + value if sign == "add" else phi - value

@@ -29,6 +29,7 @@ from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.plots import figures as fringe_figures
 from models.fringe.report import fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
+from models.fringe.signal_quality import default_window, signal_quality
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -36,6 +37,7 @@ from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
     IssuesCertificates,
+    JudgesSignals,
     OverlaysRuns,
     ShowsHeadline,
     Workbench,
@@ -523,6 +525,11 @@ def to_json(result: FringeResult) -> dict[str, Any]:
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
+    # the signals along the record (#45): per window of periods, in the record's units; the
+    # command line's --signal-preset gives them in a preset's units, judged
+    quality = signal_quality(result, periods_per_window=default_window(result))
+    out["signal_quality"] = quality.windows
+    out["signal_quality_units"] = quality.units
     if result.ellipse is not None:
         e = result.ellipse
         out["heydemann"] = {"offsets_v": [e.offset_sin, e.offset_cos],
@@ -591,7 +598,8 @@ def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: s
                    else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
 
 
-class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns, ShowsHeadline):
+class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns, ShowsHeadline,
+             JudgesSignals):
     key = KEY
     title = TITLE
     columns = COLUMNS

@@ -35,7 +35,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from models.fringe.model import ChannelFit, model_signal
 from models.messages import QT_TR_NOOP, message
@@ -183,19 +182,29 @@ BUILTIN_PRESETS: tuple[TolerancePreset, ...] = (
 
 def _peaks(fit: ChannelFit) -> tuple[float, float]:
     """(highest, lowest) value of the fitted waveform over one period: the best of a dense
-    grid, refined to the arithmetic's precision by a bounded search about it (a peak between
-    grid points would otherwise read low by up to 1 − cos(π/grid))."""
+    grid, refined to the arithmetic's precision by Newton's steps on the slope about it (a
+    peak between grid points would otherwise read low by up to 1 − cos(π/grid))."""
     step = 2.0 * math.pi / _GRID
     grid = np.arange(_GRID) * step
     u = model_signal(grid, fit)
 
-    def refined(sign: float, at: int) -> float:
-        found = minimize_scalar(lambda t: -sign * float(model_signal(np.array([t]), fit)[0]),
-                                bounds=(grid[at] - step, grid[at] + step), method="bounded",
-                                options={"xatol": 1e-12})
-        return max(sign * float(u[at]), -float(found.fun)) * sign
+    def refined(at: int) -> float:
+        t = float(grid[at])
+        for _ in range(8):
+            slope = sum(k * fit.amplitude[k] * math.cos(k * t + fit.phase[k])
+                        for k in fit.orders)
+            curve = -sum(k * k * fit.amplitude[k] * math.sin(k * t + fit.phase[k])
+                         for k in fit.orders)
+            if curve == 0.0:
+                break
+            t_next = min(max(t - slope / curve, grid[at] - step), grid[at] + step)
+            if t_next == t:
+                break
+            t = t_next
+        return float(model_signal(np.array([t]), fit)[0])
 
-    return refined(1.0, int(np.argmax(u))), refined(-1.0, int(np.argmin(u)))
+    high, low = int(np.argmax(u)), int(np.argmin(u))
+    return max(float(u[high]), refined(high)), min(float(u[low]), refined(low))
 
 
 def _fits(result: Any) -> tuple[ChannelFit, ChannelFit]:
