@@ -14,6 +14,7 @@ from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigureRenderer
 from widgets.fringe.live_signals import LiveSignalsPanel
+from widgets.fringe.signal_quality_plot import SignalQualityPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.plot_grid import IntegerAxis, show_grid
 from widgets.screen_fit import fit_to_screen
@@ -117,6 +118,9 @@ class FringeView(WorkbenchView):
         self.add_plot_tab(self.plots.lissajous, tr("Lissajous"))
         self.add_plot_tab(self.plots.spectrum, tr("Spectrum"))
         self.add_plot_tab(self.plots.drift, tr("Drift per period"))
+        # the signals along the record against a preset's bands (#45)
+        self.signal_quality = SignalQualityPlot()
+        self.add_plot_tab(self.signal_quality, tr("Signal quality"))
         # a read head's signals watched live while it is mounted (#45): a window of its own
         # (the plot tabs are too small for a test set's display at 1280×720), opened from
         # its tab
@@ -167,9 +171,16 @@ class FringeView(WorkbenchView):
         self.error_plot.show_figure(errors, figures["residuals"])
         self.plots.show(figures)
 
+    def show_signal_quality(self, compute) -> None:
+        """The signal quality tab from ``compute(preset)`` (the presenter's)."""
+        self.signal_quality.set_presets(self.live_signals.presets)
+        self.signal_quality.compute = compute
+        self.signal_quality.recompute()
+
     def clear_result(self) -> None:
         self.error_plot.clear()
         self.plots.clear()
+        self.signal_quality.clear()
 
     def ask_table_path(self) -> str:
         path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",

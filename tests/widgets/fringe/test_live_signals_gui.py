@@ -280,3 +280,29 @@ def test_in_the_window_a_demonstration_take_is_kept_with_the_project_and_edits_a
     model.set_cells([(5, 0, "0.123456")])
     assert set(model.edited_cells) == {(5, 0)}
     assert panel.demonstration is None and panel.source is None
+
+
+def test_signal_quality_along_the_record_marks_where_the_head_leaves_its_band(fringe, qtbot):
+    """200 periods of 64 equal steps; the sin channel's amplitude falls to 0.5 Vpp (below
+    the 1 Vpp interface's 0.6) over periods 80 … 119, as a stain on the scale would."""
+    n, periods = 64, 200
+    k = np.arange(n * periods)
+    theta = 2 * math.pi * k / n
+    a = np.where((k // n >= 80) & (k // n < 120), 0.25, 0.5)
+    rows = [[f"{s:.12g}", f"{c:.12g}", ""] for s, c in zip(a * np.sin(theta), 0.5 * np.cos(theta),
+                                                             strict=True)]
+    fringe.set_settings({**fringe.settings, "samples_per_period": n, "lines_per_rev": periods})
+    fringe.table_model.replace_all(rows, "simulated", checked=True)
+    fringe.schedule_refresh()
+    qtbot.waitUntil(lambda: fringe.result is not None, timeout=20_000)
+    plot = fringe.view.signal_quality
+    plot.preset.setCurrentIndex(plot.preset.findData("heidenhain_1vpp"))
+    plot.quantity.setCurrentIndex(plot.quantity.findData("amplitude_a"))
+    x, y = plot.curve.getData()
+    assert len(x) == len(plot.quality.windows) >= 50
+    bx, by = plot.beyond.getData()
+    # the windows beyond the band are those of the stain, along the revolution (360°/200 a period)
+    assert by.size and np.allclose(by, 0.5, atol=1e-6)
+    assert bx.min() > 80 * 1.8 - 1e-9 and bx.max() < 120 * 1.8
+    assert plot.inside.isVisible() and plot.inside.getRegion() == (0.6, 1.2)
+    assert "outside the band" in plot.note.text()
