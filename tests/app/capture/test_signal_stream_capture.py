@@ -178,3 +178,21 @@ def test_anglebench_simulate_signals_streams_and_takes_settings_from_its_input()
         process.communicate(timeout=10)
     assert nominal == pytest.approx(0.5, rel=0.02)
     assert later / nominal == pytest.approx(math.exp(-1), rel=0.03)
+
+
+def test_anglebench_capture_signals_writes_the_samples_as_sent(tmp_path):
+    import csv
+
+    from app.main import main
+
+    out = tmp_path / "signals.csv"
+    with ReadHead("tcp", sample_hz=2000.0, noise_mv=0.5, seed=4) as head:
+        assert main(["capture", "signals", head.port, "--readings", "200", "--out", str(out),
+                     "--silence", "0.5", "--retries", "1"]) == 0
+        sent = list(head.history)[:200]
+    with open(out, newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(handle))
+    assert rows[0] == ["time_s", "u_sin", "u_cos"]
+    got = np.array([[float(v) for v in r[1:]] for r in rows[1:]])
+    assert got.shape == (200, 2)
+    assert np.allclose(got, np.array(sent)[:, 1:], atol=5e-7)
