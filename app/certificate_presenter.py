@@ -34,6 +34,8 @@ __all__ = ["CertificatePresenter", "CertificateView", "PendingRevision"]
 LAB_DEFAULTS_KEY = "certificate/lab_defaults"
 #: the lab defaults' key of the test plans, per workbench ({workbench: {plan_…: value}})
 TEST_PLANS = "test_plans"
+#: the lab's signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY)
+SIGNAL_PRESETS = "signal_tolerance_presets"
 
 
 def plan_settings_of(settings: dict) -> dict:
@@ -151,7 +153,26 @@ class CertificatePresenter:
             plans[workbench] = plan_settings_of(self.workbench_settings(workbench))
         if plans:
             defaults = {**defaults, TEST_PLANS: plans}
+        # the lab's signal tolerance presets (#45) are kept: the certificate's dialog does not
+        # hold them
+        if SIGNAL_PRESETS in stored and SIGNAL_PRESETS not in defaults:
+            defaults = {**defaults, SIGNAL_PRESETS: stored[SIGNAL_PRESETS]}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
+
+    def signal_presets(self) -> tuple[list, list[str]]:
+        """The signal tolerance presets: the built-in ones and the lab's own saved with the
+        lab defaults, and a message for each stored one that does not read (#45)."""
+        from models.fringe.signal_tolerance import load_presets
+
+        return load_presets(self.lab_defaults())
+
+    def save_signal_presets(self, presets) -> None:
+        """The lab's own presets (those not a built-in as it is) saved with the lab defaults,
+        the other defaults kept."""
+        from models.fringe.signal_tolerance import lab_defaults_with_presets
+
+        data = lab_defaults_with_presets(self.lab_defaults(), presets)
+        self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(data, ensure_ascii=False))
 
     def test_plan(self, workbench: str) -> dict:
         """The test plan's settings saved with the lab defaults for ``workbench`` ({}: none)."""

@@ -245,13 +245,13 @@ def _signal_results(args, result, preset, profile):
             band = j.band
             outer = (message(QT_TR_NOOP(", outer {low} … {high}"), low=f"{band.outer[0]:.4g}",
                              high=f"{band.outer[1]:.4g}") if band.outer else "")
-            texts.append(joined((message(QT_TR_NOOP("  {quantity} = {value}{unit}: {state} "
-                                                    "(band {low} … {high}"),
-                                         quantity=j.quantity, value=f"{j.value:.4g}",
-                                         unit=f" {j.unit}" if j.unit else "",
-                                         state=message(_STATE_TEXT[j.state]),
-                                         low=f"{band.inside[0]:.4g}",
-                                         high=f"{band.inside[1]:.4g}"), outer, ")")))
+            texts.append(message(QT_TR_NOOP("  {quantity} = {value}{unit}: {state} (band {low} "
+                                            "… {high}{outer})"),
+                                 quantity=j.quantity, value=f"{j.value:.4g}",
+                                 unit=f" {j.unit}" if j.unit else "",
+                                 state=message(_STATE_TEXT[j.state]),
+                                 low=f"{band.inside[0]:.4g}", high=f"{band.inside[1]:.4g}",
+                                 outer=outer))
         texts += quality.summary()
         texts.append(NOT_CONFORMITY)
     elif args.signal_window is not None:

@@ -4324,8 +4324,104 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>{kind}：{label}{choices}。{help}</translation>
     </message>
     <message>
+        <source>fringe: judge the signals (amplitudes, ratio, phase, offsets) against a tolerance preset, e.g. heidenhain_1vpp; a mounting indication, not a statement of conformity (JSON: signal_tolerance)</source>
+        <translation>fringe：按容差预设（如 heidenhain_1vpp）判断信号（幅值、幅值比、相位、直流偏置）；为安装指示，不是符合性声明（JSON：signal_tolerance）</translation>
+    </message>
+    <message>
+        <source>fringe: the lab&apos;s own presets (a list of presets, or lab defaults holding signal_tolerance_presets)</source>
+        <translation>fringe：实验室自己的预设（预设列表，或含 signal_tolerance_presets 的实验室默认值文件）</translation>
+    </message>
+    <message>
+        <source>fringe: the preset&apos;s unit per unit of the record (V per ADC count, µA per V); default 1</source>
+        <translation>fringe：每个记录单位对应的预设单位（每 ADC 码的 V 数、每 V 的 µA 数）；默认 1</translation>
+    </message>
+    <message>
+        <source>fringe: periods a window of the signal quality along the record (default: at most 1000 windows)</source>
+        <translation>fringe：沿记录的信号质量每个窗口的周期数（默认：至多 1000 个窗口）</translation>
+    </message>
+    <message>
+        <source>fringe: also write an interpolator look-up table as a chip takes it (CSV, C header or Intel HEX), with its residual predicted after quantisation</source>
+        <translation>fringe：同时按芯片接受的形式写出细分器查找表（CSV、C 头文件或 Intel HEX），并给出量化后预测的残余误差</translation>
+    </message>
+    <message>
+        <source>the interpolator&apos;s profile (ic-tw8: 64 entries of 8 bits, modelled after iC-Haus iC-TW8)</source>
+        <translation>细分器配置（ic-tw8：64 项、8 位，按 iC-Haus iC-TW8 建模）</translation>
+    </message>
+    <message>
+        <source>entries of the interpolator table, 2^k (generic: default 64)</source>
+        <translation>细分器查找表的项数，2^k（通用：默认 64）</translation>
+    </message>
+    <message>
+        <source>bits of its signed codes (generic: default 8)</source>
+        <translation>其有符号码的位数（通用：默认 8）</translation>
+    </message>
+    <message>
+        <source>one code step as a fraction of a period (generic: default the smallest power of two holding the table)</source>
+        <translation>一个码步长，以一个周期的分数表示（通用：默认取能容纳该表的最小 2 的幂）</translation>
+    </message>
+    <message>
+        <source>generic: the entry below the measured phase (step, default) or linear between two entries</source>
+        <translation>通用：取所测相位以下的表项（step，默认），或在两表项之间线性插值（linear）</translation>
+    </message>
+    <message>
+        <source>generic: corrected apart from the table (written beside it): any of offset, gain, phase</source>
+        <translation>通用：在查找表之外单独修正的项（写在表旁）：offset、gain、phase 中任意几项</translation>
+    </message>
+    <message>
+        <source>refuse the table when its predicted residual (largest magnitude) exceeds X, in the error&apos;s unit (arcsec, or nm for an interferometer)</source>
+        <translation>预测残余误差（最大绝对值）超过 X 时拒绝该表，X 以误差的单位给出（角秒；干涉仪为 nm）</translation>
+    </message>
+    <message>
         <source>{flag} applies to {kinds}, not {kind}</source>
         <translation>{flag} 适用于 {kinds}，而不是 {kind}</translation>
+    </message>
+    <message>
+        <source>{path}: cannot read the presets ({reason})</source>
+        <translation>{path}：无法读取预设（{reason}）</translation>
+    </message>
+    <message>
+        <source>--signal-scale: must be a positive number, not {scale}</source>
+        <translation>--signal-scale：必须为正数，而不是 {scale}</translation>
+    </message>
+    <message>
+        <source>--signal-window: at least one period, not {n}</source>
+        <translation>--signal-window：至少一个周期，而不是 {n}</translation>
+    </message>
+    <message>
+        <source>--interpolator-table: {path}: write .csv, .h or .hex</source>
+        <translation>--interpolator-table：{path}：请写成 .csv、.h 或 .hex</translation>
+    </message>
+    <message>
+        <source>--table-interpolation: the {chip} interpolates {how}</source>
+        <translation>--table-interpolation：{chip} 的插值方式为 {how}</translation>
+    </message>
+    <message>
+        <source>the --table-… options shape the interpolator table: give --interpolator-table OUT too</source>
+        <translation>--table-… 选项用于设定细分器查找表：请同时给出 --interpolator-table OUT</translation>
+    </message>
+    <message>
+        <source>Signals against {preset}:</source>
+        <translation>信号对照 {preset}：</translation>
+    </message>
+    <message>
+        <source>, outer {low} … {high}</source>
+        <translation>，外带 {low} … {high}</translation>
+    </message>
+    <message>
+        <source>  {quantity} = {value}{unit}: {state} (band {low} … {high}{outer})</source>
+        <translation>  {quantity} = {value}{unit}：{state}（容差带 {low} … {high}{outer}）</translation>
+    </message>
+    <message>
+        <source>inside</source>
+        <translation>在带内</translation>
+    </message>
+    <message>
+        <source>in the outer band</source>
+        <translation>在外带内</translation>
+    </message>
+    <message>
+        <source>outside</source>
+        <translation>超出</translation>
     </message>
     <message>
         <source>anglebench analyze: --columns: &apos;{part}&apos; is not KEY=HEADER</source>
@@ -4358,6 +4454,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{what} written to {path}</source>
         <translation>{what}已写入 {path}</translation>
+    </message>
+    <message>
+        <source>Interpolator table ({chip}, {entries} entries of {bits} bits, LSB {lsb} of a period) written to {path}: predicted residual {worst} {unit} largest, {rms} {unit} RMS (the entries alone {ideal} {unit}; without a table {without} {unit})</source>
+        <translation>细分器查找表（{chip}，{entries} 项、{bits} 位，LSB 为一个周期的 {lsb}）已写入 {path}：预测残余误差最大 {worst} {unit}，RMS {rms} {unit}（仅表项数所限 {ideal} {unit}；无表时 {without} {unit}）</translation>
     </message>
     <message>
         <source>{path}: not a JSON file ({reason})</source>
@@ -8545,6 +8645,153 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>tolerance ±T</source>
         <translation>允差 ±T</translation>
+    </message>
+    <message>
+        <source>{path}: an interpolator table is written as .csv, .h or .hex</source>
+        <translation>{path}：细分器查找表写成 .csv、.h 或 .hex</translation>
+    </message>
+    <message>
+        <source>no interpolator profile &apos;{key}&apos; (there are: {keys})</source>
+        <extracomment>the phase grid the table is built on and the residual simulated over (points a period)</extracomment>
+        <translation>没有细分器配置“{key}”（现有：{keys}）</translation>
+    </message>
+    <message>
+        <source>the {chip} takes {name} {fixed}, not {value}: choose the generic profile for another table</source>
+        <translation>{chip} 的 {name} 为 {fixed}，而不是 {value}：其他表请选用通用配置</translation>
+    </message>
+    <message>
+        <source>{entries} entries: a table takes 2^k entries, 2 … {largest}</source>
+        <translation>{entries} 项：查找表取 2^k 项，2 … {largest}</translation>
+    </message>
+    <message>
+        <source>{bits} bits: a table&apos;s codes take 2 … {most} bits</source>
+        <translation>{bits} 位：查找表的码取 2 … {most} 位</translation>
+    </message>
+    <message>
+        <source>LSB {lsb}: one code step must be a fraction of a period between 0 and 1</source>
+        <translation>LSB {lsb}：一个码步长必须是介于 0 和 1 之间的周期分数</translation>
+    </message>
+    <message>
+        <source>separate term &apos;{term}&apos; is not one of {terms}</source>
+        <translation>单独修正项“{term}”不属于 {terms}</translation>
+    </message>
+    <message>
+        <source>no table: the measured phase of the fitted signals does not turn once, forward, a period (the Lissajous figure does not circle 0 V, or loops back): no table over it can correct them</source>
+        <translation>无查找表：拟合信号的所测相位在一个周期内不是正向转一圈（李萨如图不包围 0 V，或有回环）：其上的任何查找表都无法修正</translation>
+    </message>
+    <message>
+        <source>no table: the correction reaches {largest} of a period, {codes} codes of LSB {lsb}, beyond the ±{most} of {bits}-bit codes: an LSB of at least {need_lsb} of a period, or {need_bits} bits, would hold it</source>
+        <translation>无查找表：修正量达一个周期的 {largest}，即 LSB {lsb} 的 {codes} 个码，超出 {bits} 位码的 ±{most}：LSB 至少为一个周期的 {need_lsb}，或用 {need_bits} 位，才能容纳</translation>
+    </message>
+    <message>
+        <source>{entries} entries of {bits} bits</source>
+        <translation>{entries} 项、{bits} 位</translation>
+    </message>
+    <message>
+        <source>the entries (unquantised, they leave {ideal})</source>
+        <translation>表项数（未量化时残余 {ideal}）</translation>
+    </message>
+    <message>
+        <source>the quantisation (unquantised, the entries leave {ideal})</source>
+        <translation>量化（未量化时表项残余 {ideal}）</translation>
+    </message>
+    <message>
+        <source>a generic table of {options} would reach it</source>
+        <translation>{options} 的通用查找表可以达到</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> 或 </translation>
+    </message>
+    <message>
+        <source>no table up to {entries} entries of {bits} bits reaches it: the fitted signals&apos; error is not smooth enough for a table</source>
+        <translation>直到 {entries} 项、{bits} 位的查找表都达不到：拟合信号的误差不够平滑，查找表无法修正</translation>
+    </message>
+    <message>
+        <source>no table: {entries} entries of {bits} bits leave a residual of {residual} {unit} (largest magnitude), more than the {asked} {unit} asked for; limited by {limited}; {would}</source>
+        <translation>无查找表：{entries} 项、{bits} 位的表残余 {residual} {unit}（最大绝对值），大于要求的 {asked} {unit}；受限于{limited}；{would}</translation>
+    </message>
+    <message>
+        <source>{quantity}: {outside} of {windows} windows outside the band, {outer} in the outer band (along the record {low} … {high} {unit})</source>
+        <extracomment>grid of the per-period waveforms&apos; peaks (refined by a parabola through the best three) per quantity: the windows judged outer / outside (with a preset)</extracomment>
+        <translation>{quantity}：{windows} 个窗口中 {outside} 个超出容差带，{outer} 个在外带内（沿记录 {low} … {high} {unit}）</translation>
+    </message>
+    <message>
+        <source>a window holds at least one period, not {n}</source>
+        <translation>一个窗口至少包含一个周期，而不是 {n}</translation>
+    </message>
+    <message>
+        <source>the scale must be a positive number, not {scale}</source>
+        <translation>比例系数必须为正数，而不是 {scale}</translation>
+    </message>
+    <message>
+        <source>Mounting indication, not a statement of conformity: each signal figure is compared with its band as measured, with no guard band and no uncertainty.</source>
+        <extracomment>the key of the lab&apos;s own presets in the lab defaults (a list of preset_to_dict) a value this close to an edge (relative to the band&apos;s width or the edge) is on it the dense phase grid the fitted waveforms&apos; peaks are read from</extracomment>
+        <translation>安装指示，不是符合性声明：各信号量按测得值与其容差带比较，不设保护带，不计不确定度。</translation>
+    </message>
+    <message>
+        <source>{where}: not a pair of numbers (low, high)</source>
+        <translation>{where}：不是一对数（下限, 上限）</translation>
+    </message>
+    <message>
+        <source>{where}: {low} … {high} is not a band (low ≤ high, both finite)</source>
+        <translation>{where}：{low} … {high} 不是容差带（下限 ≤ 上限，且均为有限值）</translation>
+    </message>
+    <message>
+        <source>a signal tolerance preset must be a mapping</source>
+        <translation>信号容差预设必须是映射</translation>
+    </message>
+    <message>
+        <source>a signal tolerance preset needs a key</source>
+        <translation>信号容差预设需要一个键名</translation>
+    </message>
+    <message>
+        <source>preset {key}: name and source must be texts</source>
+        <translation>预设 {key}：名称和来源必须为文本</translation>
+    </message>
+    <message>
+        <source>preset {key}: interface &apos;{interface}&apos; is not one of {interfaces}</source>
+        <translation>预设 {key}：接口“{interface}”不属于 {interfaces}</translation>
+    </message>
+    <message>
+        <source>preset {key}: bands must be a list</source>
+        <translation>预设 {key}：容差带必须是列表</translation>
+    </message>
+    <message>
+        <source>preset {key}, band {i}: not a mapping</source>
+        <translation>预设 {key}，容差带 {i}：不是映射</translation>
+    </message>
+    <message>
+        <source>preset {key}, band {i}: quantity &apos;{quantity}&apos; is not one of {quantities}</source>
+        <translation>预设 {key}，容差带 {i}：量“{quantity}”不属于 {quantities}</translation>
+    </message>
+    <message>
+        <source>preset {key}: {quantity} has two bands</source>
+        <translation>预设 {key}：{quantity} 有两个容差带</translation>
+    </message>
+    <message>
+        <source>preset {key}, band {i}: the unit must be a text</source>
+        <translation>预设 {key}，容差带 {i}：单位必须为文本</translation>
+    </message>
+    <message>
+        <source>preset {key}, {quantity}: the outer band {outer} does not contain the inside band {inside}</source>
+        <translation>预设 {key}，{quantity}：外带 {outer} 不包含内带 {inside}</translation>
+    </message>
+    <message>
+        <source>preset {key}: no band</source>
+        <translation>预设 {key}：没有容差带</translation>
+    </message>
+    <message>
+        <source>the lab&apos;s signal tolerance presets are not a list; they were not read</source>
+        <translation>实验室的信号容差预设不是列表；未读取</translation>
+    </message>
+    <message>
+        <source>lab preset {i} not read: {exc}</source>
+        <translation>实验室预设 {i} 未读取：{exc}</translation>
+    </message>
+    <message>
+        <source>no signal tolerance preset &apos;{key}&apos; (there are: {keys})</source>
+        <translation>没有信号容差预设“{key}”（现有：{keys}）</translation>
     </message>
 </context>
 </TS>

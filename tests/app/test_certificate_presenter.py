@@ -296,3 +296,27 @@ def test_the_labs_time_zone_set_in_the_window_dates_the_issue(parts, samples_dir
     assert record.issue_date == day
     text = " ".join(p.extract_text() for p in PdfReader(tmp_path / "dated.pdf").pages)
     assert day in text
+
+
+def test_signal_presets_saved_with_the_lab_defaults_and_kept(parts):
+    """#45: the lab's signal tolerance presets live in the lab defaults; saving the
+    certificate's lab fields keeps them."""
+    from app.certificate_presenter import SIGNAL_PRESETS
+    from models.fringe.signal_tolerance import (
+        BUILTIN_PRESETS,
+        LAB_DEFAULTS_KEY,
+        Band,
+        TolerancePreset,
+        preset_by_key,
+    )
+
+    assert SIGNAL_PRESETS == LAB_DEFAULTS_KEY
+    presenter = parts[0]
+    ours = TolerancePreset("ours", "our band", "1Vpp",
+                           (Band("amplitude_a", "Vpp", (0.9, 1.1), (0.6, 1.2)),), "lab rule")
+    presenter.save_signal_presets([*BUILTIN_PRESETS, ours])
+    presenter.save_lab_defaults({"lab_name": "Lab"})
+    presets, problems = presenter.signal_presets()
+    assert problems == [] and preset_by_key("ours", presets) == ours
+    assert presenter.lab_defaults()["lab_name"] == "Lab"
+    assert len(presets) == len(BUILTIN_PRESETS) + 1
