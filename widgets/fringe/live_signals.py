@@ -54,7 +54,7 @@ from models.fringe.signal_tolerance import (
     load_presets,
 )
 from widgets.fringe.signal_bar import SignalBar
-from widgets.i18n import explained, live, on_language_change, tr, translated
+from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
 
 __all__ = ["REFRESH_MS", "LiveSignalsPanel"]
@@ -76,14 +76,18 @@ def _quantity_titles() -> dict[str, str]:
             "harmonic_content": tr("Harmonic content")}
 
 
+def preset_name(preset: TolerancePreset) -> str:
+    """A built-in preset's name in the window's language; a lab's own as the lab wrote it."""
+    builtin = next((p for p in BUILTIN_PRESETS if p.key == preset.key), None)
+    return declared(preset.name) if builtin == preset else preset.name
+
+
 def _decimals(unit: str) -> int:
     return {"°": 2, "%": 2}.get(unit, 3)
 
 
-def _plot(left: str, bottom: str) -> pg.PlotWidget:
+def _plot() -> pg.PlotWidget:
     plot = pg.PlotWidget(background="w")
-    plot.setLabel("left", left)
-    plot.setLabel("bottom", bottom)
     show_grid(plot)
     for axis in ("left", "bottom"):
         plot.getAxis(axis).enableAutoSIPrefix(False)
@@ -185,14 +189,14 @@ class LiveSignalsPanel(QWidget):
             self.knobs[name] = box
         self.mounting.hide()
         # the plots: made once, their curves updated with setData
-        self.lissajous = _plot("u sin (V)", "u cos (V)")
+        self.lissajous = _plot()
         self.lissajous.setAspectLocked(True)
         self.liss_raw = self.lissajous.plot(pen=pg.mkPen("#90a4ae", width=1))
         self.liss_fit = self.lissajous.plot(pen=pg.mkPen("#1565c0", width=2))
         self.rings = [self.lissajous.plot(pen=pg.mkPen(colour, width=1.5, style=style))
                       for colour, style in (("#2e7d32", Qt.PenStyle.DashLine),) * 2
                       + (("#ef8f00", Qt.PenStyle.DotLine),) * 2]
-        self.error_plot = _plot("interp. error (° el.)", "phase (° el.)")
+        self.error_plot = _plot()
         self.error_low = self.error_plot.plot(pen=pg.mkPen("#90caf9", width=1))
         self.error_high = self.error_plot.plot(pen=pg.mkPen("#90caf9", width=1))
         self.error_band = pg.FillBetweenItem(self.error_low, self.error_high,
@@ -279,6 +283,10 @@ class LiveSignalsPanel(QWidget):
                            ("roll_mrad", tr("Roll")), ("dirt", tr("Dirt on the scale"))):
             self.knob_labels[name].setText(text)
         self.note.setText(translated(NOT_CONFORMITY))
+        self.lissajous.setLabel("left", tr("u sin (V)"))
+        self.lissajous.setLabel("bottom", tr("u cos (V)"))
+        self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
+        self.error_plot.setLabel("bottom", tr("phase (° el.)"))
         self._fill_presets()
         self._show_bands()
         self._show_status()
@@ -306,7 +314,7 @@ class LiveSignalsPanel(QWidget):
         self.preset.blockSignals(True)
         self.preset.clear()
         for preset in presets:
-            self.preset.addItem(preset.name, preset.key)
+            self.preset.addItem(preset_name(preset), preset.key)
             self.preset.setItemData(self.preset.count() - 1, preset.source,
                                     Qt.ItemDataRole.ToolTipRole)
         self.preset.setCurrentIndex(max(0, self.preset.findData(key)) if key else 0)
@@ -339,7 +347,6 @@ class LiveSignalsPanel(QWidget):
             bar.set_band(titles[quantity], band, unit, _decimals(unit))
             # a quantity the preset has no band for is shown only when there is a value
             bar.setVisible(band is not None or quantity == "harmonic_content")
-        self.preset.setToolTip(preset.source if preset is not None else "")
 
     # ------------------------------------------------------------------ the stream
     def connect_stream(self, port: str | None = None, pattern: str | None = None) -> bool:

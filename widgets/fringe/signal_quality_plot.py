@@ -15,6 +15,7 @@ from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QVBoxLayout, QWidg
 
 from models.fringe.signal_quality import SignalQuality
 from models.fringe.signal_tolerance import BUILTIN_PRESETS, TolerancePreset
+from widgets.fringe.live_signals import preset_name
 from widgets.i18n import live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
 
@@ -81,7 +82,7 @@ class SignalQualityPlot(QWidget):
         self.preset.clear()
         self.preset.addItem(tr("none (the record's units)"), "")
         for p in self.presets:
-            self.preset.addItem(p.name, p.key)
+            self.preset.addItem(preset_name(p), p.key)
         self.preset.setCurrentIndex(max(0, self.preset.findData(key)) if key else 1)
         self.quantity.clear()
         for q, title in _titles().items():
