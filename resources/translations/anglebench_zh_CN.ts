@@ -8906,8 +8906,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>谐波含量</translation>
     </message>
     <message>
-        <source>u_sin,u_cos — or a pattern with (?P&lt;sin&gt;…) and (?P&lt;cos&gt;…)</source>
+        <source>tcp://host:port or a serial port</source>
         <extracomment>a take: the window&apos;s (u_sin, u_cos) in V, for the readings table the stream&apos;s newest lines: (index since the stream started, seconds, bytes, used) redraws since the panel was made (the display&apos;s rate bounds it, not the stream&apos;s)</extracomment>
+        <translation>tcp://主机:端口 或串口</translation>
+    </message>
+    <message>
+        <source>u_sin,u_cos — or a pattern with (?P&lt;sin&gt;…) and (?P&lt;cos&gt;…)</source>
         <translation>u_sin,u_cos——或含 (?P&lt;sin&gt;…) 和 (?P&lt;cos&gt;…) 的模式</translation>
     </message>
     <message>

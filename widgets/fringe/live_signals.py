@@ -130,7 +130,7 @@ class LiveSignalsPanel(QWidget):
     # ------------------------------------------------------------------ the widgets
     def _setup_ui(self) -> None:
         self.port = QLineEdit()
-        self.port.setPlaceholderText("tcp://127.0.0.1:PORT, /dev/ttyUSB0, COM3")
+        live(self.port.setPlaceholderText, tr("tcp://host:port or a serial port"))
         self.pattern = QLineEdit()
         live(self.pattern.setPlaceholderText, tr("u_sin,u_cos — or a pattern with (?P<sin>…) "
                                                  "and (?P<cos>…)"))
