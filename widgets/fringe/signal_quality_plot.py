@@ -11,7 +11,7 @@ from collections.abc import Callable
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QSizePolicy, QVBoxLayout, QWidget
 
 from models.fringe.signal_quality import SignalQuality
 from models.fringe.signal_tolerance import BUILTIN_PRESETS, TolerancePreset
@@ -39,6 +39,10 @@ class SignalQualityPlot(QWidget):
         self.preset = QComboBox()
         self.quantity = QComboBox()
         self.preset_label, self.quantity_label = QLabel(), QLabel()
+        for combo, length in ((self.preset, 16), (self.quantity, 12)):
+            # they shrink with the tab instead of widening it (1280×720: the tab is ~720 px)
+            combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+            combo.setMinimumContentsLength(length)
         self.plot = pg.PlotWidget(background="w")
         show_grid(self.plot)
         self.plot.getAxis("left").enableAutoSIPrefix(False)
@@ -56,7 +60,9 @@ class SignalQualityPlot(QWidget):
         self.beyond = self.plot.plot(pen=None, symbol="o", symbolSize=7, symbolBrush="#c62828",
                                      symbolPen=None)
         self.note = QLabel()
-        self.note.setWordWrap(True)
+        # one line (a wrapped label would make the tab ask for its plot's preferred height and
+        # scroll at 1280×720); the whole text is its tooltip
+        self.note.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Fixed)
         self.note.setStyleSheet("QLabel { color: #5d4037; }")
         top = QHBoxLayout()
         top.addWidget(self.preset_label)
@@ -118,6 +124,7 @@ class SignalQualityPlot(QWidget):
             self.inside.hide()
             self.outer.hide()
             self.note.setText("")
+            self.note.setToolTip("")
             return
         windows = quality.windows
         along_revolution = all("revolution_deg" in w for w in windows)
@@ -144,3 +151,4 @@ class SignalQualityPlot(QWidget):
             windows=len(windows), n=quality.periods_per_window)
         lines = [translated(line) for line in quality.summary()]
         self.note.setText(" — ".join([text, *lines]))
+        self.note.setToolTip("\n".join([text, *lines]))
