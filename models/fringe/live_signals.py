@@ -36,7 +36,7 @@ MIN_PERIODS = 1.0
 #: the harmonics fitted to each channel of the window (the content's 2nd and 3rd)
 LIVE_ORDERS = (1, 2, 3)
 #: a window is thinned to at most this many samples for its fit (evenly, every k-th sample)
-FIT_SAMPLES = 4096
+FIT_SAMPLES = 2048
 
 
 class SampleWindow:

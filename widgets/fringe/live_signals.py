@@ -60,7 +60,7 @@ from widgets.plot_grid import show_grid
 __all__ = ["REFRESH_MS", "LiveSignalsPanel"]
 
 #: the display's refresh: at most one redraw this often, whatever the stream's rate
-REFRESH_MS = 40
+REFRESH_MS = 50
 #: the samples (and lines) kept for the window; a take holds at most this many
 CAPACITY = 100_000
 #: the instrument name of a take's raw session (app/capture/instruments.py reads it back)
@@ -483,7 +483,7 @@ class LiveSignalsPanel(QWidget):
         self.redraws += 1
 
     def _draw(self, u_sin, u_cos) -> None:
-        step = max(1, u_sin.size // 4000)
+        step = max(1, u_sin.size // 2000)
         self.liss_raw.setData(u_cos[::step], u_sin[::step])
         figures = self.figures
         if figures is None or figures.fits is None:
