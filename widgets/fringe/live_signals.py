@@ -307,6 +307,11 @@ class LiveSignalsPanel(QWidget):
         self._fill_presets()
         self._show_connected()
 
+    def reload_presets(self) -> None:
+        """The built-in presets and the lab's own as its defaults hold them now."""
+        self._fill_presets()
+        self._show_bands()
+
     def _fill_presets(self) -> None:
         presets, problems = load_presets(self._lab_defaults() or {})
         self.presets = presets

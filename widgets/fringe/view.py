@@ -148,6 +148,7 @@ class FringeView(WorkbenchView):
     def open_live_signals(self) -> None:
         """The live signals' window, shown and raised (sized to the screen the first time)."""
         panel = self.live_signals
+        panel.reload_presets()  # the lab's own as saved now
         if not panel.isVisible() and not getattr(panel, "placed", False):
             fit_to_screen(panel, 1240, 700)
             panel.placed = True

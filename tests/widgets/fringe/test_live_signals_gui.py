@@ -306,3 +306,16 @@ def test_signal_quality_along_the_record_marks_where_the_head_leaves_its_band(fr
     assert bx.min() > 80 * 1.8 - 1e-9 and bx.max() < 120 * 1.8
     assert plot.inside.isVisible() and plot.inside.getRegion() == (0.6, 1.2)
     assert "outside the band" in plot.note.text()
+
+
+def test_a_preset_the_lab_saved_since_is_there_when_the_window_opens(fringe):
+    defaults: dict = {}
+    panel, _, _ = live(fringe, lab_defaults=None)
+    panel.attach(lambda *_a: None, lab_defaults=lambda: defaults)
+    assert panel.preset.findData("lab_gap") == -1
+    defaults[LAB_DEFAULTS_KEY] = [{"key": "lab_gap", "name": "Our heads", "interface": "1Vpp",
+                                   "bands": [{"quantity": "amplitude_a", "unit": "Vpp",
+                                              "inside": [0.9, 1.1]}]}]
+    fringe.view.open_live_signals()
+    assert panel.isVisible() and panel.preset.findData("lab_gap") >= 0
+    panel.close()
