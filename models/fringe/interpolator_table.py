@@ -86,8 +86,8 @@ class ChipProfile:
 
 GENERIC = ChipProfile(
     "generic", "generic interpolator", 64, 8, None, 127, "step", "subtract", (), True,
-    "A generic chip: the parameters as given (entries, bits, LSB, separate terms); the entry "
-    "below the measured phase is subtracted from it.")
+    "A generic chip: the parameters as given (entries, bits, LSB, lookup, separate terms); the "
+    "table's value at the measured phase is subtracted from it.")
 
 IC_TW8 = ChipProfile(
     "ic-tw8", "modelled after iC-Haus iC-TW8", 64, 8, 1.0 / 4096.0, 127, "linear", "add",

@@ -122,7 +122,7 @@ _PWM20 = ("HEIDENHAIN, PWM 20 / ATS Software User's Manual, November 2014, p. 15
 _TV = ("The offset band is the manual's on-off ratio TV A/TV B −15°…+15° expressed as the "
        "asymmetry (P − N)/2M: a comparator at 0 V makes the high time 180° + 2·asin(2·SYM), so "
        "TV = ±15° is SYM = ±sin(7.5°)/2 = ±6.53 % (p. 160 defines TV, SYM = |P − N|/2M and "
-       "their relation). ")
+       "their relation; p. 215 pairs an asymmetry of 0.05 with TV 11.5°, as this relation gives). ")
 _ONE_BAND = ("The manual gives one band a quantity (no narrower mounting band; none is "
              "invented here) and no harmonic content.")
 
