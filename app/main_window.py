@@ -140,6 +140,10 @@ class MainWindow(QMainWindow):
         # its raw frames go with the project
         self.projects.raw_capture = self.capture_panel.raw_capture
         self.projects.load_raw_capture = self._load_raw_capture
+        # the live signals of a read head being mounted (#45): stream, demonstration, takes
+        from app.capture.signal_live import attach_live_signals
+
+        attach_live_signals(self)
         # a captured reading edited in the sheet since is marked there (issue 40)
         self._captured_values: dict = {}
         for presenter in self.presenters:
@@ -397,6 +401,10 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue("window/state", self.saveState())
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
         self.capture_panel.disconnect_instrument()
+        for presenter in self.presenters:
+            live = getattr(presenter.view, "live_signals", None)
+            if live is not None:
+                live.disconnect_stream()
         self.projects.close()
         event.accept()
 

@@ -1,4 +1,4 @@
-"""``anglebench capture {autocollimator,theodolite,readout} PORT --out FILE.csv``:
+"""``anglebench capture {autocollimator,theodolite,readout,signals} PORT --out FILE.csv``:
 readings from an instrument into a CSV, without a window.
 
 One row per reading: ``time_s`` (seconds since the capture started) and
@@ -76,8 +76,8 @@ def _parser(words) -> argparse.ArgumentParser:
     p = Parser(prog="anglebench capture",
                description=words(QT_TR_NOOP("Capture readings from an instrument into a CSV")))
     p.add_argument("instrument", choices=sorted(INSTRUMENTS), help=words(QT_TR_NOOP(
-        "autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM) or readout (one line per "
-        "reading)")))
+        "autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM), readout (one line per "
+        "reading) or signals (a sin/cos stream, u_sin,u_cos a line)")))
     p.add_argument("port", help=words(QT_TR_NOOP(
         "a serial port (/dev/ttyUSB0, COM3) or tcp://host:port")))
     p.add_argument("--out", required=True, metavar="FILE.csv",

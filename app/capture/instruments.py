@@ -30,13 +30,15 @@ from models.capture.geocom import (
     request,
 )
 from models.capture.line_readout import DEFAULT_PATTERN, DEFAULT_REQUEST, LineReadout
+from models.capture.signal_stream import SignalLineParser
 
 #: an electronic autocollimator's range, default: ±1° (3600″) is more than any measures
 #: (ELCOMAT kind: ±1000″ … ±2000″); a frame beyond it is a misread, not a reading
 AUTOCOLLIMATOR_RANGE_ARCSEC = 3600.0
 
 __all__ = ["AUTOCOLLIMATOR_RANGE_ARCSEC", "CAPTURE_MODES", "INSTRUMENTS", "Autocollimator",
-           "Instrument", "LineReadoutInstrument", "Theodolite", "frame_values", "reading_columns"]
+           "Instrument", "LineReadoutInstrument", "SignalStreamInstrument", "Theodolite",
+           "frame_values", "reading_columns"]
 
 #: how a streaming instrument is read: ``auto`` (stream, single-shot requests when it does not
 #: stream), ``stream`` or ``poll`` (single-shot requests only)
@@ -156,8 +158,22 @@ class LineReadoutInstrument(Instrument):
         return (got.value,), got.unit
 
 
+class SignalStreamInstrument(Instrument):
+    """A sin/cos signal stream (an ADC, an oscilloscope): it sends one sample of both
+    channels a line, unasked (models/capture/signal_stream.py). The fringe workbench's live
+    view reads it in blocks (app/capture/signal_worker.py); ``anglebench capture signals``
+    reads it a line at a time."""
+
+    def __init__(self, pattern: str | None = None) -> None:
+        super().__init__(("u_sin", "u_cos"), default_baud=115200)
+        self.parser = SignalLineParser(pattern)
+
+    def values(self, line: bytes):
+        return self.parser.parse(line), "V"
+
+
 INSTRUMENTS = {"autocollimator": Autocollimator, "theodolite": Theodolite,
-               "readout": LineReadoutInstrument}
+               "readout": LineReadoutInstrument, "signals": SignalStreamInstrument}
 
 
 def reading_columns(instrument: str, keys: Sequence[str], vertical_zenith: bool = False

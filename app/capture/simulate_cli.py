@@ -1,4 +1,4 @@
-"""``anglebench simulate autocollimator|theodolite|readout PORT``: a demonstration
+"""``anglebench simulate autocollimator|theodolite|readout|signals PORT``: a demonstration
 instrument for training and for trying the program without hardware.
 
 PORT is a TCP port of 127.0.0.1 (connect the window to ``tcp://127.0.0.1:PORT``) or
@@ -6,6 +6,12 @@ PORT is a TCP port of 127.0.0.1 (connect the window to ``tcp://127.0.0.1:PORT``)
 protocol (app/capture/simulators.py) with the settings given: where it points
 (``--position``, or ``--positions`` held ``--hold`` seconds each), noise, drift and
 faults. It runs until interrupted (Ctrl+C) or for ``--seconds``.
+
+``signals`` is an encoder's read head streaming its sin/cos voltages (``u_sin,u_cos`` a
+line) as it is mounted: ``--gap`` (mm), ``--yaw`` and ``--roll`` (mrad), ``--dirt`` on the
+scale, ``--noise`` in mV, ``--signal-hz`` periods and ``--sample-rate`` samples a second.
+With ``--commands`` it reads lines such as ``gap 0.9`` or ``yaw 3`` from its standard
+input and changes the mounting while it streams (a client may send the same lines).
 """
 
 from __future__ import annotations
@@ -82,15 +88,30 @@ def _parser(words) -> argparse.ArgumentParser:
         "most (each answer takes 1/HZ s, as a measurement does)")))
     p.add_argument("--seconds", type=float, default=0.0, help=words(QT_TR_NOOP(
         "stop after this long (0: until interrupted)")))
+    head = p.add_argument_group(words(QT_TR_NOOP("signals: the read head's mounting")))
+    head.add_argument("--gap", type=float, default=0.8, metavar="MM", help=words(QT_TR_NOOP(
+        "the gap between the read head and the scale (nominal 0.8 mm)")))
+    head.add_argument("--yaw", type=float, default=0.0, metavar="MRAD", help=words(QT_TR_NOOP(
+        "the head's rotation about the scale's normal (moiré)")))
+    head.add_argument("--roll", type=float, default=0.0, metavar="MRAD", help=words(QT_TR_NOOP(
+        "the head's tilt about the measuring direction")))
+    head.add_argument("--dirt", type=float, default=0.0, metavar="0…1", help=words(QT_TR_NOOP(
+        "a stain on the scale dimming the light once a revolution (0: clean)")))
+    head.add_argument("--signal-hz", type=float, default=20.0, metavar="HZ", help=words(
+        QT_TR_NOOP("signal periods a second (the scale's speed)")))
+    head.add_argument("--sample-rate", type=float, default=5000.0, metavar="HZ", help=words(
+        QT_TR_NOOP("samples a second of both channels")))
+    head.add_argument("--commands", action="store_true", help=words(QT_TR_NOOP(
+        "read settings such as 'gap 0.9' or 'yaw 3' from standard input while streaming")))
     return p
 
 
 def simulator_from(instrument: str, port: int | str, position=None, positions=None,
                    hold_s: float = 5.0, noise: float = 0.05, drift: float = 0.0,
-                   faults=(), rate_hz: float = 50.0):
+                   faults=(), rate_hz: float = 50.0, **head):
     """The demonstration instrument (not yet started: use it as a context manager)."""
     default = {"autocollimator": (12.5, -3.2), "theodolite": (30.0, 89.995),
-               "readout": (105.00012,)}[instrument]
+               "readout": (105.00012,), "signals": (0.0,)}[instrument]
     base = tuple(position) if position else default
     width = len(default)
     base = (base + default[len(base):])[:width]
@@ -101,7 +122,15 @@ def simulator_from(instrument: str, port: int | str, position=None, positions=No
         tcp_port=0 if port == "pty" else int(port), seed=None,
         # an instrument that is asked measures before it answers (#41: answered at once, it
         # was asked ~8700 times a second and kept the window's thread 60 % busy)
-        reply_delay_s=0.0 if instrument == "autocollimator" or rate_hz <= 0 else 1.0 / rate_hz)
+        **({} if instrument in ("autocollimator", "signals") or rate_hz <= 0
+           else {"reply_delay_s": 1.0 / rate_hz}), **head)
+
+
+def _read_commands(sim) -> None:
+    """Lines such as ``gap 0.9`` from standard input, each given to the simulator as if a
+    client had sent it (a line it does not know is ignored)."""
+    for line in sys.stdin:
+        sim.answer(line.strip().encode("ascii", "replace"))
 
 
 def run_simulate(argv: list[str], ready=None) -> int:
@@ -110,8 +139,14 @@ def run_simulate(argv: list[str], ready=None) -> int:
     with speaking(language_asked(argv)) as words:
         args = _parser(words).parse_args(argv)
         try:
+            head = {}
+            if args.instrument == "signals":  # the noise in mV; the stream at its own rate
+                head = {"gap_mm": args.gap, "yaw_mrad": args.yaw, "roll_mrad": args.roll,
+                        "dirt": args.dirt, "noise_mv": args.noise, "signal_hz": args.signal_hz,
+                        "sample_hz": args.sample_rate}
             sim = simulator_from(args.instrument, args.port, args.position, args.positions,
-                                 args.hold, args.noise, args.drift, args.fault, args.rate)
+                                 args.hold, 0.0 if head else args.noise, args.drift, args.fault,
+                                 1000.0 if head else args.rate, **head)
             sim.__enter__()
         except OSError as exc:
             _say(rendered(message(QT_TR_NOOP("anglebench simulate: port {port}: {reason}"),
@@ -123,6 +158,8 @@ def run_simulate(argv: list[str], ready=None) -> int:
                 instrument=args.instrument, port=sim.port), words) + "\n")
             sys.stdout.flush()
             done = threading.Event()
+            if args.commands and hasattr(sim, "SETTINGS"):
+                threading.Thread(target=_read_commands, args=(sim,), daemon=True).start()
             if ready is not None:
                 ready(sim, done)
             elif threading.current_thread() is threading.main_thread():

@@ -36,8 +36,10 @@ import socket
 import threading
 import time
 import tty
+from collections import deque
 
-__all__ = ["SIMULATORS", "AutocollimatorSimulator", "ReadoutSimulator", "TheodoliteSimulator"]
+__all__ = ["SIMULATORS", "AutocollimatorSimulator", "ReadHeadSimulator", "ReadoutSimulator",
+           "TheodoliteSimulator"]
 
 
 class _Simulator:
@@ -314,6 +316,180 @@ class ReadoutSimulator(_Simulator):
         return [f"{value:+.5f} {self.unit}\r\n".encode()]
 
 
+class ReadHeadSimulator(_Simulator):
+    """An incremental encoder's read head over its scale, as a technician mounts it: the
+    two channel voltages it gives, streamed as an ADC does (``u_sin,u_cos`` LF, one line a
+    sample, from the moment a client connects), computed from the head's geometry.
+
+    **The head** (a reflective scale of period ``period_um``, a four-field scanning reticle
+    as in the makers' open-loop heads): field k = 0…3 lies at ``y_k = (k − 1.5)·field_pitch``
+    along the lines and is phase-shifted by k·90°; its photocurrent is
+    ``E_k·[1 + m_k·(sin ψ_k + h3·sin 3ψ_k)]``, ``ψ_k = θ − k·π/2 + δ_k``, θ the true phase
+    (2π × the scale's displacement / period). The channels are the differences
+    ``u_sin = R·(I_0 − I_2)``, ``u_cos = R·(I_3 − I_1)``, R set so that the head at its
+    nominal mounting gives 1 Vpp.
+
+    * **gap** g: the fringe contrast falls as the gap leaves its nominal ``g0``,
+      ``m = m0·exp(−((g − g0)/gap_width)²)``, and the third harmonic of the fringe grows
+      with it (``h3 = 0.005 + 0.04·((g − g0)/gap_width)²``).
+    * **yaw** (rotation about the scale's normal, the moiré angle): a field at ``y_k`` sees
+      the lines displaced by ``y_k·tan yaw``, ``δ_k = 2π·y_k·tan(yaw)/period``, so the two
+      channels' fields no longer sit 90° apart; over a field's own length the fringe is
+      averaged, its contrast times ``sinc(field_length·tan(yaw)/period)``.
+    * **roll** (tilt about the measuring direction): the light reflected by the scale lands
+      displaced by ``2·g·tan(roll)`` on the fields, each field's illumination following the
+      beam's Gaussian profile (``beam_width`` w; the fields' areas balance it for a square
+      head): ``E_k = exp((y_k² − (y_k − 2g·tan roll)²)/(2·w²))``; unequal light in a
+      channel's two fields is that channel's offset, and the channels' amplitudes part.
+    * ``dirt``: a stain on the scale dims the light of every field by ``dirt`` (0…1) over
+      ``dirt_periods`` periods once a revolution of ``periods_per_rev`` periods.
+
+    The scale moves at ``signal_hz`` periods a second (``wobble``: relative speed
+    variation at 0.7 Hz, a hand that turns the shaft); ``sample_hz`` samples a second with
+    Gaussian noise of ``noise_mv`` on each channel. The settings change while it streams
+    (:meth:`set`, or a line ``gap 0.9`` / ``yaw 2`` / ``roll -5`` sent to it; gap in mm, yaw
+    and roll in mrad). ``history`` keeps the last samples sent with their true phase:
+    ``(θ_rad, u_sin, u_cos)``.
+    """
+
+    command_end = b"\n"
+    line_end = b"\n"
+    #: the settings a line ``NAME VALUE`` changes, with their bounds
+    SETTINGS = {"gap": (0.0, 5.0), "yaw": (-100.0, 100.0), "roll": (-200.0, 200.0),
+                "dirt": (0.0, 1.0), "noise": (0.0, 1000.0), "speed": (-10000.0, 10000.0)}
+
+    def __init__(self, *args, gap_mm: float = 0.8, yaw_mrad: float = 0.0,
+                 roll_mrad: float = 0.0, dirt: float = 0.0, noise_mv: float = 1.0,
+                 signal_hz: float = 20.0, sample_hz: float = 5000.0, wobble: float = 0.0,
+                 period_um: float = 20.0, gap_nominal_mm: float = 0.8,
+                 gap_width_mm: float = 0.25, field_pitch_mm: float = 0.15,
+                 field_length_mm: float = 1.0, beam_width_mm: float = 0.4,
+                 contrast: float = 0.6, periods_per_rev: int = 2048,
+                 dirt_periods: float = 40.0, history: int = 200_000, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self.gap_mm, self.yaw_mrad, self.roll_mrad = gap_mm, yaw_mrad, roll_mrad
+        self.dirt, self.noise_mv, self.signal_hz = dirt, noise_mv, signal_hz
+        self.sample_hz, self.wobble = sample_hz, wobble
+        self.period_um, self.gap_nominal_mm, self.gap_width_mm = (period_um, gap_nominal_mm,
+                                                                  gap_width_mm)
+        self.field_pitch_mm, self.field_length_mm = field_pitch_mm, field_length_mm
+        self.beam_width_mm, self.contrast = beam_width_mm, contrast
+        self.periods_per_rev, self.dirt_periods = periods_per_rev, dirt_periods
+        self.history: deque = deque(maxlen=history)
+        self._lock = threading.Lock()
+        self._samples = 0
+        self._phase_turns = 0.0  # the true phase, in periods, at the last sample
+        self._clock: float | None = None
+        # the transimpedance: 1 Vpp (0.5 V amplitude) at the nominal mounting
+        self._gain = 1.0
+        ideal, _ = self.channels([2 * math.pi * i / 4096 for i in range(4096)],
+                                 gap_mm=gap_nominal_mm, yaw_mrad=0.0, roll_mrad=0.0, dirt=0.0)
+        self._gain = 0.5 / (0.5 * (max(ideal) - min(ideal)))
+
+    # the stream starts when a client connects: the base's flag is always on
+    @property
+    def _streaming(self) -> bool:
+        return True
+
+    @_streaming.setter
+    def _streaming(self, _value: bool) -> None:
+        pass
+
+    def set(self, **settings: float) -> None:
+        """Change the mounting while it streams (gap_mm, yaw_mrad, roll_mrad, dirt,
+        noise_mv, signal_hz)."""
+        with self._lock:
+            for name, value in settings.items():
+                if not hasattr(self, name):
+                    raise AttributeError(name)
+                setattr(self, name, float(value))
+
+    def channels(self, theta_rad, gap_mm=None, yaw_mrad=None, roll_mrad=None, dirt=None,
+                 position_turns=None):
+        """The noiseless (u_sin, u_cos) in volts at the true phases ``theta_rad``, the head
+        mounted as set (or as given)."""
+        gap = self.gap_mm if gap_mm is None else gap_mm
+        yaw = 1e-3 * (self.yaw_mrad if yaw_mrad is None else yaw_mrad)  # rad
+        roll = 1e-3 * (self.roll_mrad if roll_mrad is None else roll_mrad)
+        dirt = self.dirt if dirt is None else dirt
+        period_mm = self.period_um * 1e-3
+        excess = (gap - self.gap_nominal_mm) / self.gap_width_mm
+        contrast = self.contrast * math.exp(-excess ** 2)
+        if yaw:
+            x = math.pi * self.field_length_mm * math.tan(yaw) / period_mm
+            contrast *= abs(math.sin(x) / x)
+        h3 = 0.005 + 0.04 * min(excess ** 2, 4.0)
+        spot = 2.0 * max(gap, 0.0) * math.tan(roll)
+        fields = []
+        for k in range(4):
+            y = (k - 1.5) * self.field_pitch_mm
+            # the fields' areas are balanced for the beam of a head mounted square
+            fields.append((math.exp((y ** 2 - (y - spot) ** 2) / (2.0 * self.beam_width_mm ** 2)),
+                           2.0 * math.pi * y * math.tan(yaw) / period_mm - k * math.pi / 2.0))
+        u_sin, u_cos = [], []
+        turns = position_turns if position_turns is not None else [None] * len(theta_rad)
+        middle = 0.5 * self.periods_per_rev / self.dirt_periods
+        for theta, turn in zip(theta_rad, turns, strict=True):
+            light = 1.0
+            if dirt and turn is not None:
+                where = (turn % self.periods_per_rev) / self.dirt_periods
+                light = 1.0 - dirt * math.exp(-0.5 * ((where - middle) * 4.0) ** 2)
+            currents = []
+            for illumination, shift in fields:
+                psi = theta + shift
+                currents.append(light * illumination
+                                * (1.0 + contrast * (math.sin(psi) + h3 * math.sin(3.0 * psi))))
+            u_sin.append(self._gain * (currents[0] - currents[2]))
+            u_cos.append(self._gain * (currents[3] - currents[1]))
+        return u_sin, u_cos
+
+    def _due(self) -> int:
+        now = time.monotonic()
+        if self._clock is None:
+            self._clock = now
+            self._samples = 0
+        due = int((now - self._clock) * self.sample_hz) - self._samples
+        return max(0, min(due, int(self.sample_hz)))  # at most a second's worth at once
+
+    def stream_frame(self) -> bytes | None:
+        count = self._due()
+        if count == 0:
+            return None
+        with self._lock:
+            turns, at = [], self._phase_turns
+            for n in range(self._samples + 1, self._samples + count + 1):
+                t = n / self.sample_hz
+                at += self.signal_hz * (1.0 + self.wobble * math.sin(2 * math.pi * 0.7 * t)) \
+                    / self.sample_hz
+                turns.append(at)
+            theta = [2.0 * math.pi * turn for turn in turns]
+            u_sin, u_cos = self.channels(theta, position_turns=turns)
+            if self.noise_mv:
+                sigma = 1e-3 * self.noise_mv
+                u_sin = [u + self.rng.gauss(0.0, sigma) for u in u_sin]
+                u_cos = [u + self.rng.gauss(0.0, sigma) for u in u_cos]
+            self._phase_turns = at
+            self._samples += count
+        self._frames += count
+        self.history.extend(zip(theta, u_sin, u_cos, strict=True))
+        return "".join(f"{s:.6f},{c:.6f}\n" for s, c in zip(u_sin, u_cos, strict=True)).encode()
+
+    def answer(self, command: bytes) -> list[bytes]:
+        """``NAME VALUE`` changes a setting (:attr:`SETTINGS`); anything else is ignored."""
+        words = command.decode("ascii", "replace").split()
+        if len(words) == 2 and words[0] in self.SETTINGS:
+            try:
+                value = float(words[1])
+            except ValueError:
+                return []
+            low, high = self.SETTINGS[words[0]]
+            if low <= value <= high:
+                name = {"gap": "gap_mm", "yaw": "yaw_mrad", "roll": "roll_mrad",
+                        "noise": "noise_mv", "speed": "signal_hz"}.get(words[0], words[0])
+                self.set(**{name: value})
+        return []
+
+
 #: the demonstration instruments by the name ``anglebench simulate`` and the menu give them
 SIMULATORS = {"autocollimator": AutocollimatorSimulator, "theodolite": TheodoliteSimulator,
-              "readout": ReadoutSimulator}
+              "readout": ReadoutSimulator, "signals": ReadHeadSimulator}

@@ -14,7 +14,10 @@ Latin-1 code points, so any byte survives JSON exactly: ``line.encode("latin-1")
 them back) and 1 when it became a reading, 0 when it was refused or was not a
 measurement. ``takes`` says where the readings went: the sheet row (0-based, as it was
 when taken) and the first and last index into ``frames`` of the frames averaged into it
-(one frame for *Take reading*, the dwell's frames for an auto-take).
+(one frame for *Take reading*, the dwell's frames for an auto-take). The fringe workbench's
+live signals (#45) keep each *Take* as a session of its own (``instrument`` ``signals``, one
+take a sample, from the take's first line); when a later take replaces the readings, the
+earlier one's rows become -1 (its frames stay: they are no longer behind a row).
 
 The digest is the SHA-256 of the sessions as stored: their JSON text with compact
 separators, keys in the order above and non-ASCII characters as UTF-8 — the same text

@@ -2947,6 +2947,26 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>频谱</translation>
     </message>
     <message>
+        <source>Signal quality</source>
+        <translation>信号质量</translation>
+    </message>
+    <message>
+        <source>Live signals — mounting a read head</source>
+        <translation>实时信号——安装读数头</translation>
+    </message>
+    <message>
+        <source>Open the live signals…</source>
+        <translation>打开实时信号…</translation>
+    </message>
+    <message>
+        <source>Watch a read head&apos;s sin/cos signals while you mount it: amplitudes, their ratio, the phase between them and the offsets as bars against the interface&apos;s tolerances, the Lissajous figure and the interpolation error, live from an ADC or oscilloscope stream (serial or TCP) or from a demonstration head. Take puts the window&apos;s samples in the readings.</source>
+        <translation>安装读数头时实时观察其 sin/cos 信号：幅值、幅值比、两路之间的相位和直流偏置以条形显示并与接口容差比较，另有李萨如图和细分误差；数据实时来自 ADC 或示波器的数据流（串口或 TCP），或来自演示读数头。“采集”把窗口中的采样放入读数。</translation>
+    </message>
+    <message>
+        <source>Live signals</source>
+        <translation>实时信号</translation>
+    </message>
+    <message>
         <source>Drift per period</source>
         <translation>逐周期漂移</translation>
     </message>
@@ -5160,6 +5180,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>无法导出补偿表</translation>
     </message>
     <message>
+        <source>Take live signals ({n} samples)</source>
+        <translation>采集实时信号（{n} 个采样）</translation>
+    </message>
+    <message>
+        <source>{n} samples taken from the live signals</source>
+        <translation>已从实时信号采集 {n} 个采样</translation>
+    </message>
+    <message>
         <source>{what} written</source>
         <translation>{what}已写入</translation>
     </message>
@@ -5933,6 +5961,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for a polygon&apos;s face deviations: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
         <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN 1 Vpp (standard values)</source>
+        <translation>HEIDENHAIN 1 Vpp（标准值）</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN 1 Vpp with commutating signals (ERN 1085, ERN 1185, ERN 1387)</source>
+        <translation>HEIDENHAIN 1 Vpp 带换向信号（ERN 1085、ERN 1185、ERN 1387）</translation>
+    </message>
+    <message>
+        <source>HEIDENHAIN 11 µApp (standard values)</source>
+        <translation>HEIDENHAIN 11 µApp（标准值）</translation>
     </message>
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
@@ -6913,10 +6953,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>从仪器采集读数，写入 CSV</translation>
     </message>
     <message>
-        <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM) or readout (one line per reading)</source>
-        <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（徕卡 GeoCOM 经纬仪）或 readout（每个读数一行的数显表）</translation>
-    </message>
-    <message>
         <source>a serial port (/dev/ttyUSB0, COM3) or tcp://host:port</source>
         <translation>串口（/dev/ttyUSB0、COM3）或 tcp://host:port</translation>
     </message>
@@ -7114,6 +7150,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
     </message>
     <message>
+        <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM), readout (one line per reading) or signals (a sin/cos stream, u_sin,u_cos a line)</source>
+        <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（Leica GeoCOM 经纬仪）、readout（每个读数一行的数显表）或 signals（sin/cos 数据流，每行 u_sin,u_cos）</translation>
+    </message>
+    <message>
         <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings&apos; trace to the instrument&apos;s own output)</source>
         <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
     </message>
@@ -7217,8 +7257,14 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+        <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines framed, samples read and lines refused since the start
+----------
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
+    </message>
+    <message>
+        <source>{port}: no valid sample for {seconds} s</source>
+        <translation>{port}：{seconds} s 内没有有效采样</translation>
     </message>
     <message>
         <source>{port}: no reply to a request within {seconds} s (the reply timeout)</source>
@@ -8545,6 +8591,38 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>运行这么长时间后停止（0：直到被中断）</translation>
     </message>
     <message>
+        <source>signals: the read head&apos;s mounting</source>
+        <translation>signals：读数头的安装</translation>
+    </message>
+    <message>
+        <source>the gap between the read head and the scale (nominal 0.8 mm)</source>
+        <translation>读数头与光栅尺之间的间隙（标称 0.8 mm）</translation>
+    </message>
+    <message>
+        <source>the head&apos;s rotation about the scale&apos;s normal (moiré)</source>
+        <translation>读数头绕光栅尺法线的转角（莫尔偏摆）</translation>
+    </message>
+    <message>
+        <source>the head&apos;s tilt about the measuring direction</source>
+        <translation>读数头绕测量方向的侧倾</translation>
+    </message>
+    <message>
+        <source>a stain on the scale dimming the light once a revolution (0: clean)</source>
+        <translation>光栅尺上的污渍，每转一次使光强减弱（0：洁净）</translation>
+    </message>
+    <message>
+        <source>signal periods a second (the scale&apos;s speed)</source>
+        <translation>每秒信号周期数（光栅尺的速度）</translation>
+    </message>
+    <message>
+        <source>samples a second of both channels</source>
+        <translation>两路每秒的采样数</translation>
+    </message>
+    <message>
+        <source>read settings such as &apos;gap 0.9&apos; or &apos;yaw 3&apos; from standard input while streaming</source>
+        <translation>输出数据流时从标准输入读取设置，如 &apos;gap 0.9&apos; 或 &apos;yaw 3&apos;</translation>
+    </message>
+    <message>
         <source>anglebench simulate: port {port}: {reason}</source>
         <translation>anglebench simulate：端口 {port}：{reason}</translation>
     </message>
@@ -8797,6 +8875,178 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>no signal tolerance preset &apos;{key}&apos; (there are: {keys})</source>
         <translation>没有信号容差预设“{key}”（现有：{keys}）</translation>
+    </message>
+    <message>
+        <source>the window covers {periods} periods: move the scale (at least {least} a window)</source>
+        <extracomment>the fewest periods a window must cover to give figures the harmonics fitted to each channel of the window (the content&apos;s 2nd and 3rd) a window is thinned to at most this many samples for its fit (evenly, every k-th sample) samples added since the start (or the last clear) the samples of the window, and the periods they cover the signal figures (signal_tolerance.QUANTITIES; the preset&apos;s units) the channels&apos; fits at the estimated phase (sin, cos), and the ellipse&apos;s centre and semi-axes in V (u_sin, u_cos) for the Lissajous figure the estimated phase (rad) and the interpolation error (electrical degrees), per sample of the window (thinned as fitted) why there are no figures (&quot;&quot; when there are)</extracomment>
+        <translation>窗口只覆盖 {periods} 个周期：请移动光栅尺（每个窗口至少 {least} 个）</translation>
+    </message>
+    <message>
+        <source>Amplitude A (sin)</source>
+        <extracomment>the display&apos;s refresh: at most one redraw this often, whatever the stream&apos;s rate the samples (and lines) kept for the window; a take holds at most this many the instrument name of a take&apos;s raw session (app/capture/instruments.py reads it back) the phase bins of the interpolation error&apos;s curve</extracomment>
+        <translation>幅值 A (sin)</translation>
+    </message>
+    <message>
+        <source>Amplitude B (cos)</source>
+        <translation>幅值 B (cos)</translation>
+    </message>
+    <message>
+        <source>Ratio B/A</source>
+        <translation>幅值比 B/A</translation>
+    </message>
+    <message>
+        <source>Phase B − A − 90°</source>
+        <translation>相位 B − A − 90°</translation>
+    </message>
+    <message>
+        <source>Offset A</source>
+        <translation>直流偏置 A</translation>
+    </message>
+    <message>
+        <source>Offset B</source>
+        <translation>直流偏置 B</translation>
+    </message>
+    <message>
+        <source>Harmonic content</source>
+        <translation>谐波含量</translation>
+    </message>
+    <message>
+        <source>tcp://host:port or a serial port</source>
+        <extracomment>a take: the window&apos;s (u_sin, u_cos) in V, for the readings table the stream&apos;s newest lines: (index since the stream started, seconds, bytes, used) redraws since the panel was made (the display&apos;s rate bounds it, not the stream&apos;s)</extracomment>
+        <translation>tcp://主机:端口 或串口</translation>
+    </message>
+    <message>
+        <source>u_sin,u_cos — or a pattern with (?P&lt;sin&gt;…) and (?P&lt;cos&gt;…)</source>
+        <translation>u_sin,u_cos——或含 (?P&lt;sin&gt;…) 和 (?P&lt;cos&gt;…) 的模式</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Demonstration head</source>
+        <translation>演示读数头</translation>
+    </message>
+    <message>
+        <source>A simulated read head on this computer: set its gap, yaw and roll as if mounting it</source>
+        <translation>本机上的模拟读数头：像安装时一样设置其间隙、偏摆和侧倾</translation>
+    </message>
+    <message>
+        <source>The sliding window: the last N signal periods</source>
+        <translation>滑动窗口：最近 N 个信号周期</translation>
+    </message>
+    <message>
+        <source>The preset&apos;s unit per volt of the stream (1 for a 1 Vpp stream in volts; µA per V of the transimpedance for 11 µApp)</source>
+        <translation>每伏数据流对应的预设单位（以伏为单位的 1 Vpp 数据流为 1；11 µApp 为跨阻的 µA/V）</translation>
+    </message>
+    <message>
+        <source>Reset min/max</source>
+        <translation>复位最小/最大值</translation>
+    </message>
+    <message>
+        <source>Take</source>
+        <translation>采集</translation>
+    </message>
+    <message>
+        <source>Put the window&apos;s samples in the readings table (replacing them; Undo brings them back), with the stream&apos;s lines behind them</source>
+        <translation>把窗口中的采样放入读数表（替换原有读数；可撤销），并保留其背后的数据流原始行</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>行格式</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Tolerances</source>
+        <extracomment>``compute(preset)`` gives the SignalQuality of the result shown (the presenter&apos;s)</extracomment>
+        <translation>容差</translation>
+    </message>
+    <message>
+        <source>Window (periods)</source>
+        <translation>窗口（周期数）</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>比例系数</translation>
+    </message>
+    <message>
+        <source>Demonstration head: its mounting</source>
+        <translation>演示读数头：安装状态</translation>
+    </message>
+    <message>
+        <source>Gap</source>
+        <translation>间隙</translation>
+    </message>
+    <message>
+        <source>Yaw (moiré)</source>
+        <translation>偏摆（莫尔）</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>侧倾</translation>
+    </message>
+    <message>
+        <source>Dirt on the scale</source>
+        <translation>光栅尺污渍</translation>
+    </message>
+    <message>
+        <source>u sin (V)</source>
+        <translation>u sin (V)</translation>
+    </message>
+    <message>
+        <source>u cos (V)</source>
+        <translation>u cos (V)</translation>
+    </message>
+    <message>
+        <source>interpolation error (° el.)</source>
+        <translation>细分误差（电角度 °）</translation>
+    </message>
+    <message>
+        <source>phase (° el.)</source>
+        <translation>相位（电角度 °）</translation>
+    </message>
+    <message>
+        <source>Type the port of the stream first (e.g. tcp://127.0.0.1:5025)</source>
+        <translation>请先输入数据流的端口（例如 tcp://127.0.0.1:5025）</translation>
+    </message>
+    <message>
+        <source>{port}: {samples} samples, {refused} line(s) refused</source>
+        <translation>{port}：{samples} 个采样，拒收 {refused} 行</translation>
+    </message>
+    <message>
+        <source>last refused: {reason}</source>
+        <translation>最近拒收：{reason}</translation>
+    </message>
+    <message>
+        <source>window: {periods} periods, {samples} samples; interpolation error {pp}° el. peak to peak</source>
+        <translation>窗口：{periods} 个周期，{samples} 个采样；细分误差峰峰值 {pp}°（电角度）</translation>
+    </message>
+    <message>
+        <source>Nothing to take: no samples in the window</source>
+        <translation>无可采集：窗口中没有采样</translation>
+    </message>
+    <message>
+        <source>Figure</source>
+        <translation>量</translation>
+    </message>
+    <message>
+        <source>none (the record&apos;s units)</source>
+        <translation>无（记录的单位）</translation>
+    </message>
+    <message>
+        <source>along the revolution (°)</source>
+        <translation>沿一周的位置 (°)</translation>
+    </message>
+    <message>
+        <source>period of the record</source>
+        <translation>记录中的周期</translation>
+    </message>
+    <message>
+        <source>{windows} windows of {n} period(s)</source>
+        <translation>{windows} 个窗口，每个 {n} 个周期</translation>
     </message>
 </context>
 </TS>

@@ -39,6 +39,9 @@ KEPT = {
     "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
     "SINUMERIK", "FANUC", "HEIDENHAIN", "TNC", "COM", "CMA", "Beckhoff", "TwinCAT", "ISG", "Mach",
     "ADC", "LSB",
+    # the encoder interfaces' units (1 Vpp, 11 µApp), HEIDENHAIN's ERN encoders, a stream's
+    # TCP link and its tcp:// address (#45)
+    "Vpp", "App", "ERN", "TCP", "tcp",
     # CMC: as CNAS writes it; SPECIMEN-…: the specimens' numbers; IANA and its zone names
     "CMC", "SPECIMEN", "IANA", "Asia", "Shanghai",
 }

@@ -1,18 +1,23 @@
 """The fringe signal analysis' view: the shared readings and set-up, the interpolation
 error before and after compensation with the table export button, the signals and
 fits, the Lissajous figure with the fitted ellipse, the spectrum and the drift per
-period. Widgets only: the presenter hands it arrays to draw."""
+period, and the live signals of a read head being mounted (widgets/fringe/live_signals.py).
+Widgets only: the presenter hands it arrays to draw."""
 
 from __future__ import annotations
 
 import pyqtgraph as pg
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
 from widgets.figure_plot import FigureRenderer
+from widgets.fringe.live_signals import LiveSignalsPanel
+from widgets.fringe.signal_quality_plot import SignalQualityPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.plot_grid import IntegerAxis, show_grid
+from widgets.screen_fit import fit_to_screen
 from widgets.workbench_view import WorkbenchView
 
 
@@ -113,10 +118,48 @@ class FringeView(WorkbenchView):
         self.add_plot_tab(self.plots.lissajous, tr("Lissajous"))
         self.add_plot_tab(self.plots.spectrum, tr("Spectrum"))
         self.add_plot_tab(self.plots.drift, tr("Drift per period"))
+        # the signals along the record against a preset's bands (#45)
+        self.signal_quality = SignalQualityPlot()
+        self.add_plot_tab(self.signal_quality, tr("Signal quality"))
+        # a read head's signals watched live while it is mounted (#45): a window of its own
+        # (the plot tabs are too small for a test set's display at 1280×720), opened from
+        # its tab
+        self.live_signals = LiveSignalsPanel(self)
+        self.live_signals.setWindowFlag(Qt.WindowType.Window)
+        live(self.live_signals.setWindowTitle, tr("Live signals — mounting a read head"))
+        launcher = QWidget()
+        self.live_button = QPushButton()
+        live(self.live_button.setText, tr("Open the live signals…"))
+        self.live_button.clicked.connect(self.open_live_signals)
+        about = QLabel()
+        about.setWordWrap(True)
+        live(about.setText, tr("Watch a read head's sin/cos signals while you mount it: "
+                               "amplitudes, their ratio, the phase between them and the offsets "
+                               "as bars against the interface's tolerances, the Lissajous "
+                               "figure and the interpolation error, live from an ADC or "
+                               "oscilloscope stream (serial or TCP) or from a demonstration "
+                               "head. Take puts the window's samples in the readings."))
+        launcher_layout = QVBoxLayout(launcher)
+        launcher_layout.addWidget(about)
+        launcher_layout.addWidget(self.live_button, 0, Qt.AlignmentFlag.AlignLeft)
+        launcher_layout.addStretch(1)
+        self.add_plot_tab(launcher, tr("Live signals"))
+
+    def open_live_signals(self) -> None:
+        """The live signals' window, shown and raised (sized to the screen the first time)."""
+        panel = self.live_signals
+        panel.reload_presets()  # the lab's own as saved now
+        if not panel.isVisible() and not getattr(panel, "placed", False):
+            fit_to_screen(panel, 1240, 700)
+            panel.placed = True
+        panel.show()
+        panel.raise_()
+        panel.activateWindow()
 
     def subscribe(self, presenter) -> None:
         super().subscribe(presenter)
         self.export_button.clicked.connect(presenter.export_table_dialog)
+        self.live_signals.taken.connect(presenter.take_live_signals)
 
     def show_figures(self, figures: dict) -> None:
         """The declared figures (models/fringe/plots.py)."""
@@ -129,9 +172,16 @@ class FringeView(WorkbenchView):
         self.error_plot.show_figure(errors, figures["residuals"])
         self.plots.show(figures)
 
+    def show_signal_quality(self, compute) -> None:
+        """The signal quality tab from ``compute(preset)`` (the presenter's)."""
+        self.signal_quality.set_presets(self.live_signals.presets)
+        self.signal_quality.compute = compute
+        self.signal_quality.recompute()
+
     def clear_result(self) -> None:
         self.error_plot.clear()
         self.plots.clear()
+        self.signal_quality.clear()
 
     def ask_table_path(self) -> str:
         path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",
