@@ -11,7 +11,7 @@ import dataclasses
 from collections.abc import Mapping
 from typing import Any
 
-from app.capture.instruments import frame_values, reading_columns
+from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
@@ -63,17 +63,23 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
     # (#41: the elevation was not compared at all, an edit of it went unmarked)
     elevation = not zenith and "elevation_deg" in keys
 
+    def zenith_at(instrument: str) -> int | None:
+        """Where an instrument's reading holds a zenith angle (a theodolite's V)."""
+        held = list(INSTRUMENTS[instrument]().columns) if instrument in INSTRUMENTS else []
+        return held.index("zenith_deg") if "zenith_deg" in held else None
+
     def columns(instrument: str):
         out = reading_columns(instrument, keys, zenith)
-        if instrument == "theodolite" and elevation:
+        if elevation:
             out = [("elevation_deg", keys.index("elevation_deg")) if key == "zenith_deg"
                    else (key, column) for key, column in out]
         return out
 
     def values(instrument: str, line: bytes):
         got = frame_values(instrument, line)
-        if got is not None and instrument == "theodolite" and elevation and len(got) > 1:
-            got = (got[0], elevation_from_zenith_deg(got[1]), *got[2:])
+        at = zenith_at(instrument) if elevation else None
+        if got is not None and at is not None and len(got) > at:
+            got = (*got[:at], elevation_from_zenith_deg(got[at]), *got[at + 1:])
         return got
 
     if cache is not None and elevation:  # the frames' readings as elevations kept apart
