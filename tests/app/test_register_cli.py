@@ -268,3 +268,35 @@ def test_a_checker_signs_when_the_labs_template_asks_and_show_prints_it(samples_
         number = err.split("Certificate ")[1].split()[0]
         assert main(["register", "show", number]) == 0
         assert "checker: Zhao Min" in capsys.readouterr().out
+
+
+def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
+    """#43: ``register show N --dcc OUT.xml`` writes the DCC issued with the PDF (atomic,
+    guarded like --pdf); a DCC changed in the database is refused and found by verify."""
+    from tests import dcc_documents as t
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="PG-1")
+    with Register(register_url()) as register:
+        plain = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m: f"%PDF {m.certificate_number}".encode())[0].number
+        number = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                                lambda m: f"%PDF {m.certificate_number}".encode(),
+                                render_dcc=lambda m, pdf: t.document(m.certificate_number,
+                                                                     pdf=pdf))[0].number
+        issued = register.dcc(number)
+    out = tmp_path / "out.xml"
+    assert main(["register", "show", number, "--dcc", str(out)]) == 0
+    assert out.read_bytes() == issued and "dcc_sha256" in capsys.readouterr().out
+    assert main(["register", "verify"]) == 0
+    assert "every stored PDF and DCC matches" in capsys.readouterr().out
+    assert main(["register", "show", plain, "--dcc", str(tmp_path / "none.xml")]) == 2
+    assert "issued without a digital calibration certificate" in capsys.readouterr().err
+    assert main(["register", "show", number, "--dcc", register_url().split("///", 1)[1]]) == 2
+    capsys.readouterr()  # the register itself is never an output
+    _sql(f"UPDATE certificates SET dcc = X'3c782f3e' WHERE number = '{number}'")
+    assert main(["register", "show", number, "--dcc", str(tmp_path / "changed.xml")]) == 2
+    assert "stored DCC of" in capsys.readouterr().err
+    assert not (tmp_path / "changed.xml").exists()
+    assert main(["register", "verify"]) == 1
+    assert "stored DCC does not match" in capsys.readouterr().out
