@@ -23,7 +23,8 @@ from models.dcc.vocabulary import DS_NAMESPACE
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["CERT_ENV_VAR", "KEY_ENV_VAR", "TRUSTED_ENV_VAR", "SignatureCheck", "SigningError",
-           "has_signature", "load_signing", "sign", "verify"]
+           "has_signature", "load_signing", "sign", "sign_if_configured", "trusted_certificate",
+           "verify"]
 
 KEY_ENV_VAR = "ANGLEBENCH_DCC_SIGNING_KEY"
 CERT_ENV_VAR = "ANGLEBENCH_DCC_SIGNING_CERTIFICATE"
@@ -76,6 +77,24 @@ def load_signing(key_file: str = "", cert_file: str = "") -> tuple[bytes, bytes]
         raise SigningError(message(QT_TR_NOOP("{path}: not a PEM X.509 certificate"),
                                    path=cert_file))
     return key, cert
+
+
+def sign_if_configured(xml_bytes: bytes, key_file: str = "", cert_file: str = "") -> bytes:
+    """``xml_bytes`` signed with the lab's key and certificate when they are configured (the
+    settings ``dcc_signing_key`` / ``dcc_signing_certificate`` passed here, else the
+    environment), unchanged when neither is; SigningError when they cannot be used (a DCC is
+    then not issued rather than issued unsigned against the lab's configuration)."""
+    signing = load_signing(key_file, cert_file)
+    return xml_bytes if signing is None else sign(xml_bytes, *signing)
+
+
+def trusted_certificate(path: str = "") -> bytes | None:
+    """The certificate a reader checks signatures against: ``path``, else the file
+    :data:`TRUSTED_ENV_VAR` names, else the lab's own signing certificate
+    (:data:`CERT_ENV_VAR`); None when none is set. SigningError when it cannot be read."""
+    path = (path.strip() or os.environ.get(TRUSTED_ENV_VAR, "").strip()
+            or os.environ.get(CERT_ENV_VAR, "").strip())
+    return _read(path, message(QT_TR_NOOP("certificate"))) if path else None
 
 
 def _parser():

@@ -1250,15 +1250,30 @@ def _dcc_problems(conn, certificates, row, content: bool) -> list:
     try:
         inside = embedded_pdfs(data)
     except DccError as exc:
-        inside = []
         problems.append(message(QT_TR_NOOP("record {number}: its DCC cannot be read: "
                                            "{reason}"), number=row.number, reason=reason_of(exc)))
-    else:
-        if pdf not in inside:
-            problems.append(message(QT_TR_NOOP(
-                "record {number}: the PDF embedded in its DCC is not the stored PDF ({n} PDF(s) "
-                "embedded): the two forms of the certificate differ"),
-                number=row.number, n=len(inside)))
+        return problems
+    if pdf not in inside:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: the PDF embedded in its DCC is not the stored PDF ({n} PDF(s) "
+            "embedded): the two forms of the certificate differ"),
+            number=row.number, n=len(inside)))
+    from models.dcc.signature import SigningError, has_signature, trusted_certificate, verify
+
+    try:
+        signed = has_signature(data)
+        trusted = trusted_certificate() if signed else None
+    except (SigningError, ValueError) as exc:
+        problems.append(message(QT_TR_NOOP("record {number}: its DCC's signature cannot be "
+                                           "checked: {reason}"), number=row.number,
+                                reason=reason_of(exc)))
+        return problems
+    if signed:
+        check = verify(data, trusted)
+        if check.problems:
+            problems.append(message(QT_TR_NOOP("record {number}: its DCC's signature: "
+                                               "{reason}"), number=row.number,
+                                    reason=check.problems[0]))
     return problems
 
 

@@ -159,3 +159,47 @@ def test_a_version_4_register_migrates_keeping_its_chain(register_url):
         "UPDATE register_state SET value = '4' WHERE name = 'schema_version'")
     with pytest.raises(RegisterError, match="schema version 4 was set back"):
         Register(register_url)
+
+
+def test_a_signed_dcc_is_checked_by_verify(register_url, tmp_path, monkeypatch):
+    """With the lab's key and certificate configured the DCC is signed; the audit checks the
+    signature (against the lab's certificate), and a DCC re-signed with another key after
+    issue, its hash and chain recomputed aside, is found."""
+    from models.dcc import signature
+
+    key, cert = t.self_signed(tmp_path)
+    (tmp_path / "lab.key").write_bytes(key)
+    (tmp_path / "lab.pem").write_bytes(cert)
+    monkeypatch.setenv(signature.KEY_ENV_VAR, str(tmp_path / "lab.key"))
+    monkeypatch.setenv(signature.CERT_ENV_VAR, str(tmp_path / "lab.pem"))
+    with _open(register_url) as register:
+        record = register.issue(IssueRequest("polygon", META, PROJECT), render,
+                                render_dcc=lambda meta, pdf: signature.sign_if_configured(
+                                    render_dcc(meta, pdf)))[0]
+        dcc = register.dcc(record.number)
+        t.assert_valid(dcc)
+        assert signature.verify(dcc, cert).problems == ()
+        assert register.audit(pdfs=True) == []
+    other_key, other_cert = t.self_signed(tmp_path, "Intruder")
+    with _open(register_url) as register:
+        pdf = register.pdf(record.number)
+    forged = signature.sign(t.document(record.number, pdf=pdf), other_key, other_cert)
+    digest = hashlib.sha256(forged).hexdigest()
+    from dataclasses import asdict
+
+    from models.register.chain import GENESIS, link
+
+    chain = link(GENESIS, {**asdict(record), "dcc_sha256": digest})  # recomputed wholesale
+    sql(register_url, "UPDATE certificates SET dcc = :d, dcc_sha256 = :h, chain_sha256 = :c "
+        "WHERE number = :n", "UPDATE register_state SET value = :c WHERE name = 'head'",
+        d=forged, h=digest, c=chain, n=record.number)
+    with _open(register_url) as register:
+        assert register.problems == []  # the chain and state agree: only the signature tells
+        problems = [str(p) for p in register.audit(pdfs=True)]
+        assert any("its DCC's signature: the signature does not verify" in p
+                   for p in problems), problems
+    monkeypatch.delenv(signature.CERT_ENV_VAR)
+    with pytest.raises(signature.SigningError, match="both are needed"):
+        signature.sign_if_configured(b"<x/>")
+    monkeypatch.delenv(signature.KEY_ENV_VAR)
+    assert signature.sign_if_configured(b"<x/>") == b"<x/>"
