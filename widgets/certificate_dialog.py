@@ -42,7 +42,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from models.quantity import UNITS
-from widgets.i18n import declared, explained, tr
+from widgets.i18n import declared, explained, tr, translated
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
@@ -85,11 +85,12 @@ _CHOICES = {
 # a figure typed with its unit, chosen beside it: field -> the key of its unit
 _UNIT_OF = {"tolerance": "tolerance_unit", "item_resolution": "item_resolution_unit"}
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
-                     "applies_to", "uncertainty_unit")
+                     "applies_to", "uncertainty_unit", "due_date")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
                      QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
                      QT_TR_NOOP("Per (reading, from face 1)"),
-                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"))
+                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"),
+                     QT_TR_NOOP("Due date (YYYY-MM-DD)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -239,8 +240,15 @@ class CertificateDialog(QDialog):
         add, remove = QPushButton(tr("Add standard")), QPushButton(tr("Remove standard"))
         add.clicked.connect(lambda: self.add_standard({}))
         remove.clicked.connect(self._remove_standard)
+        from_dcc = QPushButton(tr("Read from DCC…"))
+        from_dcc.setObjectName("standard_from_dcc")
+        from_dcc.setToolTip(tr("Fill the selected standard's certificate number, uncertainty "
+                               "and due date from its digital calibration certificate (DCC "
+                               "XML); a new row when none is selected"))
+        from_dcc.clicked.connect(self._ask_standard_dcc)
         buttons.addWidget(add)
         buttons.addWidget(remove)
+        buttons.addWidget(from_dcc)
         buttons.addStretch(1)
         box_layout = QVBoxLayout(standards_box)
         box_layout.addWidget(self.standards)
@@ -308,6 +316,49 @@ class CertificateDialog(QDialog):
             if key == "uncertainty_unit" and not text:
                 text = "arcsec"
             self.standards.setItem(row, col, QTableWidgetItem(text))
+
+    def _ask_standard_dcc(self) -> None:
+        from PySide6.QtWidgets import QFileDialog
+
+        path, _ = QFileDialog.getOpenFileName(self, tr("Standard's digital calibration "
+                                                       "certificate"), "",
+                                              tr("DCC (*.xml);;All files (*)"))
+        if path:
+            self.read_standard_dcc(path)
+
+    def read_standard_dcc(self, path: str, schema_dir: str = "") -> bool:
+        """Fill a standard's certificate number, uncertainty (with its basis and unit) and
+        due date from the DCC at ``path``: the selected row, else a new one. A DCC refused
+        (schema, unit, signature, expired before the date of calibration) changes nothing
+        and says why; what the reader notes (no due date, an unchecked signer) is said."""
+        from models.dcc.reader import DccError, read_standard_dcc
+        from models.dcc.signature import SigningError, trusted_certificate
+
+        when = self.fields["calibration_date"].text().strip() if (
+            "calibration_date" in self.fields) else ""
+        try:
+            dt.date.fromisoformat(when)
+        except ValueError:
+            when = ""
+        try:
+            found = read_standard_dcc(path, schema_dir or None, measurement_date=when or None,
+                                      trusted_cert=trusted_certificate())
+        except (DccError, SigningError) as exc:
+            self.error_label.setStyleSheet("color: #b00020;")
+            self.error_label.setText(explained(exc))
+            return False
+        rows = sorted({i.row() for i in self.standards.selectedIndexes()})
+        if rows:
+            row = rows[0]
+        else:
+            self.add_standard({})
+            row = self.standards.rowCount() - 1
+        for key, value in found.as_standard().items():
+            text = f"{value:.6g}" if isinstance(value, float) else str(value)
+            self.standards.setItem(row, _STANDARD_COLUMNS.index(key), QTableWidgetItem(text))
+        self.error_label.setStyleSheet("")
+        self.error_label.setText("\n".join(translated(n) for n in found.notes))
+        return True
 
     def _remove_standard(self) -> None:
         rows = sorted({i.row() for i in self.standards.selectedIndexes()}, reverse=True)
