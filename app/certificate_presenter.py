@@ -201,6 +201,19 @@ class CertificatePresenter:
             self._mark_modified()  # the details are saved with the project
             self.details_changed(key)
 
+    def add_standard(self, key: str, standard: dict) -> None:
+        """Put ``standard`` (a ReferenceStandard's fields, e.g. a polygon read from its DCC)
+        among workbench ``key``'s standards: it replaces the one with the same certificate
+        number or the same description, else it is added; stored with the project."""
+        from models.certificate.metadata import ReferenceStandard
+
+        meta = self.details(key)
+        new = ReferenceStandard.from_dict(standard, len(meta.standards))
+        kept = [s for s in meta.standards
+                if not ((new.certificate_no and s.certificate_no == new.certificate_no)
+                        or s.description == new.description)]
+        self.store_details(key, dataclasses.replace(meta, standards=(*kept, new)))
+
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)
 

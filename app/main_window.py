@@ -99,6 +99,11 @@ class MainWindow(QMainWindow):
             presenter.certificate_details = (
                 lambda key=presenter.kind.key: self.certificates.stored_details(key))
         self.certificates.details_changed = lambda key: self.presenter(key).schedule_refresh()
+        for presenter in self.presenters:  # a polygon read from its DCC joins the standards
+            if hasattr(presenter, "reference_standard_found"):
+                presenter.reference_standard_found = (
+                    lambda standard, key=presenter.kind.key: self.certificates.add_standard(
+                        key, standard))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected
         ensure_cjk_font()  # Chinese names and readings are never boxes
