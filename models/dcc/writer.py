@@ -100,8 +100,7 @@ def _figure(x: float) -> str:
         return "NaN"
     if math.isinf(x):
         return "INF" if x > 0 else "-INF"
-    text = repr(x)
-    return text
+    return f"{x:.12g}"  # 12 significant digits: beyond every printed figure, no float noise
 
 
 @dataclass
@@ -337,7 +336,7 @@ def _parse(cell: str) -> tuple[float, str] | None:
 
 
 def _table_result(b: _Builder, results, table: Table, ref: str, description: str,
-                  k: float, p: float) -> None:
+                  row_ref: str, row_description: str, k: float, p: float) -> None:
     """A table of (label, value, U or note …) rows as one result: each row a quantity — a
     si:real with its U where the row prints one in a unit the value converts to, the row's
     text otherwise."""
@@ -349,9 +348,7 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
     for row in table.rows:
         label, value = row[0], row[1] if len(row) > 1 else ""
         rest = [c for c in row[2:] if c]
-        q = etree.SubElement(data, D + "quantity", refType=b.ref(
-            "anglebench_" + _camel(re.sub(r"[^A-Za-z0-9]+", "_", _say(label, "en")).strip("_")
-                                   .lower())[:60] or "anglebench_row", description))
+        q = etree.SubElement(data, D + "quantity", refType=b.ref(row_ref, row_description))
         b.text(q, "name", label)
         figure = _parse(value) if "\n" not in value else None
         u = _parse(rest[0]) if rest and ref == v.REFTYPE_SETUP_PARAMETERS else None
@@ -391,6 +388,10 @@ def _curves(b: _Builder, results, kind_key: str, budgets: Mapping[str, Any], p: 
         v.REFTYPE_CURVE, "the certificate's results per point, each error with its U, k and p"))
     b.text(res, "name", doc.results.title)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
+    # the certificate's column headers, when its table has one per column (not positioning's,
+    # whose table puts the two directions side by side)
+    headers = (dict(zip(columns, doc.results.header, strict=True))
+               if len(doc.results.header) == len(columns) else {})
     for name, values in doc.point_columns:
         if name.startswith("expanded_uncertainty_"):
             continue
@@ -412,7 +413,8 @@ def _curves(b: _Builder, results, kind_key: str, budgets: Mapping[str, Any], p: 
             expanded = np.asarray(budgets[name].expanded, dtype=float)
             k = np.asarray(budgets[name].coverage_factors, dtype=float)
         if values.dtype.kind not in "biuf":
-            q = b.quantity(lst, name, b.ref("anglebench_" + _camel(name), name), False)
+            q = etree.SubElement(lst, D + "quantity", refType=b.ref("anglebench_" + _camel(name), name))
+            _column_name(b, q, name, headers)
             chars = etree.SubElement(q, D + "charsXMLList")
             chars.text = " ".join(str(x) for x in values)
             continue
@@ -427,8 +429,17 @@ def _curves(b: _Builder, results, kind_key: str, budgets: Mapping[str, Any], p: 
         q = etree.SubElement(lst, D + "quantity",
                              refType=f"{ref} {b.ref('anglebench_' + _camel(stem), stem)}"
                              if not ref.startswith("anglebench_") else ref)
-        b.text(q, "name", name, translated=False)
+        _column_name(b, q, name, headers)
         b.real_list(q, values.astype(float), unit, expanded, k, p)
+
+
+def _column_name(b: _Builder, q, name: str, headers: Mapping[str, str]) -> None:
+    """A per-point quantity's name: the certificate's column header in each language, and
+    the column's key (that of the CSV/XLSX export)."""
+    el = etree.SubElement(q, D + "name")
+    if name in headers:
+        b.contents(el, headers[name])
+    etree.SubElement(el, D + "content").text = name
 
 
 def _face_deviations(b: _Builder, results, budgets: Mapping[str, Any], p: float) -> None:
@@ -582,9 +593,11 @@ def _measurement_results(b: _Builder, root, kind_key: str, budgets, software) ->
     budget = doc.budget
     k = float(budget.coverage_factor) if budget.points else 2.0
     _table_result(b, results, doc.parameters, v.REFTYPE_SETUP_PARAMETERS,
-                  "the identified set-up parameters with U", k, p)
+                  "the certificate's parameters table: the identified set-up parameters with U",
+                  "anglebench_setupParameter", "one row of the parameters table", k, p)
     _table_result(b, results, doc.statistics, v.REFTYPE_SUMMARY,
-                  "the summary figures", k, p)
+                  "the certificate's statistics table: the summary figures",
+                  "anglebench_summaryFigure", "one row of the statistics table", k, p)
     _decided(b, results, p)
     unit = _SYMBOLS.get(doc.unit.strip(), r"\arcsecond")
     _budget(b, results, unit)
