@@ -58,6 +58,14 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("print JSON instead of a summary")))
     p.add_argument("--certificate", metavar="OUT.pdf",
                    help=words(QT_TR_NOOP("also write a test certificate")))
+    p.add_argument("--dcc", metavar="OUT.xml",
+                   help=words(QT_TR_NOOP("with --certificate: also write the certificate as a "
+                                         "digital calibration certificate (PTB DCC 3.3.0 XML) "
+                                         "with the PDF embedded")))
+    p.add_argument("--dcc-schema", metavar="DIR", default="",
+                   help=words(QT_TR_NOOP("the folder of PTB's DCC 3.3.0 schema set (dcc.xsd, "
+                                         "si/, d-sig/): the DCC is validated against it and not "
+                                         "written when invalid (else ANGLEBENCH_DCC_SCHEMA)")))
     p.add_argument("--metadata", metavar="META.json",
                    help=words(QT_TR_NOOP("certificate metadata (lab, customer, item, "
                                          "standards…); without it the certificate is marked "
@@ -204,8 +212,12 @@ def run_analyze(argv: list[str]) -> int:
                                          "correction table"), workbench=message(kind.title)),
                       words))
         return EXIT_BAD_INPUT
+    if args.dcc and not args.certificate:
+        _say(words(QT_TR_NOOP("anglebench analyze: --dcc needs --certificate (the DCC embeds the "
+                              "PDF certificate)")))
+        return EXIT_BAD_INPUT
     outputs = (("--certificate", args.certificate), ("--results", args.results),
-               ("--table", args.table))
+               ("--table", args.table), ("--dcc", args.dcc))
     try:
         check_outputs(outputs, _protected(inputs))
     except OutputRefused as exc:
@@ -366,16 +378,44 @@ def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
 
 
-def _specimen(args: argparse.Namespace, document, words) -> None:
+def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words) -> None:
+    """The PDF of ``document`` and, with --dcc, its DCC (built and validated first: when it
+    is refused, neither file is written)."""
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.project.atomic_write import write_bytes_atomic
+
+    pdf = certificate_pdf_bytes(document)
+    xml = _dcc_of(args, kind, result, document, pdf, words) if args.dcc else None
+    write_bytes_atomic(args.certificate, pdf)
+    if xml is not None:
+        write_bytes_atomic(args.dcc, xml)
+        _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
+                              number=document.metadata.certificate_number, path=args.dcc), words))
+
+
+def _dcc_of(args: argparse.Namespace, kind, result, document, pdf: bytes, words) -> bytes:
+    """The DCC of the certificate printed into ``pdf`` (app/dcc_issue.render_dcc); says on
+    stderr when no schema folder is set, so it was not validated."""
+    from app.dcc_issue import dcc_schema_dir, render_dcc
+
+    folder = dcc_schema_dir(args.dcc_schema)
+    xml = render_dcc(kind, result, document, pdf, Path(args.certificate).name, folder)
+    if not folder:
+        _say(rendered(message(QT_TR_NOOP(
+            "{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or "
+            "ANGLEBENCH_DCC_SCHEMA)"), path=args.dcc), words))
+    return xml
+
+
+def _specimen(args: argparse.Namespace, kind, result, document, words) -> None:
     """The bundled example details (``"example": true``): a SPECIMEN, watermarked and
     numbered SPECIMEN-… (a number the register refuses, so it cannot clash), never
     recorded in any register."""
     from app.certificate_issue import specimen_document
-    from app.writers.certificate_pdf import write_certificate_pdf
 
     document = specimen_document(document)
     number = document.metadata.certificate_number
-    write_certificate_pdf(args.certificate, document)
+    _write_pdf_and_dcc(args, kind, result, document, words)
     _say(rendered(message(QT_TR_NOOP(
         "SPECIMEN {number} written to {path}: these are the bundled example details "
         "(\"example\": true); it is watermarked SPECIMEN, is not a certificate and was "
@@ -388,9 +428,12 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
 
     try:
         with Register(url) as register:
+            dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words))
+                   if args.dcc else None)
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
-                                       Path(args.file).name, args.certificate)
+                                       Path(args.file).name, args.certificate,
+                                       dcc=dcc, dcc_path=args.dcc or "")
     except RegisterError as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
                                          "written"), reason=reason_of(exc)), words))
@@ -405,6 +448,9 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
                                      "recorded in the register (sha256 {sha}…)"),
                           number=record.number, path=args.certificate,
                           sha=record.pdf_sha256[:16]), words))
+    if args.dcc:
+        _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
+                              number=record.number, path=args.dcc), words))
     return record
 
 
@@ -412,7 +458,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             rows: Callable[[], list[list[str]]]) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.certificate_issue import draft_reasons
-    from app.writers.certificate_pdf import write_certificate_pdf
+    from app.dcc_issue import DccError
 
     words = translator(args.language)
     try:
@@ -428,13 +474,13 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         return EXIT_BAD_INPUT
     try:
         if args.certificate and metadata.example:
-            _specimen(args, document, words)
+            _specimen(args, kind, result, document, words)
         elif args.certificate and not draft_reasons(metadata):
             record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT
         elif args.certificate:
-            write_certificate_pdf(args.certificate, document)
+            _write_pdf_and_dcc(args, kind, result, document, words)
             _say(rendered(message(QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
                 "in the register)"), path=args.certificate, fields=joined(
@@ -447,6 +493,11 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                 write_results_csv(args.results, document, ANGLE_UNITS[args.unit])
             _say(rendered(message(QT_TR_NOOP("Results written to {path}"), path=args.results),
                           words))
+    except DccError as exc:
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; neither the certificate "
+                                         "nor its DCC was written"), reason=reason_of(exc)),
+                      words))
+        return EXIT_BAD_INPUT
     except (OSError, ValueError) as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write: {reason}"),
                               reason=reason_of(exc)), words))

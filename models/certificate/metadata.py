@@ -241,6 +241,8 @@ class CertificateMetadata:
     lab_name: str = ""
     lab_address: str = ""
     lab_accreditation: str = ""
+    # the laboratory's ISO 3166-1 alpha-2 country code (CN, DE …): the DCC's coreData states it
+    lab_country: str = ""
     customer_name: str = ""
     customer_address: str = ""
     item_description: str = ""
