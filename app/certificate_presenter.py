@@ -201,18 +201,16 @@ class CertificatePresenter:
             self._mark_modified()  # the details are saved with the project
             self.details_changed(key)
 
-    def add_standard(self, key: str, standard: dict) -> None:
-        """Put ``standard`` (a ReferenceStandard's fields, e.g. a polygon read from its DCC)
-        among workbench ``key``'s standards: it replaces the one with the same certificate
-        number or the same description, else it is added; stored with the project."""
-        from models.certificate.metadata import ReferenceStandard
+    def add_polygon_standard(self, key: str, standard: dict) -> None:
+        """Put the polygon read from its DCC (``standard``: a ReferenceStandard's fields)
+        among workbench ``key``'s standards in place of the polygon listed there
+        (models/dcc/reader.place_polygon_standard); stored with the project."""
+        from models.dcc.reader import place_polygon_standard
 
         meta = self.details(key)
-        new = ReferenceStandard.from_dict(standard, len(meta.standards))
-        kept = [s for s in meta.standards
-                if not ((new.certificate_no and s.certificate_no == new.certificate_no)
-                        or s.description == new.description)]
-        self.store_details(key, dataclasses.replace(meta, standards=(*kept, new)))
+        placed = place_polygon_standard(meta.to_dict()["standards"], standard)
+        self.store_details(key, CertificateMetadata.from_dict({**meta.to_dict(),
+                                                               "standards": placed}))
 
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)

@@ -62,6 +62,11 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("with --certificate: also write the certificate as a "
                                          "digital calibration certificate (PTB DCC 3.3.0 XML) "
                                          "with the PDF embedded")))
+    p.add_argument("--reference-dcc", metavar="POLY.xml", default="",
+                   help=words(QT_TR_NOOP("polygon: the polygon's digital calibration "
+                                         "certificate (DCC): its face deviations replace the "
+                                         "readings' deviation column and its U enters the "
+                                         "budget")))
     p.add_argument("--dcc-schema", metavar="DIR", default="",
                    help=words(QT_TR_NOOP("the folder of PTB's DCC 3.3.0 schema set (dcc.xsd, "
                                          "si/, d-sig/): the DCC is validated against it and not "
@@ -202,7 +207,12 @@ def run_analyze(argv: list[str]) -> int:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
-        [args.compare_after] if args.compare_after else [])
+        [args.compare_after] if args.compare_after else []) + (
+        [args.reference_dcc] if args.reference_dcc else [])
+    if args.reference_dcc and args.kind != "polygon":
+        _say(words(QT_TR_NOOP("anglebench analyze: --reference-dcc is for the polygon "
+                              "workbench")))
+        return EXIT_BAD_INPUT
     if args.compare_after and not isinstance(kind, ComparesAfterLog):
         _say(words(QT_TR_NOOP("anglebench analyze: --compare-after is for the positioning "
                               "workbench")))
@@ -230,14 +240,20 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     # a file of plain numbers is read by numpy in one pass; anything else (or a file that
     # is not what it claims) by the tolerant reader, which names the row and the cell
-    parsed = read_numeric(args.file, kind.columns, mapping)
+    # (the rows as text when a reference DCC replaces a column of them)
+    parsed = None if args.reference_dcc else read_numeric(args.file, kind.columns, mapping)
     table = None
+    args.reference = None
     if parsed is None:
         try:
             table, rows = _read_rows(args.file, kind, mapping)
         except TableImportError as exc:
             _say(_why(exc, words))
             return EXIT_BAD_INPUT
+        if args.reference_dcc:
+            rows = _with_reference_dcc(args, kind, rows, settings, words)
+            if rows is None:
+                return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
     # rows at the end that wait for their reading (a plan's or the nominal step's cells
     # filled, no reading yet) are points not yet taken, not bad rows
@@ -276,7 +292,8 @@ def run_analyze(argv: list[str]) -> int:
 
             try:
                 metadata = _read_metadata(args.metadata,
-                                          kind.error_unit(kind.settings_with_defaults(settings)))
+                                          kind.error_unit(kind.settings_with_defaults(settings)),
+                                          getattr(args, "reference", None))
             except MetadataError as exc:
                 _say(f"anglebench analyze: {_why(exc, words)}")
                 return EXIT_BAD_INPUT
@@ -332,6 +349,29 @@ def run_analyze(argv: list[str]) -> int:
     return 0
 
 
+def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
+    """The rows with the polygon's DCC deviations (app/reference_dcc.py), said what it
+    replaced; None after saying why the DCC was refused."""
+    from app.dcc_issue import dcc_schema_dir
+    from app.reference_dcc import reference_rows
+    from models.dcc.reader import DccError
+    from models.dcc.signature import SigningError
+
+    try:
+        metadata = _read_metadata(args.metadata,
+                                  kind.error_unit(kind.settings_with_defaults(settings)))
+        rows, args.reference, said = reference_rows(
+            args.reference_dcc, kind, rows, kind.settings_with_defaults(settings),
+            metadata.calibration_date, dcc_schema_dir(args.dcc_schema))
+    except (DccError, SigningError, MetadataError) as exc:
+        _say(f"anglebench analyze: --reference-dcc: {_why(exc, words)}")
+        return None
+    for text in said:
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: --reference-dcc: {text}"),
+                              text=text), words))
+    return rows
+
+
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
     table = read_table(path)
     try:
@@ -344,9 +384,14 @@ def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
         return dataclasses.replace(table, line_numbers=list(range(1, len(own) + 1))), own
 
 
-def _read_metadata(path: str | None, error_unit: str = "arcsec") -> CertificateMetadata:
+def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
+                   ) -> CertificateMetadata:
     """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
     unit is read in ``error_unit``, the unit of the errors it was judged against."""
+    if reference is not None:
+        from app.reference_dcc import with_reference
+
+        return with_reference(_read_metadata(path, error_unit), reference)
     if not path:
         return CertificateMetadata()
     try:
@@ -463,7 +508,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     words = translator(args.language)
     try:
         metadata = _read_metadata(args.metadata,
-                                  kind.error_unit(kind.settings_with_defaults(settings)))
+                                  kind.error_unit(kind.settings_with_defaults(settings)),
+                                  getattr(args, "reference", None))
     except MetadataError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

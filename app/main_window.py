@@ -102,7 +102,7 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:  # a polygon read from its DCC joins the standards
             if hasattr(presenter, "reference_standard_found"):
                 presenter.reference_standard_found = (
-                    lambda standard, key=presenter.kind.key: self.certificates.add_standard(
+                    lambda standard, key=presenter.kind.key: self.certificates.add_polygon_standard(
                         key, standard))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected

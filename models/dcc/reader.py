@@ -40,8 +40,9 @@ from models.dcc.vocabulary import (
 from models.messages import QT_TR_NOOP, message, reason_of
 
 __all__ = ["ARCSEC_PER_UNIT", "DccError", "PolygonReference", "StandardCertificate",
-           "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list", "polygon_standard",
-           "read_polygon_dcc", "read_standard_dcc", "replace_face_deviations"]
+           "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
+           "place_polygon_standard", "polygon_standard", "read_polygon_dcc",
+           "read_standard_dcc", "replace_face_deviations"]
 
 D = f"{{{DCC_NAMESPACE}}}"
 S = f"{{{SI_NAMESPACE}}}"
@@ -538,16 +539,43 @@ def replace_face_deviations(rows: list[list[str]], position_index: int, deviatio
 
 def polygon_standard(reference: PolygonReference) -> dict:
     """The polygon as a row of the standards table (a ReferenceStandard's fields): its
-    largest face U (exact with its k: U95 when k = 2, else u = U/k) per reading."""
+    largest face U (exact with its k: U95 when k = 2, else u = U/k), per reading — or per
+    face from face 1 when the DCC states face 1 as exactly 0 with no uncertainty (its
+    deviations are then from face 1)."""
     k = reference.coverage_factor
-    standard = {"description": message(QT_TR_NOOP("polygon (face deviations from its DCC)")),
-                "certificate_no": reference.certificate_id, "applies_to": "reading",
+    from_face_1 = (reference.deviations.get(1) == 0.0
+                   and reference.expanded_uncertainty.get(1) == 0.0)
+    standard = {"description": "polygon (face deviations from its DCC)",
+                "certificate_no": reference.certificate_id,
+                "applies_to": "from face 1" if from_face_1 else "reading",
                 "uncertainty_unit": "arcsec", "due_date": reference.due_date}
     if abs(k - 2.0) < 1e-12:
         standard.update(uncertainty=reference.largest_u, basis="U95")
     else:
         standard.update(uncertainty=reference.largest_u / k, basis="u")
     return standard
+
+
+#: words that name the polygon among a certificate's standards (en, zh)
+_POLYGON_WORDS = ("polygon", "多面棱体", "棱体")
+
+
+def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
+    """The standards (ReferenceStandard dicts) with the polygon read from its DCC in place:
+    it replaces the standard with its certificate number, else the one whose description
+    names a polygon (keeping that one's description and serial: the same polygon, now
+    with its DCC's figures), else it is added. The polygon's U thus enters the budget once."""
+    out = [dict(s) for s in standards]
+    number = standard.get("certificate_no", "")
+    for match in (lambda s: number and s.get("certificate_no") == number,
+                  lambda s: any(w in str(s.get("description", "")).lower()
+                                for w in _POLYGON_WORDS)):
+        for i, old in enumerate(out):
+            if match(old):
+                kept = {k: old[k] for k in ("description", "serial") if old.get(k)}
+                out[i] = {**standard, **kept}
+                return out
+    return [*out, dict(standard)]
 
 
 # -- any standard's certificate ----------------------------------------------------------
