@@ -63,6 +63,14 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
                                 frame_values, cache)
 
 
+def sign_if_configured(xml: bytes) -> bytes:
+    """The DCC signed with the lab's key and certificate when configured (the environment:
+    models/dcc/signature.py), unchanged otherwise."""
+    from models.dcc.signature import sign_if_configured as sign
+
+    return sign(xml)
+
+
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
@@ -98,15 +106,20 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
             raw_data_sha256=digest, edited_readings=edited, register_head=head)
         pdf = certificate_pdf_bytes(document)
         if dcc is not None:  # the register may render again: the last one is recorded
-            made["dcc"] = dcc(document, pdf)
+            # signed when the lab's key and certificate are configured (models/dcc/signature)
+            made["dcc"] = sign_if_configured(dcc(document, pdf))
         return pdf
 
     # before a number is used: an output onto the register (or a database) is refused
     check_output(path, register_files(register.url))
     if dcc_path:
         check_output(dcc_path, register_files(register.url), "--dcc")
+    # the register stores the DCC made with the PDF of the same attempt (same number, the
+    # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
-                                 change_note=change_note, replacement=replacement)
+                                 change_note=change_note, replacement=replacement,
+                                 render_dcc=(lambda _final, _pdf: made["dcc"])
+                                 if dcc is not None else None)
     try:
         write_bytes_atomic(path, pdf)
     except OSError as exc:

@@ -300,3 +300,37 @@ def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
     assert not (tmp_path / "changed.xml").exists()
     assert main(["register", "verify"]) == 1
     assert "stored DCC does not match" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_an_issued_dcc_is_recorded_signed_and_shown_as_written(samples_dir, tmp_path, capsys,
+                                                                monkeypatch):
+    """#43: ``analyze --certificate --dcc`` through the register: the register stores the DCC
+    written (signed with the lab's key when configured), ``register show --dcc`` gives it
+    back byte for byte, the PDF inside is the PDF issued, and verify checks both."""
+    from models.dcc import signature
+    from models.dcc.reader import embedded_pdfs
+    from tests import dcc_documents as t
+
+    key, cert = t.self_signed(tmp_path)
+    (tmp_path / "lab.key").write_bytes(key)
+    (tmp_path / "lab.pem").write_bytes(cert)
+    monkeypatch.setenv(signature.KEY_ENV_VAR, str(tmp_path / "lab.key"))
+    monkeypatch.setenv(signature.CERT_ENV_VAR, str(tmp_path / "lab.pem"))
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": ""})
+    (tmp_path / "m.json").write_text(json.dumps(meta), encoding="utf-8")
+    pdf, xml = tmp_path / "c.pdf", tmp_path / "c.xml"
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(tmp_path / "m.json"), "--certificate", str(pdf), "--dcc", str(xml),
+                 "--dcc-schema", str(t.SHARED_DCC)]) == 0
+    err = capsys.readouterr().err
+    number = err.split("Certificate ", 1)[1].split(" issued", 1)[0]
+    t.assert_valid(xml.read_bytes())  # signed, and still valid against the schema
+    assert signature.verify(xml.read_bytes(), cert).problems == ()
+    assert embedded_pdfs(xml.read_bytes()) == [pdf.read_bytes()]
+    assert main(["register", "show", number, "--dcc", str(tmp_path / "again.xml")]) == 0
+    assert (tmp_path / "again.xml").read_bytes() == xml.read_bytes()
+    capsys.readouterr()
+    assert main(["register", "verify"]) == 0
+    assert "every stored PDF and DCC matches" in capsys.readouterr().out
