@@ -12,8 +12,6 @@ from __future__ import annotations
 import os
 from typing import Any
 
-import numpy as np
-
 from models.certificate.document import CertificateDocument
 from models.dcc.schema import validate
 from models.dcc.writer import DccError, build_dcc
@@ -34,21 +32,6 @@ def dcc_schema_dir(explicit: str = "", configured: str = "") -> str:
     return (explicit or os.environ.get(DCC_SCHEMA_ENV, "") or configured).strip()
 
 
-def _from_reference_point(result: Any) -> dict[str, Any]:
-    """U and k of the cross-calibration's encoder error from step 0 (the certificate's
-    "U from step 0" column; its k is the solution's, as for the polygon from face 1, whose
-    budget the workbench names)."""
-    from models.certificate.uncertainty_json import PointUncertainty
-
-    u = getattr(result, "encoder_u_from_step0_arcsec", None)
-    solution = getattr(result, "solution", None)
-    if u is None or solution is None or not getattr(solution, "separable", False):
-        return {}
-    expanded = np.asarray(u(), dtype=float)
-    return {"encoder_error_from_step0_arcsec": PointUncertainty(
-        expanded, np.full(expanded.size, float(solution.coverage_factor)))}
-
-
 def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes: bytes,
                pdf_name: str, schema_dir: str = "") -> bytes:
     """The DCC of ``document`` with ``pdf_bytes`` embedded; validated against
@@ -58,8 +41,10 @@ def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes:
         budgets = kind.uncertainty_budgets(result, document.metadata)
     except (ValueError, ArithmeticError, IndexError):  # U not determined: the table's own U
         budgets = {}
-    budgets = {**budgets, **_from_reference_point(result)}
-    xml = build_dcc(document, kind.key, pdf_bytes, pdf_name, budgets)
+    budgets = {**budgets, **kind.dcc_point_uncertainties(result)}
+    xml = build_dcc(document, pdf_bytes, pdf_name, budgets,
+                    uncertainty_columns=kind.dcc_uncertainty_columns,
+                    face_deviations_column=kind.dcc_face_deviations_column)
     if schema_dir:
         problems = validate(xml, schema_dir)
         if problems:

@@ -60,6 +60,7 @@ _TEXT_FIELDS = {
     "item_description": QT_TR_NOOP("Item under test"), "item_manufacturer": QT_TR_NOOP("Manufacturer"),
     "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
     "item_model": QT_TR_NOOP("Model / type"),
+    "lab_country": QT_TR_NOOP("Country (ISO 3166-1, e.g. CN)"),
     "calibration_site": QT_TR_NOOP("Customer's site (where)"),
     "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
@@ -189,9 +190,23 @@ class CertificateDialog(QDialog):
             "A specimen for training or demonstration: watermarked SPECIMEN, numbered "
             "SPECIMEN-…, not a certificate, and recorded in no register"))
         cert.layout().addRow("", self.training)
+        # the digital certificate beside the PDF (PTB DCC 3.3.0: the XML with the PDF inside)
+        self.write_dcc = QCheckBox(tr("Also write the digital certificate (DCC, XML)"))
+        self.write_dcc.setObjectName("write_dcc")
+        self.write_dcc.setToolTip(tr(
+            "Beside the PDF, the same certificate as a PTB Digital Calibration Certificate "
+            "(DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml"))
+        cert.layout().addRow("", self.write_dcc)
+        self.dcc_schema = QLineEdit()
+        self.dcc_schema.setObjectName("dcc_schema_dir")
+        self.dcc_schema.setPlaceholderText(tr("empty: the DCC is not validated"))
+        self.dcc_schema.setToolTip(tr(
+            "The folder of PTB's DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is "
+            "validated against it and not written when invalid"))
+        cert.layout().addRow(tr("DCC schema folder"), self.dcc_schema)
         grid.addWidget(cert, 0, 0)
         lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
-                                                    "number_scheme"))
+                                                    "lab_country", "number_scheme"))
         # the lab's template: a checker signs as well (核验员, JJF 1071's model)
         self.checker_role = QCheckBox(tr("Certificates are checked (Checked by / 核验员)"))
         self.checker_role.setObjectName("checker_role")
@@ -383,6 +398,15 @@ class CertificateDialog(QDialog):
                 standards.append(entry)
         data["standards"] = standards
         return data
+
+    def dcc_options(self) -> tuple[bool, str]:
+        """Whether to write the DCC beside the PDF, and the schema folder (window settings,
+        not details of this certificate)."""
+        return self.write_dcc.isChecked(), self.dcc_schema.text().strip()
+
+    def set_dcc_options(self, write: bool, schema_dir: str) -> None:
+        self.write_dcc.setChecked(write)
+        self.dcc_schema.setText(schema_dir)
 
     def metadata(self) -> CertificateMetadata:
         """The entered metadata. Raises MetadataError, with every bad field marked at once."""

@@ -27,7 +27,7 @@ from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
 
-__all__ = ["DccError", "UNCERTAINTY_PAIRS", "build_dcc", "column_unit"]
+__all__ = ["DccError", "build_dcc", "column_unit"]
 
 D = f"{{{v.DCC_NAMESPACE}}}"
 S = f"{{{v.SI_NAMESPACE}}}"
@@ -37,17 +37,6 @@ class DccError(ValueError):
     """The certificate cannot be written as a DCC (a field the schema requires is missing);
     the message names the field."""
 
-
-#: per workbench: a per-point column (its name without the unit) → the column of the U the
-#: certificate prints beside it (``expanded_uncertainty_`` + this + the unit)
-UNCERTAINTY_PAIRS: dict[str, dict[str, str]] = {
-    "theodolite": {"corrected_error": ""},
-    "polygon": {"corrected_error": ""},
-    "fringe": {"raw_error": ""},  # the certificate's "U as found"
-    "positioning": {"mean_deviation": ""},
-    "crosscal": {"deviation": "", "deviation_from_face1": "from_face1_",
-                 "error": "", "error_from_step0": "from_step0_"},
-}
 
 #: a column's unit by its name's ending: D-SI unit
 _UNIT_SUFFIXES = {"_deg": r"\degree", "_arcsec": r"\arcsecond", "_urad": r"\micro\radian",
@@ -377,13 +366,13 @@ def _k_lookup(budgets) -> Callable[[float], float | None]:
     return lambda u: pairs.get(round(float(u), 12))
 
 
-def _curves(b: _Builder, results, kind_key: str, budgets: Mapping[str, Any], p: float) -> None:
+def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str, Any],
+            p: float) -> None:
     doc = b.document
     columns = dict(doc.point_columns)
     if not columns:
         return
     k_of = _k_lookup([doc.budget, *budgets.values()])
-    pairs = UNCERTAINTY_PAIRS.get(kind_key, {})
     res = etree.SubElement(results, D + "result", refType=b.ref(
         v.REFTYPE_CURVE, "the certificate's results per point, each error with its U, k and p"))
     b.text(res, "name", doc.results.title)
@@ -442,13 +431,16 @@ def _column_name(b: _Builder, q, name: str, headers: Mapping[str, str]) -> None:
     etree.SubElement(el, D + "content").text = name
 
 
-def _face_deviations(b: _Builder, results, budgets: Mapping[str, Any], p: float) -> None:
-    """The polygon's face deviations in the shared vocabulary (the reader's form)."""
+def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str],
+                     budgets: Mapping[str, Any], p: float) -> None:
+    """The polygon's face deviations from face 1 in the shared vocabulary (the reader's
+    form), in arcseconds, with the U the certificate prints beside them."""
     columns = dict(b.document.point_columns)
-    if "deviation_from_face1_arcsec" not in columns:
+    if column not in columns or not column.endswith("_arcsec"):
         return
-    dev = np.asarray(columns["deviation_from_face1_arcsec"], dtype=float)
-    u = np.asarray(columns["expanded_uncertainty_from_face1_arcsec"], dtype=float)
+    stem = column[:-len("_arcsec")]
+    dev = np.asarray(columns[column], dtype=float)
+    u = np.asarray(columns[f"expanded_uncertainty_{pairs.get(stem, '')}arcsec"], dtype=float)
     k_of = _k_lookup([b.document.budget, *budgets.values()])
     k = [k_of(x) for x in u]
     if any(x is None for x in k):
@@ -524,7 +516,8 @@ def _budget(b: _Builder, results, unit: str) -> None:
     b.real(q, float(budget.coverage_factor * budget.combined[i]), unit)
 
 
-def _measurement_results(b: _Builder, root, kind_key: str, budgets, software) -> None:
+def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[str, str],
+                         face_column: str) -> None:
     doc, meta = b.document, b.document.metadata
     p = float(meta.coverage_probability)
     mrs = etree.SubElement(root, D + "measurementResults")
@@ -587,9 +580,9 @@ def _measurement_results(b: _Builder, root, kind_key: str, budgets, software) ->
             q = etree.SubElement(etree.SubElement(ic, D + "data"), D + "quantity")
             b.real(q, value, unit)
     results = etree.SubElement(mr, D + "results")
-    _curves(b, results, kind_key, budgets, p)
-    if kind_key == "crosscal":
-        _face_deviations(b, results, budgets, p)
+    _curves(b, results, pairs, budgets, p)
+    if face_column:
+        _face_deviations(b, results, face_column, pairs, budgets, p)
     budget = doc.budget
     k = float(budget.coverage_factor) if budget.points else 2.0
     _table_result(b, results, doc.parameters, v.REFTYPE_SETUP_PARAMETERS,
@@ -603,20 +596,26 @@ def _measurement_results(b: _Builder, root, kind_key: str, budgets, software) ->
     _budget(b, results, unit)
 
 
-def build_dcc(document: CertificateDocument, kind_key: str, pdf_bytes: bytes, pdf_name: str,
-              budgets: Mapping[str, Any] | None = None,
+def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
+              budgets: Mapping[str, Any] | None = None, *,
+              uncertainty_columns: Mapping[str, str] | None = None,
+              face_deviations_column: str = "",
               software: SoftwareIdentity | None = None) -> bytes:
     """The DCC 3.3.0 of ``document`` (the certificate as printed into ``pdf_bytes``), with
     the PDF embedded byte for byte. ``budgets``: the workbench's
-    ``uncertainty_budgets(result, metadata)`` (U and k per point of each curve); DccError
-    naming a field the schema requires and the certificate lacks."""
+    ``uncertainty_budgets(result, metadata)`` (U and k per point of each curve);
+    ``uncertainty_columns``: the workbench's ``dcc_uncertainty_columns`` (which column's U
+    the certificate prints beside it); ``face_deviations_column``: its
+    ``dcc_face_deviations_column``. DccError naming a field the schema requires and the
+    certificate lacks."""
     software = software or software_identity()
     meta = document.metadata
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)
     _administrative(b, root, software)
-    _measurement_results(b, root, kind_key, budgets or {}, software)
+    _measurement_results(b, root, budgets or {}, software, uncertainty_columns or {},
+                         face_deviations_column)
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
         v.REFTYPE_ISSUED_PDF, "the issued PDF certificate, byte for byte"))
     b.text(pdf, "name", message(QT_TR_NOOP("Certificate {number} (PDF)"),
