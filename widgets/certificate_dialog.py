@@ -356,6 +356,11 @@ class CertificateDialog(QDialog):
         except ValueError:
             when = ""
         try:
+            import os
+
+            # as app/dcc_issue.dcc_schema_dir: the one given, the environment's, the field's
+            schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
+                          or self.dcc_schema.text()).strip()
             found = read_standard_dcc(path, schema_dir or None, measurement_date=when or None,
                                       trusted_cert=trusted_certificate())
         except (DccError, SigningError) as exc:
