@@ -20,6 +20,7 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.dcc.reader import POLYGON_FACE_DEVIATIONS
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
@@ -41,7 +42,7 @@ from models.readings.tabular_import import (
     read_table,
 )
 from models.registry import KINDS
-from models.workbench import ComparesAfterLog, IssuesCertificates, WritesCorrectionTable
+from models.workbench import AcceptsReference, ComparesAfterLog, IssuesCertificates, WritesCorrectionTable
 
 
 def _why(exc: BaseException, words) -> str:
@@ -209,7 +210,8 @@ def run_analyze(argv: list[str]) -> int:
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
         [args.compare_after] if args.compare_after else []) + (
         [args.reference_dcc] if args.reference_dcc else [])
-    if args.reference_dcc and args.kind != "polygon":
+    if args.reference_dcc and not (isinstance(kind, AcceptsReference)
+                                   and kind.accepted_reference == POLYGON_FACE_DEVIATIONS):
         _say(words(QT_TR_NOOP("anglebench analyze: --reference-dcc is for the polygon "
                               "workbench")))
         return EXIT_BAD_INPUT

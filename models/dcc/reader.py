@@ -40,7 +40,7 @@ from models.dcc.vocabulary import (
 from models.messages import QT_TR_NOOP, message, reason_of
 
 __all__ = ["ARCSEC_PER_UNIT", "DccError", "PolygonReference", "StandardCertificate",
-           "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
+           "POLYGON_FACE_DEVIATIONS", "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
            "place_polygon_standard", "polygon_standard", "read_polygon_dcc",
            "read_standard_dcc", "replace_face_deviations"]
 
@@ -557,7 +557,9 @@ def polygon_standard(reference: PolygonReference) -> dict:
 
 
 #: words that name the polygon among a certificate's standards (en, zh)
-_POLYGON_WORDS = ("polygon", "多面棱体", "棱体")
+_POLYGON_WORDS = re.compile(r"polygon|多面棱体|棱体", re.IGNORECASE)
+#: the reference a workbench takes from a polygon's DCC (models.workbench.AcceptsReference)
+POLYGON_FACE_DEVIATIONS = "polygon face deviations"
 
 
 def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
@@ -568,8 +570,7 @@ def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
     out = [dict(s) for s in standards]
     number = standard.get("certificate_no", "")
     for match in (lambda s: number and s.get("certificate_no") == number,
-                  lambda s: any(w in str(s.get("description", "")).lower()
-                                for w in _POLYGON_WORDS)):
+                  lambda s: _POLYGON_WORDS.search(str(s.get("description", ""))) is not None):
         for i, old in enumerate(out):
             if match(old):
                 kept = {k: old[k] for k in ("description", "serial") if old.get(k)}
