@@ -344,38 +344,15 @@ def _check_schema(data: bytes, schema_dir: str | Path | None, source: str) -> No
             problem=problems[0]))
 
 
-_SCHEMAS: dict[str, object] = {}
-_QUDT = "https://www.ptb.de/si/v2.2.1/qudt/quantitykind.xsd"
-
-
 def _schema_problems(data: bytes, folder: Path) -> list[str]:
-    """The schema's objections to ``data`` (element path and reason), read offline from
-    ``folder`` (dcc.xsd with si/ and d-sig/ beside it, the QUDT import mapped to the local
-    file)."""
-    from lxml import etree
+    """The schema's objections to ``data`` (element path and reason), from the schema set in
+    ``folder`` read offline (models/dcc/schema.py, the one the writer validates with)."""
+    from models.dcc.schema import DccSchemaError, validate
 
-    key = str(folder.resolve())
-    schema = _SCHEMAS.get(key)
-    if schema is None:
-        local = folder / "si" / "qudt" / "quantitykind.xsd"
-
-        class _Local(etree.Resolver):
-            def resolve(self, url, pubid, context):
-                return (self.resolve_filename(str(local), context) if url == _QUDT else None)
-
-        parser = etree.XMLParser(no_network=True, resolve_entities=False)
-        parser.resolvers.add(_Local())
-        try:
-            schema = etree.XMLSchema(etree.parse(str(folder / "dcc.xsd"), parser))
-        except (OSError, etree.XMLSchemaParseError, etree.XMLSyntaxError) as exc:
-            raise DccError(message(QT_TR_NOOP(
-                "the DCC schema folder {folder} cannot be loaded ({reason})"),
-                folder=str(folder), reason=str(exc))) from None
-        _SCHEMAS[key] = schema
-    document = etree.fromstring(data, _parser())
-    if schema.validate(document):
-        return []
-    return [f"{error.path}: {error.message}" for error in schema.error_log]
+    try:
+        return validate(data, folder)
+    except DccSchemaError as exc:
+        raise DccError(reason_of(exc)) from None
 
 
 def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str

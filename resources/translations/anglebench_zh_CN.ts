@@ -8832,10 +8832,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{source}：不是有效的 DCC 3.3.0 文档（{problem}）</translation>
     </message>
     <message>
-        <source>the DCC schema folder {folder} cannot be loaded ({reason})</source>
-        <translation>DCC 模式文件夹 {folder} 无法载入（{reason}）</translation>
-    </message>
-    <message>
         <source>{source}: its signature does not verify: {reason}</source>
         <translation>{source}：其签名验证失败：{reason}</translation>
     </message>

@@ -290,6 +290,11 @@ def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
     assert out.read_bytes() == issued and "dcc_sha256" in capsys.readouterr().out
     assert main(["register", "verify"]) == 0
     assert "every stored PDF and DCC matches" in capsys.readouterr().out
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
+    with zipfile.ZipFile(tmp_path / "all.zip") as archive:
+        assert archive.read(f"dcc/{number}.xml") == issued
+        assert not any(n.startswith(f"dcc/{plain}") for n in archive.namelist())
+    capsys.readouterr()
     assert main(["register", "show", plain, "--dcc", str(tmp_path / "none.xml")]) == 2
     assert "issued without a digital calibration certificate" in capsys.readouterr().err
     assert main(["register", "show", number, "--dcc", register_url().split("///", 1)[1]]) == 2

@@ -215,3 +215,9 @@ def test_a_bad_decimal_is_named(word):
         return
     with pytest.raises(DccError, match="entry 2"):
         parse_decimal_list(f"1.0 {word}", "x")
+
+
+def test_a_schema_folder_that_cannot_be_used_is_named(tmp_path):
+    path = write(tmp_path, t.document())
+    with pytest.raises(DccError, match="dcc.xsd is missing"):
+        read_polygon_dcc(path, tmp_path / "no-schemas")
