@@ -221,3 +221,41 @@ def test_a_schema_folder_that_cannot_be_used_is_named(tmp_path):
     path = write(tmp_path, t.document())
     with pytest.raises(DccError, match="dcc.xsd is missing"):
         read_polygon_dcc(path, tmp_path / "no-schemas")
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.integers(3, 72), st.integers(0, 10_000),
+       st.sampled_from([r"\arcsecond", r"\arcminute", r"\degree", r"\radian", r"\micro\radian"]),
+       st.floats(0.01, 2.0), st.sampled_from([1.96, 2.0, 2.5, 3.0]))
+def test_any_polygon_written_in_any_angle_unit_reads_back(faces, seed, unit, u, k):
+    """A polygon of any face count, its deviations written by another lab in any angle
+    unit, reads back face by face in arcseconds with its U and k."""
+    import tempfile
+    from pathlib import Path
+
+    errors = t.polygon_errors(faces, seed=seed, spread_arcsec=1.5)
+    data = t.document(results=t.polygon_results(errors, unit=unit, u_arcsec=u, k=k))
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "p.xml"
+        path.write_bytes(data)
+        ref = read_polygon_dcc(path, faces=faces)
+    assert ref.faces == faces and ref.coverage_factor == k
+    for face, error in enumerate(errors, 1):
+        assert ref.deviations[face] == pytest.approx(error, rel=1e-12, abs=1e-12)
+        assert ref.expanded_uncertainty[face] == pytest.approx(u, rel=1e-12)
+    standard = polygon_standard(ref)
+    assert standard["uncertainty"] * (1.0 if k == 2.0 else k) == pytest.approx(u, rel=1e-12)
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.permutations(range(1, 13)), st.lists(st.sampled_from(["", "0", "9.9", "x"]),
+                                                min_size=12, max_size=12))
+def test_every_face_gets_its_own_deviation_whatever_the_order(tmp_path_factory, order, before):
+    ref = read_polygon_dcc(write(tmp_path_factory.mktemp("p"), t.document()))
+    rows = [[str(face), "0", typed, "0"] for face, typed in zip(order, before, strict=True)]
+    out, differed = replace_face_deviations(rows, 0, 2, ref)
+    for row in out:
+        assert float(row[2]) == pytest.approx(ref.deviations[int(row[0])], abs=5e-7)
+    typed_other = [b == "x" or (b != "" and abs(float(b) - ref.deviations[face]) > 5e-4)
+                   for face, b in zip(order, before, strict=True)]
+    assert differed == any(typed_other)
