@@ -43,6 +43,7 @@ def _details(samples_dir, tmp_path, name, standard=None, **changes):
     return path
 
 
+@pytest.mark.slow
 def test_the_dcc_replaces_the_column_and_its_u_enters_the_budget(samples_dir, tmp_path, capsys):
     errors = t.polygon_errors(24, seed=2, spread_arcsec=0.3)
     dcc = tmp_path / "poly.xml"
