@@ -1479,6 +1479,15 @@
         <translation>无法导出</translation>
     </message>
     <message>
+        <source>; its DCC (validated) written to {path}</source>
+        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <translation>；其数字证书（已校验）已写入 {path}</translation>
+    </message>
+    <message>
+        <source>; its DCC written to {path}, not validated (no DCC schema folder set)</source>
+        <translation>；其数字证书已写入 {path}，未经校验（未设置 DCC 模式文件夹）</translation>
+    </message>
+    <message>
         <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
         <translation>不能出具证书：{progress} 尚未完成。证书要求每个测回、安装位置或测量循环都已完成；请完成它，或删除其各行以对已完成部分出具证书。</translation>
     </message>
@@ -2048,6 +2057,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>允差 ±</translation>
     </message>
     <message>
+        <source>Country (ISO 3166-1, e.g. CN)</source>
+        <translation>国家（ISO 3166-1，如 CN）</translation>
+    </message>
+    <message>
         <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
         <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
@@ -2076,8 +2089,72 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>制造商</translation>
     </message>
     <message>
+        <source>no DCC written: the certificate&apos;s field &apos;{field_name}&apos; is empty and the DCC schema requires it</source>
+        <translation>未写出数字证书：证书字段“{field_name}”为空，而 DCC 模式要求该项</translation>
+    </message>
+    <message>
+        <source>source: {source}</source>
+        <translation>源代码：{source}</translation>
+    </message>
+    <message>
+        <source>no DCC written: the certificate&apos;s field &apos;lab_country&apos; must be the laboratory&apos;s ISO 3166-1 country code (two letters, e.g. CN), not &apos;{value}&apos;</source>
+        <translation>未写出数字证书：证书字段“lab_country”须为实验室所在国家的 ISO 3166-1 代码（两个字母，如 CN），而不是“{value}”</translation>
+    </message>
+    <message>
+        <source>grade: {grade}</source>
+        <translation>等级：{grade}</translation>
+    </message>
+    <message>
         <source>Serial number</source>
         <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>This document is a test report, not a calibration certificate: its results are not stated as traceable to the SI.</source>
+        <translation>本文件为检测报告，不是校准证书：其结果未声明可溯源至国际单位制（SI）。</translation>
+    </message>
+    <message>
+        <source>The results are traceable to the SI through the reference standards listed with their calibration certificates (see measuringEquipments).</source>
+        <translation>通过所列计量标准及其校准证书，结果可溯源至国际单位制（SI）（见 measuringEquipments）。</translation>
+    </message>
+    <message>
+        <source>This document is a calibration certificate.</source>
+        <translation>本文件为校准证书。</translation>
+    </message>
+    <message>
+        <source>The results relate only to the item calibrated, at the time and under the conditions of the calibration. This digital certificate and the PDF embedded in it are one certificate; the embedded PDF is its human-readable form.</source>
+        <translation>结果仅对所校准的对象、在校准的时间和条件下有效。本数字证书与其内嵌的 PDF 为同一份证书；内嵌的 PDF 为其人可读的形式。</translation>
+    </message>
+    <message>
+        <source>no DCC written: the coverage factor of a point of &apos;{column}&apos; is not found in its budget</source>
+        <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
+    </message>
+    <message>
+        <source>no DCC written: the coverage factor of a face deviation is not found in its budget</source>
+        <translation>未写出数字证书：在不确定度预算中找不到某一面偏差的包含因子</translation>
+    </message>
+    <message>
+        <source>Polygon face deviations (from face 1)</source>
+        <translation>多面棱体各面偏差（相对第 1 面）</translation>
+    </message>
+    <message>
+        <source>Face deviation</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty U</source>
+        <translation>扩展不确定度 U</translation>
+    </message>
+    <message>
+        <source>Stated uncertainty ({basis}, per {per})</source>
+        <translation>给定的不确定度（{basis}，每 {per}）</translation>
+    </message>
+    <message>
+        <source>Relative humidity</source>
+        <translation>相对湿度</translation>
+    </message>
+    <message>
+        <source>Certificate {number} (PDF)</source>
+        <translation>证书 {number}（PDF）</translation>
     </message>
     <message>
         <source>Grade / specification</source>
@@ -2682,6 +2759,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>not stated</source>
+        <extracomment>a column&apos;s unit by its name&apos;s ending: D-SI unit a printed unit symbol (a table cell&apos;s ending) → D-SI unit seconds of arc in one of each angle unit (a parameter&apos;s U printed in another unit) PTB&apos;s basic refTypes for a column&apos;s role</extracomment>
         <translation>未注明</translation>
     </message>
     <message>
@@ -2819,7 +2897,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Certificate</source>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
         <translation>证书</translation>
     </message>
     <message>
@@ -2833,6 +2910,26 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>A specimen for training or demonstration: watermarked SPECIMEN, numbered SPECIMEN-…, not a certificate, and recorded in no register</source>
         <translation>用于培训或演示的样本：带“样本”水印，编号为 SPECIMEN-…，不是证书，不记录在任何登记册中</translation>
+    </message>
+    <message>
+        <source>Also write the digital certificate (DCC, XML)</source>
+        <translation>同时写出数字证书（DCC，XML）</translation>
+    </message>
+    <message>
+        <source>Beside the PDF, the same certificate as a PTB Digital Calibration Certificate (DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml</source>
+        <translation>在 PDF 旁写出同一份证书的 PTB 数字校准证书（DCC 3.3.0 XML，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
+    </message>
+    <message>
+        <source>empty: the DCC is not validated</source>
+        <translation>为空：数字证书不经校验</translation>
+    </message>
+    <message>
+        <source>The folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is validated against it and not written when invalid</source>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：每份数字证书都据此校验，不合格则不写出</translation>
+    </message>
+    <message>
+        <source>DCC schema folder</source>
+        <translation>DCC 模式文件夹</translation>
     </message>
     <message>
         <source>Certificates are checked (Checked by / 核验员)</source>
@@ -4292,6 +4389,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>同时写出校准证书</translation>
     </message>
     <message>
+        <source>with --certificate: also write the certificate as a digital calibration certificate (PTB DCC 3.3.0 XML) with the PDF embedded</source>
+        <translation>与 --certificate 一起使用：同时将证书写成数字校准证书（PTB DCC 3.3.0 XML），并内嵌 PDF</translation>
+    </message>
+    <message>
+        <source>the folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): the DCC is validated against it and not written when invalid (else ANGLEBENCH_DCC_SCHEMA)</source>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：数字证书据此校验，不合格则不写出（否则使用 ANGLEBENCH_DCC_SCHEMA）</translation>
+    </message>
+    <message>
         <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
         <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
     </message>
@@ -4340,6 +4445,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
     </message>
     <message>
+        <source>anglebench analyze: --dcc needs --certificate (the DCC embeds the PDF certificate)</source>
+        <translation>anglebench analyze：--dcc 需要 --certificate（数字证书内嵌 PDF 证书）</translation>
+    </message>
+    <message>
         <source> (and {n} more bad cell(s))</source>
         <translation>（另有 {n} 个无法读取的单元格）</translation>
     </message>
@@ -4368,6 +4477,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
     </message>
     <message>
+        <source>DCC of {number} written to {path}</source>
+        <translation>{number} 的数字证书已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or ANGLEBENCH_DCC_SCHEMA)</source>
+        <translation>{path}：数字证书未经校验（未给出模式文件夹：--dcc-schema DIR 或 ANGLEBENCH_DCC_SCHEMA）</translation>
+    </message>
+    <message>
         <source>SPECIMEN {number} written to {path}: these are the bundled example details (&quot;example&quot;: true); it is watermarked SPECIMEN, is not a certificate and was recorded in no register</source>
         <translation>样本 {number} 已写入 {path}：这些是随附的示例信息（&quot;example&quot;: true）；它带有“样本”水印，不是证书，未记入任何登记册</translation>
     </message>
@@ -4386,6 +4503,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
         <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {reason}; neither the certificate nor its DCC was written</source>
+        <translation>anglebench analyze：{reason}；证书及其数字证书均未写出</translation>
     </message>
     <message>
         <source>anglebench analyze: cannot write: {reason}</source>
@@ -8545,6 +8666,19 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>tolerance ±T</source>
         <translation>允差 ±T</translation>
+    </message>
+    <message>
+        <source>the DCC fails the schema in {folder} and was not issued: {problems}</source>
+        <extracomment>the environment&apos;s schema folder (beside the setting ``dcc_schema_dir`` and --dcc-schema)</extracomment>
+        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
+    </message>
+    <message>
+        <source>DCC schema folder {folder}: {file} is missing (PTB&apos;s DCC 3.3.0 schema set is needed: dcc.xsd, si/SI_Format.xsd, si/qudt/quantitykind.xsd, d-sig/xmldsig-core-schema.xsd)</source>
+        <translation>DCC 模式文件夹 {folder}：缺少 {file}（需要 PTB 的 DCC 3.3.0 模式文件：dcc.xsd、si/SI_Format.xsd、si/qudt/quantitykind.xsd、d-sig/xmldsig-core-schema.xsd）</translation>
+    </message>
+    <message>
+        <source>DCC schema folder {folder}: not a usable schema set ({reason})</source>
+        <translation>DCC 模式文件夹 {folder}：不是可用的模式文件（{reason}）</translation>
     </message>
 </context>
 </TS>
