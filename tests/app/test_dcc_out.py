@@ -379,3 +379,23 @@ def test_each_samples_dcc_matches_its_reviewed_golden_file(issued, case):
         diff = "".join(list(difflib.unified_diff(expected.splitlines(True), got.splitlines(True),
                                                  "golden", "now"))[:60])
         pytest.fail(f"{case}: the DCC differs from its golden file:\n{diff}")
+
+
+def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_intervals(issued):
+    tree = etree.fromstring(issued["theodolite"][3].read_bytes())
+    psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
+               if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
+    # printed: 5.82625° with U 6.3" at k = 2.07 (the parameters' own k, not the curve's)
+    assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.82625
+    assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
+    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.3 / 3600)
+    assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
+    tree = etree.fromstring(issued["positioning"][3].read_bytes())
+    a = next(lst for lst in tree.iterfind(".//dcc:list[@refType='anglebench_summaryFigure']", NS)
+             if lst.findtext("dcc:name/dcc:content", namespaces=NS).startswith("A: "))
+    figures = {q.findtext("dcc:name/dcc:content", namespaces=NS):
+               float(q.findtext("si:real/si:value", namespaces=NS))
+               for q in a.iterfind("dcc:quantity", NS)}
+    # printed: A = 22.447", interval 17.89" … 23.60" at 95.00 %
+    assert figures == {"value": 22.447, "intervalMin": 17.89, "intervalMax": 23.6,
+                       "coverageProbability": 0.95}
