@@ -633,6 +633,11 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     certificate lacks."""
     software = software or software_identity()
     meta = document.metadata
+    if document.is_draft:  # a DRAFT is no certificate: its DCC would read as one
+        raise DccError(message(QT_TR_NOOP(
+            "no DCC written: the certificate is a DRAFT ({missing} missing); a digital "
+            "certificate is made only of a complete one"), missing=", ".join(
+                _say(m, "en") for m in meta.missing_fields())))
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)

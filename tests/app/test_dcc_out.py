@@ -341,6 +341,16 @@ def test_dcc_needs_a_certificate_and_spares_the_inputs(tmp_path, capsys, samples
     assert code != 0 and not (tmp_path / "x.pdf").exists()
 
 
+def test_a_draft_gets_no_dcc_and_is_told_why(tmp_path, capsys, samples_dir):
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+    del details["example"], details["approver"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code != 0 and "DRAFT (approver missing)" in said
+    assert not xml.exists() and not pdf.exists()
+
+
 # -- golden files: each sample's reviewed DCC ------------------------------------------------
 _MASKS = [
     (re.compile(r"<dcc:dataBase64>[^<]*</dcc:dataBase64>"), "<dcc:dataBase64>PDF</dcc:dataBase64>"),
