@@ -39,6 +39,8 @@ KEPT = {
     "INI", "zero", "Qt", "PySide", "pyqtgraph", "numpy", "scipy", "log", "Fig", "Figs",
     "SINUMERIK", "FANUC", "HEIDENHAIN", "TNC", "COM", "CMA", "Beckhoff", "TwinCAT", "ISG", "Mach",
     "ADC", "LSB",
+    # the digital calibration certificate's format, named as PDF and CSV are (#43)
+    "DCC", "XML", "xml",
     # CMC: as CNAS writes it; SPECIMEN-…: the specimens' numbers; IANA and its zone names
     "CMC", "SPECIMEN", "IANA", "Asia", "Shanghai",
 }
