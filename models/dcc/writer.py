@@ -324,29 +324,59 @@ def _parse(cell: str) -> tuple[float, str] | None:
     return (float(m.group(1)), unit) if unit is not None else None
 
 
+def _interval(b: _Builder, parent, name: Any, value: float, unit: str, low: float, high: float,
+              p: float, ref: str, translated: bool = True) -> None:
+    """A figure with its coverage interval (asymmetric, or from a simulation: no standard
+    uncertainty to state) as a dcc:list: the value, the interval's ends, the probability."""
+    lst = etree.SubElement(parent, D + "list", refType=b.ref(
+        ref, "a figure with its coverage interval: value, intervalMin, intervalMax, p"))
+    b.text(lst, "name", name, translated)
+    for part, figure, part_unit in (("value", value, unit), ("intervalMin", low, unit),
+                                    ("intervalMax", high, unit),
+                                    ("coverageProbability", p, r"\one")):
+        q = etree.SubElement(lst, D + "quantity", refType=b.ref(
+            f"anglebench_{part}", f"of a figure with its coverage interval: {part}"))
+        b.text(q, "name", part, translated=False)
+        b.real(q, figure, part_unit)
+
+
+_K_IN_HEADER = re.compile(r"k\s*=\s*(\d+(?:\.\d+)?)")
+_INTERVAL = re.compile(r"^(.+?)\s*…\s*(.+)$")
+_PERCENT = re.compile(r"^(\d+(?:\.\d+)?)\s*%$")
+
+
 def _table_result(b: _Builder, results, table: Table, ref: str, description: str,
-                  row_ref: str, row_description: str, k: float, p: float) -> None:
-    """A table of (label, value, U or note …) rows as one result: each row a quantity — a
-    si:real with its U where the row prints one in a unit the value converts to, the row's
-    text otherwise."""
+                  row_ref: str, row_description: str, p: float) -> None:
+    """A table of (label, value, U or interval or note …) rows as one result, each row as
+    printed: a figure with its U (the k the table's header prints) as si:real with
+    expandedMU, converted to the figure's unit; a figure with its coverage interval and
+    probability as a list; a figure alone as si:real; any other row as its text."""
     if not table.rows:
         return
     res = etree.SubElement(results, D + "result", refType=b.ref(ref, description))
     b.text(res, "name", table.title)
     data = etree.SubElement(res, D + "data")
+    header_k = _K_IN_HEADER.search(_say(table.header[2], "en")) if len(table.header) > 2 else None
     for row in table.rows:
         label, value = row[0], row[1] if len(row) > 1 else ""
         rest = [c for c in row[2:] if c]
-        q = etree.SubElement(data, D + "quantity", refType=b.ref(row_ref, row_description))
-        b.text(q, "name", label)
         figure = _parse(value) if "\n" not in value else None
-        u = _parse(rest[0]) if rest and ref == v.REFTYPE_SETUP_PARAMETERS else None
+        u = _parse(rest[0]) if rest and header_k else None
         if figure and u and u[1] != figure[1] and u[1] in _ARCSEC and figure[1] in _ARCSEC:
             u = (u[0] * _ARCSEC[u[1]] / _ARCSEC[figure[1]], figure[1])
+        span = _INTERVAL.match(rest[0].replace("−", "-")) if rest else None
+        ends = (_parse(span.group(1)), _parse(span.group(2))) if span else (None, None)
+        share = _PERCENT.match(rest[1].strip()) if len(rest) > 1 else None
+        if figure and ends[0] and ends[1] and share and ends[0][1] == ends[1][1] == figure[1]:
+            _interval(b, data, label, figure[0], figure[1], ends[0][0], ends[1][0],
+                      float(share.group(1)) / 100.0, row_ref)
+            continue
+        q = etree.SubElement(data, D + "quantity", refType=b.ref(row_ref, row_description))
+        b.text(q, "name", label)
         if figure and u and u[1] == figure[1]:
             if rest[1:]:
                 b.rich(q, "description", " · ".join(rest[1:]), translated=False)
-            b.real(q, figure[0], figure[1], u[0], k, p)
+            b.real(q, figure[0], figure[1], u[0], float(header_k.group(1)), p)
         elif figure and not rest:
             b.real(q, figure[0], figure[1])
         else:
@@ -458,6 +488,8 @@ def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str]
 
 
 def _decided(b: _Builder, results, p: float) -> None:
+    """The decided quantity: its value and coverage interval (from the simulation, or ± U),
+    with the statement made on it."""
     c = b.document.conformity
     if not math.isfinite(c.value):
         return
@@ -466,25 +498,18 @@ def _decided(b: _Builder, results, p: float) -> None:
     b.text(res, "name", QT_TR_NOOP("Decided quantity"))
     if c.quantity:
         b.rich(res, "description", c.quantity)
-    q = etree.SubElement(etree.SubElement(res, D + "data"), D + "quantity",
-                         refType=b.ref("anglebench_decidedQuantity", ""))
-    b.text(q, "name", QT_TR_NOOP("Decided quantity"))
+    data = etree.SubElement(res, D + "data")
     unit = _SYMBOLS.get({"arcsec": '"', "urad": "µrad", "nm": "nm", "um": "µm", "mdeg": "mdeg"}
                         .get(c.unit, c.unit), r"\one")
-    r = etree.SubElement(q, S + "real")
-    b.leaf(r, "value", _figure(c.value), S)
-    b.leaf(r, "unit", unit, S)
     low, high = c.interval_low, c.interval_high
     if math.isfinite(low) and math.isfinite(high):
-        mu = etree.SubElement(etree.SubElement(r, S + "measurementUncertaintyUnivariate"),
-                              S + "coverageIntervalMU")
-        # the standard uncertainty of a Monte Carlo interval: half its width over k
-        k = b.document.budget.coverage_factor or 2.0
-        b.leaf(mu, "valueStandardMU", _figure((high - low) / 2.0 / k), S)
-        b.leaf(mu, "intervalMin", _figure(low), S)
-        b.leaf(mu, "intervalMax", _figure(high), S)
-        b.leaf(mu, "coverageProbability", _figure(c.probability if math.isfinite(c.probability)
-                                                  else p), S)
+        _interval(b, data, QT_TR_NOOP("Decided quantity"), c.value, unit, low, high,
+                  c.probability if math.isfinite(c.probability) else p,
+                  "anglebench_decidedQuantity")
+    else:
+        q = etree.SubElement(data, D + "quantity", refType="anglebench_decidedQuantity")
+        b.text(q, "name", QT_TR_NOOP("Decided quantity"))
+        b.real(q, c.value, unit)
 
 
 def _budget(b: _Builder, results, unit: str) -> None:
@@ -583,14 +608,12 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
     _curves(b, results, pairs, budgets, p)
     if face_column:
         _face_deviations(b, results, face_column, pairs, budgets, p)
-    budget = doc.budget
-    k = float(budget.coverage_factor) if budget.points else 2.0
     _table_result(b, results, doc.parameters, v.REFTYPE_SETUP_PARAMETERS,
                   "the certificate's parameters table: the identified set-up parameters with U",
-                  "anglebench_setupParameter", "one row of the parameters table", k, p)
+                  "anglebench_setupParameter", "one row of the parameters table", p)
     _table_result(b, results, doc.statistics, v.REFTYPE_SUMMARY,
                   "the certificate's statistics table: the summary figures",
-                  "anglebench_summaryFigure", "one row of the statistics table", k, p)
+                  "anglebench_summaryFigure", "one row of the statistics table", p)
     _decided(b, results, p)
     unit = _SYMBOLS.get(doc.unit.strip(), r"\arcsecond")
     _budget(b, results, unit)
@@ -610,6 +633,11 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     certificate lacks."""
     software = software or software_identity()
     meta = document.metadata
+    if document.is_draft:  # a DRAFT is no certificate: its DCC would read as one
+        raise DccError(message(QT_TR_NOOP(
+            "no DCC written: the certificate is a DRAFT ({missing} missing); a digital "
+            "certificate is made only of a complete one"), missing=", ".join(
+                _say(m, "en") for m in meta.missing_fields())))
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)

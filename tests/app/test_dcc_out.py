@@ -341,12 +341,21 @@ def test_dcc_needs_a_certificate_and_spares_the_inputs(tmp_path, capsys, samples
     assert code != 0 and not (tmp_path / "x.pdf").exists()
 
 
+def test_a_draft_gets_no_dcc_and_is_told_why(tmp_path, capsys, samples_dir):
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+    del details["example"], details["approver"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code != 0 and "DRAFT (approver missing)" in said
+    assert not xml.exists() and not pdf.exists()
+
+
 # -- golden files: each sample's reviewed DCC ------------------------------------------------
 _MASKS = [
     (re.compile(r"<dcc:dataBase64>[^<]*</dcc:dataBase64>"), "<dcc:dataBase64>PDF</dcc:dataBase64>"),
     (re.compile(r"<dcc:release>\d+\.\d+[^<]*\)</dcc:release>"), "<dcc:release>VERSION</dcc:release>"),
-    (re.compile(r"source: (commit [0-9a-f]{40}( \+ local changes)?|source sha256 [0-9a-f]+)"),
-     "source: SOURCE"),
+    (re.compile(r"commit [0-9a-f]{40}( \+ local changes)?|source sha256 [0-9a-f]+"), "SOURCE"),
     (re.compile(r"<dcc:(beginPerformanceDate|endPerformanceDate|issueDate)>[^<]*<"),
      r"<dcc:\1>DATE<"),
     (re.compile(r"SPECIMEN-[0-9A-F]{8}"), "SPECIMEN-NUMBER"),
@@ -380,3 +389,23 @@ def test_each_samples_dcc_matches_its_reviewed_golden_file(issued, case):
         diff = "".join(list(difflib.unified_diff(expected.splitlines(True), got.splitlines(True),
                                                  "golden", "now"))[:60])
         pytest.fail(f"{case}: the DCC differs from its golden file:\n{diff}")
+
+
+def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_intervals(issued):
+    tree = etree.fromstring(issued["theodolite"][3].read_bytes())
+    psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
+               if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
+    # printed: 5.82625° with U 6.3" at k = 2.07 (the parameters' own k, not the curve's)
+    assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.82625
+    assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
+    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.3 / 3600)
+    assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
+    tree = etree.fromstring(issued["positioning"][3].read_bytes())
+    a = next(lst for lst in tree.iterfind(".//dcc:list[@refType='anglebench_summaryFigure']", NS)
+             if lst.findtext("dcc:name/dcc:content", namespaces=NS).startswith("A: "))
+    figures = {q.findtext("dcc:name/dcc:content", namespaces=NS):
+               float(q.findtext("si:real/si:value", namespaces=NS))
+               for q in a.iterfind("dcc:quantity", NS)}
+    # printed: A = 22.447", interval 17.89" … 23.60" at 95.00 %
+    assert figures == {"value": 22.447, "intervalMin": 17.89, "intervalMax": 23.6,
+                       "coverageProbability": 0.95}
