@@ -1481,11 +1481,11 @@
     <message>
         <source>; its DCC (validated) written to {path}</source>
         <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>；其数字证书（已校验）已写入 {path}</translation>
     </message>
     <message>
         <source>; its DCC written to {path}, not validated (no DCC schema folder set)</source>
-        <translation type="unfinished">；其数字证书（已校验）已写入 {path}</translation>
+        <translation>；其数字证书已写入 {path}，未经校验（未设置 DCC 模式文件夹）</translation>
     </message>
     <message>
         <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
@@ -2058,7 +2058,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Country (ISO 3166-1, e.g. CN)</source>
-        <translation type="unfinished"></translation>
+        <translation>国家（ISO 3166-1，如 CN）</translation>
     </message>
     <message>
         <source>Due date (YYYY-MM-DD)</source>
@@ -2094,19 +2094,19 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>no DCC written: the certificate&apos;s field &apos;{field_name}&apos; is empty and the DCC schema requires it</source>
-        <translation type="unfinished"></translation>
+        <translation>未写出数字证书：证书字段“{field_name}”为空，而 DCC 模式要求该项</translation>
     </message>
     <message>
         <source>source: {source}</source>
-        <translation type="unfinished">源代码：{source}</translation>
+        <translation>源代码：{source}</translation>
     </message>
     <message>
         <source>no DCC written: the certificate&apos;s field &apos;lab_country&apos; must be the laboratory&apos;s ISO 3166-1 country code (two letters, e.g. CN), not &apos;{value}&apos;</source>
-        <translation type="unfinished">未写出数字证书：证书字段“lab_country”须为实验室所在国家的 ISO 3166-1 代码（两个字母，如 CN），而不是“{value}”</translation>
+        <translation>未写出数字证书：证书字段“lab_country”须为实验室所在国家的 ISO 3166-1 代码（两个字母，如 CN），而不是“{value}”</translation>
     </message>
     <message>
         <source>grade: {grade}</source>
-        <translation type="unfinished">未写出数字证书：证书字段“{field_name}”为空，而 DCC 模式要求该项</translation>
+        <translation>等级：{grade}</translation>
     </message>
     <message>
         <source>Serial number</source>
@@ -2114,51 +2114,51 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>This document is a test report, not a calibration certificate: its results are not stated as traceable to the SI.</source>
-        <translation type="unfinished"></translation>
+        <translation>本文件为检测报告，不是校准证书：其结果未声明可溯源至国际单位制（SI）。</translation>
     </message>
     <message>
         <source>The results are traceable to the SI through the reference standards listed with their calibration certificates (see measuringEquipments).</source>
-        <translation type="unfinished">通过所列计量标准及其校准证书，结果可溯源至国际单位制（SI）（见 measuringEquipments）。</translation>
+        <translation>通过所列计量标准及其校准证书，结果可溯源至国际单位制（SI）（见 measuringEquipments）。</translation>
     </message>
     <message>
         <source>This document is a calibration certificate.</source>
-        <translation type="unfinished">本文件为校准证书。</translation>
+        <translation>本文件为校准证书。</translation>
     </message>
     <message>
         <source>The results relate only to the item calibrated, at the time and under the conditions of the calibration. This digital certificate and the PDF embedded in it are one certificate; the embedded PDF is its human-readable form.</source>
-        <translation type="unfinished">结果仅对所校准的对象、在校准的时间和条件下有效。本数字证书与其内嵌的 PDF 为同一份证书；内嵌的 PDF 为其人可读的形式。</translation>
+        <translation>结果仅对所校准的对象、在校准的时间和条件下有效。本数字证书与其内嵌的 PDF 为同一份证书；内嵌的 PDF 为其人可读的形式。</translation>
     </message>
     <message>
         <source>no DCC written: the coverage factor of a point of &apos;{column}&apos; is not found in its budget</source>
-        <translation type="unfinished">未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
+        <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
     </message>
     <message>
         <source>no DCC written: the coverage factor of a face deviation is not found in its budget</source>
-        <translation type="unfinished">未写出数字证书：在不确定度预算中找不到某一面偏差的包含因子</translation>
+        <translation>未写出数字证书：在不确定度预算中找不到某一面偏差的包含因子</translation>
     </message>
     <message>
         <source>Polygon face deviations (from face 1)</source>
-        <translation type="unfinished">多面棱体各面偏差（相对第 1 面）</translation>
+        <translation>多面棱体各面偏差（相对第 1 面）</translation>
     </message>
     <message>
         <source>Face deviation</source>
-        <translation type="unfinished">面偏差</translation>
+        <translation>面偏差</translation>
     </message>
     <message>
         <source>Expanded uncertainty U</source>
-        <translation type="unfinished">扩展不确定度 U</translation>
+        <translation>扩展不确定度 U</translation>
     </message>
     <message>
         <source>Stated uncertainty ({basis}, per {per})</source>
-        <translation type="unfinished">给定的不确定度（{basis}，每 {per}）</translation>
+        <translation>给定的不确定度（{basis}，每 {per}）</translation>
     </message>
     <message>
         <source>Relative humidity</source>
-        <translation type="unfinished">相对湿度</translation>
+        <translation>相对湿度</translation>
     </message>
     <message>
         <source>Certificate {number} (PDF)</source>
-        <translation type="unfinished">本文件为检测报告，不是校准证书：其结果未声明可溯源至国际单位制（SI）。</translation>
+        <translation>证书 {number}（PDF）</translation>
     </message>
     <message>
         <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
@@ -2934,23 +2934,23 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Also write the digital certificate (DCC, XML)</source>
-        <translation type="unfinished"></translation>
+        <translation>同时写出数字证书（DCC，XML）</translation>
     </message>
     <message>
         <source>Beside the PDF, the same certificate as a PTB Digital Calibration Certificate (DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml</source>
-        <translation type="unfinished">在 PDF 旁写出同一份证书的 PTB 数字校准证书（DCC 3.3.0 XML，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
+        <translation>在 PDF 旁写出同一份证书的 PTB 数字校准证书（DCC 3.3.0 XML，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
     </message>
     <message>
         <source>empty: the DCC is not validated</source>
-        <translation type="unfinished">为空：数字证书不经校验</translation>
+        <translation>为空：数字证书不经校验</translation>
     </message>
     <message>
         <source>The folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is validated against it and not written when invalid</source>
-        <translation type="unfinished">PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：每份数字证书都据此校验，不合格则不写出</translation>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：每份数字证书都据此校验，不合格则不写出</translation>
     </message>
     <message>
         <source>DCC schema folder</source>
-        <translation type="unfinished">同时写出数字证书（DCC，XML）</translation>
+        <translation>DCC 模式文件夹</translation>
     </message>
     <message>
         <source>Certificates are checked (Checked by / 核验员)</source>
@@ -4427,7 +4427,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>with --certificate: also write the certificate as a digital calibration certificate (PTB DCC 3.3.0 XML) with the PDF embedded</source>
-        <translation type="unfinished"></translation>
+        <translation>与 --certificate 一起使用：同时将证书写成数字校准证书（PTB DCC 3.3.0 XML），并内嵌 PDF</translation>
     </message>
     <message>
         <source>polygon: the polygon&apos;s digital calibration certificate (DCC): its face deviations replace the readings&apos; deviation column and its U enters the budget</source>
@@ -4435,7 +4435,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>the folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): the DCC is validated against it and not written when invalid (else ANGLEBENCH_DCC_SCHEMA)</source>
-        <translation type="unfinished">与 --certificate 一起使用：同时将证书写成数字校准证书（PTB DCC 3.3.0 XML），并内嵌 PDF</translation>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：数字证书据此校验，不合格则不写出（否则使用 ANGLEBENCH_DCC_SCHEMA）</translation>
     </message>
     <message>
         <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
@@ -4491,7 +4491,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>anglebench analyze: --dcc needs --certificate (the DCC embeds the PDF certificate)</source>
-        <translation type="unfinished">anglebench analyze：--dcc 需要 --certificate（数字证书内嵌 PDF 证书）</translation>
+        <translation>anglebench analyze：--dcc 需要 --certificate（数字证书内嵌 PDF 证书）</translation>
     </message>
     <message>
         <source> (and {n} more bad cell(s))</source>
@@ -4527,11 +4527,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>DCC of {number} written to {path}</source>
-        <translation type="unfinished"></translation>
+        <translation>{number} 的数字证书已写入 {path}</translation>
     </message>
     <message>
         <source>{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or ANGLEBENCH_DCC_SCHEMA)</source>
-        <translation type="unfinished">{number} 的数字证书已写入 {path}</translation>
+        <translation>{path}：数字证书未经校验（未给出模式文件夹：--dcc-schema DIR 或 ANGLEBENCH_DCC_SCHEMA）</translation>
     </message>
     <message>
         <source>SPECIMEN {number} written to {path}: these are the bundled example details (&quot;example&quot;: true); it is watermarked SPECIMEN, is not a certificate and was recorded in no register</source>
@@ -4555,7 +4555,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>anglebench analyze: {reason}; neither the certificate nor its DCC was written</source>
-        <translation type="unfinished">anglebench analyze：{reason}；证书及其数字证书均未写出</translation>
+        <translation>anglebench analyze：{reason}；证书及其数字证书均未写出</translation>
     </message>
     <message>
         <source>anglebench analyze: cannot write: {reason}</source>
@@ -8760,7 +8760,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>the DCC fails the schema in {folder} and was not issued: {problems}</source>
         <extracomment>the environment&apos;s schema folder (beside the setting ``dcc_schema_dir`` and --dcc-schema)</extracomment>
-        <translation type="unfinished"></translation>
+        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
     </message>
     <message>
         <source>the deviation column held other values: they were replaced by those of certificate {id} ({path})</source>
@@ -8914,11 +8914,11 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>DCC schema folder {folder}: {file} is missing (PTB&apos;s DCC 3.3.0 schema set is needed: dcc.xsd, si/SI_Format.xsd, si/qudt/quantitykind.xsd, d-sig/xmldsig-core-schema.xsd)</source>
-        <translation type="unfinished">DCC 模式文件夹 {folder}：缺少 {file}（需要 PTB 的 DCC 3.3.0 模式文件：dcc.xsd、si/SI_Format.xsd、si/qudt/quantitykind.xsd、d-sig/xmldsig-core-schema.xsd）</translation>
+        <translation>DCC 模式文件夹 {folder}：缺少 {file}（需要 PTB 的 DCC 3.3.0 模式文件：dcc.xsd、si/SI_Format.xsd、si/qudt/quantitykind.xsd、d-sig/xmldsig-core-schema.xsd）</translation>
     </message>
     <message>
         <source>DCC schema folder {folder}: not a usable schema set ({reason})</source>
-        <translation type="unfinished">DCC 模式文件夹 {folder}：不是可用的模式文件（{reason}）</translation>
+        <translation>DCC 模式文件夹 {folder}：不是可用的模式文件（{reason}）</translation>
     </message>
     <message>
         <source>the DCC signing {what} {path} cannot be read ({reason})</source>
