@@ -3,8 +3,9 @@
     anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
                                                to extract), its chain value and the head before it
-    anglebench register verify [FILE.pdf]      the hash chain, every stored PDF and DCC; is this PDF,
-                                               byte for byte, one we issued? --head VALUE (or
+    anglebench register verify [FILE.pdf|.xml] the hash chain, every stored PDF and DCC; is this
+                                               PDF (or DCC), byte for byte, one we issued?
+                                               --head VALUE (or
                                                --head-from CERT.pdf): does the register still
                                                hold the history up to that head?
     anglebench register head                   the chain's head now, for the lab's log
@@ -81,7 +82,9 @@ def _parser(words) -> argparse.ArgumentParser:
     verify = sub.add_parser("verify", help=words(QT_TR_NOOP(
         "is this PDF, byte for byte, one the register issued?")))
     verify.add_argument("pdf", nargs="?", default="", help=words(QT_TR_NOOP(
-        "the PDF to check (without it: the register's hash chain and stored PDFs only)")))
+        "the PDF to check (without it: the register's hash chain and stored PDFs only); a "
+        ".xml file is checked as a digital calibration certificate (DCC) the register "
+        "issued")))
     verify.add_argument("--head", default="", metavar="VALUE", help=words(QT_TR_NOOP(
         "a chain head noted earlier (12 to 64 hex digits): the register must still hold the "
         "history up to it")))
@@ -230,7 +233,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if not path:
         return 1 if failed else 0
     data = _read(path)
-    found = register.verify_all(data)
+    is_dcc = path.lower().endswith(".xml")  # a digital calibration certificate received
+    found = register.verify_dcc(data) if is_dcc else register.verify_all(data)
     if len(found) > 1:
         out(message(QT_TR_NOOP(
             "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, "
@@ -240,6 +244,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     record = found[0] if found else None
     if record is None:
         out(message(QT_TR_NOOP(
+            "{path}: NOT in the register (no issued DCC has its SHA-256: altered, or from "
+            "another register)") if is_dcc else QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
             "draft, or from another register)"), path=path))
         return 1
@@ -254,7 +260,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if record.status == "withdrawn":
         out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
                     path=path, number=record.number, reason=record.withdrawn_reason or "—"))
-    printed = head_in_pdf(data)
+    printed = "" if is_dcc else head_in_pdf(data)
     if printed and printed != register.chain_before(record.number):
         out(message(QT_TR_NOOP(
             "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "

@@ -1034,6 +1034,16 @@ class Register:
                 certificates.c.pdf_sha256 == digest).order_by(certificates.c.id)).scalars().all()
             return [self._get(conn, number) for number in numbers]
 
+    def verify_dcc(self, dcc: bytes) -> list[CertificateRecord]:
+        """Every record whose digital calibration certificate is byte for byte this one (by
+        SHA-256)."""
+        certificates = self._schema.CERTIFICATES
+        digest = hashlib.sha256(dcc).hexdigest()
+        with self._read() as conn:
+            numbers = conn.execute(self._sa.select(certificates.c.number).where(
+                certificates.c.dcc_sha256 == digest).order_by(certificates.c.id)).scalars().all()
+            return [self._get(conn, number) for number in numbers]
+
     def verify(self, pdf: bytes) -> CertificateRecord | None:
         """The record whose PDF is byte for byte this one (by SHA-256), or None; the first
         when several are (see :meth:`verify_all`)."""

@@ -2426,6 +2426,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
     </message>
     <message>
+        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only); a .xml file is checked as a digital calibration certificate (DCC) the register issued</source>
+        <translation>要核验的 PDF（不给出时：只检查登记册的哈希链和所存 PDF）；.xml 文件按登记册签发的数字校准证书（DCC）核验</translation>
+    </message>
+    <message>
         <source>a chain head noted earlier (12 to 64 hex digits): the register must still hold the history up to it</source>
         <translation>此前记下的链头（12 至 64 位十六进制数字）：登记册必须仍保有截至该链头的历史</translation>
     </message>
@@ -2548,6 +2552,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, so all but one were copied into the register after issue</source>
         <translation>{path}：其 SHA-256 出现在 {n} 条记录中（{numbers}）：一份证书只签发一次，因此除一条外都是签发后被复制进登记册的</translation>
+    </message>
+    <message>
+        <source>{path}: NOT in the register (no issued DCC has its SHA-256: altered, or from another register)</source>
+        <translation>{path}：不在登记册中（没有已签发的 DCC 具有此 SHA-256：已被改动，或来自另一登记册）</translation>
     </message>
     <message>
         <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
@@ -6278,10 +6286,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the customer&apos;s site where it was calibrated</source>
         <translation>校准所在的委托方现场</translation>
-    </message>
-    <message>
-        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only)</source>
-        <translation>要核验的 PDF（不给出时：只核验登记册的哈希链和所存 PDF）</translation>
     </message>
     <message>
         <source>CHANGED AFTER ISSUE: {problem}</source>

@@ -290,6 +290,13 @@ def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
     assert out.read_bytes() == issued and "dcc_sha256" in capsys.readouterr().out
     assert main(["register", "verify"]) == 0
     assert "every stored PDF and DCC matches" in capsys.readouterr().out
+    received = tmp_path / "received.xml"
+    received.write_bytes(issued)
+    assert main(["register", "verify", str(received)]) == 0
+    assert f"certificate {number}, issued" in capsys.readouterr().out
+    received.write_bytes(issued.replace(b"</dcc:uniqueIdentifier>", b"X</dcc:uniqueIdentifier>"))
+    assert main(["register", "verify", str(received)]) == 1
+    assert "NOT in the register (no issued DCC has its SHA-256" in capsys.readouterr().out
     assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
     with zipfile.ZipFile(tmp_path / "all.zip") as archive:
         assert archive.read(f"dcc/{number}.xml") == issued
