@@ -43,10 +43,12 @@ class CertificateDialogs:
                                    timezone=self.window.certificates.lab_timezone())
         dialog.lab_defaults_saved.connect(self.window.certificates.save_lab_defaults)
         dialog.lab_timezone_set.connect(self.window.certificates.set_lab_timezone)
+        dialog.set_dcc_options(*self.window.certificates.dcc_options())
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return None
+        self.window.certificates.set_dcc_options(*dialog.dcc_options())
         return dialog.metadata()
 
     def confirm_draft(self, missing: list[str]) -> bool:

@@ -8,7 +8,7 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
@@ -87,10 +87,19 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
     return edited_after_capture(sessions or [], rows, columns, values, cache)
 
 
+def sign_if_configured(xml: bytes) -> bytes:
+    """The DCC signed with the lab's key and certificate when configured (the environment:
+    models/dcc/signature.py), unchanged otherwise."""
+    from models.dcc.signature import sign_if_configured as sign
+
+    return sign(xml)
+
+
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
-                      replacement: bool = False, raw_capture: list | None = None
+                      replacement: bool = False, raw_capture: list | None = None,
+                      dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = ""
                       ) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
@@ -100,7 +109,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     the readings (models/capture/raw_record.py), recorded with them in the project state
     (so in the register's hash chain); their SHA-256 is printed on the certificate, and so is
     every captured reading edited in the sheet since ("reading of row 3 edited after capture:
-    21.56 → 26.56")."""
+    21.56 → 26.56"). ``dcc(document, pdf)``: the digital certificate of the PDF rendered
+    (app/dcc_issue.render_dcc), made with it — so with its number — before anything is
+    recorded (a DCC refused as invalid issues nothing) and written to ``dcc_path`` after
+    the PDF."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}},
                       {kind.key: raw_capture} if raw_capture else {})
@@ -110,18 +122,35 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
+    made: dict[str, bytes] = {}
+
     def render(final: CertificateMetadata, head: str = "") -> bytes:
-        document = kind.certificate_document(result, final, source_name, settings)
-        return certificate_pdf_bytes(dataclasses.replace(document, raw_data_sha256=digest,
-                                                         edited_readings=edited,
-                                                         register_head=head))
+        document = dataclasses.replace(
+            kind.certificate_document(result, final, source_name, settings),
+            raw_data_sha256=digest, edited_readings=edited, register_head=head)
+        pdf = certificate_pdf_bytes(document)
+        if dcc is not None:  # the register may render again: the last one is recorded
+            # signed when the lab's key and certificate are configured (models/dcc/signature)
+            made["dcc"] = sign_if_configured(dcc(document, pdf))
+        return pdf
 
     # before a number is used: an output onto the register (or a database) is refused
     check_output(path, register_files(register.url))
+    if dcc_path:
+        check_output(dcc_path, register_files(register.url), "--dcc")
+    # the register stores the DCC made with the PDF of the same attempt (same number, the
+    # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
-                                 change_note=change_note, replacement=replacement)
+                                 change_note=change_note, replacement=replacement,
+                                 render_dcc=(lambda _final, _pdf: made["dcc"])
+                                 if dcc is not None else None)
     try:
         write_bytes_atomic(path, pdf)
     except OSError as exc:
         raise IssuedNotWritten(record, path, exc) from exc
+    if dcc is not None and dcc_path:
+        try:
+            write_bytes_atomic(dcc_path, made["dcc"])
+        except OSError as exc:
+            raise IssuedNotWritten(record, dcc_path, exc) from exc
     return record

@@ -14,6 +14,7 @@ import dataclasses
 import json
 from collections.abc import Callable, MutableMapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Protocol
 
 from app.writers.results_export import write_results_csv, write_results_xlsx
@@ -49,6 +50,8 @@ REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folde
 #: the lab's time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system's): the
 #: date of issue is the lab's local date
 TIMEZONE_KEY = "certificate/lab_timezone"
+DCC_KEY = "certificate/write_dcc"  # also write the DCC (XML) beside every PDF
+DCC_SCHEMA_KEY = "certificate/dcc_schema_dir"  # PTB's schema folder; empty: not validated
 
 
 @dataclass(frozen=True)
@@ -213,6 +216,17 @@ class CertificatePresenter:
             self._mark_modified()  # the details are saved with the project
             self.details_changed(key)
 
+    def add_polygon_standard(self, key: str, standard: dict) -> None:
+        """Put the polygon read from its DCC (``standard``: a ReferenceStandard's fields)
+        among workbench ``key``'s standards in place of the polygon listed there
+        (models/dcc/reader.place_polygon_standard); stored with the project."""
+        from models.dcc.reader import place_polygon_standard
+
+        meta = self.details(key)
+        placed = place_polygon_standard(meta.to_dict()["standards"], standard)
+        self.store_details(key, CertificateMetadata.from_dict({**meta.to_dict(),
+                                                               "standards": placed}))
+
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)
 
@@ -234,6 +248,55 @@ class CertificatePresenter:
         """The lab's time zone set in the window (empty: ANGLEBENCH_TIMEZONE, else the
         system's)."""
         return str(self.store.value(TIMEZONE_KEY, "") or "").strip()
+
+    def dcc_options(self) -> tuple[bool, str]:
+        """(write the DCC beside the PDF, the schema folder it is validated against)."""
+        return (str(self.store.value(DCC_KEY, "false")).lower() == "true",
+                str(self.store.value(DCC_SCHEMA_KEY, "") or "").strip())
+
+    def set_dcc_options(self, write: bool, schema_dir: str) -> None:
+        self.store.setValue(DCC_KEY, "true" if write else "false")
+        self.store.setValue(DCC_SCHEMA_KEY, schema_dir.strip())
+
+    def _dcc_path(self, pdf_path: str) -> str:
+        """Where the DCC goes beside ``pdf_path`` ("" when it is not asked for)."""
+        return str(Path(pdf_path).with_suffix(".xml")) if self.dcc_options()[0] else ""
+
+    def _dcc_maker(self, kind, result, pdf_path: str):
+        """``dcc(document, pdf) -> bytes`` for issue_certificate (None: no DCC asked for)."""
+        if not self._dcc_path(pdf_path):
+            return None
+        from app.dcc_issue import dcc_schema_dir, render_dcc
+
+        folder = dcc_schema_dir(configured=self.dcc_options()[1])
+        return lambda document, pdf: render_dcc(kind, result, document, pdf,
+                                                Path(pdf_path).name, folder)
+
+    def _with_dcc(self, text: str, pdf_path: str) -> str:
+        """A status text with where the DCC went, and whether it was validated."""
+        dcc_path = self._dcc_path(pdf_path)
+        if not dcc_path:
+            return text
+        from app.dcc_issue import dcc_schema_dir
+
+        if dcc_schema_dir(configured=self.dcc_options()[1]):
+            return text + tr("; its DCC (validated) written to {path}").format(path=dcc_path)
+        return text + tr("; its DCC written to {path}, not validated (no DCC schema folder "
+                         "set)").format(path=dcc_path)
+
+    def _write_pdf_and_dcc(self, kind, result, document, path: str) -> str:
+        """The PDF of ``document`` and, when asked for, its DCC beside it (made first: when
+        refused, neither is written); the DCC's path, or ""."""
+        from app.writers.certificate_pdf import certificate_pdf_bytes
+        from models.project.atomic_write import write_bytes_atomic
+
+        pdf = certificate_pdf_bytes(document)
+        make, dcc_path = self._dcc_maker(kind, result, path), self._dcc_path(path)
+        xml = make(document, pdf) if make else None
+        write_bytes_atomic(path, pdf)
+        if xml is not None:
+            write_bytes_atomic(dcc_path, xml)
+        return dcc_path if xml is not None else ""
 
     def set_lab_timezone(self, name: str) -> None:
         """Set the lab's time zone; RegisterError (nothing stored) for a name not known."""
@@ -322,16 +385,17 @@ class CertificatePresenter:
         self.view.wait_cursor(True)
         try:
             check_output(path, self.protected())
+            if self._dcc_path(path):
+                check_output(self._dcc_path(path), self.protected())
             if entered.example:
                 return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
-                from app.writers.certificate_pdf import write_certificate_pdf
-
-                write_certificate_pdf(path, kind.certificate_document(result, entered, source_name,
-                                                                      settings))
-                self.view.show_status(tr("Draft written to {path} — DRAFT: {missing} missing; "
-                                         "nothing was recorded in the register").format(
-                    path=path, missing=", ".join(tr(m) for m in draft)), 10000)
+                self._write_pdf_and_dcc(kind, result, kind.certificate_document(
+                    result, entered, source_name, settings), path)
+                self.view.show_status(self._with_dcc(tr(
+                    "Draft written to {path} — DRAFT: {missing} missing; nothing was recorded "
+                    "in the register").format(path=path, missing=", ".join(tr(m) for m in draft)),
+                    path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note, raw_capture)
@@ -346,15 +410,14 @@ class CertificatePresenter:
         """The training switch: a SPECIMEN written, nothing recorded (as ``"example": true``
         on the command line)."""
         from app.certificate_issue import specimen_document
-        from app.writers.certificate_pdf import write_certificate_pdf
 
         document = specimen_document(kind.certificate_document(result, entered, source_name,
                                                                settings))
-        write_certificate_pdf(path, document)
-        self.view.show_status(tr(
+        self._write_pdf_and_dcc(kind, result, document, path)
+        self.view.show_status(self._with_dcc(tr(
             "SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a "
             "certificate, and recorded in no register").format(
-                number=document.metadata.certificate_number, path=path), 15000)
+                number=document.metadata.certificate_number, path=path), path), 15000)
         return True
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
@@ -368,7 +431,8 @@ class CertificatePresenter:
                     register, kind, result, entered, settings, rows, source_name, path,
                     supersedes=revision.number if revision else "", change_note=note,
                     replacement=bool(revision and revision.replacement),
-                    raw_capture=raw_capture)
+                    raw_capture=raw_capture, dcc=self._dcc_maker(kind, result, path),
+                    dcc_path=self._dcc_path(path))
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(
@@ -383,9 +447,9 @@ class CertificatePresenter:
         if revision is not None:
             self.pending = None
         what = f" ({record.revision} of {record.supersedes})" if record.supersedes else ""
-        self.view.show_status(tr("Certificate {number} issued: written to {path} and recorded "
-                                 "in the register").format(number=record.number + what,
-                                                           path=path), 10000)
+        self.view.show_status(self._with_dcc(tr(
+            "Certificate {number} issued: written to {path} and recorded in the register").format(
+                number=record.number + what, path=path), path), 10000)
         return True
 
     def export_results(self, kind, result, settings: dict, source_name: str,

@@ -20,6 +20,7 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
+from models.dcc.reader import POLYGON_FACE_DEVIATIONS
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
@@ -42,6 +43,7 @@ from models.readings.tabular_import import (
 )
 from models.registry import KINDS
 from models.workbench import (
+    AcceptsReference,
     ComparesAfterLog,
     IssuesCertificates,
     JudgesSignals,
@@ -63,6 +65,19 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("print JSON instead of a summary")))
     p.add_argument("--certificate", metavar="OUT.pdf",
                    help=words(QT_TR_NOOP("also write a test certificate")))
+    p.add_argument("--dcc", metavar="OUT.xml",
+                   help=words(QT_TR_NOOP("with --certificate: also write the certificate as a "
+                                         "digital calibration certificate (PTB DCC 3.3.0 XML) "
+                                         "with the PDF embedded")))
+    p.add_argument("--reference-dcc", metavar="POLY.xml", default="",
+                   help=words(QT_TR_NOOP("polygon: the polygon's digital calibration "
+                                         "certificate (DCC): its face deviations replace the "
+                                         "readings' deviation column and its U enters the "
+                                         "budget")))
+    p.add_argument("--dcc-schema", metavar="DIR", default="",
+                   help=words(QT_TR_NOOP("the folder of PTB's DCC 3.3.0 schema set (dcc.xsd, "
+                                         "si/, d-sig/): the DCC is validated against it and not "
+                                         "written when invalid (else ANGLEBENCH_DCC_SCHEMA)")))
     p.add_argument("--metadata", metavar="META.json",
                    help=words(QT_TR_NOOP("certificate metadata (lab, customer, item, "
                                          "standards…); without it the certificate is marked "
@@ -221,7 +236,13 @@ def run_analyze(argv: list[str]) -> int:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
-        [args.compare_after] if args.compare_after else [])
+        [args.compare_after] if args.compare_after else []) + (
+        [args.reference_dcc] if args.reference_dcc else [])
+    if args.reference_dcc and not (isinstance(kind, AcceptsReference)
+                                   and kind.accepted_reference == POLYGON_FACE_DEVIATIONS):
+        _say(words(QT_TR_NOOP("anglebench analyze: --reference-dcc is for the polygon "
+                              "workbench")))
+        return EXIT_BAD_INPUT
     if args.compare_after and not isinstance(kind, ComparesAfterLog):
         _say(words(QT_TR_NOOP("anglebench analyze: --compare-after is for the positioning "
                               "workbench")))
@@ -238,8 +259,12 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     if getattr(args, "signal_presets", None):
         inputs.append(args.signal_presets)
+    if args.dcc and not args.certificate:
+        _say(words(QT_TR_NOOP("anglebench analyze: --dcc needs --certificate (the DCC embeds the "
+                              "PDF certificate)")))
+        return EXIT_BAD_INPUT
     outputs = (("--certificate", args.certificate), ("--results", args.results),
-               ("--table", args.table),
+               ("--table", args.table), ("--dcc", args.dcc),
                ("--interpolator-table", getattr(args, "interpolator_table", None)))
     try:
         check_outputs(outputs, _protected(inputs))
@@ -253,14 +278,20 @@ def run_analyze(argv: list[str]) -> int:
         return EXIT_BAD_INPUT
     # a file of plain numbers is read by numpy in one pass; anything else (or a file that
     # is not what it claims) by the tolerant reader, which names the row and the cell
-    parsed = read_numeric(args.file, kind.columns, mapping)
+    # (the rows as text when a reference DCC replaces a column of them)
+    parsed = None if args.reference_dcc else read_numeric(args.file, kind.columns, mapping)
     table = None
+    args.reference = None
     if parsed is None:
         try:
             table, rows = _read_rows(args.file, kind, mapping)
         except TableImportError as exc:
             _say(_why(exc, words))
             return EXIT_BAD_INPUT
+        if args.reference_dcc:
+            rows = _with_reference_dcc(args, kind, rows, settings, words)
+            if rows is None:
+                return EXIT_BAD_INPUT
         parsed = ReadingsSheet(kind.columns, rows).parse()
     # rows at the end that wait for their reading (a plan's or the nominal step's cells
     # filled, no reading yet) are points not yet taken, not bad rows
@@ -307,7 +338,8 @@ def run_analyze(argv: list[str]) -> int:
 
             try:
                 metadata = _read_metadata(args.metadata,
-                                          kind.error_unit(kind.settings_with_defaults(settings)))
+                                          kind.error_unit(kind.settings_with_defaults(settings)),
+                                          getattr(args, "reference", None))
             except MetadataError as exc:
                 _say(f"anglebench analyze: {_why(exc, words)}")
                 return EXIT_BAD_INPUT
@@ -373,6 +405,29 @@ def run_analyze(argv: list[str]) -> int:
     return 0
 
 
+def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
+    """The rows with the polygon's DCC deviations (app/reference_dcc.py), said what it
+    replaced; None after saying why the DCC was refused."""
+    from app.dcc_issue import dcc_schema_dir
+    from app.reference_dcc import reference_rows
+    from models.dcc.reader import DccError
+    from models.dcc.signature import SigningError
+
+    try:
+        metadata = _read_metadata(args.metadata,
+                                  kind.error_unit(kind.settings_with_defaults(settings)))
+        rows, args.reference, said = reference_rows(
+            args.reference_dcc, kind, rows, kind.settings_with_defaults(settings),
+            metadata.calibration_date, dcc_schema_dir(args.dcc_schema))
+    except (DccError, SigningError, MetadataError) as exc:
+        _say(f"anglebench analyze: --reference-dcc: {_why(exc, words)}")
+        return None
+    for text in said:
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: --reference-dcc: {text}"),
+                              text=text), words))
+    return rows
+
+
 def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
     table = read_table(path)
     try:
@@ -385,9 +440,14 @@ def _read_rows(path: str, kind, mapping) -> tuple[Any, list[list[str]]]:
         return dataclasses.replace(table, line_numbers=list(range(1, len(own) + 1))), own
 
 
-def _read_metadata(path: str | None, error_unit: str = "arcsec") -> CertificateMetadata:
+def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
+                   ) -> CertificateMetadata:
     """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
     unit is read in ``error_unit``, the unit of the errors it was judged against."""
+    if reference is not None:
+        from app.reference_dcc import with_reference
+
+        return with_reference(_read_metadata(path, error_unit), reference)
     if not path:
         return CertificateMetadata()
     try:
@@ -419,16 +479,44 @@ def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
 
 
-def _specimen(args: argparse.Namespace, document, words) -> None:
+def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words) -> None:
+    """The PDF of ``document`` and, with --dcc, its DCC (built and validated first: when it
+    is refused, neither file is written)."""
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.project.atomic_write import write_bytes_atomic
+
+    pdf = certificate_pdf_bytes(document)
+    xml = _dcc_of(args, kind, result, document, pdf, words) if args.dcc else None
+    write_bytes_atomic(args.certificate, pdf)
+    if xml is not None:
+        write_bytes_atomic(args.dcc, xml)
+        _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
+                              number=document.metadata.certificate_number, path=args.dcc), words))
+
+
+def _dcc_of(args: argparse.Namespace, kind, result, document, pdf: bytes, words) -> bytes:
+    """The DCC of the certificate printed into ``pdf`` (app/dcc_issue.render_dcc); says on
+    stderr when no schema folder is set, so it was not validated."""
+    from app.dcc_issue import dcc_schema_dir, render_dcc
+
+    folder = dcc_schema_dir(args.dcc_schema)
+    xml = render_dcc(kind, result, document, pdf, Path(args.certificate).name, folder)
+    if not folder:
+        _say(rendered(message(QT_TR_NOOP(
+            "{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or "
+            "ANGLEBENCH_DCC_SCHEMA)"), path=args.dcc), words))
+    return xml
+
+
+def _specimen(args: argparse.Namespace, kind, result, document, words) -> None:
     """The bundled example details (``"example": true``): a SPECIMEN, watermarked and
     numbered SPECIMEN-… (a number the register refuses, so it cannot clash), never
     recorded in any register."""
     from app.certificate_issue import specimen_document
-    from app.writers.certificate_pdf import write_certificate_pdf
 
     document = specimen_document(document)
     number = document.metadata.certificate_number
-    write_certificate_pdf(args.certificate, document)
+    _write_pdf_and_dcc(args, kind, result, document, words)
     _say(rendered(message(QT_TR_NOOP(
         "SPECIMEN {number} written to {path}: these are the bundled example details "
         "(\"example\": true); it is watermarked SPECIMEN, is not a certificate and was "
@@ -441,9 +529,12 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
 
     try:
         with Register(url) as register:
+            dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words))
+                   if args.dcc else None)
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
-                                       Path(args.file).name, args.certificate)
+                                       Path(args.file).name, args.certificate,
+                                       dcc=dcc, dcc_path=args.dcc or "")
     except RegisterError as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
                                          "written"), reason=reason_of(exc)), words))
@@ -458,6 +549,9 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
                                      "recorded in the register (sha256 {sha}…)"),
                           number=record.number, path=args.certificate,
                           sha=record.pdf_sha256[:16]), words))
+    if args.dcc:
+        _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
+                              number=record.number, path=args.dcc), words))
     return record
 
 
@@ -465,12 +559,13 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             rows: Callable[[], list[list[str]]]) -> int:
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.certificate_issue import draft_reasons
-    from app.writers.certificate_pdf import write_certificate_pdf
+    from app.dcc_issue import DccError
 
     words = translator(args.language)
     try:
         metadata = _read_metadata(args.metadata,
-                                  kind.error_unit(kind.settings_with_defaults(settings)))
+                                  kind.error_unit(kind.settings_with_defaults(settings)),
+                                  getattr(args, "reference", None))
     except MetadataError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -481,13 +576,13 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         return EXIT_BAD_INPUT
     try:
         if args.certificate and metadata.example:
-            _specimen(args, document, words)
+            _specimen(args, kind, result, document, words)
         elif args.certificate and not draft_reasons(metadata):
             record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT
         elif args.certificate:
-            write_certificate_pdf(args.certificate, document)
+            _write_pdf_and_dcc(args, kind, result, document, words)
             _say(rendered(message(QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
                 "in the register)"), path=args.certificate, fields=joined(
@@ -500,6 +595,11 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
                 write_results_csv(args.results, document, ANGLE_UNITS[args.unit])
             _say(rendered(message(QT_TR_NOOP("Results written to {path}"), path=args.results),
                           words))
+    except DccError as exc:
+        _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; neither the certificate "
+                                         "nor its DCC was written"), reason=reason_of(exc)),
+                      words))
+        return EXIT_BAD_INPUT
     except (OSError, ValueError) as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: cannot write: {reason}"),
                               reason=reason_of(exc)), words))

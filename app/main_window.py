@@ -99,6 +99,13 @@ class MainWindow(QMainWindow):
             presenter.certificate_details = (
                 lambda key=presenter.kind.key: self.certificates.stored_details(key))
         self.certificates.details_changed = lambda key: self.presenter(key).schedule_refresh()
+        for presenter in self.presenters:  # a polygon read from its DCC joins the standards
+            if hasattr(presenter, "dcc_schema_dir"):  # a DCC read is validated against it
+                presenter.dcc_schema_dir = self._dcc_schema_dir
+            if hasattr(presenter, "reference_standard_found"):
+                presenter.reference_standard_found = (
+                    lambda standard, key=presenter.kind.key: self.certificates.add_polygon_standard(
+                        key, standard))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected
         ensure_cjk_font()  # Chinese names and readings are never boxes
@@ -323,6 +330,13 @@ class MainWindow(QMainWindow):
                         + (self.projects.path.name if self.projects.path
                            else tr("readings typed in AngleBench")))
         self.statusBar().showMessage(tr("Printed"), 5000)
+
+    def _dcc_schema_dir(self) -> str:
+        """The DCC schema folder set (the environment's, else the certificate details'):
+        a DCC read in (a polygon's) is validated against it; "" none."""
+        from app.dcc_issue import dcc_schema_dir
+
+        return dcc_schema_dir(configured=self.certificates.dcc_options()[1])
 
     def show_register(self) -> None:
         from app.register_presenter import RegisterPresenter

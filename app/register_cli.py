@@ -1,10 +1,11 @@
 """``anglebench register``: the certificate register for audits, without a window.
 
     anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
-    anglebench register show NUMBER            the record (--pdf OUT, --project OUT to extract),
-                                               its chain value and the head before it
-    anglebench register verify [FILE.pdf]      the hash chain and every stored PDF; is this PDF,
-                                               byte for byte, one we issued? --head VALUE (or
+    anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
+                                               to extract), its chain value and the head before it
+    anglebench register verify [FILE.pdf|.xml] the hash chain, every stored PDF and DCC; is this
+                                               PDF (or DCC), byte for byte, one we issued?
+                                               --head VALUE (or
                                                --head-from CERT.pdf): does the register still
                                                hold the history up to that head?
     anglebench register head                   the chain's head now, for the lab's log
@@ -51,6 +52,8 @@ SHOWN = (QT_TR_NOOP("supersedes"), QT_TR_NOOP("superseded_by"), QT_TR_NOOP("issu
 #: operating-system user), why it was withdrawn, its value in the hash chain
 SHOWN_V4 = (QT_TR_NOOP("approver"), QT_TR_NOOP("os_user"), QT_TR_NOOP("withdrawn_reason"),
             QT_TR_NOOP("chain_sha256"))
+#: shown as well (schema version 5): the SHA-256 of the DCC issued with the PDF
+SHOWN_V5 = (QT_TR_NOOP("dcc_sha256"),)
 COLUMNS = ("number", "status", "revision", *SHOWN)
 
 
@@ -71,12 +74,17 @@ def _parser(words) -> argparse.ArgumentParser:
     show.add_argument("number", help=words(QT_TR_NOOP("the certificate number")))
     show.add_argument("--pdf", metavar="OUT.pdf",
                       help=words(QT_TR_NOOP("also write the PDF as issued")))
+    show.add_argument("--dcc", metavar="OUT.xml",
+                      help=words(QT_TR_NOOP("also write the digital calibration certificate "
+                                            "(DCC XML) as issued")))
     show.add_argument("--project", metavar="OUT.anglebench.json",
                       help=words(QT_TR_NOOP("also write the project behind it")))
     verify = sub.add_parser("verify", help=words(QT_TR_NOOP(
         "is this PDF, byte for byte, one the register issued?")))
     verify.add_argument("pdf", nargs="?", default="", help=words(QT_TR_NOOP(
-        "the PDF to check (without it: the register's hash chain and stored PDFs only)")))
+        "the PDF to check (without it: the register's hash chain and stored PDFs only); a "
+        ".xml file is checked as a digital calibration certificate (DCC) the register "
+        "issued")))
     verify.add_argument("--head", default="", metavar="VALUE", help=words(QT_TR_NOOP(
         "a chain head noted earlier (12 to 64 hex digits): the register must still hold the "
         "history up to it")))
@@ -137,7 +145,7 @@ def _print_record(record, register, words) -> None:
                 else joined((", ", revision_words(record.revision))))
     lines = [message(QT_TR_NOOP("{number}  ({status}{revision})"), number=record.number,
                      status=status_words(record.status), revision=revision)]
-    for key in (*SHOWN, *SHOWN_V4):
+    for key in (*SHOWN, *SHOWN_V4, *SHOWN_V5):
         value = getattr(record, key)
         if value:
             lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(key),
@@ -176,6 +184,11 @@ def _export(register, out: str, words) -> int:
             changed = hashlib.sha256(pdf).hexdigest() != record.pdf_sha256
             archive.writestr(f"pdf/{safe}{'.CHANGED-AFTER-ISSUE' if changed else ''}.pdf", pdf)
             archive.writestr(f"project/{safe}.anglebench.json", record.project_json)
+            if record.dcc_sha256:
+                dcc = register.dcc(record.number, checked=False)
+                changed = hashlib.sha256(dcc).hexdigest() != record.dcc_sha256
+                archive.writestr(f"dcc/{safe}{'.CHANGED-AFTER-ISSUE' if changed else ''}.xml",
+                                 dcc)
         archive.writestr("index.csv", index.getvalue())
     write_bytes_atomic(out, buffer.getvalue())
     _say(rendered(message(QT_TR_NOOP("{n} certificate(s) exported to {out}"), n=len(records),
@@ -197,7 +210,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
         out(message(QT_TR_NOOP("CHANGED AFTER ISSUE: {problem}"), problem=problem))
     if not problems:
         out(message(QT_TR_NOOP("register: hash chain intact over {n} record(s), every stored PDF "
-                               "matches its SHA-256; chain head {head}"),
+                               "and DCC matches its SHA-256; chain head {head}"),
                     n=len(register.list()), head=register.chain_head()))
     failed = bool(problems)
     if head_from:
@@ -220,7 +233,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if not path:
         return 1 if failed else 0
     data = _read(path)
-    found = register.verify_all(data)
+    is_dcc = path.lower().endswith(".xml")  # a digital calibration certificate received
+    found = register.verify_dcc(data) if is_dcc else register.verify_all(data)
     if len(found) > 1:
         out(message(QT_TR_NOOP(
             "{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, "
@@ -230,6 +244,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     record = found[0] if found else None
     if record is None:
         out(message(QT_TR_NOOP(
+            "{path}: NOT in the register (no issued DCC has its SHA-256: altered, or from "
+            "another register)") if is_dcc else QT_TR_NOOP(
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
             "draft, or from another register)"), path=path))
         return 1
@@ -244,7 +260,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if record.status == "withdrawn":
         out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
                     path=path, number=record.number, reason=record.withdrawn_reason or "—"))
-    printed = head_in_pdf(data)
+    printed = "" if is_dcc else head_in_pdf(data)
     if printed and printed != register.chain_before(record.number):
         out(message(QT_TR_NOOP(
             "CHANGED AFTER ISSUE: {path} prints the chain head {printed} before it, but the "
@@ -272,7 +288,8 @@ def run_register(argv: list[str]) -> int:
     from models.register.store import Register, RegisterError, RegisterTampered
 
     url = register_url(explicit=args.register)
-    outputs = ((("--pdf", args.pdf), ("--project", args.project)) if args.command == "show"
+    outputs = ((("--pdf", args.pdf), ("--dcc", args.dcc), ("--project", args.project))
+               if args.command == "show"
                else (("OUT.zip", args.out),) if args.command == "export" else ())
     try:
         # before the register is opened: nothing written, the register untouched
@@ -305,6 +322,8 @@ def run_register(argv: list[str]) -> int:
                 _print_record(record, register, words)
                 if args.pdf:
                     write_bytes_atomic(args.pdf, register.pdf(record.number))
+                if args.dcc:
+                    write_bytes_atomic(args.dcc, register.dcc(record.number))
                 if args.project:
                     write_bytes_atomic(args.project, record.project_json.encode("utf-8"))
                 return 0

@@ -216,6 +216,20 @@ class IssuesCertificates(ABC):
     #: states traceability only when each is listed with a certificate and a stated U;
     #: otherwise the document is a test report and says why
     measurand_standards: ClassVar[tuple[str, ...]] = ()
+    #: its digital certificate (models/dcc/writer.py): each per-point column of the
+    #: certificate (its name without the unit) whose U the certificate prints beside it →
+    #: that U column's middle part (``expanded_uncertainty_`` + it + the unit)
+    dcc_uncertainty_columns: ClassVar[Mapping[str, str]] = {}
+    #: the per-point column that holds a polygon's face deviations from face 1 (its U column
+    #: the one dcc_uncertainty_columns names): stated in the shared form the polygon
+    #: workbench reads back (models/dcc/vocabulary.py); "": none
+    dcc_face_deviations_column: ClassVar[str] = ""
+
+    def dcc_point_uncertainties(self, result: Any) -> dict[str, Any]:
+        """U and k per point of certificate columns whose U no budget of
+        :meth:`uncertainty_budgets` holds (e.g. an error stated from a reference point),
+        by column name: PointUncertainty. The DCC takes each point's k from them."""
+        return {}
 
     @abstractmethod
     def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:

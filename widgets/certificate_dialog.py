@@ -42,7 +42,7 @@ from models.certificate.metadata import (
     MetadataError,
 )
 from models.quantity import UNITS
-from widgets.i18n import declared, explained, tr
+from widgets.i18n import declared, explained, tr, translated
 from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialog"]
@@ -60,6 +60,7 @@ _TEXT_FIELDS = {
     "item_description": QT_TR_NOOP("Item under test"), "item_manufacturer": QT_TR_NOOP("Manufacturer"),
     "item_serial": QT_TR_NOOP("Serial number"), "item_grade": QT_TR_NOOP("Grade / specification"),
     "item_model": QT_TR_NOOP("Model / type"),
+    "lab_country": QT_TR_NOOP("Country (ISO 3166-1, e.g. CN)"),
     "calibration_site": QT_TR_NOOP("Customer's site (where)"),
     "item_resolution": QT_TR_NOOP("Resolution"),
     "temperature_c": QT_TR_NOOP("Temperature (°C)"),
@@ -85,11 +86,12 @@ _CHOICES = {
 # a figure typed with its unit, chosen beside it: field -> the key of its unit
 _UNIT_OF = {"tolerance": "tolerance_unit", "item_resolution": "item_resolution_unit"}
 _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "basis",
-                     "applies_to", "uncertainty_unit")
+                     "applies_to", "uncertainty_unit", "due_date")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
                      QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
                      QT_TR_NOOP("Per (reading, from face 1)"),
-                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"))
+                     QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"),
+                     QT_TR_NOOP("Due date (YYYY-MM-DD)"))
 _ERROR_STYLE = "background: #ffd7d7;"
 
 
@@ -188,9 +190,23 @@ class CertificateDialog(QDialog):
             "A specimen for training or demonstration: watermarked SPECIMEN, numbered "
             "SPECIMEN-…, not a certificate, and recorded in no register"))
         cert.layout().addRow("", self.training)
+        # the digital certificate beside the PDF (PTB DCC 3.3.0: the XML with the PDF inside)
+        self.write_dcc = QCheckBox(tr("Also write the digital certificate (DCC, XML)"))
+        self.write_dcc.setObjectName("write_dcc")
+        self.write_dcc.setToolTip(tr(
+            "Beside the PDF, the same certificate as a PTB Digital Calibration Certificate "
+            "(DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml"))
+        cert.layout().addRow("", self.write_dcc)
+        self.dcc_schema = QLineEdit()
+        self.dcc_schema.setObjectName("dcc_schema_dir")
+        self.dcc_schema.setPlaceholderText(tr("empty: the DCC is not validated"))
+        self.dcc_schema.setToolTip(tr(
+            "The folder of PTB's DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is "
+            "validated against it and not written when invalid"))
+        cert.layout().addRow(tr("DCC schema folder"), self.dcc_schema)
         grid.addWidget(cert, 0, 0)
         lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
-                                                    "number_scheme"))
+                                                    "lab_country", "number_scheme"))
         # the lab's template: a checker signs as well (核验员, JJF 1071's model)
         self.checker_role = QCheckBox(tr("Certificates are checked (Checked by / 核验员)"))
         self.checker_role.setObjectName("checker_role")
@@ -239,8 +255,15 @@ class CertificateDialog(QDialog):
         add, remove = QPushButton(tr("Add standard")), QPushButton(tr("Remove standard"))
         add.clicked.connect(lambda: self.add_standard({}))
         remove.clicked.connect(self._remove_standard)
+        from_dcc = QPushButton(tr("Read from DCC…"))
+        from_dcc.setObjectName("standard_from_dcc")
+        from_dcc.setToolTip(tr("Fill the selected standard's certificate number, uncertainty "
+                               "and due date from its digital calibration certificate (DCC "
+                               "XML); a new row when none is selected"))
+        from_dcc.clicked.connect(self._ask_standard_dcc)
         buttons.addWidget(add)
         buttons.addWidget(remove)
+        buttons.addWidget(from_dcc)
         buttons.addStretch(1)
         box_layout = QVBoxLayout(standards_box)
         box_layout.addWidget(self.standards)
@@ -309,6 +332,54 @@ class CertificateDialog(QDialog):
                 text = "arcsec"
             self.standards.setItem(row, col, QTableWidgetItem(text))
 
+    def _ask_standard_dcc(self) -> None:
+        from PySide6.QtWidgets import QFileDialog
+
+        path, _ = QFileDialog.getOpenFileName(self, tr("Standard's digital calibration "
+                                                       "certificate"), "",
+                                              tr("DCC (*.xml);;All files (*)"))
+        if path:
+            self.read_standard_dcc(path)
+
+    def read_standard_dcc(self, path: str, schema_dir: str = "") -> bool:
+        """Fill a standard's certificate number, uncertainty (with its basis and unit) and
+        due date from the DCC at ``path``: the selected row, else a new one. A DCC refused
+        (schema, unit, signature, expired before the date of calibration) changes nothing
+        and says why; what the reader notes (no due date, an unchecked signer) is said."""
+        from models.dcc.reader import DccError, read_standard_dcc
+        from models.dcc.signature import SigningError, trusted_certificate
+
+        when = self.fields["calibration_date"].text().strip() if (
+            "calibration_date" in self.fields) else ""
+        try:
+            dt.date.fromisoformat(when)
+        except ValueError:
+            when = ""
+        try:
+            import os
+
+            # as app/dcc_issue.dcc_schema_dir: the one given, the environment's, the field's
+            schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
+                          or self.dcc_schema.text()).strip()
+            found = read_standard_dcc(path, schema_dir or None, measurement_date=when or None,
+                                      trusted_cert=trusted_certificate())
+        except (DccError, SigningError) as exc:
+            self.error_label.setStyleSheet("color: #b00020;")
+            self.error_label.setText(explained(exc))
+            return False
+        rows = sorted({i.row() for i in self.standards.selectedIndexes()})
+        if rows:
+            row = rows[0]
+        else:
+            self.add_standard({})
+            row = self.standards.rowCount() - 1
+        for key, value in found.as_standard().items():
+            text = f"{value:.6g}" if isinstance(value, float) else str(value)
+            self.standards.setItem(row, _STANDARD_COLUMNS.index(key), QTableWidgetItem(text))
+        self.error_label.setStyleSheet("")
+        self.error_label.setText("\n".join(translated(n) for n in found.notes))
+        return True
+
     def _remove_standard(self) -> None:
         rows = sorted({i.row() for i in self.standards.selectedIndexes()}, reverse=True)
         for row in rows or [self.standards.rowCount() - 1]:
@@ -332,6 +403,15 @@ class CertificateDialog(QDialog):
                 standards.append(entry)
         data["standards"] = standards
         return data
+
+    def dcc_options(self) -> tuple[bool, str]:
+        """Whether to write the DCC beside the PDF, and the schema folder (window settings,
+        not details of this certificate)."""
+        return self.write_dcc.isChecked(), self.dcc_schema.text().strip()
+
+    def set_dcc_options(self, write: bool, schema_dir: str) -> None:
+        self.write_dcc.setChecked(write)
+        self.dcc_schema.setText(schema_dir)
 
     def metadata(self) -> CertificateMetadata:
         """The entered metadata. Raises MetadataError, with every bad field marked at once."""

@@ -172,6 +172,7 @@ class ReferenceStandard:
     basis: str = "U95"
     applies_to: str = "reading"
     uncertainty_unit: str = "arcsec"  # a key of models.quantity.UNITS
+    due_date: str = ""  # YYYY-MM-DD: when the standard's calibration is due (e.g. from its DCC)
 
     def uncertainty_in(self, unit: str, name: str = "standards") -> float | None:
         """The stated uncertainty as a number in ``unit`` (the errors'); MetadataError when
@@ -226,7 +227,7 @@ class ReferenceStandard:
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
                    clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
-                   applies_to, unit_key)
+                   applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"))
 
 
 #: keys written before their figures had a unit (project schema 1) → the keys now
@@ -240,6 +241,8 @@ class CertificateMetadata:
     lab_name: str = ""
     lab_address: str = ""
     lab_accreditation: str = ""
+    # the laboratory's ISO 3166-1 alpha-2 country code (CN, DE …): the DCC's coreData states it
+    lab_country: str = ""
     customer_name: str = ""
     customer_address: str = ""
     item_description: str = ""

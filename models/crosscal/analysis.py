@@ -458,6 +458,11 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     nominal_column = "position"
     entry_column = "ac_x_arcsec"
     reference_kind = POLYGON_FACE_DEVIATIONS
+    # the certificate's U columns (polygon: about the mean, from face 1; encoder: about the
+    # mean, from step 0), and the polygon's face deviations in the DCC's shared form
+    dcc_uncertainty_columns = {"deviation": "", "deviation_from_face1": "from_face1_",
+                               "error": "", "error_from_step0": "from_step0_"}
+    dcc_face_deviations_column = "deviation_from_face1_arcsec"
     analyze = staticmethod(analyze)
     split_incomplete = staticmethod(split_incomplete)
     plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
@@ -483,6 +488,18 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
         from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
 
         return crosscal_certificate(result, metadata, source_name, self.method_reference)
+
+    def dcc_point_uncertainties(self, result):
+        """The encoder's error from step 0: its U (the certificate's "U from step 0") with
+        the solution's k, as the polygon's from face 1 in :meth:`uncertainty_budgets`."""
+        from models.certificate.uncertainty_json import PointUncertainty
+
+        s = result.solution
+        if not s.separable:
+            return {}
+        u = np.asarray(result.encoder_u_from_step0_arcsec(), dtype=float)
+        return {"error_from_step0_arcsec": PointUncertainty(
+            u, np.full(u.size, float(s.coverage_factor)))}
 
     def uncertainty_budgets(self, result, metadata):
         # each item's budget as its certificate states it (about the mean of the n values);

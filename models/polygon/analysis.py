@@ -673,6 +673,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     sample_file = "polygon_sample.csv"
     measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
                            QT_TR_NOOP("the autocollimator"))
+    dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     method_reference = ("Tian L. et al., Analysis the influence of pyramidal error on the "
                         "encoder accuracy test by using coordinate transformation, Acta Optica "
                         "Sinica 35(5):0512003 (2015)")

@@ -532,6 +532,7 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
     parameters = PARAMETERS
     sample_file = "positioning_sample.csv"
     measurand_standards = (QT_TR_NOOP("the reference measuring system"),)
+    dcc_uncertainty_columns = {"mean_deviation": ""}  # the certificate's U column (DCC)
     method_reference = ("ISO 230-2:2014 Test code for machine tools — Part 2: Determination of "
                         "accuracy and repeatability of positioning of numerically controlled "
                         "axes; VDI/DGQ 3441:1977; GB/T 17421.2-2016")

@@ -11,6 +11,9 @@ Since schema version 4 the chain also runs through the register's other records 
 ``entries`` table: calibration intervals, numbering continued, withdrawals), in one order
 (``seq``), and a record's chain covers who issued it (the operating-system user), who
 approved it, its place and the counter value its number came from (``chain_format`` 2).
+Since schema version 5 a certificate issued with a digital calibration certificate (DCC XML)
+has chain format 3: its chain also covers the DCC's SHA-256, so the DCC, its hash, or both
+set to nothing are found as the PDF's are; records issued without one keep format 2.
 The ``register_state`` row holds the number of records and the head, so a deleted tail is
 found; the counters are cross-checked against the records allocated from them.
 
@@ -26,7 +29,7 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "append_baseline",
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "append_baseline",
            "head_in_pdf", "link", "link_entry", "verify_v1_chain"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
@@ -36,6 +39,9 @@ CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
            "software_json", "headline_json", "pdf_sha256")
 #: what a record of chain format 2 (schema version 4) adds to its chain
 CHAINED_V2 = ("seq", "counter", "counter_value", "os_user", "approver")
+#: what a record of chain format 3 (schema version 5: issued with a digital calibration
+#: certificate) adds to chain format 2's: the DCC's SHA-256
+CHAINED_V3 = ("dcc_sha256",)
 #: an entry's fields, all in the chain
 ENTRY_CHAINED = ("seq", "kind", "subject", "body_json", "recorded_at", "os_user", "workstation")
 GENESIS = "0" * 64
@@ -48,9 +54,11 @@ def _digest(previous: str, fields: Mapping[str, Any]) -> str:
 
 def link(previous: str, record: Mapping[str, Any]) -> str:
     """The chain after the certificate ``record``, given the chain before it."""
-    keys = CHAINED + (CHAINED_V2 if (record.get("chain_format") or 1) >= 2 else ())
+    chain_format = record.get("chain_format") or 1
+    keys = (CHAINED + (CHAINED_V2 if chain_format >= 2 else ())
+            + (CHAINED_V3 if chain_format >= 3 else ()))
     fields = {k: record[k] for k in keys}
-    if (record.get("chain_format") or 1) >= 2:
+    if chain_format >= 2:
         fields["chain_format"] = record["chain_format"]
     return _digest(previous, fields)
 

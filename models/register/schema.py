@@ -68,6 +68,10 @@ CERTIFICATES = sa.Table(
     # HMAC-SHA256 of chain_sha256 with the laboratory's key kept outside the database
     # (models/register/signing.py); None when the lab signs nothing
     sa.Column("signature", sa.String(64), nullable=True),
+    # migration 5: the digital calibration certificate (DCC XML) issued with the PDF and its
+    # SHA-256 (in the chain: chain_format 3); both None for a certificate issued without one
+    sa.Column("dcc", sa.LargeBinary, nullable=True),
+    sa.Column("dcc_sha256", sa.String(64), nullable=True),
 )
 
 #: the register's other records, chained with the certificates (migration 4): calibration
@@ -172,8 +176,23 @@ def _v4(conn: sa.Connection) -> None:
     append_baseline(conn, len(ids))
 
 
+def _v5(conn: sa.Connection) -> None:
+    """The digital calibration certificate beside the PDF: two nullable columns. No record's
+    chain value is touched (the records issued before keep their chain format; only records
+    issued with a DCC use chain format 3, which covers its SHA-256); the chain is proved by
+    the audit every opening runs right after the migration. Refused when the columns exist
+    already (a version set back)."""
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
+    if {"dcc", "dcc_sha256"} & columns:
+        raise ValueError("the columns of version 5 exist already")
+    blob = conn.dialect.type_compiler_instance.process(sa.LargeBinary())
+    conn.execute(sa.text(f"ALTER TABLE certificates ADD COLUMN dcc {blob}"))
+    conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN dcc_sha256 VARCHAR(64)"))
+
+
 #: version → the migration that brings a register to it from the version before
-MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4}
+MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4,
+                                                          5: _v5}
 LATEST = max(MIGRATIONS)
 
 
@@ -192,6 +211,10 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
             return f"register_state records schema version {copy}"
     if version < 2 and "instruments" in tables:
         return "the table of version 2 (instruments) exists"
+    if version < 5 and "certificates" in tables:
+        columns = {c["name"] for c in inspector.get_columns("certificates")}
+        if "dcc_sha256" in columns:
+            return "the columns of version 5 exist"
     if version < 4 and "certificates" in tables:
         columns = {c["name"] for c in inspector.get_columns("certificates")}
         if "seq" in columns or "entries" in tables:

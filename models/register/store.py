@@ -36,7 +36,7 @@ from typing import Any
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
-from models.register.chain import CHAINED, CHAINED_V2, GENESIS, link
+from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, GENESIS, link
 
 __all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "RegisterTampered",
            "lab_timezone", "software_versions"]
@@ -119,6 +119,9 @@ class CertificateRecord:
     chain_format: int | None = None
     chain_sha256: str | None = None
     signature: str | None = None  # with the lab's key (models/register/signing.py)
+    # schema version 5: the SHA-256 of the digital calibration certificate (DCC XML) issued
+    # with the PDF (chain format 3); None when it was issued without one
+    dcc_sha256: str | None = None
 
     @property
     def headline(self) -> dict[str, float]:
@@ -602,7 +605,8 @@ class Register:
         return now == plan.counter_before
 
     def issue(self, request: IssueRequest, render: Callable[..., bytes],
-              *, supersedes: str = "", change_note: str = "", replacement: bool = False
+              *, render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None = None,
+              supersedes: str = "", change_note: str = "", replacement: bool = False
               ) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
@@ -611,7 +615,12 @@ class Register:
         gaps, no duplicates. ``render(meta)`` or ``render(meta, head=…)``. ``supersedes``
         issues an amendment (number ``<original>-A<n>``) or, with ``replacement``, a new
         certificate replacing the original; the original is kept unchanged and marked
-        superseded. Returns the record and the PDF."""
+        superseded. ``render_dcc(meta, pdf)``, when given, makes the digital calibration
+        certificate (DCC XML) from the final details and the PDF just rendered, in the same
+        attempt (the same number, the PDF embedded in it): it is stored beside the PDF and
+        its SHA-256 enters the chain (chain format 3); :meth:`dcc` hands it out. Anything it
+        raises leaves no record, as a failing ``render`` does. Returns the record and the
+        PDF."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         meta = request.metadata
@@ -651,6 +660,9 @@ class Register:
                     revision="" if plan.revision == "original" else plan.revision,
                     change_note=change_note)
                 pdf = _call_render(render, final, plan.head)
+                dcc = render_dcc(final, pdf) if render_dcc is not None else None
+                if dcc is not None and not isinstance(dcc, bytes | bytearray):
+                    raise TypeError("render_dcc returns the DCC's bytes")
                 record = CertificateRecord(
                     number=plan.number,
                     issued_at=now.isoformat(),
@@ -666,7 +678,9 @@ class Register:
                     headline_json=json.dumps(request.headline, sort_keys=True),
                     pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
-                    os_user=user, approver=meta.approver, chain_format=2)
+                    os_user=user, approver=meta.approver,
+                    chain_format=2 if dcc is None else 3,
+                    dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest())
                 chain = link(plan.head, dataclasses.asdict(record))
                 record = dataclasses.replace(record, chain_sha256=chain,
                                              signature=self._sign(chain))
@@ -681,7 +695,8 @@ class Register:
                                 continue
                         self._check_free(conn, plan.number)
                         conn.execute(certificates.insert().values(
-                            **dataclasses.asdict(record), pdf=pdf))
+                            **dataclasses.asdict(record), pdf=pdf,
+                            dcc=None if dcc is None else bytes(dcc)))
                         if plan.counter is not None:
                             counters = self._schema.COUNTERS
                             if plan.counter_before is None:
@@ -848,6 +863,31 @@ class Register:
                 "issued: it was changed in the database; it is not exported"), number=number))
         return data
 
+    def dcc(self, number: str, checked: bool = True) -> bytes:
+        """The digital calibration certificate (DCC XML) issued with certificate ``number``.
+        RegisterError when it was issued without one; with ``checked``, also when the stored
+        DCC no longer matches the SHA-256 recorded at issue (it is never handed out as the
+        issued one)."""
+        certificates = self._schema.CERTIFICATES
+        with self._read() as conn:
+            row = conn.execute(self._sa.select(certificates.c.dcc, certificates.c.dcc_sha256)
+                               .where(certificates.c.number == number)).first()
+        if row is None:
+            raise RegisterError(message(
+                QT_TR_NOOP("no certificate {number} in the register"),
+                number=number))
+        if row.dcc is None and row.dcc_sha256 is None:
+            raise RegisterError(message(QT_TR_NOOP(
+                "certificate {number} was issued without a digital calibration certificate "
+                "(DCC)"), number=number))
+        data = b"" if row.dcc is None else bytes(row.dcc)
+        if checked and (row.dcc is None or hashlib.sha256(data).hexdigest() != row.dcc_sha256):
+            raise RegisterError(message(QT_TR_NOOP(
+                "the stored DCC of {number} no longer matches the SHA-256 recorded when it was "
+                "issued: it was changed or removed in the database; it is not exported"),
+                number=number))
+        return data
+
     def audit(self, pdfs: bool = False) -> list:
         """List what was changed in the database after issue, one message per finding (an
         empty list when nothing was found): the hash chain recomputed over every record
@@ -859,11 +899,12 @@ class Register:
 
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
-        columns = ("id", *CHAINED, *CHAINED_V2, "chain_format", "status", "superseded_by",
-                   "withdrawn_reason", "chain_sha256", "signature")
+        columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, "chain_format", "status",
+                   "superseded_by", "withdrawn_reason", "chain_sha256", "signature")
         problems: list = []
         with self._read() as conn:
-            rows = conn.execute(sa.select(*(certificates.c[c] for c in columns))
+            rows = conn.execute(sa.select(*(certificates.c[c] for c in columns),
+                                          certificates.c.dcc.is_not(None).label("has_dcc"))
                                 .order_by(certificates.c.seq, certificates.c.id)).all()
             notes = conn.execute(sa.select(entries).order_by(entries.c.seq)).all()
             state = dict(conn.execute(sa.select(schema.STATE.c.name, schema.STATE.c.value)).all())
@@ -903,6 +944,8 @@ class Register:
                         problems.append(message(QT_TR_NOOP(
                             "record {number}: the stored PDF does not match the SHA-256 "
                             "recorded at issue"), number=item.number))
+                if not is_entry:
+                    problems += _dcc_problems(conn, certificates, item, pdfs)
         problems += self._signature_problems(links)
         count = len(links)
         if state.get("records") != str(count) or state.get("head") != previous:
@@ -989,6 +1032,16 @@ class Register:
         with self._read() as conn:
             numbers = conn.execute(self._sa.select(certificates.c.number).where(
                 certificates.c.pdf_sha256 == digest).order_by(certificates.c.id)).scalars().all()
+            return [self._get(conn, number) for number in numbers]
+
+    def verify_dcc(self, dcc: bytes) -> list[CertificateRecord]:
+        """Every record whose digital calibration certificate is byte for byte this one (by
+        SHA-256)."""
+        certificates = self._schema.CERTIFICATES
+        digest = hashlib.sha256(dcc).hexdigest()
+        with self._read() as conn:
+            numbers = conn.execute(self._sa.select(certificates.c.number).where(
+                certificates.c.dcc_sha256 == digest).order_by(certificates.c.id)).scalars().all()
             return [self._get(conn, number) for number in numbers]
 
     def verify(self, pdf: bytes) -> CertificateRecord | None:
@@ -1167,6 +1220,70 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 by=by and message(QT_TR_NOOP("superseded by {number}"), number=by)
                 or (message(QT_TR_NOOP("withdrawn")) if row.number in withdrawn else
                     message(QT_TR_NOOP("issued, superseded by none")))))
+    return problems
+
+
+def _dcc_problems(conn, certificates, row, content: bool) -> list:
+    """A record's digital calibration certificate against what was recorded at issue: its
+    SHA-256 only in a record of chain format 3 (which chains it), the DCC stored when the
+    hash says one was issued, none stored when none was; with ``content`` the stored DCC
+    against its SHA-256 and the PDF embedded in it against the stored PDF."""
+    import sqlalchemy as sa
+
+    problems: list = []
+    chained = (row.chain_format or 1) >= 3
+    if row.dcc_sha256 is not None and not chained:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: it carries a DCC SHA-256, but it was issued without a DCC "
+            "(its chain does not cover one): added after issue"), number=row.number))
+    if row.dcc_sha256 is not None and not row.has_dcc:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: its DCC was issued and recorded (SHA-256 {sha}…) but is no "
+            "longer stored: deleted after issue"), number=row.number, sha=row.dcc_sha256[:16]))
+    if row.has_dcc and row.dcc_sha256 is None:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: a DCC is stored, but none was recorded at issue: added after "
+            "issue"), number=row.number))
+    if not (content and row.has_dcc and row.dcc_sha256 is not None):
+        return problems
+    data = bytes(conn.execute(sa.select(certificates.c.dcc).where(
+        certificates.c.id == row.id)).scalar_one())
+    if hashlib.sha256(data).hexdigest() != row.dcc_sha256:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: the stored DCC does not match the SHA-256 recorded at issue"),
+            number=row.number))
+        return problems
+    from models.dcc.reader import DccError, embedded_pdfs
+
+    pdf = bytes(conn.execute(sa.select(certificates.c.pdf).where(
+        certificates.c.id == row.id)).scalar_one())
+    try:
+        inside = embedded_pdfs(data)
+    except DccError as exc:
+        problems.append(message(QT_TR_NOOP("record {number}: its DCC cannot be read: "
+                                           "{reason}"), number=row.number, reason=reason_of(exc)))
+        return problems
+    if pdf not in inside:
+        problems.append(message(QT_TR_NOOP(
+            "record {number}: the PDF embedded in its DCC is not the stored PDF ({n} PDF(s) "
+            "embedded): the two forms of the certificate differ"),
+            number=row.number, n=len(inside)))
+    from models.dcc.signature import SigningError, has_signature, trusted_certificate, verify
+
+    try:
+        signed = has_signature(data)
+        trusted = trusted_certificate() if signed else None
+    except (SigningError, ValueError) as exc:
+        problems.append(message(QT_TR_NOOP("record {number}: its DCC's signature cannot be "
+                                           "checked: {reason}"), number=row.number,
+                                reason=reason_of(exc)))
+        return problems
+    if signed:
+        check = verify(data, trusted)
+        if check.problems:
+            problems.append(message(QT_TR_NOOP("record {number}: its DCC's signature: "
+                                               "{reason}"), number=row.number,
+                                    reason=check.problems[0]))
     return problems
 
 

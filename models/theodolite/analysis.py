@@ -248,6 +248,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     parameters = PARAMETERS
     sample_file = "theodolite_sample.csv"
     measurand_standards = (QT_TR_NOOP("the autocollimating theodolite"),)
+    dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     method_reference = ("Tian L. et al., Test method of angle error of limited rotation axis "
                         "system, Acta Photonica Sinica 46(11):1112005 (2017)")
     presenter = "widgets.theodolite.presenter:TheodolitePresenter"

@@ -1479,6 +1479,15 @@
         <translation>无法导出</translation>
     </message>
     <message>
+        <source>; its DCC (validated) written to {path}</source>
+        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <translation>；其数字证书（已校验）已写入 {path}</translation>
+    </message>
+    <message>
+        <source>; its DCC written to {path}, not validated (no DCC schema folder set)</source>
+        <translation>；其数字证书已写入 {path}，未经校验（未设置 DCC 模式文件夹）</translation>
+    </message>
+    <message>
         <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
         <translation>不能出具证书：{progress} 尚未完成。证书要求每个测回、安装位置或测量循环都已完成；请完成它，或删除其各行以对已完成部分出具证书。</translation>
     </message>
@@ -2048,6 +2057,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>允差 ±</translation>
     </message>
     <message>
+        <source>Country (ISO 3166-1, e.g. CN)</source>
+        <translation>国家（ISO 3166-1，如 CN）</translation>
+    </message>
+    <message>
+        <source>Due date (YYYY-MM-DD)</source>
+        <translation>国家（ISO 3166-1，如 CN）</translation>
+    </message>
+    <message>
         <source>The unit of the figure beside it: converted to the unit of the errors (an angle cannot be judged against a length)</source>
         <translation>旁边数值的单位：换算为误差的单位（角度不能与长度比较）</translation>
     </message>
@@ -2076,8 +2093,76 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>制造商</translation>
     </message>
     <message>
+        <source>no DCC written: the certificate&apos;s field &apos;{field_name}&apos; is empty and the DCC schema requires it</source>
+        <translation>未写出数字证书：证书字段“{field_name}”为空，而 DCC 模式要求该项</translation>
+    </message>
+    <message>
+        <source>source: {source}</source>
+        <translation>源代码：{source}</translation>
+    </message>
+    <message>
+        <source>no DCC written: the certificate&apos;s field &apos;lab_country&apos; must be the laboratory&apos;s ISO 3166-1 country code (two letters, e.g. CN), not &apos;{value}&apos;</source>
+        <translation>未写出数字证书：证书字段“lab_country”须为实验室所在国家的 ISO 3166-1 代码（两个字母，如 CN），而不是“{value}”</translation>
+    </message>
+    <message>
+        <source>grade: {grade}</source>
+        <translation>等级：{grade}</translation>
+    </message>
+    <message>
         <source>Serial number</source>
         <translation>出厂编号</translation>
+    </message>
+    <message>
+        <source>This document is a test report, not a calibration certificate: its results are not stated as traceable to the SI.</source>
+        <translation>本文件为检测报告，不是校准证书：其结果未声明可溯源至国际单位制（SI）。</translation>
+    </message>
+    <message>
+        <source>The results are traceable to the SI through the reference standards listed with their calibration certificates (see measuringEquipments).</source>
+        <translation>通过所列计量标准及其校准证书，结果可溯源至国际单位制（SI）（见 measuringEquipments）。</translation>
+    </message>
+    <message>
+        <source>This document is a calibration certificate.</source>
+        <translation>本文件为校准证书。</translation>
+    </message>
+    <message>
+        <source>The results relate only to the item calibrated, at the time and under the conditions of the calibration. This digital certificate and the PDF embedded in it are one certificate; the embedded PDF is its human-readable form.</source>
+        <translation>结果仅对所校准的对象、在校准的时间和条件下有效。本数字证书与其内嵌的 PDF 为同一份证书；内嵌的 PDF 为其人可读的形式。</translation>
+    </message>
+    <message>
+        <source>no DCC written: the coverage factor of a point of &apos;{column}&apos; is not found in its budget</source>
+        <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
+    </message>
+    <message>
+        <source>no DCC written: the coverage factor of a face deviation is not found in its budget</source>
+        <translation>未写出数字证书：在不确定度预算中找不到某一面偏差的包含因子</translation>
+    </message>
+    <message>
+        <source>Polygon face deviations (from face 1)</source>
+        <translation>多面棱体各面偏差（相对第 1 面）</translation>
+    </message>
+    <message>
+        <source>Face deviation</source>
+        <translation>面偏差</translation>
+    </message>
+    <message>
+        <source>Expanded uncertainty U</source>
+        <translation>扩展不确定度 U</translation>
+    </message>
+    <message>
+        <source>Stated uncertainty ({basis}, per {per})</source>
+        <translation>给定的不确定度（{basis}，每 {per}）</translation>
+    </message>
+    <message>
+        <source>Relative humidity</source>
+        <translation>相对湿度</translation>
+    </message>
+    <message>
+        <source>Certificate {number} (PDF)</source>
+        <translation>证书 {number}（PDF）</translation>
+    </message>
+    <message>
+        <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
+        <translation>未写出数字证书：该证书为草稿（缺少 {missing}）；只有完整的证书才能生成数字证书</translation>
     </message>
     <message>
         <source>Grade / specification</source>
@@ -2296,6 +2381,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>链值</translation>
     </message>
     <message>
+        <source>dcc_sha256</source>
+        <extracomment>shown as well (schema version 5): the SHA-256 of the DCC issued with the PDF</extracomment>
+        <translation>DCC 的 sha256</translation>
+    </message>
+    <message>
         <source>The certificate register</source>
         <translation>证书登记册</translation>
     </message>
@@ -2324,12 +2414,20 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>同时写出签发时的 PDF</translation>
     </message>
     <message>
+        <source>also write the digital calibration certificate (DCC XML) as issued</source>
+        <translation>同时写出签发时的数字校准证书（DCC XML）</translation>
+    </message>
+    <message>
         <source>also write the project behind it</source>
         <translation>同时写出其所依据的项目</translation>
     </message>
     <message>
         <source>is this PDF, byte for byte, one the register issued?</source>
         <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
+    </message>
+    <message>
+        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only); a .xml file is checked as a digital calibration certificate (DCC) the register issued</source>
+        <translation>要核验的 PDF（不给出时：只检查登记册的哈希链和所存 PDF）；.xml 文件按登记册签发的数字校准证书（DCC）核验</translation>
     </message>
     <message>
         <source>a chain head noted earlier (12 to 64 hex digits): the register must still hold the history up to it</source>
@@ -2436,6 +2534,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>已将 {n} 份证书导出到 {out}</translation>
     </message>
     <message>
+        <source>register: hash chain intact over {n} record(s), every stored PDF and DCC matches its SHA-256; chain head {head}</source>
+        <translation>登记册：{n} 条记录的哈希链完整，所存每份 PDF 和 DCC 均与其 SHA-256 相符；链头 {head}</translation>
+    </message>
+    <message>
         <source>{path}: no register chain head printed in it (a draft, a specimen, or issued before AngleBench printed the head)</source>
         <translation>{path}：其中没有印登记册链头（草稿、样本，或在 AngleBench 开始印链头之前签发）</translation>
     </message>
@@ -2450,6 +2552,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{path}: its SHA-256 is in {n} records ({numbers}): a certificate is issued once, so all but one were copied into the register after issue</source>
         <translation>{path}：其 SHA-256 出现在 {n} 条记录中（{numbers}）：一份证书只签发一次，因此除一条外都是签发后被复制进登记册的</translation>
+    </message>
+    <message>
+        <source>{path}: NOT in the register (no issued DCC has its SHA-256: altered, or from another register)</source>
+        <translation>{path}：不在登记册中（没有已签发的 DCC 具有此 SHA-256：已被改动，或来自另一登记册）</translation>
     </message>
     <message>
         <source>{path}: NOT in the register (no issued PDF has its SHA-256: altered, a draft, or from another register)</source>
@@ -2682,6 +2788,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>not stated</source>
+        <extracomment>a column&apos;s unit by its name&apos;s ending: D-SI unit a printed unit symbol (a table cell&apos;s ending) → D-SI unit seconds of arc in one of each angle unit (a parameter&apos;s U printed in another unit) PTB&apos;s basic refTypes for a column&apos;s role</extracomment>
         <translation>未注明</translation>
     </message>
     <message>
@@ -2819,7 +2926,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Certificate</source>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
         <translation>证书</translation>
     </message>
     <message>
@@ -2833,6 +2939,26 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>A specimen for training or demonstration: watermarked SPECIMEN, numbered SPECIMEN-…, not a certificate, and recorded in no register</source>
         <translation>用于培训或演示的样本：带“样本”水印，编号为 SPECIMEN-…，不是证书，不记录在任何登记册中</translation>
+    </message>
+    <message>
+        <source>Also write the digital certificate (DCC, XML)</source>
+        <translation>同时写出数字证书（DCC，XML）</translation>
+    </message>
+    <message>
+        <source>Beside the PDF, the same certificate as a PTB Digital Calibration Certificate (DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml</source>
+        <translation>在 PDF 旁写出同一份证书的 PTB 数字校准证书（DCC 3.3.0 XML，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
+    </message>
+    <message>
+        <source>empty: the DCC is not validated</source>
+        <translation>为空：数字证书不经校验</translation>
+    </message>
+    <message>
+        <source>The folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is validated against it and not written when invalid</source>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：每份数字证书都据此校验，不合格则不写出</translation>
+    </message>
+    <message>
+        <source>DCC schema folder</source>
+        <translation>DCC 模式文件夹</translation>
     </message>
     <message>
         <source>Certificates are checked (Checked by / 核验员)</source>
@@ -2875,6 +3001,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>删除标准</translation>
     </message>
     <message>
+        <source>Read from DCC…</source>
+        <translation>从 DCC 读取…</translation>
+    </message>
+    <message>
+        <source>Fill the selected standard&apos;s certificate number, uncertainty and due date from its digital calibration certificate (DCC XML); a new row when none is selected</source>
+        <translation>从所选计量标准的数字校准证书（DCC XML）填入其证书编号、不确定度和有效期至；未选中时新增一行</translation>
+    </message>
+    <message>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -2885,6 +3019,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Lab, number scheme, standards, people and decision rule become the start of every new certificate</source>
         <translation>实验室、编号规则、计量标准、人员和判定规则将作为每份新证书的起始内容</translation>
+    </message>
+    <message>
+        <source>Standard&apos;s digital calibration certificate</source>
+        <translation>计量标准的数字校准证书</translation>
+    </message>
+    <message>
+        <source>DCC (*.xml);;All files (*)</source>
+        <translation>DCC (*.xml);;所有文件 (*)</translation>
     </message>
     <message>
         <source> (and {count} more, marked red)</source>
@@ -3039,8 +3181,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>载入多面棱体证书…</translation>
     </message>
     <message>
-        <source>Fill the deviation column from a CSV/XLSX with position,deviation_arcsec</source>
-        <translation>从含 position,deviation_arcsec 的 CSV/XLSX 填写偏差列</translation>
+        <source>Fill the deviation column from a CSV/XLSX with position,deviation_arcsec, or from the polygon&apos;s digital calibration certificate (DCC, .xml)</source>
+        <translation>从含 position,deviation_arcsec 的 CSV/XLSX，或从多面棱体的数字校准证书（DCC，.xml）填入偏差列</translation>
     </message>
     <message>
         <source>Error over the circle</source>
@@ -3067,8 +3209,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>多面棱体校准证书</translation>
     </message>
     <message>
-        <source>Deviations (*.csv *.txt *.xlsx);;All files (*)</source>
-        <translation>偏差 (*.csv *.txt *.xlsx);;所有文件 (*)</translation>
+        <source>Deviations (*.csv *.txt *.xlsx);;Digital calibration certificate (*.xml);;All files (*)</source>
+        <translation>偏差 (*.csv *.txt *.xlsx);;数字校准证书 (*.xml);;所有文件 (*)</translation>
     </message>
     <message>
         <source>Export compensation table…</source>
@@ -4312,6 +4454,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>同时写出校准证书</translation>
     </message>
     <message>
+        <source>with --certificate: also write the certificate as a digital calibration certificate (PTB DCC 3.3.0 XML) with the PDF embedded</source>
+        <translation>与 --certificate 一起使用：同时将证书写成数字校准证书（PTB DCC 3.3.0 XML），并内嵌 PDF</translation>
+    </message>
+    <message>
+        <source>polygon: the polygon&apos;s digital calibration certificate (DCC): its face deviations replace the readings&apos; deviation column and its U enters the budget</source>
+        <translation>多面棱体：多面棱体的数字校准证书（DCC）：其各面偏差替换读数中的偏差列，其 U 计入不确定度评定</translation>
+    </message>
+    <message>
+        <source>the folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): the DCC is validated against it and not written when invalid (else ANGLEBENCH_DCC_SCHEMA)</source>
+        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：数字证书据此校验，不合格则不写出（否则使用 ANGLEBENCH_DCC_SCHEMA）</translation>
+    </message>
+    <message>
         <source>certificate metadata (lab, customer, item, standards…); without it the certificate is marked DRAFT</source>
         <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
     </message>
@@ -4448,12 +4602,20 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>anglebench analyze：--columns：“{part}” 不是 KEY=HEADER 的形式</translation>
     </message>
     <message>
+        <source>anglebench analyze: --reference-dcc is for the polygon workbench</source>
+        <translation>anglebench analyze：--reference-dcc 用于多面棱体工作台</translation>
+    </message>
+    <message>
         <source>anglebench analyze: --compare-after is for the positioning workbench</source>
         <translation>anglebench analyze：--compare-after 仅用于定位工作台</translation>
     </message>
     <message>
         <source>anglebench analyze: --table: {workbench} has no correction table</source>
         <translation>anglebench analyze：--table：{workbench}没有修正表</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: --dcc needs --certificate (the DCC embeds the PDF certificate)</source>
+        <translation>anglebench analyze：--dcc 需要 --certificate（数字证书内嵌 PDF 证书）</translation>
     </message>
     <message>
         <source> (and {n} more bad cell(s))</source>
@@ -4480,12 +4642,24 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>细分器查找表（{chip}，{entries} 项、{bits} 位，LSB 为一个周期的 {lsb}）已写入 {path}：预测残余误差最大 {worst} {unit}，RMS {rms} {unit}（仅表项数所限 {ideal} {unit}；无表时 {without} {unit}）</translation>
     </message>
     <message>
+        <source>anglebench analyze: --reference-dcc: {text}</source>
+        <translation>anglebench analyze：--reference-dcc：{text}</translation>
+    </message>
+    <message>
         <source>{path}: not a JSON file ({reason})</source>
         <translation>{path}：不是 JSON 文件（{reason}）</translation>
     </message>
     <message>
         <source>{path}: not a certificate&apos;s details (nested too deep or a number too long)</source>
         <translation>{path}：不是证书信息（嵌套过深或数字过长）</translation>
+    </message>
+    <message>
+        <source>DCC of {number} written to {path}</source>
+        <translation>{number} 的数字证书已写入 {path}</translation>
+    </message>
+    <message>
+        <source>{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or ANGLEBENCH_DCC_SCHEMA)</source>
+        <translation>{path}：数字证书未经校验（未给出模式文件夹：--dcc-schema DIR 或 ANGLEBENCH_DCC_SCHEMA）</translation>
     </message>
     <message>
         <source>SPECIMEN {number} written to {path}: these are the bundled example details (&quot;example&quot;: true); it is watermarked SPECIMEN, is not a certificate and was recorded in no register</source>
@@ -4506,6 +4680,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
         <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: {reason}; neither the certificate nor its DCC was written</source>
+        <translation>anglebench analyze：{reason}；证书及其数字证书均未写出</translation>
     </message>
     <message>
         <source>anglebench analyze: cannot write: {reason}</source>
@@ -5138,6 +5316,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>no certificate {number} in the register</source>
         <translation>登记册中没有证书 {number}</translation>
+    </message>
+    <message>
+        <source>certificate {number} was issued without a digital calibration certificate (DCC)</source>
+        <translation>证书 {number} 签发时没有数字校准证书（DCC）</translation>
+    </message>
+    <message>
+        <source>the stored DCC of {number} no longer matches the SHA-256 recorded when it was issued: it was changed or removed in the database; it is not exported</source>
+        <translation>{number} 所存的 DCC 与签发时记录的 SHA-256 不再相符：它在数据库中被改动或删除；不予导出</translation>
     </message>
     <message>
         <source>record {number}: it has no place in the hash chain (inserted after issue)</source>
@@ -6242,16 +6428,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>校准所在的委托方现场</translation>
     </message>
     <message>
-        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only)</source>
-        <translation>要核验的 PDF（不给出时：只核验登记册的哈希链和所存 PDF）</translation>
-    </message>
-    <message>
         <source>CHANGED AFTER ISSUE: {problem}</source>
         <translation>签发后被改动：{problem}</translation>
-    </message>
-    <message>
-        <source>register: hash chain intact over {n} record(s), every stored PDF matches its SHA-256; chain head {head}</source>
-        <translation>登记册：{n} 条记录的哈希链完整，所存每个 PDF 与其 SHA-256 相符；链头 {head}</translation>
     </message>
     <message>
         <source>{path}: {number} is no longer valid: superseded by {by} (see &apos;anglebench register show {by}&apos;)</source>
@@ -6316,6 +6494,38 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>issued, superseded by none</source>
         <translation>已签发，未被取代</translation>
+    </message>
+    <message>
+        <source>record {number}: it carries a DCC SHA-256, but it was issued without a DCC (its chain does not cover one): added after issue</source>
+        <translation>记录 {number}：带有 DCC 的 SHA-256，但签发时没有 DCC（其哈希链不包含 DCC）：签发后被添加</translation>
+    </message>
+    <message>
+        <source>record {number}: its DCC was issued and recorded (SHA-256 {sha}…) but is no longer stored: deleted after issue</source>
+        <translation>记录 {number}：其 DCC 已签发并记录（SHA-256 {sha}…），但已不在登记册中：签发后被删除</translation>
+    </message>
+    <message>
+        <source>record {number}: a DCC is stored, but none was recorded at issue: added after issue</source>
+        <translation>记录 {number}：存有 DCC，但签发时未记录 DCC：签发后被添加</translation>
+    </message>
+    <message>
+        <source>record {number}: the stored DCC does not match the SHA-256 recorded at issue</source>
+        <translation>记录 {number}：所存的 DCC 与签发时记录的 SHA-256 不符</translation>
+    </message>
+    <message>
+        <source>record {number}: its DCC cannot be read: {reason}</source>
+        <translation>记录 {number}：其 DCC 无法读取：{reason}</translation>
+    </message>
+    <message>
+        <source>record {number}: the PDF embedded in its DCC is not the stored PDF ({n} PDF(s) embedded): the two forms of the certificate differ</source>
+        <translation>记录 {number}：其 DCC 中嵌入的 PDF 不是所存的 PDF（嵌入 {n} 份 PDF）：证书的两种形式不一致</translation>
+    </message>
+    <message>
+        <source>record {number}: its DCC&apos;s signature cannot be checked: {reason}</source>
+        <translation>记录 {number}：其 DCC 的签名无法核验：{reason}</translation>
+    </message>
+    <message>
+        <source>record {number}: its DCC&apos;s signature: {reason}</source>
+        <translation>记录 {number}：其 DCC 的签名：{reason}</translation>
     </message>
     <message>
         <source>an issued certificate needs the name of the person who approves it (&quot;Approved by&quot;); without one it can only be written as a draft</source>
@@ -7337,11 +7547,16 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source> — RUN INVALID (closure failed)</source>
+        <extracomment>the window adds a polygon read from its DCC to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does) the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
         <translation> — 测量无效（闭合不合格）</translation>
     </message>
     <message>
         <source>Cannot read certificate</source>
         <translation>无法读取证书</translation>
+    </message>
+    <message>
+        <source>Polygon certificate</source>
+        <translation>多面棱体证书</translation>
     </message>
     <message>
         <source>{path}: the readings have {read} faces (position {position}, row {row}), the reference {faces}: {read} faces against {faces}; choose the polygon&apos;s own reference</source>
@@ -9047,6 +9262,225 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>{windows} windows of {n} period(s)</source>
         <translation>{windows} 个窗口，每个 {n} 个周期</translation>
+    </message>
+    <message>
+        <source>the DCC fails the schema in {folder} and was not issued: {problems}</source>
+        <extracomment>the environment&apos;s schema folder (beside the setting ``dcc_schema_dir`` and --dcc-schema)</extracomment>
+        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
+    </message>
+    <message>
+        <source>the deviation column held other values: they were replaced by those of certificate {id} ({path})</source>
+        <translation>偏差列原有其他值：已替换为证书 {id}（{path}）中的值</translation>
+    </message>
+    <message>
+        <source>{source}: {mb} MB: too large for a calibration certificate</source>
+        <extracomment>the largest DCC read (an embedded PDF makes a few MB; more is no certificate) arcseconds per D-SI angle unit (exact: 1° = 3600&quot;, 1′ = 60&quot;, 1 rad = 648000/π &quot;) micrometres per D-SI length unit (a standard&apos;s U may be a length: gauge blocks, scales)</extracomment>
+        <translation>{source}：{mb} MB：作为校准证书过大</translation>
+    </message>
+    <message>
+        <source>{source}: not an XML document ({reason})</source>
+        <translation>{source}：不是 XML 文档（{reason}）</translation>
+    </message>
+    <message>
+        <source>{source}: the document declares a DTD (entities): a DCC has none; it is not read</source>
+        <translation>{source}：该文档声明了 DTD（实体）：DCC 没有 DTD；不予读取</translation>
+    </message>
+    <message>
+        <source>{source}: not a digital calibration certificate (the root is {tag}, not dcc:digitalCalibrationCertificate of {namespace})</source>
+        <translation>{source}：不是数字校准证书（根元素为 {tag}，而不是 {namespace} 的 dcc:digitalCalibrationCertificate）</translation>
+    </message>
+    <message>
+        <source>{where}: entry {i} &apos;{word}&apos; is not a decimal number</source>
+        <translation>{where}：第 {i} 项“{word}”不是十进制数</translation>
+    </message>
+    <message>
+        <source>{where}: entry {i} &apos;{word}&apos; is out of range</source>
+        <translation>{where}：第 {i} 项“{word}”超出范围</translation>
+    </message>
+    <message>
+        <source>{where}: {m} entries for {n} values</source>
+        <translation>{where}：{n} 个值对应 {m} 项</translation>
+    </message>
+    <message>
+        <source>{where}: no unit</source>
+        <translation>{where}：没有单位</translation>
+    </message>
+    <message>
+        <source>{where}: {m} units for {n} values</source>
+        <translation>{where}：{n} 个值对应 {m} 个单位</translation>
+    </message>
+    <message>
+        <source>{where}: an expanded uncertainty below 0, a coverage factor not above 0 or a coverage probability outside (0, 1]</source>
+        <translation>{where}：扩展不确定度小于 0、包含因子不大于 0，或包含概率不在 (0, 1] 内</translation>
+    </message>
+    <message>
+        <source>{where}: no si:realListXMLList</source>
+        <translation>{where}：没有 si:realListXMLList</translation>
+    </message>
+    <message>
+        <source>{where}: no values</source>
+        <translation>{where}：没有数值</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: the unit {unit} is not an angle (\arcsecond, \arcminute, \degree or \radian are read)</source>
+        <translation>{source}：{where}：单位 {unit} 不是角度单位（可读取 \arcsecond、\arcminute、\degree 或 \radian）</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: &apos;{text}&apos; is not a date</source>
+        <translation>{source}：{where}：“{text}”不是日期</translation>
+    </message>
+    <message>
+        <source>{source}: no dcc:coreData</source>
+        <translation>{source}：没有 dcc:coreData</translation>
+    </message>
+    <message>
+        <source>{source}: no dcc:uniqueIdentifier (the certificate number)</source>
+        <translation>{source}：没有 dcc:uniqueIdentifier（证书编号）</translation>
+    </message>
+    <message>
+        <source>{source}: not a valid DCC 3.3.0 document ({problem})</source>
+        <translation>{source}：不是有效的 DCC 3.3.0 文档（{problem}）</translation>
+    </message>
+    <message>
+        <source>{source}: its signature does not verify: {reason}</source>
+        <translation>{source}：其签名验证失败：{reason}</translation>
+    </message>
+    <message>
+        <source>{source}: signed by {signer}; the document is unchanged since, but the signer was not checked against a trusted certificate</source>
+        <translation>{source}：由 {signer} 签名；文档自签名后未被改动，但签名者未经可信证书核验</translation>
+    </message>
+    <message>
+        <source>{source}: cannot read ({reason})</source>
+        <translation>{source}：无法读取（{reason}）</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} states no due date (no validity statement): check the calibration interval yourself</source>
+        <translation>{source}：证书 {id} 未给出有效期（无有效性声明）：请自行核对校准周期</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} was due for recalibration on {due}, before the measurement on {when}: the calibration had expired</source>
+        <translation>{source}：证书 {id} 应于 {due} 复校，早于 {when} 的测量：校准已过期</translation>
+    </message>
+    <message>
+        <source>{source}: no polygon result found (a dcc:result of refType {reftype} with the face indices and deviations)</source>
+        <translation>{source}：未找到多面棱体结果（refType 为 {reftype}、含面号和偏差的 dcc:result）</translation>
+    </message>
+    <message>
+        <source>{source}: {n} polygon results: which one is the polygon&apos;s is not clear</source>
+        <translation>{source}：有 {n} 个多面棱体结果：无法确定哪一个属于该多面棱体</translation>
+    </message>
+    <message>
+        <source>{source}: the polygon result needs one quantity of refType {index} and one of {deviation} (found {i} and {d})</source>
+        <translation>{source}：多面棱体结果需要一个 refType 为 {index} 的量和一个 refType 为 {deviation} 的量（找到 {i} 个和 {d} 个）</translation>
+    </message>
+    <message>
+        <source>{source}: {i} face indices for {n} deviations</source>
+        <translation>{source}：{n} 个偏差对应 {i} 个面号</translation>
+    </message>
+    <message>
+        <source>{source}: the face indices are not 1 to {n}, each once</source>
+        <translation>{source}：面号不是 1 到 {n} 且各出现一次</translation>
+    </message>
+    <message>
+        <source>{source}: {n} faces: a polygon has 3 or more</source>
+        <translation>{source}：{n} 个面：多面棱体至少有 3 个面</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} gives {n} faces, the readings have {faces}: it is another polygon&apos;s</source>
+        <translation>{source}：证书 {id} 给出 {n} 个面，读数有 {faces} 个面：它是另一个多面棱体的证书</translation>
+    </message>
+    <message>
+        <source>{source}: the face deviations carry no expanded uncertainty (si:expandedMUXMLList): a reference&apos;s deviations are used with their U</source>
+        <translation>{source}：各面偏差没有扩展不确定度（si:expandedMUXMLList）：参考标准的偏差须连同其 U 一起使用</translation>
+    </message>
+    <message>
+        <source>{source}: the faces&apos; uncertainties are stated with different coverage factors or probabilities; AngleBench takes one k for the polygon</source>
+        <translation>{source}：各面的不确定度以不同的包含因子或包含概率给出；AngleBench 对一个多面棱体只取一个 k</translation>
+    </message>
+    <message>
+        <source>{source}: the readings&apos; row {row} measures face {position}; certificate {id} gives faces 1 to {n}: another polygon&apos;s</source>
+        <translation>{source}：读数第 {row} 行测量的是第 {position} 面；证书 {id} 给出第 1 到 {n} 面：是另一个多面棱体的证书</translation>
+    </message>
+    <message>
+        <source>{source}: the readings measure faces up to {read}, certificate {id} gives {n} faces: another polygon&apos;s</source>
+        <translation>{source}：读数测到第 {read} 面，证书 {id} 给出 {n} 个面：是另一个多面棱体的证书</translation>
+    </message>
+    <message>
+        <source>{source}: its uncertainties are in {units}: neither an angle nor a length</source>
+        <extracomment>words that name the polygon among a certificate&apos;s standards (en, zh) the reference a workbench takes from a polygon&apos;s DCC (models.workbench.AcceptsReference)</extracomment>
+        <translation>{source}：其不确定度的单位为 {units}：既不是角度也不是长度</translation>
+    </message>
+    <message>
+        <source>{source}: no result states an expanded uncertainty: the standard&apos;s U is left empty</source>
+        <translation>{source}：没有结果给出扩展不确定度：该计量标准的 U 留空</translation>
+    </message>
+    <message>
+        <source>{where}: the embedded PDF is not base64 ({reason})</source>
+        <translation>{where}：嵌入的 PDF 不是 base64 编码（{reason}）</translation>
+    </message>
+    <message>
+        <source>DCC schema folder {folder}: {file} is missing (PTB&apos;s DCC 3.3.0 schema set is needed: dcc.xsd, si/SI_Format.xsd, si/qudt/quantitykind.xsd, d-sig/xmldsig-core-schema.xsd)</source>
+        <translation>DCC 模式文件夹 {folder}：缺少 {file}（需要 PTB 的 DCC 3.3.0 模式文件：dcc.xsd、si/SI_Format.xsd、si/qudt/quantitykind.xsd、d-sig/xmldsig-core-schema.xsd）</translation>
+    </message>
+    <message>
+        <source>DCC schema folder {folder}: not a usable schema set ({reason})</source>
+        <translation>DCC 模式文件夹 {folder}：不是可用的模式文件（{reason}）</translation>
+    </message>
+    <message>
+        <source>the DCC signing {what} {path} cannot be read ({reason})</source>
+        <translation>DCC 签名{what} {path} 无法读取（{reason}）</translation>
+    </message>
+    <message>
+        <source>a DCC is signed with a private key and its X.509 certificate: both are needed (dcc_signing_key and dcc_signing_certificate, or {key_var} and {cert_var})</source>
+        <translation>DCC 用私钥及其 X.509 证书签名：两者都需要（dcc_signing_key 和 dcc_signing_certificate，或 {key_var} 和 {cert_var}）</translation>
+    </message>
+    <message>
+        <source>key</source>
+        <translation>密钥</translation>
+    </message>
+    <message>
+        <source>certificate</source>
+        <translation>证书</translation>
+    </message>
+    <message>
+        <source>{path}: not a PEM private key</source>
+        <translation>{path}：不是 PEM 私钥</translation>
+    </message>
+    <message>
+        <source>{path}: not a PEM X.509 certificate</source>
+        <translation>{path}：不是 PEM X.509 证书</translation>
+    </message>
+    <message>
+        <source>the DCC to sign is not XML: {reason}</source>
+        <translation>待签名的 DCC 不是 XML：{reason}</translation>
+    </message>
+    <message>
+        <source>the DCC is signed already</source>
+        <translation>该 DCC 已经签名</translation>
+    </message>
+    <message>
+        <source>the DCC cannot be signed with this key and certificate: {reason}</source>
+        <translation>无法用此密钥和证书对 DCC 签名：{reason}</translation>
+    </message>
+    <message>
+        <source>not XML: {reason}</source>
+        <translation>不是 XML：{reason}</translation>
+    </message>
+    <message>
+        <source>the document is not signed</source>
+        <translation>该文档未签名</translation>
+    </message>
+    <message>
+        <source>the document carries {n} signatures; AngleBench checks one enveloped signature</source>
+        <translation>该文档带有 {n} 个签名；AngleBench 只核验一个封装签名</translation>
+    </message>
+    <message>
+        <source>the signature carries no X.509 certificate and no trusted certificate is configured ({var})</source>
+        <translation>签名中没有 X.509 证书，且未配置可信证书（{var}）</translation>
+    </message>
+    <message>
+        <source>the signature does not verify: {reason}</source>
+        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
     </message>
 </context>
 </TS>

@@ -172,7 +172,7 @@ def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys)
     assert "CHANGED AFTER ISSUE" in capsys.readouterr().out
     assert main(["register", "list"]) == 2
     assert "schema version 2 was set back" in capsys.readouterr().err
-    _sql("UPDATE schema_version SET version = 4",
+    _sql("UPDATE schema_version SET version = 5",
          f"DELETE FROM certificates WHERE number = '{numbers[-1]}'")
     assert main(["register", "verify"]) == 1
     out = capsys.readouterr().out
@@ -268,3 +268,81 @@ def test_a_checker_signs_when_the_labs_template_asks_and_show_prints_it(samples_
         number = err.split("Certificate ")[1].split()[0]
         assert main(["register", "show", number]) == 0
         assert "checker: Zhao Min" in capsys.readouterr().out
+
+
+def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
+    """#43: ``register show N --dcc OUT.xml`` writes the DCC issued with the PDF (atomic,
+    guarded like --pdf); a DCC changed in the database is refused and found by verify."""
+    from tests import dcc_documents as t
+
+    meta = CertificateMetadata(approver="Dr. Li", calibration_date="2020-01-01",
+                               item_serial="PG-1")
+    with Register(register_url()) as register:
+        plain = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                               lambda m: f"%PDF {m.certificate_number}".encode())[0].number
+        number = register.issue(IssueRequest("polygon", meta, '{"workbenches": {}}'),
+                                lambda m: f"%PDF {m.certificate_number}".encode(),
+                                render_dcc=lambda m, pdf: t.document(m.certificate_number,
+                                                                     pdf=pdf))[0].number
+        issued = register.dcc(number)
+    out = tmp_path / "out.xml"
+    assert main(["register", "show", number, "--dcc", str(out)]) == 0
+    assert out.read_bytes() == issued and "dcc_sha256" in capsys.readouterr().out
+    assert main(["register", "verify"]) == 0
+    assert "every stored PDF and DCC matches" in capsys.readouterr().out
+    received = tmp_path / "received.xml"
+    received.write_bytes(issued)
+    assert main(["register", "verify", str(received)]) == 0
+    assert f"certificate {number}, issued" in capsys.readouterr().out
+    received.write_bytes(issued.replace(b"</dcc:uniqueIdentifier>", b"X</dcc:uniqueIdentifier>"))
+    assert main(["register", "verify", str(received)]) == 1
+    assert "NOT in the register (no issued DCC has its SHA-256" in capsys.readouterr().out
+    assert main(["register", "export", str(tmp_path / "all.zip")]) == 0
+    with zipfile.ZipFile(tmp_path / "all.zip") as archive:
+        assert archive.read(f"dcc/{number}.xml") == issued
+        assert not any(n.startswith(f"dcc/{plain}") for n in archive.namelist())
+    capsys.readouterr()
+    assert main(["register", "show", plain, "--dcc", str(tmp_path / "none.xml")]) == 2
+    assert "issued without a digital calibration certificate" in capsys.readouterr().err
+    assert main(["register", "show", number, "--dcc", register_url().split("///", 1)[1]]) == 2
+    capsys.readouterr()  # the register itself is never an output
+    _sql(f"UPDATE certificates SET dcc = X'3c782f3e' WHERE number = '{number}'")
+    assert main(["register", "show", number, "--dcc", str(tmp_path / "changed.xml")]) == 2
+    assert "stored DCC of" in capsys.readouterr().err
+    assert not (tmp_path / "changed.xml").exists()
+    assert main(["register", "verify"]) == 1
+    assert "stored DCC does not match" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_an_issued_dcc_is_recorded_signed_and_shown_as_written(samples_dir, tmp_path, capsys,
+                                                                monkeypatch):
+    """#43: ``analyze --certificate --dcc`` through the register: the register stores the DCC
+    written (signed with the lab's key when configured), ``register show --dcc`` gives it
+    back byte for byte, the PDF inside is the PDF issued, and verify checks both."""
+    from models.dcc import signature
+    from models.dcc.reader import embedded_pdfs
+    from tests import dcc_documents as t
+
+    key, cert = t.self_signed(tmp_path)
+    (tmp_path / "lab.key").write_bytes(key)
+    (tmp_path / "lab.pem").write_bytes(cert)
+    monkeypatch.setenv(signature.KEY_ENV_VAR, str(tmp_path / "lab.key"))
+    monkeypatch.setenv(signature.CERT_ENV_VAR, str(tmp_path / "lab.pem"))
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": ""})
+    (tmp_path / "m.json").write_text(json.dumps(meta), encoding="utf-8")
+    pdf, xml = tmp_path / "c.pdf", tmp_path / "c.xml"
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--metadata",
+                 str(tmp_path / "m.json"), "--certificate", str(pdf), "--dcc", str(xml),
+                 "--dcc-schema", str(t.SHARED_DCC)]) == 0
+    err = capsys.readouterr().err
+    number = err.split("Certificate ", 1)[1].split(" issued", 1)[0]
+    t.assert_valid(xml.read_bytes())  # signed, and still valid against the schema
+    assert signature.verify(xml.read_bytes(), cert).problems == ()
+    assert embedded_pdfs(xml.read_bytes()) == [pdf.read_bytes()]
+    assert main(["register", "show", number, "--dcc", str(tmp_path / "again.xml")]) == 0
+    assert (tmp_path / "again.xml").read_bytes() == xml.read_bytes()
+    capsys.readouterr()
+    assert main(["register", "verify"]) == 0
+    assert "every stored PDF and DCC matches" in capsys.readouterr().out

@@ -42,6 +42,8 @@ KEPT = {
     # the encoder interfaces' units (1 Vpp, 11 µApp), HEIDENHAIN's ERN encoders, a stream's
     # TCP link and its tcp:// address (#45)
     "Vpp", "App", "ERN", "TCP", "tcp",
+    # the digital calibration certificate's format, named as PDF and CSV are (#43)
+    "DCC", "XML", "xml",
     # CMC: as CNAS writes it; SPECIMEN-…: the specimens' numbers; IANA and its zone names
     "CMC", "SPECIMEN", "IANA", "Asia", "Shanghai",
 }

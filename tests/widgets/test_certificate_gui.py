@@ -282,3 +282,35 @@ def test_the_checker_switch_is_a_lab_default_and_asks_for_a_checker(qtbot):
     assert fresh.checker_role
     dialog.set_metadata(CertificateMetadata(lab_name="Lab"))
     assert not dialog.checker_role.isChecked()
+
+
+def test_a_standard_is_read_from_its_dcc(qtbot, tmp_path):
+    """#43: *Read from DCC…* fills the selected standard's certificate number, U (with its
+    basis and unit) and due date; an expired or unreadable DCC changes nothing and says why."""
+    from tests import dcc_documents as t
+
+    good = tmp_path / "std.xml"
+    good.write_bytes(t.document("NIM-2026-A17", results=t.standard_results(
+        [0.1, -0.2], r"\arcsecond", [0.25, 0.3]), statements=t.validity(date="2027-06-30")))
+    dialog = CertificateDialog(CertificateMetadata(calibration_date="2026-11-20"))
+    qtbot.addWidget(dialog)
+    dialog.add_standard({"description": "24-face polygon", "serial": "PG-24"})
+    dialog.standards.selectRow(0)
+    assert dialog.read_standard_dcc(str(good))
+    standard = dialog.metadata().standards[0]
+    assert (standard.description, standard.serial, standard.certificate_no) == (
+        "24-face polygon", "PG-24", "NIM-2026-A17")
+    assert (standard.uncertainty, standard.basis, standard.uncertainty_unit,
+            standard.due_date) == (0.3, "U95", "arcsec", "2027-06-30")
+    expired = tmp_path / "old.xml"
+    expired.write_bytes(t.document("OLD-1", statements=t.validity(date="2026-01-31")))
+    dialog.standards.clearSelection()
+    assert not dialog.read_standard_dcc(str(expired))
+    assert "had expired" in dialog.error_label.text() and dialog.standards.rowCount() == 1
+    undated = tmp_path / "undated.xml"
+    undated.write_bytes(t.document("U-1"))
+    assert dialog.read_standard_dcc(str(undated)) and dialog.standards.rowCount() == 2
+    assert "states no due date" in dialog.error_label.text()
+    again = CertificateDialog(dialog.metadata())
+    qtbot.addWidget(again)
+    assert again.metadata() == dialog.metadata()

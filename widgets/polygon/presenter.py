@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import datetime as dt
+from collections.abc import Callable
+
 from models.messages import QT_TR_NOOP, message
 from models.polygon import plots
 from models.polygon.analysis import POLYGON
 from models.polygon.certificate_reader import read_polygon_certificate
 from models.polygon.model import GRADE_ACCURACY_ARCSEC, PolygonResult
 from models.readings.tabular_import import TableImportError
-from widgets.i18n import declared, explained, tr
+from widgets.i18n import declared, explained, tr, translated
 from widgets.polygon.view import PolygonView
 from widgets.workbench_presenter import WorkbenchPresenter
 
@@ -20,6 +23,14 @@ class PolygonPresenter(WorkbenchPresenter):
 
     def __init__(self, view: PolygonView | None = None, parent=None) -> None:
         super().__init__(POLYGON, view, parent)
+        #: the window adds a polygon read from its DCC to this workbench's standards (its U
+        #: enters the budget as a polygon certificate's does)
+        self.reference_standard_found: Callable[[dict], None] = lambda _standard: None
+        #: the folder of the DCC schemas a DCC is validated against ("": not validated)
+        self.dcc_schema_dir: Callable[[], str] = lambda: ""
+        #: what the last certificate loaded said beside its values (a DCC's notes, the
+        #: deviation column's values replaced)
+        self.certificate_notes: list[str] = []
 
     def show_result(self, result: PolygonResult) -> None:
         self.table_model.set_highlight_rows(result.closure_rows)
@@ -32,20 +43,66 @@ class PolygonPresenter(WorkbenchPresenter):
             self.view.append_to_readings_caption(tr(" — RUN INVALID (closure failed)"))
 
     def load_certificate_dialog(self) -> None:
+        from models.dcc.reader import DccError
+        from models.dcc.signature import SigningError
+
         path = self.view.ask_certificate_file()
         if path:
             try:
                 self.load_certificate(path)
-            except TableImportError as exc:
+            except (TableImportError, DccError, SigningError) as exc:
                 self.view.tell(tr("Cannot read certificate"), explained(exc))
+                return
+            if self.certificate_notes:
+                self.view.tell(tr("Polygon certificate"), "\n".join(self.certificate_notes))
 
     def load_certificate(self, path: str) -> int:
         """Fill the deviation column by position (one undo step); returns the cells changed.
+        A .xml file is the polygon's digital calibration certificate (DCC): its deviations
+        replace the column's, and the polygon with its U joins the certificate's standards.
 
-        Raises TableImportError for a bad file and when a position has no deviation.
+        Raises TableImportError for a bad file and when a position has no deviation;
+        DccError for a DCC refused (the reason named).
         """
+        self.certificate_notes = []
+        if str(path).lower().endswith(".xml"):
+            return self._load_dcc(str(path))
         return self._fill_deviations(read_polygon_certificate(path), tr("Load polygon certificate"),
                                      str(path))
+
+    def _load_dcc(self, path: str) -> int:
+        from models.dcc.reader import polygon_standard, read_polygon_dcc
+        from models.dcc.signature import trusted_certificate
+
+        details = self.certificate_details()
+        when = getattr(details, "calibration_date", "") or dt.date.today().isoformat()
+        faces = int(self.settings.get("faces") or 0) or max(self._positions()) or None
+        reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
+                                     faces=faces, trusted_cert=trusted_certificate())
+        column = self.sheet.column_index("polygon_dev_arcsec")
+        position_column = self.sheet.column_index("position")
+        differed = False
+        for row in range(self.sheet.row_count):
+            before = self.sheet.text(row, column).strip()
+            try:
+                position = int(float(self.sheet.text(row, position_column)))
+            except ValueError:
+                continue
+            if before and position in reference.deviations:
+                try:
+                    differed = differed or abs(float(before) - reference.deviations[position]) > 5e-4
+                except ValueError:
+                    differed = True
+        changed = self._fill_deviations(reference.deviations, tr("Load polygon certificate"),
+                                        path, ".6f")
+        self.reference_standard_found(polygon_standard(reference))
+        notes = [translated(n) for n in reference.notes]
+        if differed:
+            notes.insert(0, translated(message(QT_TR_NOOP(
+                "the deviation column held other values: they were replaced by those of "
+                "certificate {id} ({path})"), id=reference.certificate_id, path=path)))
+        self.certificate_notes = notes
+        return changed
 
     def accept_reference(self, reference) -> int:
         """The face deviations another workbench sends (models.workbench.SentReference, from

@@ -90,7 +90,9 @@ class PolygonView(WorkbenchView):
         self.certificate_button = QPushButton()
         live(self.certificate_button.setText, tr("Load polygon certificate…"))
         live(self.certificate_button.setToolTip, tr("Fill the deviation column from a CSV/XLSX "
-                                                    "with position,deviation_arcsec"))
+                                                    "with position,deviation_arcsec, or from "
+                                                    "the polygon's digital calibration "
+                                                    "certificate (DCC, .xml)"))
         self.add_plot_tab(self.error_plot, tr("Error over the circle"))
         self.add_plot_tab(self.sets_plot, tr("Each set"))
         self.add_plot_tab(self.tilt_plot, tr("Vertical readings / tilt"))
@@ -120,7 +122,8 @@ class PolygonView(WorkbenchView):
 
     def ask_certificate_file(self) -> str:
         path, _ = QFileDialog.getOpenFileName(self, tr("Polygon calibration certificate"), "",
-                                              tr("Deviations (*.csv *.txt *.xlsx);;All files (*)"))
+                                              tr("Deviations (*.csv *.txt *.xlsx);;Digital "
+                                                 "calibration certificate (*.xml);;All files (*)"))
         return path
 
     def tell(self, title: str, text: str) -> None:

@@ -1,0 +1,631 @@
+"""DCC in: a reference standard's digital calibration certificate (PTB DCC 3.3.0, D-SI)
+read as its certificate. Pure: lxml only, no Qt.
+
+- :func:`read_polygon_dcc`: a polygon's calibration (the ``anglebench_polygonFaceDeviations``
+  result: face indices 1…N and each face's deviation with its expanded uncertainty), as the
+  polygon workbench takes it in place of the readings' deviation column.
+- :func:`read_standard_dcc`: any standard's certificate (any maker's): its id
+  (``coreData/uniqueIdentifier``), calibration date (``endPerformanceDate``), the largest
+  expanded uncertainty of its results, and its due date when a validity statement gives one.
+
+Every refusal is a :class:`DccError` naming the file and why: the schema (when a folder is
+given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
+\\milli, \\micro or \\nano are converted exactly to arcseconds), a face count that does not
+fit, a signature that does not verify, a calibration that expired before the measurement,
+no polygon result. The XML is parsed with no network, no entity resolution, no DTD and no
+huge-tree mode, and a document that declares a DTD at all is refused: a hostile file can
+neither read local files nor expand entities.
+"""
+
+from __future__ import annotations
+
+import base64
+import binascii
+import datetime as dt
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from models.dcc.vocabulary import (
+    DCC_NAMESPACE,
+    DS_NAMESPACE,
+    REFTYPE_FACE_DEVIATION,
+    REFTYPE_FACE_INDEX,
+    REFTYPE_POLYGON_FACE_DEVIATIONS,
+    REFTYPE_STANDARD_DUE,
+    REFTYPE_VALIDITY,
+    SI_NAMESPACE,
+)
+from models.messages import QT_TR_NOOP, message, reason_of
+
+__all__ = ["ARCSEC_PER_UNIT", "DccError", "PolygonReference", "StandardCertificate",
+           "POLYGON_FACE_DEVIATIONS", "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
+           "place_polygon_standard", "polygon_standard", "read_polygon_dcc",
+           "read_standard_dcc", "replace_face_deviations"]
+
+D = f"{{{DCC_NAMESPACE}}}"
+S = f"{{{SI_NAMESPACE}}}"
+#: the largest DCC read (an embedded PDF makes a few MB; more is no certificate)
+MAX_BYTES = 64 * 1024 * 1024
+
+#: arcseconds per D-SI angle unit (exact: 1° = 3600", 1′ = 60", 1 rad = 648000/π ")
+ARCSEC_PER_UNIT = {r"\arcsecond": 1.0, r"\arcminute": 60.0, r"\degree": 3600.0,
+                   r"\radian": 648000.0 / math.pi}
+_PREFIXES = {"": 1.0, r"\milli": 1e-3, r"\micro": 1e-6, r"\nano": 1e-9}
+#: micrometres per D-SI length unit (a standard's U may be a length: gauge blocks, scales)
+UM_PER_UNIT = {r"\metre": 1e6, r"\milli\metre": 1e3, r"\micro\metre": 1.0, r"\nano\metre": 1e-3}
+_DECIMAL = re.compile(r"[+-]?(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?")
+
+
+class DccError(ValueError):
+    """A DCC that cannot be read as the certificate asked for; the message says why."""
+
+
+@dataclass(frozen=True)
+class PolygonReference:
+    """A polygon's face deviations from its DCC, in arcseconds, face 1…N."""
+
+    deviations: dict[int, float]
+    expanded_uncertainty: dict[int, float]  # U per face (")
+    coverage_factor: float
+    coverage_probability: float
+    certificate_id: str
+    calibration_date: str  # YYYY-MM-DD
+    due_date: str  # YYYY-MM-DD, "" when the DCC states none
+    source: str = ""
+    signer: str = ""  # the signature's certificate subject, "" when unsigned
+    notes: tuple = field(default_factory=tuple)  # what the caller should say (unsigned …)
+
+    @property
+    def faces(self) -> int:
+        return len(self.deviations)
+
+    @property
+    def largest_u(self) -> float:
+        return max(self.expanded_uncertainty.values())
+
+
+@dataclass(frozen=True)
+class StandardCertificate:
+    """What a standards table takes from a standard's DCC."""
+
+    certificate_id: str
+    calibration_date: str
+    due_date: str  # "" when not stated
+    uncertainty: float | None  # the largest expanded U of its results, in ``unit``
+    unit: str  # "arcsec" or "um" (keys of models.quantity.UNITS)
+    coverage_factor: float | None
+    coverage_probability: float | None
+    source: str = ""
+    signer: str = ""
+    notes: tuple = field(default_factory=tuple)
+
+    def as_standard(self) -> dict:
+        """The standards table's fields (a ReferenceStandard's keys): U with its k as U95
+        when k = 2, else as the standard uncertainty U/k (exact either way)."""
+        out: dict = {"certificate_no": self.certificate_id, "due_date": self.due_date}
+        if self.uncertainty is not None:
+            k = self.coverage_factor or 2.0
+            if abs(k - 2.0) < 1e-12:
+                out.update(uncertainty=self.uncertainty, basis="U95")
+            else:
+                out.update(uncertainty=self.uncertainty / k, basis="u")
+            out["uncertainty_unit"] = self.unit
+        return out
+
+
+# -- parsing -----------------------------------------------------------------------------
+def _parser():
+    from lxml import etree
+
+    return etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=False,
+                           load_dtd=False, dtd_validation=False, remove_comments=True)
+
+
+def parse_dcc(data: bytes, source: str = "") -> object:
+    """The document's root element, parsed safely; DccError naming ``source`` for a file
+    that is not XML, too large, or that declares a DTD (a DCC never does: entities, local
+    files and network are never resolved)."""
+    from lxml import etree
+
+    if len(data) > MAX_BYTES:
+        raise DccError(message(QT_TR_NOOP("{source}: {mb} MB: too large for a calibration "
+                                          "certificate"), source=source,
+                               mb=len(data) // (1024 * 1024)))
+    try:
+        root = etree.fromstring(data, _parser())
+    except etree.XMLSyntaxError as exc:
+        raise DccError(message(QT_TR_NOOP("{source}: not an XML document ({reason})"),
+                               source=source, reason=str(exc))) from None
+    docinfo = root.getroottree().docinfo
+    if docinfo.doctype or docinfo.internalDTD is not None or docinfo.externalDTD is not None:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the document declares a DTD (entities): a DCC has none; it is not read"),
+            source=source))
+    if root.tag != f"{D}digitalCalibrationCertificate":
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: not a digital calibration certificate (the root is {tag}, not "
+            "dcc:digitalCalibrationCertificate of {namespace})"), source=source,
+            tag=_local(root.tag), namespace=DCC_NAMESPACE))
+    return root
+
+
+def _local(tag) -> str:
+    return str(tag).rsplit("}", 1)[-1]
+
+
+def _path(element) -> str:
+    """The element's path, for messages (``dcc:measurementResults/…``)."""
+    parts = []
+    while element is not None:
+        parts.append(_local(element.tag))
+        element = element.getparent()
+    return "/".join(reversed(parts))
+
+
+def _has_reftype(element, reftype: str) -> bool:
+    return reftype in (element.get("refType") or "").split()
+
+
+def parse_decimal_list(text: str, where: str = "") -> list[float]:
+    """A D-SI XML list of decimals (blank-separated) as floats; DccError for an entry that
+    is not a finite decimal."""
+    values = []
+    for i, word in enumerate((text or "").split(), 1):
+        if not _DECIMAL.fullmatch(word):
+            raise DccError(message(QT_TR_NOOP("{where}: entry {i} '{word}' is not a decimal "
+                                              "number"), where=where, i=i, word=word[:40]))
+        value = float(word)
+        if not math.isfinite(value):
+            raise DccError(message(QT_TR_NOOP("{where}: entry {i} '{word}' is out of range"),
+                                   where=where, i=i, word=word[:40]))
+        values.append(value)
+    return values
+
+
+def angle_factor(unit: str) -> float | None:
+    """Arcseconds per ``unit`` (a D-SI unit string: \\arcsecond, \\degree, \\micro\\radian …),
+    None when it is no angle unit AngleBench converts."""
+    unit = unit.strip()
+    for prefix, scale in _PREFIXES.items():
+        for name, factor in ARCSEC_PER_UNIT.items():
+            if unit == prefix + name and (not prefix or name == r"\radian"):
+                return scale * factor
+    return None
+
+
+def _broadcast(values: list[float], n: int, where: str) -> list[float]:
+    """A list given once for all (length 1) or once per value (length n)."""
+    if len(values) == n:
+        return values
+    if len(values) == 1:
+        return values * n
+    raise DccError(message(QT_TR_NOOP("{where}: {m} entries for {n} values"), where=where,
+                           m=len(values), n=n))
+
+
+def _units(element, n: int, where: str) -> list[str]:
+    units = (element.findtext(f"{S}unitXMLList") or "").split()
+    if not units:
+        raise DccError(message(QT_TR_NOOP("{where}: no unit"), where=where))
+    if len(units) == 1:
+        return units * n
+    if len(units) != n:
+        raise DccError(message(QT_TR_NOOP("{where}: {m} units for {n} values"), where=where,
+                               m=len(units), n=n))
+    return units
+
+
+@dataclass(frozen=True)
+class _Uncertainty:
+    values: list[float]  # expanded U, in the quantity's unit
+    k: list[float]
+    p: list[float]
+
+
+def _expanded(element, n: int, where: str) -> _Uncertainty | None:
+    """The expanded uncertainty of a si:realListXMLList (or of a si:real, n = 1): D-SI's
+    expandedMU(XMLList), or the deprecated expandedUnc(XMLList)."""
+    for mu, value, k, p in (
+            ("expandedMUXMLList", "valueExpandedMUXMLList", "coverageFactorXMLList",
+             "coverageProbabilityXMLList"),
+            ("expandedUncXMLList", "uncertaintyXMLList", "coverageFactorXMLList",
+             "coverageProbabilityXMLList"),
+            ("expandedMU", "valueExpandedMU", "coverageFactor", "coverageProbability"),
+            ("expandedUnc", "uncertainty", "coverageFactor", "coverageProbability")):
+        found = element.find(f".//{S}{mu}")
+        if found is None:
+            continue
+        here = f"{where}/{mu}"
+        values = _broadcast(parse_decimal_list(found.findtext(f"{S}{value}") or "",
+                                               f"{here}/{value}"), n, f"{here}/{value}")
+        ks = _broadcast(parse_decimal_list(found.findtext(f"{S}{k}") or "", f"{here}/{k}"),
+                        n, f"{here}/{k}")
+        ps = _broadcast(parse_decimal_list(found.findtext(f"{S}{p}") or "", f"{here}/{p}"),
+                        n, f"{here}/{p}")
+        if any(v < 0 for v in values) or any(x <= 0 for x in ks) or any(
+                not 0 < x <= 1 for x in ps):
+            raise DccError(message(QT_TR_NOOP(
+                "{where}: an expanded uncertainty below 0, a coverage factor not above 0 or a "
+                "coverage probability outside (0, 1]"), where=here))
+        return _Uncertainty(values, ks, ps)
+    return None
+
+
+def _real_list(quantity, where: str) -> tuple[list[float], list[str], object]:
+    element = quantity.find(f"{S}realListXMLList")
+    if element is None:
+        raise DccError(message(QT_TR_NOOP("{where}: no si:realListXMLList"), where=where))
+    values = parse_decimal_list(element.findtext(f"{S}valueXMLList") or "",
+                                f"{where}/valueXMLList")
+    if not values:
+        raise DccError(message(QT_TR_NOOP("{where}: no values"), where=where))
+    return values, _units(element, len(values), where), element
+
+
+def _to_arcsec(values: list[float], units: list[str], source: str, where: str) -> list[float]:
+    out = []
+    for value, unit in zip(values, units, strict=True):
+        factor = angle_factor(unit)
+        if factor is None:
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: {where}: the unit {unit} is not an angle (\\arcsecond, \\arcminute, "
+                "\\degree or \\radian are read)"), source=source, where=where, unit=unit))
+        out.append(value * factor)
+    return out
+
+
+def _date(text: str | None, source: str, where: str) -> str:
+    text = (text or "").strip()
+    try:
+        return dt.date.fromisoformat(text[:10]).isoformat() if text else ""
+    except ValueError:
+        raise DccError(message(QT_TR_NOOP("{source}: {where}: '{text}' is not a date"),
+                               source=source, where=where, text=text[:40])) from None
+
+
+def _duration_days(text: str) -> tuple[int, int, int] | None:
+    """(years, months, days) of an xs:duration of whole years, months and days (P1Y, P18M,
+    P1Y6M, P365D); None for any other."""
+    found = re.fullmatch(r"P(?:(\d+)Y)?(?:(\d+)M)?(?:(\d+)D)?", (text or "").strip())
+    if not found or not any(found.groups()):
+        return None
+    return tuple(int(g or 0) for g in found.groups())  # type: ignore[return-value]
+
+
+def _add(date: dt.date, years: int, months: int, days: int) -> dt.date:
+    month = date.month - 1 + months + 12 * years
+    year, month = date.year + month // 12, month % 12 + 1
+    import calendar
+
+    day = min(date.day, calendar.monthrange(year, month)[1])
+    return dt.date(year, month, day) + dt.timedelta(days=days)
+
+
+def _core(root, source: str) -> tuple[str, str]:
+    core = root.find(f"{D}administrativeData/{D}coreData")
+    if core is None:
+        raise DccError(message(QT_TR_NOOP("{source}: no dcc:coreData"), source=source))
+    certificate_id = (core.findtext(f"{D}uniqueIdentifier") or "").strip()
+    if not certificate_id:
+        raise DccError(message(QT_TR_NOOP("{source}: no dcc:uniqueIdentifier (the certificate "
+                                          "number)"), source=source))
+    return certificate_id, _date(core.findtext(f"{D}endPerformanceDate"), source,
+                                 "coreData/endPerformanceDate")
+
+
+def _due_date(root, calibration_date: str, source: str) -> str:
+    """The due date a validity statement gives: its dcc:date, or the calibration date plus
+    its dcc:period; "" when no statement gives one."""
+    statements = root.findall(f"{D}administrativeData/{D}statements/{D}statement")
+    for statement in statements:
+        reftypes = (statement.get("refType") or "").split()
+        if not (REFTYPE_VALIDITY in reftypes or REFTYPE_STANDARD_DUE in reftypes
+                or any("validity" in r.lower() or "recalibration" in r.lower()
+                       for r in reftypes)):
+            continue
+        date = _date(statement.findtext(f"{D}date"), source, "statement/date")
+        if date:
+            return date
+        period = _duration_days(statement.findtext(f"{D}period") or "")
+        if period and calibration_date:
+            return _add(dt.date.fromisoformat(calibration_date), *period).isoformat()
+    return ""
+
+
+def _check_schema(data: bytes, schema_dir: str | Path | None, source: str) -> None:
+    if not schema_dir:
+        return
+    problems = _schema_problems(data, Path(schema_dir))
+    if problems:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: not a valid DCC 3.3.0 document ({problem})"), source=source,
+            problem=problems[0]))
+
+
+def _schema_problems(data: bytes, folder: Path) -> list[str]:
+    """The schema's objections to ``data`` (element path and reason), from the schema set in
+    ``folder`` read offline (models/dcc/schema.py, the one the writer validates with)."""
+    from models.dcc.schema import DccSchemaError, validate
+
+    try:
+        return validate(data, folder)
+    except DccSchemaError as exc:
+        raise DccError(reason_of(exc)) from None
+
+
+def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
+                      ) -> tuple[object, str, tuple]:
+    """The root to read (what the signature covers) and the signer; DccError when a
+    signature is there and does not verify. Unsigned: the root as parsed."""
+    if root.find(f"{{{DS_NAMESPACE}}}Signature") is None and root.find(
+            f".//{{{DS_NAMESPACE}}}Signature") is None:
+        return root, "", ()
+    from models.dcc.signature import verify
+
+    check = verify(data, trusted_cert)
+    if check.problems:
+        raise DccError(message(QT_TR_NOOP("{source}: its signature does not verify: {reason}"),
+                               source=source, reason=check.problems[0]))
+    signed = parse_dcc(check.signed_xml, source) if check.signed_xml else root
+    notes = () if check.trusted else (message(QT_TR_NOOP(
+        "{source}: signed by {signer}; the document is unchanged since, but the signer was "
+        "not checked against a trusted certificate"), source=source,
+        signer=check.signer or "?"),)
+    return signed, check.signer, notes
+
+
+def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[object, str, str, tuple]:
+    source = str(path)
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise DccError(message(QT_TR_NOOP("{source}: cannot read ({reason})"), source=source,
+                               reason=exc.strerror or str(exc))) from None
+    root = parse_dcc(data, source)
+    _check_schema(data, schema_dir, source)
+    root, signer, notes = _verify_signature(data, root, trusted_cert, source)
+    return root, source, signer, notes
+
+
+def _check_due(due_date: str, measurement_date: str | dt.date | None, source: str,
+               certificate_id: str) -> tuple:
+    if not due_date:
+        return (message(QT_TR_NOOP("{source}: certificate {id} states no due date (no "
+                                   "validity statement): check the calibration interval "
+                                   "yourself"), source=source, id=certificate_id),)
+    if measurement_date:
+        when = (measurement_date.isoformat() if isinstance(measurement_date, dt.date)
+                else str(measurement_date))
+        if due_date < when:
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: certificate {id} was due for recalibration on {due}, before the "
+                "measurement on {when}: the calibration had expired"), source=source,
+                id=certificate_id, due=due_date, when=when))
+    return ()
+
+
+# -- a polygon's certificate -------------------------------------------------------------
+def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
+                     measurement_date: str | dt.date | None = None,
+                     faces: int | None = None,
+                     trusted_cert: bytes | None = None) -> PolygonReference:
+    """A polygon's face deviations and their U (arcseconds) from its DCC. ``faces``: the
+    readings' face count (refused when the DCC's differs); ``measurement_date``: refused
+    when the calibration was due before it. DccError naming the file and why."""
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    certificate_id, calibration_date = _core(root, source)
+    results = [r for r in root.iter(f"{D}result")
+               if _has_reftype(r, REFTYPE_POLYGON_FACE_DEVIATIONS)]
+    if not results:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: no polygon result found (a dcc:result of refType {reftype} with the face "
+            "indices and deviations)"), source=source, reftype=REFTYPE_POLYGON_FACE_DEVIATIONS))
+    if len(results) > 1:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: {n} polygon results: which one is the polygon's is not clear"),
+            source=source, n=len(results)))
+    result = results[0]
+    quantities = list(result.iter(f"{D}quantity"))
+    index_q = [q for q in quantities if _has_reftype(q, REFTYPE_FACE_INDEX)]
+    deviation_q = [q for q in quantities if _has_reftype(q, REFTYPE_FACE_DEVIATION)]
+    if len(index_q) != 1 or len(deviation_q) != 1:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the polygon result needs one quantity of refType {index} and one of "
+            "{deviation} (found {i} and {d})"), source=source, index=REFTYPE_FACE_INDEX,
+            deviation=REFTYPE_FACE_DEVIATION, i=len(index_q), d=len(deviation_q)))
+    where_i, where_d = _path(index_q[0]), _path(deviation_q[0])
+    indices, _units_i, _ = _real_list(index_q[0], where_i)
+    values, units, element = _real_list(deviation_q[0], where_d)
+    n = len(values)
+    if len(indices) != n:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: {i} face indices for {n} deviations"), source=source, i=len(indices),
+            n=n))
+    if any(i != round(i) for i in indices) or sorted(int(i) for i in indices) != list(
+            range(1, n + 1)):
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the face indices are not 1 to {n}, each once"), source=source, n=n))
+    if n < 3:
+        raise DccError(message(QT_TR_NOOP("{source}: {n} faces: a polygon has 3 or more"),
+                               source=source, n=n))
+    if faces and faces != n:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id} gives {n} faces, the readings have {faces}: it is "
+            "another polygon's"), source=source, id=certificate_id, n=n, faces=faces))
+    arcsec = _to_arcsec(values, units, source, where_d)
+    u = _expanded(element, n, where_d)
+    if u is None:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the face deviations carry no expanded uncertainty (si:expandedMUXMLList): "
+            "a reference's deviations are used with their U"), source=source))
+    u_arcsec = [abs(x) for x in _to_arcsec(u.values, units, source, where_d)]
+    if len(set(u.k)) > 1 or len(set(u.p)) > 1:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the faces' uncertainties are stated with different coverage factors or "
+            "probabilities; AngleBench takes one k for the polygon"), source=source))
+    due_date = _due_date(root, calibration_date, source)
+    notes = notes + _check_due(due_date, measurement_date, source, certificate_id)
+    faces_of = [int(i) for i in indices]
+    return PolygonReference(
+        dict(zip(faces_of, arcsec, strict=True)), dict(zip(faces_of, u_arcsec, strict=True)),
+        u.k[0], u.p[0], certificate_id, calibration_date, due_date, source, signer, notes)
+
+
+def replace_face_deviations(rows: list[list[str]], position_index: int, deviation_index: int,
+                            reference: PolygonReference) -> tuple[list[list[str]], bool]:
+    """The readings' rows with each face's deviation cell replaced by the reference's (by
+    the position column), and whether the column held other values before (typed values
+    that differ by more than 0.0005"). DccError when a position is no face of the reference
+    or the readings' face count differs."""
+    out, differed, seen = [], False, set()
+    for number, row in enumerate(rows, 1):
+        row = list(row)
+        text = row[position_index].strip() if position_index < len(row) else ""
+        if not text:
+            out.append(row)
+            continue
+        try:
+            position = int(float(text))
+        except ValueError:
+            out.append(row)  # the parser names the bad cell
+            continue
+        if position not in reference.deviations:
+            raise DccError(message(QT_TR_NOOP(
+                "{source}: the readings' row {row} measures face {position}; certificate {id} "
+                "gives faces 1 to {n}: another polygon's"), source=reference.source, row=number,
+                position=position, id=reference.certificate_id, n=reference.faces))
+        seen.add(position)
+        before = row[deviation_index].strip()
+        value = reference.deviations[position]
+        if before:
+            try:
+                differed = differed or abs(float(before) - value) > 5e-4
+            except ValueError:
+                differed = True
+        row[deviation_index] = f"{value:.6f}"
+        out.append(row)
+    if seen and max(seen) != reference.faces:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: the readings measure faces up to {read}, certificate {id} gives {n} "
+            "faces: another polygon's"), source=reference.source, read=max(seen),
+            id=reference.certificate_id, n=reference.faces))
+    return out, differed
+
+
+def polygon_standard(reference: PolygonReference) -> dict:
+    """The polygon as a row of the standards table (a ReferenceStandard's fields): its
+    largest face U (exact with its k: U95 when k = 2, else u = U/k), per reading — or per
+    face from face 1 when the DCC states face 1 as exactly 0 with no uncertainty (its
+    deviations are then from face 1)."""
+    k = reference.coverage_factor
+    from_face_1 = (reference.deviations.get(1) == 0.0
+                   and reference.expanded_uncertainty.get(1) == 0.0)
+    standard = {"description": "polygon (face deviations from its DCC)",
+                "certificate_no": reference.certificate_id,
+                "applies_to": "from face 1" if from_face_1 else "reading",
+                "uncertainty_unit": "arcsec", "due_date": reference.due_date}
+    if abs(k - 2.0) < 1e-12:
+        standard.update(uncertainty=reference.largest_u, basis="U95")
+    else:
+        standard.update(uncertainty=reference.largest_u / k, basis="u")
+    return standard
+
+
+#: words that name the polygon among a certificate's standards (en, zh)
+_POLYGON_WORDS = re.compile(r"polygon|多面棱体|棱体", re.IGNORECASE)
+#: the reference a workbench takes from a polygon's DCC (models.workbench.AcceptsReference)
+POLYGON_FACE_DEVIATIONS = "polygon face deviations"
+
+
+def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
+    """The standards (ReferenceStandard dicts) with the polygon read from its DCC in place:
+    it replaces the standard with its certificate number, else the one whose description
+    names a polygon (keeping that one's description and serial: the same polygon, now
+    with its DCC's figures), else it is added. The polygon's U thus enters the budget once."""
+    out = [dict(s) for s in standards]
+    number = standard.get("certificate_no", "")
+    for match in (lambda s: number and s.get("certificate_no") == number,
+                  lambda s: _POLYGON_WORDS.search(str(s.get("description", ""))) is not None):
+        for i, old in enumerate(out):
+            if match(old):
+                kept = {k: old[k] for k in ("description", "serial") if old.get(k)}
+                out[i] = {**standard, **kept}
+                return out
+    return [*out, dict(standard)]
+
+
+# -- any standard's certificate ----------------------------------------------------------
+def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
+                      measurement_date: str | dt.date | None = None,
+                      trusted_cert: bytes | None = None) -> StandardCertificate:
+    """A standard's certificate id, calibration date, due date and U from its DCC (any
+    maker's): U is the largest expanded uncertainty of its results, in arcseconds (an angle)
+    or micrometres (a length); its k and p beside it. DccError naming the file and why."""
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    certificate_id, calibration_date = _core(root, source)
+    found: list[tuple[float, str, float, float]] = []  # (U, unit key, k, p)
+    refused: list[str] = []
+    results = root.find(f"{D}measurementResults")
+    for element in ([] if results is None else results.iter(f"{S}real", f"{S}realListXMLList")):
+        where = _path(element)
+        is_list = element.tag == f"{S}realListXMLList"
+        if is_list:
+            values = parse_decimal_list(element.findtext(f"{S}valueXMLList") or "",
+                                        f"{where}/valueXMLList")
+            units = _units(element, len(values), where) if values else []
+        else:
+            values = parse_decimal_list(element.findtext(f"{S}value") or "", f"{where}/value")
+            units = [(element.findtext(f"{S}unit") or "").strip()] * len(values)
+        if not values:
+            continue
+        u = _expanded(element, len(values), where)
+        if u is None:
+            continue
+        for value, unit, k, p in zip(u.values, units, u.k, u.p, strict=True):
+            factor = angle_factor(unit)
+            if factor is not None:
+                found.append((abs(value) * factor, "arcsec", k, p))
+            elif unit in UM_PER_UNIT:
+                found.append((abs(value) * UM_PER_UNIT[unit], "um", k, p))
+            else:
+                refused.append(unit)
+    kinds = {unit for _, unit, _, _ in found}
+    if len(kinds) > 1:  # an angle standard with a length too: the angle is what we use
+        found = [f for f in found if f[1] == "arcsec"]
+    if not found and refused:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: its uncertainties are in {units}: neither an angle nor a length"),
+            source=source, units=", ".join(sorted(set(refused)))))
+    due_date = _due_date(root, calibration_date, source)
+    notes = notes + _check_due(due_date, measurement_date, source, certificate_id)
+    if not found:
+        notes = notes + (message(QT_TR_NOOP(
+            "{source}: no result states an expanded uncertainty: the standard's U is left "
+            "empty"), source=source),)
+        return StandardCertificate(certificate_id, calibration_date, due_date, None, "",
+                                   None, None, source, signer, notes)
+    largest = max(found, key=lambda f: f[0] / f[2])  # the largest standard uncertainty
+    return StandardCertificate(certificate_id, calibration_date, due_date, largest[0],
+                               largest[1], largest[2], largest[3], source, signer, notes)
+
+
+# -- the issued PDF inside ---------------------------------------------------------------
+def embedded_pdfs(data: bytes) -> list[bytes]:
+    """Every PDF the DCC embeds (dcc:document, or any byteData/file of mime type
+    application/pdf), decoded; DccError when the document cannot be read."""
+    root = parse_dcc(data, "DCC")
+    out = []
+    for element in root.iter(f"{D}document", f"{D}byteData", f"{D}file",
+                             f"{D}descriptionData"):
+        if (element.findtext(f"{D}mimeType") or "").strip().lower() != "application/pdf":
+            continue
+        try:
+            out.append(base64.b64decode("".join((element.findtext(f"{D}dataBase64") or "")
+                                                .split()), validate=True))
+        except (binascii.Error, ValueError) as exc:
+            raise DccError(message(QT_TR_NOOP("{where}: the embedded PDF is not base64 "
+                                              "({reason})"), where=_path(element),
+                                   reason=reason_of(exc))) from None
+    return out

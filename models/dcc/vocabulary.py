@@ -1,0 +1,63 @@
+"""The names AngleBench's digital calibration certificates (PTB DCC 3.3.0, D-SI 2.2.1) use:
+namespaces, the schema version and the refTypes. The writer (DCC out) and the reader (DCC in:
+a polygon's face deviations, a standard's certificate) both import them from here, so a
+document AngleBench writes is one AngleBench reads.
+
+refTypes: PTB's published basic ones where a notion has one (``basic_nominalValue``,
+``basic_measuredValue``, ``basic_measurementError``, ``basic_referenceValue``); the project's
+own carry the prefix ``anglebench_`` and are declared in the document's
+``dcc:refTypeDefinitions`` under :data:`ANGLEBENCH_REFTYPE_NAMESPACE` (a placeholder URL under
+the reserved ``example`` domain until the laboratory publishes its own).
+"""
+
+from __future__ import annotations
+
+DCC_NAMESPACE = "https://ptb.de/dcc"
+DCC_PREFIX = "dcc"
+SI_NAMESPACE = "https://ptb.de/si"
+SI_PREFIX = "si"
+DS_NAMESPACE = "http://www.w3.org/2000/09/xmldsig#"
+SCHEMA_VERSION = "3.3.0"
+NSMAP = {DCC_PREFIX: DCC_NAMESPACE, SI_PREFIX: SI_NAMESPACE}
+
+ANGLEBENCH_REFTYPE_NAMESPACE = "https://anglebench.example/dcc/reftypes"
+ANGLEBENCH_REFTYPE_PREFIX = "anglebench_"
+ANGLEBENCH_REFTYPE_RELEASE = "1"
+
+# PTB's published basic refTypes (DCC refType list, "basic" namespace)
+PTB_NOMINAL_VALUE = "basic_nominalValue"
+PTB_MEASURED_VALUE = "basic_measuredValue"
+PTB_MEASUREMENT_ERROR = "basic_measurementError"
+PTB_REFERENCE_VALUE = "basic_referenceValue"
+
+# Polygon face deviations: the polygon workbench's reference polygon and the
+# cross-calibration workbench's polygon result. One dcc:result of this refType holding a
+# dcc:list with the two quantities below; the face count is the lists' length.
+REFTYPE_POLYGON_FACE_DEVIATIONS = "anglebench_polygonFaceDeviations"
+REFTYPE_FACE_INDEX = "anglebench_faceIndex"  # si:realListXMLList 1..N, unit \one
+REFTYPE_FACE_DEVIATION = "anglebench_faceDeviation"  # \arcsecond, with si:expandedMUXMLList
+FACE_INDEX_UNIT = r"\one"
+FACE_DEVIATION_UNIT = r"\arcsecond"
+
+# The project's own refTypes (declared in dcc:refTypeDefinitions of every document)
+REFTYPE_CALIBRATION_CERTIFICATE = "anglebench_calibrationCertificate"
+REFTYPE_TEST_REPORT = "anglebench_testReport"
+REFTYPE_NOT_A_CALIBRATION = "anglebench_notACalibration"
+REFTYPE_CONFORMITY = "anglebench_conformity"
+REFTYPE_TRACEABILITY = "anglebench_traceability"
+REFTYPE_MEASURAND = "anglebench_measurand"
+REFTYPE_VALIDITY = "anglebench_validity"
+REFTYPE_ISSUED_PDF = "anglebench_issuedPdf"
+REFTYPE_SETUP_PARAMETERS = "anglebench_setupParameters"
+REFTYPE_SUMMARY = "anglebench_summary"
+REFTYPE_BUDGET = "anglebench_uncertaintyBudget"
+REFTYPE_CURVE = "anglebench_curve"
+REFTYPE_STANDARD_U = "anglebench_standardExpandedUncertainty"
+REFTYPE_STANDARD_DUE = "anglebench_standardDueDate"
+REFTYPE_CERTIFICATE_ID = "anglebench_certificateId"
+REFTYPE_TEMPERATURE = "anglebench_temperature"
+REFTYPE_OPERATOR = "anglebench_operator"
+REFTYPE_APPROVER = "anglebench_approver"
+
+LANGUAGES = ("en", "zh")
+MANDATORY_LANGUAGES = ("en",)

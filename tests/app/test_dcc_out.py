@@ -1,0 +1,411 @@
+"""DCC out (#43): every workbench's sample issued with --dcc is a valid PTB DCC 3.3.0 document
+carrying the PDF's number, the PDF itself byte for byte, and every curve's points with their
+U, k and p — the same figures the JSON gives; an invalid document is refused naming the
+element; the golden files pin each sample's document.
+
+The schema set is PTB's (../shared/dcc beside the repository, or ANGLEBENCH_DCC_SCHEMA);
+the tests that validate are skipped, saying so, where it is absent.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+from lxml import etree
+
+from app.main import main
+from models.dcc import vocabulary as v
+from models.dcc.schema import validate
+
+pytestmark = pytest.mark.slow  # each sample prints a certificate
+
+ROOT = Path(__file__).resolve().parents[2]
+NS = {"dcc": v.DCC_NAMESPACE, "si": v.SI_NAMESPACE}
+GOLDEN = Path(__file__).resolve().parent / "dcc_golden"
+REGENERATE = os.environ.get("ANGLEBENCH_REGENERATE_DCC_GOLDEN") == "1"
+
+
+def _schema_dir() -> Path | None:
+    explicit = os.environ.get("ANGLEBENCH_DCC_SCHEMA")
+    if explicit:
+        return Path(explicit)
+    for parent in ROOT.parents:  # ../shared/dcc of the checkout (of a worktree: further up)
+        if (parent / "shared" / "dcc" / "dcc.xsd").is_file():
+            return parent / "shared" / "dcc"
+    return None
+
+
+SCHEMA = _schema_dir()
+needs_schema = pytest.mark.skipif(SCHEMA is None, reason="PTB's DCC schema set (../shared/dcc) "
+                                                        "is not beside the repository")
+
+#: (case, workbench, readings, details, extra options)
+CASES = {
+    "theodolite": ("theodolite", "theodolite_sample.csv", "certificate_theodolite.json", ()),
+    "polygon": ("polygon", "polygon_sample.csv", "certificate_polygon.json", ()),
+    "fringe": ("fringe", "fringe_sample.csv", "certificate_fringe.json", ()),
+    "positioning": ("positioning", "positioning_sample.csv", "certificate_positioning.json", ()),
+    "crosscal": ("crosscal", "crosscal_sample.csv", "certificate_crosscal.json", ()),
+    "crosscal_encoder": ("crosscal", "crosscal_sample.csv", "certificate_crosscal_encoder.json",
+                         ("--certificate-of", "encoder")),
+}
+
+
+def _run(args: list[str], capsys) -> tuple[int, str]:
+    code = main(args)
+    captured = capsys.readouterr()
+    return code, captured.out + captured.err
+
+
+def _issue(case: str, out: Path, capsys, samples_dir: Path, details: Path | None = None,
+           extra: tuple[str, ...] = (), schema: bool = True) -> tuple[int, str, Path, Path]:
+    kind, readings, meta, options = CASES[case]
+    pdf, xml = out / f"{case}.pdf", out / f"{case}.xml"
+    args = ["analyze", kind, str(samples_dir / readings), "--metadata",
+            str(details or samples_dir / meta), "--certificate", str(pdf), "--dcc", str(xml),
+            *options, *extra]
+    if schema and SCHEMA is not None:
+        args += ["--dcc-schema", str(SCHEMA)]
+    code, said = _run(args, capsys)
+    return code, said, pdf, xml
+
+
+def _json(case: str, capsys, samples_dir: Path) -> dict:
+    kind, readings, meta, options = CASES[case]
+    code, said = _run(["analyze", kind, str(samples_dir / readings), "--json", "--metadata",
+                       str(samples_dir / meta), *options], capsys)
+    assert code == 0, said
+    return json.loads(said[said.index("{"):])
+
+
+def _floats(text: str) -> np.ndarray:
+    return np.array([float(x) for x in text.split()])
+
+
+def _curve(tree) -> dict[str, dict[str, np.ndarray]]:
+    """The per-point quantities of the curve result: key → values, U, k, p."""
+    out = {}
+    for q in tree.iterfind(".//dcc:result[@refType='anglebench_curve']//dcc:quantity", NS):
+        names = [c.text for c in q.iterfind("dcc:name/dcc:content", NS)]
+        lst = q.find("si:realListXMLList", NS)
+        if lst is None:
+            continue
+        entry = {"values": _floats(lst.findtext("si:valueXMLList", namespaces=NS))}
+        mu = lst.find(".//si:expandedMUXMLList", NS)
+        if mu is not None:
+            entry["U"] = _floats(mu.findtext("si:valueExpandedMUXMLList", namespaces=NS))
+            entry["k"] = _floats(mu.findtext("si:coverageFactorXMLList", namespaces=NS))
+            entry["p"] = _floats(mu.findtext("si:coverageProbabilityXMLList", namespaces=NS))
+        out[names[-1]] = entry  # the last name is the column's key
+    return out
+
+
+@pytest.fixture(scope="module")
+def issued(tmp_path_factory):
+    """Every sample issued once with --dcc (and its JSON), shared by the tests below."""
+    from tests.conftest import SAMPLES
+
+    out = tmp_path_factory.mktemp("dcc")
+    results = {}
+    mp = pytest.MonkeyPatch()
+    mp.setenv("ANGLEBENCH_REGISTER", str(out / "register.sqlite"))
+
+    class Capture:  # capsys is function-scoped: read main's output directly
+        def readouterr(self):
+            return type("C", (), {"out": "", "err": ""})()
+
+    try:
+        import contextlib
+        import io
+
+        for case in CASES:
+            buffer = io.StringIO()
+            with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
+                code, _, pdf, xml = _issue(case, out, Capture(), SAMPLES)
+                kind, readings, meta, options = CASES[case]
+                main(["analyze", kind, str(SAMPLES / readings), "--json", "--metadata",
+                      str(SAMPLES / meta), *options])
+            said = buffer.getvalue()
+            data = json.loads(said[said.index("\n{") + 1:] if "\n{" in said else said)
+            results[case] = (code, said, pdf, xml, data)
+    finally:
+        mp.undo()
+    return results
+
+
+@needs_schema
+@pytest.mark.parametrize("case", list(CASES))
+def test_every_sample_gives_a_valid_dcc_with_the_pdfs_number_and_bytes(issued, case):
+    code, said, pdf, xml, _ = issued[case]
+    assert code == 0, said
+    data = xml.read_bytes()
+    assert validate(data, SCHEMA) == []
+    tree = etree.fromstring(data)
+    number = tree.findtext("dcc:administrativeData/dcc:coreData/dcc:uniqueIdentifier", namespaces=NS)
+    assert number and f"{number} written to {pdf}" in said  # the number the PDF was issued with
+    embedded = tree.find("dcc:document", NS)
+    assert base64.b64decode(embedded.findtext("dcc:dataBase64", namespaces=NS)) == pdf.read_bytes()
+    assert embedded.findtext("dcc:mimeType", namespaces=NS) == "application/pdf"
+    assert embedded.findtext("dcc:fileName", namespaces=NS) == pdf.name
+    if shutil.which("pdftotext"):  # the PDF prints the same number
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
+        assert number in text
+    # every refType of our own is declared
+    used = {t for el in tree.iter() for t in (el.get("refType") or "").split()}
+    declared = {d.findtext("dcc:value", namespaces=NS)
+                for d in tree.iterfind(".//dcc:refTypeDefinition", NS)}
+    assert {t for t in used if t.startswith("anglebench_")} <= declared
+    assert {t for t in used if not t.startswith("anglebench_")} <= {
+        v.PTB_NOMINAL_VALUE, v.PTB_MEASURED_VALUE, v.PTB_MEASUREMENT_ERROR}
+
+
+#: per case: (DCC column, JSON array of the same points, JSON U key or None: the U the
+#: certificate prints, checked against the PDF's own per-point column in the export)
+SAME_AS_JSON = {
+    "theodolite": [("theta_deg", "theta_deg", None),
+                   ("raw_error_arcsec", "raw_error_arcsec", "expanded_uncertainty_raw_error_arcsec"),
+                   ("corrected_error_arcsec", "corrected_error_arcsec",
+                    "expanded_uncertainty_corrected_error_arcsec")],
+    "polygon": [("corrected_error_arcsec", "mean_corrected_error_arcsec",
+                 "expanded_uncertainty_mean_corrected_error_arcsec")],
+    "fringe": [("raw_error_arcsec", "raw_error_arcsec", "expanded_uncertainty_raw_error_arcsec"),
+               ("compensated_error_arcsec", "compensated_error_arcsec",
+                "expanded_uncertainty_compensated_error_arcsec")],
+    # the cross-calibration certificate's U takes in the comparator listed in the details;
+    # the JSON's polygon/encoder U is the bench's own (README: 0.032″ vs 0.017″): the DCC
+    # states the certificate's
+    "crosscal": [("deviation_arcsec", "polygon_deviation_arcsec", None),
+                 ("deviation_from_face1_arcsec", "polygon_deviation_from_face1_arcsec", None)],
+    "crosscal_encoder": [("error_arcsec", "encoder_error_arcsec", None)],
+}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_every_tabled_point_has_its_value_with_u_k_and_p(issued, case):
+    code, said, pdf, xml, data = issued[case]
+    assert code == 0, said
+    curve = _curve(etree.fromstring(xml.read_bytes()))
+    errors = {k: e for k, e in curve.items() if "U" in e}
+    assert errors, "no curve with its uncertainty"
+    p = data["coverage_probability"]
+    for key, entry in errors.items():
+        n = entry["values"].size
+        assert n >= 12 and entry["U"].size == n and entry["k"].size == n, key
+        assert np.all(entry["U"] >= 0) and np.all(entry["U"][entry["U"] > 0] < 10), key
+        assert np.all((entry["k"] >= 1.9) & (entry["k"] <= 3.5)), key
+        assert entry["p"] == pytest.approx([p])
+    for column, array, u_key in SAME_AS_JSON.get(case, []):
+        assert curve[column]["values"] == pytest.approx(np.asarray(data[array], float),
+                                                        rel=1e-9, abs=1e-9)
+        if u_key:
+            assert curve[column]["U"] == pytest.approx(np.asarray(data[u_key], float),
+                                                       rel=1e-9, abs=1e-9)
+    if case == "positioning":  # the two directions' means at each target, with U
+        per = data["per_target"]
+        both = np.concatenate([per["mean_up"], per["mean_down"]])
+        dcc = curve["mean_deviation_arcsec"]
+        assert sorted(dcc["values"]) == pytest.approx(sorted(both), rel=1e-9)
+        u_both = np.concatenate([per["expanded_uncertainty_mean_up"],
+                                 per["expanded_uncertainty_mean_down"]])
+        assert sorted(dcc["U"]) == pytest.approx(sorted(u_both), rel=1e-9)
+
+
+def test_the_cross_calibrated_polygon_is_stated_in_the_shared_face_deviation_form(issued):
+    _, said, _, xml, data = issued["crosscal"]
+    tree = etree.fromstring(xml.read_bytes())
+    result = tree.find(f".//dcc:result[@refType='{v.REFTYPE_POLYGON_FACE_DEVIATIONS}']", NS)
+    index = result.find(f".//dcc:quantity[@refType='{v.REFTYPE_FACE_INDEX}']/si:realListXMLList", NS)
+    faces = _floats(index.findtext("si:valueXMLList", namespaces=NS))
+    assert index.findtext("si:unitXMLList", namespaces=NS) == r"\one"
+    deviation = result.find(f".//dcc:quantity[@refType='{v.REFTYPE_FACE_DEVIATION}']"
+                            "/si:realListXMLList", NS)
+    assert deviation.findtext("si:unitXMLList", namespaces=NS) == r"\arcsecond"
+    values = _floats(deviation.findtext("si:valueXMLList", namespaces=NS))
+    u = _floats(deviation.findtext(".//si:valueExpandedMUXMLList", namespaces=NS))
+    assert list(faces) == list(range(1, 13)) and values.size == u.size == 12
+    assert values == pytest.approx(data["polygon_deviation_from_face1_arcsec"], abs=1e-9)
+    # the certificate's U (the comparator in): at least the bench's own, 0 at face 1
+    assert u[0] == 0 and np.all(u[1:] > 0)
+    assert np.all(u >= np.asarray(data["expanded_uncertainty_polygon_deviation_from_face1_arcsec"])
+                  - 1e-12)
+
+
+def _statement_types(xml: Path) -> set[str]:
+    tree = etree.fromstring(xml.read_bytes())
+    return {s.get("refType") for s in tree.iterfind(".//dcc:statements/dcc:statement", NS)}
+
+
+def test_a_fringe_record_without_phase_reference_is_a_test_report_saying_so(issued):
+    _, said, _, xml, _ = issued["fringe"]
+    types = _statement_types(xml)
+    assert v.REFTYPE_NOT_A_CALIBRATION in types and v.REFTYPE_CALIBRATION_CERTIFICATE not in types
+    text = xml.read_text(encoding="utf-8")
+    assert "test report, not a calibration certificate" in text
+    assert "<dcc:traceable>false</dcc:traceable>" in text
+    assert "<dcc:conformity>" not in text  # no statement of conformity rests on it
+
+
+@needs_schema
+def test_a_fringe_record_with_a_traceable_phase_reference_is_a_calibration(tmp_path, capsys,
+                                                                           samples_dir):
+    details = json.loads((samples_dir / "certificate_fringe.json").read_text(encoding="utf-8"))
+    details["standards"] = [
+        {"description": "Rotary table (θ reference)", "serial": "RT-1",
+         "certificate_no": "NIM-2026-0900", "uncertainty": 0.05, "uncertainty_unit": "arcsec",
+         "basis": "U95"},
+        {"description": "Data acquisition (16-bit ADC)", "serial": "DAQ-5",
+         "certificate_no": "CAL-2026-33", "uncertainty": None}]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, _, xml = _issue("fringe", tmp_path, capsys, samples_dir, details=path, extra=(
+        "--phase-reference-u", "0.01", "--adc-lsb-mv", "0.3", "--adc-offset-u-mv", "0.1",
+        "--adc-gain-u-pct", "0.01", "--adc-linearity-mv", "0.2"))
+    assert code == 0, said
+    assert validate(xml.read_bytes(), SCHEMA) == []
+    types = _statement_types(xml)
+    assert v.REFTYPE_CALIBRATION_CERTIFICATE in types and v.REFTYPE_NOT_A_CALIBRATION not in types
+
+
+@needs_schema
+def test_an_invalid_document_is_refused_naming_the_element_and_nothing_is_written(
+        tmp_path, capsys, samples_dir, monkeypatch):
+    from models.dcc import writer
+
+    original = writer._budget
+
+    def bad_budget(b, results, unit):  # a builder that emits an element the schema has not
+        original(b, results, unit)
+        etree.SubElement(results, writer.D + "surprise")
+
+    monkeypatch.setattr(writer, "_budget", bad_budget)
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir)
+    assert code != 0
+    assert "dcc:results/dcc:surprise" in said and "not expected" in said
+    assert not pdf.exists() and not xml.exists()
+
+
+@needs_schema
+def test_an_issued_certificate_refused_for_its_dcc_is_not_recorded(tmp_path, capsys, samples_dir,
+                                                                    monkeypatch):
+    from models.dcc import writer
+    from models.register.location import register_url
+    from models.register.store import Register
+
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+    del details["example"], details["certificate_number"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code == 0, said
+    tree = etree.fromstring(xml.read_bytes())
+    number = tree.findtext(".//dcc:uniqueIdentifier", namespaces=NS)
+    assert f"Certificate {number} issued" in said
+    assert base64.b64decode(tree.findtext("dcc:document/dcc:dataBase64", namespaces=NS)) == \
+        pdf.read_bytes()
+    with Register(register_url()) as register:
+        before = len(register.list())
+
+    monkeypatch.setattr(writer, "_figure", lambda x: "not-a-number")
+    again = tmp_path / "again"
+    again.mkdir()
+    code, said, pdf2, xml2 = _issue("theodolite", again, capsys, samples_dir, details=path)
+    assert code != 0 and "si:value" in said
+    assert not xml2.exists() and not pdf2.exists()
+    with Register(register_url()) as register:
+        assert len(register.list()) == before  # nothing issued
+
+
+def test_without_a_schema_folder_it_says_the_dcc_was_not_validated(tmp_path, capsys, samples_dir,
+                                                                   monkeypatch):
+    monkeypatch.delenv("ANGLEBENCH_DCC_SCHEMA", raising=False)
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, schema=False)
+    assert code == 0, said
+    assert "the DCC was not validated" in said and xml.exists()
+
+
+def test_dcc_needs_a_certificate_and_spares_the_inputs(tmp_path, capsys, samples_dir):
+    code, said = _run(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                       "--dcc", str(tmp_path / "x.xml")], capsys)
+    assert code != 0 and "--dcc needs --certificate" in said
+    code, said = _run(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                       "--certificate", str(tmp_path / "x.pdf"),
+                       "--dcc", str(samples_dir / "theodolite_sample.csv")], capsys)
+    assert code != 0 and not (tmp_path / "x.pdf").exists()
+
+
+def test_a_draft_gets_no_dcc_and_is_told_why(tmp_path, capsys, samples_dir):
+    details = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+    del details["example"], details["approver"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(details), encoding="utf-8")
+    code, said, pdf, xml = _issue("theodolite", tmp_path, capsys, samples_dir, details=path)
+    assert code != 0 and "DRAFT (approver missing)" in said
+    assert not xml.exists() and not pdf.exists()
+
+
+# -- golden files: each sample's reviewed DCC ------------------------------------------------
+_MASKS = [
+    (re.compile(r"<dcc:dataBase64>[^<]*</dcc:dataBase64>"), "<dcc:dataBase64>PDF</dcc:dataBase64>"),
+    (re.compile(r"<dcc:release>\d+\.\d+[^<]*\)</dcc:release>"), "<dcc:release>VERSION</dcc:release>"),
+    (re.compile(r"commit [0-9a-f]{40}( \+ local changes)?|source sha256 [0-9a-f]+"), "SOURCE"),
+    (re.compile(r"<dcc:(beginPerformanceDate|endPerformanceDate|issueDate)>[^<]*<"),
+     r"<dcc:\1>DATE<"),
+    (re.compile(r"SPECIMEN-[0-9A-F]{8}"), "SPECIMEN-NUMBER"),
+]
+_NUMBER = re.compile(r"(?<![\w.])-?\d+\.\d+(?:[eE][+-]?\d+)?")
+
+
+def masked(xml: str) -> str:
+    """The document with what changes from run to run masked, and every figure to 6
+    significant digits (a last digit of a fit may differ between BLAS builds)."""
+    for pattern, replacement in _MASKS:
+        xml = pattern.sub(replacement, xml)
+    return _NUMBER.sub(lambda m: f"{float(m.group()):.6g}", xml)
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_each_samples_dcc_matches_its_reviewed_golden_file(issued, case):
+    """A change to a sample's DCC must update its golden file deliberately:
+    ANGLEBENCH_REGENERATE_DCC_GOLDEN=1 pytest tests/app/test_dcc_out.py (then review the diff)."""
+    _, said, _, xml, _ = issued[case]
+    got = masked(xml.read_text(encoding="utf-8"))
+    golden = GOLDEN / f"{case}.xml"
+    if REGENERATE:
+        GOLDEN.mkdir(exist_ok=True)
+        golden.write_text(got, encoding="utf-8")
+    assert golden.is_file(), f"no golden file {golden.name}: regenerate and review it"
+    expected = golden.read_text(encoding="utf-8")
+    if got != expected:
+        import difflib
+
+        diff = "".join(list(difflib.unified_diff(expected.splitlines(True), got.splitlines(True),
+                                                 "golden", "now"))[:60])
+        pytest.fail(f"{case}: the DCC differs from its golden file:\n{diff}")
+
+
+def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_intervals(issued):
+    tree = etree.fromstring(issued["theodolite"][3].read_bytes())
+    psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
+               if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
+    # printed: 5.82625° with U 6.3" at k = 2.07 (the parameters' own k, not the curve's)
+    assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.82625
+    assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
+    assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.3 / 3600)
+    assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
+    tree = etree.fromstring(issued["positioning"][3].read_bytes())
+    a = next(lst for lst in tree.iterfind(".//dcc:list[@refType='anglebench_summaryFigure']", NS)
+             if lst.findtext("dcc:name/dcc:content", namespaces=NS).startswith("A: "))
+    figures = {q.findtext("dcc:name/dcc:content", namespaces=NS):
+               float(q.findtext("si:real/si:value", namespaces=NS))
+               for q in a.iterfind("dcc:quantity", NS)}
+    # printed: A = 22.447", interval 17.89" … 23.60" at 95.00 %
+    assert figures == {"value": 22.447, "intervalMin": 17.89, "intervalMax": 23.6,
+                       "coverageProbability": 0.95}
