@@ -2153,6 +2153,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>相对湿度</translation>
     </message>
     <message>
+        <source>Reference polygon face deviations (from face 1, as its certificate states them)</source>
+        <translation>参考多面棱体各面偏差（相对第 1 面，按其校准证书给出）</translation>
+    </message>
+    <message>
         <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
         <translation>未写出数字证书：该证书为草稿（缺少 {missing}）；只有完整的证书才能生成数字证书</translation>
     </message>
