@@ -44,7 +44,9 @@ def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes:
     budgets = {**budgets, **kind.dcc_point_uncertainties(result)}
     xml = build_dcc(document, pdf_bytes, pdf_name, budgets,
                     uncertainty_columns=kind.dcc_uncertainty_columns,
-                    face_deviations_column=kind.dcc_face_deviations_column)
+                    face_deviations_column=kind.dcc_face_deviations_column,
+                    reference_face_deviations=kind.dcc_reference_face_deviations(
+                        result, document.metadata))
     if schema_dir:
         problems = validate(xml, schema_dir)
         if problems:

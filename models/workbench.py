@@ -225,6 +225,12 @@ class IssuesCertificates(ABC):
     #: workbench reads back (models/dcc/vocabulary.py); "": none
     dcc_face_deviations_column: ClassVar[str] = ""
 
+    def dcc_reference_face_deviations(self, result: Any, metadata: Any) -> Any:
+        """A reference polygon's face deviations from face 1 the result rests on, with the U
+        and k its certificate states: (deviations, U, k) in arcseconds, stated in the DCC's
+        shared form; None: none."""
+        return None
+
     def dcc_point_uncertainties(self, result: Any) -> dict[str, Any]:
         """U and k per point of certificate columns whose U no budget of
         :meth:`uncertainty_budgets` holds (e.g. an error stated from a reference point),

@@ -26,6 +26,7 @@ from models.certificate.document import CertificateDocument, Table
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
+from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
 
 __all__ = ["DccError", "build_dcc", "column_unit"]
 
@@ -461,6 +462,19 @@ def _column_name(b: _Builder, q, name: str, headers: Mapping[str, str]) -> None:
     etree.SubElement(el, D + "content").text = name
 
 
+def _face_form(b: _Builder, results, name: Any, dev, u, k, p: float) -> None:
+    """Face deviations from face 1 in the shared vocabulary (the reader's form)."""
+    res = etree.SubElement(results, D + "result", refType=b.ref(
+        v.REFTYPE_POLYGON_FACE_DEVIATIONS, "a polygon's face deviations from face 1 with U"))
+    b.text(res, "name", name)
+    lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
+    q = b.quantity(lst, QT_TR_NOOP("Face"), b.ref(v.REFTYPE_FACE_INDEX, "face number 1..N"))
+    b.real_list(q, np.arange(1, len(dev) + 1, dtype=float), v.FACE_INDEX_UNIT)
+    q = b.quantity(lst, QT_TR_NOOP("Face deviation"), b.ref(
+        v.REFTYPE_FACE_DEVIATION, "face deviation from face 1, arcseconds, with U"))
+    b.real_list(q, dev, v.FACE_DEVIATION_UNIT, u, k, p)
+
+
 def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str],
                      budgets: Mapping[str, Any], p: float) -> None:
     """The polygon's face deviations from face 1 in the shared vocabulary (the reader's
@@ -476,15 +490,7 @@ def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str]
     if any(x is None for x in k):
         raise DccError(message(QT_TR_NOOP("no DCC written: the coverage factor of a face "
                                           "deviation is not found in its budget")))
-    res = etree.SubElement(results, D + "result", refType=b.ref(
-        v.REFTYPE_POLYGON_FACE_DEVIATIONS, "a polygon's face deviations from face 1 with U"))
-    b.text(res, "name", QT_TR_NOOP("Polygon face deviations (from face 1)"))
-    lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
-    q = b.quantity(lst, QT_TR_NOOP("Face"), b.ref(v.REFTYPE_FACE_INDEX, "face number 1..N"))
-    b.real_list(q, np.arange(1, dev.size + 1, dtype=float), v.FACE_INDEX_UNIT)
-    q = b.quantity(lst, QT_TR_NOOP("Face deviation"), b.ref(
-        v.REFTYPE_FACE_DEVIATION, "face deviation from face 1, arcseconds, with U"))
-    b.real_list(q, dev, v.FACE_DEVIATION_UNIT, u, k, p)
+    _face_form(b, results, QT_TR_NOOP("Polygon face deviations (from face 1)"), dev, u, k, p)
 
 
 def _decided(b: _Builder, results, p: float) -> None:
@@ -542,7 +548,7 @@ def _budget(b: _Builder, results, unit: str) -> None:
 
 
 def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[str, str],
-                         face_column: str) -> None:
+                         face_column: str, reference_faces) -> None:
     doc, meta = b.document, b.document.metadata
     p = float(meta.coverage_probability)
     mrs = etree.SubElement(root, D + "measurementResults")
@@ -608,6 +614,11 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
     _curves(b, results, pairs, budgets, p)
     if face_column:
         _face_deviations(b, results, face_column, pairs, budgets, p)
+    if reference_faces is not None:
+        dev, u, k = reference_faces
+        _face_form(b, results, QT_TR_NOOP("Reference polygon face deviations (from face 1, as "
+                                          "its certificate states them)"), dev, u, k,
+                   DEFAULT_COVERAGE_PROBABILITY)
     _table_result(b, results, doc.parameters, v.REFTYPE_SETUP_PARAMETERS,
                   "the certificate's parameters table: the identified set-up parameters with U",
                   "anglebench_setupParameter", "one row of the parameters table", p)
@@ -623,14 +634,16 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
               budgets: Mapping[str, Any] | None = None, *,
               uncertainty_columns: Mapping[str, str] | None = None,
               face_deviations_column: str = "",
+              reference_face_deviations: Any = None,
               software: SoftwareIdentity | None = None) -> bytes:
     """The DCC 3.3.0 of ``document`` (the certificate as printed into ``pdf_bytes``), with
     the PDF embedded byte for byte. ``budgets``: the workbench's
     ``uncertainty_budgets(result, metadata)`` (U and k per point of each curve);
     ``uncertainty_columns``: the workbench's ``dcc_uncertainty_columns`` (which column's U
     the certificate prints beside it); ``face_deviations_column``: its
-    ``dcc_face_deviations_column``. DccError naming a field the schema requires and the
-    certificate lacks."""
+    ``dcc_face_deviations_column``; ``reference_face_deviations``: its
+    ``dcc_reference_face_deviations`` (a reference polygon's (deviations, U, k)). DccError
+    naming a field the schema requires and the certificate lacks."""
     software = software or software_identity()
     meta = document.metadata
     if document.is_draft:  # a DRAFT is no certificate: its DCC would read as one
@@ -643,7 +656,7 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
                          schemaVersion=v.SCHEMA_VERSION)
     _administrative(b, root, software)
     _measurement_results(b, root, budgets or {}, software, uncertainty_columns or {},
-                         face_deviations_column)
+                         face_deviations_column, reference_face_deviations)
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
         v.REFTYPE_ISSUED_PDF, "the issued PDF certificate, byte for byte"))
     b.text(pdf, "name", message(QT_TR_NOOP("Certificate {number} (PDF)"),

@@ -404,6 +404,18 @@ def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
     return POLYGON.checked_settings(settings)
 
 
+def _reference_deviations(readings: PolygonSetReadings, faces: int) -> np.ndarray | None:
+    """The polygon's face deviations of the readings' column, faces 1…n, from face 1 (None
+    when the first set does not read every face)."""
+    dev = np.full(faces, np.nan)
+    for face, value in zip(readings.positions, readings.polygon_dev_arcsec, strict=True):
+        if 1 <= int(face) <= faces:
+            dev[int(face) - 1] = float(value)
+    if not np.all(np.isfinite(dev)):
+        return None
+    return dev - dev[0]
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
     s = _settings(settings)
     grade = s["grade"]
@@ -487,6 +499,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     if doubt:
         warnings.insert(0, doubt)
     return PolygonResult(
+        reference_deviations_arcsec=_reference_deviations(sets[0], faces),
         sets=results, faces=faces, grade=grade, theta_deg=theta,
         mean_error_arcsec=mean_error, mean_corrected_arcsec=mean_corrected,
         repeatability_arcsec=None if repeat is None else repeat[0], reversal_arcsec=reversal,
@@ -674,6 +687,18 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
                            QT_TR_NOOP("the autocollimator"))
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
+
+    def dcc_reference_face_deviations(self, result, metadata):
+        """The reference polygon's face deviations from face 1 with the U its certificate
+        states (the polygon standard listed "from face 1" with a U95: k = 2; 0 at face 1)."""
+        dev = result.reference_deviations_arcsec
+        standard = next((s for s in metadata.standards if s.applies_to == "from face 1"
+                         and s.basis == "U95" and s.uncertainty is not None), None)
+        if dev is None or standard is None:
+            return None
+        u = np.full(dev.size, float(standard.uncertainty_in("arcsec")))
+        u[0] = 0.0
+        return dev, u, np.full(dev.size, 2.0)
     method_reference = ("Tian L. et al., Analysis the influence of pyramidal error on the "
                         "encoder accuracy test by using coordinate transformation, Acta Optica "
                         "Sinica 35(5):0512003 (2015)")

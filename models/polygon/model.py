@@ -398,6 +398,9 @@ class PolygonResult:
     repeats: object = None
     repeat_s_mean_arcsec: np.ndarray | None = None
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
+    # the reference polygon's face deviations as the readings give them (the first set's
+    # polygon-deviation column, faces 1…n, taken from face 1); None when a face is not read
+    reference_deviations_arcsec: np.ndarray | None = None
 
     @property
     def mean_reversal_arcsec(self) -> float | None:

@@ -2157,12 +2157,16 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>相对湿度</translation>
     </message>
     <message>
-        <source>Certificate {number} (PDF)</source>
-        <translation>证书 {number}（PDF）</translation>
+        <source>Reference polygon face deviations (from face 1, as its certificate states them)</source>
+        <translation>参考多面棱体各面偏差（相对第 1 面，按其校准证书给出）</translation>
     </message>
     <message>
         <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
         <translation>未写出数字证书：该证书为草稿（缺少 {missing}）；只有完整的证书才能生成数字证书</translation>
+    </message>
+    <message>
+        <source>Certificate {number} (PDF)</source>
+        <translation>证书 {number}（PDF）</translation>
     </message>
     <message>
         <source>Grade / specification</source>
@@ -2946,7 +2950,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Beside the PDF, the same certificate as a PTB Digital Calibration Certificate (DCC 3.3.0 XML, the PDF embedded in it), in the same folder with the ending .xml</source>
-        <translation>在 PDF 旁写出同一份证书的 PTB 数字校准证书（DCC 3.3.0 XML，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
+        <translation>在 PDF 旁写出同一份证书的数字校准证书（德国联邦物理技术研究院的 DCC 3.3.0 XML 格式，内嵌该 PDF），位于同一文件夹，扩展名为 .xml</translation>
     </message>
     <message>
         <source>empty: the DCC is not validated</source>
@@ -2954,7 +2958,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>The folder of PTB&apos;s DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is validated against it and not written when invalid</source>
-        <translation>PTB DCC 3.3.0 模式文件所在的文件夹（dcc.xsd、si/、d-sig/）：每份数字证书都据此校验，不合格则不写出</translation>
+        <translation>德国联邦物理技术研究院 DCC 3.3.0 模式文件（含其子文件夹）所在的文件夹：每份数字证书都据此校验，不合格则不写出</translation>
     </message>
     <message>
         <source>DCC schema folder</source>
