@@ -165,17 +165,9 @@ def _standard_draws(rng: np.random.Generator, distribution: str, shape) -> np.nd
     return rng.standard_normal(shape)
 
 
-#: Moment selection (Andrews & Soares 2010): a point whose measured gap to the curve's
-#: extreme is less than κ standard deviations of that gap is taken as tied with it (gap 0)
-#: for the lower end; the gaps measured stand for the true ones less κ·sd, so the
-#: lower end is conservative wherever the curve is flat near its extremes.
-KAPPA_LOWER = 2.5
-#: For the upper end every measured gap is taken 1 standard deviation wider than measured
-#: (extremes more isolated than they look: a smaller bias, an upper end further out).
-KAPPA_UPPER = 1.0
-#: Widths of the moving averages whose range bounds the true range from below (1: the curve
-#: itself); a width is used where the curve has at least three times as many points.
-AVERAGING_WIDTHS = (1, 3, 7, 15)
+#: The share of the miss probability α spent on bounding the curve's gaps to its extremes
+#: (the first step of Romano, Shaikh & Wolf's two-step test, β = α/10).
+_GAP_SHARE = 0.1
 
 
 def readings_seed(errors, budget: UncertaintyBudget) -> int:
@@ -216,31 +208,79 @@ def _signed_draws(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     return draws
 
 
-def _gap_spread(curve: np.ndarray, draws: np.ndarray, widen: float) -> np.ndarray:
-    """Per trial, the measured range less the true one of a *world* whose gaps to its
-    extremes are the measured gaps ``curve[a] − curve`` changed by ``widen`` standard
-    deviations of each (negative: narrowed, at 0 at the least — moment selection):
-    max_i(ε_i − G_i) − min_j(ε_j + H_j), ε the drawn errors (the pivot r̂ − r of that world)."""
-    out = []
-    for sign in (1.0, -1.0):
-        c, d = sign * curve, sign * draws
-        a = int(np.argmax(c))
-        sd = np.std(d - d[:, [a]], axis=0)
-        gap = np.maximum(c[a] - c + widen * sd, 0.0)
-        out.append(np.max(d - gap, axis=1))
-    return out[0] + out[1]
+def _gap_bounds(curve: np.ndarray, draws: np.ndarray, level: float) -> np.ndarray:
+    """Lower confidence bounds, simultaneous at ``level``, of every point's gap to the
+    curve's true maximum: f_max − f_i ≥ f_a − f_i ≥ y_a − y_i − c·sd(ε_a − ε_i), a the
+    highest measured point (0 where the point may hold the maximum)."""
+    a = int(np.argmax(curve))
+    diff = draws - draws[:, [a]]
+    sd = np.std(diff, axis=0)
+    sd[a] = 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        scaled = np.where(sd > 0, np.abs(diff) / np.where(sd > 0, sd, 1.0), 0.0)
+    c = float(np.quantile(np.max(scaled, axis=1), level))
+    return np.maximum(0.0, curve[a] - curve - c * sd)
 
 
-def _moving_average(values: np.ndarray, width: int) -> np.ndarray:
-    """The mean of each point's ``width`` neighbours along the last axis (fewer at the
-    ends): every value a weighted mean of the curve's, so its range is never larger."""
-    n = values.shape[-1]
-    half = width // 2
-    padded = np.concatenate([np.zeros(values.shape[:-1] + (1,)), np.cumsum(values, axis=-1)],
-                            axis=-1)
-    lo = np.clip(np.arange(n) - half, 0, n)
-    hi = np.clip(np.arange(n) + half + 1, 0, n)
-    return (padded[..., hi] - padded[..., lo]) / (hi - lo)
+def half_range_monte_carlo(errors, budget: UncertaintyBudget,
+                           trials: int = MONTE_CARLO_TRIALS,
+                           seed: int | None = None) -> HalfRangeEstimate:
+    """Half the peak-to-peak of ``errors`` (in the budget's unit; points in their natural
+    order) with a coverage interval: bounds on a maximum of means by the two-step method
+    of Romano, Shaikh & Wolf (*Econometrica* 82 (2014) 1979–2002), the noise's
+    distribution simulated from the budget (JCGM 101, see :func:`_signed_draws`).
+
+    With y = f + ε (f the true curve), the measured range r̂ = max y − min y, the true
+    range r = max f − min f, α = 1 − p and β = α/10:
+
+    * upper end: r̂ ≥ y_{i*} − y_{j*} = r + ε_{i*} − ε_{j*} for the true extremes i*, j*,
+      so r ≤ r̂ + q, q the (1 − α/2 + β) quantile of ε_j − ε_i for the least favourable
+      pair of the points that may hold the extremes;
+    * lower end: r̂ − r = (ε_a − G_a) − (ε_b + H_b) for the measured extremes a, b, with
+      G_i = f_max − f_i and H_j = f_j − f_min the true gaps, so r ≥ r̂ − Q, Q the
+      (1 − α/2 + β) quantile of max_i(ε_i − G_i) − min_j(ε_j + H_j) with the gaps
+      replaced by their lower confidence bounds at 1 − β (the least favourable curve the
+      data allow: where noise hides the curve every point may be tied at its extremes).
+
+    Each end misses with a probability of at most α/2, the two together at most α, on any
+    curve (given the budget): the interval covers the true half range with at least the
+    stated probability p (checked by simulation over the shapes that occur,
+    models.validation.half_range). The value stated is the measured half range r̂/2: it is
+    at least the true one with a probability of at least 50 % (P(ε_{i*} ≥ ε_{j*}) = ½), so
+    simple acceptance keeps the risk of false acceptance at or below 50 % at the limit;
+    what the noise may have added to it is the interval's lower side. ``seed`` None: made
+    from the readings (:func:`readings_seed`); a curve of more than 16 384 points is
+    judged on every k-th point.
+    """
+    full = np.asarray(errors, dtype=float)
+    stride = max(1, -(-full.size // MAX_MONTE_CARLO_POINTS))
+    points = np.arange(0, full.size, stride)
+    e = full[points]
+    n = e.size
+    if seed is None:
+        seed = readings_seed(full, budget)
+    trials = int(max(2000, min(trials, _MONTE_CARLO_DRAWS // max(n, 1))))
+    measured = 0.5 * float(np.ptp(e)) if n else 0.0
+    if n < 2:
+        return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
+                                 seed, stride)
+    draws = _signed_draws(budget, points, trials, np.random.default_rng(seed))
+    if not np.any(draws):
+        return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
+                                 seed, stride)
+    alpha = 1.0 - budget.probability
+    beta = _GAP_SHARE * alpha
+    level = 1.0 - 0.5 * alpha + beta
+    gaps_top = _gap_bounds(e, draws, 1.0 - beta / 2.0)
+    gaps_bottom = _gap_bounds(-e, -draws, 1.0 - beta / 2.0)
+    spread = np.max(draws - gaps_top, axis=1) - np.min(draws + gaps_bottom, axis=1)
+    q_low = float(np.quantile(spread, level))
+    q_high = _pair_quantile(draws, np.flatnonzero(gaps_top == 0.0),
+                            np.flatnonzero(gaps_bottom == 0.0), level)
+    low = max(0.0, measured - 0.5 * q_low)
+    high = measured + 0.5 * q_high
+    return HalfRangeEstimate(measured, 0.0, measured, high - measured, measured - low,
+                             budget.probability, trials, seed, stride)
 
 
 _MAX_PAIRS = 4_000_000
@@ -265,84 +305,6 @@ def _pair_quantile(draws: np.ndarray, top: np.ndarray, bottom: np.ndarray,
     cov = a.T @ b / draws.shape[0]
     variance = var_a[:, None] + var_b[None, :] - 2.0 * cov
     return float(ndtri(level)) * math.sqrt(max(float(np.max(variance)), 0.0))
-
-
-def _candidates(curve: np.ndarray, draws: np.ndarray) -> np.ndarray:
-    """The points that may hold the curve's maximum: their measured gap to the highest is
-    within KAPPA_LOWER standard deviations of that gap (moment selection)."""
-    a = int(np.argmax(curve))
-    sd = np.std(draws - draws[:, [a]], axis=0)
-    return np.flatnonzero(curve[a] - curve <= KAPPA_LOWER * sd)
-
-
-def half_range_monte_carlo(errors, budget: UncertaintyBudget,
-                           trials: int = MONTE_CARLO_TRIALS,
-                           seed: int | None = None) -> HalfRangeEstimate:
-    """Half the peak-to-peak of ``errors`` (in the budget's unit; points in their natural
-    order) with a coverage interval at the budget's probability p, from a parametric
-    bootstrap of the pivot r̂ − r (measured range less true range) whose *world* handles the
-    estimator's own bias by moment selection (Andrews & Soares, *Econometrica* 78 (2010)
-    119–157; Andrews & Barwick, *Econometrica* 80 (2012) 2805–2826), the noise's
-    distribution simulated from the budget (JCGM 101, see :func:`_signed_draws`).
-
-    With y = f + ε (f the true curve), r̂ − r = max_i(ε_i − G_i) − min_j(ε_j + H_j), G_i =
-    max f − f_i and H_j = f_j − min f the true gaps: the pivot depends on the curve only
-    through its gaps, and it is larger the smaller they are (ties at an extreme bias the
-    range up). α = 1 − p:
-
-    * lower end: every measured gap narrowed by κ = 2.5 of its standard deviations (at 0
-      at the least: a point within 2.5 sd of the measured extreme is taken as tied), the
-      (1 − α/2K) quantile of the pivot of that world; the same for the moving averages of
-      the curve over 3, 7 and 15 points (where there are three times as many), whose range
-      never exceeds the curve's, so each is a lower bound of r; the largest of the K
-      bounds (Bonferroni: all K hold together with probability ≥ 1 − α/2). The averages
-      see a smooth curve through the noise that the single points cannot;
-    * upper end: every measured gap widened by one standard deviation (extremes more
-      isolated than measured: the least bias), the α/2 quantile of that world's pivot.
-
-    The value stated is the measured half range r̂/2 (never below what the data support);
-    what the noise may have added to it is the interval's lower side. The constants are
-    those of the study (models.validation.half_range: smooth, rough, spiked and real
-    curves, noise 0.1–2 × the half range, 12–72 points) at which each end misses at most
-    about α/2; that study also states the interval's width against what a correct interval
-    needs. ``seed`` None: made from the readings (:func:`readings_seed`); a curve of more
-    than 16 384 points is judged on every k-th point.
-    """
-    full = np.asarray(errors, dtype=float)
-    stride = max(1, -(-full.size // MAX_MONTE_CARLO_POINTS))
-    points = np.arange(0, full.size, stride)
-    e = full[points]
-    n = e.size
-    if seed is None:
-        seed = readings_seed(full, budget)
-    trials = int(max(2000, min(trials, _MONTE_CARLO_DRAWS // max(n, 1))))
-    measured = 0.5 * float(np.ptp(e)) if n else 0.0
-    if n < 2:
-        return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
-                                 seed, stride)
-    draws = _signed_draws(budget, points, trials, np.random.default_rng(seed))
-    if not np.any(draws):
-        return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
-                                 seed, stride)
-    alpha = 1.0 - budget.probability
-    widths = [w for w in AVERAGING_WIDTHS if w == 1 or 3 * w <= n]
-    level = 1.0 - alpha / (2.0 * len(widths))
-    low = 0.0
-    for width in widths:
-        curve, noise = (e, draws) if width == 1 else (_moving_average(e, width),
-                                                      _moving_average(draws, width))
-        q = float(np.quantile(_gap_spread(curve, noise, -KAPPA_LOWER), level))
-        low = max(low, 0.5 * (float(np.ptp(curve)) - q))
-    q_low = float(np.quantile(_gap_spread(e, draws, KAPPA_UPPER), 0.5 * alpha))
-    # r − r̂ ≤ ε_j* − ε_i* for the true extremes i*, j*: the pair that varies most of the
-    # points that may hold them (an input common to the run, a roll, can move the extremes
-    # to other points than the measured ones, which no world about the measured gaps shows)
-    pair = _pair_quantile(draws, _candidates(e, draws), _candidates(-e, -draws),
-                          1.0 - 0.5 * alpha)
-    high = max(measured - 0.5 * q_low, measured + 0.5 * pair, measured)
-    low = min(low, measured)
-    return HalfRangeEstimate(measured, 0.0, measured, high - measured, measured - low,
-                             budget.probability, trials, seed, stride)
 
 
 @dataclass(frozen=True)

@@ -445,13 +445,13 @@ def width_study(runs: int, workbenches=WIDTH_WORKBENCHES, shapes=WIDTH_SHAPES,
 
 #: the quick grid of ``anglebench validate`` (the benchmark runs the whole study)
 VALIDATE_WIDTH_NOISES = (0.1, 1.0)
-VALIDATE_WIDTH_POINTS = (36,)
+VALIDATE_WIDTH_POINTS = (24,)
 
 
 def width_cases(trials: int = 200) -> list:
     """The validation record's cases of the width study: per workbench (theodolite,
     polygon, positioning) the coverage pooled over the four shapes at noise 0.1 and 1 times
-    the half range, 36 points (``trials`` // 20 runs a cell, at least 10), against the
+    the half range, 24 points (``trials`` // 20 runs a cell, at least 10), against the
     binomial floor; and the width against the oracle's as a figure (the median and the
     largest cell; from so few runs a cell's oracle is rough — the benchmark,
     tests/benchmarks/test_half_range_coverage.py, runs 100 a cell over the whole grid)."""
