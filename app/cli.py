@@ -334,7 +334,11 @@ def run_analyze(argv: list[str]) -> int:
         if isinstance(kind, IssuesCertificates):
             # U beside every error array and the decided quantity, with the certificate
             # details given (their standards, tolerance and decision rule), else none
-            from models.certificate.uncertainty_json import merge_json, workbench_uncertainty_json
+            from models.certificate.uncertainty_json import (
+                certified_json,
+                merge_json,
+                workbench_uncertainty_json,
+            )
 
             try:
                 metadata = _read_metadata(args.metadata,
@@ -344,6 +348,7 @@ def run_analyze(argv: list[str]) -> int:
                 _say(f"anglebench analyze: {_why(exc, words)}")
                 return EXIT_BAD_INPUT
             merge_json(data, workbench_uncertainty_json(kind, result, metadata, settings))
+            data.update(certified_json(kind, result, metadata))  # the certificate's figures
         data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}

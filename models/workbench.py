@@ -249,6 +249,24 @@ class IssuesCertificates(ABC):
         ``expanded_uncertainty_<name>`` and ``coverage_factor_<name>`` beside it."""
         return {}
 
+    def decided_errors(self, result: Any, metadata: Any) -> Any:
+        """The error curve the statement of conformity is made on (the array the
+        certificate passes to models.uncertainty.conformity.decide_conformity, in the
+        budget's unit): the JSON states its measured figure even when no U can be given
+        for it. None when the workbench does not say."""
+        return None
+
+    def decided_tolerance(self, result: Any, metadata: Any, unit: str) -> float | None:
+        """The tolerance the statement of conformity is made against, in ``unit`` (the
+        certificate details' by default); None when none is set."""
+        return metadata.tolerance_in(unit)
+
+    def certified_json(self, result: Any, metadata: Any) -> dict[str, Any]:
+        """Keys of the JSON whose figures the certificate details change (a figure's
+        interval with the reference standards' U): they replace the keys of ``to_json``
+        of the same name, so that the JSON states what the certificate prints."""
+        return {}
+
     def certificate_doubt(self, result: Any) -> str:
         """Why a certificate of ``result`` needs the user's confirmation first ("" when it
         does not): figures no instrument of the kind shows (the window asks; the command

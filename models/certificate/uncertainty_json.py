@@ -25,7 +25,8 @@ import numpy as np
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import Conformity
 
-__all__ = ["PointUncertainty", "budget_arrays", "decided_quantity_json", "merge_json",
+__all__ = ["PointUncertainty", "budget_arrays", "certified_json", "decided_quantity_json",
+           "merge_json",
            "uncertainty_json", "workbench_uncertainty_json"]
 
 
@@ -152,13 +153,55 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     if conformity is None:
         unit = kind.error_unit(kind.settings_with_defaults(settings))
         try:
-            tolerance = metadata.tolerance_in(unit)
+            tolerance = kind.decided_tolerance(result, metadata, unit)
         except ValueError:  # a tolerance in a unit of another kind: no figure to state
             tolerance = None
         if tolerance is not None:
             out["decided_quantity"] = {
-                "value": None, "interval_low": None, "interval_high": None,
+                "value": _measured_figure(kind, result, metadata),
+                "interval_low": None, "interval_high": None,
                 "coverage_probability": probability, "unit": unit,
-                "tolerance": tolerance, "verdict": None, "rule": metadata.decision_rule,
-                "reason": why}
+                "tolerance": _number(tolerance), "verdict": None,
+                "rule": metadata.decision_rule, "reason": why}
+    else:  # the figure is always stated, even where the decision could not compute it
+        decided = out.get("decided_quantity")
+        if decided is not None and decided["value"] is None:
+            decided["value"] = _measured_figure(kind, result, metadata)
     return out
+
+
+def _measured_figure(kind: Any, result: Any, metadata: Any) -> float | None:
+    """The decided figure as measured, when the certificate cannot give its interval (no
+    honest U for these readings — a polygon without an identified tilt and no stated σ of
+    a reading — or the certificate refused): half the peak-to-peak of the curve the decision
+    is made on, or its largest |error| when every point decides. The interval is then not
+    stated (null, with the reason): an interval without the reading noise would take the
+    noise as 0, which no coverage can be claimed for. None only where the readings do not
+    determine the curve itself (a cross-calibration design that leaves harmonics unseen)."""
+    try:
+        errors = kind.decided_errors(result, metadata)
+    except _NOT_DETERMINED:
+        return None
+    if errors is None:
+        return None
+    e = np.asarray(errors, dtype=float)
+    e = e[np.isfinite(e)]
+    if not e.size:
+        return None
+    if metadata.decision_quantity == "points":
+        return float(np.max(np.abs(e)))
+    return 0.5 * float(np.ptp(e))
+
+
+def certified_json(kind: Any, result: Any, metadata: Any) -> dict[str, Any]:
+    """The keys of ``kind``'s JSON that the certificate details change (positioning's figure
+    intervals with the reference standards' U, as the certificate prints them): they
+    replace ``to_json``'s (:meth:`models.workbench.IssuesCertificates.certified_json`);
+    none where the readings do not determine them."""
+    hook = getattr(kind, "certified_json", None)
+    if hook is None:
+        return {}
+    try:
+        return dict(hook(result, metadata))
+    except _NOT_DETERMINED:
+        return {}

@@ -501,6 +501,12 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
         return {"error_from_step0_arcsec": PointUncertainty(
             u, np.full(u.size, float(s.coverage_factor)))}
 
+    def decided_errors(self, result, metadata):
+        # the item's values about their mean (None: the design does not determine them)
+        from models.crosscal.report import _per_point
+
+        return _per_point(result)[0]
+
     def uncertainty_budgets(self, result, metadata):
         # each item's budget as its certificate states it (about the mean of the n values);
         # nothing when the design does not separate them (the values are not the result)

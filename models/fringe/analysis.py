@@ -647,6 +647,14 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
     def certificate(self, result, metadata, source_name=""):
         return fringe_certificate(result, metadata, source_name, self.method_reference)
 
+    def decided_errors(self, result, metadata):
+        # half range: the fitted model's continuous as-found error over the whole period
+        if metadata.decision_quantity == "half_range":
+            from models.fringe.report import model_error_curve
+
+            return model_error_curve(result)[1]
+        return result.raw_error
+
     def uncertainty_budgets(self, result, metadata):
         # as found: the signals' and the stated inputs; compensated: with the fitted model
         u = result.unit

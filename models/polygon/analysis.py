@@ -736,6 +736,14 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
     tolerance_in_settings = True  # the grade
 
+    def decided_errors(self, result, metadata):
+        return result.mean_corrected_arcsec
+
+    def decided_tolerance(self, result, metadata, unit):
+        from models.polygon.report import GRADE_ACCURACY_ARCSEC
+
+        return float(GRADE_ACCURACY_ARCSEC[result.grade])  # the one source: the grade
+
     def uncertainty_budgets(self, result, metadata):
         return polygon_json_budgets(result, metadata)
 

@@ -438,9 +438,23 @@ def _figure_objects(keys, values: Mapping[str, Any], intervals) -> dict[str, Any
     return out
 
 
+def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
+    """The figures as the JSON states them, each {value, interval_low, interval_high,
+    coverage_probability}, with the intervals of :func:`figure_uncertainties` for
+    ``budget`` (the certificate's, with its reference standards' U; without it the result's
+    own stated inputs) — the same intervals the certificate prints — and the probability
+    of that budget."""
+    intervals = figure_uncertainties(result, budget)
+    return {
+        "iso230_2_figures": _figure_objects(ISO_KEYS, result.iso.figures, intervals),
+        "vdi3441_figures": _figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
+        "coverage_probability": (DEFAULT_COVERAGE_PROBABILITY if budget is None
+                                 else float(budget.probability)),
+    }
+
+
 def to_json(result: PositioningResult) -> dict[str, Any]:
     iso = result.iso
-    intervals = figure_uncertainties(result)
     per_target: dict[str, Any] = {"target": result.positions.tolist()}
     for name, _, stats in result.directions_present():
         per_target[f"mean_{name}"] = _array(stats.mean)
@@ -463,9 +477,7 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
         "minimum_runs_met": result.minimum_runs_met,
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
-        "iso230_2_figures": _figure_objects(ISO_KEYS, iso.figures, intervals),
-        "vdi3441_figures": _figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
-        "coverage_probability": DEFAULT_COVERAGE_PROBABILITY,
+        **figures_json(result),
         "figure_intervals_reason": None if intervals_determined(result) else
         message(NO_INTERVALS),
     }
@@ -567,6 +579,14 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
 
     def certificate(self, result, metadata, source_name=""):
         return positioning_certificate(result, metadata, source_name, self.method_reference)
+
+    def decided_errors(self, result, metadata):
+        return np.concatenate([stats.mean for _, _, stats in result.directions_present()])
+
+    def certified_json(self, result, metadata):
+        # the figures' intervals with the certificate's budget (its reference standards' U):
+        # the intervals the certificate prints
+        return figures_json(result, positioning_budget(result, metadata))
 
     def uncertainty_array_names(self, result):
         return [f"per_target/mean_{name}" for name, _, _ in result.directions_present()]

@@ -278,6 +278,9 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     def uncertainty_budgets(self, result, metadata):
         return theodolite_json_budgets(result, metadata)
 
+    def decided_errors(self, result, metadata):
+        return result.corrected_error_arcsec
+
     def overlay_figure(self, result):
         return error_figure(result)
 
