@@ -24,6 +24,10 @@ def imports(path: Path) -> set[str]:
             out.add(node.module)
         elif isinstance(node, ast.Import):
             out.update(alias.name for alias in node.names)
+    if path == ROOT / "models" / "registry.py":  # it imports each workbench by its path, lazily
+        from models.registry import LOCATIONS
+
+        out.update(location.partition(":")[0] for location in LOCATIONS.values())
     return out
 
 
