@@ -57,6 +57,7 @@ def test_widgets_import_nothing_from_app():
 
 
 @pytest.mark.parametrize("kind", WORKBENCHES)
+@pytest.mark.slow
 def test_no_workbench_imports_another(kind):
     others = [k for k in WORKBENCHES if k != kind]
     for path in python_files(f"models/{kind}", f"widgets/{kind}"):
@@ -120,6 +121,7 @@ def shared_files() -> list[Path]:
             and path.relative_to(ROOT).as_posix() != "models/registry.py"]
 
 
+@pytest.mark.slow
 def test_shared_code_names_no_workbench():
     """Shared code finds a workbench through the registry and its capabilities
     (models/workbench.py), never by its key: a fifth workbench needs no edit there."""

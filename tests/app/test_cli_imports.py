@@ -39,6 +39,7 @@ def modules_after_analyze(kind: str, samples_dir) -> set[str]:
 
 # theodolite and polygon: the start-up figures of the issue; fringe shares their path
 @pytest.mark.parametrize("kind", ["theodolite", "polygon"])
+@pytest.mark.slow
 def test_a_plain_analyze_imports_nothing_heavy_and_no_other_workbench(kind, samples_dir):
     modules = modules_after_analyze(kind, samples_dir)
     heavy = sorted({m.split(".")[0] for m in modules} & set(HEAVY))
@@ -49,6 +50,7 @@ def test_a_plain_analyze_imports_nothing_heavy_and_no_other_workbench(kind, samp
     assert LOCATIONS[kind].partition(":")[0] in modules  # the probe did analyse it
 
 
+@pytest.mark.slow
 def test_the_registry_imports_a_workbench_when_it_is_first_asked_for():
     code = ("import sys; from models.registry import KINDS; "
             "keys = sorted(KINDS); before = 'models.polygon.analysis' in sys.modules; "
