@@ -129,6 +129,26 @@ def window(qtbot, tmp_path):
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
+_VALIDATION_CASES: dict[int, list] = {}
+
+
+@pytest.fixture
+def validation_once(monkeypatch):
+    """``anglebench validate`` computes its reference cases once a process for each number of
+    trials (they are seeded: the same whatever the language the report is in), so the
+    English and the Chinese report of the suite share one run (~20 s of Monte Carlo)."""
+    import app.validation_report as validation_report
+
+    real = validation_report.run_validation
+
+    def run_validation(trials: int = 200) -> list:
+        if trials not in _VALIDATION_CASES:
+            _VALIDATION_CASES[trials] = real(trials)
+        return list(_VALIDATION_CASES[trials])
+
+    monkeypatch.setattr(validation_report, "run_validation", run_validation)
+
+
 # -- the fast loop (#44) ----------------------------------------------------------------------
 #: tests of more than ~0.25 s in areas other engineers are changing now (the register, capture,
 #: fringe, the #39 conformity studies): marked slow here rather than in their files, which are
