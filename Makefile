@@ -16,12 +16,18 @@ run: $(STAMP)
 	$(VENV)/bin/anglebench --samples
 
 # the whole suite, one worker per core (pytest-xdist); `make test-fast`: the tests not marked
-# slow, in one process, in under a minute
+# slow, also one worker per core (-n auto: its ~1000 tests take ~40 s of CPU in all, each
+# worker's start-up and collection included, so two workers finish in well under a minute on
+# an idle 2-core machine, #44); a test of more than ~0.25 s is marked slow (README: Quick start).
+# PYTHONDONTWRITEBYTECODE is emptied for the run: pytest keeps the test modules it rewrote
+# and Python the modules it compiled (__pycache__, ignored by git) instead of compiling every
+# test module again in every worker and every program a test starts (~6 s of CPU a worker)
+TEST_ENV := QT_QPA_PLATFORM=offscreen PYTHONDONTWRITEBYTECODE=
 test: $(STAMP)
-	QT_QPA_PLATFORM=offscreen $(PY) -m pytest -n auto --dist worksteal
+	$(TEST_ENV) $(PY) -m pytest -n auto --dist worksteal
 
 test-fast: $(STAMP)
-	QT_QPA_PLATFORM=offscreen $(PY) -m pytest -m "not slow"
+	$(TEST_ENV) $(PY) -m pytest -n auto --dist worksteal -m "not slow"
 
 $(VENV)/.bench-installed: pyproject.toml $(STAMP)
 	$(PY) -m pip install --quiet --disable-pip-version-check -e '.[test,bench]'

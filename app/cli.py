@@ -18,13 +18,11 @@ from typing import Any
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.dcc.reader import POLYGON_FACE_DEVIATIONS
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
-from models.project.file import migrate_certificate_details
 from models.project.output_guard import (
     OutputRefused,
     Protected,
@@ -50,15 +48,25 @@ from models.workbench import (
     WritesCorrectionTable,
 )
 
+# What only some runs need is imported where it is needed (a plain ``analyze`` of a
+# sample starts in about 1.5 times numpy's import: tests/app/test_cli_imports.py,
+# tests/benchmarks/test_cli_startup.py): the project file's migrations and the results
+# writers (the certificate's document); and only the named workbench is loaded
+# (models/registry.py) unless the command line names another's option or asks for help.
+
 
 def _why(exc: BaseException, words) -> str:
     """What went wrong, in the language of ``words`` (a translator)."""
     return rendered(reason_of(exc), words)
 
 
-def _parser(words) -> argparse.ArgumentParser:
-    """The command line, its help in the language of ``words`` (a translator)."""
-    p = Parser(prog="anglebench analyze", description=words(QT_TR_NOOP("Analyse a readings file")))
+def _parser(words, kinds: tuple[str, ...] | None = None,
+            parser_class: type[argparse.ArgumentParser] = Parser) -> argparse.ArgumentParser:
+    """The command line, its help in the language of ``words`` (a translator), with the
+    options of the workbenches ``kinds`` (default: all)."""
+    kinds = tuple(KINDS) if kinds is None else kinds
+    p = parser_class(prog="anglebench analyze",
+                     description=words(QT_TR_NOOP("Analyse a readings file")))
     p.add_argument("kind", choices=sorted(KINDS), help=words(QT_TR_NOOP("the workbench")))
     p.add_argument("file", help=words(QT_TR_NOOP("the readings (CSV, TSV, XLSX)")))
     p.add_argument("--json", action="store_true",
@@ -106,13 +114,13 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("positioning: the log measured after compensation "
                                          "(analysed with the same settings); prints A, B, E, M, "
                                          "R before → after (JSON: before_after)")))
-    for judge in _signal_judges()[:1]:  # one set of options, whichever workbench holds them
+    for judge in _signal_judges(kinds)[:1]:  # one set of options, whichever holds them
         judge.add_signal_arguments(p, words)
     add_language_option(p, words)
-    for _, shortcut in _shortcuts():
+    for _, shortcut in _shortcuts(kinds):
         p.add_argument(shortcut.flag, dest=_dest(shortcut.flag), action="store_true",
                        help=words(shortcut.help))
-    for flag, owners in _flags().items():
+    for flag, owners in _flags(kinds).items():
         parts = []
         for kind, parameter in owners:
             # "| " so that a long list wraps (a word of 80 columns cannot)
@@ -128,8 +136,10 @@ def _parser(words) -> argparse.ArgumentParser:
     return p
 
 
-def _signal_judges() -> list[JudgesSignals]:
-    return [k for k in KINDS.values() if isinstance(k, JudgesSignals)]
+def _signal_judges(kinds: tuple[str, ...] | None = None) -> list[JudgesSignals]:
+    """The workbenches of ``kinds`` (all: None) that judge signals."""
+    found = (KINDS[k] for k in kinds) if kinds is not None else KINDS.values()
+    return [k for k in found if isinstance(k, JudgesSignals)]
 
 
 def _signal_setup(kind, args: argparse.Namespace):
@@ -137,6 +147,8 @@ def _signal_setup(kind, args: argparse.Namespace):
     ValueError when they are given to a workbench that does not."""
     if isinstance(kind, JudgesSignals):
         return kind.signal_setup(args)
+    if not hasattr(args, "signal_scale"):  # read with the named workbench's options only
+        return None
     for judge in _signal_judges()[:1]:
         used = [f for f in judge.signal_flags if getattr(args, f, None) is not None]
         if used or getattr(args, "signal_scale", 1.0) != 1.0:
@@ -152,26 +164,63 @@ def _dest(flag: str) -> str:
     return "setting_" + flag[2:].replace("-", "_")
 
 
-def _flags() -> dict[str, list[tuple[str, Any]]]:
-    """Each command-line flag, with the workbenches that declare it and their parameter."""
+def _flags(kinds: tuple[str, ...]) -> dict[str, list[tuple[str, Any]]]:
+    """Each command-line flag of the workbenches ``kinds``, with the workbenches that
+    declare it and their parameter."""
     flags: dict[str, list[tuple[str, Any]]] = {}
-    for key, kind in KINDS.items():
-        for parameter in kind.parameters:
+    for key in kinds:
+        for parameter in KINDS[key].parameters:
             if parameter.cli:
                 flags.setdefault(parameter.flag, []).append((key, parameter))
     return flags
 
 
-def _shortcuts() -> list[tuple[str, Any]]:
-    """Each workbench's switches that set one of its settings (``--zenith``), with its key."""
-    return [(key, s) for key, kind in KINDS.items() for s in kind.shortcuts]
+def _shortcuts(kinds: tuple[str, ...]) -> list[tuple[str, Any]]:
+    """The switches of the workbenches ``kinds`` that set one of its settings (``--zenith``),
+    with its key."""
+    return [(key, s) for key in kinds for s in KINDS[key].shortcuts]
 
 
-def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
-    """The settings the options give, each checked against the chosen workbench's own
-    declaration; an option of another workbench is refused."""
+class _Undecided(Exception):
+    """The command line needs the whole parser (another workbench's option, an
+    abbreviation, help, an error to report)."""
+
+
+class _TrialParser(Parser):
+    """Reads a command line with one workbench's options only; anything it does not know
+    exactly is left to the whole parser, which reads it as it always has."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        kwargs.update(allow_abbrev=False, add_help=False)
+        super().__init__(*args, **kwargs)
+
+    def error(self, message: str):
+        raise _Undecided(message)
+
+
+def _parse(argv: list[str], words) -> tuple[argparse.Namespace, tuple[str, ...]]:
+    """The arguments, and the workbenches whose options were read: the one named first in
+    ``argv`` when the command line holds only its options (then no other workbench is
+    imported), else all (their options are refused or explained by name)."""
+    named = next((a for a in argv if a in KINDS), None)
+    if named is not None and not {"-h", "--help"} & set(argv):
+        try:
+            args, rest = _parser(words, (named,), _TrialParser).parse_known_args(argv)
+        except _Undecided:
+            pass
+        else:
+            if not rest and args.kind == named:
+                return args, (named,)
+    kinds = tuple(KINDS)
+    return _parser(words, kinds).parse_args(argv), kinds
+
+
+def _settings_from(args: argparse.Namespace, kinds: tuple[str, ...]) -> dict[str, Any]:
+    """The settings the options give (those of the workbenches ``kinds`` were read), each
+    checked against the chosen workbench's own declaration; an option of another workbench
+    is refused."""
     settings: dict[str, Any] = {}
-    for flag, owners in _flags().items():
+    for flag, owners in _flags(kinds).items():
         text = getattr(args, _dest(flag))
         if text is None:
             continue
@@ -181,7 +230,7 @@ def _settings_from(args: argparse.Namespace) -> dict[str, Any]:
                                         flag=flag, kinds=" and ".join(k for k, _ in owners),
                                         kind=args.kind))
         settings[parameter.key] = parameter.from_text(text)
-    for key, shortcut in _shortcuts():
+    for key, shortcut in _shortcuts(kinds):
         if not getattr(args, _dest(shortcut.flag)):
             continue
         if key != args.kind:
@@ -226,12 +275,12 @@ def _finite(value: Any) -> Any:
 def run_analyze(argv: list[str]) -> int:
     language = language_asked(argv)
     with speaking(language) as words:
-        args = _parser(words).parse_args(argv)
+        args, kinds = _parse(argv, words)
     args.language = language  # "system" resolved
     kind = KINDS[args.kind]
 
     try:
-        settings = _settings_from(args)
+        settings = _settings_from(args, kinds)
     except SettingsError as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -467,6 +516,8 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
     except (RecursionError, ValueError):  # nesting thousands deep; a number too long to read
         raise MetadataError(message(QT_TR_NOOP("{path}: not a certificate's details (nested too "
                                                "deep or a number too long)"), path=path)) from None
+    from models.project.file import migrate_certificate_details
+
     try:
         if isinstance(data, dict):
             data = migrate_certificate_details(data, error_unit)
@@ -565,6 +616,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.certificate_issue import draft_reasons
     from app.dcc_issue import DccError
+    from app.writers.certificate_pdf import write_certificate_pdf
+    from app.writers.results_export import write_results_csv, write_results_xlsx
 
     words = translator(args.language)
     try:

@@ -230,12 +230,10 @@ def _write(path: Path, text: str) -> None:
 
 
 def _register(key: str, const: str) -> None:
-    """The workbench's entry in models/registry.py: its import and its name in the list."""
+    """The workbench's entry in models/registry.py: its key and where its object is."""
     path = ROOT / "models" / "registry.py"
     text = path.read_text("utf-8")
-    imports = re.findall(r"^from models\.\w+\.analysis import \w+\n", text, re.MULTILINE)
-    text = text.replace(imports[-1], imports[-1] + f"from models.{key}.analysis import {const}\n", 1)
-    text = text.replace("\n)}\n", f"\n    {const},\n)}}\n", 1)
+    text = text.replace("\n}\n", f'\n    "{key}": "models.{key}.analysis:{const}",\n}}\n', 1)
     path.write_text(text, "utf-8")
 
 

@@ -8,31 +8,71 @@ the presenters by their path, so the command line never imports Qt. Adding a
 workbench: ``make new-workbench NAME=…`` writes a folder in models/, one in widgets/,
 a sample, the manual pages and its line here; tests/test_workbench_contract.py says
 what else it needs.
+
+Each workbench is named by where its object is (``module:NAME``) and its module is
+imported when the workbench is first asked for: ``anglebench analyze theodolite …``
+loads the theodolite's models and no other workbench's (the positioning's alone would
+bring in scipy.special); ``KINDS.values()`` and ``KINDS.items()`` load them all.
 """
 
 from __future__ import annotations
 
 import importlib
-from typing import Any
+from collections.abc import Iterator, Mapping
+from typing import TYPE_CHECKING, Any
 
-from models.crosscal.analysis import CROSSCAL
-from models.fringe.analysis import FRINGE
-from models.polygon.analysis import POLYGON
-from models.positioning.analysis import POSITIONING
-from models.theodolite.analysis import THEODOLITE
-from models.workbench import Workbench
+if TYPE_CHECKING:
+    from models.workbench import Workbench
 
-__all__ = ["KINDS", "presenter_class"]
+__all__ = ["KINDS", "LOCATIONS", "presenter_class"]
+
+
+#: each workbench's key and its object's ``module:NAME``, in the order of the window's tabs
+LOCATIONS: dict[str, str] = {
+    "theodolite": "models.theodolite.analysis:THEODOLITE",
+    "polygon": "models.polygon.analysis:POLYGON",
+    "fringe": "models.fringe.analysis:FRINGE",
+    "positioning": "models.positioning.analysis:POSITIONING",
+    "crosscal": "models.crosscal.analysis:CROSSCAL",
+}
+
+
+class Workbenches(Mapping[str, "Workbench"]):
+    """The workbenches by key, each module imported on its first use (keys, ``in`` and
+    ``len`` import nothing)."""
+
+    def __init__(self, locations: Mapping[str, str]) -> None:
+        self._locations = dict(locations)
+        self._loaded: dict[str, Workbench] = {}
+
+    def __getitem__(self, key: str) -> Workbench:
+        try:
+            return self._loaded[key]
+        except KeyError:
+            pass
+        module, _, name = self._locations[key].partition(":")  # KeyError: no such workbench
+        workbench = getattr(importlib.import_module(module), name)
+        if workbench.key != key:
+            raise LookupError(f"models/registry.py lists {module}:{name} as {key!r}, but its "
+                              f"key is {workbench.key!r}")
+        self._loaded[key] = workbench
+        return workbench
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._locations
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._locations)
+
+    def __len__(self) -> int:
+        return len(self._locations)
+
+    def __repr__(self) -> str:
+        return f"Workbenches({list(self._locations)})"
 
 
 #: the workbenches in the order of the window's tabs
-KINDS: dict[str, Workbench] = {k.key: k for k in (
-    THEODOLITE,
-    POLYGON,
-    FRINGE,
-    POSITIONING,
-    CROSSCAL,
-)}
+KINDS: Mapping[str, Workbench] = Workbenches(LOCATIONS)
 
 
 def presenter_class(kind: Workbench) -> Any:

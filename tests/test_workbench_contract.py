@@ -7,6 +7,7 @@ Run it alone on one workbench: ``pytest tests/test_workbench_contract.py -k NAME
 
 from __future__ import annotations
 
+import functools
 import inspect
 import json
 import math
@@ -46,6 +47,7 @@ def _where(key: str) -> str:
     return f"models/{key}/analysis.py"
 
 
+@functools.cache  # each sample analysed once a process (tests only read it)
 def _sample(key: str):
     kind = KINDS[key]
     rows = map_columns(read_table(SAMPLES / kind.sample_file), kind.columns)
@@ -117,6 +119,7 @@ def test_sample_parses_and_analyses(key):
     assert result is not None
 
 
+@pytest.mark.slow
 def test_json_carries_the_sign_convention_and_the_warnings(key):
     kind, result = _sample(key)
     data = kind.to_json(result)
@@ -206,6 +209,7 @@ def test_presenter_shows_the_sample(key, qtbot):
 
 
 # -- capabilities ---------------------------------------------------------------------------
+@pytest.mark.slow
 def test_its_capabilities_work_on_the_sample(key, tmp_path):
     kind, result = _sample(key)
     declared = [c.__name__ for c in CAPABILITIES if isinstance(kind, c)]
@@ -240,6 +244,7 @@ def test_its_capabilities_work_on_the_sample(key, tmp_path):
             f"{_where(key)}: overlay_figure has a series of role 'corrected' to draw over")
 
 
+@pytest.mark.slow
 def test_certificate_of_the_sample(key):
     kind, result = _sample(key)
     if not isinstance(kind, IssuesCertificates):

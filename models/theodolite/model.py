@@ -470,6 +470,14 @@ def true_rotation_deg(azimuth_deg, setup: SetupParameters, iterations: int = 4) 
     return rotation
 
 
+def _distinct(values: np.ndarray) -> np.ndarray:
+    """The distinct values among finite ``values``, sorted: ``np.unique(values)`` without its
+    check for a masked array, which imports numpy.ma (a tenth of the command line's start-up,
+    tests/benchmarks/test_cli_startup.py)."""
+    ordered = np.sort(np.ravel(values))
+    return ordered[np.concatenate(([True], ordered[1:] != ordered[:-1]))] if ordered.size else ordered
+
+
 def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None = None,
               row_numbers=None) -> None:
     """Refuse readings that cannot identify a set-up, before any fit (ValueError, one line).
@@ -488,7 +496,7 @@ def check_run(theta_deg, azimuth_deg, elevation_deg, reference_index: int | None
                 QT_TR_NOOP("row {value}, column '{name}': {values}° is beyond ±{limit}° and cannot "
                            "be a reading of this test"),
                 value=_row_of(i, row_numbers), name=name, values=f"{values[i]:g}", limit=f"{limit:g}"))
-    distinct = np.unique(np.round(theta, 6))
+    distinct = _distinct(np.round(theta, 6))
     if distinct.size == 1:
         raise ValueError(message(
             QT_TR_NOOP("all θ are equal ({theta}°): the set-up cannot be identified; the axis must turn "
@@ -665,7 +673,7 @@ def analyze_run(
                        "{accuracy}: check the readings and the set-up."),
             rms=f"{ident.residual_rms_arcsec:.2f}\"", accuracy=f"{accuracy_arcsec:g}\""))
     iso = None
-    if directions is not None or np.unique(np.round(theta, 6)).size < theta.size:
+    if directions is not None or _distinct(np.round(theta, 6)).size < theta.size:
         iso = iso230_evaluate(theta, corrected, directions)
     return TheodoliteResult(
         theta_deg=theta,

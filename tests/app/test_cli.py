@@ -193,6 +193,7 @@ def test_the_fast_reader_changes_no_figure(capsys, samples_dir, monkeypatch, nam
 
 
 @pytest.mark.parametrize("kind", list(KINDS))
+@pytest.mark.slow
 def test_the_summary_in_chinese_carries_the_same_figures(capsys, samples_dir, kind):
     """--language zh_CN: the summary and warnings in Chinese (from the window's own .ts,
     read without Qt), every figure of each line as in English (the word order may differ)."""
@@ -235,6 +236,7 @@ def test_old_details_are_read_in_the_unit_of_the_workbench_errors(tmp_path):
     assert fringe.error_unit(fringe.settings_with_defaults({})) == "arcsec"
 
 
+@pytest.mark.slow
 def test_crosscal_json_contract(capsys, samples_dir, tmp_path):
     code, out, err = run_cli(capsys, "crosscal", str(samples_dir / "crosscal_sample.csv"), "--json")
     assert code == 0, err

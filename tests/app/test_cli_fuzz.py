@@ -180,6 +180,7 @@ def _judged(kind: str, made, tmp_path) -> None:
 
 @ROUND
 @given(made=round_case("fringe", "off-centre"))
+@pytest.mark.slow
 def test_fringe_off_centre_signals_are_compensated_or_refused(made, tmp_path):
     _judged("fringe", made, tmp_path)
 
@@ -193,6 +194,7 @@ def test_theodolite_elevations_of_no_setup_are_refused(made, tmp_path):
 
 @ROUND
 @given(kind=st.sampled_from(["theodolite", "polygon"]), data=st.data())
+@pytest.mark.slow
 def test_full_width_and_decimal_comma_spellings(kind, data, tmp_path):
     _judged(kind, data.draw(round_case(kind, "spelling")), tmp_path)
 
@@ -212,6 +214,7 @@ def test_binary_headers_are_refused_in_one_clean_line(kind, data, tmp_path):
 
 @ROUND
 @given(kind=st.sampled_from(["theodolite", "polygon", "fringe", "positioning"]), data=st.data())
+@pytest.mark.slow
 def test_damaged_records_judged_as_the_round_judges_them(kind, data, tmp_path):
     _judged(kind, data.draw(round_case(kind, "damaged")), tmp_path)
 

@@ -61,6 +61,7 @@ def _cases(samples_dir):
 
 
 @pytest.mark.parametrize("index", range(4))
+@pytest.mark.slow
 def test_the_incomplete_unit_enters_no_figure(capsys, samples_dir, tmp_path, index):
     kind, header, complete, last, taken, unit, number, expected = list(_cases(samples_dir))[index]
     done = [r for block in complete for r in block]
@@ -122,6 +123,7 @@ def test_no_complete_unit_yet_is_said(capsys, samples_dir, tmp_path):
     assert code == 2 and "set 1: 5 of 24 faces: none is complete yet" in err
 
 
+@pytest.mark.slow
 def test_rows_waiting_for_their_reading_are_points_not_yet_taken(capsys, samples_dir, tmp_path):
     """A log written from the plan: run 5's remaining rows hold target, run and direction
     and no deviation yet. They are not bad rows; run 5 is in progress."""

@@ -166,7 +166,7 @@ def test_the_register_speaks_chinese(issued, tmp_path, capsys):
 
 
 @pytest.mark.slow
-def test_the_method_validation_in_chinese(tmp_path, capsys):
+def test_the_method_validation_in_chinese(tmp_path, capsys, validation_once):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100", "--language", "zh_CN"]) == 0
     lines = capsys.readouterr().out.splitlines()

@@ -148,6 +148,7 @@ def test_a_dropped_readings_file_is_imported_a_project_opened(qtbot, tmp_path, s
     assert theodolite.sheet.row_count == 41 and presenter.path == path
 
 
+@pytest.mark.slow
 def test_the_project_behind_a_certificate_opens_untitled_at_its_workbench(qtbot, tmp_path,
                                                                           samples_dir):
     source, _, (theodolite, _) = make(qtbot, tmp_path)
@@ -183,6 +184,7 @@ def test_an_edit_is_autosaved_and_offered_back_after_a_crash(qtbot, tmp_path, sa
     declining.close()
 
 
+@pytest.mark.slow
 def test_recovered_work_is_unsaved_work_of_the_same_file(qtbot, tmp_path, samples_dir):
     crashed, _, (theodolite, _) = make(qtbot, tmp_path)
     load_sample(theodolite, samples_dir)

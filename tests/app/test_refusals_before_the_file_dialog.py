@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from unittest import mock
 
+import pytest
 import shiboken6
 from PySide6.QtWidgets import QWidget
 
@@ -33,6 +34,7 @@ def test_a_grade_the_details_contradict_is_told_before_the_file_dialog(samples_d
     assert "'grade 5' but the workbench is set to grade 3" in text
 
 
+@pytest.mark.slow
 def test_a_table_the_controller_refuses_is_told_before_the_file_dialog(qtbot, samples_dir):
     from widgets.positioning.presenter import PositioningPresenter
     from widgets.positioning.view import PositioningView

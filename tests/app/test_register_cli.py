@@ -181,6 +181,7 @@ def test_verify_and_opening_find_a_version_set_back_and_a_truncated_tail(capsys)
     assert "WARNING: the register recorded 3 record(s)" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_head_verify_head_show_and_withdraw(tmp_path, capsys):
     numbers = _three()
     assert main(["register", "head"]) == 0
@@ -220,6 +221,7 @@ def test_a_read_only_sqlite_register_is_listed_and_verified(monkeypatch, capsys)
     assert "read-only" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_a_pdf_copied_into_a_second_record_is_said(tmp_path, capsys):
     numbers = _three()
     assert main(["register", "show", numbers[0], "--pdf", str(tmp_path / "1.pdf")]) == 0

@@ -34,7 +34,7 @@ def test_rigs_import_nothing_from_the_code_they_check():
 
 
 @pytest.mark.slow
-def test_validate_command_writes_a_dated_report(tmp_path, capsys):
+def test_validate_command_writes_a_dated_report(tmp_path, capsys, validation_once):
     out = tmp_path / "validation.pdf"
     assert main(["validate", "--pdf", str(out), "--trials", "100"]) == 0
     printed = capsys.readouterr().out

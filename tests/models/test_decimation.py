@@ -30,6 +30,7 @@ def test_envelope_keeps_extremes_order_and_size(y, bins):
 
 @settings(max_examples=60, deadline=None)
 @given(st.integers(0, 20_000), st.integers(0, 2**31), st.integers(4, 300))
+@pytest.mark.slow
 def test_a_thinned_scatter_draws_every_cell_the_points_fill(n, seed, cells):
     """Each drawn point is a sample; every sample shares a grid cell with a drawn one (so an
     outlier is drawn); no two drawn points share a cell; the record's order is kept."""

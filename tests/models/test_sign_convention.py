@@ -43,6 +43,7 @@ def test_polygon_scale_error_is_positive():
 
 
 @pytest.mark.parametrize("key", sorted(KINDS))
+@pytest.mark.slow
 def test_every_json_states_the_convention(key, capsys, samples_dir):
     kind = KINDS[key]
     extra = ["--samples-per-period", "64"] if key == "fringe" else []

@@ -37,6 +37,7 @@ def _cells(presenter, row):
     return [presenter.sheet.text(row, c) for c in range(3)]
 
 
+@pytest.mark.slow
 def test_the_plan_fills_target_run_and_direction_as_deviations_arrive(presenter_and_view):
     presenter, view = presenter_and_view
     presenter.set_settings(PLAN)

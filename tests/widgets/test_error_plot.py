@@ -6,6 +6,7 @@ import pytest
 from widgets.error_plot import ErrorPlot
 
 
+@pytest.mark.slow
 def test_y_range_moves_only_when_needed_and_respects_a_zoom(qtbot):
     plot = ErrorPlot()
     qtbot.addWidget(plot)

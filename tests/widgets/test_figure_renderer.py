@@ -92,6 +92,7 @@ def test_the_error_plot_draws_each_role_as_the_certificate_does():
     (PlotSeries("a", X, X, (1, 2, 3), role="corrected"), ROLE_STYLES["corrected"].colour),
     (PlotSeries("a", X, X, (1, 2, 3)), (1, 2, 3)),
 ])
+@pytest.mark.slow
 def test_the_certificate_draws_from_the_shared_style(monkeypatch, series, colour):
     """The PDF writer asks models/plot_style.py for each series' colour and dash: a style
     changed there is what the certificate draws."""
@@ -123,6 +124,7 @@ def _role_figure(points: int, scale: float = 1.0) -> PlotFigure:
 
 @pytest.mark.parametrize(("points", "symbol", "width"), [(24, "o", 2.0), (600, None, 2.0),
                                                          (3000, None, 1.0)])
+@pytest.mark.slow
 def test_a_panel_of_the_error_plot_draws_roles_by_their_point_count(qtbot, points, symbol, width):
     """The error plot's rules, now the renderer's: a role's own markers on a short curve, none
     beyond 500 points, a 1-px pen on a curve of points beyond 2000 (not on the model's line)."""

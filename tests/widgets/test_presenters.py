@@ -50,6 +50,7 @@ def load(presenter, samples_dir) -> None:
     presenter.refresh()
 
 
+@pytest.mark.slow
 def test_theodolite_presenter_asks_for_curves_in_theta_order(qtbot, samples_dir):
     presenter, view = make(TheodolitePresenter, TheodoliteView, qtbot)
     assert view.add_setting.call_count == len(presenter.kind.parameters)
@@ -125,6 +126,7 @@ def test_fringe_presenter_hands_the_view_every_curve_and_exports(qtbot, samples_
     assert out.read_text().startswith("# AngleBench fringe correction table")
 
 
+@pytest.mark.slow
 def test_positioning_presenter_flags_few_runs_and_tells_what_it_cannot_write(qtbot, samples_dir,
                                                                              tmp_path):
     presenter, view = make(PositioningPresenter, PositioningView, qtbot)
@@ -152,6 +154,7 @@ def test_positioning_presenter_flags_few_runs_and_tells_what_it_cannot_write(qtb
     assert not (tmp_path / "no").exists()
 
 
+@pytest.mark.slow
 def test_positioning_presenter_asks_the_controller_options_and_keeps_them(qtbot, samples_dir,
                                                                          tmp_path):
     presenter, view = make(PositioningPresenter, PositioningView, qtbot)

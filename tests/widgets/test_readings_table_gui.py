@@ -138,6 +138,7 @@ def test_settings_change_reanalyses(qtbot, bench):
     assert bench.is_modified
 
 
+@pytest.mark.slow
 def test_simulation_panel_reproduces_fig3_family(qtbot, bench):
     sim = bench.view.simulation
     sim.sweep_values.setText("-2, 0, 2")

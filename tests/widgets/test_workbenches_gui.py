@@ -98,6 +98,7 @@ def test_fringe_paste_and_compensation(qtbot, fringe, samples_dir):
     assert len(liss_x) == 128
 
 
+@pytest.mark.slow
 def test_interferometer_record_without_phase_reference(qtbot, fringe, samples_dir):
     lines = (samples_dir / "fringe_interferometer_sample.csv").read_text().splitlines()[1:3001]
     fringe.set_settings({"period_nm": 316.4})
@@ -156,6 +157,7 @@ def test_screenshot_command_writes_every_workbench(tmp_path, qapp):
     assert all(p.stat().st_size > 20_000 for p in tmp_path.glob("*.png"))
 
 
+@pytest.mark.slow
 def test_polygon_certificate_fills_deviations_undoably(qtbot, polygon, tmp_path):
     polygon.load_sample()
     qtbot.waitUntil(lambda: polygon.result is not None)
@@ -169,6 +171,7 @@ def test_polygon_certificate_fills_deviations_undoably(qtbot, polygon, tmp_path)
     assert polygon.sheet.copy_rows() == before
 
 
+@pytest.mark.slow
 def test_polygon_certificate_missing_position(qtbot, polygon, tmp_path):
     from models.readings.tabular_import import TableImportError
 
@@ -187,6 +190,7 @@ def test_closure_limit_table_setting(qtbot, polygon):
     qtbot.waitUntil(lambda: not polygon.result.valid)  # sample closure 0.12" > 0.1"
 
 
+@pytest.mark.slow
 def test_what_if_starts_in_the_main_set_up_and_names_it_plainly(polygon):
     """#31: the What-if tab started in the paper's frame ("polygon's axis (seed 001's
     frame)") while the workbench starts levelled; its sweep menu cited "Fig 3" of no paper."""
@@ -203,6 +207,7 @@ def test_what_if_starts_in_the_main_set_up_and_names_it_plainly(polygon):
     assert not any("seed" in text for text in texts + [main.toolTip()])
 
 
+@pytest.mark.slow
 def test_polygon_simulation_reproduces_fig3(qtbot, polygon):
     sim = polygon.view.simulation
     sim.form.set_values({"psi_arcsec": 600.0, "sweep": "omega_deg", "ac_alignment": "polygon"})
@@ -276,6 +281,7 @@ def test_opening_a_project_during_an_import_keeps_the_project(qtbot, fringe, tmp
     assert fringe.sheet.row_count == 2 and not fringe.busy
 
 
+@pytest.mark.slow
 def test_polygon_headline_says_the_result_stands_and_what_the_tilt_asks(qtbot, polygon):
     """#31: "Grade 3 (±1″) met … tilt ψ = 480 exceeds 270" read as pass and fail at once.
     The tilt's error is removed from the figures (exact 3-D rotation), so the grade's
@@ -292,6 +298,7 @@ def test_polygon_headline_says_the_result_stands_and_what_the_tilt_asks(qtbot, p
             f"{result.allowed_tilt_arcsec:.0f}\" allowed — re-seat the polygon") in headline
 
 
+@pytest.mark.slow
 def test_fringe_table_export_to_an_unwritable_path_tells_the_user(qtbot, fringe, tmp_path,
                                                                    monkeypatch):
     """The export goes through the workbench's correction table, as on the command line: a

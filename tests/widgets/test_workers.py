@@ -17,6 +17,7 @@ from widgets.fringe.presenter import FringePresenter
 from widgets.workers import SWITCH_INTERVAL_WORKING, Workers, application_workers
 
 
+@pytest.mark.slow
 def test_the_application_owns_one_workers_object_that_every_presenter_uses(qapp, qtbot):
     workers = application_workers()
     assert workers is application_workers()
@@ -116,6 +117,7 @@ def test_typing_that_never_stops_still_gets_autosaved():
         assert 0.15 < time.perf_counter() - t0 < 1.0
 
 
+@pytest.mark.slow
 def test_one_workers_analysis_does_not_hold_up_anothers_autosave():
     """Each object counts its own analyses (a test's workers do not touch the window's)."""
     mine, theirs = Workers(), Workers()

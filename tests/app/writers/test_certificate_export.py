@@ -139,6 +139,7 @@ def test_hostile_text_neither_breaks_the_page_nor_becomes_markup():
     assert pages >= 4
 
 
+@pytest.mark.slow
 def test_bundled_fonts_exist_and_cover_chinese():
     from fontTools.ttLib import TTFont
 
@@ -295,6 +296,7 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
 
 
 @pytest.mark.parametrize("key", sorted(KINDS))
+@pytest.mark.slow
 def test_no_figure_is_left_as_text_and_no_number_has_an_apostrophe(key):
     kind, result = _analysed(key)
     book = load_workbook(io.BytesIO(results_xlsx_bytes(

@@ -99,6 +99,7 @@ def test_chinese_notes_with_a_blank_line_and_a_long_chinese_lab_name(theodolite,
     assert "第一段说明。" in text and "第二段说明。" in text and text.count("测") >= 300
 
 
+@pytest.mark.slow
 def test_right_to_left_script_is_refused_not_printed_reversed(theodolite):
     for name in ("شركة القياس", "מעבדה לכיול"):
         with pytest.raises(ValueError, match="right-to-left script"):

@@ -72,6 +72,7 @@ def test_asked_for_as_a_test_report_it_needs_no_reason():
     assert not any("not a calibration certificate" in s for s in document.statements)
 
 
+@pytest.mark.slow
 def test_the_comparators_stated_u_is_an_input_through_the_design():
     kind, result = _sample("crosscal")
     without = kind.certificate_document(result, replace(META, standards=()))
@@ -92,6 +93,7 @@ def test_the_comparators_stated_u_is_an_input_through_the_design():
     np.testing.assert_allclose(document.budget.combined, combined, rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_the_laboratorys_cmc_is_a_floor_named_on_the_certificate():
     kind, result = _sample("crosscal")
     computed = kind.certificate_document(result, META).budget.expanded

@@ -86,6 +86,7 @@ def test_round_trip_full_and_partial_rosettes(n, mountings, tol):
 
 
 @pytest.mark.parametrize("frame", ["levelled", "polygon"])
+@pytest.mark.slow
 def test_each_mountings_tilt_is_fitted_and_removed_in_its_frame(frame):
     """ψ up to 600″ per mounting (reseated each time): the tilt's horizontal effect is up to
     0.25″ here. Fitted in the right frame: E and d to 0.5 mas and every ψ_j to 0.03″ (the

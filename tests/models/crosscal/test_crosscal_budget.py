@@ -65,6 +65,7 @@ def test_the_autocollimator_scale_row_covers_a_scale_error_on_the_bench(seed):
     np.testing.assert_allclose(np.abs(moved), half_width, rtol=0.02, atol=1e-4)
 
 
+@pytest.mark.slow
 def test_an_unmeasured_tilt_is_covered_by_its_bound():
     """The bench seats the polygon tilted by up to ψ (its own direction) in every mounting and
     the readings carry no vertical column: the results' change is covered by k = 2 times the
@@ -93,6 +94,7 @@ def _analyze(rows, **settings):
 
 
 @pytest.mark.parametrize("item", ["polygon", "encoder"])
+@pytest.mark.slow
 def test_the_budget_has_the_benchs_inputs(item):
     n = 12
     rows = bench(n, 7, noise_arcsec=0.01).rows(range(n))

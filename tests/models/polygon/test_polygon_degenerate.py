@@ -82,6 +82,7 @@ def test_the_certificate_is_refused_on_the_command_line_naming_why(tmp_path, cap
 
 
 @pytest.mark.parametrize("faces, flat", [(12, True), (3, False)])
+@pytest.mark.slow
 def test_with_the_tilt_bound_and_a_stated_noise_u_covers_the_truth(faces, flat):
     """True tilt 300″ (the default bound) in random directions, σ stated: every position's
     error within its U at about the stated probability (before: 25–27 %)."""

@@ -327,6 +327,7 @@ def test_what_a_lint_refuses_the_emulated_controller_refuses_too():
 
 @settings(max_examples=200, deadline=None)
 @given(st.text(max_size=60))
+@pytest.mark.slow
 def test_options_text_never_crashes(text):
     """Whatever is typed as options is read or refused with a message naming the
     controller, never a crash."""

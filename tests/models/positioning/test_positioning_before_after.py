@@ -146,6 +146,7 @@ def test_the_rig_after_our_compensation_loses_its_systematic_error(noise):
 @settings(max_examples=40, deadline=None)
 @given(st.lists(st.floats(-50, 50), min_size=12, max_size=12),
        st.lists(st.floats(-50, 50), min_size=12, max_size=12))
+@pytest.mark.slow
 def test_a_log_against_itself_changes_nothing_and_swapping_negates(first, second):
     def of(values):
         v = iter(values)

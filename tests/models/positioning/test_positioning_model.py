@@ -83,6 +83,7 @@ def table_error_deg(theta_deg):
 
 @settings(max_examples=40, deadline=None)
 @given(st.integers(2, 7), st.integers(2, 6), st.integers(0, 2**32 - 1))
+@pytest.mark.slow
 def test_figures_agree_with_an_independent_evaluation(n_targets, runs, seed):
     rng = np.random.default_rng(seed)
     targets = np.sort(rng.choice(np.arange(0, 3600, 5) / 10.0, n_targets, replace=False))
@@ -203,6 +204,7 @@ def test_a_deviation_unit_of_the_wrong_kind_is_refused():
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.sampled_from(["+", "-", "−", "↑", "↓", "up", "down", "UP", "Down", ""]),
                 min_size=2, max_size=12))
+@pytest.mark.slow
 def test_every_spelling_of_a_direction_reads_as_its_sign(spellings):
     rows = [[str(i), "", s, "0.5", ""] for i, s in enumerate(spellings)]
     result = analyze(rows)

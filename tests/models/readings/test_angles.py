@@ -81,6 +81,7 @@ def test_format_parse_round_trip(value, places):
     st.integers(0, 359), st.integers(0, 59), st.decimals(0, "59.999", places=3),
     st.booleans(), st.sampled_from(["{d}°{m}'{s}\"", "{d} {m} {s}", "{d}:{m}:{s}"]),
 )
+@pytest.mark.slow
 def test_dms_components_round_trip(d, m, s, negative, pattern):
     text = ("-" if negative else "") + pattern.format(d=d, m=m, s=s)
     expected = (d + m / 60 + float(s) / 3600) * (-1 if negative else 1)

@@ -83,6 +83,7 @@ def run_text(n: int, offset: float = 0.0) -> str:
     return "\n".join(f"{t:g}\t{t + offset:.6f}\t0.1" for t in theta)
 
 
+@pytest.mark.slow
 def test_ctrl_a_then_paste_replaces_the_sheet(presenter, qtbot):
     table = presenter.view.table
     assert presenter.sheet.row_count >= 41
@@ -110,6 +111,7 @@ def test_a_shorter_run_over_a_longer_one_asks(presenter):
     assert presenter.parsed.n == 15
 
 
+@pytest.mark.slow
 def test_a_pasted_header_row_is_left_out_not_red(presenter):
     table = presenter.view.table
     last = presenter.sheet.row_count  # the blank row after the run: append a run there

@@ -111,6 +111,7 @@ def test_a_group_that_is_not_one_point_is_refused_naming_its_rows(rows, n, words
 # -- round trips through each workbench -------------------------------------------------------
 
 @pytest.mark.parametrize("key", ["theodolite", "positioning", "polygon"])
+@pytest.mark.slow
 def test_n_identical_readings_give_the_single_reading_result_exactly(key, samples_dir):
     kind, rows, _ = _sample(key, samples_dir)
     single = json.dumps(kind.to_json(_analyse(kind, rows)))
@@ -160,6 +161,7 @@ def test_theodolite_noisy_repeats_average_and_their_type_a_input(samples_dir):
     assert budget.combined[k] == pytest.approx(math.hypot(without, s_mean[k]), rel=1e-9)
 
 
+@pytest.mark.slow
 def test_positioning_noisy_repeats_per_approach(samples_dir):
     kind, rows, truth = _sample("positioning", samples_dir)
     n, sigma = 3, 0.8
@@ -240,6 +242,7 @@ def test_command_line_takes_readings_per_point(capsys, samples_dir, tmp_path):
     assert "readings per point" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_project_file_keeps_readings_per_point(tmp_path, samples_dir):
     kind, rows, _ = _sample("positioning", samples_dir)
     tripled = [list(r) for r in rows for _ in range(3)]
@@ -253,6 +256,7 @@ def test_project_file_keeps_readings_per_point(tmp_path, samples_dir):
     assert json.dumps(kind.to_json(again)) == json.dumps(kind.to_json(_analyse(kind, rows)))
 
 
+@pytest.mark.slow
 def test_window_pasted_repeats_with_the_setting_averaged(qtbot, samples_dir):
     from widgets.theodolite.presenter import TheodolitePresenter
 

@@ -110,6 +110,7 @@ def test_a_log_that_cannot_be_compared_is_told(window, qtbot, samples_dir, tmp_p
            "target in common" in presenter.view.summary.toPlainText()
 
 
+@pytest.mark.slow
 def test_the_command_line_compares_before_and_after(capsys, samples_dir, tmp_path):
     import json
 

@@ -56,6 +56,7 @@ def test_json_has_both_standards_and_every_figure(samples_dir, capsys):
     assert data["sign_convention"] == "actual_minus_target"
 
 
+@pytest.mark.slow
 def test_cli_writes_a_table_and_refuses_what_it_cannot_write(samples_dir, tmp_path, capsys):
     src = str(samples_dir / KIND.sample_file)
     out = tmp_path / "axis.comp"
@@ -126,6 +127,7 @@ def presenter_and_view(qtbot):
     shiboken6.delete(owner)
 
 
+@pytest.mark.slow
 def test_presenter_draws_the_declared_figures_and_exports(presenter_and_view, samples_dir,
                                                           tmp_path):
     presenter, view = presenter_and_view
@@ -176,6 +178,7 @@ def test_a_polygon_run_is_sent_to_the_positioning_workbench(window):
     assert not window.menus.send_action.isEnabled()
 
 
+@pytest.mark.slow
 def test_an_xlsx_log_with_chinese_headers_and_a_title_row(tmp_path, samples_dir, capsys):
     """A laser calibrator's export as labs keep it: a title row, Chinese headers, XLSX."""
     import openpyxl
@@ -210,6 +213,7 @@ def test_a_theodolite_run_is_sent_with_the_iso_sign(window):
     assert "One approach direction only" in " ".join(sent.warnings)
 
 
+@pytest.mark.slow
 def test_cli_writes_a_controller_table_and_refuses_naming_the_rule(samples_dir, tmp_path, capsys):
     src = str(samples_dir / KIND.sample_file)
     out = tmp_path / "AX_EEC.INI"
@@ -230,6 +234,7 @@ def test_cli_writes_a_controller_table_and_refuses_naming_the_rule(samples_dir, 
     assert "one table" in capsys.readouterr().err and not bad.exists()
 
 
+@pytest.mark.slow
 def test_presenter_asks_the_controllers_options_and_tells_the_lints_refusal(presenter_and_view,
                                                                             samples_dir, tmp_path):
     presenter, view = presenter_and_view
@@ -261,6 +266,7 @@ def test_presenter_asks_the_controllers_options_and_tells_the_lints_refusal(pres
     view.ask_compensation_path.assert_not_called()
 
 
+@pytest.mark.slow
 def test_the_controller_options_form_returns_what_is_typed(qtbot):
     from PySide6.QtCore import QTimer
     from PySide6.QtWidgets import QApplication, QDialog, QLineEdit
@@ -286,6 +292,7 @@ def test_the_controller_options_form_returns_what_is_typed(qtbot):
                     "tip": "machine axis name, e.g. AX1 or X1"}
 
 
+@pytest.mark.slow
 def test_an_unwritable_compensation_path_is_told_by_its_name(presenter_and_view, samples_dir,
                                                             tmp_path):
     """The file asked for is named (not the temporary file written beside it), and
