@@ -616,7 +616,6 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     # The PDF writer (fpdf2) is imported only when a certificate is asked for.
     from app.certificate_issue import draft_reasons
     from app.dcc_issue import DccError
-    from app.writers.certificate_pdf import write_certificate_pdf
     from app.writers.results_export import write_results_csv, write_results_xlsx
 
     words = translator(args.language)
