@@ -890,6 +890,13 @@ class CapturePanel(QDockWidget):
         place = placement or self._placement(presenter)
         if place is not None:
             row = place.row
+        else:
+            # a row above the cursor still waiting for its reading is the next point (θ typed
+            # and Return with a nominal step: the cursor went on to the next row) — the row
+            # the caption and the guidance name (#41 review)
+            waiting = getattr(presenter, "waiting_row", lambda: None)()
+            if waiting is not None and waiting < row:
+                row = waiting
         keys = [c.key for c in sheet.columns]
         columns = [keys.index(key) for _, _, key in self._targets(presenter)]
         if not columns:
