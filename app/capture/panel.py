@@ -483,8 +483,18 @@ class InstrumentLink:
             self.value.setText("—")
             return
         unit = {"arcsec": '"', "deg": "°"}.get(reading.unit, f" {reading.unit}")
-        text = "   ".join(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}"
-                          for v in reading.values)
+        # as the cell a take fills would read (its angle format, unit and the instrument's
+        # resolution: #41 review, the live value was decimal degrees to 6 places beside a
+        # D°M′S″ column); a value no column of the workbench in front takes, as sent
+        cells = self.panel.cell_texts(self, reading.values, reading.unit)
+        shown = []
+        for i, v in enumerate(reading.values):
+            cell = cells.get(i)
+            if cell is None:
+                shown.append(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}")
+            else:
+                shown.append(f"{cell[0]}{cell[1]}")
+        text = "   ".join(shown)
         self.value.setText(tr("{value} (link lost)").format(value=text) if self.lost else text)
 
     @property
@@ -903,6 +913,49 @@ class CapturePanel(QDockWidget):
             return row
         return next_empty_point(sheet.row_count, row, columns, sheet.text)
 
+    def _cell(self, presenter, link: InstrumentLink, i: int, key: str, value: float,
+              unit: str, row: int) -> tuple[str, str, float]:
+        """(the text value ``i`` of ``link`` is written as in column ``key`` of ``row``, the
+        column's unit symbol, the step it was rounded to): the elevation from a zenith angle
+        where the column reads elevation, D°M′S″ where the column is written so, rounded to
+        the instrument's resolution."""
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        if link.kind == "theodolite" and i == 1 and key == "elevation_deg" \
+                and presenter.settings.get("vertical_reading") != "zenith":
+            value = elevation_from_zenith_deg(value)
+        column = keys.index(key)
+        column_def = sheet.columns[column]
+        dms = unit == "deg" and column_is_dms(
+            [sheet.text(r, column) for r in range(max(0, row - 50), min(row, sheet.row_count))]
+            or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
+        if dms:
+            symbol = ""  # D°M′S″ carries its units
+        elif column_def.unit in ('"', "arcsec") or unit == "arcsec":
+            symbol = '"'
+        elif unit == "deg":
+            symbol = "°"
+        else:
+            symbol = f" {unit}" if unit else ""
+        return (cell_text(value, unit, link.resolution_arcsec, dms, column_def.unit), symbol,
+                cell_step(unit, link.resolution_arcsec, dms, column_def.unit))
+
+    def cell_texts(self, link: InstrumentLink, values: tuple[float, ...],
+                   unit: str) -> dict[int, tuple[str, str]]:
+        """{value index: (cell text, unit symbol)} for the values of ``link`` a take would
+        write on the workbench in front, as it would write them."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return {}
+        targets = [(i, key) for t_link, i, key in self._targets(presenter) if t_link is link]
+        if not targets:
+            return {}
+        # the column's format from its last rows (the plan's placement is not worked out at
+        # every value shown: the live value follows the stream)
+        row = presenter.table_model.sheet.row_count
+        return {i: self._cell(presenter, link, i, key, values[i], unit, row)[:2]
+                for i, key in targets if i < len(values)}
+
     # ------------------------------------------------------------ guidance
     def update_guide(self) -> None:
         """What the workbench says to do next, for the row the next reading goes to."""
@@ -1062,27 +1115,17 @@ class CapturePanel(QDockWidget):
             return ""
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
-        vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
             got, unit, _ = taking[link.slot]
             if i >= len(got):
                 continue
-            value = got[i]
-            if link.kind == "theodolite" and i == 1 and key == "elevation_deg" \
-                    and not vertical_zenith:
-                value = elevation_from_zenith_deg(value)
             column = keys.index(key)
-            column_def = sheet.columns[column]
-            dms = unit == "deg" and column_is_dms(
-                [sheet.text(r, column) for r in range(max(0, row - 50), min(row, sheet.row_count))]
-                or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
-            changes.append((row, column, cell_text(value, unit, link.resolution_arcsec, dms,
-                                                   column_def.unit)))
+            text, _, step = self._cell(presenter, link, i, key, got[i], unit, row)
+            changes.append((row, column, text))
             # the step the cell was rounded to: within half of it the cell is as captured
-            steps[link.slot] = max(steps.get(link.slot, 0.0), cell_step(
-                unit, link.resolution_arcsec, dms, column_def.unit))
+            steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank

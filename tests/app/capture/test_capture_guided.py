@@ -16,6 +16,7 @@ import pytest
 from PySide6.QtCore import Qt, QTimer
 
 from models.certificate.metadata import CertificateMetadata
+from models.readings.angles import parse_angle_deg
 from models.readings.sheet import ReadingsSheet
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
@@ -271,3 +272,26 @@ def test_theta_typed_and_return_with_a_step_the_take_fills_the_row_waiting(windo
     assert [model.sheet.text(r, 0) for r in range(3)] == ["-20", "-18", "-16"]
     assert float(model.sheet.text(1, 1)) == pytest.approx(33.5, abs=1e-8)
     assert model.sheet.text(2, 1) == ""
+
+
+def test_the_live_value_reads_as_the_cells_it_fills(window, qtbot):
+    """#41 review: the live value was decimal degrees to 6 places ("33.500000°") beside an
+    azimuth column in D°M′S″; it is shown as the take writes the cell (format, resolution,
+    the elevation from the zenith angle where the column reads elevation)."""
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    model.replace_all([["-20", "12°30'00.00\"", "1°00'00.00\"", "", ""], ["-18", "", "", "", ""]],
+                      "typed in D°M′S″")
+    presenter.view.table.setCurrentIndex(model.index(1, 1))
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(33.5, 90.25)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: "°" in panel.value.text(), timeout=3000)
+        shown = panel.value.text().split("   ")
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    assert shown == [model.sheet.text(1, 1), model.sheet.text(1, 2)]
+    assert parse_angle_deg(shown[0]) == pytest.approx(33.5, abs=1e-6)
+    assert parse_angle_deg(shown[1]) == pytest.approx(-0.25, abs=1e-6)  # 90° − V
+    assert shown[0].startswith("33°30'") and "33.500000" not in panel.value.text()
