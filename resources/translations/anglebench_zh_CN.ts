@@ -8798,5 +8798,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>no signal tolerance preset &apos;{key}&apos; (there are: {keys})</source>
         <translation>没有信号容差预设“{key}”（现有：{keys}）</translation>
     </message>
+    <message>
+        <source>No data</source>
+        <extracomment>the view of a plot with nothing to draw (x, y; x is pyqtgraph&apos;s): its auto-range of no point showed a y axis of ±5e-05 (#41 review)</extracomment>
+        <translation>无数据</translation>
+    </message>
 </context>
 </TS>
