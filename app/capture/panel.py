@@ -531,12 +531,14 @@ class CapturePanel(QDockWidget):
         self.body_layout.setContentsMargins(4, 4, 4, 4)
         sections = [QWidget() for _ in range(5)]
         columns = []
-        for index, section in enumerate(sections):
+        for section in sections:
             column = QVBoxLayout(section)
             column.setContentsMargins(0, 0, 0, 0)
             columns.append(column)
-            # the guidance and the statistics take the width left (their texts wrap)
-            self.body_layout.addWidget(section, 2 if index in (0, 2) else 0)
+            # the guidance and the statistics take the width left at the bottom (their texts
+            # wrap); at a side no part takes height it does not need (_docked)
+            self.body_layout.addWidget(section, 0)
+        self._sections = sections
         self.body_layout.addStretch(1)
         self.guide = QLabel("")
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
@@ -615,6 +617,10 @@ class CapturePanel(QDockWidget):
         bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
         self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
                                       else QBoxLayout.Direction.TopToBottom)
+        # stretched one above the other, the empty guidance left ~60 px blank at the top
+        # before connecting (#41 review)
+        for index, section in enumerate(self._sections):
+            self.body_layout.setStretchFactor(section, 2 if bottom and index in (0, 2) else 0)
         # at the bottom the panel is low (its parts side by side fit): the readings table
         # and the plot above it keep their height on a 720 px screen
         self.setMaximumHeight(BOTTOM_PANEL_MAX_HEIGHT if bottom else QWIDGETSIZE_MAX)
