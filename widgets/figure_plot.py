@@ -22,7 +22,7 @@ from models.plot_style import ROLE_STYLES, SeriesStyle, drawing_order, series_st
 from widgets.i18n import declared, on_language_change
 from widgets.legend_placement import place_legend
 from widgets.plot_grid import show_grid
-from widgets.plot_range import follow_new_data
+from widgets.plot_range import follow_new_data, show_if_empty
 
 __all__ = ["FigurePlot", "FigureRenderer", "legend_name"]
 
@@ -99,6 +99,7 @@ class FigureRenderer:
                 curve.setData([], [])
             self._name(index, "")
         self._remove_bands()
+        show_if_empty(self.item)  # a neutral view and "No data", not an axis of ±5e-05
 
     def _remove_bands(self) -> None:
         for band in self.bands:
@@ -204,10 +205,12 @@ class FigureRenderer:
             else:
                 curve.setData([], [])
             self._name(index, "")
-        if follow and self.steady_y:
+        # nothing to draw: a neutral view and "No data" (data again: the placeholder hidden)
+        empty = show_if_empty(self.item)
+        if follow and self.steady_y and not empty:
             self.follow_x()
             self.follow_y()
-        elif follow:
+        elif follow and not empty:
             follow_new_data(self.item)  # new data: shown whole again
         self._settle_legend()
 
@@ -231,11 +234,11 @@ class FigureRenderer:
             self._sticky_y = True
         if not self._sticky_y:
             return
-        values = [np.asarray(a, dtype=float).ravel() for a in (*arrays, self.y_includes)]
-        values = np.concatenate(values)
+        values = [np.asarray(a, dtype=float).ravel() for a in arrays]
+        if not any(np.isfinite(v).any() for v in values):
+            return  # nothing drawn: show_if_empty's view (the zero line alone gave ±8e-05)
+        values = np.concatenate([*values, np.asarray(self.y_includes, dtype=float)])
         values = values[np.isfinite(values)]
-        if values.size == 0:
-            return
         lo, hi = float(values.min()), float(values.max())
         span = hi - lo if hi > lo else max(abs(hi), 1e-3)
         view_lo, view_hi = vb.viewRange()[1]

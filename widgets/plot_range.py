@@ -9,9 +9,15 @@ from __future__ import annotations
 import numpy as np
 import pyqtgraph as pg
 
-__all__ = ["data_bounds", "follow_new_data", "show_data_if_hidden"]
+from widgets.i18n import live, tr
+
+__all__ = ["EMPTY_RANGE", "data_bounds", "follow_new_data", "has_data", "show_data_if_hidden",
+           "show_if_empty"]
 
 SAMPLED = 997  # values of a curve read for its fingerprint (a long record has millions)
+#: the view of a plot with nothing to draw (x, y; x is pyqtgraph's): its auto-range of no
+#: point showed a y axis of ±5e-05 (#41 review)
+EMPTY_RANGE = ((0.0, 1.0), (-1.0, 1.0))
 
 
 def _values(item) -> list[np.ndarray]:
@@ -43,6 +49,53 @@ def _items(plot_item) -> list:
             if isinstance(i, pg.PlotDataItem | pg.BarGraphItem)]
 
 
+def has_data(plot_item) -> bool:
+    """Whether any curve or bar of ``plot_item`` has a finite point to draw."""
+    for item in _items(plot_item):
+        values = _values(item)
+        if isinstance(item, pg.BarGraphItem):
+            x, height = values[0], values[1]
+            if x.size and height.size and np.isfinite(height).any():
+                return True
+            continue
+        x, y = (v.ravel() for v in values)
+        if not x.size or x.size != y.size:
+            continue
+        stride = max(1, x.size // SAMPLED)  # a long record: a sample first
+        if (np.isfinite(x[::stride]) & np.isfinite(y[::stride])).any() or \
+                (np.isfinite(x) & np.isfinite(y)).any():
+            return True
+    return False
+
+
+def show_if_empty(plot_item) -> bool:
+    """With nothing to draw, ``plot_item`` shows a neutral view (:data:`EMPTY_RANGE`) and
+    "No data" in its middle, not pyqtgraph's auto-range of no point (a y axis of ±5e-05);
+    with data again, the placeholder hidden and the view ranged on them. Returns whether
+    it is empty."""
+    vb = plot_item.getViewBox()
+    text = getattr(vb, "empty_text", None)
+    if has_data(plot_item):
+        if text is not None and text.isVisible():
+            text.hide()
+            vb.enableAutoRange(y=True)  # the data ranged afresh, as at the start
+        return False
+    if text is None:
+        text = pg.TextItem(color=(128, 128, 128), anchor=(0.5, 0.5))
+        live(text.setText, tr("No data"))
+        plot_item.addItem(text, ignoreBounds=True)
+        vb.empty_text = text
+    # y only: x is left to pyqtgraph (an x range set here, on a panel x-linked to another,
+    # clipped the other's curves to it)
+    y0, y1 = EMPTY_RANGE[1]
+    vb.enableAutoRange(y=False)
+    vb.setYRange(y0, y1, padding=0.0)
+    x0, x1 = vb.viewRange()[0]
+    text.setPos((x0 + x1) / 2, (y0 + y1) / 2)
+    text.show()
+    return True
+
+
 def follow_new_data(plot_item, y: bool = True) -> bool:
     """Call after giving ``plot_item``'s curves their data: when they differ from the data
     it last showed, the view is ranged on them again (pyqtgraph's auto-range on both
@@ -53,6 +106,8 @@ def follow_new_data(plot_item, y: bool = True) -> bool:
     if getattr(vb, "data_fingerprint", None) == now:
         return False
     vb.data_fingerprint = now
+    if show_if_empty(plot_item):
+        return True
     vb.enableAutoRange(x=True, y=True) if y else vb.enableAutoRange(x=True)
     return True
 

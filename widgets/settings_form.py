@@ -22,6 +22,10 @@ from widgets.i18n import Tr, declared, live, on_language_change, tr
 
 #: a form whose widest label and widest field are wider than this (px) wraps its rows
 WRAP_WIDTH = 600
+#: a caption wider than this (px) goes above its field, the field the form's full width: one
+#: long caption set the label column and left every field ~110 px (#41: the polygon's faces
+#: field showed "rom the readings" at 1280×720 with the capture panel docked)
+LONG_CAPTION = 150
 
 
 class _UnfocusedWheel(QObject):
@@ -143,6 +147,16 @@ class SettingsForm(QWidget):
         caption = QLabel()
         live(caption.setText, _shown(label))
         caption.setBuddy(widget)
+        if tooltip:
+            live(caption.setToolTip, _shown(tooltip))
+        if caption.sizeHint().width() > LONG_CAPTION or isinstance(widget, QLineEdit):
+            # a long caption (and a free text, as long as the list typed into it) above
+            # its field; the field the form's whole width
+            caption.setWordWrap(True)
+            self._form.addRow(caption)
+            self._form.addRow(widget)
+            self._fields[key] = widget
+            return widget
         self._form.addRow(caption, widget)
         # a form whose widest label and widest field together are wider than WRAP_WIDTH
         # puts fields below their labels when the pane is narrow: with the capture panel

@@ -13,6 +13,7 @@ from PySide6.QtCore import QObject, QRunnable, QTimer, Signal
 from PySide6.QtGui import QUndoStack
 
 from models.cancellation import AnalysisCancelled, cancellable, checkpoint
+from models.capture.take_cells import waiting_row
 from models.display_units import (
     ANGLE_UNITS,
     AngleUnit,
@@ -549,6 +550,17 @@ class WorkbenchPresenter(QObject):
             return None
         return plan.placement(got[0], self._reading_keys())
 
+    def waiting_row(self) -> int | None:
+        """Without a plan, the row that waits for the next reading: the first of the rows at
+        the end with their point (θ, target) but no reading (models/capture/take_cells.py
+        waiting_row); None when there is none."""
+        sheet = self.sheet
+        if isinstance(sheet.rows, NumericRows) or sheet.row_count > PLAN_ROWS:
+            return None
+        keys = [c.key for c in sheet.columns]
+        reading = [keys.index(k) for k in self._reading_keys() if k in keys]
+        return waiting_row(sheet.row_count, len(keys), reading, sheet.text)
+
     def _without_waiting_rows(self, parsed: ParsedReadings) -> ParsedReadings:
         """The readings less the rows at the end that wait for their reading (the plan's or
         the nominal step's cells filled, no reading yet): a row waiting is not a bad row."""
@@ -604,7 +616,9 @@ class WorkbenchPresenter(QObject):
         plan = self.entry_plan()
         got = None if plan is None else self._plan_rows(plan)
         if got is None:
-            return tr("next: row {row}").format(row=self.sheet.row_count + 1)
+            waiting = self.waiting_row()  # the row a take fills (app/capture/panel.py)
+            row = waiting if waiting is not None else self.sheet.row_count
+            return tr("next: row {row}").format(row=row + 1)
         text = translated(plan.next_text(got[0], self._reading_keys()))
         done, total = plan.progress(got[0], self._reading_keys())
         return f"{text} ({done}/{total})"

@@ -483,8 +483,18 @@ class InstrumentLink:
             self.value.setText("—")
             return
         unit = {"arcsec": '"', "deg": "°"}.get(reading.unit, f" {reading.unit}")
-        text = "   ".join(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}"
-                          for v in reading.values)
+        # as the cell a take fills would read (its angle format, unit and the instrument's
+        # resolution: #41 review, the live value was decimal degrees to 6 places beside a
+        # D°M′S″ column); a value no column of the workbench in front takes, as sent
+        cells = self.panel.cell_texts(self, reading.values, reading.unit)
+        shown = []
+        for i, v in enumerate(reading.values):
+            cell = cells.get(i)
+            if cell is None:
+                shown.append(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}")
+            else:
+                shown.append(f"{cell[0]}{cell[1]}")
+        text = "   ".join(shown)
         self.value.setText(tr("{value} (link lost)").format(value=text) if self.lost else text)
 
     @property
@@ -521,12 +531,14 @@ class CapturePanel(QDockWidget):
         self.body_layout.setContentsMargins(4, 4, 4, 4)
         sections = [QWidget() for _ in range(5)]
         columns = []
-        for index, section in enumerate(sections):
+        for section in sections:
             column = QVBoxLayout(section)
             column.setContentsMargins(0, 0, 0, 0)
             columns.append(column)
-            # the guidance and the statistics take the width left (their texts wrap)
-            self.body_layout.addWidget(section, 2 if index in (0, 2) else 0)
+            # the guidance and the statistics take the width left at the bottom (their texts
+            # wrap); at a side no part takes height it does not need (_docked)
+            self.body_layout.addWidget(section, 0)
+        self._sections = sections
         self.body_layout.addStretch(1)
         self.guide = QLabel("")
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
@@ -605,6 +617,10 @@ class CapturePanel(QDockWidget):
         bottom = area == Qt.DockWidgetArea.BottomDockWidgetArea
         self.body_layout.setDirection(QBoxLayout.Direction.LeftToRight if bottom
                                       else QBoxLayout.Direction.TopToBottom)
+        # stretched one above the other, the empty guidance left ~60 px blank at the top
+        # before connecting (#41 review)
+        for index, section in enumerate(self._sections):
+            self.body_layout.setStretchFactor(section, 2 if bottom and index in (0, 2) else 0)
         # at the bottom the panel is low (its parts side by side fit): the readings table
         # and the plot above it keep their height on a 720 px screen
         self.setMaximumHeight(BOTTOM_PANEL_MAX_HEIGHT if bottom else QWIDGETSIZE_MAX)
@@ -890,11 +906,61 @@ class CapturePanel(QDockWidget):
         place = placement or self._placement(presenter)
         if place is not None:
             row = place.row
+        else:
+            # a row above the cursor still waiting for its reading is the next point (θ typed
+            # and Return with a nominal step: the cursor went on to the next row) — the row
+            # the caption and the guidance name (#41 review)
+            waiting = getattr(presenter, "waiting_row", lambda: None)()
+            if waiting is not None and waiting < row:
+                row = waiting
         keys = [c.key for c in sheet.columns]
         columns = [keys.index(key) for _, _, key in self._targets(presenter)]
         if not columns:
             return row
         return next_empty_point(sheet.row_count, row, columns, sheet.text)
+
+    def _cell(self, presenter, link: InstrumentLink, i: int, key: str, value: float,
+              unit: str, row: int) -> tuple[str, str, float]:
+        """(the text value ``i`` of ``link`` is written as in column ``key`` of ``row``, the
+        column's unit symbol, the step it was rounded to): the elevation from a zenith angle
+        where the column reads elevation, D°M′S″ where the column is written so, rounded to
+        the instrument's resolution."""
+        sheet = presenter.table_model.sheet
+        keys = [c.key for c in sheet.columns]
+        if link.kind == "theodolite" and i == 1 and key == "elevation_deg" \
+                and presenter.settings.get("vertical_reading") != "zenith":
+            value = elevation_from_zenith_deg(value)
+        column = keys.index(key)
+        column_def = sheet.columns[column]
+        dms = unit == "deg" and column_is_dms(
+            [sheet.text(r, column) for r in range(max(0, row - 50), min(row, sheet.row_count))]
+            or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
+        if dms:
+            symbol = ""  # D°M′S″ carries its units
+        elif column_def.unit in ('"', "arcsec") or unit == "arcsec":
+            symbol = '"'
+        elif unit == "deg":
+            symbol = "°"
+        else:
+            symbol = f" {unit}" if unit else ""
+        return (cell_text(value, unit, link.resolution_arcsec, dms, column_def.unit), symbol,
+                cell_step(unit, link.resolution_arcsec, dms, column_def.unit))
+
+    def cell_texts(self, link: InstrumentLink, values: tuple[float, ...],
+                   unit: str) -> dict[int, tuple[str, str]]:
+        """{value index: (cell text, unit symbol)} for the values of ``link`` a take would
+        write on the workbench in front, as it would write them."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return {}
+        targets = [(i, key) for t_link, i, key in self._targets(presenter) if t_link is link]
+        if not targets:
+            return {}
+        # the column's format from its last rows (the plan's placement is not worked out at
+        # every value shown: the live value follows the stream)
+        row = presenter.table_model.sheet.row_count
+        return {i: self._cell(presenter, link, i, key, values[i], unit, row)[:2]
+                for i, key in targets if i < len(values)}
 
     # ------------------------------------------------------------ guidance
     def update_guide(self) -> None:
@@ -1055,27 +1121,17 @@ class CapturePanel(QDockWidget):
             return ""
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
-        vertical_zenith = presenter.settings.get("vertical_reading") == "zenith"
         changes = []
         steps: dict[int, float] = {}
         for link, i, key in targets:
             got, unit, _ = taking[link.slot]
             if i >= len(got):
                 continue
-            value = got[i]
-            if link.kind == "theodolite" and i == 1 and key == "elevation_deg" \
-                    and not vertical_zenith:
-                value = elevation_from_zenith_deg(value)
             column = keys.index(key)
-            column_def = sheet.columns[column]
-            dms = unit == "deg" and column_is_dms(
-                [sheet.text(r, column) for r in range(max(0, row - 50), min(row, sheet.row_count))]
-                or [sheet.text(r, column) for r in range(min(sheet.row_count, 50))])
-            changes.append((row, column, cell_text(value, unit, link.resolution_arcsec, dms,
-                                                   column_def.unit)))
+            text, _, step = self._cell(presenter, link, i, key, got[i], unit, row)
+            changes.append((row, column, text))
             # the step the cell was rounded to: within half of it the cell is as captured
-            steps[link.slot] = max(steps.get(link.slot, 0.0), cell_step(
-                unit, link.resolution_arcsec, dms, column_def.unit))
+            steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank

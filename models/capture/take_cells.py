@@ -4,6 +4,10 @@
   cells the take fills are blank there; else the next row below whose cells are all blank
   (rows pre-filled by a plan with target, face or θ but no reading count as empty points);
   else a new row after the last. A take never writes over a filled reading.
+* **The row waiting for its reading** (:func:`waiting_row`): without a plan, the first of the
+  rows at the end of the table that have their point (θ, target, face) but no reading yet —
+  typing θ and Return with a nominal step leaves two such rows: the first is the next point
+  (#41 review: the take filled row 2 while row 1 waited and the guidance named row 1's θ).
 * **The text of a cell** (:func:`cell_text`): the value rounded to the instrument's
   resolution (arcseconds, e.g. 0.01″, 0.1″, 1 µrad = 0.206265″), written in the column's
   angle format — D°M′S″ where the column's cells are written so, else decimal degrees — or
@@ -21,7 +25,7 @@ from collections.abc import Callable, Sequence
 from models.readings.angles import format_dms
 
 __all__ = ["RESOLUTIONS_ARCSEC", "cell_step", "cell_text", "column_is_dms", "decimals_for",
-           "elevation_from_zenith_deg", "next_empty_point", "rounded"]
+           "elevation_from_zenith_deg", "next_empty_point", "rounded", "waiting_row"]
 
 #: one microradian in arcseconds
 MICRORADIAN_ARCSEC = 1e-6 * 180.0 / math.pi * 3600.0
@@ -41,6 +45,25 @@ def next_empty_point(row_count: int, start: int, columns: Sequence[int],
         if all(not text(r, c).strip() for c in columns):
             return r
     return max(start, row_count)
+
+
+def waiting_row(row_count: int, column_count: int, reading_columns: Sequence[int],
+                text: Callable[[int, int], str]) -> int | None:
+    """The first of the rows at the end of the table (blank rows after them aside) that wait
+    for their reading: some cell filled, every cell of ``reading_columns`` blank; None when
+    the last row used has a reading (or no row is used, or no column is a reading's)."""
+    if not reading_columns:
+        return None
+    first = None
+    for r in range(row_count - 1, -1, -1):
+        if not any(text(r, c).strip() for c in range(column_count)):
+            if first is None:
+                continue  # blank rows after the last used one
+            break
+        if any(text(r, c).strip() for c in reading_columns):
+            break
+        first = r
+    return first
 
 
 def rounded(value: float, resolution: float) -> float:

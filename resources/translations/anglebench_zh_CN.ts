@@ -9499,5 +9499,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <source>the signature does not verify: {reason}</source>
         <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
     </message>
+    <message>
+        <source>No data</source>
+        <extracomment>the view of a plot with nothing to draw (x, y; x is pyqtgraph&apos;s): its auto-range of no point showed a y axis of ±5e-05 (#41 review)</extracomment>
+        <translation>无数据</translation>
+    </message>
 </context>
 </TS>

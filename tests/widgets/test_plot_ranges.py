@@ -250,3 +250,53 @@ def test_the_wheel_scrolls_past_a_plot_and_zooms_it_once_clicked(window):
     _wheel(plot, -5)
     _settle(plot)
     assert not np.allclose(vb.viewRange(), before)  # clicked (focused): the wheel zooms
+
+
+def _plot_items(presenter):
+    import pyqtgraph as pg
+
+    out = []
+    for index in range(presenter.view.plot_tabs.count()):
+        widget = presenter.view.plot_tabs.widget(index)
+        for view in widget.findChildren(pg.GraphicsView):
+            out += [(presenter.view.plot_tabs.tabText(index), item) for item in view.scene().items()
+                    if isinstance(item, pg.PlotItem)]
+    return out
+
+
+def test_a_plot_with_no_data_shows_a_neutral_view_and_says_so(window):
+    """#41 review: emptied, a plot showed pyqtgraph's range of no point, a y axis of ±5e-05
+    (±8e-05 with the zero line); it shows ±1 and "No data", and its data again when they come."""
+    from widgets.plot_range import EMPTY_RANGE, has_data
+
+    window.resize(1280, 720)
+    window.show()
+    window.load_all_samples()
+    for index, presenter in enumerate(window.presenters):
+        window.tabs.setCurrentIndex(index)
+        rows = [[presenter.sheet.text(r, c) for c in range(presenter.sheet.column_count)]
+                for r in range(presenter.sheet.row_count)]
+        drawn = {id(item) for _, item in _plot_items(presenter) if has_data(item)}
+        presenter.table_model.replace_all([], "emptied")
+        presenter.refresh()
+        _settle(window)
+        emptied = 0
+        for tab, item in _plot_items(presenter):
+            assert not has_data(item), f"{presenter.kind.key} › {tab}"
+            vb = item.getViewBox()
+            where = f"{presenter.kind.key} › {tab}: {vb.viewRange()}"
+            assert vb.viewRange()[1][1] - vb.viewRange()[1][0] >= 1.0, where
+            if id(item) not in drawn:
+                continue  # (never drawn here: the what-if plots before their tab is shown)
+            emptied += 1
+            if not vb.state["aspectLocked"]:  # (the Lissajous keeps its 1:1)
+                assert tuple(vb.viewRange()[1]) == pytest.approx(EMPTY_RANGE[1]), where
+            assert vb.empty_text.isVisible() and vb.empty_text.toPlainText() == "No data", where
+        assert emptied, presenter.kind.key
+        presenter.table_model.replace_all(rows, "back")
+        presenter.refresh()
+        _settle(window)
+        for tab, item in _plot_items(presenter):
+            text = getattr(item.getViewBox(), "empty_text", None)
+            if has_data(item):
+                assert text is None or not text.isVisible(), f"{presenter.kind.key} › {tab}"

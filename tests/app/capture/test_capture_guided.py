@@ -13,9 +13,10 @@ import math
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QTimer
+from PySide6.QtCore import Qt, QTimer
 
 from models.certificate.metadata import CertificateMetadata
+from models.readings.angles import parse_angle_deg
 from models.readings.sheet import ReadingsSheet
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
@@ -228,3 +229,69 @@ def test_a_wrong_baud_rate_is_named(window, qtbot):
         qtbot.waitUntil(lambda: panel.worker is None, timeout=5000)
     text = panel.status.text()
     assert text.startswith(sim.port) and "baud" in text and "4800" in text
+
+
+def test_theta_typed_and_return_with_a_step_the_take_fills_the_row_waiting(window, qtbot):
+    """#41 review: θ typed and Return before a take (a nominal step set) left row 1 without a
+    reading, the take filling row 2, while the guidance said row 1's θ and the caption
+    "next: row 2". The row still waiting for its reading is the next one, for all three."""
+    from PySide6.QtWidgets import QLineEdit
+
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    table = presenter.view.table
+    presenter.view.step.setValue(2.0)
+    window.show()
+    qtbot.waitExposed(window)
+    table.setCurrentIndex(model.index(0, 0))
+    table.edit(model.index(0, 0))
+    editor = next(w for w in table.viewport().findChildren(QLineEdit) if w.isVisible())
+    qtbot.keyClicks(editor, "-20")
+    qtbot.keyClick(editor, Qt.Key.Key_Return)
+    qtbot.waitUntil(lambda: model.sheet.row_count >= 2, timeout=3000)
+    assert [model.sheet.text(r, 0) for r in range(2)] == ["-20", "-18"]
+    assert table.currentIndex().row() == 1  # Return went on to the next row
+    presenter.refresh()
+    assert presenter.view.next_label.text() == "next: row 1"
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(33.5, 90.25)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
+        assert panel.guide.text() == "Next: θ = -20°"
+        assert panel.target_row() == 0
+        panel.take_button.click()
+        assert float(model.sheet.text(0, 1)) == pytest.approx(33.5, abs=1e-8)
+        assert model.sheet.text(1, 1) == ""
+        assert panel.guide.text() == "Next: θ = -18°"
+        assert panel.target_row() == 1
+        presenter.refresh()  # (on a worker while capturing)
+        qtbot.waitUntil(lambda: presenter.view.next_label.text() == "next: row 2", timeout=3000)
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    assert [model.sheet.text(r, 0) for r in range(3)] == ["-20", "-18", "-16"]
+    assert float(model.sheet.text(1, 1)) == pytest.approx(33.5, abs=1e-8)
+    assert model.sheet.text(2, 1) == ""
+
+
+def test_the_live_value_reads_as_the_cells_it_fills(window, qtbot):
+    """#41 review: the live value was decimal degrees to 6 places ("33.500000°") beside an
+    azimuth column in D°M′S″; it is shown as the take writes the cell (format, resolution,
+    the elevation from the zenith angle where the column reads elevation)."""
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    model.replace_all([["-20", "12°30'00.00\"", "1°00'00.00\"", "", ""], ["-18", "", "", "", ""]],
+                      "typed in D°M′S″")
+    presenter.view.table.setCurrentIndex(model.index(1, 1))
+    panel = window.capture_panel
+    with TheodoliteSimulator("pty", positions=[(33.5, 90.25)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        qtbot.waitUntil(lambda: "°" in panel.value.text(), timeout=3000)
+        shown = panel.value.text().split("   ")
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    assert shown == [model.sheet.text(1, 1), model.sheet.text(1, 2)]
+    assert parse_angle_deg(shown[0]) == pytest.approx(33.5, abs=1e-6)
+    assert parse_angle_deg(shown[1]) == pytest.approx(-0.25, abs=1e-6)  # 90° − V
+    assert shown[0].startswith("33°30'") and "33.500000" not in panel.value.text()

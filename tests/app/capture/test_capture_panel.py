@@ -31,7 +31,8 @@ def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):
         panel.connect_to("autocollimator", sim.port, **FAST)
         qtbot.waitUntil(lambda: panel.latest is not None, timeout=3000)
         qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
-        assert panel.value.text() == '3.250"   -1.500"'
+        # as the cells will read (0.01" resolution), not 3 decimals of its own (#41 review)
+        assert panel.value.text() == '3.25"   -1.50"'
         steps = presenter.undo_stack.count()
         panel.take_button.click()
         panel.disconnect_instrument()
@@ -77,3 +78,21 @@ def test_theodolite_zenith_fills_the_vertical_column_as_it_reads(window, qtbot):
         expected = 87.6543 if reads == "zenith" else 90.0 - 87.6543
         assert float(vertical) == pytest.approx(expected, abs=0.05 / 3600 + 1e-9)
     assert panel.raw_sessions("theodolite")[-1]["frames"]  # the raw frames kept
+
+
+def test_no_blank_band_at_the_top_of_the_panel_docked_at_a_side(window):
+    """#41 review: docked at the right before connecting, the empty guidance took ~60 px of
+    blank height above the instrument (the parts stretched one above the other)."""
+    from PySide6.QtCore import QPoint, Qt
+    from PySide6.QtWidgets import QApplication
+
+    window.resize(1280, 720)
+    window.show()
+    panel = window.capture_panel
+    window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, panel)
+    panel.show()
+    for _ in range(5):
+        QApplication.processEvents()
+    top = panel.links[0].box.mapTo(panel.body, QPoint(0, 0)).y()
+    # the margin, the (empty) guidance's line and the layout's spacing: no more
+    assert top <= panel.guide.sizeHint().height() + 20, top

@@ -16,6 +16,7 @@ from models.capture.take_cells import (
     decimals_for,
     elevation_from_zenith_deg,
     next_empty_point,
+    waiting_row,
 )
 from models.readings.angles import parse_angle_deg
 
@@ -95,3 +96,17 @@ def test_elevation_from_the_zenith_angle_in_both_faces():
     for e in (-10.0, 0.0, 0.004, 45.0):
         v = math.degrees(math.acos(math.sin(math.radians(e))))
         assert elevation_from_zenith_deg(v) == pytest.approx(e, abs=1e-9)
+
+
+def test_the_row_waiting_is_the_first_of_the_last_rows_without_a_reading():
+    # θ, azimuth, elevation: row 1 taken, rows 2 and 3 with θ only (θ and Return with a step)
+    rows = [["10", "33.5", "1.0"], ["12", "", ""], ["14", "", ""], ["", "", ""]]
+    assert waiting_row(4, 3, [1, 2], _text(rows)) == 1
+    rows[1][1] = "33.6"
+    assert waiting_row(4, 3, [1, 2], _text(rows)) == 2
+    rows[2][2] = "1.1"
+    assert waiting_row(4, 3, [1, 2], _text(rows)) is None
+    # a row left without a reading in the middle is not waiting: only the rows at the end
+    assert waiting_row(3, 3, [1, 2], _text([["10", "", ""], ["12", "1", ""], ["14", "", ""]])) == 2
+    assert waiting_row(0, 3, [1, 2], _text([])) is None
+    assert waiting_row(1, 3, [], _text([["10", "", ""]])) is None

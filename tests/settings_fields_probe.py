@@ -1,0 +1,79 @@
+"""Opens the window on the screen Qt was started with, docks the capture panel (right, left,
+bottom) on every workbench, and prints, as JSON, every set-up field whose text does not fit
+in the field (tests/widgets/test_settings_fields_fit.py runs it on a 1280×720 screen)."""
+
+from __future__ import annotations
+
+import json
+import tempfile
+from pathlib import Path
+
+from PySide6.QtCore import QSettings, Qt
+from PySide6.QtWidgets import (
+    QAbstractSpinBox,
+    QApplication,
+    QComboBox,
+    QLineEdit,
+    QStyle,
+    QStyleOptionComboBox,
+)
+
+AREAS = {"right": Qt.DockWidgetArea.RightDockWidgetArea,
+         "left": Qt.DockWidgetArea.LeftDockWidgetArea,
+         "bottom": Qt.DockWidgetArea.BottomDockWidgetArea}
+
+
+def settle(app) -> None:
+    for _ in range(6):
+        app.processEvents()
+
+
+def room(field) -> tuple[str, int, int]:
+    """The text a field shows, its width and the width it has for it (px)."""
+    if isinstance(field, QComboBox):
+        option = QStyleOptionComboBox()
+        field.initStyleOption(option)
+        rect = field.style().subControlRect(QStyle.ComplexControl.CC_ComboBox, option,
+                                            QStyle.SubControl.SC_ComboBoxEditField, field)
+        text = field.currentText()
+        return text, field.fontMetrics().horizontalAdvance(text), rect.width()
+    edit = field.lineEdit() if isinstance(field, QAbstractSpinBox) else field
+    assert isinstance(edit, QLineEdit)
+    text = edit.text()
+    # a line edit keeps 2 px of margin each side of its text (QLineEditPrivate::horizontalMargin)
+    return text, edit.fontMetrics().horizontalAdvance(text), edit.contentsRect().width() - 4
+
+
+def main() -> None:
+    app = QApplication.instance() or QApplication(["anglebench"])
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    scratch = tempfile.mkdtemp(prefix="anglebench-fields-")
+    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
+    window.load_all_samples()
+    window.show()
+    settle(app)
+    panel = window.capture_panel
+    panel.show()
+    found = []
+    for area_name, area in AREAS.items():
+        window.addDockWidget(area, panel)
+        panel.show()
+        for index, presenter in enumerate(window.presenters):
+            window.tabs.setCurrentIndex(index)
+            settle(app)
+            form = presenter.view.settings
+            for key, field in form._fields.items():
+                if not field.isVisibleTo(form):
+                    continue
+                text, needs, has = room(field)
+                found.append({"area": area_name, "workbench": presenter.kind.key,
+                              "key": key, "text": text, "needs": needs, "has": has,
+                              "window": window.frameGeometry().width()})
+    print(json.dumps(found))  # noqa: T201 - the probe's output
+
+
+if __name__ == "__main__":
+    main()
