@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: run test test-fast bench lint pictures translations new-workbench clean
+.PHONY: run test test-fast bench lint pictures translations new-workbench docs clean
 
 $(STAMP): pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
@@ -18,7 +18,7 @@ run: $(STAMP)
 # the whole suite, one worker per core (pytest-xdist); `make test-fast`: the tests not marked
 # slow, also one worker per core (-n auto: its ~1000 tests take ~40 s of CPU in all, each
 # worker's start-up and collection included, so two workers finish in well under a minute on
-# an idle 2-core machine, #44); a test of more than ~0.25 s is marked slow (README: Quick start).
+# an idle 2-core machine, #44); a test of more than ~0.25 s is marked slow (docs/developer-guide.md: Building and testing).
 # PYTHONDONTWRITEBYTECODE is emptied for the run: pytest keeps the test modules it rewrote
 # and Python the modules it compiled (__pycache__, ignored by git) instead of compiling every
 # test module again in every worker and every program a test starts (~6 s of CPU a worker)
@@ -36,7 +36,7 @@ $(VENV)/.bench-installed: pyproject.toml $(STAMP)
 bench: $(STAMP) $(VENV)/.bench-installed
 	QT_QPA_PLATFORM=offscreen $(PY) -m pytest -q -p no:cacheprovider tests/benchmarks -o addopts="" -s
 
-# README pictures: workbench screenshots and sample certificates (needs Debian's poppler-utils)
+# README and docs pictures: workbench screenshots and sample certificates (needs Debian's poppler-utils)
 pictures: $(STAMP)
 	$(PY) -m resources.samples.make_samples
 	QT_QPA_PLATFORM=offscreen $(PY) -m app.readme_pictures
@@ -49,6 +49,11 @@ translations: $(STAMP)
 # make new-workbench NAME=tilt TITLE="Tilt table" TITLE_ZH="倾斜台"
 new-workbench: $(STAMP)
 	$(PY) -m app.new_workbench "$(NAME)" --title "$(TITLE)" --title-zh "$(TITLE_ZH)"
+
+# the docs' generated tables (workbenches, settings, every command's --help) between their
+# markers in README.md and docs/ (app/docs_tables.py; tests/app/test_docs_tables.py: stale)
+docs: $(STAMP)
+	$(PY) -m app.docs_tables
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources

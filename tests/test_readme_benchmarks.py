@@ -1,7 +1,8 @@
-"""The README's performance figures are those of the last benchmark run.
+"""The docs' performance figures are those of the last benchmark run.
 
-`make bench` writes the headlines into BENCHMARKS.md and between the README's
-markers; this checks that nobody edited one without the other.
+`make bench` writes the headlines into BENCHMARKS.md and between the markers of
+docs/benchmarks.md (the README's until #44 moved them there); this checks that nobody
+edited one without the other.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ BEGIN, END = "<!-- bench:headlines begin -->", "<!-- bench:headlines end -->"
 
 
 def _readme_headlines() -> list[str]:
-    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    text = (ROOT / "docs" / "benchmarks.md").read_text(encoding="utf-8")
     start, end = text.index(BEGIN), text.index(END)
     return [line for line in text[start + len(BEGIN):end].splitlines() if line.strip()]
 
@@ -32,7 +33,7 @@ def _benchmark_headlines() -> list[str]:
 
 def test_readme_figures_are_the_last_benchmark_run():
     readme = _readme_headlines()
-    assert readme, "the README's benchmark block is empty: run `make bench`"
+    assert readme, "docs/benchmarks.md's benchmark block is empty: run `make bench`"
     assert readme == _benchmark_headlines()
 
 

@@ -180,7 +180,8 @@ def test_the_validation_report_has_its_cases(key, validation_workbenches):
     assert KINDS[key].title in validation_workbenches, (
         f"{key}: the validation report (anglebench validate) has no case of it: return its "
         f"reference cases from validation_cases() in {_where(key)} (ValidationCase of "
-        "models/validation/cases.py, workbench = its title) and update README's case count")
+        "models/validation/cases.py, workbench = its title) and update the case count in "
+        "docs/certificates-and-register.md")
 
 
 # -- the window -------------------------------------------------------------------------

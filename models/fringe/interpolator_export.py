@@ -1,7 +1,7 @@
 """An interpolator look-up table written as a chip's tools take it (#45): CSV, a C header
 (``const int16_t name[N] = {…};``) and Intel HEX. Each states the entries, the bits, the LSB,
 the lookup and sign, the separate terms, the predicted residual and the record it was made
-from (README "Interpolator look-up tables" documents the formats).
+from (docs/user-guide/fringe.md, "Interpolator look-up tables", documents the formats).
 
 Intel HEX: the codes in entry order, each as a two's-complement integer of ⌈bits/8⌉ bytes,
 little-endian, from address 0; data records (type 00) of 16 bytes, an extended linear

@@ -157,7 +157,7 @@ READING_LIMIT_ARCSEC = 3600.0
 
 def closure_limit_arcsec(grade: int, table: str = "") -> float:
     """Closure limit for a grade from the comma-separated table of grades 1–7; a missing
-    entry falls back to half the grade's accuracy (our default, see README). Every entry
+    entry falls back to half the grade's accuracy (our default, see docs/user-guide/polygon.md). Every entry
     is checked, not only the grade's."""
     if not isinstance(table, str):
         raise SettingsError(message(

@@ -6,8 +6,8 @@ Timings are given as the median and the interquartile range (p25–p75) of
 repeated runs, and compared as ratios of medians.
 
 A benchmark may also give a one-line ``headline``: the headlines open
-BENCHMARKS.md and replace the block between the README's ``bench:headlines``
-markers, so the README's figures are those of the last run, never copied by
+BENCHMARKS.md and replace the block between the ``bench:headlines`` markers of
+docs/benchmarks.md, so the docs' figures are those of the last run, never copied by
 hand (tests/test_readme_benchmarks.py checks that the two agree).
 
 The block between the ``notes`` markers at the end of BENCHMARKS.md is written by hand
@@ -29,7 +29,7 @@ from models.project.atomic_write import write_text_atomic
 
 ROOT = Path(__file__).resolve().parents[2]
 REPORT = ROOT / "BENCHMARKS.md"
-README = ROOT / "README.md"
+HEADLINES_DOC = ROOT / "docs" / "benchmarks.md"  # (#44: was the README's)
 BEGIN, END = "<!-- bench:headlines begin -->", "<!-- bench:headlines end -->"
 NOTES_BEGIN, NOTES_END = "<!-- notes begin", "<!-- notes end -->"
 _SECTIONS: dict[str, list[str]] = {}
@@ -103,11 +103,12 @@ def _notes() -> str:
 
 
 def _update_readme(headlines: list[str]) -> None:
-    """Put the headlines between the README's markers (left alone if they are missing)."""
-    text = README.read_text(encoding="utf-8")
+    """Put the headlines between docs/benchmarks.md's markers (left alone if they are
+    missing)."""
+    text = HEADLINES_DOC.read_text(encoding="utf-8")
     start, end = text.find(BEGIN), text.find(END)
     if start < 0 or end < start:
-        print(f"\nREADME.md has no {BEGIN} … {END} block; headlines not copied")  # noqa: T201
+        print(f"\ndocs/benchmarks.md has no {BEGIN} … {END} block; headlines not copied")  # noqa: T201
         return
     block = "\n".join([BEGIN, *headlines, END])
-    write_text_atomic(README, text[:start] + block + text[end + len(END):])
+    write_text_atomic(HEADLINES_DOC, text[:start] + block + text[end + len(END):])

@@ -1,6 +1,7 @@
 """Compensation tables in the formats of machine controllers, one module per controller;
-each cites the manual and section of every rule it follows (see README, "Controller
-compensation tables", for the rules that could not be verified)."""
+each cites the manual and section of every rule it follows (see
+docs/user-guide/positioning.md, "Controller compensation tables", for the rules that could
+not be verified)."""
 
 from __future__ import annotations
 

@@ -28,7 +28,7 @@ Series 16i/18i "Bidirectional pitch error compensation"):
   the older series (0i, 16i/18i/21i) write none. Option ``series``: ``0i`` (default, no Q) or
   ``30i``.
 
-Not verified (see README): the range of one stored value (±7 on older series, larger on
+Not verified (docs/user-guide/positioning.md): the range of one stored value (±7 on older series, larger on
 later ones: option value_limit), the number of points per axis (option max_points), the
 data numbers N10000 + point of the parameter tape, and whether the increment is output
 at the point or spread over the section.

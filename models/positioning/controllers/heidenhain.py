@@ -22,7 +22,7 @@ the axes"):
   compensation", p. 4-28). Checked on linear axes; on a rotary axis the unit of that power
   of two is not stated there, so it is not checked.
 
-Not verified (see README), hence options without a default or stated in the file: the
+Not verified (see docs/user-guide/positioning.md), hence options without a default or stated in the file: the
 sign of a value (the option ``values`` must say whether the machine's manual wants the
 error — actual − target — or the correction), the table file's header and end lines
 (BEGIN …/[END], as TNC tables are written), and what is applied beyond the last entry.

@@ -20,7 +20,7 @@ Leadscrew error compensation (FCT-C5) and its parameters P-COMP-00017…00025, 0
   version takes: ±32767 × 0.1 µm = ±3.2767 mm); a value beyond the type's range is refused,
   never wrapped.
 
-Not verified (see README): what is applied beyond the table (held here). The ISG "CSV
+Not verified (see docs/user-guide/positioning.md): what is applied beyond the table (held here). The ISG "CSV
 format" belongs to the volumetric compensation (TF5280), not to an axis table; it is not
 written.
 """

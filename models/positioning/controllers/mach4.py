@@ -13,7 +13,7 @@ Rules, from MachMotion's support documentation "Mach 4 Screw Mapping":
 * M/direction: builds after 2107 apply one map to both directions; builds after 4780 take
   separate maps for positive and negative travel.
 
-Not verified (see README): the sign (hence the required option), what is applied beyond
+Not verified (docs/user-guide/positioning.md): the sign (hence the required option), what is applied beyond
 the map, the limit on the number of points, and how Mach4 stores the map: the file written
 is a list of the values to enter in the plugin, not a Mach4 file.
 """

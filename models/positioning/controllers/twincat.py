@@ -13,7 +13,7 @@ ST_PositionCompensationTableParameter:
   or one table per direction: WorkDirectionPositive / WorkDirectionNegative); Modulo
   (TRUE: a modulo axis with a cyclic period).
 
-Not verified (see README): what is applied beyond MinPosition…MaxPosition (held here),
+Not verified (see docs/user-guide/positioning.md): what is applied beyond MinPosition…MaxPosition (held here),
 a limit on the number of elements, and how a modulo table's ends are joined (the ends
 are made equal here).
 """
