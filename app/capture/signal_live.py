@@ -53,4 +53,5 @@ def attach_live_signals(window) -> None:
         key = presenter.kind.key
         panel.attach(open_signal_stream, DemonstrationHead,
                      sessions=lambda k=key: window.capture_panel.sessions.setdefault(k, []),
-                     lab_defaults=lambda k=key: window.certificates.lab_defaults(k))
+                     lab_defaults=lambda k=key: window.certificates.lab_defaults(k),
+                     save_lab_defaults_entry=window.certificates.save_lab_defaults_entry)

@@ -48,11 +48,15 @@ from models.fringe.live_signals import Extremes, LiveFigures, SampleWindow, live
 from models.fringe.model import model_signal
 from models.fringe.signal_tolerance import (
     BUILTIN_PRESETS,
+    LAB_DEFAULTS_KEY,
     NOT_CONFORMITY,
     QUANTITIES,
+    PresetError,
     TolerancePreset,
     load_presets,
+    preset_from_dict,
 )
+from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
@@ -148,6 +152,12 @@ class LiveSignalsPanel(QWidget):
         self.preset = QComboBox()
         self.preset.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
         self.preset.setMinimumContentsLength(18)
+        self.edit_presets_button = QPushButton()
+        live(self.edit_presets_button.setText, tr("Edit presets…"))
+        live(self.edit_presets_button.setToolTip, tr("Add the lab's own tolerance presets, copy "
+                                                     "a built-in one to edit, rename, delete "
+                                                     "(saved with the lab defaults)"))
+        self.preset_editor = None
         self.periods = QSpinBox()
         self.periods.setRange(1, 1000)
         self.periods.setValue(16)
@@ -221,6 +231,7 @@ class LiveSignalsPanel(QWidget):
         self.preset_label, self.periods_label, self.scale_label = QLabel(), QLabel(), QLabel()
         view.addWidget(self.preset_label)
         view.addWidget(self.preset, 2)
+        view.addWidget(self.edit_presets_button)
         view.addWidget(self.periods_label)
         view.addWidget(self.periods)
         view.addWidget(self.scale_label)
@@ -267,6 +278,7 @@ class LiveSignalsPanel(QWidget):
         self.reset_button.clicked.connect(self.reset)
         self.take_button.clicked.connect(lambda: self.take())
         self.preset.currentIndexChanged.connect(self._preset_chosen)
+        self.edit_presets_button.clicked.connect(lambda: self.edit_presets())
         self.scale.valueChanged.connect(self._rescaled)
         self._retitle()
         self._show_connected()
@@ -294,16 +306,21 @@ class LiveSignalsPanel(QWidget):
     # ------------------------------------------------------------------ wiring
     def attach(self, opener: Callable, demonstrator: Callable | None = None,
                sessions: Callable[[], list] | None = None,
-               lab_defaults: Callable[[], dict] | None = None) -> None:
+               lab_defaults: Callable[[], dict] | None = None,
+               save_lab_defaults_entry: Callable[[str, object], None] | None = None) -> None:
         """``opener(port, pattern, baud)``: a started stream worker (``drain()``, ``stop()``,
         ``port``, ``baud``, ``started_utc``; ValueError or OSError when it cannot be made);
         ``demonstrator()``: a running demonstration head (``port``, ``set(**mounting)``,
         ``close()``); ``sessions()``: the workbench's capture sessions, a list a take's
-        session is added to; ``lab_defaults()``: the lab's defaults (its own presets)."""
+        session is added to; ``lab_defaults()``: the lab's defaults (its own presets);
+        ``save_lab_defaults_entry(key, value)``: one entry of the lab defaults stored, the
+        others kept (the presets edited, :meth:`edit_presets`)."""
         self._opener, self._demonstrator = opener, demonstrator
         self._sessions = sessions
         if lab_defaults is not None:
             self._lab_defaults = lab_defaults
+        if save_lab_defaults_entry is not None:
+            self._save_entry = save_lab_defaults_entry
         self._fill_presets()
         self._show_connected()
 
@@ -311,6 +328,45 @@ class LiveSignalsPanel(QWidget):
         """The built-in presets and the lab's own as its defaults hold them now."""
         self._fill_presets()
         self._show_bands()
+
+    _save_entry: Callable[[str, object], None] | None = None
+
+    def edit_presets(self) -> PresetEditorDialog | None:
+        """The presets' editor, opened (window-modal, not blocking): on Save the lab's own
+        are stored with the lab defaults and chosen from here; on Cancel nothing changes."""
+        if self._save_entry is None:
+            return None
+        self._fill_presets()  # as the lab defaults hold them now
+        dialog = PresetEditorDialog(self.presets, self)
+        current = self.preset.currentData()
+        row = next((i for i, p in enumerate(self.presets) if p.key == current), 0)
+        dialog.list.setCurrentRow(row)
+        dialog.accepted.connect(lambda: self._presets_saved(dialog))
+        dialog.finished.connect(lambda _r: setattr(self, "preset_editor", None))
+        dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        self.preset_editor = dialog
+        dialog.open()
+        return dialog
+
+    def _presets_saved(self, dialog: PresetEditorDialog) -> None:
+        """The lab's own presets stored; a stored one that no longer reads is kept as it was
+        (never lost by an edit of the others)."""
+        stored = (self._lab_defaults() or {}).get(LAB_DEFAULTS_KEY)
+        unread = []
+        for data in stored if isinstance(stored, list) else []:
+            try:
+                preset_from_dict(data)
+            except PresetError:
+                unread.append(data)
+        chosen = dialog.list.currentRow()
+        saved = dialog.presets() or []
+        self._save_entry(LAB_DEFAULTS_KEY, dialog.stored() + unread)
+        self._fill_presets()
+        if 0 <= chosen < len(saved):
+            index = self.preset.findData(saved[chosen].key)
+            if index >= 0:
+                self.preset.setCurrentIndex(index)
+        self._preset_chosen()
 
     def _fill_presets(self) -> None:
         presets, problems = load_presets(self._lab_defaults() or {})
@@ -428,6 +484,7 @@ class LiveSignalsPanel(QWidget):
         self.connect_button.setEnabled(self._opener is not None)
         self.disconnect_button.setEnabled(on)
         self.demo_button.setEnabled(self._demonstrator is not None)
+        self.edit_presets_button.setEnabled(self._save_entry is not None)
         self.take_button.setEnabled(on or len(self.window) > 0)
 
     def closeEvent(self, event) -> None:  # noqa: N802 - Qt's name
