@@ -86,10 +86,16 @@ class SampleWindow:
         d = self._data[:, self._start:self._stop]
         return d[0], d[1], d[2].astype(np.int64)
 
-    def last_periods(self, periods: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    def last_periods(self, periods: float, since_index: int | None = None
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
         """The samples of the last ``periods`` signal periods (or all held, when they cover
-        fewer) and the periods they cover, counted on the samples' angle about their centre."""
+        fewer) and the periods they cover, counted on the samples' angle about their centre.
+        ``since_index``: no sample of an older line (the window's age limit: a head that lost
+        its signal would otherwise be judged on the periods it gave before)."""
         u_sin, u_cos, index = self.arrays()
+        if since_index is not None and index.size and index[0] < since_index:
+            start = int(np.searchsorted(index, since_index))
+            u_sin, u_cos, index = u_sin[start:], u_cos[start:], index[start:]
         if u_sin.size < 3:
             return u_sin, u_cos, index, 0.0
         angle = unwrapped(np.arctan2(u_sin - u_sin.mean(), u_cos - u_cos.mean()))

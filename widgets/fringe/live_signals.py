@@ -69,6 +69,8 @@ REFRESH_MS = 50
 CAPACITY = 100_000
 #: the instrument name of a take's raw session (app/capture/instruments.py reads it back)
 INSTRUMENT = "signals"
+#: the window's age limit by default (s): no sample older than this is judged
+MAX_AGE_S = 2.0
 #: the phase bins of the interpolation error's curve
 ERROR_BINS = 90
 
@@ -109,6 +111,8 @@ class LiveSignalsPanel(QWidget):
         self.extremes = Extremes()
         #: the stream's newest lines: (index since the stream started, seconds, bytes, used)
         self.lines: deque[tuple[int, float, bytes, bool]] = deque(maxlen=CAPACITY)
+        #: the blocks' first line and arrival time (s), for the window's age limit
+        self.block_times: deque[tuple[int, float]] = deque(maxlen=CAPACITY)
         self.source = None
         self.demonstration = None
         self.figures: LiveFigures | None = None
@@ -162,6 +166,14 @@ class LiveSignalsPanel(QWidget):
         self.periods.setRange(1, 1000)
         self.periods.setValue(16)
         live(self.periods.setToolTip, tr("The sliding window: the last N signal periods"))
+        self.max_age = QDoubleSpinBox()
+        self.max_age.setRange(0.1, 600.0)
+        self.max_age.setDecimals(1)
+        self.max_age.setValue(MAX_AGE_S)
+        self.max_age.setSuffix(" s")
+        live(self.max_age.setToolTip, tr("The window holds no sample older than this, so a head "
+                                         "that loses its signal is judged on what it gives now "
+                                         "(raise it for a shaft turned slowly by hand)"))
         self.scale = QDoubleSpinBox()
         self.scale.setRange(1e-6, 1e6)
         self.scale.setDecimals(4)
@@ -229,11 +241,14 @@ class LiveSignalsPanel(QWidget):
         link.addWidget(self.demo_button)
         view = QHBoxLayout()
         self.preset_label, self.periods_label, self.scale_label = QLabel(), QLabel(), QLabel()
+        self.max_age_label = QLabel()
         view.addWidget(self.preset_label)
         view.addWidget(self.preset, 2)
         view.addWidget(self.edit_presets_button)
         view.addWidget(self.periods_label)
         view.addWidget(self.periods)
+        view.addWidget(self.max_age_label)
+        view.addWidget(self.max_age)
         view.addWidget(self.scale_label)
         view.addWidget(self.scale)
         view.addStretch(1)
@@ -289,6 +304,7 @@ class LiveSignalsPanel(QWidget):
         self.baud_label.setText(tr("Baud"))
         self.preset_label.setText(tr("Tolerances"))
         self.periods_label.setText(tr("Window (periods)"))
+        self.max_age_label.setText(tr("at most"))
         self.scale_label.setText(tr("Scale"))
         self.mounting.setTitle(tr("Demonstration head: its mounting"))
         for name, text in (("gap_mm", tr("Gap")), ("yaw_mrad", tr("Yaw (moiré)")),
@@ -436,6 +452,7 @@ class LiveSignalsPanel(QWidget):
         self.source = source
         self.window.clear()
         self.lines.clear()
+        self.block_times.clear()
         self.extremes.reset()
         self.refused = self.samples = 0
         self._fault = ""
@@ -511,6 +528,7 @@ class LiveSignalsPanel(QWidget):
 
     def _add_block(self, block) -> None:
         index = block.first + np.arange(len(block.lines))
+        self.block_times.append((int(block.first), float(block.time_s)))
         for i, line, used in zip(index.tolist(), block.lines, block.used.tolist(), strict=True):
             self.lines.append((i, block.time_s, line, used))
         self.window.add(block.u_sin, block.u_cos, index[block.used])
@@ -523,8 +541,16 @@ class LiveSignalsPanel(QWidget):
     _last_refusal = ""
 
     def window_samples(self):
-        """The window's (u_sin, u_cos, line index, periods covered)."""
-        return self.window.last_periods(self.periods.value())
+        """The window's (u_sin, u_cos, line index, periods covered): the last periods, none
+        of a line that came more than the age limit before the newest."""
+        since = None
+        if self.block_times:
+            newest = self.block_times[-1][1]
+            for first, time_s in reversed(self.block_times):
+                if time_s < newest - self.max_age.value():
+                    break
+                since = first
+        return self.window.last_periods(self.periods.value(), since)
 
     def refresh(self) -> None:
         """The figures of the window, drawn: bars, Lissajous, interpolation error."""
