@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.fringe.model import ChannelFit, refine_phase
+from models.fringe.model import ChannelFit, model_signal, refine_phase
 from models.fringe.phase import fit_ellipse, unwrapped
 from models.fringe.signal_tolerance import Judgement, TolerancePreset, judge, signal_figures
 from models.messages import QT_TR_NOOP, message
@@ -37,6 +37,9 @@ MIN_PERIODS = 1.0
 LIVE_ORDERS = (1, 2, 3)
 #: a window is thinned to at most this many samples for its fit (evenly, every k-th sample)
 FIT_SAMPLES = 2048
+#: a channel whose fundamental's amplitude is below this many times the rms of what its fit
+#: leaves is not above its noise: only the amplitudes are judged (a head that lost its signal)
+MIN_SIGNAL_TO_NOISE = 3.0
 
 
 class SampleWindow:
@@ -158,6 +161,21 @@ def live_figures(u_sin, u_cos, preset: TolerancePreset | None, periods: float,
         return out
     out.fits = (fits[0], fits[1])
     out.figures = signal_figures(out.fits, preset, scale)
+    noise = [float(np.sqrt(np.mean((u - model_signal(theta, fit)) ** 2)))
+             for u, fit in ((s, fits[0]), (c, fits[1]))]
+    weak = [name for name, fit, rms in (("A", fits[0], noise[0]), ("B", fits[1], noise[1]))
+            if not fit.amplitude[1] >= MIN_SIGNAL_TO_NOISE * rms]
+    if weak:
+        # the ratio, phase, offsets and harmonics of noise mean nothing: not judged
+        out.figures = {k: v for k, v in out.figures.items() if k.startswith("amplitude_")
+                       and k != "amplitude_ratio"}
+        out.judgements = judge(out.figures, preset) if preset is not None else []
+        out.problem = message(QT_TR_NOOP(
+            "no signal above the noise on channel {channels} (amplitude {amplitude} V against "
+            "{noise} V rms left by the fit): only the amplitudes are judged"),
+            channels=", ".join(weak), amplitude=f"{min(f.amplitude[1] for f in fits[:2]):.2g}",
+            noise=f"{max(noise):.2g}")
+        return out
     out.judgements = judge(out.figures, preset) if preset is not None else []
     error = _wrapped(np.arctan2(s, c) - theta)
     mean = math.atan2(float(np.mean(np.sin(error))), float(np.mean(np.cos(error))))

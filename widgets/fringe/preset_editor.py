@@ -118,7 +118,7 @@ class PresetEditorDialog(QDialog):
         self._setup_ui()
         self._layout()
         live(self.setWindowTitle, tr("Signal tolerance presets"))
-        self.resize(900, 560)
+        self.resize(1000, 580)
         self._fill_list()
         self.list.setCurrentRow(0 if self.entries else -1)
 
@@ -136,6 +136,10 @@ class PresetEditorDialog(QDialog):
     # ------------------------------------------------------------------ the widgets
     def _setup_ui(self) -> None:
         self.list = QListWidget()
+        self.list.setWordWrap(True)  # a built-in preset's name is long
+        self.list.setTextElideMode(Qt.TextElideMode.ElideNone)
+        self.list.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.list.setSpacing(2)
         self.add_button, self.copy_button = QPushButton(), QPushButton()
         self.delete_button = QPushButton()
         live(self.add_button.setText, tr("Add"))
@@ -197,7 +201,7 @@ class PresetEditorDialog(QDialog):
         body = QHBoxLayout()
         left_widget = QWidget()
         left_widget.setLayout(left)
-        left_widget.setMaximumWidth(300)
+        left_widget.setFixedWidth(280)
         body.addWidget(left_widget)
         body.addLayout(right, 1)
         outer = QVBoxLayout(self)
