@@ -9376,6 +9376,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>光栅尺污渍</translation>
     </message>
     <message>
+        <source>Rings: amplitude band (green inside, amber outer)</source>
+        <translation>圆环：幅值容差带（绿色为内带，琥珀色为外带）</translation>
+    </message>
+    <message>
         <source>u sin (V)</source>
         <translation>u sin (V)</translation>
     </message>

@@ -311,6 +311,8 @@ class LiveSignalsPanel(QWidget):
                            ("roll_mrad", tr("Roll")), ("dirt", tr("Dirt on the scale"))):
             self.knob_labels[name].setText(text)
         self.note.setText(translated(NOT_CONFORMITY))
+        self.lissajous.setTitle(tr("Rings: amplitude band (green inside, amber outer)"),
+                                size="9pt", color="#455a64")
         self.lissajous.setLabel("left", tr("u sin (V)"))
         self.lissajous.setLabel("bottom", tr("u cos (V)"))
         self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
@@ -578,6 +580,7 @@ class LiveSignalsPanel(QWidget):
             for curve in (self.liss_fit, self.error_mean, self.error_low, self.error_high,
                           *self.rings):
                 curve.setData([], [])
+            self.error_band.setVisible(False)
             return
         grid = np.linspace(0.0, 2.0 * math.pi, 361)
         self.liss_fit.setData(model_signal(grid, figures.fits[1]),
@@ -597,7 +600,9 @@ class LiveSignalsPanel(QWidget):
                 curve.setData(cx + r * circle.real, cy + r * circle.imag)
             else:
                 curve.setData([], [])
-        # the interpolation error over the period: mean and spread per phase bin
+        # the interpolation error over the period: mean and spread per phase bin (none
+        # drawn when the window gives none: a head without signal)
+        self.error_band.setVisible(figures.error_deg.size > 0)
         phase = np.degrees(figures.phase_rad) % 360.0
         bins = np.minimum((phase / (360.0 / ERROR_BINS)).astype(int), ERROR_BINS - 1)
         counts = np.bincount(bins, minlength=ERROR_BINS)

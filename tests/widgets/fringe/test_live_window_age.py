@@ -4,6 +4,9 @@ the bars stayed green for a head whose signal had gone)."""
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pytest
 
 from tests.widgets.fringe.test_live_signals_gui import fringe, live, signal_lines  # noqa: F401
@@ -25,3 +28,19 @@ def test_a_head_whose_signal_goes_turns_red_within_the_age_limit(fringe):  # noq
     panel.max_age.setValue(600.0)
     panel.refresh()
     assert panel.figures.figures["amplitude_a"] > 0.1
+
+
+def test_without_signal_no_interpolation_error_is_drawn(fringe):  # noqa: F811
+    panel, stream, _ = live(fringe)
+    stream.send(signal_lines(a=0.5, b=0.5, periods=8))
+    panel.tick()
+    assert panel.error_band.isVisible() and len(panel.error_mean.xData) > 0
+    rng = np.random.default_rng(5)  # then only noise: the head lifted off
+    noise = rng.normal(0, 0.002, (3000, 2))
+    stream.send([f"{s:.9f},{c:.9f}".encode() for s, c in noise])
+    panel.tick()
+    assert "no signal above the noise" in panel.status.text()
+    assert not panel.error_band.isVisible()
+    assert panel.error_mean.xData is None or len(panel.error_mean.xData) == 0
+    assert panel.bars["amplitude_a"].state == "outside"
+    assert math.isnan(panel.bars["phase_deviation"].value)
