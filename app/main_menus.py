@@ -14,6 +14,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QAction, QActionGroup, QKeySequence
 from PySide6.QtWidgets import QMenu
 
+from app.capture.signal_live import open_live_signals
 from app.reference_sender import receiver_of, send_reference
 from models.display_units import ANGLE_UNITS
 from models.workbench import SendsRuns
@@ -51,6 +52,12 @@ class MainMenus:
             lambda: (panel.show(), panel.demonstration_dialog()),
             tip=tr("A simulated autocollimator, theodolite or readout, for training and for "
                    "trying the program without hardware"))
+        self.live_signals_action = self._action(
+            instrument_menu, tr("&Live signals…"), lambda: open_live_signals(window),
+            tip=tr("A read head's sin/cos signals live against the interface's tolerances "
+                   "while it is mounted (fringe workbench)"))
+        self.live_signals_action.setEnabled(any(
+            hasattr(p.view, "open_live_signals") for p in window.presenters))
         self.show_panel_action = panel.toggleViewAction()
         live(self.show_panel_action.setText, tr("Show the instrument &panel"))
         instrument_menu.addAction(self.show_panel_action)

@@ -10,7 +10,7 @@ from __future__ import annotations
 from app.capture.signal_worker import SignalStreamWorker
 from app.capture.simulators import ReadHeadSimulator
 
-__all__ = ["DemonstrationHead", "attach_live_signals", "open_signal_stream"]
+__all__ = ["DemonstrationHead", "attach_live_signals", "open_live_signals", "open_signal_stream"]
 
 #: where the demonstration head starts: a little off its nominal mounting (0.8 mm, square),
 #: so there is something to adjust
@@ -53,4 +53,16 @@ def attach_live_signals(window) -> None:
         key = presenter.kind.key
         panel.attach(open_signal_stream, DemonstrationHead,
                      sessions=lambda k=key: window.capture_panel.sessions.setdefault(k, []),
-                     lab_defaults=lambda k=key: window.certificates.lab_defaults(k))
+                     lab_defaults=lambda k=key: window.certificates.lab_defaults(k),
+                     save_lab_defaults_entry=window.certificates.save_lab_defaults_entry)
+
+
+def open_live_signals(window) -> bool:
+    """Instrument › Live signals…: the workbench with a live signals window (the fringe
+    workbench) brought to the front, its live window opened; False when there is none."""
+    for index, presenter in enumerate(window.presenters):
+        if hasattr(presenter.view, "open_live_signals"):
+            window.tabs.setCurrentIndex(index)
+            presenter.view.open_live_signals()
+            return True
+    return False

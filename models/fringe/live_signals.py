@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.fringe.model import ChannelFit, refine_phase
+from models.fringe.model import ChannelFit, model_signal, refine_phase
 from models.fringe.phase import fit_ellipse, unwrapped
 from models.fringe.signal_tolerance import Judgement, TolerancePreset, judge, signal_figures
 from models.messages import QT_TR_NOOP, message
@@ -37,6 +37,9 @@ MIN_PERIODS = 1.0
 LIVE_ORDERS = (1, 2, 3)
 #: a window is thinned to at most this many samples for its fit (evenly, every k-th sample)
 FIT_SAMPLES = 2048
+#: a channel whose fundamental's amplitude is below this many times the rms of what its fit
+#: leaves is not above its noise: only the amplitudes are judged (a head that lost its signal)
+MIN_SIGNAL_TO_NOISE = 3.0
 
 
 class SampleWindow:
@@ -86,10 +89,16 @@ class SampleWindow:
         d = self._data[:, self._start:self._stop]
         return d[0], d[1], d[2].astype(np.int64)
 
-    def last_periods(self, periods: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    def last_periods(self, periods: float, since_index: int | None = None
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
         """The samples of the last ``periods`` signal periods (or all held, when they cover
-        fewer) and the periods they cover, counted on the samples' angle about their centre."""
+        fewer) and the periods they cover, counted on the samples' angle about their centre.
+        ``since_index``: no sample of an older line (the window's age limit: a head that lost
+        its signal would otherwise be judged on the periods it gave before)."""
         u_sin, u_cos, index = self.arrays()
+        if since_index is not None and index.size and index[0] < since_index:
+            start = int(np.searchsorted(index, since_index))
+            u_sin, u_cos, index = u_sin[start:], u_cos[start:], index[start:]
         if u_sin.size < 3:
             return u_sin, u_cos, index, 0.0
         angle = unwrapped(np.arctan2(u_sin - u_sin.mean(), u_cos - u_cos.mean()))
@@ -152,6 +161,21 @@ def live_figures(u_sin, u_cos, preset: TolerancePreset | None, periods: float,
         return out
     out.fits = (fits[0], fits[1])
     out.figures = signal_figures(out.fits, preset, scale)
+    noise = [float(np.sqrt(np.mean((u - model_signal(theta, fit)) ** 2)))
+             for u, fit in ((s, fits[0]), (c, fits[1]))]
+    weak = [name for name, fit, rms in (("A", fits[0], noise[0]), ("B", fits[1], noise[1]))
+            if not fit.amplitude[1] >= MIN_SIGNAL_TO_NOISE * rms]
+    if weak:
+        # the ratio, phase, offsets and harmonics of noise mean nothing: not judged
+        out.figures = {k: v for k, v in out.figures.items() if k.startswith("amplitude_")
+                       and k != "amplitude_ratio"}
+        out.judgements = judge(out.figures, preset) if preset is not None else []
+        out.problem = message(QT_TR_NOOP(
+            "no signal above the noise on channel {channels} (amplitude {amplitude} V against "
+            "{noise} V rms left by the fit): only the amplitudes are judged"),
+            channels=", ".join(weak), amplitude=f"{min(f.amplitude[1] for f in fits[:2]):.2g}",
+            noise=f"{max(noise):.2g}")
+        return out
     out.judgements = judge(out.figures, preset) if preset is not None else []
     error = _wrapped(np.arctan2(s, c) - theta)
     mean = math.atan2(float(np.mean(np.sin(error))), float(np.mean(np.cos(error))))

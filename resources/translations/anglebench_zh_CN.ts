@@ -1569,6 +1569,14 @@
         <translation>模拟的自准直仪、经纬仪或数显表，用于培训以及在没有硬件时试用本程序</translation>
     </message>
     <message>
+        <source>&amp;Live signals…</source>
+        <translation>实时信号(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>A read head&apos;s sin/cos signals live against the interface&apos;s tolerances while it is mounted (fringe workbench)</source>
+        <translation>安装读数头时实时观察其 sin/cos 信号与接口容差的比较（条纹工作台）</translation>
+    </message>
+    <message>
         <source>Show the instrument &amp;panel</source>
         <translation>显示仪器面板(&amp;P)</translation>
     </message>
@@ -3282,9 +3290,130 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>替换读数</translation>
     </message>
     <message>
+        <source>Signal tolerance presets</source>
+        <extracomment>the presets being edited: dicts of preset_to_dict&apos;s form with the band cells as typed (texts), &quot;builtin&quot; True for a built-in one as it is</extracomment>
+        <translation>信号容差预设</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>添加</translation>
+    </message>
+    <message>
         <source>Copy</source>
         <extracomment>a value is being typed in a cell (not yet entered): the window autosaves it</extracomment>
         <translation>复制</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>A built-in preset cannot be changed: Copy it to edit the copy.</source>
+        <translation>内置预设不可修改：复制后编辑副本。</translation>
+    </message>
+    <message>
+        <source>Add band</source>
+        <translation>添加容差带</translation>
+    </message>
+    <message>
+        <source>Remove band</source>
+        <translation>删除容差带</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>键</translation>
+    </message>
+    <message>
+        <source>Interface</source>
+        <translation>接口</translation>
+    </message>
+    <message>
+        <source>Source (the document the bands come from)</source>
+        <translation>来源（容差带所依据的文件）</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Inside low</source>
+        <translation>内带下限</translation>
+    </message>
+    <message>
+        <source>Inside high</source>
+        <translation>内带上限</translation>
+    </message>
+    <message>
+        <source>Outer low</source>
+        <translation>外带下限</translation>
+    </message>
+    <message>
+        <source>Outer high</source>
+        <translation>外带上限</translation>
+    </message>
+    <message>
+        <source>For the offsets, % is the asymmetry (P − N)/2M of the channel; any other unit is the offset in the stream&apos;s unit × scale</source>
+        <translation>直流偏置：% 表示该通道的不对称度 (P − N)/2M；其他单位表示以数据流单位 × 比例表示的偏置</translation>
+    </message>
+    <message>
+        <source>Optional: the wider band still acceptable (empty: none)</source>
+        <translation>可选：仍可接受的更宽的带（留空：无）</translation>
+    </message>
+    <message>
+        <source>{name} (built-in)</source>
+        <translation>{name}（内置）</translation>
+    </message>
+    <message>
+        <source>New preset</source>
+        <translation>新预设</translation>
+    </message>
+    <message>
+        <source>{name} (copy)</source>
+        <translation>{name}（副本）</translation>
+    </message>
+    <message>
+        <source>The preset needs a name</source>
+        <translation>预设需要名称</translation>
+    </message>
+    <message>
+        <source>The preset needs at least one band</source>
+        <translation>预设至少需要一个容差带</translation>
+    </message>
+    <message>
+        <source>Row {row}: choose a quantity</source>
+        <translation>第 {row} 行：请选择一个量</translation>
+    </message>
+    <message>
+        <source>Row {row}: {quantity} has a band already</source>
+        <translation>第 {row} 行：{quantity} 已有容差带</translation>
+    </message>
+    <message>
+        <source>Row {row}, {column}: &apos;{text}&apos; is not a number</source>
+        <translation>第 {row} 行，{column}：“{text}”不是数字</translation>
+    </message>
+    <message>
+        <source>Row {row}: the inside band&apos;s low {low} is above its high {high}</source>
+        <translation>第 {row} 行：内带下限 {low} 大于其上限 {high}</translation>
+    </message>
+    <message>
+        <source>Row {row}: the outer band needs both its low and its high (or neither)</source>
+        <translation>第 {row} 行：外带需要同时给出下限和上限（或都不给）</translation>
+    </message>
+    <message>
+        <source>Row {row}: the outer band&apos;s low {low} is above its high {high}</source>
+        <translation>第 {row} 行：外带下限 {low} 大于其上限 {high}</translation>
+    </message>
+    <message>
+        <source>Row {row}: the outer band must contain the inside band (outer low {outer} is above inside low {inside})</source>
+        <translation>第 {row} 行：外带必须包含内带（外带下限 {outer} 大于内带下限 {inside}）</translation>
+    </message>
+    <message>
+        <source>Row {row}: the outer band must contain the inside band (outer high {outer} is below inside high {inside})</source>
+        <translation>第 {row} 行：外带必须包含内带（外带上限 {outer} 小于内带上限 {inside}）</translation>
     </message>
     <message>
         <source>Paste</source>
@@ -9110,12 +9239,18 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the window covers {periods} periods: move the scale (at least {least} a window)</source>
-        <extracomment>the fewest periods a window must cover to give figures the harmonics fitted to each channel of the window (the content&apos;s 2nd and 3rd) a window is thinned to at most this many samples for its fit (evenly, every k-th sample) samples added since the start (or the last clear) the samples of the window, and the periods they cover the signal figures (signal_tolerance.QUANTITIES; the preset&apos;s units) the channels&apos; fits at the estimated phase (sin, cos), and the ellipse&apos;s centre and semi-axes in V (u_sin, u_cos) for the Lissajous figure the estimated phase (rad) and the interpolation error (electrical degrees), per sample of the window (thinned as fitted) why there are no figures (&quot;&quot; when there are)</extracomment>
+        <extracomment>the fewest periods a window must cover to give figures the harmonics fitted to each channel of the window (the content&apos;s 2nd and 3rd) a window is thinned to at most this many samples for its fit (evenly, every k-th sample) a channel whose fundamental&apos;s amplitude is below this many times the rms of what its fit leaves is not above its noise: only the amplitudes are judged (a head that lost its signal) samples added since the start (or the last clear) the samples of the window, and the periods they cover the signal figures (signal_tolerance.QUANTITIES; the preset&apos;s units) the channels&apos; fits at the estimated phase (sin, cos), and the ellipse&apos;s centre and semi-axes in V (u_sin, u_cos) for the Lissajous figure the estimated phase (rad) and the interpolation error (electrical degrees), per sample of the window (thinned as fitted) why there are no figures (&quot;&quot; when there are)</extracomment>
         <translation>窗口只覆盖 {periods} 个周期：请移动光栅尺（每个窗口至少 {least} 个）</translation>
     </message>
     <message>
+        <source>no signal above the noise on channel {channels} (amplitude {amplitude} V against {noise} V rms left by the fit): only the amplitudes are judged</source>
+        <translation>通道 {channels} 无高于噪声的信号（幅值 {amplitude} V，拟合残余 {noise} V rms）：只判断幅值</translation>
+    </message>
+    <message>
         <source>Amplitude A (sin)</source>
-        <extracomment>the display&apos;s refresh: at most one redraw this often, whatever the stream&apos;s rate the samples (and lines) kept for the window; a take holds at most this many the instrument name of a take&apos;s raw session (app/capture/instruments.py reads it back) the phase bins of the interpolation error&apos;s curve</extracomment>
+        <extracomment>the display&apos;s refresh: at most one redraw this often, whatever the stream&apos;s rate the samples (and lines) kept for the window; a take holds at most this many the instrument name of a take&apos;s raw session (app/capture/instruments.py reads it back) the window&apos;s age limit by default (s): no sample older than this is judged the phase bins of the interpolation error&apos;s curve
+----------
+the band table&apos;s columns the column of a problem with the preset&apos;s name</extracomment>
         <translation>幅值 A (sin)</translation>
     </message>
     <message>
@@ -9144,7 +9279,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>tcp://host:port or a serial port</source>
-        <extracomment>a take: the window&apos;s (u_sin, u_cos) in V, for the readings table the stream&apos;s newest lines: (index since the stream started, seconds, bytes, used) redraws since the panel was made (the display&apos;s rate bounds it, not the stream&apos;s)</extracomment>
+        <extracomment>a take: the window&apos;s (u_sin, u_cos) in V, for the readings table the stream&apos;s newest lines: (index since the stream started, seconds, bytes, used) the blocks&apos; first line and arrival time (s), for the window&apos;s age limit redraws since the panel was made (the display&apos;s rate bounds it, not the stream&apos;s)</extracomment>
         <translation>tcp://主机:端口 或串口</translation>
     </message>
     <message>
@@ -9164,8 +9299,20 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>本机上的模拟读数头：像安装时一样设置其间隙、偏摆和侧倾</translation>
     </message>
     <message>
+        <source>Edit presets…</source>
+        <translation>编辑预设…</translation>
+    </message>
+    <message>
+        <source>Add the lab&apos;s own tolerance presets, copy a built-in one to edit, rename, delete (saved with the lab defaults)</source>
+        <translation>添加实验室自己的容差预设，复制内置预设后编辑，重命名，删除（随实验室默认值保存）</translation>
+    </message>
+    <message>
         <source>The sliding window: the last N signal periods</source>
         <translation>滑动窗口：最近 N 个信号周期</translation>
+    </message>
+    <message>
+        <source>The window holds no sample older than this, so a head that loses its signal is judged on what it gives now (raise it for a shaft turned slowly by hand)</source>
+        <translation>窗口不保留早于此时间的样本，读数头失去信号时按其当前信号判断（手动缓慢转轴时请调大）</translation>
     </message>
     <message>
         <source>The preset&apos;s unit per volt of the stream (1 for a 1 Vpp stream in volts; µA per V of the transimpedance for 11 µApp)</source>
@@ -9201,6 +9348,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>窗口（周期数）</translation>
     </message>
     <message>
+        <source>at most</source>
+        <translation>最多</translation>
+    </message>
+    <message>
         <source>Scale</source>
         <translation>比例系数</translation>
     </message>
@@ -9223,6 +9374,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Dirt on the scale</source>
         <translation>光栅尺污渍</translation>
+    </message>
+    <message>
+        <source>Rings: amplitude band (green inside, amber outer)</source>
+        <translation>圆环：幅值容差带（绿色为内带，琥珀色为外带）</translation>
     </message>
     <message>
         <source>u sin (V)</source>

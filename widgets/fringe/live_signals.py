@@ -48,11 +48,15 @@ from models.fringe.live_signals import Extremes, LiveFigures, SampleWindow, live
 from models.fringe.model import model_signal
 from models.fringe.signal_tolerance import (
     BUILTIN_PRESETS,
+    LAB_DEFAULTS_KEY,
     NOT_CONFORMITY,
     QUANTITIES,
+    PresetError,
     TolerancePreset,
     load_presets,
+    preset_from_dict,
 )
+from widgets.fringe.preset_editor import PresetEditorDialog
 from widgets.fringe.signal_bar import SignalBar
 from widgets.i18n import declared, explained, live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
@@ -65,6 +69,8 @@ REFRESH_MS = 50
 CAPACITY = 100_000
 #: the instrument name of a take's raw session (app/capture/instruments.py reads it back)
 INSTRUMENT = "signals"
+#: the window's age limit by default (s): no sample older than this is judged
+MAX_AGE_S = 2.0
 #: the phase bins of the interpolation error's curve
 ERROR_BINS = 90
 
@@ -105,6 +111,8 @@ class LiveSignalsPanel(QWidget):
         self.extremes = Extremes()
         #: the stream's newest lines: (index since the stream started, seconds, bytes, used)
         self.lines: deque[tuple[int, float, bytes, bool]] = deque(maxlen=CAPACITY)
+        #: the blocks' first line and arrival time (s), for the window's age limit
+        self.block_times: deque[tuple[int, float]] = deque(maxlen=CAPACITY)
         self.source = None
         self.demonstration = None
         self.figures: LiveFigures | None = None
@@ -148,10 +156,24 @@ class LiveSignalsPanel(QWidget):
         self.preset = QComboBox()
         self.preset.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
         self.preset.setMinimumContentsLength(18)
+        self.edit_presets_button = QPushButton()
+        live(self.edit_presets_button.setText, tr("Edit presets…"))
+        live(self.edit_presets_button.setToolTip, tr("Add the lab's own tolerance presets, copy "
+                                                     "a built-in one to edit, rename, delete "
+                                                     "(saved with the lab defaults)"))
+        self.preset_editor = None
         self.periods = QSpinBox()
         self.periods.setRange(1, 1000)
         self.periods.setValue(16)
         live(self.periods.setToolTip, tr("The sliding window: the last N signal periods"))
+        self.max_age = QDoubleSpinBox()
+        self.max_age.setRange(0.1, 600.0)
+        self.max_age.setDecimals(1)
+        self.max_age.setValue(MAX_AGE_S)
+        self.max_age.setSuffix(" s")
+        live(self.max_age.setToolTip, tr("The window holds no sample older than this, so a head "
+                                         "that loses its signal is judged on what it gives now "
+                                         "(raise it for a shaft turned slowly by hand)"))
         self.scale = QDoubleSpinBox()
         self.scale.setRange(1e-6, 1e6)
         self.scale.setDecimals(4)
@@ -219,10 +241,14 @@ class LiveSignalsPanel(QWidget):
         link.addWidget(self.demo_button)
         view = QHBoxLayout()
         self.preset_label, self.periods_label, self.scale_label = QLabel(), QLabel(), QLabel()
+        self.max_age_label = QLabel()
         view.addWidget(self.preset_label)
         view.addWidget(self.preset, 2)
+        view.addWidget(self.edit_presets_button)
         view.addWidget(self.periods_label)
         view.addWidget(self.periods)
+        view.addWidget(self.max_age_label)
+        view.addWidget(self.max_age)
         view.addWidget(self.scale_label)
         view.addWidget(self.scale)
         view.addStretch(1)
@@ -267,6 +293,7 @@ class LiveSignalsPanel(QWidget):
         self.reset_button.clicked.connect(self.reset)
         self.take_button.clicked.connect(lambda: self.take())
         self.preset.currentIndexChanged.connect(self._preset_chosen)
+        self.edit_presets_button.clicked.connect(lambda: self.edit_presets())
         self.scale.valueChanged.connect(self._rescaled)
         self._retitle()
         self._show_connected()
@@ -277,12 +304,15 @@ class LiveSignalsPanel(QWidget):
         self.baud_label.setText(tr("Baud"))
         self.preset_label.setText(tr("Tolerances"))
         self.periods_label.setText(tr("Window (periods)"))
+        self.max_age_label.setText(tr("at most"))
         self.scale_label.setText(tr("Scale"))
         self.mounting.setTitle(tr("Demonstration head: its mounting"))
         for name, text in (("gap_mm", tr("Gap")), ("yaw_mrad", tr("Yaw (moiré)")),
                            ("roll_mrad", tr("Roll")), ("dirt", tr("Dirt on the scale"))):
             self.knob_labels[name].setText(text)
         self.note.setText(translated(NOT_CONFORMITY))
+        self.lissajous.setTitle(tr("Rings: amplitude band (green inside, amber outer)"),
+                                size="9pt", color="#455a64")
         self.lissajous.setLabel("left", tr("u sin (V)"))
         self.lissajous.setLabel("bottom", tr("u cos (V)"))
         self.error_plot.setLabel("left", tr("interpolation error (° el.)"))
@@ -294,16 +324,21 @@ class LiveSignalsPanel(QWidget):
     # ------------------------------------------------------------------ wiring
     def attach(self, opener: Callable, demonstrator: Callable | None = None,
                sessions: Callable[[], list] | None = None,
-               lab_defaults: Callable[[], dict] | None = None) -> None:
+               lab_defaults: Callable[[], dict] | None = None,
+               save_lab_defaults_entry: Callable[[str, object], None] | None = None) -> None:
         """``opener(port, pattern, baud)``: a started stream worker (``drain()``, ``stop()``,
         ``port``, ``baud``, ``started_utc``; ValueError or OSError when it cannot be made);
         ``demonstrator()``: a running demonstration head (``port``, ``set(**mounting)``,
         ``close()``); ``sessions()``: the workbench's capture sessions, a list a take's
-        session is added to; ``lab_defaults()``: the lab's defaults (its own presets)."""
+        session is added to; ``lab_defaults()``: the lab's defaults (its own presets);
+        ``save_lab_defaults_entry(key, value)``: one entry of the lab defaults stored, the
+        others kept (the presets edited, :meth:`edit_presets`)."""
         self._opener, self._demonstrator = opener, demonstrator
         self._sessions = sessions
         if lab_defaults is not None:
             self._lab_defaults = lab_defaults
+        if save_lab_defaults_entry is not None:
+            self._save_entry = save_lab_defaults_entry
         self._fill_presets()
         self._show_connected()
 
@@ -311,6 +346,45 @@ class LiveSignalsPanel(QWidget):
         """The built-in presets and the lab's own as its defaults hold them now."""
         self._fill_presets()
         self._show_bands()
+
+    _save_entry: Callable[[str, object], None] | None = None
+
+    def edit_presets(self) -> PresetEditorDialog | None:
+        """The presets' editor, opened (window-modal, not blocking): on Save the lab's own
+        are stored with the lab defaults and chosen from here; on Cancel nothing changes."""
+        if self._save_entry is None:
+            return None
+        self._fill_presets()  # as the lab defaults hold them now
+        dialog = PresetEditorDialog(self.presets, self)
+        current = self.preset.currentData()
+        row = next((i for i, p in enumerate(self.presets) if p.key == current), 0)
+        dialog.list.setCurrentRow(row)
+        dialog.accepted.connect(lambda: self._presets_saved(dialog))
+        dialog.finished.connect(lambda _r: setattr(self, "preset_editor", None))
+        dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        self.preset_editor = dialog
+        dialog.open()
+        return dialog
+
+    def _presets_saved(self, dialog: PresetEditorDialog) -> None:
+        """The lab's own presets stored; a stored one that no longer reads is kept as it was
+        (never lost by an edit of the others)."""
+        stored = (self._lab_defaults() or {}).get(LAB_DEFAULTS_KEY)
+        unread = []
+        for data in stored if isinstance(stored, list) else []:
+            try:
+                preset_from_dict(data)
+            except PresetError:
+                unread.append(data)
+        chosen = dialog.list.currentRow()
+        saved = dialog.presets() or []
+        self._save_entry(LAB_DEFAULTS_KEY, dialog.stored() + unread)
+        self._fill_presets()
+        if 0 <= chosen < len(saved):
+            index = self.preset.findData(saved[chosen].key)
+            if index >= 0:
+                self.preset.setCurrentIndex(index)
+        self._preset_chosen()
 
     def _fill_presets(self) -> None:
         presets, problems = load_presets(self._lab_defaults() or {})
@@ -380,6 +454,7 @@ class LiveSignalsPanel(QWidget):
         self.source = source
         self.window.clear()
         self.lines.clear()
+        self.block_times.clear()
         self.extremes.reset()
         self.refused = self.samples = 0
         self._fault = ""
@@ -428,6 +503,7 @@ class LiveSignalsPanel(QWidget):
         self.connect_button.setEnabled(self._opener is not None)
         self.disconnect_button.setEnabled(on)
         self.demo_button.setEnabled(self._demonstrator is not None)
+        self.edit_presets_button.setEnabled(self._save_entry is not None)
         self.take_button.setEnabled(on or len(self.window) > 0)
 
     def closeEvent(self, event) -> None:  # noqa: N802 - Qt's name
@@ -454,6 +530,7 @@ class LiveSignalsPanel(QWidget):
 
     def _add_block(self, block) -> None:
         index = block.first + np.arange(len(block.lines))
+        self.block_times.append((int(block.first), float(block.time_s)))
         for i, line, used in zip(index.tolist(), block.lines, block.used.tolist(), strict=True):
             self.lines.append((i, block.time_s, line, used))
         self.window.add(block.u_sin, block.u_cos, index[block.used])
@@ -466,8 +543,16 @@ class LiveSignalsPanel(QWidget):
     _last_refusal = ""
 
     def window_samples(self):
-        """The window's (u_sin, u_cos, line index, periods covered)."""
-        return self.window.last_periods(self.periods.value())
+        """The window's (u_sin, u_cos, line index, periods covered): the last periods, none
+        of a line that came more than the age limit before the newest."""
+        since = None
+        if self.block_times:
+            newest = self.block_times[-1][1]
+            for first, time_s in reversed(self.block_times):
+                if time_s < newest - self.max_age.value():
+                    break
+                since = first
+        return self.window.last_periods(self.periods.value(), since)
 
     def refresh(self) -> None:
         """The figures of the window, drawn: bars, Lissajous, interpolation error."""
@@ -495,6 +580,7 @@ class LiveSignalsPanel(QWidget):
             for curve in (self.liss_fit, self.error_mean, self.error_low, self.error_high,
                           *self.rings):
                 curve.setData([], [])
+            self.error_band.setVisible(False)
             return
         grid = np.linspace(0.0, 2.0 * math.pi, 361)
         self.liss_fit.setData(model_signal(grid, figures.fits[1]),
@@ -514,7 +600,9 @@ class LiveSignalsPanel(QWidget):
                 curve.setData(cx + r * circle.real, cy + r * circle.imag)
             else:
                 curve.setData([], [])
-        # the interpolation error over the period: mean and spread per phase bin
+        # the interpolation error over the period: mean and spread per phase bin (none
+        # drawn when the window gives none: a head without signal)
+        self.error_band.setVisible(figures.error_deg.size > 0)
         phase = np.degrees(figures.phase_rad) % 360.0
         bins = np.minimum((phase / (360.0 / ERROR_BINS)).astype(int), ERROR_BINS - 1)
         counts = np.bincount(bins, minlength=ERROR_BINS)
