@@ -231,10 +231,11 @@ class IssuesCertificates(ABC):
         shared form; None: none."""
         return None
 
-    def dcc_point_uncertainties(self, result: Any) -> dict[str, Any]:
+    def dcc_point_uncertainties(self, result: Any, metadata: Any = None) -> dict[str, Any]:
         """U and k per point of certificate columns whose U no budget of
         :meth:`uncertainty_budgets` holds (e.g. an error stated from a reference point),
-        by column name: PointUncertainty. The DCC takes each point's k from them."""
+        by column name: PointUncertainty, with the certificate details ``metadata`` (the
+        standards whose U enters). The DCC takes each point's k from them."""
         return {}
 
     @abstractmethod

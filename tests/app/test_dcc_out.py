@@ -179,12 +179,14 @@ SAME_AS_JSON = {
     "fringe": [("raw_error_arcsec", "raw_error_arcsec", "expanded_uncertainty_raw_error_arcsec"),
                ("compensated_error_arcsec", "compensated_error_arcsec",
                 "expanded_uncertainty_compensated_error_arcsec")],
-    # the cross-calibration certificate's U takes in the comparator listed in the details;
-    # the JSON's polygon/encoder U is the bench's own (README: 0.032″ vs 0.017″): the DCC
-    # states the certificate's
-    "crosscal": [("deviation_arcsec", "polygon_deviation_arcsec", None),
-                 ("deviation_from_face1_arcsec", "polygon_deviation_from_face1_arcsec", None)],
-    "crosscal_encoder": [("error_arcsec", "encoder_error_arcsec", None)],
+    # the cross-calibration's U takes in the comparator listed in the details: the JSON's
+    # expanded_uncertainty_* is the certificate's and the DCC's (one figure, #43)
+    "crosscal": [("deviation_arcsec", "polygon_deviation_arcsec",
+                  "expanded_uncertainty_polygon_deviation_arcsec"),
+                 ("deviation_from_face1_arcsec", "polygon_deviation_from_face1_arcsec",
+                  "expanded_uncertainty_polygon_deviation_from_face1_arcsec")],
+    "crosscal_encoder": [("error_arcsec", "encoder_error_arcsec",
+                          "expanded_uncertainty_encoder_error_arcsec")],
 }
 
 
@@ -236,6 +238,28 @@ def test_the_cross_calibrated_polygon_is_stated_in_the_shared_face_deviation_for
     assert u[0] == 0 and np.all(u[1:] > 0)
     assert np.all(u >= np.asarray(data["expanded_uncertainty_polygon_deviation_from_face1_arcsec"])
                   - 1e-12)
+
+
+@pytest.mark.skipif(not shutil.which("pdftotext"), reason="pdftotext is not installed")
+def test_the_cross_calibrations_u_is_one_figure_in_json_certificate_and_dcc(issued):
+    """The sample's face deviations: the U the PDF prints (comparator in, 0.032″), the
+    JSON's expanded_uncertainty_* and the DCC's are the same figure at every face."""
+    _, said, pdf, xml, data = issued["crosscal"]
+    curve = _curve(etree.fromstring(xml.read_bytes()))
+    u = np.asarray(data["expanded_uncertainty_polygon_deviation_arcsec"], float)
+    u1 = np.asarray(data["expanded_uncertainty_polygon_deviation_from_face1_arcsec"], float)
+    assert curve["deviation_arcsec"]["U"] == pytest.approx(u, rel=1e-12)
+    assert curve["deviation_from_face1_arcsec"]["U"] == pytest.approx(u1, rel=1e-12, abs=1e-15)
+    assert 0.03 < u.max() < 0.04  # the comparator's 0.1″ (k = 2) per reading is in
+    text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True,
+                          text=True).stdout
+    rows = re.findall(r"^\s+(\d+)\s+(\d+\.\d{4})\s+([+\-]\d\.\d{3})\s+(\d\.\d{3})\s+"
+                      r"([+\-]\d\.\d{3})\s*(\d\.\d{3})?", text, re.M)
+    assert len(rows) == 12
+    printed = np.array([float(r[3]) for r in rows])
+    assert printed == pytest.approx(np.round(u, 3), abs=1e-9)
+    printed1 = np.array([float(r[5]) for r in rows[1:]])
+    assert printed1 == pytest.approx(np.round(u1[1:], 3), abs=1e-9)
 
 
 def _statement_types(xml: Path) -> set[str]:
