@@ -581,13 +581,29 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
                 b.leaf(cert, "referralID", std.certificate_no)
                 b.leaf(cert, "procedure", "certificate number (no hash stated)")
                 b.leaf(cert, "value", std.certificate_no)
+                if std.due_date:  # its due date, and whether it was valid on the calibration's
+                    b.rich(cert, "description", message(QT_TR_NOOP(
+                        "calibration due on {due}"), due=std.due_date))
+                    b.leaf(cert, "inValidityRange",
+                           "false" if meta.calibration_date and std.due_date < meta.calibration_date
+                           else "true")
             if std.serial:
                 ids = etree.SubElement(eq, D + "identifications")
                 ident = etree.SubElement(ids, D + "identification")
                 b.leaf(ident, "issuer", "manufacturer")
                 b.leaf(ident, "value", std.serial)
-            if std.uncertainty is not None:
+            qs = None
+            if std.due_date:
                 qs = etree.SubElement(eq, D + "measuringEquipmentQuantities")
+                q = etree.SubElement(qs, D + "measuringEquipmentQuantity",
+                                     refType=b.ref(v.REFTYPE_STANDARD_DUE,
+                                                   "the date the standard's calibration is due "
+                                                   "(YYYY-MM-DD)"))
+                b.text(q, "name", QT_TR_NOOP("Calibration due date"))
+                b.leaf(q, "charsXMLList", std.due_date)
+            if std.uncertainty is not None:
+                if qs is None:
+                    qs = etree.SubElement(eq, D + "measuringEquipmentQuantities")
                 q = etree.SubElement(qs, D + "measuringEquipmentQuantity",
                                      refType=b.ref(v.REFTYPE_STANDARD_U,
                                                    "the standard's stated uncertainty figure"))
