@@ -45,6 +45,7 @@ def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes:
     xml = build_dcc(document, pdf_bytes, pdf_name, budgets,
                     uncertainty_columns=kind.dcc_uncertainty_columns,
                     face_deviations_column=kind.dcc_face_deviations_column,
+                    column_notes=kind.dcc_column_notes,
                     reference_face_deviations=kind.dcc_reference_face_deviations(
                         result, document.metadata))
     if schema_dir:

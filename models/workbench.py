@@ -224,6 +224,9 @@ class IssuesCertificates(ABC):
     #: the one dcc_uncertainty_columns names): stated in the shared form the polygon
     #: workbench reads back (models/dcc/vocabulary.py); "": none
     dcc_face_deviations_column: ClassVar[str] = ""
+    #: per-point column → what the DCC states of its U (QT_TR_NOOP) where the certificate
+    #: prints no U beside it (e.g. a U the budget gives without one of its inputs)
+    dcc_column_notes: ClassVar[Mapping[str, str]] = {}
 
     def dcc_reference_face_deviations(self, result: Any, metadata: Any) -> Any:
         """A reference polygon's face deviations from face 1 the result rests on, with the U
