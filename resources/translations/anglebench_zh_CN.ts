@@ -9554,7 +9554,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the signature does not verify: {reason}</source>
-        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
+        <translation>签名验证失败：{reason}</translation>
     </message>
 </context>
 </TS>
