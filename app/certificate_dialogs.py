@@ -44,11 +44,13 @@ class CertificateDialogs:
         dialog.lab_defaults_saved.connect(self.window.certificates.save_lab_defaults)
         dialog.lab_timezone_set.connect(self.window.certificates.set_lab_timezone)
         dialog.set_dcc_options(*self.window.certificates.dcc_options())
+        dialog.set_dcc_signing_paths(*self.window.certificates.dcc_signing_paths())
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return None
         self.window.certificates.set_dcc_options(*dialog.dcc_options())
+        self.window.certificates.set_dcc_signing_paths(*dialog.dcc_signing_paths())
         return dialog.metadata()
 
     def confirm_draft(self, missing: list[str]) -> bool:

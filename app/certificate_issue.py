@@ -87,20 +87,21 @@ def readings_edited_after_capture(kind, settings: Mapping[str, Any], rows, sessi
     return edited_after_capture(sessions or [], rows, columns, values, cache)
 
 
-def sign_if_configured(xml: bytes) -> bytes:
-    """The DCC signed with the lab's key and certificate when configured (the environment:
-    models/dcc/signature.py), unchanged otherwise."""
+def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> bytes:
+    """The DCC signed with the lab's key and certificate when configured (the files given —
+    the lab defaults' —, else the environment's: models/dcc/signature.py), unchanged
+    otherwise."""
     from models.dcc.signature import sign_if_configured as sign
 
-    return sign(xml)
+    return sign(xml, key_file, cert_file)
 
 
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
                       replacement: bool = False, raw_capture: list | None = None,
-                      dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = ""
-                      ) -> CertificateRecord:
+                      dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
+                      signing: tuple[str, str] = ("", "")) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
@@ -112,7 +113,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     21.56 → 26.56"). ``dcc(document, pdf)``: the digital certificate of the PDF rendered
     (app/dcc_issue.render_dcc), made with it — so with its number — before anything is
     recorded (a DCC refused as invalid issues nothing) and written to ``dcc_path`` after
-    the PDF."""
+    the PDF. ``signing``: the lab's key and certificate files (empty: the environment's)."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}},
                       {kind.key: raw_capture} if raw_capture else {})
@@ -131,7 +132,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
         pdf = certificate_pdf_bytes(document)
         if dcc is not None:  # the register may render again: the last one is recorded
             # signed when the lab's key and certificate are configured (models/dcc/signature)
-            made["dcc"] = sign_if_configured(dcc(document, pdf))
+            made["dcc"] = sign_if_configured(dcc(document, pdf), *signing)
         return pdf
 
     # before a number is used: an output onto the register (or a database) is refused

@@ -51,7 +51,13 @@ REGISTER_KEY = "register/url"  # empty: the SQLite file in the user's data folde
 #: date of issue is the lab's local date
 TIMEZONE_KEY = "certificate/lab_timezone"
 DCC_KEY = "certificate/write_dcc"  # also write the DCC (XML) beside every PDF
-DCC_SCHEMA_KEY = "certificate/dcc_schema_dir"  # PTB's schema folder; empty: not validated
+DCC_SCHEMA_KEY = "certificate/dcc_schema_dir"  # before #43's review: read when the lab defaults lack it
+#: the lab's DCC settings, kept with the lab defaults (paths only: never a key's content):
+#: PTB's schema folder (empty: not validated), the signing key and its X.509 certificate
+#: (PEM files; empty: the environment's, else unsigned), the certificate a signature read
+#: in is checked against (empty: the environment's)
+DCC_SCHEMA = "dcc_schema_dir"
+DCC_SIGNING = ("dcc_signing_key", "dcc_signing_certificate", "dcc_trusted_certificate")
 
 
 @dataclass(frozen=True)
@@ -160,6 +166,10 @@ class CertificatePresenter:
         # hold them
         if SIGNAL_PRESETS in stored and SIGNAL_PRESETS not in defaults:
             defaults = {**defaults, SIGNAL_PRESETS: stored[SIGNAL_PRESETS]}
+        # so are the lab's DCC settings (set beside the details: set_dcc_options)
+        for key in (DCC_SCHEMA, *DCC_SIGNING):
+            if key in stored and key not in defaults:
+                defaults = {**defaults, key: stored[key]}
         self.store.setValue(LAB_DEFAULTS_KEY, json.dumps(defaults, ensure_ascii=False))
 
     def save_lab_defaults_entry(self, key: str, value: Any) -> None:
@@ -250,13 +260,30 @@ class CertificatePresenter:
         return str(self.store.value(TIMEZONE_KEY, "") or "").strip()
 
     def dcc_options(self) -> tuple[bool, str]:
-        """(write the DCC beside the PDF, the schema folder it is validated against)."""
-        return (str(self.store.value(DCC_KEY, "false")).lower() == "true",
-                str(self.store.value(DCC_SCHEMA_KEY, "") or "").strip())
+        """(write the DCC beside the PDF, the schema folder it is validated against: the lab
+        defaults', else the window setting it was kept in before)."""
+        stored = self.lab_defaults()
+        folder = (str(stored.get(DCC_SCHEMA) or "") if DCC_SCHEMA in stored
+                  else str(self.store.value(DCC_SCHEMA_KEY, "") or ""))
+        return str(self.store.value(DCC_KEY, "false")).lower() == "true", folder.strip()
 
     def set_dcc_options(self, write: bool, schema_dir: str) -> None:
+        """Write the DCC or not (this window's choice); the schema folder with the lab
+        defaults."""
         self.store.setValue(DCC_KEY, "true" if write else "false")
-        self.store.setValue(DCC_SCHEMA_KEY, schema_dir.strip())
+        self.save_lab_defaults_entry(DCC_SCHEMA, schema_dir.strip())
+
+    def dcc_signing_paths(self) -> tuple[str, str, str]:
+        """The lab's DCC signing key, its certificate, and the trusted certificate (paths;
+        "" each: the environment's, models/dcc/signature.py)."""
+        stored = self.lab_defaults()
+        return tuple(str(stored.get(key) or "").strip() for key in DCC_SIGNING)
+
+    def set_dcc_signing_paths(self, key_file: str, cert_file: str, trusted_file: str) -> None:
+        """Keep the three paths with the lab defaults (the files are read when a DCC is
+        signed or checked: their content is never stored)."""
+        for name, value in zip(DCC_SIGNING, (key_file, cert_file, trusted_file), strict=True):
+            self.save_lab_defaults_entry(name, str(value or "").strip())
 
     def _dcc_path(self, pdf_path: str) -> str:
         """Where the DCC goes beside ``pdf_path`` ("" when it is not asked for)."""
@@ -432,7 +459,7 @@ class CertificatePresenter:
                     supersedes=revision.number if revision else "", change_note=note,
                     replacement=bool(revision and revision.replacement),
                     raw_capture=raw_capture, dcc=self._dcc_maker(kind, result, path),
-                    dcc_path=self._dcc_path(path))
+                    dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(

@@ -41,10 +41,11 @@ def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes:
         budgets = kind.uncertainty_budgets(result, document.metadata)
     except (ValueError, ArithmeticError, IndexError):  # U not determined: the table's own U
         budgets = {}
-    budgets = {**budgets, **kind.dcc_point_uncertainties(result)}
+    budgets = {**budgets, **kind.dcc_point_uncertainties(result, document.metadata)}
     xml = build_dcc(document, pdf_bytes, pdf_name, budgets,
                     uncertainty_columns=kind.dcc_uncertainty_columns,
                     face_deviations_column=kind.dcc_face_deviations_column,
+                    column_notes=kind.dcc_column_notes,
                     reference_face_deviations=kind.dcc_reference_face_deviations(
                         result, document.metadata))
     if schema_dir:

@@ -224,6 +224,9 @@ class IssuesCertificates(ABC):
     #: the one dcc_uncertainty_columns names): stated in the shared form the polygon
     #: workbench reads back (models/dcc/vocabulary.py); "": none
     dcc_face_deviations_column: ClassVar[str] = ""
+    #: per-point column → what the DCC states of its U (QT_TR_NOOP) where the certificate
+    #: prints no U beside it (e.g. a U the budget gives without one of its inputs)
+    dcc_column_notes: ClassVar[Mapping[str, str]] = {}
 
     def dcc_reference_face_deviations(self, result: Any, metadata: Any) -> Any:
         """A reference polygon's face deviations from face 1 the result rests on, with the U
@@ -231,10 +234,11 @@ class IssuesCertificates(ABC):
         shared form; None: none."""
         return None
 
-    def dcc_point_uncertainties(self, result: Any) -> dict[str, Any]:
+    def dcc_point_uncertainties(self, result: Any, metadata: Any = None) -> dict[str, Any]:
         """U and k per point of certificate columns whose U no budget of
         :meth:`uncertainty_budgets` holds (e.g. an error stated from a reference point),
-        by column name: PointUncertainty. The DCC takes each point's k from them."""
+        by column name: PointUncertainty, with the certificate details ``metadata`` (the
+        standards whose U enters). The DCC takes each point's k from them."""
         return {}
 
     @abstractmethod

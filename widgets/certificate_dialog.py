@@ -204,6 +204,28 @@ class CertificateDialog(QDialog):
             "The folder of PTB's DCC 3.3.0 schema set (dcc.xsd, si/, d-sig/): every DCC is "
             "validated against it and not written when invalid"))
         cert.layout().addRow(tr("DCC schema folder"), self.dcc_schema)
+        # the lab's signature on its DCCs: paths of PEM files only (their content is read
+        # when a DCC is signed or checked, never stored)
+        self.dcc_signing = {}
+        for name, label, placeholder, tip in (
+                ("dcc_signing_key", tr("DCC signing key (PEM file)"),
+                 tr("empty: ANGLEBENCH_DCC_SIGNING_KEY, else not signed"),
+                 tr("The laboratory's private key file (PEM) its DCCs are signed with "
+                    "(XML-DSig); only the path is kept")),
+                ("dcc_signing_certificate", tr("DCC signing certificate (PEM file)"),
+                 tr("empty: ANGLEBENCH_DCC_SIGNING_CERTIFICATE"),
+                 tr("The X.509 certificate (PEM) of the signing key, carried in each signed "
+                    "DCC")),
+                ("dcc_trusted_certificate", tr("Trusted certificate for DCCs read (PEM file)"),
+                 tr("empty: ANGLEBENCH_DCC_TRUSTED_CERTIFICATE, else the signing certificate"),
+                 tr("A signature on a DCC read in (a standard's, a polygon's) is checked "
+                    "against this certificate"))):
+            edit = QLineEdit()
+            edit.setObjectName(name)
+            edit.setPlaceholderText(placeholder)
+            edit.setToolTip(tip)
+            cert.layout().addRow(label, edit)
+            self.dcc_signing[name] = edit
         grid.addWidget(cert, 0, 0)
         lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
                                                     "lab_country", "number_scheme"))
@@ -362,7 +384,8 @@ class CertificateDialog(QDialog):
             schema_dir = (schema_dir or os.environ.get("ANGLEBENCH_DCC_SCHEMA", "")
                           or self.dcc_schema.text()).strip()
             found = read_standard_dcc(path, schema_dir or None, measurement_date=when or None,
-                                      trusted_cert=trusted_certificate())
+                                      trusted_cert=trusted_certificate(
+                                          self.dcc_signing["dcc_trusted_certificate"].text()))
         except (DccError, SigningError) as exc:
             self.error_label.setStyleSheet("color: #b00020;")
             self.error_label.setText(explained(exc))
@@ -412,6 +435,18 @@ class CertificateDialog(QDialog):
     def set_dcc_options(self, write: bool, schema_dir: str) -> None:
         self.write_dcc.setChecked(write)
         self.dcc_schema.setText(schema_dir)
+
+    def dcc_signing_paths(self) -> tuple[str, str, str]:
+        """The signing key, its certificate and the trusted certificate (paths; lab
+        settings, not details of this certificate)."""
+        return tuple(self.dcc_signing[name].text().strip() for name in (
+            "dcc_signing_key", "dcc_signing_certificate", "dcc_trusted_certificate"))
+
+    def set_dcc_signing_paths(self, key_file: str, cert_file: str, trusted_file: str) -> None:
+        for name, value in zip(("dcc_signing_key", "dcc_signing_certificate",
+                                "dcc_trusted_certificate"), (key_file, cert_file, trusted_file),
+                               strict=True):
+            self.dcc_signing[name].setText(value)
 
     def metadata(self) -> CertificateMetadata:
         """The entered metadata. Raises MetadataError, with every bad field marked at once."""

@@ -645,12 +645,12 @@ def _standards_table(document: CertificateDocument) -> Table:
         name = s.description or "—"
         if document.traceability_basis:  # no reference standard: a comparator
             name = message(QT_TR_NOOP("{standard} (comparator)"), standard=name)
-        rows.append((name, s.serial or "—", s.certificate_no or "—", u))
+        rows.append((name, s.serial or "—", s.certificate_no or "—", u, s.due_date or "—"))
     if not rows:
-        rows.append((QT_TR_NOOP("not stated"), "", "", ""))
+        rows.append((QT_TR_NOOP("not stated"), "", "", "", ""))
     return Table(QT_TR_NOOP("Reference standards"), (
         QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
-        QT_TR_NOOP("Uncertainty")), rows)
+        QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Calibration due")), rows)
 
 
 def _render(document: CertificateDocument) -> FPDF:
@@ -710,7 +710,7 @@ def _render(document: CertificateDocument) -> FPDF:
           if document.edited_readings else []),
     ])
     pdf.heading(label(document, "Reference standards and traceability"))
-    pdf.data_table(_standards_table(document), (58, 30, 38, 48), ("LEFT",) * 4)
+    pdf.data_table(_standards_table(document), (50, 26, 34, 42, 22), ("LEFT",) * 5)
     pdf.paragraph(_traceability(document), 8.5)
     pdf.heading(label(document, "Method"))
     pdf.paragraph(document.method)

@@ -21,7 +21,10 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     (QT_TR_NOOP texts, e.g. the polygon and the autocollimator); each needs a standard listed
     with a calibration certificate and a stated U — a U in the table, or, for one standard
     listed with its certificate and no U, the inputs stated in the settings (the ADC's
-    figures). Every standard listed needs both, or the results are not traceable through it."""
+    figures). Every standard listed needs both, or the results are not traceable through it;
+    and a standard whose calibration was due before the date of calibration (its due date
+    stated) had expired: the results are not traceable through it either (the same rule as
+    a missing certificate: the document is a test report naming it)."""
     standards = metadata.standards
     if not standards:
         return []
@@ -41,6 +44,11 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
                          for part in (("; " if i else ""), message(r))), count=carried))
     for std in standards:
         name = std.description or message(QT_TR_NOOP("standard"))
+        if std.due_date and metadata.calibration_date and std.due_date < metadata.calibration_date:
+            gaps.append(message(QT_TR_NOOP(
+                "{standard}: its calibration was due on {due}, before the date of calibration "
+                "{date}: it had expired"), standard=name, due=std.due_date,
+                date=metadata.calibration_date))
         if std.uncertainty is None and not (stated_inputs and std.certificate_no):
             gaps.append(message(QT_TR_NOOP("{standard} has no stated uncertainty"), standard=name))
         elif not std.certificate_no:

@@ -149,10 +149,11 @@ class CrossCalResult:
         r = self.readings
         return float(r.encoder_deg[np.flatnonzero(r.mounting == r.mountings[0])[0]])
 
-    def _u_from_first(self, block: int) -> np.ndarray:
+    def _u_from_first(self, block: int, metadata: Any = None) -> np.ndarray:
         """Standard uncertainty of x_i − x_1 within one result set (0: E, 1: d): the scatter's
         from the full covariance (var x_i + var x_1 − 2 cov), with the bench's stated bounds
-        through the design."""
+        through the design, and — given the certificate details — each comparator's stated
+        uncertainty through the design (as in the budget about the mean)."""
         n, cov = self.faces, self.solution.covariance_arcsec2
         c = cov[block * n:(block + 1) * n, block * n:(block + 1) * n]
         var = np.diag(c) + c[0, 0] - 2.0 * c[:, 0]
@@ -160,20 +161,26 @@ class CrossCalResult:
         from_first[:, block * n:(block + 1) * n] = np.eye(n)
         from_first[:, block * n] -= 1.0
         var = var + self.systematic_u_arcsec(from_first) ** 2
+        if metadata is not None:
+            from models.crosscal.report import comparator_u_arcsec
+
+            var = var + comparator_u_arcsec(self, metadata, from_first) ** 2
         return np.sqrt(np.clip(var, 0.0, None))
 
-    def encoder_u_from_step0_arcsec(self) -> np.ndarray:
-        """Expanded U of E_k − E_0 (zero at step 0)."""
-        return self.solution.coverage_factor * self._u_from_first(0)
+    def encoder_u_from_step0_arcsec(self, metadata: Any = None) -> np.ndarray:
+        """Expanded U of E_k − E_0 (zero at step 0); with the certificate details, the
+        comparators' stated U in (the certificate's column)."""
+        return self.solution.coverage_factor * self._u_from_first(0, metadata)
 
-    def polygon_u_from_face1_standard_arcsec(self) -> np.ndarray:
+    def polygon_u_from_face1_standard_arcsec(self, metadata: Any = None) -> np.ndarray:
         """Standard uncertainty of d_i − d_1 (zero at face 1, the reference)."""
-        return self._u_from_first(1)
+        return self._u_from_first(1, metadata)
 
-    def polygon_u_from_face1_arcsec(self) -> np.ndarray:
+    def polygon_u_from_face1_arcsec(self, metadata: Any = None) -> np.ndarray:
         """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries): the
-        scatter's (k from its ν) with the bench's stated bounds through the design."""
-        return self.solution.coverage_factor * self._u_from_first(1)
+        scatter's (k from its ν) with the bench's stated bounds through the design; with the
+        certificate details, the comparators' stated U in (the certificate's column)."""
+        return self.solution.coverage_factor * self._u_from_first(1, metadata)
 
     @functools.cached_property
     def expanded_u_arcsec(self) -> tuple[np.ndarray, np.ndarray]:
@@ -440,6 +447,12 @@ def polygon_reference(result: CrossCalResult) -> SentReference:
                          {i + 1: float(u1[i]) for i in range(result.faces)}, float(k), name)
 
 
+def _comparators(metadata) -> bool:
+    """Whether the certificate details list a comparator with a stated U (an input of the
+    certificate's budget, so of the JSON's U: models.crosscal.report.crosscal_budget)."""
+    return any((std.uncertainty_in("arcsec") or 0.0) > 0 for std in metadata.standards)
+
+
 class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline,
                SendsReference, GuidesAcquisition):
     key = KEY
@@ -489,15 +502,16 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
 
         return crosscal_certificate(result, metadata, source_name, self.method_reference)
 
-    def dcc_point_uncertainties(self, result):
-        """The encoder's error from step 0: its U (the certificate's "U from step 0") with
-        the solution's k, as the polygon's from face 1 in :meth:`uncertainty_budgets`."""
+    def dcc_point_uncertainties(self, result, metadata=None):
+        """The encoder's error from step 0: its U (the certificate's "U from step 0", the
+        comparators in) with the solution's k, as the polygon's from face 1 in
+        :meth:`uncertainty_budgets`."""
         from models.certificate.uncertainty_json import PointUncertainty
 
         s = result.solution
         if not s.separable:
             return {}
-        u = np.asarray(result.encoder_u_from_step0_arcsec(), dtype=float)
+        u = np.asarray(result.encoder_u_from_step0_arcsec(metadata), dtype=float)
         return {"error_from_step0_arcsec": PointUncertainty(
             u, np.full(u.size, float(s.coverage_factor)))}
 
@@ -521,7 +535,7 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
             return {}
         names = ("encoder_error_arcsec", "polygon_deviation_arcsec")
         plain = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
-        if (not metadata.item_resolution_in("arcsec")
+        if (not metadata.item_resolution_in("arcsec") and not _comparators(metadata)
                 and metadata.coverage_probability == plain.coverage_probability):
             budgets = dict(zip(names, result.bench_budgets, strict=True))  # computed once
         else:
@@ -529,9 +543,21 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
                                              metadata)
                        for item, name in zip(("encoder", "polygon"), names, strict=True)}
         budgets["polygon_deviation_from_face1_arcsec"] = PointUncertainty(
-            np.asarray(result.polygon_u_from_face1_arcsec(), dtype=float),
+            np.asarray(result.polygon_u_from_face1_arcsec(metadata), dtype=float),
             np.full(s.faces, float(s.coverage_factor)))
         return budgets
+
+    def certified_json(self, result, metadata):
+        """With the certificate details, the U arrays that exist since before #39 are the
+        certificate's too (the comparators' stated U in): one figure for each value in the
+        JSON, the certificate and the DCC."""
+        if not result.solution.separable:
+            return {}
+        budgets = self.uncertainty_budgets(result, metadata)
+        return {"encoder_error_U_arcsec": _list(budgets["encoder_error_arcsec"].expanded),
+                "polygon_deviation_U_arcsec": _list(budgets["polygon_deviation_arcsec"].expanded),
+                "polygon_deviation_U_from_face1_arcsec":
+                    _list(budgets["polygon_deviation_from_face1_arcsec"].expanded)}
 
     def correction_table(self, result, settings, path) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,

@@ -117,6 +117,25 @@ def _comparator_components(result, metadata: CertificateMetadata) -> list[Budget
     return out
 
 
+def comparator_u_arcsec(result, metadata: CertificateMetadata, combine=None) -> np.ndarray:
+    """Standard uncertainty that the comparators' stated U (each independent from reading to
+    reading, as in :func:`_comparator_components`) adds to (E, d) — or to combine·(E, d),
+    e.g. the values from face 1 — through the design (results = G·y)."""
+    from models.uncertainty.budget import divisor_for_basis
+
+    g = np.asarray(result.solution.gain, dtype=float)
+    if combine is not None:
+        g = np.asarray(combine, dtype=float) @ g
+    through2 = np.sum(g**2, axis=1)
+    var = np.zeros(g.shape[0])
+    for std in metadata.standards:
+        stated = std.uncertainty_in("arcsec")
+        if stated is None or not stated > 0:
+            continue
+        var = var + (stated / divisor_for_basis(std.basis)[0]) ** 2 * through2
+    return np.sqrt(var)
+
+
 def _item_block(result) -> slice:
     n = result.faces
     return slice(0, n) if result.certificate_of == "encoder" else slice(n, 2 * n)
@@ -291,7 +310,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         first = result.step_deg
         start = result.encoder_start_deg
         reading = (start + first) % 360.0
-        u0 = result.encoder_u_from_step0_arcsec()
+        u0 = result.encoder_u_from_step0_arcsec(metadata)
         shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
         rows = [(f"{k}", f"{first[k]:.4f}", f"{reading[k]:.4f}", *mean_cells, mean_u,
                  *first_cells, first_u)
@@ -336,7 +355,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                                          "runs); deviation = −error")))
         plots = [encoder_figure(result)]
     else:
-        u1 = result.polygon_u_from_face1_arcsec()
+        u1 = result.polygon_u_from_face1_arcsec(metadata)
         shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
         rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", *mean_cells, mean_u, *first_cells, first_u)
                 for i in range(n)

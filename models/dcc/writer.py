@@ -398,7 +398,7 @@ def _k_lookup(budgets) -> Callable[[float], float | None]:
 
 
 def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str, Any],
-            p: float) -> None:
+            p: float, notes: Mapping[str, Any] | None = None) -> None:
     doc = b.document
     columns = dict(doc.point_columns)
     if not columns:
@@ -450,6 +450,8 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
                              refType=f"{ref} {b.ref('anglebench_' + _camel(stem), stem)}"
                              if not ref.startswith("anglebench_") else ref)
         _column_name(b, q, name, headers)
+        if expanded is not None and notes and name in notes:
+            b.rich(q, "description", notes[name])
         b.real_list(q, values.astype(float), unit, expanded, k, p)
 
 
@@ -548,7 +550,8 @@ def _budget(b: _Builder, results, unit: str) -> None:
 
 
 def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[str, str],
-                         face_column: str, reference_faces) -> None:
+                         face_column: str, reference_faces,
+                         notes: Mapping[str, Any] | None = None) -> None:
     doc, meta = b.document, b.document.metadata
     p = float(meta.coverage_probability)
     mrs = etree.SubElement(root, D + "measurementResults")
@@ -581,13 +584,29 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
                 b.leaf(cert, "referralID", std.certificate_no)
                 b.leaf(cert, "procedure", "certificate number (no hash stated)")
                 b.leaf(cert, "value", std.certificate_no)
+                if std.due_date:  # its due date, and whether it was valid on the calibration's
+                    b.rich(cert, "description", message(QT_TR_NOOP(
+                        "calibration due on {due}"), due=std.due_date))
+                    b.leaf(cert, "inValidityRange",
+                           "false" if meta.calibration_date and std.due_date < meta.calibration_date
+                           else "true")
             if std.serial:
                 ids = etree.SubElement(eq, D + "identifications")
                 ident = etree.SubElement(ids, D + "identification")
                 b.leaf(ident, "issuer", "manufacturer")
                 b.leaf(ident, "value", std.serial)
-            if std.uncertainty is not None:
+            qs = None
+            if std.due_date:
                 qs = etree.SubElement(eq, D + "measuringEquipmentQuantities")
+                q = etree.SubElement(qs, D + "measuringEquipmentQuantity",
+                                     refType=b.ref(v.REFTYPE_STANDARD_DUE,
+                                                   "the date the standard's calibration is due "
+                                                   "(YYYY-MM-DD)"))
+                b.text(q, "name", QT_TR_NOOP("Calibration due date"))
+                b.leaf(q, "charsXMLList", std.due_date)
+            if std.uncertainty is not None:
+                if qs is None:
+                    qs = etree.SubElement(eq, D + "measuringEquipmentQuantities")
                 q = etree.SubElement(qs, D + "measuringEquipmentQuantity",
                                      refType=b.ref(v.REFTYPE_STANDARD_U,
                                                    "the standard's stated uncertainty figure"))
@@ -611,7 +630,7 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
             q = etree.SubElement(etree.SubElement(ic, D + "data"), D + "quantity")
             b.real(q, value, unit)
     results = etree.SubElement(mr, D + "results")
-    _curves(b, results, pairs, budgets, p)
+    _curves(b, results, pairs, budgets, p, notes or {})
     if face_column:
         _face_deviations(b, results, face_column, pairs, budgets, p)
     if reference_faces is not None:
@@ -635,6 +654,7 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
               uncertainty_columns: Mapping[str, str] | None = None,
               face_deviations_column: str = "",
               reference_face_deviations: Any = None,
+              column_notes: Mapping[str, Any] | None = None,
               software: SoftwareIdentity | None = None) -> bytes:
     """The DCC 3.3.0 of ``document`` (the certificate as printed into ``pdf_bytes``), with
     the PDF embedded byte for byte. ``budgets``: the workbench's
@@ -656,7 +676,7 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
                          schemaVersion=v.SCHEMA_VERSION)
     _administrative(b, root, software)
     _measurement_results(b, root, budgets or {}, software, uncertainty_columns or {},
-                         face_deviations_column, reference_face_deviations)
+                         face_deviations_column, reference_face_deviations, column_notes or {})
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
         v.REFTYPE_ISSUED_PDF, "the issued PDF certificate, byte for byte"))
     b.text(pdf, "name", message(QT_TR_NOOP("Certificate {number} (PDF)"),

@@ -687,6 +687,30 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
     measurand_standards = (QT_TR_NOOP("the polygon (its face deviations)"),
                            QT_TR_NOOP("the autocollimator"))
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
+    #: what the DCC says of a column's U where the PDF prints none beside it
+    dcc_column_notes = {"raw_error_arcsec": QT_TR_NOOP(
+        "U of the raw error: the certificate's budget without its input 'Pyramidal correction "
+        "(ψ, ω)' (the raw error is before that correction; every other input — the reference "
+        "polygon, the autocollimator, its roll, the reading noise, the zero reading, the "
+        "drift — is in it), at each position with its own k.")}
+
+    def dcc_point_uncertainties(self, result, metadata=None):
+        """The raw error (mean of the sets, before the pyramidal correction): the
+        certificate's budget less the correction's own input (as the JSON's per-set
+        ``error_arcsec``), U and k per position; none when the budget is not determined."""
+        if metadata is None:
+            return {}
+        from models.polygon.report import PYRAMIDAL_INPUT, polygon_budget
+        from models.uncertainty.budget import UncertaintyBudget
+
+        try:
+            full = polygon_budget(result, metadata)
+        except (ValueError, ArithmeticError, IndexError):
+            return {}
+        raw = UncertaintyBudget(tuple(c for c in full.components
+                                      if getattr(c.name, "template", c.name) != PYRAMIDAL_INPUT),
+                                full.points, full.probability, full.unit)
+        return {"raw_error_arcsec": raw}
 
     def dcc_reference_face_deviations(self, result, metadata):
         """The reference polygon's face deviations from face 1 with the U its certificate

@@ -1480,7 +1480,7 @@
     </message>
     <message>
         <source>; its DCC (validated) written to {path}</source>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
         <translation>；其数字证书（已校验）已写入 {path}</translation>
     </message>
     <message>
@@ -2157,6 +2157,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>扩展不确定度 U</translation>
     </message>
     <message>
+        <source>calibration due on {due}</source>
+        <translation>校准有效期至 {due}</translation>
+    </message>
+    <message>
+        <source>Calibration due date</source>
+        <translation>校准有效期</translation>
+    </message>
+    <message>
         <source>Stated uncertainty ({basis}, per {per})</source>
         <translation>给定的不确定度（{basis}，每 {per}）</translation>
     </message>
@@ -2824,6 +2832,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>不确定度</translation>
     </message>
     <message>
+        <source>Calibration due</source>
+        <translation>校准有效期至</translation>
+    </message>
+    <message>
         <source>SPECIMEN — made from example details for training or demonstration; not a certificate, not recorded in any register.</source>
         <translation>样本——由示例信息生成，用于培训或演示；不是证书，未记入任何登记册。</translation>
     </message>
@@ -2971,6 +2983,42 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>DCC schema folder</source>
         <translation>DCC 模式文件夹</translation>
+    </message>
+    <message>
+        <source>DCC signing key (PEM file)</source>
+        <translation>DCC 签名私钥（PEM 文件）</translation>
+    </message>
+    <message>
+        <source>empty: ANGLEBENCH_DCC_SIGNING_KEY, else not signed</source>
+        <translation>留空：使用 ANGLEBENCH_DCC_SIGNING_KEY，否则不签名</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s private key file (PEM) its DCCs are signed with (XML-DSig); only the path is kept</source>
+        <translation>实验室为其 DCC 签名（XML-DSig）所用的私钥文件（PEM）；只保存路径</translation>
+    </message>
+    <message>
+        <source>DCC signing certificate (PEM file)</source>
+        <translation>DCC 签名证书（PEM 文件）</translation>
+    </message>
+    <message>
+        <source>empty: ANGLEBENCH_DCC_SIGNING_CERTIFICATE</source>
+        <translation>留空：使用 ANGLEBENCH_DCC_SIGNING_CERTIFICATE</translation>
+    </message>
+    <message>
+        <source>The X.509 certificate (PEM) of the signing key, carried in each signed DCC</source>
+        <translation>签名私钥的 X.509 证书（PEM），随每份已签名的 DCC 附带</translation>
+    </message>
+    <message>
+        <source>Trusted certificate for DCCs read (PEM file)</source>
+        <translation>读入 DCC 的受信任证书（PEM 文件）</translation>
+    </message>
+    <message>
+        <source>empty: ANGLEBENCH_DCC_TRUSTED_CERTIFICATE, else the signing certificate</source>
+        <translation>留空：使用 ANGLEBENCH_DCC_TRUSTED_CERTIFICATE，否则使用签名证书</translation>
+    </message>
+    <message>
+        <source>A signature on a DCC read in (a standard&apos;s, a polygon&apos;s) is checked against this certificate</source>
+        <translation>读入的 DCC（计量标准的、多面棱体的）上的签名按此证书核验</translation>
     </message>
     <message>
         <source>Certificates are checked (Checked by / 核验员)</source>
@@ -4219,6 +4267,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the autocollimator</source>
         <translation>自准直仪</translation>
+    </message>
+    <message>
+        <source>U of the raw error: the certificate&apos;s budget without its input &apos;Pyramidal correction (ψ, ω)&apos; (the raw error is before that correction; every other input — the reference polygon, the autocollimator, its roll, the reading noise, the zero reading, the drift — is in it), at each position with its own k.</source>
+        <extracomment>what the DCC says of a column&apos;s U where the PDF prints none beside it</extracomment>
+        <translation>原始误差的 U：证书的不确定度预算去掉其输入量“塔差修正（ψ, ω）”（原始误差是该修正之前的误差；其余各输入量——参考多面棱体、自准直仪、其滚转、读数噪声、零位读数、漂移——均在其中），各位置用其自身的 k。</translation>
     </message>
     <message>
         <source>RUN INVALID: closure failed. </source>
@@ -7680,7 +7733,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source> — RUN INVALID (closure failed)</source>
-        <extracomment>the window adds a polygon read from its DCC to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does) the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
+        <extracomment>the window adds a polygon read from its DCC to this workbench&apos;s standards (its U enters the budget as a polygon certificate&apos;s does) the folder of the DCC schemas a DCC is validated against (&quot;&quot;: not validated) the lab&apos;s trusted certificate for a DCC&apos;s signature (a path; &quot;&quot;: the environment&apos;s) what the last certificate loaded said beside its values (a DCC&apos;s notes, the deviation column&apos;s values replaced)</extracomment>
         <translation> — 测量无效（闭合不合格）</translation>
     </message>
     <message>
@@ -8790,6 +8843,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>承载被测量的计量标准为 {roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
     </message>
     <message>
+        <source>{standard}: its calibration was due on {due}, before the date of calibration {date}: it had expired</source>
+        <translation>{standard}：其校准有效期至 {due}，早于校准日期 {date}：已过期</translation>
+    </message>
+    <message>
         <source>{standard} has no stated uncertainty</source>
         <translation>{standard} 未给出不确定度</translation>
     </message>
@@ -9652,7 +9709,7 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     </message>
     <message>
         <source>the signature does not verify: {reason}</source>
-        <translation>数字证书不符合 {folder} 中的模式，未签发：{problems}</translation>
+        <translation>签名验证失败：{reason}</translation>
     </message>
     <message>
         <source>No data</source>

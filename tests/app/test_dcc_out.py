@@ -179,12 +179,14 @@ SAME_AS_JSON = {
     "fringe": [("raw_error_arcsec", "raw_error_arcsec", "expanded_uncertainty_raw_error_arcsec"),
                ("compensated_error_arcsec", "compensated_error_arcsec",
                 "expanded_uncertainty_compensated_error_arcsec")],
-    # the cross-calibration certificate's U takes in the comparator listed in the details;
-    # the JSON's polygon/encoder U is the bench's own (README: 0.032″ vs 0.017″): the DCC
-    # states the certificate's
-    "crosscal": [("deviation_arcsec", "polygon_deviation_arcsec", None),
-                 ("deviation_from_face1_arcsec", "polygon_deviation_from_face1_arcsec", None)],
-    "crosscal_encoder": [("error_arcsec", "encoder_error_arcsec", None)],
+    # the cross-calibration's U takes in the comparator listed in the details: the JSON's
+    # expanded_uncertainty_* is the certificate's and the DCC's (one figure, #43)
+    "crosscal": [("deviation_arcsec", "polygon_deviation_arcsec",
+                  "expanded_uncertainty_polygon_deviation_arcsec"),
+                 ("deviation_from_face1_arcsec", "polygon_deviation_from_face1_arcsec",
+                  "expanded_uncertainty_polygon_deviation_from_face1_arcsec")],
+    "crosscal_encoder": [("error_arcsec", "encoder_error_arcsec",
+                          "expanded_uncertainty_encoder_error_arcsec")],
 }
 
 
@@ -236,6 +238,28 @@ def test_the_cross_calibrated_polygon_is_stated_in_the_shared_face_deviation_for
     assert u[0] == 0 and np.all(u[1:] > 0)
     assert np.all(u >= np.asarray(data["expanded_uncertainty_polygon_deviation_from_face1_arcsec"])
                   - 1e-12)
+
+
+@pytest.mark.skipif(not shutil.which("pdftotext"), reason="pdftotext is not installed")
+def test_the_cross_calibrations_u_is_one_figure_in_json_certificate_and_dcc(issued):
+    """The sample's face deviations: the U the PDF prints (comparator in, 0.032″), the
+    JSON's expanded_uncertainty_* and the DCC's are the same figure at every face."""
+    _, said, pdf, xml, data = issued["crosscal"]
+    curve = _curve(etree.fromstring(xml.read_bytes()))
+    u = np.asarray(data["expanded_uncertainty_polygon_deviation_arcsec"], float)
+    u1 = np.asarray(data["expanded_uncertainty_polygon_deviation_from_face1_arcsec"], float)
+    assert curve["deviation_arcsec"]["U"] == pytest.approx(u, rel=1e-12)
+    assert curve["deviation_from_face1_arcsec"]["U"] == pytest.approx(u1, rel=1e-12, abs=1e-15)
+    assert 0.03 < u.max() < 0.04  # the comparator's 0.1″ (k = 2) per reading is in
+    text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True,
+                          text=True).stdout
+    rows = re.findall(r"^\s+(\d+)\s+(\d+\.\d{4})\s+([+\-]\d\.\d{3})\s+(\d\.\d{3})\s+"
+                      r"([+\-]\d\.\d{3})\s*(\d\.\d{3})?", text, re.M)
+    assert len(rows) == 12
+    printed = np.array([float(r[3]) for r in rows])
+    assert printed == pytest.approx(np.round(u, 3), abs=1e-9)
+    printed1 = np.array([float(r[5]) for r in rows[1:]])
+    assert printed1 == pytest.approx(np.round(u1[1:], 3), abs=1e-9)
 
 
 def _statement_types(xml: Path) -> set[str]:
@@ -435,3 +459,23 @@ def test_the_polygon_workbench_states_its_reference_polygon_in_the_shared_form(i
     assert values == pytest.approx(expected, abs=1e-12)
     # the polygon's certificate (certificate_polygon.json): U95 0.2" from face 1, k = 2
     assert u[0] == 0 and u[1:] == pytest.approx([0.2] * 23) and set(k) == {2.0}
+
+
+def test_the_polygons_raw_error_carries_the_budgets_u_without_the_pyramidal_input(issued):
+    """The polygon certificate prints no U beside its raw error: the DCC gives the budget's
+    U without the pyramidal correction's input, saying so; with that input added back
+    (its own U per position, the JSON's expanded_uncertainty_pyramidal_error_arcsec of
+    one set) it is the corrected error's U."""
+    _, _, _, xml, data = issued["polygon"]
+    tree = etree.fromstring(xml.read_bytes())
+    curve = _curve(tree)
+    raw, corrected = curve["raw_error_arcsec"], curve["corrected_error_arcsec"]
+    assert raw["U"].size == corrected["U"].size == 24
+    assert np.all(raw["U"] > 0) and np.all(raw["U"] <= corrected["U"] + 1e-12)
+    # the pyramidal input is small on this sample: the raw U within a few % of the corrected
+    assert raw["U"] == pytest.approx(corrected["U"], rel=0.05)
+    note = next(q for q in tree.iterfind(
+        ".//dcc:result[@refType='anglebench_curve']//dcc:quantity", NS)
+        if q.findtext("dcc:name/dcc:content[last()]", namespaces=NS) == "raw_error_arcsec")
+    text = " ".join(note.find("dcc:description", NS).itertext())
+    assert "Pyramidal correction" in text and "without" in text

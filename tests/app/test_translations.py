@@ -44,6 +44,8 @@ KEPT = {
     "Vpp", "App", "ERN", "TCP", "tcp",
     # the digital calibration certificate's format, named as PDF and CSV are (#43)
     "DCC", "XML", "xml",
+    # its signature's key and certificate files and the signature's standard (XML-DSig)
+    "PEM", "DSig",
     # CMC: as CNAS writes it; SPECIMEN-…: the specimens' numbers; IANA and its zone names
     "CMC", "SPECIMEN", "IANA", "Asia", "Shanghai",
 }

@@ -28,6 +28,8 @@ class PolygonPresenter(WorkbenchPresenter):
         self.reference_standard_found: Callable[[dict], None] = lambda _standard: None
         #: the folder of the DCC schemas a DCC is validated against ("": not validated)
         self.dcc_schema_dir: Callable[[], str] = lambda: ""
+        #: the lab's trusted certificate for a DCC's signature (a path; "": the environment's)
+        self.dcc_trusted_certificate: Callable[[], str] = lambda: ""
         #: what the last certificate loaded said beside its values (a DCC's notes, the
         #: deviation column's values replaced)
         self.certificate_notes: list[str] = []
@@ -78,7 +80,8 @@ class PolygonPresenter(WorkbenchPresenter):
         when = getattr(details, "calibration_date", "") or dt.date.today().isoformat()
         faces = int(self.settings.get("faces") or 0) or max(self._positions()) or None
         reference = read_polygon_dcc(path, self.dcc_schema_dir() or None, measurement_date=when,
-                                     faces=faces, trusted_cert=trusted_certificate())
+                                     faces=faces,
+                                     trusted_cert=trusted_certificate(self.dcc_trusted_certificate()))
         column = self.sheet.column_index("polygon_dev_arcsec")
         position_column = self.sheet.column_index("position")
         differed = False
