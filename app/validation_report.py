@@ -22,7 +22,8 @@ from app.command_line import say as _say
 from models.certificate.document import Table
 from models.messages import QT_TR_NOOP, in_language, joined, message
 from models.project.atomic_write import write_bytes_atomic
-from models.validation.cases import ValidationCase, run_validation
+from models.validation.cases import ValidationCase
+from models.validation.run import run_validation
 
 __all__ = ["run_validate", "validation_pdf_bytes"]
 

@@ -34,6 +34,7 @@ from models.plots import PlotFigure
 from models.readings.entry_plan import EntryPlan
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
+from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import scope_statement
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
@@ -42,9 +43,7 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRe
            "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
 #: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
-#: correction is the negative of an error.
-SIGN_CONVENTION = "indicated_minus_reference"
-SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
+#: correction is the negative of an error (models.sign_convention, named here for the workbenches)
 
 #: what a concrete workbench class must set (checked when its object is made)
 _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
