@@ -50,8 +50,11 @@ translations: $(STAMP)
 new-workbench: $(STAMP)
 	$(PY) -m app.new_workbench "$(NAME)" --title "$(TITLE)" --title-zh "$(TITLE_ZH)"
 
+# ruff; the import contracts (pyproject.toml [tool.importlinter]: layers, no Qt in models/,
+# the workbenches independent); mypy on models/ (pyproject.toml [tool.mypy])
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources
+	$(VENV)/bin/lint-imports
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache
