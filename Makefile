@@ -55,6 +55,7 @@ new-workbench: $(STAMP)
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources
 	$(VENV)/bin/lint-imports
+	$(VENV)/bin/mypy
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache
