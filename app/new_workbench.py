@@ -258,10 +258,32 @@ def _translate(texts: dict[str, str]) -> None:
     path.write_text(text[:at] + entries + text[at:], "utf-8")
 
 
+def taken_names() -> dict[str, str]:
+    """The names a new workbench's key may not take, each with what already has it: the
+    workbenches (models/registry.py), the instruments of capture (app/capture/instruments.py,
+    whose folder the architecture test exempts), the commands without a window (app/main.py)
+    and the folders of models/ and widgets/."""
+    from app.capture.instruments import INSTRUMENTS
+    from app.main import COMMANDS
+    from models.registry import LOCATIONS
+
+    names = {path.name.removesuffix(".py"): f"a module of {top}/ ({top}/{path.name})"
+             for top in ("models", "widgets") for path in sorted((ROOT / top).iterdir())
+             if (path.is_dir() and (path / "__init__.py").exists()) or path.suffix == ".py"}
+    names.update({name: "a command (anglebench " + name + ")" for name in COMMANDS})
+    names.update({name: "an instrument of capture (app/capture/instruments.py)" for name in INSTRUMENTS})
+    names.update({name: "a workbench (models/registry.py)" for name in LOCATIONS})
+    return names
+
+
 def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
     """Writes the workbench ``key``; the files written (registry, index and .ts edited)."""
     if not re.fullmatch(r"[a-z][a-z0-9_]*", key):
         raise SystemExit("new-workbench: NAME is lower-case letters, digits and _ (a Python name)")
+    clash = taken_names().get(key)
+    if clash is not None:
+        raise SystemExit(f"new-workbench: {key!r} is taken: it is {clash}; choose another NAME "
+                         "(nothing was written)")
     names = {"key": key, "title": title, "cls": _class_name(key), "const": key.upper()}
     names["model_imports"] = _imports(
         f"from models.{key} import KEY, TITLE", "from models.messages import QT_TR_NOOP, lines, message",
