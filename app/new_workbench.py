@@ -3,9 +3,12 @@
 Writes the two folders (``models/KEY``, ``widgets/KEY``), a sample, the manual pages in
 English and Chinese (linked from the manuals' index), its entry in ``models/registry.py``
 and the Chinese of its texts in ``resources/translations/anglebench_zh_CN.ts``. The model
-it writes is a working one — the errors of indication of an angle against a reference, a
-validation case by simulation — to be replaced by the workbench's own; what it has then
-is checked by ``tests/test_workbench_contract.py``, each failure saying what to add where.
+it writes is a working one — the errors of indication of an angle against a reference, its
+validation case by simulation in ``models/KEY/validation_cases.py`` — to be replaced by the
+workbench's own; its presenter asks the view to draw (``view.show_errors``), tested with an
+autospec'd view in ``tests/widgets/KEY/``. What it has then is checked by
+``tests/test_workbench_contract.py``, each failure saying what to add where. A key another
+workbench, instrument of capture, command or folder of models/ or widgets/ has is refused.
 """
 
 from __future__ import annotations
@@ -133,22 +136,62 @@ class {cls}(Workbench, OverlaysRuns, ShowsHeadline):
     def headline(self, result):
         return {{"peak-to-peak (\\")": result.peak_to_peak}}
 
-    def validation_cases(self, trials):
-        from models.validation.cases import EXACT_SIMULATION, ValidationCase
-
-        # readings made from a known error (not from the model's formula): 5" + 2" sin θ
-        reference = np.linspace(0.0, 350.0, 36)
-        truth = 5.0 + 2.0 * np.sin(np.radians(reference))
-        rows = [[f"{{r:.6f}}", f"{{r + t / 3600.0:.9f}}"] for r, t in zip(reference, truth, strict=True)]
-        from models.readings.sheet import ReadingsSheet
-
-        result = self.analyze(ReadingsSheet(self.columns, rows).parse(), self.default_settings)
-        worst = float(np.max(np.abs(result.error_arcsec - truth)))
-        return [ValidationCase(self.title, QT_TR_NOOP("a known error recovered from simulated readings"),
-                               EXACT_SIMULATION, "≤ 0.001\\"", f"{{worst:.2g}}\\"", worst <= 0.001)]
-
 
 {const} = {cls}()
+'''
+
+VALIDATION = '''"""The {key} workbench's reference cases for the method validation report (``anglebench
+validate``; models.validation.run gathers every workbench's): readings simulated from a known
+error, not from the model's formula, through the whole analysis.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+{validation_imports}
+
+__all__ = ["validation_cases"]
+
+
+def validation_cases(trials: int) -> list[ValidationCase]:
+    """Its reference cases (``trials``: the Monte Carlo runs a budget comparison would make)."""
+    # readings made from a known error: 5" + 2" sin θ
+    reference = np.linspace(0.0, 350.0, 36)
+    truth = 5.0 + 2.0 * np.sin(np.radians(reference))
+    rows = [[f"{{r:.6f}}", f"{{r + t / 3600.0:.9f}}"] for r, t in zip(reference, truth, strict=True)]
+    kind = {const}
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.default_settings)
+    worst = float(np.max(np.abs(result.error_arcsec - truth)))
+    return [ValidationCase(kind.title, QT_TR_NOOP("a known error recovered from simulated readings"),
+                           EXACT_SIMULATION, "≤ 0.001\\"", f"{{worst:.2g}}\\"", worst <= 0.001)]
+'''
+
+PRESENTER_TEST = '''"""The {key} workbench's presenter with an autospec'd view: it decides and asks the view
+to draw, reaching into none of the view's widgets (written by make new-workbench)."""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import numpy as np
+
+{test_imports}
+
+
+def test_the_presenter_asks_its_view_to_draw_the_errors(qtbot):
+    view = mock.create_autospec({cls}View, instance=True)  # no widget: only the view's methods
+    presenter = {cls}Presenter(view)
+    reference = np.arange(0.0, 360.0, 30.0)
+    rows = [[f"{{r:.6f}}", f"{{r + (4.0 + r / 100.0) / 3600.0:.9f}}"] for r in reference]
+    result = {const}.analyze(ReadingsSheet({const}.columns, rows).parse(), {const}.default_settings)
+    presenter.show_result(result)
+    (figure,), _ = view.show_errors.call_args
+    assert np.allclose(figure.series[0].x, reference)
+    shown = figure_in_unit(error_figure(result), presenter.angle_unit)
+    assert np.allclose(figure.series[0].y, shown.series[0].y)
+    presenter.clear_result()
+    view.clear_result.assert_called_once_with()
 '''
 
 INIT = '''"""The {key} workbench: {title}.
@@ -178,6 +221,10 @@ class {cls}View(WorkbenchView):
         self.error_plot = ErrorPlot()
         self.add_plot_tab(self.error_plot, tr("Error curves"))
 
+    def show_errors(self, figure) -> None:
+        """Draws the error curves (a models.plots.PlotFigure, in the chosen unit)."""
+        self.error_plot.show_figure(figure)
+
     def clear_result(self) -> None:
         self.error_plot.clear()
 '''
@@ -196,7 +243,7 @@ class {cls}Presenter(WorkbenchPresenter):
         super().__init__({const}, view, parent)
 
     def show_result(self, result) -> None:
-        self.view.error_plot.show_figure(*self.in_unit(error_figure(result)))
+        self.view.show_errors(*self.in_unit(error_figure(result)))
 
     def clear_result(self) -> None:
         self.view.clear_result()
@@ -294,12 +341,25 @@ def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
         f"from models.{key}.analysis import {names['const']}, error_figure",
         f"from widgets.{key}.view import {names['cls']}View",
         "from widgets.workbench_presenter import WorkbenchPresenter")
+    names["validation_imports"] = _imports(
+        f"from models.{key}.analysis import {names['const']}", "from models.messages import QT_TR_NOOP",
+        "from models.readings.sheet import ReadingsSheet",
+        "from models.validation.cases import EXACT_SIMULATION, ValidationCase")
+    names["test_imports"] = _imports(
+        f"from models.{key}.analysis import {names['const']}, error_figure",
+        "from models.display_units import figure_in_unit",
+        "from models.readings.sheet import ReadingsSheet",
+        f"from widgets.{key}.presenter import {names['cls']}Presenter",
+        f"from widgets.{key}.view import {names['cls']}View")
     written = {
         ROOT / "models" / key / "__init__.py": INIT.format(**names),
         ROOT / "models" / key / "analysis.py": MODEL.format(**names),
+        ROOT / "models" / key / "validation_cases.py": VALIDATION.format(**names),
         ROOT / "widgets" / key / "__init__.py": f'"""The {key} workbench\'s window part."""\n',
         ROOT / "widgets" / key / "view.py": VIEW.format(**names),
         ROOT / "widgets" / key / "presenter.py": PRESENTER.format(**names),
+        ROOT / "tests" / "widgets" / key / "__init__.py": "",
+        ROOT / "tests" / "widgets" / key / f"test_{key}_presenter.py": PRESENTER_TEST.format(**names),
         ROOT / "resources" / "samples" / f"{key}_sample.csv": SAMPLE,
         ROOT / "resources" / "manual" / f"{key}.html": MANUAL.format(
             title=escape(title), lang="", manual="Manual",
