@@ -284,6 +284,23 @@ def _register(key: str, const: str) -> None:
     path.write_text(text, "utf-8")
 
 
+def _contract(key: str) -> None:
+    """The workbench in pyproject.toml's import contracts: its models and widgets packages
+    independent of the other workbenches', its models package in the workbenches' layer."""
+    path = ROOT / "pyproject.toml"
+    text = path.read_text("utf-8")
+    for top, what in (("models", "models"), ("widgets", "views")):
+        name = f"name = \"the workbenches' {what} are independent"
+        start = text.index("modules = [", text.index(name))
+        end = text.index("]", start)
+        text = text[:end] + f', "{top}.{key}"' + text[end:]
+    layer = re.search(r'"theodolite \| [^"]*"', text)
+    if layer is None:
+        raise SystemExit("new-workbench: pyproject.toml has no workbenches' layer to add it to")
+    text = text[:layer.end() - 1] + f" | {key}" + text[layer.end() - 1:]
+    path.write_text(text, "utf-8")
+
+
 def _link_manual(key: str, title: str, title_zh: str) -> None:
     for lang, shown in (("", title), (".zh_CN", title_zh)):
         path = ROOT / "resources" / "manual" / f"index{lang}.html"
@@ -324,7 +341,8 @@ def taken_names() -> dict[str, str]:
 
 
 def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
-    """Writes the workbench ``key``; the files written (registry, index and .ts edited)."""
+    """Writes the workbench ``key``; the files written (registry, import contracts, index and
+    .ts edited)."""
     if not re.fullmatch(r"[a-z][a-z0-9_]*", key):
         raise SystemExit("new-workbench: NAME is lower-case letters, digits and _ (a Python name)")
     clash = taken_names().get(key)
@@ -372,6 +390,7 @@ def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
     for path, text in written.items():
         _write(path, text)
     _register(key, names["const"])
+    _contract(key)
     _link_manual(key, title, title_zh)
     _translate({title: title_zh, **TEXTS_ZH})
     return list(written)
@@ -385,7 +404,8 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     for path in new_workbench(args.name, args.title, args.title_zh):
         sys.stdout.write(f"wrote {path.relative_to(ROOT)}\n")
-    sys.stdout.write("edited models/registry.py, resources/manual/index*.html and "
+    sys.stdout.write("edited models/registry.py, pyproject.toml's import contracts, "
+                     "resources/manual/index*.html and "
                      "resources/translations/anglebench_zh_CN.ts\n"
                      f"next: QT_QPA_PLATFORM=offscreen .venv/bin/python -m pytest "
                      f"tests/test_workbench_contract.py -k {args.name}\n")

@@ -100,3 +100,24 @@ def test_no_import_loop_between_the_layer_units_of_models(graph):
               for i in graph.find_modules_directly_imported_by(m)
               if unit(i) in c and unit(i) != unit(m)]
     assert not found, f"{found}\n" + "\n".join(sorted(detail))
+
+
+def test_every_workbench_is_in_the_import_contracts():
+    """A workbench left out of pyproject's import-linter contracts would escape them."""
+    from pathlib import Path
+
+    from models.registry import LOCATIONS
+
+    tomllib = pytest.importorskip("tomllib")  # Python 3.11 on
+    config = tomllib.loads((Path(__file__).resolve().parents[1] / "pyproject.toml").read_text("utf-8"))
+    contracts = {c["name"]: c for c in config["tool"]["importlinter"]["contracts"]}
+    models = contracts["the workbenches' models are independent of each other"]["modules"]
+    views = contracts["the workbenches' views are independent of each other"]["modules"]
+    layers = " | ".join(contracts["models/: the cross-workbench code above the workbenches above "
+                                 "the shared code"]["layers"])
+    for key in LOCATIONS:
+        assert f"models.{key}" in models and f"widgets.{key}" in views, (
+            f"{key}: add models.{key} and widgets.{key} to the independence contracts of "
+            "pyproject.toml [tool.importlinter]")
+        assert f"| {key}" in layers or f"{key} |" in layers, (
+            f"{key}: add it to the workbenches' layer of pyproject.toml's models/ contract")

@@ -55,7 +55,7 @@ def test_the_written_workbench_keeps_its_cases_and_draws_through_its_view(tmp_pa
     import shutil
 
     root = new_workbench.ROOT
-    for rel in ("models/registry.py", "resources/manual/index.html",
+    for rel in ("models/registry.py", "pyproject.toml", "resources/manual/index.html",
                 "resources/manual/index.zh_CN.html", "resources/translations/anglebench_zh_CN.ts"):
         (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(root / rel, tmp_path / rel)
@@ -80,3 +80,7 @@ def test_the_written_workbench_keeps_its_cases_and_draws_through_its_view(tmp_pa
     assert "mock.create_autospec(TiltTableView, instance=True)" in test
     assert '"tilt_table": "models.tilt_table.analysis:TILT_TABLE"' in (
         tmp_path / "models/registry.py").read_text("utf-8")
+    contracts = (tmp_path / "pyproject.toml").read_text("utf-8")
+    assert '"models.crosscal", "models.tilt_table"]' in contracts
+    assert '"widgets.crosscal", "widgets.tilt_table"]' in contracts
+    assert '"theodolite | polygon | fringe | positioning | crosscal | tilt_table"' in contracts
