@@ -21,8 +21,8 @@ from app.process_setup import tune_process
 
 tune_process()  # before numpy is imported: one BLAS thread, freed arrays kept for reuse
 
-#: the commands without a window (``anglebench COMMAND …``); a workbench may not take their
-#: names (app/new_workbench.py refuses them)
+# the commands without a window (``anglebench COMMAND …``); a workbench may not take their
+# names (app/new_workbench.py refuses them)
 COMMANDS = ("analyze", "register", "capture", "simulate", "validate")
 
 

@@ -6,7 +6,7 @@ from models.messages import QT_TR_NOOP
 
 __all__ = ["SIGN_CONVENTION", "SIGN_CONVENTION_TEXT"]
 
-#: the JSON's ``sign_convention``
+# the JSON's ``sign_convention``
 SIGN_CONVENTION = "indicated_minus_reference"
 #: the certificate's sentence
 SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")

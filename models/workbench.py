@@ -42,8 +42,8 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRe
            "OverlaysRuns", "SendsReference", "SendsRuns", "SentReference", "SettingsError",
            "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
-#: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
-#: correction is the negative of an error (models.sign_convention, named here for the workbenches)
+# Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction
+# is the negative of an error (models.sign_convention; SIGN_CONVENTION(_TEXT) imported above)
 
 #: what a concrete workbench class must set (checked when its object is made)
 _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
@@ -140,9 +140,10 @@ class Workbench(ABC):
         return None
 
     def validation_cases(self, trials: int) -> list[Any]:
-        """Its reference cases (models.validation.cases.ValidationCase: check figures of the
-        method's publication, simulations with known truth) kept in its own folder; the
-        first four workbenches' live in models/validation/cases.py."""
+        """More reference cases (models.validation.cases.ValidationCase: check figures of the
+        method's publication, simulations with known truth) besides those of its folder's
+        ``validation_cases.py`` (``validation_cases(trials)``, where every workbench keeps its
+        own; models.validation.run gathers both)."""
         return []
 
     def __repr__(self) -> str:
