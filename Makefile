@@ -55,8 +55,12 @@ new-workbench: $(STAMP)
 docs: $(STAMP)
 	$(PY) -m app.docs_tables
 
+# ruff; the import contracts (pyproject.toml [tool.importlinter]: layers, no Qt in models/,
+# the workbenches independent); mypy on models/ (pyproject.toml [tool.mypy])
 lint: $(STAMP)
 	$(VENV)/bin/ruff check app models widgets tests resources
+	$(VENV)/bin/lint-imports
+	$(VENV)/bin/mypy
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache

@@ -21,6 +21,10 @@ from app.process_setup import tune_process
 
 tune_process()  # before numpy is imported: one BLAS thread, freed arrays kept for reuse
 
+# the commands without a window (``anglebench COMMAND …``); a workbench may not take their
+# names (app/new_workbench.py refuses them)
+COMMANDS = ("analyze", "register", "capture", "simulate", "validate")
+
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -3,9 +3,12 @@
 Writes the two folders (``models/KEY``, ``widgets/KEY``), a sample, the manual pages in
 English and Chinese (linked from the manuals' index), its entry in ``models/registry.py``
 and the Chinese of its texts in ``resources/translations/anglebench_zh_CN.ts``. The model
-it writes is a working one — the errors of indication of an angle against a reference, a
-validation case by simulation — to be replaced by the workbench's own; what it has then
-is checked by ``tests/test_workbench_contract.py``, each failure saying what to add where.
+it writes is a working one — the errors of indication of an angle against a reference, its
+validation case by simulation in ``models/KEY/validation_cases.py`` — to be replaced by the
+workbench's own; its presenter asks the view to draw (``view.show_errors``), tested with an
+autospec'd view in ``tests/widgets/KEY/``. What it has then is checked by
+``tests/test_workbench_contract.py``, each failure saying what to add where. A key another
+workbench, instrument of capture, command or folder of models/ or widgets/ has is refused.
 """
 
 from __future__ import annotations
@@ -133,22 +136,62 @@ class {cls}(Workbench, OverlaysRuns, ShowsHeadline):
     def headline(self, result):
         return {{"peak-to-peak (\\")": result.peak_to_peak}}
 
-    def validation_cases(self, trials):
-        from models.validation.cases import EXACT_SIMULATION, ValidationCase
-
-        # readings made from a known error (not from the model's formula): 5" + 2" sin θ
-        reference = np.linspace(0.0, 350.0, 36)
-        truth = 5.0 + 2.0 * np.sin(np.radians(reference))
-        rows = [[f"{{r:.6f}}", f"{{r + t / 3600.0:.9f}}"] for r, t in zip(reference, truth, strict=True)]
-        from models.readings.sheet import ReadingsSheet
-
-        result = self.analyze(ReadingsSheet(self.columns, rows).parse(), self.default_settings)
-        worst = float(np.max(np.abs(result.error_arcsec - truth)))
-        return [ValidationCase(self.title, QT_TR_NOOP("a known error recovered from simulated readings"),
-                               EXACT_SIMULATION, "≤ 0.001\\"", f"{{worst:.2g}}\\"", worst <= 0.001)]
-
 
 {const} = {cls}()
+'''
+
+VALIDATION = '''"""The {key} workbench's reference cases for the method validation report (``anglebench
+validate``; models.validation.run gathers every workbench's): readings simulated from a known
+error, not from the model's formula, through the whole analysis.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+{validation_imports}
+
+__all__ = ["validation_cases"]
+
+
+def validation_cases(trials: int) -> list[ValidationCase]:
+    """Its reference cases (``trials``: the Monte Carlo runs a budget comparison would make)."""
+    # readings made from a known error: 5" + 2" sin θ
+    reference = np.linspace(0.0, 350.0, 36)
+    truth = 5.0 + 2.0 * np.sin(np.radians(reference))
+    rows = [[f"{{r:.6f}}", f"{{r + t / 3600.0:.9f}}"] for r, t in zip(reference, truth, strict=True)]
+    kind = {const}
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.default_settings)
+    worst = float(np.max(np.abs(result.error_arcsec - truth)))
+    return [ValidationCase(kind.title, QT_TR_NOOP("a known error recovered from simulated readings"),
+                           EXACT_SIMULATION, "≤ 0.001\\"", f"{{worst:.2g}}\\"", worst <= 0.001)]
+'''
+
+PRESENTER_TEST = '''"""The {key} workbench's presenter with an autospec'd view: it decides and asks the view
+to draw, reaching into none of the view's widgets (written by make new-workbench)."""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import numpy as np
+
+{test_imports}
+
+
+def test_the_presenter_asks_its_view_to_draw_the_errors(qtbot):
+    view = mock.create_autospec({cls}View, instance=True)  # no widget: only the view's methods
+    presenter = {cls}Presenter(view)
+    reference = np.arange(0.0, 360.0, 30.0)
+    rows = [[f"{{r:.6f}}", f"{{r + (4.0 + r / 100.0) / 3600.0:.9f}}"] for r in reference]
+    result = {const}.analyze(ReadingsSheet({const}.columns, rows).parse(), {const}.default_settings)
+    presenter.show_result(result)
+    (figure,), _ = view.show_errors.call_args
+    assert np.allclose(figure.series[0].x, reference)
+    shown = figure_in_unit(error_figure(result), presenter.angle_unit)
+    assert np.allclose(figure.series[0].y, shown.series[0].y)
+    presenter.clear_result()
+    view.clear_result.assert_called_once_with()
 '''
 
 INIT = '''"""The {key} workbench: {title}.
@@ -178,6 +221,10 @@ class {cls}View(WorkbenchView):
         self.error_plot = ErrorPlot()
         self.add_plot_tab(self.error_plot, tr("Error curves"))
 
+    def show_errors(self, figure) -> None:
+        """Draws the error curves (a models.plots.PlotFigure, in the chosen unit)."""
+        self.error_plot.show_figure(figure)
+
     def clear_result(self) -> None:
         self.error_plot.clear()
 '''
@@ -196,7 +243,7 @@ class {cls}Presenter(WorkbenchPresenter):
         super().__init__({const}, view, parent)
 
     def show_result(self, result) -> None:
-        self.view.error_plot.show_figure(*self.in_unit(error_figure(result)))
+        self.view.show_errors(*self.in_unit(error_figure(result)))
 
     def clear_result(self) -> None:
         self.view.clear_result()
@@ -237,6 +284,23 @@ def _register(key: str, const: str) -> None:
     path.write_text(text, "utf-8")
 
 
+def _contract(key: str) -> None:
+    """The workbench in pyproject.toml's import contracts: its models and widgets packages
+    independent of the other workbenches', its models package in the workbenches' layer."""
+    path = ROOT / "pyproject.toml"
+    text = path.read_text("utf-8")
+    for top, what in (("models", "models"), ("widgets", "views")):
+        name = f"name = \"the workbenches' {what} are independent"
+        start = text.index("modules = [", text.index(name))
+        end = text.index("]", start)
+        text = text[:end] + f', "{top}.{key}"' + text[end:]
+    layer = re.search(r'"theodolite \| [^"]*"', text)
+    if layer is None:
+        raise SystemExit("new-workbench: pyproject.toml has no workbenches' layer to add it to")
+    text = text[:layer.end() - 1] + f" | {key}" + text[layer.end() - 1:]
+    path.write_text(text, "utf-8")
+
+
 def _link_manual(key: str, title: str, title_zh: str) -> None:
     for lang, shown in (("", title), (".zh_CN", title_zh)):
         path = ROOT / "resources" / "manual" / f"index{lang}.html"
@@ -258,10 +322,33 @@ def _translate(texts: dict[str, str]) -> None:
     path.write_text(text[:at] + entries + text[at:], "utf-8")
 
 
+def taken_names() -> dict[str, str]:
+    """The names a new workbench's key may not take, each with what already has it: the
+    workbenches (models/registry.py), the instruments of capture (app/capture/instruments.py,
+    whose folder the architecture test exempts), the commands without a window (app/main.py)
+    and the folders of models/ and widgets/."""
+    from app.capture.instruments import INSTRUMENTS
+    from app.main import COMMANDS
+    from models.registry import LOCATIONS
+
+    names = {path.name.removesuffix(".py"): f"a module of {top}/ ({top}/{path.name})"
+             for top in ("models", "widgets") for path in sorted((ROOT / top).iterdir())
+             if (path.is_dir() and (path / "__init__.py").exists()) or path.suffix == ".py"}
+    names.update({name: "a command (anglebench " + name + ")" for name in COMMANDS})
+    names.update({name: "an instrument of capture (app/capture/instruments.py)" for name in INSTRUMENTS})
+    names.update({name: "a workbench (models/registry.py)" for name in LOCATIONS})
+    return names
+
+
 def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
-    """Writes the workbench ``key``; the files written (registry, index and .ts edited)."""
+    """Writes the workbench ``key``; the files written (registry, import contracts, index and
+    .ts edited)."""
     if not re.fullmatch(r"[a-z][a-z0-9_]*", key):
         raise SystemExit("new-workbench: NAME is lower-case letters, digits and _ (a Python name)")
+    clash = taken_names().get(key)
+    if clash is not None:
+        raise SystemExit(f"new-workbench: {key!r} is taken: it is {clash}; choose another NAME "
+                         "(nothing was written)")
     names = {"key": key, "title": title, "cls": _class_name(key), "const": key.upper()}
     names["model_imports"] = _imports(
         f"from models.{key} import KEY, TITLE", "from models.messages import QT_TR_NOOP, lines, message",
@@ -272,12 +359,25 @@ def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
         f"from models.{key}.analysis import {names['const']}, error_figure",
         f"from widgets.{key}.view import {names['cls']}View",
         "from widgets.workbench_presenter import WorkbenchPresenter")
+    names["validation_imports"] = _imports(
+        f"from models.{key}.analysis import {names['const']}", "from models.messages import QT_TR_NOOP",
+        "from models.readings.sheet import ReadingsSheet",
+        "from models.validation.cases import EXACT_SIMULATION, ValidationCase")
+    names["test_imports"] = _imports(
+        f"from models.{key}.analysis import {names['const']}, error_figure",
+        "from models.display_units import figure_in_unit",
+        "from models.readings.sheet import ReadingsSheet",
+        f"from widgets.{key}.presenter import {names['cls']}Presenter",
+        f"from widgets.{key}.view import {names['cls']}View")
     written = {
         ROOT / "models" / key / "__init__.py": INIT.format(**names),
         ROOT / "models" / key / "analysis.py": MODEL.format(**names),
+        ROOT / "models" / key / "validation_cases.py": VALIDATION.format(**names),
         ROOT / "widgets" / key / "__init__.py": f'"""The {key} workbench\'s window part."""\n',
         ROOT / "widgets" / key / "view.py": VIEW.format(**names),
         ROOT / "widgets" / key / "presenter.py": PRESENTER.format(**names),
+        ROOT / "tests" / "widgets" / key / "__init__.py": "",
+        ROOT / "tests" / "widgets" / key / f"test_{key}_presenter.py": PRESENTER_TEST.format(**names),
         ROOT / "resources" / "samples" / f"{key}_sample.csv": SAMPLE,
         ROOT / "resources" / "manual" / f"{key}.html": MANUAL.format(
             title=escape(title), lang="", manual="Manual",
@@ -290,6 +390,7 @@ def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
     for path, text in written.items():
         _write(path, text)
     _register(key, names["const"])
+    _contract(key)
     _link_manual(key, title, title_zh)
     _translate({title: title_zh, **TEXTS_ZH})
     return list(written)
@@ -303,7 +404,8 @@ def main(argv: list[str] | None = None) -> int:
     args = p.parse_args(argv)
     for path in new_workbench(args.name, args.title, args.title_zh):
         sys.stdout.write(f"wrote {path.relative_to(ROOT)}\n")
-    sys.stdout.write("edited models/registry.py, resources/manual/index*.html and "
+    sys.stdout.write("edited models/registry.py, pyproject.toml's import contracts, "
+                     "resources/manual/index*.html and "
                      "resources/translations/anglebench_zh_CN.ts\n"
                      f"next: QT_QPA_PLATFORM=offscreen .venv/bin/python -m pytest "
                      f"tests/test_workbench_contract.py -k {args.name}\n")

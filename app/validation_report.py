@@ -1,6 +1,6 @@
 """``anglebench validate [--pdf OUT]``: the method validation record (ISO/IEC 17025 7.2.2).
 
-Runs every reference case of :mod:`models.validation.cases` and prints one line
+Runs every reference case (:func:`models.validation.run.run_validation`) and prints one line
 each; with ``--pdf`` writes a dated report a lab files as the validation of
 this version of the software: each case with its source, expected value,
 result and verdict, and the versions of Python, numpy and scipy it ran on.
@@ -22,7 +22,8 @@ from app.command_line import say as _say
 from models.certificate.document import Table
 from models.messages import QT_TR_NOOP, in_language, joined, message
 from models.project.atomic_write import write_bytes_atomic
-from models.validation.cases import ValidationCase, run_validation
+from models.validation.cases import ValidationCase
+from models.validation.run import run_validation
 
 __all__ = ["run_validate", "validation_pdf_bytes"]
 

@@ -34,6 +34,7 @@ from models.plots import PlotFigure
 from models.readings.entry_plan import EntryPlan
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
+from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import scope_statement
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
@@ -41,10 +42,8 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRe
            "OverlaysRuns", "SendsReference", "SendsRuns", "SentReference", "SettingsError",
            "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
 
-#: Every workbench states errors of indication (VIM 4.1): indicated − reference; a
-#: correction is the negative of an error.
-SIGN_CONVENTION = "indicated_minus_reference"
-SIGN_CONVENTION_TEXT = QT_TR_NOOP("error = indicated − reference (VIM); correction = −error")
+# Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction
+# is the negative of an error (models.sign_convention; SIGN_CONVENTION(_TEXT) imported above)
 
 #: what a concrete workbench class must set (checked when its object is made)
 _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_reference",
@@ -141,9 +140,10 @@ class Workbench(ABC):
         return None
 
     def validation_cases(self, trials: int) -> list[Any]:
-        """Its reference cases (models.validation.cases.ValidationCase: check figures of the
-        method's publication, simulations with known truth) kept in its own folder; the
-        first four workbenches' live in models/validation/cases.py."""
+        """More reference cases (models.validation.cases.ValidationCase: check figures of the
+        method's publication, simulations with known truth) besides those of its folder's
+        ``validation_cases.py`` (``validation_cases(trials)``, where every workbench keeps its
+        own; models.validation.run gathers both)."""
         return []
 
     def __repr__(self) -> str:

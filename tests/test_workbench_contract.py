@@ -170,7 +170,7 @@ def test_its_texts_are_translated(key):
 # -- validation -------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def validation_workbenches() -> set[str]:
-    from models.validation.cases import run_validation
+    from models.validation.run import run_validation
 
     return {case.workbench for case in run_validation(trials=10)}
 
@@ -180,8 +180,8 @@ def test_the_validation_report_has_its_cases(key, validation_workbenches):
     assert KINDS[key].title in validation_workbenches, (
         f"{key}: the validation report (anglebench validate) has no case of it: return its "
         f"reference cases from validation_cases() in {_where(key)} (ValidationCase of "
-        "models/validation/cases.py, workbench = its title) and update the case count in "
-        "docs/certificates-and-register.md")
+        "models/validation/cases.py, workbench = its title; or models/<kind>/validation_cases.py) "
+        "and update the case count in docs/certificates-and-register.md")
 
 
 # -- the window -------------------------------------------------------------------------

@@ -17,6 +17,7 @@ from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.plots import PlotFigure, PlotSeries
 from models.quantity import Quantity
+from models.sign_convention import SIGN_CONVENTION_TEXT
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
     BudgetComponent,
@@ -30,7 +31,6 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
-from models.workbench import SIGN_CONVENTION_TEXT
 
 __all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
            "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion",

@@ -17,6 +17,8 @@ import numpy as np
 
 from models.crosscal import KEY, TITLE
 from models.crosscal.acquisition import crosscal_guide
+from models.crosscal.export import polygon_deviation_rows
+from models.crosscal.figures import encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
@@ -24,7 +26,6 @@ from models.parameters import Parameter
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.conformity import expanded_text
-from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
     SIGN_CONVENTION,
@@ -298,20 +299,6 @@ def _list(values) -> list[float] | None:
     return None if values is None else [float(v) for v in values]
 
 
-def encoder_figures(result: CrossCalResult) -> dict[str, float]:
-    """JJF 1115's division error and ISO 230-2's unidirectional figures of the encoder's
-    error, its mountings taken as repeated runs (deviation = −error)."""
-    runs = result.encoder_runs_arcsec()
-    theta = np.tile(result.step_deg, runs.shape[0])
-    keep = np.isfinite(runs.ravel())
-    figures = iso230_evaluate(theta[keep], -runs.ravel()[keep]).figures
-    out = {"division_error_jjf1115": float(np.ptp(result.solution.encoder_error_determined_arcsec)),
-           "repeatability_jjf1115": float(np.nanmax(np.nanstd(runs, axis=0, ddof=1)))
-           if runs.shape[0] > 1 else float("nan")}
-    out.update({f"iso230_{k}": float(v) for k, v in figures.items()})
-    return out
-
-
 def to_json(result: CrossCalResult) -> dict[str, Any]:
     s = result.solution
     u_e, u_d = result.expanded_u_arcsec if s.separable else (None, None)
@@ -416,17 +403,6 @@ def verdict(result: CrossCalResult) -> str:
                    low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
                    high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
                    ud=expanded_text(float(np.max(result.expanded_u_arcsec[1]))))
-
-
-def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
-    """The polygon's face deviations as its certificate states them for the polygon
-    workbench: position, deviation from face 1 (″) and its expanded U (″)."""
-    d = result.solution.polygon_deviation_arcsec
-    if d is None:
-        raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
-                                            "design: nothing to send")))
-    u = result.polygon_u_from_face1_arcsec()
-    return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
 
 
 #: what the cross-calibration sends and the polygon workbench accepts
@@ -562,7 +538,7 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     def correction_table(self, result, settings, path) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,
         and the window's "Save face deviations for the polygon workbench")."""
-        from models.crosscal.export import write_polygon_reference  # imports this module
+        from models.crosscal.export import write_polygon_reference
 
         return write_polygon_reference(result, settings, path)
 

@@ -7,13 +7,26 @@ from __future__ import annotations
 import io
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from models.crosscal.analysis import CrossCalResult, polygon_deviation_rows
 from models.messages import QT_TR_NOOP, message
 from models.project.atomic_write import write_text_atomic
 
-__all__ = ["polygon_reference_csv", "write_polygon_reference"]
+if TYPE_CHECKING:
+    from models.crosscal.analysis import CrossCalResult
+
+__all__ = ["polygon_deviation_rows", "polygon_reference_csv", "write_polygon_reference"]
+
+
+def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
+    """The polygon's face deviations as its certificate states them for the polygon
+    workbench: position, deviation from face 1 (″) and its expanded U (″)."""
+    d = result.solution.polygon_deviation_arcsec
+    if d is None:
+        raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
+                                            "design: nothing to send")))
+    u = result.polygon_u_from_face1_arcsec()
+    return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
 
 
 def polygon_reference_csv(result: CrossCalResult) -> str:

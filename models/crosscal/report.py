@@ -25,6 +25,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, TITLE
+from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
@@ -335,8 +336,6 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         point = QT_TR_NOOP("step {k}")
         names = [message(point, k=k) for k in range(n)]
         what = QT_TR_NOOP("encoder error")
-        from models.crosscal.analysis import encoder_figures
-
         figures = encoder_figures(result)
         stat_rows = [(QT_TR_NOOP("Error"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\"")),

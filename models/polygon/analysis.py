@@ -26,6 +26,7 @@ from models.polygon.model import (
     harmonic_analysis,
     pooled_repeatability,
     set_name,
+    split_sets,
     tilt_advice,
     wrap_deg,
 )
@@ -185,24 +186,6 @@ def closure_limit_arcsec(grade: int, table: str = "") -> float:
     if grade - 1 < len(values):
         return values[grade - 1]
     return GRADE_ACCURACY_ARCSEC[grade] / 2.0
-
-
-def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None]]:
-    """(set id, row indices in approach order, closure row index or None) per set.
-
-    A set's closure is its last row when that row repeats the set's first face.
-    """
-    set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
-    out = []
-    for set_id in dict.fromkeys(set_ids.tolist()):
-        rows = np.nonzero(set_ids == set_id)[0]
-        positions = parsed["position"][rows]
-        closure = None
-        if rows.size > 1 and positions[-1] == positions[0]:
-            closure = int(rows[-1])
-            rows = rows[:-1]
-        out.append((set_id, rows, closure))
-    return out
 
 
 def split_incomplete(parsed: ParsedReadings, settings: Mapping[str, Any]

@@ -37,8 +37,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from models.readings.sheet import ParsedReadings
 
 from models.messages import QT_TR_NOOP, Message, message
 
@@ -56,7 +60,7 @@ from models.pyramidal import (
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats
 
-__all__ = [
+__all__ = ["split_sets",
     "AC_ALIGNMENTS",
     "GRADE_ACCURACY_ARCSEC",
     "LEVELLED_OWN_COEFFICIENT",
@@ -438,3 +442,21 @@ def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np
     if dof == 0:
         return None
     return np.sqrt(squares / dof), dof
+
+
+def split_sets(parsed: ParsedReadings) -> list[tuple[int, np.ndarray, int | None]]:
+    """(set id, row indices in approach order, closure row index or None) per set.
+
+    A set's closure is its last row when that row repeats the set's first face.
+    """
+    set_ids = np.nan_to_num(parsed["set"], nan=1.0).astype(int)
+    out = []
+    for set_id in dict.fromkeys(set_ids.tolist()):
+        rows = np.nonzero(set_ids == set_id)[0]
+        positions = parsed["position"][rows]
+        closure = None
+        if rows.size > 1 and positions[-1] == positions[0]:
+            closure = int(rows[-1])
+            rows = rows[:-1]
+        out.append((set_id, rows, closure))
+    return out

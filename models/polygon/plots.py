@@ -9,7 +9,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP
 from models.plots import PlotFigure, PlotSeries
-from models.polygon.model import PolygonResult, frame_readings_arcsec
+from models.polygon.model import PolygonResult, frame_readings_arcsec, split_sets
 
 __all__ = ["corrected_with_uncertainty", "error_figure", "harmonics_figure", "in_progress_errors",
            "residual_figure", "sets_figure", "tilt_figure"]
@@ -88,8 +88,6 @@ def in_progress_errors(parsed: Any, result: PolygonResult) -> tuple[np.ndarray, 
     unit = getattr(result, "incomplete", None)
     if unit is None or parsed is None or not unit.rows:
         return np.empty(0), np.empty(0)
-    from models.polygon.analysis import split_sets
-
     _, first_rows, _ = split_sets(parsed)[0]
     face_row = {int(parsed["position"][i]): int(i) for i in first_rows}
     a, x = parsed["encoder_deg"], parsed["ac_x_arcsec"]

@@ -613,7 +613,7 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
         return {**settings, "target_unit": "deg", "deviation_unit": "arcsec"}
 
     def after_log(self, path, settings):
-        return _before_after().log_from_file(path, settings)
+        return _before_after().log_from_file(path, settings, self)
 
     def compare_after(self, before, after):
         return _before_after().before_after(before, after)
@@ -637,6 +637,6 @@ POSITIONING = Positioning()
 
 
 def _before_after():
-    from models.positioning import before_after  # it reads logs with POSITIONING itself
+    from models.positioning import before_after  # imported when a log is first compared
 
     return before_after

@@ -157,11 +157,13 @@ def after_figure(after: PositioningResult) -> PlotFigure:
                       f"deviation ({after.symbol.strip()})", series)
 
 
-def log_from_file(path: str | Path, settings: Mapping[str, Any] | None) -> PositioningResult:
+def log_from_file(path: str | Path, settings: Mapping[str, Any] | None,
+                  workbench: Any) -> PositioningResult:
     """The positioning log in a readings file (CSV/XLSX/TXT, analysed with ``settings``:
     today's) or a project file (its positioning readings with their own settings);
-    ValueError saying why it cannot be analysed."""
-    from models.positioning.analysis import POSITIONING
+    ValueError saying why it cannot be analysed. ``workbench``: the positioning workbench
+    (models.positioning.analysis.workbench, which passes itself: this module does not
+    import it)."""
     from models.readings.sheet import ReadingsSheet
     from models.readings.tabular_import import map_columns, read_table
 
@@ -169,16 +171,16 @@ def log_from_file(path: str | Path, settings: Mapping[str, Any] | None) -> Posit
     if path.suffix.lower() == ".json":
         from models.project.file import load_project
 
-        state = load_project(path).workbenches.get(POSITIONING.key)
+        state = load_project(path).workbenches.get(workbench.key)
         if state is None or not state.rows:
             raise _refuse(QT_TR_NOOP("{label} holds no readings of the {workbench} workbench"),
-                          label=path.name, workbench=POSITIONING.title)
+                          label=path.name, workbench=workbench.title)
         rows, settings = state.rows, state.settings
     else:
-        rows = map_columns(read_table(path), POSITIONING.columns)
-    parsed = ReadingsSheet(POSITIONING.columns, rows).parse()
+        rows = map_columns(read_table(path), workbench.columns)
+    parsed = ReadingsSheet(workbench.columns, rows).parse()
     try:
-        return POSITIONING.analyze(parsed, POSITIONING.settings_with_defaults(settings))
+        return workbench.analyze(parsed, workbench.settings_with_defaults(settings))
     except (ValueError, ArithmeticError) as exc:
         raise _refuse(QT_TR_NOOP("{label}: the run cannot be analysed: {reason}"),
                       label=path.name, reason=reason_of(exc)) from None

@@ -29,8 +29,8 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK", "append_baseline",
-           "head_in_pdf", "link", "link_entry", "verify_v1_chain"]
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK",
+           "head_in_pdf", "link", "link_entry"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
 CHAINED = ("number", "issued_at", "issue_date", "calibration_date", "workbench",
@@ -79,59 +79,3 @@ def head_in_pdf(data: bytes) -> str:
 
     found = re.search(HEAD_MARK.encode() + rb"([0-9a-f]{64})", data)
     return found.group(1).decode() if found else ""
-
-
-def verify_v1_chain(conn) -> str:
-    """The chain of a version-3 register recomputed over its records: "" when every stored
-    value is what it should be, else which record breaks it."""
-    import sqlalchemy as sa
-
-    from models.register.schema import CERTIFICATES
-
-    previous = GENESIS
-    rows = conn.execute(sa.select(CERTIFICATES.c.number, CERTIFICATES.c.chain_sha256,
-                                  *(CERTIFICATES.c[k] for k in CHAINED))
-                        .order_by(CERTIFICATES.c.id)).all()
-    for row in rows:
-        previous = link(previous, row._asdict())
-        if row.chain_sha256 != previous:
-            return (f"record {row.number}: the hash chain is broken here (this record, or one "
-                    "before it, was changed, inserted or deleted after issue)")
-    return ""
-
-
-def append_baseline(conn, records: int) -> None:
-    """Migration 4: the counters and intervals as they stand, recorded as chained entries
-    after the ``records`` certificates, and the state row written."""
-    import datetime as dt
-    import getpass
-    import socket
-
-    import sqlalchemy as sa
-
-    from models.register.schema import CERTIFICATES, COUNTERS, ENTRIES, INSTRUMENTS, STATE
-
-    head = conn.execute(sa.select(CERTIFICATES.c.chain_sha256).order_by(
-        CERTIFICATES.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
-    seq = records
-    now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat()
-    try:
-        user = getpass.getuser()
-    except (KeyError, OSError):
-        user = ""
-    baseline = [("numbering", name, {"last_value": value, "baseline": True})
-                for name, value in conn.execute(sa.select(COUNTERS.c.name, COUNTERS.c.last_value)
-                                                .order_by(COUNTERS.c.name))]
-    baseline += [("interval", serial, {"days": days, "baseline": True})
-                 for serial, days in conn.execute(sa.select(
-                     INSTRUMENTS.c.serial, INSTRUMENTS.c.interval_days)
-                     .order_by(INSTRUMENTS.c.serial))]
-    for kind, subject, body in baseline:
-        seq += 1
-        entry = {"seq": seq, "kind": kind, "subject": subject,
-                 "body_json": json.dumps(body, sort_keys=True), "recorded_at": now,
-                 "os_user": user, "workstation": socket.gethostname()}
-        head = link_entry(head, entry)
-        conn.execute(ENTRIES.insert().values(**entry, chain_sha256=head))
-    for name, value in (("records", str(seq)), ("head", head), ("schema_version", "4")):
-        conn.execute(STATE.insert().values(name=name, value=value))

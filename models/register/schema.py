@@ -158,8 +158,6 @@ def _v4(conn: sa.Connection) -> None:
     first (a broken one is refused, never recomputed) and kept value for value; each record
     gets its place; the counters and intervals as they stand are recorded as chained
     baseline entries (the records behind them predate the cross-check)."""
-    from models.register.chain import verify_v1_chain
-
     problem = verify_v1_chain(conn)
     if problem:
         raise ValueError(problem)
@@ -171,8 +169,6 @@ def _v4(conn: sa.Connection) -> None:
     for seq, row_id in enumerate(ids, 1):
         conn.execute(CERTIFICATES.update().where(CERTIFICATES.c.id == row_id).values(
             seq=seq, chain_format=1))
-    from models.register.chain import append_baseline
-
     append_baseline(conn, len(ids))
 
 
@@ -223,3 +219,56 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
                 "SELECT COUNT(*) FROM certificates WHERE chain_sha256 IS NOT NULL")).scalar_one():
             return "the records carry the hash chain of version 3"
     return ""
+
+
+def verify_v1_chain(conn) -> str:
+    """The chain of a version-3 register recomputed over its records: "" when every stored
+    value is what it should be, else which record breaks it."""
+    from models.register.chain import CHAINED, GENESIS, link
+
+    previous = GENESIS
+    rows = conn.execute(sa.select(CERTIFICATES.c.number, CERTIFICATES.c.chain_sha256,
+                                  *(CERTIFICATES.c[k] for k in CHAINED))
+                        .order_by(CERTIFICATES.c.id)).all()
+    for row in rows:
+        previous = link(previous, row._asdict())
+        if row.chain_sha256 != previous:
+            return (f"record {row.number}: the hash chain is broken here (this record, or one "
+                    "before it, was changed, inserted or deleted after issue)")
+    return ""
+
+
+def append_baseline(conn, records: int) -> None:
+    """Migration 4: the counters and intervals as they stand, recorded as chained entries
+    after the ``records`` certificates, and the state row written."""
+    import datetime as dt
+    import getpass
+    import json
+    import socket
+
+    from models.register.chain import GENESIS, link_entry
+
+    head = conn.execute(sa.select(CERTIFICATES.c.chain_sha256).order_by(
+        CERTIFICATES.c.id.desc()).limit(1)).scalar_one_or_none() or GENESIS
+    seq = records
+    now = dt.datetime.now(dt.timezone.utc).replace(microsecond=0).isoformat()
+    try:
+        user = getpass.getuser()
+    except (KeyError, OSError):
+        user = ""
+    baseline = [("numbering", name, {"last_value": value, "baseline": True})
+                for name, value in conn.execute(sa.select(COUNTERS.c.name, COUNTERS.c.last_value)
+                                                .order_by(COUNTERS.c.name))]
+    baseline += [("interval", serial, {"days": days, "baseline": True})
+                 for serial, days in conn.execute(sa.select(
+                     INSTRUMENTS.c.serial, INSTRUMENTS.c.interval_days)
+                     .order_by(INSTRUMENTS.c.serial))]
+    for kind, subject, body in baseline:
+        seq += 1
+        entry = {"seq": seq, "kind": kind, "subject": subject,
+                 "body_json": json.dumps(body, sort_keys=True), "recorded_at": now,
+                 "os_user": user, "workstation": socket.gethostname()}
+        head = link_entry(head, entry)
+        conn.execute(ENTRIES.insert().values(**entry, chain_sha256=head))
+    for name, value in (("records", str(seq)), ("head", head), ("schema_version", "4")):
+        conn.execute(STATE.insert().values(name=name, value=value))

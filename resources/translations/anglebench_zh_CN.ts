@@ -4877,7 +4877,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>error = indicated − reference (VIM); correction = −error</source>
-        <extracomment>Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction is the negative of an error.</extracomment>
+        <extracomment>the certificate&apos;s sentence</extracomment>
         <translation>误差 = 示值 − 参考值（VIM）；修正值 = −误差</translation>
     </message>
     <message>

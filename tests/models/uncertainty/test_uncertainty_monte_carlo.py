@@ -15,12 +15,10 @@ import math
 import numpy as np
 import pytest
 
-from models.validation.cases import (
-    budget_agreement,
-    fringe_budget_trials,
-    polygon_budget_trials,
-    theodolite_budget_trials,
-)
+from models.fringe.validation_cases import fringe_budget_trials
+from models.polygon.validation_cases import polygon_budget_trials
+from models.theodolite.validation_cases import theodolite_budget_trials
+from models.validation.cases import budget_agreement
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 

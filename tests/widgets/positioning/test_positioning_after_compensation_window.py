@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from models.display_units import ANGLE_UNITS
+from models.positioning.analysis import POSITIONING
 from models.positioning.before_after import before_after, log_from_file
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
@@ -50,7 +51,7 @@ def test_the_log_after_compensation_is_drawn_compared_and_removable(window, qtbo
     presenter = _open(window, qtbot)
     path = _after_log(samples_dir, tmp_path)
     assert window.run_overlays.overlay_file(str(path))
-    after = log_from_file(path, presenter.settings)
+    after = log_from_file(path, presenter.settings, POSITIONING)
     shown = presenter.after_compensation
     assert shown.shown and len(shown.curves) == 2
     for curve, stats in zip(shown.curves, (after.iso.forward, after.iso.backward), strict=True):
@@ -118,7 +119,7 @@ def test_the_command_line_compares_before_and_after(capsys, samples_dir, tmp_pat
 
     path = _after_log(samples_dir, tmp_path)
     before = samples_dir / KINDS["positioning"].sample_file
-    ba = before_after(log_from_file(before, {}), log_from_file(path, {}))
+    ba = before_after(log_from_file(before, {}, POSITIONING), log_from_file(path, {}, POSITIONING))
     assert main(["analyze", "positioning", str(before), "--compare-after", str(path)]) == 0
     out = capsys.readouterr().out
     assert ba.text("after_compensation.csv") in out
