@@ -18,6 +18,7 @@ from models.fringe.signal_tolerance import BUILTIN_PRESETS, TolerancePreset
 from widgets.fringe.live_signals import preset_name
 from widgets.i18n import live, on_language_change, tr, translated
 from widgets.plot_grid import show_grid
+from widgets.plot_range import show_if_empty
 
 __all__ = ["SignalQualityPlot"]
 
@@ -125,6 +126,7 @@ class SignalQualityPlot(QWidget):
             self.outer.hide()
             self.note.setText("")
             self.note.setToolTip("")
+            show_if_empty(self.plot.getPlotItem())  # "No data", not an axis of no point
             return
         windows = quality.windows
         along_revolution = all("revolution_deg" in w for w in windows)
@@ -135,6 +137,7 @@ class SignalQualityPlot(QWidget):
         states = [w.get("states", {}).get(quantity, "") for w in windows]
         bad = np.array([s in ("outer", "outside") for s in states], dtype=bool)
         self.beyond.setData(x[bad], y[bad])
+        show_if_empty(self.plot.getPlotItem())  # the placeholder hidden, ranged on the data
         band = quality.preset.band(quantity) if quality.preset is not None else None
         self.inside.setVisible(band is not None)
         self.outer.setVisible(band is not None and band.outer is not None)
