@@ -27,12 +27,15 @@ def settle(app) -> None:
         app.processEvents()
 
 
-def main() -> None:
+def each_docked_tab(prefix: str):
+    """The window on a scratch profile with every sample loaded, the capture panel docked at
+    each side it can go: yields (app, window, panel, side, presenter) with each workbench's
+    tab shown in turn (the probes of the panel and of the set-up fields share it)."""
     app = QApplication.instance() or QApplication(["anglebench"])
     from app.main_window import MainWindow
     from models.project.recovery import RecoveryStore
 
-    scratch = tempfile.mkdtemp(prefix="anglebench-panel-")
+    scratch = tempfile.mkdtemp(prefix=prefix)
     settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
     window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
     window.load_all_samples()
@@ -40,38 +43,43 @@ def main() -> None:
     settle(app)
     panel = window.capture_panel
     panel.show()
-    found = []
     for area_name, area in AREAS.items():
         window.addDockWidget(area, panel)
         panel.show()
         for index, presenter in enumerate(window.presenters):
             window.tabs.setCurrentIndex(index)
             settle(app)
-            frame = window.frameGeometry()
-            screen = (window.screen() or app.primaryScreen()).availableGeometry()
-            inside = window.rect()
-            viewport = panel.widget().viewport()
-            seen = QRect(viewport.mapTo(window, QPoint(0, 0)), viewport.size())
-            hidden = []
-            for control in panel.findChildren(QAbstractButton) + panel.findChildren(
-                    QComboBox) + panel.findChildren(QAbstractSpinBox):
-                if not control.isVisibleTo(panel) or control.parent() is panel:
-                    continue  # the column list shows for a readout only; the dock's own
-                rect = QRect(control.mapTo(window, QPoint(0, 0)), control.size())
-                if not (inside.contains(rect) and seen.contains(rect)):
-                    hidden.append(f"{control.objectName() or type(control).__name__} "
-                                  f"'{getattr(control, 'text', lambda: '')()}' at "
-                                  f"{rect.x()},{rect.y()} {rect.width()}×{rect.height()}")
-            table = presenter.view.table
-            plot = presenter.view.plot_tabs.currentWidget()
-            found.append({"area": area_name, "workbench": presenter.kind.key,
-                          "frame": [frame.x(), frame.y(), frame.width(), frame.height()],
-                          "available": [screen.x(), screen.y(), screen.width(), screen.height()],
-                          "hidden": hidden,
-                          "dock": window.dockWidgetArea(panel).name,
-                          "table": [table.width(), table.height()],
-                          "panel": [panel.width(), panel.height()],
-                          "plot": [plot.width(), plot.height()] if plot is not None else None})
+            yield app, window, panel, area_name, presenter
+
+
+def main() -> None:
+    found = []
+    for app, window, panel, area_name, presenter in each_docked_tab("anglebench-panel-"):
+        frame = window.frameGeometry()
+        screen = (window.screen() or app.primaryScreen()).availableGeometry()
+        inside = window.rect()
+        viewport = panel.widget().viewport()
+        seen = QRect(viewport.mapTo(window, QPoint(0, 0)), viewport.size())
+        hidden = []
+        for control in panel.findChildren(QAbstractButton) + panel.findChildren(
+                QComboBox) + panel.findChildren(QAbstractSpinBox):
+            if not control.isVisibleTo(panel) or control.parent() is panel:
+                continue  # the column list shows for a readout only; the dock's own
+            rect = QRect(control.mapTo(window, QPoint(0, 0)), control.size())
+            if not (inside.contains(rect) and seen.contains(rect)):
+                hidden.append(f"{control.objectName() or type(control).__name__} "
+                              f"'{getattr(control, 'text', lambda: '')()}' at "
+                              f"{rect.x()},{rect.y()} {rect.width()}×{rect.height()}")
+        table = presenter.view.table
+        plot = presenter.view.plot_tabs.currentWidget()
+        found.append({"area": area_name, "workbench": presenter.kind.key,
+                      "frame": [frame.x(), frame.y(), frame.width(), frame.height()],
+                      "available": [screen.x(), screen.y(), screen.width(), screen.height()],
+                      "hidden": hidden,
+                      "dock": window.dockWidgetArea(panel).name,
+                      "table": [table.width(), table.height()],
+                      "panel": [panel.width(), panel.height()],
+                      "plot": [plot.width(), plot.height()] if plot is not None else None})
     print(json.dumps(found))  # noqa: T201 - the probe's output
 
 

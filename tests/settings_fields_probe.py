@@ -5,27 +5,16 @@ in the field (tests/widgets/test_settings_fields_fit.py runs it on a 1280×720 s
 from __future__ import annotations
 
 import json
-import tempfile
-from pathlib import Path
 
-from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
-    QApplication,
     QComboBox,
     QLineEdit,
     QStyle,
     QStyleOptionComboBox,
 )
 
-AREAS = {"right": Qt.DockWidgetArea.RightDockWidgetArea,
-         "left": Qt.DockWidgetArea.LeftDockWidgetArea,
-         "bottom": Qt.DockWidgetArea.BottomDockWidgetArea}
-
-
-def settle(app) -> None:
-    for _ in range(6):
-        app.processEvents()
+from tests.capture_panel_probe import each_docked_tab
 
 
 def room(field) -> tuple[str, int, int]:
@@ -45,33 +34,16 @@ def room(field) -> tuple[str, int, int]:
 
 
 def main() -> None:
-    app = QApplication.instance() or QApplication(["anglebench"])
-    from app.main_window import MainWindow
-    from models.project.recovery import RecoveryStore
-
-    scratch = tempfile.mkdtemp(prefix="anglebench-fields-")
-    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
-    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
-    window.load_all_samples()
-    window.show()
-    settle(app)
-    panel = window.capture_panel
-    panel.show()
     found = []
-    for area_name, area in AREAS.items():
-        window.addDockWidget(area, panel)
-        panel.show()
-        for index, presenter in enumerate(window.presenters):
-            window.tabs.setCurrentIndex(index)
-            settle(app)
-            form = presenter.view.settings
-            for key, field in form._fields.items():
-                if not field.isVisibleTo(form):
-                    continue
-                text, needs, has = room(field)
-                found.append({"area": area_name, "workbench": presenter.kind.key,
-                              "key": key, "text": text, "needs": needs, "has": has,
-                              "window": window.frameGeometry().width()})
+    for _app, window, _panel, area_name, presenter in each_docked_tab("anglebench-fields-"):
+        form = presenter.view.settings
+        for key, field in form._fields.items():
+            if not field.isVisibleTo(form):
+                continue
+            text, needs, has = room(field)
+            found.append({"area": area_name, "workbench": presenter.kind.key,
+                          "key": key, "text": text, "needs": needs, "has": has,
+                          "window": window.frameGeometry().width()})
     print(json.dumps(found))  # noqa: T201 - the probe's output
 
 

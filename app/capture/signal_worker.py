@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 import numpy as np
 import serial
 
-from app.capture.link import READ_BLOCK, CaptureError, TcpLink, open_link
-from app.capture.worker import Fault
+from app.capture.link import READ_BLOCK, TcpLink, open_link
+from app.capture.worker import Fault, LinkLost, run_with_retries
 from models.capture.framing import LineFramer
 from models.capture.signal_stream import SignalLineParser
 from models.messages import QT_TR_NOOP, message
@@ -55,8 +55,6 @@ class SampleBlock:
     reasons: list[str] = field(default_factory=list)
 
 
-class _LinkLost(Exception):
-    pass
 
 
 class SignalStreamWorker:
@@ -118,35 +116,18 @@ class SignalStreamWorker:
         return out
 
     def _run(self) -> None:
-        failures = 0
-        while not self._stop.is_set():
-            try:
-                link = self._open(self.port, self.baud)
-            except CaptureError as exc:
-                failures += 1
-                final = failures > self.retries
-                self.events.put(Fault(exc.args[0], final))
-                if final:
-                    return
-                self._stop.wait(self.retry_pause_s * failures)
-                continue
-            with self._link_lock:
-                self._link = link
-            try:
-                self._session(link)
-                return
-            except _LinkLost as exc:
-                failures = 1 if exc.args[1] else failures + 1
-                final = failures > self.retries
-                self.events.put(Fault(exc.args[0], final))
-                if final:
-                    return
-                self._stop.wait(self.retry_pause_s)
-            finally:
-                with self._link_lock:
-                    self._link = None
-                with contextlib.suppress(serial.SerialException, OSError):
-                    link.close()
+        run_with_retries(self, self._held_session, self._release)
+
+    def _held_session(self, link) -> None:
+        with self._link_lock:
+            self._link = link
+        self._session(link)
+
+    def _release(self, link) -> None:
+        with self._link_lock:
+            self._link = None
+        with contextlib.suppress(serial.SerialException, OSError):
+            link.close()
 
     def _read(self, link) -> bytes:
         if isinstance(link, TcpLink):
@@ -179,9 +160,9 @@ class SignalStreamWorker:
                 if now - last_good > self.silence_s:
                     what = (QT_TR_NOOP("{port}: no answer for {seconds} s") if not heard else
                             QT_TR_NOOP("{port}: no valid sample for {seconds} s"))
-                    raise _LinkLost(message(what, port=self.port, seconds=f"{self.silence_s:g}"),
+                    raise LinkLost(message(what, port=self.port, seconds=f"{self.silence_s:g}"),
                                     got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]
-            raise _LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
+            raise LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
                                     port=self.port, reason=reason), got) from None

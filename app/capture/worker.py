@@ -50,8 +50,42 @@ class Fault:
     final: bool
 
 
-class _LinkLost(Exception):
-    pass
+class LinkLost(Exception):
+    """The link ended during a session: (its message, the readings it gave)."""
+
+
+
+
+def run_with_retries(worker, session, close) -> None:
+    """Open ``worker``'s link and run ``session(link)`` on it until it returns, opening it
+    again after a fault (a :class:`LinkLost` that gave readings starts the count afresh);
+    each fault is put on ``worker.events`` as a :class:`Fault`, the last one final after
+    ``worker.retries``. ``close(link)`` after every session. Shared by the readings' and the
+    signal stream's workers."""
+    failures = 0
+    while not worker._stop.is_set():
+        try:
+            link = worker._open(worker.port, worker.baud)
+        except CaptureError as exc:
+            failures += 1
+            final = failures > worker.retries
+            worker.events.put(Fault(exc.args[0], final))
+            if final:
+                return
+            worker._stop.wait(worker.retry_pause_s * failures)
+            continue
+        try:
+            session(link)
+            return
+        except LinkLost as exc:
+            failures = 1 if exc.args[1] else failures + 1
+            final = failures > worker.retries
+            worker.events.put(Fault(exc.args[0], final))
+            if final:
+                return
+            worker._stop.wait(worker.retry_pause_s)
+        finally:
+            close(link)
 
 
 class CaptureWorker:
@@ -133,31 +167,7 @@ class CaptureWorker:
         return self._thread.is_alive()
 
     def _run(self) -> None:
-        failures = 0
-        while not self._stop.is_set():
-            try:
-                link = self._open(self.port, self.baud)
-            except CaptureError as exc:
-                failures += 1
-                final = failures > self.retries
-                self.events.put(Fault(exc.args[0], final))
-                if final:
-                    return
-                self._stop.wait(self.retry_pause_s * failures)
-                continue
-            try:
-                self._session(link)
-                return
-            except _LinkLost as exc:
-                got = exc.args[1]
-                failures = 1 if got else failures + 1
-                final = failures > self.retries
-                self.events.put(Fault(exc.args[0], final))
-                if final:
-                    return
-                self._stop.wait(self.retry_pause_s)
-            finally:
-                self._close(link)
+        run_with_retries(self, self._session, self._close)
 
     def _close(self, link) -> None:
         with contextlib.suppress(serial.SerialException, OSError):
@@ -207,7 +217,7 @@ class CaptureWorker:
 
     def _session(self, link) -> int:
         """Read until stopped (returns the number of readings) or until the link is lost
-        (raises :class:`_LinkLost` with the reason and the number of readings).
+        (raises :class:`LinkLost` with the reason and the number of readings).
 
         An instrument that is asked gets one request at a time: the next goes out when the
         reply to the last has come (a reading, a refused reply, device information) and
@@ -296,12 +306,12 @@ class CaptureWorker:
                 timed_out = (in_flight is not None and not waiting)
                 if timed_out and not heard_since_request:
                     self.timeouts += 1
-                    raise _LinkLost(self._no_reading_message(heard_bytes, last_refusal, True), got)
+                    raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, True), got)
                 if now - last_good > self.silence_s and not waiting:
-                    raise _LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
+                    raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:
             reason = (str(exc).strip() or type(exc).__name__).splitlines()[0][:200]
-            raise _LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
+            raise LinkLost(message(QT_TR_NOOP("{port}: the link dropped ({reason})"),
                                     port=self.port, reason=reason), got) from None
         return got
 
