@@ -4,32 +4,17 @@ window past its screen. Before, Instrument › Connect… made the window 1484 p
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
 from PySide6.QtCore import QSettings, Qt
 
+from tests.capture_panel_probe import run_at_1280x720
+
 pytestmark = pytest.mark.slow  # a window in a process of its own, on a screen of 1280×720
 
-ROOT = Path(__file__).resolve().parents[3]
 
 
 def test_every_control_in_sight_at_1280x720_docked_anywhere(tmp_path):
-    config = tmp_path / "screen.json"
-    config.write_text(json.dumps({"screens": [{
-        "name": "laptop", "x": 0, "y": 0, "width": 1280, "height": 720,
-        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
-    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
-           "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
-           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
-    run = subprocess.run([sys.executable, "-m", "tests.capture_panel_probe"], env=env,
-                         capture_output=True, text=True, timeout=600, cwd=tmp_path)
-    assert run.returncode == 0, run.stderr[-3000:]
-    found = json.loads(run.stdout.strip().splitlines()[-1])
+    found = run_at_1280x720("tests.capture_panel_probe", tmp_path)
     assert {f["area"] for f in found} == {"right", "left", "bottom"}
     assert len(found) == 3 * 5  # every workbench at every side
     for seen in found:
