@@ -66,10 +66,12 @@ def test_auto_take_two_readings_per_face_traced_to_the_frames_and_in_the_budget(
     panel.dwell_box.setValue(0.1)
     seen: set[str] = set()
     positions = [(x, 0.0) for x in AC_X]
-    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.6, sigma=0.04) as sim:
+    # each face held 1.2 s: two takes of 0.1 s dwell fit with room on a loaded machine (at
+    # 0.6 s a fresh-clone run under load missed a face's second take)
+    with AutocollimatorSimulator("pty", positions=positions, hold_s=1.2, sigma=0.04) as sim:
         probe = _phases(panel, seen)
         panel.connect_to("autocollimator", sim.port, **FAST)
-        qtbot.waitUntil(lambda: len(panel.taken) >= n * len(AC_X), timeout=20000)
+        qtbot.waitUntil(lambda: len(panel.taken) >= n * len(AC_X), timeout=60000)
         qtbot.wait(300)  # the last face is held: no reading more is taken there
         probe.stop()
         panel.disconnect_instrument()
