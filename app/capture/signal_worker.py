@@ -16,7 +16,6 @@ A fault (the port cannot be opened, the link dropped, no sample for ``silence_s`
 from __future__ import annotations
 
 import contextlib
-import datetime as dt
 import queue
 import threading
 import time
@@ -26,7 +25,7 @@ import numpy as np
 import serial
 
 from app.capture.link import READ_BLOCK, TcpLink, open_link
-from app.capture.worker import Fault, LinkLost, run_with_retries
+from app.capture.worker import Fault, LinkLost, LinkThread, run_with_retries
 from models.capture.framing import LineFramer
 from models.capture.signal_stream import SignalLineParser
 from models.messages import QT_TR_NOOP, message
@@ -57,7 +56,7 @@ class SampleBlock:
 
 
 
-class SignalStreamWorker:
+class SignalStreamWorker(LinkThread):
     def __init__(self, port: str, pattern: str | None = None, baud: int | None = None,
                  silence_s: float = 2.0, retries: int = 3, retry_pause_s: float = 0.2,
                  opener=open_link) -> None:
@@ -79,20 +78,6 @@ class SignalStreamWorker:
         self._link = None
         self._link_lock = threading.Lock()
 
-    def start(self) -> SignalStreamWorker:
-        self._t0 = time.monotonic()
-        self.started_utc = dt.datetime.now(dt.timezone.utc).isoformat()
-        self._thread.start()
-        return self
-
-    def stop(self, wait_s: float = 2.0) -> None:
-        self._stop.set()
-        if self._thread.is_alive():
-            self._thread.join(wait_s)
-
-    @property
-    def running(self) -> bool:
-        return self._thread.is_alive()
 
     def send(self, data: bytes) -> bool:
         """Write to the stream's link (a demonstration head's settings); False when no link

@@ -88,7 +88,27 @@ def run_with_retries(worker, session, close) -> None:
             close(link)
 
 
-class CaptureWorker:
+class LinkThread:
+    """A worker's thread on a link: started (its clock and UTC start kept), stopped, asked
+    whether it runs. The readings' and the signal stream's workers share it."""
+
+    def start(self):
+        self._t0 = time.monotonic()
+        self.started_utc = dt.datetime.now(dt.timezone.utc).isoformat()
+        self._thread.start()
+        return self
+
+    def stop(self, wait_s: float = 2.0) -> None:
+        self._stop.set()
+        if self._thread.is_alive():
+            self._thread.join(wait_s)
+
+    @property
+    def running(self) -> bool:
+        return self._thread.is_alive()
+
+
+class CaptureWorker(LinkThread):
     def __init__(self, port: str, instrument: Instrument, baud: int | None = None,
                  silence_s: float = 1.0, retries: int = 3, retry_pause_s: float = 0.2,
                  opener=open_link, reply_timeout_s: float | None = None,
@@ -128,16 +148,6 @@ class CaptureWorker:
         #: when the worker started (UTC, ISO 8601): the raw frames' times count from it
         self.started_utc = ""
 
-    def start(self) -> CaptureWorker:
-        self._t0 = time.monotonic()
-        self.started_utc = dt.datetime.now(dt.timezone.utc).isoformat()
-        self._thread.start()
-        return self
-
-    def stop(self, wait_s: float = 2.0) -> None:
-        self._stop.set()
-        if self._thread.is_alive():
-            self._thread.join(wait_s)
 
     def _keep(self, time_s: float, line: bytes, used: bool) -> int:
         """A line the instrument sent, kept; its index since the start."""
@@ -162,9 +172,6 @@ class CaptureWorker:
         """``time.monotonic()`` at the start: the readings' and raw frames' times count from it."""
         return self._t0
 
-    @property
-    def running(self) -> bool:
-        return self._thread.is_alive()
 
     def _run(self) -> None:
         run_with_retries(self, self._session, self._close)
