@@ -51,9 +51,12 @@ new-workbench: $(STAMP)
 	$(PY) -m app.new_workbench "$(NAME)" --title "$(TITLE)" --title-zh "$(TITLE_ZH)"
 
 # the docs' generated tables (workbenches, settings, every command's --help) between their
-# markers in README.md and docs/ (app/docs_tables.py; tests/app/test_docs_tables.py: stale)
+# markers in README.md and docs/ (app/docs_tables.py; tests/app/test_docs_tables.py: stale),
+# then the window's manual (F1), resources/manual/*.html, from docs/user-guide/ and
+# docs/zh_CN/user-guide/ (app/manual_pages.py; tests/app/test_manual_pages.py: stale)
 docs: $(STAMP)
 	$(PY) -m app.docs_tables
+	$(PY) -m app.manual_pages
 
 # ruff; the import contracts (pyproject.toml [tool.importlinter]: layers, no Qt in models/,
 # the workbenches independent); mypy on models/ (pyproject.toml [tool.mypy])

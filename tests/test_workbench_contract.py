@@ -37,6 +37,7 @@ from models.workbench import (
 ROOT = Path(__file__).resolve().parents[1]
 SAMPLES = ROOT / "resources" / "samples"
 MANUAL = ROOT / "resources" / "manual"
+GUIDES = ROOT / "docs" / "user-guide"
 LANGUAGES = ("zh_CN",)  # the languages besides English the window and certificates speak
 SIGN_CONVENTIONS = ("indicated_minus_reference", "actual_minus_target")
 
@@ -139,13 +140,21 @@ def test_summary_is_text(key):
 
 
 # -- documentation and language --------------------------------------------------------
-def test_manual_pages_in_every_language(key):
-    for language in ("",) + tuple(f".{lang}" for lang in LANGUAGES):
+def test_user_guide_and_manual_pages_in_every_language(key):
+    """The user guide in docs/ in English and each language, linked from its index; the
+    window's manual pages are made from them (``make docs``; tests/app/test_manual_pages.py
+    holds them to their source)."""
+    for language, folder in (("", GUIDES), *((f".{lang}", ROOT / "docs" / lang / "user-guide")
+                                             for lang in LANGUAGES)):
+        guide = folder / f"{key}.md"
+        assert guide.is_file(), f"{key}: write its user guide {guide.relative_to(ROOT)}"
+        index = folder / "index.md"
+        assert f"]({key}.md)" in index.read_text("utf-8"), (
+            f"{key}: link {guide.name} from {index.relative_to(ROOT)}")
         page = MANUAL / f"{key}{language}.html"
-        assert page.is_file(), f"{key}: add its manual page resources/manual/{page.name}"
-        index = MANUAL / f"index{language}.html"
-        assert f'href="{key}{language}.html"' in index.read_text("utf-8"), (
-            f"{key}: link resources/manual/{page.name} from resources/manual/{index.name}")
+        index_page = MANUAL / f"index{language}.html"
+        assert page.is_file() and f'href="{page.name}"' in index_page.read_text("utf-8"), (
+            f"{key}: run `make docs` (resources/manual/{page.name} is made from {guide.name})")
 
 
 def test_its_texts_are_translated(key):

@@ -6030,8 +6030,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>correction（期望 − 实际）或 error（实际 − 期望）：按机床所用 Mach4 版本的要求</translation>
     </message>
     <message>
-        <source>{controller} options: values=correction or values=error must be given (the sign of a screw map&apos;s value is not stated unambiguously: see README)</source>
-        <translation>{controller} 选项：必须给出 values=correction 或 values=error（丝杠映射值的符号没有明确规定：见 README）</translation>
+        <source>{controller} options: values=correction or values=error must be given (the sign of a screw map&apos;s value is not stated unambiguously: see the user guide, docs/user-guide/positioning.md, Compensation tables)</source>
+        <translation>{controller} 选项：必须给出 values=correction 或 values=error（丝杠映射值的符号没有明确规定：见用户指南 docs/zh_CN/user-guide/positioning.md，“补偿表”一节）</translation>
     </message>
     <message>
         <source>points = intervals + 1, evenly spaced over the length ({source})</source>

@@ -225,13 +225,17 @@ def test_the_manual_explains_every_setting_and_every_plot_of_each_workbench(wind
     them, so a setting or plot added without its explanation fails here."""
     import html
     import re
+    from pathlib import PurePosixPath
 
+    from app.manual_pages import render
     from widgets.manual_window import manual_page
 
     for presenter in window.presenters:
         page = manual_page(presenter.kind.key)
         assert page.name == f"{presenter.kind.key}.html"
-        text = html.unescape(re.sub(r"<[^>]+>", "", page.read_text("utf-8")))
+        source = PurePosixPath(f"docs/user-guide/{presenter.kind.key}.md")  # the one source
+        assert page.read_text("utf-8") == render(source), f"{page.name}: run `make docs`"
+        text = html.unescape(re.sub(r"<[^>]+>", "", render(source)))
         tabs = presenter.view.plot_tabs
         for name in [tabs.tabText(i) for i in range(tabs.count())] + \
                 [p.label for p in presenter.kind.parameters]:
@@ -244,8 +248,11 @@ def test_the_chinese_manual_explains_every_setting_and_plot_as_the_window_names_
     import html
     import re
 
+    from pathlib import PurePosixPath
+
     from PySide6.QtWidgets import QLabel
 
+    from app.manual_pages import render
     from widgets.manual_window import manual_page
 
     window.set_language("zh_CN")
@@ -253,7 +260,9 @@ def test_the_chinese_manual_explains_every_setting_and_plot_as_the_window_names_
         for presenter in window.presenters:
             page = manual_page(presenter.kind.key, "zh_CN")
             assert page.name == f"{presenter.kind.key}.zh_CN.html"
-            text = html.unescape(re.sub(r"<[^>]+>", "", page.read_text("utf-8")))
+            source = PurePosixPath(f"docs/zh_CN/user-guide/{presenter.kind.key}.md")
+            assert page.read_text("utf-8") == render(source), f"{page.name}: run `make docs`"
+            text = html.unescape(re.sub(r"<[^>]+>", "", render(source)))
             tabs = presenter.view.plot_tabs
             labels = [label.text() for label in presenter.view.settings.findChildren(QLabel)
                       if label.buddy() is not None]

@@ -59,7 +59,8 @@ def build(table, options) -> Plan:
     if o["values"] not in ("error", "correction"):
         raise ControllerRuleError(message(QT_TR_NOOP(
             "{controller} options: values=correction or values=error must be given (the sign of a "
-            "screw map's value is not stated unambiguously: see README)"), controller=NAME))
+            "screw map's value is not stated unambiguously: see the user guide, "
+            "docs/user-guide/positioning.md, Compensation tables)"), controller=NAME))
     sign = 1.0 if o["values"] == "correction" else -1.0
     positions = np.asarray(table.positions, dtype=float)
     equidistant_step(NAME, positions, SOURCE)

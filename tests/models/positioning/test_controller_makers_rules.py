@@ -6,6 +6,9 @@ from its error curve, measured in the standard cycle)."""
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -142,8 +145,14 @@ def test_sinumerik_zero_at_the_reference_point():
 
 def test_mach4_sign_is_an_option_without_a_default():
     table = compensation_table(measure("linear"), tables="separate")
-    with pytest.raises(ControllerRuleError, match="values=correction or values=error must be given"):
+    with pytest.raises(ControllerRuleError, match="values=correction or values=error must be given") \
+            as refused:
         mach4.write(table, "axis=X")
+    # the refusal points at the page that explains the two signs (not at "README")
+    guide = re.search(r"docs/user-guide/\w+\.md", str(refused.value))
+    assert guide is not None, str(refused.value)
+    text = (Path(__file__).resolve().parents[3] / guide.group()).read_text(encoding="utf-8")
+    assert "## Compensation tables" in text and "values=correction" in text
     [(_, corr)], _ = mach4.write(table, "axis=X,values=correction")
     [(_, err)], _ = mach4.write(table, "axis=X,values=error")
     assert "expected - actual (values=correction)" in corr
