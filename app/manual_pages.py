@@ -31,6 +31,7 @@ import sys
 import unicodedata
 from html import escape
 from pathlib import Path, PurePosixPath
+from urllib.parse import unquote
 
 ROOT = Path(__file__).resolve().parents[1]
 MANUAL = PurePosixPath("resources/manual")
@@ -99,8 +100,9 @@ def render(source: PurePosixPath, root: Path = ROOT) -> str:
         if "://" in href or href.startswith("mailto:"):
             return href
         file, _, fragment = href.partition("#")
+        fragment = unquote(fragment)  # markdown-it escapes it; the heading's id is not escaped
         if not file:
-            return href
+            return f"#{fragment}"
         resolved = PurePosixPath(os.path.normpath((source.parent / file).as_posix()))
         if resolved in pages:
             page = pages[resolved][0]
