@@ -1,7 +1,9 @@
 """``make new-workbench NAME=key TITLE="…" TITLE_ZH="…"``: a new workbench's starting point.
 
-Writes the two folders (``models/KEY``, ``widgets/KEY``), a sample, the manual pages in
-English and Chinese (linked from the manuals' index), its entry in ``models/registry.py``
+Writes the two folders (``models/KEY``, ``widgets/KEY``), a sample, its user guide in
+English and Chinese (``docs/user-guide/KEY.md``, ``docs/zh_CN/user-guide/KEY.md``, linked from
+each language's ``index.md``) and the window's manual pages made from them
+(``resources/manual/``, as ``make docs`` makes them), its entry in ``models/registry.py``
 and the Chinese of its texts in ``resources/translations/anglebench_zh_CN.ts``. The model
 it writes is a working one — the errors of indication of an angle against a reference, its
 validation case by simulation in ``models/KEY/validation_cases.py`` — to be replaced by the
@@ -252,12 +254,79 @@ class {cls}Presenter(WorkbenchPresenter):
 SAMPLE = "reference_deg,indicated_deg\n" + "".join(
     f"{r},{r + (4.0 + 3.0 * ((r // 30) % 3 - 1)) / 3600.0:.6f}\n" for r in range(0, 360, 30))
 
-MANUAL = '''<html><head><meta charset="utf-8"><title>{title}</title></head><body>
-<p><a href="index{lang}.html">{manual}</a></p>
-<h1>{title}</h1>
-<p>{what}</p>
-</body></html>
-'''
+#: the user guide it writes in docs/user-guide/ (the window's manual is made from it), and
+#: its Chinese in docs/zh_CN/user-guide/: the same sections, items and figures
+GUIDE = {"en": '''# {title}
+
+*User guide of the {title} workbench (key `{key}`); the window's manual (F1) shows this page.*
+Entry, keys, plots, files and autosave, common to every workbench, are in
+[Working with the window](window.md); certificates in
+[Certificates and the register](../certificates-and-register.md); every option in
+[the command-line reference](../command-line.md).
+
+## What you measure
+
+The error of indication of an angle against a reference. Readings: `reference_deg`, the
+reference angle as the standard reads it, and `indicated_deg`, the angle the instrument
+under test indicates, in degrees; the error of indication is indicated − reference.
+*(Written by `make new-workbench`: say what this workbench measures.)*
+
+## Setting up
+
+*(How the instrument and the standard are set up, and what to watch.)*
+
+## Settings
+
+* **Zero** — Whether the errors are taken relative to the first reading: *as read*, or *at the first reading*.
+
+## Plots
+
+* **Error curves** — The error of indication over the reference angle.
+
+## Result
+
+The verdict gives the peak-to-peak of the error of indication.
+
+## How it works
+
+*(The model, how it was checked and what it refuses.)*
+''', "zh_CN": '''# {title_zh}
+
+*{title_zh}工作台（键 `{key}`）的用户指南；窗口的手册（F1）显示的就是本页。*
+各工作台通用的录入、按键、图、文件和自动保存见[窗口的使用](window.md)；证书见
+[证书与证书登记册](../../certificates-and-register.md)（英文）；每个选项见
+[命令行参考](../../command-line.md)（英文）。
+
+## 测量什么
+
+角度相对参考值的示值误差。读数：`reference_deg`，即标准器读得的参考角，以及 `indicated_deg`，即被检仪器的
+示值角，单位为度；示值误差 = 示值 − 参考值。
+*（由 `make new-workbench` 写出：请说明本工作台测量什么。）*
+
+## 安装
+
+*（仪器和标准器如何安装，以及需要注意什么。）*
+
+## 设置
+
+* **零点** — 示值误差是否以第一个读数为零点：*按读数*，或*在第一个读数处*。
+
+## 图
+
+* **误差曲线** — 示值误差随参考角的变化。
+
+## 结果
+
+结论给出示值误差的峰峰值。
+
+## 工作原理
+
+*（模型、其验证方式以及它拒绝什么。）*
+'''}
+
+#: its line in the user guide's contents (docs/…/user-guide/index.md)
+INDEX_LINE = {"en": "* [{title}]({key}.md) — the error of indication of an angle against a reference",
+              "zh_CN": "* [{title_zh}]({key}.md) — 角度相对参考值的示值误差"}
 
 
 def _imports(*lines: str) -> str:
@@ -301,13 +370,21 @@ def _contract(key: str) -> None:
     path.write_text(text, "utf-8")
 
 
-def _link_manual(key: str, title: str, title_zh: str) -> None:
-    for lang, shown in (("", title), (".zh_CN", title_zh)):
-        path = ROOT / "resources" / "manual" / f"index{lang}.html"
+def _link_guide(key: str, title: str, title_zh: str) -> None:
+    """The user guide's line in each language's contents (index.md), after the last
+    workbench's; the manual's pages (index and the workbench's) are then made from them."""
+    from app import manual_pages
+
+    for language, folder in manual_pages.GUIDES.items():
+        path = ROOT / folder / "index.md"
         text = path.read_text("utf-8")
-        last = text.rindex("</li>\n") + len("</li>\n")
-        link = f'<li><a href="{key}{lang}.html">{escape(shown)}</a></li>\n'
-        path.write_text(text[:last] + link + text[last:], "utf-8")
+        head = text.split("\n## ", 1)[0]
+        lines = re.findall(r"^\* \[[^\]]+\]\(\w+\.md\).*$", head, flags=re.MULTILINE)
+        if not lines:
+            raise SystemExit(f"new-workbench: {folder}/index.md lists no workbench to add it after")
+        at = text.index(lines[-1]) + len(lines[-1])
+        line = INDEX_LINE[language].format(key=key, title=title, title_zh=title_zh)
+        path.write_text(text[:at] + "\n" + line + text[at:], "utf-8")
 
 
 def _translate(texts: dict[str, str]) -> None:
@@ -379,21 +456,28 @@ def new_workbench(key: str, title: str, title_zh: str) -> list[Path]:
         ROOT / "tests" / "widgets" / key / "__init__.py": "",
         ROOT / "tests" / "widgets" / key / f"test_{key}_presenter.py": PRESENTER_TEST.format(**names),
         ROOT / "resources" / "samples" / f"{key}_sample.csv": SAMPLE,
-        ROOT / "resources" / "manual" / f"{key}.html": MANUAL.format(
-            title=escape(title), lang="", manual="Manual",
-            what="Readings: the reference angle and the angle the instrument indicates, in "
-                 "degrees; the error of indication is indicated − reference."),
-        ROOT / "resources" / "manual" / f"{key}.zh_CN.html": MANUAL.format(
-            title=escape(title_zh), lang=".zh_CN", manual="手册",
-            what="读数：参考角和被检仪器的示值角（度）；示值误差 = 示值 − 参考值。"),
+        ROOT / "docs" / "user-guide" / f"{key}.md": GUIDE["en"].format(key=key, title=title),
+        ROOT / "docs" / "zh_CN" / "user-guide" / f"{key}.md": GUIDE["zh_CN"].format(
+            key=key, title_zh=title_zh),
     }
     for path, text in written.items():
         _write(path, text)
     _register(key, names["const"])
     _contract(key)
-    _link_manual(key, title, title_zh)
+    _link_guide(key, title, title_zh)
     _translate({title: title_zh, **TEXTS_ZH})
-    return list(written)
+    return list(written) + _manual_pages(key)
+
+
+def _manual_pages(key: str) -> list[Path]:
+    """The window's manual pages of the new guide and of the contents, made from docs/ as
+    ``make docs`` makes them (app/manual_pages.py)."""
+    from app import manual_pages
+
+    (ROOT / manual_pages.MANUAL).mkdir(parents=True, exist_ok=True)
+    sources = {folder / name for folder in manual_pages.GUIDES.values()
+               for name in (f"{key}.md", "index.md")}
+    return [ROOT / path for path in manual_pages.write(ROOT, only=sources)]
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -405,7 +489,7 @@ def main(argv: list[str] | None = None) -> int:
     for path in new_workbench(args.name, args.title, args.title_zh):
         sys.stdout.write(f"wrote {path.relative_to(ROOT)}\n")
     sys.stdout.write("edited models/registry.py, pyproject.toml's import contracts, "
-                     "resources/manual/index*.html and "
+                     "docs/user-guide/index.md, docs/zh_CN/user-guide/index.md and "
                      "resources/translations/anglebench_zh_CN.ts\n"
                      f"next: QT_QPA_PLATFORM=offscreen .venv/bin/python -m pytest "
                      f"tests/test_workbench_contract.py -k {args.name}\n")

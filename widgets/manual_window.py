@@ -1,5 +1,9 @@
 """Help › Manual (F1): the bundled HTML manual, opened at the current workbench's page
-(what to measure, how to set up, every setting, what each plot shows)."""
+(what to measure, how to set up, every setting, what each plot shows, how it works).
+
+The pages are the user guides of docs/ (docs/user-guide/, docs/zh_CN/user-guide/) made into
+resources/manual/ by ``make docs`` (app/manual_pages.py); they ship in the ``resources``
+package, so the manual is found from an installed package too."""
 
 from __future__ import annotations
 

@@ -29,6 +29,7 @@ def _tree(root):
                                            ("error_plot", "a module of widgets/")])
 def test_a_taken_key_is_refused_and_nothing_written(key, what):
     before = {p: p.read_bytes() for p in (new_workbench.ROOT / "models" / "registry.py",
+                                          new_workbench.ROOT / "docs" / "user-guide" / "index.md",
                                           new_workbench.ROOT / "resources" / "manual" / "index.html")}
     with pytest.raises(SystemExit, match=rf"'{key}' is taken: it is {re.escape(what)}"):
         new_workbench.new_workbench(key, "Title", "标题")
@@ -55,8 +56,8 @@ def test_the_written_workbench_keeps_its_cases_and_draws_through_its_view(tmp_pa
     import shutil
 
     root = new_workbench.ROOT
-    for rel in ("models/registry.py", "pyproject.toml", "resources/manual/index.html",
-                "resources/manual/index.zh_CN.html", "resources/translations/anglebench_zh_CN.ts"):
+    for rel in ("models/registry.py", "pyproject.toml", "docs/user-guide/index.md",
+                "docs/zh_CN/user-guide/index.md", "resources/translations/anglebench_zh_CN.ts"):
         (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(root / rel, tmp_path / rel)
     (tmp_path / "widgets").mkdir()
@@ -84,3 +85,46 @@ def test_the_written_workbench_keeps_its_cases_and_draws_through_its_view(tmp_pa
     assert '"models.crosscal", "models.tilt_table"]' in contracts
     assert '"widgets.crosscal", "widgets.tilt_table"]' in contracts
     assert '"theodolite | polygon | fringe | positioning | crosscal | tilt_table"' in contracts
+
+
+def test_the_written_workbench_has_its_user_guide_in_both_languages_linked_and_in_the_manual(
+        tmp_path, monkeypatch):
+    """The user guide in docs/user-guide/ and docs/zh_CN/user-guide/ (the same sections, the
+    setting and the plot tab named as each window names them), each linked from its
+    language's index.md after the last workbench, and the window's manual pages (the guide's
+    and the index's) made from them as `make docs` makes them."""
+    import shutil
+
+    from app import manual_pages
+
+    root = new_workbench.ROOT
+    for rel in ("models/registry.py", "pyproject.toml", "docs/user-guide/index.md",
+                "docs/zh_CN/user-guide/index.md", "resources/translations/anglebench_zh_CN.ts"):
+        (tmp_path / rel).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copy(root / rel, tmp_path / rel)
+    (tmp_path / "widgets").mkdir()
+    monkeypatch.setattr(new_workbench, "ROOT", tmp_path)
+    written = {p.relative_to(tmp_path).as_posix() for p in new_workbench.new_workbench(
+        "tilt_table", "Tilt table", "倾斜台")}
+    assert {"docs/user-guide/tilt_table.md", "docs/zh_CN/user-guide/tilt_table.md",
+            "resources/manual/tilt_table.html", "resources/manual/tilt_table.zh_CN.html",
+            "resources/manual/index.html", "resources/manual/index.zh_CN.html"} <= written
+    en = (tmp_path / "docs/user-guide/tilt_table.md").read_text("utf-8")
+    zh = (tmp_path / "docs/zh_CN/user-guide/tilt_table.md").read_text("utf-8")
+    assert en.startswith("# Tilt table\n") and zh.startswith("# 倾斜台\n")
+    assert "**Zero**" in en and "**Error curves**" in en  # the setting and the plot tab
+    assert "**零点**" in zh and "**误差曲线**" in zh
+    assert re.findall(r"^#+ ", en, flags=re.MULTILINE) == re.findall(r"^#+ ", zh, flags=re.MULTILINE)
+    for folder, title in (("docs/user-guide", "Tilt table"), ("docs/zh_CN/user-guide", "倾斜台")):
+        index = (tmp_path / folder / "index.md").read_text("utf-8")
+        before = (root / folder / "index.md").read_text("utf-8")
+        last = re.findall(r"^\* \[[^\]]+\]\(\w+\.md\).*$", before.split("\n## ")[0],
+                          flags=re.MULTILINE)[-1]
+        assert f"{last}\n* [{title}](tilt_table.md) — " in index  # after the last workbench
+    for name, heading in (("tilt_table.html", "Tilt table"), ("tilt_table.zh_CN.html", "倾斜台")):
+        page = (tmp_path / "resources/manual" / name).read_text("utf-8")
+        assert f">{heading}</h1>" in page
+    assert 'href="tilt_table.html"' in (tmp_path / "resources/manual/index.html").read_text("utf-8")
+    assert 'href="tilt_table.zh_CN.html"' in (
+        tmp_path / "resources/manual/index.zh_CN.html").read_text("utf-8")
+    assert manual_pages.stale(tmp_path) == []  # what `make docs` would make
