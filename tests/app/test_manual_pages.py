@@ -62,6 +62,20 @@ def test_the_chinese_guide_is_the_whole_english_one(name):
     assert not missing, f"docs/zh_CN/user-guide/{name} lacks the figures {missing}"
 
 
+@pytest.mark.parametrize("source", list(manual_pages.sources()), ids=str)
+def test_no_markdown_shows_as_text(source):
+    """Emphasis the Markdown reader did not take (in Chinese, ``**录入。**输入`` stays as
+    asterisks: a closing ``**`` after punctuation needs a space or punctuation after it) would
+    show its asterisks in the window."""
+    import html
+
+    body = manual_pages.render(source).split("<body>", 1)[1]
+    body = re.sub(r"<(code|pre)>.*?</\1>", "", body, flags=re.DOTALL)
+    text = html.unescape(re.sub(r"<[^>]+>", "", body))
+    stray = [text[max(0, m.start() - 20):m.end() + 10] for m in re.finditer(r"\*", text)]
+    assert not stray, f"{source}: Markdown shown as text: {stray}"
+
+
 def _targets(page: Path):
     text = page.read_text("utf-8")
     return re.findall(r'(?:href|src)="([^"]+)"', text)
