@@ -81,6 +81,22 @@ def _png_width(path: Path) -> int | None:
     return int(struct.unpack(">I", head[16:20])[0])
 
 
+def _wide(ch: str) -> bool:
+    return bool(ch) and unicodedata.east_asian_width(ch) in "WF"
+
+
+def _join_wide_lines(children) -> None:
+    """A line break inside a paragraph between two Chinese characters joins them, as
+    Chinese is written (QTextBrowser would show it as a space in mid-sentence)."""
+    for i, child in enumerate(children):
+        if child.type != "softbreak" or not 0 < i < len(children) - 1:
+            continue
+        before, after = children[i - 1].content, children[i + 1].content
+        if children[i - 1].type == "text" and children[i + 1].type == "text" and \
+                _wide(before[-1:]) and _wide(after[:1]):
+            child.type, child.tag, child.nesting, child.content = "text", "", 0, ""
+
+
 def _markdown():
     from markdown_it import MarkdownIt
 
@@ -141,6 +157,8 @@ def render(source: PurePosixPath, root: Path = ROOT) -> str:
                 width = _png_width(root / SCREENSHOTS / PurePosixPath(src or "").name)
                 if width:
                     child.attrSet("width", str(min(width, IMAGE_WIDTH)))
+        if token.children:
+            _join_wide_lines(token.children)
         if token.children:  # the closing tag of a link shown as text goes too
             depth: list[bool] = []
             for child in token.children:

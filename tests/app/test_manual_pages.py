@@ -123,3 +123,14 @@ def test_an_installed_package_holds_every_page_and_picture_the_manual_shows():
     for name in needed:
         assert any(fnmatch.fnmatch(name, p) for p in patterns), (
             f"resources/{name} is shown by the manual but not in the package data")
+
+
+def test_a_line_break_between_chinese_characters_joins_them(tmp_path):
+    """Chinese has no spaces between words: a Markdown line broken mid-sentence is joined in
+    the window; between English words, or Chinese and English, it stays a space."""
+    source = PurePosixPath("docs/zh_CN/user-guide/test.md")
+    (tmp_path / source).parent.mkdir(parents=True)
+    (tmp_path / source).write_text("# 标题\n\n示值误差按设置\n以角秒表示，see the\nguide 与\nISO 230-2。\n",
+                                   "utf-8")
+    page = manual_pages.render(source, tmp_path)
+    assert "示值误差按设置以角秒表示，see the\nguide 与\nISO 230-2。" in page
