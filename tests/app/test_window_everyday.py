@@ -247,7 +247,6 @@ def test_the_chinese_manual_explains_every_setting_and_plot_as_the_window_names_
     Chinese window shows them."""
     import html
     import re
-
     from pathlib import PurePosixPath
 
     from PySide6.QtWidgets import QLabel
