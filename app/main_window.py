@@ -399,15 +399,17 @@ class MainWindow(QMainWindow):
         return self.projects.path.name if self.projects.path else "readings typed in AngleBench"
 
     def export_certificate(self) -> bool:
+        # the settings the result was analysed with, not the form's: edited since, they are
+        # not yet in the result, and the certificate states what it computed with
         result = self._current_result()
         return result is not None and self.certificates.export_certificate(
-            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.kind, result, self.current.result_settings, self._source_name(),
             self.current.state().rows, self.capture_panel.raw_sessions(self.current.kind.key))
 
     def export_results(self) -> bool:
         result = self._current_result()
         return result is not None and self.certificates.export_results(
-            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.kind, result, self.current.result_settings, self._source_name(),
             self.current.angle_unit)
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802

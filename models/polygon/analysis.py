@@ -494,7 +494,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
         tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
-        reading_noise_arcsec=float(s["reading_noise_arcsec"]), cmc=float(s["cmc_arcsec"]),
+        reading_noise_arcsec=float(s["reading_noise_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
@@ -660,8 +660,9 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
-class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
-              GuidesAcquisition, AcceptsReference):
+class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], SendsRuns[PolygonResult],
+              OverlaysRuns[PolygonResult], ShowsHeadline[PolygonResult], GuidesAcquisition,
+              AcceptsReference):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -677,7 +678,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
         "polygon, the autocollimator, its roll, the reading noise, the zero reading, the "
         "drift — is in it), at each position with its own k.")}
 
-    def dcc_point_uncertainties(self, result, metadata=None):
+    def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The raw error (mean of the sets, before the pyramidal correction): the
         certificate's budget less the correction's own input (as the JSON's per-set
         ``error_arcsec``), U and k per position; none when the budget is not determined."""
@@ -687,7 +688,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
         from models.uncertainty.budget import UncertaintyBudget
 
         try:
-            full = polygon_budget(result, metadata)
+            full = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return {}
         raw = UncertaintyBudget(tuple(c for c in full.components
@@ -738,8 +739,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
                                                 "(set-up: faces n)")))
         return polygon_plan(faces, sets, closure=True, alternate=True)
 
-    def certificate(self, result, metadata, source_name=""):
-        return polygon_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result, metadata, source_name="", settings=None):
+        return polygon_certificate(result, metadata, source_name, self.method_reference, settings)
 
     tolerance_in_settings = True  # the grade
 
@@ -751,8 +752,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
         return float(GRADE_ACCURACY_ARCSEC[result.grade])  # the one source: the grade
 
-    def uncertainty_budgets(self, result, metadata):
-        return polygon_json_budgets(result, metadata)
+    def uncertainty_budgets(self, result, metadata, settings=None):
+        return polygon_json_budgets(result, metadata, settings)
 
     def overlay_figure(self, result):
         return error_figure(result)

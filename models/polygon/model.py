@@ -395,7 +395,6 @@ class PolygonResult:
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
     tilt_bound_arcsec: float = 300.0  # setting: the tilt bound when not identified (budget)
     reading_noise_arcsec: float = 0.0  # setting: σ of a reading when not evaluated (0: none)
-    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
     warnings: list[str] = field(default_factory=list)
     # with n readings per point (setting readings per point): RepeatedReadings, and each
     # set's s/√n per position (sets, faces) of its encoder and autocollimator readings

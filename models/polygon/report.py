@@ -36,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
 
@@ -65,6 +66,7 @@ from models.polygon.model import (
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["polygon_budget", "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
            "repeated_readings_components", "setup_statement"]
@@ -349,7 +351,10 @@ def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> li
     return out
 
 
-def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
+                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the mean corrected error, held to the laboratory's CMC of the
+    ``settings`` ``result`` was analysed with (None: none)."""
     n = result.faces
     zero = _zero_index(result)
     pair = np.full(n, math.sqrt(2.0))
@@ -369,7 +374,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
-                             floor=result.cmc)
+                             floor=cmc_of(settings, "cmc_arcsec"))
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
@@ -382,7 +387,8 @@ _PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
                    "Repeated readings (s/√n)", "Closure drift", "Pyramidal correction (ψ, ω)")
 
 
-def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata) -> dict[str, Any]:
+def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
+                         settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """The budget of each error array of the JSON. ``mean_corrected_error_arcsec``: the
     certificate's. The arrays of every set (``error_arcsec`` before the pyramidal
     correction, ``pyramidal_error_arcsec`` the correction's own, ``corrected_error_arcsec``),
@@ -391,7 +397,7 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata) -
     √m_eff (√m) times larger, as for one set of them."""
     from models.certificate.uncertainty_json import PointUncertainty
 
-    full = polygon_budget(result, metadata)
+    full = polygon_budget(result, metadata, settings)
     m = len(result.sets)
     m_eff = _effective_sets(np.array([s.direction for s in result.sets]))
     one = full
@@ -449,9 +455,10 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
 
 
 def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
-                        source_name: str = "", method_reference: str = "") -> CertificateDocument:
+                        source_name: str = "", method_reference: str = "",
+                        settings: Mapping[str, Any] | None = None) -> CertificateDocument:
     tol = polygon_tolerance_arcsec(result, metadata)
-    budget = polygon_budget(result, metadata)
+    budget = polygon_budget(result, metadata, settings)
     big_u = budget.expanded
     m = len(result.sets)
     counting = (QT_TR_NOOP("with the face numbering") if result.counting > 0

@@ -128,7 +128,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
     result.repeats = repeats
-    result.cmc = float(s["cmc_arcsec"])
     return result
 
 
@@ -240,8 +239,9 @@ def summary(result: TheodoliteResult) -> str:
     return lines(out)
 
 
-class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
-                 GuidesAcquisition):
+class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResult],
+                 SendsRuns[TheodoliteResult], OverlaysRuns[TheodoliteResult],
+                 ShowsHeadline[TheodoliteResult], GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -272,11 +272,12 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     acquisition_guide = staticmethod(theodolite_guide)
     run_rows = staticmethod(positioning_rows)
 
-    def certificate(self, result, metadata, source_name=""):
-        return theodolite_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result, metadata, source_name="", settings=None):
+        return theodolite_certificate(result, metadata, source_name, self.method_reference,
+                                      settings)
 
-    def uncertainty_budgets(self, result, metadata):
-        return theodolite_json_budgets(result, metadata)
+    def uncertainty_budgets(self, result, metadata, settings=None):
+        return theodolite_json_budgets(result, metadata, settings)
 
     def decided_errors(self, result, metadata):
         return result.corrected_error_arcsec
