@@ -37,7 +37,7 @@ from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
-from models.workbench import AcceptsRuns, SendsRuns
+from models.workbench import AcceptsRuns, JudgesSignals, SendsRuns
 from widgets.fonts import ensure_cjk_font
 from widgets.i18n import (
     declared,
@@ -421,9 +421,8 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
         self.capture_panel.disconnect_instrument()
         for presenter in self.presenters:
-            live = getattr(presenter.view, "live_signals", None)
-            if live is not None:
-                live.disconnect_stream()
+            if isinstance(presenter.kind, JudgesSignals):  # its view_needs: the panel
+                presenter.view.live_signals.disconnect_stream()
         self.projects.close()
         event.accept()
 

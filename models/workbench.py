@@ -17,7 +17,11 @@ method it defines and every call of the shared code against it (``Workbench[Any]
 shared code holds any workbench).
 
 Shared code asks ``isinstance(workbench, WritesCorrectionTable)``, never a workbench's
-key. The capabilities are abstract mixins, not ``typing.Protocol``: a workbench states
+key, and never whether a view happens to have an attribute: a capability that the window
+serves through the workbench's view names what it needs of it in ``view_needs`` (dotted
+attribute paths, e.g. ``"error_plot.corrected_plot"``), and the contract test builds every
+workbench's real view and checks that it has each (:func:`view_needs`). The capabilities
+are abstract mixins, not ``typing.Protocol``: a workbench states
 in its class line what it does (one place to read, one place to grep), a capability
 whose method is missing fails when the workbench is created rather than when a user
 first clicks, and ``isinstance`` answers by declaration — a runtime-checkable protocol
@@ -48,6 +52,7 @@ if TYPE_CHECKING:
     from models.certificate.metadata import CertificateMetadata
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
+           "view_needs",
            "AcceptsRuns", "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates",
            "JudgesSignals", "OverlaysRuns", "ResultT", "SendsReference", "SendsRuns",
            "SentReference", "SettingsError", "ShowsHeadline", "Workbench",
@@ -325,6 +330,9 @@ class JudgesSignals(ABC, Generic[ResultT]):
     #: the argparse destinations of its options (a workbench without the capability
     #: refuses them)
     signal_flags: tuple[str, ...] = ()
+    #: its view shows a read head's signals live against the same tolerances (the window's
+    #: Instrument › Live signals…, app/capture/signal_live.py): the panel and its opener
+    view_needs: ClassVar[tuple[str, ...]] = ("live_signals", "open_live_signals")
 
     @abstractmethod
     def add_signal_arguments(self, parser: Any, words: Callable[[str], str]) -> None:
@@ -414,6 +422,10 @@ class ComparesAfterLog(ABC, Generic[ResultT]):
 class OverlaysRuns(ABC, Generic[ResultT]):
     """Draws a second run (before/after, an earlier certificate) over today's error curve."""
 
+    #: the panel the overlay draws on and its legend (widgets/run_overlay.py)
+    view_needs: ClassVar[tuple[str, ...]] = ("error_plot.corrected_plot",
+                                             "error_plot.corrected_legend")
+
     @abstractmethod
     def overlay_figure(self, result: ResultT) -> PlotFigure:
         """The figure whose "corrected" series is overlaid."""
@@ -447,5 +459,14 @@ class GuidesAcquisition(ABC):
 #: every capability a workbench may declare (the contract test lists them)
 CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
                 ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition,
-                SendsReference, AcceptsReference)
+                SendsReference, AcceptsReference, JudgesSignals)
+
+
+def view_needs(workbench: Workbench[Any]) -> dict[str, tuple[str, ...]]:
+    """What each capability of ``workbench`` needs of its view, by the capability's name:
+    dotted attribute paths (``"error_plot.corrected_plot"``) every view of a workbench that
+    declares the capability has. The window relies on them without asking the view; the
+    contract test checks each workbench's real view."""
+    return {c.__name__: tuple(getattr(c, "view_needs", ())) for c in CAPABILITIES
+            if isinstance(workbench, c) and getattr(c, "view_needs", ())}
 
