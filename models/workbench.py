@@ -58,7 +58,7 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRe
            "SentReference", "SettingsError", "ShowsHeadline", "Workbench",
            "WritesCorrectionTable"]
 
-#: the type of a workbench's result (its analysis gives it; everything else takes it)
+# the type of a workbench's result (its analysis gives it; everything else takes it)
 ResultT = TypeVar("ResultT")
 
 # Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction

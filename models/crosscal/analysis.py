@@ -295,9 +295,9 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     return result
 
 
-#: the settings a cross-calibration result holds as it was analysed with them (setting → the
-#: result's field): its own U figures (expanded_u_arcsec, the JSON's) are made from them,
-#: so they stay in the result, and a certificate given other settings is refused
+# the settings a cross-calibration result holds as it was analysed with them (setting → the
+# result's field): its own U figures (expanded_u_arcsec, the JSON's) are made from them,
+# so they stay in the result, and a certificate given other settings is refused
 _ANALYSED_WITH = (("certificate_of", "certificate_of"), ("closure_drift", "drift_mode"),
                   ("ac_scale_pct", "ac_scale_pct"), ("tilt_bound_arcsec", "tilt_bound_arcsec"),
                   ("cmc_arcsec", "cmc_polygon_arcsec"),

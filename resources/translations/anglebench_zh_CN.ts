@@ -8376,6 +8376,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
     </message>
     <message>
+        <source>the setting {setting} is {now}, but the result was analysed with {then}: analyse again before a certificate is made</source>
+        <translation>设置 {setting} 现为 {now}，但该结果是按 {then} 分析的：请重新分析后再出具证书</translation>
+    </message>
+    <message>
         <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>
         <translation>{faces} 面棱体装于编码器上，{count} 个安装位置（{mountings}）；单次读数 σ = {sigma}（ν = {nu}），k = {k}</translation>
     </message>
