@@ -14,6 +14,7 @@ from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
 from models.polygon.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
     PolygonResult,
@@ -127,7 +128,7 @@ PARAMETERS = (
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not identified",
-              "float", 300.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
               help="When the vertical readings cannot identify the tilt (none given, all equal, "
                    "or only 3 faces: no degrees of freedom) the pyramidal error is not removed: "
                    "its exact effect for a tilt up to this, in the worst direction, enters the "
@@ -493,8 +494,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
-        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
-        reading_noise_arcsec=float(s["reading_noise_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )

@@ -90,3 +90,42 @@ def test_a_cross_calibration_refuses_settings_other_than_its_analysis():
     with pytest.raises(ValueError, match="cmc_arcsec is 0.2, but the result was analysed "
                                          "with 0.05"):
         kind.certificate_document(result, details, "", {**analysed, "cmc_arcsec": 0.2})
+
+
+def test_the_polygons_stated_inputs_reach_its_budget_from_the_settings():
+    """The tilt bound (when the tilt is not identified) and the σ of a reading (when the
+    readings cannot evaluate it) were copied into the polygon's result for the budget; they
+    reach it from the settings now: the certificate states the figures it computed with."""
+    from models.certificate.withheld import UncertaintyWithheld
+    from models.validation.polygon_rig import PolygonRig
+
+    faces = 12
+    th = np.radians(np.arange(faces) * 30.0)
+    rig = PolygonRig(faces, 0.3 * np.cos(th), psi_arcsec=300.0, omega_deg=40.0,
+                     noise_arcsec=0.03, rng=np.random.default_rng(3))
+    flat = [[*r[:4], "12.5", *r[5:]] for r in rig.set_rows()]  # no tilt to identify
+    kind = KINDS["polygon"]
+    analysed = kind.checked_settings({"grade": 3})
+    result = kind.analyze(ReadingsSheet(kind.columns, flat).parse(), analysed)
+    assert result.sets[0].tilt is None
+    assert not {"tilt_bound_arcsec", "reading_noise_arcsec"} & {
+        f.name for f in dataclasses.fields(result)}
+    details = CertificateMetadata()
+    with pytest.raises(UncertaintyWithheld, match="state the σ of a reading"):
+        kind.certificate_document(result, details, "", analysed)  # no σ stated: withheld
+    documents = {bound: kind.certificate_document(
+        result, details, "", {**analysed, "reading_noise_arcsec": 0.05,
+                              "tilt_bound_arcsec": bound}) for bound in (100.0, 300.0)}
+    for bound, document in documents.items():
+        components = {str(c.name): c for c in document.budget.components}
+        stated = [c for name, c in components.items() if name.startswith("Reading noise, stated")]
+        assert len(stated) == 1 and "σ = 0.05\"" in str(stated[0].note)
+        tilt = components["Pyramidal tilt, not identified (bound)"]
+        assert f"{bound:g}" in str(tilt.note)
+        listed = dict(document.settings)
+        assert listed[kind.parameter("tilt_bound_arcsec").label] == \
+            kind.parameter("tilt_bound_arcsec").text(bound)
+    small, large = (documents[b].budget.components for b in (100.0, 300.0))
+    u_small = next(c for c in small if str(c.name).startswith("Pyramidal")).standard_uncertainty(faces)
+    u_large = next(c for c in large if str(c.name).startswith("Pyramidal")).standard_uncertainty(faces)
+    assert np.all(u_large[1:] > 2.0 * u_small[1:])  # a third of the bound: well under half the u
