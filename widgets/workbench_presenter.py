@@ -289,9 +289,10 @@ class WorkbenchPresenter(QObject):
         if budgets_of is None:
             return None, {}, ""
         try:
-            budgets = budgets_of(result, meta)
+            # with the settings the result was analysed with, as its certificate's budget
+            budgets = budgets_of(result, meta, self.result_settings)
             unit = next((b.unit.key for b in budgets.values() if hasattr(b, "unit")), None)
-            tolerance = meta.tolerance_in(unit or self.kind.error_unit(self._settings))
+            tolerance = meta.tolerance_in(unit or self.kind.error_unit(self.result_settings))
         except (ValueError, ArithmeticError) as exc:
             log.debug("no tolerance band: %s", exc)
             return None, {}, ""

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from unittest import mock
 
+import numpy as np
+
 from tests.widgets.test_presenters import _delete_presenters_at_teardown, load, make  # noqa: F401
 from widgets.theodolite.presenter import TheodolitePresenter
 from widgets.theodolite.view import TheodoliteView
@@ -37,3 +39,22 @@ def test_an_edited_setting_waits_for_its_analysis_before_a_certificate_states_it
     assert presenter.result is not analysed and presenter.result_settings["cmc_arcsec"] == 0.7
     MainWindow.export_certificate(window)
     assert window.certificates.export_certificate.call_args.args[2]["cmc_arcsec"] == 0.7
+
+
+def test_the_windows_u_band_is_held_to_the_cmc_it_was_analysed_with(qtbot, samples_dir):
+    """The U band drawn beside the corrected error is the certificate's U: with the
+    laboratory's CMC of the settings the result was analysed with as its floor."""
+    from models.certificate.metadata import CertificateMetadata
+
+    presenter, view = make(TheodolitePresenter, TheodoliteView, qtbot)
+    presenter.certificate_details = lambda: CertificateMetadata(tolerance=5.0)
+    load(presenter, samples_dir)
+    _, bands, _ = presenter.tolerance_bands(presenter.result)
+    computed = np.asarray(bands["corrected_error_arcsec"], dtype=float)
+    cmc = round(float(np.median(computed[computed > 0])) * 1.5, 4)
+    view.settings_values.return_value = {"cmc_arcsec": cmc}
+    presenter.settings_edited()
+    presenter.refresh()
+    _, bands, _ = presenter.tolerance_bands(presenter.result)
+    np.testing.assert_allclose(bands["corrected_error_arcsec"],
+                               np.where(computed > 0, np.maximum(computed, cmc), computed))
