@@ -289,15 +289,16 @@ class CertificatePresenter:
         """Where the DCC goes beside ``pdf_path`` ("" when it is not asked for)."""
         return str(Path(pdf_path).with_suffix(".xml")) if self.dcc_options()[0] else ""
 
-    def _dcc_maker(self, kind, result, pdf_path: str):
-        """``dcc(document, pdf) -> bytes`` for issue_certificate (None: no DCC asked for)."""
+    def _dcc_maker(self, kind, result, pdf_path: str, settings):
+        """``dcc(document, pdf) -> bytes`` for issue_certificate (None: no DCC asked for),
+        its budgets from the ``settings`` ``result`` was analysed with."""
         if not self._dcc_path(pdf_path):
             return None
         from app.dcc_issue import dcc_schema_dir, render_dcc
 
         folder = dcc_schema_dir(configured=self.dcc_options()[1])
         return lambda document, pdf: render_dcc(kind, result, document, pdf,
-                                                Path(pdf_path).name, folder)
+                                                Path(pdf_path).name, folder, settings)
 
     def _with_dcc(self, text: str, pdf_path: str) -> str:
         """A status text with where the DCC went, and whether it was validated."""
@@ -311,14 +312,14 @@ class CertificatePresenter:
         return text + tr("; its DCC written to {path}, not validated (no DCC schema folder "
                          "set)").format(path=dcc_path)
 
-    def _write_pdf_and_dcc(self, kind, result, document, path: str) -> str:
+    def _write_pdf_and_dcc(self, kind, result, document, path: str, settings) -> str:
         """The PDF of ``document`` and, when asked for, its DCC beside it (made first: when
         refused, neither is written); the DCC's path, or ""."""
         from app.writers.certificate_pdf import certificate_pdf_bytes
         from models.project.atomic_write import write_bytes_atomic
 
         pdf = certificate_pdf_bytes(document)
-        make, dcc_path = self._dcc_maker(kind, result, path), self._dcc_path(path)
+        make, dcc_path = self._dcc_maker(kind, result, path, settings), self._dcc_path(path)
         xml = make(document, pdf) if make else None
         write_bytes_atomic(path, pdf)
         if xml is not None:
@@ -418,7 +419,7 @@ class CertificatePresenter:
                 return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
                 self._write_pdf_and_dcc(kind, result, kind.certificate_document(
-                    result, entered, source_name, settings), path)
+                    result, entered, source_name, settings), path, settings)
                 self.view.show_status(self._with_dcc(tr(
                     "Draft written to {path} — DRAFT: {missing} missing; nothing was recorded "
                     "in the register").format(path=path, missing=", ".join(tr(m) for m in draft)),
@@ -440,7 +441,7 @@ class CertificatePresenter:
 
         document = specimen_document(kind.certificate_document(result, entered, source_name,
                                                                settings))
-        self._write_pdf_and_dcc(kind, result, document, path)
+        self._write_pdf_and_dcc(kind, result, document, path, settings)
         self.view.show_status(self._with_dcc(tr(
             "SPECIMEN {number} written to {path} (training): watermarked SPECIMEN, not a "
             "certificate, and recorded in no register").format(
@@ -458,7 +459,8 @@ class CertificatePresenter:
                     register, kind, result, entered, settings, rows, source_name, path,
                     supersedes=revision.number if revision else "", change_note=note,
                     replacement=bool(revision and revision.replacement),
-                    raw_capture=raw_capture, dcc=self._dcc_maker(kind, result, path),
+                    raw_capture=raw_capture,
+                    dcc=self._dcc_maker(kind, result, path, settings),
                     dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "

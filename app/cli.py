@@ -397,7 +397,7 @@ def run_analyze(argv: list[str]) -> int:
                 _say(f"anglebench analyze: {_why(exc, words)}")
                 return EXIT_BAD_INPUT
             merge_json(data, workbench_uncertainty_json(kind, result, metadata, settings))
-            data.update(certified_json(kind, result, metadata))  # the certificate's figures
+            data.update(certified_json(kind, result, metadata, settings))  # the certificate's
         data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
@@ -535,14 +535,15 @@ def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
     return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
 
 
-def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words) -> None:
+def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words, settings) -> None:
     """The PDF of ``document`` and, with --dcc, its DCC (built and validated first: when it
-    is refused, neither file is written)."""
+    is refused, neither file is written), its budgets from the ``settings`` ``result`` was
+    analysed with."""
     from app.writers.certificate_pdf import certificate_pdf_bytes
     from models.project.atomic_write import write_bytes_atomic
 
     pdf = certificate_pdf_bytes(document)
-    xml = _dcc_of(args, kind, result, document, pdf, words) if args.dcc else None
+    xml = _dcc_of(args, kind, result, document, pdf, words, settings) if args.dcc else None
     write_bytes_atomic(args.certificate, pdf)
     if xml is not None:
         write_bytes_atomic(args.dcc, xml)
@@ -550,13 +551,15 @@ def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words) 
                               number=document.metadata.certificate_number, path=args.dcc), words))
 
 
-def _dcc_of(args: argparse.Namespace, kind, result, document, pdf: bytes, words) -> bytes:
+def _dcc_of(args: argparse.Namespace, kind, result, document, pdf: bytes, words,
+            settings) -> bytes:
     """The DCC of the certificate printed into ``pdf`` (app/dcc_issue.render_dcc); says on
     stderr when no schema folder is set, so it was not validated."""
     from app.dcc_issue import dcc_schema_dir, render_dcc
 
     folder = dcc_schema_dir(args.dcc_schema)
-    xml = render_dcc(kind, result, document, pdf, Path(args.certificate).name, folder)
+    xml = render_dcc(kind, result, document, pdf, Path(args.certificate).name, folder,
+                     settings)
     if not folder:
         _say(rendered(message(QT_TR_NOOP(
             "{path}: the DCC was not validated (no schema folder: --dcc-schema DIR or "
@@ -564,7 +567,7 @@ def _dcc_of(args: argparse.Namespace, kind, result, document, pdf: bytes, words)
     return xml
 
 
-def _specimen(args: argparse.Namespace, kind, result, document, words) -> None:
+def _specimen(args: argparse.Namespace, kind, result, document, words, settings) -> None:
     """The bundled example details (``"example": true``): a SPECIMEN, watermarked and
     numbered SPECIMEN-… (a number the register refuses, so it cannot clash), never
     recorded in any register."""
@@ -572,7 +575,7 @@ def _specimen(args: argparse.Namespace, kind, result, document, words) -> None:
 
     document = specimen_document(document)
     number = document.metadata.certificate_number
-    _write_pdf_and_dcc(args, kind, result, document, words)
+    _write_pdf_and_dcc(args, kind, result, document, words, settings)
     _say(rendered(message(QT_TR_NOOP(
         "SPECIMEN {number} written to {path}: these are the bundled example details "
         "(\"example\": true); it is watermarked SPECIMEN, is not a certificate and was "
@@ -585,7 +588,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
 
     try:
         with Register(url) as register:
-            dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words))
+            dcc = ((lambda document, pdf: _dcc_of(args, kind, result, document, pdf, words,
+                                                  settings))
                    if args.dcc else None)
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
@@ -633,13 +637,13 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         return EXIT_BAD_INPUT
     try:
         if args.certificate and metadata.example:
-            _specimen(args, kind, result, document, words)
+            _specimen(args, kind, result, document, words, settings)
         elif args.certificate and not draft_reasons(metadata):
             record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT
         elif args.certificate:
-            _write_pdf_and_dcc(args, kind, result, document, words)
+            _write_pdf_and_dcc(args, kind, result, document, words, settings)
             _say(rendered(message(QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
                 "in the register)"), path=args.certificate, fields=joined(

@@ -10,6 +10,7 @@ place to wire.
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from typing import Any
 
 from models.certificate.document import CertificateDocument
@@ -33,15 +34,18 @@ def dcc_schema_dir(explicit: str = "", configured: str = "") -> str:
 
 
 def render_dcc(kind: Any, result: Any, document: CertificateDocument, pdf_bytes: bytes,
-               pdf_name: str, schema_dir: str = "") -> bytes:
+               pdf_name: str, schema_dir: str = "",
+               settings: Mapping[str, Any] | None = None) -> bytes:
     """The DCC of ``document`` with ``pdf_bytes`` embedded; validated against
     ``schema_dir`` when given (DccInvalid naming the element path and the schema's reason).
-    DccError when the certificate lacks what the schema requires."""
+    DccError when the certificate lacks what the schema requires. Its budgets are made with
+    the ``settings`` ``result`` was analysed with (those the certificate was made with), so
+    the DCC's U is the PDF's."""
     try:
-        budgets = kind.uncertainty_budgets(result, document.metadata)
+        budgets = kind.uncertainty_budgets(result, document.metadata, settings)
     except (ValueError, ArithmeticError, IndexError):  # U not determined: the table's own U
         budgets = {}
-    budgets = {**budgets, **kind.dcc_point_uncertainties(result, document.metadata)}
+    budgets = {**budgets, **kind.dcc_point_uncertainties(result, document.metadata, settings)}
     xml = build_dcc(document, pdf_bytes, pdf_name, budgets,
                     uncertainty_columns=kind.dcc_uncertainty_columns,
                     face_deviations_column=kind.dcc_face_deviations_column,

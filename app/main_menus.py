@@ -17,7 +17,7 @@ from PySide6.QtWidgets import QMenu
 from app.capture.signal_live import open_live_signals
 from app.reference_sender import receiver_of, send_reference
 from models.display_units import ANGLE_UNITS
-from models.workbench import SendsRuns
+from models.workbench import JudgesSignals, SendsRuns
 from widgets.i18n import LANGUAGES, Tr, declared, live, tr
 from widgets.shortcuts import key_sequences
 
@@ -57,7 +57,7 @@ class MainMenus:
             tip=tr("A read head's sin/cos signals live against the interface's tolerances "
                    "while it is mounted (fringe workbench)"))
         self.live_signals_action.setEnabled(any(
-            hasattr(p.view, "open_live_signals") for p in window.presenters))
+            isinstance(p.kind, JudgesSignals) for p in window.presenters))
         self.show_panel_action = panel.toggleViewAction()
         live(self.show_panel_action.setText, tr("Show the instrument &panel"))
         instrument_menu.addAction(self.show_panel_action)

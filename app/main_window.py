@@ -37,7 +37,7 @@ from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.recovery import RecoveryStore
 from models.readings.tabular_import import TableImportError
 from models.registry import KINDS, presenter_class
-from models.workbench import AcceptsRuns, SendsRuns
+from models.workbench import AcceptsRuns, JudgesSignals, SendsRuns
 from widgets.fonts import ensure_cjk_font
 from widgets.i18n import (
     declared,
@@ -399,15 +399,17 @@ class MainWindow(QMainWindow):
         return self.projects.path.name if self.projects.path else "readings typed in AngleBench"
 
     def export_certificate(self) -> bool:
+        # the settings the result was analysed with, not the form's: edited since, they are
+        # not yet in the result, and the certificate states what it computed with
         result = self._current_result()
         return result is not None and self.certificates.export_certificate(
-            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.kind, result, self.current.result_settings, self._source_name(),
             self.current.state().rows, self.capture_panel.raw_sessions(self.current.kind.key))
 
     def export_results(self) -> bool:
         result = self._current_result()
         return result is not None and self.certificates.export_results(
-            self.current.kind, result, self.current.settings, self._source_name(),
+            self.current.kind, result, self.current.result_settings, self._source_name(),
             self.current.angle_unit)
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
@@ -419,9 +421,8 @@ class MainWindow(QMainWindow):
         self.qsettings.setValue("window/tab", self.tabs.currentIndex())
         self.capture_panel.disconnect_instrument()
         for presenter in self.presenters:
-            live = getattr(presenter.view, "live_signals", None)
-            if live is not None:
-                live.disconnect_stream()
+            if isinstance(presenter.kind, JudgesSignals):  # its view_needs: the panel
+                presenter.view.live_signals.disconnect_stream()
         self.projects.close()
         event.accept()
 

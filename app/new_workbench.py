@@ -116,7 +116,10 @@ def error_figure(result: {cls}Result) -> PlotFigure:
                    result.error_arcsec[order], (31, 119, 180), True, role="corrected"),))
 
 
-class {cls}(Workbench, OverlaysRuns, ShowsHeadline):
+# generic over its result: each base names {cls}Result, and mypy (make lint) checks every
+# method below and every call of the shared code against it (models/workbench.py)
+class {cls}(
+        Workbench[{cls}Result], OverlaysRuns[{cls}Result], ShowsHeadline[{cls}Result]):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -131,11 +134,11 @@ class {cls}(Workbench, OverlaysRuns, ShowsHeadline):
     summary = staticmethod(summary)
     overlay_figure = staticmethod(error_figure)
 
-    def verdict(self, result):
+    def verdict(self, result: {cls}Result) -> str:
         return message(QT_TR_NOOP("Error of indication, peak-to-peak {{ptp}}"),
                        ptp=f"{{result.peak_to_peak:.2f}}\\"")
 
-    def headline(self, result):
+    def headline(self, result: {cls}Result) -> dict[str, float]:
         return {{"peak-to-peak (\\")": result.peak_to_peak}}
 
 

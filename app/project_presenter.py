@@ -208,7 +208,7 @@ class ProjectPresenter(QObject):
         if not self.confirm_discard():
             return False
         try:
-            project = load_project(path)
+            project = load_project(path, self._kinds())
             check_project(project, self._kinds(), str(path))
         except ProjectFileError as exc:
             self.view.tell(tr("Cannot open project"),
@@ -227,7 +227,7 @@ class ProjectPresenter(QObject):
         if not self.confirm_discard():
             return False
         try:
-            project = project_from_json(project_json, "the register's record")
+            project = project_from_json(project_json, "the register's record", self._kinds())
             check_project(project, self._kinds(), "the register's record")
         except ProjectFileError as exc:
             self.view.tell(tr("Cannot open"), explained(exc))
@@ -423,7 +423,7 @@ class ProjectPresenter(QObject):
             return False
         path = orphans[0]
         try:
-            project = self.recovery.load(path)
+            project = self.recovery.load(path, self._kinds())
         except ProjectFileError as exc:
             self.view.tell(tr("Cannot recover"),
                            tr("{reason} (the file was kept aside as damaged)").format(reason=exc))

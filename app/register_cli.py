@@ -130,9 +130,10 @@ def _checker(record) -> str:
     """The checker (核验员) of the certificate's details, from the project state recorded
     with it; empty when the lab's template has none."""
     from models.project.file import project_from_json
+    from models.registry import KINDS
 
     try:
-        details = project_from_json(record.project_json).metadata["certificates"][
+        details = project_from_json(record.project_json, kinds=KINDS).metadata["certificates"][
             record.workbench]
     except (TypeError, ValueError, KeyError):
         return ""

@@ -37,15 +37,15 @@ LOCATIONS: dict[str, str] = {
 }
 
 
-class Workbenches(Mapping[str, "Workbench"]):
+class Workbenches(Mapping[str, "Workbench[Any]"]):
     """The workbenches by key, each module imported on its first use (keys, ``in`` and
     ``len`` import nothing)."""
 
     def __init__(self, locations: Mapping[str, str]) -> None:
         self._locations = dict(locations)
-        self._loaded: dict[str, Workbench] = {}
+        self._loaded: dict[str, Workbench[Any]] = {}
 
-    def __getitem__(self, key: str) -> Workbench:
+    def __getitem__(self, key: str) -> Workbench[Any]:
         try:
             return self._loaded[key]
         except KeyError:
@@ -72,10 +72,10 @@ class Workbenches(Mapping[str, "Workbench"]):
 
 
 #: the workbenches in the order of the window's tabs
-KINDS: Mapping[str, Workbench] = Workbenches(LOCATIONS)
+KINDS: Mapping[str, Workbench[Any]] = Workbenches(LOCATIONS)
 
 
-def presenter_class(kind: Workbench) -> Any:
+def presenter_class(kind: Workbench[Any]) -> Any:
     """The presenter class a workbench names (imports its widgets module: Qt)."""
     module, _, name = kind.presenter.partition(":")
     return getattr(importlib.import_module(module), name)

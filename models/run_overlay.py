@@ -82,7 +82,7 @@ def overlay_from_project_json(kind: Any, text: str, label: str) -> OverlayRun:
     settings it was analysed with."""
     from models.project.file import project_from_json
 
-    return _from_project(kind, project_from_json(text, label), label)
+    return _from_project(kind, project_from_json(text, label, {kind.key: kind}), label)
 
 
 def overlay_from_file(kind: Any, path: str | Path, settings: Mapping[str, Any] | None
@@ -96,6 +96,6 @@ def overlay_from_file(kind: Any, path: str | Path, settings: Mapping[str, Any] |
     if path.suffix.lower() == PROJECT_SUFFIX:
         from models.project.file import load_project
 
-        return _from_project(kind, load_project(path), label)
+        return _from_project(kind, load_project(path, {kind.key: kind}), label)
     rows = map_columns(read_table(path), kind.columns)
     return overlay_run(kind, rows, settings, label)

@@ -6,12 +6,22 @@ every workbench has (its key and title, readings columns, settings declared once
 reference and the dotted path of its presenter), and from the capabilities it has, each
 a small abstract class of its own::
 
-    class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline):
+    class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
+                 WritesCorrectionTable[FringeResult], ShowsHeadline[FringeResult]):
         key = KEY  # from models/fringe/__init__.py, with TITLE
         ...
 
+The core and every capability that takes or gives a result are generic over the result's
+type (``ResultT``): a workbench names its result class once per base, and mypy checks every
+method it defines and every call of the shared code against it (``Workbench[Any]`` where the
+shared code holds any workbench).
+
 Shared code asks ``isinstance(workbench, WritesCorrectionTable)``, never a workbench's
-key. The capabilities are abstract mixins, not ``typing.Protocol``: a workbench states
+key, and never whether a view happens to have an attribute: a capability that the window
+serves through the workbench's view names what it needs of it in ``view_needs`` (dotted
+attribute paths, e.g. ``"error_plot.corrected_plot"``), and the contract test builds every
+workbench's real view and checks that it has each (:func:`view_needs`). The capabilities
+are abstract mixins, not ``typing.Protocol``: a workbench states
 in its class line what it does (one place to read, one place to grep), a capability
 whose method is missing fails when the workbench is created rather than when a user
 first clicks, and ``isinstance`` answers by declaration — a runtime-checkable protocol
@@ -25,7 +35,7 @@ import dataclasses
 import math
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 from models.certificate.traceability import test_report_statement, traceability_gaps
 from models.messages import QT_TR_NOOP, joined, message, reason_of
@@ -37,10 +47,19 @@ from models.readings.sheet import Column, ParsedReadings
 from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import scope_statement
 
+if TYPE_CHECKING:
+    from models.certificate.document import CertificateDocument
+    from models.certificate.metadata import CertificateMetadata
+
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
+           "view_needs",
            "AcceptsRuns", "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates",
-           "OverlaysRuns", "SendsReference", "SendsRuns", "SentReference", "SettingsError",
-           "ShowsHeadline", "Workbench", "WritesCorrectionTable"]
+           "JudgesSignals", "OverlaysRuns", "ResultT", "SendsReference", "SendsRuns",
+           "SentReference", "SettingsError", "ShowsHeadline", "Workbench",
+           "WritesCorrectionTable"]
+
+# the type of a workbench's result (its analysis gives it; everything else takes it)
+ResultT = TypeVar("ResultT")
 
 # Every workbench states errors of indication (VIM 4.1): indicated − reference; a correction
 # is the negative of an error (models.sign_convention; SIGN_CONVENTION(_TEXT) imported above)
@@ -50,7 +69,7 @@ _REQUIRED = ("key", "title", "columns", "parameters", "sample_file", "method_ref
              "presenter")
 
 
-class Workbench(ABC):
+class Workbench(ABC, Generic[ResultT]):
     """The core of every workbench. A concrete class sets the attributes below and the
     three methods; its one object is listed in :mod:`models.registry`."""
 
@@ -79,15 +98,15 @@ class Workbench(ABC):
             raise TypeError(f"workbench {type(self).__name__} does not set {', '.join(missing)}")
 
     @abstractmethod
-    def analyze(self, parsed: ParsedReadings, settings: Mapping[str, Any]) -> Any:
+    def analyze(self, parsed: ParsedReadings, settings: Mapping[str, Any]) -> ResultT:
         """The result of the parsed readings analysed with the checked settings."""
 
     @abstractmethod
-    def to_json(self, result: Any) -> dict[str, Any]:
+    def to_json(self, result: ResultT) -> dict[str, Any]:
         """The result as the command line's JSON (``anglebench analyze … --json``)."""
 
     @abstractmethod
-    def summary(self, result: Any) -> str:
+    def summary(self, result: ResultT) -> str:
         """The result as readable text."""
 
     def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
@@ -104,7 +123,7 @@ class Workbench(ABC):
         return parsed, None
 
     def analyze_as_far_as_it_goes(self, parsed: ParsedReadings,
-                                  settings: Mapping[str, Any]) -> Any:
+                                  settings: Mapping[str, Any]) -> ResultT:
         """The result of the complete units (its ``incomplete``: the last unit in progress,
         whose readings enter no figure); ValueError when no unit is complete yet."""
         complete, unit = self.split_incomplete(parsed, settings)
@@ -169,22 +188,29 @@ class Workbench(ABC):
             merged.update({k: v for k, v in settings.items() if k in self.default_settings})
         return merged
 
-    def headline_figures(self, result: Any) -> dict[str, float]:
+    def headline_figures(self, result: ResultT) -> dict[str, float]:
         """The headline figures that are numbers (the window's table, the register's trend)."""
         if not isinstance(self, ShowsHeadline):
             return {}
         return {k: float(v) for k, v in self.headline(result).items()
                 if isinstance(v, int | float) and math.isfinite(v)}
 
-    def certificate_document(self, result: Any, metadata: Any, source_name: str = "",
-                             settings: Mapping[str, Any] | None = None) -> Any:
+    def certificate_document(self, result: ResultT, metadata: CertificateMetadata, source_name: str = "",
+                             settings: Mapping[str, Any] | None = None) -> CertificateDocument:
         """The certificate content of ``result`` (see models.certificate.document), listing
-        the ``settings`` it was analysed with as their declarations word them."""
+        the ``settings`` it was analysed with as their declarations word them.
+
+        ``settings`` are the ones ``result`` was analysed with: the certificate's budget
+        reads the settings it needs (the laboratory's CMC, …) from them, and the listing
+        states the same ones, so what the certificate says and what it computed cannot
+        differ. The caller keeps a result and its settings together (the window's
+        presenter: ``result_settings``); None: the defaults for the budget, no listing."""
         if not isinstance(self, IssuesCertificates):
             raise ValueError(f"{self.title}: no certificate is defined")
-        document = self.certificate(result, metadata, source_name)
+        checked = self.checked_settings(settings)
+        document = self.certificate(result, metadata, source_name,
+                                    checked if settings is not None else None)
         if settings is not None:
-            checked = self.checked_settings(settings)
             listing = tuple((p.label, p.text(checked[p.key])) for p in self.parameters)
             document = dataclasses.replace(document, settings=listing)
         basis = self.traceability_basis
@@ -203,7 +229,7 @@ class Workbench(ABC):
         return document
 
 
-class IssuesCertificates(ABC):
+class IssuesCertificates(ABC, Generic[ResultT]):
     """Issues a test certificate of its result."""
 
     #: what its results are traceable through when no reference standard enters them
@@ -228,66 +254,74 @@ class IssuesCertificates(ABC):
     #: prints no U beside it (e.g. a U the budget gives without one of its inputs)
     dcc_column_notes: ClassVar[Mapping[str, str]] = {}
 
-    def dcc_reference_face_deviations(self, result: Any, metadata: Any) -> Any:
+    def dcc_reference_face_deviations(self, result: ResultT, metadata: CertificateMetadata) -> Any:
         """A reference polygon's face deviations from face 1 the result rests on, with the U
         and k its certificate states: (deviations, U, k) in arcseconds, stated in the DCC's
         shared form; None: none."""
         return None
 
-    def dcc_point_uncertainties(self, result: Any, metadata: Any = None) -> dict[str, Any]:
+    def dcc_point_uncertainties(self, result: ResultT, metadata: CertificateMetadata | None = None,
+                                settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """U and k per point of certificate columns whose U no budget of
         :meth:`uncertainty_budgets` holds (e.g. an error stated from a reference point),
         by column name: PointUncertainty, with the certificate details ``metadata`` (the
-        standards whose U enters). The DCC takes each point's k from them."""
+        standards whose U enters) and the ``settings`` the result was analysed with. The DCC
+        takes each point's k from them."""
         return {}
 
     @abstractmethod
-    def certificate(self, result: Any, metadata: Any, source_name: str = "") -> Any:
+    def certificate(self, result: ResultT, metadata: CertificateMetadata, source_name: str = "",
+                    settings: Mapping[str, Any] | None = None) -> CertificateDocument:
         """The :class:`~models.certificate.document.CertificateDocument` of ``result``
-        (without the settings' listing: :meth:`Workbench.certificate_document` adds it)."""
+        (without the settings' listing: :meth:`Workbench.certificate_document` adds it),
+        its budget from the ``settings`` ``result`` was analysed with (None: the defaults)."""
 
-    def uncertainty_budgets(self, result: Any, metadata: Any) -> dict[str, Any]:
+    def uncertainty_budgets(self, result: ResultT, metadata: CertificateMetadata,
+                            settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """The budget (models.uncertainty.budget.UncertaintyBudget, or
         models.certificate.uncertainty_json.PointUncertainty) of each error array of the
         JSON, by its name (``"object/name"`` for an array inside an object): the JSON gets
-        ``expanded_uncertainty_<name>`` and ``coverage_factor_<name>`` beside it."""
+        ``expanded_uncertainty_<name>`` and ``coverage_factor_<name>`` beside it. With the
+        ``settings`` ``result`` was analysed with (None: the defaults)."""
         return {}
 
-    def decided_errors(self, result: Any, metadata: Any) -> Any:
+    def decided_errors(self, result: ResultT, metadata: CertificateMetadata) -> Any:
         """The error curve the statement of conformity is made on (the array the
         certificate passes to models.uncertainty.conformity.decide_conformity, in the
         budget's unit): the JSON states its measured figure even when no U can be given
         for it. None when the workbench does not say."""
         return None
 
-    def decided_tolerance(self, result: Any, metadata: Any, unit: str) -> float | None:
+    def decided_tolerance(self, result: ResultT, metadata: CertificateMetadata, unit: str) -> float | None:
         """The tolerance the statement of conformity is made against, in ``unit`` (the
         certificate details' by default); None when none is set."""
         return metadata.tolerance_in(unit)
 
-    def certified_json(self, result: Any, metadata: Any) -> dict[str, Any]:
+    def certified_json(self, result: ResultT, metadata: CertificateMetadata,
+                       settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
         """Keys of the JSON whose figures the certificate details change (a figure's
         interval with the reference standards' U): they replace the keys of ``to_json``
-        of the same name, so that the JSON states what the certificate prints."""
+        of the same name, so that the JSON states what the certificate prints (with the
+        ``settings`` ``result`` was analysed with)."""
         return {}
 
-    def certificate_doubt(self, result: Any) -> str:
+    def certificate_doubt(self, result: ResultT) -> str:
         """Why a certificate of ``result`` needs the user's confirmation first ("" when it
         does not): figures no instrument of the kind shows (the window asks; the command
         line refuses without --confirm-implausible)."""
         return ""
 
 
-class WritesCorrectionTable(ABC):
+class WritesCorrectionTable(ABC, Generic[ResultT]):
     """Writes a correction or compensation table (``anglebench analyze … --table``, the
     window's export button)."""
 
     @abstractmethod
-    def correction_table(self, result: Any, settings: Mapping[str, Any], path: str) -> str:
+    def correction_table(self, result: ResultT, settings: Mapping[str, Any], path: str) -> str:
         """Writes the table of ``result`` to ``path``; returns what was written."""
 
 
-class JudgesSignals(ABC):
+class JudgesSignals(ABC, Generic[ResultT]):
     """Its result holds two quadrature signals' fits: they are judged against a signal
     tolerance preset and an interpolator table is made from them (``--signal-preset``,
     ``--interpolator-table``: models/fringe/signal_tolerance.py, interpolator_table.py).
@@ -296,6 +330,9 @@ class JudgesSignals(ABC):
     #: the argparse destinations of its options (a workbench without the capability
     #: refuses them)
     signal_flags: tuple[str, ...] = ()
+    #: its view shows a read head's signals live against the same tolerances (the window's
+    #: Instrument › Live signals…, app/capture/signal_live.py): the panel and its opener
+    view_needs: ClassVar[tuple[str, ...]] = ("live_signals", "open_live_signals")
 
     @abstractmethod
     def add_signal_arguments(self, parser: Any, words: Callable[[str], str]) -> None:
@@ -306,21 +343,21 @@ class JudgesSignals(ABC):
         """What the options ask for; ValueError (a message) when they do not hold."""
 
     @abstractmethod
-    def signal_results(self, args: Any, result: Any, setup: Any
+    def signal_results(self, args: Any, result: ResultT, setup: Any
                        ) -> tuple[dict[str, Any], list[Any], Any]:
         """(the JSON keys to add, the summary lines, the table to write or None)."""
 
     @abstractmethod
-    def write_signal_table(self, args: Any, result: Any, table: Any) -> Any:
+    def write_signal_table(self, args: Any, result: ResultT, table: Any) -> Any:
         """Write the table (OSError when it cannot be); what to say of it."""
 
 
-class SendsRuns(ABC):
+class SendsRuns(ABC, Generic[ResultT]):
     """Its run can be sent to the workbench that accepts runs, to be judged there
     (ISO 230-2 / VDI 3441)."""
 
     @abstractmethod
-    def run_rows(self, result: Any) -> list[list[str]]:
+    def run_rows(self, result: ResultT) -> list[list[str]]:
         """The result as readings rows (target in °, run, direction, deviation in arcsec)."""
 
 
@@ -352,14 +389,14 @@ class SentReference:
         return max(self.expanded_uncertainty.values()) / self.coverage_factor
 
 
-class SendsReference(ABC):
+class SendsReference(ABC, Generic[ResultT]):
     """Its result is a reference standard's values for another workbench (the window's
     "Send … as reference"; the receiver is found by :class:`AcceptsReference`)."""
 
     reference_kind: ClassVar[str]  # e.g. "polygon face deviations"
 
     @abstractmethod
-    def sent_reference(self, result: Any) -> SentReference:
+    def sent_reference(self, result: ResultT) -> SentReference:
         """The reference in ``result`` (ValueError why there is none)."""
 
 
@@ -370,35 +407,39 @@ class AcceptsReference(ABC):
     accepted_reference: ClassVar[str]
 
 
-class ComparesAfterLog(ABC):
+class ComparesAfterLog(ABC, Generic[ResultT]):
     """Compares its result with a log measured after compensation."""
 
     @abstractmethod
-    def after_log(self, path: Any, settings: Any) -> Any:
+    def after_log(self, path: Any, settings: Any) -> ResultT:
         """The result of the log at ``path`` analysed with ``settings`` (ValueError why not)."""
 
     @abstractmethod
-    def compare_after(self, before: Any, after: Any) -> Any:
+    def compare_after(self, before: ResultT, after: ResultT) -> Any:
         """The comparison of ``before`` and ``after`` (``as_dict()``, ``text(name)``)."""
 
 
-class OverlaysRuns(ABC):
+class OverlaysRuns(ABC, Generic[ResultT]):
     """Draws a second run (before/after, an earlier certificate) over today's error curve."""
 
+    #: the panel the overlay draws on and its legend (widgets/run_overlay.py)
+    view_needs: ClassVar[tuple[str, ...]] = ("error_plot.corrected_plot",
+                                             "error_plot.corrected_legend")
+
     @abstractmethod
-    def overlay_figure(self, result: Any) -> PlotFigure:
+    def overlay_figure(self, result: ResultT) -> PlotFigure:
         """The figure whose "corrected" series is overlaid."""
 
 
-class ShowsHeadline(ABC):
+class ShowsHeadline(ABC, Generic[ResultT]):
     """States its result in one line and in a few figures."""
 
     @abstractmethod
-    def verdict(self, result: Any) -> str:
+    def verdict(self, result: ResultT) -> str:
         """The result in one line, shown above everything else in the window."""
 
     @abstractmethod
-    def headline(self, result: Any) -> dict[str, float]:
+    def headline(self, result: ResultT) -> dict[str, float]:
         """The figures the register keeps to show an instrument's drift over its
         calibrations ({"name (unit)": value})."""
 
@@ -418,5 +459,14 @@ class GuidesAcquisition(ABC):
 #: every capability a workbench may declare (the contract test lists them)
 CAPABILITIES = (IssuesCertificates, WritesCorrectionTable, SendsRuns, AcceptsRuns,
                 ComparesAfterLog, OverlaysRuns, ShowsHeadline, GuidesAcquisition,
-                SendsReference, AcceptsReference)
+                SendsReference, AcceptsReference, JudgesSignals)
+
+
+def view_needs(workbench: Workbench[Any]) -> dict[str, tuple[str, ...]]:
+    """What each capability of ``workbench`` needs of its view, by the capability's name:
+    dotted attribute paths (``"error_plot.corrected_plot"``) every view of a workbench that
+    declares the capability has. The window relies on them without asking the view; the
+    contract test checks each workbench's real view."""
+    return {c.__name__: tuple(getattr(c, "view_needs", ())) for c in CAPABILITIES
+            if isinstance(workbench, c) and getattr(c, "view_needs", ())}
 

@@ -32,6 +32,7 @@ from models.workbench import (
     ShowsHeadline,
     Workbench,
     WritesCorrectionTable,
+    view_needs,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -204,6 +205,23 @@ def test_presenter_lives_in_its_folder(key):
     assert inspect.isclass(cls) and issubclass(cls, WorkbenchPresenter), (
         f"widgets/{key}/presenter.py: the presenter derives from WorkbenchPresenter")
     assert cls.view_class is not None, f"widgets/{key}/presenter.py: set view_class"
+
+
+def test_its_view_has_what_its_capabilities_need(key, qtbot):
+    """Each capability the window serves through the view names what it needs of it
+    (``view_needs``: OverlaysRuns draws on ``error_plot.corrected_plot``, …); the window
+    relies on them without asking, so every workbench's real view has each."""
+    cls = presenter_class(KINDS[key])
+    view = cls.view_class()
+    qtbot.addWidget(view)
+    for capability, needs in view_needs(KINDS[key]).items():
+        for dotted in needs:
+            holder = view
+            for part in dotted.split("."):
+                assert hasattr(holder, part), (
+                    f"widgets/{key}/view.py: {key} is {capability}, whose view_needs names "
+                    f"view.{dotted}; its view has no {part!r}")
+                holder = getattr(holder, part)
 
 
 @pytest.mark.slow

@@ -8,6 +8,7 @@ lays out the panels, names their axes and legends, and reads the curves under th
 from __future__ import annotations
 
 import dataclasses
+from typing import Any
 
 import numpy as np
 import pyqtgraph as pg
@@ -126,15 +127,19 @@ class ErrorPlot(QWidget):
         place_legend(self.main_plot, self.legend)
         place_legend(self.corrected_plot, self.corrected_legend)
 
-    def _figure(self, *roles: str, x=(), ys=None) -> PlotFigure:
-        """The figure a panel draws: a series per role (empty where ``ys`` has ``None``),
-        named as the legend names it."""
-        x = np.asarray(x, dtype=float)
-        ys = ys if ys is not None else [None] * len(roles)
-        return PlotFigure("", "", "", tuple(
-            PlotSeries(self._curve_names.get(role, ""), x if y is not None else np.empty(0),
-                       np.asarray(y, dtype=float) if y is not None else np.empty(0), role=role)
-            for role, y in zip(roles, ys, strict=True)))
+    def _figure(self, *roles: str, curves: dict[str, tuple[Any, Any]] | None = None
+                ) -> PlotFigure:
+        """The figure a panel draws: a series per role, each over its own x (``curves``:
+        role → (x, y); empty where y is ``None`` or the role is not given), named as the
+        legend names it."""
+        series = []
+        for role in roles:
+            x, y = (curves or {}).get(role, ((), None))
+            series.append(PlotSeries(
+                self._curve_names.get(role, ""),
+                np.asarray(x, dtype=float) if y is not None else np.empty(0),
+                np.asarray(y, dtype=float) if y is not None else np.empty(0), role=role))
+        return PlotFigure("", "", "", tuple(series))
 
     def set_curve_names(self, raw: str, model: str, corrected: str) -> None:
         """The legend's names of the three curves ("": none), in English."""
@@ -145,13 +150,29 @@ class ErrorPlot(QWidget):
                 renderer.rename(index, self._curve_names[role])
 
     def set_curves(self, x, raw=None, model=None, corrected=None, beside=()) -> None:
-        """Update the curves (arcsec over x); ``None`` hides a curve. ``beside``: series
-        drawn with the corrected error on its panel (its U band and the tolerance ±T,
-        models/tolerance_band.py)."""
-        points = np.size(x)  # a hidden curve's legend sample drawn as its panel's others
-        self.main_renderer.show(self._figure("raw", "model", x=x, ys=(raw, model)),
-                                follow=False, points=points)
-        corrected_figure = self._figure("corrected", x=x, ys=(corrected,))
+        """Update the curves (arcsec over x, one x for the three); ``None`` hides a curve.
+        ``beside``: series drawn with the corrected error on its panel (its U band and the
+        tolerance ±T, models/tolerance_band.py)."""
+        self._draw({"raw": (x, raw), "model": (x, model), "corrected": (x, corrected)},
+                   beside)
+
+    def _draw(self, curves: dict[str, tuple[Any, Any]], beside=()) -> None:
+        """The raw, model and corrected curves, each ``(x, y)`` over its own x (``y`` None:
+        hidden). ValueError naming the series whose x and y differ in length."""
+        for role, (x, y) in curves.items():
+            if y is not None and np.size(x) != np.size(y):
+                raise ValueError(f"error plot: the {role} series "
+                                 f"{self._curve_names.get(role, '')!r} has {np.size(y)} values "
+                                 f"over {np.size(x)} x values; each series needs one x per value")
+        for series in beside:
+            if np.size(series.x) != np.size(series.y):
+                raise ValueError(f"error plot: the {series.role} series {series.label!r} has "
+                                 f"{np.size(series.y)} values over {np.size(series.x)} x values")
+        # a hidden curve's legend sample drawn as its panel's others
+        points = max((np.size(x) for x, y in curves.values() if y is not None), default=0)
+        self.main_renderer.show(self._figure("raw", "model", curves=curves), follow=False,
+                                points=points)
+        corrected_figure = self._figure("corrected", curves=curves)
         if beside:
             corrected_figure = dataclasses.replace(
                 corrected_figure, series=corrected_figure.series + tuple(beside))
@@ -166,14 +187,15 @@ class ErrorPlot(QWidget):
 
     def show_figure(self, figure, residuals=None) -> None:
         """Draw a declared figure (models/plots.py): its ``raw`` and ``model`` series on the
-        upper panel, ``corrected`` on its own, the residual figure on the lowest."""
+        upper panel, ``corrected`` on its own, the residual figure on the lowest. Each series
+        is drawn over its own x (a model on a fine grid beside the readings is fine);
+        ValueError naming a series whose x and y differ in length."""
         self._state_units(figure.y_label, residuals.y_label if residuals is not None else "")
         parts = {role: figure.by_role(role) for role in ("raw", "model", "corrected")}
         self.set_curve_names(*(s.label if s is not None else "" for s in parts.values()))
-        x = next(s.x for s in parts.values() if s is not None)
         beside = tuple(s for s in figure.series if s.role in (UNCERTAINTY_ROLE, TOLERANCE_ROLE))
-        self.set_curves(x, *(s.y if s is not None else None for s in parts.values()),
-                        beside=beside)
+        self._draw({role: (s.x, s.y) if s is not None else ((), None)
+                    for role, s in parts.items()}, beside)
         series = residuals.by_role("residual") if residuals is not None else None
         self.set_residuals(series.x if series is not None else [],
                            series.y if series is not None else None)
@@ -207,7 +229,7 @@ class ErrorPlot(QWidget):
         if residuals is None:
             self.residual_renderer.clear()
         else:
-            self.residual_renderer.show(self._figure("residual", x=x, ys=(residuals,)))
+            self.residual_renderer.show(self._figure("residual", curves={"residual": (x, residuals)}))
 
     def clear(self) -> None:
         """No data: the curves emptied and the crosshair's line and readout with them (it

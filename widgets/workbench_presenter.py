@@ -89,7 +89,7 @@ class _AnalysisTask(QRunnable):
         except AnalysisCancelled:
             emit_if_alive(signals.cancelled, generation)
             return
-        emit_if_alive(signals.finished, generation, (parsed, result, display), error)
+        emit_if_alive(signals.finished, generation, (parsed, result, display, settings), error)
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -188,6 +188,9 @@ class WorkbenchPresenter(QObject):
         self._settings: dict[str, Any] = kind.settings_with_defaults(None)
         self._settings_modified = False
         self.result: Any = None
+        # the settings ``result`` was analysed with: a certificate of it states and computes
+        # with these, not the form's (edited since, their analysis still to come)
+        self.result_settings: dict[str, Any] = dict(self._settings)
         self.display: Any = None  # prepare_display(result)
         self.parsed: ParsedReadings | None = None
         self.problem = ""
@@ -286,9 +289,10 @@ class WorkbenchPresenter(QObject):
         if budgets_of is None:
             return None, {}, ""
         try:
-            budgets = budgets_of(result, meta)
+            # with the settings the result was analysed with, as its certificate's budget
+            budgets = budgets_of(result, meta, self.result_settings)
             unit = next((b.unit.key for b in budgets.values() if hasattr(b, "unit")), None)
-            tolerance = meta.tolerance_in(unit or self.kind.error_unit(self._settings))
+            tolerance = meta.tolerance_in(unit or self.kind.error_unit(self.result_settings))
         except (ValueError, ArithmeticError) as exc:
             log.debug("no tolerance band: %s", exc)
             return None, {}, ""
@@ -598,7 +602,9 @@ class WorkbenchPresenter(QObject):
                               self.workers))
             return
         parsed = self._without_waiting_rows(self.sheet.parse())
-        result, error = _run_analysis(self.kind, parsed, dict(self._settings))
+        settings = dict(self._settings)
+        result, error = _run_analysis(self.kind, parsed, settings)
+        self.result_settings = settings
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
 
     def _on_task_cancelled(self, _generation: int) -> None:
@@ -608,7 +614,8 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display = payload
+            parsed, result, display, settings = payload
+            self.result_settings = settings
             self._finish(parsed, result, error, display)
 
     def _next_text(self) -> str:

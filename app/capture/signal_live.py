@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from app.capture.signal_worker import SignalStreamWorker
 from app.capture.simulators import ReadHeadSimulator
+from models.workbench import JudgesSignals
 
 __all__ = ["DemonstrationHead", "attach_live_signals", "open_live_signals", "open_signal_stream"]
 
@@ -47,9 +48,9 @@ def attach_live_signals(window) -> None:
     """Give every workbench view that has a live signals panel its stream opener, the
     demonstration head, its capture sessions and the lab defaults."""
     for presenter in window.presenters:
-        panel = getattr(presenter.view, "live_signals", None)
-        if panel is None:
+        if not isinstance(presenter.kind, JudgesSignals):  # its view_needs: the panel
             continue
+        panel = presenter.view.live_signals
         key = presenter.kind.key
         panel.attach(open_signal_stream, DemonstrationHead,
                      sessions=lambda k=key: window.capture_panel.sessions.setdefault(k, []),
@@ -61,7 +62,7 @@ def open_live_signals(window) -> bool:
     """Instrument › Live signals…: the workbench with a live signals window (the fringe
     workbench) brought to the front, its live window opened; False when there is none."""
     for index, presenter in enumerate(window.presenters):
-        if hasattr(presenter.view, "open_live_signals"):
+        if isinstance(presenter.kind, JudgesSignals):  # its view_needs: the opener
             window.tabs.setCurrentIndex(index)
             presenter.view.open_live_signals()
             return True

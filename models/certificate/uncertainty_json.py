@@ -138,14 +138,14 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     probability = float(metadata.coverage_probability)
     withheld = ""
     try:
-        budgets = kind.uncertainty_budgets(result, metadata)
+        budgets = kind.uncertainty_budgets(result, metadata, settings)
     except _NOT_DETERMINED as exc:  # U not determined: the arrays' U null
         names = getattr(kind, "uncertainty_array_names", lambda r: ())(result)
         budgets, withheld = dict.fromkeys(names), str(reason_of(exc))
     conformity, tolerance, why = None, None, ""
     if metadata.tolerance is not None or getattr(kind, "tolerance_in_settings", False):
         try:  # the decision as the certificate makes it
-            document = kind.certificate(result, metadata)
+            document = kind.certificate(result, metadata, settings=settings)
             conformity, tolerance = document.conformity, document.tolerance
         except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
@@ -193,7 +193,8 @@ def _measured_figure(kind: Any, result: Any, metadata: Any) -> float | None:
     return 0.5 * float(np.ptp(e))
 
 
-def certified_json(kind: Any, result: Any, metadata: Any) -> dict[str, Any]:
+def certified_json(kind: Any, result: Any, metadata: Any,
+                   settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """The keys of ``kind``'s JSON that the certificate details change (positioning's figure
     intervals with the reference standards' U, as the certificate prints them): they
     replace ``to_json``'s (:meth:`models.workbench.IssuesCertificates.certified_json`);
@@ -202,6 +203,6 @@ def certified_json(kind: Any, result: Any, metadata: Any) -> dict[str, Any]:
     if hook is None:
         return {}
     try:
-        return dict(hook(result, metadata))
+        return dict(hook(result, metadata, settings))
     except _NOT_DETERMINED:
         return {}

@@ -295,6 +295,29 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
     return result
 
 
+# the settings a cross-calibration result holds as it was analysed with them (setting → the
+# result's field): its own U figures (expanded_u_arcsec, the JSON's) are made from them,
+# so they stay in the result, and a certificate given other settings is refused
+_ANALYSED_WITH = (("certificate_of", "certificate_of"), ("closure_drift", "drift_mode"),
+                  ("ac_scale_pct", "ac_scale_pct"), ("tilt_bound_arcsec", "tilt_bound_arcsec"),
+                  ("cmc_arcsec", "cmc_polygon_arcsec"),
+                  ("cmc_encoder_arcsec", "cmc_encoder_arcsec"))
+
+
+def _check_analysed_with(result: CrossCalResult, settings: Mapping[str, Any] | None) -> None:
+    """ValueError naming the setting when ``settings`` (those a certificate is to state) are
+    not the ones ``result`` was analysed with: the certificate would list one figure and
+    compute with another. None: nothing to compare."""
+    if settings is None:
+        return
+    for key, field_name in _ANALYSED_WITH:
+        if key in settings and settings[key] != getattr(result, field_name):
+            raise ValueError(message(QT_TR_NOOP(
+                "the setting {setting} is {now}, but the result was analysed with {then}: "
+                "analyse again before a certificate is made"),
+                setting=key, now=settings[key], then=getattr(result, field_name)))
+
+
 def _list(values) -> list[float] | None:
     return None if values is None else [float(v) for v in values]
 
@@ -429,8 +452,9 @@ def _comparators(metadata) -> bool:
     return any((std.uncertainty_in("arcsec") or 0.0) > 0 for std in metadata.standards)
 
 
-class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadline,
-               SendsReference, GuidesAcquisition):
+class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
+               WritesCorrectionTable[CrossCalResult], ShowsHeadline[CrossCalResult],
+               SendsReference[CrossCalResult], GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -473,12 +497,14 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
     summary = staticmethod(summary)
     verdict = staticmethod(verdict)
 
-    def certificate(self, result, metadata, source_name=""):
+    def certificate(self, result, metadata, source_name="", settings=None):
         from models.crosscal.report import crosscal_certificate  # the PDF's content, when asked
 
-        return crosscal_certificate(result, metadata, source_name, self.method_reference)
+        _check_analysed_with(result, settings)
+        return crosscal_certificate(result, metadata, source_name, self.method_reference,
+                                    settings)
 
-    def dcc_point_uncertainties(self, result, metadata=None):
+    def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The encoder's error from step 0: its U (the certificate's "U from step 0", the
         comparators in) with the solution's k, as the polygon's from face 1 in
         :meth:`uncertainty_budgets`."""
@@ -497,7 +523,7 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
 
         return _per_point(result)[0]
 
-    def uncertainty_budgets(self, result, metadata):
+    def uncertainty_budgets(self, result, metadata, settings=None):
         # each item's budget as its certificate states it (about the mean of the n values);
         # nothing when the design does not separate them (the values are not the result)
         import dataclasses
@@ -506,6 +532,7 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
         from models.certificate.uncertainty_json import PointUncertainty
         from models.crosscal.report import crosscal_budget
 
+        _check_analysed_with(result, settings)
         s = result.solution
         if not s.separable:
             return {}
@@ -523,13 +550,13 @@ class CrossCal(Workbench, IssuesCertificates, WritesCorrectionTable, ShowsHeadli
             np.full(s.faces, float(s.coverage_factor)))
         return budgets
 
-    def certified_json(self, result, metadata):
+    def certified_json(self, result, metadata, settings=None):
         """With the certificate details, the U arrays that exist since before #39 are the
         certificate's too (the comparators' stated U in): one figure for each value in the
         JSON, the certificate and the DCC."""
         if not result.solution.separable:
             return {}
-        budgets = self.uncertainty_budgets(result, metadata)
+        budgets = self.uncertainty_budgets(result, metadata, settings)
         return {"encoder_error_U_arcsec": _list(budgets["encoder_error_arcsec"].expanded),
                 "polygon_deviation_U_arcsec": _list(budgets["polygon_deviation_arcsec"].expanded),
                 "polygon_deviation_U_from_face1_arcsec":

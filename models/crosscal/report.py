@@ -13,6 +13,8 @@ reading through the same design (its standard uncertainty scales σ's share).
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -274,7 +276,8 @@ def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None 
 
 
 def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str = "",
-                         method_reference: str = "") -> CertificateDocument:
+                         method_reference: str = "",
+                         settings: Mapping[str, Any] | None = None) -> CertificateDocument:
     s = result.solution
     values, _, item = _per_point(result)
     if values is None:

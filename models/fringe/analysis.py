@@ -432,7 +432,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings,
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
-        cmc=float(s["cmc"]),
     )
 
 
@@ -598,8 +597,9 @@ def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: s
                    else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
 
 
-class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns, ShowsHeadline,
-             JudgesSignals):
+class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
+             WritesCorrectionTable[FringeResult], OverlaysRuns[FringeResult],
+             ShowsHeadline[FringeResult], JudgesSignals[FringeResult]):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -644,8 +644,8 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
 
         return write_table(args, result, table)
 
-    def certificate(self, result, metadata, source_name=""):
-        return fringe_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result, metadata, source_name="", settings=None):
+        return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
     def decided_errors(self, result, metadata):
         # half range: the fitted model's continuous as-found error over the whole period
@@ -655,11 +655,11 @@ class Fringe(Workbench, IssuesCertificates, WritesCorrectionTable, OverlaysRuns,
             return model_error_curve(result)[1]
         return result.raw_error
 
-    def uncertainty_budgets(self, result, metadata):
+    def uncertainty_budgets(self, result, metadata, settings=None):
         # as found: the signals' and the stated inputs; compensated: with the fitted model
         u = result.unit
-        return {f"raw_error_{u}": fringe_budget(result, metadata, as_found=True),
-                f"compensated_error_{u}": fringe_budget(result, metadata)}
+        return {f"raw_error_{u}": fringe_budget(result, metadata, as_found=True, settings=settings),
+                f"compensated_error_{u}": fringe_budget(result, metadata, settings=settings)}
 
     def error_unit(self, settings):
         """nm when an interferometer's period is set, as :func:`analyze` does; else arcsec."""

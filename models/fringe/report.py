@@ -23,6 +23,8 @@ Phases are converted to shaft angle by the grating period 1296000"/L.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -48,6 +50,7 @@ from models.fringe.model import (
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
 
@@ -156,8 +159,10 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     return out
 
 
-def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False) -> UncertaintyBudget:
-    """The budget of the compensated error, or of the as-found error (no model input)."""
+def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
+                  settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the compensated error, or of the as-found error (no model input), held
+    to the laboratory's CMC of the ``settings`` ``result`` was analysed with (None: none)."""
     n = result.theta_rad.size
     to_unit = result.period_length / (2.0 * math.pi)
     ds, dc = _phase_sensitivities(result)
@@ -183,7 +188,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False)
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit,
-                             floor=result.cmc)
+                             floor=cmc_of(settings, "cmc"))
 
 
 #: the points a period is judged on when the decided quantity is the half range of the
@@ -322,7 +327,8 @@ def printed_samples(raw: np.ndarray, comp: np.ndarray, big_u: np.ndarray, per: i
 
 
 def fringe_certificate(result, metadata: CertificateMetadata, source_name: str = "",
-                       method_reference: str = "") -> CertificateDocument:
+                       method_reference: str = "",
+                       settings: Mapping[str, Any] | None = None) -> CertificateDocument:
     as_left = bool(metadata.as_left_table_sha256) and \
         metadata.as_left_table_sha256.strip().lower() == result.table.sha256
     if metadata.as_left_table_sha256 and not as_left:
@@ -332,8 +338,9 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                        "{as_left_table_sha256}… was loaded into the encoder, but this analysis's table "
                        "is {sha256}…: export and load this table, or clear the checksum"),
             as_left_table_sha256=metadata.as_left_table_sha256[:16], sha256=result.table.sha256[:16]))
-    budget = fringe_budget(result, metadata, as_found=not as_left)
-    found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True)
+    budget = fringe_budget(result, metadata, as_found=not as_left, settings=settings)
+    found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True,
+                                                            settings=settings)
     big_u = budget.expanded
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw

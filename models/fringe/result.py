@@ -41,7 +41,6 @@ class FringeResult:
     warnings: list[str] = field(default_factory=list)
     # the budget's inputs the signals cannot show, as set (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
-    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
 
     @property
     def unit_symbol(self) -> str:

@@ -14,6 +14,7 @@ from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
 from models.polygon.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
     SHORT_FORM_COEFFICIENT,
     PolygonResult,
@@ -127,7 +128,7 @@ PARAMETERS = (
               help="Standard uncertainty of the measured roll; 0: the roll was not measured "
                    "(the bound above enters the budget, nothing is corrected)"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not identified",
-              "float", 300.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
+              "float", DEFAULT_TILT_BOUND_ARCSEC, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
               help="When the vertical readings cannot identify the tilt (none given, all equal, "
                    "or only 3 faces: no degrees of freedom) the pyramidal error is not removed: "
                    "its exact effect for a tilt up to this, in the worst direction, enters the "
@@ -493,8 +494,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         ac_roll_arcmin=float(s["ac_roll_arcmin"]), ac_alignment=frame,
         ac_roll_measured_arcmin=float(s["ac_roll_measured_arcmin"]) if roll_measured else None,
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
-        tilt_bound_arcsec=float(s["tilt_bound_arcsec"]),
-        reading_noise_arcsec=float(s["reading_noise_arcsec"]), cmc=float(s["cmc_arcsec"]),
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
     )
@@ -660,8 +659,9 @@ def positioning_rows(result: PolygonResult) -> list[list[str]]:
     return rows
 
 
-class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
-              GuidesAcquisition, AcceptsReference):
+class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], SendsRuns[PolygonResult],
+              OverlaysRuns[PolygonResult], ShowsHeadline[PolygonResult], GuidesAcquisition,
+              AcceptsReference):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -677,7 +677,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
         "polygon, the autocollimator, its roll, the reading noise, the zero reading, the "
         "drift — is in it), at each position with its own k.")}
 
-    def dcc_point_uncertainties(self, result, metadata=None):
+    def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The raw error (mean of the sets, before the pyramidal correction): the
         certificate's budget less the correction's own input (as the JSON's per-set
         ``error_arcsec``), U and k per position; none when the budget is not determined."""
@@ -687,7 +687,7 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
         from models.uncertainty.budget import UncertaintyBudget
 
         try:
-            full = polygon_budget(result, metadata)
+            full = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return {}
         raw = UncertaintyBudget(tuple(c for c in full.components
@@ -738,8 +738,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
                                                 "(set-up: faces n)")))
         return polygon_plan(faces, sets, closure=True, alternate=True)
 
-    def certificate(self, result, metadata, source_name=""):
-        return polygon_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result, metadata, source_name="", settings=None):
+        return polygon_certificate(result, metadata, source_name, self.method_reference, settings)
 
     tolerance_in_settings = True  # the grade
 
@@ -751,8 +751,8 @@ class Polygon(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadl
 
         return float(GRADE_ACCURACY_ARCSEC[result.grade])  # the one source: the grade
 
-    def uncertainty_budgets(self, result, metadata):
-        return polygon_json_budgets(result, metadata)
+    def uncertainty_budgets(self, result, metadata, settings=None):
+        return polygon_json_budgets(result, metadata, settings)
 
     def overlay_figure(self, result):
         return error_figure(result)

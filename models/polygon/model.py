@@ -265,6 +265,10 @@ class PolygonSetResult:
 #: the tilt fit's unknowns: the vertical reading's zero, ψ and ω
 TILT_FIT_UNKNOWNS = 3
 
+#: the largest tilt of the polygon on the shaft the budget assumes when the readings do not
+#: identify it (the setting tilt_bound_arcsec's default, ″)
+DEFAULT_TILT_BOUND_ARCSEC = 300.0
+
 
 def tilt_not_identified(ac_y_arcsec, label: str = "set 1") -> str:
     """Why one set's vertical readings cannot identify the tilt, naming it ("" when they can).
@@ -393,9 +397,6 @@ class PolygonResult:
     ac_roll_measured_arcmin: float | None = None  # measured roll ρ, corrected (None: not measured)
     u_ac_roll_arcmin: float = 0.0  # its standard uncertainty
     closure_rows: set[int] = field(default_factory=set)  # 0-based sheet rows
-    tilt_bound_arcsec: float = 300.0  # setting: the tilt bound when not identified (budget)
-    reading_noise_arcsec: float = 0.0  # setting: σ of a reading when not evaluated (0: none)
-    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
     warnings: list[str] = field(default_factory=list)
     # with n readings per point (setting readings per point): RepeatedReadings, and each
     # set's s/√n per position (sets, faces) of its encoder and autocollimator readings

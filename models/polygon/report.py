@@ -36,6 +36,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
 
@@ -55,6 +56,7 @@ from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, joined, message
 from models.polygon import KEY, TITLE
 from models.polygon.model import (
+    DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
     TILT_FIT_UNKNOWNS,
     PolygonResult,
@@ -65,6 +67,7 @@ from models.polygon.model import (
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity
+from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["polygon_budget", "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
            "repeated_readings_components", "setup_statement"]
@@ -179,8 +182,11 @@ def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]
                         common=True)]
 
 
-def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[BudgetComponent], float]:
-    """The reading noise of the mean and of the shared zero reading; also the noise figure."""
+def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0
+                      ) -> tuple[list[BudgetComponent], float]:
+    """The reading noise of the mean and of the shared zero reading; also the noise figure
+    (``stated_noise``: the setting's σ of a reading, used when the readings cannot evaluate
+    it; 0: not stated)."""
     directions = np.array([s.direction for s in result.sets])
     m_eff = _effective_sets(directions)
     corrected = np.array([s.corrected_error_arcsec for s in result.sets])
@@ -211,8 +217,8 @@ def _noise_components(result: PolygonResult, n: int, zero: int) -> tuple[list[Bu
                                       "{dof} degrees of freedom (no direction was measured "
                                       "twice)"), dof=dof)
             evaluation = "A"
-        elif result.reading_noise_arcsec > 0:
-            noise, dof, evaluation = result.reading_noise_arcsec, math.inf, "B"
+        elif stated_noise > 0:
+            noise, dof, evaluation = stated_noise, math.inf, "B"
             name = (QT_TR_NOOP("Reading noise, stated (mean of {sets} sets)")
                     if len(result.sets) > 1 else QT_TR_NOOP("Reading noise, stated (mean of 1 set)"))
             note = message(QT_TR_NOOP("σ = {s} of a reading (stated in the settings: the readings "
@@ -246,13 +252,13 @@ def _why_no_fit(result: PolygonResult) -> str:
     return message(QT_TR_NOOP("the vertical readings lie exactly on the fitted tilt curve"))
 
 
-def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int
+def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int,
+                                 bound: float = DEFAULT_TILT_BOUND_ARCSEC
                                  ) -> list[BudgetComponent]:
     """A tilt up to the stated bound, not identified and not removed: its exact effect on the
     errors against the zero face, in the worst direction (the set-up's frame, the roll's
     cross-talk over the vertical span 2ψ added), rectangular. One unknown tilt for the
-    whole run: common to every set, not reduced by repeating them."""
-    bound = result.tilt_bound_arcsec
+    whole run: common to every set, not reduced by repeating them (``bound``: the setting)."""
     if bound <= 0 or all(s.tilt is not None for s in result.sets):
         return []
     theta = result.sets[0].theta_deg
@@ -349,13 +355,20 @@ def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> li
     return out
 
 
-def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
+                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the mean corrected error, with the stated inputs of the ``settings``
+    ``result`` was analysed with (None: the defaults): the tilt bound when the tilt is not
+    identified, the σ of a reading when the readings cannot evaluate it, the laboratory's
+    CMC as the floor."""
+    stated = settings or {}
     n = result.faces
     zero = _zero_index(result)
     pair = np.full(n, math.sqrt(2.0))
     pair[zero] = 0.0
     components = _standard_components(metadata, zero, n)
-    noise_components, noise = _noise_components(result, n, zero)
+    noise_components, noise = _noise_components(
+        result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0))
     components += noise_components
     components += repeated_readings_components(result)
     u_pyr = _pyramidal_uncertainty(result)
@@ -364,12 +377,13 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata) -> Unce
             PYRAMIDAL_INPUT, "A", "normal", u_pyr, 1.0, 1.0,
             max(n - 3, 1), QT_TR_NOOP("covariance of ψ, ω from the tilt fits propagated through "
                                       "the set-up's exact correction")))
-    components += _unidentified_tilt_component(result, n, zero)
+    components += _unidentified_tilt_component(
+        result, n, zero, float(stated.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0))
     components += _roll_component(result, result.ac_roll_arcmin, n)
     components += _drift_component(result, noise, n, zero)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
-                             floor=result.cmc)
+                             floor=cmc_of(settings, "cmc_arcsec"))
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
@@ -382,7 +396,8 @@ _PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
                    "Repeated readings (s/√n)", "Closure drift", "Pyramidal correction (ψ, ω)")
 
 
-def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata) -> dict[str, Any]:
+def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
+                         settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """The budget of each error array of the JSON. ``mean_corrected_error_arcsec``: the
     certificate's. The arrays of every set (``error_arcsec`` before the pyramidal
     correction, ``pyramidal_error_arcsec`` the correction's own, ``corrected_error_arcsec``),
@@ -391,7 +406,7 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata) -
     √m_eff (√m) times larger, as for one set of them."""
     from models.certificate.uncertainty_json import PointUncertainty
 
-    full = polygon_budget(result, metadata)
+    full = polygon_budget(result, metadata, settings)
     m = len(result.sets)
     m_eff = _effective_sets(np.array([s.direction for s in result.sets]))
     one = full
@@ -449,9 +464,10 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
 
 
 def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
-                        source_name: str = "", method_reference: str = "") -> CertificateDocument:
+                        source_name: str = "", method_reference: str = "",
+                        settings: Mapping[str, Any] | None = None) -> CertificateDocument:
     tol = polygon_tolerance_arcsec(result, metadata)
-    budget = polygon_budget(result, metadata)
+    budget = polygon_budget(result, metadata, settings)
     big_u = budget.expanded
     m = len(result.sets)
     counting = (QT_TR_NOOP("with the face numbering") if result.counting > 0

@@ -360,7 +360,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["deviation"],
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
-    result.cmc = float(s["cmc"])
     for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),
@@ -536,8 +535,9 @@ def _figures_line(prefix: str, figures, symbol: str):
     return joined(parts)
 
 
-class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsRuns,
-                  ComparesAfterLog, ShowsHeadline):
+class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningResult],
+                  WritesCorrectionTable[PositioningResult], AcceptsRuns,
+                  ComparesAfterLog[PositioningResult], ShowsHeadline[PositioningResult]):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -577,26 +577,27 @@ class Positioning(Workbench, IssuesCertificates, WritesCorrectionTable, AcceptsR
         unit = settings.get("deviation_unit", "arcsec")
         return unit if unit in DEVIATION_UNITS else "arcsec"
 
-    def certificate(self, result, metadata, source_name=""):
-        return positioning_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result, metadata, source_name="", settings=None):
+        return positioning_certificate(result, metadata, source_name, self.method_reference,
+                                       settings)
 
     def decided_errors(self, result, metadata):
         return np.concatenate([stats.mean for _, _, stats in result.directions_present()])
 
-    def certified_json(self, result, metadata):
+    def certified_json(self, result, metadata, settings=None):
         # the figures' intervals with the certificate's budget (its reference standards' U):
         # the intervals the certificate prints
-        return figures_json(result, positioning_budget(result, metadata))
+        return figures_json(result, positioning_budget(result, metadata, settings))
 
     def uncertainty_array_names(self, result):
         return [f"per_target/mean_{name}" for name, _, _ in result.directions_present()]
 
-    def uncertainty_budgets(self, result, metadata):
+    def uncertainty_budgets(self, result, metadata, settings=None):
         # the budget's points: every target of each direction measured, direction after
         # direction (as the certificate's table); U of the mean deviation per_target.mean_*
         from models.certificate.uncertainty_json import PointUncertainty
 
-        budget = positioning_budget(result, metadata)
+        budget = positioning_budget(result, metadata, settings)
         out, start = {}, 0
         for name, _, _stats in result.directions_present():
             stop = start + result.positions.size

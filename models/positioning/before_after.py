@@ -171,7 +171,7 @@ def log_from_file(path: str | Path, settings: Mapping[str, Any] | None,
     if path.suffix.lower() == ".json":
         from models.project.file import load_project
 
-        state = load_project(path).workbenches.get(workbench.key)
+        state = load_project(path, {workbench.key: workbench}).workbenches.get(workbench.key)
         if state is None or not state.rows:
             raise _refuse(QT_TR_NOOP("{label} holds no readings of the {workbench} workbench"),
                           label=path.name, workbench=workbench.title)

@@ -161,7 +161,6 @@ class PositioningResult:
     # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
-    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
 
     @property
     def positions(self) -> np.ndarray:

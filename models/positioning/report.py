@@ -17,6 +17,8 @@ shown in the window and the JSON.
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -50,6 +52,7 @@ from models.positioning.model import (
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity, uncertainty_decimals
+from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
@@ -90,8 +93,10 @@ def _points(result: PositioningResult) -> list[tuple[str, np.ndarray, np.ndarray
             for name, _, stats in result.directions_present()]
 
 
-def positioning_budget(result: PositioningResult,
-                       metadata: CertificateMetadata) -> UncertaintyBudget:
+def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
+                       settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the mean deviations, held to the laboratory's CMC of the ``settings``
+    ``result`` was analysed with (None: none)."""
     points = _points(result)
     for name, _, s, n in points:
         once = result.positions[(n < 2) | ~np.isfinite(s)]
@@ -118,7 +123,7 @@ def positioning_budget(result: PositioningResult,
     components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
-                             result.deviation_unit, floor=result.cmc)
+                             result.deviation_unit, floor=cmc_of(settings, "cmc"))
 
 
 def repeated_readings_components(result: PositioningResult) -> list[BudgetComponent]:
@@ -255,8 +260,9 @@ def _figure_rows(result: PositioningResult,
 
 
 def positioning_certificate(result: PositioningResult, metadata: CertificateMetadata,
-                            source_name: str = "", method_reference: str = "") -> CertificateDocument:
-    budget = positioning_budget(result, metadata)
+                            source_name: str = "", method_reference: str = "",
+                            settings: Mapping[str, Any] | None = None) -> CertificateDocument:
+    budget = positioning_budget(result, metadata, settings)
     big_u = budget.expanded
     sym = result.symbol
     points = _points(result)

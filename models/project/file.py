@@ -31,12 +31,15 @@ import json
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from models import __version__ as APP_VERSION
 from models.capture.raw_record import raw_digest, raw_sessions_from_json
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.atomic_write import write_text_atomic
+
+if TYPE_CHECKING:
+    from models.workbench import Workbench
 
 __all__ = [
     "FORMAT_NAME",
@@ -127,8 +130,16 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
     yield "}"
 
 
-def project_from_json(text: str, source: str = "project") -> Project:
+def project_from_json(text: str, source: str = "project",
+                      kinds: Mapping[str, Workbench[Any]] | None = None) -> Project:
     """Build a :class:`Project` from JSON text, checking the schema.
+
+    ``kinds``: the workbenches by key (the caller's: models.registry.KINDS, or the one
+    workbench it reads): a schema-1 file's certificate details are in the unit of each
+    workbench's errors, which only the workbench knows (Workbench.error_unit); this module
+    imports no workbench and no registry. The details of a workbench not in ``kinds`` are
+    left as written. Only a schema-1 file with certificate details needs them: ValueError
+    when such a file is read without.
 
     Raises :class:`ProjectFileError` for damaged JSON, a foreign file or a
     file written by a newer schema.
@@ -182,10 +193,14 @@ def project_from_json(text: str, source: str = "project") -> Project:
             source=source))
     project = Project(metadata=dict(metadata))
     if version < 2 and certificates:
+        if kinds is None:
+            raise ValueError(f"{source}: a schema-1 project's certificate details are in each "
+                             "workbench's error unit: read it with kinds (the workbenches)")
         settings_of = {key: state.get("settings") for key, state in benches.items()
                        if isinstance(state, dict) and isinstance(state.get("settings"), dict)}
         project.metadata["certificates"] = {
-            key: migrate_certificate_details(details, _error_unit(key, settings_of.get(key, {})))
+            key: migrate_certificate_details(details, kinds[key].error_unit(
+                settings_of.get(key) or {})) if key in kinds else details
             for key, details in certificates.items()}
     for key, state in benches.items():
         if not isinstance(state, dict):
@@ -237,16 +252,6 @@ def _raw_capture(raw: Any, source: str) -> dict[str, list[dict[str, Any]]]:
                            "they were captured); nothing was changed"), where=where))
         out[str(key)] = sessions
     return out
-
-
-def _error_unit(workbench: str, settings: Mapping[str, Any]) -> str:
-    """The unit a schema-1 file's figures were in: the unit of that workbench's errors
-    with its settings (Workbench.error_unit); arcsec for a workbench this version does
-    not know (check_project refuses it after)."""
-    from models.registry import KINDS  # late: the registry loads every workbench
-
-    kind = KINDS.get(workbench)
-    return kind.error_unit(settings) if kind is not None else "arcsec"
 
 
 def migrate_certificate_details(details: dict[str, Any], error_unit: str) -> dict[str, Any]:
@@ -302,7 +307,9 @@ def save_project(path: str | Path, project: Project,
     write_text_atomic(path, project_json_parts(project, between_blocks))
 
 
-def load_project(path: str | Path) -> Project:
+def load_project(path: str | Path, kinds: Mapping[str, Workbench[Any]] | None = None
+                 ) -> Project:
+    """The project at ``path`` (``kinds``: the workbenches, see :func:`project_from_json`)."""
     path = Path(path)
     try:
         data = path.read_bytes()
@@ -316,4 +323,4 @@ def load_project(path: str | Path) -> Project:
         raise ProjectFileError(message(
             QT_TR_NOOP("{path}: damaged project file (not UTF-8 text)"),
             path=path)) from None
-    return project_from_json(text, str(path))
+    return project_from_json(text, str(path), kinds)

@@ -13,8 +13,9 @@ import os
 import threading
 import time
 import uuid
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
+from typing import Any
 
 from models.project.file import Project, ProjectFileError, load_project, save_project
 
@@ -128,11 +129,11 @@ class RecoveryStore:
             found.append(legacy)
         return sorted(found, key=lambda p: p.stat().st_mtime, reverse=True)
 
-    def load(self, path: Path) -> Project:
+    def load(self, path: Path, kinds: Mapping[str, Any] | None = None) -> Project:
         """Read an orphaned autosave. A damaged one is kept aside under a name of its own
         (never over an earlier damaged one), not deleted."""
         try:
-            return load_project(path)
+            return load_project(path, kinds)
         except ProjectFileError:
             self.set_aside(path, "damaged")
             raise

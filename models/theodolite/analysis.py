@@ -7,9 +7,12 @@ from typing import Any
 
 import numpy as np
 
+from models.certificate.document import CertificateDocument
+from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
-from models.readings.entry_plan import targets_from_text, theodolite_plan
+from models.plots import PlotFigure
+from models.readings.entry_plan import EntryPlan, targets_from_text, theodolite_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -128,7 +131,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
     result.repeats = repeats
-    result.cmc = float(s["cmc_arcsec"])
     return result
 
 
@@ -211,7 +213,7 @@ def summary(result: TheodoliteResult) -> str:
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
     s, c, r = ident.setup, result.corrected_stats, result.raw_stats
-    out = [
+    out: list[str] = [
         message(QT_TR_NOOP("Set-up identified from the elevation readings ({n} points, "
                            "reference θ = {theta}°):") if ident.method == "elevation" else
                 QT_TR_NOOP("Set-up identified from the azimuth readings ({n} points, "
@@ -240,8 +242,9 @@ def summary(result: TheodoliteResult) -> str:
     return lines(out)
 
 
-class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHeadline,
-                 GuidesAcquisition):
+class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResult],
+                 SendsRuns[TheodoliteResult], OverlaysRuns[TheodoliteResult],
+                 ShowsHeadline[TheodoliteResult], GuidesAcquisition):
     key = KEY
     title = TITLE
     columns = COLUMNS
@@ -261,7 +264,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     split_incomplete = staticmethod(split_incomplete)
     plan_reading_keys = ("azimuth_deg", "elevation_deg")
 
-    def entry_plan(self, settings):
+    def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
         passes = int(settings.get("plan_passes", 0) or 0)
         if not passes:
             return None
@@ -272,19 +275,24 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
     acquisition_guide = staticmethod(theodolite_guide)
     run_rows = staticmethod(positioning_rows)
 
-    def certificate(self, result, metadata, source_name=""):
-        return theodolite_certificate(result, metadata, source_name, self.method_reference)
+    def certificate(self, result: TheodoliteResult, metadata: CertificateMetadata,
+                    source_name: str = "", settings: Mapping[str, Any] | None = None
+                    ) -> CertificateDocument:
+        return theodolite_certificate(result, metadata, source_name, self.method_reference,
+                                      settings)
 
-    def uncertainty_budgets(self, result, metadata):
-        return theodolite_json_budgets(result, metadata)
+    def uncertainty_budgets(self, result: TheodoliteResult, metadata: CertificateMetadata,
+                            settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
+        return dict(theodolite_json_budgets(result, metadata, settings))
 
-    def decided_errors(self, result, metadata):
+    def decided_errors(self, result: TheodoliteResult, metadata: CertificateMetadata
+                       ) -> np.ndarray:
         return result.corrected_error_arcsec
 
-    def overlay_figure(self, result):
+    def overlay_figure(self, result: TheodoliteResult) -> PlotFigure:
         return error_figure(result)
 
-    def verdict(self, r):
+    def verdict(self, r: TheodoliteResult) -> str:
         return message(
             QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
                        "contributed {share} to the raw peak-to-peak"),
@@ -292,7 +300,7 @@ class Theodolite(Workbench, IssuesCertificates, SendsRuns, OverlaysRuns, ShowsHe
             ptp=f"{r.corrected_stats.peak_to_peak:.2f}\"",
             share=f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\"")
 
-    def headline(self, r):
+    def headline(self, r: TheodoliteResult) -> dict[str, float]:
         return {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,
                 "raw peak-to-peak (\")": r.raw_stats.peak_to_peak}
 

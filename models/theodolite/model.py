@@ -430,7 +430,6 @@ class TheodoliteResult:
     directions: np.ndarray | None = None  # ±1 per used row, when stated
     repeats: object = None  # RepeatedReadings when each point is the mean of n readings
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
-    cmc: float = 0.0  # setting: the laboratory's CMC for the error (a floor on U; 0: none)
 
 
 def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:

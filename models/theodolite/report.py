@@ -30,6 +30,8 @@ at the reference point), minus the set-up model ζ(θ):
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 
@@ -49,6 +51,7 @@ from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.conformity import decide_conformity, expanded_text
+from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate",
            "theodolite_json_budgets"]
@@ -100,7 +103,10 @@ def _point_names(theta_deg: np.ndarray) -> list[str]:
             for i, t in enumerate(shown)]
 
 
-def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -> UncertaintyBudget:
+def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
+                      settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+    """The budget of the corrected error, held to the laboratory's CMC of the ``settings``
+    ``result`` was analysed with (None: none)."""
     n = result.theta_deg.size
     single = _not_reference(result)
     pair = math.sqrt(2.0) * single
@@ -127,18 +133,19 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata) -
     components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
-                             floor=result.cmc)
+                             floor=cmc_of(settings, "cmc_arcsec"))
 
 
 MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
 
 
-def theodolite_json_budgets(result: TheodoliteResult,
-                            metadata: CertificateMetadata) -> dict[str, UncertaintyBudget]:
+def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetadata,
+                            settings: Mapping[str, Any] | None = None
+                            ) -> dict[str, UncertaintyBudget]:
     """The budget of each error array of the JSON: the raw error (the readings and the
     standards: every input but the set-up model), the model error (the set-up model alone)
     and the corrected error (all, the certificate's)."""
-    full = theodolite_budget(result, metadata)
+    full = theodolite_budget(result, metadata, settings)
 
     def part(keep) -> UncertaintyBudget:
         return UncertaintyBudget(tuple(c for c in full.components if keep(c.name == MODEL_INPUT)),
@@ -172,8 +179,9 @@ def repeated_readings_components(result: TheodoliteResult) -> list[BudgetCompone
 
 
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
-                           source_name: str = "", method_reference: str = "") -> CertificateDocument:
-    budget = theodolite_budget(result, metadata)
+                           source_name: str = "", method_reference: str = "",
+                           settings: Mapping[str, Any] | None = None) -> CertificateDocument:
+    budget = theodolite_budget(result, metadata, settings)
     big_u = budget.expanded
     ident = result.identification
     s = ident.setup

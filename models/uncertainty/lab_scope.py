@@ -10,13 +10,16 @@ points whose computed U was below it flagged as outside the scope.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from typing import Any
+
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 from models.parameters import Parameter
 from models.uncertainty.budget import UncertaintyBudget
 
-__all__ = ["cmc_parameter", "scope_statement"]
+__all__ = ["cmc_of", "cmc_parameter", "scope_statement"]
 
 
 def cmc_parameter(key: str, label: str, unit: str, what: str) -> Parameter:
@@ -29,6 +32,14 @@ def cmc_parameter(key: str, label: str, unit: str, what: str) -> Parameter:
                           f"{what}: the smallest U of its scope. Every U stated is at least this; "
                           "results whose computed U is below it are outside the scope and flagged "
                           "(ILAC-P14). 0: none stated, nothing said")
+
+
+def cmc_of(settings: Mapping[str, Any] | None, key: str) -> float:
+    """The CMC the ``settings`` a result was analysed with state under ``key`` (a setting
+    of :func:`cmc_parameter`): the budget's floor. The settings are passed to the budget,
+    never copied into the result, so the CMC the certificate lists and the one its U is
+    held to are one figure. 0: none stated (no settings: the default, none)."""
+    return float((settings or {}).get(key, 0.0) or 0.0)
 
 
 def scope_statement(budget: UncertaintyBudget, unit: str = "\"") -> str:

@@ -97,7 +97,8 @@ def _polygon_cases(runs: int) -> list[ValidationCase]:
         for seed in range(runs):
             rows, truth = _polygon_rows(faces, 1000 + seed, flat)
             result = _polygon(rows, reading_noise_arcsec=SIGMA)
-            big_u = polygon_budget(result, CertificateMetadata()).expanded
+            big_u = polygon_budget(result, CertificateMetadata(),
+                                   {"reading_noise_arcsec": SIGMA}).expanded
             miss = np.abs(result.mean_corrected_arcsec - truth)
             inside += int(np.sum(miss[1:] <= big_u[1:]))  # face 1: the zero, 0 by definition
             total += faces - 1

@@ -4309,7 +4309,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>{set}: vertical readings missing: the pyramidal tilt is not identified and its error not removed; the tilt bound enters the uncertainty.</source>
-        <extracomment>the tilt fit&apos;s unknowns: the vertical reading&apos;s zero, ψ and ω</extracomment>
+        <extracomment>the tilt fit&apos;s unknowns: the vertical reading&apos;s zero, ψ and ω the largest tilt of the polygon on the shaft the budget assumes when the readings do not identify it (the setting tilt_bound_arcsec&apos;s default, ″)</extracomment>
         <translation>{set}：缺少竖直读数：塔差倾斜未辨识，其误差未扣除；倾斜上限计入不确定度。</translation>
     </message>
     <message>
@@ -8374,6 +8374,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>{count} reading(s) lie beyond {sigmas}σ of the fit (rows {rows}): check them</source>
         <translation>{count} 个读数偏离拟合超过 {sigmas}σ（第 {rows} 行）：请检查</translation>
+    </message>
+    <message>
+        <source>the setting {setting} is {now}, but the result was analysed with {then}: analyse again before a certificate is made</source>
+        <translation>设置 {setting} 现为 {now}，但该结果是按 {then} 分析的：请重新分析后再出具证书</translation>
     </message>
     <message>
         <source>{faces}-face polygon on the encoder, {count} mountings ({mountings}); σ of a reading {sigma} (ν = {nu}), k = {k}</source>

@@ -72,7 +72,12 @@ def test_the_written_workbench_keeps_its_cases_and_draws_through_its_view(tmp_pa
     cases = (tmp_path / "models/tilt_table/validation_cases.py").read_text("utf-8")
     assert "def validation_cases(trials: int)" in cases
     assert "from models.validation.cases import EXACT_SIMULATION, ValidationCase" in cases
-    assert "validation_cases" not in (tmp_path / "models/tilt_table/analysis.py").read_text("utf-8")
+    analysis = (tmp_path / "models/tilt_table/analysis.py").read_text("utf-8")
+    assert "validation_cases" not in analysis
+    # the typed seam (#44): generic over its result, every capability naming it
+    assert ("class TiltTable(\n        Workbench[TiltTableResult], OverlaysRuns[TiltTableResult], "
+            "ShowsHeadline[TiltTableResult]):") in analysis
+    assert "def headline(self, result: TiltTableResult) -> dict[str, float]:" in analysis
     presenter = (tmp_path / "widgets/tilt_table/presenter.py").read_text("utf-8")
     assert not re.search(r"self\.view\.\w+\.", presenter), presenter  # no reaching into the view
     assert "self.view.show_errors(" in presenter

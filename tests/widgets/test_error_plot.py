@@ -90,3 +90,35 @@ def test_the_crosshair_is_cleared_with_the_data(qtbot):
     plot.clear()
     assert plot.readout.text().strip() == "" and not plot.vline.isVisible()
     assert plot.raw_curve.getData()[0] is None or len(plot.raw_curve.getData()[0]) == 0
+
+
+def test_each_series_is_drawn_over_its_own_x(qtbot):
+    """#44: show_figure took x from the first series, so every curve had to share it (a
+    model on a fine grid beside the readings raised inside pyqtgraph). Each is drawn over
+    its own x now; a series whose x and y differ is refused, named."""
+    from models.plots import PlotFigure, PlotSeries
+
+    plot = ErrorPlot()
+    qtbot.addWidget(plot)
+    readings = np.linspace(0.0, 330.0, 12)
+    grid = np.linspace(0.0, 360.0, 181)
+    figure = PlotFigure("errors", "θ (°)", "error (\")", (
+        PlotSeries("raw error", readings, np.cos(np.radians(readings)), role="raw"),
+        PlotSeries("set-up model", grid, 0.9 * np.cos(np.radians(grid)), role="model"),
+        PlotSeries("corrected", readings, 0.1 * np.sin(np.radians(readings)), role="corrected")))
+    plot.show_figure(figure)
+    for curve, x, y in ((plot.raw_curve, readings, np.cos(np.radians(readings))),
+                        (plot.model_curve, grid, 0.9 * np.cos(np.radians(grid))),
+                        (plot.corrected_curve, readings, 0.1 * np.sin(np.radians(readings)))):
+        drawn_x, drawn_y = curve.getData()
+        np.testing.assert_array_equal(drawn_x, x)
+        np.testing.assert_allclose(drawn_y, y)
+    # the first series hidden: the others keep their own x (it used to be the first's)
+    plot.show_figure(PlotFigure("errors", "θ (°)", "error (\")", figure.series[1:]))
+    assert plot.raw_curve.getData()[0] is None or len(plot.raw_curve.getData()[0]) == 0
+    np.testing.assert_array_equal(plot.model_curve.getData()[0], grid)
+    broken = PlotFigure("errors", "θ (°)", "error (\")", (
+        figure.series[0], PlotSeries("set-up model", readings, np.zeros(5), role="model")))
+    with pytest.raises(ValueError, match="the model series 'set-up model' has 5 values over "
+                                         "12 x values"):
+        plot.show_figure(broken)

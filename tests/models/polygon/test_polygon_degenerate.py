@@ -92,7 +92,7 @@ def test_with_the_tilt_bound_and_a_stated_noise_u_covers_the_truth(faces, flat):
         rig = _rig(faces, 300.0, float(rng.uniform(0, 360)), 100 + seed)
         rows = rig.set_rows()
         result = _analyze(_flat_vertical(rows) if flat else rows, reading_noise_arcsec=SIGMA)
-        budget = polygon_budget(result, CertificateMetadata())
+        budget = polygon_budget(result, CertificateMetadata(), {"reading_noise_arcsec": SIGMA})
         names = [c.name for c in budget.components]
         assert "Pyramidal tilt, not identified (bound)" in names
         assert any("Reading noise, stated" in n for n in names)

@@ -98,7 +98,9 @@ FIXTURE = Path(__file__).parents[2] / "fixtures" / "project_schema1.anglebench.j
 
 
 def test_a_schema_1_file_opens_with_each_tolerance_in_its_workbench_unit(tmp_path):
-    project = load_project(FIXTURE)
+    from models.registry import KINDS
+
+    project = load_project(FIXTURE, KINDS)
     certificates = project.metadata["certificates"]
     # schema 1 wrote the tolerance in the unit of each workbench's errors, whatever the key said
     assert certificates["theodolite"]["tolerance"] == 3
@@ -116,7 +118,7 @@ def test_a_schema_1_file_opens_with_each_tolerance_in_its_workbench_unit(tmp_pat
     assert saved["schema_version"] == SCHEMA_VERSION == 2
     assert "_arcsec" not in path.read_text("utf-8")
     assert load_project(path) == project  # schema 2 is read as it is
-    assert project_from_json(json.dumps({**saved, "schema_version": 1})) == project  # idempotent
+    assert project_from_json(json.dumps({**saved, "schema_version": 1}), kinds=KINDS) == project  # idempotent
 
 
 def test_a_schema_1_file_gives_the_same_analysis_and_the_same_verdict():
@@ -125,7 +127,7 @@ def test_a_schema_1_file_gives_the_same_analysis_and_the_same_verdict():
     from models.readings.tabular_import import map_columns, read_table
     from models.registry import KINDS
 
-    project = load_project(FIXTURE)
+    project = load_project(FIXTURE, KINDS)
     kind = KINDS["theodolite"]
     state = project.workbenches["theodolite"]
     opened = kind.analyze(ReadingsSheet(kind.columns, state.rows).parse(),
@@ -158,3 +160,26 @@ def test_a_tolerance_is_converted_to_the_errors_unit_and_never_across_kinds():
     # details of the command line written before: the key's own unit
     assert CertificateMetadata.from_dict({"tolerance_arcsec": 2}).tolerance_quantity == \
         Quantity(2.0, "arcsec")
+
+
+def test_the_project_file_is_given_the_workbenches_and_imports_none(tmp_path):
+    """#44: the project file asked the registry for a workbench's error unit (an import the
+    import contracts had to ignore); its caller gives it the workbenches now. A schema-1 file
+    with certificate details read without them is refused rather than guessed in arcsec;
+    a workbench not given keeps its details as written."""
+    import ast
+
+    from models.registry import KINDS
+
+    source = (Path(__file__).parents[3] / "models" / "project" / "file.py").read_text("utf-8")
+    imported = {node.module for node in ast.walk(ast.parse(source))
+                if isinstance(node, ast.ImportFrom)}
+    assert "models.registry" not in imported
+    with pytest.raises(ValueError, match="read it with kinds"):
+        load_project(FIXTURE)
+    text = FIXTURE.read_text("utf-8")
+    written = json.loads(text)["metadata"]["certificates"]
+    only = project_from_json(text, kinds={"positioning": KINDS["positioning"]})
+    certificates = only.metadata["certificates"]
+    assert certificates["positioning"]["tolerance_unit"] == "urad"
+    assert certificates["theodolite"] == written["theodolite"]  # not given: as written

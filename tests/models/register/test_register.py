@@ -407,7 +407,9 @@ def test_a_record_with_a_schema_1_project_keeps_its_chain_and_opens_migrated(reg
     assert register.audit(pdfs=True) == []
     stored = register.get(record.number).project_json
     assert '"tolerance_arcsec": 15' in stored  # kept as it was issued
-    details = project_from_json(stored).metadata["certificates"]
+    from models.registry import KINDS
+
+    details = project_from_json(stored, kinds=KINDS).metadata["certificates"]
     assert details["positioning"]["tolerance"] == 15
     assert details["positioning"]["tolerance_unit"] == "um"
     assert details["positioning"]["standards"][0]["uncertainty_unit"] == "um"
