@@ -83,10 +83,11 @@ class BasisBlocks:
         self._plan = self._recurrence_plan()
 
     def _recurrence_plan(self) -> list[tuple[int, int, int, int, tuple[int, int] | None]]:
-        """The recurrence as (sin out, cos out, sin k, cos k, (sin k−1, cos k−1)) buffer
-        numbers (None for order 1's k−1, order 0), one an order from 2: rows are 0…n_par−1, the chain n_par…n_par+5, the
-        phasor given n_par+6 (sin) and n_par+7 (cos); an order is written in its rows when
-        it has them, otherwise in a chain buffer that neither order k nor k − 1 holds."""
+        """The recurrence as (sin out, cos out, sin k, cos k, (sin k−1, cos k−1) or None
+        where k−1 is order 0) buffer numbers, one an order from 2: rows are 0…n_par−1, the
+        chain n_par…n_par+5, the phasor given n_par+6 (sin) and n_par+7 (cos); an order is
+        written in its rows when it has them, otherwise in a chain buffer that neither order
+        k nor k − 1 holds."""
         place = {k: (1 + 2 * i, 2 + 2 * i) for i, k in enumerate(self.orders)}
         phasor = (self.n_par + 6, self.n_par + 7)
         plan: list[tuple[int, int, int, int, tuple[int, int] | None]] = []
