@@ -211,7 +211,7 @@ def summary(result: TheodoliteResult) -> str:
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
     s, c, r = ident.setup, result.corrected_stats, result.raw_stats
-    out = [
+    out: list[str] = [
         message(QT_TR_NOOP("Set-up identified from the elevation readings ({n} points, "
                            "reference θ = {theta}°):") if ident.method == "elevation" else
                 QT_TR_NOOP("Set-up identified from the azimuth readings ({n} points, "
