@@ -227,8 +227,8 @@ class CrossCalibration:
     @property
     def face_pyramidal_statement(self) -> Message | None:
         """What the face pyramidal errors are relative to (None when not fitted)."""
-        if self.face_pyramidal_arcsec is None:
-            return None
+        if self.face_pyramidal_arcsec is None or self.face_pyramidal_u_arcsec is None:
+            return None  # (the two are fitted together: both or neither)
         return message(QT_TR_NOOP("face pyramidal errors: each face normal's elevation relative "
                                   "to the faces' mean plane (their mean and first harmonic over "
                                   "the faces are not determined: they cannot be told from the "
@@ -550,7 +550,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
 
     if mode == "spread" and closure_row:
         # exact: x = solver·Xᵀ·L·y, L the spread map; E‖r‖² = σ²·tr(Lᵀ(I − H)L)
-        lrows, lcols, lvals = list(range(rows_n)), list(used_index), [1.0] * rows_n
+        lrows, lcols, lvals = list(range(rows_n)), [int(c) for c in used_index], [1.0] * rows_n
         position_in_used = {int(r): u for u, r in enumerate(used_index)}
         for j, r in closure_row.items():
             for row in rows_of[j][1:-1]:
