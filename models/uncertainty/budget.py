@@ -32,6 +32,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import TypedDict
 
 import numpy as np
 
@@ -43,6 +44,7 @@ __all__ = [
     "BASIS_DIVISORS",
     "DEFAULT_COVERAGE_PROBABILITY",
     "BudgetComponent",
+    "BudgetRow",
     "UncertaintyBudget",
     "coverage_factor",
     "divisor_for_basis",
@@ -122,6 +124,22 @@ class BudgetComponent:
         """|c_i| · u(x_i) per point: this input's share of the combined uncertainty."""
         c = np.broadcast_to(np.abs(np.asarray(self.sensitivity, dtype=float)), (points,))
         return c * self.standard_uncertainty(points)
+
+
+class BudgetRow(TypedDict):
+    """One row of :meth:`UncertaintyBudget.table` (its values in the budget's unit)."""
+
+    name: str
+    evaluation: str
+    distribution: str
+    value: float
+    divisor: float
+    u: float
+    sensitivity: float
+    contribution: float
+    share: float
+    dof: float
+    note: str
 
 
 @dataclass(frozen=True, init=False)
@@ -249,14 +267,14 @@ class UncertaintyBudget:
             return float("inf")
         return float(self.truncated_dofs[self.worst_index if index is None else index])
 
-    def table(self, index: int | None = None) -> list[dict[str, object]]:
+    def table(self, index: int | None = None) -> list[BudgetRow]:
         """Rows of the budget at one point (default the worst): name, type, distribution,
         quoted value, divisor, u, sensitivity, contribution (in the budget's ``unit``),
         share of u_c², ν."""
         i = self.worst_index if index is None else index
         contrib = self.contributions()[:, i] if self.components else np.zeros(0)
         total = float(np.sum(contrib**2)) or 1.0
-        rows = []
+        rows: list[BudgetRow] = []
         for comp, share in zip(self.components, contrib, strict=True):
             value = np.broadcast_to(np.asarray(comp.value, dtype=float), (self.points,))[i]
             sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (self.points,))[i]
