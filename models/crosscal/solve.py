@@ -75,11 +75,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY, coverage_factor
+
+if TYPE_CHECKING:
+    from models.pyramidal import TiltFit
 
 __all__ = ["DRIFT_MODES", "CrossCalibration", "CrossCalibrationInputError", "harmonic_basis",
            "solve_crosscal"]
@@ -339,7 +343,7 @@ def _sequence(mounting, position, order, n):
         rows = np.flatnonzero(mounting == j)
         rows_of[j] = rows
         seen: dict[int, int] = {}
-        for idx, r in enumerate(rows):
+        for idx, r in enumerate(map(int, rows)):
             i = int(position[r])
             if i in seen:
                 if idx == rows.size - 1 and i == int(position[rows[0]]):
@@ -381,7 +385,7 @@ def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad
             warnings.append(message(QT_TR_NOOP("mounting {mounting}: vertical readings missing: "
                                                "its tilt is neither identified nor removed"),
                                     mounting=j))
-    tilts: dict[int, object] = {}
+    tilts: dict[int, TiltFit] = {}
     faces_fit = None
     if read:
         face_rows = [rows_of[j][~closure[rows_of[j]]] for j in read]
