@@ -74,6 +74,7 @@ and a Monte Carlo check.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -83,6 +84,7 @@ from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY, coverage_factor
 
 if TYPE_CHECKING:
+    from models.crosscal.tilt import FacePyramidalFit
     from models.pyramidal import TiltFit
 
 __all__ = ["DRIFT_MODES", "CrossCalibration", "CrossCalibrationInputError", "harmonic_basis",
@@ -334,11 +336,12 @@ def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
     return mounting, position, a, c, order, n
 
 
-def _sequence(mounting, position, order, n):
+def _sequence(mounting: np.ndarray, position: np.ndarray, order: Sequence[int], n: int
+              ) -> tuple[np.ndarray, np.ndarray, dict[int, np.ndarray]]:
     """Reading order t per row (closure t = n), closure flags, each mounting's rows."""
     t = np.zeros(mounting.size, dtype=int)
     closure = np.zeros(mounting.size, dtype=bool)
-    rows_of = {}
+    rows_of: dict[int, np.ndarray] = {}
     for j in order:
         rows = np.flatnonzero(mounting == j)
         rows_of[j] = rows
@@ -365,7 +368,10 @@ def _sequence(mounting, position, order, n):
     return t, closure, rows_of
 
 
-def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad, warnings):
+def _tilts(y: np.ndarray, ac_y: np.ndarray | None, position: np.ndarray, closure: np.ndarray,
+           rows_of: dict[int, np.ndarray], order: Sequence[int], n: int, ac_alignment: str,
+           roll_rad: float, warnings: list[Message]
+           ) -> tuple[tuple[TiltFit | None, ...], np.ndarray, FacePyramidalFit | None, np.ndarray]:
     """Each mounting's tilt and the faces' own elevations fitted on the vertical readings
     and their horizontal effect removed from y (in place); (tilts per mounting, correction
     per row, the faces' FacePyramidalFit or None)."""
