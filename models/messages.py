@@ -51,7 +51,8 @@ class Message(str):
         obj.template, obj.figures, obj.parts = template, figures, tuple(parts)
         return obj
 
-    def __reduce__(self):  # copies and pickles keep the template and figures
+    def __reduce__(self) -> tuple[type[Message], tuple[str, dict[str, Any], tuple[Any, ...]]]:
+        # copies and pickles keep the template and figures
         return (Message, (self.template, self.figures, self.parts))
 
 
@@ -84,12 +85,11 @@ def reason_of(exc: BaseException) -> str:
 def rendered(text: str, translate: Callable[[str], str]) -> str:
     """``text`` with each template translated by ``translate`` and filled with the same
     figures (a plain ``str`` comes back as it is)."""
-    parts = getattr(text, "parts", ())
-    if parts:
-        return "".join(rendered(part, translate) for part in parts)
-    template = getattr(text, "template", None)
-    if template is None:
+    if not isinstance(text, Message):
         return text
+    if text.parts:
+        return "".join(rendered(part, translate) for part in text.parts)
+    template = text.template
     figures = {key: rendered(value, translate) if isinstance(value, str) else value
                for key, value in text.figures.items()}
     words = translate(template)

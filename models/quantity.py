@@ -77,6 +77,9 @@ def unit(name: str | Unit) -> Unit:
         raise UnitError(f"unknown unit {name!r}; choose one of {', '.join(UNITS)}") from None
 
 
+_named_unit = unit  # for Quantity, whose argument ``unit`` hides the function
+
+
 _TITLE_UNIT = re.compile(r"\(([^()]+)\)\s*$")
 
 
@@ -91,20 +94,22 @@ def unit_of_title(title: str) -> str:
     return key if key in UNITS else ""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Quantity:
     """``value`` (a number or an array) in ``unit``; ``spec`` is how the number is
     written (a format spec such as ".2f" or "+.3f") when the quantity is shown as text.
     A converted quantity keeps the resolution its text had: :meth:`to` widens ``spec``
     by the decimals the conversion needs (1" at .2f is 4.85 µrad at .2f, 0.278 mdeg at
-    .3f)."""
+    .3f). The unit is given as a :class:`Unit` or its name, and held as a :class:`Unit`."""
 
     value: Any
     unit: Unit
     spec: str = "g"
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "unit", unit(self.unit))
+    def __init__(self, value: Any, unit: Unit | str, spec: str = "g") -> None:
+        object.__setattr__(self, "value", value)
+        object.__setattr__(self, "unit", _named_unit(unit))
+        object.__setattr__(self, "spec", spec)
 
     def factor_to(self, other: str | Unit) -> float:
         """What a value in this unit is multiplied by to be in ``other``."""

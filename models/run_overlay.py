@@ -18,7 +18,7 @@ from typing import Any
 
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.plots import PlotFigure
-from models.workbench import OverlaysRuns
+from models.workbench import OverlaysRuns, Workbench
 
 __all__ = ["PROJECT_SUFFIX", "OverlayRun", "overlay_from_file",
            "overlay_from_project_json", "overlay_run"]
@@ -51,7 +51,7 @@ def _figure(kind: OverlaysRuns, result: Any) -> PlotFigure:
     return PlotFigure(figure.title, figure.x_label, figure.y_label, (corrected,))
 
 
-def overlay_run(kind: Any, rows: Sequence[Sequence[str]], settings: Mapping[str, Any] | None,
+def overlay_run(kind: Workbench, rows: Sequence[Sequence[str]], settings: Mapping[str, Any] | None,
                 label: str) -> OverlayRun:
     """The run of ``rows`` analysed by ``kind`` with ``settings``; ValueError saying why it
     cannot be drawn."""
@@ -69,7 +69,7 @@ def overlay_run(kind: Any, rows: Sequence[Sequence[str]], settings: Mapping[str,
     return OverlayRun(label, _figure(kind, result))
 
 
-def _from_project(kind: Any, project: Any, label: str) -> OverlayRun:
+def _from_project(kind: Workbench, project: Any, label: str) -> OverlayRun:
     state = project.workbenches.get(kind.key)
     if state is None or not state.rows:
         raise ValueError(message(QT_TR_NOOP("{label} holds no readings of the {workbench} "
@@ -77,7 +77,7 @@ def _from_project(kind: Any, project: Any, label: str) -> OverlayRun:
     return overlay_run(kind, state.rows, state.settings, label)
 
 
-def overlay_from_project_json(kind: Any, text: str, label: str) -> OverlayRun:
+def overlay_from_project_json(kind: Workbench, text: str, label: str) -> OverlayRun:
     """The run this workbench holds in a project (a register record's JSON), with the
     settings it was analysed with."""
     from models.project.file import project_from_json
@@ -85,7 +85,7 @@ def overlay_from_project_json(kind: Any, text: str, label: str) -> OverlayRun:
     return _from_project(kind, project_from_json(text, label, {kind.key: kind}), label)
 
 
-def overlay_from_file(kind: Any, path: str | Path, settings: Mapping[str, Any] | None
+def overlay_from_file(kind: Workbench, path: str | Path, settings: Mapping[str, Any] | None
                       ) -> OverlayRun:
     """The run in a readings file (CSV/XLSX/TXT, analysed with ``settings``: today's) or a
     project file (with its own)."""

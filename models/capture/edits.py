@@ -113,13 +113,13 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         steps = _steps(session)
         for take, (row, first, last) in enumerate(session["takes"]):
             step = steps[take] if take < len(steps) else 0.0
-            key = (instrument, session["port"], session["started_utc"], first, last)
-            if cache is not None and key in cache:
-                values = cache[key]
+            take_key = (instrument, session["port"], session["started_utc"], first, last)
+            if cache is not None and take_key in cache:
+                values = cache[take_key]
             else:
                 values = captured_values(session, first, last, values_of, angles)
                 if cache is not None:
-                    cache[key] = values
+                    cache[take_key] = values
             if values is None or row < 0:
                 continue
             cells = list(rows[row]) if row < len(rows) else []

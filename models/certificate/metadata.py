@@ -404,7 +404,7 @@ class CertificateMetadata:
         if self.tolerance is None:
             return None
         try:
-            return float(self.tolerance_quantity.in_unit(unit))
+            return float(Quantity(self.tolerance, self.tolerance_unit).in_unit(unit))
         except UnitError:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field 'tolerance' is in {given}, but the errors are in "

@@ -28,7 +28,7 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
     standards = metadata.standards
     if not standards:
         return []
-    gaps = []
+    gaps: list[str] = []
     with_u = [s for s in standards if s.certificate_no and s.uncertainty is not None]
     by_settings = [s for s in standards if s.certificate_no and s.uncertainty is None
                    and stated_inputs]

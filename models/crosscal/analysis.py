@@ -11,17 +11,17 @@ import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from models.crosscal import KEY, TITLE
 from models.crosscal.acquisition import crosscal_guide
-from models.crosscal.export import polygon_deviation_rows
+from models.crosscal.export import polygon_deviation_rows, polygon_deviations
 from models.crosscal.figures import encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
+from models.messages import QT_TR_NOOP, Message, joined, lines, message, reason_of
 from models.parameters import Parameter
 from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
@@ -37,6 +37,9 @@ from models.workbench import (
     Workbench,
     WritesCorrectionTable,
 )
+
+if TYPE_CHECKING:
+    from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = ["CROSSCAL", "CrossCalResult", "analyze", "polygon_deviation_rows", "summary", "to_json"]
 
@@ -195,17 +198,18 @@ class CrossCalResult:
         return np.asarray(e, dtype=float), np.asarray(d, dtype=float)
 
     @functools.cached_property
-    def bench_budgets(self) -> tuple[Any, Any]:
-        """The budgets (models.uncertainty.budget.UncertaintyBudget) of E and of d without
-        the certificate details (no item resolution, the default coverage probability)."""
+    def bench_budgets(self) -> tuple[UncertaintyBudget, UncertaintyBudget]:
+        """The budgets of E and of d without the certificate details (no item resolution,
+        the default coverage probability)."""
         import dataclasses
 
         from models.certificate.metadata import CertificateMetadata
         from models.crosscal.report import crosscal_budget
 
         details = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
-        return tuple(crosscal_budget(dataclasses.replace(self, certificate_of=item), details)
-                     for item in ("encoder", "polygon"))
+        encoder, polygon = (crosscal_budget(dataclasses.replace(self, certificate_of=item), details)
+                            for item in ("encoder", "polygon"))
+        return encoder, polygon
 
     def systematic_u_arcsec(self, combine=None) -> np.ndarray:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
@@ -231,10 +235,9 @@ def _sheet_row(text: str, row: int | None, readings: CrossCalReadings) -> str:
     if row is None:
         return text
     sheet = readings.row(row - 1)
-    figures = getattr(text, "figures", None)
-    if figures and any(v == row for v in figures.values()):
-        key = next(k for k, v in figures.items() if v == row)
-        return message(text.template, **{**figures, key: sheet})
+    if isinstance(text, Message) and any(v == row for v in text.figures.values()):
+        key = next(k for k, v in text.figures.items() if v == row)
+        return message(text.template, **{**text.figures, key: sheet})
     return text.replace(f"row {row}", f"row {sheet}", 1) if f"row {row}" in text else \
         message(QT_TR_NOOP("row {row}: {reason}"), row=sheet, reason=text)
 
@@ -351,14 +354,15 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
     }
-    if not s.separable:  # what the design does see: labelled, never the result
+    # not separable (E or d not determined): what the design does see, labelled, never the result
+    d = s.polygon_deviation_arcsec
+    if s.encoder_error_arcsec is None or d is None:
         out["unseen_components"] = {
             "encoder_harmonics": list(s.undetermined_encoder_harmonics),
             "polygon_harmonics": list(s.undetermined_polygon_harmonics),
             "encoder_error_without_them_arcsec": _list(s.encoder_error_determined_arcsec),
             "polygon_deviation_without_them_arcsec": _list(s.polygon_deviation_determined_arcsec)}
     else:
-        d = s.polygon_deviation_arcsec
         out["polygon_deviation_from_face1_arcsec"] = _list(d - d[0])  # reference "face 1"
         out["polygon_deviation_U_from_face1_arcsec"] = _list(result.polygon_u_from_face1_arcsec())
         out["encoder_figures_arcsec"] = encoder_figures(result)
@@ -416,15 +420,16 @@ def summary(result: CrossCalResult) -> str:
 
 def verdict(result: CrossCalResult) -> str:
     s = result.solution
-    if not s.separable:
+    e, d = s.encoder_error_arcsec, s.polygon_deviation_arcsec  # each None: not determined
+    if e is None or d is None:  # (the solution is separable exactly when both are given)
         return message(QT_TR_NOOP("This design cannot separate every harmonic: the undetermined "
                                   "results are withheld (see the warnings)."))
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
-                   ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
+                   ptp=f"{np.ptp(e):.3f}\"",
                    ue=expanded_text(float(np.max(result.expanded_u_arcsec[0]))),
-                   low=f"{np.min(s.polygon_deviation_arcsec):+.3f}\"",
-                   high=f"{np.max(s.polygon_deviation_arcsec):+.3f}\"",
+                   low=f"{np.min(d):+.3f}\"",
+                   high=f"{np.max(d):+.3f}\"",
                    ud=expanded_text(float(np.max(result.expanded_u_arcsec[1]))))
 
 
@@ -435,8 +440,7 @@ POLYGON_FACE_DEVIATIONS = QT_TR_NOOP("polygon face deviations")
 def polygon_reference(result: CrossCalResult) -> SentReference:
     """The polygon's face deviations from face 1 with the U of each (d_i − d_1, from the full
     covariance), for the polygon workbench's reference column and its standard's U."""
-    polygon_deviation_rows(result)  # ValueError when the design does not determine them
-    d = result.solution.polygon_deviation_arcsec
+    d = polygon_deviations(result)  # ValueError when the design does not determine them
     u1 = result.polygon_u_from_face1_arcsec()
     k = result.solution.coverage_factor
     name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); its "

@@ -13,18 +13,27 @@ from models.messages import QT_TR_NOOP, message
 from models.project.atomic_write import write_text_atomic
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from models.crosscal.analysis import CrossCalResult
 
-__all__ = ["polygon_deviation_rows", "polygon_reference_csv", "write_polygon_reference"]
+__all__ = ["polygon_deviation_rows", "polygon_deviations", "polygon_reference_csv", "write_polygon_reference"]
+
+
+def polygon_deviations(result: CrossCalResult) -> np.ndarray:
+    """The polygon's face deviations d_i (″); ValueError when the design does not
+    determine them."""
+    d = result.solution.polygon_deviation_arcsec
+    if d is None:
+        raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
+                                            "design: nothing to send")))
+    return d
 
 
 def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
     """The polygon's face deviations as its certificate states them for the polygon
     workbench: position, deviation from face 1 (″) and its expanded U (″)."""
-    d = result.solution.polygon_deviation_arcsec
-    if d is None:
-        raise ValueError(message(QT_TR_NOOP("the face deviations are not determined by this "
-                                            "design: nothing to send")))
+    d = polygon_deviations(result)  # ValueError when not determined
     u = result.polygon_u_from_face1_arcsec()
     return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
 

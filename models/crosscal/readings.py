@@ -141,7 +141,7 @@ def read_crosscal(parsed: ParsedReadings, faces_setting: int = 0) -> CrossCalRea
     for j in order:
         rows = np.flatnonzero(mounting == j)
         seen: dict[int, int] = {}
-        for q, r in enumerate(rows):
+        for q, r in enumerate(map(int, rows)):
             p = int(position[r])
             if p in seen:
                 if q == rows.size - 1 and p == int(position[rows[0]]):

@@ -74,12 +74,18 @@ and a Monte Carlo check.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY, coverage_factor
+
+if TYPE_CHECKING:
+    from models.crosscal.tilt import FacePyramidalFit
+    from models.pyramidal import TiltFit
 
 __all__ = ["DRIFT_MODES", "CrossCalibration", "CrossCalibrationInputError", "harmonic_basis",
            "solve_crosscal"]
@@ -227,8 +233,8 @@ class CrossCalibration:
     @property
     def face_pyramidal_statement(self) -> Message | None:
         """What the face pyramidal errors are relative to (None when not fitted)."""
-        if self.face_pyramidal_arcsec is None:
-            return None
+        if self.face_pyramidal_arcsec is None or self.face_pyramidal_u_arcsec is None:
+            return None  # (the two are fitted together: both or neither)
         return message(QT_TR_NOOP("face pyramidal errors: each face normal's elevation relative "
                                   "to the faces' mean plane (their mean and first harmonic over "
                                   "the faces are not determined: they cannot be told from the "
@@ -330,16 +336,17 @@ def _rows(mounting, position, encoder_deg, ac_x_arcsec, faces):
     return mounting, position, a, c, order, n
 
 
-def _sequence(mounting, position, order, n):
+def _sequence(mounting: np.ndarray, position: np.ndarray, order: Sequence[int], n: int
+              ) -> tuple[np.ndarray, np.ndarray, dict[int, np.ndarray]]:
     """Reading order t per row (closure t = n), closure flags, each mounting's rows."""
     t = np.zeros(mounting.size, dtype=int)
     closure = np.zeros(mounting.size, dtype=bool)
-    rows_of = {}
+    rows_of: dict[int, np.ndarray] = {}
     for j in order:
         rows = np.flatnonzero(mounting == j)
         rows_of[j] = rows
         seen: dict[int, int] = {}
-        for idx, r in enumerate(rows):
+        for idx, r in enumerate(map(int, rows)):
             i = int(position[r])
             if i in seen:
                 if idx == rows.size - 1 and i == int(position[rows[0]]):
@@ -361,7 +368,10 @@ def _sequence(mounting, position, order, n):
     return t, closure, rows_of
 
 
-def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad, warnings):
+def _tilts(y: np.ndarray, ac_y: np.ndarray | None, position: np.ndarray, closure: np.ndarray,
+           rows_of: dict[int, np.ndarray], order: Sequence[int], n: int, ac_alignment: str,
+           roll_rad: float, warnings: list[Message]
+           ) -> tuple[tuple[TiltFit | None, ...], np.ndarray, FacePyramidalFit | None, np.ndarray]:
     """Each mounting's tilt and the faces' own elevations fitted on the vertical readings
     and their horizontal effect removed from y (in place); (tilts per mounting, correction
     per row, the faces' FacePyramidalFit or None)."""
@@ -381,7 +391,7 @@ def _tilts(y, ac_y, position, closure, rows_of, order, n, ac_alignment, roll_rad
             warnings.append(message(QT_TR_NOOP("mounting {mounting}: vertical readings missing: "
                                                "its tilt is neither identified nor removed"),
                                     mounting=j))
-    tilts: dict[int, object] = {}
+    tilts: dict[int, TiltFit] = {}
     faces_fit = None
     if read:
         face_rows = [rows_of[j][~closure[rows_of[j]]] for j in read]
@@ -550,7 +560,7 @@ def solve_crosscal(mounting, position, encoder_deg, ac_x_arcsec, faces: int | No
 
     if mode == "spread" and closure_row:
         # exact: x = solver·Xᵀ·L·y, L the spread map; E‖r‖² = σ²·tr(Lᵀ(I − H)L)
-        lrows, lcols, lvals = list(range(rows_n)), list(used_index), [1.0] * rows_n
+        lrows, lcols, lvals = list(range(rows_n)), [int(c) for c in used_index], [1.0] * rows_n
         position_in_used = {int(r): u for u, r in enumerate(used_index)}
         for j, r in closure_row.items():
             for row in rows_of[j][1:-1]:

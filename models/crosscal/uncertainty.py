@@ -30,14 +30,16 @@ def estler_full_rosette(n: int, sigma_arcsec: float) -> tuple[float, float, int]
     return sigma_arcsec * math.sqrt(n - 1) / n, -sigma_arcsec**2 / n**2, (n - 1) * (n - 2)
 
 
-def design_readings(n: int, mountings, closure: bool = True) -> tuple[np.ndarray, ...]:
+def design_readings(n: int, mountings, closure: bool = True
+                    ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Noise-free readings of a perfect polygon on a perfect encoder for a design:
     (mounting, position, encoder_deg, ac_x_arcsec), every mounting from 0°."""
     rows = []
     for j in mountings:
         faces = [(j + k) % n + 1 for k in range(n)] + ([j + 1] if closure else [])
         rows += [(j, face, (t * 360.0 / n) % 360.0, 0.0) for t, face in enumerate(faces)]
-    return tuple(np.array(col) for col in zip(*rows, strict=True))
+    mounting, position, encoder_deg, ac_x_arcsec = (np.array(col) for col in zip(*rows, strict=True))
+    return mounting, position, encoder_deg, ac_x_arcsec
 
 
 def design_uncertainty(n: int, mountings, sigma_arcsec: float, closure: bool = True,

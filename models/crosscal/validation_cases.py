@@ -56,8 +56,8 @@ def crosscal_cases(trials: int) -> list[ValidationCase]:
         unseen.undetermined_encoder_harmonics == (3, 6) and unseen.encoder_error_arcsec is None))
     rig = CrossCalRig(6, {1: (2.0, 0.3)}, np.random.default_rng(36).normal(0.0, 1.5, 6),
                       drift_arcsec=0.5, noise_arcsec=0.2, rng=np.random.default_rng(37))
-    check = monte_carlo_check(*(np.array(col) for col in zip(*rig.rows([0, 1, 3]), strict=True)),
-                              runs=trials, seed=38, faces=6)
+    j, i, a, c = (np.array(col) for col in zip(*rig.rows([0, 1, 3]), strict=True))
+    check = monte_carlo_check(j, i, a, c, runs=trials, seed=38, faces=6)
     tolerance = max(0.10, 3.0 / math.sqrt(2.0 * trials))
     cases.append(ValidationCase(
         w, message(QT_TR_NOOP("stated u against the spread of {trials} simulated runs (ν = {dof})"),

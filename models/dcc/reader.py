@@ -26,6 +26,7 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from models.dcc.vocabulary import (
     DCC_NAMESPACE,
@@ -38,6 +39,9 @@ from models.dcc.vocabulary import (
     SI_NAMESPACE,
 )
 from models.messages import QT_TR_NOOP, message, reason_of
+
+if TYPE_CHECKING:
+    from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
 
 __all__ = ["ARCSEC_PER_UNIT", "DccError", "PolygonReference", "StandardCertificate",
            "POLYGON_FACE_DEVIATIONS", "angle_factor", "embedded_pdfs", "parse_dcc", "parse_decimal_list",
@@ -123,7 +127,7 @@ def _parser():
                            load_dtd=False, dtd_validation=False, remove_comments=True)
 
 
-def parse_dcc(data: bytes, source: str = "") -> object:
+def parse_dcc(data: bytes, source: str = "") -> _Element:
     """The document's root element, parsed safely; DccError naming ``source`` for a file
     that is not XML, too large, or that declares a DTD (a DCC never does: entities, local
     files and network are never resolved)."""
@@ -253,7 +257,7 @@ def _expanded(element, n: int, where: str) -> _Uncertainty | None:
     return None
 
 
-def _real_list(quantity, where: str) -> tuple[list[float], list[str], object]:
+def _real_list(quantity, where: str) -> tuple[list[float], list[str], _Element]:
     element = quantity.find(f"{S}realListXMLList")
     if element is None:
         raise DccError(message(QT_TR_NOOP("{where}: no si:realListXMLList"), where=where))
@@ -356,7 +360,7 @@ def _schema_problems(data: bytes, folder: Path) -> list[str]:
 
 
 def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
-                      ) -> tuple[object, str, tuple]:
+                      ) -> tuple[_Element, str, tuple]:
     """The root to read (what the signature covers) and the signer; DccError when a
     signature is there and does not verify. Unsigned: the root as parsed."""
     if root.find(f"{{{DS_NAMESPACE}}}Signature") is None and root.find(
@@ -376,7 +380,7 @@ def _verify_signature(data: bytes, root, trusted_cert: bytes | None, source: str
     return signed, check.signer, notes
 
 
-def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[object, str, str, tuple]:
+def _load(path: str | Path, schema_dir, trusted_cert) -> tuple[_Element, str, str, tuple]:
     source = str(path)
     try:
         data = Path(path).read_bytes()
@@ -522,7 +526,7 @@ def polygon_standard(reference: PolygonReference) -> dict:
     k = reference.coverage_factor
     from_face_1 = (reference.deviations.get(1) == 0.0
                    and reference.expanded_uncertainty.get(1) == 0.0)
-    standard = {"description": "polygon (face deviations from its DCC)",
+    standard: dict[str, str | float] = {"description": "polygon (face deviations from its DCC)",
                 "certificate_no": reference.certificate_id,
                 "applies_to": "from face 1" if from_face_1 else "reading",
                 "uncertainty_unit": "arcsec", "due_date": reference.due_date}

@@ -18,9 +18,13 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 from models.dcc.vocabulary import DS_NAMESPACE
 from models.messages import QT_TR_NOOP, message
+
+if TYPE_CHECKING:
+    from signxml import VerifyResult
 
 __all__ = ["CERT_ENV_VAR", "KEY_ENV_VAR", "TRUSTED_ENV_VAR", "SignatureCheck", "SigningError",
            "has_signature", "load_signing", "sign", "sign_if_configured", "trusted_certificate",
@@ -174,7 +178,10 @@ def verify(xml_bytes: bytes, trusted_cert: bytes | None = None) -> SignatureChec
     except Exception as exc:  # noqa: BLE001 — signxml raises InvalidSignature, InvalidCertificate …
         return SignatureCheck((message(QT_TR_NOOP("the signature does not verify: {reason}"),
                                        reason=str(exc) or type(exc).__name__),), signer)
-    signed = etree.tostring(result.signed_xml) if result.signed_xml is not None else b""
+    # one reference is expected (the verifier's default expect_references=1, checked by it),
+    # so verify() gave one VerifyResult, not a list
+    verified = cast("VerifyResult", result)
+    signed = etree.tostring(verified.signed_xml) if verified.signed_xml is not None else b""
     return SignatureCheck((), signer, trusted_cert is not None, signed)
 
 

@@ -17,7 +17,7 @@ import math
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from lxml import etree
@@ -27,6 +27,9 @@ from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+
+if TYPE_CHECKING:
+    from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
 
 __all__ = ["DccError", "build_dcc", "column_unit"]
 
@@ -147,7 +150,7 @@ class _Builder:
         r = etree.SubElement(parent, S + "realListXMLList")
         self.leaf(r, "valueXMLList", " ".join(_figure(x) for x in values), S)
         self.leaf(r, "unitXMLList", unit, S)
-        if expanded is not None:
+        if expanded is not None and k is not None and p is not None:
             mu = etree.SubElement(etree.SubElement(r, S + "measurementUncertaintyUnivariateXMLList"),
                                   S + "expandedMUXMLList")
             self.leaf(mu, "valueExpandedMUXMLList", " ".join(_figure(x) for x in expanded), S)
@@ -182,7 +185,8 @@ def _required(value: str, name: str) -> str:
     return value
 
 
-def _administrative(b: _Builder, root, software: SoftwareIdentity) -> None:
+def _administrative(b: _Builder, root, software: SoftwareIdentity) -> _Element:
+    """The administrative data; returns its refTypeDefinitions, filled at the end."""
     meta = b.document.metadata
     admin = etree.SubElement(root, D + "administrativeData")
     sw = etree.SubElement(etree.SubElement(admin, D + "dccSoftware"), D + "software")
@@ -254,7 +258,7 @@ def _administrative(b: _Builder, root, software: SoftwareIdentity) -> None:
     _contact(b, admin, "customer", _required(meta.customer_name, "customer_name"),
              meta.customer_address)
     _statements(b, admin)
-    b.refdefs = refdefs
+    return refdefs
 
 
 def _statement(b: _Builder, parent, ref: str, description: str, *texts: Any, **fields):
@@ -374,7 +378,7 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
             continue
         q = etree.SubElement(data, D + "quantity", refType=b.ref(row_ref, row_description))
         b.text(q, "name", label)
-        if figure and u and u[1] == figure[1]:
+        if figure and u and header_k and u[1] == figure[1]:  # (a u is read only under a k)
             if rest[1:]:
                 b.rich(q, "description", " · ".join(rest[1:]), translated=False)
             b.real(q, figure[0], figure[1], u[0], float(header_k.group(1)), p)
@@ -418,16 +422,18 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
         values = np.asarray(values)
         unit = column_unit(name, doc.unit)
         stem = next((name[:-len(s)] for s in _UNIT_SUFFIXES if name.endswith(s)), name)
-        expanded = k = None
+        expanded: np.ndarray | None = None
+        k: np.ndarray | None = None
         if stem in pairs:
             u_name = "expanded_uncertainty_" + pairs[stem] + name[len(stem) + 1:]
             if u_name in columns:
                 expanded = np.asarray(columns[u_name], dtype=float)
-                k = [k_of(u) for u in expanded]
-                if any(x is None for x in k):
+                factors = [k_of(u) for u in expanded]
+                if any(x is None for x in factors):
                     raise DccError(message(QT_TR_NOOP(
                         "no DCC written: the coverage factor of a point of '{column}' is not "
                         "found in its budget"), column=name))
+                k = np.asarray(factors, dtype=float)
         elif name in budgets and budgets[name] is not None and \
                 np.size(budgets[name].expanded) == values.size:
             expanded = np.asarray(budgets[name].expanded, dtype=float)
@@ -674,7 +680,7 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     b = _Builder(document, bilingual=True)
     root = etree.Element(D + "digitalCalibrationCertificate", nsmap=v.NSMAP,
                          schemaVersion=v.SCHEMA_VERSION)
-    _administrative(b, root, software)
+    refdefs = _administrative(b, root, software)
     _measurement_results(b, root, budgets or {}, software, uncertainty_columns or {},
                          face_deviations_column, reference_face_deviations, column_notes or {})
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
@@ -685,7 +691,7 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
     b.leaf(pdf, "mimeType", "application/pdf")
     b.leaf(pdf, "dataBase64", base64.b64encode(pdf_bytes).decode("ascii"))
     for name, description in sorted(b.own_reftypes.items()):
-        d = etree.SubElement(b.refdefs, D + "refTypeDefinition")
+        d = etree.SubElement(refdefs, D + "refTypeDefinition")
         b.text(d, "name", name, translated=False)
         if description:
             b.rich(d, "description", description, translated=False)

@@ -345,10 +345,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     checkpoint()
     ellipse = _ellipse(parsed, u_sin, u_cos)
     checkpoint()
-    source, theta = _phase_source(parsed, per_period, warnings)
-    phasor = None
-    if source == "estimated":
-        phase, *phasor = ellipse.phase_and_phasor(u_sin, u_cos)
+    source, given_theta = _phase_source(parsed, per_period, warnings)
+    phasor: tuple[np.ndarray, np.ndarray] | None = None
+    if given_theta is not None:
+        theta = given_theta
+    else:  # source "estimated"
+        phase, sin_phase, cos_phase = ellipse.phase_and_phasor(u_sin, u_cos)
+        phasor = (sin_phase, cos_phase)
         bins = np.count_nonzero(np.bincount(np.floor((phase + math.pi) / TWO_PI * 36)
                                             .astype(np.intp)))
         if bins < 27:

@@ -82,23 +82,24 @@ class BasisBlocks:
         self._rotation = np.empty((4, size))
         self._plan = self._recurrence_plan()
 
-    def _recurrence_plan(self) -> list[tuple[int, int, int, int, int | None, int | None]]:
-        """The recurrence as (sin out, cos out, sin k, cos k, sin k−1, cos k−1) buffer
-        numbers, one an order from 2: rows are 0…n_par−1, the chain n_par…n_par+5, the
-        phasor given n_par+6 (sin) and n_par+7 (cos); an order is written in its rows when
-        it has them, otherwise in a chain buffer that neither order k nor k − 1 holds."""
+    def _recurrence_plan(self) -> list[tuple[int, int, int, int, tuple[int, int] | None]]:
+        """The recurrence as (sin out, cos out, sin k, cos k, (sin k−1, cos k−1) or None
+        where k−1 is order 0) buffer numbers, one an order from 2: rows are 0…n_par−1, the
+        chain n_par…n_par+5, the phasor given n_par+6 (sin) and n_par+7 (cos); an order is
+        written in its rows when it has them, otherwise in a chain buffer that neither order
+        k nor k − 1 holds."""
         place = {k: (1 + 2 * i, 2 + 2 * i) for i, k in enumerate(self.orders)}
         phasor = (self.n_par + 6, self.n_par + 7)
-        plan = []
-        before: tuple[int | None, int | None] = (None, None)
+        plan: list[tuple[int, int, int, int, tuple[int, int] | None]] = []
+        before: tuple[int, int] | None = None
         now = phasor
         for k in range(2, max(self.orders) + 1):
             if k in place:
                 out = place[k]
             else:
-                free = [self.n_par + j for j in range(6) if self.n_par + j not in (*now, *before)]
+                free = [self.n_par + j for j in range(6) if self.n_par + j not in (*now, *(before or ()))]
                 out = (free[0], free[1])
-            plan.append((*out, *now, *before))
+            plan.append((*out, *now, before))
             before, now = now, out
         return plan
 
@@ -120,12 +121,13 @@ class BasisBlocks:
         if self.orders[0] == 1:
             buffers[1][...] = sin
             buffers[2][...] = cos
-        for s_out, c_out, s_now, c_now, s_before, c_before in self._plan:
+        for s_out, c_out, s_now, c_now, before in self._plan:
             np.multiply(two_cos, buffers[s_now], out=buffers[s_out])
             np.multiply(two_cos, buffers[c_now], out=buffers[c_out])
-            if s_before is None:  # order 2: sin 0 = 0, cos 0 = 1
+            if before is None:  # order 2: sin 0 = 0, cos 0 = 1
                 buffers[c_out] -= 1.0
             else:
+                s_before, c_before = before
                 buffers[s_out] -= buffers[s_before]
                 buffers[c_out] -= buffers[c_before]
         return rows

@@ -337,7 +337,7 @@ def _build(build: _Phases, simulation: _Phases, terms: SeparateTerms,
     """The table; ``quick``: its quantised residual only (the others left as it)."""
     ideal = _ideal_table(build, profile)
     chosen = profile.lsb_period is None
-    lsb = _chosen_lsb(ideal, profile.max_code) if chosen else float(profile.lsb_period)
+    lsb = _chosen_lsb(ideal, profile.max_code) if profile.lsb_period is None else profile.lsb_period
     codes = np.rint(ideal / lsb).astype(np.int64)
     over = int(np.max(np.abs(codes)))
     if over > profile.max_code:

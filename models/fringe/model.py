@@ -143,7 +143,8 @@ def _design(theta: np.ndarray, orders: tuple[int, ...]) -> np.ndarray:
     x = np.empty((theta.size, 1 + 2 * len(orders)))
     x[:, 0] = 1.0
     z = np.exp(1j * theta)
-    zk, power = 1.0, 0
+    zk: complex | np.ndarray = 1.0
+    power = 0
     for i, k in enumerate(orders):
         if power <= k <= power + 8:
             while power < k:

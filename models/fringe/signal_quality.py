@@ -108,7 +108,7 @@ class SignalQuality:
 
     def summary(self) -> list[str]:
         """One line a quantity judged with a window out of its band (with a preset)."""
-        out = []
+        out: list[str] = []
         for quantity, counts in self.out_of_band.items():
             if counts.get("outer") or counts.get("outside"):
                 low, high = self.extremes(quantity) or (math.nan, math.nan)
@@ -140,7 +140,8 @@ def signal_quality(result: Any, preset: TolerancePreset | None = None, scale: fl
     units = _units(preset, figures)
     equal_steps = getattr(result, "phase_source", "") == "samples_per_period"
     lines = getattr(result, "lines_per_rev", 0) if getattr(result, "unit", "") == "arcsec" else 0
-    windows, out_of_band = [], {}
+    windows: list[dict[str, Any]] = []
+    out_of_band: dict[str, dict[str, int]] = {}
     for i, start in enumerate(range(0, count, periods_per_window)):
         stop = min(count, start + periods_per_window)
         entry: dict[str, Any] = {"window": i, "first_period": start, "periods": stop - start}

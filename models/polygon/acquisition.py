@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, overload
 
 from models.capture.guidance import NextReading, degrees_text, point_groups, used_rows
 from models.messages import QT_TR_NOOP, message
@@ -26,6 +26,10 @@ __all__ = ["polygon_guide"]
 KEYS = ("position", "set", "direction")
 
 
+@overload
+def _int(text: str) -> int | None: ...
+@overload
+def _int(text: str, default: int) -> int: ...
 def _int(text: str, default: int | None = None) -> int | None:
     try:
         return int(str(text).strip())
@@ -60,15 +64,16 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
         nominal = {} if encoder is None else {"encoder_deg": float(encoder) % 360.0}
         return NextReading(text, fill, reading, n, nominal)
 
-    if not groups or _int(groups[-1][0][0]) is None:
+    face = _int(groups[-1][0][0]) if groups else None
+    if face is None:
         return said(message(QT_TR_NOOP("go to face {face}"), face=1), 1, 1, 1)
-    (face_text, set_text, _), last = groups[-1]
-    face, set_no = _int(face_text), _int(set_text, 1)
+    (_, set_text, _), last = groups[-1]
+    set_no = _int(set_text, 1)
     if len(last) < n:
         return said(message(QT_TR_NOOP("stay at face {face}"), face=face), face, set_no,
                     len(last) + 1)
     in_set = [(k, g) for k, g in groups if _int(k[1], 1) == set_no and _int(k[0]) is not None]
-    faces_read = [_int(k[0]) for k, _ in in_set]
+    faces_read = [f for k, _ in in_set if (f := _int(k[0])) is not None]  # all of in_set
     first_face = faces_read[0]
     encoders = [_angle(g[0].get("encoder_deg", "")) for _, g in in_set]
     # N: the setting, else the first set's faces once it has closed, else the encoder's step
@@ -81,10 +86,13 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     pattern = in_set if len(in_set) > 1 else [
         (k, g) for k, g in groups if _int(k[1], 1) == _int(groups[0][0][1], 1)
         and _int(k[0]) is not None]
-    pattern_faces = [_int(k[0]) for k, _ in pattern]
+    pattern_faces = [f for k, _ in pattern if (f := _int(k[0])) is not None]  # all of pattern
     pattern_encoders = [_angle(g[0].get("encoder_deg", "")) for _, g in pattern]
-    first_step = (_wrap(pattern_encoders[1] - pattern_encoders[0]) if len(pattern) > 1
-                  and None not in pattern_encoders[:2] else None)
+    first_step = None
+    if len(pattern) > 1:
+        start, turned = pattern_encoders[0], pattern_encoders[1]
+        if start is not None and turned is not None:
+            first_step = _wrap(turned - start)
     if not count and first_step:
         # N when the step is within a quarter of the gap between 360°/N and 360°/(N ± 1)
         guess = round(360.0 / abs(first_step))
@@ -126,7 +134,7 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     else:
         template = (QT_TR_NOOP("go to face {face} (encoder ≈ {encoder}°)") if encoder is not None
                     else QT_TR_NOOP("go to face {face}"))
-    figures = {"face": following, "set": set_no}
+    figures: dict[str, object] = {"face": following, "set": set_no}
     if encoder is not None:
         figures["encoder"] = degrees_text(encoder)
     return said(message(template, **figures), following, set_no, 1, encoder)

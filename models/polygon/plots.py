@@ -55,8 +55,9 @@ def tilt_figure(result: PolygonResult) -> PlotFigure | None:
     if tilt is None:
         return None
     dense = np.linspace(0.0, 360.0, 361)  # face angle; the model runs in the counting sense
-    frame = (result.ac_alignment, math.radians(result.ac_roll_measured_arcmin / 60.0)
-             if result.roll_corrected else 0.0)  # the readings the tilt was fitted with
+    roll = result.ac_roll_measured_arcmin  # None: not measured, not corrected
+    frame = (result.ac_alignment, math.radians(roll / 60.0)
+             if roll is not None else 0.0)  # the readings the tilt was fitted with
     _, model = frame_readings_arcsec(result.counting * dense, tilt.psi_arcsec, tilt.omega_deg, *frame)
     _, at_faces = frame_readings_arcsec(first.theta_deg, tilt.psi_arcsec, tilt.omega_deg, *frame)
     return PlotFigure(QT_TR_NOOP("Vertical readings and the tilt model (set 1)"), "θ (deg)",

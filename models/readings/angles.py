@@ -120,8 +120,8 @@ def parse_angle_deg(text: str) -> float:
         raise AngleParseError(message(QT_TR_NOOP(
             "'{text}' is not an angle; write decimal degrees (12.5) or D°M'S\" (12°34'56.7\", "
             "12 34 56.7, 12:34:56.7)"), text=text.strip()))
-    deg_s, min_s, sec_s = (None if g is None else g.replace(",", ".") for g in match.groups())
-    degrees = float(deg_s)
+    _, min_s, sec_s = (None if g is None else g.replace(",", ".") for g in match.groups())
+    degrees = float(match.group(1).replace(",", "."))  # a match always has its degrees
     minutes = float(min_s) if min_s is not None else 0.0
     seconds = float(sec_s) if sec_s is not None else 0.0
     if min_s is not None and not degrees.is_integer():

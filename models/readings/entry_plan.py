@@ -32,7 +32,7 @@ Each point's ``cells`` are exactly the texts to write; ``label`` is a
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -338,5 +338,6 @@ def theodolite_plan(thetas: Sequence[float], runs: int = 1,
 
 
 #: each plan's maker by its kind (EntryPlan.from_dict)
-PLAN_MAKERS = {"cycle": positioning_plan, "sets": polygon_plan, "mountings": crosscal_plan,
-               "passes": theodolite_plan}
+PLAN_MAKERS: dict[str, Callable[..., EntryPlan]] = {
+    "cycle": positioning_plan, "sets": polygon_plan, "mountings": crosscal_plan,
+    "passes": theodolite_plan}

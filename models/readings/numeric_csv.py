@@ -140,9 +140,9 @@ def read_numeric(path: str | Path, columns: Sequence[Column],
             continue
         if column.kind is ColumnKind.TEXT:
             return None
-        data = np.ascontiguousarray(block[:, used.index(position)])
+        numbers = np.ascontiguousarray(block[:, used.index(position)])
         if column.kind is ColumnKind.INTEGER and not (
-                np.all(data == np.round(data)) and np.all(np.abs(data) <= MAX_INTEGER)):
+                np.all(numbers == np.round(numbers)) and np.all(np.abs(numbers) <= MAX_INTEGER)):
             return None
-        values[column.key] = data
+        values[column.key] = numbers
     return ParsedReadings(values, np.arange(block.shape[0]), [])

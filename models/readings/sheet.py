@@ -299,14 +299,16 @@ class NumericRows:
             if all(not t.strip() for t in row):
                 keep[r] = False
                 continue
-            parsed = []
+            parsed: list[float | int | str | None] = []
+            bad = False  # a cell that cannot be read
             for c, column in enumerate(self.columns):
                 try:
                     parsed.append(column.parse(row[c]))
                 except ValueError as exc:
                     errors.append(CellError(r, c, column.key, row[c], reason_of(exc)))
-                    parsed.append(_BAD)
-            if any(v is _BAD for v in parsed):
+                    parsed.append(None)
+                    bad = True
+            if bad:
                 keep[r] = False
                 continue
             for column, value in zip(self.columns, parsed, strict=True):
@@ -319,9 +321,6 @@ class NumericRows:
         if keep.all():
             return ParsedReadings(out, np.arange(self.count), errors)
         return ParsedReadings({k: v[keep] for k, v in out.items()}, np.nonzero(keep)[0], errors)
-
-
-_BAD = object()  # a cell that cannot be read, in NumericRows.parse
 
 
 class ReadingsSheet:
@@ -384,17 +383,18 @@ class ReadingsSheet:
         if isinstance(self.rows, NumericRows) and row < len(self.rows):
             self.rows.row(row)[column] = text
             return
-        self._as_text_rows()
-        while row >= len(self.rows):
-            self.rows.append([""] * len(self.columns))
-        self.rows[row][column] = text
+        rows = self._as_text_rows()
+        while row >= len(rows):
+            rows.append([""] * len(self.columns))
+        rows[row][column] = text
 
     def insert_rows(self, at: int, rows: Sequence[Sequence[str]]) -> None:
         self._as_text_rows()[at:at] = [self._fit_row(r) for r in rows]
 
     def remove_rows(self, at: int, count: int) -> list[list[str]]:
-        removed = self._as_text_rows()[at : at + count]
-        del self.rows[at : at + count]
+        rows = self._as_text_rows()
+        removed = rows[at : at + count]
+        del rows[at : at + count]
         return removed
 
     def replace_all(self, rows: Iterable[Sequence[str]]) -> None:
@@ -460,11 +460,11 @@ class ReadingsSheet:
             return fast
         errors: list[CellError] = []
         kept_rows: list[int] = []
-        kept: list[list[object]] = []
+        kept: list[list[float | int | str | None]] = []
         for r, row in enumerate(self.rows):
             if all(not c.strip() for c in row):
                 continue
-            values: list[object] = []
+            values: list[float | int | str | None] = []
             ok = True
             for c, column in enumerate(self.columns):
                 try:

@@ -385,8 +385,9 @@ def map_columns(table: RawTable, columns: Sequence[Column],
 def column_positions(table: RawTable, columns: Sequence[Column],
                      mapping: dict[str, str] | None = None) -> list[int | None]:
     """Where each of ``columns`` is in ``table`` (which has a header), found as
-    :func:`map_columns` finds it; raises MissingColumnError naming a missing column."""
-    positions = match_header(table.header, columns)
+    :func:`map_columns` finds it; raises MissingColumnError naming a missing column (a
+    table without a header is searched for one in its first rows like any other)."""
+    positions = match_header(table.header or [], columns)
     if mapping:  # the user's choice: column key (or title) -> the file's header text
         positions = _apply_mapping(table, columns, positions, mapping)
     if not _complete(positions, columns):
@@ -404,5 +405,5 @@ def column_positions(table: RawTable, columns: Sequence[Column],
                            "their names, e.g. {title}{value}); the file's header is {join2}"),
                 source=table.source, key=column.key, join=','.join(c.key for c in columns),
                 title=f"{column.title!r}", value=', ' + repr(column.aliases[0]) if column.aliases else '',
-                join2=','.join(table.header)[:200]), table)
+                join2=','.join(table.header or [])[:200]), table)
     return positions

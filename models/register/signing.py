@@ -47,4 +47,6 @@ def sign(key: bytes, chain: str) -> str:
 
 
 def signature_ok(key: bytes, chain: str, signature: str | None) -> bool:
-    return bool(signature) and hmac.compare_digest(sign(key, chain), signature)
+    if not signature:
+        return False
+    return hmac.compare_digest(sign(key, chain), signature)

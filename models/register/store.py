@@ -19,6 +19,7 @@ serialises the chain's growth and every statement has a lock timeout.
 
 from __future__ import annotations
 
+import builtins
 import dataclasses
 import datetime as dt
 import hashlib
@@ -31,12 +32,15 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, GENESIS, link
+
+if TYPE_CHECKING:
+    from sqlalchemy.engine import Connection
 
 __all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "RegisterTampered",
            "lab_timezone", "software_versions"]
@@ -706,7 +710,7 @@ class Register:
                                 conn.execute(counters.update().where(
                                     counters.c.name == plan.counter).values(
                                     last_value=plan.counter_value))
-                        self._set_state(conn, plan.seq, record.chain_sha256)
+                        self._set_state(conn, plan.seq, chain)
                         if original is not None:
                             conn.execute(certificates.update().where(
                                 certificates.c.number == original.number).values(
@@ -1024,7 +1028,8 @@ class Register:
         with self._read() as conn:
             return [CertificateRecord(**row._asdict()) for row in conn.execute(query)]
 
-    def verify_all(self, pdf: bytes) -> list[CertificateRecord]:
+    # (``builtins.list``: in this class ``list`` is the method above)
+    def verify_all(self, pdf: bytes) -> builtins.list[CertificateRecord]:
         """Every record whose PDF is byte for byte this one (by SHA-256): one for a genuine
         PDF; more than one when a record was copied into the register."""
         certificates = self._schema.CERTIFICATES
@@ -1034,7 +1039,7 @@ class Register:
                 certificates.c.pdf_sha256 == digest).order_by(certificates.c.id)).scalars().all()
             return [self._get(conn, number) for number in numbers]
 
-    def verify_dcc(self, dcc: bytes) -> list[CertificateRecord]:
+    def verify_dcc(self, dcc: bytes) -> builtins.list[CertificateRecord]:
         """Every record whose digital calibration certificate is byte for byte this one (by
         SHA-256)."""
         certificates = self._schema.CERTIFICATES
@@ -1050,7 +1055,7 @@ class Register:
         found = self.verify_all(pdf)
         return found[0] if found else None
 
-    def history(self, serial: str) -> list[CertificateRecord]:
+    def history(self, serial: str) -> builtins.list[CertificateRecord]:
         """Every certificate of an instrument, oldest calibration first."""
         certificates = self._schema.CERTIFICATES
         serial = _alike(serial)
@@ -1101,7 +1106,9 @@ class _Turn:
     """An issuer's turn after a lost race (see Register._issuing_turn)."""
 
     def __init__(self, register: Register) -> None:
-        self.register, self._handle, self._conn = register, None, None
+        self.register = register
+        self._handle: BinaryIO | None = None
+        self._conn: Connection | None = None
 
     def take(self) -> None:
         if self._handle is not None or self._conn is not None:

@@ -35,8 +35,8 @@ def theodolite_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, st
         (last_theta, *_), last = groups[-1]
         if len(last) < n and (not theta or theta == last_theta):
             theta, reading = last_theta, len(last) + 1
-        elif not theta and step and _angle(last_theta) is not None:
-            theta = f"{_angle(last_theta) + step:.10g}"
+        elif not theta and step and (last_deg := _angle(last_theta)) is not None:
+            theta = f"{last_deg + step:.10g}"
     if not theta or _angle(theta) is None:
         return NextReading(message(QT_TR_NOOP("turn the axis to the next θ and type it in the θ "
                                               "column")), {}, reading, n)

@@ -388,7 +388,7 @@ def identify_from_azimuth(
 
 def _separation_warnings(ident: Identification, limit: float = 0.999) -> list[str]:
     corr = ident.correlation
-    out = []
+    out: list[str] = []
     for i in range(3):
         for j in range(i + 1, 3):
             r = corr[i, j]

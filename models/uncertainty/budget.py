@@ -32,6 +32,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass
+from typing import TypedDict
 
 import numpy as np
 
@@ -43,6 +44,7 @@ __all__ = [
     "BASIS_DIVISORS",
     "DEFAULT_COVERAGE_PROBABILITY",
     "BudgetComponent",
+    "BudgetRow",
     "UncertaintyBudget",
     "coverage_factor",
     "divisor_for_basis",
@@ -124,23 +126,46 @@ class BudgetComponent:
         return c * self.standard_uncertainty(points)
 
 
-@dataclass(frozen=True)
+class BudgetRow(TypedDict):
+    """One row of :meth:`UncertaintyBudget.table` (its values in the budget's unit)."""
+
+    name: str
+    evaluation: str
+    distribution: str
+    value: float
+    divisor: float
+    u: float
+    sensitivity: float
+    contribution: float
+    share: float
+    dof: float
+    note: str
+
+
+@dataclass(frozen=True, init=False)
 class UncertaintyBudget:
     """The components of one error curve's uncertainty, with ``points`` points, every
-    value in ``unit`` (a key or a :class:`~models.quantity.Unit`)."""
+    value in ``unit`` (given as a key or a :class:`~models.quantity.Unit`, held as the
+    :class:`~models.quantity.Unit`)."""
 
     components: tuple[BudgetComponent, ...]
     points: int
     probability: float = DEFAULT_COVERAGE_PROBABILITY  # stated coverage probability
-    unit: Unit | str = "arcsec"
+    unit: Unit = _unit("arcsec")
     # the laboratory's smallest U for this quantity (its CMC, in ``unit``; 0: none stated): a
     # floor on every point's U, except where the error is zero by definition (u_c = 0)
     floor: float = 0.0
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "unit", _unit(self.unit))
+    def __init__(self, components: tuple[BudgetComponent, ...], points: int,
+                 probability: float = DEFAULT_COVERAGE_PROBABILITY,
+                 unit: Unit | str = "arcsec", floor: float = 0.0) -> None:
+        object.__setattr__(self, "components", components)
+        object.__setattr__(self, "points", points)
+        object.__setattr__(self, "probability", probability)
+        object.__setattr__(self, "unit", _unit(unit))
+        object.__setattr__(self, "floor", floor)
 
-    def quantity(self, value, spec: str = "g") -> Quantity:
+    def quantity(self, value: float | np.ndarray, spec: str = "g") -> Quantity:
         """A figure of this budget (``max_expanded``, a row of ``expanded``) with its unit."""
         return Quantity(value, self.unit, spec)
 
@@ -165,17 +190,17 @@ class UncertaintyBudget:
         input is exactly known), inputs of one ``dof_group`` as one input; not truncated."""
         contrib = self.contributions()
         uc4 = np.sum(contrib**2, axis=0) ** 2
-        variances: dict[object, np.ndarray] = {}
-        dofs: dict[object, float] = {}
+        variances: dict[str | int, np.ndarray] = {}
+        dofs: dict[str | int, float] = {}
         for i, (comp, c) in enumerate(zip(self.components, contrib, strict=True)):
             key = comp.dof_group or i
             variances[key] = variances.get(key, 0.0) + c**2
             dofs[key] = min(dofs.get(key, math.inf), comp.dof)
         denom = np.zeros(self.points)
         for key, var in variances.items():
-            nu = dofs[key]
-            if math.isfinite(nu) and nu > 0:
-                denom = denom + var**2 / nu
+            dof = dofs[key]
+            if math.isfinite(dof) and dof > 0:
+                denom = denom + var**2 / dof
         with np.errstate(divide="ignore", invalid="ignore"):
             nu = np.where((denom > 0) & (uc4 > 0), uc4 / np.where(denom > 0, denom, 1.0), np.inf)
         return nu
@@ -242,14 +267,14 @@ class UncertaintyBudget:
             return float("inf")
         return float(self.truncated_dofs[self.worst_index if index is None else index])
 
-    def table(self, index: int | None = None) -> list[dict[str, object]]:
+    def table(self, index: int | None = None) -> list[BudgetRow]:
         """Rows of the budget at one point (default the worst): name, type, distribution,
         quoted value, divisor, u, sensitivity, contribution (in the budget's ``unit``),
         share of u_c², ν."""
         i = self.worst_index if index is None else index
         contrib = self.contributions()[:, i] if self.components else np.zeros(0)
         total = float(np.sum(contrib**2)) or 1.0
-        rows = []
+        rows: list[BudgetRow] = []
         for comp, share in zip(self.components, contrib, strict=True):
             value = np.broadcast_to(np.asarray(comp.value, dtype=float), (self.points,))[i]
             sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (self.points,))[i]

@@ -40,8 +40,10 @@ class PolygonRig:
     encoder_error_arcsec: np.ndarray  # true error (indicated − true) at face 1…n, forward
     psi_arcsec: float = 0.0
     omega_deg: float = 0.0
-    face_dev_arcsec: np.ndarray | None = None  # true face angles − nominal, numbering sense
-    certificate_error_arcsec: np.ndarray | None = None  # certificate − true face deviation
+    # per face (empty, the default: zeros): the true face angles − nominal, numbering sense;
+    # the certificate − the true face deviation
+    face_dev_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    certificate_error_arcsec: np.ndarray = field(default_factory=lambda: np.zeros(0))
     encoder_zero_deg: float = 123.4
     counting: int = 1
     handedness: int = 1
@@ -59,10 +61,10 @@ class PolygonRig:
     def __post_init__(self) -> None:
         n = self.faces
         self.encoder_error_arcsec = np.asarray(self.encoder_error_arcsec, dtype=float)
-        self.face_dev_arcsec = (np.zeros(n) if self.face_dev_arcsec is None
-                                else np.asarray(self.face_dev_arcsec, dtype=float))
-        self.certificate_error_arcsec = (np.zeros(n) if self.certificate_error_arcsec is None
-                                         else np.asarray(self.certificate_error_arcsec, float))
+        self.face_dev_arcsec = (np.asarray(self.face_dev_arcsec, dtype=float)
+                                if np.size(self.face_dev_arcsec) else np.zeros(n))
+        self.certificate_error_arcsec = (np.asarray(self.certificate_error_arcsec, dtype=float)
+                                         if np.size(self.certificate_error_arcsec) else np.zeros(n))
         if self.frame not in ("levelled", "polygon"):
             raise ValueError(f"frame: {self.frame!r}")
         psi = self.psi_arcsec * ARCSEC

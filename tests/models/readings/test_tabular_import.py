@@ -160,3 +160,21 @@ def test_xlsx_formula_without_a_stored_value_reads_as_its_formula(tmp_path):
     book.save(tmp_path / "formula.xlsx")
     rows = map_columns(read_table(tmp_path / "formula.xlsx"), COLUMNS)
     assert rows == [["0", "0.25", "1.5"], ["1", "=cmd|' /C calc'!A0", "1.49"]]
+
+
+def test_a_table_read_without_a_header_has_its_header_searched_not_a_type_error():
+    """column_positions on a table whose header was not found (header None, a legal
+    RawTable) looks for the header in its first rows, and names the missing column when
+    there is none (it raised TypeError on None before mypy pointed at it, #44)."""
+    from models.readings.tabular_import import MissingColumnError, RawTable, column_positions
+
+    table = RawTable("t.csv", None, [["run 7", "", ""], ["E", "theta_deg", "A"],
+                                     ["1.5", "0", "0.1"], ["1.49", "1", "1.01"]], [1, 2, 3, 4])
+    assert column_positions(table, COLUMNS) == [1, 2, 0]
+    assert table.header == ["E", "theta_deg", "A"]
+    assert table.rows == [["1.5", "0", "0.1"], ["1.49", "1", "1.01"]]
+    assert table.line_numbers == [3, 4]
+
+    numbers = RawTable("n.csv", None, [["0", "0", "1.5"], ["1", "1.01", "1.49"]], [1, 2])
+    with pytest.raises(MissingColumnError, match="no column 'theta_deg'"):
+        column_positions(numbers, COLUMNS)
