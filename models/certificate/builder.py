@@ -26,6 +26,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP
+from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
@@ -136,7 +137,7 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     budget shown at its worst point (``budget_point`` names it from its index). ``plots``:
     a None (a figure the result has not) is left out. ``more``: further fields of
     :class:`CertificateDocument` (untraceable, standard …)."""
-    tol = (metadata.tolerance_in(budget.unit.key) if isinstance(tolerance, _FromDetails)
+    tol = (metadata.tolerance_in(unit_of(budget.unit).key) if isinstance(tolerance, _FromDetails)
            else tolerance)
     conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
