@@ -1,7 +1,7 @@
 """How a declared figure (models/plots.py) is drawn, decided once for the window and the
 certificate: each series' colour, line, dash and markers, which series the legend names,
 and the order the series are drawn in. The window's renderer (widgets/figure_plot.py) and
-the PDF writer (app/writers/certificate_pdf.py) both draw from :func:`series_style`, so a
+the PDF writer (app/writers/certificate_pdf/plots.py) both draw from :func:`series_style`, so a
 curve looks the same on screen and on paper.
 
 A series with a ``role`` (the error plot's raw error, set-up model, corrected error and

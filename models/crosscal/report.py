@@ -18,20 +18,22 @@ from typing import Any
 
 import numpy as np
 
-from models.certificate.document import (
-    CertificateDocument,
-    Table,
-    decision_rows,
-    rounded_cells,
-    table_decimals,
+from models.certificate.builder import (
+    Decision,
+    PointTable,
+    Statistics,
+    build_certificate,
+    figure_column,
+    text_column,
+    uncertainty_column,
 )
+from models.certificate.document import CertificateDocument, Table
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, TITLE
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["crosscal_budget", "crosscal_certificate"]
 
@@ -315,22 +317,19 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         start = result.encoder_start_deg
         reading = (start + first) % 360.0
         u0 = result.encoder_u_from_step0_arcsec(metadata)
-        shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
-        rows = [(f"{k}", f"{first[k]:.4f}", f"{reading[k]:.4f}", *mean_cells, mean_u,
-                 *first_cells, first_u)
-                for k in range(n)
-                for (mean_cells, mean_u), (first_cells, first_u) in
-                ((rounded_cells((values[k],), big_u[k], shown),
-                  rounded_cells((values[k] - values[0],), u0[k], shown)),)]
-        results = Table(QT_TR_NOOP("Encoder error at its steps"),
-                        (QT_TR_NOOP("Step"), QT_TR_NOOP("From the start (°)"),
-                         QT_TR_NOOP("Encoder reading (°)"), QT_TR_NOOP("Error (\")"), "U (\")",
-                         QT_TR_NOOP("From step 0 (\")"), QT_TR_NOOP("U from step 0 (\")")), rows,
-                        QT_TR_NOOP("Error = indicated − true angle at each of the n steps, stated "
-                                   "about its mean over the n steps (the steps of a full turn close "
-                                   "at 360°), with its U; harmonics of order n and above are not "
-                                   "resolved (aliased). The last two columns state it from step 0 "
-                                   "(zero there), with their own U from the full covariance."))
+        results = PointTable(QT_TR_NOOP("Encoder error at its steps"), (
+            text_column(QT_TR_NOOP("Step"), [f"{k}" for k in range(n)]),
+            text_column(QT_TR_NOOP("From the start (°)"), [f"{v:.4f}" for v in first]),
+            text_column(QT_TR_NOOP("Encoder reading (°)"), [f"{v:.4f}" for v in reading]),
+            figure_column(QT_TR_NOOP("Error (\")"), values, big_u),
+            uncertainty_column("U (\")", big_u),
+            figure_column(QT_TR_NOOP("From step 0 (\")"), values - values[0], u0),
+            uncertainty_column(QT_TR_NOOP("U from step 0 (\")"), u0)),
+            QT_TR_NOOP("Error = indicated − true angle at each of the n steps, stated "
+                       "about its mean over the n steps (the steps of a full turn close "
+                       "at 360°), with its U; harmonics of order n and above are not "
+                       "resolved (aliased). The last two columns state it from step 0 "
+                       "(zero there), with their own U from the full covariance."))
         point_columns = (("step", np.arange(n, dtype=float)), ("step_deg", first),
                          ("encoder_reading_deg", reading),
                          ("error_arcsec", values), ("expanded_uncertainty_arcsec", big_u),
@@ -340,39 +339,36 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         names = [message(point, k=k) for k in range(n)]
         what = QT_TR_NOOP("encoder error")
         figures = encoder_figures(result)
-        stat_rows = [(QT_TR_NOOP("Error"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
-                      message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\"")),
-                     (QT_TR_NOOP("JJF 1115 division error"),
+        first_rows = [(QT_TR_NOOP("Error"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
+                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        more_rows = [(QT_TR_NOOP("JJF 1115 division error"),
                       f"{figures['division_error_jjf1115']:.3f}\"", "")]
         if math.isfinite(figures["repeatability_jjf1115"]):
-            stat_rows.append((QT_TR_NOOP("JJF 1115 repeatability (largest s over the steps)"),
+            more_rows.append((QT_TR_NOOP("JJF 1115 repeatability (largest s over the steps)"),
                               f"{figures['repeatability_jjf1115']:.3f}\"",
                               QT_TR_NOOP("indicative (mountings are remountings, not repeat "
                                          "runs)")))
         iso = [f"{k[7:]} = {v:.3f}\"" for k, v in figures.items()
                if k.startswith("iso230_") and math.isfinite(v)]
         if iso:
-            stat_rows.append((QT_TR_NOOP("ISO 230-2 (unidirectional)"), ", ".join(iso),
+            more_rows.append((QT_TR_NOOP("ISO 230-2 (unidirectional)"), ", ".join(iso),
                               QT_TR_NOOP("indicative (mountings are remountings, not repeat "
                                          "runs); deviation = −error")))
         plots = [encoder_figure(result)]
     else:
         u1 = result.polygon_u_from_face1_arcsec(metadata)
-        shown = table_decimals(big_u)  # each figure to the decimal of its own U (GUM 7.2.6)
-        rows = [(f"{i + 1}", f"{i * 360.0 / n:.4f}", *mean_cells, mean_u, *first_cells, first_u)
-                for i in range(n)
-                for (mean_cells, mean_u), (first_cells, first_u) in
-                ((rounded_cells((values[i],), big_u[i], shown),
-                  rounded_cells((values[i] - values[0],), u1[i], shown)),)]
-        results = Table(QT_TR_NOOP("Face deviations"),
-                        (QT_TR_NOOP("Face"), QT_TR_NOOP("Nominal (°)"),
-                         QT_TR_NOOP("Deviation (\")"), "U (\")", QT_TR_NOOP("From face 1 (\")"),
-                         QT_TR_NOOP("U from face 1 (\")")), rows,
-                        QT_TR_NOOP("Deviation d_i = the face's angle minus its nominal, stated "
-                                   "about the mean over the n faces (Σ d_i = 0: the faces close at "
-                                   "360°), with its U. The last two columns state it from face 1, "
-                                   "d_i − d_1 (zero there), with their own U from the full "
-                                   "covariance."))
+        results = PointTable(QT_TR_NOOP("Face deviations"), (
+            text_column(QT_TR_NOOP("Face"), [f"{i + 1}" for i in range(n)]),
+            text_column(QT_TR_NOOP("Nominal (°)"), [f"{i * 360.0 / n:.4f}" for i in range(n)]),
+            figure_column(QT_TR_NOOP("Deviation (\")"), values, big_u),
+            uncertainty_column("U (\")", big_u),
+            figure_column(QT_TR_NOOP("From face 1 (\")"), values - values[0], u1),
+            uncertainty_column(QT_TR_NOOP("U from face 1 (\")"), u1)),
+            QT_TR_NOOP("Deviation d_i = the face's angle minus its nominal, stated "
+                       "about the mean over the n faces (Σ d_i = 0: the faces close at "
+                       "360°), with its U. The last two columns state it from face 1, "
+                       "d_i − d_1 (zero there), with their own U from the full "
+                       "covariance."))
         point_columns = (("face", np.arange(1, n + 1, dtype=float)),
                          ("nominal_deg", np.arange(n) * 360.0 / n), ("deviation_arcsec", values),
                          ("expanded_uncertainty_arcsec", big_u),
@@ -381,19 +377,11 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         point = QT_TR_NOOP("face {k}")
         names = [message(point, k=k + 1) for k in range(n)]
         what = QT_TR_NOOP("face deviation")
-        stat_rows = [(QT_TR_NOOP("Deviation"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
-                      message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        first_rows = [(QT_TR_NOOP("Deviation"),
+                       f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
+                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        more_rows = []
         plots = [polygon_figure(result)]
-    tolerance = metadata.tolerance_in("arcsec")
-    conformity = decide_conformity(values, budget, tolerance,
-                                   metadata.decision_rule, metadata.decision_quantity,
-                                   what=what, point_names=names)
-    stat_rows[1:1] = decision_rows(conformity, budget,
-                                   QT_TR_NOOP("steps") if item == "encoder" else QT_TR_NOOP("faces"))
-    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
-                       stat_rows)
-    plots += [residual_figure(result), closure_figure(result)]
-    worst = budget.worst_index
     statements = (
         message(QT_TR_NOOP("No calibrated reference value enters these results: the polygon and "
                            "the encoder are calibrated against each other by the closure of the "
@@ -408,11 +396,16 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                 other=message(QT_TR_NOOP("polygon") if item == "encoder"
                               else QT_TR_NOOP("encoder")),
                 r=f"{result.cross_correlation():.2f}"))
-    return CertificateDocument(
-        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
-        method=METHOD, method_reference=method_reference, parameters=parameters,
-        results=results, statistics=statistics, budget=budget,
-        budget_point=_budget_point(point, worst if item == "encoder" else worst + 1, big_u, item),
-        conformity=conformity, tolerance=tolerance,
-        plots=tuple(p for p in plots if p is not None), warnings=tuple(result.warnings),
-        point_columns=point_columns, statements=statements + budget_remarks(result))
+    return build_certificate(
+        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        source_name=source_name, method_reference=method_reference, budget=budget,
+        parameters=parameters, results=results,
+        statistics=Statistics(first_rows, QT_TR_NOOP("steps") if item == "encoder"
+                              else QT_TR_NOOP("faces"), more_rows),
+        decision=Decision(values, what, names),
+        budget_point=lambda worst: _budget_point(point, worst if item == "encoder" else worst + 1,
+                                                 big_u, item),
+        tolerance=metadata.tolerance_in("arcsec"),
+        plots=[*plots, residual_figure(result), closure_figure(result)],
+        warnings=result.warnings, point_columns=point_columns,
+        statements=statements + budget_remarks(result))

@@ -28,15 +28,21 @@ from typing import Any
 
 import numpy as np
 
+from models.certificate.builder import (
+    Decision,
+    PointTable,
+    Statistics,
+    build_certificate,
+    figure_column,
+    text_column,
+    uncertainty_column,
+)
 from models.certificate.document import (
     CertificateDocument,
     Table,
-    decision_rows,
     gum_pair,
     opinion,
     reference_standard_components,
-    rounded_cells,
-    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
@@ -49,7 +55,6 @@ from models.fringe.model import (
 )
 from models.messages import QT_TR_NOOP, joined, message
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
-from models.uncertainty.conformity import decide_conformity
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["fringe_budget", "fringe_certificate", "model_error_curve", "model_error_budget"]
@@ -352,12 +357,6 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                        _parameter_rows(result, k_fit))
     per = min(result.samples_per_period or 64, raw.size)
     idx = printed_samples(raw, comp, big_u, per)
-    phase_deg = np.degrees(result.theta_rad[idx])
-    numeric = list(zip(idx + 1, phase_deg, raw[idx], correction[idx], comp[idx], big_u[idx],
-                       strict=True))
-    shown = table_decimals(big_u)  # each sample to the decimal of its own U (GUM 7.2.6)
-    rows = [(f"{int(i)}", f"{p:.2f}", *cells, u_text) for i, p, r, c, e, u in numeric
-            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     if idx.size == raw.size:
         note = message(QT_TR_NOOP("All {n} samples are shown; they are also in the CSV/XLSX "
                                   "results export."), n=raw.size)
@@ -367,13 +366,18 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                                   "U; all {n} samples are in the CSV/XLSX results export."),
                        per=per, step=max(1, per // 64), n=raw.size)
     u_unit = sym.strip()
-    results = Table(QT_TR_NOOP("Results per sample (compensated = raw + correction)"),
-                    (QT_TR_NOOP("Sample"), QT_TR_NOOP("Phase θ (°)"),
-                     message(QT_TR_NOOP("As found ({unit})"), unit=u_unit),
-                     message(QT_TR_NOOP("Correction ({unit})"), unit=u_unit),
-                     message(QT_TR_NOOP("Compensated ({unit})"), unit=u_unit),
-                     message(QT_TR_NOOP("U as left ({unit})") if as_left else
-                             QT_TR_NOOP("U as found ({unit})"), unit=u_unit)), rows, note)
+    results = PointTable(QT_TR_NOOP("Results per sample (compensated = raw + correction)"), (
+        text_column(QT_TR_NOOP("Sample"), [f"{i}" for i in idx + 1]),
+        text_column(QT_TR_NOOP("Phase θ (°)"),
+                    [f"{p:.2f}" for p in np.degrees(result.theta_rad[idx])]),
+        figure_column(message(QT_TR_NOOP("As found ({unit})"), unit=u_unit), raw[idx], big_u[idx]),
+        figure_column(message(QT_TR_NOOP("Correction ({unit})"), unit=u_unit), correction[idx],
+                      big_u[idx]),
+        figure_column(message(QT_TR_NOOP("Compensated ({unit})"), unit=u_unit), comp[idx],
+                      big_u[idx]),
+        uncertainty_column(message(QT_TR_NOOP("U as left ({unit})") if as_left else
+                                   QT_TR_NOOP("U as found ({unit})"), unit=u_unit), big_u[idx])),
+        note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
                      period=f"{period:.3f}\"") if unit == "arcsec"
@@ -400,6 +404,15 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                  ratio=f"{result.amplitude_ratio:.4f}",
                  quadrature=f"{result.quadrature_error_deg:+.3f}°")),
     ]
+    more_rows = [(QT_TR_NOOP("Correction table"),
+                  message(QT_TR_NOOP("{n} entries"), n=result.table.size),
+                  f"sha256 {result.table.sha256[:16]}…")]
+    if result.sin_periods.shape[0] > 1:
+        amp = result.sin_periods[:, 1]
+        more_rows.append((QT_TR_NOOP("Drift of sin A1 over the periods"),
+                          f"{np.ptp(amp) * 1e3:.3g} mV",
+                          message(QT_TR_NOOP("{n} periods fitted one by one"),
+                                  n=result.sin_periods.shape[0])))
     tol = metadata.tolerance_in(budget.unit.key)
     untraceable = untraceable_inputs(result, metadata)
     withheld = "" if not untraceable or tol is None else message(
@@ -407,32 +420,13 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
     if metadata.decision_quantity == "half_range":  # the continuous curve, the whole period
         theta_model, model_error = model_error_curve(result)
-        conformity = decide_conformity(model_error, model_error_budget(result, metadata,
-                                                                       theta_model),
-                                       tol, metadata.decision_rule, "half_range", withheld,
-                                       what=QT_TR_NOOP("as-found interpolation error (fitted "
-                                                       "model, whole period)"))
+        decision = Decision(model_error, QT_TR_NOOP("as-found interpolation error (fitted "
+                                                    "model, whole period)"), withheld=withheld,
+                            budget=model_error_budget(result, metadata, theta_model))
     else:
-        conformity = decide_conformity(raw, found_budget, tol, metadata.decision_rule,
-                                       metadata.decision_quantity, withheld,
-                                       what=QT_TR_NOOP("as-found interpolation error"),
-                                       point_names=_SampleNames())
-    stat_rows += decision_rows(conformity, found_budget, QT_TR_NOOP("samples"), sym)
-    stat_rows.append((QT_TR_NOOP("Correction table"),
-                      message(QT_TR_NOOP("{n} entries"), n=result.table.size),
-                      f"sha256 {result.table.sha256[:16]}…"))
-    if result.sin_periods.shape[0] > 1:
-        amp = result.sin_periods[:, 1]
-        stat_rows.append((QT_TR_NOOP("Drift of sin A1 over the periods"),
-                          f"{np.ptp(amp) * 1e3:.3g} mV",
-                          message(QT_TR_NOOP("{n} periods fitted one by one"),
-                                  n=result.sin_periods.shape[0])))
-    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
-                       stat_rows)
+        decision = Decision(raw, QT_TR_NOOP("as-found interpolation error"), _SampleNames(),
+                            withheld=withheld, budget=found_budget)
     drawn = fringe_plots.figures(result)
-    plots = (drawn["errors"], fringe_plots.first_period_with_uncertainty(result, big_u, per),
-             drawn["residuals"])
-    worst = budget.worst_index
     table_statement = message(
         QT_TR_NOOP("As left: the lab states that the correction table with sha256 {sha} was "
                    "loaded into the encoder; the compensated error and its U are the item as "
@@ -444,13 +438,16 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     advice = () if as_left else (opinion(QT_TR_NOOP(
         "The compensated error is the error the correction table is expected to leave, if the "
         "signals stay as they were measured.")),)
-    return CertificateDocument(
-        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
-        method=METHOD, method_reference=method_reference, parameters=parameters,
-        results=results, statistics=statistics, budget=budget,
-        budget_point=message(QT_TR_NOOP("sample {sample}"), sample=worst + 1),
-        conformity=conformity, tolerance=tol, plots=plots,
-        warnings=tuple(result.warnings), unit=sym, untraceable=tuple(untraceable),
+    return build_certificate(
+        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        source_name=source_name, method_reference=method_reference, budget=budget,
+        parameters=parameters, results=results, decision=decision,
+        statistics=Statistics(stat_rows, QT_TR_NOOP("samples"), more_rows, budget=found_budget),
+        budget_point=lambda worst: message(QT_TR_NOOP("sample {sample}"), sample=worst + 1),
+        tolerance=tol, plots=(drawn["errors"],
+                              fringe_plots.first_period_with_uncertainty(result, big_u, per),
+                              drawn["residuals"]),
+        warnings=result.warnings, unit=sym, untraceable=tuple(untraceable),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (

@@ -42,14 +42,20 @@ from typing import Any
 
 import numpy as np
 
+from models.certificate.builder import (
+    Decision,
+    PointTable,
+    Statistics,
+    build_certificate,
+    figure_column,
+    text_column,
+    uncertainty_column,
+)
 from models.certificate.document import (
     CertificateDocument,
     Table,
-    decision_rows,
     reference_standard_components,
     resolution_component,
-    rounded_cells,
-    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
@@ -66,7 +72,6 @@ from models.polygon.model import (
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
-from models.uncertainty.conformity import decide_conformity
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["polygon_budget", "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
@@ -520,76 +525,65 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                         f"U (k = {k_tilt:.2f}, ν = {nu_tilt})" if any(
                             s.tilt is not None for s in result.sets) else "U"), rows_p)
     correction = result.mean_corrected_arcsec - result.mean_error_arcsec
-    numeric = list(zip(np.arange(1, result.faces + 1), result.theta_deg, result.mean_error_arcsec,
-                       correction, result.mean_corrected_arcsec, big_u, strict=True))
-    shown = table_decimals(big_u)  # each point to the decimal of its own U (GUM 7.2.6)
-    rows = [(f"{int(p)}", f"{t:.3f}", *cells, u_text)
-            for p, t, r, c, e, u in numeric
-            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
     title = (message(QT_TR_NOOP("Results per position (mean of the two directions' means)"))
              if result.reversal_arcsec is not None else
              message(QT_TR_NOOP("Results per position (mean of {sets} sets)"), sets=m) if m > 1
              else message(QT_TR_NOOP("Results per position (mean of 1 set)")))
-    results = Table(title,
-                    (QT_TR_NOOP("Position"), QT_TR_NOOP("Nominal (°)"), QT_TR_NOOP("Raw error (\")"),
-                     QT_TR_NOOP("Correction (\")"), QT_TR_NOOP("Corrected error (\")"), "U (\")"),
-                    rows,
-                    message(QT_TR_NOOP("Error = indicated − reference, from face {face} of set 1. "
-                                       "Corrected = raw + correction; the correction removes the "
-                                       "error the pyramidal tilt induces."),
-                            face=result.zero_face))
+    results = PointTable(title, (
+        text_column(QT_TR_NOOP("Position"), [f"{p}" for p in range(1, result.faces + 1)]),
+        text_column(QT_TR_NOOP("Nominal (°)"), [f"{t:.3f}" for t in result.theta_deg]),
+        figure_column(QT_TR_NOOP("Raw error (\")"), result.mean_error_arcsec, big_u),
+        figure_column(QT_TR_NOOP("Correction (\")"), correction, big_u),
+        figure_column(QT_TR_NOOP("Corrected error (\")"), result.mean_corrected_arcsec, big_u),
+        uncertainty_column("U (\")", big_u)),
+        message(QT_TR_NOOP("Error = indicated − reference, from face {face} of set 1. "
+                           "Corrected = raw + correction; the correction removes the "
+                           "error the pyramidal tilt induces."),
+                face=result.zero_face))
     st, raw = result.stats, result.raw_stats
-    stat_rows = [
-        (QT_TR_NOOP("Raw error"), f"{raw.min:+.2f}\" … {raw.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{raw.peak_to_peak:.2f}\"")),
-        (QT_TR_NOOP("Corrected error"), f"{st.min:+.2f}\" … {st.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{st.peak_to_peak:.2f}\"")),
-    ]
+    more_rows = []
     h = result.harmonics
     if h.amplitude.size > 2:
-        stat_rows.append((QT_TR_NOOP("Harmonics 1st / 2nd"),
+        more_rows.append((QT_TR_NOOP("Harmonics 1st / 2nd"),
                           f"{h.amplitude[1]:.3f}\" / {h.amplitude[2]:.3f}\"",
                           QT_TR_NOOP("eccentricity / ellipticity")))
     if result.repeatability_arcsec is not None:
-        stat_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
+        more_rows.append((QT_TR_NOOP("Repeatability (largest s over positions)"),
                           f"{np.max(result.repeatability_arcsec):.2f}\"", ""))
     else:
-        stat_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
+        more_rows.append((QT_TR_NOOP("Repeatability"), QT_TR_NOOP("not evaluated"),
                           QT_TR_NOOP("no direction was measured twice; in U the autocollimator's "
                                      "reading noise from the tilt fits stands for it")
                           if any(s.tilt is not None for s in result.sets) else
                           QT_TR_NOOP("no direction was measured twice and the tilt was not "
                                      "fitted: in U the stated σ of a reading stands for it")))
     if result.reversal_arcsec is not None:
-        stat_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
+        more_rows.append((QT_TR_NOOP("Reversal B (largest |x̄↑ − x̄↓|, ISO 230-2)"),
                           f"{np.max(np.abs(result.reversal_arcsec)):.2f}\"",
                           message(QT_TR_NOOP("mean B̄ = {b} (ISO 230-2: deviation x = reference "
                                              "− indicated, forward minus reverse; = mean of "
                                              "ē↓ − ē↑ of the errors)"),
                                   b=f"{-result.mean_reversal_arcsec:+.2f}\"")))
-    conformity = decide_conformity(
-        result.mean_corrected_arcsec, budget, tol, metadata.decision_rule,
-        metadata.decision_quantity,
-        "" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
+    statistics = Statistics([
+        (QT_TR_NOOP("Raw error"), f"{raw.min:+.2f}\" … {raw.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{raw.peak_to_peak:.2f}\"")),
+        (QT_TR_NOOP("Corrected error"), f"{st.min:+.2f}\" … {st.max:+.2f}\"",
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{st.peak_to_peak:.2f}\"")),
+    ], QT_TR_NOOP("positions"), after=more_rows)
+    decision = Decision(
+        result.mean_corrected_arcsec,
+        withheld="" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
         point_names=[message(QT_TR_NOOP("position {position}"), position=i)
                      for i in range(1, result.faces + 1)],
         not_stated=not_stated(result))
-    stat_rows[2:2] = decision_rows(conformity, budget, QT_TR_NOOP("positions"))
-    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
-                       stat_rows)
-    residuals = residual_figure(result)
-    plots = [error_figure(result), corrected_with_uncertainty(result, big_u)]
-    if residuals is not None:
-        plots.append(residuals)
-    warnings = list(result.warnings)
-    worst = budget.worst_index
-    return CertificateDocument(
-        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
-        method=METHOD, method_reference=method_reference, parameters=parameters,
-        results=results, statistics=statistics, budget=budget,
-        budget_point=message(QT_TR_NOOP("position {position}"), position=worst + 1),
-        conformity=conformity, tolerance=tol, plots=tuple(plots),
-        warnings=tuple(warnings),
+    return build_certificate(
+        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        source_name=source_name, method_reference=method_reference, budget=budget,
+        parameters=parameters, results=results, statistics=statistics, decision=decision,
+        budget_point=lambda worst: message(QT_TR_NOOP("position {position}"), position=worst + 1),
+        tolerance=tol, plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
+                              residual_figure(result)),
+        warnings=result.warnings,
         statements=(
             message(QT_TR_NOOP("U is zero at face {face} of set 1: every error is taken from "
                                "that reading, so its own error is zero by definition."),

@@ -22,15 +22,21 @@ from typing import Any
 
 import numpy as np
 
+from models.certificate.builder import (
+    Decision,
+    PointTable,
+    Statistics,
+    build_certificate,
+    figure_column,
+    text_column,
+    uncertainty_column,
+)
 from models.certificate.document import (
     CertificateDocument,
     Table,
-    decision_rows,
     opinion,
     reference_standard_components,
     resolution_component,
-    rounded_cells,
-    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
@@ -51,7 +57,7 @@ from models.positioning.model import (
 )
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import decide_conformity, uncertainty_decimals
+from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
@@ -281,51 +287,34 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                message(QT_TR_NOOP("fewer than {n}: flagged"), n=MIN_RUNS))]
     parameters = Table(QT_TR_NOOP("Test"), (QT_TR_NOOP("Item"), QT_TR_NOOP("Value"),
                                             QT_TR_NOOP("Note")), rows_p)
-    header = [QT_TR_NOOP("Target")]
-    for name, *_ in points:
+    columns = [text_column(QT_TR_NOOP("Target"), [f"{target:g}" for target in result.positions])]
+    for name, mean, s, _ in points:
         arrow = "↑" if name == "up" else "↓"
-        header += [f"x̄{arrow}", f"s{arrow}", f"U{arrow}"]
+        columns += [figure_column(f"x̄{arrow}", mean, u_by_dir[name]),
+                    text_column(f"s{arrow}", [f"{v:.3f}" for v in s]),
+                    uncertainty_column(f"U{arrow}", u_by_dir[name])]
     if result.bidirectional:
-        header += ["B_i", "M_i"]
-    rows = []
-    shown = table_decimals(big_u)  # each mean to the decimal of its own U (GUM 7.2.6)
-    for i, target in enumerate(result.positions):
-        row = [f"{target:g}"]
-        for name, mean, s, _ in points:
-            (mean_text,), u_text = rounded_cells((mean[i],), u_by_dir[name][i], shown)
-            row += [mean_text, f"{s[i]:.3f}", u_text]
-        if result.bidirectional:
-            row += [f"{result.iso.reversal[i]:+.3f}", f"{result.iso.bidirectional_mean[i]:+.3f}"]
-        rows.append(tuple(row))
-    results = Table(message(QT_TR_NOOP("Results per target ({unit}; target in {target})"),
-                            unit=sym.strip(), target=result.target_symbol.strip()),
-                    tuple(header), rows,
-                    QT_TR_NOOP("x = actual position − target. U is the expanded uncertainty of "
-                               "the mean x̄."))
+        columns += [text_column("B_i", [f"{v:+.3f}" for v in result.iso.reversal]),
+                    text_column("M_i", [f"{v:+.3f}" for v in result.iso.bidirectional_mean])]
+    results = PointTable(message(QT_TR_NOOP("Results per target ({unit}; target in {target})"),
+                                 unit=sym.strip(), target=result.target_symbol.strip()),
+                         columns,
+                         QT_TR_NOOP("x = actual position − target. U is the expanded uncertainty "
+                                    "of the mean x̄."))
     curve = np.concatenate([p[1] for p in points])
     names = [message(QT_TR_NOOP("target {target} ({arrow})"),
                      target=f"{target:g}{result.target_symbol}",
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
-    tol = metadata.tolerance_in(budget.unit.key)
-    conformity = decide_conformity(curve, budget, tol,
-                                   metadata.decision_rule, metadata.decision_quantity,
-                                   what=QT_TR_NOOP("mean positional deviation"),
-                                   point_names=names, not_stated=not_stated(result))
+    decision = Decision(curve, QT_TR_NOOP("mean positional deviation"), names,
+                        not_stated(result))
     intervals = figure_uncertainties(result, budget)
-    stat_rows = _figure_rows(result, intervals)
-    stat_rows += [(name, value, "", "", note) for name, value, note in
-                  decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)]
-    statistics = Table(QT_TR_NOOP("Figures of the axis"),
-                       (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),
-                        QT_TR_NOOP("Coverage interval"), QT_TR_NOOP("Probability"),
-                        QT_TR_NOOP("Standard")),
-                       stat_rows)
-    plots = [deviation_figure(result)]
-    reversal = reversal_figure(result)
-    if reversal is not None:
-        plots.append(reversal)
-    worst = budget.worst_index
+    statistics = Statistics(_figure_rows(result, intervals),
+                            QT_TR_NOOP("targets and directions"),
+                            title=QT_TR_NOOP("Figures of the axis"),
+                            header=(QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"),
+                                    QT_TR_NOOP("Coverage interval"), QT_TR_NOOP("Probability"),
+                                    QT_TR_NOOP("Standard")))
     statements = [
         message(QT_TR_NOOP("Evaluated to {standard}; the figures of the other standard are given "
                            "beside them from the same readings."), standard=message(standard)),
@@ -377,12 +366,13 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                                              "flagged."), n=MIN_RUNS, runs=runs))
     directions = np.concatenate([np.full(m, 1.0 if name == "up" else -1.0)
                                  for name, *_ in points])
-    return CertificateDocument(
-        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
-        method=METHOD, method_reference=method_reference, parameters=parameters,
-        results=results, statistics=statistics, budget=budget, budget_point=names[worst],
-        conformity=conformity, tolerance=tol, plots=tuple(plots),
-        warnings=tuple(result.warnings), unit=sym, statements=tuple(statements),
+    return build_certificate(
+        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        source_name=source_name, method_reference=method_reference, budget=budget,
+        parameters=parameters, results=results, statistics=statistics, decision=decision,
+        budget_point=lambda worst: names[worst],
+        plots=(deviation_figure(result), reversal_figure(result)),
+        warnings=result.warnings, unit=sym, statements=statements,
         standard=standard, sign_convention=SIGN_CONVENTION_TEXT,
         point_columns=(
             ("target", np.tile(result.positions, len(points))), ("direction", directions),

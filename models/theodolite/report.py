@@ -35,14 +35,20 @@ from typing import Any
 
 import numpy as np
 
+from models.certificate.builder import (
+    Decision,
+    PointTable,
+    Statistics,
+    build_certificate,
+    figure_column,
+    text_column,
+    uncertainty_column,
+)
 from models.certificate.document import (
     CertificateDocument,
     Table,
-    decision_rows,
     reference_standard_components,
     resolution_component,
-    rounded_cells,
-    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
@@ -50,7 +56,7 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
-from models.uncertainty.conformity import decide_conformity, expanded_text
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate",
@@ -201,44 +207,32 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
          (QT_TR_NOOP("Residual RMS"), f"{ident.residual_rms_arcsec:.3f}\"", ""),
          (QT_TR_NOOP("Reference point θ₀"), f"{result.reference_theta_deg:g}°", "")])
     correction = -result.model_error_arcsec
-    numeric = list(zip(result.theta_deg, result.raw_error_arcsec, correction,
-                       result.corrected_error_arcsec, big_u, strict=True))
-    # each point's figures to the decimal of its own U, two significant digits (GUM 7.2.6)
-    shown = table_decimals(big_u)
-    rows = [(f"{t:.4f}", *cells, u_text) for t, r, c, e, u in numeric
-            for cells, u_text in (rounded_cells((r, c, e), u, shown),)]
-    results = Table(QT_TR_NOOP("Results per point (corrected = raw + correction)"),
-                    ("θ (°)", QT_TR_NOOP("Raw error (\")"), QT_TR_NOOP("Correction (\")"),
-                     QT_TR_NOOP("Corrected error (\")"), "U (\")"), rows)
+    results = PointTable(QT_TR_NOOP("Results per point (corrected = raw + correction)"), (
+        text_column("θ (°)", [f"{t:.4f}" for t in result.theta_deg]),
+        figure_column(QT_TR_NOOP("Raw error (\")"), result.raw_error_arcsec, big_u),
+        figure_column(QT_TR_NOOP("Correction (\")"), correction, big_u),
+        figure_column(QT_TR_NOOP("Corrected error (\")"), result.corrected_error_arcsec, big_u),
+        uncertainty_column("U (\")", big_u)))
     r, c = result.raw_stats, result.corrected_stats
-    stat_rows = [
+    statistics = Statistics([
         (QT_TR_NOOP("Points"), f"{c.n}", ""),
         (QT_TR_NOOP("Raw error"), f"{r.min:+.2f}\" … {r.max:+.2f}\"",
          message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{r.peak_to_peak:.2f}\"")),
         (QT_TR_NOOP("Corrected error"), f"{c.min:+.2f}\" … {c.max:+.2f}\"",
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
                  rms=f"{c.rms:.2f}\"")),
-    ]
-    tol = metadata.tolerance_in(budget.unit.key)
-    conformity = decide_conformity(result.corrected_error_arcsec, budget, tol,
-                                   metadata.decision_rule, metadata.decision_quantity,
-                                   point_names=_point_names(result.theta_deg))
-    stat_rows += decision_rows(conformity, budget, QT_TR_NOOP("points"))
-    if result.iso230 is not None:
-        for k, v in result.iso230.figures.items():
-            if math.isfinite(v):
-                stat_rows.append((f"ISO 230-2 {k}", f"{v:.2f}\"", ""))
-    statistics = Table(QT_TR_NOOP("Statistics"), (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), ""),
-                       stat_rows)
-    plots = (error_figure(result), corrected_with_uncertainty(result, big_u),
-             residual_figure(result))
-    worst = budget.worst_index
-    return CertificateDocument(
-        kind_key=KEY, kind_title=TITLE, metadata=metadata, source_name=source_name,
-        method=METHOD, method_reference=method_reference, parameters=parameters,
-        results=results, statistics=statistics, budget=budget,
-        budget_point=f"θ = {result.theta_deg[worst]:g}°", conformity=conformity,
-        tolerance=tol, plots=plots, warnings=tuple(result.warnings),
+    ], QT_TR_NOOP("points"), after=[
+        (f"ISO 230-2 {k}", f"{v:.2f}\"", "") for k, v in
+        (result.iso230.figures.items() if result.iso230 is not None else ()) if math.isfinite(v)])
+    return build_certificate(
+        kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
+        source_name=source_name, method_reference=method_reference, budget=budget,
+        parameters=parameters, results=results, statistics=statistics,
+        decision=Decision(result.corrected_error_arcsec,
+                          point_names=_point_names(result.theta_deg)),
+        budget_point=lambda worst: f"θ = {result.theta_deg[worst]:g}°",
+        plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
+               residual_figure(result)), warnings=result.warnings,
         statements=(message(QT_TR_NOOP("U is zero at the reference reading (row {row}, θ₀ = "
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),

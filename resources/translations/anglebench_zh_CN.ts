@@ -2747,7 +2747,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Amendment {number} to certificate {certificate}</source>
-        <extracomment>the certificate&apos;s fixed words in Chinese, metrology terms as JJF 1001-2011 names them</extracomment>
         <translation>证书 {certificate} 的第 {number} 号修改</translation>
     </message>
     <message>

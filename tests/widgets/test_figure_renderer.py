@@ -103,7 +103,7 @@ def test_the_certificate_draws_from_the_shared_style(monkeypatch, series, colour
         seen.append(style)
         return style
 
-    monkeypatch.setattr(certificate_pdf, "series_style", spy)
+    monkeypatch.setattr(certificate_pdf.plots, "series_style", spy)
     pdf = certificate_pdf.ReportPdf(("", ""), ("", ""))
     pdf.set_compression(False)
     pdf.add_page()

@@ -1,0 +1,51 @@
+"""The certificate's page: the lab and the certificate number at the head, the reproduction
+notice and the software at the foot, the register's chain head, a DRAFT or SPECIMEN
+watermark."""
+
+from __future__ import annotations
+
+from app.writers.certificate_pdf.fonts import _needs_fallback
+from app.writers.certificate_pdf.report_pdf import ReportPdf
+from app.writers.certificate_pdf.wording import _say
+from models.certificate.document import CertificateDocument
+from models.messages import QT_TR_NOOP, message
+from models.software import software_identity
+
+
+class _CertificatePdf(ReportPdf):
+    def __init__(self, document: CertificateDocument) -> None:
+        meta = document.metadata
+        say = _say(meta.language)
+        super().__init__(
+            (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
+             say(message(QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
+                 if meta.certificate_number else message(QT_TR_NOOP("Certificate no number")))),
+            (say(QT_TR_NOOP("This certificate shall not be reproduced except in full without "
+                            "the laboratory's written approval.")),
+             say(message(QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
+                         number=meta.certificate_number or "—",
+                         version=software_identity().short))),
+            cjk=_needs_fallback(document) or document.metadata.language != "en",
+            language=meta.language)
+        self.document = document
+
+    def header(self) -> None:
+        super().header()
+        if self.document.specimen:
+            self._watermark(QT_TR_NOOP("SPECIMEN"), 60)
+        elif self.document.is_draft:
+            self._watermark(QT_TR_NOOP("DRAFT"), 90)
+
+    def _watermark(self, word: str = QT_TR_NOOP("DRAFT"), size: float = 90) -> None:
+        x, y = self.get_x(), self.get_y()
+        with (self.local_context(text_color=(235, 200, 200)),
+              self.rotation(45, self.w / 2, self.h / 2)):
+            self.mixed_text(self.w / 2 - 60, self.h / 2 + 12, self.say(word), size, "B")
+        self.set_xy(x, y)
+
+    def _foot_anchor(self) -> None:
+        head = self.document.register_head
+        if head:
+            self.set_xy(self.l_margin, self.h - 6)
+            self.cell(self.epw, 3.5, self.say(message(QT_TR_NOOP(
+                "Register chain head before this certificate: {head}…"), head=head[:16])))

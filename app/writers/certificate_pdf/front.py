@@ -1,0 +1,110 @@
+"""The certificate's front: its title, a DRAFT, SPECIMEN or revision notice, and the details
+of the certificate, the laboratory, the customer, the item and the calibration."""
+
+from __future__ import annotations
+
+import datetime as dt
+
+from fpdf.enums import XPos, YPos
+
+from app.writers.certificate_pdf.certificate_page import _CertificatePdf
+from app.writers.certificate_pdf.fonts import FONT
+from app.writers.certificate_pdf.wording import _between, _listed, label
+from models.certificate.document import CertificateDocument
+from models.certificate.metadata import PLACES
+from models.messages import QT_TR_NOOP, joined, message
+
+
+def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.datetime) -> None:
+    meta = document.metadata
+    pdf.set_font(FONT, "B", 17)
+    pdf.cell(0, 9, label(document, document.title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    pdf.set_font(FONT, "", 11)
+    pdf.cell(0, 6, pdf.say(document.kind_title), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+    if document.specimen:
+        pdf.paragraph(message(QT_TR_NOOP(
+            "SPECIMEN — made from example details for training or demonstration; not a "
+            "certificate, not recorded in any register.")), 9, (170, 30, 30))
+    elif document.is_draft:
+        pdf.paragraph(message(QT_TR_NOOP("DRAFT — not valid as a certificate. Missing: "
+                                         "{fields}."), fields=_listed(meta.missing_fields())),
+                      9, (170, 30, 30))
+    if meta.supersedes:
+        pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
+    pdf.ln(1)
+    pdf.key_values([
+        (label(document, "Certificate number", "\n"), meta.certificate_number),
+        (label(document, "Date of issue", "\n"), meta.issue_date or created.date().isoformat()),
+        (label(document, "Laboratory", "\n"),
+         ", ".join(p for p in (meta.lab_name, meta.lab_address) if p)),
+        (label(document, "Accreditation", "\n"), meta.lab_accreditation),
+        (label(document, "Customer", "\n"),
+         ", ".join(p for p in (meta.customer_name, meta.customer_address) if p)),
+        (label(document, "Item under test", "\n"), meta.item_description),
+        (label(document, "Manufacturer", "\n"), meta.item_manufacturer),
+        (label(document, "Model", "\n"), meta.item_model),
+        (label(document, "Serial number", "\n"), meta.item_serial),
+        (label(document, "Grade / specification", "\n"), joined(_between("; ", [
+            meta.item_grade, message(QT_TR_NOOP("tolerance ±{tolerance}"),
+                                     tolerance=f"{document.tolerance:g}{document.unit}")
+            if document.tolerance else ""]))),
+        (label(document, "Date of calibration", "\n"), meta.calibration_date),
+        (label(document, "Place of calibration", "\n"), _place(meta)),
+        (label(document, "Environment", "\n"), _environment(meta)),
+        (label(document, "Readings", "\n"), document.source_name),
+        *([(label(document, "Instrument output", "\n"),
+            f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
+        *([(label(document, "Edited after capture", "\n"), joined(_between("\n", document.edited_readings)))]
+          if document.edited_readings else []),
+    ])
+
+
+def revision_statement(meta) -> str:
+    """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
+    replacement identifies the one it replaces."""
+    number = meta.revision.removeprefix("amendment").strip()
+    if meta.revision.startswith("amendment") and number:
+        what = message(QT_TR_NOOP("Amendment {number} to certificate {certificate}"),
+                       number=number, certificate=meta.supersedes)
+    elif meta.revision.startswith("amendment"):
+        what = message(QT_TR_NOOP("Amendment to certificate {certificate}"),
+                       certificate=meta.supersedes)
+    else:
+        what = message(QT_TR_NOOP("This certificate replaces certificate {certificate}"),
+                       certificate=meta.supersedes)
+    if meta.change_note:
+        return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                                  "unchanged. Changed: {change}"), what=what,
+                       change=meta.change_note)
+    return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                              "unchanged."), what=what)
+
+
+def _created(document: CertificateDocument) -> dt.datetime:
+    meta = document.metadata
+    if meta.created:
+        try:
+            stamp = dt.datetime.fromisoformat(meta.created)
+        except ValueError:
+            stamp = None
+        if stamp is not None:
+            return stamp if stamp.tzinfo else stamp.replace(tzinfo=dt.timezone.utc)
+    if meta.issue_date:
+        return dt.datetime.fromisoformat(meta.issue_date).replace(tzinfo=dt.timezone.utc)
+    return dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
+
+
+def _place(meta) -> str:
+    """Where it was calibrated: at the laboratory, or at the customer's site (and where)."""
+    place = message(PLACES.get(meta.calibration_place, PLACES["laboratory"]))
+    return joined([place, ": ", meta.calibration_site]) if meta.calibration_site else place
+
+
+def _environment(meta) -> str:
+    parts = []
+    if meta.temperature_c is not None:
+        parts.append(message(QT_TR_NOOP("temperature {t} °C"), t=f"{meta.temperature_c:.1f}"))
+    if meta.humidity_pct is not None:
+        parts.append(message(QT_TR_NOOP("relative humidity {h} %"),
+                             h=f"{meta.humidity_pct:.0f}"))
+    return joined(_between(", ", parts))

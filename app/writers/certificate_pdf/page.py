@@ -1,0 +1,186 @@
+"""An A4 page with the bundled fonts, a running head and foot ("Page x of y"), section
+headings and paragraphs, each text run set in the font its characters need."""
+
+from __future__ import annotations
+
+from fpdf import FPDF
+from fpdf.enums import XPos, YPos
+
+from app.writers.certificate_pdf.fonts import CJK_FONT, FONT, _latin_coverage, font_files
+from app.writers.certificate_pdf.line_breaks import _long_word, _mostly_cjk, _units
+from app.writers.certificate_pdf.wording import _say
+from models.messages import QT_TR_NOOP, message
+
+PAGE_TOTAL_ALIAS = "{nb}"
+INK = (20, 20, 20)
+GREY = (110, 110, 110)
+RULE = (170, 170, 170)
+
+
+class PageFrame(FPDF):
+    """The page: ``head`` is (left, right) text at the top of every page, ``foot`` the lines
+    at the bottom (the first gets "Page x of y" beside it)."""
+
+    def __init__(self, head: tuple[str, str], foot: tuple[str, str], cjk: bool = False,
+                 language: str = "en") -> None:
+        super().__init__(orientation="portrait", unit="mm", format="A4")
+        self.head, self.foot = head, foot
+        self.say = _say(language)  # how a text is printed ("zh": translated)
+        self.language = language
+        fonts = font_files()
+        self.add_font(FONT, "", str(fonts["regular"]))
+        self.add_font(FONT, "B", str(fonts["bold"]))
+        if cjk or language == "zh":  # the CJK font costs ~0.3 s to load and subset
+            self.add_font(CJK_FONT, "", str(fonts["cjk"]))
+            self.set_fallback_fonts([CJK_FONT], exact_match=False)
+        self.set_margins(18, 16, 18)
+        self.set_auto_page_break(True, margin=20)
+        self.alias_nb_pages("")  # see footer()
+        self.set_text_color(*INK)
+
+    # -- every run with its font ---------------------------------------------
+    # fpdf2 remembers that it has set the font on the page, but sets it inside the "q … Q"
+    # that wraps a cell (or a rotation) and so is undone at the "Q": the next text was
+    # written with no font at all ("No font in show": a Latin-only lab name in the head of
+    # every page after the first, figures between Chinese words). Each text object here
+    # selects its font again.
+    def _render_styled_text_line(self, *args, **kwargs):
+        self.current_font_is_set_on_page = False
+        return super()._render_styled_text_line(*args, **kwargs)
+
+    def text(self, *args, **kwargs):
+        self.current_font_is_set_on_page = False
+        return super().text(*args, **kwargs)
+
+    # -- page furniture ------------------------------------------------------
+    def header(self) -> None:
+        self.set_font(FONT, "", 8)
+        self.set_text_color(*GREY)
+        left, right = self.head
+        # The right-hand cell first: a CJK lab name switches to the fallback font, and
+        # fpdf2 then omits the font selection of the next cell on a fresh page.
+        y = self.get_y()
+        right_width = min(self.text_width(right, 8) + 2 * self.c_margin + 0.5, self.epw / 2)
+        self.set_font(FONT, "", 8)
+        self.set_x(self.l_margin + self.epw - right_width)
+        self.cell(right_width, 5, right, align="R")
+        # the left text (the lab's name) gets what the number leaves, never more: shrunk
+        # down to 6 pt, then broken into lines, so it never prints over the number
+        room = self.epw - right_width - 3
+        size = 8.0
+        wide = self.text_width(left, size)
+        if wide > room - 2 * self.c_margin:
+            size = max(6.0, size * (room - 2 * self.c_margin) / wide)
+        self.set_font(FONT, "", size)
+        self.set_xy(self.l_margin, y)
+        if self.text_width(left, size) <= room - 2 * self.c_margin:
+            self.cell(room, 5, left, new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        else:
+            self.multi_cell(room, size * 0.45, self._wrapped(left, room - 2 * self.c_margin - 0.6,
+                                                             size),
+                            wrapmode="CHAR", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            self.set_y(max(self.get_y(), y + 5))
+        self.set_font(FONT, "", 8)
+        self.set_draw_color(*RULE)
+        self.line(self.l_margin, self.get_y(), self.w - self.r_margin, self.get_y())
+        self.ln(3)
+        self.set_text_color(*INK)
+
+    def footer(self) -> None:
+        self.set_y(-14)
+        self.set_font(FONT, "", 7.5)
+        self.set_text_color(*GREY)
+        self.cell(self.epw * 0.75, 4, self.foot[0], new_x=XPos.RIGHT, new_y=YPos.TOP)
+        # The page-count alias is live only here: elsewhere a "{nb}" typed by the user
+        # would be replaced by the number of pages.
+        previous, self.str_alias_nb_pages = self.str_alias_nb_pages, PAGE_TOTAL_ALIAS
+        self.cell(self.epw * 0.25, 4, self.say(message(QT_TR_NOOP("Page {page} of {pages}"),
+                                                       page=self.page_no(),
+                                                       pages=PAGE_TOTAL_ALIAS)),
+                  align="R", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.str_alias_nb_pages = previous
+        self.cell(self.epw, 4, self.foot[1])
+        self._foot_anchor()
+        self.set_text_color(*INK)
+
+    def _foot_anchor(self) -> None:
+        """The register's head before this certificate, short (see _CertificatePdf)."""
+
+    def output(self, *args, **kwargs):
+        self.str_alias_nb_pages = PAGE_TOTAL_ALIAS  # fill in the footer's placeholders
+        return super().output(*args, **kwargs)
+
+    # -- building blocks -----------------------------------------------------
+    def heading(self, text: str, keep_with: float = 18.0) -> None:
+        """A section heading, moved to the next page unless ``keep_with`` mm follow it."""
+        if self.will_page_break(keep_with):
+            self.add_page()
+        self.ln(2)
+        self.set_font(FONT, "B", 11)
+        self.cell(0, 7, self.say(text), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+        self.set_font(FONT, "", 9)
+
+    def paragraph(self, text: str, size: float = 9, color=INK) -> None:
+        text = self.say(text)
+        self.set_font(FONT, "", size)
+        with self.local_context(text_color=color):
+            if _mostly_cjk(text):  # Chinese prose: not justified; broken where
+                # _units allows (between Chinese characters, at spaces), never inside
+                # a figure or a word, never before a closing mark such as "。"
+                width = self.epw - 2 * self.c_margin - 0.6
+                self.multi_cell(0, 4.6, self._wrapped(text, width, size), wrapmode="CHAR",
+                                align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+            else:
+                long_word = _long_word(text)  # (a checksum): broken here between words
+                width = self.epw - 2 * self.c_margin - 0.6
+                self.multi_cell(0, 4.6, self._wrapped(text, width, size) if long_word else text,
+                                wrapmode="CHAR" if long_word else "WORD",
+                                new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+
+    def _wrapped(self, text: str, width: float, size: float, style: str = "") -> str:
+        """``text`` broken into lines of at most ``width`` mm where :func:`_units` allows
+        (a unit wider than a line is left to fpdf2's character wrap)."""
+        lines = []
+        for paragraph in text.split("\n"):
+            line = ""
+            for unit in _units(paragraph):
+                if line.strip() and self.text_width((line + unit).rstrip(), size, style) > width:
+                    lines.append(line.rstrip())
+                    line = unit.lstrip()
+                else:
+                    line += unit
+            lines.append(line.rstrip())
+        self.set_font(FONT, "", size)  # text_width() leaves the last run's font selected
+        return "\n".join(lines)
+
+    def _runs(self, text: str) -> list[tuple[str, str]]:
+        """``text`` cut into runs of one font each: DejaVu Sans, or the CJK font for the
+        characters DejaVu lacks (``text()`` has no fallback font of its own, and the CJK
+        font has no Latin letters)."""
+        latin = _latin_coverage()
+        cjk = CJK_FONT in self.fonts
+        runs: list[tuple[str, str]] = []
+        for ch in text:
+            font = CJK_FONT if cjk and ord(ch) > 0x7F and ord(ch) not in latin else FONT
+            if runs and runs[-1][0] == font:
+                runs[-1] = (font, runs[-1][1] + ch)
+            else:
+                runs.append((font, ch))
+        return runs
+
+    def _use(self, font: str, size: float, style: str) -> None:
+        self.set_font(font, style if font == FONT else "", size)
+
+    def text_width(self, text: str, size: float, style: str = "") -> float:
+        width = 0.0
+        for font, run in self._runs(text):
+            self._use(font, size, style)
+            width += self.get_string_width(run)
+        return width
+
+    def mixed_text(self, x: float, y: float, text: str, size: float, style: str = "") -> None:
+        """``text()`` of ``text`` in as many fonts as its characters need."""
+        for font, run in self._runs(text):
+            self._use(font, size, style)
+            self.text(x, y, run)
+            x += self.get_string_width(run)

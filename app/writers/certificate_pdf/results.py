@@ -1,0 +1,34 @@
+"""The measured results: the parameters identified, the error curves, the statistics and the
+results table."""
+
+from __future__ import annotations
+
+from app.writers.certificate_pdf.certificate_page import _CertificatePdf
+from app.writers.certificate_pdf.wording import label
+from models.certificate.document import CertificateDocument
+
+
+def draw_parameters(pdf: _CertificatePdf, document: CertificateDocument) -> None:
+    pdf.heading(label(document, document.parameters.title))
+    pdf.data_table(document.parameters, (70, 60, 44), ("LEFT", "RIGHT", "RIGHT"))
+
+
+def draw_curves(pdf: _CertificatePdf, document: CertificateDocument) -> None:
+    pdf.heading(label(document, "Error curves"), keep_with=75.0)
+    for figure in document.plots:
+        pdf.plot(figure)
+
+
+def draw_statistics(pdf: _CertificatePdf, document: CertificateDocument) -> None:
+    pdf.heading(label(document, document.statistics.title))
+    if len(document.statistics.header) == 5:  # figures with their coverage interval
+        pdf.data_table(document.statistics, (46, 26, 42, 24, 36),
+                       ("LEFT", "RIGHT", "RIGHT", "RIGHT", "LEFT"))
+    else:
+        pdf.data_table(document.statistics, (56, 42, 76), ("LEFT", "RIGHT", "LEFT"))
+
+
+def draw_results(pdf: _CertificatePdf, document: CertificateDocument) -> None:
+    pdf.heading(label(document, document.results.title))
+    n_cols = len(document.results.header)
+    pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)

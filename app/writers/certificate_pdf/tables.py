@@ -1,0 +1,77 @@
+"""Tables on the page: the key–value list of the certificate's details and the ruled data
+tables (headers in both languages on a bilingual certificate, no "−0.00")."""
+
+from __future__ import annotations
+
+import re
+
+from fpdf.enums import TableCellFillMode
+from fpdf.fonts import FontFace
+
+from app.writers.certificate_pdf.fonts import FONT
+from app.writers.certificate_pdf.line_breaks import _wrapmode
+from app.writers.certificate_pdf.page import GREY, PageFrame
+from app.writers.certificate_pdf.wording import _both
+from models.certificate.document import Table
+
+HEADER_FILL = (228, 233, 240)
+
+
+class TableDrawing(PageFrame):
+    """The page with its tables: the details' key–value list and the ruled data tables."""
+
+    def _cells_wrapped(self, rows, widths, size: float, bold_first: bool) -> list[list[str]]:
+        """A table's cells pre-wrapped as :meth:`_wrapped` does (for a table fpdf2 wraps by
+        character: one holding Chinese), so that no word or figure is cut in two."""
+        scale = self.epw / sum(widths)
+        out = []
+        for r, row in enumerate(rows):
+            style = "B" if bold_first and r == 0 else ""
+            out.append([self._wrapped(str(cell or ""), w * scale - 2.6, size, style)
+                        if cell else cell for cell, w in zip(row, widths, strict=False)])
+        self.set_font(FONT, "", size)
+        return out
+
+    def key_values(self, rows: list[tuple[str, str]]) -> None:
+        self.set_font(FONT, "", 9)
+        rows = [(self.say(key), self.say(value)) for key, value in rows]
+        wrapmode = _wrapmode(cell for row in rows for cell in row)
+        if wrapmode == "CHAR":
+            rows = [(key, self._cells_wrapped([["", value]], (45, 129), 9, False)[0][1])
+                    for key, value in rows]
+        with self.table(col_widths=(45, 129), first_row_as_headings=False, borders_layout="NONE",
+                        line_height=4.8, text_align=("LEFT", "LEFT"), padding=(0.6, 1.0),
+                        wrapmode=wrapmode) as table:
+            for key, value in rows:
+                row = table.row()
+                # a two-line bilingual label is set plain: fpdf2 drops the English line of a
+                # bold cell that falls back to the CJK font (seen in poppler: "No font in show")
+                row.cell(key, style=None if "\n" in key else FontFace(emphasis="BOLD"))
+                row.cell(value or "—")
+
+    def data_table(self, t: Table, widths: tuple[float, ...], align: tuple[str, ...],
+                   size: float = 8) -> None:
+        self.set_font(FONT, "", size)
+        self.set_fill_color(246, 247, 249)
+        heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
+        header = [_both(cell) if self.language == "zh+en" else cell for cell in t.header]
+        cells = [[_no_negative_zero(self.say(cell)) for cell in row] for row in (header, *t.rows)]
+        wrapmode = _wrapmode(cell for row in cells for cell in row)
+        if wrapmode == "CHAR":
+            cells = self._cells_wrapped(cells, widths, size, True)
+        with self.table(col_widths=widths, text_align=align, line_height=size * 0.5,
+                        headings_style=heading, borders_layout="HORIZONTAL_LINES",
+                        cell_fill_color=(246, 247, 249), cell_fill_mode=TableCellFillMode.ROWS,
+                        repeat_headings=1, padding=(0.5, 1.0), wrapmode=wrapmode) as table:
+            for row in cells:
+                table.row(row)
+        if t.note:
+            self.paragraph(t.note, 7.5, GREY)
+
+
+_NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](0(?:\.0+)?)(?![\d.])")
+
+
+def _no_negative_zero(text):
+    """"−0.00" printed "0.00": a figure that rounds to zero has no sign."""
+    return _NEGATIVE_ZERO.sub(r"\1", text) if isinstance(text, str) else text

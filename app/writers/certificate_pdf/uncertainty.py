@@ -1,0 +1,32 @@
+"""The measurement uncertainty: U and how it was evaluated, the budget at its worst point
+and each input's note."""
+
+from __future__ import annotations
+
+from app.writers.certificate_pdf.certificate_page import _CertificatePdf
+from app.writers.certificate_pdf.page import GREY
+from app.writers.certificate_pdf.wording import _colon, _translatable, label
+from models.certificate.document import CertificateDocument, budget_table
+from models.messages import QT_TR_NOOP, joined, message
+from models.uncertainty.conformity import uncertainty_decimals
+
+
+def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> None:
+    pdf.heading(label(document, "Measurement uncertainty"))
+    big_u = document.expanded_uncertainty
+    budget_ = document.budget
+    pdf.paragraph(message(QT_TR_NOOP(
+        "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
+        "point's U is in the results table). At each point it is the combined standard "
+        "uncertainty multiplied by the coverage factor k of Student's t for that point's "
+        "effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of "
+        "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
+        "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
+        p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
+    budget = budget_table(document.budget, document.budget_point, document.unit)
+    pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
+                   ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
+    notes = [joined([_translatable(row[0]), _colon(document), _translatable(c.note)])
+             for row, c in zip(budget.rows, document.budget.components, strict=False) if c.note]
+    for note in notes:
+        pdf.paragraph(note, 7.5, GREY)

@@ -1,0 +1,86 @@
+"""The certificate's fixed words in its language: Chinese headings (JJF 1001-2011 terms), a
+text translated on a Chinese certificate, both languages on a bilingual one, and the
+punctuation and list joining of composed texts."""
+
+from __future__ import annotations
+
+import functools
+
+from models.certificate.document import CertificateDocument
+from models.messages import Message, in_language, joined, message, translator
+
+#: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them
+CHINESE = {
+    "Calibration certificate": "校准证书", "Test report": "检测报告",
+    "Certificate number": "证书编号", "Date of issue": "签发日期", "Laboratory": "校准机构",
+    "Accreditation": "认可", "Customer": "委托方", "Item under test": "被校准对象",
+    "Manufacturer": "制造单位", "Serial number": "出厂编号",
+    "Grade / specification": "准确度等级/技术指标", "Date of calibration": "校准日期",
+    "Environment": "环境条件", "Readings": "原始记录",
+    "Reference standards and traceability": "计量标准及计量溯源性", "Method": "校准方法",
+    "Analysis settings": "分析设置", "Error curves": "误差曲线", "Statistics": "统计结果",
+    "Measurement uncertainty": "测量不确定度", "Statement of conformity": "符合性声明",
+    "Statements": "声明", "Remarks": "备注", "Uncertainty budget": "不确定度分量一览表",
+    "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
+    "Model": "型号", "Place of calibration": "校准地点",
+    "Instrument output": "仪器原始输出", "Edited after capture": "采集后修改",
+}
+
+
+def label(document: CertificateDocument, english: str, separator: str = " ") -> str:
+    """``english``, with its Chinese in front on a bilingual certificate, or in Chinese
+    alone on a Chinese one."""
+    language = document.metadata.language
+    if language == "zh+en" and english in CHINESE:
+        return f"{CHINESE[english]}{separator}{english}"
+    if language == "zh":
+        return CHINESE.get(english) or _say("zh")(english)
+    return english
+
+
+@functools.cache
+def _say(language: str):
+    """How the certificate's texts are printed in ``language``: a :class:`Message` in the
+    translated template with its own figures, another text looked up whole (a column's
+    name, a setting's label), anything else — user input, numbers — as it is. Only a
+    Chinese certificate is translated: the bilingual one keeps the English body under
+    its two-language headings."""
+    if language != "zh":
+        return str
+    words = translator("zh_CN")
+    return lambda text: in_language(text, words)
+
+
+def _both(text):
+    """A column's name in Chinese above the English (a bilingual certificate's headers)."""
+    if not text:
+        return text
+    chinese, english = _say("zh")(text), str(text)
+    return english if chinese == english else f"{chinese}\n{english}"
+
+
+def _colon(document: CertificateDocument) -> str:
+    return "：" if document.metadata.language == "zh" else ": "
+
+
+def _stop(document: CertificateDocument) -> str:
+    return "。" if document.metadata.language == "zh" else "."
+
+
+def _translatable(text: str) -> str:
+    """``text`` as a part of a composed text that a Chinese certificate translates: a
+    :class:`Message` as it is, any other text looked up whole."""
+    return text if isinstance(text, Message) or not text else message(text)
+
+
+def _between(separator: str, parts) -> list:
+    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`)."""
+    out: list = []
+    for part in parts:
+        if part:
+            out += ([separator] if out else []) + [_translatable(part)]
+    return out
+
+
+def _listed(names) -> str:
+    return joined(_between(", ", names))

@@ -1,0 +1,154 @@
+"""The shape every workbench's certificate shares, declared once.
+
+A certificate (:class:`~models.certificate.document.CertificateDocument`) holds a results
+table (a row per point, each figure to the decimal of its own U, GUM 7.2.6), a statistics
+table with the decision rows in it (the decided quantity and the curve's largest U), a
+statement of conformity decided on one error curve, the uncertainty budget shown at its
+worst point, and the workbench's own statements. :func:`build_certificate` makes the
+document from what is a workbench's own: its columns and their figures, its statistics
+rows, the curve it decides on and its statements; it formats, decides and assembles the
+rest the same way for every workbench.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from models.certificate.document import (
+    CertificateDocument,
+    PlotFigure,
+    Table,
+    decision_rows,
+    rounded_cells,
+    table_decimals,
+)
+from models.certificate.metadata import CertificateMetadata
+from models.messages import QT_TR_NOOP
+from models.quantity import unit as unit_of
+from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+__all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
+           "figure_column", "text_column", "uncertainty_column"]
+
+
+@dataclass(frozen=True)
+class Column:
+    """A column of the results table: its header, and its cells given the table's reference
+    decimal (the decimal a point whose U gives none is printed to: :func:`table_decimals`)."""
+
+    header: str
+    cells: Callable[[int], Sequence[str]]
+
+
+def text_column(header: str, cells: Sequence[str]) -> Column:
+    """A column the workbench formats itself (the point's angle, its number …)."""
+    listed = list(cells)
+    return Column(header, lambda _shown: listed)
+
+
+def figure_column(header: str, values, expanded) -> Column:
+    """Each point's figure, signed, to the decimal of its U (two significant digits); a point
+    whose U is zero (a reference point) or not finite to the table's reference decimal."""
+    pairs = list(zip(values, expanded, strict=True))
+    return Column(header, lambda shown: [rounded_cells((v,), u, shown)[0][0] for v, u in pairs])
+
+
+def uncertainty_column(header: str, expanded) -> Column:
+    """Each point's U to two significant digits; "reference point, by definition" where it is
+    zero, "—" where it is not finite."""
+    return Column(header, lambda shown: [rounded_cells((), u, shown)[1] for u in expanded])
+
+
+@dataclass(frozen=True)
+class PointTable:
+    """The results table: a row per point, from the workbench's columns."""
+
+    title: str
+    columns: Sequence[Column]
+    note: str = ""
+
+    def table(self, expanded) -> Table:
+        """The printable table; ``expanded``: the certificate's U per point (its median
+        positive value gives the reference decimal)."""
+        shown = table_decimals(expanded)
+        cells = [list(column.cells(shown)) for column in self.columns]
+        rows = list(zip(*cells, strict=True)) if cells else []
+        return Table(self.title, tuple(c.header for c in self.columns), rows, self.note)
+
+
+@dataclass(frozen=True)
+class Decision:
+    """The error curve the statement of conformity is made on (in the budget's unit), as
+    models.uncertainty.conformity.decide_conformity takes it. ``budget``: the one that
+    curve's U comes from (None: the certificate's); ``withheld``: why no statement is made
+    ("" when one may be)."""
+
+    errors: Any
+    what: str = QT_TR_NOOP("corrected error")
+    point_names: Sequence[str] | None = None
+    not_stated: Sequence[str] = ()
+    withheld: str = ""
+    budget: UncertaintyBudget | None = None
+
+
+@dataclass(frozen=True)
+class Statistics:
+    """The statistics table: the workbench's rows, with the decision rows (the decided
+    quantity with its U, the largest U over the ``points``) between ``before`` and
+    ``after``. ``budget``: the one the decision rows state (None: the certificate's). A
+    table wider than three columns gets the decision rows' note in its last column."""
+
+    before: Sequence[tuple[str, ...]]
+    points: str
+    after: Sequence[tuple[str, ...]] = ()
+    title: str = QT_TR_NOOP("Statistics")
+    header: tuple[str, ...] = (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), "")
+    budget: UncertaintyBudget | None = None
+
+    def table(self, conformity, budget: UncertaintyBudget, unit: str) -> Table:
+        padding = ("",) * (len(self.header) - 3)
+        decided = [(name, value, *padding, note) for name, value, note in
+                   decision_rows(conformity, self.budget or budget, self.points, unit)]
+        return Table(self.title, self.header, [*self.before, *decided, *self.after])
+
+
+class _FromDetails:
+    """The tolerance of the certificate details, in the budget's unit."""
+
+
+FROM_DETAILS = _FromDetails()
+
+
+def build_certificate(*, kind_key: str, kind_title: str, method: str,
+                      metadata: CertificateMetadata, source_name: str, method_reference: str,
+                      budget: UncertaintyBudget, parameters: Table, results: PointTable,
+                      statistics: Statistics, decision: Decision,
+                      budget_point: Callable[[int], str],
+                      plots: Sequence[PlotFigure | None], warnings: Sequence[str],
+                      statements: Sequence[str], point_columns: Sequence[tuple[str, Any]],
+                      tolerance: float | None | _FromDetails = FROM_DETAILS,
+                      unit: str = "\"", **more: Any) -> CertificateDocument:
+    """The certificate of a workbench's result: the results table from its columns, the
+    conformity decided on ``decision`` against ``tolerance`` (the details' by default) with
+    the details' decision rule and quantity, the statistics with the decision rows, the
+    budget shown at its worst point (``budget_point`` names it from its index). ``plots``:
+    a None (a figure the result has not) is left out. ``more``: further fields of
+    :class:`CertificateDocument` (untraceable, standard …)."""
+    tol = (metadata.tolerance_in(unit_of(budget.unit).key) if isinstance(tolerance, _FromDetails)
+           else tolerance)
+    conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
+                                   metadata.decision_rule, metadata.decision_quantity,
+                                   decision.withheld, what=decision.what,
+                                   point_names=decision.point_names,
+                                   not_stated=decision.not_stated)
+    return CertificateDocument(
+        kind_key=kind_key, kind_title=kind_title, metadata=metadata, source_name=source_name,
+        method=method, method_reference=method_reference, parameters=parameters,
+        results=results.table(budget.expanded),
+        statistics=statistics.table(conformity, budget, unit), budget=budget,
+        budget_point=budget_point(budget.worst_index), conformity=conformity, tolerance=tol,
+        plots=tuple(p for p in plots if p is not None), warnings=tuple(warnings),
+        statements=tuple(statements), point_columns=tuple(point_columns), unit=unit, **more)
