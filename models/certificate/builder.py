@@ -25,7 +25,8 @@ from models.certificate.document import (
     table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP
+from models.certificate.traceability import expired_withheld
+from models.messages import QT_TR_NOOP, joined
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -139,9 +140,14 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     :class:`CertificateDocument` (untraceable, standard …)."""
     tol = (metadata.tolerance_in(unit_of(budget.unit).key) if isinstance(tolerance, _FromDetails)
            else tolerance)
+    # a standard whose calibration had expired: no statement of conformity (the document is
+    # also a test report, Workbench.certificate_document)
+    expired = expired_withheld(metadata)
+    withheld = (joined([decision.withheld, "; ", expired]) if decision.withheld and expired
+                else decision.withheld or expired)
     conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
-                                   decision.withheld, what=decision.what,
+                                   withheld, what=decision.what,
                                    point_names=decision.point_names,
                                    not_stated=decision.not_stated)
     return CertificateDocument(

@@ -11,7 +11,33 @@ from __future__ import annotations
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, joined, message
 
-__all__ = ["test_report_statement", "traceability_gaps"]
+__all__ = ["expired_standards", "expired_withheld", "test_report_statement", "traceability_gaps"]
+
+
+def expired_standards(metadata: CertificateMetadata) -> list:
+    """The standards listed whose calibration was due before the date of calibration (their
+    due date stated): the U their certificates state no longer holds for this calibration."""
+    if not metadata.calibration_date:
+        return []
+    return [s for s in metadata.standards
+            if s.due_date and s.due_date < metadata.calibration_date]
+
+
+def expired_withheld(metadata: CertificateMetadata):
+    """Why no statement of conformity may be made with the standards listed ("" when it may):
+    a standard whose calibration had expired leaves the U of every result it carries
+    without a basis (ILAC-G8:09/2019 4.2: a decision rests on the measurement uncertainty;
+    ISO/IEC 17025 6.4.7, 7.8.6.1), so the decision is withheld as when U is incomplete."""
+    expired = expired_standards(metadata)
+    if not expired:
+        return ""
+    names = joined(part for i, s in enumerate(expired) for part in (
+        ("; " if i else ""), message(QT_TR_NOOP("{standard} (due {due})"),
+                                     standard=s.description or message(QT_TR_NOOP("standard")),
+                                     due=s.due_date)))
+    return message(QT_TR_NOOP("the calibration of a standard had expired before the date of "
+                              "calibration, so the uncertainty it states does not hold: {names}"),
+                   names=names)
 
 
 def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],

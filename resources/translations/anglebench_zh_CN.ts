@@ -8842,6 +8842,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
     </message>
     <message>
+        <source>{standard} (due {due})</source>
+        <translation>{standard}（到期 {due}）</translation>
+    </message>
+    <message>
+        <source>the calibration of a standard had expired before the date of calibration, so the uncertainty it states does not hold: {names}</source>
+        <translation>有标准器的校准在校准日期之前已过期，其所给出的不确定度不再成立：{names}</translation>
+    </message>
+    <message>
         <source>the standards that carry the measurand are {roles}, each to be listed with a calibration certificate and a stated uncertainty; {count} listed so</source>
         <translation>承载被测量的计量标准为 {roles}，每一项都须列出其校准证书及给定的不确定度；如此列出的有 {count} 项</translation>
     </message>

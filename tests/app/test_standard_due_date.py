@@ -73,3 +73,29 @@ def test_the_due_date_is_printed_and_stated_in_the_dcc(due, expired, tmp_path, s
                               text=True).stdout
         assert due in text
         assert ("had expired" in " ".join(text.split())) is expired
+
+
+@pytest.mark.parametrize("kind", ["theodolite", "polygon"])
+@pytest.mark.parametrize("due, expired", [("2027-05-01", False), ("2026-10-31", True)])
+def test_an_expired_standard_withholds_the_statement_of_conformity(kind, due, expired, tmp_path,
+                                                                  samples_dir, capsys):
+    """The U a standard's certificate states does not hold after its due date, so no
+    statement of conformity is made on results it carries (ILAC-G8 4.2) — in the JSON as on
+    the certificate — while the decided value and its interval are still given."""
+    details = json.loads((samples_dir / f"certificate_{kind}.json").read_text(encoding="utf-8"))
+    assert details.get("tolerance") is not None or kind == "polygon"  # the grade gives T
+    for standard in details["standards"]:
+        standard["due_date"] = due
+    meta = tmp_path / "meta.json"
+    meta.write_text(json.dumps(details), encoding="utf-8")
+    code = main(["analyze", kind, str(samples_dir / f"{kind}_sample.csv"), "--metadata",
+                 str(meta), "--json"])
+    out = capsys.readouterr().out
+    assert code == 0
+    decided = json.loads(out[out.index("{"):])["decided_quantity"]
+    assert isinstance(decided["value"], float) and decided["interval_high"] >= decided["value"]
+    if expired:
+        assert decided["verdict"] is None
+        assert "had expired" in decided["reason"] and "2026-10-31" in decided["reason"]
+    else:
+        assert decided["verdict"] in ("pass", "conditional pass", "conditional fail", "fail")
