@@ -7,8 +7,11 @@ One source: the user guides are written once, in docs/, and the window shows exa
   the manual's contents page, ``window.md`` what every workbench shares);
 * ``docs/zh_CN/user-guide/<name>.md`` → ``resources/manual/<name>.zh_CN.html`` (Chinese);
 * the references a guide links to (``docs/capture.md``, ``docs/certificates-and-register.md``,
-  ``docs/command-line.md``, ``docs/benchmarks.md``) → ``resources/manual/<name>.html``
-  (English only).
+  ``docs/command-line.md``, ``docs/benchmarks.md``) → ``resources/manual/<name>.html``, and
+  those translated (``docs/zh_CN/<name>.md``: capture and certificates-and-register, what a
+  technician needs in the window) → ``resources/manual/<name>.zh_CN.html``. The command-line
+  reference stays English: most of it is the ``--help`` of every command, generated from the
+  code in English (app/docs_tables.py), and the benchmarks are for developers.
 
 Why HTML generated into resources/manual/ rather than Qt reading the Markdown: the pages
 ship inside the ``resources`` package (found from an installed package, not only from the
@@ -37,8 +40,10 @@ ROOT = Path(__file__).resolve().parents[1]
 MANUAL = PurePosixPath("resources/manual")
 SCREENSHOTS = PurePosixPath("resources/screenshots")
 GUIDES = {"en": PurePosixPath("docs/user-guide"), "zh_CN": PurePosixPath("docs/zh_CN/user-guide")}
-#: the references the user guides link to, in the manual in English only
+#: the references the user guides link to (``docs/<name>.md``); one translated into a
+#: language is in that language's folder (``docs/zh_CN/<name>.md``) and linked from its guides
 REFERENCES = ("capture", "certificates-and-register", "command-line", "benchmarks")
+REFERENCE_FOLDERS = {"en": PurePosixPath("docs"), "zh_CN": PurePosixPath("docs/zh_CN")}
 #: the widest a screenshot is drawn in the manual's window (pixels)
 IMAGE_WIDTH = 640
 _BACK = {"en": "Manual", "zh_CN": "手册"}
@@ -57,10 +62,20 @@ def sources(root: Path = ROOT) -> dict[PurePosixPath, tuple[str, str]]:
     for language, folder in GUIDES.items():
         for path in sorted((root / folder).glob("*.md")):
             out[folder / path.name] = (html_name(path.stem, language), language)
-    for name in REFERENCES:
-        if (root / "docs" / f"{name}.md").is_file():
-            out[PurePosixPath("docs") / f"{name}.md"] = (f"{name}.html", "en")
+    for language, folder in REFERENCE_FOLDERS.items():
+        for name in REFERENCES:
+            if (root / folder / f"{name}.md").is_file():
+                out[folder / f"{name}.md"] = (html_name(name, language), language)
     return out
+
+
+def twin(source: PurePosixPath, language: str) -> PurePosixPath:
+    """The same page in the other language (a guide's or a reference's); it may not exist."""
+    other = _OTHER[language][0]
+    for folders in (GUIDES, REFERENCE_FOLDERS):
+        if source.parent == folders[language]:
+            return folders[other] / source.name
+    return source
 
 
 def anchor(heading: str) -> str:
@@ -172,10 +187,9 @@ def render(source: PurePosixPath, root: Path = ROOT) -> str:
     nav = []
     if source.stem != "index" or source.parent != GUIDES[language]:
         nav.append(f'<a href="{html_name("index", language)}">{_BACK[language]}</a>')
-    other, shown = _OTHER[language]
-    twin = GUIDES[other] / source.name
-    if source.parent == GUIDES[language] and twin in pages:
-        nav.append(f'<a href="{pages[twin][0]}">{shown}</a>')
+    other_page = twin(source, language)
+    if other_page != source and other_page in pages:
+        nav.append(f'<a href="{pages[other_page][0]}">{_OTHER[language][1]}</a>')
     head = (f'<html><head><meta charset="utf-8"><title>{escape(title)}</title>'
             f"<style>{_STYLE}</style></head><body>\n"
             f"<!-- generated from {source} by `make docs` (app/manual_pages.py): edit that -->\n")

@@ -297,7 +297,7 @@ The verdict gives the peak-to-peak of the error of indication.
 
 *{title_zh}工作台（键 `{key}`）的用户指南；窗口的手册（F1）显示的就是本页。*
 各工作台通用的录入、按键、图、文件和自动保存见[窗口的使用](window.md)；证书见
-[证书与证书登记册](../../certificates-and-register.md)（英文）；每个选项见
+[证书与证书登记册](../certificates-and-register.md)；每个选项见
 [命令行参考](../../command-line.md)（英文）。
 
 ## 测量什么
