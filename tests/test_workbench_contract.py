@@ -191,7 +191,8 @@ def test_the_validation_report_has_its_cases(key, validation_workbenches):
         f"{key}: the validation report (anglebench validate) has no case of it: return its "
         f"reference cases from validation_cases() in {_where(key)} (ValidationCase of "
         "models/validation/cases.py, workbench = its title; or models/<kind>/validation_cases.py) "
-        "and update the case count in docs/certificates-and-register.md")
+        "and update the case count in docs/certificates-and-register.md and its Chinese, "
+        "docs/zh_CN/certificates-and-register.md")
 
 
 # -- the window -------------------------------------------------------------------------

@@ -68,3 +68,20 @@ def test_the_chinese_page_links_a_heading_of_its_own_and_the_english_page(manual
     _follow(manual, "fringe.html")
     assert "What you measure" in manual.browser.toPlainText()
     assert (MANUAL_DIR / "fringe.html").is_file()
+
+
+def test_the_chinese_guide_leads_to_the_chinese_reference_at_its_heading(manual):
+    """The Chinese polygon page sends the technician to conformity in the Chinese page of
+    certificates and the register (not the English one), which leads back to the manual."""
+    manual.show_page("polygon", "zh_CN")
+    hrefs = _attributes(manual, "href")
+    assert "certificates-and-register.zh_CN.html#符合性" in hrefs
+    assert not any(h.startswith("certificates-and-register.html") for h in hrefs)
+    _follow(manual, "certificates-and-register.zh_CN.html#符合性")
+    assert manual.browser.source().fileName() == "certificates-and-register.zh_CN.html"
+    assert manual.browser.verticalScrollBar().value() > 0  # at the heading, not the top
+    assert "判定的量是明确的" in manual.browser.toPlainText()
+    _follow(manual, "capture.zh_CN.html")
+    assert "稳定时自动取数" in manual.browser.toPlainText()
+    _follow(manual, "index.zh_CN.html")
+    assert "capture.zh_CN.html" in _attributes(manual, "href")
