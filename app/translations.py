@@ -146,20 +146,25 @@ def unfinished(ts: Path = TS_FILE) -> list[str]:
     return [unescape(source) for source, _ in _UNFINISHED.findall(ts.read_text("utf-8"))]
 
 
+def _escaped(text: str) -> str:
+    """``text`` as lupdate writes it in the .ts (&, <, >, ' and " escaped)."""
+    from html import escape
+
+    return escape(text, quote=False).replace("'", "&apos;").replace('"', "&quot;")
+
+
 def fill_unfinished(texts: dict[str, str], ts: Path = TS_FILE) -> list[str]:
     """Each unfinished message whose English is a key of ``texts`` given its Chinese; the
     English texts given that the .ts has no unfinished message for (to be checked)."""
-    from html import escape
-
     content = ts.read_text("utf-8")
     missing = []
     for en, zh in texts.items():
         # as lupdate writes it: ' and " escaped too
-        source = "<source>" + escape(en, quote=False).replace("'", "&apos;").replace('"', "&quot;") + "</source>"
+        source = f"<source>{_escaped(en)}</source>"
         pattern = re.compile(re.escape(source) + _COMMENTS
                              + r"<translation type=\"unfinished\">\s*</translation>", re.DOTALL)
         content, count = pattern.subn(lambda m, zh=zh, source=source: (
-            f"{source}{m.group(1)}<translation>{escape(zh, quote=False).replace(chr(34), '&quot;')}</translation>"), content)
+            f"{source}{m.group(1)}<translation>{_escaped(zh)}</translation>"), content)
         if not count:
             missing.append(en)
     ts.write_text(content, "utf-8")

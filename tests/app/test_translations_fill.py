@@ -31,5 +31,6 @@ def test_unfinished_texts_are_listed_and_filled(tmp_path):
     assert missing == ["not there"]
     assert unfinished(ts) == ['error (")']
     text = ts.read_text("utf-8")
-    assert "<extracomment>a translator's note</extracomment>\n        <translation>转台的零位</translation>" in text
+    assert ("<extracomment>a translator's note</extracomment>\n"
+            "        <translation>转台的零位</translation>") in text
     assert "<translation>完成</translation>" in text
