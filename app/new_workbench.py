@@ -495,7 +495,12 @@ def main(argv: list[str] | None = None) -> int:
                      "docs/user-guide/index.md, docs/zh_CN/user-guide/index.md and "
                      "resources/translations/anglebench_zh_CN.ts\n"
                      f"next: QT_QPA_PLATFORM=offscreen .venv/bin/python -m pytest "
-                     f"tests/test_workbench_contract.py -k {args.name}\n")
+                     f"tests/test_workbench_contract.py -k {args.name}\n"
+                     "then (docs/developer-guide.md, Adding a workbench): replace the model, "
+                     "test first; a certificate needs resources/samples/"
+                     f"certificate_{args.name}.json; after adding texts `make translations` "
+                     "lists those without Chinese, `.venv/bin/python -m app.translations "
+                     "--fill FILE.json` fills them in; `make docs`; `make lint`\n")
     return 0
 
 

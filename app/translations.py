@@ -12,7 +12,11 @@ brought up to date with Qt's own tools.
 3. ``pyside6-lrelease`` compiles it to ``anglebench_zh_CN.qm``, which the window loads.
 
 The ``.ts`` is the source a translator edits (Qt Linguist, or any text editor); the
-``.qm`` is committed beside it so the program runs without Qt's tools.
+``.qm`` is committed beside it so the program runs without Qt's tools. It then lists the
+texts still without Chinese (``type="unfinished"``). ``python -m app.translations --fill
+FILE.json`` (a JSON object, English text → Chinese) fills those in, then brings the ``.ts``
+and ``.qm`` up to date the same way: the public way to add the Chinese of a new workbench's
+texts (:func:`fill_unfinished`).
 """
 
 from __future__ import annotations
@@ -129,11 +133,67 @@ def release_qm(qm: Path = QM_FILE) -> None:
                    stdout=subprocess.DEVNULL)
 
 
-def main() -> int:
+#: a message's comments, between its source and its translation
+_COMMENTS = r"((?:\s*<(?:extra)?comment>[^<]*</(?:extra)?comment>)*\s*)"
+_UNFINISHED = re.compile(r"<source>([^<]*)</source>" + _COMMENTS
+                         + r"<translation type=\"unfinished\">\s*</translation>", re.DOTALL)
+
+
+def unfinished(ts: Path = TS_FILE) -> list[str]:
+    """The English texts of the .ts that have no translation yet."""
+    from html import unescape
+
+    return [unescape(source) for source, _ in _UNFINISHED.findall(ts.read_text("utf-8"))]
+
+
+def _escaped(text: str) -> str:
+    """``text`` as lupdate writes it in the .ts (&, <, >, ' and " escaped)."""
+    from html import escape
+
+    return escape(text, quote=False).replace("'", "&apos;").replace('"', "&quot;")
+
+
+def fill_unfinished(texts: dict[str, str], ts: Path = TS_FILE) -> list[str]:
+    """Each unfinished message whose English is a key of ``texts`` given its Chinese; the
+    English texts given that the .ts has no unfinished message for (to be checked)."""
+    content = ts.read_text("utf-8")
+    missing = []
+    for en, zh in texts.items():
+        # as lupdate writes it: ' and " escaped too
+        source = f"<source>{_escaped(en)}</source>"
+        pattern = re.compile(re.escape(source) + _COMMENTS
+                             + r"<translation type=\"unfinished\">\s*</translation>", re.DOTALL)
+        content, count = pattern.subn(lambda m, zh=zh, source=source: (
+            f"{source}{m.group(1)}<translation>{_escaped(zh)}</translation>"), content)
+        if not count:
+            missing.append(en)
+    ts.write_text(content, "utf-8")
+    return missing
+
+
+def main(argv: list[str] | None = None) -> int:
+    import argparse
+    import json
+
+    parser = argparse.ArgumentParser(prog="python -m app.translations")
+    parser.add_argument("--fill", metavar="FILE.json",
+                        help="a JSON object, English text → Chinese: fills those messages in")
+    args = parser.parse_args(argv)
+    if args.fill:
+        missing = fill_unfinished(json.loads(Path(args.fill).read_text("utf-8")))
+        for en in missing:
+            print(f"not an unfinished message of the .ts, left: {en}")  # noqa: T201
     write_declared(declared_texts())
     update_ts()
     release_qm()
     print(f"{TS_FILE.relative_to(ROOT)} and {QM_FILE.name} brought up to date")  # noqa: T201
+    left = unfinished()
+    if left:
+        print(f"{len(left)} texts have no Chinese yet (type=\"unfinished\" in "  # noqa: T201
+              f"{TS_FILE.relative_to(ROOT)}); give it in a JSON object, English → Chinese, "
+              "and run: python -m app.translations --fill FILE.json")
+        for text in left:
+            print(f"  {text}")  # noqa: T201
     return 0
 
 
