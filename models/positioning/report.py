@@ -33,6 +33,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
 from models.positioning import KEY, TITLE
+from models.positioning.decided_quantity import decided_half_range
 from models.positioning.figure_intervals import (
     INTERVAL_TRIALS,
     FigureInterval,
@@ -302,11 +303,13 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
     tol = metadata.tolerance_in(budget.unit.key)
+    intervals = figure_uncertainties(result, budget)
+    # the half range decided is E/2 with E's own interval: one quantity, one interval
     conformity = decide_conformity(curve, budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    what=QT_TR_NOOP("mean positional deviation"),
-                                   point_names=names, not_stated=not_stated(result))
-    intervals = figure_uncertainties(result, budget)
+                                   point_names=names, not_stated=not_stated(result),
+                                   estimate=decided_half_range(result, budget, intervals))
     stat_rows = _figure_rows(result, intervals)
     stat_rows += [(name, value, "", "", note) for name, value, note in
                   decision_rows(conformity, budget, QT_TR_NOOP("targets and directions"), sym)]
