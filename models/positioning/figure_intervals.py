@@ -20,7 +20,7 @@ whose spread over the targets is that of the truth, not that of the noisy means:
   as the standard does;
 * the interval is [F − q_hi, F − q_lo], q the quantiles of (figure drawn − the world's
   true figure) at (1 ∓ p)/2, clipped at 0 for the figures that cannot be negative;
-* for the figures of the means (E, M, B, A, P and their forms, :data:`UNION_FIGURES`) it is
+* for the figures of the means (E, M, B, R, A, P and their forms, :data:`UNION_FIGURES`) it is
   united with the same interval from the *unshrunk* world (the measured means as the truth):
   where the scatter hides one target far off (a spike twice as small as the scatter), the
   shrunk world flattens it, its figure's bias comes out too large and its interval fell
@@ -61,17 +61,17 @@ SIGNED_FIGURES = frozenset({"B_mean"})
 
 #: The coverage the study reached for each figure at 95.45 % asked for, where below it: the
 #: highest probability, rounded down to 0.5 %, that the pooled coverage reaches and that
-#: none of the 48 axes falls short of beyond the binomial test (1 %, 20 tests an axis; 4
+#: none of the 48 axes falls short of beyond the binomial test (1 %, 40 tests an axis; 4
 #: shapes × 12 and 72 targets × repeatability 0.1, 0.5, 2 × the signal × constant or
 #: varying, each test through the whole analysis: figure_coverage.coverage_study(
-#: STUDY_CASES, 20, seed=391)). The
-#: figure's interval states this one instead. Pooled: E 96.5 %, E↑ 96.4 %, E↓ 95.4 %, M and
-#: Pa 94.8 % (one axis, a smooth curve at 72 targets, 75 %), B and U 96.7 % (one axis,
-#: the real curve at 72 targets and repeatability 0.1, 85 %); the others 95.5–98.4 %.
-#: Before the union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in
-#: scatter twice its size at 72 targets).
-ACHIEVED: dict[str, float] = {"E_down": 0.945, "M": 0.925, "Pa": 0.925, "B": 0.925,
-                              "U_max": 0.925}
+#: STUDY_CASES, 20, seed) for the seeds 391 and 392, pooled). The figure's interval states
+#: this one instead. Pooled: E 96.2 % (its lowest axis, a smooth curve at 12 targets and
+#: repeatability 0.1 varying along the axis, 34 of 40), E↑ 95.5 %, E↓ 95.8 %, M and Pa
+#: 95.0 %, B and U 96.9 %, A↓ 97.8 %; the others 96.4–98.2 %. Before the union with the
+#: unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72
+#: targets) and R 72 % on a reversal changing at random from target to target.
+ACHIEVED: dict[str, float] = {"E": 0.945, "E_up": 0.93, "A_down": 0.945, "M": 0.93,
+                              "Pa": 0.93, "B": 0.93, "U_max": 0.93}
 
 
 @dataclass(frozen=True)
@@ -240,7 +240,7 @@ def _draw(mu_w, sig_w, sig_mean, n, u_b, shape, rng):
 #: unshrunk world's (the nuisance, the curve's spread over the targets, is taken at both
 #: ends of what the readings allow: Berger & Boos 1994, JASA 89:1012)
 UNION_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "B", "U_max", "A", "A_up",
-                           "A_down", "P"})
+                           "A_down", "P", "R"})
 
 #: calibration (Beran 1987): outer tests drawn from the world, and inner draws from each
 #: outer test's own world
