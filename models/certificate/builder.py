@@ -93,6 +93,10 @@ class Decision:
     not_stated: Sequence[str] = ()
     withheld: str = ""
     budget: UncertaintyBudget | None = None
+    # the decided half range's estimate when the workbench makes its own (a
+    # HalfRangeEstimate-like object with its method text: positioning's E/2 with E's
+    # interval); None: models.uncertainty.conformity.half_range_monte_carlo
+    estimate: Any = None
 
 
 @dataclass(frozen=True)
@@ -149,7 +153,8 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    withheld, what=decision.what,
                                    point_names=decision.point_names,
-                                   not_stated=decision.not_stated)
+                                   not_stated=decision.not_stated,
+                                   estimate=decision.estimate)
     return CertificateDocument(
         kind_key=kind_key, kind_title=kind_title, metadata=metadata, source_name=source_name,
         method=method, method_reference=method_reference, parameters=parameters,

@@ -162,4 +162,21 @@ def figure_coverage_cases(trials: int, case_type) -> list:
                     coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
                     ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
             row.coverage_passes))
+    # the decided quantity (half range of both directions' means) is E/2 with E's interval
+    # halved: its coverage and width are E's, stated as a case of their own
+    row = study["E"]
+    allowed = int(binom.ppf(1.0 - ALPHA, row.tests, 1.0 - row.probability))
+    out.append(case_type(
+        POSITIONING.title,
+        message(QT_TR_NOOP("interval of the decided quantity (half the peak-to-peak of both "
+                           "directions' mean deviations, E/2, with the interval of E halved) "
+                           "covers its truth (half the range of μ↑ and μ↓)")),
+        COVERAGE_STUDY,
+        message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
+                p=f"{100 * row.probability:.2f}", allowed=allowed, tests=row.tests),
+        message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
+                           "interval's (aim ≤ {limit} ×)"),
+                coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
+                ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
+        row.coverage_passes))
     return out

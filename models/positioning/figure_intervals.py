@@ -19,7 +19,15 @@ whose spread over the targets is that of the truth, not that of the noisy means:
   is the same in both approach directions and in every run), and evaluates the figures
   as the standard does;
 * the interval is [F − q_hi, F − q_lo], q the quantiles of (figure drawn − the world's
-  true figure) at (1 ∓ p)/2, clipped at 0 for the figures that cannot be negative.
+  true figure) at (1 ∓ p)/2, clipped at 0 for the figures that cannot be negative;
+* for the figures of the means (E, M, B, R, A, P and their forms, :data:`UNION_FIGURES`) it is
+  united with the same interval from the *unshrunk* world (the measured means as the truth):
+  where the scatter hides one target far off (a spike twice as small as the scatter), the
+  shrunk world flattens it, its figure's bias comes out too large and its interval fell
+  short above (E covered 35 % of such axes at 72 targets). The curve's spread over the
+  targets is a nuisance the readings do not fix; the union takes it at both ends of what
+  they allow (Berger & Boos 1994, JASA 89:1012: an interval maximised over a set of the
+  nuisance).
 
 The world's truth is the figure of the true distribution, as ISO 230-2 defines it:
 E↑ = range of the true mean deviations μ↑, R↑ = 4 max σ↑, A↑ = max(μ↑ + 2σ↑) −
@@ -51,16 +59,19 @@ INTERVAL_TRIALS = 2000
 #: figures that may be negative (the others are clipped at 0)
 SIGNED_FIGURES = frozenset({"B_mean"})
 
-#: The coverage the study reached for each figure at 95.45 % asked for, over its 48 axes
-#: (4 shapes × 12 and 72 targets × repeatability 0.1, 0.5, 2 × the signal × constant or
-#: varying; 20 tests each, 960 a figure, through the whole analysis), rounded down to
-#: 0.5 %, where below 95.45 %: the figure's interval states this one instead. An average
-#: over the shapes studied: E, E↑, E↓, M, Pa reach 85–86 % at a repeatability twice the
-#: signal (50 % for one spike hidden in it), B and U 90–92 % at 0.1–0.5 × (60 % for a
-#: reversal that changes at random from target to target). Figures not listed reached
-#: 95.45 % or more (A↑ 95.8, A↓ 96.2, R 96.1, R↑ 95.9, R↓ 95.9, B̄ 97.0, Ps 95.7 %).
-ACHIEVED: dict[str, float] = {"A": 0.95, "E": 0.905, "E_up": 0.905, "E_down": 0.905,
-                              "M": 0.90, "Pa": 0.90, "B": 0.925, "U_max": 0.925, "P": 0.95}
+#: The coverage the study reached for each figure at 95.45 % asked for, where below it: the
+#: highest probability, rounded down to 0.5 %, that the pooled coverage reaches and that
+#: none of the 48 axes falls short of beyond the binomial test (1 %, 40 tests an axis; 4
+#: shapes × 12 and 72 targets × repeatability 0.1, 0.5, 2 × the signal × constant or
+#: varying, each test through the whole analysis: figure_coverage.coverage_study(
+#: STUDY_CASES, 20, seed) for the seeds 391 and 392, pooled). The figure's interval states
+#: this one instead. Pooled: E 96.2 % (its lowest axis, a smooth curve at 12 targets and
+#: repeatability 0.1 varying along the axis, 34 of 40), E↑ 95.5 %, E↓ 95.8 %, M and Pa
+#: 95.0 %, B and U 96.9 %, A↓ 97.8 %; the others 96.4–98.2 %. Before the union with the
+#: unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72
+#: targets) and R 72 % on a reversal changing at random from target to target.
+ACHIEVED: dict[str, float] = {"E": 0.945, "E_up": 0.93, "A_down": 0.945, "M": 0.93,
+                              "Pa": 0.93, "B": 0.93, "U_max": 0.93}
 
 
 @dataclass(frozen=True)
@@ -225,6 +236,12 @@ def _draw(mu_w, sig_w, sig_mean, n, u_b, shape, rng):
     return drawn
 
 
+#: the figures of the means whose interval is the union of the shrunk world's and the
+#: unshrunk world's (the nuisance, the curve's spread over the targets, is taken at both
+#: ends of what the readings allow: Berger & Boos 1994, JASA 89:1012)
+UNION_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "B", "U_max", "A", "A_up",
+                           "A_down", "P", "R"})
+
 #: calibration (Beran 1987): outer tests drawn from the world, and inner draws from each
 #: outer test's own world
 OUTER_TRIALS = 300
@@ -276,12 +293,19 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     if outer and inner:
         levels = _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng)
     guard = _reversal_guard(x, sig_mean, n, tail) if "up" in x and "down" in x else None
+    # the unshrunk world (the measured means as the truth): where the scatter hides one
+    # target far off, the shrunk world flattens it and its interval falls short above
+    raw_truth = world_truth(x, sig_w)
+    raw_sims = axis_figures(_draw(x, sig_w, sig_mean, n, u_b, (trials,), rng))
     out = {}
     for key, value in measured.items():
         if key not in sims or value is None or not math.isfinite(value):
             continue
         q_lo, q_hi = np.quantile(pivots[key], levels[key])
         low, high = value - q_hi, value - q_lo
+        if key in UNION_FIGURES:
+            r_lo, r_hi = np.quantile(raw_sims[key] - raw_truth[key], (tail, 1.0 - tail))
+            low, high = min(low, value - r_hi), max(high, value - r_lo)
         if guard is not None and key in ("B", "U_max"):
             low = min(low, guard)
         if key not in SIGNED_FIGURES:

@@ -41,6 +41,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, joined, message
 from models.positioning import KEY, TITLE
+from models.positioning.decided_quantity import decided_half_range
 from models.positioning.figure_intervals import (
     INTERVAL_TRIALS,
     FigureInterval,
@@ -306,9 +307,11 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                      target=f"{target:g}{result.target_symbol}",
                      arrow="↑" if name == "up" else "↓")
              for name, *_ in points for target in result.positions]
-    decision = Decision(curve, QT_TR_NOOP("mean positional deviation"), names,
-                        not_stated(result))
     intervals = figure_uncertainties(result, budget)
+    # the half range decided is E/2 with E's own interval: one quantity, one interval
+    decision = Decision(curve, QT_TR_NOOP("mean positional deviation"), names,
+                        not_stated(result),
+                        estimate=decided_half_range(result, budget, intervals))
     statistics = Statistics(_figure_rows(result, intervals),
                             QT_TR_NOOP("targets and directions"),
                             title=QT_TR_NOOP("Figures of the axis"),
@@ -319,8 +322,9 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         message(QT_TR_NOOP("Evaluated to {standard}; the figures of the other standard are given "
                            "beside them from the same readings."), standard=message(standard)),
         QT_TR_NOOP("Conformity, when a tolerance is stated, is judged on the mean positional "
-                   "deviations (each with its own U, or half their range); a specification of "
-                   "A, R or P is read against the figures above."),
+                   "deviations (each with its own U, or half their range, E/2, with the "
+                   "coverage interval of E above halved); a specification of A, R or P is read "
+                   "against the figures above."),
         opinion(QT_TR_NOOP("Compensation = −mean deviation: a controller adding it to the "
                            "commanded position is expected to reach the target, within the "
                            "repeatability and the U stated, if the axis behaves as in this "
@@ -333,11 +337,15 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "Beran 1987) from a model of the axis whose spread over the targets is estimated "
         "without the scatter's (constrained empirical Bayes, Louis 1984), {trials} trials "
         "seeded from the readings; each Type B input drawn once per target, the same in both "
-        "directions. The truth it covers is the figure of the axis's true mean deviations and "
-        "true standard deviations (R = 4σ at the worst target). The interval may lie below "
-        "the measured value. Its probability is the one a simulation study reached "
-        "(anglebench validate), on average over the axes studied, where that is below {p} %; "
-        "a spike hidden in scatter twice its size is covered less often."), trials=INTERVAL_TRIALS,
+        "directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united "
+        "with the interval from the measured means taken as the truth, so that a target far off "
+        "that the scatter hides is still covered (the curve's spread taken at both ends of "
+        "what the readings allow, Berger & Boos 1994). The truth it covers is the figure of "
+        "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
+        "target). The interval may lie below the measured value. Its probability is the one "
+        "a simulation study reached (anglebench validate: smooth, rough, single-spike and real "
+        "curves, repeatability 0.1 to 2 times the signal, 12 and 72 targets), where that is "
+        "below {p} %."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
     if not intervals:
         statements.append(QT_TR_NOOP(

@@ -489,7 +489,8 @@ def _risk(verdict: str, conforming: float) -> float:
 def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | float | None,
                       rule: str = "guarded", quantity: str = "half_range",
                       invalid_reason: str = "", what: str = QT_TR_NOOP("corrected error"),
-                      point_names=None, not_stated=()) -> Conformity:
+                      point_names=None, not_stated=(),
+                      estimate: HalfRangeEstimate | None = None) -> Conformity:
     """The verdict on an error curve against ±``tolerance`` (ILAC-G8:09/2019).
 
     ``errors`` are in the budget's unit (arcsec, or nm for an interferometer); a
@@ -502,7 +503,10 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     the decided value and its interval are still given whenever they can be computed.
     The guard band is the decided value's own interval: its upper half-width guards
     acceptance, its lower half-width rejection. ``point_names`` name the points as the
-    results table does (the deciding point is named so).
+    results table does (the deciding point is named so). ``estimate``: the half range and
+    its interval as the workbench itself evaluates them (positioning: E/2 with E's own
+    interval), in place of :func:`half_range_monte_carlo`; its ``method`` text, when it has
+    one, describes the decided quantity instead.
     """
     q = budget.unit.written()
     if isinstance(tolerance, Quantity):
@@ -538,7 +542,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
         return _with_risk(_decide_points(e, budget, t, rule, rule_text, what, point_names,
                                          withheld, sentence, q, common))
     return _with_risk(_decide_half_range(e, budget, t, rule, rule_text, what, withheld,
-                                         sentence, q, common))
+                                         sentence, q, common, estimate))
 
 
 def _withheld_text(withheld: list) -> str:
@@ -596,8 +600,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
 
 
 def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, q,
-                       common) -> Conformity:
-    mc = half_range_monte_carlo(e, budget)
+                       common, estimate=None) -> Conformity:
+    mc = estimate if estimate is not None else half_range_monte_carlo(e, budget)
     x, upper, lower = float(mc.value), float(mc.u_upper), float(mc.u_lower)
     if not (math.isfinite(x) and math.isfinite(upper) and math.isfinite(lower)):
         reason = _withheld_text([*withheld, message(QT_TR_NOOP(
@@ -638,7 +642,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              quantity=message(DECISION_QUANTITIES["half_range"]),
                              trials=trials, seed=seed))
     achieved = HALF_RANGE_COVERAGE
-    quantity_text = joined([quantity_text, "; ", message(QT_TR_NOOP(
+    method = getattr(mc, "method", "")
+    quantity_text = method or joined([quantity_text, "; ", message(QT_TR_NOOP(
         "the interval's coverage achieved in validation (noise 0.1 to 2 times the half range, "
         "12 to 72 points, the lowest of each shape): {smooth} % on a smooth curve, {rough} % on "
         "a rough one, {spike} % on a single spike, {sample} % on real curves, against the {p} % "
@@ -660,4 +665,6 @@ def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:
     """An interval's half-widths: "±U" when they agree to the digits shown, else "−a/+b"."""
     if f"{lower:.{d}f}" == f"{upper:.{d}f}":
         return f"±{upper:.{d}f}{q}"
-    return f"−{lower:.{d}f}{q}/+{upper:.{d}f}{q}"
+    # an interval wholly below the value (a range biased high by noise): its upper end signed
+    upper_text = f"+{upper:.{d}f}" if upper >= 0 else f"−{-upper:.{d}f}"
+    return f"−{lower:.{d}f}{q}/{upper_text}{q}"

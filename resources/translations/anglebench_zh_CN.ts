@@ -3877,8 +3877,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
     </message>
     <message>
-        <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range); a specification of A, R or P is read against the figures above.</source>
-        <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
+        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12 and 72 targets), where that is below {p} %.</source>
+        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
     </message>
     <message>
         <source>No coverage interval is given for the figures: a target was approached fewer than twice in a direction, so its standard deviation is unknown.</source>
@@ -7070,12 +7070,12 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各目标位置 u = {r}（给定值）</translation>
     </message>
     <message>
-        <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
-        <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
+        <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range, E/2, with the coverage interval of E above halved); a specification of A, R or P is read against the figures above.</source>
+        <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半 E/2，并取上述 E 的包含区间的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
     </message>
     <message>
-        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate), on average over the axes studied, where that is below {p} %; a spike hidden in scatter twice its size is covered less often.</source>
-        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate）在所研究的各种轴上平均达到的概率（当其低于 {p} % 时）；被两倍于其大小的分散性掩盖的尖峰被包含的次数较少。</translation>
+        <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
+        <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
     </message>
     <message>
         <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
@@ -9155,6 +9155,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{coverage} %（{missed} 次未包含）；宽度为正确区间的 {ratio} 倍（目标 ≤ {limit} 倍）</translation>
     </message>
     <message>
+        <source>interval of the decided quantity (half the peak-to-peak of both directions&apos; mean deviations, E/2, with the interval of E halved) covers its truth (half the range of μ↑ and μ↓)</source>
+        <translation>判定量（两个方向平均偏差峰峰值的一半 E/2，取 E 的区间的一半）的区间包含其真值（μ↑ 和 μ↓ 极差的一半）</translation>
+    </message>
+    <message>
         <source>tolerance ±T</source>
         <translation>允差 ±T</translation>
     </message>
@@ -9726,6 +9730,22 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>No data</source>
         <extracomment>the view of a plot with nothing to draw (x, y; x is pyqtgraph&apos;s): its auto-range of no point showed a y axis of ±5e-05 (#41 review)</extracomment>
         <translation>无数据</translation>
+    </message>
+    <message>
+        <source>half the peak-to-peak of the mean positional deviations of {directions}, {figure}/2 (ISO 230-2), with the coverage interval of {figure} halved: a parametric bootstrap of the figure&apos;s error, calibrated by the iterated bootstrap (Beran 1987), {trials} trials, seed {seed}; the probability stated is the one its validation reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12 and 72 targets). The measured range is biased high by the scatter, so the interval may lie below the measured value (its upper end then shown with a minus sign)</source>
+        <translation>{directions}平均位置偏差峰峰值的一半，即 {figure}/2（ISO 230-2），取 {figure} 的包含区间的一半：该指标误差的参数自助法，经迭代自助法校准（Beran 1987），共 {trials} 次试验，随机种子 {seed}；所给概率为其验证所达到的概率（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12 和 72 个目标位置）。测得的极差受分散性影响而偏大，因此区间可能低于测得值（此时其上端以负号表示）</translation>
+    </message>
+    <message>
+        <source>both directions</source>
+        <translation>两个方向</translation>
+    </message>
+    <message>
+        <source>the forward direction</source>
+        <translation>正向</translation>
+    </message>
+    <message>
+        <source>the backward direction</source>
+        <translation>反向</translation>
     </message>
 </context>
 </TS>

@@ -31,5 +31,11 @@ def test_positioning_figure_intervals_cover(report):
                      f"{'yes' if ok else 'NO'} |")
         if not row.coverage_passes:
             failed.append(key)
+    # the decided quantity (half range of both directions' means) is E/2 with E's interval
+    # halved: its coverage and width are E's (#39: one quantity, one interval)
+    e = study["E"]
+    lines += ["", f"Decided quantity (E/2, E's interval halved): {100 * e.coverage:.1f} % "
+                  f"against {100 * e.probability:.2f} % printed, width {e.width_ratio:.2f} × "
+                  f"a correct interval's (aim ≤ {WIDTH_LIMIT:g} ×)."]
     report("6-positioning-figures", lines)
     assert not failed, f"coverage below the printed probability: {failed}"
