@@ -16,9 +16,9 @@ run: $(STAMP)
 	$(VENV)/bin/anglebench --samples
 
 # the whole suite, one worker per core (pytest-xdist); `make test-fast`: the tests not marked
-# slow, also one worker per core (-n auto: its ~1000 tests take ~40 s of CPU in all, each
-# worker's start-up and collection included, so two workers finish in well under a minute on
-# an idle 2-core machine, #44); a test of more than ~0.25 s is marked slow (docs/developer-guide.md: Building and testing).
+# slow, also one worker per core (-n auto: its ~1200 tests take ~60 s of CPU in all, each
+# worker's start-up and collection included, so two workers finish in ~30-35 s on an idle
+# 2-core machine, #44); a test of more than ~0.25 s is marked slow (docs/developer-guide.md: Building and testing).
 # PYTHONDONTWRITEBYTECODE is emptied for the run: pytest keeps the test modules it rewrote
 # and Python the modules it compiled (__pycache__, ignored by git) instead of compiling every
 # test module again in every worker and every program a test starts (~6 s of CPU a worker)
@@ -33,6 +33,8 @@ $(VENV)/.bench-installed: pyproject.toml $(STAMP)
 	$(PY) -m pip install --quiet --disable-pip-version-check -e '.[test,bench]'
 	touch $@
 
+# the benchmarks (BENCHMARKS.md, docs/benchmarks.md's headlines) and the long forms of suite tests
+# whose covering sets the suite runs (docs/developer-guide.md: Building and testing)
 bench: $(STAMP) $(VENV)/.bench-installed
 	QT_QPA_PLATFORM=offscreen $(PY) -m pytest -q -p no:cacheprovider tests/benchmarks -o addopts="" -s
 

@@ -129,24 +129,46 @@ def window(qtbot, tmp_path):
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
 
 
-_VALIDATION_CASES: dict[int, list] = {}
+#: the number of Monte Carlo trials of the suite's validation runs (``anglebench validate
+#: --trials 100`` in tests/app/test_validation.py and test_command_line_language.py, the
+#: contract's check): one number, so one computation serves them all
+VALIDATION_TRIALS = 100
+
+
+@pytest.fixture(scope="session")
+def validation_cases(tmp_path_factory):
+    """``validation_cases(trials)``: every reference case of ``anglebench validate``
+    (models.validation.run.run_validation), computed once a session for each number of trials
+    (~25 s of CPU: Monte Carlo, the positioning's figure coverage, the half-range study; the
+    cases are seeded, the same whatever the language of the report). pytest-xdist's workers
+    share one folder of the run: the first to ask computes the cases under a file lock and
+    pickles them, the others wait and read them."""
+    import fcntl
+    import pickle
+
+    from models.validation.run import run_validation
+
+    base = tmp_path_factory.getbasetemp()
+    shared = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base
+
+    def cases(trials: int) -> list:
+        stored = shared / f"validation-cases-{trials}.pickle"
+        with open(shared / "validation-cases.lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file is closed
+            if not stored.exists():
+                stored.write_bytes(pickle.dumps(run_validation(trials)))
+            return pickle.loads(stored.read_bytes())
+
+    return cases
 
 
 @pytest.fixture
-def validation_once(monkeypatch):
-    """``anglebench validate`` computes its reference cases once a process for each number of
-    trials (they are seeded: the same whatever the language the report is in), so the
-    English and the Chinese report of the suite share one run (~20 s of Monte Carlo)."""
+def validation_once(monkeypatch, validation_cases):
+    """``anglebench validate`` takes its reference cases from ``validation_cases``: the
+    English and the Chinese report of the suite share one run."""
     import app.validation_report as validation_report
 
-    real = validation_report.run_validation
-
-    def run_validation(trials: int = 200) -> list:
-        if trials not in _VALIDATION_CASES:
-            _VALIDATION_CASES[trials] = real(trials)
-        return list(_VALIDATION_CASES[trials])
-
-    monkeypatch.setattr(validation_report, "run_validation", run_validation)
+    monkeypatch.setattr(validation_report, "run_validation", validation_cases)
 
 
 # -- the fast loop (#44) ----------------------------------------------------------------------

@@ -6,6 +6,7 @@ and the capabilities). What each workbench must have: tests/test_workbench_contr
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -17,7 +18,8 @@ QT = ("PySide6", "shiboken6", "pyqtgraph", "PyQt5", "PyQt6")
 WORKBENCHES = tuple(KINDS)
 
 
-def imports(path: Path) -> set[str]:
+@functools.cache  # each file parsed once a process: the checks below read every file again
+def imports(path: Path) -> frozenset[str]:
     out = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
         if isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
@@ -28,7 +30,7 @@ def imports(path: Path) -> set[str]:
         from models.registry import LOCATIONS
 
         out.update(location.partition(":")[0] for location in LOCATIONS.values())
-    return out
+    return frozenset(out)
 
 
 def python_files(*folders: str) -> list[Path]:

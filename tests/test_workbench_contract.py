@@ -178,16 +178,14 @@ def test_its_texts_are_translated(key):
 
 
 # -- validation -------------------------------------------------------------------------
-@pytest.fixture(scope="module")
-def validation_workbenches() -> set[str]:
-    from models.validation.run import run_validation
-
-    return {case.workbench for case in run_validation(trials=10)}
-
-
 @pytest.mark.slow
-def test_the_validation_report_has_its_cases(key, validation_workbenches):
-    assert KINDS[key].title in validation_workbenches, (
+def test_the_validation_report_has_its_cases(key, validation_cases):
+    """The cases of ``anglebench validate`` (computed once a session for the suite's runs of
+    the report, tests/conftest.py)."""
+    from tests.conftest import VALIDATION_TRIALS
+
+    cases = validation_cases(VALIDATION_TRIALS)
+    assert KINDS[key].title in {case.workbench for case in cases}, (
         f"{key}: the validation report (anglebench validate) has no case of it: return its "
         f"reference cases from validation_cases() in {_where(key)} (ValidationCase of "
         "models/validation/cases.py, workbench = its title; or models/<kind>/validation_cases.py) "

@@ -417,7 +417,7 @@ def test_a_record_with_a_schema_1_project_keeps_its_chain_and_opens_migrated(reg
     assert CertificateMetadata.from_dict(details["polygon"]).tolerance_unit == "arcsec"
 
 
-def _issue_at(url: str, start: float, render_s: float, queue) -> None:
+def _issue_at(url: str, start, render_s: float, queue) -> None:
     import time
 
     def slow_render(meta, head=""):
@@ -427,7 +427,7 @@ def _issue_at(url: str, start: float, render_s: float, queue) -> None:
     try:
         with Register(url) as reg:
             reg.clock = on(ISSUED)
-            time.sleep(max(0.0, start - time.time()))  # all at once
+            start.wait(120)  # all at once: once every worker has opened the register
             queue.put(("ok", reg.issue(request(), slow_render)[0].number))
     except RegisterError as exc:  # reported, not lost with the process
         queue.put(("refused", str(exc)))
@@ -438,13 +438,11 @@ def test_forty_processes_issuing_at_once_are_all_served(tmp_path):
     """#40: 40 issuing processes into one SQLite register at once: none refused, 40
     distinct numbers without a gap, the chain intact (26 of 40 were refused "database is
     locked" when the write lock was held while rendering)."""
-    import time
-
     url = f"sqlite:///{tmp_path / 'register.sqlite'}"
     Register(url).close()
     context = multiprocessing.get_context("fork")  # forked: no imports (the Qt of the parent
     queue = context.Queue()                       # is never touched by the children)
-    start = time.time() + 5  # after every worker has started
+    start = context.Barrier(40)  # not a fixed 5 s after the first start: no wait (#44)
     workers = [context.Process(target=_issue_at, args=(url, start, 0.3, queue))
                for _ in range(40)]
     for w in workers:
