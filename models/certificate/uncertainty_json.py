@@ -80,7 +80,9 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "tolerance": _number(tolerance),
         "verdict": conformity.verdict if stated else None,
         "rule": conformity.rule_key,
-        "probability_conforming": _number(conformity.conforming_probability),
+        # stated only with a statement of conformity: where none may be made (U incomplete,
+        # U ≥ T, the error untraceable) a probability of conformity would rest on that U
+        "probability_conforming": _number(conformity.conforming_probability) if stated else None,
         # false acceptance after a pass, false rejection after a fail (JCGM 106 specific risk)
         "decision_risk": _number(conformity.decision_risk) if stated else None,
     }
@@ -149,7 +151,11 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
             conformity, tolerance = document.conformity, document.tolerance
         except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
+            conformity, tolerance = _interval_despite(kind, result, metadata, settings)
     out = uncertainty_json(budgets, probability, conformity, tolerance, withheld)
+    if why and "decided_quantity" in out:  # the certificate refused: no statement, its reason
+        out["decided_quantity"].update(verdict=None, probability_conforming=None,
+                                       decision_risk=None, reason=why)
     if conformity is None:
         unit = kind.error_unit(kind.settings_with_defaults(settings))
         try:
@@ -168,6 +174,27 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         if decided is not None and decided["value"] is None:
             decided["value"] = _measured_figure(kind, result, metadata)
     return out
+
+
+def _interval_despite(kind: Any, result: Any, metadata: Any,
+                      settings: Mapping[str, Any] | None) -> tuple[Any, Any]:
+    """The decided figure's interval when the certificate refused the details (they state an
+    item grade or a tolerance the workbench's settings contradict): the interval does not
+    depend on the tolerance, so it is computed with the contradicting details left out
+    (the item grade, then the tolerance too, the workbench's own then deciding); no
+    statement is made on it (the caller withholds the verdict with the refusal's reason).
+    (None, None) where it still cannot be computed."""
+    import dataclasses
+
+    for cleared in ({"item_grade": ""}, {"item_grade": "", "tolerance": None}):
+        try:
+            document = kind.certificate(result, dataclasses.replace(metadata, **cleared),
+                                        settings=settings)
+        except _NOT_DETERMINED:
+            continue
+        if document.tolerance is not None and math.isfinite(document.conformity.value):
+            return document.conformity, document.tolerance
+    return None, None
 
 
 def _measured_figure(kind: Any, result: Any, metadata: Any) -> float | None:

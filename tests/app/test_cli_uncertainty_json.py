@@ -128,6 +128,30 @@ def test_incomplete_u_gives_numbers_and_no_verdict(capsys, samples_dir, tmp_path
     assert decided["verdict"] is None
     assert "not stated" in decided["reason"] and "Temperature" in decided["reason"]
     assert decided["value"] == pytest.approx(9.978, abs=1e-3)
+    # no statement, so no probability of conformity or risk resting on the incomplete U
+    assert decided["probability_conforming"] is None and decided["decision_risk"] is None
+    assert decided["interval_low"] < decided["interval_high"]
+
+
+def test_details_the_settings_contradict_still_give_the_interval(capsys, samples_dir, tmp_path):
+    """The polygon's details say grade 3 while the workbench is set to grade 2: the
+    certificate is refused, and the JSON still states the decided figure with its interval
+    (it does not depend on the tolerance), no verdict, and the refusal as the reason."""
+    sample = _details(samples_dir, "polygon")
+    assert "grade 3" in sample["item_grade"]
+    agreeing = _analyze(capsys, samples_dir, "polygon", sample, tmp_path)["decided_quantity"]
+    name, extra = SAMPLES["polygon"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(sample), encoding="utf-8")
+    assert main(["analyze", "polygon", str(samples_dir / name), "--json", *extra, "--grade", "2",
+                 "--metadata", str(path)]) == 0
+    decided = json.loads(capsys.readouterr().out)["decided_quantity"]
+    assert decided["verdict"] is None and "make them agree" in decided["reason"]
+    assert decided["probability_conforming"] is None
+    assert decided["value"] == pytest.approx(agreeing["value"])
+    assert decided["interval_low"] == pytest.approx(agreeing["interval_low"])
+    assert decided["interval_high"] == pytest.approx(agreeing["interval_high"])
+    assert decided["tolerance"] == pytest.approx(0.5)  # grade 2's, the settings'
 
 
 @pytest.mark.parametrize(("quantity", "tolerance"), [("points", 1.5), ("half_range", 0.05)])
