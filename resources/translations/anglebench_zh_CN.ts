@@ -4931,21 +4931,17 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
     </message>
     <message>
-        <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from bounds on the curve&apos;s maximum and minimum (Romano, Shaikh &amp; Wolf 2014), the noise simulated from the budget (JCGM 101)</source>
-        <translation>最佳零位下误差峰峰值的一半（实测值），其包含区间由曲线最大值和最小值的界给出（Romano、Shaikh 与 Wolf 2014），噪声按不确定度预算仿真（JCGM 101）</translation>
-    </message>
-    <message>
         <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
         <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
     </message>
     <message>
         <source>reference point, by definition</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape: the lowest cell of each shape over noise 0.1, 0.5, 1 and 2 times the true half range and 12, 36 and 72 points, 50 runs a cell (models.validation.half_range.coverage_study, seed 20261202; pooled over a shape&apos;s 600 runs: smooth 99.8 %, rough 99.3 %, spike 99.5 %, the samples&apos; real curves 99.7 %). tests/benchmarks/test_half_range_coverage.py reruns it with 100 runs a cell; `anglebench validate` with fewer. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape, pooled over the shape&apos;s 12 cells (noise 0.1, 0.5, 1 and 2 times the true half range, 12, 36 and 72 points, 100 runs a cell: models.validation.half_range.coverage_study, seed 20261202, 2000 trials), and every cell within the binomial scatter of the probability stated (no cell&apos;s hits so few that a true coverage of 95.45 % would give as few in under 1 % of studies; the lowest cells: smooth 98 %, rough 96 %, spike 97 %, the samples&apos; real curves 94 of 100). The certificate prints these beside the probability stated, never a lowest cell that reads as a coverage below it. tests/benchmarks/test_half_range_coverage.py reruns the study and checks both; `anglebench validate` with fewer runs; tests/models/uncertainty/test_half_range_coverage.py a smoke version. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
         <translation>参考点，按定义为零</translation>
     </message>
     <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
-        <extracomment>The share of the miss probability α spent on bounding the curve&apos;s gaps to its extremes (the first step of Romano, Shaikh &amp; Wolf&apos;s two-step test, β = α/10).</extracomment>
+        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study).</extracomment>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
@@ -4989,6 +4985,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>本判定的误不合格概率：{p} %（特定风险，JCGM 106）。</translation>
     </message>
     <message>
+        <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
+        <translation>该区间在验证中达到的包含概率（噪声为半峰峰值的 0.1 至 2 倍，12 至 72 点，每种形状 12 个单元、每单元 100 次，合并计）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际曲线 {sample} %；没有任何单元低于所述的 {p} % 超出其次数的二项分布离散</translation>
+    </message>
+    <message>
         <source>corrected error</source>
         <translation>修正后误差</translation>
     </message>
@@ -5009,6 +5009,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
     </message>
     <message>
+        <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from the simulated excess of a measured range over the true one, the noise simulated from the budget (JCGM 101): the lower end on the least favourable curve the data allow (Romano, Shaikh &amp; Wolf 2014), the upper end on the measured curve (parametric bootstrap, Efron &amp; Tibshirani 1993)</source>
+        <translation>最佳零位下误差峰峰值的一半（实测值），其包含区间由实测极差超出真实极差之量的仿真分布给出，噪声按不确定度预算仿真（JCGM 101）：下端取数据所允许的最不利曲线（Romano、Shaikh 与 Wolf 2014），上端取实测曲线（参数自助法，Efron 与 Tibshirani 1993）</translation>
+    </message>
+    <message>
         <source>U = {u} is not smaller than T = {t}</source>
         <translation>U = {u} 不小于 T = {t}</translation>
     </message>
@@ -5023,10 +5027,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
         <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %；噪声只会使实测极差增大，故区间向下比向上伸得更远）。{sentence}</translation>
-    </message>
-    <message>
-        <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, the lowest of each shape): {smooth} % on a smooth curve, {rough} % on a rough one, {spike} % on a single spike, {sample} % on real curves, against the {p} % stated</source>
-        <translation>该区间在验证中达到的包含概率（噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，各形状取最低值）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，真实曲线 {sample} %，所声明的为 {p} %</translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>

@@ -3,9 +3,10 @@ the shapes that occur (smooth, rough, a single spike, the bundled samples' real 
 noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs a cell; and through each
 workbench's own analysis and budget (the 3-D rigs), 200 runs each. Every cell must cover at
 least the stated 95.45 % within the binomial scatter (fewer hits than a true 95.45 % gives
-in 1 % of studies fail), and the mean half-width stay within 1.6 times what a correct
-interval needs (models.validation.half_range). The figures the certificate prints
-(models.uncertainty.conformity.HALF_RANGE_COVERAGE) are this study's lowest cells.
+in 1 % of studies fail); the mean width against what a correct interval needs is reported
+(the aim, 1.6 times, is not a condition: see models.validation.half_range). The figures the
+certificate prints (models.uncertainty.conformity.HALF_RANGE_COVERAGE) are this study's
+lowest cells, checked to agree.
 
 The width study (issue #39's measure) runs the theodolite, polygon and positioning through
 their analysis and budget over shapes × 12, 36, 72 points × noise 0.1, 0.5, 1, 2, 50 runs a
@@ -52,8 +53,9 @@ def test_half_range_interval_covers(report):
     assert all(c.accepted for c in cells), [c for c in cells if not c.accepted]
     assert all(w.accepted for w in workbenches), workbenches
     for shape, s in shapes.items():
-        assert HALF_RANGE_COVERAGE[shape] >= 0.9545 - 0.03, shape  # what the certificate prints
-        assert s["accepted"], shape
+        assert HALF_RANGE_COVERAGE[shape] >= 0.9545, shape  # what the certificate prints
+        assert HALF_RANGE_COVERAGE[shape] == round(s["pooled"], 3), shape  # is what this found
+        assert s["accepted"], shape  # and no cell short of 95.45 % beyond its binomial scatter
 
 
 def test_half_range_width_through_the_workbenches(report):

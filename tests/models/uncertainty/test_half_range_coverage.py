@@ -28,16 +28,19 @@ def _noise(sigma, dof=math.inf, common=False, sensitivity=1.0, evaluation="A"):
                            common=common)
 
 
-def test_a_clear_curve_gets_the_interval_of_one_pair_of_points():
-    """A sine of half range 5σ at 36 points: the extremes are single points, so both ends
-    are one pair's difference, √2σ, at the (1 − α/2 + β) normal quantile (2.09), halved."""
+def test_a_clear_curve_gets_the_interval_of_about_one_pair_of_points():
+    """A sine of half range 5σ at 36 points: the extremes are single points, so the excess
+    of the measured range is about one pair's difference ε_a − ε_b (σ√2) and never less:
+    the lower end (its 97.725 % quantile on the least favourable curve) at least 2.0 pair
+    deviations below the range, the upper end (the 0.5 % quantile of the excess, which a
+    neighbour of an extreme only raises) at most 2.576 above it; halved."""
     theta = np.arange(36) * 2 * np.pi / 36
     curve = 5.0 * np.sin(theta) + np.random.default_rng(3).normal(0, 0.1, 36)
     mc = half_range_monte_carlo(curve, _budget(36, _noise(0.1)))
-    pair = 0.5 * 2.09 * 0.1 * math.sqrt(2.0)
+    pair = 0.5 * 0.1 * math.sqrt(2.0)
     assert mc.value == mc.measured == pytest.approx(0.5 * np.ptp(curve))
-    assert mc.u_upper == pytest.approx(pair, rel=0.05)
-    assert pair <= mc.u_lower < 1.6 * pair  # a neighbour of each extreme may still be tied
+    assert 1.5 * pair < mc.u_upper <= 1.02 * 2.576 * pair
+    assert 0.98 * 2.0 * pair <= mc.u_lower < 4.0 * pair  # a neighbour may still be tied
     assert mc.interval_low == pytest.approx(mc.value - mc.u_lower)
     assert mc.interval_high == pytest.approx(mc.value + mc.u_upper)
 
@@ -69,7 +72,11 @@ def test_a_common_input_that_shifts_every_point_does_not_widen_the_interval():
     assert shared.u_lower == pytest.approx(alone.u_lower, rel=0.03)
     apart = BudgetComponent("standard", "B", "normal", 0.5, 1.0, 1.0, math.inf)
     per_point = half_range_monte_carlo(curve, _budget(24, _noise(0.05), apart), seed=1)
-    assert per_point.u_upper > 5 * alone.u_upper
+    # noise of 0.5 at every point could make the whole measured range: the interval reaches
+    # down to zero, its top stays at the measured value (never below it)
+    assert per_point.u_lower + per_point.u_upper > 5 * (alone.u_lower + alone.u_upper)
+    assert per_point.interval_low == pytest.approx(0.0, abs=0.05)
+    assert per_point.interval_high >= per_point.value
 
 
 def test_a_common_input_acts_through_its_signed_sensitivity():
@@ -95,7 +102,8 @@ def test_a_type_a_input_of_few_degrees_of_freedom_widens_the_interval():
     curve = np.sin(np.arange(12) * 2 * np.pi / 12)
     known = half_range_monte_carlo(curve, _budget(12, _noise(0.1)), seed=2)
     estimated = half_range_monte_carlo(curve, _budget(12, _noise(0.1, dof=4)), seed=2)
-    assert estimated.u_upper > 1.2 * known.u_upper  # t with 4 degrees of freedom
+    width = [mc.interval_high - mc.interval_low for mc in (known, estimated)]
+    assert width[1] > 1.2 * width[0]  # t with 4 degrees of freedom
 
 
 def test_the_seed_comes_from_the_readings():
@@ -135,10 +143,11 @@ def test_the_certificate_prints_the_coverage_achieved():
     errors = np.sin(np.arange(36) * np.pi / 18)
     c = decide_conformity(errors, budget, 3.0, "guarded", "half_range")
     a = HALF_RANGE_COVERAGE
-    assert (f"{100 * a['smooth']:.1f} % on a smooth curve, {100 * a['rough']:.1f} % on a rough "
-            f"one, {100 * a['spike']:.1f} % on a single spike, {100 * a['sample']:.1f} % on real "
-            "curves, against the 95.45 % stated") in str(c.quantity)
-    assert min(a.values()) >= 0.93  # the study's lowest cells (benchmark: 100 runs each)
+    assert (f"{100 * a['smooth']:.1f} % on smooth curves, {100 * a['rough']:.1f} % on rough "
+            f"ones, {100 * a['spike']:.1f} % on a single spike, {100 * a['sample']:.1f} % on real "
+            "curves; no cell below the 95.45 % stated") in str(c.quantity)
+    # never a printed coverage below the probability stated beside the interval (#39 audit)
+    assert min(a.values()) >= 0.9545
 
 
 def test_smoke_width_study_through_the_workbenches():
@@ -152,3 +161,74 @@ def test_smoke_width_study_through_the_workbenches():
         assert cell.runs == 3 and cell.hits >= 2, cell
         assert cell.low_misses + cell.high_misses == cell.runs - cell.hits
         assert cell.oracle > 0 and cell.width_ratio > 1.0, cell
+
+
+# -- round trips on curves simulated from first principles (tests/half_range_simulator.py) --
+def test_round_trip_coverage_on_first_principles_curves():
+    """Smooth, rough, spike and flat curves read with noise 0.1 to 2 times their half range
+    at 12 and 72 points, the budget stating the noise: the interval covers the true half
+    range at least as often as a 95.45 % interval does, within the binomial scatter
+    (at 95.45 %, fewer than 149 hits of 160 happen in 1.3 % of studies)."""
+    from tests.half_range_simulator import CURVES, measured
+
+    rng = np.random.default_rng(39)
+    hits = runs = 0
+    for shape in CURVES:
+        for points in (12, 72):
+            for sigma in (0.1, 0.5, 1.0, 2.0):
+                budget = _budget(points, _noise(sigma, evaluation="B"))
+                for _ in range(5):
+                    truth, curve = measured(shape, points, sigma, rng)
+                    mc = half_range_monte_carlo(curve, budget, trials=2000)
+                    hits += mc.interval_low <= truth <= mc.interval_high
+                    runs += 1
+    assert runs == 160 and hits >= 149
+
+
+def test_the_interval_moves_with_the_curve_as_physics_says():
+    """Properties that hold for any curve: the value is the measured half range, inside its
+    interval; a constant added to every point changes nothing; scaling the curve and its
+    noise by k scales the interval by k (same draws); more noise, a wider interval; a
+    clearly resolved curve's interval lies near its range, noise hiding it reaches 0."""
+    from tests.half_range_simulator import measured
+
+    rng = np.random.default_rng(7)
+    _, curve = measured("rough", 36, 0.2, rng)
+    budget = _budget(36, _noise(0.2, evaluation="B"))
+    mc = half_range_monte_carlo(curve, budget, seed=11)
+    assert mc.value == mc.measured == pytest.approx(0.5 * np.ptp(curve))
+    assert mc.interval_low <= mc.value <= mc.interval_high
+    shifted = half_range_monte_carlo(curve + 3.7, budget, seed=11)
+    assert (shifted.interval_low, shifted.interval_high) == pytest.approx(
+        (mc.interval_low, mc.interval_high), abs=1e-9)
+    scaled = half_range_monte_carlo(2.5 * curve, _budget(36, _noise(0.5, evaluation="B")),
+                                    seed=11)
+    assert (scaled.interval_low, scaled.interval_high) == pytest.approx(
+        (2.5 * mc.interval_low, 2.5 * mc.interval_high), rel=1e-9)
+    noisier = half_range_monte_carlo(curve, _budget(36, _noise(0.4, evaluation="B")), seed=11)
+    assert noisier.interval_high - noisier.interval_low > mc.interval_high - mc.interval_low
+    _, clear = measured("smooth", 36, 0.01, rng)
+    sharp = half_range_monte_carlo(clear, _budget(36, _noise(0.01, evaluation="B")))
+    assert sharp.interval_low > 0.95 and sharp.interval_high < 1.05
+    _, hidden = measured("flat", 36, 1.0, rng)
+    blurred = half_range_monte_carlo(hidden, _budget(36, _noise(1.0, evaluation="B")))
+    assert blurred.interval_low == 0.0 and blurred.interval_high >= blurred.value
+
+
+def test_the_interval_is_narrower_than_the_noise_bound_where_the_curve_is_resolved():
+    """The width the audit measured (issue #39): on a smooth curve at 72 points with noise
+    half its half range, the value's spread over these 30 repeats is 0.75 (2.275–97.725 %);
+    the interval is 2.1 times that on average, under 2.2 (the two-step bounds of Romano,
+    Shaikh & Wolf it replaced: 3.1 times, the same runs)."""
+    from tests.half_range_simulator import measured
+
+    rng = np.random.default_rng(72)
+    budget = _budget(72, _noise(0.5, evaluation="B"))
+    widths, deviations = [], []
+    for _ in range(30):
+        truth, curve = measured("smooth", 72, 0.5, rng)
+        mc = half_range_monte_carlo(curve, budget, trials=2000)
+        widths.append(mc.interval_high - mc.interval_low)
+        deviations.append(mc.value - truth)
+    needed = float(np.subtract(*np.quantile(deviations, [0.97725, 0.02275])))
+    assert np.mean(widths) < 2.2 * needed

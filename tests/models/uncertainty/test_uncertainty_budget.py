@@ -168,8 +168,10 @@ def test_half_range_interval_reaches_down_to_what_noise_explains():
 
     41 points of pure noise have a half range near 1.1" whatever the truth. The value is
     the measured half range (at least the truth half the time, never less than the data
-    show); the interval reaches down to 0, as noise explains all of it, and up by what one
-    pair of readings can hide (2σ·√2/2 = 0.71" for k = 2), so the axis passes ±2"."""
+    show); the interval reaches down to 0, as noise explains all of it, and up by the
+    lower tail of the noise's excess on the measured curve — less than what one pair of
+    readings can hide (2σ·√2/2 = 0.71" for k = 2), the range of 41 noisy points being
+    above its true value nearly always — so the axis passes ±2"."""
     rng = np.random.default_rng(1)
     truth = np.zeros(41)
     noisy = truth + rng.normal(0.0, 0.5, 41)
@@ -180,8 +182,7 @@ def test_half_range_interval_reaches_down_to_what_noise_explains():
     assert mc.measured == pytest.approx(0.5 * np.ptp(noisy))
     assert c.value == mc.measured == mc.value and mc.bias == 0.0
     assert mc.interval_low == 0.0  # noise explains it all
-    # upper end: the (1 − α/2 + β) quantile of one pair's difference, halved
-    assert mc.u_upper == pytest.approx(0.5 * 2.09 * 0.5 * math.sqrt(2.0), rel=0.05)
+    assert 0.0 <= mc.u_upper < 0.5 * 0.5 * 2.09 * 0.5 * math.sqrt(2.0)
     assert c.verdict == "pass"
     again = decide_conformity(noisy, budget, 2.0, "guarded", "half_range")
     assert again.value == c.value and again.monte_carlo == mc  # seeded from the readings
