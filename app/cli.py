@@ -19,7 +19,6 @@ from typing import Any
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.dcc.reader import POLYGON_FACE_DEVIATIONS
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
 from models.parameters import SettingsError
@@ -287,6 +286,8 @@ def run_analyze(argv: list[str]) -> int:
     inputs = [args.file] + ([args.metadata] if args.metadata else []) + (
         [args.compare_after] if args.compare_after else []) + (
         [args.reference_dcc] if args.reference_dcc else [])
+    if args.reference_dcc:
+        from models.dcc.reader import POLYGON_FACE_DEVIATIONS  # lxml's module: only for a DCC
     if args.reference_dcc and not (isinstance(kind, AcceptsReference)
                                    and kind.accepted_reference == POLYGON_FACE_DEVIATIONS):
         _say(words(QT_TR_NOOP("anglebench analyze: --reference-dcc is for the polygon "

@@ -32,7 +32,7 @@ from models.polygon.model import (
     wrap_deg,
 )
 from models.polygon.plots import error_figure
-from models.polygon.report import polygon_certificate, polygon_json_budgets, setup_statement
+from models.polygon.setup_statement import setup_statement
 from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
@@ -739,6 +739,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return polygon_plan(faces, sets, closure=True, alternate=True)
 
     def certificate(self, result, metadata, source_name="", settings=None):
+        from models.polygon.report import polygon_certificate  # not for a plain analysis
+
         return polygon_certificate(result, metadata, source_name, self.method_reference, settings)
 
     tolerance_in_settings = True  # the grade
@@ -752,6 +754,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return float(GRADE_ACCURACY_ARCSEC[result.grade])  # the one source: the grade
 
     def uncertainty_budgets(self, result, metadata, settings=None):
+        from models.polygon.report import polygon_json_budgets
+
         return polygon_json_budgets(result, metadata, settings)
 
     def overlay_figure(self, result):

@@ -59,7 +59,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message
 from models.polygon import KEY, TITLE
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
@@ -71,6 +71,7 @@ from models.polygon.model import (
     pyramidal_correction_arcsec,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
+from models.polygon.setup_statement import setup_statement
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.lab_scope import cmc_of
 
@@ -90,36 +91,6 @@ METHOD = QT_TR_NOOP(
     "The error induced depends on how the autocollimator was set: it is computed by exact "
     "3-D rotation in the frame stated under the set-up parameters."
 )
-
-
-def setup_statement(result: PolygonResult) -> str:
-    """Which set-up the correction assumed, and how a technician tells which one the bench
-    is, in words (certificate, summary, window)."""
-    if result.ac_alignment == "levelled":
-        frame = message(QT_TR_NOOP(
-            "Set-up assumed: autocollimator and rotary axis levelled (the autocollimator's "
-            "vertical along the shaft); the pyramidal correction is that set-up's, by exact 3-D "
-            "rotation: the polygon's own term plus the autocollimator's roll times the vertical "
-            "reading's change."))
-    else:
-        frame = message(QT_TR_NOOP(
-            "Set-up assumed: the autocollimator's vertical along the polygon's axis, rolled "
-            "with its tilt, not along the shaft (the frame of Tian et al. 2015); the pyramidal "
-            "correction is that paper's eqs 3–7."))
-    if result.roll_corrected:
-        roll = message(QT_TR_NOOP("Autocollimator roll measured {roll} (u = {u}) and corrected."),
-                       roll=f"{result.ac_roll_measured_arcmin:+g}′",
-                       u=f"{result.u_ac_roll_arcmin:g}′")
-    else:
-        roll = message(QT_TR_NOOP("Autocollimator roll not measured: up to ±{roll}, not "
-                                  "corrected, in the uncertainty."),
-                       roll=f"{result.ac_roll_arcmin:g}′")
-    tell = message(QT_TR_NOOP(
-        "To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the "
-        "vertical reading changes by Δy and watch the horizontal reading: on a levelled bench "
-        "it moves by less than the roll bound times Δy; if it moves more, measure that ratio "
-        "(the roll) and enter it."))
-    return joined((frame, " ", roll, " ", tell))
 
 
 def _zero_index(result: PolygonResult) -> int:

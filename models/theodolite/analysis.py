@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.certificate.document import CertificateDocument
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
@@ -20,7 +19,6 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
-from models.theodolite.report import theodolite_certificate, theodolite_json_budgets
 from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
@@ -33,6 +31,9 @@ from models.workbench import (
     ShowsHeadline,
     Workbench,
 )
+
+if TYPE_CHECKING:  # the certificate's modules are loaded when a certificate is asked for
+    from models.certificate.document import CertificateDocument
 
 __all__ = ["THEODOLITE"]
 
@@ -278,11 +279,15 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     def certificate(self, result: TheodoliteResult, metadata: CertificateMetadata,
                     source_name: str = "", settings: Mapping[str, Any] | None = None
                     ) -> CertificateDocument:
+        from models.theodolite.report import theodolite_certificate
+
         return theodolite_certificate(result, metadata, source_name, self.method_reference,
                                       settings)
 
     def uncertainty_budgets(self, result: TheodoliteResult, metadata: CertificateMetadata,
                             settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
+        from models.theodolite.report import theodolite_json_budgets
+
         return dict(theodolite_json_budgets(result, metadata, settings))
 
     def decided_errors(self, result: TheodoliteResult, metadata: CertificateMetadata
