@@ -68,9 +68,10 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
             "calibration certificate and a stated uncertainty; {count} listed so"),
             roles=joined(part for i, r in enumerate(roles)
                          for part in (("; " if i else ""), message(r))), count=carried))
+    expired = expired_standards(metadata)
     for std in standards:
         name = std.description or message(QT_TR_NOOP("standard"))
-        if std.due_date and metadata.calibration_date and std.due_date < metadata.calibration_date:
+        if std in expired:
             gaps.append(message(QT_TR_NOOP(
                 "{standard}: its calibration was due on {due}, before the date of calibration "
                 "{date}: it had expired"), standard=name, due=std.due_date,
