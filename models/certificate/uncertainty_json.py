@@ -73,6 +73,10 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
     stated = conformity.verdict != "not assessed"
     out: dict[str, Any] = {
         "value": _number(conformity.value),
+        # the measured figure the value was estimated from (half the measured peak-to-peak:
+        # noise widens it, so it lies above the value)
+        "measured": _number(conformity.monte_carlo.measured
+                            if conformity.monte_carlo is not None else conformity.value),
         "interval_low": _number(conformity.interval_low),
         "interval_high": _number(conformity.interval_high),
         "coverage_probability": _number(conformity.probability),

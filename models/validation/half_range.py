@@ -74,6 +74,9 @@ class Cell(_Tally):
     hits: int
     width_ratio: float  # mean width / the oracle's (see _oracle_width)
     probability: float
+    # mean width / the spread of (measured half range − truth): against the least scattered
+    # estimate's
+    width_ratio_measured: float = float("nan")
 
 
 def lowest_acceptable_hits(runs: int, probability: float, risk: float = 0.01) -> int:
@@ -90,7 +93,7 @@ def coverage_cell(shape: str, points: int, noise: float, runs: int, seed: int,
     budget = UncertaintyBudget((BudgetComponent("reading noise", "B", "normal", noise, 1.0, 1.0,
                                                 math.inf),), points, DEFAULT_COVERAGE_PROBABILITY)
     rng = np.random.default_rng(seed)
-    hits, half_widths, deviations = 0, [], []
+    hits, half_widths, deviations, measured = 0, [], [], []
     for run in range(runs):
         truth = true_curve(shape, points, run, samples)
         half_range = 0.5 * float(np.ptp(truth))
@@ -99,9 +102,12 @@ def coverage_cell(shape: str, points: int, noise: float, runs: int, seed: int,
         hits += mc.interval_low <= half_range <= mc.interval_high
         half_widths.append(mc.interval_high - mc.interval_low)
         deviations.append(mc.value - half_range)
-    needed = _oracle_width(deviations)
+        measured.append(mc.measured - half_range)
+    needed, needed_measured = _oracle_width(deviations), _oracle_width(measured)
     ratio = float(np.mean(half_widths)) / needed if needed > 0 else float("inf")
-    return Cell(shape, points, noise, runs, hits, ratio, budget.probability)
+    ratio_measured = (float(np.mean(half_widths)) / needed_measured if needed_measured > 0
+                      else float("inf"))
+    return Cell(shape, points, noise, runs, hits, ratio, budget.probability, ratio_measured)
 
 
 def _oracle_width(deviations) -> float:
@@ -342,10 +348,17 @@ class WidthCell(_Tally):
     width: float  # mean width of the interval
     oracle: float  # the 2.275 %–97.725 % quantile spread of (value − truth)
     probability: float
+    # the same spread of (measured half range − truth): what an interval about the measured
+    # half range, the least scattered estimate, would need
+    oracle_measured: float = float("nan")
 
     @property
     def width_ratio(self) -> float:
         return self.width / self.oracle if self.oracle > 0 else float("inf")
+
+    @property
+    def width_ratio_measured(self) -> float:
+        return self.width / self.oracle_measured if self.oracle_measured > 0 else float("inf")
 
 
 def _theodolite_run(shape: str, points: int, noise: float, run: int, rng, samples):
@@ -418,10 +431,11 @@ def width_cell(workbench: str, shape: str, points: int, noise: float, runs: int,
     rng = np.random.default_rng(seed)
     run_one = _WIDTH_RUNS[workbench]
     lows = highs = hits = 0
-    widths, deviations, probability = [], [], DEFAULT_COVERAGE_PROBABILITY
+    widths, deviations, measured, probability = [], [], [], DEFAULT_COVERAGE_PROBABILITY
     for run in range(runs):
         truth, curve, budget = run_one(shape, points, noise, run, rng, samples)
         mc = estimator(curve, budget)
+        measured.append(0.5 * float(np.ptp(curve)) - truth)
         probability = mc.probability
         lows += truth < mc.interval_low
         highs += truth > mc.interval_high
@@ -429,7 +443,8 @@ def width_cell(workbench: str, shape: str, points: int, noise: float, runs: int,
         widths.append(mc.interval_high - mc.interval_low)
         deviations.append(mc.value - truth)
     return WidthCell(workbench, shape, points, noise, runs, int(hits), int(lows), int(highs),
-                     float(np.mean(widths)), _oracle_width(deviations), probability)
+                     float(np.mean(widths)), _oracle_width(deviations), probability,
+                     _oracle_width(measured))
 
 
 def width_study(runs: int, workbenches=WIDTH_WORKBENCHES, shapes=WIDTH_SHAPES,
