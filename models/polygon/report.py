@@ -29,6 +29,20 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   noise, d² = mean(H²) − 2u², rectangular with half-width d (d/2 when the
   drift was spread linearly over the set);
 * the item's resolution, if stated.
+
+Each input once (issue 39's audit asked whether the standards, the zero reading and the
+closure drift count the reading noise again). From eq 1 each term is a different physical
+error: the face's certificate error δ_i and the zero face's δ_z (one per face, the second
+one value for the run); the readings' noise at the face (one per reading, /√m over the sets)
+and in set 1's zero reading (one value for the run, not reduced by sets: it is one reading);
+a reading standard's calibration error at x_i and at x_z (a systematic function of the
+reading, not reduced by repeating sets, so not the sets' scatter); the drift, what the
+closures show beyond 2u² of their two readings' noise. None of these is the same error as
+another, and each is drawn with its nature: the budget's per-point u agrees with the spread
+of simulated runs (``polygon_budget_trials``: 0.94–1.05). Unlike the theodolite, whose
+stated figure is the per-reading error of the instrument that makes the readings, the
+standards here cannot be told apart by their statement (a polygon's per-face figure may be
+stated per "reading"), so none is merged with the noise.
 """
 
 from __future__ import annotations
