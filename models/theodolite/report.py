@@ -66,7 +66,8 @@ from models.uncertainty.budget import (
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 
-__all__ = ["reading_error_components", "repeated_readings_components", "theodolite_budget", "theodolite_certificate",
+__all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
+           "repeated_readings_components", "theodolite_budget", "theodolite_certificate",
            "theodolite_json_budgets"]
 
 METHOD = QT_TR_NOOP(
