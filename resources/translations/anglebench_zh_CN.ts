@@ -324,6 +324,10 @@
         <translation>各测回相对于同方向平均值的合并标准偏差 {s}，自由度 {dof}</translation>
     </message>
     <message>
+        <source>{note}; each face&apos;s {n} readings averaged first, so their s/√n is inside this scatter and not counted again</source>
+        <translation>{note}；每个面的 {n} 个读数先取平均，其 s/√n 已包含在此离散中，不再重复计入</translation>
+    </message>
+    <message>
         <source>Autocollimator reading noise (mean of {sets} sets)</source>
         <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
     </message>
