@@ -14,7 +14,10 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   deviation of the sets about their direction's mean pooled over positions
   and directions (Type A), divided by √m for the mean of m sets; otherwise the
   autocollimator's reading noise from the tilt fits' residuals. The zero
-  reading is one reading shared by every set and enters once more, not reduced;
+  reading is one reading shared by every set and enters once more, not reduced.
+  With n readings per face (averaged), the sets' scatter is that of the means and
+  already holds their s/√n, which then is not an input again (it was, #39); with
+  no direction repeated, the s/√n of the encoder and horizontal readings enters;
 * the pyramidal correction: the covariance of ψ, ω from each set's tilt fit
   propagated through the chosen frame's exact correction (first order), for the
   mean of the sets;
@@ -29,6 +32,20 @@ minus the pyramidal correction ``ε_x(θ_i) − ε_x(θ_z)``, averaged over the 
   noise, d² = mean(H²) − 2u², rectangular with half-width d (d/2 when the
   drift was spread linearly over the set);
 * the item's resolution, if stated.
+
+Each input once (issue 39's audit asked whether the standards, the zero reading and the
+closure drift count the reading noise again). From eq 1 each term is a different physical
+error: the face's certificate error δ_i and the zero face's δ_z (one per face, the second
+one value for the run); the readings' noise at the face (one per reading, /√m over the sets)
+and in set 1's zero reading (one value for the run, not reduced by sets: it is one reading);
+a reading standard's calibration error at x_i and at x_z (a systematic function of the
+reading, not reduced by repeating sets, so not the sets' scatter); the drift, what the
+closures show beyond 2u² of their two readings' noise. None of these is the same error as
+another, and each is drawn with its nature: the budget's per-point u agrees with the spread
+of simulated runs (``polygon_budget_trials``: 0.94–1.05). Unlike the theodolite, whose
+stated figure is the per-reading error of the instrument that makes the readings, the
+standards here cannot be told apart by their statement (a polygon's per-face figure may be
+stated per "reading"), so none is merged with the noise.
 """
 
 from __future__ import annotations
@@ -137,7 +154,8 @@ def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]
     """With n readings at each face (setting *readings per point*): the standard deviation of
     the mean s/√n of each face's encoder and autocollimator readings, carried to the mean
     over the sets (√(Σ u²)/m), and at the zero reading that every error shares; Type A with
-    ν = n − 1, separate from the sets' repeatability."""
+    ν = n − 1. Only where the reading noise is not the sets' scatter, which holds it
+    (:func:`polygon_budget`)."""
     u = result.repeat_s_mean_arcsec
     if result.repeats is None or u is None:
         return []
@@ -156,6 +174,15 @@ def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]
                         message(QT_TR_NOOP("s/√n of the {n} readings at face {face} of set 1, "
                                            "shared by every set"), n=n, face=result.zero_face),
                         common=True)]
+
+
+def _noise_from_sets(result: PolygonResult) -> bool:
+    """True when the reading noise is the sets' scatter about their direction's mean: a
+    set's reading at a face is then the mean of its repeated readings, whose own s/√n is
+    part of that scatter (Var = σ_between² + σ_within²/n), so it is not an input again."""
+    directions = np.array([s.direction for s in result.sets])
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    return pooled_repeatability(corrected, directions) is not None
 
 
 def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0
@@ -179,6 +206,10 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
         note = message(QT_TR_NOOP("pooled standard deviation {s} of the sets about their "
                                   "direction's mean, {dof} degrees of freedom"),
                        s=f"{noise:.3f}\"", dof=dof)
+        if result.repeats is not None:  # each face's n readings were averaged first
+            note = message(QT_TR_NOOP("{note}; each face's {n} readings averaged first, so "
+                                      "their s/√n is inside this scatter and not counted "
+                                      "again"), note=note, n=result.repeats.n)
         evaluation = "A"
     else:
         fits = [s.tilt for s in result.sets if s.tilt is not None]
@@ -346,7 +377,8 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     noise_components, noise = _noise_components(
         result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0))
     components += noise_components
-    components += repeated_readings_components(result)
+    if not _noise_from_sets(result):
+        components += repeated_readings_components(result)
     u_pyr = _pyramidal_uncertainty(result)
     if u_pyr is not None:
         components.append(BudgetComponent(

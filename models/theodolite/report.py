@@ -4,25 +4,28 @@ The corrected error at point i is the difference of two readings (at i and
 at the reference point), minus the set-up model ζ(θ):
 ``e_i = (A_i − A_0) − (θ_i − θ_0) − ζ(θ_i; ψ, α, β)``. Its inputs:
 
-* each reference standard's figure, per reading: sensitivity √2 (0 at the
-  reference reading, whose error is zero by definition; a repeat of the
-  reference angle later in the run is a reading like any other); the
-  standard's calibration error is one unknown value for the run;
-* the reading repeatability, estimated (Type A) by the identification's
-  residual RMS with n − 3 degrees of freedom, once for the reading itself and
-  once for the reference reading that every point shares. These are two
-  readings, so two independent errors (the point's own, and the zeroing one
-  that every point shares: it moves the whole curve), and they stay two
-  inputs so that the Monte Carlo of the decided quantity draws them so; but
-  their s is one estimate, so Welch–Satterthwaite counts them as one input
-  with n − 3 degrees of freedom (``dof_group``), not as two that would double
-  ν. The vertical
-  residuals are the only measure of it (the azimuth residuals hold the axis'
-  own error, the measurand); an autocollimating theodolite sets on the mirror
-  as repeatably in azimuth as in elevation. It is the run's reading noise, and
-  the only one: the theodolite's stated figure is its calibration error, one
-  unknown value for the whole run (``common``), so the noise is counted once
-  where the half range is simulated;
+* the reading error, ONE input (issue 39: the noise counted once). Every
+  reading of the theodolite has one error; two figures describe it: the
+  scatter s of the vertical readings about the identification's fit (Type A,
+  ν = n − 3; the azimuth residuals hold the axis' own error, the measurand, and
+  an autocollimating theodolite sets on the mirror as repeatably in azimuth as
+  in elevation) and the stated standards' per-reading standard uncertainty
+  u_std (Type B, the root sum of squares of the stated standards' figures).
+  They describe the same error, so the budget takes the larger, u_read =
+  max(s, u_std): a stated calibration figure above the observed scatter still
+  governs (ν = ∞), and a set-up noisier than the instrument's figure is not
+  hidden (ν = n − 3). Its note says which governed. It enters twice, as the
+  error is the difference of two readings: the point's own reading (one value
+  per point, independent; sensitivity 1, 0 at the reference reading) and the
+  reference reading θ₀ (one value for the whole run, ``common``; sensitivity 1
+  at every point but θ₀): √2·u_read at a point, 0 at θ₀. One estimate, so for
+  Welch–Satterthwaite the two count as one input (``dof_group``). The
+  standards stay in the certificate's table of standards and its traceability;
+  only their budget line is this one. (Before, the standard entered a second
+  time as one value per trial with sensitivity √2 beside s at the point and at
+  θ₀: the noise counted twice, and the standard's share of the wrong nature —
+  it only moved the reference point against the others.) A repeat of the
+  reference angle later in the run is a reading like any other;
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
 """
@@ -47,7 +50,6 @@ from models.certificate.builder import (
 from models.certificate.document import (
     CertificateDocument,
     Table,
-    reference_standard_components,
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
@@ -55,11 +57,17 @@ from models.messages import QT_TR_NOOP, message
 from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
-from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
+from models.uncertainty.budget import (
+    BudgetComponent,
+    UncertaintyBudget,
+    coverage_factor,
+    divisor_for_basis,
+)
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 
-__all__ = ["repeated_readings_components", "theodolite_budget", "theodolite_certificate",
+__all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
+           "repeated_readings_components", "theodolite_budget", "theodolite_certificate",
            "theodolite_json_budgets"]
 
 METHOD = QT_TR_NOOP(
@@ -109,6 +117,69 @@ def _point_names(theta_deg: np.ndarray) -> list[str]:
             for i, t in enumerate(shown)]
 
 
+def _stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, list]:
+    """u_std, the root sum of squares of the stated standards' per-reading standard
+    uncertainties (arcsec), and the standards that state one."""
+    stated = [std for std in metadata.standards if std.uncertainty is not None]
+    u2 = 0.0
+    for std in stated:
+        divisor, _ = divisor_for_basis(std.basis)
+        u2 += (std.uncertainty_in("arcsec") / divisor) ** 2
+    return math.sqrt(u2), stated
+
+
+def reading_error_components(result: TheodoliteResult,
+                             metadata: CertificateMetadata) -> list[BudgetComponent]:
+    """The theodolite's reading error, one input (see the module's note): u_read = max(s,
+    u_std), at the point's own reading (independent per point) and at the reference
+    reading θ₀ (one value for the run), sensitivity 1 at every point but θ₀."""
+    n = result.theta_deg.size
+    single = _not_reference(result)
+    dof = max(n - 3, 1)
+    res = result.elevation_residuals_arcsec
+    s = float(np.sqrt(np.sum(res**2) / dof))
+    u_std, stated = _stated_reading_uncertainty(metadata)
+    scatter = message(QT_TR_NOOP("s = {s} (the vertical readings about the fit, {n} readings, "
+                                 "ν = {dof}; taken for the azimuth too)"),
+                      s=f"{s:.3f}\"", n=n, dof=dof)
+    if u_std > s:
+        evaluation, nu = "B", math.inf
+        if len(stated) == 1:  # its own figure and distribution
+            value = stated[0].uncertainty_in("arcsec")
+            divisor, distribution = divisor_for_basis(stated[0].basis)
+        else:
+            value, divisor, distribution = u_std, 1.0, "normal"
+        governs = message(QT_TR_NOOP(
+            "one error per reading, counted once: the larger of the stated standards' "
+            "u = {u} per reading and the scatter {scatter}; the standard governs (Type B, "
+            "ν = ∞)"), u=f"{u_std:.3f}\"", scatter=scatter)
+    else:
+        evaluation, nu, value, divisor, distribution = "A", float(dof), s, 1.0, "normal"
+        governs = (message(QT_TR_NOOP(
+            "one error per reading, counted once: the larger of the stated standards' "
+            "u = {u} per reading and the scatter {scatter}; the scatter governs (Type A, "
+            "ν = {dof})"), u=f"{u_std:.3f}\"", scatter=scatter, dof=dof) if stated else
+            message(QT_TR_NOOP("one error per reading, counted once: no standard states a "
+                               "u per reading, so the scatter {scatter} (Type A, ν = {dof})"),
+                    scatter=scatter, dof=dof))
+    return [
+        BudgetComponent(READING_INPUT, evaluation, distribution, value, divisor, single, nu,
+                        message(QT_TR_NOOP("{governs}; the point's own reading, one value per "
+                                           "point"), governs=governs),
+                        dof_group="reading"),
+        BudgetComponent(REFERENCE_READING_INPUT, evaluation, distribution, value, divisor,
+                        single, nu,
+                        QT_TR_NOOP("the zeroing reading, shared by every point (one value for "
+                                   "the run): the same error as the point's reading, a second "
+                                   "reading of it; for ν_eff one input with it (ν counted once)"),
+                        common=True, dof_group="reading")]
+
+
+#: the budget's names of the reading error at the point and at θ₀ (one input, two readings)
+READING_INPUT = QT_TR_NOOP("Reading error (pointing)")
+REFERENCE_READING_INPUT = QT_TR_NOOP("Reference reading (θ₀)")
+
+
 def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
                       settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the corrected error, held to the laboratory's CMC of the ``settings``
@@ -117,21 +188,7 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     single = _not_reference(result)
     pair = math.sqrt(2.0) * single
     dof = max(n - 3, 1)
-    components = reference_standard_components(metadata, pair, QT_TR_NOOP("reading (pointing)"),
-                                               common=True)
-    res = result.elevation_residuals_arcsec
-    noise = float(np.sqrt(np.sum(res**2) / dof))
-    components.append(BudgetComponent(
-        QT_TR_NOOP("Reading repeatability"), "A", "normal", noise, 1.0, single, dof,
-        message(QT_TR_NOOP("standard deviation of the vertical readings about the fit, {n} "
-                           "readings, {dof} degrees of freedom; taken for the azimuth too"),
-                n=n, dof=dof), dof_group="repeatability"))
-    components.append(BudgetComponent(
-        QT_TR_NOOP("Reference reading (θ₀)"), "A", "normal", noise, 1.0, single, dof,
-        QT_TR_NOOP("the zeroing reading, shared by every point: a second reading, independent "
-                   "of the point's own, but the same estimate s, so for ν_eff one input with "
-                   "the repeatability (ν counted once)"), common=True,
-        dof_group="repeatability"))
+    components = reading_error_components(result, metadata)
     components.append(BudgetComponent(
         MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "

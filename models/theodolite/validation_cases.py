@@ -28,17 +28,20 @@ THEODOLITE_SETUP = (2.0, 40.0, 3.0)  # ψ, α, β in degrees
 
 
 def theodolite_budget_trials(trials: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """Corrected error − truth and the budget's u, per trial and point (arcsec)."""
+    """Corrected error − truth and the budget's u, per trial and point (arcsec). Each
+    reading (azimuth and elevation) has one error, σ = 0.5″, and the theodolite is stated
+    consistently with it, u = σ per reading (U = 1.0″, k = 2): the budget's one reading
+    input, max(s, u), is checked against the spread (issue 39: before, the rig drew the
+    standard as a second, azimuth-only error beside the noise, the budget's double count)."""
     theta = np.arange(-60.0, 60.1, 5.0)
     truth = 3.0 * np.sin(np.radians(3.0 * theta))  # error of indication, 0 at θ = 0
-    noise, u_standard = 0.5, 0.3
-    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=0.6,
+    noise = 0.5
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=2 * noise,
                                                             basis="U95"),))
     clean_az, clean_el = theodolite_readings(theta - truth / 3600.0, *THEODOLITE_SETUP)
     deviations, budgets = [], []
     for _ in range(trials):
-        az = clean_az + (rng.normal(0.0, noise, theta.size)
-                         + rng.normal(0.0, u_standard, theta.size)) / 3600.0
+        az = clean_az + rng.normal(0.0, noise, theta.size) / 3600.0
         el = clean_el + rng.normal(0.0, noise, theta.size) / 3600.0
         result = analyze_run(theta, az, el)
         deviations.append(result.corrected_error_arcsec - truth)

@@ -324,6 +324,10 @@
         <translation>各测回相对于同方向平均值的合并标准偏差 {s}，自由度 {dof}</translation>
     </message>
     <message>
+        <source>{note}; each face&apos;s {n} readings averaged first, so their s/√n is inside this scatter and not counted again</source>
+        <translation>{note}；每个面的 {n} 个读数先取平均，其 s/√n 已包含在此离散中，不再重复计入</translation>
+    </message>
+    <message>
         <source>Autocollimator reading noise (mean of {sets} sets)</source>
         <translation>自准直仪读数噪声（{sets} 个测回的平均）</translation>
     </message>
@@ -774,18 +778,6 @@
         <translation>水平读数</translation>
     </message>
     <message>
-        <source>reading (pointing)</source>
-        <translation>读数（瞄准）</translation>
-    </message>
-    <message>
-        <source>Reading repeatability</source>
-        <translation>读数重复性</translation>
-    </message>
-    <message>
-        <source>standard deviation of the vertical readings about the fit, {n} readings, {dof} degrees of freedom; taken for the azimuth too</source>
-        <translation>竖直读数相对于拟合的标准偏差，{n} 个读数，自由度 {dof}；水平读数亦取此值</translation>
-    </message>
-    <message>
         <source>Reference reading (θ₀)</source>
         <translation>参考读数（θ₀）</translation>
     </message>
@@ -796,6 +788,35 @@
     <message>
         <source>covariance of the identified parameters propagated through ζ(θ)</source>
         <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
+    </message>
+    <message>
+        <source>s = {s} (the vertical readings about the fit, {n} readings, ν = {dof}; taken for the azimuth too)</source>
+        <translation>s = {s}（竖直读数相对于拟合的标准偏差，{n} 个读数，ν = {dof}；水平读数亦取此值）</translation>
+    </message>
+    <message>
+        <source>one error per reading, counted once: the larger of the stated standards&apos; u = {u} per reading and the scatter {scatter}; the standard governs (Type B, ν = ∞)</source>
+        <translation>每个读数只有一个误差，只计一次：取所列标准器每个读数的 u = {u} 与离散度 {scatter} 中的较大者；由标准器决定（B 类，ν = ∞）</translation>
+    </message>
+    <message>
+        <source>one error per reading, counted once: the larger of the stated standards&apos; u = {u} per reading and the scatter {scatter}; the scatter governs (Type A, ν = {dof})</source>
+        <translation>每个读数只有一个误差，只计一次：取所列标准器每个读数的 u = {u} 与离散度 {scatter} 中的较大者；由离散度决定（A 类，ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>one error per reading, counted once: no standard states a u per reading, so the scatter {scatter} (Type A, ν = {dof})</source>
+        <translation>每个读数只有一个误差，只计一次：没有标准器给出每个读数的 u，故取离散度 {scatter}（A 类，ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>{governs}; the point&apos;s own reading, one value per point</source>
+        <translation>{governs}；该点自身的读数，每点一个值</translation>
+    </message>
+    <message>
+        <source>the zeroing reading, shared by every point (one value for the run): the same error as the point&apos;s reading, a second reading of it; for ν_eff one input with it (ν counted once)</source>
+        <translation>置零读数，为各点共用（整次测量一个值）：与该点读数是同一种误差的另一个读数；计算 ν_eff 时与之合为一个输入量（ν 只计一次）</translation>
+    </message>
+    <message>
+        <source>Reading error (pointing)</source>
+        <extracomment>the budget&apos;s names of the reading error at the point and at θ₀ (one input, two readings)</extracomment>
+        <translation>读数误差（瞄准）</translation>
     </message>
     <message>
         <source>Axis tilt ψ</source>
@@ -6987,10 +7008,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>θ = {theta}° (row {row} of the results)</source>
         <translation>θ = {theta}°（结果表第 {row} 行）</translation>
-    </message>
-    <message>
-        <source>the zeroing reading, shared by every point: a second reading, independent of the point&apos;s own, but the same estimate s, so for ν_eff one input with the repeatability (ν counted once)</source>
-        <translation>置零读数，为各点共用：是与该点自身读数相互独立的另一个读数，但来自同一个估计值 s，因此计算 ν_eff 时与重复性合为一个输入量（ν 只计一次）</translation>
     </message>
     <message>
         <source>Resolution of the reference&apos;s reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>

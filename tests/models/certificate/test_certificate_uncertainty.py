@@ -81,20 +81,28 @@ def test_one_estimate_entering_twice_counts_once_for_nu():
     assert grouped.effective_dof() == pytest.approx(GTC.dof(y))
 
 
-def test_theodolite_budget_counts_its_repeatability_once():
+def test_theodolite_budget_counts_its_reading_error_once():
+    """The reading error at the point and at θ₀: one estimate (the larger of s and the
+    standard's u), so one input for ν_eff; the standard has no line of its own (issue 39)."""
     _, result = _sample("theodolite")
-    budget = theodolite_budget(result, META)
-    rows = budget.table()
-    repeat = [r for r in rows if r["name"] in ("Reading repeatability", "Reference reading (θ₀)")]
-    assert len(repeat) == 2 and repeat[0]["u"] == repeat[1]["u"]
-    nu = repeat[0]["dof"]
-    i = budget.worst_index
-    contrib = budget.contributions()[:, i]
-    names = [r["name"] for r in rows]
-    model = contrib[names.index("Set-up model ζ (ψ, α, β)")]
-    group = repeat[0]["contribution"] ** 2 + repeat[1]["contribution"] ** 2
-    hand = float(np.sum(contrib**2)) ** 2 / (group**2 / nu + model**4 / nu)
-    assert budget.effective_dof() == pytest.approx(hand)
+    for u in (0.5, 0.05):  # the sample's standard governs (0.5″ > s); s governs (Type A)
+        meta = replace(META, standards=(replace(META.standards[0], uncertainty=u),))
+        budget = theodolite_budget(result, meta)
+        rows = budget.table()
+        names = [r["name"] for r in rows]
+        assert "Theodolite" not in names
+        repeat = [r for r in rows if r["name"] in ("Reading error (pointing)",
+                                                   "Reference reading (θ₀)")]
+        assert len(repeat) == 2 and repeat[0]["u"] == repeat[1]["u"]
+        nu = repeat[0]["dof"]
+        assert (nu == math.inf) == (u == 0.5)
+        i = budget.worst_index
+        contrib = budget.contributions()[:, i]
+        model = contrib[names.index("Set-up model ζ (ψ, α, β)")]
+        model_nu = rows[names.index("Set-up model ζ (ψ, α, β)")]["dof"]
+        group = repeat[0]["contribution"] ** 2 + repeat[1]["contribution"] ** 2
+        hand = float(np.sum(contrib**2)) ** 2 / (group**2 / nu + model**4 / model_nu)
+        assert budget.effective_dof() == pytest.approx(hand)
 
 
 # 11. set-up parameters: k from their own ν ----------------------------------------------------

@@ -1,0 +1,136 @@
+"""The theodolite's reading error counted once, with its nature (issue 39).
+
+The rig simulates the set-up from first principles in this file (numpy only, nothing from
+the code it checks): the frame of ../shared/SPEC.md §1 (OZ plumb down, OX the azimuth
+zero), the axis tilted by ψ towards α, the mirror normal at the axis' zero [cos β, 0,
+−sin β], turned right-handed about the axis by its TRUE rotation θ − d(θ) (Rodrigues); the
+theodolite reads atan2(y, x) and asin z, each with normal noise σ. The laboratory states
+the theodolite at u = σ per reading — the same error as the noise, as a consistent
+statement does. Each point's corrected error is then the difference of two noisy azimuth
+readings (the point's and θ₀'s) less the identified set-up model: its scatter is about
+√2·σ, and its U must be about twice that — not the √2·σ of the standard on top of two
+readings' s (2σ, the noise counted twice).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.theodolite.model import analyze_run
+from models.theodolite.report import (
+    READING_INPUT,
+    REFERENCE_READING_INPUT,
+    theodolite_budget,
+)
+from models.uncertainty.conformity import _draws_by_nature
+
+SIGMA = 0.5  # arcsec, the reading noise in azimuth and elevation
+THETA = np.arange(-20.0, 20.1, 2.0)  # 21 points
+ZERO = int(np.argmin(np.abs(THETA)))
+PSI, ALPHA, BETA = 2.0, 40.0, 3.0  # deg
+
+
+def _rotate(v: np.ndarray, axis: np.ndarray, phi: float) -> np.ndarray:
+    k = axis / np.linalg.norm(axis)
+    return v * math.cos(phi) + np.cross(k, v) * math.sin(phi) + k * (k @ v) * (1 - math.cos(phi))
+
+
+def _readings(true_rotation_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Azimuth and elevation (deg) of the mirror normal, noise-free."""
+    psi, alpha, beta = np.radians([PSI, ALPHA, BETA])
+    axis = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha),
+                     math.cos(psi)])
+    normal = np.array([math.cos(beta), 0.0, -math.sin(beta)])
+    out = np.array([_rotate(normal, axis, phi) for phi in np.radians(true_rotation_deg)])
+    return np.degrees(np.arctan2(out[:, 1], out[:, 0])), np.degrees(np.arcsin(out[:, 2]))
+
+
+def _axis_error() -> np.ndarray:
+    """The axis' own error (indicated − true, arcsec): 1″ and 0.5″ harmonics, 0 at θ₀."""
+    t = np.radians(THETA)
+    d = np.sin(4.0 * t + 0.3) + 0.5 * np.cos(9.0 * t)
+    return d - d[ZERO]
+
+
+META = CertificateMetadata(standards=(ReferenceStandard(
+    "Autocollimating theodolite", certificate_no="NIM-1", uncertainty=SIGMA, basis="u"),))
+
+
+def _runs(count: int, seed: int):
+    rng = np.random.default_rng(seed)
+    truth = _axis_error()
+    clean_az, clean_el = _readings(THETA - truth / 3600.0)
+    for _ in range(count):
+        az = clean_az + rng.normal(0.0, SIGMA, THETA.size) / 3600.0
+        el = clean_el + rng.normal(0.0, SIGMA, THETA.size) / 3600.0
+        result = analyze_run(THETA, az, el, reference_index=ZERO)
+        yield truth, result, theodolite_budget(result, META)
+
+
+def test_per_point_u_is_twice_the_actual_scatter_with_the_standard_stated_at_sigma():
+    """(a) Over 240 runs, U at each point / (2 × the scatter of the corrected error about
+    the truth at that point) is about 1 (it was about 1.5 with the noise counted twice)."""
+    errors, big_u = [], []
+    for truth, result, budget in _runs(240, 39):
+        errors.append(result.corrected_error_arcsec - truth)
+        big_u.append(budget.expanded)
+    errors, big_u = np.array(errors), np.array(big_u)
+    others = np.arange(THETA.size) != ZERO
+    scatter = np.std(errors, axis=0, ddof=1)
+    # the simulation's own check: two readings' noise at a point, none at θ₀
+    assert np.median(scatter[others]) == pytest.approx(math.sqrt(2.0) * SIGMA, rel=0.1)
+    assert scatter[ZERO] < 1e-6 and np.all(big_u[:, ZERO] == 0.0)
+    ratio = np.mean(big_u, axis=0)[others] / (2.0 * scatter[others])
+    assert 0.9 <= float(np.median(ratio)) <= 1.2, ratio
+    # every point within the scatter of a standard deviation from 240 runs (±5 % each)
+    assert np.all((ratio > 0.8) & (ratio < 1.35)), ratio
+
+
+def test_half_range_draws_carry_two_readings_not_three_or_four():
+    """(b) The half range's Monte Carlo draws the reading error once per point and once for
+    θ₀ (one value per trial): per-point sd ≈ σ√2 at every point but θ₀ (not √3σ with the
+    standard's √2 on top of one s, nor 2σ with it on top of two), 0 at θ₀."""
+    _, result, budget = next(_runs(1, 7))
+    draws = sum(_draws_by_nature(budget, np.arange(THETA.size), 40000,
+                                 np.random.default_rng(3)))
+    sd = np.std(draws, axis=0)
+    others = np.arange(THETA.size) != ZERO
+    assert sd[ZERO] == pytest.approx(0.0, abs=1e-9)
+    # the set-up model's own share is small here: within 10 % of the two readings alone
+    assert np.all(np.abs(sd[others] / (math.sqrt(2.0) * SIGMA) - 1.0) < 0.12), sd[others]
+    assert np.max(sd[others]) < 0.9 * math.sqrt(3.0) * SIGMA
+    # the draws agree with the budget's own u_c (the same inputs, the same nature)
+    np.testing.assert_allclose(sd[others], budget.combined[others], rtol=0.06)
+
+
+def test_one_reading_input_the_larger_of_scatter_and_standard_with_its_nature():
+    _, result, _ = next(_runs(1, 11))
+    dof = THETA.size - 3
+    res = result.elevation_residuals_arcsec
+    s = float(np.sqrt(np.sum(res**2) / dof))
+    for stated, governs in ((3.0 * SIGMA, "standard"), (0.1 * SIGMA, "scatter")):
+        meta = CertificateMetadata(standards=(ReferenceStandard(
+            "Autocollimating theodolite", uncertainty=2.0 * stated, basis="U95"),))
+        budget = theodolite_budget(result, meta)
+        rows = {r["name"]: r for r in budget.table()}
+        # the standard's own line is gone: its per-reading error is the reading error
+        assert "Autocollimating theodolite" not in rows
+        own, zero = rows[READING_INPUT], rows[REFERENCE_READING_INPUT]
+        expected = max(s, stated)
+        assert own["u"] == pytest.approx(expected) and zero["u"] == pytest.approx(expected)
+        assert (own["evaluation"], own["dof"]) == (("B", math.inf) if governs == "standard"
+                                                    else ("A", dof))
+        assert f"the {governs} governs" in own["note"]
+        comps = {c.name: c for c in budget.components}
+        assert not comps[READING_INPUT].common and comps[REFERENCE_READING_INPUT].common
+        # √2·u_read at a point (with the model's share), 0 at θ₀
+        i = (ZERO + 3) % THETA.size
+        model = result.model_uncertainty_arcsec
+        model_i = float(np.broadcast_to(model, THETA.shape)[i])
+        assert budget.combined[i] == pytest.approx(math.sqrt(2.0 * expected**2 + model_i**2))
+        assert budget.combined[ZERO] == pytest.approx(float(np.broadcast_to(model, THETA.shape)
+                                                            [ZERO]), abs=1e-12)
