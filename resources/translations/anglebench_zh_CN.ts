@@ -4952,12 +4952,16 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>简单接受的二元声明，w = 0（ILAC-G8:09/2019，4.2.1）：结果在 T 以内为合格，否则为不合格；在限值处误判接受的风险可达 50 %</translation>
     </message>
     <message>
+        <source>half the peak-to-peak error after the best zero: the measured half range less the median excess of a measured range over the true one, with a coverage interval from that excess, the noise simulated from the budget (JCGM 101): the lower end on the least favourable curve the data allow (Romano, Shaikh &amp; Wolf 2014), the median and the upper end on the measured curve (parametric bootstrap, Efron &amp; Tibshirani 1993)</source>
+        <translation>最佳零位下误差峰峰值的一半：实测半峰峰值减去实测极差超出真实极差之量的中位数，其包含区间由该超出量给出，噪声按不确定度预算仿真（JCGM 101）：下端取数据所允许的最不利曲线（Romano、Shaikh 与 Wolf 2014），中位数与上端取实测曲线（参数自助法，Efron 与 Tibshirani 1993）</translation>
+    </message>
+    <message>
         <source>every point&apos;s error against ±T with that point&apos;s own U (ISO 14253-1)</source>
         <translation>各点误差以该点自身的 U 与 ±T 比较（ISO 14253-1）</translation>
     </message>
     <message>
         <source>reference point, by definition</source>
-        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape, pooled over the shape&apos;s 12 cells (noise 0.1, 0.5, 1 and 2 times the true half range, 12, 36 and 72 points, 100 runs a cell: models.validation.half_range.coverage_study, seed 20261202, 2000 trials), and every cell within the binomial scatter of the probability stated (no cell&apos;s hits so few that a true coverage of 95.45 % would give as few in under 1 % of studies; the lowest cells: smooth 98 %, rough 96 %, spike 97 %, the samples&apos; real curves 94 of 100). The certificate prints these beside the probability stated, never a lowest cell that reads as a coverage below it. tests/benchmarks/test_half_range_coverage.py reruns the study and checks both; `anglebench validate` with fewer runs; tests/models/uncertainty/test_half_range_coverage.py a smoke version. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
+        <extracomment>A longer curve is judged on every k-th point (its range over 16 384 points of a long, repetitive record — a fringe revolution — is all but the same), and says so. The coverage the half-range interval achieved in its validation, by curve shape, pooled over the shape&apos;s 12 cells (noise 0.1, 0.5, 1 and 2 times the true half range, 12, 36 and 72 points, 100 runs a cell: models.validation.half_range.coverage_study, seed 20261202, 2000 trials), and every cell within the binomial scatter of the probability stated (no cell&apos;s hits so few that a true coverage of 95.45 % would give as few in under 1 % of studies; the lowest cells: smooth 98 %, rough 96 %, spike 96 %, the samples&apos; real curves 94 of 100). The certificate prints these beside the probability stated, never a lowest cell that reads as a coverage below it. tests/benchmarks/test_half_range_coverage.py reruns the study and checks both; `anglebench validate` with fewer runs; tests/models/uncertainty/test_half_range_coverage.py a smoke version. what a U of zero at a reference point is printed as (never &quot;0.00&quot;)</extracomment>
         <translation>参考点，按定义为零</translation>
     </message>
     <message>
@@ -5006,6 +5010,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>本判定的误不合格概率：{p} %（特定风险，JCGM 106）。</translation>
     </message>
     <message>
+        <source>Half the peak-to-peak {what}: {value}, the measured {measured} less the median widening the noise gives a measured range; coverage interval {low} … {high} (U = {u}, coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}，即实测值 {measured} 减去噪声使实测极差增大之量的中位数；包含区间 {low} … {high}（U = {u}，包含概率 {p} %）。{sentence}</translation>
+    </message>
+    <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
         <translation>该区间在验证中达到的包含概率（噪声为半峰峰值的 0.1 至 2 倍，12 至 72 点，每种形状 12 个单元、每单元 100 次，合并计）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际曲线 {sample} %；没有任何单元低于所述的 {p} % 超出其次数的二项分布离散</translation>
     </message>
@@ -5028,10 +5036,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>No statement of conformity: no specification (tolerance) was given.</source>
         <translation>不作符合性声明：未给出技术要求（允差）。</translation>
-    </message>
-    <message>
-        <source>half the peak-to-peak error after the best zero, as measured, with a coverage interval from the simulated excess of a measured range over the true one, the noise simulated from the budget (JCGM 101): the lower end on the least favourable curve the data allow (Romano, Shaikh &amp; Wolf 2014), the upper end on the measured curve (parametric bootstrap, Efron &amp; Tibshirani 1993)</source>
-        <translation>最佳零位下误差峰峰值的一半（实测值），其包含区间由实测极差超出真实极差之量的仿真分布给出，噪声按不确定度预算仿真（JCGM 101）：下端取数据所允许的最不利曲线（Romano、Shaikh 与 Wolf 2014），上端取实测曲线（参数自助法，Efron 与 Tibshirani 1993）</translation>
     </message>
     <message>
         <source>U = {u} is not smaller than T = {t}</source>
