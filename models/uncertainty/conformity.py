@@ -654,7 +654,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{max(0.0, x - lower):.{d}f}{q}",
                    high=f"{x + upper:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
-    if measured == x:  # an estimate stated as measured (positioning's E/2)
+    if f"{measured:.{d}f}" == f"{x:.{d}f}":  # as measured (positioning's E/2), or the
+        # noise's median excess below the digits shown
         text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                   "interval {low} … {high} (U = {u}, coverage probability {p} %; "
                                   "noise can only widen a measured range, so the interval "
@@ -671,11 +672,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
                                         "{stride}-th of the {points} points"),
                              quantity=message(DECISION_QUANTITIES["half_range"]),
-                             trials=trials, seed=seed, stride=stride, points=e.size)
+                             trials=trials, seed=str(seed), stride=stride, points=e.size)
                      if stride > 1 else
                      message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}"),
                              quantity=message(DECISION_QUANTITIES["half_range"]),
-                             trials=trials, seed=seed))
+                             trials=trials, seed=str(seed)))
     achieved = HALF_RANGE_COVERAGE
     method = getattr(mc, "method", "")
     quantity_text = method or joined([quantity_text, "; ", message(QT_TR_NOOP(
