@@ -85,9 +85,10 @@ ACCEPTANCE = (
                "to 2 times the half range at 12 to 72 points, and through the theodolite, "
                "polygon and positioning workbenches. Its width against what a correct interval "
                "needs (the oracle: the 2.275 %–97.725 % spread of value − truth over runs at "
-               "the truth) is reported beside it; the aim, 1.6 times at the most, is not "
-               "reached where the noise hides the curve's shape, and the figure says by how "
-               "much."),
+               "the truth) is reported beside it, and against the same spread of the measured "
+               "half range, the least scattered estimate (the value, the measured half range "
+               "less the noise's median excess, scatters more but runs less high); the aim is "
+               "1.6 times at the most."),
     QT_TR_NOOP("Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, "
                "B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes "
                "(models/validation/axis_figures_rig.py) with a known systematic deviation curve "

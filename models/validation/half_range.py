@@ -138,6 +138,8 @@ def summary(cells: list[Cell]) -> dict[str, dict[str, float]]:
                       "runs": sum(c.runs for c in mine),
                       "width": max(c.width_ratio for c in mine),
                       "width_median": float(np.median([c.width_ratio for c in mine])),
+                      "width_median_measured": float(np.median([c.width_ratio_measured
+                                                                for c in mine])),
                       "accepted": all(c.accepted for c in mine)}
     return out
 
@@ -302,9 +304,11 @@ def half_range_cases(trials: int = 200) -> list:
             message(QT_TR_NOOP("coverage ≥ {p} % (≥ {floor} of {runs} hits)"),
                     p=f"{100 * p:.2f}", floor=floor, runs=int(s["runs"])),
             message(QT_TR_NOOP("{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width "
-                               "{width} × needed (median of the cells)"),
+                               "{width} × the value's spread, {measured} × the measured half "
+                               "range's (medians of the cells)"),
                     pooled=f"{100 * s['pooled']:.1f}", hits=hits, runs=int(s["runs"]),
-                    lowest=f"{100 * s['lowest']:.0f}", width=f"{s['width_median']:.2f}"),
+                    lowest=f"{100 * s['lowest']:.0f}", width=f"{s['width_median']:.2f}",
+                    measured=f"{s['width_median_measured']:.2f}"),
             hits >= floor))
     cases += width_cases(trials)
     for study in (theodolite_coverage, polygon_coverage, fringe_coverage):
@@ -497,9 +501,11 @@ def width_cases(trials: int = 200) -> list:
                                "spread of value − truth)"),
                     p=f"{100 * p:.2f}", floor=floor, runs=total, limit=f"{WIDTH_LIMIT:g}"),
             message(QT_TR_NOOP("{coverage} % ({hits} of {runs}); width {median} × the oracle's "
-                               "(median of the cells; largest {largest} ×)"),
+                               "(median of the cells; largest {largest} ×), {measured} × the "
+                               "measured half range's spread"),
                     coverage=f"{100 * hits / total:.1f}", hits=hits, runs=total,
-                    median=f"{float(np.median(ratios)):.2f}", largest=f"{max(ratios):.2f}"),
+                    median=f"{float(np.median(ratios)):.2f}", largest=f"{max(ratios):.2f}",
+                    measured=f"{float(np.median([c.width_ratio_measured for c in mine])):.2f}"),
             hits >= floor))
     return cases
 

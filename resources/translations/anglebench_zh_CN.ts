@@ -5635,6 +5635,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>平台</translation>
     </message>
     <message>
+        <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points, and through the theodolite, polygon and positioning workbenches. Its width against what a correct interval needs (the oracle: the 2.275 %–97.725 % spread of value − truth over runs at the truth) is reported beside it, and against the same spread of the measured half range, the least scattered estimate (the value, the measured half range less the noise&apos;s median excess, scatters more but runs less high); the aim is 1.6 times at the most.</source>
+        <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，并经经纬仪、多面棱体和定位三个工作台。其宽度与正确区间所需宽度（理想区间：在真值处重复仿真所得“值 − 真值”的 2.275 %–97.725 % 分位数间距）之比列于旁边，并与实测峰峰值一半的同一间距（离散最小的估计）相比（判定值为实测值减去噪声超出量的中位数，离散较大但偏高较少）；目标为不超过 1.6 倍。</translation>
+    </message>
+    <message>
         <source>Coverage study of the positioning figures (ISO 230-2 / GB/T 17421.2 A, E, M, R, B, B̄ and their one-direction forms; VDI/DGQ 3441 P, Ps, Pa, U): simulated axes (models/validation/axis_figures_rig.py) with a known systematic deviation curve (smooth pitch error, every harmonic the targets resolve, one spike, the bundled sample&apos;s curve), a known reversal and a known repeatability (constant, or ±50 % along the axis; the backward 10 % larger) of 0.1, 0.5 and 2 × the signal, 12 and 72 targets, 5 runs each way by the standard test cycle, each test through the whole analysis. A figure&apos;s truth is the figure of the true distribution as the standard defines it. It passes when no more tests missed than a correct interval at the probability printed beside the figure would miss in 99 studies of 100 (binomial test); the probability printed is the one the full study reached where that is below the one asked for. Its mean width is stated as a multiple of the width a correct interval needs (2z × the spread of measured − truth over the same tests); 1.6 × is the aim.</source>
         <translation>定位指标的包含研究（ISO 230-2 / GB/T 17421.2 的 A、E、M、R、B、B̄ 及其单向形式；VDI/DGQ 3441 的 P、Ps、Pa、U）：仿真轴（models/validation/axis_figures_rig.py）具有已知的系统偏差曲线（平滑的螺距误差、目标位置可分辨的全部谐波、一个尖峰、随附样例的曲线）、已知的反向差值和已知的重复性（恒定，或沿轴变化 ±50 %；反向大 10 %），为信号的 0.1、0.5 和 2 倍，12 和 72 个目标位置，按标准检验循环每个方向 5 次，每次检验都经完整分析。指标的真值是按标准定义、由真实分布计算的指标。当未包含真值的检验次数不多于按指标旁所印概率的正确区间在 100 次研究中 99 次不会超过的次数（二项检验）时判为通过；当研究达到的概率低于要求的概率时，所印的是全面研究达到的概率。其平均宽度以正确区间所需宽度的倍数给出（同一批检验中 测得值 − 真值 分散性的 2z 倍）；目标为 1.6 倍。</translation>
     </message>
@@ -6757,10 +6761,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Budget against Monte Carlo: the spread of N simulated runs estimates a standard uncertainty to about 1/√(2N) (relative); the budget&apos;s u must agree within three times that, at least 10 %, over all points, and within four times that, at least 25 %, at the worst point of a curve (with N = 200: 15 % and 25 %; a worst point of 24 % passes by that margin, not by chance: over some 40 points the largest of their sampling errors reaches about 3 × 5 %, and a budget off by a quarter at one point would still be caught).</source>
         <translation>不确定度评定对蒙特卡洛：N 次仿真的分散性估计标准不确定度的相对误差约为 1/√(2N)；评定的 u 在全部点上须一致到其三倍以内（至少 10 %），在曲线最差点上须一致到其四倍以内（至少 25 %）（N = 200 时为 15 % 和 25 %；最差点 24 % 是按此余量通过，而非偶然：约 40 个点中抽样误差的最大值可达约 3 × 5 %，而某一点偏差四分之一的评定仍会被发现）。</translation>
-    </message>
-    <message>
-        <source>Coverage by simulation (the decided quantity&apos;s interval, half the peak-to-peak): the interval must cover the true value at least as often as the probability printed beside it, since a customer&apos;s risk rests on that figure; N runs of a true coverage p give fewer hits than the least number stated in under 1 % of studies (binomial), so fewer fail. The shapes are those that occur (smooth, rough, a single spike, the samples&apos; real curves) with noise 0.1 to 2 times the half range at 12 to 72 points, and through the theodolite, polygon and positioning workbenches. Its width against what a correct interval needs (the oracle: the 2.275 %–97.725 % spread of value − truth over runs at the truth) is reported beside it; the aim, 1.6 times at the most, is not reached where the noise hides the curve&apos;s shape, and the figure says by how much.</source>
-        <translation>按仿真检验包含概率（判定的量的区间，峰峰值的一半）：该区间包含真值的频率不得低于其旁所印的概率，因为客户的风险取决于这一数字；真实包含概率为 p 时，N 次仿真得到少于所述最少包含次数的情况不到 1 %（二项分布），故少于此数即为不合格。曲线形状取实际出现的形状（平滑、粗糙、单个尖峰、示例的真实曲线），噪声为峰峰值一半的 0.1 至 2 倍，12 至 72 个点，并经经纬仪、多面棱体和定位三个工作台。其宽度与正确区间所需宽度（理想区间：在真值处重复仿真所得“值 − 真值”的 2.275 %–97.725 % 分位数间距）之比列于旁边；目标为不超过 1.6 倍，噪声掩盖曲线形状时达不到，所列数字说明差多少。</translation>
     </message>
     <message>
         <source>Software cases: exact (every name and figure found in the PDF&apos;s text; the register finds what it issued and reports what was changed; a file reads to the same numbers as numpy.loadtxt).</source>
@@ -8805,8 +8805,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）</translation>
     </message>
     <message>
-        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × needed (median of the cells)</source>
-        <translation>{pooled} %（{runs} 次中 {hits} 次；最低一格 {lowest} %），宽度为所需的 {width} 倍（各格中位数）</translation>
+        <source>{pooled} % ({hits} of {runs}; lowest cell {lowest} %), width {width} × the value&apos;s spread, {measured} × the measured half range&apos;s (medians of the cells)</source>
+        <translation>{pooled} %（{runs} 次中 {hits} 次；最低一格 {lowest} %），宽度为判定值离散的 {width} 倍、实测峰峰值一半离散的 {measured} 倍（各格中位数）</translation>
+    </message>
+    <message>
+        <source>{coverage} % ({hits} of {runs}); width {median} × the oracle&apos;s (median of the cells; largest {largest} ×), {measured} × the measured half range&apos;s spread</source>
+        <translation>{coverage} %（{runs} 次中 {hits} 次）；宽度为理想区间的 {median} 倍（各格中位数；最大 {largest} 倍），为实测峰峰值一半离散的 {measured} 倍</translation>
     </message>
     <message>
         <source>through the workbench&apos;s analysis and budget, {workbench}: {what}</source>
@@ -8823,10 +8827,6 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>coverage ≥ {p} % (≥ {floor} of {runs} hits); width reported against the aim of {limit} × the oracle&apos;s (the 2.275 %–97.725 % spread of value − truth)</source>
         <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）；宽度对照目标（不超过理想区间的 {limit} 倍；理想区间为“值 − 真值”的 2.275 %–97.725 % 分位数间距）报告</translation>
-    </message>
-    <message>
-        <source>{coverage} % ({hits} of {runs}); width {median} × the oracle&apos;s (median of the cells; largest {largest} ×)</source>
-        <translation>{coverage} %（{runs} 次中 {hits} 次）；宽度为理想区间的 {median} 倍（各格中位数；最大 {largest} 倍）</translation>
     </message>
     <message>
         <source>reading of row {row} edited after capture: {captured} → {now}</source>
