@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, joined, message
 from models.plots import PlotFigure, PlotSeries
 from models.quantity import Quantity
 from models.sign_convention import SIGN_CONVENTION_TEXT
@@ -242,9 +242,20 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             d = significant_decimals(max(lower, conformity.expanded)) or digits
             value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
                      f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
+            low, high = conformity.interval_low, conformity.interval_high
+            measured = float(getattr(conformity.monte_carlo, "measured", conformity.value))
+            # what the value was made from and the interval's ends, first in the note (the
+            # figure's cell stays figures, which the results workbook reads as numbers)
+            note = joined([message(QT_TR_NOOP("interval {low} … {high}"),
+                                   low=f"{low:.{d}f}{unit}", high=f"{high:.{d}f}{unit}"),
+                           *((("; ", message(QT_TR_NOOP("measured {measured}"),
+                                             measured=f"{measured:.{d}f}{unit}")))
+                             if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else ()),
+                           ". ", conformity.quantity])
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
-        rows.append((QT_TR_NOOP("Decided quantity"), value, conformity.quantity))
+            note = conformity.quantity
+        rows.append((QT_TR_NOOP("Decided quantity"), value, note))
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
                  f"{big_u:.{digits}f}{unit}",

@@ -394,6 +394,12 @@ RISK_METHOD = QT_TR_NOOP(
     "standard deviation that half-width divided by the normal factor of the stated coverage "
     "probability, so that the interval holds it; with every point deciding, at most the sum "
     "over the points of each one's probability of lying outside ±T (Boole's inequality)")
+#: the same for a decision on one figure (the half range): no sum over points
+RISK_METHOD_FIGURE = QT_TR_NOOP(
+    "probability of conformity from the decided value's own interval (JCGM 106:2012, 9.5: "
+    "specific risk): the value's distribution taken as normal on each side of it, each side's "
+    "standard deviation that half-width divided by the normal factor of the stated coverage "
+    "probability, so that the interval holds it")
 
 
 def _z(probability: float) -> float:
@@ -425,9 +431,20 @@ def probability_conforming(value: float, lower: float, upper: float, tolerance: 
 
 
 def _zones(t: float, w_accept: float, w_reject: float, rule: str, d: int,
-           q: str = "\"") -> str:
+           q: str = "\"", asymmetric: bool = False) -> str:
+    """The decision's zones; ``asymmetric``: the guard bands are the interval's two
+    half-widths, named so (U₊ on acceptance, U₋ on rejection), not one w."""
     if rule == "simple":
         return message(QT_TR_NOOP("pass ≤ {t} < fail"), t=f"{t:g}{q}")
+    if asymmetric and rule == "guarded_binary":
+        return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < fail"),
+                       low=f"{t - w_accept:.{d}f}{q}", up=f"{w_accept:.{d}f}{q}")
+    if asymmetric:
+        return message(QT_TR_NOOP("pass ≤ {low} (T − U₊, U₊ = {up}) < conditional pass ≤ {t} (T) "
+                                  "< conditional fail ≤ {high} (T + U₋, U₋ = {down}) < fail"),
+                       low=f"{t - w_accept:.{d}f}{q}", t=f"{t:g}{q}",
+                       high=f"{t + w_reject:.{d}f}{q}", up=f"{w_accept:.{d}f}{q}",
+                       down=f"{w_reject:.{d}f}{q}")
     if rule == "guarded_binary":
         return message(QT_TR_NOOP("pass ≤ {low} (T − w) < fail"), low=f"{t - w_accept:.{d}f}{q}")
     return message(QT_TR_NOOP("pass ≤ {low} (T − w) < conditional pass ≤ {t} (T) < conditional "
@@ -501,7 +518,8 @@ def _with_risk(conformity: Conformity) -> Conformity:
     return dataclasses.replace(conformity, statement=joined(
         [conformity.statement, " ", _risk_sentence(conformity.verdict,
                                                    conformity.decision_risk)]),
-        quantity=joined([conformity.quantity, "; ", message(RISK_METHOD)]))
+        quantity=joined([conformity.quantity, "; ", message(
+            RISK_METHOD_FIGURE if conformity.monte_carlo is not None else RISK_METHOD)]))
 
 
 def _risk(verdict: str, conforming: float) -> float:
@@ -656,17 +674,30 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
     if f"{measured:.{d}f}" == f"{x:.{d}f}":  # as measured (positioning's E/2), or the
         # noise's median excess below the digits shown
-        text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
-                                  "interval {low} … {high} (U = {u}, coverage probability {p} %; "
-                                  "noise can only widen a measured range, so the interval "
-                                  "reaches further below the value than above it). {sentence}"),
-                       **figures)
+        text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
+                                   "interval {low} … {high} (U = {u}, coverage probability {p} "
+                                   "%; noise can only widen a measured range, so the interval "
+                                   "reaches further below the value than above it). {sentence}"),
+                        **figures) if lower >= upper else
+                message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
+                                   "interval {low} … {high} (U = {u}, coverage probability {p} "
+                                   "%). {sentence}"), **figures))
     else:
-        text = message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
-                                  "less the median widening the noise gives a measured range; "
-                                  "coverage interval {low} … {high} (U = {u}, coverage "
-                                  "probability {p} %). {sentence}"),
-                       measured=f"{measured:.{d}f}{q}", **figures)
+        said = dict(measured=f"{measured:.{d}f}{q}", excess=f"{measured - x:.{d}f}{q}",
+                    **figures)
+        # the interval is the true half range's: a measured one above it is what noise does
+        text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
+                                   "less {excess}, the median amount by which noise widens a "
+                                   "measured range. Coverage interval of the true half range "
+                                   "{low} … {high} (U = {u}, coverage probability {p} %); the "
+                                   "measured value lies above it, as noise only widens a "
+                                   "measured range. {sentence}"), **said)
+                if measured > x + upper else
+                message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
+                                   "less {excess}, the median amount by which noise widens a "
+                                   "measured range. Coverage interval of the true half range "
+                                   "{low} … {high} (U = {u}, coverage probability {p} %). "
+                                   "{sentence}"), **said))
     trials, seed = getattr(mc, "trials", 0), getattr(mc, "seed", MONTE_CARLO_SEED)
     stride = getattr(mc, "stride", 1)
     quantity_text = (message(QT_TR_NOOP("{quantity}: {trials} trials, seed {seed}, on every "
@@ -691,7 +722,8 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
                       _zones(t, 0.0 if rule == "simple" else upper,
-                             0.0 if rule == "simple" else lower, rule, d, q), mc, lower,
+                             0.0 if rule == "simple" else lower, rule, d, q,
+                             asymmetric=f"{lower:.{d}f}" != f"{upper:.{d}f}"), mc, lower,
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)

@@ -2747,6 +2747,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>被校对象示值的分辨力 {r}</translation>
     </message>
     <message>
+        <source>interval {low} … {high}</source>
+        <translation>包含区间 {low} … {high}</translation>
+    </message>
+    <message>
+        <source>measured {measured}</source>
+        <translation>实测 {measured}</translation>
+    </message>
+    <message>
         <source>Decided quantity</source>
         <translation>判定的量</translation>
     </message>
@@ -2893,7 +2901,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Zones: {zones}.</source>
-        <translation>区间：{zones}。</translation>
+        <translation>判定区域：{zones}。</translation>
     </message>
     <message>
         <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
@@ -4970,8 +4978,21 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
+        <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it</source>
+        <extracomment>the same for a decision on one figure (the half range): no sum over points</extracomment>
+        <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率</translation>
+    </message>
+    <message>
         <source>pass ≤ {t} &lt; fail</source>
         <translation>合格 ≤ {t} &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − U₊, U₊ = {up}) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − U₊，U₊ = {up}) &lt; 不合格</translation>
+    </message>
+    <message>
+        <source>pass ≤ {low} (T − U₊, U₊ = {up}) &lt; conditional pass ≤ {t} (T) &lt; conditional fail ≤ {high} (T + U₋, U₋ = {down}) &lt; fail</source>
+        <translation>合格 ≤ {low} (T − U₊，U₊ = {up}) &lt; 有条件合格 ≤ {t} (T) &lt; 有条件不合格 ≤ {high} (T + U₋，U₋ = {down}) &lt; 不合格</translation>
     </message>
     <message>
         <source>pass ≤ {low} (T − w) &lt; fail</source>
@@ -5008,10 +5029,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Probability of a false rejection at this decision: {p} % (specific risk, JCGM 106).</source>
         <translation>本判定的误不合格概率：{p} %（特定风险，JCGM 106）。</translation>
-    </message>
-    <message>
-        <source>Half the peak-to-peak {what}: {value}, the measured {measured} less the median widening the noise gives a measured range; coverage interval {low} … {high} (U = {u}, coverage probability {p} %). {sentence}</source>
-        <translation>{what}峰峰值的一半：{value}，即实测值 {measured} 减去噪声使实测极差增大之量的中位数；包含区间 {low} … {high}（U = {u}，包含概率 {p} %）。{sentence}</translation>
     </message>
     <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
@@ -5052,6 +5069,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %; noise can only widen a measured range, so the interval reaches further below the value than above it). {sentence}</source>
         <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %；噪声只会使实测极差增大，故区间向下比向上伸得更远）。{sentence}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value} as measured, coverage interval {low} … {high} (U = {u}, coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：实测 {value}，包含区间 {low} … {high}（U = {u}，包含概率 {p} %）。{sentence}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value}, the measured {measured} less {excess}, the median amount by which noise widens a measured range. Coverage interval of the true half range {low} … {high} (U = {u}, coverage probability {p} %); the measured value lies above it, as noise only widens a measured range. {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}，即实测值 {measured} 减去 {excess}（噪声使实测极差增大之量的中位数）。真实峰峰值一半的包含区间 {low} … {high}（U = {u}，包含概率 {p} %）；实测值位于区间之上，因为噪声只会使实测极差增大。{sentence}</translation>
+    </message>
+    <message>
+        <source>Half the peak-to-peak {what}: {value}, the measured {measured} less {excess}, the median amount by which noise widens a measured range. Coverage interval of the true half range {low} … {high} (U = {u}, coverage probability {p} %). {sentence}</source>
+        <translation>{what}峰峰值的一半：{value}，即实测值 {measured} 减去 {excess}（噪声使实测极差增大之量的中位数）。真实峰峰值一半的包含区间 {low} … {high}（U = {u}，包含概率 {p} %）。{sentence}</translation>
     </message>
     <message>
         <source>{quantity}: {trials} trials, seed {seed}, on every {stride}-th of the {points} points</source>
