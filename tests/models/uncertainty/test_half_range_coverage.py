@@ -192,7 +192,8 @@ def test_round_trip_coverage_on_first_principles_curves():
 
 def test_the_interval_moves_with_the_curve_as_physics_says():
     """Properties that hold for any curve: the value is the measured half range less the
-    noise's median excess (so not above it, with noise alone), inside its interval; a constant added to every point changes nothing; scaling the curve and its
+    noise's median excess (so not above it, with noise alone), inside its interval; a
+    constant added to every point changes nothing; scaling the curve and its
     noise by k scales the interval by k (same draws); more noise, a wider interval; a
     clearly resolved curve's interval lies near its range, noise hiding it reaches 0."""
     from tests.half_range_simulator import measured
