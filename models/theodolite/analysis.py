@@ -84,11 +84,11 @@ PARAMETERS = (
     dataclasses.replace(
         REPEATS_PARAMETER,
         help="n readings taken one after another at each θ point: every n rows are one point, "
-             "averaged. The budget's reading error of a point's mean is one input, the largest "
-             "of the fit's scatter of the means, the stated standards' u per reading (not "
-             "divided by √n: the instrument's error at that circle position is the same in "
-             "every repeat) and the repeats' pooled s/√n (ν = points · (n − 1)). 1: every row "
-             "is a point"),
+             "averaged. The budget's reading error of a point's mean is one input, the larger "
+             "of the fit's scatter of the means and √(u² + (s/√n)²): the stated standards' u "
+             "per reading (not divided by √n: the instrument's error at that circle position "
+             "is the same in every repeat) with the repeats' pooled s/√n (ν = points · "
+             "(n − 1)). 1: every row is a point"),
     Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
               zero="no plan", cli=False,
               help="Passes of the entry plan over the θ steps below: entry fills θ (and run "

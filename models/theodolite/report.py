@@ -28,20 +28,28 @@ at the reference point), minus the set-up model ζ(θ):
   reference angle later in the run is a reading like any other.
   With n readings a point (setting *readings per point*, averaged first), a
   point's reading is the mean of n, and its error has two parts: a random one
-  that averages (σ/√n) and the standard's, which a calibration figure of the
-  instrument does not average away (the instrument's error at that circle
-  position, the same in every repeat). So still ONE input, u_read = max(s,
-  u_std, s_repeat/√n): s the scatter of the means about the fit (it already
-  holds the means' noise, and a circle-position error too), u_std per reading
-  NOT divided by √n, and s_repeat/√n the points' s/√n of the azimuth repeats
-  pooled (ν = points · (n − 1)); its ν that of the figure that governs. Not their
-  sum: before (#39), s/√n entered again beside s at each point and at θ₀, the
-  noise of the mean counted twice (U / (2 × actual scatter) 1.53 with 4 readings
-  and no standard). Checked by simulation
-  (tests/models/theodolite/test_theodolite_budget_once.py: a 3-D rig, the
-  standard's error drawn once per circle position and run, noise per reading);
-  U / (2 × actual scatter) 1.03–1.11 for n = 1 and 4 and the standard at 0,
-  0.5σ and σ;
+  that averages (σ/√n, estimated by s_repeat/√n, the points' s/√n of the azimuth
+  repeats pooled, ν = points · (n − 1)) and the standard's, which a calibration
+  figure of the instrument does not average away (the instrument's error at
+  that circle position, the same in every repeat: u_std NOT divided by √n). The
+  mean's error is their root sum of squares, √(u_std² + (s_repeat/√n)²); the
+  scatter s of the means about the fit estimates the same error where the fit
+  sees it (it holds the means' noise). So still ONE input, u_read = max(s,
+  √(u_std² + (s_repeat/√n)²)), with the ν of the figure that governs (for the
+  root sum of squares, Welch–Satterthwaite of its two parts). Not s with s/√n
+  on top: before (#39) s/√n entered again beside s at each point and at θ₀, the
+  noise of the mean counted twice (U / (2 × actual scatter) 1.53 with 4
+  readings and no standard). Nor max(s, u_std, s_repeat/√n), the rule first
+  proposed: where the standard's error is the horizontal circle's alone (the
+  elevations barely move over a run, so the vertical circle's error is one
+  offset the fit takes up), s does not see it and the larger of the parts
+  misses the other: U / (2 × actual scatter) 0.81 (standard at 0.5σ) and 0.90
+  (at σ) with 4 readings, against 1.04 and 1.02 for the root sum of squares;
+  where both circles carry it, 1.03–1.07 against 1.09–1.11. Checked by
+  simulation in tests/models/theodolite/test_theodolite_budget_once.py (a 3-D
+  rig, the standard's error drawn once per circle position and run, pointing
+  noise per reading). With one reading a point the rule is max(s, u_std) as
+  before (there is no s_repeat);
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
 """
@@ -157,9 +165,10 @@ def _pooled_repeats(result: TheodoliteResult) -> tuple[float, int, int] | None:
 
 
 def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: float,
-                         stated: bool, governs: str) -> str:
+                         stated: bool, governs: str, nu: float) -> str:
     """What the reading error's note says: its candidate figures and which governs
-    (``governs``: standard, scatter or repeats)."""
+    (``governs``: standard, scatter, repeats or both, the standard with the repeats; ``nu``
+    the input's ν)."""
     n = result.theta_deg.size
     pooled = _pooled_repeats(result)
     if pooled is None:  # one reading a point: the texts as they were before repeats counted once
@@ -190,15 +199,17 @@ def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: fl
                "scatter": message(QT_TR_NOOP("the scatter governs (Type A, ν = {dof})"),
                                   dof=dof),
                "repeats": message(QT_TR_NOOP("the repeated readings govern (Type A, "
-                                             "ν = {dof})"), dof=dof_rep)}[governs]
+                                             "ν = {dof})"), dof=dof_rep),
+               "both": message(QT_TR_NOOP("the standard with the repeated readings governs "
+                                          "(ν_eff = {dof})"), dof=f"{nu:.0f}")}[governs]
     if stated:
         return message(QT_TR_NOOP(
-            "one error per point's mean of {readings} readings, counted once: the largest of "
-            "the stated standards' u = {u} per reading (not divided by √{readings}: it is the "
-            "instrument's error at that circle position, the same in every repeat), the "
-            "scatter {scatter} and {repeats}; {verdict}"),
+            "one error per point's mean of {readings} readings, counted once: the larger of "
+            "the scatter {scatter} and the stated standards' u = {u} per reading (not divided "
+            "by √{readings}: it is the instrument's error at that circle position, the same in "
+            "every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}"),
             readings=readings, u=f"{u_std:.3f}\"", scatter=scatter, repeats=repeats,
-            verdict=verdict)
+            both=f"{math.hypot(u_std, s_rep):.3f}\"", verdict=verdict)
     return message(QT_TR_NOOP(
         "one error per point's mean of {readings} readings, counted once: no standard states "
         "a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}"),
@@ -208,8 +219,8 @@ def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: fl
 def reading_error_components(result: TheodoliteResult,
                              metadata: CertificateMetadata) -> list[BudgetComponent]:
     """The theodolite's reading error, one input (see the module's note): u_read = max(s,
-    u_std), with n readings a point max(s, u_std, s_repeat/√n), at the point's own reading
-    (independent per point) and at the reference reading θ₀ (one value for the run),
+    u_std); with n readings a point max(s, √(u_std² + (s_repeat/√n)²)). At the point's own
+    reading (independent per point) and at the reference reading θ₀ (one value for the run),
     sensitivity 1 at every point but θ₀; its ν that of the figure that governs."""
     n = result.theta_deg.size
     single = _not_reference(result)
@@ -219,20 +230,26 @@ def reading_error_components(result: TheodoliteResult,
     u_std, stated = _stated_reading_uncertainty(metadata)
     pooled = _pooled_repeats(result)
     s_rep, dof_rep, _ = pooled if pooled is not None else (0.0, 0, 1)
-    if u_std > s and u_std >= s_rep:
+    # a mean's error: the standard's part (the same in every repeat) and the part that averages
+    u_mean = math.hypot(u_std, s_rep)
+    if u_mean > s and s_rep == 0.0:  # one reading a point (or n equal ones): the standard
         governs, evaluation, nu = "standard", "B", math.inf
         if len(stated) == 1:  # its own figure and distribution
             value = stated[0].uncertainty_in("arcsec")
             divisor, distribution = divisor_for_basis(stated[0].basis)
         else:
             value, divisor, distribution = u_std, 1.0, "normal"
-    elif s_rep > s:
+    elif u_mean > s and u_std == 0.0:
         governs, evaluation, nu, value, divisor, distribution = (
             "repeats", "A", float(dof_rep), s_rep, 1.0, "normal")
+    elif u_mean > s:  # Welch–Satterthwaite of the two parts (the standard's ν = ∞)
+        governs, value, divisor, distribution = "both", u_mean, 1.0, "normal"
+        evaluation = "B" if u_std >= s_rep else "A"
+        nu = float(math.floor(u_mean**4 / (s_rep**4 / dof_rep) + 1e-9))
     else:
         governs, evaluation, nu, value, divisor, distribution = (
             "scatter", "A", float(dof), s, 1.0, "normal")
-    note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs)
+    note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu)
     own = (QT_TR_NOOP("{governs}; the point's own reading, one value per point")
            if pooled is None else
            QT_TR_NOOP("{governs}; the point's own mean, one value per point"))

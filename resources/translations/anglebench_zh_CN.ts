@@ -778,6 +778,14 @@
         <translation>水平读数</translation>
     </message>
     <message>
+        <source>the standard with the repeated readings governs (ν_eff = {dof})</source>
+        <translation>由标准器与重复读数的合成决定（ν_eff = {dof}）</translation>
+    </message>
+    <message>
+        <source>one error per point&apos;s mean of {readings} readings, counted once: the larger of the scatter {scatter} and the stated standards&apos; u = {u} per reading (not divided by √{readings}: it is the instrument&apos;s error at that circle position, the same in every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}</source>
+        <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：取离散度 {scatter} 与所列标准器每个读数的 u = {u}（不除以 √{readings}：它是仪器在该度盘位置的误差，每次重复都相同）和{repeats}的合成 √(u² + (s/√n)²) = {both} 中的较大者；{verdict}</translation>
+    </message>
+    <message>
         <source>Reference reading (θ₀)</source>
         <translation>参考读数（θ₀）</translation>
     </message>
@@ -824,10 +832,6 @@
     <message>
         <source>the repeated readings govern (Type A, ν = {dof})</source>
         <translation>由重复读数决定（A 类，ν = {dof}）</translation>
-    </message>
-    <message>
-        <source>one error per point&apos;s mean of {readings} readings, counted once: the largest of the stated standards&apos; u = {u} per reading (not divided by √{readings}: it is the instrument&apos;s error at that circle position, the same in every repeat), the scatter {scatter} and {repeats}; {verdict}</source>
-        <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：取所列标准器每个读数的 u = {u}（不除以 √{readings}：它是仪器在该度盘位置的误差，每次重复都相同）、离散度 {scatter} 与{repeats}中的最大者；{verdict}</translation>
     </message>
     <message>
         <source>one error per point&apos;s mean of {readings} readings, counted once: no standard states a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}</source>
@@ -1273,6 +1277,10 @@
     <message>
         <source>millimetres (linear axis)</source>
         <translation>毫米（直线轴）</translation>
+    </message>
+    <message>
+        <source>n readings taken one after another at each θ point: every n rows are one point, averaged. The budget&apos;s reading error of a point&apos;s mean is one input, the larger of the fit&apos;s scatter of the means and √(u² + (s/√n)²): the stated standards&apos; u per reading (not divided by √n: the instrument&apos;s error at that circle position is the same in every repeat) with the repeats&apos; pooled s/√n (ν = points · (n − 1)). 1: every row is a point</source>
+        <translation>在每个 θ 点连续读取 n 次：每 n 行为一个点，取平均。不确定度评定中一个点平均值的读数误差为一个分量，取各点平均值相对于拟合的离散与 √(u² + (s/√n)²) 中的较大者：后者为所列标准器每个读数的 u（不除以 √n：仪器在该度盘位置的误差每次重复都相同）与重复读数的合并 s/√n（ν = 点数 · (n − 1)）的合成。1：每行为一个点</translation>
     </message>
     <message>
         <source>nanometres</source>
@@ -6521,10 +6529,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>linear (ISO 230-2 standard cycle)</source>
         <translation>线性（ISO 230-2 标准循环）</translation>
-    </message>
-    <message>
-        <source>n readings taken one after another at each θ point: every n rows are one point, averaged. The budget&apos;s reading error of a point&apos;s mean is one input, the largest of the fit&apos;s scatter of the means, the stated standards&apos; u per reading (not divided by √n: the instrument&apos;s error at that circle position is the same in every repeat) and the repeats&apos; pooled s/√n (ν = points · (n − 1)). 1: every row is a point</source>
-        <translation>在每个 θ 点连续读取 n 次：每 n 行为一个点，取平均。不确定度评定中一个点平均值的读数误差为一个分量，取各点平均值相对于拟合的离散度、所列标准器每个读数的 u（不除以 √n：仪器在该度盘位置的误差每次重复都相同）与重复读数的合并 s/√n（ν = 点数 · (n − 1)）中的最大者。1：每行为一个点</translation>
     </message>
     <message>
         <source>no plan</source>

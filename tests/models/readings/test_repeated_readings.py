@@ -129,10 +129,11 @@ def test_n_identical_readings_give_the_single_reading_result_exactly(key, sample
         assert np.all(np.asarray(_component(budget, TYPE_A).value) == 0.0)
 
 
-def test_theodolite_noisy_repeats_average_and_their_s_mean_is_one_candidate(samples_dir):
+def test_theodolite_noisy_repeats_average_and_their_s_mean_counts_once(samples_dir):
     """The theodolite's n readings are averaged; their s/√n, pooled over the points
-    (ν = points · (n − 1)), is one candidate of the one reading-error input (#39: the fit's
-    scatter of the means already holds it, so it is not a second input)."""
+    (ν = points · (n − 1)), is part of the one reading-error input, with the standard's u:
+    max(s_fit, √(u_std² + (s/√n)²)) (#39: the fit's scatter of the means already holds the
+    means' noise, so s/√n is not a second input beside it)."""
     kind, rows, truth = _sample("theodolite", samples_dir)
     n, sigma = 4, 0.5  # arcsec
     rng = np.random.default_rng(31)
@@ -160,10 +161,12 @@ def test_theodolite_noisy_repeats_average_and_their_s_mean_is_one_candidate(samp
     reading = _component(budget, "Reading error (pointing)")
     dof_fit = truth.n - 3
     s_fit = math.sqrt(np.sum(result.elevation_residuals_arcsec**2) / dof_fit)
-    stated = 0.4  # META's standard, U95 → u = 0.2″: below both
-    expected = max(s_fit, pooled, stated / 2)
+    u_std = 0.4 / 2  # META's standard, U95 → u = 0.2″, not divided by √n
+    both = math.hypot(u_std, pooled)
+    expected = max(s_fit, both)
     assert reading.value == pytest.approx(expected, abs=2e-5)
-    assert reading.dof == (truth.n * (n - 1) if pooled > s_fit else dof_fit)
+    nu = truth.n * (n - 1)
+    assert reading.dof == (math.floor(both**4 / (pooled**4 / nu)) if both > s_fit else dof_fit)
     # the means' noise once: √2 · u_read at a point with the set-up model's share
     ref = result.reference_index
     k = 5 if ref != 5 else 6
