@@ -44,8 +44,9 @@ at the reference point), minus the set-up model ζ(θ):
   elevations barely move over a run, so the vertical circle's error is one
   offset the fit takes up), s does not see it and the larger of the parts
   misses the other: U / (2 × actual scatter) 0.81 (standard at 0.5σ) and 0.90
-  (at σ) with 4 readings, against 1.04 and 1.02 for the root sum of squares;
-  where both circles carry it, 1.03–1.07 against 1.09–1.11. Checked by
+  (at σ) with 4 readings, against 1.04 and 1.02 for the root sum of squares
+  (300 runs); where both circles carry it, 1.03 and 1.07 against 1.09 and 1.11
+  (400 runs; without a standard the two rules are one, 1.11). Checked by
   simulation in tests/models/theodolite/test_theodolite_budget_once.py (a 3-D
   rig, the standard's error drawn once per circle position and run, pointing
   noise per reading). With one reading a point the rule is max(s, u_std) as
