@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -79,7 +80,15 @@ PARAMETERS = (
                    "beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % "
                    "(R²), the result is refused; 0: no check"),
     cmc_parameter("cmc_arcsec", "laboratory's CMC (smallest U)", "\"", "the axis error"),
-    REPEATS_PARAMETER,
+    # its budget counts the means' noise once (#39), unlike the other workbenches' help says
+    dataclasses.replace(
+        REPEATS_PARAMETER,
+        help="n readings taken one after another at each θ point: every n rows are one point, "
+             "averaged. The budget's reading error of a point's mean is one input, the larger "
+             "of the fit's scatter of the means and √(u² + (s/√n)²): the stated standards' u "
+             "per reading (not divided by √n: the instrument's error at that circle position "
+             "is the same in every repeat) with the repeats' pooled s/√n (ν = points · "
+             "(n − 1)). 1: every row is a point"),
     Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
               zero="no plan", cli=False,
               help="Passes of the entry plan over the θ steps below: entry fills θ (and run "

@@ -25,7 +25,32 @@ at the reference point), minus the set-up model ζ(θ):
   time as one value per trial with sensitivity √2 beside s at the point and at
   θ₀: the noise counted twice, and the standard's share of the wrong nature —
   it only moved the reference point against the others.) A repeat of the
-  reference angle later in the run is a reading like any other;
+  reference angle later in the run is a reading like any other.
+  With n readings a point (setting *readings per point*, averaged first), a
+  point's reading is the mean of n, and its error has two parts: a random one
+  that averages (σ/√n, estimated by s_repeat/√n, the points' s/√n of the azimuth
+  repeats pooled, ν = points · (n − 1)) and the standard's, which a calibration
+  figure of the instrument does not average away (the instrument's error at
+  that circle position, the same in every repeat: u_std NOT divided by √n). The
+  mean's error is their root sum of squares, √(u_std² + (s_repeat/√n)²); the
+  scatter s of the means about the fit estimates the same error where the fit
+  sees it (it holds the means' noise). So still ONE input, u_read = max(s,
+  √(u_std² + (s_repeat/√n)²)), with the ν of the figure that governs (for the
+  root sum of squares, Welch–Satterthwaite of its two parts). Not s with s/√n
+  on top: before (#39) s/√n entered again beside s at each point and at θ₀, the
+  noise of the mean counted twice (U / (2 × actual scatter) 1.53 with 4
+  readings and no standard). Nor max(s, u_std, s_repeat/√n), the rule first
+  proposed: where the standard's error is the horizontal circle's alone (the
+  elevations barely move over a run, so the vertical circle's error is one
+  offset the fit takes up), s does not see it and the larger of the parts
+  misses the other: U / (2 × actual scatter) 0.81 (standard at 0.5σ) and 0.90
+  (at σ) with 4 readings, against 1.04 and 1.02 for the root sum of squares
+  (300 runs); where both circles carry it, 1.03 and 1.07 against 1.09 and 1.11
+  (400 runs; without a standard the two rules are one, 1.11). Checked by
+  simulation in tests/models/theodolite/test_theodolite_budget_once.py (a 3-D
+  rig, the standard's error drawn once per circle position and run, pointing
+  noise per reading). With one reading a point the rule is max(s, u_std) as
+  before (there is no s_repeat);
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
 """
@@ -54,6 +79,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
+from models.readings.repeats import RepeatedReadings
 from models.theodolite import KEY, TITLE
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
@@ -67,7 +93,7 @@ from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
-           "repeated_readings_components", "theodolite_budget", "theodolite_certificate",
+           "theodolite_budget", "theodolite_certificate",
            "theodolite_json_budgets"]
 
 METHOD = QT_TR_NOOP(
@@ -128,45 +154,109 @@ def _stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, l
     return math.sqrt(u2), stated
 
 
+def _pooled_repeats(result: TheodoliteResult) -> tuple[float, int, int] | None:
+    """With n readings per point, the pooled standard deviation of a point's mean azimuth,
+    s_repeat/√n (arcsec; the points' s/√n pooled, every point having n readings), its
+    ν = points · (n − 1) and n; None with one reading a point."""
+    repeats = result.repeats
+    if not isinstance(repeats, RepeatedReadings):
+        return None
+    s_mean = 3600.0 * np.asarray(repeats.s_mean["azimuth_deg"], dtype=float)
+    return float(np.sqrt(np.mean(s_mean**2))), int(s_mean.size * repeats.dof), repeats.n
+
+
+def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: float,
+                         stated: bool, governs: str, nu: float) -> str:
+    """What the reading error's note says: its candidate figures and which governs
+    (``governs``: standard, scatter, repeats or both, the standard with the repeats; ``nu``
+    the input's ν)."""
+    n = result.theta_deg.size
+    pooled = _pooled_repeats(result)
+    if pooled is None:  # one reading a point: the texts as they were before repeats counted once
+        scatter = message(QT_TR_NOOP("s = {s} (the vertical readings about the fit, {n} "
+                                     "readings, ν = {dof}; taken for the azimuth too)"),
+                          s=f"{s:.3f}\"", n=n, dof=dof)
+        if governs == "standard":
+            return message(QT_TR_NOOP(
+                "one error per reading, counted once: the larger of the stated standards' "
+                "u = {u} per reading and the scatter {scatter}; the standard governs (Type B, "
+                "ν = ∞)"), u=f"{u_std:.3f}\"", scatter=scatter)
+        if stated:
+            return message(QT_TR_NOOP(
+                "one error per reading, counted once: the larger of the stated standards' "
+                "u = {u} per reading and the scatter {scatter}; the scatter governs (Type A, "
+                "ν = {dof})"), u=f"{u_std:.3f}\"", scatter=scatter, dof=dof)
+        return message(QT_TR_NOOP("one error per reading, counted once: no standard states a "
+                                  "u per reading, so the scatter {scatter} (Type A, ν = {dof})"),
+                       scatter=scatter, dof=dof)
+    s_rep, dof_rep, readings = pooled
+    scatter = message(QT_TR_NOOP("s = {s} (the means' vertical readings about the fit, {n} "
+                                 "points, ν = {dof}; taken for the azimuth too: it holds the "
+                                 "means' own noise)"), s=f"{s:.3f}\"", n=n, dof=dof)
+    repeats = message(QT_TR_NOOP("the pooled s/√n = {s} of the {readings} azimuth readings "
+                                 "at each point (ν = {dof})"),
+                      s=f"{s_rep:.3f}\"", readings=readings, dof=dof_rep)
+    verdict = {"standard": message(QT_TR_NOOP("the standard governs (Type B, ν = ∞)")),
+               "scatter": message(QT_TR_NOOP("the scatter governs (Type A, ν = {dof})"),
+                                  dof=dof),
+               "repeats": message(QT_TR_NOOP("the repeated readings govern (Type A, "
+                                             "ν = {dof})"), dof=dof_rep),
+               "both": message(QT_TR_NOOP("the standard with the repeated readings governs "
+                                          "(ν_eff = {dof})"), dof=f"{nu:.0f}")}[governs]
+    if stated:
+        return message(QT_TR_NOOP(
+            "one error per point's mean of {readings} readings, counted once: the larger of "
+            "the scatter {scatter} and the stated standards' u = {u} per reading (not divided "
+            "by √{readings}: it is the instrument's error at that circle position, the same in "
+            "every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}"),
+            readings=readings, u=f"{u_std:.3f}\"", scatter=scatter, repeats=repeats,
+            both=f"{math.hypot(u_std, s_rep):.3f}\"", verdict=verdict)
+    return message(QT_TR_NOOP(
+        "one error per point's mean of {readings} readings, counted once: no standard states "
+        "a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}"),
+        readings=readings, scatter=scatter, repeats=repeats, verdict=verdict)
+
+
 def reading_error_components(result: TheodoliteResult,
                              metadata: CertificateMetadata) -> list[BudgetComponent]:
     """The theodolite's reading error, one input (see the module's note): u_read = max(s,
-    u_std), at the point's own reading (independent per point) and at the reference
-    reading θ₀ (one value for the run), sensitivity 1 at every point but θ₀."""
+    u_std); with n readings a point max(s, √(u_std² + (s_repeat/√n)²)). At the point's own
+    reading (independent per point) and at the reference reading θ₀ (one value for the run),
+    sensitivity 1 at every point but θ₀; its ν that of the figure that governs."""
     n = result.theta_deg.size
     single = _not_reference(result)
     dof = max(n - 3, 1)
     res = result.elevation_residuals_arcsec
     s = float(np.sqrt(np.sum(res**2) / dof))
     u_std, stated = _stated_reading_uncertainty(metadata)
-    scatter = message(QT_TR_NOOP("s = {s} (the vertical readings about the fit, {n} readings, "
-                                 "ν = {dof}; taken for the azimuth too)"),
-                      s=f"{s:.3f}\"", n=n, dof=dof)
-    if u_std > s:
-        evaluation, nu = "B", math.inf
+    pooled = _pooled_repeats(result)
+    s_rep, dof_rep, _ = pooled if pooled is not None else (0.0, 0, 1)
+    # a mean's error: the standard's part (the same in every repeat) and the part that averages
+    u_mean = math.hypot(u_std, s_rep)
+    if u_mean > s and s_rep == 0.0:  # one reading a point (or n equal ones): the standard
+        governs, evaluation, nu = "standard", "B", math.inf
         if len(stated) == 1:  # its own figure and distribution
             value = stated[0].uncertainty_in("arcsec")
             divisor, distribution = divisor_for_basis(stated[0].basis)
         else:
             value, divisor, distribution = u_std, 1.0, "normal"
-        governs = message(QT_TR_NOOP(
-            "one error per reading, counted once: the larger of the stated standards' "
-            "u = {u} per reading and the scatter {scatter}; the standard governs (Type B, "
-            "ν = ∞)"), u=f"{u_std:.3f}\"", scatter=scatter)
+    elif u_mean > s and u_std == 0.0:
+        governs, evaluation, nu, value, divisor, distribution = (
+            "repeats", "A", float(dof_rep), s_rep, 1.0, "normal")
+    elif u_mean > s:  # Welch–Satterthwaite of the two parts (the standard's ν = ∞)
+        governs, value, divisor, distribution = "both", u_mean, 1.0, "normal"
+        evaluation = "B" if u_std >= s_rep else "A"
+        nu = float(math.floor(u_mean**4 / (s_rep**4 / dof_rep) + 1e-9))
     else:
-        evaluation, nu, value, divisor, distribution = "A", float(dof), s, 1.0, "normal"
-        governs = (message(QT_TR_NOOP(
-            "one error per reading, counted once: the larger of the stated standards' "
-            "u = {u} per reading and the scatter {scatter}; the scatter governs (Type A, "
-            "ν = {dof})"), u=f"{u_std:.3f}\"", scatter=scatter, dof=dof) if stated else
-            message(QT_TR_NOOP("one error per reading, counted once: no standard states a "
-                               "u per reading, so the scatter {scatter} (Type A, ν = {dof})"),
-                    scatter=scatter, dof=dof))
+        governs, evaluation, nu, value, divisor, distribution = (
+            "scatter", "A", float(dof), s, 1.0, "normal")
+    note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu)
+    own = (QT_TR_NOOP("{governs}; the point's own reading, one value per point")
+           if pooled is None else
+           QT_TR_NOOP("{governs}; the point's own mean, one value per point"))
     return [
         BudgetComponent(READING_INPUT, evaluation, distribution, value, divisor, single, nu,
-                        message(QT_TR_NOOP("{governs}; the point's own reading, one value per "
-                                           "point"), governs=governs),
-                        dof_group="reading"),
+                        message(own, governs=note), dof_group="reading"),
         BudgetComponent(REFERENCE_READING_INPUT, evaluation, distribution, value, divisor,
                         single, nu,
                         QT_TR_NOOP("the zeroing reading, shared by every point (one value for "
@@ -193,7 +283,6 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
         MODEL_INPUT, "A", "normal", result.model_uncertainty_arcsec,
         1.0, 1.0, dof, QT_TR_NOOP("covariance of the identified parameters propagated through "
                                   "ζ(θ)")))
-    components += repeated_readings_components(result)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))
@@ -217,28 +306,6 @@ def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetad
     return {"raw_error_arcsec": part(lambda model: not model),
             "model_error_arcsec": part(lambda model: model),
             "corrected_error_arcsec": full}
-
-
-def repeated_readings_components(result: TheodoliteResult) -> list[BudgetComponent]:
-    """With n readings at each θ point (setting *readings per point*): the standard deviation
-    of the mean azimuth s/√n at each point, and at the reference point that every error
-    shares, Type A with ν = n − 1 (the elevations' scatter reaches the errors only through
-    the identified set-up, whose own input covers it)."""
-    repeats = result.repeats
-    if repeats is None:
-        return []
-    s_mean = 3600.0 * repeats.s_mean["azimuth_deg"]
-    single = _not_reference(result)
-    note = message(QT_TR_NOOP("s/√n of the {n} azimuth readings at each point, ν = {dof}"),
-                   n=repeats.n, dof=repeats.dof)
-    return [
-        BudgetComponent(QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal", s_mean * single,
-                        1.0, single, float(repeats.dof), note),
-        BudgetComponent(QT_TR_NOOP("Repeated readings at θ₀ (s/√n)"), "A", "normal",
-                        float(s_mean[result.reference_index]), 1.0, single, float(repeats.dof),
-                        message(QT_TR_NOOP("s/√n of the {n} readings at the reference point, "
-                                           "shared by every point"), n=repeats.n),
-                        common=True)]
 
 
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,

@@ -778,6 +778,14 @@
         <translation>水平读数</translation>
     </message>
     <message>
+        <source>the standard with the repeated readings governs (ν_eff = {dof})</source>
+        <translation>由标准器与重复读数的合成决定（ν_eff = {dof}）</translation>
+    </message>
+    <message>
+        <source>one error per point&apos;s mean of {readings} readings, counted once: the larger of the scatter {scatter} and the stated standards&apos; u = {u} per reading (not divided by √{readings}: it is the instrument&apos;s error at that circle position, the same in every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}</source>
+        <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：取离散度 {scatter} 与所列标准器每个读数的 u = {u}（不除以 √{readings}：它是仪器在该度盘位置的误差，每次重复都相同）和{repeats}的合成 √(u² + (s/√n)²) = {both} 中的较大者；{verdict}</translation>
+    </message>
+    <message>
         <source>Reference reading (θ₀)</source>
         <translation>参考读数（θ₀）</translation>
     </message>
@@ -806,8 +814,36 @@
         <translation>每个读数只有一个误差，只计一次：没有标准器给出每个读数的 u，故取离散度 {scatter}（A 类，ν = {dof}）</translation>
     </message>
     <message>
+        <source>s = {s} (the means&apos; vertical readings about the fit, {n} points, ν = {dof}; taken for the azimuth too: it holds the means&apos; own noise)</source>
+        <translation>s = {s}（各点平均值的竖直读数相对于拟合的标准偏差，{n} 个点，ν = {dof}；水平读数亦取此值：其中已包含平均值自身的噪声）</translation>
+    </message>
+    <message>
+        <source>the pooled s/√n = {s} of the {readings} azimuth readings at each point (ν = {dof})</source>
+        <translation>各点 {readings} 次方位角读数的合并 s/√n = {s}（ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>the standard governs (Type B, ν = ∞)</source>
+        <translation>由标准器决定（B 类，ν = ∞）</translation>
+    </message>
+    <message>
+        <source>the scatter governs (Type A, ν = {dof})</source>
+        <translation>由离散度决定（A 类，ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>the repeated readings govern (Type A, ν = {dof})</source>
+        <translation>由重复读数决定（A 类，ν = {dof}）</translation>
+    </message>
+    <message>
+        <source>one error per point&apos;s mean of {readings} readings, counted once: no standard states a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}</source>
+        <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：没有标准器给出每个读数的 u，故取离散度 {scatter} 与{repeats}中的较大者；{verdict}</translation>
+    </message>
+    <message>
         <source>{governs}; the point&apos;s own reading, one value per point</source>
         <translation>{governs}；该点自身的读数，每点一个值</translation>
+    </message>
+    <message>
+        <source>{governs}; the point&apos;s own mean, one value per point</source>
+        <translation>{governs}；该点自身的平均值，每点一个值</translation>
     </message>
     <message>
         <source>the zeroing reading, shared by every point (one value for the run): the same error as the point&apos;s reading, a second reading of it; for ν_eff one input with it (ν counted once)</source>
@@ -1241,6 +1277,10 @@
     <message>
         <source>millimetres (linear axis)</source>
         <translation>毫米（直线轴）</translation>
+    </message>
+    <message>
+        <source>n readings taken one after another at each θ point: every n rows are one point, averaged. The budget&apos;s reading error of a point&apos;s mean is one input, the larger of the fit&apos;s scatter of the means and √(u² + (s/√n)²): the stated standards&apos; u per reading (not divided by √n: the instrument&apos;s error at that circle position is the same in every repeat) with the repeats&apos; pooled s/√n (ν = points · (n − 1)). 1: every row is a point</source>
+        <translation>在每个 θ 点连续读取 n 次：每 n 行为一个点，取平均。不确定度评定中一个点平均值的读数误差为一个分量，取各点平均值相对于拟合的离散与 √(u² + (s/√n)²) 中的较大者：后者为所列标准器每个读数的 u（不除以 √n：仪器在该度盘位置的误差每次重复都相同）与重复读数的合并 s/√n（ν = 点数 · (n − 1)）的合成。1：每行为一个点</translation>
     </message>
     <message>
         <source>nanometres</source>
@@ -7286,18 +7326,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>s/√n of the {n} readings at face {face} of set 1, shared by every set</source>
         <translation>第 1 测回第 {face} 面 {n} 次读数的 s/√n，各测回共用</translation>
-    </message>
-    <message>
-        <source>s/√n of the {n} azimuth readings at each point, ν = {dof}</source>
-        <translation>各点 {n} 次方位角读数的 s/√n，ν = {dof}</translation>
-    </message>
-    <message>
-        <source>Repeated readings at θ₀ (s/√n)</source>
-        <translation>θ₀ 处的重复读数（s/√n）</translation>
-    </message>
-    <message>
-        <source>s/√n of the {n} readings at the reference point, shared by every point</source>
-        <translation>参考点 {n} 次读数的 s/√n，各点共用</translation>
     </message>
     <message>
         <source>n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input &apos;Repeated readings&apos;. 1: every row is a point</source>

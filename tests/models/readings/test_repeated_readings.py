@@ -1,5 +1,6 @@
 """Repeated readings per point (issue 31, item 10a): n readings of one θ point, target or
-face are averaged, and their s/√n (ν = n − 1) enters the budget as a Type A input.
+face are averaged, and their s/√n (ν = n − 1) enters the budget as a Type A input (the
+theodolite's: one candidate of its one reading-error input, #39).
 
 The repeated readings are simulated here: the bundled samples' readings are taken as the
 truth and each is read n times with Gaussian noise of a known σ (numpy only; nothing from
@@ -120,10 +121,19 @@ def test_n_identical_readings_give_the_single_reading_result_exactly(key, sample
     result = _analyse(kind, tripled, readings_per_point=3)
     assert json.dumps(kind.to_json(result)) == single
     budget = kind.certificate_document(result, META).budget
-    assert np.all(np.asarray(_component(budget, TYPE_A).value) == 0.0)
+    if key == "theodolite":  # s/√n = 0 is one candidate of the reading error (#39): U as before
+        assert not any(c.name == TYPE_A for c in budget.components)
+        once = kind.certificate_document(_analyse(kind, rows), META).budget
+        np.testing.assert_allclose(budget.expanded, once.expanded, rtol=1e-12)
+    else:
+        assert np.all(np.asarray(_component(budget, TYPE_A).value) == 0.0)
 
 
-def test_theodolite_noisy_repeats_average_and_their_type_a_input(samples_dir):
+def test_theodolite_noisy_repeats_average_and_their_s_mean_counts_once(samples_dir):
+    """The theodolite's n readings are averaged; their s/√n, pooled over the points
+    (ν = points · (n − 1)), is part of the one reading-error input, with the standard's u:
+    max(s_fit, √(u_std² + (s/√n)²)) (#39: the fit's scatter of the means already holds the
+    means' noise, so s/√n is not a second input beside it)."""
     kind, rows, truth = _sample("theodolite", samples_dir)
     n, sigma = 4, 0.5  # arcsec
     rng = np.random.default_rng(31)
@@ -143,22 +153,25 @@ def test_theodolite_noisy_repeats_average_and_their_type_a_input(samples_dir):
     assert np.max(np.abs(result.corrected_error_arcsec - exact.corrected_error_arcsec)) < \
         5 * sigma / math.sqrt(n) * math.sqrt(2)
     s_mean = noise_a.std(axis=1, ddof=1) / math.sqrt(n)
-    ref = result.reference_index
-    budget = kind.certificate_document(result, META).budget
-    point = _component(budget, TYPE_A)
-    expected = s_mean.copy()
-    expected[ref] = 0.0
-    np.testing.assert_allclose(point.value, expected, atol=2e-5)
-    assert point.dof == n - 1 and point.evaluation == "A" and point.divisor == 1.0
-    shared = _component(budget, "Repeated readings at θ₀ (s/√n)")
-    assert shared.value == pytest.approx(s_mean[ref], abs=2e-5) and shared.dof == n - 1
+    pooled = math.sqrt(np.mean(s_mean**2))
     # the s of the means scatter about σ/√n (41 points × 3 degrees of freedom)
-    assert math.sqrt(np.mean(s_mean**2)) == pytest.approx(sigma / math.sqrt(n), rel=0.3)
-    # u_c at a point holds the Type A input with the others
-    others = [c for c in budget.components if c.name != TYPE_A]
+    assert pooled == pytest.approx(sigma / math.sqrt(n), rel=0.15)
+    budget = kind.certificate_document(result, META).budget
+    assert not any(c.name.startswith("Repeated readings") for c in budget.components)
+    reading = _component(budget, "Reading error (pointing)")
+    dof_fit = truth.n - 3
+    s_fit = math.sqrt(np.sum(result.elevation_residuals_arcsec**2) / dof_fit)
+    u_std = 0.4 / 2  # META's standard, U95 → u = 0.2″, not divided by √n
+    both = math.hypot(u_std, pooled)
+    expected = max(s_fit, both)
+    assert reading.value == pytest.approx(expected, abs=2e-5)
+    nu = truth.n * (n - 1)
+    assert reading.dof == (math.floor(both**4 / (pooled**4 / nu)) if both > s_fit else dof_fit)
+    # the means' noise once: √2 · u_read at a point with the set-up model's share
+    ref = result.reference_index
     k = 5 if ref != 5 else 6
-    without = math.sqrt(sum(float(c.contribution(budget.points)[k]) ** 2 for c in others))
-    assert budget.combined[k] == pytest.approx(math.hypot(without, s_mean[k]), rel=1e-9)
+    model = float(np.broadcast_to(result.model_uncertainty_arcsec, (truth.n,))[k])
+    assert budget.combined[k] == pytest.approx(math.sqrt(2 * expected**2 + model**2), rel=1e-6)
 
 
 @pytest.mark.slow

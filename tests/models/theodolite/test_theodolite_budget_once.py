@@ -20,6 +20,8 @@ import numpy as np
 import pytest
 
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.readings.sheet import ParsedReadings
+from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run
 from models.theodolite.report import (
     READING_INPUT,
@@ -134,3 +136,115 @@ def test_one_reading_input_the_larger_of_scatter_and_standard_with_its_nature():
         assert budget.combined[i] == pytest.approx(math.sqrt(2.0 * expected**2 + model_i**2))
         assert budget.combined[ZERO] == pytest.approx(float(np.broadcast_to(model, THETA.shape)
                                                             [ZERO]), abs=1e-12)
+
+
+# -- n readings a point (#39): the mean's noise counted once --------------------------------
+#
+# Each point is read n times in a row. Two errors per reading, as the budget's note argues:
+# the pointing noise (σ, new in every reading, averaging over n) and the instrument's own
+# error at that circle position, which a stated standard's u describes: one value per point
+# and run, the SAME in each of its n readings, drawn with standard deviation u_sys; the
+# laboratory states the theodolite at u = u_sys per reading. Either both circles carry it
+# (the vertical readings then show it to the fit) or the horizontal circle alone (the
+# elevations barely move over a run: the vertical circle's error is one offset, which the
+# fit takes up). The readings go through the workbench as a sheet gives them (n rows a point).
+
+
+def _repeat_runs(count: int, n: int, u_sys: float, seed: int, circles: str = "both"):
+    rng = np.random.default_rng(seed)
+    truth = _axis_error()
+    clean_az, clean_el = _readings(THETA - truth / 3600.0)
+    m = THETA.size
+    meta = CertificateMetadata(standards=(ReferenceStandard(
+        "Autocollimating theodolite", uncertainty=u_sys, basis="u"),)) if u_sys else \
+        CertificateMetadata()
+    settings = THEODOLITE.settings_with_defaults({"readings_per_point": n,
+                                                  "reference_row": ZERO * n + 1})
+    for _ in range(count):
+        circle_az, circle_el = rng.normal(0.0, 1.0, (2, m)) * u_sys
+        if circles == "horizontal":
+            circle_el = np.zeros(m)
+        az = (clean_az + circle_az / 3600.0)[:, None] + rng.normal(0.0, SIGMA, (m, n)) / 3600.0
+        el = (clean_el + circle_el / 3600.0)[:, None] + rng.normal(0.0, SIGMA, (m, n)) / 3600.0
+        sheet = ParsedReadings({"theta_deg": np.repeat(THETA, n), "azimuth_deg": az.ravel(),
+                                "elevation_deg": el.ravel(), "run": np.full(m * n, np.nan),
+                                "direction": np.full(m * n, "", dtype=object)},
+                               np.arange(m * n))
+        result = THEODOLITE.analyze(sheet, settings)
+        yield truth, (az, el), result, theodolite_budget(result, meta)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("n, u_sys, circles", [
+    (1, 0.0, "both"), (1, 0.5 * SIGMA, "both"), (1, SIGMA, "both"),
+    (4, 0.0, "both"), (4, 0.5 * SIGMA, "both"), (4, SIGMA, "both"),
+    (4, 0.5 * SIGMA, "horizontal"), (4, SIGMA, "horizontal")])
+def test_u_is_twice_the_actual_scatter_with_n_readings_and_a_standard_that_does_not_average(
+        n, u_sys, circles):
+    """Over 200 runs (400 with 4 readings), U at each point / (2 × the scatter of the
+    corrected error about the truth there) is within 0.9–1.2 (the median over the points),
+    for 1 and 4 readings a point and the standard at 0, 0.5σ and σ. With 4 readings and no
+    standard it was 1.6 (1.53 in the author's study): the means' noise in the fit's scatter,
+    and s/√n again as its own input. (With 4 readings and no standard the rule's own ratio is
+    about 1.11: the larger of two estimates of one σ/√n, and k for the fit's ν = 18; the
+    scatter of 200 runs moves it by ±0.04, hence 400.)"""
+    errors, big_u = [], []
+    runs = 200 if n == 1 else 400
+    seed = 390 + 10 * n + int(4 * u_sys) + (5 if circles == "horizontal" else 0)
+    for truth, _, result, budget in _repeat_runs(runs, n, u_sys, seed, circles):
+        errors.append(result.corrected_error_arcsec - truth)
+        big_u.append(budget.expanded)
+    errors, big_u = np.array(errors), np.array(big_u)
+    others = np.arange(THETA.size) != ZERO
+    scatter = np.std(errors, axis=0, ddof=1)[others]
+    # the simulation's own check: two means' errors, √2 · √(u_sys² + σ²/n)
+    expected = math.sqrt(2.0 * (u_sys**2 + SIGMA**2 / n))
+    assert float(np.median(scatter)) == pytest.approx(expected, rel=0.1)
+    ratio = np.mean(big_u[:, others], axis=0) / (2.0 * scatter)
+    assert 0.9 <= float(np.median(ratio)) <= 1.2, ratio
+    assert np.all((ratio > 0.8) & (ratio < 1.35)), ratio
+    coverage = np.mean(np.abs(errors[:, others]) <= big_u[:, others])
+    assert 0.93 <= coverage <= 0.985, coverage
+
+
+def test_with_n_readings_one_input_the_scatter_or_the_standard_with_the_repeats():
+    """The reading error of a point's mean is ONE input: max(s_fit, √(u_std² +
+    (s_repeat/√n)²)), s_repeat/√n pooled over the points' azimuth repeats (ν = points ·
+    (n − 1)); the standard's u per reading is not divided by √n; no 'Repeated readings'
+    input beside it; its ν that of the figure that governs (Welch–Satterthwaite for the
+    root sum of squares)."""
+    n = 4
+    _, (az, _), result, _ = next(_repeat_runs(1, n, 0.0, 5))
+    m = THETA.size
+    dof_fit, dof_rep = m - 3, m * (n - 1)
+    s_fit = float(np.sqrt(np.sum(result.elevation_residuals_arcsec**2) / dof_fit))
+    # the pooled s/√n of the azimuth repeats, from the simulated readings themselves
+    s_rep = math.sqrt(np.mean(np.var(az * 3600.0, axis=1, ddof=1)) / n)
+    assert s_rep == pytest.approx(SIGMA / math.sqrt(n), rel=0.2)  # 63 degrees of freedom
+    assert s_fit == pytest.approx(SIGMA / math.sqrt(n), rel=0.35)  # 18 degrees of freedom
+    small = 0.2 * s_rep  # a standard too small to lift √(u² + s_rep²) above s_fit … or not
+    both_small = math.hypot(small, s_rep)
+    for stated, u, evaluation, dof, governs in (
+            (None, max(s_fit, s_rep), "A", dof_rep if s_rep > s_fit else dof_fit,
+             "repeated readings govern" if s_rep > s_fit else "scatter governs"),
+            (small, max(s_fit, both_small), "A",
+             math.floor(both_small**4 / (s_rep**4 / dof_rep)) if both_small > s_fit
+             else dof_fit,
+             "standard with the repeated readings governs" if both_small > s_fit
+             else "scatter governs"),
+            # σ per reading, not σ/√n, with the repeats' s/√n on top: ν_eff from the latter
+            (SIGMA, math.hypot(SIGMA, s_rep), "B",
+             math.floor(math.hypot(SIGMA, s_rep)**4 / (s_rep**4 / dof_rep)),
+             "standard with the repeated readings governs")):
+        meta = CertificateMetadata() if stated is None else CertificateMetadata(standards=(
+            ReferenceStandard("Autocollimating theodolite", uncertainty=stated, basis="u"),))
+        budget = theodolite_budget(result, meta)
+        rows = {r["name"]: r for r in budget.table()}
+        assert not any(name.startswith("Repeated readings") for name in rows), rows
+        own, zero = rows[READING_INPUT], rows[REFERENCE_READING_INPUT]
+        assert own["u"] == pytest.approx(u, rel=1e-9) and zero["u"] == pytest.approx(u)
+        assert (own["evaluation"], own["dof"]) == (evaluation, dof)
+        assert f"the {governs}" in own["note"] and "4 readings" in own["note"], own["note"]
+        i = (ZERO + 3) % m
+        model_i = float(np.broadcast_to(result.model_uncertainty_arcsec, THETA.shape)[i])
+        assert budget.combined[i] == pytest.approx(math.sqrt(2.0 * u**2 + model_i**2))
