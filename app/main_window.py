@@ -98,7 +98,10 @@ class MainWindow(QMainWindow):
         for presenter in self.presenters:
             presenter.certificate_details = (
                 lambda key=presenter.kind.key: self.certificates.stored_details(key))
-        self.certificates.details_changed = lambda key: self.presenter(key).schedule_refresh()
+        # the details change no figure of the result, only the bands drawn with it: redrawn,
+        # not analysed again (a new analysis would leave the result not yet current and hold
+        # back the next export while capturing or on a large sheet)
+        self.certificates.details_changed = lambda key: self.presenter(key).schedule_redraw()
         for presenter in self.presenters:  # a polygon read from its DCC joins the standards
             if hasattr(presenter, "dcc_schema_dir"):  # a DCC read is validated against it
                 presenter.dcc_schema_dir = self._dcc_schema_dir
@@ -388,7 +391,20 @@ class MainWindow(QMainWindow):
 
     # -- certificates: the CertificatePresenter decides, its CertificateDialogs show ----
     def _current_result(self):
+        """The result of the workbench in front, when it is the analysis of the readings
+        and settings it holds now (an edit still waiting is analysed first); None, told
+        why, otherwise: a certificate is never issued from a result older than the
+        readings it records, nor results exported from one (#39)."""
         presenter = self.current
+        if not presenter.analyse_if_due():
+            if presenter.reading_file:
+                text = tr("The readings are still being read from the file; export again when "
+                          "their result is shown.")
+            else:
+                text = tr("The latest readings are still being analysed; export again when "
+                          "their result is shown.")
+            self.tell(tr("Not exported yet"), text)
+            return None
         if presenter.result is None:
             problem = presenter.problem or tr("no readings have been analysed yet")
             self.tell(tr("Nothing to export"), f"{declared(presenter.kind.title)}: {problem}.")
@@ -399,12 +415,16 @@ class MainWindow(QMainWindow):
         return self.projects.path.name if self.projects.path else "readings typed in AngleBench"
 
     def export_certificate(self) -> bool:
-        # the settings the result was analysed with, not the form's: edited since, they are
-        # not yet in the result, and the certificate states what it computed with
+        # the readings and settings the result was analysed from, not the sheet's and the
+        # form's: the certificate states what it computed with, and the register records
+        # the readings that give its figures
         result = self._current_result()
-        return result is not None and self.certificates.export_certificate(
-            self.current.kind, result, self.current.result_settings, self._source_name(),
-            self.current.state().rows, self.capture_panel.raw_sessions(self.current.kind.key))
+        if result is None:
+            return False
+        analysed = self.current.result_state()
+        return self.certificates.export_certificate(
+            self.current.kind, result, analysed.settings, self._source_name(),
+            analysed.rows, self.capture_panel.raw_sessions(self.current.kind.key))
 
     def export_results(self) -> bool:
         result = self._current_result()

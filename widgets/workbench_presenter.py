@@ -67,7 +67,8 @@ class _TaskSignals(QObject):
 
 
 class _AnalysisTask(QRunnable):
-    """Parse and analyse a large sheet on a worker thread."""
+    """Parse and analyse a large sheet on a worker thread (``sheet``: a snapshot, which the
+    GUI thread's edits do not reach; it goes back with the result)."""
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
                  generation: int, signals: _TaskSignals, prepare, current, workers: Workers) -> None:
@@ -89,7 +90,8 @@ class _AnalysisTask(QRunnable):
         except AnalysisCancelled:
             emit_if_alive(signals.cancelled, generation)
             return
-        emit_if_alive(signals.finished, generation, (parsed, result, display, settings), error)
+        emit_if_alive(signals.finished, generation, (parsed, result, display, settings, sheet),
+                      error)
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -135,6 +137,18 @@ class _ImportTask(QRunnable):
                 return
             gc.freeze()  # keep the new rows out of later full passes too
         emit_if_alive(signals.imported, rows, path, "", generation)
+
+
+def _sheet_state(sheet: ReadingsSheet, settings: dict[str, Any], deep: bool) -> WorkbenchState:
+    """``sheet``'s rows (less blank rows at the end) and ``settings``, copied: each row
+    (``deep``) or only the list of rows."""
+    if isinstance(sheet.rows, NumericRows):  # a record of numbers: read as text
+        return WorkbenchState(sheet.copy_rows() if deep else  # when written
+                              sheet.rows.snapshot(), dict(settings))
+    rows = sheet.copy_rows() if deep else list(sheet.rows)
+    while rows and not any(c.strip() for c in rows[-1]):
+        rows.pop()
+    return WorkbenchState(rows, dict(settings))
 
 
 def _run_analysis(kind: Workbench, parsed: ParsedReadings,
@@ -191,6 +205,9 @@ class WorkbenchPresenter(QObject):
         # the settings ``result`` was analysed with: a certificate of it states and computes
         # with these, not the form's (edited since, their analysis still to come)
         self.result_settings: dict[str, Any] = dict(self._settings)
+        # the readings ``result`` was analysed from (a snapshot later edits do not reach):
+        # a certificate records these with its figures, never the sheet's rows of the moment
+        self.result_sheet: ReadingsSheet = self.sheet.snapshot()
         self.display: Any = None  # prepare_display(result)
         self.parsed: ParsedReadings | None = None
         self.problem = ""
@@ -199,7 +216,8 @@ class WorkbenchPresenter(QObject):
         # window sets it; None: none): the plots' tolerance and U bands come from them
         self.certificate_details: Callable[[], Any] = lambda: None
         self.angle_unit: AngleUnit = ANGLE_UNITS["arcsec"]  # what results are shown in
-        self._generation = 0
+        self._generation = 0  # one more for every analysis started (``refresh``)
+        self._shown_generation = 0  # the analysis whose result is shown (``result``)
         self._import_generation = 0  # a newer import, or an opened project, drops older imports
         self._import_pending = False
         self._signals = _TaskSignals(self)
@@ -216,6 +234,10 @@ class WorkbenchPresenter(QObject):
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
         self._timer.timeout.connect(self.refresh)
+        self._redraw_timer = QTimer(self)  # the result drawn again, not analysed again
+        self._redraw_timer.setSingleShot(True)
+        self._redraw_timer.setInterval(0)
+        self._redraw_timer.timeout.connect(self._redraw)
         self.build_settings()
         self.view.set_settings(self._settings)
         keys = [c.key for c in kind.columns]
@@ -264,6 +286,11 @@ class WorkbenchPresenter(QObject):
             return
         self.angle_unit = unit
         self._redraw()
+
+    def schedule_redraw(self) -> None:
+        """Draw the result again soon (the certificate details changed: the plots'
+        tolerance and U bands follow them); the result itself stays, nothing is analysed."""
+        self._redraw_timer.start()
 
     def _redraw(self) -> None:
         """The result shown again (a new language or unit), not analysed again."""
@@ -369,15 +396,14 @@ class WorkbenchPresenter(QObject):
 
     def state(self, deep: bool = True) -> WorkbenchState:
         """The readings and settings. ``deep=False`` copies only the list of rows (a
-        million rows' copies would stall the window): an autosave may then see a cell
-        edited a moment later, never a half-made structure."""
-        if isinstance(self.sheet.rows, NumericRows):  # a record of numbers: read as text
-            return WorkbenchState(self.sheet.copy_rows() if deep else  # when written
-                                  self.sheet.rows.snapshot(), dict(self._settings))
-        rows = self.sheet.copy_rows() if deep else list(self.sheet.rows)
-        while rows and not any(c.strip() for c in rows[-1]):
-            rows.pop()
-        return WorkbenchState(rows, dict(self._settings))
+        million rows' copies would stall the window); the rows are shared, which later
+        edits do not reach (an edit replaces a row: ReadingsSheet.snapshot)."""
+        return _sheet_state(self.sheet, self._settings, deep)
+
+    def result_state(self) -> WorkbenchState:
+        """The readings and settings ``result`` was analysed from (copied): what a
+        certificate of it records, whatever the sheet and the form hold now."""
+        return _sheet_state(self.result_sheet, self.result_settings, True)
 
     def load_state(self, state: WorkbenchState) -> None:
         """Replace readings and settings (a project was opened); clears the undo history."""
@@ -592,20 +618,46 @@ class WorkbenchPresenter(QObject):
         if not self.capturing:
             self._fit_columns()
         self._generation += 1
-        if self.sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
+        # the readings as they are now: the analysis parses these, wherever it runs, and
+        # they stay with its result (edits made while a worker analyses never reach them)
+        sheet = self.sheet.snapshot()
+        if sheet.row_count > THREAD_THRESHOLD_ROWS or self.capturing:
             if not self.capturing:
                 self._set_busy(True, tr("Analysing {rows} readings …").format(
-                    rows=self.sheet.row_count))
+                    rows=sheet.row_count))
             self.workers.start(
-                _AnalysisTask(self.kind, self.sheet, dict(self._settings), self._generation,
+                _AnalysisTask(self.kind, sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,
                               self.workers))
             return
-        parsed = self._without_waiting_rows(self.sheet.parse())
+        parsed = self._without_waiting_rows(sheet.parse())
         settings = dict(self._settings)
         result, error = _run_analysis(self.kind, parsed, settings)
-        self.result_settings = settings
+        self._shown_generation = self._generation
+        self.result_settings, self.result_sheet = settings, sheet
         self._finish(parsed, result, error, _prepare_display(self.prepare_display, result))
+
+    @property
+    def analysis_pending(self) -> bool:
+        """Whether the readings or settings changed after the analysis of the result shown
+        began: an edit waits for its analysis (the 0-ms timer), or a newer analysis still
+        runs on a worker. ``result`` is then not the analysis of what the sheet and the
+        form hold now."""
+        return self._timer.isActive() or self._shown_generation != self._generation
+
+    @property
+    def reading_file(self) -> bool:
+        """A file is being read on a worker; its readings replace the sheet's when read."""
+        return self._import_pending
+
+    def analyse_if_due(self) -> bool:
+        """An edit still waiting for its analysis is analysed now (on a worker where the
+        sheet is large or readings are being captured: then not yet done). True when the
+        result shown is the analysis of the current readings and settings and no file is
+        being read into the sheet: what a certificate of it may be issued from."""
+        if self._timer.isActive():
+            self.refresh()
+        return not self.analysis_pending and not self._import_pending
 
     def _on_task_cancelled(self, _generation: int) -> None:
         self.cancelled_analyses += 1
@@ -614,8 +666,9 @@ class WorkbenchPresenter(QObject):
         if generation == self._generation:  # a newer edit supersedes this result
             if not self._import_pending:  # a file being read keeps the window busy
                 self._set_busy(False)
-            parsed, result, display, settings = payload
-            self.result_settings = settings
+            parsed, result, display, settings, sheet = payload
+            self._shown_generation = generation
+            self.result_settings, self.result_sheet = settings, sheet
             self._finish(parsed, result, error, display)
 
     def _next_text(self) -> str:

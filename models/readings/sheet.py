@@ -386,7 +386,11 @@ class ReadingsSheet:
         rows = self._as_text_rows()
         while row >= len(rows):
             rows.append([""] * len(self.columns))
-        rows[row][column] = text
+        # the row is replaced, never changed in place: a snapshot (which shares the row
+        # lists) keeps the text it was taken with
+        cells = list(rows[row])
+        cells[column] = text
+        rows[row] = cells
 
     def insert_rows(self, at: int, rows: Sequence[Sequence[str]]) -> None:
         self._as_text_rows()[at:at] = [self._fit_row(r) for r in rows]
@@ -417,6 +421,18 @@ class ReadingsSheet:
 
     def copy_rows(self) -> list[list[str]]:
         return [list(r) for r in self.rows]
+
+    def snapshot(self) -> ReadingsSheet:
+        """The sheet as it is now, which later edits do not reach: the rows an analysis
+        parses and a certificate records with its figures. Cheap: the list of rows is
+        copied, the rows themselves are shared (an edit replaces a row, never changes
+        it in place: :meth:`set_text`); a record of numbers shares its columns and copies
+        only its edited rows."""
+        copy = ReadingsSheet.__new__(ReadingsSheet)
+        copy.columns = self.columns
+        copy.rows = (self.rows.snapshot() if isinstance(self.rows, NumericRows)
+                     else list(self.rows))
+        return copy
 
     # -- parsing --------------------------------------------------------
     def _parse_fast(self) -> ParsedReadings | None:
