@@ -259,9 +259,10 @@ def reading_error_components(result: TheodoliteResult,
                         message(own, governs=note), dof_group="reading"),
         BudgetComponent(REFERENCE_READING_INPUT, evaluation, distribution, value, divisor,
                         single, nu,
-                        QT_TR_NOOP("the zeroing reading, shared by every point (one value for "
-                                   "the run): the same error as the point's reading, a second "
-                                   "reading of it; for ν_eff one input with it (ν counted once)"),
+                        QT_TR_NOOP("the zeroing reading at θ₀, shared by every point (one "
+                                   "value for the run): two readings enter each error, the "
+                                   "point's and the zero's, each with the same u (the figure "
+                                   "chosen once, above); one input for ν_eff"),
                         common=True, dof_group="reading")]
 
 

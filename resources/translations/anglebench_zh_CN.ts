@@ -786,6 +786,10 @@
         <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：取离散度 {scatter} 与所列标准器每个读数的 u = {u}（不除以 √{readings}：它是仪器在该度盘位置的误差，每次重复都相同）和{repeats}的合成 √(u² + (s/√n)²) = {both} 中的较大者；{verdict}</translation>
     </message>
     <message>
+        <source>the zeroing reading at θ₀, shared by every point (one value for the run): two readings enter each error, the point&apos;s and the zero&apos;s, each with the same u (the figure chosen once, above); one input for ν_eff</source>
+        <translation>θ₀ 处的置零读数，各点共用（整次测量为一个值）：每个误差含两个读数，即该点的和置零的，各取相同的 u（上面只选取一次的数值）；对 ν_eff 为一个输入量</translation>
+    </message>
+    <message>
         <source>Reference reading (θ₀)</source>
         <translation>参考读数（θ₀）</translation>
     </message>
@@ -844,10 +848,6 @@
     <message>
         <source>{governs}; the point&apos;s own mean, one value per point</source>
         <translation>{governs}；该点自身的平均值，每点一个值</translation>
-    </message>
-    <message>
-        <source>the zeroing reading, shared by every point (one value for the run): the same error as the point&apos;s reading, a second reading of it; for ν_eff one input with it (ν counted once)</source>
-        <translation>置零读数，为各点共用（整次测量一个值）：与该点读数是同一种误差的另一个读数；计算 ν_eff 时与之合为一个输入量（ν 只计一次）</translation>
     </message>
     <message>
         <source>Reading error (pointing)</source>
