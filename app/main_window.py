@@ -368,6 +368,8 @@ class MainWindow(QMainWindow):
                                             "positioning workbench.").format(
                 workbench=declared(source.kind.title)))
             return False
+        if not self.result_is_current(source, sending=True):
+            return False
         if source.result is None:
             problem = source.problem or tr("no readings have been analysed yet")
             self.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
@@ -396,20 +398,33 @@ class MainWindow(QMainWindow):
         why, otherwise: a certificate is never issued from a result older than the
         readings it records, nor results exported from one (#39)."""
         presenter = self.current
-        if not presenter.analyse_if_due():
-            if presenter.reading_file:
-                text = tr("The readings are still being read from the file; export again when "
-                          "their result is shown.")
-            else:
-                text = tr("The latest readings are still being analysed; export again when "
-                          "their result is shown.")
-            self.tell(tr("Not exported yet"), text)
+        if not self.result_is_current(presenter):
             return None
         if presenter.result is None:
             problem = presenter.problem or tr("no readings have been analysed yet")
             self.tell(tr("Nothing to export"), f"{declared(presenter.kind.title)}: {problem}.")
             return None
         return presenter.result
+
+    def result_is_current(self, presenter, sending: bool = False) -> bool:
+        """Whether ``presenter``'s result is the analysis of the readings and settings it
+        holds now (an edit still waiting is analysed first); told why not: nothing is
+        exported, nor sent to another workbench, from a result older than its readings."""
+        if presenter.analyse_if_due():
+            return True
+        if sending:
+            text = (tr("The readings are still being read from the file; send again when "
+                       "their result is shown.") if presenter.reading_file else
+                    tr("The latest readings are still being analysed; send again when their "
+                       "result is shown."))
+            self.tell(tr("Not sent yet"), text)
+            return False
+        text = (tr("The readings are still being read from the file; export again when "
+                   "their result is shown.") if presenter.reading_file else
+                tr("The latest readings are still being analysed; export again when their "
+                   "result is shown."))
+        self.tell(tr("Not exported yet"), text)
+        return False
 
     def _source_name(self) -> str:
         return self.projects.path.name if self.projects.path else "readings typed in AngleBench"

@@ -36,6 +36,8 @@ def send_reference(window: Any) -> bool:
         window.tell(tr("Cannot send"), tr("{workbench} has no reference to send.").format(
             workbench=declared(source.kind.title)))
         return False
+    if not window.result_is_current(source, sending=True):  # never a result older than
+        return False  # the readings it stands for
     if source.result is None:
         problem = source.problem or tr("no readings have been analysed yet")
         window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")

@@ -1890,6 +1890,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>已打印</translation>
     </message>
     <message>
+        <source>The readings are still being read from the file; send again when their result is shown.</source>
+        <translation>读数仍在从文件中读取；请在其结果显示后再发送。</translation>
+    </message>
+    <message>
+        <source>The latest readings are still being analysed; send again when their result is shown.</source>
+        <translation>最新的读数仍在分析中；请在其结果显示后再发送。</translation>
+    </message>
+    <message>
+        <source>Not sent yet</source>
+        <translation>尚未发送</translation>
+    </message>
+    <message>
         <source>The readings are still being read from the file; export again when their result is shown.</source>
         <translation>读数仍在从文件中读取；请在其结果显示后再导出。</translation>
     </message>

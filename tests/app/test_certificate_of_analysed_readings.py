@@ -153,3 +153,26 @@ def test_a_file_still_being_read_is_not_exported_from_the_readings_it_replaces(
                     timeout=5000)
     assert window.export_results()
     assert (tmp_path / "results.csv").stat().st_size > 0
+
+
+def test_a_run_still_being_analysed_is_not_sent_to_positioning(window, bench, qtbot):
+    """Send to positioning takes the result's run: while a reading taken is still being
+    analysed it would send the run without it. Refused and said, the positioning readings
+    untouched; once the analysis is shown, sent with the new point."""
+    presenter, _, _ = bench
+    positioning = window.presenter("positioning")
+    before = [list(r) for r in positioning.state().rows]
+    presenter.set_capturing(True)
+    row = presenter.sheet.row_count
+    presenter.table_model.set_cells([(row, c, t) for c, t in enumerate(NEW_ROW)])
+    assert not window.send_to_positioning()
+    assert window.told == ["The latest readings are still being analysed; send again when "
+                           "their result is shown."]
+    assert [list(r) for r in positioning.state().rows] == before
+    qtbot.waitUntil(lambda: not presenter.analysis_pending, timeout=5000)
+    window.tabs.setCurrentIndex(window.presenters.index(presenter))
+    assert window.send_to_positioning(), window.told
+    sent = presenter.kind.run_rows(presenter.result)
+    assert len(sent) == len(presenter.kind.run_rows(presenter.result))
+    assert positioning.sheet.row_count == len(sent) and len(sent) > 0
+    assert presenter.result.theta_deg.size == row + 1  # the new point is in what was sent
