@@ -211,7 +211,7 @@ def repeated_readings_components(result: PolygonResult, share: ZeroFaceShare | N
         return []
     n = result.repeats.n
     zero = _zero_index(result)
-    share = share or mean_zero_share([s.direction for s in result.sets])
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     return [
         BudgetComponent(QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal",
                         np.sqrt(np.sum(u**2, axis=0)) / u.shape[0], 1.0,
@@ -246,7 +246,7 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
     m_eff = _effective_sets(directions)
     corrected = np.array([s.corrected_error_arcsec for s in result.sets])
     repeat = pooled_repeatability(corrected, directions)
-    share = share or mean_zero_share(directions)
+    share = mean_zero_share(directions) if share is None else share
     if repeat is not None:
         s_i, sets_dof = repeat
         noise = float(np.sqrt(np.mean(s_i**2)))
@@ -381,7 +381,7 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
         return []
     excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
     half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
-    share = share or mean_zero_share([s.direction for s in result.sets])
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     sensitivity = _at_zero(zero, n, share.drift)
     how = (QT_TR_NOOP("spread linearly and removed, half the drift left") if result.spread_drift
            else QT_TR_NOOP("not removed, up to the whole drift"))
@@ -424,7 +424,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     stated = settings or {}
     n = result.faces
     zero = _zero_index(result)
-    share = share or mean_zero_share([s.direction for s in result.sets])
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     # the encoder's two readings a_i and a_z: at the zero face the zero reading's share
     pair = np.full(n, math.sqrt(2.0))
     pair[zero] = math.sqrt(2.0) * share.zero
