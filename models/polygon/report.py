@@ -54,7 +54,7 @@ import dataclasses
 import math
 import re
 from collections.abc import Mapping
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -92,8 +92,9 @@ from models.polygon.setup_statement import setup_statement
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.lab_scope import cmc_of
 
-__all__ = ["polygon_budget", "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
-           "repeated_readings_components", "setup_statement"]
+__all__ = ["OTHER_SET", "ZERO_READING", "ZeroFaceShare", "mean_zero_share", "polygon_budget",
+           "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
+           "repeated_readings_components", "setup_statement", "zero_reading_statement"]
 
 METHOD = QT_TR_NOOP(
     "A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on "
@@ -150,7 +151,56 @@ def _effective_sets(directions: np.ndarray) -> float:
     return float(up + down)
 
 
-def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]:
+@dataclass(frozen=True)
+class ZeroFaceShare:
+    """How the readings at the zero face enter one error array's figure at that face, as
+    sensitivities there (1 elsewhere): ``own``, the noise of the readings the figure averages
+    (relative to that input's u at any other face); ``zero``, the zero reading's noise;
+    ``drift``, the closure drift. The zero reading is set 1's reading at the zero face, so
+    set 1's error there is identically 0 (:data:`ZERO_READING`: all 0, U = 0 by
+    definition); another set's error there is its own reading there against the zero
+    reading (:data:`OTHER_SET`: all 1); the mean over the sets takes in both
+    (:func:`mean_zero_share`)."""
+
+    own: float
+    zero: float
+    drift: float
+
+
+# set 1 at the zero face: the zero reading against itself, 0 by definition
+ZERO_READING = ZeroFaceShare(0.0, 0.0, 0.0)
+# a later set at the zero face: its own reading there against the zero reading
+OTHER_SET = ZeroFaceShare(1.0, 1.0, 1.0)
+
+
+def mean_zero_share(directions) -> ZeroFaceShare:
+    """The mean over the sets at the zero face (the certificate's position z).
+
+    The mean is Σ w_s e_s with the weight w_s of each set (1/m, or 1/(2·m_d) for the mean of
+    the two directions' means), and set 1's e_1 at the zero face is 0: at that face the mean
+    is Σ_{s≥2} w_s x_s − (1 − w_1)·x_z. Its noise variance is σ²(1/m_eff − w_1²) from the
+    other sets' readings, whose input is σ/√m_eff (so ``own`` = √(1 − w_1²·m_eff)), and
+    (1 − w_1)²σ² from the zero reading; of the m sets' drifts (each d/√m in the mean) set
+    1's is not in it (√(1 − 1/m)). One set: all 0 (the zero reading itself); two sets:
+    σ²/2 (as the pattern "1 elsewhere, 0 at the zero face" happened to give); m sets of one
+    direction: σ²(m − 1)/m, not σ²/m."""
+    d = np.asarray(directions)
+    m = d.size
+    both = bool(np.any(d > 0) and np.any(d < 0))
+    w1 = 1.0 / (2.0 * int(np.sum(d == d[0]))) if both else 1.0 / m
+    own = math.sqrt(max(0.0, 1.0 - w1 * w1 * _effective_sets(d)))
+    return ZeroFaceShare(own, 1.0 - w1, math.sqrt(1.0 - 1.0 / m))
+
+
+def _at_zero(zero: int, n: int, value: float) -> np.ndarray:
+    """A sensitivity of 1 at every face and ``value`` at the zero face."""
+    out = np.ones(n)
+    out[zero] = value
+    return out
+
+
+def repeated_readings_components(result: PolygonResult, share: ZeroFaceShare | None = None
+                                 ) -> list[BudgetComponent]:
     """With n readings at each face (setting *readings per point*): the standard deviation of
     the mean s/√n of each face's encoder and autocollimator readings, carried to the mean
     over the sets (√(Σ u²)/m), and at the zero reading that every error shares; Type A with
@@ -161,16 +211,17 @@ def repeated_readings_components(result: PolygonResult) -> list[BudgetComponent]
         return []
     n = result.repeats.n
     zero = _zero_index(result)
-    not_zero = np.ones(result.faces)
-    not_zero[zero] = 0.0
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     return [
         BudgetComponent(QT_TR_NOOP("Repeated readings (s/√n)"), "A", "normal",
-                        np.sqrt(np.sum(u**2, axis=0)) / u.shape[0], 1.0, 1.0, float(n - 1),
+                        np.sqrt(np.sum(u**2, axis=0)) / u.shape[0], 1.0,
+                        _at_zero(zero, result.faces, share.own), float(n - 1),
                         message(QT_TR_NOOP("s/√n of the {n} encoder and autocollimator readings "
                                            "at each face, over the sets; ν = {dof}"),
                                 n=n, dof=n - 1)),
         BudgetComponent(QT_TR_NOOP("Repeated readings at the zero face (s/√n)"), "A", "normal",
-                        float(u[0, zero]), 1.0, not_zero, float(n - 1),
+                        float(u[0, zero]), 1.0, _at_zero(zero, result.faces, share.zero),
+                        float(n - 1),
                         message(QT_TR_NOOP("s/√n of the {n} readings at face {face} of set 1, "
                                            "shared by every set"), n=n, face=result.zero_face),
                         common=True)]
@@ -185,18 +236,17 @@ def _noise_from_sets(result: PolygonResult) -> bool:
     return pooled_repeatability(corrected, directions) is not None
 
 
-def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0
+def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: float = 0.0,
+                      share: ZeroFaceShare | None = None
                       ) -> tuple[list[BudgetComponent], float]:
     """The reading noise of the mean and of the shared zero reading; also the noise figure
     (``stated_noise``: the setting's σ of a reading, used when the readings cannot evaluate
-    it; 0: not stated)."""
+    it; 0: not stated). ``share``: how they enter at the zero face (None: the mean's)."""
     directions = np.array([s.direction for s in result.sets])
     m_eff = _effective_sets(directions)
     corrected = np.array([s.corrected_error_arcsec for s in result.sets])
     repeat = pooled_repeatability(corrected, directions)
-    ones = np.ones(n)
-    not_zero = ones.copy()
-    not_zero[zero] = 0.0
+    share = mean_zero_share(directions) if share is None else share
     if repeat is not None:
         s_i, sets_dof = repeat
         noise = float(np.sqrt(np.mean(s_i**2)))
@@ -237,15 +287,16 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
                 "left over its 3 unknowns: {why}). Measure a direction twice, or give vertical "
                 "readings that vary on 4 faces or more, or state the σ of a reading in the "
                 "settings"), why=_why_no_fit(result)))
-    mean_sensitivity = ones if len(result.sets) > 1 else not_zero
     return [
         BudgetComponent(message(name, sets=len(result.sets)),
-                        evaluation, "normal", noise / math.sqrt(m_eff), 1.0, mean_sensitivity, dof,
+                        evaluation, "normal", noise / math.sqrt(m_eff), 1.0,
+                        _at_zero(zero, n, share.own), dof,
                         message(QT_TR_NOOP("{note}, divided by √{m}"), note=note, m=f"{m_eff:g}"),
                         dof_group="repeatability"),
         BudgetComponent(message(QT_TR_NOOP("Zero reading (face {face}, set 1)"),
                                 face=result.zero_face), evaluation, "normal", noise,
-                        1.0, not_zero, dof, QT_TR_NOOP("one reading shared by every set: not "
+                        1.0, _at_zero(zero, n, share.zero), dof,
+                        QT_TR_NOOP("one reading shared by every set: not "
                                                        "reduced"), common=True,
                         dof_group="repeatability"),
     ], noise
@@ -322,16 +373,16 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
         common=True)]
 
 
-def _drift_component(result: PolygonResult, noise: float, n: int, zero: int) -> list[BudgetComponent]:
+def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
+                     share: ZeroFaceShare | None = None) -> list[BudgetComponent]:
     drifts = np.array([s.closure_drift_arcsec for s in result.sets
                        if s.closure_drift_arcsec is not None])
     if drifts.size == 0:
         return []
     excess = max(0.0, float(np.mean(drifts**2)) - 2.0 * noise**2)
     half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
-    sensitivity = np.ones(n)
-    if len(result.sets) == 1:
-        sensitivity[zero] = 0.0
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
+    sensitivity = _at_zero(zero, n, share.drift)
     how = (QT_TR_NOOP("spread linearly and removed, half the drift left") if result.spread_drift
            else QT_TR_NOOP("not removed, up to the whole drift"))
     return [BudgetComponent(
@@ -363,22 +414,26 @@ def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> li
 
 
 def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
-                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
+                   settings: Mapping[str, Any] | None = None, *,
+                   share: ZeroFaceShare | None = None) -> UncertaintyBudget:
     """The budget of the mean corrected error, with the stated inputs of the ``settings``
     ``result`` was analysed with (None: the defaults): the tilt bound when the tilt is not
     identified, the σ of a reading when the readings cannot evaluate it, the laboratory's
-    CMC as the floor."""
+    CMC as the floor. ``share``: how the readings at the zero face enter there (None: the
+    mean's, :func:`mean_zero_share`; one set's: :data:`ZERO_READING`, :data:`OTHER_SET`)."""
     stated = settings or {}
     n = result.faces
     zero = _zero_index(result)
+    share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
+    # the encoder's two readings a_i and a_z: at the zero face the zero reading's share
     pair = np.full(n, math.sqrt(2.0))
-    pair[zero] = 0.0
+    pair[zero] = math.sqrt(2.0) * share.zero
     components = _standard_components(metadata, zero, n)
     noise_components, noise = _noise_components(
-        result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0))
+        result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0), share)
     components += noise_components
     if not _noise_from_sets(result):
-        components += repeated_readings_components(result)
+        components += repeated_readings_components(result, share)
     u_pyr = _pyramidal_uncertainty(result)
     if u_pyr is not None:
         components.append(BudgetComponent(
@@ -388,7 +443,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     components += _unidentified_tilt_component(
         result, n, zero, float(stated.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0))
     components += _roll_component(result, result.ac_roll_arcmin, n)
-    components += _drift_component(result, noise, n, zero)
+    components += _drift_component(result, noise, n, zero, share)
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))
@@ -401,6 +456,7 @@ PYRAMIDAL_INPUT = QT_TR_NOOP("Pyramidal correction (ψ, ω)")
 #: the inputs of the mean over the sets that one set carries √m-fold (their templates)
 _PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
                    "Autocollimator reading noise (mean of {sets} sets)",
+                   "Reading noise, stated (mean of {sets} sets)",
                    "Repeated readings (s/√n)", "Closure drift", "Pyramidal correction (ψ, ω)")
 
 
@@ -409,36 +465,55 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
     """The budget of each error array of the JSON. ``mean_corrected_error_arcsec``: the
     certificate's. The arrays of every set (``error_arcsec`` before the pyramidal
     correction, ``pyramidal_error_arcsec`` the correction's own, ``corrected_error_arcsec``),
-    set after set: one set's budget — with one set the certificate's; with m sets the
-    inputs averaged over the sets (repeatability, reading noise, drift, tilt fits) taken
-    √m_eff (√m) times larger, as for one set of them."""
+    set after set: each set's own budget — the inputs averaged over the sets (repeatability,
+    reading noise, drift, tilt fits) taken √m_eff (√m) times larger, as for one set of
+    them. At the zero face set 1's error is the zero reading against itself, 0 by
+    definition: U = 0 there; every other set's error there is its own reading against the
+    zero reading, with the noise of both (:class:`ZeroFaceShare`). With one set, the
+    certificate's budget."""
     from models.certificate.uncertainty_json import PointUncertainty
 
     full = polygon_budget(result, metadata, settings)
     m = len(result.sets)
-    m_eff = _effective_sets(np.array([s.direction for s in result.sets]))
-    one = full
-    if m > 1:
-        comps = []
-        for c in full.components:
-            template = getattr(c.name, "template", c.name)
-            if template in _PER_SET_SCALED:
-                factor = math.sqrt(m_eff if template.startswith(("Repeatability (mean",
-                                                                  "Autocollimator")) else m)
-                c = dataclasses.replace(c, value=np.asarray(c.value, dtype=float) * factor)
-            comps.append(c)
-        one = UncertaintyBudget(tuple(comps), full.points, full.probability, full.unit)
+    first, later = (_one_set(polygon_budget(result, metadata, settings, share=share), result)
+                    for share in (ZERO_READING, OTHER_SET))
 
-    def part(keep) -> UncertaintyBudget:
-        return UncertaintyBudget(tuple(c for c in one.components
+    def part(budget: UncertaintyBudget, keep, floor: float) -> UncertaintyBudget:
+        return UncertaintyBudget(tuple(c for c in budget.components
                                        if keep(getattr(c.name, "template", c.name)
                                                == PYRAMIDAL_INPUT)),
-                                 one.points, one.probability, one.unit)
+                                 budget.points, budget.probability, budget.unit, floor)
 
-    return {"error_arcsec": PointUncertainty.repeated(part(lambda pyr: not pyr), m),
-            "pyramidal_error_arcsec": PointUncertainty.repeated(part(lambda pyr: pyr), m),
-            "corrected_error_arcsec": PointUncertainty.repeated(one, m),
+    def sets(keep, floor: float) -> PointUncertainty:
+        budgets = [part(first, keep, floor)] + [part(later, keep, floor)] * (m - 1)
+        return PointUncertainty(np.concatenate([b.expanded for b in budgets]),
+                                np.concatenate([b.coverage_factors for b in budgets]))
+
+    # the laboratory's CMC is a floor on an encoder error's U, not on the correction's own
+    return {"error_arcsec": sets(lambda pyr: not pyr, full.floor),
+            "pyramidal_error_arcsec": sets(lambda pyr: pyr, 0.0),
+            "corrected_error_arcsec": sets(lambda pyr: True, full.floor),
             "mean_corrected_error_arcsec": full}
+
+
+def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBudget:
+    """``budget`` (of the mean over the sets) for one set of them: the inputs the mean
+    averages over the sets taken √m_eff (reading noise) or √m (the others) times larger."""
+    m = len(result.sets)
+    if m == 1:
+        return budget
+    m_eff = _effective_sets(np.array([s.direction for s in result.sets]))
+    comps = []
+    for c in budget.components:
+        template = getattr(c.name, "template", c.name)
+        if template in _PER_SET_SCALED:
+            factor = math.sqrt(m_eff if template.startswith(("Repeatability (mean",
+                                                              "Autocollimator",
+                                                              "Reading noise")) else m)
+            c = dataclasses.replace(c, value=np.asarray(c.value, dtype=float) * factor)
+        comps.append(c)
+    return UncertaintyBudget(tuple(comps), budget.points, budget.probability, budget.unit,
+                             budget.floor)
 
 
 def not_stated(result: PolygonResult) -> list[str]:
@@ -469,6 +544,25 @@ def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadat
                        "{grade}: make them agree"),
             item_grade=metadata.item_grade, grade=result.grade))
     return tol
+
+
+def zero_reading_statement(result: PolygonResult) -> str:
+    """Which figure is zero by definition, and so has U = 0: the zero reading (face z of set
+    1), from which every error is taken. With one set that is the results' position z
+    (printed "reference point, by definition"); with several, position z is the mean over
+    the sets, which takes in the other sets' readings at face z against the zero reading:
+    not zero by definition, so it has an error and a U (:func:`mean_zero_share`)."""
+    if len(result.sets) == 1:
+        return message(QT_TR_NOOP(
+            "U is zero only at the zero reading, face {face}: every error is taken from that "
+            "reading, so the error at position {face} is zero by definition (reference "
+            "point)."), face=result.zero_face)
+    return message(QT_TR_NOOP(
+        "U is zero only at the zero reading, face {face} of set 1: every error is taken from "
+        "that reading, so set 1's own error there is zero by definition. Position {face} of "
+        "the results is the mean over the {sets} sets and takes in the other sets' readings "
+        "at face {face}, each measured against the zero reading: its error and its U are not "
+        "zero."), face=result.zero_face, sets=len(result.sets))
 
 
 def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
@@ -588,9 +682,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                               residual_figure(result)),
         warnings=result.warnings,
         statements=(
-            message(QT_TR_NOOP("U is zero at face {face} of set 1: every error is taken from "
-                               "that reading, so its own error is zero by definition."),
-                    face=result.zero_face),
+            zero_reading_statement(result),
             QT_TR_NOOP("Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the "
                        "method's reference; the allowed pyramidal tilt is derived from them (a "
                        "third of the accuracy, worst case over the tilt direction)."),

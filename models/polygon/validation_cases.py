@@ -51,8 +51,9 @@ def polygon_budget_trials(trials: int, rng: np.random.Generator, directions=(1, 
         result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rows).parse(), settings)
         deviations.append(result.mean_corrected_arcsec - rig.truth_arcsec())
         budgets.append(polygon_budget(result, meta).combined)
-    # face 1 is the zero: its error is zero by definition in set 1, and the budget's
-    # simple pattern there is not compared
+    # face 1 is the zero: its error is zero by definition in set 1 (one set: U = 0 there,
+    # no ratio to take); the mean's U there is checked against its scatter in
+    # tests/models/polygon/test_polygon_zero_reading.py
     return np.array(deviations)[:, 1:], np.array(budgets)[:, 1:]
 
 

@@ -556,10 +556,6 @@
         <translation>{tilt}（按倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值：{seed}）</translation>
     </message>
     <message>
-        <source>U is zero at face {face} of set 1: every error is taken from that reading, so its own error is zero by definition.</source>
-        <translation>第 1 测回第 {face} 面处 U 为零：所有误差均以该读数为起点，按定义其自身误差为零。</translation>
-    </message>
-    <message>
         <source>Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method&apos;s reference; the allowed pyramidal tilt is derived from them (a third of the accuracy, worst case over the tilt direction).</source>
         <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
     </message>
@@ -6346,6 +6342,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <source>repeatability of the readings</source>
         <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
         <translation>读数重复性</translation>
+    </message>
+    <message>
+        <source>U is zero only at the zero reading, face {face}: every error is taken from that reading, so the error at position {face} is zero by definition (reference point).</source>
+        <translation>仅在零位读数（第 {face} 面）处 U 为零：所有误差均以该读数为起点，故位置 {face} 的误差按定义为零（参考点）。</translation>
+    </message>
+    <message>
+        <source>U is zero only at the zero reading, face {face} of set 1: every error is taken from that reading, so set 1&apos;s own error there is zero by definition. Position {face} of the results is the mean over the {sets} sets and takes in the other sets&apos; readings at face {face}, each measured against the zero reading: its error and its U are not zero.</source>
+        <translation>仅在零位读数（第 1 测回第 {face} 面）处 U 为零：所有误差均以该读数为起点，故第 1 测回在该处的误差按定义为零。结果表中位置 {face} 是 {sets} 个测回的平均，包含其他测回在第 {face} 面的读数，它们均相对零位读数测得：该位置的误差及其 U 不为零。</translation>
     </message>
     <message>
         <source>Autocollimator set-up</source>

@@ -136,7 +136,7 @@ def test_17025_statements_on_every_certificate(key):
     assert "cross-checked by a Monte Carlo" not in flat
     assert "4.2.3" in flat and "conditional pass" in flat  # the rule's own zones
     if key in ZEROED_AT_ONE_OF_ITS_READINGS:  # says why the error there is zero by definition
-        assert "U is zero at" in flat
+        assert re.search(r"U is zero (only )?at", flat)
     if key == "polygon":
         assert "Table 1 of Tian et al. (2015)" in flat
     report = kind.certificate_document(result, replace(meta, document_type="test"))
