@@ -53,7 +53,9 @@ def test_no_edit_after_a_snapshot_reaches_it(n, seed, before, after):
         assert [taken.text(r, c) for r in range(taken.row_count)
                 for c in range(len(COLUMNS))] == [cell for row in rows for cell in row]
         same(taken.parse(), parsed)
-        assert sheet.text(0, 0) == "99.5" and taken.text(0, 0) == rows[0][0]
+        assert sheet.text(0, 0) == "99.5"
+        if rows:  # every row removed before the snapshot: it holds none, as it should
+            assert taken.text(0, 0) == rows[0][0]
 
 
 def test_a_cell_typed_replaces_its_row_so_the_snapshot_keeps_the_old_one():
