@@ -71,6 +71,7 @@ from models.certificate.builder import (
 from models.certificate.document import (
     CertificateDocument,
     Table,
+    gum_pair,
     reference_standard_components,
     resolution_component,
 )
@@ -613,10 +614,13 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                                QT_TR_NOOP("Set {set} (reverse, from face {face}) closure"),
                                set=i, face=s.start_face), closure, ""))
         if s.tilt is not None:
+            # each to its U's last digit (GUM 7.2.6), U to two significant digits
             rows_p.append((message(QT_TR_NOOP("Set {set} pyramidal tilt ψ"), set=i),
-                           f"{s.tilt.psi_arcsec:.1f}\"", f"{k_tilt * s.tilt.u_psi_arcsec:.2f}\""))
+                           *gum_pair(s.tilt.psi_arcsec, k_tilt * s.tilt.u_psi_arcsec, "\"",
+                                     fallback=1)))
             rows_p.append((message(QT_TR_NOOP("Set {set} tilt direction ω"), set=i),
-                           f"{s.tilt.omega_deg:.1f}°", f"{k_tilt * s.tilt.u_omega_deg:.2f}°"))
+                           *gum_pair(s.tilt.omega_deg, k_tilt * s.tilt.u_omega_deg, "°",
+                                     fallback=1)))
     parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
                         f"U (k = {k_tilt:.2f}, ν = {nu_tilt})" if any(

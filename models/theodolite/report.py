@@ -89,7 +89,7 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text
+from models.uncertainty.conformity import expanded_text, uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -292,6 +292,15 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
 MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
 
 
+def _degrees_to_its_u(value_deg: float, expanded_arcsec: float, fallback: int) -> str:
+    """A parameter in degrees rounded to the last digit of its U (GUM 7.2.6: U to two
+    significant digits, the value to the same decimal), U given in arcseconds: ψ = 5.82625°
+    with U = 6.3" (0.0018°) is 5.8263°; without a U, ``fallback`` decimals."""
+    if not (math.isfinite(expanded_arcsec) and expanded_arcsec > 0):
+        return f"{value_deg:.{fallback}f}°"
+    return f"{value_deg:.{uncertainty_decimals(expanded_arcsec / 3600.0)}f}°"
+
+
 def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetadata,
                             settings: Mapping[str, Any] | None = None
                             ) -> dict[str, UncertaintyBudget]:
@@ -323,9 +332,11 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     parameters = Table(
         QT_TR_NOOP("Set-up parameters identified"), (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
                                                      f"U (k = {k:.2f}, ν = {nu})"),
-        [(QT_TR_NOOP("Axis tilt ψ"), f"{s.psi_deg:.5f}°", expanded_text(u2[0])),
-         (QT_TR_NOOP("Tilt direction α"), f"{s.alpha_deg:.4f}°", expanded_text(u2[1])),
-         (QT_TR_NOOP("Mirror normal β"), f"{s.beta_deg:.5f}°", expanded_text(u2[2])),
+        [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0])),
+         (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
+          expanded_text(u2[1])),
+         (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
+          expanded_text(u2[2])),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(
              ident.method, QT_TR_NOOP("{method} readings")), method=ident.method), ""),
          (QT_TR_NOOP("R² of the fit"), f"{ident.r_squared:.8f}", ""),

@@ -424,8 +424,9 @@ def test_parameters_carry_their_printed_u_and_k_and_summary_figures_their_interv
     tree = etree.fromstring(issued["theodolite"][3].read_bytes())
     psi = next(q for q in tree.iterfind(".//dcc:quantity[@refType='anglebench_setupParameter']", NS)
                if q.findtext("dcc:name/dcc:content", namespaces=NS) == "Axis tilt ψ")
-    # printed: 5.82625° with U 6.3" at k = 2.07 (the parameters' own k, not the curve's)
-    assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.82625
+    # printed: 5.8263° with U 6.3" (0.0018°: the value to U's last digit, GUM 7.2.6) at
+    # k = 2.07 (the parameters' own k, not the curve's)
+    assert float(psi.findtext("si:real/si:value", namespaces=NS)) == 5.8263
     assert psi.findtext("si:real/si:unit", namespaces=NS) == r"\degree"
     assert float(psi.findtext(".//si:valueExpandedMU", namespaces=NS)) == pytest.approx(6.3 / 3600)
     assert float(psi.findtext(".//si:coverageFactor", namespaces=NS)) == 2.07
