@@ -78,7 +78,10 @@ def test_certificate_of_each_sample_carries_its_figures(key):
         assert re.sub(r"\s+", " ", row[1]) in flat
     json_out = kind.to_json(result)
     if key == "theodolite":
-        assert f"{json_out['psi_deg']:.5f}°" in flat
+        # printed to its U's last digit (U = 6.3": 0.0018°, so 4 decimals; GUM 7.2.6)
+        printed = float(document.parameters.rows[0][1].rstrip("°"))
+        assert f"{printed:.4f}°" in flat
+        assert printed == pytest.approx(json_out["psi_deg"], abs=0.5e-4)
     if key == "polygon":
         assert f"{json_out['pyramidal_tilt_arcsec']:.1f}\"" in flat
     if key == "fringe":
@@ -269,8 +272,8 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     header = params[0]
     assert header[:2] == ["Parameter", "Value"] and "Value: unit" in header
     psi = _row_named(params, "Axis tilt ψ")
-    assert isinstance(psi[1], float) and psi[1] == pytest.approx(
-        result.identification.setup.psi_deg, abs=5e-6)
+    assert isinstance(psi[1], float) and psi[1] == pytest.approx(  # to U's last digit, 1e-4°
+        result.identification.setup.psi_deg, abs=5e-5)
     assert psi[header.index("Value: unit")] == "°"
     beta = _row_named(params, "Mirror normal β")
     assert beta[1] < 0 and beta[1] == pytest.approx(result.identification.setup.beta_deg, abs=5e-6)
