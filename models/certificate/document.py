@@ -242,7 +242,9 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             d = significant_decimals(max(lower, conformity.expanded)) or digits
             value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
                      f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
-            low, high = conformity.interval_low, conformity.interval_high
+            # the ends as a reader computes them from the printed value and U
+            low = max(0.0, round(conformity.value, d) - round(lower, d))
+            high = round(conformity.value, d) + round(conformity.expanded, d)
             measured = float(getattr(conformity.monte_carlo, "measured", conformity.value))
             # what the value was made from and the interval's ends, first in the note (the
             # figure's cell stays figures, which the results workbook reads as numbers)

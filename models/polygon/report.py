@@ -676,7 +676,10 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         withheld="" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
         point_names=[message(QT_TR_NOOP("position {position}"), position=i)
                      for i in range(1, result.faces + 1)],
-        not_stated=not_stated(result))
+        not_stated=not_stated(result),
+        # the curve judged named: the results table's mean over the sets (not one set's)
+        what=(QT_TR_NOOP("corrected error (the results table's mean over the sets)")
+              if len(result.sets) > 1 else QT_TR_NOOP("corrected error")))
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,

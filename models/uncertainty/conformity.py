@@ -669,8 +669,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))
     measured = float(getattr(mc, "measured", x))
-    figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{max(0.0, x - lower):.{d}f}{q}",
-                   high=f"{x + upper:.{d}f}{q}", u=interval,
+    # the ends as a reader computes them from the printed value and U (0.94 − 0.93 = 0.01)
+    shown = round(x, d)
+    figures = dict(what=what, value=f"{x:.{d}f}{q}",
+                   low=f"{max(0.0, shown - round(lower, d)):.{d}f}{q}",
+                   high=f"{shown + round(upper, d):.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
     if f"{measured:.{d}f}" == f"{x:.{d}f}":  # as measured (positioning's E/2), or the
         # noise's median excess below the digits shown

@@ -556,6 +556,10 @@
         <translation>{tilt}（按倾斜方向的最不利情况；田留德等 2015 年论文 ω = 90° 时的数值：{seed}）</translation>
     </message>
     <message>
+        <source>corrected error (the results table&apos;s mean over the sets)</source>
+        <translation>修正后误差（结果表中各测回的平均值）</translation>
+    </message>
+    <message>
         <source>Encoder grades and their accuracy: Table 1 of Tian et al. (2015), the method&apos;s reference; the allowed pyramidal tilt is derived from them (a third of the accuracy, worst case over the tilt direction).</source>
         <translation>编码器准确度等级及其准确度：见本方法参考文献 Tian 等 (2015) 表 1；允许塔差由其导出（取准确度的三分之一，按塔差方向的最不利情况）。</translation>
     </message>
