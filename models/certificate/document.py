@@ -28,6 +28,7 @@ from models.uncertainty.conformity import (
     REFERENCE_POINT_TEXT,
     Conformity,
     asymmetric_text,
+    printed_interval,
     significant_decimals,
     uncertainty_decimals,
 )
@@ -242,10 +243,8 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             d = significant_decimals(max(lower, conformity.expanded)) or digits
             value = (f"{conformity.value:.{d}f}{unit}\n"  # a line each: never broken
                      f"{asymmetric_text(lower, conformity.expanded, unit, d)}")
-            # the ends as a reader computes them from the printed value and U
-            low = max(0.0, round(conformity.value, d) - round(lower, d))
-            high = round(conformity.value, d) + round(conformity.expanded, d)
-            measured = float(getattr(conformity.monte_carlo, "measured", conformity.value))
+            low, high = printed_interval(conformity.value, lower, conformity.expanded, d)
+            measured = conformity.measured
             # what the value was made from and the interval's ends, first in the note (the
             # figure's cell stays figures, which the results workbook reads as numbers)
             note = joined([message(QT_TR_NOOP("interval {low} … {high}"),

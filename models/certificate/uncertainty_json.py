@@ -75,8 +75,7 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "value": _number(conformity.value),
         # the measured figure the value was estimated from (half the measured peak-to-peak:
         # noise widens it, so it lies above the value)
-        "measured": _number(conformity.monte_carlo.measured
-                            if conformity.monte_carlo is not None else conformity.value),
+        "measured": _number(conformity.measured),
         "interval_low": _number(conformity.interval_low),
         "interval_high": _number(conformity.interval_high),
         # the Monte Carlo the interval came from (seeded from the readings: rerun, the same)

@@ -476,8 +476,10 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
 
     full = polygon_budget(result, metadata, settings)
     m = len(result.sets)
-    first, later = (_one_set(polygon_budget(result, metadata, settings, share=share), result)
-                    for share in (ZERO_READING, OTHER_SET))
+    first = _one_set(polygon_budget(result, metadata, settings, share=ZERO_READING), result)
+    # a later set's budget only where there is a later set
+    later = (_one_set(polygon_budget(result, metadata, settings, share=OTHER_SET), result)
+             if m > 1 else first)
 
     def part(budget: UncertaintyBudget, keep, floor: float) -> UncertaintyBudget:
         return UncertaintyBudget(tuple(c for c in budget.components

@@ -75,6 +75,7 @@ from models.certificate.builder import (
 from models.certificate.document import (
     CertificateDocument,
     Table,
+    gum_pair,
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
@@ -89,7 +90,7 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text, uncertainty_decimals
+from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -166,12 +167,12 @@ def _pooled_repeats(result: TheodoliteResult) -> tuple[float, int, int] | None:
 
 
 def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: float,
-                         stated: bool, governs: str, nu: float) -> str:
+                         stated: bool, governs: str, nu: float,
+                         pooled: tuple[float, int, int] | None) -> str:
     """What the reading error's note says: its candidate figures and which governs
     (``governs``: standard, scatter, repeats or both, the standard with the repeats; ``nu``
-    the input's ν)."""
+    the input's ν; ``pooled``: :func:`_pooled_repeats`)."""
     n = result.theta_deg.size
-    pooled = _pooled_repeats(result)
     if pooled is None:  # one reading a point: the texts as they were before repeats counted once
         scatter = message(QT_TR_NOOP("s = {s} (the vertical readings about the fit, {n} "
                                      "readings, ν = {dof}; taken for the azimuth too)"),
@@ -250,7 +251,7 @@ def reading_error_components(result: TheodoliteResult,
     else:
         governs, evaluation, nu, value, divisor, distribution = (
             "scatter", "A", float(dof), s, 1.0, "normal")
-    note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu)
+    note = _reading_error_notes(result, s, dof, u_std, bool(stated), governs, nu, pooled)
     own = (QT_TR_NOOP("{governs}; the point's own reading, one value per point")
            if pooled is None else
            QT_TR_NOOP("{governs}; the point's own mean, one value per point"))
@@ -293,12 +294,10 @@ MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
 
 
 def _degrees_to_its_u(value_deg: float, expanded_arcsec: float, fallback: int) -> str:
-    """A parameter in degrees rounded to the last digit of its U (GUM 7.2.6: U to two
-    significant digits, the value to the same decimal), U given in arcseconds: ψ = 5.82625°
-    with U = 6.3" (0.0018°) is 5.8263°; without a U, ``fallback`` decimals."""
-    if not (math.isfinite(expanded_arcsec) and expanded_arcsec > 0):
-        return f"{value_deg:.{fallback}f}°"
-    return f"{value_deg:.{uncertainty_decimals(expanded_arcsec / 3600.0)}f}°"
+    """A parameter in degrees rounded to the last digit of its U given in arcseconds
+    (:func:`gum_pair` with U in degrees): ψ = 5.82625° with U = 6.3" (0.0018°) is 5.8263°;
+    without a U, ``fallback`` decimals."""
+    return gum_pair(value_deg, expanded_arcsec / 3600.0, "°", fallback=fallback)[0]
 
 
 def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetadata,

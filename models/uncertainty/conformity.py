@@ -51,6 +51,7 @@ __all__ = [
     "expanded_text",
     "gum_rounded",
     "half_range_monte_carlo",
+    "printed_interval",
     "probability_conforming",
     "significant_decimals",
     "uncertainty_decimals",
@@ -290,8 +291,9 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     The two are calibrated by simulation, not proven: the coverage achieved over the shapes
     that occur (smooth, rough, a spike, the samples' real curves; noise 0.1 to 2 times the
     half range; 12 to 72 points) is measured by models.validation.half_range and printed
-    (:data:`HALF_RANGE_COVERAGE`). ``seed`` None: made from the readings (:func:`readings_seed`); a curve of
-    more than 16 384 points is judged on every k-th point.
+    (:data:`HALF_RANGE_COVERAGE`). ``seed`` None: made from the readings
+    (:func:`readings_seed`); a curve of more than 16 384 points is judged on every k-th
+    point.
     """
     full = np.asarray(errors, dtype=float)
     stride = max(1, -(-full.size // MAX_MONTE_CARLO_POINTS))
@@ -363,6 +365,13 @@ class Conformity:
         if self.verdict == "not assessed":
             return None
         return self.verdict in ("pass", "conditional pass")
+
+    @property
+    def measured(self) -> float:
+        """The measured figure the value was estimated from: the half range as measured
+        (noise widens it, so it lies above the value); the value itself where it was not
+        estimated so."""
+        return float(getattr(self.monte_carlo, "measured", self.value))
 
     @property
     def lower_half_width(self) -> float:
@@ -669,11 +678,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              message(QT_TR_NOOP("No statement of conformity: {reason}."),
                                      reason=_withheld_text(reasons)))
     measured = float(getattr(mc, "measured", x))
-    # the ends as a reader computes them from the printed value and U (0.94 − 0.93 = 0.01)
-    shown = round(x, d)
-    figures = dict(what=what, value=f"{x:.{d}f}{q}",
-                   low=f"{max(0.0, shown - round(lower, d)):.{d}f}{q}",
-                   high=f"{shown + round(upper, d):.{d}f}{q}", u=interval,
+    low, high = printed_interval(x, lower, upper, d)
+    figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{low:.{d}f}{q}",
+                   high=f"{high:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
     if f"{measured:.{d}f}" == f"{x:.{d}f}":  # as measured (positioning's E/2), or the
         # noise's median excess below the digits shown
@@ -730,6 +737,14 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)
+
+
+def printed_interval(value: float, lower: float, upper: float, d: int) -> tuple[float, float]:
+    """An interval's ends as a reader computes them from the printed value and its
+    half-widths, each to ``d`` decimals (0.94 − 0.93 = 0.01, not the exact end's 0.016
+    rounded to 0.02); never below 0 (a half range)."""
+    shown = round(value, d)
+    return max(0.0, shown - round(lower, d)), shown + round(upper, d)
 
 
 def asymmetric_text(lower: float, upper: float, q: str, d: int) -> str:
