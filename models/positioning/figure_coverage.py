@@ -64,11 +64,15 @@ class FigureCoverage:
         return self.hits / self.tests if self.tests else math.nan
 
     @property
+    def allowed_misses(self) -> int:
+        """The most misses a correct interval at the stated probability gives with
+        probability 1 − ALPHA (binomial, one-sided)."""
+        return int(binom.ppf(1.0 - ALPHA, self.tests, 1.0 - self.probability))
+
+    @property
     def coverage_passes(self) -> bool:
-        """Not more misses than a correct interval at the stated probability would give
-        with probability 1 − ALPHA."""
-        allowed = int(binom.ppf(1.0 - ALPHA, self.tests, 1.0 - self.probability))
-        return self.tests - self.hits <= allowed
+        """Not more misses than :attr:`allowed_misses`."""
+        return self.tests - self.hits <= self.allowed_misses
 
     @property
     def width_ratio(self) -> float:
@@ -145,38 +149,27 @@ def figure_coverage_cases(trials: int, case_type) -> list:
     """One case per figure (``case_type``: models.validation.cases.ValidationCase): its
     interval's coverage of its truth over every study case."""
     study = coverage_study(VALIDATE_CASES, tests_per_case(trials))
-    out = []
-    for key in FIGURES:
-        row = study[key]
-        allowed = int(binom.ppf(1.0 - ALPHA, row.tests, 1.0 - row.probability))
-        out.append(case_type(
-            POSITIONING.title,
-            message(QT_TR_NOOP("interval of {figure} covers its truth ({truth}; μ, σ the true "
-                               "mean and standard deviation at each target)"),
-                    figure=key, truth=message(TRUTHS[key])),
-            COVERAGE_STUDY,
+
+    def case(row: FigureCoverage, what):
+        return case_type(
+            POSITIONING.title, what, COVERAGE_STUDY,
             message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
-                    p=f"{100 * row.probability:.2f}", allowed=allowed, tests=row.tests),
+                    p=f"{100 * row.probability:.2f}", allowed=row.allowed_misses,
+                    tests=row.tests),
             message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
                                "interval's (aim ≤ {limit} ×)"),
                     coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
                     ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
-            row.coverage_passes))
+            row.coverage_passes)
+
+    out = [case(study[key], message(
+        QT_TR_NOOP("interval of {figure} covers its truth ({truth}; μ, σ the true mean and "
+                   "standard deviation at each target)"), figure=key, truth=message(TRUTHS[key])))
+        for key in FIGURES]
     # the decided quantity (half range of both directions' means) is E/2 with E's interval
     # halved: its coverage and width are E's, stated as a case of their own
-    row = study["E"]
-    allowed = int(binom.ppf(1.0 - ALPHA, row.tests, 1.0 - row.probability))
-    out.append(case_type(
-        POSITIONING.title,
-        message(QT_TR_NOOP("interval of the decided quantity (half the peak-to-peak of both "
-                           "directions' mean deviations, E/2, with the interval of E halved) "
-                           "covers its truth (half the range of μ↑ and μ↓)")),
-        COVERAGE_STUDY,
-        message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
-                p=f"{100 * row.probability:.2f}", allowed=allowed, tests=row.tests),
-        message(QT_TR_NOOP("{coverage} % ({missed} missed); width {ratio} × a correct "
-                           "interval's (aim ≤ {limit} ×)"),
-                coverage=f"{100 * row.coverage:.1f}", missed=row.tests - row.hits,
-                ratio=f"{row.width_ratio:.2f}", limit=f"{WIDTH_LIMIT:g}"),
-        row.coverage_passes))
+    out.append(case(study["E"], message(QT_TR_NOOP(
+        "interval of the decided quantity (half the peak-to-peak of both directions' mean "
+        "deviations, E/2, with the interval of E halved) covers its truth (half the range of "
+        "μ↑ and μ↓)"))))
     return out
