@@ -252,7 +252,7 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
                            *((("; ", message(QT_TR_NOOP("measured {measured}"),
                                              measured=f"{measured:.{d}f}{unit}")))
                              if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else ()),
-                           ". ", conformity.quantity])
+                           "; ", conformity.quantity])
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
             note = conformity.quantity

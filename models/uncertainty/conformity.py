@@ -682,8 +682,9 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{low:.{d}f}{q}",
                    high=f"{high:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
-    if f"{measured:.{d}f}" == f"{x:.{d}f}":  # as measured (positioning's E/2), or the
-        # noise's median excess below the digits shown
+    # as measured (positioning's E/2), or the noise's median excess below the digits shown
+    # (0.544 of a measured 0.545 is not "0.545 less 0.000")
+    if f"{measured:.{d}f}" == f"{x:.{d}f}" or float(f"{measured - x:.{d}f}") == 0.0:
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%; noise can only widen a measured range, so the interval "
