@@ -103,6 +103,60 @@ def test_a_common_input_acts_through_its_signed_sensitivity():
     assert shifted.interval_high < mc.interval_high
 
 
+def _fit_modes(theta, orders=(1, 2, 3)):
+    """A fitted model's error directions: a constant and cos, sin of each order."""
+    return [np.ones_like(theta)] + [f(k * theta) for k in orders for f in (np.cos, np.sin)]
+
+
+def test_a_shared_type_a_input_is_the_measurement_s_own_noise_not_counted_twice():
+    """A model curve fitted to noisy readings carries the fit's error, one value along each
+    direction of its parameters for the whole record (Type A, shared by every point). The
+    readings already hold that error: simulated on the measured curve as a pivot, the
+    range's bias is taken off the measured half range; propagated (the curve plus a second
+    draw of it) it was doubled, and the value stated above the measured one. Simulated here
+    from its own first principles: the fit's error drawn with the budget's σ along each mode,
+    truth known."""
+    n = 48
+    theta = np.arange(n) * 2 * np.pi / n
+    truth = 0.2 * np.sin(theta) + 0.05 * np.sin(3 * theta + 0.4)
+    true_half = 0.5 * np.ptp(truth)
+    modes = _fit_modes(theta)
+    sigma = 0.05
+    budget = _budget(n, *(BudgetComponent(f"mode {j}", "A", "normal", sigma * np.abs(m), 1.0,
+                                          np.where(m < 0, -1.0, 1.0), 40.0, common=True,
+                                          dof_group="fit")
+                          for j, m in enumerate(modes)))
+    rng = np.random.default_rng(11)
+    values, measured, hits = [], [], 0
+    for _ in range(80):
+        curve = truth + sum(rng.normal(0.0, sigma) * m for m in modes)
+        mc = half_range_monte_carlo(curve, budget, trials=2000)
+        values.append(mc.value - true_half)
+        measured.append(mc.measured - true_half)
+        hits += mc.interval_low <= true_half <= mc.interval_high
+        assert mc.value <= mc.measured + 1e-12
+    assert np.mean(measured) > 0.02  # the measured half range runs high
+    assert np.mean(values) < 0.5 * np.mean(measured)  # the value takes most of it off
+    assert hits >= 72  # 80 runs at 95.45 %: 72 or more in 99 % of studies
+
+
+def test_a_systematic_value_for_the_whole_run_is_propagated_not_reflected():
+    """An autocollimator roll stated up to ±ρ (Type B, one unknown value ρ·g_i at face i):
+    on a curve with two equal maxima where g is +1 and −1 (cos 2θ, g = cos θ) the range
+    grows as |ρ| either way, so readings with no roll are equally those of a curve whose
+    half range is up to 1 + ρ/2 with the roll read in. Taken out of the curve as drawn (JCGM
+    101), the upper end reaches that; reflected as if the roll were the readings' own noise
+    it would stay at the measured 1.0."""
+    n = 24
+    theta = np.arange(n) * 2 * np.pi / n
+    change = np.cos(theta)
+    roll = BudgetComponent("roll", "B", "rectangular", 0.5 * np.abs(change), math.sqrt(3.0),
+                           np.where(change < 0, -1.0, 1.0), math.inf, common=True)
+    mc = half_range_monte_carlo(np.cos(2 * theta), _budget(n, _noise(0.005), roll))
+    assert mc.measured == pytest.approx(1.0)
+    assert 1.2 <= mc.interval_high <= 1.26
+
+
 def test_a_type_a_input_of_few_degrees_of_freedom_widens_the_interval():
     curve = np.sin(np.arange(12) * 2 * np.pi / 12)
     known = half_range_monte_carlo(curve, _budget(12, _noise(0.1)), seed=2)
