@@ -11,9 +11,9 @@ The bench:
   shaft's true turn plus ``E`` plus its own reading noise;
 * a polygon whose face k stands square to the autocollimator at the true turn
   ``(k − 1)·360°/n + dev_k`` (dev from face 1, so face 1 exact); its certificate states
-  ``dev_k`` with an error drawn afresh each run (standard uncertainty ``u_polygon``: the
-  certificate's U95 / 2, 0 at face 1); the polygon sits on the shaft with its own axis tilted
-  by ψ towards ω;
+  ``dev_k`` with an error drawn afresh each run, face by face (standard uncertainty
+  ``u_polygon``: the certificate's U95 / 2, as a certificate "from face 1" states it; 0 at
+  face 1); the polygon sits on the shaft with its own axis tilted by ψ towards ω;
 * the shaft turns about the lab's z; the autocollimator (line of sight along x, levelled,
   rolled about its line of sight by a ρ drawn each run within ±``roll_bound_arcmin``) reads a
   face normal's azimuth (horizontal, rising as the shaft over-turns) and elevation
@@ -89,7 +89,7 @@ class Bench:
         step = 360.0 / n
         dev = self.face_dev_arcsec()
         certificate = dev + rng.normal(0.0, self.u_polygon_arcsec, n)
-        certificate -= certificate[0]  # stated from face 1: face 1 exact
+        certificate[0] = dev[0]  # stated from face 1: face 1 exact (0), each other face ±u
         # face normals with the shaft at 0: turning by the face's true angle brings it to +x
         beta = -np.radians(np.arange(n) * step + dev / 3600.0)
         normals = np.vstack([np.cos(beta), np.sin(beta), np.zeros(n)])

@@ -389,8 +389,9 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
     sensitivity = _at_zero(zero, n, share.drift)
     # d/√m, not d·√(Σ w_s²) of the mean's own weights: with unequal sets per direction an
     # approximation, simulated (tests/models/polygon/test_polygon_unequal_sets.py): U of the
-    # mean covers 94–95 % for 3 + 1, 2 + 1, 4 + 2 (the weights would raise it 0.6 % on
-    # average), the sets' scatter in the noise input holding most of the drift anyway
+    # mean covers 97–98 % for 3 + 1, 2 + 1, 4 + 2 with a drift of 0.15″ a set, as for 2 + 2
+    # (the weights would raise it 0.6 % on average), the sets' scatter in the noise input
+    # holding most of the drift anyway
     how = (QT_TR_NOOP("spread linearly and removed, half the drift left") if result.spread_drift
            else QT_TR_NOOP("not removed, up to the whole drift"))
     return [BudgetComponent(

@@ -5,19 +5,24 @@ reverse weigh 1/6, 1/6, 1/6, 1/2. The budget's reading-noise inputs take those w
 (σ/√m_eff, m_eff = 4/(1/m↑ + 1/m↓); at the zero face ``mean_zero_share``), while the closure
 drift and the pyramidal correction's inputs are averaged with 1/m. Simulated from first
 principles (tests/polygon_sets_simulator.py: numpy only, 3-D rotations, a true encoder
-error, a polygon drawn about its certificate, autocollimator noise σ = 0.1″, the encoder's
-0.03″, a drift per set σ_D = 0.15″, a rolled autocollimator) and analysed by the workbench,
-400 runs a design (2026-12-02), positions 2…24 (position 1 in brackets):
+error, a polygon drawn about its certificate (u = 0.1″ a face), autocollimator noise
+σ = 0.1″, the encoder's 0.03″, a rolled autocollimator, each set's own drift σ_D) and
+analysed by the workbench (CLI, JSON), 400 runs a design (2026-12-02), positions 2…24
+(position 1 in brackets):
 
-    design    coverage of U      U / (2 × scatter)
-    3 + 1     0.943 (0.995)      0.98, 0.91–1.05 (1.39)
-    2 + 1     0.953 (0.990)      1.05, 0.95–1.08 (1.44)
-    4 + 2     0.948 (0.978)      1.00, 0.92–1.03 (1.26)
-    2 + 2     0.946 (0.990)      0.98, 0.91–1.02 (1.36)   the control: equal sets
+    design    no drift                               drift per set σ_D = 0.15″
+              coverage       U / (2 × scatter)       coverage       U / (2 × scatter)
+    3 + 1     0.962 (0.980)  1.03, 0.98–1.11 (1.09)  0.976 (0.995)  1.15, 1.06–1.28 (1.39)
+    2 + 1     0.964 (0.980)  1.04, 0.99–1.08 (1.12)  0.973 (0.990)  1.17, 1.10–1.22 (1.44)
+    4 + 2     0.954 (0.950)  1.00, 0.94–1.05 (1.00)  0.975 (0.978)  1.14, 1.07–1.20 (1.26)
+    2 + 2     0.961 (0.973)  1.03, 0.98–1.10 (1.07)  0.977 (0.990)  1.17, 1.09–1.27 (1.36)
+    (2 + 2 is the control: equal sets)
 
-Unequal designs are covered as well as the equal one: the weights 1/m of the drift and
+Unequal designs are covered as well as the equal one: the 1/m weights of the drift and
 pyramidal inputs are no error worth changing figures for (the mean's own weights would raise
-U by 0.6 % on average, 4 % at most, for 3 + 1). Kept here so that it stays right.
+U by 0.6 % on average, 4 % at most, for 3 + 1). With drift U is larger than the scatter
+(1.15): the sets' scatter, the noise input, holds most of the drift, which enters again on
+its own. Kept here so that it stays right.
 """
 
 from __future__ import annotations
@@ -34,9 +39,10 @@ from tests.polygon_sets_simulator import Bench
 RUNS = 200
 
 
-def _study(directions: tuple[int, ...], runs: int, seed: int) -> tuple[np.ndarray, np.ndarray]:
+def _study(directions: tuple[int, ...], drift: float, runs: int, seed: int
+           ) -> tuple[np.ndarray, np.ndarray]:
     """(runs, faces): the mean corrected error − truth, and its U (the certificate's)."""
-    bench = Bench()
+    bench = Bench(drift_sigma_arcsec=drift)
     meta = CertificateMetadata.from_dict(bench.metadata())
     rng = np.random.default_rng(seed)
     deviations, expanded = [], []
@@ -49,21 +55,23 @@ def _study(directions: tuple[int, ...], runs: int, seed: int) -> tuple[np.ndarra
     return np.array(deviations), np.array(expanded)
 
 
-@pytest.mark.slow  # 200 simulated runs a design: ~20 s each
-@pytest.mark.parametrize("directions", [(1, 1, 1, -1), (1, 1, -1)], ids=["3+1", "2+1"])
-def test_u_of_the_mean_covers_the_truth_with_unequal_sets_per_direction(directions):
-    deviations, expanded = _study(directions, RUNS, 7)
+@pytest.mark.slow  # 200 simulated runs a case: ~20 s each
+@pytest.mark.parametrize(("directions", "drift"), [((1, 1, 1, -1), 0.0), ((1, 1, -1), 0.0),
+                                                   ((1, 1, 1, -1), 0.15)],
+                         ids=["3+1", "2+1", "3+1-drift"])
+def test_u_of_the_mean_covers_the_truth_with_unequal_sets_per_direction(directions, drift):
+    deviations, expanded = _study(directions, drift, RUNS, 7)
     covered = np.abs(deviations) <= expanded
     ratio = expanded.mean(axis=0) / (2.0 * deviations.std(axis=0, ddof=1))
     # positions 2…n: 95 % pooled (binomial and the points' correlation: ±1.5 %), each point
-    # within its 200 runs' reach; U / (2 × scatter) about 1 (each point's scatter is known to
-    # ±5 %)
-    assert 0.93 <= covered[:, 1:].mean() <= 0.985, covered[:, 1:].mean()
+    # within its 200 runs' reach; U / (2 × scatter) about 1, not much more (each point's
+    # scatter is known to ±5 %)
+    assert 0.93 <= covered[:, 1:].mean() <= 0.995, covered[:, 1:].mean()
     assert covered[:, 1:].mean(axis=0).min() >= 0.88, covered.mean(axis=0)
-    assert 0.9 <= ratio[1:].mean() <= 1.25, ratio
+    assert 0.9 <= ratio[1:].mean() <= 1.3, ratio
     assert ratio[1:].min() >= 0.8, ratio
     # position 1, the zero face: the mean takes in the later sets' readings there
-    assert covered[:, 0].mean() >= 0.93 and ratio[0] >= 0.9, (covered[:, 0].mean(), ratio[0])
+    assert covered[:, 0].mean() >= 0.92 and ratio[0] >= 0.85, (covered[:, 0].mean(), ratio[0])
 
 
 @pytest.mark.parametrize("directions", [(1, 1, 1, -1), (1, 1, -1), (1, -1, -1, -1, -1)])
