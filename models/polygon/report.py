@@ -141,6 +141,9 @@ def _pyramidal_uncertainty(result: PolygonResult) -> np.ndarray | None:
             [t.u_psi_arcsec**2, t.u_omega_deg**2])
         grad = np.column_stack([d_psi, d_om])
         variances.append(np.clip(np.einsum("ij,jk,ik->i", grad, cov, grad), 0.0, None))
+    # 1/m weights, not the mean's own (1/(2·m_d) with both directions): with unequal sets per
+    # direction an approximation, simulated and immaterial (tests/models/polygon/
+    # test_polygon_unequal_sets.py: this input is ~0 on a levelled bench)
     return np.sqrt(np.sum(variances, axis=0)) / len(result.sets)
 
 
@@ -384,6 +387,11 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
     half_width = math.sqrt(excess) / (2.0 if result.spread_drift else 1.0)
     share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
     sensitivity = _at_zero(zero, n, share.drift)
+    # d/√m, not d·√(Σ w_s²) of the mean's own weights: with unequal sets per direction an
+    # approximation, simulated (tests/models/polygon/test_polygon_unequal_sets.py): U of the
+    # mean covers 97–98 % for 3 + 1, 2 + 1, 4 + 2 with a drift of 0.15″ a set, as for 2 + 2
+    # (the weights would raise it 0.6 % on average), the sets' scatter in the noise input
+    # holding most of the drift anyway
     how = (QT_TR_NOOP("spread linearly and removed, half the drift left") if result.spread_drift
            else QT_TR_NOOP("not removed, up to the whole drift"))
     return [BudgetComponent(
