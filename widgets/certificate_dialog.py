@@ -12,7 +12,7 @@ import datetime as dt
 import re
 from typing import Any
 
-from PySide6.QtCore import QT_TR_NOOP, Qt, Signal
+from PySide6.QtCore import QT_TR_NOOP, QEvent, QSize, Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -28,6 +28,8 @@ from PySide6.QtWidgets import (
     QPlainTextEdit,
     QPushButton,
     QScrollArea,
+    QStyle,
+    QStyleOptionFrame,
     QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
@@ -104,6 +106,67 @@ def _two_lines(text: str) -> str:
     return f"{text[:cut]}\n{text[cut + 1:]}"
 
 
+def _text_width(edit: QLineEdit, text: str) -> int:
+    """The width ``edit`` takes to show ``text`` whole (not elided: "…TRUSTED_CERTIFICAT…")."""
+    option = QStyleOptionFrame()
+    edit.initStyleOption(option)
+    # 2 px a side inside the frame: QLineEdit's own margin around its text
+    contents = QSize(edit.fontMetrics().horizontalAdvance(text) + 4 + 1, edit.fontMetrics().height())
+    margins = edit.textMargins()
+    contents += QSize(margins.left() + margins.right(), 0)
+    return edit.style().sizeFromContents(QStyle.ContentsType.CT_LineEdit, option, contents,
+                                         edit).width()
+
+
+class _Sections(QWidget):
+    """The dialog's groups two a row where the width has room for both side by side, else
+    one below the other: the details never scroll sideways (at 200 % on a 1280×720 screen,
+    640 logical pixels, the Laboratory column was behind a horizontal scroll bar, and in the
+    1100 px screenshot cut in half)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._grid = QGridLayout(self)
+        self._rows: list[tuple[QWidget, QWidget | None]] = []  # (left, right); (wide, None)
+        self.columns = 0
+
+    def add_row(self, left: QWidget, right: QWidget | None = None) -> None:
+        self._rows.append((left, right))
+
+    def two_columns_width(self) -> int:
+        """The least width the groups take two a row."""
+        spacing = self._grid.horizontalSpacing()
+        margins = self._grid.contentsMargins()
+        pairs = [(left, right) for left, right in self._rows if right is not None]
+        lefts = max((left.minimumSizeHint().width() for left, _ in pairs), default=0)
+        rights = max((right.minimumSizeHint().width() for _, right in pairs), default=0)
+        wide = max((left.minimumSizeHint().width() for left, right in self._rows
+                    if right is None), default=0)
+        return max(lefts + spacing + rights, wide) + margins.left() + margins.right()
+
+    def set_columns(self, columns: int) -> None:
+        """The groups two a row (``columns`` 2) or one below the other (1)."""
+        if columns == self.columns:
+            return
+        for left, right in self._rows:
+            for widget in (left, right):
+                if widget is not None:
+                    self._grid.removeWidget(widget)
+        row = 0
+        for left, right in self._rows:
+            if right is None:
+                self._grid.addWidget(left, row, 0, 1, columns)
+            elif columns == 2:
+                self._grid.addWidget(left, row, 0)
+                self._grid.addWidget(right, row, 1)
+            else:
+                self._grid.addWidget(left, row, 0)
+                row += 1
+                self._grid.addWidget(right, row, 0)
+            row += 1
+        self.columns = columns
+
+
 class CertificateDialog(QDialog):
     """Edit certificate metadata; ``lab_defaults_saved`` carries the lab-wide fields."""
 
@@ -131,6 +194,9 @@ class CertificateDialog(QDialog):
     def _group(self, title: str, keys: tuple[str, ...]) -> QGroupBox:
         box = QGroupBox(tr(title))
         form = QFormLayout(box)
+        # a field without room beside its caption goes below it (the decision rule's choice
+        # beside "Trusted certificate for DCCs read (PEM file)" needs ~650 px)
+        form.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapLongRows)
         for key in keys:
             if key == "certificate_number":
                 edit = self._line(key)
@@ -160,7 +226,7 @@ class CertificateDialog(QDialog):
         return box
 
     def _setup_ui(self) -> None:
-        grid = QGridLayout()
+        sections = self.sections = _Sections()
         self.choices: dict[str, QComboBox] = {}
         cert = self._group(QT_TR_NOOP("Certificate"), ("certificate_number", "issue_date", "calibration_date",
                                            "tolerance", "coverage_probability_pct",
@@ -226,7 +292,6 @@ class CertificateDialog(QDialog):
             edit.setToolTip(tip)
             cert.layout().addRow(label, edit)
             self.dcc_signing[name] = edit
-        grid.addWidget(cert, 0, 0)
         lab = self._group(QT_TR_NOOP("Laboratory"), ("lab_name", "lab_address", "lab_accreditation",
                                                     "lab_country", "number_scheme"))
         # the lab's template: a checker signs as well (核验员, JJF 1071's model)
@@ -245,18 +310,19 @@ class CertificateDialog(QDialog):
             "is dated the lab's local date. Empty: ANGLEBENCH_TIMEZONE, else the system's"))
         self.timezone.textEdited.connect(lambda _t: self.timezone.setStyleSheet(""))
         lab.layout().addRow(tr("Time zone"), self.timezone)
-        grid.addWidget(lab, 0, 1)
-        grid.addWidget(self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")), 1, 0)
-        grid.addWidget(self._group(QT_TR_NOOP("Item under test"), (
-            "item_description", "item_manufacturer", "item_model", "item_serial", "item_grade",
-            "item_resolution")), 1, 1)
-        grid.addWidget(self._group(QT_TR_NOOP("Environment and people"), (
-            "temperature_c", "humidity_pct", "operator", "checker", "approver")), 2, 0)
+        sections.add_row(cert, lab)
+        sections.add_row(
+            self._group(QT_TR_NOOP("Customer"), ("customer_name", "customer_address")),
+            self._group(QT_TR_NOOP("Item under test"), (
+                "item_description", "item_manufacturer", "item_model", "item_serial",
+                "item_grade", "item_resolution")))
+        people = self._group(QT_TR_NOOP("Environment and people"), (
+            "temperature_c", "humidity_pct", "operator", "checker", "approver"))
         notes_box = QGroupBox(tr("Remarks printed on the certificate"))
         self.notes = QPlainTextEdit()
         self.notes.setObjectName("notes")
         QVBoxLayout(notes_box).addWidget(self.notes)
-        grid.addWidget(notes_box, 2, 1)
+        sections.add_row(people, notes_box)
 
         standards_box = QGroupBox(tr("Reference standards (their uncertainty enters the budget "
                                      "per reading)"))
@@ -290,7 +356,7 @@ class CertificateDialog(QDialog):
         box_layout = QVBoxLayout(standards_box)
         box_layout.addWidget(self.standards)
         box_layout.addLayout(buttons)
-        grid.addWidget(standards_box, 3, 0, 1, 2)
+        sections.add_row(standards_box)
 
         self.error_label = QLabel()
         self.error_label.setStyleSheet("color: #b00020;")
@@ -308,19 +374,34 @@ class CertificateDialog(QDialog):
         self.buttons.rejected.connect(self.reject)
         # the details scroll, the message and the buttons stay in sight: the dialog fits a
         # 1280×720 screen and 200 % scale (it is ~870 px tall unscrolled)
-        details = QWidget()
-        details.setLayout(grid)
+        sections.set_columns(2)
+        for edit in sections.findChildren(QLineEdit):  # a hint in a field is read whole
+            if edit.placeholderText():
+                edit.setMinimumWidth(_text_width(edit, edit.placeholderText()))
         self.details_area = QScrollArea()
         self.details_area.setWidgetResizable(True)
-        self.details_area.setWidget(details)
+        self.details_area.setWidget(sections)
+        self.details_area.installEventFilter(self)
         layout = QVBoxLayout(self)
         layout.addWidget(self.details_area, 1)
         layout.addWidget(self.error_label)
         layout.addWidget(self.buttons)
-        wanted = details.sizeHint()
+        wanted = sections.sizeHint()
         bar = self.details_area.verticalScrollBar().sizeHint().width()
         fit_to_screen(self, wanted.width() + bar + 40,
                       wanted.height() + self.buttons.sizeHint().height() + 60)
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 - Qt's name
+        if watched is self.details_area and event.type() == QEvent.Type.Resize:
+            self._reflow()
+        return False
+
+    def _reflow(self) -> None:
+        """The groups two a row where the details area has room for both beside a vertical
+        scroll bar, else one below the other."""
+        area = self.details_area
+        room = area.maximumViewportSize().width() - area.verticalScrollBar().sizeHint().width()
+        self.sections.set_columns(2 if room >= self.sections.two_columns_width() else 1)
 
     # -- values -------------------------------------------------------------
     def set_metadata(self, meta: CertificateMetadata) -> None:

@@ -13,6 +13,7 @@ from PySide6.QtWidgets import (
     QDialog,
     QDoubleSpinBox,
     QFrame,
+    QGridLayout,
     QGroupBox,
     QHBoxLayout,
     QHeaderView,
@@ -52,6 +53,18 @@ class _Resized(QObject):
         return False
 
 
+class _Splitter(QSplitter):
+    """A splitter that calls ``resized()`` once it has laid out its panes anew."""
+
+    def __init__(self, orientation, resized) -> None:
+        super().__init__(orientation)
+        self._resized = resized
+
+    def resizeEvent(self, event) -> None:  # noqa: N802 - Qt's name
+        super().resizeEvent(event)
+        self._resized()
+
+
 class WorkbenchView(QWidget):
     """Widgets only: the presenter fills them and reads the settings back."""
 
@@ -84,6 +97,10 @@ class WorkbenchView(QWidget):
                                       "first reading"))
         self.step.valueChanged.connect(lambda v: setattr(self.table, "nominal_step", v))
         self.next_label = QLabel()
+        # both in two lines where the pane is narrow ("下一个 目标位置 +": the Chinese window was
+        # 651 px at the least, wider than 640)
+        self.next_label.setWordWrap(True)
+        self.step_label.setWordWrap(True)
         self.summary = QPlainTextEdit()
         self.summary.setReadOnly(True)
         font = QFont("DejaVu Sans Mono")
@@ -103,8 +120,12 @@ class WorkbenchView(QWidget):
         header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
         self.figures.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        # narrow enough that the summary beside it keeps its lines at 1280×720 (#41: cramped)
-        self.figures.setFixedWidth(250)
+        # narrow enough that the summary beside it keeps its lines at 1280×720 (#41: cramped);
+        # narrower still where the window is (200 % on a 1280×720 screen: 640 px in all),
+        # the summary keeping a few words a line (it was 70 px, a word broken every 5 letters)
+        self.figures.setMaximumWidth(250)
+        self.figures.setMinimumWidth(self.FIGURES_MIN_WIDTH)
+        self.summary.setMinimumWidth(self.SUMMARY_MIN_WIDTH)
         self.warnings = QLabel()
         self.warnings.setWordWrap(True)
         self.warnings.setTextFormat(Qt.TextFormat.PlainText)
@@ -121,14 +142,16 @@ class WorkbenchView(QWidget):
         left = QWidget()
         left_layout = QVBoxLayout(left)
         left_layout.setContentsMargins(0, 0, 0, 0)
-        entry = QHBoxLayout()
-        entry.addWidget(self.readings_label, 1)
-        entry.addWidget(self.next_label)
-        entry.addWidget(self.step_label)
-        entry.addWidget(self.step)
-        left_layout.addLayout(entry)
+        # the caption beside the next row and the step, or above them where the pane is
+        # narrow (at 200 % on a 1280×720 screen they left the caption no width: not shown)
+        self._entry = QGridLayout()
+        self._entry.setContentsMargins(0, 0, 0, 0)
+        self._entry.setColumnStretch(0, 1)
+        self._caption_above: bool | None = None
+        self._place_caption(above=False)
+        left_layout.addLayout(self._entry)
         left_layout.addWidget(self.table, 1)
-        setup_box = QGroupBox()
+        setup_box = self.setup_box = QGroupBox()
         live(setup_box.setTitle, tr("Set-up"))
         setup_layout = QVBoxLayout(setup_box)
         setup_layout.setContentsMargins(2, 2, 2, 2)
@@ -136,11 +159,13 @@ class WorkbenchView(QWidget):
         self.settings_area = QScrollArea()
         self.settings_area.setWidgetResizable(True)
         self.settings_area.setFrameShape(QFrame.Shape.NoFrame)
-        self.settings_area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        # (sideways too, where the window has no room for its widest field: 640 px at 200 %)
         self.settings_area.setWidget(self.settings)
         setup_layout.addWidget(self.settings_area)
         left_layout.addWidget(setup_box)
         _Resized(left, self._share_left_pane)
+        self._left = left
+        self._columns_width = 0  # the width the readings' columns and the set-up ask for
 
         right = QWidget()
         right_layout = QVBoxLayout(right)
@@ -164,12 +189,16 @@ class WorkbenchView(QWidget):
         self.result_splitter.setSizes([270, 590])
         right_layout.addWidget(self.result_splitter, 1)
 
-        splitter = QSplitter(Qt.Orientation.Horizontal)
+        splitter = self.splitter = _Splitter(Qt.Orientation.Horizontal, self._fit_left_pane)
         splitter.addWidget(left)
         splitter.addWidget(right)
         splitter.setStretchFactor(0, 2)
         splitter.setStretchFactor(1, 3)
-        splitter.setSizes([520, 880])
+        splitter.setSizes(list(self.SPLIT))
+        # the panes share the width as SPLIT until the technician drags the line between
+        self._split_dragged = False
+        self._fitting = False
+        splitter.splitterMoved.connect(lambda *_: setattr(self, "_split_dragged", True))
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addWidget(splitter)
@@ -177,8 +206,18 @@ class WorkbenchView(QWidget):
     # rows the readings table keeps in sight before the set-up below it gets its full
     # height (at 1280×720 the set-up took it: 3 rows of positioning readings were left)
     READINGS_ROWS = 12
-    # the least the set-up keeps (it scrolls below its full height)
-    SETUP_MIN_HEIGHT = 120
+    # the least the set-up keeps (it scrolls below its full height; 120 px made the window
+    # 351 px tall at the least, more than a 1280×720 screen at 200 % has below its title bar)
+    SETUP_MIN_HEIGHT = 100
+    #: the width the result keeps before the readings pane gives up its columns' width (its
+    #: text beside the figures' table; the least the result kept when the panes had least widths)
+    RESULT_WIDTH = 340
+    #: the readings pane's and the result's shares of the width
+    SPLIT = (520, 880)
+    #: the least width of the figures' table (a name and a value; 250 px where there is room)
+    FIGURES_MIN_WIDTH = 150
+    #: the least width of the result's text beside it
+    SUMMARY_MIN_WIDTH = 130
 
     def _share_left_pane(self, height: int) -> None:
         """Share the left pane's height: the readings first (READINGS_ROWS rows), the
@@ -188,11 +227,60 @@ class WorkbenchView(QWidget):
         readings = header + rows + 2 * self.table.frameWidth() + \
             self.readings_label.sizeHint().height() + 12
         full = self.settings.sizeHint().height() + 2
-        # as wide as the form (the pane kept its width: the polygon's last column in sight)
-        self.settings_area.setMinimumWidth(self.settings.minimumSizeHint().width()
-                                           + self.settings_area.verticalScrollBar().sizeHint().width())
+        beside = sum(w.sizeHint().width() for w in (self.next_label, self.step_label, self.step)
+                     if not w.isHidden()) + 3 * self._entry.horizontalSpacing()
+        self._place_caption(above=self._left.width() < beside + self.CAPTION_MIN_WIDTH)
         self.settings_area.setFixedHeight(
             max(min(full, self.SETUP_MIN_HEIGHT), min(full, height - readings - 40)))
+
+    #: the least width the readings' caption keeps beside the next row and the step
+    CAPTION_MIN_WIDTH = 160
+
+    def _place_caption(self, above: bool) -> None:
+        if above == self._caption_above:
+            return
+        for widget in (self.readings_label, self.next_label, self.step_label, self.step):
+            self._entry.removeWidget(widget)
+        row = 1 if above else 0
+        self._entry.addWidget(self.readings_label, 0, 0, 1, 4 if above else 1)
+        self._entry.addWidget(self.next_label, row, 1)
+        self._entry.addWidget(self.step_label, row, 2)
+        self._entry.addWidget(self.step, row, 3)
+        self._caption_above = above
+
+    def _left_width_wanted(self) -> int:
+        """The readings pane's width with every column and the set-up's every field in sight."""
+        box = self.setup_box
+        frame = box.contentsMargins()
+        inside = box.layout().contentsMargins()
+        setup = (self.settings.minimumSizeHint().width()
+                 + self.settings_area.verticalScrollBar().sizeHint().width()
+                 + frame.left() + frame.right() + inside.left() + inside.right())
+        return max(self._columns_width, setup)
+
+    def _fit_left_pane(self) -> None:
+        """The readings pane as wide as its columns and its set-up (the polygon's last column
+        in sight at 1280 px) while the result beside it keeps RESULT_WIDTH; where the window
+        has less (200 % on a 1280×720 screen: 640 px) the pane is narrower and the table and
+        the set-up scroll sideways. These were the panes' least widths: the window could not
+        be narrower than 780 px (the positioning workbench's 892)."""
+        splitter = self.splitter
+        sizes = splitter.sizes()
+        total = sum(sizes)
+        if total <= 0 or self._fitting:
+            return
+        result = max(self.RESULT_WIDTH, splitter.widget(1).minimumSizeHint().width())
+        left = min(self._left_width_wanted(), total - result)
+        if not self._split_dragged:  # the pane's share, if its columns have that much
+            left = max(left, total * self.SPLIT[0] // sum(self.SPLIT))
+        elif left <= sizes[0]:  # as the technician left it: they see the columns
+            return
+        if left != sizes[0]:
+            self._fitting = True  # the panes resized by it call it again
+            try:
+                splitter.setSizes([left, total - left])
+            finally:
+                self._fitting = False
 
     # -- the calls the presenter makes (all it knows of the view) ----------------
     def subscribe(self, presenter) -> None:
@@ -211,8 +299,9 @@ class WorkbenchView(QWidget):
         header.geometriesChanged.connect(self._keep_columns_in_sight)
 
     def _keep_columns_in_sight(self, *_args) -> None:
-        """The readings pane at least as wide as every column (the polygon's set and
-        direction columns put its last ones behind a horizontal scroll bar at 1280 px)."""
+        """The readings pane as wide as every column where the window has room for it
+        (_fit_left_pane; the polygon's set and direction columns put its last ones behind a
+        horizontal scroll bar at 1280 px)."""
         table = self.table
         header = table.horizontalHeader()
         count = header.count()
@@ -230,8 +319,9 @@ class WorkbenchView(QWidget):
                            header.defaultSectionSize())
         width = (natural + table.verticalHeader().width() + 2 * table.frameWidth()
                  + table.verticalScrollBar().sizeHint().width())
-        if width != table.minimumWidth():
-            table.setMinimumWidth(width)
+        if width != self._columns_width:
+            self._columns_width = width
+            self._fit_left_pane()
 
     def hold_columns(self) -> None:
         """The columns keep their widths (readings arrive from an instrument: the capture
@@ -260,6 +350,7 @@ class WorkbenchView(QWidget):
             self.plot_tabs.setTabText(index, tr(title.source))
         self.step_label.setText(tr("next {column} +").format(column=declared(
             self._nominal_title)) if self._nominal_title else "")
+        self._fit_left_pane()  # the set-up's captions are as wide as the language makes them
 
     def set_entry_columns(self, nominal: int | None, entry: int, nominal_title: str) -> None:
         self.table.nominal_column, self.table.entry_column = nominal, entry

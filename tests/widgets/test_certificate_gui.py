@@ -183,6 +183,31 @@ def test_the_standards_table_shows_its_headers_and_three_rows(qtbot):
     assert "\n" in table.horizontalHeaderItem(4).text()  # "Stated as\n(U95, MPE, u)"
 
 
+@pytest.mark.parametrize("size", [(1254, 662), (1100, 760), (627, 331)],
+                         ids=["1280x720", "the screenshot's 1100x760", "200% on 1280x720"])
+def test_every_detail_is_read_whole_without_scrolling_sideways(qtbot, size):
+    """The groups two a row were 1198 px wide: in the 1100 px screenshot and at 200 %
+    on a 1280×720 screen (627 px of dialog) the Laboratory column was behind a horizontal
+    scroll bar; the DCC fields' hints were cut ("…TRUSTED_CERTIFICATE, else the…"). Now
+    one group below the other where two have no room, long rows' fields below their
+    captions, every hint whole."""
+    from PySide6.QtWidgets import QApplication
+
+    from tests.small_screen_probe import cut_texts
+
+    dialog = CertificateDialog(CertificateMetadata.from_dict({
+        "lab_name": "精密角度计量实验室 Precision Angle Lab", "customer_name": "Changchun Optics",
+        "standards": [{"description": "Autocollimating theodolite", "uncertainty": 0.5}]}))
+    qtbot.addWidget(dialog)
+    dialog.show()
+    dialog.resize(*size)
+    QApplication.processEvents()
+    assert dialog.details_area.horizontalScrollBar().maximum() == 0
+    assert cut_texts(dialog) == []
+    # two a row where they have room (the dialog is no taller than it must be)
+    assert dialog.sections.columns == (1 if size[0] < 800 else 2)
+
+
 def test_a_tolerance_and_a_standard_are_typed_with_their_unit(qtbot):
     """#32: the tolerance's unit is chosen beside it, a standard's typed in its row (its key
     or its symbol); both come back as they were set."""

@@ -1,0 +1,94 @@
+"""Opens the window (every workbench in turn) and the certificate dialog on the screen Qt was
+started with and prints, as JSON, what a technician on that screen would meet: each one's
+frame and least size against the screen's free area, and every text in the dialog shown
+narrower than it needs (tests/widgets/test_small_screens.py runs it in a process of its own
+per screen: an offscreen screen of a given size and scale)."""
+
+from __future__ import annotations
+
+import json
+import sys
+import tempfile
+from pathlib import Path
+
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import (
+    QAbstractButton,
+    QApplication,
+    QComboBox,
+    QGroupBox,
+    QLabel,
+    QLineEdit,
+    QWidget,
+)
+
+
+def cut_texts(dialog: QWidget) -> list[str]:
+    """Every caption, switch, choice, group title and hint in ``dialog`` shown narrower than
+    its text (a label that wraps takes the lines it needs: not counted)."""
+    cut = []
+    for widget in dialog.findChildren(QWidget):
+        if not widget.isVisibleTo(dialog):
+            continue
+        if isinstance(widget, QLabel) and not widget.wordWrap() or isinstance(
+                widget, (QAbstractButton, QComboBox)):
+            text = widget.currentText() if isinstance(widget, QComboBox) else widget.text()
+            if text and widget.width() < widget.sizeHint().width():
+                cut.append(f"{text!r}: {widget.width()} of {widget.sizeHint().width()} px")
+        elif isinstance(widget, QGroupBox):
+            need = widget.fontMetrics().horizontalAdvance(widget.title()) + 16
+            if widget.width() < need:
+                cut.append(f"{widget.title()!r}: {widget.width()} of {need} px")
+        elif isinstance(widget, QLineEdit) and widget.placeholderText() and not widget.text():
+            # QLineEdit elides a hint wider than its text area (2 px each side inside it)
+            room = widget.contentsRect().width() - 4
+            need = widget.fontMetrics().horizontalAdvance(widget.placeholderText())
+            if room < need:
+                cut.append(f"{widget.placeholderText()!r}: {room} of {need} px")
+    return cut
+
+
+def record(widget: QWidget) -> dict:
+    QApplication.processEvents()
+    frame = widget.frameGeometry()
+    free = (widget.screen() or QApplication.primaryScreen()).availableGeometry()
+    least = widget.minimumSizeHint().expandedTo(widget.minimumSize())
+    return {"frame": [frame.x(), frame.y(), frame.width(), frame.height()],
+            "available": [free.x(), free.y(), free.width(), free.height()],
+            "minimum": [least.width(), least.height()]}
+
+
+def main() -> None:
+    app = QApplication.instance() or QApplication(["anglebench"])
+    from app.main_window import MainWindow
+    from app.screenshot import _example_metadata
+    from models.project.recovery import RecoveryStore
+    from widgets.certificate_dialog import CertificateDialog
+
+    scratch = tempfile.mkdtemp(prefix="anglebench-small-")
+    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
+    settings.setValue("ui/language", sys.argv[1] if len(sys.argv) > 1 else "en")
+    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
+    window.load_all_samples()
+    window.show()
+    found: dict[str, dict] = {}
+    for index, presenter in enumerate(window.presenters):
+        window.tabs.setCurrentIndex(index)
+        for _ in range(3):
+            app.processEvents()
+        found[f"window: {presenter.kind.key}"] = record(window)
+    dialog = CertificateDialog(_example_metadata(), window)
+    for _ in range(2):
+        dialog.add_standard({"description": "Autocollimator", "uncertainty": 0.3})
+    dialog.show()
+    found["certificate details"] = record(dialog)
+    found["certificate details"].update(
+        cut=cut_texts(dialog), sideways=dialog.details_area.horizontalScrollBar().maximum())
+    dialog.close()
+    window.projects.recovery.discard()
+    window.close()
+    sys.stdout.write(json.dumps(found) + "\n")
+
+
+if __name__ == "__main__":
+    main()
