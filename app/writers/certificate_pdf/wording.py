@@ -7,7 +7,7 @@ from __future__ import annotations
 import functools
 
 from models.certificate.document import CertificateDocument
-from models.messages import Message, in_language, joined, message, translator
+from models.messages import JOINS, Message, in_language, joined, message, separated, translator
 
 #: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them
 CHINESE = {
@@ -74,11 +74,15 @@ def _translatable(text: str) -> str:
 
 
 def _between(separator: str, parts) -> list:
-    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`)."""
+    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`): "; ",
+    ", " and " " through :func:`separated`, so that a Chinese certificate joins them with
+    its own punctuation ("；", "，"), any other separator (a line break) as it is."""
+    kept = [_translatable(part) for part in parts if part]
+    if separator in JOINS:
+        return [separated(kept, separator)] if kept else []
     out: list = []
-    for part in parts:
-        if part:
-            out += ([separator] if out else []) + [_translatable(part)]
+    for part in kept:
+        out += ([separator] if out else []) + [part]
     return out
 
 
