@@ -23,8 +23,9 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "in_language", "joined",
-           "lines", "message", "reason_of", "rendered", "translator", "unit_tail"]
+__all__ = ["JOINS", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "in_language",
+           "joined", "lines", "message", "reason_of", "rendered", "separated", "translator",
+           "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -64,6 +65,29 @@ def message(template: str, **figures: Any) -> Message:
 def joined(parts: Iterable[Any]) -> Message:
     """Parts (messages or plain text) one after another, each translated on its own."""
     return Message("", None, tuple(p for p in parts if p))
+
+
+#: how :func:`separated` joins two parts of a composed text: a template each, which a
+#: translation gives its own punctuation (Chinese: full-width "；" and "，", and no space
+#: between two sentences, the first ending in "。")
+JOINS = {
+    "; ": QT_TR_NOOP("{first}; {second}"),
+    ", ": QT_TR_NOOP("{first}, {second}"),
+    " ": QT_TR_NOOP("{first} {second}"),
+}
+
+
+def separated(parts: Iterable[Any], separator: str = "; ") -> Any:
+    """The non-empty ``parts`` with ``separator`` ("; ", ", ", or " " between sentences)
+    between them, through its template in :data:`JOINS`, so that a translated text joins
+    its parts in its own punctuation ("a; b" in English, "甲；乙" in Chinese); one part as
+    it is, none "". Numbers and units in the parts are never touched."""
+    template = JOINS[separator]
+    out: Any = ""
+    for part in parts:
+        if part:
+            out = message(template, first=out, second=part) if out else part
+    return out
 
 
 def lines(parts: Iterable[Any]) -> Message:

@@ -26,7 +26,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.traceability import expired_withheld
-from models.messages import QT_TR_NOOP, joined
+from models.messages import QT_TR_NOOP, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -147,8 +147,7 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
     # a standard whose calibration had expired: no statement of conformity (the document is
     # also a test report, Workbench.certificate_document)
     expired = expired_withheld(metadata)
-    withheld = (joined([decision.withheld, "; ", expired]) if decision.withheld and expired
-                else decision.withheld or expired)
+    withheld = separated([decision.withheld, expired], "; ")
     conformity = decide_conformity(decision.errors, decision.budget or budget, tol,
                                    metadata.decision_rule, metadata.decision_quantity,
                                    withheld, what=decision.what,

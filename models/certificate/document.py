@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.plots import PlotFigure, PlotSeries
 from models.quantity import Quantity
 from models.sign_convention import SIGN_CONVENTION_TEXT
@@ -247,12 +247,12 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             measured = conformity.measured
             # what the value was made from and the interval's ends, first in the note (the
             # figure's cell stays figures, which the results workbook reads as numbers)
-            note = joined([message(QT_TR_NOOP("interval {low} … {high}"),
-                                   low=f"{low:.{d}f}{unit}", high=f"{high:.{d}f}{unit}"),
-                           *((("; ", message(QT_TR_NOOP("measured {measured}"),
-                                             measured=f"{measured:.{d}f}{unit}")))
-                             if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else ()),
-                           "; ", conformity.quantity])
+            note = separated([message(QT_TR_NOOP("interval {low} … {high}"),
+                                      low=f"{low:.{d}f}{unit}", high=f"{high:.{d}f}{unit}"),
+                              message(QT_TR_NOOP("measured {measured}"),
+                                      measured=f"{measured:.{d}f}{unit}")
+                              if f"{measured:.{d}f}" != f"{conformity.value:.{d}f}" else "",
+                              conformity.quantity], "; ")
         else:
             value = format_uncertain(conformity.value, conformity.expanded, unit)
             note = conformity.quantity

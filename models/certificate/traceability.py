@@ -9,7 +9,7 @@ title and statements say so, naming what is missing.
 from __future__ import annotations
 
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 
 __all__ = ["expired_standards", "expired_withheld", "test_report_statement", "traceability_gaps"]
 
@@ -31,10 +31,9 @@ def expired_withheld(metadata: CertificateMetadata):
     expired = expired_standards(metadata)
     if not expired:
         return ""
-    names = joined(part for i, s in enumerate(expired) for part in (
-        ("; " if i else ""), message(QT_TR_NOOP("{standard} (due {due})"),
-                                     standard=s.description or message(QT_TR_NOOP("standard")),
-                                     due=s.due_date)))
+    names = separated((message(QT_TR_NOOP("{standard} (due {due})"),
+                               standard=s.description or message(QT_TR_NOOP("standard")),
+                               due=s.due_date) for s in expired), "; ")
     return message(QT_TR_NOOP("the calibration of a standard had expired before the date of "
                               "calibration, so the uncertainty it states does not hold: {names}"),
                    names=names)
@@ -66,8 +65,7 @@ def traceability_gaps(metadata: CertificateMetadata, roles: tuple[str, ...],
         gaps.append(message(QT_TR_NOOP(
             "the standards that carry the measurand are {roles}, each to be listed with a "
             "calibration certificate and a stated uncertainty; {count} listed so"),
-            roles=joined(part for i, r in enumerate(roles)
-                         for part in (("; " if i else ""), message(r))), count=carried))
+            roles=separated((message(r) for r in roles), "; "), count=carried))
     expired = expired_standards(metadata)
     for std in standards:
         name = std.description or message(QT_TR_NOOP("standard"))
@@ -93,4 +91,4 @@ def test_report_statement(document) -> str:
     return message(QT_TR_NOOP(
         "This document is a test report, not a calibration certificate: metrological "
         "traceability of its results is not established ({why})."),
-        why=joined(part for i, w in enumerate(why) for part in (("; " if i else ""), w)))
+        why=separated(why, "; "))

@@ -53,7 +53,7 @@ from models.fringe.model import (
     model_signal_modes,
     model_signal_std,
 )
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.lab_scope import cmc_of
 
@@ -159,8 +159,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     missing = [name for key, name in adc.items() if not inputs.get(key)]
     if missing:
         out.append(message(QT_TR_NOOP("the ADC's {figures} have no stated uncertainty"),
-                           figures=joined(part for i, name in enumerate(missing)
-                                          for part in ((", " if i else ""), message(name)))))
+                           figures=separated((message(name) for name in missing), ", ")))
     return out
 
 
@@ -388,9 +387,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
               "estimated": message(QT_TR_NOOP("phase estimated from the signals"))}
     share = QT_TR_NOOP("peak-to-peak {ptp} ({share} % of a period)")
     stat_rows = [
-        (QT_TR_NOOP("Samples"), f"{raw.size}", message("{source}; {scale}",
-                                                       source=source[result.phase_source],
-                                                       scale=scale)),
+        (QT_TR_NOOP("Samples"), f"{raw.size}", separated([source[result.phase_source], scale])),
         (QT_TR_NOOP("Interpolation error as found"),
          f"{raw.min():+.3f}{sym} … {raw.max():+.3f}{sym}",
          message(share, ptp=f"{pp_raw:.3f}{sym}", share=f"{pp_raw / period * 100:.2f}")),
@@ -417,7 +414,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     untraceable = untraceable_inputs(result, metadata)
     withheld = "" if not untraceable or tol is None else message(
         QT_TR_NOOP("the error is not traceable: {what}"),
-        what=joined(part for i, w in enumerate(untraceable) for part in (("; " if i else ""), w)))
+        what=separated(untraceable, "; "))
     if metadata.decision_quantity == "half_range":  # the continuous curve, the whole period
         theta_model, model_error = model_error_curve(result)
         decision = Decision(model_error, QT_TR_NOOP("as-found interpolation error (fitted "

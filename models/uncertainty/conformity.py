@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
 
@@ -524,8 +524,7 @@ def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
 
 def _incomplete_reason(inputs) -> str:
     return message(QT_TR_NOOP("U is incomplete: inputs not stated, so not in U: {inputs}"),
-                   inputs=joined(part for i, name in enumerate(inputs)
-                                 for part in ((", " if i else ""), message(name))))
+                   inputs=separated((message(name) for name in inputs), ", "))
 
 
 def _risk_sentence(verdict: str, risk: float) -> str:
@@ -543,10 +542,9 @@ def _with_risk(conformity: Conformity) -> Conformity:
         return conformity
     import dataclasses
 
-    return dataclasses.replace(conformity, statement=joined(
-        [conformity.statement, " ", _risk_sentence(conformity.verdict,
-                                                   conformity.decision_risk)]),
-        quantity=joined([conformity.quantity, "; ", message(
+    return dataclasses.replace(conformity, statement=separated(
+        [conformity.statement, _risk_sentence(conformity.verdict, conformity.decision_risk)],
+        " "), quantity=separated([conformity.quantity, message(
             RISK_METHOD_FIGURE if conformity.monte_carlo is not None else RISK_METHOD)]))
 
 
@@ -603,10 +601,8 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
     e = np.asarray(errors, dtype=float)
     t = float(tolerance)
     if not e.size or not np.all(np.isfinite(e)):
-        reason = joined([*(part for i, w in enumerate(withheld) for part in (("; " if i else ""), w)),
-                         "; " if withheld else "",
-                         message(QT_TR_NOOP("the decided quantity is withheld (the errors are "
-                                            "not all determined)"))])
+        reason = _withheld_text([*withheld, message(QT_TR_NOOP(
+            "the decided quantity is withheld (the errors are not all determined)"))])
         return Conformity("not assessed", message(
             QT_TR_NOOP("No statement of conformity: {reason}."), reason=reason), rule_text,
             reason=reason, **common)
@@ -618,7 +614,7 @@ def decide_conformity(errors, budget: UncertaintyBudget, tolerance: Quantity | f
 
 
 def _withheld_text(withheld: list) -> str:
-    return joined(part for i, w in enumerate(withheld) for part in (("; " if i else ""), w))
+    return separated(withheld, "; ")
 
 
 def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, sentence, q,
@@ -646,8 +642,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
         d = uncertainty_decimals(w_max)
         name = (point_names[largest] if point_names is not None else
                 message(QT_TR_NOOP("point {n}"), n=largest + 1))
-        text = joined([_too_uncertain(w_max, t, q, d), " ",
-                       message(QT_TR_NOOP("(at {point})"), point=name)])
+        text = separated([_too_uncertain(w_max, t, q, d),
+                          message(QT_TR_NOOP("(at {point})"), point=name)], " ")
         reason = _withheld_text([*withheld, message(
             QT_TR_NOOP("U = {u} is not smaller than T = {t}"), u=f"{w_max:.{d}f}{q}",
             t=f"{t:g}{q}")])
@@ -740,7 +736,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              trials=trials, seed=str(seed)))
     achieved = HALF_RANGE_COVERAGE
     method = getattr(mc, "method", "")
-    quantity_text = method or joined([quantity_text, "; ", message(QT_TR_NOOP(
+    quantity_text = method or separated([quantity_text, message(QT_TR_NOOP(
         "the interval's coverage achieved in validation (noise 0.1 to 2 times the half range, "
         "12 to 72 points, 100 runs in each of a shape's 12 cells, pooled): {smooth} % on smooth "
         "curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real "

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message
+from models.messages import QT_TR_NOOP, message, separated
 
 __all__ = ["DirectionStats", "Iso230Result", "iso230_evaluate", "once_note"]
 
@@ -150,5 +150,4 @@ def once_note(result: Iso230Result, unit: str = ""):
         return None
     return message(QT_TR_NOOP("A and R not evaluated (ISO 230-2 takes them over every target): "
                               "approached only once, so no standard deviation, {where}"),
-                   where=parts[0] if len(parts) == 1 else
-                   message("{a}; {b}", a=parts[0], b=parts[1]))
+                   where=separated(parts, "; "))

@@ -9857,5 +9857,18 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>the backward direction</source>
         <translation>反向</translation>
     </message>
+    <message>
+        <source>{first}; {second}</source>
+        <extracomment>the .ts sources and compiled .qm files (the window loads the .qm; the command line reads the .ts, without Qt) how :func:`separated` joins two parts of a composed text: a template each, which a translation gives its own punctuation (Chinese: full-width &quot;；&quot; and &quot;，&quot;, and no space between two sentences, the first ending in &quot;。&quot;)</extracomment>
+        <translation>{first}；{second}</translation>
+    </message>
+    <message>
+        <source>{first}, {second}</source>
+        <translation>{first}，{second}</translation>
+    </message>
+    <message>
+        <source>{first} {second}</source>
+        <translation>{first}{second}</translation>
+    </message>
 </context>
 </TS>

@@ -9,7 +9,7 @@ from fpdf.enums import XPos, YPos
 
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
-from app.writers.certificate_pdf.wording import _between, _listed, label
+from app.writers.certificate_pdf.wording import _between, _colon, _listed, label
 from models.certificate.document import CertificateDocument
 from models.certificate.metadata import PLACES
 from models.messages import QT_TR_NOOP, joined, message
@@ -49,7 +49,7 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
                                      tolerance=f"{document.tolerance:g}{document.unit}")
             if document.tolerance else ""]))),
         (label(document, "Date of calibration", "\n"), meta.calibration_date),
-        (label(document, "Place of calibration", "\n"), _place(meta)),
+        (label(document, "Place of calibration", "\n"), _place(meta, _colon(document))),
         (label(document, "Environment", "\n"), _environment(meta)),
         (label(document, "Readings", "\n"), document.source_name),
         *([(label(document, "Instrument output", "\n"),
@@ -94,10 +94,10 @@ def _created(document: CertificateDocument) -> dt.datetime:
     return dt.datetime.now(dt.timezone.utc).replace(microsecond=0)
 
 
-def _place(meta) -> str:
+def _place(meta, colon: str = ": ") -> str:
     """Where it was calibrated: at the laboratory, or at the customer's site (and where)."""
     place = message(PLACES.get(meta.calibration_place, PLACES["laboratory"]))
-    return joined([place, ": ", meta.calibration_site]) if meta.calibration_site else place
+    return joined([place, colon, meta.calibration_site]) if meta.calibration_site else place
 
 
 def _environment(meta) -> str:

@@ -120,20 +120,25 @@ class PageFrame(FPDF):
         self.cell(0, 7, self.say(text), new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         self.set_font(FONT, "", 9)
 
-    def paragraph(self, text: str, size: float = 9, color=INK) -> None:
+    def paragraph(self, text: str, size: float = 9, color=INK, indent: float = 0.0) -> None:
+        """``text`` in the certificate's language, ``indent`` mm in from the left margin."""
         text = self.say(text)
         self.set_font(FONT, "", size)
+        if indent:
+            self.set_x(self.l_margin + indent)
+        cell = self.epw - indent if indent else 0  # 0: to the right margin
+        width = self.epw - indent - 2 * self.c_margin - 0.6
         with self.local_context(text_color=color):
             if _mostly_cjk(text):  # Chinese prose: not justified; broken where
                 # _units allows (between Chinese characters, at spaces), never inside
                 # a figure or a word, never before a closing mark such as "。"
-                width = self.epw - 2 * self.c_margin - 0.6
-                self.multi_cell(0, 4.6, self._wrapped(text, width, size), wrapmode="CHAR",
-                                align="L", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
+                self.multi_cell(cell, 4.6, self._wrapped(text, width, size),
+                                wrapmode="CHAR", align="L", new_x=XPos.LMARGIN,
+                                new_y=YPos.NEXT)
             else:
                 long_word = _long_word(text)  # (a checksum): broken here between words
-                width = self.epw - 2 * self.c_margin - 0.6
-                self.multi_cell(0, 4.6, self._wrapped(text, width, size) if long_word else text,
+                self.multi_cell(cell, 4.6,
+                                self._wrapped(text, width, size) if long_word else text,
                                 wrapmode="CHAR" if long_word else "WORD",
                                 new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 

@@ -29,6 +29,9 @@ def draw_statistics(pdf: _CertificatePdf, document: CertificateDocument) -> None
 
 
 def draw_results(pdf: _CertificatePdf, document: CertificateDocument) -> None:
-    pdf.heading(label(document, document.results.title))
+    # the heading with the table's header and a row at least, never alone at the foot of a
+    # page: a bilingual header takes two lines (its heading was left alone on the theodolite's)
+    pdf.heading(label(document, document.results.title),
+                keep_with=26.0 if pdf.language == "zh+en" else 18.0)
     n_cols = len(document.results.header)
     pdf.data_table(document.results, (174 / n_cols,) * n_cols, ("RIGHT",) * n_cols)

@@ -6,7 +6,7 @@ from __future__ import annotations
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import _between, _listed, _translatable, label
 from models.certificate.document import CertificateDocument, Table
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, joined, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
 
@@ -61,19 +61,19 @@ def _traceability(document: CertificateDocument) -> str:
                                     "them."),
                          what=joined(_between("; ", document.untraceable)))]
         if listed:
-            parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
+            parts += [message(QT_TR_NOOP("The standards listed with a certificate and a "
                                               "stated uncertainty: {names}."), names=names)]
     elif document.traceability_gaps:
         parts = [message(QT_TR_NOOP("Metrological traceability: not established for these "
                                     "results — {what}."),
                          what=joined(_between("; ", document.traceability_gaps)))]
         if listed:
-            parts += [" ", message(QT_TR_NOOP("The standards listed with a certificate and a "
+            parts += [message(QT_TR_NOOP("The standards listed with a certificate and a "
                                               "stated uncertainty: {names}."), names=names)]
     elif document.traceability_basis:  # a self-calibrating method: its own reference
         parts = [_translatable(document.traceability_basis)]
         if standards:  # no reference value comes from them
-            parts += [" ", message(QT_TR_NOOP("The instruments listed are comparators only; "
+            parts += [message(QT_TR_NOOP("The instruments listed are comparators only; "
                                               "their calibration enters the uncertainty, not "
                                               "the reference: {names}."),
                                    names=_listed(s.description or message(QT_TR_NOOP("standard"))
@@ -89,8 +89,8 @@ def _traceability(document: CertificateDocument) -> str:
                                     "{names}."), names=names)]
     for s in standards:
         if s.uncertainty is None and not (stated and s.certificate_no):
-            parts += [" ", message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
+            parts += [message(QT_TR_NOOP("{standard}: no uncertainty stated, so it is no "
                                               "input of the budget and the results are not "
                                               "traceable through it."),
                                    standard=s.description or message(QT_TR_NOOP("standard")))]
-    return joined(parts)
+    return separated(parts, " ")  # sentence after sentence

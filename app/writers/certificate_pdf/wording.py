@@ -7,7 +7,7 @@ from __future__ import annotations
 import functools
 
 from models.certificate.document import CertificateDocument
-from models.messages import Message, in_language, joined, message, translator
+from models.messages import JOINS, Message, in_language, joined, message, separated, translator
 
 #: the certificate's fixed words in Chinese, metrology terms as JJF 1001-2011 names them
 CHINESE = {
@@ -43,12 +43,25 @@ def _say(language: str):
     """How the certificate's texts are printed in ``language``: a :class:`Message` in the
     translated template with its own figures, another text looked up whole (a column's
     name, a setting's label), anything else — user input, numbers — as it is. Only a
-    Chinese certificate is translated: the bilingual one keeps the English body under
-    its two-language headings."""
+    Chinese certificate is translated throughout: the bilingual one keeps the English body
+    under its two-language headings, except what :func:`_in_both` prints twice."""
     if language != "zh":
         return str
     words = translator("zh_CN")
     return lambda text: in_language(text, words)
+
+
+def _in_both(document: CertificateDocument, text) -> list[str]:
+    """``text`` as the certificate prints it: on a bilingual certificate in Chinese, then in
+    English, from the one message, so with the same figures (once, when it has no Chinese:
+    a lab's own words); else once, in the certificate's language (the page translates a
+    Chinese one). For the texts a bilingual certificate gives in both languages: the
+    statement of conformity with its rule, decided quantity and zones, the statements and
+    the remarks (not the tables, whose headers are already in both)."""
+    if document.metadata.language != "zh+en" or not text:
+        return [text]
+    chinese, english = _say("zh")(text), str(text)
+    return [english] if chinese == english else [chinese, english]
 
 
 def _both(text):
@@ -74,11 +87,15 @@ def _translatable(text: str) -> str:
 
 
 def _between(separator: str, parts) -> list:
-    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`)."""
+    """The non-empty ``parts`` with ``separator`` between them (for :func:`joined`): "; ",
+    ", " and " " through :func:`separated`, so that a Chinese certificate joins them with
+    its own punctuation ("；", "，"), any other separator (a line break) as it is."""
+    kept = [_translatable(part) for part in parts if part]
+    if separator in JOINS:
+        return [separated(kept, separator)] if kept else []
     out: list = []
-    for part in parts:
-        if part:
-            out += ([separator] if out else []) + [_translatable(part)]
+    for part in kept:
+        out += ([separator] if out else []) + [part]
     return out
 
 

@@ -1,0 +1,71 @@
+"""The statement of conformity in Chinese joins its parts in Chinese punctuation (assessor,
+item 14): full-width "；" and "，" between Chinese parts, no space after "。" before the next
+sentence; the English text and every figure as they were."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import numpy as np
+
+from models.messages import in_language, message, translator
+from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
+from models.uncertainty.conformity import decide_conformity
+
+ZH = translator("zh_CN")
+P = 0.9544997361036416
+#: an ASCII separator beside a Chinese character or a full-width bracket
+ASCII_BESIDE_CHINESE = re.compile(r"[\u4e00-\u9fff（）][;,]|[;,] ?[\u4e00-\u9fff（]")
+
+
+def _budget(u: float, n: int) -> UncertaintyBudget:
+    return UncertaintyBudget((BudgetComponent("noise", "B", "normal", u, 1.0, 1.0, math.inf),),
+                             n, P)
+
+
+def _curve() -> np.ndarray:
+    return 0.8 * np.sin(np.linspace(0.0, 2.0 * np.pi, 24, endpoint=False))
+
+
+def test_separated_reads_as_before_in_english_and_full_width_in_chinese():
+    from models.messages import JOINS, separated
+
+    parts = [message("Item resolution"), message("Reading error (pointing)"), "0.5\""]
+    assert separated(parts, "; ") == "Item resolution; Reading error (pointing); 0.5\""
+    assert separated(parts, ", ") == "Item resolution, Reading error (pointing), 0.5\""
+    assert separated(["", parts[0], ""]) == "Item resolution"  # one part: as it is
+    assert separated([]) == ""
+    assert in_language(separated(parts, "; "), ZH) == "被校对象分辨力；读数误差（瞄准）；0.5\""
+    assert in_language(separated(parts, ", "), ZH) == "被校对象分辨力，读数误差（瞄准），0.5\""
+    assert {ZH(template) for template in JOINS.values()} == {
+        "{first}；{second}", "{first}，{second}", "{first}{second}"}
+
+
+def test_the_chinese_statement_and_decided_quantity_join_in_chinese_punctuation():
+    """Fails on the old code: the decided quantity read "随机种子 …; 该区间在验证中…" and
+    the risk sentence followed "（合格）。 " after an ASCII space."""
+    c = decide_conformity(_curve(), _budget(0.05, 24), 3.0, "guarded", "half_range")
+    assert c.verdict == "pass"
+    quantity, statement = in_language(c.quantity, ZH), in_language(c.statement, ZH)
+    assert "；" in quantity and not ASCII_BESIDE_CHINESE.search(quantity), quantity
+    assert "。 " not in statement and "（合格）。本判定的误合格概率" in statement, statement
+    # the English as it was: the same parts, the same separators, the same figures
+    assert "; the interval's coverage achieved in validation" in c.quantity
+    assert "(pass). Probability of a false acceptance" in c.statement
+    figures = re.compile(r"\d+\.\d+\"")
+    assert figures.findall(statement) == figures.findall(str(c.statement))
+
+
+def test_the_reasons_for_no_statement_are_listed_in_chinese_punctuation():
+    """The inputs not stated (", ") and the reasons withheld ("; ") of a Chinese
+    certificate: "，" and "；" (old: "被校对象分辨力, 读数误差（瞄准）")."""
+    c = decide_conformity(_curve(), _budget(0.05, 24), 3.0, "guarded", "points",
+                          invalid_reason=message("corrected error"),
+                          not_stated=("Item resolution", "Reading error (pointing)"))
+    assert c.verdict == "not assessed"
+    reason = in_language(c.reason, ZH)
+    assert reason == "修正后误差；U 不完整：以下输入量未给出，未计入 U：被校对象分辨力，读数误差（瞄准）"
+    assert not ASCII_BESIDE_CHINESE.search(in_language(c.statement, ZH))
+    assert c.reason == ("corrected error; U is incomplete: inputs not stated, so not in U: "
+                        "Item resolution, Reading error (pointing)")
