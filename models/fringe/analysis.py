@@ -76,11 +76,13 @@ PARAMETERS = (
               help="The highest harmonic fitted to each channel"),
     Parameter("harmonics", "harmonics", "choice", "odd",
               choices=(("odd", "odd (1, 3, 5 …)"), ("all", "all")),
-              help="Odd harmonics only (the seed's model), or every order up to the highest"),
+              help="Odd harmonics only (the model of the method's paper, Gao et al. 2013), or every "
+                   "order up to the highest"),
     Parameter("method", "identification", "choice", "lsq",
-              choices=(("lsq", "least squares (exact)"), ("pso", "particle swarm (seed)")),
-              help="Exact linear least squares, or the seed's particle swarm (first period only, "
-                   "for comparison)"),
+              choices=(("lsq", "least squares (exact)"),
+                       ("pso", "particle swarm (Gao et al. 2013)")),
+              help="Exact linear least squares, or the particle swarm of the method's paper "
+                   "(Gao et al. 2013; first period only, for comparison)"),
     Parameter("lut_size", "correction table size", "int", 1024, minimum=8, maximum=65536,
               help="Entries of the correction table over the measured phase"),
     Parameter("table_zero", "table zero", "choice", "mean",
@@ -369,7 +371,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     if s["method"] == "pso":
         if orders != (1, 3, 5):
             raise SettingsError(message(
-                QT_TR_NOOP("the particle swarm (the seed's method) fits orders 1, 3, 5 only")))
+                QT_TR_NOOP("the particle swarm (the method of Gao et al. 2013) fits orders 1, "
+                           "3, 5 only")))
         span = slice(0, min(u_sin.size, per_period or 64))
         ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
         sin_fit, cos_fit = ps.fit, pc.fit

@@ -83,8 +83,8 @@ PARAMETERS = (
               help="Faces of the polygon; 0: as many as the first set has positions"),
     Parameter("grade", "encoder grade", "choice", 3,
               choices=tuple((g, f"grade {g}: ±{tol:g}\"") for g, tol in GRADE_ACCURACY_ARCSEC.items()),
-              help="Table 1 of the seed: the accuracy judged, and the tilt it allows (shown "
-                   "with the results, for the set-up chosen below)"),
+              help="Table 1 of the method's paper (Tian et al. 2015): the accuracy judged, and the "
+                   "tilt it allows (shown with the results, for the set-up chosen below)"),
     Parameter("closure_limits_arcsec", "closure limits grades 1–7 (\")", "text",
               "0.125, 0.25, 0.5, 1, 2.5, 5, 15", cli=False,
               help="Closure limit per grade, comma-separated; default half the grade's accuracy"),

@@ -106,9 +106,9 @@ METHOD = QT_TR_NOOP(
     "a set's first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y "
     "identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least "
     "squares, and the horizontal error ε_x it induces is subtracted from e (coordinate "
-    "transformation; the seed's eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). "
-    "The error induced depends on how the autocollimator was set: it is computed by exact "
-    "3-D rotation in the frame stated under the set-up parameters."
+    "transformation; eqs 3–7 of the published method, Tian et al. 2015, turn the faces by −θ, so "
+    "the readings carry −ε_x). The error induced depends on how the autocollimator was set: it "
+    "is computed by exact 3-D rotation in the frame stated under the set-up parameters."
 )
 
 

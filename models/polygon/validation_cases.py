@@ -102,8 +102,8 @@ def polygon_cases(trials: int) -> list[ValidationCase]:
         "grade": 7, "ac_roll_measured_arcmin": rolled.tilt_test_roll_arcmin(),
         "u_ac_roll_arcmin": 0.05})
     cases += [
-        at_most_case(w, QT_TR_NOOP("3-D simulation in seed 001's frame (ψ = 900″), set as such: "
-                               "|corrected − true error|"), EXACT_SIMULATION, 1e-3,
+        at_most_case(w, QT_TR_NOOP("3-D simulation in the frame of Tian et al. 2015 (ψ = 900″), "
+                               "set as such: |corrected − true error|"), EXACT_SIMULATION, 1e-3,
                  float(np.max(np.abs(seed_run.sets[0].corrected_error_arcsec
                                      - seed_rig.truth_arcsec())))),
         at_most_case(w, QT_TR_NOOP("3-D simulation, levelled, autocollimator pitched 0.5° and rolled "

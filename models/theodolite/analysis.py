@@ -61,9 +61,9 @@ PARAMETERS = (
               help="Row where the theodolite was zeroed on the mirror; 0: the row with θ nearest 0"),
     Parameter("vertical_reading", "vertical reading", "choice", "elevation",
               choices=(("elevation", "elevation E"), ("zenith", "zenith angle V (E = V − 90°)")),
-              help="What the theodolite's vertical circle reads; E is the seed's, positive below "
-                   "the horizontal (OZ down): elevations read positive upward give α + 180° and "
-                   "−β, with the same corrected errors"),
+              help="What the theodolite's vertical circle reads; E as in the method's paper (Tian "
+                   "et al. 2017), positive below the horizontal (OZ down): elevations read "
+                   "positive upward give α + 180° and −β, with the same corrected errors"),
     Parameter("method", "identify from", "choice", "elevation",
               choices=(("elevation", "elevations (recommended)"),
                        ("azimuth", "azimuth errors (absorbs axis error!)")),

@@ -104,10 +104,10 @@ METHOD = QT_TR_NOOP(
     "its direction α and the elevation β of the mirror normal — makes A differ from the axis "
     "rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings "
     "(sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error "
-    "of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed's "
-    "A − θ; the set-up's share of it, −ζ evaluated at the axis' true rotation, is removed: "
-    "corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, "
-    "where the theodolite was zeroed."
+    "of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of A − θ in the "
+    "published method (Tian et al. 2017); the set-up's share of it, −ζ evaluated at the axis' "
+    "true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative "
+    "to the reference point θ₀, where the theodolite was zeroed."
 )
 
 
@@ -119,10 +119,10 @@ SETUP_DEFINITIONS = QT_TR_NOOP(
     "for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so "
     "counted, toward which the axis' upper end leans (its lower end leans toward α + 180°); β is "
     "the elevation of the mirror normal above the horizontal at the reference reading θ₀, "
-    "positive upward. The vertical readings are taken as the seed's E (OZ plumb down, E = "
-    "asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered "
-    "positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in "
-    "the horizontal plane shows the same azimuths.")
+    "positive upward. The vertical readings are taken as E of the published method (Tian et al. "
+    "2017; OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith "
+    "angle V. Elevations entered positive upward give α + 180° and −β and the same corrected "
+    "errors: the set-up mirrored in the horizontal plane shows the same azimuths.")
 
 #: how the table names what the set-up was identified from (ident.method)
 _IDENTIFIED_FROM = {"elevation": QT_TR_NOOP("elevation readings"),

@@ -88,10 +88,6 @@
         <translation>各组的误差都以第 1 组的这一读数为零位，从而保留组间的反向差和重复性</translation>
     </message>
     <message>
-        <source>Exact linear least squares, or the seed&apos;s particle swarm (first period only, for comparison)</source>
-        <translation>精确线性最小二乘，或论文中的粒子群算法（仅第一个周期，用于比较）</translation>
-    </message>
-    <message>
         <source>FANUC pitch error compensation (parameters 3620–3625)</source>
         <translation>FANUC 螺距误差补偿（参数 3620–3625）</translation>
     </message>
@@ -308,10 +304,6 @@
         <translation>平均位置偏差及 ±2s</translation>
     </message>
     <message>
-        <source>Odd harmonics only (the seed&apos;s model), or every order up to the highest</source>
-        <translation>仅奇次谐波（论文模型），或直到最高次的所有谐波</translation>
-    </message>
-    <message>
         <source>Repeatability (mean of {sets} sets)</source>
         <translation>重复性（{sets} 个测回的平均）</translation>
     </message>
@@ -512,6 +504,10 @@
         <translation>1 次 / 2 次谐波</translation>
     </message>
     <message>
+        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; eqs 3–7 of the published method, Tian et al. 2015, turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
+        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；已发表方法（田留德等 2015 年论文）的式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
+    </message>
+    <message>
         <source>eccentricity / ellipticity</source>
         <translation>偏心 / 椭圆度</translation>
     </message>
@@ -597,12 +593,12 @@
         <translation>同一 θ 下 ζ 随 α 的最大变化范围</translation>
     </message>
     <message>
-        <source>the seed&apos;s experiment: ζ from −301&quot;</source>
-        <translation>原文实验：ζ 自 −301&quot;</translation>
+        <source>the published experiment (Tian et al. 2017): ζ from −301&quot;</source>
+        <translation>已发表的实验（田留德等 2017 年论文）：ζ 自 −301&quot;</translation>
     </message>
     <message>
-        <source>the seed&apos;s experiment: ζ to +423&quot;</source>
-        <translation>原文实验：ζ 至 +423&quot;</translation>
+        <source>the published experiment (Tian et al. 2017): ζ to +423&quot;</source>
+        <translation>已发表的实验（田留德等 2017 年论文）：ζ 至 +423&quot;</translation>
     </message>
     <message>
         <source>3-D simulation, no noise: |corrected − true error|</source>
@@ -643,6 +639,10 @@
     <message>
         <source>3-D simulation: a constant 2″ backlash is the reversal B</source>
         <translation>三维仿真：恒定 2″ 的回程间隙即反向差 B</translation>
+    </message>
+    <message>
+        <source>3-D simulation in the frame of Tian et al. 2015 (ψ = 900″), set as such: |corrected − true error|</source>
+        <translation>田留德等 2015 年论文坐标系下的三维仿真（ψ = 900″），按此设置：|修正后 − 真误差|</translation>
     </message>
     <message>
         <source>3-D simulations, 16 set-ups of 12–72 faces, ψ 300–1200″, σ = 0.03″: RMS of corrected − true error (2σ)</source>
@@ -765,10 +765,6 @@
         <translation>证书所依据并据以判定的标准；JSON 中总是同时给出 ISO 230-2 和 VDI/DGQ 3441</translation>
     </message>
     <message>
-        <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of the seed&apos;s A − θ; the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
-        <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即原文 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
-    </message>
-    <message>
         <source>elevation readings</source>
         <extracomment>how the table names what the set-up was identified from (ident.method)</extracomment>
         <translation>竖直读数</translation>
@@ -800,6 +796,15 @@
     <message>
         <source>covariance of the identified parameters propagated through ζ(θ)</source>
         <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
+    </message>
+    <message>
+        <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of A − θ in the published method (Tian et al. 2017); the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
+        <translation>被测轴上装有平面反射镜。在每个示值角 θ 处，自准直经纬仪对准反射镜法线，读取水平读数 A 和竖直读数 E。安装失调——轴相对于经纬仪竖轴的倾角 ψ、其方向 α 以及反射镜法线的仰角 β——使 A 与轴的转角相差 ζ(θ) = A(θ) − θ。ψ、α、β 由读数用最小二乘辨识（sin E 对 1、cos θ、sin θ 为线性；再对非线性解精化）。示值误差（示值 − 参考值）为 (θ − θ₀) − (A − A₀)，即已发表方法（田留德等 2017 年论文）中 A − θ 的负值；其中由安装引起的部分，即在轴的真实转角处计算的 −ζ，予以扣除：修正后误差 = (θ − θ₀) − (A − A₀) + ζ。误差相对于参考点 θ₀，经纬仪在该点置零。</translation>
+    </message>
+    <message>
+        <source>Set-up parameters: azimuths are counted from the theodolite&apos;s azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis&apos; upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as E of the published method (Tian et al. 2017; OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
+        <extracomment>what ψ, α and β are (the frame of ../shared/SPEC.md §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/models/certificate/test_certificate_uncertainty.py)</extracomment>
+        <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按已发表方法（田留德等 2017 年论文）的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
     </message>
     <message>
         <source>s = {s} (the vertical readings about the fit, {n} readings, ν = {dof}; taken for the azimuth too)</source>
@@ -1293,10 +1298,6 @@
     <message>
         <source>one, from the bidirectional mean</source>
         <translation>一张，由双向平均得到</translation>
-    </message>
-    <message>
-        <source>particle swarm (seed)</source>
-        <translation>粒子群（论文）</translation>
     </message>
     <message>
         <source>period</source>
@@ -2957,6 +2958,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>Decided quantity: {quantity}.</source>
+        <extracomment>how far a bilingual item&apos;s English stands in under its Chinese (mm, past the &quot;• &quot;)</extracomment>
         <translation>判定的量：{quantity}。</translation>
     </message>
     <message>
@@ -4007,6 +4009,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>figure</source>
+        <extracomment>the width the result keeps before the readings pane gives up its columns&apos; width (its text beside the figures&apos; table; the least the result kept when the panes had least widths) the readings pane&apos;s and the result&apos;s shares of the width the least width of the figures&apos; table (a name and a value; 250 px where there is room) the least width of the result&apos;s text beside it the least width the readings&apos; caption keeps beside the next row and the step</extracomment>
         <translation>结果项</translation>
     </message>
     <message>
@@ -4094,10 +4097,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>
         <translation>信号仅覆盖一个周期的 {value} %：少于四分之三个周期无法估计相位</translation>
-    </message>
-    <message>
-        <source>the particle swarm (the seed&apos;s method) fits orders 1, 3, 5 only</source>
-        <translation>粒子群法（原文方法）只拟合 1、3、5 次</translation>
     </message>
     <message>
         <source>Particle swarm on the first period: cost {cost} V² against {lsq} V² for least squares, {seconds} s.</source>
@@ -6267,10 +6266,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>TwinCAT Tc2_MC2 位置补偿表 {name}，{n} 个元素</translation>
     </message>
     <message>
-        <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; the seed&apos;s eqs 3–7 turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
-        <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；原文式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
-    </message>
-    <message>
         <source>Set-up assumed: autocollimator and rotary axis levelled (the autocollimator&apos;s vertical along the shaft); the pyramidal correction is that set-up&apos;s, by exact 3-D rotation: the polygon&apos;s own term plus the autocollimator&apos;s roll times the vertical reading&apos;s change.</source>
         <translation>所假定的安置：自准直仪与回转轴均已调平（自准直仪的竖直方向沿轴线）；塔差修正按该安置方式用精确 3-D 旋转计算：多面棱体自身项加上自准直仪滚转乘以竖直读数的变化。</translation>
     </message>
@@ -6388,10 +6383,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>平均 B̄ = {b}（ISO 230-2：偏差 x = 参考值 − 示值，正向减反向；即误差 ē↓ − ē↑ 的平均）</translation>
     </message>
     <message>
-        <source>3-D simulation in seed 001&apos;s frame (ψ = 900″), set as such: |corrected − true error|</source>
-        <translation>种子 001 坐标系下的三维仿真（ψ = 900″），按此设置：|修正后 − 真误差|</translation>
-    </message>
-    <message>
         <source>3-D simulation, levelled, autocollimator pitched 0.5° and rolled 2′ (measured by a tilt test): |corrected − true error|</source>
         <translation>三维仿真，调平安置，自准直仪俯仰 0.5°、滚转 2′（由俯仰试验测得）：|修正后 − 真误差|</translation>
     </message>
@@ -6444,10 +6435,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
     </message>
     <message>
-        <source>Table 1 of the seed: the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
-        <translation>论文表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
-    </message>
-    <message>
         <source>The plan&apos;s targets: start:step:count (0:30:12) or a list (0, 30, 60)</source>
         <translation>计划的目标位置：起点:步长:个数（0:30:12）或列表（0, 30, 60）</translation>
     </message>
@@ -6460,6 +6447,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
     </message>
     <message>
+        <source>Exact linear least squares, or the particle swarm of the method&apos;s paper (Gao et al. 2013; first period only, for comparison)</source>
+        <translation>精确线性最小二乘，或方法论文（高旭等 2013）的粒子群算法（仅第一个周期，用于比较）</translation>
+    </message>
+    <message>
         <source>HEIDENHAIN 1 Vpp (standard values)</source>
         <translation>HEIDENHAIN 1 Vpp（标准值）</translation>
     </message>
@@ -6470,6 +6461,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>HEIDENHAIN 11 µApp (standard values)</source>
         <translation>HEIDENHAIN 11 µApp（标准值）</translation>
+    </message>
+    <message>
+        <source>Odd harmonics only (the model of the method&apos;s paper, Gao et al. 2013), or every order up to the highest</source>
+        <translation>仅奇次谐波（方法论文高旭等 2013 的模型），或直到最高次的所有谐波</translation>
+    </message>
+    <message>
+        <source>Table 1 of the method&apos;s paper (Tian et al. 2015): the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
+        <translation>方法论文（田留德等 2015）表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
     </message>
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
@@ -6498,6 +6497,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
         <translation>经纬仪单次读数的标准不确定度，与其计量标准给出的一致（以 u 给出，同一数值）；残差超过其 3 倍时给出警告；超过其 100 倍，或在安装模型解释不足 99 %（R²）时超过其 10 倍，则拒绝给出结果；0：不检查</translation>
+    </message>
+    <message>
+        <source>What the theodolite&apos;s vertical circle reads; E as in the method&apos;s paper (Tian et al. 2017), positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
+        <translation>经纬仪竖直度盘的读数；E 按方法论文（田留德等 2017）的定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
     </message>
     <message>
         <source>When the vertical readings cannot identify the tilt (none given, all equal, or only 3 faces: no degrees of freedom) the pyramidal error is not removed: its exact effect for a tilt up to this, in the worst direction, enters the uncertainty (rectangular); not used when the tilt is fitted</source>
@@ -6602,6 +6605,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>none</source>
         <translation>无</translation>
+    </message>
+    <message>
+        <source>particle swarm (Gao et al. 2013)</source>
+        <translation>粒子群（高旭等 2013）</translation>
     </message>
     <message>
         <source>pilgrim step (every approach of a target in turn)</source>
@@ -7106,21 +7113,12 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>补偿所用的名义线膨胀系数（直线轴；ISO 230-2 第 8 章）。0：未给出</translation>
     </message>
     <message>
-        <source>Set-up parameters: azimuths are counted from the theodolite&apos;s azimuth zero in the sense its horizontal circle reads (clockwise seen from above), and the axis under test turns that way for increasing θ. ψ is the angle between the axis and the plumb line; α is the azimuth, so counted, toward which the axis&apos; upper end leans (its lower end leans toward α + 180°); β is the elevation of the mirror normal above the horizontal at the reference reading θ₀, positive upward. The vertical readings are taken as the seed&apos;s E (OZ plumb down, E = asin z): positive below the horizontal, E = V − 90° for a zenith angle V. Elevations entered positive upward give α + 180° and −β and the same corrected errors: the set-up mirrored in the horizontal plane shows the same azimuths.</source>
-        <extracomment>what ψ, α and β are (the frame of ../shared/SPEC.md §1, the seed&apos;s), checked against an independent rig built in a frame with OZ up (tests/models/certificate/test_certificate_uncertainty.py)</extracomment>
-        <translation>安装参数：方位角从经纬仪的方位零位起、按其水平度盘读数增大的方向计（从上方看为顺时针），被测轴在 θ 增大时也按此方向转动。ψ 为轴线与铅垂线的夹角；α 为按上述方式计量的、轴线上端倾向的方位角（其下端倾向 α + 180°）；β 为参考读数 θ₀ 处反射镜法线高于水平面的仰角，向上为正。竖直读数按原文的 E 取值（OZ 铅垂向下，E = asin z）：在水平面以下为正，天顶距为 V 时 E = V − 90°。若输入向上为正的仰角，则得到 α + 180° 和 −β，修正后误差不变：以水平面为镜面对称的安装给出相同的方位读数。</translation>
-    </message>
-    <message>
         <source>θ = {theta}° (row {row} of the results)</source>
         <translation>θ = {theta}°（结果表第 {row} 行）</translation>
     </message>
     <message>
         <source>Resolution of the reference&apos;s reading, in the deviation unit (rectangular, half-width r/2). 0: not stated</source>
         <translation>参考仪器读数的分辨力，以偏差单位表示（矩形分布，半宽 r/2）。0：未给出</translation>
-    </message>
-    <message>
-        <source>What the theodolite&apos;s vertical circle reads; E is the seed&apos;s, positive below the horizontal (OZ down): elevations read positive upward give α + 180° and −β, with the same corrected errors</source>
-        <translation>经纬仪竖直度盘的读数；E 按原文定义，在水平面以下为正（OZ 向下）：若读数向上为正，则得到 α + 180° 和 −β，修正后误差不变</translation>
     </message>
     <message>
         <source>axis set-up</source>
@@ -7242,6 +7240,10 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>row {row}: the sample (u_sin {u_sin} V, u_cos {u_cos} V) lies {value} % off the Lissajous ring the other samples draw: not a sample of this signal; check that row</source>
         <translation>第 {row} 行：该采样点（u_sin {u_sin} V，u_cos {u_cos} V）偏离其余采样点构成的李萨如圆环 {value} %：不是该信号的采样；请检查该行</translation>
+    </message>
+    <message>
+        <source>the particle swarm (the method of Gao et al. 2013) fits orders 1, 3, 5 only</source>
+        <translation>粒子群法（高旭等 2013 年论文的方法）只拟合 1、3、5 次</translation>
     </message>
     <message>
         <source>no compensation: the measured phase atan2(u_sin, u_cos) of the fitted signals turns back within a period (the Lissajous figure loops near 0 V: offsets A0 = {a0} V, B0 = {b0} V, amplitudes A1 = {a1} V, B1 = {b1} V), so a table over it cannot compensate</source>

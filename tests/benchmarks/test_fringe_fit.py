@@ -195,8 +195,9 @@ def test_fringe_fit_against_particle_swarms(report):
     report("2-fringe", lines, headline=(
         f"Fringe: linear least squares gives a period's exact minimum cost in "
         f"{fmt_time(rows['lsq'][1]).split(' (')[0]}; numpy.linalg.lstsq takes "
-        f"{numpy_ratio:.1f}× as long, scipy.optimize.least_squares {scipy_ratio:.0f}×, the seed's "
-        f"PSO {pso_ratio:,.0f}×{pyswarms_note}. A whole revolution ({n:,} samples, drift included) takes "
+        f"{numpy_ratio:.1f}× as long, scipy.optimize.least_squares {scipy_ratio:.0f}×, the paper's "
+        f"PSO (Gao et al. 2013) {pso_ratio:,.0f}×{pyswarms_note}. A whole revolution ({n:,} samples, "
+        "drift included) takes "
         f"{fmt_time(revolution).split(' (')[0]} of compute once the readings are in memory "
         "(reading the file is not included)."))
     assert np.all(np.array(rows["pso"][0]) >= lsq_costs * (1 - 1e-9))

@@ -24,6 +24,7 @@ from models.certificate.metadata import CertificateMetadata
 from models.readings.sheet import ReadingsSheet
 from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
+from tests.app.test_no_in_house_names import IN_HOUSE
 
 pytestmark = pytest.mark.slow  # every test prints certificates (fringe: 512 rows)
 
@@ -171,3 +172,20 @@ def test_every_glyph_printed_and_no_word_broken_between_letters(analysed, langua
             broken = sorted(w for w in words if not re.search(rf"(?<![A-Za-z]){w}(?![A-Za-z])",
                                                                printed))
             assert broken == [], (key, broken)
+
+
+@pytest.mark.parametrize("language", ["en", "zh+en", "zh"])
+def test_no_sample_certificate_names_a_paper_by_our_in_house_name(analysed, language):
+    """The method's paper is named ("Tian et al. 2017", its full reference under the
+    method), never "the seed's …" (assessor: the theodolite's certificate printed "the
+    negative of the seed's A − θ" and "taken as the seed's E", the polygon's "the seed's
+    eqs 3–7"); the Monte Carlo's "seed 1234…" stays (tests/app/test_no_in_house_names.py)."""
+    for key in sorted(KINDS):
+        printed = _sample_printed(analysed, key, "as issued", language)[0]
+        assert IN_HOUSE.findall(printed) == [], key
+    if language == "en":  # each paper named where the reader meets it, in full once
+        theodolite = _sample_printed(analysed, "theodolite", "as issued", "en")[0]
+        assert "the negative of A − θ in the published method (Tian et al. 2017)" in theodolite
+        assert "Acta Photonica Sinica 46(11):1112005 (2017)" in theodolite
+        assert "eqs 3–7 of the published method, Tian et al. 2015," in _sample_printed(
+            analysed, "polygon", "as issued", "en")[0]
