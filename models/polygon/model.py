@@ -255,6 +255,9 @@ class PolygonSetResult:
     # why the tilt was not identified ("" when it was): no vertical readings, no variation
     # in them, or no degrees of freedom left for the fit (3 faces)
     tilt_not_identified: str = ""
+    # position order: each position's index among the set's readings (0: its first reading,
+    # the closure comes at n), for the drift carried from set to set in the budget
+    reading_index: np.ndarray | None = None
 
     @property
     def closure_arcsec(self) -> float | None:
@@ -365,7 +368,7 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
         results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,
                                         s.direction, int(s.positions[0]),
                                         ac_y if tilt is not None else None, warnings,
-                                        unidentified))
+                                        unidentified, np.asarray(order)))
     return results
 
 

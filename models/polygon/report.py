@@ -401,6 +401,108 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
                 closures=", ".join(f"{d:+.2f}" for d in drifts) + "\"", how=message(how)))]
 
 
+def _carried_drift_coefficients(result: PolygonResult, zero: int) -> np.ndarray | None:
+    """How the zero's drift enters each set's error at each position, as coefficients of the
+    sets' closure drifts: (sets, positions, sets), or None when a set has no closure.
+
+    The autocollimator's zero drifts with time, not set by set: a set starts where the set
+    before it closed, so against the common zero (set 1's reading at the zero face) set s
+    carries the drifts of the sets before it, Σ_{r<s} c_r, and within the set (drift not
+    spread) c_s·j/n at its j-th reading; the zero reading carries set 1's at its own index.
+    """
+    sets = result.sets
+    if any(s.closure_drift_arcsec is None or s.reading_index is None for s in sets):
+        return None
+    m, n = len(sets), result.faces
+    coefficients = np.zeros((m, n, m))
+    for k, s in enumerate(sets):
+        coefficients[k, :, :k] = 1.0
+        if not result.spread_drift:
+            coefficients[k, :, k] += np.asarray(s.reading_index, dtype=float) / n
+    zero_reading = np.zeros(m)
+    if not result.spread_drift:
+        zero_reading[0] = float(sets[0].reading_index[zero]) / n
+    return coefficients - zero_reading
+
+
+def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: int,
+                             share: ZeroFaceShare) -> list[BudgetComponent] | None:
+    """The zero's drift over the whole test as the closures show it, left in the errors (not
+    spread: carried on from set to set and within each set; spread: carried on from set to
+    set), or None when a set has no closure to show it.
+
+    Per position the bias it leaves is b = Σ_s w_s·Σ_r A_s,r·c_r over the sets' closures c_r
+    (:func:`_carried_drift_coefficients`; w_s the mean's weights). Uncorrected, it enters as
+    a standard uncertainty |b| in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at
+    ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), with
+    b² shrunk by the share of the closures' power beyond their reading noise (σ from the
+    sets' scatter about each set's own mean, :func:`_noise_about_each_set`). One unknown value for the whole test, drawn once per trial in the half
+    range's Monte Carlo with b's sign at each position. For one set's array the set's own
+    (set 1), or the largest over the later sets."""
+    coefficients = _carried_drift_coefficients(result, zero)
+    if coefficients is None:
+        return None
+    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
+    directions = np.array([s.direction for s in result.sets])
+    if share == ZERO_READING:
+        per_set = coefficients[:1]
+    elif share == OTHER_SET and len(result.sets) > 1:
+        per_set = coefficients[1:]
+    else:
+        per_set = np.einsum("s,sir->ir", _mean_weights(directions), coefficients)[None]
+    bias = per_set @ closures  # (sets, positions)
+    # the share of the closures' power beyond their own reading noise (2σ² each), taken
+    # over the closures together (positive-part James–Stein shrinkage): closures within
+    # their noise leave little drift to carry, a drift well beyond it all of it
+    sigma = _noise_about_each_set(result)
+    sigma = noise if sigma is None else sigma
+    power = float(np.mean(closures**2))
+    beyond_noise = max(0.0, 1.0 - 2.0 * sigma**2 / power) if power > 0.0 else 0.0
+    excess = beyond_noise * bias**2
+    worst = np.argmax(excess, axis=0)
+    positions = np.arange(n)
+    half_width = np.sqrt(excess[worst, positions])
+    sign = np.where(bias[worst, positions] < 0.0, -1.0, 1.0)
+    if not np.any(half_width > 0.0):
+        return []
+    how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
+                      "removed") if result.spread_drift
+           else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
+    return [BudgetComponent(
+        QT_TR_NOOP("Zero drift carried from set to set"), "B", "normal", half_width,
+        1.0, sign, math.inf,
+        message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
+                           "starts where the one before closed (closures {closures}); {how}; "
+                           "the bias it leaves beyond the closures' reading noise, in "
+                           "quadrature"),
+                closures=", ".join(f"{c:+.2f}" for c in closures) + "\"", how=message(how)),
+        common=True)]
+
+
+def _noise_about_each_set(result: PolygonResult) -> float | None:
+    """σ of one error from the sets' scatter once each set's own mean is taken out, so that
+    the offsets a drift carried from set to set puts between them are not taken for noise
+    (the sets' scatter, the noise input, holds them); None when no direction was repeated."""
+    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
+    n = corrected.shape[1]
+    if n < 2:
+        return None
+    directions = np.array([s.direction for s in result.sets])
+    repeat = pooled_repeatability(corrected - corrected.mean(axis=1, keepdims=True), directions)
+    if repeat is None:
+        return None
+    return float(np.sqrt(np.mean(repeat[0] ** 2) * n / (n - 1)))
+
+
+def _mean_weights(directions: np.ndarray) -> np.ndarray:
+    """Each set's weight in the mean over the sets: 1/m, or 1/(2·m_d) for the mean of the
+    two directions' means."""
+    d = np.asarray(directions)
+    if np.any(d > 0) and np.any(d < 0):
+        return np.where(d > 0, 1.0 / (2.0 * np.sum(d > 0)), 1.0 / (2.0 * np.sum(d < 0)))
+    return np.full(d.size, 1.0 / d.size)
+
+
 def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> list[BudgetComponent]:
     """Each reference standard twice, as the error e_i = … − (dev_i − dev_z) − (x_i − x_z)
     takes it: the face's (or reading's) own calibration error, one unknown per point, and
@@ -452,7 +554,11 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     components += _unidentified_tilt_component(
         result, n, zero, float(stated.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0))
     components += _roll_component(result, result.ac_roll_arcmin, n)
-    components += _drift_component(result, noise, n, zero, share)
+    carried = _carried_drift_component(result, noise, n, zero, share)
+    if carried is None or result.spread_drift:
+        # what a spread drift leaves within each set, or a drift no chain of closures shows
+        components += _drift_component(result, noise, n, zero, share)
+    components += carried or []
     components += resolution_component(metadata, pair)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))

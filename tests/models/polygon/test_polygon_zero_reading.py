@@ -73,7 +73,9 @@ def _study(directions: tuple[int, ...], runs: int, seed: int):
 @pytest.mark.parametrize("directions", [(1, 1, 1), (1, -1, 1, -1)])
 def test_only_the_zero_reading_has_u_zero_and_the_others_at_its_face_are_covered(directions):
     """120 runs each (about 5 s): the scatter's standard deviation is known to about 7 %;
-    U / (2 × scatter) is 1.0–1.2 at every other face, and must be so at face 1 too."""
+    U / (2 × scatter) is 1.0–1.2 at every other face, and must be so at face 1 too (up to
+    1.6 at a later set's face 1: with no drift in this rig, the zero drift the closures
+    could carry from set to set still enters, as far as their noise leaves it possible)."""
     m = len(directions)
     per, u_per, mean, u_mean, raw, u_raw = _study(directions, 120, 39)
     # set 1 at face 1: the zero reading against itself, 0 in every run: U = 0
@@ -84,13 +86,13 @@ def test_only_the_zero_reading_has_u_zero_and_the_others_at_its_face_are_covered
     scatter = per[:, later].std(axis=0, ddof=1)
     assert np.all(np.abs(scatter / (SIGMA * math.sqrt(2.0)) - 1.0) < 0.2), scatter
     ratio = u_per[:, later].mean() / (2.0 * math.sqrt(np.mean(scatter**2)))
-    assert 0.92 <= ratio <= 1.35, ratio
+    assert 0.92 <= ratio <= 1.6, ratio
     assert np.mean(np.abs(per[:, later]) <= u_per[:, later]) >= 0.93
     assert np.all(u_raw[:, later] > 0)
     # the mean at position 1 takes those in: not zero by definition, and its U covers it
     assert np.std(mean[:, 0]) > 0.2 * SIGMA
     ratio = u_mean[:, 0].mean() / (2.0 * mean[:, 0].std(ddof=1))
-    assert 0.92 <= ratio <= 1.35, ratio
+    assert 0.92 <= ratio <= 1.6, ratio
     assert np.mean(np.abs(mean[:, 0]) <= u_mean[:, 0]) >= 0.93
     # and it is made the same way as at the other faces (the same ratio, within the noise)
     others = np.median(u_mean[:, 1:].mean(axis=0) / (2.0 * mean[:, 1:].std(axis=0, ddof=1)))
@@ -173,11 +175,14 @@ def test_sample_json_and_certificate_agree_at_the_zero_reading(capsys, samples_d
         assert u[faces] > 0.13, name
     mean = np.array(data["mean_corrected_error_arcsec"])
     u_mean = np.array(data["expanded_uncertainty_mean_corrected_error_arcsec"])
-    assert mean[0] == pytest.approx(-0.100, abs=5e-4) and u_mean[0] == pytest.approx(0.076,
+    # U 0.076 before 0.8.0; 0.119 since the zero's drift carried from set 2's start (set 1's
+    # closure +0.12″, half of it in the mean there) is an input: set 2's error at face 1 is
+    # −0.20″, as a zero 0.12″ further on predicts
+    assert mean[0] == pytest.approx(-0.100, abs=5e-4) and u_mean[0] == pytest.approx(0.119,
                                                                                      abs=5e-4)
     # the certificate: position 1 the mean, −0.100 with its U; the statement says so
     text = re.sub(r"\s+", " ", "\n".join(page.extract_text() for page in PdfReader(pdf).pages))
     assert "U is zero at face 1 of set 1" not in text
     assert "U is zero only at the zero reading, face 1 of set 1" in text
     assert "its error and its U are not zero" in text
-    assert re.search(r"\b1 0\.000 -0\.100 \+0\.000 -0\.100 0\.076\b", text), text
+    assert re.search(r"\b1 0\.000 -0\.100 \+0\.000 -0\.100 0\.12\b", text), text  # U to two digits
