@@ -180,9 +180,10 @@ def test_sample_json_and_certificate_agree_at_the_zero_reading(capsys, samples_d
     # −0.20″, as a zero 0.12″ further on predicts
     assert mean[0] == pytest.approx(-0.100, abs=5e-4) and u_mean[0] == pytest.approx(0.119,
                                                                                      abs=5e-4)
-    # the certificate: position 1 the mean, −0.100 with its U; the statement says so
+    # the certificate: position 1 the mean, −0.10 with its U; the statement says so
     text = re.sub(r"\s+", " ", "\n".join(page.extract_text() for page in PdfReader(pdf).pages))
     assert "U is zero at face 1 of set 1" not in text
     assert "U is zero only at the zero reading, face 1 of set 1" in text
     assert "its error and its U are not zero" in text
-    assert re.search(r"\b1 0\.000 -0\.100 \+0\.000 -0\.100 0\.12\b", text), text  # U to two digits
+    # U to two significant digits and the error to the same decimal (GUM 7.2.6)
+    assert re.search(r"\b1 0\.000 -0\.10 \+0\.00 -0\.10 0\.12\b", text), text
