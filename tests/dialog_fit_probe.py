@@ -7,13 +7,10 @@ from a timer that records the modal window in front and closes it."""
 
 from __future__ import annotations
 
-import json
-import sys
-import tempfile
-from pathlib import Path
-
-from PySide6.QtCore import QSettings, QTimer
+from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication, QMessageBox, QWidget
+
+from tests.screen_process import close_window, open_window
 
 found: dict[str, dict] = {}
 
@@ -45,18 +42,10 @@ def answer_modal(name: str, then=None) -> None:
 
 def main() -> None:
     app = QApplication.instance() or QApplication(["anglebench"])
-    from app.main_window import MainWindow
-    from models.project.recovery import RecoveryStore
     from widgets.certificate_dialog import CertificateDialog
     from widgets.column_mapping_dialog import ColumnMappingDialog
 
-    scratch = tempfile.mkdtemp(prefix="anglebench-fit-")
-    language = sys.argv[1] if len(sys.argv) > 1 else "en"
-    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
-    settings.setValue("ui/language", language)
-    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
-    window.load_all_samples()
-    window.show()
+    window = open_window("anglebench-fit-")
     app.processEvents()
     record("main window", window)
 
@@ -110,9 +99,7 @@ def main() -> None:
     window.projects.open_project_dialog()
     answer_modal("import readings")
     window.import_dialog()
-    window.projects.recovery.discard()
-    window.close()
-    sys.stdout.write(json.dumps(found) + "\n")
+    close_window(window, found)
 
 
 if __name__ == "__main__":

@@ -6,12 +6,6 @@ per screen: an offscreen screen of a given size and scale)."""
 
 from __future__ import annotations
 
-import json
-import sys
-import tempfile
-from pathlib import Path
-
-from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import (
     QAbstractButton,
     QApplication,
@@ -21,6 +15,8 @@ from PySide6.QtWidgets import (
     QLineEdit,
     QWidget,
 )
+
+from tests.screen_process import close_window, open_window
 
 
 def cut_texts(dialog: QWidget) -> list[str]:
@@ -60,17 +56,10 @@ def record(widget: QWidget) -> dict:
 
 def main() -> None:
     app = QApplication.instance() or QApplication(["anglebench"])
-    from app.main_window import MainWindow
     from app.screenshot import _example_metadata
-    from models.project.recovery import RecoveryStore
     from widgets.certificate_dialog import CertificateDialog
 
-    scratch = tempfile.mkdtemp(prefix="anglebench-small-")
-    settings = QSettings(str(Path(scratch) / "settings.ini"), QSettings.Format.IniFormat)
-    settings.setValue("ui/language", sys.argv[1] if len(sys.argv) > 1 else "en")
-    window = MainWindow(settings=settings, recovery=RecoveryStore(Path(scratch) / "recovery"))
-    window.load_all_samples()
-    window.show()
+    window = open_window("anglebench-small-")
     found: dict[str, dict] = {}
     for index, presenter in enumerate(window.presenters):
         window.tabs.setCurrentIndex(index)
@@ -85,9 +74,7 @@ def main() -> None:
     found["certificate details"].update(
         cut=cut_texts(dialog), sideways=dialog.details_area.horizontalScrollBar().maximum())
     dialog.close()
-    window.projects.recovery.discard()
-    window.close()
-    sys.stdout.write(json.dumps(found) + "\n")
+    close_window(window, found)
 
 
 if __name__ == "__main__":

@@ -436,9 +436,10 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
     a standard uncertainty |b| in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at
     ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), with
     b² shrunk by the share of the closures' power beyond their reading noise (σ from the
-    sets' scatter about each set's own mean, :func:`_noise_about_each_set`). One unknown value for the whole test, drawn once per trial in the half
-    range's Monte Carlo with b's sign at each position. For one set's array the set's own
-    (set 1), or the largest over the later sets."""
+    sets' scatter about each set's own mean, :func:`_noise_about_each_set`). One unknown
+    value for the whole test, drawn once per trial in the half range's Monte Carlo with b's
+    sign at each position. For one set's array the set's own (set 1), or the largest over
+    the later sets."""
     coefficients = _carried_drift_coefficients(result, zero)
     if coefficients is None:
         return None

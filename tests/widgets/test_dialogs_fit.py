@@ -7,17 +7,12 @@ screen), the register 724 and the manual 764."""
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
+
+from tests.screen_process import run_on_screen
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
-ROOT = Path(__file__).resolve().parents[2]
 SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
     "1280x720": (1280, 720, "1", "en"),
     "200% on 2560x1600": (2560, 1600, "2", "zh_CN"),
@@ -27,17 +22,7 @@ SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
 @pytest.mark.parametrize("screen", SCREENS)
 def test_every_dialog_fits_the_screen(screen, tmp_path):
     width, height, scale, language = SCREENS[screen]
-    config = tmp_path / "screen.json"
-    config.write_text(json.dumps({"screens": [{
-        "name": "laptop", "x": 0, "y": 0, "width": width, "height": height,
-        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
-    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
-           "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
-           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
-    run = subprocess.run([sys.executable, "-m", "tests.dialog_fit_probe", language],
-                         env=env, capture_output=True, text=True, timeout=600, cwd=tmp_path)
-    assert run.returncode == 0, run.stderr[-3000:]
-    found = json.loads(run.stdout.strip().splitlines()[-1])
+    found = run_on_screen("tests.dialog_fit_probe", tmp_path, width, height, scale, language)
     expected = {"main window", "certificate details", "certificate details (Export certificate…)",
                 "which column is which", "certificate register", "manual", "quick guide", "about",
                 "a message (tell)", "a question (ask)", "paste question", "draft question",

@@ -11,17 +11,14 @@ and three of the DCC fields' hints were cut ("â€¦TRUSTED_CERTIFICATE, else theâ€
 
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
+from tests.screen_process import run_on_screen
+
 pytestmark = pytest.mark.slow  # a program of its own per screen
 
-ROOT = Path(__file__).resolve().parents[2]
 SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
     "1280x720": (1280, 720, "1", "en"),
     "200% on 1280x720": (1280, 720, "2", "en"),
@@ -30,17 +27,7 @@ SCREENS = {  # name: (width, height, QT_SCALE_FACTOR, the window's language)
 
 
 def _probe(tmp_path: Path, width: int, height: int, scale: str, language: str) -> dict:
-    config = tmp_path / "screen.json"
-    config.write_text(json.dumps({"screens": [{
-        "name": "laptop", "x": 0, "y": 0, "width": width, "height": height,
-        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
-    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
-           "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
-           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
-    run = subprocess.run([sys.executable, "-m", "tests.small_screen_probe", language],
-                         env=env, capture_output=True, text=True, timeout=600, cwd=tmp_path)
-    assert run.returncode == 0, run.stderr[-3000:]
-    return json.loads(run.stdout.strip().splitlines()[-1])
+    return run_on_screen("tests.small_screen_probe", tmp_path, width, height, scale, language)
 
 
 @pytest.mark.parametrize("screen", SCREENS)

@@ -1,0 +1,57 @@
+"""What the screen probes share (tests/small_screen_probe.py, tests/dialog_fit_probe.py): the
+test side runs a probe in a process of its own on an offscreen screen of a given size and
+scale (:func:`run_on_screen`); the probe side opens the window on the bundled samples in a
+scratch folder, in the language asked for (:func:`open_window`), and closes it without a
+trace (:func:`close_window`)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def run_on_screen(probe: str, tmp_path: Path, width: int, height: int, scale: str,
+                  language: str) -> dict:
+    """Run the module ``probe`` (``python -m``) on a ``width``×``height`` offscreen screen at
+    QT_SCALE_FACTOR ``scale`` with the window in ``language``; its last line of output, JSON."""
+    config = tmp_path / "screen.json"
+    config.write_text(json.dumps({"screens": [{
+        "name": "laptop", "x": 0, "y": 0, "width": width, "height": height,
+        "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]}))
+    env = {**os.environ, "QT_QPA_PLATFORM": f"offscreen:configfile={config}",
+           "QT_SCALE_FACTOR": scale, "PYTHONPATH": str(ROOT), "HOME": str(tmp_path),
+           "XDG_CONFIG_HOME": str(tmp_path / "config"), "XDG_DATA_HOME": str(tmp_path / "data")}
+    run = subprocess.run([sys.executable, "-m", probe, language], env=env, capture_output=True,
+                         text=True, timeout=600, cwd=tmp_path)
+    assert run.returncode == 0, run.stderr[-3000:]
+    return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+def open_window(prefix: str):
+    """The main window on every bundled sample, shown, with its settings and recovery in a
+    scratch folder and the language of the probe's first argument (en by default)."""
+    from PySide6.QtCore import QSettings
+
+    from app.main_window import MainWindow
+    from models.project.recovery import RecoveryStore
+
+    scratch = Path(tempfile.mkdtemp(prefix=prefix))
+    settings = QSettings(str(scratch / "settings.ini"), QSettings.Format.IniFormat)
+    settings.setValue("ui/language", sys.argv[1] if len(sys.argv) > 1 else "en")
+    window = MainWindow(settings=settings, recovery=RecoveryStore(scratch / "recovery"))
+    window.load_all_samples()
+    window.show()
+    return window
+
+
+def close_window(window, found: dict) -> None:
+    """Close ``window``, leaving no recovery behind, and print ``found`` as the probe's JSON."""
+    window.projects.recovery.discard()
+    window.close()
+    sys.stdout.write(json.dumps(found) + "\n")
