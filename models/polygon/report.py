@@ -429,7 +429,7 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
                              share: ZeroFaceShare) -> list[BudgetComponent] | None:
     """The zero's drift over the whole test as the closures show it, left in the errors (not
     spread: carried on from set to set and within each set; spread: carried on from set to
-    set), or None when a set has no closure to show it.
+    set), or None when a set has no closure to show it or there is one set only.
 
     Per position the bias it leaves is b = Σ_s w_s·Σ_r A_s,r·c_r over the sets' closures c_r
     (:func:`_carried_drift_coefficients`; w_s the mean's weights). Uncorrected, it enters as
@@ -441,7 +441,8 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
     sign at each position. For one set's array the set's own (set 1), or the largest over
     the later sets."""
     coefficients = _carried_drift_coefficients(result, zero)
-    if coefficients is None:
+    if coefficients is None or len(result.sets) < 2:
+        # one set carries nothing on: its own drift is the closure drift's input
         return None
     closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
     directions = np.array([s.direction for s in result.sets])
