@@ -20,7 +20,16 @@ from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, langua
 from app.command_line import say as _say
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, in_unit
-from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_of, rendered, translator
+from models.messages import (
+    QT_TR_NOOP,
+    declared_text,
+    joined,
+    message,
+    reason_of,
+    rendered,
+    separated,
+    translator,
+)
 from models.parameters import SettingsError
 from models.project.output_guard import (
     OutputRefused,
@@ -647,9 +656,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             _write_pdf_and_dcc(args, kind, result, document, words, settings)
             _say(rendered(message(QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
-                "in the register)"), path=args.certificate, fields=joined(
-                    part for i, name in enumerate(metadata.missing_fields())
-                    for part in ((", " if i else ""), message(name)))), words))
+                "in the register)"), path=args.certificate, fields=separated(
+                    (message(name) for name in metadata.missing_fields()), ", ")), words))
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])
