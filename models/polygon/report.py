@@ -434,9 +434,10 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
     Per position the bias it leaves is b = Σ_s w_s·Σ_r A_s,r·c_r over the sets' closures c_r
     (:func:`_carried_drift_coefficients`; w_s the mean's weights). Uncorrected, it enters as
     a standard uncertainty |b| in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at
-    ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), with
-    b² shrunk by the share of the closures' power beyond their reading noise (σ from the
-    sets' scatter about each set's own mean, :func:`_noise_about_each_set`). One unknown
+    ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), the
+    closures' mean (a steady drift) and their variation from set to set each shrunk by the
+    share of its power beyond the closures' reading noise (σ from the sets' scatter about
+    each set's own mean, :func:`_noise_about_each_set`). One unknown
     value for the whole test, drawn once per trial in the half range's Monte Carlo with b's
     sign at each position. For one set's array the set's own (set 1), or the largest over
     the later sets."""
@@ -452,15 +453,20 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
         per_set = coefficients[1:]
     else:
         per_set = np.einsum("s,sir->ir", _mean_weights(directions), coefficients)[None]
-    bias = per_set @ closures  # (sets, positions)
-    # the share of the closures' power beyond their own reading noise (2σ² each), taken
-    # over the closures together (positive-part James–Stein shrinkage): closures within
-    # their noise leave little drift to carry, a drift well beyond it all of it
+    # the closures split into their mean (a steady drift, known to 2σ²/m) and what varies
+    # from set to set (to 2σ² each), each shrunk by the share of its power beyond the
+    # closures' reading noise (positive-part James–Stein, one subspace at a time): closures
+    # within their noise leave little drift to carry, a drift well beyond it all of it
     sigma = _noise_about_each_set(result)
     sigma = noise if sigma is None else sigma
-    power = float(np.mean(closures**2))
-    beyond_noise = max(0.0, 1.0 - 2.0 * sigma**2 / power) if power > 0.0 else 0.0
-    excess = beyond_noise * bias**2
+    m = closures.size
+    steady = float(np.mean(closures))
+    varying = closures - steady
+    keep_steady = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
+    spread = float(np.sum(varying**2))
+    keep_varying = max(0.0, 1.0 - 2.0 * sigma**2 * (m - 1) / spread) if spread > 0.0 else 0.0
+    bias = per_set @ (math.sqrt(keep_steady) * steady + math.sqrt(keep_varying) * varying)
+    excess = bias**2  # (sets, positions)
     worst = np.argmax(excess, axis=0)
     positions = np.arange(n)
     half_width = np.sqrt(excess[worst, positions])

@@ -11,22 +11,26 @@ autocollimator whose zero drifts by D a set, σ_D = 0.15″, reading noise 0.1�
 by the workbench, 100 runs a case (2026-12-03), positions 2…24:
 
     design        drift      closure drift   before          now
-    2 + 2         steady     report          0.843           0.955
-                             spread          0.950           0.979
-                  carried    report          0.900           0.960
-                             spread          0.965           0.979
-    3 + 1         steady     report          0.854           0.956
-                             spread          0.948           0.977
-                  carried    report          0.904           0.970
-                             spread          0.967           0.988
-    2 + 2, 3 + 1  none       report          0.96–0.98       0.974–0.976 (U / 2σ 1.13–1.17)
+    2 + 2         steady     report          0.843           0.978
+                             spread          0.950           0.990
+                  carried    report          0.900           0.968
+                             spread          0.965           0.983
+    3 + 1         steady     report          0.854           0.979
+                             spread          0.948           0.989
+                  carried    report          0.904           0.973
+                             spread          0.967           0.992
+    2 + 2, 3 + 1  none       report          0.96–0.98       0.974–0.978 (U / 2σ 1.20–1.27)
 
-The input is the bias the closures say the drift leaves, shrunk by the share of their power
-beyond their reading noise (positive-part James–Stein; per position instead, U / 2σ was
-1.20–1.26 with no drift), added in quadrature (RSS_u). With no drift at all the closures'
-noise still leaves room for a small drift carried on, so U grows by about a sixth; the reset
-model of the earlier simulation (each set's drift from its own first reading, which no real
-zero does) now gets 1.3–1.6 × its scatter.
+A later set's own U (the JSON's per-set arrays), last set, steady drift: 0.84–0.87 → 0.91–0.96.
+
+The input is the bias the closures say the drift leaves, their mean (a steady drift, known
+to 2σ²/m) and their variation from set to set each shrunk by the share of its power beyond
+their reading noise (positive-part James–Stein), added in quadrature (RSS_u). Shrinking the
+closures as one vector instead left U / 2σ at 1.13–1.17 with no drift but covered a later
+set under a steady drift in 0.87–0.91 only. With no drift at all the closures' noise still
+leaves room for a small drift carried on, so U grows by about a fifth; the reset model of
+the earlier simulation (each set's drift from its own first reading, which no real zero
+does) gets 1.3–1.6 × its scatter.
 """
 
 from __future__ import annotations
