@@ -426,7 +426,8 @@ def _carried_drift_coefficients(result: PolygonResult, zero: int) -> np.ndarray 
 
 
 def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: int,
-                             share: ZeroFaceShare) -> list[BudgetComponent] | None:
+                             share: ZeroFaceShare, drift_set: int | None = None
+                             ) -> list[BudgetComponent] | None:
     """The zero's drift over the whole test as the closures show it, left in the errors (not
     spread: carried on from set to set and within each set; spread: carried on from set to
     set), or None when a set has no closure to show it or there is one set only.
@@ -435,37 +436,37 @@ def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: 
     (:func:`_carried_drift_coefficients`; w_s the mean's weights). Uncorrected, it enters as
     a standard uncertainty |b| in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at
     ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), the
-    closures' mean (a steady drift) and their variation from set to set each shrunk by the
-    share of its power beyond the closures' reading noise (σ from the sets' scatter about
-    each set's own mean, :func:`_noise_about_each_set`). One unknown
+    drift taken as steady, the closures' mean, shrunk by the share of its power beyond its
+    reading noise (σ from the sets' scatter about each set's own mean,
+    :func:`_noise_about_each_set`). One unknown
     value for the whole test, drawn once per trial in the half range's Monte Carlo with b's
-    sign at each position. For one set's array the set's own (set 1), or the largest over
-    the later sets."""
+    sign at each position. For one set's array (``drift_set``, or set 1 at
+    :data:`ZERO_READING`) that set's own; at :data:`OTHER_SET` the largest over the later
+    sets."""
     coefficients = _carried_drift_coefficients(result, zero)
     if coefficients is None or len(result.sets) < 2:
         # one set carries nothing on: its own drift is the closure drift's input
         return None
     closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
     directions = np.array([s.direction for s in result.sets])
-    if share == ZERO_READING:
+    if drift_set is not None:
+        per_set = coefficients[[drift_set]]
+    elif share == ZERO_READING:
         per_set = coefficients[:1]
     elif share == OTHER_SET and len(result.sets) > 1:
         per_set = coefficients[1:]
     else:
         per_set = np.einsum("s,sir->ir", _mean_weights(directions), coefficients)[None]
-    # the closures split into their mean (a steady drift, known to 2σ²/m) and what varies
-    # from set to set (to 2σ² each), each shrunk by the share of its power beyond the
-    # closures' reading noise (positive-part James–Stein, one subspace at a time): closures
-    # within their noise leave little drift to carry, a drift well beyond it all of it
+    # a steady drift, the closures' mean (known to 2σ²/m, σ of one reading), shrunk by the
+    # share of its power beyond that noise (positive part): the mean within its noise leaves
+    # little drift to carry, a drift well beyond it all of it. What varies from set to set
+    # is not carried again: it puts the sets apart, and their scatter, the reading noise's
+    # input, holds it (a random walk's carried offsets were covered 0.96–0.98 without it)
     sigma = _noise_about_each_set(result)
     sigma = noise if sigma is None else sigma
-    m = closures.size
     steady = float(np.mean(closures))
-    varying = closures - steady
-    keep_steady = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
-    spread = float(np.sum(varying**2))
-    keep_varying = max(0.0, 1.0 - 2.0 * sigma**2 * (m - 1) / spread) if spread > 0.0 else 0.0
-    bias = per_set @ (math.sqrt(keep_steady) * steady + math.sqrt(keep_varying) * varying)
+    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (closures.size * steady**2)) if steady else 0.0
+    bias = per_set @ np.full(closures.size, math.sqrt(keep) * steady)
     excess = bias**2  # (sets, positions)
     worst = np.argmax(excess, axis=0)
     positions = np.arange(n)
@@ -534,7 +535,8 @@ def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> li
 
 def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
                    settings: Mapping[str, Any] | None = None, *,
-                   share: ZeroFaceShare | None = None) -> UncertaintyBudget:
+                   share: ZeroFaceShare | None = None,
+                   drift_set: int | None = None) -> UncertaintyBudget:
     """The budget of the mean corrected error, with the stated inputs of the ``settings``
     ``result`` was analysed with (None: the defaults): the tilt bound when the tilt is not
     identified, the σ of a reading when the readings cannot evaluate it, the laboratory's
@@ -562,7 +564,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     components += _unidentified_tilt_component(
         result, n, zero, float(stated.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0))
     components += _roll_component(result, result.ac_roll_arcmin, n)
-    carried = _carried_drift_component(result, noise, n, zero, share)
+    carried = _carried_drift_component(result, noise, n, zero, share, drift_set)
     if carried is None or result.spread_drift:
         # what a spread drift leaves within each set, or a drift no chain of closures shows
         components += _drift_component(result, noise, n, zero, share)
@@ -600,8 +602,8 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
     m = len(result.sets)
     first = _one_set(polygon_budget(result, metadata, settings, share=ZERO_READING), result)
     # a later set's budget only where there is a later set
-    later = (_one_set(polygon_budget(result, metadata, settings, share=OTHER_SET), result)
-             if m > 1 else first)
+    later = [_one_set(polygon_budget(result, metadata, settings, share=OTHER_SET, drift_set=s),
+                      result) for s in range(1, m)]
 
     def part(budget: UncertaintyBudget, keep, floor: float) -> UncertaintyBudget:
         return UncertaintyBudget(tuple(c for c in budget.components
@@ -610,7 +612,7 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
                                  budget.points, budget.probability, budget.unit, floor)
 
     def sets(keep, floor: float) -> PointUncertainty:
-        budgets = [part(first, keep, floor)] + [part(later, keep, floor)] * (m - 1)
+        budgets = [part(first, keep, floor)] + [part(b, keep, floor) for b in later]
         return PointUncertainty(np.concatenate([b.expanded for b in budgets]),
                                 np.concatenate([b.coverage_factors for b in budgets]))
 
