@@ -12,10 +12,10 @@ analysed by the workbench (CLI, JSON), 400 runs a design (2026-12-02), positions
 
     design    no drift                               drift σ_D = 0.15″ a set, carried on
               coverage       U / (2 × scatter)       coverage       U / (2 × scatter)
-    3 + 1     0.974 (0.995)  1.25, 1.17–1.36 (1.44)  0.968 (0.975)  1.07, 0.96–1.14 (1.07)
-    2 + 1     0.977 (1.000)  1.22, 1.14–1.29 (1.42)  0.973 (0.980)  1.06, 1.01–1.13 (1.11)
-    4 + 2     0.975 (0.975)  1.34, 1.27–1.48 (1.54)  0.955 (0.940)  1.04, 1.00–1.12 (1.03)
-    2 + 2     0.972 (0.990)  1.19, 1.10–1.27 (1.33)  0.971 (0.965)  1.07, 0.95–1.15 (1.06)
+    3 + 1     0.972 (0.980)  1.23, 1.15–1.33 (1.38)  0.958 (0.960)  1.03, 0.91–1.11 (0.99)
+    2 + 1     0.975 (0.985)  1.18, 1.12–1.23 (1.32)  0.967 (0.960)  1.02, 0.94–1.09 (1.02)
+    4 + 2     0.973 (0.970)  1.30, 1.22–1.43 (1.46)  0.933 (0.905)  0.98, 0.93–1.06 (0.94)
+    2 + 2     0.970 (0.975)  1.16, 1.06–1.25 (1.26)  0.953 (0.925)  1.02, 0.89–1.11 (0.96)
     (2 + 2 is the control: equal sets; 200 runs a design, 2026-12-03, since 0.8.0: the zero
     drifts on from set to set, as a real zero does, and the budget carries it; with no drift
     U is about a fifth above the scatter, the drift the closures cannot rule out. 0.7.0,
