@@ -155,6 +155,15 @@ def _effective_sets(directions: np.ndarray) -> float:
     return float(up + down)
 
 
+def _mean_weights(directions: np.ndarray) -> np.ndarray:
+    """Each set's weight in the mean over the sets: 1/m, or 1/(2·m_d) for the mean of the
+    two directions' means."""
+    d = np.asarray(directions)
+    if np.any(d > 0) and np.any(d < 0):
+        return np.where(d > 0, 1.0 / (2.0 * np.sum(d > 0)), 1.0 / (2.0 * np.sum(d < 0)))
+    return np.full(d.size, 1.0 / d.size)
+
+
 @dataclass(frozen=True)
 class ZeroFaceShare:
     """How the readings at the zero face enter one error array's figure at that face, as
@@ -190,8 +199,7 @@ def mean_zero_share(directions) -> ZeroFaceShare:
     direction: σ²(m − 1)/m, not σ²/m."""
     d = np.asarray(directions)
     m = d.size
-    both = bool(np.any(d > 0) and np.any(d < 0))
-    w1 = 1.0 / (2.0 * int(np.sum(d == d[0]))) if both else 1.0 / m
+    w1 = float(_mean_weights(d)[0])
     own = math.sqrt(max(0.0, 1.0 - w1 * w1 * _effective_sets(d)))
     return ZeroFaceShare(own, 1.0 - w1, math.sqrt(1.0 - 1.0 / m))
 
@@ -401,85 +409,73 @@ def _drift_component(result: PolygonResult, noise: float, n: int, zero: int,
                 closures=", ".join(f"{d:+.2f}" for d in drifts) + "\"", how=message(how)))]
 
 
-def _carried_drift_coefficients(result: PolygonResult, zero: int) -> np.ndarray | None:
-    """How the zero's drift enters each set's error at each position, as coefficients of the
-    sets' closure drifts: (sets, positions, sets), or None when a set has no closure.
+def _carried_drift_multipliers(result: PolygonResult, zero: int) -> np.ndarray | None:
+    """How many sets' worth of a steady zero drift each set's error carries at each position:
+    (sets, positions), or None when a set has no closure to show the drift.
 
     The autocollimator's zero drifts with time, not set by set: a set starts where the set
     before it closed, so against the common zero (set 1's reading at the zero face) set s
-    carries the drifts of the sets before it, Σ_{r<s} c_r, and within the set (drift not
-    spread) c_s·j/n at its j-th reading; the zero reading carries set 1's at its own index.
+    carries the s − 1 sets before it and, within the set (drift not spread), j/n at its j-th
+    reading; the zero reading carries set 1's at its own index.
     """
     sets = result.sets
     if any(s.closure_drift_arcsec is None or s.reading_index is None for s in sets):
         return None
-    m, n = len(sets), result.faces
-    coefficients = np.zeros((m, n, m))
-    for k, s in enumerate(sets):
-        coefficients[k, :, :k] = 1.0
-        if not result.spread_drift:
-            coefficients[k, :, k] += np.asarray(s.reading_index, dtype=float) / n
-    zero_reading = np.zeros(m)
-    if not result.spread_drift:
-        zero_reading[0] = float(sets[0].reading_index[zero]) / n
-    return coefficients - zero_reading
+    n = result.faces
+    before = np.arange(len(sets), dtype=float)[:, None] * np.ones(n)
+    if result.spread_drift:
+        return before
+    within = np.array([np.asarray(s.reading_index, dtype=float) / n for s in sets])
+    return before + within - within[0, zero]
 
 
-def _carried_drift_component(result: PolygonResult, noise: float, n: int, zero: int,
+def _carried_drift_component(result: PolygonResult, noise: float, zero: int,
                              share: ZeroFaceShare, drift_set: int | None = None
                              ) -> list[BudgetComponent] | None:
     """The zero's drift over the whole test as the closures show it, left in the errors (not
     spread: carried on from set to set and within each set; spread: carried on from set to
     set), or None when a set has no closure to show it or there is one set only.
 
-    Per position the bias it leaves is b = Σ_s w_s·Σ_r A_s,r·c_r over the sets' closures c_r
-    (:func:`_carried_drift_coefficients`; w_s the mean's weights). Uncorrected, it enters as
-    a standard uncertainty |b| in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at
-    ≥ 95 % for k = 2 whatever b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379), the
-    drift taken as steady, the closures' mean, shrunk by the share of its power beyond its
-    reading noise (σ from the sets' scatter about each set's own mean,
-    :func:`_noise_about_each_set`). One unknown
-    value for the whole test, drawn once per trial in the half range's Monte Carlo with b's
-    sign at each position. For one set's array (``drift_set``, or set 1 at
-    :data:`ZERO_READING`) that set's own; at :data:`OTHER_SET` the largest over the later
-    sets."""
-    coefficients = _carried_drift_coefficients(result, zero)
-    if coefficients is None or len(result.sets) < 2:
+    Per position the bias it leaves is b = Σ_s w_s·M_s·c̄ (M_s the multipliers of
+    :func:`_carried_drift_multipliers`, w_s the mean's weights), the drift taken as steady: c̄
+    the closures' mean, shrunk by the
+    share of its power beyond its reading noise (σ from the sets' scatter about each set's own
+    mean, :func:`_noise_about_each_set`). Uncorrected, it enters as a standard uncertainty |b|
+    in quadrature (RSS_u: U = k·√(u_c² + b²) covers the truth at ≥ 95 % for k = 2 whatever
+    b/u_c; Phillips et al., J. Res. NIST 106 (2001) 371–379): one unknown value for the whole
+    test, drawn once per trial in the half range's Monte Carlo with b's sign at each position.
+    For one set's array that set's own (``drift_set``; by default set 1 at
+    :data:`ZERO_READING`, the last set, which carries the most, at :data:`OTHER_SET`)."""
+    multipliers = _carried_drift_multipliers(result, zero)
+    m = len(result.sets)
+    if multipliers is None or m < 2:
         # one set carries nothing on: its own drift is the closure drift's input
         return None
-    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
-    directions = np.array([s.direction for s in result.sets])
-    if drift_set is not None:
-        per_set = coefficients[[drift_set]]
-    elif share == ZERO_READING:
-        per_set = coefficients[:1]
-    elif share == OTHER_SET and len(result.sets) > 1:
-        per_set = coefficients[1:]
+    if drift_set is None and share in (ZERO_READING, OTHER_SET):
+        drift_set = 0 if share == ZERO_READING else m - 1
+    if drift_set is None:
+        multiplier = _mean_weights(np.array([s.direction for s in result.sets])) @ multipliers
     else:
-        per_set = np.einsum("s,sir->ir", _mean_weights(directions), coefficients)[None]
+        multiplier = multipliers[drift_set]
     # a steady drift, the closures' mean (known to 2σ²/m, σ of one reading), shrunk by the
     # share of its power beyond that noise (positive part): the mean within its noise leaves
     # little drift to carry, a drift well beyond it all of it. What varies from set to set
     # is not carried again: it puts the sets apart, and their scatter, the reading noise's
     # input, holds it (a random walk's carried offsets were covered 0.96–0.98 without it)
+    closures = np.array([s.closure_drift_arcsec for s in result.sets], dtype=float)
     sigma = _noise_about_each_set(result)
     sigma = noise if sigma is None else sigma
     steady = float(np.mean(closures))
-    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (closures.size * steady**2)) if steady else 0.0
-    bias = per_set @ np.full(closures.size, math.sqrt(keep) * steady)
-    excess = bias**2  # (sets, positions)
-    worst = np.argmax(excess, axis=0)
-    positions = np.arange(n)
-    half_width = np.sqrt(excess[worst, positions])
-    sign = np.where(bias[worst, positions] < 0.0, -1.0, 1.0)
-    if not np.any(half_width > 0.0):
+    keep = max(0.0, 1.0 - 2.0 * sigma**2 / (m * steady**2)) if steady else 0.0
+    bias = multiplier * math.sqrt(keep) * steady  # per position
+    if not np.any(bias):
         return []
     how = (QT_TR_NOOP("spread within each set and removed; what the sets before carry on, not "
                       "removed") if result.spread_drift
            else QT_TR_NOOP("not removed: what the sets before carry on and the set's own"))
     return [BudgetComponent(
-        QT_TR_NOOP("Zero drift carried from set to set"), "B", "normal", half_width,
-        1.0, sign, math.inf,
+        QT_TR_NOOP("Zero drift carried from set to set"), "B", "normal", np.abs(bias),
+        1.0, np.where(bias < 0.0, -1.0, 1.0), math.inf,
         message(QT_TR_NOOP("the autocollimator's zero drifts over the whole test: each set "
                            "starts where the one before closed (closures {closures}); {how}; "
                            "the bias it leaves beyond the closures' reading noise, in "
@@ -501,15 +497,6 @@ def _noise_about_each_set(result: PolygonResult) -> float | None:
     if repeat is None:
         return None
     return float(np.sqrt(np.mean(repeat[0] ** 2) * n / (n - 1)))
-
-
-def _mean_weights(directions: np.ndarray) -> np.ndarray:
-    """Each set's weight in the mean over the sets: 1/m, or 1/(2·m_d) for the mean of the
-    two directions' means."""
-    d = np.asarray(directions)
-    if np.any(d > 0) and np.any(d < 0):
-        return np.where(d > 0, 1.0 / (2.0 * np.sum(d > 0)), 1.0 / (2.0 * np.sum(d < 0)))
-    return np.full(d.size, 1.0 / d.size)
 
 
 def _standard_components(metadata: CertificateMetadata, zero: int, n: int) -> list[BudgetComponent]:
@@ -564,7 +551,7 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     components += _unidentified_tilt_component(
         result, n, zero, float(stated.get("tilt_bound_arcsec", DEFAULT_TILT_BOUND_ARCSEC) or 0.0))
     components += _roll_component(result, result.ac_roll_arcmin, n)
-    carried = _carried_drift_component(result, noise, n, zero, share, drift_set)
+    carried = _carried_drift_component(result, noise, zero, share, drift_set)
     if carried is None or result.spread_drift:
         # what a spread drift leaves within each set, or a drift no chain of closures shows
         components += _drift_component(result, noise, n, zero, share)
