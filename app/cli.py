@@ -24,10 +24,10 @@ from models.messages import (
     QT_TR_NOOP,
     declared_text,
     joined,
+    listed,
     message,
     reason_of,
     rendered,
-    separated,
     translator,
 )
 from models.parameters import SettingsError
@@ -656,8 +656,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             _write_pdf_and_dcc(args, kind, result, document, words, settings)
             _say(rendered(message(QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
-                "in the register)"), path=args.certificate, fields=separated(
-                    (message(name) for name in metadata.missing_fields()), ", ")), words))
+                "in the register)"), path=args.certificate, fields=listed(
+                    message(name) for name in metadata.missing_fields())), words))
         if args.results:
             if args.results.lower().endswith(".xlsx"):
                 write_results_xlsx(args.results, document, ANGLE_UNITS[args.unit])

@@ -23,9 +23,9 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import Any
 
-__all__ = ["JOINS", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue", "declared_text", "in_language",
-           "joined", "lines", "message", "reason_of", "rendered", "separated", "translator",
-           "unit_tail"]
+__all__ = ["JOINS", "LIST_JOIN", "QT_TR_NOOP", "TRANSLATIONS_DIR", "Message", "catalogue",
+           "declared_text", "in_language", "joined", "lines", "listed", "message", "reason_of",
+           "rendered", "separated", "translator", "unit_tail"]
 
 #: the .ts sources and compiled .qm files (the window loads the .qm; the command line reads
 #: the .ts, without Qt)
@@ -87,6 +87,21 @@ def separated(parts: Iterable[Any], separator: str = "; ") -> Any:
     for part in parts:
         if part:
             out = message(template, first=out, second=part) if out else part
+    return out
+
+
+#: how :func:`listed` joins the items of a list (names of inputs, fields, figures): Chinese
+#: puts the enumeration comma "、" between them, not the clause comma "，"
+LIST_JOIN = QT_TR_NOOP("{items}, {item}")
+
+
+def listed(parts: Iterable[Any]) -> Any:
+    """The non-empty ``parts`` as a list ("a, b, c" in English, "甲、乙、丙" in Chinese), each
+    translated on its own; one part as it is, none ""."""
+    out: Any = ""
+    for part in parts:
+        if part:
+            out = message(LIST_JOIN, items=out, item=part) if out else part
     return out
 
 

@@ -53,7 +53,7 @@ from models.fringe.model import (
     model_signal_modes,
     model_signal_std,
 )
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, listed, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.lab_scope import cmc_of
 
@@ -159,7 +159,7 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     missing = [name for key, name in adc.items() if not inputs.get(key)]
     if missing:
         out.append(message(QT_TR_NOOP("the ADC's {figures} have no stated uncertainty"),
-                           figures=separated((message(name) for name in missing), ", ")))
+                           figures=listed(message(name) for name in missing)))
     return out
 
 

@@ -39,7 +39,7 @@ from models.certificate.document import (
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, listed, message
 from models.positioning import KEY, TITLE
 from models.positioning.decided_quantity import decided_half_range
 from models.positioning.figure_intervals import (
@@ -276,9 +276,9 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     m = result.positions.size
     u_by_dir = {name: big_u[k * m:(k + 1) * m] for k, (name, *_) in enumerate(points)}
     standard = STANDARDS[result.standard]
-    runs = separated((message(QT_TR_NOOP("forward {n}") if k == "up" else
-                              QT_TR_NOOP("backward {n}"), n=n)
-                      for k, n in result.least_runs.items()), ", ")
+    runs = listed(message(QT_TR_NOOP("forward {n}") if k == "up" else
+                          QT_TR_NOOP("backward {n}"), n=n)
+                  for k, n in result.least_runs.items())
     rows_p = [(QT_TR_NOOP("Standard applied"), standard, ""),
               (QT_TR_NOOP("Targets"), f"{m}: {result.positions.min():g} … "
                                       f"{result.positions.max():g}{result.target_symbol}", ""),
@@ -365,7 +365,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     if missing:
         statements.append(message(QT_TR_NOOP(
             "Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget."),
-            inputs=separated((message(name) for name in missing), ", ")))
+            inputs=listed(message(name) for name in missing)))
     if not result.minimum_runs_met:
         statements.append(message(QT_TR_NOOP("ISO 230-2 asks for at least {n} runs in each "
                                              "direction at every target; this test has fewer "

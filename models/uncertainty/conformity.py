@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
 
@@ -524,7 +524,7 @@ def _too_uncertain(w: float, t: float, q: str, d: int) -> str:
 
 def _incomplete_reason(inputs) -> str:
     return message(QT_TR_NOOP("U is incomplete: inputs not stated, so not in U: {inputs}"),
-                   inputs=separated((message(name) for name in inputs), ", "))
+                   inputs=listed(message(name) for name in inputs))
 
 
 def _risk_sentence(verdict: str, risk: float) -> str:

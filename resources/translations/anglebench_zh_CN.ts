@@ -9888,5 +9888,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>{first} {second}</source>
         <translation>{first}{second}</translation>
     </message>
+    <message>
+        <source>{items}, {item}</source>
+        <extracomment>how :func:`listed` joins the items of a list (names of inputs, fields, figures): Chinese puts the enumeration comma &quot;、&quot; between them, not the clause comma &quot;，&quot;</extracomment>
+        <translation>{items}、{item}</translation>
+    </message>
 </context>
 </TS>

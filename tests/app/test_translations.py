@@ -354,8 +354,8 @@ def test_the_command_lines_own_words_in_chinese(tmp_path, capsys, samples_dir):
     assert main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
                  "--certificate", str(out), "--language", "zh_CN"]) == 0
     said = capsys.readouterr().err.strip()
-    # the missing fields joined in Chinese punctuation (「，」), not the English ", "
-    assert said.startswith(f"证书已写入 {out}（草稿：缺少证书编号，校准机构")
+    # the missing fields listed with the Chinese enumeration comma (「、」), not ", "
+    assert said.startswith(f"证书已写入 {out}（草稿：缺少证书编号、校准机构")
     assert english_words(said.replace(str(out), "")) == set(), said
 
 

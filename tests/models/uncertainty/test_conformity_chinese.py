@@ -42,6 +42,18 @@ def test_separated_reads_as_before_in_english_and_full_width_in_chinese():
         "{first}；{second}", "{first}，{second}", "{first}{second}"}
 
 
+def test_a_list_of_names_takes_the_enumeration_comma_in_chinese():
+    """Names listed (the inputs U leaves out, a draft's missing fields) are items of one
+    list: "、" between them in Chinese, not the clause comma "，"; English as before."""
+    from models.messages import listed
+
+    parts = [message("Item resolution"), message("Reading error (pointing)"), "0.5\""]
+    assert listed(parts) == "Item resolution, Reading error (pointing), 0.5\""
+    assert in_language(listed(parts), ZH) == "被校对象分辨力、读数误差（瞄准）、0.5\""
+    assert listed(["", parts[0], None]) == "Item resolution" and listed([]) == ""
+    assert in_language(listed([parts[0]]), ZH) == "被校对象分辨力"
+
+
 def test_the_chinese_statement_and_decided_quantity_join_in_chinese_punctuation():
     """Fails on the old code: the decided quantity read "随机种子 …; 该区间在验证中…" and
     the risk sentence followed "（合格）。 " after an ASCII space."""
@@ -58,14 +70,14 @@ def test_the_chinese_statement_and_decided_quantity_join_in_chinese_punctuation(
 
 
 def test_the_reasons_for_no_statement_are_listed_in_chinese_punctuation():
-    """The inputs not stated (", ") and the reasons withheld ("; ") of a Chinese
-    certificate: "，" and "；" (old: "被校对象分辨力, 读数误差（瞄准）")."""
+    """The inputs not stated (a list) and the reasons withheld ("; ") of a Chinese
+    certificate: "、" and "；" (old: "被校对象分辨力, 读数误差（瞄准）", then "，")."""
     c = decide_conformity(_curve(), _budget(0.05, 24), 3.0, "guarded", "points",
                           invalid_reason=message("corrected error"),
                           not_stated=("Item resolution", "Reading error (pointing)"))
     assert c.verdict == "not assessed"
     reason = in_language(c.reason, ZH)
-    assert reason == "修正后误差；U 不完整：以下输入量未给出，未计入 U：被校对象分辨力，读数误差（瞄准）"
+    assert reason == "修正后误差；U 不完整：以下输入量未给出，未计入 U：被校对象分辨力、读数误差（瞄准）"
     assert not ASCII_BESIDE_CHINESE.search(in_language(c.statement, ZH))
     assert c.reason == ("corrected error; U is incomplete: inputs not stated, so not in U: "
                         "Item resolution, Reading error (pointing)")
