@@ -82,11 +82,16 @@ def separated(parts: Iterable[Any], separator: str = "; ") -> Any:
     between them, through its template in :data:`JOINS`, so that a translated text joins
     its parts in its own punctuation ("a; b" in English, "甲；乙" in Chinese); one part as
     it is, none "". Numbers and units in the parts are never touched."""
-    template = JOINS[separator]
+    return _chained(parts, JOINS[separator], "first", "second")
+
+
+def _chained(parts: Iterable[Any], template: str, before: str, after: str) -> Any:
+    """The non-empty ``parts`` joined two at a time through ``template``, the text so far
+    as its figure ``before``, the next part as ``after``; one part as it is, none ""."""
     out: Any = ""
     for part in parts:
         if part:
-            out = message(template, first=out, second=part) if out else part
+            out = message(template, **{before: out, after: part}) if out else part
     return out
 
 
@@ -98,11 +103,7 @@ LIST_JOIN = QT_TR_NOOP("{items}, {item}")
 def listed(parts: Iterable[Any]) -> Any:
     """The non-empty ``parts`` as a list ("a, b, c" in English, "甲、乙、丙" in Chinese), each
     translated on its own; one part as it is, none ""."""
-    out: Any = ""
-    for part in parts:
-        if part:
-            out = message(LIST_JOIN, items=out, item=part) if out else part
-    return out
+    return _chained(parts, LIST_JOIN, "items", "item")
 
 
 def lines(parts: Iterable[Any]) -> Message:

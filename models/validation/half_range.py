@@ -392,7 +392,8 @@ def _theodolite_run(shape: str, points: int, noise: float, run: int, rng, sample
     el = clean_el + rng.normal(0.0, noise, points) / 3600.0
     result = analyze_run(theta, az, el, reference_index=zero)
     budget = theodolite_budget(result, CertificateMetadata())
-    return 0.5 * float(np.ptp(truth)), result.corrected_error_arcsec, budget
+    curve = result.corrected_error_arcsec
+    return 0.5 * float(np.ptp(truth)), curve, budget, lambda: half_range_monte_carlo(curve, budget)
 
 
 def _polygon_run(shape: str, points: int, noise: float, run: int, rng, samples):
@@ -411,13 +412,16 @@ def _polygon_run(shape: str, points: int, noise: float, run: int, rng, samples):
     result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows(1)).parse(),
                              {"grade": 5, "ac_roll_arcmin": 0.0})
     budget = polygon_budget(result, CertificateMetadata())
-    return 0.5 * float(np.ptp(rig.truth_arcsec())), result.mean_corrected_arcsec, budget
+    curve = result.mean_corrected_arcsec
+    return (0.5 * float(np.ptp(rig.truth_arcsec())), curve, budget,
+            lambda: half_range_monte_carlo(curve, budget))
 
 
 def _positioning_run(shape: str, points: int, noise: float, run: int, rng, samples):
     """A rotary axis of ``points`` targets measured by the ISO 230-2 cycle (5 runs each way)
-    by the axis rig, repeatability ``noise`` × the signal; decided on the mean deviations of
-    both directions (half their peak-to-peak), against the true means'."""
+    by the axis rig, repeatability ``noise`` × the signal; decided as its certificate decides,
+    E/2 with E's own interval (half the peak-to-peak of both directions' mean deviations),
+    against the true means'."""
     from models.certificate.metadata import CertificateMetadata
     from models.positioning.analysis import POSITIONING
     from models.positioning.decided_quantity import decided_half_range
@@ -431,11 +435,8 @@ def _positioning_run(shape: str, points: int, noise: float, run: int, rng, sampl
     curve = np.concatenate([stats.mean for _, _, stats in result.directions_present()])
     truth = np.concatenate([case.mu["up"], case.mu["down"]])
     budget = positioning_budget(result, CertificateMetadata())
-
-    def shipped():  # E/2 with E's own interval halved, as the certificate decides
-        return decided_half_range(result, budget, figure_uncertainties(result, budget))
-
-    return 0.5 * float(np.ptp(truth)), curve, budget, shipped
+    return (0.5 * float(np.ptp(truth)), curve, budget,
+            lambda: decided_half_range(result, budget, figure_uncertainties(result, budget)))
 
 
 _WIDTH_RUNS = {"theodolite": _theodolite_run, "polygon": _polygon_run,
@@ -452,9 +453,8 @@ def width_cell(workbench: str, shape: str, points: int, noise: float, runs: int,
     lows = highs = hits = 0
     widths, deviations, measured, probability = [], [], [], DEFAULT_COVERAGE_PROBABILITY
     for run in range(runs):
-        truth, curve, budget, *shipped = run_one(shape, points, noise, run, rng, samples)
-        mc = (estimator(curve, budget) if estimator is not None else
-              shipped[0]() if shipped else half_range_monte_carlo(curve, budget))
+        truth, curve, budget, decide = run_one(shape, points, noise, run, rng, samples)
+        mc = decide() if estimator is None else estimator(curve, budget)
         measured.append(0.5 * float(np.ptp(curve)) - truth)
         probability = mc.probability
         lows += truth < mc.interval_low
