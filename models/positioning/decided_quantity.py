@@ -27,11 +27,13 @@ __all__ = ["DECIDED_METHOD", "FigureHalfRange", "decided_figure", "decided_half_
 DECIDED_METHOD = QT_TR_NOOP(
     "half the peak-to-peak of the mean positional deviations of {directions}, {figure}/2 "
     "(ISO 230-2), with the coverage interval of {figure} halved: a parametric bootstrap of "
-    "the figure's error, calibrated by the iterated bootstrap (Beran 1987), {trials} trials, "
-    "seed {seed}; the probability stated is the one its validation reached (anglebench "
-    "validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the "
-    "signal, 12 and 72 targets). The measured range is biased high by the scatter, so the "
-    "interval may lie below the measured value (its upper end then shown with a minus sign)")
+    "the figure's error from a model of the axis whose true means have the distribution the "
+    "readings show (triple-goal estimates, Shen & Louis 1998), united with the one from the "
+    "measured means taken as the truth (Berger & Boos 1994), {trials} trials, seed {seed}; "
+    "the probability stated is the one its validation reached (anglebench validate: smooth, "
+    "rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12 and 72 "
+    "targets). The measured range is biased high by the scatter, so the interval may lie "
+    "below the measured value (its upper end then shown with a minus sign)")
 
 
 @dataclass(frozen=True)

@@ -25,7 +25,8 @@ from models.positioning.report import figure_uncertainties
 from models.readings.sheet import ReadingsSheet
 from models.validation.axis_figures_rig import AxisCase
 
-__all__ = ["FIGURES", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES", "FigureCoverage", "coverage_study",
+__all__ = ["FIGURES", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS", "VALIDATE_CASES",
+           "FigureCoverage", "achieved_probability", "axis_hits", "coverage_study",
            "figure_coverage_cases", "study_case_tests"]
 
 FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
@@ -114,6 +115,34 @@ def coverage_study(cases=STUDY_CASES, tests: int = 100, seed: int = 39
             out[key].errors += errors.tolist()
             out[key].needed += [2.0 * float(ndtri(1.0 - tail)) * spread] * errors.size
     return out
+
+
+#: the probabilities an interval may state: the one asked for, else a multiple of 0.5 %
+PROBABILITY_STEPS = (0.9545,) + tuple(round(0.95 - 0.005 * k, 3) for k in range(31))
+
+
+def axis_hits(cases=STUDY_CASES, tests: int = 20, seed: int = 391) -> dict[str, np.ndarray]:
+    """Per figure, how many of ``tests`` tests of each axis its interval held the truth
+    (the random stream of axis i: (seed, i), so that axes can be run apart)."""
+    out = {key: np.zeros(len(cases), dtype=int) for key in FIGURES}
+    for i, case in enumerate(cases):
+        for truth, intervals in study_case_tests(case, tests, np.random.default_rng([seed, i])):
+            for key, interval in intervals.items():
+                out[key][i] += int(interval.low <= truth[key] <= interval.high)
+    return out
+
+
+def achieved_probability(hits: np.ndarray, tests: int) -> float | None:
+    """The highest of :data:`PROBABILITY_STEPS` that the coverage pooled over the axes
+    reaches and that no axis falls short of beyond the binomial test (one-sided,
+    :data:`ALPHA`; ``tests`` tests an axis); None below 80 %. How the probabilities of
+    models.positioning.figure_intervals.ACHIEVED were derived."""
+    hits = np.asarray(hits)
+    pooled = float(np.sum(hits)) / (tests * hits.size)
+    for p in PROBABILITY_STEPS:
+        if pooled >= p and np.all(tests - hits <= binom.ppf(1.0 - ALPHA, tests, 1.0 - p)):
+            return p
+    return None
 
 
 #: what each figure's truth is (the record states it beside the figure)

@@ -71,7 +71,7 @@ def test_decided_half_range_is_e_over_two_with_es_interval():
     assert c.interval_low == pytest.approx(0.5 * e.low, abs=1e-12)
     assert c.interval_high == pytest.approx(0.5 * e.high, abs=1e-12)
     assert c.probability == e.probability
-    assert "E/2" in c.quantity and "Beran" in c.quantity and "Romano" not in c.quantity
+    assert "E/2" in c.quantity and "Shen & Louis" in c.quantity and "Romano" not in c.quantity
     # the truth 3.9″ or so (f's half range + the reversal's half): within the interval
     truth = _true_half_range(mu_up, mu_down)
     assert c.interval_low <= truth <= c.interval_high
