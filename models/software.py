@@ -74,11 +74,26 @@ class SoftwareIdentity:
         return out
 
 
-def _git(*args: str) -> str:
+def _git(*args: str, root: Path = ROOT) -> str:
     # safe.directory: a checkout owned by another user (a CI container) is still named
-    run = subprocess.run(["git", "-c", "safe.directory=*", "-C", str(ROOT), *args],
+    run = subprocess.run(["git", "-c", "safe.directory=*", "-C", str(root), *args],
                          capture_output=True, text=True, timeout=10, check=True)
     return run.stdout.strip()
+
+
+#: tracked files the software writes as its own pictures (``make pictures``): changed while
+#: the pictures are made, they are not a change to the software that makes them
+OUTPUTS = ("resources/screenshots",)
+
+
+def describe_checkout(root: Path = ROOT) -> str:
+    """``git describe --always --abbrev=12`` with "-dirty" when a tracked file other than
+    the pictures in :data:`OUTPUTS` differs from the commit (``git describe --dirty`` counts
+    those too: the README pictures' feet said "+" for the pictures being written)."""
+    describe = _git("describe", "--always", "--abbrev=12", root=root)
+    changed = _git("status", "--porcelain", "--untracked-files=no", "--", ".",
+                   *(f":(exclude){path}" for path in OUTPUTS), root=root)
+    return describe + ("-dirty" if changed else "")
 
 
 def source_digest(root: Path = ROOT) -> str:
@@ -99,7 +114,7 @@ def software_identity() -> SoftwareIdentity:
     if (ROOT / ".git").exists():
         try:
             commit = _git("rev-parse", "HEAD")
-            describe = _git("describe", "--always", "--dirty", "--abbrev=12")
+            describe = describe_checkout()
         except (OSError, subprocess.SubprocessError):
             commit = describe = ""
         if len(commit) == 40:

@@ -83,3 +83,30 @@ def test_the_register_records_the_same():
             or versions.get("anglebench_source_sha256") == identity.source_sha256)
     for library in ("numpy", "scipy", "fpdf2", "SQLAlchemy"):
         assert library in versions
+
+
+def test_only_a_change_to_the_software_marks_it_modified(tmp_path):
+    """The pictures ``make pictures`` writes are not a change to the software: a checkout
+    where only they differ is not "-dirty" (its certificates' feet carry no "+"); any other
+    tracked file changed is."""
+    from models.software import describe_checkout
+
+    if shutil.which("git") is None:
+        pytest.skip("no git")
+
+    def git(*args):
+        subprocess.run(["git", "-C", str(tmp_path), "-c", "user.name=t", "-c",
+                        "user.email=t@t", *args], check=True, capture_output=True)
+
+    (tmp_path / "models").mkdir()
+    (tmp_path / "resources" / "screenshots").mkdir(parents=True)
+    (tmp_path / "models" / "a.py").write_text("x = 1\n")
+    (tmp_path / "resources" / "screenshots" / "a.png").write_bytes(b"1")
+    git("init", "-q")
+    git("add", "-A")
+    git("commit", "-qm", "one")
+    assert not describe_checkout(tmp_path).endswith("-dirty")
+    (tmp_path / "resources" / "screenshots" / "a.png").write_bytes(b"2")
+    assert not describe_checkout(tmp_path).endswith("-dirty")
+    (tmp_path / "models" / "a.py").write_text("x = 2\n")
+    assert describe_checkout(tmp_path).endswith("-dirty")
