@@ -31,7 +31,7 @@ DECIDED_METHOD = QT_TR_NOOP(
     "readings show (triple-goal estimates, Shen & Louis 1998), united with the one from the "
     "measured means taken as the truth (Berger & Boos 1994), {trials} trials, seed {seed}; "
     "the probability stated is the one its validation reached (anglebench validate: smooth, "
-    "rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12 and 72 "
+    "rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 "
     "targets). The measured range is biased high by the scatter, so the interval may lie "
     "below the measured value (its upper end then shown with a minus sign)")
 

@@ -348,7 +348,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
         "target). The interval may lie below the measured value. Its probability is the one "
         "a simulation study reached (anglebench validate: smooth, rough, single-spike and real "
-        "curves, repeatability 0.1 to 2 times the signal, 12 and 72 targets), where that is "
+        "curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is "
         "below {p} %."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
     if not intervals:
