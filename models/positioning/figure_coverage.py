@@ -32,19 +32,23 @@ __all__ = ["FIGURES", "PROBABILITY_STEPS", "STUDY_CASES", "TRUTHS", "VALIDATE_CA
 FIGURES = ("A", "A_up", "A_down", "E", "E_up", "E_down", "M", "R", "R_up", "R_down", "B",
            "B_mean", "P", "Ps_max", "Pa", "U_max")
 
-#: shapes × target counts × noise ratios × constant or varying repeatability: 12 and 72
-#: targets, then 36 (added in 0.8.2 after the width study and an audit found E↑ and E↓ weakest
-#: there; appended, so that the first 48 axes keep their truths and random streams)
+#: shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1 and 2 × the signal × constant or
+#: varying along the axis (96 axes): the 48 of 12 and 72 targets at 0.1, 0.5 and 2 first, then
+#: those of 36 targets and of repeatability 1 × (added in 0.8.2 to match the width study's
+#: grid: it and an audit found E↑ and E↓ weakest there; appended, so that the first axes keep
+#: their truths and random streams)
 STUDY_CASES = tuple(AxisCase(shape, targets, ratio, varying, seed=k)
                     for k, (shape, targets, ratio, varying) in enumerate(
                         [(s, m, r, v) for s in ("smooth", "rough", "spike", "sample")
                          for m in (12, 72) for r in (0.1, 0.5, 2.0) for v in (False, True)]
                         + [(s, 36, r, v) for s in ("smooth", "rough", "spike", "sample")
-                           for r in (0.1, 0.5, 2.0) for v in (False, True)]))
+                           for r in (0.1, 0.5, 2.0) for v in (False, True)]
+                        + [(s, m, 1.0, v) for s in ("smooth", "rough", "spike", "sample")
+                           for m in (12, 36, 72) for v in (False, True)]))
 
 #: the cases ``anglebench validate`` runs (12 targets: the study's quick half; the benchmark
 #: runs every case)
-VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and c.noise_ratio != 0.5)
+VALIDATE_CASES = tuple(c for c in STUDY_CASES if c.targets == 12 and c.noise_ratio in (0.1, 2.0))
 
 #: the miss rate allowed by the binomial test (one-sided)
 ALPHA = 0.01

@@ -72,22 +72,23 @@ SIGNED_FIGURES = frozenset({"B_mean"})
 #: The coverage the study reached for each figure at 95.45 % asked for, where below it:
 #: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of
 #: 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond
-#: the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 2 ×
-#: the signal × constant or varying (72 axes), each test through the whole analysis. 0.8.2
-#: (the ranges' triple-goal world, B's upper bound, the 36-target axes):
-#: figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an
-#: axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and
-#: 0.7.0's derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.1 %
-#: (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the
-#: axis, 68 of 80), E↑ 94.9 % (a real curve at 12 targets, 67 of 80), E↓ 94.9 %, M and Pa
-#: 94.8 %, A 97.8 % (69 of 80 at the same axis as E), B and U 98.8 %; the others 96.5–98.5 %.
-#: The figure's interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a
-#: rough reversal whose largest value stands clear of the others) reached 59 of 80; before
-#: 0.7.0's union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter
-#: twice its size at 72 targets) and R 72 % on a reversal changing at random from target to
-#: target.
+#: the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 ×
+#: the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2
+#: (the ranges' triple-goal world, B's upper bound, the axes of 36 targets and of
+#: repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391
+#: to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change,
+#: the lower of that and 0.7.0's derivation (the 48 axes of 12 and 72 targets, 40 tests an
+#: axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36
+#: targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve
+#: at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability
+#: 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 %; the
+#: others 96.6–98.6 %. The figure's interval states this one instead. Before 0.8.2, B stated
+#: 93 % and one axis (a rough reversal whose largest value stands clear of the others)
+#: reached 59 of 80; before 0.7.0's union with the unshrunk world E reached 92.1 % (35 % on a
+#: spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at
+#: random from target to target.
 ACHIEVED: dict[str, float] = {"E": 0.925, "E_up": 0.92, "E_down": 0.935, "A": 0.935,
-                              "A_up": 0.945, "A_down": 0.945, "M": 0.93, "Pa": 0.93,
+                              "A_up": 0.945, "A_down": 0.945, "M": 0.925, "Pa": 0.925,
                               "R_up": 0.935, "R_down": 0.935, "P": 0.945}
 
 

@@ -1,6 +1,6 @@
 """Coverage of the positioning figures' intervals (ISO 230-2 / GB/T 17421.2, VDI/DGQ 3441),
 #39: every study case of models/positioning/figure_coverage.py (4 shapes × 12, 36 and 72 targets
-× repeatability 0.1, 0.5 and 2 × the signal × constant or varying along the axis; 5 runs
+× repeatability 0.1, 0.5, 1 and 2 × the signal × constant or varying along the axis; 5 runs
 each way), each test through the whole analysis. A figure passes when its misses are within
 the binomial allowance at the probability printed beside it, and its mean width is at most
 1.6 × what a correct interval needs."""
