@@ -208,18 +208,21 @@ def _world_sigmas(s: dict[str, np.ndarray], n: dict[str, np.ndarray]) -> dict[st
 
 
 def _world_means(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray],
-                 n: dict[str, np.ndarray], u_b: np.ndarray) -> dict[str, np.ndarray]:
-    """The true means of the world: bidirectional, the mean M_i and the reversal B_i each
-    shrunk (the reference's Type B error is in M only: it is the same both ways)."""
+                 n: dict[str, np.ndarray], u_b: np.ndarray, level=_shrunk
+                 ) -> dict[str, np.ndarray]:
+    """The true means of the world: bidirectional, the mean M_i by ``level`` (values,
+    sampling variances → the world's values: :func:`_shrunk`, or :func:`_ensemble` for the
+    ranges) and the reversal B_i shrunk (the reference's Type B error is in M only: it is
+    the same both ways); one direction, its means by ``level``."""
     if "up" in means and "down" in means:
         var_up = sigmas["up"] ** 2 / n["up"]
         var_down = sigmas["down"] ** 2 / n["down"]
         mid = 0.5 * (means["up"] + means["down"])
         rev = means["up"] - means["down"]
-        mid_w = _shrunk(mid, 0.25 * (var_up + var_down) + u_b**2)
+        mid_w = level(mid, 0.25 * (var_up + var_down) + u_b**2)
         rev_w = _shrunk(rev, var_up + var_down)
         return {"up": mid_w + 0.5 * rev_w, "down": mid_w - 0.5 * rev_w}
-    return {k: _shrunk(v, sigmas[k] ** 2 / n[k] + u_b**2) for k, v in means.items()}
+    return {k: level(v, sigmas[k] ** 2 / n[k] + u_b**2) for k, v in means.items()}
 
 
 #: the scatter of the world's means: each target's own s where it is above the moderated σ
@@ -262,8 +265,8 @@ UNION_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "B", "U_max", "A", 
 
 #: the ranges of the means (the decided quantity's figure among them), whose interval comes
 #: from the world whose targets' values have the distribution of the true means (the
-#: triple-goal world, :func:`_ensemble`), not only their spread, united with the unshrunk
-#: world's and not calibrated (see :func:`figure_intervals`)
+#: triple-goal world, :func:`_ensemble` in :func:`_world_means`), not only their spread,
+#: united with the unshrunk world's and not calibrated (see :func:`figure_intervals`)
 RANGE_FIGURES = frozenset({"E", "E_up", "E_down"})
 
 #: the grid and the most EM steps of the true means' distribution (:func:`_ensemble`)
@@ -291,29 +294,15 @@ def _ensemble(values: np.ndarray, se2: np.ndarray) -> np.ndarray:
     likelihood = np.exp(-0.5 * (d - np.min(d, axis=1, keepdims=True)))
     weights = np.full(grid.size, 1.0 / grid.size)
     for _ in range(ENSEMBLE_STEPS):
-        mixed = likelihood @ weights
-        new = weights * (likelihood.T @ (1.0 / mixed)) / v.size
-        if np.max(np.abs(new - weights)) < 1e-9:
-            weights = new
-            break
+        new = weights * (likelihood.T @ (1.0 / (likelihood @ weights))) / v.size
+        settled = np.max(np.abs(new - weights)) < 1e-9
         weights = new
+        if settled:
+            break
     cdf = np.cumsum(weights)
     ranks = np.argsort(np.argsort(v, kind="stable"), kind="stable")
     index = np.searchsorted(cdf, (ranks + 0.5) / v.size)
     return grid[np.minimum(index, grid.size - 1)]
-
-
-def _ensemble_means(means, sigmas, n, u_b):
-    """The world's true means with the distribution of the truth's (:func:`_ensemble`):
-    bidirectional, the mean M_i so (the range's extremes), the reversal B_i shrunk as in
-    :func:`_world_means`."""
-    if "up" in means and "down" in means:
-        var_up = sigmas["up"] ** 2 / n["up"]
-        var_down = sigmas["down"] ** 2 / n["down"]
-        mid = _ensemble(0.5 * (means["up"] + means["down"]), 0.25 * (var_up + var_down) + u_b**2)
-        rev = _shrunk(means["up"] - means["down"], var_up + var_down)
-        return {"up": mid + 0.5 * rev, "down": mid - 0.5 * rev}
-    return {k: _ensemble(v, sigmas[k] ** 2 / n[k] + u_b**2) for k, v in means.items()}
 
 
 #: calibration (Beran 1987): outer tests drawn from the world, and inner draws from each
@@ -372,7 +361,7 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     raw_truth = world_truth(x, sig_w)
     raw_sims = axis_figures(_draw(x, sig_w, sig_mean, n, u_b, (trials,), rng))
     # the ranges of the means: the triple-goal world's plain basic interval
-    ens_mu = _ensemble_means(x, sig_mean, n, u_b)
+    ens_mu = _world_means(x, sig_mean, n, u_b, level=_ensemble)
     ens_truth = world_truth(ens_mu, sig_w)
     ens_sims = axis_figures(_draw(ens_mu, sig_w, sig_mean, n, u_b, (trials,), rng))
     for key in RANGE_FIGURES & ens_sims.keys():
