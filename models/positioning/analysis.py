@@ -26,13 +26,14 @@ from models.positioning.model import (
 )
 from models.positioning.report import (
     figure_uncertainties,
-    intervals_determined,
+    intervals_withheld,
     positioning_budget,
     positioning_certificate,
 )
 from models.readings.entry_plan import positioning_plan, targets_from_text
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
+from models.readings.resolution import readings_step
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
 from models.uncertainty.iso230 import once_note
@@ -225,6 +226,25 @@ def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
     return out
 
 
+def _entered_step(parsed: ParsedReadings, s: dict[str, Any]) -> float | None:
+    """The step of the deviations as entered (models.readings.resolution), in the deviation
+    unit: of the deviation column where it is given, of measured − target elsewhere (the
+    coarser of the two where both are used); None where either lies on no grid."""
+    scale = DEVIATION_UNITS[s["deviation_unit"]][1]
+    deviation = parsed["deviation"].astype(float)
+    measured = parsed["measured"].astype(float)
+    given = np.isfinite(deviation)
+    steps = []
+    if np.any(given):
+        steps.append(readings_step(deviation[given]))
+    others = ~given & np.isfinite(measured)
+    if np.any(others):
+        step = readings_step(measured[others] - parsed["target"].astype(float)[others])
+        steps.append(None if step is None else step * scale)
+    found = [step for step in steps if step is not None]
+    return max(found) if found and len(found) == len(steps) else None
+
+
 def _directions(parsed: ParsedReadings, warnings: list[str]) -> np.ndarray:
     stated = parsed["direction"]
     given = np.array([bool(d) for d in stated], dtype=bool)
@@ -328,6 +348,7 @@ def _runs_counted(parsed: ParsedReadings, targets: np.ndarray, directions: np.nd
 
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningResult:
     s = POSITIONING.checked_settings(settings)
+    step = _entered_step(parsed, s)
     parsed, repeats = average_repeats(parsed, s["readings_per_point"],
                                       ("target", "run", "direction"), ("deviation", "measured"))
     if parsed.n < 2:
@@ -360,6 +381,16 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["deviation"],
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
+    result.readings_step = step
+    if result.coarse_readings:
+        sym = result.symbol
+        warnings.append(message(QT_TR_NOOP(
+            "The readings were entered to {step}, coarser than they scatter (s pooled over the "
+            "targets {s}): readings of one target come out alike and each mean carries a "
+            "rounding error up to {half} that its s does not show. U counts the step "
+            "(rectangular, half-width {half}); the figures of the axis get no coverage interval. "
+            "Enter the readings with more digits."),
+            step=f"{step:g}{sym}", s=f"{result.pooled_s():.3g}{sym}", half=f"{0.5 * step:g}{sym}"))
     for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),
@@ -417,9 +448,6 @@ def _array(values: np.ndarray | None) -> list[float | None] | None:
 
 VDI_KEYS = ("P", "Ps_max", "Pa", "U_max")
 
-#: why a figure has no interval (JSON ``figure_intervals_reason``)
-NO_INTERVALS = QT_TR_NOOP("a target was approached fewer than twice in a direction: its "
-                          "standard deviation is unknown, so no figure has a coverage interval")
 
 
 def _figure_objects(keys, values: Mapping[str, Any], intervals) -> dict[str, Any]:
@@ -477,8 +505,8 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
         "sign_convention": SIGN_CONVENTION,
         "warnings": result.warnings,
         **figures_json(result),
-        "figure_intervals_reason": None if intervals_determined(result) else
-        message(NO_INTERVALS),
+        "figure_intervals_reason": None if (withheld := intervals_withheld(result)) is None
+        else message(withheld),
     }
 
 
@@ -517,9 +545,9 @@ def summary(result: PositioningResult) -> str:
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({100 * iv.probability:.1f} %)")
         out.append(joined(parts))
-    elif result.iso.forward is not None or result.iso.backward is not None:
+    elif (withheld := intervals_withheld(result)) is not None:
         out.append(message(QT_TR_NOOP("No coverage intervals: {reason}"),
-                           reason=message(NO_INTERVALS)))
+                           reason=message(withheld)))
     out.append(message(QT_TR_NOOP("Standard applied: {standard}. Compensation = −mean deviation "
                                   "(Export compensation table… below the set-up)."),
                        standard=message(STANDARDS[result.standard])))

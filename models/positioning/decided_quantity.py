@@ -22,7 +22,7 @@ from models.positioning.model import PositioningResult
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate
 
-__all__ = ["DECIDED_METHOD", "FigureHalfRange", "decided_figure", "decided_half_range"]
+__all__ = ["COARSE_DECIDED", "DECIDED_METHOD", "FigureHalfRange", "decided_figure", "decided_half_range"]
 
 DECIDED_METHOD = QT_TR_NOOP(
     "half the peak-to-peak of the mean positional deviations of {directions}, {figure}/2 "
@@ -34,6 +34,12 @@ DECIDED_METHOD = QT_TR_NOOP(
     "rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 "
     "targets). The measured range is biased high by the scatter, so the interval may lie "
     "below the measured value (its upper end then shown with a minus sign)")
+
+
+COARSE_DECIDED = QT_TR_NOOP(
+    "half the peak-to-peak of the mean positional deviations, withheld: the readings were "
+    "entered coarser than they scatter, so each mean may be off by up to half a step in a "
+    "way their scatter does not show, and the range with it")
 
 
 @dataclass(frozen=True)
@@ -55,6 +61,14 @@ def decided_half_range(result: PositioningResult, budget: UncertaintyBudget,
     .figure_uncertainties with the certificate's ``budget``); None when the figure has no
     interval (a target approached fewer than twice: the repeatability unknown)."""
     key = decided_figure(result)
+    if result.coarse_readings:
+        # the rounding of each mean may have flattened the curve by up to half a step at
+        # either extreme, which no model of random scatter holds: withheld, with the reason
+        measured = 0.5 * float(result.iso.figures.get(key, math.nan))
+        return FigureHalfRange(measured=measured, bias=math.nan, value=math.nan,
+                               u_upper=math.nan, u_lower=math.nan,
+                               probability=budget.probability, trials=0, seed=0,
+                               method=message(COARSE_DECIDED))
     interval = intervals.get(key)
     if interval is None or not all(math.isfinite(v) for v in (interval.value, interval.low,
                                                               interval.high)):

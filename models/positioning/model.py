@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
+from models.readings.resolution import coarse
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
 
 __all__ = ["DEVIATION_UNITS", "MIN_RUNS", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "STANDARDS",
@@ -161,6 +162,9 @@ class PositioningResult:
     # the budget's inputs the readings cannot show (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
+    # the step of the readings as entered, in the deviation unit (models.readings.resolution);
+    # None when they lie on no grid of six decimals
+    readings_step: float | None = None
 
     @property
     def positions(self) -> np.ndarray:
@@ -207,6 +211,21 @@ class PositioningResult:
                         "—" if rbi is None else cell(rbi[i], False)]
             rows.append(tuple(row))
         return tuple(header), rows
+
+    def pooled_s(self) -> float:
+        """The standard deviation of the runs pooled over every target and direction
+        approached at least twice (nan when none was)."""
+        nu = np.concatenate([stats.runs - 1.0 for _, _, stats in self.directions_present()])
+        s = np.concatenate([stats.std for _, _, stats in self.directions_present()])
+        used = (nu > 0) & np.isfinite(s)
+        return (float(np.sqrt(np.sum(nu[used] * s[used] ** 2) / np.sum(nu[used])))
+                if np.any(used) else math.nan)
+
+    @property
+    def coarse_readings(self) -> bool:
+        """Whether the readings were entered coarser than they scatter (models.readings
+        .resolution.coarse): each mean then carries a rounding error its s does not show."""
+        return coarse(self.readings_step, self.pooled_s())
 
     def directions_present(self) -> list[tuple[str, int, object]]:
         """("up", +1, stats) and/or ("down", −1, stats) for the directions measured."""

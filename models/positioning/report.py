@@ -16,6 +16,7 @@ shown in the window and the JSON.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -62,6 +63,7 @@ from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
+           "intervals_withheld", "readings_step_component",
            "positioning_budget", "positioning_certificate", "repeated_readings_components"]
 
 METHOD = QT_TR_NOOP(
@@ -129,6 +131,11 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     components += repeated_readings_components(result)
     components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)
+    components += readings_step_component(result)
+    # every Type B input is one value at each target for the whole run, in the measured
+    # curve (as the figures' intervals draw it: once per target)
+    components = [dataclasses.replace(c, in_curve=True) if c.evaluation == "B" else c
+                  for c in components]
     return UncertaintyBudget(tuple(components), s.size, metadata.coverage_probability,
                              result.deviation_unit, floor=cmc_of(settings, "cmc"))
 
@@ -179,6 +186,24 @@ def _stated_inputs(result: PositioningResult) -> list[BudgetComponent]:
     return out
 
 
+def readings_step_component(result: PositioningResult) -> list[BudgetComponent]:
+    """The step of the readings as entered, when they were entered coarser than they scatter
+    (models.readings.resolution): rectangular, half-width δ/2, one value per target and
+    direction (Type B: the rounding of a mean that every run rounds alike), unless the
+    reference's resolution stated is at least as coarse (it then holds it)."""
+    step = result.readings_step
+    stated = (result.inputs or {}).get("reference_resolution", 0.0)
+    if not result.coarse_readings or step is None or stated >= step:
+        return []
+    return [BudgetComponent(
+        QT_TR_NOOP("Step of the readings as entered"), "B", "rectangular", step,
+        2.0 * math.sqrt(3.0), 1.0, math.inf,
+        message(QT_TR_NOOP("readings entered to {step}, coarser than they scatter (s pooled "
+                           "{s}): rectangular, half-width {half}"),
+                step=f"{step:g}{result.symbol}", s=f"{result.pooled_s():.3g}{result.symbol}",
+                half=f"{0.5 * step:g}{result.symbol}"))]
+
+
 def not_stated(result: PositioningResult) -> list[str]:
     """The budget inputs the settings leave unstated (so not in U)."""
     inputs = result.inputs or {}
@@ -198,11 +223,32 @@ def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> 
     return np.sqrt(np.mean(per_point, axis=0))
 
 
+#: why the figures have no coverage interval
+ONCE_ONLY = QT_TR_NOOP("a target was approached fewer than twice in a direction: its standard "
+                       "deviation is unknown, so no figure has a coverage interval")
+COARSE = QT_TR_NOOP("the readings were entered coarser than they scatter: the rounding of each "
+                    "mean is not random, and the model the intervals are drawn from (random "
+                    "scatter about each target's true mean) does not hold, so no figure has a "
+                    "coverage interval")
+
+
+def intervals_withheld(result: PositioningResult) -> str | None:
+    """Why the figures get no coverage interval (a message template), or None: a target
+    approached fewer than twice in a direction (its s unknown), or readings entered coarser
+    than they scatter (models.readings.resolution: the rounded means are not a normal draw
+    about the truth; a simulated 0.3 × δ scatter about a curve of 0.6 δ gave E's interval 51 %
+    coverage)."""
+    if not all(np.all(stats.runs >= 2) and np.all(np.isfinite(stats.std))
+               for _, _, stats in result.directions_present()):
+        return ONCE_ONLY
+    if result.coarse_readings:
+        return COARSE
+    return None
+
+
 def intervals_determined(result: PositioningResult) -> bool:
-    """Whether every target was approached at least twice in every direction measured (the
-    intervals need every target's s)."""
-    return all(np.all(stats.runs >= 2) and np.all(np.isfinite(stats.std))
-               for _, _, stats in result.directions_present())
+    """Whether the figures get coverage intervals (:func:`intervals_withheld`)."""
+    return intervals_withheld(result) is None
 
 
 def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | None = None
@@ -344,17 +390,21 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "(E, E↑, E↓) the model's true means have the distribution the readings show (triple-goal "
         "estimates, Shen & Louis 1998) and the interval is not calibrated; B's upper end is at "
         "least the largest of the targets' own one-sided bounds, which holds whatever the "
-        "reversal's shape. The truth it covers is the figure of "
+        "reversal's shape. With Type B inputs (the reference standard, the stated inputs), the "
+        "interval of E, M, A and P is also united with the one from the same readings without "
+        "them: the reference's errors at the targets are part of the measured curve, and where "
+        "the reference is better than its certificate states the range holds less of them. "
+        "The truth it covers is the figure of "
         "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
         "target). The interval may lie below the measured value. Its probability is the one "
         "a simulation study reached (anglebench validate: smooth, rough, single-spike and real "
         "curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is "
         "below {p} %."), trials=INTERVAL_TRIALS,
         p=f"{100 * budget.probability:.2f}"))
-    if not intervals:
-        statements.append(QT_TR_NOOP(
-            "No coverage interval is given for the figures: a target was approached fewer than "
-            "twice in a direction, so its standard deviation is unknown."))
+    withheld = intervals_withheld(result)
+    if withheld is not None:
+        statements.append(message(QT_TR_NOOP("No coverage interval is given for the figures: "
+                                             "{reason}."), reason=message(withheld)))
     statements.append(QT_TR_NOOP(
         "A specification of A, R, E, B or P conforms when the upper end of the figure's "
         "coverage interval is within it, does not conform when the lower end exceeds it, and "

@@ -107,6 +107,9 @@ class BudgetComponent:
     note: str = ""
     common: bool = False
     dof_group: str = ""  # inputs evaluated from one estimate: one input for ν_eff
+    # its error at each point is one value for the whole run, held in the measured curve and
+    # not in the scatter of the readings (a reference's calibration error at that position)
+    in_curve: bool = False
 
     def __post_init__(self) -> None:
         values = np.asarray(self.value, dtype=float)

@@ -210,7 +210,8 @@ def _signed_draws(budget: UncertaintyBudget, points: np.ndarray, trials: int,
 
 
 def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
-                     rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                     rng: np.random.Generator, in_curve: bool = True
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Three (trials, len(points)) draws of the curve's error (JCGM 101), every budget input
     once, by its nature:
 
@@ -224,7 +225,8 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
 
     A Type A input with ν degrees of freedom is drawn as a t-distribution (JCGM 101 6.4.9),
     its scale s·√(ν/χ²_ν) one draw per trial for all the inputs of one estimate
-    (``dof_group``)."""
+    (``dof_group``). ``in_curve`` False: the inputs held in the measured curve
+    (BudgetComponent.in_curve) left out."""
     n = points.size
     systematic = np.zeros((trials, n))
     shared = np.zeros((trials, n))
@@ -233,7 +235,7 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     for i, comp in enumerate(budget.components):
         sens = np.broadcast_to(np.asarray(comp.sensitivity, dtype=float), (budget.points,))
         c_u = (sens * comp.standard_uncertainty(budget.points))[points]
-        if not np.any(c_u):
+        if not np.any(c_u) or comp.in_curve and not in_curve:
             continue
         shape = (trials, 1) if comp.common else (trials, n)
         term = _standard_draws(rng, comp.distribution, shape) * c_u
@@ -342,6 +344,16 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     base = e + systematic
     ranges = 2.0 * np.ptp(base, axis=1) - np.ptp(base + noise, axis=1)
     high_range, median_range = np.quantile(ranges, [1.0 - UPPER_TAIL * alpha, 0.5])
+    if any(c.in_curve and not c.common for c in budget.components):
+        # the inputs held in the curve (a reference's error at each point) may be smaller
+        # than stated: their excess is then not in the measured range, and taking it out
+        # put the upper end below the truth. The upper end also holds with them at zero.
+        fixed, *moving = _draws_by_nature(budget, points, trials, np.random.default_rng(seed),
+                                          in_curve=False)
+        bare = e + fixed
+        high_range = max(float(high_range), float(np.quantile(
+            2.0 * np.ptp(bare, axis=1) - np.ptp(bare + sum(moving), axis=1),
+            1.0 - UPPER_TAIL * alpha)))
     low = max(0.0, measured - 0.5 * q_low)
     # the upper end may lie below the measured half range: where the curve crowds its
     # extremes the excess is surely positive, and the true half range surely smaller

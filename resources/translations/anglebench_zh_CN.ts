@@ -3896,6 +3896,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
+        <source>Step of the readings as entered</source>
+        <translation>录入读数的步距</translation>
+    </message>
+    <message>
+        <source>readings entered to {step}, coarser than they scatter (s pooled {s}): rectangular, half-width {half}</source>
+        <translation>读数录入到 {step}，粗于其分散（合并 s 为 {s}）：矩形分布，半宽 {half}</translation>
+    </message>
+    <message>
+        <source>the readings were entered coarser than they scatter: the rounding of each mean is not random, and the model the intervals are drawn from (random scatter about each target&apos;s true mean) does not hold, so no figure has a coverage interval</source>
+        <translation>读数录入得比其分散更粗：各平均值的舍入不是随机的，区间所依据的模型（围绕各目标位置真平均值的随机分散）不成立，因此各项指标均不给出包含区间</translation>
+    </message>
+    <message>
         <source>forward {n}</source>
         <translation>正向 {n}</translation>
     </message>
@@ -3970,14 +3982,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
         <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
-    </message>
-    <message>
-        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s upper end is at least the largest of the targets&apos; own one-sided bounds, which holds whatever the reversal&apos;s shape. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
-        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的上端至少为各目标位置自身单侧界限中的最大值，无论反向差值曲线形状如何均成立。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
-    </message>
-    <message>
-        <source>No coverage interval is given for the figures: a target was approached fewer than twice in a direction, so its standard deviation is unknown.</source>
-        <translation>各项指标未给出包含区间：有目标位置在某一方向趋近少于两次，其标准偏差未知。</translation>
     </message>
     <message>
         <source>A specification of A, R, E, B or P conforms when the upper end of the figure&apos;s coverage interval is within it, does not conform when the lower end exceeds it, and is not decided in between (ISO 14253-1).</source>
@@ -4461,6 +4465,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>所有读数都在目标 {targets}：定位检测至少需要两个目标位置</translation>
     </message>
     <message>
+        <source>The readings were entered to {step}, coarser than they scatter (s pooled over the targets {s}): readings of one target come out alike and each mean carries a rounding error up to {half} that its s does not show. U counts the step (rectangular, half-width {half}); the figures of the axis get no coverage interval. Enter the readings with more digits.</source>
+        <translation>读数录入到 {step}，粗于其分散（各目标位置合并的 s 为 {s}）：同一目标位置的读数趋于相同，每个平均值带有至多 {half} 的舍入误差，而其 s 显示不出。U 计入了该步距（矩形分布，半宽 {half}）；轴线各项指标不给出包含区间。请以更多位数录入读数。</translation>
+    </message>
+    <message>
         <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
         <translation>目标位置 {targets} 没有正向读数：正向结果不包括这些位置。</translation>
     </message>
@@ -4490,7 +4498,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>a target was approached fewer than twice in a direction: its standard deviation is unknown, so no figure has a coverage interval</source>
-        <extracomment>why a figure has no interval (JSON ``figure_intervals_reason``)</extracomment>
+        <extracomment>why the figures have no coverage interval</extracomment>
         <translation>有目标位置在某一方向趋近少于两次：其标准偏差未知，因此各项指标均无包含区间</translation>
     </message>
     <message>
@@ -7214,6 +7222,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
     </message>
     <message>
+        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s upper end is at least the largest of the targets&apos; own one-sided bounds, which holds whatever the reversal&apos;s shape. With Type B inputs (the reference standard, the stated inputs), the interval of E, M, A and P is also united with the one from the same readings without them: the reference&apos;s errors at the targets are part of the measured curve, and where the reference is better than its certificate states the range holds less of them. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
+        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的上端至少为各目标位置自身单侧界限中的最大值，无论反向差值曲线形状如何均成立。有 B 类输入量（参考标准器、所述输入量）时，E、M、A 和 P 的区间还与不计这些输入量、由同一组读数求得的区间取并集：参考标准器在各目标位置的误差是测得曲线的一部分，当参考标准器优于其证书所述时，极差中所含的这部分误差较少。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
+    </message>
+    <message>
+        <source>No coverage interval is given for the figures: {reason}.</source>
+        <translation>各项指标不给出包含区间：{reason}。</translation>
+    </message>
+    <message>
         <source>The reference standard&apos;s U enters each mean deviation with sensitivity 1: a rotary calibrator&apos;s or an interferometer&apos;s certificate states it for a position measured from the reference&apos;s datum, that is for the deviation itself; the theodolite and the autocollimator state theirs per reading, so their errors, differences of two readings, take √2.</source>
         <translation>计量标准的 U 以灵敏系数 1 计入各平均偏差：回转校准装置或干涉仪的证书给出的是从其基准起测得位置的不确定度，即偏差本身的不确定度；经纬仪和自准直仪给出的是每个读数的不确定度，因此其误差（两个读数之差）取 √2。</translation>
     </message>
@@ -9211,7 +9227,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>max(μ + 2σ) − min(μ − 2σ) over both directions</source>
-        <extracomment>shapes × target counts × noise ratios × constant or varying repeatability: 12 and 72 targets, then 36 (added in 0.8.2 after the width study and an audit found E↑ and E↓ weakest there; appended, so that the first 48 axes keep their truths and random streams) the cases ``anglebench validate`` runs (12 targets: the study&apos;s quick half; the benchmark runs every case) the miss rate allowed by the binomial test (one-sided) the widest interval, as a multiple of what a correct one needs, that is still honest the probabilities an interval may state: the one asked for, else a multiple of 0.5 % what each figure&apos;s truth is (the record states it beside the figure)</extracomment>
+        <extracomment>shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1 and 2 × the signal × constant or varying along the axis (96 axes): the 48 of 12 and 72 targets at 0.1, 0.5 and 2 first, then those of 36 targets and of repeatability 1 × (added in 0.8.2 to match the width study&apos;s grid: it and an audit found E↑ and E↓ weakest there; appended, so that the first axes keep their truths and random streams) the cases ``anglebench validate`` runs (12 targets: the study&apos;s quick half; the benchmark runs every case) the miss rate allowed by the binomial test (one-sided) the widest interval, as a multiple of what a correct one needs, that is still honest the probabilities an interval may state: the one asked for, else a multiple of 0.5 % what each figure&apos;s truth is (the record states it beside the figure)</extracomment>
         <translation>两个方向上 max(μ + 2σ) − min(μ − 2σ)</translation>
     </message>
     <message>
@@ -9862,6 +9878,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>half the peak-to-peak of the mean positional deviations of {directions}, {figure}/2 (ISO 230-2), with the coverage interval of {figure} halved: a parametric bootstrap of the figure&apos;s error from a model of the axis whose true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998), united with the one from the measured means taken as the truth (Berger &amp; Boos 1994), {trials} trials, seed {seed}; the probability stated is the one its validation reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets). The measured range is biased high by the scatter, so the interval may lie below the measured value (its upper end then shown with a minus sign)</source>
         <translation>{directions}平均位置偏差峰峰值的一半，即 {figure}/2（ISO 230-2），取 {figure} 的包含区间的一半：该指标误差的参数自助法，所用的轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），并与以测得平均值为真值求得的区间取并集（Berger &amp; Boos 1994），共 {trials} 次试验，随机种子 {seed}；所给概率为其验证所达到的概率（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）。测得的极差受分散性影响而偏大，因此区间可能低于测得值（此时其上端以负号表示）</translation>
+    </message>
+    <message>
+        <source>half the peak-to-peak of the mean positional deviations, withheld: the readings were entered coarser than they scatter, so each mean may be off by up to half a step in a way their scatter does not show, and the range with it</source>
+        <translation>平均位置偏差峰峰值之半，暂不给出：读数录入得比其分散更粗，每个平均值可能偏离至多半个步距，而其分散显示不出，极差亦随之偏离</translation>
     </message>
     <message>
         <source>both directions</source>
