@@ -396,6 +396,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
             low, high = min(low, guard[0]), max(high, guard[1])
         if key not in SIGNED_FIGURES:
             low, high = max(low, 0.0), max(high, 0.0)
+        if high <= low and key in RANGE_BOUNDS:
+            high = _range_bound(*_range_terms(key, x, sig_mean, n, u_b), tail)
         out[key] = FigureInterval(float(value), float(low), float(high),
                                   min(probability, ACHIEVED.get(key, probability)))
     if np.any(u_b):
@@ -407,6 +409,43 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
             out[key] = FigureInterval(here.value, min(here.low, there.low),
                                       max(here.high, there.high), here.probability)
     return out
+
+
+#: the ranges of the means whose interval, where the bootstrap's collapses to a point, takes
+#: the bound of :func:`_range_bound` as its upper end
+RANGE_BOUNDS = frozenset({"E", "E_up", "E_down", "M", "Pa"})
+
+
+def _range_terms(key, x, sig_mean, n, u_b) -> tuple[np.ndarray, np.ndarray]:
+    """The means a range figure spans and their standard uncertainties (the scatter of the
+    mean and the Type B inputs)."""
+    def u(k):
+        return np.sqrt(sig_mean[k] ** 2 / n[k] + u_b**2)
+    if key in ("E_up", "E_down"):
+        k = key[2:]
+        return x[k], u(k)
+    if key == "E":
+        return np.concatenate([x["up"], x["down"]]), np.concatenate([u("up"), u("down")])
+    if "up" in x and "down" in x:  # M, Pa: the bidirectional mean
+        return (0.5 * (x["up"] + x["down"]),
+                np.sqrt(0.25 * (sig_mean["up"] ** 2 / n["up"]
+                                + sig_mean["down"] ** 2 / n["down"]) + u_b**2))
+    k = next(iter(x))
+    return x[k], u(k)
+
+
+def _range_bound(values: np.ndarray, u: np.ndarray, tail: float) -> float:
+    """An upper bound of a range of true values that holds whatever the curve:
+    max over pairs (x_i − x_j + z·√(u_i² + u_j²)), z the one-sided normal quantile at
+    ``tail``. The two targets where the true range is attained are one fixed pair, so its
+    own bound holds at 1 − tail, and the largest over the pairs is above it. It is wide (the
+    noise's whole excess is left in), so it is used only where the bootstrap interval
+    collapses to a point: readings more alike than their scatter allows (every mean equal,
+    each target's readings the same pattern), where the pivot put both ends below 0 and the
+    interval printed was 0 … 0 while s > 0."""
+    z = float(ndtri(1.0 - tail))
+    spread = values[:, None] - values[None, :] + z * np.sqrt(u[:, None] ** 2 + u[None, :] ** 2)
+    return float(max(np.max(spread), 0.0))
 
 
 def _reversal_guard(x, sig_mean, n, tail) -> tuple[float, float]:

@@ -119,3 +119,24 @@ def test_e_interval_still_holds_a_reference_as_bad_as_stated():
         interval = figure_uncertainties(result, positioning_budget(result, meta))["E"]
         hits += int(interval.low <= truth <= interval.high)
     assert hits >= 32, hits
+
+
+def test_readings_more_alike_than_their_scatter_allows_do_not_give_a_point_interval():
+    """Every target read 0, 1, 0, 1, 0 in every direction (a pattern pasted into every
+    target, or a display that flickers between two digits): every mean equal while s > 0.
+    The bootstrap's pivot put both ends of E's interval below 0 and it printed 0 … 0; the
+    upper end is now the bound that holds whatever the curve, max over pairs of
+    x̄_i − x̄_j + 2·√(u_i² + u_j²)."""
+    pattern = [0, 1, 0, 1, 0]
+    rows = [[f"{t}", str(run + 1), sign, f"{pattern[run]}", ""]
+            for run in range(5) for sign in "+-" for t in range(0, 360, 30)]
+    result = _analysed(rows)
+    assert not result.coarse_readings  # s = 0.55 is above half the step
+    intervals = figure_uncertainties(result, positioning_budget(result, CertificateMetadata()))
+    u = float(np.std(pattern, ddof=1)) / math.sqrt(5)  # of each direction's mean
+    u_middle = math.sqrt(0.25 * 2 * u**2)  # of (x̄↑ + x̄↓)/2
+    for key, u_mean in (("E", u), ("E_up", u), ("E_down", u), ("M", u_middle)):
+        interval = intervals[key]
+        assert interval.value == 0.0 and interval.low == 0.0
+        bound = 2.0 * math.sqrt(2.0 * u_mean**2)
+        assert math.isclose(interval.high, bound, rel_tol=1e-6), (key, interval.high, bound)
