@@ -226,6 +226,14 @@ def _deviations(parsed: ParsedReadings, s: dict[str, Any]) -> np.ndarray:
     return out
 
 
+#: readings that show neither a scatter nor a step (models.positioning.report refuses U)
+IDENTICAL_READINGS = QT_TR_NOOP(
+    "The readings of every target came out identical in each direction (s = 0 everywhere) "
+    "and show no step of their display: their repeatability cannot be told. The figures of "
+    "the axis get no coverage interval and no certificate is issued; enter the readings with "
+    "the digits the reference shows.")
+
+
 def _entered_step(parsed: ParsedReadings, s: dict[str, Any]) -> float | None:
     """The step of the deviations as entered (models.readings.resolution), in the deviation
     unit: of the deviation column where it is given, of measured − target elsewhere (the
@@ -382,7 +390,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
     result.readings_step = step
-    if result.coarse_readings:
+    if result.without_scatter and step is None:
+        warnings.append(message(IDENTICAL_READINGS))
+    elif result.coarse_readings:
         sym = result.symbol
         warnings.append(message(QT_TR_NOOP(
             "The readings were entered to {step}, coarser than they scatter (s pooled over the "

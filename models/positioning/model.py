@@ -225,7 +225,13 @@ class PositioningResult:
     def coarse_readings(self) -> bool:
         """Whether the readings were entered coarser than they scatter (models.readings
         .resolution.coarse): each mean then carries a rounding error its s does not show."""
-        return coarse(self.readings_step, self.pooled_s())
+        return self.without_scatter or coarse(self.readings_step, self.pooled_s())
+
+    @property
+    def without_scatter(self) -> bool:
+        """Whether every target's readings came out alike in every direction (s = 0 at every
+        target approached more than once): the readings show no scatter at all."""
+        return self.pooled_s() == 0.0
 
     def directions_present(self) -> list[tuple[str, int, object]]:
         """("up", +1, stats) and/or ("down", −1, stats) for the directions measured."""

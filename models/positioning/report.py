@@ -58,6 +58,7 @@ from models.positioning.model import (
     figure_text,
 )
 from models.positioning.plots import deviation_figure, reversal_figure
+from models.readings.resolution import step_counts
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
@@ -107,6 +108,11 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     """The budget of the mean deviations, held to the laboratory's CMC of the ``settings``
     ``result`` was analysed with (None: none)."""
     points = _points(result)
+    if result.without_scatter and result.readings_step is None:
+        raise MetadataError(message(QT_TR_NOOP(
+            "the readings of every target came out identical in each direction and show no "
+            "step of their display: their repeatability, part of U, cannot be told; no "
+            "certificate is issued")))
     for name, _, s, n in points:
         once = result.positions[(n < 2) | ~np.isfinite(s)]
         if once.size:
@@ -187,19 +193,19 @@ def _stated_inputs(result: PositioningResult) -> list[BudgetComponent]:
 
 
 def readings_step_component(result: PositioningResult) -> list[BudgetComponent]:
-    """The step of the readings as entered, when they were entered coarser than they scatter
-    (models.readings.resolution): rectangular, half-width δ/2, one value per target and
+    """The step of the readings as entered, when the runs scatter by less than it
+    (models.readings.resolution.step_counts): rectangular, half-width δ/2, one value per target and
     direction (Type B: the rounding of a mean that every run rounds alike), unless the
     reference's resolution stated is at least as coarse (it then holds it)."""
     step = result.readings_step
     stated = (result.inputs or {}).get("reference_resolution", 0.0)
-    if not result.coarse_readings or step is None or stated >= step:
+    if not step_counts(step, result.pooled_s()) or step is None or stated >= step:
         return []
     return [BudgetComponent(
         QT_TR_NOOP("Step of the readings as entered"), "B", "rectangular", step,
         2.0 * math.sqrt(3.0), 1.0, math.inf,
-        message(QT_TR_NOOP("readings entered to {step}, coarser than they scatter (s pooled "
-                           "{s}): rectangular, half-width {half}"),
+        message(QT_TR_NOOP("readings entered to {step}, a step not small against their "
+                           "scatter (s pooled {s}): rectangular, half-width {half}"),
                 step=f"{step:g}{result.symbol}", s=f"{result.pooled_s():.3g}{result.symbol}",
                 half=f"{0.5 * step:g}{result.symbol}"))]
 
@@ -226,6 +232,8 @@ def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> 
 #: why the figures have no coverage interval
 ONCE_ONLY = QT_TR_NOOP("a target was approached fewer than twice in a direction: its standard "
                        "deviation is unknown, so no figure has a coverage interval")
+NO_SCATTER = QT_TR_NOOP("the readings of every target came out identical in each direction: "
+                        "their scatter cannot be told, so no figure has a coverage interval")
 COARSE = QT_TR_NOOP("the readings were entered coarser than they scatter: the rounding of each "
                     "mean is not random, and the model the intervals are drawn from (random "
                     "scatter about each target's true mean) does not hold, so no figure has a "
@@ -241,6 +249,8 @@ def intervals_withheld(result: PositioningResult) -> str | None:
     if not all(np.all(stats.runs >= 2) and np.all(np.isfinite(stats.std))
                for _, _, stats in result.directions_present()):
         return ONCE_ONLY
+    if result.without_scatter and result.readings_step is None:
+        return NO_SCATTER
     if result.coarse_readings:
         return COARSE
     return None
@@ -393,8 +403,11 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "reversal's shape. With Type B inputs (the reference standard, the stated inputs), the "
         "interval of E, M, A and P is also united with the one from the same readings without "
         "them: the reference's errors at the targets are part of the measured curve, and where "
-        "the reference is better than its certificate states the range holds less of them. "
-        "The truth it covers is the figure of "
+        "the reference is better than its certificate states the range holds less of them; "
+        "and, as the reference's errors need not be independent from target to target (a "
+        "once-a-turn error lowers the crests and raises the troughs), with that interval at "
+        "half the tail widened each way by z · 2 max u, the largest difference of two targets' "
+        "errors whatever their correlation. The truth it covers is the figure of "
         "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
         "target). The interval may lie below the measured value. Its probability is the one "
         "a simulation study reached (anglebench validate: smooth, rough, single-spike and real "

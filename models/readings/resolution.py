@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-__all__ = ["GRID", "coarse", "readings_step"]
+__all__ = ["GRID", "coarse", "readings_step", "step_counts"]
 
 #: the finest step recognised: readings typed to at most six decimals lie on this grid
 GRID = 1e-6
@@ -42,6 +42,14 @@ def readings_step(values: np.ndarray) -> float | None:
     steps = np.abs(whole - whole[0]).astype(np.int64)
     g = int(np.gcd.reduce(steps))
     return g * GRID if g else None
+
+
+def step_counts(step: float | None, pooled_s: float) -> bool:
+    """Whether the step of readings whose pooled standard deviation is ``pooled_s`` is to be
+    counted in U as an input of its own (s < δ): between δ/2 and δ the rounding is random
+    but a target's few readings still come out alike often enough (five at σ = δ/2: s = 0 at
+    many targets, and U covered 85–91 % of means without the step)."""
+    return step is not None and math.isfinite(pooled_s) and pooled_s < step
 
 
 def coarse(step: float | None, pooled_s: float) -> bool:

@@ -3876,6 +3876,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>最大反向差</translation>
     </message>
     <message>
+        <source>the readings of every target came out identical in each direction and show no step of their display: their repeatability, part of U, cannot be told; no certificate is issued</source>
+        <translation>各目标位置在每个方向上的读数完全相同，且看不出其显示的步距：其重复性（U 的一部分）无法得知；不出具证书</translation>
+    </message>
+    <message>
         <source>target(s) {targets} forward were approached fewer than twice: their repeatability, part of U, is unknown; no certificate is issued</source>
         <translation>目标 {targets} 正向趋近少于两次：其重复性（U 的组成部分）未知；不签发证书</translation>
     </message>
@@ -3898,10 +3902,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Step of the readings as entered</source>
         <translation>录入读数的步距</translation>
-    </message>
-    <message>
-        <source>readings entered to {step}, coarser than they scatter (s pooled {s}): rectangular, half-width {half}</source>
-        <translation>读数录入到 {step}，粗于其分散（合并 s 为 {s}）：矩形分布，半宽 {half}</translation>
     </message>
     <message>
         <source>the readings were entered coarser than they scatter: the rounding of each mean is not random, and the model the intervals are drawn from (random scatter about each target&apos;s true mean) does not hold, so no figure has a coverage interval</source>
@@ -3982,6 +3982,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Evaluated to {standard}; the figures of the other standard are given beside them from the same readings.</source>
         <translation>按 {standard} 评定；另一标准的指标由同一组读数给出，并列于旁。</translation>
+    </message>
+    <message>
+        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s upper end is at least the largest of the targets&apos; own one-sided bounds, which holds whatever the reversal&apos;s shape. With Type B inputs (the reference standard, the stated inputs), the interval of E, M, A and P is also united with the one from the same readings without them: the reference&apos;s errors at the targets are part of the measured curve, and where the reference is better than its certificate states the range holds less of them; and, as the reference&apos;s errors need not be independent from target to target (a once-a-turn error lowers the crests and raises the troughs), with that interval at half the tail widened each way by z · 2 max u, the largest difference of two targets&apos; errors whatever their correlation. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
+        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的上端至少为各目标位置自身单侧界限中的最大值，无论反向差值曲线形状如何均成立。有 B 类输入量（参考标准器、所述输入量）时，E、M、A 和 P 的区间还与不计这些输入量、由同一组读数求得的区间取并集：参考标准器在各目标位置的误差是测得曲线的一部分，当参考标准器优于其证书所述时，极差中所含的这部分误差较少；并且，由于参考标准器的误差在各目标位置之间不一定相互独立（每转一次的误差会压低波峰、抬高波谷），还与该区间在半个尾概率处、向两侧各加宽 z · 2 max u 所得的区间取并集，z · 2 max u 是无论相关性如何两个目标位置误差之差的最大值。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
     </message>
     <message>
         <source>A specification of A, R, E, B or P conforms when the upper end of the figure&apos;s coverage interval is within it, does not conform when the lower end exceeds it, and is not decided in between (ISO 14253-1).</source>
@@ -4439,6 +4443,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>row {row}: a deviation of {out} {s} is beyond {limit} {s} ({deviation_limit} {s2}): check the deviation unit, or whether a position was typed as a deviation</source>
         <translation>第 {row} 行：偏差 {out} {s} 超出 {limit} {s}（{deviation_limit} {s2}）：请检查偏差单位，或是否把位置填成了偏差</translation>
+    </message>
+    <message>
+        <source>The readings of every target came out identical in each direction (s = 0 everywhere) and show no step of their display: their repeatability cannot be told. The figures of the axis get no coverage interval and no certificate is issued; enter the readings with the digits the reference shows.</source>
+        <extracomment>readings that show neither a scatter nor a step (models.positioning.report refuses U)</extracomment>
+        <translation>各目标位置在每个方向上的读数完全相同（处处 s = 0），且看不出其显示的步距：其重复性无法得知。轴线各项指标不给出包含区间，也不出具证书；请按参考仪器显示的位数录入读数。</translation>
     </message>
     <message>
         <source>Approach direction not stated for {count} reading(s): taken from the order of the targets (a repeated target is the turn of a run).</source>
@@ -7214,16 +7223,20 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各目标位置 u = {r}（给定值）</translation>
     </message>
     <message>
+        <source>readings entered to {step}, a step not small against their scatter (s pooled {s}): rectangular, half-width {half}</source>
+        <translation>读数录入到 {step}，该步距相对其分散（合并 s 为 {s}）不算小：矩形分布，半宽 {half}</translation>
+    </message>
+    <message>
+        <source>the readings of every target came out identical in each direction: their scatter cannot be told, so no figure has a coverage interval</source>
+        <translation>各目标位置在每个方向上的读数完全相同：其分散无法得知，因此各项指标均不给出包含区间</translation>
+    </message>
+    <message>
         <source>Conformity, when a tolerance is stated, is judged on the mean positional deviations (each with its own U, or half their range, E/2, with the coverage interval of E above halved); a specification of A, R or P is read against the figures above.</source>
         <translation>给定允差时，符合性按平均位置偏差判定（各用其自身的 U，或用其范围的一半 E/2，并取上述 E 的包含区间的一半）；对 A、R 或 P 的技术要求应与上述指标对照。</translation>
     </message>
     <message>
         <source>Compensation = −mean deviation: a controller adding it to the commanded position is expected to reach the target, within the repeatability and the U stated, if the axis behaves as in this test.</source>
         <translation>补偿值 = −平均偏差：若轴的表现与本次检测相同，控制器将其加到指令位置上，预计可在所给重复性和 U 的范围内到达目标位置。</translation>
-    </message>
-    <message>
-        <source>Coverage interval of each figure of the axis: a figure is a largest value or a range over the targets, biased high by the scatter; its interval is a parametric bootstrap of the figure&apos;s error (basic bootstrap interval, calibrated by the iterated bootstrap, Beran 1987) from a model of the axis whose spread over the targets is estimated without the scatter&apos;s (constrained empirical Bayes, Louis 1984), {trials} trials seeded from the readings; each Type B input drawn once per target, the same in both directions. For the figures of the mean deviations (E, M, B, R, A, P) it is united with the interval from the measured means taken as the truth, so that a target far off that the scatter hides is still covered (the curve&apos;s spread taken at both ends of what the readings allow, Berger &amp; Boos 1994). For the ranges of the mean deviations (E, E↑, E↓) the model&apos;s true means have the distribution the readings show (triple-goal estimates, Shen &amp; Louis 1998) and the interval is not calibrated; B&apos;s upper end is at least the largest of the targets&apos; own one-sided bounds, which holds whatever the reversal&apos;s shape. With Type B inputs (the reference standard, the stated inputs), the interval of E, M, A and P is also united with the one from the same readings without them: the reference&apos;s errors at the targets are part of the measured curve, and where the reference is better than its certificate states the range holds less of them. The truth it covers is the figure of the axis&apos;s true mean deviations and true standard deviations (R = 4σ at the worst target). The interval may lie below the measured value. Its probability is the one a simulation study reached (anglebench validate: smooth, rough, single-spike and real curves, repeatability 0.1 to 2 times the signal, 12, 36 and 72 targets), where that is below {p} %.</source>
-        <translation>轴各项指标的包含区间：指标是各目标位置上的最大值或极差，受分散性影响而偏大；其区间由该指标误差的参数自助法求得（基本自助区间，经迭代自助法校准，Beran 1987），所用的轴模型在各目标位置间的离散程度已扣除分散性的贡献（约束经验贝叶斯，Louis 1984），共 {trials} 次试验，随机种子取自读数；每个 B 类输入量在每个目标位置抽取一次，两个方向相同。对平均偏差的指标（E、M、B、R、A、P），该区间与以测得平均值为真值求得的区间取并集，使被分散性掩盖的远离目标位置仍被包含（曲线离散程度取读数所允许范围的两端，Berger &amp; Boos 1994）。对平均偏差的极差（E、E↑、E↓），轴模型的真平均偏差具有读数所显示的分布（三目标估计，Shen &amp; Louis 1998），区间不加校准；B 的上端至少为各目标位置自身单侧界限中的最大值，无论反向差值曲线形状如何均成立。有 B 类输入量（参考标准器、所述输入量）时，E、M、A 和 P 的区间还与不计这些输入量、由同一组读数求得的区间取并集：参考标准器在各目标位置的误差是测得曲线的一部分，当参考标准器优于其证书所述时，极差中所含的这部分误差较少。区间所包含的真值是按轴的真实平均偏差和真实标准偏差计算的指标（R = 最差目标位置上的 4σ）。区间可能低于测得值。其包含概率为仿真研究（anglebench validate：平滑、粗糙、单个尖峰和实际曲线，重复性为信号的 0.1 至 2 倍，12、36 和 72 个目标位置）所达到的概率（当其低于 {p} % 时）。</translation>
     </message>
     <message>
         <source>No coverage interval is given for the figures: {reason}.</source>

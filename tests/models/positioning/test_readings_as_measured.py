@@ -8,8 +8,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
-from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.certificate.metadata import CertificateMetadata, MetadataError, ReferenceStandard
 from models.positioning.analysis import POSITIONING
 from models.positioning.decided_quantity import decided_half_range
 from models.positioning.report import (
@@ -126,17 +127,51 @@ def test_readings_more_alike_than_their_scatter_allows_do_not_give_a_point_inter
     target, or a display that flickers between two digits): every mean equal while s > 0.
     The bootstrap's pivot put both ends of E's interval below 0 and it printed 0 … 0; the
     upper end is now the bound that holds whatever the curve, max over pairs of
-    x̄_i − x̄_j + 2·√(u_i² + u_j²)."""
+    x̄_i − x̄_j + 2·√(u_i² + u_j²), or wider."""
     pattern = [0, 1, 0, 1, 0]
     rows = [[f"{t}", str(run + 1), sign, f"{pattern[run]}", ""]
             for run in range(5) for sign in "+-" for t in range(0, 360, 30)]
     result = _analysed(rows)
-    assert not result.coarse_readings  # s = 0.55 is above half the step
+    assert not result.coarse_readings  # s = 0.55 is above half the step: intervals given
     intervals = figure_uncertainties(result, positioning_budget(result, CertificateMetadata()))
-    u = float(np.std(pattern, ddof=1)) / math.sqrt(5)  # of each direction's mean
-    u_middle = math.sqrt(0.25 * 2 * u**2)  # of (x̄↑ + x̄↓)/2
-    for key, u_mean in (("E", u), ("E_up", u), ("E_down", u), ("M", u_middle)):
+    # s = 0.55 is below the step (1): the step is counted, u² = s²/5 + 1/12 at each mean
+    step_u2 = 1.0 / 12.0
+    u2 = float(np.var(pattern, ddof=1)) / 5.0 + step_u2
+    u2_middle = 0.25 * 2 * (u2 - step_u2) + step_u2  # (x̄↑ + x̄↓)/2: the step once
+    for key, u2_mean in (("E", u2), ("E_up", u2), ("E_down", u2), ("M", u2_middle)):
         interval = intervals[key]
         assert interval.value == 0.0 and interval.low == 0.0
-        bound = 2.0 * math.sqrt(2.0 * u_mean**2)
-        assert math.isclose(interval.high, bound, rel_tol=1e-6), (key, interval.high, bound)
+        assert interval.high >= 2.0 * math.sqrt(2.0 * u2_mean), (key, interval.high)
+
+
+def test_readings_that_show_no_scatter_and_no_step_get_no_u():
+    """Every reading 0 (an axis far better than the display, typed as shown): no scatter and
+    no step to tell the repeatability by. Before: U = 0 at every target and E 0 … 0."""
+    rows = [[f"{t}", str(run), sign, "0", ""]
+            for run in range(1, 6) for sign in "+-" for t in range(0, 360, 30)]
+    result = _analysed(rows)
+    assert result.without_scatter and result.readings_step is None
+    assert any("came out identical" in w for w in result.warnings)
+    assert intervals_withheld(result) is not None
+    assert figure_uncertainties(result, None) == {}
+    with pytest.raises(MetadataError, match="repeatability, part of U, cannot be told"):
+        positioning_budget(result, CertificateMetadata())
+
+
+def test_the_step_is_counted_where_the_runs_scatter_by_less_than_it():
+    """Readings to 0.1" scattering by 0.05" (half the step): the rounding is random, the
+    figures keep their intervals, but five readings of a target often come out alike and
+    U was 0 there; the step is counted in U (s < δ)."""
+    rng = np.random.default_rng(12)
+    angle, up, down = _true_means(12, 1.0, 0.1)
+    hits = points = 0
+    for _ in range(10):
+        result = _analysed(_typed_test(rng, angle, up, down, sigma=0.05, step=0.1))
+        budget = positioning_budget(result, CertificateMetadata())
+        assert "Step of the readings as entered" in [c.name for c in budget.components]
+        big_u = budget.expanded.reshape(2, -1)
+        for row, (_, _, stats) in enumerate(result.directions_present()):
+            truth = up if row == 0 else down
+            hits += int(np.sum(np.abs(stats.mean - truth) <= big_u[row]))
+            points += truth.size
+    assert hits / points >= 0.95
