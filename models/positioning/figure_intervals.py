@@ -345,7 +345,8 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      runs: dict[str, np.ndarray], probability: float,
                      type_b_u: np.ndarray | None = None, seed: int = 0,
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
-                     outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS
+                     outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
+                     correlated_u: np.ndarray | None = None
                      ) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
@@ -365,6 +366,11 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         The measured figures (as the standard computes them); computed if omitted.
     outer, inner : int
         Trials of the calibration (0: no calibration, the plain basic interval).
+    correlated_u : array, optional
+        The part of ``type_b_u`` whose errors may be correlated from target to target (the
+        reference's, the stated misalignment and temperature; not the roundings, which are
+        independent): it sets the widening of :data:`TYPE_B_FIGURES`. All of ``type_b_u``
+        if omitted.
     """
     keys = list(means)
     m = means[keys[0]].size
@@ -420,9 +426,10 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
         # the crests and raises the troughs): the figure of the readings without them, at
         # half the tail each side, widened by the largest difference of two targets' errors
-        wide = figure_intervals(means, stds, runs, 1.0 - tail, None, seed, trials, figures,
-                                outer, inner)
-        shift = float(ndtri(1.0 - 0.5 * tail)) * 2.0 * float(np.max(u_b))
+        correlated = float(np.max(u_b if correlated_u is None else correlated_u))
+        wide = (figure_intervals(means, stds, runs, 1.0 - tail, None, seed, trials, figures,
+                                 outer, inner) if correlated > 0.0 else bare)
+        shift = float(ndtri(1.0 - 0.5 * tail)) * 2.0 * correlated
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
             out[key] = FigureInterval(here.value, max(min(here.low, there.low,

@@ -168,9 +168,15 @@ def repeated_readings_components(result: PositioningResult) -> list[BudgetCompon
                                          "runs of the target; ν = {dof}"), n=n, dof=n - 1))]
 
 
+STEP_INPUT = QT_TR_NOOP("Step of the readings as entered")
+REFERENCE_RESOLUTION = QT_TR_NOOP("Resolution of the reference")
+#: the Type B inputs that are roundings (of the readings, of the reference's or the item's
+#: display): independent from target to target, unlike the reference's own errors
+ROUNDINGS = (STEP_INPUT, REFERENCE_RESOLUTION, QT_TR_NOOP("Item resolution"))
+
 #: the inputs the readings cannot show: (setting, name, distribution, divisor of the figure)
 _STATED = (("misalignment_u", QT_TR_NOOP("Misalignment of the reference"), "normal", 1.0),
-           ("reference_resolution", QT_TR_NOOP("Resolution of the reference"), "rectangular",
+           ("reference_resolution", REFERENCE_RESOLUTION, "rectangular",
             2.0 * math.sqrt(3.0)),
            ("temperature_u", QT_TR_NOOP("Temperature"), "normal", 1.0))
 
@@ -202,7 +208,7 @@ def readings_step_component(result: PositioningResult) -> list[BudgetComponent]:
     if not step_counts(step, result.pooled_s()) or step is None or stated >= step:
         return []
     return [BudgetComponent(
-        QT_TR_NOOP("Step of the readings as entered"), "B", "rectangular", step,
+        STEP_INPUT, "B", "rectangular", step,
         2.0 * math.sqrt(3.0), 1.0, math.inf,
         message(QT_TR_NOOP("readings entered to {step}, a step not small against their "
                            "scatter (s pooled {s}): rectangular, half-width {half}"),
@@ -216,13 +222,15 @@ def not_stated(result: PositioningResult) -> list[str]:
     return [name for key, name, _, _ in _STATED if not inputs.get(key)]
 
 
-def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> np.ndarray:
+def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget,
+                       roundings: bool = True) -> np.ndarray:
     """The Type B inputs' combined standard uncertainty at each target: the reference's error
     at a position is one value for both approach directions and every run (the quadratic
-    mean over the directions where the budget differs)."""
+    mean over the directions where the budget differs); ``roundings`` False: without the
+    roundings (:data:`ROUNDINGS`)."""
     m = result.positions.size
     rows = [u for c, u in zip(budget.components, budget.contributions(), strict=True)
-            if c.evaluation == "B"]
+            if c.evaluation == "B" and (roundings or c.name not in ROUNDINGS)]
     if not rows:
         return np.zeros(m)
     per_point = np.sum(np.asarray(rows) ** 2, axis=0).reshape(-1, m)
@@ -273,7 +281,8 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
     if budget is None:
         budget = positioning_budget(result, CertificateMetadata())
     u_b = _type_b_per_target(result, budget)
-    key = (budget.probability, u_b.tobytes())
+    correlated = _type_b_per_target(result, budget, roundings=False)
+    key = (budget.probability, u_b.tobytes(), correlated.tobytes())
     cache = result.__dict__.setdefault("_figure_intervals", {})
     if key not in cache:
         present = result.directions_present()
@@ -286,7 +295,7 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             {name: stats.runs for name, _, stats in present},
             budget.probability, u_b,
             readings_seed(result.targets, result.directions, result.deviations),
-            figures=figures)
+            figures=figures, correlated_u=correlated)
     return cache[key]
 
 
@@ -407,7 +416,8 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "and, as the reference's errors need not be independent from target to target (a "
         "once-a-turn error lowers the crests and raises the troughs), with that interval at "
         "half the tail widened each way by z · 2 max u, the largest difference of two targets' "
-        "errors whatever their correlation. The truth it covers is the figure of "
+        "errors whatever their correlation (u of those inputs but the roundings, which are "
+        "independent from target to target). The truth it covers is the figure of "
         "the axis's true mean deviations and true standard deviations (R = 4σ at the worst "
         "target). The interval may lie below the measured value. Its probability is the one "
         "a simulation study reached (anglebench validate: smooth, rough, single-spike and real "

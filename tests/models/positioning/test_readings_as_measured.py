@@ -175,3 +175,25 @@ def test_the_step_is_counted_where_the_runs_scatter_by_less_than_it():
             hits += int(np.sum(np.abs(stats.mean - truth) <= big_u[row]))
             points += truth.size
     assert hits / points >= 0.95
+
+
+def test_the_roundings_are_not_widened_as_a_reference_s_errors_are():
+    """The step of the readings is counted in U (s < δ), but a rounding is independent from
+    target to target: it does not get the widening for errors of unknown correlation (it
+    doubled E's interval in an audit, 1.1 → 2.7″ at a scatter of half the step)."""
+    from models.positioning.figure_intervals import figure_intervals, readings_seed
+
+    rng = np.random.default_rng(13)
+    angle, up, down = _true_means(12, 1.0, 0.1)
+    result = _analysed(_typed_test(rng, angle, up, down, sigma=0.5, step=1.0))
+    budget = positioning_budget(result, CertificateMetadata())
+    assert "Step of the readings as entered" in [c.name for c in budget.components]
+    assert not result.coarse_readings
+    given = figure_uncertainties(result, budget)["E"]
+    present = result.directions_present()
+    args = ({n: st.mean for n, _, st in present}, {n: st.std for n, _, st in present},
+            {n: st.runs for n, _, st in present}, budget.probability,
+            np.full(12, 1.0 / math.sqrt(12.0)),
+            readings_seed(result.targets, result.directions, result.deviations))
+    as_reference = figure_intervals(*args)["E"]  # every Type B input of unknown correlation
+    assert given.high - given.low < 0.8 * (as_reference.high - as_reference.low)
