@@ -33,11 +33,11 @@ def readings_step(values: np.ndarray) -> float | None:
     is what the evaluation can use."""
     v = np.asarray(values, dtype=float)
     v = v[np.isfinite(v)]
-    if v.size < 2:
+    if v.size < 2 or np.any(np.abs(v) >= 2.0**53 * GRID):  # beyond whole steps of the grid
         return None
     scaled = v / GRID
     whole = np.round(scaled)
-    if np.any(np.abs(scaled - whole) > 1e-3) or np.any(np.abs(whole) >= 2.0**53):
+    if np.any(np.abs(scaled - whole) > 1e-3):
         return None
     steps = np.abs(whole - whole[0]).astype(np.int64)
     g = int(np.gcd.reduce(steps))

@@ -39,6 +39,7 @@ def test_readings_on_no_grid_have_no_step():
     assert readings_step(np.array([0.5, 0.5, 0.5])) is None
     assert readings_step(np.array([0.5])) is None
     assert readings_step(np.array([0.5, np.nan])) is None
+    assert readings_step(np.array([1e308, 0.0])) is None  # no grid of whole steps that far
 
 
 def test_coarse_is_a_scatter_below_half_the_step():
