@@ -286,8 +286,9 @@ RANGE_FIGURES = frozenset({"E", "E_up", "E_down"})
 #: the world draws it as noise of the stated u at each target, and the pivot takes the
 #: excess that noise gives a range out of the measured one. A certificate's U is an
 #: envelope: where the reference is better than stated, that takes out an excess the readings
-#: do not hold, and the interval fell below the truth (an axis of E = 0.70", scatter 0.1",
-#: with a perfect reference stated at U = 1": E's interval 0 … 0.19", 0 of 20 tests covered).
+#: do not hold, and the interval fell below the truth (an axis of E = 0.68", scatter 0.1",
+#: with a perfect reference stated at U = 1": E's interval 0 … 0.2–0.3", 0 of 40 tests
+#: covered).
 #: The union holds the reference anywhere between perfect and as bad as stated (Berger &
 #: Boos 1994 again: the reference's actual errors are a nuisance the readings do not fix).
 #: A reference's errors need not be independent from target to target: a once-a-turn error
