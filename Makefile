@@ -23,8 +23,11 @@ run: $(STAMP)
 # and Python the modules it compiled (__pycache__, ignored by git) instead of compiling every
 # test module again in every worker and every program a test starts (~6 s of CPU a worker)
 TEST_ENV := QT_QPA_PLATFORM=offscreen PYTHONDONTWRITEBYTECODE=
+# --durations: the slowest tests named at the end of every run (a run that slows is read
+# from CI's own log); a test that hangs is failed after 600 s with every thread's stack
+# (pytest-timeout, pyproject.toml)
 test: $(STAMP)
-	$(TEST_ENV) $(PY) -m pytest -n auto --dist worksteal
+	$(TEST_ENV) $(PY) -m pytest -n auto --dist worksteal --durations=15
 
 test-fast: $(STAMP)
 	$(TEST_ENV) $(PY) -m pytest -n auto --dist worksteal -m "not slow"
