@@ -28,6 +28,7 @@ import json
 import platform
 import re
 import socket
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -173,6 +174,8 @@ class RegisterTampered(RegisterError):
 ISSUE_ATTEMPTS = 200
 #: how long a PostgreSQL statement waits for a lock before saying who holds it
 LOCK_TIMEOUT_S = 20
+#: how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)
+TURN_TIMEOUT_S = 120
 
 
 @dataclass(frozen=True)
@@ -1123,11 +1126,24 @@ class _Turn:
                 handle = open(register._sqlite_path + ".issuing", "a+b")  # noqa: SIM115
             except OSError:
                 return
-            fcntl.flock(handle, fcntl.LOCK_EX)
+            # waited for as long as PostgreSQL's turn (lock_timeout below), then the issue
+            # goes on without it, as on Windows: the turn only spares a render, the commit is
+            # serialised by the database (a blocking flock waited for ever on an issuer that
+            # hung holding it)
+            deadline = time.monotonic() + TURN_TIMEOUT_S
+            while True:
+                try:
+                    fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                    break
+                except BlockingIOError:
+                    if time.monotonic() > deadline:
+                        handle.close()
+                        return
+                    time.sleep(0.02)
             self._handle = handle
         elif not register.is_sqlite:
             conn = register.engine.connect()
-            conn.execute(register._sa.text("SET lock_timeout = '120s'"))
+            conn.execute(register._sa.text(f"SET lock_timeout = '{TURN_TIMEOUT_S}s'"))
             try:
                 conn.execute(register._sa.text("SELECT pg_advisory_lock(:k)"), {"k": _TURN_LOCK})
                 conn.commit()

@@ -456,3 +456,31 @@ def test_forty_processes_issuing_at_once_are_all_served(tmp_path):
         assert reg.problems == [] and reg.audit(pdfs=True) == []
         pdfs = {r.number: reg.pdf(r.number) for r in reg.list()}
         assert all(f" {reg.chain_before(n)}".encode() in pdf for n, pdf in pdfs.items())
+
+
+def test_an_issuer_that_lost_a_race_waits_for_its_turn_only_so_long(tmp_path, monkeypatch):
+    """The turn to render again after a lost race (a file lock beside a SQLite register) is
+    waited for at most TURN_TIMEOUT_S, then the issue goes on without it (the database still
+    serialises the commit); a blocking lock waited for ever on an issuer that hung holding
+    it."""
+    import fcntl
+    import time
+
+    import models.register.store as store
+
+    url = f"sqlite:///{tmp_path / 'register.sqlite'}"
+    monkeypatch.setattr(store, "TURN_TIMEOUT_S", 0.3)
+    with Register(url) as reg, open(str(tmp_path / "register.sqlite") + ".issuing", "a+b") as held:
+        fcntl.flock(held, fcntl.LOCK_EX)  # another issuer, hung with the turn
+        with reg._issuing_turn() as turn:
+            t0 = time.monotonic()
+            turn.take()
+            waited = time.monotonic() - t0
+            assert 0.3 <= waited < 3.0 and turn._handle is None
+        fcntl.flock(held, fcntl.LOCK_UN)  # released: the next issuer gets it at once
+        with reg._issuing_turn() as turn:
+            turn.take()
+            assert turn._handle is not None
+        reg.clock = on(ISSUED)
+        record, _ = reg.issue(request(), lambda meta, head="": b"%PDF")
+        assert record.number == "AB-2026-0001" and reg.audit(pdfs=True) == []
