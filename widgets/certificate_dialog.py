@@ -91,7 +91,7 @@ _STANDARD_COLUMNS = ("description", "serial", "certificate_no", "uncertainty", "
                      "applies_to", "uncertainty_unit", "due_date")
 _STANDARD_HEADERS = (QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
                      QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Stated as (U95, MPE, u)"),
-                     QT_TR_NOOP("Per (reading, from face 1)"),
+                     QT_TR_NOOP("Per (reading, angle, from face 1)"),
                      QT_TR_NOOP("Unit of the uncertainty (\", µrad, nm, µm …)"),
                      QT_TR_NOOP("Due date (YYYY-MM-DD)"))
 _ERROR_STYLE = "background: #ffd7d7;"

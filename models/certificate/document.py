@@ -205,6 +205,8 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
         per, c = reading, sensitivity
         if std.applies_to == "from face 1" and sensitivity_from_first is not None:
             per, c = QT_TR_NOOP("face, stated from face 1"), sensitivity_from_first
+        elif std.applies_to == "angle":
+            per = QT_TR_NOOP("angle between two readings")
         basis = message(BASIS_DIVISORS[std.basis][0])
         note = (message(QT_TR_NOOP("{basis} per {per}, certificate {certificate}"), basis=basis,
                         per=message(per), certificate=std.certificate_no)
@@ -212,7 +214,7 @@ def reference_standard_components(metadata: CertificateMetadata, sensitivity,
                 message(QT_TR_NOOP("{basis} per {per}"), basis=basis, per=message(per)))
         out.append(BudgetComponent(
             name, "B", distribution, std.uncertainty_in(unit), divisor, c, math.inf, note,
-            common=common))
+            common=common, per_angle=std.applies_to == "angle"))
     return out
 
 

@@ -63,7 +63,7 @@ _REFUSED_CATEGORIES = frozenset({"Cc", "Cf", "Zl", "Zp", "Cs", "Co", "Cn"})
 
 
 #: What a reference standard's uncertainty figure applies to (see ReferenceStandard).
-APPLIES_TO = ("reading", "from face 1")
+APPLIES_TO = ("reading", "angle", "from face 1")
 
 
 class MetadataError(ValueError):
@@ -160,9 +160,11 @@ class ReferenceStandard:
     stated as ``basis`` (see BASIS_DIVISORS) enters the budget as a Type B component
     for each reading made with it; leave it empty for a standard whose uncertainty
     does not enter the result. ``applies_to`` says what the figure is the
-    uncertainty of: each ``reading`` (the default), or each face's deviation ``from
-    face 1`` (a polygon certificate that states its deviations from face 1, whose face
-    1 is then exact).
+    uncertainty of: each ``reading`` (the default), any ``angle`` between two readings
+    (a certificate that states U for every angle measured with the standard, from any
+    start: the difference of two readings' errors is then within it too; the positioning
+    figures' intervals use it), or each face's deviation ``from face 1`` (a polygon
+    certificate that states its deviations from face 1, whose face 1 is then exact).
     """
 
     description: str = ""

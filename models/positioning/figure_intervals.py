@@ -296,7 +296,9 @@ RANGE_FIGURES = frozenset({"E", "E_up", "E_down"})
 #: audit found E covered 55–73 % of tests. The figure's error from them is the difference
 #: of two targets' errors, whose standard deviation is at most u_i + u_j whatever their
 #: correlation; the interval is also united with the one without them at half the tail,
-#: widened by z(1 − tail/2) · 2 max u each way (a union bound: it holds at 1 − tail).
+#: widened by z(1 − tail/2) · 2 max u each way (a union bound: it holds at 1 − tail). A
+#: reference whose U is stated for any angle between two readings (applies_to "angle") has
+#: that difference within its own u: 1 × u, not 2 × (``pair_u``).
 TYPE_B_FIGURES = frozenset({"E", "E_up", "E_down", "M", "Pa", "A", "A_up", "A_down", "P"})
 
 #: the grid and the most EM steps of the true means' distribution (:func:`_ensemble`)
@@ -347,7 +349,7 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      type_b_u: np.ndarray | None = None, seed: int = 0,
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
-                     correlated_u: np.ndarray | None = None
+                     pair_u: float | None = None
                      ) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
@@ -367,11 +369,12 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         The measured figures (as the standard computes them); computed if omitted.
     outer, inner : int
         Trials of the calibration (0: no calibration, the plain basic interval).
-    correlated_u : array, optional
-        The part of ``type_b_u`` whose errors may be correlated from target to target (the
+    pair_u : float, optional
+        The largest standard deviation the Type B inputs' errors can give the difference of
+        two targets' errors, whatever their correlation from target to target (the
         reference's, the stated misalignment and temperature; not the roundings, which are
-        independent): it sets the widening of :data:`TYPE_B_FIGURES`. All of ``type_b_u``
-        if omitted.
+        independent): it sets the widening of :data:`TYPE_B_FIGURES`. 2 max ``type_b_u`` if
+        omitted (each target's error within its u, two of them possibly opposite).
     """
     keys = list(means)
     m = means[keys[0]].size
@@ -427,10 +430,10 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
         # the crests and raises the troughs): the figure of the readings without them, at
         # half the tail each side, widened by the largest difference of two targets' errors
-        correlated = float(np.max(u_b if correlated_u is None else correlated_u))
+        pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
         wide = (figure_intervals(means, stds, runs, 1.0 - tail, None, seed, trials, figures,
-                                 outer, inner) if correlated > 0.0 else bare)
-        shift = float(ndtri(1.0 - 0.5 * tail)) * 2.0 * correlated
+                                 outer, inner) if pair > 0.0 else bare)
+        shift = float(ndtri(1.0 - 0.5 * tail)) * pair
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
             out[key] = FigureInterval(here.value, max(min(here.low, there.low,

@@ -222,19 +222,33 @@ def not_stated(result: PositioningResult) -> list[str]:
     return [name for key, name, _, _ in _STATED if not inputs.get(key)]
 
 
-def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget,
-                       roundings: bool = True) -> np.ndarray:
-    """The Type B inputs' combined standard uncertainty at each target: the reference's error
-    at a position is one value for both approach directions and every run (the quadratic
-    mean over the directions where the budget differs); ``roundings`` False: without the
-    roundings (:data:`ROUNDINGS`)."""
-    m = result.positions.size
-    rows = [u for c, u in zip(budget.components, budget.contributions(), strict=True)
-            if c.evaluation == "B" and (roundings or c.name not in ROUNDINGS)]
-    if not rows:
-        return np.zeros(m)
-    per_point = np.sum(np.asarray(rows) ** 2, axis=0).reshape(-1, m)
-    return np.sqrt(np.mean(per_point, axis=0))
+def _per_target(result: PositioningResult, contribution: np.ndarray) -> np.ndarray:
+    """An input's standard uncertainty at each target: the reference's error at a position is
+    one value for both approach directions and every run (the quadratic mean over the
+    directions where the budget differs)."""
+    squared = np.asarray(contribution, dtype=float) ** 2
+    return np.sqrt(np.mean(squared.reshape(-1, result.positions.size), axis=0))
+
+
+def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> np.ndarray:
+    """The Type B inputs' combined standard uncertainty at each target."""
+    rows = [_per_target(result, u) ** 2
+            for c, u in zip(budget.components, budget.contributions(), strict=True)
+            if c.evaluation == "B"]
+    return np.sqrt(np.sum(rows, axis=0)) if rows else np.zeros(result.positions.size)
+
+
+def _pair_u(result: PositioningResult, budget: UncertaintyBudget) -> float:
+    """The largest standard deviation the Type B inputs can give the difference of two
+    targets' errors, whatever their correlation from target to target: 2 max u of an input
+    stated for each reading (its errors at two targets may be opposite), max u of one stated
+    for any angle between two readings (that difference is one more angle it measured), the
+    inputs in quadrature (independent of one another). The roundings (:data:`ROUNDINGS`) are
+    independent from target to target and not counted: the model's draws hold them."""
+    total = sum(((1.0 if c.per_angle else 2.0) * float(np.max(_per_target(result, u)))) ** 2
+                for c, u in zip(budget.components, budget.contributions(), strict=True)
+                if c.evaluation == "B" and c.name not in ROUNDINGS)
+    return math.sqrt(total)
 
 
 #: why the figures have no coverage interval
@@ -281,8 +295,8 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
     if budget is None:
         budget = positioning_budget(result, CertificateMetadata())
     u_b = _type_b_per_target(result, budget)
-    correlated = _type_b_per_target(result, budget, roundings=False)
-    key = (budget.probability, u_b.tobytes(), correlated.tobytes())
+    pair = _pair_u(result, budget)
+    key = (budget.probability, u_b.tobytes(), pair)
     cache = result.__dict__.setdefault("_figure_intervals", {})
     if key not in cache:
         present = result.directions_present()
@@ -295,7 +309,7 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
             {name: stats.runs for name, _, stats in present},
             budget.probability, u_b,
             readings_seed(result.targets, result.directions, result.deviations),
-            figures=figures, correlated_u=correlated)
+            figures=figures, pair_u=pair)
     return cache[key]
 
 

@@ -110,6 +110,9 @@ class BudgetComponent:
     # its error at each point is one value for the whole run, held in the measured curve and
     # not in the scatter of the readings (a reference's calibration error at that position)
     in_curve: bool = False
+    # its figure is stated for any angle between two readings (ReferenceStandard.applies_to
+    # "angle"): the difference of two points' errors is within it, not within twice it
+    per_angle: bool = False
 
     def __post_init__(self) -> None:
         values = np.asarray(self.value, dtype=float)

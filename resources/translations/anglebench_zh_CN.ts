@@ -2155,6 +2155,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>国家（ISO 3166-1，如 CN）</translation>
     </message>
     <message>
+        <source>Per (reading, angle, from face 1)</source>
+        <translation>适用于（每个读数、任意角度、相对第 1 面）</translation>
+    </message>
+    <message>
         <source>Due date (YYYY-MM-DD)</source>
         <translation>国家（ISO 3166-1，如 CN）</translation>
     </message>
@@ -2796,6 +2800,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>面，以第 1 面为基准给出</translation>
     </message>
     <message>
+        <source>angle between two readings</source>
+        <translation>两个读数之间的角度</translation>
+    </message>
+    <message>
         <source>{basis} per {per}, certificate {certificate}</source>
         <translation>每个{per}的{basis}，证书 {certificate}</translation>
     </message>
@@ -3025,10 +3033,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Stated as (U95, MPE, u)</source>
         <translation>表示为（U95、MPE、u）</translation>
-    </message>
-    <message>
-        <source>Per (reading, from face 1)</source>
-        <translation>适用于（每个读数、相对第 1 面）</translation>
     </message>
     <message>
         <source>Certificate details</source>
@@ -5521,7 +5525,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>the lab&apos;s time zone &apos;{name}&apos; is not known (an IANA name such as Asia/Shanghai or Europe/Berlin)</source>
-        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it</extracomment>
+        <extracomment>how often an issue is rendered again when another issue took the number or head first how long a PostgreSQL statement waits for a lock before saying who holds it how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)</extracomment>
         <translation>实验室时区“{name}”无法识别（应为 IANA 名称，如 Asia/Shanghai 或 Europe/Berlin）</translation>
     </message>
     <message>

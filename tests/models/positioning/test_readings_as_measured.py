@@ -196,3 +196,38 @@ def test_the_roundings_are_not_widened_as_a_reference_s_errors_are():
             readings_seed(result.targets, result.directions, result.deviations))
     as_reference = figure_intervals(*args)["E"]  # every Type B input of unknown correlation
     assert given.high - given.low < 0.8 * (as_reference.high - as_reference.low)
+
+
+@pytest.mark.slow
+def test_a_reference_stated_for_any_angle_widens_e_by_its_u_once():
+    """A reference whose U is stated for any angle measured with it (applies_to "angle"):
+    the difference of its errors at two targets is one more angle, within u, so E's interval
+    is widened by z·u, not z·2u. Checked where that widening is what holds the truth: the
+    reference an eccentric scale (once a turn, read from the zero at the first target) at the
+    largest amplitude its statement allows (180° apart: √2·a = u), opposing the axis's own
+    once-a-turn error of 3", so the readings show a flatter curve than the axis has (without
+    the widening: 13 of 40 covered)."""
+    u = 0.5
+    per_angle = CertificateMetadata(standards=(ReferenceStandard(
+        "laser", uncertainty=2.0 * u, basis="U95", applies_to="angle"),))
+    per_reading = CertificateMetadata(standards=(ReferenceStandard(
+        "laser", uncertainty=2.0 * u, basis="U95"),))
+    assert [c.per_angle for c in positioning_budget(
+        _analysed(_typed_test(np.random.default_rng(0), *_true_means(12, 1.0, 0.1), 0.3, 0.01)),
+        per_angle).components if c.evaluation == "B"] == [True]
+    rng = np.random.default_rng(12)
+    angle = np.arange(12) * 30.0
+    curve = 3.0 * np.sin(np.radians(angle))
+    up, down = curve + 0.025, curve - 0.025
+    truth = float(np.ptp(np.concatenate([up, down])))
+    scale = -u / math.sqrt(2.0) * np.sin(np.radians(angle))
+    hits, narrower = 0, []
+    for _ in range(30):
+        result = _analysed(_typed_test(rng, angle, up, down, sigma=0.3, step=0.001,
+                                       reference=scale - scale[0]))
+        given = figure_uncertainties(result, positioning_budget(result, per_angle))["E"]
+        hits += int(given.low <= truth <= given.high)
+        wide = figure_uncertainties(result, positioning_budget(result, per_reading))["E"]
+        narrower.append((given.high - given.low) / (wide.high - wide.low))
+    assert hits >= 24, hits  # 92.5 % stated; 24 of 30 is the 1 % binomial floor
+    assert 0.5 < float(np.mean(narrower)) < 0.75, np.mean(narrower)  # 0.65: z·u, not z·2u
