@@ -60,7 +60,7 @@ class Cluster:
 
         name = f"register_{os.getpid()}_{next(self._count)}"
         with psycopg.connect(host=str(self.socket_dir), port=self.port, user="postgres",
-                             dbname="postgres", autocommit=True) as conn:
+                             dbname="postgres", autocommit=True, connect_timeout=30) as conn:
             conn.execute(f'CREATE DATABASE "{name}"')
         return self.url(name)
 

@@ -174,6 +174,9 @@ class RegisterTampered(RegisterError):
 ISSUE_ATTEMPTS = 200
 #: how long a PostgreSQL statement waits for a lock before saying who holds it
 LOCK_TIMEOUT_S = 20
+#: how long a connection to a PostgreSQL register waits for the server's answer (libpq's
+#: connect_timeout; a URL that sets its own keeps it)
+CONNECT_TIMEOUT_S = 30
 #: how long an issuer that lost a race waits for its turn to render again (:class:`_Turn`)
 TURN_TIMEOUT_S = 120
 
@@ -272,9 +275,13 @@ class Register:
             else:
                 import socket
 
-                self.engine = sa.create_engine(self.url, pool_pre_ping=True, connect_args={
+                args: dict[str, Any] = {
                     "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
-                                        f"pid {os.getpid()}"[:63]})
+                                        f"pid {os.getpid()}"[:63]}
+                if "connect_timeout" not in sa.engine.make_url(self.url).query:
+                    # a server that accepts and never answers held the window for ever
+                    args["connect_timeout"] = CONNECT_TIMEOUT_S
+                self.engine = sa.create_engine(self.url, pool_pre_ping=True, connect_args=args)
             try:
                 self._migrate()
                 #: what the chain, the state and the counters found changed since issue

@@ -204,6 +204,32 @@ def test_an_unreachable_register_says_so(tmp_path):
         Register("postgresql://u:secret@/none?host=/nonexistent-socket-dir")
 
 
+def test_a_server_that_never_answers_is_given_up_on(tmp_path, monkeypatch):
+    """A PostgreSQL register whose server accepts the connection and never answers (hung,
+    stopped): opening it fails after CONNECT_TIMEOUT_S with the register named; libpq has no
+    timeout of its own and the window waited for ever."""
+    import socket
+    import threading
+    import time
+
+    import models.register.store as store
+
+    monkeypatch.setattr(store, "CONNECT_TIMEOUT_S", 2)  # libpq's least
+    listener = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+    listener.bind(str(tmp_path / ".s.PGSQL.5432"))
+    listener.listen(8)
+    held = []
+    threading.Thread(target=lambda: held.extend(listener.accept() for _ in range(8)),
+                     daemon=True).start()
+    t0 = time.monotonic()
+    try:
+        with pytest.raises(RegisterError, match="register postgresql"):
+            Register(f"postgresql+psycopg://u@/db?host={tmp_path}&port=5432")
+        assert time.monotonic() - t0 < 30
+    finally:
+        listener.close()
+
+
 def test_numbering_continues_after_hand_issued_numbers_and_never_goes_back(register):
     scheme, day = "AB-{year}-{seq:04d}", dt.date(2026, 11, 24)
     assert register.continue_numbering(scheme, day, 43) == "AB-2026-0043"
