@@ -29,6 +29,10 @@ __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input
 #: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
 #: ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index)
 SQLITE_COMPANIONS = ("-journal", "-wal", "-shm")
+#: the register's own file beside a SQLite register ``X``: ``X.issuing``, the issuers' turn
+#: after a lost race (a file lock, models.register.store); an output written over it
+#: (a rename: a new file) would split the issuers between two locks
+TURN_FILE_SUFFIX = ".issuing"
 
 #: the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte
 #: orders of its magic number); the -shm file has no magic and is found by its name
@@ -90,7 +94,8 @@ def sqlite_path_of_url(url: str) -> Path | None:
 
 
 def register_files(url: str) -> list[Protected]:
-    """The register's database and its journal, WAL and shared-memory files."""
+    """The register's database, its journal, WAL and shared-memory files and its issuers'
+    turn file."""
     database = sqlite_path_of_url(url)
     if database is None:
         return []
@@ -99,7 +104,7 @@ def register_files(url: str) -> list[Protected]:
         Protected(Path(f"{database}{suffix}"),
                   message(QT_TR_NOOP("the certificate register's {kind} file ({path})"),
                           kind=suffix[1:], path=f"{database}{suffix}"))
-        for suffix in SQLITE_COMPANIONS]
+        for suffix in (*SQLITE_COMPANIONS, TURN_FILE_SUFFIX)]
 
 
 def input_files(paths: Iterable[str | os.PathLike[str] | None]) -> list[Protected]:

@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
+from models.project.output_guard import TURN_FILE_SUFFIX
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, GENESIS, link
 
 if TYPE_CHECKING:
@@ -1130,7 +1131,7 @@ class _Turn:
             except ImportError:  # Windows: retries without a turn
                 return
             try:
-                handle = open(register._sqlite_path + ".issuing", "a+b")  # noqa: SIM115
+                handle = open(register._sqlite_path + TURN_FILE_SUFFIX, "a+b")  # noqa: SIM115
             except OSError:
                 return
             # waited for as long as PostgreSQL's turn (lock_timeout below), then the issue

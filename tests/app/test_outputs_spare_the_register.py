@@ -35,11 +35,13 @@ def register(tmp_path, monkeypatch):
 
 
 def _names_of(register, tmp_path):
-    """The register named directly, through a symbolic link, a hard link, and its WAL."""
+    """The register named directly, through a symbolic link, a hard link, its WAL and its
+    issuers' turn file (`--results register.sqlite.issuing` replaced it)."""
     (tmp_path / "sym.pdf").symlink_to(register)
     os.link(register, tmp_path / "hard.pdf")
     return [register, tmp_path / "sym.pdf", tmp_path / "hard.pdf",
-            register.with_name(register.name + "-wal")]
+            register.with_name(register.name + "-wal"),
+            register.with_name(register.name + ".issuing")]
 
 
 def test_analyze_outputs_onto_the_register_are_refused(register, tmp_path, samples_dir, capsys):

@@ -55,7 +55,7 @@ def test_the_register_url_names_its_files():
     assert sqlite_path_of_url("sqlite:///:memory:") is None
     names = [str(p.path) for p in register_files("sqlite:////data/r.sqlite")]
     assert names == ["/data/r.sqlite", "/data/r.sqlite-journal", "/data/r.sqlite-wal",
-                     "/data/r.sqlite-shm"]
+                     "/data/r.sqlite-shm", "/data/r.sqlite.issuing"]
 
 
 @pytest.mark.parametrize("suffix", ["", "-wal", "-shm", "-journal"])
