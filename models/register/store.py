@@ -274,8 +274,6 @@ class Register:
                     sa.event.listen(self.engine, "connect", _sqlite_connect)
                 sa.event.listen(self.engine, "begin", _sqlite_begin)
             else:
-                import socket
-
                 args: dict[str, Any] = {
                     "application_name": f"anglebench {_os_user()}@{socket.gethostname()} "
                                         f"pid {os.getpid()}"[:63]}
