@@ -201,10 +201,11 @@ def test_b_holds_one_target_standing_three_uncertainties_above_an_even_reversal(
     """An even reversal over 36 targets with one target 3 u(B_i) above the rest (a backlash
     jump at one position), repeatability 0.1 × the signal: the readings often show that
     target only 1–2 u clear of the others' largest, which an even reversal gives too, and
-    every model fitted to them (triple-goal, with or without the unshrunk: 13–21 of 40 missed above) takes it for one of many
-    near the top. B's upper end at the targets' own one-sided bounds holds it; at
-    max(|B_i| + 0.5 u) 8 of 40 tests missed above, at max(|B_i| + 1 u) 3 of 40. Why B's
-    interval is as wide as it is where the reversal is even (docs/user-guide/positioning.md)."""
+    every model fitted to them takes it for one of many near the top (the triple-goal
+    world, with or without the unshrunk: 13–21 of 40 tests missed above). B's upper end at
+    the targets' own one-sided bounds holds it; at max(|B_i| + 0.5 u) 8 of 40 tests missed
+    above, at max(|B_i| + 1 u) 3 of 40. Why B's interval is as wide as it is where the
+    reversal is even (docs/user-guide/positioning.md)."""
     case = AxisCase("spike", 36, 0.1, seed=3)
     se = math.sqrt((case.sigma["up"][0] ** 2 + case.sigma["down"][0] ** 2) / case.runs)
     reversal = case.mu["up"] - case.mu["down"]
