@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from models.fringe.model import ChannelFit, model_signal
+from models.fringe.model import ChannelFit, model_signal, phase_error_about_its_mean
 from models.messages import QT_TR_NOOP, joined, message
 
 __all__ = [
@@ -277,8 +277,7 @@ class _Phases:
     @functools.cached_property
     def error_over_measured(self) -> tuple[np.ndarray, np.ndarray]:
         """(measured phase in [0, 2π) ascending, the error φ − θ there, mean removed)."""
-        error = _wrap(self.measured - self.theta)
-        error = error - float(np.mean(error))
+        error = phase_error_about_its_mean(self.measured - self.theta)[0]
         phi = np.mod(self.measured, TWO_PI)
         order = np.argsort(phi)
         return phi[order], error[order]

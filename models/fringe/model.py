@@ -44,6 +44,7 @@ __all__ = [
     "model_slope",
     "model_signal_std",
     "period_arcsec",
+    "phase_error_about_its_mean",
     "phase_of_samples",
 ]
 
@@ -410,8 +411,21 @@ def fit_periods(u, samples_per_period: int, orders: tuple[int, ...] = (1, 3, 5))
 
 def interpolation_error_rad(measured_phase_rad, theta_rad) -> np.ndarray:
     """Eq (5): measured phase − θ, wrapped, mean removed (rad of electrical phase)."""
-    delta = _wrap(np.asarray(measured_phase_rad, dtype=float) - np.asarray(theta_rad, dtype=float))
-    return delta - _circular_mean(delta)
+    return phase_error_about_its_mean(np.asarray(measured_phase_rad, dtype=float)
+                                      - np.asarray(theta_rad, dtype=float))[0]
+
+
+def phase_error_about_its_mean(delta_rad) -> tuple[np.ndarray, float]:
+    """(δ − c wrapped into [−π, π), c): a phase difference about its circular mean c.
+
+    The phase's origin is arbitrary: where the signals' phase at θ = 0 is near ±π (a record
+    whose first sample is near 180°), δ wrapped on its own straddles the ±π cut, half its
+    values near −π and half near +π. Wrapped about its mean it is the small error it is
+    (before, its mean was taken out without wrapping again: the error spanned a whole
+    period, and its table was refused as not compensating)."""
+    delta = _wrap(np.asarray(delta_rad, dtype=float))
+    centre = _circular_mean(delta)
+    return _wrap(delta - centre), centre
 
 
 def interpolation_error_arcsec(u_sin, u_cos, theta_rad, lines_per_rev: int) -> np.ndarray:
@@ -568,6 +582,9 @@ def build_correction_table(sin_fit: ChannelFit, cos_fit: ChannelFit,
     dense = np.linspace(0.0, TWO_PI, 16 * size, endpoint=False)
     measured = np.arctan2(model_signal(dense, sin_fit), model_signal(dense, cos_fit))
     error = _wrap(measured - dense)
+    if float(np.ptp(error)) >= math.pi:  # about ±π (the phase's origin near half a period):
+        centred, centre = phase_error_about_its_mean(error)  # whole about its mean
+        error = centred + centre
     phi = np.mod(dense + error, TWO_PI)
     order = np.argsort(phi)
     phi, error = phi[order], error[order]
