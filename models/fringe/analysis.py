@@ -30,6 +30,7 @@ from models.fringe.plots import figures as fringe_figures
 from models.fringe.report import fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
+from models.fringe.unmodelled_harmonics import unmodelled_harmonics
 from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
@@ -376,6 +377,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         span = slice(0, min(u_sin.size, per_period or 64))
         ps, pc = fit_channel_pso(theta[span], u_sin[span]), fit_channel_pso(theta[span], u_cos[span])
         sin_fit, cos_fit = ps.fit, pc.fit
+        for fit, u in ((sin_fit, u_sin), (cos_fit, u_cos)):  # over the whole record, as the
+            # least squares' (the swarm leaves it unset: the budget's noise was NaN and the
+            # certificate a traceback)
+            fit.residual_rms = float(np.sqrt(np.mean((u - model_signal(theta, fit)) ** 2)))
         pso_seconds = ps.seconds + pc.seconds
         lsq_cost = sum(f.cost for f in fit_channels(theta[span], [u_sin[span], u_cos[span]]))
         warnings.append(message(
@@ -400,6 +405,42 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "leave the samples per period and the θ column out to estimate the phase from "
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
+    unmodelled: tuple[int, ...] = ()
+    if source != "estimated":  # harmonics the signals hold beyond the orders asked for
+        phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
+                       if source == "samples_per_period" else None)
+        found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
+                                     phase_index, per_period)
+        if found:
+            more = tuple(sorted({h.order for h in found}))
+            heard = "; ".join(
+                message(QT_TR_NOOP("order {order}, {channel} {amplitude} mV (u {u} mV)"),
+                        order=h.order, channel=h.channel, amplitude=f"{h.amplitude_v * 1e3:.3g}",
+                        u=f"{h.u_v * 1e3:.2g}") for h in found)
+            if s["method"] == "pso":
+                unmodelled = more
+                warnings.append(message(QT_TR_NOOP(
+                    "The signals hold harmonics of order {orders} that the particle swarm (orders 1, "
+                    "3, 5) leaves out ({heard}): the error between the samples is not "
+                    "determined, and the half range over the whole period is withheld; use "
+                    "least squares"), orders=", ".join(map(str, more)), heard=heard))
+            else:
+                asked = orders
+                orders = tuple(sorted(set(orders) | set(more)))
+                if phase_index is not None:
+                    sin_fit, cos_fit = fit_channels_by_phase(phase_index, per_period,
+                                                             [u_sin, u_cos], orders)
+                else:
+                    sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
+                warnings.append(message(QT_TR_NOOP(
+                    "The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): "
+                    "their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. "
+                    "They are fitted as well, so that the error between the samples (and its "
+                    "half range over the whole period) is the signals' and not a model's that "
+                    "leaves them out. Ask for them (harmonics: all, or a higher highest "
+                    "harmonic) to fit them by choice."),
+                    orders=", ".join(map(str, more)), asked=", ".join(map(str, asked)),
+                    heard=heard))
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
         check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
@@ -436,7 +477,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         samples_per_period=per_period, method=str(s["method"]), sin_periods=sin_periods,
         cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
         ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
-        pso_seconds=pso_seconds, warnings=warnings,
+        pso_seconds=pso_seconds, warnings=warnings, unmodelled_orders=unmodelled,
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
     )
 

@@ -416,6 +416,12 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         QT_TR_NOOP("the error is not traceable: {what}"),
         what=separated(untraceable, "; "))
     if metadata.decision_quantity == "half_range":  # the continuous curve, the whole period
+        if result.unmodelled_orders and tol is not None:  # the curve between the samples is
+            # a model's that leaves out what the signals hold (the particle swarm's orders)
+            withheld = separated([withheld, message(QT_TR_NOOP(
+                "the signals hold harmonics of order {orders} that the fitted model leaves "
+                "out: the error between the samples is not determined"),
+                orders=", ".join(map(str, result.unmodelled_orders)))], "; ")
         theta_model, model_error = model_error_curve(result)
         decision = Decision(model_error, QT_TR_NOOP("as-found interpolation error (fitted "
                                                     "model, whole period)"), withheld=withheld,

@@ -39,6 +39,9 @@ class FringeResult:
     reversals: int = 0
     pso_seconds: float | None = None
     warnings: list[str] = field(default_factory=list)
+    # orders the signals hold that the fit leaves out (the particle swarm's fixed orders):
+    # the error between the samples is then not determined (unmodelled_harmonics)
+    unmodelled_orders: tuple[int, ...] = ()
     # the budget's inputs the signals cannot show, as set (analysis.BUDGET_INPUTS; 0: not stated)
     inputs: dict[str, float] = field(default_factory=dict)
 

@@ -4128,6 +4128,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>信号与{given}不符（R²：sin {r_squared}，cos {r_squared2}）：不填每周期采样点数和 θ 列，即可由信号估计相位</translation>
     </message>
     <message>
+        <source>order {order}, {channel} {amplitude} mV (u {u} mV)</source>
+        <translation>{order} 次，{channel} {amplitude} mV（u {u} mV）</translation>
+    </message>
+    <message>
+        <source>The signals hold harmonics of order {orders} that the particle swarm (orders 1, 3, 5) leaves out ({heard}): the error between the samples is not determined, and the half range over the whole period is withheld; use least squares</source>
+        <translation>信号含有粒子群法（1、3、5 次）未计入的 {orders} 次谐波（{heard}）：采样点之间的误差无法确定，整个周期上的半峰峰值不予给出；请使用最小二乘法</translation>
+    </message>
+    <message>
+        <source>The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. They are fitted as well, so that the error between the samples (and its half range over the whole period) is the signals&apos; and not a model&apos;s that leaves them out. Ask for them (harmonics: all, or a higher highest harmonic) to fit them by choice.</source>
+        <translation>信号含有所设阶次（{asked}）以外的 {orders} 次谐波：残差显示 {heard}，均在 0.1 % 风险下超出分散性。这些谐波也一并拟合，使采样点之间的误差（及其在整个周期上的半峰峰值）属于信号本身，而不是遗漏它们的模型。如需主动拟合，请设置（谐波：全部，或提高最高次谐波）。</translation>
+    </message>
+    <message>
         <source>against this phase the cos channel leads the sin channel by {lead}°, not about 90°: the channels are in the wrong order or one is inverted (check the columns, or the sense of θ)</source>
         <translation>按此相位，cos 通道超前 sin 通道 {lead}°，而不是约 90°：通道顺序错误或其中一路反相（请检查各列或 θ 的方向）</translation>
     </message>
@@ -7091,6 +7103,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各采样点结果（补偿后 = 原始 + 修正值）</translation>
     </message>
     <message>
+        <source>the signals hold harmonics of order {orders} that the fitted model leaves out: the error between the samples is not determined</source>
+        <translation>信号含有拟合模型未计入的 {orders} 次谐波：采样点之间的误差无法确定</translation>
+    </message>
+    <message>
         <source>as-found interpolation error (fitted model, whole period)</source>
         <translation>校准前细分误差（拟合模型，整个周期）</translation>
     </message>
@@ -8976,7 +8992,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the certificate register ({path})</source>
-        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
+        <extracomment>the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal), ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index) the register&apos;s own file beside a SQLite register ``X``: ``X.issuing``, the issuers&apos; turn after a lost race (a file lock, models.register.store); an output written over it (a rename: a new file) would split the issuers between two locks the first bytes of a SQLite database, of a rollback journal and of a WAL file (both byte orders of its magic number); the -shm file has no magic and is found by its name</extracomment>
         <translation>证书登记册（{path}）</translation>
     </message>
     <message>
