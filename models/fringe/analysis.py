@@ -410,7 +410,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
                        if source == "samples_per_period" else None)
         found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
-                                     phase_index, per_period)
+                                     phase_index, per_period, 1e-3 * float(s["adc_lsb_mv"]))
         if found:
             more = tuple(sorted({h.order for h in found}))
             heard = "; ".join(

@@ -14,9 +14,14 @@ phases of equal steps, or :data:`PHASE_BINS` bins of a period along θ), and the
 weighted least squares (weights: the readings a phase). An order not asked for is found
 when the residual sum of squares it takes away, against the variance of one reading,
 passes the F test at :data:`SIGNIFICANCE` divided by the number of orders tested
-(Bonferroni). The variance of a reading is the scatter within the phases when they hold
+(Bonferroni), and its amplitude is above the ADC's step: an ADC's rounding is the same at a
+phase in every period, so the per-phase means keep it however many periods are averaged,
+and it passed for harmonics (a 12-bit ADC with noise below its step: orders named in 10 of
+10 records); but a rounding within ±δ/2 has no harmonic above δ (each amplitude is at most
+the mean of |2 q| over the phases). The variance of a reading is the scatter within the phases when they hold
 repeats (pure error, as the classical lack-of-fit test: Draper & Smith, Applied Regression
-Analysis, 3rd ed., §2.1), else the residual variance of the fit with every order tested.
+Analysis, 3rd ed., §2.1), else (one period, or repeats that came out alike) the residual
+variance of the fit with every order tested.
 """
 
 from __future__ import annotations
@@ -30,7 +35,7 @@ from scipy.stats import f as f_distribution
 from models.fringe.model import ChannelFit, model_signal
 
 __all__ = ["PHASE_BINS", "SIGNIFICANCE", "TESTED_UP_TO", "UnmodelledHarmonic",
-           "unmodelled_harmonics"]
+           "quantisation_step", "unmodelled_harmonics"]
 
 TWO_PI = 2.0 * math.pi
 
@@ -40,6 +45,8 @@ TESTED_UP_TO = 16
 SIGNIFICANCE = 1e-3
 #: bins of a period when the phases are not N equal steps
 PHASE_BINS = 64
+#: the least gaps between distinct readings the step is sought in
+STEP_GAPS = 2000
 #: the least degrees of freedom of the variance a test is made against
 MIN_DOF = 10
 #: an order whose amplitude is below this share of the channel's first harmonic is not
@@ -61,6 +68,34 @@ class UnmodelledHarmonic:
     p_value: float
 
 
+def quantisation_step(values) -> float:
+    """The step the readings come in (an ADC's least significant bit, in the readings' unit):
+    the greatest step of which the differences between distinct readings are whole
+    multiples (Euclid's algorithm with a tolerance, on the least of them), when every reading
+    is a whole number of it from the least; 0 when there is none above a 10⁻⁹ of their span
+    (a record with the digits of its noise)."""
+    distinct = np.unique(np.asarray(values, dtype=float))
+    if distinct.size < 3:
+        return 0.0
+    span = float(distinct[-1] - distinct[0])
+    gaps = np.diff(distinct)
+    gaps = np.partition(gaps, min(STEP_GAPS, gaps.size) - 1)[:STEP_GAPS]
+    step = float(np.min(gaps))
+    for _ in range(60):
+        if not step > 1e-9 * span:
+            return 0.0
+        rest = np.mod(gaps, step)
+        rest = np.minimum(rest, step - rest)
+        beyond = rest[rest > 1e-3 * step]
+        if beyond.size == 0:
+            break
+        step = float(np.min(beyond))
+    else:
+        return 0.0
+    whole = (distinct - distinct[0]) / step
+    return step if float(np.max(np.abs(whole - np.rint(whole)))) < 0.01 else 0.0
+
+
 def _phase_means(theta: np.ndarray, residual: np.ndarray, index: np.ndarray | None,
                  per_period: int):
     """(phase of each non-empty bin, its count, its mean residual, the within-bin sum of
@@ -75,13 +110,16 @@ def _phase_means(theta: np.ndarray, residual: np.ndarray, index: np.ndarray | No
         phase_sum = None
     count = np.bincount(index, minlength=bins).astype(float)
     total = np.bincount(index, residual, bins)
-    squares = np.bincount(index, residual * residual, bins)
     full = count > 0
-    mean = total[full] / count[full]
-    within = float(np.sum(squares[full] - count[full] * mean * mean))
+    means = np.zeros(bins)
+    means[full] = total[full] / count[full]
+    mean = means[full]
+    # about each bin's own mean (not Σr² − n·mean², whose rounding passed for a scatter in a
+    # record without noise, against which every order stood out)
+    within = float(np.sum((residual - means[index]) ** 2))
     at = (np.flatnonzero(full) * (TWO_PI / bins) if phase_sum is None
           else phase_sum[full] / count[full])
-    return at, count[full], mean, max(within, 0.0)
+    return at, count[full], mean, within
 
 
 def _design(phase: np.ndarray, orders) -> np.ndarray:
@@ -99,16 +137,19 @@ def _rss(x: np.ndarray, y: np.ndarray, w: np.ndarray) -> tuple[float, np.ndarray
 
 
 def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, ChannelFit]],
-                         phase_index: np.ndarray | None = None, samples_per_period: int = 0
-                         ) -> list[UnmodelledHarmonic]:
+                         phase_index: np.ndarray | None = None, samples_per_period: int = 0,
+                         stated_step: float = 0.0) -> list[UnmodelledHarmonic]:
     """The orders, not among the fitted ones, that a channel's residuals hold (see the
     module's note); ``channels`` maps a name to (readings, fit) at the phases ``theta_rad``;
-    ``phase_index`` (with ``samples_per_period``) when the phases are N equal steps. Empty
+    ``phase_index`` (with ``samples_per_period``) when the phases are N equal steps;
+    ``stated_step``: the ADC's step as stated (the larger of it and the step the readings
+    come in bounds what its rounding can show). Empty
     when the phases cannot resolve an order beyond the fitted ones with a variance of at
     least :data:`MIN_DOF` degrees of freedom."""
     theta = np.asarray(theta_rad, dtype=float)
     found: list[UnmodelledHarmonic] = []
     for name, (readings, fit) in channels.items():
+        step = max(stated_step, quantisation_step(readings))
         residual = np.asarray(readings, dtype=float) - model_signal(theta, fit)
         at, count, mean, within = _phase_means(theta, residual, phase_index,
                                                samples_per_period)
@@ -116,7 +157,8 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
         # orders the phases resolve without aliasing, leaving a variance to test against
         top = min(TESTED_UP_TO, (phases - 1) // 2)
         dof_within = theta.size - phases
-        if dof_within < MIN_DOF:
+        pure = dof_within >= MIN_DOF and within > 0.0  # repeats that scatter
+        if not pure:
             top = min(top, (phases - 1 - MIN_DOF) // 2)
         tested = [k for k in range(1, top + 1) if k not in fit.orders]
         if not tested:
@@ -124,7 +166,7 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
         every = sorted(set(range(1, top + 1)) | set(o for o in fit.orders if o <= top))
         x_full = _design(at, every)
         rss_full, coef = _rss(x_full, mean, count)
-        if dof_within >= MIN_DOF:
+        if pure:
             variance, dof = within / dof_within, dof_within
         else:
             dof = phases - x_full.shape[1]
@@ -139,7 +181,7 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
             p = float(f_distribution.sf(statistic, 2, dof))
             j = 1 + 2 * every.index(k)
             amplitude = float(math.hypot(coef[j], coef[j + 1]))
-            if p < level and amplitude > NEGLIGIBLE_SHARE * float(fit.amplitude[1]):
+            if p < level and amplitude > max(step, NEGLIGIBLE_SHARE * float(fit.amplitude[1])):
                 # the amplitude's standard uncertainty: a reading's over the readings,
                 # half of them on each of the two terms
                 u = math.sqrt(variance * 2.0 / float(np.sum(count)))
