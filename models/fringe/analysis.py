@@ -334,6 +334,42 @@ def count_reversals(theta_rad: np.ndarray, hysteresis_rad: float = 0.5) -> int:
     return turns
 
 
+def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, per_period,
+                               stated_step, method, warnings):
+    """(orders, fits, orders left out): the fits again with the orders the signals hold
+    beyond those asked for (models.fringe.unmodelled_harmonics), named in ``warnings``; the
+    particle swarm cannot fit them, so they are returned as left out instead."""
+    sin_fit, cos_fit = fits
+    found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
+                                 phase_index, per_period, stated_step)
+    if not found:
+        return orders, fits, ()
+    more = tuple(sorted({h.order for h in found}))
+    heard = "; ".join(
+        message(QT_TR_NOOP("order {order}, {channel} {amplitude} mV (u {u} mV)"),
+                order=h.order, channel=h.channel, amplitude=f"{h.amplitude_v * 1e3:.3g}",
+                u=f"{h.u_v * 1e3:.2g}") for h in found)
+    if method == "pso":
+        warnings.append(message(QT_TR_NOOP(
+            "The signals hold harmonics of order {orders} that the particle swarm (orders 1, "
+            "3, 5) leaves out ({heard}): the error between the samples is not "
+            "determined, and the half range over the whole period is withheld; use "
+            "least squares"), orders=", ".join(map(str, more)), heard=heard))
+        return orders, fits, more
+    wider = tuple(sorted(set(orders) | set(more)))
+    refit = (fit_channels_by_phase(phase_index, per_period, [u_sin, u_cos], wider)
+             if phase_index is not None else fit_channels(theta, [u_sin, u_cos], wider))
+    warnings.append(message(QT_TR_NOOP(
+        "The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): "
+        "their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. "
+        "They are fitted as well, so that the error between the samples (and its "
+        "half range over the whole period) is the signals' and not a model's that "
+        "leaves them out. Ask for them (harmonics: all, or a higher highest "
+        "harmonic) to fit them by choice."),
+        orders=", ".join(map(str, more)), asked=", ".join(map(str, orders)), heard=heard))
+    return wider, (refit[0], refit[1]), ()
+
+
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult:
     s = _settings(settings)
     lines, per_period = int(s["lines_per_rev"]), int(s["samples_per_period"])
@@ -369,6 +405,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     elif theta.size > 1:
         check_record_covers_a_period(theta, float(np.median(np.abs(np.diff(theta)))))
     pso_seconds, design = None, None
+    phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
+                   if source == "samples_per_period" else None)
     if s["method"] == "pso":
         if orders != (1, 3, 5):
             raise SettingsError(message(
@@ -390,9 +428,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     elif source == "estimated":
         theta, (sin_fit, cos_fit), design = refine_phase(theta, u_sin, u_cos, orders,
                                                           phasor=phasor)
-    elif source == "samples_per_period":  # N equal steps: the fit from N per-phase sums
-        index = np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
-        sin_fit, cos_fit = fit_channels_by_phase(index, per_period, [u_sin, u_cos], orders)
+    elif phase_index is not None:  # N equal steps: the fit from N per-phase sums
+        sin_fit, cos_fit = fit_channels_by_phase(phase_index, per_period, [u_sin, u_cos], orders)
     else:
         sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
     if source != "estimated" and s["method"] == "lsq":
@@ -407,40 +444,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
     unmodelled: tuple[int, ...] = ()
     if source != "estimated":  # harmonics the signals hold beyond the orders asked for
-        phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
-                       if source == "samples_per_period" else None)
-        found = unmodelled_harmonics(theta, {"sin": (u_sin, sin_fit), "cos": (u_cos, cos_fit)},
-                                     phase_index, per_period, 1e-3 * float(s["adc_lsb_mv"]))
-        if found:
-            more = tuple(sorted({h.order for h in found}))
-            heard = "; ".join(
-                message(QT_TR_NOOP("order {order}, {channel} {amplitude} mV (u {u} mV)"),
-                        order=h.order, channel=h.channel, amplitude=f"{h.amplitude_v * 1e3:.3g}",
-                        u=f"{h.u_v * 1e3:.2g}") for h in found)
-            if s["method"] == "pso":
-                unmodelled = more
-                warnings.append(message(QT_TR_NOOP(
-                    "The signals hold harmonics of order {orders} that the particle swarm (orders 1, "
-                    "3, 5) leaves out ({heard}): the error between the samples is not "
-                    "determined, and the half range over the whole period is withheld; use "
-                    "least squares"), orders=", ".join(map(str, more)), heard=heard))
-            else:
-                asked = orders
-                orders = tuple(sorted(set(orders) | set(more)))
-                if phase_index is not None:
-                    sin_fit, cos_fit = fit_channels_by_phase(phase_index, per_period,
-                                                             [u_sin, u_cos], orders)
-                else:
-                    sin_fit, cos_fit = fit_channels(theta, [u_sin, u_cos], orders)
-                warnings.append(message(QT_TR_NOOP(
-                    "The signals hold harmonics of order {orders} beyond the orders asked for ({asked}): "
-                    "their residuals show {heard}, each beyond the scatter at a risk of 0.1 %. "
-                    "They are fitted as well, so that the error between the samples (and its "
-                    "half range over the whole period) is the signals' and not a model's that "
-                    "leaves them out. Ask for them (harmonics: all, or a higher highest "
-                    "harmonic) to fit them by choice."),
-                    orders=", ".join(map(str, more)), asked=", ".join(map(str, asked)),
-                    heard=heard))
+        orders, (sin_fit, cos_fit), unmodelled = _with_unmodelled_harmonics(
+            theta, u_sin, u_cos, (sin_fit, cos_fit), orders, phase_index, per_period,
+            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings)
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
         check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
