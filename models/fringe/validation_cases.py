@@ -81,6 +81,49 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
                           max(abs(fitted.sin_fit.offset - 0.03), abs(fitted.cos_fit.offset + 0.02)),
                           unit=" V"))
     cases.append(agreement_case(w, fringe_budget_trials, trials, 3))
+    cases += _unmodelled_and_half_period_cases(w, settings)
+    return cases
+
+
+def _true_half_range(head: FringeHead) -> float:
+    """Half the peak-to-peak of the noise-free signals' own error over a period (″)."""
+    grid = np.arange(8192) * (2 * math.pi / 8192)
+    u_sin, u_cos = FringeHead(head.offsets_v, head.amplitudes_v, head.quadrature_deg,
+                              head.phase_rad, head.sin_harmonics, head.cos_harmonics
+                              ).channels(grid)
+    error = np.angle(np.exp(1j * (np.arctan2(u_sin, u_cos) - grid)))
+    return 0.5 * float(np.ptp(error)) * 1_296_000 / 16384 / (2 * math.pi)
+
+
+def _unmodelled_and_half_period_cases(w, settings) -> list[ValidationCase]:
+    """A 2nd harmonic that the odd orders asked for leave out (found in the residuals and
+    fitted: the half range over the whole period is the signals'), and a record whose first
+    sample lies at half a period (its error straddles ±π)."""
+    from models.fringe.report import model_error_curve
+
+    per = 64
+    theta = equal_steps(8 * per, per)
+    head = FringeHead(offsets_v=(0.01, -0.02), amplitudes_v=(1.0, 0.98), quadrature_deg=1.0,
+                      sin_harmonics={2: (0.006, 0.3), 3: (0.004, 0.4)},
+                      cos_harmonics={2: (0.0035, 2.0), 3: (0.003, 1.2)}, noise_v=0.001)
+    u_sin, u_cos = head.channels(theta, np.random.default_rng(3))
+    values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
+    result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
+    half = 0.5 * float(np.ptp(model_error_curve(result)[1]))
+    truth = _true_half_range(head)
+    cases = [close_case(w, QT_TR_NOOP("a 2nd harmonic the odd orders leave out, found and "
+                                      "fitted: half range over the whole period"),
+                        EXACT_SIMULATION, truth, half, round(0.01 * truth, 3))]
+    start = math.pi
+    u_sin, u_cos = head.channels(theta + start, np.random.default_rng(4))
+    values = {"u_sin": u_sin, "u_cos": u_cos, "theta_deg": np.full(theta.size, np.nan)}
+    result = FRINGE.analyze(ParsedReadings(values, np.arange(theta.size)), settings)
+    error = np.angle(np.exp(1j * (np.arctan2(u_sin, u_cos) - theta - start)))
+    error = np.angle(np.exp(1j * (error - np.angle(np.mean(np.exp(1j * error))))))
+    truth_arcsec = error * 1_296_000 / 16384 / (2 * math.pi)
+    cases.append(at_most_case(w, QT_TR_NOOP("a record starting at half a period: |raw error − "
+                                            "true error|"), EXACT_SIMULATION, 1e-6,
+                              float(np.max(np.abs(result.raw_error - truth_arcsec)))))
     return cases
 
 

@@ -665,6 +665,14 @@
         <translation>带真实相位的采样信号：|直流偏置 − 真值|（V）</translation>
     </message>
     <message>
+        <source>a 2nd harmonic the odd orders leave out, found and fitted: half range over the whole period</source>
+        <translation>只拟合奇次时遗漏的 2 次谐波，经发现并拟合：整个周期上的半峰峰值</translation>
+    </message>
+    <message>
+        <source>a record starting at half a period: |raw error − true error|</source>
+        <translation>首个采样位于半个周期处的记录：|原始误差 − 真实误差|</translation>
+    </message>
+    <message>
         <source>asymmetric interval −0.1&quot;/+0.3&quot;: {x}&quot; against T = 1&quot; (acceptance guarded by +0.3&quot;, rejection by −0.1&quot;)</source>
         <translation>不对称区间 −0.1″/+0.3″：{x}″ 对照 T = 1″（合格判定以 +0.3″ 保护，不合格判定以 −0.1″ 保护）</translation>
     </message>
