@@ -442,11 +442,6 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "leave the samples per period and the θ column out to estimate the phase from "
                            "the signals"),
                 given=given, r_squared=f"{sin_fit.r_squared:.4f}", r_squared2=f"{cos_fit.r_squared:.4f}"))
-    unmodelled: tuple[int, ...] = ()
-    if source != "estimated":  # harmonics the signals hold beyond the orders asked for
-        orders, (sin_fit, cos_fit), unmodelled = _with_unmodelled_harmonics(
-            theta, u_sin, u_cos, (sin_fit, cos_fit), orders, phase_index, per_period,
-            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings)
     if source != "estimated":  # (after the phase is known to fit: a wrong N is said first)
         check_orders_not_aliased(theta, orders, per_period if source == "samples_per_period" else 0)
         lead = math.degrees((cos_fit.phase[1] - sin_fit.phase[1]) % TWO_PI)
@@ -456,6 +451,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                            "about 90°: the channels are in the wrong order or one is inverted (check the "
                            "columns, or the sense of θ)"),
                 lead=f"{lead:.0f}"))
+    unmodelled: tuple[int, ...] = ()
+    if source != "estimated":  # harmonics the signals hold beyond the orders asked for (after
+        # the orders asked for are known not to alias: an order found is below half the
+        # phases, so it aliases with none of them)
+        orders, (sin_fit, cos_fit), unmodelled = _with_unmodelled_harmonics(
+            theta, u_sin, u_cos, (sin_fit, cos_fit), orders, phase_index, per_period,
+            1e-3 * float(s["adc_lsb_mv"]), str(s["method"]), warnings)
     checkpoint()
     if s["period_nm"]:
         unit, period = "nm", float(s["period_nm"])

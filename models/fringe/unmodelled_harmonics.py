@@ -45,8 +45,9 @@ TESTED_UP_TO = 16
 SIGNIFICANCE = 1e-3
 #: bins of a period when the phases are not N equal steps
 PHASE_BINS = 64
-#: the least gaps between distinct readings the step is sought in
+#: the least gaps between distinct readings the step is sought in, among the first readings
 STEP_GAPS = 2000
+STEP_SAMPLES = 50_000
 #: the least degrees of freedom of the variance a test is made against
 MIN_DOF = 10
 #: an order whose amplitude is below this share of the channel's first harmonic is not
@@ -149,10 +150,17 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
     theta = np.asarray(theta_rad, dtype=float)
     found: list[UnmodelledHarmonic] = []
     for name, (readings, fit) in channels.items():
-        step = max(stated_step, quantisation_step(readings))
-        residual = np.asarray(readings, dtype=float) - model_signal(theta, fit)
-        at, count, mean, within = _phase_means(theta, residual, phase_index,
-                                               samples_per_period)
+        values = np.asarray(readings, dtype=float)
+        step = max(stated_step, quantisation_step(values[:STEP_SAMPLES]))
+        if phase_index is not None:  # the model is one value a phase: the readings' means
+            # and scatter per phase, the model taken at the N phases only (a million samples:
+            # no million-long model)
+            at, count, mean, within = _phase_means(theta, values, phase_index,
+                                                   samples_per_period)
+            mean = mean - model_signal(at, fit)
+        else:
+            at, count, mean, within = _phase_means(theta, values - model_signal(theta, fit),
+                                                   None, 0)
         phases = at.size
         # orders the phases resolve without aliasing, leaving a variance to test against
         top = min(TESTED_UP_TO, (phases - 1) // 2)
@@ -174,12 +182,15 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
         if not variance > 0.0:
             continue
         level = SIGNIFICANCE / len(tested)
+        # the residual sum of squares that leaving order k out adds: β_kᵀ (V_kk)⁻¹ β_k, V the
+        # inverse of the weighted normal matrix (the same as refitting without the order)
+        inverse = np.linalg.pinv((x_full * count[:, None]).T @ x_full)
         for k in tested:
-            without = [o for o in every if o != k]
-            rss_k, _ = _rss(_design(at, without), mean, count)
-            statistic = max(rss_k - rss_full, 0.0) / 2.0 / variance
-            p = float(f_distribution.sf(statistic, 2, dof))
             j = 1 + 2 * every.index(k)
+            beta = coef[j:j + 2]
+            added = float(beta @ np.linalg.solve(inverse[j:j + 2, j:j + 2], beta))
+            statistic = max(added, 0.0) / 2.0 / variance
+            p = float(f_distribution.sf(statistic, 2, dof))
             amplitude = float(math.hypot(coef[j], coef[j + 1]))
             if p < level and amplitude > max(step, NEGLIGIBLE_SHARE * float(fit.amplitude[1])):
                 # the amplitude's standard uncertainty: a reading's over the readings,
