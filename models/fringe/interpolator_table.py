@@ -251,11 +251,7 @@ def _lookup(values: np.ndarray, phase: np.ndarray, interpolation: str) -> np.nda
 
 
 def _residual(error_rad: np.ndarray) -> Residual:
-    e = _wrap(error_rad)
-    if float(np.ptp(e)) < math.pi:  # it cannot straddle the cut: the plain mean
-        e = e - float(np.mean(e))
-    else:
-        e = _wrap(e - float(np.angle(np.mean(np.exp(1j * e)))))
+    e = phase_error_about_its_mean(error_rad)[0]
     return Residual(float(np.max(np.abs(e))) / TWO_PI, float(np.sqrt(np.mean(e * e))) / TWO_PI,
                     float(np.ptp(e)) / TWO_PI)
 

@@ -4,6 +4,7 @@ shared machinery (models.validation.run gathers every workbench's)."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -88,9 +89,7 @@ def fringe_cases(trials: int) -> list[ValidationCase]:
 def _true_half_range(head: FringeHead) -> float:
     """Half the peak-to-peak of the noise-free signals' own error over a period (″)."""
     grid = np.arange(8192) * (2 * math.pi / 8192)
-    u_sin, u_cos = FringeHead(head.offsets_v, head.amplitudes_v, head.quadrature_deg,
-                              head.phase_rad, head.sin_harmonics, head.cos_harmonics
-                              ).channels(grid)
+    u_sin, u_cos = dataclasses.replace(head, noise_v=0.0).channels(grid)
     error = np.angle(np.exp(1j * (np.arctan2(u_sin, u_cos) - grid)))
     return 0.5 * float(np.ptp(error)) * 1_296_000 / 16384 / (2 * math.pi)
 

@@ -230,25 +230,23 @@ def _per_target(result: PositioningResult, contribution: np.ndarray) -> np.ndarr
     return np.sqrt(np.mean(squared.reshape(-1, result.positions.size), axis=0))
 
 
-def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget) -> np.ndarray:
-    """The Type B inputs' combined standard uncertainty at each target."""
-    rows = [_per_target(result, u) ** 2
-            for c, u in zip(budget.components, budget.contributions(), strict=True)
-            if c.evaluation == "B"]
-    return np.sqrt(np.sum(rows, axis=0)) if rows else np.zeros(result.positions.size)
-
-
-def _pair_u(result: PositioningResult, budget: UncertaintyBudget) -> float:
-    """The largest standard deviation the Type B inputs can give the difference of two
-    targets' errors, whatever their correlation from target to target: 2 max u of an input
-    stated for each reading (its errors at two targets may be opposite), max u of one stated
-    for any angle between two readings (that difference is one more angle it measured), the
-    inputs in quadrature (independent of one another). The roundings (:data:`ROUNDINGS`) are
-    independent from target to target and not counted: the model's draws hold them."""
-    total = sum(((1.0 if c.per_angle else 2.0) * float(np.max(_per_target(result, u)))) ** 2
-                for c, u in zip(budget.components, budget.contributions(), strict=True)
-                if c.evaluation == "B" and c.name not in ROUNDINGS)
-    return math.sqrt(total)
+def _type_b_per_target(result: PositioningResult, budget: UncertaintyBudget
+                       ) -> tuple[np.ndarray, float]:
+    """The Type B inputs' combined standard uncertainty at each target, and ``pair_u``: the
+    largest standard deviation they can give the difference of two targets' errors, whatever
+    their correlation from target to target: 2 max u of an input stated for each reading
+    (its errors at two targets may be opposite), max u of one stated for any angle between
+    two readings (that difference is one more angle it measured), the inputs in quadrature
+    (independent of one another). The roundings (:data:`ROUNDINGS`) are independent from
+    target to target and not in ``pair_u``: the model's draws hold them."""
+    inputs = [(c, _per_target(result, u))
+              for c, u in zip(budget.components, budget.contributions(), strict=True)
+              if c.evaluation == "B"]
+    combined = (np.sqrt(np.sum([u**2 for _, u in inputs], axis=0)) if inputs
+                else np.zeros(result.positions.size))
+    pair = math.sqrt(sum(((1.0 if c.per_angle else 2.0) * float(np.max(u))) ** 2
+                         for c, u in inputs if c.name not in ROUNDINGS))
+    return combined, pair
 
 
 #: why the figures have no coverage interval
@@ -294,8 +292,7 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
         return {}
     if budget is None:
         budget = positioning_budget(result, CertificateMetadata())
-    u_b = _type_b_per_target(result, budget)
-    pair = _pair_u(result, budget)
+    u_b, pair = _type_b_per_target(result, budget)
     key = (budget.probability, u_b.tobytes(), pair)
     cache = result.__dict__.setdefault("_figure_intervals", {})
     if key not in cache:
