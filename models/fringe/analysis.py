@@ -31,7 +31,7 @@ from models.fringe.report import fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
-from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
+from models.messages import QT_TR_NOOP, joined, lines, message, reason_of, separated
 from models.parameters import Parameter, SettingsError
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.lab_scope import cmc_parameter
@@ -345,10 +345,10 @@ def _with_unmodelled_harmonics(theta, u_sin, u_cos, fits, orders, phase_index, p
     if not found:
         return orders, fits, ()
     more = tuple(sorted({h.order for h in found}))
-    heard = "; ".join(
+    heard = separated([  # each part translated when shown (a str join froze it in English)
         message(QT_TR_NOOP("order {order}, {channel} {amplitude} mV (u {u} mV)"),
                 order=h.order, channel=h.channel, amplitude=f"{h.amplitude_v * 1e3:.3g}",
-                u=f"{h.u_v * 1e3:.2g}") for h in found)
+                u=f"{h.u_v * 1e3:.2g}") for h in found])
     if method == "pso":
         warnings.append(message(QT_TR_NOOP(
             "The signals hold harmonics of order {orders} that the particle swarm (orders 1, "

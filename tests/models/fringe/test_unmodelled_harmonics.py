@@ -53,6 +53,10 @@ def test_a_harmonic_the_model_leaves_out_is_found_named_and_fitted(extra, settin
     truth = _true_half_range_arcsec(head)
     # the half range of the model's curve is the signals' (the noise's share: ~0.1 %)
     assert 0.5 * np.ptp(curve) == pytest.approx(truth, rel=0.01)
+    from models.messages import in_language, translator
+
+    chinese = in_language(said[0], translator("zh_CN"))  # every part in Chinese, figures kept
+    assert f"{order} 次谐波" in chinese and "order" not in chinese and " mV" in chinese
     asked = FRINGE.analyze(_parsed(u_sin, u_cos), {"samples_per_period": 64, "harmonics": "all",
                                                    "max_order": max(order, 5)})
     assert not [w for w in asked.warnings if "harmonics of order" in w]  # asked for: not said
