@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import base64
 import json
+import math
 import os
 import re
 import shutil
@@ -383,6 +384,9 @@ _MASKS = [
     (re.compile(r"<dcc:(beginPerformanceDate|endPerformanceDate|issueDate)>[^<]*<"),
      r"<dcc:\1>DATE<"),
     (re.compile(r"SPECIMEN-[0-9A-F]{8}"), "SPECIMEN-NUMBER"),
+    # the fringe correction table's checksum is of its float64 values, whose last bits differ
+    # between processors (tests/models/fringe: the checksum itself, as-left against it)
+    (re.compile(r"(table|修正表|entries —) sha256 [0-9a-f]+"), r"\1 sha256 TABLE"),
 ]
 _NUMBER = re.compile(r"(?<![\w.\-])-?\d+(?:\.\d+)?(?:[eE][+-]?\d+)?(?![\w.])")
 
@@ -400,6 +404,34 @@ def _six_digits(match: re.Match) -> str:
     return "0" if abs(x) < 1e-9 else f"{x:.6g}"  # float noise at a reference point: zero
 
 
+def same_but_for_the_sixth_digit(got: str, expected: str) -> bool:
+    """The two documents alike, words and figures, a figure's sixth significant digit
+    allowed one step either way: a fitted value's last digits differ between processors
+    (the theodolite sample's corrected error by 4e-8" between two machines' sine and BLAS
+    kernels), and one that lies at a rounding boundary prints 0.685255 on one, 0.685256 on
+    the other. A figure printed to fewer digits (a U, a decided value) must be the same."""
+    if got == expected:
+        return True
+    words_got, words_expected = _NUMBER.split(got), _NUMBER.split(expected)
+    if words_got != words_expected:
+        return False
+    for a, b in zip(_NUMBER.findall(got), _NUMBER.findall(expected), strict=True):
+        x, y = float(a), float(b)
+        top = max(abs(x), abs(y))
+        if x != y and abs(x - y) > 1.001 * 10.0 ** (math.floor(math.log10(top)) - 5):
+            return False
+    return True
+
+
+def test_a_golden_file_lets_only_the_sixth_digit_of_a_figure_step():
+    assert same_but_for_the_sixth_digit("<v>0.685255 1.02536</v>", "<v>0.685256 1.02536</v>")
+    assert same_but_for_the_sixth_digit("<v>-0.0581486</v>", "<v>-0.0581487</v>")
+    assert not same_but_for_the_sixth_digit("<v>0.685254</v>", "<v>0.685256</v>")
+    assert not same_but_for_the_sixth_digit("U = 0.94", "U = 0.95")
+    assert not same_but_for_the_sixth_digit("<v>0.685255</v>", "<w>0.685255</w>")
+    assert not same_but_for_the_sixth_digit("<v>1 2</v>", "<v>1</v>")
+
+
 @pytest.mark.parametrize("case", list(CASES))
 def test_each_samples_dcc_matches_its_reviewed_golden_file(issued, case):
     """A change to a sample's DCC must update its golden file deliberately:
@@ -412,7 +444,7 @@ def test_each_samples_dcc_matches_its_reviewed_golden_file(issued, case):
         golden.write_text(got, encoding="utf-8")
     assert golden.is_file(), f"no golden file {golden.name}: regenerate and review it"
     expected = golden.read_text(encoding="utf-8")
-    if got != expected:
+    if not same_but_for_the_sixth_digit(got, expected):
         import difflib
 
         diff = "".join(list(difflib.unified_diff(expected.splitlines(True), got.splitlines(True),
