@@ -79,8 +79,9 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
         "interval_low": _number(conformity.interval_low),
         "interval_high": _number(conformity.interval_high),
         # the Monte Carlo the interval came from (seeded from the readings: rerun, the same)
-        "monte_carlo_trials": getattr(conformity.monte_carlo, "trials", None),
-        "monte_carlo_seed": getattr(conformity.monte_carlo, "seed", None),
+        "monte_carlo_trials": getattr(conformity.monte_carlo, "trials", None) or None,
+        "monte_carlo_seed": (getattr(conformity.monte_carlo, "seed", None)
+                             if getattr(conformity.monte_carlo, "trials", None) else None),
         "coverage_probability": _number(conformity.probability),
         "unit": conformity.unit,
         "tolerance": _number(tolerance),

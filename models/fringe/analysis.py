@@ -96,8 +96,9 @@ PARAMETERS = (
               zero="not stated", decimals=4, step=0.01,
               help="Standard uncertainty of each sample's phase, in degrees of a signal period: "
                    "with N equal steps the sampling's uniformity (the timing of the samples), "
-                   "with a θ column its reference's stated U / k, with an estimated phase the "
-                   "method's validated limit. 0: not stated"),
+                   "with a θ column its reference's stated U / k; with an estimated phase it enters "
+                   "U, but the error is not traceable however it is stated (what leaves the "
+                   "Lissajous figure round is not observable). 0: not stated"),
     Parameter("adc_lsb_mv", "ADC LSB", "float", 0.0, "mV", 0.0, 10_000.0, zero="not stated",
               decimals=4, step=0.01,
               help="The ADC's step (quantisation LSB/√12 per channel). 0: not stated"),

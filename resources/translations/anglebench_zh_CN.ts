@@ -6521,6 +6521,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>仅奇次谐波（方法论文高旭等 2013 的模型），或直到最高次的所有谐波</translation>
     </message>
     <message>
+        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k; with an estimated phase it enters U, but the error is not traceable however it is stated (what leaves the Lissajous figure round is not observable). 0: not stated</source>
+        <translation>每个采样相位的标准不确定度，以一个信号周期的度数表示：N 等步采样时为采样的均匀性（采样的时刻），有 θ 列时为其参考给出的 U / k；由信号估计相位时计入 U，但无论如何填写误差都不可溯源（使李萨如图形保持为圆的部分不可观测）。0：未给出</translation>
+    </message>
+    <message>
         <source>Table 1 of the method&apos;s paper (Tian et al. 2015): the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)</source>
         <translation>方法论文（田留德等 2015）表 1：所判定的准确度及其允许的倾斜（按下面所选的安置方式随结果给出）</translation>
     </message>
@@ -7014,6 +7018,11 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>相位估计经确认的限值</translation>
     </message>
     <message>
+        <source>the phase was estimated from the signals, with no phase reference: the part of a harmonic distortion that leaves the Lissajous figure round is not observable, so the error&apos;s U is incomplete (give the θ column of a reference or N samples per period)</source>
+        <extracomment>why an estimated phase gives no traceable error, no interval of the decided quantity and no statement of conformity</extracomment>
+        <translation>相位由信号本身估计，无相位参考：谐波失真中使李萨如图形保持为圆的部分不可观测，因此误差的 U 不完整（请给出参考的 θ 列或每周期 N 个采样）</translation>
+    </message>
+    <message>
         <source>Phase reference</source>
         <translation>相位参考</translation>
     </message>
@@ -7099,6 +7108,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>整个记录为同一个增益比</translation>
     </message>
     <message>
+        <source>ADC quantisation, {channel} channel</source>
+        <translation>ADC 量化，{channel} 通道</translation>
+    </message>
+    <message>
+        <source>ADC linearity, {channel} channel</source>
+        <translation>ADC 线性度，{channel} 通道</translation>
+    </message>
+    <message>
+        <source>one pattern for the whole record, within the figure stated</source>
+        <translation>整个记录为同一图样，在所述数值以内</translation>
+    </message>
+    <message>
         <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
         <translation>列出全部 {n} 个采样点；它们也在 CSV/XLSX 结果导出文件中。</translation>
     </message>
@@ -7145,10 +7166,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Standard uncertainty of each channel&apos;s ADC offset, from its calibration. 0: not stated</source>
         <translation>各通道 ADC 偏置的标准不确定度，取自其校准。0：未给出</translation>
-    </message>
-    <message>
-        <source>Standard uncertainty of each sample&apos;s phase, in degrees of a signal period: with N equal steps the sampling&apos;s uniformity (the timing of the samples), with a θ column its reference&apos;s stated U / k, with an estimated phase the method&apos;s validated limit. 0: not stated</source>
-        <translation>各采样点相位的标准不确定度，以信号周期的度数表示：N 等分步长时为采样的均匀性（各采样点的时刻），有 θ 列时为其参考给出的 U / k，相位由估计得出时为该方法经确认的限值。0：未给出</translation>
     </message>
     <message>
         <source>Standard uncertainty of the ratio of the two channels&apos; ADC gains (a gain common to both does not move the phase). 0: not stated</source>

@@ -85,7 +85,7 @@ DECLARED = (
     QT_TR_NOOP("Standard uncertainty at a target from the reference's alignment to the axis (cosine error, eccentricity), in the deviation unit. 0: not stated"),
     QT_TR_NOOP("Standard uncertainty at a target from the temperatures (the axis' expansion and its compensation, the reference's environment), in the deviation unit. 0: not stated"),
     QT_TR_NOOP("Standard uncertainty of each channel's ADC offset, from its calibration. 0: not stated"),
-    QT_TR_NOOP("Standard uncertainty of each sample's phase, in degrees of a signal period: with N equal steps the sampling's uniformity (the timing of the samples), with a θ column its reference's stated U / k, with an estimated phase the method's validated limit. 0: not stated"),
+    QT_TR_NOOP("Standard uncertainty of each sample's phase, in degrees of a signal period: with N equal steps the sampling's uniformity (the timing of the samples), with a θ column its reference's stated U / k; with an estimated phase it enters U, but the error is not traceable however it is stated (what leaves the Lissajous figure round is not observable). 0: not stated"),
     QT_TR_NOOP('Standard uncertainty of the measured roll; 0: the roll was not measured (the bound above enters the budget, nothing is corrected)'),
     QT_TR_NOOP("Standard uncertainty of the ratio of the two channels' ADC gains (a gain common to both does not move the phase). 0: not stated"),
     QT_TR_NOOP("Table 1 of the method's paper (Tian et al. 2015): the accuracy judged, and the tilt it allows (shown with the results, for the set-up chosen below)"),
