@@ -33,7 +33,7 @@ def _record(path, head: Head, theta: np.ndarray, rng, lsb_v: float = 0.0,
     path.write_text(header + "\n" + "\n".join(rows) + "\n")
 
 
-def _decided(capsys, tmp_path, record, *options) -> dict:
+def _decided(capsys, tmp_path, record, *options, whole: bool = False) -> dict:
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps({"tolerance": 2.0, "tolerance_unit": "arcsec",
                                 "decision_rule": "guarded", "decision_quantity": "half_range",
@@ -44,7 +44,8 @@ def _decided(capsys, tmp_path, record, *options) -> dict:
                  "--lines-per-rev", str(LINES), "--language", "en", *options])
     out = capsys.readouterr()
     assert code == 0, out.err
-    return json.loads(out.out)["decided_quantity"]
+    data = json.loads(out.out)
+    return data if whole else data["decided_quantity"]
 
 
 def _true_half_range(head: Head) -> float:
@@ -69,9 +70,13 @@ def test_an_estimated_phase_states_no_interval_and_no_conformity_whatever_is_sta
     theta = 0.7 + np.concatenate([[0.0], np.cumsum(steps[:-1])])  # the speed wanders ±15 %
     record = tmp_path / "estimated.csv"
     _record(record, head, theta, rng)
-    decided = _decided(capsys, tmp_path, record, "--phase-reference-u", "0.2",
-                       "--adc-lsb-mv", "0.01", "--adc-offset-u-mv", "0.1",
-                       "--adc-gain-u-pct", "0.05", "--adc-linearity-mv", "0.02")
+    data = _decided(capsys, tmp_path, record, "--phase-reference-u", "0.2",
+                    "--adc-lsb-mv", "0.01", "--adc-offset-u-mv", "0.1",
+                    "--adc-gain-u-pct", "0.05", "--adc-linearity-mv", "0.02", whole=True)
+    # no U per sample either (it covered 15-19 % of the samples in the audit's records)
+    assert data["expanded_uncertainty_raw_error_arcsec"] is None
+    assert "estimated from the signals" in data["uncertainty_withheld"]
+    decided = data["decided_quantity"]
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None and decided["probability_conforming"] is None
     assert "estimated from the signals" in decided["reason"]
