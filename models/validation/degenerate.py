@@ -9,6 +9,9 @@ this package) and runs it through the whole analysis:
   readings missing"), and the same;
 * a fringe record shorter than one period, and harmonic orders that alias at the samples per
   period: refused, naming the share and the pair;
+* harmonics with the phase estimated from the signals: no interval of the decided quantity,
+  no U per sample, no statement of conformity (the round part of their distortion is not
+  observable);
 * a theodolite run of 3 points: no degrees of freedom for its reading noise, refused.
 """
 
@@ -122,6 +125,42 @@ def _fringe_parsed(count: int, per_period: int) -> ParsedReadings:
                            "theta_deg": np.full(count, np.nan)}, np.arange(count))
 
 
+def _estimated_phase_case() -> ValidationCase:
+    """Harmonics of 0.3-0.4 % of the amplitude with the phase estimated from the signals:
+    the part of their distortion that leaves the Lissajous figure round is not observable,
+    so no interval of the decided quantity, no U per sample and no statement of conformity,
+    however the phase reference's u is stated."""
+    head = FringeHead(sin_harmonics={3: (0.004, 0.4), 5: (0.003, 1.3)},
+                      cos_harmonics={3: (0.004, 1.97), 5: (0.003, 2.87)}, noise_v=0.0003)
+    u_sin, u_cos = head.channels(equal_steps(16 * 128, 128) + 0.7, np.random.default_rng(11))
+    parsed = ParsedReadings({"u_sin": u_sin, "u_cos": u_cos,
+                             "theta_deg": np.full(u_sin.size, np.nan)}, np.arange(u_sin.size))
+    result = FRINGE.analyze(parsed, {"phase_reference_u": 0.2})
+    conformity = FRINGE.certificate(
+        result, CertificateMetadata(tolerance=2.0, tolerance_unit="arcsec")).conformity
+    try:
+        FRINGE.uncertainty_budgets(result, CertificateMetadata())
+        withheld = ""
+    except ValueError as exc:
+        withheld = str(exc)
+    interval = np.isfinite(conformity.interval_low) and np.isfinite(conformity.interval_high)
+    passed = (conformity.verdict == "not assessed" and not interval
+              and "estimated from the signals" in withheld
+              and "estimated from the signals" in str(conformity.reason))
+    return ValidationCase(
+        FRINGE.title, QT_TR_NOOP("phase estimated from the signals, 3rd and 5th harmonics of "
+                                 "0.3–0.4 %, a phase reference u of 0.2° stated"),
+        EXACT_SIMULATION,
+        QT_TR_NOOP("no interval of the decided quantity, no U per sample, no statement of "
+                   "conformity; the reason names the estimated phase"),
+        message(QT_TR_NOOP("interval {interval}; statement {verdict}; U per sample {u}"),
+                interval=Message(QT_TR_NOOP("given") if interval else QT_TR_NOOP("withheld")),
+                verdict=Message(QT_TR_NOOP("none") if conformity.verdict == "not assessed"
+                                else QT_TR_NOOP("made")),
+                u=Message(QT_TR_NOOP("withheld") if withheld else QT_TR_NOOP("given"))),
+        passed)
+
+
 def degenerate_design_cases(trials: int) -> list[ValidationCase]:
     """The degenerate designs of issue 39; ``trials`` sets the polygon's coverage runs."""
     runs = max(10, min(50, trials // 4))
@@ -134,6 +173,7 @@ def degenerate_design_cases(trials: int) -> list[ValidationCase]:
         w, QT_TR_NOOP("N = 8 samples per period, orders 1, 3, 5 (the 5th aliases onto the 3rd)"),
         QT_TR_NOOP("orders 3 and 5 alias at N = 8"),
         lambda: FRINGE.analyze(_fringe_parsed(80, 8), {"samples_per_period": 8})))
+    cases.append(_estimated_phase_case())
     theta = np.array([-10.0, 0.0, 10.0])
     azimuth, elevation = theodolite_readings(theta, 3.0, 45.0, 2.0)
     from models.theodolite.analysis import THEODOLITE

@@ -9133,6 +9133,22 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>≥ 95 % 的点（上限取最不利方向、矩形分布：偏于安全）</translation>
     </message>
     <message>
+        <source>phase estimated from the signals, 3rd and 5th harmonics of 0.3–0.4 %, a phase reference u of 0.2° stated</source>
+        <translation>由信号估计相位，3 次与 5 次谐波为 0.3–0.4 %，给出相位参考 u 为 0.2°</translation>
+    </message>
+    <message>
+        <source>no interval of the decided quantity, no U per sample, no statement of conformity; the reason names the estimated phase</source>
+        <translation>判定的量不给包含区间，每个采样不给 U，不作符合性声明；原因指明相位为估计值</translation>
+    </message>
+    <message>
+        <source>interval {interval}; statement {verdict}; U per sample {u}</source>
+        <translation>区间{interval}；声明{verdict}；每个采样的 U {u}</translation>
+    </message>
+    <message>
+        <source>made</source>
+        <translation>已作出</translation>
+    </message>
+    <message>
         <source>40 of the 64 samples of one period</source>
         <translation>一个周期 64 个采样中的 40 个</translation>
     </message>
