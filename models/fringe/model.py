@@ -516,6 +516,13 @@ def _circular_mean(angle_rad: np.ndarray) -> float:
     return float(np.angle(np.mean(np.exp(1j * angle_rad))))
 
 
+#: the grid the table's checksum takes its values on: 1e-9 rad of phase, 1.6e-10 of a
+#: period (far below what a table's 9 digits or a processor's float32 hold of it), and some
+#: thousand times what a fit's last bits move them (the chance that a value lying at a step's
+#: edge crosses it between two machines: about 1e-6 an entry)
+CHECKSUM_GRID_RAD = 1e-9
+
+
 @dataclass
 class CorrectionTable:
     """Eq (6) as a look-up table: ``correction_rad[j]`` at measured phase ``2πj/size``.
@@ -533,11 +540,16 @@ class CorrectionTable:
 
     @property
     def sha256(self) -> str:
-        """Checksum of the table (its values as little-endian float64): the certificate
-        names the table the lab states it loaded into the encoder by it."""
+        """Checksum of the table: the certificate names the table the lab states it loaded
+        into the encoder by it. Of its values on a grid of :data:`CHECKSUM_GRID_RAD` (as
+        little-endian int64), not of their float64 bits: a fit's last bits differ between
+        processors (the bundled sample's table had another checksum on another machine),
+        and a checksum of them refused, on the computer that issued the certificate, the
+        table exported from the same readings on the one at the bench."""
         import hashlib
 
-        data = np.ascontiguousarray(self.correction_rad, dtype="<f8").tobytes()
+        steps = np.rint(np.asarray(self.correction_rad, dtype=float) / CHECKSUM_GRID_RAD)
+        data = np.ascontiguousarray(steps, dtype="<i8").tobytes()
         return hashlib.sha256(data).hexdigest()
 
     def correction_at(self, measured_phase_rad) -> np.ndarray:

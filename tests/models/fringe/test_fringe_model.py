@@ -152,3 +152,19 @@ def test_per_phase_sums_give_the_fit_of_the_whole_design(per, periods, seed, ord
         assert b.u_amplitude[k] == pytest.approx(a.u_amplitude[k], rel=1e-6, abs=1e-12)
     assert b.cost == pytest.approx(a.cost, rel=1e-8, abs=1e-14)
     assert b.r_squared == pytest.approx(a.r_squared, abs=1e-10)
+
+
+def test_the_tables_checksum_does_not_follow_the_last_bits_of_a_fit():
+    """The bundled sample's table had another checksum on another processor (its values'
+    last bits): an as-left checksum typed at the bench was refused where the certificate
+    was issued. Values within a grid step of 1e-9 rad give one checksum; a step more does
+    not."""
+    from models.fringe.model import CHECKSUM_GRID_RAD, CorrectionTable
+
+    rng = np.random.default_rng(4)
+    values = 0.03 * np.sin(np.arange(1024) * 2 * np.pi / 1024 * 3) + rng.normal(0, 1e-4, 1024)
+    wobble = values * (1.0 + 1e-13 * rng.standard_normal(1024))
+    assert CorrectionTable(wobble).sha256 == CorrectionTable(values).sha256
+    moved = values.copy()
+    moved[100] += 2 * CHECKSUM_GRID_RAD
+    assert CorrectionTable(moved).sha256 != CorrectionTable(values).sha256
