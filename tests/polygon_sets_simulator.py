@@ -20,6 +20,8 @@ The bench:
   (vertical), each with reading noise σ; its horizontal zero drifts linearly within each
   set, by ``D_s`` from the set's first reading to its closure (``D_s`` normal, σ_D, drawn per
   set, independent between sets);
+* each face may have its own pyramidal error (``face_pyramidal_sd_arcsec``: its normal out of
+  the polygon's plane, a fixed artefact's, the same in every set);
 * the operator stops the shaft within ±20″ of each face; every set closes on its start face.
 
 Forward sets go 1, 2, …, n, 1; reverse sets 1, n, n − 1, …, 2, 1. Every set is against the
@@ -63,6 +65,9 @@ class Bench:
     # sets after it (a random walk). Neither is what the workbench's budget assumes: it takes
     # each set's drift as within ±d of its own first reading, independent between sets
     drift: str = "per set"
+    # each face's own pyramidal error (its normal out of the plane square to the polygon's
+    # axis, ″), standard deviation of a fixed artefact's faces; the same in every set
+    face_pyramidal_sd_arcsec: float = 0.0
 
     @property
     def theta_deg(self) -> np.ndarray:
@@ -92,7 +97,11 @@ class Bench:
         certificate[0] = dev[0]  # stated from face 1: face 1 exact (0), each other face ±u
         # face normals with the shaft at 0: turning by the face's true angle brings it to +x
         beta = -np.radians(np.arange(n) * step + dev / 3600.0)
-        normals = np.vstack([np.cos(beta), np.sin(beta), np.zeros(n)])
+        # each face's own pyramidal error: its normal raised out of the polygon's plane
+        lift = (np.random.default_rng(2027).normal(0.0, self.face_pyramidal_sd_arcsec, n)
+                * ARCSEC)
+        normals = np.vstack([np.cos(beta) * np.cos(lift), np.sin(beta) * np.cos(lift),
+                             np.sin(lift)])
         om = np.radians(self.omega_deg)
         normals = rotate(normals, np.array([-np.sin(om), np.cos(om), 0.0]),
                          self.psi_arcsec * ARCSEC)

@@ -158,6 +158,10 @@ class HalfRangeEstimate:
     trials: int
     seed: int
     stride: int = 1  # judged on every stride-th point of a long curve
+    # half the range the budget's noise alone gives a flat curve in all but
+    # NOISE_CONTRADICTED of the trials, when the measured half range lies below it: the
+    # budget's noise is not these readings' and no interval is stated (nan otherwise)
+    noise_floor: float = float("nan")
 
     @property
     def interval_low(self) -> float:
@@ -201,6 +205,27 @@ def _coarse(values) -> np.ndarray:
         return np.zeros(v.size, dtype=np.int64)
     step = 10.0 ** (math.floor(math.log10(top)) - 3)
     return np.round(v / step).astype(np.int64)
+
+
+#: the share of the trials in which the budget's noise alone may give a flat curve a range
+#: below the measured one before the readings are said to contradict the budget (a
+#: budget that is right is contradicted by at most this share of the readings: a flat
+#: curve's measured range is the noise's own)
+NOISE_CONTRADICTED = 0.001
+
+
+def _noise_floor(budget: UncertaintyBudget, points: np.ndarray, trials: int, seed: int) -> float:
+    """Half the range the budget's noise evaluated from readings (its Type A inputs) gives a
+    flat curve in all but :data:`NOISE_CONTRADICTED` of the trials; 0 without one. The
+    stated (Type B) inputs are left out: a stated figure is an envelope, and a reference
+    better than its certificate states shows less than it in the readings, rightly."""
+    evaluated = tuple(c for c in budget.components if c.evaluation == "A")
+    if not evaluated:
+        return 0.0
+    _, shared, independent = _draws_by_nature(
+        UncertaintyBudget(evaluated, budget.points, budget.probability, budget.unit), points,
+        trials, np.random.default_rng(seed + 1))
+    return 0.5 * float(np.quantile(np.ptp(shared + independent, axis=1), NOISE_CONTRADICTED))
 
 
 def readings_seed(errors, budget: UncertaintyBudget) -> int:
@@ -354,6 +379,15 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     if not np.any(draws):
         return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
                                  seed, stride)
+    floor = _noise_floor(budget, points, trials, seed)
+    if measured < floor:
+        # the readings contradict the budget: their range is below what its noise alone
+        # gives a flat curve in all but 0.1 % of the trials. The interval would be taken
+        # about a noise the readings do not have: an audit's polygon whose faces' own
+        # pyramidal errors (2″) were taken for its reading noise (0.03″), one set, printed
+        # the decided half range as 0.0″, interval 0 … 0.1″, "pass", where the truth was 1.46″
+        return HalfRangeEstimate(measured, 0.0, measured, math.nan, math.nan,
+                                 budget.probability, trials, seed, stride, floor)
     alpha = 1.0 - budget.probability
     least_favourable = _range_excess(draws, _gaps(e, draws, LOWER_THRESHOLD),
                                      _gaps(-e, -draws, LOWER_THRESHOLD))
@@ -703,8 +737,18 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     mc = estimate if estimate is not None else half_range_monte_carlo(e, budget)
     x, upper, lower = float(mc.value), float(mc.u_upper), float(mc.u_lower)
     if not (math.isfinite(x) and math.isfinite(upper) and math.isfinite(lower)):
-        reason = _withheld_text([*withheld, message(QT_TR_NOOP(
-            "the decided quantity is withheld (the data do not determine it)"))])
+        floor = float(getattr(mc, "noise_floor", math.nan))
+        why = (message(QT_TR_NOOP(
+            "the readings contradict the budget: their half range {measured} is below the "
+            "{floor} that its noise alone gives a flat curve in 99.9 % of trials, so its "
+            "noise is not these readings' and no interval is stated (see the noise input's "
+            "note in the budget)"),
+            measured=f"{float(getattr(mc, 'measured', x)):.3g}{budget.unit.written()}",
+            floor=f"{floor:.3g}{budget.unit.written()}")
+            if math.isfinite(floor) else
+            message(QT_TR_NOOP("the decided quantity is withheld (the data do not determine "
+                               "it)")))
+        reason = _withheld_text([*withheld, why])
         return Conformity("not assessed", message(QT_TR_NOOP(
             "No statement of conformity: {reason}."), reason=reason), rule_text,
             monte_carlo=mc, reason=reason, **common)

@@ -328,10 +328,6 @@
         <translation>自准直仪读数噪声（1 个测回）</translation>
     </message>
     <message>
-        <source>scatter of the vertical readings about the tilt fits, {dof} degrees of freedom (no direction was measured twice)</source>
-        <translation>竖直读数相对于塔差拟合的分散性，自由度 {dof}（没有方向被测量两次）</translation>
-    </message>
-    <message>
         <source>{note}, divided by √{m}</source>
         <translation>{note}，除以 √{m}</translation>
     </message>
@@ -506,6 +502,14 @@
     <message>
         <source>A polygon is fixed on the shaft of the encoder under test and an autocollimator is set on its faces. The shaft is turned to each face in turn; the encoder&apos;s reading a, the polygon&apos;s calibrated face deviation and the autocollimator&apos;s horizontal reading x give the encoder error at each position against one common zero (face z of the first set), e = (a − a_z) − nominal − (dev − dev_z) − (x − x_z), the error being indicated minus reference. Returning to a set&apos;s first face checks the closure drift (x′ − x) − (a′ − a). The vertical readings y identify the pyramidal tilt ψ and its direction ω of the polygon against the shaft by least squares, and the horizontal error ε_x it induces is subtracted from e (coordinate transformation; eqs 3–7 of the published method, Tian et al. 2015, turn the faces by −θ, so the readings carry −ε_x). The error induced depends on how the autocollimator was set: it is computed by exact 3-D rotation in the frame stated under the set-up parameters.</source>
         <translation>多面棱体固定于被测编码器轴上，自准直仪对准其工作面。依次将轴转至各面；由编码器读数 a、多面棱体各面的校准偏差和自准直仪水平读数 x，以同一零位（第一测回的第 z 面）求得各位置的编码器误差 e = (a − a_z) − 标称值 − (dev − dev_z) − (x − x_z)，误差为示值减参考值。回到测回的第一面可检查闭合漂移 (x′ − x) − (a′ − a)。由竖直读数 y 用最小二乘辨识多面棱体相对于轴的塔差 ψ 及其方向 ω，并从 e 中减去其引起的水平误差 ε_x（坐标变换；已发表方法（田留德等 2015 年论文）的式 3–7 将各面转过 −θ，故读数含 −ε_x）。所引起的误差取决于自准直仪的安置方式：按设置参数中注明的坐标系用精确 3-D 旋转计算。</translation>
+    </message>
+    <message>
+        <source>scatter of the vertical readings about the tilt fits between the sets, face by face (each face&apos;s own pyramidal error, the same in every set, cancels), {dof} degrees of freedom (no direction was measured twice)</source>
+        <translation>各测回垂直读数对倾斜拟合的残差在测回之间逐面比较的离散（各面自身的塔差在每个测回中相同，相互抵消），自由度 {dof}（没有任何方向测量两次）</translation>
+    </message>
+    <message>
+        <source>scatter of the vertical readings about the tilt fit, {dof} degrees of freedom (one set: the faces&apos; own pyramidal errors are in it, on the safe side)</source>
+        <translation>垂直读数对倾斜拟合的离散，自由度 {dof}（仅一个测回：其中包含各面自身的塔差，偏于安全）</translation>
     </message>
     <message>
         <source>eccentricity / ellipticity</source>
@@ -5079,7 +5083,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
-        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study).</extracomment>
+        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study). the share of the trials in which the budget&apos;s noise alone may give a flat curve a range below the measured one before the readings are said to contradict the budget (a budget that is right is contradicted by at most this share of the readings: a flat curve&apos;s measured range is the noise&apos;s own)</extracomment>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
@@ -5134,6 +5138,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Probability of a false rejection at this decision: {p} % (specific risk, JCGM 106).</source>
         <translation>本判定的误不合格概率：{p} %（特定风险，JCGM 106）。</translation>
+    </message>
+    <message>
+        <source>the readings contradict the budget: their half range {measured} is below the {floor} that its noise alone gives a flat curve in 99.9 % of trials, so its noise is not these readings&apos; and no interval is stated (see the noise input&apos;s note in the budget)</source>
+        <translation>读数与不确定度预算矛盾：其半峰峰值 {measured} 低于预算的噪声单独作用于平直曲线时在 99.9 % 的试验中给出的 {floor}，因此该噪声不是这些读数的噪声，不给出包含区间（见预算中噪声输入量的说明）</translation>
     </message>
     <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
@@ -5263,6 +5271,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>the correction table needs at least 8 entries</source>
+        <extracomment>the grid the table&apos;s checksum takes its values on: 1e-9 rad of phase, 1.6e-10 of a period (far below what a table&apos;s 9 digits or a processor&apos;s float32 hold of it), and some thousand times what a fit&apos;s last bits move them (the chance that a value lying at a step&apos;s edge crosses it between two machines: about 1e-6 an entry)</extracomment>
         <translation>修正表至少需要 8 项</translation>
     </message>
     <message>

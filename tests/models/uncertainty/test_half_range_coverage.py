@@ -363,3 +363,17 @@ def test_the_upper_end_holds_a_reference_better_than_stated():
             held[marked] += int(mc.value + mc.u_upper >= truth)
     assert held[False] <= 20  # the defect (13 of 30): the stated errors' excess taken out
     assert held[True] >= 29
+
+
+def test_readings_that_contradict_the_budgets_noise_get_no_interval():
+    """A curve whose range is below what the budget's noise alone gives a flat curve in
+    99.9 % of trials: the noise is not the readings' (a polygon's faces' pyramidal errors of
+    2″ taken for a noise of 0.03″ printed 0.0″, interval 0 … 0.1″). With the budget right,
+    a flat curve is said to contradict it in about 0.1 % of runs, no more."""
+    rng = np.random.default_rng(12)
+    inflated = half_range_monte_carlo(rng.normal(0.0, 0.03, 36), _budget(36, _noise(2.0, dof=66)))
+    assert not math.isfinite(inflated.u_upper) and inflated.value == inflated.measured
+    assert inflated.noise_floor > inflated.measured
+    said = sum(not math.isfinite(half_range_monte_carlo(
+        rng.normal(0.0, 0.1, 24), _budget(24, _noise(0.1))).u_upper) for _ in range(300))
+    assert said <= 3, said  # 0.1 % of 300: 0.3 expected
