@@ -67,6 +67,7 @@ class Bench:
     ac_zero_y_arcsec: float = 7.0
     face_elevation_arcsec: np.ndarray | None = None  # β_i per face (1 … n), ″; None: square faces
     ac_scale: float = 0.0  # the AC's relative scale error: it indicates (1 + s)·(angle from its null)
+    ac_roll_arcmin: float = 0.0  # the AC's axes rolled about its line of sight (x) by this
     rng: np.random.Generator = field(default_factory=lambda: np.random.default_rng(0))
 
     def __post_init__(self) -> None:
@@ -148,6 +149,8 @@ class Bench:
             theta += self.rng.uniform(-1, 1, faces.size) * self.stop_arcsec / 3600.0
             theta[0] = self.start_deg  # every mounting starts where the first did
             v = self._face_normals(faces, seat + theta, psi, omega)
+            if self.ac_roll_arcmin:  # the normals in the AC's rolled axes
+                v = rotation([1.0, 0.0, 0.0], -self.ac_roll_arcmin * 60.0 * ARCSEC) @ v
             noise = self.rng.normal(0.0, self.noise_arcsec, (2, faces.size))
             ac_x = ((1.0 + self.ac_scale) * np.arctan2(v[1], v[0]) / ARCSEC + self.ac_zero_x_arcsec
                     + drift * t / n + noise[0])

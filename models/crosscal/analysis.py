@@ -72,6 +72,13 @@ PARAMETERS = (
                    "span (its scale and linearity, from its calibration), rectangular: it enters "
                    "the uncertainty through the design (a constant offset cancels in each "
                    "mounting's offset); 0: not in the budget"),
+    Parameter("ac_roll_arcmin", "AC roll ≤", "float", 1.0, "′", 0.0, 60.0, decimals=1,
+              step=0.5, cli_name="ac-roll", zero="none",
+              help="Largest roll of the autocollimator about its line of sight, relative to "
+                   "the set-up's vertical, as in the polygon workbench: it turns part of each "
+                   "vertical reading into the horizontal one, one unknown roll for the whole "
+                   "run (rectangular), through the design; used where vertical readings are "
+                   "given; 0: not in the budget"),
     Parameter("tilt_bound_arcsec", "largest tilt of the polygon on the shaft, when not measured",
               "float", 60.0, "\"", 0.0, 3600.0, decimals=1, step=10.0, zero="none",
               help="Without vertical readings the polygon's tilt on the shaft is neither "
@@ -109,6 +116,7 @@ class CrossCalResult:
     drift_mode: str = "fit"  # "fit" | "spread" | "report" (setting closure_drift)
     ac_scale_pct: float = 0.0  # setting: the autocollimator's scale error bound (budget)
     tilt_bound_arcsec: float = 0.0  # setting: the tilt bound without vertical readings (budget)
+    ac_roll_arcmin: float = 0.0  # setting: the autocollimator's roll bound (budget, ρ·y)
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
     cmc_polygon_arcsec: float = 0.0  # setting: the lab's CMC for face deviations (U floor)
     cmc_encoder_arcsec: float = 0.0  # setting: the lab's CMC for the encoder's error (U floor)
@@ -215,13 +223,19 @@ class CrossCalResult:
         """Standard uncertainty of (E, d) — or of ``combine``·(E, d) — from the bench's stated
         bounds (the autocollimator's scale error; the tilt when not measured), each
         rectangular, through the design (models.crosscal.uncertainty)."""
-        from models.crosscal.uncertainty import scale_effect_arcsec, tilt_effect_arcsec
+        from models.crosscal.uncertainty import (
+            roll_effect_arcsec,
+            scale_effect_arcsec,
+            tilt_effect_arcsec,
+        )
 
         s, r = self.solution, self.readings
         scale = self.ac_scale_pct / 100.0 * scale_effect_arcsec(s, r.ac_x_arcsec, combine)
         tilt = tilt_effect_arcsec(s, r.mounting, r.position, self.tilt_bound_arcsec,
                                   combine=combine)
-        return np.sqrt(scale**2 + tilt**2) / math.sqrt(3.0)
+        roll = math.radians(self.ac_roll_arcmin / 60.0) * roll_effect_arcsec(
+            s, r.ac_y_arcsec, combine)
+        return np.sqrt(scale**2 + tilt**2 + roll**2) / math.sqrt(3.0)
 
     def cross_correlation(self) -> float:
         """The largest |correlation| between an encoder error and a face deviation."""
@@ -288,7 +302,8 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
                             float(settings.get("ac_scale_pct", 0.2) or 0.0),
                             float(settings.get("tilt_bound_arcsec", 60.0) or 0.0),
                             cmc_polygon_arcsec=float(settings.get("cmc_arcsec", 0.0) or 0.0),
-                            cmc_encoder_arcsec=float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0))
+                            cmc_encoder_arcsec=float(settings.get("cmc_encoder_arcsec", 0.0) or 0.0),
+                            ac_roll_arcmin=float(settings.get("ac_roll_arcmin", 1.0) or 0.0))
     if result.outliers.size:
         shown = ", ".join(str(readings.row(i)) for i in result.outliers[:8])
         warnings.append(message(QT_TR_NOOP("{count} reading(s) lie beyond {sigmas}σ of the fit "
@@ -303,6 +318,7 @@ def analyze(parsed, settings: Mapping[str, Any]) -> CrossCalResult:
 # so they stay in the result, and a certificate given other settings is refused
 _ANALYSED_WITH = (("certificate_of", "certificate_of"), ("closure_drift", "drift_mode"),
                   ("ac_scale_pct", "ac_scale_pct"), ("tilt_bound_arcsec", "tilt_bound_arcsec"),
+                  ("ac_roll_arcmin", "ac_roll_arcmin"),
                   ("cmc_arcsec", "cmc_polygon_arcsec"),
                   ("cmc_encoder_arcsec", "cmc_encoder_arcsec"))
 

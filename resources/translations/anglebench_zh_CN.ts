@@ -6526,6 +6526,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>HEIDENHAIN 11 µApp（标准值）</translation>
     </message>
     <message>
+        <source>Largest roll of the autocollimator about its line of sight, relative to the set-up&apos;s vertical, as in the polygon workbench: it turns part of each vertical reading into the horizontal one, one unknown roll for the whole run (rectangular), through the design; used where vertical readings are given; 0: not in the budget</source>
+        <translation>自准直仪绕其视轴相对于装置铅垂方向的最大滚转，与多面棱体工作台相同：它把每个垂直读数的一部分转入水平读数，整个测量为同一个未知滚转（矩形分布），经设计传播；在给出垂直读数时使用；0：不计入预算</translation>
+    </message>
+    <message>
         <source>Odd harmonics only (the model of the method&apos;s paper, Gao et al. 2013), or every order up to the highest</source>
         <translation>仅奇次谐波（方法论文高旭等 2013 的模型），或直到最高次的所有谐波</translation>
     </message>
@@ -8356,6 +8360,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>up to ±{scale} of the reading (scale and linearity, stated) over the readings&apos; span {low} … {high}, through the design</source>
         <translation>读数的 ±{scale} 以内（刻度与线性，给定值），读数范围 {low} … {high}，经测量设计传递</translation>
+    </message>
+    <message>
+        <source>Autocollimator roll ρ (cross-talk ρ·y)</source>
+        <translation>自准直仪滚转 ρ（串扰 ρ·y）</translation>
+    </message>
+    <message>
+        <source>roll about the line of sight up to ±{roll} (stated, not measured) times each vertical reading, through the design</source>
+        <translation>绕视轴的滚转最大 ±{roll}（给定，未测量）乘以每个垂直读数，经设计传播</translation>
     </message>
     <message>
         <source>Tilt of the polygon on the shaft (not measured)</source>

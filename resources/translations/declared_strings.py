@@ -56,6 +56,7 @@ DECLARED = (
     QT_TR_NOOP('ISO 230-2:2014'),
     QT_TR_NOOP('Interferometer: displacement per fringe (316.4 nm for λ/2 of a HeNe laser); errors then in nm. 0: an encoder'),
     QT_TR_NOOP("Largest relative error of the autocollimator's indication over the readings' span (its scale and linearity, from its calibration), rectangular: it enters the uncertainty through the design (a constant offset cancels in each mounting's offset); 0: not in the budget"),
+    QT_TR_NOOP("Largest roll of the autocollimator about its line of sight, relative to the set-up's vertical, as in the polygon workbench: it turns part of each vertical reading into the horizontal one, one unknown roll for the whole run (rectangular), through the design; used where vertical readings are given; 0: not in the budget"),
     QT_TR_NOOP("Largest roll of the autocollimator about its line of sight, relative to the set-up's vertical, when not measured: it turns part of the vertical reading into the horizontal one (budget input)"),
     QT_TR_NOOP("Linear: run 1 ↑ over every target, then ↓, then run 2; pilgrim step: all of one target's approaches before the next target"),
     QT_TR_NOOP('LinuxCNC COMP_FILE type 0'),
