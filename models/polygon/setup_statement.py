@@ -33,8 +33,9 @@ def setup_statement(result: PolygonResult) -> str:
                                   "corrected, in the uncertainty."),
                        roll=f"{result.ac_roll_arcmin:g}′")
     tell = message(QT_TR_NOOP(
-        "To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the "
-        "vertical reading changes by Δy and watch the horizontal reading: on a levelled bench "
+        "To tell which set-up a bench is: tip a mirror on the shaft (or the polygon on its "
+        "seat) about a horizontal axis so that the vertical reading changes by Δy, and watch "
+        "the horizontal reading: on a levelled bench "
         "it moves by less than the roll bound times Δy; if it moves more, measure that ratio "
         "(the roll) and enter it."))
     return joined((frame, " ", roll, " ", tell))

@@ -6325,8 +6325,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>自准直仪滚转未实测：最大 ±{roll}，未修正，计入不确定度。</translation>
     </message>
     <message>
-        <source>To tell which set-up a bench is: tip a face (or a mirror on the shaft) so that the vertical reading changes by Δy and watch the horizontal reading: on a levelled bench it moves by less than the roll bound times Δy; if it moves more, measure that ratio (the roll) and enter it.</source>
-        <translation>判断装置属于哪种安置：使某一面（或轴上的反射镜）俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
+        <source>To tell which set-up a bench is: tip a mirror on the shaft (or the polygon on its seat) about a horizontal axis so that the vertical reading changes by Δy, and watch the horizontal reading: on a levelled bench it moves by less than the roll bound times Δy; if it moves more, measure that ratio (the roll) and enter it.</source>
+        <translation>判断装置属于哪种安置：使轴上的反射镜（或在座上的棱体）绕水平轴俯仰，使竖直读数变化 Δy，观察水平读数：调平的装置上其变化小于滚转限值乘以 Δy；若变化更大，测出该比值（即滚转）并输入。</translation>
     </message>
     <message>
         <source>Reading noise, stated (mean of {sets} sets)</source>
