@@ -217,7 +217,7 @@ def test_certificate_and_summary_state_the_set_up():
         assert words in POLYGON.summary(result)
         doc = polygon_certificate(result, CertificateMetadata())
         assert any(words in str(s) for s in doc.statements)
-        assert "tip a face" in " ".join(str(s) for s in doc.statements)
+        assert "tip a mirror on the shaft" in " ".join(str(s) for s in doc.statements)
         rows = {str(r[0]): str(r[1]) for r in doc.parameters.rows}
         assert "Autocollimator set-up" in rows and "Autocollimator roll" in rows
 
