@@ -152,7 +152,7 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
     readings' span, and an unmeasured tilt of the polygon on the shaft (its fitted tilt's own
     uncertainty, when vertical readings were given, if it is not negligible)."""
     from models.crosscal.uncertainty import (
-        roll_effect_arcsec,
+        roll_pattern_arcsec,
         scale_effect_arcsec,
         tilt_effect_arcsec,
         tilt_fit_effect_arcsec,
@@ -172,16 +172,15 @@ def _systematic_components(result, u_scatter: np.ndarray) -> list[BudgetComponen
                                "the readings' span {low} … {high}, through the design"),
                     scale=f"{result.ac_scale_pct:g} %", low=f"{np.min(c):+.1f}\"",
                     high=f"{np.max(c):+.1f}\""), common=True))
-    roll = math.radians(result.ac_roll_arcmin / 60.0) * roll_effect_arcsec(s, r.ac_y_arcsec)
-    if np.any(roll[block] > 0):
+    pattern = roll_pattern_arcsec(s, r.ac_y_arcsec)[block]
+    roll = math.radians(result.ac_roll_arcmin / 60.0) * np.abs(pattern)
+    if np.any(roll > 0):
         # one roll for the whole run: δ(E, d) = ρ·G·y, its sign point by point. An audit
         # (mountings seated with tilts of 100-300″, the autocollimator rolled up to 1′, low
         # noise) found the face deviations' U covering 92.7 % with no such input
-        y = np.nan_to_num(np.asarray(r.ac_y_arcsec, dtype=float))
-        pattern = (s.gain @ y)[block]
         out.append(BudgetComponent(
             QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·y)"), "B", "rectangular",
-            roll[block], math.sqrt(3.0), np.where(pattern < 0, -1.0, 1.0), math.inf,
+            roll, math.sqrt(3.0), np.where(pattern < 0, -1.0, 1.0), math.inf,
             message(QT_TR_NOOP("roll about the line of sight up to ±{roll} (stated, not "
                                "measured) times each vertical reading, through the design"),
                     roll=f"{result.ac_roll_arcmin:g}′"), common=True))

@@ -113,16 +113,21 @@ def scale_effect_arcsec(solution: CrossCalibration, ac_x_arcsec, combine=None) -
     return np.abs(_gain(solution, combine) @ c)
 
 
-def roll_effect_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) -> np.ndarray:
-    """|(G·y)| per value of (E, d) (2n): the results' change per radian of the
-    autocollimator's roll ρ about its line of sight, which turns ρ·y of each vertical reading
-    y into the horizontal one: δ(E, d) = ρ·G·y exactly (a constant part of y cancels in each
-    mounting's offset); 0 without vertical readings (a reading not made is taken as 0: the
-    tilt bound then holds that mounting). Of ``combine``·(E, d) when given."""
+def roll_pattern_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) -> np.ndarray:
+    """G·y per value of (E, d) (2n): the results' change per radian of the autocollimator's
+    roll ρ about its line of sight, which turns ρ·y of each vertical reading y into the
+    horizontal one: δ(E, d) = ρ·G·y exactly (a constant part of y cancels in each mounting's
+    offset); 0 without vertical readings (a reading not made is taken as 0: the tilt bound
+    then holds that mounting). Of ``combine``·(E, d) when given."""
+    gain = _gain(solution, combine)
     if ac_y_arcsec is None:
-        return np.zeros(_gain(solution, combine).shape[0])
-    y = np.nan_to_num(np.asarray(ac_y_arcsec, dtype=float))
-    return np.abs(_gain(solution, combine) @ y)
+        return np.zeros(gain.shape[0])
+    return gain @ np.nan_to_num(np.asarray(ac_y_arcsec, dtype=float))
+
+
+def roll_effect_arcsec(solution: CrossCalibration, ac_y_arcsec, combine=None) -> np.ndarray:
+    """|:func:`roll_pattern_arcsec`|: the half-width per radian of roll bound."""
+    return np.abs(roll_pattern_arcsec(solution, ac_y_arcsec, combine))
 
 
 def tilt_effect_arcsec(solution: CrossCalibration, mounting, position, bound_arcsec: float,

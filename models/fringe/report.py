@@ -245,8 +245,9 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray)
     dof = max(n - p, 1)
 
     def signed(effect: np.ndarray, name, figure: float, note, evaluation="B", nu=math.inf,
-               group="") -> BudgetComponent:
-        return BudgetComponent(name, evaluation, "normal", np.abs(effect) * figure, 1.0,
+               group="", distribution="normal") -> BudgetComponent:
+        divisor = math.sqrt(3.0) if distribution == "rectangular" else 1.0
+        return BudgetComponent(name, evaluation, distribution, np.abs(effect) * figure, divisor,
                                np.where(effect < 0, -1.0, 1.0), nu, note, common=True,
                                dof_group=group)
 
@@ -289,11 +290,10 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray)
         if not figure:
             continue
         for label, d in (("sin", ds), ("cos", dc)):
-            components.append(BudgetComponent(
-                message(name, channel=label), "B", "rectangular",
-                np.abs(d) * half * figure * 1e-3, math.sqrt(3.0), np.where(d < 0, -1.0, 1.0),
-                math.inf, QT_TR_NOOP("one pattern for the whole record, within the figure "
-                                     "stated"), common=True))
+            components.append(signed(
+                d, message(name, channel=label), half * figure * 1e-3,
+                QT_TR_NOOP("one pattern for the whole record, within the figure stated"),
+                distribution="rectangular"))
     u_phase = inputs.get("phase_reference_u", 0.0)
     if u_phase:
         components.append(BudgetComponent(
@@ -313,8 +313,7 @@ def _not_determined(model_error: np.ndarray, metadata: CertificateMetadata) -> H
     sample without its θ column gives 0.379" against 0.486" with it). The half range is
     stated as measured, the reason beside it."""
     measured = 0.5 * float(np.ptp(model_error)) if model_error.size else math.nan
-    return HalfRangeEstimate(measured, 0.0, measured, math.nan, math.nan,
-                             float(metadata.coverage_probability), 0, 0)
+    return HalfRangeEstimate.as_measured(measured, float(metadata.coverage_probability))
 
 
 class _SampleNames:

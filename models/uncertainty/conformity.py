@@ -163,6 +163,13 @@ class HalfRangeEstimate:
     # budget's noise is not these readings' and no interval is stated (nan otherwise)
     noise_floor: float = float("nan")
 
+    @classmethod
+    def as_measured(cls, measured: float, probability: float, trials: int = 0, seed: int = 0,
+                    stride: int = 1, noise_floor: float = float("nan")) -> HalfRangeEstimate:
+        """The half range as measured with no interval (the decision then withholds it)."""
+        return cls(measured, 0.0, measured, math.nan, math.nan, probability, trials, seed,
+                   stride, noise_floor)
+
     @property
     def interval_low(self) -> float:
         """The coverage interval's lower end, value − u_lower (never below 0)."""
@@ -214,20 +221,6 @@ def _coarse(values) -> np.ndarray:
 NOISE_CONTRADICTED = 0.001
 
 
-def _noise_floor(budget: UncertaintyBudget, points: np.ndarray, trials: int, seed: int) -> float:
-    """Half the range the budget's noise evaluated from readings (its Type A inputs) gives a
-    flat curve in all but :data:`NOISE_CONTRADICTED` of the trials; 0 without one. The
-    stated (Type B) inputs are left out: a stated figure is an envelope, and a reference
-    better than its certificate states shows less than it in the readings, rightly."""
-    evaluated = tuple(c for c in budget.components if c.evaluation == "A")
-    if not evaluated:
-        return 0.0
-    _, shared, independent = _draws_by_nature(
-        UncertaintyBudget(evaluated, budget.points, budget.probability, budget.unit), points,
-        trials, np.random.default_rng(seed + 1))
-    return 0.5 * float(np.quantile(np.ptp(shared + independent, axis=1), NOISE_CONTRADICTED))
-
-
 def readings_seed(errors, budget: UncertaintyBudget) -> int:
     """A seed made from the readings (the curve and its budget's figures): the same
     readings give the same draws, on every run and machine.
@@ -254,7 +247,8 @@ def _signed_draws(budget: UncertaintyBudget, points: np.ndarray, trials: int,
 
 
 def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
-                     rng: np.random.Generator, in_curve: bool = True
+                     rng: np.random.Generator, in_curve: bool = True,
+                     evaluated: np.ndarray | None = None
                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Three (trials, len(points)) draws of the curve's error (JCGM 101), every budget input
     once, by its nature:
@@ -270,7 +264,9 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
     A Type A input with ν degrees of freedom is drawn as a t-distribution (JCGM 101 6.4.9),
     its scale s·√(ν/χ²_ν) one draw per trial for all the inputs of one estimate
     (``dof_group``). ``in_curve`` False: the inputs held in the measured curve
-    (BudgetComponent.in_curve) left out."""
+    (BudgetComponent.in_curve) left out. ``evaluated``: a (trials, len(points)) array the
+    Type A inputs' draws (shared and per point) are also added to, the noise evaluated from
+    readings (the same draws, not drawn again)."""
     n = points.size
     systematic = np.zeros((trials, n))
     shared = np.zeros((trials, n))
@@ -288,6 +284,8 @@ def _draws_by_nature(budget: UncertaintyBudget, points: np.ndarray, trials: int,
             if key not in scales:
                 scales[key] = np.sqrt(comp.dof / rng.chisquare(comp.dof, (trials, 1)))
             term = term * scales[key]
+        if evaluated is not None and comp.evaluation == "A":
+            evaluated += term
         if not comp.common:
             independent += term
         elif comp.evaluation == "A":
@@ -372,22 +370,28 @@ def half_range_monte_carlo(errors, budget: UncertaintyBudget,
     if n < 2:
         return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
                                  seed, stride)
+    evaluated = np.zeros((trials, n))
     systematic, shared, independent = _draws_by_nature(budget, points, trials,
-                                                       np.random.default_rng(seed))
+                                                       np.random.default_rng(seed),
+                                                       evaluated=evaluated)
     noise = shared + independent
     draws = systematic + noise
     if not np.any(draws):
         return HalfRangeEstimate(measured, 0.0, measured, 0.0, 0.0, budget.probability, trials,
                                  seed, stride)
-    floor = _noise_floor(budget, points, trials, seed)
+    # half the range the noise evaluated from readings (the Type A inputs) gives a flat
+    # curve in all but NOISE_CONTRADICTED of the trials; the stated (Type B) inputs are left
+    # out: a stated figure is an envelope, and a reference better than its certificate
+    # states rightly shows less than it in the readings
+    floor = 0.5 * float(np.quantile(np.ptp(evaluated, axis=1), NOISE_CONTRADICTED))
     if measured < floor:
         # the readings contradict the budget: their range is below what its noise alone
         # gives a flat curve in all but 0.1 % of the trials. The interval would be taken
         # about a noise the readings do not have: an audit's polygon whose faces' own
         # pyramidal errors (2″) were taken for its reading noise (0.03″), one set, printed
         # the decided half range as 0.0″, interval 0 … 0.1″, "pass", where the truth was 1.46″
-        return HalfRangeEstimate(measured, 0.0, measured, math.nan, math.nan,
-                                 budget.probability, trials, seed, stride, floor)
+        return HalfRangeEstimate.as_measured(measured, budget.probability, trials, seed,
+                                             stride, floor)
     alpha = 1.0 - budget.probability
     least_favourable = _range_excess(draws, _gaps(e, draws, LOWER_THRESHOLD),
                                      _gaps(-e, -draws, LOWER_THRESHOLD))
