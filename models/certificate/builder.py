@@ -113,10 +113,12 @@ class Statistics:
     header: tuple[str, ...] = (QT_TR_NOOP("Quantity"), QT_TR_NOOP("Value"), "")
     budget: UncertaintyBudget | None = None
 
-    def table(self, conformity, budget: UncertaintyBudget, unit: str) -> Table:
+    def table(self, conformity, budget: UncertaintyBudget, unit: str,
+              uncertainty_withheld: str = "") -> Table:
         padding = ("",) * (len(self.header) - 3)
         decided = [(name, value, *padding, note) for name, value, note in
-                   decision_rows(conformity, self.budget or budget, self.points, unit)]
+                   decision_rows(conformity, self.budget or budget, self.points, unit,
+                                 uncertainty_withheld)]
         return Table(self.title, self.header, [*self.before, *decided, *self.after])
 
 
@@ -158,7 +160,8 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
         kind_key=kind_key, kind_title=kind_title, metadata=metadata, source_name=source_name,
         method=method, method_reference=method_reference, parameters=parameters,
         results=results.table(budget.expanded),
-        statistics=statistics.table(conformity, budget, unit), budget=budget,
+        statistics=statistics.table(conformity, budget, unit,
+                                    more.get("uncertainty_withheld", "")), budget=budget,
         budget_point=budget_point(budget.worst_index), conformity=conformity, tolerance=tol,
         plots=tuple(p for p in plots if p is not None), warnings=tuple(warnings),
         statements=tuple(statements), point_columns=tuple(point_columns), unit=unit, **more)

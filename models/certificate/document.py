@@ -96,6 +96,10 @@ class CertificateDocument:
     # a specimen (the bundled example details, or the window's training switch):
     # watermarked SPECIMEN, numbered SPECIMEN-…, never recorded in a register
     specimen: bool = False
+    # why no U is stated for the results although a budget was evaluated (the budget then
+    # holds only the inputs that could be; the fringe's phase estimated from the signals):
+    # the results table, the statistics, the exports and the DCC state none; "" when U is
+    uncertainty_withheld: str = ""
 
     @property
     def is_test_report(self) -> bool:
@@ -107,8 +111,9 @@ class CertificateDocument:
 
     @property
     def expanded_uncertainty(self) -> float:
-        """The certificate's U: the largest over the curve's points."""
-        return self.budget.max_expanded
+        """The certificate's U: the largest over the curve's points (nan where it is
+        withheld, :attr:`uncertainty_withheld`)."""
+        return math.nan if self.uncertainty_withheld else self.budget.max_expanded
 
     @property
     def title(self) -> str:
@@ -232,9 +237,11 @@ def resolution_component(metadata: CertificateMetadata, sensitivity,
 
 
 def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
-                  points: str, unit: str = "\"") -> list[tuple[str, str, str]]:
+                  points: str, unit: str = "\"", uncertainty_withheld: str = ""
+                  ) -> list[tuple[str, str, str]]:
     """The statistics rows every certificate has: the decided quantity with its own U,
-    and the curve's largest U with its coverage factor."""
+    and the curve's largest U with its coverage factor (``uncertainty_withheld``: why no U
+    is stated, said in its place)."""
     big_u = budget.max_expanded
     digits = uncertainty_decimals(big_u)
     rows = []
@@ -259,6 +266,12 @@ def decision_rows(conformity: Conformity, budget: UncertaintyBudget,
             value = format_uncertain(conformity.value, conformity.expanded, unit)
             note = conformity.quantity
         rows.append((QT_TR_NOOP("Decided quantity"), value, note))
+    if uncertainty_withheld:
+        rows.append((QT_TR_NOOP("Expanded uncertainty U"), message(QT_TR_NOOP("not stated")),
+                     message(QT_TR_NOOP("the inputs evaluated give {u} at most, but U is "
+                                        "incomplete: {reason}"),
+                             u=f"{big_u:.{digits}f}{unit}", reason=uncertainty_withheld)))
+        return rows
     rows.append((message(QT_TR_NOOP("Expanded uncertainty U (p = {p} %)"),
                          p=f"{100 * budget.probability:.2f}"),
                  f"{big_u:.{digits}f}{unit}",

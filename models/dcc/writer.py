@@ -551,7 +551,10 @@ def _budget(b: _Builder, results, unit: str) -> None:
     b.text(q, "name", QT_TR_NOOP("Combined standard u_c"))
     b.real(q, float(budget.combined[i]), unit)
     q = etree.SubElement(lst, D + "quantity", refType="anglebench_expandedUncertainty")
-    b.text(q, "name", QT_TR_NOOP("Expanded uncertainty U"))
+    # no U stated for the results (CertificateDocument.uncertainty_withheld): the budget's
+    # figure is that of the inputs evaluated, a lower bound, and named so
+    b.text(q, "name", QT_TR_NOOP("Expanded uncertainty U") if not b.document.uncertainty_withheld
+           else QT_TR_NOOP("U of the inputs evaluated only (incomplete: a lower bound, not U)"))
     b.real(q, float(budget.coverage_factor * budget.combined[i]), unit)
 
 

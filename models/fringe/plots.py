@@ -116,10 +116,17 @@ def figures(result: FringeResult, bins: int = BINS) -> dict[str, PlotFigure]:
 
 
 def first_period_with_uncertainty(result: FringeResult, expanded, samples: int) -> PlotFigure:
+    """The compensated error of the first ``samples`` samples with their U as a band; with
+    no U stated (every ``expanded`` not finite: the phase estimated from the signals), the
+    curve alone."""
     unit = result.unit_symbol.strip()
-    return PlotFigure(QT_TR_NOOP("Compensated error in the first period, with U"),
+    band = np.asarray(expanded, dtype=float)[:samples]
+    with_u = bool(np.any(np.isfinite(band)))
+    return PlotFigure(QT_TR_NOOP("Compensated error in the first period, with U") if with_u
+                      else QT_TR_NOOP("Compensated error in the first period (no U stated)"),
                       QT_TR_NOOP("phase θ (°)"),
                       f"{ERROR} ({unit})", (
-        PlotSeries(QT_TR_NOOP("compensated ± U"), np.degrees(result.theta_rad[:samples]),
+        PlotSeries(QT_TR_NOOP("compensated ± U") if with_u else QT_TR_NOOP("compensated"),
+                   np.degrees(result.theta_rad[:samples]),
                    result.compensated_error[:samples], GREEN, samples <= 256,
-                   band=np.asarray(expanded)[:samples], role="corrected"),))
+                   band=band if with_u else None, role="corrected"),))

@@ -401,6 +401,14 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                                   "U; all {n} samples are in the CSV/XLSX results export."),
                        per=per, step=max(1, per // 64), n=raw.size)
     u_unit = sym.strip()
+    # a phase estimated from the signals: what the estimate cannot see is in no budget, so
+    # no U is stated for a sample (the JSON's arrays null, the DCC's values bare); the budget
+    # of the inputs evaluated is shown as a lower bound
+    no_u = result.phase_source == "estimated"
+    shown_u = np.full(big_u.shape, math.nan) if no_u else big_u
+    if no_u:
+        note = separated([note, message(QT_TR_NOOP("No U is stated per sample: {reason}."),
+                                        reason=message(ESTIMATED_PHASE_REASON))], " ")
     results = PointTable(QT_TR_NOOP("Results per sample (compensated = raw + correction)"), (
         text_column(QT_TR_NOOP("Sample"), [f"{i}" for i in idx + 1]),
         text_column(QT_TR_NOOP("Phase θ (°)"),
@@ -411,7 +419,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         figure_column(message(QT_TR_NOOP("Compensated ({unit})"), unit=u_unit), comp[idx],
                       big_u[idx]),
         uncertainty_column(message(QT_TR_NOOP("U as left ({unit})") if as_left else
-                                   QT_TR_NOOP("U as found ({unit})"), unit=u_unit), big_u[idx])),
+                                   QT_TR_NOOP("U as found ({unit})"), unit=u_unit),
+                           shown_u[idx])),
         note)
     pp_raw, pp_comp = float(np.ptp(raw)), float(np.ptp(comp))
     scale = (message(QT_TR_NOOP("L = {lines} (period {period})"), lines=result.lines_per_rev,
@@ -486,14 +495,15 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         statistics=Statistics(stat_rows, QT_TR_NOOP("samples"), more_rows, budget=found_budget),
         budget_point=lambda worst: message(QT_TR_NOOP("sample {sample}"), sample=worst + 1),
         tolerance=tol, plots=(drawn["errors"],
-                              fringe_plots.first_period_with_uncertainty(result, big_u, per),
+                              fringe_plots.first_period_with_uncertainty(result, shown_u, per),
                               drawn["residuals"]),
         warnings=result.warnings, unit=sym, untraceable=tuple(untraceable),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (
             (OBSERVABILITY_STATEMENT,) if result.phase_source == "estimated" else ()),
+        uncertainty_withheld=message(ESTIMATED_PHASE_REASON) if no_u else "",
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),
-         (f"correction_{unit}", correction), (f"compensated_error_{unit}", comp),
-         (f"expanded_uncertainty_{unit}", big_u)))
+         (f"correction_{unit}", correction), (f"compensated_error_{unit}", comp))
+        + (() if no_u else ((f"expanded_uncertainty_{unit}", big_u),)))

@@ -1144,6 +1144,10 @@
         <translation>第一个周期内补偿后误差及其 U</translation>
     </message>
     <message>
+        <source>Compensated error in the first period (no U stated)</source>
+        <translation>第一个周期内补偿后误差（未给出 U）</translation>
+    </message>
+    <message>
         <source>phase θ (°)</source>
         <translation>相位 θ (°)</translation>
     </message>
@@ -2251,6 +2255,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>多面棱体各面偏差（相对第 1 面）</translation>
     </message>
     <message>
+        <source>U of the inputs evaluated only (incomplete: a lower bound, not U)</source>
+        <translation>仅已评定输入量的 U（不完整：为下限，不是 U）</translation>
+    </message>
+    <message>
         <source>Face deviation</source>
         <translation>面偏差</translation>
     </message>
@@ -2845,6 +2853,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>判定的量</translation>
     </message>
     <message>
+        <source>the inputs evaluated give {u} at most, but U is incomplete: {reason}</source>
+        <translation>已评定的输入量最大给出 {u}，但 U 不完整：{reason}</translation>
+    </message>
+    <message>
         <source>Expanded uncertainty U (p = {p} %)</source>
         <translation>扩展不确定度 U（p = {p} %）</translation>
     </message>
@@ -2972,6 +2984,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>This is a non-standard method, published in the reference above and implemented in AngleBench {version}. Its validation record (ISO/IEC 17025 7.2.2) is the validation report of that version (anglebench validate): the reference figures of the publication and exact simulations with known truth, each with its result.</source>
         <translation>本方法为非标准方法，发表于上述参考文献，由 AngleBench {version} 实现。其确认记录（ISO/IEC 17025 7.2.2）为该版本的确认报告（anglebench validate）：原文的参考数据和已知真值的精确仿真，各附结果。</translation>
+    </message>
+    <message>
+        <source>No expanded uncertainty is stated for the results: {reason}. The budget below holds only the inputs that could be evaluated; they alone give {u} at most (k = {k}, {p} %), a lower bound of U, not U.</source>
+        <translation>结果不给出扩展不确定度：{reason}。下面的不确定度预算只包含能够评定的输入量；仅由它们得到的最大值为 {u}（k = {k}，{p} %），这是 U 的下限，不是 U。</translation>
     </message>
     <message>
         <source>The expanded uncertainty of the error is U = {u} (the largest over the points; each point&apos;s U is in the results table). At each point it is the combined standard uncertainty multiplied by the coverage factor k of Student&apos;s t for that point&apos;s effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of {p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM (JCGM 100:2008).</source>
@@ -5144,6 +5160,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>读数与不确定度预算矛盾：其半峰峰值 {measured} 低于预算的噪声单独作用于平直曲线时在 99.9 % 的试验中给出的 {floor}，因此该噪声不是这些读数的噪声，不给出包含区间（见预算中噪声输入量的说明）</translation>
     </message>
     <message>
+        <source>the decided quantity has no coverage interval (the data do not determine one); as measured, half the peak-to-peak is {measured}</source>
+        <translation>判定量没有包含区间（数据无法确定）；按测得值，峰峰值的一半为 {measured}</translation>
+    </message>
+    <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
         <translation>该区间在验证中达到的包含概率（噪声为半峰峰值的 0.1 至 2 倍，12 至 72 点，每种形状 12 个单元、每单元 100 次，合并计）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际曲线 {sample} %；没有任何单元低于所述的 {p} % 超出其次数的二项分布离散</translation>
     </message>
@@ -7139,6 +7159,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The first {per} samples are shown (every {step}-th), and the samples with the extremes of each error and the largest U; all {n} samples are in the CSV/XLSX results export.</source>
         <translation>列出前 {per} 个采样点（每 {step} 个取一个），以及各误差取极值和 U 最大的采样点；全部 {n} 个采样点在 CSV/XLSX 结果导出文件中。</translation>
+    </message>
+    <message>
+        <source>No U is stated per sample: {reason}.</source>
+        <translation>各采样点不给出 U：{reason}。</translation>
     </message>
     <message>
         <source>Results per sample (compensated = raw + correction)</source>

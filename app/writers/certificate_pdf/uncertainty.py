@@ -15,14 +15,24 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
     pdf.heading(label(document, "Measurement uncertainty"))
     big_u = document.expanded_uncertainty
     budget_ = document.budget
-    pdf.paragraph(message(QT_TR_NOOP(
-        "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
-        "point's U is in the results table). At each point it is the combined standard "
-        "uncertainty multiplied by the coverage factor k of Student's t for that point's "
-        "effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of "
-        "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
-        "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
-        p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
+    if document.uncertainty_withheld:
+        evaluated = budget_.max_expanded
+        pdf.paragraph(message(QT_TR_NOOP(
+            "No expanded uncertainty is stated for the results: {reason}. The budget below "
+            "holds only the inputs that could be evaluated; they alone give {u} at most (k = "
+            "{k}, {p} %), a lower bound of U, not U."),
+            reason=document.uncertainty_withheld,
+            u=f"{evaluated:.{uncertainty_decimals(evaluated)}f}{document.unit}",
+            p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
+    else:
+        pdf.paragraph(message(QT_TR_NOOP(
+            "The expanded uncertainty of the error is U = {u} (the largest over the points; each "
+            "point's U is in the results table). At each point it is the combined standard "
+            "uncertainty multiplied by the coverage factor k of Student's t for that point's "
+            "effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of "
+            "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
+            "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
+            p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
     budget = budget_table(document.budget, document.budget_point, document.unit)
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
                    ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -109,3 +110,59 @@ def test_a_stated_adc_rounding_and_linearity_do_not_lower_the_decided_value(caps
     assert stated["interval_low"] <= bare["interval_low"]
     truth = _true_half_range(head)
     assert stated["interval_low"] <= truth <= stated["interval_high"]
+
+
+def test_an_estimated_phase_states_no_u_on_the_certificate_the_results_or_the_dcc(
+        capsys, tmp_path):
+    """The JSON withheld U per sample; the certificate, its results workbook and its DCC
+    printed it (0.012" on the bundled sample's signals, a U the audit's records showed to
+    cover 15-19 % of the samples). Now none states one: the PDF says why and gives the
+    inputs evaluated as a lower bound only, the workbook's U column is gone, the DCC's errors
+    carry no uncertainty; the decided half range's reason quotes the half range measured."""
+    from openpyxl import load_workbook
+    from pypdf import PdfReader
+
+    head = Head(peak_a=0.5, peak_b=0.49, quadrature_deg=1.5, offset_a=0.004, offset_b=-0.006,
+                harmonics={3: (0.004, 0.4)}, noise=0.0003)
+    theta = 0.3 + np.arange(8 * 64) * (2 * math.pi / 64)
+    record = tmp_path / "estimated.csv"
+    _record(record, head, theta, np.random.default_rng(5))
+    meta = tmp_path / "meta.json"
+    details = json.loads((Path(__file__).parents[3] / "resources" / "samples"
+                          / "certificate_fringe.json").read_text(encoding="utf-8"))
+    details.update(tolerance=2.0, decision_quantity="half_range")  # the bundled specimen's
+    meta.write_text(json.dumps(details))
+    pdf, dcc, xlsx = tmp_path / "c.pdf", tmp_path / "c.xml", tmp_path / "r.xlsx"
+    code = main(["analyze", "fringe", str(record), "--metadata", str(meta), "--lines-per-rev",
+                 str(LINES), "--language", "en", "--certificate", str(pdf), "--dcc", str(dcc),
+                 "--results", str(xlsx), "--json"])
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    data = json.loads(out.out[out.out.index("{"):])
+    measured = data["decided_quantity"]["value"]
+    text = " ".join(" ".join(page.extract_text().split()) for page in PdfReader(pdf).pages)
+    assert "No expanded uncertainty is stated for the results" in text
+    assert "a lower bound of U, not U" in text
+    assert "No U is stated per sample" in text
+    assert "Expanded uncertainty U not stated" in text
+    assert f"as measured, half the peak-to-peak is {measured:.3g}\"" in text
+    assert "Compensated error in the first period (no U stated)" in text
+    xml = dcc.read_text(encoding="utf-8")
+    assert "U of the inputs evaluated only (incomplete: a lower bound, not U)" in xml
+    errors = xml[xml.index("anglebench_rawError\">"):]
+    errors = errors[:errors.index("</dcc:quantity>")]
+    assert "expandedMU" not in errors and "realListXMLList" in errors
+    book = load_workbook(xlsx, read_only=True)
+    headers = [str(c) for sheet in book.worksheets for row in sheet.iter_rows(max_row=3,
+               values_only=True) for c in row if c is not None]
+    assert not any(h.startswith("expanded_uncertainty") for h in headers), headers
+    # with the phase given, the same record states U everywhere again
+    given = tmp_path / "given.csv"
+    _record(given, head, theta, np.random.default_rng(5), with_theta=True)
+    code = main(["analyze", "fringe", str(given), "--metadata", str(meta), "--lines-per-rev",
+                 str(LINES), "--language", "en", "--certificate", str(pdf)])
+    capsys.readouterr()
+    assert code == 0
+    text = " ".join(" ".join(page.extract_text().split()) for page in PdfReader(pdf).pages)
+    assert "No expanded uncertainty is stated" not in text
+    assert "The expanded uncertainty of the error is U =" in text
