@@ -1,6 +1,6 @@
 """The positioning workbench's decided quantity: half the peak-to-peak of the mean positional
 deviations of the directions measured — E/2 of ISO 230-2 (E↑/2 or E↓/2 for one direction) —
-with E's own coverage interval halved (models.positioning.figure_intervals), so that the
+with E's own coverage interval halved (models.uncertainty.figure_intervals), so that the
 certificate, the JSON and the DCC state one interval for one quantity, at the probability
 that interval reached in the validation study.
 
@@ -17,10 +17,10 @@ import math
 from dataclasses import dataclass
 
 from models.messages import QT_TR_NOOP, message
-from models.positioning.figure_intervals import INTERVAL_TRIALS, FigureInterval, readings_seed
 from models.positioning.model import PositioningResult
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate
+from models.uncertainty.figure_intervals import INTERVAL_TRIALS, FigureInterval, readings_seed
 
 __all__ = ["COARSE_DECIDED", "DECIDED_METHOD", "FigureHalfRange", "decided_figure", "decided_half_range"]
 

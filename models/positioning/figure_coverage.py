@@ -144,7 +144,7 @@ def achieved_probability(hits: np.ndarray, tests: int) -> float | None:
     """The highest of :data:`PROBABILITY_STEPS` that the coverage pooled over the axes
     reaches and that no axis falls short of beyond the binomial test (one-sided,
     :data:`ALPHA`; ``tests`` tests an axis); None below 80 %. How the probabilities of
-    models.positioning.figure_intervals.ACHIEVED were derived."""
+    models.uncertainty.figure_intervals.ACHIEVED were derived."""
     hits = np.asarray(hits)
     pooled = float(np.sum(hits)) / (tests * hits.size)
     for p in PROBABILITY_STEPS:

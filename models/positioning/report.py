@@ -43,13 +43,6 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, listed, message
 from models.positioning import KEY, TITLE
 from models.positioning.decided_quantity import decided_half_range
-from models.positioning.figure_intervals import (
-    INTERVAL_TRIALS,
-    FigureInterval,
-    axis_figures,
-    figure_intervals,
-    readings_seed,
-)
 from models.positioning.model import (
     MIN_RUNS,
     SIGN_CONVENTION_TEXT,
@@ -61,6 +54,13 @@ from models.positioning.plots import deviation_figure, reversal_figure
 from models.readings.resolution import step_counts
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.conformity import uncertainty_decimals
+from models.uncertainty.figure_intervals import (
+    INTERVAL_TRIALS,
+    FigureInterval,
+    axis_figures,
+    figure_intervals,
+    readings_seed,
+)
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["FIGURE_NAMES", "axis_figures", "figure_uncertainties", "intervals_determined",
@@ -284,7 +284,7 @@ def intervals_determined(result: PositioningResult) -> bool:
 def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | None = None
                          ) -> dict[str, FigureInterval]:
     """The coverage interval of every ISO 230-2 and VDI/DGQ 3441 figure
-    (models.positioning.figure_intervals), seeded from the readings; ``budget`` gives the
+    (models.uncertainty.figure_intervals), seeded from the readings; ``budget`` gives the
     Type B inputs (the reference standards, the stated inputs) and the probability; without
     it, the result's own stated inputs at 95.45 %. Empty when some target was approached
     fewer than twice in a direction."""

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata
-from models.messages import QT_TR_NOOP, lines, message
+from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
 from models.plots import PlotFigure
 from models.readings.entry_plan import EntryPlan, targets_from_text, theodolite_plan
@@ -219,6 +219,27 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
     return out
 
 
+def _intervals_line(result: TheodoliteResult) -> str:
+    """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
+    the readings alone, at 95.45 %), or why there are none."""
+    from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
+    from models.theodolite.report import theodolite_budget
+    from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+
+    withheld = figure_intervals_withheld(result)
+    if withheld is not None:
+        return message(QT_TR_NOOP("No coverage intervals: {reason}"), reason=message(withheld))
+    intervals = theodolite_figure_intervals(result, theodolite_budget(result,
+                                                                      CertificateMetadata()))
+    parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %): "),
+                           p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
+    for i, (key, iv) in enumerate(intervals.items()):
+        parts += [", " if i else "", f"{key} {iv.low:.2f} … {iv.high:.2f}\""]
+        if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
+            parts.append(f" ({100 * iv.probability:.1f} %)")
+    return joined(parts)
+
+
 def summary(result: TheodoliteResult) -> str:
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
@@ -246,6 +267,7 @@ def summary(result: TheodoliteResult) -> str:
     if result.iso230 is not None:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
         out.append(f"ISO 230-2: {figs}")
+        out.append(_intervals_line(result))
         note = once_note(result.iso230, "°")
         if note is not None:
             out.append(note)
@@ -298,6 +320,18 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         from models.theodolite.report import theodolite_json_budgets
 
         return dict(theodolite_json_budgets(result, metadata, settings))
+
+    def certified_json(self, result: TheodoliteResult, metadata: CertificateMetadata,
+                       settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
+        # the ISO 230-2 figures of a run with passes with their intervals (the certificate's
+        # budget: its stated theodolite u), as the certificate prints them
+        from models.theodolite.figures import theodolite_figures_json
+        from models.theodolite.report import stated_reading_uncertainty, theodolite_budget
+
+        if result.iso230 is None:
+            return {}
+        return theodolite_figures_json(result, theodolite_budget(result, metadata, settings),
+                                       stated_reading_uncertainty(metadata)[0])
 
     def decided_errors(self, result: TheodoliteResult, metadata: CertificateMetadata
                        ) -> np.ndarray:

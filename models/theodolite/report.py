@@ -90,7 +90,7 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text
+from models.uncertainty.conformity import expanded_text, uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
@@ -144,7 +144,7 @@ def _point_names(theta_deg: np.ndarray) -> list[str]:
             for i, t in enumerate(shown)]
 
 
-def _stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, list]:
+def stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, list]:
     """u_std, the root sum of squares of the stated standards' per-reading standard
     uncertainties (arcsec), and the standards that state one."""
     stated = [std for std in metadata.standards if std.uncertainty is not None]
@@ -229,7 +229,7 @@ def reading_error_components(result: TheodoliteResult,
     dof = max(n - 3, 1)
     res = result.elevation_residuals_arcsec
     s = float(np.sqrt(np.sum(res**2) / dof))
-    u_std, stated = _stated_reading_uncertainty(metadata)
+    u_std, stated = stated_reading_uncertainty(metadata)
     pooled = _pooled_repeats(result)
     s_rep, dof_rep, _ = pooled if pooled is not None else (0.0, 0, 1)
     # a mean's error: the standard's part (the same in every repeat) and the part that averages
@@ -317,6 +317,35 @@ def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetad
             "corrected_error_arcsec": full}
 
 
+def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
+                 metadata: CertificateMetadata) -> list[tuple[str, str, str]]:
+    """The ISO 230-2 figures of a run with passes, each with its coverage interval and the
+    probability it reached (models.theodolite.figures), or why it has none."""
+    from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
+
+    if result.iso230 is None:
+        return []
+    intervals = theodolite_figure_intervals(result, budget,
+                                            stated_reading_uncertainty(metadata)[0])
+    withheld = figure_intervals_withheld(result)
+    rows = []
+    for key, v in result.iso230.figures.items():
+        if not math.isfinite(v):
+            continue
+        iv = intervals.get(key)
+        if iv is None:
+            said = withheld is None or any(r[2] for r in rows)  # the reason once
+            rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", "" if said else message(
+                QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
+            continue
+        d = min(max(2, uncertainty_decimals(max(iv.high - iv.low, 1e-12) / 4.0)), 4)
+        rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
+            QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
+            low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
+            p=f"{100 * iv.probability:.2f}")))
+    return rows
+
+
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
                            source_name: str = "", method_reference: str = "",
                            settings: Mapping[str, Any] | None = None) -> CertificateDocument:
@@ -356,9 +385,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         (QT_TR_NOOP("Corrected error"), f"{c.min:+.2f}\" … {c.max:+.2f}\"",
          message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
                  rms=f"{c.rms:.2f}\"")),
-    ], QT_TR_NOOP("points"), after=[
-        (f"ISO 230-2 {k}", f"{v:.2f}\"", "") for k, v in
-        (result.iso230.figures.items() if result.iso230 is not None else ()) if math.isfinite(v)])
+    ], QT_TR_NOOP("points"), after=_iso230_rows(result, budget, metadata))
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,

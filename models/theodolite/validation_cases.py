@@ -4,10 +4,12 @@ shared machinery (models.validation.run gathers every workbench's)."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from models.certificate.metadata import CertificateMetadata, ReferenceStandard
-from models.messages import QT_TR_NOOP
+from models.messages import QT_TR_NOOP, message
 from models.theodolite.analysis import THEODOLITE
 from models.theodolite.model import analyze_run, induced_error_arcsec
 from models.theodolite.report import theodolite_budget
@@ -89,6 +91,92 @@ def theodolite_cases(trials: int) -> list[ValidationCase]:
     return cases
 
 
+#: the figures the passes' study states a case of, and their truth on the true distribution
+FIGURE_TRUTHS = {
+    "E": QT_TR_NOOP("range of d ± b/2"), "M": QT_TR_NOOP("range of d"),
+    "B": QT_TR_NOOP("|b|"), "B_mean": QT_TR_NOOP("b"), "R": QT_TR_NOOP("4σ + |b|"),
+    "A": QT_TR_NOOP("range of d ± b/2, + 4σ"),
+}
+
+
+def _passes_tests(tests: int, runs: int, sigma: float, circle: float,
+                  rng: np.random.Generator):
+    """(truth, intervals) of ``tests`` runs of ``runs`` × (forward, backward) passes over 21
+    θ: the axis' error d (a smooth curve of 2″ peak-to-peak, new in every test) with a
+    reversal b = 0.6″ (d ± b/2 forward and backward), the pointing noise σ new in every
+    reading, and the circle's error at each θ (standard deviation ``circle``, the same in
+    every pass); the theodolite stated at u = √(σ² + circle²) per reading."""
+    from models.theodolite.figures import theodolite_figure_intervals
+
+    theta = np.arange(-20.0, 20.1, 2.0)
+    b = 0.6
+    stated = float(np.hypot(sigma, circle))
+    meta = CertificateMetadata(standards=(ReferenceStandard("theodolite", uncertainty=stated,
+                                                            basis="u"),))
+    order = np.concatenate([theta, theta[::-1]] * runs)
+    sign = np.concatenate([np.ones(theta.size), -np.ones(theta.size)] * runs)
+    at = np.searchsorted(theta, order)
+    for _ in range(tests):
+        t = np.radians(theta)
+        d = np.sin(4.0 * t + rng.uniform(0, 2 * np.pi)) + 0.4 * np.cos(
+            9.0 * t + rng.uniform(0, 2 * np.pi))
+        d *= 2.0 / float(np.ptp(d))
+        c = rng.normal(0.0, circle, theta.size)
+        error = d[at] + 0.5 * b * sign
+        az, el = theodolite_readings(order - error / 3600.0, *THEODOLITE_SETUP)
+        az = az + (c[at] + rng.normal(0.0, sigma, order.size)) / 3600.0
+        el = el + rng.normal(0.0, sigma, order.size) / 3600.0
+        result = analyze_run(order, az, el, reference_index=int(np.argmin(np.abs(order))),
+                             directions=sign)
+        both = float(np.ptp(np.concatenate([d + 0.5 * b, d - 0.5 * b])))
+        truth = {"E": both, "M": float(np.ptp(d)), "B": b, "B_mean": b,
+                 "R": 4.0 * sigma + b, "A": both + 4.0 * sigma}
+        yield truth, theodolite_figure_intervals(result, theodolite_budget(result, meta), stated)
+
+
+def figure_coverage_cases(trials: int) -> list[ValidationCase]:
+    """One case per ISO 230-2 figure of a run with passes (models.theodolite.figures): its
+    interval's coverage of its truth over ``trials``/10 tests (at least 10) of each of three
+    worlds: 2 runs with pointing noise 0.3″, 4 runs with 0.6″, 3 runs with the circle's
+    error 0.4″ repeating in every pass and pointing noise 0.15″. Passes when no more tests
+    missed than the binomial test (one-sided, 1 %) allows at the probability printed."""
+    from scipy.stats import binom
+
+    tests = max(10, trials // 10)
+    rng = np.random.default_rng(2026)
+    hits = {k: 0 for k in FIGURE_TRUTHS}
+    count = {k: 0 for k in FIGURE_TRUTHS}
+    probability = {k: 1.0 for k in FIGURE_TRUTHS}
+    widths: dict[str, list[float]] = {k: [] for k in FIGURE_TRUTHS}
+    for runs, sigma, circle in ((2, 0.3, 0.0), (4, 0.6, 0.0), (3, 0.15, 0.4)):
+        for truth, intervals in _passes_tests(tests, runs, sigma, circle, rng):
+            for key in FIGURE_TRUTHS:
+                iv = intervals.get(key)
+                if iv is None:
+                    continue
+                count[key] += 1
+                hits[key] += int(iv.low - 1e-12 <= truth[key] <= iv.high + 1e-12)
+                probability[key] = min(probability[key], iv.probability)
+                widths[key].append(iv.high - iv.low)
+    out = []
+    for key, what in FIGURE_TRUTHS.items():
+        n, p = count[key], probability[key]
+        allowed = int(binom.ppf(0.99, n, 1.0 - p)) if n else 0
+        out.append(ValidationCase(
+            THEODOLITE.title,
+            message(QT_TR_NOOP("passes: interval of ISO 230-2 {figure} covers its truth ({truth}; "
+                               "d the axis' error, b its reversal, σ the pointing noise)"),
+                    figure=key, truth=message(what)),
+            QT_TR_NOOP("coverage study"),
+            message(QT_TR_NOOP("≥ {p} % (at most {allowed} of {tests} missed)"),
+                    p=f"{100 * p:.2f}", allowed=allowed, tests=n),
+            message(QT_TR_NOOP("{coverage} % ({missed} missed); mean width {width}"),
+                    coverage=f"{100 * hits[key] / max(n, 1):.1f}", missed=n - hits[key],
+                    width=f"{float(np.mean(widths[key])) if widths[key] else math.nan:.2f}\""),
+            n > 0 and n - hits[key] <= allowed))
+    return out
+
+
 def validation_cases(trials: int) -> list[ValidationCase]:
     """Every reference case of this workbench (``trials`` Monte Carlo runs a comparison)."""
-    return theodolite_cases(trials)
+    return theodolite_cases(trials) + figure_coverage_cases(trials)

@@ -617,6 +617,39 @@
         <translation>符号：示值偏大 1e-5 的轴系在 +20° 处读数为正</translation>
     </message>
     <message>
+        <source>range of d ± b/2</source>
+        <extracomment>the figures the passes&apos; study states a case of, and their truth on the true distribution</extracomment>
+        <translation>d ± b/2 的极差</translation>
+    </message>
+    <message>
+        <source>range of d</source>
+        <translation>d 的极差</translation>
+    </message>
+    <message>
+        <source>|b|</source>
+        <translation>|b|</translation>
+    </message>
+    <message>
+        <source>b</source>
+        <translation>b</translation>
+    </message>
+    <message>
+        <source>4σ + |b|</source>
+        <translation>4σ + |b|</translation>
+    </message>
+    <message>
+        <source>range of d ± b/2, + 4σ</source>
+        <translation>d ± b/2 的极差 + 4σ</translation>
+    </message>
+    <message>
+        <source>passes: interval of ISO 230-2 {figure} covers its truth ({truth}; d the axis&apos; error, b its reversal, σ the pointing noise)</source>
+        <translation>多测回：ISO 230-2 {figure} 的区间覆盖其真值（{truth}；d 为轴系误差，b 为其反向差，σ 为瞄准噪声）</translation>
+    </message>
+    <message>
+        <source>{coverage} % ({missed} missed); mean width {width}</source>
+        <translation>{coverage} %（未覆盖 {missed} 次）；平均宽度 {width}</translation>
+    </message>
+    <message>
         <source>largest |ε_x| at ψ = 10′, ω = 90°</source>
         <translation>ψ = 10′、ω = 90° 时 |ε_x| 的最大值</translation>
     </message>
@@ -870,6 +903,14 @@
         <source>Reading error (pointing)</source>
         <extracomment>the budget&apos;s names of the reading error at the point and at θ₀ (one input, two readings)</extracomment>
         <translation>读数误差（瞄准）</translation>
+    </message>
+    <message>
+        <source>no coverage interval: {reason}</source>
+        <translation>无包含区间：{reason}</translation>
+    </message>
+    <message>
+        <source>coverage interval {low} … {high} ({p} %)</source>
+        <translation>包含区间 {low} … {high}（{p} %）</translation>
     </message>
     <message>
         <source>Axis tilt ψ</source>
@@ -10032,6 +10073,15 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>{items}, {item}</source>
         <extracomment>how :func:`listed` joins the items of a list (names of inputs, fields, figures): Chinese puts the enumeration comma &quot;、&quot; between them, not the clause comma &quot;，&quot;</extracomment>
         <translation>{items}、{item}</translation>
+    </message>
+    <message>
+        <source>a θ was read fewer than twice in a direction: its standard deviation over the passes is unknown, so no ISO 230-2 figure has a coverage interval</source>
+        <extracomment>ISO 230-2 figure → the coverage the theodolite study reached at 95.45 % asked for, where below it (the probability printed is then this one)</extracomment>
+        <translation>某个 θ 在一个方向上读数少于两次：其各测回间的标准偏差未知，因此 ISO 230-2 的各项指标均无包含区间</translation>
+    </message>
+    <message>
+        <source>the corrected errors of every θ came out identical in each direction over the passes: their scatter cannot be told, so no ISO 230-2 figure has a coverage interval</source>
+        <translation>每个 θ 在各方向上各测回的修正后误差完全相同：无法得知其分散性，因此 ISO 230-2 的各项指标均无包含区间</translation>
     </message>
 </context>
 </TS>

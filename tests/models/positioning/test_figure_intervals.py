@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from models.positioning.figure_intervals import axis_figures, figure_intervals, world_truth
+from models.uncertainty.figure_intervals import axis_figures, figure_intervals, world_truth
 from models.validation.axis_figures_rig import SHAPES, AxisCase, true_figures
 
 
@@ -141,7 +141,7 @@ def test_the_ensemble_world_has_as_many_targets_near_the_crests_as_the_truth():
     distribution by NPMLE, values by rank) keeps about as many there, the constrained Bayes
     world (spread matched only) one to four: its range's bias came out too small and E's
     interval fell short below on smooth curves."""
-    from models.positioning.figure_intervals import _ensemble, _shrunk
+    from models.uncertainty.figure_intervals import _ensemble, _shrunk
 
     mu = np.sin(np.linspace(0.0, 2 * np.pi, 72, endpoint=False))
     near_truth = int(np.sum(mu > mu.max() - 0.2)) + int(np.sum(mu < mu.min() + 0.2))
@@ -161,7 +161,7 @@ def test_the_ensemble_world_has_as_many_targets_near_the_crests_as_the_truth():
 def test_the_ensemble_world_follows_the_readings_when_the_scatter_is_small():
     """With a scatter far below the curve's steps the world is the measured means (to the
     grid's step): nothing is made up."""
-    from models.positioning.figure_intervals import ENSEMBLE_GRID, _ensemble
+    from models.uncertainty.figure_intervals import ENSEMBLE_GRID, _ensemble
 
     x = np.sin(np.linspace(0.0, 2 * np.pi, 24, endpoint=False)) + 0.3 * np.arange(24) / 24
     world = _ensemble(x, np.full(24, 1e-8))

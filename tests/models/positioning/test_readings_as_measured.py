@@ -180,7 +180,7 @@ def test_the_roundings_are_not_widened_as_a_reference_s_errors_are():
     """The step of the readings is counted in U (s < δ), but a rounding is independent from
     target to target: it does not get the widening for errors of unknown correlation (it
     doubled E's interval in an audit, 1.1 → 2.7″ at a scatter of half the step)."""
-    from models.positioning.figure_intervals import figure_intervals, readings_seed
+    from models.uncertainty.figure_intervals import figure_intervals, readings_seed
 
     rng = np.random.default_rng(13)
     angle, up, down = _true_means(12, 1.0, 0.1)

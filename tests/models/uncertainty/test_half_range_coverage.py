@@ -335,7 +335,7 @@ def test_the_oracle_is_not_narrowed_by_few_runs():
 def test_the_width_study_decides_positioning_as_its_certificate_does():
     """Positioning decides E/2 with E's own interval at the probability its validation
     reached, not by the other workbenches' interval (which the study used until 0.8.1)."""
-    from models.positioning.figure_intervals import ACHIEVED
+    from models.uncertainty.figure_intervals import ACHIEVED
     from models.validation.half_range import width_cell
 
     cell = width_cell("positioning", "smooth", 12, 0.5, 2, seed=5)
