@@ -335,6 +335,10 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
 
     def decided_errors(self, result: TheodoliteResult, metadata: CertificateMetadata
                        ) -> np.ndarray:
+        from models.theodolite.pass_means import decided_on_means, pass_means
+
+        if metadata.decision_quantity == "half_range" and decided_on_means(result):
+            return pass_means(result)[0]  # the means over the passes (the certificate's)
         return result.corrected_error_arcsec
 
     def overlay_figure(self, result: TheodoliteResult) -> PlotFigure:

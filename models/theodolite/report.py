@@ -346,6 +346,25 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     return rows
 
 
+def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
+              settings: Mapping[str, Any] | None) -> Decision:
+    """The curve the statement of conformity is made on: with passes that determine it and
+    the half range decided, the means over the passes at each θ and direction with their
+    own budget (models.theodolite.pass_means); else every reading's corrected error."""
+    from models.theodolite.pass_means import (
+        MEANS_DECIDED,
+        decided_on_means,
+        pass_means,
+        pass_means_budget,
+    )
+
+    if metadata.decision_quantity == "half_range" and decided_on_means(result):
+        means, names = pass_means(result)
+        return Decision(means, MEANS_DECIDED, names, budget=pass_means_budget(
+            result, metadata, stated_reading_uncertainty(metadata)[0], settings))
+    return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg))
+
+
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,
                            source_name: str = "", method_reference: str = "",
                            settings: Mapping[str, Any] | None = None) -> CertificateDocument:
@@ -390,8 +409,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, statistics=statistics,
-        decision=Decision(result.corrected_error_arcsec,
-                          point_names=_point_names(result.theta_deg)),
+        decision=_decision(result, metadata, settings),
         budget_point=lambda worst: f"θ = {result.theta_deg[worst]:g}°",
         plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
                residual_figure(result)), warnings=result.warnings,

@@ -642,8 +642,16 @@
         <translation>d ± b/2 的极差 + 4σ</translation>
     </message>
     <message>
+        <source>half the range of d ± b/2</source>
+        <translation>d ± b/2 极差的一半</translation>
+    </message>
+    <message>
         <source>passes: interval of ISO 230-2 {figure} covers its truth ({truth}; d the axis&apos; error, b its reversal, σ the pointing noise)</source>
         <translation>多测回：ISO 230-2 {figure} 的区间覆盖其真值（{truth}；d 为轴系误差，b 为其反向差，σ 为瞄准噪声）</translation>
+    </message>
+    <message>
+        <source>passes: interval of the decided quantity (half the peak-to-peak of the means over the passes at each θ and direction) covers its truth ({truth})</source>
+        <translation>多测回：判定量（各测回在每个 θ 和方向上均值的峰峰值之半）的区间覆盖其真值（{truth}）</translation>
     </message>
     <message>
         <source>{coverage} % ({missed} missed); mean width {width}</source>
@@ -835,12 +843,33 @@
         <translation>参考读数（θ₀）</translation>
     </message>
     <message>
+        <source>corrected error, the mean over the passes at each θ and direction</source>
+        <extracomment>what the decision names as its curve</extracomment>
+        <translation>修正后误差（各测回在每个 θ 和方向上的均值）</translation>
+    </message>
+    <message>
+        <source>Pointing noise of a mean over the passes</source>
+        <translation>测回均值的瞄准噪声</translation>
+    </message>
+    <message>
+        <source>Theodolite&apos;s circle error at each θ (the stated u less the passes&apos; scatter)</source>
+        <translation>经纬仪度盘在每个 θ 处的误差（所给 u 扣除测回分散性）</translation>
+    </message>
+    <message>
+        <source>s = {s} per reading, pooled over the passes at every θ and direction (ν = {dof}), over √n of each mean</source>
+        <translation>每次读数 s = {s}，由各测回在每个 θ 和方向上合并（ν = {dof}），再除以每个均值的 √n</translation>
+    </message>
+    <message>
         <source>Set-up model ζ (ψ, α, β)</source>
         <translation>安装模型 ζ（ψ, α, β）</translation>
     </message>
     <message>
         <source>covariance of the identified parameters propagated through ζ(θ)</source>
         <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
+    </message>
+    <message>
+        <source>√(u² − s²) = {circle}: the stated u = {u} per reading less the passes&apos; scatter s = {s}, the same at a θ in every pass</source>
+        <translation>√(u² − s²) = {circle}：所给每次读数 u = {u} 扣除测回分散性 s = {s}，在每个测回中同一 θ 处相同</translation>
     </message>
     <message>
         <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of A − θ in the published method (Tian et al. 2017); the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>

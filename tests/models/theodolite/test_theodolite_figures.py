@@ -1,11 +1,10 @@
 """The ISO 230-2 figures of a theodolite run with passes carry coverage intervals that cover
 (issue 39: every summary figure with an interval whose coverage a simulation shows).
 
-The rig is this file's own (numpy only, nothing from the code it checks): the frame of
-../shared/SPEC.md §1 (OZ plumb down, OX the azimuth zero), the axis tilted by ψ towards α,
-the mirror normal at the axis' zero [cos β, 0, −sin β], turned right-handed about the axis by
-its TRUE rotation θ − d(θ) (Rodrigues); the theodolite reads atan2(y, x) and asin z. The
-axis' error d has a reversal: d↑ = d + b/2 forward, d↓ = d − b/2 backward. Each pass reads
+The rig is tests/theodolite_passes_simulator.py (numpy only, nothing from the code it
+checks): the frame of ../shared/SPEC.md §1, the mirror turned by the axis' TRUE rotation
+(Rodrigues), the theodolite reading its normal's azimuth and elevation. The axis' error d
+has a reversal: d↑ = d + b/2 forward, d↓ = d − b/2 backward. Each pass reads
 every θ once, forward then backward; the runs repeat the passes. Two worlds of the reading
 error: pointing noise alone (new in every reading), the theodolite stated at u = σ; or the
 circle's own error at each θ (the same in every pass, standard deviation u_c) with a smaller
@@ -27,52 +26,7 @@ import pytest
 from scipy.stats import binom
 
 from app.main import main
-
-THETA = np.arange(-12.0, 12.1, 2.0)  # 13 points, θ₀ = 0 among them
-PSI, ALPHA, BETA = 1.5, 65.0, -2.0  # deg
-
-
-def _rotate(v: np.ndarray, axis: np.ndarray, phi: float) -> np.ndarray:
-    k = axis / np.linalg.norm(axis)
-    return v * math.cos(phi) + np.cross(k, v) * math.sin(phi) + k * (k @ v) * (1 - math.cos(phi))
-
-
-def _readings(true_rotation_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Azimuth and elevation (deg) of the mirror normal, noise-free."""
-    psi, alpha, beta = np.radians([PSI, ALPHA, BETA])
-    axis = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha),
-                     math.cos(psi)])
-    normal = np.array([math.cos(beta), 0.0, -math.sin(beta)])
-    out = np.array([_rotate(normal, axis, phi) for phi in np.radians(true_rotation_deg)])
-    return np.degrees(np.arctan2(out[:, 1], out[:, 0])), np.degrees(np.arcsin(out[:, 2]))
-
-
-def _run(path, rng, runs: int, sigma: float, reversal: float, circle: float = 0.0):
-    """A record of ``runs`` × (forward, backward) passes; returns the true figures."""
-    t = np.radians(THETA)
-    d = 1.2 * np.sin(5.0 * t + rng.uniform(0, 2 * math.pi)) + 0.4 * np.cos(
-        11.0 * t + rng.uniform(0, 2 * math.pi))  # the axis' error, arcsec
-    c = rng.normal(0.0, circle, THETA.size)  # the circle's error at each θ's position
-    rows = ["theta_deg,azimuth_deg,elevation_deg,run,direction"]
-    for run in range(1, runs + 1):
-        for sign, order in ((+1, THETA), (-1, THETA[::-1])):
-            i = np.searchsorted(THETA, order)
-            error = d[i] + sign * 0.5 * reversal
-            az, el = _readings(order - error / 3600.0)
-            az = az + (c[i] + rng.normal(0.0, sigma, order.size)) / 3600.0
-            el = el + rng.normal(0.0, sigma, order.size) / 3600.0
-            rows += [f"{a:.9f},{b:.9f},{e:.9f},{run},{'+' if sign > 0 else '-'}"
-                     for a, b, e in zip(order, az, el, strict=True)]
-    path.write_text("\n".join(rows) + "\n")
-    # the figures are the axis': the circle's errors (the same at a θ in every pass) are an
-    # error of the measurement, in the means as part of the curve, which the interval holds
-    curve = d
-    e_range = float(np.ptp(np.concatenate([curve + 0.5 * reversal, curve - 0.5 * reversal])))
-    return {"E": e_range, "M": float(np.ptp(curve)), "B": abs(reversal), "B_mean": reversal,
-            "R_up": 4 * sigma, "R_down": 4 * sigma, "R": 4 * sigma + abs(reversal),
-            "E_up": float(np.ptp(curve)), "E_down": float(np.ptp(curve)),
-            "A": e_range + 4 * sigma, "A_up": float(np.ptp(curve)) + 4 * sigma,
-            "A_down": float(np.ptp(curve)) + 4 * sigma}
+from tests.theodolite_passes_simulator import passes_record as _run
 
 
 def _figures(capsys, tmp_path, record, stated: float) -> dict:
