@@ -33,31 +33,36 @@ def _readings(true_rotation_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def passes_record(path, rng, runs: int, sigma: float, reversal: float,
-                  circle: float = 0.0) -> dict[str, float]:
+                  circle: float = 0.0, axis_noise: float = 0.0,
+                  directions: bool = True) -> dict[str, float]:
     """Write a record of ``runs`` × (forward, backward) passes to ``path``; return the true
     ISO 230-2 figures of the axis (the circle's errors are an error of the measurement, not
-    the axis': they are in no truth)."""
+    the axis': they are in no truth). ``axis_noise``: the axis' own non-repeatability, a
+    random error of its true rotation at every approach (in R and A, as ISO 230-2 counts
+    it); ``directions`` False: no run and direction columns (θ repeated)."""
     t = np.radians(THETA)
     d = 1.2 * np.sin(5.0 * t + rng.uniform(0, 2 * math.pi)) + 0.4 * np.cos(
         11.0 * t + rng.uniform(0, 2 * math.pi))  # the axis' error, arcsec
     c = rng.normal(0.0, circle, THETA.size)  # the circle's error at each θ's position
-    rows = ["theta_deg,azimuth_deg,elevation_deg,run,direction"]
+    rows = ["theta_deg,azimuth_deg,elevation_deg" + (",run,direction" if directions else "")]
     for run in range(1, runs + 1):
         for sign, order in ((+1, THETA), (-1, THETA[::-1])):
             i = np.searchsorted(THETA, order)
-            error = d[i] + sign * 0.5 * reversal
+            error = d[i] + sign * 0.5 * reversal + rng.normal(0.0, axis_noise, order.size)
             az, el = _readings(order - error / 3600.0)
             az = az + (c[i] + rng.normal(0.0, sigma, order.size)) / 3600.0
             el = el + rng.normal(0.0, sigma, order.size) / 3600.0
-            rows += [f"{a:.9f},{b:.9f},{e:.9f},{run},{'+' if sign > 0 else '-'}"
+            tail = f",{run},{'+' if sign > 0 else '-'}" if directions else ""
+            rows += [f"{a:.9f},{b:.9f},{e:.9f}{tail}"
                      for a, b, e in zip(order, az, el, strict=True)]
     path.write_text("\n".join(rows) + "\n")
     # the figures are the axis': the circle's errors (the same at a θ in every pass) are an
     # error of the measurement, in the means as part of the curve, which the interval holds
     curve = d
     e_range = float(np.ptp(np.concatenate([curve + 0.5 * reversal, curve - 0.5 * reversal])))
+    s = math.hypot(sigma, axis_noise)  # one reading's scatter over the passes
     return {"E": e_range, "M": float(np.ptp(curve)), "B": abs(reversal), "B_mean": reversal,
-            "R_up": 4 * sigma, "R_down": 4 * sigma, "R": 4 * sigma + abs(reversal),
+            "R_up": 4 * s, "R_down": 4 * s, "R": 4 * s + abs(reversal),
             "E_up": float(np.ptp(curve)), "E_down": float(np.ptp(curve)),
-            "A": e_range + 4 * sigma, "A_up": float(np.ptp(curve)) + 4 * sigma,
-            "A_down": float(np.ptp(curve)) + 4 * sigma}
+            "A": e_range + 4 * s, "A_up": float(np.ptp(curve)) + 4 * s,
+            "A_down": float(np.ptp(curve)) + 4 * s}

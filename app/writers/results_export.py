@@ -249,8 +249,9 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) 
         for row in block.tolist():
             sheet.append([v if np.isfinite(v) else None for v in row])
     for title, table in (("Parameters", document.parameters), ("Statistics", document.statistics),
-                         ("Uncertainty budget", budget_table(document.budget,
-                                                             document.budget_point))):
+                         ("Uncertainty budget", budget_table(
+                             document.budget, document.budget_point,
+                             withheld=bool(document.uncertainty_withheld)))):
         ws = book.create_sheet(title)
         header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit))
         ws.append([neutralise(h) for h in header])

@@ -12,6 +12,8 @@ rest the same way for every workbench.
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -156,6 +158,12 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    point_names=decision.point_names,
                                    not_stated=decision.not_stated,
                                    estimate=decision.estimate)
+    if more.get("uncertainty_withheld") and math.isfinite(conformity.expanded):
+        # no U stated for the results: the decided value has no interval either (the fringe's
+        # every-point decision on an estimated phase printed ±U of the incomplete budget)
+        conformity = dataclasses.replace(conformity, expanded=math.nan,
+                                         expanded_lower=math.nan, conforming_probability=math.nan,
+                                         decision_risk=math.nan)
     return CertificateDocument(
         kind_key=kind_key, kind_title=kind_title, metadata=metadata, source_name=source_name,
         method=method, method_reference=method_reference, parameters=parameters,

@@ -147,8 +147,11 @@ def _dof_figure(nu: float) -> str:
     return f"{nu / 10 ** exponent:.1f}×10{superscript}"
 
 
-def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Table:
-    """The budget at its worst point as a printable table, with the combined line."""
+def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
+                 withheld: bool = False) -> Table:
+    """The budget at its worst point as a printable table, with the combined line
+    (``withheld``: no U is stated for the results, so its last line is named as what it
+    is, the inputs evaluated only)."""
     rows = []
     for r in budget.table():
         dof = _dof_text(r["dof"])
@@ -163,8 +166,9 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"") -> Tab
     rows.append((QT_TR_NOOP("Combined standard u_c"), "", "", "", "", "", "", _fmt(uc), "100.0",
                  nu_text))
     k = budget.coverage_factor
-    rows.append((message(QT_TR_NOOP("Expanded U (k = {k})"), k=f"{k:.2f}"), "", "", "", "", "",
-                 "", _fmt(k * uc), "", ""))
+    rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
+                                    "not U") if withheld else QT_TR_NOOP("Expanded U (k = {k})"),
+                         k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
     note = message(QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
                               "Student's t for ν = {nu}, the effective degrees of freedom "
                               "(Welch–Satterthwaite: {raw}) truncated to the lower integer "

@@ -36,6 +36,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.resolution import readings_step
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
@@ -485,6 +486,7 @@ def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
     return {
         "iso230_2_figures": _figure_objects(ISO_KEYS, result.iso.figures, intervals),
         "vdi3441_figures": _figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
+        "figure_intervals_note": message(FIGURE_VALUE_NOTE),
         "coverage_probability": (DEFAULT_COVERAGE_PROBABILITY if budget is None
                                  else float(budget.probability)),
     }

@@ -85,10 +85,11 @@ PARAMETERS = (
         REPEATS_PARAMETER,
         help="n readings taken one after another at each θ point: every n rows are one point, "
              "averaged. The budget's reading error of a point's mean is one input, the larger "
-             "of the fit's scatter of the means and √(u² + (s/√n)²): the stated standards' u "
-             "per reading (not divided by √n: the instrument's error at that circle position "
-             "is the same in every repeat) with the repeats' pooled s/√n (ν = points · "
-             "(n − 1)). 1: every row is a point"),
+             "of the fit's scatter of the means and √(u_c² + (s/√n)²): the repeats' pooled "
+             "s/√n (ν = points · (n − 1)) with u_c = √max(u² − s², 0), the part of the stated "
+             "standards' u per reading the repeats do not show to scatter (the instrument's "
+             "error at that circle position, the same in every repeat: not divided by √n). "
+             "1: every row is a point"),
     Parameter("plan_passes", "entry plan: passes", "int", 0, minimum=1, maximum=100,
               zero="no plan", cli=False,
               help="Passes of the entry plan over the θ steps below: entry fills θ (and run "
@@ -231,7 +232,8 @@ def _intervals_line(result: TheodoliteResult) -> str:
         return message(QT_TR_NOOP("No coverage intervals: {reason}"), reason=message(withheld))
     intervals = theodolite_figure_intervals(result, theodolite_budget(result,
                                                                       CertificateMetadata()))
-    parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %): "),
+    parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings alone; a "
+                                      "certificate adds its stated standards' u): "),
                            p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
     for i, (key, iv) in enumerate(intervals.items()):
         parts += [", " if i else "", f"{key} {iv.low:.2f} … {iv.high:.2f}\""]

@@ -13,17 +13,19 @@ inputs that are one value at a θ, with the readings without them), fed with:
 * per θ, the inputs whose error is the same at that θ in every pass and both directions
   (the positioning's "Type B per target"): the set-up model's error (ψ, α, β are identified
   once for the run, so ζ's error at a θ repeats in every pass), and the part of the stated
-  theodolite's u per reading that the passes' own scatter does not show,
-  √max(u_std² − s_pooled², 0): the circle's error at the position it reads for that θ, the
-  same in every pass. Where the stated u is all pointing noise, the scatter shows it and
-  nothing is left over; where it is the circle's error, the scatter does not.
+  theodolite's u per reading that the readings do not show to scatter,
+  √max(u_std² − s_pointing², 0) (:func:`pointing_per_reading`): the circle's error at the
+  position it reads for that θ, the same in every pass. Where the stated u is all pointing
+  noise, the scatter shows it and nothing is left over; where it is the circle's error, the
+  scatter does not.
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
 The probability printed beside a figure is the lower of the one asked for and the one the
-positioning study reached (models.uncertainty.figure_intervals.ACHIEVED) and the theodolite
-study (:data:`THEODOLITE_ACHIEVED`, tests/models/theodolite/test_theodolite_figures.py and
-the closing note of 0.8.6).
+positioning study reached (models.uncertainty.figure_intervals.ACHIEVED); the theodolite's
+own studies (models.theodolite.validation_cases, tests/models/theodolite/
+test_theodolite_figures.py, and an independent audit of 2,800 runs in 14 cells) reached at
+least it in every cell.
 """
 
 from __future__ import annotations
@@ -35,24 +37,25 @@ from typing import Any
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
+from models.readings.repeats import RepeatedReadings
 from models.theodolite.model import TheodoliteResult
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import readings_seed
-from models.uncertainty.figure_intervals import FigureInterval, figure_intervals
+from models.uncertainty.figure_intervals import (
+    FIGURE_VALUE_NOTE,
+    FigureInterval,
+    figure_intervals,
+)
 
-__all__ = ["THEODOLITE_ACHIEVED", "figure_intervals_withheld", "theodolite_figure_intervals",
-           "theodolite_figures_json"]
-
-#: ISO 230-2 figure → the coverage the theodolite study reached at 95.45 % asked for, where
-#: below it (the probability printed is then this one)
-THEODOLITE_ACHIEVED: dict[str, float] = {}
+__all__ = ["figure_intervals_withheld", "pointing_per_reading", "pooled_repeats",
+           "repeated_at_each_theta", "theodolite_figure_intervals", "theodolite_figures_json"]
 
 ONCE_ONLY = QT_TR_NOOP("a θ was read fewer than twice in a direction: its standard deviation "
                        "over the passes is unknown, so no ISO 230-2 figure has a coverage "
                        "interval")
-NO_SCATTER = QT_TR_NOOP("the corrected errors of every θ came out identical in each direction "
-                        "over the passes: their scatter cannot be told, so no ISO 230-2 figure "
-                        "has a coverage interval")
+NO_SCATTER = QT_TR_NOOP("the corrected errors of every θ came out identical over the passes in "
+                        "a direction: their scatter cannot be told (readings rounded coarser "
+                        "than they scatter?), so no ISO 230-2 figure has a coverage interval")
 
 
 def _directions(result: TheodoliteResult):
@@ -72,8 +75,8 @@ def figure_intervals_withheld(result: TheodoliteResult) -> str | None:
     if not all(np.all(stats.runs >= 2) and np.all(np.isfinite(stats.std))
                for _, stats in present):
         return ONCE_ONLY
-    if all(np.all(stats.std == 0.0) for _, stats in present):
-        return NO_SCATTER
+    if any(np.all(stats.std == 0.0) for _, stats in present):  # one direction is enough:
+        return NO_SCATTER  # its figures would get a zero-width interval
     return None
 
 
@@ -91,17 +94,55 @@ def _per_theta(result: TheodoliteResult, values) -> np.ndarray:
     return out
 
 
-def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
-                           ) -> tuple[np.ndarray, float, float]:
-    """The standard uncertainty at each θ of the inputs that repeat in every pass (the
-    set-up model's error; the stated u's part the passes do not show), ``pair_u`` (the
-    largest standard deviation they give the difference of two θ's errors: u_i + u_j for
-    each, whatever their correlation) and that part of the stated u."""
+def pooled_repeats(result: TheodoliteResult) -> tuple[float, int, int] | None:
+    """With n readings per point, the pooled standard deviation of a point's mean azimuth,
+    s_repeat/√n (arcsec; the points' s/√n pooled, every point having n readings), its
+    ν = points · (n − 1) and n; None with one reading a point."""
+    repeats = result.repeats
+    if not isinstance(repeats, RepeatedReadings):
+        return None
+    s_mean = 3600.0 * np.asarray(repeats.s_mean["azimuth_deg"], dtype=float)
+    return float(np.sqrt(np.mean(s_mean**2))), int(s_mean.size * repeats.dof), repeats.n
+
+
+def passes_scatter(result: TheodoliteResult) -> tuple[float, float]:
+    """The corrected error's standard deviation over the passes, pooled over every θ and
+    direction, and its ν."""
     present = _directions(result)
     nu = sum(float(np.sum(stats.runs - 1)) for _, stats in present)
     ss = sum(float(np.nansum((stats.runs - 1) * stats.std**2)) for _, stats in present)
-    pooled = math.sqrt(ss / nu) if nu > 0 else 0.0
-    circle = math.sqrt(max(stated_u**2 - pooled**2, 0.0))
+    return (math.sqrt(ss / nu) if nu > 0 else 0.0), nu
+
+
+def pointing_per_reading(result: TheodoliteResult) -> float:
+    """The theodolite's own pointing noise per reading, as the readings show it, for what
+    of its stated u averages: with n readings a point, the repeats' s_repeat (the axis does
+    not move between them); else the smaller of the passes' scatter and the vertical
+    readings' scatter about the fit (an autocollimating theodolite sets on the mirror as
+    repeatably in elevation as in azimuth). The passes' scatter alone also holds the axis'
+    own non-repeatability: where the axis scatters more than the theodolite points, taking
+    it for the pointing noise left the circle's error out (a reviewer's rig: pointing 0.1″,
+    axis 0.5″, circle 0.4″ — 4 of 20 decided intervals missed)."""
+    repeats = pooled_repeats(result)
+    if repeats is not None:
+        s_mean, _, n = repeats
+        return s_mean * math.sqrt(n)
+    passes, _ = passes_scatter(result)
+    dof = result.elevation_residuals_arcsec.size - 3
+    if dof < 1:
+        return passes
+    fit = math.sqrt(float(np.sum(result.elevation_residuals_arcsec**2)) / dof)
+    return min(passes, fit)
+
+
+def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
+                           ) -> tuple[np.ndarray, float, float]:
+    """The standard uncertainty at each θ of the inputs that repeat in every pass (the
+    set-up model's error; the stated u's part the readings do not show to scatter,
+    √max(u² − s_pointing², 0), :func:`pointing_per_reading`), ``pair_u`` (the largest
+    standard deviation they give the difference of two θ's errors: u_i + u_j for each,
+    whatever their correlation) and that part of the stated u."""
+    circle = math.sqrt(max(stated_u**2 - pointing_per_reading(result)**2, 0.0))
     model = _per_theta(result, result.model_uncertainty_arcsec)
     u_b = np.sqrt(model**2 + circle**2)
     pair = math.hypot(2.0 * float(np.max(model)) if model.size else 0.0, 2.0 * circle)
@@ -119,20 +160,19 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     iso = result.iso230
     assert iso is not None
     u_b, pair, _ = repeated_at_each_theta(result, stated_u)
-    key = (budget.probability, u_b.tobytes(), pair)
-    cache = result.__dict__.setdefault("_figure_intervals", {})
+    # seeded from the curve on a coarse grid (models.uncertainty.conformity.readings_seed):
+    # a fitted curve's last digits differ between processors; in the key, so that the
+    # intervals do not depend on which budget asked first (the summary's or a certificate's)
+    seed = readings_seed(result.corrected_error_arcsec, budget)
+    key = (budget.probability, u_b.tobytes(), pair, seed)
+    cache = result.__dict__.setdefault("_theodolite_figure_intervals", {})
     if key not in cache:
         figures = {k: v for k, v in iso.figures.items() if math.isfinite(v)}
-        # seeded from the curve on a coarse grid (models.uncertainty.conformity.readings_seed):
-        # a fitted curve's last digits differ between processors
-        seed = readings_seed(result.corrected_error_arcsec, budget)
         found = figure_intervals({name: stats.mean for name, stats in present},
                                  {name: stats.std for name, stats in present},
                                  {name: stats.runs for name, stats in present},
                                  budget.probability, u_b, seed, figures=figures, pair_u=pair)
-        cache[key] = {k: FigureInterval(v.value, v.low, v.high,
-                                        min(v.probability, THEODOLITE_ACHIEVED.get(k, 1.0)))
-                      for k, v in found.items() if k in figures}
+        cache[key] = {k: v for k, v in found.items() if k in figures}
     return cache[key]
 
 
@@ -146,7 +186,14 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
         return {}
     intervals = theodolite_figure_intervals(result, budget, stated_u)
     out: dict[str, Any] = {}
-    for k, v in result.iso230.figures.items():
+    # every figure of the directions measured, null where the standard does not evaluate it
+    # (A and R of a θ read once), so that the keys do not depend on the readings
+    present = [name for name, _ in _directions(result)]
+    keys = [f"{f}_{name}" for name in present for f in ("E", "R", "A")]
+    if len(present) == 2:
+        keys += ["E", "M", "B", "B_mean", "R", "A"]
+    for k in keys:
+        v = result.iso230.figures.get(k, math.nan)
         found = intervals.get(k)
         iv: Mapping[str, Any] | None = found.as_dict() if found is not None else None
         out[k] = {"value": v if math.isfinite(v) else None,
@@ -155,4 +202,5 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
                   "coverage_probability": None if iv is None else iv["coverage_probability"]}
     withheld = figure_intervals_withheld(result)
     return {"iso230_2_figures": out,
-            "iso230_2_figures_reason": None if withheld is None else message(withheld)}
+            "iso230_2_figures_reason": None if withheld is None else message(withheld),
+            "iso230_2_figures_note": message(FIGURE_VALUE_NOTE)}

@@ -14,10 +14,11 @@ The budget of a mean (one per θ and direction):
 
 * the pointing noise: the pooled standard deviation of the corrected error over the passes
   (Type A, ν = Σ(n_i − 1)), over √n_i at each mean;
-* the part of the stated theodolite u per reading that the passes' scatter does not show,
-  √max(u_std² − s_pooled², 0): the circle's error where it reads that θ, the same in every
-  pass, held in the measured means (Type B, :attr:`BudgetComponent.in_curve`); see
-  models.theodolite.figures;
+* the part of the stated theodolite u per reading that the readings do not show to scatter,
+  √max(u_std² − s_pointing², 0) (models.theodolite.figures.pointing_per_reading): the
+  circle's error where it reads that θ, the same in every pass, held in the measured means
+  (Type B, :attr:`BudgetComponent.in_curve`; drawn independently for the two directions at
+  a θ, which widens the simulated excess of the range a little);
 * the set-up model's error at that θ (Type A, ν = points − 3), as in the run's budget;
 * the item's resolution, as in the run's budget (per reading, not divided: an envelope).
 
@@ -36,7 +37,12 @@ import numpy as np
 from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
-from models.theodolite.figures import figure_intervals_withheld, repeated_at_each_theta
+from models.theodolite.figures import (
+    figure_intervals_withheld,
+    passes_scatter,
+    pointing_per_reading,
+    repeated_at_each_theta,
+)
 from models.theodolite.model import TheodoliteResult
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 from models.uncertainty.lab_scope import cmc_of
@@ -52,9 +58,12 @@ CIRCLE_INPUT = QT_TR_NOOP("Theodolite's circle error at each θ (the stated u le
 
 
 def decided_on_means(result: TheodoliteResult) -> bool:
-    """Whether the run's half range is decided on the means over the passes: every θ read at
-    least twice in each direction measured, with some scatter."""
-    return result.iso230 is not None and figure_intervals_withheld(result) is None
+    """Whether the run's half range is decided on the means over the passes: the directions
+    stated (a direction column; without it the passes back and forth would be averaged
+    together and the reversal lost from the decided curve — a reviewer's rig: 9 of 15
+    intervals missed), every θ read at least twice in each direction, with some scatter."""
+    return (result.iso230 is not None and result.directions is not None
+            and figure_intervals_withheld(result) is None)
 
 
 def _present(result: TheodoliteResult):
@@ -85,9 +94,7 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     assert iso is not None
     present = _present(result)
     runs = np.concatenate([stats.runs for _, stats in present]).astype(float)
-    nu = float(sum(np.sum(stats.runs - 1) for _, stats in present))
-    ss = float(sum(np.sum((stats.runs - 1) * stats.std**2) for _, stats in present))
-    pooled = math.sqrt(ss / nu)
+    pooled, nu = passes_scatter(result)
     u_b, _, circle = repeated_at_each_theta(result, stated_u)
     model = np.sqrt(np.maximum(u_b**2 - circle**2, 0.0))
     model = np.concatenate([model] * len(present))
@@ -105,8 +112,12 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
         components.append(BudgetComponent(
             CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0, math.inf,
             message(QT_TR_NOOP("√(u² − s²) = {circle}: the stated u = {u} per reading less "
-                               "the passes' scatter s = {s}, the same at a θ in every pass"),
-                    circle=f"{circle:.3f}\"", u=f"{stated_u:.3f}\"", s=f"{pooled:.3f}\""),
+                               "the theodolite's pointing noise the readings show, s = {s} "
+                               "(the smaller of the passes' scatter and the vertical readings' "
+                               "about the fit, or the repeats' at a point), the same at a θ in "
+                               "every pass"),
+                    circle=f"{circle:.3f}\"", u=f"{stated_u:.3f}\"",
+                    s=f"{pointing_per_reading(result):.3f}\""),
             in_curve=True))
     components += resolution_component(metadata, math.sqrt(2.0))
     return UncertaintyBudget(tuple(components), points, metadata.coverage_probability,

@@ -27,29 +27,34 @@ at the reference point), minus the set-up model ζ(θ):
   it only moved the reference point against the others.) A repeat of the
   reference angle later in the run is a reading like any other.
   With n readings a point (setting *readings per point*, averaged first), a
-  point's reading is the mean of n, and its error has two parts: a random one
-  that averages (σ/√n, estimated by s_repeat/√n, the points' s/√n of the azimuth
-  repeats pooled, ν = points · (n − 1)) and the standard's, which a calibration
-  figure of the instrument does not average away (the instrument's error at
-  that circle position, the same in every repeat: u_std NOT divided by √n). The
-  mean's error is their root sum of squares, √(u_std² + (s_repeat/√n)²); the
-  scatter s of the means about the fit estimates the same error where the fit
-  sees it (it holds the means' noise). So still ONE input, u_read = max(s,
-  √(u_std² + (s_repeat/√n)²)), with the ν of the figure that governs (for the
-  root sum of squares, Welch–Satterthwaite of its two parts). Not s with s/√n
-  on top: before (#39) s/√n entered again beside s at each point and at θ₀, the
-  noise of the mean counted twice (U / (2 × actual scatter) 1.53 with 4
-  readings and no standard). Nor max(s, u_std, s_repeat/√n), the rule first
-  proposed: where the standard's error is the horizontal circle's alone (the
-  elevations barely move over a run, so the vertical circle's error is one
-  offset the fit takes up), s does not see it and the larger of the parts
-  misses the other: U / (2 × actual scatter) 0.81 (standard at 0.5σ) and 0.90
-  (at σ) with 4 readings, against 1.04 and 1.02 for the root sum of squares
-  (300 runs); where both circles carry it, 1.03 and 1.07 against 1.09 and 1.11
-  (400 runs; without a standard the two rules are one, 1.11). Checked by
-  simulation in tests/models/theodolite/test_theodolite_budget_once.py (a 3-D
-  rig, the standard's error drawn once per circle position and run, pointing
-  noise per reading). With one reading a point the rule is max(s, u_std) as
+  point's reading is the mean of n, and its error has two parts: one that
+  averages (the pointing noise, σ/√n, estimated by s_repeat/√n, the points' s/√n
+  of the azimuth repeats pooled, ν = points · (n − 1)) and one that does not (the
+  instrument's error at that circle position, the same in every repeat). The
+  stated u_std is one reading's whole error, as with one reading a point (where
+  it is the same noise the scatter shows, counted once): the part of it the
+  repeats show to scatter averages, and the rest, u_c = √max(u_std² − s_repeat²,
+  0), is the circle's (0.8.6; the same split as the passes' means,
+  models.theodolite.pass_means). The mean's error is √(u_c² + (s_repeat/√n)²);
+  the scatter s of the means about the fit estimates the same error where the fit
+  sees it. So still ONE input, u_read = max(s, √(u_c² + (s_repeat/√n)²)), with
+  the ν of the figure that governs (for the root sum of squares,
+  Welch–Satterthwaite of its two parts, u_c's ν = ∞). Before 0.8.6 u_std was
+  taken whole as the circle's error (not divided by √n) beside s_repeat/√n: with
+  the theodolite stated at its pointing noise (u_std = σ, nothing fixed at a
+  circle position) every point covered and U was twice and more what the mean's
+  error needs (an audit: per-point coverage 100 %, the decided interval 2.1–2.9
+  times the value's spread). Not s with s/√n on top: before (#39) s/√n entered
+  again beside s at each point and at θ₀, the noise of the mean counted twice
+  (U / (2 × actual scatter) 1.53 with 4 readings and no standard). Nor max(s,
+  u_std/√n, s_repeat/√n): where the circle's error is the horizontal circle's
+  alone (the elevations barely move over a run, so the vertical circle's error is
+  one offset the fit takes up), s does not see it and the larger of the parts
+  misses the other. Checked by simulation in
+  tests/models/theodolite/test_theodolite_budget_once.py (a 3-D rig, the
+  circle's error drawn once per circle position and run, pointing noise per
+  reading, the theodolite stated at √(u_c² + σ²) per reading; and stated at σ
+  with no circle error). With one reading a point the rule is max(s, u_std) as
   before (there is no s_repeat);
 * the identified parameters' covariance propagated through ζ (first order);
 * the item's resolution, if stated: rectangular, sensitivity √2.
@@ -80,8 +85,8 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
-from models.readings.repeats import RepeatedReadings
 from models.theodolite import KEY, TITLE
+from models.theodolite.figures import pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
@@ -155,23 +160,12 @@ def stated_reading_uncertainty(metadata: CertificateMetadata) -> tuple[float, li
     return math.sqrt(u2), stated
 
 
-def _pooled_repeats(result: TheodoliteResult) -> tuple[float, int, int] | None:
-    """With n readings per point, the pooled standard deviation of a point's mean azimuth,
-    s_repeat/√n (arcsec; the points' s/√n pooled, every point having n readings), its
-    ν = points · (n − 1) and n; None with one reading a point."""
-    repeats = result.repeats
-    if not isinstance(repeats, RepeatedReadings):
-        return None
-    s_mean = 3600.0 * np.asarray(repeats.s_mean["azimuth_deg"], dtype=float)
-    return float(np.sqrt(np.mean(s_mean**2))), int(s_mean.size * repeats.dof), repeats.n
-
-
 def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: float,
                          stated: bool, governs: str, nu: float,
                          pooled: tuple[float, int, int] | None) -> str:
     """What the reading error's note says: its candidate figures and which governs
     (``governs``: standard, scatter, repeats or both, the standard with the repeats; ``nu``
-    the input's ν; ``pooled``: :func:`_pooled_repeats`)."""
+    the input's ν; ``pooled``: :func:`models.theodolite.figures.pooled_repeats`)."""
     n = result.theta_deg.size
     if pooled is None:  # one reading a point: the texts as they were before repeats counted once
         scatter = message(QT_TR_NOOP("s = {s} (the vertical readings about the fit, {n} "
@@ -205,23 +199,34 @@ def _reading_error_notes(result: TheodoliteResult, s: float, dof: int, u_std: fl
                "both": message(QT_TR_NOOP("the standard with the repeated readings governs "
                                           "(ν_eff = {dof})"), dof=f"{nu:.0f}")}[governs]
     if stated:
+        circle = _circle_part(u_std, s_rep, readings)
         return message(QT_TR_NOOP(
             "one error per point's mean of {readings} readings, counted once: the larger of "
-            "the scatter {scatter} and the stated standards' u = {u} per reading (not divided "
-            "by √{readings}: it is the instrument's error at that circle position, the same in "
-            "every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}"),
+            "the scatter {scatter} and the stated standards' u = {u} per reading split in "
+            "two, the part the repeats show to scatter, which averages ({repeats}), and the "
+            "rest, √max(u² − s_repeat², 0) = {circle}, the instrument's error at that circle "
+            "position, the same in every repeat: √(u_c² + (s/√n)²) = {both}; {verdict}"),
             readings=readings, u=f"{u_std:.3f}\"", scatter=scatter, repeats=repeats,
-            both=f"{math.hypot(u_std, s_rep):.3f}\"", verdict=verdict)
+            circle=f"{circle:.3f}\"", both=f"{math.hypot(circle, s_rep):.3f}\"",
+            verdict=verdict)
     return message(QT_TR_NOOP(
         "one error per point's mean of {readings} readings, counted once: no standard states "
         "a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}"),
         readings=readings, scatter=scatter, repeats=repeats, verdict=verdict)
 
 
+def _circle_part(u_std: float, s_mean: float, readings: int) -> float:
+    """The part of the stated u per reading that a point's n repeats do not show to scatter,
+    √max(u_std² − s_repeat², 0), s_repeat = s_mean·√n (``s_mean``: the pooled s/√n); u_std
+    whole with one reading a point."""
+    return math.sqrt(max(u_std**2 - readings * s_mean**2, 0.0))
+
+
 def reading_error_components(result: TheodoliteResult,
                              metadata: CertificateMetadata) -> list[BudgetComponent]:
     """The theodolite's reading error, one input (see the module's note): u_read = max(s,
-    u_std); with n readings a point max(s, √(u_std² + (s_repeat/√n)²)). At the point's own
+    u_std); with n readings a point max(s, √(u_c² + (s_repeat/√n)²)), u_c the stated u's
+    part the repeats do not show (:func:`_circle_part`). At the point's own
     reading (independent per point) and at the reference reading θ₀ (one value for the run),
     sensitivity 1 at every point but θ₀; its ν that of the figure that governs."""
     n = result.theta_deg.size
@@ -230,10 +235,12 @@ def reading_error_components(result: TheodoliteResult,
     res = result.elevation_residuals_arcsec
     s = float(np.sqrt(np.sum(res**2) / dof))
     u_std, stated = stated_reading_uncertainty(metadata)
-    pooled = _pooled_repeats(result)
-    s_rep, dof_rep, _ = pooled if pooled is not None else (0.0, 0, 1)
-    # a mean's error: the standard's part (the same in every repeat) and the part that averages
-    u_mean = math.hypot(u_std, s_rep)
+    pooled = pooled_repeats(result)
+    s_rep, dof_rep, readings = pooled if pooled is not None else (0.0, 0, 1)
+    # a mean's error: the part the repeats show to scatter averages (s_rep = s_repeat/√n);
+    # the rest of one reading's stated error is the circle's, the same in every repeat
+    circle = _circle_part(u_std, s_rep, readings)
+    u_mean = math.hypot(circle, s_rep)
     if u_mean > s and s_rep == 0.0:  # one reading a point (or n equal ones): the standard
         governs, evaluation, nu = "standard", "B", math.inf
         if len(stated) == 1:  # its own figure and distribution
@@ -241,12 +248,12 @@ def reading_error_components(result: TheodoliteResult,
             divisor, distribution = divisor_for_basis(stated[0].basis)
         else:
             value, divisor, distribution = u_std, 1.0, "normal"
-    elif u_mean > s and u_std == 0.0:
+    elif u_mean > s and circle == 0.0:  # no standard, or one the repeats' scatter shows whole
         governs, evaluation, nu, value, divisor, distribution = (
             "repeats", "A", float(dof_rep), s_rep, 1.0, "normal")
-    elif u_mean > s:  # Welch–Satterthwaite of the two parts (the standard's ν = ∞)
+    elif u_mean > s:  # Welch–Satterthwaite of the two parts (the circle's ν = ∞)
         governs, value, divisor, distribution = "both", u_mean, 1.0, "normal"
-        evaluation = "B" if u_std >= s_rep else "A"
+        evaluation = "B" if circle >= s_rep else "A"
         nu = float(math.floor(u_mean**4 / (s_rep**4 / dof_rep) + 1e-9))
     else:
         governs, evaluation, nu, value, divisor, distribution = (
@@ -346,6 +353,39 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
     return rows
 
 
+#: how the ISO 230-2 figures of a run with passes get their intervals
+FIGURES_STATEMENT = QT_TR_NOOP(
+    "Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value "
+    "or a range over the θ, biased high by the scatter, so its interval, that of the true "
+    "figure (of the true means and standard deviations at each θ and direction), may lie "
+    "below the value stated. It is a parametric bootstrap of the figure's error from a model "
+    "of the axis fitted to the means and standard deviations over the passes (the "
+    "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
+    "model's error and the part of the stated theodolite u that the passes' scatter does not "
+    "show (the circle's error where it reads that θ) drawn once per θ, the same in every pass "
+    "and both directions; the probability stated is the one a simulation study reached where "
+    "that is lower.")
+#: how a run with passes is decided
+MEANS_STATEMENT = QT_TR_NOOP(
+    "The half range is decided on the means over the passes at each θ and direction (the "
+    "reversal kept), each with its own budget: the passes' pooled scatter over √n, the "
+    "set-up model's error and the part of the stated theodolite u that the scatter does not "
+    "show, the same at a θ in every pass.")
+
+
+def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
+                       ) -> tuple[str, ...]:
+    """What the certificate says of a run with passes: how its figures' intervals and its
+    decided half range are made (nothing where the passes do not determine them)."""
+    from models.theodolite.pass_means import decided_on_means
+
+    if not decided_on_means(result):
+        return ()
+    return ((message(FIGURES_STATEMENT),)
+            + ((message(MEANS_STATEMENT),) if metadata.decision_quantity == "half_range"
+               and metadata.tolerance is not None else ()))
+
+
 def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
               settings: Mapping[str, Any] | None) -> Decision:
     """The curve the statement of conformity is made on: with passes that determine it and
@@ -417,7 +457,8 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                                        "{theta}): the theodolite was zeroed there, so its error "
                                        "is zero by definition."),
                             row=result.reference_index + 1,
-                            theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS),
+                            theta=f"{result.reference_theta_deg:g}°"), SETUP_DEFINITIONS,
+                    *_passes_statements(result, metadata)),
         point_columns=(("theta_deg", result.theta_deg), ("raw_error_arcsec", result.raw_error_arcsec),
          ("correction_arcsec", correction), ("corrected_error_arcsec", result.corrected_error_arcsec),
          ("expanded_uncertainty_arcsec", big_u)))

@@ -831,10 +831,6 @@
         <translation>由标准器与重复读数的合成决定（ν_eff = {dof}）</translation>
     </message>
     <message>
-        <source>one error per point&apos;s mean of {readings} readings, counted once: the larger of the scatter {scatter} and the stated standards&apos; u = {u} per reading (not divided by √{readings}: it is the instrument&apos;s error at that circle position, the same in every repeat) combined with {repeats}, √(u² + (s/√n)²) = {both}; {verdict}</source>
-        <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：取离散度 {scatter} 与所列标准器每个读数的 u = {u}（不除以 √{readings}：它是仪器在该度盘位置的误差，每次重复都相同）和{repeats}的合成 √(u² + (s/√n)²) = {both} 中的较大者；{verdict}</translation>
-    </message>
-    <message>
         <source>the zeroing reading at θ₀, shared by every point (one value for the run): two readings enter each error, the point&apos;s and the zero&apos;s, each with the same u (the figure chosen once, above); one input for ν_eff</source>
         <translation>θ₀ 处的置零读数，各点共用（整次测量为一个值）：每个误差含两个读数，即该点的和置零的，各取相同的 u（上面只选取一次的数值）；对 ν_eff 为一个输入量</translation>
     </message>
@@ -868,8 +864,8 @@
         <translation>辨识参数的协方差经 ζ(θ) 传播</translation>
     </message>
     <message>
-        <source>√(u² − s²) = {circle}: the stated u = {u} per reading less the passes&apos; scatter s = {s}, the same at a θ in every pass</source>
-        <translation>√(u² − s²) = {circle}：所给每次读数 u = {u} 扣除测回分散性 s = {s}，在每个测回中同一 θ 处相同</translation>
+        <source>√(u² − s²) = {circle}: the stated u = {u} per reading less the theodolite&apos;s pointing noise the readings show, s = {s} (the smaller of the passes&apos; scatter and the vertical readings&apos; about the fit, or the repeats&apos; at a point), the same at a θ in every pass</source>
+        <translation>√(u² − s²) = {circle}：所给每次读数 u = {u} 扣除读数显示出的经纬仪瞄准噪声 s = {s}（取测回分散与竖直读数相对于拟合的离散中的较小者，或一个点上重复读数的离散），在每个测回中同一 θ 处相同</translation>
     </message>
     <message>
         <source>The axis under test carries a plane mirror. At each indicated angle θ the autocollimating theodolite is set on the mirror normal and its horizontal reading A and vertical reading E are taken. The set-up misalignment — the tilt ψ of the axis from the theodolite&apos;s vertical, its direction α and the elevation β of the mirror normal — makes A differ from the axis rotation by ζ(θ) = A(θ) − θ. ψ, α and β are identified by least squares from the readings (sin E is linear in 1, cos θ and sin θ; the nonlinear solution is then polished). The error of indication (indicated − reference) is (θ − θ₀) − (A − A₀), the negative of A − θ in the published method (Tian et al. 2017); the set-up&apos;s share of it, −ζ evaluated at the axis&apos; true rotation, is removed: corrected error = (θ − θ₀) − (A − A₀) + ζ. Errors are relative to the reference point θ₀, where the theodolite was zeroed.</source>
@@ -917,6 +913,10 @@
         <translation>由重复读数决定（A 类，ν = {dof}）</translation>
     </message>
     <message>
+        <source>one error per point&apos;s mean of {readings} readings, counted once: the larger of the scatter {scatter} and the stated standards&apos; u = {u} per reading split in two, the part the repeats show to scatter, which averages ({repeats}), and the rest, √max(u² − s_repeat², 0) = {circle}, the instrument&apos;s error at that circle position, the same in every repeat: √(u_c² + (s/√n)²) = {both}; {verdict}</source>
+        <translation>每个点 {readings} 次读数的平均值只有一个误差，只计一次：取离散 {scatter} 与下述合成值中的较大者——所列标准器每个读数的 u = {u} 分为两部分：重复读数显示出分散的部分随平均而减小（{repeats}），其余部分 √(u² − s_repeat²)（u ≤ s_repeat 时为 0） = {circle} 为仪器在该度盘位置的误差，每次重复都相同：√(u_c² + (s/√n)²) = {both}；{verdict}</translation>
+    </message>
+    <message>
         <source>one error per point&apos;s mean of {readings} readings, counted once: no standard states a u per reading, so the larger of the scatter {scatter} and {repeats}; {verdict}</source>
         <translation>每点 {readings} 次读数的平均值只有一个误差，只计一次：没有标准器给出每个读数的 u，故取离散度 {scatter} 与{repeats}中的较大者；{verdict}</translation>
     </message>
@@ -940,6 +940,16 @@
     <message>
         <source>coverage interval {low} … {high} ({p} %)</source>
         <translation>包含区间 {low} … {high}（{p} %）</translation>
+    </message>
+    <message>
+        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ) drawn once per θ, the same in every pass and both directions; the probability stated is the one a simulation study reached where that is lower.</source>
+        <extracomment>how the ISO 230-2 figures of a run with passes get their intervals</extracomment>
+        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差）在每个 θ 只抽取一次，在每个测回和两个方向上相同；所给概率在仿真研究达到的概率较低时取后者。</translation>
+    </message>
+    <message>
+        <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass.</source>
+        <extracomment>how a run with passes is decided</extracomment>
+        <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。</translation>
     </message>
     <message>
         <source>Axis tilt ψ</source>
@@ -1368,10 +1378,6 @@
     <message>
         <source>millimetres (linear axis)</source>
         <translation>毫米（直线轴）</translation>
-    </message>
-    <message>
-        <source>n readings taken one after another at each θ point: every n rows are one point, averaged. The budget&apos;s reading error of a point&apos;s mean is one input, the larger of the fit&apos;s scatter of the means and √(u² + (s/√n)²): the stated standards&apos; u per reading (not divided by √n: the instrument&apos;s error at that circle position is the same in every repeat) with the repeats&apos; pooled s/√n (ν = points · (n − 1)). 1: every row is a point</source>
-        <translation>在每个 θ 点连续读取 n 次：每 n 行为一个点，取平均。不确定度评定中一个点平均值的读数误差为一个分量，取各点平均值相对于拟合的离散与 √(u² + (s/√n)²) 中的较大者：后者为所列标准器每个读数的 u（不除以 √n：仪器在该度盘位置的误差每次重复都相同）与重复读数的合并 s/√n（ν = 点数 · (n − 1)）的合成。1：每行为一个点</translation>
     </message>
     <message>
         <source>nanometres</source>
@@ -2848,6 +2854,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Combined standard u_c</source>
         <translation>合成标准不确定度 u_c</translation>
+    </message>
+    <message>
+        <source>U of the inputs evaluated only (k = {k}): a lower bound, not U</source>
+        <translation>仅已评定输入量的 U（k = {k}）：为下限，不是 U</translation>
     </message>
     <message>
         <source>Expanded U (k = {k})</source>
@@ -4676,6 +4686,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>reference row {reference} is blank, unreadable or missing</source>
         <translation>参考行 {reference} 为空、无法读取或不存在</translation>
+    </message>
+    <message>
+        <source>Coverage intervals ({p} %, from the readings alone; a certificate adds its stated standards&apos; u): </source>
+        <translation>包含区间（{p} %，仅由读数得出；证书还计入所列标准器的 u）：</translation>
     </message>
     <message>
         <source>Set-up identified from the elevation readings ({n} points, reference θ = {theta}°):</source>
@@ -6758,6 +6772,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>linear (ISO 230-2 standard cycle)</source>
         <translation>线性（ISO 230-2 标准循环）</translation>
+    </message>
+    <message>
+        <source>n readings taken one after another at each θ point: every n rows are one point, averaged. The budget&apos;s reading error of a point&apos;s mean is one input, the larger of the fit&apos;s scatter of the means and √(u_c² + (s/√n)²): the repeats&apos; pooled s/√n (ν = points · (n − 1)) with u_c = √max(u² − s², 0), the part of the stated standards&apos; u per reading the repeats do not show to scatter (the instrument&apos;s error at that circle position, the same in every repeat: not divided by √n). 1: every row is a point</source>
+        <translation>在每个θ 点连续读取 n 次：每 n 行为一个点，取平均。预算中一个点平均值的读数误差是一个输入量，取各点平均值相对于拟合的离散与 √(u_c² + (s/√n)²) 中的较大者：重复读数合并的 s/√n（ν = 点数 · (n − 1)）与 u_c = √(u² − s²)（u ≤ s 时为 0） 的合成，u_c 为所列标准器每个读数的 u 中重复读数未显示出分散的部分（仪器在该度盘位置的误差，每次重复都相同：不除以 √n）。1：每行为一个点</translation>
     </message>
     <message>
         <source>no plan</source>
@@ -10105,12 +10123,16 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     </message>
     <message>
         <source>a θ was read fewer than twice in a direction: its standard deviation over the passes is unknown, so no ISO 230-2 figure has a coverage interval</source>
-        <extracomment>ISO 230-2 figure → the coverage the theodolite study reached at 95.45 % asked for, where below it (the probability printed is then this one)</extracomment>
         <translation>某个 θ 在一个方向上读数少于两次：其各测回间的标准偏差未知，因此 ISO 230-2 的各项指标均无包含区间</translation>
     </message>
     <message>
-        <source>the corrected errors of every θ came out identical in each direction over the passes: their scatter cannot be told, so no ISO 230-2 figure has a coverage interval</source>
-        <translation>每个 θ 在各方向上各测回的修正后误差完全相同：无法得知其分散性，因此 ISO 230-2 的各项指标均无包含区间</translation>
+        <source>the corrected errors of every θ came out identical over the passes in a direction: their scatter cannot be told (readings rounded coarser than they scatter?), so no ISO 230-2 figure has a coverage interval</source>
+        <translation>在某一方向上每个 θ 各测回的修正后误差完全相同：无法得知其分散性（读数的修约是否比其分散还粗？），因此 ISO 230-2 的各项指标均无包含区间</translation>
+    </message>
+    <message>
+        <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
+        <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 %; the others 96.6–98.6 %. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
+        <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由真实平均偏差和标准偏差计算）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
     </message>
 </context>
 </TS>

@@ -230,7 +230,7 @@ DECLARED = (
     QT_TR_NOOP('model'),
     QT_TR_NOOP('mounting'),
     QT_TR_NOOP("n readings taken one after another at each point (face, target or θ): every n rows are one point, averaged; their s/√n (ν = n − 1) enters the uncertainty budget as the Type A input 'Repeated readings'. 1: every row is a point"),
-    QT_TR_NOOP("n readings taken one after another at each θ point: every n rows are one point, averaged. The budget's reading error of a point's mean is one input, the larger of the fit's scatter of the means and √(u² + (s/√n)²): the stated standards' u per reading (not divided by √n: the instrument's error at that circle position is the same in every repeat) with the repeats' pooled s/√n (ν = points · (n − 1)). 1: every row is a point"),
+    QT_TR_NOOP("n readings taken one after another at each θ point: every n rows are one point, averaged. The budget's reading error of a point's mean is one input, the larger of the fit's scatter of the means and √(u_c² + (s/√n)²): the repeats' pooled s/√n (ν = points · (n − 1)) with u_c = √max(u² − s², 0), the part of the stated standards' u per reading the repeats do not show to scatter (the instrument's error at that circle position, the same in every repeat: not divided by √n). 1: every row is a point"),
     QT_TR_NOOP('nanometres'),
     QT_TR_NOOP('no plan'),
     QT_TR_NOOP('none'),

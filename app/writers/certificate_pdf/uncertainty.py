@@ -33,7 +33,8 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
             "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
-    budget = budget_table(document.budget, document.budget_point, document.unit)
+    budget = budget_table(document.budget, document.budget_point, document.unit,
+                          bool(document.uncertainty_withheld))
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),
                    ("LEFT", "CENTER", "LEFT") + ("RIGHT",) * 7, size=7)
     notes = [joined([_translatable(row[0]), _colon(document), _translatable(c.note)])

@@ -166,3 +166,24 @@ def test_an_estimated_phase_states_no_u_on_the_certificate_the_results_or_the_dc
     text = " ".join(" ".join(page.extract_text().split()) for page in PdfReader(pdf).pages)
     assert "No expanded uncertainty is stated" not in text
     assert "The expanded uncertainty of the error is U =" in text
+
+
+def test_an_estimated_phase_decided_point_by_point_states_no_interval(capsys, tmp_path):
+    """The points quantity (every sample against ±T with its own U): with no U stated, the
+    decided value (the largest |error|) has no interval either; a reviewer found ±U of the
+    incomplete budget beside it on the certificate and in the JSON."""
+    head = Head(peak_a=0.5, peak_b=0.49, quadrature_deg=1.5, offset_a=0.004, offset_b=-0.006,
+                harmonics={3: (0.004, 0.4)}, noise=0.0003)
+    theta = 0.3 + np.arange(8 * 64) * (2 * math.pi / 64)
+    record = tmp_path / "estimated.csv"
+    _record(record, head, theta, np.random.default_rng(5))
+    meta = tmp_path / "meta.json"
+    meta.write_text(json.dumps({"tolerance": 2.0, "tolerance_unit": "arcsec",
+                                "decision_rule": "guarded", "decision_quantity": "points"}))
+    code = main(["analyze", "fringe", str(record), "--json", "--metadata", str(meta),
+                 "--lines-per-rev", str(LINES), "--language", "en"])
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    decided = json.loads(out.out)["decided_quantity"]
+    assert decided["value"] > 0.0 and decided["verdict"] is None
+    assert decided["interval_low"] is None and decided["interval_high"] is None

@@ -142,21 +142,26 @@ def test_one_reading_input_the_larger_of_scatter_and_standard_with_its_nature():
 #
 # Each point is read n times in a row. Two errors per reading, as the budget's note argues:
 # the pointing noise (σ, new in every reading, averaging over n) and the instrument's own
-# error at that circle position, which a stated standard's u describes: one value per point
-# and run, the SAME in each of its n readings, drawn with standard deviation u_sys; the
-# laboratory states the theodolite at u = u_sys per reading. Either both circles carry it
+# error at that circle position: one value per point and run, the SAME in each of its n
+# readings, drawn with standard deviation u_sys. The laboratory states the theodolite at one
+# reading's whole error, u = √(u_sys² + σ²) per reading (0.8.6; before, at u_sys alone, and
+# the budget took u_std whole as the circle's: with the theodolite stated at its pointing
+# noise, u = σ and nothing fixed at a circle position, U came out twice what the mean's
+# error needs); with u_sys = 0 it states none, or (``stated_noise``) σ. Either both circles carry it
 # (the vertical readings then show it to the fit) or the horizontal circle alone (the
 # elevations barely move over a run: the vertical circle's error is one offset, which the
 # fit takes up). The readings go through the workbench as a sheet gives them (n rows a point).
 
 
-def _repeat_runs(count: int, n: int, u_sys: float, seed: int, circles: str = "both"):
+def _repeat_runs(count: int, n: int, u_sys: float, seed: int, circles: str = "both",
+                 stated_noise: bool = False):
     rng = np.random.default_rng(seed)
     truth = _axis_error()
     clean_az, clean_el = _readings(THETA - truth / 3600.0)
     m = THETA.size
+    stated = math.hypot(u_sys, SIGMA) if u_sys or stated_noise else 0.0
     meta = CertificateMetadata(standards=(ReferenceStandard(
-        "Autocollimating theodolite", uncertainty=u_sys, basis="u"),)) if u_sys else \
+        "Autocollimating theodolite", uncertainty=stated, basis="u"),)) if stated else \
         CertificateMetadata()
     settings = THEODOLITE.settings_with_defaults({"readings_per_point": n,
                                                   "reference_row": ZERO * n + 1})
@@ -175,12 +180,13 @@ def _repeat_runs(count: int, n: int, u_sys: float, seed: int, circles: str = "bo
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("n, u_sys, circles", [
-    (1, 0.0, "both"), (1, 0.5 * SIGMA, "both"), (1, SIGMA, "both"),
-    (4, 0.0, "both"), (4, 0.5 * SIGMA, "both"), (4, SIGMA, "both"),
-    (4, 0.5 * SIGMA, "horizontal"), (4, SIGMA, "horizontal")])
+@pytest.mark.parametrize("n, u_sys, circles, stated_noise", [
+    (1, 0.0, "both", False), (1, 0.5 * SIGMA, "both", False), (1, SIGMA, "both", False),
+    (4, 0.0, "both", False), (4, 0.5 * SIGMA, "both", False), (4, SIGMA, "both", False),
+    (4, 0.5 * SIGMA, "horizontal", False), (4, SIGMA, "horizontal", False),
+    (4, 0.0, "both", True)])
 def test_u_is_twice_the_actual_scatter_with_n_readings_and_a_standard_that_does_not_average(
-        n, u_sys, circles):
+        n, u_sys, circles, stated_noise):
     """Over 200 runs (400 with 4 readings), U at each point / (2 × the scatter of the
     corrected error about the truth there) is within 0.9–1.2 (the median over the points),
     for 1 and 4 readings a point and the standard at 0, 0.5σ and σ. With 4 readings and no
@@ -190,8 +196,9 @@ def test_u_is_twice_the_actual_scatter_with_n_readings_and_a_standard_that_does_
     scatter of 200 runs moves it by ±0.04, hence 400.)"""
     errors, big_u = [], []
     runs = 200 if n == 1 else 400
-    seed = 390 + 10 * n + int(4 * u_sys) + (5 if circles == "horizontal" else 0)
-    for truth, _, result, budget in _repeat_runs(runs, n, u_sys, seed, circles):
+    seed = 390 + 10 * n + int(4 * u_sys) + (5 if circles == "horizontal" else 0) + \
+        (7 if stated_noise else 0)
+    for truth, _, result, budget in _repeat_runs(runs, n, u_sys, seed, circles, stated_noise):
         errors.append(result.corrected_error_arcsec - truth)
         big_u.append(budget.expanded)
     errors, big_u = np.array(errors), np.array(big_u)
@@ -208,11 +215,12 @@ def test_u_is_twice_the_actual_scatter_with_n_readings_and_a_standard_that_does_
 
 
 def test_with_n_readings_one_input_the_scatter_or_the_standard_with_the_repeats():
-    """The reading error of a point's mean is ONE input: max(s_fit, √(u_std² +
+    """The reading error of a point's mean is ONE input: max(s_fit, √(u_c² +
     (s_repeat/√n)²)), s_repeat/√n pooled over the points' azimuth repeats (ν = points ·
-    (n − 1)); the standard's u per reading is not divided by √n; no 'Repeated readings'
-    input beside it; its ν that of the figure that governs (Welch–Satterthwaite for the
-    root sum of squares)."""
+    (n − 1)) and u_c = √max(u_std² − s_repeat², 0) the part of the stated u per reading
+    that the repeats do not show to scatter (the circle's error, not divided by √n); no
+    'Repeated readings' input beside it; its ν that of the figure that governs
+    (Welch–Satterthwaite for the root sum of squares, u_c's ν = ∞)."""
     n = 4
     _, (az, _), result, _ = next(_repeat_runs(1, n, 0.0, 5))
     m = THETA.size
@@ -222,19 +230,17 @@ def test_with_n_readings_one_input_the_scatter_or_the_standard_with_the_repeats(
     s_rep = math.sqrt(np.mean(np.var(az * 3600.0, axis=1, ddof=1)) / n)
     assert s_rep == pytest.approx(SIGMA / math.sqrt(n), rel=0.2)  # 63 degrees of freedom
     assert s_fit == pytest.approx(SIGMA / math.sqrt(n), rel=0.35)  # 18 degrees of freedom
-    small = 0.2 * s_rep  # a standard too small to lift √(u² + s_rep²) above s_fit … or not
-    both_small = math.hypot(small, s_rep)
+    repeats = max(s_fit, s_rep), "A", dof_rep if s_rep > s_fit else dof_fit, (
+        "repeated readings govern" if s_rep > s_fit else "scatter governs")
+    # a standard the repeats' scatter shows whole (u_std ≤ s_repeat): it averages, as they do
+    small = 0.2 * s_rep * math.sqrt(n)
+    # one well above it: the rest of it is the circle's, √(u² − s_repeat²), with s/√n on top
+    large = 3.0 * SIGMA
+    circle = math.sqrt(large**2 - n * s_rep**2)
+    both = math.hypot(circle, s_rep)
     for stated, u, evaluation, dof, governs in (
-            (None, max(s_fit, s_rep), "A", dof_rep if s_rep > s_fit else dof_fit,
-             "repeated readings govern" if s_rep > s_fit else "scatter governs"),
-            (small, max(s_fit, both_small), "A",
-             math.floor(both_small**4 / (s_rep**4 / dof_rep)) if both_small > s_fit
-             else dof_fit,
-             "standard with the repeated readings governs" if both_small > s_fit
-             else "scatter governs"),
-            # σ per reading, not σ/√n, with the repeats' s/√n on top: ν_eff from the latter
-            (SIGMA, math.hypot(SIGMA, s_rep), "B",
-             math.floor(math.hypot(SIGMA, s_rep)**4 / (s_rep**4 / dof_rep)),
+            (None, *repeats), (small, *repeats),
+            (large, both, "B", math.floor(both**4 / (s_rep**4 / dof_rep)),
              "standard with the repeated readings governs")):
         meta = CertificateMetadata() if stated is None else CertificateMetadata(standards=(
             ReferenceStandard("Autocollimating theodolite", uncertainty=stated, basis="u"),))

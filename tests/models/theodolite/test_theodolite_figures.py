@@ -80,6 +80,12 @@ def test_a_theta_read_once_each_way_gives_the_figures_and_says_why_no_interval(
     figures = data["iso230_2_figures"]
     assert figures["E"]["value"] > 0 and figures["E"]["interval_low"] is None
     assert all(f["interval_high"] is None for f in figures.values())
+    # every figure of both directions listed, whatever the readings: A and R null (an audit
+    # found their keys missing here)
+    assert set(figures) == {"E_up", "R_up", "A_up", "E_down", "R_down", "A_down", "E", "M",
+                            "B", "B_mean", "R", "A"}
+    assert figures["R"]["value"] is None and figures["A_up"]["value"] is None
+    assert "TRUE figure" in data["iso230_2_figures_note"]
 
 
 def test_the_certificate_prints_each_figure_with_its_interval(tmp_path):
@@ -105,3 +111,46 @@ def test_the_certificate_prints_each_figure_with_its_interval(tmp_path):
     assert f"{interval.low:.2f}" in e[-1] and f"{interval.high:.2f}" in e[-1]
     assert "coverage interval" in e[-1]
     assert interval.low <= truth["E"] <= interval.high
+
+
+def test_a_direction_whose_errors_repeat_exactly_gives_no_interval(capsys, tmp_path):
+    """Backward readings identical in every pass (rounded coarser than they scatter): R↓
+    would get a zero-width interval; no figure gets one, and the JSON says why."""
+    record = tmp_path / "coarse.csv"
+    _run(record, np.random.default_rng(6), 2, 0.3, 0.5)
+    lines = record.read_text().splitlines()
+    header, rows = lines[0], [r.split(",") for r in lines[1:]]
+    first = {r[0]: r for r in rows if r[3] == "1" and r[4] == "-"}
+    rows = [first[r[0]][:3] + r[3:] if r[4] == "-" else r for r in rows]
+    record.write_text("\n".join([header] + [",".join(r) for r in rows]) + "\n")
+    data = _figures(capsys, tmp_path, record, 0.3)
+    assert "identical over the passes in a direction" in data["iso230_2_figures_reason"]
+    assert all(f["interval_low"] is None for f in data["iso230_2_figures"].values())
+
+
+def test_the_intervals_do_not_depend_on_which_budget_asked_first(tmp_path):
+    """The summary's budget (no details) and a certificate's (an item resolution stated)
+    seed differently; the intervals were cached by (probability, u_b, pair) alone, so the
+    certificate printed the summary's when it came second."""
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.theodolite.analysis import THEODOLITE
+    from models.theodolite.figures import theodolite_figure_intervals
+    from models.theodolite.report import theodolite_budget
+
+    record = tmp_path / "passes.csv"
+    _run(record, np.random.default_rng(9), 2, 0.3, 0.5)
+
+    def analysed():
+        return THEODOLITE.analyze(ReadingsSheet(THEODOLITE.columns, map_columns(
+            read_table(record), THEODOLITE.columns)).parse(), THEODOLITE.settings_with_defaults({}))
+
+    meta = CertificateMetadata(item_resolution=0.5, item_resolution_unit="arcsec")
+    fresh = analysed()
+    alone = theodolite_figure_intervals(fresh, theodolite_budget(fresh, meta))
+    second = analysed()
+    theodolite_figure_intervals(second, theodolite_budget(second, CertificateMetadata()))
+    after = theodolite_figure_intervals(second, theodolite_budget(second, meta))
+    assert {k: (v.low, v.high) for k, v in alone.items()} == \
+        {k: (v.low, v.high) for k, v in after.items()}
