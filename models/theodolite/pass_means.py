@@ -8,7 +8,7 @@ runs × forward and backward, 11 and 41 θ) found the decided value 0.1–1.4″
 on average and its interval 1.1–2.3 times the value's own spread. The means over the
 passes at each θ and direction keep the reversal (forward and backward apart, as ISO
 230-2's E), and their noise is the passes' scatter over √n. Same audit's records, decided
-on the means: bias halved, interval 20–25 % narrower, every cell covered (30 of 30).
+on the means: bias halved, interval 17–46 % narrower, every cell covered (30 of 30).
 
 The budget of a mean (one per θ and direction):
 
