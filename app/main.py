@@ -155,6 +155,11 @@ def run_gui(project: str | None, samples: bool, words=str, language: str | None 
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setOrganizationName("AngleBench")
     app.setApplicationName("AngleBench")
+    # cyclic garbage (a Qt object in a cycle) destroyed in a worker thread deadlocks the
+    # window: collected in the GUI thread only
+    from widgets.gui_garbage_collector import collect_in_gui_thread
+
+    collect_in_gui_thread(app)
     window = MainWindow()
     if language:  # --language: the window in it (and View › Language set to it)
         window.set_language(language)

@@ -89,6 +89,48 @@ def register_url(request, tmp_path):
     return request.getfixturevalue("postgres_server").new_database()
 
 
+@pytest.fixture(scope="session", autouse=True)
+def _no_automatic_garbage_collection():
+    """Python's cyclic collector runs in whichever thread allocates: a Qt object of an earlier
+    test, collected in a capture simulator's thread, deadlocked a CI worker (~QObject waiting
+    for the interpreter, the GUI thread for Qt's lock; no timeout could fire). Automatic
+    collection is off for the whole session; the main thread collects on the collector's own
+    schedule (widgets.gui_garbage_collector) at the end of every test, and during a Qt test
+    on the window's timer (:func:`_garbage_collected_in_the_gui_thread`)."""
+    import gc
+
+    from widgets.gui_garbage_collector import GuiThreadGarbageCollector
+
+    was = gc.isenabled()
+    gc.disable()
+    schedule = GuiThreadGarbageCollector(None)  # its check() only, run by hand
+    yield schedule
+    gc.collect()
+    if was:
+        gc.enable()
+
+
+@pytest.fixture(autouse=True)
+def _garbage_collected_in_the_gui_thread(request, _no_automatic_garbage_collection):
+    """Every test ends with the collector's check in the main thread; a Qt test also runs
+    the window's timer while it lasts, as the window does."""
+    collector = None
+    if {"qtbot", "qapp", "window"} & set(request.fixturenames):
+        from PySide6.QtWidgets import QApplication
+
+        from widgets.gui_garbage_collector import GuiThreadGarbageCollector
+
+        app = QApplication.instance() or QApplication([])
+        collector = GuiThreadGarbageCollector(app).start()
+    try:
+        yield
+    finally:
+        if collector is not None:
+            collector.stop(full=False)
+            collector.deleteLater()
+        _no_automatic_garbage_collection.check()
+
+
 @pytest.fixture(autouse=True)
 def _no_modal_mapping_dialog(monkeypatch, tmp_path):
     """A file whose headers are not recognised would ask the user with a modal dialog: in a

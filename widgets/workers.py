@@ -91,6 +91,11 @@ class Workers(QObject):
                 if self._gc_pauses == 0 and self._gc_was_enabled:
                     gc.enable()
 
+    def gc_paused(self) -> bool:
+        """Whether a worker is inside :meth:`cyclic_gc_paused` (the GUI thread's collector,
+        widgets.gui_garbage_collector, then holds its passes too)."""
+        return self._gc_pauses > 0
+
     @contextlib.contextmanager
     def analysis_running(self):
         """Mark an analysis as running (see :meth:`wait_while_analysing`)."""

@@ -56,9 +56,19 @@ def test_the_switch_interval_is_short_while_any_worker_runs_and_restored_after_t
 
 def test_the_collector_rests_while_any_import_runs_and_is_left_as_it_was():
     workers = Workers()
-    assert gc.isenabled()
+    # the test session runs with automatic collection off (tests/conftest.py): on for this
+    # test, off again after
+    gc.enable()
+    try:
+        _collector_rests(workers)
+    finally:
+        gc.disable()
+
+
+def _collector_rests(workers: Workers) -> None:
+    assert gc.isenabled() and not workers.gc_paused()
     with workers.cyclic_gc_paused():
-        assert not gc.isenabled()
+        assert not gc.isenabled() and workers.gc_paused()
         with workers.cyclic_gc_paused():
             assert not gc.isenabled()
         assert not gc.isenabled()
@@ -75,12 +85,16 @@ def test_the_collector_rests_while_any_import_runs_and_is_left_as_it_was():
 def test_a_worker_that_fails_still_restores_the_process_settings():
     workers = Workers()
     before = sys.getswitchinterval()
+    gc.enable()  # the test session runs with it off (tests/conftest.py)
     try:
         with workers.cyclic_gc_paused(), workers.gui_thread_first(), workers.analysis_running():
             raise KeyError("a bug in an analysis")
     except KeyError:
         pass
-    assert sys.getswitchinterval() == before and gc.isenabled()
+    finally:
+        enabled = gc.isenabled()
+        gc.disable()
+    assert sys.getswitchinterval() == before and enabled
     t0 = time.perf_counter()
     workers.wait_while_analysing(limit_s=2.0)  # the failed analysis no longer counts
     assert time.perf_counter() - t0 < 0.05
