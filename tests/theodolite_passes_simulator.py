@@ -22,9 +22,12 @@ def _rotate(v: np.ndarray, axis: np.ndarray, phi: float) -> np.ndarray:
     return v * math.cos(phi) + np.cross(k, v) * math.sin(phi) + k * (k @ v) * (1 - math.cos(phi))
 
 
-def _readings(true_rotation_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Azimuth and elevation (deg) of the mirror normal, noise-free."""
-    psi, alpha, beta = np.radians([PSI, ALPHA, BETA])
+def mirror_readings(true_rotation_deg: np.ndarray, psi_deg: float = PSI,
+                    alpha_deg: float = ALPHA, beta_deg: float = BETA
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """Azimuth and elevation (deg) of the mirror normal at each true rotation, noise-free,
+    the axis tilted by ψ towards α and the normal at β."""
+    psi, alpha, beta = np.radians([psi_deg, alpha_deg, beta_deg])
     axis = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha),
                      math.cos(psi)])
     normal = np.array([math.cos(beta), 0.0, -math.sin(beta)])
@@ -49,7 +52,7 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
         for sign, order in ((+1, THETA), (-1, THETA[::-1])):
             i = np.searchsorted(THETA, order)
             error = d[i] + sign * 0.5 * reversal + rng.normal(0.0, axis_noise, order.size)
-            az, el = _readings(order - error / 3600.0)
+            az, el = mirror_readings(order - error / 3600.0)
             az = az + (c[i] + rng.normal(0.0, sigma, order.size)) / 3600.0
             el = el + rng.normal(0.0, sigma, order.size) / 3600.0
             tail = f",{run},{'+' if sign > 0 else '-'}" if directions else ""

@@ -36,7 +36,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.resolution import readings_step
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
-from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE
+from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_objects
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
 from models.workbench import (
@@ -461,19 +461,6 @@ VDI_KEYS = ("P", "Ps_max", "Pa", "U_max")
 
 
 
-def _figure_objects(keys, values: Mapping[str, Any], intervals) -> dict[str, Any]:
-    """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
-    readings do not determine it."""
-    out = {}
-    for key in keys:
-        value = values.get(key)
-        value = None if value is None or not math.isfinite(value) else float(value)
-        interval = intervals.get(key) if value is not None else None
-        out[key] = {"value": value,
-                    "interval_low": None if interval is None else interval.low,
-                    "interval_high": None if interval is None else interval.high,
-                    "coverage_probability": None if interval is None else interval.probability}
-    return out
 
 
 def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
@@ -484,8 +471,8 @@ def figures_json(result: PositioningResult, budget=None) -> dict[str, Any]:
     of that budget."""
     intervals = figure_uncertainties(result, budget)
     return {
-        "iso230_2_figures": _figure_objects(ISO_KEYS, result.iso.figures, intervals),
-        "vdi3441_figures": _figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
+        "iso230_2_figures": figure_objects(ISO_KEYS, result.iso.figures, intervals),
+        "vdi3441_figures": figure_objects(VDI_KEYS, result.vdi.as_dict(), intervals),
         "figure_intervals_note": message(FIGURE_VALUE_NOTE),
         "coverage_probability": (DEFAULT_COVERAGE_PROBABILITY if budget is None
                                  else float(budget.probability)),

@@ -31,7 +31,6 @@ least it in every cell.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -45,10 +44,15 @@ from models.uncertainty.figure_intervals import (
     FIGURE_VALUE_NOTE,
     FigureInterval,
     figure_intervals,
+    figure_objects,
 )
 
-__all__ = ["figure_intervals_withheld", "pointing_per_reading", "pooled_repeats",
-           "repeated_at_each_theta", "theodolite_figure_intervals", "theodolite_figures_json"]
+__all__ = ["MODEL_INPUT", "figure_intervals_withheld", "model_at_each_theta",
+           "pointing_per_reading", "pooled_repeats", "repeated_at_each_theta",
+           "theodolite_figure_intervals", "theodolite_figures_json"]
+
+#: the budget's name of the set-up model's error (the run's budget and the passes' means)
+MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
 
 ONCE_ONLY = QT_TR_NOOP("a θ was read fewer than twice in a direction: its standard deviation "
                        "over the passes is unknown, so no ISO 230-2 figure has a coverage "
@@ -135,6 +139,11 @@ def pointing_per_reading(result: TheodoliteResult) -> float:
     return min(passes, fit)
 
 
+def model_at_each_theta(result: TheodoliteResult) -> np.ndarray:
+    """The set-up model's standard uncertainty at each θ of the ISO evaluation."""
+    return _per_theta(result, result.model_uncertainty_arcsec)
+
+
 def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
                            ) -> tuple[np.ndarray, float, float]:
     """The standard uncertainty at each θ of the inputs that repeat in every pass (the
@@ -143,7 +152,7 @@ def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
     standard deviation they give the difference of two θ's errors: u_i + u_j for each,
     whatever their correlation) and that part of the stated u."""
     circle = math.sqrt(max(stated_u**2 - pointing_per_reading(result)**2, 0.0))
-    model = _per_theta(result, result.model_uncertainty_arcsec)
+    model = model_at_each_theta(result)
     u_b = np.sqrt(model**2 + circle**2)
     pair = math.hypot(2.0 * float(np.max(model)) if model.size else 0.0, 2.0 * circle)
     return u_b, pair, circle
@@ -185,21 +194,13 @@ def theodolite_figures_json(result: TheodoliteResult, budget: UncertaintyBudget,
     if result.iso230 is None:
         return {}
     intervals = theodolite_figure_intervals(result, budget, stated_u)
-    out: dict[str, Any] = {}
     # every figure of the directions measured, null where the standard does not evaluate it
     # (A and R of a θ read once), so that the keys do not depend on the readings
     present = [name for name, _ in _directions(result)]
     keys = [f"{f}_{name}" for name in present for f in ("E", "R", "A")]
     if len(present) == 2:
         keys += ["E", "M", "B", "B_mean", "R", "A"]
-    for k in keys:
-        v = result.iso230.figures.get(k, math.nan)
-        found = intervals.get(k)
-        iv: Mapping[str, Any] | None = found.as_dict() if found is not None else None
-        out[k] = {"value": v if math.isfinite(v) else None,
-                  "interval_low": None if iv is None else iv["interval_low"],
-                  "interval_high": None if iv is None else iv["interval_high"],
-                  "coverage_probability": None if iv is None else iv["coverage_probability"]}
+    out = figure_objects(keys, result.iso230.figures, intervals)
     withheld = figure_intervals_withheld(result)
     return {"iso230_2_figures": out,
             "iso230_2_figures_reason": None if withheld is None else message(withheld),

@@ -38,7 +38,9 @@ from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.theodolite.figures import (
+    MODEL_INPUT,
     figure_intervals_withheld,
+    model_at_each_theta,
     passes_scatter,
     pointing_per_reading,
     repeated_at_each_theta,
@@ -95,16 +97,15 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     present = _present(result)
     runs = np.concatenate([stats.runs for _, stats in present]).astype(float)
     pooled, nu = passes_scatter(result)
-    u_b, _, circle = repeated_at_each_theta(result, stated_u)
-    model = np.sqrt(np.maximum(u_b**2 - circle**2, 0.0))
-    model = np.concatenate([model] * len(present))
+    circle = repeated_at_each_theta(result, stated_u)[2]
+    model = np.concatenate([model_at_each_theta(result)] * len(present))
     points = runs.size
     components = [
         BudgetComponent(POINTING_INPUT, "A", "normal", pooled / np.sqrt(runs), 1.0, 1.0, nu,
                         message(QT_TR_NOOP("s = {s} per reading, pooled over the passes at "
                                            "every θ and direction (ν = {dof}), over √n of "
                                            "each mean"), s=f"{pooled:.3f}\"", dof=f"{nu:.0f}")),
-        BudgetComponent(QT_TR_NOOP("Set-up model ζ (ψ, α, β)"), "A", "normal", model, 1.0, 1.0,
+        BudgetComponent(MODEL_INPUT, "A", "normal", model, 1.0, 1.0,
                         max(result.theta_deg.size - 3, 1),
                         QT_TR_NOOP("covariance of the identified parameters propagated through "
                                    "ζ(θ)"))]

@@ -86,7 +86,7 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.theodolite import KEY, TITLE
-from models.theodolite.figures import pooled_repeats
+from models.theodolite.figures import MODEL_INPUT, pooled_repeats
 from models.theodolite.model import TheodoliteResult
 from models.theodolite.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.uncertainty.budget import (
@@ -297,7 +297,6 @@ def theodolite_budget(result: TheodoliteResult, metadata: CertificateMetadata,
                              floor=cmc_of(settings, "cmc_arcsec"))
 
 
-MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
 
 
 def _degrees_to_its_u(value_deg: float, expanded_arcsec: float, fallback: int) -> str:

@@ -59,7 +59,9 @@ from __future__ import annotations
 
 import hashlib
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from scipy.special import ndtr, ndtri, polygamma
@@ -67,7 +69,8 @@ from scipy.special import ndtr, ndtri, polygamma
 from models.messages import QT_TR_NOOP
 
 __all__ = ["ACHIEVED", "FIGURE_VALUE_NOTE", "FigureInterval", "INTERVAL_TRIALS",
-           "SIGNED_FIGURES", "axis_figures", "figure_intervals", "readings_seed", "world_truth"]
+           "SIGNED_FIGURES", "axis_figures", "figure_intervals", "figure_objects", "readings_seed",
+           "world_truth"]
 
 #: bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability)
 INTERVAL_TRIALS = 2000
@@ -128,6 +131,22 @@ class FigureInterval:
     @property
     def plus(self) -> float:
         return max(self.high - self.value, 0.0)
+
+
+def figure_objects(keys, values: Mapping[str, Any], intervals: Mapping[str, FigureInterval]
+                   ) -> dict[str, Any]:
+    """{figure: {value, interval_low, interval_high, coverage_probability}}; nulls where the
+    readings do not determine it."""
+    out = {}
+    for key in keys:
+        value = values.get(key)
+        value = None if value is None or not math.isfinite(value) else float(value)
+        interval = intervals.get(key) if value is not None else None
+        out[key] = {"value": value,
+                    "interval_low": None if interval is None else interval.low,
+                    "interval_high": None if interval is None else interval.high,
+                    "coverage_probability": None if interval is None else interval.probability}
+    return out
 
 
 def readings_seed(*arrays: np.ndarray) -> int:

@@ -857,6 +857,7 @@
     </message>
     <message>
         <source>Set-up model ζ (ψ, α, β)</source>
+        <extracomment>the budget&apos;s name of the set-up model&apos;s error (the run&apos;s budget and the passes&apos; means)</extracomment>
         <translation>安装模型 ζ（ψ, α, β）</translation>
     </message>
     <message>

@@ -112,6 +112,15 @@ def test_a_stated_adc_rounding_and_linearity_do_not_lower_the_decided_value(caps
     assert stated["interval_low"] <= truth <= stated["interval_high"]
 
 
+def _third_harmonic_record(path, with_theta: bool = False) -> None:
+    """8 periods of 64 samples from a head with a 3rd harmonic of 0.4 % (the same signals
+    with or without the θ column)."""
+    head = Head(peak_a=0.5, peak_b=0.49, quadrature_deg=1.5, offset_a=0.004, offset_b=-0.006,
+                harmonics={3: (0.004, 0.4)}, noise=0.0003)
+    theta = 0.3 + np.arange(8 * 64) * (2 * math.pi / 64)
+    _record(path, head, theta, np.random.default_rng(5), with_theta=with_theta)
+
+
 def test_an_estimated_phase_states_no_u_on_the_certificate_the_results_or_the_dcc(
         capsys, tmp_path):
     """The JSON withheld U per sample; the certificate, its results workbook and its DCC
@@ -122,11 +131,8 @@ def test_an_estimated_phase_states_no_u_on_the_certificate_the_results_or_the_dc
     from openpyxl import load_workbook
     from pypdf import PdfReader
 
-    head = Head(peak_a=0.5, peak_b=0.49, quadrature_deg=1.5, offset_a=0.004, offset_b=-0.006,
-                harmonics={3: (0.004, 0.4)}, noise=0.0003)
-    theta = 0.3 + np.arange(8 * 64) * (2 * math.pi / 64)
     record = tmp_path / "estimated.csv"
-    _record(record, head, theta, np.random.default_rng(5))
+    _third_harmonic_record(record)
     meta = tmp_path / "meta.json"
     details = json.loads((Path(__file__).parents[3] / "resources" / "samples"
                           / "certificate_fringe.json").read_text(encoding="utf-8"))
@@ -158,7 +164,7 @@ def test_an_estimated_phase_states_no_u_on_the_certificate_the_results_or_the_dc
     assert not any(h.startswith("expanded_uncertainty") for h in headers), headers
     # with the phase given, the same record states U everywhere again
     given = tmp_path / "given.csv"
-    _record(given, head, theta, np.random.default_rng(5), with_theta=True)
+    _third_harmonic_record(given, with_theta=True)
     code = main(["analyze", "fringe", str(given), "--metadata", str(meta), "--lines-per-rev",
                  str(LINES), "--language", "en", "--certificate", str(pdf)])
     capsys.readouterr()
@@ -172,11 +178,8 @@ def test_an_estimated_phase_decided_point_by_point_states_no_interval(capsys, tm
     """The points quantity (every sample against ±T with its own U): with no U stated, the
     decided value (the largest |error|) has no interval either; a reviewer found ±U of the
     incomplete budget beside it on the certificate and in the JSON."""
-    head = Head(peak_a=0.5, peak_b=0.49, quadrature_deg=1.5, offset_a=0.004, offset_b=-0.006,
-                harmonics={3: (0.004, 0.4)}, noise=0.0003)
-    theta = 0.3 + np.arange(8 * 64) * (2 * math.pi / 64)
     record = tmp_path / "estimated.csv"
-    _record(record, head, theta, np.random.default_rng(5))
+    _third_harmonic_record(record)
     meta = tmp_path / "meta.json"
     meta.write_text(json.dumps({"tolerance": 2.0, "tolerance_unit": "arcsec",
                                 "decision_rule": "guarded", "decision_quantity": "points"}))

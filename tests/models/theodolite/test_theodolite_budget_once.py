@@ -1,8 +1,8 @@
 """The theodolite's reading error counted once, with its nature (issue 39).
 
-The rig simulates the set-up from first principles in this file (numpy only, nothing from
-the code it checks): the frame of ../shared/SPEC.md §1 (OZ plumb down, OX the azimuth
-zero), the axis tilted by ψ towards α, the mirror normal at the axis' zero [cos β, 0,
+The rig simulates the set-up from first principles (tests/theodolite_passes_simulator.py,
+numpy only, nothing from the code it checks): the frame of ../shared/SPEC.md §1 (OZ plumb
+down, OX the azimuth zero), the axis tilted by ψ towards α, the mirror normal at the axis' zero [cos β, 0,
 −sin β], turned right-handed about the axis by its TRUE rotation θ − d(θ) (Rodrigues); the
 theodolite reads atan2(y, x) and asin z, each with normal noise σ. The laboratory states
 the theodolite at u = σ per reading — the same error as the noise, as a consistent
@@ -29,6 +29,7 @@ from models.theodolite.report import (
     theodolite_budget,
 )
 from models.uncertainty.conformity import _draws_by_nature
+from tests.theodolite_passes_simulator import mirror_readings
 
 SIGMA = 0.5  # arcsec, the reading noise in azimuth and elevation
 THETA = np.arange(-20.0, 20.1, 2.0)  # 21 points
@@ -36,19 +37,9 @@ ZERO = int(np.argmin(np.abs(THETA)))
 PSI, ALPHA, BETA = 2.0, 40.0, 3.0  # deg
 
 
-def _rotate(v: np.ndarray, axis: np.ndarray, phi: float) -> np.ndarray:
-    k = axis / np.linalg.norm(axis)
-    return v * math.cos(phi) + np.cross(k, v) * math.sin(phi) + k * (k @ v) * (1 - math.cos(phi))
-
-
 def _readings(true_rotation_deg: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Azimuth and elevation (deg) of the mirror normal, noise-free."""
-    psi, alpha, beta = np.radians([PSI, ALPHA, BETA])
-    axis = np.array([-math.sin(psi) * math.cos(alpha), -math.sin(psi) * math.sin(alpha),
-                     math.cos(psi)])
-    normal = np.array([math.cos(beta), 0.0, -math.sin(beta)])
-    out = np.array([_rotate(normal, axis, phi) for phi in np.radians(true_rotation_deg)])
-    return np.degrees(np.arctan2(out[:, 1], out[:, 0])), np.degrees(np.arcsin(out[:, 2]))
+    """Azimuth and elevation (deg) of the mirror normal, noise-free (this file's set-up)."""
+    return mirror_readings(true_rotation_deg, PSI, ALPHA, BETA)
 
 
 def _axis_error() -> np.ndarray:

@@ -18,27 +18,18 @@ reading θ₀ moves every error alike: no figure sees it).
 
 from __future__ import annotations
 
-import json
 import math
 
 import numpy as np
 import pytest
 from scipy.stats import binom
 
-from app.main import main
 from tests.theodolite_passes_simulator import passes_record as _run
+from tests.theodolite_run_json import run_json
 
 
 def _figures(capsys, tmp_path, record, stated: float) -> dict:
-    meta = tmp_path / "meta.json"
-    meta.write_text(json.dumps({"standards": [{
-        "description": "Autocollimating theodolite", "uncertainty": stated,
-        "uncertainty_unit": "arcsec", "basis": "u"}]}))
-    code = main(["analyze", "theodolite", str(record), "--json", "--metadata", str(meta),
-                 "--language", "en"])
-    out = capsys.readouterr()
-    assert code == 0, out.err
-    return json.loads(out.out)
+    return run_json(capsys, tmp_path, record, stated)
 
 
 @pytest.mark.slow

@@ -7,30 +7,19 @@ half the range of the axis' error d ± b/2 over both directions (E/2 of ISO 230-
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
 from scipy.stats import binom
 
-from app.main import main
 from tests.theodolite_passes_simulator import passes_record
+from tests.theodolite_run_json import run_json
 
 pytestmark = pytest.mark.slow  # 30 runs, each decided by Monte Carlo
 
 
 def _decided(capsys, tmp_path, record, stated: float, quantity: str = "half_range") -> dict:
-    meta = tmp_path / "meta.json"
-    meta.write_text(json.dumps({
-        "tolerance": 10.0, "tolerance_unit": "arcsec", "decision_rule": "guarded",
-        "decision_quantity": quantity,
-        "standards": [{"description": "Autocollimating theodolite", "uncertainty": stated,
-                       "uncertainty_unit": "arcsec", "basis": "u"}]}))
-    code = main(["analyze", "theodolite", str(record), "--json", "--metadata", str(meta),
-                 "--language", "en"])
-    out = capsys.readouterr()
-    assert code == 0, out.err
-    return json.loads(out.out)
+    return run_json(capsys, tmp_path, record, stated, tolerance=10.0, tolerance_unit="arcsec",
+                    decision_rule="guarded", decision_quantity=quantity)
 
 
 @pytest.mark.parametrize("world", ["pointing", "circle"])

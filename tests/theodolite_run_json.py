@@ -1,0 +1,22 @@
+"""A theodolite record through the command line, as a user runs it: its JSON, with the
+theodolite stated at u per reading and any other certificate details."""
+
+from __future__ import annotations
+
+import json
+
+from app.main import main
+
+
+def run_json(capsys, tmp_path, record, stated: float, **details) -> dict:
+    """``anglebench analyze theodolite RECORD --json --metadata M``, M the ``details`` with
+    the theodolite stated at ``stated`` (arcsec, u per reading)."""
+    meta = tmp_path / "meta.json"
+    meta.write_text(json.dumps({**details, "standards": [{
+        "description": "Autocollimating theodolite", "uncertainty": stated,
+        "uncertainty_unit": "arcsec", "basis": "u"}]}))
+    code = main(["analyze", "theodolite", str(record), "--json", "--metadata", str(meta),
+                 "--language", "en"])
+    out = capsys.readouterr()
+    assert code == 0, out.err
+    return json.loads(out.out)
