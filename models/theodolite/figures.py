@@ -12,12 +12,18 @@ inputs that are one value at a θ, with the readings without them), fed with:
   noise (new in every reading) is in them;
 * per θ, the inputs whose error is the same at that θ in every pass and both directions
   (the positioning's "Type B per target"): the set-up model's error (ψ, α, β are identified
-  once for the run, so ζ's error at a θ repeats in every pass), and the part of the stated
-  theodolite's u per reading that the readings do not show to scatter,
-  √max(u_std² − s_pointing², 0) (:func:`pointing_per_reading`): the circle's error at the
-  position it reads for that θ, the same in every pass. Where the stated u is all pointing
-  noise, the scatter shows it and nothing is left over; where it is the circle's error, the
-  scatter does not.
+  once for the run, so ζ's error at a θ repeats in every pass), drawn as the fit's
+  covariance correlates it from θ to θ (:func:`model_modes_at_each_theta`; it was drawn on
+  its own at each θ and, as an envelope of unknown correlation, widened E, M and A by
+  z·2 max u(ζ) each way), and the part of the stated theodolite's u per reading that the
+  readings do not show to scatter, √max(u_std² − s_up², 0) (:func:`circle_part`, s_up the
+  pointing noise's 95 % upper bound): the circle's error at the position it reads for that
+  θ, the same in every pass. Where the stated u is all pointing noise, the scatter shows it
+  and nothing is left over; where it is the circle's error, the scatter does not. With u
+  stated at the pointing noise, the point estimate √max(u² − s², 0) of 0.8.6 left 0.3–0.5 u
+  for it in about half the runs; with both, E, M and A were 2–3 times as wide as a correct
+  interval needs (an audit's rig, 14 cells; now 1.2–1.7 where no circle error is stated,
+  unchanged where one is).
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
@@ -34,10 +40,11 @@ import math
 from typing import Any
 
 import numpy as np
+from scipy.special import chdtri
 
 from models.messages import QT_TR_NOOP, message
 from models.readings.repeats import RepeatedReadings
-from models.theodolite.model import TheodoliteResult
+from models.theodolite.model import TheodoliteResult, model_error_modes
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import readings_seed
 from models.uncertainty.figure_intervals import (
@@ -47,8 +54,9 @@ from models.uncertainty.figure_intervals import (
     figure_objects,
 )
 
-__all__ = ["MODEL_INPUT", "figure_intervals_withheld", "model_at_each_theta",
-           "pointing_per_reading", "pooled_repeats", "repeated_at_each_theta",
+__all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "figure_intervals_withheld",
+           "model_at_each_theta", "model_modes_at_each_theta", "pointing_per_reading",
+           "pooled_repeats", "repeated_at_each_theta",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
 #: the budget's name of the set-up model's error (the run's budget and the passes' means)
@@ -127,16 +135,41 @@ def pointing_per_reading(result: TheodoliteResult) -> float:
     own non-repeatability: where the axis scatters more than the theodolite points, taking
     it for the pointing noise left the circle's error out (a reviewer's rig: pointing 0.1″,
     axis 0.5″, circle 0.4″ — 4 of 20 decided intervals missed)."""
+    return _pointing(result)[0]
+
+
+def _pointing(result: TheodoliteResult) -> tuple[float, float]:
+    """:func:`pointing_per_reading` and its degrees of freedom."""
     repeats = pooled_repeats(result)
     if repeats is not None:
-        s_mean, _, n = repeats
-        return s_mean * math.sqrt(n)
-    passes, _ = passes_scatter(result)
+        s_mean, dof_repeats, n = repeats
+        return s_mean * math.sqrt(n), float(dof_repeats)
+    passes, nu = passes_scatter(result)
     dof = result.elevation_residuals_arcsec.size - 3
     if dof < 1:
-        return passes
+        return passes, nu
     fit = math.sqrt(float(np.sum(result.elevation_residuals_arcsec**2)) / dof)
-    return min(passes, fit)
+    return (passes, nu) if passes <= fit else (fit, float(dof))
+
+
+#: how sure the readings must be that the stated u per reading exceeds their scatter before
+#: the excess is taken for the circle's error: the excess over the scatter's upper confidence
+#: bound at this one-sided probability. With the theodolite stated at its pointing noise the
+#: excess over the scatter itself came out 0.3–0.5 u in about half the runs (s below σ by
+#: chance; the smaller of two estimates lower still), an envelope of unknown correlation that
+#: widened E, M and A 2–3 times what a correct interval needs
+CIRCLE_EVIDENCE = 0.95
+
+
+def circle_part(result: TheodoliteResult, stated_u: float) -> float:
+    """The part of the stated u per reading that the readings do not show to scatter, the
+    circle's error at the position it reads for a θ, the same in every pass:
+    √max(u² − s_up², 0), s_up the pointing noise's upper confidence bound at
+    :data:`CIRCLE_EVIDENCE` (s √(ν/χ²_ν(1 − p)), :func:`pointing_per_reading` and its ν)."""
+    s, nu = _pointing(result)
+    if nu >= 1 and math.isfinite(nu):
+        s = s * math.sqrt(nu / float(chdtri(nu, CIRCLE_EVIDENCE)))
+    return math.sqrt(max(stated_u**2 - s**2, 0.0))
 
 
 def model_at_each_theta(result: TheodoliteResult) -> np.ndarray:
@@ -144,18 +177,28 @@ def model_at_each_theta(result: TheodoliteResult) -> np.ndarray:
     return _per_theta(result, result.model_uncertainty_arcsec)
 
 
+def model_modes_at_each_theta(result: TheodoliteResult) -> np.ndarray:
+    """The set-up model's error at each θ of the ISO evaluation as modes (3, positions),
+    arcsec: error = z @ modes, z ~ N(0, I₃) (models.theodolite.model.model_error_modes at
+    the rotations from the reference reading)."""
+    iso = result.iso230
+    assert iso is not None
+    rotation = np.asarray(iso.positions, dtype=float) - result.reference_theta_deg
+    return model_error_modes(rotation, result.identification).T
+
+
 def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
                            ) -> tuple[np.ndarray, float, float]:
-    """The standard uncertainty at each θ of the inputs that repeat in every pass (the
-    set-up model's error; the stated u's part the readings do not show to scatter,
-    √max(u² − s_pointing², 0), :func:`pointing_per_reading`), ``pair_u`` (the largest
-    standard deviation they give the difference of two θ's errors: u_i + u_j for each,
-    whatever their correlation) and that part of the stated u."""
-    circle = math.sqrt(max(stated_u**2 - pointing_per_reading(result)**2, 0.0))
-    model = model_at_each_theta(result)
-    u_b = np.sqrt(model**2 + circle**2)
-    pair = math.hypot(2.0 * float(np.max(model)) if model.size else 0.0, 2.0 * circle)
-    return u_b, pair, circle
+    """The stated theodolite's error that repeats at a θ in every pass, an envelope whose
+    correlation from θ to θ is not known: its standard uncertainty at each θ (the stated
+    u's part the readings do not show to scatter, :func:`circle_part`), ``pair_u`` (the
+    largest standard deviation it gives the difference of two θ's errors, 2 u whatever the
+    correlation) and that part, one number.
+    The set-up model's error, which also repeats, is :func:`model_modes_at_each_theta`."""
+    circle = circle_part(result, stated_u)
+    iso = result.iso230
+    assert iso is not None
+    return np.full(np.asarray(iso.positions).size, circle), 2.0 * circle, circle
 
 
 def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget,
@@ -169,18 +212,20 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
     iso = result.iso230
     assert iso is not None
     u_b, pair, _ = repeated_at_each_theta(result, stated_u)
+    modes = model_modes_at_each_theta(result)
     # seeded from the curve on a coarse grid (models.uncertainty.conformity.readings_seed):
     # a fitted curve's last digits differ between processors; in the key, so that the
     # intervals do not depend on which budget asked first (the summary's or a certificate's)
     seed = readings_seed(result.corrected_error_arcsec, budget)
-    key = (budget.probability, u_b.tobytes(), pair, seed)
+    key = (budget.probability, u_b.tobytes(), pair, seed)  # the modes: from the readings
     cache = result.__dict__.setdefault("_theodolite_figure_intervals", {})
     if key not in cache:
         figures = {k: v for k, v in iso.figures.items() if math.isfinite(v)}
         found = figure_intervals({name: stats.mean for name, stats in present},
                                  {name: stats.std for name, stats in present},
                                  {name: stats.runs for name, stats in present},
-                                 budget.probability, u_b, seed, figures=figures, pair_u=pair)
+                                 budget.probability, u_b, seed, figures=figures, pair_u=pair,
+                                 model_modes=modes)
         cache[key] = {k: v for k, v in found.items() if k in figures}
     return cache[key]
 

@@ -43,6 +43,7 @@ __all__ = [
     "identify_from_azimuth",
     "identify_from_elevations",
     "induced_error_arcsec",
+    "model_error_modes",
     "rotated_normal",
     "setups_from_coefficients",
     "simulate_readings",
@@ -432,8 +433,12 @@ class TheodoliteResult:
     incomplete: object = None  # the last unit in progress (models.readings.incomplete), left out
 
 
-def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:
-    """Standard uncertainty of ζ(θ) from the parameters' covariance (first order)."""
+def model_error_modes(rotation_deg: np.ndarray, ident: Identification) -> np.ndarray:
+    """The set-up model's error at each rotation as modes, (n, 3) arcsec: the error of ζ(θ)
+    from the parameters' errors is modes @ z, z ~ N(0, I₃) (first order: ζ's gradient in
+    ψ, α, β times a square root of their covariance). Its rows' norms are ζ's standard
+    uncertainty; the modes keep how it is correlated from θ to θ (one set of parameters for
+    the whole run)."""
     p = ident.setup.as_array()
     steps = np.array([1e-6, 1e-5, 1e-6])
     grads = []
@@ -441,11 +446,17 @@ def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarr
         hi, lo = p.copy(), p.copy()
         hi[k] += steps[k]
         lo[k] -= steps[k]
-        grads.append((induced_error_arcsec(theta_deg, *hi) - induced_error_arcsec(theta_deg, *lo))
-                     / (2 * steps[k]))
+        grads.append((induced_error_arcsec(rotation_deg, *hi)
+                      - induced_error_arcsec(rotation_deg, *lo)) / (2 * steps[k]))
     g = np.array(grads).T  # (n, 3) in arcsec/deg
     cov = np.where(np.isfinite(ident.covariance_deg2), ident.covariance_deg2, 0.0)
-    return np.sqrt(np.clip(np.einsum("ij,jk,ik->i", g, cov, g), 0.0, None))
+    values, vectors = np.linalg.eigh(0.5 * (cov + cov.T))
+    return g @ (vectors * np.sqrt(np.clip(values, 0.0, None)))
+
+
+def _model_uncertainty(theta_deg: np.ndarray, ident: Identification) -> np.ndarray:
+    """Standard uncertainty of ζ(θ) from the parameters' covariance (first order)."""
+    return np.sqrt(np.sum(model_error_modes(theta_deg, ident) ** 2, axis=1))
 
 
 _TRUE_ROTATION_MAX_ITERATIONS = 8

@@ -249,8 +249,35 @@ def _world_sigmas(s: dict[str, np.ndarray], n: dict[str, np.ndarray]) -> dict[st
     return out
 
 
+@dataclass(frozen=True)
+class SharedErrors:
+    """The errors that are the same at a target in every run and both directions (Type B
+    inputs): ``u`` (targets,), each target's drawn on its own; ``modes`` (k, targets) or
+    None, errors correlated over the targets, z @ modes with z ~ N(0, I_k) (a fitted model's
+    error, from its parameters' covariance). Both are in the measured curve."""
+
+    u: np.ndarray
+    modes: np.ndarray | None = None
+
+    @property
+    def variance(self) -> np.ndarray:
+        var = self.u**2
+        return var if self.modes is None else var + np.sum(self.modes**2, axis=0)
+
+    def draw(self, shape: tuple[int, ...], rng: np.random.Generator):
+        """One error per target of each test, ``shape + (targets,)`` (0 with none)."""
+        m = self.u.size
+        out = (rng.standard_normal(shape + (m,), dtype=np.float32) * self.u.astype(np.float32)
+               if np.any(self.u) else np.float32(0.0))
+        if self.modes is not None:
+            k = self.modes.shape[0]
+            out = out + rng.standard_normal(shape + (k,), dtype=np.float32) @ \
+                self.modes.astype(np.float32)
+        return out
+
+
 def _world_means(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray],
-                 n: dict[str, np.ndarray], u_b: np.ndarray, level=_shrunk
+                 n: dict[str, np.ndarray], shared: SharedErrors, level=_shrunk
                  ) -> dict[str, np.ndarray]:
     """The true means of the world: bidirectional, the mean M_i by ``level`` (values,
     sampling variances → the world's values: :func:`_shrunk`, or :func:`_ensemble` for the
@@ -261,10 +288,10 @@ def _world_means(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray],
         var_down = sigmas["down"] ** 2 / n["down"]
         mid = 0.5 * (means["up"] + means["down"])
         rev = means["up"] - means["down"]
-        mid_w = level(mid, 0.25 * (var_up + var_down) + u_b**2)
+        mid_w = level(mid, 0.25 * (var_up + var_down) + shared.variance)
         rev_w = _shrunk(rev, var_up + var_down)
         return {"up": mid_w + 0.5 * rev_w, "down": mid_w - 0.5 * rev_w}
-    return {k: level(v, sigmas[k] ** 2 / n[k] + u_b**2) for k, v in means.items()}
+    return {k: level(v, sigmas[k] ** 2 / n[k] + shared.variance) for k, v in means.items()}
 
 
 #: the scatter of the world's means: each target's own s where it is above the moderated σ
@@ -273,20 +300,19 @@ def _world_means(means: dict[str, np.ndarray], sigmas: dict[str, np.ndarray],
 MEANS_FROM_OWN_S = True
 
 
-def _world(means, stds, n, u_b):
+def _world(means, stds, n, shared):
     """(μ, σ, σ of the means) of the world fitted to measured means and s."""
     sig_w = _world_sigmas(stds, n)
     sig_mean = ({k: np.maximum(stds[k], v) for k, v in sig_w.items()} if MEANS_FROM_OWN_S
                 else sig_w)
-    return _world_means(means, sig_mean, n, u_b), sig_w, sig_mean
+    return _world_means(means, sig_mean, n, shared), sig_w, sig_mean
 
 
-def _draw(mu_w, sig_w, sig_mean, n, u_b, shape, rng):
+def _draw(mu_w, sig_w, sig_mean, n, shared, shape, rng):
     """Tests drawn from a world: means and s of shape ``shape + (targets,)`` (single
     precision: the draws' own scatter is far above its rounding)."""
-    m = u_b.size
-    shared = (rng.standard_normal(shape + (m,), dtype=np.float32) * u_b.astype(np.float32)
-              if np.any(u_b) else np.float32(0.0))
+    m = shared.u.size
+    common = shared.draw(shape, rng)
     drawn = {}
     for k, mu in mu_w.items():
         nu = n[k] - 1.0
@@ -294,7 +320,7 @@ def _draw(mu_w, sig_w, sig_mean, n, u_b, shape, rng):
             nu / 2.0, shape + (m,)).astype(np.float32)
         chi2 = rng.standard_gamma(half, shape + (m,), dtype=np.float32)
         mean = (np.float32(mu) + np.float32(sig_mean[k] / np.sqrt(n[k]))
-                * rng.standard_normal(shape + (m,), dtype=np.float32) + shared)
+                * rng.standard_normal(shape + (m,), dtype=np.float32) + common)
         drawn[k] = (mean, np.float32(sig_w[k] * np.sqrt(2.0 / nu)) * np.sqrt(chi2))
     return drawn
 
@@ -380,7 +406,7 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      type_b_u: np.ndarray | None = None, seed: int = 0,
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
-                     pair_u: float | None = None
+                     pair_u: float | None = None, model_modes: np.ndarray | None = None
                      ) -> dict[str, FigureInterval]:
     """The coverage interval of every axis figure.
 
@@ -406,6 +432,12 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         reference's, the stated misalignment and temperature; not the roundings, which are
         independent): it sets the widening of :data:`TYPE_B_FIGURES`. 2 max ``type_b_u`` if
         omitted (each target's error within its u, two of them possibly opposite).
+    model_modes : array (k, targets), optional
+        A fitted model's error at the targets, the same in every run and both directions,
+        correlated from target to target as its parameters' covariance makes it: error =
+        z @ model_modes, z ~ N(0, I_k) (a set-up model whose fit left parameter errors).
+        Drawn so in every trial, and, unlike ``type_b_u`` (a certificate's envelope whose
+        correlation is not known), no union: its covariance is the fit's own.
     """
     keys = list(means)
     m = means[keys[0]].size
@@ -414,26 +446,28 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
     x = {k: np.asarray(means[k], float) for k in keys}
     u_b = np.zeros(m) if type_b_u is None else np.broadcast_to(
         np.asarray(type_b_u, float), (m,)).copy()
+    modes = None if model_modes is None else np.asarray(model_modes, float).reshape(-1, m)
+    shared = SharedErrors(u_b, modes)
     measured = figures if figures is not None else world_truth(x, s)
-    mu_w, sig_w, sig_mean = _world(x, s, n, u_b)
+    mu_w, sig_w, sig_mean = _world(x, s, n, shared)
     truth = world_truth(mu_w, sig_w)
     rng = np.random.default_rng(seed)
-    drawn = _draw(mu_w, sig_w, sig_mean, n, u_b, (trials,), rng)
+    drawn = _draw(mu_w, sig_w, sig_mean, n, shared, (trials,), rng)
     sims = axis_figures(drawn)
     pivots = {k: sims[k] - truth[k] for k in sims}
     tail = 0.5 * (1.0 - probability)
     levels = {k: (tail, 1.0 - tail) for k in sims}
     if outer and inner:
-        levels = _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng)
+        levels = _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng)
     guard = _reversal_guard(x, sig_mean, n, tail) if "up" in x and "down" in x else None
     # the unshrunk world (the measured means as the truth): where the scatter hides one
     # target far off, the shrunk world flattens it and its interval falls short above
     raw_truth = world_truth(x, sig_w)
-    raw_sims = axis_figures(_draw(x, sig_w, sig_mean, n, u_b, (trials,), rng))
+    raw_sims = axis_figures(_draw(x, sig_w, sig_mean, n, shared, (trials,), rng))
     # the ranges of the means: the triple-goal world's plain basic interval
-    ens_mu = _world_means(x, sig_mean, n, u_b, level=_ensemble)
+    ens_mu = _world_means(x, sig_mean, n, shared, level=_ensemble)
     ens_truth = world_truth(ens_mu, sig_w)
-    ens_sims = axis_figures(_draw(ens_mu, sig_w, sig_mean, n, u_b, (trials,), rng))
+    ens_sims = axis_figures(_draw(ens_mu, sig_w, sig_mean, n, shared, (trials,), rng))
     for key in RANGE_FIGURES & ens_sims.keys():
         pivots[key] = ens_sims[key] - ens_truth[key]
         levels[key] = (tail, 1.0 - tail)
@@ -451,19 +485,19 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
         if key not in SIGNED_FIGURES:
             low, high = max(low, 0.0), max(high, 0.0)
         if high <= low and key in RANGE_BOUNDS:
-            high = _range_bound(*_range_terms(key, x, sig_mean, n, u_b), tail)
+            high = _range_bound(*_range_terms(key, x, sig_mean, n, shared), tail)
         out[key] = FigureInterval(float(value), float(low), float(high),
                                   min(probability, ACHIEVED.get(key, probability)))
     if np.any(u_b):
         # the reference perfect: the same readings without the Type B inputs
         bare = figure_intervals(means, stds, runs, probability, None, seed, trials, figures,
-                                outer, inner)
+                                outer, inner, model_modes=modes)
         # the reference's errors shaped as the curve's worst (a once-a-turn error that lowers
         # the crests and raises the troughs): the figure of the readings without them, at
         # half the tail each side, widened by the largest difference of two targets' errors
         pair = 2.0 * float(np.max(u_b)) if pair_u is None else float(pair_u)
         wide = (figure_intervals(means, stds, runs, 1.0 - tail, None, seed, trials, figures,
-                                 outer, inner) if pair > 0.0 else bare)
+                                 outer, inner, model_modes=modes) if pair > 0.0 else bare)
         shift = float(ndtri(1.0 - 0.5 * tail)) * pair
         for key in TYPE_B_FIGURES & out.keys() & bare.keys() & wide.keys():
             here, there, far = out[key], bare[key], wide[key]
@@ -479,11 +513,11 @@ def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
 RANGE_BOUNDS = frozenset({"E", "E_up", "E_down", "M", "Pa"})
 
 
-def _range_terms(key, x, sig_mean, n, u_b) -> tuple[np.ndarray, np.ndarray]:
+def _range_terms(key, x, sig_mean, n, shared) -> tuple[np.ndarray, np.ndarray]:
     """The means a range figure spans and their standard uncertainties (the scatter of the
     mean and the Type B inputs)."""
     def u(k):
-        return np.sqrt(sig_mean[k] ** 2 / n[k] + u_b**2)
+        return np.sqrt(sig_mean[k] ** 2 / n[k] + shared.variance)
     if key in ("E_up", "E_down"):
         k = key[2:]
         return x[k], u(k)
@@ -492,7 +526,7 @@ def _range_terms(key, x, sig_mean, n, u_b) -> tuple[np.ndarray, np.ndarray]:
     if "up" in x and "down" in x:  # M, Pa: the bidirectional mean
         return (0.5 * (x["up"] + x["down"]),
                 np.sqrt(0.25 * (sig_mean["up"] ** 2 / n["up"]
-                                + sig_mean["down"] ** 2 / n["down"]) + u_b**2))
+                                + sig_mean["down"] ** 2 / n["down"]) + shared.variance))
     k = next(iter(x))
     return x[k], u(k)
 
@@ -535,7 +569,7 @@ def _reversal_guard(x, sig_mean, n, tail) -> tuple[float, float]:
             float(np.max(reversal + float(ndtri(1.0 - tail)) * se)))
 
 
-def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
+def _calibrated_levels(drawn, pivots, n, shared, outer, inner, tail, rng):
     """The levels of the pivot's quantiles that make the interval cover at the probability
     asked for, by the iterated bootstrap (prepivoting, Beran 1987, Biometrika 74:457;
     Hall & Martin 1988): each outer test drawn from the world gets its own world and its
@@ -550,12 +584,12 @@ def _calibrated_levels(drawn, pivots, n, u_b, outer, inner, tail, rng):
         sl = slice(start, min(start + _CHUNK, outer))
         means = {k: v[0][sl] for k, v in drawn.items()}
         sds = {k: v[1][sl] for k, v in drawn.items()}
-        mu_o, sig_o, sig_mean_o = _world(means, sds, n, u_b)
+        mu_o, sig_o, sig_mean_o = _world(means, sds, n, shared)
         truth_o = axis_figures({k: (mu_o[k], sig_o[k]) for k in mu_o})
         inner_draw = _draw({k: v[:, None, :] for k, v in mu_o.items()},
                            {k: v[:, None, :] for k, v in sig_o.items()},
                            {k: v[:, None, :] for k, v in sig_mean_o.items()},
-                           n, u_b, (sl.stop - sl.start, inner), rng)
+                           n, shared, (sl.stop - sl.start, inner), rng)
         for key, sim in axis_figures(inner_draw).items():
             inner_pivot = sim - truth_o[key][:, None]
             centre = np.mean(inner_pivot, axis=1)
