@@ -37,16 +37,31 @@ def mirror_readings(true_rotation_deg: np.ndarray, psi_deg: float = PSI,
 
 def passes_record(path, rng, runs: int, sigma: float, reversal: float,
                   circle: float = 0.0, axis_noise: float = 0.0,
-                  directions: bool = True) -> dict[str, float]:
+                  directions: bool = True, circle_shape: str = "independent",
+                  curve: str = "random") -> dict[str, float]:
     """Write a record of ``runs`` × (forward, backward) passes to ``path``; return the true
     ISO 230-2 figures of the axis (the circle's errors are an error of the measurement, not
     the axis': they are in no truth). ``axis_noise``: the axis' own non-repeatability, a
     random error of its true rotation at every approach (in R and A, as ISO 230-2 counts
-    it); ``directions`` False: no run and direction columns (θ repeated)."""
+    it); ``directions`` False: no run and direction columns (θ repeated); ``circle_shape``:
+    the circle's error independent at each θ, or one sine over the span (random phase,
+    "sine"), or the axis' error curve turned over ("against": it flattens the measured
+    curve), each of standard deviation ``circle``."""
     t = np.radians(THETA)
-    d = 1.2 * np.sin(5.0 * t + rng.uniform(0, 2 * math.pi)) + 0.4 * np.cos(
-        11.0 * t + rng.uniform(0, 2 * math.pi))  # the axis' error, arcsec
+    if curve == "bow":
+        span = THETA[-1] - THETA[0]
+        d = (1.5 * np.sin(2 * math.pi * 0.8 * (THETA - THETA[0]) / span)
+             + 0.6 * (THETA / THETA[-1]) ** 2)
+    else:
+        d = 1.2 * np.sin(5.0 * t + rng.uniform(0, 2 * math.pi)) + 0.4 * np.cos(
+            11.0 * t + rng.uniform(0, 2 * math.pi))  # the axis' error, arcsec
     c = rng.normal(0.0, circle, THETA.size)  # the circle's error at each θ's position
+    if circle_shape == "sine":
+        span = THETA[-1] - THETA[0]
+        c = circle * math.sqrt(2.0) * np.sin(2 * math.pi * (THETA - THETA[0]) / span
+                                             + rng.uniform(0, 2 * math.pi))
+    elif circle_shape == "against":
+        c = -circle * (d - d.mean()) / np.std(d)
     rows = ["theta_deg,azimuth_deg,elevation_deg" + (",run,direction" if directions else "")]
     for run in range(1, runs + 1):
         for sign, order in ((+1, THETA), (-1, THETA[::-1])):

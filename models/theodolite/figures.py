@@ -16,14 +16,15 @@ inputs that are one value at a θ, with the readings without them), fed with:
   covariance correlates it from θ to θ (:func:`model_modes_at_each_theta`; it was drawn on
   its own at each θ and, as an envelope of unknown correlation, widened E, M and A by
   z·2 max u(ζ) each way), and the part of the stated theodolite's u per reading that the
-  readings do not show to scatter, √max(u_std² − s_up², 0) (:func:`circle_part`, s_up the
-  pointing noise's 95 % upper bound): the circle's error at the position it reads for that
-  θ, the same in every pass. Where the stated u is all pointing noise, the scatter shows it
-  and nothing is left over; where it is the circle's error, the scatter does not. With u
-  stated at the pointing noise, the point estimate √max(u² − s², 0) of 0.8.6 left 0.3–0.5 u
-  for it in about half the runs; with both, E, M and A were 2–3 times as wide as a correct
-  interval needs (an audit's rig, 14 cells; now 1.2–1.7 where no circle error is stated,
-  unchanged where one is).
+  readings do not show to scatter, √max(u_std² − s², 0) (:func:`circle_part`): the circle's
+  error at the position it reads for that θ, the same in every pass. Where the stated u is
+  all pointing noise, the scatter shows it and nothing is left over; where it is the
+  circle's error, the scatter does not. Its shape is not known: the interval is also
+  widened for one shaped as the curve's worst, by the part the readings show to be there at
+  95 % (:func:`evident_circle_part`, over the pointing noise's upper bound): with u stated at
+  the pointing noise, the point estimate left 0.3–0.5 u in about half the runs, and sized by
+  it (and by the model's envelope above) E, M and A were 1.5–2.7 times as wide as a correct
+  interval needs where no circle error is (an audit's rig; now 1.2–2.0).
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
@@ -40,7 +41,6 @@ import math
 from typing import Any
 
 import numpy as np
-from scipy.special import chdtri
 
 from models.messages import QT_TR_NOOP, message
 from models.readings.repeats import RepeatedReadings
@@ -53,9 +53,12 @@ from models.uncertainty.figure_intervals import (
     figure_intervals,
     figure_objects,
 )
+from models.uncertainty.stated_excess import EVIDENCE, excess_over_scatter
 
-__all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "figure_intervals_withheld",
-           "model_at_each_theta", "model_modes_at_each_theta", "pointing_per_reading",
+__all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "evident_circle_part",
+           "figure_intervals_withheld",
+           "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
+           "pointing_per_reading",
            "pooled_repeats", "repeated_at_each_theta",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
@@ -135,10 +138,10 @@ def pointing_per_reading(result: TheodoliteResult) -> float:
     own non-repeatability: where the axis scatters more than the theodolite points, taking
     it for the pointing noise left the circle's error out (a reviewer's rig: pointing 0.1″,
     axis 0.5″, circle 0.4″ — 4 of 20 decided intervals missed)."""
-    return _pointing(result)[0]
+    return pointing_and_dof(result)[0]
 
 
-def _pointing(result: TheodoliteResult) -> tuple[float, float]:
+def pointing_and_dof(result: TheodoliteResult) -> tuple[float, float]:
     """:func:`pointing_per_reading` and its degrees of freedom."""
     repeats = pooled_repeats(result)
     if repeats is not None:
@@ -153,23 +156,28 @@ def _pointing(result: TheodoliteResult) -> tuple[float, float]:
 
 
 #: how sure the readings must be that the stated u per reading exceeds their scatter before
-#: the excess is taken for the circle's error: the excess over the scatter's upper confidence
-#: bound at this one-sided probability. With the theodolite stated at its pointing noise the
-#: excess over the scatter itself came out 0.3–0.5 u in about half the runs (s below σ by
-#: chance; the smaller of two estimates lower still), an envelope of unknown correlation that
-#: widened E, M and A 2–3 times what a correct interval needs
-CIRCLE_EVIDENCE = 0.95
+#: the circle's error is taken to be shaped as the curve's worst (models.uncertainty.
+#: stated_excess)
+CIRCLE_EVIDENCE = EVIDENCE
 
 
 def circle_part(result: TheodoliteResult, stated_u: float) -> float:
     """The part of the stated u per reading that the readings do not show to scatter, the
     circle's error at the position it reads for a θ, the same in every pass:
-    √max(u² − s_up², 0), s_up the pointing noise's upper confidence bound at
-    :data:`CIRCLE_EVIDENCE` (s √(ν/χ²_ν(1 − p)), :func:`pointing_per_reading` and its ν)."""
-    s, nu = _pointing(result)
-    if nu >= 1 and math.isfinite(nu):
-        s = s * math.sqrt(nu / float(chdtri(nu, CIRCLE_EVIDENCE)))
-    return math.sqrt(max(stated_u**2 - s**2, 0.0))
+    √max(u² − s², 0), s = :func:`pointing_per_reading` (the budgets' and the figures' draws
+    at each θ)."""
+    return math.sqrt(max(stated_u**2 - pointing_per_reading(result) ** 2, 0.0))
+
+
+def evident_circle_part(result: TheodoliteResult, stated_u: float) -> float:
+    """The part of the stated u per reading that the readings show to be there: √max(u² −
+    s_up², 0), s_up the pointing noise's upper confidence bound at :data:`CIRCLE_EVIDENCE`
+    (models.uncertainty.stated_excess). It sizes the figures' widening for a circle error
+    shaped as the curve's worst (z · 2 u each way): sized by :func:`circle_part`, a theodolite
+    stated at its pointing noise got it in about half the runs (0.3–0.5 u, s below σ by
+    chance), and E, M and A were 2–3 times as wide as a correct interval needs."""
+    s, nu = pointing_and_dof(result)
+    return excess_over_scatter(stated_u, s, nu, CIRCLE_EVIDENCE)
 
 
 def model_at_each_theta(result: TheodoliteResult) -> np.ndarray:
@@ -193,12 +201,14 @@ def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
     correlation from θ to θ is not known: its standard uncertainty at each θ (the stated
     u's part the readings do not show to scatter, :func:`circle_part`), ``pair_u`` (the
     largest standard deviation it gives the difference of two θ's errors, 2 u whatever the
-    correlation) and that part, one number.
-    The set-up model's error, which also repeats, is :func:`model_modes_at_each_theta`."""
+    correlation, of the part the readings show to be there, :func:`evident_circle_part`)
+    and that part, one number. The set-up model's error, which also repeats, is
+    :func:`model_modes_at_each_theta`."""
     circle = circle_part(result, stated_u)
     iso = result.iso230
     assert iso is not None
-    return np.full(np.asarray(iso.positions).size, circle), 2.0 * circle, circle
+    return (np.full(np.asarray(iso.positions).size, circle),
+            2.0 * evident_circle_part(result, stated_u), circle)
 
 
 def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget,

@@ -369,7 +369,9 @@ MEANS_STATEMENT = QT_TR_NOOP(
     "The half range is decided on the means over the passes at each θ and direction (the "
     "reversal kept), each with its own budget: the passes' pooled scatter over √n, the "
     "set-up model's error and the part of the stated theodolite u that the scatter does not "
-    "show, the same at a θ in every pass.")
+    "show, the same at a θ in every pass. Where the readings show such a part, its shape is "
+    "not known: the interval also holds ISO 230-2 E's halved, which holds a circle error of "
+    "any shape.")
 
 
 def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
@@ -393,14 +395,17 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
     from models.theodolite.pass_means import (
         MEANS_DECIDED,
         decided_on_means,
+        means_half_range,
         pass_means,
         pass_means_budget,
     )
 
     if metadata.decision_quantity == "half_range" and decided_on_means(result):
         means, names = pass_means(result)
-        return Decision(means, MEANS_DECIDED, names, budget=pass_means_budget(
-            result, metadata, stated_reading_uncertainty(metadata)[0], settings))
+        stated = stated_reading_uncertainty(metadata)[0]
+        budget = pass_means_budget(result, metadata, stated, settings)
+        return Decision(means, MEANS_DECIDED, names, budget=budget, estimate=means_half_range(
+            result, budget, theodolite_budget(result, metadata, settings), stated))
     return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg))
 
 

@@ -108,8 +108,7 @@ def _passes_tests(tests: int, runs: int, sigma: float, circle: float,
     reading, and the circle's error at each θ (standard deviation ``circle``, the same in
     every pass); the theodolite stated at u = √(σ² + circle²) per reading."""
     from models.theodolite.figures import theodolite_figure_intervals
-    from models.theodolite.pass_means import pass_means, pass_means_budget
-    from models.uncertainty.conformity import half_range_monte_carlo
+    from models.theodolite.pass_means import means_half_range, pass_means_budget
     from models.uncertainty.figure_intervals import FigureInterval
 
     theta = np.arange(-20.0, 20.1, 2.0)
@@ -138,8 +137,8 @@ def _passes_tests(tests: int, runs: int, sigma: float, circle: float,
         intervals = dict(theodolite_figure_intervals(result, theodolite_budget(result, meta),
                                                      stated))
         # the decided quantity: half the peak-to-peak of the means over the passes
-        means, _ = pass_means(result)
-        mc = half_range_monte_carlo(means, pass_means_budget(result, meta, stated))
+        run_budget = theodolite_budget(result, meta)
+        mc = means_half_range(result, pass_means_budget(result, meta, stated), run_budget, stated)
         intervals["decided"] = FigureInterval(mc.value, mc.interval_low, mc.interval_high,
                                               mc.probability)
         truth["decided"] = 0.5 * both

@@ -948,9 +948,9 @@
         <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差）在每个 θ 只抽取一次，在每个测回和两个方向上相同；所给概率在仿真研究达到的概率较低时取后者。</translation>
     </message>
     <message>
-        <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass.</source>
+        <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass. Where the readings show such a part, its shape is not known: the interval also holds ISO 230-2 E&apos;s halved, which holds a circle error of any shape.</source>
         <extracomment>how a run with passes is decided</extracomment>
-        <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。</translation>
+        <translation>半峰峰值按各测回在每个 θ 和方向上的均值判定（保留反向差），每个均值有自己的不确定度预算：测回合并的分散除以 √n、安装模型的误差，以及所给经纬仪 u 中分散未显示的部分（在每个测回中同一 θ 处相同）。读数表明存在这一部分时，其形状未知：区间还包含 ISO 230-2 的 E 区间的一半，后者可容纳任意形状的度盘误差。</translation>
     </message>
     <message>
         <source>Axis tilt ψ</source>
