@@ -23,8 +23,9 @@ inputs that are one value at a θ, with the readings without them), fed with:
   widened for one shaped as the curve's worst, by the part the readings show to be there at
   95 % (:func:`evident_circle_part`, over the pointing noise's upper bound): with u stated at
   the pointing noise, the point estimate left 0.3–0.5 u in about half the runs, and sized by
-  it (and by the model's envelope above) E, M and A were 1.5–2.7 times as wide as a correct
-  interval needs where no circle error is (an audit's rig; now 1.2–2.0).
+  it (and by the model's envelope above) E, M and A were 1.5–3.5 times as wide as a correct
+  interval needs where no circle error is (an audit's rig, 7 cells; now 1.1–2.3: E 1.2–1.8,
+  M 1.4–2.3, A 1.1–2.0).
   The reference reading θ₀ is one value for the run: it moves every error alike and no
   figure (a range, a reversal, a scatter) sees it.
 
@@ -175,7 +176,8 @@ def evident_circle_part(result: TheodoliteResult, stated_u: float) -> float:
     (models.uncertainty.stated_excess). It sizes the figures' widening for a circle error
     shaped as the curve's worst (z · 2 u each way): sized by :func:`circle_part`, a theodolite
     stated at its pointing noise got it in about half the runs (0.3–0.5 u, s below σ by
-    chance), and E, M and A were 2–3 times as wide as a correct interval needs."""
+    chance), and with the model's envelope E, M and A were 1.5–3.5 times as wide as a correct
+    interval needs (the module's note)."""
     s, nu = pointing_and_dof(result)
     return excess_over_scatter(stated_u, s, nu, CIRCLE_EVIDENCE)
 

@@ -360,10 +360,11 @@ FIGURES_STATEMENT = QT_TR_NOOP(
     "below the value stated. It is a parametric bootstrap of the figure's error from a model "
     "of the axis fitted to the means and standard deviations over the passes (the "
     "positioning workbench's, models/uncertainty/figure_intervals.py), with the set-up "
-    "model's error and the part of the stated theodolite u that the passes' scatter does not "
-    "show (the circle's error where it reads that θ) drawn once per θ, the same in every pass "
-    "and both directions; the probability stated is the one a simulation study reached where "
-    "that is lower.")
+    "model's error (one curve over θ, drawn as its fit's covariance correlates it) and the "
+    "part of the stated theodolite u that the passes' scatter does not show (the circle's "
+    "error where it reads that θ, drawn once per θ and, where the readings show it, also "
+    "taken as shaped as the curve's worst), the same in every pass and both directions; the "
+    "probability stated is the one a simulation study reached where that is lower.")
 #: how a run with passes is decided
 MEANS_STATEMENT = QT_TR_NOOP(
     "The half range is decided on the means over the passes at each θ and direction (the "

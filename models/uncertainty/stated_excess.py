@@ -28,7 +28,10 @@ EVIDENCE = 0.95
 
 def scatter_upper_bound(s: float, nu: float, evidence: float = EVIDENCE) -> float:
     """The one-sided upper confidence bound of σ at ``evidence`` from s on ν degrees of
-    freedom, s √(ν / χ²_ν(1 − evidence)); s itself where ν is not a finite number ≥ 1."""
+    freedom, s √(ν / χ²_ν(1 − evidence)); s itself where ν is not a finite number ≥ 1, and
+    ∞ where s is not a number (nothing is then shown to exceed it)."""
+    if not math.isfinite(s):
+        return math.inf  # no scatter known: nothing is shown to exceed it
     if not (math.isfinite(nu) and nu >= 1.0):
         return s
     return s * math.sqrt(nu / float(chdtri(nu, evidence)))

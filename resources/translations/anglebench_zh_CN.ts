@@ -856,6 +856,11 @@
         <translation>每次读数 s = {s}，由各测回在每个 θ 和方向上合并（ν = {dof}），再除以每个均值的 √n</translation>
     </message>
     <message>
+        <source>{quantity}: {trials} trials, seed {seed}, of the means over the passes; the readings show the stated theodolite u to exceed their scatter (the circle&apos;s part at 95 %: {circle}), an error the same at a θ in every pass whose shape is not known, and a smooth one running against the curve lowers the measured range: the interval is united with ISO 230-2 {figure}&apos;s halved, which holds a circle error of any shape. The union covers at least as often as the Monte Carlo (validated on errors independent at each θ); on once-a-turn circle errors it covered 40 of 40 and, in an independent audit, 200 of 200 runs, where the Monte Carlo alone covered 28 of 40 and 440 of 600</source>
+        <extracomment>how the decided half range is made where it is united with E&apos;s interval</extracomment>
+        <translation>{quantity}：{trials} 次试验，种子 {seed}，取各测回的均值；读数表明所给经纬仪 u 超出其分散（95 % 概率下的度盘误差部分：{circle}），这一误差在每个测回中同一 θ 处相同而形状未知，光滑的度盘误差若与曲线相抵会使测得的极差变小：区间与 ISO 230-2 {figure} 区间的一半合并，后者可容纳任意形状的度盘误差。合并后的区间覆盖率不低于蒙特卡洛区间（后者按每个 θ 独立的误差验证）；对每转一次的度盘误差，40 次中覆盖 40 次，独立审核中 200 次中覆盖 200 次，而单用蒙特卡洛区间时分别为 40 次中 28 次和 600 次中 440 次</translation>
+    </message>
+    <message>
         <source>Set-up model ζ (ψ, α, β)</source>
         <extracomment>the budget&apos;s name of the set-up model&apos;s error (the run&apos;s budget and the passes&apos; means)</extracomment>
         <translation>安装模型 ζ（ψ, α, β）</translation>
@@ -943,9 +948,9 @@
         <translation>包含区间 {low} … {high}（{p} %）</translation>
     </message>
     <message>
-        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ) drawn once per θ, the same in every pass and both directions; the probability stated is the one a simulation study reached where that is lower.</source>
+        <source>Coverage interval of each ISO 230-2 figure of the passes: a figure is a largest value or a range over the θ, biased high by the scatter, so its interval, that of the true figure (of the true means and standard deviations at each θ and direction), may lie below the value stated. It is a parametric bootstrap of the figure&apos;s error from a model of the axis fitted to the means and standard deviations over the passes (the positioning workbench&apos;s, models/uncertainty/figure_intervals.py), with the set-up model&apos;s error (one curve over θ, drawn as its fit&apos;s covariance correlates it) and the part of the stated theodolite u that the passes&apos; scatter does not show (the circle&apos;s error where it reads that θ, drawn once per θ and, where the readings show it, also taken as shaped as the curve&apos;s worst), the same in every pass and both directions; the probability stated is the one a simulation study reached where that is lower.</source>
         <extracomment>how the ISO 230-2 figures of a run with passes get their intervals</extracomment>
-        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差）在每个 θ 只抽取一次，在每个测回和两个方向上相同；所给概率在仿真研究达到的概率较低时取后者。</translation>
+        <translation>多测回各项 ISO 230-2 指标的包含区间：指标是各 θ 上的最大值或极差，受分散影响偏高，因此其区间（真实指标即各 θ 和方向上真实均值与标准偏差的指标的区间）可能位于所给数值之下。区间由轴系模型对指标误差作参数自助法得到，模型按各测回的均值和标准偏差拟合（定位工作台的方法，models/uncertainty/figure_intervals.py），安装模型的误差（随 θ 变化的一条曲线，按其拟合的协方差相关地抽样）以及所给经纬仪 u 中测回分散性未显示的部分（度盘在该 θ 读数处的误差，在每个 θ 抽取一次；读数表明其存在时，还按形状最不利的情形考虑）在每个测回和两个方向上相同；所给概率在仿真研究达到的概率较低时取后者。</translation>
     </message>
     <message>
         <source>The half range is decided on the means over the passes at each θ and direction (the reversal kept), each with its own budget: the passes&apos; pooled scatter over √n, the set-up model&apos;s error and the part of the stated theodolite u that the scatter does not show, the same at a θ in every pass. Where the readings show such a part, its shape is not known: the interval also holds ISO 230-2 E&apos;s halved, which holds a circle error of any shape.</source>
