@@ -14,7 +14,6 @@ four degrees of freedom, where E's parametric bootstrap models the axis itself.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 from models.messages import QT_TR_NOOP, message
 from models.positioning.model import PositioningResult
@@ -22,7 +21,7 @@ from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.figure_intervals import INTERVAL_TRIALS, FigureInterval, readings_seed
 
-__all__ = ["COARSE_DECIDED", "DECIDED_METHOD", "FigureHalfRange", "decided_figure", "decided_half_range"]
+__all__ = ["COARSE_DECIDED", "DECIDED_METHOD", "decided_figure", "decided_half_range"]
 
 DECIDED_METHOD = QT_TR_NOOP(
     "half the peak-to-peak of the mean positional deviations of {directions}, {figure}/2 "
@@ -42,13 +41,6 @@ COARSE_DECIDED = QT_TR_NOOP(
     "way their scatter does not show, and the range with it")
 
 
-@dataclass(frozen=True)
-class FigureHalfRange(HalfRangeEstimate):
-    """A half range decided with an axis figure's own interval; ``method`` says how."""
-
-    method: str = ""
-
-
 def decided_figure(result: PositioningResult) -> str:
     """The ISO 230-2 figure whose half is decided: E with both directions, else E↑ or E↓."""
     present = [name for name, _, _ in result.directions_present()]
@@ -56,7 +48,7 @@ def decided_figure(result: PositioningResult) -> str:
 
 
 def decided_half_range(result: PositioningResult, budget: UncertaintyBudget,
-                       intervals: dict[str, FigureInterval]) -> FigureHalfRange | None:
+                       intervals: dict[str, FigureInterval]) -> HalfRangeEstimate | None:
     """E/2 (or E↑/2, E↓/2) and its interval from ``intervals`` (models.positioning.report
     .figure_uncertainties with the certificate's ``budget``); None when the figure has no
     interval (a target approached fewer than twice: the repeatability unknown)."""
@@ -65,10 +57,10 @@ def decided_half_range(result: PositioningResult, budget: UncertaintyBudget,
         # the rounding of each mean may have flattened the curve by up to half a step at
         # either extreme, which no model of random scatter holds: withheld, with the reason
         measured = 0.5 * float(result.iso.figures.get(key, math.nan))
-        return FigureHalfRange(measured=measured, bias=math.nan, value=math.nan,
-                               u_upper=math.nan, u_lower=math.nan,
-                               probability=budget.probability, trials=0, seed=0,
-                               method=message(COARSE_DECIDED))
+        return HalfRangeEstimate(measured=measured, bias=math.nan, value=math.nan,
+                                 u_upper=math.nan, u_lower=math.nan,
+                                 probability=budget.probability, trials=0, seed=0,
+                                 method=message(COARSE_DECIDED))
     interval = intervals.get(key)
     if interval is None or not all(math.isfinite(v) for v in (interval.value, interval.low,
                                                               interval.high)):
@@ -79,7 +71,7 @@ def decided_half_range(result: PositioningResult, budget: UncertaintyBudget,
                   message(QT_TR_NOOP("the backward direction")))
     seed = readings_seed(result.targets, result.directions, result.deviations)
     figure = {"E": "E", "E_up": "E↑", "E_down": "E↓"}[key]
-    return FigureHalfRange(
+    return HalfRangeEstimate(
         measured=value, bias=0.0, value=value,
         u_upper=0.5 * interval.high - value, u_lower=value - 0.5 * interval.low,
         probability=interval.probability, trials=INTERVAL_TRIALS, seed=seed,

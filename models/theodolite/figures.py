@@ -60,7 +60,7 @@ __all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "evident_circle_part
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_per_reading",
-           "pooled_repeats", "repeated_at_each_theta",
+           "pooled_repeats",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
 #: the budget's name of the set-up model's error (the run's budget and the passes' means)
@@ -197,22 +197,6 @@ def model_modes_at_each_theta(result: TheodoliteResult) -> np.ndarray:
     return model_error_modes(rotation, result.identification).T
 
 
-def repeated_at_each_theta(result: TheodoliteResult, stated_u: float
-                           ) -> tuple[np.ndarray, float, float]:
-    """The stated theodolite's error that repeats at a θ in every pass, an envelope whose
-    correlation from θ to θ is not known: its standard uncertainty at each θ (the stated
-    u's part the readings do not show to scatter, :func:`circle_part`), ``pair_u`` (the
-    largest standard deviation it gives the difference of two θ's errors, 2 u whatever the
-    correlation, of the part the readings show to be there, :func:`evident_circle_part`)
-    and that part, one number. The set-up model's error, which also repeats, is
-    :func:`model_modes_at_each_theta`."""
-    circle = circle_part(result, stated_u)
-    iso = result.iso230
-    assert iso is not None
-    return (np.full(np.asarray(iso.positions).size, circle),
-            2.0 * evident_circle_part(result, stated_u), circle)
-
-
 def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBudget,
                                 stated_u: float = 0.0) -> dict[str, FigureInterval]:
     """The coverage interval of every ISO 230-2 figure of ``result`` at the ``budget``'s
@@ -223,20 +207,24 @@ def theodolite_figure_intervals(result: TheodoliteResult, budget: UncertaintyBud
         return {}
     iso = result.iso230
     assert iso is not None
-    u_b, pair, _ = repeated_at_each_theta(result, stated_u)
+    # the stated theodolite's error that repeats at a θ in every pass, an envelope whose
+    # correlation from θ to θ is not known: drawn at each θ at the part the scatter does not
+    # show, and its worst shape (2 u between two θ) sized by the part the readings show
+    circle = circle_part(result, stated_u)
+    pair = 2.0 * evident_circle_part(result, stated_u)
     modes = model_modes_at_each_theta(result)
     # seeded from the curve on a coarse grid (models.uncertainty.conformity.readings_seed):
     # a fitted curve's last digits differ between processors; in the key, so that the
     # intervals do not depend on which budget asked first (the summary's or a certificate's)
     seed = readings_seed(result.corrected_error_arcsec, budget)
-    key = (budget.probability, u_b.tobytes(), pair, seed)  # the modes: from the readings
+    key = (budget.probability, circle, pair, seed)  # the modes: from the readings
     cache = result.__dict__.setdefault("_theodolite_figure_intervals", {})
     if key not in cache:
         figures = {k: v for k, v in iso.figures.items() if math.isfinite(v)}
         found = figure_intervals({name: stats.mean for name, stats in present},
                                  {name: stats.std for name, stats in present},
                                  {name: stats.runs for name, stats in present},
-                                 budget.probability, u_b, seed, figures=figures, pair_u=pair,
+                                 budget.probability, circle, seed, figures=figures, pair_u=pair,
                                  model_modes=modes)
         cache[key] = {k: v for k, v in found.items() if k in figures}
     return cache[key]

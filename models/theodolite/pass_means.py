@@ -31,7 +31,6 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -41,11 +40,12 @@ from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.theodolite.figures import (
     MODEL_INPUT,
+    circle_part,
+    evident_circle_part,
     figure_intervals_withheld,
     model_at_each_theta,
     passes_scatter,
     pointing_per_reading,
-    repeated_at_each_theta,
     theodolite_figure_intervals,
 )
 from models.theodolite.model import TheodoliteResult
@@ -57,7 +57,7 @@ from models.uncertainty.conformity import (
 )
 from models.uncertainty.lab_scope import cmc_of
 
-__all__ = ["MEANS_DECIDED", "MeansHalfRange", "decided_on_means", "means_half_range", "pass_means",
+__all__ = ["MEANS_DECIDED", "decided_on_means", "means_half_range", "pass_means",
            "pass_means_budget"]
 
 #: what the decision names as its curve
@@ -106,7 +106,7 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     present = _present(result)
     runs = np.concatenate([stats.runs for _, stats in present]).astype(float)
     pooled, nu = passes_scatter(result)
-    circle = repeated_at_each_theta(result, stated_u)[2]
+    circle = circle_part(result, stated_u)
     model = np.concatenate([model_at_each_theta(result)] * len(present))
     points = runs.size
     components = [
@@ -146,14 +146,6 @@ MEANS_UNITED = QT_TR_NOOP(
     "of 200 runs, where the Monte Carlo alone covered 28 of 40 and 440 of 600")
 
 
-@dataclass(frozen=True)
-class MeansHalfRange(HalfRangeEstimate):
-    """A decided half range of the means whose interval is united with E's halved;
-    ``method`` says how (the certificate's and the JSON's text of the decided quantity)."""
-
-    method: str = ""
-
-
 def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
                      run_budget: UncertaintyBudget, stated_u: float) -> HalfRangeEstimate:
     """The decided half range of the means (:func:`pass_means`) with its interval: the Monte
@@ -170,8 +162,8 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
     of the once-a-turn errors where it did not."""
     means = pass_means(result)[0]
     estimate = half_range_monte_carlo(means, budget)
-    pair = repeated_at_each_theta(result, stated_u)[1]
-    if not (pair > 0.0) or not all(
+    evident = evident_circle_part(result, stated_u)
+    if not (evident > 0.0) or not all(
             math.isfinite(v) for v in (estimate.u_lower, estimate.u_upper)):
         return estimate
     present = [name for name, _ in _present(result)]
@@ -184,6 +176,6 @@ def means_half_range(result: TheodoliteResult, budget: UncertaintyBudget,
     figure = {"E": "E", "E_up": "E↑", "E_down": "E↓"}[key]
     method = message(MEANS_UNITED, quantity=message(DECISION_QUANTITIES["half_range"]),
                      trials=estimate.trials, seed=str(estimate.seed),
-                     circle=f"{0.5 * pair:.3f}\"", figure=figure)
-    return MeansHalfRange(**{**dataclasses.asdict(estimate), "u_lower": estimate.value - low,
-                             "u_upper": high - estimate.value}, method=method)
+                     circle=f"{evident:.3f}\"", figure=figure)
+    return dataclasses.replace(estimate, u_lower=estimate.value - low,
+                               u_upper=high - estimate.value, method=method)

@@ -389,10 +389,11 @@ def _passes_statements(result: TheodoliteResult, metadata: CertificateMetadata
 
 
 def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
-              settings: Mapping[str, Any] | None) -> Decision:
+              settings: Mapping[str, Any] | None, budget: UncertaintyBudget) -> Decision:
     """The curve the statement of conformity is made on: with passes that determine it and
     the half range decided, the means over the passes at each θ and direction with their
-    own budget (models.theodolite.pass_means); else every reading's corrected error."""
+    own budget (models.theodolite.pass_means; ``budget``: the run's, whose figures' E the
+    means' interval may be united with); else every reading's corrected error."""
     from models.theodolite.pass_means import (
         MEANS_DECIDED,
         decided_on_means,
@@ -404,9 +405,9 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
     if metadata.decision_quantity == "half_range" and decided_on_means(result):
         means, names = pass_means(result)
         stated = stated_reading_uncertainty(metadata)[0]
-        budget = pass_means_budget(result, metadata, stated, settings)
-        return Decision(means, MEANS_DECIDED, names, budget=budget, estimate=means_half_range(
-            result, budget, theodolite_budget(result, metadata, settings), stated))
+        means_budget = pass_means_budget(result, metadata, stated, settings)
+        return Decision(means, MEANS_DECIDED, names, budget=means_budget,
+                        estimate=means_half_range(result, means_budget, budget, stated))
     return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg))
 
 
@@ -454,7 +455,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,
         source_name=source_name, method_reference=method_reference, budget=budget,
         parameters=parameters, results=results, statistics=statistics,
-        decision=_decision(result, metadata, settings),
+        decision=_decision(result, metadata, settings, budget),
         budget_point=lambda worst: f"θ = {result.theta_deg[worst]:g}°",
         plots=(error_figure(result), corrected_with_uncertainty(result, big_u),
                residual_figure(result)), warnings=result.warnings,

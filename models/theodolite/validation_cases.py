@@ -134,10 +134,9 @@ def _passes_tests(tests: int, runs: int, sigma: float, circle: float,
         both = float(np.ptp(np.concatenate([d + 0.5 * b, d - 0.5 * b])))
         truth = {"E": both, "M": float(np.ptp(d)), "B": b, "B_mean": b,
                  "R": 4.0 * sigma + b, "A": both + 4.0 * sigma}
-        intervals = dict(theodolite_figure_intervals(result, theodolite_budget(result, meta),
-                                                     stated))
-        # the decided quantity: half the peak-to-peak of the means over the passes
         run_budget = theodolite_budget(result, meta)
+        intervals = dict(theodolite_figure_intervals(result, run_budget, stated))
+        # the decided quantity: half the peak-to-peak of the means over the passes
         mc = means_half_range(result, pass_means_budget(result, meta, stated), run_budget, stated)
         intervals["decided"] = FigureInterval(mc.value, mc.interval_low, mc.interval_high,
                                               mc.probability)

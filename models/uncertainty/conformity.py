@@ -162,6 +162,9 @@ class HalfRangeEstimate:
     # NOISE_CONTRADICTED of the trials, when the measured half range lies below it: the
     # budget's noise is not these readings' and no interval is stated (nan otherwise)
     noise_floor: float = float("nan")
+    # how the estimate was made where a workbench makes its own (positioning's E/2 with E's
+    # interval, a theodolite's means united with E's): the decision's text; "" for this one
+    method: str = ""
 
     @classmethod
     def as_measured(cls, measured: float, probability: float, trials: int = 0, seed: int = 0,
@@ -828,8 +831,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                              quantity=message(DECISION_QUANTITIES["half_range"]),
                              trials=trials, seed=str(seed)))
     achieved = HALF_RANGE_COVERAGE
-    method = getattr(mc, "method", "")
-    quantity_text = method or separated([quantity_text, message(QT_TR_NOOP(
+    quantity_text = getattr(mc, "method", "") or separated([quantity_text, message(QT_TR_NOOP(
         "the interval's coverage achieved in validation (noise 0.1 to 2 times the half range, "
         "12 to 72 points, 100 runs in each of a shape's 12 cells, pooled): {smooth} % on smooth "
         "curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real "

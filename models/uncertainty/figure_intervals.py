@@ -403,7 +403,7 @@ _CHUNK = 25
 
 def figure_intervals(means: dict[str, np.ndarray], stds: dict[str, np.ndarray],
                      runs: dict[str, np.ndarray], probability: float,
-                     type_b_u: np.ndarray | None = None, seed: int = 0,
+                     type_b_u: np.ndarray | float | None = None, seed: int = 0,
                      trials: int = INTERVAL_TRIALS, figures: dict[str, float] | None = None,
                      outer: int = OUTER_TRIALS, inner: int = INNER_TRIALS,
                      pair_u: float | None = None, model_modes: np.ndarray | None = None

@@ -91,7 +91,7 @@ def test_an_axis_that_scatters_more_than_the_theodolite_keeps_the_circle_error(
     from models.readings.sheet import ReadingsSheet
     from models.readings.tabular_import import map_columns, read_table
     from models.theodolite.analysis import THEODOLITE
-    from models.theodolite.figures import repeated_at_each_theta
+    from models.theodolite.figures import circle_part
 
     rng = np.random.default_rng(77)
     stated = float(np.hypot(0.1, 0.4))
@@ -104,7 +104,7 @@ def test_an_axis_that_scatters_more_than_the_theodolite_keeps_the_circle_error(
         p = min(p, decided["coverage_probability"])
         result = THEODOLITE.analyze(ReadingsSheet(THEODOLITE.columns, map_columns(
             read_table(record), THEODOLITE.columns)).parse(), THEODOLITE.settings_with_defaults({}))
-        circles.append(repeated_at_each_theta(result, stated)[2])
+        circles.append(circle_part(result, stated))
     assert hits >= binom.ppf(0.01, 30, p), (hits, p)
     # the circle's part found (0 in every run before: the axis' 0.5" taken for pointing)
     assert 0.3 <= float(np.median(circles)) <= 0.45, circles
