@@ -58,7 +58,10 @@ class Message(str):
 
 
 def message(template: str, **figures: Any) -> Message:
-    """``template.format(**figures)``, remembering both."""
+    """``template.format(**figures)``, remembering both; a message with no figures given is
+    itself (a reason that is already a message, its figures filled in, stays translatable)."""
+    if isinstance(template, Message) and not figures:
+        return template
     return Message(template, figures)
 
 

@@ -35,10 +35,24 @@ def mirror_readings(true_rotation_deg: np.ndarray, psi_deg: float = PSI,
     return np.degrees(np.arctan2(out[:, 1], out[:, 0])), np.degrees(np.arcsin(out[:, 2]))
 
 
+def _shown(angle_deg: float, step: float | None) -> str:
+    """An angle as the theodolite's display shows it: decimal degrees, or d°m's" rounded to
+    ``step`` arcsec (a CSV cell, quoted)."""
+    if step is None:
+        return f"{angle_deg:.9f}"
+    per_second = max(1, round(1.0 / step))  # counted in whole ticks: no 59.99999″
+    ticks = round(abs(angle_deg) * 3600.0 / step) * round(step * per_second)
+    d, rest = divmod(ticks, 3600 * per_second)
+    m, t = divmod(rest, 60 * per_second)
+    decimals = len(str(per_second)) - 1
+    sign = "-" if angle_deg < 0 and ticks else ""
+    return f'"{sign}{d}°{m}\'{t / per_second:.{decimals}f}"""'
+
+
 def passes_record(path, rng, runs: int, sigma: float, reversal: float,
                   circle: float = 0.0, axis_noise: float = 0.0,
                   directions: bool = True, circle_shape: str = "independent",
-                  curve: str = "random") -> dict[str, float]:
+                  curve: str = "random", step: float | None = None) -> dict[str, float]:
     """Write a record of ``runs`` × (forward, backward) passes to ``path``; return the true
     ISO 230-2 figures of the axis (the circle's errors are an error of the measurement, not
     the axis': they are in no truth). ``axis_noise``: the axis' own non-repeatability, a
@@ -46,7 +60,9 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
     it); ``directions`` False: no run and direction columns (θ repeated); ``circle_shape``:
     the circle's error independent at each θ, or one sine over the span (random phase,
     "sine"), or the axis' error curve turned over ("against": it flattens the measured
-    curve), each of standard deviation ``circle``."""
+    curve), each of standard deviation ``circle``. ``step``: the theodolite shows its
+    readings to that step (arcsec), written in degrees, minutes and seconds as a user types
+    them off the display; None: decimal degrees to 1e-9°."""
     t = np.radians(THETA)
     if curve == "bow":
         span = THETA[-1] - THETA[0]
@@ -71,7 +87,7 @@ def passes_record(path, rng, runs: int, sigma: float, reversal: float,
             az = az + (c[i] + rng.normal(0.0, sigma, order.size)) / 3600.0
             el = el + rng.normal(0.0, sigma, order.size) / 3600.0
             tail = f",{run},{'+' if sign > 0 else '-'}" if directions else ""
-            rows += [f"{a:.9f},{b:.9f},{e:.9f}{tail}"
+            rows += [f"{a:.9f},{_shown(b, step)},{_shown(e, step)}{tail}"
                      for a, b, e in zip(order, az, el, strict=True)]
     path.write_text("\n".join(rows) + "\n")
     # the figures are the axis': the circle's errors (the same at a θ in every pass) are an

@@ -45,6 +45,7 @@ import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 from models.readings.repeats import RepeatedReadings
+from models.readings.resolution import coarse, readings_step
 from models.theodolite.model import TheodoliteResult, model_error_modes
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import readings_seed
@@ -60,7 +61,7 @@ __all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "evident_circle_part
            "figure_intervals_withheld",
            "model_at_each_theta", "model_modes_at_each_theta", "pointing_and_dof",
            "pointing_per_reading",
-           "pooled_repeats",
+           "pooled_repeats", "readings_coarse",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
 #: the budget's name of the set-up model's error (the run's budget and the passes' means)
@@ -72,6 +73,10 @@ ONCE_ONLY = QT_TR_NOOP("a θ was read fewer than twice in a direction: its stand
 NO_SCATTER = QT_TR_NOOP("the corrected errors of every θ came out identical over the passes in "
                         "a direction: their scatter cannot be told (readings rounded coarser "
                         "than they scatter?), so no ISO 230-2 figure has a coverage interval")
+COARSE = QT_TR_NOOP("the readings were entered coarser than they scatter over the passes (step "
+                    "{step}, s pooled {s}): the rounding of each mean is not random, and the "
+                    "model the intervals are drawn from (random scatter about each θ's true "
+                    "mean) does not hold, so no ISO 230-2 figure has a coverage interval")
 
 
 def _directions(result: TheodoliteResult):
@@ -93,7 +98,21 @@ def figure_intervals_withheld(result: TheodoliteResult) -> str | None:
         return ONCE_ONLY
     if any(np.all(stats.std == 0.0) for _, stats in present):  # one direction is enough:
         return NO_SCATTER  # its figures would get a zero-width interval
+    step, pooled = readings_step(result.raw_error_arcsec), passes_scatter(result)[0]
+    if coarse(step, pooled):  # as the positioning's (models.readings.resolution)
+        return message(COARSE, step=f"{step:g}\"", s=f"{pooled:.3g}\"")
     return None
+
+
+def readings_coarse(result: TheodoliteResult) -> bool:
+    """Whether the passes' readings cannot hold the noise model of the decided half range:
+    every θ's readings alike over the passes in a direction, or entered coarser than they
+    scatter (models.readings.resolution.coarse, the raw error's step: the azimuth readings'
+    as typed). A Monte Carlo that removes the noise's bias from the range then removes what
+    the readings show is not there (an audit: exact readings, u = 0.5″ stated, the half range
+    decided 1.68″ … [0.88″, 2.12″] where 2.32″ was measured and true)."""
+    withheld = figure_intervals_withheld(result)
+    return withheld is not None and withheld != ONCE_ONLY
 
 
 def _per_theta(result: TheodoliteResult, values) -> np.ndarray:

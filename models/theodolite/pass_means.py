@@ -46,6 +46,7 @@ from models.theodolite.figures import (
     model_at_each_theta,
     passes_scatter,
     pointing_per_reading,
+    readings_coarse,
     theodolite_figure_intervals,
 )
 from models.theodolite.model import TheodoliteResult
@@ -57,8 +58,8 @@ from models.uncertainty.conformity import (
 )
 from models.uncertainty.lab_scope import cmc_of
 
-__all__ = ["MEANS_DECIDED", "decided_on_means", "means_half_range", "pass_means",
-           "pass_means_budget"]
+__all__ = ["COARSE_DECIDED", "MEANS_DECIDED", "decided_on_means", "means_half_range",
+           "pass_means", "pass_means_budget", "withheld_half_range"]
 
 #: what the decision names as its curve
 MEANS_DECIDED = QT_TR_NOOP("corrected error, the mean over the passes at each θ and direction")
@@ -75,6 +76,29 @@ def decided_on_means(result: TheodoliteResult) -> bool:
     intervals missed), every θ read at least twice in each direction, with some scatter."""
     return (result.iso230 is not None and result.directions is not None
             and figure_intervals_withheld(result) is None)
+
+
+#: why the decided half range of passes whose readings show no random scatter is withheld
+COARSE_DECIDED = QT_TR_NOOP(
+    "half the peak-to-peak of the corrected error, withheld: {reason}; the Monte Carlo that "
+    "takes the noise's bias off the range would draw random noise these readings do not "
+    "have, and each mean may be off by up to half a step in a way their scatter does not "
+    "show")
+
+
+def withheld_half_range(result: TheodoliteResult, probability: float
+                        ) -> HalfRangeEstimate | None:
+    """The decided half range withheld, with the reason, where the passes' readings are
+    alike or entered coarser than they scatter (models.theodolite.figures.readings_coarse:
+    the positioning workbench withholds its E/2 so); None where they scatter."""
+    if not readings_coarse(result):
+        return None
+    reason = figure_intervals_withheld(result)
+    measured = 0.5 * float(np.ptp(result.corrected_error_arcsec))
+    return HalfRangeEstimate(measured=measured, bias=math.nan, value=math.nan,
+                             u_upper=math.nan, u_lower=math.nan, probability=probability,
+                             trials=0, seed=0,
+                             method=message(COARSE_DECIDED, reason=message(reason or "")))
 
 
 def _present(result: TheodoliteResult):

@@ -393,13 +393,15 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
     """The curve the statement of conformity is made on: with passes that determine it and
     the half range decided, the means over the passes at each θ and direction with their
     own budget (models.theodolite.pass_means; ``budget``: the run's, whose figures' E the
-    means' interval may be united with); else every reading's corrected error."""
+    means' interval may be united with); else every reading's corrected error, its half
+    range withheld where the passes show no random scatter (pass_means.withheld_half_range)."""
     from models.theodolite.pass_means import (
         MEANS_DECIDED,
         decided_on_means,
         means_half_range,
         pass_means,
         pass_means_budget,
+        withheld_half_range,
     )
 
     if metadata.decision_quantity == "half_range" and decided_on_means(result):
@@ -408,7 +410,10 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
         means_budget = pass_means_budget(result, metadata, stated, settings)
         return Decision(means, MEANS_DECIDED, names, budget=means_budget,
                         estimate=means_half_range(result, means_budget, budget, stated))
-    return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg))
+    withheld = (withheld_half_range(result, budget.probability)
+                if metadata.decision_quantity == "half_range" else None)
+    return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg),
+                    estimate=withheld)
 
 
 def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetadata,

@@ -762,6 +762,10 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
             measured=f"{float(getattr(mc, 'measured', x)):.3g}{budget.unit.written()}",
             floor=f"{floor:.3g}{budget.unit.written()}")
             if math.isfinite(floor) else
+            separated([getattr(mc, "method", ""), message(QT_TR_NOOP(
+                "as measured, half the peak-to-peak is {measured}"),
+                measured=f"{float(getattr(mc, 'measured', x)):.3g}{budget.unit.written()}")])
+            if getattr(mc, "method", "") and math.isfinite(float(getattr(mc, "measured", x))) else
             message(QT_TR_NOOP("the decided quantity has no coverage interval (the data do not "
                                "determine one); as measured, half the peak-to-peak is "
                                "{measured}"),

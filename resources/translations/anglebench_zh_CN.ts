@@ -852,6 +852,11 @@
         <translation>经纬仪度盘在每个 θ 处的误差（所给 u 扣除测回分散性）</translation>
     </message>
     <message>
+        <source>half the peak-to-peak of the corrected error, withheld: {reason}; the Monte Carlo that takes the noise&apos;s bias off the range would draw random noise these readings do not have, and each mean may be off by up to half a step in a way their scatter does not show</source>
+        <extracomment>why the decided half range of passes whose readings show no random scatter is withheld</extracomment>
+        <translation>修正后误差峰峰值之半，暂不给出：{reason}；从极差中扣除噪声偏倚的蒙特卡洛法会抽取这些读数并不具有的随机噪声，而每个平均值可能偏离至多半个步距，其分散显示不出</translation>
+    </message>
+    <message>
         <source>s = {s} per reading, pooled over the passes at every θ and direction (ν = {dof}), over √n of each mean</source>
         <translation>每次读数 s = {s}，由各测回在每个 θ 和方向上合并（ν = {dof}），再除以每个均值的 √n</translation>
     </message>
@@ -5248,6 +5253,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>the readings contradict the budget: their half range {measured} is below the {floor} that its noise alone gives a flat curve in 99.9 % of trials, so its noise is not these readings&apos; and no interval is stated (see the noise input&apos;s note in the budget)</source>
         <translation>读数与不确定度预算矛盾：其半峰峰值 {measured} 低于预算的噪声单独作用于平直曲线时在 99.9 % 的试验中给出的 {floor}，因此该噪声不是这些读数的噪声，不给出包含区间（见预算中噪声输入量的说明）</translation>
+    </message>
+    <message>
+        <source>as measured, half the peak-to-peak is {measured}</source>
+        <translation>按测得值，峰峰值之半为 {measured}</translation>
     </message>
     <message>
         <source>the decided quantity has no coverage interval (the data do not determine one); as measured, half the peak-to-peak is {measured}</source>
@@ -10134,6 +10143,10 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>the corrected errors of every θ came out identical over the passes in a direction: their scatter cannot be told (readings rounded coarser than they scatter?), so no ISO 230-2 figure has a coverage interval</source>
         <translation>在某一方向上每个 θ 各测回的修正后误差完全相同：无法得知其分散性（读数的修约是否比其分散还粗？），因此 ISO 230-2 的各项指标均无包含区间</translation>
+    </message>
+    <message>
+        <source>the readings were entered coarser than they scatter over the passes (step {step}, s pooled {s}): the rounding of each mean is not random, and the model the intervals are drawn from (random scatter about each θ&apos;s true mean) does not hold, so no ISO 230-2 figure has a coverage interval</source>
+        <translation>读数录入得比其在各趟之间的分散更粗（步距 {step}，合并 s 为 {s}）：各平均值的舍入不是随机的，区间所依据的模型（围绕各 θ 真平均值的随机分散）不成立，因此 ISO 230-2 各项指标均不给出包含区间</translation>
     </message>
     <message>
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>

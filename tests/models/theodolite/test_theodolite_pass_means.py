@@ -174,3 +174,40 @@ def test_an_overstated_theodolite_does_not_take_the_decided_value_to_zero(capsys
         values.append(decided["value"] / half)
     assert hits >= 11, hits
     assert float(np.median(values)) >= 0.8, values
+
+
+def test_passes_alike_in_every_reading_withhold_the_decided_half_range(capsys, tmp_path):
+    """Exact readings (no pointing noise) in 3 × (forward, backward) passes, the theodolite
+    stated at 0.5″: the readings show that u is not noise new in every reading, so the
+    Monte Carlo's removal of the noise's bias would take off what is not there (an audit:
+    decided 1.68″, interval 0.88″ … 2.12″, where 2.32″ was measured and true). The decided
+    half range is withheld with the reason; its measured value is still stated."""
+    record = tmp_path / "exact.csv"
+    truth = 0.5 * passes_record(record, np.random.default_rng(8), 3, 0.0, 0.6)["E"]
+    decided = _decided(capsys, tmp_path, record, 0.5)["decided_quantity"]
+    assert decided["interval_low"] is None and decided["interval_high"] is None
+    assert decided["verdict"] is None
+    assert "withheld" in decided["reason"] and "identical over the passes" in decided["reason"]
+    assert decided["value"] == pytest.approx(truth, abs=0.02)
+
+
+def test_readings_shown_coarser_than_they_scatter_withhold_figures_and_decision(
+        capsys, tmp_path):
+    """The display rounds to 1″ and the pointing noise is 0.2″: most θ read alike in every
+    pass, and where they differ it is by a whole step, so each mean's rounding error is not
+    random. As the positioning workbench does (models.readings.resolution.coarse): the ISO
+    230-2 figures' intervals and the decided half range are withheld, naming the step and
+    the scatter. Shown to 0.1″, the same noise is random against its step: decided."""
+    coarse_record, fine_record = tmp_path / "coarse.csv", tmp_path / "fine.csv"
+    passes_record(coarse_record, np.random.default_rng(9), 3, 0.2, 0.6, step=1.0)
+    passes_record(fine_record, np.random.default_rng(9), 3, 0.2, 0.6, step=0.1)
+    coarse = _decided(capsys, tmp_path, coarse_record, 0.5)
+    assert "coarser than they scatter" in coarse["iso230_2_figures_reason"]
+    assert 'step 1"' in coarse["iso230_2_figures_reason"]
+    assert all(f["interval_low"] is None for f in coarse["iso230_2_figures"].values())
+    assert coarse["decided_quantity"]["interval_low"] is None
+    assert "withheld" in coarse["decided_quantity"]["reason"]
+    fine = _decided(capsys, tmp_path, fine_record, 0.5)
+    assert fine["iso230_2_figures_reason"] is None
+    assert fine["decided_quantity"]["interval_low"] is not None
+    assert fine["decided_quantity"]["verdict"] == "pass"
