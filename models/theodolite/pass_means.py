@@ -19,7 +19,11 @@ The budget of a mean (one per θ and direction):
   circle's error where it reads that θ, the same in every pass, held in the measured means
   (Type B, :attr:`BudgetComponent.in_curve`; drawn independently for the two directions at
   a θ, which widens the simulated excess of the range a little);
-* the set-up model's error at that θ (Type A, ν = points − 3), as in the run's budget;
+* the set-up model's error (Type A, ν = points − 3): ψ, α, β are fitted once for the run, so
+  ζ's error is one smooth curve over θ, the same in every pass and both directions; its
+  three modes from the parameters' covariance (models.theodolite.model.model_error_modes),
+  each one value for the run with its signed effect at every mean, as the figures' bootstrap
+  draws it (until 0.8.8 drawn on its own at each mean; each mean's u is the same);
 * the item's resolution, as in the run's budget (per reading, not divided: an envelope).
 
 The reference reading θ₀ moves every error alike: a half range does not see it, and it is
@@ -39,11 +43,10 @@ from models.certificate.document import resolution_component
 from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, message
 from models.theodolite.figures import (
-    MODEL_INPUT,
     circle_part,
     evident_circle_part,
     figure_intervals_withheld,
-    model_at_each_theta,
+    model_modes_at_each_theta,
     passes_scatter,
     pointing_per_reading,
     readings_coarse,
@@ -65,6 +68,11 @@ __all__ = ["COARSE_DECIDED", "MEANS_DECIDED", "decided_on_means", "means_half_ra
 MEANS_DECIDED = QT_TR_NOOP("corrected error, the mean over the passes at each θ and direction")
 
 POINTING_INPUT = QT_TR_NOOP("Pointing noise of a mean over the passes")
+MODEL_MODE_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β), direction {k} of their covariance")
+MODEL_MODE_NOTE = QT_TR_NOOP(
+    "the identified parameters' covariance propagated through ζ(θ), one of its three "
+    "directions: one value for the run, with its signed effect at every θ (the model's "
+    "error is one smooth curve, drawn as such)")
 CIRCLE_INPUT = QT_TR_NOOP("Theodolite's circle error at each θ (the stated u less the passes' "
                           "scatter)")
 
@@ -131,17 +139,22 @@ def pass_means_budget(result: TheodoliteResult, metadata: CertificateMetadata,
     runs = np.concatenate([stats.runs for _, stats in present]).astype(float)
     pooled, nu = passes_scatter(result)
     circle = circle_part(result, stated_u)
-    model = np.concatenate([model_at_each_theta(result)] * len(present))
+    # the set-up model's error: one smooth curve over θ (ψ, α, β fitted once for the run),
+    # the same in both directions, as its three modes (models.theodolite.model
+    # .model_error_modes), each one value for the run with its signed effect at every mean
+    modes = np.concatenate([model_modes_at_each_theta(result)] * len(present), axis=1)
     points = runs.size
+    dof = max(result.theta_deg.size - 3, 1)
     components = [
         BudgetComponent(POINTING_INPUT, "A", "normal", pooled / np.sqrt(runs), 1.0, 1.0, nu,
                         message(QT_TR_NOOP("s = {s} per reading, pooled over the passes at "
                                            "every θ and direction (ν = {dof}), over √n of "
-                                           "each mean"), s=f"{pooled:.3f}\"", dof=f"{nu:.0f}")),
-        BudgetComponent(MODEL_INPUT, "A", "normal", model, 1.0, 1.0,
-                        max(result.theta_deg.size - 3, 1),
-                        QT_TR_NOOP("covariance of the identified parameters propagated through "
-                                   "ζ(θ)"))]
+                                           "each mean"), s=f"{pooled:.3f}\"", dof=f"{nu:.0f}"))]
+    components += [
+        BudgetComponent(message(MODEL_MODE_INPUT, k=k + 1), "A", "normal", np.abs(mode), 1.0,
+                        np.where(mode < 0.0, -1.0, 1.0), dof, message(MODEL_MODE_NOTE),
+                        common=True, dof_group="set-up model")
+        for k, mode in enumerate(modes)]
     if circle > 0.0:
         components.append(BudgetComponent(
             CIRCLE_INPUT, "B", "normal", circle, 1.0, 1.0, math.inf,

@@ -848,6 +848,14 @@
         <translation>测回均值的瞄准噪声</translation>
     </message>
     <message>
+        <source>Set-up model ζ (ψ, α, β), direction {k} of their covariance</source>
+        <translation>安装模型 ζ（ψ, α, β），其协方差的第 {k} 个方向</translation>
+    </message>
+    <message>
+        <source>the identified parameters&apos; covariance propagated through ζ(θ), one of its three directions: one value for the run, with its signed effect at every θ (the model&apos;s error is one smooth curve, drawn as such)</source>
+        <translation>辨识参数的协方差经 ζ(θ) 传播，取其三个方向之一：整次测量为同一个值，以其带符号的影响作用于每个 θ（模型误差是一条平滑曲线，按此抽样）</translation>
+    </message>
+    <message>
         <source>Theodolite&apos;s circle error at each θ (the stated u less the passes&apos; scatter)</source>
         <translation>经纬仪度盘在每个 θ 处的误差（所给 u 扣除测回分散性）</translation>
     </message>
