@@ -26,6 +26,7 @@ from models.damped_least_squares import difference_jacobian, polish
 from models.lazy_optimize import least_squares
 from models.messages import QT_TR_NOOP, message
 from models.readings.angles import ARCSEC_PER_RAD
+from models.uncertainty.tilt_direction import direction_determined
 
 __all__ = ["AC_ALIGNMENTS", "TiltFit", "closure_drift_arcsec", "fit_tilt", "frame_readings_arcsec",
            "pyramidal_correction_arcsec", "pyramidal_readings_arcsec", "wrap_deg"]
@@ -133,6 +134,12 @@ class TiltFit:
     residuals_arcsec: np.ndarray
     residual_rms_arcsec: float
     cov_psi_omega: np.ndarray | None = None  # covariance of (ψ ″, ω °) from the fit
+
+    @property
+    def omega_determined(self) -> bool:
+        """Whether the tilt direction ω is determined: ψ told from 0 by its u
+        (models.uncertainty.tilt_direction)."""
+        return direction_determined(self.psi_arcsec, self.u_psi_arcsec)
 
 
 def fit_tilt(theta_deg, ac_y_arcsec, ac_alignment: str = "polygon",

@@ -214,11 +214,14 @@ class ReferenceStandard:
             raise MetadataError(message(
                 QT_TR_NOOP("certificate field '{key}' must be one of {join}, not '{unit}'"),
                 key=f"{name}.uncertainty_unit", join=', '.join(UNITS), unit=unit_key))
-        if u is not None and not 0 <= Quantity(u, unit_key).to(
+        if u is not None and not 0 < Quantity(u, unit_key).to(
                 "arcsec" if UNITS[unit_key].dimension == "angle" else "um").value <= 3600:
+            # 0 is no figure a calibration states: taken as such, it made a run of exact
+            # readings decide "pass" on an interval of ±0.0003″ (an audit); empty: not stated
             raise MetadataError(message(
-                QT_TR_NOOP("certificate field '{name}.uncertainty' must be 0 to 3600\" (or 0 to "
-                           "3600 µm)"),
+                QT_TR_NOOP("certificate field '{name}.uncertainty' must be more than 0 and at "
+                           "most 3600\" (or 3600 µm); leave it empty where the standard's "
+                           "certificate states none"),
                 name=name))
         applies_to = clean_text(data.get("applies_to", "reading"), f"{name}.applies_to") or "reading"
         if applies_to not in APPLIES_TO:

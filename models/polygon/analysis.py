@@ -550,7 +550,9 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
         "closure_ok": result.valid,
         "closure_drift_spread": result.spread_drift,
         "pyramidal_tilt_arcsec": first.tilt.psi_arcsec if first.tilt else None,
-        "pyramidal_direction_deg": first.tilt.omega_deg if first.tilt else None,
+        # null where ψ is not told from 0 (models.uncertainty.tilt_direction; a warning says so)
+        "pyramidal_direction_deg": (first.tilt.omega_deg if first.tilt
+                                    and first.tilt.omega_determined else None),
         # why the tilt was not identified (None when it was): ψ is then no finding
         "tilt_not_identified": first.tilt_not_identified or None,
         "pyramidal_error_arcsec": np.concatenate(
@@ -604,9 +606,12 @@ def summary(result: PolygonResult) -> str:
         closure = message(QT_TR_NOOP("not measured")) if r.closure_drift_arcsec is None else (
             message(QT_TR_NOOP("drift {drift} ok") if r.closure_ok else
                     QT_TR_NOOP("drift {drift} FAILED"), drift=f"{r.closure_drift_arcsec:+.2f}\""))
-        tilt = (f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
-                f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°") if r.tilt else \
-            message(QT_TR_NOOP("no tilt"))
+        tilt = ((f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
+                 f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°")
+                if r.tilt.omega_determined else
+                message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),
+                        psi=f"{r.tilt.psi_arcsec:.1f}\"", u=f"{r.tilt.u_psi_arcsec:.2f}\"")
+                ) if r.tilt else message(QT_TR_NOOP("no tilt"))
         out.append(message(
             QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; "
                        "pyramidal correction up to {largest}"),

@@ -59,6 +59,7 @@ from models.pyramidal import (
 )
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats
+from models.uncertainty.tilt_direction import NOT_DETERMINED
 
 __all__ = ["split_sets",
     "AC_ALIGNMENTS",
@@ -363,6 +364,12 @@ def evaluate_sets(sets: list[PolygonSetReadings], faces: int, counting: int = 1,
             tilt = fit_tilt(theta, ac_y, ac_alignment, roll_rad)
             pyramidal = pyramidal_correction_arcsec(theta, tilt.psi_arcsec, tilt.omega_deg, theta_z,
                                                     ac_alignment, roll_rad)
+            if not tilt.omega_determined:
+                warnings.append(message(QT_TR_NOOP("{set}: {why}"), set=set_name(s.label),
+                                        why=message(NOT_DETERMINED,
+                                                    tilt=f"ψ = {tilt.psi_arcsec:.3g}\"",
+                                                    u=f"{tilt.u_psi_arcsec:.2g}\"",
+                                                    direction="ω")))
         else:
             warnings.append(unidentified)
         results.append(PolygonSetResult(theta, error, drift, ok, tilt, pyramidal, error - pyramidal,

@@ -92,6 +92,7 @@ from models.polygon.plots import corrected_with_uncertainty, error_figure, resid
 from models.polygon.setup_statement import setup_statement
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["OTHER_SET", "ZERO_READING", "ZeroFaceShare", "mean_zero_share", "polygon_budget",
            "polygon_certificate", "polygon_json_budgets", "polygon_tolerance_arcsec",
@@ -750,8 +751,9 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                            *gum_pair(s.tilt.psi_arcsec, k_tilt * s.tilt.u_psi_arcsec, "\"",
                                      fallback=1)))
             rows_p.append((message(QT_TR_NOOP("Set {set} tilt direction ω"), set=i),
-                           *gum_pair(s.tilt.omega_deg, k_tilt * s.tilt.u_omega_deg, "°",
-                                     fallback=1)))
+                           *(gum_pair(s.tilt.omega_deg, k_tilt * s.tilt.u_omega_deg, "°",
+                                      fallback=1) if s.tilt.omega_determined else
+                             (message(NOT_IDENTIFIED), "—"))))
     parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
                         f"U (k = {k_tilt:.2f}, ν = {nu_tilt})" if any(

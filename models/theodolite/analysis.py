@@ -191,11 +191,12 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
         "model_error_arcsec": result.model_error_arcsec.tolist(),
         "corrected_error_arcsec": result.corrected_error_arcsec.tolist(),
         "psi_deg": ident.setup.psi_deg,
-        "alpha_deg": ident.setup.alpha_deg,
+        # null where ψ is not told from 0 (models.uncertainty.tilt_direction; a warning says so)
+        "alpha_deg": ident.setup.alpha_deg if ident.alpha_determined else None,
         "beta_deg": ident.setup.beta_deg,
         "r_squared": ident.r_squared,
         "psi_u_deg": float(u[0]),
-        "alpha_u_deg": float(u[1]),
+        "alpha_u_deg": float(u[1]) if ident.alpha_determined else None,
         "beta_u_deg": float(u[2]),
         "residual_rms_arcsec": ident.residual_rms_arcsec,
         "method": ident.method,
@@ -255,7 +256,9 @@ def summary(result: TheodoliteResult) -> str:
         message(QT_TR_NOOP("  axis tilt       ψ = {value}° ± {u}"), value=f"{s.psi_deg:.4f}",
                 u=f"{u[0]:.{uncertainty_decimals(u[0])}f}\" (u, k = 1)"),
         message(QT_TR_NOOP("  tilt direction  α = {value}° ± {u}"), value=f"{s.alpha_deg:.4f}",
-                u=f"{u[1]:.{uncertainty_decimals(u[1])}f}\" (u, k = 1)"),
+                u=f"{u[1]:.{uncertainty_decimals(u[1])}f}\" (u, k = 1)")
+        if ident.alpha_determined else
+        message(QT_TR_NOOP("  tilt direction  α not identified (ψ not told from 0)")),
         message(QT_TR_NOOP("  mirror normal   β = {value}° ± {u}"), value=f"{s.beta_deg:.4f}",
                 u=f"{u[2]:.{uncertainty_decimals(u[2])}f}\" (u, k = 1)"),
         message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",

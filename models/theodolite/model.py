@@ -30,6 +30,7 @@ from models.messages import QT_TR_NOOP, message
 from models.readings.angles import ARCSEC_PER_RAD
 from models.uncertainty.error_stats import ErrorStats, error_stats
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
+from models.uncertainty.tilt_direction import NOT_DETERMINED, direction_determined
 
 __all__ = [
     "Identification",
@@ -209,6 +210,12 @@ class Identification:
     @property
     def uncertainty_deg(self) -> np.ndarray:
         return np.sqrt(np.clip(np.diag(self.covariance_deg2), 0.0, None))
+
+    @property
+    def alpha_determined(self) -> bool:
+        """Whether the tilt direction α is determined: ψ told from 0 by its u
+        (models.uncertainty.tilt_direction)."""
+        return direction_determined(self.setup.psi_deg, float(self.uncertainty_deg[0]))
 
     @property
     def correlation(self) -> np.ndarray:
@@ -677,6 +684,9 @@ def analyze_run(
     corrected = raw_error - model
     check_corrected(corrected, theta, az, reference_index, row_numbers)
     warnings = list(ident.warnings)
+    if not ident.alpha_determined:
+        warnings.append(message(NOT_DETERMINED, tilt=f"ψ = {ident.setup.psi_deg * 3600.0:.2f}\"",
+                                u=f"{ident.uncertainty_deg[0] * 3600.0:.2f}\"", direction="α"))
     if accuracy_arcsec and ident.residual_rms_arcsec > RESIDUAL_WARNED * accuracy_arcsec:
         warnings.append(message(
             QT_TR_NOOP("Residual RMS {rms} is more than three times the theodolite accuracy "

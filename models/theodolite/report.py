@@ -97,6 +97,7 @@ from models.uncertainty.budget import (
 )
 from models.uncertainty.conformity import expanded_text, uncertainty_decimals
 from models.uncertainty.lab_scope import cmc_of
+from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
 __all__ = ["READING_INPUT", "REFERENCE_READING_INPUT", "reading_error_components",
            "theodolite_budget", "theodolite_certificate",
@@ -432,7 +433,8 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
                                                      f"U (k = {k:.2f}, ν = {nu})"),
         [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0])),
          (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
-          expanded_text(u2[1])),
+          expanded_text(u2[1])) if ident.alpha_determined else
+         (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED), "—"),
          (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
           expanded_text(u2[2])),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(

@@ -166,7 +166,9 @@ def test_repeats_of_the_reference_angle_carry_their_uncertainty():
 
 
 @pytest.mark.parametrize("field, value, message", [
-    ("standards", [{"description": "x", "uncertainty": 1e300}], "must be 0 to 3600"),
+    ("standards", [{"description": "x", "uncertainty": 1e300}], "at most 3600"),
+    # no calibration states 0: a run of exact readings then decided "pass" on ±0.0003″
+    ("standards", [{"description": "x", "uncertainty": 0}], "must be more than 0"),
     ("item_resolution_arcsec", -5, "must be 0 to 3600"),
     ("coverage_probability_pct", 120, "50 to 99.9"),
     ("decision_quantity", "mean", "must be one of half_range, points"),
