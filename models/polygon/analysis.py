@@ -306,6 +306,29 @@ def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
     return 1
 
 
+def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
+    """A set that repeats an earlier one reading for reading (encoder, horizontal and
+    vertical autocollimator readings at every face, in the same order) is a copy, not a
+    second measurement: the operator stops the shaft anew at each face, so the encoder and
+    the autocollimator never read alike twice over a turn. Counted as a repeat, it made the
+    sets' scatter 0 and narrowed U and the decided interval (an audit: U 0.165″ → 0.148″ at
+    a face, "pass"). Refused, naming both sets' first rows."""
+    columns = ("position", "encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
+    seen: dict[bytes, tuple[int, np.ndarray]] = {}
+    for set_id, rows, _ in split:
+        key = b"".join(np.ascontiguousarray(parsed[c][rows], dtype=float).tobytes()
+                       for c in columns)
+        if key in seen:
+            first_id, first_rows = seen[key]
+            raise ValueError(message(
+                QT_TR_NOOP("set {set_id} (from row {row}) repeats set {first} (from row "
+                           "{first_row}) reading for reading: a copied set is no second "
+                           "measurement; delete it or enter the set as it was read"),
+                set_id=set_id, row=_row(parsed, int(rows[0])), first=first_id,
+                first_row=_row(parsed, int(first_rows[0]))))
+        seen[key] = (set_id, rows)
+
+
 def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int,
                warnings: list[str]) -> tuple[list[PolygonSetReadings], int, int, set[int]]:
     """The sets as read, validated; (sets, faces, counting sense, closure sheet rows)."""
@@ -327,6 +350,7 @@ def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int
                 QT_TR_NOOP("set {set_id} (from row {row}) has positions {tolist}; expected 1…{faces} "
                            "once each, in any order, then the first position again for the closure"),
                 set_id=set_id, row=_row(parsed, int(rows[0])), tolist=positions.tolist(), faces=faces))
+    _refuse_copied_sets(parsed, split)
     first_rows = split[0][1]
     try:
         counting, detected = _counting_sense(parsed, first_rows, step, tolerance,

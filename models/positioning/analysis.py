@@ -403,6 +403,22 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
             "Enter the readings with more digits."),
             step=f"{step:g}{sym}", s=f"{result.pooled_s():.3g}{sym}", half=f"{0.5 * step:g}{sym}"))
     for template, stats in (
+            (QT_TR_NOOP("Every forward run read alike at target(s) {targets} while the other "
+                        "targets scatter: a repeatability of 0 is not what these readings show "
+                        "(copied, or rounded apart from the rest?); U there takes the s pooled "
+                        "over the targets, {s}."), result.iso.forward),
+            (QT_TR_NOOP("Every backward run read alike at target(s) {targets} while the other "
+                        "targets scatter: a repeatability of 0 is not what these readings show "
+                        "(copied, or rounded apart from the rest?); U there takes the s pooled "
+                        "over the targets, {s}."), result.iso.backward)):
+        if stats is None:
+            continue
+        alike = result.alike_targets(stats)
+        if np.any(alike):
+            warnings.append(message(template,
+                                    targets=", ".join(f"{t:g}" for t in result.positions[alike]),
+                                    s=f"{result.pooled_s():.3g}{result.symbol}"))
+    for template, stats in (
             (QT_TR_NOOP("No forward reading at target(s) {targets}: the forward figures leave "
                         "them out."), result.iso.forward),
             (QT_TR_NOOP("No backward reading at target(s) {targets}: the backward figures leave "

@@ -233,6 +233,23 @@ class PositioningResult:
         target approached more than once): the readings show no scatter at all."""
         return self.pooled_s() == 0.0
 
+    def alike_targets(self, stats) -> np.ndarray:
+        """Where the runs of one direction (``stats``) read alike at a target approached
+        at least twice (s = 0) while the readings elsewhere scatter and are not entered
+        coarser than they do: readings that do not vary at one target are copied or
+        rounded apart from the rest, not a repeatability of 0 (an audit: one such target
+        among targets scattering by 0.25–1.1, its U the smallest of all, the non-repeatable
+        inputs' alone). A boolean mask over the targets."""
+        pooled = self.pooled_s()
+        if not (pooled > 0.0) or self.coarse_readings:
+            return np.zeros(stats.std.shape, dtype=bool)
+        return (stats.runs >= 2) & (stats.std == 0.0)
+
+    def repeatability(self, stats) -> np.ndarray:
+        """The runs' s at each target in one direction as U counts it: the s pooled over
+        every target and direction where :meth:`alike_targets` (a warning says so)."""
+        return np.where(self.alike_targets(stats), self.pooled_s(), stats.std)
+
     def directions_present(self) -> list[tuple[str, int, object]]:
         """("up", +1, stats) and/or ("down", −1, stats) for the directions measured."""
         out = []

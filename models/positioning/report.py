@@ -123,7 +123,10 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
                 QT_TR_NOOP("target(s) {targets} backward were approached fewer than twice: their "
                            "repeatability, part of U, is unknown; no certificate is issued"),
                 targets=", ".join(f"{t:g}" for t in once)))
-    s = np.concatenate([p[2] for p in points])
+    # a target whose runs read alike while the others scatter: the pooled s (models
+    # .positioning.model.PositioningResult.repeatability), not 0
+    s = np.concatenate([result.repeatability(stats) for _, _, stats in
+                        result.directions_present()])
     n = np.concatenate([p[3] for p in points]).astype(float)
     components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"),
                                                unit=result.deviation_unit)

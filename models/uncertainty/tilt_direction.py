@@ -11,8 +11,8 @@ pyramidal tilt printed ω = 154.1° ± 34.6°. Below :data:`DETERMINED_AT` stand
 uncertainties the direction is stated as not identified: a tilt is fitted as two
 components (ψ cos α, ψ sin α), each with about the u of ψ, so with no tilt at all the
 fitted ψ is Rayleigh-distributed and exceeds √(−2 ln 0.05) u = 2.45 u in 5 % of runs (2 u,
-the normal's two-sided 95 %, in 13.5 %). The correction itself needs no direction there: the tilt's effect is within
-its own u, which the model's uncertainty carries.
+the normal's two-sided 95 %, in 13.5 %). The correction itself needs no direction there:
+the tilt's effect is within its own u, which the model's uncertainty carries.
 """
 
 from __future__ import annotations

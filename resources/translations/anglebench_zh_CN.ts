@@ -2472,10 +2472,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>证书字段 &apos;{name}.basis&apos; 必须是 {join} 之一，而不是 &apos;{basis}&apos;</translation>
     </message>
     <message>
-        <source>certificate field &apos;{name}.uncertainty&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
-        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须在 0 至 3600&quot;（或 0 至 3600 µm）之间</translation>
-    </message>
-    <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
         <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
     </message>
@@ -2519,6 +2515,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>certificate field &apos;humidity_pct&apos; must be 0 to 100 %</source>
         <translation>证书字段 &apos;humidity_pct&apos; 必须在 0 至 100 % 之间</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{name}.uncertainty&apos; must be more than 0 and at most 3600&quot; (or 3600 µm); leave it empty where the standard&apos;s certificate states none</source>
+        <translation>证书字段 &apos;{name}.uncertainty&apos; 必须大于 0 且不超过 3600&quot;（或 3600 µm）；标准器证书未给出时请留空</translation>
     </message>
     <message>
         <source>certificate field &apos;item_resolution&apos; must be 0 to 3600&quot; (or 0 to 3600 µm)</source>
@@ -4392,6 +4392,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>{set}：未注明方向且编码器步进有正有反：按正向处理。</translation>
     </message>
     <message>
+        <source>set {set_id} (from row {row}) repeats set {first} (from row {first_row}) reading for reading: a copied set is no second measurement; delete it or enter the set as it was read</source>
+        <translation>第 {set_id} 组（从第 {row} 行起）逐个读数重复第 {first} 组（从第 {first_row} 行起）：复制的一组不是第二次测量；请删除它，或按实际读数录入该组</translation>
+    </message>
+    <message>
         <source>{faces} positions; a polygon test needs at least 3 faces</source>
         <translation>{faces} 个位置；多面棱体检测至少需要 3 个面</translation>
     </message>
@@ -4470,6 +4474,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>drift {drift} FAILED</source>
         <translation>漂移 {drift}，不合格</translation>
+    </message>
+    <message>
+        <source>ψ = {psi} ± {u}, ω not identified (ψ not told from 0)</source>
+        <translation>ψ = {psi} ± {u}，ω 未辨识（ψ 与 0 无法区分）</translation>
     </message>
     <message>
         <source>no tilt</source>
@@ -4572,6 +4580,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>{set}：没有闭合读数（回到起始面的那一行）：未检查漂移。</translation>
     </message>
     <message>
+        <source>{set}: {why}</source>
+        <translation>{set}：{why}</translation>
+    </message>
+    <message>
         <source>deviation_unit {s} is for an axis in {belongs}, but target_unit is {s2}: choose arcsec or urad for deg, um or nm for mm</source>
         <extracomment>the settings that are inputs of the certificate&apos;s budget (PositioningResult.inputs) A deviation beyond this (in the target unit) is no positioning deviation: a wrong unit or a measured position typed as a deviation. Targets beyond this are no axis positions (100 turns; 100 m).</extracomment>
         <translation>deviation_unit {s} 适用于以 {belongs} 为单位的轴，但 target_unit 为 {s2}：deg 请选 arcsec 或 urad，mm 请选 um 或 nm</translation>
@@ -4620,6 +4632,14 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>The readings were entered to {step}, coarser than they scatter (s pooled over the targets {s}): readings of one target come out alike and each mean carries a rounding error up to {half} that its s does not show. U counts the step (rectangular, half-width {half}); the figures of the axis get no coverage interval. Enter the readings with more digits.</source>
         <translation>读数录入到 {step}，粗于其分散（各目标位置合并的 s 为 {s}）：同一目标位置的读数趋于相同，每个平均值带有至多 {half} 的舍入误差，而其 s 显示不出。U 计入了该步距（矩形分布，半宽 {half}）；轴线各项指标不给出包含区间。请以更多位数录入读数。</translation>
+    </message>
+    <message>
+        <source>Every forward run read alike at target(s) {targets} while the other targets scatter: a repeatability of 0 is not what these readings show (copied, or rounded apart from the rest?); U there takes the s pooled over the targets, {s}.</source>
+        <translation>在目标位置 {targets}，各次正向测量的读数完全相同，而其他目标位置有分散：这些读数并不表明重复性为 0（是复制的，还是与其余读数舍入方式不同？）；该处的 U 取各目标位置合并的 s，即 {s}。</translation>
+    </message>
+    <message>
+        <source>Every backward run read alike at target(s) {targets} while the other targets scatter: a repeatability of 0 is not what these readings show (copied, or rounded apart from the rest?); U there takes the s pooled over the targets, {s}.</source>
+        <translation>在目标位置 {targets}，各次反向测量的读数完全相同，而其他目标位置有分散：这些读数并不表明重复性为 0（是复制的，还是与其余读数舍入方式不同？）；该处的 U 取各目标位置合并的 s，即 {s}。</translation>
     </message>
     <message>
         <source>No forward reading at target(s) {targets}: the forward figures leave them out.</source>
@@ -4725,6 +4745,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>  tilt direction  α = {value}° ± {u}</source>
         <translation>  倾斜方向       α = {value}° ± {u}</translation>
+    </message>
+    <message>
+        <source>  tilt direction  α not identified (ψ not told from 0)</source>
+        <translation>  倾斜方向       α 未辨识（ψ 与 0 无法区分）</translation>
     </message>
     <message>
         <source>  mirror normal   β = {value}° ± {u}</source>
@@ -10160,6 +10184,16 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <source>value: the figure as the standard computes it from the readings; interval_low … interval_high: the coverage interval of the TRUE figure (of the true mean deviations and standard deviations) at coverage_probability. A largest value or a range over the targets (R, A, E, M, B) is biased high by the scatter, so the interval may lie below the value, and it reaches 0 where the scatter could hide the whole figure</source>
         <extracomment>bootstrap trials per analysis (2000: the 2.3 % quantiles to about ±0.35 % of probability) figures that may be negative (the others are clipped at 0) The coverage the study reached for each figure at 95.45 % asked for, where below it: figure_coverage.achieved_probability, the highest probability (95.45 % or a multiple of 0.5 %) that the pooled coverage reaches and that none of the axes falls short of beyond the binomial test (1 %); 4 shapes × 12, 36 and 72 targets × repeatability 0.1, 0.5, 1, 2 × the signal × constant or varying (96 axes), each test through the whole analysis. 0.8.2 (the ranges&apos; triple-goal world, B&apos;s upper bound, the axes of 36 targets and of repeatability 1 ×): figure_coverage.axis_hits(STUDY_CASES, 20, seed) for the seeds 391 to 394, 80 tests an axis, pooled; for the figures whose interval 0.8.2 did not change, the lower of that and 0.7.0&apos;s derivation (the 48 axes of 12 and 72 targets, 40 tests an axis). Pooled: E 95.0 % (its lowest axis, a rough curve at 36 targets and repeatability 0.1 varying along the axis, 68 of 80), E↑ 94.8 % (a real curve at 12 targets, 67 of 80), E↓ 95.0 %, M and Pa 94.6 % (a spike at 72 targets, repeatability 1 × varying, 68 of 80), A 98.0 % (69 of 80 at the same axis as E), B and U 98.8 %; the others 96.6–98.6 %. The figure&apos;s interval states this one instead. Before 0.8.2, B stated 93 % and one axis (a rough reversal whose largest value stands clear of the others) reached 59 of 80; before 0.7.0&apos;s union with the unshrunk world E reached 92.1 % (35 % on a spike hidden in scatter twice its size at 72 targets) and R 72 % on a reversal changing at random from target to target. what a figure&apos;s value and interval are, beside them in the JSON: a value above its own interval is no error (an audit counted R↑ above its interval in 82 % of 2-pass runs)</extracomment>
         <translation>value：按标准由读数计算的指标；interval_low … interval_high：真实指标（由真实平均偏差和标准偏差计算）在 coverage_probability 下的包含区间。各目标上的最大值或极差（R、A、E、M、B）受分散影响偏高，因此区间可能位于数值之下；在分散可能掩盖整个指标时下限为 0</translation>
+    </message>
+    <message>
+        <source>The tilt {tilt} is not told from 0 by its standard uncertainty {u} (it is less than 2.45 times that, the 95 % point of a fitted tilt where there is none): the direction it leans to, {direction}, is not identified and is not stated.</source>
+        <extracomment>the tilt, in its standard uncertainties, at and above which its direction is stated: the 95 % point of the Rayleigh distribution (a fitted tilt of none exceeds it in 5 %) what is said of a direction not determined (the figures: the tilt and its u)</extracomment>
+        <translation>倾斜 {tilt} 相对其标准不确定度 {u} 无法与 0 区分（小于其 2.45 倍，即不存在倾斜时拟合倾斜的 95 % 分位点）：其倾斜方向 {direction} 未辨识，不予给出。</translation>
+    </message>
+    <message>
+        <source>not identified (the tilt is not told from 0)</source>
+        <extracomment>a direction&apos;s value where it is not determined (a certificate&apos;s cell)</extracomment>
+        <translation>未辨识（倾斜与 0 无法区分）</translation>
     </message>
 </context>
 </TS>

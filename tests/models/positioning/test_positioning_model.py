@@ -285,3 +285,36 @@ def test_table_options_and_their_refusals(tmp_path):
     with pytest.raises(ValueError, match="needs both approach directions"):
         compensation_table(one, tables="bidirectional")
     assert compensation_table(one).form == "backward only"
+
+
+def test_a_target_whose_runs_read_alike_among_scattering_ones_is_not_given_zero_repeatability(
+        tmp_path, capsys):
+    """12 targets, 5 runs each way, scatter 0.5″; at one target every run was entered alike
+    (copied): its s is 0, and U there held only the non-repeatable inputs, the smallest of
+    all (an audit). U there now takes the s pooled over the targets, with a warning naming
+    the target; the other targets' U is unchanged, and the s reported is still as read."""
+    import json
+
+    from app.main import main
+
+    rng = np.random.default_rng(21)
+    targets = np.arange(0.0, 360.0, 30.0)
+    curve = 2.0 * np.sin(np.radians(targets))
+    rows = ["target,run,direction,deviation"]
+    for run in range(1, 6):
+        for sign, order in (("+", targets), ("-", targets[::-1])):
+            for t in order:
+                x = curve[int(t // 30)] + (0.3 if sign == "+" else -0.3)
+                x = x if t == 90.0 else x + rng.normal(0.0, 0.5)
+                rows.append(f"{t:g},{run},{sign},{x:.4f}")
+    path = tmp_path / "alike.csv"
+    path.write_text("\n".join(rows) + "\n")
+    assert main(["analyze", "positioning", str(path), "--json", "--language", "en"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    per = data["per_target"]
+    at = per["target"].index(90.0)
+    assert per["s_up"][at] == 0.0 and per["s_down"][at] == 0.0
+    u = np.asarray(per["expanded_uncertainty_mean_up"])
+    others = np.delete(u, at)
+    assert u[at] >= 0.8 * np.median(others), (u[at], others)
+    assert any("read alike at target(s) 90 " in w for w in data["warnings"])
