@@ -308,25 +308,33 @@ def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
 
 def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
     """A set that repeats an earlier one reading for reading (encoder, horizontal and
-    vertical autocollimator readings at every face, in the same order) is a copy, not a
+    vertical autocollimator readings at every face, in any order) is a copy, not a
     second measurement: the operator stops the shaft anew at each face, so the encoder and
     the autocollimator never read alike twice over a turn. Counted as a repeat, it made the
     sets' scatter 0 and narrowed U and the decided interval (an audit: U 0.165″ → 0.148″ at
     a face, "pass"). Refused, naming both sets' first rows."""
     columns = ("position", "encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
-    seen: dict[bytes, tuple[int, np.ndarray]] = {}
+    seen: list[tuple[int, np.ndarray, np.ndarray]] = []
     for set_id, rows, _ in split:
-        key = b"".join(np.ascontiguousarray(parsed[c][rows], dtype=float).tobytes()
-                       for c in columns)
-        if key in seen:
-            first_id, first_rows = seen[key]
-            raise ValueError(message(
-                QT_TR_NOOP("set {set_id} (from row {row}) repeats set {first} (from row "
-                           "{first_row}) reading for reading: a copied set is no second "
-                           "measurement; delete it or enter the set as it was read"),
-                set_id=set_id, row=_row(parsed, int(rows[0])), first=first_id,
-                first_row=_row(parsed, int(first_rows[0]))))
-        seen[key] = (set_id, rows)
+        # face by face, whatever the order: a forward set entered again as the reverse set
+        # (its rows turned round) hid the reversal of the rig (B 0.017″ where 0.2″ was set);
+        # alike to 1e-9 (a copy written back through arithmetic differs by 1e-14)
+        by_face = rows[np.argsort(parsed["position"][rows], kind="stable")]
+        values = np.array([parsed[c][by_face] for c in columns], dtype=float)
+        for first_id, first_rows, first_values in seen:
+            if first_values.shape != values.shape:
+                continue
+            alike = np.all(np.isclose(values, first_values, rtol=1e-12, atol=1e-9), axis=0)
+            # every face, or all but the start face (a set turned round starts on the other's
+            # closure reading): a shaft stopped anew never reads alike at two faces
+            if values.shape[1] >= 3 and np.count_nonzero(alike) >= values.shape[1] - 1:
+                raise ValueError(message(
+                    QT_TR_NOOP("set {set_id} (from row {row}) repeats set {first} (from row "
+                               "{first_row}) reading for reading: a copied set is no second "
+                               "measurement; delete it or enter the set as it was read"),
+                    set_id=set_id, row=_row(parsed, int(rows[0])), first=first_id,
+                    first_row=_row(parsed, int(first_rows[0]))))
+        seen.append((set_id, rows, values))
 
 
 def _read_sets(parsed: ParsedReadings, faces_setting: int, counting_setting: int,

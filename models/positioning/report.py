@@ -257,6 +257,10 @@ ONCE_ONLY = QT_TR_NOOP("a target was approached fewer than twice in a direction:
                        "deviation is unknown, so no figure has a coverage interval")
 NO_SCATTER = QT_TR_NOOP("the readings of every target came out identical in each direction: "
                         "their scatter cannot be told, so no figure has a coverage interval")
+ALIKE_DIRECTION = QT_TR_NOOP("every run of one direction read alike at every target while the "
+                             "other direction scatters: that direction's scatter cannot be "
+                             "told from these readings (copied?), so no figure has a coverage "
+                             "interval")
 COARSE = QT_TR_NOOP("the readings were entered coarser than they scatter: the rounding of each "
                     "mean is not random, and the model the intervals are drawn from (random "
                     "scatter about each target's true mean) does not hold, so no figure has a "
@@ -276,6 +280,10 @@ def intervals_withheld(result: PositioningResult) -> str | None:
         return NO_SCATTER
     if result.coarse_readings:
         return COARSE
+    if any(np.all(result.alike_targets(stats)) for _, _, stats in result.directions_present()):
+        # one direction read alike at every target, the other scattering: that direction's
+        # figures had intervals of width 1e-15 about R↑ = 0 (a hostile tester)
+        return ALIKE_DIRECTION
     return None
 
 

@@ -68,6 +68,10 @@ def _direction_stats(positions: np.ndarray, key: np.ndarray, dev: np.ndarray) ->
             mean[i] = values.mean()
         if values.size > 1:
             std[i] = values.std(ddof=1)
+        if values.size and np.ptp(values) == 0.0:
+            # readings alike: exactly their value and no scatter (numpy's sum left 2e-16 of
+            # −1.66 read five times, and the checks for readings alike missed it)
+            mean[i], std[i] = values[0], 0.0 if values.size > 1 else std[i]
     return DirectionStats(mean, std, runs)
 
 

@@ -118,6 +118,13 @@ def test_a_set_copied_under_another_set_number_is_refused_naming_both(tmp_path, 
     assert main(["analyze", "polygon", str(path), "--json"]) == 2
     err = capsys.readouterr().err
     assert "set 2 (from row 14) repeats set 1 (from row 1)" in err, err
+    # the same set turned round and entered as the reverse set: it hid the rig's reversal
+    reverse = [",".join(r.rstrip("\n").split(",")[:5] + ["2", "-"]) + "\n"
+               for r in reversed(first)]
+    path = tmp_path / "turned.csv"
+    write_readings(path, first + reverse)
+    assert main(["analyze", "polygon", str(path), "--json"]) == 2
+    assert "repeats set 1" in capsys.readouterr().err
     path = tmp_path / "two_sets.csv"
     write_readings(path, rows)
     assert main(["analyze", "polygon", str(path), "--json"]) == 0

@@ -318,3 +318,33 @@ def test_a_target_whose_runs_read_alike_among_scattering_ones_is_not_given_zero_
     others = np.delete(u, at)
     assert u[at] >= 0.8 * np.median(others), (u[at], others)
     assert any("read alike at target(s) 90 " in w for w in data["warnings"])
+
+
+
+def test_a_direction_read_alike_in_every_run_gets_no_figure_intervals(tmp_path, capsys):
+    """Every forward run entered alike (values like −1.66 that numpy's mean leaves 2e-16
+    from themselves), the backward runs scattering: R↑ was 2e-15 with an interval of
+    width 3e-15, and two targets escaped the check for runs read alike. Now s is exactly 0
+    where the readings are alike, every target is named, U takes the pooled s, and no
+    figure has an interval (the reason says why)."""
+    import json
+
+    from app.main import main
+
+    rng = np.random.default_rng(22)
+    targets = np.arange(0.0, 390.0, 30.0)
+    curve = np.round(1.7 * np.sin(np.radians(targets)) - 0.01, 2)
+    rows = ["target,run,direction,deviation"]
+    for run in range(1, 6):
+        rows += [f"{t:g},{run},+,{x:.2f}" for t, x in zip(targets, curve, strict=True)]
+        rows += [f"{t:g},{run},-,{x + rng.normal(0.0, 0.5):.2f}"
+                 for t, x in zip(targets[::-1], curve[::-1], strict=True)]
+    path = tmp_path / "forward_alike.csv"
+    path.write_text("\n".join(rows) + "\n")
+    assert main(["analyze", "positioning", str(path), "--json", "--language", "en"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["per_target"]["s_up"] == [0.0] * targets.size
+    assert "read alike at every target" in data["figure_intervals_reason"]
+    assert all(f["interval_low"] is None for f in data["iso230_2_figures"].values())
+    alike = [w for w in data["warnings"] if "Every forward run read alike" in w]
+    assert alike and all(f"{t:g}" in alike[0] for t in targets)
