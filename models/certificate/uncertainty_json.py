@@ -179,7 +179,10 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     else:  # the figure is always stated, even where the decision could not compute it
         decided = out.get("decided_quantity")
         if decided is not None and decided["value"] is None:
-            decided["value"] = _measured_figure(kind, result, metadata)
+            # the figure the decision measured (the means' half range of passes), else the
+            # workbench's own
+            decided["value"] = (decided["measured"] if decided.get("measured") is not None
+                                else _measured_figure(kind, result, metadata))
     return out
 
 

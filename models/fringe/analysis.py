@@ -176,6 +176,26 @@ def _check_signals(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray)
             corr=f"{corr:+.3f}"))
 
 
+#: the fewest distinct phases of the Lissajous figure that determine its ellipse: five
+#: parameters and one degree of freedom
+ELLIPSE_PHASES = 6
+#: two samples of the Lissajous figure further apart in angle than this are two phases
+PHASE_GAP_RAD = math.radians(5.0)
+
+
+def _lissajous_phases(u_sin: np.ndarray, u_cos: np.ndarray) -> int:
+    """How many distinct phases the Lissajous figure's samples fall at: clusters of angle
+    about its centre parted by gaps above :data:`PHASE_GAP_RAD` (a sector count split each
+    of 4 phases at 0°, 90°, … in two by noise); a large number where no such gap parts them
+    (the ring sampled all round)."""
+    angle = np.sort(np.arctan2(u_sin - np.mean(u_sin), u_cos - np.mean(u_cos)))
+    if angle.size < 2:
+        return int(angle.size)
+    gaps = np.diff(np.concatenate([angle, angle[:1] + TWO_PI]))
+    parted = int(np.count_nonzero(gaps > PHASE_GAP_RAD))
+    return parted if parted else angle.size
+
+
 def _ellipse(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
     try:
         ellipse = fit_ellipse(u_sin, u_cos)
@@ -386,6 +406,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     ellipse = _ellipse(parsed, u_sin, u_cos)
     checkpoint()
     source, given_theta = _phase_source(parsed, per_period, warnings)
+    stated_ellipse: EllipseFit | None = ellipse
+    where = _lissajous_phases(u_sin, u_cos)
+    if given_theta is not None and where < ELLIPSE_PHASES:
+        # an ellipse has five parameters: through 4 phases (4 steps a period) its quadrature
+        # came out −2.95° where the least squares against θ gave 0.009° and 0 was true
+        stated_ellipse = None
+        warnings.append(message(QT_TR_NOOP(
+            "The Lissajous figure holds {count} distinct phases: the ellipse "
+            "(Heydemann: offsets, amplitudes, quadrature) is not determined by fewer than "
+            "{least} and is not stated; the fit against the phases is."),
+            count=where, least=ELLIPSE_PHASES))
     phasor: tuple[np.ndarray, np.ndarray] | None = None
     if given_theta is not None:
         theta = given_theta
@@ -485,7 +516,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         raw_error=raw, compensated_error=comp, table=table, lines_per_rev=lines,
         samples_per_period=per_period, method=str(s["method"]), sin_periods=sin_periods,
         cos_periods=cos_periods, phase_source=source, unit=unit, period_length=period,
-        ellipse=ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
+        ellipse=stated_ellipse, table_zero=str(s["table_zero"]), reversals=reversals,
         pso_seconds=pso_seconds, warnings=warnings, unmodelled_orders=unmodelled,
         inputs={key: float(s[key]) for key in BUDGET_INPUTS},
     )

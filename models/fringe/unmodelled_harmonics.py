@@ -123,6 +123,19 @@ def _phase_means(theta: np.ndarray, residual: np.ndarray, index: np.ndarray | No
     return at, count[full], mean, within
 
 
+#: a design whose condition number exceeds this resolves its orders no better than the
+#: readings' digits (1e8: 1e-8 of a volt-sized signal, below any ADC's step)
+MAX_CONDITION = 1e8
+
+
+def _ill_conditioned(x: np.ndarray) -> bool:
+    """Whether the columns of ``x`` are (nearly) dependent: its condition number above
+    :data:`MAX_CONDITION`, or fewer rows than columns."""
+    if x.shape[0] < x.shape[1]:
+        return True
+    return not float(np.linalg.cond(x)) <= MAX_CONDITION
+
+
 def _design(phase: np.ndarray, orders) -> np.ndarray:
     columns = [np.ones_like(phase)]
     for k in orders:
@@ -168,6 +181,12 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
         pure = dof_within >= MIN_DOF and within > 0.0  # repeats that scatter
         if not pure:
             top = min(top, (phases - 1 - MIN_DOF) // 2)
+        # phases that only look distinct (0 and 2π − 1e-15 in bins of their own, a θ column
+        # jittered about N steps) resolve no more orders than the N steps: the design's
+        # conditioning says how many (at 4 steps a period, order 2 was "heard" at 6e13 mV)
+        while top >= 1 and _ill_conditioned(_design(at, range(1, top + 1)) * np.sqrt(
+                count)[:, None]):
+            top -= 1
         tested = [k for k in range(1, top + 1) if k not in fit.orders]
         if not tested:
             continue

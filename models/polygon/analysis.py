@@ -306,6 +306,12 @@ def _direction(parsed: ParsedReadings, rows: np.ndarray, label: str,
     return 1
 
 
+def _varies(values: np.ndarray) -> bool:
+    """Whether the finite ``values`` are not all one number (none: no)."""
+    finite = values[np.isfinite(values)]
+    return finite.size > 1 and float(np.ptp(finite)) > 0.0
+
+
 def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
     """A set that repeats an earlier one reading for reading (encoder, horizontal and
     vertical autocollimator readings at every face, in any order) is a copy, not a
@@ -321,6 +327,11 @@ def _refuse_copied_sets(parsed: ParsedReadings, split) -> None:
         # alike to 1e-9 (a copy written back through arithmetic differs by 1e-14)
         by_face = rows[np.argsort(parsed["position"][rows], kind="stable")]
         values = np.array([parsed[c][by_face] for c in columns], dtype=float)
+        if not all(_varies(values[i]) for i in (2, 3)):
+            # the autocollimator nulled at each face (x = 0) or not read vertically: the
+            # encoder's display alone may read alike in two real sets (a grade-7 encoder
+            # shown to 0.001°, 0.3″ scatter: 8 of 8 refused, a reviewer), so no copy is told
+            continue
         for first_id, first_rows, first_values in seen:
             if first_values.shape != values.shape:
                 continue

@@ -753,7 +753,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
             rows_p.append((message(QT_TR_NOOP("Set {set} tilt direction ω"), set=i),
                            *(gum_pair(s.tilt.omega_deg, k_tilt * s.tilt.u_omega_deg, "°",
                                       fallback=1) if s.tilt.omega_determined else
-                             (message(NOT_IDENTIFIED), "—"))))
+                             (message(NOT_IDENTIFIED), ""))))
     parameters = Table(QT_TR_NOOP("Set-up parameters identified"),
                        (QT_TR_NOOP("Parameter"), QT_TR_NOOP("Value"),
                         f"U (k = {k_tilt:.2f}, ν = {nu_tilt})" if any(

@@ -413,7 +413,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                         "over the targets, {s}."), result.iso.backward)):
         if stats is None:
             continue
-        alike = result.alike_targets(stats)
+        alike = result.alike_unexplained(stats)
         if np.any(alike):
             warnings.append(message(template,
                                     targets=", ".join(f"{t:g}" for t in result.positions[alike]),

@@ -130,13 +130,20 @@ def positioning_budget(result: PositioningResult, metadata: CertificateMetadata,
     n = np.concatenate([p[3] for p in points]).astype(float)
     components = reference_standard_components(metadata, 1.0, QT_TR_NOOP("reading"),
                                                unit=result.deviation_unit)
+    note = message(QT_TR_NOOP("s of the runs at each target and direction, n = {n}; ν of the "
+                              "fewest runs"),
+                   n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
+                   else f"{int(np.min(n))}…{int(np.max(n))}")
+    alike = [f"{t:g}{arrow}" for _, sign, stats in result.directions_present()
+             for t, a in zip(result.positions, result.alike_targets(stats), strict=True) if a
+             for arrow in ("↑" if sign > 0 else "↓",)]
+    if alike:  # the s column still shows 0 there: say why U does not
+        note = message(QT_TR_NOOP("{note}; at {targets}, where every run read alike, the s "
+                                  "pooled over the targets ({s}), not 0"), note=note,
+                       targets=", ".join(alike), s=f"{result.pooled_s():.3g}{result.symbol}")
     components.append(BudgetComponent(
         QT_TR_NOOP("Repeatability of the mean (s/√n)"), "A", "normal", s / np.sqrt(n), 1.0, 1.0,
-        float(np.min(n) - 1),
-        message(QT_TR_NOOP("s of the runs at each target and direction, n = {n}; ν of the "
-                           "fewest runs"),
-                n=f"{int(np.min(n))}" if np.min(n) == np.max(n)
-                else f"{int(np.min(n))}…{int(np.max(n))}")))
+        float(np.min(n) - 1), note))
     components += repeated_readings_components(result)
     components += resolution_component(metadata, 1.0, result.deviation_unit)
     components += _stated_inputs(result)

@@ -102,7 +102,12 @@ def withheld_half_range(result: TheodoliteResult, probability: float
     if not readings_coarse(result):
         return None
     reason = figure_intervals_withheld(result)
-    measured = 0.5 * float(np.ptp(result.corrected_error_arcsec))
+    # the curve it would be decided on: the means over the passes where the directions are
+    # stated (half of E: a reviewer found every reading's 3.02″ stated where E/2 was 2.68″,
+    # either side of T = 3″), else every reading
+    curve = (pass_means(result)[0] if result.directions is not None
+             else result.corrected_error_arcsec)
+    measured = 0.5 * float(np.ptp(curve))
     return HalfRangeEstimate(measured=measured, bias=math.nan, value=math.nan,
                              u_upper=math.nan, u_lower=math.nan, probability=probability,
                              trials=0, seed=0,

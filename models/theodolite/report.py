@@ -413,6 +413,9 @@ def _decision(result: TheodoliteResult, metadata: CertificateMetadata,
                         estimate=means_half_range(result, means_budget, budget, stated))
     withheld = (withheld_half_range(result, budget.probability)
                 if metadata.decision_quantity == "half_range" else None)
+    if withheld is not None and result.directions is not None:  # the means' curve, named
+        means, names = pass_means(result)
+        return Decision(means, MEANS_DECIDED, names, estimate=withheld)
     return Decision(result.corrected_error_arcsec, point_names=_point_names(result.theta_deg),
                     estimate=withheld)
 
@@ -434,7 +437,7 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
         [(QT_TR_NOOP("Axis tilt ψ"), _degrees_to_its_u(s.psi_deg, u2[0], 5), expanded_text(u2[0])),
          (QT_TR_NOOP("Tilt direction α"), _degrees_to_its_u(s.alpha_deg, u2[1], 4),
           expanded_text(u2[1])) if ident.alpha_determined else
-         (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED), "—"),
+         (QT_TR_NOOP("Tilt direction α"), message(NOT_IDENTIFIED), ""),
          (QT_TR_NOOP("Mirror normal β"), _degrees_to_its_u(s.beta_deg, u2[2], 5),
           expanded_text(u2[2])),
          (QT_TR_NOOP("Identified from"), message(_IDENTIFIED_FROM.get(

@@ -4032,8 +4032,16 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>各目标及方向上各次测量的 s，n = {n}；ν 取测量次数最少者</translation>
     </message>
     <message>
+        <source>{note}; at {targets}, where every run read alike, the s pooled over the targets ({s}), not 0</source>
+        <translation>{note}；在 {targets}，各次测量读数完全相同，取各目标位置合并的 s（{s}），而不是 0</translation>
+    </message>
+    <message>
         <source>Step of the readings as entered</source>
         <translation>录入读数的步距</translation>
+    </message>
+    <message>
+        <source>every run of one direction read alike at every target while the other direction scatters: that direction&apos;s scatter cannot be told from these readings (copied?), so no figure has a coverage interval</source>
+        <translation>一个方向的各次测量在每个目标位置读数完全相同，而另一方向有分散：无法从这些读数得知该方向的分散（是复制的？），因此各项指标均不给出包含区间</translation>
     </message>
     <message>
         <source>the readings were entered coarser than they scatter: the rounding of each mean is not random, and the model the intervals are drawn from (random scatter about each target&apos;s true mean) does not hold, so no figure has a coverage interval</source>
@@ -4183,6 +4191,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>not a fringe signal: {exc} in the Lissajous figure (u_sin, u_cos)</source>
+        <extracomment>the fewest distinct phases of the Lissajous figure that determine its ellipse: five parameters and one degree of freedom two samples of the Lissajous figure further apart in angle than this are two phases</extracomment>
         <translation>不是莫尔条纹信号：李萨如图（u_sin, u_cos）中{exc}</translation>
     </message>
     <message>
@@ -4233,6 +4242,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{size} samples; at least {value} are needed</source>
         <translation>{size} 个采样点；至少需要 {value} 个</translation>
+    </message>
+    <message>
+        <source>The Lissajous figure holds {count} distinct phases: the ellipse (Heydemann: offsets, amplitudes, quadrature) is not determined by fewer than {least} and is not stated; the fit against the phases is.</source>
+        <translation>李萨如图只含 {count} 个不同的相位：少于 {least} 个相位不能确定椭圆（海德曼法：偏置、幅值、正交误差），故不予给出；按相位的拟合照常给出。</translation>
     </message>
     <message>
         <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>

@@ -8,6 +8,7 @@ fine grid of phases."""
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 
 import numpy as np
@@ -131,3 +132,38 @@ def test_the_step_of_an_adcs_readings_is_found_and_noise_has_none():
     rng = np.random.default_rng(0)
     assert quantisation_step(rng.normal(size=10_000)) == 0.0
     assert quantisation_step(np.round(rng.normal(size=10_000), 4)) == pytest.approx(1e-4)
+
+
+@pytest.mark.parametrize("per_period, settings", [
+    (4, {"max_order": 1}), (8, {"max_order": 3, "harmonics": "all"})])
+def test_no_harmonic_is_heard_beyond_what_the_steps_resolve(tmp_path, capsys, per_period,
+                                                            settings):
+    """Ideal signals with noise at 4 (or 8) equal steps a period over 8 periods, the θ
+    column given (0° and 360° fall in bins of their own): the steps resolve no order beyond
+    the fitted ones, yet order 2 was "heard" at 6e13 mV (and 4 and 5 at 8 steps, the N/2
+    order and the alias of the 3rd). Nothing is heard now. Simulated by
+    tests/fringe_signal_simulator.py (a true phase, numpy only)."""
+    from app.main import main
+    from tests.fringe_signal_simulator import Head, equal_phase
+
+    theta = equal_phase(8, per_period)
+    u_sin, u_cos = Head(peak_a=3.7, peak_b=3.7, noise=0.002).signals(
+        theta, np.random.default_rng(3))
+    path = tmp_path / "steps.csv"
+    path.write_text("u_sin,u_cos,theta_deg\n" + "".join(
+        f"{a:.6f},{b:.6f},{math.degrees(t):.4f}\n" for a, b, t in zip(u_sin, u_cos, theta,
+                                                                      strict=True)))
+    args = ["analyze", "fringe", str(path), "--json", "--language", "en"]
+    for key, value in settings.items():
+        args += [f"--{key.replace('_', '-')}", str(value)]
+    assert main(args) == 0
+    data = json.loads(capsys.readouterr().out)
+    warnings = data["warnings"]
+    assert not any("hold harmonics" in w for w in warnings), warnings
+    # the Heydemann ellipse has five parameters: 4 phases do not determine it (its
+    # quadrature came out −2.95° where 0 was true); 8 do
+    if per_period == 4:
+        assert data.get("heydemann") is None
+        assert any("4 distinct phases" in w for w in warnings), warnings
+    else:
+        assert abs(data["heydemann"]["quadrature_error_deg"]) < 0.2

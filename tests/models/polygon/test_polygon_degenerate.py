@@ -129,3 +129,18 @@ def test_a_set_copied_under_another_set_number_is_refused_naming_both(tmp_path, 
     write_readings(path, rows)
     assert main(["analyze", "polygon", str(path), "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["repeatability_arcsec"] > 0.0
+
+
+def test_sets_read_with_the_autocollimator_nulled_are_not_called_copies(tmp_path, capsys):
+    """The autocollimator nulled at each face (x = 0, no vertical reading) and the encoder
+    shown to 0.001°: two real sets may read alike at every face (a reviewer: 8 of 8 refused
+    as copies). With nothing but the encoder's coarse display to compare, no copy is told."""
+    lines = ["position,encoder_deg,polygon_dev_arcsec,ac_x_arcsec,ac_y_arcsec,set,direction"]
+    for set_id in (1, 2):
+        for face in list(range(1, 13)) + [1]:
+            lines.append(f"{face},{(face - 1) * 30.0 + 0.001 * (face % 3):.3f},0.0,0.0,,"
+                         f"{set_id},+")
+    path = tmp_path / "nulled.csv"
+    path.write_text("\n".join(lines) + "\n")
+    assert main(["analyze", "polygon", str(path), "--json", "--grade", "7"]) == 0, \
+        capsys.readouterr().err

@@ -348,3 +348,38 @@ def test_a_direction_read_alike_in_every_run_gets_no_figure_intervals(tmp_path, 
     assert all(f["interval_low"] is None for f in data["iso230_2_figures"].values())
     alike = [w for w in data["warnings"] if "Every forward run read alike" in w]
     assert alike and all(f"{t:g}" in alike[0] for t in targets)
+
+
+def test_readings_alike_by_the_rounding_s_chance_are_not_called_copied(tmp_path, capsys):
+    """Deviations typed to 0.1″ scattering by about 0.1″: five runs at a target come out
+    alike by chance (13 % of directions of 13 targets, a reviewer). U there still takes the
+    pooled s (0 is no repeatability), said in the budget's note, but no warning suggests a
+    copy; the same readings typed to 0.0001″ (the rounding cannot explain them) are named."""
+    import json
+
+    from app.main import main
+
+    rng = np.random.default_rng(8)
+    targets = np.arange(0.0, 390.0, 30.0)
+
+    def record(decimals: int, name: str):
+        rows = ["target,run,direction,deviation"]
+        for run in range(1, 6):
+            for sign, order in (("+", targets), ("-", targets[::-1])):
+                for t in order:
+                    x = 0.4 * np.sin(np.radians(t)) + (0.0 if t == 90.0 else
+                                                      rng.normal(0.0, 0.1))
+                    rows.append(f"{t:g},{run},{sign},{round(x, decimals):.{decimals}f}")
+        path = tmp_path / name
+        path.write_text("\n".join(rows) + "\n")
+        assert main(["analyze", "positioning", str(path), "--json", "--language", "en"]) == 0
+        return json.loads(capsys.readouterr().out)
+
+    coarse = record(1, "tenths.csv")
+    at = coarse["per_target"]["target"].index(90.0)
+    assert coarse["per_target"]["s_up"][at] == 0.0
+    assert not any("read alike" in w for w in coarse["warnings"])
+    u = np.asarray(coarse["per_target"]["expanded_uncertainty_mean_up"])
+    assert u[at] >= 0.8 * np.median(np.delete(u, at))
+    fine = record(4, "fine.csv")
+    assert any("read alike at target(s) 90 " in w for w in fine["warnings"])
