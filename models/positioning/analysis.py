@@ -30,6 +30,7 @@ from models.positioning.report import (
     positioning_budget,
     positioning_certificate,
 )
+from models.readings.copied_runs import COPIED_RUN, copied_run
 from models.readings.entry_plan import positioning_plan, targets_from_text
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
@@ -391,6 +392,10 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PositioningR
                                         repeats.s_mean["measured"] * scale)
     result.inputs = {key: float(s[key]) for key in BUDGET_INPUTS}
     result.readings_step = step
+    copy = copied_run(runs, directions, targets, deviations, step, result.pooled_s())
+    if copy is not None:
+        raise ValueError(message(COPIED_RUN, later=copy[1], earlier=copy[0],
+                                 direction="+" if copy[2] > 0 else "−"))
     if result.without_scatter and step is None:
         warnings.append(message(IDENTICAL_READINGS))
     elif result.coarse_readings:

@@ -142,6 +142,17 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> TheodoliteRe
     result.runs = runs.astype(int) if np.all(np.isfinite(runs)) else None
     result.directions = directions
     result.repeats = repeats
+    if result.runs is not None and result.iso230 is not None:
+        from models.readings.copied_runs import COPIED_PASS, copied_run
+        from models.readings.resolution import readings_step
+        from models.theodolite.figures import passes_scatter
+
+        copy = copied_run(result.runs, np.ones(result.runs.size) if directions is None
+                          else directions, result.theta_deg, result.raw_error_arcsec,
+                          readings_step(result.raw_error_arcsec), passes_scatter(result)[0])
+        if copy is not None:
+            raise ValueError(message(COPIED_PASS, later=copy[1], earlier=copy[0],
+                                     direction="+" if copy[2] > 0 else "−"))
     return result
 
 

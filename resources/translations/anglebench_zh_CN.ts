@@ -10208,5 +10208,14 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <extracomment>a direction&apos;s value where it is not determined (a certificate&apos;s cell)</extracomment>
         <translation>未辨识（倾斜与 0 无法区分）</translation>
     </message>
+    <message>
+        <source>run {later} ({direction}) repeats run {earlier} at every target, reading for reading: a copied run is no repeat; delete it or enter the run as it was read</source>
+        <extracomment>the refusals: a positioning run, a theodolite pass</extracomment>
+        <translation>第 {later} 次测量（{direction}）在每个目标位置逐个读数重复第 {earlier} 次测量：复制的测量不是重复测量；请删除它，或按实际读数录入该次测量</translation>
+    </message>
+    <message>
+        <source>run {later} ({direction}) repeats run {earlier} at every θ, reading for reading: a copied pass is no repeat; delete it or enter the pass as it was read</source>
+        <translation>第 {later} 测回（{direction}）在每个 θ 处逐个读数重复第 {earlier} 测回：复制的测回不是重复测量；请删除它，或按实际读数录入该测回</translation>
+    </message>
 </context>
 </TS>
