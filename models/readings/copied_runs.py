@@ -40,7 +40,8 @@ def copied_run(run: np.ndarray, direction: np.ndarray, point: np.ndarray, value:
     the reading or its error, alike to 1e-9), or None. None also where ``step`` (the
     readings' step as entered) is not small against ``scatter`` (their pooled standard
     deviation): the rounding may then make two runs alike; and where nothing scatters (every
-    run alike: the workbench says so and withholds what the scatter would determine)."""
+    run alike, or every run of the direction: the workbench says so and withholds what the
+    scatter would determine)."""
     if not (math.isfinite(scatter) and scatter > 0.0):
         return None  # every run alike: no scatter to tell a copy by (said elsewhere)
     if step is not None and not scatter > ALIKE_BY_CHANCE * step:
@@ -57,9 +58,14 @@ def copied_run(run: np.ndarray, direction: np.ndarray, point: np.ndarray, value:
             points, readings = key[here][order], value[here][order]
             if points.size < MIN_POINTS or np.unique(points).size != points.size:
                 continue
-            for earlier, p, v in seen.get(d, []):
-                if p.shape == points.shape and np.array_equal(p, points) and np.allclose(
-                        readings, v, rtol=1e-12, atol=1e-9):
-                    return earlier, int(r), float(d)
             seen.setdefault(d, []).append((int(r), points, readings))
+    for d, runs in seen.items():
+        alike = [[np.array_equal(p, q) and bool(np.allclose(v, w, rtol=1e-12, atol=1e-9))
+                  for _, q, w in runs] for _, p, v in runs]
+        if all(all(row) for row in alike):
+            continue  # every run of the direction alike: no scatter to tell a copy by
+        for later in range(len(runs)):
+            for earlier in range(later):
+                if alike[later][earlier]:
+                    return runs[earlier][0], runs[later][0], float(d)
     return None
