@@ -27,6 +27,7 @@ from models.polygon.model import (
     harmonic_analysis,
     pooled_repeatability,
     set_name,
+    sets_alike,
     split_sets,
     tilt_advice,
     wrap_deg,
@@ -477,6 +478,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     mean_error, _ = direction_means(errors, directions)
     mean_corrected, reversal = direction_means(corrected, directions)
     repeat = pooled_repeatability(corrected, directions)
+    if sets_alike(corrected, directions):
+        warnings.append(message(QT_TR_NOOP(
+            "The sets of each direction read alike at every face: their repeatability cannot "
+            "be told from them (readings shown coarser than they scatter, or copied) and is "
+            "not evaluated; the reading noise comes from the vertical readings' fits, or the "
+            "σ of a reading stated in the settings, or U is withheld.")))
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
     # the roll left uncorrected: the bound, or 2u of a measured roll
@@ -678,6 +685,10 @@ def summary(result: PolygonResult) -> str:
         if result.repeatability_arcsec is not None:
             jjf.append(message(QT_TR_NOOP(", repeatability {value}"),
                                value=f"{np.max(result.repeatability_arcsec):.2f}\""))
+        elif sets_alike(np.array([r.corrected_error_arcsec for r in result.sets]),
+                        np.array([r.direction for r in result.sets])):
+            jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (the sets read alike "
+                                          "at every face)")))
         else:
             jjf.append(message(QT_TR_NOOP(", repeatability not evaluated (no direction was "
                                           "measured twice)")))

@@ -86,7 +86,7 @@ __all__ = ["split_sets",
     "PolygonSetReadings",
     "direction_means",
     "evaluate_sets",
-    "pooled_repeatability",
+    "pooled_repeatability", "sets_alike",
     "tilt_advice",
     "tilt_not_identified",
     "wrap_deg",
@@ -440,9 +440,20 @@ def direction_means(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndar
     return values.mean(axis=0), None
 
 
+def sets_alike(values: np.ndarray, directions: np.ndarray) -> bool:
+    """Whether every direction measured more than once read alike at every face in all its
+    sets (the same errors, bit for bit): readings shown coarser than they scatter (an
+    encoder's display of 0.001° with the autocollimator nulled, a reviewer), or copied."""
+    repeated = [values[directions == d] for d in (1, -1)
+                if np.count_nonzero(directions == d) >= 2]
+    return bool(repeated) and all(np.all(np.ptp(g, axis=0) == 0.0) for g in repeated)
+
+
 def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, int] | None:
     """Standard deviation per position pooled over the sets of each direction, about that
-    direction's mean, with its degrees of freedom; None when no direction was repeated."""
+    direction's mean, with its degrees of freedom; None when no direction was repeated, or
+    when the repeated sets read alike at every face (:func:`sets_alike`: their scatter
+    cannot be told, and a repeatability of 0 took the noise out of U)."""
     squares = np.zeros(values.shape[1])
     dof = 0
     for d in (1, -1):
@@ -450,7 +461,7 @@ def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np
         if group.shape[0] >= 2:
             squares += np.sum((group - group.mean(axis=0)) ** 2, axis=0)
             dof += group.shape[0] - 1
-    if dof == 0:
+    if dof == 0 or sets_alike(values, directions):
         return None
     return np.sqrt(squares / dof), dof
 

@@ -4445,6 +4445,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>zero_face 必须为 0（第一个读数）或面 1…{faces}，而不是 {s}</translation>
     </message>
     <message>
+        <source>The sets of each direction read alike at every face: their repeatability cannot be told from them (readings shown coarser than they scatter, or copied) and is not evaluated; the reading noise comes from the vertical readings&apos; fits, or the σ of a reading stated in the settings, or U is withheld.</source>
+        <translation>每个方向的各组在每个面上读数完全相同：无法由此得知其重复性（读数显示得比其分散更粗，或为复制），故不予评定；读数噪声取自竖直读数的拟合，或分析设置中给出的单次读数 σ，否则不给出 U。</translation>
+    </message>
+    <message>
         <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon&apos;s axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
         <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
     </message>
@@ -4519,6 +4523,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>, repeatability {value}</source>
         <translation>，重复性 {value}</translation>
+    </message>
+    <message>
+        <source>, repeatability not evaluated (the sets read alike at every face)</source>
+        <translation>，重复性未评定（各组在每个面上读数完全相同）</translation>
     </message>
     <message>
         <source>, repeatability not evaluated (no direction was measured twice)</source>
