@@ -149,9 +149,9 @@ def test_sets_read_with_the_autocollimator_nulled_are_not_called_copies(tmp_path
 def test_sets_alike_at_every_face_give_no_repeatability_of_zero(tmp_path, capsys):
     """Four sets read with the autocollimator nulled on an encoder shown to 0.001° (3.6″)
     (the encoder's error within ±1.5″, its scatter 0.1″): every set reads alike. 0.8.7
-    printed "repeatability 0.00″" and took the noise out of U; the repeatability is now not evaluated, a warning says why,
-    and with nothing else to evaluate the noise from, U is withheld (the summary names
-    the sets alike)."""
+    printed "repeatability 0.00″" and took the noise out of U; the repeatability is now not
+    evaluated, a warning says why, and with nothing else to evaluate the noise from, U is
+    withheld (the summary names the sets alike)."""
     rng = np.random.default_rng(5)
     error = 1.5 * np.sin(np.radians(np.arange(12) * 30.0) + 0.3)  # the encoder's, arcsec
     lines = ["position,encoder_deg,polygon_dev_arcsec,ac_x_arcsec,ac_y_arcsec,set,direction"]
