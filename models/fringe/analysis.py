@@ -426,6 +426,14 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
         bins = np.count_nonzero(np.bincount(np.floor((phase + math.pi) / TWO_PI * 36)
                                             .astype(np.intp)))
         if bins < 27:
+            distinct = _lissajous_phases(u_sin, u_cos)
+            if distinct < 27 and u_sin.size >= 2 * distinct:
+                # many samples at few phases: sampled too coarsely, not too short (4 a period
+                # over 8 periods was refused as "17 % of a period", a tester)
+                raise ValueError(message(QT_TR_NOOP(
+                    "the {count} samples fall at {phases} distinct phases of the period: too "
+                    "few to estimate the phase from the signals; give the phase (a θ column) "
+                    "or the samples per period"), count=u_sin.size, phases=distinct))
             raise ValueError(message(
                 QT_TR_NOOP("the signals cover {value} % of a period: the phase cannot be estimated from "
                            "less than three quarters of one"),

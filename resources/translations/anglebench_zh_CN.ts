@@ -4248,6 +4248,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>李萨如图只含 {count} 个不同的相位：少于 {least} 个相位不能确定椭圆（海德曼法：偏置、幅值、正交误差），故不予给出；按相位的拟合照常给出。</translation>
     </message>
     <message>
+        <source>the {count} samples fall at {phases} distinct phases of the period: too few to estimate the phase from the signals; give the phase (a θ column) or the samples per period</source>
+        <translation>{count} 个采样只落在周期内 {phases} 个不同的相位上：太少，无法由信号本身估计相位；请给出相位（θ 列）或每周期采样数</translation>
+    </message>
+    <message>
         <source>the signals cover {value} % of a period: the phase cannot be estimated from less than three quarters of one</source>
         <translation>信号仅覆盖一个周期的 {value} %：少于四分之三个周期无法估计相位</translation>
     </message>
