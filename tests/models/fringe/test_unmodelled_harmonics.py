@@ -186,3 +186,20 @@ def test_a_record_sampled_at_few_phases_is_refused_for_its_sampling_not_its_leng
     assert main(["analyze", "fringe", str(path), "--json", "--max-order", "1"]) == 2
     err = capsys.readouterr().err
     assert "fall at 4 distinct phases" in err and "of a period:" not in err, err
+
+
+def test_a_record_too_short_is_still_refused_for_its_length(tmp_path, capsys):
+    """A sixth of a period sampled densely, no θ: refused for the share of a period it
+    covers, not for its sampling."""
+    from app.main import main
+    from tests.fringe_signal_simulator import Head
+
+    theta = np.linspace(0.0, 2 * math.pi / 6, 200)
+    u_sin, u_cos = Head(peak_a=3.7, peak_b=3.7, noise=0.002).signals(
+        theta, np.random.default_rng(5))
+    path = tmp_path / "short.csv"
+    path.write_text("u_sin,u_cos\n" + "".join(
+        f"{a:.6f},{b:.6f}\n" for a, b in zip(u_sin, u_cos, strict=True)))
+    assert main(["analyze", "fringe", str(path), "--json", "--max-order", "1"]) == 2
+    err = capsys.readouterr().err
+    assert "of a period" in err and "distinct phases" not in err, err
