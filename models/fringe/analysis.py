@@ -184,31 +184,22 @@ PHASE_GAP_RAD = math.radians(5.0)
 
 
 def _lissajous_phases(u_sin: np.ndarray, u_cos: np.ndarray,
-                      centre: tuple[float, float] | None = None) -> int:
-    """How many distinct phases the Lissajous figure's samples fall at: clusters of angle
-    about its centre parted by gaps above :data:`PHASE_GAP_RAD` (a sector count split each
-    of 4 phases at 0°, 90°, … in two by noise); a large number where no such gap parts them
-    (the ring sampled all round). ``centre``: (u_sin, u_cos) of the ring's centre (the
-    fitted ellipse's offsets; the samples' mean if None, which a ring sampled evenly
-    shares, and an arc does not)."""
+                      centre: tuple[float, float] | None = None) -> tuple[int, float]:
+    """(how many distinct phases, the widest empty angle in rad) of the Lissajous figure's
+    samples about ``centre`` ((u_sin, u_cos) of the ring's centre: the fitted ellipse's
+    offsets; the samples' mean if None, which a ring sampled evenly shares and an arc does
+    not). Phases are clusters of angle parted by gaps above :data:`PHASE_GAP_RAD` (a sector
+    count split each of 4 phases at 0°, 90°, … in two by noise); where no such gap parts
+    them (the ring sampled all round) the count is the samples'. The widest gap is at most
+    half a turn where a few phases spread round the period, most of it where the record
+    covers an arc only (too short, not too coarsely sampled)."""
     c_sin, c_cos = centre if centre is not None else (np.mean(u_sin), np.mean(u_cos))
     angle = np.sort(np.arctan2(u_sin - c_sin, u_cos - c_cos))
     if angle.size < 2:
-        return int(angle.size)
+        return int(angle.size), TWO_PI
     gaps = np.diff(np.concatenate([angle, angle[:1] + TWO_PI]))
     parted = int(np.count_nonzero(gaps > PHASE_GAP_RAD))
-    return parted if parted else angle.size
-
-
-def _largest_gap(u_sin: np.ndarray, u_cos: np.ndarray, centre: tuple[float, float]) -> float:
-    """The widest angle about the Lissajous figure's centre holding no sample (rad): at most
-    half a turn where a few phases spread round the period, most of it where the record
-    covers an arc only (a record too short, not too coarsely sampled); ``centre`` as
-    :func:`_lissajous_phases`'."""
-    angle = np.sort(np.arctan2(u_sin - centre[0], u_cos - centre[1]))
-    if angle.size < 2:
-        return TWO_PI
-    return float(np.max(np.diff(np.concatenate([angle, angle[:1] + TWO_PI]))))
+    return (parted if parted else int(angle.size)), float(np.max(gaps))
 
 
 def _ellipse(parsed: ParsedReadings, u_sin: np.ndarray, u_cos: np.ndarray) -> EllipseFit:
@@ -422,7 +413,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     checkpoint()
     source, given_theta = _phase_source(parsed, per_period, warnings)
     stated_ellipse: EllipseFit | None = ellipse
-    where = _lissajous_phases(u_sin, u_cos)
+    where = _lissajous_phases(u_sin, u_cos)[0]
     if given_theta is not None and where < ELLIPSE_PHASES:
         # an ellipse has five parameters: through 4 phases (4 steps a period) its quadrature
         # came out −2.95° where the least squares against θ gave 0.009° and 0 was true
@@ -442,9 +433,8 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
                                             .astype(np.intp)))
         if bins < 27:
             centre = (ellipse.offset_sin, ellipse.offset_cos)
-            distinct = _lissajous_phases(u_sin, u_cos, centre)
-            if 2 <= distinct < 27 and u_sin.size >= 2 * distinct and _largest_gap(
-                    u_sin, u_cos, centre) <= math.pi:
+            distinct, widest = _lissajous_phases(u_sin, u_cos, centre)
+            if 2 <= distinct < 27 and u_sin.size >= 2 * distinct and widest <= math.pi:
                 # many samples at few phases: sampled too coarsely, not too short (4 a period
                 # over 8 periods was refused as "17 % of a period", a tester)
                 raise ValueError(message(QT_TR_NOOP(

@@ -169,20 +169,27 @@ def test_no_harmonic_is_heard_beyond_what_the_steps_resolve(tmp_path, capsys, pe
         assert abs(data["heydemann"]["quadrature_error_deg"]) < 0.2
 
 
+def _signals_without_phase(path, theta: np.ndarray, seed: int):
+    """A record of a read head's two channels at the true phases ``theta``, written without
+    its θ column (tests/fringe_signal_simulator.py: a true phase, numpy only)."""
+    from tests.fringe_signal_simulator import Head
+
+    u_sin, u_cos = Head(peak_a=3.7, peak_b=3.7, noise=0.002).signals(
+        theta, np.random.default_rng(seed))
+    path.write_text("u_sin,u_cos\n" + "".join(
+        f"{a:.6f},{b:.6f}\n" for a, b in zip(u_sin, u_cos, strict=True)))
+    return path
+
+
 def test_a_record_sampled_at_few_phases_is_refused_for_its_sampling_not_its_length(
         tmp_path, capsys):
     """4 samples a period over 8 periods, no θ column and no samples per period: the phase
     cannot be estimated from 4 phases. It was refused as "the signals cover 17 % of a
     period" (a tester: the record spans 8); the refusal now names the sampling."""
     from app.main import main
-    from tests.fringe_signal_simulator import Head, equal_phase
+    from tests.fringe_signal_simulator import equal_phase
 
-    theta = equal_phase(8, 4)
-    u_sin, u_cos = Head(peak_a=3.7, peak_b=3.7, noise=0.002).signals(
-        theta, np.random.default_rng(4))
-    path = tmp_path / "sparse.csv"
-    path.write_text("u_sin,u_cos\n" + "".join(
-        f"{a:.6f},{b:.6f}\n" for a, b in zip(u_sin, u_cos, strict=True)))
+    path = _signals_without_phase(tmp_path / "sparse.csv", equal_phase(8, 4), 4)
     assert main(["analyze", "fringe", str(path), "--json", "--max-order", "1"]) == 2
     err = capsys.readouterr().err
     assert "fall at 4 distinct phases" in err and "of a period:" not in err, err
@@ -192,14 +199,9 @@ def test_a_record_too_short_is_still_refused_for_its_length(tmp_path, capsys):
     """A sixth of a period sampled densely, no θ: refused for the share of a period it
     covers, not for its sampling."""
     from app.main import main
-    from tests.fringe_signal_simulator import Head
 
-    theta = np.linspace(0.0, 2 * math.pi / 6, 200)
-    u_sin, u_cos = Head(peak_a=3.7, peak_b=3.7, noise=0.002).signals(
-        theta, np.random.default_rng(5))
-    path = tmp_path / "short.csv"
-    path.write_text("u_sin,u_cos\n" + "".join(
-        f"{a:.6f},{b:.6f}\n" for a, b in zip(u_sin, u_cos, strict=True)))
+    path = _signals_without_phase(tmp_path / "short.csv",
+                                  np.linspace(0.0, 2 * math.pi / 6, 200), 5)
     assert main(["analyze", "fringe", str(path), "--json", "--max-order", "1"]) == 2
     err = capsys.readouterr().err
     assert "of a period" in err and "distinct phases" not in err, err
