@@ -7,7 +7,8 @@ per point, or one number when every point has the same k), and at the top level 
 ``coverage_probability``. When a tolerance is set, ``decided_quantity`` states the figure
 the conformity decision is made on — ``value``, ``interval_low``, ``interval_high``,
 ``coverage_probability``, ``unit``, ``verdict`` (null when no statement of conformity may
-be made, with the ``reason``), ``rule`` — always with numbers where the readings give them.
+be made, with the ``reason``), ``rule`` — always with numbers where the readings give them
+(a withheld interval: both ends and its ``coverage_probability`` null).
 
 Each workbench says which budget belongs to which array
 (:meth:`models.workbench.IssuesCertificates.uncertainty_budgets`); this module writes them.
@@ -183,6 +184,10 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
             # workbench's own
             decided["value"] = (decided["measured"] if decided.get("measured") is not None
                                 else _measured_figure(kind, result, metadata))
+    decided = out.get("decided_quantity")
+    if decided is not None and decided["interval_low"] is None and decided["interval_high"] is None:
+        # no interval, no probability of one (as positioning's figures state a withheld one)
+        decided["coverage_probability"] = None
     return out
 
 

@@ -68,6 +68,8 @@ def _say(text: Any, lang: str) -> str:
     """A text of the certificate in ``lang``: a message rendered, a QT_TR_NOOP text looked
     up, typed text as it is."""
     words = _WORDS[lang]
+    if isinstance(text, _Cells):
+        return text.said(lang)
     if hasattr(text, "template") or hasattr(text, "parts"):
         return rendered(text, words)
     return words(str(text))
@@ -385,8 +387,21 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
         elif figure and not rest:
             b.real(q, figure[0], figure[1])
         else:
-            b.rich(q, "noQuantity", " — ".join(_say(c, "en") for c in (value, *rest) if c),
-                   translated=False)
+            # each cell in each language of the document, as the PDF prints it (our texts
+            # "not identified …", "peak-to-peak …" were English only up to 0.8.8)
+            b.rich(q, "noQuantity", _Cells([c for c in (value, *rest) if c], " — "))
+
+
+@dataclass(frozen=True)
+class _Cells:
+    """Cells of a table row as one text: each said in the language asked (a message
+    rendered, a QT_TR_NOOP text looked up, typed text as it is), joined by ``separator``."""
+
+    cells: list[Any]
+    separator: str
+
+    def said(self, lang: str) -> str:
+        return self.separator.join(_say(c, lang) for c in self.cells)
 
 
 def _k_lookup(budgets) -> Callable[[float], float | None]:

@@ -97,6 +97,7 @@ def test_decided_value_is_a_number_when_u_is_withheld(capsys, tmp_path):
     assert decided["value"] == pytest.approx(0.5 * np.ptp(result.mean_corrected_arcsec))
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None and "degrees of freedom" in decided["reason"]
+    assert decided["coverage_probability"] is None  # no interval, no probability of one
     assert decided["tolerance"] > 0
     stated = _polygon_json(capsys, tmp_path, rows, ("--reading-noise-arcsec", "0.03"))
     decided = stated["decided_quantity"]

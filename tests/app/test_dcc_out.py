@@ -513,3 +513,53 @@ def test_the_polygons_raw_error_carries_the_budgets_u_without_the_pyramidal_inpu
         if q.findtext("dcc:name/dcc:content[last()]", namespaces=NS) == "raw_error_arcsec")
     text = " ".join(note.find("dcc:description", NS).itertext())
     assert "Pyramidal correction" in text and "without" in text
+
+
+def test_every_text_cell_of_a_bilingual_dcc_is_in_both_languages(issued):
+    """A table cell that is text (a range with its peak-to-peak, "largest over the faces", a
+    setting's name) is in each language the document declares, as the PDF prints it: up to
+    0.8.8 it was English only in every document. Its Chinese holds no English word of ours
+    (the Chinese certificate's test's rule: symbols, units, cited names may stay)."""
+    from tests.app.writers.test_certificate_chinese import SYMBOLS, WORD  # as the PDF's test
+
+    seen = 0
+    for case, (_, _, _, xml, _) in issued.items():
+        tree = etree.parse(str(xml))
+        if not tree.findall(".//dcc:content[@lang='zh']", NS):
+            continue
+        for cell in tree.iterfind(".//dcc:noQuantity", NS):
+            langs = {c.get("lang"): c.text or "" for c in cell.iterfind("dcc:content", NS)}
+            assert set(langs) == {"en", "zh"}, (case, langs)
+            words = set(WORD.findall(langs["zh"])) - SYMBOLS
+            assert not words, (case, langs["zh"], words)
+            seen += 1
+    assert seen >= 20, seen
+
+
+@needs_schema
+def test_a_tilt_direction_not_identified_is_said_in_each_language_of_the_dcc(tmp_path, capsys):
+    """A polygon square on its shaft (ψ = 0, one set each way), issued in zh+en: the row of ω
+    says "not identified" in English and in Chinese (0.8.8: English only), and the document
+    is valid."""
+    from tests.conftest import SAMPLES
+    from tests.polygon_sets_simulator import Bench, write_readings
+
+    bench = Bench(faces=24, sigma_arcsec=0.10, psi_arcsec=0.0, omega_deg=50.0)
+    readings = tmp_path / "square.csv"
+    write_readings(readings, bench.run_rows((1,), np.random.default_rng(7)))
+    details = json.loads((SAMPLES / "certificate_polygon.json").read_text(encoding="utf-8"))
+    details["language"] = "zh+en"
+    meta = tmp_path / "details.json"
+    meta.write_text(json.dumps(details), encoding="utf-8")
+    pdf, xml = tmp_path / "c.pdf", tmp_path / "c.xml"
+    code, said = _run(["analyze", "polygon", str(readings), "--metadata", str(meta),
+                       "--certificate", str(pdf), "--dcc", str(xml), "--dcc-schema",
+                       str(SCHEMA)], capsys)
+    assert code == 0, said
+    tree = etree.parse(str(xml))
+    cells = [{c.get("lang"): c.text for c in q.iterfind("dcc:noQuantity/dcc:content", NS)}
+             for q in tree.iterfind(".//dcc:quantity", NS)]
+    said_not_identified = [c for c in cells if "not identified" in (c.get("en") or "")]
+    assert said_not_identified, "no row says the tilt direction is not identified"
+    for c in said_not_identified:
+        assert c.get("zh") and "not" not in c["zh"] and "未" in c["zh"], c

@@ -80,6 +80,7 @@ def test_an_estimated_phase_states_no_interval_and_no_conformity_whatever_is_sta
     decided = data["decided_quantity"]
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None and decided["probability_conforming"] is None
+    assert decided["coverage_probability"] is None  # no interval, no probability of one
     assert "estimated from the signals" in decided["reason"]
     assert decided["value"] > 0.0  # the half range the signals show, stated as measured
     # with the true phase given, the same signals are decided, and the interval holds it

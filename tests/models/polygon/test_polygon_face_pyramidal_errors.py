@@ -68,4 +68,5 @@ def test_one_set_whose_noise_the_faces_pyramidal_errors_inflate_gets_no_interval
     decided = json.loads(capsys.readouterr().out)["decided_quantity"]
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None and "contradict the budget" in decided["reason"]
+    assert decided["coverage_probability"] is None  # no interval, no probability of one
     assert decided["value"] == pytest.approx(decided["measured"])  # as measured, not 0

@@ -187,6 +187,7 @@ def test_passes_alike_in_every_reading_withhold_the_decided_half_range(capsys, t
     decided = _decided(capsys, tmp_path, record, 0.5)["decided_quantity"]
     assert decided["interval_low"] is None and decided["interval_high"] is None
     assert decided["verdict"] is None
+    assert decided["coverage_probability"] is None  # no interval, no probability of one
     assert "withheld" in decided["reason"] and "identical over the passes" in decided["reason"]
     assert decided["value"] == pytest.approx(truth, abs=0.02)
 
