@@ -68,6 +68,14 @@ class Bench:
     # each face's own pyramidal error (its normal out of the plane square to the polygon's
     # axis, ″), standard deviation of a fixed artefact's faces; the same in every set
     face_pyramidal_sd_arcsec: float = 0.0
+    # how the operator stops at a face: "anywhere" within ± stop_arcsec of it (the
+    # autocollimator reads the rest), or "nominal": the shaft turned until the encoder's
+    # display shows the face's nominal angle from its zero (its reading typed as shown)
+    stop_at: str = "anywhere"
+    # the displays' steps (0: every digit): the encoder's in degrees, the autocollimator's
+    # in arcseconds; a reading is typed as its display shows it (rounded to the step)
+    encoder_step_deg: float = 0.0
+    ac_step_arcsec: float = 0.0
 
     @property
     def theta_deg(self) -> np.ndarray:
@@ -118,22 +126,54 @@ class Bench:
             order = [(d * k) % n for k in range(n)] + [0]  # 0-based faces, closing on face 1
             drift = rng.normal(0.0, self.drift_sigma_arcsec) if steady is None else steady
             for j, face in enumerate(order):
-                turn = (face * step + dev[face] / 3600.0
-                        + rng.uniform(-1.0, 1.0) * self.stop_arcsec / 3600.0)
+                if self.stop_at == "nominal":
+                    # the encoder reads turn + error and shows the nominal (from its zero)
+                    # wherever that lies within its display's step of it
+                    error = (self.encoder_error_arcsec(face * step)
+                             + rng.normal(0.0, self.encoder_sigma_arcsec))
+                    indicated = face * step + rng.uniform(-0.5, 0.5) * self.encoder_step_deg
+                    turn = indicated - error / 3600.0
+                elif self.stop_at == "anywhere":
+                    turn = (face * step + dev[face] / 3600.0
+                            + rng.uniform(-1.0, 1.0) * self.stop_arcsec / 3600.0)
+                    error = (self.encoder_error_arcsec(face * step)
+                             + rng.normal(0.0, self.encoder_sigma_arcsec))
+                elif self.stop_at == "nulled":
+                    # turned until the autocollimator shows its zero: its reading (with its
+                    # noise) anywhere within its display's step of that
+                    aim = (rng.uniform(-0.5, 0.5) * self.ac_step_arcsec
+                           - rng.normal(0.0, self.sigma_arcsec))
+                    turn = face * step + dev[face] / 3600.0
+                    for _ in range(3):  # the azimuth rises with the over-turn, ~1″ per ″
+                        seen = self._azimuth(normals[:, face], turn, basis)
+                        turn -= (seen + offset + drift * j / n - aim) / 3600.0
+                    error = (self.encoder_error_arcsec(face * step)
+                             + rng.normal(0.0, self.encoder_sigma_arcsec))
+                else:
+                    raise ValueError(f"stop_at: {self.stop_at!r}")
                 normal = rotate(normals[:, [face]], np.array([0.0, 0.0, 1.0]),
                                 np.radians(turn))[:, 0]
                 ld, lh, lu = (float(normal @ basis[:, i]) for i in range(3))
                 x = (np.arctan2(lh, ld) / ARCSEC + zero_x + offset + drift * j / n
                      + rng.normal(0.0, self.sigma_arcsec))
+                if self.stop_at == "nulled":  # it shows its zero (where within, in the aim)
+                    x = zero_x
                 y = np.arctan2(lu, ld) / ARCSEC + zero_y + rng.normal(0.0, self.sigma_arcsec)
-                error = (self.encoder_error_arcsec(face * step)
-                         + rng.normal(0.0, self.encoder_sigma_arcsec))
-                a = float((encoder_zero + turn + error / 3600.0) % 360.0)
+                a = (encoder_zero + turn + error / 3600.0) % 360.0
+                x, y = _shown(x, self.ac_step_arcsec), _shown(y, self.ac_step_arcsec)
+                a = _shown(a, self.encoder_step_deg)
                 rows.append(f"{face + 1},{a!r},{float(certificate[face])!r},{float(x)!r},"
                             f"{float(y)!r},{s},{'+' if d > 0 else '-'}\n")
             if self.drift != "per set":
                 offset += drift
         return rows
+
+    @staticmethod
+    def _azimuth(normal: np.ndarray, turn_deg: float, basis: np.ndarray) -> float:
+        """The autocollimator's horizontal angle (″, from its zero) of a face normal with the
+        shaft turned by ``turn_deg``."""
+        n = rotate(normal[:, None], np.array([0.0, 0.0, 1.0]), np.radians(turn_deg))[:, 0]
+        return float(np.arctan2(n @ basis[:, 1], n @ basis[:, 0]) / ARCSEC)
 
     def metadata(self) -> dict:
         """The certificate details the budget needs: the polygon standard as stated (U95 =
@@ -142,6 +182,15 @@ class Bench:
                                "uncertainty": 2.0 * self.u_polygon_arcsec,
                                "uncertainty_unit": "arcsec", "basis": "U95",
                                "applies_to": "from face 1"}]}
+
+
+def _shown(value: float, step: float) -> float:
+    """A reading as a display of step ``step`` shows it (every digit: 0), to the digits a
+    technician types (no binary tails such as 0.30000000000000004)."""
+    if not step:
+        return float(value)
+    decimals = max(0, -int(np.floor(np.log10(step) + 1e-9))) + 1
+    return round(round(float(value) / step) * step, decimals)
 
 
 def write_readings(path, rows: list[str]) -> None:

@@ -26,6 +26,7 @@ from models.polygon.model import (
     evaluate_sets,
     harmonic_analysis,
     pooled_repeatability,
+    readings_step_arcsec,
     set_name,
     sets_alike,
     split_sets,
@@ -37,6 +38,7 @@ from models.polygon.setup_statement import setup_statement
 from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
+from models.readings.resolution import coarse
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
@@ -484,6 +486,15 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "be told from them (readings shown coarser than they scatter, or copied) and is "
             "not evaluated; the reading noise comes from the vertical readings' fits, or the "
             "σ of a reading stated in the settings, or U is withheld.")))
+    step = readings_step_arcsec(sets) if repeats is None else None
+    if step is not None and repeat is not None and coarse(step, _pooled(repeat[0])):
+        warnings.append(message(QT_TR_NOOP(
+            "The horizontal readings were entered to a step of {step} and the sets scatter by "
+            "less than half of it (s pooled {s}): a face's readings round alike from set to "
+            "set, so their rounding is not averaged out and is an input of U of its own "
+            "(rectangular, half-width {half}). A finer display, or the autocollimator read "
+            "where the shaft stops, would show the scatter."),
+            step=f"{step:g}\"", s=f"{_pooled(repeat[0]):.3g}\"", half=f"{0.5 * step:g}\""))
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
     # the roll left uncorrected: the bound, or 2u of a measured roll
@@ -546,7 +557,13 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
+        readings_step_arcsec=step,
     )
+
+
+def _pooled(s_per_face: np.ndarray) -> float:
+    """One figure of the sets' scatter: the quadratic mean of the faces' pooled s."""
+    return float(np.sqrt(np.mean(np.square(s_per_face))))
 
 
 def _implausible(errors: np.ndarray, corrected: np.ndarray, faces: int) -> str:

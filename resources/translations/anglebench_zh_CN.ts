@@ -4453,6 +4453,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>每个方向的各组在每个面上读数完全相同：无法由此得知其重复性（读数显示得比其分散更粗，或为复制），故不予评定；读数噪声取自竖直读数的拟合，或分析设置中给出的单次读数 σ，否则不给出 U。</translation>
     </message>
     <message>
+        <source>The horizontal readings were entered to a step of {step} and the sets scatter by less than half of it (s pooled {s}): a face&apos;s readings round alike from set to set, so their rounding is not averaged out and is an input of U of its own (rectangular, half-width {half}). A finer display, or the autocollimator read where the shaft stops, would show the scatter.</source>
+        <translation>水平读数录入到 {step} 的步距，而各测回的分散不到其一半（合并 s 为 {s}）：同一面的读数在各测回中舍入相同，其舍入不因平均而减小，作为 U 的一个独立输入量（矩形分布，半宽 {half}）。更细的显示，或在轴停止处读取自准直仪，才能显示出分散。</translation>
+    </message>
+    <message>
         <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon&apos;s axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
         <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
     </message>
@@ -6575,6 +6579,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>covariance of ψ, ω from the tilt fits propagated through the set-up&apos;s exact correction</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
+    </message>
+    <message>
+        <source>horizontal readings entered to {step}, a step not small against their scatter ({s}): rectangular, half-width {half}, in each of the two readings of a point&apos;s error</source>
+        <translation>水平读数录入到 {step}，该步距相对其分散（{s}）不算小：矩形分布，半宽 {half}，计入一点误差所依据的两个读数中的每一个</translation>
     </message>
     <message>
         <source>repeatability of the readings</source>
