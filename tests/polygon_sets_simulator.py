@@ -69,13 +69,18 @@ class Bench:
     # axis, ″), standard deviation of a fixed artefact's faces; the same in every set
     face_pyramidal_sd_arcsec: float = 0.0
     # how the operator stops at a face: "anywhere" within ± stop_arcsec of it (the
-    # autocollimator reads the rest), or "nominal": the shaft turned until the encoder's
-    # display shows the face's nominal angle from its zero (its reading typed as shown)
+    # autocollimator reads the rest); "nominal": the shaft turned until the encoder's
+    # display shows the face's nominal angle from its zero (its reading typed as shown);
+    # "nulled": until the autocollimator shows its zero (it reads that); "near zero": until
+    # it reads within ± stop_arcsec of its zero (it reads where the shaft stopped)
     stop_at: str = "anywhere"
     # the displays' steps (0: every digit): the encoder's in degrees, the autocollimator's
     # in arcseconds; a reading is typed as its display shows it (rounded to the step)
     encoder_step_deg: float = 0.0
     ac_step_arcsec: float = 0.0
+    # the encoder's reading with the shaft at 0 (None: drawn in 0 … 360° each run, so that
+    # where a display's steps fall moves from run to run)
+    encoder_zero_deg: float | None = 123.4
 
     @property
     def theta_deg(self) -> np.ndarray:
@@ -115,7 +120,8 @@ class Bench:
                          self.psi_arcsec * ARCSEC)
         roll = rng.uniform(-1.0, 1.0) * self.roll_bound_arcmin * 60.0 * ARCSEC
         basis = rotate(np.eye(3), np.array([1.0, 0.0, 0.0]), roll)  # columns d, h, u
-        encoder_zero = 123.4
+        encoder_zero = (self.encoder_zero_deg if self.encoder_zero_deg is not None
+                        else float(rng.uniform(0.0, 360.0)))
         zero_x, zero_y = 5.0, -2.0
         rows = []
         if self.drift not in ("per set", "steady", "carried"):
@@ -131,18 +137,22 @@ class Bench:
                     # wherever that lies within its display's step of it
                     error = (self.encoder_error_arcsec(face * step)
                              + rng.normal(0.0, self.encoder_sigma_arcsec))
-                    indicated = face * step + rng.uniform(-0.5, 0.5) * self.encoder_step_deg
+                    shows = _shown((encoder_zero + face * step) % 360.0, self.encoder_step_deg)
+                    indicated = (shows - encoder_zero + rng.uniform(-0.5, 0.5)
+                                 * self.encoder_step_deg)
                     turn = indicated - error / 3600.0
                 elif self.stop_at == "anywhere":
                     turn = (face * step + dev[face] / 3600.0
                             + rng.uniform(-1.0, 1.0) * self.stop_arcsec / 3600.0)
                     error = (self.encoder_error_arcsec(face * step)
                              + rng.normal(0.0, self.encoder_sigma_arcsec))
-                elif self.stop_at == "nulled":
+                elif self.stop_at in ("nulled", "near zero"):
                     # turned until the autocollimator shows its zero: its reading (with its
-                    # noise) anywhere within its display's step of that
+                    # noise) anywhere within its display's step of that; or only near it,
+                    # within ± stop_arcsec, and then read
                     aim = (rng.uniform(-0.5, 0.5) * self.ac_step_arcsec
-                           - rng.normal(0.0, self.sigma_arcsec))
+                           - rng.normal(0.0, self.sigma_arcsec) if self.stop_at == "nulled"
+                           else rng.uniform(-1.0, 1.0) * self.stop_arcsec)
                     turn = face * step + dev[face] / 3600.0
                     for _ in range(3):  # the azimuth rises with the over-turn, ~1″ per ″
                         seen = self._azimuth(normals[:, face], turn, basis)

@@ -26,7 +26,6 @@ from models.polygon.model import (
     evaluate_sets,
     harmonic_analysis,
     pooled_repeatability,
-    readings_step_arcsec,
     set_name,
     sets_alike,
     split_sets,
@@ -34,11 +33,11 @@ from models.polygon.model import (
     wrap_deg,
 )
 from models.polygon.plots import error_figure
+from models.polygon.rounding import horizontal_rounding
 from models.polygon.setup_statement import setup_statement
 from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
-from models.readings.resolution import coarse
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
@@ -486,15 +485,9 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "be told from them (readings shown coarser than they scatter, or copied) and is "
             "not evaluated; the reading noise comes from the vertical readings' fits, or the "
             "σ of a reading stated in the settings, or U is withheld.")))
-    step = readings_step_arcsec(sets) if repeats is None else None
-    if step is not None and repeat is not None and coarse(step, _pooled(repeat[0])):
-        warnings.append(message(QT_TR_NOOP(
-            "The horizontal readings were entered to a step of {step} and the sets scatter by "
-            "less than half of it (s pooled {s}): a face's readings round alike from set to "
-            "set, so their rounding is not averaged out and is an input of U of its own "
-            "(rectangular, half-width {half}). A finer display, or the autocollimator read "
-            "where the shaft stops, would show the scatter."),
-            step=f"{step:g}\"", s=f"{_pooled(repeat[0]):.3g}\"", half=f"{0.5 * step:g}\""))
+    rounding = horizontal_rounding(sets, faces, counting, _fits_noise(results)
+                                   or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None)
+    warnings += rounding_warnings(rounding)
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
     # the roll left uncorrected: the bound, or 2u of a measured roll
@@ -557,13 +550,62 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
         u_ac_roll_arcmin=float(s["u_ac_roll_arcmin"]), closure_rows=closure_rows,
         warnings=warnings, repeats=repeats,
         repeat_s_mean_arcsec=None if repeats is None else _repeat_s_mean(parsed, repeats, faces),
-        readings_step_arcsec=step,
+        rounding=rounding,
     )
 
 
-def _pooled(s_per_face: np.ndarray) -> float:
-    """One figure of the sets' scatter: the quadratic mean of the faces' pooled s."""
-    return float(np.sqrt(np.mean(np.square(s_per_face))))
+def _fits_noise(results) -> float | None:
+    """The reading noise the vertical readings' tilt fits show (their residuals pooled over
+    the sets, n − 3 degrees of freedom each); None without a fit that has any left."""
+    fits = [r.tilt for r in results if r.tilt is not None]
+    dof = sum(t.residuals_arcsec.size - 3 for t in fits)
+    if dof <= 0:
+        return None
+    return float(np.sqrt(sum(float(np.sum(t.residuals_arcsec ** 2)) for t in fits) / dof))
+
+
+def rounding_warnings(rounding) -> list[str]:
+    """What the rounding of the horizontal readings (models.polygon.rounding) asks the
+    user to know: a step counted in U, a display's step the readings cannot show."""
+    if rounding is None:
+        return []
+    out: list[str] = []
+    if rounding.nothing_measured:
+        out.append(message(QT_TR_NOOP(
+            "Every encoder reading lies on its face's nominal angle and the autocollimator "
+            "read one value throughout: every error is 0 as typed, whatever the encoder's true "
+            "errors within its display's step. No uncertainty can be given unless the item's "
+            "resolution is stated in the certificate details (item_resolution).")))
+    elif rounding.encoder_on_nominal and not rounding.repeated:
+        out.append(message(QT_TR_NOOP(
+            "Every encoder reading lies on its face's nominal angle (the encoder set to each "
+            "nominal): where the shaft stopped within its display's step is in each error but "
+            "in no scatter the readings show, and no direction was read twice. State the item's "
+            "resolution in the certificate details (item_resolution); until then it is named "
+            "as not stated and no statement of conformity is made.")))
+    for counts, step, spread, what in (
+            (rounding.encoder_counts, rounding.encoder_step_arcsec,
+             rounding.encoder_spread_arcsec, message(QT_TR_NOOP("encoder"))),
+            (rounding.ac_counts, rounding.ac_step_arcsec, rounding.ac_spread_arcsec,
+             message(QT_TR_NOOP("autocollimator")))):
+        if not counts:
+            continue
+        why = (message(QT_TR_NOOP("its readings at a face vary from set to set by {spread}, "
+                                  "less than the step"), spread=f"{spread:.3g}\"")
+               if spread is not None else
+               message(QT_TR_NOOP("no direction was read twice: the reading noise "
+                                  "({noise}, from the vertical readings) does not hold its "
+                                  "rounding and is smaller than the step"),
+                       noise=f"{rounding.noise_arcsec:.3g}\"")
+               if rounding.noise_arcsec is not None else
+               message(QT_TR_NOOP("no direction was read twice, and the vertical readings' "
+                                  "noise does not hold it")))
+        out.append(message(QT_TR_NOOP(
+            "The {what}'s readings were entered to a step of {step} and {why}: their rounding "
+            "is not averaged out over the sets and is an input of U of its own (rectangular, "
+            "half-width {half})."), what=what, step=f"{step:g}\"", why=why,
+            half=f"{0.5 * step:g}\""))
+    return out
 
 
 def _implausible(errors: np.ndarray, corrected: np.ndarray, faces: int) -> str:

@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 if TYPE_CHECKING:
+    from models.polygon.rounding import HorizontalRounding
     from models.readings.sheet import ParsedReadings
 
 from models.messages import QT_TR_NOOP, Message, message
@@ -58,7 +59,6 @@ from models.pyramidal import (
     wrap_deg,
 )
 from models.readings.angles import ARCSEC_PER_RAD
-from models.readings.resolution import readings_step
 from models.uncertainty.error_stats import ErrorStats
 from models.uncertainty.tilt_direction import NOT_DETERMINED
 
@@ -417,8 +417,9 @@ class PolygonResult:
     # the reference polygon's face deviations as the readings give them (the first set's
     # polygon-deviation column, faces 1…n, taken from face 1); None when a face is not read
     reference_deviations_arcsec: np.ndarray | None = None
-    # the step of the horizontal readings as typed (readings_step_arcsec; None: not found)
-    readings_step_arcsec: float | None = None
+    # the rounding of the horizontal readings as typed (models.polygon.rounding; None: the
+    # readings were averaged first, n a face)
+    rounding: HorizontalRounding | None = None
 
     @property
     def mean_reversal_arcsec(self) -> float | None:
@@ -450,21 +451,6 @@ def sets_alike(values: np.ndarray, directions: np.ndarray) -> bool:
     repeated = [values[directions == d] for d in (1, -1)
                 if np.count_nonzero(directions == d) >= 2]
     return bool(repeated) and all(np.all(np.ptp(g, axis=0) == 0.0) for g in repeated)
-
-
-def readings_step_arcsec(sets: list[PolygonSetReadings]) -> float | None:
-    """The step of the horizontal readings as typed (″): the finest difference the encoder's
-    and the autocollimator's digits can show together, from each set's readings against its
-    first (models.readings.resolution.readings_step); None when a column is not on the
-    grid (more than six decimals, or readings averaged first) or nothing differs. Where the
-    autocollimator was read anywhere within a face its digits make the step fine; nulled (one
-    value throughout) or with the encoder set to each nominal, the other's display alone."""
-    differences = [np.zeros(1)]
-    for one in sets:
-        encoder = np.asarray(one.encoder_deg, dtype=float) * 3600.0
-        ac = np.asarray(one.ac_x_arcsec, dtype=float)
-        differences += [encoder - encoder[0], ac - ac[0]]
-    return readings_step(np.concatenate(differences))
 
 
 def pooled_repeatability(values: np.ndarray, directions: np.ndarray) -> tuple[np.ndarray, int] | None:

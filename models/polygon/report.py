@@ -73,7 +73,6 @@ from models.certificate.document import (
     Table,
     gum_pair,
     reference_standard_components,
-    resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
@@ -87,12 +86,11 @@ from models.polygon.model import (
     allowed_tilt_arcsec,
     pooled_repeatability,
     pyramidal_correction_arcsec,
-    sets_alike,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
-from models.readings.resolution import step_counts
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget, coverage_factor
+from models.uncertainty.conformity import HalfRangeEstimate
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
@@ -554,9 +552,6 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
     n = result.faces
     zero = _zero_index(result)
     share = mean_zero_share([s.direction for s in result.sets]) if share is None else share
-    # the encoder's two readings a_i and a_z: at the zero face the zero reading's share
-    pair = np.full(n, math.sqrt(2.0))
-    pair[zero] = math.sqrt(2.0) * share.zero
     components = _standard_components(metadata, zero, n)
     noise_components, noise = _noise_components(
         result, n, zero, float(stated.get("reading_noise_arcsec", 0.0) or 0.0), share)
@@ -577,44 +572,63 @@ def polygon_budget(result: PolygonResult, metadata: CertificateMetadata,
         # what a spread drift leaves within each set, or a drift no chain of closures shows
         components += _drift_component(result, noise, n, zero, share)
     components += carried or []
-    components += resolution_component(metadata, pair)
-    components += _step_component(result, metadata, noise, pair)
+    components += _rounding_components(result, metadata, zero, n, share)
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability,
                              floor=cmc_of(settings, "cmc_arcsec"))
 
 
 STEP_INPUT = QT_TR_NOOP("Step of the readings as entered")
+ITEM_RESOLUTION = QT_TR_NOOP("Item resolution")
 
 
-def _step_component(result: PolygonResult, metadata: CertificateMetadata, noise: float,
-                    pair: np.ndarray) -> list[BudgetComponent]:
-    """The step δ of the horizontal readings as typed (:func:`readings_step_arcsec`) where
-    the readings scatter by less than it (models.readings.resolution.step_counts): a face's
-    readings then round alike from set to set and the mean keeps a rounding error its s does
-    not show, up to δ/2 in each of the two readings a point's error is taken between
-    (rectangular, half-width δ/2, per point, not reduced by the sets; as the item's
-    resolution enters). The scatter: the sets' pooled s, 0 where they read alike at every
-    face, else the reading noise the budget took (one set each way). Not where the item's
-    resolution stated is at least as coarse (it holds the rounding). A nulled autocollimator
-    with the encoder's 0.001° display (3.6″) covered 38 % of the faces' true errors without
-    it (tests/models/polygon/test_polygon_readings_step.py)."""
-    step = result.readings_step_arcsec
-    if step is None:
-        return []
-    directions = np.array([s.direction for s in result.sets])
-    corrected = np.array([s.corrected_error_arcsec for s in result.sets])
-    repeat = pooled_repeatability(corrected, directions)
-    scatter = (float(np.sqrt(np.mean(repeat[0] ** 2))) if repeat is not None
-               else 0.0 if sets_alike(corrected, directions) else noise)
-    stated = metadata.item_resolution_in("arcsec") or 0.0
-    if not step_counts(step, scatter) or stated >= step:
-        return []
-    return [BudgetComponent(
-        STEP_INPUT, "B", "rectangular", step, 2.0 * math.sqrt(3.0), pair, math.inf,
-        message(QT_TR_NOOP("horizontal readings entered to {step}, a step not small against "
-                           "their scatter ({s}): rectangular, half-width {half}, in each of "
-                           "the two readings of a point's error"),
-                step=f"{step:g}\"", s=f"{scatter:.3g}\"", half=f"{0.5 * step:g}\""))]
+def _rounding_components(result: PolygonResult, metadata: CertificateMetadata, zero: int,
+                         n: int, share: ZeroFaceShare) -> list[BudgetComponent]:
+    """The rounding of the horizontal readings (models.polygon.rounding), each as two
+    inputs, as the error e_i = … + (a_i − a_z) + (x_i − x_z) takes it: the face's own reading,
+    one unknown per point, and the zero reading's, one unknown shared by every point (drawn
+    once per trial in the half range's Monte Carlo: it shifts the whole curve and leaves its
+    peak-to-peak as it is; drawn per point, √2 times, it widened the Monte Carlo's noise
+    range and pushed the decided value down — a reviewer's rig: 26 of 40 intervals covered
+    at 24 faces). Rectangular, half-width δ/2, not reduced by the sets (a rounding the sets
+    share). The item's resolution where stated (the encoder's display); the encoder's step
+    as typed where it counts and the resolution stated is finer; the autocollimator's where
+    it counts. U withheld where the readings show no error at all and no resolution is
+    stated (:attr:`HorizontalRounding.nothing_measured`)."""
+    rounding = result.rounding
+    stated = metadata.item_resolution_in("arcsec")
+    if rounding is not None and rounding.nothing_measured and not stated:
+        raise UncertaintyWithheld(message(QT_TR_NOOP(
+            "no uncertainty can be given: every encoder reading lies on its face's nominal "
+            "angle and the autocollimator read one value throughout, so every error is 0 as "
+            "typed whatever the encoder's true errors within its display's step; state the "
+            "item's resolution (item_resolution) in the certificate details")))
+    inputs: list[tuple[str, float, str]] = []
+    if stated:
+        inputs.append((ITEM_RESOLUTION, stated, message(
+            QT_TR_NOOP("resolution {r} of the item's indication"), r=f"{stated:g}\"")))
+    if rounding is not None:
+        for counts, step, what in ((rounding.encoder_counts and not (stated and stated >= (
+                rounding.encoder_step_arcsec or 0.0)), rounding.encoder_step_arcsec,
+                                    QT_TR_NOOP("encoder")),
+                                   (rounding.ac_counts, rounding.ac_step_arcsec,
+                                    QT_TR_NOOP("autocollimator"))):
+            if counts and step:
+                inputs.append((message(QT_TR_NOOP("{name} ({what})"), name=message(STEP_INPUT),
+                                       what=message(what)), step, message(QT_TR_NOOP(
+                    "the {what}'s readings entered to {step}, rounded alike from set to set or "
+                    "in no scatter the readings show: rectangular, half-width {half}"),
+                    what=message(what), step=f"{step:g}\"", half=f"{0.5 * step:g}\"")))
+    out = []
+    for name, width, note in inputs:
+        out.append(BudgetComponent(name, "B", "rectangular", width, 2.0 * math.sqrt(3.0),
+                                   _at_zero(zero, n, share.own), math.inf, note))
+        out.append(BudgetComponent(message(QT_TR_NOOP("{name}, at the zero face"),
+                                           name=message(name)),
+                                   "B", "rectangular", width, 2.0 * math.sqrt(3.0),
+                                   _at_zero(zero, n, share.zero), math.inf,
+                                   QT_TR_NOOP("the zero reading's, shared by every point"),
+                                   common=True))
+    return out
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
@@ -686,12 +700,55 @@ def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBud
                              budget.floor)
 
 
-def not_stated(result: PolygonResult) -> list[str]:
+UNRESOLVED = QT_TR_NOOP(
+    "half the peak-to-peak of the corrected error, withheld: the readings were entered to a "
+    "step of {step} that rounds alike from set to set, more than the measured curve spans "
+    "(peak-to-peak {ptp}); the readings do not resolve its shape, its faces' rounding errors "
+    "are not independent, and no interval can be drawn from them. A finer display, or the "
+    "autocollimator read where the shaft stops, resolves it")
+
+
+def unresolved_half_range(result: PolygonResult, probability: float,
+                          resolution: float | None = None) -> HalfRangeEstimate | None:
+    """The decided half range withheld where a rounding that the sets share (a step that
+    counts, models.polygon.rounding) is coarser than the measured curve's peak-to-peak:
+    the curve is then resolved in a level or two, neighbouring faces round alike, and the
+    Monte Carlo's independent rounding per face does not hold (the 3-D bench, a nulled
+    autocollimator, an encoder shown to 0.001° with errors of ±1.4″, one set each way:
+    51 of 60 intervals covered, every miss where the measured curve spanned less than a
+    step). ``resolution``: the item's stated (″), the encoder's step where its readings
+    lie on the nominal angles and show none. None where no such step counts or the curve
+    spans more."""
+    rounding = result.rounding
+    if rounding is None:
+        return None
+    steps = [step for counts, step in ((rounding.encoder_counts, rounding.encoder_step_arcsec),
+                                       (rounding.ac_counts, rounding.ac_step_arcsec),
+                                       (rounding.encoder_on_nominal, resolution))
+             if counts and step]
+    ptp = float(np.ptp(result.mean_corrected_arcsec))
+    if not steps or max(steps) <= ptp:
+        return None
+    return HalfRangeEstimate(
+        measured=0.5 * ptp, bias=math.nan, value=math.nan, u_upper=math.nan,
+        u_lower=math.nan, probability=probability, trials=0, seed=0,
+        method=message(UNRESOLVED, step=f"{max(steps):g}\"", ptp=f"{ptp:.2f}\""))
+
+
+def not_stated(result: PolygonResult, metadata: CertificateMetadata | None = None) -> list[str]:
     """The inputs the certificate says are not in U: the readings' scatter when no direction
-    was measured twice and there are no vertical readings (nothing in U covers it)."""
+    was measured twice and there are no vertical readings (nothing in U covers it); the
+    encoder's resolution where it was set to each nominal angle, no direction was read twice
+    and the details do not state it (where the shaft stopped within its display's step is
+    in each error and in nothing the readings show)."""
+    out = []
     if len(result.sets) == 1 and result.sets[0].tilt is None:
-        return [QT_TR_NOOP("repeatability of the readings")]
-    return []
+        out.append(QT_TR_NOOP("repeatability of the readings"))
+    rounding = result.rounding
+    if (rounding is not None and rounding.encoder_on_nominal and not rounding.repeated
+            and not (metadata is not None and metadata.item_resolution_in("arcsec"))):
+        out.append(QT_TR_NOOP("resolution of the encoder's display (item_resolution)"))
+    return out
 
 
 def polygon_tolerance_arcsec(result: PolygonResult, metadata: CertificateMetadata) -> float:
@@ -843,10 +900,12 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     ], QT_TR_NOOP("positions"), after=more_rows)
     decision = Decision(
         result.mean_corrected_arcsec,
+        estimate=unresolved_half_range(result, metadata.coverage_probability,
+                                       metadata.item_resolution_in("arcsec")),
         withheld="" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
         point_names=[message(QT_TR_NOOP("position {position}"), position=i)
                      for i in range(1, result.faces + 1)],
-        not_stated=not_stated(result),
+        not_stated=not_stated(result, metadata),
         # the curve judged named: the results table's mean over the sets (not one set's)
         what=(QT_TR_NOOP("corrected error (the results table's mean over the sets)")
               if len(result.sets) > 1 else QT_TR_NOOP("corrected error")))

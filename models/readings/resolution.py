@@ -41,7 +41,7 @@ def readings_step(values: np.ndarray) -> float | None:
         return None
     steps = np.abs(whole - whole[0]).astype(np.int64)
     g = int(np.gcd.reduce(steps))
-    return g * GRID if g else None
+    return g / round(1.0 / GRID) if g else None  # (g * GRID: 3.5999999999999996)
 
 
 def step_counts(step: float | None, pooled_s: float) -> bool:

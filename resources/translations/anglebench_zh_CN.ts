@@ -360,8 +360,33 @@
         <translation>面或读数</translation>
     </message>
     <message>
+        <source>no uncertainty can be given: every encoder reading lies on its face&apos;s nominal angle and the autocollimator read one value throughout, so every error is 0 as typed whatever the encoder&apos;s true errors within its display&apos;s step; state the item&apos;s resolution (item_resolution) in the certificate details</source>
+        <translation>无法给出不确定度：每个编码器读数都落在其面的标称角上，自准直仪始终读同一值，因此无论编码器在其显示步距内的真实误差如何，录入的每个误差都是 0；请在证书信息中给出被检件分辨力（item_resolution）</translation>
+    </message>
+    <message>
+        <source>{name} ({what})</source>
+        <translation>{name}（{what}）</translation>
+    </message>
+    <message>
+        <source>the {what}&apos;s readings entered to {step}, rounded alike from set to set or in no scatter the readings show: rectangular, half-width {half}</source>
+        <translation>{what}读数录入到 {step}，各测回舍入相同，或不出现在读数所显示的任何分散中：矩形分布，半宽 {half}</translation>
+    </message>
+    <message>
+        <source>the zero reading&apos;s, shared by every point</source>
+        <translation>零位读数的，为各点共有</translation>
+    </message>
+    <message>
         <source>Pyramidal correction (ψ, ω)</source>
         <translation>塔差修正（ψ, ω）</translation>
+    </message>
+    <message>
+        <source>half the peak-to-peak of the corrected error, withheld: the readings were entered to a step of {step} that rounds alike from set to set, more than the measured curve spans (peak-to-peak {ptp}); the readings do not resolve its shape, its faces&apos; rounding errors are not independent, and no interval can be drawn from them. A finer display, or the autocollimator read where the shaft stops, resolves it</source>
+        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
+        <translation>修正后误差峰峰值的一半，不予给出：读数录入到 {step} 的步距，各测回舍入相同，且大于实测曲线的跨度（峰峰值 {ptp}）；读数分辨不出曲线形状，各面的舍入误差并不独立，无法由其得出区间。更细的显示，或在轴停止处读取自准直仪，才能分辨</translation>
+    </message>
+    <message>
+        <source>resolution of the encoder&apos;s display (item_resolution)</source>
+        <translation>编码器显示的分辨力（item_resolution）</translation>
     </message>
     <message>
         <source>the certificate details give a tolerance of ±{tolerance_arcsec}&quot; but the workbench is set to grade {grade} (±{tol}&quot;): change the grade or clear the tolerance in the details</source>
@@ -4453,10 +4478,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>每个方向的各组在每个面上读数完全相同：无法由此得知其重复性（读数显示得比其分散更粗，或为复制），故不予评定；读数噪声取自竖直读数的拟合，或分析设置中给出的单次读数 σ，否则不给出 U。</translation>
     </message>
     <message>
-        <source>The horizontal readings were entered to a step of {step} and the sets scatter by less than half of it (s pooled {s}): a face&apos;s readings round alike from set to set, so their rounding is not averaged out and is an input of U of its own (rectangular, half-width {half}). A finer display, or the autocollimator read where the shaft stops, would show the scatter.</source>
-        <translation>水平读数录入到 {step} 的步距，而各测回的分散不到其一半（合并 s 为 {s}）：同一面的读数在各测回中舍入相同，其舍入不因平均而减小，作为 U 的一个独立输入量（矩形分布，半宽 {half}）。更细的显示，或在轴停止处读取自准直仪，才能显示出分散。</translation>
-    </message>
-    <message>
         <source>levelled set-up: the polygon&apos;s own term plus a roll of {roll} over the vertical span 2ψ; with the vertical along the polygon&apos;s axis {worst} worst case over the tilt direction, {seed} at ω = 90°</source>
         <translation>调平安置：多面棱体自身项加上滚转 {roll} 乘以竖直跨度 2ψ；竖直方向沿棱体轴线时按倾斜方向的最不利情况为 {worst}，ω = 90° 时为 {seed}</translation>
     </message>
@@ -4471,6 +4492,34 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>Closure drift spread linearly over each set and removed from the autocollimator readings.</source>
         <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
+    </message>
+    <message>
+        <source>Every encoder reading lies on its face&apos;s nominal angle and the autocollimator read one value throughout: every error is 0 as typed, whatever the encoder&apos;s true errors within its display&apos;s step. No uncertainty can be given unless the item&apos;s resolution is stated in the certificate details (item_resolution).</source>
+        <translation>每个编码器读数都落在其面的标称角上，自准直仪始终读同一值：无论编码器在其显示步距内的真实误差如何，录入的每个误差都是 0。除非在证书信息中给出被检件分辨力（item_resolution），否则无法给出不确定度。</translation>
+    </message>
+    <message>
+        <source>Every encoder reading lies on its face&apos;s nominal angle (the encoder set to each nominal): where the shaft stopped within its display&apos;s step is in each error but in no scatter the readings show, and no direction was read twice. State the item&apos;s resolution in the certificate details (item_resolution); until then it is named as not stated and no statement of conformity is made.</source>
+        <translation>每个编码器读数都落在其面的标称角上（编码器被置于各标称值）：轴在其显示步距内停在何处，含在每个误差中，却不出现在读数所显示的任何分散中，且没有方向被测量两次。请在证书信息中给出被检件分辨力（item_resolution）；在此之前，它被列为未给出，不作符合性声明。</translation>
+    </message>
+    <message>
+        <source>autocollimator</source>
+        <translation>自准直仪</translation>
+    </message>
+    <message>
+        <source>its readings at a face vary from set to set by {spread}, less than the step</source>
+        <translation>其在同一面上的读数在各测回间变化 {spread}，小于该步距</translation>
+    </message>
+    <message>
+        <source>no direction was read twice: the reading noise ({noise}, from the vertical readings) does not hold its rounding and is smaller than the step</source>
+        <translation>没有方向被测量两次：读数噪声（{noise}，由竖直读数得出）不包含其舍入，且小于该步距</translation>
+    </message>
+    <message>
+        <source>no direction was read twice, and the vertical readings&apos; noise does not hold it</source>
+        <translation>没有方向被测量两次，竖直读数的噪声也不包含它</translation>
+    </message>
+    <message>
+        <source>The {what}&apos;s readings were entered to a step of {step} and {why}: their rounding is not averaged out over the sets and is an input of U of its own (rectangular, half-width {half}).</source>
+        <translation>{what}读数录入到 {step} 的步距，且{why}：其舍入不因各测回平均而减小，作为 U 的一个独立输入量（矩形分布，半宽 {half}）。</translation>
     </message>
     <message>
         <source>{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})</source>
@@ -6581,12 +6630,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
-        <source>horizontal readings entered to {step}, a step not small against their scatter ({s}): rectangular, half-width {half}, in each of the two readings of a point&apos;s error</source>
-        <translation>水平读数录入到 {step}，该步距相对其分散（{s}）不算小：矩形分布，半宽 {half}，计入一点误差所依据的两个读数中的每一个</translation>
-    </message>
-    <message>
         <source>repeatability of the readings</source>
-        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
         <translation>读数重复性</translation>
     </message>
     <message>
