@@ -81,6 +81,10 @@ class Bench:
     # the encoder's reading with the shaft at 0 (None: drawn in 0 … 360° each run, so that
     # where a display's steps fall moves from run to run)
     encoder_zero_deg: float | None = 123.4
+    # the encoder's true error curve, times this (1: about ±1.7″)
+    error_scale: float = 1.0
+    # readings taken at each stop (the setting "readings per point"): each with its own noise
+    reads_per_stop: int = 1
 
     @property
     def theta_deg(self) -> np.ndarray:
@@ -88,7 +92,8 @@ class Bench:
 
     def encoder_error_arcsec(self, theta_deg) -> np.ndarray:
         t = np.radians(np.asarray(theta_deg, dtype=float))
-        return 1.2 * np.sin(t + 0.4) + 0.5 * np.sin(2.0 * t + 1.1) + 0.15 * np.sin(7.0 * t)
+        return self.error_scale * (1.2 * np.sin(t + 0.4) + 0.5 * np.sin(2.0 * t + 1.1)
+                                   + 0.15 * np.sin(7.0 * t))
 
     def truth_arcsec(self) -> np.ndarray:
         """The true error at faces 1…n against face 1 (the common zero)."""
@@ -169,11 +174,21 @@ class Bench:
                 if self.stop_at == "nulled":  # it shows its zero (where within, in the aim)
                     x = zero_x
                 y = np.arctan2(lu, ld) / ARCSEC + zero_y + rng.normal(0.0, self.sigma_arcsec)
-                a = (encoder_zero + turn + error / 3600.0) % 360.0
-                x, y = _shown(x, self.ac_step_arcsec), _shown(y, self.ac_step_arcsec)
-                a = _shown(a, self.encoder_step_deg)
-                rows.append(f"{face + 1},{a!r},{float(certificate[face])!r},{float(x)!r},"
-                            f"{float(y)!r},{s},{'+' if d > 0 else '-'}\n")
+                # where the face stands, without a reading's noise (read again: new noise)
+                x_seen = np.arctan2(lh, ld) / ARCSEC + offset + drift * j / n
+                y_seen = np.arctan2(lu, ld) / ARCSEC
+                for again in range(self.reads_per_stop):
+                    if again:  # the same stop read again: each reading's own noise
+                        error = (self.encoder_error_arcsec(face * step)
+                                 + rng.normal(0.0, self.encoder_sigma_arcsec))
+                        x = (zero_x if self.stop_at == "nulled" else
+                             zero_x + x_seen + rng.normal(0.0, self.sigma_arcsec))
+                        y = zero_y + y_seen + rng.normal(0.0, self.sigma_arcsec)
+                    a = (encoder_zero + turn + error / 3600.0) % 360.0
+                    x, y = _shown(x, self.ac_step_arcsec), _shown(y, self.ac_step_arcsec)
+                    a = _shown(a, self.encoder_step_deg)
+                    rows.append(f"{face + 1},{a!r},{float(certificate[face])!r},{float(x)!r},"
+                                f"{float(y)!r},{s},{'+' if d > 0 else '-'}\n")
             if self.drift != "per set":
                 offset += drift
         return rows

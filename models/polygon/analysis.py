@@ -448,6 +448,7 @@ def _reference_deviations(readings: PolygonSetReadings, faces: int) -> np.ndarra
 def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResult:
     s = _settings(settings)
     grade = s["grade"]
+    typed = parsed  # every reading as typed: the displays' steps (models.polygon.rounding)
     parsed, repeats = average_repeats(
         parsed, s["readings_per_point"], ("position", "set", "direction"),
         ("encoder_deg", "polygon_dev_arcsec", "ac_x_arcsec", "ac_y_arcsec"), angles=("encoder_deg",))
@@ -485,8 +486,11 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "be told from them (readings shown coarser than they scatter, or copied) and is "
             "not evaluated; the reading noise comes from the vertical readings' fits, or the "
             "σ of a reading stated in the settings, or U is withheld.")))
-    rounding = horizontal_rounding(sets, faces, counting, _fits_noise(results)
-                                   or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None)
+    rounding = horizontal_rounding(
+        sets, faces, counting,
+        _fits_noise(results) or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None,
+        None if repeats is None else tuple(np.asarray(typed[c], dtype=float) for c in (
+            "position", "encoder_deg", "ac_x_arcsec")))
     warnings += rounding_warnings(rounding)
     stats = error_stats(mean_corrected)
     tol = GRADE_ACCURACY_ARCSEC[grade]
@@ -870,6 +874,11 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         from models.polygon.report import GRADE_ACCURACY_ARCSEC
 
         return float(GRADE_ACCURACY_ARCSEC[result.grade])  # the one source: the grade
+
+    def uncertainty_array_names(self, result):
+        # where U is withheld each array's U is null beside it (it was left out)
+        return ["error_arcsec", "pyramidal_error_arcsec", "corrected_error_arcsec",
+                "mean_corrected_error_arcsec"]
 
     def uncertainty_budgets(self, result, metadata, settings=None):
         from models.polygon.report import polygon_json_budgets

@@ -15,15 +15,17 @@ readings show or an error they hide depends on how the shaft was stopped:
 
 So each column's step is an input of U of its own (rectangular, half-width δ/2) where the
 column's readings at a face vary from set to set by less than its step (a direction read
-twice shows that), or, with no direction read twice, for the encoder always: the reading
-noise then comes from the vertical readings' fits, which hold the autocollimator's rounding
-(its vertical display is the same) but never the encoder's. The encoder's step is found from
-its readings less each face's nominal angle (the face pitch, 360°/n, from the first
-reading), so that a display whose readings all lie a whole pitch apart is not taken for a
-step of 30°; a pitch that is not a whole number of micro-arcseconds (7, 11, 13 … faces)
-leaves the step unknown. Encoder readings that lie on the nominal angles at every face show
-no step at all: the encoder was set to each nominal, and where the operator stopped within
-its display's step is not in the readings.
+twice shows that), or, with no direction read twice, for the encoder where the reading
+noise is below its step: that noise comes from the vertical readings' fits, which hold the
+autocollimator's rounding (its vertical display is the same) but never the encoder's. The
+encoder's step is found from its readings less each face's nominal angle (the face pitch,
+360°/n, from the first reading), so that a display whose readings all lie a whole pitch
+apart is not taken for a step of 30°. Encoder readings that lie on the nominal angles at
+every face show no step at all: the encoder was set to each nominal, and where the operator
+stopped within its display's step is not in the readings. A pitch that is not a whole
+number of micro-arcseconds (7, 11, 13 … faces) takes the step from the readings' own
+differences (one above 60″ is the pitch's, not a display's) and cannot tell readings on
+the nominal.
 
 A reviewer's rig (numpy only, its own frame): a nulled autocollimator with the encoder
 shown to 0.001° (3.6″) covered 11–39 % of the faces' true errors before; a rough null read
@@ -68,31 +70,51 @@ class HorizontalRounding:
         return self.encoder_on_nominal and self.ac_alike
 
 
-def horizontal_rounding(sets, faces: int, counting: int,
-                        noise: float | None = None) -> HorizontalRounding:
+def horizontal_rounding(sets, faces: int, counting: int, noise: float | None = None,
+                        typed=None) -> HorizontalRounding:
     """The rounding of the encoder's and the autocollimator's horizontal readings of
     ``sets`` (PolygonSetReadings, faces numbered 1…``faces``, the encoder counting
     ``counting`` = ±1 with the face numbers). ``noise``: the reading noise the budget takes
     where no direction was read twice (the vertical fits', or the σ stated; None: not
     known): the encoder's step then counts where the noise is below it (a rounding of δ
     random from face to face adds δ²/12 to a variance the noise does not hold: at σ ≥ δ
-    under 4 % of U; a 0.01″ display of the sample's DMS readings is not worth a line)."""
-    pitch = _TURN / faces
+    under 4 % of U; a 0.01″ display of the sample's DMS readings is not worth a line).
+    ``typed``: (face numbers, encoder readings °, autocollimator readings ″) of every row as
+    typed, where ``sets`` holds each face's readings averaged (readings per point > 1): the
+    steps are the displays', found from these (averages of 3.6″ readings lie on a 0.9″
+    grid); the spreads from the averages."""
     first = sets[0]
     reference = float(first.encoder_deg[0]) * 3600.0
     start = int(first.positions[0])
     encoder, ac, positions, directions = [], [], [], []
     for one in sets:
-        a = np.asarray(one.encoder_deg, dtype=float) * 3600.0 - reference
-        a = a - counting * (np.asarray(one.positions, dtype=float) - start) * pitch
-        encoder.append((a + _HALF_TURN) % _TURN - _HALF_TURN)  # past 360°: the same face
+        encoder.append(_less_nominal(one.positions, one.encoder_deg, reference, start, faces,
+                                     counting))
         ac.append(np.asarray(one.ac_x_arcsec, dtype=float))
         positions.append(np.asarray(one.positions, dtype=int))
         directions.append(int(one.direction))
-    remainders, readings = np.concatenate(encoder), np.concatenate(ac)
-    encoder_step, ac_step = readings_step(remainders), readings_step(readings)
-    on_nominal = bool(np.all(np.abs(remainders) < 1e-6))
-    ac_alike = bool(np.ptp(readings[np.isfinite(readings)]) == 0.0) if readings.size else True
+    if typed is not None:
+        faces_typed, encoder_typed, ac_typed = (np.asarray(c, dtype=float) for c in typed)
+        remainders = _less_nominal(faces_typed, encoder_typed, reference, start, faces,
+                                   counting)
+        raw, readings = encoder_typed * 3600.0 - reference, ac_typed
+    else:
+        remainders, readings = np.concatenate(encoder), np.concatenate(ac)
+        raw = np.concatenate([np.asarray(s.encoder_deg, dtype=float) for s in sets]) * 3600.0
+        raw = raw - reference
+    on_grid = _TURN / faces * 1e6 == round(_TURN / faces * 1e6)
+    if on_grid:
+        encoder_step = readings_step(remainders)
+        on_nominal = bool(np.all(np.abs(remainders[np.isfinite(remainders)]) < 1e-6))
+    else:
+        # a pitch off the grid (7, 11, 13 … faces): the readings' own differences, where they
+        # show a display's step and not the pitch; readings on the nominal not told
+        encoder_step = readings_step(np.concatenate([[0.0], raw]))
+        encoder_step = encoder_step if encoder_step is not None and encoder_step <= 60.0 else None
+        on_nominal = False
+    ac_step = readings_step(readings)
+    finite = readings[np.isfinite(readings)]
+    ac_alike = bool(np.ptp(finite) == 0.0) if finite.size else True
     encoder_spread = _spread_at_a_face(encoder, positions, directions)
     ac_spread = _spread_at_a_face(ac, positions, directions)
     repeated = encoder_spread is not None
@@ -104,6 +126,15 @@ def horizontal_rounding(sets, faces: int, counting: int,
     return HorizontalRounding(encoder_step, ac_step, encoder_counts, ac_counts, on_nominal,
                               ac_alike, repeated, encoder_spread, ac_spread,
                               None if repeated else noise)
+
+
+def _less_nominal(positions, encoder_deg, reference: float, start: int, faces: int,
+                  counting: int) -> np.ndarray:
+    """Encoder readings (″) less the first's and each face's nominal angle from its face,
+    wrapped to ±180° (past 360° is the same face)."""
+    a = np.asarray(encoder_deg, dtype=float) * 3600.0 - reference
+    a = a - counting * (np.asarray(positions, dtype=float) - start) * (_TURN / faces)
+    return (a + _HALF_TURN) % _TURN - _HALF_TURN
 
 
 def _spread_at_a_face(values: list[np.ndarray], positions: list[np.ndarray],

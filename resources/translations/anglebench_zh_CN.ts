@@ -6630,6 +6630,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
+        <source>{quantity}: the Monte Carlo of every input but the readings&apos; rounding ({trials} trials, seed {seed}), its interval widened on each side by {bound}, the bound of that rounding (a rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; the zero reading&apos;s, shared by every face, not at all). Faces that round alike are not independent draws: taken as such, the Monte Carlo took a bias off the range that the rounding does not make (a reviewer&apos;s rig, 24 faces: 26 of 40 intervals covered; bounded: every one)</source>
+        <translation>{quantity}：对除读数舍入外的全部输入量作蒙特卡罗（{trials} 次试验，种子 {seed}），其区间两侧各加宽 {bound}，即该舍入的界限（各面舍入均在 ±δ/2 以内时，峰峰值的一半至多改变 δ/2；各面共有的零位读数的舍入则完全不影响）。舍入相同的各面不是独立抽样：若按独立处理，蒙特卡罗会从范围中扣除舍入并未造成的偏差（审查者的装置，24 面：40 个区间中 26 个覆盖；按界限处理：全部覆盖）</translation>
+    </message>
+    <message>
         <source>repeatability of the readings</source>
         <translation>读数重复性</translation>
     </message>
