@@ -753,41 +753,6 @@ def _one_set(budget: UncertaintyBudget, result: PolygonResult) -> UncertaintyBud
                              budget.floor)
 
 
-UNRESOLVED = QT_TR_NOOP(
-    "half the peak-to-peak of the corrected error, withheld: the readings were entered to a "
-    "step of {step} that rounds alike from set to set, more than the measured curve spans "
-    "(peak-to-peak {ptp}); the readings do not resolve its shape, its faces' rounding errors "
-    "are not independent, and no interval can be drawn from them. A finer display, or the "
-    "autocollimator read where the shaft stops, resolves it")
-
-
-def unresolved_half_range(result: PolygonResult, probability: float,
-                          resolution: float | None = None) -> HalfRangeEstimate | None:
-    """The decided half range withheld where a rounding that the sets share (a step that
-    counts, models.polygon.rounding) is coarser than the measured curve's peak-to-peak:
-    the curve is then resolved in a level or two, neighbouring faces round alike, and the
-    Monte Carlo's independent rounding per face does not hold (the 3-D bench, a nulled
-    autocollimator, an encoder shown to 0.001° with errors of ±1.4″, one set each way:
-    51 of 60 intervals covered, every miss where the measured curve spanned less than a
-    step). ``resolution``: the item's stated (″), the encoder's step where its readings
-    lie on the nominal angles and show none. None where no such step counts or the curve
-    spans more."""
-    rounding = result.rounding
-    if rounding is None:
-        return None
-    steps = [step for counts, step in ((rounding.encoder_counts, rounding.encoder_step_arcsec),
-                                       (rounding.ac_counts, rounding.ac_step_arcsec),
-                                       (rounding.encoder_on_nominal, resolution))
-             if counts and step]
-    ptp = float(np.ptp(result.mean_corrected_arcsec))
-    if not steps or max(steps) < ptp:
-        return None
-    return HalfRangeEstimate(
-        measured=0.5 * ptp, bias=math.nan, value=math.nan, u_upper=math.nan,
-        u_lower=math.nan, probability=probability, trials=0, seed=0,
-        method=message(UNRESOLVED, step=f"{max(steps):g}\"", ptp=f"{ptp:.2f}\""))
-
-
 def not_stated(result: PolygonResult, metadata: CertificateMetadata | None = None) -> list[str]:
     """The inputs the certificate says are not in U: the readings' scatter when no direction
     was measured twice and there are no vertical readings (nothing in U covers it); the
@@ -953,9 +918,7 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
     ], QT_TR_NOOP("positions"), after=more_rows)
     decision = Decision(
         result.mean_corrected_arcsec,
-        estimate=(unresolved_half_range(result, metadata.coverage_probability,
-                                        metadata.item_resolution_in("arcsec"))
-                  or rounding_bounded_half_range(result, metadata, settings)),
+        estimate=rounding_bounded_half_range(result, metadata, settings),
         withheld="" if result.valid else message(QT_TR_NOOP("the run is invalid (closure failed)")),
         point_names=[message(QT_TR_NOOP("position {position}"), position=i)
                      for i in range(1, result.faces + 1)],

@@ -380,11 +380,6 @@
         <translation>塔差修正（ψ, ω）</translation>
     </message>
     <message>
-        <source>half the peak-to-peak of the corrected error, withheld: the readings were entered to a step of {step} that rounds alike from set to set, more than the measured curve spans (peak-to-peak {ptp}); the readings do not resolve its shape, its faces&apos; rounding errors are not independent, and no interval can be drawn from them. A finer display, or the autocollimator read where the shaft stops, resolves it</source>
-        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
-        <translation>修正后误差峰峰值的一半，不予给出：读数录入到 {step} 的步距，各测回舍入相同，且大于实测曲线的跨度（峰峰值 {ptp}）；读数分辨不出曲线形状，各面的舍入误差并不独立，无法由其得出区间。更细的显示，或在轴停止处读取自准直仪，才能分辨</translation>
-    </message>
-    <message>
         <source>resolution of the encoder&apos;s display (item_resolution)</source>
         <translation>编码器显示的分辨力（item_resolution）</translation>
     </message>
@@ -6635,6 +6630,7 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     </message>
     <message>
         <source>repeatability of the readings</source>
+        <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
         <translation>读数重复性</translation>
     </message>
     <message>
