@@ -174,7 +174,7 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
             out["decided_quantity"] = {
                 "value": _measured_figure(kind, result, metadata),
                 "interval_low": None, "interval_high": None,
-                "coverage_probability": probability, "unit": unit,
+                "coverage_probability": None, "unit": unit,
                 "tolerance": _number(tolerance), "verdict": None,
                 "rule": metadata.decision_rule, "reason": why}
     else:  # the figure is always stated, even where the decision could not compute it

@@ -382,7 +382,7 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
         b.text(q, "name", label)
         if figure and u and header_k and u[1] == figure[1]:  # (a u is read only under a k)
             if rest[1:]:
-                b.rich(q, "description", " · ".join(rest[1:]), translated=False)
+                b.rich(q, "description", _Cells(rest[1:], " · "))
             b.real(q, figure[0], figure[1], u[0], float(header_k.group(1)), p)
         elif figure and not rest:
             b.real(q, figure[0], figure[1])

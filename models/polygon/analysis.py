@@ -30,6 +30,7 @@ from models.polygon.model import (
     sets_alike,
     split_sets,
     tilt_advice,
+    vertical_fits_noise,
     wrap_deg,
 )
 from models.polygon.plots import error_figure
@@ -488,7 +489,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
             "σ of a reading stated in the settings, or U is withheld.")))
     rounding = horizontal_rounding(
         sets, faces, counting,
-        _fits_noise(results) or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None,
+        _budget_noise(results, faces) or float(s.get("reading_noise_arcsec", 0.0) or 0.0) or None,
         None if repeats is None else tuple(np.asarray(typed[c], dtype=float) for c in (
             "position", "encoder_deg", "ac_x_arcsec")))
     warnings += rounding_warnings(rounding)
@@ -558,14 +559,12 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> PolygonResul
     )
 
 
-def _fits_noise(results) -> float | None:
-    """The reading noise the vertical readings' tilt fits show (their residuals pooled over
-    the sets, n − 3 degrees of freedom each); None without a fit that has any left."""
-    fits = [r.tilt for r in results if r.tilt is not None]
-    dof = sum(t.residuals_arcsec.size - 3 for t in fits)
-    if dof <= 0:
-        return None
-    return float(np.sqrt(sum(float(np.sum(t.residuals_arcsec ** 2)) for t in fits) / dof))
+def _budget_noise(results, faces: int) -> float | None:
+    """The reading noise the budget takes from the vertical fits (between the sets where it
+    can: a face's own pyramidal error is no noise; the rounding's decision and the budget
+    must judge one figure), None without one."""
+    fitted = vertical_fits_noise(results, faces)
+    return fitted[0] if fitted is not None and fitted[0] > 0 else None
 
 
 def rounding_warnings(rounding) -> list[str]:
@@ -578,14 +577,14 @@ def rounding_warnings(rounding) -> list[str]:
         out.append(message(QT_TR_NOOP(
             "Every encoder reading lies on its face's nominal angle and the autocollimator "
             "read one value throughout: every error is 0 as typed, whatever the encoder's true "
-            "errors within its display's step. No uncertainty can be given unless the item's "
-            "resolution is stated in the certificate details (item_resolution).")))
+            "errors within its display's step. No uncertainty can be given unless the "
+            "certificate details state the item's resolution (item_resolution).")))
     elif rounding.encoder_on_nominal and not rounding.repeated:
         out.append(message(QT_TR_NOOP(
             "Every encoder reading lies on its face's nominal angle (the encoder set to each "
             "nominal): where the shaft stopped within its display's step is in each error but "
-            "in no scatter the readings show, and no direction was read twice. State the item's "
-            "resolution in the certificate details (item_resolution); until then it is named "
+            "in no scatter the readings show, and no direction was read twice. Unless the "
+            "certificate details state the item's resolution (item_resolution), it is named "
             "as not stated and no statement of conformity is made.")))
     for counts, step, spread, what in (
             (rounding.encoder_counts, rounding.encoder_step_arcsec,
@@ -594,8 +593,8 @@ def rounding_warnings(rounding) -> list[str]:
              message(QT_TR_NOOP("autocollimator")))):
         if not counts:
             continue
-        why = (message(QT_TR_NOOP("its readings at a face vary from set to set by {spread}, "
-                                  "less than the step"), spread=f"{spread:.3g}\"")
+        why = (message(QT_TR_NOOP("its readings at a face scatter from set to set by less "
+                                  "than the step (s = {spread})"), spread=f"{spread:.3g}\"")
                if spread is not None else
                message(QT_TR_NOOP("no direction was read twice: the reading noise "
                                   "({noise}, from the vertical readings) does not hold its "

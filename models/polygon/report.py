@@ -81,11 +81,11 @@ from models.polygon import KEY, TITLE
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
-    TILT_FIT_UNKNOWNS,
     PolygonResult,
     allowed_tilt_arcsec,
     pooled_repeatability,
     pyramidal_correction_arcsec,
+    vertical_fits_noise,
 )
 from models.polygon.plots import corrected_with_uncertainty, error_figure, residual_figure
 from models.polygon.setup_statement import setup_statement
@@ -279,24 +279,9 @@ def _noise_components(result: PolygonResult, n: int, zero: int, stated_noise: fl
                                       "again"), note=note, n=result.repeats.n)
         evaluation = "A"
     else:
-        fits = [s.tilt for s in result.sets if s.tilt is not None]
-        residuals = [t.residuals_arcsec for t in fits]
-        between = len(fits) >= 2 and all(r.shape == (n,) for r in residuals)
-        if between:
-            # the sets' residuals face by face, about the face's mean over the sets: a face's
-            # own pyramidal error is in its vertical reading the same in every set (the
-            # polygon re-seated or not: the tilt is fitted set by set), and only the noise
-            # differs. About the fits alone, those errors were taken for noise: an audit's
-            # polygon with faces' pyramidal errors of 2″ and a reading noise of 0.03″, one
-            # set each way, got U 18 times too large and a decided half range of 0 … 0
-            stacked = np.array(residuals)
-            dof = (n - TILT_FIT_UNKNOWNS) * (len(fits) - 1)
-            scatter = float(np.sum((stacked - stacked.mean(axis=0)) ** 2))
-        else:
-            dof = sum(n - TILT_FIT_UNKNOWNS for _ in fits)  # a fitted tilt has n ≥ 4
-            scatter = sum(float(np.sum(r**2)) for r in residuals)
-        if dof > 0 and scatter > 0:
-            noise = float(np.sqrt(scatter / dof))
+        fitted = vertical_fits_noise(result.sets, n)
+        noise, dof, between = fitted if fitted is not None else (0.0, 0, False)
+        if dof > 0 and noise > 0:
             name = (QT_TR_NOOP("Autocollimator reading noise (mean of {sets} sets)")
                     if len(result.sets) > 1 else
                     QT_TR_NOOP("Autocollimator reading noise (mean of 1 set)"))
@@ -612,11 +597,11 @@ def _rounding_components(result: PolygonResult, metadata: CertificateMetadata, z
     for name, width, note, bounded in _rounding_inputs(result, stated):
         if bounded and not bounded_too:
             continue
-        out.append(BudgetComponent(name, "B", "rectangular", width, 2.0 * math.sqrt(3.0),
+        out.append(BudgetComponent(name, "B", "rectangular", 0.5 * width, math.sqrt(3.0),
                                    _at_zero(zero, n, share.own), math.inf, note))
         out.append(BudgetComponent(message(QT_TR_NOOP("{name}, at the zero face"),
                                            name=message(name)),
-                                   "B", "rectangular", width, 2.0 * math.sqrt(3.0),
+                                   "B", "rectangular", 0.5 * width, math.sqrt(3.0),
                                    _at_zero(zero, n, share.zero), math.inf,
                                    QT_TR_NOOP("the zero reading's, shared by every point"),
                                    common=True))
@@ -654,12 +639,11 @@ def _rounding_inputs(result: PolygonResult, stated: float | None
 
 ROUNDING_BOUNDED = QT_TR_NOOP(
     "{quantity}: the Monte Carlo of every input but the readings' rounding ({trials} trials, "
-    "seed {seed}), its interval widened on each side by {bound}, the bound of that rounding "
-    "(a rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; "
-    "the zero reading's, shared by every face, not at all). Faces that round alike are not "
-    "independent draws: taken as such, the Monte Carlo took a bias off the range that the "
-    "rounding does not make (a reviewer's rig, 24 faces: 26 of 40 intervals covered; bounded: "
-    "every one)")
+    "seed {seed}); that rounding, which neighbouring faces may share, is not drawn but "
+    "bounded: the interval is widened on each side by {bound}, half the sum of its steps (a "
+    "rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; the "
+    "zero reading's, shared by every face, not at all), so it covers with at least the "
+    "probability stated")
 
 
 def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMetadata,
@@ -681,7 +665,7 @@ def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMeta
     return dataclasses.replace(
         mc, u_upper=mc.u_upper + bound, u_lower=min(mc.u_lower + bound, mc.value),
         method=message(ROUNDING_BOUNDED, quantity=message(DECISION_QUANTITIES["half_range"]),
-                       trials=mc.trials, seed=str(mc.seed), bound=f"±{bound:.3g}\""))
+                       trials=mc.trials, seed=str(mc.seed), bound=f"{bound:.3g}\""))
 
 
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)

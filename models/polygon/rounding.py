@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from models.readings.resolution import readings_step
+from models.readings.resolution import readings_step, step_counts
 
 __all__ = ["HorizontalRounding", "horizontal_rounding"]
 
@@ -86,6 +86,11 @@ def horizontal_rounding(sets, faces: int, counting: int, noise: float | None = N
     first = sets[0]
     reference = float(first.encoder_deg[0]) * 3600.0
     start = int(first.positions[0])
+    if typed is not None:  # a reading as typed (the first set's first is an average)
+        faces_typed, encoder_typed = (np.asarray(c, dtype=float) for c in typed[:2])
+        at = np.flatnonzero(np.isfinite(faces_typed) & np.isfinite(encoder_typed))
+        if at.size:
+            reference, start = float(encoder_typed[at[0]]) * 3600.0, int(faces_typed[at[0]])
     encoder, ac, positions, directions = [], [], [], []
     for one in sets:
         encoder.append(_less_nominal(one.positions, one.encoder_deg, reference, start, faces,
@@ -119,10 +124,9 @@ def horizontal_rounding(sets, faces: int, counting: int, noise: float | None = N
     ac_spread = _spread_at_a_face(ac, positions, directions)
     repeated = encoder_spread is not None
     encoder_counts = encoder_step is not None and (
-        encoder_spread < encoder_step if encoder_spread is not None
-        else noise is None or noise < encoder_step)
-    ac_counts = (ac_step is not None and repeated and ac_spread is not None
-                 and ac_spread < ac_step)
+        step_counts(encoder_step, encoder_spread) if encoder_spread is not None
+        else noise is None or step_counts(encoder_step, noise))
+    ac_counts = repeated and ac_spread is not None and step_counts(ac_step, ac_spread)
     return HorizontalRounding(encoder_step, ac_step, encoder_counts, ac_counts, on_nominal,
                               ac_alike, repeated, encoder_spread, ac_spread,
                               None if repeated else noise)

@@ -376,6 +376,10 @@
         <translation>零位读数的，为各点共有</translation>
     </message>
     <message>
+        <source>{quantity}: the Monte Carlo of every input but the readings&apos; rounding ({trials} trials, seed {seed}); that rounding, which neighbouring faces may share, is not drawn but bounded: the interval is widened on each side by {bound}, half the sum of its steps (a rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; the zero reading&apos;s, shared by every face, not at all), so it covers with at least the probability stated</source>
+        <translation>{quantity}：对除读数舍入外的全部输入量作蒙特卡罗（{trials} 次试验，种子 {seed}）；相邻各面可能共有的该舍入不抽样，而按界限处理：区间两侧各加宽 {bound}，即其各步距之和的一半（各面舍入均在 ±δ/2 以内时，峰峰值的一半至多改变 δ/2；各面共有的零位读数的舍入则完全不影响），因此其包含概率不低于所述概率</translation>
+    </message>
+    <message>
         <source>Pyramidal correction (ψ, ω)</source>
         <translation>塔差修正（ψ, ω）</translation>
     </message>
@@ -4489,20 +4493,8 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>闭合漂移已在各组内线性分配并从自准直仪读数中扣除。</translation>
     </message>
     <message>
-        <source>Every encoder reading lies on its face&apos;s nominal angle and the autocollimator read one value throughout: every error is 0 as typed, whatever the encoder&apos;s true errors within its display&apos;s step. No uncertainty can be given unless the item&apos;s resolution is stated in the certificate details (item_resolution).</source>
-        <translation>每个编码器读数都落在其面的标称角上，自准直仪始终读同一值：无论编码器在其显示步距内的真实误差如何，录入的每个误差都是 0。除非在证书信息中给出被检件分辨力（item_resolution），否则无法给出不确定度。</translation>
-    </message>
-    <message>
-        <source>Every encoder reading lies on its face&apos;s nominal angle (the encoder set to each nominal): where the shaft stopped within its display&apos;s step is in each error but in no scatter the readings show, and no direction was read twice. State the item&apos;s resolution in the certificate details (item_resolution); until then it is named as not stated and no statement of conformity is made.</source>
-        <translation>每个编码器读数都落在其面的标称角上（编码器被置于各标称值）：轴在其显示步距内停在何处，含在每个误差中，却不出现在读数所显示的任何分散中，且没有方向被测量两次。请在证书信息中给出被检件分辨力（item_resolution）；在此之前，它被列为未给出，不作符合性声明。</translation>
-    </message>
-    <message>
         <source>autocollimator</source>
         <translation>自准直仪</translation>
-    </message>
-    <message>
-        <source>its readings at a face vary from set to set by {spread}, less than the step</source>
-        <translation>其在同一面上的读数在各测回间变化 {spread}，小于该步距</translation>
     </message>
     <message>
         <source>no direction was read twice: the reading noise ({noise}, from the vertical readings) does not hold its rounding and is smaller than the step</source>
@@ -6625,10 +6617,6 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>塔差拟合的 ψ、ω 协方差经该安置方式的精确修正传播</translation>
     </message>
     <message>
-        <source>{quantity}: the Monte Carlo of every input but the readings&apos; rounding ({trials} trials, seed {seed}), its interval widened on each side by {bound}, the bound of that rounding (a rounding within ±δ/2 at every face moves half the peak-to-peak by δ/2 at the most; the zero reading&apos;s, shared by every face, not at all). Faces that round alike are not independent draws: taken as such, the Monte Carlo took a bias off the range that the rounding does not make (a reviewer&apos;s rig, 24 faces: 26 of 40 intervals covered; bounded: every one)</source>
-        <translation>{quantity}：对除读数舍入外的全部输入量作蒙特卡罗（{trials} 次试验，种子 {seed}），其区间两侧各加宽 {bound}，即该舍入的界限（各面舍入均在 ±δ/2 以内时，峰峰值的一半至多改变 δ/2；各面共有的零位读数的舍入则完全不影响）。舍入相同的各面不是独立抽样：若按独立处理，蒙特卡罗会从范围中扣除舍入并未造成的偏差（审查者的装置，24 面：40 个区间中 26 个覆盖；按界限处理：全部覆盖）</translation>
-    </message>
-    <message>
         <source>repeatability of the readings</source>
         <extracomment>the inputs of the mean over the sets that one set carries √m-fold (their templates)</extracomment>
         <translation>读数重复性</translation>
@@ -6972,6 +6960,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>levelled set-up</source>
         <translation>调平安置</translation>
+    </message>
+    <message>
+        <source>Every encoder reading lies on its face&apos;s nominal angle and the autocollimator read one value throughout: every error is 0 as typed, whatever the encoder&apos;s true errors within its display&apos;s step. No uncertainty can be given unless the certificate details state the item&apos;s resolution (item_resolution).</source>
+        <translation>每个编码器读数都落在其面的标称角上，自准直仪始终读同一值：无论编码器在其显示步距内的真实误差如何，录入的每个误差都是 0。除非证书信息给出被检件分辨力（item_resolution），否则无法给出不确定度。</translation>
+    </message>
+    <message>
+        <source>Every encoder reading lies on its face&apos;s nominal angle (the encoder set to each nominal): where the shaft stopped within its display&apos;s step is in each error but in no scatter the readings show, and no direction was read twice. Unless the certificate details state the item&apos;s resolution (item_resolution), it is named as not stated and no statement of conformity is made.</source>
+        <translation>每个编码器读数都落在其面的标称角上（编码器被置于各标称值）：轴在其显示步距内停在何处，含在每个误差中，却不出现在读数所显示的任何分散中，且没有方向被测量两次。除非证书信息给出被检件分辨力（item_resolution），否则它被列为未给出，不作符合性声明。</translation>
+    </message>
+    <message>
+        <source>its readings at a face scatter from set to set by less than the step (s = {spread})</source>
+        <translation>其在同一面上的读数在各测回间的分散小于该步距（s = {spread}）</translation>
     </message>
     <message>
         <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets&apos; error minus reverse sets&apos;)</source>

@@ -253,3 +253,38 @@ def test_readings_averaged_at_each_stop_keep_the_displays_step(tmp_path, capsys)
         h, t = _covered(data, truth)
         hits, total = hits + h, total + t
     assert hits >= 0.93 * total, (hits, total)
+
+
+def test_the_steps_of_averaged_readings_are_the_typed_ones_whatever_the_first_average():
+    """Readings per point: the first face's three readings typed 28″, 27″, 27″ (their mean
+    off the grid) — the steps still come from the rows as typed (a reviewer: the average
+    taken as the reference left every remainder off the grid, no step, nothing said)."""
+    sec = 1.0 / 3600.0
+    typed_faces = np.array([1, 1, 1, 2, 2, 2, 3, 3, 3], dtype=float)
+    typed_encoder = np.array([10 + 28 * sec, 10 + 27 * sec, 10 + 27 * sec,
+                              130 + 27 * sec, 130 + 27 * sec, 130 + 27 * sec,
+                              250 + 26 * sec, 250 + 26 * sec, 250 + 26 * sec])
+    # (a DMS cell is read as degrees + seconds / 3600: whole seconds on the arcsecond grid)
+    averaged = [_set([typed_encoder[:3].mean(), typed_encoder[3:6].mean(),
+                      typed_encoder[6:].mean()], [5.0, 5.0, 5.0])]
+    r = horizontal_rounding(averaged, 3, 1, None,
+                            (typed_faces, typed_encoder, np.full(9, 5.0)))
+    assert r.encoder_step_arcsec == pytest.approx(1.0)
+
+
+def test_a_faces_own_pyramidal_error_does_not_hide_the_encoders_step(tmp_path, capsys):
+    """Faces' own pyramidal errors of 2″ (the same in every set), nulled, the encoder shown
+    to 0.0002° (0.72″), one set each way: the noise the step is judged against is the
+    budget's (between the sets, face by face: 0.05″), not the fits' raw residuals (2″,
+    which dropped the step: 11 of 23 faces covered, a "fail" stated on 1.50 … 1.60″ against
+    a true 1.44″ — a reviewer)."""
+    bench = Bench(**QUIET, stop_at="nulled", ac_step_arcsec=0.1, encoder_step_deg=0.0002,
+                  face_pyramidal_sd_arcsec=2.0)
+    truth = bench.truth_arcsec()
+    hits = total = 0
+    for seed in range(8):
+        data = _analyse(tmp_path, capsys, bench, 500 + seed, sets=ONE_EACH_WAY)
+        assert any("step of 0.72\"" in w for w in data["warnings"]), data["warnings"]
+        h, t = _covered(data, truth)
+        hits, total = hits + h, total + t
+    assert hits >= 0.93 * total, (hits, total)
