@@ -91,7 +91,12 @@ def test_auto_take_two_readings_per_face_traced_to_the_frames_and_in_the_budget(
         # before the link reads its first, or while a link is retried under load)
         at = [k for k in range(previous_at + 1, len(sent) - len(stored) + 1)
               if np.array_equal(sent[k:k + len(stored)], stored)]
-        assert at, f"take of row {row}: its frames are not a run of the frames sent"
+        # (it failed 2 of 3 whole-suite fresh runs at row 14 on 2026-12-05, never alone: say
+        # what was stored and what was sent about there, so that a failing run shows why)
+        assert at, (f"take of row {row}: its frames are not a run of the frames sent; stored "
+                    f"{stored.tolist()} (frames {first}…{last} of {len(session['frames'])}), "
+                    f"sent after the last take's run {sent[previous_at + 1:previous_at + 13].tolist()}"
+                    f" ({len(sent)} sent)")
         previous_at = at[0]
         mean = stored.mean(axis=0)
         means.append(mean)
