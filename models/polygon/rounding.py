@@ -83,14 +83,16 @@ def horizontal_rounding(sets, faces: int, counting: int, noise: float | None = N
     typed, where ``sets`` holds each face's readings averaged (readings per point > 1): the
     steps are the displays', found from these (averages of 3.6″ readings lie on a 0.9″
     grid); the spreads from the averages."""
-    first = sets[0]
-    reference = float(first.encoder_deg[0]) * 3600.0
-    start = int(first.positions[0])
-    if typed is not None:  # a reading as typed (the first set's first is an average)
-        faces_typed, encoder_typed = (np.asarray(c, dtype=float) for c in typed[:2])
-        at = np.flatnonzero(np.isfinite(faces_typed) & np.isfinite(encoder_typed))
-        if at.size:
-            reference, start = float(encoder_typed[at[0]]) * 3600.0, int(faces_typed[at[0]])
+    if typed is not None:  # the rows as typed (the sets hold averages)
+        faces_all, encoder_all, readings = (np.asarray(c, dtype=float) for c in typed)
+    else:
+        faces_all = np.concatenate([np.asarray(s.positions, dtype=float) for s in sets])
+        encoder_all = np.concatenate([np.asarray(s.encoder_deg, dtype=float) for s in sets])
+        readings = np.concatenate([np.asarray(s.ac_x_arcsec, dtype=float) for s in sets])
+    # the reference: the first reading as typed (an average is off the display's grid)
+    at = np.flatnonzero(np.isfinite(faces_all) & np.isfinite(encoder_all))
+    reference = float(encoder_all[at[0]] if at.size else sets[0].encoder_deg[0]) * 3600.0
+    start = int(faces_all[at[0]] if at.size else sets[0].positions[0])
     encoder, ac, positions, directions = [], [], [], []
     for one in sets:
         encoder.append(_less_nominal(one.positions, one.encoder_deg, reference, start, faces,
@@ -98,23 +100,14 @@ def horizontal_rounding(sets, faces: int, counting: int, noise: float | None = N
         ac.append(np.asarray(one.ac_x_arcsec, dtype=float))
         positions.append(np.asarray(one.positions, dtype=int))
         directions.append(int(one.direction))
-    if typed is not None:
-        faces_typed, encoder_typed, ac_typed = (np.asarray(c, dtype=float) for c in typed)
-        remainders = _less_nominal(faces_typed, encoder_typed, reference, start, faces,
-                                   counting)
-        raw, readings = encoder_typed * 3600.0 - reference, ac_typed
-    else:
-        remainders, readings = np.concatenate(encoder), np.concatenate(ac)
-        raw = np.concatenate([np.asarray(s.encoder_deg, dtype=float) for s in sets]) * 3600.0
-        raw = raw - reference
-    on_grid = _TURN / faces * 1e6 == round(_TURN / faces * 1e6)
-    if on_grid:
+    if _TURN / faces * 1e6 == round(_TURN / faces * 1e6):  # the pitch on the grid
+        remainders = _less_nominal(faces_all, encoder_all, reference, start, faces, counting)
         encoder_step = readings_step(remainders)
         on_nominal = bool(np.all(np.abs(remainders[np.isfinite(remainders)]) < 1e-6))
     else:
         # a pitch off the grid (7, 11, 13 … faces): the readings' own differences, where they
         # show a display's step and not the pitch; readings on the nominal not told
-        encoder_step = readings_step(np.concatenate([[0.0], raw]))
+        encoder_step = readings_step(np.concatenate([[0.0], encoder_all * 3600.0 - reference]))
         encoder_step = encoder_step if encoder_step is not None and encoder_step <= 60.0 else None
         on_nominal = False
     ac_step = readings_step(readings)
