@@ -319,6 +319,8 @@ def run_capture(argv: list[str]) -> int:
                     break
                 say(message(QT_TR_NOOP("anglebench capture: {reason}; reconnecting"),
                             reason=event.message))
+                if gate is not None:
+                    gate.restart()  # a reading never bridges the frames the link lost
                 continue
             unit = [event.unit] if args.instrument == "readout" else []
             if gate is None:

@@ -1016,6 +1016,8 @@ class CapturePanel(QDockWidget):
                                     else tr("{reason} (reconnecting)").format(reason=reason))
                 link.status.setStyleSheet("color: #b00020;")
                 link.mark_lost(True)
+                if first and self.gate is not None:
+                    self.gate.restart()  # a take never bridges the frames the link lost
                 ended = ended or event.final
                 continue
             link.received += 1

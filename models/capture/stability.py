@@ -11,6 +11,10 @@ After a take the gate waits for the output to leave the window around the value 
 took (the operator turns to the next position) before it can take again: a set of n
 positions gives n readings, not n copies of the first. ``retake=True`` takes again at
 once (n readings of one position, each from fresh frames).
+
+When the link is lost and comes back (:meth:`restart`) the dwell starts again from the
+frames after it: a reading is never the mean of frames from both sides of a gap in
+which the instrument was not heard.
 """
 
 from __future__ import annotations
@@ -59,6 +63,12 @@ class StabilityGate:
         if not self._frames:
             return "settling", 0.0
         return "settling", min(1.0, max(0.0, (time_s - self._frames[0][0]) / self.dwell_s))
+
+    def restart(self) -> None:
+        """Forget the frames of the dwell in progress (the link was lost: the next reading
+        comes from frames after it). A position just taken stays taken: the same position
+        after a reconnection is not taken twice."""
+        self._frames.clear()
 
     def feed(self, time_s: float, values) -> StableReading | None:
         """One frame; the reading when this frame completes a stable dwell."""

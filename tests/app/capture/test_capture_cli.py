@@ -50,6 +50,24 @@ def test_stability_gated_readings_of_a_set_of_positions(tmp_path):
         assert abs(x - tx) < 0.05 and abs(y - ty) < 0.05
 
 
+@pytest.mark.slow
+def test_a_stable_reading_never_bridges_a_lost_link(tmp_path):
+    """The link is lost 0.2 s into a dwell of 0.5 s (0.4 s of silence): the reading is taken
+    0.5 s after the frames come back, from them only (it was taken with the first frame
+    after the gap, from the frames before it)."""
+    out, raw = tmp_path / "one.csv", tmp_path / "raw.csv"
+    with AutocollimatorSimulator("pty", faults=("disconnect",), disconnect_after=50, gap_s=0.4,
+                                 positions=[(4.0, 1.0)]) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "1", "--stable", "0.3",
+                     "--dwell", "0.5", "--out", str(out), "--raw", str(raw), *FAST]) == 0
+    assert sim.cuts == 1
+    taken_at = float(rows_of(out)[1][0])
+    times = sorted(float(r[0]) for r in rows_of(raw)[1:])
+    gaps = [b - a for a, b in zip(times, times[1:], strict=False)]
+    back = times[gaps.index(max(gaps)) + 1]  # the first frame after the silence
+    assert max(gaps) > 0.2 and taken_at >= back + 0.5 - 1e-6, (taken_at, back)
+
+
 def test_theodolite_over_tcp_and_a_disconnect_mid_set(tmp_path, capsys):
     out = tmp_path / "theo.csv"
     positions = [(30.0 * i, 90.0 + i / 100) for i in range(1, 5)]

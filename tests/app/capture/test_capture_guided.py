@@ -202,6 +202,34 @@ def test_a_disconnect_mid_set_names_the_port_and_the_set_goes_on(window, qtbot, 
     assert [model.sheet.text(r, 0) for r in range(len(positions))] == ["1", "2", "3", "4", "5"]
 
 
+def test_a_take_never_bridges_a_lost_link(window, qtbot):
+    """The link is lost 0.2 s into a dwell of 0.5 s (the instrument silent for 0.4 s): the
+    reading taken is the mean of frames after the reconnection only (it was the mean of
+    the frames before the gap and the first one after it)."""
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.3)
+    panel.dwell_box.setValue(0.5)
+    with AutocollimatorSimulator("pty", faults=("disconnect",), disconnect_after=50,
+                                 gap_s=0.4, positions=[(4.0, 1.0)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: len(panel.taken) >= 1, timeout=20000)
+        panel.disconnect_instrument()
+    assert sim.cuts == 1 and panel.links[0].last_fault  # the link was lost, and said so
+    session = panel.raw_sessions("polygon")[-1]
+    (row, first, last), = session["takes"]
+    times = np.array([f[0] for f in session["frames"]])
+    gap = int(np.argmax(np.diff(times)))  # the last frame before the silence
+    assert times[gap + 1] - times[gap] > FAST["silence_s"]
+    assert first > gap, (first, gap, last)  # every frame of the take after the gap
+    assert times[last] - times[first] >= 0.5 - 1e-6  # and they cover the dwell
+
+
 def test_line_noise_never_reaches_a_cell(window, qtbot):
     presenter = _show(window, "polygon")
     model = presenter.table_model

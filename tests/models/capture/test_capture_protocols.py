@@ -247,6 +247,21 @@ def test_after_a_take_the_next_needs_a_new_position_unless_retake():
     assert sum(gate.feed(t, v) is not None for t, v in frames) == 5  # frames 0-3, 4-7, …
 
 
+def test_after_a_restart_the_dwell_is_of_frames_after_it_and_a_taken_position_stays_taken():
+    gate = StabilityGate(window=0.5, dwell_s=0.5)
+    # 0.3 s of a quiet dwell, the link lost, frames again from 0.7 s
+    assert all(gate.feed(0.1 * i, [2.0]) is None for i in range(4))
+    gate.restart()
+    assert gate.progress(0.7) == ("settling", 0.0)
+    after = [gate.feed(0.7 + 0.1 * i, [2.0 + 0.01 * i]) for i in range(6)]
+    assert after[:5] == [None] * 5  # without the restart, 0.7 s took from frames 0.0–0.3
+    assert after[5].frames == 6 and after[5].mean == pytest.approx((2.025,))
+    # taken: the same position after another restart is not taken again
+    gate.restart()
+    assert all(gate.feed(1.5 + 0.1 * i, [2.0]) is None for i in range(10))
+    assert gate.progress(2.4) == ("taken", 0.0)
+
+
 def test_the_gate_refuses_a_window_or_dwell_of_zero():
     with pytest.raises(ValueError):
         StabilityGate(0, 1)
