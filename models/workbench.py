@@ -285,6 +285,12 @@ class IssuesCertificates(ABC, Generic[ResultT]):
         ``settings`` ``result`` was analysed with (None: the defaults)."""
         return {}
 
+    def inputs_not_stated(self, result: ResultT, metadata: CertificateMetadata) -> list[str]:
+        """The inputs the certificate names as not stated, so not in U (untranslated): the
+        JSON lists them (``uncertainty_inputs_not_stated``), and no statement of conformity
+        is made while one is. None by default."""
+        return []
+
     def decided_errors(self, result: ResultT, metadata: CertificateMetadata) -> Any:
         """The error curve the statement of conformity is made on (the array the
         certificate passes to models.uncertainty.conformity.decide_conformity, in the

@@ -9,6 +9,8 @@ the conformity decision is made on — ``value``, ``interval_low``, ``interval_h
 ``coverage_probability``, ``unit``, ``verdict`` (null when no statement of conformity may
 be made, with the ``reason``), ``rule`` — always with numbers where the readings give them
 (a withheld interval: both ends and its ``coverage_probability`` null).
+``uncertainty_inputs_not_stated`` lists the inputs the certificate names as not stated, so
+not in U (empty when U holds every input; no statement of conformity while one is).
 
 Each workbench says which budget belongs to which array
 (:meth:`models.workbench.IssuesCertificates.uncertainty_budgets`); this module writes them.
@@ -161,6 +163,10 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
             why = str(reason_of(exc))
             conformity, tolerance = _interval_despite(kind, result, metadata, settings)
     out = uncertainty_json(budgets, probability, conformity, tolerance, withheld)
+    # the inputs the certificate names as not stated: U does not hold them (the list empty
+    # when U is complete), so a lab's system can tell an incomplete U from a complete one
+    out["uncertainty_inputs_not_stated"] = [str(name) for name in
+                                            kind.inputs_not_stated(result, metadata)]
     if why and "decided_quantity" in out:  # the certificate refused: no statement, its reason
         out["decided_quantity"].update(verdict=None, probability_conforming=None,
                                        decision_risk=None, reason=why)

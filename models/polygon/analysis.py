@@ -879,6 +879,11 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return ["error_arcsec", "pyramidal_error_arcsec", "corrected_error_arcsec",
                 "mean_corrected_error_arcsec"]
 
+    def inputs_not_stated(self, result, metadata):
+        from models.polygon.report import not_stated
+
+        return not_stated(result, metadata)
+
     def uncertainty_budgets(self, result, metadata, settings=None):
         from models.polygon.report import polygon_json_budgets
 

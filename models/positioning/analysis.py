@@ -640,6 +640,11 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     def uncertainty_array_names(self, result):
         return [f"per_target/mean_{name}" for name, _, _ in result.directions_present()]
 
+    def inputs_not_stated(self, result, metadata):
+        from models.positioning.report import not_stated
+
+        return not_stated(result)
+
     def uncertainty_budgets(self, result, metadata, settings=None):
         # the budget's points: every target of each direction measured, direction after
         # direction (as the certificate's table); U of the mean deviation per_target.mean_*

@@ -78,6 +78,11 @@ def test_every_error_array_has_its_u_and_k(kind, capsys, samples_dir, tmp_path):
         factors = np.broadcast_to(np.asarray(k, dtype=float), u.shape)
         assert np.all((factors >= 1.9) & (factors < 15)), path
         assert np.all(u[~zero] > 0)
+    # U's inputs not stated, by name (the positioning sample states no misalignment,
+    # resolution or temperature; the others' details state every input they use)
+    assert data["uncertainty_inputs_not_stated"] == (
+        ["Misalignment of the reference", "Resolution of the reference", "Temperature"]
+        if kind == "positioning" else [])
     # the existing keys keep their meaning: cross-calibration's U arrays stay, equal
     if kind == "crosscal":
         assert data["encoder_error_U_arcsec"] == pytest.approx(
@@ -131,6 +136,20 @@ def test_incomplete_u_gives_numbers_and_no_verdict(capsys, samples_dir, tmp_path
     # no statement, so no probability of conformity or risk resting on the incomplete U
     assert decided["probability_conforming"] is None and decided["decision_risk"] is None
     assert decided["interval_low"] < decided["interval_high"]
+
+
+def test_inputs_stated_leave_none_unstated(capsys, samples_dir, tmp_path):
+    """The positioning sample with its misalignment, resolution and temperature stated: the
+    JSON names no input as not stated."""
+    name, _ = SAMPLES["positioning"]
+    path = tmp_path / "meta.json"
+    path.write_text(json.dumps(_details(samples_dir, "positioning")), encoding="utf-8")
+    assert main(["analyze", "positioning", str(samples_dir / name), "--json", "--metadata",
+                 str(path), "--misalignment-u", "0.2", "--reference-resolution", "0.1",
+                 "--temperature-u", "0.3"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["uncertainty_inputs_not_stated"] == []
+    assert "not stated" not in (data["decided_quantity"].get("reason") or "")
 
 
 def test_details_the_settings_contradict_still_give_the_interval(capsys, samples_dir, tmp_path):

@@ -141,11 +141,15 @@ def test_an_encoder_set_to_each_nominal_once_each_way_names_its_resolution(tmp_p
     data = _analyse(tmp_path, capsys, bench, 3, sets=ONE_EACH_WAY)
     assert data["decided_quantity"]["verdict"] is None
     assert "resolution of the encoder's display" in data["decided_quantity"]["reason"]
+    # and the JSON says U lacks it, beside the U it gives
+    assert data["uncertainty_inputs_not_stated"] == [
+        "resolution of the encoder's display (item_resolution)"]
     hits = total = 0
     for seed in range(12):
         stated = _analyse(tmp_path, capsys, bench, seed, {"item_resolution": 0.0001,
                                                           "item_resolution_unit": "deg"},
                           sets=ONE_EACH_WAY)
+        assert stated["uncertainty_inputs_not_stated"] == []
         h, t = _covered(stated, truth)
         hits, total = hits + h, total + t
     assert hits >= 0.93 * total, (hits, total)
