@@ -66,6 +66,13 @@ class Instrument:
     #: the instrument's range, per value: (lowest, highest) or None (any finite value); a
     #: frame outside it is refused, not taken (a setting: ``--range`` on the command line)
     limits: tuple[tuple[float, float] | None, ...] = ()
+    #: whether the end of a line, its start lost (a stream joined while a line was on its
+    #: way), can pass for a reading: a readout's "+105.00012 deg" joined after "+10" reads
+    #: 5.00012 deg, a signal sample "0.0641 0.4964" joined after "0.06" reads 41 V. The
+    #: first line of a connection is then kept in the raw trace, not read. An instrument
+    #: whose lines carry a fixed header (the autocollimator's fields, GeoCOM's "%R1P") refuses
+    #: such an end by itself
+    tail_parses: bool = True
 
     def check_range(self, values: tuple[float, ...]) -> None:
         """FrameError when a value is not finite or outside the instrument's range."""
@@ -110,7 +117,8 @@ class Autocollimator(Instrument):
             raise ValueError(f"mode must be one of {', '.join(CAPTURE_MODES)}")
         super().__init__(("ac_x_arcsec", "ac_y_arcsec"), start=command("stream"),
                          stop=command("stop"), poll=command("single"), mode=mode,
-                         limits=((-AUTOCOLLIMATOR_RANGE_ARCSEC, AUTOCOLLIMATOR_RANGE_ARCSEC),) * 2)
+                         limits=((-AUTOCOLLIMATOR_RANGE_ARCSEC, AUTOCOLLIMATOR_RANGE_ARCSEC),) * 2,
+                         tail_parses=False)
 
     def values(self, line: bytes):
         frame = parse_autocollimator_line(line)

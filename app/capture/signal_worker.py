@@ -16,6 +16,7 @@ A fault (the port cannot be opened, the link dropped, no sample for ``silence_s`
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import queue
 import threading
 import time
@@ -124,6 +125,7 @@ class SignalStreamWorker(LinkThread):
         got = 0
         last_good = time.monotonic()
         heard = False
+        joined = False  # whether the connection's first line has come
         try:
             while not self._stop.is_set():
                 data = self._read(link)
@@ -132,6 +134,17 @@ class SignalStreamWorker(LinkThread):
                 lines = framer.feed(data)
                 if lines:
                     parsed = self.parser.parse_lines(lines)
+                    if not joined:
+                        # the connection's first line may be the rest of a sample begun
+                        # before it ("41 0.4964" of "0.0641 0.4964"): kept, not a sample
+                        joined = True
+                        if parsed.used[0]:
+                            parsed = dataclasses.replace(
+                                parsed, u_sin=parsed.u_sin[1:], u_cos=parsed.u_cos[1:],
+                                used=np.concatenate([[False], parsed.used[1:]]),
+                                refused=parsed.refused + 1,
+                                reasons=["the connection's first line (it may be the rest of "
+                                         "a sample begun before it)", *parsed.reasons])
                     block = SampleBlock(self.lines, now - self._t0, lines, parsed.used,
                                         parsed.u_sin, parsed.u_cos, parsed.refused,
                                         parsed.reasons)

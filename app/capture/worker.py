@@ -126,6 +126,11 @@ class CaptureWorker(LinkThread):
         self.requests = 0
         self.timeouts = 0
         self.stale_at_connect = 0
+        #: requests numbered over the worker's whole life, not per connection: a late reply to
+        #: the last connection's request 1 would otherwise match this one's request 1
+        self._transactions = 0
+        #: whether a connection of this worker has read a streamed frame
+        self._streamed = False
         #: the instrument did not stream when asked to and is read by single-shot requests
         self.polling = False
         self._open = opener
@@ -196,15 +201,17 @@ class CaptureWorker(LinkThread):
             return link.read(READ_BLOCK)
         return link.read(link.in_waiting or 1)
 
-    def _waiting_at_connect(self, link) -> list[bytes]:
+    def _waiting_at_connect(self, link, framer: LineFramer) -> tuple[list[bytes], bool]:
         """A serial port's bytes received before this session asked for anything (old frames
-        in the driver's buffer): read, not discarded, so the raw trace keeps them. A socket
-        has none from before its connection: its first bytes are read as they come."""
+        in the driver's buffer): read, not discarded, so the raw trace keeps them; and
+        whether they end inside a line (its start stays in ``framer``: the rest arrives
+        with the session's first bytes, and that line is an old one, not a reply — a
+        readout's "+105.00012 deg" whose "+10" was waiting became a reading of 5.00012). A
+        socket has none from before its connection: its first bytes are read as they come."""
         if isinstance(link, TcpLink):
-            return []
-        framer = LineFramer()
+            return [], False
         data = link.read(link.in_waiting) if link.in_waiting else b""
-        return framer.feed(data + b"\n") if data else []
+        return framer.feed(data), bool(data) and not data.endswith((b"\r", b"\n"))
 
     def _no_reading_message(self, heard_bytes: bool, last_refusal: str, timed_out: bool):
         seconds = f"{self.silence_s:g}"
@@ -241,7 +248,7 @@ class CaptureWorker(LinkThread):
         heard_bytes = False
         last_refusal = ""
         start = last_good = time.monotonic()
-        transactions = 0
+        transactions = self._transactions
         in_flight: float | None = None  # when the request in flight was sent
         heard_since_request = False
         asked_at = -1e9
@@ -250,24 +257,37 @@ class CaptureWorker(LinkThread):
         polling = instrument.request is None and instrument.poll is not None and (
             instrument.mode == "poll" or self.polling)
         try:
-            for line in self._waiting_at_connect(link):
+            waiting, begun = self._waiting_at_connect(link, framer)
+            for line in waiting:
                 self._keep(time.monotonic() - self._t0, line, False)
                 self.stale_at_connect += 1
+            # the first line of a connection may be the rest of a line the instrument began
+            # before it: a line waiting half-read at the connection, or a stream joined while
+            # a frame was on its way (a serial port or a network bridge alike). It is kept in
+            # the raw trace, not read, where such a rest could pass for a reading
+            # (Instrument.tail_parses). An instrument that is asked starts no line unasked,
+            # unless one was waiting.
+            partial_first = begun or (instrument.request is None and not polling
+                                      and instrument.tail_parses)
             if instrument.start and not polling:
                 link.write(instrument.start)
             while not self._stop.is_set():
                 now = time.monotonic()
                 if (not polling and instrument.mode == "auto" and instrument.poll is not None
-                        and instrument.request is None and lines == 0
+                        and instrument.request is None and lines == 0 and not self._streamed
                         and now - start > min(instrument.stream_wait_s, self.silence_s / 2)):
-                    # no frame since the stream was asked for: the instrument answers single shots
+                    # no frame since the stream was asked for: the instrument answers single
+                    # shots (not one that has streamed on an earlier connection: it is silent
+                    # for another reason, and polled for good it stalled an auto-take)
                     polling = self.polling = True
+                    partial_first = begun  # its replies follow requests
                     if instrument.stop:
                         link.write(instrument.stop)
                 ask = instrument.poll if polling else instrument.request_bytes(transactions + 1)
                 if ask is not None and in_flight is None and (not polling
                                                               or now - asked_at >= self.poll_interval_s):
                     transactions += 1
+                    self._transactions = transactions
                     link.write(ask)
                     self.requests += 1
                     in_flight = asked_at = now
@@ -279,6 +299,11 @@ class CaptureWorker(LinkThread):
                 now = time.monotonic()
                 for line in framer.feed(data):
                     lines += 1
+                    if partial_first:
+                        partial_first = False
+                        self._keep(now - self._t0, line, False)
+                        self.stale_at_connect += 1
+                        continue
                     if ask is not None:
                         trid = instrument.reply_transaction(line)
                         stale = ""
@@ -308,6 +333,8 @@ class CaptureWorker(LinkThread):
                         continue
                     got += 1
                     last_good = now
+                    if ask is None:
+                        self._streamed = True
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line, index))
                 waiting = in_flight is not None and now - in_flight <= self.reply_timeout_s
                 timed_out = (in_flight is not None and not waiting)
