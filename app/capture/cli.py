@@ -46,7 +46,7 @@ from models.capture.journal import (
     read_journal,
 )
 from models.capture.line_readout import DEFAULT_PATTERN
-from models.capture.stability import StabilityGate
+from models.capture.stability import StabilityGate, UnwrappedAngles
 from models.messages import QT_TR_NOOP, joined, message, reason_of, rendered
 from models.project.atomic_write import write_text_atomic
 from models.project.output_guard import OutputRefused, check_outputs, register_files
@@ -129,11 +129,6 @@ def _raw_text_of(frames: list[tuple[str, str, str]]) -> str:
     writer.writerow(("time_s", "reading", "line"))
     writer.writerows(frames)
     return buffer.getvalue()
-
-
-def _wrapped(difference: float, scale: float) -> float:
-    """An angle's difference (degrees) to ±180° when ``scale`` says the values are angles."""
-    return (difference + 180.0) % 360.0 - 180.0 if scale != 1.0 else difference
 
 
 def _partial_path(out: str) -> Path:
@@ -279,10 +274,10 @@ def run_capture(argv: list[str]) -> int:
         return 1
     gate = StabilityGate(args.stable, args.dwell) if args.stable else None
     # the gate's window is in arcseconds for angles in degrees; a theodolite's angles go to
-    # the gate as their difference from the first frame's, wrapped to ±180°, so a position
-    # at 0°/360° settles (and averages) where it is
+    # the gate as continuous offsets from the first frame's (UnwrappedAngles), so a position
+    # at 0°/360°, or 180° from the first frame, settles (and averages) where it is
     scale = 3600.0 if args.instrument == "theodolite" else 1.0
-    origin: tuple[float, ...] | None = None
+    unwrapped = UnwrappedAngles() if scale != 1.0 else None
     rows: list[list[object]] = []
     previous = _handle(_stop_on)
     worker = CaptureWorker(args.port, instrument, args.baud, silence_s=args.silence,
@@ -326,13 +321,12 @@ def run_capture(argv: list[str]) -> int:
             if gate is None:
                 take([repr(round(event.time_s, 6)), *map(repr, event.values), *unit])
                 continue
-            origin = origin or (event.values if scale != 1.0 else (0.0,) * len(event.values))
-            taken = gate.feed(event.time_s, [_wrapped(v - o, scale) * scale
-                                             for v, o in zip(event.values, origin, strict=True)])
+            offsets = (unwrapped.offsets(event.values) * scale if unwrapped is not None
+                       else event.values)
+            taken = gate.feed(event.time_s, offsets)
             if taken is not None:
-                means = [o + float(v) / scale for v, o in zip(taken.mean, origin, strict=True)]
-                if scale != 1.0:
-                    means = [m % 360.0 for m in means]
+                means = (unwrapped.angles([m / scale for m in taken.mean])
+                         if unwrapped is not None else tuple(float(m) for m in taken.mean))
                 take([repr(round(taken.time_s, 6)), *map(repr, means), *unit])
     except KeyboardInterrupt:
         failure = message(QT_TR_NOOP("{port}: interrupted"), port=args.port)

@@ -87,7 +87,7 @@ from app.capture.instruments import INSTRUMENTS
 from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation
 from models.capture.raw_record import frame_text
-from models.capture.stability import StabilityGate
+from models.capture.stability import StabilityGate, UnwrappedAngles
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
     cell_step,
@@ -517,7 +517,7 @@ class CapturePanel(QDockWidget):
         #: finished sessions per workbench (stored form)
         self.sessions: dict[str, list[dict]] = {}
         self.gate: StabilityGate | None = None
-        self._origin: tuple[float, ...] | None = None
+        self._origin: UnwrappedAngles | None = None
         self.next_reading = None  # the workbench's NextReading for the row a take goes to
         self._guide_due = 0.0
         #: rows filled by Take reading or auto-take: (workbench, row, values of the first
@@ -818,23 +818,27 @@ class CapturePanel(QDockWidget):
         gate, scale = self.gate, self._scale
         if gate is None:
             return
-        # angles in degrees go to the gate as their difference from the first frame's,
-        # wrapped to ±180°, so a position at 0°/360° settles (and averages) where it is
-        if self._origin is None or len(self._origin) != len(reading.values):
-            self._origin = reading.values if scale != 1.0 else (0.0,) * len(reading.values)
-        offsets = [v - o for v, o in zip(reading.values, self._origin, strict=True)]
-        if scale != 1.0:
-            offsets = [(d + 180.0) % 360.0 - 180.0 for d in offsets]
+        # angles in degrees go to the gate as continuous offsets from the first frame's
+        # (models.capture.stability.UnwrappedAngles: 0°/360° and the first frame's ±180°
+        # settle where they are)
+        angles = scale != 1.0
+        if angles:
+            if self._origin is None:
+                self._origin = UnwrappedAngles()
+            offsets = self._origin.offsets(reading.values)
+        else:
+            offsets = np.asarray(reading.values, dtype=float)
         step = self.next_reading
         gate.retake = bool(step is not None and step.reading < step.of)
-        taken = gate.feed(reading.time_s, [d * scale for d in offsets])
+        taken = gate.feed(reading.time_s, offsets * scale, tag=reading.frame)
         if taken is None:
             return
-        means = tuple(o + float(m) / scale for m, o in zip(taken.mean, self._origin, strict=True))
-        if scale != 1.0:
-            means = tuple(m % 360.0 for m in means)
-        indices = [f for _, _, f in self.frames]
-        first = indices[-taken.frames] if taken.frames <= len(indices) else reading.frame
+        means = (self._origin.angles(np.asarray(taken.mean) / scale) if angles
+                 else tuple(float(m) for m in taken.mean))
+        # the reading's frames from its first to this one (the gate keeps the first's index:
+        # counting back through the frames kept named one frame for a dwell longer than they
+        # hold)
+        first = taken.first_tag if taken.first_tag is not None else reading.frame
         self.take_reading(means, (first, reading.frame))
 
     def _show_gate(self) -> None:

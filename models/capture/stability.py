@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["StabilityGate", "StableReading"]
+__all__ = ["StabilityGate", "StableReading", "UnwrappedAngles"]
 
 #: times are sums of floats: a dwell of 0.3 s from 2.0 s ends at 2.3 s, not 2.2999999…
 _EPS = 1e-9
@@ -36,6 +36,8 @@ class StableReading:
     mean: tuple[float, ...]
     std: tuple[float, ...]
     frames: int
+    #: the ``tag`` fed with the first frame of the reading (the raw frame's index), or None
+    first_tag: object = None
 
 
 class StabilityGate:
@@ -43,14 +45,14 @@ class StabilityGate:
         if not (window > 0 and dwell_s > 0):
             raise ValueError("the window and the dwell time must be greater than 0")
         self.window, self.dwell_s, self.retake = window, dwell_s, retake
-        self._frames: deque[tuple[float, np.ndarray]] = deque()
+        self._frames: deque[tuple[float, np.ndarray, object]] = deque()
         self._taken: np.ndarray | None = None
 
     def spread(self) -> np.ndarray | None:
         """Largest minus smallest per axis over the frames kept (None before any)."""
         if not self._frames:
             return None
-        values = np.array([v for _, v in self._frames])
+        values = np.array([v for _, v, _ in self._frames])
         return values.max(axis=0) - values.min(axis=0)
 
     def progress(self, time_s: float) -> tuple[str, float]:
@@ -70,17 +72,18 @@ class StabilityGate:
         after a reconnection is not taken twice."""
         self._frames.clear()
 
-    def feed(self, time_s: float, values) -> StableReading | None:
-        """One frame; the reading when this frame completes a stable dwell."""
+    def feed(self, time_s: float, values, tag: object = None) -> StableReading | None:
+        """One frame (``tag``: what names it, e.g. its index in the raw record; the reading
+        carries its first frame's); the reading when this frame completes a stable dwell."""
         value = np.atleast_1d(np.asarray(values, dtype=float))
         if self._taken is not None:
             if np.all(np.abs(value - self._taken) <= self.window):
                 return None  # still at the position just taken
             self._taken = None
             self._frames.clear()
-        self._frames.append((time_s, value))
+        self._frames.append((time_s, value, tag))
         # keep the newest frames within the window of one another; older ones reset the dwell
-        values = np.array([v for _, v in self._frames])
+        values = np.array([v for _, v, _ in self._frames])
         while len(self._frames) > 1 and np.any(values.max(axis=0) - values.min(axis=0)
                                                > self.window):
             self._frames.popleft()
@@ -93,8 +96,37 @@ class StabilityGate:
             return None
         reading = StableReading(time_s, tuple(values.mean(axis=0)),
                                 tuple(values.std(axis=0, ddof=1) if len(values) > 1
-                                      else np.zeros(values.shape[1])), len(values))
+                                      else np.zeros(values.shape[1])), len(values),
+                                self._frames[0][2])
         self._frames.clear()
         if not self.retake:
             self._taken = values.mean(axis=0)
         return reading
+
+
+class UnwrappedAngles:
+    """Angles in degrees as continuous offsets from the first frame's, each frame's
+    difference from the frame before it taken to ±180°: a position at 0°/360° settles and
+    averages where it is, and so does one 180° from the first frame (a theodolite's face II
+    of its first target, whose offsets from a fixed origin jumped between +180° and −180°
+    and never settled)."""
+
+    def __init__(self) -> None:
+        self.origin: np.ndarray | None = None
+        self._last = np.zeros(0)
+        self._offsets = np.zeros(0)
+
+    def offsets(self, degrees) -> np.ndarray:
+        """The frame's offsets (degrees) from the first frame, continuous from frame to frame."""
+        value = np.atleast_1d(np.asarray(degrees, dtype=float))
+        if self.origin is None or self.origin.shape != value.shape:
+            self.origin, self._last, self._offsets = value, value, np.zeros_like(value)
+        else:
+            self._offsets = self._offsets + (value - self._last + 180.0) % 360.0 - 180.0
+            self._last = value
+        return self._offsets.copy()
+
+    def angles(self, offsets) -> tuple[float, ...]:
+        """Offsets (e.g. a reading's mean) back to angles in [0°, 360°)."""
+        assert self.origin is not None
+        return tuple(float(a) % 360.0 for a in self.origin + np.asarray(offsets, dtype=float))

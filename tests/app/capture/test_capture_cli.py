@@ -168,6 +168,23 @@ def test_a_theodolite_settled_across_zero_azimuth_reads_where_it_is(tmp_path):
     assert sim.sent and any(h > 180 for h, _ in sim.sent if h) and any(h < 180 for h, _ in sim.sent)
 
 
+@pytest.mark.slow
+def test_a_theodolite_in_face_two_of_its_first_target_settles(tmp_path):
+    """A target read in face I (Hz 10°, V 90°), then in face II (Hz 190°, V 270°) with 0.3"
+    noise: face II is 180° from the first frame, whose offsets jumped between +180° and
+    −180° and never settled (1 of 2 readings before the timeout)."""
+    out = tmp_path / "faces.csv"
+    with TheodoliteSimulator("pty", positions=[(10.0, 90.0), (190.0, 270.0)], hold_s=1.5,
+                             sigma=0.3) as sim:
+        assert main(["capture", "theodolite", sim.port, "--readings", "2", "--stable", "5",
+                     "--dwell", "0.3", "--timeout", "8", "--out", str(out), *FAST]) == 0
+    (hz1, v1), (hz2, v2) = [tuple(float(x) for x in r[1:]) for r in rows_of(out)[1:]]
+    assert abs(hz1 - 10.0) * 3600 < 1 and abs(v1 - 90.0) * 3600 < 1
+    assert abs(hz2 - 190.0) * 3600 < 1 and abs(v2 - 270.0) * 3600 < 1
+    assert any(abs(h - 190.0) * 3600 < 2 and h < 190.0 for h, _ in sim.sent if h) and \
+        any(h > 190.0 for h, _ in sim.sent if h)  # its frames fell both sides of 190°
+
+
 def test_the_raw_record_traces_every_reading_to_the_instruments_line(tmp_path):
     out, raw = tmp_path / "ac.csv", tmp_path / "ac.raw.csv"
     with AutocollimatorSimulator("pty", faults=("invalid_axes",), positions=[(4.0, -2.5)],

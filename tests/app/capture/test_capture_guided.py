@@ -163,6 +163,33 @@ def test_guided_theodolite_says_theta_and_fills_it(window, qtbot):
     assert panel.guide.text() == "Next: θ = 16°"
 
 
+def test_auto_take_settles_in_face_two_of_the_first_target(window, qtbot):
+    """Face I of a target (Hz 10°), then face II (Hz 190°, V 270°) with 0.3" noise: 180° from
+    the first frame, where offsets from a fixed origin jumped between ±180° and the panel
+    said "settling, 0 % of the dwell" for ever."""
+    presenter = _show(window, "theodolite")
+    model = presenter.table_model
+    model.replace_all([["10", "", "", "", ""], ["190", "", "", "", ""]], "two faces")
+    presenter.view.table.setCurrentIndex(model.index(0, 1))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(5.0)
+    panel.dwell_box.setValue(0.3)
+    with TheodoliteSimulator("pty", positions=[(10.0, 90.0), (190.0, 270.0)], hold_s=1.5,
+                             sigma=0.3) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: len(panel.taken) >= 2, timeout=15000)
+        panel.disconnect_instrument()
+    session = panel.raw_sessions("theodolite")[-1]
+    hz = [float(model.sheet.text(r, 1)) for r in range(2)]
+    assert hz == pytest.approx([10.0, 190.0], abs=1 / 3600)
+    (_, first, last) = session["takes"][1]
+    frames = [[float(v) for v in f[1].split(":")[1].split(",")[1:3]] for f in
+              session["frames"][first:last + 1]]
+    # the cell is the frames' mean, to the capture's rounding (0.01" by default)
+    assert np.degrees([f[0] for f in frames]).mean() == pytest.approx(hz[1], abs=0.01 / 3600)
+
+
 # ---------------------------------------------------------------- faults during a set
 
 @pytest.mark.parametrize("transport", ["pty", "tcp"])

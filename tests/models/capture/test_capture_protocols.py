@@ -23,7 +23,7 @@ from models.capture.errors import FrameError
 from models.capture.framing import LineFramer
 from models.capture.geocom import GET_ANGLE1, GET_ANGLE5, angles_of, parse_geocom_reply, request
 from models.capture.line_readout import LineReadout
-from models.capture.stability import StabilityGate
+from models.capture.stability import StabilityGate, UnwrappedAngles
 
 # ---------------------------------------------------------------- framing
 
@@ -260,6 +260,31 @@ def test_after_a_restart_the_dwell_is_of_frames_after_it_and_a_taken_position_st
     gate.restart()
     assert all(gate.feed(1.5 + 0.1 * i, [2.0]) is None for i in range(10))
     assert gate.progress(2.4) == ("taken", 0.0)
+
+
+def test_a_reading_names_its_first_frame_however_long_the_dwell():
+    gate = StabilityGate(window=0.5, dwell_s=30.0)
+    frames = [gate.feed(0.001 * i, [1.0], tag=1000 + i) for i in range(30_001)]
+    reading = frames[-1]
+    assert frames[:-1] == [None] * 30_000 and reading.frames == 30_001
+    assert reading.first_tag == 1000  # the panel counted back through 8,192 frames kept
+
+
+@pytest.mark.parametrize("first", [10.0, 0.0, 359.9999])
+def test_angles_unwrap_from_frame_to_frame_at_zero_and_at_the_opposite_side(first):
+    """A theodolite's face II of its first target is 180° from the first frame: offsets from a
+    fixed origin jumped between +180° and −180°; from frame to frame they are continuous."""
+    unwrapped = UnwrappedAngles()
+    assert unwrapped.offsets([first, 90.0]) == pytest.approx([0.0, 0.0])
+    turned = (first + 180.0) % 360.0
+    noise = [0.0001, -0.0001, 0.00005, -0.00015]  # ±0.5" about the opposite side
+    offsets = [unwrapped.offsets([(turned + n) % 360.0, 270.0]) for n in noise]
+    assert np.ptp([o[0] for o in offsets]) == pytest.approx(0.00025, abs=1e-9)
+    mean = np.mean(offsets, axis=0)
+    hz, v = unwrapped.angles(mean)
+    assert (hz - turned + 180.0) % 360.0 - 180.0 == pytest.approx(np.mean(noise), abs=1e-9)
+    assert v == pytest.approx(270.0)
+    assert 0.0 <= hz < 360.0
 
 
 def test_the_gate_refuses_a_window_or_dwell_of_zero():
