@@ -113,7 +113,8 @@ def _parser(words) -> argparse.ArgumentParser:
                    help=words(QT_TR_NOOP("give up after this long (default: never)")))
     p.add_argument("--raw", metavar="RAW.csv", help=words(QT_TR_NOOP(
         "also write every line the instrument sent, time-stamped, and whether it became a "
-        "reading (the readings' trace to the instrument's own output)")))
+        "reading (with --stable: whether it is in a reading's dwell; the readings' trace to "
+        "the instrument's own output)")))
     p.add_argument("--range", type=_positive(words), metavar="LIMIT", help=words(QT_TR_NOOP(
         "the instrument's range: a frame with a value beyond ±LIMIT (arcsec for the "
         "autocollimator, the readout's own unit) is refused, not taken (default: "
@@ -279,6 +280,8 @@ def run_capture(argv: list[str]) -> int:
     scale = 3600.0 if args.instrument == "theodolite" else 1.0
     unwrapped = UnwrappedAngles() if scale != 1.0 else None
     rows: list[list[object]] = []
+    #: with --stable, each reading's first and last line (their indices since the start)
+    dwells: list[tuple[int, int]] = []
     previous = _handle(_stop_on)
     worker = CaptureWorker(args.port, instrument, args.baud, silence_s=args.silence,
                            retries=max(args.retries, 0), reply_timeout_s=args.reply_timeout,
@@ -323,8 +326,9 @@ def run_capture(argv: list[str]) -> int:
                 continue
             offsets = (unwrapped.offsets(event.values) * scale if unwrapped is not None
                        else event.values)
-            taken = gate.feed(event.time_s, offsets)
+            taken = gate.feed(event.time_s, offsets, tag=event.frame)
             if taken is not None:
+                dwells.append((int(taken.first_tag), int(event.frame)))
                 means = (unwrapped.angles([m / scale for m in taken.mean])
                          if unwrapped is not None else tuple(float(m) for m in taken.mean))
                 take([repr(round(taken.time_s, 6)), *map(repr, means), *unit])
@@ -344,21 +348,32 @@ def run_capture(argv: list[str]) -> int:
             with contextlib.suppress(OSError, ValueError):
                 journal_frames()
             journal.close()
-            status = _finish(args, columns, rows, worker, journal, failure, say)
+            status = _finish(args, columns, rows, worker, journal, failure, say,
+                             dwells if gate is not None else None)
         finally:
             for sig, handler in previous.items():
                 signal.signal(sig, handler)
     return status
 
 
-def _finish(args, columns, rows, worker, journal, failure, say) -> int:
-    """The readings (and the raw lines) written; the journal removed once they are."""
+def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> int:
+    """The readings (and the raw lines) written; the journal removed once they are. With
+    ``dwells`` (--stable: each reading's first and last line), a raw line is marked as
+    having become a reading only within a reading's dwell: a stream's other frames did not."""
     target = Path(args.out) if failure is None else _partial_path(args.out)
     try:  # the journal is what was taken (a signal may have come between it and memory)
         kept = read_journal(journal.path)
         rows, frames = kept.readings, kept.frames
+        start = 0  # the journal holds every line since the start
     except (OSError, ValueError):  # the journal unreadable: what memory holds
         frames = [(repr(round(t, 6)), str(int(u)), frame_text(line)) for t, line, u in worker.raw]
+        start = worker.raw_first
+    if dwells is not None:
+        inside = set()
+        for first, last in dwells:
+            inside.update(range(first, last + 1))
+        frames = [(t, used if i in inside else "0", text)
+                  for i, (t, used, text) in enumerate(frames, start)]
     writes = [(target, _csv_text(columns, rows))] if rows else []
     raw_target = None
     if args.raw:  # written even when no reading was taken: then it is all there is

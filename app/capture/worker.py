@@ -213,9 +213,12 @@ class CaptureWorker(LinkThread):
         data = link.read(link.in_waiting) if link.in_waiting else b""
         return framer.feed(data), bool(data) and not data.endswith((b"\r", b"\n"))
 
-    def _no_reading_message(self, heard_bytes: bool, last_refusal: str, timed_out: bool):
+    def _no_reading_message(self, heard_bytes: bool, last_refusal: str, timed_out: bool,
+                            answered: bool = False):
+        """Why no reading came: of the bytes since the last reading (``heard_bytes``,
+        ``last_refusal``); ``answered``: the connection read a reading before."""
         seconds = f"{self.silence_s:g}"
-        if not heard_bytes:
+        if not heard_bytes and not (timed_out and answered):
             return message(QT_TR_NOOP("{port}: no answer for {seconds} s"), port=self.port,
                            seconds=seconds)
         if timed_out:
@@ -316,6 +319,7 @@ class CaptureWorker(LinkThread):
                             self._keep(now - self._t0, line, False)
                             self.refused += 1
                             self._refusal(stale)
+                            last_refusal = stale  # said if no reading follows (not "a wrong baud")
                             continue
                     in_flight = None
                     try:
@@ -333,6 +337,9 @@ class CaptureWorker(LinkThread):
                         continue
                     got += 1
                     last_good = now
+                    # what a silence after this says is of the bytes since it: a link that read
+                    # well and went quiet is "no answer", not "only unreadable bytes"
+                    heard_bytes, last_refusal = False, ""
                     if ask is None:
                         self._streamed = True
                     self.events.put(Reading(now - self._t0, parsed[0], parsed[1], line, index))
@@ -340,7 +347,8 @@ class CaptureWorker(LinkThread):
                 timed_out = (in_flight is not None and not waiting)
                 if timed_out and not heard_since_request:
                     self.timeouts += 1
-                    raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, True), got)
+                    raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, True,
+                                                            got > 0), got)
                 if now - last_good > self.silence_s and not waiting:
                     raise LinkLost(self._no_reading_message(heard_bytes, last_refusal, False), got)
         except (serial.SerialException, OSError) as exc:

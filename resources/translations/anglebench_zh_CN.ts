@@ -8001,8 +8001,8 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>autocollimator（ELCOMAT 类自准直仪）、theodolite（Leica GeoCOM 经纬仪）、readout（每个读数一行的数显表）或 signals（sin/cos 数据流，每行 u_sin,u_cos）</translation>
     </message>
     <message>
-        <source>also write every line the instrument sent, time-stamped, and whether it became a reading (the readings&apos; trace to the instrument&apos;s own output)</source>
-        <translation>另写出仪器发来的每一行，带时间戳，并注明是否成为读数（读数可追溯到仪器自身的输出）</translation>
+        <source>also write every line the instrument sent, time-stamped, and whether it became a reading (with --stable: whether it is in a reading&apos;s dwell; the readings&apos; trace to the instrument&apos;s own output)</source>
+        <translation>同时写出仪器发送的每一行，带时间戳，并注明它是否成为读数（带 --stable 时：它是否在某个读数的驻留时间内；读数可追溯到仪器本身的输出）</translation>
     </message>
     <message>
         <source>the instrument&apos;s range: a frame with a value beyond ±LIMIT (arcsec for the autocollimator, the readout&apos;s own unit) is refused, not taken (default: autocollimator ±3600, readout any)</source>
@@ -8051,6 +8051,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: {n} of {total} readings in {seconds} s</source>
+        <extracomment>with --stable, each reading&apos;s first and last line (their indices since the start)</extracomment>
         <translation>{port}：{seconds} 秒内仅得 {total} 个读数中的 {n} 个</translation>
     </message>
     <message>
@@ -8106,7 +8107,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{port}: no answer for {seconds} s</source>
         <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines framed, samples read and lines refused since the start
 ----------
-seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>

@@ -8,6 +8,7 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from app.main import main
@@ -66,6 +67,33 @@ def test_a_stable_reading_never_bridges_a_lost_link(tmp_path):
     gaps = [b - a for a, b in zip(times, times[1:], strict=False)]
     back = times[gaps.index(max(gaps)) + 1]  # the first frame after the silence
     assert max(gaps) > 0.2 and taken_at >= back + 0.5 - 1e-6, (taken_at, back)
+
+
+@pytest.mark.slow
+def test_stable_readings_are_traced_to_the_lines_of_their_dwell(tmp_path):
+    """With --stable --raw, the raw lines marked as a reading are those of each reading's
+    dwell, and their mean is the reading (every frame of the stream was marked)."""
+    out, raw = tmp_path / "set.csv", tmp_path / "set.raw.csv"
+    positions = [(100.0, 5.0), (200.0, 5.0), (300.0, -5.0)]
+    with AutocollimatorSimulator("pty", positions=positions, hold_s=0.4, sigma=0.05) as sim:
+        assert main(["capture", "autocollimator", sim.port, "--readings", "3", "--stable", "0.5",
+                     "--dwell", "0.1", "--out", str(out), "--raw", str(raw), *FAST]) == 0
+    readings = [tuple(map(float, r)) for r in rows_of(out)[1:]]
+    lines = rows_of(raw)[1:]
+    runs, run = [], []
+    for time_s, used, line in lines:  # the runs of lines marked 1
+        if used == "1":
+            run.append((float(time_s), [float(v) for v in line.split()[2:]]))
+        elif run:
+            runs.append(run)
+            run = []
+    runs += [run] if run else []
+    assert len(runs) == 3 and sum(r[1] == "0" for r in lines) > 0
+    for (t, x, y), run in zip(readings, runs, strict=True):
+        assert run[-1][0] == pytest.approx(t, abs=1e-6)  # the reading's time: its last line's
+        assert run[-1][0] - run[0][0] >= 0.1 - 1e-6  # they cover the dwell
+        mean = np.mean([v for _, v in run], axis=0)
+        assert mean == pytest.approx([x, y], abs=1e-9)
 
 
 def test_theodolite_over_tcp_and_a_disconnect_mid_set(tmp_path, capsys):

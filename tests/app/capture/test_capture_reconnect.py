@@ -133,3 +133,14 @@ def test_a_stream_silent_for_a_while_is_not_polled_for_good():
         if isinstance(event, Fault):
             faults.append(event)
     assert faults and not any(f.final for f in faults)
+
+
+def test_a_link_that_read_well_and_went_quiet_says_no_answer():
+    """Good frames, then silence: the fault says "no answer", not "only unreadable bytes (a
+    wrong baud rate?)", which sent a technician to the baud rate of a link that had worked."""
+    port = _ScriptedPort(b"", tuple(f"3 003 {i:.3f} 2.000\r".encode() for i in range(5)),
+                         unasked=True)
+    events, _ = _run(Autocollimator(), [port], 0.6)
+    assert sum(isinstance(e, Reading) for e in events) == 5
+    fault = next(e for e in events if isinstance(e, Fault))
+    assert fault.message.endswith("no answer for 0.3 s"), fault.message
