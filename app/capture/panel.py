@@ -444,6 +444,8 @@ class InstrumentLink:
                 settings.setValue(BAUD_SETTING.format(kind=kind), int(baud))
 
     def disconnect(self) -> None:
+        if self.worker is not None:
+            self.panel.claim_columns(self)
         worker, self.worker = self.worker, None
         if worker is not None:
             worker.stop()
@@ -502,6 +504,13 @@ class InstrumentLink:
         """A fresh reading is there to take."""
         return self.worker is not None and self.latest is not None and not self.lost
 
+    @property
+    def name(self) -> str:
+        """The instrument and its port, as the panel names it in a message."""
+        kind = dict(_instrument_names()).get(self.kind, self.kind)
+        port = self.worker.port if self.worker is not None else ""
+        return tr("{instrument} on {port}").format(instrument=kind, port=port) if port else kind
+
 
 class CapturePanel(QDockWidget):
     def __init__(self, window) -> None:
@@ -523,6 +532,10 @@ class CapturePanel(QDockWidget):
         #: rows filled by Take reading or auto-take: (workbench, row, values of the first
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
+        #: per workbench, the columns an instrument has filled or was set to fill: the
+        #: plan's nominal is never written there (#60: a readout's link gave up and the
+        #: plan's expected encoder value went into its column as if read)
+        self.measured_columns: dict[str, set[str]] = {}
         body = QWidget()
         # five parts side by side when docked at the bottom (the guidance, the instrument,
         # its statistics, the take, the second instrument: a low panel, the plots keep their
@@ -575,7 +588,10 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.window_label, self.window_box)
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
-        for widget in (self.guide, self.stability, self.allan, self.auto_state):
+        #: why a take was refused, or auto-take switched off (until the next take)
+        self.take_note = QLabel("")
+        self.take_note.setStyleSheet("color: #b00020;")
+        for widget in (self.guide, self.stability, self.allan, self.auto_state, self.take_note):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         columns[0].addWidget(self.guide)
@@ -583,6 +599,7 @@ class CapturePanel(QDockWidget):
         columns[2].addWidget(self.stability)
         columns[2].addWidget(self.allan)
         columns[3].addWidget(self.take_button)
+        columns[3].addWidget(self.take_note)
         columns[3].addWidget(self.auto)
         columns[3].addLayout(auto_form)
         columns[3].addWidget(self.auto_state)
@@ -801,6 +818,7 @@ class CapturePanel(QDockWidget):
         """The sessions of a project opened (or none for a new one); a connection open now
         goes on in a session of its own."""
         self.sessions = {k: list(v) for k, v in raw.items()}
+        self.measured_columns = {}  # another project's rows
 
     # ------------------------------------------------------------ auto-take
     def _gate_changed(self, *_args) -> None:
@@ -817,6 +835,11 @@ class CapturePanel(QDockWidget):
     def _feed_gate(self, reading: Reading) -> None:
         gate, scale = self.gate, self._scale
         if gate is None:
+            return
+        if self.waiting_for():
+            # a take now would leave a lost instrument's cells blank: the dwell starts
+            # again once every link is back (_show_gate says which one it waits for)
+            gate.restart()
             return
         # angles in degrees go to the gate as their difference from the first frame's,
         # wrapped to ±180°, so a position at 0°/360° settles (and averages) where it is
@@ -840,6 +863,11 @@ class CapturePanel(QDockWidget):
     def _show_gate(self) -> None:
         if self.gate is None or self.latest is None:
             self.auto_state.setText("")
+            return
+        waiting = self.waiting_for()
+        if waiting:
+            self.auto_state.setText(tr("Auto-take: waiting for {instrument} (link lost)").format(
+                instrument=waiting[0].name))
             return
         phase, part = self.gate.progress(self.latest.time_s)
         if phase == "taken":
@@ -1052,6 +1080,14 @@ class CapturePanel(QDockWidget):
                     self._show_gate()
                 link.show_value()
         if ended and link.worker is worker:
+            if self.auto.isChecked():
+                # no auto-take goes on without an instrument it fills cells from: the
+                # rows after it would lack that instrument's reading
+                name = link.name
+                self.auto.setChecked(False)
+                self.take_note.setText(tr("Auto-take switched off: the link to {instrument} "
+                                          "ended ({reason})").format(
+                    instrument=name, reason=link.last_fault))
             link.disconnect()
 
     def _show_statistics(self) -> None:
@@ -1091,14 +1127,34 @@ class CapturePanel(QDockWidget):
                                       for i in picked)))
 
     # ------------------------------------------------------------ take reading
+    def waiting_for(self) -> list[InstrumentLink]:
+        """The links connected with no reading to take now (lost, reconnecting, or none
+        yet): no take is made while there is one, or its cells would stay blank."""
+        return [link for link in self.links if link.connected and not link.usable]
+
+    def claim_columns(self, link: InstrumentLink) -> None:
+        """The columns ``link`` fills on the workbench in front are measured columns there
+        from now on (:attr:`measured_columns`)."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return
+        self.measured_columns.setdefault(presenter.kind.key, set()).update(
+            key for t_link, _, key in self._targets(presenter) if t_link is link)
+
     def take_reading(self, values: tuple[float, ...] | None = None,
                      frames: tuple[int, int] | None = None) -> str:
         """Fill the row a take goes to (:meth:`target_row`) from every instrument connected
         — the first's latest reading, or ``values`` (an auto-take's mean of its raw
         ``frames`` first…last), with the second's latest — and the cells the guidance says,
-        as one undo step; what it did ("" when nothing was taken)."""
+        as one undo step; what it did ("" when nothing was taken). No take while a link
+        connected has no reading to give (:meth:`waiting_for`)."""
         first = self.links[0]
         presenter = self.window_.current
+        waiting = self.waiting_for()
+        if waiting:
+            self.take_note.setText(tr("Not taken: no reading from {instrument} (link lost)")
+                                   .format(instrument=waiting[0].name))
+            return ""
         table = presenter.view.table
         model = presenter.table_model
         sheet = model.sheet
@@ -1112,8 +1168,14 @@ class CapturePanel(QDockWidget):
             elif link.usable:
                 reading = link.latest
                 taking[link.slot] = (reading.values, reading.unit, (reading.frame, reading.frame))
-        # the columns an instrument connected fills (a plan's nominal never goes there)
-        instrument_columns = {keys.index(key) for _, _, key in targets}
+        # the columns an instrument fills: connected now, or filled or set to fill on this
+        # workbench before (a link that gave up, or was disconnected). Only the instrument
+        # writes there: the plan's cells and its nominal (the encoder expected at the face)
+        # never do — a nominal pre-filled is a set-point for a workbench read without the
+        # encoder's readout, never a value in a column a readout measures
+        measured = self.measured_columns.setdefault(presenter.kind.key, set())
+        measured.update(key for _, _, key in targets)
+        instrument_columns = {keys.index(key) for key in measured if key in keys}
         targets = [t for t in targets if t[0].slot in taking]
         if not targets:
             if taking:
@@ -1138,14 +1200,16 @@ class CapturePanel(QDockWidget):
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
-                if key not in keys or keys.index(key) in filled:
+                if key not in keys or keys.index(key) in filled \
+                        or keys.index(key) in instrument_columns:
                     continue
                 if row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip():
                     changes.append((row, keys.index(key), text))
                     filled.add(keys.index(key))
         if self.next_reading is not None:
             for key, text in self.next_reading.fill.items():
-                if key not in keys or keys.index(key) in filled:
+                if key not in keys or keys.index(key) in filled \
+                        or keys.index(key) in instrument_columns:
                     continue
                 blank = row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip()
                 if blank:
@@ -1177,6 +1241,7 @@ class CapturePanel(QDockWidget):
                 link.session.steps.append(steps.get(link.slot, 0.0))
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
+        self.take_note.setText("")
         table.next_row(row)
         self.update_guide()
         return f"row {row + 1}"
