@@ -312,6 +312,9 @@ class InstrumentLink:
         self.frames: deque[tuple[float, tuple[float, ...], int]] = deque(maxlen=8192)
         self.latest: Reading | None = None
         self.received = 0  # readings taken in from the worker since connecting
+        #: the raw frame index of the last frame a take of this link used (-1: none): a
+        #: take needs a newer one, one frame never fills two rows
+        self.taken_frame = -1
         self.session: _Session | None = None
         self.last_fault = ""  # the fault the link recovered from, said while connected
         self.fresh_at = 0.0  # perf_counter time of the newest reading
@@ -423,6 +426,7 @@ class InstrumentLink:
         self.frames.clear()
         self.latest = None
         self.received = 0
+        self.taken_frame = -1
         self.lost = False
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
@@ -836,9 +840,10 @@ class CapturePanel(QDockWidget):
         gate, scale = self.gate, self._scale
         if gate is None:
             return
-        if self.waiting_for():
-            # a take now would leave a lost instrument's cells blank: the dwell starts
-            # again once every link is back (_show_gate says which one it waits for)
+        if self.waiting_for() or self.used_again():
+            # a take now would leave a lost instrument's cells blank, or repeat another's
+            # reading of the last take: the dwell starts again once every link is back with
+            # a new reading (_show_gate says which one it waits for)
             gate.restart()
             return
         # angles in degrees go to the gate as their difference from the first frame's,
@@ -870,8 +875,12 @@ class CapturePanel(QDockWidget):
                 instrument=waiting[0].name))
             return
         phase, part = self.gate.progress(self.latest.time_s)
+        again = [link for link in self.used_again() if link is not self.links[0]]
         if phase == "taken":
             self.auto_state.setText(tr("Auto-take: taken; move to the next point"))
+        elif again:
+            self.auto_state.setText(tr("Auto-take: waiting for a new reading from {instrument}")
+                                    .format(instrument=again[0].name))
         else:
             text = tr("Auto-take: settling, {percent} % of the dwell").format(
                 percent=f"{100 * part:.0f}")
@@ -1132,6 +1141,13 @@ class CapturePanel(QDockWidget):
         yet): no take is made while there is one, or its cells would stay blank."""
         return [link for link in self.links if link.connected and not link.usable]
 
+    def used_again(self) -> list[InstrumentLink]:
+        """The links usable whose latest reading a take has used already: a second take from
+        it would fill another row with the same frame, a reading repeated as if it were
+        another (#60 review: F9 twice between two replies of a slow theodolite)."""
+        return [link for link in self.links if link.usable
+                and link.latest.frame <= link.taken_frame]
+
     def claim_columns(self, link: InstrumentLink) -> None:
         """The columns ``link`` fills on the workbench in front are measured columns there
         from now on (:attr:`measured_columns`)."""
@@ -1154,6 +1170,13 @@ class CapturePanel(QDockWidget):
         if waiting:
             self.take_note.setText(tr("Not taken: no reading from {instrument} (link lost)")
                                    .format(instrument=waiting[0].name))
+            return ""
+        # a take by hand uses every link's latest frame: each must be new since its last
+        # take (auto-take's own frames are new; the gate waits for the others': _feed_gate)
+        again = [link for link in self.used_again() if values is None or link is not first]
+        if again:
+            self.take_note.setText(tr("Not taken: no new reading from {instrument} since the "
+                                      "last take").format(instrument=again[0].name))
             return ""
         table = presenter.view.table
         model = presenter.table_model
@@ -1239,6 +1262,7 @@ class CapturePanel(QDockWidget):
                     and any(t[0] is link for t in targets):
                 link.session.takes.append([row, got[2][0], got[2][1]])
                 link.session.steps.append(steps.get(link.slot, 0.0))
+                link.taken_frame = max(link.taken_frame, got[2][1])
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         self.take_note.setText("")

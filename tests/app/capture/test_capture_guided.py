@@ -156,6 +156,8 @@ def test_guided_theodolite_says_theta_and_fills_it(window, qtbot):
         qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
         assert panel.guide.text() == "Next: θ = 10°"
         for _ in range(3):
+            # a frame fills one row (#60 review): each take waits for a new one
+            qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)
             panel.take_button.click()
         panel.disconnect_instrument()
     assert [model.sheet.text(r, 0) for r in range(4)] == ["10", "12", "14", "16"]
