@@ -840,7 +840,9 @@ class CapturePanel(QDockWidget):
         gate, scale = self.gate, self._scale
         if gate is None:
             return
-        if self.waiting_for() or self.used_again():
+        # the first link's frame fed here is live (it is marked so after the batch; a fault
+        # of it restarts the gate itself): the others are asked
+        if any(link is not self.links[0] for link in self.waiting_for() + self.used_again()):
             # a take now would leave a lost instrument's cells blank, or repeat another's
             # reading of the last take: the dwell starts again once every link is back with
             # a new reading (_show_gate says which one it waits for)
