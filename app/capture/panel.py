@@ -40,7 +40,8 @@ which point a reading is of are filled with it, and with *readings per point* n 
 gate takes the n readings of a point one after another from fresh frames.
 
 Every line an instrument sends is kept (models/capture/raw_record.py): a session per
-connection, filed under the workbench shown when it was made, with the rows its readings
+connection and workbench in front (another workbench in front starts a session of its
+own), filed under that workbench, with the rows its readings
 went to (``takes``: row, first and last frame; the frames carry their times); the window
 saves them with the project and the register records them with a certificate.
 """
@@ -56,6 +57,7 @@ import subprocess
 import sys
 import time
 from collections import deque
+from datetime import datetime, timedelta
 from pathlib import Path
 
 import numpy as np
@@ -282,11 +284,29 @@ class DemonstrationProcess:
 
 
 class _Session:
-    """One connection's raw frames as they will be stored, converted as they arrive (a
-    project saved during a long stream converts only the frames since the last save)."""
+    """One connection's raw frames on one workbench as they will be stored, converted as
+    they arrive (a project saved during a long stream converts only the frames since the
+    last save).
 
-    def __init__(self, workbench: str, kind: str, worker: CaptureWorker) -> None:
+    A connection that goes on while another workbench comes in front is cut in two
+    sessions (#60 review: the polygon's raw record held the cross-calibration's takes): this
+    one holds the worker's raw lines ``first`` … ``end`` (``end`` None while it is open), its
+    frames indexed from 0 at ``first`` — the takes' indices are into the session's own
+    ``frames``, as models/capture/raw_record.py and the edit check read them. Its
+    ``started_utc`` is when the line before ``first`` arrived and its frames' times count
+    from it (two sessions of one connection never share a start: the edit check knows a
+    take by its session's port, start and frames)."""
+
+    def __init__(self, workbench: str, kind: str, worker: CaptureWorker, first: int = 0) -> None:
         self.workbench, self.kind, self.worker = workbench, kind, worker
+        self.first = first
+        self.end: int | None = None
+        #: seconds from the worker's start to this session's
+        self.t0 = float(worker.raw[first - 1][0]) if first > 0 else 0.0
+        self.started_utc = worker.started_utc
+        if self.t0 > 0.0:
+            self.started_utc = (datetime.fromisoformat(worker.started_utc)
+                                + timedelta(seconds=self.t0)).isoformat()
         self.frames: list[list] = []
         self.takes: list[list[int]] = []
         #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
@@ -294,10 +314,12 @@ class _Session:
 
     def stored(self) -> dict:
         raw = self.worker.raw
-        for t, line, used in raw[len(self.frames):len(raw)]:
-            self.frames.append([round(float(t), 6), frame_text(line), int(bool(used))])
+        end = len(raw) if self.end is None else self.end
+        for t, line, used in raw[self.first + len(self.frames):end]:
+            self.frames.append([round(float(t) - self.t0, 6), frame_text(line),
+                                int(bool(used))])
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
-                "started_utc": self.worker.started_utc, "frames": list(self.frames),
+                "started_utc": self.started_utc, "frames": list(self.frames),
                 "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
 
 
@@ -457,8 +479,8 @@ class InstrumentLink:
             if not self.status.styleSheet():
                 self.status.setText(tr("Disconnected from {port}").format(port=worker.port))
         session, self.session = self.session, None
-        if session is not None and session.worker.raw:
-            self.panel.sessions.setdefault(session.workbench, []).append(session.stored())
+        if session is not None and (stored := session.stored())["frames"]:
+            self.panel.sessions.setdefault(session.workbench, []).append(stored)
         simulator, self.simulator = self.simulator, None
         if simulator is not None:
             simulator.__exit__(None, None, None)
@@ -788,12 +810,38 @@ class CapturePanel(QDockWidget):
         self._gate_changed()
 
     def workbench_changed(self, _index: int = 0) -> None:
-        """Another workbench in front: its guidance, not the last one's."""
+        """Another workbench in front: its guidance, not the last one's, and its own raw
+        sessions (:meth:`_split_sessions`)."""
+        self._split_sessions()
         self._reset_statistics()
         self._refill_columns()
         self._capturing()
         if any(link.connected for link in self.links):
             self.update_guide()
+
+    def _split_sessions(self) -> None:
+        """Each open link's session closed into :attr:`sessions` of its workbench and a new
+        one started for the workbench in front: a take goes to the sheet in front, so its
+        frames must be in that workbench's raw record. The frames the panel has taken in
+        stay with the old session; the new one starts after them, and a take needs a frame
+        of its own session (the latest one before the change counts as used)."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return
+        key = presenter.kind.key
+        for link in self.links:
+            session = link.session
+            if session is None or session.workbench == key:
+                continue
+            start = session.first
+            if link.latest is not None:
+                start = max(start, link.latest.frame + 1)
+            session.end = start
+            del session.frames[start - session.first:]  # converted ahead, not taken in yet
+            if (stored := session.stored())["frames"]:
+                self.sessions.setdefault(session.workbench, []).append(stored)
+            link.session = _Session(key, session.kind, session.worker, start)
+            link.taken_frame = max(link.taken_frame, start - 1)
 
     def _refill_columns(self) -> None:
         presenter = getattr(self.window_, "current", None)
@@ -808,8 +856,8 @@ class CapturePanel(QDockWidget):
         out = list(self.sessions.get(workbench, []))
         for link in self.links:
             if link.session is not None and link.session.workbench == workbench \
-                    and link.session.worker.raw:
-                out.append(link.session.stored())
+                    and (stored := link.session.stored())["frames"]:
+                out.append(stored)
         return out
 
     def raw_capture(self) -> dict[str, list[dict]]:
@@ -1260,9 +1308,11 @@ class CapturePanel(QDockWidget):
         self._widen(table, changes)
         for link in self.links:
             got = taking.get(link.slot)
-            if got is not None and link.session is not None and got[2][0] >= 0 \
+            session = link.session
+            if got is not None and session is not None and got[2][0] >= session.first \
                     and any(t[0] is link for t in targets):
-                link.session.takes.append([row, got[2][0], got[2][1]])
+                # indices into the session's own frames (it may start mid-connection)
+                session.takes.append([row, got[2][0] - session.first, got[2][1] - session.first])
                 link.session.steps.append(steps.get(link.slot, 0.0))
                 link.taken_frame = max(link.taken_frame, got[2][1])
         if 0 in taking:
