@@ -1216,7 +1216,10 @@ class CapturePanel(QDockWidget):
         connected has no reading to give (:meth:`waiting_for`)."""
         first = self.links[0]
         presenter = self.window_.current
-        waiting = self.waiting_for()
+        # an auto-take's frames are the first link's, live (it is marked so only after the
+        # batch that brought it back: asked, a take at the end of that batch was refused
+        # while the gate counted it taken)
+        waiting = [link for link in self.waiting_for() if values is None or link is not first]
         if waiting:
             self.take_note.setText(tr("Not taken: no reading from {instrument} (link lost)")
                                    .format(instrument=waiting[0].name))
