@@ -40,7 +40,8 @@ which point a reading is of are filled with it, and with *readings per point* n 
 gate takes the n readings of a point one after another from fresh frames.
 
 Every line an instrument sends is kept (models/capture/raw_record.py): a session per
-connection, filed under the workbench shown when it was made, with the rows its readings
+connection and workbench in front (another workbench in front starts a session of its
+own), filed under that workbench, with the rows its readings
 went to (``takes``: row, first and last frame; the frames carry their times); the window
 saves them with the project and the register records them with a certificate.
 """
@@ -56,6 +57,7 @@ import subprocess
 import sys
 import time
 from collections import deque
+from datetime import datetime, timedelta
 from pathlib import Path
 
 import numpy as np
@@ -282,11 +284,29 @@ class DemonstrationProcess:
 
 
 class _Session:
-    """One connection's raw frames as they will be stored, converted as they arrive (a
-    project saved during a long stream converts only the frames since the last save)."""
+    """One connection's raw frames on one workbench as they will be stored, converted as
+    they arrive (a project saved during a long stream converts only the frames since the
+    last save).
 
-    def __init__(self, workbench: str, kind: str, worker: CaptureWorker) -> None:
+    A connection that goes on while another workbench comes in front is cut in two
+    sessions (#60 review: the polygon's raw record held the cross-calibration's takes): this
+    one holds the worker's raw lines ``first`` … ``end`` (``end`` None while it is open), its
+    frames indexed from 0 at ``first`` — the takes' indices are into the session's own
+    ``frames``, as models/capture/raw_record.py and the edit check read them. Its
+    ``started_utc`` is when the line before ``first`` arrived and its frames' times count
+    from it (two sessions of one connection never share a start: the edit check knows a
+    take by its session's port, start and frames)."""
+
+    def __init__(self, workbench: str, kind: str, worker: CaptureWorker, first: int = 0) -> None:
         self.workbench, self.kind, self.worker = workbench, kind, worker
+        self.first = first
+        self.end: int | None = None
+        #: seconds from the worker's start to this session's
+        self.t0 = float(worker.raw[first - 1][0]) if first > 0 else 0.0
+        self.started_utc = worker.started_utc
+        if self.t0 > 0.0:
+            self.started_utc = (datetime.fromisoformat(worker.started_utc)
+                                + timedelta(seconds=self.t0)).isoformat()
         self.frames: list[list] = []
         self.takes: list[list[int]] = []
         #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
@@ -294,10 +314,12 @@ class _Session:
 
     def stored(self) -> dict:
         raw = self.worker.raw
-        for t, line, used in raw[len(self.frames):len(raw)]:
-            self.frames.append([round(float(t), 6), frame_text(line), int(bool(used))])
+        end = len(raw) if self.end is None else self.end
+        for t, line, used in raw[self.first + len(self.frames):end]:
+            self.frames.append([round(float(t) - self.t0, 6), frame_text(line),
+                                int(bool(used))])
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
-                "started_utc": self.worker.started_utc, "frames": list(self.frames),
+                "started_utc": self.started_utc, "frames": list(self.frames),
                 "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
 
 
@@ -312,6 +334,9 @@ class InstrumentLink:
         self.frames: deque[tuple[float, tuple[float, ...], int]] = deque(maxlen=8192)
         self.latest: Reading | None = None
         self.received = 0  # readings taken in from the worker since connecting
+        #: the raw frame index of the last frame a take of this link used (-1: none): a
+        #: take needs a newer one, one frame never fills two rows
+        self.taken_frame = -1
         self.session: _Session | None = None
         self.last_fault = ""  # the fault the link recovered from, said while connected
         self.fresh_at = 0.0  # perf_counter time of the newest reading
@@ -423,6 +448,7 @@ class InstrumentLink:
         self.frames.clear()
         self.latest = None
         self.received = 0
+        self.taken_frame = -1
         self.lost = False
         self.value.setText("—")
         self.value.setStyleSheet(_VALUE_STYLE)
@@ -444,6 +470,8 @@ class InstrumentLink:
                 settings.setValue(BAUD_SETTING.format(kind=kind), int(baud))
 
     def disconnect(self) -> None:
+        if self.worker is not None:
+            self.panel.claim_columns(self)
         worker, self.worker = self.worker, None
         if worker is not None:
             worker.stop()
@@ -451,8 +479,8 @@ class InstrumentLink:
             if not self.status.styleSheet():
                 self.status.setText(tr("Disconnected from {port}").format(port=worker.port))
         session, self.session = self.session, None
-        if session is not None and session.worker.raw:
-            self.panel.sessions.setdefault(session.workbench, []).append(session.stored())
+        if session is not None and (stored := session.stored())["frames"]:
+            self.panel.sessions.setdefault(session.workbench, []).append(stored)
         simulator, self.simulator = self.simulator, None
         if simulator is not None:
             simulator.__exit__(None, None, None)
@@ -502,6 +530,13 @@ class InstrumentLink:
         """A fresh reading is there to take."""
         return self.worker is not None and self.latest is not None and not self.lost
 
+    @property
+    def name(self) -> str:
+        """The instrument and its port, as the panel names it in a message."""
+        kind = dict(_instrument_names()).get(self.kind, self.kind)
+        port = self.worker.port if self.worker is not None else ""
+        return tr("{instrument} on {port}").format(instrument=kind, port=port) if port else kind
+
 
 class CapturePanel(QDockWidget):
     def __init__(self, window) -> None:
@@ -523,6 +558,10 @@ class CapturePanel(QDockWidget):
         #: rows filled by Take reading or auto-take: (workbench, row, values of the first
         #: instrument at full precision)
         self.taken: list[tuple[str, int, tuple[float, ...]]] = []
+        #: per workbench, the columns an instrument has filled or was set to fill: the
+        #: plan's nominal is never written there (#60: a readout's link gave up and the
+        #: plan's expected encoder value went into its column as if read)
+        self.measured_columns: dict[str, set[str]] = {}
         body = QWidget()
         # five parts side by side when docked at the bottom (the guidance, the instrument,
         # its statistics, the take, the second instrument: a low panel, the plots keep their
@@ -575,7 +614,10 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.window_label, self.window_box)
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
-        for widget in (self.guide, self.stability, self.allan, self.auto_state):
+        #: why a take was refused, or auto-take switched off (until the next take)
+        self.take_note = QLabel("")
+        self.take_note.setStyleSheet("color: #b00020;")
+        for widget in (self.guide, self.stability, self.allan, self.auto_state, self.take_note):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         columns[0].addWidget(self.guide)
@@ -583,6 +625,7 @@ class CapturePanel(QDockWidget):
         columns[2].addWidget(self.stability)
         columns[2].addWidget(self.allan)
         columns[3].addWidget(self.take_button)
+        columns[3].addWidget(self.take_note)
         columns[3].addWidget(self.auto)
         columns[3].addLayout(auto_form)
         columns[3].addWidget(self.auto_state)
@@ -767,12 +810,38 @@ class CapturePanel(QDockWidget):
         self._gate_changed()
 
     def workbench_changed(self, _index: int = 0) -> None:
-        """Another workbench in front: its guidance, not the last one's."""
+        """Another workbench in front: its guidance, not the last one's, and its own raw
+        sessions (:meth:`_split_sessions`)."""
+        self._split_sessions()
         self._reset_statistics()
         self._refill_columns()
         self._capturing()
         if any(link.connected for link in self.links):
             self.update_guide()
+
+    def _split_sessions(self) -> None:
+        """Each open link's session closed into :attr:`sessions` of its workbench and a new
+        one started for the workbench in front: a take goes to the sheet in front, so its
+        frames must be in that workbench's raw record. The frames the panel has taken in
+        stay with the old session; the new one starts after them, and a take needs a frame
+        of its own session (the latest one before the change counts as used)."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return
+        key = presenter.kind.key
+        for link in self.links:
+            session = link.session
+            if session is None or session.workbench == key:
+                continue
+            start = session.first
+            if link.latest is not None:
+                start = max(start, link.latest.frame + 1)
+            session.end = start
+            del session.frames[start - session.first:]  # converted ahead, not taken in yet
+            if (stored := session.stored())["frames"]:
+                self.sessions.setdefault(session.workbench, []).append(stored)
+            link.session = _Session(key, session.kind, session.worker, start)
+            link.taken_frame = max(link.taken_frame, start - 1)
 
     def _refill_columns(self) -> None:
         presenter = getattr(self.window_, "current", None)
@@ -787,8 +856,8 @@ class CapturePanel(QDockWidget):
         out = list(self.sessions.get(workbench, []))
         for link in self.links:
             if link.session is not None and link.session.workbench == workbench \
-                    and link.session.worker.raw:
-                out.append(link.session.stored())
+                    and (stored := link.session.stored())["frames"]:
+                out.append(stored)
         return out
 
     def raw_capture(self) -> dict[str, list[dict]]:
@@ -801,6 +870,7 @@ class CapturePanel(QDockWidget):
         """The sessions of a project opened (or none for a new one); a connection open now
         goes on in a session of its own."""
         self.sessions = {k: list(v) for k, v in raw.items()}
+        self.measured_columns = {}  # another project's rows
 
     # ------------------------------------------------------------ auto-take
     def _gate_changed(self, *_args) -> None:
@@ -817,6 +887,14 @@ class CapturePanel(QDockWidget):
     def _feed_gate(self, reading: Reading) -> None:
         gate, scale = self.gate, self._scale
         if gate is None:
+            return
+        # the first link's frame fed here is live (it is marked so after the batch; a fault
+        # of it restarts the gate itself): the others are asked
+        if any(link is not self.links[0] for link in self.waiting_for() + self.used_again()):
+            # a take now would leave a lost instrument's cells blank, or repeat another's
+            # reading of the last take: the dwell starts again once every link is back with
+            # a new reading (_show_gate says which one it waits for)
+            gate.restart()
             return
         # angles in degrees go to the gate as continuous offsets from the first frame's
         # (models.capture.stability.UnwrappedAngles: 0°/360° and the first frame's ±180°
@@ -845,9 +923,18 @@ class CapturePanel(QDockWidget):
         if self.gate is None or self.latest is None:
             self.auto_state.setText("")
             return
+        waiting = self.waiting_for()
+        if waiting:
+            self.auto_state.setText(tr("Auto-take: waiting for {instrument} (link lost)").format(
+                instrument=waiting[0].name))
+            return
         phase, part = self.gate.progress(self.latest.time_s)
+        again = [link for link in self.used_again() if link is not self.links[0]]
         if phase == "taken":
             self.auto_state.setText(tr("Auto-take: taken; move to the next point"))
+        elif again:
+            self.auto_state.setText(tr("Auto-take: waiting for a new reading from {instrument}")
+                                    .format(instrument=again[0].name))
         else:
             text = tr("Auto-take: settling, {percent} % of the dwell").format(
                 percent=f"{100 * part:.0f}")
@@ -1056,6 +1143,14 @@ class CapturePanel(QDockWidget):
                     self._show_gate()
                 link.show_value()
         if ended and link.worker is worker:
+            if self.auto.isChecked():
+                # no auto-take goes on without an instrument it fills cells from: the
+                # rows after it would lack that instrument's reading
+                name = link.name
+                self.auto.setChecked(False)
+                self.take_note.setText(tr("Auto-take switched off: the link to {instrument} "
+                                          "ended ({reason})").format(
+                    instrument=name, reason=link.last_fault))
             link.disconnect()
 
     def _show_statistics(self) -> None:
@@ -1095,14 +1190,51 @@ class CapturePanel(QDockWidget):
                                       for i in picked)))
 
     # ------------------------------------------------------------ take reading
+    def waiting_for(self) -> list[InstrumentLink]:
+        """The links connected with no reading to take now (lost, reconnecting, or none
+        yet): no take is made while there is one, or its cells would stay blank."""
+        return [link for link in self.links if link.connected and not link.usable]
+
+    def used_again(self) -> list[InstrumentLink]:
+        """The links usable whose latest reading a take has used already: a second take from
+        it would fill another row with the same frame, a reading repeated as if it were
+        another (#60 review: F9 twice between two replies of a slow theodolite)."""
+        return [link for link in self.links if link.usable
+                and link.latest.frame <= link.taken_frame]
+
+    def claim_columns(self, link: InstrumentLink) -> None:
+        """The columns ``link`` fills on the workbench in front are measured columns there
+        from now on (:attr:`measured_columns`)."""
+        presenter = getattr(self.window_, "current", None)
+        if presenter is None:
+            return
+        self.measured_columns.setdefault(presenter.kind.key, set()).update(
+            key for t_link, _, key in self._targets(presenter) if t_link is link)
+
     def take_reading(self, values: tuple[float, ...] | None = None,
                      frames: tuple[int, int] | None = None) -> str:
         """Fill the row a take goes to (:meth:`target_row`) from every instrument connected
         — the first's latest reading, or ``values`` (an auto-take's mean of its raw
         ``frames`` first…last), with the second's latest — and the cells the guidance says,
-        as one undo step; what it did ("" when nothing was taken)."""
+        as one undo step; what it did ("" when nothing was taken). No take while a link
+        connected has no reading to give (:meth:`waiting_for`)."""
         first = self.links[0]
         presenter = self.window_.current
+        # an auto-take's frames are the first link's, live (it is marked so only after the
+        # batch that brought it back: asked, a take at the end of that batch was refused
+        # while the gate counted it taken)
+        waiting = [link for link in self.waiting_for() if values is None or link is not first]
+        if waiting:
+            self.take_note.setText(tr("Not taken: no reading from {instrument} (link lost)")
+                                   .format(instrument=waiting[0].name))
+            return ""
+        # a take by hand uses every link's latest frame: each must be new since its last
+        # take (auto-take's own frames are new; the gate waits for the others': _feed_gate)
+        again = [link for link in self.used_again() if values is None or link is not first]
+        if again:
+            self.take_note.setText(tr("Not taken: no new reading from {instrument} since the "
+                                      "last take").format(instrument=again[0].name))
+            return ""
         table = presenter.view.table
         model = presenter.table_model
         sheet = model.sheet
@@ -1116,8 +1248,14 @@ class CapturePanel(QDockWidget):
             elif link.usable:
                 reading = link.latest
                 taking[link.slot] = (reading.values, reading.unit, (reading.frame, reading.frame))
-        # the columns an instrument connected fills (a plan's nominal never goes there)
-        instrument_columns = {keys.index(key) for _, _, key in targets}
+        # the columns an instrument fills: connected now, or filled or set to fill on this
+        # workbench before (a link that gave up, or was disconnected). Only the instrument
+        # writes there: the plan's cells and its nominal (the encoder expected at the face)
+        # never do — a nominal pre-filled is a set-point for a workbench read without the
+        # encoder's readout, never a value in a column a readout measures
+        measured = self.measured_columns.setdefault(presenter.kind.key, set())
+        measured.update(key for _, _, key in targets)
+        instrument_columns = {keys.index(key) for key in measured if key in keys}
         targets = [t for t in targets if t[0].slot in taking]
         if not targets:
             if taking:
@@ -1142,14 +1280,16 @@ class CapturePanel(QDockWidget):
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
-                if key not in keys or keys.index(key) in filled:
+                if key not in keys or keys.index(key) in filled \
+                        or keys.index(key) in instrument_columns:
                     continue
                 if row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip():
                     changes.append((row, keys.index(key), text))
                     filled.add(keys.index(key))
         if self.next_reading is not None:
             for key, text in self.next_reading.fill.items():
-                if key not in keys or keys.index(key) in filled:
+                if key not in keys or keys.index(key) in filled \
+                        or keys.index(key) in instrument_columns:
                     continue
                 blank = row >= sheet.row_count or not sheet.text(row, keys.index(key)).strip()
                 if blank:
@@ -1175,12 +1315,16 @@ class CapturePanel(QDockWidget):
         self._widen(table, changes)
         for link in self.links:
             got = taking.get(link.slot)
-            if got is not None and link.session is not None and got[2][0] >= 0 \
+            session = link.session
+            if got is not None and session is not None and got[2][0] >= session.first \
                     and any(t[0] is link for t in targets):
-                link.session.takes.append([row, got[2][0], got[2][1]])
+                # indices into the session's own frames (it may start mid-connection)
+                session.takes.append([row, got[2][0] - session.first, got[2][1] - session.first])
                 link.session.steps.append(steps.get(link.slot, 0.0))
+                link.taken_frame = max(link.taken_frame, got[2][1])
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
+        self.take_note.setText("")
         table.next_row(row)
         self.update_guide()
         return f"row {row + 1}"

@@ -156,6 +156,8 @@ def test_guided_theodolite_says_theta_and_fills_it(window, qtbot):
         qtbot.waitUntil(lambda: panel.guide.text() != "", timeout=3000)
         assert panel.guide.text() == "Next: θ = 10°"
         for _ in range(3):
+            # a frame fills one row (#60 review): each take waits for a new one
+            qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)
             panel.take_button.click()
         panel.disconnect_instrument()
     assert [model.sheet.text(r, 0) for r in range(4)] == ["10", "12", "14", "16"]
@@ -335,6 +337,7 @@ def test_theta_typed_and_return_with_a_step_the_take_fills_the_row_waiting(windo
         assert panel.target_row() == 1
         presenter.refresh()  # (on a worker while capturing)
         qtbot.waitUntil(lambda: presenter.view.next_label.text() == "next: row 2", timeout=3000)
+        qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)  # a new frame (#60)
         panel.take_button.click()
         panel.disconnect_instrument()
     assert [model.sheet.text(r, 0) for r in range(3)] == ["-20", "-18", "-16"]

@@ -40,6 +40,7 @@ def test_the_crosscal_take_writes_the_encoder_nominal_where_no_readout_does(wind
         panel.take_button.click()
         # a typed encoder cell in the next row stays as typed
         model.set_cells([(3, keys.index("encoder_deg"), "100.0100")], "typed")
+        qtbot.waitUntil(lambda: not panel.used_again(), timeout=3000)  # a new frame (#60)
         panel.take_button.click()
         panel.disconnect_instrument()
     assert [_text(model, 2, k) for k in ("mounting", "position", "ac_x_arcsec")] == \
