@@ -41,19 +41,45 @@ class StableReading:
 
 
 class StabilityGate:
+    """The gate (see the module's docstring). Each frame costs the same however many the
+    dwell holds: the spread is kept by monotonic queues of the largest and smallest values
+    per axis (a sliding-window extreme), and the frames are averaged only when a reading is
+    taken (the spread worked out again over every frame kept, at every frame, cost a 25 s
+    dwell of a 1 kHz stream quadratic time in the window's thread)."""
+
     def __init__(self, window: float, dwell_s: float, retake: bool = False) -> None:
         if not (window > 0 and dwell_s > 0):
             raise ValueError("the window and the dwell time must be greater than 0")
         self.window, self.dwell_s, self.retake = window, dwell_s, retake
-        self._frames: deque[tuple[float, np.ndarray, object]] = deque()
+        #: (time, values, tag, sequence number) of the frames kept
+        self._frames: deque[tuple[float, np.ndarray, object, int]] = deque()
         self._taken: np.ndarray | None = None
+        self._count = 0  # frames fed: the sequence number of the next
+        # per axis: (sequence number, value) of the frames that may yet be the largest
+        # (values falling from front to back) and the smallest (rising)
+        self._highs: list[deque[tuple[int, float]]] = []
+        self._lows: list[deque[tuple[int, float]]] = []
+
+    def _clear(self) -> None:
+        self._frames.clear()
+        for q in self._highs + self._lows:
+            q.clear()
+
+    def _spread_now(self) -> np.ndarray:
+        return np.array([h[0][1] - lo[0][1] for h, lo in zip(self._highs, self._lows,
+                                                              strict=True)])
+
+    def _drop_oldest(self) -> None:
+        seq = self._frames.popleft()[3]
+        for q in self._highs + self._lows:
+            if q and q[0][0] == seq:
+                q.popleft()
 
     def spread(self) -> np.ndarray | None:
         """Largest minus smallest per axis over the frames kept (None before any)."""
         if not self._frames:
             return None
-        values = np.array([v for _, v, _ in self._frames])
-        return values.max(axis=0) - values.min(axis=0)
+        return self._spread_now()
 
     def progress(self, time_s: float) -> tuple[str, float]:
         """Where the gate stands at ``time_s`` (the last frame's time): ``("taken", 0)``
@@ -70,7 +96,7 @@ class StabilityGate:
         """Forget the frames of the dwell in progress (the link was lost: the next reading
         comes from frames after it). A position just taken stays taken: the same position
         after a reconnection is not taken twice."""
-        self._frames.clear()
+        self._clear()
 
     def feed(self, time_s: float, values, tag: object = None) -> StableReading | None:
         """One frame (``tag``: what names it, e.g. its index in the raw record; the reading
@@ -80,25 +106,35 @@ class StabilityGate:
             if np.all(np.abs(value - self._taken) <= self.window):
                 return None  # still at the position just taken
             self._taken = None
-            self._frames.clear()
-        self._frames.append((time_s, value, tag))
+            self._clear()
+        if len(self._highs) != value.size:  # the first frame, or another instrument's
+            self._clear()
+            self._highs = [deque() for _ in range(value.size)]
+            self._lows = [deque() for _ in range(value.size)]
+        seq, self._count = self._count, self._count + 1
+        self._frames.append((time_s, value, tag, seq))
+        for axis, v in enumerate(value.tolist()):
+            high, low = self._highs[axis], self._lows[axis]
+            while high and high[-1][1] <= v:
+                high.pop()
+            high.append((seq, v))
+            while low and low[-1][1] >= v:
+                low.pop()
+            low.append((seq, v))
         # keep the newest frames within the window of one another; older ones reset the dwell
-        values = np.array([v for _, v, _ in self._frames])
-        while len(self._frames) > 1 and np.any(values.max(axis=0) - values.min(axis=0)
-                                               > self.window):
-            self._frames.popleft()
-            values = values[1:]
+        while len(self._frames) > 1 and np.any(self._spread_now() > self.window):
+            self._drop_oldest()
         # frames older than the dwell are not needed beyond the oldest one covering it
         while len(self._frames) > 1 and self._frames[1][0] <= time_s - self.dwell_s + _EPS:
-            self._frames.popleft()
-            values = values[1:]
+            self._drop_oldest()
         if time_s - self._frames[0][0] < self.dwell_s - _EPS:
             return None
+        values = np.array([v for _, v, _, _ in self._frames])
         reading = StableReading(time_s, tuple(values.mean(axis=0)),
                                 tuple(values.std(axis=0, ddof=1) if len(values) > 1
                                       else np.zeros(values.shape[1])), len(values),
                                 self._frames[0][2])
-        self._frames.clear()
+        self._clear()
         if not self.retake:
             self._taken = values.mean(axis=0)
         return reading

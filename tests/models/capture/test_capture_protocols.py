@@ -262,12 +262,15 @@ def test_after_a_restart_the_dwell_is_of_frames_after_it_and_a_taken_position_st
     assert gate.progress(2.4) == ("taken", 0.0)
 
 
-def test_a_reading_names_its_first_frame_however_long_the_dwell():
-    gate = StabilityGate(window=0.5, dwell_s=30.0)
-    frames = [gate.feed(0.001 * i, [1.0], tag=1000 + i) for i in range(30_001)]
+def test_a_reading_names_its_first_frame():
+    """The reading carries its first frame's tag (the panel counted back through the 8,192
+    frames it keeps, and named one frame for a dwell longer than those)."""
+    gate = StabilityGate(window=0.5, dwell_s=1.0)
+    # moving first (those frames leave the dwell), then settled from frame 1005
+    frames = [gate.feed(0.01 * i, [0.0 if i < 5 else 1.0], tag=1000 + i) for i in range(106)]
     reading = frames[-1]
-    assert frames[:-1] == [None] * 30_000 and reading.frames == 30_001
-    assert reading.first_tag == 1000  # the panel counted back through 8,192 frames kept
+    assert frames[:-1] == [None] * 105 and reading.frames == 101
+    assert reading.first_tag == 1005
 
 
 @pytest.mark.parametrize("first", [10.0, 0.0, 359.9999])
@@ -285,6 +288,55 @@ def test_angles_unwrap_from_frame_to_frame_at_zero_and_at_the_opposite_side(firs
     assert (hz - turned + 180.0) % 360.0 - 180.0 == pytest.approx(np.mean(noise), abs=1e-9)
     assert v == pytest.approx(270.0)
     assert 0.0 <= hz < 360.0
+
+
+def _naive_gate(frames, window, dwell, retake=False):
+    """The gate's rule worked out from scratch at every frame (the test's own, quadratic):
+    the readings as (time, mean, count, first tag)."""
+    kept, taken, out = [], None, []
+    for i, (t, v) in enumerate(frames):
+        v = np.atleast_1d(np.asarray(v, dtype=float))
+        if taken is not None:
+            if np.all(np.abs(v - taken) <= window):
+                continue
+            taken, kept = None, []
+        kept.append((t, v, i))
+        while len(kept) > 1 and np.any(np.ptp([k[1] for k in kept], axis=0) > window):
+            kept.pop(0)
+        while len(kept) > 1 and kept[1][0] <= t - dwell + 1e-9:
+            kept.pop(0)
+        if t - kept[0][0] < dwell - 1e-9:
+            continue
+        mean = np.mean([k[1] for k in kept], axis=0)
+        out.append((t, tuple(mean), len(kept), kept[0][2]))
+        kept = []
+        if not retake:
+            taken = mean
+    return out
+
+
+@settings(max_examples=150, deadline=None)
+@given(steps=st.lists(st.tuples(st.floats(0.001, 0.3), st.floats(-1.0, 1.0),
+                                st.floats(-1.0, 1.0)), min_size=1, max_size=120),
+       window=st.floats(0.05, 1.5), dwell=st.floats(0.01, 1.0), retake=st.booleans())
+def test_the_gate_takes_what_the_rule_worked_out_from_scratch_takes(steps, window, dwell,
+                                                                     retake):
+    """Random two-axis streams (jumps, drifts, pauses): the gate's readings are those of the
+    rule evaluated afresh over the frames at every step."""
+    t, frames = 0.0, []
+    for dt, x, y in steps:
+        t += dt
+        frames.append((t, [round(x, 3), round(y, 3)]))
+    gate = StabilityGate(window=window, dwell_s=dwell, retake=retake)
+    got = []
+    for i, (time_s, v) in enumerate(frames):
+        r = gate.feed(time_s, v, tag=i)
+        if r is not None:
+            got.append((r.time_s, r.mean, r.frames, r.first_tag))
+    expected = _naive_gate(frames, window, dwell, retake)
+    assert [(a, c, d) for a, _, c, d in got] == [(a, c, d) for a, _, c, d in expected]
+    for (_, m, _, _), (_, e, _, _) in zip(got, expected, strict=True):
+        assert m == pytest.approx(e, abs=1e-12)
 
 
 def test_the_gate_refuses_a_window_or_dwell_of_zero():
