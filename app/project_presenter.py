@@ -372,9 +372,12 @@ class ProjectPresenter(QObject):
         if not self.is_modified and not pending:
             return
         if self._rows() > AUTOSAVE_THREAD_ROWS:
+            # the raw capture too (it was left out: a project recovered from a large sheet's
+            # autosave had its readings and no frames, and its certificate no raw digest);
+            # its sessions are snapshots whose frames are encoded blocks, cheap to take here
             project = self._with_pending(
                 Project({p.kind.key: p.state(deep=False) for p in self.presenters},
-                        dict(self.metadata)), pending)
+                        dict(self.metadata), self.raw_capture()), pending)
             if self._autosave_thread is not None and self._autosave_thread.is_alive():
                 self.autosave_timer.start()  # the last one is still writing: try again soon
                 return

@@ -88,7 +88,7 @@ from PySide6.QtWidgets import (
 from app.capture.instruments import INSTRUMENTS
 from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation
-from models.capture.raw_record import frame_text
+from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
 from models.capture.stability import StabilityGate, UnwrappedAngles
 from models.capture.take_cells import (
     MICRORADIAN_ARCSEC,
@@ -307,19 +307,31 @@ class _Session:
         if self.t0 > 0.0:
             self.started_utc = (datetime.fromisoformat(worker.started_utc)
                                 + timedelta(seconds=self.t0)).isoformat()
-        self.frames: list[list] = []
+        #: the frames in their stored form, encoded a block at a time once full (a day's
+        #: stream held as lists took ~215 bytes a frame and every save encoded them all
+        #: again, twice: seconds in the window's thread at every autosave)
+        self.frames = FrameBlocks()
         self.takes: list[list[int]] = []
         #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
         self.steps: list[float] = []
 
-    def stored(self) -> dict:
+    def catch_up(self) -> None:
+        """The worker's new lines converted to their stored form (a block at a time as the
+        stream goes, so no save or take converts hours of them at once)."""
         raw = self.worker.raw
         end = len(raw) if self.end is None else self.end
-        for t, line, used in raw[self.first + len(self.frames):end]:
-            self.frames.append([round(float(t) - self.t0, 6), frame_text(line),
-                                int(bool(used))])
+        self.frames.extend([round(float(t) - self.t0, 6), frame_text(line), int(bool(used))]
+                           for t, line, used in raw[self.first + len(self.frames):end])
+
+    def behind(self) -> int:
+        """Lines the worker holds that are not converted yet."""
+        end = len(self.worker.raw) if self.end is None else self.end
+        return end - self.first - len(self.frames)
+
+    def stored(self) -> dict:
+        self.catch_up()
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
-                "started_utc": self.started_utc, "frames": list(self.frames),
+                "started_utc": self.started_utc, "frames": self.frames.snapshot(),
                 "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
 
 
@@ -869,7 +881,10 @@ class CapturePanel(QDockWidget):
     def load_raw_capture(self, raw: dict[str, list[dict]]) -> None:
         """The sessions of a project opened (or none for a new one); a connection open now
         goes on in a session of its own."""
-        self.sessions = {k: list(v) for k, v in raw.items()}
+        # the frames of a project opened held as their blocks' text too (encoded again at
+        # every save they froze the window as a live session's did)
+        self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"])}
+                             for session in v] for k, v in raw.items()}
         self.measured_columns = {}  # another project's rows
 
     # ------------------------------------------------------------ auto-take
@@ -1112,6 +1127,9 @@ class CapturePanel(QDockWidget):
                 ended = ended or event.final
                 continue
             link.received += 1
+            if link.session is not None and link.received % 1000 == 0 \
+                    and link.session.behind() >= FRAMES_PER_BLOCK:
+                link.session.catch_up()  # a block's worth converted now, not hours at a save
             link.frames.append((event.time_s, event.values, event.frame))
             link.latest = event
             link.fresh_at = time.perf_counter()

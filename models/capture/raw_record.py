@@ -30,11 +30,13 @@ from __future__ import annotations
 import hashlib
 import json
 import math
+from collections.abc import Iterator, Mapping, Sequence
 from typing import Any
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["KEYS", "frame_text", "raw_digest", "raw_sessions_from_json", "session_json"]
+__all__ = ["FRAMES_PER_BLOCK", "KEYS", "FrameBlocks", "frame_text", "raw_digest", "raw_sessions_from_json",
+           "session_json", "sessions_json_pieces"]
 
 #: a session's keys, in the order they are stored
 KEYS = ("instrument", "port", "baud", "started_utc", "frames", "takes")
@@ -63,10 +65,121 @@ def session_json(instrument: str, port: str, baud: int, started_utc: str,
     return session
 
 
-def raw_digest(sessions: list[dict[str, Any]]) -> str:
+def _dumps(value: Any) -> str:
+    return json.dumps(value, ensure_ascii=False, separators=(",", ":"))
+
+
+#: frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)
+FRAMES_PER_BLOCK = 20_000
+
+
+class FrameBlocks(Sequence):
+    """A session's frames as stored ([seconds, line, 0/1] each), held as JSON text in blocks
+    of :data:`FRAMES_PER_BLOCK` that are encoded once, when full, and never again.
+
+    A day's stream is millions of frames: held as lists they took ~215 bytes each and a
+    save encoded every one of them again, twice (the digest and the file): 5 s in the
+    window's thread after 8 h at 100 Hz, at every autosave. Blocks keep ~40 bytes a frame
+    and a save joins text. :meth:`json_pieces` is exactly ``json.dumps(list(self),
+    ensure_ascii=False, separators=(",", ":"))`` (a JSON array is its items' texts joined
+    by commas), so the digest and the file are the same bytes as before. Indexing decodes
+    the block that holds the frame (the last one decoded is kept)."""
+
+    def __init__(self, frames: Sequence[list] = (), per_block: int = FRAMES_PER_BLOCK) -> None:
+        self.per_block = per_block
+        self._blocks: list[str] = []  # each the texts of per_block frames, comma-joined
+        self._tail: list[list] = []
+        self._decoded: tuple[int, list[list]] = (-1, [])
+        self.extend(frames)
+
+    def extend(self, frames) -> None:
+        """Frames in their stored form appended (lists [seconds, text, 0/1])."""
+        for frame in frames:
+            self._tail.append(frame)
+            if len(self._tail) == self.per_block:
+                self._blocks.append(_dumps(self._tail)[1:-1])
+                self._tail = []
+
+    def __len__(self) -> int:
+        return len(self._blocks) * self.per_block + len(self._tail)
+
+    def _block(self, b: int) -> list[list]:
+        if b == len(self._blocks):
+            return self._tail
+        if self._decoded[0] != b:
+            self._decoded = (b, json.loads(f"[{self._blocks[b]}]"))
+        return self._decoded[1]
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        n = len(self)
+        if index < 0:
+            index += n
+        if not 0 <= index < n:
+            raise IndexError("frame index out of range")
+        return self._block(index // self.per_block)[index % self.per_block]
+
+    def __delitem__(self, index) -> None:
+        """Only the frames from ``index`` on, ``del frames[k:]`` (a session cut short)."""
+        if not (isinstance(index, slice) and index.stop is None and index.step is None):
+            raise TypeError("only the frames from an index on can be deleted")
+        keep = self[:index.start or 0] if (index.start or 0) >= 0 else self[:index.start]
+        self._blocks, self._tail, self._decoded = [], [], (-1, [])
+        self.extend(keep)
+
+    def __iter__(self):
+        for b in range(len(self._blocks) + 1):
+            yield from self._block(b)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Sequence) and len(self) == len(other) and \
+            all(a == b for a, b in zip(self, other, strict=True))
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def snapshot(self) -> FrameBlocks:
+        """The frames as they are now (the blocks shared: they never change)."""
+        out = FrameBlocks(per_block=self.per_block)
+        out._blocks, out._tail = list(self._blocks), list(self._tail)
+        return out
+
+    def json_pieces(self) -> Iterator[str]:
+        """The JSON array's text, a block at a time."""
+        yield "["
+        first = True
+        for block in self._blocks:
+            yield block if first else "," + block
+            first = False
+        if self._tail:
+            text = _dumps(self._tail)[1:-1]
+            yield text if first else "," + text
+        yield "]"
+
+
+def sessions_json_pieces(sessions: Sequence[Mapping[str, Any]]) -> Iterator[str]:
+    """The sessions' JSON text as stored (``json.dumps(sessions, ensure_ascii=False,
+    separators=(",", ":"))``), in pieces: a session's frames block by block."""
+    yield "["
+    for i, session in enumerate(sessions):
+        yield "," if i else ""
+        yield "{"
+        for j, (key, value) in enumerate(session.items()):
+            yield ("," if j else "") + _dumps(key) + ":"
+            if isinstance(value, FrameBlocks):
+                yield from value.json_pieces()
+            else:
+                yield _dumps(value)
+        yield "}"
+    yield "]"
+
+
+def raw_digest(sessions: Sequence[Mapping[str, Any]]) -> str:
     """SHA-256 (hex) of the sessions as stored."""
-    text = json.dumps(sessions, ensure_ascii=False, separators=(",", ":"))
-    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+    digest = hashlib.sha256()
+    for piece in sessions_json_pieces(sessions):
+        digest.update(piece.encode("utf-8"))
+    return digest.hexdigest()
 
 
 def _latin1(text: str) -> bool:
@@ -92,7 +205,8 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
                                      where=where, i=i, keys=", ".join(KEYS)))
         ok = (isinstance(session["instrument"], str) and isinstance(session["port"], str)
               and isinstance(session["baud"], int) and isinstance(session["started_utc"], str)
-              and isinstance(session["frames"], list) and isinstance(session["takes"], list))
+              and isinstance(session["frames"], list | FrameBlocks)
+              and isinstance(session["takes"], list))
         frames = session["frames"] if ok else []
         ok = ok and all(isinstance(f, list) and len(f) == 3 and isinstance(f[0], int | float)
                         and not isinstance(f[0], bool) and math.isfinite(f[0])

@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from models import __version__ as APP_VERSION
-from models.capture.raw_record import raw_digest, raw_sessions_from_json
+from models.capture.raw_record import raw_digest, raw_sessions_from_json, sessions_json_pieces
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.atomic_write import write_text_atomic
 
@@ -122,8 +122,15 @@ def project_json_parts(project: Project, between_blocks: Callable[[], None] | No
     if raw:
         yield ',"raw_capture":{'
         for i, (key, sessions) in enumerate(raw.items()):
+            # the sessions' text a block of frames at a time (models.capture.raw_record:
+            # a day's stream encoded in one call held the interpreter for seconds)
             yield (("," if i else "") + f'{dumps(key)}:{{"sha256":{dumps(raw_digest(sessions))},'
-                   f'"sessions":{dumps(sessions)}}}')
+                   '"sessions":')
+            for piece in sessions_json_pieces(sessions):
+                yield piece
+                if between_blocks is not None and len(piece) > 100_000:
+                    between_blocks()
+            yield "}"
             if between_blocks is not None:
                 between_blocks()
         yield "}"

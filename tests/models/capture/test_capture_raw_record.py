@@ -13,7 +13,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from app.certificate_issue import issue_certificate
-from models.capture.raw_record import raw_digest, raw_sessions_from_json, session_json
+from models.capture.raw_record import (
+    FrameBlocks,
+    raw_digest,
+    raw_sessions_from_json,
+    session_json,
+    sessions_json_pieces,
+)
 from models.certificate.metadata import CertificateMetadata
 from models.project.file import (
     SCHEMA_VERSION,
@@ -142,6 +148,30 @@ def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot,
     assert panel.raw_capture() == saved
 
 
+@pytest.mark.slow
+def test_the_autosave_of_a_large_sheet_keeps_the_frames(window, qtbot, monkeypatch):
+    """A sheet large enough to be autosaved in a thread of its own: the recovery file holds
+    the raw capture too (it was left out: a project recovered from it had its readings and
+    no frames, and its certificate no raw digest)."""
+    import app.project_presenter as project_presenter
+
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    presenter = window.presenter("polygon")
+    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 3))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(2.5, 1.0)]) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=1)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        panel.take_button.click()
+        panel.disconnect_instrument()
+    saved = panel.raw_capture()
+    monkeypatch.setattr(project_presenter, "AUTOSAVE_THREAD_ROWS", -1)  # every sheet is large
+    window.projects.autosave()
+    window.projects._autosave_thread.join(timeout=30)
+    recovered = window.projects.recovery.load(window.projects.recovery.path)
+    assert recovered.raw_capture == saved and saved["polygon"][0]["takes"]
+
+
 def test_each_takes_step_is_kept_and_checked():
     """#41 live day: ``steps`` (per take, the step its cells were rounded to) is optional,
     kept in order and in the digest; one per take, finite and not negative, else refused."""
@@ -158,3 +188,50 @@ def test_each_takes_step_is_kept_and_checked():
     for bad in ([0.01, 0.01], [-0.01], [float("nan")], ["0.01"], [True], 0.01):
         with pytest.raises(ValueError, match="session 1"):
             raw_sessions_from_json([{**new, "steps": bad}], "p")
+
+
+_FRAME = st.tuples(st.floats(0, 1e5, allow_nan=False).map(lambda t: round(t, 6)),
+                   st.text(st.characters(min_codepoint=0, max_codepoint=255), max_size=12),
+                   st.sampled_from([0, 1])).map(list)
+
+
+@settings(max_examples=120, deadline=None)
+@given(frames=st.lists(_FRAME, max_size=60), per_block=st.integers(1, 7),
+       cut=st.integers(0, 70), steps=st.booleans())
+def test_frames_held_as_blocks_are_stored_as_the_list_would_be(frames, per_block, cut, steps):
+    """FrameBlocks (the frames encoded a block at a time) give the same JSON text, digest and
+    frames as the plain list: the file, the register's digest and older files agree."""
+    blocks = FrameBlocks(frames, per_block=per_block)
+    assert len(blocks) == len(frames) and list(blocks) == frames and blocks == frames
+    assert [blocks[i] for i in range(-len(frames), len(frames))] == frames + frames
+    assert blocks[2:9] == frames[2:9] and blocks[cut:] == frames[cut:]
+    session = {"instrument": "autocollimator", "port": "/dev/ttyUSB0", "baud": 9600,
+               "started_utc": "2026-12-05T06:00:00+00:00", "frames": blocks,
+               "takes": [[0, 0, 0]] if frames else []}
+    if steps:
+        session["steps"] = [0.01] if frames else []
+    plain = {**session, "frames": frames}
+    text = json.dumps([plain, plain], ensure_ascii=False, separators=(",", ":"))
+    assert "".join(sessions_json_pieces([session, plain])) == text
+    assert raw_digest([session, session]) == hashlib.sha256(text.encode("utf-8")).hexdigest()
+    snapshot = blocks.snapshot()
+    blocks.extend([[1.0, "later", 1]])
+    assert snapshot == frames  # a snapshot keeps the frames it was taken with
+    del blocks[cut:]
+    assert list(blocks) == (frames + [[1.0, "later", 1]])[:cut]
+
+
+def test_a_day_of_frames_is_saved_from_its_blocks_and_opens_alike(tmp_path):
+    """50,000 frames in blocks (three of them full) go to the file and come back as the list
+    they were, digest checked on opening."""
+    frames = [[round(0.01 * i, 6), f"3 003 {i % 997 * 0.001:.3f} -1.250", i % 2] for i in
+              range(50_000)]
+    blocks = FrameBlocks(frames)
+    session = {"instrument": "autocollimator", "port": "/dev/ttyUSB0", "baud": 9600,
+               "started_utc": "2026-12-05T06:00:00+00:00", "frames": blocks,
+               "takes": [[0, 100, 149], [1, 49_900, 49_999]]}
+    path = tmp_path / "day.anglebench"
+    save_project(path, Project({"polygon": WorkbenchState([["1"], ["2"]], {})}, {},
+                               {"polygon": [session]}))
+    (opened,) = load_project(path).raw_capture["polygon"]
+    assert opened["frames"] == frames and opened["takes"] == session["takes"]
