@@ -7891,7 +7891,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)</extracomment>
+        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -7964,12 +7964,29 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>{value}（链路中断）</translation>
     </message>
     <message>
+        <source>{instrument} on {port}</source>
+        <translation>{port} 上的{instrument}</translation>
+    </message>
+    <message>
         <source>The demonstration instrument did not start: {reason}</source>
+        <extracomment>why a take was refused, or auto-take switched off (until the next take)</extracomment>
         <translation>演示仪器未能启动：{reason}</translation>
+    </message>
+    <message>
+        <source>Auto-take: waiting for {instrument} (link lost)</source>
+        <translation>自动取数：等待{instrument}（链路中断）</translation>
+    </message>
+    <message>
+        <source>Auto-take: waiting for a new reading from {instrument}</source>
+        <translation>自动取数：等待{instrument}的新读数</translation>
     </message>
     <message>
         <source> — the output spreads {spread} over a second, more than the window: widen the window</source>
         <translation> — 输出在一秒内的离散为 {spread}，超过稳定范围：请放宽稳定范围</translation>
+    </message>
+    <message>
+        <source>Auto-take switched off: the link to {instrument} ended ({reason})</source>
+        <translation>自动取数已关闭：与{instrument}的链路已结束（{reason}）</translation>
     </message>
     <message>
         <source>Spread over the last second: {spread}{unit}</source>
@@ -7977,7 +7994,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Take reading (F9)</source>
-        <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision)</extracomment>
+        <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision) per workbench, the columns an instrument has filled or was set to fill: the plan&apos;s nominal is never written there (#60: a readout&apos;s link gave up and the plan&apos;s expected encoder value went into its column as if read)</extracomment>
         <translation>取读数 (F9)</translation>
     </message>
     <message>
@@ -7991,6 +8008,14 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{reason} (reconnecting)</source>
         <translation>{reason}（正在重新连接）</translation>
+    </message>
+    <message>
+        <source>Not taken: no reading from {instrument} (link lost)</source>
+        <translation>未取数：{instrument}没有读数（链路中断）</translation>
+    </message>
+    <message>
+        <source>Not taken: no new reading from {instrument} since the last take</source>
+        <translation>未取数：自上次取数以来{instrument}没有新的读数</translation>
     </message>
     <message>
         <source>This workbench has no column for this instrument&apos;s reading: choose a cell first (readout) or another workbench</source>
@@ -8366,7 +8391,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{where}: the raw frames must be a list of sessions</source>
-        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit</extracomment>
+        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)</extracomment>
         <translation>{where}：原始数据帧必须是采集会话的列表</translation>
     </message>
     <message>
