@@ -867,7 +867,12 @@ class CapturePanel(QDockWidget):
     # ------------------------------------------------------------ the raw frames
     def raw_sessions(self, workbench: str) -> list[dict]:
         """The sessions of a workbench in their stored form, the open connections' included."""
-        out = list(self.sessions.get(workbench, []))
+        # copies (their takes and steps too): the fringe's live take rewrites an earlier
+        # session's takes in place, in the window's thread, while an autosave thread may be
+        # writing these sessions (its digest then did not match the text it wrote)
+        out = [{**s, "takes": [list(t) for t in s["takes"]],
+                **({"steps": list(s["steps"])} if "steps" in s else {})}
+               for s in self.sessions.get(workbench, [])]
         for link in self.links:
             if link.session is not None and link.session.workbench == workbench \
                     and (stored := link.session.stored())["frames"]:
@@ -887,6 +892,18 @@ class CapturePanel(QDockWidget):
         # every save they froze the window as a live session's did)
         self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"])}
                              for session in v] for k, v in raw.items()}
+        # an instrument still connected goes on in a session of its own, from its next
+        # frame: the last project's frames and takes (rows of its sheet) are not this one's
+        # (they were saved into it, with a false "edited after capture" on its certificate)
+        self.taken = []
+        for link in self.links:
+            if link.session is not None:
+                start = link.session.first  # as _split_sessions: after the frame last read
+                if link.latest is not None:
+                    start = max(start, link.latest.frame + 1)
+                link.session = _Session(link.session.workbench, link.session.kind,
+                                        link.session.worker, start)
+                link.taken_frame = max(link.taken_frame, start - 1)
         self.measured_columns = {}  # another project's rows
 
     # ------------------------------------------------------------ auto-take

@@ -53,6 +53,9 @@ class SampleBlock:
     u_cos: np.ndarray
     refused: int = 0
     reasons: list[str] = field(default_factory=list)
+    #: lines kept and not read that were not refused (a connection's first line: it may be
+    #: the rest of a sample begun before the connection)
+    stale: int = 0
 
 
 
@@ -126,6 +129,7 @@ class SignalStreamWorker(LinkThread):
         last_good = time.monotonic()
         heard = False
         joined = False  # whether the connection's first line has come
+        stale = 0
         try:
             while not self._stop.is_set():
                 data = self._read(link)
@@ -141,13 +145,12 @@ class SignalStreamWorker(LinkThread):
                         if parsed.used[0]:
                             parsed = dataclasses.replace(
                                 parsed, u_sin=parsed.u_sin[1:], u_cos=parsed.u_cos[1:],
-                                used=np.concatenate([[False], parsed.used[1:]]),
-                                refused=parsed.refused + 1,
-                                reasons=["the connection's first line (it may be the rest of "
-                                         "a sample begun before it)", *parsed.reasons])
+                                used=np.concatenate([[False], parsed.used[1:]]))
+                            stale = 1
                     block = SampleBlock(self.lines, now - self._t0, lines, parsed.used,
                                         parsed.u_sin, parsed.u_cos, parsed.refused,
-                                        parsed.reasons)
+                                        parsed.reasons, stale)
+                    stale = 0
                     self.lines += len(lines)
                     self.samples += parsed.u_sin.size
                     self.refused += parsed.refused

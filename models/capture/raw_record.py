@@ -124,9 +124,13 @@ class FrameBlocks(Sequence):
         """Only the frames from ``index`` on, ``del frames[k:]`` (a session cut short)."""
         if not (isinstance(index, slice) and index.stop is None and index.step is None):
             raise TypeError("only the frames from an index on can be deleted")
-        keep = self[:index.start or 0] if (index.start or 0) >= 0 else self[:index.start]
-        self._blocks, self._tail, self._decoded = [], [], (-1, [])
-        self.extend(keep)
+        k = len(range(len(self))[:index.start])  # the frames kept
+        # the full blocks before the cut stay as they are (a switch of workbench cut a day's
+        # stream: rebuilding every block held the window 5.5 s at 2.9 M frames)
+        b = k // self.per_block
+        rest = self._block(b)[:k % self.per_block] if b <= len(self._blocks) else []
+        self._blocks, self._tail, self._decoded = self._blocks[:b], [], (-1, [])
+        self.extend(rest)
 
     def __iter__(self):
         for b in range(len(self._blocks) + 1):

@@ -40,3 +40,21 @@ def test_a_sessions_frames_are_stored_as_the_plain_conversion_would_store_them()
     worker.raw.append((1000.0, b"3 003 1.001 2.000", True))
     assert len(stored["frames"]) == len(worker.raw) - 1
     assert len(session.stored()["frames"]) == len(worker.raw)
+
+
+def test_the_sessions_handed_out_do_not_change_when_the_panels_do(window):
+    """An autosave thread writes the sessions raw_sessions gave it while the fringe's live
+    take rewrites an earlier session's takes in place (rows to -1) in the window's thread:
+    the file's digest then did not match the text written after it (recovery refused)."""
+    panel = window.capture_panel
+    session = {"instrument": "signals", "port": "tcp://127.0.0.1:1", "baud": 0,
+               "started_utc": "2026-12-05T07:00:00+00:00",
+               "frames": [[0.0, "0.1 0.2", 1], [0.001, "0.2 0.1", 1]],
+               "takes": [[0, 0, 0], [1, 1, 1]], "steps": [0.0, 0.0]}
+    panel.sessions["fringe"] = [session]
+    handed = panel.raw_sessions("fringe")
+    digest = raw_digest(handed)
+    session["takes"] = [[-1, a, b] for _, a, b in session["takes"]]  # as LiveSignals.take does
+    session["steps"].append(1.0)
+    assert raw_digest(handed) == digest and handed[0]["takes"] == [[0, 0, 0], [1, 1, 1]]
+    assert list(handed[0]) == list(session)  # the keys in their stored order

@@ -75,3 +75,31 @@ def test_each_workbench_keeps_the_raw_frames_of_its_own_takes(window, qtbot):
                 assert float(model.sheet.text(row, x)) == pytest.approx(got[0], abs=0.005)
         assert readings_edited_after_capture(presenter.kind, presenter.settings,
                                              presenter.state().rows, sessions[key], {}) == []
+
+
+def test_a_new_project_while_connected_keeps_none_of_the_last_ones_frames(window, qtbot):
+    """File › New while the instrument stays connected: the last job's session (its frames
+    and its take into row 1) went on into the new project, whose certificate then said
+    "reading of row 1 edited after capture: 3.25 → 7.00"."""
+    panel = window.capture_panel
+    polygon = _show(window, "polygon")
+    model, keys = _start(polygon)
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled() and not panel.used_again(),
+                        timeout=5000)
+        assert panel.take_reading() == "row 1"
+        window.projects.new_project()
+        assert panel.raw_sessions("polygon") == [] or all(
+            not s["takes"] for s in panel.raw_sessions("polygon"))
+        polygon = _show(window, "polygon")
+        model, keys = _start(polygon)
+        model.set_cells([(0, keys.index("ac_x_arcsec"), "7.00")], "typed")  # the new job's
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled() and not panel.used_again(),
+                        timeout=5000)
+        assert panel.take_reading() == "row 2"
+        panel.disconnect_instrument()
+    sessions = panel.raw_sessions("polygon")
+    assert [t[0] for s in sessions for t in s["takes"]] == [1]
+    assert readings_edited_after_capture(polygon.kind, polygon.settings, polygon.state().rows,
+                                         sessions, {}) == []
