@@ -283,6 +283,15 @@ class DemonstrationProcess:
         self.close()
 
 
+class _ShownWhenSaid(QLabel):
+    """A label that takes no room while it says nothing (an empty one left a blank band at
+    the top of a panel docked at a side)."""
+
+    def setText(self, text: str) -> None:  # noqa: N802 (Qt's name)
+        super().setText(text)
+        self.setVisible(bool(text))
+
+
 class _Session:
     """One connection's raw frames on one workbench as they will be stored, converted as
     they arrive (a project saved during a long stream converts only the frames since the
@@ -627,8 +636,9 @@ class CapturePanel(QDockWidget):
         auto_form.addRow(self.dwell_label, self.dwell_box)
         self.auto_state = QLabel("")
         #: why a take was refused, or auto-take switched off (until the next take)
-        self.take_note = QLabel("")
+        self.take_note = _ShownWhenSaid("")
         self.take_note.setStyleSheet("color: #b00020;")
+        self.take_note.setVisible(False)
         for widget in (self.guide, self.stability, self.allan, self.auto_state, self.take_note):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
