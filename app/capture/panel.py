@@ -857,6 +857,12 @@ class CapturePanel(QDockWidget):
             session = link.session
             if session is None or session.workbench == key:
                 continue
+            if not session.takes:
+                # nothing taken on the last workbench: the session goes on with the one in
+                # front (a glance at another tab left a session of frames behind none of its
+                # readings there, under its certificate's raw digest)
+                session.workbench = key
+                continue
             start = session.first
             if link.latest is not None:
                 start = max(start, link.latest.frame + 1)

@@ -103,3 +103,27 @@ def test_a_new_project_while_connected_keeps_none_of_the_last_ones_frames(window
     assert [t[0] for s in sessions for t in s["takes"]] == [1]
     assert readings_edited_after_capture(polygon.kind, polygon.settings, polygon.state().rows,
                                          sessions, {}) == []
+
+
+def test_a_glance_at_another_tab_files_no_session_there(window, qtbot):
+    """Connected on the polygon, the cross-calibration's tab looked at and left, nothing
+    taken there: it has no raw session (it had one of frames behind none of its readings)."""
+    panel = window.capture_panel
+    polygon = _show(window, "polygon")
+    _start(polygon)
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)]) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled() and not panel.used_again(),
+                        timeout=5000)
+        _show(window, "crosscal")
+        qtbot.wait(100)
+        _show(window, "polygon")
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled() and not panel.used_again(),
+                        timeout=5000)
+        assert panel.take_reading() == "row 1"
+        panel.disconnect_instrument()
+    assert panel.raw_sessions("crosscal") == []
+    (session,) = panel.raw_sessions("polygon")
+    assert [t[0] for t in session["takes"]] == [0]
+    assert readings_edited_after_capture(polygon.kind, polygon.settings, polygon.state().rows,
+                                         [session], {}) == []
