@@ -324,18 +324,20 @@ class _Session:
         #: per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS)
         self.steps: list[float] = []
 
+    def _end(self) -> int:
+        """The raw index after this session's last line (the worker's newest while open)."""
+        return len(self.worker.raw) if self.end is None else self.end
+
     def catch_up(self) -> None:
         """The worker's new lines converted to their stored form (a block at a time as the
         stream goes, so no save or take converts hours of them at once)."""
-        raw = self.worker.raw
-        end = len(raw) if self.end is None else self.end
         self.frames.extend([round(float(t) - self.t0, 6), frame_text(line), int(bool(used))]
-                           for t, line, used in raw[self.first + len(self.frames):end])
+                           for t, line, used in
+                           self.worker.raw[self.first + len(self.frames):self._end()])
 
     def behind(self) -> int:
         """Lines the worker holds that are not converted yet."""
-        end = len(self.worker.raw) if self.end is None else self.end
-        return end - self.first - len(self.frames)
+        return self._end() - self.first - len(self.frames)
 
     def stored(self) -> dict:
         self.catch_up()
@@ -863,15 +865,25 @@ class CapturePanel(QDockWidget):
                 # readings there, under its certificate's raw digest)
                 session.workbench = key
                 continue
-            start = session.first
-            if link.latest is not None:
-                start = max(start, link.latest.frame + 1)
+            start = self._next_session(link, key)
             session.end = start
             del session.frames[start - session.first:]  # converted ahead, not taken in yet
             if (stored := session.stored())["frames"]:
                 self.sessions.setdefault(session.workbench, []).append(stored)
-            link.session = _Session(key, session.kind, session.worker, start)
-            link.taken_frame = max(link.taken_frame, start - 1)
+
+    @staticmethod
+    def _next_session(link: InstrumentLink, workbench: str) -> int:
+        """A new session of ``link``'s connection for ``workbench`` from the frame after the
+        last one read (which counts as used: a take needs a frame of the new session); the
+        raw index it starts at."""
+        session = link.session
+        assert session is not None
+        start = session.first
+        if link.latest is not None:
+            start = max(start, link.latest.frame + 1)
+        link.session = _Session(workbench, session.kind, session.worker, start)
+        link.taken_frame = max(link.taken_frame, start - 1)
+        return start
 
     def _refill_columns(self) -> None:
         presenter = getattr(self.window_, "current", None)
@@ -914,12 +926,7 @@ class CapturePanel(QDockWidget):
         self.taken = []
         for link in self.links:
             if link.session is not None:
-                start = link.session.first  # as _split_sessions: after the frame last read
-                if link.latest is not None:
-                    start = max(start, link.latest.frame + 1)
-                link.session = _Session(link.session.workbench, link.session.kind,
-                                        link.session.worker, start)
-                link.taken_frame = max(link.taken_frame, start - 1)
+                self._next_session(link, link.session.workbench)
         self.measured_columns = {}  # another project's rows
 
     # ------------------------------------------------------------ auto-take

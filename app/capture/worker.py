@@ -251,7 +251,6 @@ class CaptureWorker(LinkThread):
         heard_bytes = False
         last_refusal = ""
         start = last_good = time.monotonic()
-        transactions = self._transactions
         in_flight: float | None = None  # when the request in flight was sent
         heard_since_request = False
         asked_at = -1e9
@@ -286,16 +285,15 @@ class CaptureWorker(LinkThread):
                     partial_first = begun  # its replies follow requests
                     if instrument.stop:
                         link.write(instrument.stop)
-                ask = instrument.poll if polling else instrument.request_bytes(transactions + 1)
+                ask = instrument.poll if polling else instrument.request_bytes(self._transactions + 1)
                 if ask is not None and in_flight is None and (not polling
                                                               or now - asked_at >= self.poll_interval_s):
-                    transactions += 1
-                    self._transactions = transactions
+                    self._transactions += 1
                     link.write(ask)
                     self.requests += 1
                     in_flight = asked_at = now
                     heard_since_request = False
-                    expected = None if polling else instrument.transaction_of(transactions)
+                    expected = None if polling else instrument.transaction_of(self._transactions)
                 data = self._read(link)
                 if data:
                     heard_bytes = heard_since_request = True

@@ -35,6 +35,21 @@ def _show(window, key):
     return window.presenter(key)
 
 
+def _auto_take_on_an_empty_polygon(window, dwell_s: float):
+    """The polygon's sheet emptied, its first AC x cell current, auto-take on (window 0.3",
+    the dwell given): its model, column keys and the panel."""
+    presenter = _show(window, "polygon")
+    model = presenter.table_model
+    model.replace_all([], "empty")
+    keys = [c.key for c in model.sheet.columns]
+    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
+    panel = window.capture_panel
+    panel.auto.setChecked(True)
+    panel.window_box.setValue(0.3)
+    panel.dwell_box.setValue(dwell_s)
+    return model, keys, panel
+
+
 def _phases(panel, seen: set) -> QTimer:
     probe = QTimer()
     probe.setInterval(5)
@@ -199,15 +214,7 @@ def test_a_disconnect_mid_set_names_the_port_and_the_set_goes_on(window, qtbot, 
     """The link drops while the set is read (a pulled cable: nothing either way for 0.4 s
     on the pty; the socket cut on TCP): the panel says so naming the port, reconnects, and
     every face is still taken once, with its own value."""
-    presenter = _show(window, "polygon")
-    model = presenter.table_model
-    model.replace_all([], "empty")
-    keys = [c.key for c in model.sheet.columns]
-    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
-    panel = window.capture_panel
-    panel.auto.setChecked(True)
-    panel.window_box.setValue(0.3)
-    panel.dwell_box.setValue(0.1)
+    model, keys, panel = _auto_take_on_an_empty_polygon(window, dwell_s=0.1)
     statuses: list[str] = []
     positions = [(10.0 * i, 1.0) for i in range(1, 6)]
     with AutocollimatorSimulator(transport, faults=("disconnect",), disconnect_after=200,
@@ -235,15 +242,7 @@ def test_a_take_never_bridges_a_lost_link(window, qtbot):
     """The link is lost 0.2 s into a dwell of 0.5 s (the instrument silent for 0.4 s): the
     reading taken is the mean of frames after the reconnection only (it was the mean of
     the frames before the gap and the first one after it)."""
-    presenter = _show(window, "polygon")
-    model = presenter.table_model
-    model.replace_all([], "empty")
-    keys = [c.key for c in model.sheet.columns]
-    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
-    panel = window.capture_panel
-    panel.auto.setChecked(True)
-    panel.window_box.setValue(0.3)
-    panel.dwell_box.setValue(0.5)
+    model, keys, panel = _auto_take_on_an_empty_polygon(window, dwell_s=0.5)
     with AutocollimatorSimulator("pty", faults=("disconnect",), disconnect_after=50,
                                  gap_s=0.4, positions=[(4.0, 1.0)]) as sim:
         panel.connect_to("autocollimator", sim.port, **FAST)
@@ -260,15 +259,7 @@ def test_a_take_never_bridges_a_lost_link(window, qtbot):
 
 
 def test_line_noise_never_reaches_a_cell(window, qtbot):
-    presenter = _show(window, "polygon")
-    model = presenter.table_model
-    model.replace_all([], "empty")
-    keys = [c.key for c in model.sheet.columns]
-    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
-    panel = window.capture_panel
-    panel.auto.setChecked(True)
-    panel.window_box.setValue(0.3)
-    panel.dwell_box.setValue(0.1)
+    model, keys, panel = _auto_take_on_an_empty_polygon(window, dwell_s=0.1)
     positions = [(-5.0, 2.0), (7.5, 2.0), (0.25, 2.0)]
     with AutocollimatorSimulator("pty", faults=("noise",), positions=positions, hold_s=0.6) as sim:
         panel.connect_to("autocollimator", sim.port, **FAST)

@@ -125,8 +125,9 @@ def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_u
     assert "Instrument output" not in plain
 
 
-@pytest.mark.slow
-def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot, tmp_path):
+def _one_reading_taken_on_the_polygon(window, qtbot):
+    """An autocollimator connected, one reading taken into the polygon's first row and the
+    instrument disconnected: the capture panel."""
     window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
     presenter = window.presenter("polygon")
     presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 3))
@@ -136,6 +137,12 @@ def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot,
         qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
         panel.take_button.click()
         panel.disconnect_instrument()
+    return panel
+
+
+@pytest.mark.slow
+def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot, tmp_path):
+    panel = _one_reading_taken_on_the_polygon(window, qtbot)
     saved = panel.raw_capture()
     assert list(saved) == ["polygon"] and saved["polygon"][0]["takes"][0][0] == 0
     assert saved["polygon"][0]["frames"][saved["polygon"][0]["takes"][0][1]][1] == \
@@ -155,15 +162,7 @@ def test_the_autosave_of_a_large_sheet_keeps_the_frames(window, qtbot, monkeypat
     no frames, and its certificate no raw digest)."""
     import app.project_presenter as project_presenter
 
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
-    presenter = window.presenter("polygon")
-    presenter.view.table.setCurrentIndex(presenter.table_model.index(0, 3))
-    panel = window.capture_panel
-    with AutocollimatorSimulator("pty", positions=[(2.5, 1.0)]) as sim:
-        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=1)
-        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
-        panel.take_button.click()
-        panel.disconnect_instrument()
+    panel = _one_reading_taken_on_the_polygon(window, qtbot)
     saved = panel.raw_capture()
     monkeypatch.setattr(project_presenter, "AUTOSAVE_THREAD_ROWS", -1)  # every sheet is large
     window.projects.autosave()
