@@ -641,6 +641,9 @@ class CapturePanel(QDockWidget):
         self.take_note = _ShownWhenSaid("")
         self.take_note.setStyleSheet("color: #b00020;")
         self.take_note.setVisible(False)
+        # wide enough to wrap by words (a bottom-docked panel at 200 % squeezed it to a few
+        # letters a line)
+        self.take_note.setMinimumWidth(16 * self.take_note.fontMetrics().averageCharWidth())
         for widget in (self.guide, self.stability, self.allan, self.auto_state, self.take_note):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
