@@ -87,7 +87,7 @@ from PySide6.QtWidgets import (
 
 from app.capture.instruments import INSTRUMENTS
 from app.capture.worker import CaptureWorker, Fault, Reading
-from models.capture.allan import allan_deviation
+from models.capture.allan import allan_deviation, last_even_run
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
 from models.capture.stability import StabilityGate, UnwrappedAngles
 from models.capture.take_cells import (
@@ -363,6 +363,9 @@ class InstrumentLink:
         self.session: _Session | None = None
         self.last_fault = ""  # the fault the link recovered from, said while connected
         self.fresh_at = 0.0  # perf_counter time of the newest reading
+        #: the time of the last frame before the link's last fault: the Allan deviation is of
+        #: the frames after it (a reconnection is a gap in the series, however short)
+        self.gap_before = -math.inf
         self.lost = False  # the value shown is stale (greyed, "link lost")
         self.simulator = None  # a demonstration instrument this link started
         self.box = QGroupBox()
@@ -469,6 +472,7 @@ class InstrumentLink:
         self.simulator = simulator
         self.kind = kind
         self.frames.clear()
+        self.gap_before = -math.inf
         self.latest = None
         self.received = 0
         self.taken_frame = -1
@@ -1167,6 +1171,8 @@ class CapturePanel(QDockWidget):
                                     else tr("{reason} (reconnecting)").format(reason=reason))
                 link.status.setStyleSheet("color: #b00020;")
                 link.mark_lost(True)
+                if link.frames:
+                    link.gap_before = link.frames[-1][0]
                 if first and self.gate is not None:
                     self.gate.restart()  # a take never bridges the frames the link lost
                 ended = ended or event.final
@@ -1239,18 +1245,34 @@ class CapturePanel(QDockWidget):
                 spread=shown, unit='"' if scale != 1.0 or reading.unit == "arcsec" else ""))
         if now >= self._allan_due and len(self.frames) >= 16:
             self._allan_due = now + 1.0
-            times = np.array([t for t, _, _ in self.frames])
-            tau0 = float(np.median(np.diff(times)))
-            first = np.array([v[0] for _, v, _ in self.frames])
-            if degrees:
-                first = _unwrapped_deg(first, first[0])
-            if tau0 > 0:
-                taus, adev = allan_deviation(first, tau0)
-                # three of them (the shortest, a middle and the longest τ): the text stays short
-                picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
-                self.allan.setText(tr("Allan deviation (first axis): {figures}").format(
-                    figures=", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)"
-                                      for i in picked)))
+            self._show_allan(degrees, scale)
+
+    def _show_allan(self, degrees: bool, scale: float) -> None:
+        """The first instrument's Allan deviation over its frames since the last gap (a link
+        lost, a pause, a rate set anew): the formula takes frames as evenly spaced, and
+        frames from both sides of a gap as neighbours showed a step across it as noise."""
+        link = self.links[0]
+        kept = [frame for frame in self.frames if frame[0] > link.gap_before]
+        times = np.array([t for t, _, _ in kept])
+        start = last_even_run(times)
+        if len(kept) - start < 16:
+            self.allan.setText(tr("Allan deviation: waiting for frames after the gap")
+                               if self.frames else "")
+            return
+        times = times[start:]
+        tau0 = float(np.median(np.diff(times)))
+        first = np.array([v[0] for _, v, _ in kept[start:]])
+        if degrees:
+            first = _unwrapped_deg(first, first[0])
+        taus, adev = allan_deviation(first, tau0)
+        # three of them (the shortest, a middle and the longest τ): the text stays short
+        picked = sorted({0, len(taus) // 2, len(taus) - 1}) if len(taus) else []
+        figures = ", ".join(f"{adev[i] * scale:.3g} ({taus[i]:.3g} s)" for i in picked)
+        self.allan.setText(
+            tr("Allan deviation (first axis): {figures}").format(figures=figures)
+            if start == 0 and len(kept) == len(self.frames) else
+            tr("Allan deviation (first axis, since the last gap): {figures}").format(
+                figures=figures))
 
     # ------------------------------------------------------------ take reading
     def waiting_for(self) -> list[InstrumentLink]:

@@ -9,13 +9,22 @@ frequency" samples) is
 where ȳ_j is the mean of the m frames starting at j. White noise of standard
 deviation σ gives σ(τ) = σ/√m; a steady drift D per second gives σ(τ) = D·τ/√2, so
 the minimum shows how long averaging still helps.
+
+The formula holds for frames evenly spaced in time. A stream is not, across a link lost
+and found again or an instrument that paused: :func:`last_even_run` gives where the frames
+after the last such gap begin, and only those are used (frames on both sides of a gap
+taken as neighbours would mix two stretches of drift and report a τ that was not there).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["allan_deviation", "octave_factors"]
+__all__ = ["GAP_FACTOR", "allan_deviation", "last_even_run", "octave_factors"]
+
+#: an interval longer than this many times the stream's median interval is a gap: a polled
+#: instrument's replies jitter by a fraction of their interval, a reconnection takes many
+GAP_FACTOR = 2.0
 
 
 def octave_factors(n: int) -> np.ndarray:
@@ -42,3 +51,24 @@ def allan_deviation(values, tau0_s: float, factors=None) -> tuple[np.ndarray, np
         steps = means[k:] - means[:-k]
         deviations.append(np.sqrt(0.5 * np.mean(steps ** 2)))
     return m * tau0_s, np.array(deviations)
+
+
+def last_even_run(times_s, gap_factor: float = GAP_FACTOR) -> int:
+    """The index of the first frame of the stream's last evenly spaced run (``times_s`` in
+    seconds, ascending): after the last interval longer than ``gap_factor`` times the
+    typical one (a gap), shorter than a ``2 gap_factor``-th of it (the instrument's rate
+    changed) or not positive (a clock that went back, a time repeated). The typical
+    interval is the median of the newest 64, so a rate set anew is soon the rule and the
+    frames at the old rate the exception. 0 when the whole stream is one run."""
+    t = np.asarray(times_s, dtype=float)
+    if t.ndim != 1:
+        raise ValueError("the frames' times must be one series")
+    if len(t) < 2:
+        return 0
+    steps = np.diff(t)
+    typical = float(np.median(steps[-64:]))
+    if not typical > 0:  # the newest frames share a time: no spacing to go by
+        return len(t)
+    even = (steps >= typical / (2.0 * gap_factor)) & (steps <= gap_factor * typical)
+    breaks = np.flatnonzero(~even)
+    return int(breaks[-1]) + 1 if len(breaks) else 0

@@ -7891,7 +7891,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Instrument</source>
-        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows</extracomment>
+        <extracomment>where the demonstration instrument points in turn (8 s each) seconds from the worker&apos;s start to this session&apos;s the frames in their stored form, encoded a block at a time once full (a day&apos;s stream held as lists took ~215 bytes a frame and every save encoded them all again, twice: seconds in the window&apos;s thread at every autosave) per take, the step its cells were rounded to (raw_record.OPTIONAL_KEYS) the raw frame index of the last frame a take of this link used (-1: none): a take needs a newer one, one frame never fills two rows the time of the last frame before the link&apos;s last fault: the Allan deviation is of the frames after it (a reconnection is a gap in the series, however short)</extracomment>
         <translation>仪器</translation>
     </message>
     <message>
@@ -8008,6 +8008,14 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>{reason} (reconnecting)</source>
         <translation>{reason}（正在重新连接）</translation>
+    </message>
+    <message>
+        <source>Allan deviation: waiting for frames after the gap</source>
+        <translation>阿伦偏差：等待间断之后的帧</translation>
+    </message>
+    <message>
+        <source>Allan deviation (first axis, since the last gap): {figures}</source>
+        <translation>阿伦偏差（第一轴，自最后一次间断起）：{figures}</translation>
     </message>
     <message>
         <source>Not taken: no reading from {instrument} (link lost)</source>
@@ -8130,7 +8138,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>{port}: no answer for {seconds} s</source>
-        <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines framed, samples read and lines refused since the start
+        <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines kept and not read that were not refused (a connection&apos;s first line: it may be the rest of a sample begun before the connection) lines framed, samples read and lines refused since the start
 ----------
 seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>

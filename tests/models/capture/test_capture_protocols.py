@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from models.capture.allan import allan_deviation, octave_factors
+from models.capture.allan import allan_deviation, last_even_run, octave_factors
 from models.capture.autocollimator import (
     AutocollimatorFrame,
     DeviceInfo,
@@ -374,6 +374,57 @@ def test_a_steady_drift_grows_as_tau_over_root_2():
     t = np.arange(4000) * 0.1
     tau, adev = allan_deviation(drift * t, 0.1)
     assert adev == pytest.approx(drift * tau / math.sqrt(2), rel=1e-9)
+
+
+def test_the_last_even_run_begins_after_the_last_gap():
+    assert last_even_run([0, 1, 2, 3, 10, 11, 12]) == 4  # 7 s where 1 s was the rule
+    assert last_even_run([0, 1, 2, 3, 4]) == 0
+    assert last_even_run([0, 1, 1, 2, 3]) == 2  # a time repeated: the run starts after it
+    assert last_even_run([0, 1, 2, 1.5, 2.5, 3.5]) == 3  # the clock went back
+    assert last_even_run([]) == 0 and last_even_run([5.0]) == 0
+    assert last_even_run([2.0, 2.0, 2.0]) == 3  # no spacing: no run
+    # the rate set from 100 Hz to 10 Hz: the frames at the old rate are not this run's (the
+    # last of them, 0.1 s before the first at the new rate, is its first frame)
+    times = np.concatenate((np.arange(500) * 0.01, 4.99 + np.arange(1, 101) * 0.1))
+    assert last_even_run(times) == 499
+
+
+@settings(max_examples=200, deadline=None)
+@given(before=st.integers(2, 300), after=st.integers(2, 300),
+       interval=st.floats(1e-3, 2.0), gap=st.floats(2.5, 1e4), jitter=st.floats(0, 0.3),
+       seed=st.integers(0, 2 ** 16))
+def test_a_gap_anywhere_is_found_and_jitter_is_not_one(before, after, interval, gap, jitter,
+                                                       seed):
+    """Frames every ``interval`` ± ``jitter`` (a polled instrument's replies), one silence
+    of ``gap`` intervals between two stretches: the run starts at the first frame after it."""
+    rng = np.random.default_rng(seed)
+    steps = interval * (1 + rng.uniform(-jitter, jitter, before + after - 1))
+    steps[before - 1] = gap * interval
+    times = 100.0 + np.concatenate(([0.0], np.cumsum(steps)))
+    assert last_even_run(times) == before
+    assert last_even_run(times[before:]) == 0
+
+
+def test_allan_over_a_reconnection_is_of_the_run_after_it():
+    """An autocollimator at 100 Hz, σ = 0.05", lost for 30 s during which the mirror settled
+    3" further (a step no averaging of the frames after the gap can see): taken as one
+    series the step shows as an Allan deviation far above the noise at the longest τ;
+    the run after the gap averages down as white noise does."""
+    rng = np.random.default_rng(61)
+    sigma = 0.05
+    t_before = np.arange(3000) * 0.01
+    t_after = t_before[-1] + 30.0 + np.arange(3000) * 0.01
+    times = np.concatenate((t_before, t_after))
+    values = np.concatenate((np.full(3000, 100.0), np.full(3000, 103.0)))
+    values = values + rng.normal(0.0, sigma, values.size)
+    _, mixed = allan_deviation(values, 0.01)
+    start = last_even_run(times)
+    assert start == 3000
+    _, run = allan_deviation(values[start:], 0.01)
+    assert mixed[-1] > 20 * sigma  # the step read as instability
+    m = 2 ** np.arange(len(run))
+    usable = m <= 64  # 3000 frames: enough averages for 15 %
+    assert run[usable] == pytest.approx(sigma / np.sqrt(m[usable]), rel=0.15)
 
 
 def test_allan_refuses_what_it_cannot_compute():

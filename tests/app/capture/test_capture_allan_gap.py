@@ -1,0 +1,74 @@
+"""The Allan deviation the panel shows is of the frames since the link's last gap: the
+formula takes frames as evenly spaced, and a reconnection across which the mirror moved 3"
+was shown as an instability of the instrument (frames from both sides taken as neighbours).
+
+The port is a scripted fake (the worker's ``opener``): an autocollimator streaming every
+10 ms, silent after 300 frames (the link is lost and found again), then streaming 3" further."""
+
+from __future__ import annotations
+
+import re
+import time
+
+import numpy as np
+import pytest
+
+pytestmark = pytest.mark.slow  # a window, and a worker's reconnection (~1 s)
+
+SIGMA = 0.05  # arcsec
+
+
+class _StreamingAutocollimator:
+    """One connection: after the first write (the stream's start), a frame ``3 003 x y`` per
+    read every 10 ms, ``frames`` of them (None: for ever), then silence."""
+
+    def __init__(self, x: float, frames: int | None, seed: int) -> None:
+        self.x, self.left, self.started = x, frames, False
+        self.rng = np.random.default_rng(seed)
+
+    @property
+    def in_waiting(self) -> int:
+        return 0
+
+    def read(self, n: int = 1) -> bytes:
+        time.sleep(0.01)
+        if not self.started or self.left == 0:
+            return b""
+        if self.left is not None:
+            self.left -= 1
+        x = self.x + self.rng.normal(0.0, SIGMA)
+        return f"3 003 {x:.4f} {self.rng.normal(0.0, SIGMA):.4f}\r".encode()
+
+    def write(self, data: bytes) -> int:
+        self.started = True
+        return len(data)
+
+    def close(self) -> None:
+        pass
+
+
+def _figures(text: str) -> list[float]:
+    return [float(m) for m in re.findall(r"([-+0-9.eE]+) \([-+0-9.eE]+ s\)", text)]
+
+
+def test_the_allan_deviation_is_of_the_frames_after_a_reconnection(window, qtbot):
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    panel = window.capture_panel
+    connections = iter([_StreamingAutocollimator(100.0, 300, 1),
+                        _StreamingAutocollimator(103.0, None, 2)])
+    panel.connect_to("autocollimator", "FAKE", silence_s=0.2, retries=2, retry_pause_s=0.05,
+                     opener=lambda _port, _baud: next(connections))
+    try:
+        qtbot.waitUntil(lambda: len(panel.frames) > 300 + 200, timeout=15000)
+        panel._allan_due = 0.0  # the next figures over 200 frames or more after the gap
+        qtbot.waitUntil(lambda: panel._allan_due > 0.0, timeout=3000)
+        shown = panel.allan.text()
+        values = np.array([v[0] for _, v, _ in panel.frames])
+    finally:
+        panel.disconnect_instrument()
+    assert values.min() < 100.5 and values.max() > 102.5  # the frames kept span the gap
+    figures = _figures(shown)
+    assert len(figures) == 3, shown
+    # white noise of 0.05" averages down: never above it; the step read as noise was ~1.5"
+    assert all(0.0 < f < 2 * SIGMA for f in figures), shown
+    assert "since the last gap" in shown
