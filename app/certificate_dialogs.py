@@ -91,6 +91,14 @@ class CertificateDialogs:
                                                  question.format(number=revision.number))
         return text if ok else ""
 
+    def ask_separate_calibration(self, numbers, reason: str) -> str:
+        text, ok = QInputDialog.getMultiLineText(self.window, tr("A calibration already reported"), tr(
+            "{reason}.\n\nIf this is a calibration of its own, say why (printed on the "
+            "certificate with the number of {numbers}, which stays valid); to correct {numbers}, "
+            "cancel and amend or replace it from File › Certificate register.").format(
+                reason=reason, numbers=", ".join(numbers)))
+        return text if ok else ""
+
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
         path, chosen = QFileDialog.getSaveFileName(
             self.window, title, str(Path(self.window.projects.last_dir()) / suggested), file_filter)

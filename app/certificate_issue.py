@@ -99,7 +99,8 @@ def sign_if_configured(xml: bytes, key_file: str = "", cert_file: str = "") -> b
 def issue_certificate(register: Register, kind, result: Any, metadata: CertificateMetadata,
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
-                      replacement: bool = False, raw_capture: list | None = None,
+                      replacement: bool = False, separate_calibration: str = "",
+                      raw_capture: list | None = None,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", "")) -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
@@ -113,7 +114,9 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     21.56 → 26.56"). ``dcc(document, pdf)``: the digital certificate of the PDF rendered
     (app/dcc_issue.render_dcc), made with it — so with its number — before anything is
     recorded (a DCC refused as invalid issues nothing) and written to ``dcc_path`` after
-    the PDF. ``signing``: the lab's key and certificate files (empty: the environment's)."""
+    the PDF. ``signing``: the lab's key and certificate files (empty: the environment's).
+    ``separate_calibration``: why an original for the item and date of calibration of a
+    current certificate is a calibration of its own (else SameCalibrationIssued)."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}},
                       {kind.key: raw_capture} if raw_capture else {})
@@ -143,6 +146,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement,
+                                 separate_calibration=separate_calibration,
                                  render_dcc=(lambda _final, _pdf: made["dcc"])
                                  if dcc is not None else None)
     try:

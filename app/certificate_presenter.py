@@ -79,6 +79,10 @@ class CertificateView(Protocol):
     def ask_change_note(self, revision: PendingRevision) -> str:
         """What changed and why (empty: cancel the amendment's export)."""
 
+    def ask_separate_calibration(self, numbers: tuple[str, ...], reason: str) -> str:
+        """``numbers`` report the item and date of calibration already (``reason``, the
+        register's words): why this is a calibration of its own (empty: not issued)."""
+
     def confirm_draft(self, missing: list[str]) -> bool:
         """Export a DRAFT although these details are missing?"""
 
@@ -451,17 +455,32 @@ class CertificatePresenter:
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
                note, raw_capture=None) -> bool:
         from app.certificate_issue import IssuedNotWritten, issue_certificate
-        from models.register.store import RegisterError
+        from models.register.store import RegisterError, SameCalibrationIssued
 
+        separate = ""
         try:
-            with self.open_register() as register:
-                record = issue_certificate(
-                    register, kind, result, entered, settings, rows, source_name, path,
-                    supersedes=revision.number if revision else "", change_note=note,
-                    replacement=bool(revision and revision.replacement),
-                    raw_capture=raw_capture,
-                    dcc=self._dcc_maker(kind, result, path, settings),
-                    dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
+            while True:
+                try:
+                    with self.open_register() as register:
+                        record = issue_certificate(
+                            register, kind, result, entered, settings, rows, source_name,
+                            path, supersedes=revision.number if revision else "",
+                            change_note=note, replacement=bool(revision and revision.replacement),
+                            separate_calibration=separate, raw_capture=raw_capture,
+                            dcc=self._dcc_maker(kind, result, path, settings),
+                            dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
+                    break
+                except SameCalibrationIssued as exc:
+                    # a reading changed and issued again made a second original of one
+                    # calibration, neither naming the other (#61 assessor, 17025 7.8.8)
+                    self.view.wait_cursor(False)
+                    try:
+                        separate = " ".join(self.view.ask_separate_calibration(
+                            exc.numbers, explained(exc)).split())
+                    finally:
+                        self.view.wait_cursor(True)
+                    if not separate:
+                        raise
         except RegisterError as exc:
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(

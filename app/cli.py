@@ -98,6 +98,13 @@ def _parser(words, kinds: tuple[str, ...] | None = None,
                    help=words(QT_TR_NOOP("certificate metadata (lab, customer, item, "
                                          "standards…); without it the certificate is marked "
                                          "DRAFT")))
+    p.add_argument("--separate-calibration", metavar="REASON", default="",
+                   help=words(QT_TR_NOOP("with --certificate: the item and date of calibration "
+                                         "are those of a certificate still valid, and this is a "
+                                         "calibration of its own (e.g. as left after an "
+                                         "adjustment): why, printed on it with the other's "
+                                         "number (else it is refused: a correction is an "
+                                         "amendment or a replacement)")))
     p.add_argument("--results", metavar="OUT.csv|OUT.xlsx",
                    help=words(QT_TR_NOOP("also write the results per point (with U) as CSV or "
                                          "XLSX")))
@@ -604,7 +611,8 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
             record = issue_certificate(register, kind, result, metadata,
                                        kind.settings_with_defaults(settings), rows,
                                        Path(args.file).name, args.certificate,
-                                       dcc=dcc, dcc_path=args.dcc or "")
+                                       dcc=dcc, dcc_path=args.dcc or "",
+                                       separate_calibration=getattr(args, "separate_calibration", ""))
     except RegisterError as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
                                          "written"), reason=reason_of(exc)), words))

@@ -285,6 +285,10 @@ class CertificateMetadata:
     supersedes: str = ""  # the number of the certificate this one amends or replaces
     revision: str = ""  # "amendment N" or "replacement"; empty for an original
     change_note: str = ""  # what changed, and why
+    # set by the register on an original issued for an item and date of calibration that a
+    # current certificate already reports (a calibration of its own, e.g. as left after an
+    # adjustment): those certificates' numbers; ``change_note`` says why it is separate
+    separate_from: str = ""
     # the bundled example details (resources/samples/certificate_*.json): never recorded in
     # the user's register (the command line issues them into a register of their own)
     example: bool = False

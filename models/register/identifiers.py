@@ -1,7 +1,13 @@
 """Identifiers that print alike are one identifier: a certificate number or a serial is
 normalised (Unicode NFKC; every dash and hyphen as "-", every space as one " ") and refused
 when it holds a character that prints as nothing or moves text (format, control,
-private-use, unassigned, line and paragraph separators), before any uniqueness check."""
+private-use, unassigned, line and paragraph separators), before any uniqueness check.
+
+Uniqueness goes further (:func:`identifier_key`): letters of other scripts that print as
+Latin ones (Cyrillic "АВ" for "AB"; UTS #39's confusables, those keyboards give), case, a
+full stop or comma after it, and zeros before a number ("01" for "0001") do not make another
+identifier (#61 review: "АВ-2026-0001", "ab-2026-0001", "AB-2026-0001." and "AB-2026-01"
+were issued beside AB-2026-0001)."""
 
 from __future__ import annotations
 
@@ -10,7 +16,7 @@ import unicodedata
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["IdentifierError", "normalise_identifier"]
+__all__ = ["IdentifierError", "identifier_key", "normalise_identifier"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -36,3 +42,18 @@ def normalise_identifier(text: str, what: str = "identifier") -> str:
     text = unicodedata.normalize("NFKC", text)
     text = _DASHES.sub("-", text)
     return " ".join(text.split())
+
+
+#: Cyrillic and Greek letters that print as Latin ones (Unicode's confusables.txt, UTS #39)
+_LOOKALIKES = str.maketrans(
+    "АВЕЅІЈКМНОРСТХУаеѕіјорсхуԁһԛԝ" "ΑΒΕΖΗΙΚΜΝΟΡΤΥΧοϲνρ",
+    "ABESIJKMHOPCTXYaesijopcxydhqw" "ABEZHIKMNOPTYXocvp")
+_TRAILING = ".,;:。，、"
+_DIGITS = re.compile(r"\d+")
+
+
+def identifier_key(text: str) -> str:
+    """What makes two identifiers (as :func:`normalise_identifier` keeps them) one: equal
+    keys print alike."""
+    key = (text or "").translate(_LOOKALIKES).casefold().rstrip(_TRAILING).rstrip()
+    return _DIGITS.sub(lambda digits: str(int(digits.group())), key)

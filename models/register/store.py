@@ -45,7 +45,7 @@ if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
 
 __all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "RegisterTampered",
-           "lab_timezone", "software_versions"]
+           "SameCalibrationIssued", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -58,6 +58,17 @@ _TURN_LOCK = 0x414E4744  # an issuer's turn to render after a lost race (Postgre
 class RegisterError(ValueError):
     """The register refused (a number issued before, an unknown certificate, a register of a
     newer version) or cannot be reached; the message says which."""
+
+
+class SameCalibrationIssued(RegisterError):
+    """An original for an item and date of calibration that a current certificate already
+    reports (``numbers``): a corrected one is its amendment or replacement, a calibration of
+    its own is issued as separate, saying why (ISO/IEC 17025 7.8.8: no second original of one
+    calibration — a reading changed and issued again gave two, neither naming the other)."""
+
+    def __init__(self, text, numbers: tuple[str, ...]) -> None:
+        super().__init__(text)
+        self.numbers = numbers
 
 
 def software_versions() -> dict[str, str]:
@@ -556,18 +567,31 @@ class Register:
         return format_certificate_number(scheme, next_sequence, date)
 
     def _check_free(self, conn, number: str) -> None:
-        row = conn.execute(self._sa.select(
-            self._schema.CERTIFICATES.c.issued_at, self._schema.CERTIFICATES.c.workbench,
-            self._schema.CERTIFICATES.c.item_serial).where(
-            self._schema.CERTIFICATES.c.number == number)).first()
+        """Raise RegisterError if ``number``, or one that prints alike (identifier_key), was
+        issued."""
+        from models.register.identifiers import identifier_key
+
+        c = self._schema.CERTIFICATES.c
+        key = identifier_key(number)
+        row = next((r for r in conn.execute(self._sa.select(
+            c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
+            if r.number == number or identifier_key(r.number) == key), None)
         if row is not None:
             raise RegisterError(
                 message(
                 QT_TR_NOOP("certificate number {number} was issued on {issued_at} ({workbench}, serial "
                            "{value}): a number is issued once; leave the number empty and the register "
                            "allocates the next"),
-                number=number, issued_at=row.issued_at[:10], workbench=row.workbench,
+                number=row.number if row.number == number else f"{number} ({row.number})",
+                issued_at=row.issued_at[:10], workbench=row.workbench,
                 value=row.item_serial or '—'))
+
+    def _taken(self, conn, number: str) -> bool:
+        try:
+            self._check_free(conn, number)
+        except RegisterError:
+            return True
+        return False
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
@@ -596,10 +620,15 @@ class Register:
                                                                   issue_date)
             else:
                 n = _amendment_count(conn, self, original) + 1
+                while self._taken(conn, f"{_root(original)}-A{n}"):  # typed in older registers
+                    n += 1
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
-                self._check_free(conn, number)
         elif meta.certificate_number:
             number = meta.certificate_number
+            if _AMENDMENT_FORM.search(number):
+                raise RegisterError(message(QT_TR_NOOP(
+                    "certificate number {number}: numbers ending -A and a number are kept for "
+                    "amendments, which the register numbers itself"), number=number))
             self._check_free(conn, number)
         else:
             counter, number, before, value = self._next_value(conn, meta.number_scheme,
@@ -619,8 +648,8 @@ class Register:
 
     def issue(self, request: IssueRequest, render: Callable[..., bytes],
               *, render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None = None,
-              supersedes: str = "", change_note: str = "", replacement: bool = False
-              ) -> tuple[CertificateRecord, bytes]:
+              supersedes: str = "", change_note: str = "", replacement: bool = False,
+              separate_calibration: str | None = None) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -633,7 +662,14 @@ class Register:
         attempt (the same number, the PDF embedded in it): it is stored beside the PDF and
         its SHA-256 enters the chain (chain format 3); :meth:`dcc` hands it out. Anything it
         raises leaves no record, as a failing ``render`` does. Returns the record and the
-        PDF."""
+        PDF.
+
+        ``separate_calibration`` ("" or a reason; app/certificate_issue.py, which every
+        certificate of the window and the command line goes through, always gives one): an
+        original for the workbench, item and date of calibration of a current certificate
+        raises :class:`SameCalibrationIssued` unless it says why this is a calibration of its
+        own (printed on it, with the other certificates' numbers). None: not checked (the
+        register's own tests of numbering and of the chain issue one detail many times)."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         meta = request.metadata
@@ -665,13 +701,27 @@ class Register:
                 _check_issuable(meta, issue_date)
                 with self._read() as conn:
                     plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
+                    same = () if supersedes or separate_calibration is None else \
+                        self._same_calibration(conn, request.workbench, meta)
+                separate = " ".join((separate_calibration or "").split())
+                if same and not separate:
+                    raise SameCalibrationIssued(message(QT_TR_NOOP(
+                        "{numbers} already reports this calibration (serial {serial}, calibrated "
+                        "{date}): a corrected certificate is its amendment or replacement (Amend… "
+                        "or Replace… in File › Certificate register); a calibration of its own "
+                        "(e.g. as left after an adjustment) is issued as separate, saying why "
+                        "(on the command line: --separate-calibration REASON)"),
+                        numbers=", ".join(same), serial=meta.item_serial or "—",
+                        date=meta.calibration_date or "—"),
+                        same)
                 original = plan.original
                 final = dataclasses.replace(
                     meta, certificate_number=plan.number, issue_date=issue_date.isoformat(),
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=change_note)
+                    change_note=separate if same else change_note,
+                    separate_from=", ".join(same))
                 pdf = _call_render(render, final, plan.head)
                 dcc = render_dcc(final, pdf) if render_dcc is not None else None
                 if dcc is not None and not isinstance(dcc, bytes | bytearray):
@@ -685,7 +735,7 @@ class Register:
                     customer=meta.customer_name, operator=meta.operator,
                     workstation=socket.gethostname(), status="issued",
                     supersedes=original.number if original else None, superseded_by=None,
-                    revision=plan.revision, change_note=change_note,
+                    revision=plan.revision, change_note=final.change_note,
                     project_json=_with_metadata(request.project_json, request.workbench, final),
                     software_json=json.dumps(software_versions(), sort_keys=True),
                     headline_json=json.dumps(request.headline, sort_keys=True),
@@ -745,6 +795,25 @@ class Register:
     def clock() -> dt.datetime:
         """The time of issue (a test sets its own)."""
         return dt.datetime.now(dt.timezone.utc)
+
+    def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata
+                          ) -> tuple[str, ...]:
+        """The current certificates (issued, not superseded or withdrawn) of ``workbench``
+        reporting the item and date of calibration of ``meta``: a serial number that prints
+        alike (identifier_key; the same description and manufacturer too where there is
+        none)."""
+        from models.register.identifiers import identifier_key
+
+        c = self._schema.CERTIFICATES.c
+        query = self._sa.select(c.number, c.item_serial).where(
+            c.workbench == workbench, c.status == "issued",
+            c.calibration_date == meta.calibration_date)
+        if not meta.item_serial:
+            query = query.where(c.item_description == meta.item_description,
+                                c.item_manufacturer == meta.item_manufacturer)
+        key = identifier_key(meta.item_serial)
+        return tuple(row.number for row in conn.execute(query.order_by(c.id))
+                     if identifier_key(row.item_serial) == key)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)
@@ -1336,11 +1405,21 @@ def _root(record: CertificateRecord) -> str:
         else record.number
 
 
+_AMENDMENT_FORM = re.compile(r"-A\d+$", re.IGNORECASE)
+
+
 def _amendment_count(conn, register: Register, record: CertificateRecord) -> int:
+    """The highest n of the amendments ``<root>-A<n>`` the register made of ``record``'s
+    original: amendments only (a number typed in that form before such numbers were refused
+    made the first amendment "Amendment 2", or, taken, blocked every one)."""
     certificates = register._schema.CERTIFICATES
     root = _root(record)
-    return conn.execute(register._sa.select(register._sa.func.count()).where(
-        certificates.c.number.like(f"{root}-A%"))).scalar_one()
+    form = re.compile(rf"{re.escape(root)}-A(\d+)")
+    rows = conn.execute(register._sa.select(certificates.c.number).where(
+        certificates.c.number.like(f"{root}-A%"),
+        certificates.c.revision.like("amendment%"))).all()
+    return max((int(m.group(1)) for row in rows if (m := form.fullmatch(row.number))),
+               default=0)
 
 
 def _with_metadata(project_json: str, workbench: str, meta: CertificateMetadata) -> str:

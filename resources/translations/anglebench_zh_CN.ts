@@ -2110,6 +2110,18 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>改变的内容</translation>
     </message>
     <message>
+        <source>A calibration already reported</source>
+        <translation>该校准已有证书</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+If this is a calibration of its own, say why (printed on the certificate with the number of {numbers}, which stays valid); to correct {numbers}, cancel and amend or replace it from File › Certificate register.</source>
+        <translation>{reason}。
+
+如果这是一次独立的校准，请说明理由（将与仍然有效的 {numbers} 的编号一起印在证书上）；如要更正 {numbers}，请取消，并在 文件 › 证书登记册 中对其进行修订或替代。</translation>
+    </message>
+    <message>
         <source>Nothing to export</source>
         <translation>没有可导出的内容</translation>
     </message>
@@ -3014,6 +3026,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
     <message>
         <source>{what}, which it supersedes; the original stays on record unchanged.</source>
         <translation>{what}，原证书作废；原证书存档，内容不变。</translation>
+    </message>
+    <message>
+        <source>A calibration of its own, separate from certificate {numbers} of the same item and date of calibration, which stays valid: {reason}</source>
+        <translation>本证书是一次独立的校准，有别于同一被校件、同一校准日期的证书 {numbers}（该证书仍然有效）：{reason}</translation>
     </message>
     <message>
         <source>Page {page} of {pages}</source>
@@ -5001,6 +5017,10 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>证书信息（实验室、委托方、被校对象、计量标准……）；缺少时证书标为草稿</translation>
     </message>
     <message>
+        <source>with --certificate: the item and date of calibration are those of a certificate still valid, and this is a calibration of its own (e.g. as left after an adjustment): why, printed on it with the other&apos;s number (else it is refused: a correction is an amendment or a replacement)</source>
+        <translation>与 --certificate 一起使用：被校件和校准日期与一份仍然有效的证书相同，而这是一次独立的校准（例如调整之后的交付状态）：说明理由，与另一份证书的编号一起印在证书上（否则予以拒绝：更正应为修订或替代）</translation>
+    </message>
+    <message>
         <source>also write the results per point (with U) as CSV or XLSX</source>
         <translation>同时以 CSV 或 XLSX 写出各点结果（含 U）</translation>
     </message>
@@ -5851,12 +5871,20 @@ Issue the certificate with them anyway? (No: back to the details)</source>
         <translation>计算机时钟为 {now}，早于登记册的最后一条记录（{number}，签发于 {then}）：时钟被回拨；在时钟正确之前不签发</translation>
     </message>
     <message>
+        <source>certificate number {number}: numbers ending -A and a number are kept for amendments, which the register numbers itself</source>
+        <translation>证书编号 {number}：以 -A 加数字结尾的编号保留给修订版，由登记册自行编号</translation>
+    </message>
+    <message>
         <source>serial number</source>
         <translation>序列号</translation>
     </message>
     <message>
         <source>certificate number {number}: numbers beginning SPECIMEN are kept for specimen certificates, which are never recorded</source>
         <translation>证书编号 {number}：以 SPECIMEN 开头的编号留给样本证书使用，样本证书从不记入登记册</translation>
+    </message>
+    <message>
+        <source>{numbers} already reports this calibration (serial {serial}, calibrated {date}): a corrected certificate is its amendment or replacement (Amend… or Replace… in File › Certificate register); a calibration of its own (e.g. as left after an adjustment) is issued as separate, saying why (on the command line: --separate-calibration REASON)</source>
+        <translation>{numbers} 已报告这次校准（编号 {serial}，校准于 {date}）：更正的证书应为其修订版或替代版（文件 › 证书登记册 中的“修订…”或“替代…”）；一次独立的校准（例如调整之后的交付状态）作为独立校准签发，并说明理由（命令行：--separate-calibration REASON）</translation>
     </message>
     <message>
         <source>the register was busy: {n} other certificates were issued while this one was being made; try again</source>

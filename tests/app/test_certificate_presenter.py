@@ -128,6 +128,36 @@ def test_a_refusal_of_the_register_writes_nothing(parts, samples_dir, tmp_path):
     assert not (tmp_path / "b.pdf").exists()
 
 
+@pytest.mark.slow
+def test_a_calibration_issued_again_asks_whether_it_is_separate(parts, samples_dir, tmp_path):
+    """#61 assessor: the same item and date of calibration issued again made a second
+    original. The window asks why it is a calibration of its own; cancelled, nothing is
+    written and the register's words say how to correct the first instead."""
+    presenter, view, _, _ = parts
+    kind, result = _theodolite(samples_dir)
+    view.edit_certificate_details.return_value = COMPLETE
+    view.choose_save_path.return_value = str(tmp_path / "a.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    view.ask_separate_calibration.return_value = ""  # cancelled
+    view.choose_save_path.return_value = str(tmp_path / "b.pdf")
+    assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
+    numbers, reason = view.ask_separate_calibration.call_args.args
+    assert numbers == ("AB-2026-0001",) and "serial T-1, calibrated 2026-11-20" in reason
+    assert "AB-2026-0001 already reports this calibration" in view.tell.call_args.args[1]
+    assert not (tmp_path / "b.pdf").exists()
+    view.ask_separate_calibration.return_value = "as left after the adjustment"
+    view.choose_save_path.return_value = str(tmp_path / "c.pdf")
+    assert presenter.export_certificate(kind, result, {}, "run.csv", [])
+    assert "Certificate AB-2026-0002 issued" in view.show_status.call_args.args[0]
+    text = re.sub(r"\s+", " ", "".join(p.extract_text()
+                                        for p in PdfReader(tmp_path / "c.pdf").pages))
+    assert ("separate from certificate AB-2026-0001 of the same item and date of calibration, "
+            "which stays valid: as left after the adjustment") in text
+    # the wait cursor is off while the question is on screen, and back on after it
+    calls = view.wait_cursor.call_args_list
+    assert calls.count(mock.call(False)) >= 3
+
+
 def test_cancelled_details_write_nothing(parts, samples_dir):
     presenter, view, metadata, modified = parts
     view.edit_certificate_details.return_value = None

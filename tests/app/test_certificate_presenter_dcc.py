@@ -60,7 +60,8 @@ def test_no_dcc_unless_asked_and_a_refused_one_issues_nothing(parts, samples_dir
     assert (tmp_path / "a.pdf").exists() and not (tmp_path / "a.xml").exists()
     # asked for, but the details lack the country the DCC must state: nothing issued
     presenter.set_dcc_options(True, "")
-    view.edit_certificate_details.return_value = COMPLETE
+    # another item (the same one issued again would be refused as issued, #61)
+    view.edit_certificate_details.return_value = dataclasses.replace(COMPLETE, item_serial="T-2")
     view.choose_save_path.return_value = str(tmp_path / "b.pdf")
     assert not presenter.export_certificate(kind, result, {}, "run.csv", [])
     assert "lab_country" in view.tell.call_args.args[1]

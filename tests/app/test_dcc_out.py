@@ -339,6 +339,8 @@ def test_an_issued_certificate_refused_for_its_dcc_is_not_recorded(tmp_path, cap
         before = len(register.list())
 
     monkeypatch.setattr(writer, "_figure", lambda x: "not-a-number")
+    details["item_serial"] += "-2"  # another item: the same one again is refused as issued (#61)
+    path.write_text(json.dumps(details), encoding="utf-8")
     again = tmp_path / "again"
     again.mkdir()
     code, said, pdf2, xml2 = _issue("theodolite", again, capsys, samples_dir, details=path)

@@ -35,9 +35,10 @@ def test_issue_list_show_verify_export(samples_dir, tmp_path, capsys):
     code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
     year = dt.datetime.now(dt.timezone.utc).year  # the register's day of issue
     assert code == 0 and f"Certificate AB-{year}-0001 issued" in err
-    code, err = issue(samples_dir, tmp_path, "b", capsys)  # the sample's own number
+    code, err = issue(samples_dir, tmp_path, "b", capsys,  # the sample's own number
+                      item_serial="RX-26-0816")  # another item: the same one is refused (#61)
     assert code == 0 and "AB-2026-0042" in err
-    code, err = issue(samples_dir, tmp_path, "c", capsys)  # … once only
+    code, err = issue(samples_dir, tmp_path, "c", capsys, item_serial="RX-26-0817")  # once only
     assert code == 2 and "AB-2026-0042 was issued on" in err and not (tmp_path / "c.pdf").exists()
     assert main(["register", "list", "RX-26"]) == 0
     listed = capsys.readouterr().out.splitlines()
@@ -262,7 +263,8 @@ def test_a_checker_signs_when_the_labs_template_asks_and_show_prints_it(samples_
                                        "批准人 Approved by"))):
         name = language.replace("+", "")
         code, err = issue(samples_dir, tmp_path, name, capsys, certificate_number="",
-                          checker_role=True, checker="Zhao Min", language=language)
+                          checker_role=True, checker="Zhao Min", language=language,
+                          item_serial=f"RX-{name}")  # one item each: one issued again is refused
         assert code == 0, err
         text = " ".join(_pdf_text(tmp_path / f"{name}.pdf").split())
         assert all(role in text for role in roles), (language, text[-400:])
@@ -348,3 +350,32 @@ def test_an_issued_dcc_is_recorded_signed_and_shown_as_written(samples_dir, tmp_
     capsys.readouterr()
     assert main(["register", "verify"]) == 0
     assert "every stored PDF and DCC matches" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir, tmp_path,
+                                                                    capsys):
+    """#61 assessor: one reading changed and the same polygon, serial and date of calibration
+    issued again gave a second original, both current, neither naming the other. Refused,
+    naming the first; --separate-calibration issues it, naming the first and why."""
+    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="")
+    year = dt.datetime.now(dt.timezone.utc).year
+    first = f"AB-{year}-0001"
+    assert code == 0 and f"Certificate {first} issued" in err
+    code, err = issue(samples_dir, tmp_path, "b", capsys, certificate_number="")
+    assert code == 2 and f"{first} already reports this calibration" in err
+    assert "--separate-calibration" in err and not (tmp_path / "b.pdf").exists()
+    meta = json.loads((tmp_path / "b.json").read_text(encoding="utf-8"))
+    code = main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"), "--certificate",
+                 str(tmp_path / "c.pdf"), "--metadata", str(tmp_path / "b.json"),
+                 "--separate-calibration", "as left, after the read head was adjusted"])
+    err = capsys.readouterr().err
+    assert code == 0 and f"Certificate AB-{year}-0002 issued" in err
+    flat = " ".join(_pdf_text(tmp_path / "c.pdf").split())
+    assert (f"A calibration of its own, separate from certificate {first} of the same item and "
+            "date of calibration, which stays valid: as left, after the read head was "
+            "adjusted") in flat
+    with Register(register_url()) as register:
+        assert register.get(f"AB-{year}-0002").change_note.startswith("as left")
+        assert register.get(first).status == "issued"
+    assert meta["item_serial"]  # the sample names its item: the check had a serial to go by

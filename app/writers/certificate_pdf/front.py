@@ -31,6 +31,8 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
                       9, (170, 30, 30))
     if meta.supersedes:
         pdf.paragraph(revision_statement(meta), 9.5, (20, 60, 140))
+    elif meta.separate_from:
+        pdf.paragraph(separate_statement(meta), 9.5, (20, 60, 140))
     pdf.ln(1)
     pdf.key_values([
         (label(document, "Certificate number", "\n"), meta.certificate_number),
@@ -78,6 +80,15 @@ def revision_statement(meta) -> str:
                        change=meta.change_note)
     return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
                               "unchanged."), what=what)
+
+
+def separate_statement(meta) -> str:
+    """An original for the item and date of calibration of certificates still valid: it
+    names them and says why it is a calibration of its own (ISO/IEC 17025 7.8.8: a reader of
+    either learns of the other; two originals of one calibration are never issued)."""
+    return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
+                              "of the same item and date of calibration, which stays valid: "
+                              "{reason}"), numbers=meta.separate_from, reason=meta.change_note)
 
 
 def _created(document: CertificateDocument) -> dt.datetime:

@@ -108,6 +108,7 @@ def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_u
         typed = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
                                   kind.checked_settings({}), rows, "typed.csv",
                                   str(tmp_path / "typed.pdf"))
+        data["item_serial"] += "-2"  # another item: one issued again is refused (#61)
         record = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
                                    kind.checked_settings({}), rows, "captured.anglebench.json",
                                    str(tmp_path / "captured.pdf"), raw_capture=sessions)

@@ -527,3 +527,106 @@ def test_an_issuer_that_lost_a_race_waits_for_its_turn_only_so_long(tmp_path, mo
         reg.clock = on(ISSUED)
         record, _ = reg.issue(request(), lambda meta, head="": b"%PDF")
         assert record.number == "AB-2026-0001" and reg.audit(pdfs=True) == []
+
+
+def _meta(**changes) -> CertificateMetadata:
+    return CertificateMetadata(**{**META.to_dict(), "standards": (), **changes})
+
+
+def test_a_second_original_of_one_calibration_is_refused(register):
+    """#61 assessor: a reading changed and the same item and date of calibration issued again
+    gave a second original (AB-2026-0012 beside 0011), both current, neither naming the other
+    (ISO/IEC 17025 7.8.8). It is refused, naming the certificate that reports it; a
+    correction is an amendment or replacement, a calibration of its own says why."""
+    from models.register.store import SameCalibrationIssued
+
+    first, _ = register.issue(request(), render, separate_calibration="")
+    assert register.issue(request(), render)[0].number == "AB-2026-0002"  # None: unchecked
+    register.withdraw("AB-2026-0002", "a test of the unchecked call")
+    with pytest.raises(SameCalibrationIssued, match="AB-2026-0001 already reports this "
+                       "calibration \\(serial rx-1, calibrated 2026-11-20\\)") as refused:
+        register.issue(request(_meta(item_serial="rx-1")), render,
+                       separate_calibration="")  # the serial's case aside
+    assert refused.value.numbers == ("AB-2026-0001",)
+    assert len(register.list()) == 2  # nothing recorded
+    # what is not the same calibration is issued as before
+    other_day, _ = register.issue(request(_meta(calibration_date="2026-11-21")), render)
+    other_item, _ = register.issue(request(_meta(item_serial="RX-2")), render)
+    other_bench, _ = register.issue(IssueRequest("theodolite", META, PROJECT, {}), render)
+    assert (other_day.number, other_item.number, other_bench.number) == (
+        "AB-2026-0003", "AB-2026-0004", "AB-2026-0005")
+    # a correction: its amendment (the original superseded, the amendment now current)
+    amended, _ = register.issue(request(), render, supersedes=first.number,
+                                change_note="reading of position 4 corrected")
+    with pytest.raises(SameCalibrationIssued) as again:
+        register.issue(request(), render, separate_calibration="")
+    assert again.value.numbers == (amended.number,)
+    # a calibration of its own: issued, naming the other and why, in the record and the PDF
+    seen = {}
+
+    def keep(meta):
+        seen["meta"] = meta
+        return render(meta)
+
+    separate, _ = register.issue(request(), keep, separate_calibration="  as left after the "
+                                 "adjustment\n of the read head ")
+    assert separate.revision == "original" and separate.supersedes is None
+    assert separate.change_note == "as left after the adjustment of the read head"
+    assert seen["meta"].separate_from == amended.number
+    assert seen["meta"].change_note == separate.change_note
+    assert '"separate_from": "AB-2026-0001-A1"' in register.get(separate.number).project_json
+    assert register.get(amended.number).status == "issued"  # it stays valid
+    assert register.audit(pdfs=True) == []
+    # a withdrawn certificate reports nothing any more: a new original is issued
+    for number in (amended.number, separate.number):
+        register.withdraw(number, "issued in error")
+    assert register.issue(request(), render, separate_calibration="")[0].number == "AB-2026-0007"
+
+
+@pytest.mark.parametrize("alike", ["АВ-2026-0001", "ab-2026-0001", "AB-2026-0001.",
+                                   "AB-2026-01", "Ab-2026-001,"])
+def test_a_number_that_prints_alike_is_refused(register, alike):
+    """#61 review: with AB-2026-0001 issued, Cyrillic "АВ", the lower case, a full stop after
+    it and "01" for "0001" were each issued as a new number (ISO/IEC 17025 7.8.2.1: unique)."""
+    register.issue(request(), render)
+    with pytest.raises(RegisterError, match=f"{alike} \\(AB-2026-0001\\) was issued on"):
+        register.issue(request(_meta(certificate_number=alike)), render)
+    assert register.issue(request(_meta(certificate_number="AB-2026-0010")), render)[0].number \
+        == "AB-2026-0010"
+
+
+def test_a_serial_that_prints_alike_is_the_same_item(register):
+    register.issue(request(_meta(item_serial="RX-0001")), render, separate_calibration="")
+    from models.register.store import SameCalibrationIssued
+
+    with pytest.raises(SameCalibrationIssued):  # a Cyrillic Х, "1" for "0001"
+        register.issue(request(_meta(item_serial="R\u0425-1")), render, separate_calibration="")
+    with pytest.raises(SameCalibrationIssued):
+        register.issue(request(_meta(item_serial="rx-1")), render, separate_calibration="")
+
+
+def test_amendments_count_only_amendments(register):
+    """#61 review: a number typed as "ab-2026-0001-a1" for another item made the first real
+    amendment of AB-2026-0001 "Amendment 2" (counted by a case-blind LIKE), and a typed
+    "AB-2026-0002-A2" refused every amendment of AB-2026-0002. Such numbers are refused now;
+    one already in a register is stepped over."""
+    first, _ = register.issue(request(), render)
+    with pytest.raises(RegisterError, match="kept for amendments"):
+        register.issue(request(_meta(certificate_number="ab-2026-0001-a1",
+                                     item_serial="OTHER")), render)
+    _tamper_free_insert(register, "AB-2026-0001-A1x")  # not of the form: no effect
+    amended, pdf = register.issue(request(), render, supersedes=first.number, change_note="x")
+    assert (amended.number, amended.revision) == ("AB-2026-0001-A1", "amendment 1")
+    # a register where "AB-2026-0001-A2" was typed before (as an original) steps over it
+    _tamper_free_insert(register, "AB-2026-0001-A2")
+    again, _ = register.issue(request(), render, supersedes=amended.number, change_note="y")
+    assert again.number == "AB-2026-0001-A3"
+
+
+def _tamper_free_insert(register, number: str) -> None:
+    """An original of another item numbered ``number``, as an older version issued it."""
+    got = register.issue(request(_meta(item_serial=f"T-{number}")), render)[0]
+    certificates = schema.CERTIFICATES
+    with register.engine.begin() as conn:  # renumbered behind the chain's back: the number
+        conn.execute(certificates.update().where(certificates.c.number == got.number)
+                     .values(number=number))
