@@ -14,9 +14,11 @@ from __future__ import annotations
 
 import pytest
 
+import app.capture.panel as panel_module
 from app.capture.worker import CaptureWorker, Fault, Reading
 from app.certificate_issue import readings_edited_after_capture
 from models.capture.raw_record import FRAMES_PER_BLOCK, raw_digest, sessions_json_pieces
+from tests.instrument_simulators import AutocollimatorSimulator
 
 pytestmark = pytest.mark.slow  # a window and ~10^5 lines through its drain
 
@@ -95,7 +97,8 @@ def _start(presenter):
 
 
 def _drain(panel, stream: Stream, held: list[int]) -> None:
-    """The panel's drain, as its timer runs it, until the queue is empty."""
+    """The panel's drain until the queue is empty (its timer's ticks at once); the lines the
+    worker holds after it."""
     link = panel.links[0]
     panel._drain_link(link, stream.worker)
     held.append(len(stream.worker.raw))
@@ -222,8 +225,8 @@ def test_the_workers_memory_stays_bounded_over_a_long_stream(window, scripted):
 def test_a_session_that_has_not_converted_loses_no_line(window, scripted):
     """Lines are dropped after the session has converted them, never by a count: an
     instrument whose lines are mostly refused (one reading in 60) sends 60,000 lines, three
-    blocks', before the drain's 1000th reading converts any; the second instrument, slower,
-    has converted nothing at all. Every line is stored."""
+    blocks', before the drain's 1000th reading converts any; the second instrument, sending
+    only noise, has converted nothing at all. Every line is stored."""
     panel = window.capture_panel
     _start(_show(window, "polygon"))
     panel.connect_to("autocollimator", "/dev/ttyUSB0")
@@ -256,3 +259,41 @@ def test_a_session_that_has_not_converted_loses_no_line(window, scripted):
     assert list(ours["frames"]) == _expected_frames(stream.sent)
     assert list(theirs["frames"]) == _expected_frames(readout.sent)
     panel.disconnect_instrument()
+
+
+def test_a_live_stream_drops_lines_while_the_worker_keeps_them(window, qtbot, monkeypatch):
+    """The worker's own thread keeping lines (a 250 Hz stream over a pty) while the window's
+    reads and drops them, a take before and after a workbench switch: every line the worker
+    kept is in the two sessions, each take's frame reads as its cell. The drain converts a
+    block's worth behind at every 1000th reading: with blocks of 300 here, lines are dropped
+    within seconds."""
+    monkeypatch.setattr(panel_module, "FRAMES_PER_BLOCK", 300)
+    panel = window.capture_panel
+    for key in ("crosscal", "polygon"):
+        _start(_show(window, key))
+
+    def take(expected: str) -> None:
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled() and not panel.used_again(),
+                        timeout=5000)
+        assert panel.take_reading() == expected
+
+    with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)], sigma=0.05,
+                                 rate_hz=250.0) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=1.0, retries=4)
+        worker = panel.worker
+        take("row 1")
+        qtbot.waitUntil(lambda: worker.raw_first > 0, timeout=15_000)
+        _show(window, "crosscal")
+        split = panel.session.first
+        take("row 1")
+        qtbot.waitUntil(lambda: worker.raw_first > split, timeout=15_000)
+        take("row 2")
+        panel.disconnect_instrument()
+    (polygon,), (crosscal,) = panel.raw_sessions("polygon"), panel.raw_sessions("crosscal")
+    assert len(polygon["frames"]) == split and split + len(crosscal["frames"]) == worker.raw_end
+    for key, session in (("polygon", polygon), ("crosscal", crosscal)):
+        times = [f[0] for f in session["frames"]]
+        assert times == sorted(times)
+        presenter = window.presenter(key)
+        assert readings_edited_after_capture(presenter.kind, presenter.settings,
+                                             presenter.state().rows, [session], {}) == []
