@@ -366,8 +366,9 @@ def _finish(args, columns, rows, worker, journal, failure, say, dwells=None) -> 
         rows, frames = kept.readings, kept.frames
         start = 0  # the journal holds every line since the start
     except (OSError, ValueError):  # the journal unreadable: what memory holds
-        frames = [(repr(round(t, 6)), str(int(u)), frame_text(line)) for t, line, u in worker.raw]
-        start = worker.raw_first
+        start = worker.raw_first  # the worker has stopped: nothing is kept or dropped now
+        frames = [(repr(round(t, 6)), str(int(u)), frame_text(line))
+                  for t, line, u in worker.lines(start)]
     if dwells is not None:
         inside = set()
         for first, last in dwells:

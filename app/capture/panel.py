@@ -304,14 +304,18 @@ class _Session:
     ``frames``, as models/capture/raw_record.py and the edit check read them. Its
     ``started_utc`` is when the line before ``first`` arrived and its frames' times count
     from it (two sessions of one connection never share a start: the edit check knows a
-    take by its session's port, start and frames)."""
+    take by its session's port, start and frames).
+
+    The worker's lines are read by their indices since its start (``CaptureWorker.lines``):
+    the lines a session has converted are dropped from the worker's memory as the stream
+    goes (:meth:`InstrumentLink.release_raw`), which never changes what is stored."""
 
     def __init__(self, workbench: str, kind: str, worker: CaptureWorker, first: int = 0) -> None:
         self.workbench, self.kind, self.worker = workbench, kind, worker
         self.first = first
         self.end: int | None = None
         #: seconds from the worker's start to this session's
-        self.t0 = float(worker.raw[first - 1][0]) if first > 0 else 0.0
+        self.t0 = float(worker.lines(first - 1, first)[0][0]) if first > 0 else 0.0
         self.started_utc = worker.started_utc
         if self.t0 > 0.0:
             self.started_utc = (datetime.fromisoformat(worker.started_utc)
@@ -326,18 +330,22 @@ class _Session:
 
     def _end(self) -> int:
         """The raw index after this session's last line (the worker's newest while open)."""
-        return len(self.worker.raw) if self.end is None else self.end
+        return self.worker.raw_end if self.end is None else self.end
+
+    @property
+    def converted(self) -> int:
+        """The raw index of the first line this session has not converted yet."""
+        return self.first + len(self.frames)
 
     def catch_up(self) -> None:
         """The worker's new lines converted to their stored form (a block at a time as the
         stream goes, so no save or take converts hours of them at once)."""
         self.frames.extend([round(float(t) - self.t0, 6), frame_text(line), int(bool(used))]
-                           for t, line, used in
-                           self.worker.raw[self.first + len(self.frames):self._end()])
+                           for t, line, used in self.worker.lines(self.converted, self._end()))
 
     def behind(self) -> int:
         """Lines the worker holds that are not converted yet."""
-        return self._end() - self.first - len(self.frames)
+        return self._end() - self.converted
 
     def stored(self) -> dict:
         self.catch_up()
@@ -520,6 +528,28 @@ class InstrumentLink:
         if self.slot == 0 and hasattr(self.panel, "stability"):
             self.panel.clear_statistics()
         self.panel._links_changed()
+
+    def next_session_start(self) -> int:
+        """The raw index a session split off this link's session now would start at (the
+        frame after the latest reading taken in: :meth:`CapturePanel._next_session`)."""
+        session = self.session
+        assert session is not None
+        start = session.first
+        if self.latest is not None:
+            start = max(start, self.latest.frame + 1)
+        return start
+
+    def release_raw(self) -> None:
+        """The worker's lines no session needs any more dropped from its memory (a day's
+        stream held every line twice: ~700 MB at 100 Hz for 8 h beside the session's
+        frames). Kept: what the session has not converted yet, and the line before the one
+        a session split off it would start at (its start's time); the session's open, the
+        only one of its connection that is (a session split off or ended is converted to its
+        end first), so nothing stored ever needs a line dropped."""
+        session = self.session
+        if session is None or session.end is not None:
+            return
+        session.worker.release(min(session.converted, self.next_session_start() - 1))
 
     # ------------------------------------------------------------ readings
     def mark_lost(self, lost: bool) -> None:
@@ -885,9 +915,7 @@ class CapturePanel(QDockWidget):
         raw index it starts at."""
         session = link.session
         assert session is not None
-        start = session.first
-        if link.latest is not None:
-            start = max(start, link.latest.frame + 1)
+        start = link.next_session_start()
         link.session = _Session(workbench, session.kind, session.worker, start)
         link.taken_frame = max(link.taken_frame, start - 1)
         return start
@@ -1178,11 +1206,12 @@ class CapturePanel(QDockWidget):
                 ended = ended or event.final
                 continue
             link.received += 1
-            if link.session is not None and link.received % 1000 == 0 \
-                    and link.session.behind() >= FRAMES_PER_BLOCK:
-                link.session.catch_up()  # a block's worth converted now, not hours at a save
             link.frames.append((event.time_s, event.values, event.frame))
             link.latest = event
+            if link.session is not None and link.received % 1000 == 0:
+                if link.session.behind() >= FRAMES_PER_BLOCK:
+                    link.session.catch_up()  # a block's worth converted, not hours at a save
+                link.release_raw()  # and the worker's memory holds only what is not
             link.fresh_at = time.perf_counter()
             fresh = True
             if first:

@@ -27,7 +27,7 @@ from models.capture.errors import FrameError
 from models.capture.framing import LineFramer
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["CaptureWorker", "Fault", "Reading"]
+__all__ = ["CaptureWorker", "DroppedLines", "Fault", "Reading"]
 
 
 @dataclass(frozen=True)
@@ -38,8 +38,8 @@ class Reading:
     unit: str
     #: the instrument's line as it sent it
     raw: bytes
-    #: its index among the lines the worker kept since the start (in
-    #: :attr:`CaptureWorker.raw` at ``frame - raw_first``)
+    #: its index among the lines the worker kept since the start (read back with
+    #: :meth:`CaptureWorker.lines`)
     frame: int = -1
 
 
@@ -48,6 +48,10 @@ class Fault:
     #: a :class:`models.messages.Message`: English as a ``str``, translatable
     message: str
     final: bool
+
+
+class DroppedLines(LookupError):
+    """Lines asked of a worker that it has dropped from memory (:meth:`CaptureWorker.lines`)."""
 
 
 class LinkLost(Exception):
@@ -138,15 +142,18 @@ class CaptureWorker(LinkThread):
         #: lines refused (noise, a wrong baud rate, an invalid axis, an error reply)
         self.refused = 0
         self.refusals: list[str] = []
-        #: every line the instrument sent, as sent: (seconds since the start, the line,
-        #: whether it became a reading); appended by the worker thread only
+        #: the lines the instrument sent that are still in memory, as sent: (seconds since the
+        #: start, the line, whether it became a reading); appended by the worker thread only.
+        #: Read them with :meth:`lines` (indices since the start, under the lock): lines
+        #: before ``raw_first`` have been dropped
         self.raw: list[tuple[float, bytes, bool]] = []
-        #: the index (since the start) of ``raw[0]``: frames a consumer has taken
-        #: (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory
+        #: the index (since the start) of ``raw[0]``: lines a consumer has taken
+        #: (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs
+        #: (:meth:`release`), are dropped from memory
         self.raw_first = 0
         self.raw_cap = raw_cap
         self._raw_taken = 0
-        self._raw_lock = threading.Lock()
+        self._raw_lock = threading.RLock()  # take_raw reads and releases under it
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"capture {port}", daemon=True)
         self._t0 = time.monotonic()
@@ -160,16 +167,47 @@ class CaptureWorker(LinkThread):
             self.raw.append((time_s, line, used))
             return self.raw_first + len(self.raw) - 1
 
+    @property
+    def raw_end(self) -> int:
+        """The index (since the start) after the newest line kept: the lines sent so far."""
+        with self._raw_lock:
+            return self.raw_first + len(self.raw)
+
+    def lines(self, start: int, stop: int | None = None) -> list[tuple[float, bytes, bool]]:
+        """The lines ``start`` … ``stop - 1`` (indices since the start; ``stop`` None or past
+        the newest: up to the newest), a copy. :class:`DroppedLines` when one of them has
+        been dropped from memory (never a slice of other lines)."""
+        with self._raw_lock:
+            end = self.raw_first + len(self.raw)
+            stop = end if stop is None else min(stop, end)
+            if start >= stop:
+                return []
+            if start < self.raw_first:
+                raise DroppedLines(f"{self.port}: raw lines {start}…{stop - 1} asked for, lines "
+                                   f"before {self.raw_first} were dropped from memory")
+            return self.raw[start - self.raw_first:stop - self.raw_first]
+
+    def release(self, before: int) -> int:
+        """The lines before index ``before`` (since the start) are no longer needed: dropped
+        from memory (``raw_first`` moves on; the indices of the others stay as they are).
+        The number dropped."""
+        with self._raw_lock:
+            drop = min(before, self.raw_first + len(self.raw)) - self.raw_first
+            if drop <= 0:
+                return 0
+            del self.raw[:drop]
+            self.raw_first += drop
+            return drop
+
     def take_raw(self) -> list[tuple[float, bytes, bool]]:
         """The lines sent since the last call (the caller keeps them, e.g. in a journal);
         with ``raw_cap``, only the newest ``raw_cap`` lines stay in memory after it."""
         with self._raw_lock:
-            new = self.raw[self._raw_taken - self.raw_first:]
-            self._raw_taken = self.raw_first + len(self.raw)
+            end = self.raw_first + len(self.raw)
+            new = self.lines(self._raw_taken, end)
+            self._raw_taken = end
             if self.raw_cap is not None and len(self.raw) > self.raw_cap:
-                drop = len(self.raw) - self.raw_cap
-                del self.raw[:drop]
-                self.raw_first += drop
+                self.release(end - self.raw_cap)
             return new
 
     @property

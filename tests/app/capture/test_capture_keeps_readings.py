@@ -14,7 +14,7 @@ import time
 import pytest
 
 from app.capture.instruments import Autocollimator, LineReadoutInstrument
-from app.capture.worker import CaptureWorker
+from app.capture.worker import CaptureWorker, DroppedLines
 from app.main import main
 from models.capture.errors import FrameError
 from models.capture.journal import CaptureJournal, journal_path, read_journal
@@ -179,6 +179,24 @@ def test_raw_lines_in_memory_are_capped_once_taken():
     assert worker._keep(9.9, b"next", False) == 12
     assert worker.take_raw() == [(9.9, b"next", False)] and len(worker.raw) == 5
     assert worker.raw[12 - worker.raw_first] == (9.9, b"next", False)
+
+
+def test_raw_lines_are_read_by_their_index_since_the_start_and_a_dropped_one_is_refused():
+    """The panel's worker drops the lines its sessions have converted (release): a line is
+    read by its index since the start whatever was dropped, and asking for a dropped one is
+    an error, never another line (a slice of the list as held named other lines)."""
+    worker = CaptureWorker("/dev/null", Autocollimator())
+    for i in range(10):
+        worker._keep(i * 0.1, b"line %d" % i, i % 2 == 0)
+    assert worker.release(4) == 4 and worker.raw_first == 4 and worker.raw_end == 10
+    assert worker.lines(4, 6) == [(0.4, b"line 4", True), (0.5, b"line 5", False)]
+    assert [line for _, line, _ in worker.lines(8)] == [b"line 8", b"line 9"]
+    assert worker.lines(9, 99) == [(0.9, b"line 9", False)] and worker.lines(10) == []
+    with pytest.raises(DroppedLines, match="lines 3…4 asked for, lines before 4 were dropped"):
+        worker.lines(3, 5)
+    assert worker.release(2) == 0 and worker.release(99) == 6  # never back; never past the newest
+    assert worker.raw_first == worker.raw_end == 10 and worker._keep(1.0, b"line 10", True) == 10
+    assert worker.lines(10) == [(1.0, b"line 10", True)]
 
 
 def test_the_journal_reads_back_what_was_synced_and_never_replaces_one(tmp_path):

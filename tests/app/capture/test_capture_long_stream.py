@@ -6,17 +6,21 @@ the stop note), and what is stored is the same text, digest and frames as before
 from __future__ import annotations
 
 import json
-from types import SimpleNamespace
 
+from app.capture.instruments import Autocollimator
 from app.capture.panel import _Session
+from app.capture.worker import CaptureWorker
 from models.capture.raw_record import FRAMES_PER_BLOCK, raw_digest, session_json
 
 
 def _worker(lines: int):
-    raw = [(0.01 * i + 0.0004, f"3 003 {i % 997 * 0.001:.3f} -1.250".encode(), i % 3 != 0)
-           for i in range(lines)]
-    return SimpleNamespace(raw=raw, port="/dev/ttyUSB0", baud=9600,
-                           started_utc="2026-12-05T07:00:00+00:00")
+    """A worker (not started) holding ``lines`` lines, kept as its thread keeps them."""
+    worker = CaptureWorker("/dev/ttyUSB0", Autocollimator(), 9600)
+    worker.started_utc = "2026-12-05T07:00:00+00:00"
+    for i in range(lines):
+        worker._keep(0.01 * i + 0.0004, f"3 003 {i % 997 * 0.001:.3f} -1.250".encode(),
+                     i % 3 != 0)
+    return worker
 
 
 def test_a_sessions_frames_are_stored_as_the_plain_conversion_would_store_them():
@@ -27,7 +31,7 @@ def test_a_sessions_frames_are_stored_as_the_plain_conversion_would_store_them()
     assert session.behind() == len(worker.raw)
     session.catch_up()  # as the drain does, a block's worth at a time
     assert session.behind() == 0
-    worker.raw.append((999.0, b"3 003 1.000 2.000", True))
+    worker._keep(999.0, b"3 003 1.000 2.000", True)
     assert session.behind() == 1
     stored = session.stored()
     plain = session_json("autocollimator", worker.port, worker.baud, worker.started_utc,
@@ -37,7 +41,7 @@ def test_a_sessions_frames_are_stored_as_the_plain_conversion_would_store_them()
     assert raw_digest([stored]) == raw_digest([plain])
     assert json.loads(text)[0]["frames"][-1] == [999.0, "3 003 1.000 2.000", 1]
     # what was stored stays as it was while the stream goes on
-    worker.raw.append((1000.0, b"3 003 1.001 2.000", True))
+    worker._keep(1000.0, b"3 003 1.001 2.000", True)
     assert len(stored["frames"]) == len(worker.raw) - 1
     assert len(session.stored()["frames"]) == len(worker.raw)
 
