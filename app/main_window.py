@@ -8,6 +8,7 @@ and sending a run to the positioning workbench."""
 from __future__ import annotations
 
 import contextlib
+import logging
 from pathlib import Path
 
 import numpy as np
@@ -49,6 +50,8 @@ from widgets.i18n import (
 )
 from widgets.screen_fit import fit_to_screen
 from widgets.workbench_presenter import SAMPLES_DIR, WorkbenchPresenter
+
+log = logging.getLogger(__name__)
 
 LANGUAGE_SETTING = "ui/language"  # "system", "en" or "zh_CN" (widgets/i18n.py)
 ANGLE_UNIT_SETTING = "display/angle_unit"  # the unit results are read in, for every workbench
@@ -448,7 +451,16 @@ class MainWindow(QMainWindow):
             self.current.angle_unit)
 
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802
-        if not self.projects.confirm_discard():
+        try:
+            let_go = self.projects.confirm_discard()
+        except Exception as exc:  # noqa: BLE001 - the close event comes accepted: an exception
+            # here closed the window with the work in no file
+            log.exception("closing: the unsaved work could not be saved")
+            self.tell(tr("Cannot save"), tr("The project could not be saved ({reason}). The "
+                                             "window stays open with your readings.")
+                      .format(reason=explained(exc) or type(exc).__name__))
+            let_go = False
+        if not let_go:
             event.ignore()
             return
         self.qsettings.setValue("window/geometry", self.saveGeometry())

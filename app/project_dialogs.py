@@ -50,6 +50,19 @@ class ProjectDialogs:
             QMessageBox.StandardButton.Yes)
         return answer == QMessageBox.StandardButton.Yes
 
+    def ask_overwrite_changed(self, name: str) -> bool | None:
+        answer = self.window.ask(
+            tr("Project changed on disk"),
+            tr("{name} was changed on disk since this window opened or saved it (by another "
+               "window, a colleague or a program): saving replaces those changes.\n\n"
+               "Yes: replace it with this window's project. No: save this window's project "
+               "under another name. Cancel: do not save.").format(name=name),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No
+            | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.No)
+        if answer == QMessageBox.StandardButton.Yes:
+            return True
+        return False if answer == QMessageBox.StandardButton.No else None
+
     def tell(self, title: str, text: str) -> None:
         self.window.tell(title, text)
 

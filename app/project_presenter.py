@@ -25,13 +25,14 @@ from models.project.file import (
     ProjectFileError,
     WorkbenchState,
     check_project,
+    file_sha256,
     load_project,
     project_from_json,
     save_project,
 )
 from models.project.recovery import RecoveryStore
 from models.readings.sheet import NumericRows
-from widgets.i18n import explained, tr
+from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
 from widgets.workers import application_workers
 
@@ -68,6 +69,10 @@ class ProjectView(Protocol):
 
     def ask_recover(self, name: str, when: str) -> bool:
         """Restore the unsaved work of ``name``, autosaved ``when``?"""
+
+    def ask_overwrite_changed(self, name: str) -> bool | None:
+        """The project file ``name`` was changed on disk since this window opened or saved
+        it: True: replace it; False: save under another name; None: cancel."""
 
     def tell(self, title: str, text: str) -> None: ...
 
@@ -110,6 +115,9 @@ class ProjectPresenter(QObject):
         self.store = store
         self.current = current
         self.path: Path | None = None
+        #: SHA-256 of ``path`` as this window last read or wrote it (None: not known): a
+        #: save over a file changed since (another window, a colleague, a program) asks
+        self.disk_sha256: str | None = None
         self.metadata: dict = {}
         #: the instruments' raw frames, saved and opened with the project (the window sets
         #: its capture panel's raw_capture and load_raw_capture)
@@ -171,6 +179,7 @@ class ProjectPresenter(QObject):
         self.metadata.pop("autosaved_at", None)
         self.metadata.pop("project_path", None)
         self.metadata.pop("pending_edits", None)
+        self.metadata.pop("project_sha256", None)
         for presenter in self.presenters:
             presenter.load_state(project.workbenches.get(presenter.kind.key, WorkbenchState()))
         self.load_raw_capture(project.raw_capture)
@@ -196,6 +205,7 @@ class ProjectPresenter(QObject):
             p.kind.key: WorkbenchState(settings=dict(self.new_settings(p.kind.key)))
             for p in self.presenters}))
         self.path = None
+        self.disk_sha256 = None
         self.update_title()
 
     def open_project_dialog(self) -> None:
@@ -216,10 +226,24 @@ class ProjectPresenter(QObject):
             return False
         self.apply_project(project)
         self.path = Path(path)
+        self.disk_sha256 = project.file_sha256
         self._add_recent(self.path)
+        self._tell_repairs(project)
         self.update_title()
         self.view.show_status(tr("Opened {path}").format(path=path), 5000)
         return True
+
+    def _tell_repairs(self, project: Project) -> None:
+        """Text repaired as the file was read (a broken character) is said, cell by cell,
+        and the project is unsaved work: it differs from its file."""
+        if not project.repairs:
+            return
+        for presenter in self.presenters:
+            presenter.mark_modified()
+        shown = [translated(r) for r in project.repairs[:20]]
+        if len(project.repairs) > 20:
+            shown.append(tr("… and {count} more").format(count=len(project.repairs) - 20))
+        self.view.tell(tr("Opened with repairs"), "\n".join(shown))
 
     def open_project_state(self, project_json: str, workbench: str) -> bool:
         """Load the project behind a certificate (asking about unsaved work first) and show its
@@ -234,9 +258,21 @@ class ProjectPresenter(QObject):
             return False
         self.apply_project(project)
         self.path = None
+        self.disk_sha256 = None
+        self._tell_repairs(project)
         self.view.show_workbench(workbench)
         self.update_title()
         return True
+
+    def _changed_on_disk(self) -> bool:
+        """Whether the project's file is no longer what this window last read or wrote
+        (by its SHA-256; a file that is gone, or cannot be read, is not asked about: the
+        save says what happens)."""
+        try:
+            current = file_sha256(self.path)
+        except OSError:
+            return False
+        return current != self.disk_sha256
 
     def _kinds(self) -> dict:
         return {p.kind.key: p.kind for p in self.presenters}
@@ -255,13 +291,28 @@ class ProjectPresenter(QObject):
         return self.save_to(path)
 
     def save_to(self, path: str | Path) -> bool:
+        """Save the project in ``path``; False when it was not saved (told, or cancelled).
+        The project's own file changed on disk since this window read or wrote it is not
+        replaced unasked."""
+        if self.path is not None and Path(path) == self.path and self._changed_on_disk():
+            answer = self.view.ask_overwrite_changed(self.path.name)
+            if answer is None:
+                return False
+            if answer is False:
+                return self.save_as()
         try:
-            save_project(path, self.project())
-        except OSError as exc:
+            digest = save_project(path, self.project())
+        except Exception as exc:  # noqa: BLE001 - any failure (UnicodeEncodeError,
+            # MemoryError, a TypeError of a setting) is a save that did not happen: said,
+            # and the work stays (an exception here closed the window unsaved)
+            log.exception("save of %s failed", path)
+            reason = (exc.strerror if isinstance(exc, OSError) else None) or explained(exc) \
+                or type(exc).__name__
             self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
-                           .format(path=path, reason=exc.strerror or explained(exc)))
+                           .format(path=path, reason=reason))
             return False
         self.path = Path(path)
+        self.disk_sha256 = digest
         for presenter in self.presenters:
             presenter.mark_saved()
         self.recovery.discard()
@@ -371,36 +422,52 @@ class ProjectPresenter(QObject):
         pending = self._pending_edits()
         if not self.is_modified and not pending:
             return
+        # the project as it is now: a save from here on makes this autosave stale
+        generation = self.recovery.generation
         if self._rows() > AUTOSAVE_THREAD_ROWS:
             # the raw capture too (it was left out: a project recovered from a large sheet's
             # autosave had its readings and no frames, and its certificate no raw digest);
             # its sessions are snapshots whose frames are encoded blocks, cheap to take here
-            project = self._with_pending(
-                Project({p.kind.key: p.state(deep=False) for p in self.presenters},
-                        dict(self.metadata), self.raw_capture()), pending)
             if self._autosave_thread is not None and self._autosave_thread.is_alive():
                 self.autosave_timer.start()  # the last one is still writing: try again soon
                 return
+            project = self._with_pending(
+                Project({p.kind.key: p.state(deep=False) for p in self.presenters},
+                        self._autosaved_metadata(), self.raw_capture()), pending)
             self._autosave_thread = threading.Thread(
-                target=self._write_recovery_in_background, args=(project,), daemon=True)
+                target=self._write_recovery_in_background, args=(project, generation),
+                daemon=True)
             self._autosave_thread.start()
         else:
-            self._write_recovery(self._with_pending(self.project(), pending))
+            project = self.project()
+            project.metadata = self._autosaved_metadata()
+            self._write_recovery(self._with_pending(project, pending), generation=generation)
 
-    def _write_recovery_in_background(self, project: Project) -> None:
+    def _autosaved_metadata(self) -> dict:
+        """The details, with the SHA-256 of the project file the work was read from or last
+        saved in: the recovered work's save asks when that file was changed since."""
+        metadata = dict(self.metadata)
+        if self.disk_sha256:
+            metadata["project_sha256"] = self.disk_sha256
+        return metadata
+
+    def _write_recovery_in_background(self, project: Project, generation: int) -> None:
         # the window keeps the interpreter every 0.1 ms; a million new strings would start
         # full cyclic-GC passes that hold it for a few hundred ms (strings hold no cycles)
         workers = application_workers()
         with workers.gui_thread_first(), workers.cyclic_gc_paused():
-            self._write_recovery(project, workers.wait_while_analysing)
+            self._write_recovery(project, workers.wait_while_analysing, generation)
 
-    def _write_recovery(self, project: Project, between_blocks=None) -> None:
+    def _write_recovery(self, project: Project, between_blocks=None,
+                        generation: int | None = None) -> None:
         try:
-            self.recovery.write(project, self.path, between_blocks)
-        except OSError as exc:
-            log.warning("autosave failed: %s", exc)
-            reason = f"{self.recovery.path}: {exc.strerror or explained(exc)}"
-            self.autosave_finished.emit(reason)
+            self.recovery.write(project, self.path, between_blocks, generation)
+        except Exception as exc:  # noqa: BLE001 - any failure is said (not only OSError: one
+            # escaping here killed the autosave thread without a word)
+            log.exception("autosave failed")
+            reason = (exc.strerror if isinstance(exc, OSError) else None) or explained(exc) \
+                or type(exc).__name__
+            self.autosave_finished.emit(f"{self.recovery.path}: {reason}")
             return
         self.autosave_finished.emit("")
 
@@ -441,10 +508,14 @@ class ProjectPresenter(QObject):
         typed = project.metadata.get("pending_edits") or {}
         self.apply_project(project)
         self.path = Path(source) if source else None
+        # the file the crashed window's work was based on: a save asks if it changed since
+        # (none known: asks whenever the file is there)
+        self.disk_sha256 = project.metadata.get("project_sha256") or None
         for presenter in self.presenters:  # recovered work is unsaved work
             presenter.mark_modified()
-        self.recovery.adopt(path)
+        self.recovery.adopt(path)  # the orphan renamed to this window's autosave, not deleted
         self.autosave()  # now this window's own autosave
+        self._tell_repairs(project)
         self.update_title()
         if isinstance(typed, dict) and typed:
             self.view.show_status(tr("Recovered, with the values that were still being typed "

@@ -27,7 +27,9 @@ written back as schema 2.
 
 from __future__ import annotations
 
+import hashlib
 import json
+import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -36,7 +38,7 @@ from typing import TYPE_CHECKING, Any
 from models import __version__ as APP_VERSION
 from models.capture.raw_record import raw_digest, raw_sessions_from_json, sessions_json_pieces
 from models.messages import QT_TR_NOOP, message, reason_of
-from models.project.atomic_write import write_text_atomic
+from models.project.atomic_write import write_bytes_atomic
 
 if TYPE_CHECKING:
     from models.workbench import Workbench
@@ -48,6 +50,7 @@ __all__ = [
     "ProjectFileError",
     "WorkbenchState",
     "check_project",
+    "file_sha256",
     "load_project",
     "migrate_certificate_details",
     "project_from_json",
@@ -76,6 +79,11 @@ class Project:
     metadata: dict[str, Any] = field(default_factory=dict)
     #: workbench key -> its capture sessions (models/capture/raw_record.py), optional
     raw_capture: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+    #: what was repaired as the file was read (each a sentence naming the place), not saved
+    repairs: list[str] = field(default_factory=list, compare=False, repr=False)
+    #: SHA-256 (hex) of the file's bytes as read by :func:`load_project` ("" otherwise):
+    #: the version a save must not replace unasked when it was changed since
+    file_sha256: str = field(default="", compare=False, repr=False)
 
 
 _ROWS_CHUNK = 20_000
@@ -165,6 +173,13 @@ def project_from_json(text: str, source: str = "project",
             QT_TR_NOOP("{source}: damaged project file (nested too deep, or a number too long); nothing "
                        "was changed"),
             source=source)) from None
+    try:
+        repairs = _repair_lone_surrogates(text, document, source)
+    except RecursionError:
+        raise ProjectFileError(message(
+            QT_TR_NOOP("{source}: damaged project file (nested too deep, or a number too long); nothing "
+                       "was changed"),
+            source=source)) from None
     if not isinstance(document, dict) or document.get("format") != FORMAT_NAME:
         raise ProjectFileError(message(
             QT_TR_NOOP("{source}: not an AngleBench project file"),
@@ -232,7 +247,75 @@ def project_from_json(text: str, source: str = "project",
                 source=source, key=key))
         project.workbenches[str(key)] = WorkbenchState(clean_rows, dict(settings))
     project.raw_capture = _raw_capture(document.get("raw_capture", {}), source)
+    project.repairs = repairs
     return project
+
+
+#: a UTF-16 surrogate written as a JSON escape (a pair, or half of one), or one in the text
+_MAYBE_SURROGATE = re.compile(r"\\u[dD][89abcdefABCDEF]|[\ud800-\udfff]")
+_LONE_SURROGATE = re.compile(r"[\ud800-\udfff]")
+
+
+def _repair_lone_surrogates(text: str, document: Any, source: str) -> list[str]:
+    """Each lone UTF-16 surrogate in ``document``'s texts (a JSON escape such as
+    ``"\\ud800"``: half of a character, written by a tool that cut an emoji in two, or by
+    hand) replaced by U+FFFD, in place; a sentence naming each place and what was done.
+    Such text cannot be written as UTF-8: a project holding one could never be saved.
+    Raw frames are not repaired (that would change what the instrument sent): refused.
+    ``text`` is only searched, so a file with no escape of a surrogate costs one scan."""
+    if not _MAYBE_SURROGATE.search(text):
+        return []
+    repairs: list[str] = []
+
+    def fixed(value: str, place: tuple, is_key: bool = False) -> str:
+        if not _LONE_SURROGATE.search(value):
+            return value
+        codes = ", ".join(f"U+{ord(c):04X}" for c in _LONE_SURROGATE.findall(value))
+        repaired = _LONE_SURROGATE.sub("\ufffd", value)
+        if is_key:  # the place named by the key as it now reads
+            place = (*place[:-1], repaired)
+        if place[:1] == ("raw_capture",):
+            raise ProjectFileError(message(
+                QT_TR_NOOP("{source}: {where}: a broken character ({codes}: half of a UTF-16 "
+                           "pair) in the raw frames; nothing was changed"),
+                source=source, where=_place(place), codes=codes))
+        repairs.append(message(
+            QT_TR_NOOP("{source}: {where}: a broken character ({codes}: half of a UTF-16 pair) "
+                       "was replaced by U+FFFD (\ufffd)"),
+            source=source, where=_place(place), codes=codes))
+        return repaired
+
+    def walk(value: Any, place: tuple) -> Any:
+        if isinstance(value, str):
+            return fixed(value, place)
+        if isinstance(value, list):
+            for i, item in enumerate(value):
+                if isinstance(item, str | list | dict):
+                    value[i] = walk(item, (*place, i))
+        elif isinstance(value, dict):
+            for key in list(value):
+                new_key = fixed(key, (*place, key), is_key=True) if isinstance(key, str) else key
+                item = value.pop(key) if new_key != key else value[key]
+                value[new_key] = walk(item, (*place, new_key)) \
+                    if isinstance(item, str | list | dict) else item
+        return value
+
+    walk(document, ())
+    return repairs
+
+
+def _place(place: tuple) -> str:
+    """Where a text is in the project document, as the window names it."""
+    if len(place) >= 5 and place[0] == "workbenches" and place[2] == "rows":
+        return message(QT_TR_NOOP("workbench '{key}', row {row}, column {column}"),
+                       key=place[1], row=place[3] + 1, column=place[4] + 1)
+    if len(place) >= 4 and place[0] == "workbenches" and place[2] == "settings":
+        return message(QT_TR_NOOP("workbench '{key}', setting '{name}'"),
+                       key=place[1], name=place[3])
+    if len(place) >= 4 and place[:2] == ("metadata", "certificates"):
+        return message(QT_TR_NOOP("certificate details of workbench '{key}', '{name}'"),
+                       key=place[2], name=place[3])
+    return message(QT_TR_NOOP("'{name}'"), name=" › ".join(str(p) for p in place))
 
 
 def _raw_capture(raw: Any, source: str) -> dict[str, list[dict[str, Any]]]:
@@ -309,9 +392,33 @@ def check_project(project: Project, kinds: Mapping[str, Any], source: str = "pro
 
 
 def save_project(path: str | Path, project: Project,
-                 between_blocks: Callable[[], None] | None = None) -> None:
-    """Write the project atomically (temp file + rename)."""
-    write_text_atomic(path, project_json_parts(project, between_blocks))
+                 between_blocks: Callable[[], None] | None = None) -> str:
+    """Write the project atomically (temp file + rename); the SHA-256 (hex) of the bytes
+    written.
+
+    A lone UTF-16 surrogate (half a character, which UTF-8 cannot hold: pasted, or from a
+    tool) is written as its JSON escape (``\\ud800``, "backslashreplace": outside a JSON
+    string there is no text but ASCII) instead of failing the save: the file is valid
+    UTF-8 and reads back exactly, and opening it replaces the character, saying where."""
+    digest = hashlib.sha256()
+
+    def encoded(pieces):
+        for piece in pieces:
+            data = piece.encode("utf-8", "backslashreplace")
+            digest.update(data)
+            yield data
+
+    write_bytes_atomic(path, encoded(project_json_parts(project, between_blocks)))
+    return digest.hexdigest()
+
+
+def file_sha256(path: str | Path) -> str:
+    """SHA-256 (hex) of the file at ``path`` (OSError when it cannot be read)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as handle:
+        while block := handle.read(1 << 20):
+            digest.update(block)
+    return digest.hexdigest()
 
 
 def load_project(path: str | Path, kinds: Mapping[str, Workbench[Any]] | None = None
@@ -330,4 +437,6 @@ def load_project(path: str | Path, kinds: Mapping[str, Workbench[Any]] | None = 
         raise ProjectFileError(message(
             QT_TR_NOOP("{path}: damaged project file (not UTF-8 text)"),
             path=path)) from None
-    return project_from_json(text, str(path), kinds)
+    project = project_from_json(text, str(path), kinds)
+    project.file_sha256 = hashlib.sha256(data).hexdigest()
+    return project

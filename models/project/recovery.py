@@ -69,6 +69,13 @@ class RecoveryStore:
         self.lock_path = self.folder / f"{self.PREFIX}{token}.lock"
         self._lock_fd: int | None = None
         self._write_lock = threading.Lock()
+        #: one more at each :meth:`discard` (the project was saved, or the window closes):
+        #: an autosave of a project taken before is not put on disk (:meth:`write`)
+        self.generation = 0
+        #: held for the moment an autosave is put in place, or the autosave is discarded
+        self._publish_lock = threading.Lock()
+        #: orphans adopted that could not be renamed: deleted once an autosave is written
+        self._adopted: list[Path] = []
 
     # -- this window's own -------------------------------------------------------
     def claim(self) -> None:
@@ -95,22 +102,53 @@ class RecoveryStore:
             self.lock_path.unlink()
 
     def write(self, project: Project, project_path: str | Path | None = None,
-              between_blocks: Callable[[], None] | None = None) -> None:
+              between_blocks: Callable[[], None] | None = None,
+              generation: int | None = None) -> bool:
         """Autosave ``project`` (safe from a worker thread: one write at a time);
-        ``between_blocks`` is called between blocks of rows (see ``project_to_json``)."""
+        ``between_blocks`` is called between blocks of rows (see ``project_to_json``).
+
+        ``generation``: :attr:`generation` when ``project`` was taken (by default, now).
+        The autosave is written beside its place and put there only if nothing was
+        discarded since: a project saved while a long autosave was being written leaves
+        no autosave older than itself (the save discarded it, and the rename that ended
+        the write put it back, to be offered after a crash over the newer file). False
+        when it was dropped so."""
+        if generation is None:
+            generation = self.generation
         self.folder.mkdir(parents=True, exist_ok=True)
         project.metadata = dict(project.metadata)
         project.metadata["autosaved_at"] = time.strftime("%Y-%m-%d %H:%M:%S")
         project.metadata["project_path"] = str(project_path) if project_path else ""
+        pending = self.path.with_name(f".{self.path.name}.pending.tmp")
         with self._write_lock:
-            save_project(self.path, project, between_blocks)
+            save_project(pending, project, between_blocks)
+            with self._publish_lock:
+                if generation != self.generation:
+                    with contextlib.suppress(OSError):
+                        pending.unlink()
+                    return False
+                os.replace(pending, self.path)
+                for orphan in self._adopted:  # their work is in this window's autosave now
+                    with contextlib.suppress(FileNotFoundError):
+                        orphan.unlink()
+                    self._drop_lock_of(orphan)
+                self._adopted.clear()
+        return True
 
     def exists(self) -> bool:
         return self.path.is_file()
 
     def discard(self) -> None:
-        with contextlib.suppress(FileNotFoundError):
-            self.path.unlink()
+        """This window's autosave goes (and one being written is not put in place)."""
+        with self._publish_lock:
+            self.generation += 1
+            with contextlib.suppress(FileNotFoundError):
+                self.path.unlink()
+            for orphan in self._adopted:  # adopted work saved (or let go) with this window's
+                with contextlib.suppress(FileNotFoundError):
+                    orphan.unlink()
+                self._drop_lock_of(orphan)
+            self._adopted.clear()
 
     # -- windows that died ----------------------------------------------------------
     def orphans(self) -> list[Path]:
@@ -148,14 +186,26 @@ class RecoveryStore:
         return target
 
     def adopt(self, path: Path) -> None:
-        """An orphan's work now lives in this window: its file and lock go."""
-        with contextlib.suppress(FileNotFoundError):
-            path.unlink()
-        self._drop_lock_of(path)
+        """An orphan's work now lives in this window: its file becomes this window's
+        autosave (renamed, under this window's lock: at no moment is the work in no file;
+        it was deleted first, and a second crash before this window's own autosave was
+        written, seconds later for a large sheet, lost it all), and its lock goes. When
+        it cannot be renamed (or this window has an autosave of its own), the orphan stays
+        until this window's next autosave is written."""
+        if not self.exists():
+            try:
+                with self._publish_lock:
+                    os.replace(path, self.path)
+            except OSError:
+                pass
+            else:
+                self._drop_lock_of(path)
+                return
+        self._adopted.append(path)
 
     def _drop_lock_of(self, path: Path) -> None:
         if path.name.endswith(self.SUFFIX) and path.name.startswith(self.PREFIX):
-            with contextlib.suppress(FileNotFoundError):
+            with contextlib.suppress(OSError):  # gone, or a read-only folder: left
                 path.with_name(path.name[: -len(self.SUFFIX)] + ".lock").unlink()
 
     def _clean_stale_temps(self) -> None:
