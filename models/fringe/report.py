@@ -346,8 +346,12 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
-        rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
-                     f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
+        # the fit's quality figures have no U: each in the value column of a row of its own,
+        # the U column empty (the residual RMS printed there read as the U of R²)
+        rows.append((message(QT_TR_NOOP("{channel}: R² of the fit"), channel=label),
+                     f"{fit.r_squared:.8f}", ""))
+        rows.append((message(QT_TR_NOOP("{channel}: residual RMS of the fit"), channel=label),
+                     f"{fit.residual_rms * 1e3:.3g} mV", ""))
     return rows
 
 
