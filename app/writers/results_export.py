@@ -186,7 +186,11 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
         (f"Decided value ({q})", document.conformity.value),
-        (f"U of the decided value ({q})", document.conformity.expanded),
+        # both half-widths, as the certificate prints an asymmetric interval (−U₋/+U₊); one
+        # "U" gave the upper only (review 61 F5)
+        (f"U of the decided value, below it (U−) ({q})",
+         document.conformity.lower_half_width),
+        (f"U of the decided value, above it (U+) ({q})", document.conformity.expanded),
         (f"Decided value: interval low ({q})", document.conformity.interval_low),
         (f"Decided value: interval high ({q})", document.conformity.interval_high),
         ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
