@@ -172,9 +172,9 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
 
 
 #: what the *Certificate* sheet says of results written with no certificate issued
-NOT_ISSUED = ("not issued: no certificate was issued with these results, so they are no "
-              "certificate's record; a certificate number or date of issue typed in the "
-              "details is not shown")
+NOT_ISSUED = ("not issued: these results were written apart from any certificate's issue, "
+              "so they are no certificate's record; a certificate number or date of issue "
+              "typed in the details is not shown")
 
 
 def issued_status(number: str) -> str:

@@ -78,7 +78,8 @@ def test_results_written_without_issuing_say_so_and_are_not_recorded(samples_dir
     sheet = _certificate_sheet(xlsx)
     assert sheet["Certificate number"] is None and sheet["Date of issue"] is None
     assert "AB-2026-0042" not in sheet.values() and TYPED_DATE not in sheet.values()
-    assert sheet["Status"].startswith("not issued: no certificate was issued with these results")
+    assert sheet["Status"].startswith("not issued: these results were written apart from any "
+                                      "certificate's issue")
     assert sheet["Certificate PDF SHA-256"] is None
     capsys.readouterr()
     assert main(["register", "verify", str(xlsx)]) == 1
