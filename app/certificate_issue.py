@@ -8,6 +8,7 @@ Shared by the window's certificate presenter and ``anglebench analyze --certific
 from __future__ import annotations
 
 import dataclasses
+import os
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -102,7 +103,9 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       replacement: bool = False, separate_calibration: str = "",
                       raw_capture: list | None = None,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
-                      signing: tuple[str, str] = ("", "")) -> CertificateRecord:
+                      signing: tuple[str, str] = ("", ""),
+                      results: Callable[[Any, CertificateRecord], bytes] | None = None,
+                      results_path: str = "") -> CertificateRecord:
     """Issue and record the certificate, then write it to ``path``. Raises RegisterError,
     ValueError (the content, e.g. details that contradict the settings), OSError before
     the commit (nothing recorded), or IssuedNotWritten (recorded; the file not written: its
@@ -116,7 +119,12 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     recorded (a DCC refused as invalid issues nothing) and written to ``dcc_path`` after
     the PDF. ``signing``: the lab's key and certificate files (empty: the environment's).
     ``separate_calibration``: why an original for the item and date of calibration of a
-    current certificate is a calibration of its own (else SameCalibrationIssued)."""
+    current certificate is a calibration of its own (else SameCalibrationIssued).
+    ``results(document, record)``: the results file (CSV or XLSX) of the certificate issued,
+    made after the commit from the document the recorded PDF was rendered from and the
+    register's record (so with the number and date of issue the register gave, and the
+    PDF's and DCC's SHA-256), its SHA-256 recorded in the register (a chained entry:
+    ``register verify`` checks it), then written to ``results_path``."""
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
                       {"certificates": {kind.key: metadata.to_dict()}},
                       {kind.key: raw_capture} if raw_capture else {})
@@ -126,13 +134,14 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     request = IssueRequest(kind.key, metadata, project_to_json(project),
                            kind.headline_figures(result))
 
-    made: dict[str, bytes] = {}
+    made: dict[str, Any] = {}
 
     def render(final: CertificateMetadata, head: str = "") -> bytes:
         document = dataclasses.replace(
             kind.certificate_document(result, final, source_name, settings),
             raw_data_sha256=digest, edited_readings=edited, register_head=head)
         pdf = certificate_pdf_bytes(document)
+        made["document"] = document  # the last one rendered is the one recorded
         if dcc is not None:  # the register may render again: the last one is recorded
             # signed when the lab's key and certificate are configured (models/dcc/signature)
             made["dcc"] = sign_if_configured(dcc(document, pdf), *signing)
@@ -142,6 +151,8 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     check_output(path, register_files(register.url))
     if dcc_path:
         check_output(dcc_path, register_files(register.url), "--dcc")
+    if results is not None and results_path:
+        check_output(results_path, register_files(register.url), "--results")
     # the register stores the DCC made with the PDF of the same attempt (same number, the
     # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
@@ -158,4 +169,16 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
             write_bytes_atomic(dcc_path, made["dcc"])
         except OSError as exc:
             raise IssuedNotWritten(record, dcc_path, exc) from exc
+    if results is not None and results_path:
+        from models.register.store import RegisterError
+
+        data = results(made["document"], record)
+        try:  # recorded before it is written: no results file of it the register lacks
+            register.record_results(record.number, data, os.path.basename(results_path))
+        except RegisterError as exc:
+            raise IssuedNotWritten(record, results_path, OSError(str(exc))) from exc
+        try:
+            write_bytes_atomic(results_path, data)
+        except OSError as exc:
+            raise IssuedNotWritten(record, results_path, exc) from exc
     return record

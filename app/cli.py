@@ -612,7 +612,9 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
                                        kind.settings_with_defaults(settings), rows,
                                        Path(args.file).name, args.certificate,
                                        dcc=dcc, dcc_path=args.dcc or "",
-                                       separate_calibration=getattr(args, "separate_calibration", ""))
+                                       separate_calibration=getattr(args, "separate_calibration", ""),
+                                       results=_issued_results(args) if args.results else None,
+                                       results_path=args.results or "")
     except RegisterError as exc:
         _say(rendered(message(QT_TR_NOOP("anglebench analyze: {reason}; no certificate was "
                                          "written"), reason=reason_of(exc)), words))
@@ -630,7 +632,20 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
     if args.dcc:
         _say(rendered(message(QT_TR_NOOP("DCC of {number} written to {path}"),
                               number=record.number, path=args.dcc), words))
+    if args.results:
+        _say(rendered(message(QT_TR_NOOP("Results of {number} written to {path} and recorded "
+                                         "in the register"),
+                              number=record.number, path=args.results), words))
     return record
+
+
+def _issued_results(args: argparse.Namespace):
+    """The results file of the certificate issued (app/certificate_issue.py): made from the
+    document recorded and the register's record, so with its number and date of issue."""
+    from app.writers.results_export import results_bytes
+
+    return lambda document, record: results_bytes(args.results, document,
+                                                  ANGLE_UNITS[args.unit], record)
 
 
 def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
@@ -660,6 +675,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
             record = _issue(args, kind, result, metadata, settings, rows())
             if record is None:
                 return EXIT_BAD_INPUT
+            return 0  # the results file too, issued and recorded with it
         elif args.certificate:
             _write_pdf_and_dcc(args, kind, result, document, words, settings)
             _say(rendered(message(QT_TR_NOOP(

@@ -3,8 +3,9 @@
     anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
                                                to extract), its chain value and the head before it
-    anglebench register verify [FILE.pdf|.xml] the hash chain, every stored PDF and DCC; is this
-                                               PDF (or DCC), byte for byte, one we issued?
+    anglebench register verify [FILE.pdf|.xml|.xlsx|.csv] the hash chain, every stored PDF
+                                               and DCC; is this PDF (or DCC, or results file
+                                               written with one), byte for byte, one we issued?
                                                --head VALUE (or
                                                --head-from CERT.pdf): does the register still
                                                hold the history up to that head?
@@ -84,7 +85,7 @@ def _parser(words) -> argparse.ArgumentParser:
     verify.add_argument("pdf", nargs="?", default="", help=words(QT_TR_NOOP(
         "the PDF to check (without it: the register's hash chain and stored PDFs only); a "
         ".xml file is checked as a digital calibration certificate (DCC) the register "
-        "issued")))
+        "issued, a .xlsx or .csv file as the results file written with one")))
     verify.add_argument("--head", default="", metavar="VALUE", help=words(QT_TR_NOOP(
         "a chain head noted earlier (12 to 64 hex digits): the register must still hold the "
         "history up to it")))
@@ -234,6 +235,8 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if not path:
         return 1 if failed else 0
     data = _read(path)
+    if path.lower().endswith((".xlsx", ".csv")):  # a results file issued with a certificate
+        return _verify_results(register, path, data, out) or int(failed)
     is_dcc = path.lower().endswith(".xml")  # a digital calibration certificate received
     found = register.verify_dcc(data) if is_dcc else register.verify_all(data)
     if len(found) > 1:
@@ -269,6 +272,32 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             number=record.number, actual=register.chain_before(record.number)))
         failed = True
     return 1 if failed else 0
+
+
+def _verify_results(register, path: str, data: bytes, out) -> int:
+    """A results file (CSV or XLSX): the certificate it was recorded with when issued, or
+    1 when the register holds no results file with its SHA-256."""
+    found = register.verify_results(data)
+    if not found:
+        out(message(QT_TR_NOOP(
+            "{path}: NOT in the register (no results file written with an issued certificate "
+            "has its SHA-256: altered, written without issuing one, or from another "
+            "register)"), path=path))
+        return 1
+    for record, recorded_at in found:
+        out(message(QT_TR_NOOP(
+            "{path}: the results file of certificate {number}, recorded {recorded_at}, "
+            "{status}; identical to the record (SHA-256)"), path=path, number=record.number,
+            recorded_at=recorded_at, status=status_words(record.status)))
+        if record.superseded_by:
+            out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
+                                   "see 'anglebench register show {by}')"), path=path,
+                        number=record.number, by=record.superseded_by))
+        if record.status == "withdrawn":
+            out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
+                        path=path, number=record.number,
+                        reason=record.withdrawn_reason or "—"))
+    return 0
 
 
 def _read(path: str) -> bytes:

@@ -23,6 +23,7 @@ import io
 import math
 import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -31,7 +32,11 @@ from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_i
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 
-__all__ = ["XLSX_MAX_ROWS", "neutralise", "split_figures", "write_results_csv", "write_results_xlsx"]
+if TYPE_CHECKING:
+    from models.register.store import CertificateRecord
+
+__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "results_bytes",
+           "split_figures", "write_results_csv", "write_results_xlsx"]
 
 XLSX_MAX_ROWS = 1_048_576
 _FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
@@ -166,15 +171,40 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
     write_bytes_atomic(path, results_csv_bytes(document, unit))
 
 
-def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
+#: what the *Certificate* sheet says of results written with no certificate issued
+NOT_ISSUED = ("not issued: these results were written apart from any certificate's issue, "
+              "so they are no certificate's record; a certificate number or date of issue "
+              "typed in the details is not shown")
+
+
+def issued_status(number: str) -> str:
+    """What the *Certificate* sheet says of results written with certificate ``number``."""
+    return (f"issued: the results of certificate {number}, written when the register issued "
+            "it; the register holds this file's SHA-256 ('anglebench register verify FILE' "
+            "checks it)")
+
+
+def _metadata_rows(document: CertificateDocument,
+                   issued: CertificateRecord | None = None) -> list[tuple[str, object]]:
+    """The *Certificate* sheet: ``issued`` is the register's record of the certificate
+    issued with these results (its number, date of issue and files' SHA-256); without it
+    the results are said not to be issued, and no number or date of issue is given (one
+    typed in the details is not the register's: review 61 F1)."""
     meta = document.metadata
     q = document.budget.unit.symbol  # the unit of the errors, the budget and the tolerance
     rows: list[tuple[str, object]] = [
-        ("Certificate number", meta.certificate_number), ("Test", document.kind_title),
+        ("Certificate number", issued.number if issued else None),
+        ("Status", issued_status(issued.number) if issued else NOT_ISSUED),
+        ("Revision", (f"{issued.revision} of {issued.supersedes}" if issued.supersedes
+                      else issued.revision) if issued else None),
+        ("Certificate PDF SHA-256", issued.pdf_sha256 if issued else None),
+        ("DCC SHA-256", issued.dcc_sha256 if issued else None),
+        ("Test", document.kind_title),
         ("Readings", document.source_name), ("Laboratory", meta.lab_name),
         ("Customer", meta.customer_name), ("Item under test", meta.item_description),
         ("Serial number", meta.item_serial), ("Grade", meta.item_grade),
-        ("Date of calibration", meta.calibration_date), ("Date of issue", meta.issue_date),
+        ("Date of calibration", meta.calibration_date),
+        ("Date of issue", issued.issue_date if issued else None),
         ("Operator", meta.operator), ("Approver", meta.approver),
         ("Temperature (°C)", meta.temperature_c), ("Relative humidity (%)", meta.humidity_pct),
         ("Sign convention", document.sign_convention),
@@ -186,7 +216,11 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         (f"Tolerance ± ({q})", document.tolerance),
         ("Decided quantity", document.conformity.quantity),
         (f"Decided value ({q})", document.conformity.value),
-        (f"U of the decided value ({q})", document.conformity.expanded),
+        # both half-widths, as the certificate prints an asymmetric interval (−U₋/+U₊); one
+        # "U" gave the upper only (review 61 F5)
+        (f"U of the decided value, below it (U−) ({q})",
+         document.conformity.lower_half_width),
+        (f"U of the decided value, above it (U+) ({q})", document.conformity.expanded),
         (f"Decided value: interval low ({q})", document.conformity.interval_low),
         (f"Decided value: interval high ({q})", document.conformity.interval_high),
         ("Decided value: coverage probability (%)", 100.0 * document.conformity.probability),
@@ -232,7 +266,10 @@ def _metadata_in_unit(rows: list[tuple[str, object]],
     return out
 
 
-def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) -> bytes:
+def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
+                       issued: CertificateRecord | None = None) -> bytes:
+    """The workbook; ``issued``: the register's record of the certificate issued with these
+    results (see :func:`_metadata_rows`)."""
     from openpyxl import Workbook  # imported here: only the export needs it
 
     points = len(document.point_columns[0][1]) if document.point_columns else 0
@@ -260,7 +297,7 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) 
         if table.note:
             ws.append([neutralise(text_in_unit(table.note, unit))])
     ws = book.create_sheet("Certificate")
-    for key, value in _metadata_in_unit(_metadata_rows(document), unit):
+    for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit):
         ws.append([neutralise(key), _cell(value)])
     out = io.BytesIO()
     book.save(out)
@@ -269,4 +306,13 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC) 
 
 def write_results_xlsx(path: str | Path, document: CertificateDocument,
                        unit: AngleUnit = ARCSEC) -> None:
+    """Results written apart from any issue (said so on the *Certificate* sheet)."""
     write_bytes_atomic(path, results_xlsx_bytes(document, unit))
+
+
+def results_bytes(path: str | Path, document: CertificateDocument, unit: AngleUnit = ARCSEC,
+                  issued: CertificateRecord | None = None) -> bytes:
+    """The results file ``path`` names (XLSX for ``.xlsx``, else CSV)."""
+    if str(path).lower().endswith(".xlsx"):
+        return results_xlsx_bytes(document, unit, issued)
+    return results_csv_bytes(document, unit)

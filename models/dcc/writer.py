@@ -428,9 +428,13 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
     b.text(res, "name", doc.results.title)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
     # the certificate's column headers, when its table has one per column (not positioning's,
-    # whose table puts the two directions side by side)
-    headers = (dict(zip(columns, doc.results.header, strict=True))
-               if len(doc.results.header) == len(columns) else {})
+    # whose table puts the two directions side by side), or one per column up to U columns
+    # only the results export has (the fringe's compensated error's U)
+    printed = len(doc.results.header)
+    headers = (dict(zip(list(columns)[:printed], doc.results.header, strict=True))
+               if printed == len(columns) or (printed < len(columns) and all(
+                   name.startswith("expanded_uncertainty_") for name in list(columns)[printed:]))
+               else {})
     for name, values in doc.point_columns:
         if name.startswith("expanded_uncertainty_"):
             continue

@@ -709,7 +709,9 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     sample_file = "fringe_sample.csv"
     measurand_standards = (QT_TR_NOOP("a phase or angle reference"),
                            QT_TR_NOOP("the ADC (its figures stated in the settings)"))
-    dcc_uncertainty_columns = {"raw_error": ""}  # the certificate's "U as found" (DCC)
+    # each error's U column (the certificate's "U as found" is the raw error's)
+    dcc_uncertainty_columns = {"raw_error": "raw_error_",
+                               "compensated_error": "compensated_error_"}
     method_reference = ("Gao X. et al., Automatic compensation of sine deviation for grating "
                         "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
     presenter = "widgets.fringe.presenter:FringePresenter"

@@ -346,8 +346,12 @@ def _parameter_rows(result, k: float = 2.0) -> list[tuple[str, str, str]]:
             else:  # the phase of a harmonic indistinguishable from zero means nothing
                 rows.append((f"{label}: c{h}", message(QT_TR_NOOP("undefined")),
                              message(QT_TR_NOOP("amplitude not significant (A{k} ≤ U)"), k=h)))
-        rows.append((message(QT_TR_NOOP("{channel}: R², residual RMS"), channel=label),
-                     f"{fit.r_squared:.8f}", f"{fit.residual_rms * 1e3:.3g} mV"))
+        # the fit's quality figures have no U: each in the value column of a row of its own,
+        # the U column empty (the residual RMS printed there read as the U of R²)
+        rows.append((message(QT_TR_NOOP("{channel}: R² of the fit"), channel=label),
+                     f"{fit.r_squared:.8f}", ""))
+        rows.append((message(QT_TR_NOOP("{channel}: residual RMS of the fit"), channel=label),
+                     f"{fit.residual_rms * 1e3:.3g} mV", ""))
     return rows
 
 
@@ -381,6 +385,10 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
     budget = fringe_budget(result, metadata, as_found=not as_left, settings=settings)
     found_budget = budget if not as_left else fringe_budget(result, metadata, as_found=True,
                                                             settings=settings)
+    # the compensated error's own budget (the fitted model's input added), as the JSON and
+    # the DCC give it: the results export gives each error its U
+    compensated_budget = budget if as_left else fringe_budget(result, metadata,
+                                                              settings=settings)
     big_u = budget.expanded
     raw, comp = result.raw_error, result.compensated_error
     correction = comp - raw
@@ -506,4 +514,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         point_columns=(("sample", np.arange(1, raw.size + 1, dtype=float)),
          ("phase_deg", np.degrees(result.theta_rad)), (f"raw_error_{unit}", raw),
          (f"correction_{unit}", correction), (f"compensated_error_{unit}", comp))
-        + (() if no_u else ((f"expanded_uncertainty_{unit}", big_u),)))
+        # each error's U, named for it (one column, after the compensated error, held the
+        # as-found error's U: review 61 F10)
+        + (() if no_u else ((f"expanded_uncertainty_raw_error_{unit}", found_budget.expanded),
+                            (f"expanded_uncertainty_compensated_error_{unit}",
+                             compensated_budget.expanded))))

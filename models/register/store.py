@@ -845,6 +845,33 @@ class Register:
                 status="withdrawn", withdrawn_reason=reason))
         return chain
 
+    # -- results files ------------------------------------------------------------------------
+    def record_results(self, number: str, data: bytes, name: str) -> str:
+        """Record a results file (CSV or XLSX) written with certificate ``number`` when it was
+        issued: a chained entry ("results") holding the file's SHA-256 and name, so that
+        ``register verify`` finds it as it finds the PDF and the DCC. The certificate must be
+        the current one (issued, not superseded or withdrawn). Returns the entry's chain
+        value."""
+        entry = {"sha256": hashlib.sha256(data).hexdigest(), "file": name}
+        with self._write() as conn:
+            if not self.is_sqlite:
+                conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
+                             {"k": _CHAIN_LOCK})
+            self._current(conn, number)
+            return self._append_entry(conn, "results", number, entry)
+
+    def verify_results(self, data: bytes) -> builtins.list[tuple[CertificateRecord, str]]:
+        """Every certificate a results file byte for byte this one (by SHA-256) was recorded
+        with (:meth:`record_results`), with the time it was recorded."""
+        entries = self._schema.ENTRIES
+        digest = hashlib.sha256(data).hexdigest()
+        with self._read() as conn:
+            rows = conn.execute(self._sa.select(
+                entries.c.subject, entries.c.body_json, entries.c.recorded_at).where(
+                entries.c.kind == "results").order_by(entries.c.seq)).all()
+            return [(self._get(conn, row.subject), row.recorded_at) for row in rows
+                    if json.loads(row.body_json or "{}").get("sha256") == digest]
+
     # -- approval ---------------------------------------------------------------------------
     def signatories(self) -> tuple[list[str], bool]:
         """The lab's authorised signatories (empty: none configured, any named approver is

@@ -369,3 +369,32 @@ def test_xlsx_figures_round_trip_and_text_stays_safe(cells):
 
 
 _THEODOLITE = _analysed("theodolite")
+
+
+@pytest.mark.parametrize("key", ["theodolite", "polygon"])
+def test_xlsx_gives_both_half_widths_of_the_decided_values_interval(key):
+    """Review 61 F5: the Certificate sheet's 'U of the decided value' was the upper
+    half-width alone (theodolite 0.49" where the certificate prints U = −0.93"/+0.49").
+    Both are given, each equal to the distance from the value to its interval's end, and to
+    the U− and U+ the Statistics sheet (the certificate's printed figures) gives."""
+    kind, result = _analysed(key)
+    document = kind.certificate_document(result, _meta(key))
+    book = load_workbook(io.BytesIO(results_xlsx_bytes(document)))
+    sheet = dict((r[0], r[1]) for r in book["Certificate"].iter_rows(values_only=True))
+    assert 'U of the decided value (")' not in sheet
+    value = sheet['Decided value (")']
+    below = sheet['U of the decided value, below it (U−) (")']
+    above = sheet['U of the decided value, above it (U+) (")']
+    low, high = sheet['Decided value: interval low (")'], sheet['Decided value: interval high (")']
+    # (a half range's interval stops at zero, where U− reaches below it)
+    assert below == pytest.approx(value - low, abs=1e-12) if low > 0 else below >= value
+    assert above == pytest.approx(high - value, abs=1e-12)
+    if key == "theodolite":  # asymmetric: one U could not state it
+        assert below > 1.5 * above
+    stats = _sheet_rows(book, "Statistics")
+    decided = _row_named(stats, "Decided quantity")
+    u_minus = next(i for i, h in enumerate(stats[0]) if h and "U−" in h)
+    u_plus = next(i for i, h in enumerate(stats[0]) if h and "U+" in h)
+    printed = decided[u_minus], decided[u_plus]  # to 2 significant digits
+    assert below == pytest.approx(printed[0], rel=0.05)
+    assert above == pytest.approx(printed[1], rel=0.05)
