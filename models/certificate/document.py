@@ -169,6 +169,12 @@ def budget_table(budget: UncertaintyBudget, point: str, unit: str = "\"",
     rows.append((message(QT_TR_NOOP("U of the inputs evaluated only (k = {k}): a lower bound, "
                                     "not U") if withheld else QT_TR_NOOP("Expanded U (k = {k})"),
                          k=f"{k:.2f}"), "", "", "", "", "", "", _fmt(k * uc), "", ""))
+    if not withheld and budget.points and bool(budget.below_floor[i]):
+        # the U stated there is the laboratory's CMC (ILAC-P14 5.4): the table's last line is
+        # the U the certificate states, not the smaller one the inputs give
+        rows.append((message(QT_TR_NOOP("U stated: raised to the laboratory's CMC (k = {k})"),
+                             k=f"{k:.2f}"), "", "", "", "", "", "",
+                     _fmt(float(budget.expanded[i])), "", ""))
     note = message(QT_TR_NOOP("Budget at {point}, the point with the largest U. k = {k} is "
                               "Student's t for ν = {nu}, the effective degrees of freedom "
                               "(Welch–Satterthwaite: {raw}) truncated to the lower integer "

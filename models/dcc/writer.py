@@ -575,6 +575,14 @@ def _budget(b: _Builder, results, unit: str) -> None:
     b.text(q, "name", QT_TR_NOOP("Expanded uncertainty U") if not b.document.uncertainty_withheld
            else QT_TR_NOOP("U of the inputs evaluated only (incomplete: a lower bound, not U)"))
     b.real(q, float(budget.coverage_factor * budget.combined[i]), unit)
+    if not b.document.uncertainty_withheld and bool(budget.below_floor[i]):
+        # the U the results state there: the laboratory's CMC (ILAC-P14 5.4), with the same
+        # k, so that U/k is the CMC's standard uncertainty, not the u_c above
+        q = etree.SubElement(lst, D + "quantity", refType=b.ref(
+            "anglebench_statedExpandedUncertainty", "the expanded uncertainty U the results "
+            "state at the budget's point: the laboratory's CMC, the budget's U being below it"))
+        b.text(q, "name", QT_TR_NOOP("U stated: raised to the laboratory's CMC"))
+        b.real(q, float(budget.expanded[i]), unit)
 
 
 def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[str, str],

@@ -226,7 +226,8 @@ def model_error_curve(result, points: int = MODEL_CURVE_POINTS) -> tuple[np.ndar
     return theta, interpolation_error_rad(np.arctan2(s, c), theta) * to_unit
 
 
-def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray) -> UncertaintyBudget:
+def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray,
+                       settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the model's as-found error at the phases ``theta`` (see
     :func:`model_error_curve`), every input with its nature: each independent direction of
     each channel's fitted parameters (their covariance from the fit residuals, Type A with
@@ -301,8 +302,10 @@ def model_error_budget(result, metadata: CertificateMetadata, theta: np.ndarray)
             1.0, 1.0, math.inf, common=True))
     components += reference_standard_components(metadata, 1.0, QT_TR_NOOP("sample"),
                                                 unit=result.unit, common=True)
+    # held to the laboratory's CMC of the ``settings`` (None: none), as the samples' budget:
+    # the decided half range's interval is held to it (models.uncertainty.conformity)
     return UncertaintyBudget(tuple(components), theta.size, metadata.coverage_probability,
-                             result.unit)
+                             result.unit, floor=cmc_of(settings, "cmc"))
 
 
 def _not_determined(model_error: np.ndarray, metadata: CertificateMetadata) -> HalfRangeEstimate:
@@ -478,7 +481,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         theta_model, model_error = model_error_curve(result)
         decision = Decision(model_error, QT_TR_NOOP("as-found interpolation error (fitted "
                                                     "model, whole period)"), withheld=withheld,
-                            budget=model_error_budget(result, metadata, theta_model),
+                            budget=model_error_budget(result, metadata, theta_model,
+                                                      settings),
                             estimate=(_not_determined(model_error, metadata)
                                       if result.phase_source == "estimated" else None))
     else:

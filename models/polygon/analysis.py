@@ -813,7 +813,7 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
             return {}
         raw = UncertaintyBudget(tuple(c for c in full.components
                                       if getattr(c.name, "template", c.name) != PYRAMIDAL_INPUT),
-                                full.points, full.probability, full.unit)
+                                full.points, full.probability, full.unit, full.floor)
         return {"raw_error_arcsec": raw}
 
     def dcc_reference_face_deviations(self, result, metadata):

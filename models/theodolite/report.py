@@ -315,12 +315,14 @@ def theodolite_json_budgets(result: TheodoliteResult, metadata: CertificateMetad
     and the corrected error (all, the certificate's)."""
     full = theodolite_budget(result, metadata, settings)
 
-    def part(keep) -> UncertaintyBudget:
+    def part(keep, floor: float) -> UncertaintyBudget:
         return UncertaintyBudget(tuple(c for c in full.components if keep(c.name == MODEL_INPUT)),
-                                 full.points, full.probability, full.unit)
+                                 full.points, full.probability, full.unit, floor)
 
-    return {"raw_error_arcsec": part(lambda model: not model),
-            "model_error_arcsec": part(lambda model: model),
+    # the laboratory's CMC is a floor on the axis error's U, as found (raw) or corrected,
+    # not on the set-up model's own (a correction, as the polygon's pyramidal one)
+    return {"raw_error_arcsec": part(lambda model: not model, full.floor),
+            "model_error_arcsec": part(lambda model: model, 0.0),
             "corrected_error_arcsec": full}
 
 

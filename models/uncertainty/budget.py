@@ -243,14 +243,16 @@ class UncertaintyBudget:
 
     @property
     def below_floor(self) -> np.ndarray:
-        """The points whose computed U is below the laboratory's CMC (outside its scope:
-        their U is stated as the CMC)."""
+        """The points whose computed U is below the laboratory's CMC: their U is stated as
+        the CMC (ILAC-P14 5.4), with the same k."""
         return (self.combined > 0) & (self.computed_expanded < self.floor)
 
     @property
     def worst_index(self) -> int:
-        """The point with the largest U: the budget table is printed for it."""
-        return int(np.argmax(self.expanded)) if self.points else 0
+        """The point with the largest U: the budget table is printed for it. Where the
+        laboratory's CMC raises several points to one U, the one of them whose computed U
+        is largest (the budget nearest the CMC, not the first point raised)."""
+        return int(np.argmax(self.computed_expanded)) if self.points else 0
 
     @property
     def coverage_factor(self) -> float:

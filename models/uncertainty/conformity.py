@@ -495,6 +495,14 @@ class Conformity:
         return self.verdict != "not assessed"
 
 
+#: which U the decision rule uses when the half range decides (the guard band w, the
+#: probabilities, the U ≥ T test): its own interval's half-widths, not a point's U
+WHICH_U_HALF_RANGE = QT_TR_NOOP(
+    "the U of the decision rule (its guard bands and its test U < T) is this quantity's own, "
+    "the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, "
+    "not smaller than T = {t}): the half range is one figure made from all the points, "
+    "with an interval of its own")
+
 # how the probabilities of conformity and of a wrong decision are computed (stated on
 # the certificate and checked in tests/models/uncertainty/test_conformity_decision.py)
 RISK_METHOD = QT_TR_NOOP(
@@ -751,6 +759,7 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
 def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, q,
                        common, estimate=None) -> Conformity:
     mc = estimate if estimate is not None else half_range_monte_carlo(e, budget)
+    mc, held = _held_to_cmc(mc, float(budget.floor))
     x, upper, lower = float(mc.value), float(mc.u_upper), float(mc.u_lower)
     if not (math.isfinite(x) and math.isfinite(upper) and math.isfinite(lower)):
         floor = float(getattr(mc, "noise_floor", math.nan))
@@ -843,6 +852,18 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         smooth=f"{100 * achieved['smooth']:.1f}", rough=f"{100 * achieved['rough']:.1f}",
         spike=f"{100 * achieved['spike']:.1f}", sample=f"{100 * achieved['sample']:.1f}",
         p=f"{100 * mc.probability:.2f}")])
+    if held:
+        quantity_text = separated([quantity_text, message(QT_TR_NOOP(
+            "each half-width of the interval held to at least the laboratory's CMC U = {cmc} "
+            "(ILAC-P14 5.4: the half range is the error at its extreme points about their "
+            "mid-value, which the laboratory cannot know better than a point's error), so the "
+            "guard band and the probabilities use it"), cmc=f"{float(budget.floor):g}{q}")])
+    if budget.points and budget.max_expanded >= t:
+        # the results' U (the largest point's) is not smaller than T, yet a statement may be
+        # made: say which U the rule uses, lest "U ≥ T, no statement" be read into it
+        quantity_text = separated([quantity_text, message(
+            WHICH_U_HALF_RANGE, u=f"{budget.max_expanded:.{uncertainty_decimals(budget.max_expanded)}f}{q}",
+            t=f"{t:g}{q}")])
     common = {**common, "probability": float(mc.probability)}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
@@ -852,6 +873,27 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                       reason=_withheld_text(reasons) if reasons else "",
                       conforming_probability=conforming,
                       decision_risk=_risk(verdict, conforming), **common)
+
+
+def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate, bool]:
+    """The decided half range's interval with each half-width raised to the laboratory's CMC
+    (the budget's ``floor``; ILAC-P14 5.4: no U stated below it), and whether either was.
+
+    The CMC is stated for the error at a point; the half range is the error at the curve's
+    two extreme points about their mid-value, (e_max − e_min)/2. Were the two points' errors
+    independent, its U would be √2 smaller than theirs; but a CMC states only the smallest U
+    the laboratory claims, not how its inputs correlate from point to point (a systematic
+    part moves both extremes alike, a part that differs moves them apart), so nothing below
+    the CMC itself can be claimed for it. The floor is applied to both half-widths (U₊
+    guards a pass, U₋ a fail); the value is not moved, and the interval's lower end stays
+    at 0 at the lowest (a half range is not negative)."""
+    import dataclasses
+
+    upper, lower = float(mc.u_upper), float(mc.u_lower)
+    if not (cmc > 0 and math.isfinite(upper) and math.isfinite(lower)) or (
+            upper >= cmc and lower >= cmc):
+        return mc, False
+    return dataclasses.replace(mc, u_upper=max(upper, cmc), u_lower=max(lower, cmc)), True
 
 
 def printed_interval(value: float, lower: float, upper: float, d: int) -> tuple[float, float]:

@@ -4,8 +4,11 @@ A laboratory states on a certificate no U below its calibration and measurement 
 (ILAC-P14:09/2020, 5.4): a budget that gives less (a cross-calibrated polygon's 0.018″, say)
 shows what these readings alone support, not what the laboratory can claim. Each workbench
 declares the CMC as a setting per quantity (0: none stated, and then nothing is said); the
-budget applies it (:attr:`UncertaintyBudget.floor`) and the certificate names it, with the
-points whose computed U was below it flagged as outside the scope.
+budget applies it (:attr:`UncertaintyBudget.floor`) to every point's U, the decided
+quantity's interval is held to it (models.uncertainty.conformity), and the certificate
+names it with the points whose U was raised to it. Such a result is within the scope, its
+U stated as the CMC (ILAC-P14 5.4): "outside the scope" is reserved for what truly is (a
+range the scope does not cover), which a CMC alone does not say.
 """
 
 from __future__ import annotations
@@ -29,9 +32,10 @@ def cmc_parameter(key: str, label: str, unit: str, what: str) -> Parameter:
     return Parameter(key, label, "float", 0.0, unit, 0.0, 3600.0, decimals=4, step=0.01,
                      zero="none stated",
                      help="The laboratory's calibration and measurement capability (CMC) for "
-                          f"{what}: the smallest U of its scope. Every U stated is at least this; "
-                          "results whose computed U is below it are outside the scope and flagged "
-                          "(ILAC-P14). 0: none stated, nothing said")
+                          f"{what}: the smallest U of its scope. Every U stated is at least this, "
+                          "the decided quantity's interval included; a result whose computed U is "
+                          "below it is stated with the CMC as its U (ILAC-P14). 0: none stated, "
+                          "nothing said")
 
 
 def cmc_of(settings: Mapping[str, Any] | None, key: str) -> float:
@@ -57,7 +61,7 @@ def scope_statement(budget: UncertaintyBudget, unit: str = "\"") -> str:
     return message(QT_TR_NOOP(
         "The laboratory's calibration and measurement capability (CMC) for this quantity is "
         "U = {cmc}. At {count} of the {points} points the U these readings give (down to "
-        "{lowest}) is below it: those results are outside the laboratory's scope, and their U "
-        "is stated as the CMC."),
+        "{lowest}) is below it, so their U is stated as the CMC, with the same coverage factor "
+        "k (ILAC-P14 5.4); there U/k is the CMC's standard uncertainty, not the budget's u_c."),
         cmc=cmc, count=int(np.count_nonzero(below)), points=budget.points,
         lowest=f"{lowest:.2g}{unit}")

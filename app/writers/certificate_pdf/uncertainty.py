@@ -33,6 +33,11 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
             "{p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM "
             "(JCGM 100:2008)."), u=f"{big_u:.{uncertainty_decimals(big_u)}f}{document.unit}",
             p=f"{100 * budget_.probability:.2f}", k=f"{budget_.coverage_factor:.2f}"))
+        if budget_.points and bool(budget_.below_floor.any()):
+            pdf.paragraph(message(QT_TR_NOOP(
+                "Where that product is below the laboratory's CMC, U = {cmc}, the U stated is "
+                "the CMC (ILAC-P14 5.4), with the same k; the budget's last line gives it."),
+                cmc=f"{budget_.floor:g}{document.unit}"))
     budget = budget_table(document.budget, document.budget_point, document.unit,
                           bool(document.uncertainty_withheld))
     pdf.data_table(budget, (46, 9, 19, 15, 13, 13, 10, 15, 14, 20),

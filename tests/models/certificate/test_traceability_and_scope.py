@@ -106,7 +106,9 @@ def test_the_laboratorys_cmc_is_a_floor_named_on_the_certificate():
     below = int(np.count_nonzero(computed < cmc))
     said = [s for s in document.statements if "(CMC)" in s]
     assert len(said) == 1 and f"At {below} of the {result.faces} points" in said[0]
-    assert "outside the laboratory's scope" in said[0]
+    # within the scope, their U raised to the CMC (ILAC-P14 5.4), not "outside the scope"
+    assert "their U is stated as the CMC, with the same coverage factor k" in said[0]
+    assert "outside" not in said[0]
     assert not any("(CMC)" in s for s in kind.certificate_document(
         _sample("crosscal")[1], META).statements)  # no CMC set: nothing said
 
