@@ -471,8 +471,9 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
                              refType=f"{ref} {b.ref('anglebench_' + _camel(stem), stem)}"
                              if not ref.startswith("anglebench_") else ref)
         _column_name(b, q, name, headers)
-        if expanded is not None and notes and name in notes:
-            b.rich(q, "description", notes[name])
+        note = (notes or {}).get(name) or (notes or {}).get(stem)  # by key, or unit-free
+        if expanded is not None and note:
+            b.rich(q, "description", note)
         b.real_list(q, values.astype(float), unit, expanded, k, p)
 
 

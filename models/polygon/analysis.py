@@ -13,6 +13,12 @@ from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
+from models.polygon.budget_inputs import (
+    PYRAMIDAL_INPUT,
+    ROLL_INPUT,
+    TILT_BOUND_INPUT,
+    is_set_up_input,
+)
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -52,6 +58,7 @@ from models.workbench import (
     SendsRuns,
     ShowsHeadline,
     Workbench,
+    raw_error_u_note,
 )
 
 __all__ = ["POLYGON", "closure_limit_arcsec"]
@@ -792,28 +799,24 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
                            QT_TR_NOOP("the autocollimator"))
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it
-    dcc_column_notes = {"raw_error_arcsec": QT_TR_NOOP(
-        "U of the raw error: the certificate's budget without its input 'Pyramidal correction "
-        "(ψ, ω)' (the raw error is before that correction; every other input — the reference "
-        "polygon, the autocollimator, its roll, the reading noise, the zero reading, the "
-        "drift — is in it), at each position with its own k.")}
+    dcc_column_notes = {"raw_error_arcsec": raw_error_u_note(
+        PYRAMIDAL_INPUT, TILT_BOUND_INPUT, ROLL_INPUT)}
 
     def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The raw error (mean of the sets, before the pyramidal correction): the
-        certificate's budget less the correction's own input (as the JSON's per-set
+        certificate's budget less the set-up's inputs (as the JSON's per-set
         ``error_arcsec``), U and k per position; none when the budget is not determined."""
         if metadata is None:
             return {}
-        from models.polygon.report import PYRAMIDAL_INPUT, polygon_budget
+        from models.polygon.report import polygon_budget
         from models.uncertainty.budget import UncertaintyBudget
 
         try:
             full = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return {}
-        raw = UncertaintyBudget(tuple(c for c in full.components
-                                      if getattr(c.name, "template", c.name) != PYRAMIDAL_INPUT),
-                                full.points, full.probability, full.unit)
+        raw = UncertaintyBudget(tuple(c for c in full.components if not is_set_up_input(c)),
+                                full.points, full.probability, full.unit, full.floor)
         return {"raw_error_arcsec": raw}
 
     def dcc_reference_face_deviations(self, result, metadata):
