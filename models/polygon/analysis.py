@@ -46,6 +46,7 @@ from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
@@ -710,6 +711,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
     return out
 
 
+def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
+    """A figure and its standard uncertainty, u to two significant digits and the figure to
+    its decimal (GUM 7.2.6): ("120.0003°", "0.0012°"), never a u of "0.00°"."""
+    decimals = uncertainty_decimals(u)
+    return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
+
+
 def summary(result: PolygonResult) -> str:
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
     doubt = certificate_doubt(result)
@@ -725,22 +733,31 @@ def summary(result: PolygonResult) -> str:
         closure = message(QT_TR_NOOP("not measured")) if r.closure_drift_arcsec is None else (
             message(QT_TR_NOOP("drift {drift} ok") if r.closure_ok else
                     QT_TR_NOOP("drift {drift} FAILED"), drift=f"{r.closure_drift_arcsec:+.2f}\""))
-        tilt = ((f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
-                 f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°")
-                if r.tilt.omega_determined else
-                message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),
-                        psi=f"{r.tilt.psi_arcsec:.1f}\"", u=f"{r.tilt.u_psi_arcsec:.2f}\"")
-                ) if r.tilt else message(QT_TR_NOOP("no tilt"))
+        if r.tilt is None:
+            tilt: Any = message(QT_TR_NOOP("no tilt"))
+        elif r.tilt.omega_determined:
+            psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
+            omega, u_omega = _with_u(r.tilt.omega_deg, r.tilt.u_omega_deg, "°")
+            tilt = f"ψ = {psi} ± {u_psi}, ω = {omega} ± {u_omega} (u, k = 1)"
+        else:
+            psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
+            tilt = message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),
+                           psi=psi, u=u_psi)
         out.append(message(
             QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; "
                        "pyramidal correction up to {largest}"),
             set=i, sense="+" if r.direction > 0 else "−", face=r.start_face, closure=closure,
             tilt=tilt, largest=f"{np.max(np.abs(r.pyramidal_error_arcsec)):.3f}\""))
+    # the readings' figure against the grade, U left out: not the certificate's decision
+    # (its statement of conformity takes U under the decision rule of its details)
     out.append(message(
-        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
-                   "met (rule: half the peak-to-peak ≤ accuracy)") if result.accuracy_ok else
-        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
-                   "NOT met (rule: half the peak-to-peak ≤ accuracy)"),
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
+                   "is within the grade's ±{accuracy}, U left out — not a statement of "
+                   "conformity (a certificate decides with U, by the rule in its details)")
+        if result.accuracy_ok else
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
+                   "exceeds the grade's ±{accuracy}, U left out — not a statement of "
+                   "conformity (a certificate decides with U, by the rule in its details)"),
         low=f"{s.min:+.2f}\"", high=f"{s.max:+.2f}\"", ptp=f"{s.peak_to_peak:.2f}\"",
         accuracy=f"{tol:g}\""))
     h = result.harmonics

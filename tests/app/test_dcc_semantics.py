@@ -290,3 +290,22 @@ def test_no_minus_zero_and_one_coverage_probability(issued):
                    if lst.findtext("dcc:name/dcc:content", namespaces=NS).startswith(name))
         p = lst.find("dcc:quantity[@refType='anglebench_coverageProbability']", NS)
         assert _value(p) == P_K2, name
+
+
+def test_the_polygon_summary_says_its_grade_check_is_not_the_certificates_decision(issued):
+    """"ω = 120.0° ± 0.00°" (a u of zero) and "accuracy ±1" met (rule: half the
+    peak-to-peak ≤ accuracy)" under a certificate decided by the guarded rule."""
+    said, data = issued["polygon"][3], issued["polygon"][1]
+    assert not re.search(r"± 0\.0*[\"°]", said) and "accuracy ±1\" met" not in said
+    line = next(x for x in said.splitlines() if x.startswith("Corrected error"))
+    assert line.endswith("half the peak-to-peak is within the grade's ±1\", U left out — not a "
+                         "statement of conformity (a certificate decides with U, by the rule in "
+                         "its details)")
+    first = next(x for x in said.splitlines() if x.startswith("  set 1 "))
+    found = re.search(r"ψ = (\S+)\" ± (\S+)\", ω = (\S+)° ± (\S+)° \(u, k = 1\)", first)
+    assert found, first
+    for value, u, exact in ((found[1], found[2], data["pyramidal_tilt_arcsec"]),
+                            (found[3], found[4], data["pyramidal_direction_deg"])):
+        decimals = len(u.partition(".")[2])
+        assert float(u) > 0 and 10 <= float(u) * 10**decimals < 100  # two significant digits
+        assert value == f"{float(np.ravel(exact)[0]):.{decimals}f}"
