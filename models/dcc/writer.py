@@ -24,7 +24,7 @@ from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
 from models.dcc import vocabulary as v
-from models.messages import QT_TR_NOOP, message, rendered, translator
+from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
 from models.uncertainty.budget import (
     BASIS_DIVISORS,
@@ -76,7 +76,7 @@ def _say(text: Any, lang: str) -> str:
         return text.said(lang)
     if hasattr(text, "template") or hasattr(text, "parts"):
         return rendered(text, words)
-    return words(str(text))
+    return declared_text(str(text), words)  # a label ending in a unit: its words, the unit kept
 
 
 def column_unit(name: str, error_unit: str) -> str:
@@ -571,7 +571,7 @@ def _budget(b: _Builder, results, unit: str) -> None:
     res = etree.SubElement(results, D + "result", refType=b.ref(
         v.REFTYPE_BUDGET, "the uncertainty budget at the point with the largest U"))
     b.text(res, "name", QT_TR_NOOP("Uncertainty budget"))
-    b.rich(res, "description", b.document.budget_point, translated=False)
+    b.rich(res, "description", b.document.budget_point)  # ("position 9": in each language)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
     for row in budget.table():
         q = etree.SubElement(lst, D + "quantity", refType=b.ref(
@@ -669,9 +669,10 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
     m = etree.SubElement(methods, D + "usedMethod", refType=b.ref(
         "anglebench_method", "the method of evaluation"))
     b.text(m, "name", doc.method)
-    setup = [f"{_say(k, 'en')}: {_say(val, 'en')}" for k, val in doc.settings]
-    if setup:
-        b.rich(m, "description", "; ".join(setup), translated=False)
+    if doc.settings:  # each setting's name and value in each language (English only up to
+        # 0.8.10: "faces n: from the readings; …" in a bilingual document)
+        b.rich(m, "description", _Cells([_Cells([k, val], ": ") for k, val in doc.settings],
+                                        "; "))
     if doc.standard:
         b.leaf(m, "norm", _say(doc.standard, "en"))
     if doc.method_reference:

@@ -309,3 +309,54 @@ def test_the_polygon_summary_says_its_grade_check_is_not_the_certificates_decisi
         decimals = len(u.partition(".")[2])
         assert float(u) > 0 and 10 <= float(u) * 10**decimals < 100  # two significant digits
         assert value == f"{float(np.ravel(exact)[0]):.{decimals}f}"
+
+
+# -- F14: no English of ours in the Chinese ----------------------------------------------
+def _typed_words(samples: Path) -> set[str]:
+    """The words the laboratory typed in the sample details (names, grades, addresses): a
+    DCC gives them as typed, in each language."""
+    words: set[str] = set()
+    for path in samples.glob("certificate_*.json"):
+        stack = [json.loads(path.read_text("utf-8"))]
+        while stack:
+            item = stack.pop()
+            if isinstance(item, dict):
+                stack.extend(item.values())
+            elif isinstance(item, list):
+                stack.extend(item)
+            elif isinstance(item, str):
+                words |= set(WORD.findall(item))
+    return words
+
+
+def test_every_chinese_text_of_a_dcc_is_chinese_but_for_what_was_typed(issued):
+    """"给定的不确定度（U95，每 from face 1）" (a key put into a sentence untranslated), the
+    budget's point "position 9" and the settings "faces n: from the readings; …" in English
+    only: every dcc:content in Chinese holds no English word but the laboratory's own
+    (its details), symbols and element names. The DCC's texts take their Chinese from
+    resources/translations (the window's catalogue)."""
+    from tests.conftest import SAMPLES
+
+    allowed = SYMBOLS | _typed_words(SAMPLES) | {
+        "PDF", "SPECIMEN", "measuringEquipments", "Tian",  # a format, a number, a name, a cite
+        "commit", "local", "changes"}  # the software's source: "commit 65fbc7d1… + local changes"
+    for case, (tree, *_) in issued.items():
+        for content in tree.iter(f"{{{v.DCC_NAMESPACE}}}content"):
+            if content.get("lang") == "zh":
+                words = set(WORD.findall(content.text or "")) - allowed
+                assert not words, (case, content.getparent().tag, content.text[:120], words)
+
+
+def test_the_budgets_point_and_the_settings_are_in_each_language(issued):
+    tree = issued["polygon"][0]
+    corrected = _curve(tree)["corrected_error_arcsec"]
+    position = int(np.argmax(corrected["U"])) + 1  # the budget's point: the largest U
+    budget = tree.find(f".//dcc:result[@refType='{v.REFTYPE_BUDGET}']", NS)
+    said = {c.get("lang"): c.text for c in budget.iterfind("dcc:description/dcc:content", NS)}
+    assert said == {"en": f"position {position}", "zh": f"第 {position} 位置"}
+    method = tree.find(".//dcc:usedMethod", NS)
+    said = {c.get("lang"): c.text for c in method.iterfind("dcc:description/dcc:content", NS)}
+    assert said["en"].startswith("faces n: from the readings; encoder grade: grade 3: ±1\"; "
+                                 "closure limits grades 1–7 (\"): 0.125, 0.25")
+    assert said["zh"].startswith("面数 n: 由读数确定; 编码器等级: 3 级：±1\"; ")
+    assert "(\"): 0.125, 0.25" in said["zh"] and "closure" not in said["zh"]
