@@ -38,7 +38,7 @@ from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 
 from models.certificate.traceability import test_report_statement, traceability_gaps
-from models.messages import QT_TR_NOOP, joined, message, reason_of
+from models.messages import QT_TR_NOOP, joined, listed, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
 from models.plots import PlotFigure
 from models.readings.entry_plan import EntryPlan
@@ -56,7 +56,7 @@ __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsRe
            "AcceptsRuns", "ComparesAfterLog", "GuidesAcquisition", "IssuesCertificates",
            "JudgesSignals", "OverlaysRuns", "ResultT", "SendsReference", "SendsRuns",
            "SentReference", "SettingsError", "ShowsHeadline", "Workbench",
-           "WritesCorrectionTable"]
+           "RAW_ERROR_U_NOTE", "WritesCorrectionTable", "raw_error_u_note"]
 
 # the type of a workbench's result (its analysis gives it; everything else takes it)
 ResultT = TypeVar("ResultT")
@@ -227,6 +227,23 @@ class Workbench(ABC, Generic[ResultT]):
         if scope:
             document = dataclasses.replace(document, statements=(*document.statements, scope))
         return document
+
+
+#: what the DCC states of a raw error's U (IssuesCertificates.dcc_column_notes): one rule on
+#: every workbench (theodolite, polygon, fringe), the rule of the JSON's
+#: expanded_uncertainty_raw_error_* (the polygon's per-set error_arcsec)
+RAW_ERROR_U_NOTE = QT_TR_NOOP(
+    "U of the raw error: the certificate's budget without the inputs of the correction that "
+    "the raw error is before ({inputs}); every other input (the readings', the standards') is "
+    "in it, at each point with its own k. So on every workbench: the raw error is what the "
+    "readings give, with the effect the correction removes still in it.")
+
+
+def raw_error_u_note(*inputs: str) -> Any:
+    """:data:`RAW_ERROR_U_NOTE` naming the correction's ``inputs`` (QT_TR_NOOP budget input
+    names), each in the document's language."""
+    return message(RAW_ERROR_U_NOTE, inputs=listed(message("“{name}”", name=message(name))
+                                                   for name in inputs))
 
 
 class IssuesCertificates(ABC, Generic[ResultT]):

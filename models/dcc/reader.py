@@ -571,8 +571,14 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     certificate_id, calibration_date = _core(root, source)
     found: list[tuple[float, str, float, float]] = []  # (U, unit key, k, p)
     refused: list[str] = []
+    # the results' uncertainties only: a measuringEquipment's (the standards the certificate
+    # used: their stated U is si:expandedMU since after 0.8.10) or an influence
+    # condition's is no result of the item
     results = root.find(f"{D}measurementResults")
-    for element in ([] if results is None else results.iter(f"{S}real", f"{S}realListXMLList")):
+    elements = [] if results is None else [
+        element for block in results.iter(f"{D}results")
+        for element in block.iter(f"{S}real", f"{S}realListXMLList")]
+    for element in elements:
         where = _path(element)
         is_list = element.tag == f"{S}realListXMLList"
         if is_list:

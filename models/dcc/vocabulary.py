@@ -52,7 +52,9 @@ REFTYPE_SETUP_PARAMETERS = "anglebench_setupParameters"
 REFTYPE_SUMMARY = "anglebench_summary"
 REFTYPE_BUDGET = "anglebench_uncertaintyBudget"
 REFTYPE_CURVE = "anglebench_curve"
-REFTYPE_STANDARD_U = "anglebench_standardExpandedUncertainty"
+#: a standard's error as the budget takes it, 0, with its stated uncertainty in D-SI form
+#: (written as "anglebench_standardExpandedUncertainty", the figure alone, up to 0.8.10)
+REFTYPE_STANDARD_U = "anglebench_standardStatedUncertainty"
 REFTYPE_STANDARD_DUE = "anglebench_standardDueDate"
 REFTYPE_CERTIFICATE_ID = "anglebench_certificateId"
 REFTYPE_TEMPERATURE = "anglebench_temperature"

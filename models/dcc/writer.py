@@ -24,9 +24,13 @@ from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
 from models.dcc import vocabulary as v
-from models.messages import QT_TR_NOOP, message, rendered, translator
+from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
-from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+from models.uncertainty.budget import (
+    BASIS_DIVISORS,
+    DEFAULT_COVERAGE_PROBABILITY,
+    divisor_for_basis,
+)
 
 if TYPE_CHECKING:
     from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
@@ -72,7 +76,7 @@ def _say(text: Any, lang: str) -> str:
         return text.said(lang)
     if hasattr(text, "template") or hasattr(text, "parts"):
         return rendered(text, words)
-    return words(str(text))
+    return declared_text(str(text), words)  # a label ending in a unit: its words, the unit kept
 
 
 def column_unit(name: str, error_unit: str) -> str:
@@ -95,6 +99,8 @@ def _figure(x: float) -> str:
         return "NaN"
     if math.isinf(x):
         return "INF" if x > 0 else "-INF"
+    if x == 0.0:  # -0.0 too (a reference point's error computed as −0.0): "0", never "-0"
+        return "0"
     return f"{x:.12g}"  # 12 significant digits: beyond every printed figure, no float noise
 
 
@@ -331,6 +337,11 @@ def _parse(cell: str) -> tuple[float, str] | None:
     return (float(m.group(1)), unit) if unit is not None else None
 
 
+#: the one description of refType anglebench_coverageProbability (an interval's, a U's)
+_COVERAGE_PROBABILITY = ("the coverage probability p of the figure it is listed with: of its "
+                         "coverage interval, or of the expanded uncertainty U")
+
+
 def _interval(b: _Builder, parent, name: Any, value: float, unit: str, low: float, high: float,
               p: float, ref: str, translated: bool = True) -> None:
     """A figure with its coverage interval (asymmetric, or from a simulation: no standard
@@ -342,7 +353,8 @@ def _interval(b: _Builder, parent, name: Any, value: float, unit: str, low: floa
                                     ("intervalMax", high, unit),
                                     ("coverageProbability", p, r"\one")):
         q = etree.SubElement(lst, D + "quantity", refType=b.ref(
-            f"anglebench_{part}", f"of a figure with its coverage interval: {part}"))
+            f"anglebench_{part}", _COVERAGE_PROBABILITY if part == "coverageProbability"
+            else f"of a figure with its coverage interval: {part}"))
         b.text(q, "name", part, translated=False)
         b.real(q, figure, part_unit)
 
@@ -350,6 +362,16 @@ def _interval(b: _Builder, parent, name: Any, value: float, unit: str, low: floa
 _K_IN_HEADER = re.compile(r"k\s*=\s*(\d+(?:\.\d+)?)")
 _INTERVAL = re.compile(r"^(.+?)\s*…\s*(.+)$")
 _PERCENT = re.compile(r"^(\d+(?:\.\d+)?)\s*%$")
+
+
+def _printed_probability(percent: str, p: float) -> float:
+    """A probability printed as a percentage ("95.45") as a number: the document's stated
+    ``p`` itself when the printed figure is it rounded (one value in the whole DCC, not
+    0.9545 beside 0.954499736104), else the figure printed (a probability reached)."""
+    decimals = len(percent.partition(".")[2])
+    if f"{100.0 * p:.{decimals}f}" == percent:
+        return p
+    return float(percent) / 100.0
 
 
 def _table_result(b: _Builder, results, table: Table, ref: str, description: str,
@@ -376,7 +398,7 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
         share = _PERCENT.match(rest[1].strip()) if len(rest) > 1 else None
         if figure and ends[0] and ends[1] and share and ends[0][1] == ends[1][1] == figure[1]:
             _interval(b, data, label, figure[0], figure[1], ends[0][0], ends[1][0],
-                      float(share.group(1)) / 100.0, row_ref)
+                      _printed_probability(share.group(1), p), row_ref)
             continue
         q = etree.SubElement(data, D + "quantity", refType=b.ref(row_ref, row_description))
         b.text(q, "name", label)
@@ -475,8 +497,9 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
                              refType=f"{ref} {b.ref('anglebench_' + _camel(stem), stem)}"
                              if not ref.startswith("anglebench_") else ref)
         _column_name(b, q, name, headers)
-        if expanded is not None and notes and name in notes:
-            b.rich(q, "description", notes[name])
+        note = (notes or {}).get(name) or (notes or {}).get(stem)  # by key, or unit-free
+        if expanded is not None and note:
+            b.rich(q, "description", note)
         b.real_list(q, values.astype(float), unit, expanded, k, p)
 
 
@@ -552,7 +575,7 @@ def _budget(b: _Builder, results, unit: str) -> None:
     res = etree.SubElement(results, D + "result", refType=b.ref(
         v.REFTYPE_BUDGET, "the uncertainty budget at the point with the largest U"))
     b.text(res, "name", QT_TR_NOOP("Uncertainty budget"))
-    b.rich(res, "description", b.document.budget_point, translated=False)
+    b.rich(res, "description", b.document.budget_point)  # ("position 9": in each language)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
     for row in budget.table():
         q = etree.SubElement(lst, D + "quantity", refType=b.ref(
@@ -566,15 +589,29 @@ def _budget(b: _Builder, results, unit: str) -> None:
         b.real(q, row["contribution"], unit)
     i = budget.worst_index
     q = etree.SubElement(lst, D + "quantity", refType=b.ref(
-        "anglebench_expandedUncertainty", "the expanded uncertainty U at the budget's point"))
+        "anglebench_combinedStandardUncertainty",
+        "the combined standard uncertainty u_c at the budget's point (k = 1)"))
     b.text(q, "name", QT_TR_NOOP("Combined standard u_c"))
     b.real(q, float(budget.combined[i]), unit)
-    q = etree.SubElement(lst, D + "quantity", refType="anglebench_expandedUncertainty")
+    q = etree.SubElement(lst, D + "quantity", refType=b.ref(
+        "anglebench_expandedUncertainty", "the expanded uncertainty U = k·u_c at the budget's "
+        "point; its k and p are the quantities of refType anglebench_coverageFactor and "
+        "anglebench_coverageProbability beside it"))
     # no U stated for the results (CertificateDocument.uncertainty_withheld): the budget's
     # figure is that of the inputs evaluated, a lower bound, and named so
     b.text(q, "name", QT_TR_NOOP("Expanded uncertainty U") if not b.document.uncertainty_withheld
            else QT_TR_NOOP("U of the inputs evaluated only (incomplete: a lower bound, not U)"))
     b.real(q, float(budget.coverage_factor * budget.combined[i]), unit)
+    # U's k and p as numbers (U is itself an uncertainty: D-SI has no element that states
+    # an uncertainty's own k), named as the coverage interval's parts are (_interval)
+    for part, figure, ref, description in (
+            ("coverageFactor", budget.coverage_factor, "anglebench_coverageFactor",
+             "the coverage factor k of the expanded uncertainty U beside it"),
+            ("coverageProbability", budget.probability, "anglebench_coverageProbability",
+             _COVERAGE_PROBABILITY)):
+        q = etree.SubElement(lst, D + "quantity", refType=b.ref(ref, description))
+        b.text(q, "name", part, translated=False)
+        b.real(q, float(figure), r"\one")
     if not b.document.uncertainty_withheld and bool(budget.below_floor[i]):
         # the U the results state there: the laboratory's CMC (ILAC-P14 5.4), with the same
         # k, so that U/k is the CMC's standard uncertainty, not the u_c above
@@ -583,6 +620,53 @@ def _budget(b: _Builder, results, unit: str) -> None:
             "state at the budget's point: the laboratory's CMC, the budget's U being below it"))
         b.text(q, "name", QT_TR_NOOP("U stated: raised to the laboratory's CMC"))
         b.real(q, float(budget.expanded[i]), unit)
+
+
+#: what a standard's stated figure is the uncertainty of (metadata.APPLIES_TO), in the words
+#: of the certificate's budget (models.certificate.document.reference_standard_components)
+_PER = {"reading": QT_TR_NOOP("reading"), "angle": QT_TR_NOOP("angle between two readings"),
+        "from face 1": QT_TR_NOOP("face, stated from face 1")}
+
+
+def _standard_uncertainty(b: _Builder, parent, std) -> None:
+    """A reference standard's stated uncertainty in D-SI form: the standard's error as the
+    budget takes it, 0, with that uncertainty as its certificate states it — U95 as
+    si:expandedMU (U, k = 2, p of k = 2 for a normal distribution), u as si:standardMU, a
+    maximum permissible error ±a as si:coverageIntervalMU (−a … +a with p = 1, rectangular,
+    u = a/√3). Named in each language as the budget names it ("expanded uncertainty U
+    (k = 2) per reading")."""
+    q = etree.SubElement(parent, D + "measuringEquipmentQuantity", refType=b.ref(
+        v.REFTYPE_STANDARD_U, "a reference standard's error as the budget takes it, 0, with the "
+        "uncertainty its certificate states (si:expandedMU for U with k and p, si:standardMU for "
+        "u, si:coverageIntervalMU for a maximum permissible error ±a)"))
+    b.text(q, "name", message(QT_TR_NOOP("{basis} per {per}"),
+                              basis=message(BASIS_DIVISORS[std.basis][0]),
+                              per=message(_PER.get(std.applies_to, std.applies_to))))
+    unit = _SYMBOLS.get({"arcsec": '"', "urad": "µrad", "nm": "nm", "um": "µm", "mdeg": "mdeg",
+                         "deg": "°"}.get(std.uncertainty_unit, ""), r"\one")
+    figure = float(std.uncertainty)
+    r = etree.SubElement(q, S + "real")
+    b.leaf(r, "value", _figure(0.0), S)
+    b.leaf(r, "unit", unit, S)
+    mu = etree.SubElement(r, S + "measurementUncertaintyUnivariate")
+    divisor, distribution = divisor_for_basis(std.basis)
+    if std.basis == "U95":
+        e = etree.SubElement(mu, S + "expandedMU")
+        b.leaf(e, "valueExpandedMU", _figure(figure), S)
+        b.leaf(e, "coverageFactor", _figure(divisor), S)
+        b.leaf(e, "coverageProbability", _figure(DEFAULT_COVERAGE_PROBABILITY), S)
+        b.leaf(e, "distribution", distribution, S)
+    elif std.basis == "MPE":
+        e = etree.SubElement(mu, S + "coverageIntervalMU")
+        b.leaf(e, "valueStandardMU", _figure(figure / divisor), S)
+        b.leaf(e, "intervalMin", _figure(-figure), S)
+        b.leaf(e, "intervalMax", _figure(figure), S)
+        b.leaf(e, "coverageProbability", "1", S)
+        b.leaf(e, "distribution", distribution, S)
+    else:  # "u": a standard uncertainty
+        e = etree.SubElement(mu, S + "standardMU")
+        b.leaf(e, "valueStandardMU", _figure(figure / divisor), S)
+        b.leaf(e, "distribution", distribution, S)
 
 
 def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[str, str],
@@ -597,9 +681,10 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
     m = etree.SubElement(methods, D + "usedMethod", refType=b.ref(
         "anglebench_method", "the method of evaluation"))
     b.text(m, "name", doc.method)
-    setup = [f"{_say(k, 'en')}: {_say(val, 'en')}" for k, val in doc.settings]
-    if setup:
-        b.rich(m, "description", "; ".join(setup), translated=False)
+    if doc.settings:  # each setting's name and value in each language (English only up to
+        # 0.8.10: "faces n: from the readings; …" in a bilingual document)
+        b.rich(m, "description", _Cells([_Cells([k, val], ": ") for k, val in doc.settings],
+                                        "; "))
     if doc.standard:
         b.leaf(m, "norm", _say(doc.standard, "en"))
     if doc.method_reference:
@@ -643,15 +728,7 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
             if std.uncertainty is not None:
                 if qs is None:
                     qs = etree.SubElement(eq, D + "measuringEquipmentQuantities")
-                q = etree.SubElement(qs, D + "measuringEquipmentQuantity",
-                                     refType=b.ref(v.REFTYPE_STANDARD_U,
-                                                   "the standard's stated uncertainty figure"))
-                b.text(q, "name", message(QT_TR_NOOP("Stated uncertainty ({basis}, per {per})"),
-                                          basis=std.basis, per=std.applies_to))
-                unit = _SYMBOLS.get({"arcsec": '"', "urad": "µrad", "nm": "nm", "um": "µm",
-                                     "mdeg": "mdeg", "deg": "°"}.get(std.uncertainty_unit, ""),
-                                    r"\one")
-                b.real(q, std.uncertainty, unit)
+                _standard_uncertainty(b, qs, std)
     conditions = [(QT_TR_NOOP("Temperature"), meta.temperature_c, r"\degreecelsius",
                    v.REFTYPE_TEMPERATURE),
                   (QT_TR_NOOP("Relative humidity"), meta.humidity_pct, r"\percent",

@@ -27,7 +27,7 @@ from models.fringe.model import (
 )
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.plots import figures as fringe_figures
-from models.fringe.report import fringe_budget, fringe_certificate
+from models.fringe.report import MODEL_INPUT, fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
@@ -43,6 +43,7 @@ from models.workbench import (
     ShowsHeadline,
     Workbench,
     WritesCorrectionTable,
+    raw_error_u_note,
 )
 
 __all__ = ["FRINGE", "FringeResult"]
@@ -712,6 +713,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     # each error's U column (the certificate's "U as found" is the raw error's)
     dcc_uncertainty_columns = {"raw_error": "raw_error_",
                                "compensated_error": "compensated_error_"}
+    #: what the DCC says of the raw error's U (the printed "U as found"): the one rule
+    dcc_column_notes = {"raw_error": raw_error_u_note(MODEL_INPUT)}
     method_reference = ("Gao X. et al., Automatic compensation of sine deviation for grating "
                         "fringe photoelectric signal, Acta Optica Sinica 33(7):0712001 (2013)")
     presenter = "widgets.fringe.presenter:FringePresenter"

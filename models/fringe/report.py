@@ -178,6 +178,10 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     return out
 
 
+#: the compensation's own input: the as-found (raw) error's budget is without it
+MODEL_INPUT = QT_TR_NOOP("Fitted model (correction table)")
+
+
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                   settings: Mapping[str, Any] | None = None) -> UncertaintyBudget:
     """The budget of the compensated error, or of the as-found error (no model input), held
@@ -203,7 +207,7 @@ def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,
                 cos=f"{sig_c * 1e3:.3g}")))
     if not as_found:
         components.append(BudgetComponent(
-            QT_TR_NOOP("Fitted model (correction table)"), "A", "normal", model, 1.0, 1.0, dof,
+            MODEL_INPUT, "A", "normal", model, 1.0, 1.0, dof,
             QT_TR_NOOP("covariance of the fitted parameters propagated to the modelled phase "
                        "error")))
     return UncertaintyBudget(tuple(components), n, metadata.coverage_probability, result.unit,

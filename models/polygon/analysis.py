@@ -13,6 +13,12 @@ from models.messages import QT_TR_NOOP, joined, lines, message, reason_of
 from models.parameters import Parameter, SettingsError
 from models.polygon import KEY, TITLE
 from models.polygon.acquisition import polygon_guide
+from models.polygon.budget_inputs import (
+    PYRAMIDAL_INPUT,
+    ROLL_INPUT,
+    TILT_BOUND_INPUT,
+    is_set_up_input,
+)
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -40,6 +46,7 @@ from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
+from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
@@ -52,6 +59,7 @@ from models.workbench import (
     SendsRuns,
     ShowsHeadline,
     Workbench,
+    raw_error_u_note,
 )
 
 __all__ = ["POLYGON", "closure_limit_arcsec"]
@@ -703,6 +711,13 @@ def to_json(result: PolygonResult) -> dict[str, Any]:
     return out
 
 
+def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
+    """A figure and its standard uncertainty, u to two significant digits and the figure to
+    its decimal (GUM 7.2.6): ("120.0003°", "0.0012°"), never a u of "0.00°"."""
+    decimals = uncertainty_decimals(u)
+    return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
+
+
 def summary(result: PolygonResult) -> str:
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
     doubt = certificate_doubt(result)
@@ -718,22 +733,31 @@ def summary(result: PolygonResult) -> str:
         closure = message(QT_TR_NOOP("not measured")) if r.closure_drift_arcsec is None else (
             message(QT_TR_NOOP("drift {drift} ok") if r.closure_ok else
                     QT_TR_NOOP("drift {drift} FAILED"), drift=f"{r.closure_drift_arcsec:+.2f}\""))
-        tilt = ((f"ψ = {r.tilt.psi_arcsec:.1f}\" ± {r.tilt.u_psi_arcsec:.2f}\", "
-                 f"ω = {r.tilt.omega_deg:.1f}° ± {r.tilt.u_omega_deg:.2f}°")
-                if r.tilt.omega_determined else
-                message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),
-                        psi=f"{r.tilt.psi_arcsec:.1f}\"", u=f"{r.tilt.u_psi_arcsec:.2f}\"")
-                ) if r.tilt else message(QT_TR_NOOP("no tilt"))
+        if r.tilt is None:
+            tilt: Any = message(QT_TR_NOOP("no tilt"))
+        elif r.tilt.omega_determined:
+            psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
+            omega, u_omega = _with_u(r.tilt.omega_deg, r.tilt.u_omega_deg, "°")
+            tilt = f"ψ = {psi} ± {u_psi}, ω = {omega} ± {u_omega} (u, k = 1)"
+        else:
+            psi, u_psi = _with_u(r.tilt.psi_arcsec, r.tilt.u_psi_arcsec, '"')
+            tilt = message(QT_TR_NOOP("ψ = {psi} ± {u}, ω not identified (ψ not told from 0)"),
+                           psi=psi, u=u_psi)
         out.append(message(
             QT_TR_NOOP("  set {set} ({sense}, from face {face}): closure {closure}; {tilt}; "
                        "pyramidal correction up to {largest}"),
             set=i, sense="+" if r.direction > 0 else "−", face=r.start_face, closure=closure,
             tilt=tilt, largest=f"{np.max(np.abs(r.pyramidal_error_arcsec)):.3f}\""))
+    # the readings' figure against the grade, U left out: not the certificate's decision
+    # (its statement of conformity takes U under the decision rule of its details)
     out.append(message(
-        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
-                   "met (rule: half the peak-to-peak ≤ accuracy)") if result.accuracy_ok else
-        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} "
-                   "NOT met (rule: half the peak-to-peak ≤ accuracy)"),
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
+                   "is within the grade's ±{accuracy}, U left out — not a statement of "
+                   "conformity (a certificate decides with U, by the rule in its details)")
+        if result.accuracy_ok else
+        QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
+                   "exceeds the grade's ±{accuracy}, U left out — not a statement of "
+                   "conformity (a certificate decides with U, by the rule in its details)"),
         low=f"{s.min:+.2f}\"", high=f"{s.max:+.2f}\"", ptp=f"{s.peak_to_peak:.2f}\"",
         accuracy=f"{tol:g}\""))
     h = result.harmonics
@@ -792,27 +816,23 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
                            QT_TR_NOOP("the autocollimator"))
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
     #: what the DCC says of a column's U where the PDF prints none beside it
-    dcc_column_notes = {"raw_error_arcsec": QT_TR_NOOP(
-        "U of the raw error: the certificate's budget without its input 'Pyramidal correction "
-        "(ψ, ω)' (the raw error is before that correction; every other input — the reference "
-        "polygon, the autocollimator, its roll, the reading noise, the zero reading, the "
-        "drift — is in it), at each position with its own k.")}
+    dcc_column_notes = {"raw_error_arcsec": raw_error_u_note(
+        PYRAMIDAL_INPUT, TILT_BOUND_INPUT, ROLL_INPUT)}
 
     def dcc_point_uncertainties(self, result, metadata=None, settings=None):
         """The raw error (mean of the sets, before the pyramidal correction): the
-        certificate's budget less the correction's own input (as the JSON's per-set
+        certificate's budget less the set-up's inputs (as the JSON's per-set
         ``error_arcsec``), U and k per position; none when the budget is not determined."""
         if metadata is None:
             return {}
-        from models.polygon.report import PYRAMIDAL_INPUT, polygon_budget
+        from models.polygon.report import polygon_budget
         from models.uncertainty.budget import UncertaintyBudget
 
         try:
             full = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return {}
-        raw = UncertaintyBudget(tuple(c for c in full.components
-                                      if getattr(c.name, "template", c.name) != PYRAMIDAL_INPUT),
+        raw = UncertaintyBudget(tuple(c for c in full.components if not is_set_up_input(c)),
                                 full.points, full.probability, full.unit, full.floor)
         return {"raw_error_arcsec": raw}
 

@@ -78,6 +78,12 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.withheld import UncertaintyWithheld
 from models.messages import QT_TR_NOOP, message
 from models.polygon import KEY, TITLE
+from models.polygon.budget_inputs import (
+    PYRAMIDAL_INPUT,
+    ROLL_INPUT,
+    TILT_BOUND_INPUT,
+    is_set_up_input,
+)
 from models.polygon.model import (
     DEFAULT_TILT_BOUND_ARCSEC,
     GRADE_ACCURACY_ARCSEC,
@@ -350,7 +356,7 @@ def _unidentified_tilt_component(result: PolygonResult, n: int, zero: int,
                               - np.cos(np.radians(theta[zero] - omega)))
         worst = np.maximum(worst, np.abs(own) + rho * span)
     return [BudgetComponent(
-        QT_TR_NOOP("Pyramidal tilt, not identified (bound)"), "B", "rectangular", worst,
+        TILT_BOUND_INPUT, "B", "rectangular", worst,
         math.sqrt(3.0), 1.0, math.inf,
         message(QT_TR_NOOP("a tilt up to {psi} (stated) in its worst direction, not removed: "
                            "its exact effect in the set-up's frame plus the autocollimator's "
@@ -377,7 +383,7 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
                 else QT_TR_NOOP("the polygon's axis"))
     if measured:
         return [BudgetComponent(
-            QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "normal",
+            ROLL_INPUT, "B", "normal",
             rho * np.abs(change), 1.0, sign, math.inf,
             message(QT_TR_NOOP("measured roll {roll} relative to {vertical}, corrected; its "
                                "standard uncertainty {u} times the vertical reading's change "
@@ -385,7 +391,7 @@ def _roll_component(result: PolygonResult, roll_arcmin: float, n: int) -> list[B
                     roll=f"{result.ac_roll_measured_arcmin:+g}′", vertical=message(vertical),
                     u=f"{limit:g}′"), common=True)]
     return [BudgetComponent(
-        QT_TR_NOOP("Autocollimator roll ρ (cross-talk ρ·(y − y_z))"), "B", "rectangular",
+        ROLL_INPUT, "B", "rectangular",
         rho * np.abs(change), math.sqrt(3.0), sign, math.inf,
         message(QT_TR_NOOP("roll relative to {vertical} up to ±{roll} (stated, not measured, "
                            "not corrected) times the vertical reading's change from the zero "
@@ -671,7 +677,6 @@ def rounding_bounded_half_range(result: PolygonResult, metadata: CertificateMeta
 _GRADE_IN_TEXT = re.compile(r"grade\s*(\d+)", re.IGNORECASE)
 
 
-PYRAMIDAL_INPUT = QT_TR_NOOP("Pyramidal correction (ψ, ω)")
 #: the inputs of the mean over the sets that one set carries √m-fold (their templates)
 _PER_SET_SCALED = ("Repeatability (mean of {sets} sets)",
                    "Autocollimator reading noise (mean of {sets} sets)",
@@ -683,7 +688,9 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
                          settings: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """The budget of each error array of the JSON. ``mean_corrected_error_arcsec``: the
     certificate's. The arrays of every set (``error_arcsec`` before the pyramidal
-    correction, ``pyramidal_error_arcsec`` the correction's own, ``corrected_error_arcsec``),
+    correction: every input but the set-up's, :data:`SET_UP_INPUTS`;
+    ``pyramidal_error_arcsec`` the correction's own: the set-up's inputs alone;
+    ``corrected_error_arcsec`` all),
     set after set: each set's own budget — the inputs averaged over the sets (repeatability,
     reading noise, drift, tilt fits) taken √m_eff (√m) times larger, as for one set of
     them. At the zero face set 1's error is the zero reading against itself, 0 by
@@ -700,9 +707,7 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
                       result) for s in range(1, m)]
 
     def part(budget: UncertaintyBudget, keep, floor: float) -> UncertaintyBudget:
-        return UncertaintyBudget(tuple(c for c in budget.components
-                                       if keep(getattr(c.name, "template", c.name)
-                                               == PYRAMIDAL_INPUT)),
+        return UncertaintyBudget(tuple(c for c in budget.components if keep(is_set_up_input(c))),
                                  budget.points, budget.probability, budget.unit, floor)
 
     def sets(keep, floor: float) -> PointUncertainty:

@@ -18,6 +18,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
+from models.theodolite.figures import MODEL_INPUT
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
 from models.uncertainty.conformity import uncertainty_decimals
@@ -31,6 +32,7 @@ from models.workbench import (
     SendsRuns,
     ShowsHeadline,
     Workbench,
+    raw_error_u_note,
 )
 
 if TYPE_CHECKING:  # the certificate's modules are loaded when a certificate is asked for
@@ -300,6 +302,8 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     sample_file = "theodolite_sample.csv"
     measurand_standards = (QT_TR_NOOP("the autocollimating theodolite"),)
     dcc_uncertainty_columns = {"corrected_error": ""}  # the certificate's U column (DCC)
+    #: what the DCC says of the raw error's U (the JSON's raw_error_arcsec budget)
+    dcc_column_notes = {"raw_error_arcsec": raw_error_u_note(MODEL_INPUT)}
     method_reference = ("Tian L. et al., Test method of angle error of limited rotation axis "
                         "system, Acta Photonica Sinica 46(11):1112005 (2017)")
     presenter = "widgets.theodolite.presenter:TheodolitePresenter"
