@@ -117,6 +117,7 @@
     </message>
     <message>
         <source>Fitted model (correction table)</source>
+        <extracomment>the compensation&apos;s own input: the as-found (raw) error&apos;s budget is without it</extracomment>
         <translation>拟合模型（修正表）</translation>
     </message>
     <message>
@@ -126,10 +127,6 @@
     <message>
         <source>{channel}: offset A₀</source>
         <translation>{channel}：直流偏置 A₀</translation>
-    </message>
-    <message>
-        <source>{channel}: R², residual RMS</source>
-        <translation>{channel}：R²、残差均方根</translation>
     </message>
     <message>
         <source>the certificate details say a correction table with checksum {as_left_table_sha256}… was loaded into the encoder, but this analysis&apos;s table is {sha256}…: export and load this table, or clear the checksum</source>
@@ -1734,7 +1731,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -1966,6 +1963,18 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>先保存对项目的更改吗？</translation>
     </message>
     <message>
+        <source>Project changed on disk</source>
+        <translation>项目文件已在磁盘上更改</translation>
+    </message>
+    <message>
+        <source>{name} was changed on disk since this window opened or saved it (by another window, a colleague or a program): saving replaces those changes.
+
+Yes: replace it with this window&apos;s project. No: save this window&apos;s project under another name. Cancel: do not save.</source>
+        <translation>{name} 在本窗口打开或保存之后已在磁盘上被更改（被另一个窗口、同事或其他程序）：保存将替换这些更改。
+
+是：用本窗口的项目替换它。否：将本窗口的项目另存为其他名称。取消：不保存。</translation>
+    </message>
+    <message>
         <source>Open project</source>
         <translation>打开项目</translation>
     </message>
@@ -2050,6 +2059,10 @@ Errors are errors of indication (indicated − reference); the positioning workb
         <translation>尚未导出</translation>
     </message>
     <message>
+        <source>The project could not be saved ({reason}). The window stays open with your readings.</source>
+        <translation>项目无法保存（{reason}）。窗口保持打开，您的读数仍在其中。</translation>
+    </message>
+    <message>
         <source>Cannot open</source>
         <translation>无法打开</translation>
     </message>
@@ -2124,6 +2137,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Nothing to export</source>
         <translation>没有可导出的内容</translation>
+    </message>
+    <message>
+        <source>… and {count} more</source>
+        <translation>……另有 {count} 处</translation>
+    </message>
+    <message>
+        <source>Opened with repairs</source>
+        <translation>打开时已修复</translation>
     </message>
     <message>
         <source>Autosave failed: {reason}. Your unsaved readings are not protected: save the project (File › Save as) on a disk with room.</source>
@@ -2375,6 +2396,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>no DCC written: the coverage factor of a point of &apos;{column}&apos; is not found in its budget</source>
+        <extracomment>the one description of refType anglebench_coverageProbability (an interval&apos;s, a U&apos;s)</extracomment>
         <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
     </message>
     <message>
@@ -2388,6 +2410,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>U of the inputs evaluated only (incomplete: a lower bound, not U)</source>
         <translation>仅已评定输入量的 U（不完整：为下限，不是 U）</translation>
+    </message>
+    <message>
+        <source>U stated: raised to the laboratory&apos;s CMC</source>
+        <translation>给出的 U：提高到实验室的 CMC</translation>
     </message>
     <message>
         <source>Face deviation</source>
@@ -2404,10 +2430,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Calibration due date</source>
         <translation>校准有效期</translation>
-    </message>
-    <message>
-        <source>Stated uncertainty ({basis}, per {per})</source>
-        <translation>给定的不确定度（{basis}，每 {per}）</translation>
     </message>
     <message>
         <source>Relative humidity</source>
@@ -2687,8 +2709,8 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>此 PDF 是否与登记册签发的证书逐字节一致？</translation>
     </message>
     <message>
-        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only); a .xml file is checked as a digital calibration certificate (DCC) the register issued</source>
-        <translation>要核验的 PDF（不给出时：只检查登记册的哈希链和所存 PDF）；.xml 文件按登记册签发的数字校准证书（DCC）核验</translation>
+        <source>the PDF to check (without it: the register&apos;s hash chain and stored PDFs only); a .xml file is checked as a digital calibration certificate (DCC) the register issued, a .xlsx or .csv file as the results file written with one</source>
+        <translation>要核验的 PDF（不给出时：只检查登记册的哈希链和所存 PDF）；.xml 文件按登记册签发的数字校准证书（DCC）核验，.xlsx 或 .csv 文件按随证书写出的结果文件核验</translation>
     </message>
     <message>
         <source>a chain head noted earlier (12 to 64 hex digits): the register must still hold the history up to it</source>
@@ -2835,6 +2857,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>签发后被改动：{path} 印有其前的链头 {printed}，但登记册中 {number} 之前的链值现为 {actual}</translation>
     </message>
     <message>
+        <source>{path}: NOT in the register (no results file written with an issued certificate has its SHA-256: altered, written without issuing one, or from another register)</source>
+        <translation>{path}：不在登记册中（随已签发证书写出的结果文件中没有一个具有此 SHA-256：已被改动、写出时未签发证书，或来自另一登记册）</translation>
+    </message>
+    <message>
+        <source>{path}: the results file of certificate {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：证书 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
         <source>authorised signatories: {names}; approver and operator {rule}</source>
         <translation>授权签字人：{names}；批准人与校准员{rule}</translation>
     </message>
@@ -2917,6 +2947,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Expanded U (k = {k})</source>
         <translation>扩展不确定度 U（k = {k}）</translation>
+    </message>
+    <message>
+        <source>U stated: raised to the laboratory&apos;s CMC (k = {k})</source>
+        <translation>给出的 U：提高到实验室的 CMC（k = {k}）</translation>
     </message>
     <message>
         <source>Uncertainty budget</source>
@@ -3131,6 +3165,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>The expanded uncertainty of the error is U = {u} (the largest over the points; each point&apos;s U is in the results table). At each point it is the combined standard uncertainty multiplied by the coverage factor k of Student&apos;s t for that point&apos;s effective degrees of freedom (Welch–Satterthwaite) and a coverage probability of {p} %; at the largest, k = {k}. The uncertainty was evaluated according to the GUM (JCGM 100:2008).</source>
         <translation>误差的扩展不确定度 U = {u}（各点中的最大值；各点的 U 见结果表）。各点的扩展不确定度为合成标准不确定度乘以包含因子 k，k 为该点有效自由度（Welch–Satterthwaite 公式）和包含概率 {p} % 下的 t 分布值；最大处 k = {k}。不确定度按 GUM（JCGM 100:2008）评定。</translation>
+    </message>
+    <message>
+        <source>Where that product is below the laboratory&apos;s CMC, U = {cmc}, the U stated is the CMC (ILAC-P14 5.4), with the same k; the budget&apos;s last line gives it.</source>
+        <translation>该乘积低于实验室的 CMC（U = {cmc}）时，给出的 U 取 CMC（ILAC-P14 5.4），k 不变；见不确定度分量一览表最后一行。</translation>
     </message>
     <message>
         <source>Decided quantity: {quantity}.</source>
@@ -4061,6 +4099,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>reading</source>
+        <extracomment>what a standard&apos;s stated figure is the uncertainty of (metadata.APPLIES_TO), in the words of the certificate&apos;s budget (models.certificate.document.reference_standard_components)</extracomment>
         <translation>读数</translation>
     </message>
     <message>
@@ -4397,6 +4436,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Interpolation error {ptp} peak-to-peak ({share} % of a period); {after} after compensation</source>
+        <extracomment>what the DCC says of the raw error&apos;s U (the printed &quot;U as found&quot;): the one rule</extracomment>
         <translation>细分误差峰峰值 {ptp}（一个周期的 {share} %）；补偿后 {after}</translation>
     </message>
     <message>
@@ -4565,14 +4605,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>  第 {set} 组（{sense}，自第 {face} 面）：闭合 {closure}；{tilt}；棱锥误差修正最大 {largest}</translation>
     </message>
     <message>
-        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} met (rule: half the peak-to-peak ≤ accuracy)</source>
-        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
-    </message>
-    <message>
-        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): accuracy ±{accuracy} NOT met (rule: half the peak-to-peak ≤ accuracy)</source>
-        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：不符合准确度 ±{accuracy}（规则：峰峰值的一半 ≤ 准确度）</translation>
-    </message>
-    <message>
         <source>Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) {second}</source>
         <translation>谐波：1 次（偏心）{first}，2 次（椭圆度）{second}</translation>
     </message>
@@ -4599,11 +4631,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the autocollimator</source>
         <translation>自准直仪</translation>
-    </message>
-    <message>
-        <source>U of the raw error: the certificate&apos;s budget without its input &apos;Pyramidal correction (ψ, ω)&apos; (the raw error is before that correction; every other input — the reference polygon, the autocollimator, its roll, the reading noise, the zero reading, the drift — is in it), at each position with its own k.</source>
-        <extracomment>what the DCC says of a column&apos;s U where the PDF prints none beside it</extracomment>
-        <translation>原始误差的 U：证书的不确定度预算去掉其输入量“塔差修正（ψ, ω）”（原始误差是该修正之前的误差；其余各输入量——参考多面棱体、自准直仪、其滚转、读数噪声、零位读数、漂移——均在其中），各位置用其自身的 k。</translation>
     </message>
     <message>
         <source>RUN INVALID: closure failed. </source>
@@ -5042,6 +5069,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>theodolite: the vertical column is the zenith angle V (same as --vertical-reading zenith)</source>
+        <extracomment>what the DCC says of the raw error&apos;s U (the JSON&apos;s raw_error_arcsec budget)</extracomment>
         <translation>theodolite：竖直列为天顶距 V（同 --vertical-reading zenith）</translation>
     </message>
     <message>
@@ -5229,6 +5257,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>证书 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
     </message>
     <message>
+        <source>Results of {number} written to {path} and recorded in the register</source>
+        <translation>{number} 的结果已写入 {path} 并记入登记册</translation>
+    </message>
+    <message>
         <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
         <translation>证书已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
     </message>
@@ -5253,6 +5285,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source> (in progress, left out: {progress})</source>
         <translation>（进行中，未计入：{progress}）</translation>
+    </message>
+    <message>
+        <source>U of the raw error: the certificate&apos;s budget without the inputs of the correction that the raw error is before ({inputs}); every other input (the readings&apos;, the standards&apos;) is in it, at each point with its own k. So on every workbench: the raw error is what the readings give, with the effect the correction removes still in it.</source>
+        <extracomment>what the DCC states of a raw error&apos;s U (IssuesCertificates.dcc_column_notes): one rule on every workbench (theodolite, polygon, fringe), the rule of the JSON&apos;s expanded_uncertainty_raw_error_* (the polygon&apos;s per-set error_arcsec)</extracomment>
+        <translation>原始误差的 U：证书的不确定度预算去掉原始误差之后所作修正的输入量（{inputs}）；其余各输入量（读数的、标准器的）均在其中，各点用其自身的 k。各工作台均如此：原始误差即读数所给出的误差，修正所去除的影响仍在其中。</translation>
     </message>
     <message>
         <source>expanded uncertainty U (k = 2)</source>
@@ -5310,8 +5347,12 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>参考点，按定义为零</translation>
     </message>
     <message>
+        <source>the U of the decision rule (its guard bands and its test U &lt; T) is this quantity&apos;s own, the half-widths U₋ and U₊ of its coverage interval, not the U of a point (up to {u}, not smaller than T = {t}): the half range is one figure made from all the points, with an interval of its own</source>
+        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study). the share of the trials in which the budget&apos;s noise alone may give a flat curve a range below the measured one before the readings are said to contradict the budget (a budget that is right is contradicted by at most this share of the readings: a flat curve&apos;s measured range is the noise&apos;s own) which U the decision rule uses when the half range decides (the guard band w, the probabilities, the U ≥ T test): its own interval&apos;s half-widths, not a point&apos;s U</extracomment>
+        <translation>判定规则所用的 U（其保护带及 U &lt; T 的检验）是该量自身的 U，即其包含区间的半宽 U₋ 和 U₊，而不是某一点的 U（最大 {u}，不小于 T = {t}）：半峰峰值是由全部点得出的一个量，有其自身的区间</translation>
+    </message>
+    <message>
         <source>probability of conformity from the decided value&apos;s own interval (JCGM 106:2012, 9.5: specific risk): the value&apos;s distribution taken as normal on each side of it, each side&apos;s standard deviation that half-width divided by the normal factor of the stated coverage probability, so that the interval holds it; with every point deciding, at most the sum over the points of each one&apos;s probability of lying outside ±T (Boole&apos;s inequality)</source>
-        <extracomment>The lower end&apos;s least favourable curve: every gap to an extreme shrunk by this many standard deviations of its own noise (ε_i − ε_a), soft thresholding (Donoho &amp; Johnstone, *Biometrika* 81 (1994) 425–455) — the gaps the noise cannot resolve become ties, which maximise the range&apos;s bias (Romano, Shaikh &amp; Wolf 2014: the least favourable curve the data allow). Chosen by the coverage study (models.validation.half_range, 200 runs a cell): at 2 and 2.5 more cells missed below in more than 2.275 % of runs. The upper end&apos;s tail: the (UPPER_TAIL · α) quantile of the pivot under the measured curve (α = 1 − p; 0.5 % at p = 95.45 %), not α/2: the plug-in curve&apos;s bias is a little too large for a curve with two near-equal extremes at few points (a rough curve, 12 points: 7 % of misses above at α/2, 2 % at this tail, in the coverage study). the share of the trials in which the budget&apos;s noise alone may give a flat curve a range below the measured one before the readings are said to contradict the budget (a budget that is right is contradicted by at most this share of the readings: a flat curve&apos;s measured range is the noise&apos;s own)</extracomment>
         <translation>符合概率由判定量自身的区间求得（JCGM 106:2012，9.5：特定风险）：该值两侧各取正态分布，每侧的标准差为该侧半宽除以所述包含概率的正态因子，使区间包含该概率；逐点判定时，取各点落在 ±T 之外概率之和作为上限（布尔不等式）</translation>
     </message>
     <message>
@@ -5382,6 +5423,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the interval&apos;s coverage achieved in validation (noise 0.1 to 2 times the half range, 12 to 72 points, 100 runs in each of a shape&apos;s 12 cells, pooled): {smooth} % on smooth curves, {rough} % on rough ones, {spike} % on a single spike, {sample} % on real curves; no cell below the {p} % stated beyond the binomial scatter of its runs</source>
         <translation>该区间在验证中达到的包含概率（噪声为半峰峰值的 0.1 至 2 倍，12 至 72 点，每种形状 12 个单元、每单元 100 次，合并计）：平滑曲线 {smooth} %，粗糙曲线 {rough} %，单个尖峰 {spike} %，实际曲线 {sample} %；没有任何单元低于所述的 {p} % 超出其次数的二项分布离散</translation>
+    </message>
+    <message>
+        <source>each half-width of the interval held to at least the laboratory&apos;s CMC U = {cmc} (ILAC-P14 5.4: the half range is the error at its extreme points about their mid-value, which the laboratory cannot know better than a point&apos;s error), so the guard band and the probabilities use it</source>
+        <translation>区间的每个半宽都不小于实验室的 CMC U = {cmc}（ILAC-P14 5.4：半峰峰值是两个极值点相对其中值的误差，实验室对它的了解不会优于单点误差），保护带和各概率均按此计算</translation>
     </message>
     <message>
         <source>corrected error</source>
@@ -5717,7 +5762,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
-        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional</extracomment>
+        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
@@ -5763,6 +5808,31 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{source}: workbench &apos;{key}&apos;: &apos;settings&apos; must be an object</source>
         <translation>{source}：工作台 &apos;{key}&apos;：&apos;settings&apos; 必须是对象</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: a broken character ({codes}: half of a UTF-16 pair) in the raw frames; nothing was changed</source>
+        <extracomment>a UTF-16 surrogate written as a JSON escape (a pair, or half of one), or one in the text</extracomment>
+        <translation>{source}：{where}：原始帧中有残缺字符（{codes}：UTF-16 代理对的一半）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{source}: {where}: a broken character ({codes}: half of a UTF-16 pair) was replaced by U+FFFD (�)</source>
+        <translation>{source}：{where}：一个残缺字符（{codes}：UTF-16 代理对的一半）已替换为 U+FFFD（�）</translation>
+    </message>
+    <message>
+        <source>workbench &apos;{key}&apos;, row {row}, column {column}</source>
+        <translation>工作台“{key}”，第 {row} 行，第 {column} 列</translation>
+    </message>
+    <message>
+        <source>workbench &apos;{key}&apos;, setting &apos;{name}&apos;</source>
+        <translation>工作台“{key}”，设置“{name}”</translation>
+    </message>
+    <message>
+        <source>certificate details of workbench &apos;{key}&apos;, &apos;{name}&apos;</source>
+        <translation>工作台“{key}”的证书信息，“{name}”</translation>
+    </message>
+    <message>
+        <source>&apos;{name}&apos;</source>
+        <translation>“{name}”</translation>
     </message>
     <message>
         <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
@@ -6742,16 +6812,36 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>实测滚转的标准不确定度；0：未实测滚转（上面的限值计入不确定度评定，不作修正）</translation>
     </message>
     <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for a polygon&apos;s face deviations: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for an encoder&apos;s error at its steps: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对编码器各步误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the axis error: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对轴系误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the encoder error: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对编码器误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the interpolation error: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对细分误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the positioning deviation: the smallest U of its scope. Every U stated is at least this, the decided quantity&apos;s interval included; a result whose computed U is below it is stated with the CMC as its U (ILAC-P14). 0: none stated, nothing said</source>
+        <translation>实验室对位置偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值，判定量的区间也不例外；计算所得 U 小于此值的结果以 CMC 作为其 U 给出（ILAC-P14）。0：未给出，不作说明</translation>
+    </message>
+    <message>
         <source>The plan&apos;s targets: start:step:count (0:30:12) or a list (0, 30, 60)</source>
         <translation>计划的目标位置：起点:步长:个数（0:30:12）或列表（0, 30, 60）</translation>
     </message>
     <message>
         <source>The plan&apos;s θ: start:step:count (-20:1:41) or a list (-20, -10, 0, 10, 20)</source>
         <translation>计划的 θ：起点:步长:个数（-20:1:41）或列表（-20, -10, 0, 10, 20）</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for a polygon&apos;s face deviations: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对多面棱体面偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
     </message>
     <message>
         <source>Exact linear least squares, or the particle swarm of the method&apos;s paper (Gao et al. 2013; first period only, for comparison)</source>
@@ -6788,26 +6878,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>The controller&apos;s settings as KEY=VALUE, comma-separated, e.g. axis=AX4, system=1, modulo=360, reference=0 (SINUMERIK); axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i (FANUC); axis=C, values=error, modulo=360 (HEIDENHAIN); name=Axis1 (TwinCAT); axis_name=C, max_points=1500, value_type=sgn32 (ISG); axis=X, values=correction (Mach4); modulo=360, travel_min=-720, travel_max=720 (LinuxCNC, a rotary joint)</source>
         <translation>控制器的设置，写作 KEY=VALUE，以逗号分隔，例如 axis=AX4, system=1, modulo=360, reference=0（SINUMERIK）；axis=4, detection_unit=0.001, magnification=1, reference=0, modulo=360, series=30i（FANUC）；axis=C, values=error, modulo=360（HEIDENHAIN）；name=Axis1（TwinCAT）；axis_name=C, max_points=1500, value_type=sgn32（ISG）；axis=X, values=correction（Mach4）；modulo=360, travel_min=-720, travel_max=720（LinuxCNC，回转轴）</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for an encoder&apos;s error at its steps: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对编码器各步误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the axis error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对轴系误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the encoder error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对编码器误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the interpolation error: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对细分误差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
-    </message>
-    <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for the positioning deviation: the smallest U of its scope. Every U stated is at least this; results whose computed U is below it are outside the scope and flagged (ILAC-P14). 0: none stated, nothing said</source>
-        <translation>实验室对位置偏差的校准和测量能力（CMC）：其能力范围内最小的 U。所给出的每个 U 都不小于此值；计算所得 U 小于此值的结果超出能力范围并予以标注（ILAC-P14）。0：未给出，不作说明</translation>
     </message>
     <message>
         <source>The theodolite&apos;s standard uncertainty of a reading, as its reference standard states it (basis u, the same figure); residuals above 3× it raise a warning; beyond 100× it, or beyond 10× it when the set-up model explains less than 99 % (R²), the result is refused; 0: no check</source>
@@ -7000,6 +7070,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>its readings at a face scatter from set to set by less than the step (s = {spread})</source>
         <translation>其在同一面上的读数在各测回间的分散小于该步距（s = {spread}）</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak is within the grade&apos;s ±{accuracy}, U left out — not a statement of conformity (a certificate decides with U, by the rule in its details)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：峰峰值的一半在该等级的 ±{accuracy} 以内，未计 U——这不是符合性声明（证书计入 U，按其证书信息中的判定规则作出判定）</translation>
+    </message>
+    <message>
+        <source>Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak exceeds the grade&apos;s ±{accuracy}, U left out — not a statement of conformity (a certificate decides with U, by the rule in its details)</source>
+        <translation>修正后误差 {low} … {high}（峰峰值 {ptp}）：峰峰值的一半超出该等级的 ±{accuracy}，未计 U——这不是符合性声明（证书计入 U，按其证书信息中的判定规则作出判定）</translation>
     </message>
     <message>
         <source>, reversal |ē↑ − ē↓| up to {value} (mean ē↑ − ē↓ {mean}: forward sets&apos; error minus reverse sets&apos;)</source>
@@ -7391,6 +7469,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>one pattern for the whole record, within the figure stated</source>
         <translation>整个记录为同一图样，在所述数值以内</translation>
+    </message>
+    <message>
+        <source>{channel}: R² of the fit</source>
+        <translation>{channel}：拟合 R²</translation>
+    </message>
+    <message>
+        <source>{channel}: residual RMS of the fit</source>
+        <translation>{channel}：拟合残差均方根</translation>
     </message>
     <message>
         <source>All {n} samples are shown; they are also in the CSV/XLSX results export.</source>
@@ -8168,7 +8254,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{port}: no answer for {seconds} s</source>
         <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines kept and not read that were not refused (a connection&apos;s first line: it may be the rest of a sample begun before the connection) lines framed, samples read and lines refused since the start
 ----------
-seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (in :attr:`CaptureWorker.raw` at ``frame - raw_first``) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) every line the instrument sent, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only the index (since the start) of ``raw[0]``: frames a consumer has taken (:meth:`take_raw`) beyond ``raw_cap`` are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
@@ -8946,6 +9032,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>the entry plan needs the number of faces (set-up: faces n)</source>
+        <extracomment>what the DCC says of a column&apos;s U where the PDF prints none beside it</extracomment>
         <translation>录入计划需要面数（设置：面数 n）</translation>
     </message>
     <message>
@@ -9396,8 +9483,8 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}；本文件给出的每个 U 均不小于此值。</translation>
     </message>
     <message>
-        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}. At {count} of the {points} points the U these readings give (down to {lowest}) is below it: those results are outside the laboratory&apos;s scope, and their U is stated as the CMC.</source>
-        <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}。在 {points} 个点中有 {count} 个点，由本次读数得到的 U（最小 {lowest}）低于此值：这些结果超出实验室的能力范围，其 U 按 CMC 给出。</translation>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}. At {count} of the {points} points the U these readings give (down to {lowest}) is below it, so their U is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4); there U/k is the CMC&apos;s standard uncertainty, not the budget&apos;s u_c.</source>
+        <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}。在 {points} 个点中有 {count} 个点，由本次读数得到的 U（最小 {lowest}）低于此值，因此其 U 按 CMC 给出，包含因子 k 不变（ILAC-P14 5.4）；在这些点上 U/k 是 CMC 的标准不确定度，而不是预算的 u_c。</translation>
     </message>
     <message>
         <source>refused: “{words}”</source>
