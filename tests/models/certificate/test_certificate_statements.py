@@ -131,6 +131,9 @@ def test_17025_statements_on_every_certificate(key):
     if key == "positioning":
         assert "follows ISO 230-2:2014" in flat
         assert "x = actual position − target (ISO 230-2), i.e. reference − indicated" in flat
+    elif key == "crosscal":  # a polygon's face deviations (review 61, F3)
+        assert "(actual − nominal), i.e. reference − indicated" in flat
+        assert "error = indicated − reference" not in flat
     else:
         assert "error = indicated − reference" in flat
     assert "cross-checked by a Monte Carlo" not in flat
