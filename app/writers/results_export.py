@@ -196,6 +196,7 @@ def _metadata_rows(document: CertificateDocument) -> list[tuple[str, object]]:
         ("No statement of conformity because", document.conformity.reason),
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
+        ("Inputs not stated, so not in U", document.not_in_u_statement),
         *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),
         *((f"Setting: {label}", value) for label, value in document.settings),
         ("Notes", meta.notes),

@@ -158,6 +158,7 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    point_names=decision.point_names,
                                    not_stated=decision.not_stated,
                                    estimate=decision.estimate)
+    more.setdefault("not_in_u", tuple(decision.not_stated))
     if more.get("uncertainty_withheld") and math.isfinite(conformity.expanded):
         # no U stated for the results: the decided value has no interval either (the fringe's
         # every-point decision on an estimated phase printed ±U of the incomplete budget)

@@ -309,7 +309,7 @@ def _statements(b: _Builder, admin) -> None:
                doc.method, doc.sign_convention, convention=_say(doc.sign_convention, "en"),
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
     _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate", VALIDITY)
-    for extra in (*doc.statements, *doc.warnings):
+    for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
 
