@@ -285,7 +285,7 @@ def _statements(b: _Builder, admin) -> None:
     doc = b.document
     sts = etree.SubElement(admin, D + "statements")
     if doc.is_test_report:
-        why = doc.traceability_gaps or doc.untraceable
+        why = [*doc.untraceable, *doc.traceability_gaps]  # as the PDF's statement names them
         _statement(b, sts, v.REFTYPE_NOT_A_CALIBRATION,
                    "the document is a test report, not a calibration certificate",
                    QT_TR_NOOP("This document is a test report, not a calibration certificate: "
@@ -300,11 +300,14 @@ def _statements(b: _Builder, admin) -> None:
                "statement of conformity with its decision rule and the probability of false "
                "acceptance", c.statement, c.rule, c.quantity, c.zones,
                conformity=_CONFORMITY.get(c.verdict, ""))
-    trace = list(doc.traceability_gaps) or [doc.traceability_basis or QT_TR_NOOP(
-        "The results are traceable to the SI through the reference standards listed with "
-        "their calibration certificates (see measuringEquipments).")]
+    # why traceability is not established (an input with no stated U, U incomplete, a
+    # standard missing), never "traceable" beside traceable=false
+    trace = [*doc.untraceable, *doc.traceability_gaps] or [
+        doc.traceability_basis or QT_TR_NOOP(
+            "The results are traceable to the SI through the reference standards listed with "
+            "their calibration certificates (see measuringEquipments).")]
     _statement(b, sts, v.REFTYPE_TRACEABILITY, "metrological traceability", *trace,
-               traceable="false" if doc.is_test_report else "true")
+               traceable="false" if doc.is_test_report or doc.untraceable else "true")
     _statement(b, sts, v.REFTYPE_MEASURAND, "the measurand's definition and sign convention",
                doc.method, doc.sign_convention, convention=_say(doc.sign_convention, "en"),
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
