@@ -311,7 +311,8 @@ def _statements(b: _Builder, admin) -> None:
     _statement(b, sts, v.REFTYPE_MEASURAND, "the measurand's definition and sign convention",
                doc.method, doc.sign_convention, convention=_say(doc.sign_convention, "en"),
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
-    _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate", VALIDITY)
+    _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate",
+               VALIDITY_REPORT if doc.is_test_report else VALIDITY)
     for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
@@ -322,6 +323,11 @@ VALIDITY = QT_TR_NOOP("The results relate only to the item calibrated, at the ti
                       "the conditions of the calibration. This digital certificate and the PDF "
                       "embedded in it are one certificate; the embedded PDF is its "
                       "human-readable form.")
+#: a test report's (notACalibration): the item tested, one report (ISO/IEC 17025 7.8.2.1 a))
+VALIDITY_REPORT = QT_TR_NOOP("The results relate only to the item tested, at the time and under "
+                             "the conditions of the test. This digital document and the PDF "
+                             "embedded in it are one test report; the embedded PDF is its "
+                             "human-readable form.")
 
 
 def _parse(cell: str) -> tuple[float, str] | None:
@@ -706,7 +712,9 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
                          face_deviations_column, reference_face_deviations, column_notes or {})
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
         v.REFTYPE_ISSUED_PDF, "the issued PDF certificate, byte for byte"))
-    b.text(pdf, "name", message(QT_TR_NOOP("Certificate {number} (PDF)"),
+    b.text(pdf, "name", message(QT_TR_NOOP("Test report {number} (PDF)")
+                                if document.is_test_report else
+                                QT_TR_NOOP("Certificate {number} (PDF)"),
                                 number=meta.certificate_number))
     b.leaf(pdf, "fileName", pdf_name)
     b.leaf(pdf, "mimeType", "application/pdf")
