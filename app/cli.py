@@ -543,13 +543,14 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
         raise MetadataError(message("{path}: {reason}", path=path, reason=reason_of(exc))) from None
 
 
-def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows):
+def _issue(args: argparse.Namespace, kind, result, metadata, settings, rows, report=False):
     """Issue through the register (the number allocated there unless the details give one);
     None after saying why it was refused."""
     from models.register.location import register_url
 
     words = translator(args.language)
-    return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words)
+    return _issue_into(register_url(), args, kind, result, metadata, settings, rows, words,
+                       report)
 
 
 def _write_pdf_and_dcc(args: argparse.Namespace, kind, result, document, words, settings) -> None:
@@ -599,7 +600,8 @@ def _specimen(args: argparse.Namespace, kind, result, document, words, settings)
         "recorded in no register"), number=number, path=args.certificate), words))
 
 
-def _issue_into(url, args, kind, result, metadata, settings, rows, words):
+def _issue_into(url, args, kind, result, metadata, settings, rows, words, report=False):
+    """``report``: the document is a test report, and is called one (ISO/IEC 17025 7.8.2.1 a))."""
     from app.certificate_issue import IssuedNotWritten, issue_certificate
     from models.register.store import Register, RegisterError
 
@@ -625,7 +627,9 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words):
             "it with 'anglebench register show {number} --pdf OUT.pdf'"),
             number=exc.record.number, reason=str(exc)), words))
         return None
-    _say(rendered(message(QT_TR_NOOP("Certificate {number} issued: written to {path} and "
+    _say(rendered(message(QT_TR_NOOP("Test report {number} issued: written to {path} and "
+                                     "recorded in the register (sha256 {sha}…)") if report else
+                          QT_TR_NOOP("Certificate {number} issued: written to {path} and "
                                      "recorded in the register (sha256 {sha}…)"),
                           number=record.number, path=args.certificate,
                           sha=record.pdf_sha256[:16]), words))
@@ -672,7 +676,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         if args.certificate and metadata.example:
             _specimen(args, kind, result, document, words, settings)
         elif args.certificate and not draft_reasons(metadata):
-            record = _issue(args, kind, result, metadata, settings, rows())
+            record = _issue(args, kind, result, metadata, settings, rows(),
+                            document.is_test_report)
             if record is None:
                 return EXIT_BAD_INPUT
             return 0  # the results file too, issued and recorded with it

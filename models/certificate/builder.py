@@ -28,7 +28,7 @@ from models.certificate.document import (
 )
 from models.certificate.metadata import CertificateMetadata
 from models.certificate.traceability import expired_withheld
-from models.messages import QT_TR_NOOP, separated
+from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import unit as unit_of
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
@@ -158,6 +158,15 @@ def build_certificate(*, kind_key: str, kind_title: str, method: str,
                                    point_names=decision.point_names,
                                    not_stated=decision.not_stated,
                                    estimate=decision.estimate)
+    more.setdefault("not_in_u", tuple(decision.not_stated))
+    if decision.not_stated:
+        # U declared incomplete: traceability needs every link's contribution in U (VIM
+        # 2.41, ILAC-P10), so none is claimed; the same rule as the fringe's inputs with no
+        # stated U (CertificateDocument.untraceable): with standards listed the document is a
+        # test report, its traceability statement and the DCC's flag say so
+        more["untraceable"] = (*more.get("untraceable", ()), message(
+            QT_TR_NOOP("U is incomplete: inputs not stated, so not in U: {inputs}"),
+            inputs=listed(message(name) for name in decision.not_stated)))
     if more.get("uncertainty_withheld") and math.isfinite(conformity.expanded):
         # no U stated for the results: the decided value has no interval either (the fringe's
         # every-point decision on an estimated phase printed ±U of the incomplete budget)

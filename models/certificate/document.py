@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.certificate.metadata import DOCUMENT_TYPES, CertificateMetadata
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, listed, message, separated
 from models.plots import PlotFigure, PlotSeries
 from models.quantity import Quantity
 from models.sign_convention import SIGN_CONVENTION_TEXT
@@ -100,6 +100,10 @@ class CertificateDocument:
     # holds only the inputs that could be; the fringe's phase estimated from the signals):
     # the results table, the statistics, the exports and the DCC state none; "" when U is
     uncertainty_withheld: str = ""
+    # the inputs the budget leaves out because their uncertainty is not stated (untranslated
+    # names): named under the budget, so that U is never read as complete (GUM 7.2.7);
+    # by default the decision's (models.certificate.builder.Decision.not_stated)
+    not_in_u: tuple[str, ...] = ()
 
     @property
     def is_test_report(self) -> bool:
@@ -108,6 +112,15 @@ class CertificateDocument:
         with a certificate and a stated U; or an input with no stated uncertainty)."""
         return (self.metadata.document_type == "test" or bool(self.traceability_gaps)
                 or bool(self.untraceable and self.metadata.standards))
+
+    @property
+    def not_in_u_statement(self) -> str:
+        """"Inputs not stated, so not in U: …" ("" when the budget holds every input)."""
+        if not self.not_in_u:
+            return ""
+        return message(QT_TR_NOOP("Inputs not stated, so not in U: {inputs}. U covers only the "
+                                  "inputs in the budget."),
+                       inputs=listed(message(name) for name in self.not_in_u))
 
     @property
     def expanded_uncertainty(self) -> float:

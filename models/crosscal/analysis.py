@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.crosscal import KEY, TITLE
+from models.crosscal import KEY, POLYGON_SIGN_CONVENTION, TITLE
 from models.crosscal.acquisition import crosscal_guide
 from models.crosscal.export import polygon_deviation_rows, polygon_deviations
 from models.crosscal.figures import encoder_figures
@@ -367,7 +367,8 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
         "residual_rms_arcsec": float(np.sqrt(np.mean(s.residuals_arcsec**2))),
         "outlier_rows": [result.readings.row(i) for i in result.outliers],
         "nominal_encoder_steps": result.readings.nominal_encoder,
-        "sign_convention": SIGN_CONVENTION,
+        "sign_convention": SIGN_CONVENTION,  # the encoder's error
+        "polygon_deviation_sign_convention": POLYGON_SIGN_CONVENTION,
         "warnings": result.warnings,
     }
     # not separable (E or d not determined): what the design does see, labelled, never the result

@@ -29,7 +29,7 @@ from models.certificate.builder import (
 )
 from models.certificate.document import CertificateDocument, Table
 from models.certificate.metadata import CertificateMetadata, MetadataError
-from models.crosscal import KEY, TITLE
+from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
 from models.messages import QT_TR_NOOP, joined, message
@@ -395,6 +395,7 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
                        message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
         more_rows = []
         plots = [polygon_figure(result)]
+    sign = {} if item == "encoder" else {"sign_convention": POLYGON_SIGN_CONVENTION_TEXT}
     statements = (
         message(QT_TR_NOOP("No calibrated reference value enters these results: the polygon and "
                            "the encoder are calibrated against each other by the closure of the "
@@ -421,4 +422,4 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         tolerance=metadata.tolerance_in("arcsec"),
         plots=[*plots, residual_figure(result), closure_figure(result)],
         warnings=result.warnings, point_columns=point_columns,
-        statements=statements + budget_remarks(result))
+        statements=statements + budget_remarks(result), **sign)

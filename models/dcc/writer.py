@@ -291,7 +291,7 @@ def _statements(b: _Builder, admin) -> None:
     doc = b.document
     sts = etree.SubElement(admin, D + "statements")
     if doc.is_test_report:
-        why = doc.traceability_gaps or doc.untraceable
+        why = [*doc.untraceable, *doc.traceability_gaps]  # as the PDF's statement names them
         _statement(b, sts, v.REFTYPE_NOT_A_CALIBRATION,
                    "the document is a test report, not a calibration certificate",
                    QT_TR_NOOP("This document is a test report, not a calibration certificate: "
@@ -306,16 +306,20 @@ def _statements(b: _Builder, admin) -> None:
                "statement of conformity with its decision rule and the probability of false "
                "acceptance", c.statement, c.rule, c.quantity, c.zones,
                conformity=_CONFORMITY.get(c.verdict, ""))
-    trace = list(doc.traceability_gaps) or [doc.traceability_basis or QT_TR_NOOP(
-        "The results are traceable to the SI through the reference standards listed with "
-        "their calibration certificates (see measuringEquipments).")]
+    # why traceability is not established (an input with no stated U, U incomplete, a
+    # standard missing), never "traceable" beside traceable=false
+    trace = [*doc.untraceable, *doc.traceability_gaps] or [
+        doc.traceability_basis or QT_TR_NOOP(
+            "The results are traceable to the SI through the reference standards listed with "
+            "their calibration certificates (see measuringEquipments).")]
     _statement(b, sts, v.REFTYPE_TRACEABILITY, "metrological traceability", *trace,
-               traceable="false" if doc.is_test_report else "true")
+               traceable="false" if doc.is_test_report or doc.untraceable else "true")
     _statement(b, sts, v.REFTYPE_MEASURAND, "the measurand's definition and sign convention",
                doc.method, doc.sign_convention, convention=_say(doc.sign_convention, "en"),
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
-    _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate", VALIDITY)
-    for extra in (*doc.statements, *doc.warnings):
+    _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate",
+               VALIDITY_REPORT if doc.is_test_report else VALIDITY)
+    for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
 
@@ -325,6 +329,11 @@ VALIDITY = QT_TR_NOOP("The results relate only to the item calibrated, at the ti
                       "the conditions of the calibration. This digital certificate and the PDF "
                       "embedded in it are one certificate; the embedded PDF is its "
                       "human-readable form.")
+#: a test report's (notACalibration): the item tested, one report (ISO/IEC 17025 7.8.2.1 a))
+VALIDITY_REPORT = QT_TR_NOOP("The results relate only to the item tested, at the time and under "
+                             "the conditions of the test. This digital document and the PDF "
+                             "embedded in it are one test report; the embedded PDF is its "
+                             "human-readable form.")
 
 
 def _parse(cell: str) -> tuple[float, str] | None:
@@ -792,7 +801,9 @@ def build_dcc(document: CertificateDocument, pdf_bytes: bytes, pdf_name: str,
                          face_deviations_column, reference_face_deviations, column_notes or {})
     pdf = etree.SubElement(root, D + "document", refType=b.ref(
         v.REFTYPE_ISSUED_PDF, "the issued PDF certificate, byte for byte"))
-    b.text(pdf, "name", message(QT_TR_NOOP("Certificate {number} (PDF)"),
+    b.text(pdf, "name", message(QT_TR_NOOP("Test report {number} (PDF)")
+                                if document.is_test_report else
+                                QT_TR_NOOP("Certificate {number} (PDF)"),
                                 number=meta.certificate_number))
     b.leaf(pdf, "fileName", pdf_name)
     b.leaf(pdf, "mimeType", "application/pdf")

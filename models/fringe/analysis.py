@@ -754,6 +754,11 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
     def certificate(self, result, metadata, source_name="", settings=None):
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
+    def inputs_not_stated(self, result, metadata):
+        from models.fringe.report import not_stated
+
+        return not_stated(result, metadata)
+
     def decided_errors(self, result, metadata):
         # half range: the fitted model's continuous as-found error over the whole period
         if metadata.decision_quantity == "half_range":

@@ -153,6 +153,26 @@ _STATED_NAMES = ("Phase reference", "ADC quantisation", "ADC offset", "ADC gain 
                  "ADC linearity")
 
 
+def _phase_reference_stated(result, metadata: CertificateMetadata) -> bool:
+    """A U for the phase reference: in the settings, or a θ reference listed with its U."""
+    return bool((result.inputs or {}).get("phase_reference_u")) or (
+        result.phase_source == "theta_column"
+        and any(s.uncertainty is not None for s in metadata.standards))
+
+
+def not_stated(result, metadata: CertificateMetadata) -> list[str]:
+    """The budget's inputs whose uncertainty is not stated, so not in U (their names in the
+    budget, untranslated): the phase reference and each figure of the ADC. The certificate
+    names them under the budget and the JSON lists them (uncertainty_inputs_not_stated):
+    the traceability statement's reason said so, the budget and the JSON did not."""
+    inputs = result.inputs or {}
+    out = [] if _phase_reference_stated(result, metadata) else [QT_TR_NOOP("Phase reference")]
+    adc = {"adc_lsb_mv": QT_TR_NOOP("ADC quantisation"), "adc_offset_u_mv": QT_TR_NOOP("ADC offset"),
+           "adc_gain_u_pct": QT_TR_NOOP("ADC gain ratio"),
+           "adc_linearity_mv": QT_TR_NOOP("ADC linearity")}
+    return out + [name for key, name in adc.items() if not inputs.get(key)]
+
+
 def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
     """The inputs of the error that have no stated uncertainty: the result is not traceable
     through them, and no statement of conformity rests on it."""
@@ -514,6 +534,7 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
                               fringe_plots.first_period_with_uncertainty(result, shown_u, per),
                               drawn["residuals"]),
         warnings=result.warnings, unit=sym, untraceable=tuple(untraceable),
+        not_in_u=tuple(not_stated(result, metadata)),
         stated_inputs=tuple(c.name for c in budget.components
                             if c.name in _STATED_NAMES),
         statements=(table_statement, *advice) + (

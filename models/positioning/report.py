@@ -469,11 +469,8 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
         "the reference's datum, that is for the deviation itself; the theodolite and the "
         "autocollimator state theirs per reading, so their errors, differences of two readings, "
         "take √2."))
-    missing = not_stated(result)
-    if missing:
-        statements.append(message(QT_TR_NOOP(
-            "Inputs not stated, so not in U: {inputs}. U covers only the inputs in the budget."),
-            inputs=listed(message(name) for name in missing)))
+    # the inputs not stated are named under the budget (CertificateDocument.not_in_u, from
+    # the decision's not_stated)
     if not result.minimum_runs_met:
         statements.append(message(QT_TR_NOOP("ISO 230-2 asks for at least {n} runs in each "
                                              "direction at every target; this test has fewer "

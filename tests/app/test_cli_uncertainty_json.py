@@ -79,10 +79,14 @@ def test_every_error_array_has_its_u_and_k(kind, capsys, samples_dir, tmp_path):
         assert np.all((factors >= 1.9) & (factors < 15)), path
         assert np.all(u[~zero] > 0)
     # U's inputs not stated, by name (the positioning sample states no misalignment,
-    # resolution or temperature; the others' details state every input they use)
-    assert data["uncertainty_inputs_not_stated"] == (
-        ["Misalignment of the reference", "Resolution of the reference", "Temperature"]
-        if kind == "positioning" else [])
+    # resolution or temperature; the fringe's neither its phase reference's U nor the ADC's
+    # figures (review 61, F6: the list was empty); the others' details state every input
+    # they use)
+    assert data["uncertainty_inputs_not_stated"] == {
+        "positioning": ["Misalignment of the reference", "Resolution of the reference",
+                        "Temperature"],
+        "fringe": ["Phase reference", "ADC quantisation", "ADC offset", "ADC gain ratio",
+                   "ADC linearity"]}.get(kind, [])
     # the existing keys keep their meaning: cross-calibration's U arrays stay, equal
     if kind == "crosscal":
         assert data["encoder_error_U_arcsec"] == pytest.approx(

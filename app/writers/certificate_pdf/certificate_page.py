@@ -16,13 +16,21 @@ class _CertificatePdf(ReportPdf):
     def __init__(self, document: CertificateDocument) -> None:
         meta = document.metadata
         say = _say(meta.language)
+        # a test report speaks of itself as a report throughout (ISO/IEC 17025 7.8.2.1 a))
+        report = document.is_test_report
         super().__init__(
             (meta.lab_name or say(QT_TR_NOOP("Laboratory not stated")),
-             say(message(QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
-                 if meta.certificate_number else message(QT_TR_NOOP("Certificate no number")))),
-            (say(QT_TR_NOOP("This certificate shall not be reproduced except in full without "
+             say(message(QT_TR_NOOP("Test report {number}") if report else
+                         QT_TR_NOOP("Certificate {number}"), number=meta.certificate_number)
+                 if meta.certificate_number else
+                 message(QT_TR_NOOP("Test report no number") if report else
+                         QT_TR_NOOP("Certificate no number")))),
+            (say(QT_TR_NOOP("This report shall not be reproduced except in full without the "
+                            "laboratory's written approval.") if report else
+                 QT_TR_NOOP("This certificate shall not be reproduced except in full without "
                             "the laboratory's written approval.")),
-             say(message(QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
+             say(message(QT_TR_NOOP("Test report {number} · AngleBench {version}") if report else
+                         QT_TR_NOOP("Certificate {number} · AngleBench {version}"),
                          number=meta.certificate_number or "—",
                          version=software_identity().short))),
             cjk=_needs_fallback(document) or document.metadata.language != "en",
@@ -47,5 +55,8 @@ class _CertificatePdf(ReportPdf):
         head = self.document.register_head
         if head:
             self.set_xy(self.l_margin, self.h - 6)
-            self.cell(self.epw, 3.5, self.say(message(QT_TR_NOOP(
-                "Register chain head before this certificate: {head}…"), head=head[:16])))
+            self.cell(self.epw, 3.5, self.say(message(
+                QT_TR_NOOP("Register chain head before this report: {head}…")
+                if self.document.is_test_report else
+                QT_TR_NOOP("Register chain head before this certificate: {head}…"),
+                head=head[:16])))

@@ -17,16 +17,23 @@ def draw_end(pdf: _CertificatePdf) -> None:
     meta = document.metadata
     _signatures(pdf)
     pdf.set_font(FONT, "", 8)
+    report = document.is_test_report  # a report, never "certificate" (ISO/IEC 17025 7.8.2.1 a))
     with pdf.local_context(text_color=GREY):
-        pdf.multi_cell(0, 5, pdf.say(message(QT_TR_NOOP("— End of certificate {number} —"),
-                                             number=meta.certificate_number or "—")),
+        pdf.multi_cell(0, 5, pdf.say(message(
+            QT_TR_NOOP("— End of test report {number} —") if report else
+            QT_TR_NOOP("— End of certificate {number} —"),
+            number=meta.certificate_number or "—")),
                        align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
         if document.register_head:
             pdf.set_font(FONT, "", 7)
-            pdf.multi_cell(0, 4, pdf.say(message(QT_TR_NOOP(
-                "The laboratory's certificate register, before this certificate, ended at "
-                "chain head {head}; 'anglebench register verify --head' proves the register "
-                "still holds that history."), head=document.register_head)),
+            pdf.multi_cell(0, 4, pdf.say(message(
+                QT_TR_NOOP("The laboratory's certificate register, before this report, ended at "
+                           "chain head {head}; 'anglebench register verify --head' proves the "
+                           "register still holds that history.") if report else
+                QT_TR_NOOP("The laboratory's certificate register, before this certificate, "
+                           "ended at chain head {head}; 'anglebench register verify --head' "
+                           "proves the register still holds that history."),
+                head=document.register_head)),
                 align="C", new_x=XPos.LMARGIN, new_y=YPos.NEXT)
 
 
@@ -36,9 +43,13 @@ def _signatures(pdf: _CertificatePdf) -> None:
         pdf.add_page()
     pdf.ln(8)
     y = pdf.get_y()
-    signers = [(QT_TR_NOOP("Operator"), meta.operator), (QT_TR_NOOP("Approved by"), meta.approver)]
+    # a test report's operator tested (检测员), never "calibrated" (校准员: "Operator" in Chinese)
+    report = pdf.document.is_test_report
+    signers = [(QT_TR_NOOP("Tested by") if report else QT_TR_NOOP("Operator"), meta.operator),
+               (QT_TR_NOOP("Approved by"), meta.approver)]
     if meta.checker_role:  # the lab's template asks for a checker (核验员, JJF 1071)
-        signers = [(QT_TR_NOOP("Calibrated by"), meta.operator),
+        signers = [(QT_TR_NOOP("Tested by") if report else QT_TR_NOOP("Calibrated by"),
+                    meta.operator),
                    (QT_TR_NOOP("Checked by"), meta.checker),
                    (QT_TR_NOOP("Approved by"), meta.approver)]
     half = pdf.epw / len(signers)

@@ -55,6 +55,9 @@ def draw_statements(pdf: _CertificatePdf, document: CertificateDocument) -> None
     meta = document.metadata
     pdf.heading(label(document, "Statements"))
     _items(pdf, document, (*document.statements,
+                           QT_TR_NOOP("The results relate only to the item tested, as "
+                                      "received, under the conditions stated.")
+                           if document.is_test_report else
                            QT_TR_NOOP("The results relate only to the item calibrated, as "
                                       "received, under the conditions stated.")))
     if document.warnings or meta.notes:

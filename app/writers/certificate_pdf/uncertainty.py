@@ -46,3 +46,5 @@ def draw_uncertainty(pdf: _CertificatePdf, document: CertificateDocument) -> Non
              for row, c in zip(budget.rows, document.budget.components, strict=False) if c.note]
     for note in notes:
         pdf.paragraph(note, 7.5, GREY)
+    if document.not_in_u_statement:  # what U lacks, with the budget (GUM 7.2.7)
+        pdf.paragraph(document.not_in_u_statement, 8.5)

@@ -24,17 +24,29 @@ CHINESE = {
     "Figures of the axis": "轴线定位指标", "Test": "检测", "Sign convention": "符号约定",
     "Model": "型号", "Place of calibration": "校准地点",
     "Instrument output": "仪器原始输出", "Edited after capture": "采集后修改",
+    "Report number": "报告编号", "Date of test": "检测日期", "Place of test": "检测地点",
 }
+
+#: a test report's own words for the fields a calibration certificate names after the
+#: calibration (ISO/IEC 17025 7.8.2.1 a): the document identifies itself as what it is)
+REPORT_WORDS = {"Certificate number": "Report number", "Date of calibration": "Date of test",
+                "Place of calibration": "Place of test"}
+#: and in Chinese, where the certificate's term says 校准 (JJF 1001-2011: 检测 for a test)
+REPORT_CHINESE = {"Laboratory": "检测机构", "Item under test": "被检测对象", "Method": "检测方法"}
 
 
 def label(document: CertificateDocument, english: str, separator: str = " ") -> str:
     """``english``, with its Chinese in front on a bilingual certificate, or in Chinese
     alone on a Chinese one."""
     language = document.metadata.language
-    if language == "zh+en" and english in CHINESE:
-        return f"{CHINESE[english]}{separator}{english}"
+    chinese_words = CHINESE
+    if document.is_test_report:
+        english = REPORT_WORDS.get(english, english)
+        chinese_words = {**CHINESE, **REPORT_CHINESE}
+    if language == "zh+en" and english in chinese_words:
+        return f"{chinese_words[english]}{separator}{english}"
     if language == "zh":
-        return CHINESE.get(english) or _say("zh")(english)
+        return chinese_words.get(english) or _say("zh")(english)
     return english
 
 

@@ -96,7 +96,11 @@ def test_fringe_as_left_only_with_the_loaded_tables_checksum():
 # 5. the statements ------------------------------------------------------------------------
 #: the inputs a workbench's sample needs for a traceable certificate with a conformity
 #: statement, beside META (none for a workbench not listed)
-STATEMENT_SETTINGS = {"fringe": {"samples_per_period": 64, **FRINGE_INPUTS}}
+STATEMENT_SETTINGS = {"fringe": {"samples_per_period": 64, **FRINGE_INPUTS},
+                      # every input of its U stated: else U is incomplete, and a result
+                      # whose U is incomplete is not traceable (review 61, F13)
+                      "positioning": {"misalignment_u": 0.2, "reference_resolution": 0.1,
+                                      "temperature_u": 0.3}}
 STATEMENT_TOLERANCE = {"polygon": None}  # the grade's accuracy is the polygon's tolerance
 #: issue 39: every standard that carries the measurand listed with its certificate and U,
 #: beside META's autocollimator (the polygon's; the fringe's phase reference and ADC)
@@ -131,6 +135,9 @@ def test_17025_statements_on_every_certificate(key):
     if key == "positioning":
         assert "follows ISO 230-2:2014" in flat
         assert "x = actual position − target (ISO 230-2), i.e. reference − indicated" in flat
+    elif key == "crosscal":  # a polygon's face deviations (review 61, F3)
+        assert "(actual − nominal), i.e. reference − indicated" in flat
+        assert "error = indicated − reference" not in flat
     else:
         assert "error = indicated − reference" in flat
     assert "cross-checked by a Monte Carlo" not in flat

@@ -355,8 +355,11 @@ def test_positioning_states_its_inputs_and_the_test_conditions():
     statements = " ".join(str(s) for s in document.statements)
     assert "Inputs not stated" not in statements and "sensitivity 1" in statements
     bare = kind.certificate_document(_sample("positioning")[1], META)
+    assert not document.not_in_u_statement
+    # said once, under the budget (CertificateDocument.not_in_u), not among the statements
     assert "Inputs not stated, so not in U: Misalignment of the reference, Resolution of the " \
-           "reference, Temperature" in " ".join(str(s) for s in bare.statements)
+           "reference, Temperature" in str(bare.not_in_u_statement)
+    assert "Inputs not stated" not in " ".join(str(s) for s in bare.statements)
 
 
 # 20. advice marked as opinion ---------------------------------------------------------------
