@@ -51,6 +51,9 @@ class Exact(str):
         cell.exact = exact
         return cell
 
+    def __getnewargs__(self) -> tuple[str, float | tuple[float, float]]:  # copied, pickled
+        return str(self), self.exact
+
 
 @dataclass(frozen=True)
 class Table:

@@ -209,3 +209,14 @@ def test_the_results_table_adds_up_as_printed(key, raw, corrected, columns):
     if key == "polygon":  # position 2: raw −0.27, corrected −0.16: the correction +0.11
         assert (table.rows[1][col[columns[0]]], table.rows[1][col[columns[1]]],
                 table.rows[1][col[columns[2]]]) == ("-0.27", "+0.11", "-0.16")
+
+
+def test_a_cell_printed_rounded_keeps_its_full_figure_when_copied():
+    import copy
+    import pickle
+
+    from models.certificate.document import Exact
+
+    cell = Exact("16.2\" … 26.4\"", (16.2404765773, 26.4495967468))
+    for again in (pickle.loads(pickle.dumps(cell)), copy.deepcopy(cell), copy.copy(cell)):
+        assert again == "16.2\" … 26.4\"" and again.exact == cell.exact
