@@ -34,7 +34,7 @@ from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import decide_conformity
 
 __all__ = ["Column", "Decision", "PointTable", "Statistics", "build_certificate",
-           "figure_column", "text_column", "uncertainty_column"]
+           "difference_column", "figure_column", "text_column", "uncertainty_column"]
 
 
 @dataclass(frozen=True)
@@ -57,6 +57,27 @@ def figure_column(header: str, values, expanded) -> Column:
     whose U is zero (a reference point) or not finite to the table's reference decimal."""
     pairs = list(zip(values, expanded, strict=True))
     return Column(header, lambda shown: [rounded_cells((v,), u, shown)[0][0] for v, u in pairs])
+
+
+def difference_column(header: str, values, less, expanded, less_expanded=None) -> Column:
+    """The column of ``values`` − ``less`` (a correction: the corrected less the raw error;
+    a reversal x̄↑ − x̄↓) as the table prints them: each point's two figures rounded to the
+    decimal of its U (``less_expanded``: the second's own, if not the same), as
+    :func:`figure_column` prints them, and this one their difference, to the coarser of the
+    two decimals, so that the table's "corrected = raw + correction" adds up as printed
+    (GUM 7.2.6: both results keep their own rounding; the difference printed is within one
+    in its last digit of its own)."""
+    less_expanded = expanded if less_expanded is None else less_expanded
+    rows = list(zip(values, less, expanded, less_expanded, strict=True))
+
+    def cells(shown: int) -> list[str]:
+        out = []
+        for v, w, u, uw in rows:
+            a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
+            d = min(len(a.partition(".")[2]), len(b.partition(".")[2]))
+            out.append(format(round(float(a) - float(b), d) + 0.0, f"+.{d}f"))  # no "-0.0"
+        return out
+    return Column(header, cells)
 
 
 def uncertainty_column(header: str, expanded) -> Column:

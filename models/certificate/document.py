@@ -33,9 +33,26 @@ from models.uncertainty.conformity import (
     uncertainty_decimals,
 )
 
-__all__ = ["CertificateDocument", "decision_rows", "PlotFigure", "PlotSeries", "Table", "budget_table",
-           "format_uncertain", "gum_pair", "rounded_cells", "table_decimals", "opinion",
+__all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
+           "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
+           "table_decimals", "opinion",
            "reference_standard_components", "resolution_component"]
+
+
+class Exact(str):
+    """A cell as printed, rounded as GUM 7.2.6 asks ("22.4″", "16.2″ … 26.4″"), that keeps
+    its figures at full precision (``exact``: a number, or an interval's two ends) for the
+    machine-readable outputs: the DCC states these, not the digits printed."""
+
+    exact: float | tuple[float, float]
+
+    def __new__(cls, text: str, exact: float | tuple[float, float]) -> Exact:
+        cell = super().__new__(cls, text)
+        cell.exact = exact
+        return cell
+
+    def __getnewargs__(self) -> tuple[str, float | tuple[float, float]]:  # copied, pickled
+        return str(self), self.exact
 
 
 @dataclass(frozen=True)
@@ -309,6 +326,19 @@ def format_uncertain(value: float, expanded: float, unit: str, digits: int = 2) 
     if decimals is None:
         return f"{value:.{digits}f}{unit}"
     return f"{value:.{decimals}f}{unit} ± {expanded:.{decimals}f}{unit}"
+
+
+def range_cells(low: float, high: float, expanded: float, unit: str = "\"",
+                fallback: int = 2) -> tuple[str, str, int]:
+    """A curve's range as the statistics print it, ("-1.6″ … +1.3″", "2.9″", decimals): its
+    ends to the decimal of ``expanded`` (the curve's largest U, two significant digits: GUM
+    7.2.6; ``fallback`` decimals where U is not a positive number) and the peak-to-peak the
+    difference of the ends as printed, so that it adds up as printed."""
+    d = significant_decimals(expanded)
+    d = fallback if d is None else d
+    a, b = f"{low:+.{d}f}", f"{high:+.{d}f}"
+    ptp = round(float(b) - float(a), d) + 0.0
+    return f"{a}{unit} … {b}{unit}", f"{ptp:.{d}f}{unit}", d
 
 
 def table_decimals(expanded, fallback: int = 2) -> int:

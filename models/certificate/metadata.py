@@ -175,6 +175,10 @@ class ReferenceStandard:
     applies_to: str = "reading"
     uncertainty_unit: str = "arcsec"  # a key of models.quantity.UNITS
     due_date: str = ""  # YYYY-MM-DD: when the standard's calibration is due (e.g. from its DCC)
+    # the k its certificate states U with, where the figure was read from its DCC (basis
+    # "u": U/k, exact; "U95": U with k = 2): the standards table prints U with this k, as
+    # read, to two significant digits (GUM 7.2.6), not the figure's every digit
+    coverage_factor: float | None = None
 
     def uncertainty_in(self, unit: str, name: str = "standards") -> float | None:
         """The stated uncertainty as a number in ``unit`` (the errors'); MetadataError when
@@ -229,10 +233,15 @@ class ReferenceStandard:
                 QT_TR_NOOP("certificate field '{name}.applies_to' must be one of {join}, not "
                            "'{applies_to}'"),
                 name=name, join=', '.join(APPLIES_TO), applies_to=applies_to))
+        k = _optional_number(data.get("coverage_factor"), f"{name}.coverage_factor")
+        if k is not None and k <= 0:
+            raise MetadataError(message(
+                QT_TR_NOOP("certificate field '{field_name}' must be a number above 0"),
+                field_name=f"{name}.coverage_factor"))
         return cls(clean_text(data.get("description"), f"{name}.description"),
                    clean_text(data.get("serial"), f"{name}.serial"),
                    clean_text(data.get("certificate_no"), f"{name}.certificate_no"), u, basis,
-                   applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"))
+                   applies_to, unit_key, _date(data.get("due_date"), f"{name}.due_date"), k)
 
 
 #: keys written before their figures had a unit (project schema 1) → the keys now
@@ -449,7 +458,10 @@ class CertificateMetadata:
 
     def to_dict(self) -> dict[str, Any]:
         out = asdict(self)
-        out["standards"] = [asdict(s) for s in self.standards]
+        # a standard's k only where one was read (the files of standards typed stay as were)
+        out["standards"] = [{k: v for k, v in asdict(s).items()
+                             if k != "coverage_factor" or v is not None}
+                            for s in self.standards]
         return out
 
     def lab_defaults(self) -> dict[str, Any]:

@@ -27,7 +27,7 @@ from models.certificate.builder import (
     text_column,
     uncertainty_column,
 )
-from models.certificate.document import CertificateDocument, Table
+from models.certificate.document import CertificateDocument, Table, range_cells
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
 from models.crosscal.figures import encoder_figures
@@ -352,8 +352,8 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         names = [message(point, k=k) for k in range(n)]
         what = QT_TR_NOOP("encoder error")
         figures = encoder_figures(result)
-        first_rows = [(QT_TR_NOOP("Error"), f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
-                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        span, ptp, _ = range_cells(np.min(values), np.max(values), budget.max_expanded, fallback=3)
+        first_rows = [(QT_TR_NOOP("Error"), span, message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=ptp))]
         more_rows = [(QT_TR_NOOP("JJF 1115 division error"),
                       f"{figures['division_error_jjf1115']:.3f}\"", "")]
         if math.isfinite(figures["repeatability_jjf1115"]):
@@ -390,9 +390,9 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         point = QT_TR_NOOP("face {k}")
         names = [message(point, k=k + 1) for k in range(n)]
         what = QT_TR_NOOP("face deviation")
-        first_rows = [(QT_TR_NOOP("Deviation"),
-                       f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\"",
-                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{np.ptp(values):.3f}\""))]
+        span, ptp, _ = range_cells(np.min(values), np.max(values), budget.max_expanded, fallback=3)
+        first_rows = [(QT_TR_NOOP("Deviation"), span,
+                       message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=ptp))]
         more_rows = []
         plots = [polygon_figure(result)]
     sign = {} if item == "encoder" else {"sign_convention": POLYGON_SIGN_CONVENTION_TEXT}

@@ -534,6 +534,7 @@ def polygon_standard(reference: PolygonReference) -> dict:
         standard.update(uncertainty=reference.largest_u, basis="U95")
     else:
         standard.update(uncertainty=reference.largest_u / k, basis="u")
+    standard["coverage_factor"] = k  # printed as read: U with its k
     return standard
 
 

@@ -343,7 +343,9 @@ def _parse(cell: str) -> tuple[float, str] | None:
     if not m:
         return None
     unit = _SYMBOLS.get(m.group(2).strip())
-    return (float(m.group(1)), unit) if unit is not None else None
+    exact = getattr(cell, "exact", None)  # a figure printed rounded: stated at full precision
+    value = float(exact) if isinstance(exact, int | float) else float(m.group(1))
+    return (value, unit) if unit is not None else None
 
 
 #: the one description of refType anglebench_coverageProbability (an interval's, a U's)
@@ -404,6 +406,9 @@ def _table_result(b: _Builder, results, table: Table, ref: str, description: str
             u = (u[0] * _ARCSEC[u[1]] / _ARCSEC[figure[1]], figure[1])
         span = _INTERVAL.match(rest[0].replace("−", "-")) if rest else None
         ends = (_parse(span.group(1)), _parse(span.group(2))) if span else (None, None)
+        exact = getattr(rest[0], "exact", None) if rest else None  # the ends unrounded
+        if isinstance(exact, tuple) and ends[0] and ends[1]:
+            ends = ((float(exact[0]), ends[0][1]), (float(exact[1]), ends[1][1]))
         share = _PERCENT.match(rest[1].strip()) if len(rest) > 1 else None
         if figure and ends[0] and ends[1] and share and ends[0][1] == ends[1][1] == figure[1]:
             _interval(b, data, label, figure[0], figure[1], ends[0][0], ends[1][0],

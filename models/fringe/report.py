@@ -33,6 +33,7 @@ from models.certificate.builder import (
     PointTable,
     Statistics,
     build_certificate,
+    difference_column,
     figure_column,
     text_column,
     uncertainty_column,
@@ -449,8 +450,8 @@ def fringe_certificate(result, metadata: CertificateMetadata, source_name: str =
         text_column(QT_TR_NOOP("Phase θ (°)"),
                     [f"{p:.2f}" for p in np.degrees(result.theta_rad[idx])]),
         figure_column(message(QT_TR_NOOP("As found ({unit})"), unit=u_unit), raw[idx], big_u[idx]),
-        figure_column(message(QT_TR_NOOP("Correction ({unit})"), unit=u_unit), correction[idx],
-                      big_u[idx]),
+        difference_column(message(QT_TR_NOOP("Correction ({unit})"), unit=u_unit), comp[idx],
+                          raw[idx], big_u[idx]),
         figure_column(message(QT_TR_NOOP("Compensated ({unit})"), unit=u_unit), comp[idx],
                       big_u[idx]),
         uncertainty_column(message(QT_TR_NOOP("U as left ({unit})") if as_left else

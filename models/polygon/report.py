@@ -64,6 +64,7 @@ from models.certificate.builder import (
     PointTable,
     Statistics,
     build_certificate,
+    difference_column,
     figure_column,
     text_column,
     uncertainty_column,
@@ -72,6 +73,7 @@ from models.certificate.document import (
     CertificateDocument,
     Table,
     gum_pair,
+    range_cells,
     reference_standard_components,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
@@ -868,7 +870,8 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
         text_column(QT_TR_NOOP("Position"), [f"{p}" for p in range(1, result.faces + 1)]),
         text_column(QT_TR_NOOP("Nominal (°)"), [f"{t:.3f}" for t in result.theta_deg]),
         figure_column(QT_TR_NOOP("Raw error (\")"), result.mean_error_arcsec, big_u),
-        figure_column(QT_TR_NOOP("Correction (\")"), correction, big_u),
+        difference_column(QT_TR_NOOP("Correction (\")"), result.mean_corrected_arcsec,
+                          result.mean_error_arcsec, big_u),
         figure_column(QT_TR_NOOP("Corrected error (\")"), result.mean_corrected_arcsec, big_u),
         uncertainty_column("U (\")", big_u)),
         message(QT_TR_NOOP("Error = indicated − reference, from face {face} of set 1. "
@@ -899,11 +902,14 @@ def polygon_certificate(result: PolygonResult, metadata: CertificateMetadata,
                                              "− indicated, forward minus reverse; = mean of "
                                              "ē↓ − ē↑ of the errors)"),
                                   b=f"{-result.mean_reversal_arcsec:+.2f}\"")))
+    # to the decimal of the results table's U (GUM 7.2.6), the peak-to-peak as printed
+    raw_range, raw_ptp, _ = range_cells(raw.min, raw.max, budget.max_expanded)
+    corrected_range, corrected_ptp, _ = range_cells(st.min, st.max, budget.max_expanded)
     statistics = Statistics([
-        (QT_TR_NOOP("Raw error"), f"{raw.min:+.2f}\" … {raw.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{raw.peak_to_peak:.2f}\"")),
-        (QT_TR_NOOP("Corrected error"), f"{st.min:+.2f}\" … {st.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{st.peak_to_peak:.2f}\"")),
+        (QT_TR_NOOP("Raw error"), raw_range,
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=raw_ptp)),
+        (QT_TR_NOOP("Corrected error"), corrected_range,
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=corrected_ptp)),
     ], QT_TR_NOOP("positions"), after=more_rows)
     decision = Decision(
         result.mean_corrected_arcsec,

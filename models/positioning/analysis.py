@@ -37,6 +37,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.resolution import readings_step
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
+from models.uncertainty.conformity import interval_decimals
 from models.uncertainty.figure_intervals import FIGURE_VALUE_NOTE, figure_objects
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
@@ -552,16 +553,19 @@ def summary(result: PositioningResult) -> str:
         message(QT_TR_NOOP("   *** fewer than 5 runs: flagged ***"))))]
     keys = ("A", "R", "B", "B_mean", "E", "M") if result.bidirectional else tuple(
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
-    out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym))
-    out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym))
     intervals = figure_uncertainties(result)
+    # each figure to the decimal of its interval's half-width (GUM 7.2.6), as the certificate
+    decimals = {k: interval_decimals(iv.low, iv.high) for k, iv in (intervals or {}).items()}
+    out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym, decimals))
+    out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym, decimals))
     if intervals:
         shown = [k for k in (*keys, *VDI_KEYS) if k in intervals]
         parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %): "),
                                p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
         for i, key in enumerate(shown):
             iv = intervals[key]
-            parts += [", " if i else "", f"{key} {iv.low:.3f} … {iv.high:.3f}{sym}"]
+            d = decimals[key]
+            parts += [", " if i else "", f"{key} {iv.low:.{d}f} … {iv.high:.{d}f}{sym}"]
             if iv.probability < DEFAULT_COVERAGE_PROBABILITY:
                 parts.append(f" ({100 * iv.probability:.1f} %)")
         out.append(joined(parts))
@@ -574,12 +578,13 @@ def summary(result: PositioningResult) -> str:
     return lines(out)
 
 
-def _figures_line(prefix: str, figures, symbol: str):
-    """``prefix`` then "A = 3.20", R = …": a figure the readings could not determine says
-    so in the reader's language."""
+def _figures_line(prefix: str, figures, symbol: str, decimals: dict[str, int] | None = None):
+    """``prefix`` then "A = 3.20", R = …" (each to its ``decimals``, else 0.001): a figure
+    the readings could not determine says so in the reader's language."""
     parts: list = [prefix]
     for i, (key, value) in enumerate(figures):
-        parts += [", " if i else "", f"{key} = ", figure_text(value, symbol)]
+        parts += [", " if i else "", f"{key} = ", figure_text(value, symbol,
+                                                              (decimals or {}).get(key, 3))]
     return joined(parts)
 
 

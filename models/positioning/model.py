@@ -64,12 +64,13 @@ STANDARDS: dict[str, str] = {
 }
 
 
-def figure_text(value: float | None, symbol: str) -> str:
-    """A figure as the summary and the certificate print it; "not evaluated" when the
-    readings could not determine it."""
+def figure_text(value: float | None, symbol: str, decimals: int = 3) -> str:
+    """A figure as the summary and the certificate print it (to ``decimals``: those of its
+    coverage interval where it has one, models.uncertainty.conformity.interval_decimals);
+    "not evaluated" when the readings could not determine it."""
     if value is None or not math.isfinite(value):
         return message(QT_TR_NOOP("not evaluated"))
-    return f"{value:.3f}{symbol}"
+    return f"{value:.{decimals}f}{symbol}"
 
 
 def infer_directions(targets: np.ndarray) -> np.ndarray:

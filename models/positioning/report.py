@@ -28,12 +28,14 @@ from models.certificate.builder import (
     PointTable,
     Statistics,
     build_certificate,
+    difference_column,
     figure_column,
     text_column,
     uncertainty_column,
 )
 from models.certificate.document import (
     CertificateDocument,
+    Exact,
     Table,
     opinion,
     reference_standard_components,
@@ -53,7 +55,7 @@ from models.positioning.model import (
 from models.positioning.plots import deviation_figure, reversal_figure
 from models.readings.resolution import step_counts
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
-from models.uncertainty.conformity import uncertainty_decimals
+from models.uncertainty.conformity import interval_decimals, significant_decimals
 from models.uncertainty.figure_intervals import (
     INTERVAL_TRIALS,
     FigureInterval,
@@ -328,12 +330,28 @@ def figure_uncertainties(result: PositioningResult, budget: UncertaintyBudget | 
     return cache[key]
 
 
-def _interval_cells(interval: FigureInterval | None, sym: str) -> tuple[str, str]:
-    """The interval "10.2″ … 12.0″" and its probability "95.45 %" (or "—" when none)."""
+def _deviation_text(s: float) -> str:
+    """A standard deviation s as the results table prints it: two significant digits, as
+    an uncertainty is (GUM 7.2.6); "—" where the readings give none."""
+    if s == 0:
+        return "0"  # readings alike (their display's step is then an input of U)
+    d = significant_decimals(s)
+    return "—" if d is None else f"{s:.{d}f}"
+
+
+def _figure_cells(value: float | None, interval: FigureInterval | None,
+                  sym: str) -> tuple[str, str, str]:
+    """The figure, its interval "10.2″ … 12.0″" and the interval's probability "95.45 %":
+    the figure and the interval's ends to the decimal of the interval's half-width, two
+    significant digits (GUM 7.2.6); without an interval the figure to 0.001 and "—"."""
     if interval is None:
-        return "—", ""
-    d = min(max(2, uncertainty_decimals(max(interval.high - interval.low, 1e-12) / 4.0)), 4)
-    return (f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
+        return figure_text(value, sym), "—", ""
+    d = interval_decimals(interval.low, interval.high)
+    text = figure_text(value, sym, d)
+    # the DCC states the figure and its interval at full precision (Exact), not as printed
+    return (Exact(text, float(value)) if isinstance(text, str) and value is not None else text,
+            Exact(f"{interval.low:.{d}f}{sym} … {interval.high:.{d}f}{sym}",
+                  (float(interval.low), float(interval.high))),
             f"{100.0 * interval.probability:.2f} %")
 
 
@@ -351,11 +369,10 @@ def _figure_rows(result: PositioningResult,
             continue
         name = f"{chinese} {key}" if gb else message("{key}: {name}", key=key,
                                                      name=message(english))
-        iso_rows.append((name, figure_text(f.get(key), sym),
-                         *_interval_cells(uncertainty.get(key), sym),
+        iso_rows.append((name, *_figure_cells(f.get(key), uncertainty.get(key), sym),
                          "GB/T 17421.2" if gb else "ISO 230-2"))
     vdi_rows = [(message("{key}: {name}", key=k, name=message(VDI_NAMES[k])),
-                 figure_text(v, sym), *_interval_cells(uncertainty.get(k), sym), "VDI/DGQ 3441")
+                 *_figure_cells(v, uncertainty.get(k), sym), "VDI/DGQ 3441")
                 for k, v in result.vdi.as_dict().items()]
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
@@ -386,11 +403,17 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     for name, mean, s, _ in points:
         arrow = "↑" if name == "up" else "↓"
         columns += [figure_column(f"x̄{arrow}", mean, u_by_dir[name]),
-                    text_column(f"s{arrow}", [f"{v:.3f}" for v in s]),
+                    text_column(f"s{arrow}", [_deviation_text(v) for v in s]),
                     uncertainty_column(f"U{arrow}", u_by_dir[name])]
     if result.bidirectional:
-        columns += [text_column("B_i", [f"{v:+.3f}" for v in result.iso.reversal]),
-                    text_column("M_i", [f"{v:+.3f}" for v in result.iso.bidirectional_mean])]
+        # B_i = x̄↑ − x̄↓ of the means as printed (it adds up as printed) and M_i = (x̄↑ +
+        # x̄↓)/2, each to the decimal of the coarser of the two means (GUM 7.2.6: no more
+        # digits than their U gives)
+        means = {name: mean for name, mean, *_ in points}
+        columns += [difference_column("B_i", means["up"], means["down"], u_by_dir["up"],
+                                      u_by_dir["down"]),
+                    figure_column("M_i", result.iso.bidirectional_mean,
+                                  np.fmax(u_by_dir["up"], u_by_dir["down"]))]
     results = PointTable(message(QT_TR_NOOP("Results per target ({unit}; target in {target})"),
                                  unit=sym.strip(), target=result.target_symbol.strip()),
                          columns,

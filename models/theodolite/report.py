@@ -73,6 +73,7 @@ from models.certificate.builder import (
     PointTable,
     Statistics,
     build_certificate,
+    difference_column,
     figure_column,
     text_column,
     uncertainty_column,
@@ -81,6 +82,7 @@ from models.certificate.document import (
     CertificateDocument,
     Table,
     gum_pair,
+    range_cells,
     resolution_component,
 )
 from models.certificate.metadata import CertificateMetadata
@@ -95,7 +97,7 @@ from models.uncertainty.budget import (
     coverage_factor,
     divisor_for_basis,
 )
-from models.uncertainty.conformity import expanded_text, uncertainty_decimals
+from models.uncertainty.conformity import expanded_text, interval_decimals
 from models.uncertainty.lab_scope import cmc_of
 from models.uncertainty.tilt_direction import NOT_IDENTIFIED
 
@@ -347,7 +349,7 @@ def _iso230_rows(result: TheodoliteResult, budget: UncertaintyBudget,
             rows.append((f"ISO 230-2 {key}", f"{v:.2f}\"", "" if said else message(
                 QT_TR_NOOP("no coverage interval: {reason}"), reason=message(withheld))))
             continue
-        d = min(max(2, uncertainty_decimals(max(iv.high - iv.low, 1e-12) / 4.0)), 4)
+        d = interval_decimals(iv.low, iv.high)  # the interval's half-width's (GUM 7.2.6)
         rows.append((f"ISO 230-2 {key}", f"{v:.{d}f}\"", message(
             QT_TR_NOOP("coverage interval {low} … {high} ({p} %)"),
             low=f"{iv.low:.{d}f}\"", high=f"{iv.high:.{d}f}\"",
@@ -451,17 +453,21 @@ def theodolite_certificate(result: TheodoliteResult, metadata: CertificateMetada
     results = PointTable(QT_TR_NOOP("Results per point (corrected = raw + correction)"), (
         text_column("θ (°)", [f"{t:.4f}" for t in result.theta_deg]),
         figure_column(QT_TR_NOOP("Raw error (\")"), result.raw_error_arcsec, big_u),
-        figure_column(QT_TR_NOOP("Correction (\")"), correction, big_u),
+        difference_column(QT_TR_NOOP("Correction (\")"), result.corrected_error_arcsec,
+                          result.raw_error_arcsec, big_u),
         figure_column(QT_TR_NOOP("Corrected error (\")"), result.corrected_error_arcsec, big_u),
         uncertainty_column("U (\")", big_u)))
     r, c = result.raw_stats, result.corrected_stats
+    # to the decimal of the results table's U (GUM 7.2.6), the peak-to-peak as printed
+    raw_range, raw_ptp, _ = range_cells(r.min, r.max, budget.max_expanded)
+    corrected_range, corrected_ptp, d = range_cells(c.min, c.max, budget.max_expanded)
     statistics = Statistics([
         (QT_TR_NOOP("Points"), f"{c.n}", ""),
-        (QT_TR_NOOP("Raw error"), f"{r.min:+.2f}\" … {r.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=f"{r.peak_to_peak:.2f}\"")),
-        (QT_TR_NOOP("Corrected error"), f"{c.min:+.2f}\" … {c.max:+.2f}\"",
-         message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=f"{c.peak_to_peak:.2f}\"",
-                 rms=f"{c.rms:.2f}\"")),
+        (QT_TR_NOOP("Raw error"), raw_range,
+         message(QT_TR_NOOP("peak-to-peak {ptp}"), ptp=raw_ptp)),
+        (QT_TR_NOOP("Corrected error"), corrected_range,
+         message(QT_TR_NOOP("peak-to-peak {ptp}, RMS {rms}"), ptp=corrected_ptp,
+                 rms=f"{c.rms:.{d}f}\"")),
     ], QT_TR_NOOP("points"), after=_iso230_rows(result, budget, metadata))
     return build_certificate(
         kind_key=KEY, kind_title=TITLE, method=METHOD, metadata=metadata,

@@ -54,6 +54,7 @@ __all__ = [
     "printed_interval",
     "probability_conforming",
     "significant_decimals",
+    "interval_decimals",
     "uncertainty_decimals",
 ]
 
@@ -119,6 +120,14 @@ def uncertainty_decimals(expanded: float) -> int:
     where U is not a positive number (nothing to round to)."""
     decimals = significant_decimals(expanded)
     return 2 if decimals is None else decimals
+
+
+def interval_decimals(low: float, high: float) -> int:
+    """The decimal a figure and the ends of its coverage interval [``low``, ``high``] are
+    printed to: that which shows the interval's half-width, (high − low)/2, its U, with at
+    most two significant digits (GUM 7.2.6, JJF 1059.1): a figure with an interval 4″ wide
+    to 0.1″, not 0.001″. Two decimals where the interval has no width."""
+    return uncertainty_decimals((high - low) / 2.0)
 
 
 #: what a U of zero at a reference point is printed as (never "0.00")
@@ -806,9 +815,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
     figures = dict(what=what, value=f"{x:.{d}f}{q}", low=f"{low:.{d}f}{q}",
                    high=f"{high:.{d}f}{q}", u=interval,
                    p=f"{100 * mc.probability:.2f}", sentence=sentence[verdict])
-    # as measured (positioning's E/2), or the noise's median excess below the digits shown
-    # (0.544 of a measured 0.545 is not "0.545 less 0.000")
-    if f"{measured:.{d}f}" == f"{x:.{d}f}" or float(f"{measured - x:.{d}f}") == 0.0:
+    # the noise's median excess as the printed figures give it, so that "value, the measured
+    # m less e" adds up as printed (0.45″ = 0.49″ − 0.04″, not "less 0.05″": the
+    # excess 0.0460″ of 0.4918″ − 0.4457″); none, as measured (positioning's E/2)
+    excess = round(float(f"{measured:.{d}f}") - float(f"{x:.{d}f}"), d) + 0.0
+    if excess == 0.0:
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value} as measured, coverage "
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%; noise can only widen a measured range, so the interval "
@@ -818,16 +829,17 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                                    "interval {low} … {high} (U = {u}, coverage probability {p} "
                                    "%). {sentence}"), **figures))
     else:
-        said = dict(measured=f"{measured:.{d}f}{q}", excess=f"{measured - x:.{d}f}{q}",
+        said = dict(measured=f"{measured:.{d}f}{q}", excess=f"{excess:.{d}f}{q}",
                     **figures)
-        # the interval is the true half range's: a measured one above it is what noise does
+        # the interval is the true half range's: a measured one above it is what noise does,
+        # said where the figures printed show it (1.44″ is not above 0.02″ … 1.44″)
         text = (message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "
                                    "{low} … {high} (U = {u}, coverage probability {p} %); the "
                                    "measured value lies above it, as noise only widens a "
                                    "measured range. {sentence}"), **said)
-                if measured > x + upper else
+                if float(f"{measured:.{d}f}") > round(high, d) else
                 message(QT_TR_NOOP("Half the peak-to-peak {what}: {value}, the measured {measured} "
                                    "less {excess}, the median amount by which noise widens a "
                                    "measured range. Coverage interval of the true half range "

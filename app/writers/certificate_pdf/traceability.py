@@ -6,9 +6,11 @@ from __future__ import annotations
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.wording import _between, _listed, _translatable, label
 from models.certificate.document import CertificateDocument, Table
+from models.certificate.metadata import ReferenceStandard
 from models.messages import QT_TR_NOOP, joined, message, separated
-from models.quantity import Quantity
+from models.quantity import UNITS, Quantity
 from models.uncertainty.budget import BASIS_DIVISORS
+from models.uncertainty.conformity import uncertainty_decimals
 
 
 def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> None:
@@ -20,9 +22,7 @@ def draw_traceability(pdf: _CertificatePdf, document: CertificateDocument) -> No
 def _standards_table(document: CertificateDocument) -> Table:
     rows = []
     for s in document.metadata.standards:
-        u = "—" if s.uncertainty is None else message(
-            "{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
-            basis=message(BASIS_DIVISORS[s.basis][0]))
+        u = "—" if s.uncertainty is None else _stated_uncertainty(s)
         if s.uncertainty is None and s.certificate_no and document.stated_inputs:
             u = message(QT_TR_NOOP("as stated in the settings: {inputs}"),
                         inputs=joined(_between(", ", document.stated_inputs)))
@@ -36,6 +36,21 @@ def _standards_table(document: CertificateDocument) -> Table:
         QT_TR_NOOP("Standard"), QT_TR_NOOP("Serial no."), QT_TR_NOOP("Certificate no."),
         QT_TR_NOOP("Uncertainty"), QT_TR_NOOP("Calibration due")), rows)
 
+
+
+def _stated_uncertainty(s: ReferenceStandard):
+    """A standard's figure as its certificate states it: as typed, with its basis; read
+    from its DCC (its k known), U with that k to two significant digits (GUM 7.2.6), not
+    the every digit of the U/k the budget takes."""
+    if s.coverage_factor is None:
+        return message("{u} ({basis})", u=Quantity(s.uncertainty, s.uncertainty_unit),
+                       basis=message(BASIS_DIVISORS[s.basis][0]))
+    k = s.coverage_factor
+    expanded = s.uncertainty * (k if s.basis == "u" else 1.0)
+    return message("{u} ({basis})",
+                   u=f"{expanded:.{uncertainty_decimals(expanded)}f}"
+                     f"{UNITS[s.uncertainty_unit].written()}",
+                   basis=message(QT_TR_NOOP("expanded uncertainty U (k = {k})"), k=f"{k:.2f}"))
 
 
 def _traceability(document: CertificateDocument) -> str:

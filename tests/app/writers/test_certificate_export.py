@@ -289,8 +289,9 @@ def test_xlsx_parameters_and_statistics_hold_numbers_with_units_in_headers():
     # the range), never below it
     assert decided[1] > 0 and 0 < decided[2] <= decided[1] and 0 <= decided[3] < decided[1]
     corrected = _row_named(stats, "Corrected error")
-    assert corrected[1] == pytest.approx(result.corrected_stats.min, abs=5e-3) and corrected[1] < 0
-    assert corrected[2] == pytest.approx(result.corrected_stats.max, abs=5e-3)
+    # to the decimal of U = 1.4″ (GUM 7.2.6): 0.1″
+    assert corrected[1] == pytest.approx(result.corrected_stats.min, abs=0.05) and corrected[1] < 0
+    assert corrected[2] == pytest.approx(result.corrected_stats.max, abs=0.05)
     assert _row_named(stats, "Points")[1] == result.theta_deg.size
     budget = _sheet_rows(book, "Uncertainty budget")
     combined = _row_named(budget, "Combined standard u_c")
