@@ -2395,6 +2395,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>结果仅对所校准的对象、在校准的时间和条件下有效。本数字证书与其内嵌的 PDF 为同一份证书；内嵌的 PDF 为其人可读的形式。</translation>
     </message>
     <message>
+        <source>The results relate only to the item tested, at the time and under the conditions of the test. This digital document and the PDF embedded in it are one test report; the embedded PDF is its human-readable form.</source>
+        <extracomment>a test report&apos;s (notACalibration): the item tested, one report (ISO/IEC 17025 7.8.2.1 a))</extracomment>
+        <translation>结果仅对所检测的对象、在检测的时间和条件下有效。本数字文件与其内嵌的 PDF 为同一份检测报告；内嵌的 PDF 为其人可读的形式。</translation>
+    </message>
+    <message>
         <source>no DCC written: the coverage factor of a point of &apos;{column}&apos; is not found in its budget</source>
         <extracomment>the one description of refType anglebench_coverageProbability (an interval&apos;s, a U&apos;s)</extracomment>
         <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
@@ -2442,6 +2447,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>no DCC written: the certificate is a DRAFT ({missing} missing); a digital certificate is made only of a complete one</source>
         <translation>未写出数字证书：该证书为草稿（缺少 {missing}）；只有完整的证书才能生成数字证书</translation>
+    </message>
+    <message>
+        <source>Test report {number} (PDF)</source>
+        <translation>检测报告 {number}（PDF）</translation>
     </message>
     <message>
         <source>Certificate {number} (PDF)</source>
@@ -2532,6 +2541,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>certificate field &apos;{name}.applies_to&apos; must be one of {join}, not &apos;{applies_to}&apos;</source>
         <translation>证书字段 &apos;{name}.applies_to&apos; 必须是 {join} 之一，而不是 &apos;{applies_to}&apos;</translation>
+    </message>
+    <message>
+        <source>certificate field &apos;{field_name}&apos; must be a number above 0</source>
+        <translation>证书字段 &apos;{field_name}&apos; 必须是大于 0 的数</translation>
     </message>
     <message>
         <source>certificate metadata must be a JSON object</source>
@@ -3078,12 +3091,28 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>未注明校准机构</translation>
     </message>
     <message>
+        <source>Test report {number}</source>
+        <translation>检测报告 {number}</translation>
+    </message>
+    <message>
+        <source>Test report no number</source>
+        <translation>检测报告 无编号</translation>
+    </message>
+    <message>
         <source>Certificate no number</source>
         <translation>证书 无编号</translation>
     </message>
     <message>
+        <source>This report shall not be reproduced except in full without the laboratory&apos;s written approval.</source>
+        <translation>未经本实验室书面批准，不得部分复制本报告。</translation>
+    </message>
+    <message>
         <source>This certificate shall not be reproduced except in full without the laboratory&apos;s written approval.</source>
         <translation>未经本实验室书面批准，不得部分复制本证书。</translation>
+    </message>
+    <message>
+        <source>Test report {number} · AngleBench {version}</source>
+        <translation>检测报告 {number} · AngleBench {version}</translation>
     </message>
     <message>
         <source>Certificate {number} · AngleBench {version}</source>
@@ -3096,6 +3125,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>DRAFT</source>
         <translation>草稿</translation>
+    </message>
+    <message>
+        <source>Register chain head before this report: {head}…</source>
+        <translation>本报告之前的登记册链头：{head}…</translation>
     </message>
     <message>
         <source>as stated in the settings: {inputs}</source>
@@ -3133,6 +3166,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Calibration due</source>
         <translation>校准有效期至</translation>
+    </message>
+    <message>
+        <source>expanded uncertainty U (k = {k})</source>
+        <translation>扩展不确定度 U（k = {k}）</translation>
     </message>
     <message>
         <source>SPECIMEN — made from example details for training or demonstration; not a certificate, not recorded in any register.</source>
@@ -3184,6 +3221,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>判定区域：{zones}。</translation>
     </message>
     <message>
+        <source>The results relate only to the item tested, as received, under the conditions stated.</source>
+        <translation>检测结果仅对所检测的对象在接收状态和所述条件下有效。</translation>
+    </message>
+    <message>
         <source>The results relate only to the item calibrated, as received, under the conditions stated.</source>
         <translation>校准结果仅对所校准的对象在接收状态和所述条件下有效。</translation>
     </message>
@@ -3214,6 +3255,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>relative humidity {h} %</source>
         <translation>相对湿度 {h} %</translation>
+    </message>
+    <message>
+        <source>— End of test report {number} —</source>
+        <translation>— 检测报告 {number} 结束 —</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s certificate register, before this report, ended at chain head {head}; &apos;anglebench register verify --head&apos; proves the register still holds that history.</source>
+        <translation>在本报告之前，实验室证书登记册的链头为 {head}；“anglebench register verify --head”可证明登记册仍保有该历史。</translation>
+    </message>
+    <message>
+        <source>Tested by</source>
+        <translation>检测员</translation>
     </message>
     <message>
         <source>Calibrated by</source>
@@ -5251,6 +5304,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
         <translation>anglebench analyze：证书 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
+    </message>
+    <message>
+        <source>Test report {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
+        <translation>检测报告 {number} 已签发：已写入 {path} 并记入登记册（sha256 {sha}…）</translation>
     </message>
     <message>
         <source>Certificate {number} issued: written to {path} and recorded in the register (sha256 {sha}…)</source>
@@ -8624,6 +8681,11 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Cross-calibration (polygon + encoder)</source>
         <translation>互校准（多面棱体 + 编码器）</translation>
+    </message>
+    <message>
+        <source>face deviation d_i = the face&apos;s angle − its nominal (actual − nominal), i.e. reference − indicated, as a material measure indicates its nominal value (VIM 3.6 Note 3): the negative of an error of indication; the face&apos;s angle = nominal + d_i</source>
+        <extracomment>The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6 Note 3), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
+        <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即 参考值 − 示值，因实物量具的示值即其标称值（VIM 3.6 注 3）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
     </message>
     <message>
         <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>
