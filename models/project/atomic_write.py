@@ -30,11 +30,30 @@ def _mode_for(target: Path) -> int:
 STALE_TEMP_SECONDS = 600
 
 
+#: what mkstemp adds to the prefix (8 random characters) and the suffix
+_TEMP_EXTRA = 8 + len(".tmp")
+
+
+def _temp_prefix(target: Path) -> str:
+    """``.NAME.``, NAME cut (at a character) so that the temp file's name is no longer than
+    the folder allows (#61 review: a legal 241–255-byte name failed as "File name too long"
+    at the write, after the certificate was issued)."""
+    try:
+        limit = os.pathconf(target.parent, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        limit = 255
+    room = max(8, limit - _TEMP_EXTRA - 2)
+    name = target.name
+    while len(name.encode("utf-8", "surrogateescape")) > room:
+        name = name[:-1]
+    return f".{name}."
+
+
 def _remove_stale_temps(target: Path) -> None:
     """Temp files of an earlier save of ``target`` that was killed half-way."""
     now = time.time()
     with contextlib.suppress(OSError):
-        for temp in target.parent.glob(f".{glob.escape(target.name)}.*.tmp"):
+        for temp in target.parent.glob(f"{glob.escape(_temp_prefix(target))}*.tmp"):
             with contextlib.suppress(OSError):
                 if now - temp.stat().st_mtime > STALE_TEMP_SECONDS:
                     temp.unlink()
@@ -55,7 +74,7 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[byte
     if target.is_symlink():  # write through the link: the link stays a link
         target = target.resolve()
     _remove_stale_temps(target)
-    fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+    fd, tmp_name = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp", dir=target.parent)
     try:
         with os.fdopen(fd, "wb") as handle:
             if hasattr(os, "fchmod"):  # POSIX

@@ -159,6 +159,17 @@ def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protec
     named the output (``--certificate``), said in the refusal."""
     if not path:
         return
+    # what would fail only at the write, after a certificate's number was used (#61 review:
+    # a folder named as the output; a folder that is not there)
+    if os.path.isdir(path):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is a folder; nothing was written: name a file in it"),
+            flag=f"{flag} " if flag else "", out=os.fspath(path)))
+    parent = os.path.dirname(os.path.abspath(path))
+    if not os.path.isdir(parent):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out}: the folder {folder} does not exist; nothing was written"),
+            flag=f"{flag} " if flag else "", out=os.fspath(path), folder=parent))
     for item in protected:
         if same_file(path, item.path):
             raise OutputRefused(message(QT_TR_NOOP(

@@ -18,8 +18,7 @@ from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
-from models.theodolite.figures import MODEL_INPUT
-from models.theodolite.model import TheodoliteResult, analyze_run
+from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
 from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.iso230 import once_note

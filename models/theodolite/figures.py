@@ -46,7 +46,7 @@ import numpy as np
 from models.messages import QT_TR_NOOP, message
 from models.readings.repeats import RepeatedReadings
 from models.readings.resolution import coarse, readings_step
-from models.theodolite.model import TheodoliteResult, model_error_modes
+from models.theodolite.model import MODEL_INPUT, TheodoliteResult, model_error_modes
 from models.uncertainty.budget import UncertaintyBudget
 from models.uncertainty.conformity import readings_seed
 from models.uncertainty.figure_intervals import (
@@ -64,8 +64,8 @@ __all__ = ["CIRCLE_EVIDENCE", "MODEL_INPUT", "circle_part", "evident_circle_part
            "pooled_repeats", "readings_coarse",
            "theodolite_figure_intervals", "theodolite_figures_json"]
 
-#: the budget's name of the set-up model's error (the run's budget and the passes' means)
-MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
+# the budget's name of the set-up model's error, in models.theodolite.model (light: a plain
+# analyze imports it without this module's scipy)
 
 ONCE_ONLY = QT_TR_NOOP("a θ was read fewer than twice in a direction: its standard deviation "
                        "over the passes is unknown, so no ISO 230-2 figure has a coverage "

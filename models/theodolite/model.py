@@ -32,6 +32,9 @@ from models.uncertainty.error_stats import ErrorStats, error_stats
 from models.uncertainty.iso230 import Iso230Result, iso230_evaluate
 from models.uncertainty.tilt_direction import NOT_DETERMINED, direction_determined
 
+#: the budget's name of the set-up model's error (the run's budget and the passes' means)
+MODEL_INPUT = QT_TR_NOOP("Set-up model ζ (ψ, α, β)")
+
 __all__ = [
     "Identification",
     "SetupParameters",

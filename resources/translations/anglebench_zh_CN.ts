@@ -9505,6 +9505,14 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{path} 是一个数据库（证书登记册？）；未写入任何内容：请换一个文件名</translation>
     </message>
     <message>
+        <source>{flag}{out} is a folder; nothing was written: name a file in it</source>
+        <translation>{flag}{out} 是一个文件夹；未写入任何内容：请指定其中的一个文件</translation>
+    </message>
+    <message>
+        <source>{flag}{out}: the folder {folder} does not exist; nothing was written</source>
+        <translation>{flag}{out}：文件夹 {folder} 不存在；未写入任何内容</translation>
+    </message>
+    <message>
         <source>{flag}{out} is {what}; nothing was written: choose another name</source>
         <translation>{flag}{out} 是{what}；未写入任何内容：请换一个文件名</translation>
     </message>

@@ -109,7 +109,8 @@ def test_the_decided_interval_is_held_to_the_cmc_in_every_output(issued):
     assert f"Probability of a false acceptance at this decision: {100 * risk:.2f} %" in pdf
     sheet = issued["xlsx"]["Certificate"]
     rows = {row[0]: row[1] for row in sheet.iter_rows(values_only=True) if row and row[0]}
-    assert rows['U of the decided value (")'] == CMC
+    assert rows['U of the decided value, below it (U−) (")'] == CMC
+    assert rows['U of the decided value, above it (U+) (")'] == CMC
     assert rows['Decided value: interval high (")'] == pytest.approx(x + CMC, abs=1e-12)
     dcc = issued["dcc"]
     figures = {

@@ -30,8 +30,16 @@ from models.software import software_identity
 
 
 def _render(document: CertificateDocument) -> FPDF:
-    meta = document.metadata
     pdf = _CertificatePdf(document)
+    try:
+        return _drawn(pdf, document)
+    except BaseException:
+        close_fonts(pdf)  # a page that could not be laid out left the font files open
+        raise
+
+
+def _drawn(pdf, document: CertificateDocument) -> FPDF:
+    meta = document.metadata
     pdf.set_title(f"{label(document, document.title)} {meta.certificate_number}".strip())
     pdf.set_author(meta.lab_name)
     pdf.set_subject(pdf.say(document.kind_title))

@@ -56,6 +56,7 @@ class TableDrawing(PageFrame):
         heading = FontFace(emphasis="BOLD", fill_color=HEADER_FILL)
         header = [_both(cell) if self.language == "zh+en" else cell for cell in t.header]
         cells = [[_no_negative_zero(self.say(cell)) for cell in row] for row in (header, *t.rows)]
+        cells, moved = _long_cells_below(cells, widths, size)
         wrapmode = _wrapmode(cell for row in cells for cell in row)
         if wrapmode == "CHAR":
             cells = self._cells_wrapped(cells, widths, size, True)
@@ -65,8 +66,44 @@ class TableDrawing(PageFrame):
                         repeat_headings=1, padding=(0.5, 1.0), wrapmode=wrapmode) as table:
             for row in cells:
                 table.row(row)
+        for text in moved:
+            self.paragraph(text, 7.5, GREY)
         if t.note:
             self.paragraph(t.note, 7.5, GREY)
+
+
+#: a cell taller than this (mm, estimated) goes below its table: a table row cannot break
+#: across pages (fpdf2 raises), and a positioning decided quantity's note with the rule's
+#: U beside a tolerance below a point's U ran past a page in a 36 mm column (#61)
+_TALLEST_CELL_MM = 90.0
+
+
+def _text_width(text: str) -> int:
+    """Characters, a CJK one counted twice (it prints about twice as wide)."""
+    return sum(2 if ord(c) >= 0x2E80 else 1 for c in text)
+
+
+def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float
+                      ) -> tuple[list[list], list[str]]:
+    """The table's cells with any too tall for a page cut to their first clause and a mark
+    ("… [1]"), and the whole texts to print below the table ("[1] Decided quantity: …")."""
+    per_char_mm = size * 0.19  # an 8 pt Latin character's mean advance is about 1.5 mm
+    moved: list[str] = []
+    out = [list(cells[0])]
+    for row in cells[1:]:
+        row = list(row)
+        for j, cell in enumerate(row):
+            if not isinstance(cell, str) or j >= len(widths):
+                continue
+            lines = _text_width(cell) * per_char_mm / max(widths[j] - 2.0, 1.0) + cell.count("\n")
+            if lines * size * 0.5 > _TALLEST_CELL_MM:
+                mark = f"[{len(moved) + 1}]"
+                first = cell.split("; ", 1)[0]
+                first = first if _text_width(first) < 160 else ""
+                row[j] = f"{first} … {mark}".strip() if first else mark
+                moved.append(f"{mark} {row[0]}: {cell}" if j else f"{mark} {cell}")
+        out.append(row)
+    return out, moved
 
 
 _NEGATIVE_ZERO = re.compile(r"(?<![\w.])[-−](0(?:\.0+)?)(?![\d.])")

@@ -124,3 +124,26 @@ def test_only_a_database_or_its_journal_is_refused_by_content(tmp_path_factory, 
             refuse_database(path)
     else:
         refuse_database(path)
+
+
+def test_a_folder_or_a_missing_folder_is_refused_before_anything_is_written(tmp_path):
+    """#61 review: --certificate naming a folder was found only at the write, after the
+    register had issued the number (the PDF then fetched with 'register show')."""
+    with pytest.raises(OutputRefused, match="is a folder"):
+        check_output(tmp_path, [], "--certificate")
+    with pytest.raises(OutputRefused, match="does not exist"):
+        check_output(tmp_path / "no such folder" / "c.pdf", [], "--certificate")
+    check_output(tmp_path / "c.pdf", [])  # a new file in a folder that is there: fine
+
+
+@pytest.mark.parametrize("length", [240, 250, 255])
+def test_a_name_as_long_as_the_folder_allows_is_written(tmp_path, length):
+    """#61 review: a legal 241–255-byte name failed with "File name too long": the temp file
+    beside it added 14 bytes. The temp name is cut, the file written under its own name."""
+    limit = os.pathconf(tmp_path, "PC_NAME_MAX")
+    name = ("证" * ((length - 4) // 3) + "x" * ((length - 4) % 3) + ".pdf")
+    assert len(name.encode()) == length <= limit
+    write_bytes_atomic(tmp_path / name, b"%PDF once")
+    write_bytes_atomic(tmp_path / name, b"%PDF twice")  # replacing it too
+    assert (tmp_path / name).read_bytes() == b"%PDF twice"
+    assert [p.name for p in tmp_path.iterdir()] == [name]  # no temp file left
