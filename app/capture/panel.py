@@ -967,7 +967,10 @@ class CapturePanel(QDockWidget):
         goes on in a session of its own."""
         # the frames of a project opened held as their blocks' text too (encoded again at
         # every save they froze the window as a live session's did)
-        self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"])}
+        # their takes copied: the sheet's rows move them in place (take_rows.py), not the
+        # project's they were read from
+        self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"]),
+                              "takes": [list(t) for t in session["takes"]]}
                              for session in v] for k, v in raw.items()}
         # an instrument still connected goes on in a session of its own, from its next
         # frame: the last project's frames and takes (rows of its sheet) are not this one's

@@ -154,3 +154,25 @@ def test_the_certificate_prints_the_deletion_and_the_digest_the_register_records
     assert f"reading of row 3 deleted after capture: {shown}" in text
     assert "edited after capture" not in text
     assert digest in text.replace(" ", "")
+
+
+def test_the_takes_of_a_connection_still_open_move_too(window, qtbot):
+    from tests.instrument_simulators import AutocollimatorSimulator
+
+    window.tabs.setCurrentIndex(window.presenters.index(window.presenter("polygon")))
+    bench = window.presenter("polygon")
+    bench.view.table.setCurrentIndex(bench.table_model.index(0, 3))
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(2.5, 1.0)]) as sim:
+        panel.connect_to("autocollimator", sim.port, silence_s=0.2, retries=1)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        panel.take_button.click()
+        assert panel.session is not None and panel.session.takes[0][0] == 0
+        bench.table_model.insert_rows(0, 1)  # while connected: the open session's take moves
+        assert panel.session.takes[0][0] == 1
+        assert _said(window, bench) == [] and bench.table_model.edited_cells == {}
+        bench.table_model.remove_rows([1])
+        assert _said(window, bench) == ["reading of row 2 deleted after capture: 2.5, 1"]
+        panel.disconnect_instrument()
+    assert [t[0] for t in panel.raw_capture()["polygon"][0]["takes"]] == [-3]
+    panel.close()
