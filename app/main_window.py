@@ -162,7 +162,12 @@ class MainWindow(QMainWindow):
         attach_live_signals(self)
         # a captured reading edited in the sheet since is marked there (issue 40)
         self._captured_values: dict = {}
+        from models.capture.take_rows import TakeRows
+
         for presenter in self.presenters:
+            # the takes follow their rows: inserted, deleted, replaced (review 61 F5)
+            presenter.table_model.take_rows = TakeRows(
+                lambda k=presenter.kind.key: self.capture_panel.takes_of(k))
             presenter.table_model.sheet_changed.connect(
                 lambda p=presenter: self.mark_edited_readings(p))
 
@@ -186,8 +191,9 @@ class MainWindow(QMainWindow):
         edits = readings_edited_after_capture(presenter.kind, presenter.settings,
                                               _SheetRows(sheet), sessions,
                                               self._captured_values)
-        presenter.table_model.set_edited_cells({
-            (e.row, keys.index(e.column)): e.text() for e in edits if e.column in keys})
+        presenter.table_model.set_edited_cells({  # a deleted row's reading is in no cell
+            (e.row, keys.index(e.column)): e.text() for e in edits
+            if e.in_sheet and e.column in keys})
 
     def set_language(self, choice: str) -> None:
         """The window in English or Chinese (or the system's language), at once: every text

@@ -43,6 +43,11 @@ class ReadingsTableModel(QAbstractTableModel):
         #: cells whose captured reading was edited since, with what to say of each
         #: (models/capture/edits.py): drawn apart, the text in their tooltip
         self.edited_cells: dict[tuple[int, int], str] = {}
+        #: the capture's takes of this workbench (models/capture/take_rows.TakeRows, set by
+        #: the window): every command that moves rows moves them, before the sheet is said
+        #: changed (review 61 F5: a row deleted above captured readings made them all look
+        #: edited, with other rows' values, on the certificate)
+        self.take_rows = None
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
         self._reasons: dict[tuple[int, str], str | None] = {}
@@ -206,26 +211,36 @@ class ReadingsTableModel(QAbstractTableModel):
         if self.sheet.row_count > count:
             self.apply_remove(count, self.sheet.row_count - count)
 
-    def apply_insert(self, at: int, rows: list[list[str]]) -> None:
+    def _move_takes(self, takes) -> None:
+        """``takes(take_rows)``: what a command does to the captured readings' rows."""
+        if takes is not None and self.take_rows is not None:
+            takes(self.take_rows)
+
+    def apply_insert(self, at: int, rows: list[list[str]], takes=None) -> None:
+        """``takes``: given the model's :attr:`take_rows`, moves them (the commands'; a
+        project opened, or an undone take's row cut off at the end, moves none)."""
         self.beginInsertRows(QModelIndex(), at, at + len(rows) - 1)
         self.sheet.insert_rows(at, rows)
         self.endInsertRows()
+        self._move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
 
-    def apply_remove(self, at: int, count: int) -> list[list[str]]:
+    def apply_remove(self, at: int, count: int, takes=None) -> list[list[str]]:
         self.beginRemoveRows(QModelIndex(), at, at + count - 1)
         removed = self.sheet.remove_rows(at, count)
         self.endRemoveRows()
+        self._move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
         return removed
 
-    def apply_replace(self, rows: list[list[str]], checked: bool = False) -> None:
+    def apply_replace(self, rows: list[list[str]], checked: bool = False, takes=None) -> None:
         self.beginResetModel()
         try:
             self.sheet.adopt_rows(rows, checked)
         except ValueError:
             self.sheet.replace_all(rows)
         self.endResetModel()
+        self._move_takes(takes)
         self.sheet_changed.emit()

@@ -1,4 +1,8 @@
-"""Undoable edits of a readings table (QUndoCommand subclasses)."""
+"""Undoable edits of a readings table (QUndoCommand subclasses).
+
+The commands that move rows move the capture's takes with them, undo and redo included
+(models/capture/take_rows.py, through the model's ``take_rows``): an undo puts back exactly
+the takes its command detached."""
 
 from __future__ import annotations
 
@@ -31,12 +35,20 @@ class InsertRowsCommand(QUndoCommand):
     def __init__(self, model, at: int, rows: list[list[str]], label: str = "") -> None:
         super().__init__(label or tr("Insert rows"))
         self._model, self._at, self._rows = model, at, rows
+        self._detached: list = []  # takes made into the rows, detached by the undo
 
     def redo(self) -> None:
-        self._model.apply_insert(self._at, self._rows)
+        def move(takes) -> None:
+            takes.inserted(self._at, len(self._rows))
+            takes.reattach(self._detached)
+
+        self._model.apply_insert(self._at, self._rows, move)
 
     def undo(self) -> None:
-        self._model.apply_remove(self._at, len(self._rows))
+        def move(takes) -> None:
+            self._detached = takes.removed(self._at, len(self._rows))
+
+        self._model.apply_remove(self._at, len(self._rows), move)
 
 
 class RemoveRowsCommand(QUndoCommand):
@@ -45,16 +57,25 @@ class RemoveRowsCommand(QUndoCommand):
     def __init__(self, model, blocks: list[tuple[int, int]], label: str = "") -> None:
         super().__init__(label or tr("Delete rows"))
         self._model, self._blocks = model, blocks
-        self._removed: list[tuple[int, list[list[str]]]] = []
+        #: per block, bottom first: its start, its rows and the takes detached with them
+        self._removed: list[tuple[int, list[list[str]], list]] = []
 
     def redo(self) -> None:
         self._removed = []
         for start, count in reversed(self._blocks):
-            self._removed.append((start, self._model.apply_remove(start, count)))
+            detached: list = []
+            rows = self._model.apply_remove(
+                start, count, lambda takes, s=start, n=count, d=detached:
+                d.extend(takes.removed(s, n)))
+            self._removed.append((start, rows, detached))
 
     def undo(self) -> None:
-        for start, rows in reversed(self._removed):
-            self._model.apply_insert(start, rows)
+        for start, rows, detached in reversed(self._removed):
+            def move(takes, s=start, r=rows, d=detached) -> None:
+                takes.inserted(s, len(r))
+                takes.reattach(d)
+
+            self._model.apply_insert(start, rows, move)
 
 
 class ReplaceAllCommand(QUndoCommand):
@@ -64,17 +85,28 @@ class ReplaceAllCommand(QUndoCommand):
         super().__init__(label)
         self._model, self._new, self._checked = model, rows, checked
         self._old: list[list[str]] = []
+        #: the takes whose rows the replacement took away (None: not yet replaced); a redo
+        #: detaches these again, not the takes made since (the fringe's live take adds its
+        #: own right after replacing the readings)
+        self._detached: list | None = None
 
     def redo(self) -> None:
+        def move(takes) -> None:
+            if self._detached is None:
+                self._detached = takes.replaced()
+            else:
+                takes.detach(self._detached)
+
         # the row lists themselves change hands: edits after the import mutate them, and
         # their own commands undo those edits first
         self._old = self._model.sheet.rows
-        self._model.apply_replace(self._new, self._checked)
+        self._model.apply_replace(self._new, self._checked, move)
         self._checked = True  # from now on the rows are the sheet's own
 
     def undo(self) -> None:
         self._new = self._model.sheet.rows
-        self._model.apply_replace(self._old, checked=True)
+        self._model.apply_replace(self._old, checked=True,
+                                  takes=lambda takes: takes.reattach(self._detached or []))
 
 
 class SettingsCommand(QUndoCommand):

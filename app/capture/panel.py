@@ -98,6 +98,7 @@ from models.capture.take_cells import (
     elevation_from_zenith_deg,
     next_empty_point,
 )
+from models.capture.take_rows import session_takes, take_key
 from models.workbench import GuidesAcquisition
 from widgets.i18n import declared, live, on_language_change, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
@@ -351,7 +352,8 @@ class _Session:
         self.catch_up()
         return {"instrument": self.kind, "port": self.worker.port, "baud": int(self.worker.baud),
                 "started_utc": self.started_utc, "frames": self.frames.snapshot(),
-                "takes": [list(t) for t in self.takes], "steps": list(self.steps)}
+                "takes": [list(t) for t in self.takes], "steps": list(self.steps),
+                "workbench": self.workbench}
 
 
 class InstrumentLink:
@@ -942,6 +944,18 @@ class CapturePanel(QDockWidget):
                 out.append(stored)
         return out
 
+    def takes_of(self, workbench: str):
+        """``(key, take)`` of every take of a workbench's sessions, the open connections'
+        included, ``take`` the live ``[row, first, last]`` (models/capture/take_rows.py:
+        the sheet's rows inserted, deleted or replaced move them in place)."""
+        yield from session_takes(self.sessions.get(workbench, []))
+        for link in self.links:
+            session = link.session
+            if session is not None and session.workbench == workbench:
+                for take in session.takes:
+                    yield take_key(session.kind, session.worker.port, session.started_utc,
+                                   take), take
+
     def raw_capture(self) -> dict[str, list[dict]]:
         """Every workbench's sessions, for the project file."""
         keys = set(self.sessions) | {link.session.workbench for link in self.links
@@ -953,7 +967,10 @@ class CapturePanel(QDockWidget):
         goes on in a session of its own."""
         # the frames of a project opened held as their blocks' text too (encoded again at
         # every save they froze the window as a live session's did)
-        self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"])}
+        # their takes copied: the sheet's rows move them in place (take_rows.py), not the
+        # project's they were read from
+        self.sessions = {k: [{**session, "frames": FrameBlocks(session["frames"]),
+                              "takes": [list(t) for t in session["takes"]]}
                              for session in v] for k, v in raw.items()}
         # an instrument still connected goes on in a session of its own, from its next
         # frame: the last project's frames and takes (rows of its sheet) are not this one's

@@ -55,7 +55,8 @@ def attach_live_signals(window) -> None:
         panel.attach(open_signal_stream, DemonstrationHead,
                      sessions=lambda k=key: window.capture_panel.sessions.setdefault(k, []),
                      lab_defaults=lambda k=key: window.certificates.lab_defaults(k),
-                     save_lab_defaults_entry=window.certificates.save_lab_defaults_entry)
+                     save_lab_defaults_entry=window.certificates.save_lab_defaults_entry,
+                     workbench=key)
 
 
 def open_live_signals(window) -> bool:

@@ -6,6 +6,11 @@ filled and the instrument's frames behind it. The reading those frames give (one
 the mean of a dwell's frames) is compared with what the row's cells hold now; a cell that
 differs is an edit after capture. The raw frames and their SHA-256 stay as captured: the
 certificate prints the hash, and says which rows were edited and from what to what.
+
+A captured reading whose row was deleted (or replaced: models/capture/take_rows.py) is
+said as deleted, with what the frames gave; a take whose frames hold no reading, or a
+session recorded on another workbench, cannot be checked and is said so (review 61 F7:
+both passed without a word).
 """
 
 from __future__ import annotations
@@ -15,6 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from models.capture.take_rows import deleted_at
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import parse_angle_deg
 
@@ -33,8 +39,28 @@ class EditedReading:
     #: the reading the frames give, and the cell's text now ("" when emptied)
     captured: str
     now: str
+    #: "edited"; "deleted": the row (``row``: where it was then) was deleted, or the sheet
+    #: replaced; "unverifiable": no frame behind the take reads; "elsewhere": a session
+    #: recorded on the workbench ``now`` (``row`` -1, ``captured`` the session's start)
+    what: str = "edited"
+
+    @property
+    def in_sheet(self) -> bool:
+        """The reading is in the sheet's row ``row`` now (its cell can be marked there)."""
+        return self.what in ("edited", "unverifiable") and self.row >= 0
 
     def text(self) -> Message:
+        if self.what == "deleted":
+            return message(QT_TR_NOOP("reading of row {row} deleted after capture: {captured}"),
+                           row=self.row + 1, captured=self.captured or "—")
+        if self.what == "unverifiable":
+            return message(QT_TR_NOOP("reading of row {row} cannot be checked against the "
+                                      "capture: its frames give no value of this sheet"),
+                           row=self.row + 1)
+        if self.what == "elsewhere":
+            return message(QT_TR_NOOP("capture session started {started} was recorded on "
+                                      "workbench '{workbench}': its readings cannot be checked "
+                                      "here"), started=self.captured, workbench=self.now)
         return message(QT_TR_NOOP("reading of row {row} edited after capture: {captured} → "
                                   "{now}"), row=self.row + 1, captured=self.captured,
                        now=self.now or "—")
@@ -95,8 +121,10 @@ def _steps(session: dict[str, Any]) -> list[float]:
 def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequence[str]],
                          columns_of: Callable[[str], Sequence[tuple[str, int | None]]],
                          values_of: Callable[[str, bytes], tuple[float, ...] | None],
-                         cache: dict | None = None) -> list[EditedReading]:
-    """Every cell of a taken reading that differs now from the reading its frames give.
+                         cache: dict | None = None, workbench: str = "") -> list[EditedReading]:
+    """Every cell of a taken reading that differs now from the reading its frames give;
+    then every captured reading whose row was deleted, every take none of whose frames
+    reads, and (``workbench`` given) every session recorded on another workbench.
 
     ``columns_of(instrument)``: per value of the instrument's reading, the column's key and
     index in the sheet (index None: the value went to a cell chosen at the time, e.g. a
@@ -105,8 +133,16 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     ``values_of(instrument, line)``: the values a frame reads (None if none). ``cache``: a
     dict kept between calls, the frames' readings by session and take (they never change)."""
     edited: dict[tuple[int, str], EditedReading] = {}
+    # said apart from the edits: a deleted row's number is the one it had then, and
+    # another row may hold that number now
+    unchecked: list[EditedReading] = []
     for session in sessions:
         instrument = session["instrument"]
+        recorded_on = session.get("workbench")
+        if workbench and recorded_on is not None and recorded_on != workbench:
+            unchecked.append(EditedReading(-1, "", str(session["started_utc"]),
+                                           str(recorded_on), "elsewhere"))
+            continue
         targets = list(columns_of(instrument))
         # values in degrees (a column key ending in _deg) are angles: compared on the circle
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
@@ -120,7 +156,22 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 values = captured_values(session, first, last, values_of, angles)
                 if cache is not None:
                     cache[take_key] = values
-            if values is None or row < 0:
+            gone = deleted_at(row)
+            if gone is not None:  # its row deleted: the captured reading is not in the sheet
+                shown = [f"{v:.12g}" for (_, column), v in zip(targets, values or (), strict=False)
+                         if column is None or column >= 0]
+                unchecked.append(EditedReading(gone, targets[0][0] if targets else "",
+                                               ", ".join(shown), "", "deleted"))
+                continue
+            if row < 0:  # replaced by a later take
+                continue
+            checked = [column for _, column in targets if column is None or column >= 0]
+            if values is None or not checked:
+                # no frame behind it reads (a flag set to 0 by hand), or none of its values
+                # has a column in this sheet (a session moved from another workbench): the
+                # reading cannot be checked, which is said rather than passed
+                key = next((k for k, c in targets if c is not None and c >= 0), "")
+                edited[(row, key or "?")] = EditedReading(row, key, "", "", "unverifiable")
                 continue
             cells = list(rows[row]) if row < len(rows) else []
             for (key, column), value in zip(targets, values, strict=False):
@@ -136,4 +187,5 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
                     edited[(row, key)] = EditedReading(row, key, captured, now.strip())
-    return sorted(edited.values(), key=lambda e: (e.row, e.column))
+    return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(
+        unchecked, key=lambda e: (e.what != "elsewhere", e.row, e.column, e.captured))

@@ -19,6 +19,17 @@ live signals (#45) keep each *Take* as a session of its own (``instrument`` ``si
 take a sample, from the take's first line); when a later take replaces the readings, the
 earlier one's rows become -1 (its frames stay: they are no longer behind a row).
 
+A take's row follows its reading: a row inserted or deleted above it moves it, and a
+deleted (or replaced) row leaves ``-2 - r``, ``r`` the row it was in then — the frames stay,
+the certificate says the reading was deleted (models/capture/take_rows.py; before review 61
+F5 the rows stayed as taken, and a row deleted above captured readings made them all look
+edited). So the digest is of the sessions as they are now, takes' rows included: a
+certificate prints the digest of the sessions the register records with it.
+
+``workbench`` (since review 61 F7): the key of the workbench the session was recorded on;
+a session under another workbench's key is refused on opening (a raw record moved to
+other readings). Sessions written before (0.8.10) have none and are read as before.
+
 The digest is the SHA-256 of the sessions as stored: their JSON text with compact
 separators, keys in the order above and non-ASCII characters as UTF-8 — the same text
 the project file holds (``json.dumps(sessions, ensure_ascii=False,
@@ -42,8 +53,9 @@ __all__ = ["FRAMES_PER_BLOCK", "KEYS", "FrameBlocks", "frame_text", "raw_digest"
 KEYS = ("instrument", "port", "baud", "started_utc", "frames", "takes")
 #: the keys a session may have after them: ``steps``, per take, the step its cells were
 #: rounded to (the instrument's resolution in the reading's unit; 0: every digit), since
-#: #41 — a session without it wrote every digit
-OPTIONAL_KEYS = ("steps",)
+#: #41 — a session without it wrote every digit; ``workbench``, the key of the workbench it
+#: was recorded on (review 61 F7) — a session without it (0.8.10) is read as before
+OPTIONAL_KEYS = ("steps", "workbench")
 
 
 def frame_text(line: bytes) -> str:
@@ -52,9 +64,10 @@ def frame_text(line: bytes) -> str:
 
 
 def session_json(instrument: str, port: str, baud: int, started_utc: str,
-                 frames, takes, steps=None) -> dict[str, Any]:
+                 frames, takes, steps=None, workbench: str = "") -> dict[str, Any]:
     """One session in its stored form, from the worker's frames ``(seconds, bytes,
-    reading)``, the takes ``(row, first, last)`` and, optionally, each take's ``steps``."""
+    reading)``, the takes ``(row, first, last)`` and, optionally, each take's ``steps`` and
+    the ``workbench`` it was recorded on."""
     session = {"instrument": instrument, "port": port, "baud": int(baud),
                "started_utc": started_utc,
                "frames": [[round(float(t), 6), frame_text(line), int(bool(used))]
@@ -62,6 +75,8 @@ def session_json(instrument: str, port: str, baud: int, started_utc: str,
                "takes": [[int(r), int(a), int(b)] for r, a, b in takes]}
     if steps is not None:
         session["steps"] = [float(s) for s in steps]
+    if workbench:
+        session["workbench"] = str(workbench)
     return session
 
 
@@ -223,6 +238,7 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
         ok = ok and isinstance(steps, list) and len(steps) == len(session["takes"]) \
             and all(isinstance(s, int | float) and not isinstance(s, bool) and math.isfinite(s)
                     and s >= 0 for s in steps) if "steps" in session else ok
+        ok = ok and isinstance(session.get("workbench", ""), str)
         if not ok:
             raise ValueError(message(QT_TR_NOOP("{where}, session {i}: a frame or a take is "
                                                 "not as stored by AngleBench"),

@@ -11,7 +11,8 @@ Schema (``schema_version`` 2)::
 ``raw_capture`` (optional in schema 2: absent in a project with no instrument readings,
 and in files written before it existed) keeps what the instruments sent, per workbench: see
 models/capture/raw_record.py; ``sha256`` is the digest of ``sessions`` as stored, and a
-file whose sessions no longer give it is refused.
+file whose sessions no longer give it, or with a session recorded on another workbench
+(its ``workbench``), is refused.
 
 Cells are stored as the text that was typed, so a file always reopens exactly
 as it was saved, bad cells included.
@@ -340,6 +341,14 @@ def _raw_capture(raw: Any, source: str) -> dict[str, list[dict[str, Any]]]:
             raise ProjectFileError(message(
                 QT_TR_NOOP("{where}: the raw frames do not give their SHA-256 (changed after "
                            "they were captured); nothing was changed"), where=where))
+        for i, session in enumerate(sessions, 1):
+            # bound to its workbench (review 61 F7: a raw record moved under another
+            # workbench's readings stayed valid); a session of 0.8.10 names none
+            if session.get("workbench", key) != key:
+                raise ProjectFileError(message(
+                    QT_TR_NOOP("{where}, session {i}: recorded on workbench '{recorded}', not "
+                               "this one (moved in the file); nothing was changed"),
+                    where=where, i=i, recorded=session["workbench"]))
         out[str(key)] = sessions
     return out
 

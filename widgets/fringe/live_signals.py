@@ -126,6 +126,7 @@ class LiveSignalsPanel(QWidget):
         self._opener: Callable | None = None
         self._demonstrator: Callable | None = None
         self._sessions: Callable[[], list] | None = None
+        self._workbench = ""
         self._lab_defaults: Callable[[], dict] = dict
         self._setup_ui()
         self._layout()
@@ -325,16 +326,19 @@ class LiveSignalsPanel(QWidget):
     def attach(self, opener: Callable, demonstrator: Callable | None = None,
                sessions: Callable[[], list] | None = None,
                lab_defaults: Callable[[], dict] | None = None,
-               save_lab_defaults_entry: Callable[[str, object], None] | None = None) -> None:
+               save_lab_defaults_entry: Callable[[str, object], None] | None = None,
+               workbench: str = "") -> None:
         """``opener(port, pattern, baud)``: a started stream worker (``drain()``, ``stop()``,
         ``port``, ``baud``, ``started_utc``; ValueError or OSError when it cannot be made);
         ``demonstrator()``: a running demonstration head (``port``, ``set(**mounting)``,
         ``close()``); ``sessions()``: the workbench's capture sessions, a list a take's
         session is added to; ``lab_defaults()``: the lab's defaults (its own presets);
         ``save_lab_defaults_entry(key, value)``: one entry of the lab defaults stored, the
-        others kept (the presets edited, :meth:`edit_presets`)."""
+        others kept (the presets edited, :meth:`edit_presets`); ``workbench``: the key its
+        sessions are recorded under (each session names it: models/capture/raw_record.py)."""
         self._opener, self._demonstrator = opener, demonstrator
         self._sessions = sessions
+        self._workbench = workbench
         if lab_defaults is not None:
             self._lab_defaults = lab_defaults
         if save_lab_defaults_entry is not None:
@@ -659,13 +663,18 @@ class LiveSignalsPanel(QWidget):
             self._fault = tr("Nothing to take: no samples in the window")
             self._show_status()
             return False
+        session = None
         if self._sessions is not None:
             sessions = self._sessions()
-            for session in sessions:  # the rows of an earlier take are replaced now
-                if session.get("instrument") == INSTRUMENT:
-                    session["takes"] = [[-1, a, b] for _, a, b in session["takes"]]
-            sessions.append(self._session(index))
+            for earlier in sessions:  # the rows of an earlier take are replaced now
+                if earlier.get("instrument") == INSTRUMENT:
+                    earlier["takes"] = [[-1, a, b] for _, a, b in earlier["takes"]]
+            session = self._session(index)
         self.taken.emit(np.array(u_sin), np.array(u_cos))
+        # added once the readings are replaced: the replacement detaches the takes that
+        # named the rows it replaced (models/capture/take_rows.py), not this one's
+        if session is not None:
+            sessions.append(session)
         return True
 
     def _session(self, index: np.ndarray) -> dict:
@@ -689,4 +698,5 @@ class LiveSignalsPanel(QWidget):
                 "frames": [[round(float(t - t0), 6), frame_text(line), int(bool(used))]
                            for _, t, line, used in kept],
                 "takes": [[row, where[i], where[i]] for row, i in enumerate(index.tolist())
-                          if i in where]}
+                          if i in where],
+                **({"workbench": self._workbench} if self._workbench else {})}

@@ -35,7 +35,7 @@ def test_a_sessions_frames_are_stored_as_the_plain_conversion_would_store_them()
     assert session.behind() == 1
     stored = session.stored()
     plain = session_json("autocollimator", worker.port, worker.baud, worker.started_utc,
-                         worker.raw, session.takes, session.steps)
+                         worker.raw, session.takes, session.steps, "polygon")
     assert stored["frames"] == plain["frames"] and len(stored["frames"]) == len(worker.raw)
     text = json.dumps([plain], ensure_ascii=False, separators=(",", ":"))
     assert raw_digest([stored]) == raw_digest([plain])

@@ -146,6 +146,7 @@ def test_the_window_saves_and_reopens_the_frames_with_the_project(window, qtbot,
     panel = _one_reading_taken_on_the_polygon(window, qtbot)
     saved = panel.raw_capture()
     assert list(saved) == ["polygon"] and saved["polygon"][0]["takes"][0][0] == 0
+    assert saved["polygon"][0]["workbench"] == "polygon"  # bound to it (review 61 F7)
     assert saved["polygon"][0]["frames"][saved["polygon"][0]["takes"][0][1]][1] == \
         "3 003 2.500 1.000"
     path = tmp_path / "captured.anglebench.json"

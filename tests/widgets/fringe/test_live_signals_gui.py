@@ -277,6 +277,8 @@ def test_in_the_window_a_demonstration_take_is_kept_with_the_project_and_edits_a
     sessions = window.capture_panel.raw_sessions(key)
     assert len(sessions) == 2 and {s["instrument"] for s in sessions} == {"signals"}
     assert sessions[0]["started_utc"] != sessions[1]["started_utc"]
+    # each bound to its workbench (review 61 F7)
+    assert [s["workbench"] for s in sessions] == [key, key]
     assert key in window.capture_panel.raw_capture()  # saved with the project
     model = bench.table_model
     assert bench.sheet.row_count == len(sessions[1]["takes"]) > 1000

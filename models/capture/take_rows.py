@@ -1,0 +1,104 @@
+"""The captured readings follow their rows: each take of a capture session names the sheet
+row its reading is in (models/capture/raw_record.py), so a row inserted, deleted or
+replaced above or over it moves or detaches the take — in one place, for every operation
+that moves rows and its undo and redo (widgets/table_commands.py calls :class:`TakeRows`).
+
+A take's row is, in the stored ``takes``:
+
+* ``r >= 0``: the reading is in row ``r`` (0-based) now;
+* ``-1``: a later take replaced its reading (the fringe's live signals): not behind a row,
+  not an edit;
+* ``r <= -2``: its row was deleted (or the sheet replaced) — at row ``-2 - r`` then. The
+  frames stay in the raw record; the certificate says the captured reading was deleted
+  (models/capture/edits.py). A file of 0.8.10 reads such a row as ``-1``.
+
+A take is known by its session's instrument, port and start and its first and last frame
+(:func:`take_key`: two sessions never share a start), so an undo puts back exactly the
+takes its operation detached, whatever copies of the sessions were made in between.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any
+
+__all__ = ["REPLACED", "TakeRows", "deleted_at", "deleted_row", "session_takes", "take_key"]
+
+#: the row of a take whose reading a later take replaced
+REPLACED = -1
+
+#: a take's key and the row it was detached from
+Detached = list[tuple[tuple, int]]
+
+
+def deleted_row(row: int) -> int:
+    """The stored row of a take whose row ``row`` was deleted."""
+    return -2 - row
+
+
+def deleted_at(stored: int) -> int | None:
+    """The row (0-based) a take's reading was deleted from, None when it was not deleted."""
+    return -2 - stored if stored <= -2 else None
+
+
+def take_key(instrument: str, port: str, started_utc: str, take) -> tuple:
+    return (instrument, port, started_utc, int(take[1]), int(take[2]))
+
+
+class TakeRows:
+    """The takes of one workbench's sessions moved with its rows. ``takes()``: every take of
+    the workbench as ``(key, take)``, ``take`` the live ``[row, first, last]`` list the
+    sessions hold (changed in place)."""
+
+    def __init__(self, takes: Callable[[], Iterable[tuple[tuple, list[int]]]]) -> None:
+        self._takes = takes
+
+    def inserted(self, at: int, count: int) -> None:
+        """``count`` rows inserted at ``at``: the takes at or below it move down."""
+        for _, take in self._takes():
+            if take[0] >= at:
+                take[0] += count
+
+    def removed(self, at: int, count: int) -> Detached:
+        """Rows ``at`` … ``at + count - 1`` deleted: their takes detached (returned, for
+        the undo), the takes below move up."""
+        detached: Detached = []
+        for key, take in self._takes():
+            if at <= take[0] < at + count:
+                detached.append((key, take[0]))
+                take[0] = deleted_row(take[0])
+            elif take[0] >= at + count:
+                take[0] -= count
+        return detached
+
+    def replaced(self) -> Detached:
+        """Every row replaced (an import, a paste replacing the sheet): every take that
+        names a row detached (returned, for the undo)."""
+        detached: Detached = []
+        for key, take in self._takes():
+            if take[0] >= 0:
+                detached.append((key, take[0]))
+                take[0] = deleted_row(take[0])
+        return detached
+
+    def detach(self, detached: Detached) -> None:
+        """These takes detached again (the redo of a replacement)."""
+        rows = dict(detached)
+        for key, take in self._takes():
+            if key in rows and take[0] == rows[key]:
+                take[0] = deleted_row(take[0])
+
+    def reattach(self, detached: Detached) -> None:
+        """These takes back in their rows (the undo of a deletion or replacement)."""
+        rows = dict(detached)
+        for key, take in self._takes():
+            if key in rows and take[0] == deleted_row(rows[key]):
+                take[0] = rows[key]
+
+
+def session_takes(sessions: Iterable[dict[str, Any]]) -> Iterable[tuple[tuple, list[int]]]:
+    """``(key, take)`` of every take of stored sessions (for :class:`TakeRows`)."""
+    for session in sessions:
+        for take in session["takes"]:
+            yield take_key(session["instrument"], session["port"], session["started_utc"],
+                           take), take

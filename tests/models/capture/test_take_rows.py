@@ -1,0 +1,122 @@
+"""The captured readings follow their rows (review 61 F5), a deleted one is said as deleted,
+a take that cannot be checked is said so and a session is bound to its workbench (review 61
+F7)."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+
+import pytest
+
+from app.certificate_issue import readings_edited_after_capture
+from models.capture.raw_record import session_json
+from models.capture.take_rows import TakeRows, deleted_at, deleted_row, session_takes
+from models.project.file import Project, ProjectFileError, WorkbenchState, load_project, save_project
+from models.registry import KINDS
+
+POLYGON = KINDS["polygon"]
+FRAMES = [(0.0, b"3 003 12.500 -3.250", True), (0.1, b"3 003 21.560 1.000", True),
+          (0.2, b"3 003 7.250 0.500", True)]
+ROWS = [["1", "0", "0", "99", "9"], ["1", "0", "0", "12.5", "-3.25"],
+        ["2", "45", "0", "21.56", "1"], ["3", "90", "0", "7.25", "0.5"]]
+
+
+def _session(takes, frames=FRAMES, **extra):
+    return session_json("autocollimator", "/dev/ttyUSB0", 9600, "2026-12-02T01:02:03+00:00",
+                        frames, takes, **extra)
+
+
+def _said(rows, sessions, kind=POLYGON):
+    return [str(e.text()) for e in readings_edited_after_capture(kind, {}, rows, sessions)]
+
+
+def test_takes_move_with_rows_inserted_and_deleted_and_come_back_on_undo():
+    session = _session([[1, 0, 0], [2, 1, 1], [3, 2, 2]])
+    takes = TakeRows(lambda: session_takes([session]))
+    takes.inserted(0, 2)  # two rows at the top: every take two rows down
+    assert [t[0] for t in session["takes"]] == [3, 4, 5]
+    detached = takes.removed(0, 2)  # and out again: nothing captured was in them
+    assert detached == [] and [t[0] for t in session["takes"]] == [1, 2, 3]
+    detached = takes.removed(2, 1)  # the row of the second take: detached, row 2 kept
+    assert [t[0] for t in session["takes"]] == [1, -4, 2]
+    assert deleted_at(-4) == 2 and deleted_row(2) == -4 and deleted_at(-1) is None
+    takes.inserted(2, 1)  # the undo: the row back, then its take
+    takes.reattach(detached)
+    assert [t[0] for t in session["takes"]] == [1, 2, 3]
+    detached = takes.replaced()  # the sheet replaced: every take detached
+    assert [t[0] for t in session["takes"]] == [-3, -4, -5]
+    takes.reattach(detached)
+    assert [t[0] for t in session["takes"]] == [1, 2, 3]
+
+
+def test_a_take_replaced_by_a_later_one_is_neither_moved_nor_detached():
+    session = _session([[-1, 0, 0], [2, 1, 1]])
+    takes = TakeRows(lambda: session_takes([session]))
+    takes.inserted(0, 1)
+    assert takes.replaced() == [(("autocollimator", "/dev/ttyUSB0",
+                                  "2026-12-02T01:02:03+00:00", 1, 1), 3)]
+    assert [t[0] for t in session["takes"]] == [-1, -5]
+
+
+def test_takes_moved_with_the_rows_check_as_captured():
+    # row 0 typed, rows 1-3 captured; row 0 deleted: the readings are rows 0-2 now
+    session = _session([[1, 0, 0], [2, 1, 1], [3, 2, 2]])
+    TakeRows(lambda: session_takes([session])).removed(0, 1)
+    assert _said(ROWS[1:], [session]) == []
+    # the rows not moved (as before the fix) make every reading look edited
+    assert _said(ROWS[1:], [_session([[1, 0, 0], [2, 1, 1], [3, 2, 2]])])[0] == \
+        "reading of row 2 edited after capture: 12.5 → 21.56"
+
+
+def test_a_deleted_captured_reading_is_said_with_the_row_it_had_and_its_values():
+    session = _session([[1, 0, 0], [2, 1, 1], [3, 2, 2]])
+    TakeRows(lambda: session_takes([session])).removed(2, 1)
+    rows = ROWS[:2] + ROWS[3:]
+    assert _said(rows, [session]) == ["reading of row 3 deleted after capture: 21.56, 1"]
+
+
+def test_a_take_whose_frames_hold_no_reading_is_said_unverifiable():
+    # the frame behind row 2's take set from a reading (1) to not one (0) by hand
+    frames = [FRAMES[0], (0.1, b"3 003 21.560 1.000", False)]
+    said = _said(ROWS[1:3], [_session([[0, 0, 0], [1, 1, 1]], frames)])
+    assert said == ["reading of row 2 cannot be checked against the capture: its frames give "
+                    "no value of this sheet"]
+
+
+def test_a_session_of_another_workbench_is_said_and_refused_on_opening(tmp_path):
+    moved = _session([[0, 0, 0]], workbench="polygon")
+    theodolite = KINDS["theodolite"]
+    assert _said([["-20", "-19.9", "-1.5"]], [moved], theodolite) == [
+        "capture session started 2026-12-02T01:02:03+00:00 was recorded on workbench "
+        "'polygon': its readings cannot be checked here"]
+    # 0.8.10's session names no workbench: its readings still cannot be checked on the
+    # theodolite (no column of it takes an autocollimator's value), which is said
+    legacy = _session([[0, 0, 0]])
+    assert _said([["-20", "-19.9", "-1.5"]], [legacy], theodolite) == [
+        "reading of row 1 cannot be checked against the capture: its frames give no value "
+        "of this sheet"]
+    path = tmp_path / "p.anglebench.json"
+    save_project(path, Project({"polygon": WorkbenchState(ROWS[1:2], {})}, {},
+                               {"polygon": [moved]}))
+    document = json.loads(path.read_text(encoding="utf-8"))
+    document["raw_capture"] = {"theodolite": document["raw_capture"]["polygon"]}
+    path.write_text(json.dumps(document, ensure_ascii=False), encoding="utf-8")
+    with pytest.raises(ProjectFileError, match="session 1: recorded on workbench 'polygon', "
+                                               "not this one"):
+        load_project(path, {"polygon": POLYGON, "theodolite": theodolite})
+
+
+def test_a_session_without_its_workbench_0_8_10_and_a_deleted_take_round_trip(tmp_path):
+    old = _session([[1, 0, 0], [deleted_row(2), 1, 1]])  # as 0.8.10 wrote it: no workbench
+    path = tmp_path / "p.anglebench.json"
+    save_project(path, Project({"polygon": WorkbenchState(ROWS, {})}, {}, {"polygon": [old]}))
+    entry = json.loads(path.read_text(encoding="utf-8"))["raw_capture"]["polygon"]
+    # the digest is of the sessions as stored, their takes' rows included
+    assert entry["sha256"] == hashlib.sha256(json.dumps(
+        entry["sessions"], ensure_ascii=False, separators=(",", ":")).encode()).hexdigest()
+    assert entry["sessions"][0]["takes"] == [[1, 0, 0], [-4, 1, 1]]
+    project = load_project(path, {"polygon": POLYGON})
+    assert project.raw_capture["polygon"] == [old]
+    assert _said(ROWS, project.raw_capture["polygon"]) == [
+        "reading of row 3 deleted after capture: 21.56, 1"]
