@@ -3675,7 +3675,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -5894,6 +5894,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{where}: the raw frames do not give their SHA-256 (changed after they were captured); nothing was changed</source>
         <translation>{where}：原始帧与其 SHA-256 不符（采集后被改动）；未作任何更改</translation>
+    </message>
+    <message>
+        <source>{where}, session {i}: recorded on workbench &apos;{recorded}&apos;, not this one (moved in the file); nothing was changed</source>
+        <translation>{where}，会话 {i}：记录于工作台“{recorded}”，而非本工作台（在文件中被移动）；未作任何更改</translation>
     </message>
     <message>
         <source>{source}: workbench &apos;{key}&apos; is not one this version knows; nothing was changed</source>
@@ -8570,7 +8574,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{where}: the raw frames must be a list of sessions</source>
-        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)</extracomment>
+        <extracomment>a session&apos;s keys, in the order they are stored the keys a session may have after them: ``steps``, per take, the step its cells were rounded to (the instrument&apos;s resolution in the reading&apos;s unit; 0: every digit), since #41 — a session without it wrote every digit; ``workbench``, the key of the workbench it was recorded on (review 61 F7) — a session without it (0.8.10) is read as before frames a block of :class:`FrameBlocks` holds once full (then encoded, never again)</extracomment>
         <translation>{where}：原始数据帧必须是采集会话的列表</translation>
     </message>
     <message>
@@ -9479,8 +9483,20 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）；宽度对照目标（不超过理想区间的 {limit} 倍；理想区间为“值 − 真值”的 2.275 %–97.725 % 分位数间距）报告</translation>
     </message>
     <message>
+        <source>reading of row {row} deleted after capture: {captured}</source>
+        <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied) &quot;edited&quot;; &quot;deleted&quot;: the row (``row``: where it was then) was deleted, or the sheet replaced; &quot;unverifiable&quot;: no frame behind the take reads; &quot;elsewhere&quot;: a session recorded on the workbench ``now`` (``row`` -1, ``captured`` the session&apos;s start)</extracomment>
+        <translation>第 {row} 行的读数在采集后被删除：{captured}</translation>
+    </message>
+    <message>
+        <source>reading of row {row} cannot be checked against the capture: its frames give no value of this sheet</source>
+        <translation>第 {row} 行的读数无法与采集核对：其帧未给出本表的任何值</translation>
+    </message>
+    <message>
+        <source>capture session started {started} was recorded on workbench &apos;{workbench}&apos;: its readings cannot be checked here</source>
+        <translation>开始于 {started} 的采集会话记录于工作台“{workbench}”：其读数无法在此核对</translation>
+    </message>
+    <message>
         <source>reading of row {row} edited after capture: {captured} → {now}</source>
-        <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied)</extracomment>
         <translation>第 {row} 行的读数在采集后被修改：{captured} → {now}</translation>
     </message>
     <message>
