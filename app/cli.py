@@ -14,11 +14,10 @@ import math
 import sys
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import (
     QT_TR_NOOP,
@@ -56,10 +55,14 @@ from models.workbench import (
     WritesCorrectionTable,
 )
 
+if TYPE_CHECKING:
+    from models.certificate.metadata import CertificateMetadata
+
 # What only some runs need is imported where it is needed (a plain ``analyze`` of a
 # sample starts in about 1.5 times numpy's import: tests/app/test_cli_imports.py,
-# tests/benchmarks/test_cli_startup.py): the project file's migrations and the results
-# writers (the certificate's document); and only the named workbench is loaded
+# tests/benchmarks/test_cli_startup.py): the certificate's details (JSON's U and the
+# certificate), the project file's migrations and the results writers (the certificate's
+# document); and only the named workbench is loaded
 # (models/registry.py) unless the command line names another's option or asks for help.
 
 
@@ -393,6 +396,7 @@ def run_analyze(argv: list[str]) -> int:
         if isinstance(kind, IssuesCertificates):
             # U beside every error array and the decided quantity, with the certificate
             # details given (their standards, tolerance and decision rule), else none
+            from models.certificate.metadata import MetadataError
             from models.certificate.uncertainty_json import (
                 certified_json,
                 merge_json,
@@ -474,6 +478,7 @@ def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
     replaced; None after saying why the DCC was refused."""
     from app.dcc_issue import dcc_schema_dir
     from app.reference_dcc import reference_rows
+    from models.certificate.metadata import MetadataError
     from models.dcc.reader import DccError
     from models.dcc.signature import SigningError
 
@@ -508,6 +513,8 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
                    ) -> CertificateMetadata:
     """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
     unit is read in ``error_unit``, the unit of the errors it was judged against."""
+    from models.certificate.metadata import CertificateMetadata, MetadataError
+
     if reference is not None:
         from app.reference_dcc import with_reference
 
@@ -631,6 +638,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     from app.certificate_issue import draft_reasons
     from app.dcc_issue import DccError
     from app.writers.results_export import write_results_csv, write_results_xlsx
+    from models.certificate.metadata import MetadataError
 
     words = translator(args.language)
     try:

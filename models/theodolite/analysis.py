@@ -8,7 +8,6 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
 from models.plots import PlotFigure
@@ -20,9 +19,9 @@ from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import TheodoliteResult, analyze_run
 from models.theodolite.plots import error_figure
-from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.rounding import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -35,6 +34,7 @@ from models.workbench import (
 
 if TYPE_CHECKING:  # the certificate's modules are loaded when a certificate is asked for
     from models.certificate.document import CertificateDocument
+    from models.certificate.metadata import CertificateMetadata
 
 __all__ = ["THEODOLITE"]
 
@@ -235,6 +235,7 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
 def _intervals_line(result: TheodoliteResult) -> str:
     """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
     the readings alone, at 95.45 %), or why there are none."""
+    from models.certificate.metadata import CertificateMetadata
     from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
