@@ -8,11 +8,12 @@ its help included, is in the language of ``--language`` (default: the system's).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
 import json
 import math
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -199,14 +200,39 @@ class _Undecided(Exception):
 
 class _TrialParser(Parser):
     """Reads a command line with one workbench's options only; anything it does not know
-    exactly is left to the whole parser, which reads it as it always has."""
+    exactly is left to the whole parser, which reads it as it always has. It prints
+    nothing: its formatter asks for no terminal width (argparse's asks shutil, for every
+    option, and shutil's import brings the compression modules)."""
 
     def __init__(self, *args, **kwargs) -> None:
-        kwargs.update(allow_abbrev=False, add_help=False)
+        kwargs.update(allow_abbrev=False, add_help=False, formatter_class=_silent_formatter)
         super().__init__(*args, **kwargs)
 
     def error(self, message: str):
         raise _Undecided(message)
+
+
+def _silent_formatter(prog: str) -> argparse.HelpFormatter:
+    """The trial parser's formatter: argparse makes one for every option it adds (to check
+    its metavar); nothing it formats is shown."""
+    return argparse.HelpFormatter(prog, width=80)
+
+
+@contextlib.contextmanager
+def _unsaid() -> Iterator[None]:
+    """argparse's own words untranslated while the trial parser is built and parses: it
+    shows none of them, and in English each is looked up through gettext (which imports
+    locale and looks for catalogues on disk)."""
+    saved = argparse._
+    argparse._ = _as_written
+    try:
+        yield
+    finally:
+        argparse._ = saved
+
+
+def _as_written(text: str) -> str:
+    return text
 
 
 def _parse(argv: list[str], words) -> tuple[argparse.Namespace, tuple[str, ...]]:
@@ -216,7 +242,8 @@ def _parse(argv: list[str], words) -> tuple[argparse.Namespace, tuple[str, ...]]
     named = next((a for a in argv if a in KINDS), None)
     if named is not None and not {"-h", "--help"} & set(argv):
         try:
-            args, rest = _parser(words, (named,), _TrialParser).parse_known_args(argv)
+            with _unsaid():
+                args, rest = _parser(words, (named,), _TrialParser).parse_known_args(argv)
         except _Undecided:
             pass
         else:
