@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import dataclasses
-import json
 import math
 import sys
 from collections.abc import Callable, Iterator
@@ -442,6 +441,8 @@ def run_analyze(argv: list[str]) -> int:
         data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
+        import json  # only for --json and a certificate's details
+
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
     else:
         say = words
@@ -540,6 +541,8 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
                    ) -> CertificateMetadata:
     """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
     unit is read in ``error_unit``, the unit of the errors it was judged against."""
+    import json
+
     from models.certificate.metadata import CertificateMetadata, MetadataError
 
     if reference is not None:
