@@ -10,7 +10,6 @@ import numpy as np
 
 from models.cancellation import checkpoint
 from models.fringe import KEY, TITLE
-from models.fringe.export import write_correction_table
 from models.fringe.model import (
     TWO_PI,
     ChannelFit,
@@ -27,7 +26,6 @@ from models.fringe.model import (
 )
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.plots import figures as fringe_figures
-from models.fringe.report import fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
@@ -694,6 +692,8 @@ def summary(result: FringeResult) -> str:
 
 
 def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
+    from models.fringe.export import write_correction_table
+
     write_correction_table(path, result)
     return message(QT_TR_NOOP("Correction table, {n} entries (C header)") if str(path).endswith(".h")
                    else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
@@ -747,6 +747,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return write_table(args, result, table)
 
     def certificate(self, result, metadata, source_name="", settings=None):
+        from models.fringe.report import fringe_certificate
+
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
     def decided_errors(self, result, metadata):
@@ -770,6 +772,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
             from models.fringe.report import ESTIMATED_PHASE_REASON
 
             raise ValueError(message(ESTIMATED_PHASE_REASON))
+        from models.fringe.report import fringe_budget
+
         u = result.unit
         return {f"raw_error_{u}": fringe_budget(result, metadata, as_found=True, settings=settings),
                 f"compensated_error_{u}": fringe_budget(result, metadata, settings=settings)}

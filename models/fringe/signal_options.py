@@ -67,7 +67,6 @@ FLAGS = ("signal_preset", "signal_presets", "signal_window", "interpolator_table
 def setup(args: argparse.Namespace):
     """The preset and the table profile asked for (None when not); a message when the
     options do not hold (raised as ValueError)."""
-    from models.fringe.interpolator_export import FORMATS
     from models.fringe.interpolator_table import chip_profile
     from models.fringe.signal_tolerance import (
         BUILTIN_PRESETS,
@@ -98,6 +97,9 @@ def setup(args: argparse.Namespace):
                                  n=args.signal_window))
     profile = None
     if args.interpolator_table:
+        # the writer's module (and its atomic write's tempfile) only when a table is asked for
+        from models.fringe.interpolator_export import FORMATS
+
         if Path(args.interpolator_table).suffix.lower() not in FORMATS:
             raise ValueError(message(QT_TR_NOOP("--interpolator-table: {path}: write .csv, .h or "
                                                 ".hex"), path=args.interpolator_table))
