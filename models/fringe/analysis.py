@@ -24,6 +24,7 @@ from models.fringe.model import (
     period_arcsec,
     refine_phase,
 )
+from models.fringe.order_statistics import distinct, median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
 from models.fringe.plots import figures as fringe_figures
 from models.fringe.result import FringeResult
@@ -269,7 +270,7 @@ ALIAS_CHECK_PHASES = 20_000
 
 def _folded_phases(theta_rad: np.ndarray) -> np.ndarray:
     """The distinct sample phases within one period (rad)."""
-    return np.unique(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
+    return distinct(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
 
 
 def _rank_deficient(columns: np.ndarray) -> bool:
@@ -448,7 +449,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     if source == "samples_per_period":
         check_record_covers_a_period(theta, TWO_PI / per_period)
     elif theta.size > 1:
-        check_record_covers_a_period(theta, float(np.median(np.abs(np.diff(theta)))))
+        check_record_covers_a_period(theta, median(np.abs(np.diff(theta))))
     pso_seconds, design = None, None
     phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
                    if source == "samples_per_period" else None)

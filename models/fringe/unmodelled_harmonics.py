@@ -32,6 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from models.fringe.model import ChannelFit, model_signal
+from models.fringe.order_statistics import distinct as _distinct
 
 __all__ = ["PHASE_BINS", "SIGNIFICANCE", "TESTED_UP_TO", "UnmodelledHarmonic",
            "quantisation_step", "unmodelled_harmonics"]
@@ -85,7 +86,7 @@ def quantisation_step(values) -> float:
     multiples (Euclid's algorithm with a tolerance, on the least of them), when every reading
     is a whole number of it from the least; 0 when there is none above a 10⁻⁹ of their span
     (a record with the digits of its noise)."""
-    distinct = np.unique(np.asarray(values, dtype=float))
+    distinct = _distinct(np.asarray(values, dtype=float))
     if distinct.size < 3:
         return 0.0
     span = float(distinct[-1] - distinct[0])
