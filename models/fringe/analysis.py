@@ -26,7 +26,6 @@ from models.fringe.model import (
 )
 from models.fringe.order_statistics import distinct, median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
-from models.fringe.plots import figures as fringe_figures
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
@@ -787,7 +786,9 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
             return "arcsec"
 
     def overlay_figure(self, result):
-        return fringe_figures(result)["errors"]
+        from models.fringe.plots import figures  # the window's: a plot's module
+
+        return figures(result)["errors"]
 
     def verdict(self, r):
         return message(
