@@ -21,15 +21,16 @@ HEAVY = ("PySide6", "shiboken6", "pyqtgraph", "sqlalchemy", "psycopg", "fpdf", "
 #: what a plain analyze's summary of the theodolite, polygon or fringe needs none of, each a
 #: millisecond or a few of the start-up (#44: ≤ 1.5× numpy's import, missed by less than
 #: all of them together): the certificate's details, budgets and decision rules (JSON's U
-#: and a certificate load them), the plot declarations and the entry plan (the window's),
-#: json (--json and the details), and what argparse's help would bring (shutil with the
-#: compression modules, locale through gettext), tempfile (an atomic write)
+#: and a certificate load them), the plot declarations, the entry plan and the capture
+#: guide (the window's), json (--json and the details), and what argparse's help would
+#: bring (shutil with the compression modules, locale through gettext), tempfile (an
+#: atomic write)
 NOT_FOR_A_SUMMARY = ("models.certificate.metadata", "models.certificate.document",
                      "models.certificate.builder", "models.uncertainty.budget",
                      "models.uncertainty.conformity", "models.plots",
-                     "models.readings.entry_plan", "models.register.store",
-                     "models.project.file", "app.writers", "json", "shutil", "locale",
-                     "tempfile")
+                     "models.readings.entry_plan", "models.capture.guidance",
+                     "models.register.store", "models.project.file", "app.writers", "json",
+                     "shutil", "locale", "tempfile")
 
 #: what even --json (whose U comes with the certificate's figures and budgets, so
 #: scipy.special) never needs: the PDF, the spreadsheet, the register, the window's texts
