@@ -8,17 +8,16 @@ its help included, is in the language of ``--language`` (default: the system's).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
-import json
 import math
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from app.command_line import EXIT_BAD_INPUT, Parser, add_language_option, language_asked, speaking
 from app.command_line import say as _say
-from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import (
     QT_TR_NOOP,
@@ -56,10 +55,14 @@ from models.workbench import (
     WritesCorrectionTable,
 )
 
+if TYPE_CHECKING:
+    from models.certificate.metadata import CertificateMetadata
+
 # What only some runs need is imported where it is needed (a plain ``analyze`` of a
 # sample starts in about 1.5 times numpy's import: tests/app/test_cli_imports.py,
-# tests/benchmarks/test_cli_startup.py): the project file's migrations and the results
-# writers (the certificate's document); and only the named workbench is loaded
+# tests/benchmarks/test_cli_startup.py): the certificate's details (JSON's U and the
+# certificate), the project file's migrations and the results writers (the certificate's
+# document); and only the named workbench is loaded
 # (models/registry.py) unless the command line names another's option or asks for help.
 
 
@@ -203,14 +206,39 @@ class _Undecided(Exception):
 
 class _TrialParser(Parser):
     """Reads a command line with one workbench's options only; anything it does not know
-    exactly is left to the whole parser, which reads it as it always has."""
+    exactly is left to the whole parser, which reads it as it always has. It prints
+    nothing: its formatter asks for no terminal width (argparse's asks shutil, for every
+    option, and shutil's import brings the compression modules)."""
 
     def __init__(self, *args, **kwargs) -> None:
-        kwargs.update(allow_abbrev=False, add_help=False)
+        kwargs.update(allow_abbrev=False, add_help=False, formatter_class=_silent_formatter)
         super().__init__(*args, **kwargs)
 
     def error(self, message: str):
         raise _Undecided(message)
+
+
+def _silent_formatter(prog: str) -> argparse.HelpFormatter:
+    """The trial parser's formatter: argparse makes one for every option it adds (to check
+    its metavar); nothing it formats is shown."""
+    return argparse.HelpFormatter(prog, width=80)
+
+
+@contextlib.contextmanager
+def _unsaid() -> Iterator[None]:
+    """argparse's own words untranslated while the trial parser is built and parses: it
+    shows none of them, and in English each is looked up through gettext (which imports
+    locale and looks for catalogues on disk)."""
+    saved = argparse._
+    argparse._ = _as_written
+    try:
+        yield
+    finally:
+        argparse._ = saved
+
+
+def _as_written(text: str) -> str:
+    return text
 
 
 def _parse(argv: list[str], words) -> tuple[argparse.Namespace, tuple[str, ...]]:
@@ -220,7 +248,8 @@ def _parse(argv: list[str], words) -> tuple[argparse.Namespace, tuple[str, ...]]
     named = next((a for a in argv if a in KINDS), None)
     if named is not None and not {"-h", "--help"} & set(argv):
         try:
-            args, rest = _parser(words, (named,), _TrialParser).parse_known_args(argv)
+            with _unsaid():
+                args, rest = _parser(words, (named,), _TrialParser).parse_known_args(argv)
         except _Undecided:
             pass
         else:
@@ -400,6 +429,7 @@ def run_analyze(argv: list[str]) -> int:
         if isinstance(kind, IssuesCertificates):
             # U beside every error array and the decided quantity, with the certificate
             # details given (their standards, tolerance and decision rule), else none
+            from models.certificate.metadata import MetadataError
             from models.certificate.uncertainty_json import (
                 certified_json,
                 merge_json,
@@ -418,6 +448,8 @@ def run_analyze(argv: list[str]) -> int:
         data["incomplete"] = None if incomplete is None else incomplete.as_dict()
         if comparison is not None:
             data["before_after"] = {"after_file": args.compare_after, **comparison.as_dict()}
+        import json  # only for --json and a certificate's details
+
         sys.stdout.write(json.dumps(_finite(data), indent=1, ensure_ascii=False) + "\n")
     else:
         say = words
@@ -481,6 +513,7 @@ def _with_reference_dcc(args: argparse.Namespace, kind, rows, settings, words):
     replaced; None after saying why the DCC was refused."""
     from app.dcc_issue import dcc_schema_dir
     from app.reference_dcc import reference_rows
+    from models.certificate.metadata import MetadataError
     from models.dcc.reader import DccError
     from models.dcc.signature import SigningError
 
@@ -515,6 +548,10 @@ def _read_metadata(path: str | None, error_unit: str = "arcsec", reference=None
                    ) -> CertificateMetadata:
     """The details in ``path``; a ``tolerance_arcsec`` written before the tolerance had its
     unit is read in ``error_unit``, the unit of the errors it was judged against."""
+    import json
+
+    from models.certificate.metadata import CertificateMetadata, MetadataError
+
     if reference is not None:
         from app.reference_dcc import with_reference
 
@@ -658,6 +695,7 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
     from app.certificate_issue import draft_reasons
     from app.dcc_issue import DccError
     from app.writers.results_export import write_results_csv, write_results_xlsx
+    from models.certificate.metadata import MetadataError
 
     words = translator(args.language)
     try:

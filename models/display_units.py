@@ -22,13 +22,15 @@ import math
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from models.messages import QT_TR_NOOP, Message, message
-from models.plots import PlotFigure
 from models.quantity import Quantity
+
+if TYPE_CHECKING:  # a plot's module is loaded by whoever draws one
+    from models.plots import PlotFigure
 
 __all__ = [
     "ANGLE_UNITS",

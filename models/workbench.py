@@ -40,16 +40,16 @@ from typing import TYPE_CHECKING, Any, ClassVar, Generic, TypeVar
 from models.certificate.traceability import test_report_statement, traceability_gaps
 from models.messages import QT_TR_NOOP, joined, listed, message, reason_of
 from models.parameters import Parameter, SettingsError, Shortcut, check_parameters
-from models.plots import PlotFigure
-from models.readings.entry_plan import EntryPlan
 from models.readings.incomplete import IncompleteUnit
 from models.readings.sheet import Column, ParsedReadings
 from models.sign_convention import SIGN_CONVENTION, SIGN_CONVENTION_TEXT
 from models.uncertainty.lab_scope import scope_statement
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # for their types only: a plain analyze draws no plot and plans no entry
     from models.certificate.document import CertificateDocument
     from models.certificate.metadata import CertificateMetadata
+    from models.plots import PlotFigure
+    from models.readings.entry_plan import EntryPlan
 
 __all__ = ["CAPABILITIES", "SIGN_CONVENTION", "SIGN_CONVENTION_TEXT", "AcceptsReference",
            "view_needs",

@@ -8,8 +8,12 @@ title and statements say so, naming what is missing.
 
 from __future__ import annotations
 
-from models.certificate.metadata import CertificateMetadata
+from typing import TYPE_CHECKING
+
 from models.messages import QT_TR_NOOP, message, separated
+
+if TYPE_CHECKING:  # the details' module is loaded by whoever hands them (not a plain analyze)
+    from models.certificate.metadata import CertificateMetadata
 
 __all__ = ["expired_standards", "expired_withheld", "test_report_statement", "traceability_gaps"]
 

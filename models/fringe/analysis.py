@@ -10,8 +10,8 @@ import numpy as np
 
 from models.cancellation import checkpoint
 from models.fringe import KEY, TITLE
-from models.fringe.export import write_correction_table
 from models.fringe.model import (
+    MODEL_INPUT,
     TWO_PI,
     ChannelFit,
     build_correction_table,
@@ -25,9 +25,8 @@ from models.fringe.model import (
     period_arcsec,
     refine_phase,
 )
+from models.fringe.order_statistics import distinct, median
 from models.fringe.phase import EllipseFit, fit_ellipse, unwrapped
-from models.fringe.plots import figures as fringe_figures
-from models.fringe.report import MODEL_INPUT, fringe_budget, fringe_certificate
 from models.fringe.result import FringeResult
 from models.fringe.signal_quality import default_window, signal_quality
 from models.fringe.unmodelled_harmonics import unmodelled_harmonics
@@ -272,7 +271,7 @@ ALIAS_CHECK_PHASES = 20_000
 
 def _folded_phases(theta_rad: np.ndarray) -> np.ndarray:
     """The distinct sample phases within one period (rad)."""
-    return np.unique(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
+    return distinct(np.round(np.mod(theta_rad, TWO_PI), 10) % np.round(TWO_PI, 10))
 
 
 def _rank_deficient(columns: np.ndarray) -> bool:
@@ -451,7 +450,7 @@ def analyze(parsed: ParsedReadings, settings: Mapping[str, Any]) -> FringeResult
     if source == "samples_per_period":
         check_record_covers_a_period(theta, TWO_PI / per_period)
     elif theta.size > 1:
-        check_record_covers_a_period(theta, float(np.median(np.abs(np.diff(theta)))))
+        check_record_covers_a_period(theta, median(np.abs(np.diff(theta))))
     pso_seconds, design = None, None
     phase_index = (np.rint(theta / (TWO_PI / per_period)).astype(np.intp) % per_period
                    if source == "samples_per_period" else None)
@@ -695,6 +694,8 @@ def summary(result: FringeResult) -> str:
 
 
 def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
+    from models.fringe.export import write_correction_table
+
     write_correction_table(path, result)
     return message(QT_TR_NOOP("Correction table, {n} entries (C header)") if str(path).endswith(".h")
                    else QT_TR_NOOP("Correction table, {n} entries (CSV)"), n=result.table.size)
@@ -752,6 +753,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
         return write_table(args, result, table)
 
     def certificate(self, result, metadata, source_name="", settings=None):
+        from models.fringe.report import fringe_certificate
+
         return fringe_certificate(result, metadata, source_name, self.method_reference, settings)
 
     def inputs_not_stated(self, result, metadata):
@@ -780,6 +783,8 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
             from models.fringe.report import ESTIMATED_PHASE_REASON
 
             raise ValueError(message(ESTIMATED_PHASE_REASON))
+        from models.fringe.report import fringe_budget
+
         u = result.unit
         return {f"raw_error_{u}": fringe_budget(result, metadata, as_found=True, settings=settings),
                 f"compensated_error_{u}": fringe_budget(result, metadata, settings=settings)}
@@ -792,7 +797,9 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
             return "arcsec"
 
     def overlay_figure(self, result):
-        return fringe_figures(result)["errors"]
+        from models.fringe.plots import figures  # the window's: a plot's module
+
+        return figures(result)["errors"]
 
     def verdict(self, r):
         return message(

@@ -26,6 +26,9 @@ from models.cancellation import checkpoint
 from models.fringe.harmonic_basis import BLOCK, BasisBlocks, blocks, phasor_of
 from models.messages import QT_TR_NOOP, message
 
+#: the budget's name of the fitted model's error (the correction table's)
+MODEL_INPUT = QT_TR_NOOP("Fitted model (correction table)")
+
 __all__ = [
     "ChannelFit",
     "CorrectionTable",

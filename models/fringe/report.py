@@ -48,7 +48,8 @@ from models.certificate.document import (
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.fringe import KEY, TITLE
 from models.fringe import plots as fringe_plots
-from models.fringe.model import (
+from models.fringe.model import (  # MODEL_INPUT: the compensation's own input
+    MODEL_INPUT,
     interpolation_error_rad,
     model_signal,
     model_signal_modes,
@@ -197,10 +198,6 @@ def untraceable_inputs(result, metadata: CertificateMetadata) -> list[str]:
         out.append(message(QT_TR_NOOP("the ADC's {figures} have no stated uncertainty"),
                            figures=listed(message(name) for name in missing)))
     return out
-
-
-#: the compensation's own input: the as-found (raw) error's budget is without it
-MODEL_INPUT = QT_TR_NOOP("Fitted model (correction table)")
 
 
 def fringe_budget(result, metadata: CertificateMetadata, as_found: bool = False,

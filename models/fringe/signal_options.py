@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
-import json
 import math
 from pathlib import Path
 from typing import Any
@@ -67,8 +66,6 @@ FLAGS = ("signal_preset", "signal_presets", "signal_window", "interpolator_table
 def setup(args: argparse.Namespace):
     """The preset and the table profile asked for (None when not); a message when the
     options do not hold (raised as ValueError)."""
-    from models.fringe.interpolator_export import FORMATS
-    from models.fringe.interpolator_table import chip_profile
     from models.fringe.signal_tolerance import (
         BUILTIN_PRESETS,
         LAB_DEFAULTS_KEY,
@@ -78,6 +75,8 @@ def setup(args: argparse.Namespace):
 
     presets = list(BUILTIN_PRESETS)
     if args.signal_presets:
+        import json  # only for a presets file
+
         try:
             with open(args.signal_presets, encoding="utf-8-sig") as handle:
                 stored = json.load(handle)
@@ -98,6 +97,11 @@ def setup(args: argparse.Namespace):
                                  n=args.signal_window))
     profile = None
     if args.interpolator_table:
+        # the table's modules (the writer's: its atomic write's tempfile) only when a table is
+        # asked for
+        from models.fringe.interpolator_export import FORMATS
+        from models.fringe.interpolator_table import chip_profile
+
         if Path(args.interpolator_table).suffix.lower() not in FORMATS:
             raise ValueError(message(QT_TR_NOOP("--interpolator-table: {path}: write .csv, .h or "
                                                 ".hex"), path=args.interpolator_table))
@@ -120,7 +124,6 @@ def setup(args: argparse.Namespace):
 
 def results(args, result, preset, profile):
     """(the JSON keys to add, the summary lines, the table or None) of the fringe options."""
-    from models.fringe.interpolator_table import design_table
     from models.fringe.signal_quality import default_window, signal_quality, tolerance_json
     from models.fringe.signal_tolerance import NOT_CONFORMITY, judge, signal_figures
 
@@ -153,6 +156,8 @@ def results(args, result, preset, profile):
         keys["signal_quality"] = quality.windows
         keys["signal_quality_units"] = quality.units
     if profile is not None:
+        from models.fringe.interpolator_table import design_table
+
         period = result.period_length
         asked = (None if args.table_max_residual is None
                  else args.table_max_residual / period)

@@ -30,9 +30,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.stats import f as f_distribution
 
 from models.fringe.model import ChannelFit, model_signal
+from models.fringe.order_statistics import distinct as _distinct
 
 __all__ = ["PHASE_BINS", "SIGNIFICANCE", "TESTED_UP_TO", "UnmodelledHarmonic",
            "quantisation_step", "unmodelled_harmonics"]
@@ -69,13 +69,24 @@ class UnmodelledHarmonic:
     p_value: float
 
 
+def f_survival_2(x: float, dof: float) -> float:
+    """P(F > ``x``) for Fisher's F with 2 and ``dof`` degrees of freedom: the closed form
+    (1 + 2x/ν)^(−ν/2) (the regularised incomplete beta I_z(ν/2, 1) = z^(ν/2)), what
+    ``scipy.stats.f.sf(x, 2, dof)`` gives (to 1e-14 relative down to p = 1e-6, where the
+    test decides; tests/models/fringe/test_unmodelled_harmonics.py) without importing
+    scipy.stats, half a second of a command line's start-up."""
+    if not x > 0.0:
+        return 1.0 if x <= 0.0 else math.nan
+    return math.exp(-0.5 * dof * math.log1p(2.0 * x / dof))
+
+
 def quantisation_step(values) -> float:
     """The step the readings come in (an ADC's least significant bit, in the readings' unit):
     the greatest step of which the differences between distinct readings are whole
     multiples (Euclid's algorithm with a tolerance, on the least of them), when every reading
     is a whole number of it from the least; 0 when there is none above a 10⁻⁹ of their span
     (a record with the digits of its noise)."""
-    distinct = np.unique(np.asarray(values, dtype=float))
+    distinct = _distinct(np.asarray(values, dtype=float))
     if distinct.size < 3:
         return 0.0
     span = float(distinct[-1] - distinct[0])
@@ -209,7 +220,7 @@ def unmodelled_harmonics(theta_rad, channels: dict[str, tuple[np.ndarray, Channe
             beta = coef[j:j + 2]
             added = float(beta @ np.linalg.solve(inverse[j:j + 2, j:j + 2], beta))
             statistic = max(added, 0.0) / 2.0 / variance
-            p = float(f_distribution.sf(statistic, 2, dof))
+            p = f_survival_2(statistic, dof)
             amplitude = float(math.hypot(coef[j], coef[j + 1]))
             if p < level and amplitude > max(step, NEGLIGIBLE_SHARE * float(fit.amplitude[1])):
                 # the amplitude's standard uncertainty: a reading's over the readings,

@@ -15,11 +15,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import Any, overload
+from typing import TYPE_CHECKING, Any, overload
 
-from models.capture.guidance import NextReading, degrees_text, point_groups, used_rows
 from models.messages import QT_TR_NOOP, message
 from models.readings.angles import parse_angle_deg
+
+if TYPE_CHECKING:  # the guide's module is loaded when a guide is asked for (the window's)
+    from models.capture.guidance import NextReading
 
 __all__ = ["polygon_guide"]
 
@@ -50,6 +52,8 @@ def _wrap(d: float) -> float:
 
 def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
                   settings: Mapping[str, Any], step: float = 0.0) -> NextReading:
+    from models.capture.guidance import NextReading, degrees_text, point_groups, used_rows
+
     n = max(1, int(settings.get("readings_per_point", 1) or 1))
     groups = point_groups(used_rows(rows), KEYS)
     uses_sets = any(g[0][1] for g in groups)

@@ -39,17 +39,15 @@ from models.polygon.model import (
     vertical_fits_noise,
     wrap_deg,
 )
-from models.polygon.plots import error_figure
 from models.polygon.rounding import horizontal_rounding
 from models.polygon.setup_statement import setup_statement
-from models.readings.entry_plan import polygon_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
-from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.rounding import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     AcceptsReference,
@@ -870,6 +868,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
     plan_reading_keys = ("encoder_deg", "ac_x_arcsec", "ac_y_arcsec")
 
     def entry_plan(self, settings):
+        from models.readings.entry_plan import polygon_plan  # the window's entry plan
+
         sets = int(settings.get("plan_sets", 0) or 0)
         if not sets:
             return None
@@ -910,6 +910,8 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
         return polygon_json_budgets(result, metadata, settings)
 
     def overlay_figure(self, result):
+        from models.polygon.plots import error_figure  # the window's: a plot's module
+
         return error_figure(result)
 
     def verdict(self, r):

@@ -7,11 +7,13 @@ technician sets θ and types it."""
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from models.capture.guidance import NextReading, point_groups, used_rows
 from models.messages import QT_TR_NOOP, message
 from models.readings.angles import parse_angle_deg
+
+if TYPE_CHECKING:  # the guide's module is loaded when a guide is asked for (the window's)
+    from models.capture.guidance import NextReading
 
 __all__ = ["theodolite_guide"]
 
@@ -27,6 +29,8 @@ def _angle(text: str) -> float | None:
 
 def theodolite_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
                      settings: Mapping[str, Any], step: float = 0.0) -> NextReading:
+    from models.capture.guidance import NextReading, point_groups, used_rows
+
     n = max(1, int(settings.get("readings_per_point", 1) or 1))
     groups = point_groups(used_rows(rows), KEYS)
     theta = str(current.get("theta_deg", "")).strip()

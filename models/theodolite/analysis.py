@@ -8,21 +8,17 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from models.certificate.metadata import CertificateMetadata
 from models.messages import QT_TR_NOOP, joined, lines, message
 from models.parameters import Parameter, SettingsError, Shortcut
-from models.plots import PlotFigure
-from models.readings.entry_plan import EntryPlan, targets_from_text, theodolite_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.readings.repeats import REPEATS_PARAMETER, average_repeats
 from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.theodolite import KEY, TITLE
 from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
-from models.theodolite.plots import error_figure
-from models.uncertainty.conformity import uncertainty_decimals
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.rounding import uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -36,6 +32,9 @@ from models.workbench import (
 
 if TYPE_CHECKING:  # the certificate's modules are loaded when a certificate is asked for
     from models.certificate.document import CertificateDocument
+    from models.certificate.metadata import CertificateMetadata
+    from models.plots import PlotFigure
+    from models.readings.entry_plan import EntryPlan
 
 __all__ = ["THEODOLITE"]
 
@@ -236,6 +235,7 @@ def to_json(result: TheodoliteResult) -> dict[str, Any]:
 def _intervals_line(result: TheodoliteResult) -> str:
     """The ISO 230-2 figures' coverage intervals (the stated standards' u not known here:
     the readings alone, at 95.45 %), or why there are none."""
+    from models.certificate.metadata import CertificateMetadata
     from models.theodolite.figures import figure_intervals_withheld, theodolite_figure_intervals
     from models.theodolite.report import theodolite_budget
     from models.uncertainty.budget import DEFAULT_COVERAGE_PROBABILITY
@@ -316,6 +316,8 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
     plan_reading_keys = ("azimuth_deg", "elevation_deg")
 
     def entry_plan(self, settings: Mapping[str, Any]) -> EntryPlan | None:
+        from models.readings.entry_plan import targets_from_text, theodolite_plan
+
         passes = int(settings.get("plan_passes", 0) or 0)
         if not passes:
             return None
@@ -361,6 +363,8 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
         return result.corrected_error_arcsec
 
     def overlay_figure(self, result: TheodoliteResult) -> PlotFigure:
+        from models.theodolite.plots import error_figure  # the window's: a plot's module
+
         return error_figure(result)
 
     def verdict(self, r: TheodoliteResult) -> str:

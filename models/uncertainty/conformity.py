@@ -39,6 +39,11 @@ import numpy as np
 from models.messages import QT_TR_NOOP, listed, message, separated
 from models.quantity import Quantity
 from models.uncertainty.budget import UncertaintyBudget
+from models.uncertainty.rounding import (
+    interval_decimals,
+    significant_decimals,
+    uncertainty_decimals,
+)
 
 __all__ = [
     "DECISION_QUANTITIES",
@@ -101,33 +106,6 @@ MAX_MONTE_CARLO_POINTS = 16_384
 #: the study and checks both; `anglebench validate` with fewer runs;
 #: tests/models/uncertainty/test_half_range_coverage.py a smoke version.
 HALF_RANGE_COVERAGE = {"smooth": 0.998, "rough": 0.988, "spike": 0.984, "sample": 0.985}
-
-
-def significant_decimals(expanded: float) -> int | None:
-    """Decimals that show U with at most two significant digits (GUM 7.2.6, JJF 1059.1),
-    after rounding (0.0996 is "0.10", not "0.100"); None if U is not a positive number.
-    Never negative: a U of 100 or more is printed to the unit."""
-    if not math.isfinite(expanded) or expanded <= 0:
-        return None
-    decimals = 1 - int(math.floor(math.log10(expanded)))
-    if round(expanded, decimals) >= 10.0 ** (2 - decimals) * (1 - 1e-12):
-        decimals -= 1  # rounding carried into a third digit
-    return max(0, decimals)
-
-
-def uncertainty_decimals(expanded: float) -> int:
-    """:func:`significant_decimals` (two significant digits of U at most); two decimals
-    where U is not a positive number (nothing to round to)."""
-    decimals = significant_decimals(expanded)
-    return 2 if decimals is None else decimals
-
-
-def interval_decimals(low: float, high: float) -> int:
-    """The decimal a figure and the ends of its coverage interval [``low``, ``high``] are
-    printed to: that which shows the interval's half-width, (high − low)/2, its U, with at
-    most two significant digits (GUM 7.2.6, JJF 1059.1): a figure with an interval 4″ wide
-    to 0.1″, not 0.001″. Two decimals where the interval has no width."""
-    return uncertainty_decimals((high - low) / 2.0)
 
 
 #: what a U of zero at a reference point is printed as (never "0.00")

@@ -14,13 +14,15 @@ range the scope does not cover), which a CMC alone does not say.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from models.messages import QT_TR_NOOP, message
 from models.parameters import Parameter
-from models.uncertainty.budget import UncertaintyBudget
+
+if TYPE_CHECKING:  # a budget's module is loaded by whoever makes one (not a plain analyze)
+    from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = ["cmc_of", "cmc_parameter", "scope_statement"]
 

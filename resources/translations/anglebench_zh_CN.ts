@@ -117,7 +117,7 @@
     </message>
     <message>
         <source>Fitted model (correction table)</source>
-        <extracomment>the compensation&apos;s own input: the as-found (raw) error&apos;s budget is without it</extracomment>
+        <extracomment>the budget&apos;s name of the fitted model&apos;s error (the correction table&apos;s)</extracomment>
         <translation>拟合模型（修正表）</translation>
     </message>
     <message>

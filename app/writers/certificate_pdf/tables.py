@@ -85,8 +85,8 @@ def _text_width(text: str) -> int:
 
 def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float
                       ) -> tuple[list[list], list[str]]:
-    """The table's cells with any too tall for a page cut to their first clause and a mark
-    ("… [1]"), and the whole texts to print below the table ("[1] Decided quantity: …")."""
+    """The table's cells with any too tall for a page replaced by a mark ("[1]"), and their
+    texts to print below the table ("[1] Decided quantity: …")."""
     per_char_mm = size * 0.19  # an 8 pt Latin character's mean advance is about 1.5 mm
     moved: list[str] = []
     out = [list(cells[0])]
@@ -97,10 +97,8 @@ def _long_cells_below(cells: list[list], widths: tuple[float, ...], size: float
                 continue
             lines = _text_width(cell) * per_char_mm / max(widths[j] - 2.0, 1.0) + cell.count("\n")
             if lines * size * 0.5 > _TALLEST_CELL_MM:
-                mark = f"[{len(moved) + 1}]"
-                first = cell.split("; ", 1)[0]
-                first = first if _text_width(first) < 160 else ""
-                row[j] = f"{first} … {mark}".strip() if first else mark
+                mark = f"[{len(moved) + 1}]"  # the text once, below: no figure twice
+                row[j] = mark
                 moved.append(f"{mark} {row[0]}: {cell}" if j else f"{mark} {cell}")
         out.append(row)
     return out, moved

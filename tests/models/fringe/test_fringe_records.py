@@ -199,3 +199,26 @@ def test_drift_is_fitted_along_the_actual_phase():
     assert result.phase_source == "theta_column"
     assert result.sin_periods.shape[0] > 30
     assert np.ptp(result.sin_periods[:, 1]) < 1e-9  # no drift, not 586 mV
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 7, 8, 511, 512, 10_001])
+def test_the_step_s_median_is_numpy_s(n):
+    # the sampling step of a θ column, the distinct phases and readings
+    # (models/fringe/order_statistics.py: without the masked arrays numpy's own functions
+    # import): numpy's values, bit for bit, ties, NaN and infinities included
+    from models.fringe.order_statistics import distinct, median
+
+    rng = np.random.default_rng(n)
+    for trial in range(40):
+        x = np.abs(rng.standard_normal(n)) * 10.0 ** rng.uniform(-9, 9)
+        if trial % 4 == 1:
+            x = np.round(x, 1)
+        if trial % 5 == 2:
+            x[rng.integers(n)] = np.nan
+        if trial % 7 == 3:
+            x[rng.integers(n)] = np.inf
+        ours, theirs = median(x), float(np.median(x))
+        assert ours == theirs or (math.isnan(ours) and math.isnan(theirs)), (n, trial)
+        np.testing.assert_array_equal(distinct(x), np.unique(x))  # NaN equal to NaN
+        assert distinct(x).dtype == np.unique(x).dtype
+    assert distinct(np.array([])).size == 0

@@ -205,3 +205,21 @@ def test_a_record_too_short_is_still_refused_for_its_length(tmp_path, capsys):
     assert main(["analyze", "fringe", str(path), "--json", "--max-order", "1"]) == 2
     err = capsys.readouterr().err
     assert "of a period" in err and "distinct phases" not in err, err
+
+
+@pytest.mark.parametrize("dof", [1, 2, 3, 5, 10, 30, 100, 448, 1000, 10**5, 10**7])
+def test_the_f_test_s_closed_form_is_scipy_s_f_distribution(dof):
+    # the F test with 2 degrees of freedom in its numerator, in closed form (no scipy.stats
+    # at a command line's start-up): the same p values as scipy's F distribution
+    from scipy.stats import f
+
+    from models.fringe.unmodelled_harmonics import f_survival_2
+
+    x = np.concatenate([[0.0], np.logspace(-12, 4, 300)])
+    ours = np.array([f_survival_2(float(v), dof) for v in x])
+    theirs = f.sf(x, 2, dof)
+    decisive = theirs > 1e-6  # where p is compared with the test's level
+    np.testing.assert_allclose(ours[decisive], theirs[decisive], rtol=1e-14, atol=0)
+    np.testing.assert_allclose(ours, theirs, rtol=1e-12, atol=1e-300)
+    assert f_survival_2(0.0, dof) == 1.0 and math.isnan(f_survival_2(math.nan, dof))
+    assert f_survival_2(math.inf, dof) == 0.0
