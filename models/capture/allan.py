@@ -22,9 +22,10 @@ import numpy as np
 
 __all__ = ["GAP_FACTOR", "allan_deviation", "last_even_run", "octave_factors"]
 
-#: an interval longer than this many times the stream's median interval is a gap: a polled
-#: instrument's replies jitter by a fraction of their interval, a reconnection takes many
-GAP_FACTOR = 2.0
+#: an interval longer than this many times the stream's typical interval is a gap: a polled
+#: instrument's replies jitter (on a loaded PC by more than their interval), a pause or a
+#: reconnection takes many
+GAP_FACTOR = 3.0
 
 
 def octave_factors(n: int) -> np.ndarray:
@@ -56,10 +57,11 @@ def allan_deviation(values, tau0_s: float, factors=None) -> tuple[np.ndarray, np
 def last_even_run(times_s, gap_factor: float = GAP_FACTOR) -> int:
     """The index of the first frame of the stream's last evenly spaced run (``times_s`` in
     seconds, ascending): after the last interval longer than ``gap_factor`` times the
-    typical one (a gap), shorter than a ``2 gap_factor``-th of it (the instrument's rate
-    changed) or not positive (a clock that went back, a time repeated). The typical
-    interval is the median of the newest 64, so a rate set anew is soon the rule and the
-    frames at the old rate the exception. 0 when the whole stream is one run."""
+    typical one (a gap: a pause, a link lost, frames at a slower rate before the rate was
+    raised) or not positive (a clock that went back, a time repeated). The typical interval
+    is the median of the newest 64. A rate lowered is not a gap: its faster frames stay in
+    the series until they leave the panel's window of frames. 0 when the whole stream is
+    one run."""
     t = np.asarray(times_s, dtype=float)
     if t.ndim != 1:
         raise ValueError("the frames' times must be one series")
@@ -69,6 +71,5 @@ def last_even_run(times_s, gap_factor: float = GAP_FACTOR) -> int:
     typical = float(np.median(steps[-64:]))
     if not typical > 0:  # the newest frames share a time: no spacing to go by
         return len(t)
-    even = (steps >= typical / (2.0 * gap_factor)) & (steps <= gap_factor * typical)
-    breaks = np.flatnonzero(~even)
+    breaks = np.flatnonzero(~((steps > 0) & (steps <= gap_factor * typical)))
     return int(breaks[-1]) + 1 if len(breaks) else 0

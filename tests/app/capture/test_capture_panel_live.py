@@ -216,8 +216,8 @@ def test_a_direction_at_zero_spreads_by_its_noise_not_by_360_degrees(window, qtb
     panel = window.capture_panel
     with TheodoliteSimulator("tcp", positions=[(0.0, 90.0)], sigma=0.5) as sim:
         panel.connect_to("theodolite", sim.port, **FAST)
-        qtbot.waitUntil(lambda: panel.allan.text() != "" and panel.stability.text() != "",
-                        timeout=8000)
+        qtbot.waitUntil(lambda: " s)" in panel.allan.text() and panel.stability.text() != "",
+                        timeout=8000)  # figures, not "waiting for frames after the gap"
         spread = [float(v) for v in panel.stability.text().split(":")[1].replace('"', "").split()]
         allan = [float(part.split("(")[0]) for part in panel.allan.text().split(":")[1].split(",")]
         panel.disconnect_instrument()
