@@ -61,12 +61,12 @@ def figure_column(header: str, values, expanded) -> Column:
 
 def difference_column(header: str, values, less, expanded, less_expanded=None) -> Column:
     """The column of ``values`` − ``less`` (a correction: the corrected less the raw error;
-    a reversal x̄↑ − x̄↓) as the table prints them: each point's two figures rounded to the
-    decimal of its U (``less_expanded``: the second's own, if not the same), as
-    :func:`figure_column` prints them, and this one their difference, to the coarser of the
-    two decimals, so that the table's "corrected = raw + correction" adds up as printed
-    (GUM 7.2.6: both results keep their own rounding; the difference printed is within one
-    in its last digit of its own)."""
+    a reversal x̄↑ − x̄↓), each point's difference computed from the unrounded figures and
+    rounded, as every figure is, on its own (GUM 7.2.6), to the coarser of the decimals
+    the two figures are printed to (``less_expanded``: the second's U, if not the same). So
+    a printed sum may differ from its printed parts by one in the last digit; the other
+    way — the difference of the rounded figures — printed a correction of 0.00001″ as
+    +0.01″ and one correction two ways in one table (#61 assessor's re-check, N1)."""
     less_expanded = expanded if less_expanded is None else less_expanded
     rows = list(zip(values, less, expanded, less_expanded, strict=True))
 
@@ -75,7 +75,7 @@ def difference_column(header: str, values, less, expanded, less_expanded=None) -
         for v, w, u, uw in rows:
             a, b = rounded_cells((v,), u, shown)[0][0], rounded_cells((w,), uw, shown)[0][0]
             d = min(len(a.partition(".")[2]), len(b.partition(".")[2]))
-            out.append(format(round(float(a) - float(b), d) + 0.0, f"+.{d}f"))  # no "-0.0"
+            out.append(format(round(float(v) - float(w), d) + 0.0, f"+.{d}f"))  # no "-0.0"
         return out
     return Column(header, cells)
 
