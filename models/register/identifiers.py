@@ -16,7 +16,7 @@ import unicodedata
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["IdentifierError", "identifier_key", "normalise_identifier"]
+__all__ = ["IdentifierError", "identifier_key", "normalise_identifier", "serial_key"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -57,3 +57,13 @@ def identifier_key(text: str) -> str:
     keys print alike."""
     key = (text or "").translate(_LOOKALIKES).casefold().rstrip(_TRAILING).rstrip()
     return _DIGITS.sub(lambda digits: str(int(digits.group())), key)
+
+
+_SEPARATORS = re.compile(r"[\s\-_/.:]+")
+
+
+def serial_key(text: str) -> str:
+    """What makes two serial numbers one item's: :func:`identifier_key` without the
+    separators a serial is typed with or without ("RX260815" is "RX-26-0815"; #61
+    re-check: the same item issued again got past the one-calibration check that way)."""
+    return _SEPARATORS.sub("", identifier_key(text))

@@ -800,9 +800,9 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike (identifier_key; the same description and manufacturer too where there is
-        none)."""
-        from models.register.identifiers import identifier_key
+        alike, separators aside (serial_key; the same description and manufacturer too where
+        there is none)."""
+        from models.register.identifiers import serial_key
 
         c = self._schema.CERTIFICATES.c
         query = self._sa.select(c.number, c.item_serial).where(
@@ -811,9 +811,9 @@ class Register:
         if not meta.item_serial:
             query = query.where(c.item_description == meta.item_description,
                                 c.item_manufacturer == meta.item_manufacturer)
-        key = identifier_key(meta.item_serial)
+        key = serial_key(meta.item_serial)
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                     if identifier_key(row.item_serial) == key)
+                     if serial_key(row.item_serial) == key)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)

@@ -3075,6 +3075,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{what}，原证书作废；原证书存档，内容不变。</translation>
     </message>
     <message>
+        <source>A calibration of its own, separate from certificates {numbers} of the same item and date of calibration, which stay valid: {reason}</source>
+        <translation>本证书是一次独立的校准，有别于同一被校件、同一校准日期的证书 {numbers}（这些证书仍然有效）：{reason}</translation>
+    </message>
+    <message>
         <source>A calibration of its own, separate from certificate {numbers} of the same item and date of calibration, which stays valid: {reason}</source>
         <translation>本证书是一次独立的校准，有别于同一被校件、同一校准日期的证书 {numbers}（该证书仍然有效）：{reason}</translation>
     </message>
@@ -8687,9 +8691,9 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>互校准（多面棱体 + 编码器）</translation>
     </message>
     <message>
-        <source>face deviation d_i = the face&apos;s angle − its nominal (actual − nominal), i.e. reference − indicated, as a material measure indicates its nominal value (VIM 3.6 Note 3): the negative of an error of indication; the face&apos;s angle = nominal + d_i</source>
-        <extracomment>The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6 Note 3), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
-        <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即 参考值 − 示值，因实物量具的示值即其标称值（VIM 3.6 注 3）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
+        <source>face deviation d_i = the face&apos;s angle − its nominal (actual − nominal), i.e. reference − indicated, as a material measure indicates its nominal value (VIM 3.6): the negative of an error of indication; the face&apos;s angle = nominal + d_i</source>
+        <extracomment>The polygon&apos;s face deviation is signed actual − nominal, the sign its certificate feeds the polygon workbench with (dev_i in b_i = (i−1)·360°/n + dev_i). A material measure indicates its nominal value (VIM 3.6), so d_i = actual − indicated: the negative of an error of indication, an exception to the other workbenches&apos; sign stated as positioning states its own. The encoder&apos;s error of the same run keeps error = indicated − reference.</extracomment>
+        <translation>面偏差 d_i = 工作面的角度 − 其标称值（实际值 − 标称值），即 参考值 − 示值，因实物量具的示值即其标称值（VIM 3.6）：为示值误差的负值；工作面的角度 = 标称值 + d_i</translation>
     </message>
     <message>
         <source>full rosette, 24 faces, σ = 0.02&quot;: u = σ√(n − 1)/n (Estler)</source>

@@ -86,6 +86,11 @@ def separate_statement(meta) -> str:
     """An original for the item and date of calibration of certificates still valid: it
     names them and says why it is a calibration of its own (ISO/IEC 17025 7.8.8: a reader of
     either learns of the other; two originals of one calibration are never issued)."""
+    if "," in meta.separate_from:  # more than one still valid
+        return message(QT_TR_NOOP("A calibration of its own, separate from certificates "
+                                  "{numbers} of the same item and date of calibration, which "
+                                  "stay valid: {reason}"),
+                       numbers=meta.separate_from, reason=meta.change_note)
     return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
                               "of the same item and date of calibration, which stays valid: "
                               "{reason}"), numbers=meta.separate_from, reason=meta.change_note)

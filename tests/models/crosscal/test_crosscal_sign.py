@@ -1,7 +1,7 @@
 """The cross-calibration certificate of a polygon states the sign it tabulates (review 61, F3).
 
 Its results are the face deviations d_i = the face's angle − its nominal. A polygon is a
-material measure: it indicates its nominal angle (VIM 3.6 Note 3), so d_i is actual −
+material measure: it indicates its nominal angle (VIM 3.6), so d_i is actual −
 indicated, the negative of an error of indication. The certificate printed the other
 workbenches' "error = indicated − reference" above them (PDF, XLSX, DCC) and the JSON named
 only that convention; the numbers are right (they feed the polygon workbench as dev_i in

@@ -603,6 +603,8 @@ def test_a_serial_that_prints_alike_is_the_same_item(register):
         register.issue(request(_meta(item_serial="R\u0425-1")), render, separate_calibration="")
     with pytest.raises(SameCalibrationIssued):
         register.issue(request(_meta(item_serial="rx-1")), render, separate_calibration="")
+    with pytest.raises(SameCalibrationIssued):  # typed without its separators
+        register.issue(request(_meta(item_serial="RX0001")), render, separate_calibration="")
 
 
 def test_amendments_count_only_amendments(register):
