@@ -560,7 +560,11 @@ def summary(result: PositioningResult) -> str:
     out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym, decimals))
     if intervals:
         shown = [k for k in (*keys, *VDI_KEYS) if k in intervals]
-        parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %): "),
+        # without the certificate's details: the readings and their stated inputs only (a
+        # certificate adds its reference standards' U, and its intervals are wider: #61)
+        parts: list = [message(QT_TR_NOOP("Coverage intervals ({p} %, from the readings "
+                                          "without the reference standards' U; a "
+                                          "certificate's include it): "),
                                p=f"{100 * DEFAULT_COVERAGE_PROBABILITY:.2f}")]
         for i, key in enumerate(shown):
             iv = intervals[key]

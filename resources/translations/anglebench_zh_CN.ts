@@ -155,7 +155,7 @@
     </message>
     <message>
         <source>As found ({unit})</source>
-        <translation>校准前 ({unit})</translation>
+        <translation>补偿前 ({unit})</translation>
     </message>
     <message>
         <source>Correction ({unit})</source>
@@ -171,7 +171,7 @@
     </message>
     <message>
         <source>U as found ({unit})</source>
-        <translation>U 校准前 ({unit})</translation>
+        <translation>补偿前的 U ({unit})</translation>
     </message>
     <message>
         <source>phase from {n} equal steps a period</source>
@@ -187,7 +187,7 @@
     </message>
     <message>
         <source>Interpolation error as found</source>
-        <translation>校准前细分误差</translation>
+        <translation>补偿前细分误差</translation>
     </message>
     <message>
         <source>After compensation (as left)</source>
@@ -207,7 +207,7 @@
     </message>
     <message>
         <source>as-found interpolation error</source>
-        <translation>校准前细分误差</translation>
+        <translation>补偿前细分误差</translation>
     </message>
     <message>
         <source>samples</source>
@@ -4835,6 +4835,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>没有任何目标位置在同一方向上趋近两次：未评定重复性（R）、准确度（A）和位置分散度 Ps。</translation>
     </message>
     <message>
+        <source>Coverage intervals ({p} %, from the readings without the reference standards&apos; U; a certificate&apos;s include it): </source>
+        <translation>包含区间（{p} %，仅由读数得出，未计参考标准器的 U；证书中的区间计入了它）：</translation>
+    </message>
+    <message>
         <source>a target was approached fewer than twice in a direction: its standard deviation is unknown, so no figure has a coverage interval</source>
         <extracomment>why the figures have no coverage interval</extracomment>
         <translation>有目标位置在某一方向趋近少于两次：其标准偏差未知，因此各项指标均无包含区间</translation>
@@ -4862,10 +4866,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>   *** fewer than 5 runs: flagged ***</source>
         <translation>   *** 少于 5 次测量：已标注 ***</translation>
-    </message>
-    <message>
-        <source>Coverage intervals ({p} %): </source>
-        <translation>包含区间（{p} %）：</translation>
     </message>
     <message>
         <source>No coverage intervals: {reason}</source>
@@ -7565,11 +7565,11 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>as-found interpolation error (fitted model, whole period)</source>
-        <translation>校准前细分误差（拟合模型，整个周期）</translation>
+        <translation>补偿前细分误差（拟合模型，整个周期）</translation>
     </message>
     <message>
         <source>Conformity is judged on the interpolation error as found. The compensated error is not the item&apos;s unless the table is loaded into it (table sha256 {sha}).</source>
-        <translation>符合性按校准前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
+        <translation>符合性按补偿前的细分误差判定。除非修正表已载入被校对象，补偿后误差不是被校对象的误差（修正表 sha256 {sha}）。</translation>
     </message>
     <message>
         <source>The compensated error is the error the correction table is expected to leave, if the signals stay as they were measured.</source>
