@@ -48,10 +48,14 @@ def certificate_picture(kind: str, scratch: Path, chinese_number: str = "") -> P
     pdf = scratch / f"{name}.pdf"
     from models.registry import KINDS
 
+    # the Chinese one into a register of its own: the scratch register holds the English
+    # certificate of the same calibration, and a second original of it is refused (#61)
+    env = ({**os.environ, "ANGLEBENCH_REGISTER": f"sqlite:///{scratch / 'register_zh.sqlite'}"}
+           if chinese_number else None)
     subprocess.run([sys.executable, "-m", "app.main", "analyze", kind,
                     str(SAMPLES / KINDS[kind].sample_file), "--certificate", str(pdf),
                     "--metadata", str(details), *_sample_flags(kind)],
-                   check=True, stdout=subprocess.DEVNULL)
+                   check=True, stdout=subprocess.DEVNULL, env=env)
     subprocess.run(["pdftoppm", "-png", "-r", "60", "-f", "1", "-l", "3", str(pdf),
                     str(scratch / name)], check=True)
     pages = [QImage(str(p)) for p in sorted(scratch.glob(f"{name}-*.png"))]
