@@ -127,9 +127,9 @@ def _parser(words) -> argparse.ArgumentParser:
     return p
 
 
-def _checker(record) -> str:
-    """The checker (核验员) of the certificate's details, from the project state recorded
-    with it; empty when the lab's template has none."""
+def _detail(record, key: str) -> str:
+    """A certificate detail (``checker``, ``separate_from``) from the project state recorded
+    with it (the record has no column for it); empty when it has none."""
     from models.project.file import project_from_json
     from models.registry import KINDS
 
@@ -138,8 +138,14 @@ def _checker(record) -> str:
             record.workbench]
     except (TypeError, ValueError, KeyError):
         return ""
-    checker = details.get("checker", "") if isinstance(details, dict) else ""
-    return checker if isinstance(checker, str) else ""
+    value = details.get(key, "") if isinstance(details, dict) else ""
+    return value if isinstance(value, str) else ""
+
+
+def _checker(record) -> str:
+    """The checker (核验员) of the certificate's details; empty when the lab's template has
+    none."""
+    return _detail(record, "checker")
 
 
 def _print_record(record, register, words) -> None:
@@ -156,6 +162,15 @@ def _print_record(record, register, words) -> None:
     if checker:  # kept in the project state recorded with it (the record has no column)
         lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
             QT_TR_NOOP("checker")), value=checker))
+    # what an amendment changed, or why a calibration of its own is separate, and from which
+    # certificates (#61 re-check: the link was on the PDF only)
+    separate = _detail(record, "separate_from")
+    if separate:
+        lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
+            QT_TR_NOOP("separate_from")), value=separate))
+    if record.change_note:
+        lines.append(message(QT_TR_NOOP("  {field}: {value}"), field=message(
+            QT_TR_NOOP("change_note")), value=record.change_note))
     lines.append(message(QT_TR_NOOP("  chain head before it (printed on it): {head}"),
                          head=register.chain_before(record.number)))
     for name, value in record.headline.items():  # a figure's name as the certificate has it

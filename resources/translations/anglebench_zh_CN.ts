@@ -2810,6 +2810,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>核验员</translation>
     </message>
     <message>
+        <source>separate_from</source>
+        <translation>独立于</translation>
+    </message>
+    <message>
+        <source>change_note</source>
+        <translation>更改说明</translation>
+    </message>
+    <message>
         <source>  chain head before it (printed on it): {head}</source>
         <translation>  其前的链头（印在证书上）：{head}</translation>
     </message>

@@ -378,4 +378,8 @@ def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir,
     with Register(register_url()) as register:
         assert register.get(f"AB-{year}-0002").change_note.startswith("as left")
         assert register.get(first).status == "issued"
+    assert main(["register", "show", f"AB-{year}-0002"]) == 0  # the link in the register too
+    shown = capsys.readouterr().out
+    assert f"separate_from: {first}" in shown
+    assert "change_note: as left, after the read head was adjusted" in shown
     assert meta["item_serial"]  # the sample names its item: the check had a serial to go by
