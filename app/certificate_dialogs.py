@@ -12,11 +12,19 @@ from pathlib import Path
 from typing import Any
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QApplication, QDialog, QFileDialog, QInputDialog, QMessageBox
+from PySide6.QtWidgets import (
+    QApplication,
+    QDialog,
+    QFileDialog,
+    QInputDialog,
+    QLabel,
+    QMessageBox,
+)
 
 from models.certificate.metadata import CertificateMetadata
 from widgets.certificate_dialog import CertificateDialog
 from widgets.i18n import tr
+from widgets.screen_fit import fit_to_screen
 
 __all__ = ["CertificateDialogs", "with_chosen_suffix"]
 
@@ -92,12 +100,24 @@ class CertificateDialogs:
         return text if ok else ""
 
     def ask_separate_calibration(self, numbers, reason: str) -> str:
-        text, ok = QInputDialog.getMultiLineText(self.window, tr("A calibration already reported"), tr(
+        return self._multiline_answer(tr("A calibration already reported"), tr(
             "{reason}.\n\nIf this is a calibration of its own, say why (printed on the "
             "certificate with the number of {numbers}, which stays valid); to correct {numbers}, "
             "cancel and amend or replace it from File › Certificate register.").format(
                 reason=reason, numbers=", ".join(numbers)))
-        return text if ok else ""
+
+    def _multiline_answer(self, title: str, question: str) -> str:
+        """A question answered in a few lines of text ("" when cancelled), its words wrapped
+        and the dialog no wider than the screen (QInputDialog's own label does not wrap: the
+        register's refusal made it 2096 px wide on a 1280 px screen)."""
+        dialog = QInputDialog(self.window)
+        dialog.setWindowTitle(title)
+        dialog.setLabelText(question)
+        dialog.setOption(QInputDialog.InputDialogOption.UsePlainTextEditForTextInput)
+        for label in dialog.findChildren(QLabel):
+            label.setWordWrap(True)
+        fit_to_screen(dialog, 560 * dialog.logicalDpiX() // 96, dialog.sizeHint().height())
+        return dialog.textValue() if dialog.exec() == QDialog.DialogCode.Accepted else ""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
         path, chosen = QFileDialog.getSaveFileName(

@@ -74,3 +74,28 @@ def test_certificate_questions_and_the_suffix_of_the_file_type_chosen(tmp_path):
                     return_value=("typo", False)) as note:
         assert dialogs.ask_change_note(PendingRevision("polygon", "AB-1", replacement=True)) == ""
     assert "This certificate replaces AB-1." in note.call_args.args[2]
+
+
+def test_the_separate_calibration_question_wraps_and_fits_the_screen(qtbot):
+    """The register's refusal is a long sentence: QInputDialog's own label does not wrap, and
+    the question was 2096 px wide on a 1280 px screen (#61, looked at under Xvfb)."""
+    from PySide6.QtCore import QTimer
+    from PySide6.QtWidgets import QApplication, QInputDialog
+
+    from widgets.screen_fit import available_size
+
+    dialogs = CertificateDialogs(None)  # no window: the dialog's own screen
+    seen = {}
+
+    def answer():
+        dialog = QApplication.activeModalWidget()
+        assert isinstance(dialog, QInputDialog)
+        seen["width"], seen["free"] = dialog.width(), available_size(dialog)[0]
+        dialog.setTextValue("as left after the adjustment")
+        dialog.accept()
+
+    QTimer.singleShot(200, answer)
+    reason = "AB-2026-0001 already reports this calibration " + "(a long reason) " * 40
+    assert dialogs.ask_separate_calibration(("AB-2026-0001",), reason) == \
+        "as left after the adjustment"
+    assert seen["width"] <= seen["free"]
