@@ -272,13 +272,7 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
         "the record (SHA-256)"), path=path, number=record.number,
         issued_at=record.issued_at, status=status_words(record.status)))
-    if record.superseded_by:
-        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
-                               "see 'anglebench register show {by}')"), path=path,
-                    number=record.number, by=record.superseded_by))
-    if record.status == "withdrawn":
-        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
-                    path=path, number=record.number, reason=record.withdrawn_reason or "—"))
+    _say_if_no_longer_valid(record, path, out)
     printed = "" if is_dcc else head_in_pdf(data)
     if printed and printed != register.chain_before(record.number):
         out(message(QT_TR_NOOP(
@@ -287,6 +281,17 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             number=record.number, actual=register.chain_before(record.number)))
         failed = True
     return 1 if failed else 0
+
+
+def _say_if_no_longer_valid(record, path: str, out) -> None:
+    """A verified file's certificate superseded or withdrawn since: said, naming why."""
+    if record.superseded_by:
+        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
+                               "see 'anglebench register show {by}')"), path=path,
+                    number=record.number, by=record.superseded_by))
+    if record.status == "withdrawn":
+        out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
+                    path=path, number=record.number, reason=record.withdrawn_reason or "—"))
 
 
 def _verify_results(register, path: str, data: bytes, out) -> int:
@@ -304,14 +309,7 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "{path}: the results file of certificate {number}, recorded {recorded_at}, "
             "{status}; identical to the record (SHA-256)"), path=path, number=record.number,
             recorded_at=recorded_at, status=status_words(record.status)))
-        if record.superseded_by:
-            out(message(QT_TR_NOOP("{path}: {number} is no longer valid: superseded by {by} ("
-                                   "see 'anglebench register show {by}')"), path=path,
-                        number=record.number, by=record.superseded_by))
-        if record.status == "withdrawn":
-            out(message(QT_TR_NOOP("{path}: {number} is no longer valid: withdrawn ({reason})"),
-                        path=path, number=record.number,
-                        reason=record.withdrawn_reason or "—"))
+        _say_if_no_longer_valid(record, path, out)
     return 0
 
 

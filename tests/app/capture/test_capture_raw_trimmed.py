@@ -18,6 +18,7 @@ import app.capture.panel as panel_module
 from app.capture.worker import CaptureWorker, Fault, Reading
 from app.certificate_issue import readings_edited_after_capture
 from models.capture.raw_record import FRAMES_PER_BLOCK, raw_digest, sessions_json_pieces
+from tests.app.capture.test_capture_workbench_switch import _show, _start
 from tests.instrument_simulators import AutocollimatorSimulator
 
 pytestmark = pytest.mark.slow  # a window and ~10^5 lines through its drain
@@ -82,18 +83,6 @@ class Stream:
         self.k += 1
         self.worker._keep(round(0.01 * self.k + 0.0004, 6), b"03 12.5", False)
         self.sent.append((round(0.01 * self.k + 0.0004, 6), b"03 12.5", False))
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
-
-
-def _start(presenter):
-    model = presenter.table_model
-    model.replace_all([], "empty")
-    keys = [c.key for c in model.sheet.columns]
-    presenter.view.table.setCurrentIndex(model.index(0, keys.index("ac_x_arcsec")))
 
 
 def _drain(panel, stream: Stream, held: list[int]) -> None:
