@@ -11,6 +11,7 @@ import math
 
 import pytest
 
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # a window and an instrument: more than 0.4 s
@@ -25,11 +26,6 @@ def _axis_error_arcsec(target_deg: float, direction: str, run: int) -> float:
     ±4″ and a run-to-run shift of 0.5″ (what the reference readout sees)."""
     return 25.0 * math.sin(math.radians(3.0 * target_deg)) \
         + (4.0 if direction == "+" else -4.0) + 0.5 * (run - 1)
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def test_takes_follow_the_positioning_plan(window, qtbot):

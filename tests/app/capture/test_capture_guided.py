@@ -18,6 +18,7 @@ from PySide6.QtCore import Qt, QTimer
 from models.certificate.metadata import CertificateMetadata
 from models.readings.angles import parse_angle_deg
 from models.readings.sheet import ReadingsSheet
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
@@ -28,11 +29,6 @@ META = CertificateMetadata.from_dict({"standards": [
 TYPE_A = "Repeated readings (s/√n)"
 #: an 8-face polygon read once round and closed: AC x at each face (arcsec)
 AC_X = [3.0, -2.0, 5.0, 1.0, -4.0, 2.5, 0.5, -1.5, 3.0]
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def _auto_take_on_an_empty_polygon(window, dwell_s: float):

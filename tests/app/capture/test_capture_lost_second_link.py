@@ -13,17 +13,13 @@ from PySide6.QtCore import QTimer
 
 from app.capture.instruments import frame_values
 from models.readings.angles import parse_angle_deg
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # a window and two instruments for seconds
 
 #: the link gives up after 4 tries (~1.5 s) while the readout is silent for 2.5 s
 FAST = {"silence_s": 0.3, "retries": 4, "retry_pause_s": 0.05}
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def _column(model, key):

@@ -7,16 +7,12 @@ from __future__ import annotations
 
 import pytest
 
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
 
 pytestmark = pytest.mark.slow  # a window and an instrument: more than 0.4 s
 
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def _text(model, row, key):

@@ -7,14 +7,10 @@ from __future__ import annotations
 
 import pytest
 
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import TheodoliteSimulator
 
 pytestmark = pytest.mark.slow  # a window and an instrument: more than 0.4 s
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def test_one_frame_never_fills_two_rows(window, qtbot):

@@ -8,16 +8,12 @@ import time
 
 import pytest
 
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def test_take_reading_fills_the_polygon_row_as_one_undo_step(window, qtbot):

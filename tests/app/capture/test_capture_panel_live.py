@@ -11,6 +11,7 @@ import pytest
 from PySide6.QtCore import QSettings
 
 from app.capture.panel import ConnectDialog
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import (
     AutocollimatorSimulator,
     ReadoutSimulator,
@@ -20,11 +21,6 @@ from tests.instrument_simulators import (
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, instruments)
 
 FAST = {"silence_s": 0.2, "retries": 1, "retry_pause_s": 0.05}
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def _cells(model, row, keys, names):

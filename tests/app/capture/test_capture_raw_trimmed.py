@@ -18,7 +18,8 @@ import app.capture.panel as panel_module
 from app.capture.worker import CaptureWorker, Fault, Reading
 from app.certificate_issue import readings_edited_after_capture
 from models.capture.raw_record import FRAMES_PER_BLOCK, raw_digest, sessions_json_pieces
-from tests.app.capture.test_capture_workbench_switch import _show, _start
+from tests.app.capture.test_capture_workbench_switch import _start
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator
 
 pytestmark = pytest.mark.slow  # a window and ~10^5 lines through its drain

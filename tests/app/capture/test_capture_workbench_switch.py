@@ -10,16 +10,12 @@ import pytest
 
 from app.capture.instruments import frame_values
 from app.certificate_issue import readings_edited_after_capture
+from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator
 
 pytestmark = pytest.mark.slow  # a window and an instrument for seconds
 
 FAST = {"silence_s": 0.3, "retries": 4, "retry_pause_s": 0.05}
-
-
-def _show(window, key):
-    window.tabs.setCurrentIndex(window.presenters.index(window.presenter(key)))
-    return window.presenter(key)
 
 
 def _start(presenter):
