@@ -6,7 +6,9 @@ read as its certificate. Pure: lxml only, no Qt.
   polygon workbench takes it in place of the readings' deviation column.
 - :func:`read_standard_dcc`: any standard's certificate (any maker's): its id
   (``coreData/uniqueIdentifier``), calibration date (``endPerformanceDate``), the largest
-  expanded uncertainty of its results, and its due date when a validity statement gives one.
+  expanded uncertainty of the results that are the standard's errors (or deviations, or
+  measured values) — not of a fitted set-up parameter — and its due date when a validity
+  statement gives one.
 
 Every refusal is a :class:`DccError` naming the file and why: the schema (when a folder is
 given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
@@ -104,7 +106,7 @@ class StandardCertificate:
     certificate_id: str
     calibration_date: str
     due_date: str  # "" when not stated
-    uncertainty: float | None  # the largest expanded U of its results, in ``unit``
+    uncertainty: float | None  # the largest expanded U of its errors' results, in ``unit``
     unit: str  # "arcsec" or "um" (keys of models.quantity.UNITS)
     coverage_factor: float | None
     coverage_probability: float | None
