@@ -6,7 +6,9 @@ read as its certificate. Pure: lxml only, no Qt.
   polygon workbench takes it in place of the readings' deviation column.
 - :func:`read_standard_dcc`: any standard's certificate (any maker's): its id
   (``coreData/uniqueIdentifier``), calibration date (``endPerformanceDate``), the largest
-  expanded uncertainty of its results, and its due date when a validity statement gives one.
+  expanded uncertainty of the results that are the standard's errors (or deviations, or
+  measured values) — not of a fitted set-up parameter — and its due date when a validity
+  statement gives one.
 
 Every refusal is a :class:`DccError` naming the file and why: the schema (when a folder is
 given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
@@ -31,14 +33,21 @@ from typing import TYPE_CHECKING
 from models.dcc.vocabulary import (
     DCC_NAMESPACE,
     DS_NAMESPACE,
+    PTB_MEASURED_VALUE,
+    PTB_MEASUREMENT_ERROR,
+    PTB_NOMINAL_VALUE,
+    PTB_REFERENCE_VALUE,
+    REFTYPE_BUDGET,
     REFTYPE_FACE_DEVIATION,
     REFTYPE_FACE_INDEX,
     REFTYPE_POLYGON_FACE_DEVIATIONS,
+    REFTYPE_SETUP_PARAMETERS,
     REFTYPE_STANDARD_DUE,
+    REFTYPE_SUMMARY,
     REFTYPE_VALIDITY,
     SI_NAMESPACE,
 )
-from models.messages import QT_TR_NOOP, message, reason_of
+from models.messages import QT_TR_NOOP, listed, message, reason_of
 
 if TYPE_CHECKING:
     from lxml.etree import _Element  # (lxml ships no types: pyproject.toml [tool.mypy])
@@ -97,7 +106,7 @@ class StandardCertificate:
     certificate_id: str
     calibration_date: str
     due_date: str  # "" when not stated
-    uncertainty: float | None  # the largest expanded U of its results, in ``unit``
+    uncertainty: float | None  # the largest expanded U of its errors' results, in ``unit``
     unit: str  # "arcsec" or "um" (keys of models.quantity.UNITS)
     coverage_factor: float | None
     coverage_probability: float | None
@@ -562,27 +571,91 @@ def place_polygon_standard(standards: list[dict], standard: dict) -> list[dict]:
 
 
 # -- any standard's certificate ----------------------------------------------------------
-def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
-                      measurement_date: str | dt.date | None = None,
-                      trusted_cert: bytes | None = None) -> StandardCertificate:
-    """A standard's certificate id, calibration date, due date and U from its DCC (any
-    maker's): U is the largest expanded uncertainty of its results, in arcseconds (an angle)
-    or micrometres (a length); its k and p beside it. DccError naming the file and why."""
-    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
-    certificate_id, calibration_date = _core(root, source)
-    found: list[tuple[float, str, float, float]] = []  # (U, unit key, k, p)
-    refused: list[str] = []
-    # the results' uncertainties only: a measuringEquipment's (the standards the certificate
-    # used: their stated U is si:expandedMU since after 0.8.10) or an influence
-    # condition's is no result of the item
+#: what a result with an uncertainty is, in the order a standard's U is taken from: the
+#: standard's error (PTB's basic_measurementError, or a name that says error or deviation),
+#: a polygon's face deviations in AngleBench's vocabulary, its measured values
+#: (basic_measuredValue); a result none of these is taken only when nothing is marked
+_ERROR, _FACE, _MEASURED, _UNMARKED, _NOT_THE_STANDARDS = (
+    "error", "face", "measured", "unmarked", "not the standard's")
+_KIND_WORDS = {_ERROR: QT_TR_NOOP("measurement errors or deviations"),
+               _FACE: QT_TR_NOOP("a polygon's face deviations"),
+               _MEASURED: QT_TR_NOOP("measured values")}
+#: refTypes of results that are no quantity the standard provides: AngleBench's set-up
+#: (fitted nuisance) parameters, summary figures, budget, decided quantity; PTB's nominal
+#: and reference values (the calibrating laboratory's, not the item's)
+_NOT_THE_STANDARDS_REFTYPES = frozenset({
+    REFTYPE_SETUP_PARAMETERS, "anglebench_setupParameter", REFTYPE_SUMMARY,
+    "anglebench_summaryFigure", REFTYPE_BUDGET, "anglebench_budgetComponent",
+    "anglebench_decidedQuantity", PTB_NOMINAL_VALUE, PTB_REFERENCE_VALUE})
+#: names of an error or deviation (en, de, zh), and of a measured value, for a DCC that
+#: marks its results with no refType; a standard deviation is a statistic, not an error
+_ERROR_NAME = re.compile(r"error|deviation|abweichung|fehler|误差|偏差|示值误差", re.IGNORECASE)
+_MEASURED_NAME = re.compile(r"measured value|messwert|测量值|测得值", re.IGNORECASE)
+_STATISTIC_NAME = re.compile(r"standard deviation|standardabweichung|标准偏差|标准差",
+                             re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class _Figure:
+    """One expanded uncertainty of a result, with what it is the uncertainty of."""
+
+    u: float  # in ``unit``
+    unit: str  # "arcsec", "um", or the D-SI unit when neither
+    k: float
+    p: float
+    kind: str
+    quantity: str  # the quantity's name ("" none)
+    result: str  # its dcc:result's name ("" none)
+
+
+def _name_of(element) -> str:
+    """An element's dcc:name in English (else its first content), "" when it has none."""
+    name = element.find(f"{D}name") if element is not None else None
+    if name is None:
+        return ""
+    contents = name.findall(f"{D}content")
+    english = [c for c in contents if c.get("lang") == "en"]
+    return " ".join(((english or contents or [None])[0].text or "").split()) if contents else ""
+
+
+def _kind(element, result, quantity_name: str) -> str:
+    """What the figure at ``element`` is, by the refTypes on it and its parents up to its
+    dcc:result (the DCC's own semantics), else by its quantity's and result's names."""
+    reftypes: set[str] = set()
+    parent = element
+    while parent is not None:
+        reftypes.update((parent.get("refType") or "").split())
+        if parent is result:
+            break
+        parent = parent.getparent()
+    if PTB_MEASUREMENT_ERROR in reftypes:
+        return _ERROR
+    if REFTYPE_FACE_DEVIATION in reftypes:
+        return _FACE
+    if PTB_MEASURED_VALUE in reftypes:
+        return _MEASURED
+    if reftypes & _NOT_THE_STANDARDS_REFTYPES:
+        return _NOT_THE_STANDARDS
+    for name in (quantity_name, _name_of(result)):
+        if name and _ERROR_NAME.search(_STATISTIC_NAME.sub("", name)):
+            return _ERROR
+        if name and _MEASURED_NAME.search(name):
+            return _MEASURED
+    return _UNMARKED
+
+
+def _figures(root) -> list[_Figure]:
+    """Every expanded uncertainty of the results (those under dcc:results: not a
+    measuringEquipment's — the standards the certificate used — nor an influence
+    condition's), converted to arcseconds or micrometres where it is an angle or a length."""
+    out: list[_Figure] = []
     results = root.find(f"{D}measurementResults")
     elements = [] if results is None else [
         element for block in results.iter(f"{D}results")
         for element in block.iter(f"{S}real", f"{S}realListXMLList")]
     for element in elements:
         where = _path(element)
-        is_list = element.tag == f"{S}realListXMLList"
-        if is_list:
+        if element.tag == f"{S}realListXMLList":
             values = parse_decimal_list(element.findtext(f"{S}valueXMLList") or "",
                                         f"{where}/valueXMLList")
             units = _units(element, len(values), where) if values else []
@@ -594,32 +667,106 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
         u = _expanded(element, len(values), where)
         if u is None:
             continue
+        quantity = next(element.iterancestors(f"{D}quantity"), None)
+        result = next(element.iterancestors(f"{D}result"), None)
+        quantity_name, result_name = _name_of(quantity), _name_of(result)
+        kind = _kind(element, result, quantity_name)
         for value, unit, k, p in zip(u.values, units, u.k, u.p, strict=True):
             factor = angle_factor(unit)
             if factor is not None:
-                found.append((abs(value) * factor, "arcsec", k, p))
+                figure, key = abs(value) * factor, "arcsec"
             elif unit in UM_PER_UNIT:
-                found.append((abs(value) * UM_PER_UNIT[unit], "um", k, p))
+                figure, key = abs(value) * UM_PER_UNIT[unit], "um"
             else:
-                refused.append(unit)
-    kinds = {unit for _, unit, _, _ in found}
-    if len(kinds) > 1:  # an angle standard with a length too: the angle is what we use
-        found = [f for f in found if f[1] == "arcsec"]
-    if not found and refused:
-        raise DccError(message(QT_TR_NOOP(
-            "{source}: its uncertainties are in {units}: neither an angle nor a length"),
-            source=source, units=", ".join(sorted(set(refused)))))
+                figure, key = abs(value), unit
+            out.append(_Figure(figure, key, k, p, kind, quantity_name, result_name))
+    return out
+
+
+def _named(figure: _Figure) -> str:
+    """A figure's quantity within its result, as the DCC names them."""
+    if figure.quantity and figure.result and figure.quantity != figure.result:
+        return f"{figure.result} › {figure.quantity}"
+    return figure.quantity or figure.result or "?"
+
+
+def _not_used(figures: list[_Figure], taken: list[_Figure]) -> list[str]:
+    """The results (or, within a result partly taken, the quantities) whose uncertainties
+    were not taken, each named once; a figure that restates one taken (the same U, unit
+    and k: a polygon's face deviations beside the same errors from face 1) is not named."""
+    taken_results = {f.result for f in taken}
+    restated = {(f.u, f.unit, f.k) for f in taken}
+    out: list[str] = []
+    for f in figures:
+        if f in taken or (f.u, f.unit, f.k) in restated:
+            continue
+        name = _named(f) if f.result in taken_results else (f.result or f.quantity or "?")
+        if name not in out:
+            out.append(name)
+    return out
+
+
+def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
+                      measurement_date: str | dt.date | None = None,
+                      trusted_cert: bytes | None = None) -> StandardCertificate:
+    """A standard's certificate id, calibration date, due date and U from its DCC (any
+    maker's). U is the U of the quantity the standard provides, not of a fitted set-up
+    parameter: the largest (by U/k) among its results marked as measurement errors or
+    deviations (refType ``basic_measurementError``, else a name saying error or deviation),
+    else its polygon face deviations (``anglebench_faceDeviation``: the polygon reader's),
+    else its measured values (``basic_measuredValue``); a DCC that marks none takes the
+    largest of all its results, and says so. Set-up parameters, summary figures, budget,
+    nominal and reference values are never taken. In arcseconds (an angle) or micrometres (a
+    length), its k and p beside it; a note names the result U was taken from and those not
+    used. DccError naming the file and why."""
+    root, source, signer, notes = _load(path, schema_dir, trusted_cert)
+    certificate_id, calibration_date = _core(root, source)
+    figures = _figures(root)
     due_date = _due_date(root, calibration_date, source)
     notes = notes + _check_due(due_date, measurement_date, source, certificate_id)
-    if not found:
+    if not figures:
         notes = notes + (message(QT_TR_NOOP(
             "{source}: no result states an expanded uncertainty: the standard's U is left "
             "empty"), source=source),)
         return StandardCertificate(certificate_id, calibration_date, due_date, None, "",
                                    None, None, source, signer, notes)
-    largest = max(found, key=lambda f: f[0] / f[2])  # the largest standard uncertainty
-    return StandardCertificate(certificate_id, calibration_date, due_date, largest[0],
-                               largest[1], largest[2], largest[3], source, signer, notes)
+    kind = next((k for k in (_ERROR, _FACE, _MEASURED, _UNMARKED)
+                 if any(f.kind == k for f in figures)), None)
+    if kind is None:  # set-up parameters, summary figures, … only
+        notes = notes + (message(QT_TR_NOOP(
+            "{source}: none of its results with an uncertainty is a measurement error, a "
+            "deviation or a measured value of the standard (only {others}): the standard's U "
+            "is left empty"), source=source, others=listed(_not_used(figures, []))),)
+        return StandardCertificate(certificate_id, calibration_date, due_date, None, "",
+                                   None, None, source, signer, notes)
+    candidates = [f for f in figures if f.kind == kind]
+    found = [f for f in candidates if f.unit in ("arcsec", "um")]
+    if not found:
+        raise DccError(message(QT_TR_NOOP(
+            "{source}: its uncertainties are in {units}: neither an angle nor a length"),
+            source=source, units=", ".join(sorted({f.unit for f in candidates}))))
+    if len({f.unit for f in found}) > 1:  # an angle standard with a length too: the angle
+        found = [f for f in found if f.unit == "arcsec"]
+    largest = max(found, key=lambda f: f.u / f.k)  # the largest standard uncertainty
+    others = _not_used(figures, [f for f in candidates if f.unit == largest.unit])
+    if kind == _UNMARKED:
+        said = message(QT_TR_NOOP(
+            "{source}: none of its results is marked as a measurement error, a deviation or "
+            "a measured value (by its refType or its name): U is the largest of all its "
+            "results, that of “{name}”; check that it is the uncertainty of what the "
+            "standard provides"), source=source, name=_named(largest))
+    elif others:
+        said = message(QT_TR_NOOP(
+            "{source}: U is that of “{name}”, the largest of its results that are {kind}; "
+            "not used: {others}"), source=source, name=_named(largest),
+            kind=message(_KIND_WORDS[kind]), others=listed(others))
+    else:
+        said = message(QT_TR_NOOP(
+            "{source}: U is that of “{name}”, the largest of its results that are {kind}"),
+            source=source, name=_named(largest), kind=message(_KIND_WORDS[kind]))
+    return StandardCertificate(certificate_id, calibration_date, due_date, largest.u,
+                               largest.unit, largest.k, largest.p, source, signer,
+                               notes + (said,))
 
 
 # -- the issued PDF inside ---------------------------------------------------------------

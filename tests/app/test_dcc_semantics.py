@@ -202,8 +202,10 @@ def test_dccs_written_by_0_8_10_are_still_read():
     assert polygon.expanded_uncertainty[2] == pytest.approx(0.0467585686758)
     standard = read_standard_dcc(WRITTEN_0_8_10 / "theodolite.xml", SCHEMA)
     assert standard.certificate_id == "AB-2026-0002"
-    # its largest U/k among the results: the tilt direction α's (59", k = 2.07)
-    assert standard.uncertainty == pytest.approx(59.0) and standard.coverage_factor == 2.07
+    # the largest U/k of its errors (the corrected error's first point, U/k 0.7182"), not
+    # of its set-up parameters (the tilt direction α's 59", k = 2.07, taken up to 0.8.11)
+    assert standard.uncertainty == 1.4364763721 and standard.coverage_factor == 2.00006199355
+    assert "not used: Set-up parameters identified" in standard.notes[-1]
 
 
 # -- F11: the raw error's U, one rule ----------------------------------------------------
