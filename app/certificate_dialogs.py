@@ -7,7 +7,6 @@ them."""
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 from typing import Any
 
@@ -15,7 +14,6 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
-    QFileDialog,
     QInputDialog,
     QLabel,
     QMessageBox,
@@ -24,18 +22,10 @@ from PySide6.QtWidgets import (
 from models.certificate.metadata import CertificateMetadata
 from widgets.certificate_dialog import CertificateDialog
 from widgets.i18n import tr
+from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
 
-__all__ = ["CertificateDialogs", "with_chosen_suffix"]
-
-
-def with_chosen_suffix(path: str, chosen_filter: str) -> str:
-    """A name typed without an extension gets the one of the file type chosen in the dialog
-    ("Excel workbook (*.xlsx)" writes out.xlsx, not a CSV named "out")."""
-    if not path or Path(path).suffix:
-        return path
-    match = re.search(r"\*(\.[A-Za-z0-9]+)", chosen_filter or "")
-    return path + match.group(1) if match else path
+__all__ = ["CertificateDialogs"]
 
 
 class CertificateDialogs:
@@ -120,9 +110,11 @@ class CertificateDialogs:
         return dialog.textValue() if dialog.exec() == QDialog.DialogCode.Accepted else ""
 
     def choose_save_path(self, title: str, suggested: str, file_filter: str) -> str:
-        path, chosen = QFileDialog.getSaveFileName(
-            self.window, title, str(Path(self.window.projects.last_dir()) / suggested), file_filter)
-        return with_chosen_suffix(path, chosen)
+        """The name written, with the chosen type's extension; a file of that name is not
+        replaced unasked (the file dialog asked about the name as typed)."""
+        return ask_save_file(self.window, title,
+                             str(Path(self.window.projects.last_dir()) / suggested), file_filter,
+                             self.window.ask)
 
     def tell(self, title: str, text: str) -> None:
         self.window.tell(title, text)

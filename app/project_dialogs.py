@@ -11,6 +11,7 @@ from typing import Any
 from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
 
 from widgets.i18n import tr
+from widgets.save_file import ask_save_file
 
 __all__ = ["ProjectDialogs"]
 
@@ -28,9 +29,10 @@ class ProjectDialogs:
         return path
 
     def ask_save_path(self, folder: str) -> str:
-        path, _ = QFileDialog.getSaveFileName(self.window, tr("Save project"), folder,
-                                              tr("AngleBench project (*.anglebench.json *.json)"))
-        return path
+        """The name the project is written to: "run3" is run3.anglebench.json, asked about
+        when that file is there (the file dialog asked about "run3")."""
+        return ask_save_file(self.window, tr("Save project"), folder,
+                             tr("AngleBench project (*.anglebench.json *.json)"), self.window.ask)
 
     def ask_save_changes(self) -> bool | None:
         answer = self.window.ask(

@@ -286,7 +286,7 @@ class ProjectPresenter(QObject):
         path = self.view.ask_save_path(self.last_dir())
         if not path:
             return False
-        if not path.endswith(".json"):
+        if not path.lower().endswith(".json"):  # the window's dialog added it (and asked)
             path += ".anglebench.json"
         return self.save_to(path)
 

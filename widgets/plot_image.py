@@ -6,9 +6,10 @@ from __future__ import annotations
 import re
 
 import pyqtgraph as pg
-from PySide6.QtWidgets import QApplication, QFileDialog, QWidget
+from PySide6.QtWidgets import QApplication, QWidget
 
 from widgets.i18n import live, tr
+from widgets.save_file import ask_save_file
 
 __all__ = ["add_image_actions", "copy_image", "image_file_name", "localise_plot_menu",
            "localise_plot_menus", "plot_panels"]
@@ -30,11 +31,9 @@ def copy_image(widget: QWidget) -> None:
 
 
 def _save_image(widget: QWidget, title: str) -> None:
-    path, _ = QFileDialog.getSaveFileName(widget, tr("Save image"), image_file_name(title),
-                                          tr("PNG image (*.png)"))
+    path = ask_save_file(widget, tr("Save image"), image_file_name(title),
+                         tr("PNG image (*.png)"))
     if path:
-        if not path.lower().endswith(".png"):
-            path += ".png"
         widget.grab().save(path)
 
 

@@ -31,6 +31,7 @@ from PySide6.QtWidgets import (
 from widgets.i18n import application_language, declared, live, on_language_change, tr
 from widgets.plot_grid import show_grid
 from widgets.plot_image import localise_plot_menus
+from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
 from widgets.text_table import show_text_table
 from widgets.workers import emit_if_alive
@@ -289,9 +290,7 @@ class RegisterWindow(QDialog):
         return path
 
     def ask_pdf_path(self, suggested: str) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, tr("Save the certificate's PDF"), suggested,
-                                              "PDF (*.pdf)")
-        return path
+        return ask_save_file(self, tr("Save the certificate's PDF"), suggested, "PDF (*.pdf)")
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.information(self, title, text)

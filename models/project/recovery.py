@@ -17,6 +17,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
+from models.project.atomic_write import fsync_directory
 from models.project.file import Project, ProjectFileError, load_project, save_project
 
 try:  # POSIX: a lock the kernel drops when the process dies
@@ -128,6 +129,7 @@ class RecoveryStore:
                         pending.unlink()
                     return False
                 os.replace(pending, self.path)
+                fsync_directory(self.folder)  # renamed for good before the orphans go
                 for orphan in self._adopted:  # their work is in this window's autosave now
                     with contextlib.suppress(FileNotFoundError):
                         orphan.unlink()
@@ -182,6 +184,7 @@ class RecoveryStore:
         target = path.with_name(f"{path.name}.{why}-{stamp}-{uuid.uuid4().hex[:6]}.json")
         with contextlib.suppress(OSError):
             path.replace(target)
+            fsync_directory(target.parent)
         self._drop_lock_of(path)
         return target
 
@@ -196,6 +199,7 @@ class RecoveryStore:
             try:
                 with self._publish_lock:
                     os.replace(path, self.path)
+                    fsync_directory(self.folder)  # before its lock goes
             except OSError:
                 pass
             else:

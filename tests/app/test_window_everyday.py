@@ -11,7 +11,7 @@ from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
-from app.certificate_dialogs import with_chosen_suffix
+from widgets.save_file import with_filter_suffix
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
 
@@ -65,9 +65,10 @@ def test_a_dropped_csv_is_imported_and_said_so(window, samples_dir):
 
 
 def test_the_chosen_file_type_gives_a_name_its_extension(window, monkeypatch, tmp_path):
-    assert with_chosen_suffix("/x/out", "Excel workbook (*.xlsx)") == "/x/out.xlsx"
-    assert with_chosen_suffix("/x/out.csv", "Excel workbook (*.xlsx)") == "/x/out.csv"
-    assert with_chosen_suffix("", "CSV (*.csv)") == ""
+    both = "CSV (*.csv);;Excel workbook (*.xlsx)"
+    assert with_filter_suffix("/x/out", "Excel workbook (*.xlsx)", both) == "/x/out.xlsx"
+    assert with_filter_suffix("/x/out.csv", "Excel workbook (*.xlsx)", both) == "/x/out.csv"
+    assert with_filter_suffix("", "CSV (*.csv)", both) == ""
     window.load_all_samples()
     monkeypatch.setattr(QFileDialog, "getSaveFileName",
                         lambda *a, **k: (str(tmp_path / "results"), "Excel workbook (*.xlsx)"))

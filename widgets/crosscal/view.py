@@ -4,10 +4,11 @@ button that saves the face deviations for the polygon workbench. Widgets only.""
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QFileDialog, QMessageBox, QPushButton
+from PySide6.QtWidgets import QMessageBox, QPushButton
 
 from widgets.figure_plot import FigurePlot
 from widgets.i18n import live, tr
+from widgets.save_file import ask_save_file
 from widgets.workbench_view import WorkbenchView
 
 
@@ -49,9 +50,8 @@ class CrossCalView(WorkbenchView):
         self.reference_button.setEnabled(enabled)
 
     def ask_reference_path(self) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, tr("Save face deviations"),
-                                              "polygon_deviations.csv", tr("CSV (*.csv)"))
-        return path
+        return ask_save_file(self, tr("Save face deviations"), "polygon_deviations.csv",
+                             tr("CSV (*.csv)"))
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)

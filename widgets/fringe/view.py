@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtWidgets import QLabel, QMessageBox, QPushButton, QVBoxLayout, QWidget
 
 from models.fringe import TITLE
 from widgets.error_plot import ErrorPlot
@@ -17,6 +17,7 @@ from widgets.fringe.live_signals import LiveSignalsPanel
 from widgets.fringe.signal_quality_plot import SignalQualityPlot
 from widgets.i18n import declared, live, on_language_change, tr
 from widgets.plot_grid import IntegerAxis, show_grid
+from widgets.save_file import ask_save_file
 from widgets.screen_fit import fit_to_screen
 from widgets.workbench_view import WorkbenchView
 
@@ -184,9 +185,8 @@ class FringeView(WorkbenchView):
         self.signal_quality.clear()
 
     def ask_table_path(self) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, tr("Export correction table"), "",
-                                              tr("CSV (*.csv);;C header (*.h)"))
-        return path
+        return ask_save_file(self, tr("Export correction table"), "",
+                             tr("CSV (*.csv);;C header (*.h)"))
 
     def tell(self, title: str, text: str) -> None:
         QMessageBox.warning(self, title, text)

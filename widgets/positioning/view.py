@@ -8,7 +8,6 @@ from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
     QDialogButtonBox,
-    QFileDialog,
     QFormLayout,
     QHBoxLayout,
     QHeaderView,
@@ -22,6 +21,7 @@ from PySide6.QtWidgets import (
 from models.positioning import TITLE
 from widgets.figure_plot import FigurePlot
 from widgets.i18n import declared, live, tr
+from widgets.save_file import ask_save_file
 from widgets.text_table import show_text_table
 from widgets.workbench_view import WorkbenchView
 
@@ -75,9 +75,7 @@ class PositioningView(WorkbenchView):
                    else tr("CSV (*.csv);;All files (*)") if fmt == "csv" else
                    tr("Controller compensation file (*.{ext});;All files (*)").format(
                        ext=suggested.rsplit(".", 1)[-1]))
-        path, _ = QFileDialog.getSaveFileName(self, tr("Export compensation table"), suggested,
-                                              filters)
-        return path
+        return ask_save_file(self, tr("Export compensation table"), suggested, filters)
 
     def ask_controller_options(self, controller: str, fields: list[tuple[str, str, str]]
                                ) -> dict[str, str] | None:
