@@ -23,6 +23,7 @@ import numpy as np
 from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
+from models.certificate.metadata import separate_statement
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
@@ -319,6 +320,23 @@ def _statements(b: _Builder, admin) -> None:
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
     _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate",
                VALIDITY_REPORT if doc.is_test_report else VALIDITY)
+    separate = separate_statement(doc.metadata)
+    if separate:
+        # a calibration of its own beside certificates of the same item and date that stay
+        # valid (ISO/IEC 17025 7.8.8): not an amendment or a replacement, so not
+        # coreData/reportAmendedSubstituted, and not coreData/previousReport (one report
+        # only, a hash link to the item's previous calibration): a statement naming each
+        # certificate it is separate from as a reference, and why, in each language
+        st = _statement(b, sts, v.REFTYPE_SEPARATE_CALIBRATION,
+                        "a calibration of its own, separate from the certificates of the same "
+                        "item and date of calibration named as its references, which stay "
+                        "valid; the declaration says why", separate)
+        declaration = st.find(D + "declaration")
+        for number in (n.strip() for n in doc.metadata.separate_from.split(",")):
+            if number:
+                reference = etree.Element(D + "reference")
+                reference.text = number
+                declaration.addprevious(reference)
     for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
