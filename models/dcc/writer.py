@@ -225,8 +225,9 @@ def _administrative(b: _Builder, root, software: SoftwareIdentity) -> _Element:
         b.leaf(core, "issueDate", meta.issue_date)
     if meta.supersedes:
         ch = etree.SubElement(core, D + "reportAmendedSubstituted")
+        # DCC 3.3.0's enumeration (coreDataType): "amended" or "substituted"
         b.leaf(ch, "typeOfChange",
-               "substitution" if meta.revision == "replacement" else "amendment")
+               "substituted" if meta.revision == "replacement" else "amended")
         b.leaf(ch, "replacedUniqueIdentifier", meta.supersedes)
 
     items = etree.SubElement(admin, D + "items")
