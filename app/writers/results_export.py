@@ -197,6 +197,13 @@ def _metadata_rows(document: CertificateDocument,
         ("Status", issued_status(issued.number) if issued else NOT_ISSUED),
         ("Revision", (f"{issued.revision} of {issued.supersedes}" if issued.supersedes
                       else issued.revision) if issued else None),
+        # an original issued as a calibration of its own beside current certificates of the
+        # same item and date of calibration (--separate-calibration): which, and why, as
+        # the PDF and the DCC state it (ISO/IEC 17025 7.8.8)
+        ("Separate calibration from certificate(s), which stay valid",
+         meta.separate_from or None if issued else None),
+        ("Why it is a calibration of its own",
+         meta.change_note or None if issued and meta.separate_from else None),
         ("Certificate PDF SHA-256", issued.pdf_sha256 if issued else None),
         ("DCC SHA-256", issued.dcc_sha256 if issued else None),
         ("Test", document.kind_title),

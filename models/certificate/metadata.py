@@ -34,6 +34,7 @@ __all__ = [
     "ReferenceStandard",
     "clean_text",
     "format_certificate_number",
+    "separate_statement",
 ]
 
 MAX_FIELD_CHARS = 200
@@ -514,3 +515,20 @@ def format_certificate_number(scheme: str, sequence: int, date: dt.date) -> str:
 
     return clean_text(_SCHEME_FIELD.sub(sub, scheme or ""), "certificate_number")
 
+
+def separate_statement(meta: CertificateMetadata) -> Any:
+    """An original for the item and date of calibration of certificates still valid
+    (``meta.separate_from``): it names them and says why it is a calibration of its own
+    (``meta.change_note``; ISO/IEC 17025 7.8.8: a reader of either learns of the other; two
+    originals of one calibration are never issued). The PDF prints it under the title, the
+    DCC states it (refType anglebench_separateCalibration). "" for any other certificate."""
+    if not meta.separate_from:
+        return ""
+    if "," in meta.separate_from:  # more than one still valid
+        return message(QT_TR_NOOP("A calibration of its own, separate from certificates "
+                                  "{numbers} of the same item and date of calibration, which "
+                                  "stay valid: {reason}"),
+                       numbers=meta.separate_from, reason=meta.change_note)
+    return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
+                              "of the same item and date of calibration, which stays valid: "
+                              "{reason}"), numbers=meta.separate_from, reason=meta.change_note)

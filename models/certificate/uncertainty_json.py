@@ -40,14 +40,20 @@ class PointUncertainty:
 
     expanded: np.ndarray
     coverage_factors: np.ndarray
+    # the points whose U was raised to the laboratory's CMC (None: none was, or no CMC
+    # holds these points' U) and that CMC (0: none holds them)
+    below_floor: np.ndarray | None = None
+    floor: float = 0.0
 
     @classmethod
     def part(cls, budget: UncertaintyBudget, points: slice) -> PointUncertainty:
-        return cls(np.asarray(budget.expanded)[points], np.asarray(budget.coverage_factors)[points])
+        return cls(np.asarray(budget.expanded)[points], np.asarray(budget.coverage_factors)[points],
+                   np.asarray(budget.below_floor)[points], float(budget.floor))
 
     @classmethod
     def repeated(cls, budget: UncertaintyBudget, times: int) -> PointUncertainty:
-        return cls(np.tile(budget.expanded, times), np.tile(budget.coverage_factors, times))
+        return cls(np.tile(budget.expanded, times), np.tile(budget.coverage_factors, times),
+                   np.tile(budget.below_floor, times), float(budget.floor))
 
 
 def _number(x: float) -> float | None:
@@ -55,18 +61,36 @@ def _number(x: float) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def budget_arrays(name: str, budget: UncertaintyBudget | PointUncertainty | None) -> dict[str, Any]:
+def budget_arrays(name: str, budget: UncertaintyBudget | PointUncertainty | None,
+                  cmc_set: bool = False) -> dict[str, Any]:
     """``expanded_uncertainty_NAME`` and ``coverage_factor_NAME`` of one error array (None
-    for both when its U is not determined)."""
+    for both when its U is not determined); with ``cmc_set`` (the laboratory's CMC is set for
+    the workbench) also ``uncertainty_raised_to_cmc_NAME``: per point, whether its U is the
+    CMC because the budget gave less (false where it did not, or where the CMC does not hold
+    this array's U; null with a U not determined)."""
     if budget is None:
-        return {f"expanded_uncertainty_{name}": None, f"coverage_factor_{name}": None}
+        return {f"expanded_uncertainty_{name}": None, f"coverage_factor_{name}": None,
+                **({f"uncertainty_raised_to_cmc_{name}": None} if cmc_set else {})}
     u = np.asarray(budget.expanded, dtype=float)
     k = np.asarray(budget.coverage_factors, dtype=float)
     finite = k[np.isfinite(k)]
     factor: Any = ([_number(v) for v in k] if finite.size and np.ptp(finite) > 0 or
                    finite.size != k.size else (_number(finite[0]) if finite.size else None))
-    return {f"expanded_uncertainty_{name}": [_number(v) for v in u],
-            f"coverage_factor_{name}": factor}
+    out = {f"expanded_uncertainty_{name}": [_number(v) for v in u],
+           f"coverage_factor_{name}": factor}
+    if cmc_set:
+        out[f"uncertainty_raised_to_cmc_{name}"] = [bool(r) for r in _raised(budget, u.size)]
+    return out
+
+
+def _raised(budget: UncertaintyBudget | PointUncertainty, size: int) -> np.ndarray:
+    """Per point, whether ``budget``'s U was raised to the laboratory's CMC."""
+    raised = budget.below_floor if budget.floor > 0 else None
+    return np.zeros(size, dtype=bool) if raised is None else np.asarray(raised, dtype=bool)
+
+
+def _floor(budget: UncertaintyBudget | PointUncertainty | None) -> float:
+    return float(getattr(budget, "floor", 0.0) or 0.0) if budget is not None else 0.0
 
 
 def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> dict[str, Any] | None:
@@ -98,23 +122,33 @@ def decided_quantity_json(conformity: Conformity, tolerance: float | None) -> di
     }
     if not stated:
         out["reason"] = str(conformity.reason or conformity.statement)
+    raised = conformity.raised_to_cmc
+    if raised is not None:  # (lower, upper) half-width held to the laboratory's CMC
+        out["raised_to_cmc"] = {"low": bool(raised[0]), "high": bool(raised[1])}
     return out
 
 
 def uncertainty_json(budgets: Mapping[str, UncertaintyBudget | PointUncertainty | None], probability: float,
                      conformity: Conformity | None = None,
-                     tolerance: float | None = None, withheld: str = "") -> dict[str, Any]:
+                     tolerance: float | None = None, withheld: str = "",
+                     cmcs: list[dict[str, Any]] | None = None) -> dict[str, Any]:
     """The keys to add to a workbench's JSON: U and k beside each array of ``budgets``
     (a key ``a/b`` places them in the object ``a`` of the JSON, beside its array ``b``),
     ``coverage_probability``, and ``decided_quantity`` when a tolerance is set.
-    ``withheld``: why U is not given (every array's U then null)."""
+    ``withheld``: why U is not given (every array's U then null). ``cmcs``: the laboratory's
+    CMCs set for the workbench (:func:`laboratory_cmcs`): with one, every U array gets its
+    ``uncertainty_raised_to_cmc_`` flags and the JSON ``laboratory_cmc``."""
     out: dict[str, Any] = {"coverage_probability": _number(probability)}
     for key, budget in budgets.items():
         *path, name = key.split("/")
         target = out
         for part in path:
             target = target.setdefault(part, {})
-        target.update(budget_arrays(name, budget))
+        target.update(budget_arrays(name, budget, bool(cmcs)))
+    if cmcs:
+        out["laboratory_cmc"] = dict(cmcs[0])
+        if len(cmcs) > 1:  # a cross-calibration's second item
+            out["laboratory_cmc"]["other_quantities"] = [dict(c) for c in cmcs[1:]]
     if withheld:
         out["uncertainty_withheld"] = withheld
     if conformity is not None:
@@ -162,7 +196,8 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
         except _NOT_DETERMINED as exc:
             why = str(reason_of(exc))
             conformity, tolerance = _interval_despite(kind, result, metadata, settings)
-    out = uncertainty_json(budgets, probability, conformity, tolerance, withheld)
+    out = uncertainty_json(budgets, probability, conformity, tolerance, withheld,
+                           laboratory_cmcs(kind, budgets, settings))
     # the inputs the certificate names as not stated: U does not hold them (the list empty
     # when U is complete), so a lab's system can tell an incomplete U from a complete one
     out["uncertainty_inputs_not_stated"] = [str(name) for name in
@@ -194,6 +229,31 @@ def workbench_uncertainty_json(kind: Any, result: Any, metadata: Any,
     if decided is not None and decided["interval_low"] is None and decided["interval_high"] is None:
         # no interval, no probability of one (as positioning's figures state a withheld one)
         decided["coverage_probability"] = None
+    return out
+
+
+def laboratory_cmcs(kind: Any, budgets: Mapping[str, Any],
+                    settings: Mapping[str, Any] | None) -> list[dict[str, Any]]:
+    """The laboratory's CMCs set for ``kind`` (its settings of
+    :func:`models.uncertainty.lab_scope.cmc_parameter` that are not 0), each as the JSON's
+    ``laboratory_cmc`` states it: ``value``, ``unit`` (the errors'), ``quantity`` (what it
+    is the CMC of), ``setting`` (its key) and ``arrays``, the names of the JSON's arrays whose
+    U it holds; the one that holds the most arrays first. Empty: none set."""
+    from models.uncertainty.lab_scope import cmc_quantity
+
+    full = kind.settings_with_defaults(settings)
+    unit = kind.error_unit(full)
+    out = []
+    for parameter in kind.parameters:
+        quantity = cmc_quantity(parameter)
+        value = float(full.get(parameter.key, 0.0) or 0.0) if quantity else 0.0
+        if not value > 0:
+            continue
+        arrays = [key.replace("/", ".") for key, budget in budgets.items()
+                  if _floor(budget) == value]
+        out.append({"value": value, "unit": unit, "quantity": quantity,
+                    "setting": parameter.key, "arrays": arrays})
+    out.sort(key=lambda c: -len(c["arrays"]))
     return out
 
 

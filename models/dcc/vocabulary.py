@@ -60,6 +60,12 @@ REFTYPE_CERTIFICATE_ID = "anglebench_certificateId"
 REFTYPE_TEMPERATURE = "anglebench_temperature"
 REFTYPE_OPERATOR = "anglebench_operator"
 REFTYPE_APPROVER = "anglebench_approver"
+#: on a per-point quantity whose U the laboratory's CMC holds: a dcc:metaData whose
+#: validXMLList marks the points where U is the CMC (the budget gave less)
+REFTYPE_U_RAISED_TO_CMC = "anglebench_uncertaintyRaisedToCmc"
+#: a statement: an original issued as a calibration of its own, separate from certificates
+#: of the same item and date of calibration that stay valid (their numbers its references)
+REFTYPE_SEPARATE_CALIBRATION = "anglebench_separateCalibration"
 
 LANGUAGES = ("en", "zh")
 MANDATORY_LANGUAGES = ("en",)

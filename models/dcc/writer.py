@@ -23,6 +23,7 @@ import numpy as np
 from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
+from models.certificate.metadata import separate_statement
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
@@ -224,8 +225,9 @@ def _administrative(b: _Builder, root, software: SoftwareIdentity) -> _Element:
         b.leaf(core, "issueDate", meta.issue_date)
     if meta.supersedes:
         ch = etree.SubElement(core, D + "reportAmendedSubstituted")
+        # DCC 3.3.0's enumeration (coreDataType): "amended" or "substituted"
         b.leaf(ch, "typeOfChange",
-               "substitution" if meta.revision == "replacement" else "amendment")
+               "substituted" if meta.revision == "replacement" else "amended")
         b.leaf(ch, "replacedUniqueIdentifier", meta.supersedes)
 
     items = etree.SubElement(admin, D + "items")
@@ -319,6 +321,23 @@ def _statements(b: _Builder, admin) -> None:
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
     _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate",
                VALIDITY_REPORT if doc.is_test_report else VALIDITY)
+    separate = separate_statement(doc.metadata)
+    if separate:
+        # a calibration of its own beside certificates of the same item and date that stay
+        # valid (ISO/IEC 17025 7.8.8): not an amendment or a replacement, so not
+        # coreData/reportAmendedSubstituted, and not coreData/previousReport (one report
+        # only, a hash link to the item's previous calibration): a statement naming each
+        # certificate it is separate from as a reference, and why, in each language
+        st = _statement(b, sts, v.REFTYPE_SEPARATE_CALIBRATION,
+                        "a calibration of its own, separate from the certificates of the same "
+                        "item and date of calibration named as its references, which stay "
+                        "valid; the declaration says why", separate)
+        declaration = st.find(D + "declaration")
+        for number in (n.strip() for n in doc.metadata.separate_from.split(",")):
+            if number:
+                reference = etree.Element(D + "reference")
+                reference.text = number
+                declaration.addprevious(reference)
     for extra in (*filter(None, [doc.not_in_u_statement]), *doc.statements, *doc.warnings):
         _statement(b, sts, "anglebench_remark", "a statement or warning of the certificate",
                    extra)
@@ -515,6 +534,52 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
         if expanded is not None and note:
             b.rich(q, "description", note)
         b.real_list(q, values.astype(float), unit, expanded, k, p)
+        if expanded is not None:
+            _raised_to_cmc(b, q, expanded, [doc.budget, *budgets.values()], unit)
+
+
+def _raised_to_cmc(b: _Builder, q, expanded: np.ndarray, budgets, unit: str) -> None:
+    """Where the laboratory's CMC holds a per-point quantity's U: which points' U is the CMC
+    (the budget gave less; ILAC-P14 5.4), as a dcc:metaData whose validXMLList marks them
+    (true: U is the CMC there) beside the CMC itself. The k of those points stays their
+    coverage factor (coverageFactorXMLList), so U/k there is the CMC's standard uncertainty,
+    not the budget's u_c; the declaration says so. Nothing where no CMC holds the U (no CMC
+    set, or a U the CMC does not apply to, as a correction's own)."""
+    held = next((budget for budget in budgets
+                 if budget is not None and float(getattr(budget, "floor", 0.0) or 0.0) > 0
+                 and getattr(budget, "below_floor", None) is not None
+                 and np.size(budget.expanded) == expanded.size
+                 and np.allclose(np.asarray(budget.expanded, dtype=float), expanded,
+                                 rtol=0.0, atol=1e-12, equal_nan=True)), None)
+    if held is None:
+        return
+    cmc = float(held.floor)
+    raised = np.asarray(held.below_floor, dtype=bool)
+    meta = etree.SubElement(etree.SubElement(q, D + "measurementMetaData"), D + "metaData",
+                            refType=b.ref(v.REFTYPE_U_RAISED_TO_CMC, CMC_FLAGS_DESCRIPTION))
+    b.text(meta, "name", QT_TR_NOOP("U raised to the laboratory's CMC"))
+    count = int(np.count_nonzero(raised))
+    b.rich(meta, "declaration", message(QT_TR_NOOP(
+        "The laboratory's calibration and measurement capability (CMC) U = {cmc} holds this "
+        "quantity's U. At the {count} of the {points} points marked true the U these readings "
+        "give is below it, so their U is stated as the CMC, with the same coverage factor k "
+        "(ILAC-P14 5.4); there U/k is the CMC's standard uncertainty, not the budget's u_c. "
+        "At the points marked false U is the budget's own."),
+        cmc=f"{cmc:g}{_UNIT_SIGNS.get(unit, '')}", count=count, points=raised.size))
+    b.leaf(meta, "validXMLList", " ".join("true" if r else "false" for r in raised))
+    cq = etree.SubElement(etree.SubElement(meta, D + "data"), D + "quantity", refType=b.ref(
+        "anglebench_laboratoryCmc", "the laboratory's CMC for the quantity: its smallest U"))
+    b.text(cq, "name", QT_TR_NOOP("Laboratory's CMC (smallest U)"))
+    b.real(cq, cmc, unit)
+
+
+CMC_FLAGS_DESCRIPTION = ("per point of the quantity it is in (validXMLList, in the order of its "
+                         "values): true where the U stated is the laboratory's CMC because the "
+                         "budget gave less (ILAC-P14 5.4), k unchanged; the CMC in its data")
+#: a D-SI unit's sign in a sentence (the CMC's figure)
+_UNIT_SIGNS = {r"\arcsecond": '"', r"\degree": "°", r"\arcminute": "′", r"\micro\radian": " µrad",
+               r"\milli\radian": " mrad", r"\radian": " rad", r"\nano\metre": " nm",
+               r"\micro\metre": " µm", r"\milli\metre": " mm", r"\milli\degree": " mdeg"}
 
 
 def _column_name(b: _Builder, q, name: str, headers: Mapping[str, str]) -> None:

@@ -715,7 +715,8 @@ def polygon_json_budgets(result: PolygonResult, metadata: CertificateMetadata,
     def sets(keep, floor: float) -> PointUncertainty:
         budgets = [part(first, keep, floor)] + [part(b, keep, floor) for b in later]
         return PointUncertainty(np.concatenate([b.expanded for b in budgets]),
-                                np.concatenate([b.coverage_factors for b in budgets]))
+                                np.concatenate([b.coverage_factors for b in budgets]),
+                                np.concatenate([b.below_floor for b in budgets]), floor)
 
     # the laboratory's CMC is a floor on an encoder error's U, not on the correction's own
     return {"error_arcsec": sets(lambda pyr: not pyr, full.floor),

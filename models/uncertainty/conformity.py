@@ -446,6 +446,10 @@ class Conformity:
     # pass or conditional pass, false rejection after a fail or conditional fail (JCGM
     # 106:2012 9.5, specific risk); nan when no statement is made
     decision_risk: float = float("nan")
+    # where the laboratory's CMC is set (the budget's floor): whether the interval's lower
+    # and upper half-widths were raised to it, (low, high); None when no CMC is set or no
+    # interval is stated (the JSON's decided_quantity.raised_to_cmc)
+    raised_to_cmc: tuple[bool, bool] | None = None
 
     @property
     def conforms(self) -> bool | None:
@@ -705,6 +709,9 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
     point = (point_names[worst] if point_names is not None else
              message(QT_TR_NOOP("point {n}"), n=worst + 1))
     quantity_text = message(DECISION_QUANTITIES["points"])
+    if budget.floor > 0:  # the deciding point's U is its interval's both half-widths
+        raised = bool(budget.below_floor[worst])
+        common = {**common, "raised_to_cmc": (raised, raised)}
     # P(every point within ±T) ≥ 1 − Σ P(point i outside) (Boole); ≤ P(the worst point within)
     inside = np.array([probability_conforming(float(xi), float(wi), float(wi), t,
                                               budget.probability, two_sided=True)
@@ -746,7 +753,8 @@ def _decide_points(e, budget, t, rule, rule_text, what, point_names, withheld, s
 def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, q,
                        common, estimate=None) -> Conformity:
     mc = estimate if estimate is not None else half_range_monte_carlo(e, budget)
-    mc, held = _held_to_cmc(mc, float(budget.floor))
+    mc, raised = _held_to_cmc(mc, float(budget.floor))
+    held = any(raised or ())
     x, upper, lower = float(mc.value), float(mc.u_upper), float(mc.u_lower)
     if not (math.isfinite(x) and math.isfinite(upper) and math.isfinite(lower)):
         floor = float(getattr(mc, "noise_floor", math.nan))
@@ -854,7 +862,7 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
         quantity_text = separated([quantity_text, message(
             WHICH_U_HALF_RANGE, u=f"{budget.max_expanded:.{uncertainty_decimals(budget.max_expanded)}f}{q}",
             t=f"{t:g}{q}")])
-    common = {**common, "probability": float(mc.probability)}
+    common = {**common, "probability": float(mc.probability), "raised_to_cmc": raised}
     return Conformity(verdict, text, rule_text, quantity_text, x, upper,
                       "" if verdict == "not assessed" else
                       _zones(t, 0.0 if rule == "simple" else upper,
@@ -865,9 +873,11 @@ def _decide_half_range(e, budget, t, rule, rule_text, what, withheld, sentence, 
                       decision_risk=_risk(verdict, conforming), **common)
 
 
-def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate, bool]:
+def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate,
+                                                             tuple[bool, bool] | None]:
     """The decided half range's interval with each half-width raised to the laboratory's CMC
-    (the budget's ``floor``; ILAC-P14 5.4: no U stated below it), and whether either was.
+    (the budget's ``floor``; ILAC-P14 5.4: no U stated below it), and whether each was:
+    (lower, upper); None when no CMC is set or the interval is not determined.
 
     The CMC is stated for the error at a point; the half range is the error at the curve's
     two extreme points about their mid-value, (e_max − e_min)/2. Were the two points' errors
@@ -880,10 +890,12 @@ def _held_to_cmc(mc: HalfRangeEstimate, cmc: float) -> tuple[HalfRangeEstimate, 
     import dataclasses
 
     upper, lower = float(mc.u_upper), float(mc.u_lower)
-    if not (cmc > 0 and math.isfinite(upper) and math.isfinite(lower)) or (
-            upper >= cmc and lower >= cmc):
-        return mc, False
-    return dataclasses.replace(mc, u_upper=max(upper, cmc), u_lower=max(lower, cmc)), True
+    if not (cmc > 0 and math.isfinite(upper) and math.isfinite(lower)):
+        return mc, None
+    raised = (lower < cmc, upper < cmc)
+    if not any(raised):
+        return mc, raised
+    return dataclasses.replace(mc, u_upper=max(upper, cmc), u_lower=max(lower, cmc)), raised
 
 
 def printed_interval(value: float, lower: float, upper: float, d: int) -> tuple[float, float]:

@@ -24,20 +24,32 @@ from models.parameters import Parameter
 if TYPE_CHECKING:  # a budget's module is loaded by whoever makes one (not a plain analyze)
     from models.uncertainty.budget import UncertaintyBudget
 
-__all__ = ["cmc_of", "cmc_parameter", "scope_statement"]
+__all__ = ["cmc_of", "cmc_parameter", "cmc_quantity", "scope_statement"]
+
+
+#: each setting made by cmc_parameter → what it is the CMC of (the JSON's laboratory_cmc)
+_QUANTITIES: dict[Parameter, str] = {}
+
+
+def cmc_quantity(parameter: Parameter) -> str:
+    """What ``parameter`` is the laboratory's CMC of ("axis error" …); "" when it is not a
+    setting of :func:`cmc_parameter`."""
+    return _QUANTITIES.get(parameter, "")
 
 
 def cmc_parameter(key: str, label: str, unit: str, what: str) -> Parameter:
     """The setting of the laboratory's CMC for one quantity of a workbench (``what``: "the
     axis error", "a polygon's face deviations" …): a floor on every U stated, named on the
     certificate; 0: none stated, nothing said."""
-    return Parameter(key, label, "float", 0.0, unit, 0.0, 3600.0, decimals=4, step=0.01,
+    parameter = Parameter(key, label, "float", 0.0, unit, 0.0, 3600.0, decimals=4, step=0.01,
                      zero="none stated",
                      help="The laboratory's calibration and measurement capability (CMC) for "
                           f"{what}: the smallest U of its scope. Every U stated is at least this, "
                           "the decided quantity's interval included; a result whose computed U is "
                           "below it is stated with the CMC as its U (ILAC-P14). 0: none stated, "
                           "nothing said")
+    _QUANTITIES[parameter] = what.removeprefix("the ").removeprefix("an ").removeprefix("a ")
+    return parameter
 
 
 def cmc_of(settings: Mapping[str, Any] | None, key: str) -> float:

@@ -11,7 +11,7 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.wording import _between, _colon, _listed, label
 from models.certificate.document import CertificateDocument
-from models.certificate.metadata import PLACES
+from models.certificate.metadata import PLACES, separate_statement
 from models.messages import QT_TR_NOOP, joined, message
 
 
@@ -80,20 +80,6 @@ def revision_statement(meta) -> str:
                        change=meta.change_note)
     return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
                               "unchanged."), what=what)
-
-
-def separate_statement(meta) -> str:
-    """An original for the item and date of calibration of certificates still valid: it
-    names them and says why it is a calibration of its own (ISO/IEC 17025 7.8.8: a reader of
-    either learns of the other; two originals of one calibration are never issued)."""
-    if "," in meta.separate_from:  # more than one still valid
-        return message(QT_TR_NOOP("A calibration of its own, separate from certificates "
-                                  "{numbers} of the same item and date of calibration, which "
-                                  "stay valid: {reason}"),
-                       numbers=meta.separate_from, reason=meta.change_note)
-    return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
-                              "of the same item and date of calibration, which stays valid: "
-                              "{reason}"), numbers=meta.separate_from, reason=meta.change_note)
 
 
 def _created(document: CertificateDocument) -> dt.datetime:
