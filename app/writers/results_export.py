@@ -314,12 +314,18 @@ class _Words:
     def _chinese(self, text) -> str:
         return self._wording.in_chinese(self.document, text)
 
+    def _heading(self, text) -> str:
+        """A table's heading in Chinese as the PDF's table prints it (the catalogue's), the
+        words the sheet adds to it ("to", ": unit") from the certificate's."""
+        said = self._wording._say("zh")(text)
+        return said if said != str(text) else self._chinese(text)
+
     def label(self, english, unit: AngleUnit) -> tuple[str, float]:
         """A label (a row's of the *Certificate* sheet, a column's heading) with its angle
         unit in ``unit``, and the factor of its figures."""
         said, factor = header_in_unit(str(self._wording.own_words(self.document, english)),
                                       unit)
-        if self.language == "en":
+        if self.language not in ("zh", "zh+en"):
             return said, factor
         chinese = header_in_unit(self._chinese(english), unit)[0]
         if self.language == "zh" or chinese == said:
@@ -330,9 +336,9 @@ class _Words:
         """A column's heading: its name, what it holds of the cells' figures and their unit
         ("Deviation (to) (\")", 偏差 (止) (\"))."""
         english = column.said()
-        if self.language == "en":
+        if self.language not in ("zh", "zh+en"):
             return english
-        chinese = column.said(self._chinese)
+        chinese = column.said(self._heading)
         if self.language == "zh" or chinese == english:
             return chinese
         return f"{chinese} {english}"
@@ -340,7 +346,7 @@ class _Words:
     def text(self, value):
         """A text of the *Certificate* sheet: in Chinese on a Chinese certificate, in both
         on a bilingual one (Chinese above; once when it has no Chinese: typed text)."""
-        if not isinstance(value, str) or self.language == "en":
+        if not isinstance(value, str) or self.language not in ("zh", "zh+en"):
             return value
         chinese = self._chinese(value)
         if self.language == "zh" or chinese == str(value):
