@@ -22,20 +22,23 @@ import csv
 import io
 import math
 import re
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
 from models.certificate.document import CertificateDocument, budget_table
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
+from models.messages import Message, joined, message
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
+from models.register.wording import revision_words
 
 if TYPE_CHECKING:
     from models.register.store import CertificateRecord
 
-__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "results_bytes",
+__all__ = ["NOT_ISSUED", "XLSX_MAX_ROWS", "issued_status", "neutralise", "not_issued", "results_bytes",
            "split_figures", "write_results_csv", "write_results_xlsx"]
 
 XLSX_MAX_ROWS = 1_048_576
@@ -98,11 +101,34 @@ def split_figures(text: str) -> tuple[tuple[float, ...], str, str] | None:
     return tuple(values), units.pop() if units else "", join
 
 
-def _figure_columns(header: tuple[str, ...],
-                    rows: list[tuple[object, ...]]) -> tuple[list[str], list[list[object]]]:
+class _Column(NamedTuple):
+    """A column's header on a sheet, to be said in the certificate's language
+    (:meth:`_Words.column`): its name, what it holds of a cell's figures ("to" of a range,
+    "U" of a value ± U), its figures' unit, or its being their unit column."""
+
+    name: str
+    held: tuple[str, ...] = ()
+    unit: str | None = None
+    unit_column: bool = False
+
+    def said(self, say: Callable[[str], str] = str) -> str:
+        """The heading with its words said by ``say`` (the unit as it is): "Deviation (to)
+        (\")", "Value: unit"."""
+        name = say(self.name)
+        if self.unit_column:
+            return say(message("{column}: unit", column=name))
+        held = " | ".join(say(word) for word in self.held)
+        title = f"{name} ({held})" if held else name
+        return f"{title} ({self.unit})" if self.unit else title
+
+
+def _figure_columns(header: tuple[str, ...], rows: list[tuple[object, ...]],
+                    heading: Callable[[_Column], str] = _Column.said,
+                    ) -> tuple[list[str], list[list[object]]]:
     """A printed table made calculable: each column whose cells are figures becomes number
     columns (one per figure of a range or a pair) with the unit in its header, or in a unit
-    column of its own where the rows' units differ; other cells stay as they are."""
+    column of its own where the rows' units differ; other cells stay as they are. The
+    headers are said by ``heading`` (in English unless told)."""
     width = max([len(header), *map(len, rows)])
     out_header: list[str] = []
     out_rows: list[list[object]] = [[] for _ in rows]
@@ -112,7 +138,7 @@ def _figure_columns(header: tuple[str, ...],
         figures = [split_figures(c) if isinstance(c, str) else None for c in cells]
         found = [f for f in figures if f is not None]
         if not found:
-            out_header.append(name)
+            out_header.append(heading(_Column(name)))
             for out, cell in zip(out_rows, cells, strict=True):
                 out.append(cell)
             continue
@@ -122,18 +148,18 @@ def _figure_columns(header: tuple[str, ...],
         # one kind of join: its two names; several (ranges and value ± U in one column):
         # the first column is the value or the range's start, the second says what it holds
         if len(joins) == 1:
-            labels = _JOINS[joins.pop()]
+            labels = tuple((held,) if held else () for held in _JOINS[joins.pop()])
         else:  # each column after the first says what it holds for each kind of cell
-            labels = ("", *(" | ".join(dict.fromkeys(
+            labels = ((), *(tuple(dict.fromkeys(
                 _JOINS[j][i] for j in _JOINS if j in joins and len(_JOINS[j]) > i))
                 for i in range(1, count)))
         unit = units.pop() if len(units) == 1 else None
         base = name or "Value"
         for i in range(count):
-            title = base if count == 1 or not labels[i] else f"{base} ({labels[i]})"
-            out_header.append(f"{title} ({unit})" if unit else title)
+            out_header.append(heading(_Column(base, () if count == 1 else labels[i],
+                                              unit or None)))
         if unit is None:
-            out_header.append(f"{base}: unit")
+            out_header.append(heading(_Column(base, unit_column=True)))
         for out, cell, figure in zip(out_rows, cells, figures, strict=True):
             if figure is None:
                 out += [None if cell == "" else cell] + [None] * (count - 1)
@@ -171,32 +197,57 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
     write_bytes_atomic(path, results_csv_bytes(document, unit))
 
 
-#: what the *Certificate* sheet says of results written with no certificate issued
+#: what the *Certificate* sheet says of results written with no certificate issued (a test
+#: report's: :func:`not_issued`)
 NOT_ISSUED = ("not issued: these results were written apart from any certificate's issue, "
               "so they are no certificate's record; a certificate number or date of issue "
               "typed in the details is not shown")
+_NOT_ISSUED_REPORT = ("not issued: these results were written apart from any report's issue, "
+                      "so they are no report's record; a report number or date of issue typed "
+                      "in the details is not shown")
 
 
-def issued_status(number: str) -> str:
-    """What the *Certificate* sheet says of results written with certificate ``number``."""
-    return (f"issued: the results of certificate {number}, written when the register issued "
-            "it; the register holds this file's SHA-256 ('anglebench register verify FILE' "
-            "checks it)")
+def not_issued(report: bool = False) -> Message:
+    """What the *Certificate* sheet says of results written with no certificate (``report``:
+    no test report) issued; in Chinese from the certificate's words (wording.CHINESE)."""
+    return message(_NOT_ISSUED_REPORT if report else NOT_ISSUED)
+
+
+def issued_status(number: str, report: bool = False) -> Message:
+    """What the *Certificate* sheet says of results written with certificate (``report``:
+    test report) ``number``."""
+    return message(("issued: the results of test report {number}, written when the register "
+                    "issued it; the register holds this file's SHA-256 ('anglebench register "
+                    "verify FILE' checks it)") if report else
+                   ("issued: the results of certificate {number}, written when the register "
+                    "issued it; the register holds this file's SHA-256 ('anglebench register "
+                    "verify FILE' checks it)"), number=number)
+
+
+def _revision(issued: CertificateRecord) -> Message:
+    """"amendment 1 of AB-2026-0001", "original": the register's words, as its window and
+    command line say them (models/register/wording.py)."""
+    revision = revision_words(issued.revision)
+    if issued.supersedes:
+        return message("{revision} of {certificate}", revision=revision,
+                       certificate=issued.supersedes)
+    return revision
 
 
 def _metadata_rows(document: CertificateDocument,
                    issued: CertificateRecord | None = None) -> list[tuple[str, object]]:
-    """The *Certificate* sheet: ``issued`` is the register's record of the certificate
-    issued with these results (its number, date of issue and files' SHA-256); without it
-    the results are said not to be issued, and no number or date of issue is given (one
-    typed in the details is not the register's: review 61 F1)."""
+    """The *Certificate* sheet, its labels in English (a test report's own words and the
+    certificate's language are given by :class:`_Words`): ``issued`` is the register's
+    record of the certificate issued with these results (its number, date of issue and
+    files' SHA-256); without it the results are said not to be issued, and no number or date
+    of issue is given (one typed in the details is not the register's: review 61 F1)."""
     meta = document.metadata
+    report = document.is_test_report
     q = document.budget.unit.symbol  # the unit of the errors, the budget and the tolerance
     rows: list[tuple[str, object]] = [
         ("Certificate number", issued.number if issued else None),
-        ("Status", issued_status(issued.number) if issued else NOT_ISSUED),
-        ("Revision", (f"{issued.revision} of {issued.supersedes}" if issued.supersedes
-                      else issued.revision) if issued else None),
+        ("Status", issued_status(issued.number, report) if issued else not_issued(report)),
+        ("Revision", _revision(issued) if issued else None),
         # an original issued as a calibration of its own beside current certificates of the
         # same item and date of calibration (--separate-calibration): which, and why, as
         # the PDF and the DCC state it (ISO/IEC 17025 7.8.8)
@@ -238,16 +289,83 @@ def _metadata_rows(document: CertificateDocument,
         ("Conformity", document.conformity.statement),
         ("Decision rule", document.conformity.rule), ("Zones", document.conformity.zones),
         ("Inputs not stated, so not in U", document.not_in_u_statement),
-        *((f"Statement {i}", text) for i, text in enumerate(document.statements, 1)),
-        *((f"Setting: {label}", value) for label, value in document.settings),
+        *((message("Statement {i}", i=i), text) for i, text in enumerate(document.statements, 1)),
+        *((message("Setting: {label}", label=message(label)), value)
+          for label, value in document.settings),
         ("Notes", meta.notes),
     ]
     for i, s in enumerate(meta.standards, 1):
-        rows.append((f"Standard {i}", f"{s.description}; serial {s.serial}; certificate "
-                                      f"{s.certificate_no}"))
-        rows.append((f"Standard {i} uncertainty ({UNITS[s.uncertainty_unit].symbol})",
-                     s.uncertainty))
+        rows.append((message("Standard {i}", i=i), message(
+            "{description}; serial {serial}; certificate {certificate}",
+            description=s.description, serial=s.serial, certificate=s.certificate_no)))
+        rows.append((joined([message("Standard {i} uncertainty", i=i),
+                             f" ({UNITS[s.uncertainty_unit].symbol})"]), s.uncertainty))
     return rows
+
+
+class _Words:
+    """The sheets' words in the certificate's language, as its PDF says them (the same
+    words, from app/writers/certificate_pdf/wording.py): English; Chinese throughout (the
+    certificate's fixed words, else the window's catalogue; typed text, figures, units and
+    symbols as they are); or, on a bilingual certificate, every label and column heading
+    in Chinese beside the English and every text of ours on the *Certificate* sheet in
+    Chinese above the English, the tables' cells in English as on its pages. A test report
+    speaks in its own words ("Report number", 报告编号) in every language."""
+
+    def __init__(self, document: CertificateDocument) -> None:
+        from app.writers.certificate_pdf import wording  # the PDF's: loaded with the XLSX
+
+        self.document, self.language = document, document.metadata.language
+        self._wording = wording
+
+    def _chinese(self, text) -> str:
+        return self._wording.in_chinese(self.document, text)
+
+    def _heading(self, text) -> str:
+        """A table's heading in Chinese as the PDF's table prints it (the catalogue's), the
+        words the sheet adds to it ("to", ": unit") from the certificate's."""
+        said = self._wording._say("zh")(text)
+        return said if said != str(text) else self._chinese(text)
+
+    def label(self, english, unit: AngleUnit) -> tuple[str, float]:
+        """A label (a row's of the *Certificate* sheet, a column's heading) with its angle
+        unit in ``unit``, and the factor of its figures."""
+        said, factor = header_in_unit(str(self._wording.own_words(self.document, english)),
+                                      unit)
+        if self.language not in ("zh", "zh+en"):
+            return said, factor
+        chinese = header_in_unit(self._chinese(english), unit)[0]
+        if self.language == "zh" or chinese == said:
+            return chinese, factor
+        return f"{chinese} {said}", factor
+
+    def column(self, column: _Column) -> str:
+        """A column's heading: its name, what it holds of the cells' figures and their unit
+        ("Deviation (to) (\")", 偏差 (止) (\"))."""
+        english = column.said()
+        if self.language not in ("zh", "zh+en"):
+            return english
+        chinese = column.said(self._heading)
+        if self.language == "zh" or chinese == english:
+            return chinese
+        return f"{chinese} {english}"
+
+    def text(self, value):
+        """A text of the *Certificate* sheet: in Chinese on a Chinese certificate, in both
+        on a bilingual one (Chinese above; once when it has no Chinese: typed text)."""
+        if not isinstance(value, str) or self.language not in ("zh", "zh+en"):
+            return value
+        chinese = self._chinese(value)
+        if self.language == "zh" or chinese == str(value):
+            return chinese
+        return f"{chinese}\n{value}"
+
+    def cell(self, value):
+        """A text cell of a table: in Chinese on a Chinese certificate, else as printed (a
+        bilingual certificate's tables keep the English below their two-language headings)."""
+        if isinstance(value, str) and self.language == "zh":
+            return self._wording._say("zh")(value)
+        return value
 
 
 def _cell(value: object) -> object:
@@ -261,15 +379,18 @@ def _cell(value: object) -> object:
     return neutralise(value)
 
 
-def _metadata_in_unit(rows: list[tuple[str, object]],
-                      unit: AngleUnit) -> list[tuple[str, object]]:
+def _metadata_in_unit(rows: list[tuple[str, object]], unit: AngleUnit,
+                      words: _Words) -> list[tuple[str, object]]:
+    """The *Certificate* sheet's rows with their angle figures in ``unit``, said in the
+    certificate's language (after the conversion: a message's figures are converted from
+    the numbers it keeps)."""
     out: list[tuple[str, object]] = []
     for key, value in rows:
-        header, factor = header_in_unit(key, unit)
+        header, factor = words.label(key, unit)
         if isinstance(value, int | float) and not isinstance(value, bool):
             value = value * factor
         elif isinstance(value, str):
-            value = text_in_unit(value, unit)
+            value = words.text(text_in_unit(value, unit))
         out.append((header, value))
     return out
 
@@ -279,12 +400,17 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
     """The workbook; ``issued``: the register's record of the certificate issued with these
     results (see :func:`_metadata_rows`)."""
     from openpyxl import Workbook  # imported here: only the export needs it
+    from openpyxl.cell import WriteOnlyCell
+    from openpyxl.styles import Alignment
 
     points = len(document.point_columns[0][1]) if document.point_columns else 0
     if points + 1 > XLSX_MAX_ROWS:
         raise ValueError(f"{points} points do not fit on a spreadsheet ({XLSX_MAX_ROWS - 1} rows "
                          "at most): export CSV instead")
+    words = _Words(document)
     book = Workbook(write_only=True)
+    # the sheets keep their documented names in every language (docs: certificates-and-
+    # register.md), as the Results sheet its columns' names (those of the JSON)
     sheet = book.create_sheet("Results")
     point_columns = _point_columns(document, unit)
     sheet.append([neutralise(name) for name, _ in point_columns])
@@ -298,15 +424,21 @@ def results_xlsx_bytes(document: CertificateDocument, unit: AngleUnit = ARCSEC,
                              document.budget, document.budget_point,
                              withheld=bool(document.uncertainty_withheld)))):
         ws = book.create_sheet(title)
-        header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit))
+        header, rows = _figure_columns(*table_in_unit(table.header, table.rows, unit),
+                                       heading=words.column)
         ws.append([neutralise(h) for h in header])
         for row in rows:
-            ws.append([_cell(v) for v in row])
+            ws.append([_cell(words.cell(v)) for v in row])
         if table.note:
-            ws.append([neutralise(text_in_unit(table.note, unit))])
+            ws.append([neutralise(words.cell(text_in_unit(table.note, unit)))])
     ws = book.create_sheet("Certificate")
-    for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit):
-        ws.append([neutralise(key), _cell(value)])
+    wrapped = Alignment(wrap_text=True, vertical="top")  # a bilingual text: Chinese above
+    for key, value in _metadata_in_unit(_metadata_rows(document, issued), unit, words):
+        value = _cell(value)
+        if isinstance(value, str) and "\n" in value:
+            value = WriteOnlyCell(ws, value)
+            value.alignment = wrapped
+        ws.append([neutralise(key), value])
     out = io.BytesIO()
     book.save(out)
     return out.getvalue()

@@ -193,8 +193,11 @@ def test_a_separate_calibration_is_a_dcc_statement_and_xlsx_rows(tmp_path):
     assert dcc.xpath(".//dcc:coreData/dcc:reportAmendedSubstituted", namespaces=NS) == []
     sheet = load_workbook(tmp_path / "b.xlsx")["Certificate"]
     rows = {row[0]: row[1] for row in sheet.iter_rows(values_only=True) if row and row[0]}
-    assert rows["Separate calibration from certificate(s), which stay valid"] == number
-    assert rows["Why it is a calibration of its own"] == "as left after the adjustment"
+    # a bilingual certificate's labels: the Chinese, a space, the English
+    assert rows["独立校准，有别于以下证书（仍然有效） Separate calibration from certificate(s), "
+                "which stay valid"] == number
+    assert rows["作为独立校准的理由 Why it is a calibration of its own"] == \
+        "as left after the adjustment"
 
 
 def test_the_polygons_per_set_arrays_flag_their_own_points(tmp_path):

@@ -1,6 +1,7 @@
 """The results file written with an issued certificate carries the number and date of issue
 the register gave, and the register records it; one written without issuing says it is not
-issued (review 61, F1). The register of each test is its own (conftest.py)."""
+issued (review 61, F1). The polygon sample's details are bilingual (zh+en): so are the
+results file's labels (N6). The register of each test is its own (conftest.py)."""
 
 from __future__ import annotations
 
@@ -26,9 +27,18 @@ def _details(samples_dir, tmp_path, **changes):
     return path
 
 
+class _Labelled(dict):
+    """A sheet's rows by label, looked up by the label's English (a bilingual label is the
+    Chinese, then the English: 证书编号 Certificate number)."""
+
+    def __getitem__(self, english):
+        (value,) = [v for k, v in self.items() if k == english or k.endswith(" " + english)]
+        return value
+
+
 def _certificate_sheet(path):
     book = load_workbook(path)
-    return {row[0]: row[1] for row in book["Certificate"].iter_rows(values_only=True)}
+    return _Labelled((row[0], row[1]) for row in book["Certificate"].iter_rows(values_only=True))
 
 
 @pytest.mark.slow
@@ -47,7 +57,8 @@ def test_the_xlsx_issued_with_a_certificate_carries_its_number_and_date_and_is_r
     assert sheet["Certificate number"] == record.number and record.number
     assert sheet["Date of issue"] == record.issue_date
     assert record.issue_date != TYPED_DATE and TYPED_DATE not in sheet.values()
-    assert sheet["Status"].startswith(f"issued: the results of certificate {record.number}")
+    assert sheet["Status"].startswith(f"已签发：证书 {record.number} 的结果")
+    assert f"\nissued: the results of certificate {record.number}" in sheet["Status"]
     # tied to the certificate it accompanies: the PDF's SHA-256 as issued and recorded
     assert sheet["Certificate PDF SHA-256"] == hashlib.sha256(pdf.read_bytes()).hexdigest()
     assert sheet["Certificate PDF SHA-256"] == record.pdf_sha256
@@ -78,8 +89,9 @@ def test_results_written_without_issuing_say_so_and_are_not_recorded(samples_dir
     sheet = _certificate_sheet(xlsx)
     assert sheet["Certificate number"] is None and sheet["Date of issue"] is None
     assert "AB-2026-0042" not in sheet.values() and TYPED_DATE not in sheet.values()
-    assert sheet["Status"].startswith("not issued: these results were written apart from any "
-                                      "certificate's issue")
+    assert sheet["Status"].startswith("未签发：")
+    assert ("\nnot issued: these results were written apart from any certificate's issue"
+            in sheet["Status"])
     assert sheet["Certificate PDF SHA-256"] is None
     capsys.readouterr()
     assert main(["register", "verify", str(xlsx)]) == 1

@@ -5,6 +5,7 @@ punctuation and list joining of composed texts."""
 from __future__ import annotations
 
 import functools
+from collections.abc import Callable
 
 from models.certificate.document import CertificateDocument
 from models.messages import JOINS, Message, in_language, joined, message, separated, translator
@@ -25,12 +26,61 @@ CHINESE = {
     "Model": "型号", "Place of calibration": "校准地点",
     "Instrument output": "仪器原始输出", "Edited after capture": "采集后修改",
     "Report number": "报告编号", "Date of test": "检测日期", "Place of test": "检测地点",
+    # the results file's (XLSX) own labels and statements (app/writers/results_export.py):
+    # its *Certificate* sheet's rows, and the columns a printed figure is split into
+    "Status": "状态", "Revision": "版次",
+    "Separate calibration from certificate(s), which stay valid": "独立校准，有别于以下证书（仍然有效）",
+    "Why it is a calibration of its own": "作为独立校准的理由",
+    "Separate test from report(s), which stay valid": "独立检测，有别于以下报告（仍然有效）",
+    "Why it is a test of its own": "作为独立检测的理由",
+    "{revision} of {certificate}": "{certificate} 的{revision}",
+    "Certificate PDF SHA-256": "证书 PDF 的 SHA-256", "Report PDF SHA-256": "报告 PDF 的 SHA-256",
+    "DCC SHA-256": "DCC 的 SHA-256", "Grade": "准确度等级", "Operator": "校准员",
+    "Tested by": "检测员", "Approver": "批准人", "Temperature": "温度",
+    "Relative humidity": "相对湿度", "Expanded uncertainty U, largest": "扩展不确定度 U（最大值）",
+    "No U stated because": "未给出 U 的原因", "Coverage factor k there": "该处的包含因子 k",
+    "Coverage probability": "包含概率", "Tolerance ±": "允差 ±", "Decided quantity": "判定的量",
+    "Decided value": "判定值",
+    "U of the decided value, below it (U−)": "判定值向下的 U（U−）",
+    "U of the decided value, above it (U+)": "判定值向上的 U（U+）",
+    "Decided value: interval low": "判定值：区间下端", "Decided value: interval high": "判定值：区间上端",
+    "Decided value: coverage probability": "判定值：包含概率",
+    "Probability of conformity": "符合概率", "Probability of a wrong decision": "误判概率",
+    "Verdict": "结论", "No statement of conformity because": "未作符合性声明的原因",
+    "Conformity": "符合性", "Decision rule": "判定规则", "Zones": "判定区间",
+    "Inputs not stated, so not in U": "未给出、因而未计入 U 的输入量", "Notes": "备注",
+    "Statement {i}": "声明 {i}", "Setting: {label}": "设置：{label}", "Standard {i}": "计量标准 {i}",
+    "Standard {i} uncertainty": "计量标准 {i} 的不确定度",
+    "{description}; serial {serial}; certificate {certificate}":
+        "{description}；出厂编号 {serial}；证书编号 {certificate}",
+    "Value": "量值", "from": "起", "to": "止", "first": "第一个", "second": "第二个",
+    "{column}: unit": "{column}：单位",
+    "not issued: these results were written apart from any certificate's issue, so they are "
+    "no certificate's record; a certificate number or date of issue typed in the details is "
+    "not shown": "未签发：这些结果在签发任何证书之外写出，因而不是任何证书的记录；信息中填写的证书编号"
+                 "或签发日期不予给出",
+    "not issued: these results were written apart from any report's issue, so they are no "
+    "report's record; a report number or date of issue typed in the details is not shown":
+        "未签发：这些结果在签发任何报告之外写出，因而不是任何报告的记录；信息中填写的报告编号或签发日期"
+        "不予给出",
+    "issued: the results of certificate {number}, written when the register issued it; the "
+    "register holds this file's SHA-256 ('anglebench register verify FILE' checks it)":
+        "已签发：证书 {number} 的结果，在登记册签发该证书时写出；登记册保存本文件的 SHA-256"
+        "（用“anglebench register verify 文件”核对）",
+    "issued: the results of test report {number}, written when the register issued it; the "
+    "register holds this file's SHA-256 ('anglebench register verify FILE' checks it)":
+        "已签发：检测报告 {number} 的结果，在登记册签发该报告时写出；登记册保存本文件的 SHA-256"
+        "（用“anglebench register verify 文件”核对）",
 }
 
 #: a test report's own words for the fields a calibration certificate names after the
 #: calibration (ISO/IEC 17025 7.8.2.1 a): the document identifies itself as what it is)
 REPORT_WORDS = {"Certificate number": "Report number", "Date of calibration": "Date of test",
-                "Place of calibration": "Place of test"}
+                "Place of calibration": "Place of test", "Operator": "Tested by",
+                "Certificate PDF SHA-256": "Report PDF SHA-256",
+                "Separate calibration from certificate(s), which stay valid":
+                    "Separate test from report(s), which stay valid",
+                "Why it is a calibration of its own": "Why it is a test of its own"}
 #: and in Chinese, where the certificate's term says 校准 (JJF 1001-2011: 检测 for a test)
 REPORT_CHINESE = {"Laboratory": "检测机构", "Item under test": "被检测对象", "Method": "检测方法"}
 
@@ -48,6 +98,28 @@ def label(document: CertificateDocument, english: str, separator: str = " ") -> 
     if language == "zh":
         return chinese_words.get(english) or _say("zh")(english)
     return english
+
+
+def own_words(document: CertificateDocument, english):
+    """``english``, a label of the certificate, in a test report's own words ("Report number"
+    for "Certificate number"); a calibration certificate's as it is."""
+    if document.is_test_report and not isinstance(english, Message):
+        return REPORT_WORDS.get(english, english)
+    return english
+
+
+def in_chinese(document: CertificateDocument, english) -> str:
+    """``english`` (a label, perhaps ending in its unit, or a :class:`Message` of the
+    certificate's own words) in Chinese as :func:`label` gives it: the certificate's fixed
+    words (a test report's own), else the catalogue's, the unit kept."""
+    return in_language(own_words(document, english), _chinese_words(document.is_test_report))
+
+
+@functools.cache
+def _chinese_words(report: bool) -> Callable[[str], str]:
+    words = {**CHINESE, **REPORT_CHINESE} if report else CHINESE
+    catalogue = translator("zh_CN")
+    return lambda text: words.get(text) or catalogue(text)
 
 
 @functools.cache
