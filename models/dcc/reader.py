@@ -3,7 +3,11 @@ read as its certificate. Pure: lxml only, no Qt.
 
 - :func:`read_polygon_dcc`: a polygon's calibration (the ``anglebench_polygonFaceDeviations``
   result: face indices 1…N and each face's deviation with its expanded uncertainty), as the
-  polygon workbench takes it in place of the readings' deviation column.
+  polygon workbench takes it in place of the readings' deviation column. Never a reference
+  polygon's deviations that an encoder's DCC restates
+  (``anglebench_referencePolygonFaceDeviations``, or in a document of 0.8.11 and before the
+  old refType under that result's name): such a DCC is refused, naming the polygon's own
+  certificate as it lists it.
 - :func:`read_standard_dcc`: any standard's certificate (any maker's): its id
   (``coreData/uniqueIdentifier``), calibration date (``endPerformanceDate``), the largest
   expanded uncertainty of the results that are the standard's errors (or deviations, or
@@ -14,9 +18,10 @@ Every refusal is a :class:`DccError` naming the file and why: the schema (when a
 given), a unit that is not an angle (\\arcsecond, \\arcminute, \\degree, \\radian with
 \\milli, \\micro or \\nano are converted exactly to arcseconds), a face count that does not
 fit, a signature that does not verify, a calibration that expired before the measurement,
-no polygon result. The XML is parsed with no network, no entity resolution, no DTD and no
-huge-tree mode, and a document that declares a DTD at all is refused: a hostile file can
-neither read local files nor expand entities.
+no polygon result, an encoder's DCC whose only polygon is its reference. The XML is parsed
+with no network, no entity resolution, no DTD and no huge-tree mode, and a document that
+declares a DTD at all is refused: a hostile file can neither read local files nor expand
+entities.
 """
 
 from __future__ import annotations
@@ -33,14 +38,17 @@ from typing import TYPE_CHECKING
 from models.dcc.vocabulary import (
     DCC_NAMESPACE,
     DS_NAMESPACE,
+    POLYGON_ENCODER_TEST_NAMES,
     PTB_MEASURED_VALUE,
     PTB_MEASUREMENT_ERROR,
     PTB_NOMINAL_VALUE,
     PTB_REFERENCE_VALUE,
+    REFERENCE_POLYGON_RESULT_NAMES,
     REFTYPE_BUDGET,
     REFTYPE_FACE_DEVIATION,
     REFTYPE_FACE_INDEX,
     REFTYPE_POLYGON_FACE_DEVIATIONS,
+    REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS,
     REFTYPE_SETUP_PARAMETERS,
     REFTYPE_STANDARD_DUE,
     REFTYPE_SUMMARY,
@@ -420,6 +428,69 @@ def _check_due(due_date: str, measurement_date: str | dt.date | None, source: st
 
 
 # -- a polygon's certificate -------------------------------------------------------------
+def _names(element) -> set[str]:
+    """Every language's dcc:name of ``element``, blanks collapsed."""
+    return {" ".join((c.text or "").split()) for c in element.findall(f"{D}name/{D}content")}
+
+
+def _is_reference_polygon(result) -> bool:
+    """Whether a dcc:result is a reference polygon's face deviations (the polygon an encoder
+    was calibrated against, as its own certificate states them), not a polygon calibrated:
+    its refType says so; or, in a document of 0.8.11 and before (which gave it the calibrated
+    polygon's refType), its name in any language is the one AngleBench gave it, or the
+    measurement it belongs to is a polygon encoder test (no polygon is calibrated there)."""
+    if _has_reftype(result, REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS):
+        return True
+    if not _has_reftype(result, REFTYPE_POLYGON_FACE_DEVIATIONS):
+        return False
+    if _names(result) & set(REFERENCE_POLYGON_RESULT_NAMES):
+        return True
+    measurement = next(result.iterancestors(f"{D}measurementResult"), None)
+    return measurement is not None and bool(_names(measurement)
+                                            & set(POLYGON_ENCODER_TEST_NAMES))
+
+
+_FROM_FACE_1 = re.compile(r"from face 1|以第 ?1 ?面为基准|相对第 ?1 ?面", re.IGNORECASE)
+
+
+def _reference_polygon_certificates(root) -> list[str]:
+    """The certificate numbers of the polygon the DCC lists among its standards (its
+    measuringEquipments): the one whose stated uncertainty is per face from face 1 (the
+    standard the polygon workbench takes the reference's U from), else one whose name
+    names a polygon; [] when it lists none with a number."""
+    by_face, by_name = [], []
+    for equipment in root.iterfind(f"{D}measurementResults/{D}measurementResult/"
+                                   f"{D}measuringEquipments/{D}measuringEquipment"):
+        number = " ".join((equipment.findtext(f"{D}certificate/{D}referralID")
+                           or equipment.findtext(f"{D}certificate/{D}value") or "").split())
+        if not number:
+            continue
+        stated = [q for q in equipment.iter(f"{D}measuringEquipmentQuantity")
+                  if any(_FROM_FACE_1.search(name) for name in _names(q))]
+        if stated:
+            by_face.append(number)
+        elif any(_POLYGON_WORDS.search(name) for name in _names(equipment)):
+            by_name.append(number)
+    return list(dict.fromkeys(by_face or by_name))
+
+
+def _an_encoders_dcc(root, source: str, certificate_id: str) -> DccError:
+    """The refusal of a DCC whose polygon result is only the reference polygon's."""
+    numbers = _reference_polygon_certificates(root)
+    if numbers:
+        return DccError(message(QT_TR_NOOP(
+            "{source}: certificate {id} calibrates an encoder against a reference polygon, not "
+            "the polygon: the face deviations in it are the reference polygon's, restated from "
+            "its own certificate {reference} (as this DCC lists the standard); read that "
+            "certificate's DCC as the polygon's"), source=source, id=certificate_id,
+            reference=listed(numbers)))
+    return DccError(message(QT_TR_NOOP(
+        "{source}: certificate {id} calibrates an encoder against a reference polygon, not the "
+        "polygon: the face deviations in it are the reference polygon's, restated from its own "
+        "certificate, which this DCC does not name; read that certificate's DCC as the "
+        "polygon's"), source=source, id=certificate_id))
+
+
 def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
                      measurement_date: str | dt.date | None = None,
                      faces: int | None = None,
@@ -429,8 +500,10 @@ def read_polygon_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     when the calibration was due before it. DccError naming the file and why."""
     root, source, signer, notes = _load(path, schema_dir, trusted_cert)
     certificate_id, calibration_date = _core(root, source)
-    results = [r for r in root.iter(f"{D}result")
-               if _has_reftype(r, REFTYPE_POLYGON_FACE_DEVIATIONS)]
+    results = [r for r in root.iter(f"{D}result") if _has_reftype(
+        r, REFTYPE_POLYGON_FACE_DEVIATIONS) and not _is_reference_polygon(r)]
+    if not results and any(_is_reference_polygon(r) for r in root.iter(f"{D}result")):
+        raise _an_encoders_dcc(root, source, certificate_id)
     if not results:
         raise DccError(message(QT_TR_NOOP(
             "{source}: no polygon result found (a dcc:result of refType {reftype} with the face "
@@ -628,6 +701,8 @@ def _kind(element, result, quantity_name: str) -> str:
         if parent is result:
             break
         parent = parent.getparent()
+    if result is not None and _is_reference_polygon(result):
+        return _NOT_THE_STANDARDS  # a reference polygon's (the encoder's DCC): not the item's
     if PTB_MEASUREMENT_ERROR in reftypes:
         return _ERROR
     if REFTYPE_FACE_DEVIATION in reftypes:
@@ -716,7 +791,8 @@ def read_standard_dcc(path: str | Path, schema_dir: str | Path | None = None, *,
     else its polygon face deviations (``anglebench_faceDeviation``: the polygon reader's),
     else its measured values (``basic_measuredValue``); a DCC that marks none takes the
     largest of all its results, and says so. Set-up parameters, summary figures, budget,
-    nominal and reference values are never taken. In arcseconds (an angle) or micrometres (a
+    nominal and reference values, and a reference polygon's face deviations (an encoder's
+    DCC restating them) are never taken. In arcseconds (an angle) or micrometres (a
     length), its k and p beside it; a note names the result U was taken from and those not
     used. DccError naming the file and why."""
     root, source, signer, notes = _load(path, schema_dir, trusted_cert)

@@ -30,10 +30,23 @@ PTB_MEASURED_VALUE = "basic_measuredValue"
 PTB_MEASUREMENT_ERROR = "basic_measurementError"
 PTB_REFERENCE_VALUE = "basic_referenceValue"
 
-# Polygon face deviations: the polygon workbench's reference polygon and the
-# cross-calibration workbench's polygon result. One dcc:result of this refType holding a
+# Polygon face deviations: the cross-calibration workbench's polygon result (the polygon
+# calibrated: what the polygon reader takes). One dcc:result of this refType holding a
 # dcc:list with the two quantities below; the face count is the lists' length.
 REFTYPE_POLYGON_FACE_DEVIATIONS = "anglebench_polygonFaceDeviations"
+# A reference polygon's face deviations, in the same form: the polygon workbench's (an
+# encoder calibrated against that polygon) as the polygon's own certificate states them.
+# Not a result of this calibration and not the item's: the polygon reader never takes it.
+# Up to 0.8.11 written as anglebench_polygonFaceDeviations, under the name below.
+REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS = "anglebench_referencePolygonFaceDeviations"
+#: the name (en, zh) of that result, the same in every version that wrote it (0.4 to 0.8.11;
+#: en always, the mandatory language): how a document of 0.8.11 or before tells it apart
+REFERENCE_POLYGON_RESULT_NAMES = (
+    "Reference polygon face deviations (from face 1, as its certificate states them)",
+    "参考多面棱体各面偏差（相对第 1 面，按其校准证书给出）")
+#: the polygon workbench's title (en, zh): a measurementResult of that name calibrates an
+#: encoder against a reference polygon
+POLYGON_ENCODER_TEST_NAMES = ("Polygon encoder test", "多面棱体编码器检测")
 REFTYPE_FACE_INDEX = "anglebench_faceIndex"  # si:realListXMLList 1..N, unit \one
 REFTYPE_FACE_DEVIATION = "anglebench_faceDeviation"  # \arcsecond, with si:expandedMUXMLList
 FACE_INDEX_UNIT = r"\one"

@@ -591,10 +591,22 @@ def _column_name(b: _Builder, q, name: str, headers: Mapping[str, str]) -> None:
     etree.SubElement(el, D + "content").text = name
 
 
-def _face_form(b: _Builder, results, name: Any, dev, u, k, p: float) -> None:
-    """Face deviations from face 1 in the shared vocabulary (the reader's form)."""
-    res = etree.SubElement(results, D + "result", refType=b.ref(
-        v.REFTYPE_POLYGON_FACE_DEVIATIONS, "a polygon's face deviations from face 1 with U"))
+#: the refTypes of a polygon's face deviations: the polygon calibrated (the reader's), and a
+#: reference polygon's as its own certificate states them (never read as the polygon's)
+_FACE_RESULTS = {
+    v.REFTYPE_POLYGON_FACE_DEVIATIONS: "a polygon's face deviations from face 1 with U: the "
+    "polygon calibrated, this certificate's item",
+    v.REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS: "a reference polygon's face deviations from "
+    "face 1 with U, as its own certificate states them: the polygon the item was calibrated "
+    "against, not a result of this calibration (its certificate is the reference standard's "
+    "listed in measuringEquipments)"}
+
+
+def _face_form(b: _Builder, results, name: Any, dev, u, k, p: float,
+               ref: str = v.REFTYPE_POLYGON_FACE_DEVIATIONS) -> None:
+    """Face deviations from face 1 in the shared vocabulary (the reader's form), as the
+    result of refType ``ref`` (:data:`_FACE_RESULTS`)."""
+    res = etree.SubElement(results, D + "result", refType=b.ref(ref, _FACE_RESULTS[ref]))
     b.text(res, "name", name)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
     q = b.quantity(lst, QT_TR_NOOP("Face"), b.ref(v.REFTYPE_FACE_INDEX, "face number 1..N"))
@@ -827,9 +839,12 @@ def _measurement_results(b: _Builder, root, budgets, software, pairs: Mapping[st
         _face_deviations(b, results, face_column, pairs, budgets, p)
     if reference_faces is not None:
         dev, u, k = reference_faces
+        # its own refType: the polygon reader must never take it as the polygon calibrated
+        # (up to 0.8.11 it was anglebench_polygonFaceDeviations: an encoder's DCC read as the
+        # polygon's certificate gave the reference's deviations under the encoder's number)
         _face_form(b, results, QT_TR_NOOP("Reference polygon face deviations (from face 1, as "
                                           "its certificate states them)"), dev, u, k,
-                   DEFAULT_COVERAGE_PROBABILITY)
+                   DEFAULT_COVERAGE_PROBABILITY, v.REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS)
     _table_result(b, results, doc.parameters, v.REFTYPE_SETUP_PARAMETERS,
                   "the certificate's parameters table: the identified set-up parameters with U",
                   "anglebench_setupParameter", "one row of the parameters table", p)

@@ -493,7 +493,21 @@ def test_the_polygon_workbench_states_its_reference_polygon_in_the_shared_form(i
     by_face = {int(r["position"]): float(r["polygon_dev_arcsec"]) for r in rows}
     expected = [by_face[f] - by_face[1] for f in range(1, 25)]
     tree = etree.fromstring(issued["polygon"][3].read_bytes())
-    result = tree.find(f".//dcc:result[@refType='{v.REFTYPE_POLYGON_FACE_DEVIATIONS}']", NS)
+    # the reference polygon's, under a refType of its own: never the calibrated polygon's,
+    # which the polygon reader takes (0.8.11 wrote it as that: an encoder's DCC read as the
+    # polygon's certificate gave the reference's deviations under the encoder's number)
+    assert tree.find(f".//dcc:result[@refType='{v.REFTYPE_POLYGON_FACE_DEVIATIONS}']", NS) is None
+    result = tree.find(f".//dcc:result[@refType='{v.REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS}']",
+                       NS)
+    definitions = [d.findtext("dcc:value", namespaces=NS)
+                   for d in tree.iterfind(".//dcc:refTypeDefinition", NS)]
+    assert v.REFTYPE_REFERENCE_POLYGON_FACE_DEVIATIONS in definitions
+    assert v.REFTYPE_POLYGON_FACE_DEVIATIONS not in definitions
+    # named as every version named it (how the reader tells a DCC of 0.8.11 and before)
+    assert tuple(c.text for c in result.iterfind("dcc:name/dcc:content", NS)) == \
+        v.REFERENCE_POLYGON_RESULT_NAMES
+    assert tuple(c.text for c in tree.iterfind(".//dcc:measurementResult/dcc:name/dcc:content",
+                                               NS)) == v.POLYGON_ENCODER_TEST_NAMES
     deviation = result.find(f".//dcc:quantity[@refType='{v.REFTYPE_FACE_DEVIATION}']"
                             "/si:realListXMLList", NS)
     values = _floats(deviation.findtext("si:valueXMLList", namespaces=NS))

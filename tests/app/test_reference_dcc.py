@@ -143,3 +143,26 @@ def test_the_closed_loop_crosscal_polygon_dcc_read_by_the_polygon_workbench(samp
     corrected = np.reshape(result["corrected_error_arcsec"], (2, 12))
     residual = corrected[0] - truth - (corrected[0] - truth).mean()
     assert np.max(np.abs(residual)) < 0.1  # the polygon's faces taken out: the encoder left
+
+
+@pytest.mark.slow
+def test_an_encoders_dcc_given_as_the_polygons_is_refused_naming_the_polygons(samples_dir,
+                                                                              tmp_path, capsys):
+    """The polygon sample's own DCC (an encoder tested against polygon NIM-2026-0871) given
+    as the polygon's certificate: 0.8.11 took the reference's face deviations from it and
+    issued a certificate citing the encoder's number as the polygon's calibration."""
+    readings = samples_dir / "polygon_sample.csv"
+    details = samples_dir / "certificate_polygon.json"
+    encoder = tmp_path / "encoder.xml"
+    code, _, err = _run(capsys, "polygon", readings, "--metadata", details, "--certificate",
+                        tmp_path / "encoder.pdf", "--dcc", encoder, "--dcc-schema", SCHEMA)
+    assert code == 0, err
+    number = next(line for line in err.splitlines() if line.startswith("DCC of ")).split()[2]
+    pdf = tmp_path / "c.pdf"
+    code, out, err = _run(capsys, "polygon", readings, "--reference-dcc", encoder,
+                          "--dcc-schema", SCHEMA, "--metadata", details, "--certificate", pdf)
+    assert code == 2, err
+    assert (f"certificate {number} calibrates an encoder against a reference polygon, not the "
+            "polygon" in err), err
+    assert "restated from its own certificate NIM-2026-0871 (as this DCC lists the standard)" in err
+    assert not pdf.exists()

@@ -42,3 +42,26 @@ def test_a_polygon_dcc_fills_the_deviations_and_joins_the_standards(window, qtbo
     with pytest.raises(DccError, match="faces"):
         polygon.load_certificate(str(twelve))
     assert polygon.sheet.copy_rows() == before
+
+
+@pytest.mark.slow
+def test_an_encoders_dcc_is_refused_and_changes_nothing(window, qtbot):
+    """The polygon sample's encoder DCC as 0.8.11 wrote it (its reference polygon's face
+    deviations under the calibrated polygon's refType): 0.8.11 filled the column with the
+    reference's deviations and listed the encoder's certificate SPECIMEN-45AF2B79 as the
+    polygon's. Refused now, naming the polygon's own certificate; nothing changes."""
+    from tests.models.dcc.test_reference_polygon import WRITTEN_0_8_11
+
+    polygon = window.presenter("polygon")
+    polygon.load_sample()
+    qtbot.waitUntil(lambda: polygon.result is not None)
+    before = polygon.sheet.copy_rows()
+    standards = window.certificates.details("polygon").standards
+    with pytest.raises(DccError, match=r"certificate SPECIMEN-45AF2B79 calibrates an encoder "
+                                       r"against a reference polygon.* its own certificate "
+                                       r"NIM-2026-0871 \(as this DCC lists the standard\)"):
+        polygon.load_certificate(str(WRITTEN_0_8_11))
+    assert polygon.sheet.copy_rows() == before
+    assert window.certificates.details("polygon").standards == standards
+    assert not any(s.certificate_no == "SPECIMEN-45AF2B79"
+                   for s in window.certificates.details("polygon").standards)
