@@ -2405,6 +2405,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>未写出数字证书：在不确定度预算中找不到“{column}”某一测点的包含因子</translation>
     </message>
     <message>
+        <source>U raised to the laboratory&apos;s CMC</source>
+        <translation>U 提高到实验室的 CMC</translation>
+    </message>
+    <message>
+        <source>The laboratory&apos;s calibration and measurement capability (CMC) U = {cmc} holds this quantity&apos;s U. At the {count} of the {points} points marked true the U these readings give is below it, so their U is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4); there U/k is the CMC&apos;s standard uncertainty, not the budget&apos;s u_c. At the points marked false U is the budget&apos;s own.</source>
+        <translation>本量的 U 不低于实验室的校准和测量能力（CMC）U = {cmc}。在 {points} 个点中标为 true 的 {count} 个点上，由本次读数得到的 U 低于此值，因此其 U 按 CMC 给出，包含因子 k 不变（ILAC-P14 5.4）；在这些点上 U/k 是 CMC 的标准不确定度，而不是预算的 u_c。在标为 false 的点上，U 为预算本身给出的值。</translation>
+    </message>
+    <message>
+        <source>Laboratory&apos;s CMC (smallest U)</source>
+        <translation>实验室 CMC（最小 U）</translation>
+    </message>
+    <message>
         <source>no DCC written: the coverage factor of a face deviation is not found in its budget</source>
         <translation>未写出数字证书：在不确定度预算中找不到某一面偏差的包含因子</translation>
     </message>
@@ -8941,6 +8953,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>Face</source>
+        <extracomment>a D-SI unit&apos;s sign in a sentence (the CMC&apos;s figure) the refTypes of a polygon&apos;s face deviations: the polygon calibrated (the reader&apos;s), and a reference polygon&apos;s as its own certificate states them (never read as the polygon&apos;s)</extracomment>
         <translation>面</translation>
     </message>
     <message>
@@ -9578,6 +9591,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>The laboratory&apos;s calibration and measurement capability (CMC) for this quantity is U = {cmc}; every U stated here is at or above it.</source>
+        <extracomment>each setting made by cmc_parameter → what it is the CMC of (the JSON&apos;s laboratory_cmc)</extracomment>
         <translation>实验室对该量的校准和测量能力（CMC）为 U = {cmc}；本文件给出的每个 U 均不小于此值。</translation>
     </message>
     <message>
@@ -10329,6 +10343,14 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>{source}：证书 {id} 应于 {due} 复校，早于 {when} 的测量：校准已过期</translation>
     </message>
     <message>
+        <source>{source}: certificate {id} calibrates an encoder against a reference polygon, not the polygon: the face deviations in it are the reference polygon&apos;s, restated from its own certificate {reference} (as this DCC lists the standard); read that certificate&apos;s DCC as the polygon&apos;s</source>
+        <translation>{source}：证书 {id} 是以参考多面棱体校准编码器，而非校准该多面棱体：其中的各面偏差是参考多面棱体的，转述自其自身证书 {reference}（按本 DCC 所列的标准）；请读入该证书的 DCC 作为多面棱体的证书</translation>
+    </message>
+    <message>
+        <source>{source}: certificate {id} calibrates an encoder against a reference polygon, not the polygon: the face deviations in it are the reference polygon&apos;s, restated from its own certificate, which this DCC does not name; read that certificate&apos;s DCC as the polygon&apos;s</source>
+        <translation>{source}：证书 {id} 是以参考多面棱体校准编码器，而非校准该多面棱体：其中的各面偏差是参考多面棱体的，转述自其自身证书，而本 DCC 未列出该证书编号；请读入该证书的 DCC 作为多面棱体的证书</translation>
+    </message>
+    <message>
         <source>{source}: no polygon result found (a dcc:result of refType {reftype} with the face indices and deviations)</source>
         <translation>{source}：未找到多面棱体结果（refType 为 {reftype}、含面号和偏差的 dcc:result）</translation>
     </message>
@@ -10373,13 +10395,42 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
         <translation>{source}：读数测到第 {read} 面，证书 {id} 给出 {n} 个面：是另一个多面棱体的证书</translation>
     </message>
     <message>
+        <source>measurement errors or deviations</source>
+        <extracomment>words that name the polygon among a certificate&apos;s standards (en, zh) the reference a workbench takes from a polygon&apos;s DCC (models.workbench.AcceptsReference) what a result with an uncertainty is, in the order a standard&apos;s U is taken from: the standard&apos;s error (PTB&apos;s basic_measurementError, or a name that says error or deviation), a polygon&apos;s face deviations in AngleBench&apos;s vocabulary, its measured values (basic_measuredValue); a result none of these is taken only when nothing is marked</extracomment>
+        <translation>测量误差或偏差</translation>
+    </message>
+    <message>
+        <source>a polygon&apos;s face deviations</source>
+        <translation>多面棱体的各面偏差</translation>
+    </message>
+    <message>
+        <source>measured values</source>
+        <translation>测得值</translation>
+    </message>
+    <message>
+        <source>{source}: none of its results with an uncertainty is a measurement error, a deviation or a measured value of the standard (only {others}): the standard&apos;s U is left empty</source>
+        <translation>{source}：其带不确定度的结果中没有标准的测量误差、偏差或测得值（只有 {others}）：标准的 U 留空</translation>
+    </message>
+    <message>
         <source>{source}: its uncertainties are in {units}: neither an angle nor a length</source>
-        <extracomment>words that name the polygon among a certificate&apos;s standards (en, zh) the reference a workbench takes from a polygon&apos;s DCC (models.workbench.AcceptsReference)</extracomment>
         <translation>{source}：其不确定度的单位为 {units}：既不是角度也不是长度</translation>
     </message>
     <message>
         <source>{source}: no result states an expanded uncertainty: the standard&apos;s U is left empty</source>
+        <extracomment>refTypes of results that are no quantity the standard provides: AngleBench&apos;s set-up (fitted nuisance) parameters, summary figures, budget, decided quantity; PTB&apos;s nominal and reference values (the calibrating laboratory&apos;s, not the item&apos;s) names of an error or deviation (en, de, zh), and of a measured value, for a DCC that marks its results with no refType; a standard deviation is a statistic, not an error</extracomment>
         <translation>{source}：没有结果给出扩展不确定度：该计量标准的 U 留空</translation>
+    </message>
+    <message>
+        <source>{source}: none of its results is marked as a measurement error, a deviation or a measured value (by its refType or its name): U is the largest of all its results, that of “{name}”; check that it is the uncertainty of what the standard provides</source>
+        <translation>{source}：其结果均未标明为测量误差、偏差或测得值（按 refType 或名称）：U 取其全部结果中最大者，即“{name}”的 U；请核实它是该标准所提供之量的不确定度</translation>
+    </message>
+    <message>
+        <source>{source}: U is that of “{name}”, the largest of its results that are {kind}; not used: {others}</source>
+        <translation>{source}：U 取自“{name}”，即其{kind}结果中最大者；未采用：{others}</translation>
+    </message>
+    <message>
+        <source>{source}: U is that of “{name}”, the largest of its results that are {kind}</source>
+        <translation>{source}：U 取自“{name}”，即其{kind}结果中最大者</translation>
     </message>
     <message>
         <source>{where}: the embedded PDF is not base64 ({reason})</source>
@@ -10527,6 +10578,18 @@ the band table&apos;s columns the column of a problem with the preset&apos;s nam
     <message>
         <source>run {later} ({direction}) repeats run {earlier} at every θ, reading for reading: a copied pass is no repeat; delete it or enter the pass as it was read</source>
         <translation>第 {later} 测回（{direction}）在每个 θ 处逐个读数重复第 {earlier} 测回：复制的测回不是重复测量；请删除它，或按实际读数录入该测回</translation>
+    </message>
+    <message>
+        <source>Replace the file?</source>
+        <translation>替换文件？</translation>
+    </message>
+    <message>
+        <source>{name} already exists in {folder}.
+
+Replace it?</source>
+        <translation>{folder} 中已有 {name}。
+
+替换它吗？</translation>
     </message>
 </context>
 </TS>
