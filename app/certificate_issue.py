@@ -159,6 +159,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement,
                                  separate_calibration=separate_calibration,
+                                 # what the document recorded is: a test report or a
+                                 # calibration certificate (in the chain, chain format 4)
+                                 document_kind=lambda: "test" if made["document"].is_test_report
+                                 else "calibration",
                                  render_dcc=(lambda _final, _pdf: made["dcc"])
                                  if dcc is not None else None)
     try:

@@ -495,9 +495,12 @@ class CertificatePresenter:
         if revision is not None:
             self.pending = None
         what = f" ({record.revision} of {record.supersedes})" if record.supersedes else ""
-        self.view.show_status(self._with_dcc(tr(
-            "Certificate {number} issued: written to {path} and recorded in the register").format(
-                number=record.number + what, path=path), path), 10000)
+        # a test report calls itself one (ISO/IEC 17025 7.8.2.1 a)), as it is recorded
+        said = (tr("Test report {number} issued: written to {path} and recorded in the "
+                   "register") if record.document_kind == "test" else
+                tr("Certificate {number} issued: written to {path} and recorded in the register"))
+        self.view.show_status(self._with_dcc(said.format(number=record.number + what,
+                                                         path=path), path), 10000)
         return True
 
     def export_results(self, kind, result, settings: dict, source_name: str,

@@ -1,6 +1,8 @@
 """``anglebench register``: the certificate register for audits, without a window.
 
-    anglebench register list [SEARCH]          newest first; SEARCH in number, serial, customer
+    anglebench register list [SEARCH]          newest first (number, status, certificate or test
+                                               report, date, workbench, serial, customer);
+                                               SEARCH in number, serial, customer
     anglebench register show NUMBER            the record (--pdf OUT, --dcc OUT.xml, --project OUT
                                                to extract), its chain value and the head before it
     anglebench register verify [FILE.pdf|.xml|.xlsx|.csv] the hash chain, every stored PDF
@@ -40,7 +42,7 @@ from models.messages import QT_TR_NOOP, declared_text, joined, message, reason_o
 from models.project.atomic_write import write_bytes_atomic
 from models.project.output_guard import OutputRefused, check_outputs, register_files
 from models.register.location import register_url
-from models.register.wording import revision_words, status_words
+from models.register.wording import kind_words, revision_words, status_words
 from models.spreadsheet_cell import spreadsheet_safe
 
 #: what ``show`` lists of a record, named as the register's columns (translated as names)
@@ -55,7 +57,7 @@ SHOWN_V4 = (QT_TR_NOOP("approver"), QT_TR_NOOP("os_user"), QT_TR_NOOP("withdrawn
             QT_TR_NOOP("chain_sha256"))
 #: shown as well (schema version 5): the SHA-256 of the DCC issued with the PDF
 SHOWN_V5 = (QT_TR_NOOP("dcc_sha256"),)
-COLUMNS = ("number", "status", "revision", *SHOWN)
+COLUMNS = ("number", "status", "revision", "document_kind", *SHOWN)
 
 
 def _parser(words) -> argparse.ArgumentParser:
@@ -152,7 +154,11 @@ def _print_record(record, register, words) -> None:
     revision = ("" if record.revision == "original"
                 else joined((", ", revision_words(record.revision))))
     lines = [message(QT_TR_NOOP("{number}  ({status}{revision})"), number=record.number,
-                     status=status_words(record.status), revision=revision)]
+                     status=status_words(record.status), revision=revision),
+             # a calibration certificate or a test report (schema version 6; "not recorded"
+             # for a record issued before: never guessed)
+             message(QT_TR_NOOP("  {field}: {value}"), field=message(QT_TR_NOOP("Document")),
+                     value=kind_words(record.document_kind))]
     for key in (*SHOWN, *SHOWN_V4, *SHOWN_V5):
         value = getattr(record, key)
         if value:
@@ -357,8 +363,9 @@ def run_register(argv: list[str]) -> int:
             if args.command == "list":
                 for r in register.list(args.search):
                     status = rendered(status_words(r.status), words)
-                    sys.stdout.write(f"{r.number}\t{status}\t{r.issue_date}\t{r.workbench}\t"
-                                     f"{r.item_serial}\t{r.customer}\n")
+                    kind = rendered(kind_words(r.document_kind), words)
+                    sys.stdout.write(f"{r.number}\t{status}\t{kind}\t{r.issue_date}\t"
+                                     f"{r.workbench}\t{r.item_serial}\t{r.customer}\n")
                 return 0
             if args.command == "show":
                 record = register.get(args.number)

@@ -13,13 +13,13 @@ from PySide6.QtCore import QT_TR_NOOP
 
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from models.register.store import CertificateRecord, RegisterError
-from models.register.wording import revision_words, status_words
+from models.register.wording import kind_words, revision_words, status_words
 from widgets.i18n import explained, tr, translated
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
 COLUMNS = (QT_TR_NOOP("Number"), QT_TR_NOOP("Status"), QT_TR_NOOP("Revision"),
-           QT_TR_NOOP("Issued"), QT_TR_NOOP("Calibrated"), QT_TR_NOOP("Workbench"),
+           QT_TR_NOOP("Document"), QT_TR_NOOP("Issued"), QT_TR_NOOP("Calibrated"), QT_TR_NOOP("Workbench"),
            QT_TR_NOOP("Serial"), QT_TR_NOOP("Customer"))
 
 
@@ -85,7 +85,8 @@ class RegisterPresenter:
             self.check_pdfs()
         self.view.show_records(COLUMNS, [
             (r.number, translated(status_words(r.status)),
-             translated(revision_words(r.revision)), r.issue_date, r.calibration_date, r.workbench,
+             translated(revision_words(r.revision)), translated(kind_words(r.document_kind)),
+             r.issue_date, r.calibration_date, r.workbench,
              r.item_serial, r.customer) for r in self.records])
 
     def check_pdfs(self) -> None:

@@ -682,12 +682,16 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
         return _before_after().before_after(before, after)
 
     def verdict(self, r):
+        # each figure to its interval's decimal, as the summary and the certificate print it
+        # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″")
+        decimals = {k: interval_decimals(iv.low, iv.high)
+                    for k, iv in (figure_uncertainties(r) or {}).items()}
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
                           ((k, r.iso.figures.get(k)) for k in (
                               ("A", "R", "B") if r.bidirectional else
                               tuple(f"{f}_{n}" for n, _, _ in r.directions_present()
-                                    for f in ("A", "R")))), r.symbol),
+                                    for f in ("A", "R")))), r.symbol, decimals),
             "" if r.minimum_runs_met else message(QT_TR_NOOP(" — fewer than 5 runs: flagged"))))
 
     def headline(self, r):

@@ -14,6 +14,10 @@ approved it, its place and the counter value its number came from (``chain_forma
 Since schema version 5 a certificate issued with a digital calibration certificate (DCC XML)
 has chain format 3: its chain also covers the DCC's SHA-256, so the DCC, its hash, or both
 set to nothing are found as the PDF's are; records issued without one keep format 2.
+Since schema version 6 every record issued has chain format 4: its chain also covers what
+the document is (``document_kind``: a calibration certificate or a test report) and its
+DCC's SHA-256 or that it has none; records issued before keep their format and their chain
+values, and their kind is not recorded.
 The ``register_state`` row holds the number of records and the head, so a deleted tail is
 found; the counters are cross-checked against the records allocated from them.
 
@@ -29,7 +33,7 @@ import json
 from collections.abc import Mapping
 from typing import Any
 
-__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK",
+__all__ = ["CHAINED", "CHAINED_V2", "CHAINED_V3", "CHAINED_V4", "ENTRY_CHAINED", "GENESIS", "HEAD_MARK",
            "head_in_pdf", "link", "link_entry"]
 
 #: a record's fields as issued, in the chain (status and superseded_by change later)
@@ -42,6 +46,10 @@ CHAINED_V2 = ("seq", "counter", "counter_value", "os_user", "approver")
 #: what a record of chain format 3 (schema version 5: issued with a digital calibration
 #: certificate) adds to chain format 2's: the DCC's SHA-256
 CHAINED_V3 = ("dcc_sha256",)
+#: what a record of chain format 4 (schema version 6: every record issued since) adds to
+#: chain format 3's: what the document is, "calibration" or "test" (chain format 4 covers
+#: the DCC's SHA-256 also when it is None: a record issued without a DCC)
+CHAINED_V4 = ("document_kind",)
 #: an entry's fields, all in the chain
 ENTRY_CHAINED = ("seq", "kind", "subject", "body_json", "recorded_at", "os_user", "workstation")
 GENESIS = "0" * 64
@@ -56,7 +64,8 @@ def link(previous: str, record: Mapping[str, Any]) -> str:
     """The chain after the certificate ``record``, given the chain before it."""
     chain_format = record.get("chain_format") or 1
     keys = (CHAINED + (CHAINED_V2 if chain_format >= 2 else ())
-            + (CHAINED_V3 if chain_format >= 3 else ()))
+            + (CHAINED_V3 if chain_format >= 3 else ())
+            + (CHAINED_V4 if chain_format >= 4 else ()))
     fields = {k: record[k] for k in keys}
     if chain_format >= 2:
         fields["chain_format"] = record["chain_format"]

@@ -72,6 +72,11 @@ CERTIFICATES = sa.Table(
     # SHA-256 (in the chain: chain_format 3); both None for a certificate issued without one
     sa.Column("dcc", sa.LargeBinary, nullable=True),
     sa.Column("dcc_sha256", sa.String(64), nullable=True),
+    # migration 6: what the document is, "calibration" (a calibration certificate) or "test"
+    # (a test report: asked for, or a result that cannot state traceability), in the chain
+    # of every record issued since (chain format 4); None on a record issued before it: not
+    # recorded, never guessed
+    sa.Column("document_kind", sa.String(20), nullable=True),
 )
 
 #: the register's other records, chained with the certificates (migration 4): calibration
@@ -186,9 +191,22 @@ def _v5(conn: sa.Connection) -> None:
     conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN dcc_sha256 VARCHAR(64)"))
 
 
+def _v6(conn: sa.Connection) -> None:
+    """What each document is (a calibration certificate or a test report): one nullable
+    column. No record's chain value is touched: the records issued before keep their chain
+    format and their kind None ("not recorded": a test report issued by 0.8.11 is not told
+    from a certificate afterwards, so nothing is guessed); records issued since have chain
+    format 4, which covers the kind. Refused when the column exists already (a version set
+    back)."""
+    columns = {c["name"] for c in sa.inspect(conn).get_columns("certificates")}
+    if "document_kind" in columns:
+        raise ValueError("the column of version 6 exists already")
+    conn.execute(sa.text("ALTER TABLE certificates ADD COLUMN document_kind VARCHAR(20)"))
+
+
 #: version → the migration that brings a register to it from the version before
 MIGRATIONS: dict[int, Callable[[sa.Connection], None]] = {1: _v1, 2: _v2, 3: _v3, 4: _v4,
-                                                          5: _v5}
+                                                          5: _v5, 6: _v6}
 LATEST = max(MIGRATIONS)
 
 
@@ -207,6 +225,10 @@ def downgrade_evidence(conn: sa.Connection, version: int) -> str:
             return f"register_state records schema version {copy}"
     if version < 2 and "instruments" in tables:
         return "the table of version 2 (instruments) exists"
+    if version < 6 and "certificates" in tables:
+        columns = {c["name"] for c in inspector.get_columns("certificates")}
+        if "document_kind" in columns:
+            return "the column of version 6 exists"
     if version < 5 and "certificates" in tables:
         columns = {c["name"] for c in inspector.get_columns("certificates")}
         if "dcc_sha256" in columns:

@@ -39,7 +39,8 @@ from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
 from models.messages import QT_TR_NOOP, message, reason_of
 from models.project.output_guard import TURN_FILE_SUFFIX
-from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, GENESIS, link
+from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
+from models.register.wording import DOCUMENT_KINDS, kind_words
 
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
@@ -139,6 +140,9 @@ class CertificateRecord:
     # schema version 5: the SHA-256 of the digital calibration certificate (DCC XML) issued
     # with the PDF (chain format 3); None when it was issued without one
     dcc_sha256: str | None = None
+    # schema version 6: what the document is, "calibration" (a calibration certificate) or
+    # "test" (a test report), in the chain (format 4); None: issued before it, not recorded
+    document_kind: str | None = None
 
     @property
     def headline(self) -> dict[str, float]:
@@ -649,7 +653,9 @@ class Register:
     def issue(self, request: IssueRequest, render: Callable[..., bytes],
               *, render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None = None,
               supersedes: str = "", change_note: str = "", replacement: bool = False,
-              separate_calibration: str | None = None) -> tuple[CertificateRecord, bytes]:
+              separate_calibration: str | None = None,
+              document_kind: str | Callable[[], str] | None = None
+              ) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
         the number and head the register expects next; one short transaction then checks
@@ -669,7 +675,16 @@ class Register:
         original for the workbench, item and date of calibration of a current certificate
         raises :class:`SameCalibrationIssued` unless it says why this is a calibration of its
         own (printed on it, with the other certificates' numbers). None: not checked (the
-        register's own tests of numbering and of the chain issue one detail many times)."""
+        register's own tests of numbering and of the chain issue one detail many times).
+
+        ``document_kind``: what the document rendered is, "calibration" (a calibration
+        certificate) or "test" (a test report), or a callable that says so after each
+        ``render`` (the document of the attempt recorded; app/certificate_issue.py gives
+        one, so every certificate of the window and the command line records it). It
+        enters the record's chain (chain format 4: every record issued since schema version
+        6). An amendment or replacement records its own document's kind, which is the
+        original's unless the corrected document is of the other kind. None: not recorded
+        (the register's own tests)."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         meta = request.metadata
@@ -723,6 +738,9 @@ class Register:
                     change_note=separate if same else change_note,
                     separate_from=", ".join(same))
                 pdf = _call_render(render, final, plan.head)
+                kind = document_kind() if callable(document_kind) else document_kind
+                if kind is not None and kind not in DOCUMENT_KINDS:
+                    raise ValueError(f"document_kind {kind!r}: one of {DOCUMENT_KINDS}")
                 dcc = render_dcc(final, pdf) if render_dcc is not None else None
                 if dcc is not None and not isinstance(dcc, bytes | bytearray):
                     raise TypeError("render_dcc returns the DCC's bytes")
@@ -742,8 +760,9 @@ class Register:
                     pdf_sha256=hashlib.sha256(pdf).hexdigest(),
                     seq=plan.seq, counter=plan.counter, counter_value=plan.counter_value,
                     os_user=user, approver=meta.approver,
-                    chain_format=2 if dcc is None else 3,
-                    dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest())
+                    chain_format=4,
+                    dcc_sha256=None if dcc is None else hashlib.sha256(dcc).hexdigest(),
+                    document_kind=kind)
                 chain = link(plan.head, dataclasses.asdict(record))
                 record = dataclasses.replace(record, chain_sha256=chain,
                                              signature=self._sign(chain))
@@ -1008,7 +1027,7 @@ class Register:
 
         sa, schema = self._sa, self._schema
         certificates, entries = schema.CERTIFICATES, schema.ENTRIES
-        columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, "chain_format", "status",
+        columns = ("id", *CHAINED, *CHAINED_V2, *CHAINED_V3, *CHAINED_V4, "chain_format", "status",
                    "superseded_by", "withdrawn_reason", "chain_sha256", "signature")
         problems: list = []
         with self._read() as conn:
@@ -1055,6 +1074,12 @@ class Register:
                             "recorded at issue"), number=item.number))
                 if not is_entry:
                     problems += _dcc_problems(conn, certificates, item, pdfs)
+                    if item.document_kind is not None and (item.chain_format or 1) < 4:
+                        problems.append(message(QT_TR_NOOP(
+                            "record {number}: its document kind ({kind}) was set after issue: "
+                            "it was issued before the register recorded what a document is, and "
+                            "its chain does not cover it"), number=item.number,
+                            kind=kind_words(item.document_kind)))
         problems += self._signature_problems(links)
         count = len(links)
         if state.get("records") != str(count) or state.get("head") != previous:

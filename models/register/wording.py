@@ -8,7 +8,11 @@ import re
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["revision_words", "status_words"]
+__all__ = ["DOCUMENT_KINDS", "kind_words", "revision_words", "status_words"]
+
+#: what a record's ``document_kind`` may be (schema version 6): the keys of the document
+#: types a certificate's details choose from (models.certificate.metadata.DOCUMENT_TYPES)
+DOCUMENT_KINDS = ("calibration", "test")
 
 _STATUSES = {"issued": QT_TR_NOOP("issued"), "superseded": QT_TR_NOOP("superseded"),
              "withdrawn": QT_TR_NOOP("withdrawn")}
@@ -18,6 +22,17 @@ _REVISIONS = {"original": QT_TR_NOOP("original"), "replacement": QT_TR_NOOP("rep
 def status_words(status: str) -> str:
     """``issued``, ``superseded`` or ``withdrawn`` as a message (any other text as it is)."""
     return message(_STATUSES[status]) if status in _STATUSES else status
+
+
+def kind_words(kind: str | None) -> str:
+    """What a record's document is, as a message: "Calibration certificate" or "Test
+    report"; "not recorded" for a record issued before the register recorded it (None:
+    never guessed from the record); any other text as it is."""
+    from models.certificate.metadata import DOCUMENT_TYPES
+
+    if kind is None:
+        return message(QT_TR_NOOP("not recorded"))
+    return message(DOCUMENT_TYPES[kind]) if kind in DOCUMENT_KINDS else kind
 
 
 def revision_words(revision: str) -> str:

@@ -60,12 +60,13 @@ def issued(register_url):
 def test_the_dcc_is_stored_with_the_same_number_and_pdf_and_chained(issued):
     url, plain, with_dcc = issued
     with _open(url) as register:
-        assert plain.chain_format == 2 and plain.dcc_sha256 is None
+        # chain format 4 (schema version 6) covers the DCC's SHA-256, None here, and the kind
+        assert plain.chain_format == 4 and plain.dcc_sha256 is None
         with pytest.raises(RegisterError, match="issued without a digital calibration"):
             register.dcc(plain.number)
         for record in with_dcc:
             dcc = register.dcc(record.number)
-            assert record.chain_format == 3
+            assert record.chain_format == 4
             assert record.dcc_sha256 == hashlib.sha256(dcc).hexdigest()
             assert register.get(record.number).dcc_sha256 == record.dcc_sha256
             t.assert_valid(dcc)
@@ -136,25 +137,52 @@ def test_the_pdf_inside_the_dcc_must_be_the_stored_pdf(register_url):
                             "differ"]
 
 
+def _as_version_4(url: str) -> str:
+    """The register as schema version 4 left it: its records of chain format 2, chained by
+    that format's rule (SHA-256 over the previous value and the issued fields as sorted
+    JSON, written out here), no DCC or kind columns; the head returned."""
+    import json
+
+    from models.register.chain import CHAINED, CHAINED_V2
+
+    engine = sa.create_engine(url.replace("postgresql://", "postgresql+psycopg://"))
+    previous = "0" * 64
+    with engine.begin() as conn:
+        rows = conn.execute(sa.text("SELECT * FROM certificates ORDER BY seq")).mappings().all()
+        for row in rows:
+            fields = {**{k: row[k] for k in CHAINED + CHAINED_V2}, "chain_format": 2}
+            body = json.dumps(fields, sort_keys=True, ensure_ascii=False, separators=(",", ":"))
+            previous = hashlib.sha256(f"{previous}\n{body}".encode()).hexdigest()
+            conn.execute(sa.text("UPDATE certificates SET chain_format = 2, chain_sha256 = :c "
+                                 "WHERE id = :i"), {"c": previous, "i": row["id"]})
+        for statement in ("ALTER TABLE certificates DROP COLUMN dcc",
+                          "ALTER TABLE certificates DROP COLUMN dcc_sha256",
+                          "ALTER TABLE certificates DROP COLUMN document_kind",
+                          "UPDATE schema_version SET version = 4",
+                          "UPDATE register_state SET value = '4' WHERE name = 'schema_version'"):
+            conn.execute(sa.text(statement))
+        conn.execute(sa.text("UPDATE register_state SET value = :h WHERE name = 'head'"),
+                     {"h": previous})
+    engine.dispose()
+    return previous
+
+
 def test_a_version_4_register_migrates_keeping_its_chain(register_url):
     """A register as schema version 4 left it (records of chain format 2, no DCC columns):
     migration 5 adds the columns, every chain value stays; new records chain their DCC."""
     with _open(register_url) as register:
         old = [register.issue(IssueRequest("polygon", META, PROJECT), render)[0]
                for _ in range(3)]
-        head = register.chain_head()
-    sql(register_url, "ALTER TABLE certificates DROP COLUMN dcc",
-        "ALTER TABLE certificates DROP COLUMN dcc_sha256",
-        "UPDATE schema_version SET version = 4",
-        "UPDATE register_state SET value = '4' WHERE name = 'schema_version'")
+    head = _as_version_4(register_url)
     with _open(register_url) as register:
-        assert register.version == schema.LATEST == 5
+        assert register.version == schema.LATEST == 6
         assert register.problems == [] and register.find_head(head) == (3, head)
-        assert [register.get(r.number).chain_sha256 for r in old] == [r.chain_sha256
-                                                                       for r in old]
+        kept = [register.get(r.number) for r in old]
+        assert kept[-1].chain_sha256 == head and {r.chain_format for r in kept} == {2}
+        assert {r.document_kind for r in kept} == {None}  # not recorded, never guessed
         new = register.issue(IssueRequest("polygon", META, PROJECT), render,
                              render_dcc=render_dcc)[0]
-        assert new.chain_format == 3 and register.audit(pdfs=True) == []
+        assert new.chain_format == 4 and register.audit(pdfs=True) == []
     sql(register_url, "UPDATE schema_version SET version = 4",
         "UPDATE register_state SET value = '4' WHERE name = 'schema_version'")
     with pytest.raises(RegisterError, match="schema version 4 was set back"):

@@ -68,19 +68,19 @@ def found(url: str) -> list[str]:
         return on_opening
 
 
-@pytest.mark.parametrize("version", [1, 2, 3, 4])
+@pytest.mark.parametrize("version", [1, 2, 3, 4, 5])
 def test_a_schema_version_set_back_is_refused_never_migrated(issued, version):
     url, numbers, head = issued
     sql(url, "UPDATE certificates SET customer = 'Someone Else' WHERE number = :n",
         f"UPDATE schema_version SET version = {version}", n=numbers[1])
     with pytest.raises(RegisterTampered, match=f"schema version {version} was set back"):
         Register(url)
-    sql(url, "UPDATE schema_version SET version = 5")  # nothing was migrated meanwhile
+    sql(url, "UPDATE schema_version SET version = 6")  # nothing was migrated meanwhile
     problems = found(url)
     assert any(f"record {numbers[1]}: the hash chain is broken" in p for p in problems)
 
 
-@pytest.mark.parametrize("version", [0, -1, 6])
+@pytest.mark.parametrize("version", [0, -1, 7])
 def test_an_unknown_schema_version_is_refused(issued, version):
     url, _, _ = issued
     sql(url, f"UPDATE schema_version SET version = {version}")
@@ -291,7 +291,7 @@ def test_the_issuing_user_and_approver_are_chained(issued):
     with _open(url) as register:
         record = register.get(numbers[0])
         assert record.approver == "Dr. Li" and record.os_user is not None
-        assert record.chain_format == 2 and record.seq == 1
+        assert record.chain_format == 4 and record.seq == 1  # every record since schema 6
     sql(url, "UPDATE certificates SET approver = 'Someone' WHERE number = :n", n=numbers[0])
     assert any(f"record {numbers[0]}: the hash chain is broken" in p for p in found(url))
 
