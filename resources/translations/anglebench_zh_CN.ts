@@ -1714,6 +1714,10 @@
         <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
     </message>
     <message>
+        <source>Test report {number} issued: written to {path} and recorded in the register</source>
+        <translation>检测报告 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
+    </message>
+    <message>
         <source>Certificate {number} issued: written to {path} and recorded in the register</source>
         <translation>证书 {number} 已签发：已写入 {path} 并记录在登记册中</translation>
     </message>
@@ -6090,6 +6094,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>记录 {number}：它位于哈希链的第 {seq} 位，而应为第 {expected} 位（其前的记录被删除或插入）</translation>
     </message>
     <message>
+        <source>record {number}: its document kind ({kind}) was set after issue: it was issued before the register recorded what a document is, and its chain does not cover it</source>
+        <translation>记录 {number}：其文件类型（{kind}）是签发后设置的：该记录签发于登记册记录文件类型之前，其哈希链不涵盖此项</translation>
+    </message>
+    <message>
         <source>the register recorded {recorded} record(s) ending at chain head {head}, but holds {count} ending at {actual}: records were deleted (the tail truncated) or added after issue</source>
         <translation>登记册记下的是 {recorded} 条记录、止于链头 {head}，但现有 {count} 条、止于 {actual}：签发后有记录被删除（尾部被截断）或被添加</translation>
     </message>
@@ -6279,6 +6287,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>issued</source>
+        <extracomment>what a record&apos;s ``document_kind`` may be (schema version 6): the keys of the document types a certificate&apos;s details choose from (models.certificate.metadata.DOCUMENT_TYPES)</extracomment>
         <translation>已签发</translation>
     </message>
     <message>
@@ -6292,6 +6301,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>replacement</source>
         <translation>替代</translation>
+    </message>
+    <message>
+        <source>not recorded</source>
+        <translation>未记录</translation>
     </message>
     <message>
         <source>amendment {n}</source>
