@@ -39,6 +39,7 @@ from models.workbench import (
 )
 
 if TYPE_CHECKING:
+    from models.certificate.uncertainty_json import PointUncertainty
     from models.uncertainty.budget import UncertaintyBudget
 
 __all__ = ["CROSSCAL", "CrossCalResult", "analyze", "polygon_deviation_rows", "summary", "to_json"]
@@ -179,20 +180,47 @@ class CrossCalResult:
             var = var + comparator_u_arcsec(self, metadata, from_first) ** 2
         return np.sqrt(np.clip(var, 0.0, None))
 
+    def u_from_first(self, item: str, metadata: Any = None) -> PointUncertainty:
+        """U and k of the ``item``'s values stated from its first point ("polygon": d_i − d_1,
+        from face 1; "encoder": E_k − E_0, from step 0), k the solution's: the scatter's with
+        the bench's stated bounds through the design, and with the certificate details the
+        comparators' stated U. Held to the laboratory's CMC of that quantity (ILAC-P14 5.4, as
+        every U stated about the mean is by its budget) at every point but the first, the
+        reference, where the value and its U are zero by definition; ``below_floor`` marks
+        the points raised to it (the JSON's and the DCC's flags), ``floor`` is that CMC (0:
+        none set)."""
+        from models.certificate.uncertainty_json import PointUncertainty
+
+        k = float(self.solution.coverage_factor)
+        computed = k * self._u_from_first(0 if item == "encoder" else 1, metadata)
+        cmc = self.cmc_encoder_arcsec if item == "encoder" else self.cmc_polygon_arcsec
+        raised = np.zeros(computed.size, dtype=bool)
+        if cmc > 0:
+            raised[1:] = computed[1:] < cmc
+        return PointUncertainty(np.where(raised, cmc, computed), np.full(computed.size, k),
+                                raised if cmc > 0 else None, cmc if cmc > 0 else 0.0)
+
     def encoder_u_from_step0_arcsec(self, metadata: Any = None) -> np.ndarray:
-        """Expanded U of E_k − E_0 (zero at step 0); with the certificate details, the
-        comparators' stated U in (the certificate's column)."""
-        return self.solution.coverage_factor * self._u_from_first(0, metadata)
+        """Expanded U of E_k − E_0 (zero at step 0), held to the laboratory's CMC for the
+        encoder (:meth:`u_from_first`); with the certificate details, the comparators'
+        stated U in (the certificate's column)."""
+        return np.asarray(self.u_from_first("encoder", metadata).expanded, dtype=float)
+
+    def encoder_u_from_step0_standard_arcsec(self, metadata: Any = None) -> np.ndarray:
+        """Standard uncertainty of E_k − E_0 (zero at step 0), as these readings give it."""
+        return self._u_from_first(0, metadata)
 
     def polygon_u_from_face1_standard_arcsec(self, metadata: Any = None) -> np.ndarray:
-        """Standard uncertainty of d_i − d_1 (zero at face 1, the reference)."""
+        """Standard uncertainty of d_i − d_1 (zero at face 1, the reference), as these
+        readings give it (not held to the CMC: no U is stated from it)."""
         return self._u_from_first(1, metadata)
 
     def polygon_u_from_face1_arcsec(self, metadata: Any = None) -> np.ndarray:
         """Expanded U of d_i − d_1 (what a polygon certificate stated from face 1 carries): the
         scatter's (k from its ν) with the bench's stated bounds through the design; with the
-        certificate details, the comparators' stated U in (the certificate's column)."""
-        return self.solution.coverage_factor * self._u_from_first(1, metadata)
+        certificate details, the comparators' stated U in (the certificate's column). Held
+        to the laboratory's CMC for face deviations but at face 1 (:meth:`u_from_first`)."""
+        return np.asarray(self.u_from_first("polygon", metadata).expanded, dtype=float)
 
     @functools.cached_property
     def expanded_u_arcsec(self) -> tuple[np.ndarray, np.ndarray]:
@@ -458,11 +486,20 @@ def polygon_reference(result: CrossCalResult) -> SentReference:
     """The polygon's face deviations from face 1 with the U of each (d_i − d_1, from the full
     covariance), for the polygon workbench's reference column and its standard's U."""
     d = polygon_deviations(result)  # ValueError when the design does not determine them
-    u1 = result.polygon_u_from_face1_arcsec()
+    held = result.u_from_first("polygon")  # held to the laboratory's CMC but at face 1
+    u1 = np.asarray(held.expanded, dtype=float)
     k = result.solution.coverage_factor
-    name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); its "
-                              "U is the largest U of d_i − d_1 over the faces, {u} (k = {k})"),
-                   faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}")
+    if held.below_floor is not None and np.any(held.below_floor):
+        name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); "
+                                  "its U is the largest U of d_i − d_1 over the faces, {u} (k = "
+                                  "{k}), each at least the laboratory's CMC {cmc}"),
+                       faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}",
+                       cmc=f"{held.floor:g}\"")
+    else:
+        name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); "
+                                  "its U is the largest U of d_i − d_1 over the faces, {u} (k = "
+                                  "{k})"),
+                       faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}")
     return SentReference(POLYGON_FACE_DEVIATIONS, {i + 1: float(d[i] - d[0]) for i in range(result.faces)},
                          {i + 1: float(u1[i]) for i in range(result.faces)}, float(k), name)
 
@@ -529,14 +566,11 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         """The encoder's error from step 0: its U (the certificate's "U from step 0", the
         comparators in) with the solution's k, as the polygon's from face 1 in
         :meth:`uncertainty_budgets`."""
-        from models.certificate.uncertainty_json import PointUncertainty
 
         s = result.solution
         if not s.separable:
             return {}
-        u = np.asarray(result.encoder_u_from_step0_arcsec(metadata), dtype=float)
-        return {"error_from_step0_arcsec": PointUncertainty(
-            u, np.full(u.size, float(s.coverage_factor)))}
+        return {"error_from_step0_arcsec": result.u_from_first("encoder", metadata)}
 
     def decided_errors(self, result, metadata):
         # the item's values about their mean (None: the design does not determine them)
@@ -550,7 +584,6 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         import dataclasses
 
         from models.certificate.metadata import CertificateMetadata
-        from models.certificate.uncertainty_json import PointUncertainty
         from models.crosscal.report import crosscal_budget
 
         _check_analysed_with(result, settings)
@@ -566,9 +599,7 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
             budgets = {name: crosscal_budget(dataclasses.replace(result, certificate_of=item),
                                              metadata)
                        for item, name in zip(("encoder", "polygon"), names, strict=True)}
-        budgets["polygon_deviation_from_face1_arcsec"] = PointUncertainty(
-            np.asarray(result.polygon_u_from_face1_arcsec(metadata), dtype=float),
-            np.full(s.faces, float(s.coverage_factor)))
+        budgets["polygon_deviation_from_face1_arcsec"] = result.u_from_first("polygon", metadata)
         return budgets
 
     def certified_json(self, result, metadata, settings=None):

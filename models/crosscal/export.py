@@ -32,7 +32,8 @@ def polygon_deviations(result: CrossCalResult) -> np.ndarray:
 
 def polygon_deviation_rows(result: CrossCalResult) -> list[list[str]]:
     """The polygon's face deviations as its certificate states them for the polygon
-    workbench: position, deviation from face 1 (″) and its expanded U (″)."""
+    workbench: position, deviation from face 1 (″) and its expanded U (″), held to the
+    laboratory's CMC for face deviations as the certificate's column is."""
     d = polygon_deviations(result)  # ValueError when not determined
     u = result.polygon_u_from_face1_arcsec()
     return [[str(i + 1), f"{d[i] - d[0]:.4f}", f"{u[i]:.4f}"] for i in range(result.faces)]
@@ -47,6 +48,10 @@ def polygon_reference_csv(result: CrossCalResult) -> str:
               "(for the polygon workbench: Load polygon certificate)\n")
     out.write(f"# U (k = {s.coverage_factor:.2f}) from face 1 up to {largest:.4f} arcsec: "
               "enter it as the polygon standard's U stated from face 1\n")
+    if result.cmc_polygon_arcsec > 0:  # (models.crosscal.analysis: CrossCalResult.u_from_first)
+        out.write(f"# each U held to the laboratory's CMC for face deviations, "
+                  f"{result.cmc_polygon_arcsec:g} arcsec, except at face 1 (zero by definition)"
+                  "\n")
     out.write("position,deviation_arcsec,expanded_uncertainty_arcsec\n")
     for row in rows:
         out.write(",".join(row) + "\n")

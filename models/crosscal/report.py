@@ -252,6 +252,9 @@ def _correlation_statement(result, item: str, metadata: CertificateMetadata | No
     first = block - block[:, :1] - block[:1, :] + block[0, 0]  # cov of x_i − x_1
     pair = np.diag(block)[:, None] + np.diag(block)[None, :] - 2.0 * block
     u2_pair = float(np.max(pair[off])) + _pair_systematic_u2(result, item, metadata)
+    # a difference of two is the quantity stated from the first point (x_j − x_1): its U is
+    # held to the laboratory's CMC as theirs is (ILAC-P14 5.4)
+    u_pair = max(s.coverage_factor * np.sqrt(u2_pair), _cmc_of_item(result, item))
     return message(QT_TR_NOOP("Within these results the values are correlated: about the mean "
                               "r = {r_mean} on average between two of them (−1/(n − 1) = "
                               "{r_full} for a full rosette); stated from {first} r = {r_first}. "
@@ -261,7 +264,34 @@ def _correlation_statement(result, item: str, metadata: CertificateMetadata | No
                    first=message(QT_TR_NOOP("step 0") if item == "encoder"
                                  else QT_TR_NOOP("face 1")),
                    r_first=f"{mean_r(first[1:, 1:]):+.2f}",
-                   u_pair=f"{s.coverage_factor * np.sqrt(u2_pair):.3f}\"")
+                   u_pair=f"{u_pair:.3f}\"")
+
+
+def _cmc_of_item(result, item: str) -> float:
+    """The laboratory's CMC for the item's quantity (0: none set)."""
+    return result.cmc_encoder_arcsec if item == "encoder" else result.cmc_polygon_arcsec
+
+
+def _from_first_cmc_statement(result, item: str, metadata: CertificateMetadata) -> tuple[str, ...]:
+    """Where the laboratory's CMC raised a U stated from the first point (face 1, step 0):
+    one sentence naming it and how many points (none when no such U was raised; the
+    certificate's scope statement names the CMC's hold on the U about the mean)."""
+    held = result.u_from_first(item, metadata)
+    if held.below_floor is None or not np.any(held.below_floor):
+        return ()
+    raised = np.asarray(held.below_floor, dtype=bool)
+    k = float(result.solution.coverage_factor)
+    computed = k * (result.polygon_u_from_face1_standard_arcsec(metadata) if item != "encoder"
+                    else result.encoder_u_from_step0_standard_arcsec(metadata))
+    return (message(QT_TR_NOOP(
+        "The laboratory's CMC for this quantity, U = {cmc}, holds the U stated from {first} and "
+        "the U of the difference of any two too: from {first}, at {count} of the {others} other "
+        "points the U these readings give (down to {lowest}) is below it, so it is stated as the "
+        "CMC, with the same coverage factor k (ILAC-P14 5.4)."),
+        cmc=f"{held.floor:g}\"",
+        first=message(QT_TR_NOOP("step 0") if item == "encoder" else QT_TR_NOOP("face 1")),
+        count=int(np.count_nonzero(raised)), others=raised.size - 1,
+        lowest=f"{float(np.min(computed[raised])):.2g}\""),)
 
 
 def _pair_systematic_u2(result, item: str, metadata: CertificateMetadata | None = None) -> float:
@@ -422,4 +452,5 @@ def crosscal_certificate(result, metadata: CertificateMetadata, source_name: str
         tolerance=metadata.tolerance_in("arcsec"),
         plots=[*plots, residual_figure(result), closure_figure(result)],
         warnings=result.warnings, point_columns=point_columns,
-        statements=statements + budget_remarks(result), **sign)
+        statements=statements + _from_first_cmc_statement(result, item, metadata)
+        + budget_remarks(result), **sign)

@@ -471,13 +471,33 @@ def _k_lookup(budgets) -> Callable[[float], float | None]:
     return lambda u: pairs.get(round(float(u), 12))
 
 
+def _same_expanded(budget, expanded: np.ndarray) -> bool:
+    """Whether ``budget`` (a budget or a PointUncertainty) gives ``expanded``, point by point."""
+    return (budget is not None and np.size(budget.expanded) == expanded.size
+            and np.allclose(np.asarray(budget.expanded, dtype=float), expanded, rtol=0.0,
+                            atol=1e-12, equal_nan=True))
+
+
+def _coverage_factors(expanded: np.ndarray, budgets) -> np.ndarray | None:
+    """k of each point of a column whose U is ``expanded``: those of the budget that gives
+    this very U array when one does (where the laboratory's CMC makes several points' U one
+    figure, a lookup by value would take the first budget point of that U, another
+    quantity's or another point's k), else each point's from the budget point of its U
+    (:func:`_k_lookup`); None when a point's is not found."""
+    held = next((budget for budget in budgets if _same_expanded(budget, expanded)), None)
+    if held is not None:
+        return np.asarray(held.coverage_factors, dtype=float).reshape(-1)
+    k_of = _k_lookup(budgets)
+    factors = [k_of(u) for u in expanded]
+    return None if any(x is None for x in factors) else np.asarray(factors, dtype=float)
+
+
 def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str, Any],
             p: float, notes: Mapping[str, Any] | None = None) -> None:
     doc = b.document
     columns = dict(doc.point_columns)
     if not columns:
         return
-    k_of = _k_lookup([doc.budget, *budgets.values()])
     res = etree.SubElement(results, D + "result", refType=b.ref(
         v.REFTYPE_CURVE, "the certificate's results per point, each error with its U, k and p"))
     b.text(res, "name", doc.results.title)
@@ -502,12 +522,11 @@ def _curves(b: _Builder, results, pairs: Mapping[str, str], budgets: Mapping[str
             u_name = "expanded_uncertainty_" + pairs[stem] + name[len(stem) + 1:]
             if u_name in columns:
                 expanded = np.asarray(columns[u_name], dtype=float)
-                factors = [k_of(u) for u in expanded]
-                if any(x is None for x in factors):
+                k = _coverage_factors(expanded, [doc.budget, *budgets.values()])
+                if k is None:
                     raise DccError(message(QT_TR_NOOP(
                         "no DCC written: the coverage factor of a point of '{column}' is not "
                         "found in its budget"), column=name))
-                k = np.asarray(factors, dtype=float)
         elif name in budgets and budgets[name] is not None and \
                 np.size(budgets[name].expanded) == values.size:
             expanded = np.asarray(budgets[name].expanded, dtype=float)
@@ -548,9 +567,7 @@ def _raised_to_cmc(b: _Builder, q, expanded: np.ndarray, budgets, unit: str) -> 
     held = next((budget for budget in budgets
                  if budget is not None and float(getattr(budget, "floor", 0.0) or 0.0) > 0
                  and getattr(budget, "below_floor", None) is not None
-                 and np.size(budget.expanded) == expanded.size
-                 and np.allclose(np.asarray(budget.expanded, dtype=float), expanded,
-                                 rtol=0.0, atol=1e-12, equal_nan=True)), None)
+                 and _same_expanded(budget, expanded)), None)
     if held is None:
         return
     cmc = float(held.floor)
@@ -603,9 +620,9 @@ _FACE_RESULTS = {
 
 
 def _face_form(b: _Builder, results, name: Any, dev, u, k, p: float,
-               ref: str = v.REFTYPE_POLYGON_FACE_DEVIATIONS) -> None:
+               ref: str = v.REFTYPE_POLYGON_FACE_DEVIATIONS) -> Any:
     """Face deviations from face 1 in the shared vocabulary (the reader's form), as the
-    result of refType ``ref`` (:data:`_FACE_RESULTS`)."""
+    result of refType ``ref`` (:data:`_FACE_RESULTS`); returns the deviations' quantity."""
     res = etree.SubElement(results, D + "result", refType=b.ref(ref, _FACE_RESULTS[ref]))
     b.text(res, "name", name)
     lst = etree.SubElement(etree.SubElement(res, D + "data"), D + "list")
@@ -614,6 +631,7 @@ def _face_form(b: _Builder, results, name: Any, dev, u, k, p: float,
     q = b.quantity(lst, QT_TR_NOOP("Face deviation"), b.ref(
         v.REFTYPE_FACE_DEVIATION, "face deviation from face 1, arcseconds, with U"))
     b.real_list(q, dev, v.FACE_DEVIATION_UNIT, u, k, p)
+    return q
 
 
 def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str],
@@ -626,12 +644,14 @@ def _face_deviations(b: _Builder, results, column: str, pairs: Mapping[str, str]
     stem = column[:-len("_arcsec")]
     dev = np.asarray(columns[column], dtype=float)
     u = np.asarray(columns[f"expanded_uncertainty_{pairs.get(stem, '')}arcsec"], dtype=float)
-    k_of = _k_lookup([b.document.budget, *budgets.values()])
-    k = [k_of(x) for x in u]
-    if any(x is None for x in k):
+    held = [b.document.budget, *budgets.values()]
+    k = _coverage_factors(u, held)
+    if k is None:
         raise DccError(message(QT_TR_NOOP("no DCC written: the coverage factor of a face "
                                           "deviation is not found in its budget")))
-    _face_form(b, results, QT_TR_NOOP("Polygon face deviations (from face 1)"), dev, u, k, p)
+    q = _face_form(b, results, QT_TR_NOOP("Polygon face deviations (from face 1)"), dev, u, k, p)
+    # where the laboratory's CMC holds these U (the certificate's column): the same marks
+    _raised_to_cmc(b, q, u, held, v.FACE_DEVIATION_UNIT)
 
 
 def _decided(b: _Builder, results, p: float) -> None:

@@ -8893,6 +8893,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>拟合倾斜自身的不确定度使结果至多变化 {u}（u），可忽略</translation>
     </message>
     <message>
+        <source>The laboratory&apos;s CMC for this quantity, U = {cmc}, holds the U stated from {first} and the U of the difference of any two too: from {first}, at {count} of the {others} other points the U these readings give (down to {lowest}) is below it, so it is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4).</source>
+        <translation>实验室对该量的校准和测量能力（CMC）U = {cmc} 同样适用于相对{first}给出的 U 及任意两值之差的 U：相对{first}给出时，在其余 {others} 个点中有 {count} 个点，由本次读数得到的 U（最小 {lowest}）低于此值，因此其 U 按 CMC 给出，包含因子 k 不变（ILAC-P14 5.4）。</translation>
+    </message>
+    <message>
         <source>Encoder</source>
         <translation>编码器</translation>
     </message>
@@ -9129,6 +9133,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations {low} … {high} (U ≤ {ud})</source>
         <translation>编码器误差峰峰值 {ptp}（U ≤ {ue}）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
+    </message>
+    <message>
+        <source>Polygon, {faces} faces, cross-calibrated (closure principle); its U is the largest U of d_i − d_1 over the faces, {u} (k = {k}), each at least the laboratory&apos;s CMC {cmc}</source>
+        <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；其 U 取各面 d_i − d_1 的最大 U，{u}（k = {k}），每一 U 均不低于实验室的 CMC {cmc}</translation>
     </message>
     <message>
         <source>the face deviations are not determined by this design: nothing to send</source>
