@@ -32,7 +32,7 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
-from models.messages import QT_TR_NOOP, joined, message, separated
+from models.messages import QT_TR_NOOP, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 
 __all__ = ["crosscal_budget", "crosscal_certificate"]
