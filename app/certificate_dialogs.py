@@ -51,12 +51,16 @@ class CertificateDialogs:
         self.window.certificates.set_dcc_signing_paths(*dialog.dcc_signing_paths())
         return dialog.metadata()
 
-    def confirm_draft(self, missing: list[str]) -> bool:
+    def confirm_draft(self, missing: list[str], report: bool = False) -> bool:
+        # a test report's draft is not a test report (not "not a certificate")
+        said = (tr("These details are missing: {missing}. The PDF will be marked DRAFT, is "
+                   "not a test report, and nothing is recorded in the register. Export the "
+                   "draft anyway?") if report else
+                tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not "
+                   "a certificate, and nothing is recorded in the register. Export the draft "
+                   "anyway?"))
         answer = self.window.ask(
-            tr("Export a draft?"),
-            tr("These details are missing: {missing}. The PDF will be marked DRAFT, is not a "
-               "certificate, and nothing is recorded in the register. Export the draft anyway?")
-            .format(missing=", ".join(tr(m) for m in missing)),
+            tr("Export a draft?"), said.format(missing=", ".join(tr(m) for m in missing)),
             QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes

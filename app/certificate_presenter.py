@@ -27,6 +27,7 @@ from models.certificate.standards_fit import (
 )
 from models.display_units import ANGLE_UNITS, AngleUnit
 from models.project.output_guard import check_output
+from models.register.wording import revision_words
 from models.workbench import IssuesCertificates
 from widgets.i18n import explained, tr, translated
 
@@ -83,8 +84,9 @@ class CertificateView(Protocol):
         """``numbers`` report the item and date of calibration already (``reason``, the
         register's words): why this is a calibration of its own (empty: not issued)."""
 
-    def confirm_draft(self, missing: list[str]) -> bool:
-        """Export a DRAFT although these details are missing?"""
+    def confirm_draft(self, missing: list[str], report: bool = False) -> bool:
+        """Export a DRAFT although these details are missing? (``report``: a test report's
+        draft, called one)"""
 
     def confirm_implausible(self, reason: str) -> bool:
         """Certify a result that shows figures no instrument of the kind has (``reason``)?"""
@@ -389,11 +391,13 @@ class CertificatePresenter:
                 continue
             draft = draft_reasons(entered)
             # "No, not a draft": back to the dialog, what was typed kept, to fill in the rest
-            if entered.example or not draft or self.view.confirm_draft(draft):
+            if entered.example or not draft or self.view.confirm_draft(
+                    draft, self._is_test_report(kind, result, entered, source_name, settings)):
                 break
             shown, self.problems, self.raw = entered, {}, {}  # what was stored now reads
         try:  # details the result refuses (a grade that disagrees) told before the file dialog
-            kind.certificate_document(result, entered, source_name, settings)
+            report = kind.certificate_document(result, entered, source_name,
+                                               settings).is_test_report
         except ValueError as exc:
             self.view.tell(tr("Cannot export"), tr("{reason}. Nothing was written; the details "
                                                    "are kept.").format(reason=explained(exc)))
@@ -424,10 +428,13 @@ class CertificatePresenter:
             if draft:
                 self._write_pdf_and_dcc(kind, result, kind.certificate_document(
                     result, entered, source_name, settings), path, settings)
-                self.view.show_status(self._with_dcc(tr(
-                    "Draft written to {path} — DRAFT: {missing} missing; nothing was recorded "
-                    "in the register").format(path=path, missing=", ".join(tr(m) for m in draft)),
-                    path), 10000)
+                # a test report's draft is called one (ISO/IEC 17025 7.8.2.1 a))
+                said = (tr("Draft test report written to {path} — DRAFT: {missing} missing; "
+                           "nothing was recorded in the register") if report else
+                        tr("Draft written to {path} — DRAFT: {missing} missing; nothing was "
+                           "recorded in the register"))
+                self.view.show_status(self._with_dcc(said.format(
+                    path=path, missing=", ".join(tr(m) for m in draft)), path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
                                revision, note, raw_capture)
@@ -487,21 +494,38 @@ class CertificatePresenter:
                     reason=explained(exc)))
             return False
         except IssuedNotWritten as exc:  # committed: the record and its PDF are in the register
-            self.view.tell(tr("Issued, but the file was not written"), tr(
-                "Certificate {number} is issued and recorded in the register, but {reason}: "
-                "save its PDF from File › Certificate register.").format(
-                    number=exc.record.number, reason=exc))
+            said = (tr("Test report {number} is issued and recorded in the register, but "
+                       "{reason}: save its PDF from File › Certificate register.")
+                    if exc.record.document_kind == "test" else
+                    tr("Certificate {number} is issued and recorded in the register, but "
+                       "{reason}: save its PDF from File › Certificate register."))
+            self.view.tell(tr("Issued, but the file was not written"),
+                           said.format(number=exc.record.number, reason=exc))
             return False
         if revision is not None:
             self.pending = None
-        what = f" ({record.revision} of {record.supersedes})" if record.supersedes else ""
+        number = record.number
+        if record.supersedes:  # the register's revision words, in the window's language
+            number = tr("{number} ({revision} of {supersedes})").format(
+                number=record.number, revision=translated(revision_words(record.revision)),
+                supersedes=record.supersedes)
         # a test report calls itself one (ISO/IEC 17025 7.8.2.1 a)), as it is recorded
         said = (tr("Test report {number} issued: written to {path} and recorded in the "
                    "register") if record.document_kind == "test" else
                 tr("Certificate {number} issued: written to {path} and recorded in the register"))
-        self.view.show_status(self._with_dcc(said.format(number=record.number + what,
-                                                         path=path), path), 10000)
+        self.view.show_status(self._with_dcc(said.format(number=number, path=path), path),
+                              10000)
         return True
+
+    @staticmethod
+    def _is_test_report(kind, result, entered, source_name, settings) -> bool:
+        """Whether the document of these details is a test report (asked for, or a result
+        whose U names inputs not stated); details it refuses are told after (as asked)."""
+        try:
+            return kind.certificate_document(result, entered, source_name,
+                                             settings).is_test_report
+        except ValueError:
+            return entered.document_type == "test"
 
     def export_results(self, kind, result, settings: dict, source_name: str,
                        unit: AngleUnit = ANGLE_UNITS["arcsec"]) -> bool:

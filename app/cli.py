@@ -660,6 +660,9 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
         return None
     except IssuedNotWritten as exc:
         _say(rendered(message(QT_TR_NOOP(
+            "anglebench analyze: test report {number} is issued and recorded, but {reason}: "
+            "save it with 'anglebench register show {number} --pdf OUT.pdf'")
+            if exc.record.document_kind == "test" else QT_TR_NOOP(
             "anglebench analyze: certificate {number} is issued and recorded, but {reason}: save "
             "it with 'anglebench register show {number} --pdf OUT.pdf'"),
             number=exc.record.number, reason=str(exc)), words))
@@ -722,6 +725,8 @@ def _export(args: argparse.Namespace, kind, result, settings: dict[str, Any],
         elif args.certificate:
             _write_pdf_and_dcc(args, kind, result, document, words, settings)
             _say(rendered(message(QT_TR_NOOP(
+                "Test report written to {path} (DRAFT: {fields} missing; nothing was recorded "
+                "in the register)") if document.is_test_report else QT_TR_NOOP(
                 "Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded "
                 "in the register)"), path=args.certificate, fields=listed(
                     message(name) for name in metadata.missing_fields())), words))

@@ -274,9 +274,13 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             "{path}: NOT in the register (no issued PDF has its SHA-256: altered, a "
             "draft, or from another register)"), path=path))
         return 1
-    out(message(QT_TR_NOOP(
+    out(message(_by_kind(record, QT_TR_NOOP(
         "{path}: certificate {number}, issued {issued_at}, {status}; identical to "
-        "the record (SHA-256)"), path=path, number=record.number,
+        "the record (SHA-256)"), QT_TR_NOOP(
+        "{path}: test report {number}, issued {issued_at}, {status}; identical to "
+        "the record (SHA-256)"), QT_TR_NOOP(
+        "{path}: document {number}, issued {issued_at}, {status}; identical to "
+        "the record (SHA-256)")), path=path, number=record.number,
         issued_at=record.issued_at, status=status_words(record.status)))
     _say_if_no_longer_valid(record, path, out)
     printed = "" if is_dcc else head_in_pdf(data)
@@ -287,6 +291,13 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
             number=record.number, actual=register.chain_before(record.number)))
         failed = True
     return 1 if failed else 0
+
+
+def _by_kind(record, certificate: str, report: str, unknown: str) -> str:
+    """The text that names what ``record`` is, as the register recorded it: a calibration
+    certificate, a test report, or — issued before the register recorded the kind
+    (``None``) — a document, never a guess."""
+    return {"calibration": certificate, "test": report}.get(record.document_kind, unknown)
 
 
 def _say_if_no_longer_valid(record, path: str, out) -> None:
@@ -311,9 +322,13 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "register)"), path=path))
         return 1
     for record, recorded_at in found:
-        out(message(QT_TR_NOOP(
+        out(message(_by_kind(record, QT_TR_NOOP(
             "{path}: the results file of certificate {number}, recorded {recorded_at}, "
-            "{status}; identical to the record (SHA-256)"), path=path, number=record.number,
+            "{status}; identical to the record (SHA-256)"), QT_TR_NOOP(
+            "{path}: the results file of test report {number}, recorded {recorded_at}, "
+            "{status}; identical to the record (SHA-256)"), QT_TR_NOOP(
+            "{path}: the results file of document {number}, recorded {recorded_at}, "
+            "{status}; identical to the record (SHA-256)")), path=path, number=record.number,
             recorded_at=recorded_at, status=status_words(record.status)))
         _say_if_no_longer_valid(record, path, out)
     return 0

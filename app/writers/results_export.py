@@ -30,7 +30,7 @@ import numpy as np
 
 from models.certificate.document import CertificateDocument, budget_table
 from models.display_units import ANGLE_UNITS, AngleUnit, header_in_unit, table_in_unit, text_in_unit
-from models.messages import Message, joined, message
+from models.messages import Message, joined, message, separated
 from models.project.atomic_write import write_bytes_atomic
 from models.quantity import UNITS
 from models.register.wording import revision_words
@@ -197,6 +197,10 @@ def write_results_csv(path: str | Path, document: CertificateDocument,
     write_bytes_atomic(path, results_csv_bytes(document, unit))
 
 
+#: the *Certificate* sheet's row naming the workbench's test: "Test" in English, its Chinese
+#: its own (app/writers/certificate_pdf/wording.py SHEET_CHINESE: not the PDF's table title)
+SHEET_TEST = "Test (the test performed)"
+
 #: what the *Certificate* sheet says of results written with no certificate issued (a test
 #: report's: :func:`not_issued`)
 NOT_ISSUED = ("not issued: these results were written apart from any certificate's issue, "
@@ -257,7 +261,7 @@ def _metadata_rows(document: CertificateDocument,
          meta.change_note or None if issued and meta.separate_from else None),
         ("Certificate PDF SHA-256", issued.pdf_sha256 if issued else None),
         ("DCC SHA-256", issued.dcc_sha256 if issued else None),
-        ("Test", document.kind_title),
+        (SHEET_TEST, document.kind_title),  # "Test": 校准项目 or 检测项目 (not the PDF's 检测)
         ("Readings", document.source_name), ("Laboratory", meta.lab_name),
         ("Customer", meta.customer_name), ("Item under test", meta.item_description),
         ("Serial number", meta.item_serial), ("Grade", meta.item_grade),
@@ -295,9 +299,12 @@ def _metadata_rows(document: CertificateDocument,
         ("Notes", meta.notes),
     ]
     for i, s in enumerate(meta.standards, 1):
-        rows.append((message("Standard {i}", i=i), message(
-            "{description}; serial {serial}; certificate {certificate}",
-            description=s.description, serial=s.serial, certificate=s.certificate_no)))
+        # a part left empty (no serial, no certificate number) is left out, not printed as
+        # "serial ;" (出厂编号 ；); typed text never looked up (joined: a text of its own)
+        rows.append((message("Standard {i}", i=i), joined([separated((
+            s.description, s.serial and message("serial {serial}", serial=s.serial),
+            s.certificate_no and message("certificate {certificate}",
+                                         certificate=s.certificate_no)), "; ")])))
         rows.append((joined([message("Standard {i} uncertainty", i=i),
                              f" ({UNITS[s.uncertainty_unit].symbol})"]), s.uncertainty))
     return rows
@@ -330,11 +337,15 @@ class _Words:
     def label(self, english, unit: AngleUnit) -> tuple[str, float]:
         """A label (a row's of the *Certificate* sheet, a column's heading) with its angle
         unit in ``unit``, and the factor of its figures."""
-        said, factor = header_in_unit(str(self._wording.own_words(self.document, english)),
-                                      unit)
+        wording = self._wording
+        said, factor = header_in_unit(str(wording.own_words(
+            self.document, wording.SHEET_WORDS.get(english, english))), unit)
         if self.language not in ("zh", "zh+en"):
             return said, factor
-        chinese = header_in_unit(self._chinese(english), unit)[0]
+        # a row of the sheet's own (SHEET_TEST), else as the certificate says it
+        own = (wording.REPORT_SHEET_CHINESE if self.document.is_test_report
+               else wording.SHEET_CHINESE).get(english)
+        chinese = header_in_unit(own or self._chinese(english), unit)[0]
         if self.language == "zh" or chinese == said:
             return chinese, factor
         return f"{chinese} {said}", factor

@@ -32,7 +32,7 @@ from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.crosscal import KEY, POLYGON_SIGN_CONVENTION_TEXT, TITLE
 from models.crosscal.figures import encoder_figures
 from models.crosscal.plots import closure_figure, encoder_figure, polygon_figure, residual_figure
-from models.messages import QT_TR_NOOP, joined, message
+from models.messages import QT_TR_NOOP, message, separated
 from models.uncertainty.budget import BudgetComponent, UncertaintyBudget
 
 __all__ = ["crosscal_budget", "crosscal_certificate"]
@@ -222,10 +222,11 @@ def budget_remarks(result) -> tuple[str, ...]:
                      drift=message(drift))]
     fitted = tilt_fit_effect_arcsec(s, r.mounting, r.position)[_item_block(result)]
     if np.any(fitted > 0) and np.max(fitted) <= 0.1 * np.min(_per_point(result)[1]):
-        parts += ["; ", message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
-                                           "results by at most {u} (u), negligible"),
-                                u=f"{np.max(fitted):.2g}\"")]
-    return (joined((*parts, ".")),)
+        parts.append(message(QT_TR_NOOP("the fitted tilts' own uncertainty changes the "
+                                        "results by at most {u} (u), negligible"),
+                             u=f"{np.max(fitted):.2g}\""))
+    # joined and ended in the certificate's language (Chinese: "；" and "。", not "; ", ".")
+    return (message(QT_TR_NOOP("{remarks}."), remarks=separated(parts, "; ")),)
 
 
 def _budget_point(point: str, k: int, big_u: np.ndarray, item: str) -> str:

@@ -297,7 +297,8 @@ def test_show_writes_the_dcc_as_issued_and_verify_checks_it(tmp_path, capsys):
     received = tmp_path / "received.xml"
     received.write_bytes(issued)
     assert main(["register", "verify", str(received)]) == 0
-    assert f"certificate {number}, issued" in capsys.readouterr().out
+    # issued here without its kind (no document_kind): named "document", never guessed
+    assert f"document {number}, issued" in capsys.readouterr().out
     received.write_bytes(issued.replace(b"</dcc:uniqueIdentifier>", b"X</dcc:uniqueIdentifier>"))
     assert main(["register", "verify", str(received)]) == 1
     assert "NOT in the register (no issued DCC has its SHA-256" in capsys.readouterr().out

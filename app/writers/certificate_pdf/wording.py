@@ -51,8 +51,7 @@ CHINESE = {
     "Inputs not stated, so not in U": "未给出、因而未计入 U 的输入量", "Notes": "备注",
     "Statement {i}": "声明 {i}", "Setting: {label}": "设置：{label}", "Standard {i}": "计量标准 {i}",
     "Standard {i} uncertainty": "计量标准 {i} 的不确定度",
-    "{description}; serial {serial}; certificate {certificate}":
-        "{description}；出厂编号 {serial}；证书编号 {certificate}",
+    "serial {serial}": "出厂编号 {serial}", "certificate {certificate}": "证书编号 {certificate}",
     "Value": "量值", "from": "起", "to": "止", "first": "第一个", "second": "第二个",
     "{column}: unit": "{column}：单位",
     "not issued: these results were written apart from any certificate's issue, so they are "
@@ -83,6 +82,14 @@ REPORT_WORDS = {"Certificate number": "Report number", "Date of calibration": "D
                 "Why it is a calibration of its own": "Why it is a test of its own"}
 #: and in Chinese, where the certificate's term says 校准 (JJF 1001-2011: 检测 for a test)
 REPORT_CHINESE = {"Laboratory": "检测机构", "Item under test": "被检测对象", "Method": "检测方法"}
+#: the results file's (XLSX) *Certificate* sheet's row naming the workbench's test
+#: ("Polygon encoder test"): a key of its own, in English "Test" as before; in Chinese 校准项目
+#: on a calibration certificate's sheet, 检测项目 on a test report's (the PDF's "Test", 检测,
+#: titles a table and stays as it is)
+#: (app/writers/results_export.py SHEET_TEST)
+SHEET_WORDS = {"Test (the test performed)": "Test"}
+SHEET_CHINESE = {"Test (the test performed)": "校准项目"}
+REPORT_SHEET_CHINESE = {"Test (the test performed)": "检测项目"}
 
 
 def label(document: CertificateDocument, english: str, separator: str = " ") -> str:
