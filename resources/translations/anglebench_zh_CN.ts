@@ -1690,6 +1690,10 @@
         <translation>{reason}。未写入任何内容；已填写的信息予以保留。</translation>
     </message>
     <message>
+        <source>Draft test report written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
+        <translation>检测报告草稿已写入 {path} — 草稿：缺少 {missing}；未在登记册中记录</translation>
+    </message>
+    <message>
         <source>{path}: {reason}. Nothing else was changed.</source>
         <translation>{path}：{reason}。其他内容均未改变。</translation>
     </message>
@@ -1706,12 +1710,20 @@
         <translation>{reason}。未写入也未记录任何证书。</translation>
     </message>
     <message>
+        <source>Test report {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
+        <translation>检测报告 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
+    </message>
+    <message>
         <source>Issued, but the file was not written</source>
         <translation>已签发，但文件未写入</translation>
     </message>
     <message>
         <source>Certificate {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
         <translation>证书 {number} 已签发并记录在登记册中，但 {reason}：请从 文件 › 证书登记册 保存其 PDF。</translation>
+    </message>
+    <message>
+        <source>{number} ({revision} of {supersedes})</source>
+        <translation>{number}（{supersedes} 的{revision}）</translation>
     </message>
     <message>
         <source>Test report {number} issued: written to {path} and recorded in the register</source>
@@ -2101,6 +2113,10 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
     <message>
         <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a certificate, and nothing is recorded in the register. Export the draft anyway?</source>
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是证书，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a test report, and nothing is recorded in the register. Export the draft anyway?</source>
+        <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是检测报告，也不会记录在登记册中。仍要导出草稿吗？</translation>
     </message>
     <message>
         <source>Use these reference standards?</source>
@@ -2886,6 +2902,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{path}：证书 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
     </message>
     <message>
+        <source>{path}: test report {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：检测报告 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>{path}: document {number}, issued {issued_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：文件 {number}，签发于 {issued_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
         <source>{path}: {number} is no longer valid: withdrawn ({reason})</source>
         <translation>{path}：{number} 已不再有效：已作废（{reason}）</translation>
     </message>
@@ -2900,6 +2924,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{path}: the results file of certificate {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
         <translation>{path}：证书 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>{path}: the results file of test report {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：检测报告 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）</translation>
+    </message>
+    <message>
+        <source>{path}: the results file of document {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
+        <translation>{path}：文件 {number} 的结果文件，记录于 {recorded_at}，{status}；与记录一致（SHA-256）</translation>
     </message>
     <message>
         <source>authorised signatories: {names}; approver and operator {rule}</source>
@@ -5330,6 +5362,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>anglebench analyze：{reason}；未写入证书</translation>
     </message>
     <message>
+        <source>anglebench analyze: test report {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
+        <translation>anglebench analyze：检测报告 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
+    </message>
+    <message>
         <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
         <translation>anglebench analyze：证书 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
     </message>
@@ -5344,6 +5380,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Results of {number} written to {path} and recorded in the register</source>
         <translation>{number} 的结果已写入 {path} 并记入登记册</translation>
+    </message>
+    <message>
+        <source>Test report written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
+        <translation>检测报告已写入 {path}（草稿：缺少{fields}；未记入登记册）</translation>
     </message>
     <message>
         <source>Certificate written to {path} (DRAFT: {fields} missing; nothing was recorded in the register)</source>
@@ -8891,6 +8931,10 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     <message>
         <source>the fitted tilts&apos; own uncertainty changes the results by at most {u} (u), negligible</source>
         <translation>拟合倾斜自身的不确定度使结果至多变化 {u}（u），可忽略</translation>
+    </message>
+    <message>
+        <source>{remarks}.</source>
+        <translation>{remarks}。</translation>
     </message>
     <message>
         <source>The laboratory&apos;s CMC for this quantity, U = {cmc}, holds the U stated from {first} and the U of the difference of any two too: from {first}, at {count} of the {others} other points the U these readings give (down to {lowest}) is below it, so it is stated as the CMC, with the same coverage factor k (ILAC-P14 5.4).</source>
