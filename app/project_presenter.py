@@ -31,6 +31,7 @@ from models.project.file import (
     save_project,
 )
 from models.project.recovery import RecoveryStore
+from models.project.save_lock import ProjectFileBusy, SaveLock
 from models.readings.sheet import NumericRows
 from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -264,15 +265,13 @@ class ProjectPresenter(QObject):
         self.update_title()
         return True
 
-    def _changed_on_disk(self) -> bool:
-        """Whether the project's file is no longer what this window last read or wrote
-        (by its SHA-256; a file that is gone, or cannot be read, is not asked about: the
-        save says what happens)."""
+    def _disk_sha256(self) -> str | None:
+        """SHA-256 of the project's file as it is on disk now (None: a file that is gone,
+        or cannot be read, is not asked about: the save says what happens)."""
         try:
-            current = file_sha256(self.path)
+            return file_sha256(self.path)
         except OSError:
-            return False
-        return current != self.disk_sha256
+            return None
 
     def _kinds(self) -> dict:
         return {p.kind.key: p.kind for p in self.presenters}
@@ -293,24 +292,44 @@ class ProjectPresenter(QObject):
     def save_to(self, path: str | Path) -> bool:
         """Save the project in ``path``; False when it was not saved (told, or cancelled).
         The project's own file changed on disk since this window read or wrote it is not
-        replaced unasked."""
-        if self.path is not None and Path(path) == self.path and self._changed_on_disk():
+        replaced unasked.
+
+        "Changed on disk?" and the write are one step under the file's lock
+        (models.project.save_lock), which every AngleBench process respects: a Save
+        pressed elsewhere at the same moment waits for this one's file, finds it changed
+        and asks (both were checked before either wrote: one's readings were lost,
+        nobody asked). The lock is let go while the question is asked; after "replace
+        it", the file is checked again under the lock."""
+        same = self.path is not None and Path(path) == self.path
+        agreed = self.disk_sha256  # the file's version this window may replace unasked
+        while True:
+            lock = SaveLock(path)
+            try:
+                lock.acquire()
+            except ProjectFileBusy as exc:
+                self.view.tell(tr("Cannot save"), (tr(
+                    "{path} is being saved from another window (computer {host}, process "
+                    "{pid}). Nothing was written; your readings are still here: save again in "
+                    "a moment.") if exc.host else tr(
+                    "{path} is being saved from another window. Nothing was written; your "
+                    "readings are still here: save again in a moment.")).format(
+                        path=path, host=exc.host, pid=exc.pid))
+                return False
+            try:
+                current = self._disk_sha256() if same else None
+                if current is None or current == agreed:
+                    digest = self._write(path, lock)
+                    if digest is None:
+                        return False
+                    break
+            finally:
+                lock.release()
             answer = self.view.ask_overwrite_changed(self.path.name)
             if answer is None:
                 return False
             if answer is False:
                 return self.save_as()
-        try:
-            digest = save_project(path, self.project())
-        except Exception as exc:  # noqa: BLE001 - any failure (UnicodeEncodeError,
-            # MemoryError, a TypeError of a setting) is a save that did not happen: said,
-            # and the work stays (an exception here closed the window unsaved)
-            log.exception("save of %s failed", path)
-            reason = (exc.strerror if isinstance(exc, OSError) else None) or explained(exc) \
-                or type(exc).__name__
-            self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
-                           .format(path=path, reason=reason))
-            return False
+            agreed = current  # replace that version (checked again: a later one asks again)
         self.path = Path(path)
         self.disk_sha256 = digest
         for presenter in self.presenters:
@@ -323,6 +342,22 @@ class ProjectPresenter(QObject):
         self.update_title()
         self.view.show_status(tr("Saved {path}").format(path=path), 5000)
         return True
+
+    def _write(self, path: str | Path, lock: SaveLock) -> str | None:
+        """Write the project (the lock held: touched between blocks of rows, so that a
+        long save is never taken for a dead one's); its SHA-256, None when it failed
+        (told: the work stays)."""
+        try:
+            return save_project(path, self.project(), lock.touch)
+        except Exception as exc:  # noqa: BLE001 - any failure (UnicodeEncodeError,
+            # MemoryError, a TypeError of a setting) is a save that did not happen: said,
+            # and the work stays (an exception here closed the window unsaved)
+            log.exception("save of %s failed", path)
+            reason = (exc.strerror if isinstance(exc, OSError) else None) or explained(exc) \
+                or type(exc).__name__
+            self.view.tell(tr("Cannot save"), tr("{path}: {reason}. Your readings are still here.")
+                           .format(path=path, reason=reason))
+            return None
 
     # -- files dropped on the window ----------------------------------------------------
     @staticmethod
