@@ -130,9 +130,21 @@ def test_the_face_deviation_file_states_the_certificates_u_with_the_details(cert
             {i + 1: round(x, 4) for i, x in enumerate(certified["d1"])}, abs=1e-12)
 
 
-def _sent_standard(window):
+def _sent_standard(window, qtbot=None):
+    """The polygon's standard stated from face 1, as its certificate details hold it and,
+    given ``qtbot``, as the polygon's certificate dialog shows it in its standards table."""
     (standard,) = [s for s in window.certificates.details("polygon").standards
                    if s.applies_to == "from face 1"]
+    if qtbot is not None:
+        from widgets.certificate_dialog import _STANDARD_COLUMNS, CertificateDialog
+
+        dialog = CertificateDialog(window.certificates.details("polygon"), window)
+        qtbot.addWidget(dialog)
+        table = dialog.standards
+        cells = [{key: (table.item(r, c).text() if table.item(r, c) else "")
+                  for c, key in enumerate(_STANDARD_COLUMNS)} for r in range(table.rowCount())]
+        (shown,) = [row for row in cells if row["description"] == standard.description]
+        assert float(shown["uncertainty"]) == standard.uncertainty
     return standard
 
 
@@ -145,7 +157,7 @@ def _send(window):
     return window.presenter("polygon")
 
 
-def test_the_window_sends_the_certified_u_from_face1(window, certified, tmp_path):
+def test_the_window_sends_the_certified_u_from_face1(window, certified, tmp_path, qtbot):
     """The crosscal sample in the window with the sample's certificate details: the polygon
     workbench's reference column is d_i − d_1 and its standard's u the largest certified U
     from face 1 over k (0.050″ / k, not the 0.028″ / k sent before); the file saved from the
@@ -158,7 +170,7 @@ def test_the_window_sends_the_certified_u_from_face1(window, certified, tmp_path
     column = polygon.sheet.column_index("polygon_dev_arcsec")
     got = np.array([float(polygon.sheet.text(r, column)) for r in range(n)])
     np.testing.assert_allclose(got, certified["d1"], atol=1e-6)
-    standard = _sent_standard(window)
+    standard = _sent_standard(window, qtbot)
     assert standard.basis == "u" and standard.uncertainty_unit == "arcsec"
     assert standard.uncertainty == pytest.approx(certified["u"].max() / k, abs=1e-6)
     assert standard.uncertainty > 1.5 * certified["bare"].max() / k
@@ -191,7 +203,7 @@ def test_lab_defaults_listing_the_autocollimator_are_the_certificates_too(window
                                                "serial": "AC-17"}]],
                          ids=["no details", "autocollimator without U"])
 def test_without_a_comparators_u_what_is_sent_and_written_says_so(window, certified, tmp_path,
-                                                                   standards):
+                                                                   standards, qtbot):
     """No details, or an autocollimator listed without its U: the certificate states the
     readings' own U from face 1, and so do the reference and the file, each saying that it
     leaves the comparators' calibration out (the standard's name on the polygon certificate,
@@ -206,7 +218,7 @@ def test_without_a_comparators_u_what_is_sent_and_written_says_so(window, certif
         np.testing.assert_allclose(stated["polygon_deviation_U_from_face1_arcsec"],
                                    certified["bare"], rtol=1e-12)
     _send(window)
-    standard = _sent_standard(window)
+    standard = _sent_standard(window, qtbot)
     assert standard.uncertainty == pytest.approx(certified["bare"].max() / certified["k"],
                                                  abs=1e-6)
     assert standard.description.endswith(
