@@ -195,19 +195,29 @@ class CertificatePresenter:
         """The workbench's details from the project, the lab's defaults filled in; a stored
         detail that no longer reads is kept aside (``problems``), not the others blanked."""
         self.editing = key  # the lab defaults saved from its dialog are this workbench's
+        meta, self.problems, self.raw = self._details_of(key)
+        return meta
+
+    def issue_details(self, key: str) -> CertificateMetadata:
+        """The details a certificate of workbench ``key`` starts from now (its dialog's, as
+        :meth:`details`), without taking ``key`` as the workbench being edited: what a
+        figure sent or written as the certificate states it is made with."""
+        return self._details_of(key)[0]
+
+    def _details_of(self, key: str) -> tuple[CertificateMetadata, dict[str, str], dict]:
         certificates = self._metadata().get("certificates", {})
         stored = certificates.get(key)
         last = certificates.get(self._metadata().get("certificates_last", ""))
         if stored is None and isinstance(last, dict):  # offered what was typed for another
             stored = {k: last[k] for k in SHARED_DETAILS if k in last}
-        meta, self.problems = CertificateMetadata.from_dict_lenient(stored)
-        self.raw = stored if isinstance(stored, dict) else {}
-        if "language" not in self.raw:
+        meta, problems = CertificateMetadata.from_dict_lenient(stored)
+        raw = stored if isinstance(stored, dict) else {}
+        if "language" not in raw:
             meta = dataclasses.replace(meta, language=self.default_language)
         try:
-            return meta.with_lab_defaults(self.lab_defaults(key))
+            return meta.with_lab_defaults(self.lab_defaults(key)), problems, raw
         except MetadataError:
-            return meta
+            return meta, problems, raw
 
     def stored_details(self, key: str) -> CertificateMetadata | None:
         """The details stored for workbench ``key``, the lab's defaults filled in, as its

@@ -467,8 +467,19 @@ def run_analyze(argv: list[str]) -> int:
             sys.stdout.write(say(QT_TR_NOOP("Warning: {warning}")).format(warning=warning)
                              + "\n")
     if args.table:
+        from models.certificate.metadata import MetadataError
+
         try:
-            what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table)
+            # a table that states U states the certificate's, with the same details
+            table_details = (_read_metadata(args.metadata,
+                                            kind.error_unit(kind.settings_with_defaults(settings)),
+                                            getattr(args, "reference", None))
+                             if args.metadata else None)
+            what = kind.correction_table(result, kind.settings_with_defaults(settings), args.table,
+                                         table_details)
+        except MetadataError as exc:
+            _say(f"anglebench analyze: {_why(exc, words)}")
+            return EXIT_BAD_INPUT
         except ValueError as exc:
             _say(f"anglebench analyze: --table: {_why(exc, words)}")
             return EXIT_BAD_INPUT

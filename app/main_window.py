@@ -111,6 +111,9 @@ class MainWindow(QMainWindow):
             if hasattr(presenter, "dcc_trusted_certificate"):  # its signature checked against it
                 presenter.dcc_trusted_certificate = (
                     lambda: self.certificates.dcc_signing_paths()[2])
+            if hasattr(presenter, "issue_details"):  # what it writes as its certificate states
+                presenter.issue_details = (
+                    lambda key=presenter.kind.key: self.certificates.issue_details(key))
             if hasattr(presenter, "reference_standard_found"):
                 presenter.reference_standard_found = (
                     lambda standard, key=presenter.kind.key: self.certificates.add_polygon_standard(

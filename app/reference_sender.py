@@ -1,6 +1,9 @@
 """Sending a workbench's result to another as its reference standard (File › Send as
 reference): the cross-calibration's polygon face deviations, from face 1 with their U, into
-the polygon workbench's reference column, and the polygon's U into its certificate details.
+the polygon workbench's reference column, and the polygon's U into its certificate details:
+the U its own certificate states, with its certificate details (the comparators' stated
+calibration U in); without details listing a comparator with a stated U, the standard's name
+and the message say that U leaves it out.
 
 The sender and the receiver are found by capability (models.workbench.SendsReference /
 AcceptsReference, matched by the kind of reference), never by key."""
@@ -10,7 +13,8 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
-from models.certificate.metadata import ReferenceStandard
+from models.certificate.metadata import CertificateMetadata, ReferenceStandard
+from models.messages import JOINS
 from models.workbench import AcceptsReference, SendsReference
 from widgets.i18n import declared, explained, tr, translated
 
@@ -29,7 +33,8 @@ def receiver_of(window: Any, source: Any) -> Any:
 def send_reference(window: Any) -> bool:
     """The current workbench's reference into the workbench that accepts it (one undo step
     there), its largest U as the reference standard's (stated from face 1) in that
-    workbench's certificate details, replacing one sent before."""
+    workbench's certificate details, replacing one sent before; its U as the sender's
+    certificate states it with the sender's certificate details."""
     source = window.current
     target = receiver_of(window, source)
     if target is None:
@@ -43,26 +48,32 @@ def send_reference(window: Any) -> bool:
         window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {problem}.")
         return False
     try:
-        reference = source.kind.sent_reference(source.result)
+        # the details its certificate would be issued with now: never a smaller U than it states
+        details = window.certificates.issue_details(source.kind.key)
+        reference = source.kind.sent_reference(source.result, details)
+        # the budget takes one figure per standard: the largest standard u of d_i − d_1
+        standard = ReferenceStandard(description=translated(reference.standard_name),
+                                     uncertainty=round(reference.largest_standard_uncertainty, 6),
+                                     basis="u", applies_to="from face 1",
+                                     uncertainty_unit=reference.unit)
+        meta = window.certificates.details(target.kind.key)
+        kept = tuple(s for s in meta.standards if s.applies_to != "from face 1")
+        meta = dataclasses.replace(meta, standards=(*kept, standard))
+        # stored details read back leniently: a standard that does not read (a name too
+        # long) would drop every standard unseen, the sent U with them; refused here instead
+        CertificateMetadata.from_dict(meta.to_dict())
         cells = target.accept_reference(reference)
     except ValueError as exc:
         window.tell(tr("Nothing to send"), f"{declared(source.kind.title)}: {explained(exc)}")
         return False
-    # the budget takes one figure per standard: the largest standard u of d_i − d_1, stated so
-    standard = ReferenceStandard(description=translated(reference.standard_name),
-                                 uncertainty=round(reference.largest_standard_uncertainty, 6),
-                                 basis="u", applies_to="from face 1",
-                                 uncertainty_unit=reference.unit)
-    meta = window.certificates.details(target.kind.key)
-    kept = tuple(s for s in meta.standards if s.applies_to != "from face 1")
-    window.certificates.store_details(target.kind.key,
-                                      dataclasses.replace(meta, standards=(*kept, standard)))
+    window.certificates.store_details(target.kind.key, meta)
     target.refresh()
     window.tabs.setCurrentIndex(window.presenters.index(target))
-    window.statusBar().showMessage(
-        tr("{workbench}: {cells} reference values sent to {target} with their U (largest "
-           "u = {u}); Edit › Undo there restores the column").format(
-            workbench=declared(source.kind.title), cells=cells,
-            target=declared(target.kind.title),
-            u=f"{reference.largest_standard_uncertainty:.4f}\""), 8000)
+    said = tr("{workbench}: {cells} reference values sent to {target} with their U (largest "
+              "u = {u}); Edit › Undo there restores the column").format(
+        workbench=declared(source.kind.title), cells=cells, target=declared(target.kind.title),
+        u=f"{reference.largest_standard_uncertainty:.4f}\"")
+    if reference.left_out:  # said where it is read, not only in the standard's name
+        said = tr(JOINS["; "]).format(first=said, second=translated(reference.left_out))
+    window.statusBar().showMessage(said, 15000 if reference.left_out else 8000)
     return True

@@ -340,8 +340,11 @@ class WritesCorrectionTable(ABC, Generic[ResultT]):
     window's export button)."""
 
     @abstractmethod
-    def correction_table(self, result: ResultT, settings: Mapping[str, Any], path: str) -> str:
-        """Writes the table of ``result`` to ``path``; returns what was written."""
+    def correction_table(self, result: ResultT, settings: Mapping[str, Any], path: str,
+                         metadata: CertificateMetadata | None = None) -> str:
+        """Writes the table of ``result`` to ``path``; returns what was written. A table
+        that states uncertainties states them as the certificate does with its details
+        ``metadata`` (None: none given)."""
 
 
 class JudgesSignals(ABC, Generic[ResultT]):
@@ -405,6 +408,9 @@ class SentReference:
     coverage_factor: float
     standard_name: str  # the reference standard's name on the receiver's certificate
     unit: str = "arcsec"
+    #: what the U leaves out that its certificate would state with complete details ("":
+    #: nothing; the name says it too)
+    left_out: str = ""
 
     @property
     def largest_standard_uncertainty(self) -> float:
@@ -419,8 +425,11 @@ class SendsReference(ABC, Generic[ResultT]):
     reference_kind: ClassVar[str]  # e.g. "polygon face deviations"
 
     @abstractmethod
-    def sent_reference(self, result: ResultT) -> SentReference:
-        """The reference in ``result`` (ValueError why there is none)."""
+    def sent_reference(self, result: ResultT,
+                       metadata: CertificateMetadata | None = None) -> SentReference:
+        """The reference in ``result`` (ValueError why there is none), its U as the
+        certificate states it with its details ``metadata`` (None: none given, and the
+        reference's name says what its U leaves out)."""
 
 
 class AcceptsReference(ABC):

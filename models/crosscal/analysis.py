@@ -17,7 +17,12 @@ import numpy as np
 
 from models.crosscal import KEY, POLYGON_SIGN_CONVENTION, TITLE
 from models.crosscal.acquisition import crosscal_guide
-from models.crosscal.export import polygon_deviation_rows, polygon_deviations
+from models.crosscal.export import (
+    WITHOUT_COMPARATORS,
+    comparators_stated,
+    polygon_deviation_rows,
+    polygon_deviations,
+)
 from models.crosscal.figures import encoder_figures
 from models.crosscal.readings import COLUMNS, CrossCalReadings, matrix_rows, read_crosscal
 from models.crosscal.solve import CrossCalibration, CrossCalibrationInputError, solve_crosscal
@@ -482,14 +487,33 @@ def verdict(result: CrossCalResult) -> str:
 POLYGON_FACE_DEVIATIONS = QT_TR_NOOP("polygon face deviations")
 
 
-def polygon_reference(result: CrossCalResult) -> SentReference:
+def polygon_reference(result: CrossCalResult, metadata: Any = None) -> SentReference:
     """The polygon's face deviations from face 1 with the U of each (d_i − d_1, from the full
-    covariance), for the polygon workbench's reference column and its standard's U."""
+    covariance), for the polygon workbench's reference column and its standard's U: the U
+    the cross-calibration's certificate states from face 1 with the same certificate details
+    ``metadata`` (the comparators' stated calibration U in, held to the CMC but at face 1).
+    Without details that list a comparator with a stated U the name says so: that U leaves
+    the comparators' calibration out."""
     d = polygon_deviations(result)  # ValueError when the design does not determine them
-    held = result.u_from_first("polygon")  # held to the laboratory's CMC but at face 1
+    held = result.u_from_first("polygon", metadata)  # the certificate's "U from face 1"
     u1 = np.asarray(held.expanded, dtype=float)
     k = result.solution.coverage_factor
-    if held.below_floor is not None and np.any(held.below_floor):
+    raised = held.below_floor is not None and bool(np.any(held.below_floor))
+    left_out = "" if comparators_stated(metadata) else message(WITHOUT_COMPARATORS)
+    # (a standard's name holds at most 200 characters: models/certificate/metadata.py)
+    if left_out and raised:
+        name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); "
+                                  "largest U of d_i − d_1 {u} (k = {k}), each ≥ the laboratory's "
+                                  "CMC {cmc}, without the comparators' calibration U: not "
+                                  "stated"),
+                       faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}",
+                       cmc=f"{held.floor:g}\"")
+    elif left_out:
+        name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); "
+                                  "largest U of d_i − d_1 {u} (k = {k}), without the "
+                                  "comparators' calibration U: not stated"),
+                       faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}")
+    elif raised:
         name = message(QT_TR_NOOP("Polygon, {faces} faces, cross-calibrated (closure principle); "
                                   "its U is the largest U of d_i − d_1 over the faces, {u} (k = "
                                   "{k}), each at least the laboratory's CMC {cmc}"),
@@ -501,13 +525,8 @@ def polygon_reference(result: CrossCalResult) -> SentReference:
                                   "{k})"),
                        faces=result.faces, u=f"{np.max(u1):.4f}\"", k=f"{k:.2f}")
     return SentReference(POLYGON_FACE_DEVIATIONS, {i + 1: float(d[i] - d[0]) for i in range(result.faces)},
-                         {i + 1: float(u1[i]) for i in range(result.faces)}, float(k), name)
-
-
-def _comparators(metadata) -> bool:
-    """Whether the certificate details list a comparator with a stated U (an input of the
-    certificate's budget, so of the JSON's U: models.crosscal.report.crosscal_budget)."""
-    return any((std.uncertainty_in("arcsec") or 0.0) > 0 for std in metadata.standards)
+                         {i + 1: float(u1[i]) for i in range(result.faces)}, float(k), name,
+                         left_out=left_out)
 
 
 class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
@@ -592,7 +611,7 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
             return {}
         names = ("encoder_error_arcsec", "polygon_deviation_arcsec")
         plain = CertificateMetadata.from_dict({"certificate_number": "", "lab_name": ""})
-        if (not metadata.item_resolution_in("arcsec") and not _comparators(metadata)
+        if (not metadata.item_resolution_in("arcsec") and not comparators_stated(metadata)
                 and metadata.coverage_probability == plain.coverage_probability):
             budgets = dict(zip(names, result.bench_budgets, strict=True))  # computed once
         else:
@@ -614,12 +633,13 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
                 "polygon_deviation_U_from_face1_arcsec":
                     _list(budgets["polygon_deviation_from_face1_arcsec"].expanded)}
 
-    def correction_table(self, result, settings, path) -> str:
+    def correction_table(self, result, settings, path, metadata=None) -> str:
         """The polygon's deviations as the polygon workbench reads a certificate (--table,
-        and the window's "Save face deviations for the polygon workbench")."""
+        and the window's "Save face deviations for the polygon workbench"), each with the U
+        from face 1 that the certificate states with the details ``metadata``."""
         from models.crosscal.export import write_polygon_reference
 
-        return write_polygon_reference(result, settings, path)
+        return write_polygon_reference(result, settings, path, metadata)
 
     def headline(self, r):
         s = r.solution

@@ -693,7 +693,8 @@ def summary(result: FringeResult) -> str:
     return lines(out)
 
 
-def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str) -> str:
+def _correction_table(result: FringeResult, settings: Mapping[str, Any], path: str,
+                      metadata: Any = None) -> str:
     from models.fringe.export import write_correction_table
 
     write_correction_table(path, result)

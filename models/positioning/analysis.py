@@ -667,7 +667,7 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
             start = stop
         return out
 
-    def correction_table(self, result, settings, path):
+    def correction_table(self, result, settings, path, metadata=None):
         s = self.checked_settings(settings)
         return write_compensation(path, result, s["compensation_step"], s["compensation_tables"],
                                   s["compensation_format"], s["compensation_controller_options"])

@@ -120,8 +120,6 @@ def issued(tmp_path_factory):
             "u_face1": np.asarray(plain["polygon_deviation_U_from_face1_arcsec"]),
             "u_step0": plain_result.encoder_u_from_step0_arcsec(
                 _metadata("certificate_crosscal_encoder.json")),
-            # without the certificate details (no comparator's U): the file and the reference
-            "u_face1_bare": plain_result.polygon_u_from_face1_arcsec(),
             "k": plain["coverage_factor"]}
 
 
@@ -261,14 +259,13 @@ def test_the_encoders_dcc_states_u_from_step0_held_and_marked(issued):
 
 def test_the_xlsx_and_the_face_deviation_file_state_the_same_u(issued):
     expected, _ = _floored(issued["u_face1"], CMC_POLYGON)
-    bare, _ = _floored(issued["u_face1_bare"], CMC_POLYGON)
     sheet = load_workbook(issued["out"] / "p.xlsx")["Results"]
     rows = list(sheet.iter_rows(values_only=True))
     column = rows[0].index("expanded_uncertainty_from_face1_arcsec")
     assert [r[column] for r in rows[1:13]] == pytest.approx(list(expected), abs=1e-15)
     text = (issued["out"] / "p.csv").read_text(encoding="utf-8")
     lines = [line.split(",") for line in text.splitlines() if line[:1].isdigit()]
-    assert [line[2] for line in lines] == [f"{u:.4f}" for u in bare]
+    assert [line[2] for line in lines] == [f"{u:.4f}" for u in expected]  # --metadata's
     assert "from face 1 up to 0.1000 arcsec" in text
     assert "# each U held to the laboratory's CMC for face deviations, 0.1 arcsec, except at " \
            "face 1 (zero by definition)" in text
@@ -282,8 +279,9 @@ def test_the_xlsx_and_the_face_deviation_file_state_the_same_u(issued):
 
 def test_the_reference_sent_to_the_polygon_workbench_holds_its_u_to_the_cmc(issued):
     result, _ = _analysed(cmc_arcsec=CMC_POLYGON, cmc_encoder_arcsec=CMC_ENCODER)
-    sent = KIND.sent_reference(result)
-    expected, _ = _floored(issued["u_face1_bare"], CMC_POLYGON)
+    # with the certificate details, as the window sends it (tests/app/test_crosscal_sent_u.py)
+    sent = KIND.sent_reference(result, _metadata("certificate_crosscal.json"))
+    expected, _ = _floored(issued["u_face1"], CMC_POLYGON)
     assert list(sent.expanded_uncertainty) == list(range(1, 13))
     np.testing.assert_allclose(list(sent.expanded_uncertainty.values()), expected, rtol=1e-12)
     assert sent.coverage_factor == issued["k"]
@@ -291,12 +289,12 @@ def test_the_reference_sent_to_the_polygon_workbench_holds_its_u_to_the_cmc(issu
     assert sent.standard_name.endswith(
         f"the largest U of d_i − d_1 over the faces, 0.1000\" (k = {issued['k']:.2f}), each at "
         "least the laboratory's CMC 0.1\"")
-    # without a CMC: the readings' own U, named as before
+    # without a CMC: the U these readings and details give, named as before
     plain, _ = _analysed()
-    sent = KIND.sent_reference(plain)
+    sent = KIND.sent_reference(plain, _metadata("certificate_crosscal.json"))
     np.testing.assert_allclose(list(sent.expanded_uncertainty.values()),
-                               issued["u_face1_bare"], rtol=1e-12)
-    assert sent.standard_name.endswith(f"over the faces, {np.max(issued['u_face1_bare']):.4f}\" "
+                               issued["u_face1"], rtol=1e-12)
+    assert sent.standard_name.endswith(f"over the faces, {np.max(issued['u_face1']):.4f}\" "
                                        f"(k = {issued['k']:.2f})")
 
 

@@ -3,6 +3,9 @@ its view)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 from models.crosscal import plots
 from models.crosscal.analysis import CROSSCAL, CrossCalResult
 from widgets.crosscal.view import CrossCalView
@@ -17,6 +20,10 @@ class CrossCalPresenter(WorkbenchPresenter):
 
     def __init__(self, view: CrossCalView | None = None, parent=None) -> None:
         super().__init__(CROSSCAL, view, parent)
+        #: the details this workbench's certificate would be issued with now (the main
+        #: window sets it: app/certificate_presenter.py issue_details): the face-deviation
+        #: file states the U from face 1 that certificate states
+        self.issue_details: Callable[[], Any] = lambda: self.certificate_details()
 
     def show_result(self, result: CrossCalResult) -> None:
         self.table_model.set_highlight_rows({int(i) for i in result.readings.sheet_rows[
@@ -38,12 +45,14 @@ class CrossCalPresenter(WorkbenchPresenter):
         return self.save_polygon_reference(path) if path else ""
 
     def save_polygon_reference(self, path: str) -> str:
-        """The face deviations (from face 1, with U) as the polygon workbench loads a
-        certificate; a design that does not determine them is told, not written."""
+        """The face deviations (from face 1, with the U the certificate states with its
+        details) as the polygon workbench loads a certificate; a design that does not
+        determine them is told, not written."""
         if self.output_refused(path, tr("Cannot save the face deviations")):
             return ""
         try:
-            what = self.kind.correction_table(self.result, self._settings, path)
+            what = self.kind.correction_table(self.result, self._settings, path,
+                                              self.issue_details())
         except (ValueError, OSError) as exc:
             self.view.tell(tr("Cannot save the face deviations"), explained(exc))
             return ""
