@@ -2167,6 +2167,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>打开时已修复</translation>
     </message>
     <message>
+        <source>{path} is being saved from another window (computer {host}, process {pid}). Nothing was written; your readings are still here: save again in a moment.</source>
+        <translation>{path} 正由另一个窗口保存（计算机 {host}，进程 {pid}）。未写入任何内容；您的读数仍在此处：请稍后再保存。</translation>
+    </message>
+    <message>
+        <source>{path} is being saved from another window. Nothing was written; your readings are still here: save again in a moment.</source>
+        <translation>{path} 正由另一个窗口保存。未写入任何内容；您的读数仍在此处：请稍后再保存。</translation>
+    </message>
+    <message>
         <source>Autosave failed: {reason}. Your unsaved readings are not protected: save the project (File › Save as) on a disk with room.</source>
         <translation>自动保存失败：{reason}。未保存的读数没有受到保护：请将项目保存（文件 › 另存为）到有空间的磁盘上。</translation>
     </message>
@@ -9179,12 +9187,29 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>编码器误差峰峰值 {ptp}（U ≤ {ue}）；面偏差 {low} … {high}（U ≤ {ud}）</translation>
     </message>
     <message>
+        <source>Polygon, {faces} faces, cross-calibrated (closure principle); largest U of d_i − d_1 {u} (k = {k}), each ≥ the laboratory&apos;s CMC {cmc}, without the comparators&apos; calibration U: not stated</source>
+        <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；d_i − d_1 的最大 U {u}（k = {k}），每一 U 均不低于实验室的 CMC {cmc}，不含比较器的校准 U：未给出</translation>
+    </message>
+    <message>
+        <source>Polygon, {faces} faces, cross-calibrated (closure principle); largest U of d_i − d_1 {u} (k = {k}), without the comparators&apos; calibration U: not stated</source>
+        <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；d_i − d_1 的最大 U {u}（k = {k}），不含比较器的校准 U：未给出</translation>
+    </message>
+    <message>
         <source>Polygon, {faces} faces, cross-calibrated (closure principle); its U is the largest U of d_i − d_1 over the faces, {u} (k = {k}), each at least the laboratory&apos;s CMC {cmc}</source>
         <translation>多面棱体，{faces} 面，互校（圆周封闭原理）；其 U 取各面 d_i − d_1 的最大 U，{u}（k = {k}），每一 U 均不低于实验室的 CMC {cmc}</translation>
     </message>
     <message>
+        <source>without the comparators&apos; calibration U: not stated in the cross-calibration&apos;s certificate details</source>
+        <extracomment>said of a U from face 1 sent or written without the comparators&apos; calibration U (the sent reference&apos;s name, the window&apos;s message; the file&apos;s header in English)</extracomment>
+        <translation>不含比较器的校准 U：互校准的证书信息中未给出</translation>
+    </message>
+    <message>
         <source>the face deviations are not determined by this design: nothing to send</source>
         <translation>此测量设计不能确定面偏差：无可发送的内容</translation>
+    </message>
+    <message>
+        <source>The polygon&apos;s face deviations (from face 1, with U; {without})</source>
+        <translation>多面棱体面偏差（相对第 1 面，含 U；{without}）</translation>
     </message>
     <message>
         <source>the entry plan needs the number of faces (set-up: faces n)</source>
@@ -9306,6 +9331,7 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>Cannot save the face deviations</source>
+        <extracomment>the details this workbench&apos;s certificate would be issued with now (the main window sets it: app/certificate_presenter.py issue_details): the face-deviation file states the U from face 1 that certificate states</extracomment>
         <translation>无法保存面偏差</translation>
     </message>
     <message>
