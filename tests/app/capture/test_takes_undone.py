@@ -17,7 +17,7 @@ import pytest
 from app.certificate_issue import readings_edited_after_capture
 from app.main_window import _SheetRows
 from tests.app.capture.window_steps import show_workbench as _show
-from tests.instrument_simulators import AutocollimatorSimulator
+from tests.instrument_simulators import AutocollimatorSimulator, TheodoliteSimulator
 
 pytestmark = pytest.mark.slow  # a window and an instrument for seconds
 
@@ -137,6 +137,35 @@ def test_undoing_the_import_a_take_went_into_gives_the_typed_sheet_back_unclaime
     assert [t[0] for t in panel.raw_sessions("polygon")[0]["takes"]] == [2]
     _type(bench, 2, Y, "0.75")
     assert _said(window, bench) == ["reading of row 3 edited after capture: 0.5 → 0.75"]
+
+
+def test_a_captured_azimuth_typed_a_whole_turn_away_is_marked_and_said(window, qtbot):
+    """Review 62 M3: a captured angle typed 360° away was "as captured" (compared on the
+    circle). The number on the certificate changed: it is an edit."""
+    bench = _show(window, "theodolite")
+    model = bench.table_model
+    keys = [c.key for c in model.sheet.columns]
+    column = keys.index("azimuth_deg")
+    panel = window.capture_panel
+    row = model.sheet.row_count
+    bench.view.table.setCurrentIndex(model.index(row, 0))
+    with TheodoliteSimulator("pty", positions=[(123.4567, 87.6543)]) as sim:
+        panel.connect_to("theodolite", sim.port, **FAST)
+        qtbot.waitUntil(lambda: panel.take_button.isEnabled(), timeout=3000)
+        assert panel.take_reading() == f"row {row + 1}"
+        panel.disconnect_instrument()
+    azimuth = model.sheet.text(row, column)
+    assert float(azimuth) == pytest.approx(123.4567, abs=1e-4) and _said(window, bench) == []
+    turned = "483" + azimuth[3:]  # + 360°
+    _type(bench, row, "azimuth_deg", turned)
+    (said,) = readings_edited_after_capture(bench.kind, bench.settings, _SheetRows(bench.sheet),
+                                            panel.raw_sessions("theodolite"))
+    assert (said.row, said.column, said.now) == (row, "azimuth_deg", turned)
+    assert float(said.captured) == pytest.approx(float(azimuth), abs=0.051 / 3600)
+    assert set(model.edited_cells) == {(row, column)}
+    _type(bench, row, "azimuth_deg", azimuth)  # put back: as captured
+    assert _said(window, bench) == [] and model.edited_cells == {}
+    window.capture_panel.close()
 
 
 # -- the property ---------------------------------------------------------------------------
