@@ -139,6 +139,58 @@ def test_undoing_the_import_a_take_went_into_gives_the_typed_sheet_back_unclaime
     assert _said(window, bench) == ["reading of row 3 edited after capture: 0.5 → 0.75"]
 
 
+def test_the_certificate_of_a_sheet_typed_where_a_take_was_undone_says_no_edit(
+        window, qtbot, polygon, samples_dir, tmp_path):
+    """The polygon sample's last row: a take into it (the autocollimator a little off),
+    Edit › Undo, the row typed by hand. The certificate issued from the window's sheet and
+    raw capture prints the capture's SHA-256 and no "edited after capture" (was: "reading of
+    row 9 edited after capture: <the take's x> → <the typed x>")."""
+    import hashlib
+    import json
+    import subprocess
+
+    from app.certificate_issue import issue_certificate
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.register.store import Register
+
+    bench, model = polygon, polygon.table_model
+    kind = bench.kind
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    model.replace_all([list(r) for r in rows[:-1]], "sample")
+    last = len(rows) - 1
+    x, y = float(rows[last][3]), float(rows[last][4])
+    panel = window.capture_panel
+    with AutocollimatorSimulator("pty", positions=[(x + 1.5, y - 0.75)], sigma=0.0) as sim:
+        panel.connect_to("autocollimator", sim.port, **FAST)
+        assert _take(window, qtbot, bench, last) == last
+        panel.disconnect_instrument()
+    window.menus.undo_action.trigger()
+    for column, key in enumerate(c.key for c in kind.columns):
+        if column < len(rows[last]) and rows[last][column]:
+            _type(bench, last, key, rows[last][column])
+    typed = [[bench.sheet.text(r, c) for c in range(len(rows[0]))]
+             for r in range(bench.sheet.row_count)]
+    assert typed == [list(r[:len(rows[0])]) for r in rows]
+    sessions = panel.raw_sessions("polygon")
+    result = kind.analyze(ReadingsSheet(kind.columns, typed).parse(), kind.checked_settings({}))
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": ""})
+    with Register(f"sqlite:///{tmp_path / 'register.sqlite'}") as register:
+        record = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                                   kind.checked_settings({}), typed, "typed.anglebench.json",
+                                   str(tmp_path / "typed.pdf"), raw_capture=sessions)
+    text = " ".join(subprocess.run(["pdftotext", str(tmp_path / "typed.pdf"), "-"],
+                                   capture_output=True, text=True, check=True).stdout.split())
+    kept = json.loads(record.project_json)["raw_capture"]["polygon"]
+    digest = hashlib.sha256(json.dumps(kept["sessions"], ensure_ascii=False,
+                                       separators=(",", ":")).encode()).hexdigest()
+    assert record.raw_sha256 == digest and digest in text.replace(" ", "")
+    assert "after capture" not in text
+    assert [t[0] for s in sessions for t in s["takes"]] == [-1]  # the frames kept, unclaimed
+
+
 def test_a_captured_azimuth_typed_a_whole_turn_away_is_marked_and_said(window, qtbot):
     """Review 62 M3: a captured angle typed 360° away was "as captured" (compared on the
     circle). The number on the certificate changed: it is an edit."""
