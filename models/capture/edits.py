@@ -119,10 +119,17 @@ def _forms(value: float, angle: bool, key: str) -> tuple[float, ...]:
     number in the cell, not the angle it stands for: a workbench that reads 372.5 differently
     from 12.5 (a theodolite's analysis does not wrap; a rotary table's turns count), or a
     customer who reads both, must see that the number changed."""
-    if not angle:
+    if not angle or key in _AS_IS:
         return (value,)
     turned = value % 360.0
-    return (value,) if key in _AS_IS or turned == value else (value, turned)
+    forms = (value,) if turned == value else (value, turned)
+    # a mean on 0° itself, a hair below or above it, is written 0° or 360° as the float
+    # falls (the window's mean and this one are worked out apart): both are the reading
+    if turned < _SAME * 360.0:
+        forms += (turned + 360.0,)
+    elif 360.0 - turned < _SAME * 360.0:
+        forms += (turned - 360.0,)
+    return forms
 
 
 def _same(cell: float | None, value: float, step: float = 0.0) -> bool:

@@ -224,3 +224,13 @@ def test_a_mean_across_zero_is_as_captured_in_the_turn_a_take_writes_and_no_othe
     assert said("720") == [("720", "360")]
     assert said("-360") == [("-360", "0")]
     assert said("0.01") == [("0.01", "0")]
+    # a mean a hair off 0° (the window's arithmetic and the check's apart) is 0° and 360°
+    keys = [c.key for c in kind.columns]
+    columns = lambda instrument: reading_columns(instrument, keys, vertical_zenith=True)  # noqa: E731
+    for hair in (1e-13, -1e-13):
+        session = session_json("theodolite", "tcp://x:1", 9600, "t",
+                               [(0.0, f"{hair} 90".encode(), True)], [[0, 0, 0]])
+        for azimuth in ("0", "360", "0°00'00.0\"", "360°00'00.0\""):
+            assert edited_after_capture([session], [["10", azimuth, "90"]], columns,
+                                        lambda _i, line: tuple(map(float, line.split()))) \
+                == [], (hair, azimuth)
