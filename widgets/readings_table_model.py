@@ -156,10 +156,14 @@ class ReadingsTableModel(QAbstractTableModel):
         self.set_cells([(r, c, text)], tr("Edit row {row}").format(row=r + 1))
         return True
 
-    def set_cells(self, changes: list[tuple[int, int, str]], label: str = "") -> None:
+    def set_cells(self, changes: list[tuple[int, int, str]], label: str = "",
+                  takes: list | None = None) -> None:
+        """``takes``: ``(key, row)`` of a capture's takes whose reading these cells are: undone
+        and redone with them (widgets/table_commands.SetCellsCommand)."""
         changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
         if changes:
-            self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells")))
+            self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells"),
+                                                 takes))
 
     def insert_rows(self, at: int, count: int = 1) -> None:
         at = max(0, min(at, self.sheet.row_count))
@@ -211,7 +215,7 @@ class ReadingsTableModel(QAbstractTableModel):
         if self.sheet.row_count > count:
             self.apply_remove(count, self.sheet.row_count - count)
 
-    def _move_takes(self, takes) -> None:
+    def move_takes(self, takes) -> None:
         """``takes(take_rows)``: what a command does to the captured readings' rows."""
         if takes is not None and self.take_rows is not None:
             takes(self.take_rows)
@@ -222,7 +226,7 @@ class ReadingsTableModel(QAbstractTableModel):
         self.beginInsertRows(QModelIndex(), at, at + len(rows) - 1)
         self.sheet.insert_rows(at, rows)
         self.endInsertRows()
-        self._move_takes(takes)
+        self.move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
 
@@ -230,7 +234,7 @@ class ReadingsTableModel(QAbstractTableModel):
         self.beginRemoveRows(QModelIndex(), at, at + count - 1)
         removed = self.sheet.remove_rows(at, count)
         self.endRemoveRows()
-        self._move_takes(takes)
+        self.move_takes(takes)
         self.headerDataChanged.emit(Qt.Orientation.Vertical, at, self.sheet.row_count)
         self.sheet_changed.emit()
         return removed
@@ -242,5 +246,5 @@ class ReadingsTableModel(QAbstractTableModel):
         except ValueError:
             self.sheet.replace_all(rows)
         self.endResetModel()
-        self._move_takes(takes)
+        self.move_takes(takes)
         self.sheet_changed.emit()

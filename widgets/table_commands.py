@@ -12,21 +12,33 @@ from widgets.i18n import tr
 
 
 class SetCellsCommand(QUndoCommand):
-    """Set many cells at once (typing one cell, pasting a block, clearing a selection)."""
+    """Set many cells at once (typing one cell, pasting a block, clearing a selection).
 
-    def __init__(self, model, changes: list[tuple[int, int, str]], label: str) -> None:
+    ``takes``: a capture's take, ``(key, row)`` of each take whose reading these cells are
+    (models/capture/take_rows.py). The take and its cells are one step: its undo undoes
+    the takes too (no cell claims them: a reading typed there later is not "edited after
+    capture", review 62 F4), its redo puts them back. The takes are added to their sessions
+    after the first redo (the push)."""
+
+    def __init__(self, model, changes: list[tuple[int, int, str]], label: str,
+                 takes: list | None = None) -> None:
         super().__init__(label)
         self._model = model
         self._changes = changes
+        self._takes = list(takes or [])
         self._old_rows = model.sheet.row_count
         self._old: list[tuple[int, int, str]] = []
 
     def redo(self) -> None:
         self._old = [(r, c, self._model.sheet.text(r, c) if r < self._model.sheet.row_count else "")
                      for r, c, _ in self._changes]
+        if self._takes:  # before the cells: the sheet is said changed with its takes in place
+            self._model.move_takes(lambda takes: takes.redone(self._takes))
         self._model.apply_cells(self._changes)
 
     def undo(self) -> None:
+        if self._takes:
+            self._model.move_takes(lambda takes: takes.undone(self._takes))
         self._model.apply_cells(self._old)
         self._model.truncate_rows(self._old_rows)
 
@@ -89,6 +101,10 @@ class ReplaceAllCommand(QUndoCommand):
         #: detaches these again, not the takes made since (the fringe's live take adds its
         #: own right after replacing the readings)
         self._detached: list | None = None
+        #: the takes made into the replacement (the fringe's live take), undone by the undo
+        #: and put back by the redo (review 62 F4: they claimed the rows of the sheet put
+        #: back, typed by hand, as "edited after capture")
+        self._made: list = []
 
     def redo(self) -> None:
         def move(takes) -> None:
@@ -96,6 +112,7 @@ class ReplaceAllCommand(QUndoCommand):
                 self._detached = takes.replaced()
             else:
                 takes.detach(self._detached)
+                takes.redone(self._made)
 
         # the row lists themselves change hands: edits after the import mutate them, and
         # their own commands undo those edits first
@@ -105,8 +122,11 @@ class ReplaceAllCommand(QUndoCommand):
 
     def undo(self) -> None:
         self._new = self._model.sheet.rows
-        self._model.apply_replace(self._old, checked=True,
-                                  takes=lambda takes: takes.reattach(self._detached or []))
+        def move(takes) -> None:
+            self._made = takes.undo_replacement()
+            takes.reattach(self._detached or [])
+
+        self._model.apply_replace(self._old, checked=True, takes=move)
 
 
 class SettingsCommand(QUndoCommand):

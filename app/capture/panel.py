@@ -1442,17 +1442,27 @@ class CapturePanel(QDockWidget):
                                                        dms, sheet.columns[column].unit)))
                 filled.add(column)
         changes += self._from_reference(sheet, keys, row, changes, filled)
-        model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1))
-        self._widen(table, changes)
+        new_takes = []
         for link in self.links:
             got = taking.get(link.slot)
             session = link.session
             if got is not None and session is not None and got[2][0] >= session.first \
                     and any(t[0] is link for t in targets):
                 # indices into the session's own frames (it may start mid-connection)
-                session.takes.append([row, got[2][0] - session.first, got[2][1] - session.first])
-                link.session.steps.append(steps.get(link.slot, 0.0))
-                link.taken_frame = max(link.taken_frame, got[2][1])
+                new_takes.append((link, session, [row, got[2][0] - session.first,
+                                                  got[2][1] - session.first]))
+        # the take and its cells one undo step: Edit › Undo undoes the take too (review 62
+        # F4: an undone take kept its row, and a reading typed there later was printed as
+        # "edited after capture", with the undone take's values)
+        model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1),
+                        takes=[(take_key(session.kind, session.worker.port,
+                                         session.started_utc, take), row)
+                               for _, session, take in new_takes])
+        self._widen(table, changes)
+        for link, session, take in new_takes:
+            session.takes.append(take)
+            session.steps.append(steps.get(link.slot, 0.0))
+            link.taken_frame = max(link.taken_frame, take[2] + session.first)
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         self.take_note.setText("")

@@ -68,10 +68,11 @@ class EditedReading:
 
 def captured_values(session: dict[str, Any], first: int, last: int,
                     values_of: Callable[[str, bytes], tuple[float, ...] | None],
-                    angles: bool) -> tuple[float, ...] | None:
+                    angles: bool, wrapped: bool = True) -> tuple[float, ...] | None:
     """The reading frames ``first``…``last`` of ``session`` give: the mean of those that
-    were readings (angles in degrees averaged about the first, so 359.9° and 0.1° give 0°).
-    None when no frame there reads."""
+    were readings (angles in degrees averaged about the first, so 359.9° and 0.1° give 0°,
+    or 360° not ``wrapped`` into [0°, 360°): the first frame's own turn). None when no frame
+    there reads."""
     got = []
     for _, line, used in session["frames"][first:last + 1]:
         if not used:
@@ -87,7 +88,8 @@ def captured_values(session: dict[str, Any], first: int, last: int,
     means = []
     for i, o in enumerate(origin):
         offsets = [(g[i] - o + 180.0) % 360.0 - 180.0 for g in got]
-        means.append((o + math.fsum(offsets) / len(offsets)) % 360.0)
+        mean = o + math.fsum(offsets) / len(offsets)
+        means.append(mean % 360.0 if wrapped else mean)
     return tuple(means)
 
 
@@ -101,14 +103,52 @@ def _number(text: str, angle: bool) -> float | None:
         return None
 
 
-def _same(cell: float | None, value: float, angle: bool, step: float = 0.0) -> bool:
+#: angles a take writes as they are, never brought into [0°, 360°): an elevation (90° − V
+#: or V − 270°, within ±90°)
+_AS_IS = frozenset({"elevation_deg"})
+
+
+def _forms(value: float, angle: bool, key: str) -> tuple[float, ...]:
+    """The numbers a take writes for a captured ``value`` (the frames' reading in the first
+    frame's own turn, :func:`captured_values` not wrapped): that one — a take by hand writes
+    the instrument's reading as sent — and, for an angle, the same brought into [0°, 360°)
+    (an auto-take's mean of its frames).
+
+    Never any other turn (review 62 M3: cells were compared on the circle, so a captured
+    12.5° typed as 372.5° — or as −347.5° — was "as captured"). The certificate prints the
+    number in the cell, not the angle it stands for: a workbench that reads 372.5 differently
+    from 12.5 (a theodolite's analysis does not wrap; a rotary table's turns count), or a
+    customer who reads both, must see that the number changed."""
+    if not angle or key in _AS_IS:
+        return (value,)
+    turned = value % 360.0
+    forms = (value,) if turned == value else (value, turned)
+    # a mean on 0° itself, a hair below or above it, is written 0° or 360° as the float
+    # falls (the window's mean and this one are worked out apart): both are the reading
+    if turned < _SAME * 360.0:
+        forms += (turned + 360.0,)
+    elif 360.0 - turned < _SAME * 360.0:
+        forms += (turned - 360.0,)
+    return forms
+
+
+def _same(cell: float | None, value: float, step: float = 0.0) -> bool:
     """The cell holds ``value``: to 12 significant digits, or within half the ``step`` the
     take rounded it to (the instrument's resolution, in the reading's unit)."""
     if cell is None:
         return False
-    difference = (cell - value + 180.0) % 360.0 - 180.0 if angle else cell - value
     # 0.51: a D°M′S″ cell rounds the rounded seconds once more to its decimals
-    return abs(difference) <= max(_SAME * max(1.0, abs(value)), 0.51 * step)
+    return abs(cell - value) <= max(_SAME * max(1.0, abs(value)), 0.51 * step)
+
+
+def _as_captured(cell: float | None, forms: tuple[float, ...], step: float) -> bool:
+    return any(_same(cell, form, step) for form in forms)
+
+
+def _shown(cell: float | None, forms: tuple[float, ...]) -> str:
+    """The captured reading as said beside an edit: in the form nearest the cell's."""
+    form = forms[0] if cell is None else min(forms, key=lambda f: abs(cell - f))
+    return f"{form:.12g}"
 
 
 def _steps(session: dict[str, Any]) -> list[float]:
@@ -144,7 +184,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                                            str(recorded_on), "elsewhere"))
             continue
         targets = list(columns_of(instrument))
-        # values in degrees (a column key ending in _deg) are angles: compared on the circle
+        # values in degrees (a column key ending in _deg) are angles: averaged on the circle,
+        # compared as the numbers a take writes (_forms: never another turn, review 62 M3)
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         steps = _steps(session)
         for take, (row, first, last) in enumerate(session["takes"]):
@@ -153,7 +194,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
             if cache is not None and take_key in cache:
                 values = cache[take_key]
             else:
-                values = captured_values(session, first, last, values_of, angles)
+                values = captured_values(session, first, last, values_of, angles,
+                                         wrapped=False)
                 if cache is not None:
                     cache[take_key] = values
             gone = deleted_at(row)
@@ -175,17 +217,19 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 continue
             cells = list(rows[row]) if row < len(rows) else []
             for (key, column), value in zip(targets, values, strict=False):
-                captured = f"{value:.12g}"
+                forms = _forms(value, angles, key)
                 if column is not None and column < 0:  # no column for it in this sheet
                     continue
                 if column is None:
-                    if not any(_same(_number(c, angles), value, angles, step) for c in cells):
-                        edited[(row, key)] = EditedReading(row, key, captured, "")
+                    if not any(_as_captured(_number(c, angles), forms, step) for c in cells):
+                        edited[(row, key)] = EditedReading(row, key, _shown(None, forms), "")
                     continue
                 now = cells[column] if column < len(cells) else ""
-                if _same(_number(now, angles), value, angles, step):
+                number = _number(now, angles)
+                if _as_captured(number, forms, step):
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
-                    edited[(row, key)] = EditedReading(row, key, captured, now.strip())
+                    edited[(row, key)] = EditedReading(row, key, _shown(number, forms),
+                                                       now.strip())
     return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(
         unchecked, key=lambda e: (e.what != "elsewhere", e.row, e.column, e.captured))

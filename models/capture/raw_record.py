@@ -17,7 +17,10 @@ when taken) and the first and last index into ``frames`` of the frames averaged 
 (one frame for *Take reading*, the dwell's frames for an auto-take). The fringe workbench's
 live signals (#45) keep each *Take* as a session of its own (``instrument`` ``signals``, one
 take a sample, from the take's first line); when a later take replaces the readings, the
-earlier one's rows become -1 (its frames stay: they are no longer behind a row).
+earlier one's rows become -1 (its frames stay: they are no longer behind a row). A take
+undone (Edit › Undo of the take, or of the replacement of the sheet it went into) is -1
+too, until its redo (review 62 F4: it kept its row, and a reading typed there afterwards
+was said "edited after capture").
 
 A take's row follows its reading: a row inserted or deleted above it moves it, and a
 deleted (or replaced) row leaves ``-2 - r``, ``r`` the row it was in then — the frames stay,

@@ -6,8 +6,10 @@ that moves rows and its undo and redo (widgets/table_commands.py calls :class:`T
 A take's row is, in the stored ``takes``:
 
 * ``r >= 0``: the reading is in row ``r`` (0-based) now;
-* ``-1``: a later take replaced its reading (the fringe's live signals): not behind a row,
-  not an edit;
+* ``-1``: not behind a row, not an edit: a later take replaced its reading (the fringe's
+  live signals), or the take was undone (Edit › Undo of the take, or of the replacement of
+  the sheet it went into: review 62 F4). The frames stay in the raw record: they were
+  read, but no cell claims to hold them;
 * ``r <= -2``: its row was deleted (or the sheet replaced) — at row ``-2 - r`` then. The
   frames stay in the raw record; the certificate says the captured reading was deleted
   (models/capture/edits.py). A file of 0.8.10 reads such a row as ``-1``.
@@ -22,10 +24,12 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable
 from typing import Any
 
-__all__ = ["REPLACED", "TakeRows", "deleted_at", "deleted_row", "session_takes", "take_key"]
+__all__ = ["REPLACED", "UNDONE", "TakeRows", "deleted_at", "deleted_row", "session_takes", "take_key"]
 
 #: the row of a take whose reading a later take replaced
 REPLACED = -1
+#: the row of a take undone (its cells put back as they were): no cell claims it
+UNDONE = REPLACED
 
 #: a take's key and the row it was detached from
 Detached = list[tuple[tuple, int]]
@@ -87,6 +91,46 @@ class TakeRows:
         for key, take in self._takes():
             if key in rows and take[0] == rows[key]:
                 take[0] = deleted_row(take[0])
+
+    def undone(self, taken: Detached) -> None:
+        """These takes undone (``(key, row)``: each take's key and the row it went into):
+        they no longer claim a row (the undo of the take's own cells, review 62 F4)."""
+        self._move(taken, lambda row: row, UNDONE)
+
+    def redone(self, taken: Detached) -> None:
+        """These undone takes back in their rows (the redo of what :meth:`undone` undid)."""
+        self._move(taken, lambda row: UNDONE, None)
+
+    def undo_replacement(self) -> Detached:
+        """The replacement of the sheet undone: every take that names a row went into the
+        replacement (those of the rows replaced were detached by it) and is undone with it
+        (returned, for the redo). The fringe's live take adds its own takes after replacing
+        the readings, outside any command."""
+        taken: Detached = []
+        for key, take in self._takes():
+            if take[0] >= 0:
+                taken.append((key, take[0]))
+                take[0] = UNDONE
+        return taken
+
+    def _move(self, taken: Detached, was: Callable[[int], int], to: int | None) -> None:
+        """Each ``(key, row)`` moves one take of that key standing at ``was(row)`` to
+        ``to`` (None: to ``row``): two takes of one key (the same frames taken twice) are
+        each moved once."""
+        wanted: dict[tuple, list[int]] = {}
+        for key, row in taken:
+            wanted.setdefault(key, []).append(row)
+        if not wanted:
+            return
+        for key, take in self._takes():
+            rows = wanted.get(key)
+            if not rows:
+                continue
+            for i, row in enumerate(rows):
+                if take[0] == was(row):
+                    take[0] = row if to is None else to
+                    del rows[i]
+                    break
 
     def reattach(self, detached: Detached) -> None:
         """These takes back in their rows (the undo of a deletion or replacement)."""

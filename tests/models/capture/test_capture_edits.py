@@ -170,3 +170,67 @@ def test_an_edited_elevation_is_found_where_the_column_reads_elevation():
     assert [e.column for e in readings_edited_after_capture(
         kind, {"vertical_reading": "zenith"}, [["10", "10°00'00.0\"", "88°00'00.0\"", "", ""]],
         [session], cache)] == []
+
+
+def _theodolite(*readings_deg, takes=None):
+    """A GeoCOM session of (Hz, V) readings, one frame each; one take per frame unless
+    ``takes``."""
+    rad = 3.141592653589793 / 180
+    frames = [(0.1 * i, f"%R1P,0,1:0,{hz * rad:.15f},{v * rad:.15f}".encode(), True)
+              for i, (hz, v) in enumerate(readings_deg)]
+    return session_json("theodolite", "tcp://x:1", 9600, "2026-12-02T01:02:03+00:00", frames,
+                        takes or [[i, i, i] for i in range(len(readings_deg))])
+
+
+def test_a_captured_angle_typed_a_whole_turn_away_is_an_edit():
+    """Review 62 M3: the cells were compared with the capture on the circle, so a captured
+    azimuth of 12.5° typed as 372.5° (or −347.5°, or 732.5°) passed as "as captured". The
+    certificate prints the number: another number is an edit, whatever angle it stands
+    for."""
+    session = _theodolite((12.5, 88.0))
+    kind = KINDS["theodolite"]
+    settings = {"vertical_reading": "elevation"}
+
+    def said(azimuth, elevation="2"):
+        return [str(e.text()) for e in readings_edited_after_capture(
+            kind, settings, [["10", azimuth, elevation, "", ""]], [session])]
+
+    assert said("12.5") == said("12°30'00\"") == []
+    assert said("372.5") == ["reading of row 1 edited after capture: 12.5 → 372.5"]
+    assert said("-347.5") == ["reading of row 1 edited after capture: 12.5 → -347.5"]
+    assert said("732°30'00\"") == ["reading of row 1 edited after capture: 12.5 → 732°30'00\""]
+    # an elevation (90° − V, within ±90°) is written as it is: −5° typed as 355° is an edit
+    below = _theodolite((12.5, 95.0))
+    assert readings_edited_after_capture(kind, settings, [["10", "12.5", "-5", "", ""]],
+                                         [below]) == []
+    assert [str(e.text()) for e in readings_edited_after_capture(
+        kind, settings, [["10", "12.5", "355", "", ""]], [below])] == [
+        "reading of row 1 edited after capture: -5 → 355"]
+
+
+def test_a_mean_across_zero_is_as_captured_in_the_turn_a_take_writes_and_no_other():
+    """An auto-take's mean of frames at 359.99999° and 0.00001° is written 0° (brought into
+    [0°, 360°)); read in the first frame's turn it is 360°: both are the captured number,
+    720° and −360° are not."""
+    session = _theodolite((359.99999, 88.0), (0.00001, 88.0), takes=[[0, 0, 1]])
+    kind = KINDS["theodolite"]
+    settings = {"vertical_reading": "elevation"}
+
+    def said(azimuth):
+        return [(e.now, e.captured) for e in readings_edited_after_capture(
+            kind, settings, [["10", azimuth, "2", "", ""]], [session])]
+
+    assert said("0") == said("0°00'00.0\"") == said("360") == []
+    assert said("720") == [("720", "360")]
+    assert said("-360") == [("-360", "0")]
+    assert said("0.01") == [("0.01", "0")]
+    # a mean a hair off 0° (the window's arithmetic and the check's apart) is 0° and 360°
+    keys = [c.key for c in kind.columns]
+    columns = lambda instrument: reading_columns(instrument, keys, vertical_zenith=True)  # noqa: E731
+    for hair in (1e-13, -1e-13):
+        session = session_json("theodolite", "tcp://x:1", 9600, "t",
+                               [(0.0, f"{hair} 90".encode(), True)], [[0, 0, 0]])
+        for azimuth in ("0", "360", "0°00'00.0\"", "360°00'00.0\""):
+            assert edited_after_capture([session], [["10", azimuth, "90"]], columns,
+                                        lambda _i, line: tuple(map(float, line.split()))) \
+                == [], (hair, azimuth)

@@ -120,3 +120,29 @@ def test_a_session_without_its_workbench_0_8_10_and_a_deleted_take_round_trip(tm
     assert project.raw_capture["polygon"] == [old]
     assert _said(ROWS, project.raw_capture["polygon"]) == [
         "reading of row 3 deleted after capture: 21.56, 1"]
+
+
+def test_an_undone_take_claims_no_row_and_its_redo_puts_it_back():
+    """Review 62 F4: the undo of a take left it in its row; a reading typed there was then
+    said "edited after capture" with the undone take's values."""
+    session = _session([[1, 0, 0], [2, 1, 1], [3, 2, 2]])
+    takes = TakeRows(lambda: session_takes([session]))
+    key = dict(session_takes([session]))
+    third = next(k for k, t in key.items() if t[1] == 2)
+    takes.undone([(third, 3)])
+    assert [t[0] for t in session["takes"]] == [1, 2, -1]
+    typed = [*ROWS[:3], ["3", "90", "0", "40.00", "3.00"]]  # row 4 typed by hand since
+    assert _said(typed, [session]) == []
+    takes.redone([(third, 3)])
+    assert [t[0] for t in session["takes"]] == [1, 2, 3]
+    assert _said(typed, [session]) == ["reading of row 4 edited after capture: 7.25 → 40.00",
+                                       "reading of row 4 edited after capture: 0.5 → 3.00"]
+    # the undo of a replacement undoes the takes made into it, not those it detached
+    detached = takes.replaced()
+    session["takes"].append([0, 2, 2])  # a take into the replacement (the fringe's own)
+    made = takes.undo_replacement()
+    takes.reattach(detached)
+    assert [t[0] for t in session["takes"]] == [1, 2, 3, -1]
+    takes.detach(detached)  # its redo
+    takes.redone(made)
+    assert [t[0] for t in session["takes"]] == [-3, -4, -5, 0]

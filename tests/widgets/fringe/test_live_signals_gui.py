@@ -192,6 +192,41 @@ def test_a_take_puts_the_window_in_the_readings_with_its_raw_lines(fringe):
     assert [float(v) for v in fringe.sheet.rows[0][:2]] == [u_sin[0], u_cos[0]]
 
 
+def test_undo_of_a_take_undoes_its_claim_on_the_rows_it_replaced(fringe):
+    """Review 62 F4: the undo of a second take gave the first take's readings back, the
+    second take still naming their rows: every row was printed "edited after capture" with
+    the second take's voltages. The undo undoes the take; the redo puts it back."""
+    from app.certificate_issue import readings_edited_after_capture
+    from models.capture.take_rows import TakeRows, session_takes
+
+    panel, stream, sessions = live(fringe)
+    fringe.table_model.take_rows = TakeRows(lambda: session_takes(sessions))  # the window's
+
+    def said():
+        return list(readings_edited_after_capture(
+            fringe.kind, fringe.settings, fringe.sheet.rows, sessions))
+
+    panel.periods.setValue(4)
+    stream.send(signal_lines(a=0.45, periods=6, per_period=200))
+    panel.tick()
+    panel.take()
+    first = [list(r[:2]) for r in fringe.sheet.rows]
+    stream.send(signal_lines(a=0.40, periods=6, per_period=200, theta0=1.0))
+    panel.tick()
+    panel.take()
+    second = [list(r[:2]) for r in fringe.sheet.rows]
+    assert len(sessions) == 2 and said() == []
+    fringe.undo_stack.undo()  # the second take: the first's readings back
+    assert [list(r[:2]) for r in fringe.sheet.rows] == first
+    assert said() == []  # was: every row "edited after capture: <second's> → <first's>"
+    assert {t[0] for t in sessions[1]["takes"]} == {-1}
+    fringe.undo_stack.redo()
+    assert [list(r[:2]) for r in fringe.sheet.rows] == second
+    assert [t[0] for t in sessions[1]["takes"]] == list(range(len(second)))
+    fringe.table_model.set_cells([(5, 0, "0.123456")])
+    assert [(e.row, e.what) for e in said()] == [(5, "edited")]
+
+
 def test_a_take_with_nothing_in_the_window_is_refused_and_said(fringe):
     panel, _, sessions = live(fringe)
     assert panel.take() is False
