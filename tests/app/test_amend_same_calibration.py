@@ -202,3 +202,20 @@ def test_a_serial_typed_otherwise_is_not_a_correction(window, qtbot, two, tmp_pa
     assert window.export_certificate()
     assert _records()[a + "-A1"][1] == "lra 0815"
     assert "Changed: typo in the address" in _pdf_text(tmp_path / "exported.pdf")
+
+
+def test_the_windows_question_names_the_certificate_and_defaults_to_no(window):
+    """The question of a corrected serial number (app/certificate_dialogs.py): No is the
+    default, Yes issues."""
+    seen = []
+    window.ask = lambda title, text, buttons, default: seen.append((title, text, default)) or \
+        QMessageBox.StandardButton.Yes
+    assert window.certificates.view.confirm_correction(
+        PendingRevision("theodolite", "AB-2026-0001"), "AB-2026-0001 reports serial number X")
+    title, text, default = seen[0]
+    assert title == "Correct the serial number or date of calibration?"
+    assert text == ("AB-2026-0001 reports serial number X.\n\nIs this amendment a correction of "
+                    "AB-2026-0001's serial number or date of calibration? Yes: issue it, the "
+                    "correction stated on it. No: nothing is issued, and the next certificate "
+                    "is an original.")
+    assert default == QMessageBox.StandardButton.No
