@@ -510,8 +510,8 @@ class CertificatePresenter:
                         self.view.tell(tr("Not issued"), tr(
                             "No certificate was written or recorded. The amendment or "
                             "replacement of {number} is ended: the next certificate of this "
-                            "workbench is an original (Register › Amend… or Replace… starts "
-                            "it again).").format(number=revision.number))
+                            "workbench is an original (Amend… or Replace… in File › Certificate "
+                            "register starts it again).").format(number=revision.number))
                         return False
         except RegisterError as exc:
             ended = revision is not None and self._revision_impossible(revision)
