@@ -65,6 +65,23 @@ class CertificateDialogs:
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
+    def confirm_correction(self, revision, reason: str) -> bool:
+        """Another serial number or date of calibration than the certificate amended: a
+        correction of it (stated on it)? (rev62 F1)"""
+        question = (tr("{reason}.\n\nIs this replacement a correction of {number}'s serial "
+                       "number or date of calibration? Yes: issue it, the correction stated on "
+                       "it. No: nothing is issued, and the next certificate is an original.")
+                    if revision.replacement else
+                    tr("{reason}.\n\nIs this amendment a correction of {number}'s serial "
+                       "number or date of calibration? Yes: issue it, the correction stated on "
+                       "it. No: nothing is issued, and the next certificate is an original."))
+        answer = self.window.ask(
+            tr("Correct the serial number or date of calibration?"),
+            question.format(reason=reason, number=revision.number),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def confirm_implausible(self, reason: str) -> bool:
         answer = self.window.ask(
             tr("Certify these figures?"),

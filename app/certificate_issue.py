@@ -102,7 +102,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       settings: Mapping[str, Any], rows: list[list[str]], source_name: str,
                       path: str, *, supersedes: str = "", change_note: str = "",
                       replacement: bool = False, separate_calibration: str = "",
-                      raw_capture: list | None = None,
+                      correction_confirmed: bool = False, raw_capture: list | None = None,
                       dcc: Callable[[Any, bytes], bytes] | None = None, dcc_path: str = "",
                       signing: tuple[str, str] = ("", ""),
                       results: Callable[[Any, CertificateRecord], bytes] | None = None,
@@ -121,6 +121,10 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     the PDF. ``signing``: the lab's key and certificate files (empty: the environment's).
     ``separate_calibration``: why an original for the item and date of calibration of a
     current certificate is a calibration of its own (else SameCalibrationIssued).
+    ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
+    certificate, of its calibration: its workbench, item (serial_key) and date of calibration,
+    else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
+    corrected serial number or date of calibration, confirmed, stated on it (rev62 F1).
     ``results(document, record)``: the results file (CSV or XLSX) of the certificate issued,
     made after the commit from the document the recorded PDF was rendered from and the
     register's record (so with the number and date of issue the register gave, and the
@@ -159,6 +163,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     record, pdf = register.issue(request, render, supersedes=supersedes,
                                  change_note=change_note, replacement=replacement,
                                  separate_calibration=separate_calibration,
+                                 correction_confirmed=correction_confirmed,
                                  # what the document recorded is: a test report or a
                                  # calibration certificate (in the chain, chain format 4)
                                  document_kind=lambda: "test" if made["document"].is_test_report

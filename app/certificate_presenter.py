@@ -84,6 +84,10 @@ class CertificateView(Protocol):
         """``numbers`` report the item and date of calibration already (``reason``, the
         register's words): why this is a calibration of its own (empty: not issued)."""
 
+    def confirm_correction(self, revision: PendingRevision, reason: str) -> bool:
+        """An amendment or replacement with another serial number or date of calibration
+        than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
+
     def confirm_draft(self, missing: list[str], report: bool = False) -> bool:
         """Export a DRAFT although these details are missing? (``report``: a test report's
         draft, called one)"""
@@ -363,6 +367,11 @@ class CertificatePresenter:
         """The next certificate of that workbench amends or replaces ``revision.number``."""
         self.pending = revision
 
+    def end_revision(self) -> None:
+        """The next certificate is an original again (another project was opened; rev62 F1:
+        a pending Amend… outlived File › Open and amended with another item's details)."""
+        self.pending = None
+
     # -- exports ------------------------------------------------------------------
     def export_certificate(self, kind, result, settings: dict, source_name: str,
                            rows: list[list[str]] | None = None,
@@ -472,9 +481,13 @@ class CertificatePresenter:
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
                note, raw_capture=None) -> bool:
         from app.certificate_issue import IssuedNotWritten, issue_certificate
-        from models.register.store import RegisterError, SameCalibrationIssued
+        from models.register.store import (
+            NotTheSameCalibration,
+            RegisterError,
+            SameCalibrationIssued,
+        )
 
-        separate = ""
+        separate, corrected = "", False
         try:
             while True:
                 try:
@@ -483,7 +496,8 @@ class CertificatePresenter:
                             register, kind, result, entered, settings, rows, source_name,
                             path, supersedes=revision.number if revision else "",
                             change_note=note, replacement=bool(revision and revision.replacement),
-                            separate_calibration=separate, raw_capture=raw_capture,
+                            separate_calibration=separate, correction_confirmed=corrected,
+                            raw_capture=raw_capture,
                             dcc=self._dcc_maker(kind, result, path, settings),
                             dcc_path=self._dcc_path(path), signing=self.dcc_signing_paths()[:2])
                     break
@@ -498,10 +512,34 @@ class CertificatePresenter:
                         self.view.wait_cursor(True)
                     if not separate:
                         raise
+                except NotTheSameCalibration as exc:
+                    # another item's or another day's details: a correction only when the
+                    # user says so, then stated on it (rev62 F1)
+                    if revision is None or corrected or not exc.corrections:
+                        raise
+                    self.view.wait_cursor(False)
+                    try:
+                        corrected = self.view.confirm_correction(revision, explained(exc))
+                    finally:
+                        self.view.wait_cursor(True)
+                    if not corrected:
+                        self.pending = None
+                        self.view.tell(tr("Not issued"), tr(
+                            "No certificate was written or recorded. The amendment or "
+                            "replacement of {number} is ended: the next certificate of this "
+                            "workbench is an original (Amend… or Replace… in File › Certificate "
+                            "register starts it again).").format(number=revision.number))
+                        return False
         except RegisterError as exc:
+            ended = revision is not None and self._revision_impossible(revision)
+            if ended:  # refused for good: no later export is held to it (rev62 F1)
+                self.pending = None
             self.view.tell(tr("Not issued"), tr("{reason}. No certificate was written or "
                                                 "recorded.").format(
-                    reason=explained(exc)))
+                    reason=explained(exc)) + ("\n\n" + tr(
+                        "The amendment or replacement of {number} is ended: the next "
+                        "certificate of this workbench is an original.").format(
+                        number=revision.number) if ended else ""))
             return False
         except IssuedNotWritten as exc:  # committed: the record and its PDF are in the register
             said = (tr("Test report {number} is issued and recorded in the register, but "
@@ -536,6 +574,19 @@ class CertificatePresenter:
                                              settings).is_test_report
         except ValueError:
             return entered.document_type == "test"
+
+    def _revision_impossible(self, revision: PendingRevision) -> bool:
+        """Whether ``revision.number`` can no longer be amended or replaced (superseded,
+        withdrawn, not in the register, or on another workbench)."""
+        from models.register.store import RegisterError
+
+        try:
+            with self.open_register() as register:
+                record = register.get(revision.number)
+        except (RegisterError, OSError):
+            return False  # the register cannot be read now: the refusal says why
+        return record is None or record.status != "issued" or \
+            record.workbench != revision.workbench
 
     def export_results(self, kind, result, settings: dict, source_name: str,
                        unit: AngleUnit = ANGLE_UNITS["arcsec"]) -> bool:

@@ -97,6 +97,8 @@ class MainWindow(QMainWindow):
         # the test plans are saved with the lab defaults; a new project starts with them
         self.certificates.workbench_settings = lambda key: self.presenter(key).settings
         self.projects.new_settings = self.certificates.test_plan
+        # a pending Amend…/Replace… ends when another project is opened (rev62 F1)
+        self.projects.project_replaced = self.certificates.end_revision
         # the plots' tolerance band and U band: from the details the certificate would use
         for presenter in self.presenters:
             presenter.certificate_details = (

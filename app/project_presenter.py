@@ -127,6 +127,9 @@ class ProjectPresenter(QObject):
         #: a new project's settings of a workbench (the window sets it: the test plan saved
         #: with the lab defaults)
         self.new_settings: Callable[[str], dict] = lambda _key: {}
+        #: another project was put in the window (New, Open, Recover, a register record):
+        #: the window ends a pending Amend… or Replace… with it (rev62 F1)
+        self.project_replaced: Callable[[], None] = lambda: None
         self.autosave_timer = QTimer(self)
         self.autosave_timer.setSingleShot(True)
         self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
@@ -175,6 +178,7 @@ class ProjectPresenter(QObject):
                        self.raw_capture())
 
     def apply_project(self, project: Project) -> None:
+        self.project_replaced()
         # the details first: the workbenches' plots draw the tolerance they set
         self.metadata = dict(project.metadata)
         self.metadata.pop("autosaved_at", None)

@@ -37,7 +37,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 
 from models import __version__
 from models.certificate.metadata import CertificateMetadata, format_certificate_number
-from models.messages import QT_TR_NOOP, message, reason_of
+from models.messages import QT_TR_NOOP, message, reason_of, separated
 from models.project.output_guard import TURN_FILE_SUFFIX
 from models.register.chain import CHAINED, CHAINED_V2, CHAINED_V3, CHAINED_V4, GENESIS, link
 from models.register.wording import DOCUMENT_KINDS, kind_words
@@ -45,8 +45,8 @@ from models.register.wording import DOCUMENT_KINDS, kind_words
 if TYPE_CHECKING:
     from sqlalchemy.engine import Connection
 
-__all__ = ["CertificateRecord", "IssueRequest", "Register", "RegisterError", "RegisterTampered",
-           "SameCalibrationIssued", "lab_timezone", "software_versions"]
+__all__ = ["CertificateRecord", "IssueRequest", "NotTheSameCalibration", "Register", "RegisterError",
+           "RegisterTampered", "SameCalibrationIssued", "lab_timezone", "software_versions"]
 
 LIBRARIES = ("numpy", "scipy", "fpdf2", "PySide6-Essentials", "pyqtgraph", "SQLAlchemy",
              "psycopg")
@@ -70,6 +70,19 @@ class SameCalibrationIssued(RegisterError):
     def __init__(self, text, numbers: tuple[str, ...]) -> None:
         super().__init__(text)
         self.numbers = numbers
+
+
+class NotTheSameCalibration(RegisterError):
+    """An amendment or replacement whose details are not those of the calibration of the
+    certificate it supersedes (ISO/IEC 17025 7.8.8: it corrects that report; rev62 F1: the
+    window's pending Amend… issued another item's certificate as "AB-2026-0001-A1").
+    ``corrections``: the sentences a confirmed correction states on it (the serial number or
+    the date of calibration corrected); () when no confirmation makes it one (the
+    workbench differs)."""
+
+    def __init__(self, text, corrections: tuple[str, ...] = ()) -> None:
+        super().__init__(text)
+        self.corrections = corrections
 
 
 def software_versions() -> dict[str, str]:
@@ -654,7 +667,8 @@ class Register:
               *, render_dcc: Callable[[CertificateMetadata, bytes], bytes] | None = None,
               supersedes: str = "", change_note: str = "", replacement: bool = False,
               separate_calibration: str | None = None,
-              document_kind: str | Callable[[], str] | None = None
+              document_kind: str | Callable[[], str] | None = None,
+              correction_confirmed: bool = False
               ) -> tuple[CertificateRecord, bytes]:
         """Allocate the number (or check the one given), render the PDF with it and with
         the chain's head before it, record it. The PDF is rendered outside any lock with
@@ -684,7 +698,17 @@ class Register:
         enters the record's chain (chain format 4: every record issued since schema version
         6). An amendment or replacement records its own document's kind, which is the
         original's unless the corrected document is of the other kind. None: not recorded
-        (the register's own tests)."""
+        (the register's own tests).
+
+        An amendment or replacement is of the calibration it corrects: issued on the
+        original's workbench, for its item (serial numbers compared by ``serial_key``) and
+        date of calibration, else :class:`NotTheSameCalibration`. What else it changes (the
+        customer's name or address, the item's description, readings, results) is what the
+        change note says. A corrected serial number or date of calibration is issued only
+        with ``correction_confirmed`` and is then stated on it, before the change note
+        ("serial number corrected from LRA-0815 (on AB-2026-0001) to LRA-0816"); never
+        onto the item and date of another current certificate. The workbench is never
+        corrected: a calibration on another workbench is an original."""
         from models.register.identifiers import IdentifierError, normalise_identifier
 
         meta = request.metadata
@@ -718,6 +742,8 @@ class Register:
                     plan = self._plan(conn, meta, supersedes, replacement, issue_date, now)
                     same = () if supersedes or separate_calibration is None else \
                         self._same_calibration(conn, request.workbench, meta)
+                    corrected = () if plan.original is None else self._corrections(
+                        conn, plan.original, request.workbench, meta, correction_confirmed)
                 separate = " ".join((separate_calibration or "").split())
                 if same and not separate:
                     raise SameCalibrationIssued(message(QT_TR_NOOP(
@@ -735,7 +761,8 @@ class Register:
                     created=now.isoformat(),
                     supersedes=original.number if original else "",
                     revision="" if plan.revision == "original" else plan.revision,
-                    change_note=separate if same else change_note,
+                    change_note=separate if same else
+                    separated([*corrected, change_note]) if corrected else change_note,
                     separate_from=", ".join(same))
                 pdf = _call_render(render, final, plan.head)
                 kind = document_kind() if callable(document_kind) else document_kind
@@ -753,7 +780,7 @@ class Register:
                     customer=meta.customer_name, operator=meta.operator,
                     workstation=socket.gethostname(), status="issued",
                     supersedes=original.number if original else None, superseded_by=None,
-                    revision=plan.revision, change_note=final.change_note,
+                    revision=plan.revision, change_note=str(final.change_note),
                     project_json=_with_metadata(request.project_json, request.workbench, final),
                     software_json=json.dumps(software_versions(), sort_keys=True),
                     headline_json=json.dumps(request.headline, sort_keys=True),
@@ -833,6 +860,54 @@ class Register:
         key = serial_key(meta.item_serial)
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
                      if serial_key(row.item_serial) == key)
+
+    def _corrections(self, conn, original: CertificateRecord, workbench: str,
+                     meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
+        """What an amendment or replacement of ``original`` with ``meta`` on ``workbench``
+        corrects of the calibration's identity, as stated on it (() when nothing);
+        NotTheSameCalibration when it is not a correction of that calibration, or not
+        confirmed (see :meth:`issue`)."""
+        from models.register.identifiers import serial_key
+
+        if original.workbench != workbench:
+            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{number} was issued on the {original} workbench: its amendment or replacement "
+                "corrects that calibration and is issued on that workbench, not on {workbench} "
+                "(ISO/IEC 17025 7.8.8); a calibration on another workbench is an original"),
+                number=original.number, original=original.workbench, workbench=workbench))
+        changes = []
+        if serial_key(original.item_serial) != serial_key(meta.item_serial):
+            changes.append(message(QT_TR_NOOP(
+                "serial number corrected from {old} (on {number}) to {new}"),
+                old=original.item_serial or "—", number=original.number,
+                new=meta.item_serial or "—"))
+        if original.calibration_date != meta.calibration_date:
+            changes.append(message(QT_TR_NOOP(
+                "date of calibration corrected from {old} (on {number}) to {new}"),
+                old=original.calibration_date or "—", number=original.number,
+                new=meta.calibration_date or "—"))
+        if not changes:
+            return ()
+        if not confirmed:
+            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{number} reports serial number {serial}, calibrated {date}; these details give "
+                "serial number {new_serial}, calibrated {new_date}. An amendment or replacement "
+                "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
+                "day's calibration is an original; a corrected serial number or date of "
+                "calibration is issued only when confirmed, and is then stated on it"),
+                number=original.number, serial=original.item_serial or "—",
+                date=original.calibration_date or "—", new_serial=meta.item_serial or "—",
+                new_date=meta.calibration_date or "—"), tuple(changes))
+        others = tuple(n for n in self._same_calibration(conn, workbench, meta)
+                       if n != original.number)
+        if others:
+            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{numbers} already reports serial number {serial}, calibrated {date}: a "
+                "correction of {number} cannot make a second certificate of that calibration; "
+                "amend or replace {numbers} instead"),
+                numbers=", ".join(others), serial=meta.item_serial or "—",
+                date=meta.calibration_date or "—", number=original.number))
+        return tuple(changes)
 
     def _current(self, conn, number: str) -> CertificateRecord:
         record = self._get(conn, number)

@@ -124,7 +124,9 @@ def test_verify_names_the_replacement_and_show_refuses_a_changed_pdf(samples_dir
     assert issue(samples_dir, tmp_path, "a", capsys, certificate_number="")[0] == 0
     with Register(register_url()) as register:
         original = register.list()[0].number
-        meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-11-20")
+        # a replacement is of the same item (rev62 F1): the original's serial number
+        meta = CertificateMetadata(approver="Dr. Li", calibration_date="2026-11-20",
+                                   item_serial=register.get(original).item_serial)
         record, _ = register.issue(
             IssueRequest("polygon", meta, register.get(original).project_json),
             lambda meta: b"%PDF replacement", supersedes=original, replacement=True,
