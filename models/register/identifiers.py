@@ -139,17 +139,8 @@ def _zeros_dropped(text: str) -> str:
 
 def identifier_key(text: str) -> str:
     """What makes two identifiers one: equal keys print alike (the module's principle 3)."""
-    parts, word = [], []
-    for char in _printed(text):
-        if _is_separator(char):
-            if word:
-                parts.append("".join(word))
-                word = []
-        else:
-            word.append(char)
-    if word:
-        parts.append("".join(word))
-    return _zeros_dropped("-".join(parts))
+    words = "".join(" " if _is_separator(char) else char for char in _printed(text)).split()
+    return _zeros_dropped("-".join(words))
 
 
 def serial_key(text: str) -> str:
