@@ -41,6 +41,7 @@ a certificate is uniquely identified; #61 and #62 reviews):
 from __future__ import annotations
 
 import bisect
+import functools
 import re
 import unicodedata
 
@@ -137,12 +138,14 @@ def _zeros_dropped(text: str) -> str:
     return re.sub(r"[0-9]+", lambda digits: str(int(digits.group())), text.replace("rn", "m"))
 
 
+@functools.lru_cache(maxsize=1 << 16)  # every record's, at each typed number
 def identifier_key(text: str) -> str:
     """What makes two identifiers one: equal keys print alike (the module's principle 3)."""
     words = "".join(" " if _is_separator(char) else char for char in _printed(text)).split()
     return _zeros_dropped("-".join(words))
 
 
+@functools.lru_cache(maxsize=1 << 16)
 def serial_key(text: str) -> str:
     """What makes two serial numbers one item's: :func:`identifier_key` without the
     separators a serial is typed with or without ("RX260815" is "RX-26-0815"; #61
