@@ -612,6 +612,8 @@ class Register:
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
+        from models.register.identifiers import identifier_key
+
         sa, certificates = self._sa, self._schema.CERTIFICATES
         records, head = self._state(conn)
         last = conn.execute(sa.select(certificates.c.issued_at, certificates.c.number)
@@ -642,7 +644,7 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            if _AMENDMENT_FORM.search(number):
+            if _AMENDMENT_FORM.search(number) or _AMENDMENT_FORM.search(identifier_key(number)):
                 raise RegisterError(message(QT_TR_NOOP(
                     "certificate number {number}: numbers ending -A and a number are kept for "
                     "amendments, which the register numbers itself"), number=number))
@@ -846,17 +848,23 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike, separators aside (serial_key; the same description and manufacturer too where
-        there is none)."""
-        from models.register.identifiers import serial_key
+        alike, separators aside (serial_key). Where there is none (no_serial: empty, "-",
+        "n/a" …), an item of no serial whose description and manufacturer print alike
+        (identifier_key; #62 review: "rotary table" was another item than "Rotary table",
+        and a serial "-" was every item without one)."""
+        from models.register.identifiers import identifier_key, no_serial, serial_key
 
         c = self._schema.CERTIFICATES.c
-        query = self._sa.select(c.number, c.item_serial).where(
+        query = self._sa.select(c.number, c.item_serial, c.item_description,
+                                c.item_manufacturer).where(
             c.workbench == workbench, c.status == "issued",
             c.calibration_date == meta.calibration_date)
-        if not meta.item_serial:
-            query = query.where(c.item_description == meta.item_description,
-                                c.item_manufacturer == meta.item_manufacturer)
+        if no_serial(meta.item_serial):
+            item = (identifier_key(meta.item_description), identifier_key(meta.item_manufacturer))
+            return tuple(row.number for row in conn.execute(query.order_by(c.id))
+                         if no_serial(row.item_serial) and item == (
+                             identifier_key(row.item_description),
+                             identifier_key(row.item_manufacturer)))
         key = serial_key(meta.item_serial)
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
                      if serial_key(row.item_serial) == key)

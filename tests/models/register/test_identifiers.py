@@ -54,3 +54,131 @@ def test_full_width_and_compatibility_forms_are_their_plain_letters():
     assert normalise_identifier("ＡＢ－２０２６－０００１") == "AB-2026-0001"
     assert normalise_identifier("AB‐2026‐0001") == "AB-2026-0001"  # U+2010, as Word pastes
     assert normalise_identifier("RX\u00a0 26") == "RX 26"
+
+
+# -- #62 review: what prints as nothing or as a Latin letter, digit or separator -------------
+from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE  # noqa: E402
+from models.register.identifiers import identifier_key, no_serial, serial_key  # noqa: E402
+
+#: every assigned default-ignorable code point (Python's own Unicode data), the blanks
+IGNORABLE = [chr(c) for first, last in DEFAULT_IGNORABLE for c in range(first, last + 1)
+             if unicodedata.category(chr(c)) != "Cn"]
+BLANKS = ["\u2800", "\U0001d159", "\U00016fe4"]
+#: each ASCII letter or digit's look-alikes of other scripts (UTS #39, as generated)
+ALIKE: dict[str, list[str]] = {}
+for _source, _prototype in CONFUSABLES.items():
+    # a digit of another script is its value ("৭", seven, looks like 9 but is 7)
+    if len(_prototype) == 1 and _prototype.isalnum() \
+            and unicodedata.decimal(_source, None) is None:
+        ALIKE.setdefault(_prototype.upper(), []).append(_source)
+ALIKE["0"] = ["O", "o", *ALIKE.get("O", [])]
+ALIKE["1"] = ["l", "I", "|", *ALIKE.get("L", []), *ALIKE.get("I", [])]
+SEPARATORS = "-‐–—·,.#/_:; \u00a0\u30fb\uff0c"
+SERIAL = st.text(alphabet="ABCDEFGHJKLNPQRSTUVWXYZ0123456789-", min_size=1, max_size=14)
+
+
+def test_the_tables_are_unicodes():
+    """The default-ignorable code points are the property's, not a hand list (Python's own
+    data agrees on every format character it knows), and the look-alikes are UTS #39's."""
+    assert len(IGNORABLE) > 300 and "\u034f" in IGNORABLE and "\ufe0f" in IGNORABLE
+    assert {"\u3164", "\u1160", "\uffa0", "\u00ad", "\u200b", "\u202e"} <= set(IGNORABLE)
+    for code in range(0x110000):
+        char = chr(code)
+        if unicodedata.category(char) == "Cf" and char not in IGNORABLE:
+            assert code in (0x0600, 0x0601, 0x0602, 0x0603, 0x0604, 0x0605, 0x06DD, 0x070F,
+                            0x0890, 0x0891, 0x08E2, 0x110BD, 0x110CD, 0xFFF9, 0xFFFA,
+                            0xFFFB) or 0x13430 <= code <= 0x1343F, hex(code)
+    assert CONFUSABLES["\u13de"] == "L" and CONFUSABLES["\u0410"] == "A"  # Cherokee, Cyrillic
+    assert CONFUSABLES["\u1d00"] == "A"  # small capital (by its name)
+
+
+@settings(max_examples=300, deadline=None)
+@given(SERIAL, st.data())
+def test_look_alikes_case_and_invisible_characters_give_the_same_keys(plain, data):
+    """Any identifier and its variants that print alike (each letter or digit swapped for a
+    look-alike or its other case, default-ignorable code points anywhere) have one key."""
+    variant = []
+    for char in plain:
+        choices = [char, char.lower(), *ALIKE.get(char, [])]
+        variant.append(data.draw(st.sampled_from(choices)))
+        if data.draw(st.booleans()):
+            variant.append(data.draw(st.sampled_from(IGNORABLE)))
+    variant_text = "".join(variant)
+    assert identifier_key(variant_text) == identifier_key(plain), ascii(variant_text)
+    assert serial_key(variant_text) == serial_key(plain), ascii(variant_text)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.text(alphabet="ABCDEFGHJKNPRSTUVWXYZ23456789", min_size=1, max_size=5),
+                min_size=1, max_size=4), st.data())
+def test_separators_are_one_in_numbers_and_none_in_serials(parts, data):
+    """"AB·2026·0001", "AB-2026-0001." and "AB#2026#0001" are AB-2026-0001; a serial is
+    the same typed with or without its separators, and with zeros before its numbers."""
+    dashed = "-".join(parts)
+    other = "".join(p + (data.draw(st.sampled_from(SEPARATORS)) if i < len(parts) - 1 else "")
+                    for i, p in enumerate(parts))
+    other += data.draw(st.sampled_from(["", ".", ",", " #"]))
+    assert identifier_key(other) == identifier_key(dashed)
+    assert serial_key(other) == serial_key("".join(parts)) == serial_key(dashed)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="ABCDEFGHJKNPQRSTUVWXYZ", min_size=1, max_size=4),
+       st.integers(1, 10**6), st.text(alphabet="ABCDEFGHJKNPQRSTUVWXYZ", min_size=1, max_size=4),
+       st.integers(1, 10**6))
+def test_distinct_serials_stay_distinct(letters, number, other_letters, other_number):
+    """Real serials that differ in a letter or a digit have different keys (M aside, which
+    UTS #39 gives as "rn"; I, L and O, which print as digits)."""
+    one, two = f"{letters}-{number:05d}", f"{other_letters}-{other_number:05d}"
+    if (letters, number) != (other_letters, other_number):
+        assert serial_key(one) != serial_key(two)
+        assert identifier_key(one) != identifier_key(two)
+
+
+@pytest.mark.parametrize("char", sorted({*(chr(first) for first, _ in DEFAULT_IGNORABLE),
+                                          "\u034f", "\ufe0f", "\u3164", "\u1160", "\uffa0",
+                                          "\U000e0100", "\u200b", "\u202e", *BLANKS}))
+def test_every_default_ignorable_and_blank_is_refused_naming_it(char):
+    with pytest.raises(IdentifierError, match=f"character 9 is U\\+{ord(char):04X} "):
+        normalise_identifier("LRA-0815" + char + "7")
+
+
+def test_a_combining_mark_with_nothing_to_mark_is_refused():
+    with pytest.raises(IdentifierError, match="character 1 is U\\+0301"):
+        normalise_identifier("\u0301LRA-0815")
+    with pytest.raises(IdentifierError, match="character 5 is U\\+20DD.*no letter before it"):
+        normalise_identifier("LRA \u20dd0815")
+    assert normalise_identifier("Me\u0301tre") == "Métre"  # a mark on its letter is kept
+    with pytest.raises(IdentifierError, match="character 3 is U\\+00B4"):
+        normalise_identifier("RX\u00b41")  # NFKC: a space and a combining acute
+
+
+@pytest.mark.parametrize(("typed", "alike"), [
+    ("LRA-0815", "\u13de\u13a1\u13aa-0815"), ("LRA-0815", "LRA-O815"),
+    ("LRA-0815", "LRA·0815"), ("LRA-0815", "LRA,0815"), ("LRA-0815", "LRA#0815"),
+    ("LRA-0815", "\u029f\u0280\u1d00-0815"), ("LRA-0815", "𝐋𝐑𝐀-0815"),
+    ("LRA-0815", "LRA-\u0660\u0668\u0661\u0665"), ("RX-26-0815", "RX260815"),
+    ("SN 1I0l", "sn-1101")])
+def test_serials_the_review_issued_twice_have_one_key(typed, alike):
+    assert serial_key(alike) == serial_key(typed)
+
+
+@pytest.mark.parametrize("alike", ["\u13aa\u13f4-2026-0001", "AB-2026-OOO1", "AB·2026·0001",
+                                   "A\u0299-2026-0001", "AB-2026-0001.", "AB#2026#0001",
+                                   "AB-2026-01", "ab-2026-0001"])
+def test_numbers_the_review_issued_twice_have_one_key(alike):
+    assert identifier_key(alike) == identifier_key("AB-2026-0001") == "ab-2026-1"
+
+
+def test_the_amendment_form_is_read_from_the_key():
+    for typed in ("AB-2026-0001-A1.", "AB-2026-0001-\u04101", "AB-2026-0001·A1",
+                  "AB-2026-0001-Al", "AB-2026-0001 a1"):
+        assert identifier_key(typed).endswith("-a1"), typed
+
+
+@pytest.mark.parametrize(("serial", "none"), [
+    ("", True), ("-", True), ("—", True), ("n/a", True), ("N/A", True), ("n.a.", True),
+    ("none", True), ("无", True), ("unknown", True), ("NA-1", False), ("0", False),
+    ("RX-1", False)])
+def test_what_says_there_is_no_serial(serial, none):
+    assert no_serial(serial) is none

@@ -607,6 +607,89 @@ def test_a_serial_that_prints_alike_is_the_same_item(register):
         register.issue(request(_meta(item_serial="RX0001")), render, separate_calibration="")
 
 
+# -- #62 review: identifiers past the rev61 checks ------------------------------------------
+@pytest.mark.parametrize("serial", ["\u13de\u13a1\u13aa-0815", "LRA-O815", "LRA·0815",
+                                    "LRA,0815", "LRA#0815", "\u029f\u0280\u1d00-0815"])
+def test_a_serial_of_look_alikes_or_other_separators_is_the_same_item(register, serial):
+    """Cherokee letters, letter O for zero, "·", "," or "#" between, small capitals: each
+    was issued as a second original of LRA-0815's calibration."""
+    from models.register.store import SameCalibrationIssued
+
+    register.issue(request(_meta(item_serial="LRA-0815")), render, separate_calibration="")
+    with pytest.raises(SameCalibrationIssued) as refused:
+        register.issue(request(_meta(item_serial=serial)), render, separate_calibration="")
+    assert refused.value.numbers == ("AB-2026-0001",)
+    assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+@pytest.mark.parametrize(("char", "name"), [
+    ("\u034f", "COMBINING GRAPHEME JOINER"), ("\ufe0f", "VARIATION SELECTOR-16"),
+    ("\u2800", "BRAILLE PATTERN BLANK"), ("\u3164", "HANGUL FILLER")])
+def test_a_serial_or_number_with_a_character_that_prints_nothing_is_refused(register, char,
+                                                                           name):
+    """LRA-0815 + U+034F was issued as a second original of LRA-0815's calibration, and a
+    number AB-2026-0001 + U+034F printed "Certificate number AB-2026-0001" a second time."""
+    register.issue(request(_meta(item_serial="LRA-0815")), render, separate_calibration="")
+    code = f"U\\+{ord(char):04X} \\({name}\\)"
+    with pytest.raises(RegisterError, match=f'serial number "LRA-0815\\\\u.*character 9 is '
+                       f"{code}, which prints as nothing"):
+        register.issue(request(_meta(item_serial="LRA-0815" + char)), render,
+                       separate_calibration="")
+    with pytest.raises(RegisterError, match=f"certificate number .*character 13 is {code}"):
+        register.issue(request(_meta(item_serial="ZZ-1", certificate_number="AB-2026-0001"
+                                     + char)), render, separate_calibration="")
+    assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+@pytest.mark.parametrize("alike", ["\u13aa\u13f4-2026-0001", "AB-2026-OOO1", "AB·2026·0001",
+                                   "A\u0299-2026-0001"])
+def test_a_number_of_look_alikes_or_other_separators_is_refused(register, alike):
+    register.issue(request(), render)
+    with pytest.raises(RegisterError, match=f"{alike} \\(AB-2026-0001\\) was issued on"):
+        register.issue(request(_meta(certificate_number=alike, item_serial="OTHER")), render)
+    assert [r.number for r in register.list()] == ["AB-2026-0001"]
+
+
+@pytest.mark.parametrize("typed", ["AB-2026-0001-A1.", "AB-2026-0001-\u04101",
+                                   "AB-2026-0001·A1", "AB-2026-0001-Al"])
+def test_a_typed_number_in_the_amendment_form_is_refused_however_it_is_written(register,
+                                                                                typed):
+    """#62 review: "AB-2026-0001-A1." and "…-А1" (Cyrillic) were issued, and the first real
+    amendment of AB-2026-0001 was then "AB-2026-0001-A2", "Amendment 2"."""
+    first, _ = register.issue(request(), render)
+    with pytest.raises(RegisterError, match="kept for amendments"):
+        register.issue(request(_meta(certificate_number=typed, item_serial="OTHER")), render)
+    amended, pdf = register.issue(request(), render, supersedes=first.number, change_note="x")
+    assert (amended.number, amended.revision) == ("AB-2026-0001-A1", "amendment 1")
+    assert pdf == b"%PDF AB-2026-0001-A1 amendment 1 AB-2026-0001"
+
+
+def test_an_item_without_a_serial_is_the_same_item_by_its_description_and_maker(register):
+    """#62 review: with no serial, "rotary table RT-5", "EXAMPLE" or a double space gave a
+    second original of the same calibration; a serial "-" was refused as the same
+    calibration as every item without one; "n/a" escaped."""
+    from models.register.store import SameCalibrationIssued
+
+    def issue(**item):
+        return register.issue(request(_meta(**{"item_serial": "", **item})), render,
+                              separate_calibration="")[0].number
+
+    assert issue(item_description="Rotary table RT-5", item_manufacturer="Example") \
+        == "AB-2026-0001"
+    for item in ({"item_description": "rotary table RT-5"},
+                 {"item_manufacturer": "EXAMPLE"},
+                 {"item_description": "Rotary table  RT-5"},
+                 {"item_serial": "n/a"}, {"item_serial": "-"}):
+        with pytest.raises(SameCalibrationIssued) as refused:
+            issue(**{"item_description": "Rotary table RT-5", "item_manufacturer": "Example",
+                     **item})
+        assert refused.value.numbers == ("AB-2026-0001",), item
+    assert issue(item_description="Autocollimator", item_manufacturer="Other",
+                 item_serial="-") == "AB-2026-0002"
+    assert issue(item_description="Rotary table RT-5", item_manufacturer="Example",
+                 item_serial="RT5-0001") == "AB-2026-0003"  # a serial: another question
+
+
 def test_amendments_count_only_amendments(register):
     """#61 review: a number typed as "ab-2026-0001-a1" for another item made the first real
     amendment of AB-2026-0001 "Amendment 2" (counted by a case-blind LIKE), and a typed
