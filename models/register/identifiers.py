@@ -22,7 +22,7 @@ a certificate is uniquely identified; #61 and #62 reviews):
    UTS #39 skeleton's prototypes, from confusables.txt, for every character that prints as
    a Latin letter, digit or sign (Cyrillic "А", Greek "Β", Cherokee "Ꮮ", Latin small
    capitals; :mod:`models.register._identifier_tables`, generated from Unicode's data by
-   tools/make_identifier_tables.py, no package offering the skeleton being a dependency);
+   app/identifier_tables.py, no package offering the skeleton being a dependency);
    case folded; the look-alikes of digits within Latin ("O"/"o" as 0; "l", "I", "i" and
    "|" as 1) and "rn" as "m", as UTS #39 has them; zeros before a number dropped ("01" is
    "0001"). Because case is folded too, the key joins what prints alike in either case:
