@@ -1706,8 +1706,16 @@
         <translation>未签发</translation>
     </message>
     <message>
+        <source>No certificate was written or recorded. The amendment or replacement of {number} is ended: the next certificate of this workbench is an original (Amend… or Replace… in File › Certificate register starts it again).</source>
+        <translation>没有写入或记录任何证书。对 {number} 的修改或替代已结束：该工作台的下一份证书是原始证书（可在 文件 › 证书登记册 中用“修订…”或“替代…”重新开始）。</translation>
+    </message>
+    <message>
         <source>{reason}. No certificate was written or recorded.</source>
         <translation>{reason}。未写入也未记录任何证书。</translation>
+    </message>
+    <message>
+        <source>The amendment or replacement of {number} is ended: the next certificate of this workbench is an original.</source>
+        <translation>对 {number} 的修改或替代已结束：该工作台的下一份证书是原始证书。</translation>
     </message>
     <message>
         <source>Test report {number} is issued and recorded in the register, but {reason}: save its PDF from File › Certificate register.</source>
@@ -1747,7 +1755,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -2117,6 +2125,26 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
     <message>
         <source>These details are missing: {missing}. The PDF will be marked DRAFT, is not a test report, and nothing is recorded in the register. Export the draft anyway?</source>
         <translation>缺少以下信息：{missing}。PDF 将标记为草稿，不是检测报告，也不会记录在登记册中。仍要导出草稿吗？</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+Is this replacement a correction of {number}&apos;s serial number or date of calibration? Yes: issue it, the correction stated on it. No: nothing is issued, and the next certificate is an original.</source>
+        <translation>{reason}。
+
+这份替代证书是否更正 {number} 的序列号或校准日期？是：签发，并在其上写明更正。否：不签发任何证书，下一份证书为原始证书。</translation>
+    </message>
+    <message>
+        <source>{reason}.
+
+Is this amendment a correction of {number}&apos;s serial number or date of calibration? Yes: issue it, the correction stated on it. No: nothing is issued, and the next certificate is an original.</source>
+        <translation>{reason}。
+
+这份修改是否更正 {number} 的序列号或校准日期？是：签发，并在其上写明更正。否：不签发任何证书，下一份证书为原始证书。</translation>
+    </message>
+    <message>
+        <source>Correct the serial number or date of calibration?</source>
+        <translation>更正序列号或校准日期？</translation>
     </message>
     <message>
         <source>Use these reference standards?</source>
@@ -6098,6 +6126,26 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>登记册繁忙：生成本证书期间另有 {n} 份证书签发；请重试</translation>
     </message>
     <message>
+        <source>{number} was issued on the {original} workbench: its amendment or replacement corrects that calibration and is issued on that workbench, not on {workbench} (ISO/IEC 17025 7.8.8); a calibration on another workbench is an original</source>
+        <translation>{number} 在 {original} 工作台上签发：其修改或替代更正的是那一次校准，应在该工作台上签发，而不是在 {workbench} 上（ISO/IEC 17025 7.8.8）；在另一个工作台上的校准是原始证书</translation>
+    </message>
+    <message>
+        <source>serial number corrected from {old} (on {number}) to {new}</source>
+        <translation>序列号由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>date of calibration corrected from {old} (on {number}) to {new}</source>
+        <translation>校准日期由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>{number} reports serial number {serial}, calibrated {date}; these details give serial number {new_serial}, calibrated {new_date}. An amendment or replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another item&apos;s or another day&apos;s calibration is an original; a corrected serial number or date of calibration is issued only when confirmed, and is then stated on it</source>
+        <translation>{number} 报告的是序列号 {serial}、校准于 {date}；这些信息给出的是序列号 {new_serial}、校准于 {new_date}。修改或替代更正的是同一次校准（ISO/IEC 17025 7.8.8）：另一件物品或另一天的校准是原始证书；更正后的序列号或校准日期只有经确认才会签发，并在证书上写明</translation>
+    </message>
+    <message>
+        <source>{numbers} already reports serial number {serial}, calibrated {date}: a correction of {number} cannot make a second certificate of that calibration; amend or replace {numbers} instead</source>
+        <translation>{numbers} 已报告序列号 {serial}、校准于 {date} 的校准：对 {number} 的更正不能成为该次校准的第二份证书；请改为修改或替代 {numbers}</translation>
+    </message>
+    <message>
         <source>{number} was withdrawn ({reason}): it cannot be amended or replaced</source>
         <translation>{number} 已作废（{reason}）：不能修订或替换</translation>
     </message>
@@ -9783,8 +9831,12 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
     </message>
     <message>
         <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), which prints as nothing or moves the text; type the {what} again without it</source>
-        <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in</extracomment>
+        <extracomment>dashes, hyphens and minus signs a word processor or a keyboard layout may put in glyphs that draw a blank and are not default-ignorable</extracomment>
         <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），它打印不出或会移动文字；请去掉它重新输入{what}</translation>
+    </message>
+    <message>
+        <source>{what} &quot;{shown}&quot;: character {n} is U+{code:04X} ({name}), an accent or mark with no letter before it to mark; type the {what} again without it</source>
+        <translation>{what}“{shown}”：第 {n} 个字符为 U+{code:04X}（{name}），是前面没有可附着字母的重音或附加符号；请去掉它重新输入{what}</translation>
     </message>
     <message>
         <source>the laboratory&apos;s register key {path} cannot be read ({reason})</source>
