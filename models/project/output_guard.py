@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import os
 import stat
-import tempfile
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -213,6 +212,8 @@ def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:
         raise OutputRefused(message(QT_TR_NOOP(
             "{flag}{out}: the name is longer than its folder allows ({limit} bytes); nothing "
             "was written: choose a shorter name"), flag=said, out=out, limit=limit))
+    import tempfile  # only when an output is named (a plain analyze loads none of it)
+
     try:
         fd, probe = tempfile.mkstemp(prefix=".anglebench-probe.", suffix=".tmp", dir=folder)
     except OSError as exc:
