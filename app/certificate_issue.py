@@ -13,13 +13,13 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
+from app.issued_outputs import refuse_issued_files
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
-from models.messages import QT_TR_NOOP, message, separated
 from models.project.file import Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
@@ -42,35 +42,6 @@ class IssuedNotWritten(OSError):
         self.what = what
         self.recorded = recorded
         self.kept = kept
-
-
-def refuse_issued_files(register: Register, outputs) -> None:
-    """Raise OutputRefused when an output (``(flag, path)`` pairs) is a file the register
-    issued — the PDF, the DCC or the results file of any certificate, found by its SHA-256 —
-    so that no later issue or export replaces it (rev62 F8: a results file, of which the
-    register keeps only the SHA-256, was lost for good)."""
-    import hashlib
-
-    from models.project.output_guard import OutputRefused
-    from models.register.wording import issued_file_words
-
-    for flag, out in outputs:
-        if not out or not os.path.isfile(out):
-            continue
-        digest = hashlib.sha256()
-        try:
-            with open(out, "rb") as handle:
-                for piece in iter(lambda h=handle: h.read(1 << 20), b""):
-                    digest.update(piece)
-        except OSError:
-            continue  # unreadable: the write will say so
-        found = register.issued_file(digest.hexdigest())
-        if found:
-            raise OutputRefused(message(QT_TR_NOOP(
-                "{flag}{out} is {what}, as issued; an issued file is never replaced: "
-                "nothing was written, choose another name"),
-                flag=f"{flag} " if flag else "", out=os.fspath(out),
-                what=separated([issued_file_words(kind, number) for number, kind in found])))
 
 
 def _write_results(register: Register, record: CertificateRecord, path: str,

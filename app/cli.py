@@ -364,6 +364,12 @@ def run_analyze(argv: list[str]) -> int:
                ("--interpolator-table", getattr(args, "interpolator_table", None)))
     try:
         check_outputs(outputs, _protected(inputs))
+        # an issued file (any certificate's PDF, DCC or results file) is never replaced, by
+        # an issue (checked again there) or a draft, a specimen, results or a table (rev62 F8)
+        from app.issued_outputs import refuse_issued_outputs
+        from models.register.location import register_url
+
+        refuse_issued_outputs(register_url(), outputs)
     except OutputRefused as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

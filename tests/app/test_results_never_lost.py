@@ -321,3 +321,55 @@ def test_show_and_export_list_the_results_file(samples_dir, tmp_path, capsys):
         listing = z.read("results.csv").decode("utf-8")
     assert listing.splitlines() == ["number,file,sha256,recorded_at,first",
                                     f"{number},r.xlsx,{_sha(xlsx)},{entry['recorded_at']},True"]
+
+
+class _Store(dict):
+    def value(self, key, default=None):
+        return self.get(key, default)
+
+    def setValue(self, key, value):  # noqa: N802 - QSettings' name
+        self[key] = value
+
+
+@pytest.mark.slow
+def test_an_issued_file_is_never_replaced_by_an_export(samples_dir, tmp_path, capsys):
+    """rev62 F8 ("… or export"): results alone, a draft, and the window's Export results
+    and draft certificate onto the files a certificate was issued with."""
+    from unittest import mock
+
+    from app.certificate_presenter import CertificatePresenter, CertificateView
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    one, xlsx = tmp_path / "one.pdf", tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(one), "--results", str(xlsx)) == 0
+    (number,) = _numbers()
+    kept = {one: _sha(one), xlsx: _sha(xlsx)}
+    capsys.readouterr()
+    sample = str(samples_dir / "polygon_sample.csv")
+    assert main(["analyze", "polygon", sample, "--results", str(xlsx)]) == 2
+    assert (f"anglebench analyze: --results {xlsx} is the results file of certificate {number}"
+            ", as issued; an issued file is never replaced") in capsys.readouterr().err
+    draft = _details(samples_dir, tmp_path, "draft.json", approver="")  # a draft: no approver
+    assert main(["analyze", "polygon", sample, "--metadata", str(draft),
+                 "--certificate", str(one)]) == 2
+    assert f"--certificate {one} is the PDF of certificate {number}, as issued" in \
+        capsys.readouterr().err
+    view = mock.create_autospec(CertificateView, instance=True)
+    presenter = CertificatePresenter(view, _Store(), lambda: {}, mock.Mock())
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view.choose_save_path.return_value = str(xlsx)
+    assert not presenter.export_results(kind, result, {}, "run.csv")
+    assert f"{xlsx} is the results file of certificate {number}, as issued" in \
+        view.tell.call_args.args[1]
+    view.edit_certificate_details.return_value = CertificateMetadata(lab_name="Lab")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(one)
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    assert f"{one} is the PDF of certificate {number}, as issued" in view.tell.call_args.args[1]
+    assert {path: _sha(path) for path in kept} == kept
+    assert _numbers() == [number]
