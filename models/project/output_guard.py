@@ -15,6 +15,7 @@ command this module was not told about).
 
 from __future__ import annotations
 
+import contextlib
 import os
 import stat
 from collections.abc import Iterable, Sequence
@@ -222,10 +223,8 @@ def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:
             "written"), flag=said, out=out, folder=folder,
             reason=exc.strerror or str(exc))) from None
     os.close(fd)
-    try:
+    with contextlib.suppress(OSError):
         os.unlink(probe)
-    except OSError:
-        pass
 
 
 def check_outputs(outputs: Sequence[tuple[str, str | os.PathLike[str] | None]],
