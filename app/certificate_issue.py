@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
+from app.issued_outputs import refuse_issued_files
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
@@ -24,15 +25,73 @@ from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
 
 __all__ = ["IssuedNotWritten", "draft_reasons", "issue_certificate",
-           "readings_edited_after_capture", "specimen_document"]
+           "readings_edited_after_capture", "refuse_issued_files", "specimen_document"]
 
 
 class IssuedNotWritten(OSError):
-    """The certificate was issued and recorded, but its file could not be written."""
+    """The certificate was issued and recorded, but one of its files could not be written.
+    ``what``: which ("pdf", "dcc" or "results"; the register gives the PDF and the DCC back,
+    not a results file); ``recorded``: for "results", whether the register records it (then
+    its bytes are kept at ``kept``, the temporary file beside ``path``)."""
 
-    def __init__(self, record: CertificateRecord, path: str, cause: OSError) -> None:
+    def __init__(self, record: CertificateRecord, path: str, cause: OSError,
+                 what: str = "pdf", recorded: bool = False, kept: str = "") -> None:
         super().__init__(f"{path}: {cause.strerror or cause}")
         self.record = record
+        self.path = path
+        self.what = what
+        self.recorded = recorded
+        self.kept = kept
+
+
+def _write_results(register: Register, record: CertificateRecord, path: str,
+                   data: bytes) -> None:
+    """The results file written beside ``path`` (a temporary file, fsync'ed), then recorded,
+    then renamed to ``path``: the register records a results file only once its bytes are
+    on disk (rev62 F6: it recorded one a full disk, read-only media or kill -9 never let be
+    written). A write that fails records nothing; a rename that fails after the record
+    keeps the recorded bytes in the temporary file, and says where."""
+    import contextlib
+    import tempfile
+    from pathlib import Path
+
+    from models.project.atomic_write import _mode_for, _temp_prefix, fsync_directory
+    from models.project.output_guard import refuse_database
+    from models.register.store import RegisterError
+
+    target = Path(path)
+    try:
+        refuse_database(target)
+        if target.is_symlink():
+            target = target.resolve()
+        fd, temp = tempfile.mkstemp(prefix=_temp_prefix(target), suffix=".tmp",
+                                    dir=target.parent)
+    except OSError as exc:
+        raise IssuedNotWritten(record, path, exc, "results") from exc
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            if hasattr(os, "fchmod"):
+                os.fchmod(handle.fileno(), _mode_for(target))
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+    except OSError as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        raise IssuedNotWritten(record, path, exc, "results") from exc
+    try:
+        register.record_results(record.number, data, os.path.basename(path))
+    except (RegisterError, OSError) as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        raise IssuedNotWritten(record, path, exc if isinstance(exc, OSError)
+                               else OSError(str(exc)), "results") from exc
+    try:
+        os.replace(temp, target)
+    except OSError as exc:
+        raise IssuedNotWritten(record, path, exc, "results", recorded=True,
+                               kept=temp) from exc
+    fsync_directory(target.parent)
 
 
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:
@@ -152,12 +211,15 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
             made["dcc"] = sign_if_configured(dcc(document, pdf), *signing)
         return pdf
 
-    # before a number is used: an output onto the register (or a database) is refused
-    check_output(path, register_files(register.url))
-    if dcc_path:
-        check_output(dcc_path, register_files(register.url), "--dcc")
-    if results is not None and results_path:
-        check_output(results_path, register_files(register.url), "--results")
+    # before a number is used: an output onto the register (or a database), one that
+    # cannot be written (read-only media, a name too long, a FIFO or a device) and one that
+    # is a file the register issued (any certificate's PDF, DCC or results file) are refused
+    outputs = [("", path), ("--dcc", dcc_path if dcc is not None else ""),
+               ("--results", results_path if results is not None else "")]
+    for flag, out in outputs:
+        if out:
+            check_output(out, register_files(register.url), flag)
+    refuse_issued_files(register, outputs)
     # the register stores the DCC made with the PDF of the same attempt (same number, the
     # PDF inside it) and chains its SHA-256
     record, pdf = register.issue(request, render, supersedes=supersedes,
@@ -173,22 +235,13 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     try:
         write_bytes_atomic(path, pdf)
     except OSError as exc:
-        raise IssuedNotWritten(record, path, exc) from exc
+        raise IssuedNotWritten(record, path, exc, "pdf") from exc
     if dcc is not None and dcc_path:
         try:
             write_bytes_atomic(dcc_path, made["dcc"])
         except OSError as exc:
-            raise IssuedNotWritten(record, dcc_path, exc) from exc
+            raise IssuedNotWritten(record, dcc_path, exc, "dcc") from exc
     if results is not None and results_path:
-        from models.register.store import RegisterError
-
-        data = results(made["document"], record)
-        try:  # recorded before it is written: no results file of it the register lacks
-            register.record_results(record.number, data, os.path.basename(results_path))
-        except RegisterError as exc:
-            raise IssuedNotWritten(record, results_path, OSError(str(exc))) from exc
-        try:
-            write_bytes_atomic(results_path, data)
-        except OSError as exc:
-            raise IssuedNotWritten(record, results_path, exc) from exc
+        # written, then recorded, then renamed into place: never recorded and not written
+        _write_results(register, record, results_path, results(made["document"], record))
     return record

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol
 
+from app.issued_outputs import refuse_issued_outputs
 from app.writers.results_export import write_results_csv, write_results_xlsx
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.certificate.standards_fit import (
@@ -442,6 +443,7 @@ class CertificatePresenter:
             check_output(path, self.protected())
             if self._dcc_path(path):
                 check_output(self._dcc_path(path), self.protected())
+            refuse_issued_outputs(self.register_url(), (("", path), ("", self._dcc_path(path))))
             if entered.example:
                 return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
@@ -596,6 +598,7 @@ class CertificatePresenter:
             return False
         try:
             check_output(path, self.protected())
+            refuse_issued_outputs(self.register_url(), (("", path),))  # rev62 F8
             document = kind.certificate_document(result, self.details(kind.key), source_name,
                                                  settings)
             if path.lower().endswith(".xlsx"):

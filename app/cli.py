@@ -21,6 +21,7 @@ from app.command_line import say as _say
 from models.display_units import ANGLE_UNITS, in_unit
 from models.messages import (
     QT_TR_NOOP,
+    Message,
     declared_text,
     joined,
     listed,
@@ -363,6 +364,12 @@ def run_analyze(argv: list[str]) -> int:
                ("--interpolator-table", getattr(args, "interpolator_table", None)))
     try:
         check_outputs(outputs, _protected(inputs))
+        # an issued file (any certificate's PDF, DCC or results file) is never replaced, by
+        # an issue (checked again there) or a draft, a specimen, results or a table (rev62 F8)
+        from app.issued_outputs import refuse_issued_outputs
+        from models.register.location import register_url
+
+        refuse_issued_outputs(register_url(), outputs)
     except OutputRefused as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT
@@ -670,13 +677,10 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                          "written"), reason=reason_of(exc)), words))
         return None
     except IssuedNotWritten as exc:
-        _say(rendered(message(QT_TR_NOOP(
-            "anglebench analyze: test report {number} is issued and recorded, but {reason}: "
-            "save it with 'anglebench register show {number} --pdf OUT.pdf'")
-            if exc.record.document_kind == "test" else QT_TR_NOOP(
-            "anglebench analyze: certificate {number} is issued and recorded, but {reason}: save "
-            "it with 'anglebench register show {number} --pdf OUT.pdf'"),
-            number=exc.record.number, reason=str(exc)), words))
+        _say(rendered(_not_written(exc), words))
+        return None
+    except OutputRefused as exc:  # e.g. an issued file named as an output: nothing issued
+        _say(f"anglebench analyze: {_why(exc, words)}")
         return None
     _say(rendered(message(QT_TR_NOOP("Test report {number} issued: written to {path} and "
                                      "recorded in the register (sha256 {sha}…)") if report else
@@ -692,6 +696,38 @@ def _issue_into(url, args, kind, result, metadata, settings, rows, words, report
                                          "in the register"),
                               number=record.number, path=args.results), words))
     return record
+
+
+def _not_written(exc) -> Message:
+    """What to do about a certificate issued and recorded whose file ``exc`` names was not
+    written: the PDF and the DCC are saved again from the register; a results file is not
+    kept there (its SHA-256 only), so it is said whether the register records it (rev62 F6:
+    the advice named the PDF whatever file was missing)."""
+    number = exc.record.number
+    if exc.what == "dcc":
+        return message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued and recorded, but {reason}: "
+            "save its DCC with 'anglebench register show {number} --dcc OUT.xml'"),
+            number=number, reason=str(exc))
+    if exc.what == "results" and exc.recorded:
+        return message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued, recorded and written, and "
+            "its results file recorded, but not renamed into place ({reason}): the recorded "
+            "file is {kept}; rename it to {path}"),
+            number=number, reason=str(exc), kept=exc.kept, path=exc.path)
+    if exc.what == "results":
+        return message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued, recorded and written (its "
+            "PDF, and its DCC if asked for), but its results file was not ({reason}): the "
+            "register records no results file for {number}"),
+            number=number, reason=str(exc))
+    return message(QT_TR_NOOP(
+        "anglebench analyze: test report {number} is issued and recorded, but {reason}: "
+        "save it with 'anglebench register show {number} --pdf OUT.pdf'")
+        if exc.record.document_kind == "test" else QT_TR_NOOP(
+        "anglebench analyze: certificate {number} is issued and recorded, but {reason}: save "
+        "it with 'anglebench register show {number} --pdf OUT.pdf'"),
+        number=number, reason=str(exc))
 
 
 def _issued_results(args: argparse.Namespace):

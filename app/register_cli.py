@@ -184,6 +184,12 @@ def _print_record(record, register, words) -> None:
                              name=declared_text(name, words), value=f"{value:.6g}"))
     lines.append(message(QT_TR_NOOP("  software: {versions}"), versions=", ".join(
         f"{k} {v}" for k, v in record.software.items())))
+    for entry in register.results_records(record.number):  # rev62 M4: never listed before
+        lines.append(message(QT_TR_NOOP(
+            "  results file: {file}, SHA-256 {sha256}, recorded {recorded_at}") if entry["first"]
+            else QT_TR_NOOP("  results file: {file}, SHA-256 {sha256}, recorded {recorded_at} "
+                            "(a second one: CHANGED AFTER ISSUE, a certificate has one)"),
+            file=entry["file"], sha256=entry["sha256"], recorded_at=entry["recorded_at"]))
     due = register.due_date(record.item_serial) if record.item_serial else None
     if due:
         lines.append(message(QT_TR_NOOP("  next calibration of {serial} due: {date}"),
@@ -213,6 +219,15 @@ def _export(register, out: str, words) -> int:
                 archive.writestr(f"dcc/{safe}{'.CHANGED-AFTER-ISSUE' if changed else ''}.xml",
                                  dcc)
         archive.writestr("index.csv", index.getvalue())
+        # the results files recorded at issue (the register keeps their SHA-256, not the
+        # files): listed, as in 'register show' (rev62 M4)
+        results = io.StringIO()
+        listing = csv.writer(results)
+        listing.writerow(("number", "file", "sha256", "recorded_at", "first"))
+        for entry in register.results_records():
+            listing.writerow([spreadsheet_safe(str(entry[key])) for key in
+                              ("number", "file", "sha256", "recorded_at", "first")])
+        archive.writestr("results.csv", results.getvalue())
     write_bytes_atomic(out, buffer.getvalue())
     _say(rendered(message(QT_TR_NOOP("{n} certificate(s) exported to {out}"), n=len(records),
                           out=out), words))
@@ -234,7 +249,10 @@ def _verify(register, path: str, words, head: str = "", head_from: str = "") -> 
     if not problems:
         out(message(QT_TR_NOOP("register: hash chain intact over {n} record(s), every stored PDF "
                                "and DCC matches its SHA-256; chain head {head}"),
-                    n=len(register.list()), head=register.chain_head()))
+                    n=register.chain_records(), head=register.chain_head()))
+        out(message(QT_TR_NOOP("  of them: {certificates} certificate(s) and {results} results "
+                               "file(s) recorded at issue"), certificates=len(register.list()),
+                    results=len(register.results_records())))
     failed = bool(problems)
     if head_from:
         head = head_in_pdf(_read(head_from))
@@ -313,15 +331,53 @@ def _say_if_no_longer_valid(record, path: str, out) -> None:
 
 def _verify_results(register, path: str, data: bytes, out) -> int:
     """A results file (CSV or XLSX): the certificate it was recorded with when issued, or
-    1 when the register holds no results file with its SHA-256."""
-    found = register.verify_results(data)
+    1 when the register holds no results file with its SHA-256, when it is recorded under
+    more than one certificate or as a second results file of one, or when what an XLSX says
+    of its certificate (number, PDF and DCC SHA-256) is not that record's (rev62 F7)."""
+    import hashlib
+
+    from app.writers.results_export import issue_stated, neutralise
+
+    digest = hashlib.sha256(data).hexdigest()
+    found = [entry for entry in register.results_records() if entry["sha256"] == digest]
     if not found:
         out(message(QT_TR_NOOP(
             "{path}: NOT in the register (no results file written with an issued certificate "
             "has its SHA-256: altered, written without issuing one, or from another "
             "register)"), path=path))
         return 1
-    for record, recorded_at in found:
+    failed = False
+    numbers = sorted({entry["number"] for entry in found})
+    if len(numbers) > 1:
+        out(message(QT_TR_NOOP(
+            "CHANGED AFTER ISSUE: {path}: its SHA-256 is recorded as the results file of {n} "
+            "certificates ({numbers}): a results file is written with one certificate, so all "
+            "but one were recorded after issue"), path=path, n=len(numbers),
+            numbers=", ".join(numbers)))
+        failed = True
+    stated = issue_stated(data) if path.lower().endswith(".xlsx") else None
+    for entry in found:
+        record = register.get(entry["number"])
+        if not entry["first"]:
+            out(message(QT_TR_NOOP(
+                "CHANGED AFTER ISSUE: {path}: recorded {recorded_at} as a second results file "
+                "of certificate {number}, whose results file was already recorded: a "
+                "certificate has one, recorded at its issue"), path=path,
+                recorded_at=entry["recorded_at"], number=record.number))
+            failed = True
+            continue
+        if stated is not None and (
+                stated["number"] not in (record.number, neutralise(record.number))
+                or stated["pdf_sha256"] != record.pdf_sha256
+                or stated["dcc_sha256"] != (record.dcc_sha256 or "")):
+            out(message(QT_TR_NOOP(
+                "CHANGED AFTER ISSUE: {path}: recorded as the results file of certificate "
+                "{number}, but it says it is that of certificate {stated} (PDF SHA-256 "
+                "{pdf}): it is not the file written with {number}"), path=path,
+                number=record.number, stated=stated["number"] or "—",
+                pdf=stated["pdf_sha256"][:16] or "—"))
+            failed = True
+            continue
         out(message(_by_kind(record, QT_TR_NOOP(
             "{path}: the results file of certificate {number}, recorded {recorded_at}, "
             "{status}; identical to the record (SHA-256)"), QT_TR_NOOP(
@@ -329,9 +385,22 @@ def _verify_results(register, path: str, data: bytes, out) -> int:
             "{status}; identical to the record (SHA-256)"), QT_TR_NOOP(
             "{path}: the results file of document {number}, recorded {recorded_at}, "
             "{status}; identical to the record (SHA-256)")), path=path, number=record.number,
-            recorded_at=recorded_at, status=status_words(record.status)))
+            recorded_at=entry["recorded_at"], status=status_words(record.status)))
         _say_if_no_longer_valid(record, path, out)
-    return 0
+    return 1 if failed else 0
+
+
+def _holds(path: str, register, record, flag: str) -> bool:
+    """Whether ``path`` already holds, byte for byte, what ``show --pdf``/``--dcc`` would
+    write there (saving an issued file again over itself changes nothing)."""
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError:
+        return False
+    digest = hashlib.sha256(data).hexdigest()
+    return (flag == "--pdf" and digest == record.pdf_sha256) or (
+        flag == "--dcc" and digest == record.dcc_sha256)
 
 
 def _read(path: str) -> bytes:
@@ -384,6 +453,16 @@ def run_register(argv: list[str]) -> int:
                 return 0
             if args.command == "show":
                 record = register.get(args.number)
+                if any(path for _flag, path in outputs):
+                    from app.certificate_issue import refuse_issued_files
+
+                    try:  # an issued file (another certificate's PDF…) is never replaced
+                        refuse_issued_files(register, [
+                            (flag, path) for flag, path in outputs
+                            if path and not _holds(path, register, record, flag)])
+                    except OutputRefused as exc:
+                        _say(f"anglebench register: {rendered(reason_of(exc), words)}")
+                        return EXIT_BAD_INPUT
                 _print_record(record, register, words)
                 if args.pdf:
                     write_bytes_atomic(args.pdf, register.pdf(record.number))

@@ -467,3 +467,34 @@ def results_bytes(path: str | Path, document: CertificateDocument, unit: AngleUn
     if str(path).lower().endswith(".xlsx"):
         return results_xlsx_bytes(document, unit, issued)
     return results_csv_bytes(document, unit)
+
+
+#: where the *Certificate* sheet holds the register's record of the issue (the rows of
+#: :func:`_metadata_rows`, from the first): the number, the PDF's and the DCC's SHA-256
+_ISSUE_ROWS = {"number": 0, "pdf_sha256": 5, "dcc_sha256": 6}
+
+
+def issue_stated(data: bytes) -> dict[str, str] | None:
+    """What an XLSX results file says of the certificate it was written with (its
+    *Certificate* sheet): ``number``, ``pdf_sha256`` and ``dcc_sha256`` ("" for none); None
+    when it is no results workbook of ours (a CSV says nothing of it). ``register verify``
+    compares them with the record it is found under (rev62 F7)."""
+    import zipfile
+
+    from openpyxl import load_workbook
+
+    try:
+        book = load_workbook(io.BytesIO(data), read_only=True, data_only=True)
+    except (zipfile.BadZipFile, OSError, ValueError, KeyError):
+        return None
+    try:
+        if "Certificate" not in book.sheetnames:
+            return None
+        rows = [tuple(r) + (None, None) for r in book["Certificate"].iter_rows(
+            max_row=max(_ISSUE_ROWS.values()) + 1, max_col=2, values_only=True)]
+    finally:
+        book.close()
+    if len(rows) <= max(_ISSUE_ROWS.values()):
+        return None
+    return {key: "" if rows[at][1] is None else str(rows[at][1]).strip()
+            for key, at in _ISSUE_ROWS.items()}

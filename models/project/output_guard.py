@@ -15,7 +15,9 @@ command this module was not told about).
 
 from __future__ import annotations
 
+import contextlib
 import os
+import stat
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -23,8 +25,8 @@ from pathlib import Path
 from models.messages import QT_TR_NOOP, message
 
 __all__ = ["OutputRefused", "Protected", "check_output", "check_outputs", "input_files",
-           "open_project", "refuse_database", "register_files", "same_file",
-           "sqlite_path_of_url"]
+           "open_project", "refuse_database", "refuse_unwritable", "register_files",
+           "same_file", "sqlite_path_of_url"]
 
 #: the files SQLite keeps beside a database ``X``: ``X-journal`` (rollback journal),
 #: ``X-wal`` (write-ahead log) and ``X-shm`` (its shared-memory index)
@@ -133,7 +135,18 @@ def _companion_of_database(path: str | os.PathLike[str]) -> bool:
     return False
 
 
+def _regular_or_absent(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` (after links) is a regular file or names nothing yet: a FIFO, a
+    device or a socket is neither (opening a FIFO waits for a writer for ever: rev62 M1)."""
+    try:
+        return stat.S_ISREG(os.stat(path).st_mode)
+    except (OSError, ValueError):
+        return True
+
+
 def _is_database(path: str | os.PathLike[str]) -> bool:
+    if not _regular_or_absent(path):  # never opened: a FIFO would block the open
+        return False
     try:
         with open(path, "rb") as handle:
             head = handle.read(16)
@@ -176,6 +189,42 @@ def check_output(path: str | os.PathLike[str] | None, protected: Sequence[Protec
                 "{flag}{out} is {what}; nothing was written: choose another name"),
                 flag=f"{flag} " if flag else "", out=os.fspath(path), what=item.what))
     refuse_database(path)
+    refuse_unwritable(path, flag)
+
+
+def refuse_unwritable(path: str | os.PathLike[str], flag: str = "") -> None:
+    """Raise OutputRefused when ``path`` could not be written as a file: it exists and is
+    not a regular file (a FIFO, a device, a socket), its name is longer than its folder
+    allows, or a file cannot be created in its folder (read-only media, no permission: a
+    probe file is made there and removed). Run before a certificate's number is used, so
+    that what would fail at the write fails before anything is issued (rev62 F6, M1)."""
+    out = os.fspath(path)
+    said = f"{flag} " if flag else ""
+    if not _regular_or_absent(path):
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out} is not a regular file (a pipe, a device or a socket); nothing was "
+            "written: name a file"), flag=said, out=out))
+    folder = os.path.dirname(os.path.abspath(out))
+    try:
+        limit = os.pathconf(folder, "PC_NAME_MAX")
+    except (OSError, ValueError, AttributeError):
+        limit = 255
+    if len(os.path.basename(out).encode("utf-8", "surrogateescape")) > limit:
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out}: the name is longer than its folder allows ({limit} bytes); nothing "
+            "was written: choose a shorter name"), flag=said, out=out, limit=limit))
+    import tempfile  # only when an output is named (a plain analyze loads none of it)
+
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".anglebench-probe.", suffix=".tmp", dir=folder)
+    except OSError as exc:
+        raise OutputRefused(message(QT_TR_NOOP(
+            "{flag}{out}: no file can be written in {folder} ({reason}); nothing was "
+            "written"), flag=said, out=out, folder=folder,
+            reason=exc.strerror or str(exc))) from None
+    os.close(fd)
+    with contextlib.suppress(OSError):
+        os.unlink(probe)
 
 
 def check_outputs(outputs: Sequence[tuple[str, str | os.PathLike[str] | None]],
@@ -186,7 +235,11 @@ def check_outputs(outputs: Sequence[tuple[str, str | os.PathLike[str] | None]],
     for flag, out in named:
         check_output(out, protected, flag)
     for i, (flag, out) in enumerate(named):
-        twin = next((f for f, o in named[i + 1:] if same_file(out, o)), None)
+        # names that differ only in case are one file on a case-insensitive file system
+        # (macOS, Windows, a FAT stick): refused everywhere (rev62 M5)
+        twin = next((f for f, o in named[i + 1:]
+                     if same_file(out, o) or _resolved(out).casefold() == _resolved(o).casefold()),
+                    None)
         if twin:
             raise OutputRefused(message(QT_TR_NOOP(
                 "{flag} and {twin} name the same file ({out}); nothing was written"),

@@ -952,27 +952,65 @@ class Register:
         """Record a results file (CSV or XLSX) written with certificate ``number`` when it was
         issued: a chained entry ("results") holding the file's SHA-256 and name, so that
         ``register verify`` finds it as it finds the PDF and the DCC. The certificate must be
-        the current one (issued, not superseded or withdrawn). Returns the entry's chain
-        value."""
+        the current one (issued, not superseded or withdrawn) and have no results file yet:
+        one per certificate, recorded at its issue (a corrected results file comes with the
+        certificate's amendment, under the amendment's number; rev62 F7: a later call made
+        any file "identical to the record"). Returns the entry's chain value."""
         entry = {"sha256": hashlib.sha256(data).hexdigest(), "file": name}
+        entries = self._schema.ENTRIES
         with self._write() as conn:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
             self._current(conn, number)
+            earlier = conn.execute(self._sa.select(entries.c.recorded_at).where(
+                entries.c.kind == "results", entries.c.subject == number)).first()
+            if earlier is not None:
+                raise RegisterError(message(QT_TR_NOOP(
+                    "certificate {number} already has its results file, recorded "
+                    "{recorded_at}: a certificate has one, recorded when it is issued (a "
+                    "corrected one comes with its amendment)"), number=number,
+                    recorded_at=earlier.recorded_at))
             return self._append_entry(conn, "results", number, entry)
+
+    def results_records(self, number: str = "") -> builtins.list[dict]:
+        """The results files recorded (every certificate's, or ``number``'s), in the chain's
+        order: ``number``, ``file``, ``sha256``, ``recorded_at``, ``seq`` and ``first`` (False
+        for a second one of the same certificate, which only a register written before 0.8.12
+        or outside AngleBench holds)."""
+        entries = self._schema.ENTRIES
+        query = self._sa.select(entries.c.seq, entries.c.subject, entries.c.body_json,
+                                entries.c.recorded_at).where(entries.c.kind == "results")
+        with self._read() as conn:
+            rows = conn.execute(query.order_by(entries.c.seq)).all()
+        out, seen = [], set()
+        for row in rows:
+            body = json.loads(row.body_json or "{}")
+            out.append({"number": row.subject, "file": body.get("file", ""),
+                        "sha256": body.get("sha256", ""), "recorded_at": row.recorded_at,
+                        "seq": row.seq, "first": row.subject not in seen})
+            seen.add(row.subject)
+        return [r for r in out if not number or r["number"] == number]
 
     def verify_results(self, data: bytes) -> builtins.list[tuple[CertificateRecord, str]]:
         """Every certificate a results file byte for byte this one (by SHA-256) was recorded
         with (:meth:`record_results`), with the time it was recorded."""
-        entries = self._schema.ENTRIES
         digest = hashlib.sha256(data).hexdigest()
+        found = [r for r in self.results_records() if r["sha256"] == digest]
         with self._read() as conn:
-            rows = conn.execute(self._sa.select(
-                entries.c.subject, entries.c.body_json, entries.c.recorded_at).where(
-                entries.c.kind == "results").order_by(entries.c.seq)).all()
-            return [(self._get(conn, row.subject), row.recorded_at) for row in rows
-                    if json.loads(row.body_json or "{}").get("sha256") == digest]
+            return [(self._get(conn, r["number"]), r["recorded_at"]) for r in found]
+
+    def issued_file(self, digest: str) -> builtins.list[tuple[str, str]]:
+        """Which certificates issued a file of SHA-256 ``digest``, and as what ("pdf", "dcc"
+        or "results"): an issued file is never overwritten by a later output (rev62 F8)."""
+        certificates = self._schema.CERTIFICATES
+        with self._read() as conn:
+            found = [(number, "pdf") for number in conn.execute(self._sa.select(
+                certificates.c.number).where(certificates.c.pdf_sha256 == digest)).scalars()]
+            found += [(number, "dcc") for number in conn.execute(self._sa.select(
+                certificates.c.number).where(certificates.c.dcc_sha256 == digest)).scalars()]
+        return found + [(r["number"], "results") for r in self.results_records()
+                        if r["sha256"] == digest]
 
     # -- approval ---------------------------------------------------------------------------
     def signatories(self) -> tuple[list[str], bool]:
@@ -1205,6 +1243,12 @@ class Register:
         database, it anchors every record issued before."""
         with self._read() as conn:
             return self._tail(conn)[1]
+
+    def chain_records(self) -> int:
+        """How many records the hash chain holds: the certificates and every chained entry
+        (results files, withdrawals, intervals, …)."""
+        with self._read() as conn:
+            return self._tail(conn)[0]
 
     def find_head(self, value: str) -> tuple[int, str] | None:
         """Where the chain passed through ``value`` (a head noted from an earlier day or
@@ -1440,6 +1484,16 @@ def _cross_checks(rows, notes, counters: dict, intervals: dict) -> list:
                 "instrument {serial}: calibration interval {days} day(s), but the register's "
                 "records set {recorded}: changed after it was recorded"), serial=serial,
                 days=intervals.get(serial) or "—", recorded=last_interval.get(serial) or "—"))
+    results: dict[str, int] = {}
+    for note in notes:  # one results file per certificate, recorded at its issue (rev62 F7)
+        if note.kind == "results":
+            results[note.subject] = results.get(note.subject, 0) + 1
+    for number, count in sorted(results.items()):
+        if count > 1:
+            problems.append(message(QT_TR_NOOP(
+                "certificate {number}: {count} results files recorded, where a certificate "
+                "has one (recorded at its issue): all but the first were added after issue"),
+                number=number, count=count))
     superseders = {row.supersedes: row.number for row in rows if row.supersedes}
     for row in rows:
         by = superseders.get(row.number)

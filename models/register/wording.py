@@ -8,7 +8,8 @@ import re
 
 from models.messages import QT_TR_NOOP, message
 
-__all__ = ["DOCUMENT_KINDS", "kind_words", "revision_words", "status_words"]
+__all__ = ["DOCUMENT_KINDS", "issued_file_words", "kind_words", "revision_words",
+           "status_words"]
 
 #: what a record's ``document_kind`` may be (schema version 6): the keys of the document
 #: types a certificate's details choose from (models.certificate.metadata.DOCUMENT_TYPES)
@@ -44,3 +45,14 @@ def revision_words(revision: str) -> str:
     if amendment:
         return message(QT_TR_NOOP("amendment {n}"), n=int(amendment.group(1)))
     return revision
+
+
+_ISSUED_FILES = {"pdf": QT_TR_NOOP("the PDF of certificate {number}"),
+                 "dcc": QT_TR_NOOP("the DCC of certificate {number}"),
+                 "results": QT_TR_NOOP("the results file of certificate {number}")}
+
+
+def issued_file_words(kind: str, number: str) -> str:
+    """"the PDF of certificate AB-2026-0001" (``kind``: "pdf", "dcc" or "results"), as a
+    message."""
+    return message(_ISSUED_FILES.get(kind, _ISSUED_FILES["pdf"]), number=number)

@@ -1,0 +1,375 @@
+"""The write paths of an issue (rev62 F6–F8, M1, M4–M6): an output that cannot be written is
+refused before a number is used; a results file is recorded only once its bytes are on disk,
+and a failure says which file is missing; an issued file (PDF, DCC, results file) is never
+replaced by a later issue; a certificate has one results file, and ``register verify
+FILE.xlsx`` refuses one recorded under two certificates, or as a second one, or saying it is
+another certificate's; ``register show``/``export``/``verify`` list the results files. The
+steps are those of the review's scripts (out_attacks.sh, diskfull_results.sh,
+repro_results_launder.sh, repro_fifo_hang.py, repro_case_names.sh). The register of each test
+is its own (conftest.py)."""
+
+from __future__ import annotations
+
+import errno
+import hashlib
+import json
+import os
+import tempfile
+import threading
+import zipfile
+
+import pytest
+
+from app.main import main
+from models.project.output_guard import OutputRefused, check_output, check_outputs
+from models.register.location import register_url
+from models.register.store import Register, RegisterError
+
+
+def _details(samples_dir, tmp_path, name="details.json", **changes):
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": "", **changes})
+    path = tmp_path / name
+    path.write_text(json.dumps(meta), encoding="utf-8")
+    return path
+
+
+def _issue(samples_dir, tmp_path, *outputs, details=None, separate=False):
+    return main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--metadata", str(details or _details(samples_dir, tmp_path)), *outputs,
+                 *(["--separate-calibration", "rerun"] if separate else [])])
+
+
+def _numbers():
+    with Register(register_url()) as register:
+        return [r.number for r in register.list()]
+
+
+def _results():
+    with Register(register_url()) as register:
+        return register.results_records()
+
+
+def _sha(path):
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+# -- outputs that cannot be written: refused before a number is used (F6, M1) -----------------
+
+def test_a_fifo_as_an_output_is_refused_at_once(tmp_path):
+    """rev62 M1: the guard opened the FIFO to look for a database and waited for a writer
+    for ever."""
+    fifo = tmp_path / "fifo.xlsx"
+    os.mkfifo(fifo)
+    outcome = []
+
+    def check():
+        try:
+            check_output(str(fifo), [], "--results")
+            outcome.append("accepted")
+        except OutputRefused as exc:
+            outcome.append(str(exc))
+
+    worker = threading.Thread(target=check, daemon=True)
+    worker.start()
+    worker.join(10)
+    if worker.is_alive():  # the old guard: let it go (a writer opens the FIFO) and fail
+        with open(fifo, "wb"):
+            pass
+        worker.join(10)
+        pytest.fail("the output guard blocked on a FIFO")
+    assert outcome == [f"--results {fifo} is not a regular file (a pipe, a device or a "
+                       "socket); nothing was written: name a file"]
+
+
+def test_names_differing_only_in_case_are_one_output(tmp_path):
+    """rev62 M5: out.pdf and OUT.pdf are one file on macOS, Windows and a FAT stick: the DCC
+    would replace the PDF there."""
+    with pytest.raises(OutputRefused, match=r"--certificate and --dcc name the same file"):
+        check_outputs((("--certificate", str(tmp_path / "out.pdf")),
+                       ("--dcc", str(tmp_path / "OUT.pdf"))), [])
+
+
+@pytest.mark.slow
+def test_a_name_too_long_uses_no_number(samples_dir, tmp_path, capsys):
+    """out_attacks.sh cases 4 and 5: a 256-byte name was issued and recorded, then not
+    written."""
+    long_results = tmp_path / ("r" * 251 + ".xlsx")
+    code = _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "c.pdf"),
+                  "--results", str(long_results))
+    said = capsys.readouterr().err
+    assert code == 2
+    assert (f"--results {long_results}: the name is longer than its folder allows (255 "
+            "bytes); nothing was written: choose a shorter name") in said
+    assert _numbers() == [] and not (tmp_path / "c.pdf").exists()
+
+
+@pytest.mark.slow
+def test_read_only_media_use_no_number(samples_dir, tmp_path, capsys, monkeypatch):
+    """out_attacks.sh cases 2 and 3: --results (or --certificate) on read-only media was
+    issued and recorded, then not written. Read-only media are simulated: no file can be
+    created in the folder ``ro``."""
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    real = tempfile.mkstemp
+
+    def mkstemp(*args, **kwargs):
+        if os.path.abspath(str(kwargs.get("dir", ""))) == str(ro):
+            raise OSError(errno.EROFS, "Read-only file system")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(tempfile, "mkstemp", mkstemp)
+    code = _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "c.pdf"),
+                  "--results", str(ro / "r.xlsx"))
+    said = capsys.readouterr().err
+    assert code == 2
+    assert (f"--results {ro / 'r.xlsx'}: no file can be written in {ro} (Read-only file "
+            "system); nothing was written") in said
+    assert _numbers() == [] and not (tmp_path / "c.pdf").exists()
+
+
+# -- the results file recorded only once written; the advice names it (F6, M6) ----------------
+
+def _failing_fsync(monkeypatch, name):
+    """A full disk for the file ``name`` (its temporary file beside it): the fsync of its
+    bytes fails with ENOSPC, as on the review's 300 KiB tmpfs."""
+    real = os.fsync
+
+    def fsync(fd):
+        if f"/.{name}." in os.readlink(f"/proc/self/fd/{fd}"):
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return real(fd)
+
+    monkeypatch.setattr(os, "fsync", fsync)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not os.path.isdir("/proc/self/fd"), reason="finds the file by /proc")
+def test_a_results_file_not_written_is_not_recorded_and_said(samples_dir, tmp_path, capsys):
+    """diskfull_results.sh: the results file did not fit; the register recorded it anyway,
+    nothing said so, and the advice pointed at --pdf."""
+    pdf, dcc, xlsx = tmp_path / "c.pdf", tmp_path / "c.xml", tmp_path / "r.xlsx"
+    with pytest.MonkeyPatch.context() as patch:
+        _failing_fsync(patch, "r.xlsx")
+        code = _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--dcc", str(dcc),
+                      "--results", str(xlsx))
+    said = capsys.readouterr().err
+    (number,) = _numbers()
+    assert code == 2
+    assert (f"anglebench analyze: certificate {number} is issued, recorded and written (its "
+            "PDF, and its DCC if asked for), but its results file was not "
+            f"({xlsx}: No space left on device): the register records no results file for "
+            f"{number}") in said
+    assert "--pdf" not in said
+    assert pdf.exists() and dcc.exists() and not xlsx.exists()
+    assert _results() == []  # no record of a file that is not there
+    assert list(tmp_path.glob(".r.xlsx.*")) == []  # nor its temporary file
+    assert main(["register", "show", number]) == 0
+    assert "results file" not in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_a_results_file_recorded_but_not_renamed_is_kept_and_said(samples_dir, tmp_path,
+                                                                  capsys):
+    """The narrow case left: recorded, then the rename failed (or the process was killed):
+    the recorded bytes stay in the temporary file, and the message says where."""
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    real = os.replace
+
+    def replace(source, target, *args, **kwargs):
+        if str(target).endswith("r.xlsx"):
+            raise OSError(errno.EIO, "Input/output error")
+        return real(source, target, *args, **kwargs)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "replace", replace)
+        code = _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx))
+    said = capsys.readouterr().err
+    (number,) = _numbers()
+    (kept,) = tmp_path.glob(".r.xlsx.*.tmp")
+    assert code == 2
+    assert (f"certificate {number} is issued, recorded and written, and its results file "
+            f"recorded, but not renamed into place ({xlsx}: Input/output error): the "
+            f"recorded file is {kept}; rename it to {xlsx}") in said
+    (entry,) = _results()
+    assert entry["number"] == number and entry["sha256"] == _sha(kept)
+
+
+# -- an issued file is never replaced (F8) ------------------------------------------------------
+
+@pytest.mark.slow
+def test_an_issued_file_is_never_replaced_by_a_later_issue(samples_dir, tmp_path, capsys):
+    """out_attacks.sh cases 1 and 7: a second certificate's --results replaced the first's
+    issued results file (the register keeps its SHA-256 only) or its PDF."""
+    one, xlsx = tmp_path / "one.pdf", tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(one), "--results", str(xlsx)) == 0
+    (number,) = _numbers()
+    kept = {one: _sha(one), xlsx: _sha(xlsx)}
+    capsys.readouterr()
+    for target, what in ((xlsx, f"the results file of certificate {number}"),
+                         (one, f"the PDF of certificate {number}")):
+        code = _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "two.pdf"),
+                      "--results", str(target), separate=True)
+        said = capsys.readouterr().err
+        assert code == 2
+        assert (f"anglebench analyze: --results {target} is {what}, as issued; an issued file "
+                "is never replaced: nothing was written, choose another name") in said
+    code = _issue(samples_dir, tmp_path, "--certificate", str(one), separate=True)
+    assert code == 2
+    assert (f"{one} is the PDF of certificate {number}, as issued; an issued file is never "
+            "replaced") in capsys.readouterr().err
+    assert _numbers() == [number]  # no number used
+    assert {path: _sha(path) for path in kept} == kept and not (tmp_path / "two.pdf").exists()
+    # 'register show --pdf' onto another file issued: refused; onto its own PDF: the same bytes
+    assert main(["register", "show", number, "--pdf", str(xlsx)]) == 2
+    assert f"--pdf {xlsx} is the results file of certificate {number}" in \
+        capsys.readouterr().err
+    assert main(["register", "show", number, "--pdf", str(one)]) == 0
+    assert {path: _sha(path) for path in kept} == kept
+
+
+# -- one results file per certificate; verify says whose it is (F7, M4) --------------------------
+
+@pytest.mark.slow
+def test_a_results_file_is_one_certificates_and_verify_says_whose(samples_dir, tmp_path,
+                                                                 capsys):
+    """repro_results_launder.sh: any later record_results made an edited file, or another
+    calibration's, verify as "identical to the record", rc 0."""
+    one, two = tmp_path / "one.xlsx", tmp_path / "two.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "one.pdf"),
+                  "--results", str(one)) == 0
+    other = _details(samples_dir, tmp_path, "other.json", item_serial="XY-99",
+                     customer_name="Other Customer Ltd")
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "two.pdf"),
+                  "--results", str(two), details=other) == 0
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "three.pdf"),
+                  details=other, separate=True) == 0  # a certificate without results
+    first, second, third = sorted(_numbers())
+    edited = one.read_bytes() + b"\0"
+    with Register(register_url()) as register:
+        for data in (edited, two.read_bytes()):  # a second results file of a certificate
+            with pytest.raises(RegisterError, match=(
+                    f"certificate {first} already has its results file, recorded .*: a "
+                    "certificate has one, recorded when it is issued")):
+                register.record_results(first, data, "one.xlsx")
+        # what an API call may still do: a certificate without one given another's file
+        register.record_results(third, two.read_bytes(), "two.xlsx")
+    capsys.readouterr()
+    assert main(["register", "verify", str(two)]) == 1
+    out = capsys.readouterr().out
+    assert (f"CHANGED AFTER ISSUE: {two}: its SHA-256 is recorded as the results file of 2 "
+            f"certificates ({second}, {third}): a results file is written with one "
+            "certificate, so all but one were recorded after issue") in out
+    assert (f"CHANGED AFTER ISSUE: {two}: recorded as the results file of certificate "
+            f"{third}, but it says it is that of certificate {second} (PDF SHA-256 ") in out
+    assert f"{two}: the results file of certificate {second}, recorded " in out
+    # the register itself: every record counted, the results files among them
+    assert "register: hash chain intact over 6 record(s)" in out
+    assert "  of them: 3 certificate(s) and 3 results file(s) recorded at issue" in out
+    capsys.readouterr()
+    assert main(["register", "verify", str(one)]) == 0
+    assert f"{one}: the results file of certificate {first}, recorded " in \
+        capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_a_second_results_record_of_a_certificate_is_found(samples_dir, tmp_path, capsys):
+    """A register written before 0.8.12 (or by a script) may hold a second results record of
+    a certificate, chained like any: verify and show say it was added after issue."""
+    one = tmp_path / "one.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "one.pdf"),
+                  "--results", str(one)) == 0
+    (number,) = _numbers()
+    edited = tmp_path / "one-edited.xlsx"
+    edited.write_bytes(one.read_bytes() + b"\0")
+    with Register(register_url()) as register, register._write() as conn:
+        register._append_entry(conn, "results", number,  # what record_results did before
+                               {"sha256": _sha(edited), "file": "one.xlsx"})
+    capsys.readouterr()
+    assert main(["register", "verify", str(edited)]) == 1
+    out = capsys.readouterr().out
+    assert (f"CHANGED AFTER ISSUE: certificate {number}: 2 results files recorded, where a "
+            "certificate has one (recorded at its issue): all but the first were added after "
+            "issue") in out
+    assert (f"CHANGED AFTER ISSUE: {edited}: recorded ") in out
+    assert (f"as a second results file of certificate {number}, whose results file was "
+            "already recorded") in out
+    assert "identical to the record" not in out
+    assert main(["register", "show", number]) == 0
+    shown = capsys.readouterr().out
+    assert f"  results file: one.xlsx, SHA-256 {_sha(one)}, recorded " in shown
+    assert (f"  results file: one.xlsx, SHA-256 {_sha(edited)}, recorded " in shown
+            and "(a second one: CHANGED AFTER ISSUE, a certificate has one)" in shown)
+
+
+@pytest.mark.slow
+def test_show_and_export_list_the_results_file(samples_dir, tmp_path, capsys):
+    """rev62 M4: neither 'register show' nor 'register export' mentioned a results file."""
+    xlsx = tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(tmp_path / "c.pdf"),
+                  "--results", str(xlsx)) == 0
+    (number,) = _numbers()
+    capsys.readouterr()
+    assert main(["register", "show", number]) == 0
+    shown = capsys.readouterr().out
+    assert f"  results file: r.xlsx, SHA-256 {_sha(xlsx)}, recorded " in shown
+    (entry,) = _results()
+    assert f"recorded {entry['recorded_at']}" in shown
+    archive = tmp_path / "all.zip"
+    assert main(["register", "export", str(archive)]) == 0
+    with zipfile.ZipFile(archive) as z:
+        listing = z.read("results.csv").decode("utf-8")
+    assert listing.splitlines() == ["number,file,sha256,recorded_at,first",
+                                    f"{number},r.xlsx,{_sha(xlsx)},{entry['recorded_at']},True"]
+
+
+class _Store(dict):
+    def value(self, key, default=None):
+        return self.get(key, default)
+
+    def setValue(self, key, value):  # noqa: N802 - QSettings' name
+        self[key] = value
+
+
+@pytest.mark.slow
+def test_an_issued_file_is_never_replaced_by_an_export(samples_dir, tmp_path, capsys):
+    """rev62 F8 ("… or export"): results alone, a draft, and the window's Export results
+    and draft certificate onto the files a certificate was issued with."""
+    from unittest import mock
+
+    from app.certificate_presenter import CertificatePresenter, CertificateView
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+    from models.registry import KINDS
+
+    one, xlsx = tmp_path / "one.pdf", tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(one), "--results", str(xlsx)) == 0
+    (number,) = _numbers()
+    kept = {one: _sha(one), xlsx: _sha(xlsx)}
+    capsys.readouterr()
+    sample = str(samples_dir / "polygon_sample.csv")
+    assert main(["analyze", "polygon", sample, "--results", str(xlsx)]) == 2
+    assert (f"anglebench analyze: --results {xlsx} is the results file of certificate {number}"
+            ", as issued; an issued file is never replaced") in capsys.readouterr().err
+    draft = _details(samples_dir, tmp_path, "draft.json", approver="")  # a draft: no approver
+    assert main(["analyze", "polygon", sample, "--metadata", str(draft),
+                 "--certificate", str(one)]) == 2
+    assert f"--certificate {one} is the PDF of certificate {number}, as issued" in \
+        capsys.readouterr().err
+    view = mock.create_autospec(CertificateView, instance=True)
+    presenter = CertificatePresenter(view, _Store(), lambda: {}, mock.Mock())
+    kind = KINDS["theodolite"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    view.choose_save_path.return_value = str(xlsx)
+    assert not presenter.export_results(kind, result, {}, "run.csv")
+    assert f"{xlsx} is the results file of certificate {number}, as issued" in \
+        view.tell.call_args.args[1]
+    view.edit_certificate_details.return_value = CertificateMetadata(lab_name="Lab")
+    view.confirm_draft.return_value = True
+    view.choose_save_path.return_value = str(one)
+    assert not presenter.export_certificate(kind, result, {}, "run.csv")
+    assert f"{one} is the PDF of certificate {number}, as issued" in view.tell.call_args.args[1]
+    assert {path: _sha(path) for path in kept} == kept
+    assert _numbers() == [number]
