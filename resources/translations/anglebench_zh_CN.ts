@@ -2898,6 +2898,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>  软件：{versions}</translation>
     </message>
     <message>
+        <source>  results file: {file}, SHA-256 {sha256}, recorded {recorded_at}</source>
+        <translation>  结果文件：{file}，SHA-256 {sha256}，记录于 {recorded_at}</translation>
+    </message>
+    <message>
+        <source>  results file: {file}, SHA-256 {sha256}, recorded {recorded_at} (a second one: CHANGED AFTER ISSUE, a certificate has one)</source>
+        <translation>  结果文件：{file}，SHA-256 {sha256}，记录于 {recorded_at}（第二个：签发后被改动，一份证书只有一个）</translation>
+    </message>
+    <message>
         <source>  next calibration of {serial} due: {date}</source>
         <translation>  {serial} 的下次校准日期：{date}</translation>
     </message>
@@ -2908,6 +2916,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>register: hash chain intact over {n} record(s), every stored PDF and DCC matches its SHA-256; chain head {head}</source>
         <translation>登记册：{n} 条记录的哈希链完整，所存每份 PDF 和 DCC 均与其 SHA-256 相符；链头 {head}</translation>
+    </message>
+    <message>
+        <source>  of them: {certificates} certificate(s) and {results} results file(s) recorded at issue</source>
+        <translation>  其中：{certificates} 份证书，{results} 个签发时记录的结果文件</translation>
     </message>
     <message>
         <source>{path}: no register chain head printed in it (a draft, a specimen, or issued before AngleBench printed the head)</source>
@@ -2956,6 +2968,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>{path}: NOT in the register (no results file written with an issued certificate has its SHA-256: altered, written without issuing one, or from another register)</source>
         <translation>{path}：不在登记册中（随已签发证书写出的结果文件中没有一个具有此 SHA-256：已被改动、写出时未签发证书，或来自另一登记册）</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path}: its SHA-256 is recorded as the results file of {n} certificates ({numbers}): a results file is written with one certificate, so all but one were recorded after issue</source>
+        <translation>签发后被改动：{path}：其 SHA-256 被记录为 {n} 份证书（{numbers}）的结果文件：结果文件随一份证书写出，因此除一条外其余都是签发后记录的</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path}: recorded {recorded_at} as a second results file of certificate {number}, whose results file was already recorded: a certificate has one, recorded at its issue</source>
+        <translation>签发后被改动：{path}：于 {recorded_at} 被记录为证书 {number} 的第二个结果文件，而该证书的结果文件此前已记录：一份证书只有一个结果文件，在签发时记录</translation>
+    </message>
+    <message>
+        <source>CHANGED AFTER ISSUE: {path}: recorded as the results file of certificate {number}, but it says it is that of certificate {stated} (PDF SHA-256 {pdf}): it is not the file written with {number}</source>
+        <translation>签发后被改动：{path}：被记录为证书 {number} 的结果文件，但文件自称属于证书 {stated}（PDF SHA-256 {pdf}）：它不是随 {number} 写出的文件</translation>
     </message>
     <message>
         <source>{path}: the results file of certificate {number}, recorded {recorded_at}, {status}; identical to the record (SHA-256)</source>
@@ -5398,6 +5422,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>anglebench analyze：{reason}；未写入证书</translation>
     </message>
     <message>
+        <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save its DCC with &apos;anglebench register show {number} --dcc OUT.xml&apos;</source>
+        <translation>anglebench analyze：证书 {number} 已签发并记录，但{reason}：请用 &apos;anglebench register show {number} --dcc OUT.xml&apos; 保存其 DCC</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: certificate {number} is issued, recorded and written, and its results file recorded, but not renamed into place ({reason}): the recorded file is {kept}; rename it to {path}</source>
+        <translation>anglebench analyze：证书 {number} 已签发、记录并写出，其结果文件也已记录，但未能改名到位（{reason}）：已记录的文件是 {kept}；请将其改名为 {path}</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: certificate {number} is issued, recorded and written (its PDF, and its DCC if asked for), but its results file was not ({reason}): the register records no results file for {number}</source>
+        <translation>anglebench analyze：证书 {number} 已签发、记录并写出（其 PDF，以及所要求的 DCC），但其结果文件未写出（{reason}）：登记册没有为 {number} 记录任何结果文件</translation>
+    </message>
+    <message>
         <source>anglebench analyze: test report {number} is issued and recorded, but {reason}: save it with &apos;anglebench register show {number} --pdf OUT.pdf&apos;</source>
         <translation>anglebench analyze：检测报告 {number} 已签发并登记，但{reason}：请用 &apos;anglebench register show {number} --pdf OUT.pdf&apos; 保存</translation>
     </message>
@@ -6158,6 +6194,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>作废证书须说明原因（--reason）</translation>
     </message>
     <message>
+        <source>certificate {number} already has its results file, recorded {recorded_at}: a certificate has one, recorded when it is issued (a corrected one comes with its amendment)</source>
+        <translation>证书 {number} 已有结果文件，记录于 {recorded_at}：一份证书只有一个结果文件，在签发时记录（更正后的结果文件随其修订版而来）</translation>
+    </message>
+    <message>
         <source>&quot;{approver}&quot; is not one of the lab&apos;s authorised signatories ({names}): the certificate is approved by one of them</source>
         <translation>“{approver}”不是实验室的授权签字人（{names}）：证书须由其中一人批准</translation>
     </message>
@@ -6405,6 +6445,18 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>amendment {n}</source>
         <translation>第 {n} 次修订</translation>
+    </message>
+    <message>
+        <source>the PDF of certificate {number}</source>
+        <translation>证书 {number} 的 PDF</translation>
+    </message>
+    <message>
+        <source>the DCC of certificate {number}</source>
+        <translation>证书 {number} 的 DCC</translation>
+    </message>
+    <message>
+        <source>the results file of certificate {number}</source>
+        <translation>证书 {number} 的结果文件</translation>
     </message>
     <message>
         <source>{controller}: {rule} — {detail}</source>
@@ -7399,6 +7451,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>instrument {serial}: calibration interval {days} day(s), but the register&apos;s records set {recorded}: changed after it was recorded</source>
         <translation>仪器 {serial}：校准间隔 {days} 天，但登记册的记录设定为 {recorded}：记录后被改动</translation>
+    </message>
+    <message>
+        <source>certificate {number}: {count} results files recorded, where a certificate has one (recorded at its issue): all but the first were added after issue</source>
+        <translation>证书 {number}：记录了 {count} 个结果文件，而一份证书只有一个（在签发时记录）：除第一个外其余都是签发后添加的</translation>
     </message>
     <message>
         <source>record {number}: marked &quot;{status}&quot; (superseded by {marked}), but the register&apos;s records say {by}</source>
@@ -9697,6 +9753,18 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>{flag}{out} 是{what}；未写入任何内容：请换一个文件名</translation>
     </message>
     <message>
+        <source>{flag}{out} is not a regular file (a pipe, a device or a socket); nothing was written: name a file</source>
+        <translation>{flag}{out} 不是普通文件（管道、设备或套接字）；未写出任何内容：请指定一个文件</translation>
+    </message>
+    <message>
+        <source>{flag}{out}: the name is longer than its folder allows ({limit} bytes); nothing was written: choose a shorter name</source>
+        <translation>{flag}{out}：名称长于其文件夹所允许的长度（{limit} 字节）；未写出任何内容：请选用较短的名称</translation>
+    </message>
+    <message>
+        <source>{flag}{out}: no file can be written in {folder} ({reason}); nothing was written</source>
+        <translation>{flag}{out}：无法在 {folder} 中写入文件（{reason}）；未写出任何内容</translation>
+    </message>
+    <message>
         <source>{flag} and {twin} name the same file ({out}); nothing was written</source>
         <translation>{flag} 和 {twin} 指向同一个文件（{out}）；未写入任何内容</translation>
     </message>
@@ -10733,6 +10801,10 @@ Replace it?</source>
         <translation>{folder} 中已有 {name}。
 
 替换它吗？</translation>
+    </message>
+    <message>
+        <source>{flag}{out} is {what}, as issued; an issued file is never replaced: nothing was written, choose another name</source>
+        <translation>{flag}{out} 是{what}（签发时的原样）；已签发的文件绝不被替换：未写出任何内容，请另选名称</translation>
     </message>
 </context>
 </TS>

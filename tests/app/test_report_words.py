@@ -286,7 +286,7 @@ def test_register_verify_names_the_kind_recorded(samples_dir, tmp_path, capsys, 
     lines = {}
     for name in ("positioning.pdf", "positioning.xlsx", "polygon.pdf", "polygon.xlsx"):
         assert main(["register", "verify", str(tmp_path / name), "--language", language]) == 0
-        lines[name] = capsys.readouterr().out.splitlines()[1]
+        lines[name] = _line_about(capsys.readouterr().out, tmp_path / name)
     p = tmp_path
     if language == "en":
         assert lines["positioning.pdf"].startswith(f"{p / 'positioning.pdf'}: test report {REPORT}, "
@@ -325,11 +325,17 @@ def test_register_verify_of_a_record_issued_before_kinds_were_recorded(tmp_path,
     assert main(["register", "show", number, "--pdf", str(tmp_path / "a1.pdf")]) == 0
     capsys.readouterr()
     assert main(["register", "verify", str(tmp_path / "a1.pdf")]) == 0
-    assert capsys.readouterr().out.splitlines()[1].startswith(
+    assert _line_about(capsys.readouterr().out, tmp_path / "a1.pdf").startswith(
         f"{tmp_path / 'a1.pdf'}: document {number}, issued ")
     assert main(["register", "verify", str(tmp_path / "r.csv")]) == 0
-    assert capsys.readouterr().out.splitlines()[1].startswith(
+    assert _line_about(capsys.readouterr().out, tmp_path / "r.csv").startswith(
         f"{tmp_path / 'r.csv'}: the results file of document {number}, recorded ")
+
+
+def _line_about(said: str, path) -> str:
+    """The line of ``register verify``'s output about the file ``path`` (the chain's lines
+    come first, their number not fixed)."""
+    return next(line for line in said.splitlines() if line.startswith(str(path)))
 
 
 def _certificate_sheet(document) -> dict[str, object]:
