@@ -157,6 +157,13 @@ def _unwrapped_deg(values, origin):
 
 #: reconnections the window tries in a row before it says the link is lost for good
 WINDOW_RETRIES = 12
+#: the most requests a second the window sends an instrument that is asked (a readout, a
+#: theodolite, a polled autocollimator), as ``capture --poll-rate``'s default: a take uses
+#: the latest reading, at most 50 ms old at 20 Hz (a hand on the foot switch is slower), and
+#: auto-take's dwell (1 s by default) sees 20 readings. Unlimited, a readout that answers at
+#: once was asked ~8.7 kHz: 2 M frames a morning in the raw record, a 66 MB project, and
+#: the window held at every autosave (#62 review F6)
+WINDOW_POLL_RATE_HZ = 20.0
 
 
 class ConnectDialog(QDialog):
@@ -492,6 +499,8 @@ class InstrumentLink:
         # the window rides out a link down ~15 s (0.2 s, 0.4 s, … between 12 tries): an
         # instrument restarted or a cable re-seated; 3 tries gave up after 1.2 s (#41)
         worker_options.setdefault("retries", WINDOW_RETRIES)
+        worker_options.setdefault("poll_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
+        worker_options.setdefault("request_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""
