@@ -71,12 +71,15 @@ class _AnalysisTask(QRunnable):
     GUI thread's edits do not reach; it goes back with the result)."""
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
-                 generation: int, signals: _TaskSignals, prepare, current, workers: Workers) -> None:
+                 generation: int, signals: _TaskSignals, prepare, current, workers: Workers,
+                 reading_keys: tuple[str, ...] = ()) -> None:
         super().__init__()
-        self._args = (kind, sheet, settings, generation, signals, prepare, current, workers)
+        self._args = (kind, sheet, settings, generation, signals, prepare, current, workers,
+                      reading_keys)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals, prepare, current, workers = self._args
+        kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys = \
+            self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
@@ -84,6 +87,11 @@ class _AnalysisTask(QRunnable):
                   cancellable(lambda: generation != current())):
                 checkpoint()
                 parsed = sheet.parse()
+                if reading_keys:
+                    # the rows at the end waiting for their reading, as in the GUI thread's
+                    # analysis (#62 review F8: while capturing, the plan's pre-filled row was
+                    # "3 cell(s) cannot be read")
+                    parsed = without_waiting_rows(parsed, reading_keys)[0]
                 result, error = _run_analysis(kind, parsed, settings)
                 checkpoint()
                 display = _prepare_display(prepare, result)
@@ -195,6 +203,9 @@ class WorkbenchPresenter(QObject):
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
+        keys = [c.key for c in kind.columns]
+        self.table_model.reading_columns = tuple(keys.index(k) for k in self._reading_keys()
+                                                 if k in keys)
         self.view.attach_table_model(self.table_model)
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
@@ -628,7 +639,8 @@ class WorkbenchPresenter(QObject):
             self.workers.start(
                 _AnalysisTask(self.kind, sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,
-                              self.workers))
+                              self.workers,
+                              self._reading_keys() if sheet.row_count <= PLAN_ROWS else ()))
             return
         parsed = self._without_waiting_rows(sheet.parse())
         settings = dict(self._settings)

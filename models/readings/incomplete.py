@@ -103,7 +103,9 @@ def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...]
                          ) -> tuple[ParsedReadings, int]:
     """The readings less the rows at the end that wait for their reading: their plan's or
     nominal step's cells filled (target, face, set), every cell of ``reading_keys`` blank.
-    Such a row is a point not yet taken, not a bad row. (readings, rows left out)."""
+    Such a row is a point not yet taken, not a bad row, and a cell of it still blank is not
+    a fault either (the polygon's deviation, filled at the take: #62 review F8); a cell typed
+    that cannot be read is. (readings, rows left out)."""
     if not reading_keys or (parsed.n == 0 and not parsed.errors):
         return parsed, 0
     in_parsed = {int(r): i for i, r in enumerate(parsed.row_index.tolist())}
@@ -113,7 +115,7 @@ def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...]
     waiting: set[int] = set()
     for row in sorted(set(in_parsed) | set(errors_of), reverse=True):
         errors = errors_of.get(row, [])
-        if any(e.column_key not in reading_keys or e.text.strip() for e in errors):
+        if any(e.text.strip() for e in errors):
             break  # a cell of its own is wrong: told as before
         i = in_parsed.get(row)
         if i is not None and not all(_blank(parsed.values[k][i]) for k in reading_keys
