@@ -1,18 +1,21 @@
 """#62 review, a day at the bench with two instruments on the polygon workbench: the
-window asks a readout at a bounded rate (F6), each instrument's take goes into its own
-column and a reading that cannot be placed is said (F5), a take far from the face the
-plan expects is warned of (F9), and the guidance headline stays in sight (F5)."""
+window asks a readout at a bounded rate (F6), the plan's row waiting for its take is not a
+bad row (F8), each instrument's take goes into its own column and a reading that cannot
+be placed is said (F5), a take far from the face the plan expects is warned of (F9), and
+the guidance headline stays in sight (F5)."""
 
 from __future__ import annotations
 
 import time
 
 import pytest
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QScrollArea
 
 from app.capture import panel as panel_module
 from tests.app.capture.window_steps import show_workbench as _show
 from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
+from widgets.readings_table_model import INVALID_BRUSH
 
 pytestmark = pytest.mark.slow  # a window and instruments: more than 0.4 s
 
@@ -58,9 +61,6 @@ def _take(panel, qtbot):
 def test_the_plans_waiting_row_is_not_a_bad_row(window, qtbot):
     """While capturing, the plan pre-fills the next row (face, set, direction): the result
     strip said "3 cell(s) cannot be read (row 8)" and its blank cells were red."""
-    from widgets.readings_table_model import INVALID_BRUSH
-    from PySide6.QtCore import Qt
-
     presenter = _polygon_plan(window)
     model = presenter.table_model
     keys = [c.key for c in model.sheet.columns]
