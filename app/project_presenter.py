@@ -43,6 +43,10 @@ log = logging.getLogger(__name__)
 
 AUTOSAVE_DELAY_MS = 3_000  # an edit is autosaved this soon (at most every 3 s while typing)
 AUTOSAVE_THREAD_ROWS = 50_000  # sheets larger than this are autosaved off the GUI thread …
+#: … and so is a raw capture of more frames than this (a day's capture, 2 M frames and
+#: 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of
+#: frames write in the GUI thread in well under the 10 ms a repaint may wait
+AUTOSAVE_THREAD_FRAMES = 20_000
 AUTOSAVE_DELAY_LARGE_MS = 20_000  # … and less often
 MAX_RECENT = 8
 RECENT_FILES_KEY = "recent_files"
@@ -173,9 +177,10 @@ class ProjectPresenter(QObject):
     def is_modified(self) -> bool:
         return any(p.is_modified for p in self.presenters)
 
-    def project(self) -> Project:
+    def project(self, raw: dict | None = None) -> Project:
+        """The project as it is now (``raw``: the raw capture, when already taken)."""
         return Project({p.kind.key: p.state() for p in self.presenters}, dict(self.metadata),
-                       self.raw_capture())
+                       self.raw_capture() if raw is None else raw)
 
     def apply_project(self, project: Project) -> None:
         self.project_replaced()
@@ -463,22 +468,24 @@ class ProjectPresenter(QObject):
             return
         # the project as it is now: a save from here on makes this autosave stale
         generation = self.recovery.generation
-        if self._rows() > AUTOSAVE_THREAD_ROWS:
-            # the raw capture too (it was left out: a project recovered from a large sheet's
-            # autosave had its readings and no frames, and its certificate no raw digest);
-            # its sessions are snapshots whose frames are encoded blocks, cheap to take here
+        # the raw capture's sessions are snapshots whose frames are encoded blocks, cheap to
+        # take here (a large sheet's autosave left them out once: a project recovered from it
+        # had its readings and no frames, and its certificate no raw digest)
+        raw = self.raw_capture()
+        frames = sum(len(s.get("frames", ())) for sessions in raw.values() for s in sessions)
+        if self._rows() > AUTOSAVE_THREAD_ROWS or frames > AUTOSAVE_THREAD_FRAMES:
             if self._autosave_thread is not None and self._autosave_thread.is_alive():
                 self.autosave_timer.start()  # the last one is still writing: try again soon
                 return
             project = self._with_pending(
                 Project({p.kind.key: p.state(deep=False) for p in self.presenters},
-                        self._autosaved_metadata(), self.raw_capture()), pending)
+                        self._autosaved_metadata(), raw), pending)
             self._autosave_thread = threading.Thread(
                 target=self._write_recovery_in_background, args=(project, generation),
                 daemon=True)
             self._autosave_thread.start()
         else:
-            project = self.project()
+            project = self.project(raw)
             project.metadata = self._autosaved_metadata()
             self._write_recovery(self._with_pending(project, pending), generation=generation)
 

@@ -79,7 +79,7 @@ def main() -> None:
         frame = window.frameGeometry()
         screen = (window.screen() or app.primaryScreen()).availableGeometry()
         inside = window.rect()
-        viewport = panel.widget().viewport()
+        viewport = panel.scroll.viewport()
         seen = QRect(viewport.mapTo(window, QPoint(0, 0)), viewport.size())
         hidden = []
         for control in panel.findChildren(QAbstractButton) + panel.findChildren(

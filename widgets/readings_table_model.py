@@ -5,7 +5,8 @@ from __future__ import annotations
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
 from PySide6.QtGui import QBrush, QColor, QUndoStack
 
-from models.readings.sheet import ReadingsSheet
+from models.capture.take_cells import waiting_row
+from models.readings.sheet import NumericRows, ReadingsSheet
 from widgets.i18n import declared, on_language_change, tr, translated
 from widgets.table_commands import (
     InsertRowsCommand,
@@ -51,7 +52,38 @@ class ReadingsTableModel(QAbstractTableModel):
         #: why a cell's text cannot be read, by (column, text): a column's parse depends on
         #: the text alone, and every paint asks it of every visible cell
         self._reasons: dict[tuple[int, str], str | None] = {}
+        #: the columns of a reading (the workbench's plan_reading_keys): the rows at the end
+        #: with their point's cells filled and these blank wait for their reading (the
+        #: plan's next point, pre-filled), and their blank cells are not red (#62 review F8:
+        #: every capture showed its next row as cells that cannot be read)
+        self.reading_columns: tuple[int, ...] = ()
+        self._waiting_from: int | None = None  # the first of them (None: none)
+        self._waiting_known = False
+        self.sheet_changed.connect(self._forget_waiting)
         on_language_change(self, self._on_language_changed)
+
+    def _forget_waiting(self) -> None:
+        """The cells made or no longer waiting by a change repainted (their red)."""
+        before = self._waiting_from if self._waiting_known else None
+        self._waiting_known = False
+        after = self.waiting_from()
+        if before != after and self.sheet.row_count:
+            first = min(r for r in (before, after) if r is not None)
+            last = self.sheet.row_count - 1
+            if first <= last:
+                self.dataChanged.emit(self.index(first, 0),
+                                      self.index(last, self.sheet.column_count - 1),
+                                      [Qt.ItemDataRole.BackgroundRole,
+                                       Qt.ItemDataRole.ToolTipRole])
+
+    def waiting_from(self) -> int | None:
+        """The first of the rows at the end that wait for their reading (None: none)."""
+        if not self._waiting_known:
+            sheet = self.sheet
+            self._waiting_from = None if isinstance(sheet.rows, NumericRows) else waiting_row(
+                sheet.row_count, sheet.column_count, self.reading_columns, sheet.text)
+            self._waiting_known = True
+        return self._waiting_from
 
     def _on_language_changed(self) -> None:
         self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, self.sheet.column_count - 1)
@@ -93,10 +125,13 @@ class ReadingsTableModel(QAbstractTableModel):
 
     def cell_error(self, r: int, c: int) -> str | None:
         """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse
-        remembered by column and text (a blank row is fine, asked each time)."""
+        remembered by column and text (a blank row is fine, asked each time, and so is a
+        blank cell of a row waiting for its reading: :meth:`waiting_from`)."""
         if self.sheet.is_blank_row(r):
             return None
         key = (c, self.sheet.text(r, c))
+        if not key[1].strip() and (waiting := self.waiting_from()) is not None and r >= waiting:
+            return None  # a row waiting for its reading: a cell not filled yet
         try:
             return self._reasons[key]
         except KeyError:

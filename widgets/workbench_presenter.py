@@ -71,12 +71,15 @@ class _AnalysisTask(QRunnable):
     GUI thread's edits do not reach; it goes back with the result)."""
 
     def __init__(self, kind: Workbench, sheet: ReadingsSheet, settings: dict[str, Any],
-                 generation: int, signals: _TaskSignals, prepare, current, workers: Workers) -> None:
+                 generation: int, signals: _TaskSignals, prepare, current, workers: Workers,
+                 reading_keys: tuple[str, ...] = ()) -> None:
         super().__init__()
-        self._args = (kind, sheet, settings, generation, signals, prepare, current, workers)
+        self._args = (kind, sheet, settings, generation, signals, prepare, current, workers,
+                      reading_keys)
 
     def run(self) -> None:
-        kind, sheet, settings, generation, signals, prepare, current, workers = self._args
+        kind, sheet, settings, generation, signals, prepare, current, workers, reading_keys = \
+            self._args
         # a newer edit (come while this waited in the queue or ran) cancels this analysis at
         # its next checkpoint: the newer one has its thread and the interpreter to itself
         try:
@@ -84,6 +87,11 @@ class _AnalysisTask(QRunnable):
                   cancellable(lambda: generation != current())):
                 checkpoint()
                 parsed = sheet.parse()
+                if reading_keys:
+                    # the rows at the end waiting for their reading, as in the GUI thread's
+                    # analysis (#62 review F8: while capturing, the plan's pre-filled row was
+                    # "3 cell(s) cannot be read")
+                    parsed = _without_waiting_rows(parsed, sheet, reading_keys)
                 result, error = _run_analysis(kind, parsed, settings)
                 checkpoint()
                 display = _prepare_display(prepare, result)
@@ -92,6 +100,21 @@ class _AnalysisTask(QRunnable):
             return
         emit_if_alive(signals.finished, generation, (parsed, result, display, settings, sheet),
                       error)
+
+
+def _without_waiting_rows(parsed: ParsedReadings, sheet: ReadingsSheet,
+                          reading_keys: tuple[str, ...]) -> ParsedReadings:
+    """``parsed`` less the rows at the end of ``sheet`` waiting for their reading
+    (models/readings/incomplete.py), their reading cells' text blank."""
+    keys = [c.key for c in sheet.columns]
+    columns = [keys.index(k) for k in reading_keys if k in keys]
+    if isinstance(sheet.rows, NumericRows) or not columns:
+        return without_waiting_rows(parsed, reading_keys)[0]
+
+    def blank_reading(row: int) -> bool:
+        return all(not sheet.text(row, c).strip() for c in columns)
+
+    return without_waiting_rows(parsed, reading_keys, blank_reading)[0]
 
 
 def _prepare_display(prepare, result: Any) -> Any:
@@ -195,6 +218,9 @@ class WorkbenchPresenter(QObject):
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
         self.table_model = ReadingsTableModel(self.sheet, self.undo_stack, self)
+        keys = [c.key for c in kind.columns]
+        self.table_model.reading_columns = tuple(keys.index(k) for k in self._reading_keys()
+                                                 if k in keys)
         self.view.attach_table_model(self.table_model)
         if hasattr(getattr(self.view, "table", None), "own_layout"):  # a mock view has none
             self.view.table.own_layout = kind.rows_from_table
@@ -591,10 +617,12 @@ class WorkbenchPresenter(QObject):
         reading = [keys.index(k) for k in self._reading_keys() if k in keys]
         return waiting_row(sheet.row_count, len(keys), reading, sheet.text)
 
-    def _without_waiting_rows(self, parsed: ParsedReadings) -> ParsedReadings:
+    def _without_waiting_rows(self, parsed: ParsedReadings,
+                              sheet: ReadingsSheet | None = None) -> ParsedReadings:
         """The readings less the rows at the end that wait for their reading (the plan's or
         the nominal step's cells filled, no reading yet): a row waiting is not a bad row."""
-        return without_waiting_rows(parsed, self._reading_keys())[0]
+        return _without_waiting_rows(parsed, self.sheet if sheet is None else sheet,
+                                     self._reading_keys())
 
     # -- analysis -----------------------------------------------------------
     def schedule_refresh(self) -> None:
@@ -628,9 +656,10 @@ class WorkbenchPresenter(QObject):
             self.workers.start(
                 _AnalysisTask(self.kind, sheet, dict(self._settings), self._generation,
                               self._signals, self.prepare_display, lambda: self._generation,
-                              self.workers))
+                              self.workers,
+                              self._reading_keys() if sheet.row_count <= PLAN_ROWS else ()))
             return
-        parsed = self._without_waiting_rows(sheet.parse())
+        parsed = self._without_waiting_rows(sheet.parse(), sheet)
         settings = dict(self._settings)
         result, error = _run_analysis(self.kind, parsed, settings)
         self._shown_generation = self._generation

@@ -29,7 +29,10 @@ typed once per face).
 
 Columns: ``ac_x_arcsec``/``ac_y_arcsec`` from an autocollimator, ``azimuth_deg`` and the
 vertical column from a theodolite; a readout's single value goes to the column chosen for
-it (by default the current cell's).
+it (by default the workbench's encoder, reference or θ column: ``READOUT_COLUMNS``; or
+the current cell's). A connected instrument whose reading a take cannot place (no column of
+its own) is said in the panel, never dropped without a word; a reading far from the one the
+plan expects (more than half the pitch between faces) is warned of and kept.
 
 *Auto-take* feeds every reading of the first instrument to a stability gate
 (models/capture/stability.py): when the output has stayed within the window for the
@@ -88,6 +91,7 @@ from PySide6.QtWidgets import (
 from app.capture.instruments import INSTRUMENTS
 from app.capture.worker import CaptureWorker, Fault, Reading
 from models.capture.allan import allan_deviation, last_even_run
+from models.capture.guidance import degrees_text
 from models.capture.raw_record import FRAMES_PER_BLOCK, FrameBlocks, frame_text
 from models.capture.stability import StabilityGate, UnwrappedAngles
 from models.capture.take_cells import (
@@ -126,6 +130,11 @@ BOTTOM_PANEL_MAX_HEIGHT = 200
 PLOT_TABS_MIN_HEIGHT = 232
 #: Qt's "no maximum" of a widget's size
 QWIDGETSIZE_MAX = (1 << 24) - 1
+#: the columns a readout goes to unless another is chosen, the first the workbench has: the
+#: encoder's (polygon, cross-calibration), the reference's (positioning), θ (theodolite,
+#: fringe). "The current cell" by default took nothing when the cursor was on another
+#: instrument's column (#62 review F5: a blank encoder cell, no take in the raw record)
+READOUT_COLUMNS = ("encoder_deg", "measured", "theta_deg")
 #: a nominal the plan writes (the encoder at the face) is written to this (″)
 NOMINAL_RESOLUTION_ARCSEC = 0.01
 #: settings keys (per instrument kind)
@@ -155,8 +164,25 @@ def _unwrapped_deg(values, origin):
     return origin + (values - origin + 180.0) % 360.0 - 180.0
 
 
+def _without_port(reason: str, port: str) -> str:
+    """A fault's reason less the port it starts with, said once already beside it
+    ("Connected: tcp://…:47001 (reconnected after: no answer for 1 s)"): the port twice
+    made the status 3–4 lines longer at a side of a 1280×720 screen (#62 review)."""
+    for colon in (": ", "：", ":"):
+        if reason.startswith(port + colon):
+            return reason[len(port) + len(colon):].lstrip()
+    return reason
+
+
 #: reconnections the window tries in a row before it says the link is lost for good
 WINDOW_RETRIES = 12
+#: the most requests a second the window sends an instrument that is asked (a readout, a
+#: theodolite, a polled autocollimator), as ``capture --poll-rate``'s default: a take uses
+#: the latest reading, at most 50 ms old at 20 Hz (a hand on the foot switch is slower), and
+#: auto-take's dwell (1 s by default) sees 20 readings. Unlimited, a readout that answers at
+#: once was asked ~8.7 kHz: 2 M frames a morning in the raw record, a 66 MB project, and
+#: the window held at every autosave (#62 review F6)
+WINDOW_POLL_RATE_HZ = 20.0
 
 
 class ConnectDialog(QDialog):
@@ -458,7 +484,8 @@ class InstrumentLink:
                                           float(self.resolution.currentData()))
 
     def fill_columns(self, columns) -> None:
-        """The workbench's columns a readout can go to."""
+        """The workbench's columns a readout can go to; the one chosen stays (the current
+        cell too), else the workbench's readout column (:data:`READOUT_COLUMNS`)."""
         chosen = self.column.currentData()
         self.column.blockSignals(True)
         try:
@@ -467,7 +494,11 @@ class InstrumentLink:
             for column in columns:
                 self.column.addItem(declared(column.header), column.key)
             self.resolution.setItemText(0, tr("as sent"))  # in the language chosen now
-            self.column.setCurrentIndex(max(0, self.column.findData(chosen)))
+            index = self.column.findData(chosen) if chosen is not None else -1
+            if index < 0:
+                keys = [column.key for column in columns]
+                index = next((self.column.findData(k) for k in READOUT_COLUMNS if k in keys), 0)
+            self.column.setCurrentIndex(index)
         finally:
             self.column.blockSignals(False)
 
@@ -492,6 +523,8 @@ class InstrumentLink:
         # the window rides out a link down ~15 s (0.2 s, 0.4 s, … between 12 tries): an
         # instrument restarted or a cable re-seated; 3 tries gave up after 1.2 s (#41)
         worker_options.setdefault("retries", WINDOW_RETRIES)
+        worker_options.setdefault("poll_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
+        worker_options.setdefault("request_interval_s", 1.0 / WINDOW_POLL_RATE_HZ)
         self.worker = CaptureWorker(port, INSTRUMENTS[kind](), baud, **worker_options).start()
         self.session = _Session(self.panel.window_.current.kind.key, kind, self.worker)
         self.last_fault = ""
@@ -638,7 +671,8 @@ class CapturePanel(QDockWidget):
             self.body_layout.addWidget(section, 0)
         self._sections = sections
         self.body_layout.addStretch(1)
-        self.guide = QLabel("")
+        self.guide = _ShownWhenSaid("")
+        self.guide.setVisible(False)
         self.guide.setStyleSheet("font-size: 12pt; font-weight: bold; color: #0b5394;")
         self.stability = QLabel("")
         self.allan = QLabel("")
@@ -683,10 +717,18 @@ class CapturePanel(QDockWidget):
         for widget in (self.guide, self.stability, self.allan, self.auto_state, self.take_note):
             widget.setWordWrap(True)
             widget.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
-        columns[0].addWidget(self.guide)
-        # why a take was refused, beside the guidance (under the Take button it pushed the
-        # auto-take's window and dwell out of a bottom-docked panel's sight)
-        columns[0].addWidget(self.take_note)
+        # the guidance and why a take was refused (or what it could not place), above the
+        # part that scrolls when docked at a side: scrolled down to reach "Readout into", the
+        # panel cut "Next: go to face 8" for the rest of a morning (#62 review). At the bottom
+        # they are the first of the parts side by side (_docked). Beside the guidance, not
+        # under the Take button: there it pushed the auto-take's window and dwell out of a
+        # bottom-docked panel's sight
+        self._guide_column = columns[0]
+        self.header = QWidget()
+        self.header_layout = QVBoxLayout(self.header)
+        self.header_layout.setContentsMargins(4, 4, 4, 0)
+        self.header_layout.addWidget(self.guide)
+        self.header_layout.addWidget(self.take_note)
         columns[1].addWidget(self.links[0].box)
         columns[2].addWidget(self.stability)
         columns[2].addWidget(self.allan)
@@ -708,7 +750,14 @@ class CapturePanel(QDockWidget):
         body.setMinimumWidth(PANEL_MIN_WIDTH - 20)
         scroll.setMinimumWidth(PANEL_MIN_WIDTH)
         self.body = body
-        self.setWidget(scroll)
+        self.scroll = scroll
+        outer = QWidget()
+        outer_layout = QVBoxLayout(outer)
+        outer_layout.setContentsMargins(0, 0, 0, 0)
+        outer_layout.setSpacing(0)
+        outer_layout.addWidget(self.header)
+        outer_layout.addWidget(scroll, 1)
+        self.setWidget(outer)
         self.timer = QTimer(self)
         self.timer.setInterval(20)
         self.timer.timeout.connect(self.drain)
@@ -732,6 +781,12 @@ class CapturePanel(QDockWidget):
         # at the bottom the panel is low (its parts side by side fit): the readings table
         # and the plot above it keep their height on a 720 px screen
         self.setMaximumHeight(BOTTOM_PANEL_MAX_HEIGHT if bottom else QWIDGETSIZE_MAX)
+        # the guidance: the first part at the bottom (a row above the parts would take
+        # height from a low panel), fixed above the scrolling parts at a side
+        home = self._guide_column if bottom else self.header_layout
+        for index, widget in enumerate((self.guide, self.take_note)):
+            home.insertWidget(index, widget)
+        self.header.setVisible(not bottom)
         self._keep_plots()
 
     def _keep_plots(self, *_args) -> None:
@@ -1242,7 +1297,8 @@ class CapturePanel(QDockWidget):
             link.status.setText(tr("Connected: {port}").format(port=worker.port)
                                 if not link.last_fault else
                                 tr("Connected: {port} (reconnected after: {reason})").format(
-                                    port=worker.port, reason=link.last_fault))
+                                    port=worker.port,
+                                    reason=_without_port(link.last_fault, worker.port)))
             if link.lost:
                 link.mark_lost(False)
             self._links_changed()
@@ -1390,10 +1446,15 @@ class CapturePanel(QDockWidget):
         targets = [t for t in targets if t[0].slot in taking]
         if not targets:
             if taking:
-                self.status.setText(tr("This workbench has no column for this instrument's "
-                                       "reading: choose a cell first (readout) or another "
-                                       "workbench"))
+                # in the panel, beside the guidance (the status line it was written to was
+                # rewritten by the next reading)
+                self.take_note.setText(tr("Not taken: this workbench has no column for this "
+                                          "instrument's reading: choose a column in “Readout "
+                                          "into” (readout) or another workbench"))
             return ""
+        placed = {link.slot for link, _, _ in targets}
+        notes = [self._not_placed(link) for link in self.links
+                 if link.slot in taking and link.slot not in placed]
         place = self._placement(presenter)
         row = self.target_row(presenter, place)
         changes = []
@@ -1408,6 +1469,7 @@ class CapturePanel(QDockWidget):
             # the step the cell was rounded to: within half of it the cell is as captured
             steps[link.slot] = max(steps.get(link.slot, 0.0), step)
         self.update_guide()
+        notes += self._off_the_plan(sheet, row, targets, taking)
         filled = {c for _, c, _ in changes}
         if place is not None and place.row == row:  # the plan's cells, where blank
             for key, text in place.cells.items():
@@ -1465,10 +1527,49 @@ class CapturePanel(QDockWidget):
             link.taken_frame = max(link.taken_frame, take[2] + session.first)
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
-        self.take_note.setText("")
+        # what the take could not place, or took far from where the plan expects it: said
+        # until the next take (the reading is kept)
+        self.take_note.setText("\n".join(notes))
         table.next_row(row)
         self.update_guide()
         return f"row {row + 1}"
+
+    def _not_placed(self, link: InstrumentLink) -> str:
+        """Why a take holds no reading of ``link`` (connected, with a reading to give)."""
+        if link.kind == "readout":
+            return tr("{instrument}: its reading was not taken: no column of its own to go to "
+                      "(the current cell's is another instrument's, or there is none) — "
+                      "choose one in “Readout into”").format(instrument=link.name)
+        return tr("{instrument}: its reading was not taken: this workbench has no column for "
+                  "it").format(instrument=link.name)
+
+    def _off_the_plan(self, sheet, row: int, targets, taking) -> list[str]:
+        """A warning per angle a take reads more than half the pitch between the plan's
+        points away from the one the plan expects there (:attr:`next_reading`'s nominal:
+        the encoder at the face) — the table at another face (#62 review F9: 300° taken
+        where 270° was expected, without a word). The reading is kept."""
+        step = self.next_reading
+        if step is None or step.pitch_deg <= 0.0 or not step.nominal:
+            return []
+        keys = [c.key for c in sheet.columns]
+        out = []
+        for link, i, key in targets:
+            expected = step.nominal.get(key)
+            got, unit, _ = taking[link.slot]
+            if expected is None or unit != "deg" or i >= len(got):
+                continue
+            off = (float(got[i]) - expected + 180.0) % 360.0 - 180.0
+            if abs(off) <= step.pitch_deg / 2.0:
+                continue
+            out.append(tr("Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the "
+                          "plan expects at face {face} (more than half the {pitch}° between "
+                          "faces): check the table's position. The reading is kept; undo the "
+                          "take if it is wrong").format(
+                row=row + 1, column=declared(sheet.columns[keys.index(key)].header),
+                face=step.fill.get("position", "?"),
+                value=f"{float(got[i]) % 360.0:.4f}", off=f"{off:+.1f}",
+                expected=degrees_text(expected), pitch=degrees_text(step.pitch_deg)))
+        return out
 
     @staticmethod
     def _widen(table, changes) -> None:

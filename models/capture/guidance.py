@@ -34,6 +34,10 @@ class NextReading:
     #: the steps of 360°/N), written into a blank cell at a take when no instrument fills
     #: that column; empty where the workbench does not know it
     nominal: dict[str, float] = field(default_factory=dict)
+    #: the angle between two neighbouring points (360°/N of the polygon's N faces; 0: not
+    #: known): a reading more than half of it from its :attr:`nominal` is nearer another
+    #: point than the one the plan expects (the window warns of it at the take)
+    pitch_deg: float = 0.0
 
     @property
     def new_point(self) -> bool:

@@ -68,7 +68,7 @@ def crosscal_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str]
     def said(text, mounting: int, face: int, k: int | None = None) -> NextReading:
         nominal = {} if k is None or start is None else {"encoder_deg": expected(k)}
         return NextReading(text, {"mounting": str(mounting), "position": str(face)},
-                           nominal=nominal)
+                           nominal=nominal, pitch_deg=360.0 / n if n else 0.0)
 
     def expected(k: int) -> float:
         return (start + sense * k * 360.0 / n) % 360.0

@@ -57,6 +57,7 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
     n = max(1, int(settings.get("readings_per_point", 1) or 1))
     groups = point_groups(used_rows(rows), KEYS)
     uses_sets = any(g[0][1] for g in groups)
+    count = 0  # N, once known (below): the pitch said with an encoder figure
 
     def said(text, face: int, set_no: int, reading: int,
              encoder: float | None = None) -> NextReading:
@@ -66,7 +67,7 @@ def polygon_guide(rows: Sequence[Mapping[str, str]], current: Mapping[str, str],
         if uses_sets or set_no > 1:
             fill["set"] = str(set_no)
         nominal = {} if encoder is None else {"encoder_deg": float(encoder) % 360.0}
-        return NextReading(text, fill, reading, n, nominal)
+        return NextReading(text, fill, reading, n, nominal, 360.0 / count if count else 0.0)
 
     face = _int(groups[-1][0][0]) if groups else None
     if face is None:

@@ -10,7 +10,7 @@ gap in the middle is refused by the analysis as before.
 
 from __future__ import annotations
 
-from collections.abc import Hashable, Sequence
+from collections.abc import Callable, Hashable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -99,11 +99,17 @@ def _blank(value: object) -> bool:
     return not str(value).strip()
 
 
-def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...]
+def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...],
+                         blank_reading: Callable[[int], bool] | None = None
                          ) -> tuple[ParsedReadings, int]:
     """The readings less the rows at the end that wait for their reading: their plan's or
     nominal step's cells filled (target, face, set), every cell of ``reading_keys`` blank.
-    Such a row is a point not yet taken, not a bad row. (readings, rows left out)."""
+    Such a row is a point not yet taken, not a bad row. (readings, rows left out).
+
+    ``blank_reading(row)``: whether the row's cells of ``reading_keys`` are all blank (its
+    text); with it, a blank cell of a waiting row that is no reading's (the polygon's
+    deviation, filled at the take) does not make it a bad row either (#62 review F8). A
+    cell typed that cannot be read always does."""
     if not reading_keys or (parsed.n == 0 and not parsed.errors):
         return parsed, 0
     in_parsed = {int(r): i for i, r in enumerate(parsed.row_index.tolist())}
@@ -113,7 +119,12 @@ def without_waiting_rows(parsed: ParsedReadings, reading_keys: tuple[str, ...]
     waiting: set[int] = set()
     for row in sorted(set(in_parsed) | set(errors_of), reverse=True):
         errors = errors_of.get(row, [])
-        if any(e.column_key not in reading_keys or e.text.strip() for e in errors):
+        if any(e.text.strip() for e in errors):
+            break  # a cell of its own is wrong: told as before
+        if blank_reading is not None:
+            if not blank_reading(row):
+                break  # it has a reading
+        elif any(e.column_key not in reading_keys for e in errors):
             break  # a cell of its own is wrong: told as before
         i = in_parsed.get(row)
         if i is not None and not all(_blank(parsed.values[k][i]) for k in reading_keys
