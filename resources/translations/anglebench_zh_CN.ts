@@ -1755,7 +1755,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -3795,7 +3795,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Row {row}, {header} ({key}): {reason}</source>
-        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell</extracomment>
+        <extracomment>the roles :meth:`ReadingsTableModel.data` answers; the view asks about ten per cell at each paint and column fit, and the others are turned away before any work (a capture&apos;s take re-measures the columns, and this is most of its cost) cells whose captured reading was edited since, with what to say of each (models/capture/edits.py): drawn apart, the text in their tooltip the capture&apos;s takes of this workbench (models/capture/take_rows.TakeRows, set by the window): every command that moves rows moves them, before the sheet is said changed (review 61 F5: a row deleted above captured readings made them all look edited, with other rows&apos; values, on the certificate) why a cell&apos;s text cannot be read, by (column, text): a column&apos;s parse depends on the text alone, and every paint asks it of every visible cell the columns of a reading (the workbench&apos;s plan_reading_keys): the rows at the end with their point&apos;s cells filled and these blank wait for their reading (the plan&apos;s next point, pre-filled), and their blank cells are not red (#62 review F8: every capture showed its next row as cells that cannot be read)</extracomment>
         <translation>第 {row} 行，{header}（{key}）：{reason}</translation>
     </message>
     <message>
@@ -8229,7 +8229,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Autocollimator (ELCOMAT kind)</source>
-        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
+        <extracomment>the key of Take reading (a foot switch is set to send it) the stability shown is the spread of the frames of the last second how often the guidance is worked out again while connected (seconds of frames) the longest a timer tick spends taking in readings (the window stays responsive) the live readout&apos;s texts are redrawn at most this often (a 250 Hz stream would otherwise repaint the panel at every 20 ms tick); the newest reading is always shown a value not refreshed for this long is greyed and marked &quot;link lost&quot; the panel&apos;s narrowest: it scrolls rather than widening the window the panel&apos;s highest when docked at the bottom (its parts side by side fit in it) the plot tabs&apos; lowest (their tab bar and ~200 px of plot) while the panel is at the bottom Qt&apos;s &quot;no maximum&quot; of a widget&apos;s size the columns a readout goes to unless another is chosen, the first the workbench has: the encoder&apos;s (polygon, cross-calibration), the reference&apos;s (positioning), θ (theodolite, fringe). &quot;The current cell&quot; by default took nothing when the cursor was on another instrument&apos;s column (#62 review F5: a blank encoder cell, no take in the raw record) a nominal the plan writes (the encoder at the face) is written to this (″) settings keys (per instrument kind) the resolution an instrument is given until one is chosen (arcseconds; 0: as sent) the choices of resolution (arcseconds), with their names</extracomment>
         <translation>自准直仪（ELCOMAT 类）</translation>
     </message>
     <message>
@@ -8238,7 +8238,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     </message>
     <message>
         <source>Connect to an instrument</source>
-        <extracomment>reconnections the window tries in a row before it says the link is lost for good</extracomment>
+        <extracomment>reconnections the window tries in a row before it says the link is lost for good the most requests a second the window sends an instrument that is asked (a readout, a theodolite, a polled autocollimator), as ``capture --poll-rate``&apos;s default: a take uses the latest reading, at most 50 ms old at 20 Hz (a hand on the foot switch is slower), and auto-take&apos;s dwell (1 s by default) sees 20 readings. Unlimited, a readout that answers at once was asked ~8.7 kHz: 2 M frames a morning in the raw record, a 66 MB project, and the window held at every autosave (#62 review F6)</extracomment>
         <translation>连接仪器</translation>
     </message>
     <message>
@@ -8357,9 +8357,25 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <translation>最近一秒内的离散：{spread}{unit}</translation>
     </message>
     <message>
+        <source>{instrument}: its reading was not taken: no column of its own to go to (the current cell&apos;s is another instrument&apos;s, or there is none) — choose one in “Readout into”</source>
+        <translation>{instrument}：其读数未取用：没有属于它的列可填（当前单元格所在列属于另一台仪器，或没有当前单元格）——请在“数显表读数填入”中选择一列</translation>
+    </message>
+    <message>
+        <source>{instrument}: its reading was not taken: this workbench has no column for it</source>
+        <translation>{instrument}：其读数未取用：此工作台没有它的列</translation>
+    </message>
+    <message>
+        <source>Row {row}: {column} {value}° is {off}° from the ≈ {expected}° the plan expects at face {face} (more than half the {pitch}° between faces): check the table&apos;s position. The reading is kept; undo the take if it is wrong</source>
+        <translation>第 {row} 行：{column} {value}° 与计划在第 {face} 面预期的 ≈ {expected}° 相差 {off}°（超过相邻两面间隔 {pitch}° 的一半）：请检查转台位置。读数已保留；如有误，请撤销此次取数</translation>
+    </message>
+    <message>
         <source>Take reading (F9)</source>
         <extracomment>finished sessions per workbench (stored form) rows filled by Take reading or auto-take: (workbench, row, values of the first instrument at full precision) per workbench, the columns an instrument has filled or was set to fill: the plan&apos;s nominal is never written there (#60: a readout&apos;s link gave up and the plan&apos;s expected encoder value went into its column as if read)</extracomment>
         <translation>取读数 (F9)</translation>
+    </message>
+    <message>
+        <source>Not taken: this workbench has no column for this instrument&apos;s reading: choose a column in “Readout into” (readout) or another workbench</source>
+        <translation>未取数：此工作台没有该仪器读数的列：请在“数显表读数填入”中选择一列（数显表），或换一个工作台</translation>
     </message>
     <message>
         <source>Take reading (row {row})</source>
@@ -8388,10 +8404,6 @@ Issue a certificate on this result anyway? Only if you have checked the readings
     <message>
         <source>Not taken: no new reading from {instrument} since the last take</source>
         <translation>未取数：自上次取数以来{instrument}没有新的读数</translation>
-    </message>
-    <message>
-        <source>This workbench has no column for this instrument&apos;s reading: choose a cell first (readout) or another workbench</source>
-        <translation>此工作台没有该仪器读数的列：请先选择一个单元格（数显表），或换一个工作台</translation>
     </message>
     <message>
         <source>autocollimator (ELCOMAT kind), theodolite (Leica GeoCOM), readout (one line per reading) or signals (a sin/cos stream, u_sin,u_cos a line)</source>
@@ -8504,7 +8516,7 @@ Issue a certificate on this result anyway? Only if you have checked the readings
         <source>{port}: no answer for {seconds} s</source>
         <extracomment>the default baud rate of a serial ADC stream the index (since the worker started) of the block&apos;s first line seconds since the worker started when the block arrived (each of its lines) the lines as sent, and per line whether it became a sample the samples (V), in the order of the lines that gave them lines kept and not read that were not refused (a connection&apos;s first line: it may be the rest of a sample begun before the connection) lines framed, samples read and lines refused since the start
 ----------
-seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests is asked again when it answers) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
+seconds since the worker started, when the frame&apos;s last byte arrived the instrument&apos;s line as it sent it its index among the lines the worker kept since the start (read back with :meth:`CaptureWorker.lines`) a :class:`models.messages.Message`: English as a ``str``, translatable how long a request waits for its reply before it counts as a fault (default: the silence); the next request waits for the reply or this the least time between two single-shot requests to a streaming instrument that is polled (an instrument that only answers requests: :attr:`request_interval_s`) the least time between two requests to an instrument that only answers requests (a readout, a theodolite): with none, one that answers at once is asked again at once (#62 review: a readout polled at ~8.7 kHz, 2 M frames in a morning&apos;s record) requests sent, reply timeouts, lines found in a serial port&apos;s buffer at connection requests numbered over the worker&apos;s whole life, not per connection: a late reply to the last connection&apos;s request 1 would otherwise match this one&apos;s request 1 whether a connection of this worker has read a streamed frame the instrument did not stream when asked to and is read by single-shot requests lines refused (noise, a wrong baud rate, an invalid axis, an error reply) the lines the instrument sent that are still in memory, as sent: (seconds since the start, the line, whether it became a reading); appended by the worker thread only. Read them with :meth:`lines` (indices since the start, under the lock): lines before ``raw_first`` have been dropped the index (since the start) of ``raw[0]``: lines a consumer has taken (:meth:`take_raw`) beyond ``raw_cap``, or said it no longer needs (:meth:`release`), are dropped from memory when the worker started (UTC, ISO 8601): the raw frames&apos; times count from it</extracomment>
         <translation>{port}：{seconds} 秒无应答</translation>
     </message>
     <message>
