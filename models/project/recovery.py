@@ -28,19 +28,51 @@ except ImportError:  # pragma: no cover - Windows
 __all__ = ["RecoveryStore"]
 
 STALE_TEMP_SECONDS = 600
+#: Windows: a process is asked after through its handle (os.kill would end it)
+_WINDOWS = os.name == "nt"
+
+
+def _windows_process_alive(pid: int) -> bool:  # pragma: no cover - Windows only
+    """Whether process ``pid`` runs (OpenProcess + GetExitCodeProcess): on Windows
+    ``os.kill(pid, 0)`` is no test, it ends the process (TerminateProcess)."""
+    import ctypes
+
+    kernel32 = ctypes.windll.kernel32  # type: ignore[attr-defined]
+    handle = kernel32.OpenProcess(0x1000, False, pid)  # PROCESS_QUERY_LIMITED_INFORMATION
+    if not handle:
+        return kernel32.GetLastError() == 5  # access denied: it exists, someone else's
+    try:
+        code = ctypes.c_ulong()
+        if not kernel32.GetExitCodeProcess(handle, ctypes.byref(code)):
+            return True  # cannot tell: take it as running (never offer a live window's work)
+        return code.value == 259  # STILL_ACTIVE
+    finally:
+        kernel32.CloseHandle(handle)
+
+
+def _process_alive(pid: int) -> bool:
+    """Whether process ``pid`` runs, without touching it."""
+    if _WINDOWS:
+        return _windows_process_alive(pid)
+    try:
+        os.kill(pid, 0)  # POSIX: signal 0 only checks
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True  # it exists, another user's
+    return True
 
 
 def _lock_is_held(lock_path: Path) -> bool:
     """Whether a live window holds ``lock_path``."""
     if not lock_path.exists():
         return False
-    if fcntl is None:  # pragma: no cover - Windows: the PID written in the file
+    if fcntl is None:  # Windows: the PID written in the file
         try:
             pid = int(lock_path.read_text().split()[0])
-            os.kill(pid, 0)
         except (OSError, ValueError, IndexError):
             return False
-        return True
+        return _process_alive(pid)
     try:
         fd = os.open(lock_path, os.O_RDWR)
     except OSError:

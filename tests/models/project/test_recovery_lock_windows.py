@@ -14,8 +14,9 @@ import models.project.recovery as recovery
 
 @pytest.fixture
 def windows(monkeypatch):
-    """recovery as on Windows (no fcntl, os.name "nt"), whose process table says
-    ``alive``; os.kill must never be called."""
+    """recovery as on Windows (no fcntl, its Windows switch on: os.name itself is left
+    alone, the test process runs on it), whose process table says ``alive``; os.kill must
+    never be called."""
     alive: dict[int, bool] = {}
 
     def no_kill(pid, sig):  # pragma: no cover - the test fails when it is called
@@ -23,7 +24,7 @@ def windows(monkeypatch):
 
     monkeypatch.setattr(recovery, "fcntl", None)
     monkeypatch.setattr(os, "kill", no_kill)
-    monkeypatch.setattr(os, "name", "nt")
+    monkeypatch.setattr(recovery, "_WINDOWS", True)
     monkeypatch.setattr(recovery, "_windows_process_alive", lambda pid: alive.get(pid, False))
     return alive
 
