@@ -205,14 +205,14 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     for session in sessions:
         fixed = all(column is not None for _, column in columns_of(session["instrument"]))
         for stored in session["takes"]:
-            key = (session["instrument"], session["port"], session["started_utc"],
-                   int(stored[1]), int(stored[2]))
+            this = (session["instrument"], session["port"], session["started_utc"],
+                    int(stored[1]), int(stored[2]))
             if (by := superseded_by(stored)) is not None:
                 superseding.add(by)
             elif stored[0] >= 0 and fixed:
-                if latest.get((stored[0], key[0]), key) != key:
-                    superseding.add(key)
-                latest[(stored[0], key[0])] = key
+                if latest.get((stored[0], this[0]), this) != this:
+                    superseding.add(this)
+                latest[(stored[0], this[0])] = this
     # said apart from the edits: a deleted row's number is the one it had then, and
     # another row may hold that number now
     unchecked: list[EditedReading] = []

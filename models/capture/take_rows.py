@@ -28,7 +28,7 @@ takes its operation detached, whatever copies of the sessions were made in betwe
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import Any, cast
 
 __all__ = ["CHOSEN_CELL", "REPLACED", "UNDONE", "TakeRows", "deleted_at", "deleted_row", "session_takes",
            "superseded_by", "take_key"]
@@ -144,7 +144,7 @@ class TakeRows:
                     theirs is not None and mine is not None and not theirs <= mine:
                 continue
             take[0] = REPLACED
-            take[3:] = [list(by)]
+            cast(list, take)[3:] = [list(by)]  # the newer take's key beside it
 
     def untaken(self, taken: Detached) -> None:
         """The undo of :meth:`taken`: these takes undone, and the takes they superseded back
