@@ -192,13 +192,14 @@ class ReadingsTableModel(QAbstractTableModel):
         return True
 
     def set_cells(self, changes: list[tuple[int, int, str]], label: str = "",
-                  takes: list | None = None) -> None:
+                  takes: list | None = None, columns: dict | None = None) -> None:
         """``takes``: ``(key, row)`` of a capture's takes whose reading these cells are: undone
-        and redone with them (widgets/table_commands.SetCellsCommand)."""
+        and redone with them (widgets/table_commands.SetCellsCommand); ``columns``: the
+        keys of the columns each wrote, by its key."""
         changes = [(r, c, t) for r, c, t in changes if 0 <= c < self.sheet.column_count]
         if changes:
             self.undo_stack.push(SetCellsCommand(self, changes, label or tr("Edit cells"),
-                                                 takes))
+                                                 takes, columns))
 
     def insert_rows(self, at: int, count: int = 1) -> None:
         at = max(0, min(at, self.sheet.row_count))

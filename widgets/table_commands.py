@@ -15,17 +15,23 @@ class SetCellsCommand(QUndoCommand):
     """Set many cells at once (typing one cell, pasting a block, clearing a selection).
 
     ``takes``: a capture's take, ``(key, row)`` of each take whose reading these cells are
-    (models/capture/take_rows.py). The take and its cells are one step: its undo undoes
-    the takes too (no cell claims them: a reading typed there later is not "edited after
-    capture", review 62 F4), its redo puts them back. The takes are added to their sessions
-    after the first redo (the push)."""
+    (models/capture/take_rows.py), ``columns`` the keys of the columns each wrote. The take
+    and its cells are one step: its undo undoes the takes too (no cell claims them: a
+    reading typed there later is not "edited after capture", review 62 F4), its redo puts
+    them back. A take supersedes an older take of its instrument in its row (cleared and
+    taken again, review 62 F1), and its undo gives the row back to that one. The takes are
+    in their sessions before the push, undone (-1), so that the first redo is every redo:
+    the sheet is said changed with the takes in their rows (the window marked the older
+    take's reading edited until the next change)."""
 
     def __init__(self, model, changes: list[tuple[int, int, str]], label: str,
-                 takes: list | None = None) -> None:
+                 takes: list | None = None, columns: dict | None = None) -> None:
         super().__init__(label)
         self._model = model
         self._changes = changes
         self._takes = list(takes or [])
+        #: the keys of the columns each take wrote, by its key (what it supersedes)
+        self._columns = dict(columns or {})
         self._old_rows = model.sheet.row_count
         self._old: list[tuple[int, int, str]] = []
 
@@ -33,12 +39,12 @@ class SetCellsCommand(QUndoCommand):
         self._old = [(r, c, self._model.sheet.text(r, c) if r < self._model.sheet.row_count else "")
                      for r, c, _ in self._changes]
         if self._takes:  # before the cells: the sheet is said changed with its takes in place
-            self._model.move_takes(lambda takes: takes.redone(self._takes))
+            self._model.move_takes(lambda takes: takes.taken(self._takes, self._columns))
         self._model.apply_cells(self._changes)
 
     def undo(self) -> None:
         if self._takes:
-            self._model.move_takes(lambda takes: takes.undone(self._takes))
+            self._model.move_takes(lambda takes: takes.untaken(self._takes))
         self._model.apply_cells(self._old)
         self._model.truncate_rows(self._old_rows)
 

@@ -102,7 +102,7 @@ from models.capture.take_cells import (
     elevation_from_zenith_deg,
     next_empty_point,
 )
-from models.capture.take_rows import session_takes, take_key
+from models.capture.take_rows import UNDONE, session_takes, take_key
 from models.workbench import GuidesAcquisition
 from widgets.i18n import declared, live, on_language_change, tr, translated
 from widgets.settings_form import ignore_unfocused_wheel
@@ -1511,20 +1511,24 @@ class CapturePanel(QDockWidget):
             if got is not None and session is not None and got[2][0] >= session.first \
                     and any(t[0] is link for t in targets):
                 # indices into the session's own frames (it may start mid-connection)
-                new_takes.append((link, session, [row, got[2][0] - session.first,
+                new_takes.append((link, session, [UNDONE, got[2][0] - session.first,
                                                   got[2][1] - session.first]))
         # the take and its cells one undo step: Edit › Undo undoes the take too (review 62
         # F4: an undone take kept its row, and a reading typed there later was printed as
-        # "edited after capture", with the undone take's values)
-        model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1),
-                        takes=[(take_key(session.kind, session.worker.port,
-                                         session.started_utc, take), row)
-                               for _, session, take in new_takes])
-        self._widen(table, changes)
+        # "edited after capture", with the undone take's values). In its session before
+        # (undone), so that the cells come with it in its row, superseding an older take
+        # there (review 62 F1: marked edited until the next change)
         for link, session, take in new_takes:
             session.takes.append(take)
             session.steps.append(steps.get(link.slot, 0.0))
             link.taken_frame = max(link.taken_frame, take[2] + session.first)
+        keyed = [(link, take_key(session.kind, session.worker.port, session.started_utc, take))
+                 for link, session, take in new_takes]
+        model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1),
+                        takes=[(key, row) for _, key in keyed],
+                        columns={key: frozenset(k for t, _, k in targets if t is link)
+                                 for link, key in keyed})
+        self._widen(table, changes)
         if 0 in taking:
             self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
         # what the take could not place, or took far from where the plan expects it: said

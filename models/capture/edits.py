@@ -11,6 +11,15 @@ A captured reading whose row was deleted (or replaced: models/capture/take_rows.
 said as deleted, with what the frames gave; a take whose frames hold no reading, or a
 session recorded on another workbench, cannot be checked and is said so (review 61 F7:
 both passed without a word).
+
+A reading whose cell was emptied is said *cleared*, with what the frames gave (it was
+"edited …: 300.00002 → —"). A row captured again — its cells cleared and the reading taken
+anew, the older take superseded (models/capture/take_rows.py) — is checked against the
+newer take alone and said once, "captured again", never "edited" (review 62 F1): the
+customer is told that the raw record (ISO/IEC 17025 7.5.1, its SHA-256 on the certificate)
+holds two takes for that row, and which one the row reports. A file written before the
+takes were marked so (two takes of one instrument claiming a row) is read the same way:
+the later take is the row's.
 """
 
 from __future__ import annotations
@@ -20,7 +29,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from models.capture.take_rows import deleted_at
+from models.capture.take_rows import deleted_at, superseded_by
 from models.messages import QT_TR_NOOP, Message, message
 from models.readings.angles import parse_angle_deg
 
@@ -39,17 +48,31 @@ class EditedReading:
     #: the reading the frames give, and the cell's text now ("" when emptied)
     captured: str
     now: str
-    #: "edited"; "deleted": the row (``row``: where it was then) was deleted, or the sheet
-    #: replaced; "unverifiable": no frame behind the take reads; "elsewhere": a session
-    #: recorded on the workbench ``now`` (``row`` -1, ``captured`` the session's start)
+    #: "edited"; "cleared": its cell emptied; "missing": a reading whose cell was chosen at
+    #: the time (a readout's) is in no cell of its row now; "again": the row captured again
+    #: (an older take superseded; ``column`` ""); "deleted": the row (``row``: where it was
+    #: then) was deleted, or the sheet replaced; "unverifiable": no frame behind the take
+    #: reads; "elsewhere": a session recorded on the workbench ``now`` (``row`` -1,
+    #: ``captured`` the session's start)
     what: str = "edited"
 
     @property
     def in_sheet(self) -> bool:
         """The reading is in the sheet's row ``row`` now (its cell can be marked there)."""
-        return self.what in ("edited", "unverifiable") and self.row >= 0
+        return self.what in ("edited", "cleared", "unverifiable") and self.row >= 0
 
     def text(self) -> Message:
+        if self.what == "cleared":
+            return message(QT_TR_NOOP("reading of row {row} cleared after capture: {captured}"),
+                           row=self.row + 1, captured=self.captured)
+        if self.what == "missing":
+            return message(QT_TR_NOOP("reading of row {row} edited or cleared after capture: "
+                                      "no cell of the row holds {captured} now"),
+                           row=self.row + 1, captured=self.captured)
+        if self.what == "again":
+            return message(QT_TR_NOOP("reading of row {row} captured again, superseding an "
+                                      "earlier take (both kept in the instrument output)"),
+                           row=self.row + 1)
         if self.what == "deleted":
             return message(QT_TR_NOOP("reading of row {row} deleted after capture: {captured}"),
                            row=self.row + 1, captured=self.captured or "—")
@@ -173,6 +196,23 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
     ``values_of(instrument, line)``: the values a frame reads (None if none). ``cache``: a
     dict kept between calls, the frames' readings by session and take (they never change)."""
     edited: dict[tuple[int, str], EditedReading] = {}
+    # the takes superseded by a newer one into their rows: by the newer's key (take_rows.py);
+    # in a file from before, a take of an instrument claiming a row a later take of it claims
+    # (not a reading written into a cell chosen at the time, a readout's: two of them may be
+    # in two columns of the row)
+    latest: dict[tuple[int, str], tuple] = {}
+    superseding: set[tuple] = set()
+    for session in sessions:
+        fixed = all(column is not None for _, column in columns_of(session["instrument"]))
+        for stored in session["takes"]:
+            this = (session["instrument"], session["port"], session["started_utc"],
+                    int(stored[1]), int(stored[2]))
+            if (by := superseded_by(stored)) is not None:
+                superseding.add(by)
+            elif stored[0] >= 0 and fixed:
+                if latest.get((stored[0], this[0]), this) != this:
+                    superseding.add(this)
+                latest[(stored[0], this[0])] = this
     # said apart from the edits: a deleted row's number is the one it had then, and
     # another row may hold that number now
     unchecked: list[EditedReading] = []
@@ -188,7 +228,8 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
         # compared as the numbers a take writes (_forms: never another turn, review 62 M3)
         angles = bool(targets) and all(key.endswith("_deg") for key, _ in targets)
         steps = _steps(session)
-        for take, (row, first, last) in enumerate(session["takes"]):
+        for take, stored in enumerate(session["takes"]):
+            row, first, last = (int(v) for v in stored[:3])
             step = steps[take] if take < len(steps) else 0.0
             take_key = (instrument, session["port"], session["started_utc"], first, last)
             if cache is not None and take_key in cache:
@@ -205,8 +246,12 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 unchecked.append(EditedReading(gone, targets[0][0] if targets else "",
                                                ", ".join(shown), "", "deleted"))
                 continue
-            if row < 0:  # replaced by a later take
+            if row < 0:  # replaced, superseded by a later take, or undone
                 continue
+            if latest.get((row, instrument), take_key) != take_key:
+                continue  # a later take of the instrument claims the row (a file from before)
+            if take_key in superseding:  # the row's reading taken again: said once
+                edited[(row, "")] = EditedReading(row, "", "", "", "again")
             checked = [column for _, column in targets if column is None or column >= 0]
             if values is None or not checked:
                 # no frame behind it reads (a flag set to 0 by hand), or none of its values
@@ -221,8 +266,10 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                 if column is not None and column < 0:  # no column for it in this sheet
                     continue
                 if column is None:
+                    # which cell held it is not known: edited or cleared, never "→ —"
                     if not any(_as_captured(_number(c, angles), forms, step) for c in cells):
-                        edited[(row, key)] = EditedReading(row, key, _shown(None, forms), "")
+                        edited[(row, key)] = EditedReading(row, key, _shown(None, forms), "",
+                                                           "missing")
                     continue
                 now = cells[column] if column < len(cells) else ""
                 number = _number(now, angles)
@@ -230,6 +277,7 @@ def edited_after_capture(sessions: Sequence[dict[str, Any]], rows: Sequence[Sequ
                     edited.pop((row, key), None)  # taken again later: as captured
                 else:
                     edited[(row, key)] = EditedReading(row, key, _shown(number, forms),
-                                                       now.strip())
+                                                       now.strip(),
+                                                       "edited" if now.strip() else "cleared")
     return sorted(edited.values(), key=lambda e: (e.row, e.column)) + sorted(
         unchecked, key=lambda e: (e.what != "elsewhere", e.row, e.column, e.captured))

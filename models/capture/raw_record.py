@@ -20,7 +20,10 @@ take a sample, from the take's first line); when a later take replaces the readi
 earlier one's rows become -1 (its frames stay: they are no longer behind a row). A take
 undone (Edit › Undo of the take, or of the replacement of the sheet it went into) is -1
 too, until its redo (review 62 F4: it kept its row, and a reading typed there afterwards
-was said "edited after capture").
+was said "edited after capture"). A take *superseded* by a newer take of the same
+instrument into its row (its cells cleared and the reading taken again, review 62 F1) is
+``[-1, first, last, key]``, ``key`` the newer take's ``[instrument, port, started_utc,
+first, last]``: both takes stay, the certificate says the row was captured again.
 
 A take's row follows its reading: a row inserted or deleted above it moves it, and a
 deleted (or replaced) row leaves ``-2 - r``, ``r`` the row it was in then — the frames stay,
@@ -212,6 +215,15 @@ def _latin1(text: str) -> bool:
     return True
 
 
+def _superseded(take: list) -> bool:
+    """``[-1, first, last, [instrument, port, started_utc, first, last]]``: a take superseded
+    by the newer take of that key (models/capture/take_rows.py)."""
+    key = take[3] if len(take) == 4 else None
+    return take[0] == -1 and isinstance(key, list) and len(key) == 5 \
+        and all(isinstance(v, str) for v in key[:3]) \
+        and all(isinstance(v, int) and not isinstance(v, bool) for v in key[3:])
+
+
 def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
     """The stored sessions checked (ValueError naming ``where`` and what is wrong), with
     their keys in the stored order."""
@@ -234,8 +246,8 @@ def raw_sessions_from_json(data: Any, where: str) -> list[dict[str, Any]]:
                         and not isinstance(f[0], bool) and math.isfinite(f[0])
                         and isinstance(f[1], str) and _latin1(f[1]) and f[2] in (0, 1)
                         for f in frames)
-        ok = ok and all(isinstance(t, list) and len(t) == 3
-                        and all(isinstance(v, int) and not isinstance(v, bool) for v in t)
+        ok = ok and all(isinstance(t, list) and (len(t) == 3 or _superseded(t))
+                        and all(isinstance(v, int) and not isinstance(v, bool) for v in t[:3])
                         and 0 <= t[1] <= t[2] < len(frames) for t in session["takes"])
         steps = session.get("steps", [])
         ok = ok and isinstance(steps, list) and len(steps) == len(session["takes"]) \

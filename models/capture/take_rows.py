@@ -10,6 +10,12 @@ A take's row is, in the stored ``takes``:
   live signals), or the take was undone (Edit › Undo of the take, or of the replacement of
   the sheet it went into: review 62 F4). The frames stay in the raw record: they were
   read, but no cell claims to hold them;
+* ``-1`` with a fourth item, the key of a newer take (:func:`take_key`, as a list):
+  *superseded* — a newer take of the same instrument went into its row (its cells cleared
+  and the reading taken again, review 62 F1). The row holds the newer take's reading; the
+  older one's frames stay, and the certificate says the row was captured again, never
+  that it was edited (models/capture/edits.py). The undo of the newer take gives the row
+  back to the older one;
 * ``r <= -2``: its row was deleted (or the sheet replaced) — at row ``-2 - r`` then. The
   frames stay in the raw record; the certificate says the captured reading was deleted
   (models/capture/edits.py). A file of 0.8.10 reads such a row as ``-1``.
@@ -22,14 +28,19 @@ takes its operation detached, whatever copies of the sessions were made in betwe
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import Any, cast
 
-__all__ = ["REPLACED", "UNDONE", "TakeRows", "deleted_at", "deleted_row", "session_takes", "take_key"]
+__all__ = ["CHOSEN_CELL", "REPLACED", "UNDONE", "TakeRows", "deleted_at", "deleted_row", "session_takes",
+           "superseded_by", "take_key"]
 
 #: the row of a take whose reading a later take replaced
 REPLACED = -1
 #: the row of a take undone (its cells put back as they were): no cell claims it
 UNDONE = REPLACED
+
+#: instruments whose reading goes to a cell chosen when it is taken (a readout's "the
+#: current cell"): two takes of one in a row may be two readings in two columns
+CHOSEN_CELL = frozenset({"readout"})
 
 #: a take's key and the row it was detached from
 Detached = list[tuple[tuple, int]]
@@ -49,6 +60,12 @@ def take_key(instrument: str, port: str, started_utc: str, take) -> tuple:
     return (instrument, port, started_utc, int(take[1]), int(take[2]))
 
 
+def superseded_by(take) -> tuple | None:
+    """The key of the newer take that superseded ``take`` (a stored ``[row, first, last]``
+    or ``[-1, first, last, key]``), None when it was not superseded."""
+    return tuple(take[3]) if len(take) > 3 and take[0] == REPLACED else None
+
+
 class TakeRows:
     """The takes of one workbench's sessions moved with its rows. ``takes()``: every take of
     the workbench as ``(key, take)``, ``take`` the live ``[row, first, last]`` list the
@@ -56,6 +73,8 @@ class TakeRows:
 
     def __init__(self, takes: Callable[[], Iterable[tuple[tuple, list[int]]]]) -> None:
         self._takes = takes
+        #: the columns (keys) each take made in this window wrote (:meth:`taken`)
+        self.columns: dict[tuple, frozenset[str]] = {}
 
     def inserted(self, at: int, count: int) -> None:
         """``count`` rows inserted at ``at``: the takes at or below it move down."""
@@ -100,6 +119,43 @@ class TakeRows:
     def redone(self, taken: Detached) -> None:
         """These undone takes back in their rows (the redo of what :meth:`undone` undid)."""
         self._move(taken, lambda row: UNDONE, None)
+
+    def taken(self, taken: Detached, columns: dict[tuple, frozenset[str]] | None = None) -> None:
+        """These takes in their rows (made, or redone; ``(key, row)`` each, the take at -1
+        until then; ``columns``: the keys of the columns each wrote). An older take of the
+        same instrument that claims one of those rows is superseded by it (``[-1, first,
+        last, newer key]``, review 62 F1: a take whose cells were cleared and taken again
+        kept its row, and the row was said "edited after capture" with the older take's
+        values) — when it wrote no column the newer did not: a reading written into a cell
+        chosen at the time (:data:`CHOSEN_CELL`, a readout's "the current cell") may be in
+        another column of the row, and stays checked. The same frames taken twice are one
+        reading, never superseded by themselves."""
+        self.columns.update(columns or {})
+        self.redone(taken)
+        # the newer take of each instrument in each row
+        rows = {(row, key[0]): key for key, row in taken}
+        newer = {key for key, _ in taken}
+        for key, take in self._takes():
+            by = rows.get((take[0], key[0]))
+            if by is None or key in newer:
+                continue
+            mine, theirs = self.columns.get(by), self.columns.get(key)
+            if theirs is None and key[0] in CHOSEN_CELL or \
+                    theirs is not None and mine is not None and not theirs <= mine:
+                continue
+            take[0] = REPLACED
+            cast(list, take)[3:] = [list(by)]  # the newer take's key beside it
+
+    def untaken(self, taken: Detached) -> None:
+        """The undo of :meth:`taken`: these takes undone, and the takes they superseded back
+        in their rows."""
+        self.undone(taken)
+        rows = {tuple(key): row for key, row in taken}
+        for _, take in self._takes():
+            by = superseded_by(take)
+            if by is not None and by in rows:
+                take[0] = rows[by]
+                del take[3:]
 
     def undo_replacement(self) -> Detached:
         """The replacement of the sheet undone: every take that names a row went into the

@@ -56,7 +56,10 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
         (label(document, "Readings", "\n"), document.source_name),
         *([(label(document, "Instrument output", "\n"),
             f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
-        *([(label(document, "Edited after capture", "\n"), joined(_between("\n", document.edited_readings)))]
+        # edits, cleared and deleted readings, rows captured again (review 62 F1: a row taken
+        # again stood under "Edited after capture"), readings that cannot be checked
+        *([(label(document, "Changes after capture", "\n"),
+            joined(_between("\n", document.edited_readings)))]
           if document.edited_readings else []),
     ])
 

@@ -224,11 +224,12 @@ def test_a_captured_azimuth_typed_a_whole_turn_away_is_marked_and_said(window, q
 
 class _Model:
     """Which row holds which take, kept apart from the code: each state the rows (the takes
-    that claim each, oldest first, and its x and y) and the takes whose rows were deleted;
+    that claim each, oldest first, and its x and y), the takes whose rows were deleted and
+    the takes superseded by a newer one into their row, as (older, newer) (review 62 F1);
     undo and redo step through the states, as the undo stack does through the commands."""
 
     def __init__(self, rows: int) -> None:
-        self.states = [([((), "", "") for _ in range(rows)], ())]
+        self.states = [([((), "", "") for _ in range(rows)], (), ())]
         self.at = 0
         self.values: list[tuple[str, str]] = []  # per take (in the order taken): its x, y
 
@@ -240,9 +241,14 @@ class _Model:
     def deleted(self):
         return self.states[self.at][1]
 
-    def push(self, rows, deleted=None) -> None:
+    @property
+    def superseded(self):
+        return self.states[self.at][2]
+
+    def push(self, rows, deleted=None, superseded=None) -> None:
         del self.states[self.at + 1:]
-        self.states.append((rows, self.deleted if deleted is None else deleted))
+        self.states.append((rows, self.deleted if deleted is None else deleted,
+                            self.superseded if superseded is None else superseded))
         self.at += 1
 
     def insert(self, at: int, count: int) -> None:
@@ -262,12 +268,20 @@ class _Model:
         rows[row] = (rows[row][0], x, y)
         self.push(rows)
 
+    def clear(self, row: int) -> None:
+        rows = list(self.rows)
+        rows[row] = (rows[row][0], "", "")
+        self.push(rows)
+
     def take(self, row: int, x: str, y: str) -> None:
+        """A take into ``row``: it supersedes the takes that claimed it (cleared since)."""
         rows = list(self.rows) + ([((), "", "")] if row == len(self.rows) else [])
         assert rows[row][1:] == ("", ""), "a take goes to a row whose reading is blank"
-        rows[row] = ((*rows[row][0], len(self.values)), x, y)
+        new = len(self.values)
+        superseded = self.superseded + tuple((old, new) for old in rows[row][0])
+        rows[row] = ((new,), x, y)
         self.values.append((x, y))
-        self.push(rows)
+        self.push(rows, superseded=superseded)
 
     def undo(self) -> None:
         self.at = max(0, self.at - 1)
@@ -276,13 +290,22 @@ class _Model:
         self.at = min(len(self.states) - 1, self.at + 1)
 
     def take_rows(self) -> list[str]:
-        """Per take: its row, 'deleted', or 'undone' (in no state before this one)."""
+        """Per take: its row, 'deleted', 'superseded by N' or 'undone' (in no state before
+        this one)."""
         where = {t: r for r, (claims, _, _) in enumerate(self.rows) for t in claims}
-        return [str(where[t]) if t in where else "deleted" if t in self.deleted else "undone"
+        by = dict(self.superseded)
+        return [str(where[t]) if t in where else "deleted" if t in self.deleted
+                else f"superseded by {by[t]}" if t in by else "undone"
                 for t in range(len(self.values))]
 
+    def again(self) -> list[int]:
+        """The rows whose take superseded an earlier one (said once each, captured again)."""
+        newer = {new for _, new in self.superseded}
+        return [r for r, (claims, _, _) in enumerate(self.rows) if claims and claims[-1] in newer]
+
     def edited(self) -> set[tuple[int, str]]:
-        """(row, column) of each captured reading the row holds no more (its latest take's)."""
+        """(row, column) of each captured reading the row holds no more (its latest take's):
+        edited, or cleared."""
         out = set()
         for r, (claims, x, y) in enumerate(self.rows):
             if claims:
@@ -293,7 +316,24 @@ class _Model:
 
 
 def _stored_rows(takes) -> list[str]:
-    return [str(r) if r >= 0 else "deleted" if r <= -2 else "undone" for r, _, _ in takes]
+    """Per stored take, as :meth:`_Model.take_rows` says it (the newer by its index)."""
+    takes = list(takes)
+    index = {(t[1], t[2]): i for i, t in enumerate(takes)}
+    return [str(t[0]) if t[0] >= 0 else "deleted" if t[0] <= -2
+            else f"superseded by {index[tuple(t[3][3:])]}" if len(t) > 3 else "undone"
+            for t in takes]
+
+
+def _clear(bench, row: int) -> None:
+    """Row ``row``'s x and y selected and the table's Clear cells (Delete)."""
+    from PySide6.QtCore import QItemSelectionModel
+
+    table, model = bench.view.table, bench.table_model
+    selection = table.selectionModel()
+    selection.clearSelection()
+    for column in (3, 4):
+        selection.select(model.index(row, column), QItemSelectionModel.SelectionFlag.Select)
+    table.clear_action.trigger()
 
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
@@ -308,15 +348,17 @@ def test_random_rows_takes_undo_and_redo_keep_each_take_in_the_cell_that_holds_i
         _type(bench, row, Y, f"{600 + row}.5")
     bench.undo_stack.clear()
     ideal = _Model(0)
-    ideal.states = [([((), f"{500 + r}.5", f"{600 + r}.5") for r in range(4)], ())]
+    ideal.states = [([((), f"{500 + r}.5", f"{600 + r}.5") for r in range(4)], (), ())]
     log: list[str] = []
-    undone = edits = 0  # steps with a take undone, with a captured reading edited
+    undone = edits = retaken = 0  # steps with a take undone, a reading edited, a row retaken
     with AutocollimatorSimulator("pty", positions=[(3.25, -1.5)], sigma=2.0) as sim:
         panel.connect_to("autocollimator", sim.port, **FAST)
         for _ in range(50):
             rows = bench.sheet.row_count
             op = rnd.choice(["take", "take", "take", "undo", "undo", "undo", "redo", "redo",
-                             "insert", "delete", "type", "import"])
+                             "insert", "delete", "type", "import", "clear", "retake",
+                             "retake"])
+            held = [r for r, row in enumerate(ideal.rows) if row[0] and any(row[1:])]
             if op == "take":
                 at = _take(window, qtbot, bench, rnd.randrange(0, rows + 1))
                 ideal.take(at, *_cells(bench, at))
@@ -329,6 +371,17 @@ def test_random_rows_takes_undo_and_redo_keep_each_take_in_the_cell_that_holds_i
                 redo.trigger()
                 ideal.redo()
                 log.append("redo")
+            elif op in ("clear", "retake") and held:  # review 62 F1: Delete, then F9 again
+                row = rnd.choice(held)
+                _clear(bench, row)
+                ideal.clear(row)
+                log.append(f"clear {row}")
+                if op == "retake":
+                    # the cursor's row, blank again (or a row above still waiting for
+                    # its reading: the panel's next point)
+                    at = _take(window, qtbot, bench, row)
+                    ideal.take(at, *_cells(bench, at))
+                    log.append(f"take→{at}")
             elif op == "insert":
                 at, count = rnd.randrange(0, rows + 1), rnd.randint(1, 2)
                 model.insert_rows(at, count)
@@ -362,11 +415,17 @@ def test_random_rows_takes_undo_and_redo_keep_each_take_in_the_cell_that_holds_i
             assert _stored_rows(t for s in sessions for t in s["takes"]) == ideal.take_rows(), log
             said = readings_edited_after_capture(bench.kind, bench.settings,
                                                  _SheetRows(bench.sheet), sessions)
-            assert {(e.row, e.column) for e in said if e.what == "edited"} == ideal.edited(), log
+            assert {(e.row, e.column) for e in said if e.what in ("edited", "cleared")} == \
+                ideal.edited(), log
+            assert all(e.what == "cleared" for e in said
+                       if e.in_sheet and not _cells(bench, e.row)[e.column == Y]), log
+            # a row captured again is said once, never an edit of the superseded take
+            assert [e.row for e in said if e.what == "again"] == ideal.again(), log
             assert sum(e.what == "deleted" for e in said) == len(ideal.deleted), log
             undone += "undone" in ideal.take_rows()
             edits += bool(ideal.edited())
+            retaken += bool(ideal.again())
             assert {(r, c) for r, c in model.edited_cells} == {
                 (r, 3 if key == X else 4) for r, key in ideal.edited()}, log
         panel.disconnect_instrument()
-    assert undone and edits, log  # the sequence did what the test is about
+    assert undone and edits and retaken, log  # the sequence did what the test is about

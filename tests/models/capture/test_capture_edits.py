@@ -46,22 +46,83 @@ def test_an_edited_reading_is_found_with_its_captured_and_its_present_value():
     (edit,) = edited_after_capture([session], rows, _columns, frame_values)
     assert edit == EditedReading(2, "ac_x_arcsec", "21.56", "26.56")
     assert edit.text() == "reading of row 3 edited after capture: 21.56 → 26.56"
-    rows[0][4] = ""  # emptied
+    rows[0][4] = ""  # emptied: said cleared (review 62 F1: it was "-3.25 → —")
     edits = edited_after_capture([session], rows, _columns, frame_values)
     assert [e.text() for e in edits] == [
-        "reading of row 1 edited after capture: -3.25 → —",
+        "reading of row 1 cleared after capture: -3.25",
         "reading of row 3 edited after capture: 21.56 → 26.56"]
+    assert [(e.row, e.column, e.what, e.in_sheet) for e in edits][0] == (
+        0, "ac_y_arcsec", "cleared", True)  # marked in the window too
+
+
+AGAIN = ("reading of row 1 captured again, superseding an earlier take (both kept in the "
+         "instrument output)")
 
 
 def test_a_reading_taken_again_is_as_captured_and_the_cache_keeps_the_frames_reading():
+    """Two takes of the autocollimator claiming row 1 (a file written before takes were
+    marked superseded): the later one is the row's; said once as captured again."""
     session = _session([(5.0, 1.0), (7.0, 2.0)], [[0, 0, 0], [0, 2, 2]])  # row 0 retaken
     rows = [["1", "0", "0", "7", "2"]]
     cache: dict = {}
-    assert edited_after_capture([session], rows, _columns, frame_values, cache) == []
+    assert [e.text() for e in edited_after_capture([session], rows, _columns, frame_values,
+                                                   cache)] == [AGAIN]
     assert len(cache) == 2
     calls = []
-    assert edited_after_capture([session], rows, _columns,
-                                lambda *a: calls.append(a), cache) == [] and calls == []
+    assert [e.text() for e in edited_after_capture([session], rows, _columns,
+                                                   lambda *a: calls.append(a), cache)] == [AGAIN]
+    assert calls == []
+    rows[0][3] = "7.5"  # the newer take edited: said as its edit
+    assert [e.text() for e in edited_after_capture([session], rows, _columns, frame_values)] \
+        == [AGAIN, "reading of row 1 edited after capture: 7 → 7.5"]
+
+
+def test_a_take_superseded_is_never_an_edit_and_the_row_is_said_captured_again_once():
+    """Review 62 F1, row 17: the wrong face taken (300.00002° and 1.509″), its cells cleared
+    and taken again. The older take is marked superseded by the newer (take_rows.py): the row
+    is checked against the newer alone and said once, for both instruments' takes."""
+    ac = _session([(1.509, 0.25), (1.9, 0.5)], [[-1, 0, 0], [16, 2, 2]])
+    ac["takes"][0].append(["autocollimator", ac["port"], ac["started_utc"], 2, 2])
+    readout = session_json("readout", "tcp://127.0.0.1:47002", 9600, "2026-12-02T01:02:04+00:00",
+                           [(0.0, b"300.00002", True), (0.1, b"270.00001", True)],
+                           [[-1, 0, 0], [16, 1, 1]])
+    readout["takes"][0].append(["readout", readout["port"], readout["started_utc"], 1, 1])
+    keys = POLYGON
+    rows = [[""] * len(keys) for _ in range(17)]
+    rows[16][keys.index("ac_x_arcsec")], rows[16][keys.index("ac_y_arcsec")] = "1.90", "0.50"
+    rows[16][keys.index("encoder_deg")] = "270.00001"
+
+    def values(instrument, line):
+        return (float(line),) if instrument == "readout" else frame_values(instrument, line)
+
+    said = edited_after_capture([ac, readout], rows, _columns, values)
+    # was: "reading of row 17 edited after capture: 300.00002 → —" (and 1.509 → 1.90)
+    assert [e.text() for e in said] == [AGAIN.replace("row 1 ", "row 17 ")]
+    assert not said[0].in_sheet  # no cell marked in the window
+    rows[16][keys.index("encoder_deg")] = ""  # the newer reading cleared: said so
+    assert [e.text() for e in edited_after_capture([ac, readout], rows, _columns, values)] == [
+        AGAIN.replace("row 1 ", "row 17 "),
+        "reading of row 17 edited or cleared after capture: no cell of the row holds "
+        "270.00001 now"]
+
+
+def test_two_readout_takes_in_two_columns_of_a_row_are_each_checked():
+    """A readout into "the current cell" taken into two columns of one row: two
+    readings, neither supersedes the other; an edit of the first is said."""
+    readout = session_json("readout", "tcp://127.0.0.1:47002", 9600, "t",
+                           [(0.0, b"100.0", True), (0.1, b"100.5", True)],
+                           [[0, 0, 0], [0, 1, 1]])
+    keys = POLYGON
+    row = [""] * len(keys)
+    row[keys.index("encoder_deg")], row[keys.index("polygon_dev_arcsec")] = "100.0", "100.5"
+
+    def values(_instrument, line):
+        return (float(line),)
+
+    assert edited_after_capture([readout], [row], _columns, values) == []
+    row[keys.index("encoder_deg")] = "100.2"
+    assert [e.text() for e in edited_after_capture([readout], [row], _columns, values)] == [
+        "reading of row 1 edited or cleared after capture: no cell of the row holds 100 now"]
 
 
 def test_angles_are_compared_as_angles():
@@ -113,7 +174,7 @@ def test_the_certificate_says_which_rows_were_edited(samples_dir):
         certificate_pdf_bytes(document))).pages)
     flat = " ".join(text.split())
     assert "SHA-256 " + "ab" * 32 in flat.replace("\n", "")
-    assert "Edited after capture" in flat
+    assert "Changes after capture" in flat  # the heading: edits, retakes, deletions
     assert f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}" in flat
 
 

@@ -79,6 +79,11 @@ def test_the_project_file_keeps_the_frames_and_their_digest_as_stored(tmp_path):
         1, "3 003 9.250 -0.500"), "do not give their SHA-256"),
     (lambda d: d["raw_capture"]["polygon"]["sessions"][0]["takes"].append([1, 2, 9]),
      "a frame or a take"),
+    # a superseded take names the newer take's key (review 62 F1): only so, and only at -1
+    (lambda d: d["raw_capture"]["polygon"]["sessions"][0]["takes"].append(
+        [-1, 0, 0, ["autocollimator", "p", "t", 1]]), "a frame or a take"),
+    (lambda d: d["raw_capture"]["polygon"]["sessions"][0]["takes"].append(
+        [0, 0, 0, ["autocollimator", "p", "t", 1, 1]]), "a frame or a take"),
     (lambda d: d["raw_capture"].__setitem__("polygon", []), "'sha256' and 'sessions'"),
     (lambda d: d.__setitem__("raw_capture", []), "'raw_capture' must be an object"),
 ])

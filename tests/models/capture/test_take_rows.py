@@ -146,3 +146,66 @@ def test_an_undone_take_claims_no_row_and_its_redo_puts_it_back():
     takes.detach(detached)  # its redo
     takes.redone(made)
     assert [t[0] for t in session["takes"]] == [-3, -4, -5, 0]
+
+
+AGAIN = ("reading of row {row} captured again, superseding an earlier take (both kept in the "
+         "instrument output)")
+
+
+def test_a_take_into_a_row_supersedes_the_older_take_of_its_instrument_and_undo_restores_it(
+        tmp_path):
+    """Review 62 F1: row 2's cells cleared and the reading taken again (the newer take made
+    at -1, then in its row: the panel's order). The older take is marked superseded with
+    the newer's key, the row said captured again once, never edited; the undo of the newer
+    gives the row back to the older (its cells cleared: said cleared); a readout's take of
+    the same row, which wrote another column, is not superseded; the file keeps the mark."""
+    session = _session([[1, 0, 0], [2, 1, 1]])
+    readout = session_json("readout", "tcp://r:1", 9600, "2026-12-02T01:02:04+00:00",
+                           [(0.0, b"45.0", True)], [[2, 0, 0]])
+    takes = TakeRows(lambda: session_takes([session, readout]))
+    keys = dict(session_takes([session, readout]))
+    older = next(k for k, t in keys.items() if k[0] == "autocollimator" and t[1] == 1)
+    takes.columns[older] = frozenset({"ac_x_arcsec", "ac_y_arcsec"})
+    takes.columns[next(k for k in keys if k[0] == "readout")] = frozenset({"encoder_deg"})
+    cleared = [*ROWS[:2], ["2", "45", "0", "", ""], ROWS[3]]
+    assert _said(cleared, [session]) == ["reading of row 3 cleared after capture: 21.56",
+                                         "reading of row 3 cleared after capture: 1"]
+    session["takes"].append([-1, 2, 2])  # the retake, undone until its command's redo
+    newer = ("autocollimator", "/dev/ttyUSB0", "2026-12-02T01:02:03+00:00", 2, 2)
+    takes.taken([(newer, 2)], {newer: frozenset({"ac_x_arcsec", "ac_y_arcsec"})})
+    assert session["takes"] == [[1, 0, 0], [-1, 1, 1, list(newer)], [2, 2, 2]]
+    assert readout["takes"] == [[2, 0, 0]]  # another instrument's: its own reading
+    retaken = [*ROWS[:2], ["2", "45", "0", "7.25", "0.5"], ROWS[3]]
+    # was: "reading of row 3 edited after capture: 21.56 → 7.25" (and 1 → 0.5)
+    assert _said(retaken, [session]) == [AGAIN.format(row=3)]
+    path = tmp_path / "p.anglebench.json"
+    save_project(path, Project({"polygon": WorkbenchState(retaken, {})}, {}, {"polygon": [session]}))
+    opened = load_project(path, {"polygon": POLYGON}).raw_capture["polygon"]
+    assert opened == [session] and _said(retaken, opened) == [AGAIN.format(row=3)]
+    takes.inserted(0, 1)  # a row above: the newer moves, the mark stays with the older
+    assert session["takes"] == [[2, 0, 0], [-1, 1, 1, list(newer)], [3, 2, 2]]
+    takes.removed(0, 1)
+    takes.untaken([(newer, 2)])  # Edit › Undo of the retake: the older claims row 3 again
+    assert session["takes"] == [[1, 0, 0], [2, 1, 1], [-1, 2, 2]]
+    assert _said(cleared, [session]) == ["reading of row 3 cleared after capture: 21.56",
+                                         "reading of row 3 cleared after capture: 1"]
+    takes.taken([(newer, 2)])  # its redo: superseded again
+    assert session["takes"] == [[1, 0, 0], [-1, 1, 1, list(newer)], [2, 2, 2]]
+
+
+def test_a_readout_take_supersedes_an_older_one_only_over_its_own_column():
+    """A readout into "the current cell": two takes into two columns of one row are two
+    readings (the older stays checked, so an edit of it is said); into the same column, the
+    newer supersedes; an older one whose column is not known (a project opened) stays."""
+    readout = session_json("readout", "tcp://r:1", 9600, "t",
+                           [(0.0, b"1", True), (0.1, b"2", True), (0.2, b"3", True)],
+                           [[0, 0, 0]])
+    takes = TakeRows(lambda: session_takes([readout]))
+    first, second, third = (("readout", "tcp://r:1", "t", i, i) for i in range(3))
+    readout["takes"].append([-1, 1, 1])
+    takes.taken([(second, 0)], {second: frozenset({"encoder_deg"})})
+    assert readout["takes"] == [[0, 0, 0], [0, 1, 1]]  # the first's column not known
+    takes.columns[first] = frozenset({"polygon_dev_arcsec"})
+    readout["takes"].append([-1, 2, 2])
+    takes.taken([(third, 0)], {third: frozenset({"encoder_deg"})})
+    assert readout["takes"] == [[0, 0, 0], [-1, 1, 1, list(third)], [0, 2, 2]]
