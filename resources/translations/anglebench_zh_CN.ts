@@ -4098,6 +4098,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Insert rows</source>
+        <extracomment>the keys of the columns each take wrote, by its key (what it supersedes)</extracomment>
         <translation>插入行</translation>
     </message>
     <message>
@@ -9715,8 +9716,20 @@ seconds since the worker started, when the frame&apos;s last byte arrived the in
         <translation>包含概率 ≥ {p} %（{runs} 次中 ≥ {floor} 次包含）；宽度对照目标（不超过理想区间的 {limit} 倍；理想区间为“值 − 真值”的 2.275 %–97.725 % 分位数间距）报告</translation>
     </message>
     <message>
+        <source>reading of row {row} cleared after capture: {captured}</source>
+        <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied) &quot;edited&quot;; &quot;cleared&quot;: its cell emptied; &quot;missing&quot;: a reading whose cell was chosen at the time (a readout&apos;s) is in no cell of its row now; &quot;again&quot;: the row captured again (an older take superseded; ``column`` &quot;&quot;); &quot;deleted&quot;: the row (``row``: where it was then) was deleted, or the sheet replaced; &quot;unverifiable&quot;: no frame behind the take reads; &quot;elsewhere&quot;: a session recorded on the workbench ``now`` (``row`` -1, ``captured`` the session&apos;s start)</extracomment>
+        <translation>第 {row} 行的读数在采集后被清除：{captured}</translation>
+    </message>
+    <message>
+        <source>reading of row {row} edited or cleared after capture: no cell of the row holds {captured} now</source>
+        <translation>第 {row} 行的读数在采集后被修改或清除：该行已没有单元格含有 {captured}</translation>
+    </message>
+    <message>
+        <source>reading of row {row} captured again, superseding an earlier take (both kept in the instrument output)</source>
+        <translation>第 {row} 行的读数重新采集，取代了先前的一次取数（两次均保存在仪器原始输出中）</translation>
+    </message>
+    <message>
         <source>reading of row {row} deleted after capture: {captured}</source>
-        <extracomment>a cell that holds the captured value within this (relative) is the captured reading: it was written with 12 significant digits the sheet row (0-based) and the column&apos;s key the reading the frames give, and the cell&apos;s text now (&quot;&quot; when emptied) &quot;edited&quot;; &quot;deleted&quot;: the row (``row``: where it was then) was deleted, or the sheet replaced; &quot;unverifiable&quot;: no frame behind the take reads; &quot;elsewhere&quot;: a session recorded on the workbench ``now`` (``row`` -1, ``captured`` the session&apos;s start)</extracomment>
         <translation>第 {row} 行的读数在采集后被删除：{captured}</translation>
     </message>
     <message>
