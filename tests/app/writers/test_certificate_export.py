@@ -192,9 +192,11 @@ def test_cli_writes_certificate_and_results(tmp_path):
     assert pdf.read_bytes().startswith(b"%PDF") and xlsx.stat().st_size > 0
     bad = tmp_path / "bad.json"
     bad.write_text('{"humidity_pct": "wet"}', encoding="utf-8")
+    # a new name: c.pdf is now an issued file, refused as an output before the details
     done = subprocess.run([sys.executable, "-m", "app", "analyze", "fringe",
-                           str(SAMPLES / "fringe_sample.csv"), "--certificate", str(pdf),
-                           "--metadata", str(bad)], capture_output=True, text=True, check=False)
+                           str(SAMPLES / "fringe_sample.csv"), "--certificate",
+                           str(tmp_path / "d.pdf"), "--metadata", str(bad)],
+                          capture_output=True, text=True, check=False)
     assert done.returncode == 2
     assert "bad.json" in done.stderr and "humidity_pct" in done.stderr
     assert "Traceback" not in done.stderr
