@@ -195,6 +195,23 @@ class Workbench(ABC, Generic[ResultT]):
         return {k: float(v) for k, v in self.headline(result).items()
                 if isinstance(v, int | float) and math.isfinite(v)}
 
+    def printed_rounding(self, result: ResultT, metadata: CertificateMetadata,
+                         settings: Mapping[str, Any] | None = None) -> Any:
+        """How the certificate of ``result`` (with ``metadata``) rounds the figures the
+        window shows too, the workbench's own (the decimal of its largest U, GUM 7.2.6; each
+        figure's decimal): given to :meth:`summary`, the verdict and
+        :meth:`printed_headline` as ``printed``, so that the window shows what the
+        certificate prints. None: the workbench prints them to a fixed decimal, which its
+        summary uses already (then ``printed`` is not given)."""
+        return None
+
+    def printed_headline(self, result: ResultT, printed: Any = None) -> dict[str, str]:
+        """The headline figures the certificate prints, as it prints them ({name: text},
+        the names of :meth:`headline`), rounded by ``printed`` (:meth:`printed_rounding`;
+        None: as the summary without it); the window's figures table shows these, and the
+        unrounded value of any other (the register's trend keeps every figure unrounded)."""
+        return {}
+
     def certificate_document(self, result: ResultT, metadata: CertificateMetadata, source_name: str = "",
                              settings: Mapping[str, Any] | None = None) -> CertificateDocument:
         """The certificate content of ``result`` (see models.certificate.document), listing

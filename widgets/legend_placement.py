@@ -12,6 +12,9 @@ import html
 
 import numpy as np
 import pyqtgraph as pg
+from PySide6.QtCore import QTimer
+from PySide6.QtGui import QFont, QFontMetricsF
+from PySide6.QtWidgets import QApplication
 
 __all__ = ["CORNERS", "place_legend"]
 
@@ -63,7 +66,8 @@ def _extent_y(plot_item) -> tuple[float, float] | None:
     return (float(y.min()), float(y.max())) if y.size else None
 
 
-def _entry_html(sample, label) -> str:
+def _entry(sample, label) -> tuple[str, str]:
+    """(the entry as HTML, as plain text: what its width is measured by)."""
     opts = sample.item.opts
     if opts.get("pen") is not None:
         pen = pg.mkPen(opts["pen"])
@@ -71,20 +75,80 @@ def _entry_html(sample, label) -> str:
         color = pen.color().name()
     else:
         mark, color = "●", pg.mkBrush(opts.get("symbolBrush")).color().name()
-    return (f'<span style="color:{color}">{mark}</span>&nbsp;'
-            f"{html.escape(label.text)}")
+    return (f'<span style="color:{color}">{mark}</span>&nbsp;{html.escape(label.text)}',
+            f"{mark} {label.text}")
+
+
+def _title_width(plot_item) -> float:
+    """The width the title line may take: the view's (a title is never wider than its plot
+    may be: pyqtgraph widens the plot to its title, and the view then cuts off its right,
+    the last targets with it — review 62, F13)."""
+    scene = plot_item.scene()
+    views = scene.views() if scene is not None else []
+    width = views[0].viewport().width() if views else plot_item.width()
+    return max(float(width) - 24.0, 60.0)
+
+
+def _wrapped(entries: list[tuple[str, str]], width: float) -> str:
+    """The entries on as many lines as fit ``width`` (HTML), in their order."""
+    font = QFont(QApplication.font())
+    font.setPointSizeF(8.0)
+    metrics = QFontMetricsF(font)
+    gap = metrics.horizontalAdvance("   ")
+    lines: list[list[str]] = []
+    used = 0.0
+    for markup, plain in entries:
+        need = metrics.horizontalAdvance(plain)
+        if lines and used + gap + need <= width:
+            lines[-1].append(markup)
+            used += gap + need
+        else:
+            lines.append([markup])
+            used = need
+    return "<br>".join("&nbsp;&nbsp; ".join(line) for line in lines)
 
 
 def _legend_above(plot_item, legend) -> None:
-    """The legend's entries in the plot's title line (the figure's title kept above them)."""
+    """The legend's entries in the plot's title line (the figure's title kept above them),
+    on more lines where one would be wider than the plot."""
     if not hasattr(plot_item, "title_before_legend"):
         title = plot_item.titleLabel
         plot_item.title_before_legend = title.text if title.isVisible() else None
     legend.setVisible(False)
-    entries = "&nbsp;&nbsp; ".join(_entry_html(s, label) for s, label in legend.items
-                                   if label.text)
+    entries = [_entry(s, label) for s, label in legend.items if label.text]
     base = plot_item.title_before_legend
-    plot_item.setTitle(f"{base}<br>{entries}" if base else entries, size="8pt")
+    available = width = _title_width(plot_item)
+    for _ in range(4):  # measured as plain text, drawn as HTML: narrowed until it fits
+        lines = _wrapped(entries, width)
+        plot_item.setTitle(f"{base}<br>{lines}" if base else lines, size="8pt")
+        drawn = plot_item.titleLabel.item.boundingRect().width()
+        if drawn <= available or "<br>" not in lines and len(entries) < 2:
+            break
+        width *= 0.97 * available / drawn
+    _refit(plot_item)
+
+
+def _refit(plot_item) -> None:
+    """The view's plots laid out to its size again, once the layout pass that placed the
+    legend is over (not inside it): a plot held wider by its title's former width (the view
+    clamps it to its minimum) shrinks back into view now that the title is narrower;
+    nothing changes where it fits already."""
+    if getattr(plot_item, "refit_pending", False):
+        return
+    plot_item.refit_pending = True
+
+    def refit() -> None:
+        try:
+            plot_item.refit_pending = False
+            scene = plot_item.scene()
+        except RuntimeError:  # the plot is gone
+            return
+        for view in scene.views() if scene is not None else []:
+            central, rect = getattr(view, "centralWidget", None), getattr(view, "range", None)
+            if central is not None and rect is not None and central.geometry() != rect:
+                central.setGeometry(rect)
+
+    QTimer.singleShot(0, refit)
 
 
 def _legend_inside(plot_item, legend) -> None:

@@ -19,6 +19,7 @@ from models.display_units import (
     AngleUnit,
     figure_in_unit,
     figures_in_unit,
+    header_in_unit,
     in_unit,
 )
 from models.messages import reason_of
@@ -351,6 +352,19 @@ class WorkbenchPresenter(QObject):
             return None, {}, ""
         return tolerance, {name: getattr(b, "expanded", None) for name, b in budgets.items()}, \
             str(getattr(meta, "decision_quantity", "half_range"))
+
+    def printed_rounding(self, result: Any) -> Any:
+        """How the certificate of ``result`` rounds what the window shows too, with the
+        details it would be made with (none yet: the inputs the readings give), so that the
+        summary, verdict and figures show what it prints (the kind's printed_rounding)."""
+        of = getattr(self.kind, "printed_rounding", None)
+        if of is None:
+            return None
+        from models.certificate.metadata import CertificateMetadata
+
+        meta = self.certificate_details()
+        return of(result, meta if meta is not None else CertificateMetadata(),
+                  self.result_settings)
 
     def in_unit_text(self, text: str) -> str:
         """A model's text in the chosen unit (converted from its figures), then in the
@@ -747,12 +761,21 @@ class WorkbenchPresenter(QObject):
 
             incomplete = getattr(result, "incomplete", None)
             progress = (unit_text(incomplete.progress()) + "\n") if incomplete else ""
-            self.view.set_summary(progress + unit_text(self.kind.summary(result)))
-            self.view.set_verdict(unit_text(self.kind.verdict(result))
+            # the figures the certificate prints, as it prints them (F2 of review 62)
+            printed_as = self.printed_rounding(result)
+            rounded = {} if printed_as is None else {"printed": printed_as}
+            self.view.set_summary(progress + unit_text(self.kind.summary(result, **rounded)))
+            self.view.set_verdict(unit_text(self.kind.verdict(result, **rounded))
                                   if isinstance(self.kind, ShowsHeadline)
                                   else "")
+            printed_of = getattr(self.kind, "printed_headline", None)
+            printed = {}  # by the name shown; a figure shown in another unit: its value
+            for name, text in (printed_of(result, printed_as) if printed_of else {}).items():
+                shown, factor = header_in_unit(name, self.angle_unit)
+                if factor == 1.0:
+                    printed[shown] = text
             self.view.set_figures(figures_in_unit(self.kind.headline_figures(result),
-                                                  self.angle_unit))
+                                                  self.angle_unit), printed)
             self.view.set_warnings(input_warnings + [unit_text(w) for w in
                                                      getattr(result, "warnings", [])]
                                    + ([unit_text(incomplete.progress())] if incomplete else []))

@@ -439,12 +439,15 @@ class WorkbenchView(QWidget):
         self.verdict.setText(text)
         self.verdict.setVisible(bool(text))
 
-    def set_figures(self, figures: dict[str, float]) -> None:
-        """The headline figures, each with its unit in its name."""
+    def set_figures(self, figures: dict[str, float],
+                    printed: dict[str, str] | None = None) -> None:
+        """The headline figures, each with its unit in its name: as the certificate prints
+        those in ``printed`` (by name), the others to four significant digits."""
+        printed = printed or {}
         self.figures.setRowCount(len(figures))
         for row, (name, value) in enumerate(figures.items()):
             self.figures.setItem(row, 0, QTableWidgetItem(declared(name)))
-            item = QTableWidgetItem(f"{value:.4g}")
+            item = QTableWidgetItem(printed.get(name, f"{value:.4g}"))
             item.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
             self.figures.setItem(row, 1, item)
         self.figures.setVisible(bool(figures))

@@ -100,6 +100,7 @@ from models.capture.take_cells import (
     cell_text,
     column_is_dms,
     elevation_from_zenith_deg,
+    fixed_text,
     next_empty_point,
 )
 from models.capture.take_rows import UNDONE, session_takes, take_key
@@ -611,7 +612,7 @@ class InstrumentLink:
         for i, v in enumerate(reading.values):
             cell = cells.get(i)
             if cell is None:
-                shown.append(f"{v:.6f}{unit}" if reading.unit == "deg" else f"{v:.3f}{unit}")
+                shown.append(fixed_text(v, 6 if reading.unit == "deg" else 3) + unit)
             else:
                 shown.append(f"{cell[0]}{cell[1]}")
         text = "   ".join(shown)

@@ -21,11 +21,13 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Sequence
+from decimal import Decimal
 
 from models.readings.angles import format_dms
 
 __all__ = ["RESOLUTIONS_ARCSEC", "cell_step", "cell_text", "column_is_dms", "decimals_for",
-           "elevation_from_zenith_deg", "next_empty_point", "rounded", "waiting_row"]
+           "elevation_from_zenith_deg", "fixed_text", "next_empty_point", "rounded",
+           "waiting_row"]
 
 #: one microradian in arcseconds
 MICRORADIAN_ARCSEC = 1e-6 * 180.0 / math.pi * 3600.0
@@ -110,16 +112,16 @@ def cell_text(value: float, unit: str, resolution_arcsec: float, dms: bool = Fal
     if unit == "deg" and column_unit not in ('"', "arcsec"):
         if resolution_arcsec <= 0:
             # as sent: D°M′S″ to 0.001″ (a readout's 0.00001° is 0.036″), else every digit
-            return format_dms(value, 3) if dms else f"{value:.12g}"
+            return format_dms(value, 3) if dms else _as_sent(value)
         arcsec = rounded(value * 3600.0, resolution_arcsec)
         if dms:
             return format_dms(arcsec / 3600.0, decimals_for(resolution_arcsec))
-        return _fixed(arcsec / 3600.0, decimals_for(resolution_arcsec / 3600.0))
+        return fixed_text(arcsec / 3600.0, decimals_for(resolution_arcsec / 3600.0))
     if unit == "deg":
         value, unit = value * 3600.0, "arcsec"
     if resolution_arcsec <= 0:
-        return f"{value:.12g}"
-    return _fixed(rounded(value, resolution_arcsec), decimals_for(resolution_arcsec))
+        return _as_sent(value)
+    return fixed_text(rounded(value, resolution_arcsec), decimals_for(resolution_arcsec))
 
 
 def cell_step(unit: str, resolution_arcsec: float, dms: bool = False,
@@ -135,8 +137,19 @@ def cell_step(unit: str, resolution_arcsec: float, dms: bool = False,
     return max(0.0, resolution_arcsec)
 
 
-def _fixed(value: float, decimals: int) -> str:
+def fixed_text(value: float, decimals: int) -> str:
+    """``value`` to ``decimals`` in fixed notation, never "-0.00" (a value that rounds to
+    zero is "0.00")."""
     text = f"{value:.{decimals}f}"
     if text.startswith("-") and float(text) == 0.0:
         text = text[1:]
     return text
+
+
+def _as_sent(value: float) -> str:
+    """A value as sent (12 significant digits) in fixed notation, never scientific nor
+    "-0": a readout's 0.00004° is "0.00004", not "4e-05" (review 62, F12)."""
+    if not math.isfinite(value):
+        return f"{value}"
+    text = format(Decimal(f"{value:.12g}"), "f")
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text

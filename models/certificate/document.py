@@ -32,6 +32,7 @@ from models.uncertainty.conformity import (
     significant_decimals,
     uncertainty_decimals,
 )
+from models.uncertainty.rounding import printed_range
 
 __all__ = ["CertificateDocument", "Exact", "decision_rows", "PlotFigure", "PlotSeries", "Table",
            "budget_table", "format_uncertain", "gum_pair", "range_cells", "rounded_cells",
@@ -336,9 +337,8 @@ def range_cells(low: float, high: float, expanded: float, unit: str = "\"",
     difference of the ends as printed, so that it adds up as printed."""
     d = significant_decimals(expanded)
     d = fallback if d is None else d
-    a, b = f"{low:+.{d}f}", f"{high:+.{d}f}"
-    ptp = round(float(b) - float(a), d) + 0.0
-    return f"{a}{unit} … {b}{unit}", f"{ptp:.{d}f}{unit}", d
+    a, b, ptp = printed_range(low, high, d)  # the window's rule too (its headline, summary)
+    return f"{a}{unit} … {b}{unit}", f"{ptp}{unit}", d
 
 
 def table_decimals(expanded, fallback: int = 2) -> int:

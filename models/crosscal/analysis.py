@@ -32,6 +32,7 @@ from models.readings.entry_plan import crosscal_plan
 from models.readings.incomplete import IncompleteUnit, short_last_unit, subset
 from models.uncertainty.conformity import expanded_text
 from models.uncertainty.lab_scope import cmc_parameter
+from models.uncertainty.rounding import printed_range, significant_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -419,11 +420,24 @@ def to_json(result: CrossCalResult) -> dict[str, Any]:
     return out
 
 
-def _span(values: np.ndarray) -> str:
-    return f"{np.min(values):+.3f}\" … {np.max(values):+.3f}\""
+def _printed(values: np.ndarray, readings_u: float, printed: Mapping[str, float] | None,
+             item: str) -> dict[str, str]:
+    """{span, ptp, u} of an item's values as its certificate prints them: U its budget's
+    largest (``printed``, :meth:`CrossCal.printed_rounding`; without it, the readings' own
+    U), the range to U's decimal (0.001″ where none) and the peak-to-peak the difference of
+    the ends as printed (models/crosscal/report.py)."""
+    expanded = (printed or {}).get(item)
+    decimals = 3 if expanded is None else significant_decimals(expanded)
+    low, high, ptp = printed_range(float(np.min(values)), float(np.max(values)),
+                                   3 if decimals is None else decimals)
+    return {"span": f"{low}\" … {high}\"", "ptp": f"{ptp}\"",
+            "u": expanded_text(readings_u if expanded is None else expanded)}
 
 
-def summary(result: CrossCalResult) -> str:
+def summary(result: CrossCalResult, printed: Mapping[str, float] | None = None) -> str:
+    """The result as text; ``printed``: the largest U of each item's certificate
+    ({"encoder": U, "polygon": U}, :meth:`CrossCal.printed_rounding`), which its U and the
+    rounding of its range are then (None: the readings' own U, ranges to 0.001″)."""
     s = result.solution
     nu = "∞" if not math.isfinite(s.dof) else f"{s.dof:.0f}"
     out = [message(QT_TR_NOOP("{faces}-face polygon on the encoder, {count} mountings ({mountings}); "
@@ -435,15 +449,16 @@ def summary(result: CrossCalResult) -> str:
         out.append(message(QT_TR_NOOP("Encoder set to its nominal steps (no encoder readings).")))
     if s.encoder_error_arcsec is not None:
         out.append(message(QT_TR_NOOP("Encoder error {span} (peak-to-peak {ptp}), U up to {u}"),
-                           span=_span(s.encoder_error_arcsec),
-                           ptp=f"{np.ptp(s.encoder_error_arcsec):.3f}\"",
-                           u=expanded_text(float(np.max(result.expanded_u_arcsec[0])))))
+                           **_printed(s.encoder_error_arcsec,
+                                      float(np.max(result.expanded_u_arcsec[0])), printed,
+                                      "encoder")))
     else:
         out.append(message(QT_TR_NOOP("Encoder error NOT determined (withheld)")))
     if s.polygon_deviation_arcsec is not None:
+        face = _printed(s.polygon_deviation_arcsec, float(np.max(result.expanded_u_arcsec[1])),
+                        printed, "polygon")
         out.append(message(QT_TR_NOOP("Face deviations {span} (about their mean), U up to {u}"),
-                           span=_span(s.polygon_deviation_arcsec),
-                           u=expanded_text(float(np.max(result.expanded_u_arcsec[1])))))
+                           span=face["span"], u=face["u"]))
     else:
         out.append(message(QT_TR_NOOP("Face deviations NOT determined (withheld)")))
     closures = result.closure_arcsec[np.isfinite(result.closure_arcsec)]
@@ -468,19 +483,19 @@ def summary(result: CrossCalResult) -> str:
     return lines(out)
 
 
-def verdict(result: CrossCalResult) -> str:
+def verdict(result: CrossCalResult, printed: Mapping[str, float] | None = None) -> str:
     s = result.solution
     e, d = s.encoder_error_arcsec, s.polygon_deviation_arcsec  # each None: not determined
     if e is None or d is None:  # (the solution is separable exactly when both are given)
         return message(QT_TR_NOOP("This design cannot separate every harmonic: the undetermined "
                                   "results are withheld (see the warnings)."))
+    # as each item's certificate prints them (its U; its range to U's decimal)
+    encoder = _printed(e, float(np.max(result.expanded_u_arcsec[0])), printed, "encoder")
+    face = _printed(d, float(np.max(result.expanded_u_arcsec[1])), printed, "polygon")
+    low, high = face["span"].split(" … ")
     return message(QT_TR_NOOP("Encoder error peak-to-peak {ptp} (U ≤ {ue}); face deviations "
                               "{low} … {high} (U ≤ {ud})"),
-                   ptp=f"{np.ptp(e):.3f}\"",
-                   ue=expanded_text(float(np.max(result.expanded_u_arcsec[0]))),
-                   low=f"{np.min(d):+.3f}\"",
-                   high=f"{np.max(d):+.3f}\"",
-                   ud=expanded_text(float(np.max(result.expanded_u_arcsec[1]))))
+                   ptp=encoder["ptp"], ue=encoder["u"], low=low, high=high, ud=face["u"])
 
 
 #: what the cross-calibration sends and the polygon workbench accepts
@@ -640,6 +655,27 @@ class CrossCal(Workbench[CrossCalResult], IssuesCertificates[CrossCalResult],
         from models.crosscal.export import write_polygon_reference
 
         return write_polygon_reference(result, settings, path, metadata)
+
+    def printed_rounding(self, result, metadata, settings=None):
+        """The largest U each item's certificate states ({"encoder": U, "polygon": U}):
+        its budget's, with the certificate details' inputs (the comparators' U)."""
+        try:
+            budgets = self.uncertainty_budgets(result, metadata, settings)
+        except (ValueError, ArithmeticError, IndexError):
+            return None
+        out = {item: float(budgets[name].max_expanded) for item, name in (
+            ("encoder", "encoder_error_arcsec"), ("polygon", "polygon_deviation_arcsec"))
+            if name in budgets}
+        return out or None
+
+    def printed_headline(self, result, printed=None):
+        s, out = result.solution, {}
+        for item, values, name in (
+                ("encoder", s.encoder_error_arcsec, "encoder error peak-to-peak (\")"),
+                ("polygon", s.polygon_deviation_arcsec, "face deviation peak-to-peak (\")")):
+            if values is not None:
+                out[name] = _printed(values, math.nan, printed, item)["ptp"][:-1]
+        return out
 
     def headline(self, r):
         s = r.solution

@@ -810,6 +810,12 @@ class Fringe(Workbench[FringeResult], IssuesCertificates[FringeResult],
             share=f"{r.raw_peak_to_peak / r.period_length * 100:.2f}",
             after=f"{r.compensated_peak_to_peak:.3f}{r.unit_symbol}")
 
+    def printed_headline(self, result, printed=None):
+        # the certificate's statistics print both to 0.001 (models/fringe/report.py)
+        return {f"as-found peak-to-peak ({result.unit})": f"{result.raw_peak_to_peak:.3f}",
+                f"compensated peak-to-peak ({result.unit})":
+                    f"{result.compensated_peak_to_peak:.3f}"}
+
     def headline(self, r):
         return {f"as-found peak-to-peak ({r.unit})": r.raw_peak_to_peak,
                 f"compensated peak-to-peak ({r.unit})": r.compensated_peak_to_peak}

@@ -47,7 +47,7 @@ from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import uncertainty_decimals
+from models.uncertainty.rounding import printed_range, significant_decimals, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     AcceptsReference,
@@ -716,8 +716,12 @@ def _with_u(value: float, u: float, unit: str) -> tuple[str, str]:
     return f"{value:.{decimals}f}{unit}", f"{u:.{decimals}f}{unit}"
 
 
-def summary(result: PolygonResult) -> str:
+def summary(result: PolygonResult, printed: int | None = None) -> str:
+    """The result as text; ``printed``: the certificate's decimal for the corrected error's
+    range (:meth:`Polygon.printed_rounding`; None: two), its peak-to-peak as printed."""
     s, tol = result.stats, GRADE_ACCURACY_ARCSEC[result.grade]
+    decimals = 2 if printed is None else printed
+    low, high, ptp = printed_range(s.min, s.max, decimals)
     doubt = certificate_doubt(result)
     out = ([doubt] if doubt else []) + [joined((
         message(QT_TR_NOOP("{faces}-face polygon, {sets} set(s), grade {grade} ({accuracy})"),
@@ -756,8 +760,7 @@ def summary(result: PolygonResult) -> str:
         QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}): half the peak-to-peak "
                    "exceeds the grade's ±{accuracy}, U left out — not a statement of "
                    "conformity (a certificate decides with U, by the rule in its details)"),
-        low=f"{s.min:+.2f}\"", high=f"{s.max:+.2f}\"", ptp=f"{s.peak_to_peak:.2f}\"",
-        accuracy=f"{tol:g}\""))
+        low=f"{low}\"", high=f"{high}\"", ptp=f"{ptp}\"", accuracy=f"{tol:g}\""))
     h = result.harmonics
     if h.amplitude.size > 2:
         out.append(message(QT_TR_NOOP("Harmonics: 1st (eccentricity) {first}, 2nd (ellipticity) "
@@ -765,7 +768,10 @@ def summary(result: PolygonResult) -> str:
                            first=f"{h.amplitude[1]:.3f}\"", second=f"{h.amplitude[2]:.3f}\""))
     if len(result.sets) > 1:
         jjf = [message(QT_TR_NOOP("JJF 1115: division error {value}"),
-                       value=f"{np.ptp(result.mean_corrected_arcsec):.2f}\"")]
+                       value=printed_range(  # the corrected error's, as printed
+                           float(np.min(result.mean_corrected_arcsec)),
+                           float(np.max(result.mean_corrected_arcsec)),
+                           decimals)[2] + "\"")]
         if result.repeatability_arcsec is not None:
             jjf.append(message(QT_TR_NOOP(", repeatability {value}"),
                                value=f"{np.max(result.repeatability_arcsec):.2f}\""))
@@ -914,7 +920,24 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
 
         return error_figure(result)
 
-    def verdict(self, r):
+    def printed_rounding(self, result, metadata, settings=None):
+        from models.polygon.report import polygon_budget  # not for a plain analysis
+
+        try:  # the certificate's statistics: to the decimal of its largest U
+            budget = polygon_budget(result, metadata, settings)
+        except (ValueError, ArithmeticError, IndexError):
+            return None
+        decimals = significant_decimals(budget.max_expanded)
+        return 2 if decimals is None else decimals
+
+    def printed_headline(self, result, printed=None):
+        s = result.stats
+        return {"corrected peak-to-peak (\")": printed_range(
+            s.min, s.max, 2 if printed is None else printed)[2]}
+
+    def verdict(self, r, printed=None):
+        s = r.stats
+        ptp = printed_range(s.min, s.max, 2 if printed is None else printed)[2]
         return joined((
             certificate_doubt(r), " " if certificate_doubt(r) else "",
             "" if r.valid else message(QT_TR_NOOP("RUN INVALID: closure failed. ")),
@@ -923,7 +946,7 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
                     QT_TR_NOOP("Grade {grade} (±{accuracy}) NOT met: corrected error "
                                "peak-to-peak {ptp}; "),
                     grade=r.grade, accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"",
-                    ptp=f"{r.stats.peak_to_peak:.2f}\""),
+                    ptp=f"{ptp}\""),
             message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
             or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
             # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D

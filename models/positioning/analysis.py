@@ -531,7 +531,10 @@ def to_json(result: PositioningResult) -> dict[str, Any]:
     }
 
 
-def summary(result: PositioningResult) -> str:
+def summary(result: PositioningResult, printed: dict[str, int] | None = None) -> str:
+    """The result as text; ``printed``: each figure's decimal on the certificate
+    (:meth:`Positioning.printed_rounding`, its intervals with the reference standards' U;
+    None: those of the intervals from the readings)."""
     sym = result.symbol
     f = result.iso.figures
     present = [name for name, _, _ in result.directions_present()]
@@ -555,7 +558,7 @@ def summary(result: PositioningResult) -> str:
         f"{figure}_{n}" for n in present for figure in ("A", "R", "E"))
     intervals = figure_uncertainties(result)
     # each figure to the decimal of its interval's half-width (GUM 7.2.6), as the certificate
-    decimals = {k: interval_decimals(iv.low, iv.high) for k, iv in (intervals or {}).items()}
+    decimals = _decimals(intervals) | (printed or {})
     out.append(_figures_line("ISO 230-2: ", ((k, f.get(k)) for k in keys), sym, decimals))
     out.append(_figures_line("VDI/DGQ 3441: ", result.vdi.as_dict().items(), sym, decimals))
     if intervals:
@@ -580,6 +583,11 @@ def summary(result: PositioningResult) -> str:
                                   "(Export compensation table… below the set-up)."),
                        standard=message(STANDARDS[result.standard])))
     return lines(out)
+
+
+def _decimals(intervals) -> dict[str, int]:
+    """Each figure's decimal: that of its interval's half-width (GUM 7.2.6)."""
+    return {k: interval_decimals(iv.low, iv.high) for k, iv in (intervals or {}).items()}
 
 
 def _figures_line(prefix: str, figures, symbol: str, decimals: dict[str, int] | None = None):
@@ -681,11 +689,27 @@ class Positioning(Workbench[PositioningResult], IssuesCertificates[PositioningRe
     def compare_after(self, before, after):
         return _before_after().before_after(before, after)
 
-    def verdict(self, r):
+    def printed_rounding(self, result, metadata, settings=None):
+        """Each figure's decimal on the certificate: that of its interval with the budget's
+        inputs (the reference standards' U), as models/positioning/report.py prints it."""
+        from models.positioning.report import positioning_budget
+
+        try:
+            return _decimals(figure_uncertainties(
+                result, positioning_budget(result, metadata, settings)))
+        except (ValueError, ArithmeticError, IndexError):
+            return None
+
+    def printed_headline(self, result, printed=None):
+        decimals = _decimals(figure_uncertainties(result)) | (printed or {})
+        return {f"{k} ({result.deviation_unit})": figure_text(v, "", decimals[k])
+                for k, v in result.iso.figures.items() if k in decimals and math.isfinite(v)}
+
+    def verdict(self, r, printed=None):
         # each figure to its interval's decimal, as the summary and the certificate print it
-        # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″")
-        decimals = {k: interval_decimals(iv.low, iv.high)
-                    for k, iv in (figure_uncertainties(r) or {}).items()}
+        # (GUM 7.2.6; the window said "A 22.447″" beside a summary's "A = 22.4″"), with the
+        # certificate's reference standards' U where ``printed`` gives them
+        decimals = _decimals(figure_uncertainties(r)) | (printed or {})
         return joined((
             _figures_line(f"{STANDARDS[r.standard].split(' (')[0]}: ",
                           ((k, r.iso.figures.get(k)) for k in (

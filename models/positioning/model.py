@@ -191,8 +191,12 @@ class PositioningResult:
     def minimum_runs_met(self) -> bool:
         return all(n >= MIN_RUNS for n in self.least_runs.values())
 
-    def per_target_table(self) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
-        """(header, rows) of the per-target statistics as the window lists them."""
+    def per_target_table(self, printed: dict[str, list[str]] | None = None
+                         ) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
+        """(header, rows) of the per-target statistics as the window lists them; ``printed``:
+        the certificate's cells by its header (models.positioning.report.printed_per_target),
+        shown for x̄, s, B_i and M_i as printed there (without: to 0.001)."""
+        printed = printed or {}
         sym = self.symbol.strip()
         header = ["target (" + self.target_symbol.strip() + ")"]
         present = self.directions_present()
@@ -206,13 +210,20 @@ class PositioningResult:
             return "—" if not np.isfinite(value) else (f"{value:+.3f}" if signed
                                                        else f"{value:.3f}")
         rows = []
+        def shown(key: str, i: int, value: float, signed: bool = True) -> str:
+            cells = printed.get(key)
+            return cell(value, signed) if cells is None else cells[i]
+
         for i, target in enumerate(self.positions):
             row = [f"{target:g}"]
-            for _, _, stats in present:
-                row += [cell(stats.mean[i]), cell(stats.std[i], False), str(stats.runs[i])]
+            for name, _, stats in present:
+                arrow = "↑" if name == "up" else "↓"
+                row += [shown(f"x̄{arrow}", i, stats.mean[i]),
+                        shown(f"s{arrow}", i, stats.std[i], False), str(stats.runs[i])]
             if self.bidirectional:
                 rbi = self.iso.bidirectional_repeatability
-                row += [cell(self.iso.reversal[i]), cell(self.iso.bidirectional_mean[i]),
+                row += [shown("B_i", i, self.iso.reversal[i]),
+                        shown("M_i", i, self.iso.bidirectional_mean[i]),
                         "—" if rbi is None else cell(rbi[i], False)]
             rows.append(tuple(row))
         return tuple(header), rows

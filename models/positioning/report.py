@@ -40,6 +40,7 @@ from models.certificate.document import (
     opinion,
     reference_standard_components,
     resolution_component,
+    table_decimals,
 )
 from models.certificate.metadata import CertificateMetadata, MetadataError
 from models.messages import QT_TR_NOOP, listed, message
@@ -377,6 +378,45 @@ def _figure_rows(result: PositioningResult,
     return vdi_rows + iso_rows if result.standard == "vdi3441" else iso_rows + vdi_rows
 
 
+def _result_columns(result: PositioningResult, u_by_dir: Mapping[str, np.ndarray]) -> list:
+    """The results table's columns after the target: x̄, s and U of each direction, then B_i
+    and M_i; the window's per-target table shows the same cells (:func:`printed_per_target`)."""
+    columns = []
+    for name, mean, s, _ in _points(result):
+        arrow = "↑" if name == "up" else "↓"
+        columns += [figure_column(f"x̄{arrow}", mean, u_by_dir[name]),
+                    text_column(f"s{arrow}", [_deviation_text(v) for v in s]),
+                    uncertainty_column(f"U{arrow}", u_by_dir[name])]
+    if result.bidirectional:
+        # B_i = x̄↑ − x̄↓ of the means as printed (it adds up as printed) and M_i = (x̄↑ +
+        # x̄↓)/2, each to the decimal of the coarser of the two means (GUM 7.2.6: no more
+        # digits than their U gives)
+        means = {name: mean for name, mean, *_ in _points(result)}
+        columns += [difference_column("B_i", means["up"], means["down"], u_by_dir["up"],
+                                      u_by_dir["down"]),
+                    figure_column("M_i", result.iso.bidirectional_mean,
+                                  np.fmax(u_by_dir["up"], u_by_dir["down"]))]
+    return columns
+
+
+def expanded_by_direction(result: PositioningResult, budget: UncertaintyBudget
+                          ) -> dict[str, np.ndarray]:
+    """The budget's U of each direction's mean deviations, over the targets."""
+    m = result.positions.size
+    return {name: budget.expanded[k * m:(k + 1) * m]
+            for k, (name, *_) in enumerate(_points(result))}
+
+
+def printed_per_target(result: PositioningResult, budget: UncertaintyBudget
+                       ) -> dict[str, list[str]]:
+    """The results table's cells as the certificate with ``budget`` prints them, by its
+    column's header ("x̄↑", "s↑", "U↑", …, "B_i", "M_i"): what the window's per-target table
+    shows (PositioningResult.per_target_table), never more digits than printed."""
+    shown = table_decimals(budget.expanded)
+    return {column.header: list(column.cells(shown))
+            for column in _result_columns(result, expanded_by_direction(result, budget))}
+
+
 def positioning_certificate(result: PositioningResult, metadata: CertificateMetadata,
                             source_name: str = "", method_reference: str = "",
                             settings: Mapping[str, Any] | None = None) -> CertificateDocument:
@@ -385,7 +425,7 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
     sym = result.symbol
     points = _points(result)
     m = result.positions.size
-    u_by_dir = {name: big_u[k * m:(k + 1) * m] for k, (name, *_) in enumerate(points)}
+    u_by_dir = expanded_by_direction(result, budget)
     standard = STANDARDS[result.standard]
     runs = listed(message(QT_TR_NOOP("forward {n}") if k == "up" else
                           QT_TR_NOOP("backward {n}"), n=n)
@@ -399,21 +439,8 @@ def positioning_certificate(result: PositioningResult, metadata: CertificateMeta
                message(QT_TR_NOOP("fewer than {n}: flagged"), n=MIN_RUNS))]
     parameters = Table(QT_TR_NOOP("Test"), (QT_TR_NOOP("Item"), QT_TR_NOOP("Value"),
                                             QT_TR_NOOP("Note")), rows_p)
-    columns = [text_column(QT_TR_NOOP("Target"), [f"{target:g}" for target in result.positions])]
-    for name, mean, s, _ in points:
-        arrow = "↑" if name == "up" else "↓"
-        columns += [figure_column(f"x̄{arrow}", mean, u_by_dir[name]),
-                    text_column(f"s{arrow}", [_deviation_text(v) for v in s]),
-                    uncertainty_column(f"U{arrow}", u_by_dir[name])]
-    if result.bidirectional:
-        # B_i = x̄↑ − x̄↓ of the means as printed (it adds up as printed) and M_i = (x̄↑ +
-        # x̄↓)/2, each to the decimal of the coarser of the two means (GUM 7.2.6: no more
-        # digits than their U gives)
-        means = {name: mean for name, mean, *_ in points}
-        columns += [difference_column("B_i", means["up"], means["down"], u_by_dir["up"],
-                                      u_by_dir["down"]),
-                    figure_column("M_i", result.iso.bidirectional_mean,
-                                  np.fmax(u_by_dir["up"], u_by_dir["down"]))]
+    columns = [text_column(QT_TR_NOOP("Target"), [f"{target:g}" for target in result.positions]),
+               *_result_columns(result, u_by_dir)]
     results = PointTable(message(QT_TR_NOOP("Results per target ({unit}; target in {target})"),
                                  unit=sym.strip(), target=result.target_symbol.strip()),
                          columns,

@@ -18,7 +18,7 @@ from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import uncertainty_decimals
+from models.uncertainty.rounding import printed_range, significant_decimals, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -255,7 +255,16 @@ def _intervals_line(result: TheodoliteResult) -> str:
     return joined(parts)
 
 
-def summary(result: TheodoliteResult) -> str:
+def _printed(stats, decimals: int) -> dict[str, str]:
+    """{low, high, ptp} of an error curve's statistics as its certificate prints them."""
+    low, high, ptp = printed_range(stats.min, stats.max, decimals)
+    return {"low": f"{low}\"", "high": f"{high}\"", "ptp": f"{ptp}\""}
+
+
+def summary(result: TheodoliteResult, printed: int | None = None) -> str:
+    """The result as text; ``printed``: the certificate's decimal for the error ranges and
+    the RMS (:meth:`Theodolite.printed_rounding`; None: two), each peak-to-peak as printed."""
+    d = 2 if printed is None else printed
     ident = result.identification
     u = ident.uncertainty_deg * 3600.0
     s, c, r = ident.setup, result.corrected_stats, result.raw_stats
@@ -276,10 +285,9 @@ def summary(result: TheodoliteResult) -> str:
         message(QT_TR_NOOP("  R² = {r2}, residual RMS = {rms}"), r2=f"{ident.r_squared:.8f}",
                 rms=f"{ident.residual_rms_arcsec:.3f}\""),
         message(QT_TR_NOOP("Raw error        {low} … {high} (peak-to-peak {ptp})"),
-                low=f"{r.min:+.2f}\"", high=f"{r.max:+.2f}\"", ptp=f"{r.peak_to_peak:.2f}\""),
+                **_printed(r, d)),
         message(QT_TR_NOOP("Corrected error  {low} … {high} (peak-to-peak {ptp}, RMS {rms})"),
-                low=f"{c.min:+.2f}\"", high=f"{c.max:+.2f}\"", ptp=f"{c.peak_to_peak:.2f}\"",
-                rms=f"{c.rms:.2f}\""),
+                **_printed(c, d), rms=f"{c.rms:.{d}f}\""),
     ]
     if result.iso230 is not None:
         figs = ", ".join(f"{k} = {v:.2f}\"" for k, v in result.iso230.figures.items())
@@ -367,13 +375,30 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
 
         return error_figure(result)
 
-    def verdict(self, r: TheodoliteResult) -> str:
+    def printed_rounding(self, result, metadata, settings=None):
+        from models.theodolite.report import theodolite_budget  # not for a plain analysis
+
+        try:  # the certificate's statistics: to the decimal of its largest U
+            budget = theodolite_budget(result, metadata, settings)
+        except (ValueError, ArithmeticError, IndexError):
+            return None
+        decimals = significant_decimals(budget.max_expanded)
+        return 2 if decimals is None else decimals
+
+    def printed_headline(self, result, printed=None):
+        d = 2 if printed is None else printed
+        return {"corrected peak-to-peak (\")": _printed(result.corrected_stats, d)["ptp"][:-1],
+                "raw peak-to-peak (\")": _printed(result.raw_stats, d)["ptp"][:-1]}
+
+    def verdict(self, r: TheodoliteResult, printed: int | None = None) -> str:
+        d = 2 if printed is None else printed
+        corrected = _printed(r.corrected_stats, d)
+        share = (float(_printed(r.raw_stats, d)["ptp"][:-1])  # of the peak-to-peaks printed
+                 - float(corrected["ptp"][:-1]))
         return message(
             QT_TR_NOOP("Corrected error {low} … {high} (peak-to-peak {ptp}); the set-up "
                        "contributed {share} to the raw peak-to-peak"),
-            low=f"{r.corrected_stats.min:+.2f}\"", high=f"{r.corrected_stats.max:+.2f}\"",
-            ptp=f"{r.corrected_stats.peak_to_peak:.2f}\"",
-            share=f"{r.raw_stats.peak_to_peak - r.corrected_stats.peak_to_peak:+.2f}\"")
+            **corrected, share=f"{share + 0.0:+.{d}f}\"")
 
     def headline(self, r: TheodoliteResult) -> dict[str, float]:
         return {"corrected peak-to-peak (\")": r.corrected_stats.peak_to_peak,

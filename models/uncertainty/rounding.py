@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 
-__all__ = ["interval_decimals", "significant_decimals", "uncertainty_decimals"]
+__all__ = ["interval_decimals", "printed_range", "significant_decimals", "uncertainty_decimals"]
 
 
 def significant_decimals(expanded: float) -> int | None:
@@ -35,3 +35,14 @@ def interval_decimals(low: float, high: float) -> int:
     most two significant digits (GUM 7.2.6, JJF 1059.1): a figure with an interval 4″ wide
     to 0.1″, not 0.001″. Two decimals where the interval has no width."""
     return uncertainty_decimals((high - low) / 2.0)
+
+
+def printed_range(low: float, high: float, decimals: int) -> tuple[str, str, str]:
+    """A range as it is printed ("-1.08", "-0.10", "0.98"), the window's and the
+    certificate's alike: its ends signed, to ``decimals``, and the peak-to-peak the
+    difference of the ends as printed, so that it adds up as printed (2.65 for the ends
+    -2.12 and +0.53, whatever the unrounded 2.64…). Never "-0.00": a zero is "+0.00"."""
+    a, b = (f"{v:+.{decimals}f}" for v in (low, high))
+    a, b = ("+" + t[1:] if t.startswith("-") and float(t) == 0.0 else t for t in (a, b))
+    ptp = round(float(b) - float(a), decimals) + 0.0
+    return a, b, f"{ptp:.{decimals}f}"

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication
 
 pytestmark = pytest.mark.slow  # every test here takes more than 0.4 s (a window, a certificate, a program)
@@ -171,6 +172,38 @@ def test_the_positioning_deviation_plot_shows_every_point(window, size, language
         for edge in band.curves:
             x, y = edge.getData()
             assert y0 <= y.min() and y.max() <= y1, (y.min(), y.max(), y0, y1)
+
+
+@pytest.mark.parametrize("language", ["en", "zh_CN"])
+def test_a_legend_above_a_narrow_plot_never_pushes_its_right_out_of_view(window, samples_dir,
+                                                                          language):
+    """Review 62, F13: with the certificate's tolerance and U bands the legend has seven
+    entries; above a plot as narrow as with the instrument panel docked, in one title line,
+    it made the plot wider than its view, which cut off the right: the 330° and 360° targets
+    and the legend's end ("tolerance ±T al…"). Its entries now wrap to the plot's width."""
+    import json
+
+    from models.certificate.metadata import CertificateMetadata
+
+    details = CertificateMetadata.from_dict(json.loads(
+        (samples_dir / "certificate_positioning.json").read_text(encoding="utf-8")))
+    positioning = window.presenter("positioning")
+    positioning.certificate_details = lambda: details
+    window.set_language(language)
+    positioning.load_sample()
+    window.resize(1000, 662)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    positioning.view.plot_tabs.setCurrentIndex(0)
+    deviation = positioning.view.deviation_plot
+    for _ in range(5):  # the layout settles over a few passes (the legend placed on each)
+        _settle(deviation)
+        QTest.qWait(50)
+    item = deviation.plot.getPlotItem()
+    assert item.legend_corner == "above" and len(deviation.curves) >= 7  # ±T and U drawn
+    visible = deviation.plot.viewport().width()
+    assert item.sceneBoundingRect().right() <= visible + 1, (item.sceneBoundingRect(), visible)
+    assert not _inside(item, deviation.curves)  # the 360° target with the others
 
 
 def _lab(rgb) -> np.ndarray:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from types import SimpleNamespace
 
+from models.certificate.metadata import CertificateMetadata
 from models.display_units import table_in_unit
 from models.positioning import plots
 from models.positioning.analysis import POSITIONING
@@ -11,6 +12,7 @@ from models.positioning.compensation import LINUXCNC_NAME, LINUXCNC_OPTIONS, che
 from models.positioning.controllers import CONTROLLERS
 from models.positioning.controllers.common import parse_options
 from models.positioning.model import PositioningResult
+from models.positioning.report import positioning_budget, printed_per_target
 from models.tolerance_band import with_tolerance
 from widgets.i18n import explained, tr, translated
 from widgets.positioning.before_after import AfterCompensation
@@ -39,9 +41,21 @@ class PositioningPresenter(WorkbenchPresenter):
                                                                   result),
                                              plots.reversal_figure(result),
                                              plots.readings_figure(result, self.parsed)))
-        self.view.show_per_target(*table_in_unit(*result.per_target_table(), self.angle_unit))
+        self.view.show_per_target(*table_in_unit(
+            *result.per_target_table(self._printed_per_target(result)), self.angle_unit))
         if not result.minimum_runs_met:
             self.view.append_to_readings_caption(tr(" — fewer than 5 runs: flagged"))
+
+    def _printed_per_target(self, result: PositioningResult) -> dict[str, list[str]] | None:
+        """The certificate's results cells with the details it would be made with (none:
+        the readings' own U): the per-target table shows what it prints (review 62, F2)."""
+        meta = self.certificate_details()
+        try:
+            return printed_per_target(result, positioning_budget(
+                result, meta if meta is not None else CertificateMetadata(),
+                self.result_settings))
+        except (ValueError, ArithmeticError, IndexError):
+            return None  # no certificate of these readings: the figures to 0.001
 
     def _with_tolerance(self, figure, result: PositioningResult):
         """The mean deviations' plot with ±T and each direction's U band where the

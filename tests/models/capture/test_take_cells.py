@@ -70,6 +70,18 @@ def test_cells_rounded_to_the_instrument_resolution():
     assert cell_text(0.001, "deg", 0.01, column_unit='"') == "3.60"
 
 
+def test_a_reading_as_sent_is_fixed_point_and_never_minus_zero():
+    """Review 62, F12: a readout's 0.00004° was written "4e-05", its closure "-1e-05", and
+    the live value showed "-0°" (resolution not known: the value as sent)."""
+    assert cell_text(0.00004, "deg", 0.0) == "0.00004"
+    assert cell_text(-0.00001, "deg", 0.0) == "-0.00001"
+    assert cell_text(-0.0, "deg", 0.0) == "0"
+    assert cell_text(300.00002, "deg", 0.0) == "300.00002"
+    assert cell_text(2e-7, "arcsec", 0.0) == "0.0000002"
+    assert cell_text(-1e-13, "arcsec", 0.0) == "-0.0000000000001"
+    assert cell_text(1.5e15, "arcsec", 0.0) == "1500000000000000"
+
+
 @given(st.floats(-720.0, 720.0, allow_nan=False),
        st.sampled_from([0.001, 0.01, 0.1, 1.0, MICRORADIAN_ARCSEC]), st.booleans())
 def test_an_angle_cell_reads_back_within_half_the_resolution(value_deg, resolution, dms):
