@@ -145,7 +145,7 @@ def _forms(value: float, angle: bool, key: str) -> tuple[float, ...]:
     if not angle or key in _AS_IS:
         return (value,)
     turned = value % 360.0
-    forms = (value,) if turned == value else (value, turned)
+    forms: tuple[float, ...] = (value,) if turned == value else (value, turned)
     # a mean on 0° itself, a hair below or above it, is written 0° or 360° as the float
     # falls (the window's mean and this one are worked out apart): both are the reading
     if turned < _SAME * 360.0:
