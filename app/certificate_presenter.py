@@ -452,19 +452,20 @@ class CertificatePresenter:
         note, separate = "", ""
         if entered.example:  # the training switch: a specimen, neither draft nor revision
             draft, revision = [], None
-        if report and not draft and not entered.example and entered.document_type != "test":
-            # asked for a certificate, issued as a test report: said, with why, before a
-            # file name is asked (rev62 F7: learnt only from the status line after issue)
-            if not self.view.confirm_test_report(self._why_test_report(
+        # asked for a certificate, issued as a test report: said, with why, before a file
+        # name is asked (rev62 F7: learnt only from the status line after issue)
+        if report and not draft and not entered.example and entered.document_type != "test" \
+                and not self.view.confirm_test_report(self._why_test_report(
                     kind, result, entered, source_name, settings)):
-                return False
+            return False
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:
                 return False
-        elif not draft and not entered.example:
+        elif not draft and not entered.example and not entered.certificate_number:
             # a second original of a calibration already reported: asked before the file
-            # name, where the register can tell (rev62 F10)
+            # name, where the register can tell (rev62 F10; a number typed is checked first
+            # by the register, as before)
             numbers = self._reporting(kind.key, entered)
             if numbers:
                 separate = " ".join(self.view.ask_separate_calibration(numbers, tr(
