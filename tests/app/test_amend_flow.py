@@ -9,7 +9,9 @@ report's (F7)."""
 from __future__ import annotations
 
 import json
+import os
 import re
+from pathlib import Path
 
 import pytest
 from pypdf import PdfReader
@@ -21,7 +23,9 @@ from models.register.store import Register
 
 pytestmark = pytest.mark.slow  # certificates are issued from the window
 
-SHOTS = None  # a folder to keep the screenshots in (None: the test's tmp_path)
+#: a folder to keep the screenshots in (unset: the test's tmp_path)
+SHOTS = Path(os.environ["ANGLEBENCH_TEST_SHOTS"]) if os.environ.get("ANGLEBENCH_TEST_SHOTS") \
+    else None
 
 
 def _pdf_text(path) -> str:
