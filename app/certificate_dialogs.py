@@ -82,6 +82,18 @@ class CertificateDialogs:
             QMessageBox.StandardButton.No)
         return answer == QMessageBox.StandardButton.Yes
 
+    def confirm_test_report(self, reasons: list[str]) -> bool:
+        answer = self.window.ask(
+            tr("A test report, not a calibration certificate"),
+            tr("These details and this result give a test report, not a calibration "
+               "certificate: traceability to the SI cannot be stated.\n\n{reasons}\n\nIssue "
+               "it as a test report? (No: nothing is written; state the missing inputs in the "
+               "workbench's set-up, or the standards in the details, to issue a calibration "
+               "certificate)").format(reasons="\n".join(f"• {r}" for r in reasons)),
+            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+            QMessageBox.StandardButton.No)
+        return answer == QMessageBox.StandardButton.Yes
+
     def confirm_implausible(self, reason: str) -> bool:
         answer = self.window.ask(
             tr("Certify these figures?"),

@@ -20,7 +20,7 @@ from models.capture.raw_record import raw_digest
 from models.capture.take_cells import elevation_from_zenith_deg
 from models.certificate.metadata import CertificateMetadata
 from models.project.atomic_write import write_bytes_atomic
-from models.project.file import Project, WorkbenchState, project_to_json
+from models.project.file import READINGS_SOURCE, Project, WorkbenchState, project_to_json
 from models.project.output_guard import check_output, register_files
 from models.register.store import CertificateRecord, IssueRequest, Register
 
@@ -189,8 +189,11 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     register's record (so with the number and date of issue the register gave, and the
     PDF's and DCC's SHA-256), its SHA-256 recorded in the register (a chained entry:
     ``register verify`` checks it), then written to ``results_path``."""
+    # where the readings came from, as the certificate names them: an amendment opened from
+    # this record names the same (rev62 F4)
     project = Project({kind.key: WorkbenchState([list(r) for r in rows], dict(settings))},
-                      {"certificates": {kind.key: metadata.to_dict()}},
+                      {"certificates": {kind.key: metadata.to_dict()},
+                       READINGS_SOURCE: source_name},
                       {kind.key: raw_capture} if raw_capture else {})
     digest = raw_digest(raw_capture) if raw_capture else ""
     edited = tuple(e.text() for e in readings_edited_after_capture(

@@ -89,6 +89,10 @@ class CertificateView(Protocol):
         """An amendment or replacement with another serial number or date of calibration
         than ``revision.number``'s: a correction of it (stated on it)? No: not an amendment."""
 
+    def confirm_test_report(self, reasons: list[str]) -> bool:
+        """The certificate asked for will be a test report (``reasons``: why traceability
+        is not established): go on? (No: back, nothing written)"""
+
     def confirm_draft(self, missing: list[str], report: bool = False) -> bool:
         """Export a DRAFT although these details are missing? (``report``: a test report's
         draft, called one)"""
@@ -127,7 +131,9 @@ class CertificatePresenter:
         self._mark_modified = mark_modified
         self.problems: dict[str, str] = {}  # stored details that no longer read
         self.raw: dict = {}
-        self.pending: PendingRevision | None = None
+        #: the pending amendment or replacement changed (the window shows it: rev62 F3)
+        self.revision_changed: Callable[[], None] = lambda: None
+        self._pending: PendingRevision | None = None
         # the language of a certificate whose details do not name one: the window's
         # ("zh" in a Chinese window; the main window sets it)
         self.default_language = "en"
@@ -142,6 +148,26 @@ class CertificatePresenter:
         self.workbench_settings: Callable[[str], dict] = lambda _key: {}
         #: a workbench's details were changed (the main window redraws its plots: ±T, U)
         self.details_changed: Callable[[str], None] = lambda _key: None
+
+    @property
+    def pending(self) -> PendingRevision | None:
+        """The amendment or replacement the next certificate of its workbench issues."""
+        return self._pending
+
+    @pending.setter
+    def pending(self, revision: PendingRevision | None) -> None:
+        changed = revision != self._pending
+        self._pending = revision
+        if changed:
+            self.revision_changed()
+
+    def pending_words(self) -> str:
+        """The pending amendment or replacement as the window shows it until it is issued
+        or ended ("" when none): rev62 F3, nothing on screen said the next export amends."""
+        if self._pending is None:
+            return ""
+        return (tr("Replacing {number}") if self._pending.replacement else
+                tr("Amending {number}")).format(number=self._pending.number)
 
     # -- the lab's defaults ------------------------------------------------------
     def lab_defaults(self, workbench: str = "") -> dict:
@@ -423,15 +449,42 @@ class CertificatePresenter:
                                                    "are kept.").format(reason=explained(exc)))
             return False
         revision = self.pending if self.pending and self.pending.workbench == kind.key else None
-        note = ""
+        note, separate = "", ""
         if entered.example:  # the training switch: a specimen, neither draft nor revision
             draft, revision = [], None
+        # asked for a certificate, issued as a test report: said, with why, before a file
+        # name is asked (rev62 F7: learnt only from the status line after issue)
+        if report and not draft and not entered.example and entered.document_type != "test" \
+                and not self.view.confirm_test_report(self._why_test_report(
+                    kind, result, entered, source_name, settings)):
+            return False
         if revision is not None and not draft:
             note = self.view.ask_change_note(revision).strip()
             if not note:
                 return False
+        elif not draft and not entered.example and not entered.certificate_number:
+            # a second original of a calibration already reported: asked before the file
+            # name, where the register can tell (rev62 F10; a number typed is checked first
+            # by the register, as before)
+            numbers = self._reporting(kind.key, entered)
+            if numbers:
+                separate = " ".join(self.view.ask_separate_calibration(numbers, tr(
+                    "{numbers} already reports this calibration (serial {serial}, calibrated "
+                    "{date}). Readings or details changed since are a correction: amend or "
+                    "replace {numbers} (File › Certificate register, Amend… or Replace…); a "
+                    "calibration of its own (e.g. as left after an adjustment) is issued as "
+                    "separate, saying why").format(
+                        numbers=", ".join(numbers), serial=entered.item_serial or "—",
+                        date=entered.calibration_date or "—")).split())
+                if not separate:
+                    self.view.tell(tr("Not issued"), tr(
+                        "No certificate was written or recorded: {numbers} already reports this "
+                        "calibration. To correct it, select it in File › Certificate register "
+                        "and press Amend… or Replace….").format(numbers=", ".join(numbers)))
+                    return False
         suggested = (f"{kind.key}-specimen" if entered.example else entered.certificate_number
-                     or (f"{kind.key}-draft" if draft else f"{kind.key}-certificate"))
+                     or (f"{kind.key}-draft" if draft else
+                         f"{kind.key}-report" if report else f"{kind.key}-certificate"))
         path = self.view.choose_save_path(tr("Export certificate"),
                                           f"{suggested.replace('/', '-')}.pdf", "PDF (*.pdf)")
         if not path:
@@ -458,7 +511,7 @@ class CertificatePresenter:
                     path=path, missing=", ".join(tr(m) for m in draft)), path), 10000)
                 return True
             return self._issue(kind, result, entered, settings, rows or [], source_name, path,
-                               revision, note, raw_capture)
+                               revision, note, raw_capture, separate)
         except (OSError, ValueError) as exc:
             self.view.tell(tr("Cannot export"), tr("{path}: {reason}. Nothing else was changed.")
                            .format(path=path, reason=explained(exc)))
@@ -481,7 +534,7 @@ class CertificatePresenter:
         return True
 
     def _issue(self, kind, result, entered, settings, rows, source_name, path, revision,
-               note, raw_capture=None) -> bool:
+               note, raw_capture=None, separate: str = "") -> bool:
         from app.certificate_issue import IssuedNotWritten, issue_certificate
         from models.register.store import (
             NotTheSameCalibration,
@@ -489,7 +542,7 @@ class CertificatePresenter:
             SameCalibrationIssued,
         )
 
-        separate, corrected = "", False
+        corrected = False
         try:
             while True:
                 try:
@@ -566,6 +619,23 @@ class CertificatePresenter:
         self.view.show_status(self._with_dcc(said.format(number=number, path=path), path),
                               10000)
         return True
+
+    def _reporting(self, workbench: str, entered: CertificateMetadata) -> tuple[str, ...]:
+        """The current certificates that already report this calibration (() when the
+        register cannot be read now: the issue says why)."""
+        from models.register.store import RegisterError
+
+        try:
+            with self.open_register() as register:
+                return register.reports_calibration(workbench, entered)
+        except (RegisterError, OSError):
+            return ()
+
+    @staticmethod
+    def _why_test_report(kind, result, entered, source_name, settings) -> list[str]:
+        """Why the document of these details is a test report, as it states it."""
+        document = kind.certificate_document(result, entered, source_name, settings)
+        return [translated(r) for r in (*document.untraceable, *document.traceability_gaps)]
 
     @staticmethod
     def _is_test_report(kind, result, entered, source_name, settings) -> bool:

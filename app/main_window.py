@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
     QApplication,
     QDialog,
     QFileDialog,
+    QLabel,
     QMainWindow,
     QMessageBox,
     QTabWidget,
@@ -99,6 +100,9 @@ class MainWindow(QMainWindow):
         self.projects.new_settings = self.certificates.test_plan
         # a pending Amend…/Replace… ends when another project is opened (rev62 F1)
         self.projects.project_replaced = self.certificates.end_revision
+        # … and is shown until it is issued or ended: in the title and the status bar (rev62 F3)
+        self.projects.title_note = self.certificates.pending_words
+        self.certificates.revision_changed = self._show_revision
         # the plots' tolerance band and U band: from the details the certificate would use
         for presenter in self.presenters:
             presenter.certificate_details = (
@@ -151,6 +155,14 @@ class MainWindow(QMainWindow):
         self.setCentralWidget(self.tabs)
         self._ready = tr("Ready")
         self.statusBar().showMessage(self._ready)
+        # the pending Amend…/Replace…, in sight until it is issued or ended (rev62 F3)
+        self.revision_label = QLabel()
+        self.revision_label.setObjectName("pending_revision")
+        self.revision_label.setStyleSheet(
+            "QLabel { background: #fff3c4; color: #5a4500; padding: 1px 6px; "
+            "border: 1px solid #d9b600; border-radius: 3px; font-weight: bold; }")
+        self.revision_label.hide()
+        self.statusBar().addPermanentWidget(self.revision_label)
         fit_to_screen(self, 1400, 900)
         # readings from the instruments (#34): the panel, hidden until Instrument › Connect…
         from app.capture.panel import CapturePanel
@@ -218,6 +230,21 @@ class MainWindow(QMainWindow):
             self.manual.show_page(self.current.kind.key, self.language)
         for index, presenter in enumerate(self.presenters):
             self.tabs.setTabText(index, declared(presenter.kind.title))
+        self._show_revision()
+
+    def _show_revision(self) -> None:
+        """The pending amendment or replacement in the title and the status bar."""
+        words = self.certificates.pending_words()
+        label = getattr(self, "revision_label", None)
+        if label is not None:
+            pending = self.certificates.pending
+            label.setText(words)
+            label.setToolTip(tr(
+                "The next certificate exported from the {workbench} workbench issues this; "
+                "it ends when issued, or when another project is opened.").format(
+                    workbench=declared(KINDS[pending.workbench].title))
+                if pending is not None and pending.workbench in KINDS else "")
+            label.setVisible(bool(words))
         self.projects.update_title()
 
     def set_angle_unit(self, unit: AngleUnit) -> None:
@@ -441,7 +468,10 @@ class MainWindow(QMainWindow):
         return False
 
     def _source_name(self) -> str:
-        return self.projects.path.name if self.projects.path else "readings typed in AngleBench"
+        if self.projects.path:
+            return self.projects.path.name
+        # a certificate's project from the register: its readings' source as it named it
+        return self.projects.readings_source or "readings typed in AngleBench"
 
     def export_certificate(self) -> bool:
         # the readings and settings the result was analysed from, not the sheet's and the
@@ -451,9 +481,15 @@ class MainWindow(QMainWindow):
         if result is None:
             return False
         analysed = self.current.result_state()
-        return self.certificates.export_certificate(
+        issued = self.certificates.export_certificate(
             self.current.kind, result, analysed.settings, self._source_name(),
             analysed.rows, self.capture_panel.raw_sessions(self.current.kind.key))
+        # the register window open beside shows the record issued (rev62 F11: only once
+        # closed and opened again)
+        if issued and getattr(self, "register_window", None) is not None \
+                and self.register_window.isVisible():
+            self.register_presenter.refresh(self.register_presenter.search)
+        return issued
 
     def export_results(self) -> bool:
         result = self._current_result()

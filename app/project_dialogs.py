@@ -34,9 +34,9 @@ class ProjectDialogs:
         return ask_save_file(self.window, tr("Save project"), folder,
                              tr("AngleBench project (*.anglebench.json *.json)"), self.window.ask)
 
-    def ask_save_changes(self) -> bool | None:
+    def ask_save_changes(self, question: str = "") -> bool | None:
         answer = self.window.ask(
-            tr("Unsaved readings"), tr("Save the changes to the project first?"),
+            tr("Unsaved readings"), question or tr("Save the changes to the project first?"),
             QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard
             | QMessageBox.StandardButton.Cancel, QMessageBox.StandardButton.Save)
         if answer == QMessageBox.StandardButton.Save:

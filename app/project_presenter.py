@@ -21,6 +21,7 @@ from PySide6.QtCore import QObject, QStandardPaths, QTimer, Signal
 
 from models import __version__
 from models.project.file import (
+    READINGS_SOURCE,
     Project,
     ProjectFileError,
     WorkbenchState,
@@ -69,7 +70,7 @@ class ProjectView(Protocol):
     def ask_save_path(self, folder: str) -> str:
         """A file to save the project in (empty if cancelled)."""
 
-    def ask_save_changes(self) -> bool | None:
+    def ask_save_changes(self, question: str = "") -> bool | None:
         """Save the unsaved changes first? True: save, False: discard them, None: cancel."""
 
     def ask_recover(self, name: str, when: str) -> bool:
@@ -134,6 +135,12 @@ class ProjectPresenter(QObject):
         #: another project was put in the window (New, Open, Recover, a register record):
         #: the window ends a pending Amend… or Replace… with it (rev62 F1)
         self.project_replaced: Callable[[], None] = lambda: None
+        #: what the window is doing with this project, shown in its title ("" nothing: the
+        #: window sets it to the pending Amend… or Replace…, rev62 F3)
+        self.title_note: Callable[[], str] = lambda: ""
+        #: where the readings of an untitled project came from, as the certificate it was
+        #: issued with named them (the register's record; None: typed in the window)
+        self.readings_source: str | None = None
         self.autosave_timer = QTimer(self)
         self.autosave_timer.setSingleShot(True)
         self.autosave_timer.setInterval(AUTOSAVE_DELAY_MS)
@@ -184,6 +191,7 @@ class ProjectPresenter(QObject):
 
     def apply_project(self, project: Project) -> None:
         self.project_replaced()
+        self.readings_source = None
         # the details first: the workbenches' plots draw the tolerance they set
         self.metadata = dict(project.metadata)
         self.metadata.pop("autosaved_at", None)
@@ -196,13 +204,17 @@ class ProjectPresenter(QObject):
 
     def update_title(self, *_args) -> None:
         name = self.path.name if self.path else tr("untitled")
-        self.view.show_title(f"AngleBench {__version__} — {name}{' *' if self.is_modified else ''}")
+        note = self.title_note()
+        self.view.show_title(f"AngleBench {__version__} — {note + ' — ' if note else ''}"
+                             f"{name}{' *' if self.is_modified else ''}")
 
-    def confirm_discard(self) -> bool:
-        """True when there is nothing unsaved, or the user saved it or lets it go."""
+    def confirm_discard(self, question: str = "") -> bool:
+        """True when there is nothing unsaved, or the user saved it or lets it go;
+        ``question``: what the window asks, naming what replaces the work (else its own)."""
         if not self.is_modified:
             return True
-        answer = self.view.ask_save_changes()
+        answer = self.view.ask_save_changes(question) if question else \
+            self.view.ask_save_changes()
         if answer:
             return self.save()
         return answer is False
@@ -255,10 +267,12 @@ class ProjectPresenter(QObject):
             shown.append(tr("… and {count} more").format(count=len(project.repairs) - 20))
         self.view.tell(tr("Opened with repairs"), "\n".join(shown))
 
-    def open_project_state(self, project_json: str, workbench: str) -> bool:
-        """Load the project behind a certificate (asking about unsaved work first) and show its
-        workbench; the project is untitled (saving it asks for a name)."""
-        if not self.confirm_discard():
+    def open_project_state(self, project_json: str, workbench: str,
+                           question: str = "") -> bool:
+        """Load the project behind a certificate (asking about unsaved work first, with
+        ``question`` when given) and show its workbench; the project is untitled (saving it
+        asks for a name), its readings' source the one the certificate named."""
+        if not self.confirm_discard(question):
             return False
         try:
             project = project_from_json(project_json, "the register's record", self._kinds())
@@ -269,6 +283,10 @@ class ProjectPresenter(QObject):
         self.apply_project(project)
         self.path = None
         self.disk_sha256 = None
+        # the certificate's "Readings:" (the project file's name; rev62 F4: an amendment
+        # said "readings typed in AngleBench" of captured readings)
+        source = self.metadata.pop(READINGS_SOURCE, None)
+        self.readings_source = source if isinstance(source, str) and source else None
         self._tell_repairs(project)
         self.view.show_workbench(workbench)
         self.update_title()

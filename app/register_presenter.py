@@ -14,7 +14,7 @@ from PySide6.QtCore import QT_TR_NOOP
 from app.certificate_presenter import CertificatePresenter, PendingRevision
 from models.register.store import CertificateRecord, RegisterError
 from models.register.wording import kind_words, revision_words, status_words
-from widgets.i18n import explained, tr, translated
+from widgets.i18n import declared, explained, tr, translated
 
 __all__ = ["RegisterPresenter", "RegisterView"]
 
@@ -48,6 +48,17 @@ class RegisterView(Protocol):
     def show_pdf_check(self, text: str, warning: bool) -> None: ...
 
 
+def _workbench_title(key: str) -> str:
+    """A workbench as its tab names it, in the window's language (rev62 F14: the keys
+    ``polygon``/``positioning`` in the Chinese window); a key no longer known as it is."""
+    from models.registry import KINDS
+
+    try:
+        return declared(KINDS[key].title)
+    except KeyError:
+        return key
+
+
 def _days(date: str) -> float:
     return float(dt.date.fromisoformat(date).toordinal()) if date else float("nan")
 
@@ -57,7 +68,7 @@ class RegisterPresenter:
     asks about unsaved work; False when the user kept it)."""
 
     def __init__(self, view: RegisterView, certificates: CertificatePresenter,
-                 open_project_state: Callable[[str, str], bool]) -> None:
+                 open_project_state: Callable[..., bool]) -> None:
         self.view = view
         self.certificates = certificates
         self.open_project_state = open_project_state
@@ -86,7 +97,7 @@ class RegisterPresenter:
         self.view.show_records(COLUMNS, [
             (r.number, translated(status_words(r.status)),
              translated(revision_words(r.revision)), translated(kind_words(r.document_kind)),
-             r.issue_date, r.calibration_date, r.workbench,
+             r.issue_date, r.calibration_date, _workbench_title(r.workbench),
              r.item_serial, r.customer) for r in self.records])
 
     def check_pdfs(self) -> None:
@@ -148,16 +159,26 @@ class RegisterPresenter:
                                               "replace that one.").format(
                 number=record.number, newer=record.superseded_by))
             return False
-        if not self.open_project_state(record.project_json, record.workbench):
+        # said before the window's work is replaced (rev62 F3: a bare "Save the changes?")
+        question = (tr("Replace… opens the readings and details {number} was issued from in "
+                       "place of the readings now in the window. Save the window's changes to "
+                       "their project first? (Discard: they are lost)") if replacement else
+                    tr("Amend… opens the readings and details {number} was issued from in "
+                       "place of the readings now in the window. Save the window's changes to "
+                       "their project first? (Discard: they are lost)")).format(
+            number=record.number)
+        if not self.open_project_state(record.project_json, record.workbench, question):
             return False
         self.certificates.start_revision(PendingRevision(record.workbench, record.number,
                                                          replacement))
-        text = (tr("The readings and details of {number} are open. Change what is needed; File › "
-                   "Export certificate then issues a replacement of {number} and asks what "
-                   "changed.") if replacement else
-                tr("The readings and details of {number} are open. Change what is needed; File › "
-                   "Export certificate then issues an amendment to {number} and asks what "
-                   "changed."))
+        text = (tr("The readings and details of {number} are open in place of the window's. "
+                   "Change what is needed; File › Export certificate then issues a replacement "
+                   "of {number} and asks what changed. Until then the status bar says "
+                   "\"Replacing {number}\"; opening another project ends it.") if replacement else
+                tr("The readings and details of {number} are open in place of the window's. "
+                   "Change what is needed; File › Export certificate then issues an amendment "
+                   "to {number} and asks what changed. Until then the status bar says "
+                   "\"Amending {number}\"; opening another project ends it."))
         self.view.tell(tr("Register"), text.format(number=record.number))
         return True
 

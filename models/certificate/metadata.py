@@ -34,6 +34,7 @@ __all__ = [
     "ReferenceStandard",
     "clean_text",
     "format_certificate_number",
+    "revision_statement",
     "separate_statement",
 ]
 
@@ -532,3 +533,28 @@ def separate_statement(meta: CertificateMetadata) -> Any:
     return message(QT_TR_NOOP("A calibration of its own, separate from certificate {numbers} "
                               "of the same item and date of calibration, which stays valid: "
                               "{reason}"), numbers=meta.separate_from, reason=meta.change_note)
+
+
+def revision_statement(meta: CertificateMetadata) -> Any:
+    """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
+    replacement identifies the one it replaces. The PDF prints it under the title, the DCC
+    states it (refType anglebench_revision) beside coreData/reportAmendedSubstituted, which
+    has no room for it. "" for an original."""
+    if not meta.supersedes:
+        return ""
+    number = meta.revision.removeprefix("amendment").strip()
+    if meta.revision.startswith("amendment") and number:
+        what = message(QT_TR_NOOP("Amendment {number} to certificate {certificate}"),
+                       number=number, certificate=meta.supersedes)
+    elif meta.revision.startswith("amendment"):
+        what = message(QT_TR_NOOP("Amendment to certificate {certificate}"),
+                       certificate=meta.supersedes)
+    else:
+        what = message(QT_TR_NOOP("This certificate replaces certificate {certificate}"),
+                       certificate=meta.supersedes)
+    if meta.change_note:
+        return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                                  "unchanged. Changed: {change}"), what=what,
+                       change=meta.change_note)
+    return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
+                              "unchanged."), what=what)

@@ -23,7 +23,7 @@ import numpy as np
 from lxml import etree
 
 from models.certificate.document import CertificateDocument, Table
-from models.certificate.metadata import separate_statement
+from models.certificate.metadata import revision_statement, separate_statement
 from models.dcc import vocabulary as v
 from models.messages import QT_TR_NOOP, declared_text, message, rendered, translator
 from models.software import SoftwareIdentity, software_identity
@@ -321,6 +321,18 @@ def _statements(b: _Builder, admin) -> None:
                reference=_say(doc.method_reference, "en") if doc.method_reference else None)
     _statement(b, sts, v.REFTYPE_VALIDITY, "validity of the certificate",
                VALIDITY_REPORT if doc.is_test_report else VALIDITY)
+    revision = revision_statement(doc.metadata)
+    if revision:
+        # an amendment or replacement identifies the change (ISO/IEC 17025 7.8.8.2), as the
+        # PDF does under its title: coreData/reportAmendedSubstituted (DCC 3.3.0) holds the
+        # type of change and the number only, so a statement says what changed, in each
+        # language, the certificate it supersedes as its reference
+        st = _statement(b, sts, v.REFTYPE_REVISION,
+                        "what the amendment or replacement changed of the certificate it "
+                        "supersedes, named as its reference (ISO/IEC 17025 7.8.8)", revision)
+        reference = etree.Element(D + "reference")
+        reference.text = doc.metadata.supersedes
+        st.find(D + "declaration").addprevious(reference)
     separate = separate_statement(doc.metadata)
     if separate:
         # a calibration of its own beside certificates of the same item and date that stay

@@ -48,6 +48,7 @@ __all__ = [
     "FORMAT_NAME",
     "SCHEMA_VERSION",
     "Project",
+    "READINGS_SOURCE",
     "ProjectFileError",
     "WorkbenchState",
     "check_project",
@@ -62,6 +63,10 @@ __all__ = [
 
 FORMAT_NAME = "anglebench-project"
 SCHEMA_VERSION = 2
+#: the metadata key of a certificate's project state (the register's record) that holds where
+#: its readings came from, as the certificate names them ("Readings: …"): an amendment opened
+#: from the register names the same source (rev62 F4)
+READINGS_SOURCE = "readings_source"
 
 
 class ProjectFileError(ValueError):

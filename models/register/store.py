@@ -844,6 +844,14 @@ class Register:
         """The time of issue (a test sets its own)."""
         return dt.datetime.now(dt.timezone.utc)
 
+    def reports_calibration(self, workbench: str, meta: CertificateMetadata
+                            ) -> tuple[str, ...]:
+        """The current certificates of ``workbench`` that already report the item and date
+        of calibration of ``meta`` (as :meth:`issue` finds them for an original): the window
+        asks about a second original before it asks for a file name (rev62 F10)."""
+        with self._read() as conn:
+            return self._same_calibration(conn, workbench, meta)
+
     def _same_calibration(self, conn, workbench: str, meta: CertificateMetadata
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``

@@ -562,7 +562,8 @@ def check_fit(ident: Identification, accuracy_arcsec: float | None, row_numbers=
     if not (ratio > RESIDUAL_REFUSED or (ratio > RESIDUAL_UNEXPLAINED and unexplained)):
         return
     worst = int(np.argmax(np.abs(ident.residuals_arcsec)))
-    column = "elevation_deg" if ident.method == "elevation" else "azimuth_deg"
+    # the column as the sheet heads it, not its key (rev62 F14: "elevation_deg" in a message)
+    column = "E / V [°]" if ident.method == "elevation" else "A [°]"
     raise ValueError(message(
         QT_TR_NOOP("no set-up explains the {column} readings: residual RMS {rms} is {ratio}× the "
                    "theodolite accuracy {accuracy} (refused beyond {far}×, or beyond {near}× with "

@@ -153,9 +153,12 @@ def test_a_calibration_issued_again_asks_whether_it_is_separate(parts, samples_d
                                         for p in PdfReader(tmp_path / "c.pdf").pages))
     assert ("separate from certificate AB-2026-0001 of the same item and date of calibration, "
             "which stays valid: as left after the adjustment") in text
-    # the wait cursor is off while the question is on screen, and back on after it
-    calls = view.wait_cursor.call_args_list
-    assert calls.count(mock.call(False)) >= 3
+    # the question is asked before the file name, so before the wait cursor is on (rev62 F10)
+    order = [c for c in view.mock_calls
+             if c[0] in ("ask_separate_calibration", "choose_save_path", "wait_cursor")]
+    assert [c[0] for c in order[-4:]] == ["ask_separate_calibration", "choose_save_path",
+                                          "wait_cursor", "wait_cursor"]
+    assert order[-2:] == [mock.call.wait_cursor(True), mock.call.wait_cursor(False)]
 
 
 def test_cancelled_details_write_nothing(parts, samples_dir):

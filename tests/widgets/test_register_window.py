@@ -48,7 +48,11 @@ def test_presenter_lists_searches_and_refuses_a_superseded_amendment(window, sam
     presenter.refresh("")
     view.selected_row.return_value = 1
     assert presenter.revise()
-    opened.assert_called_once_with(first.project_json, "polygon")
+    # opened with the question that says what Amend… replaces (rev62 F3)
+    opened.assert_called_once()
+    assert opened.call_args.args[:2] == (first.project_json, "polygon")
+    assert opened.call_args.args[2].startswith("Amend… opens the readings and details "
+                                               "AB-2026-0001 was issued from in place of")
     assert window.certificates.pending.number == "AB-2026-0001"
     view.ask_pdf_to_verify.return_value = str(tmp_path / "a.pdf")
     assert presenter.verify_pdf().number == "AB-2026-0001"

@@ -11,7 +11,7 @@ from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
 from app.writers.certificate_pdf.wording import _between, _colon, _listed, label
 from models.certificate.document import CertificateDocument
-from models.certificate.metadata import PLACES, separate_statement
+from models.certificate.metadata import PLACES, revision_statement, separate_statement
 from models.messages import QT_TR_NOOP, joined, message
 
 
@@ -62,27 +62,6 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
             joined(_between("\n", document.edited_readings)))]
           if document.edited_readings else []),
     ])
-
-
-def revision_statement(meta) -> str:
-    """ISO/IEC 17025 7.8.8: an amendment says what changed and which certificate it amends; a
-    replacement identifies the one it replaces."""
-    number = meta.revision.removeprefix("amendment").strip()
-    if meta.revision.startswith("amendment") and number:
-        what = message(QT_TR_NOOP("Amendment {number} to certificate {certificate}"),
-                       number=number, certificate=meta.supersedes)
-    elif meta.revision.startswith("amendment"):
-        what = message(QT_TR_NOOP("Amendment to certificate {certificate}"),
-                       certificate=meta.supersedes)
-    else:
-        what = message(QT_TR_NOOP("This certificate replaces certificate {certificate}"),
-                       certificate=meta.supersedes)
-    if meta.change_note:
-        return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
-                                  "unchanged. Changed: {change}"), what=what,
-                       change=meta.change_note)
-    return message(QT_TR_NOOP("{what}, which it supersedes; the original stays on record "
-                              "unchanged."), what=what)
 
 
 def _created(document: CertificateDocument) -> dt.datetime:

@@ -253,7 +253,7 @@ def test_theodolite_elevations_no_setup_explains_are_refused_with_figures(tmp_pa
     err = refused(capsys, "theodolite", str(path))
     assert str(path) in err
     if row is not None:
-        assert "no set-up explains the elevation_deg readings" in err and words in err
+        assert "no set-up explains the E / V [°] readings" in err and words in err
         assert f"is at row {row}:" in err and "theodolite accuracy 0.5\"" in err
 
 
