@@ -1673,8 +1673,16 @@
         <translation>无法导出</translation>
     </message>
     <message>
+        <source>Replacing {number}</source>
+        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the pending amendment or replacement changed (the window shows it: rev62 F3) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
+        <translation>正在替代 {number}</translation>
+    </message>
+    <message>
+        <source>Amending {number}</source>
+        <translation>正在修改 {number}</translation>
+    </message>
+    <message>
         <source>; its DCC (validated) written to {path}</source>
-        <extracomment>the lab defaults&apos; key of the test plans, per workbench ({workbench: {plan_…: value}}) the lab&apos;s signal tolerance presets (models/fringe/signal_tolerance.py LAB_DEFAULTS_KEY) details typed for one workbench that the next workbench&apos;s certificate is offered the lab&apos;s time zone (an IANA name; empty: ANGLEBENCH_TIMEZONE, else the system&apos;s): the date of issue is the lab&apos;s local date the lab&apos;s DCC settings, kept with the lab defaults (paths only: never a key&apos;s content): PTB&apos;s schema folder (empty: not validated), the signing key and its X.509 certificate (PEM files; empty: the environment&apos;s, else unsigned), the certificate a signature read in is checked against (empty: the environment&apos;s) the project open in the window (the main window sets it): no export may replace it the readings files imported in this window (the main window sets it): inputs too the workbench whose details were last asked for (&quot;&quot; before any) a workbench&apos;s settings now (the main window sets it): its test plan is saved with the lab defaults a workbench&apos;s details were changed (the main window redraws its plots: ±T, U)</extracomment>
         <translation>；其数字证书（已校验）已写入 {path}</translation>
     </message>
     <message>
@@ -1688,6 +1696,14 @@
     <message>
         <source>{reason}. Nothing was written; the details are kept.</source>
         <translation>{reason}。未写入任何内容；已填写的信息予以保留。</translation>
+    </message>
+    <message>
+        <source>{numbers} already reports this calibration (serial {serial}, calibrated {date}). Readings or details changed since are a correction: amend or replace {numbers} (File › Certificate register, Amend… or Replace…); a calibration of its own (e.g. as left after an adjustment) is issued as separate, saying why</source>
+        <translation>{numbers} 已报告这次校准（序列号 {serial}，校准于 {date}）。此后更改的读数或信息属于更正：请修订或替代 {numbers}（文件 › 证书登记册，“修订…”或“替代…”）；独立的另一次校准（例如调整之后的状态）作为单独校准签发，并说明原因</translation>
+    </message>
+    <message>
+        <source>No certificate was written or recorded: {numbers} already reports this calibration. To correct it, select it in File › Certificate register and press Amend… or Replace….</source>
+        <translation>没有写入或记录任何证书：{numbers} 已报告这次校准。要更正它，请在 文件 › 证书登记册 中选中它，然后按“修订…”或“替代…”。</translation>
     </message>
     <message>
         <source>Draft test report written to {path} — DRAFT: {missing} missing; nothing was recorded in the register</source>
@@ -1755,7 +1771,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) what the window is doing with this project, shown in its title (&quot;&quot; nothing: the window sets it to the pending Amend… or Replace…, rev62 F3) where the readings of an untitled project came from, as the certificate it was issued with named them (the register&apos;s record; None: typed in the window) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -2035,6 +2051,10 @@ Yes: replace it with this window&apos;s project. No: save this window&apos;s pro
         <translation>已保存 {path}</translation>
     </message>
     <message>
+        <source>The next certificate exported from the {workbench} workbench issues this; it ends when issued, or when another project is opened.</source>
+        <translation>从 {workbench} 工作台导出的下一份证书即签发此项；签发后或打开另一个项目时结束。</translation>
+    </message>
+    <message>
         <source>Import readings into {workbench}</source>
         <translation>将读数导入{workbench}</translation>
     </message>
@@ -2145,6 +2165,22 @@ Is this amendment a correction of {number}&apos;s serial number or date of calib
     <message>
         <source>Correct the serial number or date of calibration?</source>
         <translation>更正序列号或校准日期？</translation>
+    </message>
+    <message>
+        <source>A test report, not a calibration certificate</source>
+        <translation>检测报告，而非校准证书</translation>
+    </message>
+    <message>
+        <source>These details and this result give a test report, not a calibration certificate: traceability to the SI cannot be stated.
+
+{reasons}
+
+Issue it as a test report? (No: nothing is written; state the missing inputs in the workbench&apos;s set-up, or the standards in the details, to issue a calibration certificate)</source>
+        <translation>这些证书信息和这个结果只能出具检测报告，而非校准证书：无法声明溯源至 SI。
+
+{reasons}
+
+以检测报告签发吗？（否：不写入任何内容；在工作台的设置中给出缺少的输入量，或在证书信息中给出计量标准，即可签发校准证书）</translation>
     </message>
     <message>
         <source>Use these reference standards?</source>
@@ -2319,12 +2355,20 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>{number} 已被 {newer} 取代：请修订或替代后者。</translation>
     </message>
     <message>
-        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues a replacement of {number} and asks what changed.</source>
-        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的替代证书并询问改变的内容。</translation>
+        <source>Replace… opens the readings and details {number} was issued from in place of the readings now in the window. Save the window&apos;s changes to their project first? (Discard: they are lost)</source>
+        <translation>“替代…”会打开签发 {number} 时所用的读数和证书信息，取代窗口中现有的读数。先把窗口中的更改保存到其项目吗？（放弃：这些更改将丢失）</translation>
     </message>
     <message>
-        <source>The readings and details of {number} are open. Change what is needed; File › Export certificate then issues an amendment to {number} and asks what changed.</source>
-        <translation>{number} 的读数和信息已打开。修改所需内容；然后 文件 › 导出证书 将签发 {number} 的修订证书并询问改变的内容。</translation>
+        <source>Amend… opens the readings and details {number} was issued from in place of the readings now in the window. Save the window&apos;s changes to their project first? (Discard: they are lost)</source>
+        <translation>“修订…”会打开签发 {number} 时所用的读数和证书信息，取代窗口中现有的读数。先把窗口中的更改保存到其项目吗？（放弃：这些更改将丢失）</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open in place of the window&apos;s. Change what is needed; File › Export certificate then issues a replacement of {number} and asks what changed. Until then the status bar says &quot;Replacing {number}&quot;; opening another project ends it.</source>
+        <translation>{number} 的读数和证书信息已打开，取代了窗口中原有的内容。请修改需要更改之处；随后 文件 › 导出证书 将签发 {number} 的替代证书，并询问改了什么。在此之前状态栏显示“正在替代 {number}”；打开另一个项目即结束此次替代。</translation>
+    </message>
+    <message>
+        <source>The readings and details of {number} are open in place of the window&apos;s. Change what is needed; File › Export certificate then issues an amendment to {number} and asks what changed. Until then the status bar says &quot;Amending {number}&quot;; opening another project ends it.</source>
+        <translation>{number} 的读数和证书信息已打开，取代了窗口中原有的内容。请修改需要更改之处；随后 文件 › 导出证书 将签发 {number} 的修改证书，并询问改了什么。在此之前状态栏显示“正在修改 {number}”；打开另一个项目即结束此次修改。</translation>
     </message>
     <message>
         <source>Cannot print</source>
@@ -5960,7 +6004,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>{source}: damaged project file (line {lineno}, column {colno}: {msg}); nothing was changed</source>
-        <extracomment>workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
+        <extracomment>the metadata key of a certificate&apos;s project state (the register&apos;s record) that holds where its readings came from, as the certificate names them (&quot;Readings: …&quot;): an amendment opened from the register names the same source (rev62 F4) workbench key -&gt; its capture sessions (models/capture/raw_record.py), optional what was repaired as the file was read (each a sentence naming the place), not saved SHA-256 (hex) of the file&apos;s bytes as read by :func:`load_project` (&quot;&quot; otherwise): the version a save must not replace unasked when it was changed since</extracomment>
         <translation>{source}：项目文件已损坏（第 {lineno} 行，第 {colno} 列：{msg}）；未作任何更改</translation>
     </message>
     <message>
