@@ -46,6 +46,9 @@ class CertificateDialogs:
         if problems:  # a stored detail that no longer reads: shown as stored, marked
             dialog.show_problems(problems, raw)
         if dialog.exec() != QDialog.DialogCode.Accepted:
+            # saved as lab defaults, then cancelled: what was typed is not lost
+            if dialog.saved_details is not None:
+                self.window.certificates.keep_details(dialog.saved_details)
             return None
         self.window.certificates.set_dcc_options(*dialog.dcc_options())
         self.window.certificates.set_dcc_signing_paths(*dialog.dcc_signing_paths())

@@ -195,7 +195,12 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
                       {"certificates": {kind.key: metadata.to_dict()},
                        READINGS_SOURCE: source_name},
                       {kind.key: raw_capture} if raw_capture else {})
-    digest = raw_digest(raw_capture) if raw_capture else ""
+    # the instrument output is the readings' origin only when a reading was taken from it:
+    # a session with no take (the tab was in front while instruments were connected) is
+    # kept with the record, not named on the certificate (rev62day F15: "Instrument output:
+    # SHA-256 …" on a report none of whose readings was captured)
+    taken = any(session.get("takes") for session in raw_capture or ())
+    digest = raw_digest(raw_capture) if taken else ""
     edited = tuple(e.text() for e in readings_edited_after_capture(
         kind, settings, rows, raw_capture)) if raw_capture else ()
     request = IssueRequest(kind.key, metadata, project_to_json(project),

@@ -284,6 +284,13 @@ class CertificatePresenter:
         self.store_details(key, CertificateMetadata.from_dict({**meta.to_dict(),
                                                                "standards": placed}))
 
+    def keep_details(self, meta: CertificateMetadata) -> None:
+        """The details of the workbench being edited kept with the project although its
+        dialog was cancelled (they were saved as the lab defaults first: rev62day F15); the
+        number is the register's, as when a certificate is exported."""
+        if self.editing:
+            self.store_details(self.editing, dataclasses.replace(meta, certificate_number=""))
+
     def edit_details(self, meta: CertificateMetadata) -> CertificateMetadata | None:
         return self.view.edit_certificate_details(meta, self.problems, self.raw)
 

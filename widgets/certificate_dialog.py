@@ -179,6 +179,10 @@ class CertificateDialog(QDialog):
         super().__init__(parent)
         self.setWindowTitle(tr("Certificate details"))
         self.fields: dict[str, QLineEdit] = {}
+        #: the details as they were when *Save as lab defaults* was pressed: kept with the
+        #: project even if the dialog is then cancelled (rev62day F15: the customer and item
+        #: typed were lost)
+        self.saved_details: CertificateMetadata | None = None
         self._setup_ui()
         self.set_metadata(metadata)
         self.timezone.setText(timezone)
@@ -607,5 +611,11 @@ class CertificateDialog(QDialog):
             return
         self.lab_timezone_set.emit(zone)
         self.lab_defaults_saved.emit(meta.lab_defaults())
+        self.saved_details = meta
         self.error_label.setStyleSheet("color: #1b5e20;")
-        self.error_label.setText(tr("Saved as the lab's defaults."))
+        # said what became a default and what did not (rev62day F15: no confirmation)
+        self.error_label.setText(tr(
+            "Saved as the lab's defaults: the laboratory, number scheme, reference "
+            "standards, people, decision rule and this workbench's test plan. The customer, "
+            "item, dates, language and tolerance are this certificate's, not defaults: they "
+            "are kept with the project's details, also if you cancel now."))

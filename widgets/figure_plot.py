@@ -167,7 +167,7 @@ class FigureRenderer:
             return
         self._figure = figure
         if self.titles:
-            self.item.setTitle(declared(figure.title), size="9pt")
+            self._set_title(declared(figure.title))
             self.item.setLabel("bottom", declared(figure.x_label))
             self.item.setLabel("left", declared(figure.y_label))
         self._remove_bands()
@@ -254,10 +254,17 @@ class FigureRenderer:
             self.legend.layout.activate()
             place_legend(self.item, self.legend)
 
+    def _set_title(self, title: str) -> None:
+        """The figure's title; a legend placed in the title line is placed again under this
+        one (widgets/legend_placement.py keeps the title it found there: rev62day F14, the
+        English title stayed above the Chinese legend after a change of language)."""
+        self.item.__dict__.pop("title_before_legend", None)
+        self.item.setTitle(title, size="9pt")
+
     def relabel(self) -> None:
         """The titles and legend again in the window's language."""
         if self._figure is not None and self.titles:
-            self.item.setTitle(declared(self._figure.title), size="9pt")
+            self._set_title(declared(self._figure.title))
             self.item.setLabel("bottom", declared(self._figure.x_label))
             self.item.setLabel("left", declared(self._figure.y_label))
         if self.legend is None:

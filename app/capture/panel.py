@@ -1525,17 +1525,24 @@ class CapturePanel(QDockWidget):
             link.taken_frame = max(link.taken_frame, take[2] + session.first)
         keyed = [(link, take_key(session.kind, session.worker.port, session.started_utc, take))
                  for link, session, take in new_takes]
-        model.set_cells(changes, tr("Take reading (row {row})").format(row=row + 1),
-                        takes=[(key, row) for _, key in keyed],
-                        columns={key: frozenset(k for t, _, k in targets if t is link)
-                                 for link, key in keyed})
-        self._widen(table, changes)
-        if 0 in taking:
-            self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
-        # what the take could not place, or took far from where the plan expects it: said
-        # until the next take (the reading is kept)
-        self.take_note.setText("\n".join(notes))
-        table.next_row(row)
+        label = tr("Take reading (row {row})").format(row=row + 1)
+        # the take and the plan's pre-fill of the next row (or the next nominal) that it
+        # makes are one undo step: one Edit › Undo takes the reading back (rev62day F15: the
+        # first undid the pre-fill, only the second the take)
+        model.undo_stack.beginMacro(label)
+        try:
+            model.set_cells(changes, label, takes=[(key, row) for _, key in keyed],
+                            columns={key: frozenset(k for t, _, k in targets if t is link)
+                                     for link, key in keyed})
+            self._widen(table, changes)
+            if 0 in taking:
+                self.taken.append((presenter.kind.key, row, tuple(taking[0][0])))
+            # what the take could not place, or took far from where the plan expects it:
+            # said until the next take (the reading is kept)
+            self.take_note.setText("\n".join(notes))
+            table.next_row(row)
+        finally:
+            model.undo_stack.endMacro()
         self.update_guide()
         return f"row {row + 1}"
 

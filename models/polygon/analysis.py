@@ -947,8 +947,13 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
                                "peak-to-peak {ptp}; "),
                     grade=r.grade, accuracy=f"{GRADE_ACCURACY_ARCSEC[r.grade]:g}\"",
                     ptp=f"{ptp}\""),
-            message(QT_TR_NOOP("tilt within the allowed")) if r.sets[0].tilt is None
-            or r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
+            # the sentence ends with the figures the summary states (rev62day F15: "tilt
+            # within the allowed" ended in the air), and claims nothing of a tilt not found
+            message(QT_TR_NOOP("tilt not identified")) if r.sets[0].tilt is None else
+            message(QT_TR_NOOP("tilt ψ = {psi} within the {allowed} allowed"),
+                    psi=f"{r.sets[0].tilt.psi_arcsec:.0f}\"",
+                    allowed=f"{r.allowed_tilt_arcsec:.0f}\"")
+            if r.sets[0].tilt.psi_arcsec <= r.allowed_tilt_arcsec else
             # the grade's verdict stands: the tilt's error is identified and removed (exact 3-D
             # rotation); a tilt above the allowed only asks for a better seating next time
             message(QT_TR_NOOP("the tilt's error is corrected in these figures (for the set-up "

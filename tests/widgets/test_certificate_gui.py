@@ -101,6 +101,36 @@ def test_lab_defaults_fill_a_new_certificate(window, qtbot):
 
 
 @pytest.mark.slow
+def test_saving_lab_defaults_then_cancel_keeps_what_was_typed(window, qtbot, monkeypatch):
+    """rev62day F15: Save as lab defaults, then Cancel, lost the customer and item typed;
+    the dialog said nothing of what became a default."""
+    window.load_all_samples()
+    window.tabs.setCurrentIndex(0)
+    seen = {}
+
+    def save_defaults_and_cancel(dialog):
+        dialog.fields["customer_name"].setText("Optics Works")
+        dialog.fields["item_description"].setText("Rotary table RT-400")
+        dialog.fields["lab_name"].setText("Angle Lab")
+        dialog.fields["operator"].setText("Wang")
+        dialog.save_defaults_button.click()
+        seen["said"] = dialog.error_label.text()
+        dialog.reject()
+        return dialog.result()
+
+    monkeypatch.setattr(CertificateDialog, "exec", save_defaults_and_cancel)
+    assert not window.menus.export_action.trigger()
+    assert "laboratory" in seen["said"] and "not defaults" in seen["said"]
+    assert "customer" in seen["said"] and "language" in seen["said"]
+    # the lab's fields are the lab's defaults; the certificate's are kept with the project
+    assert window.certificates.lab_defaults()["lab_name"] == "Angle Lab"
+    assert "customer_name" not in window.certificates.lab_defaults()
+    again = window.certificates.details("theodolite")
+    assert again.customer_name == "Optics Works"
+    assert again.item_description == "Rotary table RT-400" and again.operator == "Wang"
+
+
+@pytest.mark.slow
 def test_export_results_csv(window, tmp_path):
     window.load_all_samples()
     window.tabs.setCurrentIndex(1)

@@ -333,3 +333,41 @@ def test_a_plot_with_no_data_shows_a_neutral_view_and_says_so(window):
             text = getattr(item.getViewBox(), "empty_text", None)
             if has_data(item):
                 assert text is None or not text.isVisible(), f"{presenter.kind.key} › {tab}"
+
+
+def test_the_title_above_a_legend_follows_a_change_of_language(window, samples_dir):
+    """rev62day F14: with the legend in the title line (a tolerance's bands, a narrow plot),
+    the title stayed "Mean positional deviation with ±2s" in the Chinese window: the title
+    kept above the legend was the one of the first placement, never relabelled."""
+    import json
+
+    from models.certificate.metadata import CertificateMetadata
+
+    details = CertificateMetadata.from_dict(json.loads(
+        (samples_dir / "certificate_positioning.json").read_text(encoding="utf-8")))
+    positioning = window.presenter("positioning")
+    positioning.certificate_details = lambda: details
+    window.set_language("en")
+    positioning.load_sample()
+    window.resize(1000, 662)
+    window.show()
+    window.tabs.setCurrentIndex(window.presenters.index(positioning))
+    positioning.view.plot_tabs.setCurrentIndex(0)
+    deviation = positioning.view.deviation_plot
+    item = deviation.plot.getPlotItem()
+
+    def settled_title() -> str:
+        for _ in range(5):
+            _settle(deviation)
+            QTest.qWait(50)
+        return item.titleLabel.text
+
+    assert item.legend_corner == "above" or settled_title()
+    assert item.legend_corner == "above"
+    assert settled_title().startswith("Mean positional deviation with ±2s<br>")
+    window.set_language("zh_CN")
+    title = settled_title()
+    assert title.startswith("平均位置偏差及 ±2s<br>") and "Mean positional" not in title
+    assert "允差 ±T" in title  # the legend's entries, in Chinese, under it
+    window.set_language("en")
+    assert settled_title().startswith("Mean positional deviation with ±2s<br>")

@@ -9,7 +9,7 @@ from fpdf.enums import XPos, YPos
 
 from app.writers.certificate_pdf.certificate_page import _CertificatePdf
 from app.writers.certificate_pdf.fonts import FONT
-from app.writers.certificate_pdf.wording import _between, _colon, _listed, label
+from app.writers.certificate_pdf.wording import _between, _colon, _in_both, _listed, label
 from models.certificate.document import CertificateDocument
 from models.certificate.metadata import PLACES, revision_statement, separate_statement
 from models.messages import QT_TR_NOOP, joined, message
@@ -58,8 +58,11 @@ def draw_front(pdf: _CertificatePdf, document: CertificateDocument, created: dt.
             f"SHA-256 {document.raw_data_sha256}")] if document.raw_data_sha256 else []),
         # edits, cleared and deleted readings, rows captured again (review 62 F1: a row taken
         # again stood under "Edited after capture"), readings that cannot be checked
+        # on a bilingual certificate each in Chinese, then in English (rev62day F14: English
+        # only under the two-language heading)
         *([(label(document, "Changes after capture", "\n"),
-            joined(_between("\n", document.edited_readings)))]
+            joined(_between("\n", [line for edit in document.edited_readings
+                                    for line in _in_both(document, edit)])))]
           if document.edited_readings else []),
     ])
 

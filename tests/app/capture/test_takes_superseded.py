@@ -202,3 +202,35 @@ def test_the_certificate_of_a_row_taken_again_says_captured_again_once(
     assert lines.count(AGAIN.format(row=last + 1)) == 1, text
     assert "edited" not in text.lower() and "→ —" not in text
     assert kept["sessions"][0]["takes"][0][3][3:] == kept["sessions"][0]["takes"][1][1:]
+
+
+def test_a_take_and_the_plans_pre_fill_of_the_next_row_are_one_undo_step(window, qtbot,
+                                                                          planned):
+    """rev62day F15: after a take the first Ctrl+Z undid "Entry plan: set 1: face 2 of 12"
+    (the next row's pre-fill), only the second the take. One Edit › Undo now takes the
+    reading back, pre-fill included; Redo puts both back."""
+    bench, model = planned, planned.table_model
+    columns = [c.key for c in model.sheet.columns]
+    panel = window.capture_panel
+    undo, redo = window.menus.undo_action, window.menus.redo_action
+
+    def rows():
+        return [[model.sheet.text(r, c) for c in range(len(columns))]
+                for r in range(model.sheet.row_count)]
+
+    with AutocollimatorSimulator("pty", positions=[(0.5, 0.25)]) as ac:
+        panel.connect_to("autocollimator", ac.port, **FAST)
+        _wait_for(qtbot, panel.links[0], (0.5, 0.25))
+        before, steps = rows(), bench.undo_stack.count()
+        assert panel.take_reading() == "row 1"
+        taken = rows()
+        assert taken[0][columns.index(X)] == "0.50"
+        assert len(taken) == 2 and any(taken[1])  # the next point pre-filled in row 2
+        assert bench.undo_stack.count() == steps + 1
+        assert undo.text().endswith("Take reading (row 1)")
+        undo.trigger()
+        assert rows() == before and [t[0] for s in panel.raw_sessions("polygon")
+                                     for t in s["takes"]] == [-1]
+        redo.trigger()
+        assert rows() == taken and _said(window, bench) == []
+        panel.disconnect_instrument()

@@ -178,6 +178,43 @@ def test_the_certificate_says_which_rows_were_edited(samples_dir):
     assert f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}" in flat
 
 
+def test_a_bilingual_certificate_says_the_changes_after_capture_in_both_languages(samples_dir):
+    """rev62day F14: on the zh+en certificate the lines under 采集后变动 / Changes after capture
+    were English only; each is given in Chinese, then in English, with the same figures."""
+    import io
+
+    from pypdf import PdfReader
+
+    from app.writers.certificate_pdf import certificate_pdf_bytes
+    from models.certificate.metadata import CertificateMetadata
+    from models.readings.sheet import ReadingsSheet
+    from models.readings.tabular_import import map_columns, read_table
+
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    x = float(rows[2][3])
+    session = _session([(x, float(rows[2][4]))], [[2, 0, 0]])
+    settings = kind.settings_with_defaults(None)
+    edited = [list(r) for r in rows]
+    edited[2][3] = f"{x + 5:g}"
+    edits = readings_edited_after_capture(kind, settings, edited, [session])
+    result = kind.analyze(ReadingsSheet(kind.columns, edited).parse(), settings)
+    texts = {}
+    for language in ("zh+en", "en"):
+        document = dataclasses.replace(
+            kind.certificate_document(result, CertificateMetadata(language=language), "run.csv",
+                                      settings),
+            raw_data_sha256="ab" * 32, edited_readings=tuple(e.text() for e in edits))
+        texts[language] = "".join(" ".join(p.extract_text().split()) for p in PdfReader(
+            io.BytesIO(certificate_pdf_bytes(document))).pages)
+    chinese = f"第 3 行的读数在采集后被修改：{x:.12g} → {x + 5:g}"
+    english = f"reading of row 3 edited after capture: {x:.12g} → {x + 5:g}"
+    flat = texts["zh+en"]
+    assert "采集后变动" in flat and chinese in flat and english in flat
+    assert flat.index(chinese) < flat.index(english)
+    assert chinese not in texts["en"] and english in texts["en"]
+
+
 def test_a_reading_rounded_to_the_instruments_resolution_is_as_captured():
     """#41 live day: a take writes its reading rounded to the instrument's resolution (0.01"
     for an autocollimator); the mark then said every auto-take was "edited after capture:

@@ -131,6 +131,32 @@ def test_the_register_chains_the_digest_and_the_certificate_prints_it(register_u
     assert "Instrument output" not in plain
 
 
+@pytest.mark.slow
+def test_a_session_with_no_take_is_not_named_as_the_readings_origin(register_url, tmp_path,
+                                                                    samples_dir):
+    """rev62day F15: a raw session recorded only because the tab was in front while the
+    instruments were connected (frames, no take) printed "Instrument output: SHA-256 …" on a
+    report none of whose readings was captured. Its frames stay in the record."""
+    from models.registry import KINDS
+
+    kind = KINDS["polygon"]
+    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
+    result = kind.analyze(ReadingsSheet(kind.columns, rows).parse(), kind.checked_settings({}))
+    data = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    data.update({"certificate_number": ""})
+    idle = _session()
+    idle["takes"] = []
+    with Register(register_url) as register:
+        record = issue_certificate(register, kind, result, CertificateMetadata.from_dict(data),
+                                   kind.checked_settings({}), rows, "typed.anglebench.json",
+                                   str(tmp_path / "idle.pdf"), raw_capture=[idle])
+        kept = json.loads(record.project_json)["raw_capture"]["polygon"]["sessions"]
+        assert kept == [idle]  # the frames are recorded all the same
+    text = subprocess.run(["pdftotext", str(tmp_path / "idle.pdf"), "-"], capture_output=True,
+                          text=True, check=True).stdout
+    assert "Instrument output" not in text and raw_digest([idle]) not in text
+
+
 def _one_reading_taken_on_the_polygon(window, qtbot):
     """An autocollimator connected, one reading taken into the polygon's first row and the
     instrument disconnected: the capture panel."""

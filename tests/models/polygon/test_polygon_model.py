@@ -184,3 +184,18 @@ def test_a_partial_set_is_named_by_its_face_count_before_a_cell_is_blamed(sample
     # told the face count, it is a set in progress: 10 of 24 faces, none complete yet
     with pytest.raises(ValueError, match="set 1: 10 of 24 faces: none is complete yet"):
         POLYGON.analyze_as_far_as_it_goes(parsed, {"faces": 24})
+
+
+def test_the_verdict_states_the_tilt_and_its_allowed_in_full():
+    """rev62day F15: the verdict ended "…; tilt within the allowed" (the summary: "within
+    the 270″ allowed"); it now states ψ and the allowed figure."""
+    theta = np.arange(12) * 30.0
+    rig = PolygonRig(12, true_error(theta), psi_arcsec=60.0, omega_deg=75.0,
+                     noise_arcsec=0.02, rng=np.random.default_rng(3), frame="levelled")
+    result = POLYGON.analyze(ReadingsSheet(POLYGON.columns, rig.set_rows()).parse(),
+                             {"grade": 3, "ac_alignment": "levelled"})
+    verdict = str(POLYGON.verdict(result))
+    psi = result.sets[0].tilt.psi_arcsec
+    assert verdict.endswith(f"tilt ψ = {psi:.0f}\" within the "
+                            f"{result.allowed_tilt_arcsec:.0f}\" allowed")
+    assert f"within the {result.allowed_tilt_arcsec:.0f}\" allowed" in result.tilt_verdict
