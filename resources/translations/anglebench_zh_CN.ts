@@ -3463,6 +3463,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>allocated by the register on export</source>
+        <extracomment>the details as they were when *Save as lab defaults* was pressed: kept with the project even if the dialog is then cancelled (rev62day F15: the customer and item typed were lost)</extracomment>
         <translation>导出时由登记册分配</translation>
     </message>
     <message>
@@ -3614,8 +3615,8 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>（另有 {count} 处，已标红）</translation>
     </message>
     <message>
-        <source>Saved as the lab&apos;s defaults.</source>
-        <translation>已保存为实验室默认值。</translation>
+        <source>Saved as the lab&apos;s defaults: the laboratory, number scheme, reference standards, people, decision rule and this workbench&apos;s test plan. The customer, item, dates, language and tolerance are this certificate&apos;s, not defaults: they are kept with the project&apos;s details, also if you cancel now.</source>
+        <translation>已保存为实验室默认值：实验室、编号规则、参考标准、人员、判定规则以及本工作台的测量计划。委托方、被校物品、日期、语言和允差属于本证书，不是默认值：它们随项目信息保存，现在取消也不会丢失。</translation>
     </message>
     <message>
         <source>(not in the file)</source>
@@ -4815,6 +4816,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>ψ = {psi} ± {u}，ω 未辨识（ψ 与 0 无法区分）</translation>
     </message>
     <message>
+        <source>tilt not identified</source>
+        <translation>倾斜未辨识</translation>
+    </message>
+    <message>
+        <source>tilt ψ = {psi} within the {allowed} allowed</source>
+        <translation>倾斜 ψ = {psi}，在允许的 {allowed} 以内</translation>
+    </message>
+    <message>
         <source>no tilt</source>
         <translation>无倾斜数据</translation>
     </message>
@@ -4861,10 +4870,6 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Grade {grade} (±{accuracy}) NOT met: corrected error peak-to-peak {ptp}; </source>
         <translation>不符合 {grade} 级（±{accuracy}）：修正后误差峰峰值 {ptp}；</translation>
-    </message>
-    <message>
-        <source>tilt within the allowed</source>
-        <translation>倾斜在允许范围内</translation>
     </message>
     <message>
         <source>the tilt&apos;s error is corrected in these figures (for the set-up stated). Set-up: tilt ψ = {psi}, above the {allowed} allowed — re-seat the polygon before the next run</source>
