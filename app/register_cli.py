@@ -33,6 +33,7 @@ import argparse
 import csv
 import hashlib
 import io
+import os
 import sys
 import zipfile
 
@@ -104,6 +105,8 @@ def _parser(words) -> argparse.ArgumentParser:
     export = sub.add_parser("export", help=words(QT_TR_NOOP(
         "every record: index.csv, the PDFs and the projects")))
     export.add_argument("out", metavar="OUT.zip", help=words(QT_TR_NOOP("the archive to write")))
+    export.add_argument("--overwrite", action="store_true", help=words(QT_TR_NOOP(
+        "replace OUT.zip when it exists (a file the register issued is never replaced)")))
     counter = sub.add_parser("continue", help=words(QT_TR_NOOP(
         "continue numbering from hand-issued numbers")))
     counter.add_argument("scheme", help=words(QT_TR_NOOP("e.g. AB-{year}-{seq:04d}")))
@@ -510,6 +513,18 @@ def run_register(argv: list[str]) -> int:
             if args.command == "interval":
                 register.set_interval(args.serial, args.days or None)
                 return 0
+            from app.certificate_issue import refuse_issued_files
+
+            try:  # an issued PDF, DCC or results file is never replaced (rev63 F5)
+                refuse_issued_files(register, [("", args.out)])
+            except OutputRefused as exc:
+                _say(f"anglebench register: {rendered(reason_of(exc), words)}")
+                return EXIT_BAD_INPUT
+            if os.path.lexists(args.out) and not args.overwrite:
+                _say(rendered(message(QT_TR_NOOP(
+                    "anglebench register: {out} exists; nothing was written: choose another "
+                    "name, or add --overwrite to replace it"), out=args.out), words))
+                return EXIT_BAD_INPUT
             return _export(register, args.out, words)
     except RegisterError as exc:
         _say(f"anglebench register: {rendered(reason_of(exc), words)}")

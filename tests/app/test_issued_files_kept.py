@@ -1,0 +1,67 @@
+"""rev63 F5–F7: no output replaces a file the register issued — ``register export`` (F5),
+the window's table exports (F6) and the second of two issues naming the same results file
+at once (F7: the name is taken without replacing, the second's bytes are kept under the
+temporary name and recorded). The register of each test is its own (conftest.py)."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import shutil
+import zipfile
+
+import pytest
+
+from app.main import main
+from models.register.location import register_url
+from models.register.store import Register
+
+
+def _details(samples_dir, tmp_path, name="details.json", **changes):
+    meta = json.loads((samples_dir / "certificate_polygon.json").read_text(encoding="utf-8"))
+    meta.update({"example": False, "certificate_number": "", **changes})
+    path = tmp_path / name
+    path.write_text(json.dumps(meta), encoding="utf-8")
+    return path
+
+
+def _issue(samples_dir, tmp_path, *outputs, separate=""):
+    return main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--metadata", str(_details(samples_dir, tmp_path)), *outputs,
+                 *(["--separate-calibration", separate] if separate else [])])
+
+
+def _sha(path):
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _results():
+    with Register(register_url()) as register:
+        return {r["number"]: r["sha256"] for r in register.results_records()}
+
+
+@pytest.mark.slow
+def test_register_export_never_replaces_an_issued_file_nor_an_existing_one(
+        samples_dir, tmp_path, capsys):
+    """F5: 'register export r.xlsx' replaced the issued results file (its only copy) with
+    the ZIP; onto the issued PDF too. An existing file is replaced only with --overwrite."""
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+    assert _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx)) == 0
+    (number,) = _results()
+    kept = {pdf: _sha(pdf), xlsx: _sha(xlsx)}
+    capsys.readouterr()
+    assert main(["register", "export", str(xlsx)]) == 2
+    assert (f"anglebench register: {xlsx} is the results file of certificate {number}, as "
+            "issued; an issued file is never replaced") in capsys.readouterr().err
+    assert main(["register", "export", str(pdf), "--overwrite"]) == 2  # never, even asked
+    assert f"{pdf} is the PDF of certificate {number}, as issued" in capsys.readouterr().err
+    assert {path: _sha(path) for path in kept} == kept
+    other = tmp_path / "notes.zip"
+    other.write_bytes(b"someone's notes")
+    assert main(["register", "export", str(other)]) == 2
+    assert (f"anglebench register: {other} exists; nothing was written: choose another name, "
+            "or add --overwrite to replace it") in capsys.readouterr().err
+    assert other.read_bytes() == b"someone's notes"
+    assert main(["register", "export", str(other), "--overwrite"]) == 0
+    with zipfile.ZipFile(other) as archive:
+        assert f"pdf/{number}.pdf" in archive.namelist()
