@@ -87,11 +87,32 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
         raise IssuedNotWritten(record, path, exc if isinstance(exc, OSError)
                                else OSError(str(exc)), "results") from exc
     try:
-        os.replace(temp, target)
+        _place(register, temp, target)
     except OSError as exc:
         raise IssuedNotWritten(record, path, exc, "results", recorded=True,
                                kept=temp) from exc
     fsync_directory(target.parent)
+
+
+def _place(register: Register, temp: str, target) -> None:
+    """``temp`` renamed to ``target`` without replacing a file the register issued there
+    since the check before the issue (rev63 F7: two issuers naming the same results file
+    both passed the check, and the later rename replaced the first's results file, of which
+    the register keeps only the SHA-256). The name is taken with a hard link, which fails
+    when ``target`` exists; then ``target`` is replaced only when it is no issued file (a
+    file that was there at the check, as before). Refused (OutputRefused, an OSError), the
+    bytes stay in ``temp``. Where hard links cannot be made (some network and FAT file
+    systems) the issued-file check is made again just before the rename."""
+    import contextlib
+
+    try:
+        os.link(temp, target)
+    except OSError:  # the name is taken (FileExistsError), or no hard links here
+        refuse_issued_files(register, [("", os.fspath(target))])
+        os.replace(temp, target)
+        return
+    with contextlib.suppress(OSError):  # placed: a temporary name left is harmless
+        os.unlink(temp)
 
 
 def draft_reasons(metadata: CertificateMetadata) -> list[str]:

@@ -709,6 +709,14 @@ def _not_written(exc) -> Message:
             "anglebench analyze: certificate {number} is issued and recorded, but {reason}: "
             "save its DCC with 'anglebench register show {number} --dcc OUT.xml'"),
             number=number, reason=str(exc))
+    if exc.what == "results" and exc.recorded and isinstance(exc.__cause__, OutputRefused):
+        # the name was taken by another issue meanwhile (rev63 F7): not to be renamed onto it
+        return message(QT_TR_NOOP(
+            "anglebench analyze: certificate {number} is issued, recorded and written, and "
+            "its results file recorded, but not put in place: {path} became another "
+            "certificate's issued file meanwhile, which is never replaced. The recorded "
+            "results file is {kept}; give it another name"),
+            number=number, path=exc.path, kept=exc.kept)
     if exc.what == "results" and exc.recorded:
         return message(QT_TR_NOOP(
             "anglebench analyze: certificate {number} is issued, recorded and written, and "

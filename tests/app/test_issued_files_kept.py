@@ -65,3 +65,40 @@ def test_register_export_never_replaces_an_issued_file_nor_an_existing_one(
     assert main(["register", "export", str(other), "--overwrite"]) == 0
     with zipfile.ZipFile(other) as archive:
         assert f"pdf/{number}.pdf" in archive.namelist()
+
+
+@pytest.mark.slow
+def test_two_issues_naming_one_results_file_both_keep_theirs(samples_dir, tmp_path, capsys,
+                                                             monkeypatch):
+    """F7: two issuers with the same --results both passed the check; the later rename
+    replaced the first's results file and 'register verify' said all was intact. Here the
+    other issue puts its results file at r.xlsx between this one's check and its rename."""
+    first = tmp_path / "first.xlsx"
+    assert _issue(samples_dir, tmp_path, "--results", str(first),
+                  "--certificate", str(tmp_path / "first.pdf")) == 0
+    (one,) = _results()
+    target = tmp_path / "r.xlsx"
+    recorded = Register.record_results
+
+    def meanwhile(self, *args, **kwargs):  # the other issuer wins the name
+        outcome = recorded(self, *args, **kwargs)
+        shutil.copyfile(first, target)
+        return outcome
+
+    monkeypatch.setattr(Register, "record_results", meanwhile)
+    capsys.readouterr()
+    assert _issue(samples_dir, tmp_path, "--results", str(target), "--certificate",
+                  str(tmp_path / "second.pdf"), separate="a second run") == 2
+    said = capsys.readouterr().err
+    results = _results()
+    (two,) = set(results) - {one}
+    assert _sha(target) == results[one] == _sha(first)  # the first's results file stays
+    assert (f"certificate {two} is issued, recorded and written, and its results file "
+            f"recorded, but not put in place: {target} became another certificate's issued "
+            "file meanwhile, which is never replaced. The recorded results file is ") in said
+    kept = tmp_path / said.split("The recorded results file is ")[1].split("; give it")[0]
+    assert kept.parent == tmp_path and _sha(kept) == results[two]  # the second's, kept
+    monkeypatch.undo()
+    capsys.readouterr()
+    assert main(["register", "verify"]) == 0
+    assert "hash chain intact" in capsys.readouterr().out
