@@ -308,6 +308,11 @@ class CertificatePresenter:
         return (register_files(self.register_url()) + open_project(self.open_project_path())
                 + input_files(self.inputs()))
 
+    def refuse_issued(self, path: str) -> None:
+        """Raise OutputRefused when ``path`` is a file the register issued (a certificate's
+        PDF, DCC or results file): the workbenches' table exports call it (rev63 F6)."""
+        refuse_issued_outputs(self.register_url(), (("", path),))
+
     def lab_timezone(self) -> str:
         """The lab's time zone set in the window (empty: ANGLEBENCH_TIMEZONE, else the
         system's)."""

@@ -126,6 +126,7 @@ class MainWindow(QMainWindow):
                         key, standard))
         for presenter in self.presenters:  # the table exports spare them too
             presenter.protected_outputs = self.certificates.protected
+            presenter.refuse_issued = self.certificates.refuse_issued  # issued files (rev63 F6)
         ensure_cjk_font()  # Chinese names and readings are never boxes
         self.language = install_language(str(self.qsettings.value(LANGUAGE_SETTING, "system")))
         self.certificates.default_language = "zh" if self.language == "zh_CN" else "en"

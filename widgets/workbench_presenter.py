@@ -215,6 +215,9 @@ class WorkbenchPresenter(QObject):
         #: the files no export of this workbench may replace (the main window sets it: the
         #: register and its journals, the open project, the readings files imported)
         self.protected_outputs = list
+        #: raises OutputRefused when a path is a file the register issued (a certificate's
+        #: PDF, DCC or results file; the main window sets it: app/issued_outputs.py)
+        self.refuse_issued: Callable[[str], None] = lambda _path: None
         self.workers = application_workers()  # the application's thread pool
         self.sheet = ReadingsSheet(kind.columns)
         self.undo_stack = QUndoStack(self)
@@ -280,11 +283,14 @@ class WorkbenchPresenter(QObject):
     # -- subclass hooks ---------------------------------------------------
     def output_refused(self, path: str, title: str) -> bool:
         """Whether the export to ``path`` is refused (told, nothing written): it is the
-        register, the open project or an input (models/project/output_guard.py)."""
+        register, the open project or an input (models/project/output_guard.py), or a file
+        the register issued (rev63 F6: a table replaced an issued results file, which the
+        CLI's ``--table`` refuses)."""
         from models.project.output_guard import OutputRefused, check_output
 
         try:
             check_output(path, self.protected_outputs())
+            self.refuse_issued(path)
         except OutputRefused as exc:
             self.view.tell(title, explained(exc))
             return True

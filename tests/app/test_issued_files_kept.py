@@ -102,3 +102,39 @@ def test_two_issues_naming_one_results_file_both_keep_theirs(samples_dir, tmp_pa
     capsys.readouterr()
     assert main(["register", "verify"]) == 0
     assert "hash chain intact" in capsys.readouterr().out
+
+
+@pytest.mark.slow
+def test_the_windows_table_exports_never_replace_an_issued_results_file(
+        samples_dir, tmp_path, window, qtbot, capsys):
+    """F6: the compensation table, the fringe correction table and the cross-calibration
+    face deviations replaced an issued results file ('register verify' then said NOT in
+    the register); the CLI's --table refuses the same file."""
+    issued = {}
+    for key in ("positioning", "crosscal"):
+        meta = json.loads((samples_dir / f"certificate_{key}.json").read_text("utf-8"))
+        meta.update({"example": False, "certificate_number": ""})
+        details = tmp_path / f"{key}.json"
+        details.write_text(json.dumps(meta), "utf-8")
+        issued[key] = tmp_path / f"{key}-results.csv"
+        assert main(["analyze", key, str(samples_dir / f"{key}_sample.csv"), "--metadata",
+                     str(details), "--certificate", str(tmp_path / f"{key}.pdf"),
+                     "--results", str(issued[key])]) == 0
+    numbers = _results()
+    kept = {path: _sha(path) for path in issued.values()}
+    window.load_all_samples()
+    exports = (("positioning", "export_compensation", issued["positioning"]),
+               ("fringe", "export_table", issued["positioning"]),
+               ("crosscal", "save_polygon_reference", issued["crosscal"]))
+    for key, name, target in exports:
+        presenter = next(p for p in window.presenters if p.kind.key == key)
+        qtbot.waitUntil(lambda p=presenter: p.result is not None, timeout=60000)
+        told = []
+        presenter.view.tell = lambda title, text, told=told: told.append(text)
+        assert getattr(presenter, name)(str(target)) == "", key
+        number = next(n for n, sha in numbers.items() if sha == kept[target])
+        assert (f"{target} is the results file of certificate {number}, as issued; an "
+                "issued file is never replaced") in told[-1], (key, told)
+    assert {path: _sha(path) for path in kept} == kept
+    fringe = next(p for p in window.presenters if p.kind.key == "fringe")
+    assert fringe.export_table(str(tmp_path / "table.csv"))  # another name: written
