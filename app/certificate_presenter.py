@@ -394,7 +394,17 @@ class CertificatePresenter:
         self.store.setValue(TIMEZONE_KEY, name.strip())
 
     def set_register_url(self, url: str) -> None:
+        """The register's location changed: a pending Amend…/Replace… is ended, since its
+        number is the old register's (rev63 F4: it amended the new register's certificate of
+        that number, another item)."""
+        before = self.register_url()
         self.store.setValue(REGISTER_KEY, url.strip())
+        revision = self._pending
+        if revision is not None and self.register_url() != before:
+            self.end_revision()
+            self.view.show_status(tr(
+                "The amendment or replacement of {number} is ended: the register's location "
+                "changed.").format(number=revision.number), 15000)
 
     def open_register(self):
         """The register (RegisterError when it cannot be opened)."""
