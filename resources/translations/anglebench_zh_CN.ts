@@ -1690,6 +1690,10 @@
         <translation>；其数字证书已写入 {path}，未经校验（未设置 DCC 模式文件夹）</translation>
     </message>
     <message>
+        <source>The amendment or replacement of {number} is ended: the register&apos;s location changed.</source>
+        <translation>对 {number} 的修改或替代已结束：登记册的位置已更改。</translation>
+    </message>
+    <message>
         <source>No certificate: {progress} is not complete. A certificate needs every set, mounting or run complete; finish it, or delete its rows to certify the complete ones.</source>
         <translation>不能出具证书：{progress} 尚未完成。证书要求每个测回、安装位置或测量循环都已完成；请完成它，或删除其各行以对已完成部分出具证书。</translation>
     </message>
@@ -2866,6 +2870,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>要写出的压缩包</translation>
     </message>
     <message>
+        <source>replace OUT.zip when it exists (a file the register issued is never replaced)</source>
+        <translation>OUT.zip 已存在时替换它（登记册签发过的文件永远不会被替换）</translation>
+    </message>
+    <message>
         <source>continue numbering from hand-issued numbers</source>
         <translation>在手工签发的编号之后继续编号</translation>
     </message>
@@ -3064,6 +3072,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>the next certificate of {scheme} will be {number}</source>
         <translation>{scheme} 的下一份证书编号将为 {number}</translation>
+    </message>
+    <message>
+        <source>anglebench register: {out} exists; nothing was written: choose another name, or add --overwrite to replace it</source>
+        <translation>anglebench register：{out} 已存在；未写入任何内容：请另选名称，或加上 --overwrite 以替换它</translation>
     </message>
     <message>
         <source>anglebench register: cannot write: {reason}</source>
@@ -4184,7 +4196,7 @@ If this is a calibration of its own, say why (printed on the certificate with th
     </message>
     <message>
         <source>Set-up: {names}</source>
-        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
+        <extracomment>the view a presenter makes when none is given (a test gives a mock) the files no export of this workbench may replace (the main window sets it: the register and its journals, the open project, the readings files imported) raises OutputRefused when a path is a file the register issued (a certificate&apos;s PDF, DCC or results file; the main window sets it: app/issued_outputs.py) readings are coming from an instrument (the capture panel says): each take is analysed off the GUI thread and the columns are not re-measured (the panel widens the ones it fills), so the window never pauses for a take (#41)</extracomment>
         <translation>设置：{names}</translation>
     </message>
     <message>
@@ -5474,6 +5486,10 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>anglebench analyze: certificate {number} is issued and recorded, but {reason}: save its DCC with &apos;anglebench register show {number} --dcc OUT.xml&apos;</source>
         <translation>anglebench analyze：证书 {number} 已签发并记录，但{reason}：请用 &apos;anglebench register show {number} --dcc OUT.xml&apos; 保存其 DCC</translation>
+    </message>
+    <message>
+        <source>anglebench analyze: certificate {number} is issued, recorded and written, and its results file recorded, but not put in place: {path} became another certificate&apos;s issued file meanwhile, which is never replaced. The recorded results file is {kept}; give it another name</source>
+        <translation>anglebench analyze：证书 {number} 已签发、记录并写出，其结果文件也已记录，但未放到位：{path} 在此期间已成为另一份证书签发的文件，而签发的文件永远不会被替换。已记录的结果文件是 {kept}；请给它另取一个名称</translation>
     </message>
     <message>
         <source>anglebench analyze: certificate {number} is issued, recorded and written, and its results file recorded, but not renamed into place ({reason}): the recorded file is {kept}; rename it to {path}</source>
