@@ -4,13 +4,13 @@ untouched for long, does not stop saving."""
 
 from __future__ import annotations
 
-import os
 import errno
+import os
 import signal
 import socket
-import threading
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -188,14 +188,14 @@ def test_every_wait_has_its_deadline_even_when_the_lock_keeps_coming_and_going(
     assert caught.value.holder == "" and 3 <= len(passes) < 100
 
 
-def _unreadable(monkeypatch, lock, unlink_error=None):
+def _unreadable(monkeypatch, lock, unlink_error=None, readable=False):
     """The lock cannot be opened by this user (another user's, mode 0600): as root that
-    cannot be made with a mode, so opening it raises EACCES (and removing it
-    ``unlink_error``, a folder with the sticky bit)."""
+    cannot be made with a mode, so opening it raises EACCES (unless ``readable``), and
+    removing it ``unlink_error`` (a folder with the sticky bit)."""
     real_open, real_unlink = os.open, os.unlink
 
     def fake_open(name, flags, *args):
-        if os.fspath(name) == str(lock) and not flags & os.O_CREAT:
+        if not readable and os.fspath(name) == str(lock) and not flags & os.O_CREAT:
             raise PermissionError(errno.EACCES, "Permission denied", str(name))
         return real_open(name, flags, *args)
 
@@ -242,16 +242,7 @@ def test_a_stale_lock_that_may_not_be_removed_says_whose_it_is(tmp_path, monkeyp
     os.utime(lock, (ten_minutes_ago, ten_minutes_ago))
     for readable in (False, True):
         monkeypatch.undo()
-        _unreadable(monkeypatch, lock if not readable else tmp_path / "none", errno.EPERM)
-        if readable:  # readable, but removing is refused all the same
-            real_unlink = os.unlink
-
-            def refuse(name, *args, **kwargs):
-                if os.fspath(name) == str(lock):
-                    raise PermissionError(errno.EPERM, "Operation not permitted", str(name))
-                return real_unlink(name, *args, **kwargs)
-
-            monkeypatch.setattr(save_lock.os, "unlink", refuse)
+        _unreadable(monkeypatch, lock, errno.EPERM, readable)  # readable or not: not ours
         raised, took = _acquire(path, wait=2.0)
         assert isinstance(raised, LockInTheWay), (readable, raised)
         assert (raised.kind, raised.owner, raised.error) == ("stale", me,
