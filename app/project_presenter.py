@@ -32,7 +32,7 @@ from models.project.file import (
     save_project,
 )
 from models.project.recovery import RecoveryStore
-from models.project.save_lock import ProjectFileBusy, SaveLock
+from models.project.save_lock import LockInTheWay, ProjectFileBusy, SaveLock
 from models.readings.sheet import NumericRows
 from widgets.i18n import explained, tr, translated
 from widgets.workbench_presenter import WorkbenchPresenter
@@ -60,6 +60,24 @@ def default_recovery_store() -> RecoveryStore:
         QStandardPaths.StandardLocation.AppDataLocation)
     return RecoveryStore(Path(folder or Path.home() / ".anglebench"))
 
+
+
+def _in_the_way(exc: LockInTheWay) -> str:
+    """What stops every save of the project (a file at its lock's name) and what to do."""
+    if exc.kind == "stale":
+        return tr(
+            "{lock} is the lock of a save that ended {minutes} minutes ago, but it belongs "
+            "to user {owner} and cannot be removed from here ({error}). Nothing was "
+            "written; your readings are still here. Ask {owner} or an administrator to "
+            "delete {lock}, then save again, or save under another name (File › Save "
+            "as).").format(lock=exc.path, minutes=int((exc.age or 0) // 60),
+                            owner=exc.owner, error=exc.error)
+    kind = {"link": tr("a link"), "pipe": tr("a named pipe"),
+            "folder": tr("a folder")}.get(exc.kind, tr("not a regular file"))
+    return tr(
+        "{lock} is in the way of the project's lock: it is {kind} (user {owner}), not a "
+        "lock AngleBench made. Nothing was written; your readings are still here. Remove "
+        "{lock}, then save again.").format(lock=exc.path, kind=kind, owner=exc.owner)
 
 class ProjectView(Protocol):
     """What the project presenter asks of the window."""
@@ -341,6 +359,9 @@ class ProjectPresenter(QObject):
                     "{path} is being saved from another window. Nothing was written; your "
                     "readings are still here: save again in a moment.")).format(
                         path=path, host=exc.host, pid=exc.pid))
+                return False
+            except LockInTheWay as exc:
+                self.view.tell(tr("Cannot save"), _in_the_way(exc))
                 return False
             try:
                 current = self._disk_sha256() if same else None

@@ -25,7 +25,23 @@ saving for good. It is stale:
 
 Taking a lock that a live save holds waits up to :data:`WAIT_SECONDS` (a save of 150,000
 rows takes about 0.3 s), then gives up with :class:`ProjectFileBusy`: the save is not
-done and says who holds the file.
+done and says who holds the file. Every wait has that deadline, whatever lies at the
+lock's name.
+
+The lock is opened without following a link and without waiting (``O_NOFOLLOW |
+O_NONBLOCK``): a ``.NAME.lock`` that is not a regular file (a link, a named pipe, a
+folder) is not a lock any AngleBench made, and the save is refused naming it
+(:class:`LockInTheWay`), nothing written; the user removes it. It is not removed here:
+it is not ours, and removing what we did not make is not atomic with our checks (a
+saver that removed a link just as another replaced it by a real lock would remove that
+lock, and two saves would write at once). Nor is the save done without the lock: every
+saver would do the same, and two Saves would again both find the file unchanged.
+
+A lock this user may not read (another user's, made with umask 077) is judged by its age
+from ``lstat``; one that is stale but may not be removed (a folder with the sticky bit,
+another user's file) refuses the save, naming its owner (:class:`LockInTheWay`). Locks
+are made readable by every user (``fchmod`` 0644, whatever the umask), so that another
+user's saver can read who holds it.
 """
 
 from __future__ import annotations
@@ -35,6 +51,7 @@ import errno
 import logging
 import os
 import socket
+import stat
 import time
 from pathlib import Path
 
@@ -43,7 +60,7 @@ try:  # POSIX: a lock the kernel drops when the process dies
 except ImportError:  # pragma: no cover - Windows
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["ProjectFileBusy", "SaveLock", "lock_path_of"]
+__all__ = ["LockInTheWay", "ProjectFileBusy", "SaveLock", "lock_path_of"]
 
 log = logging.getLogger(__name__)
 
@@ -52,6 +69,8 @@ TOUCH_SECONDS = 2.0
 WAIT_SECONDS = 15.0
 _POLL_SECONDS = 0.02
 _SUFFIX = ".lock"
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)  # 0 on Windows (no links a user plants there)
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
 
 
 class ProjectFileBusy(OSError):
@@ -67,6 +86,41 @@ class ProjectFileBusy(OSError):
     @property
     def holder(self) -> str:
         return f"{self.host}, process {self.pid}" if self.host else ""
+
+
+class LockInTheWay(OSError):
+    """A file at the lock's name that stops every save and that the user must remove:
+    ``kind`` "link", "pipe", "folder" or "other" (not a regular file: not a lock any
+    AngleBench made), or "stale" (a lock untouched for ``age`` seconds that may not be
+    removed from here, ``error`` saying why); ``owner`` the user it belongs to (a name,
+    or a user id when the name is not known here)."""
+
+    def __init__(self, path: Path, kind: str, owner: str, age: float | None = None,
+                 error: str = "") -> None:
+        super().__init__(errno.EEXIST, "in the way of the project's lock", str(path))
+        self.path = Path(path)
+        self.kind = kind
+        self.owner = owner
+        self.age = age
+        self.error = error
+
+
+def _owner(uid: int) -> str:
+    try:
+        import pwd
+        return pwd.getpwuid(uid).pw_name
+    except (ImportError, KeyError, OSError):
+        return str(uid)
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISLNK(mode):
+        return "link"
+    if stat.S_ISFIFO(mode):
+        return "pipe"
+    if stat.S_ISDIR(mode):
+        return "folder"
+    return "other"
 
 
 def lock_path_of(path: str | os.PathLike[str]) -> Path:
@@ -135,16 +189,25 @@ class SaveLock:
         refuses the name) is logged and the save goes on without one: it then fails, or
         succeeds, as it did before there were locks."""
         deadline = time.monotonic() + self.wait
+        gone = 0  # passes that found the lock stale or gone
         while True:
             try:
                 if self._create():
                     return
                 holder = self._inspect()
-            except OSError as exc:  # not even a stale lock can be removed (a folder there)
+            except LockInTheWay:
+                raise
+            except OSError as exc:  # a folder where no lock can be made (read-only)
                 log.warning("cannot lock %s (saved without a lock): %s", self.path, exc)
                 return
-            if holder is None:  # stale, removed: try again at once
-                continue
+            if holder is None:  # stale, removed (or gone): try again at once, once
+                gone += 1
+                if gone == 1:
+                    continue
+                if time.monotonic() < deadline or gone <= 3:
+                    time.sleep(_POLL_SECONDS)  # made and gone again and again: no spin
+                    continue
+                holder = ("", "", None)  # the deadline holds whatever lies there
             if time.monotonic() >= deadline:
                 raise ProjectFileBusy(self.path, *holder)
             time.sleep(_POLL_SECONDS)
@@ -152,9 +215,12 @@ class SaveLock:
     def _create(self) -> bool:
         """Create the lock file; False when it exists."""
         try:
-            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
+            fd = os.open(self.path, os.O_RDWR | os.O_CREAT | os.O_EXCL | _NOFOLLOW, 0o666)
         except FileExistsError:
             return False
+        if hasattr(os, "fchmod"):  # readable by another user's saver, whatever the umask
+            with contextlib.suppress(OSError):
+                os.fchmod(fd, 0o644)
         # at once: from here a live saver on this host is seen holding it (another saver
         # looking at the new file may hold it for a moment: taken once it has looked)
         until = time.monotonic() + 1.0
@@ -168,14 +234,18 @@ class SaveLock:
 
     def _inspect(self) -> tuple[str, str, float | None] | None:
         """Who holds the existing lock (host, pid, since); None when it was stale and is
-        removed (or is gone already)."""
-        try:
-            fd = os.open(self.path, os.O_RDONLY)  # a colleague's lock: readable, not ours
+        removed (or is gone already). :class:`LockInTheWay` when what lies there is not
+        a lock file, or is a stale one that may not be removed."""
+        try:  # never through a link, never waiting for a writer (a named pipe)
+            fd = os.open(self.path, os.O_RDONLY | _NOFOLLOW | _NONBLOCK)
         except FileNotFoundError:
             return None
-        except OSError:
-            return "", "", None
+        except OSError as exc:  # a link (ELOOP), a colleague's unreadable lock (EACCES)
+            return self._unreadable(exc)
         try:
+            info = os.fstat(fd)
+            if not stat.S_ISREG(info.st_mode):
+                raise LockInTheWay(self.path, _kind(info.st_mode), _owner(info.st_uid))
             locked = _flock(fd)
             holder = self._holder(fd)
             if locked is False:  # a live save on this host
@@ -193,13 +263,45 @@ class SaveLock:
             log.warning("removing the stale lock %s (host %s, process %s, untouched for %.0f s)",
                         self.path, host or "?", pid or "?", age)
             if fcntl is not None:  # removed while our flock keeps other removers out
-                with contextlib.suppress(FileNotFoundError):
-                    os.unlink(self.path)  # any other error: saved without a lock
+                try:
+                    os.unlink(self.path)
+                except FileNotFoundError:
+                    pass
+                except OSError as exc:  # not ours to remove: said, naming its owner
+                    raise LockInTheWay(self.path, "stale", _owner(info.st_uid), age,
+                                       exc.strerror or str(exc)) from exc
         finally:
             os.close(fd)  # our flock (if taken) goes with it
         if fcntl is None:  # Windows: an open file cannot be removed
             with contextlib.suppress(OSError):
                 os.unlink(self.path)
+        return None
+
+    def _unreadable(self, exc: OSError) -> tuple[str, str, float | None] | None:
+        """The lock could not be opened: judged by what ``lstat`` says (None: gone)."""
+        try:
+            info = os.lstat(self.path)
+        except FileNotFoundError:
+            return None
+        except OSError:
+            return "", "", None
+        if not stat.S_ISREG(info.st_mode):
+            raise LockInTheWay(self.path, _kind(info.st_mode), _owner(info.st_uid)) from exc
+        age = time.time() - info.st_mtime
+        if age <= STALE_SECONDS:  # another user's live save (its holder unreadable)
+            return "", "", None
+        log.warning("removing the stale lock %s (unreadable: %s; user %s, untouched for %.0f s)",
+                    self.path, exc.strerror or exc, _owner(info.st_uid), age)
+        try:  # no flock to keep other removers out: still that file?
+            now = os.lstat(self.path)
+            if (now.st_ino, now.st_mtime) != (info.st_ino, info.st_mtime):
+                return None
+            os.unlink(self.path)
+        except FileNotFoundError:
+            return None
+        except OSError as error:
+            raise LockInTheWay(self.path, "stale", _owner(info.st_uid), age,
+                               error.strerror or str(error)) from error
         return None
 
     @staticmethod

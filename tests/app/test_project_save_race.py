@@ -153,3 +153,55 @@ def test_replace_it_is_checked_again_a_change_during_the_question_asks_again(qtb
     assert b.save()  # replaced, asked once more, with nothing changed since: written
     assert b_view.ask_overwrite_changed.call_count == 3
     assert load_project(path).workbenches["theodolite"].rows[0][:3] == ["-20", "21.56", "B"]
+
+
+def test_a_file_in_the_way_of_the_lock_is_named_and_nothing_is_lost(qtbot, tmp_path,
+                                                                     monkeypatch):
+    """rev63 F8/F9 in the window: a named pipe at the lock's name froze the window's Save; a
+    colleague's stale lock that may not be removed said "save again in a moment" for ever.
+    Both are said plainly, naming the file and what to do; nothing written, readings kept."""
+    import errno
+    import pwd
+
+    from models.project import save_lock
+
+    me = pwd.getpwuid(os.getuid()).pw_name
+    path = tmp_path / "job.anglebench.json"
+    a, view, (bench, _) = make(qtbot, tmp_path / "a")
+    bench.table_model.set_cells([(0, 0, "-20"), (0, 1, "21.56")])
+    assert a.save_to(path)
+    before = path.read_bytes()
+    bench.table_model.set_cells([(0, 2, "0.5")])
+    lock = lock_path_of(path)
+    os.mkfifo(lock)
+    started = time.monotonic()
+    assert a.save() is False
+    assert time.monotonic() - started < 2
+    view.tell.assert_called_once_with("Cannot save", (
+        f"{lock} is in the way of the project's lock: it is a named pipe (user {me}), not a "
+        f"lock AngleBench made. Nothing was written; your readings are still here. Remove "
+        f"{lock}, then save again."))
+    assert path.read_bytes() == before and a.is_modified
+    os.unlink(lock)
+    lock.write_text("4242 otherpc 1\n")
+    eleven_minutes_ago = time.time() - 660
+    os.utime(lock, (eleven_minutes_ago, eleven_minutes_ago))
+    real_unlink = os.unlink
+
+    def sticky(name, *args, **kwargs):  # a shared folder with the sticky bit: not ours
+        if os.fspath(name) == str(lock):
+            raise PermissionError(errno.EPERM, "Operation not permitted", str(name))
+        return real_unlink(name, *args, **kwargs)
+
+    monkeypatch.setattr(save_lock.os, "unlink", sticky)
+    view.tell.reset_mock()
+    assert a.save() is False
+    view.tell.assert_called_once_with("Cannot save", (
+        f"{lock} is the lock of a save that ended 11 minutes ago, but it belongs to user {me} "
+        f"and cannot be removed from here (Operation not permitted). Nothing was written; your "
+        f"readings are still here. Ask {me} or an administrator to delete {lock}, then save "
+        f"again, or save under another name (File › Save as)."))
+    assert path.read_bytes() == before and a.is_modified
+    monkeypatch.undo()
+    assert a.save() and not a.is_modified  # may be removed now: taken over, saved
+    assert load_project(path).workbenches["theodolite"].rows[0][:3] == ["-20", "21.56", "0.5"]

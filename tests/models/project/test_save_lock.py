@@ -4,18 +4,20 @@ untouched for long, does not stop saving."""
 
 from __future__ import annotations
 
+import errno
 import os
 import signal
 import socket
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
 import pytest
 
 from models.project import save_lock
-from models.project.save_lock import ProjectFileBusy, SaveLock, lock_path_of
+from models.project.save_lock import LockInTheWay, ProjectFileBusy, SaveLock, lock_path_of
 
 ROOT = Path(__file__).resolve().parents[3]
 
@@ -111,3 +113,150 @@ def test_a_long_save_touches_its_lock_so_that_it_is_never_stale(tmp_path, monkey
         os.utime(lock.path, (1, 1))
         lock.touch()  # between blocks of rows
         assert time.time() - lock.path.stat().st_mtime < 60
+
+
+def _acquire(path, wait, limit=5.0):
+    """SaveLock(path, wait).acquire() in a thread: what it raised (None: taken) and how long
+    it took; "hung" when it was still waiting after ``limit`` seconds (rev63 F8)."""
+    result = {}
+
+    def run():
+        started = time.monotonic()
+        try:
+            lock = SaveLock(path, wait=wait)
+            lock.acquire()
+            result["r"] = None
+            lock.release()
+        except Exception as exc:  # noqa: BLE001 - what it raised is the result
+            result["r"] = exc
+        result["t"] = time.monotonic() - started
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    thread.join(limit)
+    return result.get("r", "hung"), result.get("t")
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="links and named pipes: POSIX")
+def test_a_lock_that_is_not_a_regular_file_refuses_the_save_at_once_naming_it(tmp_path):
+    """rev63 F8: a dangling link spun for ever, a named pipe blocked on open. Neither is a
+    lock any AngleBench made: refused at once, naming it, and left as it is."""
+    me = __import__("pwd").getpwuid(os.getuid()).pw_name
+    old = time.time() - save_lock.STALE_SECONDS - 60
+    plants = {
+        "dangling link": ("link", lambda d, lock: os.symlink(d / "nowhere", lock)),
+        "link to the project": ("link", lambda d, lock: os.symlink(d / "job.anglebench.json",
+                                                                   lock)),
+        "link loop": ("link", lambda d, lock: (os.symlink(f"{lock}2", lock),
+                                               os.symlink(lock, f"{lock}2"))),
+        "named pipe": ("pipe", lambda d, lock: os.mkfifo(lock)),
+        "folder": ("folder", lambda d, lock: os.mkdir(lock)),
+        "old folder": ("folder", lambda d, lock: (os.mkdir(lock), os.utime(lock, (old, old)))),
+    }
+    for name, (kind, plant) in plants.items():
+        folder = tmp_path / name.replace(" ", "-")
+        folder.mkdir()
+        path = folder / "job.anglebench.json"
+        path.write_text('{"mine": 1}')
+        lock = lock_path_of(path)
+        plant(folder, lock)
+        raised, took = _acquire(path, wait=2.0)
+        assert isinstance(raised, LockInTheWay), (name, raised)
+        assert (raised.kind, raised.owner, raised.path) == (kind, me, lock), name
+        assert took < 1.0, (name, took)  # not the 2 s wait: nothing to wait for
+        assert os.path.lexists(lock) and path.read_text() == '{"mine": 1}', name
+
+
+def test_every_wait_has_its_deadline_even_when_the_lock_keeps_coming_and_going(
+        tmp_path, monkeypatch):
+    """A lock found gone (or stale and removed) on every pass was tried again at once,
+    with no deadline (rev63 F8): the deadline holds on every pass."""
+    path = tmp_path / "job.anglebench.json"
+    lock_path_of(path).write_text("")
+    passes = []
+
+    def gone(_self):
+        passes.append(1)
+        if len(passes) > 2000:
+            raise RuntimeError("spinning with no deadline")
+
+    monkeypatch.setattr(SaveLock, "_inspect", gone)
+    started = time.monotonic()
+    with pytest.raises(ProjectFileBusy) as caught:
+        SaveLock(path, wait=0.3).acquire()
+    assert 0.3 <= time.monotonic() - started < 2.0
+    assert caught.value.holder == "" and 3 <= len(passes) < 100
+
+
+def _unreadable(monkeypatch, lock, unlink_error=None, readable=False):
+    """The lock cannot be opened by this user (another user's, mode 0600): as root that
+    cannot be made with a mode, so opening it raises EACCES (unless ``readable``), and
+    removing it ``unlink_error`` (a folder with the sticky bit)."""
+    real_open, real_unlink = os.open, os.unlink
+
+    def fake_open(name, flags, *args):
+        if not readable and os.fspath(name) == str(lock) and not flags & os.O_CREAT:
+            raise PermissionError(errno.EACCES, "Permission denied", str(name))
+        return real_open(name, flags, *args)
+
+    def fake_unlink(name, *args, **kwargs):
+        if unlink_error and os.fspath(name) == str(lock):
+            raise PermissionError(unlink_error, os.strerror(unlink_error), str(name))
+        return real_unlink(name, *args, **kwargs)
+
+    monkeypatch.setattr(save_lock.os, "open", fake_open)
+    monkeypatch.setattr(save_lock.os, "unlink", fake_unlink)
+
+
+def test_another_users_unreadable_lock_is_judged_by_its_age(tmp_path, monkeypatch):
+    """rev63 F9: a colleague's 0600 lock, 10 minutes old, was never stale ("save again in a
+    moment" for good). Its age is read with lstat; a fresh one is still waited for."""
+    path = tmp_path / "job.anglebench.json"
+    lock = lock_path_of(path)
+    lock.write_text("4242 otherpc 1\n")
+    _unreadable(monkeypatch, lock)
+    with pytest.raises(ProjectFileBusy) as caught:  # fresh: a live save of that user
+        SaveLock(path, wait=0.1).acquire()
+    assert caught.value.holder == ""
+    ten_minutes_ago = time.time() - 600
+    os.utime(lock, (ten_minutes_ago, ten_minutes_ago))
+    monkeypatch.undo()  # our own new lock is readable again
+    _unreadable(monkeypatch, lock)
+    started = time.monotonic()
+    with SaveLock(path, wait=2.0) as taken:
+        assert taken.held
+        monkeypatch.undo()
+        assert lock.read_text().split()[:2] == [str(os.getpid()), socket.gethostname()]
+    assert time.monotonic() - started < 1.0
+
+
+def test_a_stale_lock_that_may_not_be_removed_says_whose_it_is(tmp_path, monkeypatch):
+    """The colleague's stale lock in a folder with the sticky bit: it cannot be removed by
+    this user. Said plainly, naming its owner and its age, instead of "save again in a
+    moment" for ever (or a save without the lock)."""
+    me = __import__("pwd").getpwuid(os.getuid()).pw_name
+    path = tmp_path / "job.anglebench.json"
+    lock = lock_path_of(path)
+    lock.write_text("4242 otherpc 1\n")
+    ten_minutes_ago = time.time() - 600
+    os.utime(lock, (ten_minutes_ago, ten_minutes_ago))
+    for readable in (False, True):
+        monkeypatch.undo()
+        _unreadable(monkeypatch, lock, errno.EPERM, readable)  # readable or not: not ours
+        raised, took = _acquire(path, wait=2.0)
+        assert isinstance(raised, LockInTheWay), (readable, raised)
+        assert (raised.kind, raised.owner, raised.error) == ("stale", me,
+                                                             "Operation not permitted")
+        assert 590 < raised.age < 700 and took < 1.0
+        assert lock.read_text() == "4242 otherpc 1\n"
+
+
+@pytest.mark.skipif(not hasattr(os, "fchmod"), reason="POSIX modes")
+def test_a_lock_made_with_umask_077_is_readable_by_another_users_saver(tmp_path):
+    path = tmp_path / "job.anglebench.json"
+    old = os.umask(0o077)
+    try:
+        with SaveLock(path) as lock:
+            assert lock.path.stat().st_mode & 0o777 == 0o644
+    finally:
+        os.umask(old)
