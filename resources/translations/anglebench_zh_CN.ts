@@ -1775,7 +1775,7 @@
     </message>
     <message>
         <source>Autosave is off: {reason}</source>
-        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json) an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) what the window is doing with this project, shown in its title (&quot;&quot; nothing: the window sets it to the pending Amend… or Replace…, rev62 F3) where the readings of an untitled project came from, as the certificate it was issued with named them (the register&apos;s record; None: typed in the window) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
+        <extracomment>an autosave ended: &quot;&quot; when it was written, else why it was not (emitted from the thread that wrote it; handled on the window&apos;s) SHA-256 of ``path`` as this window last read or wrote it (None: not known): a save over a file changed since (another window, a colleague, a program) asks the instruments&apos; raw frames, saved and opened with the project (the window sets its capture panel&apos;s raw_capture and load_raw_capture) a new project&apos;s settings of a workbench (the window sets it: the test plan saved with the lab defaults) another project was put in the window (New, Open, Recover, a register record): the window ends a pending Amend… or Replace… with it (rev62 F1) what the window is doing with this project, shown in its title (&quot;&quot; nothing: the window sets it to the pending Amend… or Replace…, rev62 F3) where the readings of an untitled project came from, as the certificate it was issued with named them (the register&apos;s record; None: typed in the window) why the last autosave failed (&quot;&quot; when it did not): shown until a save succeeds</extracomment>
         <translation>自动保存已关闭：{reason}</translation>
     </message>
     <message>
@@ -2225,6 +2225,31 @@ If this is a calibration of its own, say why (printed on the certificate with th
     <message>
         <source>Nothing to export</source>
         <translation>没有可导出的内容</translation>
+    </message>
+    <message>
+        <source>{lock} is the lock of a save that ended {minutes} minutes ago, but it belongs to user {owner} and cannot be removed from here ({error}). Nothing was written; your readings are still here. Ask {owner} or an administrator to delete {lock}, then save again, or save under another name (File › Save as).</source>
+        <extracomment>… and so is a raw capture of more frames than this (a day&apos;s capture, 2 M frames and 66 MB, held the window 0.5 … 3 s at every autosave: #62 review F6); a few minutes of frames write in the GUI thread in well under the 10 ms a repaint may wait files that may be dropped on the window: readings, or a project (.json)</extracomment>
+        <translation>{lock} 是 {minutes} 分钟前已结束的一次保存留下的锁，但它属于用户 {owner}，无法从这里删除（{error}）。未写入任何内容；您的读数仍在。请 {owner} 或管理员删除 {lock} 后再保存，或以其他名称保存（文件 › 另存为）。</translation>
+    </message>
+    <message>
+        <source>a link</source>
+        <translation>一个链接</translation>
+    </message>
+    <message>
+        <source>a named pipe</source>
+        <translation>一个命名管道</translation>
+    </message>
+    <message>
+        <source>a folder</source>
+        <translation>一个文件夹</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>一个非普通文件</translation>
+    </message>
+    <message>
+        <source>{lock} is in the way of the project&apos;s lock: it is {kind} (user {owner}), not a lock AngleBench made. Nothing was written; your readings are still here. Remove {lock}, then save again.</source>
+        <translation>{lock} 妨碍了项目的锁：它是{kind}（用户 {owner}），不是 AngleBench 创建的锁。未写入任何内容；您的读数仍在。请删除 {lock}，然后再保存。</translation>
     </message>
     <message>
         <source>… and {count} more</source>
