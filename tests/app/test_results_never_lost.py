@@ -172,7 +172,9 @@ def test_a_results_file_not_written_is_not_recorded_and_said(samples_dir, tmp_pa
 def test_a_results_file_recorded_but_not_renamed_is_kept_and_said(samples_dir, tmp_path,
                                                                   capsys):
     """The narrow case left: recorded, then the rename failed (or the process was killed):
-    the recorded bytes stay in the temporary file, and the message says where."""
+    the recorded bytes are kept beside it under a name that says whose they are (not the
+    temporary name, which a later save of r.xlsx clears as a killed save's leftover after
+    ten minutes), and the message says where."""
     pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
     real = os.replace
 
@@ -193,7 +195,8 @@ def test_a_results_file_recorded_but_not_renamed_is_kept_and_said(samples_dir, t
         code = _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx))
     said = capsys.readouterr().err
     (number,) = _numbers()
-    (kept,) = tmp_path.glob(".r.xlsx.*.tmp")
+    kept = tmp_path / f"r.{number}.xlsx"
+    assert kept.is_file() and not list(tmp_path.glob(".r.xlsx.*.tmp"))
     assert code == 2
     assert (f"certificate {number} is issued, recorded and written, and its results file "
             f"recorded, but not renamed into place ({xlsx}: Input/output error): the "
