@@ -703,12 +703,15 @@ class Register:
         (the register's own tests).
 
         An amendment or replacement is of the calibration it corrects: issued on the
-        original's workbench, for its item (serial numbers compared by ``serial_key``) and
-        date of calibration, else :class:`NotTheSameCalibration`. What else it changes (the
-        customer's name or address, the item's description, readings, results) is what the
-        change note says. A corrected serial number or date of calibration is issued only
-        with ``correction_confirmed`` and is then stated on it, before the change note
-        ("serial number corrected from LRA-0815 (on AB-2026-0001) to LRA-0816"); never
+        original's workbench, for its item (the serial compared as printed, never by its
+        look-alike key, which only asks or refuses: rev63 F2; an item of no serial by its
+        description and maker too: rev63 F1) and date of calibration, else
+        :class:`NotTheSameCalibration`. What else it changes (the customer's name or
+        address, the description of an item with a serial, readings, results) is what the
+        change note says. A corrected serial number, date of calibration, or description or
+        maker of an item of no serial is issued only with ``correction_confirmed`` and is
+        then stated on it, before the change note ("serial number corrected from LRA-0815
+        (on AB-2026-0001) to LRA-0816"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
         from models.register.identifiers import IdentifierError, normalise_identifier
@@ -856,10 +859,10 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike, separators aside (serial_key). Where there is none (no_serial: empty, "-",
-        "n/a" …), an item of no serial whose description and manufacturer print alike
-        (identifier_key; #62 review: "rotary table" was another item than "Rotary table",
-        and a serial "-" was every item without one)."""
+        alike or differs by case, separators aside (same_serial). Where there is none
+        (no_serial: empty, "-", "n/a" …), an item of no serial whose description and
+        manufacturer print alike (same_identifier; #62 review: "rotary table" was another
+        item than "Rotary table", and a serial "-" was every item without one)."""
         from models.register.identifiers import no_serial, same_serial
 
         c = self._schema.CERTIFICATES.c
