@@ -227,7 +227,7 @@ def issue_certificate(register: Register, kind, result: Any, metadata: Certifica
     ``separate_calibration``: why an original for the item and date of calibration of a
     current certificate is a calibration of its own (else SameCalibrationIssued).
     ``supersedes``: an amendment (or, with ``replacement``, a replacement) of that
-    certificate, of its calibration: its workbench, item (serial_key) and date of calibration,
+    certificate, of its calibration: its workbench, item (serial as printed) and date of calibration,
     else NotTheSameCalibration, before anything is issued; ``correction_confirmed``: a
     corrected serial number or date of calibration, confirmed, stated on it (rev62 F1).
     ``results(document, record)``: the results file (CSV or XLSX) of the certificate issued,

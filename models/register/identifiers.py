@@ -15,19 +15,24 @@ a certificate is uniquely identified; #61 and #62 reviews):
    before it to mark (first, or after a space).
 2. **Kept** as typed otherwise, normalised: Unicode NFKC, every dash and hyphen as "-", every
    space as one " ".
-3. **Compared** by a key (:func:`identifier_key`, :func:`serial_key`) in which what prints
-   alike is one: NFKC; default-ignorable code points dropped (the key never depends on
-   them, whatever called it); every decimal digit as its ASCII digit, by its value
-   ("٠٨١٥" is 0815; "৭", seven, is 7, though it looks like 9: no bundled font prints it); the
-   UTS #39 skeleton's prototypes, from confusables.txt, for every character that prints as
-   a Latin letter, digit or sign (Cyrillic "А", Greek "Β", Cherokee "Ꮮ", Latin small
+3. **Compared** by two keys, never chained (:func:`same_identifier`, :func:`same_serial`):
+   the UTS #39 skeleton, case-sensitive as UTS #39 defines it (:func:`identifier_key`,
+   :func:`serial_key`), and the text case folded with nothing else made alike
+   (:func:`folded_identifier_key`, :func:`folded_serial_key`). Both: NFKC;
+   default-ignorable code points dropped (the key never depends on them, whatever called
+   it); every decimal digit as its ASCII digit, by its value ("٠٨١٥" is 0815; "৭", seven,
+   is 7, though it looks like 9: no bundled font prints it); zeros before a number dropped
+   ("01" is "0001"). The skeleton, on NFD (so that "Ӧ", Cyrillic О and a diaeresis, meets
+   "Ö"; rev63 F3): the prototypes, from confusables.txt, for every character that prints
+   as a Latin letter, digit or sign (Cyrillic "А", Greek "Β", Cherokee "Ꮮ", Latin small
    capitals; :mod:`models.register._identifier_tables`, generated from Unicode's data by
-   app/identifier_tables.py, no package offering the skeleton being a dependency);
-   case folded; the look-alikes of digits within Latin ("O"/"o" as 0; "l", "I", "i" and
-   "|" as 1) and "rn" as "m", as UTS #39 has them; zeros before a number dropped ("01" is
-   "0001"). Because case is folded too, the key joins what prints alike in either case:
-   "L" and "1" have one key (l ≡ 1 in print, L ≡ l by case), which only ever asks a
-   question or refuses a number — never issues a second one.
+   app/identifier_tables.py, no package offering the skeleton being a dependency); the
+   look-alikes of digits within Latin ("O" as 0; "l", "I" and "|" as 1) and "rn" as "m",
+   as UTS #39 has them. Case is not folded in the skeleton: "L" prints otherwise than "I"
+   and "i" otherwise than "1" (rev63 F10: case folded before the look-alikes made
+   "SN-L5" one with "SN-I5"). A key only ever asks a question or refuses a number — never
+   issues a second one, and never lets a change through (what prints otherwise is
+   compared as printed, :func:`as_printed`; rev63 F2).
    - A certificate number's separators (any run of punctuation, symbols and spaces: "-",
      "·", ",", "#", "/", ".") are one separator, none at either end ("AB·2026·0001" and
      "AB-2026-0001." are AB-2026-0001; the amendment form "-A<n>" is read from this key).
@@ -48,8 +53,9 @@ import unicodedata
 from models.messages import QT_TR_NOOP, message
 from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
-__all__ = ["IdentifierError", "identifier_key", "no_serial", "normalise_identifier",
-           "serial_key"]
+__all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
+           "identifier_key", "no_serial", "normalise_identifier", "same_identifier",
+           "same_serial", "serial_key"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -108,58 +114,116 @@ def normalise_identifier(text: str, what: str = "identifier") -> str:
     return " ".join(text.split())
 
 
-#: Latin letters and signs UTS #39 gives as digits' look-alikes (its own "0" → "O",
-#: "1" → "l", "I" → "l", "|" → "l"), read as the digits, case folded
-_DIGIT_LIKE = str.maketrans("oli|", "0111")
+#: ASCII letters and signs UTS #39 gives as digits' look-alikes (its own "0" → "O",
+#: "1" → "l", "I" → "l", "|" → "l"), read as the digits: case-sensitive, as the skeleton
+#: is ("L", "i" and "o" print otherwise: rev63 F10, "SN-L5" is not "SN-I5")
+_DIGIT_LIKE = str.maketrans("OlI|", "0111")
 
 
 def _is_separator(char: str) -> bool:
     return unicodedata.category(char)[0] in "PSZ"
 
 
-def _printed(text: str) -> str:
-    """``text`` as it prints: NFKC, no default-ignorable code point, decimal digits as
-    ASCII ones, UTS #39 prototypes, case folded, digit look-alikes as digits (separators
-    are left to the caller, and so is "rn", which its separators may part)."""
+def _digits(text: str) -> str:
+    """NFKC, no default-ignorable code point, decimal digits as ASCII ones."""
     kept = []
     for char in unicodedata.normalize("NFKC", text or ""):
         if _ignorable(char):
             continue
         digit = unicodedata.decimal(char, None)
         kept.append(str(digit) if digit is not None else char)
-    folded = "".join(kept)
-    for _ in range(2):  # a prototype's case folded may have a prototype of its own
-        folded = "".join(CONFUSABLES.get(char, char) for char in folded).casefold()
-    return folded.translate(_DIGIT_LIKE)
+    return "".join(kept)
+
+
+def _skeleton(text: str) -> str:
+    """``text``'s UTS #39 skeleton, case-sensitive as UTS #39 defines it: NFD (so that a
+    composed Cyrillic or Greek letter meets its Latin look-alike: "Ӧ" is "О" and a
+    diaeresis, "Ö" is "O" and one; rev63 F3), the prototypes, the digit look-alikes as
+    digits, then NFC again (separators and "rn" are left to the caller)."""
+    text = unicodedata.normalize("NFD", _digits(text))
+    text = "".join(CONFUSABLES.get(char, char) for char in text)
+    return unicodedata.normalize("NFC", text.translate(_DIGIT_LIKE))
+
+
+def _folded(text: str) -> str:
+    """``text`` case folded, and nothing else made alike (no prototype, no digit
+    look-alike: a chain of the two made "L" one with "I"; rev63 F10)."""
+    return unicodedata.normalize("NFC", _digits(text).casefold())
 
 
 def _zeros_dropped(text: str) -> str:
     """"rn" as "m" (UTS #39), and no zero before a number."""
-    return re.sub(r"[0-9]+", lambda digits: str(int(digits.group())), text.replace("rn", "m"))
+    # not int(): it refuses more than 4,300 digits (rev63 M4)
+    return re.sub(r"[0-9]+", lambda digits: digits.group().lstrip("0") or "0",
+                  text.replace("rn", "m"))
+
+
+def _number_key(printed: str) -> str:
+    words = "".join(" " if _is_separator(char) else char for char in printed).split()
+    return _zeros_dropped("-".join(words))
+
+
+def _serial_key(printed: str) -> str:
+    return _zeros_dropped("".join(c for c in printed if not _is_separator(c)))
 
 
 @functools.lru_cache(maxsize=1 << 16)  # every record's, at each typed number
 def identifier_key(text: str) -> str:
-    """What makes two identifiers one: equal keys print alike (the module's principle 3)."""
-    words = "".join(" " if _is_separator(char) else char for char in _printed(text)).split()
-    return _zeros_dropped("-".join(words))
+    """The identifier's skeleton key (the module's principle 3): equal keys print alike,
+    case aside. :func:`same_identifier` also joins what differs only by case."""
+    return _number_key(_skeleton(text))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def folded_identifier_key(text: str) -> str:
+    """The identifier's key case folded (no look-alikes): "ab-2026-0001" is AB-2026-0001."""
+    return _number_key(_folded(text))
+
+
+def same_identifier(one: str, other: str) -> bool:
+    """Whether two identifiers are one: their skeletons are equal, or they are equal case
+    aside; never a chain of both (rev63 F10)."""
+    return identifier_key(one) == identifier_key(other) \
+        or folded_identifier_key(one) == folded_identifier_key(other)
 
 
 @functools.lru_cache(maxsize=1 << 16)
 def serial_key(text: str) -> str:
-    """What makes two serial numbers one item's: :func:`identifier_key` without the
+    """What makes two serial numbers one item's, case aside: the skeleton key without the
     separators a serial is typed with or without ("RX260815" is "RX-26-0815"; #61
-    re-check: the same item issued again got past the one-calibration check that way)."""
-    return _zeros_dropped("".join(c for c in _printed(text) if not _is_separator(c)))
+    re-check: the same item issued again got past the one-calibration check that way).
+    :func:`same_serial` also joins what differs only by case."""
+    return _serial_key(_skeleton(text))
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def folded_serial_key(text: str) -> str:
+    """The serial's key case folded (no look-alikes): "lra-0815" is LRA-0815."""
+    return _serial_key(_folded(text))
+
+
+def same_serial(one: str, other: str) -> bool:
+    """Whether two serial numbers are one item's: by their skeletons, or case aside; never
+    a chain of both (rev63 F10: "SN-L5" and "SN-I5" are two items)."""
+    return serial_key(one) == serial_key(other) \
+        or folded_serial_key(one) == folded_serial_key(other)
+
+
+def as_printed(text: str) -> str:
+    """``text`` as a certificate prints it, for telling whether it changed: NFC, outer
+    spaces trimmed (rev63 F2: a serial that prints otherwise is a corrected one, though it
+    shares a key)."""
+    return unicodedata.normalize("NFC", text or "").strip()
 
 
 #: what labs write in the serial's field for an item that has none
 _NO_SERIAL_WORDS = ("", "n/a", "na", "n.a.", "none", "no serial", "unknown", "nil", "null",
                     "keine", "无", "没有", "不详", "未知")
-_NO_SERIAL = frozenset(serial_key(word) for word in _NO_SERIAL_WORDS)
+_NO_SERIAL = frozenset(key(word) for word in _NO_SERIAL_WORDS
+                       for key in (folded_serial_key, serial_key))
 
 
 def no_serial(text: str) -> bool:
     """Whether ``text``, in the serial number's field, says the item has none (principle
     4): empty, separators only ("-"), or a word for none ("n/a")."""
-    return serial_key(text) in _NO_SERIAL
+    return folded_serial_key(text) in _NO_SERIAL or serial_key(text) in _NO_SERIAL

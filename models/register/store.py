@@ -586,13 +586,12 @@ class Register:
     def _check_free(self, conn, number: str) -> None:
         """Raise RegisterError if ``number``, or one that prints alike (identifier_key), was
         issued."""
-        from models.register.identifiers import identifier_key
+        from models.register.identifiers import same_identifier
 
         c = self._schema.CERTIFICATES.c
-        key = identifier_key(number)
         row = next((r for r in conn.execute(self._sa.select(
             c.number, c.issued_at, c.workbench, c.item_serial).order_by(c.id))
-            if r.number == number or identifier_key(r.number) == key), None)
+            if r.number == number or same_identifier(r.number, number)), None)
         if row is not None:
             raise RegisterError(
                 message(
@@ -612,7 +611,7 @@ class Register:
 
     def _plan(self, conn, meta: CertificateMetadata, supersedes: str, replacement: bool,
               issue_date: dt.date, now: dt.datetime) -> _Plan:
-        from models.register.identifiers import identifier_key
+        from models.register.identifiers import folded_identifier_key, identifier_key
 
         sa, certificates = self._sa, self._schema.CERTIFICATES
         records, head = self._state(conn)
@@ -644,7 +643,8 @@ class Register:
                 revision, number = f"amendment {n}", f"{_root(original)}-A{n}"
         elif meta.certificate_number:
             number = meta.certificate_number
-            if _AMENDMENT_FORM.search(number) or _AMENDMENT_FORM.search(identifier_key(number)):
+            if any(_AMENDMENT_FORM.search(key) for key in (
+                    number, identifier_key(number), folded_identifier_key(number))):
                 raise RegisterError(message(QT_TR_NOOP(
                     "certificate number {number}: numbers ending -A and a number are kept for "
                     "amendments, which the register numbers itself"), number=number))
@@ -703,12 +703,15 @@ class Register:
         (the register's own tests).
 
         An amendment or replacement is of the calibration it corrects: issued on the
-        original's workbench, for its item (serial numbers compared by ``serial_key``) and
-        date of calibration, else :class:`NotTheSameCalibration`. What else it changes (the
-        customer's name or address, the item's description, readings, results) is what the
-        change note says. A corrected serial number or date of calibration is issued only
-        with ``correction_confirmed`` and is then stated on it, before the change note
-        ("serial number corrected from LRA-0815 (on AB-2026-0001) to LRA-0816"); never
+        original's workbench, for its item (the serial compared as printed, never by its
+        look-alike key, which only asks or refuses: rev63 F2; an item of no serial by its
+        description and maker too: rev63 F1) and date of calibration, else
+        :class:`NotTheSameCalibration`. What else it changes (the customer's name or
+        address, the description of an item with a serial, readings, results) is what the
+        change note says. A corrected serial number, date of calibration, or description or
+        maker of an item of no serial is issued only with ``correction_confirmed`` and is
+        then stated on it, before the change note ("serial number corrected from LRA-0815
+        (on AB-2026-0001) to LRA-0816"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
         from models.register.identifiers import IdentifierError, normalise_identifier
@@ -856,11 +859,11 @@ class Register:
                           ) -> tuple[str, ...]:
         """The current certificates (issued, not superseded or withdrawn) of ``workbench``
         reporting the item and date of calibration of ``meta``: a serial number that prints
-        alike, separators aside (serial_key). Where there is none (no_serial: empty, "-",
-        "n/a" …), an item of no serial whose description and manufacturer print alike
-        (identifier_key; #62 review: "rotary table" was another item than "Rotary table",
-        and a serial "-" was every item without one)."""
-        from models.register.identifiers import identifier_key, no_serial, serial_key
+        alike or differs by case, separators aside (same_serial). Where there is none
+        (no_serial: empty, "-", "n/a" …), an item of no serial whose description and
+        manufacturer print alike (same_identifier; #62 review: "rotary table" was another
+        item than "Rotary table", and a serial "-" was every item without one)."""
+        from models.register.identifiers import no_serial, same_serial
 
         c = self._schema.CERTIFICATES.c
         query = self._sa.select(c.number, c.item_serial, c.item_description,
@@ -868,14 +871,11 @@ class Register:
             c.workbench == workbench, c.status == "issued",
             c.calibration_date == meta.calibration_date)
         if no_serial(meta.item_serial):
-            item = (identifier_key(meta.item_description), identifier_key(meta.item_manufacturer))
             return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                         if no_serial(row.item_serial) and item == (
-                             identifier_key(row.item_description),
-                             identifier_key(row.item_manufacturer)))
-        key = serial_key(meta.item_serial)
+                         if no_serial(row.item_serial) and _same_item(
+                             row.item_description, row.item_manufacturer, meta))
         return tuple(row.number for row in conn.execute(query.order_by(c.id))
-                     if serial_key(row.item_serial) == key)
+                     if same_serial(row.item_serial, meta.item_serial))
 
     def _corrections(self, conn, original: CertificateRecord, workbench: str,
                      meta: CertificateMetadata, confirmed: bool) -> tuple[Any, ...]:
@@ -883,7 +883,7 @@ class Register:
         corrects of the calibration's identity, as stated on it (() when nothing);
         NotTheSameCalibration when it is not a correction of that calibration, or not
         confirmed (see :meth:`issue`)."""
-        from models.register.identifiers import serial_key
+        from models.register.identifiers import as_printed, no_serial
 
         if original.workbench != workbench:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
@@ -892,7 +892,9 @@ class Register:
                 "(ISO/IEC 17025 7.8.8); a calibration on another workbench is an original"),
                 number=original.number, original=original.workbench, workbench=workbench))
         changes = []
-        if serial_key(original.item_serial) != serial_key(meta.item_serial):
+        # compared as printed, never by the look-alike key, which only asks or refuses: a
+        # serial that prints otherwise is a corrected one (rev63 F2: "XL-100" → "XI-100")
+        if as_printed(original.item_serial) != as_printed(meta.item_serial):
             changes.append(message(QT_TR_NOOP(
                 "serial number corrected from {old} (on {number}) to {new}"),
                 old=original.item_serial or "—", number=original.number,
@@ -902,8 +904,30 @@ class Register:
                 "date of calibration corrected from {old} (on {number}) to {new}"),
                 old=original.calibration_date or "—", number=original.number,
                 new=meta.calibration_date or "—"))
+        # an item of no serial is told from another by its description and maker, as the
+        # one-calibration check tells it (rev63 F1: A's certificate amended with B's details)
+        unnamed = no_serial(original.item_serial) and no_serial(meta.item_serial)
+        if unnamed and not _same_item(original.item_description, original.item_manufacturer,
+                                      meta):
+            changes.append(message(QT_TR_NOOP(
+                "item (no serial number) corrected from {old} (on {number}) to {new}"),
+                old=_item_text(original.item_description, original.item_manufacturer),
+                number=original.number,
+                new=_item_text(meta.item_description, meta.item_manufacturer)))
         if not changes:
             return ()
+        if not confirmed and unnamed:
+            raise NotTheSameCalibration(message(QT_TR_NOOP(
+                "{number} reports {item}, which has no serial number, calibrated {date}; these "
+                "details give {new_item}, calibrated {new_date}. An amendment or replacement "
+                "corrects the same calibration (ISO/IEC 17025 7.8.8): another item's or another "
+                "day's calibration is an original; a corrected description, manufacturer or "
+                "date of calibration is issued only when confirmed, and is then stated on it"),
+                number=original.number,
+                item=_item_text(original.item_description, original.item_manufacturer),
+                date=original.calibration_date or "—",
+                new_item=_item_text(meta.item_description, meta.item_manufacturer),
+                new_date=meta.calibration_date or "—"), tuple(changes))
         if not confirmed:
             raise NotTheSameCalibration(message(QT_TR_NOOP(
                 "{number} reports serial number {serial}, calibrated {date}; these details give "
@@ -1603,6 +1627,21 @@ def _root(record: CertificateRecord) -> str:
 
 
 _AMENDMENT_FORM = re.compile(r"-A\d+$", re.IGNORECASE)
+
+
+def _same_item(description: str, manufacturer: str, meta: CertificateMetadata) -> bool:
+    """Whether an item of no serial number is ``meta``'s: its description and manufacturer
+    print alike (same_identifier)."""
+    from models.register.identifiers import same_identifier
+
+    return same_identifier(description or "", meta.item_description or "") \
+        and same_identifier(manufacturer or "", meta.item_manufacturer or "")
+
+
+def _item_text(description: str, manufacturer: str) -> str:
+    """An item of no serial number as a sentence names it: "Rotary table RT-1 (Acme)"."""
+    description = description or "—"
+    return f"{description} ({manufacturer})" if manufacturer else description
 
 
 def _amendment_count(conn, register: Register, record: CertificateRecord) -> int:

@@ -1,6 +1,6 @@
 """An amendment or replacement is of the calibration it supersedes (ISO/IEC 17025 7.8.8;
-rev62 F1): its workbench, its item (serial numbers compared by serial_key) and its date of
-calibration. A pending Amend… ends when another project is opened, and when the register
+rev62 F1): its workbench, its item (serial numbers compared as printed; rev63 F2) and its
+date of calibration. A pending Amend… ends when another project is opened, and when the register
 refuses it for good. Certificates issued with ``anglebench analyze --certificate``, amended
 in the real window (its dialogs answered)."""
 
@@ -193,15 +193,21 @@ def test_a_corrected_serial_is_asked_and_then_stated(window, qtbot, two, tmp_pat
 
 
 @pytest.mark.slow
-def test_a_serial_typed_otherwise_is_not_a_correction(window, qtbot, two, tmp_path):
-    """The same serial typed with other separators or case (serial_key) amends unasked."""
+def test_a_serial_typed_otherwise_is_a_correction_asked_and_stated(window, qtbot, two,
+                                                                    tmp_path):
+    """The same serial typed with other separators or case (one serial_key) prints otherwise:
+    it is asked, and stated on the amendment (rev63 F2: the key never lets a change
+    through)."""
     a, _b = two
     asked: list = []
     _amend(window, qtbot, tmp_path, a, asked, item_serial="lra 0815")
-    window.certificates.view.confirm_correction = lambda *a: pytest.fail("asked")
+    window.certificates.view.confirm_correction = lambda revision, reason: \
+        asked.append(("confirm", revision.number)) or True
     assert window.export_certificate()
+    assert ("confirm", a) in asked
     assert _records()[a + "-A1"][1] == "lra 0815"
-    assert "Changed: typo in the address" in _pdf_text(tmp_path / "exported.pdf")
+    assert (f"Changed: serial number corrected from LRA-0815 (on {a}) to lra 0815; typo in "
+            "the address") in _pdf_text(tmp_path / "exported.pdf")
 
 
 def test_the_windows_question_names_the_certificate_and_defaults_to_no(window):
@@ -219,3 +225,35 @@ def test_the_windows_question_names_the_certificate_and_defaults_to_no(window):
                     "correction stated on it. No: nothing is issued, and the next certificate "
                     "is an original.")
     assert default == QMessageBox.StandardButton.No
+
+
+def test_the_command_line_joins_a_letter_with_a_mark_and_its_look_alike(samples_dir, tmp_path,
+                                                                        capsys):
+    """rev63 F3 (ident_diacritic.sh): serial "MÖ-0815" (Latin), then "MӦ-0815" (Cyrillic O
+    with diaeresis), same item and day, is refused as a second original; a typed number
+    "KӒ-2026-0001" after "KÄ-2026-0001" is refused as issued; "MO-0815" and "KA-2026-0001"
+    print otherwise and are issued."""
+    meta = json.loads((samples_dir / "certificate_theodolite.json").read_text(encoding="utf-8"))
+
+    def analyze(name, *extra, **changes):
+        (tmp_path / f"{name}.json").write_text(json.dumps(
+            {**meta, "example": False, "certificate_number": "", **changes}), encoding="utf-8")
+        return main(["analyze", "theodolite", str(samples_dir / "theodolite_sample.csv"),
+                     "--certificate", str(tmp_path / f"{name}.pdf"),
+                     "--metadata", str(tmp_path / f"{name}.json"), *extra])
+
+    assert analyze("a", item_serial="M\u00d6-0815") == 0
+    assert analyze("b", item_serial="M\u04e6-0815") != 0
+    assert "already reports this calibration (serial M\u04e6-0815" in capsys.readouterr().err
+    assert analyze("c", item_serial="MO-0815") == 0
+    assert analyze("n1", "--separate-calibration", "n1",
+                   certificate_number="K\u00c4-2026-0001", item_serial="OTHER-0") == 0
+    assert analyze("n2", "--separate-calibration", "n2",
+                   certificate_number="K\u04d2-2026-0001", item_serial="OTHER-1") != 0
+    assert ("certificate number K\u04d2-2026-0001 (K\u00c4-2026-0001) was issued on"
+            in capsys.readouterr().err)
+    assert analyze("n3", "--separate-calibration", "n3",
+                   certificate_number="KA-2026-0001", item_serial="OTHER-2") == 0
+    with Register(register_url()) as register:
+        assert sorted(r.item_serial for r in register.list()) == [
+            "MO-0815", "M\u00d6-0815", "OTHER-0", "OTHER-2"]
