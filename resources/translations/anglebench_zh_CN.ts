@@ -6265,6 +6265,14 @@ If this is a calibration of its own, say why (printed on the certificate with th
         <translation>校准日期由 {old}（见 {number}）更正为 {new}</translation>
     </message>
     <message>
+        <source>item (no serial number) corrected from {old} (on {number}) to {new}</source>
+        <translation>被校件（无序列号）由 {old}（见 {number}）更正为 {new}</translation>
+    </message>
+    <message>
+        <source>{number} reports {item}, which has no serial number, calibrated {date}; these details give {new_item}, calibrated {new_date}. An amendment or replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another item&apos;s or another day&apos;s calibration is an original; a corrected description, manufacturer or date of calibration is issued only when confirmed, and is then stated on it</source>
+        <translation>{number} 报告的是无序列号的 {item}、校准于 {date}；这些信息给出的是 {new_item}、校准于 {new_date}。修改或替代更正的是同一次校准（ISO/IEC 17025 7.8.8）：另一件物品或另一天的校准是原始证书；更正后的名称、制造商或校准日期只有经确认才会签发，并在证书上写明</translation>
+    </message>
+    <message>
         <source>{number} reports serial number {serial}, calibrated {date}; these details give serial number {new_serial}, calibrated {new_date}. An amendment or replacement corrects the same calibration (ISO/IEC 17025 7.8.8): another item&apos;s or another day&apos;s calibration is an original; a corrected serial number or date of calibration is issued only when confirmed, and is then stated on it</source>
         <translation>{number} 报告的是序列号 {serial}、校准于 {date}；这些信息给出的是序列号 {new_serial}、校准于 {new_date}。修改或替代更正的是同一次校准（ISO/IEC 17025 7.8.8）：另一件物品或另一天的校准是原始证书；更正后的序列号或校准日期只有经确认才会签发，并在证书上写明</translation>
     </message>
