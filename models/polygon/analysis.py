@@ -47,7 +47,7 @@ from models.readings.sheet import Column, ColumnKind, ParsedReadings
 from models.uncertainty.error_stats import error_stats
 from models.uncertainty.iso230 import iso230_evaluate
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import printed_range, significant_decimals, uncertainty_decimals
+from models.uncertainty.rounding import printed_range, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     AcceptsReference,
@@ -927,8 +927,7 @@ class Polygon(Workbench[PolygonResult], IssuesCertificates[PolygonResult], Sends
             budget = polygon_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return None
-        decimals = significant_decimals(budget.max_expanded)
-        return 2 if decimals is None else decimals
+        return uncertainty_decimals(budget.max_expanded)
 
     def printed_headline(self, result, printed=None):
         s = result.stats

@@ -18,7 +18,7 @@ from models.theodolite.acquisition import theodolite_guide
 from models.theodolite.model import MODEL_INPUT, TheodoliteResult, analyze_run
 from models.uncertainty.iso230 import once_note
 from models.uncertainty.lab_scope import cmc_parameter
-from models.uncertainty.rounding import printed_range, significant_decimals, uncertainty_decimals
+from models.uncertainty.rounding import printed_range, uncertainty_decimals
 from models.workbench import (
     SIGN_CONVENTION,
     GuidesAcquisition,
@@ -382,8 +382,7 @@ class Theodolite(Workbench[TheodoliteResult], IssuesCertificates[TheodoliteResul
             budget = theodolite_budget(result, metadata, settings)
         except (ValueError, ArithmeticError, IndexError):
             return None
-        decimals = significant_decimals(budget.max_expanded)
-        return 2 if decimals is None else decimals
+        return uncertainty_decimals(budget.max_expanded)
 
     def printed_headline(self, result, printed=None):
         d = 2 if printed is None else printed

@@ -23,9 +23,8 @@ from app.certificate_dialogs import CertificateDialogs
 from app.certificate_presenter import CertificatePresenter, CertificateView, PendingRevision
 from app.main import main
 from models.certificate.metadata import CertificateMetadata
-from models.readings.sheet import ReadingsSheet
-from models.readings.tabular_import import map_columns, read_table
 from models.registry import KINDS
+from tests.app.test_document_kind_said import Store, _details, _sample
 
 pytestmark = pytest.mark.slow  # certificates are rendered
 YEAR = dt.datetime.now(dt.timezone.utc).year
@@ -64,25 +63,6 @@ PENDING_ZH = {
 }
 
 
-class Store(dict):
-    def value(self, key, default=None):
-        return self.get(key, default)
-
-    def setValue(self, key, value):  # noqa: N802 - QSettings' name
-        self[key] = value
-
-
-def _details(samples_dir, key: str, **changes) -> CertificateMetadata:
-    data = json.loads((samples_dir / f"certificate_{key}.json").read_text(encoding="utf-8"))
-    data.update({"example": False, "certificate_number": "", **changes})  # the lab's own
-    return CertificateMetadata.from_dict(data)
-
-
-def _sample(samples_dir, key: str):
-    kind = KINDS[key]
-    rows = map_columns(read_table(samples_dir / kind.sample_file), kind.columns)
-    return kind, kind.analyze(ReadingsSheet(kind.columns, rows).parse(),
-                              kind.checked_settings({})), rows
 
 
 def _clear_caches() -> None:
