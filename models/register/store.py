@@ -714,13 +714,20 @@ class Register:
         (on AB-2026-0001) to LRA-0816"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
-        from models.register.identifiers import IdentifierError, normalise_identifier
+        from models.register.identifiers import (IdentifierError, normalise_identifier,
+                                                 refuse_unprinted)
 
         meta = request.metadata
         try:
             number = normalise_identifier(meta.certificate_number, message(
                 QT_TR_NOOP("certificate number")))
             serial = normalise_identifier(meta.item_serial, message(QT_TR_NOOP("serial number")))
+            # printed and stored as typed: what prints as nothing is refused, as in a number
+            # (#63 regkeys: "ACME\u200b Ltd" printed as "ACME Ltd", another text in the register)
+            for text, what in ((meta.item_description, QT_TR_NOOP("item description")),
+                               (meta.item_manufacturer, QT_TR_NOOP("manufacturer")),
+                               (meta.customer_name, QT_TR_NOOP("customer"))):
+                refuse_unprinted(text, message(what))
         except IdentifierError as exc:
             raise RegisterError(reason_of(exc)) from None
         if number.upper().startswith("SPECIMEN"):

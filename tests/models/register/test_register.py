@@ -741,3 +741,23 @@ def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(regist
     register.set_interval("ab105", None)
     assert register.due_date("AB-10 5") is None and register.interval("AB-10 5") is None
     assert register.audit() == []  # each interval cleared is in the chain
+
+
+@pytest.mark.parametrize(("field", "what", "typed", "at"), [
+    ("customer_name", "customer", "ACME\u200b Ltd", 5),
+    ("item_description", "item description", "Rotary\u00ad encoder", 7),
+    ("item_manufacturer", "manufacturer", "Example\u2060 Instruments", 8)])
+def test_a_customer_description_or_maker_that_prints_nothing_is_refused(register, field, what,
+                                                                        typed, at):
+    """#63 regkeys: a serial or number holding a character that prints as nothing was
+    refused, but a customer "ACME\\u200b Ltd" was issued, printed as "ACME Ltd" and stored
+    as another text; the description and the maker too."""
+    code = ord(typed[at - 1])
+    with pytest.raises(RegisterError, match=f'{what} ".*": character {at} is U\\+{code:04X} '
+                       r"\(.*\), which prints as nothing or moves the text; type the "
+                       f"{what} again"):
+        register.issue(request(dataclasses.replace(META, **{field: typed})), render)
+    assert register.list() == []
+    fine = typed.replace(typed[at - 1], "")  # typed again without it: issued as typed
+    record, _ = register.issue(request(dataclasses.replace(META, **{field: fine})), render)
+    assert getattr(record, field.removesuffix("_name")) == fine
