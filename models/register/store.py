@@ -714,8 +714,7 @@ class Register:
         (on AB-2026-0001) to LRA-0816"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
-        from models.register.identifiers import (IdentifierError, normalise_identifier,
-                                                 refuse_unprinted)
+        from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
 
         meta = request.metadata
         try:

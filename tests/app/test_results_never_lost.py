@@ -205,6 +205,48 @@ def test_a_results_file_recorded_but_not_renamed_is_kept_and_said(samples_dir, t
     assert entry["number"] == number and entry["sha256"] == _sha(kept)
 
 
+class _Killed(BaseException):
+    """The process killed (kill -9) at that point: nothing after it runs."""
+
+
+@pytest.mark.slow
+def test_a_results_file_recorded_then_killed_before_named_is_never_cleared(samples_dir,
+                                                                          tmp_path, capsys):
+    """#63 regkeys: an issue killed between recording the results file and naming it left
+    the recorded bytes only in the temporary ".r.xlsx.*.tmp", which the next save of r.xlsx
+    deleted after ten minutes as a killed save's leftover: the only copy of a recorded
+    results file. It is now kept beside it as r.<number>.xlsx, and said."""
+    import app.certificate_issue
+
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+
+    def killed(*_args, **_kwargs):
+        raise _Killed
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(app.certificate_issue, "_place", killed)
+        with pytest.raises(_Killed):
+            _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx))
+    (entry,) = _results()
+    (temp,) = tmp_path.glob(".r.xlsx.*.tmp")  # the only copy of the recorded file
+    assert not xlsx.exists() and _sha(temp) == entry["sha256"]
+    eleven_minutes_ago = temp.stat().st_mtime - 660
+    os.utime(temp, (eleven_minutes_ago, eleven_minutes_ago))
+    capsys.readouterr()
+    # a later save of r.xlsx (the results of a draft), which clears killed saves' leftovers
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--results", str(xlsx)]) == 0
+    kept = tmp_path / f"r.{entry['number']}.xlsx"
+    assert [p.name for p in tmp_path.iterdir() if p.is_file() and _sha(p) == entry["sha256"]] \
+        == [kept.name]
+    assert not list(tmp_path.glob(".r.xlsx.*.tmp")) and xlsx.is_file()
+    said = capsys.readouterr().err
+    assert (f"{temp} is the results file recorded with certificate {entry['number']}, left "
+            f"under a temporary name by an issue stopped before it was named: kept as "
+            f"{kept}") in said
+    assert main(["register", "verify", str(kept)]) == 0
+
+
 # -- an issued file is never replaced (F8) ------------------------------------------------------
 
 @pytest.mark.slow
