@@ -93,7 +93,8 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
     the register recorded: placed beside it as ``r.<number>.xlsx`` (:func:`keep_in_sight`),
     so that the save about to be made, which clears such leftovers, never deletes the only
     copy of a recorded results file (an issue killed after recording it and before naming
-    it). Returns what was said (also logged)."""
+    it). Returns what was said (also logged); OutputRefused when one cannot be kept (nothing
+    is to be written then: the save would clear it)."""
     said: list[Message] = []
     recorded: dict[str, str] | None = None
     for _flag, out in outputs:
@@ -105,18 +106,36 @@ def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]
                 for entry in register.results_records():
                     recorded.setdefault(entry["sha256"], entry["number"])
             try:
-                number = recorded.get(_sha256(temp))
+                digest = _sha256(temp)
             except OSError:
                 continue  # unreadable: the save clears it if it can
-            if number is None:
-                continue
+            number = recorded.get(digest)
+            if number is None or _named(digest, out, number):
+                continue  # no recorded file, or named already (killed after the link)
             kept = keep_in_sight(temp, out, number)
+            if kept == os.fspath(temp):  # neither linked nor copied: the save would clear it
+                raise OutputRefused(message(QT_TR_NOOP(
+                    "{temp} is the results file recorded with certificate {number}, left under "
+                    "a temporary name by an issue stopped before it was named, and it could "
+                    "not be kept under another name: nothing was written; move it first"),
+                    temp=os.fspath(temp), number=number))
             said.append(message(QT_TR_NOOP(
                 "{temp} is the results file recorded with certificate {number}, left under "
                 "a temporary name by an issue stopped before it was named: kept as {kept}"),
                 temp=os.fspath(temp), number=number, kept=kept))
             log.warning("%s", said[-1])
     return said
+
+
+def _named(digest: str, out: str, number: str) -> bool:
+    """Whether the recorded file of SHA-256 ``digest`` is at ``out`` or at the name
+    :func:`keep_in_sight` gives it."""
+    target = Path(out)
+    for name in (target, target.with_name(f"{target.stem}.{number}{target.suffix}")):
+        with contextlib.suppress(OSError):
+            if name.is_file() and _sha256(name) == digest:
+                return True
+    return False
 
 
 def refuse_issued_files(register, outputs: Iterable[tuple[str, str | None]]) -> list[Message]:

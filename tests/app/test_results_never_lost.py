@@ -425,3 +425,47 @@ def test_an_issued_file_is_never_replaced_by_an_export(samples_dir, tmp_path, ca
     assert f"{one} is the PDF of certificate {number}, as issued" in view.tell.call_args.args[1]
     assert {path: _sha(path) for path in kept} == kept
     assert _numbers() == [number]
+
+
+def test_a_recorded_leftover_is_copied_where_no_hard_link_can_be_made_and_never_cleared(
+        tmp_path):
+    """#63 regkeys: keeping a recorded results file left under its temporary name: a copy
+    where hard links cannot be made, never replacing a file; when neither can be made the
+    output is refused (the save would have cleared it); an unrecorded leftover is left to
+    the save to clear."""
+    from app.issued_outputs import keep_recorded_temporaries
+    from models.project.atomic_write import write_bytes_atomic
+
+    class Recorded:
+        def results_records(self):
+            return [{"number": "AB-2026-0007", "sha256": hashlib.sha256(b"recorded").hexdigest()}]
+
+    xlsx = tmp_path / "r.xlsx"
+    taken = tmp_path / "r.AB-2026-0007.xlsx"
+    taken.write_bytes(b"another file")
+    temp, other = tmp_path / ".r.xlsx.abcdefgh.tmp", tmp_path / ".r.xlsx.ijklmnop.tmp"
+    temp.write_bytes(b"recorded")
+    other.write_bytes(b"never recorded")
+    for stale in (temp, other):
+        os.utime(stale, (stale.stat().st_mtime - 660,) * 2)
+
+    def no_link(*_args):
+        raise OSError(errno.EPERM, "Operation not permitted")
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "link", no_link)
+        (said,) = keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
+    kept = tmp_path / "r.AB-2026-0007-2.xlsx"
+    assert kept.read_bytes() == b"recorded" and taken.read_bytes() == b"another file"
+    assert not temp.exists() and f"kept as {kept}" in said
+    write_bytes_atomic(xlsx, b"the new save")
+    assert not other.exists() and kept.read_bytes() == b"recorded"
+
+    temp.write_bytes(b"recorded")
+    os.utime(temp, (temp.stat().st_mtime - 660,) * 2)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "link", no_link)
+        patch.setattr("app.issued_outputs._copy_new", no_link)
+        with pytest.raises(OutputRefused, match="could not be kept under another name"):
+            keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
+    assert temp.read_bytes() == b"recorded"
