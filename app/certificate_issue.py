@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping
 from typing import Any
 
 from app.capture.instruments import INSTRUMENTS, frame_values, reading_columns
-from app.issued_outputs import refuse_issued_files
+from app.issued_outputs import keep_in_sight, refuse_issued_files
 from app.writers.certificate_pdf import certificate_pdf_bytes
 from models.capture.edits import EditedReading, edited_after_capture
 from models.capture.raw_record import raw_digest
@@ -90,33 +90,8 @@ def _write_results(register: Register, record: CertificateRecord, path: str,
         _place(register, temp, target)
     except OSError as exc:
         raise IssuedNotWritten(record, path, exc, "results", recorded=True,
-                               kept=_keep_in_sight(temp, target, record.number)) from exc
+                               kept=keep_in_sight(temp, target, record.number)) from exc
     fsync_directory(target.parent)
-
-
-def _keep_in_sight(temp: str, target, number: str) -> str:
-    """The recorded results file that could not be put in place, moved from its temporary
-    name (which a later save of the same name clears as a killed save's leftover after ten
-    minutes: the only copy, the register keeps its SHA-256 alone) to one beside ``target``
-    that names its certificate, ``r.AB-2026-0002.xlsx`` (never replacing a file: a hard
-    link, then the temporary name removed); the temporary name when that cannot be done."""
-    import contextlib
-    from pathlib import Path
-
-    target = Path(target)
-    for n in range(1, 100):
-        tail = "" if n == 1 else f"-{n}"
-        name = target.with_name(f"{target.stem}.{number}{tail}{target.suffix}")
-        try:
-            os.link(temp, name)
-        except FileExistsError:
-            continue
-        except OSError:
-            return temp
-        with contextlib.suppress(OSError):
-            os.unlink(temp)
-        return os.fspath(name)
-    return temp
 
 
 def _place(register: Register, temp: str, target) -> None:

@@ -311,7 +311,13 @@ class CertificatePresenter:
     def refuse_issued(self, path: str) -> None:
         """Raise OutputRefused when ``path`` is a file the register issued (a certificate's
         PDF, DCC or results file): the workbenches' table exports call it (rev63 F6)."""
-        refuse_issued_outputs(self.register_url(), (("", path),))
+        self._refuse_issued((("", path),))
+
+    def _refuse_issued(self, outputs) -> None:
+        """:func:`refuse_issued_outputs`, telling of a recorded results file it kept from a
+        killed save's leftovers (app/issued_outputs.py)."""
+        for said in refuse_issued_outputs(self.register_url(), outputs):
+            self.view.tell(tr("Results file kept"), translated(said))
 
     def lab_timezone(self) -> str:
         """The lab's time zone set in the window (empty: ANGLEBENCH_TIMEZONE, else the
@@ -518,7 +524,7 @@ class CertificatePresenter:
             check_output(path, self.protected())
             if self._dcc_path(path):
                 check_output(self._dcc_path(path), self.protected())
-            refuse_issued_outputs(self.register_url(), (("", path), ("", self._dcc_path(path))))
+            self._refuse_issued((("", path), ("", self._dcc_path(path))))
             if entered.example:
                 return self._specimen(kind, result, entered, settings, source_name, path)
             if draft:
@@ -690,7 +696,7 @@ class CertificatePresenter:
             return False
         try:
             check_output(path, self.protected())
-            refuse_issued_outputs(self.register_url(), (("", path),))  # rev62 F8
+            self._refuse_issued((("", path),))  # rev62 F8
             document = kind.certificate_document(result, self.details(kind.key), source_name,
                                                  settings)
             if path.lower().endswith(".xlsx"):

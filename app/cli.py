@@ -369,7 +369,8 @@ def run_analyze(argv: list[str]) -> int:
         from app.issued_outputs import refuse_issued_outputs
         from models.register.location import register_url
 
-        refuse_issued_outputs(register_url(), outputs)
+        for said in refuse_issued_outputs(register_url(), outputs):  # a results file kept
+            _say(f"anglebench analyze: {rendered(said, words)}")
     except OutputRefused as exc:
         _say(f"anglebench analyze: {_why(exc, words)}")
         return EXIT_BAD_INPUT

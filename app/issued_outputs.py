@@ -2,62 +2,183 @@
 any certificate, found by its SHA-256 (rev62 F8: a second certificate's ``--results`` replaced
 the first's results file, of which the register keeps only the SHA-256, and ``--results`` onto
 an issued PDF replaced it with a CSV). Light: a plain ``analyze`` imports it only when an
-output names a file that exists."""
+output names a file that exists, or a killed save's temporary file beside one.
+
+A results file is written to a temporary file, recorded, then named (app/certificate_issue.py):
+an issue killed between the last two leaves the only copy of a recorded file under the
+temporary name, which the next save of that name clears after ten minutes as a killed save's
+leftover (models/project/atomic_write.py). Every output checked here first keeps such a
+file (:func:`keep_recorded_temporaries`) under a name that says whose it is."""
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import logging
 import os
 from collections.abc import Iterable
+from pathlib import Path
 
-from models.messages import QT_TR_NOOP, message, separated
+from models.messages import QT_TR_NOOP, Message, message, separated
+from models.project.atomic_write import fsync_directory, stale_temporaries
 from models.project.output_guard import OutputRefused, sqlite_path_of_url
 from models.register.wording import issued_file_words
 
-__all__ = ["refuse_issued_files", "refuse_issued_outputs"]
+__all__ = ["keep_in_sight", "keep_recorded_temporaries", "refuse_issued_files",
+           "refuse_issued_outputs"]
+
+log = logging.getLogger(__name__)
 
 
 def _existing(outputs: Iterable[tuple[str, str | None]]) -> list[tuple[str, str]]:
     return [(flag, os.fspath(out)) for flag, out in outputs if out and os.path.isfile(out)]
 
 
-def refuse_issued_files(register, outputs: Iterable[tuple[str, str | None]]) -> None:
+def _sha256(path: str | os.PathLike[str]) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for piece in iter(lambda: handle.read(1 << 20), b""):
+            digest.update(piece)
+    return digest.hexdigest()
+
+
+def keep_in_sight(temp: str | os.PathLike[str], target, number: str) -> str:
+    """A recorded results file that is not in place, moved from its temporary name (which a
+    later save of the same name clears as a killed save's leftover after ten minutes: the
+    only copy, the register keeps its SHA-256 alone) to one beside ``target`` that names its
+    certificate, ``r.AB-2026-0002.xlsx``: a hard link, else a copy, never replacing a file
+    (``r.AB-2026-0002-2.xlsx`` when that is taken); then the temporary name removed. The
+    temporary name when neither can be made."""
+    target, temp = Path(target), os.fspath(temp)
+    for n in range(1, 100):
+        tail = "" if n == 1 else f"-{n}"
+        name = target.with_name(f"{target.stem}.{number}{tail}{target.suffix}")
+        try:
+            os.link(temp, name)
+        except FileExistsError:
+            continue
+        except OSError:  # no hard links here (some network and FAT file systems): a copy
+            try:
+                _copy_new(temp, name)
+            except FileExistsError:
+                continue
+            except OSError:
+                return temp
+        fsync_directory(name.parent)
+        with contextlib.suppress(OSError):
+            os.unlink(temp)
+        return os.fspath(name)
+    return temp
+
+
+def _copy_new(source: str, name: Path) -> None:
+    """``source`` copied to ``name``, which must not exist (FileExistsError), fsync'ed; a
+    copy that fails half-way is removed."""
+    with open(source, "rb") as src, open(name, "xb") as out:
+        try:
+            for piece in iter(lambda: src.read(1 << 20), b""):
+                out.write(piece)
+            out.flush()
+            os.fsync(out.fileno())
+        except BaseException:
+            with contextlib.suppress(OSError):
+                os.unlink(name)
+            raise
+
+
+def keep_recorded_temporaries(register, outputs: Iterable[tuple[str, str | None]]
+                              ) -> list[Message]:
+    """Keep, and say, every killed save's temporary file beside an output (older than ten
+    minutes: models/project/atomic_write.stale_temporaries) whose SHA-256 is a results file
+    the register recorded: placed beside it as ``r.<number>.xlsx`` (:func:`keep_in_sight`),
+    so that the save about to be made, which clears such leftovers, never deletes the only
+    copy of a recorded results file (an issue killed after recording it and before naming
+    it). Returns what was said (also logged); OutputRefused when one cannot be kept (nothing
+    is to be written then: the save would clear it)."""
+    said: list[Message] = []
+    recorded: dict[str, str] | None = None
+    for _flag, out in outputs:
+        if not out:
+            continue
+        for temp in stale_temporaries(out):
+            if recorded is None:
+                recorded = {}
+                for entry in register.results_records():
+                    recorded.setdefault(entry["sha256"], entry["number"])
+            try:
+                digest = _sha256(temp)
+            except OSError:
+                continue  # unreadable: the save clears it if it can
+            number = recorded.get(digest)
+            if number is None or _named(digest, out, number):
+                continue  # no recorded file, or named already (killed after the link)
+            kept = keep_in_sight(temp, out, number)
+            if kept == os.fspath(temp):  # neither linked nor copied: the save would clear it
+                raise OutputRefused(message(QT_TR_NOOP(
+                    "{temp} is the results file recorded with certificate {number}, left under "
+                    "a temporary name by an issue stopped before it was named, and it could "
+                    "not be kept under another name: nothing was written; move it first"),
+                    temp=os.fspath(temp), number=number))
+            said.append(message(QT_TR_NOOP(
+                "{temp} is the results file recorded with certificate {number}, left under "
+                "a temporary name by an issue stopped before it was named: kept as {kept}"),
+                temp=os.fspath(temp), number=number, kept=kept))
+            log.warning("%s", said[-1])
+    return said
+
+
+def _named(digest: str, out: str, number: str) -> bool:
+    """Whether the recorded file of SHA-256 ``digest`` is at ``out`` or at the name
+    :func:`keep_in_sight` gives it."""
+    target = Path(out)
+    for name in (target, target.with_name(f"{target.stem}.{number}{target.suffix}")):
+        with contextlib.suppress(OSError):
+            if name.is_file() and _sha256(name) == digest:
+                return True
+    return False
+
+
+def refuse_issued_files(register, outputs: Iterable[tuple[str, str | None]]) -> list[Message]:
     """Raise OutputRefused when an output (``(flag, path)`` pairs) is a file the register
     issued — the PDF, the DCC or the results file of any certificate, found by its SHA-256 —
     so that no later issue or export replaces it (rev62 F8: a results file, of which the
-    register keeps only the SHA-256, was lost for good)."""
+    register keeps only the SHA-256, was lost for good). First keeps a recorded results
+    file left under a temporary name beside an output (:func:`keep_recorded_temporaries`),
+    and returns what that said."""
+    outputs = list(outputs)
+    said = keep_recorded_temporaries(register, outputs)
     for flag, out in _existing(outputs):
-        digest = hashlib.sha256()
         try:
-            with open(out, "rb") as handle:
-                for piece in iter(lambda h=handle: h.read(1 << 20), b""):
-                    digest.update(piece)
+            digest = _sha256(out)
         except OSError:
             continue  # unreadable: the write will say so
-        found = register.issued_file(digest.hexdigest())
+        found = register.issued_file(digest)
         if found:
             raise OutputRefused(message(QT_TR_NOOP(
                 "{flag}{out} is {what}, as issued; an issued file is never replaced: "
                 "nothing was written, choose another name"),
                 flag=f"{flag} " if flag else "", out=os.fspath(out),
                 what=separated([issued_file_words(kind, number) for number, kind in found])))
+    return said
 
 
-def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]) -> None:
+def refuse_issued_outputs(url: str, outputs: Iterable[tuple[str, str | None]]
+                          ) -> list[Message]:
     """:func:`refuse_issued_files` for a run that issues nothing (a draft, a specimen, the
     results or a table alone): the register at ``url`` is opened only when an output names a
-    file that exists, and not when it cannot be (a SQLite register not made yet, a server
-    that does not answer: then nothing can be found in it)."""
-    existing = _existing(outputs)
-    if not existing:
-        return
+    file that exists or has a killed save's temporary file beside it, and not when it cannot
+    be (a SQLite register not made yet, a server that does not answer: then nothing can be
+    found in it). Returns what was said of recorded results files kept."""
+    outputs = [(flag, os.fspath(out)) for flag, out in outputs if out]
+    if not _existing(outputs) and not any(stale_temporaries(out) for _flag, out in outputs):
+        return []
     database = sqlite_path_of_url(url)
     if database is not None and not database.is_file():
-        return
+        return []
     from models.register.store import Register, RegisterError
 
     try:  # (a database error is a RegisterError: the register says why)
         with Register(url) as register:
-            refuse_issued_files(register, existing)
+            return refuse_issued_files(register, outputs)
     except RegisterError:
-        return
+        return []

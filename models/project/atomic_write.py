@@ -14,7 +14,7 @@ from pathlib import Path
 
 from models.project.output_guard import refuse_database
 
-__all__ = ["fsync_directory", "write_bytes_atomic", "write_text_atomic"]
+__all__ = ["fsync_directory", "stale_temporaries", "write_bytes_atomic", "write_text_atomic"]
 
 log = logging.getLogger(__name__)
 
@@ -82,14 +82,26 @@ def _temp_prefix(target: Path) -> str:
     return f".{name}."
 
 
-def _remove_stale_temps(target: Path) -> None:
-    """Temp files of an earlier save of ``target`` that was killed half-way."""
-    now = time.time()
+def stale_temporaries(target: str | os.PathLike[str]) -> list[Path]:
+    """The temporary files (``.NAME.*.tmp``) beside ``target`` older than
+    STALE_TEMP_SECONDS: left by a save of ``target`` that was killed half-way, which the
+    next save clears (app/issued_outputs.py first keeps any that holds a recorded results
+    file: an issue killed after recording it and before naming it)."""
+    target = Path(target)
+    now, found = time.time(), []
     with contextlib.suppress(OSError):
         for temp in target.parent.glob(f"{glob.escape(_temp_prefix(target))}*.tmp"):
             with contextlib.suppress(OSError):
                 if now - temp.stat().st_mtime > STALE_TEMP_SECONDS:
-                    temp.unlink()
+                    found.append(temp)
+    return found
+
+
+def _remove_stale_temps(target: Path) -> None:
+    """Temp files of an earlier save of ``target`` that was killed half-way."""
+    for temp in stale_temporaries(target):
+        with contextlib.suppress(OSError):
+            temp.unlink()
 
 
 def write_bytes_atomic(path: str | os.PathLike[str], data: bytes | Iterable[bytes]) -> None:

@@ -54,8 +54,8 @@ from models.messages import QT_TR_NOOP, message
 from models.register._identifier_tables import CONFUSABLES, DEFAULT_IGNORABLE
 
 __all__ = ["IdentifierError", "as_printed", "folded_identifier_key", "folded_serial_key",
-           "identifier_key", "no_serial", "normalise_identifier", "same_identifier",
-           "same_serial", "serial_key"]
+           "identifier_key", "no_serial", "normalise_identifier", "refuse_unprinted",
+           "same_identifier", "same_serial", "serial_key"]
 
 #: dashes, hyphens and minus signs a word processor or a keyboard layout may put in
 _DASHES = re.compile("[\u2010\u2011\u2012\u2013\u2014\u2015\u2043\u2212\u2e3a\u2e3b"
@@ -112,6 +112,28 @@ def normalise_identifier(text: str, what: str = "identifier") -> str:
     text = unicodedata.normalize("NFKC", text)
     text = _DASHES.sub("-", text)
     return " ".join(text.split())
+
+
+#: what a name or description may hold that prints as no character of its own: a line
+#: break or a tab prints as a space
+_TEXT_SPACES = frozenset("\t\n\r")
+
+
+def refuse_unprinted(text: str, what: str) -> None:
+    """IdentifierError, worded as :func:`normalise_identifier`'s, naming ``what`` (the
+    field: "customer", "manufacturer" …) and the first character of ``text`` that prints as
+    nothing or moves the text (principle 1, line breaks and tabs aside), by its code point
+    and position: a name or description prints on a certificate and is stored as typed, so
+    "ACME\u200b Ltd" would print as "ACME Ltd" but be another text in the register
+    (#63 regkeys). Nothing else is changed or checked: it is not an identifier."""
+    text = text or ""
+    for i, char in enumerate(text):
+        if char not in _TEXT_SPACES and _prints_nothing(char):
+            raise IdentifierError(message(QT_TR_NOOP(
+                "{what} \"{shown}\": character {n} is U+{code:04X} ({name}), which prints as "
+                "nothing or moves the text; type the {what} again without it"),
+                what=what, shown=text.encode("ascii", "backslashreplace").decode(), n=i + 1,
+                code=ord(char), name=unicodedata.name(char, "unnamed")))
 
 
 #: ASCII letters and signs UTS #39 gives as digits' look-alikes (its own "0" → "O",

@@ -714,13 +714,19 @@ class Register:
         (on AB-2026-0001) to LRA-0816"); never
         onto the item and date of another current certificate. The workbench is never
         corrected: a calibration on another workbench is an original."""
-        from models.register.identifiers import IdentifierError, normalise_identifier
+        from models.register.identifiers import IdentifierError, normalise_identifier, refuse_unprinted
 
         meta = request.metadata
         try:
             number = normalise_identifier(meta.certificate_number, message(
                 QT_TR_NOOP("certificate number")))
             serial = normalise_identifier(meta.item_serial, message(QT_TR_NOOP("serial number")))
+            # printed and stored as typed: what prints as nothing is refused, as in a number
+            # (#63 regkeys: "ACME\u200b Ltd" printed as "ACME Ltd", another text in the register)
+            for text, what in ((meta.item_description, QT_TR_NOOP("item description")),
+                               (meta.item_manufacturer, QT_TR_NOOP("manufacturer")),
+                               (meta.customer_name, QT_TR_NOOP("customer"))):
+                refuse_unprinted(text, message(what))
         except IdentifierError as exc:
             raise RegisterError(reason_of(exc)) from None
         if number.upper().startswith("SPECIMEN"):
@@ -1345,13 +1351,21 @@ class Register:
         return found[0] if found else None
 
     def history(self, serial: str) -> builtins.list[CertificateRecord]:
-        """Every certificate of an instrument, oldest calibration first."""
+        """Every certificate of an instrument, oldest calibration first: of every serial
+        number the one-calibration check takes for this item's (same_serial: "AB-10 5" and
+        "ab105" are one item at issue, so one history), or, for a serial that says there is
+        none ("", "n/a": no_serial), of that serial as kept."""
         certificates = self._schema.CERTIFICATES
+        c = certificates.c
         serial = _alike(serial)
         with self._read() as conn:
-            rows = conn.execute(self._sa.select(*(certificates.c[c] for c in _RECORD_COLUMNS))
-                                .where(certificates.c.item_serial == serial)
-                                .order_by(certificates.c.calibration_date, certificates.c.id))
+            ids = [row.id for row in conn.execute(self._sa.select(c.id, c.item_serial))
+                   if _same_instrument(row.item_serial, serial)]
+            if not ids:
+                return []
+            rows = conn.execute(self._sa.select(*(c[name] for name in _RECORD_COLUMNS))
+                                .where(c.id.in_(ids))
+                                .order_by(c.calibration_date, c.id))
             return [CertificateRecord(**row._asdict()) for row in rows]
 
     # -- calibration intervals -------------------------------------------------------------
@@ -1371,16 +1385,33 @@ class Register:
             if not self.is_sqlite:
                 conn.execute(self._sa.text("SELECT pg_advisory_xact_lock(:k)"),
                              {"k": _CHAIN_LOCK})
+            # one item, one interval: one set under a serial that is this item's by the
+            # one-calibration check ("AB-10 5" for "ab105") is cleared, each in the chain
+            for other in conn.execute(self._sa.select(instruments.c.serial)).scalars().all():
+                if other != serial and _same_instrument(other, serial):
+                    conn.execute(instruments.delete().where(instruments.c.serial == other))
+                    self._append_entry(conn, "interval", other, {"days": None})
             conn.execute(instruments.delete().where(instruments.c.serial == serial))
             if days:
                 conn.execute(instruments.insert().values(serial=serial, interval_days=int(days)))
             self._append_entry(conn, "interval", serial, {"days": int(days) if days else None})
 
     def interval(self, serial: str) -> int | None:
-        instruments = self._schema.INSTRUMENTS
+        """The instrument's interval, set under its serial or under one that is this item's
+        by the one-calibration check (same_serial); of several (set before setting one
+        cleared the others: :meth:`set_interval`), the one set last."""
+        instruments, entries = self._schema.INSTRUMENTS, self._schema.ENTRIES
+        serial = _alike(serial)
         with self._read() as conn:
-            return conn.execute(self._sa.select(instruments.c.interval_days).where(
-                instruments.c.serial == _alike(serial))).scalar_one_or_none()
+            found = {row.serial: row.interval_days for row in conn.execute(self._sa.select(
+                instruments.c.serial, instruments.c.interval_days))
+                if _same_instrument(row.serial, serial)}
+            if len(found) < 2:
+                return next(iter(found.values()), None)
+            last = conn.execute(self._sa.select(entries.c.subject).where(
+                entries.c.kind == "interval", entries.c.subject.in_(builtins.list(found)))
+                .order_by(entries.c.seq.desc()).limit(1)).scalar_one_or_none()
+            return found.get(last, found.get(serial))
 
     def due_date(self, serial: str) -> dt.date | None:
         """The last calibration of the serial plus its interval (None without either)."""
@@ -1460,6 +1491,17 @@ def _alike(identifier: str) -> str:
         return normalise_identifier(identifier)
     except IdentifierError:
         return identifier
+
+
+def _same_instrument(kept: str, serial: str) -> bool:
+    """Whether a serial kept in the register is ``serial``'s instrument, as the
+    one-calibration check at issue tells it (same_serial); a serial that says there is none
+    (no_serial) only as kept, the item being then told by its description and maker."""
+    from models.register.identifiers import no_serial, same_serial
+
+    if kept == serial:
+        return True
+    return not no_serial(serial) and not no_serial(kept) and same_serial(kept, serial)
 
 
 def _parse_time(text: str) -> dt.datetime:

@@ -386,3 +386,23 @@ def test_a_calibration_issued_again_is_refused_unless_said_separate(samples_dir,
     assert f"separate_from: {first}" in shown
     assert "change_note: as left, after the read head was adjusted" in shown
     assert meta["item_serial"]  # the sample names its item: the check had a serial to go by
+
+
+@pytest.mark.parametrize(("field", "what", "typed", "at"), [
+    ("customer_name", "customer", "ACME\u3164Ltd", 5),
+    ("item_description", "item description", "Rotary\u034f encoder", 7),
+    ("item_manufacturer", "manufacturer", "Example\ufe0f Instruments", 8)])
+def test_analyze_refuses_a_customer_description_or_maker_that_prints_nothing(
+        samples_dir, tmp_path, capsys, field, what, typed, at):
+    """#63 regkeys: ``analyze --certificate`` issued a customer, description or maker
+    holding a default-ignorable character that is no control or format character (the
+    details file refuses those: U+200B), such as U+3164 HANGUL FILLER, printed as a blank
+    and stored as another text; a serial or number with such a character was refused."""
+    code, err = issue(samples_dir, tmp_path, "a", capsys, certificate_number="",
+                      **{field: typed})
+    assert code != 0 and not (tmp_path / "a.pdf").exists()
+    assert (f"{what} \"{typed.encode('ascii', 'backslashreplace').decode()}\": character "
+            f"{at} is U+{ord(typed[at - 1]):04X}") in err
+    assert "no certificate was written" in err
+    with Register(register_url()) as register:
+        assert register.list() == []

@@ -205,6 +205,48 @@ def test_a_results_file_recorded_but_not_renamed_is_kept_and_said(samples_dir, t
     assert entry["number"] == number and entry["sha256"] == _sha(kept)
 
 
+class _Killed(BaseException):
+    """The process killed (kill -9) at that point: nothing after it runs."""
+
+
+@pytest.mark.slow
+def test_a_results_file_recorded_then_killed_before_named_is_never_cleared(samples_dir,
+                                                                          tmp_path, capsys):
+    """#63 regkeys: an issue killed between recording the results file and naming it left
+    the recorded bytes only in the temporary ".r.xlsx.*.tmp", which the next save of r.xlsx
+    deleted after ten minutes as a killed save's leftover: the only copy of a recorded
+    results file. It is now kept beside it as r.<number>.xlsx, and said."""
+    import app.certificate_issue
+
+    pdf, xlsx = tmp_path / "c.pdf", tmp_path / "r.xlsx"
+
+    def killed(*_args, **_kwargs):
+        raise _Killed
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(app.certificate_issue, "_place", killed)
+        with pytest.raises(_Killed):
+            _issue(samples_dir, tmp_path, "--certificate", str(pdf), "--results", str(xlsx))
+    (entry,) = _results()
+    (temp,) = tmp_path.glob(".r.xlsx.*.tmp")  # the only copy of the recorded file
+    assert not xlsx.exists() and _sha(temp) == entry["sha256"]
+    eleven_minutes_ago = temp.stat().st_mtime - 660
+    os.utime(temp, (eleven_minutes_ago, eleven_minutes_ago))
+    capsys.readouterr()
+    # a later save of r.xlsx (the results of a draft), which clears killed saves' leftovers
+    assert main(["analyze", "polygon", str(samples_dir / "polygon_sample.csv"),
+                 "--results", str(xlsx)]) == 0
+    kept = tmp_path / f"r.{entry['number']}.xlsx"
+    assert [p.name for p in tmp_path.iterdir() if p.is_file() and _sha(p) == entry["sha256"]] \
+        == [kept.name]
+    assert not list(tmp_path.glob(".r.xlsx.*.tmp")) and xlsx.is_file()
+    said = capsys.readouterr().err
+    assert (f"{temp} is the results file recorded with certificate {entry['number']}, left "
+            f"under a temporary name by an issue stopped before it was named: kept as "
+            f"{kept}") in said
+    assert main(["register", "verify", str(kept)]) == 0
+
+
 # -- an issued file is never replaced (F8) ------------------------------------------------------
 
 @pytest.mark.slow
@@ -383,3 +425,47 @@ def test_an_issued_file_is_never_replaced_by_an_export(samples_dir, tmp_path, ca
     assert f"{one} is the PDF of certificate {number}, as issued" in view.tell.call_args.args[1]
     assert {path: _sha(path) for path in kept} == kept
     assert _numbers() == [number]
+
+
+def test_a_recorded_leftover_is_copied_where_no_hard_link_can_be_made_and_never_cleared(
+        tmp_path):
+    """#63 regkeys: keeping a recorded results file left under its temporary name: a copy
+    where hard links cannot be made, never replacing a file; when neither can be made the
+    output is refused (the save would have cleared it); an unrecorded leftover is left to
+    the save to clear."""
+    from app.issued_outputs import keep_recorded_temporaries
+    from models.project.atomic_write import write_bytes_atomic
+
+    class Recorded:
+        def results_records(self):
+            return [{"number": "AB-2026-0007", "sha256": hashlib.sha256(b"recorded").hexdigest()}]
+
+    xlsx = tmp_path / "r.xlsx"
+    taken = tmp_path / "r.AB-2026-0007.xlsx"
+    taken.write_bytes(b"another file")
+    temp, other = tmp_path / ".r.xlsx.abcdefgh.tmp", tmp_path / ".r.xlsx.ijklmnop.tmp"
+    temp.write_bytes(b"recorded")
+    other.write_bytes(b"never recorded")
+    for stale in (temp, other):
+        os.utime(stale, (stale.stat().st_mtime - 660,) * 2)
+
+    def no_link(*_args):
+        raise OSError(errno.EPERM, "Operation not permitted")
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "link", no_link)
+        (said,) = keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
+    kept = tmp_path / "r.AB-2026-0007-2.xlsx"
+    assert kept.read_bytes() == b"recorded" and taken.read_bytes() == b"another file"
+    assert not temp.exists() and f"kept as {kept}" in said
+    write_bytes_atomic(xlsx, b"the new save")
+    assert not other.exists() and kept.read_bytes() == b"recorded"
+
+    temp.write_bytes(b"recorded")
+    os.utime(temp, (temp.stat().st_mtime - 660,) * 2)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "link", no_link)
+        patch.setattr("app.issued_outputs._copy_new", no_link)
+        with pytest.raises(OutputRefused, match="could not be kept under another name"):
+            keep_recorded_temporaries(Recorded(), [("", str(xlsx))])
+    assert temp.read_bytes() == b"recorded"

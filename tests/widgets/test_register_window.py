@@ -7,6 +7,7 @@ import json
 from unittest import mock
 
 import pytest
+from PySide6.QtCore import Qt
 
 from app.certificate_issue import issue_certificate
 from app.register_presenter import RegisterPresenter, RegisterView
@@ -89,6 +90,30 @@ def test_amend_from_the_window_issues_amendment_one(window, samples_dir, tmp_pat
         assert register.get("AB-2026-0001").status == "superseded"
     dialog.search.setText("A1")
     assert dialog.table.rowCount() == 1
+
+
+def test_the_history_of_an_item_holds_its_serial_typed_another_way(window, samples_dir,
+                                                                     tmp_path, qtbot):
+    """#63 regkeys: a serial typed "rx 26 0815" is the item RX-26-0815 at issue (the
+    one-calibration check), but the window's history of either certificate showed its own
+    calibration only, and the due date followed it, not the later one."""
+    with window.certificates.open_register() as register:
+        issue_polygon(register, samples_dir, tmp_path, "a")
+        issue_polygon(register, samples_dir, tmp_path, "b", item_serial="rx 26 0815",
+                      calibration_date="2026-11-23")
+        register.set_interval("RX-26-0815", 365)
+    window.show_register()
+    dialog = window.register_window
+    assert [dialog.table.item(row, 0).text() for row in range(2)] == ["AB-2026-0002",
+                                                                      "AB-2026-0001"]
+    for row in (0, 1):
+        qtbot.mouseClick(dialog.table.viewport(), Qt.MouseButton.LeftButton,
+                         pos=dialog.table.visualItemRect(dialog.table.item(row, 0)).center())
+        assert dialog.selected_row() == row
+        dialog.buttons["history"].click()
+        assert "next due 2027-11-23" in dialog.history_title.text()
+        x, y = dialog.history_curves[0].getData()
+        assert len(y) == 2 and x[1] - x[0] == 3 * 86400.0
 
 
 def test_chinese_in_the_window_is_drawn_not_boxed(window):

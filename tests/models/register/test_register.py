@@ -5,6 +5,7 @@ an instrument's history and due date, migrations of an old register."""
 
 from __future__ import annotations
 
+import dataclasses
 import datetime as dt
 import multiprocessing
 import os
@@ -715,3 +716,48 @@ def _tamper_free_insert(register, number: str) -> None:
     with register.engine.begin() as conn:  # renumbered behind the chain's back: the number
         conn.execute(certificates.update().where(certificates.c.number == got.number)
                      .values(number=number))
+
+
+def test_history_and_due_date_of_a_serial_typed_another_way_are_the_items(register):
+    """#63 regkeys: "AB-10 5" and "ab105" are one item at issue (same_serial), but history()
+    and due_date() matched the serial exactly: each spelling saw its own certificates only,
+    and the due date followed the older calibration."""
+    first = CertificateMetadata(**{**META.to_dict(), "standards": (), "item_serial": "AB-10 5",
+                                   "calibration_date": "2026-11-20"})
+    a, _ = register.issue(request(first, {"p": 1.0}), render)
+    register.issue(request(CertificateMetadata(item_serial="AB-1050", approver="Dr. Li",
+                                               calibration_date="2026-11-21")), render)
+    register.clock = on(dt.datetime(2027, 5, 2, 9, tzinfo=dt.timezone.utc))
+    later = dataclasses.replace(first, item_serial="ab105", calibration_date="2027-05-01",
+                                issue_date="")
+    b, _ = register.issue(request(later, {"p": 1.4}), render, separate_calibration="")
+    for serial in ("AB-10 5", "ab105", "AB105"):
+        assert [r.number for r in register.history(serial)] == [a.number, b.number], serial
+    register.set_interval("AB-10 5", 365)
+    assert register.due_date("ab105") == register.due_date("AB-10 5") == dt.date(2028, 4, 30)
+    register.set_interval("ab105", 180)  # one item, one interval: the one set last
+    assert register.interval("AB-10 5") == register.interval("ab105") == 180
+    assert register.due_date("AB-10 5") == dt.date(2027, 10, 28)
+    register.set_interval("ab105", None)
+    assert register.due_date("AB-10 5") is None and register.interval("AB-10 5") is None
+    assert register.audit() == []  # each interval cleared is in the chain
+
+
+@pytest.mark.parametrize(("field", "what", "typed", "at"), [
+    ("customer_name", "customer", "ACME\u200b Ltd", 5),
+    ("item_description", "item description", "Rotary\u00ad encoder", 7),
+    ("item_manufacturer", "manufacturer", "Example\u2060 Instruments", 8)])
+def test_a_customer_description_or_maker_that_prints_nothing_is_refused(register, field, what,
+                                                                        typed, at):
+    """#63 regkeys: a serial or number holding a character that prints as nothing was
+    refused, but a customer "ACME\\u200b Ltd" was issued, printed as "ACME Ltd" and stored
+    as another text; the description and the maker too."""
+    code = ord(typed[at - 1])
+    with pytest.raises(RegisterError, match=f'{what} ".*": character {at} is U\\+{code:04X} '
+                       r"\(.*\), which prints as nothing or moves the text; type the "
+                       f"{what} again"):
+        register.issue(request(dataclasses.replace(META, **{field: typed})), render)
+    assert register.list() == []
+    fine = typed.replace(typed[at - 1], "")  # typed again without it: issued as typed
+    record, _ = register.issue(request(dataclasses.replace(META, **{field: fine})), render)
+    assert getattr(record, field.removesuffix("_name")) == fine
