@@ -105,6 +105,8 @@ class ReadingsTableModel(QAbstractTableModel):
         if not inside:
             return None
         if role == Qt.ItemDataRole.BackgroundRole:
+            if self.cleared_after_capture(r, c):
+                return EDITED_BRUSH
             if self.cell_error(r, c) is not None:
                 return INVALID_BRUSH
             if (r, c) in self.edited_cells:
@@ -114,14 +116,24 @@ class ReadingsTableModel(QAbstractTableModel):
             return None
         if role == Qt.ItemDataRole.ToolTipRole:
             reason = self.cell_error(r, c)
-            if reason is None and (r, c) in self.edited_cells:
-                return translated(self.edited_cells[(r, c)])
+            edited = self.edited_cells.get((r, c))
+            if reason is None and edited is not None:
+                return translated(edited)
             column = self.sheet.columns[c]  # the header the user sees, the file's key beside it
-            return (tr("Row {row}, {header} ({key}): {reason}").format(
+            why = (tr("Row {row}, {header} ({key}): {reason}").format(
                 row=r + 1, header=declared(column.header), key=column.key,
                 reason=translated(reason))
                 if reason else None)
+            if edited is not None and self.cleared_after_capture(r, c):
+                # a cleared reading: what was captured, and why its row is left out
+                return f"{translated(edited)}\n{why}"
+            return why
         return None
+
+    def cleared_after_capture(self, r: int, c: int) -> bool:
+        """The cell of a captured reading the user emptied: an edit (marked so, its tooltip
+        says what was captured), never a cell that cannot be read (it was red)."""
+        return (r, c) in self.edited_cells and not self.sheet.text(r, c).strip()
 
     def cell_error(self, r: int, c: int) -> str | None:
         """The sheet's :meth:`~models.readings.sheet.ReadingsSheet.cell_error`, the parse

@@ -1,0 +1,86 @@
+"""What the readings table and the certificate say of a captured reading thrown away: its
+cells cleared, or its take undone, and the position taken again.
+
+* A captured cell cleared by the user is marked "edited after capture" (orange, the edit
+  in its tooltip), not red as a cell that cannot be read.
+
+Through the real window: the autocollimator and readout simulators, the polygon's entry
+plan, the table's Clear cells, Edit › Undo and Redo."""
+
+from __future__ import annotations
+
+import pytest
+from PySide6.QtCore import Qt
+
+from tests.app.capture.test_takes_superseded import _clear, _wait_for
+from tests.app.capture.test_takes_undone import FAST, X, Y, _said
+from tests.app.capture.window_steps import show_workbench as _show
+from tests.instrument_simulators import AutocollimatorSimulator, ReadoutSimulator
+
+pytestmark = pytest.mark.slow  # a window and two instruments for seconds
+
+#: per face of set 1: the encoder (readout) and the autocollimator's x and y
+FACES = [(0.00004, 0.5, 0.25), (30.00001, 0.75, 0.5), (60.00002, 1.25, 0.75),
+         (90.00001, -0.5, 1.0)]
+
+
+@pytest.fixture
+def planned(window):
+    bench = _show(window, "polygon")
+    bench.table_model.replace_all([], "empty")
+    bench.set_settings({**bench.settings, "faces": 12, "plan_sets": 2})
+    bench.undo_stack.clear()
+    yield bench
+    window.capture_panel.close()
+
+
+def _connect(panel, ac, ro):
+    panel.connect_to("autocollimator", ac.port, **FAST)
+    panel.connect_to("readout", ro.port, slot=1, **FAST)
+    readout = panel.links[1]
+    readout.column.setCurrentIndex(readout.column.findData("encoder_deg"))
+    return readout
+
+
+def _take_at(qtbot, panel, ac, ro, encoder, x, y) -> str:
+    """The table at ``encoder`` with the autocollimator at ``x``, ``y``: F9."""
+    ac.positions[0], ro.positions[0] = (x, y), (encoder,)
+    _wait_for(qtbot, panel.links[0], (x, y))
+    _wait_for(qtbot, panel.links[1], (encoder,))
+    qtbot.waitUntil(lambda: not panel.used_again(), timeout=5000)
+    return panel.take_reading()
+
+
+def test_a_cleared_captured_cell_is_marked_edited_not_red(window, qtbot, planned):
+    from widgets.readings_table_model import EDITED_BRUSH, INVALID_BRUSH
+
+    bench, model = planned, planned.table_model
+    panel = window.capture_panel
+    columns = [c.key for c in model.sheet.columns]
+    with AutocollimatorSimulator("pty", positions=[(0.5, 0.25)]) as ac, \
+            ReadoutSimulator("pty", positions=[(0.00004,)]) as ro:
+        _connect(panel, ac, ro)
+        for face, values in enumerate(FACES):
+            assert _take_at(qtbot, panel, ac, ro, *values) == f"row {face + 1}"
+        panel.disconnect_instrument()
+    # row 2's autocollimator reading cleared (its encoder kept): an edit of row 2
+    _clear(bench, 1, [X, Y])
+    assert _said(window, bench) == ["reading of row 2 cleared after capture: 0.75",
+                                    "reading of row 2 cleared after capture: 0.5"]
+    for key in (X, Y):
+        index = model.index(1, columns.index(key))
+        brush = model.data(index, Qt.ItemDataRole.BackgroundRole)
+        assert brush is EDITED_BRUSH, key  # was INVALID_BRUSH: "cannot be read"
+        assert "cleared after capture" in model.data(index, Qt.ItemDataRole.ToolTipRole)
+    # a cell typed that cannot be read stays red, a captured one included
+    model.setData(model.index(2, columns.index(X)), "1.2x")
+    index = model.index(2, columns.index(X))
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is INVALID_BRUSH
+    # a blank cell of a typed row, never captured, is still one that cannot be read
+    model.set_cells([(4, columns.index("position"), "5"), (4, columns.index("set"), "1"),
+                     (4, columns.index("encoder_deg"), "120"),
+                     (5, columns.index("position"), "6"), (5, columns.index("set"), "1"),
+                     (5, columns.index("encoder_deg"), "150"), (5, columns.index(X), "0.1"),
+                     (5, columns.index(Y), "0.1")], "typed")
+    index = model.index(4, columns.index(X))
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is INVALID_BRUSH
