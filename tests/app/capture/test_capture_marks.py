@@ -3,6 +3,8 @@ cells cleared, or its take undone, and the position taken again.
 
 * A captured cell cleared by the user is marked "edited after capture" (orange, the edit
   in its tooltip), not red as a cell that cannot be read.
+* A row cleared in the middle of the table, to which the entry plan sends the next take,
+  waits for its reading: it is not a bad row in the result strip or the readings caption.
 
 Through the real window: the autocollimator and readout simulators, the polygon's entry
 plan, the table's Clear cells, Edit › Undo and Redo."""
@@ -84,3 +86,52 @@ def test_a_cleared_captured_cell_is_marked_edited_not_red(window, qtbot, planned
                      (5, columns.index(Y), "0.1")], "typed")
     index = model.index(4, columns.index(X))
     assert model.data(index, Qt.ItemDataRole.BackgroundRole) is INVALID_BRUSH
+
+
+def test_a_cleared_row_the_plan_fills_next_is_not_a_bad_row(window, qtbot, planned):
+    bench, model = planned, planned.table_model
+    panel = window.capture_panel
+    view = bench.view
+    columns = [c.key for c in model.sheet.columns]
+
+    def analysed():
+        with qtbot.waitSignal(bench.analysed, timeout=5000):
+            bench.refresh()
+        return view.warnings.text(), view.readings_label.text()
+
+    with AutocollimatorSimulator("pty", positions=[(0.5, 0.25)]) as ac, \
+            ReadoutSimulator("pty", positions=[(0.00004,)]) as ro:
+        _connect(panel, ac, ro)
+        for face, values in enumerate(FACES):
+            assert _take_at(qtbot, panel, ac, ro, *values) == f"row {face + 1}"
+        # the polygon's certificate typed for faces 1 to 4
+        dev = columns.index("polygon_dev_arcsec")
+        model.set_cells([(r, dev, f"0.{r + 1}") for r in range(4)], "typed")
+        assert "cannot be read" not in analysed()[0]
+        # face 2 thrown away: its reading cleared, the plan's cells kept
+        _clear(bench, 1, ["encoder_deg", X, Y])
+        assert bench.plan_placement().row == 1  # the plan sends the next take there
+        warnings, caption = analysed()  # while capturing: on a worker
+        # was: "3 cell(s) cannot be read (row 2)" and ", 3 bad cell(s)"
+        assert "cannot be read" not in warnings, warnings
+        assert "bad cell" not in caption, caption
+        assert "— 3 used" in caption, caption
+        panel.disconnect_instrument()
+    warnings, caption = analysed()  # on the GUI thread
+    assert "cannot be read" not in warnings and "bad cell" not in caption, (warnings, caption)
+    # the row's blank cells wait: none red (the captured ones are marked cleared)
+    from widgets.readings_table_model import INVALID_BRUSH
+    for key in ("encoder_deg", X, Y, "polygon_dev_arcsec"):
+        index = model.index(1, columns.index(key))
+        assert model.data(index, Qt.ItemDataRole.BackgroundRole) is not INVALID_BRUSH, key
+    # a cell typed in it that cannot be read is still said
+    model.setData(model.index(1, columns.index(X)), "0.7x")
+    warnings, caption = analysed()
+    assert "cannot be read (row 2)" in warnings, warnings
+    model.setData(model.index(1, columns.index(X)), "")
+    # a row cleared that the plan does not fill next (face 2 is still waiting) is bad
+    _clear(bench, 2, ["encoder_deg", X, Y])
+    assert bench.plan_placement().row == 1
+    warnings, caption = analysed()
+    assert "cannot be read (row 3)" in warnings, warnings
+    assert "row 2" not in warnings, warnings
