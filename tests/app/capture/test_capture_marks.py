@@ -121,7 +121,7 @@ def test_a_cleared_row_the_plan_fills_next_is_not_a_bad_row(window, qtbot, plann
         _clear(bench, 1, ["encoder_deg", X, Y])
         assert bench.plan_placement().row == 1  # the plan sends the next take there
         warnings, caption = analysed()  # while capturing: on a worker
-        # was: "3 cell(s) cannot be read (row 2)" and ", 3 bad cell(s)"
+        # was: "2 cell(s) cannot be read (row 2)" and ", 2 bad cell(s)"
         assert "cannot be read" not in warnings, warnings
         assert "bad cell" not in caption, caption
         assert "— 3 used" in caption, caption
